@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Sets everything up and runs FrictionLab's main job. Until the window exists, that is the
+# built-in demonstration: every situation of the seed articles, theory beside simulation.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh build
+exec build/app/frictionlab "$@"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs what FrictionLab needs from Debian 12's packages, then configures and builds it.
+#   scripts/setup.sh [BUILD_DIR] [extra CMake options...]
+# Safe to run again: packages already present are not fetched, builds are incremental.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build_dir="${1:-build}"
+shift || true
+
+packages=(build-essential cmake pkg-config libbox2d-dev libgtest-dev)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" > /dev/null
+cmake --build "$build_dir" --parallel "$(nproc)"
