@@ -1,0 +1,38 @@
+// Friction laws as pure functions of the quantities a free-body diagram shows.
+// Sign convention: positive along the chosen axis; the returned friction force acts on the
+// body, so it opposes sliding (or the push that would cause it).
+#pragma once
+
+#include "physics/materials.h"
+
+namespace frictionlab {
+
+// Where a contact is on the engineering model's graph.
+enum class ContactState { sticking, slipping };
+
+struct FrictionOutcome {
+  double force = 0.0;  // friction force on the body, N
+  ContactState state = ContactState::sticking;
+};
+
+// The engineering model of the friction-models article, piecewise:
+//   v = 0 and |F_a| <= mu_s·N : friction = -F_a (sticks)
+//   v = 0 and |F_a| >  mu_s·N : friction = -mu_s·N·sign(F_a) (breaks away)
+//   v != 0                    : friction = -mu_k·N·sign(v) - c·v - b·v²·sign(v)
+// `applied` is the sum of every other force along the surface, `normal_force` >= 0.
+FrictionOutcome engineering_friction(double applied, double normal_force, double velocity, const FrictionPair& pair);
+
+// The tribology article's regularized static friction: below the threshold speed epsilon the
+// force grows linearly, -mu_s·N·v/epsilon; above it, kinetic -mu_k·N·sign(v). Viscous and
+// quadratic terms are added on top in both regimes. epsilon must be > 0.
+double regularized_friction(double velocity, double normal_force, double epsilon, const FrictionPair& pair);
+
+// The velocity-dependent part alone, -c·v - b·v²·sign(v).
+double damping_force(double velocity, const FrictionPair& pair);
+
+// Velocity of a body of mass m moving at v after a step h under the damping terms alone:
+// the exact solution of m·v' = -c·v - b·v·|v|. It never reverses the sign of v and never
+// grows |v|, for any h, c, b >= 0 (an explicit step reverses v once h·c/m >= 2).
+double damped_velocity(double velocity, double mass, double h, const FrictionPair& pair);
+
+}  // namespace frictionlab

@@ -1,0 +1,157 @@
+#include "physics/materials.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace frictionlab {
+namespace {
+
+std::string pair_name(std::string_view a, std::string_view b) {
+  std::string name(a);
+  name += "–";
+  name += b;
+  return name;
+}
+
+void check_coefficient(std::vector<std::string>& errors, const std::string& pair, const char* what, double value,
+                       double upper, const char* unit) {
+  if (std::isnan(value) || value < 0.0 || value > upper) {
+    std::ostringstream message;
+    message << "pair " << pair << ": " << what << " = " << value << unit << " is outside the allowed range [0, "
+            << upper << "]";
+    errors.push_back(message.str());
+  }
+}
+
+}  // namespace
+
+PairCheck check_pair(std::string_view material_a, std::string_view material_b, const FrictionPair& pair) {
+  PairCheck check;
+  const std::string name = pair_name(material_a, material_b);
+  // Above 10 no real pair of surfaces exists, and the solver's impulses stop meaning anything.
+  check_coefficient(check.errors, name, "mu_s", pair.mu_s, 10.0, "");
+  check_coefficient(check.errors, name, "mu_k", pair.mu_k, 10.0, "");
+  check_coefficient(check.errors, name, "c", pair.c, 1e6, " N·s/m");
+  check_coefficient(check.errors, name, "b", pair.b, 1e6, " N·s²/m²");
+  if (check.errors.empty() && pair.mu_k > pair.mu_s) {
+    std::ostringstream message;
+    message << "pair " << name << ": mu_k = " << pair.mu_k << " is larger than mu_s = " << pair.mu_s
+            << " (allowed, but sliding then needs more force than breaking away)";
+    check.warnings.push_back(message.str());
+  }
+  return check;
+}
+
+void PairTable::grow(int new_count) {
+  const int old_count = material_count();
+  std::vector<FrictionPair> pairs(static_cast<size_t>(new_count * new_count));
+  std::vector<char> set(pairs.size(), 0);
+  for (int a = 0; a < old_count; ++a) {
+    for (int b = 0; b < old_count; ++b) {
+      pairs[a * new_count + b] = pairs_[a * old_count + b];
+      set[a * new_count + b] = pair_set_[a * old_count + b];
+    }
+  }
+  pairs_ = std::move(pairs);
+  pair_set_ = std::move(set);
+}
+
+int PairTable::add_material(const Material& material) {
+  if (material.name.empty()) throw InvalidInput("material: the name must not be empty");
+  for (const Material& known : materials_) {
+    if (known.name == material.name) throw InvalidInput("material " + material.name + ": defined twice");
+  }
+  if (!(material.density > 0.0 && material.density <= 1e6)) {
+    std::ostringstream message;
+    message << "material " << material.name << ": density = " << material.density
+            << " kg/m² is outside the allowed range (0, 1e6]";
+    throw InvalidInput(message.str());
+  }
+  grow(material_count() + 1);
+  materials_.push_back(material);
+  return material_count() - 1;
+}
+
+int PairTable::material_id(std::string_view name) const {
+  for (int id = 0; id < material_count(); ++id) {
+    if (materials_[id].name == name) return id;
+  }
+  std::string message = "unknown material '" + std::string(name) + "'; known materials:";
+  for (const Material& known : materials_) message += " " + known.name;
+  throw InvalidInput(message);
+}
+
+std::vector<std::string> PairTable::set_pair(std::string_view a, std::string_view b, const FrictionPair& pair) {
+  const int id_a = material_id(a);
+  const int id_b = material_id(b);
+  PairCheck check = check_pair(a, b, pair);
+  if (!check.errors.empty()) {
+    std::string message = check.errors.front();
+    for (size_t i = 1; i < check.errors.size(); ++i) message += "; " + check.errors[i];
+    throw InvalidInput(message);
+  }
+  const int n = material_count();
+  pairs_[id_a * n + id_b] = pair;
+  pairs_[id_b * n + id_a] = pair;
+  pair_set_[id_a * n + id_b] = 1;
+  pair_set_[id_b * n + id_a] = 1;
+  return check.warnings;
+}
+
+bool PairTable::has_pair(int a, int b) const {
+  return a >= 0 && b >= 0 && a < material_count() && b < material_count() && pair_set_[a * material_count() + b];
+}
+
+const FrictionPair& PairTable::pair(int a, int b) const {
+  if (!has_pair(a, b)) {
+    const std::string name_a = (a >= 0 && a < material_count()) ? materials_[a].name : "?";
+    const std::string name_b = (b >= 0 && b < material_count()) ? materials_[b].name : "?";
+    throw InvalidInput("no friction values for the pair " + pair_name(name_a, name_b) + "; set them with set_pair");
+  }
+  return pairs_[a * material_count() + b];
+}
+
+const FrictionPair& PairTable::pair(std::string_view a, std::string_view b) const {
+  return pair(material_id(a), material_id(b));
+}
+
+PairTable preset_table() {
+  PairTable table;
+  // Densities are per unit area of the 2D shape; only their ratios matter for friction,
+  // since N = m·g and the friction limit scale together.
+  const Material materials[] = {
+      {"metal", 7800.0, "steel; tribology article's table"},
+      {"wood", 600.0, "dry timber; tribology article's table"},
+      {"rubber", 1100.0, "tyre rubber; tribology article's table"},
+      {"concrete", 2400.0, "tribology article's table"},
+      {"stone", 2600.0, "tribology article's table"},
+      {"aluminium", 2700.0, "the spring article's aluminium block"},
+      {"plastic", 1200.0, "the spring article's 3D-printed plastic block"},
+      {"asphalt", 2300.0, "terrain"},
+      {"grass", 1000.0, "terrain"},
+      {"ice", 917.0, "terrain"},
+  };
+  for (const Material& material : materials) table.add_material(material);
+
+  // Static coefficients sit inside the ranges of the tribology article's Table 2; kinetic ones
+  // are a little lower, as the article says they usually are.
+  table.set_pair("metal", "metal", {0.18, 0.14, 0.0, 0.0});     // table: 0.15–0.20
+  table.set_pair("wood", "wood", {0.40, 0.30, 0.0, 0.0});       // table: 0.25–0.50
+  table.set_pair("metal", "wood", {0.40, 0.30, 0.0, 0.0});      // table: 0.20–0.60
+  table.set_pair("rubber", "concrete", {0.80, 0.65, 0.0, 0.0});  // table: 0.60–0.90
+  table.set_pair("metal", "stone", {0.50, 0.40, 0.0, 0.0});     // table: 0.30–0.70
+  // The spring article: the aluminium block needs more force than the plastic one both to
+  // break away and to keep sliding.
+  table.set_pair("aluminium", "wood", {0.45, 0.35, 0.0, 0.0});
+  table.set_pair("plastic", "wood", {0.30, 0.22, 0.0, 0.0});
+  // Terrain under a rubber tyre and under a wooden crate (the article's game examples).
+  table.set_pair("rubber", "asphalt", {0.90, 0.70, 0.0, 0.0});
+  table.set_pair("rubber", "grass", {0.45, 0.35, 0.0, 0.0});
+  table.set_pair("rubber", "ice", {0.10, 0.05, 0.0, 0.0});
+  table.set_pair("wood", "asphalt", {0.55, 0.45, 0.0, 0.0});
+  table.set_pair("wood", "grass", {0.45, 0.35, 0.0, 0.0});
+  table.set_pair("wood", "ice", {0.08, 0.04, 0.0, 0.0});
+  return table;
+}
+
+}  // namespace frictionlab

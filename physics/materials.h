@@ -1,0 +1,71 @@
+// Materials and the symmetric table of friction parameters for each pair of them.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frictionlab {
+
+// Bad input from a user, a script or the command line: the message names the thing and the
+// allowed range. Callers turn it into exit code 2 or an on-screen error; it never aborts.
+struct InvalidInput : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Friction belongs to a pair of surfaces, not to one material.
+struct FrictionPair {
+  double mu_s = 0.0;  // static coefficient: holds until |friction| reaches mu_s * N
+  double mu_k = 0.0;  // kinetic coefficient: sliding friction is mu_k * N
+  double c = 0.0;     // viscous coefficient, N·s/m: F = -c·v
+  double b = 0.0;     // quadratic coefficient, N·s²/m²: F = -b·v²·sign(v)
+};
+
+struct Material {
+  std::string name;
+  double density = 1.0;  // kg/m² (2D bodies have area, not volume)
+  std::string note;      // where the numbers come from, shown to teachers
+};
+
+// Problems with a pair's values, each naming the pair and the allowed range. Empty when valid.
+// mu_k > mu_s is allowed (some surfaces do it) but listed in `warnings`.
+struct PairCheck {
+  std::vector<std::string> errors;
+  std::vector<std::string> warnings;
+};
+PairCheck check_pair(std::string_view material_a, std::string_view material_b, const FrictionPair& pair);
+
+class PairTable {
+ public:
+  // Returns the material's id; throws InvalidInput for an empty or repeated name or a
+  // density outside (0, 1e6] kg/m².
+  int add_material(const Material& material);
+  // Throws InvalidInput naming the unknown material and listing the known ones.
+  int material_id(std::string_view name) const;
+  const Material& material(int id) const { return materials_.at(id); }
+  int material_count() const { return static_cast<int>(materials_.size()); }
+
+  // Sets the pair in both orders. Throws InvalidInput (see check_pair) and leaves the table
+  // unchanged when the values are invalid; returns the warnings otherwise.
+  std::vector<std::string> set_pair(std::string_view a, std::string_view b, const FrictionPair& pair);
+  bool has_pair(int a, int b) const;
+  // Throws InvalidInput naming both materials when the pair was never set.
+  const FrictionPair& pair(int a, int b) const;
+  const FrictionPair& pair(std::string_view a, std::string_view b) const;
+
+ private:
+  std::vector<Material> materials_;
+  // Dense, symmetric, indexed by id: the contact listener reads it every step for every
+  // contact, so a lookup must cost two multiplies, not a hash.
+  std::vector<FrictionPair> pairs_;
+  std::vector<char> pair_set_;
+  void grow(int new_count);
+};
+
+// The seed articles' materials and pairs: the tribology article's table of static
+// coefficients (each mu_s inside its published range, mu_k a little below it), the spring
+// article's aluminium and plastic blocks on a wooden bench, and terrain under a rubber tyre.
+PairTable preset_table();
+
+}  // namespace frictionlab

@@ -1,0 +1,96 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/materials.h"
+
+using namespace frictionlab;
+
+TEST(PairTable, IsSymmetricAndReadsBothWays) {
+  PairTable table;
+  table.add_material({"wood", 600.0, ""});
+  table.add_material({"ice", 917.0, ""});
+  table.set_pair("wood", "ice", {0.08, 0.04, 1.5, 0.2});
+  EXPECT_DOUBLE_EQ(table.pair("ice", "wood").mu_s, 0.08);
+  EXPECT_DOUBLE_EQ(table.pair("wood", "ice").c, 1.5);
+  EXPECT_DOUBLE_EQ(table.pair(table.material_id("ice"), table.material_id("wood")).b, 0.2);
+}
+
+TEST(PairTable, KeepsPairsWhenMaterialsAreAdded) {
+  PairTable table;
+  table.add_material({"a", 1.0, ""});
+  table.add_material({"b", 1.0, ""});
+  table.set_pair("a", "b", {0.5, 0.3, 0.0, 0.0});
+  table.add_material({"c", 1.0, ""});
+  EXPECT_DOUBLE_EQ(table.pair("b", "a").mu_k, 0.3);
+  EXPECT_FALSE(table.has_pair(table.material_id("a"), table.material_id("c")));
+}
+
+TEST(PairTable, RejectsBadValuesNamingThePairAndRange) {
+  PairTable table;
+  table.add_material({"metal", 7800.0, ""});
+  table.add_material({"wood", 600.0, ""});
+  const FrictionPair bad[] = {{-0.1, 0.1, 0.0, 0.0}, {0.5, NAN, 0.0, 0.0}, {0.5, 0.4, -1.0, 0.0},
+                              {0.5, 0.4, 0.0, -2.0}, {11.0, 0.4, 0.0, 0.0}};
+  for (const FrictionPair& pair : bad) {
+    try {
+      table.set_pair("metal", "wood", pair);
+      FAIL() << "accepted an invalid pair";
+    } catch (const InvalidInput& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("metal–wood"), std::string::npos) << message;
+      EXPECT_NE(message.find("allowed range"), std::string::npos) << message;
+    }
+  }
+  EXPECT_FALSE(table.has_pair(0, 1)) << "a rejected pair must leave the table unchanged";
+}
+
+TEST(PairTable, FlagsKineticAboveStaticButAllowsIt) {
+  PairTable table;
+  table.add_material({"x", 1.0, ""});
+  const auto warnings = table.set_pair("x", "x", {0.3, 0.5, 0.0, 0.0});
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("mu_k"), std::string::npos);
+  EXPECT_DOUBLE_EQ(table.pair("x", "x").mu_k, 0.5);
+}
+
+TEST(PairTable, UnknownMaterialListsKnownOnes) {
+  PairTable table = preset_table();
+  try {
+    table.material_id("unobtainium");
+    FAIL();
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("aluminium"), std::string::npos);
+  }
+  EXPECT_THROW(table.pair("ice", "metal"), InvalidInput) << "a pair never set is an error, not zero friction";
+  EXPECT_THROW(table.add_material({"wood", 1.0, ""}), InvalidInput);
+  EXPECT_THROW(table.add_material({"foam", -1.0, ""}), InvalidInput);
+  EXPECT_THROW(table.add_material({"", 1.0, ""}), InvalidInput);
+}
+
+TEST(Presets, StaticCoefficientsLieInTheTribologyTableRanges) {
+  const PairTable table = preset_table();
+  struct Range {
+    const char* a;
+    const char* b;
+    double low, high;
+  };
+  // Table 2 of the tribology article.
+  const Range ranges[] = {{"metal", "metal", 0.15, 0.20}, {"wood", "wood", 0.25, 0.50}, {"metal", "wood", 0.20, 0.60},
+                          {"rubber", "concrete", 0.60, 0.90}, {"metal", "stone", 0.30, 0.70}};
+  for (const Range& r : ranges) {
+    const FrictionPair& pair = table.pair(r.a, r.b);
+    EXPECT_GE(pair.mu_s, r.low) << r.a << "–" << r.b;
+    EXPECT_LE(pair.mu_s, r.high) << r.a << "–" << r.b;
+    EXPECT_LT(pair.mu_k, pair.mu_s) << r.a << "–" << r.b;
+  }
+}
+
+TEST(Presets, AluminiumNeedsMoreForceThanPlasticBothWays) {
+  // The spring article's observation, on the same wooden bench.
+  const PairTable table = preset_table();
+  EXPECT_GT(table.pair("aluminium", "wood").mu_s, table.pair("plastic", "wood").mu_s);
+  EXPECT_GT(table.pair("aluminium", "wood").mu_k, table.pair("plastic", "wood").mu_k);
+  EXPECT_LT(table.pair("rubber", "ice").mu_s, table.pair("rubber", "grass").mu_s);
+  EXPECT_LT(table.pair("rubber", "grass").mu_s, table.pair("rubber", "asphalt").mu_s);
+}
