@@ -1,0 +1,281 @@
+#include "physics/closed_forms.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace frictionlab::theory {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+[[noreturn]] void reject(const char* where, const char* name, const char* range, double value) {
+  std::ostringstream message;
+  message << where << ": " << name << " must be " << range << ", got " << value;
+  throw InvalidInput(message.str());
+}
+
+void require_positive(const char* where, const char* name, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) reject(where, name, "> 0 and finite", value);
+}
+
+void require_non_negative(const char* where, const char* name, double value) {
+  if (!(value >= 0.0) || !std::isfinite(value)) reject(where, name, ">= 0 and finite", value);
+}
+
+void require_finite(const char* where, const char* name, double value) {
+  if (!std::isfinite(value)) reject(where, name, "finite", value);
+}
+
+// Inclines run from flat to vertical; beyond that "down the slope" changes meaning.
+void require_slope_angle(const char* where, double angle) {
+  if (!(angle >= 0.0 && angle <= std::numbers::pi / 2)) reject(where, "angle", "in [0, pi/2] rad", angle);
+}
+
+void require_pair(const char* where, const FrictionPair& pair) {
+  require_non_negative(where, "mu_s", pair.mu_s);
+  require_non_negative(where, "mu_k", pair.mu_k);
+  require_non_negative(where, "c", pair.c);
+  require_non_negative(where, "b", pair.b);
+}
+
+// Stick and slip only make sense together when sliding is no harder than starting to slide.
+void require_kinetic_not_above_static(const char* where, double mu_s, double mu_k) {
+  if (mu_k > mu_s) {
+    std::ostringstream message;
+    message << where << ": mu_k must be in [0, mu_s] = [0, " << mu_s << "], got " << mu_k;
+    throw InvalidInput(message.str());
+  }
+}
+
+// e^(−u) − 1 + u without the cancellation that loses every digit when u is small.
+double exp_minus_one_plus(double u) {
+  if (std::abs(u) > 0.1) return std::expm1(-u) + u;
+  double term = u * u / 2.0, sum = 0.0;
+  for (int n = 3; n < 20 && term != 0.0; ++n) {
+    sum += term;
+    term *= -u / n;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double sticking_angle(double mu_s) {
+  require_non_negative("sticking_angle", "mu_s", mu_s);
+  return std::atan(mu_s);
+}
+
+double incline_sliding_acceleration(double angle, double mu_k, double g) {
+  require_slope_angle("incline_sliding_acceleration", angle);
+  require_non_negative("incline_sliding_acceleration", "mu_k", mu_k);
+  require_positive("incline_sliding_acceleration", "g", g);
+  return g * (std::sin(angle) - mu_k * std::cos(angle));
+}
+
+namespace {
+struct InclineMotion {
+  double speed, distance;
+};
+
+InclineMotion incline_motion(const char* where, double angle, double mu_k, double c, double mass, double g, double t) {
+  require_slope_angle(where, angle);
+  require_non_negative(where, "mu_k", mu_k);
+  require_non_negative(where, "c", c);
+  require_positive(where, "mass", mass);
+  require_positive(where, "g", g);
+  require_non_negative(where, "t", t);
+  const double a = incline_sliding_acceleration(angle, mu_k, g);
+  if (a <= 0.0) return {0.0, 0.0};  // broke free, but kinetic friction holds it at once
+  if (c == 0.0) return {a * t, a * t * t / 2.0};
+  // Viscous drag gives a terminal speed a/γ, approached exponentially.
+  const double gamma = c / mass;
+  return {-(a / gamma) * std::expm1(-gamma * t), (a / (gamma * gamma)) * exp_minus_one_plus(gamma * t)};
+}
+}  // namespace
+
+double incline_speed(double angle, double mu_k, double c, double mass, double g, double t) {
+  return incline_motion("incline_speed", angle, mu_k, c, mass, g, t).speed;
+}
+
+double incline_distance(double angle, double mu_k, double c, double mass, double g, double t) {
+  return incline_motion("incline_distance", angle, mu_k, c, mass, g, t).distance;
+}
+
+double tip_height(double width, double mu_s) {
+  require_positive("tip_height", "width", width);
+  require_non_negative("tip_height", "mu_s", mu_s);
+  if (mu_s == 0.0) return infinity;  // frictionless: it always slides first
+  return width / (2.0 * mu_s);
+}
+
+PushOutcome push_outcome(double weight, double width, double push_height, double mu_s) {
+  require_positive("push_outcome", "weight", weight);
+  require_positive("push_outcome", "width", width);
+  require_non_negative("push_outcome", "push_height", push_height);
+  require_non_negative("push_outcome", "mu_s", mu_s);
+  // Moments about the front bottom edge: push·h against weight·d/2. Friction acts through that
+  // edge, so it has no moment there; tipping needs no friction beyond what holds the base.
+  const double tip_force = push_height > 0.0 ? weight * width / (2.0 * push_height) : infinity;
+  const double slide_force = mu_s * weight;
+  // Decided on the heights, not the forces, so that h == tip_height tips exactly as promised.
+  const bool tips = 2.0 * mu_s * push_height >= width;
+  return {tips, tips ? tip_force : slide_force};
+}
+
+StickSlip spring_stick_slip(double mass, double k, double pull_speed, double mu_s, double mu_k, double g) {
+  const char* where = "spring_stick_slip";
+  require_positive(where, "mass", mass);
+  require_positive(where, "k", k);
+  require_positive(where, "pull_speed", pull_speed);
+  require_non_negative(where, "mu_s", mu_s);
+  require_non_negative(where, "mu_k", mu_k);
+  require_kinetic_not_above_static(where, mu_s, mu_k);
+  require_positive(where, "g", g);
+  const double weight = mass * g;
+  const double omega = std::sqrt(k / mass);
+  // While slipping, the stretch oscillates about its kinetic balance μk·m·g/k, starting Δ above
+  // it and moving at pull_speed; the block stops half a swing later, Δ below it.
+  const double delta = (mu_s - mu_k) * weight / k;
+  StickSlip result{};
+  result.breakaway_force = mu_s * weight;
+  result.restick_force = (2.0 * mu_k - mu_s) * weight;
+  result.stick_duration = 2.0 * delta / pull_speed;
+  result.slip_duration = (std::numbers::pi + 2.0 * std::atan2(pull_speed, omega * delta)) / omega;
+  result.period = result.stick_duration + result.slip_duration;
+  result.first_breakaway_time = mu_s * weight / (k * pull_speed);
+  // Each cycle ends as it began, so the block keeps pace with the far end of the spring.
+  result.slip_distance = pull_speed * result.period;
+  return result;
+}
+
+SlideToRest slide_to_rest(double v0, double mass, const FrictionPair& pair, double g) {
+  const char* where = "slide_to_rest";
+  require_finite(where, "v0", v0);
+  require_positive(where, "mass", mass);
+  require_pair(where, pair);
+  require_positive(where, "g", g);
+  const double speed = std::abs(v0);
+  if (speed == 0.0) return {0.0, 0.0};
+  // Deceleration a + γv + βv²: time is ∫dv/Q, distance ∫v dv/Q over [0, v0].
+  const double a = pair.mu_k * g, gamma = pair.c / mass, beta = pair.b / mass;
+  if (a == 0.0) {
+    // Drag alone never quite stops it; linear drag still stops it within a finite distance.
+    if (gamma == 0.0) return {infinity, infinity};
+    if (beta == 0.0) return {infinity, speed / gamma};
+    return {infinity, std::log1p(beta * speed / gamma) / beta};
+  }
+  const double discriminant = gamma * gamma - 4.0 * a * beta;
+  const double q = std::sqrt(std::abs(discriminant));
+  // Distance from 0 to the nearest root of Q, the radius of convergence of 1/Q's power series.
+  double nearest_root = infinity;
+  if (beta == 0.0 && gamma > 0.0) nearest_root = a / gamma;
+  if (beta > 0.0) nearest_root = discriminant < 0.0 ? std::sqrt(a / beta) : 2.0 * a / (gamma + q);
+
+  if (speed <= 0.25 * nearest_root) {
+    // Slow launches (and pure Coulomb): the closed forms below subtract nearly equal logarithms,
+    // so sum the power series of 1/Q instead. term_n = coef_n·v0^n with
+    // coef_n = −(γ coef_{n−1} + β coef_{n−2})/a; scaling by v0^n keeps every term finite.
+    double older = 0.0, term = 1.0 / a, time = 0.0, distance = 0.0;
+    for (int n = 0; n < 100; ++n) {
+      time += term * speed / (n + 1);
+      distance += term * speed * speed / (n + 2);
+      const double next = -(gamma * speed * term + beta * speed * speed * older) / a;
+      older = term;
+      term = next;
+      if (std::abs(term) + std::abs(older) < 1e-20 / a) break;
+    }
+    return {time, distance};
+  }
+  if (beta == 0.0) {
+    const double growth = std::log1p(gamma * speed / a);
+    return {growth / gamma, speed / gamma - a / (gamma * gamma) * growth};
+  }
+  double time = 0.0;
+  if (discriminant < 0.0) {
+    // The arctangent difference folded into one arctangent, which stays accurate as q → 0.
+    time = (2.0 / q) * std::atan(speed * q / (2.0 * a + gamma * speed));
+  } else if (discriminant == 0.0) {
+    time = 2.0 * speed / (gamma * speed + 2.0 * a);
+  } else {
+    const double top = 2.0 * beta * speed + gamma;
+    time = std::log1p(q * speed * (gamma + q) / (a * (top + q))) / q;
+  }
+  if (discriminant > 0.0 && q >= gamma / 2.0) {
+    // Well-separated real roots −p and −r: partial fractions, each term of modest size.
+    const double p = 2.0 * a / (gamma + q), r = (gamma + q) / (2.0 * beta);
+    return {time, (r * std::log1p(speed / r) - p * std::log1p(speed / p)) / q};
+  }
+  return {time, (std::log1p((gamma * speed + beta * speed * speed) / a) - gamma * time) / (2.0 * beta)};
+}
+
+DiskOnIncline disk_on_incline(double angle, double mass, double radius, double inertia, double mu_s, double mu_k,
+                              double g) {
+  const char* where = "disk_on_incline";
+  require_slope_angle(where, angle);
+  require_positive(where, "mass", mass);
+  require_positive(where, "radius", radius);
+  require_positive(where, "inertia", inertia);
+  require_non_negative(where, "mu_s", mu_s);
+  require_non_negative(where, "mu_k", mu_k);
+  require_kinetic_not_above_static(where, mu_s, mu_k);
+  require_positive(where, "g", g);
+  // κ = I/(mR²): how much of the weight's pull goes into spinning the body up when it rolls.
+  const double kappa = inertia / (mass * radius * radius);
+  const double normal_force = mass * g * std::cos(angle);
+  const double rolling_acceleration = g * std::sin(angle) / (1.0 + kappa);
+  const double rolling_friction = kappa * mass * rolling_acceleration;
+  if (rolling_friction <= mu_s * normal_force) {
+    return {true, rolling_acceleration, rolling_acceleration / radius, rolling_friction};
+  }
+  const double friction = mu_k * normal_force;
+  return {false, g * std::sin(angle) - friction / mass, friction * radius / inertia, friction};
+}
+
+RollStart disk_starts_rolling(double v0, double mass, double radius, double inertia, double mu_k, double g) {
+  const char* where = "disk_starts_rolling";
+  require_finite(where, "v0", v0);
+  require_positive(where, "mass", mass);
+  require_positive(where, "radius", radius);
+  require_positive(where, "inertia", inertia);
+  require_non_negative(where, "mu_k", mu_k);
+  require_positive(where, "g", g);
+  const double speed0 = std::abs(v0);
+  const double kappa = inertia / (mass * radius * radius);
+  // The contact point's slip speed v − ωR falls at μk g (1 + 1/κ); the same friction removes
+  // the fraction κ/(1+κ) of the launch speed by the time it reaches zero.
+  const double final_speed = speed0 / (1.0 + kappa);
+  if (speed0 == 0.0) return {0.0, 0.0, 0.0};
+  if (mu_k == 0.0) return {infinity, speed0, infinity};
+  const double deceleration = mu_k * g;
+  const double time = speed0 / (deceleration * (1.0 + 1.0 / kappa));
+  return {time, final_speed, speed0 * time - deceleration * time * time / 2.0};
+}
+
+StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const FrictionPair& between,
+                             const FrictionPair& ground, double push, double g) {
+  const char* where = "stacked_blocks";
+  require_positive(where, "top_mass", top_mass);
+  require_positive(where, "bottom_mass", bottom_mass);
+  require_pair(where, between);
+  require_pair(where, ground);
+  require_kinetic_not_above_static("stacked_blocks (between)", between.mu_s, between.mu_k);
+  require_kinetic_not_above_static("stacked_blocks (ground)", ground.mu_s, ground.mu_k);
+  require_finite(where, "push", push);
+  require_positive(where, "g", g);
+  const double total_mass = top_mass + bottom_mass;
+  const double force = std::abs(push), direction = push < 0.0 ? -1.0 : 1.0;
+  // Together, the top block needs friction m_top·a from the bottom one; it can have μs_between·m_top·g.
+  const double max_push_together = (between.mu_s + ground.mu_k) * total_mass * g;
+  if (force <= ground.mu_s * total_mass * g) return {StackRegime::at_rest, 0.0, 0.0, max_push_together};
+  if (force <= max_push_together) {
+    const double a = force / total_mass - ground.mu_k * g;
+    return {StackRegime::together, direction * a, direction * a, max_push_together};
+  }
+  const double top_a = between.mu_k * g;
+  const double bottom_a = (force - between.mu_k * top_mass * g - ground.mu_k * total_mass * g) / bottom_mass;
+  return {StackRegime::top_slips, direction * top_a, direction * bottom_a, max_push_together};
+}
+
+}  // namespace frictionlab::theory

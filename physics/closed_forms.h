@@ -1,0 +1,98 @@
+// Closed-form answers to the textbook friction problems, so every lesson can show theory
+// beside simulation with the error between them. Doubles, SI units, angles in radians.
+// Every function throws InvalidInput (naming the parameter and its allowed range) for a
+// negative mass, a NaN, a negative coefficient and the like.
+#pragma once
+
+#include "physics/materials.h"
+
+namespace frictionlab::theory {
+
+// Steepest incline a block rests on: tan(angle) = mu_s, whatever its mass.
+double sticking_angle(double mu_s);
+
+// Acceleration down the slope of a block already sliding down it, g(sin θ − μk cos θ).
+// Zero or negative means kinetic friction would stop it.
+double incline_sliding_acceleration(double angle, double mu_k, double g);
+
+// A block released from rest on an incline steeper than atan(mu_s), with kinetic friction
+// mu_k and viscous drag c (c may be 0): speed and distance along the slope at time t >= 0.
+// Where kinetic friction alone would hold it (tan θ <= mu_k) it never starts: both are 0.
+double incline_speed(double angle, double mu_k, double c, double mass, double g, double t);
+double incline_distance(double angle, double mu_k, double c, double mass, double g, double t);
+
+// A uniform box of width d pushed horizontally at height h: pushed at or above d/(2 μs) it
+// tips about its front edge before it slides, however hard the push.
+double tip_height(double width, double mu_s);
+
+struct PushOutcome {
+  bool tips;     // true: tips before sliding; false: slides first
+  double force;  // push (N) at which that happens: min(W·d/(2h), μs·W)
+};
+PushOutcome push_outcome(double weight, double width, double push_height, double mu_s);
+
+// The spring lesson: a block of mass m on flat ground, pulled by a spring of stiffness k whose
+// far end moves at pull_speed; at t = 0 the spring is at its rest length and the block at rest,
+// no viscous drag. The motion settles at once into a periodic stick-slip cycle.
+struct StickSlip {
+  double breakaway_force;       // spring force when the block starts to slide, μs·m·g
+  double restick_force;         // spring force when it stops, (2μk − μs)·m·g (negative: compressed)
+  double stick_duration;        // s
+  double slip_duration;         // s
+  double period;                // stick + slip
+  double first_breakaway_time;  // s after the pull starts
+  double slip_distance;         // how far the block moves in one cycle, m
+};
+// Requires 0 <= mu_k <= mu_s (else no periodic stick-slip exists), k > 0, pull_speed > 0.
+StickSlip spring_stick_slip(double mass, double k, double pull_speed, double mu_s, double mu_k, double g);
+
+// A block launched at v0 on flat ground slowing under m v' = −μk m g − c v − b v², with any
+// c >= 0 and b >= 0. v0 may have either sign; time and distance are magnitudes. Infinity where
+// it never stops (no dry friction), or never stops within a finite distance.
+struct SlideToRest {
+  double time;
+  double distance;
+};
+SlideToRest slide_to_rest(double v0, double mass, const FrictionPair& pair, double g);
+
+// A round body (disk, ring, ball: any inertia about its centre) released on an incline.
+// Positive is down the slope; friction_force is the magnitude of friction, acting up the slope.
+struct DiskOnIncline {
+  bool rolls;                   // rolls without slipping when tan θ <= μs (1 + m R² / I)
+  double acceleration;          // of the centre, m/s²
+  double angular_acceleration;  // rad/s², in the rolling-down sense
+  double friction_force;        // N
+};
+// Requires mu_k <= mu_s: otherwise a disk that starts to slip would be stopped slipping at once,
+// and the model has no answer.
+DiskOnIncline disk_on_incline(double angle, double mass, double radius, double inertia, double mu_s, double mu_k,
+                              double g);
+
+// A disk launched sliding at v0 with no spin on flat ground: kinetic friction slows the centre
+// and spins the disk up until v = ω R, after which it rolls. v0 may have either sign; the
+// results are magnitudes. With mu_k = 0 it never rolls (time and distance infinite).
+struct RollStart {
+  double time;
+  double speed;
+  double distance;
+};
+RollStart disk_starts_rolling(double v0, double mass, double radius, double inertia, double mu_k, double g);
+
+// Two blocks stacked on the ground, a horizontal push on the bottom one (negative pushes the
+// other way; accelerations then carry the same sign). Coulomb friction only: the answer is
+// for the instant the push is applied to the blocks at rest, where c·v and b·v² are zero.
+enum class StackRegime { at_rest, together, top_slips };
+struct StackedBlocks {
+  StackRegime regime;
+  double top_acceleration;
+  double bottom_acceleration;
+  // Largest push for which the sliding pair moves as one, (μs_between + μk_ground)·(m1+m2)·g.
+  // Together happens for μs_ground·(m1+m2)·g < |push| <= this; when this is below the
+  // breakaway push the top block slips as soon as the bottom one moves.
+  double max_push_together;
+};
+// Requires mu_k <= mu_s for both pairs (see disk_on_incline).
+StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const FrictionPair& between,
+                             const FrictionPair& ground, double push, double g);
+
+}  // namespace frictionlab::theory

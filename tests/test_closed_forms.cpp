@@ -1,0 +1,413 @@
+// Each closed form against an independent numerical solution of the same equations: the
+// event-driven RK4 solver for the dynamics, bisection and small linear solves for the statics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "physics/closed_forms.h"
+#include "physics/reduced_model.h"
+
+namespace frictionlab {
+namespace {
+
+using namespace theory;
+
+constexpr double g = 9.81;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// Agreement with a numerical solution, relative to the size of the expected value.
+#define EXPECT_RELATIVE(actual, expected, tolerance) \
+  EXPECT_NEAR(actual, expected, (tolerance) * std::abs(expected))
+
+// Bisection for the first x in [lo, hi] at which a monotone predicate turns true.
+template <class Predicate>
+double first_true(double lo, double hi, Predicate predicate) {
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (predicate(mid) ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+const Event& nth_event(const Trajectory& trajectory, EventKind kind, int n) {
+  int seen = 0;
+  for (const Event& event : trajectory.events()) {
+    if (event.kind == kind && seen++ == n) return event;
+  }
+  throw std::runtime_error("event not found");
+}
+
+TEST(ClosedForms, StickingAngleBalancesGravityAgainstMaximumStaticFriction) {
+  for (const double mu_s : {0.05, 0.6, 1.3}) {
+    const double mass = 2.0;
+    // The block slips once the pull along the slope beats μs times the normal force.
+    const double angle = first_true(0.0, std::numbers::pi / 2, [&](double theta) {
+      return mass * g * std::sin(theta) > mu_s * mass * g * std::cos(theta);
+    });
+    EXPECT_RELATIVE(sticking_angle(mu_s), angle, 1e-12) << "mu_s " << mu_s;
+  }
+  EXPECT_EQ(sticking_angle(0.0), 0.0);
+}
+
+TEST(ClosedForms, InclineSlidingAccelerationFromFreeBodyDiagramVectors) {
+  for (const double angle : {0.2, 0.7, 1.2}) {
+    const double mass = 3.0, mu_k = 0.45;
+    // Gravity (0, −m g) resolved on the slope's unit vectors, down-slope (cos, −sin) and normal (sin, cos).
+    const double along = mass * g * std::sin(angle);           // −m g · (−sin θ)
+    const double normal_force = mass * g * std::cos(angle);    // surface pushes back what gravity presses in
+    const double expected = (along - mu_k * normal_force) / mass;
+    EXPECT_RELATIVE(incline_sliding_acceleration(angle, mu_k, g), expected, 1e-12) << "angle " << angle;
+  }
+  EXPECT_LT(incline_sliding_acceleration(0.2, 0.45, g), 0.0);  // kinetic friction would stop it
+}
+
+TEST(ClosedForms, InclineSpeedAndDistanceMatchEventSolver) {
+  for (const double c : {0.0, 0.8, 5.0}) {
+    const double mass = 2.0, angle = 0.6;
+    OneDofBlock block;
+    block.mass = mass;
+    block.normal_force = mass * g * std::cos(angle);
+    block.constant_force = mass * g * std::sin(angle);
+    block.pair = {0.5, 0.3, c, 0.0};  // tan 0.6 = 0.684 > μs: it breaks away at once
+    const Trajectory numeric = solve_event_rk4(block, 2.0, 1e-4);
+    ASSERT_EQ(numeric.events().front().kind, EventKind::breakaway);
+    for (const double t : {0.25, 1.0, 2.0}) {
+      EXPECT_RELATIVE(incline_speed(angle, 0.3, c, mass, g, t), numeric.velocity(t), 1e-6) << "c " << c << " t " << t;
+      EXPECT_RELATIVE(incline_distance(angle, 0.3, c, mass, g, t), numeric.position(t), 1e-6) << "c " << c << " t " << t;
+    }
+  }
+  // Steeper than atan(μs) but not than atan(μk): it cannot keep sliding.
+  EXPECT_EQ(incline_speed(0.3, 0.4, 0.0, 1.0, g, 1.0), 0.0);
+  EXPECT_EQ(incline_distance(0.3, 0.4, 0.0, 1.0, g, 1.0), 0.0);
+}
+
+// A uniform box of width d and weight W pushed at height h, standing still: horizontal balance
+// gives friction = F, vertical gives N = W, and moments about the base centre put the normal
+// force's line at e = F h / W towards the front. It tips once e must pass d/2, slides once
+// friction must pass μs N.
+struct BoxPush {
+  double weight, width, height, mu_s;
+  double tipping_push() const {
+    return first_true(0.0, 1e6, [&](double push) { return push * height / weight > width / 2.0; });
+  }
+  double sliding_push() const {
+    return first_true(0.0, 1e6, [&](double push) { return push > mu_s * weight; });
+  }
+};
+
+TEST(ClosedForms, TipHeightIsWhereTippingAndSlidingNeedTheSamePush) {
+  for (const double mu_s : {0.3, 0.6, 1.1}) {
+    const double width = 0.8;
+    const double height = first_true(1e-3, 100.0, [&](double h) {
+      const BoxPush box{50.0, width, h, mu_s};
+      return box.tipping_push() <= box.sliding_push();
+    });
+    EXPECT_RELATIVE(tip_height(width, mu_s), height, 1e-9) << "mu_s " << mu_s;
+  }
+  EXPECT_EQ(tip_height(1.0, 0.0), infinity);
+}
+
+TEST(ClosedForms, PushOutcomeMatchesEquilibriumOfTheBox) {
+  const double weight = 60.0, width = 0.5, mu_s = 0.5;  // tip height 0.5 m
+  for (const double height : {0.1, 0.45, 0.55, 1.5}) {
+    const BoxPush box{weight, width, height, mu_s};
+    const double tip = box.tipping_push(), slide = box.sliding_push();
+    const PushOutcome outcome = push_outcome(weight, width, height, mu_s);
+    EXPECT_EQ(outcome.tips, tip < slide) << "height " << height;
+    EXPECT_RELATIVE(outcome.force, std::min(tip, slide), 1e-9) << "height " << height;
+  }
+  EXPECT_TRUE(push_outcome(weight, width, tip_height(width, mu_s), mu_s).tips);  // "at or above" tips
+  EXPECT_FALSE(push_outcome(weight, width, 0.0, mu_s).tips);
+}
+
+struct SpringCase {
+  double mass, k, pull_speed, mu_s, mu_k;
+};
+
+TEST(ClosedForms, SpringStickSlipMatchesEventSolver) {
+  // The suggested standard problem; μs > 2μk, where the block restops on a compressed spring;
+  // and a heavier, faster case.
+  for (const SpringCase& s : {SpringCase{1.0, 50.0, 0.1, 0.6, 0.4}, SpringCase{1.0, 50.0, 0.1, 0.6, 0.2},
+                              SpringCase{2.5, 20.0, 0.3, 0.5, 0.35}}) {
+    OneDofBlock block;
+    block.mass = s.mass;
+    block.normal_force = s.mass * g;
+    block.pair = {s.mu_s, s.mu_k, 0.0, 0.0};
+    block.spring_k = s.k;
+    block.pull_speed = s.pull_speed;
+    const StickSlip theory = spring_stick_slip(s.mass, s.k, s.pull_speed, s.mu_s, s.mu_k, g);
+    const Trajectory numeric = solve_event_rk4(block, theory.first_breakaway_time + 3.2 * theory.period, 1e-4);
+    const Event& break1 = nth_event(numeric, EventKind::breakaway, 0);
+    const Event& stop1 = nth_event(numeric, EventKind::stop, 0);
+    const Event& break2 = nth_event(numeric, EventKind::breakaway, 1);
+    const Event& stop2 = nth_event(numeric, EventKind::stop, 1);
+    const Event& break3 = nth_event(numeric, EventKind::breakaway, 2);
+    const auto spring = [&](const Event& e) { return applied_force(block, e.t, e.x); };
+    EXPECT_RELATIVE(theory.first_breakaway_time, break1.t, 1e-6);
+    EXPECT_RELATIVE(theory.breakaway_force, spring(break2), 1e-6);
+    EXPECT_RELATIVE(theory.restick_force, spring(stop1), 1e-6);
+    EXPECT_RELATIVE(theory.restick_force, spring(stop2), 1e-6);
+    EXPECT_RELATIVE(theory.slip_duration, stop1.t - break1.t, 1e-6);
+    EXPECT_RELATIVE(theory.stick_duration, break2.t - stop1.t, 1e-6);
+    EXPECT_RELATIVE(theory.period, break2.t - break1.t, 1e-6);
+    EXPECT_RELATIVE(theory.period, break3.t - break2.t, 1e-6);
+    EXPECT_RELATIVE(theory.slip_distance, break3.x - break2.x, 1e-6);
+  }
+}
+
+TEST(ClosedForms, SpringStickSlipStandardNumbers) {
+  // Hand-checked: Δ = 0.2·9.81/50 = 0.03924 m, ω = √50, so stick 0.7848 s and slip
+  // (π + 2 atan(0.1/(√50·0.03924)))/√50 = 0.542127 s; breakaway 5.886 N, restick 1.962 N.
+  const StickSlip s = spring_stick_slip(1.0, 50.0, 0.1, 0.6, 0.4, g);
+  EXPECT_NEAR(s.breakaway_force, 5.886, 1e-12);
+  EXPECT_NEAR(s.restick_force, 1.962, 1e-12);
+  EXPECT_NEAR(s.stick_duration, 0.7848, 1e-12);
+  EXPECT_NEAR(s.slip_duration, 0.542127, 1e-6);
+  EXPECT_NEAR(s.period, 1.326927, 1e-6);
+  EXPECT_NEAR(s.first_breakaway_time, 1.1772, 1e-12);
+}
+
+TEST(ClosedForms, SlideToRestMatchesEventSolverForEveryDragCombination) {
+  const double mass = 2.0, mu_k = 0.3;
+  // c and b each off and on, and with both on the three discriminant cases of a + γv + βv²
+  // (a = 2.943, γ = c/m, β = b/m): complex roots, real roots, and (nearly) a double root.
+  const double double_root_b = mass * (1.5 / mass) * (1.5 / mass) / (4.0 * mu_k * g);
+  struct Drag {
+    double c, b;
+  };
+  for (const Drag drag : {Drag{0, 0}, Drag{1.5, 0}, Drag{0, 0.4}, Drag{1.5, 0.4}, Drag{6.0, 0.4},
+                          Drag{1.5, double_root_b}}) {
+    for (const double v0 : {0.01, 3.0, 40.0, -3.0}) {
+      const FrictionPair pair{0.5, mu_k, drag.c, drag.b};
+      const SlideToRest theory = slide_to_rest(v0, mass, pair, g);
+      OneDofBlock block;
+      block.mass = mass;
+      block.normal_force = mass * g;
+      block.pair = pair;
+      block.v0 = v0;
+      const Trajectory numeric = solve_event_rk4(block, theory.time + 0.5, std::min(1e-4, theory.time / 200.0));
+      const Event& stop = nth_event(numeric, EventKind::stop, 0);
+      EXPECT_RELATIVE(theory.time, stop.t, 1e-6) << "c " << drag.c << " b " << drag.b << " v0 " << v0;
+      EXPECT_RELATIVE(theory.distance, std::abs(stop.x), 1e-6) << "c " << drag.c << " b " << drag.b << " v0 " << v0;
+    }
+  }
+}
+
+TEST(ClosedForms, SlideToRestWithoutDryFrictionNeverStops) {
+  const double mass = 2.0, v0 = 3.0;
+  EXPECT_EQ(slide_to_rest(v0, mass, {0, 0, 0, 0}, g).time, infinity);
+  EXPECT_EQ(slide_to_rest(v0, mass, {0, 0, 0, 0}, g).distance, infinity);
+  EXPECT_EQ(slide_to_rest(v0, mass, {0, 0, 0, 0.4}, g).distance, infinity);
+  // Drag alone: it never stops, but linear drag bounds the distance. Compare with a long run.
+  for (const FrictionPair& pair : {FrictionPair{0, 0, 1.5, 0}, FrictionPair{0, 0, 1.5, 0.4}}) {
+    const SlideToRest theory = slide_to_rest(v0, mass, pair, g);
+    EXPECT_EQ(theory.time, infinity);
+    OneDofBlock block;
+    block.mass = mass;
+    block.normal_force = mass * g;
+    block.pair = pair;
+    block.v0 = v0;
+    EXPECT_RELATIVE(theory.distance, solve_event_rk4(block, 60.0, 1e-3).position(60.0), 1e-6) << "b " << pair.b;
+  }
+}
+
+// Rolling: m a = m g sinθ − f, I α = f R, a = α R, three equations solved by elimination.
+struct RollingSolution {
+  double acceleration, angular_acceleration, friction;
+};
+RollingSolution solve_rolling(double angle, double mass, double radius, double inertia) {
+  double m[3][4] = {{mass, 0.0, 1.0, mass * g * std::sin(angle)},
+                    {0.0, inertia, -radius, 0.0},
+                    {1.0, -radius, 0.0, 0.0}};
+  for (int col = 0; col < 3; ++col) {
+    int pivot = col;
+    for (int row = col + 1; row < 3; ++row)
+      if (std::abs(m[row][col]) > std::abs(m[pivot][col])) pivot = row;
+    std::swap(m[col], m[pivot]);
+    for (int row = 0; row < 3; ++row) {
+      if (row == col) continue;
+      const double factor = m[row][col] / m[col][col];
+      for (int k = col; k < 4; ++k) m[row][k] -= factor * m[col][k];
+    }
+  }
+  return {m[0][3] / m[0][0], m[1][3] / m[1][1], m[2][3] / m[2][2]};
+}
+
+TEST(ClosedForms, DiskOnInclineRollsUntilStaticFrictionCannotSupplyTheTorque) {
+  const double mass = 1.5, radius = 0.2, mu_s = 0.3, mu_k = 0.2;
+  for (const double inertia : {0.5 * mass * radius * radius, mass * radius * radius, 0.4 * mass * radius * radius}) {
+    const auto needs_more_than_static = [&](double angle) {
+      return solve_rolling(angle, mass, radius, inertia).friction > mu_s * mass * g * std::cos(angle);
+    };
+    const double critical = first_true(0.0, std::numbers::pi / 2, needs_more_than_static);
+    const double flips = first_true(0.0, std::numbers::pi / 2, [&](double angle) {
+      return !disk_on_incline(angle, mass, radius, inertia, mu_s, mu_k, g).rolls;
+    });
+    EXPECT_RELATIVE(flips, critical, 1e-9) << "inertia " << inertia;
+
+    const double gentle = 0.5 * critical;
+    const RollingSolution rolling = solve_rolling(gentle, mass, radius, inertia);
+    const DiskOnIncline below = disk_on_incline(gentle, mass, radius, inertia, mu_s, mu_k, g);
+    EXPECT_TRUE(below.rolls);
+    EXPECT_RELATIVE(below.acceleration, rolling.acceleration, 1e-12);
+    EXPECT_RELATIVE(below.angular_acceleration, rolling.angular_acceleration, 1e-12);
+    EXPECT_RELATIVE(below.friction_force, rolling.friction, 1e-12);
+
+    // Slipping: kinetic friction μk N up the slope drives the spin and slows the centre.
+    const double steep = std::min(1.5 * critical, 1.5);
+    const double normal_force = mass * g * std::cos(steep);
+    const DiskOnIncline above = disk_on_incline(steep, mass, radius, inertia, mu_s, mu_k, g);
+    EXPECT_FALSE(above.rolls);
+    EXPECT_RELATIVE(above.acceleration, g * std::sin(steep) - mu_k * normal_force / mass, 1e-12);
+    EXPECT_RELATIVE(above.angular_acceleration, mu_k * normal_force * radius / inertia, 1e-12);
+    EXPECT_RELATIVE(above.friction_force, mu_k * normal_force, 1e-12);
+    EXPECT_GT(above.acceleration, above.angular_acceleration * radius);  // the contact slides down
+  }
+}
+
+TEST(ClosedForms, DiskStartsRollingMatchesIntegratedSpinUp) {
+  const double mass = 2.0, radius = 0.3, mu_k = 0.25;
+  for (const double inertia : {0.5 * mass * radius * radius, mass * radius * radius}) {
+    for (const double v0 : {4.0, 0.3}) {
+      // x' = v, v' = −μk g, ω' = μk m g R / I while the contact slips forward (v > ωR).
+      struct State {
+        double x, v, omega;
+      };
+      const auto rate = [&](const State&) {
+        return State{0.0, -mu_k * g, mu_k * mass * g * radius / inertia};
+      };
+      const auto step = [&](State s, double h) {
+        const State k1 = rate(s);
+        const State m1{s.x + 0.5 * h * s.v, s.v + 0.5 * h * k1.v, s.omega + 0.5 * h * k1.omega};
+        const State k2 = rate(m1);
+        const State m2{s.x + 0.5 * h * m1.v, s.v + 0.5 * h * k2.v, s.omega + 0.5 * h * k2.omega};
+        const State k3 = rate(m2);
+        const State e{s.x + h * m2.v, s.v + h * k3.v, s.omega + h * k3.omega};
+        const State k4 = rate(e);
+        return State{s.x + h / 6.0 * (s.v + 2.0 * m1.v + 2.0 * m2.v + e.v),
+                     s.v + h / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v),
+                     s.omega + h / 6.0 * (k1.omega + 2.0 * k2.omega + 2.0 * k3.omega + k4.omega)};
+      };
+      const double h = 1e-4;
+      State s{0.0, v0, 0.0};
+      double t = 0.0;
+      while (step(s, h).v - step(s, h).omega * radius > 0.0) {
+        s = step(s, h);
+        t += h;
+      }
+      const double sub = first_true(0.0, h, [&](double dt) { return step(s, dt).v - step(s, dt).omega * radius <= 0.0; });
+      const State rolling = step(s, sub);
+      const RollStart theory = disk_starts_rolling(v0, mass, radius, inertia, mu_k, g);
+      EXPECT_RELATIVE(theory.time, t + sub, 1e-6) << "inertia " << inertia << " v0 " << v0;
+      EXPECT_RELATIVE(theory.speed, rolling.v, 1e-6);
+      EXPECT_RELATIVE(theory.distance, rolling.x, 1e-6);
+    }
+  }
+  EXPECT_EQ(disk_starts_rolling(2.0, mass, radius, 0.1, 0.0, g).time, infinity);
+}
+
+// The stack's regime by trying each hypothesis in turn with Newton's second law for each block.
+StackedBlocks stack_by_hypotheses(double top, double bottom, const FrictionPair& between, const FrictionPair& ground,
+                                  double push) {
+  const double total = top + bottom;
+  if (push <= ground.mu_s * total * g) return {StackRegime::at_rest, 0.0, 0.0, 0.0};
+  // Together: top m_t a − f = 0, bottom m_b a + f = F − μk_g (m_t+m_b) g; Cramer's rule.
+  const double kinetic_ground = ground.mu_k * total * g;
+  const double m11 = top, m12 = -1.0, r1 = 0.0, m21 = bottom, m22 = 1.0, r2 = push - kinetic_ground;
+  const double det = m11 * m22 - m12 * m21;
+  const double a = (r1 * m22 - m12 * r2) / det;
+  const double f = (m11 * r2 - r1 * m21) / det;
+  if (std::abs(f) <= between.mu_s * top * g) return {StackRegime::together, a, a, 0.0};
+  return {StackRegime::top_slips, between.mu_k * g,
+          (push - between.mu_k * top * g - kinetic_ground) / bottom, 0.0};
+}
+
+TEST(ClosedForms, StackedBlocksMatchNewtonForEachBlock) {
+  const double top = 1.0, bottom = 3.0;
+  const FrictionPair between{0.5, 0.4, 0, 0}, ground{0.3, 0.2, 0, 0};
+  const double threshold = first_true(0.0, 1e4, [&](double push) {
+    return stack_by_hypotheses(top, bottom, between, ground, push).regime == StackRegime::top_slips;
+  });
+  EXPECT_RELATIVE(stacked_blocks(top, bottom, between, ground, 10.0, g).max_push_together, threshold, 1e-9);
+  for (const double push : {5.0, 11.0, 12.5, 20.0, 27.0, 28.0, 60.0}) {
+    const StackedBlocks expected = stack_by_hypotheses(top, bottom, between, ground, push);
+    const StackedBlocks actual = stacked_blocks(top, bottom, between, ground, push, g);
+    EXPECT_EQ(actual.regime, expected.regime) << "push " << push;
+    EXPECT_NEAR(actual.top_acceleration, expected.top_acceleration, 1e-12) << "push " << push;
+    EXPECT_NEAR(actual.bottom_acceleration, expected.bottom_acceleration, 1e-12) << "push " << push;
+  }
+  const StackedBlocks mirrored = stacked_blocks(top, bottom, between, ground, -60.0, g);
+  EXPECT_EQ(mirrored.regime, StackRegime::top_slips);
+  EXPECT_NEAR(mirrored.bottom_acceleration, -stack_by_hypotheses(top, bottom, between, ground, 60.0).bottom_acceleration,
+              1e-12);
+  // Slippery top, grippy ground: the top block slips the moment the bottom one moves.
+  const StackedBlocks slippery = stacked_blocks(top, bottom, {0.05, 0.04, 0, 0}, {0.6, 0.5, 0, 0}, 24.0, g);
+  EXPECT_EQ(slippery.regime, StackRegime::top_slips);
+}
+
+// Bad parameters: one test for each kind, each checking the message names the parameter and range.
+template <class Call>
+void expect_invalid(Call call, const std::string& parameter, const std::string& range) {
+  try {
+    call();
+    ADD_FAILURE() << "no InvalidInput for " << parameter;
+  } catch (const InvalidInput& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(parameter), std::string::npos) << message;
+    EXPECT_NE(message.find(range), std::string::npos) << message;
+  }
+}
+
+TEST(ClosedFormsInput, NonPositiveMassThrows) {
+  expect_invalid([] { slide_to_rest(1.0, -1.0, {0.5, 0.4, 0, 0}, g); }, "mass", "> 0");
+  expect_invalid([] { spring_stick_slip(0.0, 50, 0.1, 0.6, 0.4, g); }, "mass", "> 0");
+  expect_invalid([] { stacked_blocks(1.0, -3.0, {}, {}, 1.0, g); }, "bottom_mass", "> 0");
+}
+
+TEST(ClosedFormsInput, NaNThrows) {
+  expect_invalid([] { sticking_angle(nan); }, "mu_s", ">= 0");
+  expect_invalid([] { incline_speed(nan, 0.3, 0.0, 1.0, g, 1.0); }, "angle", "[0, pi/2]");
+  expect_invalid([] { slide_to_rest(nan, 1.0, {0.5, 0.4, 0, 0}, g); }, "v0", "finite");
+}
+
+TEST(ClosedFormsInput, NegativeCoefficientThrows) {
+  expect_invalid([] { tip_height(1.0, -0.1); }, "mu_s", ">= 0");
+  expect_invalid([] { incline_sliding_acceleration(0.3, -0.2, g); }, "mu_k", ">= 0");
+  expect_invalid([] { slide_to_rest(1.0, 1.0, {0.5, 0.4, -1.0, 0}, g); }, "c", ">= 0");
+  expect_invalid([] { slide_to_rest(1.0, 1.0, {0.5, 0.4, 0, -1.0}, g); }, "b", ">= 0");
+}
+
+TEST(ClosedFormsInput, KineticAboveStaticThrowsWhereStickSlipNeedsIt) {
+  expect_invalid([] { spring_stick_slip(1.0, 50, 0.1, 0.4, 0.6, g); }, "mu_k", "[0, mu_s]");
+  expect_invalid([] { disk_on_incline(0.3, 1.0, 0.2, 0.02, 0.2, 0.3, g); }, "mu_k", "[0, mu_s]");
+}
+
+TEST(ClosedFormsInput, NonPositiveSizesThrow) {
+  expect_invalid([] { tip_height(0.0, 0.5); }, "width", "> 0");
+  expect_invalid([] { push_outcome(10.0, 1.0, -0.5, 0.5); }, "push_height", ">= 0");
+  expect_invalid([] { disk_on_incline(0.3, 1.0, -0.2, 0.02, 0.3, 0.2, g); }, "radius", "> 0");
+  expect_invalid([] { disk_starts_rolling(1.0, 1.0, 0.2, 0.0, 0.2, g); }, "inertia", "> 0");
+  expect_invalid([] { spring_stick_slip(1.0, 0.0, 0.1, 0.6, 0.4, g); }, "k", "> 0");
+  expect_invalid([] { spring_stick_slip(1.0, 50.0, 0.0, 0.6, 0.4, g); }, "pull_speed", "> 0");
+}
+
+TEST(ClosedFormsInput, NonPositiveGravityThrows) {
+  expect_invalid([] { incline_sliding_acceleration(0.3, 0.2, 0.0); }, "g", "> 0");
+  expect_invalid([] { slide_to_rest(1.0, 1.0, {0.5, 0.4, 0, 0}, -g); }, "g", "> 0");
+}
+
+TEST(ClosedFormsInput, AngleOutsideFlatToVerticalThrows) {
+  expect_invalid([] { incline_sliding_acceleration(-0.1, 0.2, g); }, "angle", "[0, pi/2]");
+  expect_invalid([] { disk_on_incline(2.0, 1.0, 0.2, 0.02, 0.3, 0.2, g); }, "angle", "[0, pi/2]");
+}
+
+TEST(ClosedFormsInput, NegativeTimeThrows) {
+  expect_invalid([] { incline_distance(0.6, 0.3, 0.0, 1.0, g, -1.0); }, "t", ">= 0");
+}
+
+}  // namespace
+}  // namespace frictionlab
