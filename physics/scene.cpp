@@ -1,0 +1,300 @@
+#include "physics/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace frictionlab {
+namespace {
+
+template <typename T>
+void check_range(const char* what, T value, T low, T high, bool low_open, const char* unit) {
+  const bool ok = (low_open ? value > low : value >= low) && value <= high;
+  if (!ok) {
+    std::ostringstream message;
+    message << what << " = " << value << unit << " is outside the allowed range " << (low_open ? "(" : "[") << low
+            << ", " << high << "]";
+    throw InvalidInput(message.str());
+  }
+}
+
+b2Vec2 world_point(const b2Body* body, const b2Vec2& local) { return body->GetWorldPoint(local); }
+
+}  // namespace
+
+void validate(const StepSettings& s) {
+  check_range("hz", s.hz, 0.0, 100000.0, true, " Hz");
+  check_range("substeps", s.substeps, 1, 1000, false, "");
+  check_range("velocity iterations", s.velocity_iterations, 1, 1000, false, "");
+  check_range("position iterations", s.position_iterations, 0, 1000, false, "");
+  check_range("threshold speed", s.threshold_speed, 0.0, 100.0, true, " m/s");
+}
+
+Scene::Scene(PairTable pairs, StepSettings settings, b2Vec2 gravity)
+    : pairs_(std::move(pairs)), settings_(settings), gravity_(gravity), listener_(pairs_) {
+  validate(settings_);
+  world_ = std::make_unique<b2World>(gravity_);
+  world_->SetContactListener(&listener_);
+  // A resting block must keep feeling its spring and its friction, and a time-of-impact
+  // sub-step would report a second solve to the listener inside one step.
+  world_->SetAllowSleeping(false);
+  world_->SetContinuousPhysics(false);
+  listener_.set_treatment(settings_.treatment);
+  listener_.set_threshold_speed(settings_.threshold_speed);
+}
+
+void Scene::check_new_name(const std::string& name) const {
+  if (name.empty()) throw InvalidInput("body: the name must not be empty");
+  for (const auto& [known, body] : bodies_) {
+    if (known == name) throw InvalidInput("body " + name + ": defined twice");
+  }
+}
+
+b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
+  check_new_name(name);
+  b2Body* created = world_->CreateBody(&definition);
+  bodies_.emplace_back(name, created);
+  return created;
+}
+
+int Scene::check_material(const std::string& material) const {
+  const int id = pairs_.material_id(material);
+  for (int other : materials_in_use_) {
+    if (!pairs_.has_pair(id, other)) {
+      throw InvalidInput("no friction values for the pair " + material + "–" + pairs_.material(other).name +
+                         ", and both are in the scene; set them before adding the body");
+    }
+  }
+  return id;
+}
+
+b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::string& material) {
+  const int id = check_material(material);
+  b2FixtureDef definition;
+  definition.shape = &shape;
+  definition.density = static_cast<float>(pairs_.material(id).density);
+  definition.friction = 0.0f;  // the listener sets every contact's coefficient
+  definition.userData.pointer = static_cast<uintptr_t>(id + 1);
+  if (std::find(materials_in_use_.begin(), materials_in_use_.end(), id) == materials_in_use_.end()) {
+    materials_in_use_.push_back(id);
+  }
+  return body->CreateFixture(&definition);
+}
+
+b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
+                       float width, float height, float angle) {
+  if (!(width > 0.0f && height > 0.0f && width <= 1000.0f && height <= 1000.0f)) {
+    std::ostringstream message;
+    message << "box " << name << ": width " << width << " m and height " << height
+            << " m must both be in the range (0, 1000]";
+    throw InvalidInput(message.str());
+  }
+  // Everything is checked before the body exists, so a refused box leaves nothing behind.
+  check_new_name(name);
+  check_material(material);
+  b2BodyDef definition;
+  definition.type = type;
+  definition.position = center;
+  definition.angle = angle;
+  b2Body* created = add_body(name, definition);
+  b2PolygonShape box;
+  box.SetAsBox(0.5f * width, 0.5f * height);
+  add_fixture(created, box, material);
+  return created;
+}
+
+b2Body* Scene::body(const std::string& name) const {
+  std::string known;
+  for (const auto& [body_name, body] : bodies_) {
+    if (body_name == name) return body;
+    known += " " + body_name;
+  }
+  throw InvalidInput("unknown body '" + name + "'; bodies in this scene:" + known);
+}
+
+void Scene::add_spring(const Spring& spring) {
+  if (spring.body == nullptr) throw InvalidInput("spring " + spring.name + ": it must be attached to a body");
+  if (spring.other == nullptr && !spring.hand) {
+    throw InvalidInput("spring " + spring.name + ": its far end needs a body or a hand");
+  }
+  check_range(("spring " + spring.name + ": stiffness k").c_str(), spring.stiffness, 0.0, 1e9, true, " N/m");
+  check_range(("spring " + spring.name + ": rest length").c_str(), spring.rest_length, 0.0, 1e4, false, " m");
+  springs_.push_back(spring);
+}
+
+void Scene::add_applied_force(const AppliedForce& force) {
+  if (force.body == nullptr || !force.force) {
+    throw InvalidInput("applied force " + force.name + ": it needs a body and a force");
+  }
+  applied_.push_back(force);
+}
+
+void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
+  if (body == nullptr || body->GetType() != b2_kinematicBody) {
+    throw InvalidInput("drive: only a kinematic body can be moved by a function of time");
+  }
+  drivers_.push_back({body, std::move(position), std::move(angle)});
+}
+
+void Scene::add_probe(const std::string& name, std::function<double()> measure) {
+  for (const Probe& probe : probes_) {
+    if (probe.name == name) throw InvalidInput("probe " + name + ": defined twice");
+  }
+  probes_.push_back({name, std::move(measure), {}});
+}
+
+const Probe& Scene::probe(const std::string& name) const {
+  std::string known;
+  for (const Probe& p : probes_) {
+    if (p.name == name) return p;
+    known += " " + p.name;
+  }
+  throw InvalidInput("unknown probe '" + name + "'; probes in this scene:" + known);
+}
+
+b2Vec2 Scene::hand_position(const Spring& spring) const {
+  return spring.other ? world_point(spring.other, spring.other_local_point) : spring.hand(time_);
+}
+
+b2Vec2 Scene::spring_force(const Spring& spring) const {
+  const b2Vec2 from = world_point(spring.body, spring.local_point);
+  const b2Vec2 to = hand_position(spring);
+  b2Vec2 along = to - from;
+  const float length = along.Normalize();
+  return static_cast<float>(spring.stiffness * (length - spring.rest_length)) * along;
+}
+
+double Scene::mechanical_energy(double* kinetic, double* potential, double* elastic) const {
+  double k = 0.0, p = 0.0, s = 0.0;
+  for (const b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const double m = body->GetMass();
+    const b2Vec2 v = body->GetLinearVelocity();
+    const double w = body->GetAngularVelocity();
+    k += 0.5 * m * b2Dot(v, v) + 0.5 * central_inertia(body) * w * w;
+    p -= m * b2Dot(gravity_, body->GetWorldCenter());
+  }
+  for (const Spring& spring : springs_) {
+    const double stretch = (hand_position(spring) - world_point(spring.body, spring.local_point)).Length() -
+                           spring.rest_length;
+    s += 0.5 * spring.stiffness * stretch * stretch;
+  }
+  *kinetic = k;
+  *potential = p;
+  *elastic = s;
+  return k + p + s;
+}
+
+void Scene::update_ledger_state() {
+  double potential = 0.0;
+  mechanical_energy(&ledger_.kinetic, &potential, &ledger_.spring);
+  if (!ledger_started_) {
+    ledger_started_ = true;
+    ledger_.potential_reference = potential;
+    ledger_.initial = ledger_.kinetic + ledger_.spring;
+  }
+  ledger_.potential = potential - ledger_.potential_reference;
+}
+
+void Scene::start(float h) {
+  // Box2D integrates leapfrog-style: x(t+h) = x(t) + h·v, with v the velocity of the middle
+  // of the step, so the velocity it starts from belongs to t = -h/2, not t = 0. Given as
+  // v(0), a launched block stops v0·h/2 short: an O(h) error in an otherwise second-order
+  // scheme. The usual leapfrog start fixes it: v(-h/2) = v(0) - (h/2)·a(0). The acceleration
+  // is found by a trial half step (friction, springs and all), after which the bodies are put
+  // back. A body at rest at t = 0 is taken to have been held until then, so it keeps v = 0.
+  struct Launch {
+    b2Body* body;
+    b2Vec2 velocity;
+    float spin;
+  };
+  std::vector<Launch> launches;
+  for (b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
+    if (body->GetType() == b2_dynamicBody) launches.push_back({body, body->GetLinearVelocity(), body->GetAngularVelocity()});
+  }
+  advance(0.0, 0.5f * h, false);
+  for (const Launch& launch : launches) {
+    const bool moving = launch.velocity.LengthSquared() > 0.0f || launch.spin != 0.0f;
+    launch.body->SetLinearVelocity(moving ? 2.0f * launch.velocity - launch.body->GetLinearVelocity() : launch.velocity);
+    launch.body->SetAngularVelocity(moving ? 2.0f * launch.spin - launch.body->GetAngularVelocity() : launch.spin);
+  }
+  listener_.forget_trial();
+  ledger_ = EnergyLedger{};
+  update_ledger_state();
+}
+
+void Scene::step() {
+  const float h = static_cast<float>(frame_step() / settings_.substeps);
+  if (!ledger_started_) start(h);
+  for (int i = 0; i < settings_.substeps; ++i) {
+    time_ = (static_cast<double>(frame_) + static_cast<double>(i) / settings_.substeps) * frame_step();
+    advance(time_, h, true);
+  }
+  ++frame_;
+  time_ = static_cast<double>(frame_) * frame_step();
+  update_ledger_state();
+  times_.push_back(time_);
+  for (Probe& probe : probes_) probe.history.push_back(probe.measure());
+}
+
+void Scene::advance(double t, float h, bool move) {
+  std::vector<std::pair<b2Body*, b2Transform>> held;
+  if (!move) {
+    for (b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
+      if (body->GetType() != b2_staticBody) held.emplace_back(body, body->GetTransform());
+    }
+  }
+  listener_.apply_contact_forces(*world_, h);
+
+  for (const Driver& driver : drivers_) {
+    const b2Vec2 now = driver.position(t);
+    const b2Vec2 next = driver.position(t + h);
+    const double angle_now = driver.angle ? driver.angle(t) : 0.0;
+    const double angle_next = driver.angle ? driver.angle(t + h) : 0.0;
+    driver.body->SetTransform(now, static_cast<float>(angle_now));
+    driver.body->SetLinearVelocity((1.0f / h) * (next - now));
+    driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
+  }
+
+  for (const Spring& spring : springs_) {
+    const b2Vec2 force = spring_force(spring);
+    spring.body->ApplyForce(force, world_point(spring.body, spring.local_point), true);
+    if (spring.other) {
+      spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
+    } else if (move) {
+      // The hand does work on the spring as it moves its end.
+      ledger_.work_applied += b2Dot(force, spring.hand(t + h) - spring.hand(t));
+    }
+  }
+
+  struct Pending {
+    b2Body* body;
+    b2Vec2 local_point;
+    b2Vec2 force;
+    b2Vec2 start_velocity;
+  };
+  std::vector<Pending> pending;
+  pending.reserve(applied_.size());
+  for (const AppliedForce& applied : applied_) {
+    const b2Vec2 point = world_point(applied.body, applied.local_point);
+    const b2Vec2 force = applied.force(t);
+    applied.body->ApplyForce(force, point, true);
+    pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
+  }
+
+  world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
+  for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());
+
+  for (const Pending& p : pending) {
+    // The point moved with the body; its velocity is taken where the body now holds it.
+    const b2Vec2 end_velocity = p.body->GetLinearVelocityFromLocalPoint(p.local_point);
+    ledger_.work_applied += h * b2Dot(p.force, 0.5f * (p.start_velocity + end_velocity));
+  }
+  const ContactWork work = listener_.take_work();
+  ledger_.work_friction += work.friction;
+  ledger_.work_damping += work.damping;
+  ledger_.work_impacts += work.impacts;
+  ledger_.work_drivers += work.drivers;
+}
+
+}  // namespace frictionlab

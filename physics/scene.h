@@ -1,0 +1,165 @@
+// A lesson's world: Box2D plus the friction listener, springs (with a moving hand), applied
+// forces, bodies driven by functions of time, probes and the energy ledger.
+// Stepping and drawing are separate: a scene knows nothing about pictures.
+#pragma once
+
+#include <box2d/box2d.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "physics/friction_listener.h"
+#include "physics/materials.h"
+
+namespace frictionlab {
+
+struct StepSettings {
+  double hz = 240.0;             // frames per simulated second, (0, 100000]
+  int substeps = 1;              // world steps per frame, [1, 1000]
+  int velocity_iterations = 8;   // [1, 1000]
+  int position_iterations = 3;   // [0, 1000]
+  FrictionTreatment treatment = FrictionTreatment::stick_slip;
+  double threshold_speed = 0.01; // epsilon of the threshold and regularized treatments, m/s
+};
+// Throws InvalidInput naming the setting and its allowed range.
+void validate(const StepSettings& settings);
+
+using VectorOfTime = std::function<b2Vec2(double t)>;
+using ScalarOfTime = std::function<double(double t)>;
+
+// A spring from a point on a body to either a point on another body or a hand that moves
+// along `hand` (world coordinates, a function of time).
+struct Spring {
+  std::string name;
+  b2Body* body = nullptr;
+  b2Vec2 local_point{0.0f, 0.0f};
+  b2Body* other = nullptr;          // null: the far end is the hand
+  b2Vec2 other_local_point{0.0f, 0.0f};
+  VectorOfTime hand;                // where the hand holds the far end at time t
+  double stiffness = 0.0;           // k, N/m, > 0
+  double rest_length = 0.0;         // m, >= 0
+};
+
+// A force on a body at a point fixed in the body, given in world axes as a function of time.
+struct AppliedForce {
+  std::string name;
+  b2Body* body = nullptr;
+  b2Vec2 local_point{0.0f, 0.0f};
+  VectorOfTime force;
+};
+
+// Energies in joules. The residual is what the books fail to explain: zero for an exact
+// integrator, and small compared with `dissipated()` for a good one.
+struct EnergyLedger {
+  double kinetic = 0.0;
+  double potential = 0.0;        // gravity, relative to the start
+  double spring = 0.0;
+  double work_applied = 0.0;     // applied forces and hands pulling springs
+  double work_drivers = 0.0;     // kinematic bodies pushing through contacts
+  double work_friction = 0.0;    // dry friction, <= 0
+  double work_damping = 0.0;     // viscous and quadratic terms, <= 0
+  double work_impacts = 0.0;     // collisions, <= 0
+  double initial = 0.0;          // kinetic + spring at t = 0 (potential is counted from the start)
+  double potential_reference = 0.0;  // gravity potential at t = 0, the zero of `potential`
+  double dissipated() const { return -(work_friction + work_damping + work_impacts); }
+  double residual() const {
+    return kinetic + potential + spring - initial - work_applied - work_drivers - work_friction - work_damping -
+           work_impacts;
+  }
+};
+
+struct Probe {
+  std::string name;
+  std::function<double()> measure;
+  std::vector<double> history;   // one value per frame, beside Scene::times()
+};
+
+class Scene {
+ public:
+  explicit Scene(PairTable pairs, StepSettings settings = {}, b2Vec2 gravity = {0.0f, -9.81f});
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  b2World& world() { return *world_; }
+  const b2World& world() const { return *world_; }
+  // Live edits of friction values take effect at the next step.
+  PairTable& pairs() { return pairs_; }
+  const FrictionListener& friction() const { return listener_; }
+  const StepSettings& settings() const { return settings_; }
+  double frame_step() const { return 1.0 / settings_.hz; }
+
+  // Bodies. Every fixture names its material; a material with no pair value for any material
+  // already in the scene is rejected here, not mid-step.
+  b2Body* add_body(const std::string& name, const b2BodyDef& definition);
+  b2Fixture* add_fixture(b2Body* body, const b2Shape& shape, const std::string& material);
+  // A box of the given size (m), centre and angle (rad): a convenience over the two above.
+  b2Body* add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
+                  float width, float height, float angle = 0.0f);
+  b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
+  const std::vector<std::pair<std::string, b2Body*>>& bodies() const { return bodies_; }
+
+  void add_spring(const Spring& spring);
+  void add_applied_force(const AppliedForce& force);
+  // A kinematic body follows position(t) and angle(t) exactly at every step.
+  void drive(b2Body* body, VectorOfTime position, ScalarOfTime angle);
+  void add_probe(const std::string& name, std::function<double()> measure);
+
+  // One frame: 1/hz of simulated time in `substeps` world steps.
+  void step();
+  double time() const { return time_; }
+  long frame() const { return frame_; }
+  const std::vector<double>& times() const { return times_; }
+  const std::vector<Probe>& probes() const { return probes_; }
+  const Probe& probe(const std::string& name) const;
+
+  // Forces now, for probes and arrows: a spring's pull on its body, an applied force.
+  b2Vec2 spring_force(const Spring& spring) const;
+  const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<AppliedForce>& applied_forces() const { return applied_; }
+  b2Vec2 hand_position(const Spring& spring) const;
+
+  const EnergyLedger& ledger() const { return ledger_; }
+
+ private:
+  struct Driver {
+    b2Body* body;
+    VectorOfTime position;
+    ScalarOfTime angle;
+  };
+  // One world step of length h from time t. With `move` false the bodies are put back where
+  // they were afterwards, and only their velocities advance.
+  void advance(double t, float h, bool move);
+  // Before the first step: turns the velocities given at t = 0 into the half-step-earlier
+  // velocities Box2D's integrator needs.
+  void start(float h);
+  // The material's id, once it has friction values with every material already in the scene.
+  int check_material(const std::string& material) const;
+  void check_new_name(const std::string& name) const;
+  double mechanical_energy(double* kinetic, double* potential, double* elastic) const;
+  void update_ledger_state();
+
+  PairTable pairs_;
+  StepSettings settings_;
+  b2Vec2 gravity_;
+  FrictionListener listener_;
+  std::unique_ptr<b2World> world_;
+  std::vector<std::pair<std::string, b2Body*>> bodies_;
+  std::vector<Spring> springs_;
+  std::vector<AppliedForce> applied_;
+  std::vector<Driver> drivers_;
+  std::vector<Probe> probes_;
+  std::vector<double> times_;
+  std::vector<int> materials_in_use_;
+  double time_ = 0.0;
+  long frame_ = 0;
+  bool ledger_started_ = false;
+  EnergyLedger ledger_;
+};
+
+// The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)
+// overlap by b2_linearSlop. A body placed this far above a surface starts at rest on it.
+constexpr float resting_gap = 2.0f * b2_polygonRadius - b2_linearSlop;
+
+}  // namespace frictionlab
