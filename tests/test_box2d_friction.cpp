@@ -1,0 +1,144 @@
+// Box2D through the friction listener at 240 Hz with 8 velocity iterations, against the
+// closed forms, with the tolerances the physics-core issue sets.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/closed_forms.h"
+#include "physics/scenarios.h"
+
+using namespace frictionlab;
+
+namespace {
+const StepSettings at_240_hz;  // the defaults: 240 Hz, 8 velocity iterations, stick-slip
+}
+
+class InclineAtMuS : public ::testing::TestWithParam<double> {};
+
+TEST_P(InclineAtMuS, SticksJustBelowTheStickingAngle) {
+  Incline incline;
+  incline.block.pair = {GetParam(), 0.7 * GetParam(), 0.0, 0.0};
+  incline.angle = 0.98 * theory::sticking_angle(GetParam());
+  const Measurement creep = measure_incline_creep(incline, at_240_hz, 3.0);
+  EXPECT_LT(std::abs(creep.measured), 1e-4) << "creep over 3 s, m";
+}
+
+TEST_P(InclineAtMuS, SlidesJustAboveWithKineticAcceleration) {
+  Incline incline;
+  incline.block.pair = {GetParam(), 0.7 * GetParam(), 0.0, 0.0};
+  incline.angle = 1.02 * theory::sticking_angle(GetParam());
+  const Measurement a = measure_incline_acceleration(incline, at_240_hz);
+  EXPECT_NEAR(a.measured, a.predicted, 0.01 * a.predicted);
+  EXPECT_GT(a.predicted, 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Coefficients, InclineAtMuS, ::testing::Values(0.3, 0.6, 1.0));
+
+TEST(Incline, RegularizedLawCreepsWhereStickSlipHolds) {
+  // The tribology article's warning: with F = mu_s·N·v/eps a block below the sticking angle
+  // never rests; it creeps at the speed where that force balances the slope, eps·tanθ/mu_s.
+  // (eps is chosen so that 240 Hz is inside the explicit law's stable range h < 2·eps/(mu_s·g).)
+  Incline incline;
+  incline.angle = 0.98 * theory::sticking_angle(incline.block.pair.mu_s);
+  StepSettings regularized = at_240_hz;
+  regularized.treatment = FrictionTreatment::regularized;
+  regularized.threshold_speed = 0.05;
+  auto scene = make_incline(incline, regularized);
+  for (int i = 0; i < 720; ++i) scene->step();
+  const double creep_speed = scene->probe("speed").history.back();
+  const double predicted = regularized.threshold_speed * std::tan(incline.angle) / incline.block.pair.mu_s;
+  EXPECT_NEAR(creep_speed, predicted, 0.05 * predicted) << "regularized friction creeps at eps·tanθ/mu_s";
+}
+
+TEST(PulledBlock, BreaksAwayAtMuSNAndSlidesAgainstMuKN) {
+  for (const FrictionPair pair : {FrictionPair{0.6, 0.4, 0, 0}, FrictionPair{0.3, 0.22, 0, 0}}) {
+    Block block;
+    block.pair = pair;
+    const Measurement breakaway = measure_breakaway_force(block, at_240_hz);
+    EXPECT_NEAR(breakaway.measured, breakaway.predicted, 0.01 * breakaway.predicted);
+    const Measurement sliding = measure_sliding_friction(block, at_240_hz);
+    EXPECT_NEAR(sliding.measured, sliding.predicted, 0.01 * sliding.predicted);
+  }
+}
+
+TEST(PulledBlock, PlainBox2DBreaksAwayTooEarly) {
+  // One coefficient for both: the block lets go at mu_k·N, so the test above is not trivial.
+  StepSettings box2d = at_240_hz;
+  box2d.treatment = FrictionTreatment::box2d;
+  Block block;
+  const Measurement breakaway = measure_breakaway_force(block, box2d);
+  EXPECT_LT(breakaway.measured, 0.8 * breakaway.predicted);
+}
+
+TEST(SlideToRest, DistanceWithViscousTermWithinOnePercent) {
+  Slide slide;
+  slide.block.pair.c = 2.0;
+  const Measurement d = measure_slide_distance(slide, at_240_hz);
+  EXPECT_NEAR(d.measured, d.predicted, 0.01 * d.predicted);
+}
+
+TEST(SlideToRest, DistanceWithQuadraticTermWithinOnePercent) {
+  Slide slide;
+  slide.block.pair.b = 0.5;
+  const Measurement d = measure_slide_distance(slide, at_240_hz);
+  EXPECT_NEAR(d.measured, d.predicted, 0.01 * d.predicted);
+}
+
+TEST(SlideToRest, DistanceWithBothTermsAndCoulombAlone) {
+  Slide slide;
+  const Measurement dry = measure_slide_distance(slide, at_240_hz);
+  EXPECT_NEAR(dry.measured, dry.predicted, 0.01 * dry.predicted);
+  slide.block.pair.c = 1.0;
+  slide.block.pair.b = 0.3;
+  const Measurement wet = measure_slide_distance(slide, at_240_hz);
+  EXPECT_NEAR(wet.measured, wet.predicted, 0.01 * wet.predicted);
+  EXPECT_LT(wet.measured, 0.8 * dry.measured) << "the damping terms really act";
+}
+
+TEST(PushedBox, TipsAboveHalfWidthOverMuSAndSlidesBelow) {
+  for (double mu_s : {0.4, 0.8}) {
+    PushedBox box;
+    box.block.pair = {mu_s, 0.8 * mu_s, 0.0, 0.0};
+    const double tip = theory::tip_height(box.block.width, mu_s);
+    ASSERT_LT(1.2 * tip, box.block.height) << "the push must land on the box's side";
+    box.push_height = 1.2 * tip;
+    EXPECT_TRUE(run_pushed_box(box, at_240_hz, 20.0).tipped) << "mu_s " << mu_s << " pushed high";
+    box.push_height = 0.8 * tip;
+    const PushResult low = run_pushed_box(box, at_240_hz, 20.0);
+    EXPECT_FALSE(low.tipped) << "mu_s " << mu_s << " pushed low";
+    EXPECT_NEAR(low.force, mu_s * box.block.mass * standard_gravity, 0.05 * mu_s * box.block.mass * standard_gravity)
+        << "it slides once the push passes mu_s·W";
+  }
+}
+
+TEST(ViscousTerm, StableAtHcOverMOfOneHundred) {
+  // An explicit drag force would reverse the velocity in one step here (h·c/m >= 2).
+  Slide slide;
+  slide.block.pair = {0.0, 0.0, 100.0 * slide.block.mass * at_240_hz.hz, 0.0};
+  slide.launch_speed = 1.0;
+  auto scene = make_slide(slide, at_240_hz);
+  b2Body* block = scene->body("block");
+  double previous = slide.launch_speed;
+  for (int i = 0; i < 240; ++i) {
+    scene->step();
+    const double v = block->GetLinearVelocity().x;
+    // Round-off of Box2D's float solver is allowed; a reversal of any size is not.
+    ASSERT_GE(v, -1e-6 * slide.launch_speed) << "reversed at step " << i;
+    ASSERT_LE(std::abs(v), std::abs(previous) + 1e-6 * slide.launch_speed) << "grew at step " << i;
+    previous = v;
+  }
+  EXPECT_LT(previous, 1e-3);
+}
+
+TEST(ViscousTerm, DecaysExponentiallyOnFrictionlessGround) {
+  // mu = 0: only c acts, v(t) = v0·exp(-c t / m). Box2D's velocities belong to the middle of
+  // the step just taken, t - h/2; the drag step is exact, so only the leapfrog start (second
+  // order) and float round-off remain.
+  Slide slide;
+  slide.block.pair = {0.0, 0.0, 2.0, 0.0};
+  auto scene = make_slide(slide, at_240_hz);
+  for (int i = 0; i < 240; ++i) scene->step();
+  const double t = scene->time() - 0.5 * scene->frame_step();
+  const double predicted = slide.launch_speed * std::exp(-2.0 * t / slide.block.mass);
+  EXPECT_NEAR(scene->body("block")->GetLinearVelocity().x, predicted, 1e-3 * predicted);
+}
