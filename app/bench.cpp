@@ -1,0 +1,174 @@
+// frictionlab bench: what the friction listener costs, and how accuracy on the stick-slip
+// problem trades against CPU time for each treatment and for the reduced models.
+// Figures are measured here and reported, never asserted: the machines are shared.
+#include <algorithm>
+#include <ctime>
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <sstream>
+
+#include "app/modes.h"
+#include "app/table.h"
+#include "physics/reduced_model.h"
+
+namespace frictionlab {
+namespace {
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// CPU seconds per step of both worlds, timed in alternating blocks so that a busy neighbour
+// slows both alike.
+struct PileCost {
+  int boxes;
+  double listener, plain;
+};
+PileCost time_pile(int rows, int steps, int repeats) {
+  const StepSettings settings;
+  Pyramid with = make_pyramid(rows, true, settings);
+  Pyramid without = make_pyramid(rows, false, settings);
+  const float h = static_cast<float>(1.0 / settings.hz);
+  for (int i = 0; i < 30; ++i) {  // let the contacts form and the pile settle before timing
+    with.scene->step();
+    without.plain->Step(h, settings.velocity_iterations, settings.position_iterations);
+  }
+  std::vector<double> listener, plain;
+  for (int r = 0; r < repeats; ++r) {
+    double start = cpu_seconds();
+    for (int i = 0; i < steps; ++i) with.scene->step();
+    listener.push_back((cpu_seconds() - start) / steps);
+    start = cpu_seconds();
+    for (int i = 0; i < steps; ++i) without.plain->Step(h, settings.velocity_iterations, settings.position_iterations);
+    plain.push_back((cpu_seconds() - start) / steps);
+  }
+  return {with.boxes, median(listener), median(plain)};
+}
+
+std::string listener_cost(bool quick, std::ostream& out) {
+  std::ostringstream csv;
+  csv << "boxes,listener_ms_per_step,box2d_mixer_ms_per_step,ratio\n";
+  std::vector<std::vector<std::string>> table{{"boxes", "with listener (ms/step)", "Box2D mixer (ms/step)", "ratio"}};
+  for (int rows : {22, 44, 89}) {
+    const int steps = quick ? 10 : (rows > 60 ? 60 : 200);
+    const PileCost cost = time_pile(rows, steps, quick ? 1 : 5);
+    csv << cost.boxes << ',' << cost.listener * 1e3 << ',' << cost.plain * 1e3 << ',' << cost.listener / cost.plain
+        << '\n';
+    table.push_back({std::to_string(cost.boxes), format_number(cost.listener * 1e3), format_number(cost.plain * 1e3),
+                     format_number(cost.listener / cost.plain, 3)});
+  }
+  out << "Cost of the pair-table listener (pyramid of boxes, 240 Hz, 8 velocity iterations)\n";
+  print_table(out, table);
+  return csv.str();
+}
+
+// Runs `work` (which simulates `simulated` seconds) `repeats` times; median CPU s per simulated s.
+double cost_per_simulated_second(const std::function<void()>& work, double simulated, int repeats) {
+  std::vector<double> costs;
+  for (int r = 0; r < repeats; ++r) {
+    const double start = cpu_seconds();
+    work();
+    costs.push_back((cpu_seconds() - start) / simulated);
+  }
+  return median(costs);
+}
+
+std::string stick_slip_accuracy(bool quick, std::ostream& out) {
+  const SpringPull setup;
+  const double duration = 10.0;
+  const int repeats = quick ? 1 : 3;
+  const Trajectory exact = solve_exact(spring_pull_model(setup), duration);
+  std::ostringstream csv;
+  csv << "method,hz,max_position_error_m,cpu_s_per_simulated_s\n";
+  std::vector<std::vector<std::string>> table{{"method", "hz", "max error (mm)", "CPU ms per simulated s"}};
+  auto add = [&](const std::string& method, double hz, double error, double cost) {
+    csv << method << ',' << hz << ',' << error << ',' << cost << '\n';
+    table.push_back({method, format_number(hz), format_number(error * 1e3, 3), format_number(cost * 1e3, 3)});
+  };
+  const std::vector<double> rates = quick ? std::vector<double>{60, 240} : std::vector<double>{60, 120, 240, 480, 960};
+  for (FrictionTreatment treatment : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
+                                      FrictionTreatment::regularized, FrictionTreatment::box2d}) {
+    for (double hz : rates) {
+      StepSettings settings;
+      settings.hz = hz;
+      settings.treatment = treatment;
+      double error = 0.0;
+      const double cost = cost_per_simulated_second(
+          [&] { error = spring_pull_max_error(setup, settings, duration); }, duration, repeats);
+      add("box2d+" + std::string(treatment_name(treatment)), hz, error, cost);
+    }
+  }
+  const OneDofBlock model = spring_pull_model(setup);
+  auto worst_against_exact = [&](const std::vector<Sample>& samples) {
+    double worst = 0.0;
+    for (const Sample& s : samples) worst = std::max(worst, std::abs(s.x - exact.position(s.t)));
+    return worst;
+  };
+  // The listener's default threshold speed, so the reduced regularized models and the Box2D
+  // threshold/regularized treatments are charted with the same epsilon.
+  const double epsilon = StepSettings{}.threshold_speed;
+  for (auto [name, integrator] : {std::pair{"reduced explicit-euler", Integrator::explicit_euler},
+                                  std::pair{"reduced semi-implicit-euler", Integrator::semi_implicit_euler},
+                                  std::pair{"reduced rk4", Integrator::rk4}}) {
+    for (double hz : rates) {
+      double error = 0.0;
+      const double cost = cost_per_simulated_second(
+          [&] { error = worst_against_exact(integrate_regularized(model, duration, 1.0 / hz, epsilon, integrator)); },
+          duration, repeats);
+      add(std::string(name) + " regularized", hz, error, cost);
+    }
+  }
+  for (double hz : rates) {
+    double error = 0.0;
+    const double cost = cost_per_simulated_second(
+        [&] {
+          const Trajectory located = solve_event_rk4(model, duration, 1.0 / hz);
+          error = 0.0;
+          for (double t = 0.0; t <= duration; t += 1e-3) {
+            error = std::max(error, std::abs(located.position(t) - exact.position(t)));
+          }
+        },
+        duration, repeats);
+    add("reduced rk4 with located events", hz, error, cost);
+  }
+  const double exact_cost = cost_per_simulated_second([&] { solve_exact(model, duration); }, duration, repeats);
+  add("reduced exact event-driven (reference)", 0, 0.0, exact_cost);
+  out << "\nSpring-pull stick-slip over " << duration
+      << " s: max position error against the exact solution (regularized and threshold: epsilon = " << epsilon
+      << " m/s)\n";
+  print_table(out, table);
+  return csv.str();
+}
+
+}  // namespace
+
+int run_bench(const std::vector<std::string>& args, std::ostream& out) {
+  bool quick = false;
+  std::string directory;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--quick") {
+      quick = true;
+    } else if (args[i] == "--out" && i + 1 < args.size()) {
+      directory = args[++i];
+    } else {
+      throw InvalidInput("bench: unknown or incomplete option '" + args[i] + "'; usage: bench [--quick] --out DIR");
+    }
+  }
+  if (directory.empty()) throw InvalidInput("bench: --out DIR is required (the folder for the CSV files)");
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw InvalidInput("bench: --out " + directory + ": cannot create the folder: " + error.message());
+
+  const std::string cost = listener_cost(quick, out);
+  write_file_atomically(directory + "/listener_cost.csv", cost);
+  const std::string accuracy = stick_slip_accuracy(quick, out);
+  write_file_atomically(directory + "/stick_slip_accuracy.csv", accuracy);
+  out << "\nwrote " << directory << "/listener_cost.csv and " << directory << "/stick_slip_accuracy.csv\n";
+  return 0;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,59 @@
+// The built-in demonstration: each situation of the seed articles simulated through the
+// friction listener at 240 Hz and compared with its closed form.
+#include <cmath>
+#include <ostream>
+
+#include "app/modes.h"
+#include "app/table.h"
+#include "physics/closed_forms.h"
+
+namespace frictionlab {
+
+int run_demo(std::ostream& out) {
+  const StepSettings settings;  // 240 Hz, 8 velocity iterations, stick-slip
+  std::vector<Measurement> rows;
+
+  const SpringPull spring;
+  for (const Measurement& m : spring_pull_measurements(spring, settings, 10.0)) rows.push_back(m);
+
+  const Block block;
+  rows.push_back(measure_breakaway_force(block, settings));
+  rows.push_back(measure_sliding_friction(block, settings));
+
+  Incline incline;
+  incline.angle = 0.98 * theory::sticking_angle(block.pair.mu_s);
+  rows.push_back(measure_incline_creep(incline, settings, 3.0));
+  incline.angle = 40.0 * M_PI / 180.0;
+  rows.push_back(measure_incline_acceleration(incline, settings));
+
+  Slide viscous;
+  viscous.block.pair.c = 2.0;
+  Measurement m = measure_slide_distance(viscous, settings);
+  m.name += " (c = 2 N·s/m)";
+  rows.push_back(m);
+  Slide quadratic;
+  quadratic.block.pair.b = 0.5;
+  m = measure_slide_distance(quadratic, settings);
+  m.name += " (b = 0.5 N·s²/m²)";
+  rows.push_back(m);
+
+  PushedBox box;
+  const double tip = theory::tip_height(box.block.width, box.block.pair.mu_s);
+  for (double height : {0.7 * tip, 1.3 * tip}) {
+    box.push_height = height;
+    const bool predicted = theory::push_outcome(box.block.mass * standard_gravity, box.block.width, height,
+                                                box.block.pair.mu_s)
+                               .tips;
+    const bool tipped = run_pushed_box(box, settings, 10.0).tipped;
+    rows.push_back({"box pushed at " + format_number(height, 3) + " m tips (1) or slides (0)", "",
+                    predicted ? 1.0 : 0.0, tipped ? 1.0 : 0.0, 0.0});
+  }
+
+  out << "FrictionLab: theory beside simulation (Box2D, " << settings.hz << " Hz, " << settings.velocity_iterations
+      << " velocity iterations, friction treatment " << treatment_name(settings.treatment) << ")\n\n";
+  const int failed = print_measurements(out, rows);
+  out << "\n" << rows.size() - failed << " of " << rows.size() << " within tolerance\n";
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,14 @@
+// The command-line modes. Each returns the process exit code: 0 success, 1 a check failed,
+// 2 bad input (InvalidInput thrown with a message naming what and where).
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace frictionlab {
+
+int run_demo(std::ostream& out);
+int run_bench(const std::vector<std::string>& args, std::ostream& out);
+
+}  // namespace frictionlab
