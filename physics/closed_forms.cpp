@@ -5,28 +5,17 @@
 #include <numbers>
 #include <sstream>
 
+#include "physics/validation.h"
+
 namespace frictionlab::theory {
 namespace {
 
+using validation::reject;
+using validation::require_finite;
+using validation::require_non_negative;
+using validation::require_positive;
+
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-[[noreturn]] void reject(const char* where, const char* name, const char* range, double value) {
-  std::ostringstream message;
-  message << where << ": " << name << " must be " << range << ", got " << value;
-  throw InvalidInput(message.str());
-}
-
-void require_positive(const char* where, const char* name, double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) reject(where, name, "> 0 and finite", value);
-}
-
-void require_non_negative(const char* where, const char* name, double value) {
-  if (!(value >= 0.0) || !std::isfinite(value)) reject(where, name, ">= 0 and finite", value);
-}
-
-void require_finite(const char* where, const char* name, double value) {
-  if (!std::isfinite(value)) reject(where, name, "finite", value);
-}
 
 // Inclines run from flat to vertical; beyond that "down the slope" changes meaning.
 void require_slope_angle(const char* where, double angle) {

@@ -9,32 +9,20 @@
 #include <utility>
 
 #include "physics/friction_laws.h"
+#include "physics/validation.h"
 
 namespace frictionlab {
 namespace {
+
+using validation::reject;
+using validation::require_finite;
+using validation::require_non_negative;
+using validation::require_positive;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double event_tolerance = 1e-13;  // s: how closely events are located
 constexpr std::size_t max_events = 1'000'000;
 constexpr double max_steps = 1e9;
-
-[[noreturn]] void reject(const char* where, const char* name, const char* range, double value) {
-  std::ostringstream message;
-  message << where << ": " << name << " must be " << range << ", got " << value;
-  throw InvalidInput(message.str());
-}
-
-void require_positive(const char* where, const char* name, double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) reject(where, name, "> 0 and finite", value);
-}
-
-void require_non_negative(const char* where, const char* name, double value) {
-  if (!(value >= 0.0) || !std::isfinite(value)) reject(where, name, ">= 0 and finite", value);
-}
-
-void require_finite(const char* where, const char* name, double value) {
-  if (!std::isfinite(value)) reject(where, name, "finite", value);
-}
 
 void require_block(const char* where, const OneDofBlock& block) {
   require_positive(where, "mass", block.mass);

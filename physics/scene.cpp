@@ -4,30 +4,22 @@
 #include <cmath>
 #include <sstream>
 
+#include "physics/validation.h"
+
 namespace frictionlab {
 namespace {
-
-template <typename T>
-void check_range(const char* what, T value, T low, T high, bool low_open, const char* unit) {
-  const bool ok = (low_open ? value > low : value >= low) && value <= high;
-  if (!ok) {
-    std::ostringstream message;
-    message << what << " = " << value << unit << " is outside the allowed range " << (low_open ? "(" : "[") << low
-            << ", " << high << "]";
-    throw InvalidInput(message.str());
-  }
-}
 
 b2Vec2 world_point(const b2Body* body, const b2Vec2& local) { return body->GetWorldPoint(local); }
 
 }  // namespace
 
 void validate(const StepSettings& s) {
-  check_range("hz", s.hz, 0.0, 100000.0, true, " Hz");
-  check_range("substeps", s.substeps, 1, 1000, false, "");
-  check_range("velocity iterations", s.velocity_iterations, 1, 1000, false, "");
-  check_range("position iterations", s.position_iterations, 0, 1000, false, "");
-  check_range("threshold speed", s.threshold_speed, 0.0, 100.0, true, " m/s");
+  using validation::require_in_range;
+  require_in_range("hz", s.hz, 0.0, 100000.0, true, " Hz");
+  require_in_range("substeps", s.substeps, 1, 1000, false, "");
+  require_in_range("velocity iterations", s.velocity_iterations, 1, 1000, false, "");
+  require_in_range("position iterations", s.position_iterations, 0, 1000, false, "");
+  require_in_range("threshold speed", s.threshold_speed, 0.0, 100.0, true, " m/s");
 }
 
 Scene::Scene(PairTable pairs, StepSettings settings, b2Vec2 gravity)
@@ -117,8 +109,8 @@ void Scene::add_spring(const Spring& spring) {
   if (spring.other == nullptr && !spring.hand) {
     throw InvalidInput("spring " + spring.name + ": its far end needs a body or a hand");
   }
-  check_range(("spring " + spring.name + ": stiffness k").c_str(), spring.stiffness, 0.0, 1e9, true, " N/m");
-  check_range(("spring " + spring.name + ": rest length").c_str(), spring.rest_length, 0.0, 1e4, false, " m");
+  validation::require_in_range("spring " + spring.name + ": stiffness k", spring.stiffness, 0.0, 1e9, true, " N/m");
+  validation::require_in_range("spring " + spring.name + ": rest length", spring.rest_length, 0.0, 1e4, false, " m");
   springs_.push_back(spring);
 }
 

@@ -9,6 +9,7 @@
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
+#include "tests/expect_invalid.h"
 
 namespace frictionlab {
 namespace {
@@ -350,17 +351,6 @@ TEST(ClosedForms, StackedBlocksMatchNewtonForEachBlock) {
 }
 
 // Bad parameters: one test for each kind, each checking the message names the parameter and range.
-template <class Call>
-void expect_invalid(Call call, const std::string& parameter, const std::string& range) {
-  try {
-    call();
-    ADD_FAILURE() << "no InvalidInput for " << parameter;
-  } catch (const InvalidInput& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find(parameter), std::string::npos) << message;
-    EXPECT_NE(message.find(range), std::string::npos) << message;
-  }
-}
 
 TEST(ClosedFormsInput, NonPositiveMassThrows) {
   expect_invalid([] { slide_to_rest(1.0, -1.0, {0.5, 0.4, 0, 0}, g); }, "mass", "> 0");

@@ -11,6 +11,7 @@
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
+#include "tests/expect_invalid.h"
 
 namespace frictionlab {
 namespace {
@@ -272,17 +273,6 @@ TEST(ReducedModel, SamplesLandOnEveryStepAndOnTEnd) {
   EXPECT_EQ(integrate_regularized(spring_block(), 1.0, 0.1, 1e-3, Integrator::rk4).size(), 11u);
 }
 
-template <class Call>
-void expect_invalid(Call call, const std::string& parameter, const std::string& range) {
-  try {
-    call();
-    ADD_FAILURE() << "no InvalidInput for " << parameter;
-  } catch (const InvalidInput& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find(parameter), std::string::npos) << message;
-    EXPECT_NE(message.find(range), std::string::npos) << message;
-  }
-}
 
 TEST(ReducedModelInput, NonPositiveMassThrows) {
   OneDofBlock block = spring_block();
