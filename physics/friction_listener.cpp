@@ -49,6 +49,15 @@ float translational_mass(const b2Body* a, const b2Body* b) {
   return inverse > 0.0f ? 1.0f / inverse : 0.0f;
 }
 
+// On a face (two manifold points) the normal forces redistribute to keep a body from pitching,
+// so tangential impulses there move the translational mass and go through the centres of
+// mass. Applied at the face instead, their torque would set the body pitching for a step until
+// the normal impulses stopped it, and the velocity they leave can even reverse. At a single
+// point (a corner, a wheel) rotation is free and the point's own effective mass applies.
+float contact_mass(const b2Body* a, const b2Body* b, bool face, const b2Vec2& p, const b2Vec2& t) {
+  return face ? translational_mass(a, b) : tangential_mass(a, b, p, t);
+}
+
 void apply_tangential_impulse(b2Body* a, b2Body* b, const b2Vec2& p, const b2Vec2& t, float impulse,
                               bool through_centres = false) {
   for (b2Body* body : {b, a}) {
@@ -236,7 +245,7 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
 double FrictionListener::breakaway_correction(const ContactRecord& r, const FrictionPair& pair,
                                               double normal_impulse, float sliding_end) const {
   const double h = step_;
-  const double mass = tangential_mass(r.body_a, r.body_b, r.point, r.tangent());
+  const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
   const double normal_force = normal_impulse / h;
   const double excess = mass * std::abs(sliding_end) / h;
   const double growth = (pair.mu_s * normal_force + excess - r.held_force) / h;
@@ -261,9 +270,10 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   r.damping_force = 0.0;
   if (r.breakaway_impulse != 0.0) {
     const b2Vec2 t = r.tangent();
-    const double mass = tangential_mass(r.body_a, r.body_b, r.point, t);
+    const bool face = r.point_count == 2;
+    const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
     const double v = b2Dot(point_velocity(r.body_b, r.point) - point_velocity(r.body_a, r.point), t);
-    apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse));
+    apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse), face);
     if (mass > 0.0) work_.friction += r.breakaway_impulse * (v + 0.5 * r.breakaway_impulse / mass);
     r.breakaway_impulse = 0.0;
   }
@@ -278,12 +288,8 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   for (int i = 0; i < count; ++i) p += manifold.points[i];
   p *= 1.0f / static_cast<float>(count);
   const b2Vec2 t = tangent_of(manifold.normal);
-  // On a face (two manifold points) the normal forces redistribute to keep the body from
-  // pitching, so the drag acts on the translational mass and goes through the centres of
-  // mass. Applied at the face instead, its torque would set the body pitching for a step
-  // until the normal impulses stopped it, and the velocity it leaves can even reverse.
   const bool face = count == 2;
-  const float mass = face ? translational_mass(r.body_a, r.body_b) : tangential_mass(r.body_a, r.body_b, p, t);
+  const float mass = contact_mass(r.body_a, r.body_b, face, p, t);
   if (mass <= 0.0f) return;
   const double v = b2Dot(point_velocity(r.body_b, p) - point_velocity(r.body_a, p), t);
 
