@@ -3,7 +3,6 @@
 // Figures are measured here and reported, never asserted: the machines are shared.
 #include <algorithm>
 #include <ctime>
-#include <filesystem>
 #include <functional>
 #include <ostream>
 #include <sstream>
@@ -152,21 +151,19 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--quick") {
       quick = true;
-    } else if (args[i] == "--out" && i + 1 < args.size()) {
+    } else if (args[i] == "--out" && i + 1 < args.size() && !args[i + 1].empty()) {
+      if (!directory.empty()) throw InvalidInput("bench: --out given twice; give one folder");
       directory = args[++i];
     } else {
       throw InvalidInput("bench: unknown or incomplete option '" + args[i] + "'; usage: bench [--quick] --out DIR");
     }
   }
   if (directory.empty()) throw InvalidInput("bench: --out DIR is required (the folder for the CSV files)");
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) throw InvalidInput("bench: --out " + directory + ": cannot create the folder: " + error.message());
+  prepare_output_folder("bench: --out", directory);
 
   const std::string cost = listener_cost(quick, out);
-  write_file_atomically(directory + "/listener_cost.csv", cost);
   const std::string accuracy = stick_slip_accuracy(quick, out);
-  write_file_atomically(directory + "/stick_slip_accuracy.csv", accuracy);
+  write_files_atomically({{directory + "/listener_cost.csv", cost}, {directory + "/stick_slip_accuracy.csv", accuracy}});
   out << "\nwrote " << directory << "/listener_cost.csv and " << directory << "/stick_slip_accuracy.csv\n";
   return 0;
 }

@@ -21,7 +21,8 @@ int run_demo(std::ostream& out) {
   rows.push_back(measure_sliding_friction(block, settings));
 
   Incline incline;
-  incline.angle = 0.98 * theory::sticking_angle(block.pair.mu_s);
+  const double holding_angle = 0.98 * theory::sticking_angle(block.pair.mu_s);
+  incline.angle = holding_angle;
   rows.push_back(measure_incline_creep(incline, settings, 3.0));
   incline.angle = 40.0 * M_PI / 180.0;
   rows.push_back(measure_incline_acceleration(incline, settings));
@@ -52,7 +53,22 @@ int run_demo(std::ostream& out) {
   out << "FrictionLab: theory beside simulation (Box2D, " << settings.hz << " Hz, " << settings.velocity_iterations
       << " velocity iterations, friction treatment " << treatment_name(settings.treatment) << ")\n\n";
   const int failed = print_measurements(out, rows);
-  out << "\n" << rows.size() - failed << " of " << rows.size() << " within tolerance\n";
+  const double degrees = 180.0 / M_PI;
+  const Block& b = block;
+  out << "\nerror = measured - predicted, in the row's unit; a row passes when |error| <= tolerance.\n"
+      << "\nThe situations (g = " << standard_gravity << " m/s²):\n"
+      << "  spring pull    a " << b.mass << " kg block, " << b.width << " m × " << b.height << " m, mu_s " << b.pair.mu_s
+      << ", mu_k " << b.pair.mu_k << ", on flat ground, pulled by a " << spring.stiffness << " N/m spring whose far end moves at "
+      << spring.pull_speed << " m/s, for 10 s (the spring article)\n"
+      << "  pulled block   the same block pulled at its centre by a force growing at 0.5 N/s\n"
+      << "  incline        the same block released at rest on a slope of " << format_number(holding_angle * degrees, 3)
+      << "° (98 % of atan mu_s) for 3 s, then of 40°\n"
+      << "  slide to rest  the same block launched along the ground at " << viscous.launch_speed << " m/s\n"
+      << "  pushed box     a " << box.block.mass << " kg box, " << box.block.width << " m wide and " << box.block.height
+      << " m tall, mu_s " << box.block.pair.mu_s << ", pushed on its side by a force growing at " << box.push_rate
+      << " N/s; it tips first when pushed higher than d/(2 mu_s) = " << format_number(tip, 3)
+      << " m (the tribology article)\n"
+      << "\n" << rows.size() - failed << " of " << rows.size() << " within tolerance\n";
   return failed == 0 ? 0 : 1;
 }
 

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -57,22 +58,47 @@ int print_measurements(std::ostream& out, const std::vector<Measurement>& rows) 
   return failed;
 }
 
-void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
+void prepare_output_folder(const std::string& option, const std::string& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InvalidInput(option + " " + folder + ": cannot create the folder: " + error.message());
+  const std::string probe = folder + "/.frictionlab-write-test";
+  std::ofstream file(probe, std::ios::binary);
+  if (!file) {
+    throw InvalidInput(option + " " + folder + ": cannot write there: " + std::strerror(errno) +
+                       "; give a folder you can write to");
+  }
+  file.close();
+  std::remove(probe.c_str());
+}
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::string> written;
+  auto discard = [&] {
+    for (const std::string& partial : written) std::remove(partial.c_str());
+  };
+  for (const auto& [path, text] : files) {
+    const std::string temporary = path + ".partial";
     std::ofstream file(temporary, std::ios::binary);
-    if (!file) throw InvalidInput("cannot write " + path + ": " + std::strerror(errno));
+    if (!file) {
+      const std::string reason = std::strerror(errno);
+      discard();
+      throw InvalidInput("cannot write " + path + ": " + reason);
+    }
+    written.push_back(temporary);
     file << text;
     file.close();
     if (!file) {
-      std::remove(temporary.c_str());
+      discard();
       throw InvalidInput("cannot write " + path + ": the disk refused the data");
     }
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw InvalidInput("cannot write " + path + ": " + reason);
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (std::rename(written[i].c_str(), files[i].first.c_str()) != 0) {
+      const std::string reason = std::strerror(errno);
+      discard();
+      throw InvalidInput("cannot write " + files[i].first + ": " + reason);
+    }
   }
 }
 

@@ -17,8 +17,12 @@ void print_table(std::ostream& out, const std::vector<std::vector<std::string>>&
 
 std::string format_number(double value, int significant = 4);
 
-// Writes `text` to `path` whole or not at all: a temporary file beside it, then a rename.
-// Throws InvalidInput naming the path when it cannot be written.
-void write_file_atomically(const std::string& path, const std::string& text);
+// Makes `folder` if needed and checks that a file can be written in it, so that a long run
+// is not wasted on an output place that refuses it. Throws InvalidInput naming `option`.
+void prepare_output_folder(const std::string& option, const std::string& folder);
+
+// Writes every (path, text) whole or none at all: each to a temporary file beside it, then
+// all renamed. Throws InvalidInput naming the path that could not be written.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace frictionlab

@@ -3,5 +3,5 @@
 # built-in demonstration: every situation of the seed articles, theory beside simulation.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh build
+FRICTIONLAB_TARGET=frictionlab scripts/setup.sh build -DBUILD_TESTING=OFF
 exec build/app/frictionlab "$@"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what FrictionLab needs from Debian 12's packages, then configures and builds it.
 #   scripts/setup.sh [BUILD_DIR] [extra CMake options...]
+# FRICTIONLAB_TARGET names one target to build instead of everything.
 # Safe to run again: packages already present are not fetched, builds are incremental.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,4 +23,6 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" > /dev/null
-cmake --build "$build_dir" --parallel "$(nproc)"
+echo "setup: building in $build_dir (a first build takes a minute or two)"
+cmake --build "$build_dir" --parallel "$(nproc)" ${FRICTIONLAB_TARGET:+--target "$FRICTIONLAB_TARGET"} > "$build_dir/build.log" 2>&1 ||
+  { cat "$build_dir/build.log"; echo "setup: the build failed; the log is $build_dir/build.log" >&2; exit 1; }

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Sets everything up and runs the whole test suite twice: a warnings-as-errors release build,
+# Sets everything up and runs the whole test suite twice, in build folders of its own: a warnings-as-errors release build,
 # then an AddressSanitizer + UndefinedBehaviorSanitizer build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-scripts/setup.sh build -DFRICTIONLAB_WERROR=ON
-ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+scripts/setup.sh build-test -DFRICTIONLAB_WERROR=ON
+ctest --test-dir build-test --output-on-failure --parallel "$(nproc)"
 
 scripts/setup.sh build-sanitize -DFRICTIONLAB_WERROR=ON -DFRICTIONLAB_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
