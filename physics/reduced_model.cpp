@@ -236,18 +236,25 @@ class SlipClosedForm {
   Shape shape_ = Shape::under;
 };
 
-// The slip-phase right-hand side with the direction of kinetic friction held fixed.
-BlockState rk4_step(const OneDofBlock& block, double direction, double t, BlockState s, double dt) {
-  const auto acceleration = [&](double time, double x, double v) {
-    return (applied_force(block, time, x) - direction * block.pair.mu_k * block.normal_force -
-            block.pair.c * v - block.pair.b * v * std::abs(v)) /
-           block.mass;
-  };
+// One classical RK4 step of x'' = acceleration(t, x, v).
+template <class Acceleration>
+BlockState rk4_step(double t, BlockState s, double dt, Acceleration acceleration) {
   const double k1x = s.v, k1v = acceleration(t, s.x, s.v);
   const double k2x = s.v + 0.5 * dt * k1v, k2v = acceleration(t + 0.5 * dt, s.x + 0.5 * dt * k1x, k2x);
   const double k3x = s.v + 0.5 * dt * k2v, k3v = acceleration(t + 0.5 * dt, s.x + 0.5 * dt * k2x, k3x);
   const double k4x = s.v + dt * k3v, k4v = acceleration(t + dt, s.x + dt * k3x, k4x);
   return {s.x + dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x), s.v + dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v)};
+}
+
+// The slip-phase right-hand side with the direction of kinetic friction held fixed: the
+// engineering model's kinetic branch, with its sign taken from the phase, not from v (which
+// is zero at the phase's start).
+BlockState rk4_step(const OneDofBlock& block, double direction, double t, BlockState s, double dt) {
+  return rk4_step(t, s, dt, [&](double time, double x, double v) {
+    return (applied_force(block, time, x) - direction * block.pair.mu_k * block.normal_force +
+            damping_force(v, block.pair)) /
+           block.mass;
+  });
 }
 
 }  // namespace
@@ -383,12 +390,8 @@ std::vector<Sample> integrate_regularized(const OneDofBlock& block, double t_end
         break;
       }
       case Integrator::rk4: {
-        const double k1x = v, k1v = acceleration(t, x, v);
-        const double k2x = v + 0.5 * dt * k1v, k2v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k1x, k2x);
-        const double k3x = v + 0.5 * dt * k2v, k3v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k2x, k3x);
-        const double k4x = v + dt * k3v, k4v = acceleration(t + dt, x + dt * k3x, k4x);
-        samples.push_back({t_next, x + dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
-                           v + dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v)});
+        const BlockState next = rk4_step(t, {x, v}, dt, acceleration);
+        samples.push_back({t_next, next.x, next.v});
         break;
       }
     }
