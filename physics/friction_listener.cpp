@@ -22,8 +22,6 @@ constexpr double stop_tolerance = 1e-3;
 
 float sign(float x) { return static_cast<float>((x > 0.0f) - (x < 0.0f)); }
 
-b2Vec2 tangent_of(const b2Vec2& normal) { return b2Cross(normal, 1.0f); }
-
 b2Vec2 point_velocity(const b2Body* body, const b2Vec2& world_point) {
   return body->GetLinearVelocityFromWorldPoint(world_point);
 }
@@ -34,8 +32,11 @@ float tangential_mass(const b2Body* a, const b2Body* b, const b2Vec2& p, const b
   float inverse = 0.0f;
   for (const b2Body* body : {a, b}) {
     if (body->GetType() != b2_dynamicBody) continue;
+    inverse += 1.0f / body->GetMass();
+    // A fixed-rotation body (inertia 0) cannot turn, so the lever arm adds nothing.
+    const float inertia = central_inertia(body);
     const float arm = b2Cross(p - body->GetWorldCenter(), t);
-    inverse += 1.0f / body->GetMass() + arm * arm / central_inertia(body);
+    if (inertia > 0.0f) inverse += arm * arm / inertia;
   }
   return inverse > 0.0f ? 1.0f / inverse : 0.0f;
 }
@@ -57,6 +58,17 @@ float translational_mass(const b2Body* a, const b2Body* b) {
 float contact_mass(const b2Body* a, const b2Body* b, bool face, const b2Vec2& p, const b2Vec2& t) {
   return face ? translational_mass(a, b) : tangential_mass(a, b, p, t);
 }
+
+// The sliding speed the contact's own impulses act on: of the centres of mass on a face (where
+// those impulses go through the centres), of the contact point elsewhere.
+double sliding_speed(const b2Body* a, const b2Body* b, bool face, const b2Vec2& p, const b2Vec2& t) {
+  const b2Vec2 relative = face ? b->GetLinearVelocity() - a->GetLinearVelocity() : point_velocity(b, p) - point_velocity(a, p);
+  return b2Dot(relative, t);
+}
+
+// The static limit: with mu_k > mu_s a contact pushed past mu_s·N but not mu_k·N would be
+// pushed back by kinetic friction the moment it moved, so it cannot start until mu_k·N.
+double breakaway_coefficient(const FrictionPair& pair) { return std::max(pair.mu_s, pair.mu_k); }
 
 void apply_tangential_impulse(b2Body* a, b2Body* b, const b2Vec2& p, const b2Vec2& t, float impulse,
                               bool through_centres = false) {
@@ -101,8 +113,12 @@ void FrictionListener::set_threshold_speed(double epsilon) {
 }
 
 const ContactRecord* FrictionListener::find(const b2Body* a, const b2Body* b) const {
-  for (const auto& [contact, record] : records_) {
-    if ((record.body_a == a && record.body_b == b) || (record.body_a == b && record.body_b == a)) return &record;
+  // The body's own contact list: short, and in the world's order, so that of two contacts
+  // between the same bodies the same one is found in every run.
+  for (const b2ContactEdge* edge = const_cast<b2Body*>(a)->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (edge->other != b || !edge->contact->IsTouching()) continue;
+    auto found = records_.find(edge->contact);
+    if (found != records_.end()) return &found->second;
   }
   return nullptr;
 }
@@ -113,7 +129,23 @@ void FrictionListener::BeginContact(b2Contact* contact) {
   record.body_b = contact->GetFixtureB()->GetBody();
   record.material_a = fixture_material(contact->GetFixtureA());
   record.material_b = fixture_material(contact->GetFixtureB());
+  if (!pairs_.has_pair(record.material_a, record.material_b)) {
+    // Throwing here would unwind through Box2D and leave the world locked; the contact is
+    // switched off instead and the scene reports the error once the step is over.
+    record.unpaired = true;
+    if (error_.empty()) {
+      auto name = [&](int id) { return id >= 0 && id < pairs_.material_count() ? pairs_.material(id).name : "(no material)"; };
+      error_ = "no friction values for the pair " + name(record.material_a) + "–" + name(record.material_b) +
+               " that just touched; give every fixture a material whose pairs are set";
+    }
+  }
   records_[contact] = record;
+}
+
+std::string FrictionListener::take_error() {
+  std::string error = std::move(error_);
+  error_.clear();
+  return error;
 }
 
 void FrictionListener::EndContact(b2Contact* contact) { records_.erase(contact); }
@@ -122,6 +154,10 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   auto found = records_.find(contact);
   if (found == records_.end()) return;
   ContactRecord& r = found->second;
+  if (r.unpaired) {
+    contact->SetEnabled(false);
+    return;
+  }
   const FrictionPair& pair = pairs_.pair(r.material_a, r.material_b);
   // A contact born in this step missed apply_contact_forces: its drag starts now, before the
   // solve, so a block landing on a viscous film is not let off for a step.
@@ -131,7 +167,7 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   contact->GetWorldManifold(&manifold);
   r.point_count = contact->GetManifold()->pointCount;
   r.normal = manifold.normal;
-  const b2Vec2 t = tangent_of(r.normal);
+  const b2Vec2 t = ContactRecord::tangent_of(r.normal);
   float sliding = 0.0f;
   r.point.SetZero();
   for (int i = 0; i < r.point_count; ++i) {
@@ -151,7 +187,7 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
         r.state = ContactState::slipping;
         r.slip_direction = sign(sliding);
       }
-      contact->SetFriction(static_cast<float>(r.state == ContactState::sticking ? pair.mu_s : pair.mu_k));
+      contact->SetFriction(static_cast<float>(r.state == ContactState::sticking ? breakaway_coefficient(pair) : pair.mu_k));
       break;
     case FrictionTreatment::threshold:
       r.state = slow ? ContactState::sticking : ContactState::slipping;
@@ -170,11 +206,11 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
 
 void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {
   auto found = records_.find(contact);
-  if (found == records_.end()) return;
+  if (found == records_.end() || found->second.unpaired) return;
   ContactRecord& r = found->second;
   const FrictionPair& pair = pairs_.pair(r.material_a, r.material_b);
   const b2Vec2 n = r.normal;
-  const b2Vec2 t = tangent_of(n);
+  const b2Vec2 t = ContactRecord::tangent_of(n);
   const bool a_driven = r.body_a->GetType() == b2_kinematicBody;
   const bool b_driven = r.body_b->GetType() == b2_kinematicBody;
 
@@ -210,7 +246,7 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
   switch (treatment_) {
     case FrictionTreatment::stick_slip:
       if (r.state == ContactState::sticking) {
-        if (reached >= pair.mu_s * (1.0 - breakaway_tolerance)) {
+        if (reached >= breakaway_coefficient(pair) * (1.0 - breakaway_tolerance)) {
           r.state = ContactState::slipping;
           // Friction on B opposes B's sliding, so an unmoved contact slides against it.
           r.slip_direction = sliding_end != 0.0f ? sign(sliding_end) : -sign(static_cast<float>(tangent_impulse));
@@ -248,9 +284,9 @@ double FrictionListener::breakaway_correction(const ContactRecord& r, const Fric
   const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
   const double normal_force = normal_impulse / h;
   const double excess = mass * std::abs(sliding_end) / h;
-  const double growth = (pair.mu_s * normal_force + excess - r.held_force) / h;
+  const double growth = (breakaway_coefficient(pair) * normal_force + excess - r.held_force) / h;
   const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, h) : 0.5 * h;
-  return std::max(0.0, pair.mu_s - pair.mu_k) * normal_force * (late + 0.5 * h);
+  return (breakaway_coefficient(pair) - pair.mu_k) * normal_force * (late + 0.5 * h);
 }
 
 void FrictionListener::apply_contact_forces(b2World& world, float h) {
@@ -265,6 +301,7 @@ void FrictionListener::apply_contact_forces(b2World& world, float h) {
 }
 
 void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r) {
+  if (r.unpaired) return;
   const float h = step_;
   const FrictionPair& pair = pairs_.pair(r.material_a, r.material_b);
   r.damping_force = 0.0;
@@ -272,7 +309,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
     const b2Vec2 t = r.tangent();
     const bool face = r.point_count == 2;
     const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
-    const double v = b2Dot(point_velocity(r.body_b, r.point) - point_velocity(r.body_a, r.point), t);
+    const double v = sliding_speed(r.body_a, r.body_b, face, r.point, t);
     apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse), face);
     if (mass > 0.0) work_.friction += r.breakaway_impulse * (v + 0.5 * r.breakaway_impulse / mass);
     r.breakaway_impulse = 0.0;
@@ -287,11 +324,11 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   b2Vec2 p{0.0f, 0.0f};
   for (int i = 0; i < count; ++i) p += manifold.points[i];
   p *= 1.0f / static_cast<float>(count);
-  const b2Vec2 t = tangent_of(manifold.normal);
+  const b2Vec2 t = ContactRecord::tangent_of(manifold.normal);
   const bool face = count == 2;
   const float mass = contact_mass(r.body_a, r.body_b, face, p, t);
   if (mass <= 0.0f) return;
-  const double v = b2Dot(point_velocity(r.body_b, p) - point_velocity(r.body_a, p), t);
+  const double v = sliding_speed(r.body_a, r.body_b, face, p, t);
 
   // Implicit in the velocity: stable and sign-preserving at any h·c/m.
   const double damping_impulse = mass * (damped_velocity(v, mass, h, pair) - v);

@@ -5,6 +5,7 @@
 #include <box2d/box2d.h>
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
@@ -57,10 +58,13 @@ struct ContactRecord {
   b2Vec2 world_points[b2_maxManifoldPoints];
   b2Vec2 start_velocity[b2_maxManifoldPoints];  // B's point velocity minus A's
   bool fresh = true;               // not yet seen by PreSolve: its first state comes from its speed
+  bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction while stuck in the previous step
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
 
-  b2Vec2 tangent() const { return b2Cross(normal, 1.0f); }
+  // Box2D's friction direction for a contact normal: the normal turned by -90°.
+  static b2Vec2 tangent_of(const b2Vec2& n) { return b2Cross(n, 1.0f); }
+  b2Vec2 tangent() const { return tangent_of(normal); }
   // The forces on `body`, which must be one of the two in contact (N, world axes).
   b2Vec2 friction_on(const b2Body* body) const { return side(body) * static_cast<float>(friction_force) * tangent(); }
   b2Vec2 normal_on(const b2Body* body) const { return side(body) * static_cast<float>(normal_force) * normal; }
@@ -94,7 +98,10 @@ class FrictionListener : public b2ContactListener {
   // the next step, owes no breakaway impulse, and the trial's work is dropped.
   void forget_trial();
 
+  // Unordered: iterate the world's contact list where order matters.
   const std::unordered_map<b2Contact*, ContactRecord>& contacts() const { return records_; }
+  // The first error met during the last step (empty if none), cleared by reading it.
+  std::string take_error();
   // The record for the contact between two bodies, if they touch.
   const ContactRecord* find(const b2Body* a, const b2Body* b) const;
 
@@ -116,6 +123,7 @@ class FrictionListener : public b2ContactListener {
   float step_ = 1.0f / 240.0f;
   std::unordered_map<b2Contact*, ContactRecord> records_;
   ContactWork work_;
+  std::string error_;
 };
 
 }  // namespace frictionlab

@@ -61,10 +61,11 @@ int PairTable::add_material(const Material& material) {
   for (const Material& known : materials_) {
     if (known.name == material.name) throw InvalidInput("material " + material.name + ": defined twice");
   }
-  if (!(material.density > 0.0 && material.density <= 1e6)) {
+  // Box2D keeps masses in floats; far below 1e-3 kg/m² a body's mass rounds to nothing.
+  if (!(material.density >= 1e-3 && material.density <= 1e6)) {
     std::ostringstream message;
     message << "material " << material.name << ": density = " << material.density
-            << " kg/m² is outside the allowed range (0, 1e6]";
+            << " kg/m² is outside the allowed range [0.001, 1e6]";
     throw InvalidInput(message.str());
   }
   grow(material_count() + 1);

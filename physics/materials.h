@@ -39,7 +39,7 @@ PairCheck check_pair(std::string_view material_a, std::string_view material_b, c
 class PairTable {
  public:
   // Returns the material's id; throws InvalidInput for an empty or repeated name or a
-  // density outside (0, 1e6] kg/m².
+  // density outside [0.001, 1e6] kg/m².
   int add_material(const Material& material);
   // Throws InvalidInput naming the unknown material and listing the known ones.
   int material_id(std::string_view name) const;

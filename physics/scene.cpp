@@ -11,11 +11,27 @@ namespace {
 
 b2Vec2 world_point(const b2Body* body, const b2Vec2& local) { return body->GetWorldPoint(local); }
 
+// What a user's function of time returns is checked before Box2D sees it: a NaN there would
+// spread through the world, and a non-finite transform makes Box2D abort.
+b2Vec2 checked(const std::string& what, b2Vec2 value, double t) {
+  if (!std::isfinite(value.x) || !std::isfinite(value.y) || std::abs(value.x) > 1e9f || std::abs(value.y) > 1e9f) {
+    std::ostringstream message;
+    message << what << " at t = " << t << " s is (" << value.x << ", " << value.y
+            << "); each part must be finite and within ±1e9";
+    throw InvalidInput(message.str());
+  }
+  return value;
+}
+
+double checked(const std::string& what, double value, double t) {
+  return checked(what, b2Vec2{static_cast<float>(value), 0.0f}, t).x;
+}
+
 }  // namespace
 
 void validate(const StepSettings& s) {
   using validation::require_in_range;
-  require_in_range("hz", s.hz, 0.0, 100000.0, true, " Hz");
+  require_in_range("hz", s.hz, 1.0, 100000.0, false, " Hz");
   require_in_range("substeps", s.substeps, 1, 1000, false, "");
   require_in_range("velocity iterations", s.velocity_iterations, 1, 1000, false, "");
   require_in_range("position iterations", s.position_iterations, 0, 1000, false, "");
@@ -25,6 +41,8 @@ void validate(const StepSettings& s) {
 Scene::Scene(PairTable pairs, StepSettings settings, b2Vec2 gravity)
     : pairs_(std::move(pairs)), settings_(settings), gravity_(gravity), listener_(pairs_) {
   validate(settings_);
+  validation::require_in_range("gravity x", gravity.x, -1000.0, 1000.0, false, " m/s²");
+  validation::require_in_range("gravity y", gravity.y, -1000.0, 1000.0, false, " m/s²");
   world_ = std::make_unique<b2World>(gravity_);
   world_->SetContactListener(&listener_);
   // A resting block must keep feeling its spring and its friction, and a time-of-impact
@@ -42,8 +60,25 @@ void Scene::check_new_name(const std::string& name) const {
   }
 }
 
+void Scene::check_placement(const std::string& name, b2Vec2 position, float angle) const {
+  // Box2D asserts (and aborts) on a non-finite transform; far away its floats lose the
+  // millimetres that friction lives in.
+  using validation::require_in_range;
+  require_in_range("body " + name + ": x", position.x, -1e5, 1e5, false, " m");
+  require_in_range("body " + name + ": y", position.y, -1e5, 1e5, false, " m");
+  require_in_range("body " + name + ": angle", angle, -1e4, 1e4, false, " rad");
+}
+
 b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
   check_new_name(name);
+  check_placement(name, definition.position, definition.angle);
+  using validation::require_in_range;
+  require_in_range("body " + name + ": speed x", definition.linearVelocity.x, -1e4, 1e4, false, " m/s");
+  require_in_range("body " + name + ": speed y", definition.linearVelocity.y, -1e4, 1e4, false, " m/s");
+  require_in_range("body " + name + ": spin", definition.angularVelocity, -1e4, 1e4, false, " rad/s");
+  require_in_range("body " + name + ": linear damping", definition.linearDamping, 0.0, 1e4, false, " 1/s");
+  require_in_range("body " + name + ": angular damping", definition.angularDamping, 0.0, 1e4, false, " 1/s");
+  require_in_range("body " + name + ": gravity scale", definition.gravityScale, -100.0, 100.0, false, "");
   b2Body* created = world_->CreateBody(&definition);
   bodies_.emplace_back(name, created);
   return created;
@@ -75,14 +110,12 @@ b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::str
 
 b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
                        float width, float height, float angle) {
-  if (!(width > 0.0f && height > 0.0f && width <= 1000.0f && height <= 1000.0f)) {
-    std::ostringstream message;
-    message << "box " << name << ": width " << width << " m and height " << height
-            << " m must both be in the range (0, 1000]";
-    throw InvalidInput(message.str());
-  }
+  // Box2D wraps every polygon in a 1 cm skin; a box much thinner than two skins is all skin.
+  validation::require_in_range("box " + name + ": width", width, 0.02, 1000.0, false, " m");
+  validation::require_in_range("box " + name + ": height", height, 0.02, 1000.0, false, " m");
   // Everything is checked before the body exists, so a refused box leaves nothing behind.
   check_new_name(name);
+  check_placement(name, center, angle);
   check_material(material);
   b2BodyDef definition;
   definition.type = type;
@@ -96,11 +129,11 @@ b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::stri
 }
 
 b2Body* Scene::body(const std::string& name) const {
-  std::string known;
   for (const auto& [body_name, body] : bodies_) {
     if (body_name == name) return body;
-    known += " " + body_name;
   }
+  std::string known;
+  for (const auto& [body_name, body] : bodies_) known += " " + body_name;
   throw InvalidInput("unknown body '" + name + "'; bodies in this scene:" + known);
 }
 
@@ -111,6 +144,24 @@ void Scene::add_spring(const Spring& spring) {
   }
   validation::require_in_range("spring " + spring.name + ": stiffness k", spring.stiffness, 0.0, 1e9, true, " N/m");
   validation::require_in_range("spring " + spring.name + ": rest length", spring.rest_length, 0.0, 1e4, false, " m");
+  // The spring force is explicit: it stays stable only while h·sqrt(k/m) < 2, with m the mass
+  // it moves (the reduced mass between two bodies).
+  double inverse_mass = 0.0;
+  for (const b2Body* end : {spring.body, spring.other}) {
+    if (end != nullptr && end->GetType() == b2_dynamicBody && end->GetMass() > 0.0f) inverse_mass += 1.0 / end->GetMass();
+  }
+  if (inverse_mass > 0.0) {
+    const double h = frame_step() / settings_.substeps;
+    const double limit = 4.0 / (inverse_mass * h * h);
+    if (spring.stiffness >= limit) {
+      std::ostringstream message;
+      message << "spring " << spring.name << ": stiffness k = " << spring.stiffness
+              << " N/m is too stiff for the step h = " << h << " s; an explicit spring on "
+              << 1.0 / inverse_mass << " kg is stable only for k < 4·m/h² = " << limit
+              << " N/m (raise hz or substeps, or soften the spring)";
+      throw InvalidInput(message.str());
+    }
+  }
   springs_.push_back(spring);
 }
 
@@ -135,12 +186,19 @@ void Scene::add_probe(const std::string& name, std::function<double()> measure) 
   probes_.push_back({name, std::move(measure), {}});
 }
 
+std::string Scene::name_of(const b2Body* body) const {
+  for (const auto& [name, known] : bodies_) {
+    if (known == body) return name;
+  }
+  return "(unnamed)";
+}
+
 const Probe& Scene::probe(const std::string& name) const {
-  std::string known;
   for (const Probe& p : probes_) {
     if (p.name == name) return p;
-    known += " " + p.name;
   }
+  std::string known;
+  for (const Probe& p : probes_) known += " " + p.name;
   throw InvalidInput("unknown probe '" + name + "'; probes in this scene:" + known);
 }
 
@@ -239,17 +297,19 @@ void Scene::advance(double t, float h, bool move) {
   listener_.apply_contact_forces(*world_, h);
 
   for (const Driver& driver : drivers_) {
-    const b2Vec2 now = driver.position(t);
-    const b2Vec2 next = driver.position(t + h);
-    const double angle_now = driver.angle ? driver.angle(t) : 0.0;
-    const double angle_next = driver.angle ? driver.angle(t + h) : 0.0;
+    const std::string name = "driven body " + name_of(driver.body);
+    const b2Vec2 now = checked(name + ": position", driver.position(t), t);
+    const b2Vec2 next = checked(name + ": position", driver.position(t + h), t + h);
+    const double angle_now = driver.angle ? checked(name + ": angle", driver.angle(t), t) : 0.0;
+    const double angle_next = driver.angle ? checked(name + ": angle", driver.angle(t + h), t + h) : 0.0;
     driver.body->SetTransform(now, static_cast<float>(angle_now));
     driver.body->SetLinearVelocity((1.0f / h) * (next - now));
     driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
   }
 
   for (const Spring& spring : springs_) {
-    const b2Vec2 force = spring_force(spring);
+    if (!spring.other) checked("spring " + spring.name + ": hand", spring.hand(t + h), t + h);
+    const b2Vec2 force = checked("spring " + spring.name + ": force", spring_force(spring), t);
     spring.body->ApplyForce(force, world_point(spring.body, spring.local_point), true);
     if (spring.other) {
       spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
@@ -269,12 +329,13 @@ void Scene::advance(double t, float h, bool move) {
   pending.reserve(applied_.size());
   for (const AppliedForce& applied : applied_) {
     const b2Vec2 point = world_point(applied.body, applied.local_point);
-    const b2Vec2 force = applied.force(t);
+    const b2Vec2 force = checked("applied force " + applied.name, applied.force(t), t);
     applied.body->ApplyForce(force, point, true);
     pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
   }
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
+  if (std::string error = listener_.take_error(); !error.empty()) throw InvalidInput(error);
   for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());
 
   for (const Pending& p : pending) {

@@ -16,7 +16,7 @@
 namespace frictionlab {
 
 struct StepSettings {
-  double hz = 240.0;             // frames per simulated second, (0, 100000]
+  double hz = 240.0;             // frames per simulated second, [1, 100000]
   int substeps = 1;              // world steps per frame, [1, 1000]
   int velocity_iterations = 8;   // [1, 1000]
   int position_iterations = 3;   // [0, 1000]
@@ -100,6 +100,8 @@ class Scene {
   b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
   const std::vector<std::pair<std::string, b2Body*>>& bodies() const { return bodies_; }
 
+  // Add the bodies' fixtures first: the spring is refused when it is too stiff for the step
+  // given the mass it moves.
   void add_spring(const Spring& spring);
   void add_applied_force(const AppliedForce& force);
   // A kinematic body follows position(t) and angle(t) exactly at every step.
@@ -137,6 +139,8 @@ class Scene {
   // The material's id, once it has friction values with every material already in the scene.
   int check_material(const std::string& material) const;
   void check_new_name(const std::string& name) const;
+  std::string name_of(const b2Body* body) const;
+  void check_placement(const std::string& name, b2Vec2 position, float angle) const;
   double mechanical_energy(double* kinetic, double* potential, double* elastic) const;
   void update_ledger_state();
 
