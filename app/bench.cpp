@@ -98,7 +98,7 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out) {
       double error = 0.0;
       const double cost = cost_per_simulated_second(
           [&] { error = spring_pull_max_error(setup, settings, duration); }, duration, repeats);
-      add("box2d+" + std::string(treatment_name(treatment)), hz, error, cost);
+      add("Box2D treatment=" + std::string(treatment_name(treatment)), hz, error, cost);
     }
   }
   const OneDofBlock model = spring_pull_model(setup);

@@ -96,6 +96,9 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
   for (size_t i = 0; i < files.size(); ++i) {
     if (std::rename(written[i].c_str(), files[i].first.c_str()) != 0) {
       const std::string reason = std::strerror(errno);
+      // None at all: the files already renamed go too, with the partial ones.
+      for (size_t done = 0; done < i; ++done) std::remove(files[done].first.c_str());
+      written.erase(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(i));
       discard();
       throw InvalidInput("cannot write " + files[i].first + ": " + reason);
     }

@@ -81,7 +81,7 @@ struct ContactWork {
 
 class FrictionListener : public b2ContactListener {
  public:
-  explicit FrictionListener(const PairTable& pairs) : pairs_(pairs) {}
+  explicit FrictionListener(const PairTable& pairs) : pairs_(pairs) { records_.reserve(256); }
 
   void set_treatment(FrictionTreatment treatment) { treatment_ = treatment; }
   FrictionTreatment treatment() const { return treatment_; }

@@ -205,6 +205,9 @@ Measurement measure_incline_acceleration(const Incline& setup, const StepSetting
 }
 
 namespace {
+// The static limit a pulled block must beat: mu_s, or mu_k where that is larger.
+double breakaway_limit(const FrictionPair& pair) { return std::max(pair.mu_s, pair.mu_k); }
+
 struct PulledBlock {
   double breakaway_force = NAN;
   double mean_sliding_friction = NAN;
@@ -222,29 +225,37 @@ PulledBlock pull_block(const Block& block, const StepSettings& settings) {
                             }});
   const b2Body* ground = scene->body("ground");
   PulledBlock result;
-  double friction_sum = 0.0;
-  int friction_count = 0;
-  const double limit = 4.0 * block.pair.mu_s * block.mass * standard_gravity / rate;
+  // The sliding friction is read from the motion, not from the solver's clamp (which holds
+  // it at mu_k·N by construction): over one second of sliding, friction = mean pull - m·Δv/Δt.
+  double pull_sum = 0.0;
+  double start_speed = 0.0;
+  int sliding_frames = 0;
+  const double limit = 4.0 * breakaway_limit(block.pair) * block.mass * standard_gravity / rate;
   run(*scene, limit, [&] {
     const ContactRecord* contact = scene->friction().find(body, ground);
     if (contact == nullptr) return false;
-    if (std::isnan(result.breakaway_force) && contact->state == ContactState::slipping) {
-      // The force that acted during the step that broke the contact free.
-      result.breakaway_force = rate * (scene->time() - scene->frame_step());
-    } else if (!std::isnan(result.breakaway_force)) {
-      friction_sum += std::abs(contact->friction_force);
-      ++friction_count;
-      return friction_count >= static_cast<int>(settings.hz);  // one second of sliding
+    const double pull = rate * (scene->time() - scene->frame_step());  // what acted in this frame
+    if (std::isnan(result.breakaway_force)) {
+      if (contact->state == ContactState::slipping) {
+        result.breakaway_force = pull;
+        start_speed = body->GetLinearVelocity().x;
+      }
+      return false;
     }
-    return false;
+    pull_sum += pull;
+    ++sliding_frames;
+    if (sliding_frames < static_cast<int>(settings.hz)) return false;
+    const double duration = sliding_frames * scene->frame_step();
+    const double speed_gain = body->GetLinearVelocity().x - start_speed;
+    result.mean_sliding_friction = pull_sum / sliding_frames - block.mass * speed_gain / duration;
+    return true;
   });
-  if (friction_count > 0) result.mean_sliding_friction = friction_sum / friction_count;
   return result;
 }
 }  // namespace
 
 Measurement measure_breakaway_force(const Block& block, const StepSettings& settings) {
-  const double predicted = block.pair.mu_s * block.mass * standard_gravity;
+  const double predicted = breakaway_limit(block.pair) * block.mass * standard_gravity;
   return {"breakaway force", "N", predicted, pull_block(block, settings).breakaway_force, 0.01 * predicted};
 }
 
@@ -336,13 +347,13 @@ Pyramid make_pyramid(int rows, bool use_listener, const StepSettings& settings) 
         [&] {
           b2BodyDef definition;
           definition.position = {0.0f, -0.5f};
-          world.CreateBody(&definition)->CreateFixture(&ground_box, 0.0f)->SetFriction(0.5f);
+          world.CreateBody(&definition)->CreateFixture(&ground_box, 0.0f)->SetFriction(0.6f);
         },
         [&](b2Vec2 p) {
           b2BodyDef definition;
           definition.type = b2_dynamicBody;
           definition.position = p;
-          world.CreateBody(&definition)->CreateFixture(&box, 1.0f)->SetFriction(0.5f);
+          world.CreateBody(&definition)->CreateFixture(&box, 1.0f)->SetFriction(0.6f);
         });
   }
   return pyramid;

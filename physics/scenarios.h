@@ -104,7 +104,8 @@ struct PushResult {
 PushResult run_pushed_box(const PushedBox& setup, const StepSettings& settings, double duration);
 
 // A pyramid of boxes `rows` high on static ground (rows·(rows+1)/2 boxes), for the cost of
-// the listener. With `use_listener` false the world is plain Box2D with its own mixer.
+// the listener. With `use_listener` false the world is plain Box2D with its own mixer and
+// every fixture's friction 0.6, the mu_s that holds the resting pile in the listener's world.
 struct Pyramid {
   std::unique_ptr<Scene> scene;      // with the listener
   std::unique_ptr<b2World> plain;    // without

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 build_dir="${1:-build}"
 shift || true
 
-packages=(build-essential cmake pkg-config libbox2d-dev libgtest-dev)
+packages=(build-essential cmake libbox2d-dev libgtest-dev)
 
 missing=()
 for package in "${packages[@]}"; do
