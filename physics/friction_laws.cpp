@@ -3,10 +3,6 @@
 #include <cmath>
 
 namespace frictionlab {
-namespace {
-double sign(double x) { return (x > 0.0) - (x < 0.0); }
-}  // namespace
-
 double damping_force(double velocity, const FrictionPair& pair) {
   return -pair.c * velocity - pair.b * velocity * std::abs(velocity);
 }

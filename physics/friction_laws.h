@@ -7,6 +7,12 @@
 
 namespace frictionlab {
 
+// -1, 0 or +1: the direction a friction force opposes.
+template <typename Number>
+constexpr Number sign(Number x) {
+  return static_cast<Number>((x > Number(0)) - (x < Number(0)));
+}
+
 // Where a contact is on the engineering model's graph.
 enum class ContactState { sticking, slipping };
 

@@ -20,8 +20,6 @@ constexpr float birth_sliding_speed = 1e-3f;
 constexpr double breakaway_tolerance = 1e-5;
 constexpr double stop_tolerance = 1e-3;
 
-float sign(float x) { return static_cast<float>((x > 0.0f) - (x < 0.0f)); }
-
 b2Vec2 point_velocity(const b2Body* body, const b2Vec2& world_point) {
   return body->GetLinearVelocityFromWorldPoint(world_point);
 }

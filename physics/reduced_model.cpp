@@ -49,8 +49,6 @@ void require_step(const char* where, double h, double t_end) {
   }
 }
 
-double sign_of(double value) { return (value > 0.0) - (value < 0.0); }
-
 // See the header: with μk > μs a push between μs·N and μk·N cannot keep the block sliding.
 double breakaway_threshold(const OneDofBlock& block) {
   return std::max(block.pair.mu_s, block.pair.mu_k) * block.normal_force;
@@ -85,14 +83,14 @@ Trajectory drive(const OneDofBlock& block, double t_end, StickSolver stick, Slip
   std::vector<Phase> phases;
   std::vector<Event> events;
   const double threshold = breakaway_threshold(block);
-  double t = 0.0, direction = sign_of(block.v0);
+  double t = 0.0, direction = sign(block.v0);
   BlockState now{block.x0, block.v0};
   bool sliding = direction != 0.0;
   if (!sliding) {
     const double push = applied_force(block, 0.0, now.x);
     if (std::abs(push) > threshold) {
       sliding = true;
-      direction = sign_of(push);
+      direction = sign(push);
       events.push_back({0.0, now.x, 0.0, EventKind::breakaway});
     }
   }
@@ -122,7 +120,7 @@ Trajectory drive(const OneDofBlock& block, double t_end, StickSolver stick, Slip
       sliding = false;
       events.push_back({t, now.x, 0.0, EventKind::stop});
     } else {
-      const double next_direction = sign_of(push);
+      const double next_direction = sign(push);
       events.push_back({t, now.x, 0.0, next_direction == direction ? EventKind::breakaway : EventKind::reversal});
       direction = next_direction;
     }
@@ -319,7 +317,7 @@ Trajectory solve_event_rk4(const OneDofBlock& block, double t_end, double h) {
       const double before = t0 + (n - 1.0) * h, after = std::min(t0 + n * h, t_limit);
       if (wins(after)) {
         const double t = bisect(before, after, wins);
-        return {t, sign_of(applied_force(block, after, x))};
+        return {t, sign(applied_force(block, after, x))};
       }
       if (after >= t_limit) return {infinity, 0.0};
     }

@@ -9,7 +9,7 @@
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
-#include "tests/expect_invalid.h"
+#include "tests/assertions.h"
 
 namespace frictionlab {
 namespace {
@@ -21,8 +21,6 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // Agreement with a numerical solution, relative to the size of the expected value.
-#define EXPECT_RELATIVE(actual, expected, tolerance) \
-  EXPECT_NEAR(actual, expected, (tolerance) * std::abs(expected))
 
 // Bisection for the first x in [lo, hi] at which a monotone predicate turns true.
 template <class Predicate>

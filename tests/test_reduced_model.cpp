@@ -11,15 +11,13 @@
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
-#include "tests/expect_invalid.h"
+#include "tests/assertions.h"
 
 namespace frictionlab {
 namespace {
 
 constexpr double g = 9.81;
 
-#define EXPECT_RELATIVE(actual, expected, tolerance) \
-  EXPECT_NEAR(actual, expected, (tolerance) * std::abs(expected))
 
 // The suggested standard problem: 1 kg pulled by a 50 N/m spring at 0.1 m/s, μs 0.6, μk 0.4.
 OneDofBlock spring_block(double c = 0.0) {

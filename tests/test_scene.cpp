@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "physics/scenarios.h"
-#include "tests/expect_invalid.h"
+#include "tests/assertions.h"
 
 using namespace frictionlab;
 

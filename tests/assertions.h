@@ -1,15 +1,20 @@
-// Shared by the test suites: a call must throw InvalidInput whose message names the
-// parameter and its allowed range.
+// Assertions shared by the test suites.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+
+// |actual - expected| within a fraction `tolerance` of |expected|.
+#define EXPECT_RELATIVE(actual, expected, tolerance) \
+  EXPECT_NEAR(actual, expected, (tolerance) * std::abs(expected))
 
 #include "physics/materials.h"
 
 namespace frictionlab {
 
+// The call must throw InvalidInput whose message names the parameter and its allowed range.
 template <class Call>
 void expect_invalid(Call call, const std::string& parameter, const std::string& range) {
   try {
