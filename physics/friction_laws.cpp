@@ -3,6 +3,7 @@
 #include <cmath>
 
 namespace frictionlab {
+
 double damping_force(double velocity, const FrictionPair& pair) {
   return -pair.c * velocity - pair.b * velocity * std::abs(velocity);
 }
