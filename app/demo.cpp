@@ -42,12 +42,12 @@ int run_demo(std::ostream& out) {
   const double tip = theory::tip_height(box.block.width, box.block.pair.mu_s);
   for (double height : {0.7 * tip, 1.3 * tip}) {
     box.push_height = height;
-    const bool predicted = theory::push_outcome(box.block.mass * standard_gravity, box.block.width, height,
-                                                box.block.pair.mu_s)
-                               .tips;
-    const bool tipped = run_pushed_box(box, settings, 10.0).tipped;
-    rows.push_back({"box pushed at " + format_number(height, 3) + " m tips (1) or slides (0)", "",
-                    predicted ? 1.0 : 0.0, tipped ? 1.0 : 0.0, 0.0});
+    const theory::PushOutcome predicted =
+        theory::push_outcome(box.block.mass * standard_gravity, box.block.width, height, box.block.pair.mu_s);
+    const PushResult seen = run_pushed_box(box, settings, 10.0);
+    const std::string at = "box pushed at " + format_number(height, 3) + " m: ";
+    rows.push_back({at + "tips (1) or slides (0)", "", predicted.tips ? 1.0 : 0.0, seen.tipped ? 1.0 : 0.0, 0.0});
+    rows.push_back({at + "push when it goes", "N", predicted.force, seen.force, 0.01 * predicted.force});
   }
 
   out << "FrictionLab: theory beside simulation (Box2D, " << settings.hz << " Hz, " << settings.velocity_iterations

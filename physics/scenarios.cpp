@@ -111,9 +111,11 @@ std::unique_ptr<Scene> make_pushed_box(const PushedBox& setup, const StepSetting
   AppliedForce push;
   push.name = "push";
   push.body = box;
-  // On the left side, push_height above the box's bottom face.
+  // On the left side, push_height above the plane the box stands on. Box2D keeps the box's
+  // face resting_gap above the ground's and its contact points midway between the two, so
+  // that plane, the one the moments are taken about, is half the gap below the face.
   push.local_point = {-0.5f * static_cast<float>(setup.block.width),
-                      static_cast<float>(setup.push_height - 0.5 * setup.block.height)};
+                      static_cast<float>(setup.push_height - 0.5 * setup.block.height - 0.5 * resting_gap)};
   push.force = [rate](double t) { return b2Vec2{static_cast<float>(rate * t), 0.0f}; };
   scene->add_applied_force(push);
   // Sliding is measured at the front bottom corner, the pivot of a box that tips: its centre
@@ -294,7 +296,7 @@ PushResult run_pushed_box(const PushedBox& setup, const StepSettings& settings, 
       // Tipping starts when the back edge stops carrying any of the weight.
       const double total = contact->point_normal_force[0] + contact->point_normal_force[1];
       const double back = std::min(contact->point_normal_force[0], contact->point_normal_force[1]);
-      const bool lifted = contact->point_count < 2 || back < 0.005 * total;
+      const bool lifted = contact->point_count < 2 || back < 0.001 * total;
       if (!lifted) return false;
       result.tipped = true;
     }

@@ -95,19 +95,23 @@ TEST(SlideToRest, DistanceWithBothTermsAndCoulombAlone) {
   EXPECT_LT(wet.measured, 0.8 * dry.measured) << "the damping terms really act";
 }
 
-TEST(PushedBox, TipsAboveHalfWidthOverMuSAndSlidesBelow) {
+TEST(PushedBox, TipsAboveHalfWidthOverMuSAndSlidesBelowAtThePredictedPush) {
+  // Below d/(2 mu_s) it slides when the push reaches mu_s·W; above, it tips when the push's
+  // moment about the front edge, F·h, reaches the weight's, W·d/2: both within 1 %.
   for (double mu_s : {0.4, 0.8}) {
     PushedBox box;
     box.block.pair = {mu_s, 0.8 * mu_s, 0.0, 0.0};
+    const double weight = box.block.mass * standard_gravity;
     const double tip = theory::tip_height(box.block.width, mu_s);
     ASSERT_LT(1.2 * tip, box.block.height) << "the push must land on the box's side";
-    box.push_height = 1.2 * tip;
-    EXPECT_TRUE(run_pushed_box(box, at_240_hz, 20.0).tipped) << "mu_s " << mu_s << " pushed high";
-    box.push_height = 0.8 * tip;
-    const PushResult low = run_pushed_box(box, at_240_hz, 20.0);
-    EXPECT_FALSE(low.tipped) << "mu_s " << mu_s << " pushed low";
-    EXPECT_NEAR(low.force, mu_s * box.block.mass * standard_gravity, 0.05 * mu_s * box.block.mass * standard_gravity)
-        << "it slides once the push passes mu_s·W";
+    for (double factor : {0.8, 1.2}) {
+      box.push_height = factor * tip;
+      const theory::PushOutcome expected = theory::push_outcome(weight, box.block.width, box.push_height, mu_s);
+      const PushResult seen = run_pushed_box(box, at_240_hz, 20.0);
+      EXPECT_EQ(seen.tipped, factor > 1.0) << "mu_s " << mu_s << ", pushed at " << factor << " × d/(2 mu_s)";
+      EXPECT_EQ(seen.tipped, expected.tips);
+      EXPECT_NEAR(seen.force, expected.force, 0.01 * expected.force) << "mu_s " << mu_s << ", factor " << factor;
+    }
   }
 }
 
