@@ -113,7 +113,7 @@ void FrictionListener::set_threshold_speed(double epsilon) {
 const ContactRecord* FrictionListener::find(const b2Body* a, const b2Body* b) const {
   // The body's own contact list: short, and in the world's order, so that of two contacts
   // between the same bodies the same one is found in every run.
-  for (const b2ContactEdge* edge = const_cast<b2Body*>(a)->GetContactList(); edge != nullptr; edge = edge->next) {
+  for (const b2ContactEdge* edge = a->GetContactList(); edge != nullptr; edge = edge->next) {
     if (edge->other != b || !edge->contact->IsTouching()) continue;
     auto found = records_.find(edge->contact);
     if (found != records_.end()) return &found->second;

@@ -135,6 +135,7 @@ StickSlipObservation observe_spring_pull(const SpringPull& setup, const StepSett
   b2Body* block = scene->body("block");
   const b2Body* ground = scene->body("ground");
   const float start = block->GetPosition().x;
+  const std::vector<double>& spring_force = scene->probe("spring_force").history;
   StickSlipObservation seen;
   ContactState last = ContactState::sticking;
   run(*scene, duration, [&] {
@@ -143,9 +144,7 @@ StickSlipObservation observe_spring_pull(const SpringPull& setup, const StepSett
     const ContactState now = contact ? contact->state : last;
     // The state changed during the step just taken; the spring force of that step is the
     // one that was acting when it did.
-    const double force = scene->probe("spring_force").history.size() >= 2
-                             ? scene->probe("spring_force").history[scene->probe("spring_force").history.size() - 2]
-                             : 0.0;
+    const double force = spring_force.size() >= 2 ? spring_force[spring_force.size() - 2] : 0.0;
     if (last == ContactState::sticking && now == ContactState::slipping) {
       seen.breakaway_times.push_back(scene->time() - scene->frame_step());
       seen.breakaway_forces.push_back(force);

@@ -12,19 +12,22 @@ namespace {
 b2Vec2 world_point(const b2Body* body, const b2Vec2& local) { return body->GetWorldPoint(local); }
 
 // What a user's function of time returns is checked before Box2D sees it: a NaN there would
-// spread through the world, and a non-finite transform makes Box2D abort.
-b2Vec2 checked(const std::string& what, b2Vec2 value, double t) {
+// spread through the world, and a non-finite transform makes Box2D abort. The description is
+// built only on failure: this runs for every spring, force and driver at every step.
+template <typename Describe>
+b2Vec2 checked(b2Vec2 value, double t, Describe describe) {
   if (!std::isfinite(value.x) || !std::isfinite(value.y) || std::abs(value.x) > 1e9f || std::abs(value.y) > 1e9f) {
     std::ostringstream message;
-    message << what << " at t = " << t << " s is (" << value.x << ", " << value.y
+    message << describe() << " at t = " << t << " s is (" << value.x << ", " << value.y
             << "); each part must be finite and within ±1e9";
     throw InvalidInput(message.str());
   }
   return value;
 }
 
-double checked(const std::string& what, double value, double t) {
-  return checked(what, b2Vec2{static_cast<float>(value), 0.0f}, t).x;
+template <typename Describe>
+double checked(double value, double t, Describe describe) {
+  return checked(b2Vec2{static_cast<float>(value), 0.0f}, t, describe).x;
 }
 
 }  // namespace
@@ -214,7 +217,7 @@ b2Vec2 Scene::spring_force(const Spring& spring) const {
   return static_cast<float>(spring.stiffness * (length - spring.rest_length)) * along;
 }
 
-double Scene::mechanical_energy(double* kinetic, double* potential, double* elastic) const {
+void Scene::mechanical_energy(double* kinetic, double* potential, double* elastic) const {
   double k = 0.0, p = 0.0, s = 0.0;
   for (const b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
     if (body->GetType() != b2_dynamicBody) continue;
@@ -232,7 +235,6 @@ double Scene::mechanical_energy(double* kinetic, double* potential, double* elas
   *kinetic = k;
   *potential = p;
   *elastic = s;
-  return k + p + s;
 }
 
 void Scene::update_ledger_state() {
@@ -297,25 +299,25 @@ void Scene::advance(double t, float h, bool move) {
   listener_.apply_contact_forces(*world_, h);
 
   for (const Driver& driver : drivers_) {
-    const std::string name = "driven body " + name_of(driver.body);
-    const b2Vec2 now = checked(name + ": position", driver.position(t), t);
-    const b2Vec2 next = checked(name + ": position", driver.position(t + h), t + h);
-    const double angle_now = driver.angle ? checked(name + ": angle", driver.angle(t), t) : 0.0;
-    const double angle_next = driver.angle ? checked(name + ": angle", driver.angle(t + h), t + h) : 0.0;
+    const auto named = [&](const char* what) { return "driven body " + name_of(driver.body) + ": " + what; };
+    const b2Vec2 now = checked(driver.position(t), t, [&] { return named("position"); });
+    const b2Vec2 next = checked(driver.position(t + h), t + h, [&] { return named("position"); });
+    const double angle_now = driver.angle ? checked(driver.angle(t), t, [&] { return named("angle"); }) : 0.0;
+    const double angle_next = driver.angle ? checked(driver.angle(t + h), t + h, [&] { return named("angle"); }) : 0.0;
     driver.body->SetTransform(now, static_cast<float>(angle_now));
     driver.body->SetLinearVelocity((1.0f / h) * (next - now));
     driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
   }
 
   for (const Spring& spring : springs_) {
-    if (!spring.other) checked("spring " + spring.name + ": hand", spring.hand(t + h), t + h);
-    const b2Vec2 force = checked("spring " + spring.name + ": force", spring_force(spring), t);
+    const b2Vec2 force = checked(spring_force(spring), t, [&] { return "spring " + spring.name + ": force"; });
     spring.body->ApplyForce(force, world_point(spring.body, spring.local_point), true);
     if (spring.other) {
       spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
-    } else if (move) {
+    } else {
+      const b2Vec2 next = checked(spring.hand(t + h), t + h, [&] { return "spring " + spring.name + ": hand"; });
       // The hand does work on the spring as it moves its end.
-      ledger_.work_applied += b2Dot(force, spring.hand(t + h) - spring.hand(t));
+      if (move) ledger_.work_applied += b2Dot(force, next - hand_position(spring));
     }
   }
 
@@ -329,7 +331,7 @@ void Scene::advance(double t, float h, bool move) {
   pending.reserve(applied_.size());
   for (const AppliedForce& applied : applied_) {
     const b2Vec2 point = world_point(applied.body, applied.local_point);
-    const b2Vec2 force = checked("applied force " + applied.name, applied.force(t), t);
+    const b2Vec2 force = checked(applied.force(t), t, [&] { return "applied force " + applied.name; });
     applied.body->ApplyForce(force, point, true);
     pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
   }

@@ -141,7 +141,7 @@ class Scene {
   void check_new_name(const std::string& name) const;
   std::string name_of(const b2Body* body) const;
   void check_placement(const std::string& name, b2Vec2 position, float angle) const;
-  double mechanical_energy(double* kinetic, double* potential, double* elastic) const;
+  void mechanical_energy(double* kinetic, double* potential, double* elastic) const;
   void update_ledger_state();
 
   PairTable pairs_;
