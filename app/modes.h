@@ -10,5 +10,8 @@ namespace frictionlab {
 
 int run_demo(std::ostream& out);
 int run_bench(const std::vector<std::string>& args, std::ostream& out);
+int run_list(const std::vector<std::string>& args, std::ostream& out);
+int run_lesson(const std::vector<std::string>& args, std::ostream& out);   // frictionlab run
+int run_check(const std::vector<std::string>& args, std::ostream& out);
 
 }  // namespace frictionlab

@@ -73,10 +73,15 @@ int PairTable::add_material(const Material& material) {
   return material_count() - 1;
 }
 
-int PairTable::material_id(std::string_view name) const {
+int PairTable::find_material(std::string_view name) const {
   for (int id = 0; id < material_count(); ++id) {
     if (materials_[id].name == name) return id;
   }
+  return -1;
+}
+
+int PairTable::material_id(std::string_view name) const {
+  if (const int id = find_material(name); id >= 0) return id;
   std::string message = "unknown material '" + std::string(name) + "'; known materials:";
   for (const Material& known : materials_) message += " " + known.name;
   throw InvalidInput(message);

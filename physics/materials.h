@@ -43,6 +43,8 @@ class PairTable {
   int add_material(const Material& material);
   // Throws InvalidInput naming the unknown material and listing the known ones.
   int material_id(std::string_view name) const;
+  // -1 when there is no such material.
+  int find_material(std::string_view name) const;
   const Material& material(int id) const { return materials_.at(id); }
   int material_count() const { return static_cast<int>(materials_.size()); }
 

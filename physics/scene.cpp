@@ -87,27 +87,30 @@ b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
   return created;
 }
 
-int Scene::check_material(const std::string& material) const {
+int Scene::check_material(const std::string& material, b2BodyType type) const {
   const int id = pairs_.material_id(material);
-  for (int other : materials_in_use_) {
-    if (!pairs_.has_pair(id, other)) {
-      throw InvalidInput("no friction values for the pair " + material + "–" + pairs_.material(other).name +
-                         ", and both are in the scene; set them before adding the body");
+  // Box2D only makes contacts where at least one body is dynamic: a floor and a fixed wedge
+  // of different materials need no pair values between them.
+  for (const MaterialUse& other : materials_in_use_) {
+    if ((type == b2_dynamicBody || other.on_dynamic) && !pairs_.has_pair(id, other.id)) {
+      throw InvalidInput("no friction values for the pair " + material + "–" + pairs_.material(other.id).name +
+                         ", and both are in the scene where they can touch; set them before adding the body");
     }
   }
   return id;
 }
 
 b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::string& material) {
-  const int id = check_material(material);
+  const int id = check_material(material, body->GetType());
   b2FixtureDef definition;
   definition.shape = &shape;
   definition.density = static_cast<float>(pairs_.material(id).density);
   definition.friction = 0.0f;  // the listener sets every contact's coefficient
   definition.userData.pointer = static_cast<uintptr_t>(id + 1);
-  if (std::find(materials_in_use_.begin(), materials_in_use_.end(), id) == materials_in_use_.end()) {
-    materials_in_use_.push_back(id);
-  }
+  auto use = std::find_if(materials_in_use_.begin(), materials_in_use_.end(),
+                          [id](const MaterialUse& in_use) { return in_use.id == id; });
+  if (use == materials_in_use_.end()) use = materials_in_use_.insert(materials_in_use_.end(), {id, false});
+  use->on_dynamic = use->on_dynamic || body->GetType() == b2_dynamicBody;
   return body->CreateFixture(&definition);
 }
 
@@ -119,7 +122,7 @@ b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::stri
   // Everything is checked before the body exists, so a refused box leaves nothing behind.
   check_new_name(name);
   check_placement(name, center, angle);
-  check_material(material);
+  check_material(material, type);
   b2BodyDef definition;
   definition.type = type;
   definition.position = center;

@@ -90,8 +90,9 @@ class Scene {
   const StepSettings& settings() const { return settings_; }
   double frame_step() const { return 1.0 / settings_.hz; }
 
-  // Bodies. Every fixture names its material; a material with no pair value for any material
-  // already in the scene is rejected here, not mid-step.
+  // Bodies. Every fixture names its material; a material with no pair value for a material
+  // already in the scene that it could touch (one of the two on a dynamic body) is rejected
+  // here, not mid-step. Give a body its type before its fixtures.
   b2Body* add_body(const std::string& name, const b2BodyDef& definition);
   b2Fixture* add_fixture(b2Body* body, const b2Shape& shape, const std::string& material);
   // A box of the given size (m), centre and angle (rad): a convenience over the two above.
@@ -137,7 +138,7 @@ class Scene {
   // velocities Box2D's integrator needs.
   void start(float h);
   // The material's id, once it has friction values with every material already in the scene.
-  int check_material(const std::string& material) const;
+  int check_material(const std::string& material, b2BodyType type) const;
   void check_new_name(const std::string& name) const;
   std::string name_of(const b2Body* body) const;
   void check_placement(const std::string& name, b2Vec2 position, float angle) const;
@@ -155,7 +156,11 @@ class Scene {
   std::vector<Driver> drivers_;
   std::vector<Probe> probes_;
   std::vector<double> times_;
-  std::vector<int> materials_in_use_;
+  struct MaterialUse {
+    int id;
+    bool on_dynamic;  // some dynamic body is made of it
+  };
+  std::vector<MaterialUse> materials_in_use_;
   double time_ = 0.0;
   long frame_ = 0;
   bool ledger_started_ = false;

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 build_dir="${1:-build}"
 shift || true
 
-packages=(build-essential cmake libbox2d-dev libgtest-dev)
+packages=(build-essential cmake libbox2d-dev libgtest-dev liblua5.4-dev)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,215 @@
+// frictionlab list | run | check: lessons headless, as a test suite or a teacher without a
+// window uses them.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "app/modes.h"
+#include "app/table.h"
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/lesson.h"
+#include "physics/validation.h"
+
+namespace frictionlab {
+namespace {
+
+using lessons::Lesson;
+
+struct RunOptions {
+  std::string lesson;
+  std::optional<double> duration;
+  StepSettings settings;
+  std::map<std::string, std::string> overrides;
+  std::string csv;
+};
+
+double option_number(const std::string& option, const std::string& text, double low, double high, bool low_open,
+                     const char* unit) {
+  std::size_t used = 0;
+  double value = NAN;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) throw InvalidInput(option + " " + text + ": not a number");
+  validation::require_in_range(option, value, low, high, low_open, unit);
+  return value;
+}
+
+RunOptions parse_run(const std::vector<std::string>& args) {
+  RunOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      if (!options.lesson.empty()) throw InvalidInput("run takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
+      options.lesson = arg;
+      continue;
+    }
+    if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
+    const std::string& value = args[++i];
+    if (arg == "--duration") {
+      options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
+    } else if (arg == "--hz") {
+      options.settings.hz = option_number(arg, value, 1.0, 100000.0, false, " steps per second");
+    } else if (arg == "--substeps") {
+      options.settings.substeps = static_cast<int>(option_number(arg, value, 1.0, 1000.0, false, ""));
+      if (std::to_string(options.settings.substeps) != value) throw InvalidInput("--substeps " + value + ": a whole number from 1 to 1000");
+    } else if (arg == "--friction") {
+      options.settings.treatment = parse_treatment(value);
+    } else if (arg == "--set") {
+      const std::size_t equals = value.find('=');
+      if (equals == std::string::npos || equals == 0) throw InvalidInput("--set " + value + ": write it as NAME=VALUE, as in --set mu_s=0.5");
+      options.overrides[value.substr(0, equals)] = value.substr(equals + 1);
+    } else if (arg == "--csv") {
+      options.csv = value;
+    } else {
+      throw InvalidInput("run: unknown option '" + arg +
+                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE");
+    }
+  }
+  if (options.lesson.empty()) throw InvalidInput("run needs a lesson: frictionlab run LESSON; see frictionlab list");
+  return options;
+}
+
+// One CSV row per step, written to FILE.partial and renamed when the run is over, so a run
+// that fails leaves no half file behind.
+class CsvLog {
+ public:
+  CsvLog(const std::string& path, const std::string& script) : path_(path), partial_(path + ".partial") {
+    namespace fs = std::filesystem;
+    std::error_code same;
+    if (fs::path(path).extension() == ".lua" || fs::equivalent(path, script, same)) {
+      throw InvalidInput("--csv " + path + ": that looks like a lesson script; give a .csv file so no script is overwritten");
+    }
+    file_.open(partial_, std::ios::binary);
+    if (!file_) throw InvalidInput("--csv " + path + ": cannot write there: " + std::strerror(errno));
+    file_.precision(9);
+  }
+  ~CsvLog() {
+    if (!done_) {
+      file_.close();
+      std::remove(partial_.c_str());
+    }
+  }
+  void header(const Scene& scene) {
+    file_ << "t";
+    for (const auto& [name, body] : scene.bodies()) {
+      for (const char* part : {"x", "y", "angle", "vx", "vy", "omega"}) file_ << ',' << name << '.' << part;
+    }
+    for (const Probe& probe : scene.probes()) file_ << ',' << probe.name;
+    file_ << '\n';
+  }
+  void row(const Scene& scene) {
+    file_ << scene.time();
+    for (const auto& [name, body] : scene.bodies()) {
+      const b2Vec2 p = body->GetPosition(), v = body->GetLinearVelocity();
+      file_ << ',' << p.x << ',' << p.y << ',' << body->GetAngle() << ',' << v.x << ',' << v.y << ','
+            << body->GetAngularVelocity();
+    }
+    for (const Probe& probe : scene.probes()) file_ << ',' << probe.history.back();
+    file_ << '\n';
+  }
+  void finish() {
+    file_.close();
+    if (!file_ || std::rename(partial_.c_str(), path_.c_str()) != 0) {
+      throw InvalidInput("--csv " + path_ + ": could not finish writing: " + std::strerror(errno));
+    }
+    done_ = true;
+  }
+
+ private:
+  std::string path_, partial_;
+  std::ofstream file_;
+  bool done_ = false;
+};
+
+// Runs the lesson for `duration` and prints its expectations; returns how many failed.
+int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
+  if (csv) csv->header(lesson.scene());
+  const double h = lesson.scene().frame_step();
+  while (lesson.scene().time() < duration - 0.5 * h) {
+    lesson.step();
+    if (csv) csv->row(lesson.scene());
+  }
+  for (const std::string& warning : lesson.warnings()) out << "warning: " << warning << '\n';
+  std::vector<std::vector<std::string>> table{{"expectation", "unit", "predicted", "measured", "error", "tolerance", "pass"}};
+  int failed = 0;
+  for (const lessons::ExpectationResult& row : lesson.expectations()) {
+    if (row.numeric) {
+      table.push_back({row.name, row.unit, format_number(row.predicted),
+                       row.measured_yet ? format_number(row.measured) : row.measured_text,
+                       row.measured_yet ? format_number(row.error(), 2) : "", format_number(row.tolerance, 2),
+                       row.passes ? "yes" : "NO"});
+    } else {
+      table.push_back({row.name, "", row.predicted_text, row.measured_text, "", "", row.passes ? "yes" : "NO"});
+    }
+    if (!row.passes) ++failed;
+  }
+  print_table(out, table);
+  const std::size_t total = table.size() - 1;
+  out << total - static_cast<std::size_t>(failed) << " of " << total << " expectations met after "
+      << format_number(lesson.scene().time()) << " s at " << format_number(lesson.settings().hz) << " Hz ("
+      << treatment_name(lesson.settings().treatment) << ")\n";
+  return failed;
+}
+
+void print_heading(const Lesson& lesson, std::ostream& out) {
+  out << lesson.title() << "\n" << lesson.question() << "\n";
+  std::string values;
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    values += (values.empty() ? "" : ", ") + parameter.name + " = " + parameter.shown();
+  }
+  out << "  " << values << "\n\n";
+}
+
+}  // namespace
+
+int run_list(const std::vector<std::string>& args, std::ostream& out) {
+  if (!args.empty()) throw InvalidInput("list takes no options, got '" + args[0] + "'");
+  std::vector<std::vector<std::string>> table{{"lesson", "title"}};
+  for (const std::string& name : lessons::builtin_lessons()) {
+    Lesson lesson(lessons::resolve_lesson(name));
+    table.push_back({name, lesson.title()});
+  }
+  print_table(out, table);
+  out << "Scripts are in " << lessons::lessons_directory() << "; run one with: frictionlab run LESSON\n";
+  return 0;
+}
+
+int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
+  const RunOptions options = parse_run(args);
+  Lesson lesson(lessons::resolve_lesson(options.lesson), options.overrides, options.settings);
+  std::optional<CsvLog> csv;
+  if (!options.csv.empty()) csv.emplace(options.csv, lesson.path());
+  print_heading(lesson, out);
+  run_and_report(lesson, options.duration.value_or(lesson.duration()), csv ? &*csv : nullptr, out);
+  if (csv) csv->finish();
+  return 0;
+}
+
+int run_check(const std::vector<std::string>& args, std::ostream& out) {
+  std::vector<std::string> names = args;
+  for (const std::string& name : names) {
+    if (name.rfind("--", 0) == 0) throw InvalidInput("check takes lessons only, got the option '" + name + "'");
+  }
+  if (names.empty()) names = lessons::builtin_lessons();
+  int failed_lessons = 0;
+  for (const std::string& name : names) {
+    Lesson lesson(lessons::resolve_lesson(name));
+    out << "== " << name << ": ";
+    print_heading(lesson, out);
+    if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
+    out << '\n';
+  }
+  out << (failed_lessons == 0 ? "every lesson meets its expectations\n"
+                              : std::to_string(failed_lessons) + " lesson(s) missed an expectation\n");
+  return failed_lessons == 0 ? 0 : 1;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,75 @@
+-- incline: a block released at rest on a slope.
+-- The friction-situations article: the block stays put while tan(angle) <= mu_s, whatever its
+-- mass; on a steeper slope it slides and speeds up at g·(sin θ − mu_k·cos θ), less with drag.
+
+lesson {
+  title = "A block on an incline",
+  question = "How steep can the slope be before the block slides, and how fast does it then speed up?",
+  duration = 1,
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local angle = parameter { "angle", 35, min = 2, max = 60, unit = "°", text = "slope angle" }
+local mass = parameter { "mass", 1.0, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }
+
+material { "block", density = 500, note = "the mass is set on the block itself" }
+material { "slope", density = 500, note = "fixed, so its density plays no part" }
+pair { "block", "slope", mu_s = 0.6, mu_k = 0.4, c = 0 }
+
+-- World -----------------------------------------------------------------------------------
+ground { material = "slope" }
+local slope = incline { "slope", material = "slope", angle = angle, length = 6 }
+-- 5.5 m up: even at 60° with no friction it stays on the slope for the whole second.
+local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 5.5, mass = mass }
+
+-- Downhill is back along the slope towards its foot.
+local radians = math.rad(angle)
+local downhill_x, downhill_y = -math.cos(radians), -math.sin(radians)
+local start_x, start_y = block.x, block.y
+
+-- Probes and plots ------------------------------------------------------------------------
+probe { "distance", unit = "m", function()
+  return (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
+end }
+probe { "speed", unit = "m/s", function() return block.vx * downhill_x + block.vy * downhill_y end }
+probe { "friction_force", unit = "N", function() return contact(block, slope).friction end }
+probe { "normal_force", unit = "N", function() return contact(block, slope).normal end }
+
+plot { "Motion down the slope", y = { "distance", "speed" } }
+plot { "Forces from the slope", y = { "friction_force", "normal_force" } }
+
+-- Speeds at a quarter of the run and at its end give the mean acceleration between them.
+local early_time, late_time = 0.25, 1
+local early_speed, late_speed
+every_step(function(t)
+  local speed = block.vx * downhill_x + block.vy * downhill_y
+  if math.abs(t - early_time) < 0.5 * step_length() then early_speed = speed end
+  late_speed = speed
+end)
+
+-- Expectations ----------------------------------------------------------------------------
+local function slides() return angle > theory.sticking_angle { mu_s = param.mu_s } end
+
+expect { "sticks or slides",
+  predicted = function() return slides() and "slides" or "sticks" end,
+  measured = function()
+    local distance = (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
+    return distance > 0.001 and "slides" or "sticks"
+  end }
+
+-- Mean acceleration between the two times, from the exact speeds (exact with drag c too).
+local function predicted_acceleration()
+  if not slides() then return 0 end
+  local function speed(t)
+    return theory.incline_motion { angle = angle, mu_k = param.mu_k, c = param.c, mass = mass, t = t }.speed
+  end
+  return (speed(late_time) - speed(early_time)) / (late_time - early_time)
+end
+
+expect { "mean acceleration down the slope", unit = "m/s²",
+  predicted = predicted_acceleration,
+  measured = function()
+    if early_speed == nil or time() < late_time - 0.5 * step_length() then return nil end
+    return (late_speed - early_speed) / (late_time - early_time)
+  end,
+  tolerance = function() return math.max(0.01 * math.abs(predicted_acceleration()), 0.01) end }

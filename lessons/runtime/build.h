@@ -1,0 +1,120 @@
+// Inside the runtime: one run of a lesson script and the state its API functions fill in.
+// Not for use outside lessons/runtime/.
+#pragma once
+
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::lessons {
+
+struct ProbeInfo {
+  std::string name;
+  std::string unit;
+};
+
+// Each part is a Lua value kept in the registry: a constant or a function to call.
+struct Expectation {
+  std::string name;
+  std::string unit;
+  std::string declared_at;
+  int predicted = LUA_NOREF;
+  int measured = LUA_NOREF;
+  int tolerance = LUA_NOREF;
+};
+
+struct LessonBuild {
+  LessonBuild(std::string chunk_name, const std::map<std::string, std::string>& overrides, StepSettings settings);
+
+  Sandbox sandbox;
+  std::string chunk_name;
+  const std::map<std::string, std::string>& overrides;
+  StepSettings settings;
+  std::unique_ptr<Scene> scene;
+  PairTable presets;
+
+  std::string title, question;
+  double duration = 10.0;
+  int duration_function = LUA_NOREF;
+  std::vector<Parameter> parameters;
+  std::string override_error;  // the first bad --set value, reported after the build
+  std::vector<std::string> warnings;
+  std::vector<Plot> plots;
+  std::vector<ProbeInfo> probes;
+  std::vector<Expectation> expectations;
+  std::vector<int> every_step;
+  std::vector<Rope> ropes;
+  bool building = true;
+
+  Parameter* find_parameter(const std::string& name);
+  std::string parameter_names() const;
+  // Makes a preset material (and its preset pairs with materials already here) available the
+  // first time a script names it. Unknown names are left for the scene to report.
+  void use_material(const std::string& name);
+
+  // Calls the Lua function kept at `reference` with numeric arguments, under the sandbox's
+  // budgets; its `results` values are left on the stack for the caller to read and pop.
+  void call(int reference, std::initializer_list<double> arguments, int results);
+  // "path:line" of a kept function's definition, for errors about what it returned.
+  std::string defined_at(int reference);
+  // Reads the `count` numbers a kept function returned (on the stack top) and pops them;
+  // throws ScriptError placed at the function's definition when they are not finite numbers.
+  std::vector<double> numbers_returned(int reference, int count, const std::string& what);
+  // Pushes the value kept at `reference`, calling it first when it is a function.
+  void push_value(int reference);
+};
+
+LessonBuild& build_of(lua_State* state);
+
+// "path:line" of the script line that called the running API function.
+std::string caller(lua_State* state);
+
+// A table argument such as box{ "block", width = 0.4 }: typed reads whose errors name the
+// call, the field and what was expected. Unknown fields are refused, so a typo such as
+// `widht` is reported instead of silently ignored.
+class Fields {
+ public:
+  Fields(lua_State* state, int index, std::string call, std::initializer_list<const char*> known);
+  // The name in the first position, when the call takes one; it then names the thing in errors.
+  std::string name();
+  const std::string& what() const { return what_; }
+
+  bool has(const char* key);
+  double number(const char* key, const char* unit);
+  double number(const char* key, const char* unit, double fallback);
+  double number_in(const char* key, const char* unit, double fallback, double low, double high,
+                   bool low_open = false);
+  std::string text(const char* key, const std::string& fallback);
+  std::optional<bool> flag(const char* key);
+  b2Vec2 point(const char* key, b2Vec2 fallback);
+  // Pushes the field's value when it is a function and returns true; false when absent.
+  bool push_function(const char* key);
+  // Pushes the field's value, whatever it is (nil when absent).
+  void push(const char* key);
+
+ private:
+  [[noreturn]] void wrong(const char* key, const std::string& expected, int value_index);
+
+  lua_State* state_;
+  int index_;
+  std::string call_;
+  std::string what_;
+};
+
+// Reads a parameter's value from text: a number within its range, or one of its choices.
+// Throws InvalidInput naming the parameter and the range or the choices.
+double parse_parameter_value(const Parameter& parameter, const std::string& text);
+
+void register_lesson_api(lua_State* state);
+void register_world_api(lua_State* state);
+void register_theory_api(lua_State* state);
+
+// Reads a body handle (what box{}, ground{} and the others return); throws naming `what`.
+b2Body* body_argument(lua_State* state, int index, const std::string& what);
+
+}  // namespace frictionlab::lessons

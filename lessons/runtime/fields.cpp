@@ -1,0 +1,137 @@
+// Reading a script's table arguments with errors a student can act on.
+#include <cmath>
+
+#include "lessons/runtime/build.h"
+#include "physics/validation.h"
+
+namespace frictionlab::lessons {
+
+std::string caller(lua_State* state) {
+  lua_Debug debug;
+  if (lua_getstack(state, 1, &debug) && lua_getinfo(state, "Sl", &debug) && debug.currentline > 0) {
+    return std::string(debug.short_src) + ":" + std::to_string(debug.currentline);
+  }
+  return build_of(state).chunk_name;
+}
+
+Fields::Fields(lua_State* state, int index, std::string call, std::initializer_list<const char*> known)
+    : state_(state), index_(lua_absindex(state, index)), call_(std::move(call)), what_(call_) {
+  if (!lua_istable(state_, index_)) {
+    throw InvalidInput(call_ + " takes a table, as in " + call_ + "{ ... }; got " + describe(state_, index_));
+  }
+  // Refuse fields the call does not know, listing the ones it does.
+  lua_pushnil(state_);
+  while (lua_next(state_, index_) != 0) {
+    lua_pop(state_, 1);
+    if (lua_type(state_, -1) == LUA_TSTRING) {
+      const std::string key = lua_tostring(state_, -1);
+      bool found = false;
+      for (const char* name : known) found = found || key == name;
+      if (!found) {
+        std::string list;
+        for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
+        lua_pop(state_, 1);
+        throw InvalidInput(call_ + ": unknown field '" + key + "'; it takes " + list);
+      }
+    }
+  }
+}
+
+std::string Fields::name() {
+  lua_rawgeti(state_, index_, 1);
+  if (lua_type(state_, -1) != LUA_TSTRING || lua_rawlen(state_, -1) == 0) {
+    const std::string got = describe(state_, -1);
+    lua_pop(state_, 1);
+    throw InvalidInput(call_ + " needs a name first, as in " + call_ + "{ \"name\", ... }; got " + got);
+  }
+  std::string name = lua_tostring(state_, -1);
+  lua_pop(state_, 1);
+  what_ = call_ + " '" + name + "'";
+  return name;
+}
+
+void Fields::wrong(const char* key, const std::string& expected, int value_index) {
+  const std::string got = describe(state_, value_index);
+  throw InvalidInput(what_ + ": " + key + " must be " + expected + ", got " + got);
+}
+
+bool Fields::has(const char* key) {
+  lua_getfield(state_, index_, key);
+  const bool present = !lua_isnil(state_, -1);
+  lua_pop(state_, 1);
+  return present;
+}
+
+double Fields::number(const char* key, const char* unit) {
+  lua_getfield(state_, index_, key);
+  if (lua_type(state_, -1) != LUA_TNUMBER) wrong(key, std::string("a number") + (*unit ? " (" : "") + unit + (*unit ? ")" : ""), -1);
+  const double value = lua_tonumber(state_, -1);
+  lua_pop(state_, 1);
+  if (!std::isfinite(value)) throw InvalidInput(what_ + ": " + key + " must be finite");
+  return value;
+}
+
+double Fields::number(const char* key, const char* unit, double fallback) {
+  return has(key) ? number(key, unit) : fallback;
+}
+
+double Fields::number_in(const char* key, const char* unit, double fallback, double low, double high,
+                         bool low_open) {
+  const double value = number(key, unit, fallback);
+  const std::string spaced = *unit ? std::string(" ") + unit : "";
+  validation::require_in_range(what_ + ": " + key, value, low, high, low_open, spaced.c_str());
+  return value;
+}
+
+std::string Fields::text(const char* key, const std::string& fallback) {
+  lua_getfield(state_, index_, key);
+  if (lua_isnil(state_, -1)) {
+    lua_pop(state_, 1);
+    return fallback;
+  }
+  if (lua_type(state_, -1) != LUA_TSTRING) wrong(key, "text in quotes", -1);
+  std::string value = lua_tostring(state_, -1);
+  lua_pop(state_, 1);
+  return value;
+}
+
+std::optional<bool> Fields::flag(const char* key) {
+  lua_getfield(state_, index_, key);
+  std::optional<bool> value;
+  if (lua_type(state_, -1) == LUA_TBOOLEAN) {
+    value = lua_toboolean(state_, -1) != 0;
+  } else if (!lua_isnil(state_, -1)) {
+    wrong(key, "true or false", -1);
+  }
+  lua_pop(state_, 1);
+  return value;
+}
+
+b2Vec2 Fields::point(const char* key, b2Vec2 fallback) {
+  lua_getfield(state_, index_, key);
+  if (lua_isnil(state_, -1)) {
+    lua_pop(state_, 1);
+    return fallback;
+  }
+  const std::string expected = "a pair of numbers such as {0.5, 0} (m)";
+  if (!lua_istable(state_, -1)) wrong(key, expected, -1);
+  double xy[2];
+  for (int i = 0; i < 2; ++i) {
+    lua_rawgeti(state_, -1 - i, i + 1);
+    if (lua_type(state_, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(state_, -1))) wrong(key, expected, -1);
+    xy[i] = lua_tonumber(state_, -1);
+  }
+  lua_pop(state_, 3);
+  return {static_cast<float>(xy[0]), static_cast<float>(xy[1])};
+}
+
+bool Fields::push_function(const char* key) {
+  lua_getfield(state_, index_, key);
+  if (lua_isfunction(state_, -1)) return true;
+  lua_pop(state_, 1);
+  return false;
+}
+
+void Fields::push(const char* key) { lua_getfield(state_, index_, key); }
+
+}  // namespace frictionlab::lessons

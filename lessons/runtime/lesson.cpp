@@ -1,0 +1,332 @@
+#include "lessons/runtime/lesson.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "lessons/runtime/build.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+// The registry slot that leads from a Lua state back to its build.
+const char build_key = 0;
+
+std::string format_value(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+}  // namespace
+
+std::string Parameter::shown() const {
+  if (is_choice()) return choices[static_cast<size_t>(value)];
+  return format_value(value) + (unit.empty() ? "" : " " + unit);
+}
+
+LessonBuild& build_of(lua_State* state) {
+  lua_rawgetp(state, LUA_REGISTRYINDEX, &build_key);
+  auto* build = static_cast<LessonBuild*>(lua_touserdata(state, -1));
+  lua_pop(state, 1);
+  return *build;
+}
+
+LessonBuild::LessonBuild(std::string chunk, const std::map<std::string, std::string>& given, StepSettings step)
+    : chunk_name(std::move(chunk)), overrides(given), settings(step), presets(preset_table()) {
+  scene = std::make_unique<Scene>(PairTable{}, settings);
+  lua_State* state = sandbox.state();
+  lua_pushlightuserdata(state, this);
+  lua_rawsetp(state, LUA_REGISTRYINDEX, &build_key);
+  register_lesson_api(state);
+  register_world_api(state);
+  register_theory_api(state);
+}
+
+Parameter* LessonBuild::find_parameter(const std::string& name) {
+  for (Parameter& parameter : parameters) {
+    if (parameter.name == name) return &parameter;
+  }
+  return nullptr;
+}
+
+std::string LessonBuild::parameter_names() const {
+  std::string names;
+  for (const Parameter& parameter : parameters) names += (names.empty() ? "" : ", ") + parameter.name;
+  return names.empty() ? "(none)" : names;
+}
+
+void LessonBuild::use_material(const std::string& name) {
+  PairTable& table = scene->pairs();
+  const int preset = presets.find_material(name);
+  if (table.find_material(name) >= 0 || preset < 0) return;
+  table.add_material(presets.material(preset));
+  for (int id = 0; id < table.material_count(); ++id) {
+    const int other = presets.find_material(table.material(id).name);
+    if (other >= 0 && presets.has_pair(preset, other)) table.set_pair(name, table.material(id).name, presets.pair(preset, other));
+  }
+}
+
+void LessonBuild::call(int reference, std::initializer_list<double> arguments, int results) {
+  lua_State* state = sandbox.state();
+  lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
+  for (const double argument : arguments) lua_pushnumber(state, argument);
+  sandbox.call(static_cast<int>(arguments.size()), results);
+}
+
+void LessonBuild::push_value(int reference) {
+  lua_State* state = sandbox.state();
+  lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
+  if (lua_isfunction(state, -1)) sandbox.call(0, 1);
+}
+
+std::string LessonBuild::defined_at(int reference) {
+  lua_State* state = sandbox.state();
+  lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
+  lua_Debug debug;
+  lua_getinfo(state, ">S", &debug);
+  return std::string(debug.short_src) + ":" + std::to_string(debug.linedefined);
+}
+
+std::vector<double> LessonBuild::numbers_returned(int reference, int count, const std::string& what) {
+  lua_State* state = sandbox.state();
+  std::vector<double> numbers;
+  std::string problem;
+  for (int i = 0; i < count; ++i) {
+    const int index = -count + i;
+    if (lua_type(state, index) != LUA_TNUMBER || !std::isfinite(lua_tonumber(state, index))) {
+      if (problem.empty()) problem = describe(state, index);
+      numbers.push_back(NAN);
+    } else {
+      numbers.push_back(lua_tonumber(state, index));
+    }
+  }
+  lua_pop(state, count);
+  if (!problem.empty()) {
+    const std::string expected = count == 1 ? "a finite number" : std::to_string(count) + " finite numbers";
+    throw ScriptError(defined_at(reference) + ": " + what + " returned " + problem + " at t = " +
+                      format_value(scene->time()) + " s; it must return " + expected);
+  }
+  return numbers;
+}
+
+std::string read_script(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InvalidInput("cannot read the lesson script " + path + ": " + std::strerror(errno));
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw InvalidInput("cannot read the lesson script " + path);
+  return text.str();
+}
+
+Lesson::Lesson(std::string path, std::map<std::string, std::string> overrides, StepSettings settings)
+    : path_(std::move(path)), overrides_(std::move(overrides)), settings_(settings) {
+  validate(settings_);
+  std::string source = read_script(path_);
+  auto first = build(source, true);
+  replace(std::move(first), std::move(source));
+}
+
+Lesson::~Lesson() = default;
+
+std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool strict) {
+  auto next = std::make_unique<LessonBuild>(path_, overrides_, settings_);
+  next->sandbox.load(source, path_);
+  next->sandbox.call(0, 0);
+  next->building = false;
+  if (!next->override_error.empty()) throw InvalidInput("--set " + next->override_error);
+  for (auto given = overrides_.begin(); given != overrides_.end();) {
+    if (next->find_parameter(given->first) != nullptr) {
+      ++given;
+    } else if (strict) {
+      throw InvalidInput("--set " + given->first + ": " + path_ + " has no parameter of that name; its parameters: " +
+                         next->parameter_names());
+    } else {
+      given = overrides_.erase(given);
+    }
+  }
+  if (next->title.empty()) {
+    throw ScriptError(path_ + ": the script never says what it is; begin it with lesson{ title = \"...\", question = "
+                      "\"...\" }");
+  }
+  for (const Plot& plot : next->plots) {
+    std::vector<std::string> names = plot.y;
+    if (plot.x != "time") names.push_back(plot.x);
+    for (const std::string& name : names) {
+      bool known = false;
+      std::string probes;
+      for (const ProbeInfo& probe : next->probes) {
+        known = known || probe.name == name;
+        probes += " " + probe.name;
+      }
+      if (!known) {
+        throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': no probe is named '" + name +
+                          "'; probes:" + (probes.empty() ? " (none)" : probes) + ", and x may also be \"time\"");
+      }
+    }
+  }
+  return next;
+}
+
+void Lesson::replace(std::unique_ptr<LessonBuild> next, std::string source) {
+  current_ = std::move(next);
+  source_ = std::move(source);
+  failed_ = false;
+  last_error_.clear();
+}
+
+const std::string& Lesson::title() const { return current_->title; }
+const std::string& Lesson::question() const { return current_->question; }
+double Lesson::duration() const {
+  LessonBuild& build = *current_;
+  if (build.duration_function == LUA_NOREF) return build.duration;
+  build.call(build.duration_function, {}, 1);
+  const double seconds = build.numbers_returned(build.duration_function, 1, "lesson's duration function")[0];
+  if (!(seconds > 0.0 && seconds <= 86400.0)) {
+    throw ScriptError(build.defined_at(build.duration_function) + ": the lesson's duration function gave " +
+                      format_value(seconds) + " s; it must be in (0, 86400]");
+  }
+  return seconds;
+}
+Scene& Lesson::scene() { return *current_->scene; }
+const Scene& Lesson::scene() const { return *current_->scene; }
+const std::vector<Parameter>& Lesson::parameters() const { return current_->parameters; }
+const std::vector<Plot>& Lesson::plots() const { return current_->plots; }
+const std::vector<Rope>& Lesson::ropes() const { return current_->ropes; }
+double Lesson::seconds_in_script() const { return std::chrono::duration<double>(current_->sandbox.time_in_lua()).count(); }
+const std::vector<std::string>& Lesson::warnings() const { return current_->warnings; }
+
+const Parameter& Lesson::parameter(const std::string& name) const {
+  if (Parameter* found = current_->find_parameter(name)) return *found;
+  throw InvalidInput("no parameter '" + name + "' in " + path_ + "; its parameters: " + current_->parameter_names());
+}
+
+const std::string& Lesson::probe_unit(const std::string& probe) const {
+  for (const ProbeInfo& info : current_->probes) {
+    if (info.name == probe) return info.unit;
+  }
+  throw InvalidInput("no probe '" + probe + "' in " + path_);
+}
+
+void Lesson::step() {
+  if (failed_) return;
+  try {
+    current_->scene->step();
+    for (const int reference : current_->every_step) current_->call(reference, {current_->scene->time()}, 0);
+  } catch (const ScriptError& error) {
+    failed_ = true;
+    last_error_ = error.what();
+    throw;
+  } catch (const InvalidInput& error) {
+    // The scene refused what a script function gave it (a hand at infinity, say).
+    failed_ = true;
+    last_error_ = path_ + ": " + error.what();
+    throw ScriptError(last_error_);
+  }
+}
+
+std::vector<ExpectationResult> Lesson::expectations() {
+  LessonBuild& build = *current_;
+  lua_State* state = build.sandbox.state();
+  std::vector<ExpectationResult> rows;
+  for (const Expectation& expectation : build.expectations) {
+    ExpectationResult row;
+    row.name = expectation.name;
+    row.unit = expectation.unit;
+    const std::string where = expectation.declared_at + ": expect '" + expectation.name + "': ";
+    build.push_value(expectation.predicted);
+    row.numeric = lua_type(state, -1) == LUA_TNUMBER;
+    if (row.numeric) {
+      row.predicted = lua_tonumber(state, -1);
+    } else if (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN) {
+      row.predicted_text = luaL_tolstring(state, -1, nullptr);
+      lua_pop(state, 1);
+    } else {
+      const std::string got = describe(state, -1);
+      lua_pop(state, 1);
+      throw ScriptError(where + "predicted gave " + got + "; it must be a number, a word such as \"slides\", or true/false");
+    }
+    lua_pop(state, 1);
+    build.push_value(expectation.measured);
+    row.measured_yet = !lua_isnil(state, -1);
+    if (!row.measured_yet) {
+      row.measured_text = "not measured";
+    } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
+      row.measured = lua_tonumber(state, -1);
+    } else if (!row.numeric && (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN)) {
+      row.measured_text = luaL_tolstring(state, -1, nullptr);
+      lua_pop(state, 1);
+    } else {
+      const std::string got = describe(state, -1);
+      lua_pop(state, 1);
+      throw ScriptError(where + "measured gave " + got + " but predicted gave " +
+                        (row.numeric ? "a number" : "a word") + "; they must be alike (or nil: not measured yet)");
+    }
+    lua_pop(state, 1);
+    if (row.numeric) {
+      build.push_value(expectation.tolerance);
+      if (lua_type(state, -1) != LUA_TNUMBER || !(lua_tonumber(state, -1) >= 0.0)) {
+        const std::string got = describe(state, -1);
+        lua_pop(state, 1);
+        throw ScriptError(where + "a number needs a tolerance >= 0 in its unit, as in tolerance = 0.05; got " + got);
+      }
+      row.tolerance = lua_tonumber(state, -1);
+      lua_pop(state, 1);
+      row.passes = row.measured_yet && std::abs(row.error()) <= row.tolerance;  // false for NaN
+    } else {
+      row.passes = row.measured_yet && row.measured_text == row.predicted_text;
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void Lesson::set(const std::string& name, const std::string& text) {
+  Parameter* found = current_->find_parameter(name);
+  if (found == nullptr) parameter(name);  // throws, listing the parameters
+  Parameter& changed = *found;
+  const double value = parse_parameter_value(changed, text);
+  if (!changed.structural && !changed.coefficient.empty()) {
+    // A coefficient the script reads only while running: the pair table changes under the
+    // running lesson, as a teacher moving a slider expects.
+    FrictionPair values;
+    for (const Parameter& sibling : current_->parameters) {
+      if (sibling.material_a != changed.material_a || sibling.material_b != changed.material_b) continue;
+      const double v = &sibling == &changed ? value : sibling.value;
+      if (sibling.coefficient == "mu_s") values.mu_s = v;
+      if (sibling.coefficient == "mu_k") values.mu_k = v;
+      if (sibling.coefficient == "c") values.c = v;
+      if (sibling.coefficient == "b") values.b = v;
+    }
+    scene().pairs().set_pair(changed.material_a, changed.material_b, values);
+    changed.value = value;
+    overrides_[name] = text;
+    return;
+  }
+  const auto saved = overrides_;
+  overrides_[name] = text;
+  try {
+    replace(build(source_, false), source_);
+  } catch (...) {
+    overrides_ = saved;
+    throw;
+  }
+}
+
+bool Lesson::reload() {
+  try {
+    std::string source = read_script(path_);
+    auto next = build(source, false);
+    replace(std::move(next), std::move(source));
+    return true;
+  } catch (const InvalidInput& error) {
+    last_error_ = error.what();
+    return false;
+  }
+}
+
+void Lesson::reset() { replace(build(source_, false), source_); }
+
+}  // namespace frictionlab::lessons

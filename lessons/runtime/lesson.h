@@ -1,0 +1,135 @@
+// A lesson: a student's Lua script turned into a running scene with parameters, probes, plots
+// and expectations. The script is run again whenever the scene must be rebuilt (a structural
+// parameter changed, the file changed, reset), each time in a fresh sandbox; a change that
+// fails leaves the last good lesson running and says why.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/sandbox.h"
+#include "physics/scene.h"
+
+namespace frictionlab::lessons {
+
+// A value the script lets a teacher or student set: a slider (min..max) or a choice.
+struct Parameter {
+  std::string name;
+  std::string unit;
+  std::string text;                  // what it is, in words, for the slider's label
+  double value = 0.0;
+  double default_value = 0.0;
+  double min = 0.0;
+  double max = 0.0;
+  std::vector<std::string> choices;  // not empty: value is the index of the chosen one
+  // A material pair's coefficient (mu_s, mu_k, c or b) and the pair it belongs to.
+  std::string coefficient;
+  std::string material_a, material_b;
+  // Read while the scene was built, so changing it rebuilds the scene from t = 0. The others
+  // (coefficients the script only reads later, in its functions) change the running lesson.
+  bool structural = false;
+  std::string declared_at;           // "path:line"
+
+  bool is_choice() const { return !choices.empty(); }
+  std::string shown() const;         // "0.6", "25 °", "plastic"
+};
+
+// A plot the script asked for: time series when x is "time", else y against x.
+struct Plot {
+  std::string title;
+  std::string declared_at;
+  std::string x;
+  std::vector<std::string> y;
+};
+
+// One row of the theory-against-simulation table.
+struct ExpectationResult {
+  std::string name;
+  std::string unit;
+  bool numeric = true;
+  double predicted = 0.0;
+  double measured = 0.0;
+  double tolerance = 0.0;
+  std::string predicted_text;  // for outcomes such as "tips" or "slides"
+  std::string measured_text;   // "not measured" until the script's measure has an answer
+  bool measured_yet = false;
+  bool passes = false;
+  double error() const { return measured - predicted; }
+};
+
+// A rope over a fixed pulley (a Box2D pulley joint): both ends stay taut, their lengths add up.
+struct Rope {
+  std::string name;
+  b2Joint* joint = nullptr;
+};
+
+struct LessonBuild;  // one run of the script: its sandbox, scene and declarations
+
+class Lesson {
+ public:
+  // Loads and builds the script at `path`. `overrides` are --set NAME=VALUE pairs. Throws
+  // ScriptError (path:line: message) or InvalidInput (a bad setting or --set).
+  Lesson(std::string path, std::map<std::string, std::string> overrides = {}, StepSettings settings = {});
+  ~Lesson();
+  Lesson(const Lesson&) = delete;
+  Lesson& operator=(const Lesson&) = delete;
+
+  const std::string& path() const { return path_; }
+  const std::string& title() const;
+  const std::string& question() const;
+  double duration() const;  // how long `run` and `check` run it, s
+  const StepSettings& settings() const { return settings_; }
+
+  Scene& scene();
+  const Scene& scene() const;
+  const std::vector<Parameter>& parameters() const;
+  const Parameter& parameter(const std::string& name) const;  // throws InvalidInput listing them
+  const std::vector<Plot>& plots() const;
+  const std::vector<Rope>& ropes() const;
+  // Doubts about the values, such as mu_k above mu_s, placed at the script line.
+  const std::vector<std::string>& warnings() const;
+  // Probes with the unit the script gave them, in the order declared.
+  const std::string& probe_unit(const std::string& probe) const;
+
+  // One frame: the scene's step, then the script's every-step functions. A script error stops
+  // the lesson (failed() is true until a rebuild) and is thrown as ScriptError.
+  void step();
+  bool failed() const { return failed_; }
+  // The expectations as they stand now.
+  std::vector<ExpectationResult> expectations();
+
+  // Sets a parameter from text ("0.45", "plastic"). Throws InvalidInput (naming the
+  // parameter and its range, or listing the parameters) and changes nothing when the value is
+  // wrong. A structural parameter rebuilds the scene from t = 0; the others apply at once.
+  void set(const std::string& name, const std::string& value);
+  // Runs the script again from disk (the file changed, or the student asked). On failure the
+  // last good lesson keeps running; the error is returned and kept in last_error().
+  bool reload();
+  // Builds the scene again from t = 0 with the current parameters (after a script error).
+  void reset();
+  const std::string& last_error() const { return last_error_; }
+
+  // Time spent inside the script's Lua since the last build, for the benchmark.
+  double seconds_in_script() const;
+
+ private:
+  // Runs the script in a fresh sandbox. With `strict`, a --set naming no parameter is an
+  // error; a reload after an edit instead forgets values for parameters that are gone.
+  std::unique_ptr<LessonBuild> build(const std::string& source, bool strict);
+  void replace(std::unique_ptr<LessonBuild> next, std::string source);
+
+  std::string path_;
+  std::string source_;  // the text of the last good build
+  std::map<std::string, std::string> overrides_;
+  StepSettings settings_;
+  std::unique_ptr<LessonBuild> current_;
+  bool failed_ = false;
+  std::string last_error_;
+};
+
+// Reads a script file; throws InvalidInput naming the path when it cannot.
+std::string read_script(const std::string& path);
+
+}  // namespace frictionlab::lessons

@@ -1,0 +1,130 @@
+#include "lessons/runtime/sandbox.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace frictionlab::lessons {
+namespace {
+
+// How often (in VM instructions) the budget is checked: often enough to stop a loop within
+// microseconds of its budget, rarely enough to cost nothing measurable.
+constexpr int instructions_per_check = 1000;
+
+// Libraries a lesson may use, and from the base library only what cannot reach outside the
+// script. math.random is left out because lessons must be deterministic.
+void open_safe_libraries(lua_State* state) {
+  luaL_requiref(state, LUA_GNAME, luaopen_base, 1);
+  luaL_requiref(state, LUA_TABLIBNAME, luaopen_table, 1);
+  luaL_requiref(state, LUA_STRLIBNAME, luaopen_string, 1);
+  luaL_requiref(state, LUA_MATHLIBNAME, luaopen_math, 1);
+  luaL_requiref(state, LUA_UTF8LIBNAME, luaopen_utf8, 1);
+  lua_pop(state, 5);
+  for (const char* unsafe : {"dofile", "loadfile", "load", "require", "collectgarbage"}) {
+    lua_pushnil(state);
+    lua_setglobal(state, unsafe);
+  }
+  lua_getglobal(state, LUA_MATHLIBNAME);
+  for (const char* unseeded : {"random", "randomseed"}) {
+    lua_pushnil(state);
+    lua_setfield(state, -2, unseeded);
+  }
+  lua_pop(state, 1);
+}
+
+}  // namespace
+
+Sandbox::Sandbox(SandboxLimits limits) : limits_(limits) {
+  memory_.limit = limits_.memory_bytes;
+  state_ = lua_newstate(&Sandbox::allocate, &memory_);
+  if (state_ == nullptr) throw ScriptError("cannot start Lua: out of memory");
+  *static_cast<Sandbox**>(lua_getextraspace(state_)) = this;
+  open_safe_libraries(state_);
+  lua_sethook(state_, &Sandbox::count_instructions, LUA_MASKCOUNT, instructions_per_check);
+}
+
+Sandbox::~Sandbox() { lua_close(state_); }
+
+Sandbox& sandbox_of(lua_State* state) { return **static_cast<Sandbox**>(lua_getextraspace(state)); }
+
+void* Sandbox::allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size) {
+  auto* books = static_cast<Memory*>(memory);
+  // For a new block Lua passes the kind of object in old_size, not a size.
+  const std::size_t had = block == nullptr ? 0 : old_size;
+  if (new_size == 0) {
+    std::free(block);
+    books->used -= had;
+    return nullptr;
+  }
+  // The instruction hook stops a script soon after it passes the limit, with the line it was
+  // on; this hard stop, a little higher, catches one huge allocation in a single instruction.
+  if (new_size > had && books->used + (new_size - had) > books->limit + books->limit / 4) return nullptr;
+  void* grown = std::realloc(block, new_size);
+  if (grown != nullptr) books->used = books->used - had + new_size;
+  return grown;
+}
+
+void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
+  Sandbox& sandbox = sandbox_of(state);
+  sandbox.budget_left_ -= instructions_per_check;
+  if (sandbox.memory_.used > sandbox.memory_.limit) {
+    luaL_error(state, "the script uses more than %d MB of memory (a table that grows without end?)",
+               static_cast<int>(sandbox.memory_.limit >> 20));
+  }
+  if (sandbox.budget_left_ < 0) {
+    // The budget starts over for whatever handles the error, so a message can still be built.
+    sandbox.budget_left_ = sandbox.limits_.instructions_per_call;
+    luaL_error(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
+               static_cast<int>(sandbox.limits_.instructions_per_call / 1'000'000));
+  }
+}
+
+void Sandbox::load(std::string_view source, const std::string& chunk_name) {
+  const std::string named = "@" + chunk_name;
+  if (luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t") != LUA_OK) {
+    std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
+    lua_pop(state_, 1);
+    throw ScriptError(message);
+  }
+}
+
+void Sandbox::call(int arguments, int results) {
+  const bool outermost = depth_ == 0;
+  if (outermost) budget_left_ = limits_.instructions_per_call;
+  const auto start = std::chrono::steady_clock::now();
+  ++depth_;
+  const int status = lua_pcall(state_, arguments, results, 0);
+  --depth_;
+  if (outermost) time_in_lua_ += std::chrono::steady_clock::now() - start;
+  if (status == LUA_OK) return;
+  std::string message;
+  if (status == LUA_ERRMEM) {
+    message = "the script asked for more than " + std::to_string(limits_.memory_bytes >> 20) +
+              " MB of memory in one go";
+  } else if (const char* text = lua_tostring(state_, -1)) {
+    message = text;
+  } else {
+    message = "the script raised an error that is not a message (" + describe(state_, -1) + ")";
+  }
+  lua_pop(state_, 1);
+  throw ScriptError(message);
+}
+
+std::string describe(lua_State* state, int index) {
+  switch (lua_type(state, index)) {
+    case LUA_TNONE:
+    case LUA_TNIL: return "nil";
+    case LUA_TNUMBER: {
+      // luaL_tolstring works on a copy; lua_tostring would turn the number itself into text.
+      std::string text = luaL_tolstring(state, index, nullptr);
+      lua_pop(state, 1);
+      return "the number " + text;
+    }
+    case LUA_TBOOLEAN: return lua_toboolean(state, index) ? "true" : "false";
+    case LUA_TSTRING: return "the text \"" + std::string(lua_tostring(state, index)) + "\"";
+    case LUA_TTABLE: return "a table";
+    case LUA_TFUNCTION: return "a function";
+    default: return std::string("a ") + luaL_typename(state, index);
+  }
+}
+
+}  // namespace frictionlab::lessons

@@ -1,0 +1,90 @@
+// A Lua 5.4 state a student's script cannot escape: no files, OS, packages or debug library,
+// text chunks only, and budgets for instructions and memory so that an endless loop or a
+// runaway table ends in an error instead of a hang.
+#pragma once
+
+#include <lua.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "physics/materials.h"
+
+namespace frictionlab::lessons {
+
+// A script's mistake, already placed: "path:line: what was wrong and what was expected".
+struct ScriptError : InvalidInput {
+  using InvalidInput::InvalidInput;
+};
+
+struct SandboxLimits {
+  std::size_t memory_bytes = 64u << 20;
+  long instructions_per_call = 50'000'000;  // one build, one step's callbacks, one evaluation
+};
+
+class Sandbox {
+ public:
+  explicit Sandbox(SandboxLimits limits = {});
+  ~Sandbox();
+  Sandbox(const Sandbox&) = delete;
+  Sandbox& operator=(const Sandbox&) = delete;
+
+  lua_State* state() const { return state_; }
+  const SandboxLimits& limits() const { return limits_; }
+
+  // Compiles `source` (text only) under `chunk_name` (the path errors will name) and leaves
+  // the function on the stack. Throws ScriptError for a syntax error.
+  void load(std::string_view source, const std::string& chunk_name);
+  // Calls the function below `arguments` values on the stack with a fresh instruction budget.
+  // Throws ScriptError carrying Lua's message (which starts with path:line). `results` values
+  // are left on the stack.
+  void call(int arguments, int results);
+
+  std::size_t memory_in_use() const { return memory_.used; }
+  // Wall time spent inside Lua so far, for the benchmark's share of the step.
+  std::chrono::nanoseconds time_in_lua() const { return time_in_lua_; }
+
+ private:
+  struct Memory {
+    std::size_t used = 0;
+    std::size_t limit = 0;
+  };
+  static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
+  static void count_instructions(lua_State* state, lua_Debug* debug);
+
+  SandboxLimits limits_;
+  Memory memory_;
+  lua_State* state_ = nullptr;
+  long budget_left_ = 0;
+  int depth_ = 0;  // a call made from inside another (a spring's hand read during the build) shares its budget
+  std::chrono::nanoseconds time_in_lua_{0};
+};
+
+// The sandbox that owns `state`.
+Sandbox& sandbox_of(lua_State* state);
+
+// Runs `body` as the C function it is called from; a C++ exception from it becomes a Lua
+// error placed at the script line that called the function. Every API function goes through
+// here so that no C++ exception crosses Lua's own frames.
+template <typename Body>
+int guarded(lua_State* state, Body&& body) {
+  bool failed = false;
+  int results = 0;
+  try {
+    results = body();
+  } catch (const std::exception& error) {
+    luaL_where(state, 1);
+    lua_pushstring(state, error.what());
+    lua_concat(state, 2);
+    failed = true;
+  }
+  if (failed) return lua_error(state);
+  return results;
+}
+
+// Names a Lua value's type the way error messages speak: "a number", "nil", "a table".
+std::string describe(lua_State* state, int index);
+
+}  // namespace frictionlab::lessons

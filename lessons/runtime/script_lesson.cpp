@@ -1,0 +1,373 @@
+// The lesson part of the script API: what the lesson is and asks, its parameters, materials
+// and pairs, probes, plots, expectations and every-step functions.
+#include <cmath>
+#include <cstdlib>
+
+#include "lessons/runtime/build.h"
+#include "physics/scenarios.h"
+#include "physics/validation.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+// Things that make up the scene may be declared only while the script runs top to bottom.
+void require_building(lua_State* state, const char* call) {
+  if (!build_of(state).building) {
+    throw InvalidInput(std::string(call) +
+                       " declares part of the lesson; call it at the top level of the script, not from a "
+                       "function that runs during the lesson");
+  }
+}
+
+// Whole-text number, so "0.5x" is refused rather than read as 0.5.
+std::optional<double> parse_number(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// Applies a --set value to a freshly declared parameter. A bad value keeps the default and is
+// reported once the build is over, as a command-line mistake rather than a script one.
+void apply_override(LessonBuild& build, Parameter& parameter) {
+  const auto found = build.overrides.find(parameter.name);
+  if (found == build.overrides.end()) return;
+  try {
+    parameter.value = parse_parameter_value(parameter, found->second);
+  } catch (const InvalidInput& error) {
+    if (build.override_error.empty()) build.override_error = error.what();
+  }
+}
+
+void add_parameter(LessonBuild& build, Parameter parameter) {
+  if (build.find_parameter(parameter.name) != nullptr) {
+    throw InvalidInput("parameter '" + parameter.name + "' is declared twice (first at " +
+                       build.find_parameter(parameter.name)->declared_at + ")");
+  }
+  apply_override(build, parameter);
+  build.parameters.push_back(std::move(parameter));
+}
+
+void push_parameter_value(lua_State* state, const Parameter& parameter) {
+  if (parameter.is_choice()) {
+    lua_pushstring(state, parameter.choices[static_cast<size_t>(parameter.value)].c_str());
+  } else {
+    lua_pushnumber(state, parameter.value);
+  }
+}
+
+int lesson(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "lesson");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "lesson", {"title", "question", "duration"});
+    build.title = fields.text("title", "");
+    build.question = fields.text("question", "");
+    if (build.title.empty()) throw InvalidInput("lesson: title must be text, as in lesson{ title = \"...\" }");
+    if (build.question.empty()) throw InvalidInput("lesson: question must be text: what does the lesson ask?");
+    // A function may work the duration out from parameters a teacher changes while it runs.
+    if (fields.push_function("duration")) {
+      build.duration_function = luaL_ref(state, LUA_REGISTRYINDEX);
+    } else {
+      build.duration = fields.number_in("duration", "s", 10.0, 0.0, 86400.0, true);
+    }
+    return 0;
+  });
+}
+
+int parameter(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "parameter");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "parameter", {"min", "max", "unit", "text", "choices"});
+    Parameter declared;
+    declared.name = fields.name();
+    if (declared.name.find_first_of("= ,") != std::string::npos) {
+      throw InvalidInput(fields.what() + ": a parameter's name cannot contain '=', ',' or spaces");
+    }
+    declared.unit = fields.text("unit", "");
+    declared.text = fields.text("text", declared.name);
+    declared.declared_at = caller(state);
+    declared.structural = true;  // its value is handed to the script while it builds
+    lua_rawgeti(state, 1, 2);
+    fields.push("choices");
+    if (!lua_isnil(state, -1)) {
+      if (!lua_istable(state, -1) || lua_rawlen(state, -1) < 2) {
+        throw InvalidInput(fields.what() + ": choices must be a list of at least two names, as in {\"aluminium\", \"plastic\"}");
+      }
+      for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, -1)); ++i) {
+        lua_rawgeti(state, -1, i);
+        if (lua_type(state, -1) != LUA_TSTRING) throw InvalidInput(fields.what() + ": every choice must be a name in quotes");
+        declared.choices.emplace_back(lua_tostring(state, -1));
+        lua_pop(state, 1);
+      }
+      const std::string fallback = lua_type(state, -2) == LUA_TSTRING ? lua_tostring(state, -2) : "";
+      declared.value = parse_parameter_value(declared, fallback);  // throws listing the choices
+    } else {
+      if (lua_type(state, -2) != LUA_TNUMBER) {
+        throw InvalidInput(fields.what() + ": its default value comes second, as in parameter{ \"mass\", 1.0, min = 0.1, "
+                           "max = 10 }; got " + describe(state, -2));
+      }
+      declared.value = lua_tonumber(state, -2);
+      declared.min = fields.number("min", declared.unit.c_str());
+      declared.max = fields.number("max", declared.unit.c_str());
+      if (!(declared.min < declared.max)) throw InvalidInput(fields.what() + ": min must be less than max");
+      validation::require_in_range(fields.what() + ": default", declared.value, declared.min, declared.max, false,
+                                   declared.unit.empty() ? "" : (" " + declared.unit).c_str());
+    }
+    lua_pop(state, 2);
+    declared.default_value = declared.value;
+    add_parameter(build, declared);
+    push_parameter_value(state, build.parameters.back());
+    return 1;
+  });
+}
+
+// param.NAME: the current value of any parameter, including a pair's coefficients.
+int parameter_value(lua_State* state) {
+  return guarded(state, [&] {
+    LessonBuild& build = build_of(state);
+    const char* name = lua_tostring(state, 2);
+    Parameter* found = name ? build.find_parameter(name) : nullptr;
+    if (found == nullptr) {
+      throw InvalidInput("param." + std::string(name ? name : "?") + ": no such parameter; parameters: " +
+                         build.parameter_names());
+    }
+    if (build.building) found->structural = true;
+    push_parameter_value(state, *found);
+    return 1;
+  });
+}
+
+int refuse_parameter_write(lua_State* state) {
+  return guarded(state, [&]() -> int {
+    throw InvalidInput("param is read-only: parameters change from the sliders or with --set NAME=VALUE");
+  });
+}
+
+int material(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "material");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "material", {"density", "note"});
+    Material declared;
+    declared.name = fields.name();
+    declared.density = fields.number("density", "kg/m²");
+    declared.note = fields.text("note", "");
+    build.scene->pairs().add_material(declared);
+    return 0;
+  });
+}
+
+struct Coefficient {
+  const char* key;
+  const char* unit;
+  double max;
+  const char* words;
+};
+constexpr Coefficient coefficients[] = {
+    {"mu_s", "", 2.0, "static friction coefficient"},
+    {"mu_k", "", 2.0, "kinetic friction coefficient"},
+    {"c", "N·s/m", 1000.0, "viscous drag coefficient"},
+    {"b", "N·s²/m²", 1000.0, "quadratic drag coefficient"},
+};
+
+int pair(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "pair");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name"});
+    std::string names[2];
+    for (int i = 0; i < 2; ++i) {
+      lua_rawgeti(state, 1, i + 1);
+      if (lua_type(state, -1) != LUA_TSTRING) {
+        throw InvalidInput("pair names its two materials first, as in pair{ \"aluminium\", \"wood\", mu_s = 0.45, "
+                           "mu_k = 0.35 }; got " + describe(state, -1));
+      }
+      names[i] = lua_tostring(state, -1);
+      lua_pop(state, 1);
+    }
+    const std::string label = names[0] + "/" + names[1];
+    for (const std::string& name : names) build.use_material(name);
+    build.scene->pairs().material_id(names[0]);  // unknown material: the error lists the known ones
+    build.scene->pairs().material_id(names[1]);
+    FrictionPair values;
+    if (fields.has("mu_s") || fields.has("mu_k")) {
+      if (!fields.has("mu_s") || !fields.has("mu_k")) {
+        throw InvalidInput("pair " + label + ": give both mu_s and mu_k, or neither for the preset values");
+      }
+    } else {
+      const int a = build.presets.find_material(names[0]), b = build.presets.find_material(names[1]);
+      if (a < 0 || b < 0 || !build.presets.has_pair(a, b)) {
+        throw InvalidInput("pair " + label + ": there is no preset for this pair; give mu_s and mu_k");
+      }
+      values = build.presets.pair(a, b);
+    }
+    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
+    bool first_pair = true;
+    for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
+    const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
+    for (int i = 0; i < 4; ++i) {
+      const Coefficient& coefficient = coefficients[i];
+      *slots[i] = fields.number(coefficient.key, coefficient.unit, *slots[i]);
+      Parameter declared;
+      declared.name = prefix + coefficient.key;
+      declared.unit = coefficient.unit;
+      declared.text = std::string(coefficient.words) + ", " + names[0] + " on " + names[1];
+      declared.value = declared.default_value = *slots[i];
+      declared.min = 0.0;
+      declared.max = coefficient.max;
+      declared.coefficient = coefficient.key;
+      declared.material_a = names[0];
+      declared.material_b = names[1];
+      declared.declared_at = caller(state);
+      add_parameter(build, declared);
+      *slots[i] = build.parameters.back().value;
+    }
+    for (std::string& warning : build.scene->pairs().set_pair(names[0], names[1], values)) {
+      build.warnings.push_back(caller(state) + ": " + warning);
+    }
+    return 0;
+  });
+}
+
+int probe(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "probe");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "probe", {"unit"});
+    const std::string name = fields.name();
+    if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
+    const std::string unit = fields.text("unit", "");
+    lua_rawgeti(state, 1, 2);
+    if (!lua_isfunction(state, -1)) {
+      throw InvalidInput(fields.what() + ": its function comes second, as in probe{ \"" + name +
+                         "\", unit = \"N\", function() return ... end }; got " + describe(state, -1));
+    }
+    const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
+    LessonBuild* owner = &build;
+    const std::string what = "probe '" + name + "'";
+    build.scene->add_probe(name, [owner, reference, what] {
+      owner->call(reference, {}, 1);
+      return owner->numbers_returned(reference, 1, what)[0];
+    });
+    build.probes.push_back({name, unit});
+    return 0;
+  });
+}
+
+int plot(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "plot");
+    Fields fields(state, 1, "plot", {"x", "y"});
+    Plot declared;
+    declared.title = fields.name();
+    declared.declared_at = caller(state);
+    declared.x = fields.text("x", "time");
+    fields.push("y");
+    if (lua_type(state, -1) == LUA_TSTRING) {
+      declared.y.emplace_back(lua_tostring(state, -1));
+    } else if (lua_istable(state, -1) && lua_rawlen(state, -1) > 0) {
+      for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, -1)); ++i) {
+        lua_rawgeti(state, -1, i);
+        if (lua_type(state, -1) != LUA_TSTRING) throw InvalidInput(fields.what() + ": y must list probe names");
+        declared.y.emplace_back(lua_tostring(state, -1));
+        lua_pop(state, 1);
+      }
+    } else {
+      throw InvalidInput(fields.what() + ": y must be a probe's name or a list of them, as in y = { \"spring_force\" }");
+    }
+    lua_pop(state, 1);
+    build_of(state).plots.push_back(std::move(declared));
+    return 0;
+  });
+}
+
+int expect(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "expect");
+    LessonBuild& build = build_of(state);
+    Fields fields(state, 1, "expect", {"unit", "predicted", "measured", "tolerance"});
+    Expectation declared;
+    declared.name = fields.name();
+    declared.unit = fields.text("unit", "");
+    declared.declared_at = caller(state);
+    for (const char* key : {"predicted", "measured"}) {
+      if (!fields.has(key)) throw InvalidInput(fields.what() + ": " + key + " is missing (a value or a function)");
+    }
+    fields.push("predicted");
+    declared.predicted = luaL_ref(state, LUA_REGISTRYINDEX);
+    fields.push("measured");
+    declared.measured = luaL_ref(state, LUA_REGISTRYINDEX);
+    fields.push("tolerance");
+    declared.tolerance = luaL_ref(state, LUA_REGISTRYINDEX);
+    build.expectations.push_back(std::move(declared));
+    return 0;
+  });
+}
+
+int every_step(lua_State* state) {
+  return guarded(state, [&] {
+    require_building(state, "every_step");
+    if (!lua_isfunction(state, 1)) {
+      throw InvalidInput("every_step takes a function, as in every_step(function(t) ... end); got " + describe(state, 1));
+    }
+    lua_settop(state, 1);
+    build_of(state).every_step.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
+    return 0;
+  });
+}
+
+int time_now(lua_State* state) {
+  lua_pushnumber(state, build_of(state).scene->time());
+  return 1;
+}
+
+int step_length(lua_State* state) {
+  lua_pushnumber(state, build_of(state).scene->frame_step());
+  return 1;
+}
+
+}  // namespace
+
+double parse_parameter_value(const Parameter& parameter, const std::string& text) {
+  if (parameter.is_choice()) {
+    for (size_t i = 0; i < parameter.choices.size(); ++i) {
+      if (parameter.choices[i] == text) return static_cast<double>(i);
+    }
+    std::string list;
+    for (const std::string& choice : parameter.choices) list += (list.empty() ? "" : ", ") + choice;
+    throw InvalidInput(parameter.name + "=" + text + ": not one of the choices " + list);
+  }
+  const std::optional<double> value = parse_number(text);
+  if (!value) throw InvalidInput(parameter.name + "=" + text + ": not a number");
+  const std::string unit = parameter.unit.empty() ? "" : " " + parameter.unit;
+  validation::require_in_range(parameter.name, *value, parameter.min, parameter.max, false, unit.c_str());
+  return *value;
+}
+
+void register_lesson_api(lua_State* state) {
+  const luaL_Reg functions[] = {{"lesson", lesson},       {"parameter", parameter}, {"material", material},
+                                {"pair", pair},           {"probe", probe},         {"plot", plot},
+                                {"expect", expect},       {"every_step", every_step}, {"time", time_now},
+                                {"step_length", step_length}, {nullptr, nullptr}};
+  lua_pushglobaltable(state);
+  luaL_setfuncs(state, functions, 0);
+  lua_pop(state, 1);
+  lua_pushnumber(state, standard_gravity);
+  lua_setglobal(state, "g");
+  lua_pushnumber(state, resting_gap);
+  lua_setglobal(state, "resting_gap");
+  // param: a read-only view of the parameters' current values.
+  lua_newtable(state);
+  lua_newtable(state);
+  lua_pushcfunction(state, parameter_value);
+  lua_setfield(state, -2, "__index");
+  lua_pushcfunction(state, refuse_parameter_write);
+  lua_setfield(state, -2, "__newindex");
+  lua_setmetatable(state, -2);
+  lua_setglobal(state, "param");
+}
+
+}  // namespace frictionlab::lessons

@@ -1,0 +1,187 @@
+// theory.*: the closed forms of physics/closed_forms.h, so a lesson's expectations use the
+// same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
+// mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
+#include <numbers>
+
+#include "lessons/runtime/build.h"
+#include "physics/closed_forms.h"
+#include "physics/scenarios.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180.0;
+
+void set_number(lua_State* state, const char* key, double value) {
+  lua_pushnumber(state, value);
+  lua_setfield(state, -2, key);
+}
+
+FrictionPair pair_from(Fields& fields) {
+  return {fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("c", "N·s/m", 0.0),
+          fields.number("b", "N·s²/m²", 0.0)};
+}
+
+int sticking_angle(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.sticking_angle", {"mu_s"});
+    lua_pushnumber(state, theory::sticking_angle(fields.number("mu_s", "")) / degrees);
+    return 1;
+  });
+}
+
+int incline_acceleration(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.incline_acceleration", {"angle", "mu_k", "g"});
+    lua_pushnumber(state, theory::incline_sliding_acceleration(fields.number("angle", "°") * degrees,
+                                                               fields.number("mu_k", ""),
+                                                               fields.number("g", "m/s²", standard_gravity)));
+    return 1;
+  });
+}
+
+int incline_motion(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "mass", "t", "g"});
+    const double angle = fields.number("angle", "°") * degrees, mu_k = fields.number("mu_k", "");
+    const double c = fields.number("c", "N·s/m", 0.0), mass = fields.number("mass", "kg");
+    const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s");
+    lua_createtable(state, 0, 2);
+    set_number(state, "speed", theory::incline_speed(angle, mu_k, c, mass, g, t));
+    set_number(state, "distance", theory::incline_distance(angle, mu_k, c, mass, g, t));
+    return 1;
+  });
+}
+
+int tip_height(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.tip_height", {"width", "mu_s"});
+    lua_pushnumber(state, theory::tip_height(fields.number("width", "m"), fields.number("mu_s", "")));
+    return 1;
+  });
+}
+
+int push_outcome(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.push_outcome", {"mass", "width", "push_height", "mu_s", "g"});
+    const double weight = fields.number("mass", "kg") * fields.number("g", "m/s²", standard_gravity);
+    const theory::PushOutcome outcome =
+        theory::push_outcome(weight, fields.number("width", "m"), fields.number("push_height", "m"), fields.number("mu_s", ""));
+    lua_createtable(state, 0, 2);
+    lua_pushstring(state, outcome.tips ? "tips" : "slides");
+    lua_setfield(state, -2, "outcome");
+    set_number(state, "force", outcome.force);
+    return 1;
+  });
+}
+
+int spring_stick_slip(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.spring_stick_slip", {"mass", "k", "pull_speed", "mu_s", "mu_k", "g"});
+    const theory::StickSlip cycle = theory::spring_stick_slip(
+        fields.number("mass", "kg"), fields.number("k", "N/m"), fields.number("pull_speed", "m/s"),
+        fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 7);
+    set_number(state, "breakaway_force", cycle.breakaway_force);
+    set_number(state, "restick_force", cycle.restick_force);
+    set_number(state, "stick_duration", cycle.stick_duration);
+    set_number(state, "slip_duration", cycle.slip_duration);
+    set_number(state, "period", cycle.period);
+    set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
+    set_number(state, "slip_distance", cycle.slip_distance);
+    return 1;
+  });
+}
+
+int slide_to_rest(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.slide_to_rest", {"v0", "mass", "mu_s", "mu_k", "c", "b", "g"});
+    const double v0 = fields.number("v0", "m/s"), mass = fields.number("mass", "kg");
+    const theory::SlideToRest rest =
+        theory::slide_to_rest(v0, mass, pair_from(fields), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 2);
+    set_number(state, "time", rest.time);
+    set_number(state, "distance", rest.distance);
+    return 1;
+  });
+}
+
+int disk_on_incline(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.disk_on_incline", {"angle", "mass", "radius", "inertia", "mu_s", "mu_k", "g"});
+    const double mass = fields.number("mass", "kg"), radius = fields.number("radius", "m");
+    const theory::DiskOnIncline disk = theory::disk_on_incline(
+        fields.number("angle", "°") * degrees, mass, radius,
+        fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius), fields.number("mu_s", ""),
+        fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 4);
+    lua_pushboolean(state, disk.rolls);
+    lua_setfield(state, -2, "rolls");
+    set_number(state, "acceleration", disk.acceleration);
+    set_number(state, "angular_acceleration", disk.angular_acceleration);
+    set_number(state, "friction_force", disk.friction_force);
+    return 1;
+  });
+}
+
+int disk_starts_rolling(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.disk_starts_rolling", {"v0", "mass", "radius", "inertia", "mu_k", "g"});
+    const double mass = fields.number("mass", "kg"), radius = fields.number("radius", "m");
+    const theory::RollStart start = theory::disk_starts_rolling(
+        fields.number("v0", "m/s"), mass, radius, fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius),
+        fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 3);
+    set_number(state, "time", start.time);
+    set_number(state, "speed", start.speed);
+    set_number(state, "distance", start.distance);
+    return 1;
+  });
+}
+
+FrictionPair nested_pair(lua_State* state, Fields& outer, const char* key) {
+  outer.push(key);
+  Fields fields(state, -1, outer.what() + ": " + key, {"mu_s", "mu_k", "c", "b"});
+  const FrictionPair pair = pair_from(fields);
+  lua_pop(state, 1);
+  return pair;
+}
+
+int stacked_blocks(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
+    const theory::StackedBlocks stack = theory::stacked_blocks(
+        fields.number("top_mass", "kg"), fields.number("bottom_mass", "kg"), nested_pair(state, fields, "between"),
+        nested_pair(state, fields, "ground"), fields.number("push", "N"), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 4);
+    const char* regime = stack.regime == theory::StackRegime::at_rest    ? "at_rest"
+                         : stack.regime == theory::StackRegime::together ? "together"
+                                                                          : "top_slips";
+    lua_pushstring(state, regime);
+    lua_setfield(state, -2, "regime");
+    set_number(state, "top_acceleration", stack.top_acceleration);
+    set_number(state, "bottom_acceleration", stack.bottom_acceleration);
+    set_number(state, "max_push_together", stack.max_push_together);
+    return 1;
+  });
+}
+
+}  // namespace
+
+void register_theory_api(lua_State* state) {
+  const luaL_Reg functions[] = {{"sticking_angle", sticking_angle},
+                                {"incline_acceleration", incline_acceleration},
+                                {"incline_motion", incline_motion},
+                                {"tip_height", tip_height},
+                                {"push_outcome", push_outcome},
+                                {"spring_stick_slip", spring_stick_slip},
+                                {"slide_to_rest", slide_to_rest},
+                                {"disk_on_incline", disk_on_incline},
+                                {"disk_starts_rolling", disk_starts_rolling},
+                                {"stacked_blocks", stacked_blocks},
+                                {nullptr, nullptr}};
+  luaL_newlib(state, functions);
+  lua_setglobal(state, "theory");
+}
+
+}  // namespace frictionlab::lessons

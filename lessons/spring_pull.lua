@@ -1,0 +1,96 @@
+-- spring_pull: a spring pulls a block along a wooden bench.
+-- The spring article: the spring's stretch measures the force. Static friction holds the
+-- block until the pull reaches mu_s·N; then kinetic friction, mu_k·N, takes over, the block
+-- lurches forward, the spring relaxes, and the block sticks again: stick-slip.
+
+lesson {
+  title = "A spring pulls a block",
+  question = "How hard must the spring pull before the block moves, and why does it then move in jerks?",
+  -- Long enough for the first breakaway and four more cycles, whatever the sliders say.
+  duration = function()
+    local cycle = theory.spring_stick_slip { mass = param.mass, k = param.k, pull_speed = param.pull_speed,
+                                             mu_s = param.mu_s, mu_k = param.mu_k }
+    return cycle.first_breakaway_time + 4.5 * cycle.period
+  end,
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local block_material = parameter { "block", "aluminium", choices = { "aluminium", "plastic" },
+                                   text = "the block the article pulls" }
+local mass = parameter { "mass", 1.0, min = 0.1, max = 5, unit = "kg", text = "mass of the block" }
+local k = parameter { "k", 50, min = 5, max = 500, unit = "N/m", text = "spring stiffness" }
+local pull_speed = parameter { "pull_speed", 0.1, min = 0.02, max = 0.5, unit = "m/s", text = "speed of the hand" }
+
+-- The block on the bench. mu_s, mu_k, c and b become sliders, starting from the preset
+-- values for the chosen block on wood.
+pair { block_material, "wood" }
+
+-- World -----------------------------------------------------------------------------------
+local bench = ground { material = "wood" }
+local block = box { "block", material = block_material, width = 0.2, height = 0.1, on = bench, at = 0, mass = mass }
+
+-- The hand holds the spring's far end one rest length ahead of the block and walks away.
+local rest_length = 0.5
+local hand_x, hand_y = block.x + rest_length, block.y
+local pull = spring { "spring", from = block, k = k, rest_length = rest_length,
+                      to = function(t) return hand_x + pull_speed * t, hand_y end }
+
+-- Probes and plots ------------------------------------------------------------------------
+probe { "spring_force", unit = "N", function() return pull.force_x end }
+probe { "friction_force", unit = "N", function() return contact(block, bench).fx end }
+probe { "block_speed", unit = "m/s", function() return block.vx end }
+
+plot { "Forces on the block", y = { "spring_force", "friction_force" } }
+plot { "Friction against the pull", x = "spring_force", y = { "friction_force" } }
+
+-- Watching for stick and slip --------------------------------------------------------------
+-- The contact changes state during the step just taken, so the pull that made it change is
+-- the one from before that step.
+local breakaways, restick_forces = {}, {}
+local was, pull_before = "sticking", 0
+every_step(function(t)
+  local now = contact(block, bench).state
+  if was == "sticking" and now == "slipping" then
+    breakaways[#breakaways + 1] = { time = t - step_length(), force = pull_before }
+  elseif was == "slipping" and now == "sticking" then
+    restick_forces[#restick_forces + 1] = pull_before
+  end
+  if now ~= "none" then was = now end
+  pull_before = pull.force_x
+end)
+
+local function mean(values)
+  if #values == 0 then return nil end
+  local sum = 0
+  for _, value in ipairs(values) do sum = sum + value end
+  return sum / #values
+end
+
+-- Expectations ----------------------------------------------------------------------------
+-- The closed form has no viscous term: with c > 0 the table shows how far c moves things.
+local function cycle()
+  return theory.spring_stick_slip { mass = mass, k = k, pull_speed = pull_speed, mu_s = param.mu_s, mu_k = param.mu_k }
+end
+local weight = mass * g
+
+expect { "breakaway force", unit = "N",
+  predicted = function() return cycle().breakaway_force end,
+  measured = function()
+    local forces = {}
+    for i, breakaway in ipairs(breakaways) do forces[i] = breakaway.force end
+    return mean(forces)
+  end,
+  tolerance = function() return 0.01 * param.mu_s * weight end }
+
+expect { "re-stick force", unit = "N",
+  predicted = function() return cycle().restick_force end,
+  measured = function() return mean(restick_forces) end,
+  tolerance = function() return 0.02 * param.mu_s * weight end }
+
+expect { "stick-slip period", unit = "s",
+  predicted = function() return cycle().period end,
+  measured = function()
+    if #breakaways < 2 then return nil end
+    return (breakaways[#breakaways].time - breakaways[1].time) / (#breakaways - 1)
+  end,
+  tolerance = function() return 0.01 * cycle().period end }
