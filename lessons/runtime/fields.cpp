@@ -9,7 +9,8 @@ namespace frictionlab::lessons {
 std::string caller(lua_State* state) {
   lua_Debug debug;
   if (lua_getstack(state, 1, &debug) && lua_getinfo(state, "Sl", &debug) && debug.currentline > 0) {
-    return std::string(debug.short_src) + ":" + std::to_string(debug.currentline);
+    // source is "@path" in full; short_src may have been cut short.
+    return std::string(debug.source + 1) + ":" + std::to_string(debug.currentline);
   }
   return build_of(state).chunk_name;
 }

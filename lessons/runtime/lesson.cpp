@@ -87,7 +87,7 @@ std::string LessonBuild::defined_at(int reference) {
   lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
   lua_Debug debug;
   lua_getinfo(state, ">S", &debug);
-  return std::string(debug.short_src) + ":" + std::to_string(debug.linedefined);
+  return std::string(debug.source + 1) + ":" + std::to_string(debug.linedefined);  // source is "@path"
 }
 
 std::vector<double> LessonBuild::numbers_returned(int reference, int count, const std::string& what) {

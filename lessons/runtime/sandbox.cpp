@@ -66,25 +66,45 @@ void* Sandbox::allocate(void* memory, void* block, std::size_t old_size, std::si
 void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
   Sandbox& sandbox = sandbox_of(state);
   sandbox.budget_left_ -= instructions_per_check;
+  // Inside a hook, level 0 is the script function that was running: the line to report.
   if (sandbox.memory_.used > sandbox.memory_.limit) {
-    luaL_error(state, "the script uses more than %d MB of memory (a table that grows without end?)",
-               static_cast<int>(sandbox.memory_.limit >> 20));
+    luaL_where(state, 0);
+    lua_pushfstring(state, "the script uses more than %d MB of memory (a table that grows without end?)",
+                    static_cast<int>(sandbox.memory_.limit >> 20));
+    lua_concat(state, 2);
+    lua_error(state);
   }
   if (sandbox.budget_left_ < 0) {
     // The budget starts over for whatever handles the error, so a message can still be built.
     sandbox.budget_left_ = sandbox.limits_.instructions_per_call;
-    luaL_error(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
-               static_cast<int>(sandbox.limits_.instructions_per_call / 1'000'000));
+    luaL_where(state, 0);
+    lua_pushfstring(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
+                    static_cast<int>(sandbox.limits_.instructions_per_call / 1'000'000));
+    lua_concat(state, 2);
+    lua_error(state);
   }
 }
 
 void Sandbox::load(std::string_view source, const std::string& chunk_name) {
+  chunk_name_ = chunk_name;
   const std::string named = "@" + chunk_name;
   if (luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t") != LUA_OK) {
     std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
     lua_pop(state_, 1);
-    throw ScriptError(message);
+    throw ScriptError(full_path(message));
   }
+}
+
+// Lua shortens a long file name in its messages to "..." and the last 56 characters; a
+// student needs the whole path to find the file.
+std::string Sandbox::full_path(const std::string& message) const {
+  const std::size_t colon = message.find(':');
+  if (message.rfind("...", 0) != 0 || colon == std::string::npos) return message;
+  const std::string tail = message.substr(3, colon - 3);
+  if (chunk_name_.size() < tail.size() || chunk_name_.compare(chunk_name_.size() - tail.size(), tail.size(), tail) != 0) {
+    return message;
+  }
+  return chunk_name_ + message.substr(colon);
 }
 
 void Sandbox::call(int arguments, int results) {
@@ -106,7 +126,7 @@ void Sandbox::call(int arguments, int results) {
     message = "the script raised an error that is not a message (" + describe(state_, -1) + ")";
   }
   lua_pop(state_, 1);
-  throw ScriptError(message);
+  throw ScriptError(full_path(message));
 }
 
 std::string describe(lua_State* state, int index) {

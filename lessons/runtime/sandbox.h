@@ -51,12 +51,14 @@ class Sandbox {
     std::size_t used = 0;
     std::size_t limit = 0;
   };
+  std::string full_path(const std::string& message) const;
   static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
   static void count_instructions(lua_State* state, lua_Debug* debug);
 
   SandboxLimits limits_;
   Memory memory_;
   lua_State* state_ = nullptr;
+  std::string chunk_name_;
   long budget_left_ = 0;
   int depth_ = 0;  // a call made from inside another (a spring's hand read during the build) shares its budget
   std::chrono::nanoseconds time_in_lua_{0};

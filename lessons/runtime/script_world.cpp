@@ -38,7 +38,11 @@ void require_building(lua_State* state, const char* call) {
   }
 }
 
-void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = {}, b2Vec2 along = {1, 0}) {
+// b2Vec2's default constructor leaves it uninitialised: every default here is spelled out.
+const b2Vec2 origin_point{0.0f, 0.0f};
+
+void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
+               b2Vec2 along = {1.0f, 0.0f}) {
   auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
   *handle = {body, is_surface, origin, along};
   luaL_setmetatable(state, body_type);
@@ -101,7 +105,7 @@ void finish_body(Fields& fields, b2Body* body, double area) {
     body->GetFixtureList()->SetDensity(static_cast<float>(mass / area));
     body->ResetMassData();
   }
-  const b2Vec2 velocity = fields.point("velocity", {0.0f, 0.0f});
+  const b2Vec2 velocity = fields.point("velocity", origin_point);
   body->SetLinearVelocity(velocity);
   body->SetAngularVelocity(static_cast<float>(fields.number("spin", "rad/s", 0.0)));
   if (fields.flag("fixed_rotation").value_or(false)) body->SetFixedRotation(true);
@@ -290,7 +294,7 @@ int spring(lua_State* state) {
     fields.push("from");
     made.body = body_handle(state, -1, fields.what() + ": from")->body;
     lua_pop(state, 1);
-    made.local_point = fields.point("at", {0.0f, 0.0f});
+    made.local_point = fields.point("at", origin_point);
     fields.push("to");
     if (lua_isfunction(state, -1)) {
       const auto hand = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2,
@@ -305,7 +309,7 @@ int spring(lua_State* state) {
     } else {
       made.other = body_handle(state, -1, fields.what() + ": to")->body;
       lua_pop(state, 1);
-      made.other_local_point = fields.point("to_at", {0.0f, 0.0f});
+      made.other_local_point = fields.point("to_at", origin_point);
     }
     made.stiffness = fields.number("k", "N/m");
     const b2Vec2 far_end = made.other ? made.other->GetWorldPoint(made.other_local_point) : made.hand(0.0);
@@ -331,8 +335,8 @@ int rope(lua_State* state) {
     b2Body* to = body_handle(state, -1, fields.what() + ": to")->body;
     lua_pop(state, 2);
     if (!fields.has("over")) throw InvalidInput(fields.what() + ": over is missing: where the pulley is, as in over = {2, 1}");
-    const b2Vec2 pulley = fields.point("over", {});
-    const b2Vec2 a = from->GetWorldPoint(fields.point("at", {})), b = to->GetWorldPoint(fields.point("to_at", {}));
+    const b2Vec2 pulley = fields.point("over", origin_point);
+    const b2Vec2 a = from->GetWorldPoint(fields.point("at", origin_point)), b = to->GetWorldPoint(fields.point("to_at", origin_point));
     for (const b2Vec2 end : {a, b}) {
       if ((end - pulley).Length() < 0.05f) throw InvalidInput(fields.what() + ": each end must start at least 5 cm from the pulley");
     }
@@ -353,7 +357,7 @@ int force(lua_State* state) {
     fields.push("on");
     made.body = body_handle(state, -1, fields.what() + ": on")->body;
     lua_pop(state, 1);
-    made.local_point = fields.point("at", {0.0f, 0.0f});
+    made.local_point = fields.point("at", origin_point);
     if (fields.push_function("force")) {
       const auto push = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2,
                                          fields.what() + ": the force function (t -> fx, fy in N)");
@@ -363,7 +367,7 @@ int force(lua_State* state) {
       };
     } else {
       if (!fields.has("force")) throw InvalidInput(fields.what() + ": force is missing: {fx, fy} in N, or a function(t)");
-      const b2Vec2 constant = fields.point("force", {});
+      const b2Vec2 constant = fields.point("force", origin_point);
       made.force = [constant](double) { return constant; };
     }
     build.scene->add_applied_force(made);
@@ -378,10 +382,12 @@ int drive(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "drive");
     LessonBuild& build = build_of(state);
-    b2Body* body = body_handle(state, 1, "drive's first argument")->body;
+    Fields fields(state, 1, "drive", {"position", "angle"});
+    lua_rawgeti(state, 1, 1);
+    b2Body* body = body_handle(state, -1, "drive's first entry (the body to move, as in drive{ belt, position = ... })")->body;
+    lua_pop(state, 1);
     const std::string what = "drive '" + body_name(state, body) + "'";
     if (body->GetType() != b2_kinematicBody) throw InvalidInput(what + ": only a body of kind = \"kinematic\" can be driven");
-    Fields fields(state, 2, what, {"position", "angle"});
     VectorOfTime position;
     ScalarOfTime angle;
     if (fields.push_function("position")) {

@@ -1,0 +1,59 @@
+// Helpers for tests that run lesson scripts: a script written to a temporary file, and
+// running a lesson for a while.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::lessons {
+
+// A script in its own temporary file, removed when the test ends; rewrite() is what a
+// student's editor does on save.
+class ScriptFile {
+ public:
+  explicit ScriptFile(const std::string& text) {
+    static int count = 0;
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    path_ = (std::filesystem::temp_directory_path() /
+             ("frictionlab_" + test + "_" + std::to_string(::getpid()) + "_" + std::to_string(++count) + ".lua"))
+                .string();
+    rewrite(text);
+  }
+  ~ScriptFile() { std::filesystem::remove(path_); }
+  void rewrite(const std::string& text) const { std::ofstream(path_, std::ios::binary) << text; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// The opening every small test script shares.
+inline std::string with_heading(const std::string& body) {
+  return "lesson { title = \"test\", question = \"does it work?\" }\n" + body;
+}
+
+inline void run_for(Lesson& lesson, double seconds) {
+  const double end = lesson.scene().time() + seconds;
+  while (lesson.scene().time() < end - 0.5 * lesson.scene().frame_step()) lesson.step();
+}
+
+// The message of the InvalidInput (or ScriptError) `call` throws; fails the test when none.
+template <class Call>
+std::string error_of(Call call) {
+  try {
+    call();
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "no error was raised";
+  return "";
+}
+
+}  // namespace frictionlab::lessons

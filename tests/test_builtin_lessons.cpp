@@ -1,0 +1,105 @@
+// The built-in lessons meet their expectations at their defaults and on both sides of each
+// threshold they teach: breakaway with either block, sticking below and sliding above the
+// critical angle, tipping above and sliding below d/(2·mu_s).
+#include <gtest/gtest.h>
+
+#include "lesson_scripts.h"
+#include "lessons/runtime/catalog.h"
+#include "physics/closed_forms.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+struct Case {
+  std::string lesson;
+  std::map<std::string, std::string> settings;
+  std::string outcome;  // the word the lesson's first word expectation must show, if any
+};
+
+std::ostream& operator<<(std::ostream& out, const Case& c) {
+  out << c.lesson;
+  for (const auto& [name, value] : c.settings) out << ' ' << name << '=' << value;
+  return out;
+}
+
+class BuiltinLesson : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BuiltinLesson, MeetsEveryExpectation) {
+  const Case& c = GetParam();
+  Lesson lesson(resolve_lesson(c.lesson), c.settings);
+  run_for(lesson, lesson.duration());
+  const std::vector<ExpectationResult> rows = lesson.expectations();
+  ASSERT_FALSE(rows.empty());
+  for (const ExpectationResult& row : rows) {
+    EXPECT_TRUE(row.passes) << row.name << ": predicted " << (row.numeric ? std::to_string(row.predicted) : row.predicted_text)
+                            << ", measured " << (row.numeric ? std::to_string(row.measured) : row.measured_text)
+                            << ", tolerance " << row.tolerance;
+    if (!row.numeric && !c.outcome.empty()) {
+      EXPECT_EQ(row.measured_text, c.outcome) << row.name;
+    }
+  }
+}
+
+// atan(0.6) = 30.96°; atan(0.3) = 16.70°. d/(2 mu_s) = 0.5 m for the default box, 1.0 m when
+// it is 1 m wide.
+INSTANTIATE_TEST_SUITE_P(
+    AtTheirDefaultsAndAcrossTheirThresholds, BuiltinLesson,
+    ::testing::Values(Case{"spring_pull", {}, ""}, Case{"spring_pull", {{"block", "plastic"}}, ""},
+                      Case{"spring_pull", {{"k", "200"}, {"pull_speed", "0.2"}, {"mass", "2"}}, ""},
+                      Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, ""},
+                      Case{"incline", {}, "slides"}, Case{"incline", {{"angle", "29"}}, "sticks"},
+                      Case{"incline", {{"angle", "33"}}, "slides"},
+                      Case{"incline", {{"angle", "20"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "slides"},
+                      Case{"incline", {{"angle", "15"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "sticks"},
+                      Case{"incline", {{"angle", "45"}, {"c", "2"}, {"mass", "0.5"}}, "slides"},
+                      Case{"tipping_box", {}, "tips"}, Case{"tipping_box", {{"push_height", "0.45"}}, "slides"},
+                      Case{"tipping_box", {{"push_height", "0.55"}}, "tips"},
+                      Case{"tipping_box", {{"width", "1"}, {"push_height", "0.9"}}, "slides"},
+                      Case{"tipping_box", {{"mu_s", "0.8"}, {"mu_k", "0.6"}, {"push_height", "0.35"}}, "tips"}));
+
+TEST(BuiltinLessons, AreListedInTeachingOrderAndResolveToTheirScripts) {
+  EXPECT_EQ(builtin_lessons(), (std::vector<std::string>{"spring_pull", "incline", "tipping_box"}));
+  for (const std::string& name : builtin_lessons()) {
+    EXPECT_NO_THROW(Lesson{resolve_lesson(name)}) << name;
+  }
+  const std::string unknown = error_of([] { resolve_lesson("spring_push"); });
+  EXPECT_NE(unknown.find("unknown lesson 'spring_push'; built-in lessons: spring_pull, incline, tipping_box"),
+            std::string::npos) << unknown;
+}
+
+TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {
+  struct Expected {
+    std::string lesson, body;
+    std::vector<std::string> parameters, probes;
+  };
+  const Expected expected[] = {
+      {"spring_pull", "block", {"mu_s", "mu_k", "c", "mass", "k", "pull_speed", "block"}, {"spring_force", "friction_force"}},
+      {"incline", "block", {"angle", "mu_s", "mu_k", "c", "mass"}, {"distance", "speed"}},
+      {"tipping_box", "box", {"push_height", "push_rate", "mu_s", "mu_k", "width", "height", "mass"}, {"tilt", "slide"}},
+  };
+  for (const Expected& e : expected) {
+    Lesson lesson(resolve_lesson(e.lesson));
+    EXPECT_NO_THROW(lesson.scene().body(e.body)) << e.lesson;
+    for (const std::string& name : e.parameters) EXPECT_NO_THROW(lesson.parameter(name)) << e.lesson << ' ' << name;
+    for (const std::string& name : e.probes) EXPECT_NO_THROW(lesson.scene().probe(name)) << e.lesson << ' ' << name;
+  }
+}
+
+TEST(BuiltinLessons, TippingBoxTiltsAndSlidesAsItsProbesSay) {
+  // Pushed high it tips: the tilt grows past 10° and the front corner stays put; pushed low it
+  // slides: no tilt and the corner moves.
+  Lesson high(resolve_lesson("tipping_box"), {{"push_height", "0.8"}});
+  const double end = high.duration();
+  do {
+    high.step();
+  } while (high.scene().probe("tilt").history.back() < 10.0 && high.scene().time() < end);
+  EXPECT_GE(high.scene().probe("tilt").history.back(), 10.0);
+  EXPECT_LT(std::abs(high.scene().probe("slide").history.back()), 0.002);
+  Lesson low(resolve_lesson("tipping_box"), {{"push_height", "0.2"}});
+  run_for(low, low.duration());
+  EXPECT_LT(std::abs(low.scene().probe("tilt").history.back()), 1.0);
+  EXPECT_GT(low.scene().probe("slide").history.back(), 0.05);
+}
+
+}  // namespace
+}  // namespace frictionlab::lessons

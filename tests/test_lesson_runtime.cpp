@@ -1,0 +1,439 @@
+// The lesson runtime: every part of the script API builds what it says (checked against
+// closed forms where there is physics), parameters rebuild or apply live, the sandbox holds,
+// and a broken reload leaves the last good lesson running. The broken-script corpus
+// (test_lesson_errors) covers the error messages one by one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "assertions.h"
+#include "lesson_scripts.h"
+#include "physics/closed_forms.h"
+#include "physics/scenarios.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+constexpr double g = standard_gravity;
+constexpr double degrees = std::numbers::pi / 180.0;
+
+double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
+
+TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
+  ScriptFile script(R"(
+lesson { title = "Sliding", question = "How far?", duration = 2.5 }
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "x", unit = "m", function() return block.x end }
+probe { "vx", unit = "m/s", function() return block.vx end }
+plot { "where", y = { "x", "vx" } }
+plot { "phase", x = "x", y = "vx" }
+)");
+  Lesson lesson(script.path());
+  EXPECT_EQ(lesson.title(), "Sliding");
+  EXPECT_EQ(lesson.question(), "How far?");
+  EXPECT_EQ(lesson.duration(), 2.5);
+  ASSERT_EQ(lesson.plots().size(), 2u);
+  EXPECT_EQ(lesson.plots()[0].x, "time");
+  EXPECT_EQ(lesson.plots()[0].y, (std::vector<std::string>{"x", "vx"}));
+  EXPECT_EQ(lesson.plots()[1].x, "x");
+  EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
+}
+
+TEST(LessonRuntime, BodiesArePlacedRestingOnGroundAndInclines) {
+  ScriptFile script(with_heading(R"(
+material { "crate", density = 100 }
+pair { "crate", "wood", mu_s = 0.9, mu_k = 0.8 }
+pair { "crate", "crate", mu_s = 0.9, mu_k = 0.8 }
+local floor = ground { material = "wood", y = 0.5 }
+local slope = incline { "slope", material = "wood", angle = 20, length = 4, foot = { 2, 0.5 } }
+box { "on_floor", material = "crate", width = 0.4, height = 0.2, on = floor, at = -1 }
+box { "on_slope", material = "crate", width = 0.4, height = 0.2, on = slope, at = 2, mass = 3 }
+circle { "ball", material = "crate", radius = 0.1, on = floor, at = -2 }
+polygon { "wedge", material = "crate", points = { { 0, 0 }, { 0.5, 0 }, { 0, 0.3 } }, x = -3, y = 0.52, mass = 2 }
+)"));
+  Lesson lesson(script.path());
+  const Scene& scene = lesson.scene();
+  const b2Body* on_floor = scene.body("on_floor");
+  EXPECT_NEAR(on_floor->GetPosition().x, -1.0, 1e-6);
+  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1 + resting_gap, 1e-6);
+  const b2Body* on_slope = scene.body("on_slope");
+  EXPECT_NEAR(on_slope->GetAngle(), 20 * degrees, 1e-6);
+  EXPECT_NEAR(on_slope->GetMass(), 3.0, 1e-5);
+  // Its centre sits 2 m up the slope from the foot and h/2 + the gap above the surface.
+  const b2Vec2 along{static_cast<float>(std::cos(20 * degrees)), static_cast<float>(std::sin(20 * degrees))};
+  const b2Vec2 offset = on_slope->GetPosition() - b2Vec2{2.0f, 0.5f};
+  EXPECT_NEAR(b2Dot(offset, along), 2.0, 1e-5);
+  EXPECT_NEAR(b2Cross(along, offset), 0.1 + resting_gap, 1e-5);
+  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1 + b2_polygonRadius - b2_linearSlop, 1e-6);
+  EXPECT_NEAR(scene.body("wedge")->GetMass(), 2.0, 1e-5);
+  // Placed at rest where they belong, they stay put (mu_s 0.9 holds the block on 20°).
+  run_for(lesson, 1.0);
+  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1 + resting_gap, 1e-4);
+  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1 + b2_polygonRadius - b2_linearSlop, 1e-4);
+  EXPECT_NEAR(b2Dot(on_slope->GetPosition() - b2Vec2{2.0f, 0.5f}, along), 2.0, 1e-4);
+}
+
+TEST(LessonRuntime, ForcesConstantAndFunctionsOfTimeAccelerateAFrictionlessBlock) {
+  ScriptFile script(with_heading(R"(
+material { "puck", density = 100 }
+pair { "puck", "ice", mu_s = 0, mu_k = 0 }
+pair { "puck", "puck", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+local steady = box { "steady", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 2 }
+local ramped = box { "ramped", material = "puck", width = 0.2, height = 0.1, on = floor, at = 5, mass = 1 }
+local push = force { "push", on = steady, force = { 3, 0 } }
+force { "ramp", on = ramped, force = function(t) return 2 * t, 0 end }
+probe { "push_fx", unit = "N", function() return push.fx end }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 1.0);
+  // v = F t / m exactly for a constant force (Box2D's semi-implicit Euler is exact there);
+  // x = F t² / 2m to O(h), 0.4 % at 240 Hz.
+  const b2Body* steady = lesson.scene().body("steady");
+  EXPECT_NEAR(steady->GetLinearVelocity().x, 1.5, 1e-4);
+  EXPECT_RELATIVE(steady->GetPosition().x, 0.75, 0.005);
+  // F = 2t on 1 kg: v = t², reached to O(h) because the force is taken at each step's start.
+  EXPECT_RELATIVE(lesson.scene().body("ramped")->GetLinearVelocity().x, 1.0, 0.005);
+  EXPECT_EQ(probe_now(lesson, "push_fx"), 3.0);
+}
+
+TEST(LessonRuntime, SpringBetweenTwoBlocksOscillatesAtItsNaturalFrequency) {
+  // Two 1 kg blocks on ice joined by k = 50 N/m, stretched 0.1 m: the stretch swings as
+  // 0.1·cos(ωt) with ω = sqrt(k / (m/2)) = 10 rad/s, so it is −0.1 m half a period later.
+  ScriptFile script(with_heading(R"(
+material { "puck", density = 100 }
+pair { "puck", "ice", mu_s = 0, mu_k = 0 }
+pair { "puck", "puck", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+local left = box { "left", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 1 }
+local right = box { "right", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0.6, mass = 1 }
+local link = spring { "link", from = left, to = right, k = 50, rest_length = 0.5 }
+probe { "stretch", unit = "m", function() return link.length - 0.5 end }
+probe { "tension", unit = "N", function() return link.tension end }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_NEAR(lesson.scene().springs()[0].rest_length, 0.5, 1e-12);
+  run_for(lesson, std::numbers::pi / 10.0);
+  EXPECT_NEAR(probe_now(lesson, "stretch"), -0.1, 0.002);
+  EXPECT_NEAR(probe_now(lesson, "tension"), 50 * probe_now(lesson, "stretch"), 1e-9);
+}
+
+TEST(LessonRuntime, RopeOverAPulleyLetsAHangingWeightDragABlock) {
+  // A 2 kg block on a table, tied over a pulley to a hanging 1 kg weight: with mu_k = 0.2,
+  // a = (m2 − mu_k·m1)·g / (m1 + m2).
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.3, mu_k = 0.2 }
+local table_top = box { "table", material = "metal", kind = "static", width = 6, height = 1, x = 0, y = -0.5 }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, x = 0, y = 0.1 + resting_gap, mass = 2 }
+local weight = box { "weight", material = "wood", width = 0.2, height = 0.2, x = 3.2, y = -1, mass = 1 }
+rope { "rope", from = block, over = { 3.2, block.y }, to = weight }
+probe { "speed", unit = "m/s", function() return block.vx end }
+)"));
+  Lesson lesson(script.path());
+  ASSERT_EQ(lesson.ropes().size(), 1u);
+  EXPECT_EQ(lesson.ropes()[0].joint->GetType(), e_pulleyJoint);
+  run_for(lesson, 0.5);
+  const double early = probe_now(lesson, "speed");
+  run_for(lesson, 0.5);
+  const double acceleration = (probe_now(lesson, "speed") - early) / 0.5;
+  EXPECT_RELATIVE(acceleration, (1.0 - 0.2 * 2.0) * g / 3.0, 0.01);
+}
+
+TEST(LessonRuntime, DrivenBodyFollowsItsFunctionAndCarriesWhatStandsOnIt) {
+  ScriptFile script(with_heading(R"(
+pair { "rubber", "metal", mu_s = 1.0, mu_k = 0.9 }
+pair { "rubber", "rubber", mu_s = 1.0, mu_k = 0.9 }
+local floor = ground { material = "metal" }
+local belt = box { "belt", material = "rubber", kind = "kinematic", width = 4, height = 0.1, x = 0, y = 0.5 }
+local parcel = box { "parcel", material = "rubber", width = 0.3, height = 0.3, x = 0, y = 0.55 + 0.15 + resting_gap }
+drive { belt, position = function(t) return 0.5 * t, 0.5 end, angle = function(t) return 0 end }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 2.0);
+  EXPECT_NEAR(lesson.scene().body("belt")->GetPosition().x, 1.0, 1e-5);
+  EXPECT_NEAR(lesson.scene().body("parcel")->GetLinearVelocity().x, 0.5, 1e-3);
+}
+
+TEST(LessonRuntime, ContactReportsTheListenersStateAndForces) {
+  // A 2 kg block: N = m g. Pulled at 80 % of mu_s·N it sticks and friction balances the
+  // pull; at 120 % it slips and friction is mu_k·N.
+  for (const double share : {0.8, 1.2}) {
+    ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, mass = 2 }
+force { "pull", on = block, force = { )" + std::to_string(share * 0.5 * 2 * g) + R"(, 0 } }
+probe { "friction", unit = "N", function() return contact(block, floor).fx end }
+probe { "normal", unit = "N", function() return contact(block, floor).normal end }
+probe { "loads", unit = "N", function() local c = contact(block, floor) return c.load1 + c.load2 end }
+probe { "slipping", function() return contact(block, floor).state == "slipping" and 1 or 0 end }
+)"));
+    Lesson lesson(script.path());
+    run_for(lesson, 0.5);
+    EXPECT_RELATIVE(probe_now(lesson, "normal"), 2 * g, 1e-3);
+    EXPECT_RELATIVE(probe_now(lesson, "loads"), 2 * g, 1e-3);
+    if (share < 1.0) {
+      EXPECT_EQ(probe_now(lesson, "slipping"), 0.0);
+      EXPECT_RELATIVE(probe_now(lesson, "friction"), -share * 0.5 * 2 * g, 1e-3);
+    } else {
+      EXPECT_EQ(probe_now(lesson, "slipping"), 1.0);
+      EXPECT_RELATIVE(probe_now(lesson, "friction"), -0.4 * 2 * g, 1e-3);
+    }
+  }
+}
+
+TEST(LessonRuntime, EveryStepRunsOncePerFrameWithTheTime) {
+  ScriptFile script(with_heading(R"(
+local calls, last = 0, -1
+every_step(function(t) calls = calls + 1; last = t end)
+probe { "calls", function() return calls end }
+expect { "calls", predicted = 0, measured = function() return calls end, tolerance = 0 }
+expect { "time matches", predicted = true, measured = function() return math.abs(last - time()) < 1e-12 end }
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{120.0});
+  run_for(lesson, 0.5);
+  const std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_EQ(rows[0].measured, 60.0);
+  EXPECT_FALSE(rows[0].passes);  // predicted 0 on purpose: a failing row reads as failing
+  EXPECT_TRUE(rows[1].passes);
+  EXPECT_EQ(rows[1].measured_text, "true");
+  // Probes sample after the step, before every_step: the count they saw lags by one.
+  EXPECT_EQ(lesson.scene().probe("calls").history.back(), 59.0);
+  EXPECT_EQ(lesson.scene().probe("calls").history.size(), 60u);
+}
+
+TEST(LessonRuntime, ExpectationsTellNumbersWordsAndNotYetMeasured) {
+  ScriptFile script(with_heading(R"(
+local seen
+every_step(function(t) if t > 0.2 then seen = "slides" end end)
+expect { "outcome", predicted = "slides", measured = function() return seen end }
+expect { "number", unit = "N", predicted = function() return 10 end, measured = 10.4, tolerance = function() return 0.5 end }
+expect { "tight", unit = "N", predicted = 10, measured = 10.4, tolerance = 0.3 }
+)"));
+  Lesson lesson(script.path());
+  std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_FALSE(rows[0].measured_yet);
+  EXPECT_EQ(rows[0].measured_text, "not measured");
+  EXPECT_FALSE(rows[0].passes);
+  run_for(lesson, 0.5);
+  rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].passes);
+  EXPECT_FALSE(rows[0].numeric);
+  EXPECT_TRUE(rows[1].passes);
+  EXPECT_NEAR(rows[1].error(), 0.4, 1e-12);
+  EXPECT_EQ(rows[1].unit, "N");
+  EXPECT_FALSE(rows[2].passes);
+}
+
+TEST(LessonRuntime, TheoryInScriptsIsTheTheoryTheTestsCheck) {
+  ScriptFile script(with_heading(R"(
+local r = {}
+r[1] = theory.sticking_angle { mu_s = 1 }
+r[2] = theory.incline_acceleration { angle = 30, mu_k = 0.2 }
+r[3] = theory.incline_motion { angle = 40, mu_k = 0.3, c = 1.5, mass = 2, t = 0.7 }.distance
+r[4] = theory.tip_height { width = 0.5, mu_s = 0.5 }
+r[5] = theory.push_outcome { mass = 10, width = 0.5, push_height = 0.3, mu_s = 0.5 }.force
+r[6] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.6, mu_k = 0.4 }.period
+r[7] = theory.slide_to_rest { v0 = 3, mass = 1, mu_s = 0.5, mu_k = 0.4, c = 2, b = 0.5 }.distance
+r[8] = theory.disk_on_incline { angle = 30, mass = 1, radius = 0.1, mu_s = 0.1, mu_k = 0.08 }.acceleration
+r[9] = theory.disk_starts_rolling { v0 = 2, mass = 1, radius = 0.1, mu_k = 0.3 }.time
+r[10] = theory.stacked_blocks { top_mass = 1, bottom_mass = 2, push = 30,
+          between = { mu_s = 0.3, mu_k = 0.2 }, ground = { mu_s = 0.4, mu_k = 0.3 } }.top_acceleration
+for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
+)"));
+  Lesson lesson(script.path());
+  lesson.step();
+  auto r = [&](int i) { return probe_now(lesson, "r" + std::to_string(i)); };
+  using namespace theory;
+  EXPECT_NEAR(r(1), 45.0, 1e-12);
+  EXPECT_NEAR(r(2), incline_sliding_acceleration(30 * degrees, 0.2, g), 1e-12);
+  EXPECT_NEAR(r(3), incline_distance(40 * degrees, 0.3, 1.5, 2, g, 0.7), 1e-12);
+  EXPECT_NEAR(r(4), 0.5, 1e-12);
+  EXPECT_NEAR(r(5), push_outcome(10 * g, 0.5, 0.3, 0.5).force, 1e-12);
+  EXPECT_NEAR(r(6), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).period, 1e-12);
+  EXPECT_NEAR(r(7), slide_to_rest(3, 1, {0.5, 0.4, 2, 0.5}, g).distance, 1e-12);
+  EXPECT_NEAR(r(8), disk_on_incline(30 * degrees, 1, 0.1, 0.5 * 0.01, 0.1, 0.08, g).acceleration, 1e-12);
+  EXPECT_NEAR(r(9), disk_starts_rolling(2, 1, 0.1, 0.5 * 0.01, 0.3, g).time, 1e-12);
+  EXPECT_NEAR(r(10), stacked_blocks(1, 2, {0.3, 0.2, 0, 0}, {0.4, 0.3, 0, 0}, 30, g).top_acceleration, 1e-12);
+}
+
+const char* const parameter_script = R"(
+lesson { title = "parameters", question = "?" }
+local mass = parameter { "mass", 1.0, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }
+local kind = parameter { "kind", "wood", choices = { "wood", "rubber" } }
+pair { kind, "asphalt" }
+local floor = ground { material = "asphalt" }
+local block = box { "block", material = kind, width = 0.4, height = 0.2, on = floor, mass = mass }
+force { "pull", on = block, force = { 4, 0 } }
+probe { "x", unit = "m", function() return block.x end }
+)";
+
+TEST(LessonParameters, DefaultsOverridesChoicesAndPresets) {
+  ScriptFile script(parameter_script);
+  Lesson defaults(script.path());
+  EXPECT_EQ(defaults.parameter("mass").value, 1.0);
+  EXPECT_EQ(defaults.parameter("mass").shown(), "1 kg");
+  EXPECT_EQ(defaults.parameter("kind").shown(), "wood");
+  EXPECT_EQ(defaults.parameter("mu_s").value, 0.55);  // the wood–asphalt preset
+  EXPECT_TRUE(defaults.parameter("mass").structural);
+  EXPECT_FALSE(defaults.parameter("mu_s").structural);
+
+  Lesson chosen(script.path(), {{"mass", "2.5"}, {"kind", "rubber"}, {"mu_k", "0.3"}});
+  EXPECT_NEAR(chosen.scene().body("block")->GetMass(), 2.5, 1e-5);
+  EXPECT_EQ(chosen.parameter("kind").shown(), "rubber");
+  EXPECT_EQ(chosen.scene().pairs().pair("rubber", "asphalt").mu_k, 0.3);
+
+  const std::string range = error_of([&] { Lesson(script.path(), {{"mass", "50"}}); });
+  EXPECT_NE(range.find("--set mass = 50 kg is outside the allowed range [0.1, 10]"), std::string::npos) << range;
+  const std::string unknown = error_of([&] { Lesson(script.path(), {{"mas", "2"}}); });
+  EXPECT_NE(unknown.find("has no parameter of that name; its parameters: mass, kind, mu_s, mu_k, c, b"),
+            std::string::npos) << unknown;
+  const std::string choice = error_of([&] { Lesson(script.path(), {{"kind", "steel"}}); });
+  EXPECT_NE(choice.find("kind=steel: not one of the choices wood, rubber"), std::string::npos) << choice;
+  const std::string text = error_of([&] { Lesson(script.path(), {{"mass", "2kg"}}); });
+  EXPECT_NE(text.find("mass=2kg: not a number"), std::string::npos) << text;
+}
+
+TEST(LessonParameters, ACoefficientChangesTheRunningLessonAndAStructuralOneRebuildsIt) {
+  ScriptFile script(parameter_script);
+  Lesson lesson(script.path());
+  // 4 N against mu_s·N = 0.55·9.81 = 5.4 N: it holds.
+  lesson.set("mu_k", "0.3");
+  run_for(lesson, 0.5);
+  const double held = probe_now(lesson, "x");
+  EXPECT_NEAR(held, 0.0, 1e-6);
+  // Lowering mu_s below 4 N / N lets it go without starting over.
+  lesson.set("mu_s", "0.35");
+  EXPECT_NEAR(lesson.scene().time(), 0.5, 1e-9);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "asphalt").mu_s, 0.35);
+  run_for(lesson, 0.5);
+  EXPECT_GT(probe_now(lesson, "x"), held + 0.01);
+  // The mass is built into the scene: changing it starts over from t = 0.
+  lesson.set("mass", "3");
+  EXPECT_EQ(lesson.scene().time(), 0.0);
+  EXPECT_NEAR(lesson.scene().body("block")->GetMass(), 3.0, 1e-5);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "asphalt").mu_s, 0.35);  // kept through the rebuild
+  // A bad value changes nothing.
+  EXPECT_NE(error_of([&] { lesson.set("mu_s", "-1"); }).find("[0, 2]"), std::string::npos);
+  EXPECT_EQ(lesson.parameter("mu_s").value, 0.35);
+}
+
+TEST(LessonParameters, ACoefficientReadWhileBuildingRebuildsTheScene) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local held_by = param.mu_s * 9.81   -- read at the top: the scene depends on it
+local floor = ground { material = "metal" }
+box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_TRUE(lesson.parameter("mu_s").structural);
+  EXPECT_FALSE(lesson.parameter("mu_k").structural);
+  run_for(lesson, 0.25);
+  lesson.set("mu_s", "0.6");
+  EXPECT_EQ(lesson.scene().time(), 0.0);
+  lesson.step();
+  lesson.set("mu_k", "0.3");
+  EXPECT_GT(lesson.scene().time(), 0.0);
+}
+
+TEST(LessonReload, ABrokenEditKeepsTheLastGoodLessonRunning) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }
+probe { "x", unit = "m", function() return block.x end }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 0.1);
+  script.rewrite(with_heading("local floor = ground { material = \"metal\" \n"));  // unfinished edit
+  EXPECT_FALSE(lesson.reload());
+  EXPECT_NE(lesson.last_error().find(script.path() + ":3:"), std::string::npos) << lesson.last_error();
+  // Still the old lesson, still running.
+  EXPECT_NEAR(lesson.scene().time(), 0.1, 1e-9);
+  lesson.step();
+  EXPECT_GT(lesson.scene().time(), 0.1);
+  EXPECT_EQ(lesson.scene().probes().size(), 1u);
+  // The fixed file is picked up.
+  script.rewrite(R"(lesson { title = "fixed", question = "?" }
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+)");
+  EXPECT_TRUE(lesson.reload());
+  EXPECT_EQ(lesson.title(), "fixed");
+  EXPECT_EQ(lesson.scene().time(), 0.0);
+  EXPECT_TRUE(lesson.last_error().empty());
+}
+
+TEST(LessonReload, ValuesOfParametersThatAreGoneAreForgotten) {
+  ScriptFile script(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 2 }\n"));
+  Lesson lesson(script.path(), {{"mass", "1.5"}});
+  script.rewrite(with_heading("local w = parameter { \"width\", 1, min = 0.5, max = 2 }\n"));
+  EXPECT_TRUE(lesson.reload()) << lesson.last_error();
+  EXPECT_EQ(lesson.parameters().size(), 1u);
+  // And a value for a parameter the edit keeps is kept.
+  lesson.set("width", "0.75");
+  script.rewrite(with_heading("local w = parameter { \"width\", 1, min = 0.5, max = 2 }\nlocal x = 1\n"));
+  EXPECT_TRUE(lesson.reload());
+  EXPECT_EQ(lesson.parameter("width").value, 0.75);
+}
+
+TEST(LessonReload, AnErrorWhileRunningStopsTheLessonUntilItIsReset) {
+  ScriptFile script(with_heading(R"(
+probe { "fragile", function() if time() > 0.1 then return nil end return 1 end }
+)"));
+  Lesson lesson(script.path());
+  const std::string message = error_of([&] { run_for(lesson, 0.2); });
+  EXPECT_NE(message.find(script.path() + ":3: probe 'fragile' returned nil at t = 0.1"), std::string::npos) << message;
+  EXPECT_TRUE(lesson.failed());
+  const double stopped_at = lesson.scene().time();
+  lesson.step();  // does nothing: the lesson waits for a reset or a reload
+  EXPECT_EQ(lesson.scene().time(), stopped_at);
+  lesson.reset();
+  EXPECT_FALSE(lesson.failed());
+  EXPECT_EQ(lesson.scene().time(), 0.0);
+}
+
+TEST(LessonSandbox, NothingOutsideTheScriptIsReachable) {
+  ScriptFile script(with_heading(R"(
+for _, name in ipairs { "io", "os", "package", "debug", "require", "load", "loadfile", "dofile", "collectgarbage" } do
+  if _ENV[name] ~= nil then error(name .. " is reachable") end
+end
+if math.random ~= nil or math.randomseed ~= nil then error("math.random is reachable") end
+assert(string.format("%.1f", math.sqrt(2)) == "1.4" and table.concat({ 1, 2 }, ",") == "1,2" and utf8.char(956) == "μ")
+)"));
+  EXPECT_NO_THROW(Lesson{script.path()});
+}
+
+TEST(LessonSandbox, BinaryChunksAreRefused) {
+  ScriptFile script(std::string("\x1bLua\x54\x00", 6) + "rest");
+  const std::string message = error_of([&] { Lesson{script.path()}; });
+  EXPECT_NE(message.find("binary chunk"), std::string::npos) << message;
+}
+
+TEST(LessonSandbox, AnEndlessLoopAndARunawayTableEndWithAnError) {
+  ScriptFile loop(with_heading("local n = 0\nwhile true do n = n + 1 end\n"));
+  const std::string looping = error_of([&] { Lesson{loop.path()}; });
+  EXPECT_NE(looping.find(loop.path() + ":3: the script ran for more than 50 million instructions"), std::string::npos)
+      << looping;
+  ScriptFile hoard(with_heading("local t = {}\nfor i = 1, 1e9 do t[i] = { i } end\n"));
+  const std::string hoarding = error_of([&] { Lesson{hoard.path()}; });
+  EXPECT_NE(hoarding.find(hoard.path() + ":3: the script uses more than 64 MB of memory"), std::string::npos)
+      << hoarding;
+  ScriptFile huge(with_heading("local s = string.rep('x', 200 * 1024 * 1024)\n"));
+  const std::string at_once = error_of([&] { Lesson{huge.path()}; });
+  EXPECT_NE(at_once.find("MB of memory"), std::string::npos) << at_once;
+}
+
+TEST(LessonSandbox, AnEndlessLoopWhileRunningStopsTheLessonNotTheProgram) {
+  ScriptFile script(with_heading("every_step(function(t) if t > 0.05 then while true do end end end)\n"));
+  Lesson lesson(script.path());
+  const std::string message = error_of([&] { run_for(lesson, 0.1); });
+  EXPECT_NE(message.find(script.path() + ":2: the script ran for more than"), std::string::npos) << message;
+  EXPECT_TRUE(lesson.failed());
+}
+
+}  // namespace
+}  // namespace frictionlab::lessons
