@@ -32,7 +32,10 @@ probe { "distance", unit = "m", function()
   return (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
 end }
 probe { "speed", unit = "m/s", function() return block.vx * downhill_x + block.vy * downhill_y end }
-probe { "friction_force", unit = "N", function() return contact(block, slope).friction end }
+probe { "friction_force", unit = "N", function()  -- dry friction and drag, up the slope
+  local touch = contact(block, slope)
+  return -((touch.fx + touch.drag_x) * downhill_x + (touch.fy + touch.drag_y) * downhill_y)
+end }
 probe { "normal_force", unit = "N", function() return contact(block, slope).normal end }
 
 plot { "Motion down the slope", y = { "distance", "speed" } }

@@ -37,7 +37,11 @@ local pull = spring { "spring", from = block, k = k, rest_length = rest_length,
 
 -- Probes and plots ------------------------------------------------------------------------
 probe { "spring_force", unit = "N", function() return pull.force_x end }
-probe { "friction_force", unit = "N", function() return contact(block, bench).fx end }
+-- Friction from the bench: the dry part and, when c or b is set, the drag.
+probe { "friction_force", unit = "N", function()
+  local touch = contact(block, bench)
+  return touch.fx + touch.drag_x
+end }
 probe { "block_speed", unit = "m/s", function() return block.vx end }
 
 plot { "Forces on the block", y = { "spring_force", "friction_force" } }

@@ -54,7 +54,8 @@ struct LessonBuild {
   Parameter* find_parameter(const std::string& name);
   std::string parameter_names() const;
   // Makes a preset material (and its preset pairs with materials already here) available the
-  // first time a script names it. Unknown names are left for the scene to report.
+  // first time a script names it. Throws InvalidInput for a name that is neither declared nor
+  // a preset, listing both.
   void use_material(const std::string& name);
 
   // Calls the Lua function kept at `reference` with numeric arguments, under the sandbox's
@@ -87,6 +88,8 @@ class Fields {
   bool has(const char* key);
   double number(const char* key, const char* unit);
   double number(const char* key, const char* unit, double fallback);
+  // Required, and within [low, high] (or (low, high]).
+  double number_in(const char* key, const char* unit, double low, double high, bool low_open = false);
   double number_in(const char* key, const char* unit, double fallback, double low, double high,
                    bool low_open = false);
   std::string text(const char* key, const std::string& fallback);

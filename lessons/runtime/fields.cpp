@@ -20,6 +20,10 @@ Fields::Fields(lua_State* state, int index, std::string call, std::initializer_l
   if (!lua_istable(state_, index_)) {
     throw InvalidInput(call_ + " takes a table, as in " + call_ + "{ ... }; got " + describe(state_, index_));
   }
+  // Named from the start, so that even a typo in a later field says which box it is in.
+  lua_rawgeti(state_, index_, 1);
+  if (lua_type(state_, -1) == LUA_TSTRING) what_ = call_ + " '" + lua_tostring(state_, -1) + "'";
+  lua_pop(state_, 1);
   // Refuse fields the call does not know, listing the ones it does.
   lua_pushnil(state_);
   while (lua_next(state_, index_) != 0) {
@@ -32,7 +36,7 @@ Fields::Fields(lua_State* state, int index, std::string call, std::initializer_l
         std::string list;
         for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
         lua_pop(state_, 1);
-        throw InvalidInput(call_ + ": unknown field '" + key + "'; it takes " + list);
+        throw InvalidInput(what_ + ": unknown field '" + key + "'; it takes " + list);
       }
     }
   }
@@ -74,6 +78,13 @@ double Fields::number(const char* key, const char* unit) {
 
 double Fields::number(const char* key, const char* unit, double fallback) {
   return has(key) ? number(key, unit) : fallback;
+}
+
+double Fields::number_in(const char* key, const char* unit, double low, double high, bool low_open) {
+  const double value = number(key, unit);
+  const std::string spaced = *unit ? std::string(" ") + unit : "";
+  validation::require_in_range(what_ + ": " + key, value, low, high, low_open, spaced.c_str());
+  return value;
 }
 
 double Fields::number_in(const char* key, const char* unit, double fallback, double low, double high,

@@ -61,7 +61,18 @@ std::string LessonBuild::parameter_names() const {
 void LessonBuild::use_material(const std::string& name) {
   PairTable& table = scene->pairs();
   const int preset = presets.find_material(name);
-  if (table.find_material(name) >= 0 || preset < 0) return;
+  if (table.find_material(name) >= 0) return;
+  if (preset < 0) {
+    std::string known;
+    for (int id = 0; id < table.material_count(); ++id) known += (known.empty() ? "" : ", ") + table.material(id).name;
+    std::string presets_named;
+    for (int id = 0; id < presets.material_count(); ++id) {
+      presets_named += (presets_named.empty() ? "" : ", ") + presets.material(id).name;
+    }
+    throw InvalidInput("unknown material '" + name + "'; declare it first with material{ \"" + name +
+                       "\", density = ... }, or use a preset: " + presets_named +
+                       (known.empty() ? "" : "; declared here: " + known));
+  }
   table.add_material(presets.material(preset));
   for (int id = 0; id < table.material_count(); ++id) {
     const int other = presets.find_material(table.material(id).name);

@@ -190,8 +190,6 @@ int pair(lua_State* state) {
     }
     const std::string label = names[0] + "/" + names[1];
     for (const std::string& name : names) build.use_material(name);
-    build.scene->pairs().material_id(names[0]);  // unknown material: the error lists the known ones
-    build.scene->pairs().material_id(names[1]);
     FrictionPair values;
     if (fields.has("mu_s") || fields.has("mu_k")) {
       if (!fields.has("mu_s") || !fields.has("mu_k")) {
@@ -210,7 +208,8 @@ int pair(lua_State* state) {
     const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
     for (int i = 0; i < 4; ++i) {
       const Coefficient& coefficient = coefficients[i];
-      *slots[i] = fields.number(coefficient.key, coefficient.unit, *slots[i]);
+      // The same range as its slider, so the default a script gives can also be set back.
+      *slots[i] = fields.number_in(coefficient.key, coefficient.unit, *slots[i], 0.0, coefficient.max);
       Parameter declared;
       declared.name = prefix + coefficient.key;
       declared.unit = coefficient.unit;

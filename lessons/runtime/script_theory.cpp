@@ -17,9 +17,10 @@ void set_number(lua_State* state, const char* key, double value) {
   lua_setfield(state, -2, key);
 }
 
+// mu_s may be left out where only sliding matters (it then equals mu_k).
 FrictionPair pair_from(Fields& fields) {
-  return {fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("c", "N·s/m", 0.0),
-          fields.number("b", "N·s²/m²", 0.0)};
+  const double mu_k = fields.number("mu_k", "");
+  return {fields.number("mu_s", "", mu_k), mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
 }
 
 int sticking_angle(lua_State* state) {
@@ -33,7 +34,7 @@ int sticking_angle(lua_State* state) {
 int incline_acceleration(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.incline_acceleration", {"angle", "mu_k", "g"});
-    lua_pushnumber(state, theory::incline_sliding_acceleration(fields.number("angle", "°") * degrees,
+    lua_pushnumber(state, theory::incline_sliding_acceleration(fields.number_in("angle", "°", 0.0, 90.0) * degrees,
                                                                fields.number("mu_k", ""),
                                                                fields.number("g", "m/s²", standard_gravity)));
     return 1;
@@ -43,7 +44,7 @@ int incline_acceleration(lua_State* state) {
 int incline_motion(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "mass", "t", "g"});
-    const double angle = fields.number("angle", "°") * degrees, mu_k = fields.number("mu_k", "");
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees, mu_k = fields.number("mu_k", "");
     const double c = fields.number("c", "N·s/m", 0.0), mass = fields.number("mass", "kg");
     const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s");
     lua_createtable(state, 0, 2);
@@ -111,7 +112,7 @@ int disk_on_incline(lua_State* state) {
     Fields fields(state, 1, "theory.disk_on_incline", {"angle", "mass", "radius", "inertia", "mu_s", "mu_k", "g"});
     const double mass = fields.number("mass", "kg"), radius = fields.number("radius", "m");
     const theory::DiskOnIncline disk = theory::disk_on_incline(
-        fields.number("angle", "°") * degrees, mass, radius,
+        fields.number_in("angle", "°", 0.0, 90.0) * degrees, mass, radius,
         fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius), fields.number("mu_s", ""),
         fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
     lua_createtable(state, 0, 4);

@@ -15,6 +15,7 @@ constexpr double degrees = std::numbers::pi / 180.0;
 const char* const body_type = "frictionlab.body";
 const char* const spring_type = "frictionlab.spring";
 const char* const force_type = "frictionlab.force";
+const char* const contact_type = "frictionlab.contact";
 
 // A body as the script holds it. Ground and inclines also carry their surface, a line along
 // which `on = ..., at = s` places things: origin, and the unit direction s grows in.
@@ -161,7 +162,7 @@ int circle(lua_State* state) {
                                        "spin", "fixed_rotation"});
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
-    const double radius = fields.number_in("radius", "m", 0.0, 0.01, 1000.0);
+    const double radius = fields.number_in("radius", "m", 0.01, 1000.0);
     // A circle rests closer than a polygon: only the polygon has a skin.
     const Placement where = place(state, fields, static_cast<float>(radius) + b2_polygonRadius - b2_linearSlop);
     b2BodyDef definition;
@@ -253,7 +254,7 @@ int incline(lua_State* state) {
     Fields fields(state, 1, "incline", {"material", "angle", "length", "foot"});
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
-    const double angle = fields.number_in("angle", "°", 0.0, 0.0, 80.0, true) * degrees;
+    const double angle = fields.number_in("angle", "°", 0.0, 80.0, true) * degrees;
     const double length = fields.number_in("length", "m", 4.0, 0.1, 1000.0);
     if (length * std::sin(angle) < 0.02) {
       throw InvalidInput(fields.what() + ": the wedge would be less than 2 cm high; make it steeper or longer");
@@ -429,6 +430,7 @@ int contact(lua_State* state) {
     lua_pushstring(state, state_name);
     lua_setfield(state, -2, "state");
     const b2Vec2 friction = record ? record->friction_on(a) : b2Vec2{0, 0};
+    const b2Vec2 drag = record ? record->side(a) * static_cast<float>(record->damping_force) * record->tangent() : b2Vec2{0, 0};
     const b2Vec2 normal = record ? record->normal_on(a) : b2Vec2{0, 0};
     set_field(state, "friction", friction.Length());
     set_field(state, "fx", friction.x);
@@ -436,10 +438,14 @@ int contact(lua_State* state) {
     set_field(state, "normal", normal.Length());
     set_field(state, "nx", normal.x);
     set_field(state, "ny", normal.y);
+    set_field(state, "drag", drag.Length());
+    set_field(state, "drag_x", drag.x);
+    set_field(state, "drag_y", drag.y);
     set_field(state, "sliding_speed", record ? std::abs(record->sliding_velocity) : 0.0);
     set_field(state, "points", record ? record->point_count : 0);
     set_field(state, "load1", record ? record->point_normal_force[0] : 0.0);
     set_field(state, "load2", record ? record->point_normal_force[1] : 0.0);
+    luaL_setmetatable(state, contact_type);
     return 1;
   });
 }
@@ -519,6 +525,15 @@ int force_index(lua_State* state) {
   });
 }
 
+// Only reached for a field the contact table does not have: a misspelt name is an error, not nil.
+int contact_index(lua_State* state) {
+  return guarded(state, [&]() -> int {
+    const std::string key = lua_type(state, 2) == LUA_TSTRING ? lua_tostring(state, 2) : describe(state, 2);
+    throw InvalidInput("a contact has no field '" + key + "'; it has state, normal, nx, ny, friction, fx, fy, drag, "
+                       "drag_x, drag_y, sliding_speed, points, load1 and load2");
+  });
+}
+
 int body_text(lua_State* state) {
   lua_pushfstring(state, "body '%s'", body_name(state, static_cast<BodyHandle*>(lua_touserdata(state, 1))->body).c_str());
   return 1;
@@ -551,6 +566,7 @@ void register_world_api(lua_State* state) {
   lua_pop(state, 1);
   add_type(state, spring_type, spring_index);
   add_type(state, force_type, force_index);
+  add_type(state, contact_type, contact_index);
 }
 
 }  // namespace frictionlab::lessons
