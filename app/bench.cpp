@@ -2,6 +2,7 @@
 // problem trades against CPU time for each treatment and for the reduced models.
 // Figures are measured here and reported, never asserted: the machines are shared.
 #include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <functional>
 #include <ostream>
@@ -9,6 +10,8 @@
 
 #include "app/modes.h"
 #include "app/table.h"
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/lesson.h"
 #include "physics/reduced_model.h"
 
 namespace frictionlab {
@@ -143,6 +146,43 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out) {
   return csv.str();
 }
 
+// How many times faster than real time each built-in lesson runs headless at 240 Hz, and the
+// share of the stepping spent inside the script's Lua (hands, forces, probes, every_step).
+std::string lesson_speed(bool quick, std::ostream& out) {
+  std::ostringstream csv;
+  csv << "lesson,hz,simulated_s,cpu_ms_per_simulated_s,times_real_time,script_share\n";
+  std::vector<std::vector<std::string>> table{
+      {"lesson", "simulated (s)", "CPU ms per simulated s", "× real time", "script share of step time"}};
+  for (const std::string& name : lessons::builtin_lessons()) {
+    std::vector<double> costs, shares;
+    double simulated = 0.0;
+    // Odd repeats time the speed alone; even ones also clock every call into Lua for the share.
+    for (int r = 0; r < (quick ? 2 : 10); ++r) {
+      const bool share_pass = r % 2 == 1;
+      lessons::Lesson lesson(lessons::resolve_lesson(name));
+      lesson.time_script(share_pass);
+      simulated = lesson.duration();
+      const auto wall_start = std::chrono::steady_clock::now();
+      const double cpu_start = cpu_seconds();
+      while (lesson.scene().time() < simulated - 0.5 * lesson.scene().frame_step()) lesson.step();
+      const double cpu = cpu_seconds() - cpu_start;
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      if (share_pass) {
+        shares.push_back(lesson.seconds_in_script() / wall);
+      } else {
+        costs.push_back(cpu / simulated);
+      }
+    }
+    const double cost = median(costs), share = median(shares);
+    csv << name << ",240," << simulated << ',' << cost * 1e3 << ',' << 1.0 / cost << ',' << share << '\n';
+    table.push_back({name, format_number(simulated), format_number(cost * 1e3, 3), format_number(1.0 / cost, 3),
+                     format_number(share * 100.0, 2) + " %"});
+  }
+  out << "\nBuilt-in lessons, headless at 240 Hz (median of " << (quick ? 1 : 5) << " runs each)\n";
+  print_table(out, table);
+  return csv.str();
+}
+
 }  // namespace
 
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
@@ -163,8 +203,11 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
 
   const std::string cost = listener_cost(quick, out);
   const std::string accuracy = stick_slip_accuracy(quick, out);
-  write_files_atomically({{directory + "/listener_cost.csv", cost}, {directory + "/stick_slip_accuracy.csv", accuracy}});
-  out << "\nwrote " << directory << "/listener_cost.csv and " << directory << "/stick_slip_accuracy.csv\n";
+  const std::string speed = lesson_speed(quick, out);
+  write_files_atomically({{directory + "/listener_cost.csv", cost},
+                          {directory + "/stick_slip_accuracy.csv", accuracy},
+                          {directory + "/lesson_speed.csv", speed}});
+  out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv and lesson_speed.csv in " << directory << "\n";
   return 0;
 }
 

@@ -32,11 +32,9 @@ probe { "distance", unit = "m", function()
   return (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
 end }
 probe { "speed", unit = "m/s", function() return block.vx * downhill_x + block.vy * downhill_y end }
-probe { "friction_force", unit = "N", function()  -- dry friction and drag, up the slope
-  local touch = contact(block, slope)
-  return -((touch.fx + touch.drag_x) * downhill_x + (touch.fy + touch.drag_y) * downhill_y)
-end }
-probe { "normal_force", unit = "N", function() return contact(block, slope).normal end }
+local touch = contact(block, slope)
+probe { "friction_force", unit = "N", read = { touch, "friction" } }  -- dry friction and drag
+probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
 plot { "Motion down the slope", y = { "distance", "speed" } }
 plot { "Forces from the slope", y = { "friction_force", "normal_force" } }

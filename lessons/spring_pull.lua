@@ -36,13 +36,12 @@ local pull = spring { "spring", from = block, k = k, rest_length = rest_length,
                       to = function(t) return hand_x + pull_speed * t, hand_y end }
 
 -- Probes and plots ------------------------------------------------------------------------
-probe { "spring_force", unit = "N", function() return pull.force_x end }
--- Friction from the bench: the dry part and, when c or b is set, the drag.
-probe { "friction_force", unit = "N", function()
-  local touch = contact(block, bench)
-  return touch.fx + touch.drag_x
-end }
-probe { "block_speed", unit = "m/s", function() return block.vx end }
+-- The contact between block and bench, read whenever its fields are read. Its friction is
+-- everything the bench does along itself: the dry part and, when c or b is set, the drag.
+local touch = contact(block, bench)
+probe { "spring_force", unit = "N", read = { pull, "force_x" } }
+probe { "friction_force", unit = "N", read = { touch, "fx" } }
+probe { "block_speed", unit = "m/s", read = { block, "vx" } }
 
 plot { "Forces on the block", y = { "spring_force", "friction_force" } }
 plot { "Friction against the pull", x = "spring_force", y = { "friction_force" } }
@@ -53,7 +52,7 @@ plot { "Friction against the pull", x = "spring_force", y = { "friction_force" }
 local breakaways, restick_forces = {}, {}
 local was, pull_before = "sticking", 0
 every_step(function(t)
-  local now = contact(block, bench).state
+  local now = touch.state
   if was == "sticking" and now == "slipping" then
     breakaways[#breakaways + 1] = { time = t - step_length(), force = pull_before }
   elseif was == "slipping" and now == "sticking" then

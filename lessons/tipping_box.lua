@@ -42,10 +42,11 @@ local push = force { "push", on = crate, at = { -width / 2, push_height - height
 local corner_x = crate:world_point(width / 2, -height / 2)
 
 -- Probes and plots ------------------------------------------------------------------------
-probe { "push", unit = "N", function() return push.fx end }
+local touch = contact(crate, floor)
+probe { "push", unit = "N", read = { push, "fx" } }
 probe { "tilt", unit = "°", function() return -crate.angle end }  -- pushed to the right, it tips clockwise
 probe { "slide", unit = "m", function() return (crate:world_point(width / 2, -height / 2)) - corner_x end }
-probe { "friction_force", unit = "N", function() return contact(crate, floor).friction end }
+probe { "friction_force", unit = "N", read = { touch, "friction" } }
 
 plot { "What the box does", y = { "tilt" } }
 plot { "Friction against the push", x = "push", y = { "friction_force" } }
@@ -56,7 +57,6 @@ plot { "Friction against the push", x = "push", y = { "friction_force" } }
 local outcome, outcome_push
 every_step(function(t)
   if outcome then return end
-  local touch = contact(crate, floor)
   if touch.state == "none" then
     outcome = "tips"
   elseif touch.state == "slipping" then

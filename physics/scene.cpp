@@ -289,6 +289,7 @@ void Scene::step() {
   time_ = static_cast<double>(frame_) * frame_step();
   update_ledger_state();
   times_.push_back(time_);
+  if (before_probes_) before_probes_();
   for (Probe& probe : probes_) probe.history.push_back(probe.measure());
 }
 

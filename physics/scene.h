@@ -108,6 +108,9 @@ class Scene {
   // A kinematic body follows position(t) and angle(t) exactly at every step.
   void drive(b2Body* body, VectorOfTime position, ScalarOfTime angle);
   void add_probe(const std::string& name, std::function<double()> measure);
+  // Runs after each frame, just before the probes sample: a script runtime measures all its
+  // probes there in one go, and they then only hand over the values.
+  void set_before_probes(std::function<void()> work) { before_probes_ = std::move(work); }
 
   // One frame: 1/hz of simulated time in `substeps` world steps.
   void step();
@@ -155,6 +158,7 @@ class Scene {
   std::vector<AppliedForce> applied_;
   std::vector<Driver> drivers_;
   std::vector<Probe> probes_;
+  std::function<void()> before_probes_;
   std::vector<double> times_;
   struct MaterialUse {
     int id;

@@ -185,6 +185,35 @@ probe { "slipping", function() return contact(block, floor).state == "slipping" 
   }
 }
 
+TEST(LessonRuntime, ProbesReadByTheRuntimeMatchTheScriptsOwnReading) {
+  // A 1 kg block sliding with mu_k = 0.4 and c = 2 N·s/m: the contact's friction on it is all
+  // the surface does along itself, −(mu_k·m·g + c·v), and its drag part is −c·v.
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4, c = 2 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, mass = 1, velocity = { 3, 0 } }
+local touch = contact(block, floor)
+probe { "fx_read", unit = "N", read = { touch, "fx" } }
+probe { "fx_lua", unit = "N", function() return touch.fx end }
+probe { "drag_read", unit = "N", read = { touch, "drag_x" } }
+probe { "vx_read", unit = "m/s", read = { block, "vx" } }
+probe { "vx_lua", unit = "m/s", function() return block.vx end }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 0.25);
+  EXPECT_EQ(probe_now(lesson, "fx_read"), probe_now(lesson, "fx_lua"));
+  EXPECT_EQ(probe_now(lesson, "vx_read"), probe_now(lesson, "vx_lua"));
+  const double v = probe_now(lesson, "vx_read");
+  ASSERT_GT(v, 1.0);
+  // The drag acted over the step just taken: c times a speed between the step's end speed v
+  // and its start speed v + h·a.
+  const double h = 1.0 / 240.0, a = 0.4 * g + 2.0 * v;
+  const double drag = -probe_now(lesson, "drag_read");
+  EXPECT_GE(drag, 2.0 * v);
+  EXPECT_LE(drag, 2.0 * (v + h * a));
+  EXPECT_RELATIVE(-probe_now(lesson, "fx_read"), 0.4 * g + drag, 1e-4);
+}
+
 TEST(LessonRuntime, EveryStepRunsOncePerFrameWithTheTime) {
   ScriptFile script(with_heading(R"(
 local calls, last = 0, -1
@@ -398,7 +427,8 @@ probe { "fragile", function() if time() > 0.1 then return nil end return 1 end }
 
 TEST(LessonSandbox, NothingOutsideTheScriptIsReachable) {
   ScriptFile script(with_heading(R"(
-for _, name in ipairs { "io", "os", "package", "debug", "require", "load", "loadfile", "dofile", "collectgarbage" } do
+for _, name in ipairs { "io", "os", "package", "debug", "require", "load", "loadfile", "dofile", "collectgarbage",
+                        "pcall", "xpcall", "coroutine" } do
   if _ENV[name] ~= nil then error(name .. " is reachable") end
 end
 if math.random ~= nil or math.randomseed ~= nil then error("math.random is reachable") end

@@ -2,6 +2,7 @@
 // Not for use outside lessons/runtime/.
 #pragma once
 
+#include <array>
 #include <initializer_list>
 #include <map>
 #include <memory>
@@ -16,6 +17,9 @@ namespace frictionlab::lessons {
 struct ProbeInfo {
   std::string name;
   std::string unit;
+  int function = LUA_NOREF;  // LUA_NOREF: read by the runtime itself (probe{ read = ... })
+  std::string what;    // "probe 'name'", made once for error messages
+  double value = 0.0;  // measured after the latest frame
 };
 
 // Each part is a Lua value kept in the registry: a constant or a function to call.
@@ -26,6 +30,16 @@ struct Expectation {
   int predicted = LUA_NOREF;
   int measured = LUA_NOREF;
   int tolerance = LUA_NOREF;
+};
+
+// The last two answers of a script's function of time. The scene asks for a hand's position
+// at t and t + h several times a step (force, work, energy, probes); asking Lua once each
+// keeps the script's share of the step small.
+struct RememberedValues {
+  double times[2] = {0.0, 0.0};
+  std::array<double, 2> values[2] = {};
+  int filled = 0;
+  int next = 0;
 };
 
 struct LessonBuild {
@@ -48,7 +62,11 @@ struct LessonBuild {
   std::vector<ProbeInfo> probes;
   std::vector<Expectation> expectations;
   std::vector<int> every_step;
+  bool lua_probes = false;  // some probe is a Lua function
   std::vector<Rope> ropes;
+  std::vector<std::shared_ptr<RememberedValues>> remembered;
+  // The metatables of the handle types (body, spring, force, contact), by HandleType.
+  const void* metatables[4] = {nullptr, nullptr, nullptr, nullptr};  // forgotten when a parameter changes live
   bool building = true;
 
   Parameter* find_parameter(const std::string& name);
@@ -58,6 +76,10 @@ struct LessonBuild {
   // a preset, listing both.
   void use_material(const std::string& name);
 
+  // After each frame: every probe, then every every_step function, in one protected call
+  // (one per function would cost more than the physics of a small lesson).
+  void after_frame();
+
   // Calls the Lua function kept at `reference` with numeric arguments, under the sandbox's
   // budgets; its `results` values are left on the stack for the caller to read and pop.
   void call(int reference, std::initializer_list<double> arguments, int results);
@@ -65,7 +87,8 @@ struct LessonBuild {
   std::string defined_at(int reference);
   // Reads the `count` numbers a kept function returned (on the stack top) and pops them;
   // throws ScriptError placed at the function's definition when they are not finite numbers.
-  std::vector<double> numbers_returned(int reference, int count, const std::string& what);
+  // Fills `numbers` with them.
+  void numbers_returned(int reference, int count, const std::string& what, double* numbers);
   // Pushes the value kept at `reference`, calling it first when it is a function.
   void push_value(int reference);
 };
@@ -116,6 +139,10 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
 void register_lesson_api(lua_State* state);
 void register_world_api(lua_State* state);
 void register_theory_api(lua_State* state);
+
+// A number read from a handle without Lua, for probe{ read = { handle, "field" } }. The
+// table is at `index`; throws InvalidInput naming `what` and the handle's fields.
+std::function<double()> reading(lua_State* state, int index, const std::string& what);
 
 // Reads a body handle (what box{}, ground{} and the others return); throws naming `what`.
 b2Body* body_argument(lua_State* state, int index, const std::string& what);

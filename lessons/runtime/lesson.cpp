@@ -11,9 +11,6 @@
 namespace frictionlab::lessons {
 namespace {
 
-// The registry slot that leads from a Lua state back to its build.
-const char build_key = 0;
-
 std::string format_value(double value) {
   std::ostringstream text;
   text << value;
@@ -27,19 +24,14 @@ std::string Parameter::shown() const {
   return format_value(value) + (unit.empty() ? "" : " " + unit);
 }
 
-LessonBuild& build_of(lua_State* state) {
-  lua_rawgetp(state, LUA_REGISTRYINDEX, &build_key);
-  auto* build = static_cast<LessonBuild*>(lua_touserdata(state, -1));
-  lua_pop(state, 1);
-  return *build;
-}
+LessonBuild& build_of(lua_State* state) { return *static_cast<LessonBuild*>(sandbox_of(state).owner()); }
 
 LessonBuild::LessonBuild(std::string chunk, const std::map<std::string, std::string>& given, StepSettings step)
     : chunk_name(std::move(chunk)), overrides(given), settings(step), presets(preset_table()) {
   scene = std::make_unique<Scene>(PairTable{}, settings);
   lua_State* state = sandbox.state();
-  lua_pushlightuserdata(state, this);
-  lua_rawsetp(state, LUA_REGISTRYINDEX, &build_key);
+  sandbox.set_owner(this);
+  scene->set_before_probes([this] { after_frame(); });
   register_lesson_api(state);
   register_world_api(state);
   register_theory_api(state);
@@ -80,6 +72,37 @@ void LessonBuild::use_material(const std::string& name) {
   }
 }
 
+namespace {
+
+// The body of LessonBuild::after_frame, run inside one protected call: plain calls here are
+// protected by it.
+int measure_frame(lua_State* state) {
+  return guarded(state, [&] {
+    LessonBuild& build = build_of(state);
+    for (ProbeInfo& probe : build.probes) {
+      if (probe.function == LUA_NOREF) continue;  // the scene reads it itself
+      lua_rawgeti(state, LUA_REGISTRYINDEX, probe.function);
+      lua_call(state, 0, 1);
+      build.numbers_returned(probe.function, 1, probe.what, &probe.value);
+    }
+    const double now = build.scene->time();
+    for (const int reference : build.every_step) {
+      lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
+      lua_pushnumber(state, now);
+      lua_call(state, 1, 0);
+    }
+    return 0;
+  });
+}
+
+}  // namespace
+
+void LessonBuild::after_frame() {
+  if (!lua_probes && every_step.empty()) return;
+  lua_pushcfunction(sandbox.state(), measure_frame);
+  sandbox.call(0, 0);
+}
+
 void LessonBuild::call(int reference, std::initializer_list<double> arguments, int results) {
   lua_State* state = sandbox.state();
   lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
@@ -101,18 +124,13 @@ std::string LessonBuild::defined_at(int reference) {
   return std::string(debug.source + 1) + ":" + std::to_string(debug.linedefined);  // source is "@path"
 }
 
-std::vector<double> LessonBuild::numbers_returned(int reference, int count, const std::string& what) {
+void LessonBuild::numbers_returned(int reference, int count, const std::string& what, double* numbers) {
   lua_State* state = sandbox.state();
-  std::vector<double> numbers;
   std::string problem;
   for (int i = 0; i < count; ++i) {
     const int index = -count + i;
-    if (lua_type(state, index) != LUA_TNUMBER || !std::isfinite(lua_tonumber(state, index))) {
-      if (problem.empty()) problem = describe(state, index);
-      numbers.push_back(NAN);
-    } else {
-      numbers.push_back(lua_tonumber(state, index));
-    }
+    numbers[i] = lua_type(state, index) == LUA_TNUMBER ? lua_tonumber(state, index) : NAN;
+    if (!std::isfinite(numbers[i]) && problem.empty()) problem = describe(state, index);
   }
   lua_pop(state, count);
   if (!problem.empty()) {
@@ -120,7 +138,6 @@ std::vector<double> LessonBuild::numbers_returned(int reference, int count, cons
     throw ScriptError(defined_at(reference) + ": " + what + " returned " + problem + " at t = " +
                       format_value(scene->time()) + " s; it must return " + expected);
   }
-  return numbers;
 }
 
 std::string read_script(const std::string& path) {
@@ -194,7 +211,8 @@ double Lesson::duration() const {
   LessonBuild& build = *current_;
   if (build.duration_function == LUA_NOREF) return build.duration;
   build.call(build.duration_function, {}, 1);
-  const double seconds = build.numbers_returned(build.duration_function, 1, "lesson's duration function")[0];
+  double seconds = 0.0;
+  build.numbers_returned(build.duration_function, 1, "lesson's duration function", &seconds);
   if (!(seconds > 0.0 && seconds <= 86400.0)) {
     throw ScriptError(build.defined_at(build.duration_function) + ": the lesson's duration function gave " +
                       format_value(seconds) + " s; it must be in (0, 86400]");
@@ -206,6 +224,7 @@ const Scene& Lesson::scene() const { return *current_->scene; }
 const std::vector<Parameter>& Lesson::parameters() const { return current_->parameters; }
 const std::vector<Plot>& Lesson::plots() const { return current_->plots; }
 const std::vector<Rope>& Lesson::ropes() const { return current_->ropes; }
+void Lesson::time_script(bool on) { current_->sandbox.set_timing(on); }
 double Lesson::seconds_in_script() const { return std::chrono::duration<double>(current_->sandbox.time_in_lua()).count(); }
 const std::vector<std::string>& Lesson::warnings() const { return current_->warnings; }
 
@@ -224,8 +243,7 @@ const std::string& Lesson::probe_unit(const std::string& probe) const {
 void Lesson::step() {
   if (failed_) return;
   try {
-    current_->scene->step();
-    for (const int reference : current_->every_step) current_->call(reference, {current_->scene->time()}, 0);
+    current_->scene->step();  // the probes and every_step functions run at its end
   } catch (const ScriptError& error) {
     failed_ = true;
     last_error_ = error.what();
@@ -313,6 +331,7 @@ void Lesson::set(const std::string& name, const std::string& text) {
     }
     scene().pairs().set_pair(changed.material_a, changed.material_b, values);
     changed.value = value;
+    for (const auto& memory : current_->remembered) memory->filled = 0;  // functions may read param
     overrides_[name] = text;
     return;
   }

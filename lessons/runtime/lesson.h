@@ -111,7 +111,8 @@ class Lesson {
   void reset();
   const std::string& last_error() const { return last_error_; }
 
-  // Time spent inside the script's Lua since the last build, for the benchmark.
+  // Time spent inside the script's Lua since timing was switched on, for the benchmark.
+  void time_script(bool on);
   double seconds_in_script() const;
 
  private:

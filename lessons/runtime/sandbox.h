@@ -43,7 +43,12 @@ class Sandbox {
   void call(int arguments, int results);
 
   std::size_t memory_in_use() const { return memory_.used; }
-  // Wall time spent inside Lua so far, for the benchmark's share of the step.
+  // Whatever the sandbox runs for (the lesson build), reachable from API functions.
+  void* owner() const { return owner_; }
+  void set_owner(void* owner) { owner_ = owner; }
+  // Wall time spent inside Lua while timing was on, for the benchmark's share of the step.
+  // Off by default: reading the clock twice a call is itself a cost worth avoiding.
+  void set_timing(bool on) { timing_ = on; }
   std::chrono::nanoseconds time_in_lua() const { return time_in_lua_; }
 
  private:
@@ -59,8 +64,10 @@ class Sandbox {
   Memory memory_;
   lua_State* state_ = nullptr;
   std::string chunk_name_;
+  void* owner_ = nullptr;
   long budget_left_ = 0;
-  int depth_ = 0;  // a call made from inside another (a spring's hand read during the build) shares its budget
+  int depth_ = 0;
+  bool timing_ = false;  // a call made from inside another (a spring's hand read during the build) shares its budget
   std::chrono::nanoseconds time_in_lua_{0};
 };
 

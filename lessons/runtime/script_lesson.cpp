@@ -235,23 +235,29 @@ int probe(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "probe");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "probe", {"unit"});
+    Fields fields(state, 1, "probe", {"unit", "read"});
     const std::string name = fields.name();
     if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
     const std::string unit = fields.text("unit", "");
+    const size_t index = build.probes.size();
+    if (fields.has("read")) {
+      fields.push("read");
+      build.scene->add_probe(name, reading(state, -1, fields.what()));
+      lua_pop(state, 1);
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0});
+      return 0;
+    }
     lua_rawgeti(state, 1, 2);
     if (!lua_isfunction(state, -1)) {
-      throw InvalidInput(fields.what() + ": its function comes second, as in probe{ \"" + name +
-                         "\", unit = \"N\", function() return ... end }; got " + describe(state, -1));
+      throw InvalidInput(fields.what() + ": give it a function second, as in probe{ \"" + name +
+                         "\", unit = \"N\", function() return ... end }, or read = { handle, \"field\" }; got " +
+                         describe(state, -1));
     }
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
-    const std::string what = "probe '" + name + "'";
-    build.scene->add_probe(name, [owner, reference, what] {
-      owner->call(reference, {}, 1);
-      return owner->numbers_returned(reference, 1, what)[0];
-    });
-    build.probes.push_back({name, unit});
+    build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
+    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0});
+    build.lua_probes = true;
     return 0;
   });
 }
