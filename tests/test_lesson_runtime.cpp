@@ -275,7 +275,12 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
 )"));
   Lesson lesson(script.path());
   lesson.step();
-  auto r = [&](int i) { return probe_now(lesson, "r" + std::to_string(i)); };
+  // Appended rather than "r" + to_string(i): GCC 12 warns falsely on that (-Wrestrict, PR 105329).
+  auto r = [&](int i) {
+    std::string name = "r";
+    name += std::to_string(i);
+    return probe_now(lesson, name);
+  };
   using namespace theory;
   EXPECT_NEAR(r(1), 45.0, 1e-12);
   EXPECT_NEAR(r(2), incline_sliding_acceleration(30 * degrees, 0.2, g), 1e-12);
