@@ -64,9 +64,9 @@ struct LessonBuild {
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function
   std::vector<Rope> ropes;
-  std::vector<std::shared_ptr<RememberedValues>> remembered;
+  std::vector<std::shared_ptr<RememberedValues>> remembered;  // forgotten when a parameter changes live
   // The metatables of the handle types (body, spring, force, contact), by HandleType.
-  const void* metatables[4] = {nullptr, nullptr, nullptr, nullptr};  // forgotten when a parameter changes live
+  const void* metatables[4] = {nullptr, nullptr, nullptr, nullptr};
   bool building = true;
 
   Parameter* find_parameter(const std::string& name);

@@ -41,7 +41,7 @@ Sandbox::Sandbox(SandboxLimits limits) : limits_(limits) {
   if (state_ == nullptr) throw ScriptError("cannot start Lua: out of memory");
   *static_cast<Sandbox**>(lua_getextraspace(state_)) = this;
   open_safe_libraries(state_);
-  // Lessons make a few small tables every step (contact readings) that die young: the
+  // What garbage lessons make (strings, small tables in their functions) dies young: the
   // generational collector handles that with less work than the incremental one.
   lua_gc(state_, LUA_GCGEN, 0, 0);
   lua_sethook(state_, &Sandbox::count_instructions, LUA_MASKCOUNT, instructions_per_check);
@@ -149,6 +149,14 @@ std::string describe(lua_State* state, int index) {
     case LUA_TSTRING: return "the text \"" + std::string(lua_tostring(state, index)) + "\"";
     case LUA_TTABLE: return "a table";
     case LUA_TFUNCTION: return "a function";
+    case LUA_TUSERDATA:
+      // The runtime's handles carry their type's name: "frictionlab.body" reads as "a body".
+      if (luaL_getmetafield(state, index, "__name") == LUA_TSTRING) {
+        std::string name = lua_tostring(state, -1);
+        lua_pop(state, 1);
+        if (name.rfind("frictionlab.", 0) == 0) return "a " + name.substr(12) + " handle";
+      }
+      return "a userdata";
     default: return std::string("a ") + luaL_typename(state, index);
   }
 }

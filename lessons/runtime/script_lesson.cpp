@@ -241,6 +241,10 @@ int probe(lua_State* state) {
     const std::string unit = fields.text("unit", "");
     const size_t index = build.probes.size();
     if (fields.has("read")) {
+      lua_rawgeti(state, 1, 2);
+      const bool also_function = !lua_isnil(state, -1);
+      lua_pop(state, 1);
+      if (also_function) throw InvalidInput(fields.what() + ": give either read = { ... } or a function, not both");
       fields.push("read");
       build.scene->add_probe(name, reading(state, -1, fields.what()));
       lua_pop(state, 1);

@@ -1,82 +1,23 @@
 // The world part of the script API: ground, boxes, circles, polygons and inclines; springs,
-// ropes over pulleys, applied forces and driven bodies; and what a script may read back
-// (bodies, springs, forces, contacts) while the lesson runs.
+// ropes over pulleys, applied forces and driven bodies. What a script reads back from them is
+// in handles.cpp.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numbers>
-#include <optional>
 
-#include "lessons/runtime/build.h"
+#include "lessons/runtime/handles.h"
 #include "physics/validation.h"
 
 namespace frictionlab::lessons {
 namespace {
 
 constexpr double degrees = std::numbers::pi / 180.0;
-// The handle types a script holds, each with its own metatable.
-enum HandleType { body_type, spring_type, force_type, contact_type };
-const char* const type_names[] = {"frictionlab.body", "frictionlab.spring", "frictionlab.force", "frictionlab.contact"};
-
-// A body as the script holds it. Ground and inclines also carry their surface, a line along
-// which `on = ..., at = s` places things: origin, and the unit direction s grows in.
-struct BodyHandle {
-  b2Body* body;
-  bool is_surface;
-  b2Vec2 origin;
-  b2Vec2 along;
-};
-struct SpringHandle {
-  size_t index;
-};
-struct ForceHandle {
-  size_t index;
-};
 
 void require_building(lua_State* state, const char* call) {
   if (!build_of(state).building) {
     throw InvalidInput(std::string(call) + " adds to the world; call it at the top level of the script, not from a "
                        "function that runs during the lesson");
   }
-}
-
-// b2Vec2's default constructor leaves it uninitialised: every default here is spelled out.
-const b2Vec2 origin_point{0.0f, 0.0f};
-
-void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
-               b2Vec2 along = {1.0f, 0.0f}) {
-  auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
-  *handle = {body, is_surface, origin, along};
-  luaL_setmetatable(state, type_names[body_type]);
-}
-
-// The userdata at `index` when its metatable is `type`'s. Probes call this every step, so the
-// metatable is compared by address rather than looked up by name (luaL_testudata).
-void* handle_of(lua_State* state, int index, HandleType type) {
-  void* data = lua_touserdata(state, index);
-  if (data == nullptr || !lua_getmetatable(state, index)) return nullptr;
-  const void* metatable = lua_topointer(state, -1);
-  lua_pop(state, 1);
-  return metatable == build_of(state).metatables[type] ? data : nullptr;
-}
-
-// `what` is a plain C string so that the common case, a body, builds no message.
-BodyHandle* body_handle(lua_State* state, int index, const char* what) {
-  auto* handle = static_cast<BodyHandle*>(handle_of(state, index, body_type));
-  if (handle == nullptr) {
-    throw InvalidInput(std::string(what) + " must be a body (what box{}, circle{}, ground{} and the others return), got " +
-                       describe(state, index));
-  }
-  return handle;
-}
-
-BodyHandle* body_handle(lua_State* state, int index, const std::string& what) { return body_handle(state, index, what.c_str()); }
-
-std::string body_name(lua_State* state, const b2Body* body) {
-  for (const auto& [name, known] : build_of(state).scene->bodies()) {
-    if (known == body) return name;
-  }
-  return "?";
 }
 
 b2BodyType body_kind(Fields& fields, const char* fallback) {
@@ -344,9 +285,7 @@ int spring(lua_State* state) {
     const double length = (far_end - made.body->GetWorldPoint(made.local_point)).Length();
     made.rest_length = fields.number("rest_length", "m", length);  // unstretched at the start unless told
     build.scene->add_spring(made);
-    auto* handle = static_cast<SpringHandle*>(lua_newuserdatauv(state, sizeof(SpringHandle), 0));
-    handle->index = build.scene->springs().size() - 1;
-    luaL_setmetatable(state, type_names[spring_type]);
+    push_indexed(state, spring_type, build.scene->springs().size() - 1);
     return 1;
   });
 }
@@ -399,9 +338,7 @@ int force(lua_State* state) {
       made.force = [constant](double) { return constant; };
     }
     build.scene->add_applied_force(made);
-    auto* handle = static_cast<ForceHandle*>(lua_newuserdatauv(state, sizeof(ForceHandle), 0));
-    handle->index = build.scene->applied_forces().size() - 1;
-    luaL_setmetatable(state, type_names[force_type]);
+    push_indexed(state, force_type, build.scene->applied_forces().size() - 1);
     return 1;
   });
 }
@@ -410,11 +347,15 @@ int drive(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "drive");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "drive", {"position", "angle"});
+    if (!lua_istable(state, 1)) {
+      throw InvalidInput("drive takes a table, as in drive{ belt, position = function(t) return x, y end }; got " +
+                         describe(state, 1));
+    }
     lua_rawgeti(state, 1, 1);
     b2Body* body = body_handle(state, -1, "drive's first entry (the body to move, as in drive{ belt, position = ... })")->body;
     lua_pop(state, 1);
     const std::string what = "drive '" + body_name(state, body) + "'";
+    Fields fields(state, 1, what, {"position", "angle"});
     if (body->GetType() != b2_kinematicBody) throw InvalidInput(what + ": only a body of kind = \"kinematic\" can be driven");
     VectorOfTime position;
     ScalarOfTime angle;
@@ -440,237 +381,16 @@ int drive(lua_State* state) {
   });
 }
 
-// contact(a, b): a view of what the friction listener recorded for the touching pair, read
-// when a field is read. A view rather than a table of copies: probes ask every step, and
-// building sixteen fields to read one was most of a lesson's script time.
-struct ContactHandle {
-  const b2Body* a;
-  const b2Body* b;
-};
-
-int contact(lua_State* state) {
-  return guarded(state, [&] {
-    const b2Body* a = body_handle(state, 1, "contact's first argument")->body;
-    const b2Body* b = body_handle(state, 2, "contact's second argument")->body;
-    auto* handle = static_cast<ContactHandle*>(lua_newuserdatauv(state, sizeof(ContactHandle), 0));
-    *handle = {a, b};
-    luaL_setmetatable(state, type_names[contact_type]);
-    return 1;
-  });
-}
-
-// What a script can read from a handle. One table serves both `block.vx` in Lua and
-// probe{ read = { block, "vx" } }, which the runtime reads itself every step without Lua.
-enum class Field { x, y, angle, vx, vy, omega, mass, force_x, force_y, length, tension, fx, fy, friction, normal, nx,
-                   ny, drag, drag_x, drag_y, sliding_speed, points, load1, load2 };
-struct FieldName {
-  const char* name;
-  Field field;
-};
-const std::vector<FieldName>& field_names(HandleType type) {
-  static const std::vector<FieldName> body = {{"x", Field::x},   {"y", Field::y},         {"angle", Field::angle},
-                                              {"vx", Field::vx}, {"vy", Field::vy},       {"omega", Field::omega},
-                                              {"mass", Field::mass}};
-  static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
-                                                {"length", Field::length}, {"tension", Field::tension}};
-  static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
-  static const std::vector<FieldName> contact = {
-      {"friction", Field::friction}, {"fx", Field::fx},         {"fy", Field::fy},
-      {"normal", Field::normal},     {"nx", Field::nx},         {"ny", Field::ny},
-      {"drag", Field::drag},         {"drag_x", Field::drag_x}, {"drag_y", Field::drag_y},
-      {"sliding_speed", Field::sliding_speed}, {"points", Field::points}, {"load1", Field::load1},
-      {"load2", Field::load2}};
-  switch (type) {
-    case body_type: return body;
-    case spring_type: return spring;
-    case force_type: return force;
-    case contact_type: break;
-  }
-  return contact;
-}
-
-// A handle copied out of its userdata, so the runtime can keep reading it.
-struct Handle {
-  HandleType type;
-  const b2Body* body = nullptr;   // a body
-  size_t index = 0;               // a spring or a force
-  ContactHandle contact{nullptr, nullptr};
-};
-
-std::optional<Handle> any_handle(lua_State* state, int index) {
-  for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
-    const void* data = handle_of(state, index, type);
-    if (data == nullptr) continue;
-    Handle handle{type};
-    if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
-    if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
-    if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
-    if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
-    return handle;
-  }
-  return std::nullopt;
-}
-
-std::optional<Field> find_field(HandleType type, const char* key) {
-  for (const FieldName& known : field_names(type)) {
-    if (std::strcmp(known.name, key) == 0) return known.field;
-  }
-  return std::nullopt;
-}
-
-double read_field(const Scene& scene, const Handle& handle, Field field) {
-  const b2Body* body = handle.body;
-  switch (field) {
-    case Field::x: return body->GetPosition().x;
-    case Field::y: return body->GetPosition().y;
-    case Field::angle: return body->GetAngle() / degrees;
-    case Field::vx: return body->GetLinearVelocity().x;
-    case Field::vy: return body->GetLinearVelocity().y;
-    case Field::omega: return body->GetAngularVelocity();
-    case Field::mass: return body->GetMass();
-    default: break;
-  }
-  if (handle.type == spring_type) {
-    const Spring& spring = scene.springs()[handle.index];
-    if (field == Field::force_x || field == Field::force_y) {
-      const b2Vec2 force = scene.spring_force(spring);
-      return field == Field::force_x ? force.x : force.y;
-    }
-    const double length = (scene.hand_position(spring) - spring.body->GetWorldPoint(spring.local_point)).Length();
-    return field == Field::length ? length : spring.stiffness * (length - spring.rest_length);
-  }
-  if (handle.type == force_type) {
-    const b2Vec2 now = scene.applied_forces()[handle.index].force(scene.time());
-    return field == Field::fx ? now.x : now.y;
-  }
-  const b2Body* a = handle.contact.a;
-  const ContactRecord* record = scene.friction().find(a, handle.contact.b);
-  if (record == nullptr) return 0.0;
-  const b2Vec2 drag = record->side(a) * static_cast<float>(record->damping_force) * record->tangent();
-  // Friction here is all the surface does along itself: the dry part and the drag.
-  const b2Vec2 friction = record->friction_on(a) + drag;
-  const b2Vec2 normal = record->normal_on(a);
-  switch (field) {
-    case Field::friction: return friction.Length();
-    case Field::fx: return friction.x;
-    case Field::fy: return friction.y;
-    case Field::normal: return normal.Length();
-    case Field::nx: return normal.x;
-    case Field::ny: return normal.y;
-    case Field::drag: return drag.Length();
-    case Field::drag_x: return drag.x;
-    case Field::drag_y: return drag.y;
-    case Field::sliding_speed: return std::abs(record->sliding_velocity);
-    case Field::points: return record->point_count;
-    case Field::load1: return record->point_normal_force[0];
-    case Field::load2: return record->point_normal_force[1];
-    default: return 0.0;
-  }
-}
-
-std::string field_list(HandleType type) {
-  std::string list;
-  for (const FieldName& known : field_names(type)) list += (list.empty() ? "" : ", ") + std::string(known.name);
-  return list;
-}
-
-const char* const handle_words[] = {"a body", "a spring", "a force", "a contact"};
-
-int world_point(lua_State* state) {
-  return guarded(state, [&] {
-    const b2Body* of = body_handle(state, 1, "world_point's body (call it as body:world_point(x, y))")->body;
-    const b2Vec2 local{static_cast<float>(luaL_optnumber(state, 2, 0.0)), static_cast<float>(luaL_optnumber(state, 3, 0.0))};
-    const b2Vec2 world = of->GetWorldPoint(local);
-    lua_pushnumber(state, world.x);
-    lua_pushnumber(state, world.y);
-    return 2;
-  });
-}
-
-// __index of every handle type: its name (or a contact's state), a method, or a number.
-int handle_index(lua_State* state) {
-  return guarded(state, [&] {
-    const std::optional<Handle> handle = any_handle(state, 1);
-    if (!handle) throw InvalidInput("read a handle's fields with a dot, as in block.x");
-    const char* key = lua_type(state, 2) == LUA_TSTRING ? lua_tostring(state, 2) : "?";
-    const Scene& scene = *build_of(state).scene;
-    if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
-      const ContactRecord* record = scene.friction().find(handle->contact.a, handle->contact.b);
-      lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
-    } else if (const std::optional<Field> field = find_field(handle->type, key)) {
-      lua_pushnumber(state, read_field(scene, *handle, *field));
-    } else if (std::strcmp(key, "name") == 0 && handle->type != contact_type) {
-      const std::string name = handle->type == body_type     ? body_name(state, handle->body)
-                               : handle->type == spring_type ? scene.springs()[handle->index].name
-                                                             : scene.applied_forces()[handle->index].name;
-      lua_pushstring(state, name.c_str());
-    } else if (std::strcmp(key, "world_point") == 0 && handle->type == body_type) {
-      lua_pushcfunction(state, world_point);
-    } else {
-      const std::string extra = handle->type == body_type      ? "name, world_point(x, y), "
-                                : handle->type == contact_type ? "state, "
-                                                               : "name, ";
-      throw InvalidInput(std::string(handle_words[handle->type]) + " has no field '" +
-                         (lua_type(state, 2) == LUA_TSTRING ? std::string(key) : describe(state, 2)) + "'; it has " +
-                         extra + field_list(handle->type));
-    }
-    return 1;
-  });
-}
-
-int body_text(lua_State* state) {
-  lua_pushfstring(state, "body '%s'", body_name(state, static_cast<BodyHandle*>(lua_touserdata(state, 1))->body).c_str());
-  return 1;
-}
-
-void add_type(lua_State* state, HandleType type, lua_CFunction index) {
-  luaL_newmetatable(state, type_names[type]);
-  build_of(state).metatables[type] = lua_topointer(state, -1);
-  lua_pushcfunction(state, index);
-  lua_setfield(state, -2, "__index");
-  lua_pop(state, 1);
-}
-
 }  // namespace
-
-std::function<double()> reading(lua_State* state, int index, const std::string& what) {
-  index = lua_absindex(state, index);
-  const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
-  if (!lua_istable(state, index)) throw InvalidInput(expected + "; got " + describe(state, index));
-  lua_rawgeti(state, index, 1);
-  const std::optional<Handle> handle = any_handle(state, -1);
-  lua_rawgeti(state, index, 2);
-  const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
-  const std::optional<Field> field = handle && key ? find_field(handle->type, key) : std::nullopt;
-  if (!field) {
-    const std::string fields = handle ? "; " + std::string(handle_words[handle->type]) + " has " + field_list(handle->type) : "";
-    lua_pop(state, 2);
-    throw InvalidInput(expected + fields);
-  }
-  lua_pop(state, 2);
-  const Scene* scene = build_of(state).scene.get();
-  return [scene, h = *handle, f = *field] { return read_field(*scene, h, f); };
-}
-
-b2Body* body_argument(lua_State* state, int index, const std::string& what) {
-  return body_handle(state, index, what)->body;
-}
 
 void register_world_api(lua_State* state) {
   const luaL_Reg functions[] = {{"ground", ground}, {"box", box},       {"circle", circle}, {"polygon", polygon},
                                 {"incline", incline}, {"spring", spring}, {"rope", rope},     {"force", force},
-                                {"drive", drive},   {"contact", contact}, {nullptr, nullptr}};
+                                {"drive", drive},   {nullptr, nullptr}};
   lua_pushglobaltable(state);
   luaL_setfuncs(state, functions, 0);
   lua_pop(state, 1);
-  add_type(state, body_type, handle_index);
-  luaL_getmetatable(state, type_names[body_type]);
-  lua_pushcfunction(state, body_text);
-  lua_setfield(state, -2, "__tostring");
-  lua_pop(state, 1);
-  add_type(state, spring_type, handle_index);
-  add_type(state, force_type, handle_index);
-  add_type(state, contact_type, handle_index);
+  register_handles(state);
 }
 
 }  // namespace frictionlab::lessons

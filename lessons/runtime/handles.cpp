@@ -1,0 +1,296 @@
+// The handles a script holds and what it may read from them: body.x, spring.tension,
+// push.fx, contact(a, b).state, and probe{ read = { handle, "field" } }.
+#include "lessons/runtime/handles.h"
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+namespace frictionlab::lessons {
+
+const char* const type_names[4] = {"frictionlab.body", "frictionlab.spring", "frictionlab.force",
+                                   "frictionlab.contact"};
+
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180.0;
+
+// contact(a, b): a view of what the friction listener recorded for the touching pair, read
+// when a field is read. A view rather than a table of copies: probes ask every step, and
+// building sixteen fields to read one was most of a lesson's script time.
+int contact(lua_State* state) {
+  return guarded(state, [&] {
+    const b2Body* a = body_handle(state, 1, "contact's first argument")->body;
+    const b2Body* b = body_handle(state, 2, "contact's second argument")->body;
+    auto* handle = static_cast<ContactHandle*>(lua_newuserdatauv(state, sizeof(ContactHandle), 0));
+    *handle = {a, b};
+    luaL_setmetatable(state, type_names[contact_type]);
+    return 1;
+  });
+}
+
+// What a script can read from a handle. One table serves both `block.vx` in Lua and
+// probe{ read = { block, "vx" } }, which the runtime reads itself every step without Lua.
+enum class Field { x, y, angle, vx, vy, omega, mass, force_x, force_y, length, tension, fx, fy, friction, normal, nx,
+                   ny, drag, drag_x, drag_y, sliding_speed, points, load1, load2 };
+struct FieldName {
+  const char* name;
+  Field field;
+};
+const std::vector<FieldName>& field_names(HandleType type) {
+  static const std::vector<FieldName> body = {{"x", Field::x},   {"y", Field::y},         {"angle", Field::angle},
+                                              {"vx", Field::vx}, {"vy", Field::vy},       {"omega", Field::omega},
+                                              {"mass", Field::mass}};
+  static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
+                                                {"length", Field::length}, {"tension", Field::tension}};
+  static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
+  static const std::vector<FieldName> contact = {
+      {"friction", Field::friction}, {"fx", Field::fx},         {"fy", Field::fy},
+      {"normal", Field::normal},     {"nx", Field::nx},         {"ny", Field::ny},
+      {"drag", Field::drag},         {"drag_x", Field::drag_x}, {"drag_y", Field::drag_y},
+      {"sliding_speed", Field::sliding_speed}, {"points", Field::points}, {"load1", Field::load1},
+      {"load2", Field::load2}};
+  switch (type) {
+    case body_type: return body;
+    case spring_type: return spring;
+    case force_type: return force;
+    case contact_type: break;
+  }
+  return contact;
+}
+
+// A handle copied out of its userdata, so the runtime can keep reading it.
+struct Handle {
+  HandleType type;
+  const b2Body* body = nullptr;   // a body
+  size_t index = 0;               // a spring or a force
+  ContactHandle contact{nullptr, nullptr};
+};
+
+std::optional<Handle> any_handle(lua_State* state, int index) {
+  for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
+    const void* data = handle_of(state, index, type);
+    if (data == nullptr) continue;
+    Handle handle{type};
+    if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
+    if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
+    if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
+    if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
+    return handle;
+  }
+  return std::nullopt;
+}
+
+std::optional<Field> find_field(HandleType type, const char* key) {
+  for (const FieldName& known : field_names(type)) {
+    if (std::strcmp(known.name, key) == 0) return known.field;
+  }
+  return std::nullopt;
+}
+
+double read_field(const Scene& scene, const Handle& handle, Field field) {
+  const b2Body* body = handle.body;
+  switch (field) {
+    case Field::x: return body->GetPosition().x;
+    case Field::y: return body->GetPosition().y;
+    case Field::angle: return body->GetAngle() / degrees;
+    case Field::vx: return body->GetLinearVelocity().x;
+    case Field::vy: return body->GetLinearVelocity().y;
+    case Field::omega: return body->GetAngularVelocity();
+    case Field::mass: return body->GetMass();
+    default: break;
+  }
+  if (handle.type == spring_type) {
+    const Spring& spring = scene.springs()[handle.index];
+    if (field == Field::force_x || field == Field::force_y) {
+      const b2Vec2 force = scene.spring_force(spring);
+      return field == Field::force_x ? force.x : force.y;
+    }
+    const double length = (scene.hand_position(spring) - spring.body->GetWorldPoint(spring.local_point)).Length();
+    return field == Field::length ? length : spring.stiffness * (length - spring.rest_length);
+  }
+  if (handle.type == force_type) {
+    const b2Vec2 now = scene.applied_forces()[handle.index].force(scene.time());
+    return field == Field::fx ? now.x : now.y;
+  }
+  const b2Body* a = handle.contact.a;
+  const ContactRecord* record = scene.friction().find(a, handle.contact.b);
+  if (record == nullptr) return 0.0;
+  const b2Vec2 drag = record->side(a) * static_cast<float>(record->damping_force) * record->tangent();
+  // Friction here is all the surface does along itself: the dry part and the drag.
+  const b2Vec2 friction = record->friction_on(a) + drag;
+  const b2Vec2 normal = record->normal_on(a);
+  switch (field) {
+    case Field::friction: return friction.Length();
+    case Field::fx: return friction.x;
+    case Field::fy: return friction.y;
+    case Field::normal: return normal.Length();
+    case Field::nx: return normal.x;
+    case Field::ny: return normal.y;
+    case Field::drag: return drag.Length();
+    case Field::drag_x: return drag.x;
+    case Field::drag_y: return drag.y;
+    case Field::sliding_speed: return std::abs(record->sliding_velocity);
+    case Field::points: return record->point_count;
+    case Field::load1: return record->point_normal_force[0];
+    case Field::load2: return record->point_normal_force[1];
+    default: return 0.0;
+  }
+}
+
+std::string field_list(HandleType type) {
+  std::string list;
+  for (const FieldName& known : field_names(type)) list += (list.empty() ? "" : ", ") + std::string(known.name);
+  return list;
+}
+
+const char* const handle_words[] = {"a body", "a spring", "a force", "a contact"};
+
+int world_point(lua_State* state) {
+  return guarded(state, [&] {
+    const b2Body* of = body_handle(state, 1, "world_point's body (call it as body:world_point(x, y))")->body;
+    const b2Vec2 local{static_cast<float>(luaL_optnumber(state, 2, 0.0)), static_cast<float>(luaL_optnumber(state, 3, 0.0))};
+    const b2Vec2 world = of->GetWorldPoint(local);
+    lua_pushnumber(state, world.x);
+    lua_pushnumber(state, world.y);
+    return 2;
+  });
+}
+
+// __index of every handle type: its name (or a contact's state), a method, or a number.
+int handle_index(lua_State* state) {
+  return guarded(state, [&] {
+    const std::optional<Handle> handle = any_handle(state, 1);
+    if (!handle) throw InvalidInput("read a handle's fields with a dot, as in block.x");
+    const char* key = lua_type(state, 2) == LUA_TSTRING ? lua_tostring(state, 2) : "?";
+    const Scene& scene = *build_of(state).scene;
+    if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
+      const ContactRecord* record = scene.friction().find(handle->contact.a, handle->contact.b);
+      lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
+    } else if (const std::optional<Field> field = find_field(handle->type, key)) {
+      lua_pushnumber(state, read_field(scene, *handle, *field));
+    } else if (std::strcmp(key, "name") == 0 && handle->type != contact_type) {
+      const std::string name = handle->type == body_type     ? body_name(state, handle->body)
+                               : handle->type == spring_type ? scene.springs()[handle->index].name
+                                                             : scene.applied_forces()[handle->index].name;
+      lua_pushstring(state, name.c_str());
+    } else if (std::strcmp(key, "world_point") == 0 && handle->type == body_type) {
+      lua_pushcfunction(state, world_point);
+    } else {
+      const std::string extra = handle->type == body_type      ? "name, world_point(x, y), "
+                                : handle->type == contact_type ? "state, "
+                                                               : "name, ";
+      throw InvalidInput(std::string(handle_words[handle->type]) + " has no field '" +
+                         (lua_type(state, 2) == LUA_TSTRING ? std::string(key) : describe(state, 2)) + "'; it has " +
+                         extra + field_list(handle->type));
+    }
+    return 1;
+  });
+}
+
+// print(block) and the like: what the handle is, by name.
+int handle_text(lua_State* state) {
+  const std::optional<Handle> handle = any_handle(state, 1);
+  if (!handle) return 0;
+  const Scene& scene = *build_of(state).scene;
+  switch (handle->type) {
+    case body_type: lua_pushfstring(state, "body '%s'", body_name(state, handle->body).c_str()); break;
+    case spring_type: lua_pushfstring(state, "spring '%s'", scene.springs()[handle->index].name.c_str()); break;
+    case force_type: lua_pushfstring(state, "force '%s'", scene.applied_forces()[handle->index].name.c_str()); break;
+    case contact_type:
+      lua_pushfstring(state, "contact of '%s' and '%s'", body_name(state, handle->contact.a).c_str(),
+                      body_name(state, handle->contact.b).c_str());
+      break;
+  }
+  return 1;
+}
+
+int refuse_write(lua_State* state) {
+  return guarded(state, [&]() -> int {
+    throw InvalidInput("handles are read-only: a body moves by forces, springs and drive{}, and its setup is given "
+                       "where it is made");
+  });
+}
+
+}  // namespace
+
+void push_body(lua_State* state, b2Body* body, bool is_surface, b2Vec2 origin, b2Vec2 along) {
+  auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
+  *handle = {body, is_surface, origin, along};
+  luaL_setmetatable(state, type_names[body_type]);
+}
+
+void push_indexed(lua_State* state, HandleType type, size_t index) {
+  auto* handle = static_cast<size_t*>(lua_newuserdatauv(state, sizeof(size_t), 0));
+  *handle = index;
+  luaL_setmetatable(state, type_names[type]);
+}
+
+// The userdata at `index` when its metatable is `type`'s. Probes call this every step, so the
+// metatable is compared by address rather than looked up by name (luaL_testudata).
+void* handle_of(lua_State* state, int index, HandleType type) {
+  void* data = lua_touserdata(state, index);
+  if (data == nullptr || !lua_getmetatable(state, index)) return nullptr;
+  const void* metatable = lua_topointer(state, -1);
+  lua_pop(state, 1);
+  return metatable == build_of(state).metatables[type] ? data : nullptr;
+}
+
+// `what` is a plain C string so that the common case, a body, builds no message.
+BodyHandle* body_handle(lua_State* state, int index, const char* what) {
+  auto* handle = static_cast<BodyHandle*>(handle_of(state, index, body_type));
+  if (handle == nullptr) {
+    throw InvalidInput(std::string(what) + " must be a body (what box{}, circle{}, ground{} and the others return), got " +
+                       describe(state, index));
+  }
+  return handle;
+}
+
+BodyHandle* body_handle(lua_State* state, int index, const std::string& what) { return body_handle(state, index, what.c_str()); }
+
+std::string body_name(lua_State* state, const b2Body* body) {
+  for (const auto& [name, known] : build_of(state).scene->bodies()) {
+    if (known == body) return name;
+  }
+  return "?";
+}
+
+std::function<double()> reading(lua_State* state, int index, const std::string& what) {
+  index = lua_absindex(state, index);
+  const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
+  if (!lua_istable(state, index)) throw InvalidInput(expected + "; got " + describe(state, index));
+  lua_rawgeti(state, index, 1);
+  const std::optional<Handle> handle = any_handle(state, -1);
+  lua_rawgeti(state, index, 2);
+  const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
+  const std::optional<Field> field = handle && key ? find_field(handle->type, key) : std::nullopt;
+  if (!field) {
+    const std::string fields = handle ? "; " + std::string(handle_words[handle->type]) + " has " + field_list(handle->type) : "";
+    lua_pop(state, 2);
+    throw InvalidInput(expected + fields);
+  }
+  lua_pop(state, 2);
+  const Scene* scene = build_of(state).scene.get();
+  return [scene, h = *handle, f = *field] { return read_field(*scene, h, f); };
+}
+
+b2Body* body_argument(lua_State* state, int index, const std::string& what) {
+  return body_handle(state, index, what)->body;
+}
+
+void register_handles(lua_State* state) {
+  lua_pushcfunction(state, contact);
+  lua_setglobal(state, "contact");
+  for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
+    luaL_newmetatable(state, type_names[type]);
+    build_of(state).metatables[type] = lua_topointer(state, -1);
+    const luaL_Reg methods[] = {{"__index", handle_index}, {"__newindex", refuse_write}, {"__tostring", handle_text},
+                                {nullptr, nullptr}};
+    luaL_setfuncs(state, methods, 0);
+    lua_pop(state, 1);
+  }
+}
+
+}  // namespace frictionlab::lessons
