@@ -1,5 +1,6 @@
 // frictionlab list | run | check: lessons headless, as a test suite or a teacher without a
 // window uses them.
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -51,6 +52,11 @@ RunOptions parse_run(const std::vector<std::string>& args) {
       options.lesson = arg;
       continue;
     }
+    static const std::string known[] = {"--duration", "--hz", "--substeps", "--friction", "--set", "--csv"};
+    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
+      throw InvalidInput("run: unknown option '" + arg +
+                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE");
+    }
     if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
     const std::string& value = args[++i];
     if (arg == "--duration") {
@@ -66,11 +72,8 @@ RunOptions parse_run(const std::vector<std::string>& args) {
       const std::size_t equals = value.find('=');
       if (equals == std::string::npos || equals == 0) throw InvalidInput("--set " + value + ": write it as NAME=VALUE, as in --set mu_s=0.5");
       options.overrides[value.substr(0, equals)] = value.substr(equals + 1);
-    } else if (arg == "--csv") {
-      options.csv = value;
     } else {
-      throw InvalidInput("run: unknown option '" + arg +
-                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE");
+      options.csv = value;  // --csv, the last of the known options
     }
   }
   if (options.lesson.empty()) throw InvalidInput("run needs a lesson: frictionlab run LESSON; see frictionlab list");
@@ -199,13 +202,24 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
     if (name.rfind("--", 0) == 0) throw InvalidInput("check takes lessons only, got the option '" + name + "'");
   }
   if (names.empty()) names = lessons::builtin_lessons();
-  int failed_lessons = 0;
+  // Every lesson is checked even when one cannot be run: a broken script is reported and the
+  // others still get their verdict.
+  int failed_lessons = 0, broken_lessons = 0;
   for (const std::string& name : names) {
-    Lesson lesson(lessons::resolve_lesson(name));
-    out << "== " << name << ": ";
-    print_heading(lesson, out);
-    if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
+    try {
+      Lesson lesson(lessons::resolve_lesson(name));
+      out << "== " << name << ": ";
+      print_heading(lesson, out);
+      if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
+    } catch (const InvalidInput& error) {
+      std::cerr << "frictionlab: check " << name << ": " << error.what() << '\n';
+      ++broken_lessons;
+    }
     out << '\n';
+  }
+  if (broken_lessons > 0) {
+    out << broken_lessons << " lesson(s) could not be run (see the messages above)\n";
+    return 2;
   }
   out << (failed_lessons == 0 ? "every lesson meets its expectations\n"
                               : std::to_string(failed_lessons) + " lesson(s) missed an expectation\n");

@@ -437,6 +437,7 @@ for _, name in ipairs { "io", "os", "package", "debug", "require", "load", "load
   if _ENV[name] ~= nil then error(name .. " is reachable") end
 end
 if math.random ~= nil or math.randomseed ~= nil then error("math.random is reachable") end
+if string.find ~= nil or ("x").match ~= nil or string.gsub ~= nil or string.gmatch ~= nil then error("patterns are reachable") end
 assert(string.format("%.1f", math.sqrt(2)) == "1.4" and table.concat({ 1, 2 }, ",") == "1,2" and utf8.char(956) == "μ")
 )"));
   EXPECT_NO_THROW(Lesson{script.path()});

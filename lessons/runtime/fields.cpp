@@ -1,5 +1,6 @@
 // Reading a script's table arguments with errors a student can act on.
 #include <cmath>
+#include <cstring>
 
 #include "lessons/runtime/build.h"
 #include "physics/validation.h"
@@ -20,10 +21,19 @@ Fields::Fields(lua_State* state, int index, std::string call, std::initializer_l
   if (!lua_istable(state_, index_)) {
     throw InvalidInput(call_ + " takes a table, as in " + call_ + "{ ... }; got " + describe(state_, index_));
   }
-  // Named from the start, so that even a typo in a later field says which box it is in.
+  // Named from the start, so that even a typo in a later field says which box it is in. A
+  // pair's first entries are its two materials, not a name: it is named by them, as pair{}'s
+  // own messages name it ("pair aluminium/wood").
   lua_rawgeti(state_, index_, 1);
-  if (lua_type(state_, -1) == LUA_TSTRING) what_ = call_ + " '" + lua_tostring(state_, -1) + "'";
-  lua_pop(state_, 1);
+  lua_rawgeti(state_, index_, 2);
+  if (call_ == "pair") {
+    if (lua_type(state_, -2) == LUA_TSTRING && lua_type(state_, -1) == LUA_TSTRING) {
+      what_ = call_ + " " + lua_tostring(state_, -2) + "/" + lua_tostring(state_, -1);
+    }
+  } else if (lua_type(state_, -2) == LUA_TSTRING) {
+    what_ = call_ + " '" + lua_tostring(state_, -2) + "'";
+  }
+  lua_pop(state_, 2);
   // Refuse fields the call does not know, listing the ones it does.
   lua_pushnil(state_);
   while (lua_next(state_, index_) != 0) {
@@ -125,7 +135,9 @@ b2Vec2 Fields::point(const char* key, b2Vec2 fallback) {
     lua_pop(state_, 1);
     return fallback;
   }
-  const std::string expected = "a pair of numbers such as {0.5, 0} (m)";
+  // Most points are places in m; a starting velocity and a constant force are not.
+  const char* unit = std::strcmp(key, "velocity") == 0 ? "m/s" : std::strcmp(key, "force") == 0 ? "N" : "m";
+  const std::string expected = std::string("a pair of numbers such as {0.5, 0} (") + unit + ")";
   if (!lua_istable(state_, -1)) wrong(key, expected, -1);
   double xy[2];
   for (int i = 0; i < 2; ++i) {

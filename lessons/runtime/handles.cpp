@@ -24,6 +24,7 @@ int contact(lua_State* state) {
   return guarded(state, [&] {
     const b2Body* a = body_handle(state, 1, "contact's first argument")->body;
     const b2Body* b = body_handle(state, 2, "contact's second argument")->body;
+    if (a == b) throw InvalidInput("contact needs two different bodies, as in contact(block, floor)");
     auto* handle = static_cast<ContactHandle*>(lua_newuserdatauv(state, sizeof(ContactHandle), 0));
     *handle = {a, b};
     luaL_setmetatable(state, type_names[contact_type]);
@@ -216,9 +217,9 @@ int refuse_write(lua_State* state) {
 
 }  // namespace
 
-void push_body(lua_State* state, b2Body* body, bool is_surface, b2Vec2 origin, b2Vec2 along) {
+void push_body(lua_State* state, b2Body* body, bool is_surface, b2Vec2 origin, b2Vec2 along, float length) {
   auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
-  *handle = {body, is_surface, origin, along};
+  *handle = {body, is_surface, origin, along, length};
   luaL_setmetatable(state, type_names[body_type]);
 }
 
@@ -289,6 +290,10 @@ void register_handles(lua_State* state) {
     const luaL_Reg methods[] = {{"__index", handle_index}, {"__newindex", refuse_write}, {"__tostring", handle_text},
                                 {nullptr, nullptr}};
     luaL_setfuncs(state, methods, 0);
+    // Hidden from getmetatable: a __gc a script added here would be given to every handle made
+    // afterwards, and Lua runs finalizers where the sandbox's budgets cannot stop them.
+    lua_pushliteral(state, "frictionlab handle");
+    lua_setfield(state, -2, "__metatable");
     lua_pop(state, 1);
   }
 }

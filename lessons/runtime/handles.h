@@ -19,6 +19,7 @@ struct BodyHandle {
   bool is_surface;
   b2Vec2 origin;
   b2Vec2 along;
+  float length;  // how far along the surface `at` may go: [0, length] (ground: centred on x = 0)
 };
 struct SpringHandle {
   size_t index;
@@ -36,7 +37,7 @@ struct ContactHandle {
 inline const b2Vec2 origin_point{0.0f, 0.0f};
 
 void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
-               b2Vec2 along = {1.0f, 0.0f});
+               b2Vec2 along = {1.0f, 0.0f}, float length = 0.0f);
 // Pushes a new handle of `type` holding `index` (a spring's or a force's place in the scene).
 void push_indexed(lua_State* state, HandleType type, size_t index);
 

@@ -130,7 +130,9 @@ void LessonBuild::numbers_returned(int reference, int count, const std::string& 
   for (int i = 0; i < count; ++i) {
     const int index = -count + i;
     numbers[i] = lua_type(state, index) == LUA_TNUMBER ? lua_tonumber(state, index) : NAN;
-    if (!std::isfinite(numbers[i]) && problem.empty()) problem = describe(state, index);
+    if (!std::isfinite(numbers[i]) && problem.empty()) {
+      problem = describe(state, index) + (count > 1 ? (i == 0 ? " as its first number" : " as its second number") : "");
+    }
   }
   lua_pop(state, count);
   if (!problem.empty()) {
@@ -176,7 +178,8 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
     }
   }
   if (next->title.empty()) {
-    throw ScriptError(path_ + ": the script never says what it is; begin it with lesson{ title = \"...\", question = "
+    // Placed at line 1, where lesson{} belongs, so that editors can jump there like to any other error.
+    throw ScriptError(path_ + ":1: the script never says what it is; begin it with lesson{ title = \"...\", question = "
                       "\"...\" }");
   }
   for (const Plot& plot : next->plots) {

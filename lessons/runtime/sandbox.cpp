@@ -1,5 +1,6 @@
 #include "lessons/runtime/sandbox.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -9,6 +10,24 @@ namespace {
 // How often (in VM instructions) the budget is checked: often enough to stop a loop within
 // microseconds of its budget, rarely enough to cost nothing measurable.
 constexpr int instructions_per_check = 1000;
+
+// Lua's own setmetatable, refusing a metatable with __gc.
+int set_metatable_without_finalizer(lua_State* state) {
+  const int type = lua_type(state, 2);
+  luaL_checktype(state, 1, LUA_TTABLE);
+  luaL_argexpected(state, type == LUA_TNIL || type == LUA_TTABLE, 2, "nil or table");
+  if (luaL_getmetafield(state, 1, "__metatable") != LUA_TNIL) return luaL_error(state, "cannot change a protected metatable");
+  if (type == LUA_TTABLE) {
+    lua_pushliteral(state, "__gc");
+    if (lua_rawget(state, 2) != LUA_TNIL) {
+      return luaL_error(state, "setmetatable: a metatable in a lesson cannot have __gc (Lua runs it where the "
+                               "sandbox cannot stop it)");
+    }
+  }
+  lua_settop(state, 2);
+  lua_setmetatable(state, 1);
+  return 1;
+}
 
 // Libraries a lesson may use, and from the base library only what cannot reach outside the
 // script or outlive its budgets: pcall and xpcall go, since a script that catches the
@@ -25,12 +44,25 @@ void open_safe_libraries(lua_State* state) {
     lua_pushnil(state);
     lua_setglobal(state, unsafe);
   }
+  // Lua's pattern matching runs inside one C call, where the instruction budget never looks:
+  // a pattern such as ".-.-.-.-b" on a long string runs for minutes. Lessons do not need it.
+  lua_getglobal(state, LUA_STRLIBNAME);
+  for (const char* pattern_function : {"find", "match", "gmatch", "gsub"}) {
+    lua_pushnil(state);
+    lua_setfield(state, -2, pattern_function);
+  }
+  lua_pop(state, 1);
   lua_getglobal(state, LUA_MATHLIBNAME);
   for (const char* unseeded : {"random", "randomseed"}) {
     lua_pushnil(state);
     lua_setfield(state, -2, unseeded);
   }
   lua_pop(state, 1);
+  // setmetatable stays (scripts may use __index), wrapped to refuse __gc: Lua runs finalizers
+  // with hooks switched off, so an endless loop in one would hang the program where no budget
+  // can stop it (at the latest when the lesson is closed).
+  lua_pushcfunction(state, set_metatable_without_finalizer);
+  lua_setglobal(state, "setmetatable");
 }
 
 }  // namespace
@@ -74,7 +106,8 @@ void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
   // Inside a hook, level 0 is the script function that was running: the line to report.
   if (sandbox.memory_.used > sandbox.memory_.limit) {
     luaL_where(state, 0);
-    lua_pushfstring(state, "the script uses more than %d MB of memory (a table that grows without end?)",
+    lua_pushfstring(state, "the script uses more than %d MB of memory (a table that grows without end, or a function "
+                    "that calls itself without end?)",
                     static_cast<int>(sandbox.memory_.limit >> 20));
     lua_concat(state, 2);
     lua_error(state);
@@ -124,14 +157,23 @@ void Sandbox::call(int arguments, int results) {
   if (status == LUA_OK) return;
   std::string message;
   if (status == LUA_ERRMEM) {
-    message = "the script asked for more than " + std::to_string(limits_.memory_bytes >> 20) +
-              " MB of memory in one go";
+    // Lua reports this one without a line: the file at least says which script it was.
+    message = chunk_name_ + ": the script asked for more than " + std::to_string(limits_.memory_bytes >> 20) +
+              " MB of memory in one go (a string.rep that large, or a string doubled again and again?)";
   } else if (const char* text = lua_tostring(state_, -1)) {
     message = text;
   } else {
     message = "the script raised an error that is not a message (" + describe(state_, -1) + ")";
   }
   lua_pop(state_, 1);
+  if (!outermost) {
+    // A call made from inside an API function (a spring's hand read while spring{} runs, or
+    // through spring.force_x): its message is placed already, so it goes on to the outer call
+    // as a Lua error. As a C++ exception, guarded() would place it a second time, at the line
+    // that called the API function.
+    lua_pushstring(state_, message.c_str());
+    lua_error(state_);
+  }
   throw ScriptError(full_path(message));
 }
 
@@ -140,6 +182,9 @@ std::string describe(lua_State* state, int index) {
     case LUA_TNONE:
     case LUA_TNIL: return "nil";
     case LUA_TNUMBER: {
+      const double value = lua_tonumber(state, index);
+      if (std::isnan(value)) return "not a number (NaN, as 0/0 gives)";
+      if (std::isinf(value)) return value > 0 ? "infinity (as 1/0 gives)" : "minus infinity";
       // luaL_tolstring works on a copy; lua_tostring would turn the number itself into text.
       std::string text = luaL_tolstring(state, index, nullptr);
       lua_pop(state, 1);

@@ -1,5 +1,6 @@
 // The lesson part of the script API: what the lesson is and asks, its parameters, materials
 // and pairs, probes, plots, expectations and every-step functions.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -102,8 +103,18 @@ int parameter(lua_State* state) {
         declared.choices.emplace_back(lua_tostring(state, -1));
         lua_pop(state, 1);
       }
+      // Checked here rather than by parse_parameter_value, whose message is worded for
+      // --set NAME=VALUE ("block=: not one of ..." for a missing default).
       const std::string fallback = lua_type(state, -2) == LUA_TSTRING ? lua_tostring(state, -2) : "";
-      declared.value = parse_parameter_value(declared, fallback);  // throws listing the choices
+      const auto chosen = std::find(declared.choices.begin(), declared.choices.end(), fallback);
+      if (lua_type(state, -2) != LUA_TSTRING || chosen == declared.choices.end()) {
+        std::string list;
+        for (const std::string& choice : declared.choices) list += (list.empty() ? "" : ", ") + choice;
+        throw InvalidInput(fields.what() + ": its default comes second and must be one of the choices " + list +
+                           ", as in parameter{ \"" + declared.name + "\", \"" + declared.choices[0] +
+                           "\", choices = { ... } }; got " + describe(state, -2));
+      }
+      declared.value = static_cast<double>(chosen - declared.choices.begin());
     } else {
       if (lua_type(state, -2) != LUA_TNUMBER) {
         throw InvalidInput(fields.what() + ": its default value comes second, as in parameter{ \"mass\", 1.0, min = 0.1, "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "lessons/runtime/handles.h"
 #include "physics/validation.h"
@@ -46,8 +47,12 @@ Placement place(lua_State* state, Fields& fields, float lift) {
   const BodyHandle* surface = body_handle(state, -1, fields.what() + ": on");
   if (!surface->is_surface) throw InvalidInput(fields.what() + ": on must be a ground{} or an incline{}");
   const b2Vec2 origin = surface->origin, along = surface->along;
+  const float length = surface->length;
+  const bool is_ground = along.y == 0.0f && along.x == 1.0f && origin.x == -0.5f * length;
   lua_pop(state, 1);
-  const float at = static_cast<float>(fields.number("at", "m", 0.0));
+  // On the ground `at` is the x coordinate; on an incline, the distance up from its foot.
+  const double low = is_ground ? -0.5 * length : 0.0, high = is_ground ? 0.5 * length : length;
+  const float at = static_cast<float>(fields.number_in("at", "m", 0.0, low, high)) - static_cast<float>(low);
   const b2Vec2 normal{-along.y, along.x};
   return {origin + at * along + lift * normal, angle + std::atan2(along.y, along.x)};
 }
@@ -57,13 +62,19 @@ Placement place(lua_State* state, Fields& fields, float lift) {
 void finish_body(Fields& fields, b2Body* body, double area) {
   if (fields.has("mass")) {
     if (body->GetType() != b2_dynamicBody) throw InvalidInput(fields.what() + ": only a dynamic body has a mass to set");
-    const double mass = fields.number_in("mass", "kg", 1.0, 0.0, 1e6, true);
+    // Box2D keeps masses in floats: far below a milligram a small body's mass and inertia lose
+    // their digits, and Box2D aborts on an inertia that is no longer positive.
+    const double mass = fields.number_in("mass", "kg", 1.0, 1e-6, 1e6);
     body->GetFixtureList()->SetDensity(static_cast<float>(mass / area));
     body->ResetMassData();
   }
+  // The limits the scene puts on a body's starting motion (Scene::add_body), which the body
+  // made before these were read did not see.
   const b2Vec2 velocity = fields.point("velocity", origin_point);
+  validation::require_in_range(fields.what() + ": velocity x", velocity.x, -1e4, 1e4, false, " m/s");
+  validation::require_in_range(fields.what() + ": velocity y", velocity.y, -1e4, 1e4, false, " m/s");
   body->SetLinearVelocity(velocity);
-  body->SetAngularVelocity(static_cast<float>(fields.number("spin", "rad/s", 0.0)));
+  body->SetAngularVelocity(static_cast<float>(fields.number_in("spin", "rad/s", 0.0, -1e4, 1e4)));
   if (fields.flag("fixed_rotation").value_or(false)) body->SetFixedRotation(true);
 }
 
@@ -86,7 +97,8 @@ int ground(lua_State* state) {
     const float top = static_cast<float>(fields.number("y", "m", 0.0));
     constexpr float width = 400.0f, thickness = 1.0f;
     b2Body* body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
-    push_body(state, body, true, {0.0f, top}, {1.0f, 0.0f});
+    // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
+    push_body(state, body, true, {-0.5f * width, top}, {1.0f, 0.0f}, width);
     return 1;
   });
 }
@@ -171,6 +183,31 @@ std::vector<b2Vec2> convex_points(lua_State* state, Fields& fields) {
     throw InvalidInput(fields.what() + ": the corners must go round a convex shape in order, with no three in a line");
   }
   if (std::abs(area) < 1e-4) throw InvalidInput(fields.what() + ": the shape encloses almost no area");
+  // Box2D keeps a body's inertia about its origin in floats and takes m·|c|² off it to get the
+  // inertia about the centre c: corners far from the origin for their size leave nothing of
+  // it, and Box2D aborts. |c|² is kept within 1e4 times I_c/m, where floats still give I_c to
+  // about 0.1 %. Worked out about corner 1, per unit density.
+  double twice_area = 0.0, cx = 0.0, cy = 0.0, inertia = 0.0;
+  for (int i = 1; i + 1 < count; ++i) {
+    const double x1 = points[i].x - points[0].x, y1 = points[i].y - points[0].y;
+    const double x2 = points[i + 1].x - points[0].x, y2 = points[i + 1].y - points[0].y;
+    const double d = x1 * y2 - y1 * x2;  // twice the area of the triangle corner 1, i, i + 1
+    twice_area += d;
+    cx += d * (x1 + x2) / 3.0;
+    cy += d * (y1 + y2) / 3.0;
+    inertia += d / 12.0 * (x1 * x1 + x2 * x1 + x2 * x2 + y1 * y1 + y2 * y1 + y2 * y2);
+  }
+  cx /= twice_area;
+  cy /= twice_area;
+  const double central = 2.0 * inertia / twice_area - (cx * cx + cy * cy);  // I_c / m
+  const double distance = std::hypot(points[0].x + cx, points[0].y + cy);
+  if (distance * distance > 1e4 * central) {
+    std::ostringstream message;
+    message << fields.what() << ": its corners are centred " << distance
+            << " m from {0, 0}, too far for a shape this small; give them around {0, 0} and place the polygon "
+               "with x and y";
+    throw InvalidInput(message.str());
+  }
   return points;
 }
 
@@ -224,9 +261,41 @@ int incline(lua_State* state) {
     b2PolygonShape shape;
     shape.Set(corners, 3);
     build.scene->add_fixture(body, shape, material);
-    push_body(state, body, true, foot, along);
+    push_body(state, body, true, foot, along, static_cast<float>(length));
     return 1;
   });
+}
+
+// Reads the `count` numbers a function of time returned for `t` and pops them. Unlike
+// numbers_returned, the message gives the t the function was asked about (the scene asks where
+// a hand or a driven body will be a step ahead of its own time), and numbers beyond the
+// scene's ±1e9 are refused here, where the function's line is known, not later by the scene.
+std::array<double, 2> numbers_for_time(LessonBuild& build, int reference, int count, const std::string& what, double t) {
+  lua_State* state = build.sandbox.state();
+  std::array<double, 2> numbers{0.0, 0.0};
+  std::string problem;
+  for (int i = 0; i < count; ++i) {
+    const int index = i - count;
+    numbers[i] = lua_type(state, index) == LUA_TNUMBER ? lua_tonumber(state, index) : NAN;
+    if (!(std::abs(numbers[i]) <= 1e9) && problem.empty()) problem = describe(state, index);
+  }
+  lua_pop(state, count);
+  if (!problem.empty()) {
+    std::ostringstream message;
+    message << build.defined_at(reference) << ": " << what << " returned " << problem << " at t = " << t
+            << " s; it must return " << (count == 1 ? "a number" : std::to_string(count) + " numbers")
+            << ", finite and within ±1e9";
+    lua_Debug running;
+    if (lua_getstack(state, 0, &running)) {
+      // Read while an API function runs (spring{} asks for the hand at t = 0; spring.force_x
+      // and push.fx ask too): the message, placed already, goes on as a Lua error, which
+      // guarded() lets through instead of placing it a second time.
+      lua_pushstring(state, message.str().c_str());
+      lua_error(state);
+    }
+    throw ScriptError(message.str());
+  }
+  return numbers;
 }
 
 // A function of time the script gave for a body, a hand or a force: called with t, it must
@@ -243,8 +312,7 @@ std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build
       if (memory->times[i] == t) return memory->values[i];
     }
     owner->call(reference, {t}, count);
-    std::array<double, 2> answer{0.0, 0.0};
-    owner->numbers_returned(reference, count, what, answer.data());
+    const std::array<double, 2> answer = numbers_for_time(*owner, reference, count, what, t);
     memory->times[memory->next] = t;
     memory->values[memory->next] = answer;
     memory->next ^= 1;
@@ -301,6 +369,8 @@ int rope(lua_State* state) {
     fields.push("to");
     b2Body* to = body_handle(state, -1, fields.what() + ": to")->body;
     lua_pop(state, 2);
+    // Box2D aborts on a joint from a body to itself.
+    if (from == to) throw InvalidInput(fields.what() + ": from and to are the same body; a rope joins two bodies");
     if (!fields.has("over")) throw InvalidInput(fields.what() + ": over is missing: where the pulley is, as in over = {2, 1}");
     const b2Vec2 pulley = fields.point("over", origin_point);
     const b2Vec2 a = from->GetWorldPoint(fields.point("at", origin_point)), b = to->GetWorldPoint(fields.point("to_at", origin_point));

@@ -1,0 +1,3 @@
+-- expect: 3: unexpected symbol near '='
+lesson { title = "Broken", question = "What goes wrong?" }
+local width = = 0.4

@@ -1,0 +1,5 @@
+-- expect: 5: spring 'pull': the hand function (t -> x, y in m) returned the text "1, 0.1" at t = 0 s
+lesson { title = "Broken", question = "What goes wrong?" }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+spring { "pull", from = block, k = 50, to = function(t) return "1, 0.1" end }
