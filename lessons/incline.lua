@@ -23,30 +23,17 @@ local slope = incline { "slope", material = "slope", angle = angle, length = 6 }
 local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 5.5, mass = mass }
 
 -- Downhill is back along the slope towards its foot.
-local radians = math.rad(angle)
-local downhill_x, downhill_y = -math.cos(radians), -math.sin(radians)
-local start_x, start_y = block.x, block.y
+local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 
 -- Probes and plots ------------------------------------------------------------------------
-probe { "distance", unit = "m", function()
-  return (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
-end }
-probe { "speed", unit = "m/s", function() return block.vx * downhill_x + block.vy * downhill_y end }
 local touch = contact(block, slope)
+probe { "distance", unit = "m", read = { block, "distance", along = downhill } }  -- from where it started
+probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
 probe { "friction_force", unit = "N", read = { touch, "friction" } }  -- dry friction and drag
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
 plot { "Motion down the slope", y = { "distance", "speed" } }
 plot { "Forces from the slope", y = { "friction_force", "normal_force" } }
-
--- Speeds at a quarter of the run and at its end give the mean acceleration between them.
-local early_time, late_time = 0.25, 1
-local early_speed, late_speed
-every_step(function(t)
-  local speed = block.vx * downhill_x + block.vy * downhill_y
-  if math.abs(t - early_time) < 0.5 * step_length() then early_speed = speed end
-  late_speed = speed
-end)
 
 -- Expectations ----------------------------------------------------------------------------
 local function slides() return angle > theory.sticking_angle { mu_s = param.mu_s } end
@@ -54,11 +41,14 @@ local function slides() return angle > theory.sticking_angle { mu_s = param.mu_s
 expect { "sticks or slides",
   predicted = function() return slides() and "slides" or "sticks" end,
   measured = function()
-    local distance = (block.x - start_x) * downhill_x + (block.y - start_y) * downhill_y
+    local distance = value_at("distance", time())
+    if distance == nil then return nil end
     return distance > 0.001 and "slides" or "sticks"
   end }
 
--- Mean acceleration between the two times, from the exact speeds (exact with drag c too).
+-- The mean acceleration between a quarter of the run and its end, from the recorded speeds
+-- and from the exact ones (exact with drag c too).
+local early_time, late_time = 0.25, 1
 local function predicted_acceleration()
   if not slides() then return 0 end
   local function speed(t)
@@ -70,7 +60,7 @@ end
 expect { "mean acceleration down the slope", unit = "m/s²",
   predicted = predicted_acceleration,
   measured = function()
-    if early_speed == nil or time() < late_time - 0.5 * step_length() then return nil end
-    return (late_speed - early_speed) / (late_time - early_time)
+    if time() < late_time - 0.5 * step_length() then return nil end
+    return (value_at("speed", late_time) - value_at("speed", early_time)) / (late_time - early_time)
   end,
   tolerance = function() return math.max(0.01 * math.abs(predicted_acceleration()), 0.01) end }

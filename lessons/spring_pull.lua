@@ -42,25 +42,26 @@ local touch = contact(block, bench)
 probe { "spring_force", unit = "N", read = { pull, "force_x" } }
 probe { "friction_force", unit = "N", read = { touch, "fx" } }
 probe { "block_speed", unit = "m/s", read = { block, "vx" } }
+probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides, 0 while it sticks
 
 plot { "Forces on the block", y = { "spring_force", "friction_force" } }
 plot { "Friction against the pull", x = "spring_force", y = { "friction_force" } }
 
--- Watching for stick and slip --------------------------------------------------------------
--- The contact changes state during the step just taken, so the pull that made it change is
--- the one from before that step.
-local breakaways, restick_forces = {}, {}
-local was, pull_before = "sticking", 0
-every_step(function(t)
-  local now = touch.state
-  if was == "sticking" and now == "slipping" then
-    breakaways[#breakaways + 1] = { time = t - step_length(), force = pull_before }
-  elseif was == "slipping" and now == "sticking" then
-    restick_forces[#restick_forces + 1] = pull_before
+-- Reading the record ----------------------------------------------------------------------
+-- Like the article's experiment: record, then read the graph. The contact changes state during
+-- a step, so the pull that made it change is the one recorded the step before.
+local function stick_and_slip()
+  local times, slipping, pulls = history("time"), history("slipping"), history("spring_force")
+  local breakaways, restick_forces = {}, {}
+  for i = 2, #times do
+    if slipping[i - 1] == 0 and slipping[i] == 1 then
+      breakaways[#breakaways + 1] = { time = times[i] - step_length(), force = pulls[i - 1] }
+    elseif slipping[i - 1] == 1 and slipping[i] == 0 then
+      restick_forces[#restick_forces + 1] = pulls[i - 1]
+    end
   end
-  if now ~= "none" then was = now end
-  pull_before = pull.force_x
-end)
+  return breakaways, restick_forces
+end
 
 local function mean(values)
   if #values == 0 then return nil end
@@ -79,6 +80,7 @@ local weight = mass * g
 expect { "breakaway force", unit = "N",
   predicted = function() return cycle().breakaway_force end,
   measured = function()
+    local breakaways = stick_and_slip()
     local forces = {}
     for i, breakaway in ipairs(breakaways) do forces[i] = breakaway.force end
     return mean(forces)
@@ -87,12 +89,16 @@ expect { "breakaway force", unit = "N",
 
 expect { "re-stick force", unit = "N",
   predicted = function() return cycle().restick_force end,
-  measured = function() return mean(restick_forces) end,
+  measured = function()
+    local _, restick_forces = stick_and_slip()
+    return mean(restick_forces)
+  end,
   tolerance = function() return 0.02 * param.mu_s * weight end }
 
 expect { "stick-slip period", unit = "s",
   predicted = function() return cycle().period end,
   measured = function()
+    local breakaways = stick_and_slip()
     if #breakaways < 2 then return nil end
     return (breakaways[#breakaways].time - breakaways[1].time) / (#breakaways - 1)
   end,

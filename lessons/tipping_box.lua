@@ -38,45 +38,57 @@ local crate = box { "box", material = "crate", width = width, height = height, o
 local push = force { "push", on = crate, at = { -width / 2, push_height - height / 2 - resting_gap / 2 },
                      force = function(t) return push_rate * t, 0 end }
 
--- Sliding is measured at the front bottom corner: it stays put while the box tips about it.
-local corner_x = crate:world_point(width / 2, -height / 2)
-
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(crate, floor)
+local front_corner = { width / 2, -height / 2 }
 probe { "push", unit = "N", read = { push, "fx" } }
-probe { "tilt", unit = "°", function() return -crate.angle end }  -- pushed to the right, it tips clockwise
-probe { "slide", unit = "m", function() return (crate:world_point(width / 2, -height / 2)) - corner_x end }
+-- Pushed to the right, it tips clockwise, which is a negative angle.
+probe { "tilt", unit = "°", read = { crate, "angle", scale = -1 } }
+-- Sliding is measured at the front bottom corner: it stays put while the box tips about it.
+probe { "slide", unit = "m", read = { crate, "distance", at = front_corner, along = { 1, 0 } } }
 probe { "friction_force", unit = "N", read = { touch, "friction" } }
+-- The floor's push on the back and front edges: the box tips when the back one lets go.
+probe { "back_load", unit = "N", read = { touch, "load_left" } }
+probe { "front_load", unit = "N", read = { touch, "load_right" } }
+probe { "slipping", read = { touch, "slipping" } }
+probe { "contact_points", read = { touch, "points" } }
 
-plot { "What the box does", y = { "tilt" } }
+plot { "What the box does", y = { "tilt", "slide" } }
+plot { "The floor's push on each edge", x = "push", y = { "back_load", "front_load" } }
 plot { "Friction against the push", x = "push", y = { "friction_force" } }
 
--- Watching for the first thing to happen ------------------------------------------------
--- It slides when the contact starts slipping; it tips when the back edge stops carrying any
--- of the weight (or nothing touches the floor any more).
-local outcome, outcome_push
-every_step(function(t)
-  if outcome then return end
-  if touch.state == "none" then
-    outcome = "tips"
-  elseif touch.state == "slipping" then
-    outcome = "slides"
-  elseif touch.points < 2 or math.min(touch.load1, touch.load2) < 0.001 * (touch.load1 + touch.load2) then
-    outcome = "tips"
-  else
-    return
+-- Reading the record ----------------------------------------------------------------------
+-- The first thing to happen: it slides when the contact starts slipping; it tips when the back
+-- edge stops carrying any of the weight (or nothing touches the floor any more). The push that
+-- did it is the one during that step.
+local function first_outcome()
+  local times, points, slipping = history("time"), history("contact_points"), history("slipping")
+  local back, front = history("back_load"), history("front_load")
+  for i = 1, #times do
+    local outcome
+    if points[i] == 0 then
+      outcome = "tips"
+    elseif slipping[i] == 1 then
+      outcome = "slides"
+    elseif points[i] < 2 or math.min(back[i], front[i]) < 0.001 * (back[i] + front[i]) then
+      outcome = "tips"
+    end
+    if outcome then return outcome, push_rate * (times[i] - step_length()) end
   end
-  outcome_push = push_rate * (t - step_length())  -- the push during the step it happened in
-end)
+end
 
 -- Expectations ----------------------------------------------------------------------------
 local function predicted()
   return theory.push_outcome { mass = mass, width = width, push_height = push_height, mu_s = param.mu_s }
 end
 
-expect { "tips or slides", predicted = function() return predicted().outcome end, measured = function() return outcome end }
+expect { "tips or slides", predicted = function() return predicted().outcome end,
+         measured = function() return (first_outcome()) end }
 
 expect { "push when it happens", unit = "N",
   predicted = function() return predicted().force end,
-  measured = function() return outcome_push end,
+  measured = function()
+    local _, push_then = first_outcome()
+    return push_then
+  end,
   tolerance = function() return 0.005 * predicted().force end }

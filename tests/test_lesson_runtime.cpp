@@ -214,6 +214,67 @@ probe { "vx_lua", unit = "m/s", function() return block.vx end }
   EXPECT_RELATIVE(-probe_now(lesson, "fx_read"), 0.4 * g + drag, 1e-4);
 }
 
+TEST(LessonRuntime, ReadingsAtAPointAlongADirectionAndScaled) {
+  // A frictionless 1 kg puck pushed along x by 2 N: each reading is checked against the body's
+  // own position and velocity, read along x (a direction not of unit length), along the
+  // diagonal, at a corner, and turned round.
+  ScriptFile script(with_heading(R"(
+material { "puck", density = 100 }
+pair { "puck", "ice", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+local puck = box { "puck", material = "puck", width = 0.2, height = 0.1, on = floor, at = 1, mass = 1, spin = 0 }
+force { "push", on = puck, force = { 2, 0 } }
+probe { "along_x", unit = "m", read = { puck, "distance", along = { 3, 0 } } }
+probe { "along_diagonal", unit = "m", read = { puck, "distance", along = { 1, 1 } } }
+probe { "speed_x", unit = "m/s", read = { puck, "speed", along = { 1, 0 } } }
+probe { "corner_x", unit = "m", read = { puck, "x", at = { 0.1, -0.05 } } }
+probe { "minus_x", unit = "m", read = { puck, "x", scale = -1 } }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 1.0);
+  const double x = lesson.scene().body("puck")->GetPosition().x;
+  EXPECT_NEAR(probe_now(lesson, "along_x"), x - 1.0, 1e-6);
+  EXPECT_NEAR(probe_now(lesson, "along_diagonal"), (x - 1.0) / std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(probe_now(lesson, "speed_x"), 2.0, 1e-4);  // v = F t / m
+  EXPECT_NEAR(probe_now(lesson, "corner_x"), x + 0.1, 1e-6);
+  EXPECT_NEAR(probe_now(lesson, "minus_x"), -x, 1e-6);
+}
+
+TEST(LessonRuntime, HistoryAndValueAtReadTheRecord) {
+  ScriptFile script(with_heading(R"(
+probe { "twice_t", unit = "s", function() return 2 * time() end }
+expect { "steps recorded", predicted = 48, tolerance = 0, measured = function() return #history("time") end }
+expect { "value at 0.1 s", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.1) end }
+expect { "nearest step", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.101) end }
+expect { "not yet", predicted = "nothing", measured = function() return value_at("twice_t", 5) == nil and "nothing" or "something" end }
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{240.0});
+  run_for(lesson, 0.2);
+  for (const ExpectationResult& row : lesson.expectations()) EXPECT_TRUE(row.passes) << row.name;
+}
+
+TEST(LessonRuntime, ContactTellsWhichEdgeCarriesTheLoadAndWhetherItSlips) {
+  // A 10 kg box 0.5 m wide pushed at its left side, low and gently: it neither slides nor tips,
+  // but the push's moment shifts the load forward, to the right edge. Moments about the front
+  // (right) edge: back load = (W·d/2 − P·h) / d with the push P at height h above the contact plane.
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+local crate = box { "crate", material = "wood", width = 0.5, height = 1, on = floor, mass = 10 }
+force { "push", on = crate, at = { -0.25, 0.3 - 0.5 - resting_gap / 2 }, force = { 20, 0 } }
+local touch = contact(crate, floor)
+probe { "back", unit = "N", read = { touch, "load_left" } }
+probe { "front", unit = "N", read = { touch, "load_right" } }
+probe { "slipping", read = { touch, "slipping" } }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 0.5);
+  const double weight = 10 * g;
+  EXPECT_NEAR(probe_now(lesson, "back") + probe_now(lesson, "front"), weight, 0.01 * weight);
+  EXPECT_NEAR(probe_now(lesson, "back"), (weight * 0.25 - 20 * 0.3) / 0.5, 0.01 * weight);
+  EXPECT_EQ(probe_now(lesson, "slipping"), 0.0);
+}
+
 TEST(LessonRuntime, EveryStepRunsOncePerFrameWithTheTime) {
   ScriptFile script(with_heading(R"(
 local calls, last = 0, -1

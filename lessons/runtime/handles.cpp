@@ -34,8 +34,9 @@ int contact(lua_State* state) {
 
 // What a script can read from a handle. One table serves both `block.vx` in Lua and
 // probe{ read = { block, "vx" } }, which the runtime reads itself every step without Lua.
-enum class Field { x, y, angle, vx, vy, omega, mass, force_x, force_y, length, tension, fx, fy, friction, normal, nx,
-                   ny, drag, drag_x, drag_y, sliding_speed, points, load1, load2 };
+enum class Field { x, y, angle, vx, vy, omega, mass, distance, speed, force_x, force_y, length, tension, fx, fy,
+                   friction, normal, nx, ny, drag, drag_x, drag_y, sliding_speed, slipping, points, load1, load2,
+                   load_left, load_right };
 struct FieldName {
   const char* name;
   Field field;
@@ -43,7 +44,8 @@ struct FieldName {
 const std::vector<FieldName>& field_names(HandleType type) {
   static const std::vector<FieldName> body = {{"x", Field::x},   {"y", Field::y},         {"angle", Field::angle},
                                               {"vx", Field::vx}, {"vy", Field::vy},       {"omega", Field::omega},
-                                              {"mass", Field::mass}};
+                                              {"mass", Field::mass}, {"distance", Field::distance},
+                                              {"speed", Field::speed}};
   static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
                                                 {"length", Field::length}, {"tension", Field::tension}};
   static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
@@ -51,8 +53,9 @@ const std::vector<FieldName>& field_names(HandleType type) {
       {"friction", Field::friction}, {"fx", Field::fx},         {"fy", Field::fy},
       {"normal", Field::normal},     {"nx", Field::nx},         {"ny", Field::ny},
       {"drag", Field::drag},         {"drag_x", Field::drag_x}, {"drag_y", Field::drag_y},
-      {"sliding_speed", Field::sliding_speed}, {"points", Field::points}, {"load1", Field::load1},
-      {"load2", Field::load2}};
+      {"sliding_speed", Field::sliding_speed}, {"slipping", Field::slipping}, {"points", Field::points},
+      {"load1", Field::load1}, {"load2", Field::load2}, {"load_left", Field::load_left},
+      {"load_right", Field::load_right}};
   switch (type) {
     case body_type: return body;
     case spring_type: return spring;
@@ -68,6 +71,12 @@ struct Handle {
   const b2Body* body = nullptr;   // a body
   size_t index = 0;               // a spring or a force
   ContactHandle contact{nullptr, nullptr};
+  // How a probe reads a body: at which of its points, along which unit direction (distance
+  // and speed), from where that point started (distance), and times what (scale).
+  b2Vec2 point{0.0f, 0.0f};
+  b2Vec2 along{1.0f, 0.0f};
+  b2Vec2 start{0.0f, 0.0f};
+  double scale = 1.0;
 };
 
 std::optional<Handle> any_handle(lua_State* state, int index) {
@@ -93,15 +102,20 @@ std::optional<Field> find_field(HandleType type, const char* key) {
 
 double read_field(const Scene& scene, const Handle& handle, Field field) {
   const b2Body* body = handle.body;
-  switch (field) {
-    case Field::x: return body->GetPosition().x;
-    case Field::y: return body->GetPosition().y;
-    case Field::angle: return body->GetAngle() / degrees;
-    case Field::vx: return body->GetLinearVelocity().x;
-    case Field::vy: return body->GetLinearVelocity().y;
-    case Field::omega: return body->GetAngularVelocity();
-    case Field::mass: return body->GetMass();
-    default: break;
+  if (handle.type == body_type) {
+    const b2Vec2 p = body->GetWorldPoint(handle.point), v = body->GetLinearVelocityFromLocalPoint(handle.point);
+    switch (field) {
+      case Field::x: return p.x;
+      case Field::y: return p.y;
+      case Field::angle: return body->GetAngle() / degrees;
+      case Field::vx: return v.x;
+      case Field::vy: return v.y;
+      case Field::omega: return body->GetAngularVelocity();
+      case Field::mass: return body->GetMass();
+      case Field::distance: return b2Dot(p - handle.start, handle.along);
+      case Field::speed: return b2Dot(v, handle.along);
+      default: return 0.0;
+    }
   }
   if (handle.type == spring_type) {
     const Spring& spring = scene.springs()[handle.index];
@@ -135,8 +149,21 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
     case Field::drag_y: return drag.y;
     case Field::sliding_speed: return std::abs(record->sliding_velocity);
     case Field::points: return record->point_count;
+    case Field::slipping: return record->state == ContactState::slipping ? 1.0 : 0.0;
     case Field::load1: return record->point_normal_force[0];
     case Field::load2: return record->point_normal_force[1];
+    case Field::load_left:
+    case Field::load_right: {
+      // With one point, it is on the side of body a's centre it lies on.
+      const float middle = record->point_count == 2 ? 0.5f * (record->world_points[0].x + record->world_points[1].x)
+                                                    : a->GetPosition().x;
+      double load = 0.0;
+      for (int i = 0; i < record->point_count; ++i) {
+        const bool left = record->world_points[i].x < middle;
+        if (left == (field == Field::load_left)) load += record->point_normal_force[i];
+      }
+      return load;
+    }
     default: return 0.0;
   }
 }
@@ -161,9 +188,24 @@ int world_point(lua_State* state) {
 }
 
 // __index of every handle type: its name (or a contact's state), a method, or a number.
+// The type comes as the closure's upvalue, and Lua calls a metatable's __index only for values
+// that carry it (the metatables are hidden from scripts), so the handle needs no checking here:
+// field reads are the commonest thing a lesson's functions do.
+std::optional<Handle> handle_at(lua_State* state, int index, HandleType type) {
+  const void* data = lua_touserdata(state, index);
+  if (data == nullptr) return std::nullopt;
+  Handle handle{type};
+  if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
+  if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
+  if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
+  if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
+  return handle;
+}
+
 int handle_index(lua_State* state) {
   return guarded(state, [&] {
-    const std::optional<Handle> handle = any_handle(state, 1);
+    const auto type = static_cast<HandleType>(lua_tointeger(state, lua_upvalueindex(1)));
+    const std::optional<Handle> handle = handle_at(state, 1, type);
     if (!handle) throw InvalidInput("read a handle's fields with a dot, as in block.x");
     const char* key = lua_type(state, 2) == LUA_TSTRING ? lua_tostring(state, 2) : "?";
     const Scene& scene = *build_of(state).scene;
@@ -171,6 +213,10 @@ int handle_index(lua_State* state) {
       const ContactRecord* record = scene.friction().find(handle->contact.a, handle->contact.b);
       lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
+      if (field == Field::distance || field == Field::speed) {
+        throw InvalidInput(std::string("a body's ") + key + " needs a direction: read it in a probe, as in read = { block, \"" +
+                           key + "\", along = { 1, 0 } }, or work it out from x, y, vx and vy");
+      }
       lua_pushnumber(state, read_field(scene, *handle, *field));
     } else if (std::strcmp(key, "name") == 0 && handle->type != contact_type) {
       const std::string name = handle->type == body_type     ? body_name(state, handle->body)
@@ -262,8 +308,9 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
   index = lua_absindex(state, index);
   const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
   if (!lua_istable(state, index)) throw InvalidInput(expected + "; got " + describe(state, index));
+  Fields options(state, index, what + ": read", {"at", "along", "scale"});
   lua_rawgeti(state, index, 1);
-  const std::optional<Handle> handle = any_handle(state, -1);
+  std::optional<Handle> handle = any_handle(state, -1);
   lua_rawgeti(state, index, 2);
   const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
   const std::optional<Field> field = handle && key ? find_field(handle->type, key) : std::nullopt;
@@ -273,8 +320,24 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
     throw InvalidInput(expected + fields);
   }
   lua_pop(state, 2);
+  const bool pointwise = *field == Field::x || *field == Field::y || *field == Field::vx || *field == Field::vy ||
+                         *field == Field::distance || *field == Field::speed;
+  const bool directed = *field == Field::distance || *field == Field::speed;
+  if (options.has("at") && !pointwise) throw InvalidInput(what + ": at is for a body's x, y, vx, vy, distance and speed");
+  if (directed != options.has("along")) {
+    throw InvalidInput(what + (directed ? ": " + std::string(key) + " needs along = { dx, dy }, the direction it is measured in"
+                                        : ": along is only for a body's distance and speed"));
+  }
+  handle->point = options.point("at", origin_point);
+  if (directed) {
+    const b2Vec2 along = options.point("along", origin_point);
+    if (along.Length() < 1e-6f) throw InvalidInput(what + ": along must be a direction, not {0, 0}");
+    handle->along = (1.0f / along.Length()) * along;
+    handle->start = handle->body->GetWorldPoint(handle->point);  // distance counts from where it starts
+  }
+  handle->scale = options.number("scale", "", 1.0);
   const Scene* scene = build_of(state).scene.get();
-  return [scene, h = *handle, f = *field] { return read_field(*scene, h, f); };
+  return [scene, h = *handle, f = *field] { return h.scale * read_field(*scene, h, f); };
 }
 
 b2Body* body_argument(lua_State* state, int index, const std::string& what) {
@@ -287,8 +350,10 @@ void register_handles(lua_State* state) {
   for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
     luaL_newmetatable(state, type_names[type]);
     build_of(state).metatables[type] = lua_topointer(state, -1);
-    const luaL_Reg methods[] = {{"__index", handle_index}, {"__newindex", refuse_write}, {"__tostring", handle_text},
-                                {nullptr, nullptr}};
+    lua_pushinteger(state, type);
+    lua_pushcclosure(state, handle_index, 1);
+    lua_setfield(state, -2, "__index");
+    const luaL_Reg methods[] = {{"__newindex", refuse_write}, {"__tostring", handle_text}, {nullptr, nullptr}};
     luaL_setfuncs(state, methods, 0);
     // Hidden from getmetatable: a __gc a script added here would be given to every handle made
     // afterwards, and Lua runs finalizers where the sandbox's budgets cannot stop them.

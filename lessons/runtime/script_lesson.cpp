@@ -339,6 +339,42 @@ int every_step(lua_State* state) {
   });
 }
 
+// history("name"): what a probe recorded, one value a step (history("time"): the times), for
+// measuring after the run instead of in a function run every step.
+int history(lua_State* state) {
+  return guarded(state, [&] {
+    const char* name = luaL_checkstring(state, 1);
+    const Scene& scene = *build_of(state).scene;
+    const std::vector<double>& values = std::string(name) == "time" ? scene.times() : scene.probe(name).history;
+    lua_createtable(state, static_cast<int>(values.size()), 0);
+    for (size_t i = 0; i < values.size(); ++i) {
+      lua_pushnumber(state, values[i]);
+      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    }
+    return 1;
+  });
+}
+
+// value_at("name", t): a probe's value at the recorded step nearest t, or nil before then.
+int value_at(lua_State* state) {
+  return guarded(state, [&] {
+    const char* name = luaL_checkstring(state, 1);
+    const double t = luaL_checknumber(state, 2);
+    const Scene& scene = *build_of(state).scene;
+    const std::vector<double>& times = scene.times();
+    const std::vector<double>& values = scene.probe(name).history;
+    if (times.empty() || t > times.back() + 0.5 * scene.frame_step()) {
+      lua_pushnil(state);
+      return 1;
+    }
+    const auto later = std::lower_bound(times.begin(), times.end(), t);
+    size_t i = static_cast<size_t>(later - times.begin());
+    if (i == times.size() || (i > 0 && t - times[i - 1] < times[i] - t)) i = i == 0 ? 0 : i - 1;
+    lua_pushnumber(state, values[i]);
+    return 1;
+  });
+}
+
 int time_now(lua_State* state) {
   lua_pushnumber(state, build_of(state).scene->time());
   return 1;
@@ -371,7 +407,7 @@ void register_lesson_api(lua_State* state) {
   const luaL_Reg functions[] = {{"lesson", lesson},       {"parameter", parameter}, {"material", material},
                                 {"pair", pair},           {"probe", probe},         {"plot", plot},
                                 {"expect", expect},       {"every_step", every_step}, {"time", time_now},
-                                {"step_length", step_length}, {nullptr, nullptr}};
+                                {"step_length", step_length}, {"history", history}, {"value_at", value_at}, {nullptr, nullptr}};
   lua_pushglobaltable(state);
   luaL_setfuncs(state, functions, 0);
   lua_pop(state, 1);
