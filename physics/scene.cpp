@@ -288,9 +288,11 @@ void Scene::step() {
   ++frame_;
   time_ = static_cast<double>(frame_) * frame_step();
   update_ledger_state();
-  times_.push_back(time_);
+  // The time joins the record with the probes' values, so whatever runs before they sample
+  // sees a record whose columns all have the same length.
   if (before_probes_) before_probes_();
   for (Probe& probe : probes_) probe.history.push_back(probe.measure());
+  times_.push_back(time_);
 }
 
 void Scene::advance(double t, float h, bool move) {

@@ -247,10 +247,46 @@ expect { "steps recorded", predicted = 48, tolerance = 0, measured = function() 
 expect { "value at 0.1 s", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.1) end }
 expect { "nearest step", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.101) end }
 expect { "not yet", predicted = "nothing", measured = function() return value_at("twice_t", 5) == nil and "nothing" or "something" end }
+-- Read while the run goes on, the record's columns have the same length and hold every step
+-- before this one (this step's values join them when every_step is done).
+local consistent = true
+every_step(function(t)
+  local times, twice = history("time"), history("twice_t")
+  local before = t - step_length()
+  consistent = consistent and #times == #twice and times[#times + 1] == nil and value_at("time", t) == nil
+  if #times > 0 then
+    consistent = consistent and math.abs(times[#times] - before) < 1e-12 and math.abs(twice[#twice] - 2 * before) < 1e-12
+                 and value_at("time", before) == times[#times]
+  end
+end)
+expect { "record while running", predicted = true, measured = function() return consistent end }
+expect { "ipairs", predicted = 48, tolerance = 0, measured = function()
+  local count = 0
+  for _ in ipairs(history("twice_t")) do count = count + 1 end
+  return count
+end }
 )"));
   Lesson lesson(script.path(), {}, StepSettings{240.0});
   run_for(lesson, 0.2);
   for (const ExpectationResult& row : lesson.expectations()) EXPECT_TRUE(row.passes) << row.name;
+}
+
+TEST(LessonRuntime, AReadWithoutAPointIsWhatTheCsvShows) {
+  // A spinning triangle whose origin is a corner: x and y are that origin, vx and vy the
+  // velocity of its centre of mass, as in the CSV; with at = {0, 0} they are the corner's.
+  ScriptFile script(with_heading(R"(
+material { "puck", density = 100 }
+local corner = polygon { "corner", material = "puck", points = { { 0, 0 }, { 1, 0 }, { 0, 1 } }, x = 0, y = 5,
+                         spin = 2 }
+probe { "vx", unit = "m/s", read = { corner, "vx" } }
+probe { "corner_vx", unit = "m/s", read = { corner, "vx", at = { 0, 0 } } }
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{240.0});
+  lesson.step();
+  const b2Body* body = lesson.scene().body("corner");
+  EXPECT_EQ(probe_now(lesson, "vx"), body->GetLinearVelocity().x);
+  EXPECT_EQ(probe_now(lesson, "corner_vx"), body->GetLinearVelocityFromLocalPoint({0.0f, 0.0f}).x);
+  EXPECT_GT(std::abs(probe_now(lesson, "corner_vx") - probe_now(lesson, "vx")), 0.1);
 }
 
 TEST(LessonRuntime, ContactTellsWhichEdgeCarriesTheLoadAndWhetherItSlips) {

@@ -73,6 +73,7 @@ struct Handle {
   ContactHandle contact{nullptr, nullptr};
   // How a probe reads a body: at which of its points, along which unit direction (distance
   // and speed), from where that point started (distance), and times what (scale).
+  bool at_point = false;  // without one, x and y are the body's origin and vx, vy its centre's
   b2Vec2 point{0.0f, 0.0f};
   b2Vec2 along{1.0f, 0.0f};
   b2Vec2 start{0.0f, 0.0f};
@@ -103,7 +104,9 @@ std::optional<Field> find_field(HandleType type, const char* key) {
 double read_field(const Scene& scene, const Handle& handle, Field field) {
   const b2Body* body = handle.body;
   if (handle.type == body_type) {
-    const b2Vec2 p = body->GetWorldPoint(handle.point), v = body->GetLinearVelocityFromLocalPoint(handle.point);
+    // As in the CSV: a body's x, y are its origin and its vx, vy its centre of mass's velocity.
+    const b2Vec2 p = handle.at_point ? body->GetWorldPoint(handle.point) : body->GetPosition();
+    const b2Vec2 v = handle.at_point ? body->GetLinearVelocityFromLocalPoint(handle.point) : body->GetLinearVelocity();
     switch (field) {
       case Field::x: return p.x;
       case Field::y: return p.y;
@@ -168,9 +171,13 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
   }
 }
 
-std::string field_list(HandleType type) {
+// `in_lua`: the fields a script reads with a dot; distance and speed need a probe's direction.
+std::string field_list(HandleType type, bool in_lua = false) {
   std::string list;
-  for (const FieldName& known : field_names(type)) list += (list.empty() ? "" : ", ") + std::string(known.name);
+  for (const FieldName& known : field_names(type)) {
+    if (in_lua && (known.field == Field::distance || known.field == Field::speed)) continue;
+    list += (list.empty() ? "" : ", ") + std::string(known.name);
+  }
   return list;
 }
 
@@ -231,7 +238,8 @@ int handle_index(lua_State* state) {
                                                                : "name, ";
       throw InvalidInput(std::string(handle_words[handle->type]) + " has no field '" +
                          (lua_type(state, 2) == LUA_TSTRING ? std::string(key) : describe(state, 2)) + "'; it has " +
-                         extra + field_list(handle->type));
+                         extra + field_list(handle->type, true) +
+                         (handle->type == body_type ? " (and, in a probe's read, distance and speed)" : ""));
     }
     return 1;
   });
@@ -328,6 +336,7 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
     throw InvalidInput(what + (directed ? ": " + std::string(key) + " needs along = { dx, dy }, the direction it is measured in"
                                         : ": along is only for a body's distance and speed"));
   }
+  handle->at_point = options.has("at");
   handle->point = options.point("at", origin_point);
   if (directed) {
     const b2Vec2 along = options.point("along", origin_point);

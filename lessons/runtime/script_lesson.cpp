@@ -340,30 +340,68 @@ int every_step(lua_State* state) {
 }
 
 // history("name"): what a probe recorded, one value a step (history("time"): the times), for
-// measuring after the run instead of in a function run every step.
+// measuring after the run instead of in a function run every step. A view of the record, not
+// a copy: a long run's record would not fit in the script's memory many times over.
+struct HistoryView {
+  int probe;  // index in the scene's probes; -1 for the times
+};
+
+const std::vector<double>& recorded(const Scene& scene, int probe) {
+  return probe < 0 ? scene.times() : scene.probes()[static_cast<size_t>(probe)].history;
+}
+
+int find_probe(const Scene& scene, const char* name) {
+  if (std::string(name) == "time") return -1;
+  scene.probe(name);  // throws, listing the probes, when there is no such probe
+  for (size_t i = 0; i < scene.probes().size(); ++i) {
+    if (scene.probes()[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 int history(lua_State* state) {
   return guarded(state, [&] {
-    const char* name = luaL_checkstring(state, 1);
-    const Scene& scene = *build_of(state).scene;
-    const std::vector<double>& values = std::string(name) == "time" ? scene.times() : scene.probe(name).history;
-    lua_createtable(state, static_cast<int>(values.size()), 0);
-    for (size_t i = 0; i < values.size(); ++i) {
-      lua_pushnumber(state, values[i]);
-      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    const int probe = find_probe(*build_of(state).scene, luaL_checkstring(state, 1));
+    static_cast<HistoryView*>(lua_newuserdatauv(state, sizeof(HistoryView), 0))->probe = probe;
+    luaL_setmetatable(state, "frictionlab.history");
+    return 1;
+  });
+}
+
+// h[i]: the value recorded at step i (nil past the end). Lua calls this only for values that
+// carry the metatable, which scripts cannot reach, so the view needs no checking.
+int history_index(lua_State* state) {
+  return guarded(state, [&] {
+    const auto* view = static_cast<const HistoryView*>(lua_touserdata(state, 1));
+    if (!lua_isinteger(state, 2)) {
+      throw InvalidInput("a history is read by step number, as in h[1] to h[#h]; got " + describe(state, 2));
+    }
+    const std::vector<double>& values = recorded(*build_of(state).scene, view->probe);
+    const lua_Integer i = lua_tointeger(state, 2);
+    if (i >= 1 && static_cast<size_t>(i) <= values.size()) {
+      lua_pushnumber(state, values[static_cast<size_t>(i - 1)]);
+    } else {
+      lua_pushnil(state);
     }
     return 1;
   });
 }
 
-// value_at("name", t): a probe's value at the recorded step nearest t, or nil before then.
+int history_length(lua_State* state) {
+  const auto* view = static_cast<const HistoryView*>(lua_touserdata(state, 1));
+  lua_pushinteger(state, static_cast<lua_Integer>(recorded(*build_of(state).scene, view->probe).size()));
+  return 1;
+}
+
+// value_at("name", t): a probe's value (or the time) at the recorded step nearest t, or nil
+// before the run has got there.
 int value_at(lua_State* state) {
   return guarded(state, [&] {
-    const char* name = luaL_checkstring(state, 1);
-    const double t = luaL_checknumber(state, 2);
     const Scene& scene = *build_of(state).scene;
+    const std::vector<double>& values = recorded(scene, find_probe(scene, luaL_checkstring(state, 1)));
+    const double t = luaL_checknumber(state, 2);
     const std::vector<double>& times = scene.times();
-    const std::vector<double>& values = scene.probe(name).history;
-    if (times.empty() || t > times.back() + 0.5 * scene.frame_step()) {
+    if (values.empty() || t > times.back() + 0.5 * scene.frame_step()) {
       lua_pushnil(state);
       return 1;
     }
@@ -424,6 +462,12 @@ void register_lesson_api(lua_State* state) {
   lua_setfield(state, -2, "__newindex");
   lua_setmetatable(state, -2);
   lua_setglobal(state, "param");
+  luaL_newmetatable(state, "frictionlab.history");
+  const luaL_Reg history_methods[] = {{"__index", history_index}, {"__len", history_length}, {nullptr, nullptr}};
+  luaL_setfuncs(state, history_methods, 0);
+  lua_pushboolean(state, false);
+  lua_setfield(state, -2, "__metatable");  // hidden, so a script cannot call __index on anything else
+  lua_pop(state, 1);
 }
 
 }  // namespace frictionlab::lessons
