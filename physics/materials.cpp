@@ -59,7 +59,7 @@ void PairTable::grow(int new_count) {
 int PairTable::add_material(const Material& material) {
   if (material.name.empty()) throw InvalidInput("material: the name must not be empty");
   for (const Material& known : materials_) {
-    if (known.name == material.name) throw InvalidInput("material " + material.name + ": defined twice");
+    if (known.name == material.name) throw InvalidInput("material '" + material.name + "': defined twice");
   }
   // Box2D keeps masses in floats; far below 1e-3 kg/m² a body's mass rounds to nothing.
   if (!(material.density >= 1e-3 && material.density <= 1e6)) {

@@ -59,7 +59,7 @@ Scene::Scene(PairTable pairs, StepSettings settings, b2Vec2 gravity)
 void Scene::check_new_name(const std::string& name) const {
   if (name.empty()) throw InvalidInput("body: the name must not be empty");
   for (const auto& [known, body] : bodies_) {
-    if (known == name) throw InvalidInput("body " + name + ": defined twice");
+    if (known == name) throw InvalidInput("body '" + name + "': there is already a body of that name; give each its own");
   }
 }
 
@@ -67,21 +67,21 @@ void Scene::check_placement(const std::string& name, b2Vec2 position, float angl
   // Box2D asserts (and aborts) on a non-finite transform; far away its floats lose the
   // millimetres that friction lives in.
   using validation::require_in_range;
-  require_in_range("body " + name + ": x", position.x, -1e5, 1e5, false, " m");
-  require_in_range("body " + name + ": y", position.y, -1e5, 1e5, false, " m");
-  require_in_range("body " + name + ": angle", angle, -1e4, 1e4, false, " rad");
+  require_in_range("body '" + name + "': x", position.x, -1e5, 1e5, false, " m");
+  require_in_range("body '" + name + "': y", position.y, -1e5, 1e5, false, " m");
+  require_in_range("body '" + name + "': angle", angle, -1e4, 1e4, false, " rad");
 }
 
 b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
   check_new_name(name);
   check_placement(name, definition.position, definition.angle);
   using validation::require_in_range;
-  require_in_range("body " + name + ": speed x", definition.linearVelocity.x, -1e4, 1e4, false, " m/s");
-  require_in_range("body " + name + ": speed y", definition.linearVelocity.y, -1e4, 1e4, false, " m/s");
-  require_in_range("body " + name + ": spin", definition.angularVelocity, -1e4, 1e4, false, " rad/s");
-  require_in_range("body " + name + ": linear damping", definition.linearDamping, 0.0, 1e4, false, " 1/s");
-  require_in_range("body " + name + ": angular damping", definition.angularDamping, 0.0, 1e4, false, " 1/s");
-  require_in_range("body " + name + ": gravity scale", definition.gravityScale, -100.0, 100.0, false, "");
+  require_in_range("body '" + name + "': speed x", definition.linearVelocity.x, -1e4, 1e4, false, " m/s");
+  require_in_range("body '" + name + "': speed y", definition.linearVelocity.y, -1e4, 1e4, false, " m/s");
+  require_in_range("body '" + name + "': spin", definition.angularVelocity, -1e4, 1e4, false, " rad/s");
+  require_in_range("body '" + name + "': linear damping", definition.linearDamping, 0.0, 1e4, false, " 1/s");
+  require_in_range("body '" + name + "': angular damping", definition.angularDamping, 0.0, 1e4, false, " 1/s");
+  require_in_range("body '" + name + "': gravity scale", definition.gravityScale, -100.0, 100.0, false, "");
   b2Body* created = world_->CreateBody(&definition);
   bodies_.emplace_back(name, created);
   return created;
@@ -117,8 +117,8 @@ b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::str
 b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
                        float width, float height, float angle) {
   // Box2D wraps every polygon in a 1 cm skin; a box much thinner than two skins is all skin.
-  validation::require_in_range("box " + name + ": width", width, 0.02, 1000.0, false, " m");
-  validation::require_in_range("box " + name + ": height", height, 0.02, 1000.0, false, " m");
+  validation::require_in_range("box '" + name + "': width", width, 0.02, 1000.0, false, " m");
+  validation::require_in_range("box '" + name + "': height", height, 0.02, 1000.0, false, " m");
   // Everything is checked before the body exists, so a refused box leaves nothing behind.
   check_new_name(name);
   check_placement(name, center, angle);
@@ -144,12 +144,12 @@ b2Body* Scene::body(const std::string& name) const {
 }
 
 void Scene::add_spring(const Spring& spring) {
-  if (spring.body == nullptr) throw InvalidInput("spring " + spring.name + ": it must be attached to a body");
+  if (spring.body == nullptr) throw InvalidInput("spring '" + spring.name + "': it must be attached to a body");
   if (spring.other == nullptr && !spring.hand) {
-    throw InvalidInput("spring " + spring.name + ": its far end needs a body or a hand");
+    throw InvalidInput("spring '" + spring.name + "': its far end needs a body or a hand");
   }
-  validation::require_in_range("spring " + spring.name + ": stiffness k", spring.stiffness, 0.0, 1e9, true, " N/m");
-  validation::require_in_range("spring " + spring.name + ": rest length", spring.rest_length, 0.0, 1e4, false, " m");
+  validation::require_in_range("spring '" + spring.name + "': stiffness k", spring.stiffness, 0.0, 1e9, true, " N/m");
+  validation::require_in_range("spring '" + spring.name + "': rest length", spring.rest_length, 0.0, 1e4, false, " m");
   // The spring force is explicit: it stays stable only while h·sqrt(k/m) < 2, with m the mass
   // it moves (the reduced mass between two bodies).
   double inverse_mass = 0.0;
@@ -161,7 +161,7 @@ void Scene::add_spring(const Spring& spring) {
     const double limit = 4.0 / (inverse_mass * h * h);
     if (spring.stiffness >= limit) {
       std::ostringstream message;
-      message << "spring " << spring.name << ": stiffness k = " << spring.stiffness
+      message << "spring '" << spring.name << "': stiffness k = " << spring.stiffness
               << " N/m is too stiff for the step h = " << h << " s; an explicit spring on "
               << 1.0 / inverse_mass << " kg is stable only for k < 4·m/h² = " << limit
               << " N/m (raise hz or substeps, or soften the spring)";
@@ -173,7 +173,7 @@ void Scene::add_spring(const Spring& spring) {
 
 void Scene::add_applied_force(const AppliedForce& force) {
   if (force.body == nullptr || !force.force) {
-    throw InvalidInput("applied force " + force.name + ": it needs a body and a force");
+    throw InvalidInput("applied force '" + force.name + "': it needs a body and a force");
   }
   applied_.push_back(force);
 }
@@ -187,7 +187,7 @@ void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
 
 void Scene::add_probe(const std::string& name, std::function<double()> measure) {
   for (const Probe& probe : probes_) {
-    if (probe.name == name) throw InvalidInput("probe " + name + ": defined twice");
+    if (probe.name == name) throw InvalidInput("probe '" + name + "': there is already a probe of that name; give each its own");
   }
   probes_.push_back({name, std::move(measure), {}});
 }
@@ -204,8 +204,8 @@ const Probe& Scene::probe(const std::string& name) const {
     if (p.name == name) return p;
   }
   std::string known;
-  for (const Probe& p : probes_) known += " " + p.name;
-  throw InvalidInput("unknown probe '" + name + "'; probes in this scene:" + known);
+  for (const Probe& p : probes_) known += (known.empty() ? " " : ", ") + p.name;
+  throw InvalidInput("unknown probe '" + name + "'; probes in this scene:" + (known.empty() ? " none" : known));
 }
 
 b2Vec2 Scene::hand_position(const Spring& spring) const {
@@ -305,7 +305,7 @@ void Scene::advance(double t, float h, bool move) {
   listener_.apply_contact_forces(*world_, h);
 
   for (const Driver& driver : drivers_) {
-    const auto named = [&](const char* what) { return "driven body " + name_of(driver.body) + ": " + what; };
+    const auto named = [&](const char* what) { return "driven body '" + name_of(driver.body) + "': " + what; };
     const b2Vec2 now = checked(driver.position(t), t, [&] { return named("position"); });
     const b2Vec2 next = checked(driver.position(t + h), t + h, [&] { return named("position"); });
     const double angle_now = driver.angle ? checked(driver.angle(t), t, [&] { return named("angle"); }) : 0.0;
@@ -316,12 +316,12 @@ void Scene::advance(double t, float h, bool move) {
   }
 
   for (const Spring& spring : springs_) {
-    const b2Vec2 force = checked(spring_force(spring), t, [&] { return "spring " + spring.name + ": force"; });
+    const b2Vec2 force = checked(spring_force(spring), t, [&] { return "spring '" + spring.name + "': force"; });
     spring.body->ApplyForce(force, world_point(spring.body, spring.local_point), true);
     if (spring.other) {
       spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
     } else {
-      const b2Vec2 next = checked(spring.hand(t + h), t + h, [&] { return "spring " + spring.name + ": hand"; });
+      const b2Vec2 next = checked(spring.hand(t + h), t + h, [&] { return "spring '" + spring.name + "': hand"; });
       // The hand does work on the spring as it moves its end.
       if (move) ledger_.work_applied += b2Dot(force, next - hand_position(spring));
     }
@@ -337,7 +337,7 @@ void Scene::advance(double t, float h, bool move) {
   pending.reserve(applied_.size());
   for (const AppliedForce& applied : applied_) {
     const b2Vec2 point = world_point(applied.body, applied.local_point);
-    const b2Vec2 force = checked(applied.force(t), t, [&] { return "applied force " + applied.name; });
+    const b2Vec2 force = checked(applied.force(t), t, [&] { return "applied force '" + applied.name + "'"; });
     applied.body->ApplyForce(force, point, true);
     pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
   }

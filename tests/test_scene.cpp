@@ -34,7 +34,7 @@ TEST(Scene, RejectsABodyWhoseMaterialHasNoPairWithTheOthers) {
   scene.add_box("floor", b2_staticBody, "ice", {0, -0.5f}, 10, 1);
   expect_invalid([&] { scene.add_box("crate", b2_dynamicBody, "wood", {0, 0.5f}, 1, 1); }, "wood–ice", "set them");
   expect_invalid([&] { scene.add_box("crate", b2_dynamicBody, "steel", {0, 0.5f}, 1, 1); }, "unknown material", "ice");
-  expect_invalid([&] { scene.add_box("floor", b2_staticBody, "ice", {0, 5}, 1, 1); }, "floor", "defined twice");
+  expect_invalid([&] { scene.add_box("floor", b2_staticBody, "ice", {0, 5}, 1, 1); }, "floor", "there is already a body of that name");
   EXPECT_EQ(scene.bodies().size(), 1u) << "refused boxes leave nothing behind";
 }
 
@@ -42,7 +42,7 @@ TEST(Scene, RejectsPlacementsAndSizesBox2DWouldAbortOn) {
   Scene scene(block_on_ground(Block{}));
   expect_invalid([&] { scene.add_box("thin", b2_dynamicBody, "block", {0, 5}, 0, 1); }, "width", "[0.02, 1000]");
   expect_invalid([&] { scene.add_box("speck", b2_dynamicBody, "block", {0, 5}, 1e-6f, 1e-6f); }, "width", "[0.02, 1000]");
-  expect_invalid([&] { scene.add_box("lost", b2_dynamicBody, "block", {NAN, 5}, 1, 1); }, "lost: x", "[-100000, 100000]");
+  expect_invalid([&] { scene.add_box("lost", b2_dynamicBody, "block", {NAN, 5}, 1, 1); }, "'lost': x", "[-100000, 100000]");
   expect_invalid([&] { scene.add_box("spun", b2_dynamicBody, "block", {0, 5}, 1, 1, INFINITY); }, "angle", "[-10000, 10000]");
   b2BodyDef definition;
   definition.type = b2_dynamicBody;
@@ -76,7 +76,7 @@ TEST(Scene, FunctionsOfTimeThatReturnNaNAreRefusedAtTheirTime) {
   scene.add_applied_force({"push", block, {0, 0}, [](double t) {
                              return b2Vec2{t > 0.1 ? NAN : 1.0f, 0.0f};
                            }});
-  expect_invalid([&] { for (int i = 0; i < 100; ++i) scene.step(); }, "applied force push at t = 0.1", "finite");
+  expect_invalid([&] { for (int i = 0; i < 100; ++i) scene.step(); }, "applied force 'push' at t = 0.1", "finite");
   EXPECT_TRUE(std::isfinite(block->GetPosition().x));
 }
 
@@ -96,7 +96,7 @@ TEST(Scene, RejectsBadSpringsForcesAndDrivers) {
   expect_invalid([&] { scene.add_spring(spring); }, "stiffness k", "(0, 1e+09]");
   spring.stiffness = 5.0;
   spring.hand = nullptr;
-  expect_invalid([&] { scene.add_spring(spring); }, "spring s", "far end");
+  expect_invalid([&] { scene.add_spring(spring); }, "spring 's'", "far end");
   EXPECT_THROW(scene.add_applied_force({"push", block, {0, 0}, nullptr}), InvalidInput);
   EXPECT_THROW(scene.drive(block, [](double) { return b2Vec2{0, 0}; }, nullptr), InvalidInput);
   expect_invalid([&] { scene.body("nobody"); }, "unknown body 'nobody'", "block");
