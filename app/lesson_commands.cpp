@@ -134,6 +134,16 @@ class CsvLog {
 
 // Runs the lesson for `duration` and prints its expectations; returns how many failed.
 int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
+  // Every probe keeps a value a step in memory; refuse a run whose record would not fit.
+  const double steps = duration * lesson.settings().hz;
+  const double values = steps * static_cast<double>(lesson.scene().probes().size() + 1);
+  if (values > 2e8) {
+    std::ostringstream message;
+    message << "a run of " << format_number(duration) << " s at " << format_number(lesson.settings().hz) << " Hz with "
+            << lesson.scene().probes().size() << " probes would record " << format_number(values, 3)
+            << " values (1.6 GB); shorten --duration or lower --hz";
+    throw InvalidInput(message.str());
+  }
   if (csv) csv->header(lesson.scene());
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {
@@ -191,7 +201,9 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   std::optional<CsvLog> csv;
   if (!options.csv.empty()) csv.emplace(options.csv, lesson.path());
   print_heading(lesson, out);
-  run_and_report(lesson, options.duration.value_or(lesson.duration()), csv ? &*csv : nullptr, out);
+  // The lesson's own duration only when none is given: its function may not even be needed.
+  const double duration = options.duration ? *options.duration : lesson.duration();
+  run_and_report(lesson, duration, csv ? &*csv : nullptr, out);
   if (csv) csv->finish();
   return 0;
 }

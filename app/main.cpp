@@ -45,5 +45,10 @@ int main(int argc, char** argv) {
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';
     return 2;
+  } catch (const std::exception& error) {
+    // Not bad input but something the machine could not do (out of memory, say): still a
+    // message and the same exit code, never an abort.
+    std::cerr << "frictionlab: could not finish: " << error.what() << '\n';
+    return 2;
   }
 }

@@ -267,7 +267,7 @@ void Scene::start(float h) {
   for (b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
     if (body->GetType() == b2_dynamicBody) launches.push_back({body, body->GetLinearVelocity(), body->GetAngularVelocity()});
   }
-  advance(0.0, 0.5f * h, false);
+  advance(0.0, 0.5f * h, 0.5 * frame_step() / settings_.substeps, false);
   for (const Launch& launch : launches) {
     const bool moving = launch.velocity.LengthSquared() > 0.0f || launch.spin != 0.0f;
     launch.body->SetLinearVelocity(moving ? 2.0f * launch.velocity - launch.body->GetLinearVelocity() : launch.velocity);
@@ -283,7 +283,10 @@ void Scene::step() {
   if (!ledger_started_) start(h);
   for (int i = 0; i < settings_.substeps; ++i) {
     time_ = (static_cast<double>(frame_) + static_cast<double>(i) / settings_.substeps) * frame_step();
-    advance(time_, h, true);
+    // The end of the sub-step in double: t + h in float would ask for a time a hair off the
+    // next one, and functions of time would be asked twice a step instead of once.
+    const double end = (static_cast<double>(frame_) + static_cast<double>(i + 1) / settings_.substeps) * frame_step();
+    advance(time_, h, end, true);
   }
   ++frame_;
   time_ = static_cast<double>(frame_) * frame_step();
@@ -295,7 +298,7 @@ void Scene::step() {
   times_.push_back(time_);
 }
 
-void Scene::advance(double t, float h, bool move) {
+void Scene::advance(double t, float h, double t_end, bool move) {
   std::vector<std::pair<b2Body*, b2Transform>> held;
   if (!move) {
     for (b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
@@ -307,9 +310,9 @@ void Scene::advance(double t, float h, bool move) {
   for (const Driver& driver : drivers_) {
     const auto named = [&](const char* what) { return "driven body '" + name_of(driver.body) + "': " + what; };
     const b2Vec2 now = checked(driver.position(t), t, [&] { return named("position"); });
-    const b2Vec2 next = checked(driver.position(t + h), t + h, [&] { return named("position"); });
+    const b2Vec2 next = checked(driver.position(t_end), t_end, [&] { return named("position"); });
     const double angle_now = driver.angle ? checked(driver.angle(t), t, [&] { return named("angle"); }) : 0.0;
-    const double angle_next = driver.angle ? checked(driver.angle(t + h), t + h, [&] { return named("angle"); }) : 0.0;
+    const double angle_next = driver.angle ? checked(driver.angle(t_end), t_end, [&] { return named("angle"); }) : 0.0;
     driver.body->SetTransform(now, static_cast<float>(angle_now));
     driver.body->SetLinearVelocity((1.0f / h) * (next - now));
     driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
@@ -321,7 +324,7 @@ void Scene::advance(double t, float h, bool move) {
     if (spring.other) {
       spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
     } else {
-      const b2Vec2 next = checked(spring.hand(t + h), t + h, [&] { return "spring '" + spring.name + "': hand"; });
+      const b2Vec2 next = checked(spring.hand(t_end), t_end, [&] { return "spring '" + spring.name + "': hand"; });
       // The hand does work on the spring as it moves its end.
       if (move) ledger_.work_applied += b2Dot(force, next - hand_position(spring));
     }

@@ -134,9 +134,9 @@ class Scene {
     VectorOfTime position;
     ScalarOfTime angle;
   };
-  // One world step of length h from time t. With `move` false the bodies are put back where
-  // they were afterwards, and only their velocities advance.
-  void advance(double t, float h, bool move);
+  // One world step of length h from time t to t_end (t + h, given exactly in double). With
+  // `move` false the bodies are put back where they were afterwards, and only their velocities advance.
+  void advance(double t, float h, double t_end, bool move);
   // Before the first step: turns the velocities given at t = 0 into the half-step-earlier
   // velocities Box2D's integrator needs.
   void start(float h);

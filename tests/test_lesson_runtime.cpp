@@ -511,6 +511,23 @@ TEST(LessonReload, ValuesOfParametersThatAreGoneAreForgotten) {
   EXPECT_EQ(lesson.parameter("width").value, 0.75);
 }
 
+TEST(LessonReload, AFailedReloadKeepsTheSliderValuesAndANarrowerRangeDropsThem) {
+  ScriptFile script(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 10 }\n"));
+  Lesson lesson(script.path(), {{"mass", "5"}});
+  // A broken edit that also drops the parameter: the failed reload must not forget the 5.
+  script.rewrite(with_heading("plot { \"nothing\", y = \"missing\" }\n"));
+  EXPECT_FALSE(lesson.reload());
+  lesson.reset();
+  EXPECT_EQ(lesson.parameter("mass").value, 5.0);
+  // The range narrowed under the slider: the lesson reloads, at the default, and says why.
+  script.rewrite(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 2 }\n"));
+  EXPECT_TRUE(lesson.reload()) << lesson.last_error();
+  EXPECT_EQ(lesson.parameter("mass").value, 1.0);
+  ASSERT_EQ(lesson.warnings().size(), 1u);
+  EXPECT_NE(lesson.warnings()[0].find("mass was set to 5, which no longer fits; it is back to 1"), std::string::npos)
+      << lesson.warnings()[0];
+}
+
 TEST(LessonReload, AnErrorWhileRunningStopsTheLessonUntilItIsReset) {
   ScriptFile script(with_heading(R"(
 probe { "fragile", function() if time() > 0.1 then return nil end return 1 end }
@@ -538,6 +555,18 @@ if string.find ~= nil or ("x").match ~= nil or string.gsub ~= nil or string.gmat
 assert(string.format("%.1f", math.sqrt(2)) == "1.4" and table.concat({ 1, 2 }, ",") == "1,2" and utf8.char(956) == "μ")
 )"));
   EXPECT_NO_THROW(Lesson{script.path()});
+}
+
+TEST(LessonSandbox, PairsGoesInTheSameOrderOnEveryRun) {
+  // Lua seeds its string hashing from the clock; pairs must not pass that on to the lesson.
+  ScriptFile script(with_heading(R"(
+local t = { zeta = 1, alpha = 2, mid = 3, [3] = "c", [1] = "a", [2.5] = "b", beta = 4 }
+local order = {}
+for k in pairs(t) do order[#order + 1] = tostring(k) end
+expect { "order", predicted = "1 2.5 3 alpha beta mid zeta", measured = table.concat(order, " ") }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_TRUE(lesson.expectations()[0].passes) << lesson.expectations()[0].measured_text;
 }
 
 TEST(LessonSandbox, BinaryChunksAreRefused) {

@@ -43,11 +43,15 @@ struct RememberedValues {
 };
 
 struct LessonBuild {
-  LessonBuild(std::string chunk_name, const std::map<std::string, std::string>& overrides, StepSettings settings);
+  LessonBuild(std::string chunk_name, std::map<std::string, std::string> overrides, bool strict, StepSettings settings);
 
   Sandbox sandbox;
   std::string chunk_name;
-  const std::map<std::string, std::string>& overrides;
+  // The values set from outside (--set, sliders), this build's own copy: a build that fails
+  // leaves the lesson's untouched. Not strict (a reload), a value that no longer fits is
+  // dropped with a warning instead of failing the build.
+  std::map<std::string, std::string> overrides;
+  bool strict = true;
   StepSettings settings;
   std::unique_ptr<Scene> scene;
   PairTable presets;
@@ -131,6 +135,11 @@ class Fields {
   std::string call_;
   std::string what_;
 };
+
+// Throws InvalidInput naming `what` unless the value at `index` is a function the script
+// wrote: a library function (print, math.sin) has no line to report errors at, and takes
+// other arguments than the runtime gives.
+void require_script_function(lua_State* state, int index, const std::string& what);
 
 // Reads a parameter's value from text: a number within its range, or one of its choices.
 // Throws InvalidInput naming the parameter and the range or the choices.

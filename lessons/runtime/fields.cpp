@@ -1,6 +1,7 @@
 // Reading a script's table arguments with errors a student can act on.
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 #include "lessons/runtime/build.h"
 #include "physics/validation.h"
@@ -34,7 +35,10 @@ Fields::Fields(lua_State* state, int index, std::string call, std::initializer_l
     what_ = call_ + " '" + lua_tostring(state_, -2) + "'";
   }
   lua_pop(state_, 2);
-  // Refuse fields the call does not know, listing the ones it does.
+  // Refuse fields the call does not know, listing the ones it does. The first unknown one in
+  // alphabetical order is named, so the message is the same on every run (Lua's table order
+  // is not).
+  std::string unknown;
   lua_pushnil(state_);
   while (lua_next(state_, index_) != 0) {
     lua_pop(state_, 1);
@@ -42,13 +46,13 @@ Fields::Fields(lua_State* state, int index, std::string call, std::initializer_l
       const std::string key = lua_tostring(state_, -1);
       bool found = false;
       for (const char* name : known) found = found || key == name;
-      if (!found) {
-        std::string list;
-        for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
-        lua_pop(state_, 1);
-        throw InvalidInput(what_ + ": unknown field '" + key + "'; it takes " + list);
-      }
+      if (!found && (unknown.empty() || key < unknown)) unknown = key;
     }
+  }
+  if (!unknown.empty()) {
+    std::string list;
+    for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
+    throw InvalidInput(what_ + ": unknown field '" + unknown + "'; it takes " + list);
   }
 }
 
@@ -135,9 +139,10 @@ b2Vec2 Fields::point(const char* key, b2Vec2 fallback) {
     lua_pop(state_, 1);
     return fallback;
   }
-  // Most points are places in m; a starting velocity and a constant force are not.
-  const char* unit = std::strcmp(key, "velocity") == 0 ? "m/s" : std::strcmp(key, "force") == 0 ? "N" : "m";
-  const std::string expected = std::string("a pair of numbers such as {0.5, 0} (") + unit + ")";
+  // Most points are places in m; a starting velocity, a constant force and a direction are not.
+  const bool force = std::strcmp(key, "force") == 0;
+  const char* unit = std::strcmp(key, "velocity") == 0 ? "m/s" : force ? "N" : std::strcmp(key, "along") == 0 ? "" : "m";
+  const std::string expected = std::string("a pair of numbers such as {0.5, 0}") + (*unit ? std::string(" (") + unit + ")" : "");
   if (!lua_istable(state_, -1)) wrong(key, expected, -1);
   double xy[2];
   for (int i = 0; i < 2; ++i) {
@@ -146,12 +151,23 @@ b2Vec2 Fields::point(const char* key, b2Vec2 fallback) {
     xy[i] = lua_tonumber(state_, -1);
   }
   lua_pop(state_, 3);
+  // Far beyond the scene (or a force beyond what the scene accepts) would turn the world to NaN.
+  const double limit = force ? 1e9 : 1e4;
+  if (std::abs(xy[0]) > limit || std::abs(xy[1]) > limit) {
+    std::ostringstream message;
+    message << what_ << ": " << key << " = {" << xy[0] << ", " << xy[1] << "} must be within ±" << limit
+            << (*unit ? " " : "") << unit;
+    throw InvalidInput(message.str());
+  }
   return {static_cast<float>(xy[0]), static_cast<float>(xy[1])};
 }
 
 bool Fields::push_function(const char* key) {
   lua_getfield(state_, index_, key);
-  if (lua_isfunction(state_, -1)) return true;
+  if (lua_isfunction(state_, -1)) {
+    require_script_function(state_, -1, what_ + ": " + key);
+    return true;
+  }
   lua_pop(state_, 1);
   return false;
 }

@@ -24,10 +24,19 @@ std::string Parameter::shown() const {
   return format_value(value) + (unit.empty() ? "" : " " + unit);
 }
 
+void require_script_function(lua_State* state, int index, const std::string& what) {
+  if (lua_iscfunction(state, index)) {
+    throw InvalidInput(what + ": give a function written in the script, as in function(t) ... end, not a "
+                       "library one such as print or math.sin");
+  }
+}
+
 LessonBuild& build_of(lua_State* state) { return *static_cast<LessonBuild*>(sandbox_of(state).owner()); }
 
-LessonBuild::LessonBuild(std::string chunk, const std::map<std::string, std::string>& given, StepSettings step)
-    : chunk_name(std::move(chunk)), overrides(given), settings(step), presets(preset_table()) {
+LessonBuild::LessonBuild(std::string chunk, std::map<std::string, std::string> given, bool strict_overrides,
+                         StepSettings step)
+    : chunk_name(std::move(chunk)), overrides(std::move(given)), strict(strict_overrides), settings(step),
+      presets(preset_table()) {
   scene = std::make_unique<Scene>(PairTable{}, settings);
   lua_State* state = sandbox.state();
   sandbox.set_owner(this);
@@ -162,19 +171,19 @@ Lesson::Lesson(std::string path, std::map<std::string, std::string> overrides, S
 Lesson::~Lesson() = default;
 
 std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool strict) {
-  auto next = std::make_unique<LessonBuild>(path_, overrides_, settings_);
+  auto next = std::make_unique<LessonBuild>(path_, overrides_, strict, settings_);
   next->sandbox.load(source, path_);
   next->sandbox.call(0, 0);
   next->building = false;
   if (!next->override_error.empty()) throw InvalidInput("--set " + next->override_error);
-  for (auto given = overrides_.begin(); given != overrides_.end();) {
+  for (auto given = next->overrides.begin(); given != next->overrides.end();) {
     if (next->find_parameter(given->first) != nullptr) {
       ++given;
     } else if (strict) {
       throw InvalidInput("--set " + given->first + ": " + path_ + " has no parameter of that name; its parameters: " +
                          next->parameter_names());
     } else {
-      given = overrides_.erase(given);
+      given = next->overrides.erase(given);
     }
   }
   if (next->title.empty()) {
@@ -202,6 +211,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
 }
 
 void Lesson::replace(std::unique_ptr<LessonBuild> next, std::string source) {
+  overrides_ = next->overrides;  // what the new build kept of them
   current_ = std::move(next);
   source_ = std::move(source);
   failed_ = false;

@@ -11,28 +11,106 @@ namespace {
 // microseconds of its budget, rarely enough to cost nothing measurable.
 constexpr int instructions_per_check = 1000;
 
-// Lua's own setmetatable, refusing a metatable with __gc.
-int set_metatable_without_finalizer(lua_State* state) {
-  const int type = lua_type(state, 2);
+// string.rep of an empty string a huge number of times loops inside C, where the budget never
+// looks, making nothing; the result is "" whatever the count.
+int repeat_text(lua_State* state) {
+  std::size_t length = 0, separator = 0;
+  luaL_checklstring(state, 1, &length);
+  const lua_Integer count = luaL_checkinteger(state, 2);
+  luaL_optlstring(state, 3, "", &separator);
+  if (count <= 0 || length + separator == 0) {
+    lua_pushliteral(state, "");
+    return 1;
+  }
+  lua_pushvalue(state, lua_upvalueindex(1));
+  lua_insert(state, 1);
+  lua_call(state, lua_gettop(state) - 1, 1);
+  return 1;
+}
+
+// table.move over a range of a quintillion empty slots also loops inside C. No lesson moves
+// more than a table's worth of entries; a range longer than the memory could hold is refused.
+int move_entries(lua_State* state) {
+  const lua_Integer from = luaL_checkinteger(state, 2), to = luaL_checkinteger(state, 3);
+  if (to >= from && (to - from) > 10'000'000) {
+    return luaL_error(state, "table.move: a range of more than 10 million entries (%I to %I)", from, to);
+  }
+  lua_pushvalue(state, lua_upvalueindex(1));
+  lua_insert(state, 1);
+  lua_call(state, lua_gettop(state) - 1, LUA_MULTRET);
+  return lua_gettop(state);
+}
+
+// Replaces library function `name` of the table on the stack top by `wrapper`, which gets the
+// original as its upvalue.
+void wrap(lua_State* state, const char* name, lua_CFunction wrapper) {
+  lua_getfield(state, -1, name);
+  lua_pushcclosure(state, wrapper, 1);
+  lua_setfield(state, -2, name);
+}
+
+// pairs in an order that is the same on every run: Lua seeds its string hashing from the
+// clock, so the order of a table's keys changes from run to run, and a lesson that builds
+// bodies in pairs order would too. Numbers come first in increasing order, then strings in
+// alphabetical order, then the rest.
+int key_rank(lua_State* state, int index) {
+  switch (lua_type(state, index)) {
+    case LUA_TNUMBER: return 0;
+    case LUA_TSTRING: return 1;
+    case LUA_TBOOLEAN: return 2;
+    default: return 3;
+  }
+}
+
+int ordered_next(lua_State* state) {
+  // Upvalue 1: the list of keys in order; upvalue 2: the position reached.
+  const lua_Integer position = lua_tointeger(state, lua_upvalueindex(2)) + 1;
+  lua_pushinteger(state, position);
+  lua_replace(state, lua_upvalueindex(2));
+  if (lua_rawgeti(state, lua_upvalueindex(1), position) == LUA_TNIL) return 1;
+  lua_pushvalue(state, -1);
+  lua_rawget(state, 1);
+  return 2;
+}
+
+int ordered_pairs(lua_State* state) {
   luaL_checktype(state, 1, LUA_TTABLE);
-  luaL_argexpected(state, type == LUA_TNIL || type == LUA_TTABLE, 2, "nil or table");
-  if (luaL_getmetafield(state, 1, "__metatable") != LUA_TNIL) return luaL_error(state, "cannot change a protected metatable");
-  if (type == LUA_TTABLE) {
-    lua_pushliteral(state, "__gc");
-    if (lua_rawget(state, 2) != LUA_TNIL) {
-      return luaL_error(state, "setmetatable: a metatable in a lesson cannot have __gc (Lua runs it where the "
-                               "sandbox cannot stop it)");
+  lua_settop(state, 1);
+  lua_newtable(state);  // the keys
+  lua_Integer count = 0;
+  lua_pushnil(state);
+  while (lua_next(state, 1) != 0) {
+    lua_pop(state, 1);
+    lua_pushvalue(state, -1);
+    lua_rawseti(state, 2, ++count);
+  }
+  // Insertion sort keeps this short; lessons' tables are small.
+  for (lua_Integer i = 2; i <= count; ++i) {
+    for (lua_Integer j = i; j > 1; --j) {
+      lua_rawgeti(state, 2, j - 1);
+      lua_rawgeti(state, 2, j);
+      const int earlier = key_rank(state, -2), later = key_rank(state, -1);
+      const bool swap = later < earlier || (later == earlier && later < 2 && lua_compare(state, -1, -2, LUA_OPLT));
+      if (!swap) {
+        lua_pop(state, 2);
+        break;
+      }
+      lua_rawseti(state, 2, j - 1);
+      lua_rawseti(state, 2, j);
     }
   }
-  lua_settop(state, 2);
-  lua_setmetatable(state, 1);
-  return 1;
+  lua_pushinteger(state, 0);
+  lua_pushcclosure(state, ordered_next, 2);
+  lua_pushvalue(state, 1);
+  lua_pushnil(state);
+  return 3;
 }
 
 // Libraries a lesson may use, and from the base library only what cannot reach outside the
 // script or outlive its budgets: pcall and xpcall go, since a script that catches the
-// budget's error could loop forever. math.random is left out because lessons must be
-// deterministic.
+// budget's error could loop forever; setmetatable and getmetatable go, since metatables run
+// script code where no budget can stop it (__gc, __close) or make library loops endless
+// (__len). math.random is left out because lessons must be deterministic.
 void open_safe_libraries(lua_State* state) {
   luaL_requiref(state, LUA_GNAME, luaopen_base, 1);
   luaL_requiref(state, LUA_TABLIBNAME, luaopen_table, 1);
@@ -40,7 +118,8 @@ void open_safe_libraries(lua_State* state) {
   luaL_requiref(state, LUA_MATHLIBNAME, luaopen_math, 1);
   luaL_requiref(state, LUA_UTF8LIBNAME, luaopen_utf8, 1);
   lua_pop(state, 5);
-  for (const char* unsafe : {"dofile", "loadfile", "load", "require", "collectgarbage", "pcall", "xpcall"}) {
+  for (const char* unsafe : {"dofile", "loadfile", "load", "require", "collectgarbage", "pcall", "xpcall", "setmetatable",
+                             "getmetatable"}) {
     lua_pushnil(state);
     lua_setglobal(state, unsafe);
   }
@@ -51,18 +130,19 @@ void open_safe_libraries(lua_State* state) {
     lua_pushnil(state);
     lua_setfield(state, -2, pattern_function);
   }
+  wrap(state, "rep", repeat_text);
   lua_pop(state, 1);
+  lua_getglobal(state, LUA_TABLIBNAME);
+  wrap(state, "move", move_entries);
+  lua_pop(state, 1);
+  lua_pushcfunction(state, ordered_pairs);
+  lua_setglobal(state, "pairs");
   lua_getglobal(state, LUA_MATHLIBNAME);
   for (const char* unseeded : {"random", "randomseed"}) {
     lua_pushnil(state);
     lua_setfield(state, -2, unseeded);
   }
   lua_pop(state, 1);
-  // setmetatable stays (scripts may use __index), wrapped to refuse __gc: Lua runs finalizers
-  // with hooks switched off, so an endless loop in one would hang the program where no budget
-  // can stop it (at the latest when the lesson is closed).
-  lua_pushcfunction(state, set_metatable_without_finalizer);
-  lua_setglobal(state, "setmetatable");
 }
 
 }  // namespace
@@ -112,15 +192,49 @@ void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
     lua_concat(state, 2);
     lua_error(state);
   }
+  // Instructions are not time: a string grown one character at a time costs more per
+  // instruction the longer it gets. The clock bounds what the count cannot.
+  if (std::chrono::steady_clock::now() > sandbox.deadline_) {
+    luaL_where(state, 0);
+    lua_pushfstring(state, "the script ran for more than %d seconds without finishing (an endless loop, or a string "
+                    "grown one piece at a time?)",
+                    static_cast<int>(sandbox.limits_.seconds_per_call));
+    lua_concat(state, 2);
+    lua_error(state);
+  }
   if (sandbox.budget_left_ < 0) {
-    // The budget starts over for whatever handles the error, so a message can still be built.
-    sandbox.budget_left_ = sandbox.limits_.instructions_per_call;
+    // The budget stays spent: anything still run while the error unwinds stops at once.
     luaL_where(state, 0);
     lua_pushfstring(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
                     static_cast<int>(sandbox.limits_.instructions_per_call / 1'000'000));
     lua_concat(state, 2);
     lua_error(state);
   }
+}
+
+// The innermost frame of the script's own code: where a message belongs. C frames (library
+// functions, API functions called through them) have no line.
+std::string script_place(lua_State* state, int level) {
+  lua_Debug frame;
+  for (; lua_getstack(state, level, &frame); ++level) {
+    if (lua_getinfo(state, "Sl", &frame) && frame.currentline > 0) {
+      return std::string(frame.source[0] == '@' ? frame.source + 1 : frame.short_src) + ":" +
+             std::to_string(frame.currentline) + ": ";
+    }
+  }
+  return "";
+}
+
+int Sandbox::place_error(lua_State* state) {
+  const Sandbox& sandbox = sandbox_of(state);
+  const char* text = lua_tostring(state, 1);
+  std::string message = text ? text : "the script raised an error that is not a message (" + describe(state, 1) + ")";
+  const std::string place = script_place(state, 1);
+  const std::string full = sandbox.full_path(message);
+  const bool placed = full.rfind(sandbox.chunk_name_ + ":", 0) == 0 || message.rfind("...", 0) == 0;
+  if (!placed && !place.empty()) message = place + message;
+  lua_pushstring(state, message.c_str());
+  return 1;
 }
 
 void Sandbox::load(std::string_view source, const std::string& chunk_name) {
@@ -147,11 +261,20 @@ std::string Sandbox::full_path(const std::string& message) const {
 
 void Sandbox::call(int arguments, int results) {
   const bool outermost = depth_ == 0;
-  if (outermost) budget_left_ = limits_.instructions_per_call;
+  if (outermost) {
+    budget_left_ = limits_.instructions_per_call;
+    deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(limits_.seconds_per_call));
+  }
   const bool timed = outermost && timing_;
   const auto start = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   ++depth_;
-  const int status = lua_pcall(state_, arguments, results, 0);
+  // The message handler places an error that has no place yet (error("...", 0), error({})).
+  const int handler = lua_gettop(state_) - arguments;
+  lua_pushcfunction(state_, &Sandbox::place_error);
+  lua_insert(state_, handler);
+  const int status = lua_pcall(state_, arguments, results, handler);
+  lua_remove(state_, status == LUA_OK ? handler : -2);
   --depth_;
   if (timed) time_in_lua_ += std::chrono::steady_clock::now() - start;
   if (status == LUA_OK) return;

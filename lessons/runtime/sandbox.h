@@ -21,7 +21,10 @@ struct ScriptError : InvalidInput {
 
 struct SandboxLimits {
   std::size_t memory_bytes = 64u << 20;
-  long instructions_per_call = 50'000'000;  // one build, one step's callbacks, one evaluation
+  // Per call into the script: the build, one frame's probes and every_step functions, one
+  // function of time, one expectation. Calls made from inside another share its budget.
+  long instructions_per_call = 50'000'000;
+  double seconds_per_call = 5.0;
 };
 
 class Sandbox {
@@ -59,6 +62,7 @@ class Sandbox {
   std::string full_path(const std::string& message) const;
   static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
   static void count_instructions(lua_State* state, lua_Debug* debug);
+  static int place_error(lua_State* state);
 
   SandboxLimits limits_;
   Memory memory_;
@@ -66,13 +70,18 @@ class Sandbox {
   std::string chunk_name_;
   void* owner_ = nullptr;
   long budget_left_ = 0;
-  int depth_ = 0;
-  bool timing_ = false;  // a call made from inside another (a spring's hand read during the build) shares its budget
+  std::chrono::steady_clock::time_point deadline_{};
+  int depth_ = 0;  // a call made from inside another (a hand read while spring{} runs) shares its budget
+  bool timing_ = false;
   std::chrono::nanoseconds time_in_lua_{0};
 };
 
 // The sandbox that owns `state`.
 Sandbox& sandbox_of(lua_State* state);
+
+// "path:line: " of the innermost frame of the script's own code at or above `level` (C frames,
+// such as a library function that called an API function, have no line), or "".
+std::string script_place(lua_State* state, int level);
 
 // Runs `body` as the C function it is called from; a C++ exception from it becomes a Lua
 // error placed at the script line that called the function. Every API function goes through
@@ -84,9 +93,7 @@ int guarded(lua_State* state, Body&& body) {
   try {
     results = body();
   } catch (const std::exception& error) {
-    luaL_where(state, 1);
-    lua_pushstring(state, error.what());
-    lua_concat(state, 2);
+    lua_pushstring(state, (script_place(state, 1) + error.what()).c_str());
     failed = true;
   }
   if (failed) return lua_error(state);

@@ -37,7 +37,14 @@ void apply_override(LessonBuild& build, Parameter& parameter) {
   try {
     parameter.value = parse_parameter_value(parameter, found->second);
   } catch (const InvalidInput& error) {
-    if (build.override_error.empty()) build.override_error = error.what();
+    if (build.strict) {
+      if (build.override_error.empty()) build.override_error = error.what();
+    } else {
+      // The script changed under a slider's value (a narrower range, a choice gone).
+      build.warnings.push_back(parameter.declared_at + ": " + parameter.name + " was set to " + found->second +
+                               ", which no longer fits; it is back to " + parameter.shown());
+      build.overrides.erase(found);
+    }
   }
 }
 
@@ -200,6 +207,11 @@ int pair(lua_State* state) {
       lua_pop(state, 1);
     }
     const std::string label = names[0] + "/" + names[1];
+    for (const Parameter& declared : build.parameters) {
+      const bool same = (declared.material_a == names[0] && declared.material_b == names[1]) ||
+                        (declared.material_a == names[1] && declared.material_b == names[0]);
+      if (same) throw InvalidInput("pair " + label + " is given twice (first at " + declared.declared_at + ")");
+    }
     for (const std::string& name : names) build.use_material(name);
     FrictionPair values;
     if (fields.has("mu_s") || fields.has("mu_k")) {
@@ -268,6 +280,7 @@ int probe(lua_State* state) {
                          "\", unit = \"N\", function() return ... end }, or read = { handle, \"field\" }; got " +
                          describe(state, -1));
     }
+    require_script_function(state, -1, fields.what());
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
     build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
@@ -333,6 +346,7 @@ int every_step(lua_State* state) {
     if (!lua_isfunction(state, 1)) {
       throw InvalidInput("every_step takes a function, as in every_step(function(t) ... end); got " + describe(state, 1));
     }
+    require_script_function(state, 1, "every_step");
     lua_settop(state, 1);
     build_of(state).every_step.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
     return 0;
@@ -400,6 +414,7 @@ int value_at(lua_State* state) {
     const Scene& scene = *build_of(state).scene;
     const std::vector<double>& values = recorded(scene, find_probe(scene, luaL_checkstring(state, 1)));
     const double t = luaL_checknumber(state, 2);
+    if (!std::isfinite(t)) throw InvalidInput("value_at: the time must be a finite number of seconds");
     const std::vector<double>& times = scene.times();
     if (values.empty() || t > times.back() + 0.5 * scene.frame_step()) {
       lua_pushnil(state);

@@ -166,6 +166,10 @@ std::vector<b2Vec2> convex_points(lua_State* state, Fields& fields) {
     }
     lua_pop(state, 1);
     if (!std::isfinite(xy[0]) || !std::isfinite(xy[1])) throw InvalidInput(expected + "; corner " + std::to_string(i) + " is not");
+    if (std::abs(xy[0]) > 1000.0 || std::abs(xy[1]) > 1000.0) {
+      throw InvalidInput(fields.what() + ": corner " + std::to_string(i) + " is more than 1000 m from {0, 0}; give the "
+                         "corners around {0, 0} and place the polygon with x and y");
+    }
     points.push_back({static_cast<float>(xy[0]), static_cast<float>(xy[1])});
   }
   lua_pop(state, 1);
@@ -309,7 +313,10 @@ std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build
   build.remembered.push_back(memory);
   return [owner, reference, count, what, memory](double t) {
     for (int i = 0; i < memory->filled; ++i) {
-      if (memory->times[i] == t) return memory->values[i];
+      if (memory->times[i] == t) {
+        memory->next = i ^ 1;  // the other one is the older: replaced next
+        return memory->values[i];
+      }
     }
     owner->call(reference, {t}, count);
     const std::array<double, 2> answer = numbers_for_time(*owner, reference, count, what, t);
@@ -334,6 +341,7 @@ int spring(lua_State* state) {
     made.local_point = fields.point("at", origin_point);
     fields.push("to");
     if (lua_isfunction(state, -1)) {
+      require_script_function(state, -1, fields.what() + ": to");
       const auto hand = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2,
                                          fields.what() + ": the hand function (t -> x, y in m)");
       made.hand = [hand](double t) {

@@ -1,3 +1,3 @@
--- expect: 3: setmetatable: a metatable in a lesson cannot have __gc
+-- expect: 3: attempt to call a nil value (global 'setmetatable')
 lesson { title = "Broken", question = "What goes wrong?" }
 local log = setmetatable({}, { __gc = function() while true do end end })

@@ -1,0 +1,3 @@
+-- expect: 3: box takes a table
+lesson { title = "Broken", question = "What goes wrong?" }
+table.sort({ 1, 2, 3 }, box)

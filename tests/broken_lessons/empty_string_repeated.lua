@@ -1,0 +1,5 @@
+-- expect: 5: attempt to perform arithmetic on a nil value
+lesson { title = "Broken", question = "What goes wrong?" }
+-- Repeating nothing a huge number of times is nothing, at once.
+local nothing = string.rep("", math.maxinteger)
+local oops = #nothing + undefined_number
