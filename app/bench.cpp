@@ -156,7 +156,8 @@ std::string lesson_speed(bool quick, std::ostream& out) {
   for (const std::string& name : lessons::builtin_lessons()) {
     std::vector<double> costs, shares;
     double simulated = 0.0;
-    // Odd repeats time the speed alone; even ones also clock every call into Lua for the share.
+    // Repeats 0, 2, 4, ... time the speed alone; 1, 3, 5, ... also clock every call into Lua
+    // for the share (reading the clock costs time of its own).
     for (int r = 0; r < (quick ? 2 : 10); ++r) {
       const bool share_pass = r % 2 == 1;
       lessons::Lesson lesson(lessons::resolve_lesson(name));

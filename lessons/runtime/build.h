@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "lessons/runtime/lesson.h"
 
 namespace frictionlab::lessons {
+
+// Scripts give angles in degrees.
+inline constexpr double degrees = std::numbers::pi / 180.0;
 
 struct ProbeInfo {
   std::string name;
@@ -153,7 +157,5 @@ void register_theory_api(lua_State* state);
 // table is at `index`; throws InvalidInput naming `what` and the handle's fields.
 std::function<double()> reading(lua_State* state, int index, const std::string& what);
 
-// Reads a body handle (what box{}, ground{} and the others return); throws naming `what`.
-b2Body* body_argument(lua_State* state, int index, const std::string& what);
 
 }  // namespace frictionlab::lessons

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -14,8 +13,6 @@ const char* const type_names[4] = {"frictionlab.body", "frictionlab.spring", "fr
                                    "frictionlab.contact"};
 
 namespace {
-
-constexpr double degrees = std::numbers::pi / 180.0;
 
 // contact(a, b): a view of what the friction listener recorded for the touching pair, read
 // when a field is read. A view rather than a table of copies: probes ask every step, and
@@ -347,10 +344,6 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
   handle->scale = options.number("scale", "", 1.0);
   const Scene* scene = build_of(state).scene.get();
   return [scene, h = *handle, f = *field] { return h.scale * read_field(*scene, h, f); };
-}
-
-b2Body* body_argument(lua_State* state, int index, const std::string& what) {
-  return body_handle(state, index, what)->body;
 }
 
 void register_handles(lua_State* state) {

@@ -82,6 +82,8 @@ class Lesson {
   double duration() const;  // how long `run` and `check` run it, s
   const StepSettings& settings() const { return settings_; }
 
+  // The scene, parameters, plots and ropes belong to the current build: set() on a structural
+  // parameter, reload() and reset() replace it, so do not keep references across those calls.
   Scene& scene();
   const Scene& scene() const;
   const std::vector<Parameter>& parameters() const;
@@ -104,8 +106,8 @@ class Lesson {
   // parameter and its range, or listing the parameters) and changes nothing when the value is
   // wrong. A structural parameter rebuilds the scene from t = 0; the others apply at once.
   void set(const std::string& name, const std::string& value);
-  // Runs the script again from disk (the file changed, or the student asked). On failure the
-  // last good lesson keeps running; the error is returned and kept in last_error().
+  // Runs the script again from disk (the file changed, or the student asked). Returns false on
+  // failure, with the reason in last_error(), and the last good lesson keeps running.
   bool reload();
   // Builds the scene again from t = 0 with the current parameters (after a script error).
   void reset();

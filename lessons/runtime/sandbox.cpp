@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 
 namespace frictionlab::lessons {
 namespace {
@@ -152,6 +153,11 @@ Sandbox::Sandbox(SandboxLimits limits) : limits_(limits) {
   state_ = lua_newstate(&Sandbox::allocate, &memory_);
   if (state_ == nullptr) throw ScriptError("cannot start Lua: out of memory");
   *static_cast<Sandbox**>(lua_getextraspace(state_)) = this;
+  // An error outside any protected call would otherwise end the program (abort).
+  lua_atpanic(state_, [](lua_State* state) -> int {
+    const char* text = lua_tostring(state, -1);
+    throw ScriptError(std::string("the script failed outside a protected call: ") + (text ? text : "?"));
+  });
   open_safe_libraries(state_);
   // What garbage lessons make (strings, small tables in their functions) dies young: the
   // generational collector handles that with less work than the incremental one.
@@ -308,10 +314,16 @@ std::string describe(lua_State* state, int index) {
       const double value = lua_tonumber(state, index);
       if (std::isnan(value)) return "not a number (NaN, as 0/0 gives)";
       if (std::isinf(value)) return value > 0 ? "infinity (as 1/0 gives)" : "minus infinity";
-      // luaL_tolstring works on a copy; lua_tostring would turn the number itself into text.
-      std::string text = luaL_tolstring(state, index, nullptr);
-      lua_pop(state, 1);
-      return "the number " + text;
+      // Formatted here rather than by Lua, which may need memory and may run outside any
+      // protected call.
+      std::ostringstream text;
+      if (lua_isinteger(state, index)) {
+        text << lua_tointeger(state, index);
+      } else {
+        text.precision(14);
+        text << value;
+      }
+      return "the number " + text.str();
     }
     case LUA_TBOOLEAN: return lua_toboolean(state, index) ? "true" : "false";
     case LUA_TSTRING: return "the text \"" + std::string(lua_tostring(state, index)) + "\"";

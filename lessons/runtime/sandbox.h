@@ -46,6 +46,9 @@ class Sandbox {
   void call(int arguments, int results);
 
   std::size_t memory_in_use() const { return memory_.used; }
+  // How many calls into the script are running: 1 in the build's own chunk, more inside a
+  // function it gave (a hand asked for while spring{} runs).
+  int depth() const { return depth_; }
   // Whatever the sandbox runs for (the lesson build), reachable from API functions.
   void* owner() const { return owner_; }
   void set_owner(void* owner) { owner_ = owner; }

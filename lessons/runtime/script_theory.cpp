@@ -1,7 +1,6 @@
 // theory.*: the closed forms of physics/closed_forms.h, so a lesson's expectations use the
 // same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
 // mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
-#include <numbers>
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
@@ -9,8 +8,6 @@
 
 namespace frictionlab::lessons {
 namespace {
-
-constexpr double degrees = std::numbers::pi / 180.0;
 
 void set_number(lua_State* state, const char* key, double value) {
   lua_pushnumber(state, value);
