@@ -4,6 +4,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -96,7 +97,10 @@ struct LessonBuild {
   // Reads the `count` numbers a kept function returned (on the stack top) and pops them;
   // throws ScriptError placed at the function's definition when they are not finite numbers.
   // Fills `numbers` with them.
-  void numbers_returned(int reference, int count, const std::string& what, double* numbers);
+  // `t`: the time the function was asked about, for the message; `limit`: the largest size
+  // allowed (a function of time's answers must stay within what the scene accepts).
+  void numbers_returned(int reference, int count, const std::string& what, double* numbers, double t,
+                        double limit = std::numeric_limits<double>::infinity());
   // Pushes the value kept at `reference`, calling it first when it is a function.
   void push_value(int reference);
 };

@@ -77,16 +77,19 @@ struct Handle {
   double scale = 1.0;
 };
 
+Handle copy_handle(const void* data, HandleType type) {
+  Handle handle{type};
+  if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
+  if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
+  if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
+  if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
+  return handle;
+}
+
+// Whatever handle is at `index`, found by its metatable.
 std::optional<Handle> any_handle(lua_State* state, int index) {
   for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
-    const void* data = handle_of(state, index, type);
-    if (data == nullptr) continue;
-    Handle handle{type};
-    if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
-    if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
-    if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
-    if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
-    return handle;
+    if (const void* data = handle_of(state, index, type)) return copy_handle(data, type);
   }
   return std::nullopt;
 }
@@ -198,12 +201,7 @@ int world_point(lua_State* state) {
 std::optional<Handle> handle_at(lua_State* state, int index, HandleType type) {
   const void* data = lua_touserdata(state, index);
   if (data == nullptr) return std::nullopt;
-  Handle handle{type};
-  if (type == body_type) handle.body = static_cast<const BodyHandle*>(data)->body;
-  if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
-  if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
-  if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
-  return handle;
+  return copy_handle(data, type);
 }
 
 int handle_index(lua_State* state) {

@@ -92,7 +92,7 @@ int measure_frame(lua_State* state) {
       if (probe.function == LUA_NOREF) continue;  // the scene reads it itself
       lua_rawgeti(state, LUA_REGISTRYINDEX, probe.function);
       lua_call(state, 0, 1);
-      build.numbers_returned(probe.function, 1, probe.what, &probe.value);
+      build.numbers_returned(probe.function, 1, probe.what, &probe.value, build.scene->time());
     }
     const double now = build.scene->time();
     for (const int reference : build.every_step) {
@@ -133,22 +133,32 @@ std::string LessonBuild::defined_at(int reference) {
   return std::string(debug.source + 1) + ":" + std::to_string(debug.linedefined);  // source is "@path"
 }
 
-void LessonBuild::numbers_returned(int reference, int count, const std::string& what, double* numbers) {
+void LessonBuild::numbers_returned(int reference, int count, const std::string& what, double* numbers, double t,
+                                   double limit) {
   lua_State* state = sandbox.state();
   std::string problem;
   for (int i = 0; i < count; ++i) {
     const int index = -count + i;
     numbers[i] = lua_type(state, index) == LUA_TNUMBER ? lua_tonumber(state, index) : NAN;
-    if (!std::isfinite(numbers[i]) && problem.empty()) {
+    if (!(std::abs(numbers[i]) <= limit) && problem.empty()) {
       problem = describe(state, index) + (count > 1 ? (i == 0 ? " as its first number" : " as its second number") : "");
     }
   }
   lua_pop(state, count);
-  if (!problem.empty()) {
-    const std::string expected = count == 1 ? "a finite number" : std::to_string(count) + " finite numbers";
-    throw ScriptError(defined_at(reference) + ": " + what + " returned " + problem + " at t = " +
-                      format_value(scene->time()) + " s; it must return " + expected);
+  if (problem.empty()) return;
+  std::ostringstream message;
+  message << defined_at(reference) << ": " << what << " returned " << problem << " at t = " << t << " s; it must return "
+          << (count == 1 ? "a finite number" : std::to_string(count) + " finite numbers");
+  if (std::isfinite(limit)) message << " within ±1e" << std::lround(std::log10(limit));  // limits are powers of ten
+  lua_Debug running;
+  if (lua_getstack(state, 0, &running)) {
+    // Inside a C function (an API function asking for a hand, or the frame's probes): the
+    // message, placed already, goes on as a Lua error, which guarded() passes through
+    // instead of placing it a second time.
+    lua_pushstring(state, message.str().c_str());
+    lua_error(state);
   }
+  throw ScriptError(message.str());
 }
 
 std::string read_script(const std::string& path) {
@@ -225,7 +235,7 @@ double Lesson::duration() const {
   if (build.duration_function == LUA_NOREF) return build.duration;
   build.call(build.duration_function, {}, 1);
   double seconds = 0.0;
-  build.numbers_returned(build.duration_function, 1, "lesson's duration function", &seconds);
+  build.numbers_returned(build.duration_function, 1, "lesson's duration function", &seconds, build.scene->time());
   if (!(seconds > 0.0 && seconds <= 86400.0)) {
     throw ScriptError(build.defined_at(build.duration_function) + ": the lesson's duration function gave " +
                       format_value(seconds) + " s; it must be in (0, 86400]");

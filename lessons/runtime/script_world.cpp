@@ -270,38 +270,6 @@ int incline(lua_State* state) {
   });
 }
 
-// Reads the `count` numbers a function of time returned for `t` and pops them. Unlike
-// numbers_returned, the message gives the t the function was asked about (the scene asks where
-// a hand or a driven body will be a step ahead of its own time), and numbers beyond the
-// scene's ±1e9 are refused here, where the function's line is known, not later by the scene.
-std::array<double, 2> numbers_for_time(LessonBuild& build, int reference, int count, const std::string& what, double t) {
-  lua_State* state = build.sandbox.state();
-  std::array<double, 2> numbers{0.0, 0.0};
-  std::string problem;
-  for (int i = 0; i < count; ++i) {
-    const int index = i - count;
-    numbers[i] = lua_type(state, index) == LUA_TNUMBER ? lua_tonumber(state, index) : NAN;
-    if (!(std::abs(numbers[i]) <= 1e9) && problem.empty()) problem = describe(state, index);
-  }
-  lua_pop(state, count);
-  if (!problem.empty()) {
-    std::ostringstream message;
-    message << build.defined_at(reference) << ": " << what << " returned " << problem << " at t = " << t
-            << " s; it must return " << (count == 1 ? "a number" : std::to_string(count) + " numbers")
-            << ", finite and within ±1e9";
-    lua_Debug running;
-    if (lua_getstack(state, 0, &running)) {
-      // Read while an API function runs (spring{} asks for the hand at t = 0; spring.force_x
-      // and push.fx ask too): the message, placed already, goes on as a Lua error, which
-      // guarded() lets through instead of placing it a second time.
-      lua_pushstring(state, message.str().c_str());
-      lua_error(state);
-    }
-    throw ScriptError(message.str());
-  }
-  return numbers;
-}
-
 // A function of time the script gave for a body, a hand or a force: called with t, it must
 // return `count` numbers.
 // Functions of time are taken to depend on t (and parameters) alone, so an answer for the
@@ -319,7 +287,9 @@ std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build
       }
     }
     owner->call(reference, {t}, count);
-    const std::array<double, 2> answer = numbers_for_time(*owner, reference, count, what, t);
+    // Within the ±1e9 the scene accepts, so the error points at the function, not the scene.
+    std::array<double, 2> answer{0.0, 0.0};
+    owner->numbers_returned(reference, count, what, answer.data(), t, 1e9);
     memory->times[memory->next] = t;
     memory->values[memory->next] = answer;
     memory->next ^= 1;

@@ -1,4 +1,4 @@
--- expect: 7: spring 'pull': the hand function (t -> x, y in m) returned the number 10000000000 at t = 0.5 s; it must return 2 numbers, finite and within ±1e9
+-- expect: 7: spring 'pull': the hand function (t -> x, y in m) returned the number 10000000000 as its first number at t = 0.5 s; it must return 2 finite numbers within ±1e9
 -- when: step
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
