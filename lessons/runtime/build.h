@@ -144,6 +144,11 @@ class Fields {
   std::string what_;
 };
 
+// Declarations are taken only from the script's own top level while it builds: from a
+// function it gave (a hand, a force) a declaration could add to the very list the runtime is
+// reading. Throws InvalidInput starting with `what` ("box adds to the world") otherwise.
+void require_top_level(lua_State* state, const std::string& what);
+
 // Throws InvalidInput naming `what` unless the value at `index` is a function the script
 // wrote: a library function (print, math.sin) has no line to report errors at, and takes
 // other arguments than the runtime gives.

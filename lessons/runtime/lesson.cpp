@@ -24,6 +24,12 @@ std::string Parameter::shown() const {
   return format_value(value) + (unit.empty() ? "" : " " + unit);
 }
 
+void require_top_level(lua_State* state, const std::string& what) {
+  if (!build_of(state).building || build_of(state).sandbox.depth() > 1) {
+    throw InvalidInput(what + "; call it at the top level of the script, not from a function that runs during the lesson");
+  }
+}
+
 void require_script_function(lua_State* state, int index, const std::string& what) {
   if (lua_iscfunction(state, index)) {
     throw InvalidInput(what + ": give a function written in the script, as in function(t) ... end, not a "

@@ -13,13 +13,7 @@ namespace {
 
 // Things that make up the scene may be declared only while the script runs top to bottom.
 void require_building(lua_State* state, const char* call) {
-  // Only from the script's own top level: from a function it gave (a hand, a force) the call
-  // could add to the very list the runtime is reading.
-  if (!build_of(state).building || build_of(state).sandbox.depth() > 1) {
-    throw InvalidInput(std::string(call) +
-                       " declares part of the lesson; call it at the top level of the script, not from a "
-                       "function that runs during the lesson");
-  }
+  require_top_level(state, std::string(call) + " declares part of the lesson");
 }
 
 // Whole-text number, so "0.5x" is refused rather than read as 0.5.

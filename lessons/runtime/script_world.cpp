@@ -13,12 +13,7 @@ namespace frictionlab::lessons {
 namespace {
 
 void require_building(lua_State* state, const char* call) {
-  // Only from the script's own top level: from a function it gave (a hand, a force) the call
-  // could add to the very list the runtime is reading.
-  if (!build_of(state).building || build_of(state).sandbox.depth() > 1) {
-    throw InvalidInput(std::string(call) + " adds to the world; call it at the top level of the script, not from a "
-                       "function that runs during the lesson");
-  }
+  require_top_level(state, std::string(call) + " adds to the world");
 }
 
 b2BodyType body_kind(Fields& fields, const char* fallback) {
