@@ -169,6 +169,7 @@ void Scene::add_spring(const Spring& spring) {
     }
   }
   springs_.push_back(spring);
+  spring_forces_applied_.push_back({0.0f, 0.0f});
 }
 
 void Scene::add_applied_force(const AppliedForce& force) {
@@ -176,6 +177,7 @@ void Scene::add_applied_force(const AppliedForce& force) {
     throw InvalidInput("applied force '" + force.name + "': it needs a body and a force");
   }
   applied_.push_back(force);
+  forces_applied_.push_back({0.0f, 0.0f});
 }
 
 void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
@@ -296,6 +298,11 @@ void Scene::step() {
   if (before_probes_) before_probes_();
   for (Probe& probe : probes_) probe.history.push_back(probe.measure());
   times_.push_back(time_);
+  bool any_slipping = false;
+  for (const auto& [contact, record] : listener_.contacts()) {
+    any_slipping = any_slipping || (record.point_count > 0 && record.state == ContactState::slipping);
+  }
+  slipping_.push_back(any_slipping ? 1 : 0);
 }
 
 void Scene::advance(double t, float h, double t_end, bool move) {
@@ -318,8 +325,10 @@ void Scene::advance(double t, float h, double t_end, bool move) {
     driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
   }
 
-  for (const Spring& spring : springs_) {
+  for (std::size_t i = 0; i < springs_.size(); ++i) {
+    const Spring& spring = springs_[i];
     const b2Vec2 force = checked(spring_force(spring), t, [&] { return "spring '" + spring.name + "': force"; });
+    if (move) spring_forces_applied_[i] = force;
     spring.body->ApplyForce(force, world_point(spring.body, spring.local_point), true);
     if (spring.other) {
       spring.other->ApplyForce(-force, world_point(spring.other, spring.other_local_point), true);
@@ -338,9 +347,11 @@ void Scene::advance(double t, float h, double t_end, bool move) {
   };
   std::vector<Pending> pending;
   pending.reserve(applied_.size());
-  for (const AppliedForce& applied : applied_) {
+  for (std::size_t i = 0; i < applied_.size(); ++i) {
+    const AppliedForce& applied = applied_[i];
     const b2Vec2 point = world_point(applied.body, applied.local_point);
     const b2Vec2 force = checked(applied.force(t), t, [&] { return "applied force '" + applied.name + "'"; });
+    if (move) forces_applied_[i] = force;
     applied.body->ApplyForce(force, point, true);
     pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
   }

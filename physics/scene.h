@@ -86,6 +86,7 @@ class Scene {
   const b2World& world() const { return *world_; }
   // Live edits of friction values take effect at the next step.
   PairTable& pairs() { return pairs_; }
+  const PairTable& pairs() const { return pairs_; }
   const FrictionListener& friction() const { return listener_; }
   const StepSettings& settings() const { return settings_; }
   double frame_step() const { return 1.0 / settings_.hz; }
@@ -118,6 +119,9 @@ class Scene {
   long frame() const { return frame_; }
   const std::vector<double>& times() const { return times_; }
   const std::vector<Probe>& probes() const { return probes_; }
+  // One entry a frame, beside times(): 1 if some touching contact was slipping at the end of
+  // that frame, else 0. Plots shade the slip regime with it.
+  const std::vector<unsigned char>& slipping() const { return slipping_; }
   const Probe& probe(const std::string& name) const;
 
   // Forces now, for probes and arrows: a spring's pull on its body, an applied force.
@@ -125,6 +129,10 @@ class Scene {
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<AppliedForce>& applied_forces() const { return applied_; }
   b2Vec2 hand_position(const Spring& spring) const;
+  // The forces the last step applied, one per spring (on its body) and per applied force, in
+  // the order added: what the contacts' recorded friction answered. Zero before the first step.
+  const std::vector<b2Vec2>& spring_forces_applied() const { return spring_forces_applied_; }
+  const std::vector<b2Vec2>& forces_applied() const { return forces_applied_; }
 
   const EnergyLedger& ledger() const { return ledger_; }
 
@@ -156,10 +164,13 @@ class Scene {
   std::vector<std::pair<std::string, b2Body*>> bodies_;
   std::vector<Spring> springs_;
   std::vector<AppliedForce> applied_;
+  std::vector<b2Vec2> spring_forces_applied_;
+  std::vector<b2Vec2> forces_applied_;
   std::vector<Driver> drivers_;
   std::vector<Probe> probes_;
   std::function<void()> before_probes_;
   std::vector<double> times_;
+  std::vector<unsigned char> slipping_;
   struct MaterialUse {
     int id;
     bool on_dynamic;  // some dynamic body is made of it
