@@ -9,7 +9,12 @@ cd "$(dirname "$0")/.."
 build_dir="${1:-build}"
 shift || true
 
-packages=(build-essential cmake libbox2d-dev libgtest-dev liblua5.4-dev)
+packages=(build-essential cmake pkg-config libbox2d-dev libgtest-dev liblua5.4-dev
+  # Drawing: Dear ImGui, stb_image_write, and the font that reads from the back of a room.
+  libimgui-dev libstb-dev fonts-dejavu-core
+  # Headless OpenGL through glvnd and Mesa's llvmpipe (libgl1-mesa-dri): no display, no GPU.
+  # ImGui's OpenGL 3 renderer loads libGL.so.1 (libgl1) itself.
+  libegl-dev libopengl-dev libgl-dev libgl1 libegl-mesa0 libgl1-mesa-dri)
 
 missing=()
 for package in "${packages[@]}"; do

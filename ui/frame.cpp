@@ -1,0 +1,121 @@
+#include "ui/frame.h"
+
+#include <algorithm>
+
+#include "ui/overlays.h"
+#include "ui/panels.h"
+#include "ui/plots.h"
+#include "ui/world_view.h"
+
+namespace frictionlab::ui {
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale) {
+  FrameLayout layout;
+  const float gap = 4.0f * scale;
+  const float title_height = 70.0f * scale;
+  const float column_width = std::max(0.36f * display.x, 300.0f * scale);
+  const float left_width = display.x - column_width - gap;
+  layout.title_corner = ImVec2(0.0f, 0.0f);
+  layout.title_size = ImVec2(display.x, title_height);
+  const float below = display.y - title_height - gap;
+  layout.world_corner = ImVec2(0.0f, title_height + gap);
+  // The legend has a strip of its own under the world, so nothing in the world hides it.
+  const float legend_height = 50.0f * scale;
+  layout.world_size = ImVec2(left_width, 0.57f * below - legend_height);
+  layout.legend_corner = ImVec2(0.0f, layout.world_corner.y + layout.world_size.y);
+  layout.legend_size = ImVec2(left_width, legend_height);
+  layout.inset_size = ImVec2(260.0f * scale, 200.0f * scale);
+  layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
+  layout.plots_corner = ImVec2(0.0f, layout.legend_corner.y + legend_height + gap);
+  layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);
+  layout.column_corner = ImVec2(left_width + gap, title_height + gap);
+  layout.column_size = ImVec2(column_width, below);
+  return layout;
+}
+
+Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale) {
+  const FrameLayout layout = FrameLayout::of(display, scale);
+  return framing.camera(lesson.scene(), layout.world_corner, layout.world_size, layout.world_size.x - layout.inset_size.x);
+}
+
+float arrow_scale(const lessons::Lesson& lesson, ImVec2 display, float scale) {
+  const FrameLayout layout = FrameLayout::of(display, scale);
+  // The heaviest body's weight is a quarter of the view's height: long enough to read, short
+  // enough to stay in the picture.
+  return pixels_per_newton(lesson.scene(), std::clamp(0.26f * layout.world_size.y, 40.0f * scale, 150.0f * scale));
+}
+
+void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
+  const Fonts& fonts = *style.fonts;
+  const Theme& colours = theme(style.theme);
+  const float s = fonts.scale;
+  const FrameLayout layout = FrameLayout::of(display, s);
+  ImGui::PushFont(fonts.body);
+
+  title_panel(lesson, layout.title_corner, layout.title_size, fonts);
+
+  // The world, drawn into a window of its own so the panels' windows stay on top of it.
+  const ImVec2 world_and_legend(layout.world_size.x, layout.world_size.y + layout.legend_size.y);
+  if (begin_panel("world", "", layout.world_corner, world_and_legend)) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const Camera camera = world_camera(lesson, framing, display, s);
+    const float newtons_to_pixels = arrow_scale(lesson, display, s);
+    draw->PushClipRect(layout.world_corner, ImVec2(layout.world_corner.x + layout.world_size.x,
+                                                    layout.world_corner.y + layout.world_size.y), true);
+    LabelPlacer labels;
+    draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
+    draw->PopClipRect();
+    draw_legend(draw, lesson.scene(), camera, layout.legend_corner, layout.legend_size, colours, fonts, newtons_to_pixels);
+    const b2Body* focus = main_body(lesson.scene());
+    std::string focus_name;
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (body == focus) focus_name = name;
+    }
+    draw_free_body(draw, lesson.scene(), focus, focus_name, layout.inset_corner, layout.inset_size, colours, fonts);
+  }
+  end_panel();
+
+  // The plots side by side under the world.
+  const auto& plots = lesson.plots();
+  if (!plots.empty()) {
+    const double time_span = std::max(lesson.duration(), lesson.scene().time());
+    const float width = layout.plots_size.x / static_cast<float>(plots.size());
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+      const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(i), layout.plots_corner.y);
+      const ImVec2 size(width - (i + 1 < plots.size() ? 4.0f * s : 0.0f), layout.plots_size.y);
+      const std::string id = "plot" + std::to_string(i);
+      if (begin_panel(id.c_str(), plots[i].title.c_str(), corner, size)) {
+        const ImVec2 area = ImGui::GetContentRegionAvail();
+        draw_plot(ImGui::GetWindowDrawList(), lesson, plots[i], time_span, ImGui::GetCursorScreenPos(), area, colours,
+                  fonts);
+      }
+      end_panel();
+    }
+  }
+
+  // The column: parameters, theory against simulation, energy, model.
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float title_bar = ImGui::GetFrameHeight();
+  const float padding = 2.0f * ImGui::GetStyle().WindowPadding.y;
+  const auto height_for = [&](std::size_t lines) { return title_bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
+  const std::vector<lessons::ExpectationResult> rows = lesson.expectations();
+  const float model_height = height_for(4);
+  const float energy_height = height_for(6);
+  // Room for names that wrap onto a second line.
+  const float theory_height = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
+  const float gap = 4.0f * s;
+  const float parameters_height =
+      layout.column_size.y - model_height - energy_height - theory_height - 3.0f * gap;
+  ImVec2 at = layout.column_corner;
+  parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
+  at.y += parameters_height + gap;
+  theory_panel(rows, at, ImVec2(layout.column_size.x, theory_height), colours);
+  at.y += theory_height + gap;
+  energy_panel(lesson.scene(), at, ImVec2(layout.column_size.x, energy_height), colours);
+  at.y += energy_height + gap;
+  model_panel(lesson, at, ImVec2(layout.column_size.x, model_height));
+
+  ImGui::PopFont();
+}
+
+}  // namespace frictionlab::ui

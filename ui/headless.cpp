@@ -1,0 +1,118 @@
+#include "ui/headless.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/glcorearb.h>
+
+#include <cstdio>
+#include <cstring>
+
+namespace frictionlab::ui {
+namespace {
+
+std::string egl_failure(const char* step) {
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(eglGetError()));
+  return std::string("headless rendering cannot start: ") + step + " failed (EGL error " + code +
+         "); it needs Mesa's EGL (Debian packages libegl1 and libegl-mesa0)";
+}
+
+}  // namespace
+
+HeadlessContext::HeadlessContext() {
+  // The surfaceless platform needs neither X nor Wayland; EGL_DEFAULT_DISPLAY would.
+  auto get_platform_display =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get_platform_display == nullptr) throw HeadlessUnavailable(egl_failure("finding eglGetPlatformDisplayEXT"));
+  EGLDisplay display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  if (display == EGL_NO_DISPLAY) throw HeadlessUnavailable(egl_failure("opening the surfaceless display"));
+  EGLint major = 0, minor = 0;
+  if (eglInitialize(display, &major, &minor) != EGL_TRUE) throw HeadlessUnavailable(egl_failure("eglInitialize"));
+  display_ = display;
+  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
+    eglTerminate(display);
+    throw HeadlessUnavailable(egl_failure("choosing desktop OpenGL"));
+  }
+  // The default surface type is a window, which the surfaceless platform has none of.
+  const EGLint config_wanted[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint configs = 0;
+  if (eglChooseConfig(display, config_wanted, &config, 1, &configs) != EGL_TRUE || configs < 1) {
+    eglTerminate(display);
+    throw HeadlessUnavailable(egl_failure("finding an OpenGL configuration"));
+  }
+  const EGLint context_wanted[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_wanted);
+  if (context == EGL_NO_CONTEXT) {
+    eglTerminate(display);
+    throw HeadlessUnavailable(egl_failure("creating an OpenGL 3.3 core context"));
+  }
+  context_ = context;
+  if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
+    const std::string message = egl_failure("making the context current without a surface");
+    eglDestroyContext(display, context);
+    eglTerminate(display);
+    throw HeadlessUnavailable(message);
+  }
+}
+
+HeadlessContext::~HeadlessContext() {
+  release_framebuffer();
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(display_, context_);
+  eglTerminate(display_);
+}
+
+void HeadlessContext::release_framebuffer() {
+  if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
+  if (colour_ != 0) glDeleteRenderbuffers(1, &colour_);
+  framebuffer_ = colour_ = 0;
+  width_ = height_ = 0;
+}
+
+void HeadlessContext::bind_framebuffer(int width, int height) {
+  if (width != width_ || height != height_) {
+    release_framebuffer();
+    glGenRenderbuffers(1, &colour_);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      release_framebuffer();
+      throw HeadlessUnavailable("headless rendering: a " + std::to_string(width) + "x" + std::to_string(height) +
+                                " framebuffer could not be made");
+    }
+    width_ = width;
+    height_ = height;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width, height);
+}
+
+Image HeadlessContext::read_pixels() const {
+  Image image(width_, height_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  std::vector<std::uint8_t> swap(row);
+  for (int y = 0; y < height_ / 2; ++y) {
+    std::uint8_t* top = image.rgba.data() + static_cast<std::size_t>(y) * row;
+    std::uint8_t* bottom = image.rgba.data() + static_cast<std::size_t>(height_ - 1 - y) * row;
+    std::memcpy(swap.data(), top, row);
+    std::memcpy(top, bottom, row);
+    std::memcpy(bottom, swap.data(), row);
+  }
+  return image;
+}
+
+std::string HeadlessContext::renderer() const {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return name != nullptr ? name : "unknown";
+}
+
+}  // namespace frictionlab::ui

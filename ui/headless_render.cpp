@@ -1,0 +1,62 @@
+#include "ui/headless_render.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/glcorearb.h>
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "ui/frame.h"
+
+namespace frictionlab::ui {
+
+HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
+    : width_(width), height_(height), theme_(theme), gl_(std::make_unique<HeadlessContext>()) {
+  IMGUI_CHECKVERSION();
+  imgui_ = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  // No imgui.ini or log: a headless picture must not depend on, or leave, files.
+  io.IniFilename = nullptr;
+  io.LogFilename = nullptr;
+  try {
+    fonts_ = load_fonts(static_cast<float>(height) / 720.0f);
+    apply_imgui_style(theme, fonts_.scale);
+    if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+      throw HeadlessUnavailable("headless rendering cannot start: ImGui's OpenGL 3 renderer could not load OpenGL "
+                                "(it needs libGL.so.1 from Debian's libgl1)");
+    }
+  } catch (...) {
+    ImGui::DestroyContext(imgui_);
+    throw;
+  }
+}
+
+HeadlessRenderer::~HeadlessRenderer() {
+  ImGui::SetCurrentContext(imgui_);
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui::DestroyContext(imgui_);
+}
+
+Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& framing) {
+  ImGui::SetCurrentContext(imgui_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
+  io.DeltaTime = 1.0f / 60.0f;  // no clock: ImGui's animations must not depend on when we draw
+  const FrameStyle style{theme_, &fonts_};
+  // Twice: the first pass lets tables and windows settle their sizes, so the picture does not
+  // depend on which frame came before.
+  for (int pass = 0; pass < 2; ++pass) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    build_frame(lesson, framing, style, io.DisplaySize);
+    ImGui::Render();
+  }
+  gl_->bind_framebuffer(width_, height_);
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(theme_).background);
+  glClearColor(clear.x, clear.y, clear.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glFinish();
+  return gl_->read_pixels();
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,185 @@
+#include "ui/panels.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "lessons/runtime/model_card.h"
+#include "ui/overlays.h"
+
+namespace frictionlab::ui {
+
+bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size) {
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
+  ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                           ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                           ImGuiWindowFlags_NoBringToFrontOnFocus;
+  if (title == nullptr || *title == '\0') flags |= ImGuiWindowFlags_NoTitleBar;
+  const std::string label = std::string(title ? title : "") + "###" + id;
+  return ImGui::Begin(label.c_str(), nullptr, flags);
+}
+
+void end_panel() { ImGui::End(); }
+
+void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+  if (begin_panel("title", "", corner, size)) {
+    ImGui::PushFont(fonts.title);
+    ImGui::TextUnformatted(lesson.title().c_str());
+    ImGui::PopFont();
+    char clock[32];
+    std::snprintf(clock, sizeof clock, "t = %.2f s", lesson.scene().time());
+    ImGui::PushFont(fonts.title);
+    const float clock_width = ImGui::CalcTextSize(clock).x;
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - clock_width);
+    ImGui::TextUnformatted(clock);
+    ImGui::PopFont();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(lesson.question().c_str());
+    ImGui::PopTextWrapPos();
+  }
+  end_panel();
+}
+
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
+  if (begin_panel("parameters", "Parameters", corner, size)) {
+    if (ImGui::BeginTable("values", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      for (const lessons::Parameter& parameter : lesson.parameters()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        // Pair coefficients in the books' letters, with their pair: "μs  aluminium / wood".
+        std::string name = parameter.name;
+        if (!parameter.coefficient.empty()) {
+          const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
+                                     : parameter.coefficient == "mu_k" ? "\u03bck"
+                                                                       : parameter.coefficient;
+          name = letter + "  " + parameter.material_a + " / " + parameter.material_b;
+        }
+        ImGui::TextUnformatted(name.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(parameter.shown().c_str());
+      }
+      ImGui::EndTable();
+    }
+  }
+  end_panel();
+}
+
+namespace {
+
+std::string with_unit(double value, const std::string& unit) {
+  return format_quantity(value, unit.c_str());
+}
+
+}  // namespace
+
+void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme) {
+  if (begin_panel("theory", "Theory against simulation", corner, size)) {
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
+    if (ImGui::BeginTable("rows", 4, flags)) {
+      // The numbers keep their width; a long name wraps.
+      ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+      ImGui::TableSetupColumn("predicted");
+      ImGui::TableSetupColumn("measured");
+      ImGui::TableSetupColumn("error");
+      ImGui::TableHeadersRow();
+      for (const lessons::ExpectationResult& row : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", row.name.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row.numeric ? with_unit(row.predicted, row.unit).c_str() : row.predicted_text.c_str());
+        ImGui::TableNextColumn();
+        if (!row.measured_yet) {
+          ImGui::TextDisabled("not yet");
+          ImGui::TableNextColumn();
+          continue;
+        }
+        ImGui::TextUnformatted(row.numeric ? with_unit(row.measured, row.unit).c_str() : row.measured_text.c_str());
+        ImGui::TableNextColumn();
+        const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(row.passes ? theme.good : theme.bad);
+        if (row.numeric) {
+          const std::string sign = row.error() > 0.0 ? "+" : "";
+          // The unit is in the columns beside it; here it would push the names into wrapping.
+          std::string number = with_unit(row.error(), "");
+          number.pop_back();
+          const std::string text = (row.passes ? "\u2713 " : "\u2717 ") + sign + number;
+          ImGui::TextColored(colour, "%s", text.c_str());
+        } else {
+          ImGui::TextColored(colour, "%s", row.passes ? "\u2713 agrees" : "\u2717 differs");
+        }
+      }
+      ImGui::EndTable();
+    }
+  }
+  end_panel();
+}
+
+void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme) {
+  if (begin_panel("energy", "Energy ledger (since t = 0)", corner, size)) {
+    const EnergyLedger& ledger = scene.ledger();
+    struct Line {
+      const char* name;
+      double value;
+    };
+    // What the bodies have, then what has been done to them since t = 0.
+    const Line stored[] = {{"kinetic", ledger.kinetic}, {"gravity", ledger.potential}, {"spring", ledger.spring}};
+    const Line work[] = {{"work: applied", ledger.work_applied}, {"driven bodies", ledger.work_drivers},
+                         {"dry friction", ledger.work_friction}, {"drag (c, b)", ledger.work_damping},
+                         {"impacts", ledger.work_impacts}};
+    // One resolution for every line, 0.1 mJ, so the columns line up and add up by eye.
+    const auto joules = [](double value) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.4f J", std::abs(value) < 5e-5 ? 0.0 : value);
+      std::string shown = text;
+      if (shown[0] == '-') shown.replace(0, 1, "\u2212");
+      return shown;
+    };
+    if (ImGui::BeginTable("ledger", 4, ImGuiTableFlags_SizingFixedFit)) {
+      for (std::size_t i = 0; i < 5; ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        if (i < 3) ImGui::TextUnformatted(stored[i].name);
+        ImGui::TableNextColumn();
+        if (i < 3) ImGui::TextUnformatted(joules(stored[i].value).c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(work[i].name);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(joules(work[i].value).c_str());
+      }
+      ImGui::EndTable();
+    }
+    // The residual is what the books cannot explain, judged against the energy that went
+    // through them: what was there at the start and put in, or what friction took.
+    const double residual = ledger.residual();
+    const double turnover = std::max(ledger.initial + std::abs(ledger.work_applied) + std::abs(ledger.work_drivers),
+                                     ledger.dissipated());
+    char share[64] = "";
+    if (turnover > 1e-9) std::snprintf(share, sizeof share, ", %.2f %% of the energy in play", 100.0 * std::abs(residual) / turnover);
+    const bool small = std::abs(residual) <= 0.02 * std::max(turnover, 1e-3);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "residual %s%s",
+                       format_quantity(residual, "J").c_str(), share);
+  }
+  end_panel();
+}
+
+void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
+  if (begin_panel("model", "Model card", corner, size)) {
+    const lessons::ModelCard card = lessons::model_card(lesson);
+    const std::string held = card.constraints > 0 ? ", less " + std::to_string(card.constraints) + " held by joints" : "";
+    ImGui::Text("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
+                card.moving_bodies == 1 ? "y" : "ies", held.c_str());
+    std::string terms = card.dry ? "dry (\u03bcs, \u03bck)" : "no dry friction";
+    terms += card.viscous ? ", viscous c" : ", no viscous c";
+    terms += card.quadratic ? ", quadratic b" : ", no quadratic b";
+    ImGui::Text("friction: %s", terms.c_str());
+    ImGui::Text("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
+    ImGui::Text("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
+                card.velocity_iterations);
+  }
+  end_panel();
+}
+
+}  // namespace frictionlab::ui

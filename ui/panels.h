@@ -1,0 +1,25 @@
+// The ImGui panels beside the world: the lesson's title and question, its parameters, the
+// theory-against-simulation table, the energy ledger and the model card. Each reads the lesson
+// directly; nothing is copied.
+#pragma once
+
+#include <imgui.h>
+
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
+#include "ui/theme.h"
+
+namespace frictionlab::ui {
+
+// A fixed panel at a place in the frame, with a title bar unless `title` is empty.
+bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size);
+void end_panel();
+
+void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
+void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme);
+void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
+void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,54 @@
+// Colours and fonts. Two themes, light for a bright classroom and dark for a dim one, and a
+// TrueType font at sizes that read from the back of a room: every size scales with the
+// frame's height, 720 pixels being 1.
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+#include <string_view>
+
+namespace frictionlab::ui {
+
+enum class ThemeName { light, dark };
+// Throws InvalidInput listing the themes.
+ThemeName parse_theme(std::string_view name);
+std::string_view theme_name(ThemeName theme);
+
+// The kinds of force a frame draws; each has its own colour, the same in every picture.
+enum class ForceKind { applied, spring, friction, normal, weight };
+constexpr int force_kind_count = 5;
+std::string_view force_kind_name(ForceKind kind);
+
+struct Theme {
+  ImU32 background, panel, text, faint_text, grid, axis;
+  ImU32 sky, ground, ground_edge, outline, driven_outline, spring, rope, hand;
+  ImU32 force[force_kind_count];
+  ImU32 sticking, slipping, slip_band, now_marker;
+  ImU32 series[4];
+  ImU32 good, bad;
+  ImVec4 imgui_text, imgui_window, imgui_title, imgui_border, imgui_header;
+};
+const Theme& theme(ThemeName name);
+
+// A material's fill colour: known materials by look (wood brown, ice pale blue), others from
+// a palette by the order they were declared in.
+ImU32 material_colour(const Theme& theme, const std::string& material, int index);
+
+struct Fonts {
+  ImFont* body = nullptr;
+  ImFont* title = nullptr;
+  ImFont* small = nullptr;
+  float scale = 1.0f;  // frame height / 720
+};
+// Adds DejaVu Sans at the three sizes to the current context's atlas, with the Greek letters,
+// degree sign, arrows and maths signs the lessons use. Throws std::runtime_error naming the
+// file and the package when the font is missing.
+Fonts load_fonts(float scale);
+// The font file used; compiled in from where the build found Debian's fonts-dejavu-core.
+std::string font_path();
+
+// ImGui's own colours and spacing for the theme.
+void apply_imgui_style(ThemeName name, float scale);
+
+}  // namespace frictionlab::ui
