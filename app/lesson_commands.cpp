@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/modes.h"
+#include "app/options.h"
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
@@ -28,20 +29,6 @@ struct RunOptions {
   std::map<std::string, std::string> overrides;
   std::string csv;
 };
-
-double option_number(const std::string& option, const std::string& text, double low, double high, bool low_open,
-                     const char* unit) {
-  std::size_t used = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || text.empty()) throw InvalidInput(option + " " + text + ": not a number");
-  validation::require_in_range(option, value, low, high, low_open, unit);
-  return value;
-}
 
 RunOptions parse_run(const std::vector<std::string>& args) {
   RunOptions options;
@@ -61,19 +48,12 @@ RunOptions parse_run(const std::vector<std::string>& args) {
     const std::string& value = args[++i];
     if (arg == "--duration") {
       options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
-    } else if (arg == "--hz") {
-      options.settings.hz = option_number(arg, value, 1.0, 100000.0, false, " steps per second");
-    } else if (arg == "--substeps") {
-      options.settings.substeps = static_cast<int>(option_number(arg, value, 1.0, 1000.0, false, ""));
-      if (std::to_string(options.settings.substeps) != value) throw InvalidInput("--substeps " + value + ": a whole number from 1 to 1000");
-    } else if (arg == "--friction") {
-      options.settings.treatment = parse_treatment(value);
     } else if (arg == "--set") {
-      const std::size_t equals = value.find('=');
-      if (equals == std::string::npos || equals == 0) throw InvalidInput("--set " + value + ": write it as NAME=VALUE, as in --set mu_s=0.5");
-      options.overrides[value.substr(0, equals)] = value.substr(equals + 1);
+      add_override(value, options.overrides);
+    } else if (arg == "--csv") {
+      options.csv = value;
     } else {
-      options.csv = value;  // --csv, the last of the known options
+      step_option(arg, value, options.settings);  // --hz, --substeps or --friction
     }
   }
   if (options.lesson.empty()) throw InvalidInput("run needs a lesson: frictionlab run LESSON; see frictionlab list");

@@ -17,6 +17,9 @@ const char* const usage =
     "                       [--set NAME=VALUE ...] [--csv FILE]\n"
     "                                            run a lesson (a name from list, or a .lua file)\n"
     "       frictionlab check [LESSON ...]       run lessons and check their expectations; exit 1 if any fails\n"
+    "       frictionlab render LESSON --at S[,S...] [--size WxH] [--theme light|dark]\n"
+    "                       [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] --out PATH\n"
+    "                                            draw the lesson at each time to PNG, with no display\n"
     "       frictionlab demo                     theory beside simulation for every situation\n"
     "       frictionlab bench [--quick] --out DIR     speed and accuracy figures\n";
 
@@ -35,12 +38,13 @@ int main(int argc, char** argv) {
     if (command == "list") return frictionlab::run_list(rest, std::cout);
     if (command == "run") return frictionlab::run_lesson(rest, std::cout);
     if (command == "check") return frictionlab::run_check(rest, std::cout);
+    if (command == "render") return frictionlab::run_render(rest, std::cout);
     if (command == "bench") return frictionlab::run_bench(rest, std::cout);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << usage;
       return 0;
     }
-    std::cerr << "frictionlab: unknown command '" << command << "'; commands: list, run, check, demo, bench, help\n";
+    std::cerr << "frictionlab: unknown command '" << command << "'; commands: list, run, check, render, demo, bench, help\n";
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';

@@ -1,0 +1,43 @@
+#include "app/options.h"
+
+#include <cmath>
+
+#include "physics/validation.h"
+
+namespace frictionlab {
+
+double option_number(const std::string& option, const std::string& text, double low, double high, bool low_open,
+                     const char* unit) {
+  std::size_t used = 0;
+  double value = NAN;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) throw InvalidInput(option + " " + text + ": not a number");
+  validation::require_in_range(option, value, low, high, low_open, unit);
+  return value;
+}
+
+void add_override(const std::string& text, std::map<std::string, std::string>& overrides) {
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) throw InvalidInput("--set " + text + ": write it as NAME=VALUE, as in --set mu_s=0.5");
+  overrides[text.substr(0, equals)] = text.substr(equals + 1);
+}
+
+bool step_option(const std::string& option, const std::string& value, StepSettings& settings) {
+  if (option == "--hz") {
+    settings.hz = option_number(option, value, 1.0, 100000.0, false, " steps per second");
+  } else if (option == "--substeps") {
+    settings.substeps = static_cast<int>(option_number(option, value, 1.0, 1000.0, false, ""));
+    if (std::to_string(settings.substeps) != value) throw InvalidInput("--substeps " + value + ": a whole number from 1 to 1000");
+  } else if (option == "--friction") {
+    settings.treatment = parse_treatment(value);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,21 @@
+// Options shared by the lesson commands (run, render): numbers in a range, --set, and the
+// step settings.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "physics/scene.h"
+
+namespace frictionlab {
+
+// The whole of `text` as a number within [low, high] (low excluded when low_open); throws
+// InvalidInput naming the option and the allowed range.
+double option_number(const std::string& option, const std::string& text, double low, double high, bool low_open,
+                     const char* unit);
+// --set NAME=VALUE into `overrides`.
+void add_override(const std::string& text, std::map<std::string, std::string>& overrides);
+// --hz, --substeps or --friction into `settings`; false if `option` is none of them.
+bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
+
+}  // namespace frictionlab

@@ -1,0 +1,154 @@
+// frictionlab render: a lesson's frames as PNG files, with no display and no GPU.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/modes.h"
+#include "app/options.h"
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/lesson.h"
+#include "ui/headless_render.h"
+
+namespace frictionlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderOptions {
+  std::string lesson;
+  std::vector<double> times;
+  int width = 1280, height = 720;
+  ui::ThemeName theme = ui::ThemeName::light;
+  StepSettings settings;
+  std::map<std::string, std::string> overrides;
+  std::string out;
+};
+
+std::vector<double> parse_times(const std::string& text) {
+  std::vector<double> times;
+  std::stringstream parts(text);
+  std::string part;
+  while (std::getline(parts, part, ',')) times.push_back(option_number("--at", part, 0.0, 86400.0, false, " s"));
+  if (times.empty() || text.back() == ',') throw InvalidInput("--at " + text + ": give times in seconds, as in --at 0.5,2");
+  if (times.size() > 100) throw InvalidInput("--at: at most 100 times in one render, got " + std::to_string(times.size()));
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+void parse_size(const std::string& text, int& width, int& height) {
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) throw InvalidInput("--size " + text + ": write it as WIDTHxHEIGHT, as in --size 1280x720");
+  width = static_cast<int>(option_number("--size width", text.substr(0, x), 320.0, 7680.0, false, " pixels"));
+  height = static_cast<int>(option_number("--size height", text.substr(x + 1), 240.0, 4320.0, false, " pixels"));
+  if (std::to_string(width) + "x" + std::to_string(height) != text) {
+    throw InvalidInput("--size " + text + ": whole numbers of pixels, as in --size 1280x720");
+  }
+}
+
+RenderOptions parse_render(const std::vector<std::string>& args) {
+  RenderOptions options;
+  bool have_times = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      if (!options.lesson.empty()) throw InvalidInput("render takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
+      options.lesson = arg;
+      continue;
+    }
+    static const std::string known[] = {"--at", "--size", "--theme", "--set", "--out", "--hz", "--substeps", "--friction"};
+    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
+      throw InvalidInput("render: unknown option '" + arg +
+                         "'; options: --at S[,S...], --size WxH, --theme light|dark, --set NAME=VALUE, --out PATH, "
+                         "--hz N, --substeps N, --friction T");
+    }
+    if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
+    const std::string& value = args[++i];
+    if (arg == "--at") {
+      options.times = parse_times(value);
+      have_times = true;
+    } else if (arg == "--size") {
+      parse_size(value, options.width, options.height);
+    } else if (arg == "--theme") {
+      options.theme = ui::parse_theme(value);
+    } else if (arg == "--set") {
+      add_override(value, options.overrides);
+    } else if (arg == "--out") {
+      options.out = value;
+    } else {
+      step_option(arg, value, options.settings);
+    }
+  }
+  if (options.lesson.empty()) throw InvalidInput("render needs a lesson: frictionlab render LESSON --at S --out PATH");
+  if (!have_times) throw InvalidInput("render: --at S[,S...] is required: the times to draw, in seconds");
+  if (options.out.empty()) throw InvalidInput("render: --out PATH is required: a .png file, or a folder for several times");
+  return options;
+}
+
+std::string time_text(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", t);
+  std::string shown = text;
+  while (shown.back() == '0' && shown[shown.size() - 2] != '.') shown.pop_back();
+  return shown;
+}
+
+// Where each picture goes: one time into a .png file (or a folder), several into a folder.
+std::vector<std::string> output_paths(const RenderOptions& options, const std::string& lesson_name) {
+  const fs::path out(options.out);
+  const bool to_file = out.extension() == ".png";
+  if (out.extension() == ".lua") throw InvalidInput("--out " + options.out + ": that is a lesson script; give a .png file or a folder");
+  if (to_file && options.times.size() > 1) {
+    throw InvalidInput("--out " + options.out + ": " + std::to_string(options.times.size()) +
+                       " times need a folder for --out, not one .png file");
+  }
+  std::error_code error;
+  if (!to_file) {
+    fs::create_directories(out, error);
+    if (error || !fs::is_directory(out)) throw InvalidInput("--out " + options.out + ": cannot make a folder there");
+  } else if (out.has_parent_path() && !fs::is_directory(out.parent_path())) {
+    throw InvalidInput("--out " + options.out + ": the folder " + out.parent_path().string() + " does not exist");
+  }
+  std::vector<std::string> paths;
+  for (double t : options.times) {
+    paths.push_back(to_file ? out.string() : (out / (lesson_name + "_t" + time_text(t) + ".png")).string());
+  }
+  return paths;
+}
+
+}  // namespace
+
+int run_render(const std::vector<std::string>& args, std::ostream& out) {
+  const RenderOptions options = parse_render(args);
+  const std::string path = lessons::resolve_lesson(options.lesson);
+  lessons::Lesson lesson(path, options.overrides, options.settings);
+  const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
+  const ui::WorldFraming framing = ui::WorldFraming::of(lesson.scene());
+
+  std::unique_ptr<ui::HeadlessRenderer> renderer;
+  try {
+    renderer = std::make_unique<ui::HeadlessRenderer>(options.width, options.height, options.theme);
+  } catch (const ui::HeadlessUnavailable& error) {
+    throw InvalidInput(std::string("render: ") + error.what());
+  }
+  // Every picture is drawn before any is written: a lesson that fails at a later time
+  // leaves no pictures of the earlier ones behind.
+  std::vector<ui::Image> images;
+  for (double t : options.times) {
+    // Whole steps: the frame shows the last step that does not pass t (to half a step).
+    while (lesson.scene().time() + 0.5 / lesson.settings().hz < t) lesson.step();
+    images.push_back(renderer->render(lesson, framing));
+  }
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    try {
+      ui::write_png(images[i], paths[i]);
+    } catch (const std::runtime_error& error) {
+      throw InvalidInput(std::string("--out ") + error.what());
+    }
+    out << paths[i] << '\n';
+  }
+  return 0;
+}
+
+}  // namespace frictionlab
