@@ -1,0 +1,36 @@
+// Helpers for tests that draw lessons: a built-in lesson stepped to a moment, and its picture.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/lesson.h"
+#include "ui/camera.h"
+#include "ui/headless_render.h"
+
+namespace frictionlab::ui {
+
+constexpr int frame_width = 1280, frame_height = 720;
+
+// A built-in lesson with some parameters set, framed at t = 0 and stepped to `t` (whole
+// steps, as frictionlab render does).
+struct LessonAt {
+  std::unique_ptr<lessons::Lesson> lesson;
+  WorldFraming framing;
+
+  LessonAt(const std::string& name, std::map<std::string, std::string> set, double t)
+      : lesson(std::make_unique<lessons::Lesson>(lessons::resolve_lesson(name), std::move(set))),
+        framing(WorldFraming::of(lesson->scene())) {
+    step_to(t);
+  }
+  void step_to(double t) {
+    while (lesson->scene().time() + 0.5 / lesson->settings().hz < t) lesson->step();
+  }
+  const Scene& scene() const { return lesson->scene(); }
+};
+
+}  // namespace frictionlab::ui

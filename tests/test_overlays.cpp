@@ -1,0 +1,132 @@
+// The overlays say what the solver did: arrows are as long as the recorded forces, contacts
+// are marked with their recorded state, and the forces on a sticking block add up to zero.
+// These need no OpenGL; test_rendering checks the same things in the pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/closed_forms.h"
+#include "rendering.h"
+#include "ui/frame.h"
+#include "ui/overlays.h"
+
+namespace frictionlab::ui {
+namespace {
+
+const ForceOnBody* find_force(const std::vector<ForceOnBody>& forces, ForceKind kind) {
+  for (const ForceOnBody& force : forces) {
+    if (force.kind == kind) return &force;
+  }
+  return nullptr;
+}
+
+const ContactRecord& block_on_bench(const Scene& scene) {
+  const ContactRecord* record = scene.friction().find(scene.body("block"), scene.body("ground"));
+  if (record == nullptr) throw std::runtime_error("the block does not touch the bench");
+  return *record;
+}
+
+// Spring pull at 0.5 s: the spring pulls 2.5 N, well below mu_s·N = 4.4 N.
+TEST(Overlays, FrictionArrowIsTheRecordedFrictionWhileTheBlockSticks) {
+  LessonAt at("spring_pull", {}, 0.5);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  ASSERT_EQ(main_body(scene), block);
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::sticking);
+
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  const b2Vec2 recorded = record.friction_on(block);
+  EXPECT_NEAR(friction->force.x, recorded.x, 1e-6);
+  EXPECT_NEAR(friction->force.y, recorded.y, 1e-6);
+  EXPECT_GT(std::abs(recorded.x), 2.0);  // a real force, not a zero that matches anything
+
+  // Sticking: friction answers the pull exactly, so everything on the block adds up to zero
+  // (within float rounding of a 10 N weight).
+  b2Vec2 net{0.0f, 0.0f};
+  for (const ForceOnBody& force : forces) net += force.force;
+  EXPECT_LT(net.Length(), 1e-4f);
+
+  // Drawn at the frame's scale, its length in pixels is the force in newtons times the scale.
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const float scale = arrow_scale(*at.lesson, display, 1.0f);
+  for (const ScreenArrow& arrow : place_arrows(forces, camera, scale)) {
+    EXPECT_NEAR(arrow.length(), arrow.force.force.Length() * scale, 1e-3f) << force_kind_name(arrow.force.kind);
+  }
+
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(marks[0].state, ContactState::sticking);
+}
+
+// Mid-slip, the arrow is kinetic friction: mu_k·N against the motion.
+TEST(Overlays, FrictionArrowIsKineticFrictionMidSlip) {
+  LessonAt at("spring_pull", {}, 1.2);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::slipping);
+  ASSERT_GT(block->GetLinearVelocity().x, 0.01f);
+  const ForceOnBody* friction = find_force(forces_on(scene, block), ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  const double mu_k = at.lesson->parameter("mu_k").value;
+  const double weight = block->GetMass() * 9.81;
+  EXPECT_NEAR(friction->force.x, -mu_k * weight, 1e-3 * mu_k * weight);
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(marks[0].state, ContactState::slipping);
+  EXPECT_GT(marks[0].sliding_velocity * marks[0].tangent.x, 0.0);  // the block slides forward
+}
+
+// A box tipping over its front edge: the floor's push has moved to that edge, which is where
+// the normal arrow starts.
+TEST(Overlays, NormalForceActsAtTheFrontEdgeOfATippingBox) {
+  LessonAt at("tipping_box", {}, 2.2);
+  const Scene& scene = at.scene();
+  const b2Body* box = scene.body("box");
+  ASSERT_LT(box->GetAngle(), -0.01f);  // tipping clockwise
+  const ForceOnBody* normal = find_force(forces_on(scene, box), ForceKind::normal);
+  ASSERT_NE(normal, nullptr);
+  const b2Vec2 front_edge = box->GetWorldPoint({0.25f, -0.5f});
+  EXPECT_NEAR(normal->point.x, front_edge.x, 0.02);
+  // Standing still, the floor holds it up at its middle.
+  LessonAt start("tipping_box", {}, 0.1);
+  const ForceOnBody* resting = find_force(forces_on(start.scene(), start.scene().body("box")), ForceKind::normal);
+  ASSERT_NE(resting, nullptr);
+  EXPECT_NEAR(resting->point.x, start.scene().body("box")->GetWorldCenter().x, 0.02);
+}
+
+// Weight and normal force of a block on level ground lie along one line; they are drawn side
+// by side, each keeping its length and direction.
+TEST(Overlays, ArrowsAlongOneLineAreDrawnSideBySide) {
+  LessonAt at("spring_pull", {}, 0.5);
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const std::vector<ScreenArrow> arrows =
+      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, display, 1.0f));
+  const ScreenArrow* weight = nullptr;
+  const ScreenArrow* normal = nullptr;
+  for (const ScreenArrow& arrow : arrows) {
+    if (arrow.force.kind == ForceKind::weight) weight = &arrow;
+    if (arrow.force.kind == ForceKind::normal) normal = &arrow;
+  }
+  ASSERT_TRUE(weight && normal);
+  EXPECT_GE(std::abs(weight->tail.x - normal->tail.x), 8.0f);
+  EXPECT_NEAR(weight->tip.x, weight->tail.x, 1e-3f);  // still vertical
+  EXPECT_NEAR(normal->tip.x, normal->tail.x, 1e-3f);
+}
+
+TEST(Overlays, QuantitiesAreWrittenAsAClassroomWritesThem) {
+  EXPECT_EQ(format_quantity(4.4146, "N"), "4.41 N");
+  EXPECT_EQ(format_quantity(98.1, "N"), "98.1 N");
+  EXPECT_EQ(format_quantity(103.4, "N"), "103 N");
+  EXPECT_EQ(format_quantity(-0.0357, "N"), "\u22120.0357 N");
+  EXPECT_EQ(format_quantity(0.0, "J"), "0 J");
+  EXPECT_EQ(format_quantity(4.2e-8, "J"), "4.2\u00d710\u207b\u2078 J");
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

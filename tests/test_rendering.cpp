@@ -1,0 +1,149 @@
+// Headless frames: PNG files written whole, the tolerant picture comparison, the arrows and
+// contact marks found in the pixels where the record puts them, and the same picture for the
+// same moment whatever was drawn before.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "rendering.h"
+#include "ui/frame.h"
+#include "ui/image.h"
+#include "ui/overlays.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image flat(int width, int height, std::uint8_t grey) {
+  Image image(width, height);
+  for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = (i % 4 == 3) ? 255 : grey;
+  return image;
+}
+
+TEST(Images, ComparisonAllowsEightPerChannelOnAnyPixelAndAnyChangeOnOnePixelInAThousand) {
+  const Image expected = flat(100, 100, 128);
+  Image within = expected;
+  for (int x = 0; x < 100; ++x) within.pixel(x, 50)[1] = 136;  // +8 on a whole row
+  ImageComparison result = compare_images(within, expected, 8);
+  EXPECT_TRUE(result.same_size);
+  EXPECT_EQ(result.differing_pixels, 0);
+  EXPECT_EQ(result.largest_channel_difference, 8);
+
+  Image ten_pixels = expected;  // 0.1 % of 10 000 pixels: the most that passes
+  for (int x = 0; x < 10; ++x) ten_pixels.pixel(x, 0)[0] = 200;
+  result = compare_images(ten_pixels, expected, 8);
+  EXPECT_EQ(result.differing_pixels, 10);
+  EXPECT_LE(result.differing_fraction(), 0.001);
+  ten_pixels.pixel(10, 0)[2] = 137;  // one more, by 9
+  result = compare_images(ten_pixels, expected, 8);
+  EXPECT_EQ(result.differing_pixels, 11);
+  EXPECT_GT(result.differing_fraction(), 0.001);
+  // The diff marks the differing pixels red and leaves the rest grey.
+  EXPECT_EQ(result.diff.pixel(10, 0)[0], 255);
+  EXPECT_EQ(result.diff.pixel(10, 0)[1], 0);
+  EXPECT_EQ(result.diff.pixel(50, 50)[0], result.diff.pixel(50, 50)[1]);
+
+  EXPECT_FALSE(compare_images(flat(100, 99, 128), expected, 8).same_size);
+}
+
+TEST(Images, PngRoundTripsAndAFailedWriteLeavesNothing) {
+  const fs::path folder = fs::temp_directory_path() / ("frictionlab_png_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  Image image = flat(37, 23, 40);
+  image.pixel(3, 4)[0] = 250;
+  const std::string path = (folder / "round.png").string();
+  write_png(image, path);
+  const Image back = read_png(path);
+  EXPECT_EQ(back.width, 37);
+  EXPECT_EQ(back.height, 23);
+  EXPECT_EQ(back.rgba, image.rgba);
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+
+  const std::string nowhere = (folder / "missing" / "frame.png").string();
+  EXPECT_THROW(write_png(image, nowhere), std::runtime_error);
+  EXPECT_FALSE(fs::exists(nowhere + ".partial"));
+  EXPECT_THROW(read_png((folder / "absent.png").string()), std::runtime_error);
+  fs::remove_all(folder);
+}
+
+// One renderer for the suite's tests in this process: EGL starts once.
+HeadlessRenderer& renderer() {
+  static HeadlessRenderer shared(frame_width, frame_height);
+  return shared;
+}
+
+int distance(const std::uint8_t* pixel, ImU32 colour) {
+  const int r = static_cast<int>(colour >> IM_COL32_R_SHIFT & 0xFF), g = static_cast<int>(colour >> IM_COL32_G_SHIFT & 0xFF),
+            b = static_cast<int>(colour >> IM_COL32_B_SHIFT & 0xFF);
+  return std::max({std::abs(pixel[0] - r), std::abs(pixel[1] - g), std::abs(pixel[2] - b)});
+}
+
+const ScreenArrow& arrow_of(const std::vector<ScreenArrow>& arrows, ForceKind kind) {
+  for (const ScreenArrow& arrow : arrows) {
+    if (arrow.force.kind == kind) return arrow;
+  }
+  throw std::runtime_error("no such arrow");
+}
+
+// Walks from the tail along the arrow while the pixels are the arrow's colour: the drawn
+// length, which must be the recorded force times the scale.
+float drawn_length(const Image& image, const ScreenArrow& arrow, ImU32 colour) {
+  const float length = arrow.length();
+  const float ux = (arrow.tip.x - arrow.tail.x) / length, uy = (arrow.tip.y - arrow.tail.y) / length;
+  float reached = 0.0f;
+  for (float s = 4.0f; s < length + 40.0f; s += 0.5f) {
+    const int x = static_cast<int>(std::lround(arrow.tail.x + ux * s)), y = static_cast<int>(std::lround(arrow.tail.y + uy * s));
+    if (distance(image.pixel(x, y), colour) > 60) break;
+    reached = s;
+  }
+  return reached;
+}
+
+void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, ContactState state) {
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const float scale = arrow_scale(*at.lesson, display, 1.0f);
+  const b2Body* block = at.scene().body("block");
+  const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale);
+  const ScreenArrow& friction = arrow_of(arrows, ForceKind::friction);
+  const Theme& colours = theme(ThemeName::light);
+  const float recorded = static_cast<float>(std::abs(at.scene().friction().find(block, at.scene().body("ground"))->friction_force));
+  // The tip's last pixels fade into the background: within 2 px.
+  EXPECT_NEAR(drawn_length(image, friction, colours.force[static_cast<int>(ForceKind::friction)]), recorded * scale, 2.0f);
+
+  // The contact's mark, just below the friction arrow's shaft at the contact point.
+  const std::vector<ContactMark> marks = contact_marks(at.scene());
+  ASSERT_EQ(marks.size(), 1u);
+  const ImVec2 point = camera.to_screen(marks[0].point);
+  const std::uint8_t* mark = image.pixel(static_cast<int>(point.x), static_cast<int>(point.y) + 4);
+  const ImU32 expected = state == ContactState::sticking ? colours.sticking : colours.slipping;
+  EXPECT_LE(distance(mark, expected), 8) << "the contact is not marked as " << (state == ContactState::sticking ? "sticking" : "slipping");
+}
+
+TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {
+  LessonAt at("spring_pull", {}, 0.5);
+  const Image image = renderer().render(*at.lesson, at.framing);
+  expect_friction_arrow_and_mark(at, image, ContactState::sticking);
+}
+
+TEST(Rendering, MidSlipTheArrowIsKineticFrictionAndTheContactIsMarkedSlipping) {
+  LessonAt at("spring_pull", {}, 1.2);
+  const Image image = renderer().render(*at.lesson, at.framing);
+  expect_friction_arrow_and_mark(at, image, ContactState::slipping);
+}
+
+TEST(Rendering, TheSameMomentGivesTheSamePictureWhateverWasDrawnBefore) {
+  LessonAt direct("spring_pull", {}, 1.2);
+  const Image once = renderer().render(*direct.lesson, direct.framing);
+  LessonAt stepped("spring_pull", {}, 0.3);
+  renderer().render(*stepped.lesson, stepped.framing);
+  renderer().render(*stepped.lesson, stepped.framing);
+  stepped.step_to(1.2);
+  const Image later = renderer().render(*stepped.lesson, stepped.framing);
+  EXPECT_EQ(once.rgba, later.rgba);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
