@@ -9,20 +9,22 @@
 #include <sstream>
 
 #include "app/modes.h"
+#include "app/bench.h"
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/reduced_model.h"
 
 namespace frictionlab {
-namespace {
-
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values[values.size() / 2];
 }
+
+namespace {
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 // CPU seconds per step of both worlds, timed in alternating blocks so that a busy neighbour
 // slows both alike.
@@ -205,10 +207,14 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   const std::string cost = listener_cost(quick, out);
   const std::string accuracy = stick_slip_accuracy(quick, out);
   const std::string speed = lesson_speed(quick, out);
-  write_files_atomically({{directory + "/listener_cost.csv", cost},
-                          {directory + "/stick_slip_accuracy.csv", accuracy},
-                          {directory + "/lesson_speed.csv", speed}});
-  out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv and lesson_speed.csv in " << directory << "\n";
+  const std::string frames = frame_speed(quick, out);
+  std::vector<std::pair<std::string, std::string>> files{{directory + "/listener_cost.csv", cost},
+                                                         {directory + "/stick_slip_accuracy.csv", accuracy},
+                                                         {directory + "/lesson_speed.csv", speed}};
+  if (!frames.empty()) files.emplace_back(directory + "/frame_speed.csv", frames);
+  write_files_atomically(files);
+  out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv, lesson_speed.csv" << (frames.empty() ? "" : ", frame_speed.csv")
+      << " in " << directory << "\n";
   return 0;
 }
 

@@ -6,6 +6,7 @@
 
 #include "app/modes.h"
 #include "app/options.h"
+#include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "ui/headless_render.h"
@@ -45,6 +46,21 @@ void parse_size(const std::string& text, int& width, int& height) {
   if (std::to_string(width) + "x" + std::to_string(height) != text) {
     throw InvalidInput("--size " + text + ": whole numbers of pixels, as in --size 1280x720");
   }
+  // The layout is made for a projector's landscape screen, 4:3 to 21:9.
+  const double aspect = static_cast<double>(width) / height;
+  if (aspect < 4.0 / 3.0 - 1e-9 || aspect > 21.0 / 9.0 + 1e-9) {
+    throw InvalidInput("--size " + text + ": the picture must be landscape, from 4:3 to 21:9 (width / height from 1.33 to 2.33)");
+  }
+}
+
+// An error from parsing a value, with the option and value in front: "--theme pink: ...".
+template <class Parse>
+auto named(const std::string& option, const std::string& value, Parse parse) {
+  try {
+    return parse();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(option + " " + value + ": " + error.what());
+  }
 }
 
 RenderOptions parse_render(const std::vector<std::string>& args) {
@@ -71,13 +87,15 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
     } else if (arg == "--size") {
       parse_size(value, options.width, options.height);
     } else if (arg == "--theme") {
-      options.theme = ui::parse_theme(value);
+      options.theme = named(arg, value, [&] { return ui::parse_theme(value); });
     } else if (arg == "--set") {
       add_override(value, options.overrides);
     } else if (arg == "--out") {
       options.out = value;
+    } else if (arg == "--friction") {
+      named(arg, value, [&] { return step_option(arg, value, options.settings); });
     } else {
-      step_option(arg, value, options.settings);
+      step_option(arg, value, options.settings);  // --hz or --substeps
     }
   }
   if (options.lesson.empty()) throw InvalidInput("render needs a lesson: frictionlab render LESSON --at S --out PATH");
@@ -86,15 +104,15 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
   return options;
 }
 
+// "0.5", "2", "1.0001": as short as it can be while still telling the times apart.
 std::string time_text(double t) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3f", t);
-  std::string shown = text;
-  while (shown.back() == '0' && shown[shown.size() - 2] != '.') shown.pop_back();
-  return shown;
+  std::snprintf(text, sizeof text, "%.9g", t);
+  return text;
 }
 
-// Where each picture goes: one time into a .png file (or a folder), several into a folder.
+// Where each picture goes: one time into a .png file (or an existing folder), several into a
+// folder, made only once every picture is drawn. Checks only; nothing is made here.
 std::vector<std::string> output_paths(const RenderOptions& options, const std::string& lesson_name) {
   const fs::path out(options.out);
   const bool to_file = out.extension() == ".png";
@@ -103,12 +121,12 @@ std::vector<std::string> output_paths(const RenderOptions& options, const std::s
     throw InvalidInput("--out " + options.out + ": " + std::to_string(options.times.size()) +
                        " times need a folder for --out, not one .png file");
   }
-  std::error_code error;
-  if (!to_file) {
-    fs::create_directories(out, error);
-    if (error || !fs::is_directory(out)) throw InvalidInput("--out " + options.out + ": cannot make a folder there");
-  } else if (out.has_parent_path() && !fs::is_directory(out.parent_path())) {
-    throw InvalidInput("--out " + options.out + ": the folder " + out.parent_path().string() + " does not exist");
+  const fs::path parent = to_file ? out.parent_path() : out;
+  if (to_file && !parent.empty() && !fs::is_directory(parent)) {
+    throw InvalidInput("--out " + options.out + ": the folder " + parent.string() + " does not exist");
+  }
+  if (!to_file && fs::exists(out) && !fs::is_directory(out)) {
+    throw InvalidInput("--out " + options.out + ": that is a file; several times need a folder");
   }
   std::vector<std::string> paths;
   for (double t : options.times) {
@@ -132,22 +150,27 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   } catch (const ui::HeadlessUnavailable& error) {
     throw InvalidInput(std::string("render: ") + error.what());
   }
-  // Every picture is drawn before any is written: a lesson that fails at a later time
-  // leaves no pictures of the earlier ones behind.
-  std::vector<ui::Image> images;
-  for (double t : options.times) {
-    // Whole steps: the frame shows the last step that does not pass t (to half a step).
-    while (lesson.scene().time() + 0.5 / lesson.settings().hz < t) lesson.step();
-    images.push_back(renderer->render(lesson, framing));
+  // Every picture is drawn and encoded before any is written: a lesson that fails at a later
+  // time leaves nothing behind, and an encoded frame is a tenth of the raw one.
+  std::vector<std::pair<std::string, std::string>> files;
+  for (std::size_t i = 0; i < options.times.size(); ++i) {
+    lesson.step_to(options.times[i]);
+    const std::vector<std::uint8_t> png = ui::encode_png(renderer->render(lesson, framing));
+    files.emplace_back(paths[i], std::string(png.begin(), png.end()));
   }
-  for (std::size_t i = 0; i < images.size(); ++i) {
-    try {
-      ui::write_png(images[i], paths[i]);
-    } catch (const std::runtime_error& error) {
-      throw InvalidInput(std::string("--out ") + error.what());
-    }
-    out << paths[i] << '\n';
+  const fs::path folder = fs::path(options.out).extension() == ".png" ? fs::path() : fs::path(options.out);
+  const bool made_folder = !folder.empty() && !fs::exists(folder);
+  std::error_code error;
+  if (made_folder && !fs::create_directories(folder, error)) {
+    throw InvalidInput("--out " + options.out + ": cannot make a folder there");
   }
+  try {
+    write_files_atomically(files);
+  } catch (const InvalidInput&) {
+    if (made_folder) fs::remove_all(folder, error);
+    throw;
+  }
+  for (const auto& file : files) out << file.first << '\n';
   return 0;
 }
 

@@ -27,9 +27,7 @@ struct LessonAt {
         framing(WorldFraming::of(lesson->scene())) {
     step_to(t);
   }
-  void step_to(double t) {
-    while (lesson->scene().time() + 0.5 / lesson->settings().hz < t) lesson->step();
-  }
+  void step_to(double t) { lesson->step_to(t); }
   const Scene& scene() const { return lesson->scene(); }
 };
 

@@ -145,5 +145,18 @@ TEST(Rendering, TheSameMomentGivesTheSamePictureWhateverWasDrawnBefore) {
   EXPECT_EQ(once.rgba, later.rgba);
 }
 
+// Two renderers at once (a window and a screenshot, say): each draws into its own context and
+// font atlas, and the pictures do not depend on the other being there.
+TEST(Rendering, TwoRenderersAtOnceDrawTheSamePicture) {
+  LessonAt at("incline", {}, 0.5);
+  const Image alone = renderer().render(*at.lesson, at.framing);
+  {
+    HeadlessRenderer second(frame_width, frame_height);
+    EXPECT_EQ(second.render(*at.lesson, at.framing).rgba, alone.rgba);
+    EXPECT_EQ(renderer().render(*at.lesson, at.framing).rgba, alone.rgba);
+  }
+  EXPECT_EQ(renderer().render(*at.lesson, at.framing).rgba, alone.rgba);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

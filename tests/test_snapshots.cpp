@@ -59,6 +59,9 @@ const std::vector<Moment>& moments() {
   return all;
 }
 
+// Test names and failure messages show the moment's name, not its bytes.
+void PrintTo(const Moment& moment, std::ostream* out) { *out << moment.name; }
+
 class Snapshot : public ::testing::TestWithParam<Moment> {};
 
 TEST_P(Snapshot, MatchesItsGolden) {

@@ -5,6 +5,8 @@
 #include "ui/overlays.h"
 #include "ui/panels.h"
 #include "ui/plots.h"
+#include "ui/free_body.h"
+#include "ui/legend.h"
 #include "ui/world_view.h"
 
 namespace frictionlab::ui {
@@ -104,8 +106,10 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   // Room for names that wrap onto a second line.
   const float theory_height = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
   const float gap = 4.0f * s;
+  // What is left, but never less than a few rows: a lesson with many expectations scrolls
+  // its parameters rather than losing them.
   const float parameters_height =
-      layout.column_size.y - model_height - energy_height - theory_height - 3.0f * gap;
+      std::max(layout.column_size.y - model_height - energy_height - theory_height - 3.0f * gap, height_for(3));
   ImVec2 at = layout.column_corner;
   parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
   at.y += parameters_height + gap;

@@ -11,6 +11,10 @@
 namespace frictionlab::ui {
 namespace {
 
+// Every context shares the one surfaceless display, and eglTerminate ends them all: the
+// display is terminated only when the last context goes.
+int live_contexts = 0;
+
 std::string egl_failure(const char* step) {
   char code[16];
   std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(eglGetError()));
@@ -31,7 +35,7 @@ HeadlessContext::HeadlessContext() {
   if (eglInitialize(display, &major, &minor) != EGL_TRUE) throw HeadlessUnavailable(egl_failure("eglInitialize"));
   display_ = display;
   if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
-    eglTerminate(display);
+    if (live_contexts == 0) eglTerminate(display);
     throw HeadlessUnavailable(egl_failure("choosing desktop OpenGL"));
   }
   // The default surface type is a window, which the surfaceless platform has none of.
@@ -39,30 +43,36 @@ HeadlessContext::HeadlessContext() {
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (eglChooseConfig(display, config_wanted, &config, 1, &configs) != EGL_TRUE || configs < 1) {
-    eglTerminate(display);
+    if (live_contexts == 0) eglTerminate(display);
     throw HeadlessUnavailable(egl_failure("finding an OpenGL configuration"));
   }
   const EGLint context_wanted[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
                                    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_wanted);
   if (context == EGL_NO_CONTEXT) {
-    eglTerminate(display);
+    if (live_contexts == 0) eglTerminate(display);
     throw HeadlessUnavailable(egl_failure("creating an OpenGL 3.3 core context"));
   }
   context_ = context;
   if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
     const std::string message = egl_failure("making the context current without a surface");
     eglDestroyContext(display, context);
-    eglTerminate(display);
+    if (live_contexts == 0) eglTerminate(display);
     throw HeadlessUnavailable(message);
   }
+  ++live_contexts;
 }
 
 HeadlessContext::~HeadlessContext() {
+  make_current();
   release_framebuffer();
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
-  eglTerminate(display_);
+  if (--live_contexts == 0) eglTerminate(display_);
+}
+
+void HeadlessContext::make_current() const {
+  if (eglGetCurrentContext() != context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
 }
 
 void HeadlessContext::release_framebuffer() {
@@ -73,6 +83,7 @@ void HeadlessContext::release_framebuffer() {
 }
 
 void HeadlessContext::bind_framebuffer(int width, int height) {
+  make_current();
   if (width != width_ || height != height_) {
     release_framebuffer();
     glGenRenderbuffers(1, &colour_);
@@ -94,6 +105,7 @@ void HeadlessContext::bind_framebuffer(int width, int height) {
 }
 
 Image HeadlessContext::read_pixels() const {
+  make_current();
   Image image(width_, height_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -21,6 +21,9 @@ class HeadlessContext {
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;
 
+  // Makes this context the current one: several may live at once, and GL calls go to the
+  // current one.
+  void make_current() const;
   // Binds a framebuffer of this size (made anew when the size changes) for the next frame.
   void bind_framebuffer(int width, int height);
   // What was drawn into the framebuffer, top row first (OpenGL reads bottom row first).

@@ -5,6 +5,8 @@
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <chrono>
+
 #include "ui/frame.h"
 
 namespace frictionlab::ui {
@@ -12,13 +14,16 @@ namespace frictionlab::ui {
 HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
     : width_(width), height_(height), theme_(theme), gl_(std::make_unique<HeadlessContext>()) {
   IMGUI_CHECKVERSION();
+  // CreateContext makes the new context current only when there is none yet.
+  ImGuiContext* previous = ImGui::GetCurrentContext();
   imgui_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(imgui_);
   ImGuiIO& io = ImGui::GetIO();
   // No imgui.ini or log: a headless picture must not depend on, or leave, files.
   io.IniFilename = nullptr;
   io.LogFilename = nullptr;
   try {
-    fonts_ = load_fonts(static_cast<float>(height) / 720.0f);
+    fonts_ = load_fonts(static_cast<float>(height) / 720.0f, glyph_ranges_);
     apply_imgui_style(theme, fonts_.scale);
     if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
       throw HeadlessUnavailable("headless rendering cannot start: ImGui's OpenGL 3 renderer could not load OpenGL "
@@ -26,22 +31,30 @@ HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
     }
   } catch (...) {
     ImGui::DestroyContext(imgui_);
+    ImGui::SetCurrentContext(previous);
     throw;
   }
 }
 
 HeadlessRenderer::~HeadlessRenderer() {
+  gl_->make_current();
   ImGui::SetCurrentContext(imgui_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext(imgui_);
 }
 
 Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& framing) {
+  gl_->make_current();
   ImGui::SetCurrentContext(imgui_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
   io.DeltaTime = 1.0f / 60.0f;  // no clock: ImGui's animations must not depend on when we draw
+  using clock = std::chrono::steady_clock;
+  const auto seconds_since = [](clock::time_point start) {
+    return std::chrono::duration<double>(clock::now() - start).count();
+  };
   const FrameStyle style{theme_, &fonts_};
+  auto start = clock::now();
   // Twice: the first pass lets tables and windows settle their sizes, so the picture does not
   // depend on which frame came before.
   for (int pass = 0; pass < 2; ++pass) {
@@ -50,13 +63,19 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
     build_frame(lesson, framing, style, io.DisplaySize);
     ImGui::Render();
   }
+  times_.ui = seconds_since(start);
+  start = clock::now();
   gl_->bind_framebuffer(width_, height_);
   const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(theme_).background);
   glClearColor(clear.x, clear.y, clear.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glFinish();
-  return gl_->read_pixels();
+  times_.raster = seconds_since(start);
+  start = clock::now();
+  Image image = gl_->read_pixels();
+  times_.readback = seconds_since(start);
+  return image;
 }
 
 }  // namespace frictionlab::ui

@@ -2,6 +2,8 @@
 // projector fonts, and the frame function shared with the window.
 #pragma once
 
+#include <imgui.h>
+
 #include <memory>
 
 #include "lessons/runtime/lesson.h"
@@ -10,9 +12,16 @@
 #include "ui/image.h"
 #include "ui/theme.h"
 
-struct ImGuiContext;
-
 namespace frictionlab::ui {
+
+// Where the last render's time went, in wall-clock seconds (llvmpipe draws on several
+// threads). For the benchmark only: nothing drawn depends on it.
+struct FrameTimes {
+  double ui = 0.0;        // building the frame's windows and draw lists (both passes)
+  double raster = 0.0;    // OpenGL drawing, to glFinish
+  double readback = 0.0;  // glReadPixels and the row flip
+  double total() const { return ui + raster + readback; }
+};
 
 class HeadlessRenderer {
  public:
@@ -26,6 +35,7 @@ class HeadlessRenderer {
   // picture whatever was drawn before it.
   Image render(lessons::Lesson& lesson, const WorldFraming& framing);
 
+  const FrameTimes& last_times() const { return times_; }
   int width() const { return width_; }
   int height() const { return height_; }
   float scale() const { return fonts_.scale; }
@@ -36,7 +46,9 @@ class HeadlessRenderer {
   ThemeName theme_;
   std::unique_ptr<HeadlessContext> gl_;
   ImGuiContext* imgui_ = nullptr;
+  ImVector<ImWchar> glyph_ranges_;  // the font atlas points into them while it lives
   Fonts fonts_;
+  FrameTimes times_;
 };
 
 }  // namespace frictionlab::ui

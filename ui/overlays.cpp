@@ -57,6 +57,26 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
       forces.push_back({ForceKind::spring, body, body->GetWorldPoint(spring.other_local_point), -pull});
     }
   }
+  // A rope pulls each end toward its pulley with the tension the last world step's solver
+  // found (its impulse over that step's length).
+  const float last_step = static_cast<float>(scene.frame_step() / scene.settings().substeps);
+  for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
+    if (joint->GetType() != e_pulleyJoint || scene.frame() == 0) continue;
+    auto* pulley = const_cast<b2PulleyJoint*>(static_cast<const b2PulleyJoint*>(joint));
+    const float tension = pulley->GetReactionForce(1.0f / last_step).Length();
+    const auto toward = [](b2Vec2 from, b2Vec2 to) {
+      b2Vec2 d = to - from;
+      return d.Normalize() > 0.0f ? d : b2Vec2{0.0f, 0.0f};
+    };
+    if (pulley->GetBodyA() == body) {
+      forces.push_back({ForceKind::tension, body, pulley->GetAnchorA(),
+                        tension * toward(pulley->GetAnchorA(), pulley->GetGroundAnchorA())});
+    }
+    if (pulley->GetBodyB() == body) {
+      forces.push_back({ForceKind::tension, body, pulley->GetAnchorB(),
+                        tension * toward(pulley->GetAnchorB(), pulley->GetGroundAnchorB())});
+    }
+  }
   for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
     const AppliedForce& applied = scene.applied_forces()[i];
     if (applied.body != body) continue;

@@ -37,7 +37,8 @@ const b2Body* main_body(const Scene& scene);
 
 // Every force on a dynamic body now: weight at the centre of mass; for each touching contact
 // the normal force and the friction (dry plus drag) at the point the normal load is centred
-// on; springs at their ends and applied forces at their points, as the last step applied them.
+// on; springs at their ends, ropes at theirs and applied forces at their points, as the last
+// step applied them.
 std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body);
 // Every touching contact with a dynamic body in it, in the world's contact order.
 std::vector<ContactMark> contact_marks(const Scene& scene);
@@ -57,7 +58,8 @@ struct ScreenArrow {
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
                                       float pixels_per_newton);
 
-// "4.42 N", "98.1 N", "0.012 N": three significant figures and the unit.
+// "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
+// ten) and the unit.
 std::string format_quantity(double value, const char* unit);
 
 }  // namespace frictionlab::ui

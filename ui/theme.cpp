@@ -22,6 +22,7 @@ std::string_view force_kind_name(ForceKind kind) {
     case ForceKind::friction: return "friction";
     case ForceKind::normal: return "normal";
     case ForceKind::weight: return "weight";
+    case ForceKind::tension: return "rope";
   }
   return "force";
 }
@@ -36,6 +37,7 @@ ImVec4 rgb(int r, int g, int b) {
 // blue, green, vermilion, purple and dark grey differ in lightness as well as hue.
 Theme make_light() {
   Theme t{};
+  t.name = ThemeName::light;
   t.background = IM_COL32(250, 250, 247, 255);
   t.panel = IM_COL32(255, 255, 255, 255);
   t.text = IM_COL32(20, 20, 24, 255);
@@ -46,19 +48,21 @@ Theme make_light() {
   t.ground = IM_COL32(178, 168, 150, 255);
   t.ground_edge = IM_COL32(92, 82, 66, 255);
   t.outline = IM_COL32(30, 30, 34, 255);
-  t.driven_outline = IM_COL32(200, 30, 140, 255);
+  t.driven_outline = IM_COL32(160, 110, 0, 255);
   t.spring = IM_COL32(40, 40, 46, 255);
   t.rope = IM_COL32(120, 80, 30, 255);
-  t.hand = IM_COL32(200, 30, 140, 255);
+  t.hand = IM_COL32(160, 110, 0, 255);
   t.force[0] = IM_COL32(0, 100, 210, 255);    // applied: blue
   t.force[1] = IM_COL32(0, 140, 70, 255);     // spring: green
   t.force[2] = IM_COL32(220, 70, 0, 255);     // friction: vermilion
   t.force[3] = IM_COL32(130, 50, 170, 255);   // normal: purple
   t.force[4] = IM_COL32(60, 60, 60, 255);     // weight: dark grey
-  t.sticking = IM_COL32(0, 140, 70, 255);
-  t.slipping = IM_COL32(220, 70, 0, 255);
-  t.slip_band = IM_COL32(255, 190, 150, 90);
-  t.now_marker = IM_COL32(200, 30, 140, 255);
+  t.force[5] = IM_COL32(140, 90, 30, 255);    // rope: brown
+  // Contact states have colours no arrow has, so a mark never reads as a force.
+  t.sticking = IM_COL32(0, 150, 160, 255);    // teal
+  t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
+  t.slip_band = IM_COL32(240, 120, 190, 60);
+  t.now_marker = IM_COL32(20, 20, 24, 255);
   t.series[0] = IM_COL32(0, 100, 210, 255);
   t.series[1] = IM_COL32(220, 70, 0, 255);
   t.series[2] = IM_COL32(0, 140, 70, 255);
@@ -75,6 +79,7 @@ Theme make_light() {
 
 Theme make_dark() {
   Theme t{};
+  t.name = ThemeName::dark;
   t.background = IM_COL32(24, 26, 30, 255);
   t.panel = IM_COL32(34, 36, 42, 255);
   t.text = IM_COL32(236, 236, 236, 255);
@@ -85,19 +90,20 @@ Theme make_dark() {
   t.ground = IM_COL32(92, 84, 72, 255);
   t.ground_edge = IM_COL32(190, 175, 150, 255);
   t.outline = IM_COL32(230, 230, 230, 255);
-  t.driven_outline = IM_COL32(255, 110, 200, 255);
+  t.driven_outline = IM_COL32(230, 180, 60, 255);
   t.spring = IM_COL32(225, 225, 225, 255);
   t.rope = IM_COL32(225, 180, 120, 255);
-  t.hand = IM_COL32(255, 110, 200, 255);
+  t.hand = IM_COL32(230, 180, 60, 255);
   t.force[0] = IM_COL32(90, 170, 255, 255);
   t.force[1] = IM_COL32(70, 210, 130, 255);
   t.force[2] = IM_COL32(255, 130, 60, 255);
   t.force[3] = IM_COL32(200, 140, 255, 255);
   t.force[4] = IM_COL32(200, 200, 200, 255);
-  t.sticking = IM_COL32(70, 210, 130, 255);
-  t.slipping = IM_COL32(255, 130, 60, 255);
-  t.slip_band = IM_COL32(255, 130, 60, 50);
-  t.now_marker = IM_COL32(255, 110, 200, 255);
+  t.force[5] = IM_COL32(210, 160, 100, 255);
+  t.sticking = IM_COL32(40, 200, 210, 255);
+  t.slipping = IM_COL32(255, 90, 180, 255);
+  t.slip_band = IM_COL32(255, 90, 180, 45);
+  t.now_marker = IM_COL32(236, 236, 236, 255);
   t.series[0] = IM_COL32(90, 170, 255, 255);
   t.series[1] = IM_COL32(255, 130, 60, 255);
   t.series[2] = IM_COL32(70, 210, 130, 255);
@@ -121,7 +127,7 @@ const Theme& theme(ThemeName name) {
 }
 
 ImU32 material_colour(const Theme& theme, const std::string& material, int index) {
-  const bool dark = theme.background == ui::theme(ThemeName::dark).background;
+  const bool dark = theme.name == ThemeName::dark;
   struct Look {
     const char* name;
     ImU32 light, dark;
@@ -153,7 +159,7 @@ ImU32 material_colour(const Theme& theme, const std::string& material, int index
 
 std::string font_path() { return FRICTIONLAB_FONT_DIR "/DejaVuSans.ttf"; }
 
-Fonts load_fonts(float scale) {
+Fonts load_fonts(float scale, ImVector<ImWchar>& ranges) {
   const std::string path = font_path();
   if (!std::filesystem::exists(path)) {
     throw std::runtime_error(path + " is missing; install Debian's fonts-dejavu-core (scripts/setup.sh does)");
@@ -173,7 +179,6 @@ Fonts load_fonts(float scale) {
       0,
   };
   builder.AddRanges(extra);
-  static ImVector<ImWchar> ranges;  // the atlas keeps a pointer to them until it is built
   ranges.clear();
   builder.BuildRanges(&ranges);
   ImFontConfig config;

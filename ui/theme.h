@@ -16,11 +16,12 @@ ThemeName parse_theme(std::string_view name);
 std::string_view theme_name(ThemeName theme);
 
 // The kinds of force a frame draws; each has its own colour, the same in every picture.
-enum class ForceKind { applied, spring, friction, normal, weight };
-constexpr int force_kind_count = 5;
+enum class ForceKind { applied, spring, friction, normal, weight, tension };
+constexpr int force_kind_count = 6;
 std::string_view force_kind_name(ForceKind kind);
 
 struct Theme {
+  ThemeName name;
   ImU32 background, panel, text, faint_text, grid, axis;
   ImU32 sky, ground, ground_edge, outline, driven_outline, spring, rope, hand;
   ImU32 force[force_kind_count];
@@ -43,8 +44,9 @@ struct Fonts {
 };
 // Adds DejaVu Sans at the three sizes to the current context's atlas, with the Greek letters,
 // degree sign, arrows and maths signs the lessons use. Throws std::runtime_error naming the
-// file and the package when the font is missing.
-Fonts load_fonts(float scale);
+// file and the package when the font is missing. The atlas keeps pointing into
+// `glyph_ranges`, which must live as long as it does.
+Fonts load_fonts(float scale, ImVector<ImWchar>& glyph_ranges);
 // The font file used; compiled in from where the build found Debian's fonts-dejavu-core.
 std::string font_path();
 

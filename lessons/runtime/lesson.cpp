@@ -269,6 +269,10 @@ const std::string& Lesson::probe_unit(const std::string& probe) const {
   throw InvalidInput("no probe '" + probe + "' in " + path_);
 }
 
+void Lesson::step_to(double t) {
+  while (scene().time() + 0.5 * scene().frame_step() < t) step();
+}
+
 void Lesson::step() {
   if (failed_) return;
   try {

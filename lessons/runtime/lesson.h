@@ -99,6 +99,8 @@ class Lesson {
   // the lesson (failed() is true until a rebuild) and is thrown as ScriptError.
   void step();
   bool failed() const { return failed_; }
+  // Whole steps until the scene's time is the step nearest `t` (never before the present).
+  void step_to(double t);
   // The expectations as they stand now.
   std::vector<ExpectationResult> expectations();
 

@@ -10,16 +10,10 @@ ModelCard model_card(const Lesson& lesson) {
     ++card.moving_bodies;
     card.degrees_of_freedom += body->IsFixedRotation() ? 2 : 3;
   }
+  // Scripts make one kind of joint, the rope over a pulley: it ties the two ends' lengths
+  // together, one degree of freedom.
   for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
-    switch (joint->GetType()) {
-      case e_pulleyJoint:
-      case e_distanceJoint: card.constraints += 1; break;
-      case e_revoluteJoint:
-      case e_prismaticJoint:
-      case e_wheelJoint: card.constraints += 2; break;
-      case e_weldJoint: card.constraints += 3; break;
-      default: break;  // mouse, motor, friction and rope joints hold nothing exactly
-    }
+    if (joint->GetType() == e_pulleyJoint) card.constraints += 1;
   }
   card.degrees_of_freedom -= card.constraints;
   for (const Parameter& parameter : lesson.parameters()) {

@@ -1,0 +1,58 @@
+#include "ui/free_body.h"
+
+#include <algorithm>
+
+#include "ui/drawing.h"
+
+namespace frictionlab::ui {
+
+void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
+                    ImVec2 size, const Theme& theme, const Fonts& fonts) {
+  const float s = fonts.scale;
+  draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
+  draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
+  const std::string title = "Free-body diagram: " + name;
+  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
+  if (body == nullptr) return;
+
+  // The body alone, at its own zoom, upright as it is now.
+  b2AABB box;
+  box.lowerBound = box.upperBound = body->GetWorldCenter();
+  for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
+  const float header = fonts.small->FontSize + 10.0f * s, footer = fonts.small->FontSize + 8.0f * s;
+  Camera inset;
+  inset.origin = ImVec2(corner.x, corner.y + header);
+  inset.size = ImVec2(size.x, size.y - header - footer);
+  inset.centre = box.GetCenter();
+  const b2Vec2 extent = box.upperBound - box.lowerBound;
+  inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
+  inset.pixels_per_metre = std::min(0.42f * inset.size.x / std::max(extent.x, 1e-3f), 0.36f * inset.size.y / std::max(extent.y, 1e-3f));
+  const std::vector<ForceOnBody> forces = forces_on(scene, body);
+  float largest = 1e-6f;
+  for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
+  const float newtons_to_pixels = 0.36f * std::min(inset.size.x, inset.size.y) / largest;
+
+  draw->PushClipRect(corner, add(corner, size), true);
+  for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+    const ImU32 fill = fixture_colour(scene, f, theme);
+    if (f->GetType() == b2Shape::e_polygon) {
+      draw_polygon(draw, body, *static_cast<const b2PolygonShape*>(f->GetShape()), inset, fill, theme.outline, 1.5f * s);
+    } else if (f->GetType() == b2Shape::e_circle) {
+      const auto& circle = *static_cast<const b2CircleShape*>(f->GetShape());
+      draw->AddCircleFilled(inset.to_screen(body->GetWorldPoint(circle.m_p)), circle.m_radius * inset.pixels_per_metre, fill, 32);
+    }
+  }
+  draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
+  LabelPlacer labels;
+  b2Vec2 net{0.0f, 0.0f};
+  for (const ScreenArrow& arrow : place_arrows(forces, inset, newtons_to_pixels)) {
+    draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
+  }
+  for (const ForceOnBody& force : forces) net += force.force;
+  draw->PopClipRect();
+  const std::string net_text = "net force: " + format_quantity(net.Length(), "N");
+  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + size.y - footer + 2 * s),
+                theme.faint_text, net_text.c_str());
+}
+
+}  // namespace frictionlab::ui
