@@ -13,6 +13,8 @@
 namespace frictionlab::ui {
 namespace {
 
+// The result points into `forces`: keep the vector (a temporary is refused).
+const ForceOnBody* find_force(std::vector<ForceOnBody>&&, ForceKind) = delete;
 const ForceOnBody* find_force(const std::vector<ForceOnBody>& forces, ForceKind kind) {
   for (const ForceOnBody& force : forces) {
     if (force.kind == kind) return &force;
@@ -63,7 +65,8 @@ TEST(Overlays, FrictionArrowIsKineticFrictionMidSlip) {
   const ContactRecord& record = block_on_bench(scene);
   ASSERT_EQ(record.state, ContactState::slipping);
   ASSERT_GT(block->GetLinearVelocity().x, 0.01f);
-  const ForceOnBody* friction = find_force(forces_on(scene, block), ForceKind::friction);
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
   ASSERT_NE(friction, nullptr);
   const double mu_k = at.lesson->parameter("mu_k").value;
   const double weight = block->GetMass() * 9.81;
@@ -81,13 +84,15 @@ TEST(Overlays, NormalForceActsAtTheFrontEdgeOfATippingBox) {
   const Scene& scene = at.scene();
   const b2Body* box = scene.body("box");
   ASSERT_LT(box->GetAngle(), -0.01f);  // tipping clockwise
-  const ForceOnBody* normal = find_force(forces_on(scene, box), ForceKind::normal);
+  const std::vector<ForceOnBody> forces = forces_on(scene, box);
+  const ForceOnBody* normal = find_force(forces, ForceKind::normal);
   ASSERT_NE(normal, nullptr);
   const b2Vec2 front_edge = box->GetWorldPoint({0.25f, -0.5f});
   EXPECT_NEAR(normal->point.x, front_edge.x, 0.02);
   // Standing still, the floor holds it up at its middle.
   LessonAt start("tipping_box", {}, 0.1);
-  const ForceOnBody* resting = find_force(forces_on(start.scene(), start.scene().body("box")), ForceKind::normal);
+  const std::vector<ForceOnBody> at_rest = forces_on(start.scene(), start.scene().body("box"));
+  const ForceOnBody* resting = find_force(at_rest, ForceKind::normal);
   ASSERT_NE(resting, nullptr);
   EXPECT_NEAR(resting->point.x, start.scene().body("box")->GetWorldCenter().x, 0.02);
 }

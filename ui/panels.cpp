@@ -77,6 +77,11 @@ std::string with_unit(double value, const std::string& unit) {
 
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme) {
   if (begin_panel("theory", "Theory against simulation", corner, size)) {
+    if (rows.empty()) {
+      ImGui::TextDisabled("This lesson states no expectations (expect{} in its script).");
+      end_panel();
+      return;
+    }
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
     if (ImGui::BeginTable("rows", 4, flags)) {
       // The numbers keep their width; a long name wraps.

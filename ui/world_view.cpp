@@ -94,7 +94,7 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
   }
   if (driven) {
     const ImVec2 at = camera.to_screen(body->GetWorldCenter());
-    draw_label(draw, fonts.small, at, theme.driven_outline, 0, "driven");
+    draw_label(draw, fonts.small, at, theme.driven_outline, theme.panel, "driven");
   }
 }
 
