@@ -15,7 +15,9 @@ double option_number(const std::string& option, const std::string& text, double 
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != text.size() || text.empty()) throw InvalidInput(option + " " + text + ": not a number");
+  // Decimal only: stod would also read "0x10" as 16 and "inf" as infinity.
+  const bool decimal = text.find_first_not_of("0123456789+-.eE") == std::string::npos;
+  if (used != text.size() || text.empty() || !decimal) throw InvalidInput(option + " " + text + ": not a number");
   validation::require_in_range(option, value, low, high, low_open, unit);
   return value;
 }

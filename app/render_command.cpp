@@ -1,5 +1,6 @@
 // frictionlab render: a lesson's frames as PNG files, with no display and no GPU.
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -30,7 +31,8 @@ std::vector<double> parse_times(const std::string& text) {
   std::vector<double> times;
   std::stringstream parts(text);
   std::string part;
-  while (std::getline(parts, part, ',')) times.push_back(option_number("--at", part, 0.0, 86400.0, false, " s"));
+  // An hour: the record grows with every step, and the lesson's expectations read all of it.
+  while (std::getline(parts, part, ',')) times.push_back(option_number("--at", part, 0.0, 3600.0, false, " s"));
   if (times.empty() || text.back() == ',') throw InvalidInput("--at " + text + ": give times in seconds, as in --at 0.5,2");
   if (times.size() > 100) throw InvalidInput("--at: at most 100 times in one render, got " + std::to_string(times.size()));
   std::sort(times.begin(), times.end());
@@ -46,10 +48,10 @@ void parse_size(const std::string& text, int& width, int& height) {
   if (std::to_string(width) + "x" + std::to_string(height) != text) {
     throw InvalidInput("--size " + text + ": whole numbers of pixels, as in --size 1280x720");
   }
-  // The layout is made for a projector's landscape screen, 4:3 to 21:9.
+  // The layout is made for a landscape screen, from a 4:3 projector to a 2560x1080 monitor.
   const double aspect = static_cast<double>(width) / height;
-  if (aspect < 4.0 / 3.0 - 1e-9 || aspect > 21.0 / 9.0 + 1e-9) {
-    throw InvalidInput("--size " + text + ": the picture must be landscape, from 4:3 to 21:9 (width / height from 1.33 to 2.33)");
+  if (aspect < 4.0 / 3.0 - 1e-9 || aspect > 2.4 + 1e-9) {
+    throw InvalidInput("--size " + text + ": the picture must be landscape, width / height from 4:3 to 2.4");
   }
 }
 
@@ -66,6 +68,7 @@ auto named(const std::string& option, const std::string& value, Parse parse) {
 RenderOptions parse_render(const std::vector<std::string>& args) {
   RenderOptions options;
   bool have_times = false;
+  std::vector<std::string> seen;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.rfind("--", 0) != 0) {
@@ -80,6 +83,10 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
                          "--hz N, --substeps N, --friction T");
     }
     if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
+    if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) {
+      throw InvalidInput("render: " + arg + " given twice; give it once (several times go in one --at, as in --at 1,2)");
+    }
+    seen.push_back(arg);
     const std::string& value = args[++i];
     if (arg == "--at") {
       options.times = parse_times(value);
@@ -115,15 +122,22 @@ std::string time_text(double t) {
 // folder, made only once every picture is drawn. Checks only; nothing is made here.
 std::vector<std::string> output_paths(const RenderOptions& options, const std::string& lesson_name) {
   const fs::path out(options.out);
-  const bool to_file = out.extension() == ".png";
-  if (out.extension() == ".lua") throw InvalidInput("--out " + options.out + ": that is a lesson script; give a .png file or a folder");
+  std::string extension = out.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".lua") throw InvalidInput("--out " + options.out + ": that is a lesson script; give a .png file or a folder");
+  const bool to_file = extension == ".png";
+  if (!to_file && !extension.empty() && !fs::is_directory(out)) {
+    throw InvalidInput("--out " + options.out + ": pictures are written as PNG; give a .png file or a folder");
+  }
   if (to_file && options.times.size() > 1) {
     throw InvalidInput("--out " + options.out + ": " + std::to_string(options.times.size()) +
                        " times need a folder for --out, not one .png file");
   }
-  const fs::path parent = to_file ? out.parent_path() : out;
-  if (to_file && !parent.empty() && !fs::is_directory(parent)) {
-    throw InvalidInput("--out " + options.out + ": the folder " + parent.string() + " does not exist");
+  // A file goes into a folder that exists; a folder may be new, inside one that exists.
+  const fs::path parent = out.parent_path();
+  if (!parent.empty() && !fs::is_directory(parent)) {
+    throw InvalidInput("--out " + options.out + ": " + parent.string() +
+                       (fs::exists(parent) ? " is a file, not a folder" : " does not exist"));
   }
   if (!to_file && fs::exists(out) && !fs::is_directory(out)) {
     throw InvalidInput("--out " + options.out + ": that is a file; several times need a folder");
@@ -158,7 +172,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
     const std::vector<std::uint8_t> png = ui::encode_png(renderer->render(lesson, framing));
     files.emplace_back(paths[i], std::string(png.begin(), png.end()));
   }
-  const fs::path folder = fs::path(options.out).extension() == ".png" ? fs::path() : fs::path(options.out);
+  const fs::path folder = paths.size() == 1 && paths[0] == options.out ? fs::path() : fs::path(options.out);
   const bool made_folder = !folder.empty() && !fs::exists(folder);
   std::error_code error;
   if (made_folder && !fs::create_directories(folder, error)) {

@@ -17,16 +17,22 @@ void grow(b2AABB& box, bool& empty, b2Vec2 p) {
 
 }  // namespace
 
+bool is_ground(const b2Fixture* fixture) {
+  if (fixture->GetBody()->GetType() != b2_staticBody || fixture->GetType() != b2Shape::e_polygon) return false;
+  const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
+  const b2AABB& box = fixture->GetAABB(0);
+  const float width = box.upperBound.x - box.lowerBound.x, height = box.upperBound.y - box.lowerBound.y;
+  return shape.m_count == 4 && width > 100.0f && height <= 2.0f + 2.0f * b2_polygonRadius;
+}
+
 b2AABB lesson_bounds(const Scene& scene) {
   b2AABB box;
   box.lowerBound = box.upperBound = b2Vec2{0.0f, 0.0f};
   bool empty = true;
   for (const auto& [name, body] : scene.bodies()) {
     for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (is_ground(fixture)) continue;
       const b2AABB& fixture_box = fixture->GetAABB(0);
-      const bool ground = body->GetType() == b2_staticBody &&
-                          fixture_box.upperBound.x - fixture_box.lowerBound.x > 100.0f;
-      if (ground) continue;
       grow(box, empty, fixture_box.lowerBound);
       grow(box, empty, fixture_box.upperBound);
     }

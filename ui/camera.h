@@ -24,8 +24,12 @@ struct Camera {
   }
 };
 
-// The part of the world a lesson is about: every body but the grounds (static bodies wider
-// than 100 m), the spring hands and the pulleys.
+// A ground{}: a static, level box over 100 m wide and at most 2 m thick. It is drawn as the
+// ground and left out of the framing; a long incline is neither.
+bool is_ground(const b2Fixture* fixture);
+
+// The part of the world a lesson is about: every body but the grounds, the spring hands and
+// the pulleys.
 b2AABB lesson_bounds(const Scene& scene);
 
 // Chosen when a lesson is built and kept until it is rebuilt.

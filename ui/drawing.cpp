@@ -4,11 +4,6 @@
 
 namespace frictionlab::ui {
 
-bool is_ground(const b2Fixture* fixture) {
-  const b2AABB& box = fixture->GetAABB(0);
-  return fixture->GetBody()->GetType() == b2_staticBody && box.upperBound.x - box.lowerBound.x > 100.0f;
-}
-
 
 float nice_length(float wanted) {
   const float power = std::pow(10.0f, std::floor(std::log10(wanted)));
@@ -37,10 +32,15 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
     }
     return true;
   };
+  // Inside the view, so a label near its edge is moved in rather than cut.
+  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  wanted.x = std::clamp(wanted.x, low_.x + half_x, std::max(low_.x + half_x, high_.x - half_x));
+  wanted.y = std::clamp(wanted.y, low_.y + half_y, std::max(low_.y + half_y, high_.y - half_y));
   ImVec2 chosen = wanted;
   for (int step = 0; step < 12; ++step) {
     const float shift = static_cast<float>((step + 1) / 2) * (size.y + 2.0f * pad) * (step % 2 == 1 ? 1.0f : -1.0f);
-    const ImVec2 candidate(wanted.x, wanted.y + (step == 0 ? 0.0f : shift));
+    const ImVec2 candidate(wanted.x, std::clamp(wanted.y + (step == 0 ? 0.0f : shift), low_.y + half_y,
+                                                std::max(low_.y + half_y, high_.y - half_y)));
     if (free_at(candidate)) {
       chosen = candidate;
       break;

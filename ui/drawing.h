@@ -22,21 +22,21 @@ inline ImVec2 sub(ImVec2 a, ImVec2 b) { return ImVec2(a.x - b.x, a.y - b.y); }
 inline ImVec2 mul(ImVec2 a, float s) { return ImVec2(a.x * s, a.y * s); }
 inline float length(ImVec2 a) { return std::hypot(a.x, a.y); }
 
-// A static fixture wider than 100 m: a ground{}, drawn as the ground rather than a body.
-bool is_ground(const b2Fixture* fixture);
 // 1, 2 or 5 times a power of ten: the nicest length near `wanted`.
 float nice_length(float wanted);
 const std::string& material_name(const Scene& scene, const b2Fixture* fixture);
 ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& theme);
 
-// Keeps text labels from landing on each other within one picture.
+// Keeps text labels from landing on each other, and inside the view, within one picture.
 class LabelPlacer {
  public:
+  LabelPlacer(ImVec2 corner, ImVec2 size) : low_(corner), high_(add(corner, size)) {}
   // Where a label of this size goes: at `wanted` (its centre) or the nearest free place
   // above or below it.
   ImVec2 place(ImVec2 wanted, ImVec2 size);
 
  private:
+  ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
 };
 

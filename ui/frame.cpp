@@ -64,7 +64,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     const float newtons_to_pixels = arrow_scale(lesson, display, s);
     draw->PushClipRect(layout.world_corner, ImVec2(layout.world_corner.x + layout.world_size.x,
                                                     layout.world_corner.y + layout.world_size.y), true);
-    LabelPlacer labels;
+    LabelPlacer labels(layout.world_corner, layout.world_size);
     draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
     draw->PopClipRect();
     draw_legend(draw, lesson.scene(), camera, layout.legend_corner, layout.legend_size, colours, fonts, newtons_to_pixels);
@@ -81,10 +81,17 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const auto& plots = lesson.plots();
   if (!plots.empty()) {
     const double time_span = std::max(lesson.duration(), lesson.scene().time());
-    const float width = layout.plots_size.x / static_cast<float>(plots.size());
+    // Up to three side by side; more go on a second row.
+    const std::size_t per_row = std::min<std::size_t>(plots.size(), 3);
+    const std::size_t rows_of_plots = (plots.size() + per_row - 1) / per_row;
+    const float width = layout.plots_size.x / static_cast<float>(per_row);
+    const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
     for (std::size_t i = 0; i < plots.size(); ++i) {
-      const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(i), layout.plots_corner.y);
-      const ImVec2 size(width - (i + 1 < plots.size() ? 4.0f * s : 0.0f), layout.plots_size.y);
+      const std::size_t column = i % per_row, row = i / per_row;
+      const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(column),
+                          layout.plots_corner.y + height * static_cast<float>(row));
+      const ImVec2 size(width - (column + 1 < per_row ? 4.0f * s : 0.0f),
+                        height - (row + 1 < rows_of_plots ? 4.0f * s : 0.0f));
       const std::string id = "plot" + std::to_string(i);
       if (begin_panel(id.c_str(), plots[i].title.c_str(), corner, size)) {
         const ImVec2 area = ImGui::GetContentRegionAvail();
@@ -103,13 +110,17 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const std::vector<lessons::ExpectationResult> rows = lesson.expectations();
   const float model_height = height_for(4);
   const float energy_height = height_for(6);
-  // Room for names that wrap onto a second line.
-  const float theory_height = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
   const float gap = 4.0f * s;
-  // What is left, but never less than a few rows: a lesson with many expectations scrolls
-  // its parameters rather than losing them.
-  const float parameters_height =
-      std::max(layout.column_size.y - model_height - energy_height - theory_height - 3.0f * gap, height_for(3));
+  // Parameters and the theory table share what the ledger and model card leave. The table
+  // gets room for names that wrap onto a second line, but at most half when the parameters
+  // need more; rows that do not fit are cut at the panel's edge.
+  const float shared = layout.column_size.y - model_height - energy_height - 3.0f * gap;
+  const float theory_wanted = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
+  const float parameters_wanted = height_for(lesson.parameters().size() + 1);
+  const float theory_height = theory_wanted + parameters_wanted <= shared
+                                  ? theory_wanted
+                                  : std::min(theory_wanted, std::max(0.5f * shared, shared - parameters_wanted));
+  const float parameters_height = shared - theory_height;
   ImVec2 at = layout.column_corner;
   parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
   at.y += parameters_height + gap;

@@ -43,14 +43,16 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     }
   }
   draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
-  LabelPlacer labels;
+  LabelPlacer labels(corner, size);
   b2Vec2 net{0.0f, 0.0f};
   for (const ScreenArrow& arrow : place_arrows(forces, inset, newtons_to_pixels)) {
     draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
   }
   for (const ForceOnBody& force : forces) net += force.force;
   draw->PopClipRect();
-  const std::string net_text = "net force: " + format_quantity(net.Length(), "N");
+  // Before the first step the solver has not yet said what the contacts push with.
+  const std::string net_text = scene.frame() == 0 ? "contact forces: after the first step"
+                                                  : "net force: " + format_quantity(net.Length(), "N");
   draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + size.y - footer + 2 * s),
                 theme.faint_text, net_text.c_str());
 }

@@ -23,7 +23,7 @@ HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
   io.IniFilename = nullptr;
   io.LogFilename = nullptr;
   try {
-    fonts_ = load_fonts(static_cast<float>(height) / 720.0f, glyph_ranges_);
+    fonts_ = load_fonts(frame_scale(width, height), glyph_ranges_);
     apply_imgui_style(theme, fonts_.scale);
     if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
       throw HeadlessUnavailable("headless rendering cannot start: ImGui's OpenGL 3 renderer could not load OpenGL "

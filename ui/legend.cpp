@@ -45,11 +45,13 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   draw_scale_bar(draw, camera.pixels_per_metre, add(corner, size), theme, fonts);
   const ImVec2 bottom_left(corner.x, corner.y + size.y - 2.0f * s);
   ImVec2 at(bottom_left.x + 10.0f * s, bottom_left.y - 2.0f * line);
-  // The kinds of force this scene can have, with the arrow scale so a teacher can read a
-  // length as newtons.
-  bool present[force_kind_count] = {!scene.applied_forces().empty(), !scene.springs().empty(), true, true, true, false};
-  for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
-    present[static_cast<int>(ForceKind::tension)] |= joint->GetType() == e_pulleyJoint;
+  // The kinds of force in the picture, with the arrow scale so a teacher can read a length as
+  // newtons. Friction, normal force and weight are always named: they are the lesson.
+  bool present[force_kind_count] = {};
+  present[static_cast<int>(ForceKind::friction)] = present[static_cast<int>(ForceKind::normal)] =
+      present[static_cast<int>(ForceKind::weight)] = true;
+  for (const auto& [name, body] : scene.bodies()) {
+    for (const ForceOnBody& force : forces_on(scene, body)) present[static_cast<int>(force.kind)] = true;
   }
   for (int kind = 0; kind < force_kind_count; ++kind) {
     if (!present[kind]) continue;
@@ -88,7 +90,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
       const std::string& material = material_name(scene, fixture);
       if (std::find(shown.begin(), shown.end(), material) != shown.end()) continue;
       shown.push_back(material);
-      const ImU32 colour = is_ground(fixture) ? theme.ground : fixture_colour(scene, fixture, theme);
+      const ImU32 colour = fixture_colour(scene, fixture, theme);
       chip(colour, material, false);
     }
   }

@@ -42,10 +42,13 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
     if (found == scene.friction().contacts().end() || !touching(found->second)) continue;
     const ContactRecord& record = found->second;
     const b2Vec2 point = centre_of_load(record);
-    const b2Vec2 tangential =
-        record.side(body) * static_cast<float>(record.friction_force + record.damping_force) * record.tangent();
     forces.push_back({ForceKind::normal, body, point, record.normal_on(body)});
-    forces.push_back({ForceKind::friction, body, point, tangential});
+    forces.push_back({ForceKind::friction, body, point, record.friction_on(body)});
+    // The viscous and quadratic terms apart from dry friction, so mu_k·N stays readable.
+    if (record.damping_force != 0.0) {
+      forces.push_back({ForceKind::drag, body, point,
+                        record.side(body) * static_cast<float>(record.damping_force) * record.tangent()});
+    }
   }
   // Springs and applied forces as the last step applied them, the step whose friction the
   // record holds: while a block sticks, the forces then add up to zero.
@@ -93,7 +96,7 @@ std::vector<ContactMark> contact_marks(const Scene& scene) {
     const ContactRecord& record = found->second;
     if (record.body_a->GetType() != b2_dynamicBody && record.body_b->GetType() != b2_dynamicBody) continue;
     marks.push_back({record.body_a, record.body_b, centre_of_load(record), record.tangent(), record.state,
-                     record.sliding_velocity, record.friction_force + record.damping_force});
+                     record.sliding_velocity, record.friction_force});
   }
   return marks;
 }

@@ -29,15 +29,15 @@ struct ContactMark {
   b2Vec2 tangent{1.0f, 0.0f};  // B's friction direction
   ContactState state = ContactState::sticking;
   double sliding_velocity = 0.0;  // m/s, B relative to A along the tangent
-  double friction_force = 0.0;    // N, on B along the tangent: dry and drag
+  double friction_force = 0.0;    // N, dry friction on B along the tangent
 };
 
 // The body a lesson is about: its first dynamic body, in the order the script made them.
 const b2Body* main_body(const Scene& scene);
 
 // Every force on a dynamic body now: weight at the centre of mass; for each touching contact
-// the normal force and the friction (dry plus drag) at the point the normal load is centred
-// on; springs at their ends, ropes at theirs and applied forces at their points, as the last
+// the normal force, dry friction and (with c or b) drag at the point the normal load is
+// centred on; springs at their ends, ropes at theirs and applied forces at their points, as the last
 // step applied them.
 std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body);
 // Every touching contact with a dynamic body in it, in the world's contact order.

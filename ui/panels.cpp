@@ -1,5 +1,6 @@
 #include "ui/panels.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -12,9 +13,11 @@ namespace frictionlab::ui {
 bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size) {
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
+  // No scroll bars: a picture cannot be scrolled, so what does not fit is cut at the edge.
   ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                           ImGuiWindowFlags_NoBringToFrontOnFocus;
+                           ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar |
+                           ImGuiWindowFlags_NoScrollWithMouse;
   if (title == nullptr || *title == '\0') flags |= ImGuiWindowFlags_NoTitleBar;
   const std::string label = std::string(title ? title : "") + "###" + id;
   return ImGui::Begin(label.c_str(), nullptr, flags);
@@ -24,15 +27,19 @@ void end_panel() { ImGui::End(); }
 
 void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
   if (begin_panel("title", "", corner, size)) {
-    ImGui::PushFont(fonts.title);
-    ImGui::TextUnformatted(lesson.title().c_str());
-    ImGui::PopFont();
     char clock[32];
     std::snprintf(clock, sizeof clock, "t = %.2f s", lesson.scene().time());
     ImGui::PushFont(fonts.title);
     const float clock_width = ImGui::CalcTextSize(clock).x;
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - clock_width);
+    const float clock_x = ImGui::GetWindowContentRegionMax().x - clock_width;
+    // A long title stops short of the clock.
+    ImGui::PushTextWrapPos(clock_x - 12.0f * fonts.scale);
+    ImGui::TextUnformatted(lesson.title().c_str());
+    ImGui::PopTextWrapPos();
+    const ImVec2 after_title = ImGui::GetCursorPos();
+    ImGui::SetCursorPos(ImVec2(clock_x, ImGui::GetStyle().WindowPadding.y));
     ImGui::TextUnformatted(clock);
+    ImGui::SetCursorPos(after_title);
     ImGui::PopFont();
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(lesson.question().c_str());
@@ -156,14 +163,17 @@ void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& t
       }
       ImGui::EndTable();
     }
-    // The residual is what the books cannot explain, judged against the energy that went
-    // through them: what was there at the start and put in, or what friction took.
+    // The residual is what the books cannot explain, judged against the largest amount in them:
+    // a fall turns gravity into motion, a spring stores the hand's work, friction takes it.
     const double residual = ledger.residual();
-    const double turnover = std::max(ledger.initial + std::abs(ledger.work_applied) + std::abs(ledger.work_drivers),
-                                     ledger.dissipated());
+    double largest = ledger.initial;
+    for (double amount : {ledger.kinetic, ledger.potential, ledger.spring, ledger.work_applied, ledger.work_drivers,
+                          ledger.work_friction, ledger.work_damping, ledger.work_impacts}) {
+      largest = std::max(largest, std::abs(amount));
+    }
     char share[64] = "";
-    if (turnover > 1e-9) std::snprintf(share, sizeof share, ", %.2f %% of the energy in play", 100.0 * std::abs(residual) / turnover);
-    const bool small = std::abs(residual) <= 0.02 * std::max(turnover, 1e-3);
+    if (largest > 1e-9) std::snprintf(share, sizeof share, ", %.2f %% of the largest term", 100.0 * std::abs(residual) / largest);
+    const bool small = std::abs(residual) <= 0.02 * std::max(largest, 1e-3);
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "residual %s%s",
                        format_quantity(residual, "J").c_str(), share);
   }

@@ -27,6 +27,7 @@ struct Range {
 
 // Data range with the zero line in it (forces are read against zero) and a margin.
 Range range_of(const std::vector<const std::vector<double>*>& series, std::size_t count, bool include_zero) {
+  if (count == 0) return {};  // nothing recorded yet: 0 to 1
   double low = include_zero ? 0.0 : 1e300, high = include_zero ? 0.0 : -1e300;
   for (const auto* values : series) {
     for (std::size_t i = 0; i < count && i < values->size(); ++i) {

@@ -1,5 +1,6 @@
 #include "ui/theme.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
@@ -23,6 +24,7 @@ std::string_view force_kind_name(ForceKind kind) {
     case ForceKind::normal: return "normal";
     case ForceKind::weight: return "weight";
     case ForceKind::tension: return "rope";
+    case ForceKind::drag: return "drag";
   }
   return "force";
 }
@@ -45,7 +47,6 @@ Theme make_light() {
   t.grid = IM_COL32(226, 226, 222, 255);
   t.axis = IM_COL32(70, 70, 78, 255);
   t.sky = IM_COL32(238, 244, 250, 255);
-  t.ground = IM_COL32(178, 168, 150, 255);
   t.ground_edge = IM_COL32(92, 82, 66, 255);
   t.outline = IM_COL32(30, 30, 34, 255);
   t.driven_outline = IM_COL32(160, 110, 0, 255);
@@ -58,6 +59,7 @@ Theme make_light() {
   t.force[3] = IM_COL32(130, 50, 170, 255);   // normal: purple
   t.force[4] = IM_COL32(60, 60, 60, 255);     // weight: dark grey
   t.force[5] = IM_COL32(140, 90, 30, 255);    // rope: brown
+  t.force[6] = IM_COL32(110, 130, 0, 255);    // drag (c, b): olive
   // Contact states have colours no arrow has, so a mark never reads as a force.
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
@@ -87,7 +89,6 @@ Theme make_dark() {
   t.grid = IM_COL32(52, 55, 62, 255);
   t.axis = IM_COL32(190, 190, 196, 255);
   t.sky = IM_COL32(30, 34, 42, 255);
-  t.ground = IM_COL32(92, 84, 72, 255);
   t.ground_edge = IM_COL32(190, 175, 150, 255);
   t.outline = IM_COL32(230, 230, 230, 255);
   t.driven_outline = IM_COL32(230, 180, 60, 255);
@@ -100,6 +101,7 @@ Theme make_dark() {
   t.force[3] = IM_COL32(200, 140, 255, 255);
   t.force[4] = IM_COL32(200, 200, 200, 255);
   t.force[5] = IM_COL32(210, 160, 100, 255);
+  t.force[6] = IM_COL32(190, 210, 60, 255);
   t.sticking = IM_COL32(40, 200, 210, 255);
   t.slipping = IM_COL32(255, 90, 180, 255);
   t.slip_band = IM_COL32(255, 90, 180, 45);
@@ -147,14 +149,19 @@ ImU32 material_colour(const Theme& theme, const std::string& material, int index
   for (const Look& look : looks) {
     if (material == look.name) return dark ? look.dark : look.light;
   }
-  static const ImU32 light_palette[] = {IM_COL32(230, 180, 90, 255), IM_COL32(150, 200, 120, 255),
+  // Tan, then slate: a lesson's first two materials (a crate and its floor, say) look like them.
+  static const ImU32 light_palette[] = {IM_COL32(230, 180, 90, 255), IM_COL32(160, 168, 182, 255),
                                         IM_COL32(220, 140, 160, 255), IM_COL32(160, 150, 220, 255),
                                         IM_COL32(120, 200, 200, 255), IM_COL32(210, 200, 120, 255)};
-  static const ImU32 dark_palette[] = {IM_COL32(180, 130, 50, 255), IM_COL32(100, 150, 80, 255),
+  static const ImU32 dark_palette[] = {IM_COL32(180, 130, 50, 255), IM_COL32(105, 112, 128, 255),
                                        IM_COL32(170, 90, 110, 255), IM_COL32(110, 100, 170, 255),
                                        IM_COL32(70, 150, 150, 255), IM_COL32(160, 150, 70, 255)};
   const int slot = (index < 0 ? 0 : index) % 6;
   return dark ? dark_palette[slot] : light_palette[slot];
+}
+
+float frame_scale(int width, int height) {
+  return std::min(static_cast<float>(height) / 720.0f, static_cast<float>(width) / 1280.0f);
 }
 
 std::string font_path() { return FRICTIONLAB_FONT_DIR "/DejaVuSans.ttf"; }

@@ -16,14 +16,14 @@ ThemeName parse_theme(std::string_view name);
 std::string_view theme_name(ThemeName theme);
 
 // The kinds of force a frame draws; each has its own colour, the same in every picture.
-enum class ForceKind { applied, spring, friction, normal, weight, tension };
-constexpr int force_kind_count = 6;
+enum class ForceKind { applied, spring, friction, normal, weight, tension, drag };
+constexpr int force_kind_count = 7;
 std::string_view force_kind_name(ForceKind kind);
 
 struct Theme {
   ThemeName name;
   ImU32 background, panel, text, faint_text, grid, axis;
-  ImU32 sky, ground, ground_edge, outline, driven_outline, spring, rope, hand;
+  ImU32 sky, ground_edge, outline, driven_outline, spring, rope, hand;
   ImU32 force[force_kind_count];
   ImU32 sticking, slipping, slip_band, now_marker;
   ImU32 series[4];
@@ -35,6 +35,10 @@ const Theme& theme(ThemeName name);
 // A material's fill colour: known materials by look (wood brown, ice pale blue), others from
 // a palette by the order they were declared in.
 ImU32 material_colour(const Theme& theme, const std::string& material, int index);
+
+// Sizes in a frame are given for 1280×720 and scaled by this: by the height, or by the width
+// when the frame is narrower than 16:9 (a 1024×768 projector).
+float frame_scale(int width, int height);
 
 struct Fonts {
   ImFont* body = nullptr;

@@ -12,21 +12,26 @@ namespace {
 
 constexpr float pi = 3.14159265358979f;
 
-void draw_ground(ImDrawList* draw, const b2Fixture* fixture, const Camera& camera, const Theme& theme) {
+// The ground in its material's colour, as far as it really goes (a body beyond its end falls).
+void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture, const Camera& camera,
+                 const Theme& theme) {
   const b2AABB& box = fixture->GetAABB(0);
   const float top = box.upperBound.y - b2_polygonRadius;
   const ImVec2 view_end = add(camera.origin, camera.size);
-  const float left = camera.origin.x, right = view_end.x;
+  const float left = std::max(camera.origin.x, camera.to_screen(box.lowerBound).x);
+  const float right = std::min(view_end.x, camera.to_screen(box.upperBound).x);
+  if (left >= right) return;
   const float top_y = camera.to_screen({0.0f, top}).y;
   const float bottom_y = camera.to_screen({0.0f, box.lowerBound.y + b2_polygonRadius}).y;
-  draw->AddRectFilled(ImVec2(left, top_y), ImVec2(right, std::min(bottom_y, view_end.y)), theme.ground);
+  draw->AddRectFilled(ImVec2(left, top_y), ImVec2(right, std::min(bottom_y, view_end.y)),
+                      fixture_colour(scene, fixture, theme));
   // Hatching fixed to the ground, so the ground is seen to stay put while the view follows.
   const float spacing = nice_length(22.0f / camera.pixels_per_metre);
-  const b2Vec2 world_left = camera.to_world(ImVec2(left, top_y));
-  const float first = std::floor(world_left.x / spacing) * spacing;
+  const float first = std::floor(camera.to_world(ImVec2(left, top_y)).x / spacing) * spacing;
   const float depth = 12.0f;
   for (float x = first; camera.to_screen({x, top}).x < right + depth; x += spacing) {
     const float sx = camera.to_screen({x, top}).x;
+    if (sx < left || sx > right) continue;
     draw->AddLine(ImVec2(sx, top_y + 1.0f), ImVec2(sx - depth, top_y + depth), theme.ground_edge, 1.5f);
   }
   draw->AddLine(ImVec2(left, top_y), ImVec2(right, top_y), theme.ground_edge, 2.5f);
@@ -73,7 +78,7 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
   const float thickness = (driven ? 3.0f : 1.5f) * fonts.scale;
   for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
     if (is_ground(fixture)) {
-      draw_ground(draw, fixture, camera, theme);
+      draw_ground(draw, scene, fixture, camera, theme);
       continue;
     }
     const ImU32 fill = fixture_colour(scene, fixture, theme);
