@@ -4,7 +4,6 @@
 
 namespace frictionlab::ui {
 
-
 float nice_length(float wanted) {
   const float power = std::pow(10.0f, std::floor(std::log10(wanted)));
   const float fraction = wanted / power;
@@ -34,13 +33,13 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
   };
   // Inside the view, so a label near its edge is moved in rather than cut.
   const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  const float top = low_.y + half_y, bottom = std::max(top, high_.y - half_y);
   wanted.x = std::clamp(wanted.x, low_.x + half_x, std::max(low_.x + half_x, high_.x - half_x));
-  wanted.y = std::clamp(wanted.y, low_.y + half_y, std::max(low_.y + half_y, high_.y - half_y));
+  wanted.y = std::clamp(wanted.y, top, bottom);
   ImVec2 chosen = wanted;
   for (int step = 0; step < 12; ++step) {
     const float shift = static_cast<float>((step + 1) / 2) * (size.y + 2.0f * pad) * (step % 2 == 1 ? 1.0f : -1.0f);
-    const ImVec2 candidate(wanted.x, std::clamp(wanted.y + (step == 0 ? 0.0f : shift), low_.y + half_y,
-                                                std::max(low_.y + half_y, high_.y - half_y)));
+    const ImVec2 candidate(wanted.x, std::clamp(wanted.y + (step == 0 ? 0.0f : shift), top, bottom));
     if (free_at(candidate)) {
       chosen = candidate;
       break;
