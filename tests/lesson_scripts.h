@@ -39,10 +39,7 @@ inline std::string with_heading(const std::string& body) {
   return "lesson { title = \"test\", question = \"does it work?\" }\n" + body;
 }
 
-inline void run_for(Lesson& lesson, double seconds) {
-  const double end = lesson.scene().time() + seconds;
-  while (lesson.scene().time() < end - 0.5 * lesson.scene().frame_step()) lesson.step();
-}
+inline void run_for(Lesson& lesson, double seconds) { lesson.step_to(lesson.scene().time() + seconds); }
 
 // The message of the InvalidInput (or ScriptError) `call` throws; fails the test when none.
 template <class Call>

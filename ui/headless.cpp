@@ -34,31 +34,29 @@ HeadlessContext::HeadlessContext() {
   EGLint major = 0, minor = 0;
   if (eglInitialize(display, &major, &minor) != EGL_TRUE) throw HeadlessUnavailable(egl_failure("eglInitialize"));
   display_ = display;
-  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
+  // From here a failure also ends the display, unless other contexts still use it. The error
+  // is read first: every later EGL call that succeeds resets it.
+  const auto give_up = [&](const char* step, EGLContext made = EGL_NO_CONTEXT) {
+    const std::string message = egl_failure(step);
+    if (made != EGL_NO_CONTEXT) eglDestroyContext(display, made);
     if (live_contexts == 0) eglTerminate(display);
-    throw HeadlessUnavailable(egl_failure("choosing desktop OpenGL"));
-  }
+    return HeadlessUnavailable(message);
+  };
+  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) throw give_up("choosing desktop OpenGL");
   // The default surface type is a window, which the surfaceless platform has none of.
   const EGLint config_wanted[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (eglChooseConfig(display, config_wanted, &config, 1, &configs) != EGL_TRUE || configs < 1) {
-    if (live_contexts == 0) eglTerminate(display);
-    throw HeadlessUnavailable(egl_failure("finding an OpenGL configuration"));
+    throw give_up("finding an OpenGL configuration");
   }
   const EGLint context_wanted[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
                                    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_wanted);
-  if (context == EGL_NO_CONTEXT) {
-    if (live_contexts == 0) eglTerminate(display);
-    throw HeadlessUnavailable(egl_failure("creating an OpenGL 3.3 core context"));
-  }
+  if (context == EGL_NO_CONTEXT) throw give_up("creating an OpenGL 3.3 core context");
   context_ = context;
   if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
-    const std::string message = egl_failure("making the context current without a surface");
-    eglDestroyContext(display, context);
-    if (live_contexts == 0) eglTerminate(display);
-    throw HeadlessUnavailable(message);
+    throw give_up("making the context current without a surface", context);
   }
   ++live_contexts;
 }
