@@ -77,6 +77,49 @@ TEST(Overlays, FrictionArrowIsKineticFrictionMidSlip) {
   EXPECT_GT(marks[0].sliding_velocity * marks[0].tangent.x, 0.0);  // the block slides forward
 }
 
+// With a viscous term the drag has an arrow of its own, c times the sliding speed against the
+// motion, and the friction arrow stays the dry mu_k·N.
+TEST(Overlays, DragIsDrawnApartFromDryFriction) {
+  LessonAt at("spring_pull", {{"c", "2"}}, 1.2);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::slipping);
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  const ForceOnBody* drag = find_force(forces, ForceKind::drag);
+  ASSERT_TRUE(friction && drag);
+  const double weight = block->GetMass() * 9.81;
+  EXPECT_NEAR(friction->force.x, -0.35 * weight, 1e-3 * weight);
+  const double speed = block->GetLinearVelocity().x;
+  ASSERT_GT(speed, 0.05);
+  // The drag was applied at the start of the step, the speed is read at its end: within 2 %.
+  EXPECT_NEAR(drag->force.x, -2.0 * speed, 0.02 * 2.0 * speed);
+  // Without c there is no drag arrow at all.
+  LessonAt dry("spring_pull", {}, 1.2);
+  const std::vector<ForceOnBody> dry_forces = forces_on(dry.scene(), dry.scene().body("block"));
+  EXPECT_EQ(find_force(dry_forces, ForceKind::drag), nullptr);
+}
+
+// A ground{} is drawn as ground and left out of the framing; a long incline is not ground.
+TEST(Overlays, OnlyAGroundIsTakenForGround) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "metal", mu_s = 0.3, mu_k = 0.2 }
+ground { material = "metal" }
+local slope = incline { "slope", material = "metal", angle = 10, length = 150 }
+box { "block", material = "wood", width = 0.4, height = 0.2, on = slope, at = 1, mass = 1 }
+)"));
+  lessons::Lesson lesson(script.path());
+  const Scene& scene = lesson.scene();
+  EXPECT_TRUE(is_ground(scene.body("ground")->GetFixtureList()));
+  EXPECT_FALSE(is_ground(scene.body("slope")->GetFixtureList()));
+  EXPECT_FALSE(is_ground(scene.body("block")->GetFixtureList()));
+  // The framing covers the 150 m slope (about 148 m along the ground) but not the 400 m ground.
+  const b2AABB bounds = lesson_bounds(scene);
+  EXPECT_GT(bounds.upperBound.x - bounds.lowerBound.x, 140.0f);
+  EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 160.0f);
+}
+
 // A box tipping over its front edge: the floor's push has moved to that edge, which is where
 // the normal arrow starts.
 TEST(Overlays, NormalForceActsAtTheFrontEdgeOfATippingBox) {
