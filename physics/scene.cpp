@@ -180,6 +180,49 @@ void Scene::add_applied_force(const AppliedForce& force) {
   forces_applied_.push_back({0.0f, 0.0f});
 }
 
+namespace {
+constexpr const char* grab_name = "hand (mouse)";
+}
+
+void Scene::grab(b2Body* body, b2Vec2 local_point, b2Vec2 target) {
+  if (body == nullptr || body->GetType() != b2_dynamicBody) {
+    throw InvalidInput("grab: only a body that moves freely (dynamic) can be taken by the hand");
+  }
+  release();
+  grab_ = std::make_unique<Grab>(Grab{body, target});
+  applied_.push_back({grab_name, body, local_point, {}});
+  applied_.back().force = [this, index = applied_.size() - 1](double) { return grab_force(applied_[index]); };
+  forces_applied_.push_back({0.0f, 0.0f});
+}
+
+void Scene::move_grab(b2Vec2 target) {
+  if (grab_) grab_->target = target;
+}
+
+void Scene::release() {
+  if (!grab_) return;
+  grab_.reset();
+  // The hand is always the last applied force: it is added last and removed before another.
+  applied_.pop_back();
+  forces_applied_.pop_back();
+}
+
+b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
+  const b2Body& body = *hand.body;
+  const b2Vec2 point = body.GetWorldPoint(hand.local_point);
+  const b2Vec2 velocity = body.GetLinearVelocityFromWorldPoint(point);
+  // Critically damped at 3 Hz, or slower when the step is long, so the explicit pull stays
+  // stable at any step rate (omega·h <= 0.5).
+  const double h = frame_step() / settings_.substeps;
+  const double omega = std::min(2.0 * b2_pi * 3.0, 0.5 / h);
+  const double mass = body.GetMass();
+  b2Vec2 force = static_cast<float>(mass * omega * omega) * (grab_->target - point) -
+                 static_cast<float>(2.0 * mass * omega) * velocity;
+  const double cap = 20.0 * mass * gravity_.Length();
+  if (cap > 0.0 && force.Length() > cap) force *= static_cast<float>(cap / force.Length());
+  return force;
+}
+
 void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
   if (body == nullptr || body->GetType() != b2_kinematicBody) {
     throw InvalidInput("drive: only a kinematic body can be moved by a function of time");

@@ -136,7 +136,21 @@ class Scene {
 
   const EnergyLedger& ledger() const { return ledger_; }
 
+  // A hand on a dynamic body, as the mouse gives it: a stiff, damped pull of the grabbed point
+  // towards `target`, capped at 20·m·g, applied like any applied force (drawn, and its work
+  // counted in the ledger). Releasing leaves the body its velocity: that is how a push is given.
+  void grab(b2Body* body, b2Vec2 local_point, b2Vec2 target);
+  void move_grab(b2Vec2 target);
+  void release();
+  b2Body* grabbed() const { return grab_ ? grab_->body : nullptr; }
+  b2Vec2 grab_target() const { return grab_ ? grab_->target : b2Vec2{0.0f, 0.0f}; }
+
  private:
+  struct Grab {
+    b2Body* body;
+    b2Vec2 target;
+  };
+  b2Vec2 grab_force(const AppliedForce& hand) const;
   struct Driver {
     b2Body* body;
     VectorOfTime position;
@@ -176,6 +190,7 @@ class Scene {
     bool on_dynamic;  // some dynamic body is made of it
   };
   std::vector<MaterialUse> materials_in_use_;
+  std::unique_ptr<Grab> grab_;
   double time_ = 0.0;
   long frame_ = 0;
   bool ledger_started_ = false;

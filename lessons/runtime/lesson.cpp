@@ -392,4 +392,16 @@ bool Lesson::reload() {
 
 void Lesson::reset() { replace(build(source_, false), source_); }
 
+void Lesson::set_settings(const StepSettings& settings) {
+  validate(settings);
+  const StepSettings saved = settings_;
+  settings_ = settings;
+  try {
+    replace(build(source_, false), source_);
+  } catch (...) {
+    settings_ = saved;
+    throw;
+  }
+}
+
 }  // namespace frictionlab::lessons

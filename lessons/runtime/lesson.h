@@ -113,6 +113,9 @@ class Lesson {
   bool reload();
   // Builds the scene again from t = 0 with the current parameters (after a script error).
   void reset();
+  // Another step rate, sub-step count or friction treatment: the scene is built again from
+  // t = 0 with it. Throws InvalidInput naming the setting and changes nothing when invalid.
+  void set_settings(const StepSettings& settings);
   const std::string& last_error() const { return last_error_; }
 
   // Time spent inside the script's Lua since timing was switched on, for the benchmark.
