@@ -11,7 +11,7 @@
 
 namespace frictionlab::ui {
 
-FrameLayout FrameLayout::of(ImVec2 display, float scale) {
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   const float title_height = 70.0f * scale;
@@ -32,11 +32,17 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale) {
   layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);
   layout.column_corner = ImVec2(left_width + gap, title_height + gap);
   layout.column_size = ImVec2(column_width, below);
+  for (ImVec2* corner : {&layout.title_corner, &layout.world_corner, &layout.legend_corner, &layout.inset_corner,
+                         &layout.plots_corner, &layout.column_corner}) {
+    corner->x += origin.x;
+    corner->y += origin.y;
+  }
   return layout;
 }
 
-Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale) {
-  const FrameLayout layout = FrameLayout::of(display, scale);
+Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale,
+                    ImVec2 origin) {
+  const FrameLayout layout = FrameLayout::of(display, scale, origin);
   return framing.camera(lesson.scene(), layout.world_corner, layout.world_size, layout.world_size.x - layout.inset_size.x);
 }
 
@@ -51,8 +57,14 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const Fonts& fonts = *style.fonts;
   const Theme& colours = theme(style.theme);
   const float s = fonts.scale;
-  const FrameLayout layout = FrameLayout::of(display, s);
+  const FrameLayout layout = FrameLayout::of(display, s, style.origin);
   ImGui::PushFont(fonts.body);
+  LessonReadings own;
+  if (style.readings == nullptr) {
+    own.duration = lesson.duration();
+    own.expectations = lesson.expectations();
+  }
+  const LessonReadings& readings = style.readings ? *style.readings : own;
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts);
 
@@ -60,7 +72,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const ImVec2 world_and_legend(layout.world_size.x, layout.world_size.y + layout.legend_size.y);
   if (begin_panel("world", "", layout.world_corner, world_and_legend)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const Camera camera = world_camera(lesson, framing, display, s);
+    const Camera camera = world_camera(lesson, framing, display, s, style.origin);
     const float newtons_to_pixels = arrow_scale(lesson, display, s);
     draw->PushClipRect(layout.world_corner, ImVec2(layout.world_corner.x + layout.world_size.x,
                                                     layout.world_corner.y + layout.world_size.y), true);
@@ -80,7 +92,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   // The plots side by side under the world.
   const auto& plots = lesson.plots();
   if (!plots.empty()) {
-    const double time_span = std::max(lesson.duration(), lesson.scene().time());
+    const double time_span = std::max(readings.duration, lesson.scene().time());
     // Up to three side by side; more go on a second row.
     const std::size_t per_row = std::min<std::size_t>(plots.size(), 3);
     const std::size_t rows_of_plots = (plots.size() + per_row - 1) / per_row;
@@ -107,28 +119,49 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const float title_bar = ImGui::GetFrameHeight();
   const float padding = 2.0f * ImGui::GetStyle().WindowPadding.y;
   const auto height_for = [&](std::size_t lines) { return title_bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
-  const std::vector<lessons::ExpectationResult> rows = lesson.expectations();
-  const float model_height = height_for(4);
-  const float energy_height = height_for(6);
+  const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
+  const bool tabbed = static_cast<bool>(style.parameters_panel);
+  const float model_height = tabbed ? 0.0f : height_for(4);
+  const float energy_height = height_for(6) + (tabbed ? 4.0f * s : 0.0f);
   const float gap = 4.0f * s;
   // Parameters and the theory table share what the ledger and model card leave. The table
   // gets room for names that wrap onto a second line, but at most half when the parameters
   // need more; rows that do not fit are cut at the panel's edge.
-  const float shared = layout.column_size.y - model_height - energy_height - 3.0f * gap;
+  const float shared = layout.column_size.y - model_height - energy_height - (tabbed ? 2.0f : 3.0f) * gap;
   const float theory_wanted = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
-  const float parameters_wanted = height_for(lesson.parameters().size() + 1);
+  const float parameters_wanted =
+      style.parameters_height > 0.0f ? style.parameters_height : height_for(lesson.parameters().size() + 1);
   const float theory_height = theory_wanted + parameters_wanted <= shared
                                   ? theory_wanted
                                   : std::min(theory_wanted, std::max(0.5f * shared, shared - parameters_wanted));
   const float parameters_height = shared - theory_height;
   ImVec2 at = layout.column_corner;
-  parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
+  if (style.parameters_panel) {
+    style.parameters_panel(at, ImVec2(layout.column_size.x, parameters_height));
+  } else {
+    parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
+  }
   at.y += parameters_height + gap;
   theory_panel(rows, at, ImVec2(layout.column_size.x, theory_height), colours);
   at.y += theory_height + gap;
-  energy_panel(lesson.scene(), at, ImVec2(layout.column_size.x, energy_height), colours);
-  at.y += energy_height + gap;
-  model_panel(lesson, at, ImVec2(layout.column_size.x, model_height));
+  if (tabbed) {
+    if (begin_panel("books", "", at, ImVec2(layout.column_size.x, energy_height)) && ImGui::BeginTabBar("books")) {
+      if (ImGui::BeginTabItem("Energy ledger (since t = 0)")) {
+        energy_contents(lesson.scene(), colours);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Model card")) {
+        model_contents(lesson);
+        ImGui::EndTabItem();
+      }
+      ImGui::EndTabBar();
+    }
+    end_panel();
+  } else {
+    energy_panel(lesson.scene(), at, ImVec2(layout.column_size.x, energy_height), colours);
+    at.y += energy_height + gap;
+    model_panel(lesson, at, ImVec2(layout.column_size.x, model_height));
+  }
 
   ImGui::PopFont();
 }

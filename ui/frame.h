@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <functional>
+
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
 #include "ui/theme.h"
@@ -19,12 +21,30 @@ struct FrameLayout {
   ImVec2 inset_corner, inset_size;  // the free-body diagram, over the world's top right
   ImVec2 plots_corner, plots_size;
   ImVec2 column_corner, column_size;
-  static FrameLayout of(ImVec2 display, float scale);
+  // The frame fills `size` from `origin` (the window keeps a menu bar above it and its
+  // transport controls below).
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f));
+};
+
+// What the frame shows beside the world that needs the script to work it out.
+struct LessonReadings {
+  std::vector<lessons::ExpectationResult> expectations;
+  double duration = 1.0;  // s
+  std::string error;      // the script failed to work them out
 };
 
 struct FrameStyle {
   ThemeName theme = ThemeName::light;
   const Fonts* fonts = nullptr;
+  ImVec2 origin{0.0f, 0.0f};
+  // The theory table and the lesson's duration, when the caller keeps them (the window works
+  // them out a few times a second); null: worked out for this frame.
+  const LessonReadings* readings = nullptr;
+  // Draws the parameters panel in its place instead of the values as text (the window's
+  // sliders), given the height it would like. The window then shows the energy ledger and the
+  // model card as two tabs of one panel, to leave the sliders room.
+  std::function<void(ImVec2 corner, ImVec2 size)> parameters_panel;
+  float parameters_height = 0.0f;
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and
@@ -33,7 +53,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
 
 // The world view's camera and arrow scale for this frame, as build_frame draws them: tests
 // use these to find the arrows in the picture.
-Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale);
+Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale,
+                    ImVec2 origin = ImVec2(0.0f, 0.0f));
 float arrow_scale(const lessons::Lesson& lesson, ImVec2 display, float scale);
 
 }  // namespace frictionlab::ui

@@ -53,7 +53,9 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
   const auto seconds_since = [](clock::time_point start) {
     return std::chrono::duration<double>(clock::now() - start).count();
   };
-  const FrameStyle style{theme_, &fonts_};
+  FrameStyle style;
+  style.theme = theme_;
+  style.fonts = &fonts_;
   auto start = clock::now();
   // Twice: the first pass lets tables and windows settle their sizes, so the picture does not
   // depend on which frame came before.

@@ -30,23 +30,27 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
   return encoded;
 }
 
-void write_png(const Image& image, const std::string& path) {
-  const std::vector<std::uint8_t> encoded = encode_png(image);
+void write_whole_file(const std::string& path, const void* data, std::size_t size) {
   const std::string partial = path + ".partial";
   std::FILE* file = std::fopen(partial.c_str(), "wb");
   if (file == nullptr) throw std::runtime_error(path + ": cannot write there");
-  const bool written = std::fwrite(encoded.data(), 1, encoded.size(), file) == encoded.size();
+  const bool written = std::fwrite(data, 1, size, file) == size;
   const bool closed = std::fclose(file) == 0;
   std::error_code error;
   if (!written || !closed) {
     std::filesystem::remove(partial, error);
-    throw std::runtime_error(path + ": the picture could not be written whole (disk full?)");
+    throw std::runtime_error(path + ": the file could not be written whole (disk full?)");
   }
   std::filesystem::rename(partial, path, error);
   if (error) {
     std::filesystem::remove(partial, error);
     throw std::runtime_error(path + ": cannot replace the file there");
   }
+}
+
+void write_png(const Image& image, const std::string& path) {
+  const std::vector<std::uint8_t> encoded = encode_png(image);
+  write_whole_file(path, encoded.data(), encoded.size());
 }
 
 Image read_png(const std::string& path) {

@@ -2,6 +2,7 @@
 // snapshot tests use.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ struct Image {
 // Encodes to PNG in memory, writes PATH.partial, then renames it over PATH: a reader never
 // sees half a picture, and a failure leaves nothing behind. Throws std::runtime_error.
 void write_png(const Image& image, const std::string& path);
+// The same for any bytes: PATH.partial, then renamed over PATH.
+void write_whole_file(const std::string& path, const void* data, std::size_t size);
 // The encoded PNG bytes, for timing the encoder apart from the disk.
 std::vector<std::uint8_t> encode_png(const Image& image);
 // Throws std::runtime_error naming the path when it cannot be read as a PNG.

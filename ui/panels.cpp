@@ -130,7 +130,12 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
 }
 
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme) {
-  if (begin_panel("energy", "Energy ledger (since t = 0)", corner, size)) {
+  if (begin_panel("energy", "Energy ledger (since t = 0)", corner, size)) energy_contents(scene, theme);
+  end_panel();
+}
+
+void energy_contents(const Scene& scene, const Theme& theme) {
+  {
     const EnergyLedger& ledger = scene.ledger();
     struct Line {
       const char* name;
@@ -177,11 +182,15 @@ void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& t
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "residual %s%s",
                        format_quantity(residual, "J").c_str(), share);
   }
-  end_panel();
 }
 
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
-  if (begin_panel("model", "Model card", corner, size)) {
+  if (begin_panel("model", "Model card", corner, size)) model_contents(lesson);
+  end_panel();
+}
+
+void model_contents(const lessons::Lesson& lesson) {
+  {
     const lessons::ModelCard card = lessons::model_card(lesson);
     const std::string held = card.constraints > 0 ? ", less " + std::to_string(card.constraints) + " held by joints" : "";
     ImGui::Text("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
@@ -194,7 +203,6 @@ void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
     ImGui::Text("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
                 card.velocity_iterations);
   }
-  end_panel();
 }
 
 }  // namespace frictionlab::ui

@@ -21,5 +21,8 @@ void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size)
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme);
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
+// What those two panels hold, for a window that shows them as tabs of one panel.
+void energy_contents(const Scene& scene, const Theme& theme);
+void model_contents(const lessons::Lesson& lesson);
 
 }  // namespace frictionlab::ui

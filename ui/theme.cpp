@@ -223,6 +223,12 @@ void apply_imgui_style(ThemeName name, float scale) {
   style.Colors[ImGuiCol_TitleBgCollapsed] = t.imgui_title;
   style.Colors[ImGuiCol_Border] = t.imgui_border;
   style.Colors[ImGuiCol_TableHeaderBg] = t.imgui_header;
+  if (name == ThemeName::light) {
+    // Sliders and boxes stand out from the white panels (ImGui's light frames are white too).
+    style.Colors[ImGuiCol_FrameBg] = ImVec4(0.89f, 0.90f, 0.93f, 1.0f);
+    style.Colors[ImGuiCol_FrameBgHovered] = ImVec4(0.82f, 0.86f, 0.93f, 1.0f);
+    style.Colors[ImGuiCol_FrameBgActive] = ImVec4(0.76f, 0.82f, 0.93f, 1.0f);
+  }
   style.ScaleAllSizes(scale);
   ImGui::GetStyle() = style;
 }

@@ -1,0 +1,305 @@
+#include "ui/playback.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace frictionlab::ui {
+namespace {
+
+std::optional<std::pair<long long, long long>> file_stamp(const std::string& path) {
+  struct stat status {};
+  if (stat(path.c_str(), &status) != 0) return std::nullopt;
+  return std::make_pair(static_cast<long long>(status.st_mtim.tv_sec) * 1'000'000'000LL + status.st_mtim.tv_nsec,
+                        static_cast<long long>(status.st_size));
+}
+
+std::string seconds_text(double t) {
+  std::ostringstream text;
+  text.precision(3);
+  text << t << " s";
+  return text.str();
+}
+
+// Lesson seconds a single display frame may run: enough for 8× speed at 30 frames a second,
+// little enough that a slow step rate never freezes the window.
+constexpr double most_per_display_frame = 0.27;
+// How often the script works out the theory table, and looks at its file, in real seconds.
+constexpr double readings_period = 0.2;
+constexpr double file_check_period = 0.25;
+
+}  // namespace
+
+std::string parameter_text(const lessons::Parameter& parameter) {
+  if (parameter.is_choice()) return parameter.choices[static_cast<std::size_t>(parameter.value)];
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, parameter.value).ptr;  // shortest exact form
+  return std::string(text, end);
+}
+
+Playback::Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings)
+    : lesson_(std::make_unique<lessons::Lesson>(path, std::move(overrides), settings)), file_stamp_(file_stamp(path)) {
+  after_rebuild();
+}
+
+void Playback::after_rebuild() {
+  framing_ = WorldFraming::of(lesson_->scene());
+  initial_values_.clear();
+  for (const lessons::Parameter& parameter : lesson_->parameters()) initial_values_[parameter.name] = parameter_text(parameter);
+  record_.clear();
+  next_action_ = 0;
+  recorded_frames_ = 0;
+  owed_ = 0.0;
+  run_over_ = false;
+  blown_ = false;
+  problem_.clear();
+  notice_.clear();
+  refresh_readings();
+}
+
+void Playback::refresh_readings() {
+  since_readings_ = 0.0;
+  readings_.error.clear();
+  try {
+    readings_.duration = lesson_->duration();
+    readings_.expectations = lesson_->expectations();
+  } catch (const InvalidInput& error) {
+    readings_.expectations.clear();
+    readings_.error = error.what();
+  }
+}
+
+void Playback::play() {
+  // A blown-up or failed lesson stays stopped: stepping on from NaN would only crash Box2D.
+  if (blown_ || lesson_->failed()) return;
+  playing_ = true;
+  notice_.clear();
+}
+
+void Playback::set_speed(double speed) { speed_ = std::clamp(speed, slowest, fastest); }
+
+void Playback::advance(double wall_seconds) {
+  since_readings_ += wall_seconds;
+  behind_ = false;
+  if (playing_) {
+    const double h = lesson_->scene().frame_step();
+    owed_ += wall_seconds * speed_;
+    if (owed_ > most_per_display_frame + h) {
+      behind_ = true;
+      owed_ = most_per_display_frame;
+    }
+    // Steps are whole frames of the lesson; the fraction left waits for the next display frame.
+    while (playing_ && owed_ >= h * (1.0 - 1e-9)) {
+      owed_ -= h;
+      step_and_check();
+    }
+    if (!playing_) owed_ = 0.0;
+  }
+  if (since_readings_ >= readings_period) refresh_readings();
+}
+
+void Playback::step_once() {
+  pause();
+  if (blown_ || lesson_->failed()) return;
+  step_and_check();
+  refresh_readings();
+}
+
+void Playback::run_to(double t) {
+  pause();
+  const double h = lesson_->scene().frame_step();
+  while (lesson_->scene().time() + 0.5 * h < t && !blown_ && !lesson_->failed()) step_and_check();
+  pause();
+  refresh_readings();
+}
+
+void Playback::step_and_check() {
+  if (blown_ || lesson_->failed()) {
+    playing_ = false;
+    return;
+  }
+  const long now = frame();
+  while (next_action_ < record_.size() && record_[next_action_].frame <= now) apply(record_[next_action_++]);
+  try {
+    lesson_->step();
+  } catch (const InvalidInput& error) {
+    playing_ = false;
+    problem_ = std::string(error.what()) + ". Fix the script and save it (it reloads), or press R to start again.";
+    return;
+  }
+  recorded_frames_ = std::max(recorded_frames_, frame());
+  if (std::string trouble = health(); !trouble.empty()) {
+    playing_ = false;
+    blown_ = true;
+    problem_ = "The simulation blew up at t = " + seconds_text(lesson_->scene().time()) + ": " + trouble +
+               ". Press R to reset; a smaller step (higher step rate, more sub-steps) or gentler values may hold.";
+    return;
+  }
+  const double h = lesson_->scene().frame_step();
+  if (!run_over_ && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
+    run_over_ = true;
+    playing_ = false;
+    notice_ = "Paused at the end of the lesson's run (" + seconds_text(readings_.duration) +
+              "), where its theory table is read. Space plays on.";
+  }
+}
+
+std::string Playback::health() const {
+  const Scene& scene = lesson_->scene();
+  for (const auto& [name, body] : scene.bodies()) {
+    const b2Vec2 p = body->GetPosition(), v = body->GetLinearVelocity();
+    const float angle = body->GetAngle(), spin = body->GetAngularVelocity();
+    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(angle) && std::isfinite(v.x) && std::isfinite(v.y) &&
+          std::isfinite(spin))) {
+      return "body '" + name + "' has a position or velocity that is not a number";
+    }
+    if (p.Length() > 1e5f) return "body '" + name + "' flew off beyond 100 km";
+    if (v.Length() > 1e4f) return "body '" + name + "' moves faster than 10 km/s";
+  }
+  // Energy from nowhere larger than every honest entry in the books: no integrator's error
+  // comes near that, a diverging one passes it within a few steps.
+  const EnergyLedger& books = scene.ledger();
+  const double honest = std::max({1.0, std::abs(books.initial), std::abs(books.work_applied),
+                                  std::abs(books.work_drivers), std::abs(books.potential), books.dissipated()});
+  const double residual = books.residual();
+  if (!std::isfinite(residual)) return "the energy is not a number";
+  if (residual > honest) {
+    std::ostringstream text;
+    text.precision(3);
+    text << "the energy ran away (" << residual << " J from nowhere, against " << honest << " J in the books)";
+    return text.str();
+  }
+  return "";
+}
+
+void Playback::reset() {
+  pause();
+  try {
+    lesson_->reset();
+  } catch (const InvalidInput& error) {
+    problem_ = error.what();
+    return;
+  }
+  after_rebuild();
+}
+
+double Playback::recorded_until() const {
+  return static_cast<double>(recorded_frames_) * lesson_->scene().frame_step();
+}
+
+void Playback::scrub_to(double t) {
+  pause();
+  const double h = lesson_->scene().frame_step();
+  const long target = std::clamp(std::lround(t / h), 0L, recorded_frames_);
+  if (target == frame()) return;
+  if (target < frame()) {
+    // Replay from the start: the values the record began with, then every action at its frame.
+    for (const lessons::Parameter& parameter : lesson_->parameters()) {
+      const auto initial = initial_values_.find(parameter.name);
+      if (initial != initial_values_.end() && !parameter.structural && parameter_text(parameter) != initial->second) {
+        lesson_->set(parameter.name, initial->second);
+      }
+    }
+    lesson_->reset();
+    framing_ = WorldFraming::of(lesson_->scene());
+    next_action_ = 0;
+    blown_ = false;
+    problem_.clear();
+  }
+  while (frame() < target && !blown_ && !lesson_->failed()) step_and_check();
+  pause();
+  refresh_readings();
+}
+
+void Playback::record(Action action) {
+  action.frame = frame();
+  apply(action);  // a refused value throws here, before anything is recorded
+  // A change made back in the record starts a new one from here: the old future is gone.
+  if (frame() < recorded_frames_) {
+    record_.erase(record_.begin() + static_cast<std::ptrdiff_t>(next_action_), record_.end());
+    recorded_frames_ = frame();
+  }
+  record_.push_back(std::move(action));
+  next_action_ = record_.size();
+}
+
+void Playback::apply(const Action& action) {
+  Scene& scene = lesson_->scene();
+  switch (action.kind) {
+    case Action::Kind::set: lesson_->set(action.name, action.text); break;
+    case Action::Kind::grab: scene.grab(scene.body(action.name), action.local_point, action.target); break;
+    case Action::Kind::move: scene.move_grab(action.target); break;
+    case Action::Kind::release: scene.release(); break;
+  }
+}
+
+void Playback::set_parameter(const std::string& name, const std::string& text) {
+  const lessons::Parameter& parameter = lesson_->parameter(name);  // throws for an unknown name
+  if (parameter.structural) {
+    lesson_->set(name, text);  // throws and changes nothing when refused
+    after_rebuild();
+    return;
+  }
+  record({Action::Kind::set, 0, name, text});
+  if (!blown_ && !lesson_->failed()) problem_.clear();
+  refresh_readings();
+}
+
+void Playback::set_settings(const StepSettings& settings) {
+  pause();
+  lesson_->set_settings(settings);
+  after_rebuild();
+}
+
+void Playback::grab(const std::string& body, b2Vec2 local_point, b2Vec2 target) {
+  record({Action::Kind::grab, 0, body, "", local_point, target});
+}
+
+void Playback::move_grab(b2Vec2 target) {
+  if (lesson_->scene().grabbed() == nullptr) return;
+  record({Action::Kind::move, 0, "", "", {0.0f, 0.0f}, target});
+}
+
+void Playback::release() {
+  if (lesson_->scene().grabbed() == nullptr) return;
+  record({Action::Kind::release, 0, "", "", {0.0f, 0.0f}, {0.0f, 0.0f}});
+}
+
+bool Playback::reload() {
+  // The lesson goes on as it was: a student who saves while it plays sees the new one play.
+  const bool was_playing = playing_;
+  if (!lesson_->reload()) {
+    script_error_ = lesson_->last_error();
+    return false;
+  }
+  script_error_.clear();
+  after_rebuild();
+  playing_ = was_playing;
+  notice_ = "Reloaded " + lesson_->path() + ".";
+  return true;
+}
+
+void Playback::watch_file(double wall_seconds) {
+  since_file_check_ += wall_seconds;
+  if (since_file_check_ < file_check_period) return;
+  since_file_check_ = 0.0;
+  const auto stamp = file_stamp(lesson_->path());
+  if (!stamp) {
+    // Moved, deleted, or half-way through an editor's save: say so, keep the lesson running.
+    if (script_error_.empty() || script_error_.rfind("cannot read", 0) == 0) {
+      script_error_ = "cannot read " + lesson_->path() + " (moved or deleted?); the lesson keeps running";
+    }
+    return;
+  }
+  if (stamp == file_stamp_) {
+    if (script_error_.rfind("cannot read", 0) == 0) script_error_.clear();
+    return;
+  }
+  file_stamp_ = stamp;
+  reload();
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,123 @@
+// The lesson as the window runs it: play, pause, single steps, slow motion and fast forward
+// on the lesson's fixed step; a record of what was done to it (values set, the mouse's hand),
+// so that any earlier moment can be shown again by replaying from t = 0, which the fixed step
+// makes exact; the script's file watched; and a simulation that blows up stopped, not shown.
+// No drawing here: the window's panels read and drive it.
+#pragma once
+
+#include <box2d/box2d.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
+#include "ui/camera.h"
+#include "ui/frame.h"
+
+namespace frictionlab::ui {
+
+class Playback {
+ public:
+  static constexpr double slowest = 0.1, fastest = 8.0;
+
+  // Throws as lessons::Lesson does (ScriptError, InvalidInput) when the first build fails.
+  Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings);
+
+  lessons::Lesson& lesson() { return *lesson_; }
+  const lessons::Lesson& lesson() const { return *lesson_; }
+  const WorldFraming& framing() const { return framing_; }
+  // Worked out a few times a second, not every frame, and never thrown mid-frame.
+  const LessonReadings& readings() const { return readings_; }
+
+  // Real time passing: `wall_seconds` times the speed, in whole frames of the lesson. A
+  // display frame runs at most a quarter of a second of lesson; what is left over is dropped
+  // (the lesson then runs slower than asked, and behind() says so).
+  void advance(double wall_seconds);
+  bool playing() const { return playing_; }
+  void play();
+  void pause() { playing_ = false; }
+  void toggle() { playing_ ? pause() : play(); }
+  // Exactly one frame of the lesson (1/hz s), paused.
+  void step_once();
+  // Whole frames until the lesson's time is the frame nearest `t`, paused there.
+  void run_to(double t);
+  double speed() const { return speed_; }
+  void set_speed(double speed);
+  bool behind() const { return behind_; }
+
+  // Back to t = 0 with the values as they are now.
+  void reset();
+  // The recorded run: from 0 to recorded_until(). Moving to an earlier time replays the run
+  // from t = 0 with everything that was done to it; a change made there starts a new record.
+  double recorded_until() const;
+  void scrub_to(double t);
+
+  // Parameters and settings. Throw InvalidInput (the message says what and the range) and
+  // change nothing when the value is refused. A structural value or a setting rebuilds the
+  // scene from t = 0; the others change the running lesson and join the record.
+  void set_parameter(const std::string& name, const std::string& text);
+  void set_settings(const StepSettings& settings);
+
+  // The mouse's hand on a body (by name) at a point in its own frame, pulled to `target`.
+  void grab(const std::string& body, b2Vec2 local_point, b2Vec2 target);
+  void move_grab(b2Vec2 target);
+  void release();
+
+  // The script's file: call every frame with the wall time; it looks at the file a few times
+  // a second and reloads it when it changed. A failed reload leaves the last good lesson
+  // running and its message in script_error().
+  void watch_file(double wall_seconds);
+  bool reload();  // now (F5); false with script_error() set on failure
+  const std::string& script_error() const { return script_error_; }
+  // Why the lesson stopped by itself: the simulation blew up or the script failed while it
+  // ran. Empty while neither happened; only a reset, a reload or a new value clears it.
+  const std::string& problem() const { return problem_; }
+  // Something worth saying that is not a fault: the lesson's run is over, the file was reloaded.
+  const std::string& notice() const { return notice_; }
+
+  // Recomputes the readings now (after a change while paused, say).
+  void refresh_readings();
+
+ private:
+  struct Action {
+    enum class Kind { set, grab, move, release } kind;
+    long frame;        // applied just before this frame is stepped
+    std::string name;  // parameter or body
+    std::string text;  // the parameter's value
+    b2Vec2 local_point{0.0f, 0.0f}, target{0.0f, 0.0f};
+  };
+  void after_rebuild();
+  void apply(const Action& action);
+  void record(Action action);
+  void step_and_check();
+  std::string health() const;  // "" when the state is sound
+  long frame() const { return lesson_->scene().frame(); }
+
+  std::unique_ptr<lessons::Lesson> lesson_;
+  WorldFraming framing_;
+  LessonReadings readings_;
+  std::map<std::string, std::string> initial_values_;  // the values the record starts from
+  std::vector<Action> record_;
+  long recorded_frames_ = 0;
+  bool playing_ = false;
+  double speed_ = 1.0;
+  double owed_ = 0.0;  // lesson seconds due but not yet stepped
+  bool behind_ = false;
+  bool run_over_ = false;
+  bool blown_ = false;       // stays stopped until a reset or a rebuild  // the lesson's duration was reached once in this run
+  double since_readings_ = 0.0;
+  double since_file_check_ = 0.0;
+  std::optional<std::pair<long long, long long>> file_stamp_;  // modification time (ns) and size
+  std::size_t next_action_ = 0;  // the first action of the record not yet applied
+  std::string script_error_;
+  std::string problem_;
+  std::string notice_;
+};
+
+// The value of a parameter as text that sets it again exactly: "0.45", "plastic".
+std::string parameter_text(const lessons::Parameter& parameter);
+
+}  // namespace frictionlab::ui

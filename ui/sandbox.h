@@ -1,0 +1,127 @@
+// The classroom sandbox: a lesson's frame with everything that drives it around it. A menu bar
+// (lessons, simulation settings, view), the transport bar (play, step, speed, the recorded
+// run), sliders that also take typed values, the mouse's hand in the world, keyboard
+// shortcuts and a help panel. Immediate mode: every panel reads the running lesson and acts
+// on it through Playback; nothing here keeps a copy of the lesson's state.
+//
+// It knows nothing of windows: frame() runs between ImGui::NewFrame() and ImGui::Render() with
+// input in ImGui's io, so the GLFW window and the tests (EGL, scripted input) run the same code.
+#pragma once
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ui/playback.h"
+#include "ui/settings.h"
+#include "ui/theme.h"
+
+namespace frictionlab::ui {
+
+struct SandboxOptions {
+  std::string lesson;                               // the script's path
+  std::map<std::string, std::string> overrides;     // --set
+  StepSettings settings;                            // --hz, --substeps, --friction
+  std::vector<std::string> lock;                    // --lock: the only controls shown; empty: all
+  WindowSettings window;                            // as remembered
+  std::string output_folder = ".";                  // screenshots and history exports
+};
+
+// The names --lock takes besides a lesson's parameters.
+inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
+
+class Sandbox {
+ public:
+  // Opens the lesson; a script that fails to build opens the first built-in lesson instead,
+  // with the script's error shown and its file watched until it builds. Throws InvalidInput
+  // when --lock names something the lesson does not have.
+  explicit Sandbox(SandboxOptions options);
+
+  // The size the host should prepare fonts at for a display of this size.
+  float ui_scale(ImVec2 display) const;
+  const WindowSettings& window_settings() const { return window_; }
+  WindowSettings& window_settings() { return window_; }
+
+  // One display frame: the keys and mouse in ImGui's io, `wall_seconds` of real time passing,
+  // then the whole window built.
+  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds);
+
+  Playback& playback() { return *playback_; }
+  const Playback& playback() const { return *playback_; }
+
+  // Requests the host carries out after the frame is drawn, each taken once.
+  std::optional<std::string> take_screenshot_request();  // the path to save the window to
+  void screenshot_done(const std::string& path, const std::string& error);
+  bool take_full_screen_toggle();
+  bool quit_requested() const { return quit_; }
+  // What the status line says now (saved files, failures to save).
+  const std::string& status() const { return status_; }
+
+  // Opens another lesson (a built-in name or a script's path). On failure the current lesson
+  // keeps running and the message is returned (also shown in the window); "" on success.
+  std::string open(const std::string& name_or_path);
+  // Writes the record (time and every probe, one row per frame) as CSV into the output
+  // folder; returns the path, or throws std::runtime_error.
+  std::string export_history();
+
+  // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
+  // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
+  std::optional<ImRect> control(const std::string& name) const;
+  bool shown(const std::string& control_name) const;  // --lock
+  // The world view's camera in the last frame: where the mouse's hand finds bodies.
+  const Camera& world_camera() const { return camera_; }
+  // The message beside a control whose value was refused; empty when there is none.
+  std::string control_error(const std::string& name) const {
+    const auto found = control_errors_.find(name);
+    return found == control_errors_.end() ? "" : found->second;
+  }
+
+ private:
+  void handle_keys();
+  void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
+  void menu_bar();
+  void transport_bar(ImVec2 corner, ImVec2 size);
+  void parameters_panel(ImVec2 corner, ImVec2 size);
+  float parameters_height() const;
+  void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);
+  void preset_row(const lessons::Parameter& mu_s);
+  void messages(ImVec2 corner, float width);
+  void help_panel();
+  void open_script_popup();
+  void set_value(const std::string& name, const std::string& text);
+  void change_settings(const StepSettings& settings);
+  void try_failed_script(double wall_seconds);
+  std::string unused_path(const std::string& stem, const std::string& extension) const;
+
+  std::unique_ptr<Playback> playback_;
+  WindowSettings window_;
+  std::set<std::string> lock_;
+  std::string output_folder_;
+  const Fonts* fonts_ = nullptr;
+  Camera camera_;
+
+  // Interaction state only: what is being dragged, typed or asked for.
+  std::map<std::string, ImRect> controls_;
+  std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
+  std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
+  std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
+  std::optional<std::string> screenshot_request_;
+  bool full_screen_toggle_ = false;
+  bool quit_ = false;
+  bool open_popup_ = false;
+  char open_path_[512] = {};
+  std::string open_error_;
+  std::string status_;
+  // A script named on the command line that did not build: shown and watched until it does.
+  std::string failed_script_, failed_error_;
+  double since_failed_check_ = 0.0;
+  long long failed_stamp_ = -1;
+};
+
+}  // namespace frictionlab::ui

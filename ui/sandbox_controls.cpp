@@ -1,0 +1,270 @@
+// The sandbox's controls: the parameters as sliders with a box for typed values and a reset,
+// material presets for a friction pair, and the transport bar along the bottom.
+#define IMGUI_DEFINE_MATH_OPERATORS
+#include <cfloat>
+#include <charconv>
+#include <cstdio>
+
+#include "physics/materials.h"
+#include "ui/sandbox.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string exact_text(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+// "μs" for a pair's coefficient, the parameter's own name otherwise.
+std::string control_label(const lessons::Parameter& parameter) {
+  if (parameter.coefficient == "mu_s") return "\u03bcs static";
+  if (parameter.coefficient == "mu_k") return "\u03bck kinetic";
+  if (parameter.coefficient == "c") return "c viscous";
+  if (parameter.coefficient == "b") return "b quadratic";
+  return parameter.name;
+}
+
+struct Preset {
+  std::string label;
+  FrictionPair values;
+};
+
+// The seed articles' pairs, as the presets table has them.
+const std::vector<Preset>& presets() {
+  static const std::vector<Preset> list = [] {
+    std::vector<Preset> found;
+    const PairTable table = preset_table();
+    for (int a = 0; a < table.material_count(); ++a) {
+      for (int b = a; b < table.material_count(); ++b) {
+        if (!table.has_pair(a, b)) continue;
+        const FrictionPair& pair = table.pair(a, b);
+        char label[160];
+        std::snprintf(label, sizeof label, "%s on %s: \u03bcs %.2f, \u03bck %.2f", table.material(a).name.c_str(),
+                      table.material(b).name.c_str(), pair.mu_s, pair.mu_k);
+        found.push_back({label, pair});
+      }
+    }
+    return found;
+  }();
+  return list;
+}
+
+void remember_item(std::map<std::string, ImRect>& controls, const std::string& name) {
+  controls[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+}
+
+}  // namespace
+
+// Each row: the name, the slider, a box for a typed value, and a reset; a friction pair's
+// rows come under a heading with its material presets.
+struct ControlColumns {
+  float slider, value, reset, end;
+  static ControlColumns of(float width, float scale) {
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    ControlColumns columns;
+    columns.end = width;
+    columns.reset = width - ImGui::GetFrameHeight();
+    columns.value = columns.reset - spacing - 72.0f * scale;
+    columns.slider = std::min(0.3f * width, 120.0f * scale);
+    return columns;
+  }
+};
+
+float Sandbox::parameters_height() const {
+  int rows = 0;
+  std::string last_pair;
+  for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
+    if (!shown(parameter.name)) continue;
+    const std::string pair = parameter.material_a + " / " + parameter.material_b;
+    if (!parameter.coefficient.empty() && pair != last_pair) {
+      last_pair = pair;
+      ++rows;
+    }
+    rows += 1 + (control_errors_.count(parameter.name) ? 2 : 0);
+  }
+  if (!lock_.empty()) ++rows;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing();
+}
+
+void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size) {
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+  const std::string title = lock_.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
+  if (ImGui::Begin(title.c_str(), nullptr, flags)) {
+    const ControlColumns columns = ControlColumns::of(ImGui::GetContentRegionAvail().x, fonts_->scale);
+    std::string last_pair;
+    for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
+      if (!shown(parameter.name)) continue;
+      const std::string pair = parameter.material_a + " on " + parameter.material_b;
+      if (!parameter.coefficient.empty() && pair != last_pair) {
+        last_pair = pair;
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextDisabled("%s", pair.c_str());
+        if (parameter.coefficient == "mu_s") {
+          ImGui::SameLine();
+          ImGui::SetNextItemWidth(-FLT_MIN);
+          preset_row(parameter);
+        }
+      }
+      ImGui::PushID(parameter.name.c_str());
+      parameter_row(parameter, columns.slider, columns.value, columns.reset);
+      ImGui::PopID();
+    }
+    if (!lock_.empty()) ImGui::TextDisabled("Only the controls the teacher chose are shown.");
+  }
+  ImGui::End();
+}
+
+void Sandbox::preset_row(const lessons::Parameter& mu_s) {
+  const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
+  const std::string mu_k = prefix + "mu_k";
+  if (!shown(mu_k)) {
+    ImGui::NewLine();
+    return;
+  }
+  ImGui::PushID(mu_s.name.c_str());
+  if (ImGui::BeginCombo("##preset", "material presets (seed tables)...")) {
+    for (const Preset& preset : presets()) {
+      if (ImGui::Selectable(preset.label.c_str())) {
+        // mu_k first when it falls, so the pair never passes through mu_k > mu_s on the way.
+        const bool falling = preset.values.mu_k < playback_->lesson().parameter(mu_k).value;
+        const std::pair<std::string, std::string> s_value{mu_s.name, exact_text(preset.values.mu_s)};
+        const std::pair<std::string, std::string> k_value{mu_k, exact_text(preset.values.mu_k)};
+        pending_values_.push_back(falling ? k_value : s_value);
+        pending_values_.push_back(falling ? s_value : k_value);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  remember_item(controls_, mu_s.name + " presets");
+  ImGui::PopID();
+}
+
+void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x) {
+  const std::string& name = parameter.name;
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(control_label(parameter).c_str());
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
+                      exact_text(parameter.min).c_str(), exact_text(parameter.max).c_str(),
+                      parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
+                      exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
+  }
+
+  ImGui::SameLine(slider_x);
+  if (parameter.is_choice()) {
+    // A choice has no number to type: its list takes the box's place too.
+    ImGui::SetNextItemWidth(reset_x - spacing - slider_x);
+    const std::string& chosen = parameter.choices[static_cast<std::size_t>(parameter.value)];
+    if (ImGui::BeginCombo("##choice", chosen.c_str())) {
+      for (const std::string& choice : parameter.choices) {
+        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) pending_values_.push_back({name, choice});
+      }
+      ImGui::EndCombo();
+    }
+    remember_item(controls_, name + " slider");
+  } else {
+    ImGui::SetNextItemWidth(value_x - spacing - slider_x);
+    const bool sliding_this = sliding_ && sliding_->first == name;
+    double value = sliding_this ? sliding_->second : parameter.value;
+    const std::string format = "%.3g" + (parameter.unit.empty() ? "" : " " + parameter.unit);
+    // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
+    const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
+    const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
+                                           format.c_str(), wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+    remember_item(controls_, name + " slider");
+    if (moved) {
+      // A value the scene is built from restarts the lesson: wait until the slider is let go.
+      if (parameter.structural) {
+        sliding_ = {name, value};
+      } else {
+        pending_values_.push_back({name, exact_text(value)});
+      }
+    }
+    if (ImGui::IsItemDeactivated() && sliding_ && sliding_->first == name) {
+      pending_values_.push_back({name, exact_text(sliding_->second)});
+      sliding_.reset();
+    }
+    ImGui::SameLine(value_x);
+    ImGui::SetNextItemWidth(reset_x - spacing - value_x);
+    char typed[64];
+    std::snprintf(typed, sizeof typed, "%s", parameter_text(parameter).c_str());
+    if (ImGui::InputText("##value", typed, sizeof typed,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+      pending_values_.push_back({name, typed});
+    }
+    remember_item(controls_, name + " value");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
+  }
+
+  ImGui::SameLine(reset_x);
+  ImGui::BeginDisabled(parameter.value == parameter.default_value);
+  if (ImGui::Button("\u21ba", ImVec2(ImGui::GetFrameHeight(), 0.0f))) {
+    const std::string back = parameter.is_choice() ? parameter.choices[static_cast<std::size_t>(parameter.default_value)]
+                                                   : exact_text(parameter.default_value);
+    pending_values_.push_back({name, back});
+  }
+  ImGui::EndDisabled();
+  remember_item(controls_, name + " reset");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Back to the script's value, %s", exact_text(parameter.default_value).c_str());
+  }
+
+  if (const auto error = control_errors_.find(name); error != control_errors_.end()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", error->second.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
+  const float s = fonts_->scale;
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  if (ImGui::Begin("###transport", nullptr, flags)) {
+    const float button = 80.0f * s;
+    if (ImGui::Button(playback_->playing() ? "Pause" : "Play", ImVec2(button, 0.0f))) playback_->toggle();
+    remember_item(controls_, "play");
+    ImGui::SameLine();
+    if (ImGui::Button("Step", ImVec2(button, 0.0f))) playback_->step_once();
+    remember_item(controls_, "step");
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", ImVec2(button, 0.0f))) playback_->reset();
+    remember_item(controls_, "reset");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150.0f * s);
+    float speed = static_cast<float>(playback_->speed());
+    if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
+                           "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
+      playback_->set_speed(speed);
+      window_.speed = playback_->speed();
+    }
+    remember_item(controls_, "speed");
+    ImGui::SameLine();
+    const Scene& scene = playback_->lesson().scene();
+    const std::string said = playback_->behind() ? "running slower than asked  " + status_ : status_;
+    const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.45f * size.x) + 8.0f * s;
+    ImGui::SetNextItemWidth(std::max(100.0f * s, ImGui::GetContentRegionAvail().x - said_width));
+    double t = scene.time();
+    const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());
+    char format[64];
+    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback_->recorded_until());
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) playback_->scrub_to(t);
+    remember_item(controls_, "scrub");
+    if (!said.empty()) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%s", said.c_str());
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,122 @@
+#include "ui/window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/glcorearb.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "ui/headless.h"
+#include "ui/image.h"
+#include "ui/imgui_host.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string glfw_error;
+
+void remember_error(int /*code*/, const char* description) { glfw_error = description ? description : "unknown"; }
+
+// GLFW's own lifetime: initialised once per window, terminated whatever happens.
+struct Glfw {
+  Glfw() {
+    glfwSetErrorCallback(remember_error);
+    if (glfwInit() == GLFW_FALSE) throw NoDisplay("no display to open a window on (" + glfw_error + ")");
+  }
+  ~Glfw() { glfwTerminate(); }
+};
+
+struct WindowDeleter {
+  void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
+};
+
+}  // namespace
+
+void run_window(Sandbox& sandbox, const WindowRun& run) {
+  Glfw glfw;
+  WindowSettings& settings = sandbox.window_settings();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  std::unique_ptr<GLFWwindow, WindowDeleter> window(
+      glfwCreateWindow(settings.width, settings.height, "FrictionLab", nullptr, nullptr));
+  if (!window) throw NoDisplay("the display would not open an OpenGL 3.3 window (" + glfw_error + ")");
+  glfwMakeContextCurrent(window.get());
+  glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
+
+  ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
+  struct GlfwInput {
+    ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
+  } input;
+
+  if (run.at) sandbox.playback().run_to(*run.at);
+  int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
+  bool full_screen = false;
+  int windowed[4] = {0, 0, settings.width, settings.height};
+  double last = glfwGetTime();
+  while (!glfwWindowShouldClose(window.get()) && !sandbox.quit_requested()) {
+    glfwPollEvents();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window.get(), &width, &height);
+    const double now = glfwGetTime();
+    // Minimised: nothing to draw; wait without spinning, and let no time pile up.
+    if (width <= 0 || height <= 0) {
+      glfwWaitEventsTimeout(0.1);
+      last = glfwGetTime();
+      continue;
+    }
+    // A stall (a debugger, a suspended laptop) must not ask the lesson for minutes at once.
+    const double wall = run.screenshot.empty() ? std::clamp(now - last, 0.0, 0.25) : 0.0;
+    last = now;
+
+    host.make_current();
+    const Fonts& fonts = host.prepare(sandbox.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+                                      settings.theme);
+    ImGui_ImplGlfw_NewFrame();
+    host.begin_frame();
+    sandbox.frame(fonts, ImGui::GetIO().DisplaySize, wall);
+    glViewport(0, 0, width, height);
+    const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
+    glClearColor(clear.x, clear.y, clear.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    host.end_frame();
+
+    std::optional<std::string> screenshot = sandbox.take_screenshot_request();
+    if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
+    if (screenshot) {
+      glReadBuffer(GL_BACK);
+      std::string error;
+      try {
+        write_png(read_framebuffer(width, height), *screenshot);
+      } catch (const std::exception& failure) {
+        error = failure.what();
+        if (frames_left == 0) throw;
+      }
+      sandbox.screenshot_done(*screenshot, error);
+      if (frames_left == 0) break;
+    }
+    if (sandbox.take_full_screen_toggle()) {
+      GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+      const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+      if (!full_screen && mode != nullptr) {
+        glfwGetWindowPos(window.get(), &windowed[0], &windowed[1]);
+        glfwGetWindowSize(window.get(), &windowed[2], &windowed[3]);
+        glfwSetWindowMonitor(window.get(), monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+        full_screen = true;
+      } else if (full_screen) {
+        glfwSetWindowMonitor(window.get(), nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
+        full_screen = false;
+      }
+    }
+    glfwSwapBuffers(window.get());
+  }
+
+  if (!full_screen) glfwGetWindowSize(window.get(), &settings.width, &settings.height);
+  if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
+}
+
+}  // namespace frictionlab::ui
