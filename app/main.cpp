@@ -1,16 +1,22 @@
-// frictionlab: the command line. Until the window exists, running it with no command runs the
-// first lesson headlessly and prints its theory-against-simulation table.
+// frictionlab: the command line. With no command it opens the classroom window on a lesson.
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "app/modes.h"
+#include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
 
 namespace {
 
 const char* const usage =
-    "usage: frictionlab                          run the first lesson (spring_pull) and print its table\n"
+    "usage: frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N]\n"
+    "                   [--friction T] [--theme light|dark] [--projector] [--at S --screenshot FILE.png]\n"
+    "                                            the classroom window on a lesson (the first one if none is\n"
+    "                                            named); --lock shows only the named controls; --at and\n"
+    "                                            --screenshot save the window at that time and close it.\n"
+    "                                            Without a display it draws the lesson to a PNG instead.\n"
     "       frictionlab list                     the built-in lessons with their titles\n"
     "       frictionlab run LESSON [--duration S] [--hz N] [--substeps N]\n"
     "                       [--friction stick-slip|threshold|regularized|box2d]\n"
@@ -28,8 +34,16 @@ const char* const usage =
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) return frictionlab::run_lesson({"spring_pull"}, std::cout);
-    const std::string command = args[0];
+    const std::string command = args.empty() ? "" : args[0];
+    static const char* const commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help"};
+    // Anything but a command is a lesson (a name or a .lua file) or the window's options.
+    const bool a_command = std::find(std::begin(commands), std::end(commands), command) != std::end(commands);
+    const bool looks_like_lesson = command.empty() || command.rfind("--", 0) == 0 ||
+                                   command.find('/') != std::string::npos || command.find(".lua") != std::string::npos ||
+                                   std::find(frictionlab::lessons::builtin_lessons().begin(),
+                                             frictionlab::lessons::builtin_lessons().end(),
+                                             command) != frictionlab::lessons::builtin_lessons().end();
+    if (!a_command && looks_like_lesson) return frictionlab::run_window_mode(args, std::cout);
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "demo") {
       if (!rest.empty()) throw frictionlab::InvalidInput("demo takes no options, got '" + rest[0] + "'; usage: frictionlab demo");
@@ -44,7 +58,7 @@ int main(int argc, char** argv) {
       std::cout << usage;
       return 0;
     }
-    std::cerr << "frictionlab: unknown command '" << command << "'; commands: list, run, check, render, demo, bench, help\n";
+    std::cerr << "frictionlab: unknown command '" << command << "'; commands: list, run, check, render, demo, bench, help; or a lesson to open in the window: spring_pull, incline, tipping_box, or a .lua file\n";
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';

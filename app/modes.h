@@ -14,5 +14,6 @@ int run_list(const std::vector<std::string>& args, std::ostream& out);
 int run_lesson(const std::vector<std::string>& args, std::ostream& out);   // frictionlab run
 int run_check(const std::vector<std::string>& args, std::ostream& out);
 int run_render(const std::vector<std::string>& args, std::ostream& out);  // frictionlab render
+int run_window_mode(const std::vector<std::string>& args, std::ostream& out);  // frictionlab [LESSON]
 
 }  // namespace frictionlab

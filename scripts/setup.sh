@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what FrictionLab needs from Debian 12's packages, then configures and builds it.
 #   scripts/setup.sh [BUILD_DIR] [extra CMake options...]
-# FRICTIONLAB_TARGET names one target to build instead of everything.
+# FRICTIONLAB_TARGET names one target to build instead of everything; FRICTIONLAB_TESTS=1 also
+# installs what the test suite needs (Xvfb, to open a real window where there is no display).
 # Safe to run again: packages already present are not fetched, builds are incremental.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +15,10 @@ packages=(build-essential cmake pkg-config libbox2d-dev libgtest-dev liblua5.4-d
   libimgui-dev libstb-dev fonts-dejavu-core
   # Headless OpenGL through glvnd and Mesa's llvmpipe (libgl1-mesa-dri): no display, no GPU.
   # ImGui's OpenGL 3 renderer loads libGL.so.1 (libgl1) itself.
-  libegl-dev libopengl-dev libgl-dev libgl1 libegl-mesa0 libgl1-mesa-dri)
+  libegl-dev libopengl-dev libgl-dev libgl1 libegl-mesa0 libgl1-mesa-dri
+  # The classroom window: GLFW 3.3 on X11, its OpenGL through GLX (Mesa's libglx-mesa0).
+  libglfw3-dev libglx-mesa0)
+if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(xvfb xauth); fi
 
 missing=()
 for package in "${packages[@]}"; do

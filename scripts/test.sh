@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-scripts/setup.sh build-test -DFRICTIONLAB_WERROR=ON
+FRICTIONLAB_TESTS=1 scripts/setup.sh build-test -DFRICTIONLAB_WERROR=ON
 ctest --test-dir build-test --output-on-failure --parallel "$(nproc)"
 
 scripts/setup.sh build-sanitize -DFRICTIONLAB_WERROR=ON -DFRICTIONLAB_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -1,0 +1,152 @@
+// frictionlab [LESSON]: the classroom window. Without a display it says so and draws the lesson
+// to a PNG instead, so the main command always shows something.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/modes.h"
+#include "app/options.h"
+#include "lessons/runtime/catalog.h"
+#include "ui/window.h"
+
+namespace frictionlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct WindowOptions {
+  std::string lesson;
+  std::vector<std::string> lock;
+  std::map<std::string, std::string> overrides;
+  StepSettings settings;
+  std::vector<std::string> step_arguments;  // --hz, --substeps, --friction as given, for the fallback picture
+  std::optional<ui::ThemeName> theme;
+  bool projector = false;
+  std::optional<double> at;
+  std::string screenshot;
+};
+
+std::vector<std::string> split_names(const std::string& option, const std::string& text) {
+  std::vector<std::string> names;
+  std::stringstream parts(text);
+  std::string part;
+  while (std::getline(parts, part, ',')) {
+    if (part.empty()) throw InvalidInput(option + " " + text + ": give names separated by commas, as in " + option + " mu_s,mu_k");
+    names.push_back(part);
+  }
+  if (names.empty() || text.back() == ',') {
+    throw InvalidInput(option + " " + text + ": give names separated by commas, as in " + option + " mu_s,mu_k");
+  }
+  return names;
+}
+
+WindowOptions parse_window(const std::vector<std::string>& args) {
+  WindowOptions options;
+  std::vector<std::string> seen;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      if (!options.lesson.empty()) throw InvalidInput("the window takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
+      options.lesson = arg;
+      continue;
+    }
+    if (arg == "--projector") {
+      options.projector = true;
+      continue;
+    }
+    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot"};
+    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
+      throw InvalidInput("unknown option '" + arg +
+                         "'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, --substeps N, "
+                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png "
+                         "(commands: list, run, check, render, demo, bench, help)");
+    }
+    if (i + 1 >= args.size()) throw InvalidInput(arg + " needs a value; see frictionlab help");
+    if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) throw InvalidInput(arg + " given twice");
+    seen.push_back(arg);
+    const std::string& value = args[++i];
+    if (arg == "--lock") {
+      options.lock = split_names(arg, value);
+    } else if (arg == "--set") {
+      add_override(value, options.overrides);
+    } else if (arg == "--theme") {
+      try {
+        options.theme = ui::parse_theme(value);
+      } catch (const InvalidInput& error) {
+        throw InvalidInput("--theme " + value + ": " + error.what());
+      }
+    } else if (arg == "--at") {
+      options.at = option_number("--at", value, 0.0, 3600.0, false, " s");
+    } else if (arg == "--screenshot") {
+      const fs::path path(value);
+      if (path.extension() != ".png") throw InvalidInput("--screenshot " + value + ": screenshots are written as PNG; give a .png file");
+      if (!path.parent_path().empty() && !fs::is_directory(path.parent_path())) {
+        throw InvalidInput("--screenshot " + value + ": the folder " + path.parent_path().string() + " does not exist");
+      }
+      options.screenshot = value;
+    } else {
+      try {
+        step_option(arg, value, options.settings);
+      } catch (const InvalidInput& error) {
+        throw InvalidInput(arg == "--friction" ? "--friction " + value + ": " + error.what() : error.what());
+      }
+      options.step_arguments.insert(options.step_arguments.end(), {arg, value});
+    }
+  }
+  return options;
+}
+
+std::string time_text(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", t);
+  return text;
+}
+
+}  // namespace
+
+int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
+  const WindowOptions options = parse_window(args);
+  const std::string path = lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
+  // A screenshot run neither reads nor keeps the teacher's own settings unless asked to
+  // (XDG_CONFIG_HOME pointed at a folder made for it, as the README's screenshot script does).
+  const std::string folder = ui::settings_folder();
+  const std::string settings_path = folder.empty() ? "" : folder + "/settings.ini";
+  ui::SandboxOptions sandbox_options;
+  sandbox_options.lesson = path;
+  sandbox_options.overrides = options.overrides;
+  sandbox_options.settings = options.settings;
+  sandbox_options.lock = options.lock;
+  sandbox_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  if (options.theme) sandbox_options.window.theme = *options.theme;
+  if (options.projector) sandbox_options.window.projector = true;
+  ui::Sandbox sandbox(sandbox_options);
+
+  ui::WindowRun run;
+  run.at = options.at;
+  run.screenshot = options.screenshot;
+  if (options.screenshot.empty() && !folder.empty()) {
+    run.settings_path = settings_path;
+    run.imgui_ini = folder + "/imgui.ini";
+  }
+  try {
+    ui::run_window(sandbox, run);
+  } catch (const ui::NoDisplay& error) {
+    if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
+    // No window here (a server, CI, a remote shell): the same lesson as a picture instead.
+    const double at = options.at ? *options.at : 0.5 * sandbox.playback().readings().duration;
+    const std::string stem = fs::path(path).stem().string();
+    const std::string picture = fs::absolute("frictionlab_" + stem + "_t" + time_text(at) + ".png").string();
+    out << "frictionlab: " << error.what() << ", so no window; drawing " << stem << " at t = " << time_text(at)
+        << " s to a PNG instead (frictionlab render draws any moment):\n";
+    std::vector<std::string> render_args{path, "--at", time_text(at), "--out", picture};
+    for (const auto& [name, value] : options.overrides) render_args.insert(render_args.end(), {"--set", name + "=" + value});
+    render_args.insert(render_args.end(), options.step_arguments.begin(), options.step_arguments.end());
+    if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(ui::theme_name(*options.theme))});
+    return run_render(render_args, out);
+  }
+  return 0;
+}
+
+}  // namespace frictionlab
