@@ -1,0 +1,100 @@
+// frictionlab bench, the window's part: the CPU time one display frame of the classroom window
+// takes for each lesson at 60 frames a second (the lesson's steps for 1/60 s, then every
+// panel built), measured on the sandbox's own code on a headless context. Drawing the lists
+// is the GPU's job in a classroom; here llvmpipe does it on other threads, timed apart.
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/glcorearb.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+#include "app/bench.h"
+#include "app/table.h"
+#include "lessons/runtime/catalog.h"
+#include "ui/headless.h"
+#include "ui/imgui_host.h"
+#include "ui/sandbox.h"
+
+namespace frictionlab {
+namespace {
+
+double thread_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+double percentile(std::vector<double> values, double fraction) {
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1))];
+}
+
+}  // namespace
+
+std::string window_frame_speed(bool quick, std::ostream& out) {
+  std::unique_ptr<ui::HeadlessContext> gl;
+  try {
+    gl = std::make_unique<ui::HeadlessContext>();
+  } catch (const std::exception& error) {
+    out << "\nWindow frames: not measured, " << error.what() << '\n';
+    return "";
+  }
+  const ImVec2 display(1280.0f, 720.0f);
+  const int frames = quick ? 60 : 600;  // ten seconds at 60 frames a second
+  std::ostringstream csv;
+  csv << "lesson,hz,frames,physics_cpu_ms_median,physics_and_ui_cpu_ms_median,physics_and_ui_cpu_ms_p95,"
+         "physics_and_ui_cpu_ms_max,draw_ms_median\n";
+  std::vector<std::vector<std::string>> table{
+      {"lesson", "physics", "physics + UI", "95th percentile", "worst", "drawing (llvmpipe)"}};
+  for (const std::string& name : lessons::builtin_lessons()) {
+    ui::ImGuiHost host(nullptr);
+    gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
+    ui::SandboxOptions options;
+    options.lesson = lessons::resolve_lesson(name);
+    options.window.help = false;
+    ui::Sandbox sandbox(options);
+    // The lesson alone, the same frames, for the physics' share.
+    ui::Playback physics_only(options.lesson, {}, {});
+    physics_only.play();
+    std::vector<double> physics, whole, draw;
+    for (int f = 0; f < frames; ++f) {
+      // Past the lesson's run it pauses; a class watching keeps it going.
+      if (!sandbox.playback().playing()) sandbox.playback().play();
+      if (!physics_only.playing()) physics_only.play();
+      double start = thread_seconds();
+      physics_only.advance(1.0 / 60.0);
+      physics.push_back(thread_seconds() - start);
+
+      const ui::Fonts& fonts = host.prepare(sandbox.ui_scale(display), sandbox.window_settings().theme);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = display;
+      io.DeltaTime = 1.0f / 60.0f;
+      start = thread_seconds();
+      host.begin_frame();
+      sandbox.frame(fonts, display, 1.0 / 60.0);
+      ImGui::Render();
+      whole.push_back(thread_seconds() - start);
+      const auto draw_start = std::chrono::steady_clock::now();
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      glFinish();
+      draw.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - draw_start).count());
+    }
+    const double hz = sandbox.playback().lesson().settings().hz;
+    csv << name << ',' << hz << ',' << frames << ',' << median(physics) * 1e3 << ',' << median(whole) * 1e3 << ','
+        << percentile(whole, 0.95) * 1e3 << ',' << percentile(whole, 1.0) * 1e3 << ',' << median(draw) * 1e3 << '\n';
+    const auto ms = [](double seconds) { return format_number(seconds * 1e3, 3) + " ms"; };
+    table.push_back({name, ms(median(physics)), ms(median(whole)), ms(percentile(whole, 0.95)),
+                     ms(percentile(whole, 1.0)), ms(median(draw))});
+  }
+  out << "\nOne display frame of the window, 1280x720 at 60 frames a second, the lesson playing at 1x (thread CPU "
+         "time, median of "
+      << frames << " frames; target 4 ms)\n";
+  print_table(out, table);
+  return csv.str();
+}
+
+}  // namespace frictionlab
