@@ -100,6 +100,17 @@ int Scene::check_material(const std::string& material, b2BodyType type) const {
   return id;
 }
 
+bool Scene::can_touch(const std::string& material_a, const std::string& material_b) const {
+  const int a = pairs_.find_material(material_a), b = pairs_.find_material(material_b);
+  const MaterialUse* use_a = nullptr;
+  const MaterialUse* use_b = nullptr;
+  for (const MaterialUse& use : materials_in_use_) {
+    if (use.id == a) use_a = &use;
+    if (use.id == b) use_b = &use;
+  }
+  return use_a != nullptr && use_b != nullptr && (use_a->on_dynamic || use_b->on_dynamic);
+}
+
 b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::string& material) {
   const int id = check_material(material, body->GetType());
   b2FixtureDef definition;

@@ -100,6 +100,9 @@ class Scene {
   b2Body* add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
                   float width, float height, float angle = 0.0f);
   b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
+  // Whether bodies of these two materials are in the scene where they can rub: both in use,
+  // one of them on a dynamic body (Box2D makes no contact between two fixed ones).
+  bool can_touch(const std::string& material_a, const std::string& material_b) const;
   const std::vector<std::pair<std::string, b2Body*>>& bodies() const { return bodies_; }
 
   // Add the bodies' fixtures first: the spring is refused when it is too stiff for the step

@@ -597,5 +597,25 @@ TEST(LessonSandbox, AnEndlessLoopWhileRunningStopsTheLessonNotTheProgram) {
   EXPECT_TRUE(lesson.failed());
 }
 
+// A lesson that takes a pair's values from the presets still has its sliders: every pair that
+// can rub gets its coefficients as parameters, and setting them changes the running scene.
+TEST(LessonRuntime, PresetPairsGetTheirCoefficientsAsParameters) {
+  ScriptFile script(with_heading(R"(ground { material = "ice" }
+box { "crate", material = "wood", width = 0.5, height = 0.5, x = 0, y = 0.25 }
+)"));
+  Lesson lesson(script.path(), {{"mu_k", "0.03"}});
+  // wood on ice, from the presets, is the lesson's only pair: its coefficients get plain names.
+  EXPECT_EQ(lesson.parameter("mu_s").value, 0.08);
+  EXPECT_EQ(lesson.parameter("mu_k").value, 0.03);  // --set applies
+  EXPECT_EQ(lesson.parameter("mu_s").material_a + "/" + lesson.parameter("mu_s").material_b, "ice/wood");  // in the order the scene met them
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_k, 0.03);
+  EXPECT_FALSE(lesson.parameter("mu_s").structural);
+  lesson.set("mu_s", "0.1");
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_s, 0.1);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_k, 0.03);
+  lesson.reset();  // the values set stay
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_s, 0.1);
+}
+
 }  // namespace
 }  // namespace frictionlab::lessons

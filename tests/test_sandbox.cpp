@@ -447,6 +447,57 @@ TEST(Sandbox, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriting
   EXPECT_EQ(path->rfind(driver.folder(), 0), 0u);
 }
 
+TEST(Sandbox, TheSimulationMenuSwitchesTreatmentRateAndSubStepsAndTheTheoryTableShowsIt) {
+  Driver driver("spring_pull");
+  driver.frame();
+  driver.playback().run_to(3.0);
+  const auto breakaway = [&] { return driver.playback().readings().expectations.at(0); };
+  ASSERT_TRUE(breakaway().measured_yet);
+  const double stick_slip_error = std::abs(breakaway().error());
+
+  const auto choose = [&](const std::string& item) {
+    // Right after a choice ImGui may open the menu on hover alone; a click then would close it.
+    driver.move_mouse(driver.control("Simulation menu").GetCenter());
+    if (!driver.sandbox().control(item)) driver.click("Simulation menu");
+    driver.click(item);
+  };
+  choose("treatment box2d");
+  EXPECT_EQ(driver.lesson().settings().treatment, FrictionTreatment::box2d);
+  EXPECT_EQ(driver.lesson().scene().frame(), 0);  // a new treatment starts the lesson again
+  driver.playback().run_to(3.0);
+  ASSERT_TRUE(breakaway().measured_yet);
+  // Box2D's one coefficient knows no static friction: the block breaks away at mu_k·m·g,
+  // 1.0 N early, where the listener's stick-slip treatment is within 0.01 N.
+  EXPECT_LT(stick_slip_error, 0.02);
+  EXPECT_NEAR(breakaway().error(), -(0.45 - 0.35) * 9.81, 0.05);
+
+  choose("hz 480");
+  choose("substeps 4");
+  EXPECT_EQ(driver.lesson().settings().hz, 480.0);
+  EXPECT_EQ(driver.lesson().settings().substeps, 4);
+  EXPECT_EQ(driver.lesson().settings().treatment, FrictionTreatment::box2d);  // kept
+  driver.key(GLFW_KEY_PERIOD);
+  EXPECT_DOUBLE_EQ(driver.lesson().scene().time(), 1.0 / 480.0);
+}
+
+TEST(Sandbox, AFunctionThatLoopsForeverWhileTheLessonRunsStopsItWithItsLine) {
+  ScriptFile script(lessons::with_heading(R"(ground { material = "wood" }
+box { "block", material = "wood", width = 0.2, height = 0.2, x = 0, y = 0.1 }
+every_step(function(t)
+  if t > 0.5 then
+    while true do end
+  end
+end)
+)"));
+  Driver driver(script.path());
+  for (int i = 0; i < 10 && driver.playback().problem().empty(); ++i) driver.frame(0.1);
+  EXPECT_EQ(driver.playback().problem().rfind(script.path() + ":6:", 0), 0u) << driver.playback().problem();
+  EXPECT_FALSE(driver.playback().playing());
+  driver.key(GLFW_KEY_R);  // back to t = 0: it runs again until the loop
+  EXPECT_EQ(driver.playback().problem(), "");
+  EXPECT_EQ(driver.lesson().scene().frame(), 0);
+}
+
 TEST(Sandbox, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_settings_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings settings;

@@ -159,17 +159,19 @@ std::string Playback::health() const {
     if (p.Length() > 1e5f) return "body '" + name + "' flew off beyond 100 km";
     if (v.Length() > 1e4f) return "body '" + name + "' moves faster than 10 km/s";
   }
-  // Energy from nowhere larger than every honest entry in the books: no integrator's error
-  // comes near that, a diverging one passes it within a few steps.
+  // Energy from nowhere ten times larger than every honest entry in the books. Integrators'
+  // errors stay far below that; Box2D pushing overlapping bodies apart at the start can give as
+  // much as the potential energy it adds (once); a diverging method passes it within steps.
   const EnergyLedger& books = scene.ledger();
   const double honest = std::max({1.0, std::abs(books.initial), std::abs(books.work_applied),
                                   std::abs(books.work_drivers), std::abs(books.potential), books.dissipated()});
   const double residual = books.residual();
   if (!std::isfinite(residual)) return "the energy is not a number";
-  if (residual > honest) {
+  if (residual > 10.0 * honest) {
     std::ostringstream text;
     text.precision(3);
-    text << "the energy ran away (" << residual << " J from nowhere, against " << honest << " J in the books)";
+    text << "the energy ran away (" << residual << " J from nowhere, against at most " << honest
+         << " J in any entry of the books)";
     return text.str();
   }
   return "";

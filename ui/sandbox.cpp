@@ -207,7 +207,9 @@ void Sandbox::menu_bar() {
     if (ImGui::MenuItem("Quit")) quit_ = true;
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Simulation")) {
+  const bool simulation = ImGui::BeginMenu("Simulation");
+  remember("Simulation menu");
+  if (simulation) {
     StepSettings settings = playback_->lesson().settings();
     const bool may_treat = shown("friction"), may_rate = shown("hz"), may_substep = shown("substeps");
     ImGui::TextDisabled("Friction treatment");
@@ -217,7 +219,9 @@ void Sandbox::menu_bar() {
         {FrictionTreatment::regularized, "regularized (smooth, creeps)"},
         {FrictionTreatment::box2d, "box2d (one coefficient)"}};
     for (const auto& [treatment, label] : treatments) {
-      if (ImGui::MenuItem(label, nullptr, settings.treatment == treatment, may_treat) && settings.treatment != treatment) {
+      const bool chosen = ImGui::MenuItem(label, nullptr, settings.treatment == treatment, may_treat);
+      remember("treatment " + std::string(treatment_name(treatment)));
+      if (chosen && settings.treatment != treatment) {
         settings.treatment = treatment;
         change_settings(settings);
       }
@@ -226,7 +230,9 @@ void Sandbox::menu_bar() {
     ImGui::TextDisabled("Step rate");
     for (const double hz : {30.0, 60.0, 120.0, 240.0, 480.0, 960.0, 1920.0}) {
       const std::string label = std::to_string(static_cast<int>(hz)) + " Hz";
-      if (ImGui::MenuItem(label.c_str(), nullptr, settings.hz == hz, may_rate) && settings.hz != hz) {
+      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.hz == hz, may_rate);
+      remember("hz " + label.substr(0, label.size() - 3));
+      if (chosen && settings.hz != hz) {
         settings.hz = hz;
         change_settings(settings);
       }
@@ -235,8 +241,9 @@ void Sandbox::menu_bar() {
     ImGui::TextDisabled("Sub-steps per frame");
     for (const int substeps : {1, 2, 4, 8, 16}) {
       const std::string label = std::to_string(substeps);
-      if (ImGui::MenuItem(label.c_str(), nullptr, settings.substeps == substeps, may_substep) &&
-          settings.substeps != substeps) {
+      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.substeps == substeps, may_substep);
+      remember("substeps " + label);
+      if (chosen && settings.substeps != substeps) {
         settings.substeps = substeps;
         change_settings(settings);
       }

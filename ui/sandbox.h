@@ -89,6 +89,7 @@ class Sandbox {
   void transport_bar(ImVec2 corner, ImVec2 size);
   void parameters_panel(ImVec2 corner, ImVec2 size);
   float parameters_height() const;
+  void remember(const std::string& name);  // the last item's place, under `name`
   void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);
   void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);

@@ -51,10 +51,6 @@ const std::vector<Preset>& presets() {
   return list;
 }
 
-void remember_item(std::map<std::string, ImRect>& controls, const std::string& name) {
-  controls[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-}
-
 }  // namespace
 
 // Each row: the name, the slider, a box for a typed value, and a reset; a friction pair's
@@ -87,6 +83,10 @@ float Sandbox::parameters_height() const {
   if (!lock_.empty()) ++rows;
   const ImGuiStyle& style = ImGui::GetStyle();
   return ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing();
+}
+
+void Sandbox::remember(const std::string& name) {
+  controls_[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
 void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size) {
@@ -141,7 +141,7 @@ void Sandbox::preset_row(const lessons::Parameter& mu_s) {
     }
     ImGui::EndCombo();
   }
-  remember_item(controls_, mu_s.name + " presets");
+  remember(mu_s.name + " presets");
   ImGui::PopID();
 }
 
@@ -168,7 +168,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
       }
       ImGui::EndCombo();
     }
-    remember_item(controls_, name + " slider");
+    remember(name + " slider");
   } else {
     ImGui::SetNextItemWidth(value_x - spacing - slider_x);
     const bool sliding_this = sliding_ && sliding_->first == name;
@@ -178,7 +178,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
     const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
     const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
                                            format.c_str(), wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-    remember_item(controls_, name + " slider");
+    remember(name + " slider");
     if (moved) {
       // A value the scene is built from restarts the lesson: wait until the slider is let go.
       if (parameter.structural) {
@@ -199,7 +199,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
       pending_values_.push_back({name, typed});
     }
-    remember_item(controls_, name + " value");
+    remember(name + " value");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
   }
 
@@ -211,7 +211,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
     pending_values_.push_back({name, back});
   }
   ImGui::EndDisabled();
-  remember_item(controls_, name + " reset");
+  remember(name + " reset");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("Back to the script's value, %s", exact_text(parameter.default_value).c_str());
   }
@@ -232,13 +232,13 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
   if (ImGui::Begin("###transport", nullptr, flags)) {
     const float button = 80.0f * s;
     if (ImGui::Button(playback_->playing() ? "Pause" : "Play", ImVec2(button, 0.0f))) playback_->toggle();
-    remember_item(controls_, "play");
+    remember("play");
     ImGui::SameLine();
     if (ImGui::Button("Step", ImVec2(button, 0.0f))) playback_->step_once();
-    remember_item(controls_, "step");
+    remember("step");
     ImGui::SameLine();
     if (ImGui::Button("Reset", ImVec2(button, 0.0f))) playback_->reset();
-    remember_item(controls_, "reset");
+    remember("reset");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f * s);
     float speed = static_cast<float>(playback_->speed());
@@ -247,7 +247,7 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
       playback_->set_speed(speed);
       window_.speed = playback_->speed();
     }
-    remember_item(controls_, "speed");
+    remember("speed");
     ImGui::SameLine();
     const Scene& scene = playback_->lesson().scene();
     const std::string said = playback_->behind() ? "running slower than asked  " + status_ : status_;
@@ -258,7 +258,7 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     char format[64];
     std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback_->recorded_until());
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) playback_->scrub_to(t);
-    remember_item(controls_, "scrub");
+    remember("scrub");
     if (!said.empty()) {
       ImGui::SameLine();
       ImGui::TextDisabled("%s", said.c_str());

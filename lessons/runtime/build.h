@@ -154,6 +154,14 @@ void require_top_level(lua_State* state, const std::string& what);
 // other arguments than the runtime gives.
 void require_script_function(lua_State* state, int index, const std::string& what);
 
+// Declares a pair's μs, μk, c and b as parameters (named with `prefix`), applying --set values,
+// and returns the values the pair table gets.
+FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
+                                  const std::string& prefix, const std::string& declared_at);
+// After the script: a pair that can rub but that no pair{} declared (its values came from the
+// presets) gets its coefficients as parameters too, so every lesson has its sliders.
+void declare_preset_pairs(LessonBuild& build);
+
 // Reads a parameter's value from text: a number within its range, or one of its choices.
 // Throws InvalidInput naming the parameter and the range or the choices.
 double parse_parameter_value(const Parameter& parameter, const std::string& text);

@@ -191,6 +191,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
   next->sandbox.load(source, path_);
   next->sandbox.call(0, 0);
   next->building = false;
+  declare_preset_pairs(*next);
   if (!next->override_error.empty()) throw InvalidInput("--set " + next->override_error);
   for (auto given = next->overrides.begin(); given != next->overrides.end();) {
     if (next->find_parameter(given->first) != nullptr) {

@@ -187,6 +187,58 @@ constexpr Coefficient coefficients[] = {
     {"b", "N·s²/m²", 1000.0, "quadratic drag coefficient"},
 };
 
+}  // namespace
+
+FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
+                                  const std::string& prefix, const std::string& declared_at) {
+  double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
+  for (int i = 0; i < 4; ++i) {
+    const Coefficient& coefficient = coefficients[i];
+    Parameter declared;
+    declared.name = prefix + coefficient.key;
+    declared.unit = coefficient.unit;
+    declared.text = std::string(coefficient.words) + ", " + a + " on " + b;
+    declared.value = declared.default_value = *slots[i];
+    declared.min = 0.0;
+    declared.max = coefficient.max;
+    declared.coefficient = coefficient.key;
+    declared.material_a = a;
+    declared.material_b = b;
+    declared.declared_at = declared_at;
+    add_parameter(build, declared);
+    *slots[i] = build.parameters.back().value;
+  }
+  return values;
+}
+
+void declare_preset_pairs(LessonBuild& build) {
+  PairTable& table = build.scene->pairs();
+  bool first_pair = true;
+  for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
+  for (int a = 0; a < table.material_count(); ++a) {
+    for (int b = a; b < table.material_count(); ++b) {
+      const std::string& name_a = table.material(a).name;
+      const std::string& name_b = table.material(b).name;
+      bool declared = false;
+      for (const Parameter& p : build.parameters) {
+        declared = declared || (p.material_a == name_a && p.material_b == name_b) ||
+                   (p.material_a == name_b && p.material_b == name_a);
+      }
+      if (declared || !table.has_pair(a, b) || !build.scene->can_touch(name_a, name_b)) {
+        continue;
+      }
+      const std::string prefix = first_pair ? "" : name_a + "_" + name_b + ".";
+      first_pair = false;
+      const FrictionPair values = declare_coefficients(build, name_a, name_b, table.pair(a, b), prefix,
+                                                       build.chunk_name + ": the preset values for " + name_a +
+                                                           " on " + name_b);
+      for (std::string& warning : table.set_pair(name_a, name_b, values)) build.warnings.push_back(warning);
+    }
+  }
+}
+
+namespace {
+
 int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
@@ -221,28 +273,15 @@ int pair(lua_State* state) {
       }
       values = build.presets.pair(a, b);
     }
-    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     bool first_pair = true;
     for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
     const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
+    // The same range as its slider, so the default a script gives can also be set back.
+    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     for (int i = 0; i < 4; ++i) {
-      const Coefficient& coefficient = coefficients[i];
-      // The same range as its slider, so the default a script gives can also be set back.
-      *slots[i] = fields.number_in(coefficient.key, coefficient.unit, *slots[i], 0.0, coefficient.max);
-      Parameter declared;
-      declared.name = prefix + coefficient.key;
-      declared.unit = coefficient.unit;
-      declared.text = std::string(coefficient.words) + ", " + names[0] + " on " + names[1];
-      declared.value = declared.default_value = *slots[i];
-      declared.min = 0.0;
-      declared.max = coefficient.max;
-      declared.coefficient = coefficient.key;
-      declared.material_a = names[0];
-      declared.material_b = names[1];
-      declared.declared_at = caller(state);
-      add_parameter(build, declared);
-      *slots[i] = build.parameters.back().value;
+      *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
+    values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state));
     for (std::string& warning : build.scene->pairs().set_pair(names[0], names[1], values)) {
       build.warnings.push_back(caller(state) + ": " + warning);
     }
