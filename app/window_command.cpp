@@ -9,6 +9,7 @@
 #include "app/modes.h"
 #include "app/options.h"
 #include "lessons/runtime/catalog.h"
+#include "ui/image.h"
 #include "ui/window.h"
 
 namespace frictionlab {
@@ -100,7 +101,7 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
 
 std::string time_text(double t) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g", t);
+  std::snprintf(text, sizeof text, "%.2f", t);
   return text;
 }
 
@@ -109,8 +110,8 @@ std::string time_text(double t) {
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   const WindowOptions options = parse_window(args);
   const std::string path = lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
-  // A screenshot run neither reads nor keeps the teacher's own settings unless asked to
-  // (XDG_CONFIG_HOME pointed at a folder made for it, as the README's screenshot script does).
+  // The window's settings come from the settings folder; a screenshot run reads them (the
+  // README's screenshot script gives each shot a folder of its own) but never writes them.
   const std::string folder = ui::settings_folder();
   const std::string settings_path = folder.empty() ? "" : folder + "/settings.ini";
   ui::SandboxOptions sandbox_options;
@@ -134,10 +135,13 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     ui::run_window(sandbox, run);
   } catch (const ui::NoDisplay& error) {
     if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
+    // A script that does not build has no picture to give: its mistake is the answer.
+    if (!sandbox.failed_script().empty()) throw InvalidInput(sandbox.failed_error());
     // No window here (a server, CI, a remote shell): the same lesson as a picture instead.
     const double at = options.at ? *options.at : 0.5 * sandbox.playback().readings().duration;
     const std::string stem = fs::path(path).stem().string();
-    const std::string picture = fs::absolute("frictionlab_" + stem + "_t" + time_text(at) + ".png").string();
+    const std::string picture =
+        ui::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
     out << "frictionlab: " << error.what() << ", so no window; drawing " << stem << " at t = " << time_text(at)
         << " s to a PNG instead (frictionlab render draws any moment):\n";
     std::vector<std::string> render_args{path, "--at", time_text(at), "--out", picture};

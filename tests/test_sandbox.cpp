@@ -33,10 +33,13 @@ std::string read_file(const std::string& path) {
 // The sandbox on a headless context, and a user's hands on its io.
 class Driver {
  public:
-  explicit Driver(const std::string& lesson, std::vector<std::string> lock = {}) : host_(nullptr) {
+  explicit Driver(const std::string& lesson, std::vector<std::string> lock = {},
+                  std::map<std::string, std::string> overrides = {})
+      : host_(nullptr) {
     SandboxOptions options;
     options.lesson = lessons::resolve_lesson(lesson);
     options.lock = std::move(lock);
+    options.overrides = std::move(overrides);
     options.window.help = false;
     options.output_folder = folder_;
     std::filesystem::create_directories(folder_);
@@ -109,6 +112,12 @@ double first_slip_time(const Scene& scene) {
     if (scene.slipping()[i]) return scene.times()[i];
   }
   return -1.0;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
 TEST(Sandbox, MovingTheStaticSliderChangesThePairTableAndWhenTheBlockBreaksAway) {
@@ -224,6 +233,72 @@ TEST(Sandbox, GoingBackInTheRecordReplaysItExactlyWithTheChangesMadeOnTheWay) {
   EXPECT_NEAR(driver.playback().recorded_until(), 1.5, 1e-12);
 }
 
+TEST(Sandbox, ARecordedDragIsReplayedNotCutByTheIdleMouse) {
+  Driver driver("spring_pull");
+  driver.frame();
+  driver.key(GLFW_KEY_SPACE);
+  b2Body* block = driver.lesson().scene().body("block");
+  const ImVec2 held = driver.sandbox().world_camera().to_screen(block->GetPosition());
+  driver.move_mouse(held);
+  driver.mouse_button(true);
+  driver.key(GLFW_KEY_SPACE);
+  for (int i = 1; i <= 30; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x - 3.0f * static_cast<float>(i), held.y);
+    driver.frame(1.0 / 60.0);
+  }
+  driver.mouse_button(false);
+  driver.playback().run_to(1.5);
+  const b2Vec2 live = driver.lesson().scene().body("block")->GetPosition();
+  const double recorded = driver.playback().recorded_until();
+  ASSERT_NEAR(recorded, 1.5, 1e-9);
+
+  // Back into the drag: the record holds the block again, and the idle mouse leaves it be.
+  driver.playback().scrub_to(0.2);
+  EXPECT_NE(driver.lesson().scene().grabbed(), nullptr);
+  for (int i = 0; i < 3; ++i) driver.frame(0.0);
+  EXPECT_NEAR(driver.playback().recorded_until(), recorded, 1e-9);
+  // Played on from there, the run repeats itself exactly.
+  driver.playback().scrub_to(1.5);
+  EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().x, live.x);
+  EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().y, live.y);
+}
+
+TEST(Sandbox, AChangeAtTheEndOfAReplayedRecordKeepsTheChangesBeforeIt) {
+  Driver driver("spring_pull");
+  driver.frame();
+  driver.playback().run_to(1.0);
+  driver.playback().set_parameter("mu_s", "0.6");
+  driver.playback().scrub_to(0.5);
+  driver.playback().scrub_to(1.0);
+  EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.6);  // the moment as it was
+  driver.playback().set_parameter("c", "1");
+  driver.playback().run_to(2.0);
+  const float live = driver.lesson().scene().body("block")->GetPosition().x;
+  driver.playback().scrub_to(0.0);
+  driver.playback().scrub_to(2.0);
+  EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.6);
+  EXPECT_EQ(driver.lesson().parameter("c").value, 1.0);
+  EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().x, live);
+}
+
+TEST(Sandbox, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed) {
+  const std::string good = read_file(lessons::resolve_lesson("incline"));
+  ScriptFile script(replaced(good, "local angle = parameter {", "local angle = parameter"));
+  Driver driver(script.path(), {"angle"}, {{"angle", "20"}});
+  driver.frame();
+  EXPECT_EQ(driver.sandbox().failed_script(), script.path());
+  EXPECT_EQ(driver.sandbox().failed_error().rfind(script.path() + ":", 0), 0u) << driver.sandbox().failed_error();
+  EXPECT_NE(driver.lesson().path(), script.path());
+  ASSERT_TRUE(driver.sandbox().control("messages").has_value());
+  script.rewrite(good);
+  for (int i = 0; i < 3; ++i) driver.frame(0.15);
+  EXPECT_EQ(driver.lesson().path(), script.path());
+  EXPECT_EQ(driver.lesson().parameter("angle").value, 20.0);
+  driver.frame();
+  EXPECT_TRUE(driver.sandbox().control("angle slider").has_value());
+  EXPECT_FALSE(driver.sandbox().control("mass slider").has_value());
+}
+
 TEST(Sandbox, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
   Driver driver("spring_pull");
   driver.frame();
@@ -267,11 +342,6 @@ struct StudentCopy {
   }
 };
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? text : text.replace(at, from.size(), to);
-}
 
 TEST(Sandbox, SavingTheScriptReloadsTheLesson) {
   StudentCopy copy;
@@ -436,15 +506,25 @@ TEST(Sandbox, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriting
   long count = 0;
   for (std::string row; std::getline(rows, row);) ++count;
   EXPECT_EQ(count, driver.lesson().scene().frame());
-  // A second export at the same moment gets a new name.
+  // A second export at the same moment gets a new name; the first file stays.
   driver.key(GLFW_KEY_E, true);
-  EXPECT_NE(driver.sandbox().status(), said);
+  const std::string second = driver.sandbox().status();
+  ASSERT_EQ(second.rfind("History saved to ", 0), 0u) << second;
+  EXPECT_NE(second.substr(17), said.substr(17));
+  EXPECT_TRUE(std::filesystem::exists(said.substr(17)));
+  EXPECT_TRUE(std::filesystem::exists(second.substr(17)));
 
   driver.key(GLFW_KEY_S, true);
   const auto path = driver.sandbox().take_screenshot_request();
   ASSERT_TRUE(path.has_value());
   EXPECT_EQ(path->substr(path->size() - 4), ".png");
   EXPECT_EQ(path->rfind(driver.folder(), 0), 0u);
+  // A picture already there under that name is kept: the next one is numbered.
+  std::ofstream(*path) << "an earlier screenshot";
+  driver.key(GLFW_KEY_S, true);
+  const auto next = driver.sandbox().take_screenshot_request();
+  ASSERT_TRUE(next.has_value());
+  EXPECT_EQ(*next, path->substr(0, path->size() - 4) + "_2.png");
 }
 
 TEST(Sandbox, TheSimulationMenuSwitchesTreatmentRateAndSubStepsAndTheTheoryTableShowsIt) {

@@ -30,6 +30,17 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
   return encoded;
 }
 
+std::string unused_path(const std::string& folder, const std::string& stem, const std::string& extension) {
+  const std::filesystem::path where(folder);
+  std::filesystem::path path = where / (stem + extension);
+  std::error_code error;
+  for (int n = 2; std::filesystem::exists(path, error) || error; ++n) {
+    if (error) throw std::runtime_error(folder + ": cannot look into it (" + error.message() + ")");
+    path = where / (stem + "_" + std::to_string(n) + extension);
+  }
+  return path.string();
+}
+
 void write_whole_file(const std::string& path, const void* data, std::size_t size) {
   const std::string partial = path + ".partial";
   std::FILE* file = std::fopen(partial.c_str(), "wb");

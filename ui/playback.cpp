@@ -41,7 +41,9 @@ std::string parameter_text(const lessons::Parameter& parameter) {
 }
 
 Playback::Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings)
-    : lesson_(std::make_unique<lessons::Lesson>(path, std::move(overrides), settings)), file_stamp_(file_stamp(path)) {
+    : file_stamp_(file_stamp(path)) {
+  // The stamp is taken before the file is read: a save made while it builds is seen next time.
+  lesson_ = std::make_unique<lessons::Lesson>(path, std::move(overrides), settings);
   after_rebuild();
 }
 
@@ -121,8 +123,7 @@ void Playback::step_and_check() {
     playing_ = false;
     return;
   }
-  const long now = frame();
-  while (next_action_ < record_.size() && record_[next_action_].frame <= now) apply(record_[next_action_++]);
+  apply_due();
   try {
     lesson_->step();
   } catch (const InvalidInput& error) {
@@ -131,6 +132,9 @@ void Playback::step_and_check() {
     return;
   }
   recorded_frames_ = std::max(recorded_frames_, frame());
+  // What was done at this frame is done as soon as it is reached, as it was live: a moment
+  // shown after scrubbing is the moment as it was.
+  apply_due();
   if (std::string trouble = health(); !trouble.empty()) {
     playing_ = false;
     blown_ = true;
@@ -205,22 +209,32 @@ void Playback::scrub_to(double t) {
         lesson_->set(parameter.name, initial->second);
       }
     }
-    lesson_->reset();
+    try {
+      lesson_->reset();
+    } catch (const InvalidInput& error) {
+      problem_ = error.what();
+      return;
+    }
     framing_ = WorldFraming::of(lesson_->scene());
     next_action_ = 0;
     blown_ = false;
     problem_.clear();
+    apply_due();
   }
   while (frame() < target && !blown_ && !lesson_->failed()) step_and_check();
   pause();
   refresh_readings();
 }
 
+void Playback::apply_due() {
+  while (next_action_ < record_.size() && record_[next_action_].frame <= frame()) apply(record_[next_action_++]);
+}
+
 void Playback::record(Action action) {
   action.frame = frame();
   apply(action);  // a refused value throws here, before anything is recorded
   // A change made back in the record starts a new one from here: the old future is gone.
-  if (frame() < recorded_frames_) {
+  if (frame() < recorded_frames_ || next_action_ < record_.size()) {
     record_.erase(record_.begin() + static_cast<std::ptrdiff_t>(next_action_), record_.end());
     recorded_frames_ = frame();
   }
@@ -271,15 +285,14 @@ void Playback::release() {
 }
 
 bool Playback::reload() {
-  // The lesson goes on as it was: a student who saves while it plays sees the new one play.
-  const bool was_playing = playing_;
+  // Playing or paused, the lesson goes on as it was: a student who saves while it plays sees
+  // the new one play.
   if (!lesson_->reload()) {
     script_error_ = lesson_->last_error();
     return false;
   }
   script_error_.clear();
   after_rebuild();
-  playing_ = was_playing;
   notice_ = "Reloaded " + lesson_->path() + ".";
   return true;
 }

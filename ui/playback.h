@@ -91,6 +91,8 @@ class Playback {
   };
   void after_rebuild();
   void apply(const Action& action);
+  // Applies the record's actions made at or before the present frame and not yet applied.
+  void apply_due();
   void record(Action action);
   void step_and_check();
   std::string health() const;  // "" when the state is sound
@@ -106,8 +108,8 @@ class Playback {
   double speed_ = 1.0;
   double owed_ = 0.0;  // lesson seconds due but not yet stepped
   bool behind_ = false;
-  bool run_over_ = false;
-  bool blown_ = false;       // stays stopped until a reset or a rebuild  // the lesson's duration was reached once in this run
+  bool run_over_ = false;  // the lesson's duration was reached once in this run
+  bool blown_ = false;     // stays stopped until a reset or a rebuild
   double since_readings_ = 0.0;
   double since_file_check_ = 0.0;
   std::optional<std::pair<long long, long long>> file_stamp_;  // modification time (ns) and size

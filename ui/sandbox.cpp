@@ -31,28 +31,37 @@ std::string lesson_stem(const std::string& path) { return std::filesystem::path(
 }  // namespace
 
 Sandbox::Sandbox(SandboxOptions options)
-    : window_(options.window), lock_(options.lock.begin(), options.lock.end()), output_folder_(options.output_folder) {
+    : window_(options.window),
+      lock_(options.lock.begin(), options.lock.end()),
+      overrides_(options.overrides),
+      output_folder_(options.output_folder) {
+  const long long stamp = modified(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     playback_ = std::make_unique<Playback>(options.lesson, options.overrides, options.settings);
+    check_lock(playback_->lesson());
   } catch (const lessons::ScriptError& error) {
-    // A student's broken script: show why beside a working lesson, and open it once it builds.
+    // A student's broken script: show why beside a working lesson, and open it once it builds,
+    // with the --set values and the lock it was opened with.
     failed_script_ = options.lesson;
     failed_error_ = error.what();
-    failed_stamp_ = modified(failed_script_);
+    failed_stamp_ = stamp;
     playback_ = std::make_unique<Playback>(lessons::resolve_lesson(lessons::builtin_lessons().front()),
                                            std::map<std::string, std::string>{}, options.settings);
   }
   playback_->set_speed(window_.speed);
   playback_->play();  // a lesson opens running: what moves is what the class looks at first
+}
+
+void Sandbox::check_lock(const lessons::Lesson& lesson) const {
   for (const std::string& name : lock_) {
     bool known = false;
     for (const char* setting : lockable_settings) known = known || name == setting;
-    for (const lessons::Parameter& parameter : playback_->lesson().parameters()) known = known || name == parameter.name;
+    for (const lessons::Parameter& parameter : lesson.parameters()) known = known || name == parameter.name;
     if (!known) {
       std::string controls;
-      for (const lessons::Parameter& parameter : playback_->lesson().parameters()) controls += parameter.name + ", ";
-      throw InvalidInput("--lock " + name + ": " + playback_->lesson().path() +
-                         " has no control of that name; its controls: " + controls + "hz, substeps, friction");
+      for (const lessons::Parameter& parameter : lesson.parameters()) controls += parameter.name + ", ";
+      throw InvalidInput("--lock " + name + ": " + lesson.path() + " has no control of that name; its controls: " +
+                         controls + "hz, substeps, friction");
     }
   }
 }
@@ -119,14 +128,8 @@ void Sandbox::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;  // typing a value: the keys are the text's
   if (io.KeyCtrl) {
-    if (pressed(GLFW_KEY_S)) screenshot_request_ = unused_path("frictionlab_" + lesson_stem(playback_->lesson().path()), ".png");
-    if (pressed(GLFW_KEY_E)) {
-      try {
-        status_ = "History saved to " + export_history();
-      } catch (const std::exception& error) {
-        status_ = std::string("Could not save the history: ") + error.what();
-      }
-    }
+    if (pressed(GLFW_KEY_S)) request_screenshot();
+    if (pressed(GLFW_KEY_E)) save_history();
     return;
   }
   if (pressed(GLFW_KEY_SPACE)) playback_->toggle();
@@ -159,113 +162,35 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
       for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
         if (fixture->TestPoint(point)) {
           playback_->grab(name, body->GetLocalPoint(point), point);
+          hand_held_ = true;
           break;
         }
       }
-      if (scene.grabbed() != nullptr) break;
+      if (hand_held_) break;
     }
   }
-  if (b2Body* body = scene.grabbed()) {
+  // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves
+  // nor lets go of it. A rebuild or a step back takes the user's hand away.
+  if (scene.grabbed() == nullptr) hand_held_ = false;
+  if (hand_held_) {
     if (!io.MouseDown[ImGuiMouseButton_Left]) {
       playback_->release();
+      hand_held_ = false;
       return;
     }
     const b2Vec2 target = camera.to_world(io.MousePos);
     if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
-    // The hand: a line from the point held to the pointer, where it pulls towards.
+  }
+  if (b2Body* body = scene.grabbed()) {
+    // The hand: a line from the point held to where it pulls towards.
     const Theme& colours = theme(window_.theme);
     const b2Vec2 held = body->GetWorldPoint(scene.applied_forces().back().local_point);
+    const ImVec2 target = camera.to_screen(scene.grab_target());
     ImDrawList* draw = ImGui::GetForegroundDrawList();
-    draw->AddLine(camera.to_screen(held), io.MousePos, colours.hand, 2.0f * scale);
+    draw->AddLine(camera.to_screen(held), target, colours.hand, 2.0f * scale);
     draw->AddCircleFilled(camera.to_screen(held), 4.0f * scale, colours.hand);
-    draw->AddCircle(io.MousePos, 7.0f * scale, colours.hand, 0, 2.0f * scale);
+    draw->AddCircle(target, 7.0f * scale, colours.hand, 0, 2.0f * scale);
   }
-}
-
-void Sandbox::menu_bar() {
-  if (!ImGui::BeginMainMenuBar()) return;
-  if (ImGui::BeginMenu("Lesson")) {
-    for (const std::string& name : lessons::builtin_lessons()) {
-      const bool current = lesson_stem(playback_->lesson().path()) == name;
-      if (ImGui::MenuItem(name.c_str(), nullptr, current)) status_ = open(name);
-    }
-    ImGui::Separator();
-    if (ImGui::MenuItem("Open a script...")) open_popup_ = true;
-    if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
-    ImGui::Separator();
-    if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) {
-      screenshot_request_ = unused_path("frictionlab_" + lesson_stem(playback_->lesson().path()), ".png");
-    }
-    if (ImGui::MenuItem("Export the history (CSV)", "Ctrl+E")) {
-      try {
-        status_ = "History saved to " + export_history();
-      } catch (const std::exception& error) {
-        status_ = std::string("Could not save the history: ") + error.what();
-      }
-    }
-    ImGui::Separator();
-    if (ImGui::MenuItem("Quit")) quit_ = true;
-    ImGui::EndMenu();
-  }
-  const bool simulation = ImGui::BeginMenu("Simulation");
-  remember("Simulation menu");
-  if (simulation) {
-    StepSettings settings = playback_->lesson().settings();
-    const bool may_treat = shown("friction"), may_rate = shown("hz"), may_substep = shown("substeps");
-    ImGui::TextDisabled("Friction treatment");
-    const std::pair<FrictionTreatment, const char*> treatments[] = {
-        {FrictionTreatment::stick_slip, "stick-slip (converges to Coulomb)"},
-        {FrictionTreatment::threshold, "threshold (games' speed switch)"},
-        {FrictionTreatment::regularized, "regularized (smooth, creeps)"},
-        {FrictionTreatment::box2d, "box2d (one coefficient)"}};
-    for (const auto& [treatment, label] : treatments) {
-      const bool chosen = ImGui::MenuItem(label, nullptr, settings.treatment == treatment, may_treat);
-      remember("treatment " + std::string(treatment_name(treatment)));
-      if (chosen && settings.treatment != treatment) {
-        settings.treatment = treatment;
-        change_settings(settings);
-      }
-    }
-    ImGui::Separator();
-    ImGui::TextDisabled("Step rate");
-    for (const double hz : {30.0, 60.0, 120.0, 240.0, 480.0, 960.0, 1920.0}) {
-      const std::string label = std::to_string(static_cast<int>(hz)) + " Hz";
-      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.hz == hz, may_rate);
-      remember("hz " + label.substr(0, label.size() - 3));
-      if (chosen && settings.hz != hz) {
-        settings.hz = hz;
-        change_settings(settings);
-      }
-    }
-    ImGui::Separator();
-    ImGui::TextDisabled("Sub-steps per frame");
-    for (const int substeps : {1, 2, 4, 8, 16}) {
-      const std::string label = std::to_string(substeps);
-      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.substeps == substeps, may_substep);
-      remember("substeps " + label);
-      if (chosen && settings.substeps != substeps) {
-        settings.substeps = substeps;
-        change_settings(settings);
-      }
-    }
-    ImGui::Separator();
-    if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("View")) {
-    bool dark = window_.theme == ThemeName::dark;
-    if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;
-    ImGui::MenuItem("Projector mode", "P", &window_.projector);
-    if (ImGui::MenuItem("Full screen", "F11")) full_screen_toggle_ = true;
-    ImGui::MenuItem("Help", "F1", &window_.help);
-    ImGui::EndMenu();
-  }
-  // Which file is running, so a student knows which script to edit.
-  const std::string& path = playback_->lesson().path();
-  const float width = ImGui::CalcTextSize(path.c_str()).x;
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - width - 16.0f));
-  ImGui::TextDisabled("%s", path.c_str());
-  ImGui::EndMainMenuBar();
 }
 
 void Sandbox::change_settings(const StepSettings& settings) {
@@ -316,98 +241,20 @@ void Sandbox::messages(ImVec2 corner, float width) {
   ImGui::End();
 }
 
-void Sandbox::help_panel() {
-  if (!window_.help) return;
-  const float s = fonts_->scale;
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-                          ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Help (F1 shows and hides it)", &window_.help)) {
-    static const char* const keys[][2] = {
-        {"Space", "play / pause"},
-        {". (period)", "one step of the lesson (1/hz s), paused"},
-        {", (comma)", "one step back (replays the record)"},
-        {"R", "reset to t = 0, keeping the values set"},
-        {"F5", "reload the script from its file (saving it does too)"},
-        {"Ctrl+S", "screenshot of the window (PNG)"},
-        {"Ctrl+E", "export the history (CSV)"},
-        {"P", "projector mode: larger text, thicker lines"},
-        {"D", "dark or light theme"},
-        {"F11", "full screen"},
-        {"F1", "this help"},
-    };
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
-      for (const auto& row : keys) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[0]);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[1]);
-      }
-      ImGui::EndTable();
-    }
-    ImGui::Separator();
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(
-        "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. Drag a slider, or "
-        "type an exact value in the box beside it and press Enter; the arrow resets it to the script's value. "
-        "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
-        "until you change something.");
-    ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
-                            ". Settings are kept in " + settings_folder() + ".")
-                               .c_str());
-    ImGui::PopTextWrapPos();
-  }
-  ImGui::End();
-}
-
-void Sandbox::open_script_popup() {
-  if (open_popup_) {
-    ImGui::OpenPopup("Open a lesson script");
-    open_popup_ = false;
-    open_error_.clear();
-  }
-  const float s = fonts_->scale;
-  ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
-  if (!ImGui::BeginPopupModal("Open a lesson script", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::TextUnformatted("A .lua file (path from the folder FrictionLab was started in, or from /):");
-  ImGui::SetNextItemWidth(560.0f * s);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  bool go = ImGui::InputText("##path", open_path_, sizeof open_path_, ImGuiInputTextFlags_EnterReturnsTrue);
-  // Scripts in the current folder, one click each.
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(".", error)) {
-    if (entry.path().extension() != ".lua") continue;
-    const std::string name = entry.path().filename().string();
-    if (ImGui::Selectable(name.c_str())) {
-      std::snprintf(open_path_, sizeof open_path_, "%s", name.c_str());
-      go = true;
-    }
-  }
-  if (ImGui::Button("Open")) go = true;
-  ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-  if (go) {
-    open_error_ = open(open_path_);
-    if (open_error_.empty()) ImGui::CloseCurrentPopup();
-  }
-  if (!open_error_.empty()) {
-    ImGui::PushTextWrapPos(560.0f * s);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", open_error_.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  ImGui::EndPopup();
-}
-
 std::string Sandbox::open(const std::string& name_or_path) {
   try {
-    auto next = std::make_unique<Playback>(lessons::resolve_lesson(name_or_path), std::map<std::string, std::string>{},
+    const std::string path = lessons::resolve_lesson(name_or_path);
+    // The command line's --set values belong to the script it named.
+    const bool named_script = path == failed_script_;
+    auto next = std::make_unique<Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
                                            playback_->lesson().settings());
+    check_lock(next->lesson());
     next->set_speed(playback_->speed());
     next->play();
     playback_ = std::move(next);
     control_errors_.clear();
     sliding_.reset();
+    hand_held_ = false;
     failed_script_.clear();
     return "";
   } catch (const InvalidInput& error) {
@@ -446,14 +293,26 @@ bool Sandbox::take_full_screen_toggle() {
   return toggle;
 }
 
-std::string Sandbox::unused_path(const std::string& stem, const std::string& extension) const {
+std::string Sandbox::output_path(const std::string& stem, const std::string& extension) const {
   char time[32];
   std::snprintf(time, sizeof time, "_t%.2f", playback_->lesson().scene().time());
-  const std::filesystem::path folder(output_folder_);
-  std::filesystem::path path = folder / (stem + time + extension);
-  // Never over an earlier file: a second screenshot at the same moment gets a number.
-  for (int n = 2; std::filesystem::exists(path); ++n) path = folder / (stem + time + "_" + std::to_string(n) + extension);
-  return path.string();
+  return unused_path(output_folder_, stem + time, extension);
+}
+
+void Sandbox::request_screenshot() {
+  try {
+    screenshot_request_ = output_path("frictionlab_" + lesson_stem(playback_->lesson().path()), ".png");
+  } catch (const std::exception& error) {
+    status_ = std::string("Could not take a screenshot: ") + error.what();
+  }
+}
+
+void Sandbox::save_history() {
+  try {
+    status_ = "History saved to " + export_history();
+  } catch (const std::exception& error) {
+    status_ = std::string("Could not save the history: ") + error.what();
+  }
 }
 
 std::string Sandbox::export_history() {
@@ -472,7 +331,7 @@ std::string Sandbox::export_history() {
     for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
     csv << ',' << static_cast<int>(scene.slipping()[i]) << '\n';
   }
-  const std::string path = unused_path(lesson_stem(lesson.path()) + "_history", ".csv");
+  const std::string path = output_path(lesson_stem(lesson.path()) + "_history", ".csv");
   const std::string text = csv.str();
   write_whole_file(path, text.data(), text.size());
   return path;

@@ -62,6 +62,9 @@ class Sandbox {
   bool quit_requested() const { return quit_; }
   // What the status line says now (saved files, failures to save).
   const std::string& status() const { return status_; }
+  // A script named on the command line that does not build yet: its path, "" when none.
+  const std::string& failed_script() const { return failed_script_; }
+  const std::string& failed_error() const { return failed_error_; }
 
   // Opens another lesson (a built-in name or a script's path). On failure the current lesson
   // keeps running and the message is returned (also shown in the window); "" on success.
@@ -98,11 +101,16 @@ class Sandbox {
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);
   void try_failed_script(double wall_seconds);
-  std::string unused_path(const std::string& stem, const std::string& extension) const;
+  // A new file in the output folder named after the lesson's moment; never an existing one.
+  std::string output_path(const std::string& stem, const std::string& extension) const;
+  void request_screenshot();
+  void save_history();
+  void check_lock(const lessons::Lesson& lesson) const;  // throws InvalidInput naming the stranger
 
   std::unique_ptr<Playback> playback_;
   WindowSettings window_;
   std::set<std::string> lock_;
+  std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   const Fonts* fonts_ = nullptr;
   Camera camera_;
@@ -113,6 +121,8 @@ class Sandbox {
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;
+  bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
+  std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;

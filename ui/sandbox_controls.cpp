@@ -253,11 +253,24 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     const std::string said = playback_->behind() ? "running slower than asked  " + status_ : status_;
     const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.45f * size.x) + 8.0f * s;
     ImGui::SetNextItemWidth(std::max(100.0f * s, ImGui::GetContentRegionAvail().x - said_width));
-    double t = scene.time();
+    double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();
     const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());
     char format[64];
     std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback_->recorded_until());
-    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) playback_->scrub_to(t);
+    // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
+    // while: it waits until the bar is let go.
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) {
+      if (t >= scene.time() && !scrubbing_to_) {
+        playback_->scrub_to(t);
+      } else {
+        scrubbing_to_ = t;
+        playback_->pause();
+      }
+    }
+    if (ImGui::IsItemDeactivated() && scrubbing_to_) {
+      playback_->scrub_to(*scrubbing_to_);
+      scrubbing_to_.reset();
+    }
     remember("scrub");
     if (!said.empty()) {
       ImGui::SameLine();

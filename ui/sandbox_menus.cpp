@@ -1,0 +1,180 @@
+// The sandbox's menus (lessons, simulation settings, view), the help panel and the dialog that
+// opens a script by its path.
+#define IMGUI_DEFINE_MATH_OPERATORS
+#include <cstdio>
+#include <filesystem>
+
+#include "lessons/runtime/catalog.h"
+#include "ui/sandbox.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string lesson_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+}  // namespace
+
+void Sandbox::menu_bar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("Lesson")) {
+    // Under a teacher's lock the class stays on the lesson the teacher chose.
+    const bool may_switch = lock_.empty();
+    for (const std::string& name : lessons::builtin_lessons()) {
+      const bool current = lesson_stem(playback_->lesson().path()) == name;
+      if (ImGui::MenuItem(name.c_str(), nullptr, current, may_switch)) status_ = open(name);
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;
+    if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) request_screenshot();
+    if (ImGui::MenuItem("Export the history (CSV)", "Ctrl+E")) save_history();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit")) quit_ = true;
+    ImGui::EndMenu();
+  }
+  const bool simulation = ImGui::BeginMenu("Simulation");
+  remember("Simulation menu");
+  if (simulation) {
+    StepSettings settings = playback_->lesson().settings();
+    const bool may_treat = shown("friction"), may_rate = shown("hz"), may_substep = shown("substeps");
+    ImGui::TextDisabled("Friction treatment");
+    const std::pair<FrictionTreatment, const char*> treatments[] = {
+        {FrictionTreatment::stick_slip, "stick-slip (converges to Coulomb)"},
+        {FrictionTreatment::threshold, "threshold (games' speed switch)"},
+        {FrictionTreatment::regularized, "regularized (smooth, creeps)"},
+        {FrictionTreatment::box2d, "box2d (one coefficient)"}};
+    for (const auto& [treatment, label] : treatments) {
+      const bool chosen = ImGui::MenuItem(label, nullptr, settings.treatment == treatment, may_treat);
+      remember("treatment " + std::string(treatment_name(treatment)));
+      if (chosen && settings.treatment != treatment) {
+        settings.treatment = treatment;
+        change_settings(settings);
+      }
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("Step rate");
+    for (const double hz : {30.0, 60.0, 120.0, 240.0, 480.0, 960.0, 1920.0}) {
+      const std::string label = std::to_string(static_cast<int>(hz)) + " Hz";
+      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.hz == hz, may_rate);
+      remember("hz " + label.substr(0, label.size() - 3));
+      if (chosen && settings.hz != hz) {
+        settings.hz = hz;
+        change_settings(settings);
+      }
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("Sub-steps per frame");
+    for (const int substeps : {1, 2, 4, 8, 16}) {
+      const std::string label = std::to_string(substeps);
+      const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.substeps == substeps, may_substep);
+      remember("substeps " + label);
+      if (chosen && settings.substeps != substeps) {
+        settings.substeps = substeps;
+        change_settings(settings);
+      }
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    bool dark = window_.theme == ThemeName::dark;
+    if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;
+    ImGui::MenuItem("Projector mode", "P", &window_.projector);
+    if (ImGui::MenuItem("Full screen", "F11")) full_screen_toggle_ = true;
+    ImGui::MenuItem("Help", "F1", &window_.help);
+    ImGui::EndMenu();
+  }
+  // Which file is running, so a student knows which script to edit.
+  const std::string& path = playback_->lesson().path();
+  const float width = ImGui::CalcTextSize(path.c_str()).x;
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - width - 16.0f));
+  ImGui::TextDisabled("%s", path.c_str());
+  ImGui::EndMainMenuBar();
+}
+
+void Sandbox::help_panel() {
+  if (!window_.help) return;
+  const float s = fonts_->scale;
+  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                          ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Help (F1 shows and hides it)", &window_.help)) {
+    static const char* const keys[][2] = {
+        {"Space", "play / pause"},
+        {". (period)", "one step of the lesson (1/hz s), paused"},
+        {", (comma)", "one step back (replays the record)"},
+        {"R", "reset to t = 0, keeping the values set"},
+        {"F5", "reload the script from its file (saving it does too)"},
+        {"Ctrl+S", "screenshot of the window (PNG)"},
+        {"Ctrl+E", "export the history (CSV)"},
+        {"P", "projector mode: larger text, thicker lines"},
+        {"D", "dark or light theme"},
+        {"F11", "full screen"},
+        {"F1", "this help"},
+    };
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+      for (const auto& row : keys) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[1]);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(
+        "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. Drag a slider, or "
+        "type an exact value in the box beside it and press Enter; the arrow resets it to the script's value. "
+        "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
+        "until you change something.");
+    ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
+                            ". Settings are kept in " + settings_folder() + ".")
+                               .c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
+void Sandbox::open_script_popup() {
+  if (open_popup_) {
+    ImGui::OpenPopup("Open a lesson script");
+    open_popup_ = false;
+    open_error_.clear();
+  }
+  const float s = fonts_->scale;
+  ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
+  if (!ImGui::BeginPopupModal("Open a lesson script", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted("A .lua file (path from the folder FrictionLab was started in, or from /):");
+  ImGui::SetNextItemWidth(560.0f * s);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  bool go = ImGui::InputText("##path", open_path_, sizeof open_path_, ImGuiInputTextFlags_EnterReturnsTrue);
+  // Scripts in the current folder, one click each.
+  std::error_code error;
+  for (std::filesystem::directory_iterator entry(".", error), end; !error && entry != end; entry.increment(error)) {
+    if (entry->path().extension() != ".lua") continue;
+    const std::string name = entry->path().filename().string();
+    if (ImGui::Selectable(name.c_str())) {
+      std::snprintf(open_path_, sizeof open_path_, "%s", name.c_str());
+      go = true;
+    }
+  }
+  if (ImGui::Button("Open")) go = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  if (go) {
+    open_error_ = open(open_path_);
+    if (open_error_.empty()) ImGui::CloseCurrentPopup();
+  }
+  if (!open_error_.empty()) {
+    ImGui::PushTextWrapPos(560.0f * s);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", open_error_.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace frictionlab::ui
