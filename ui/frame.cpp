@@ -142,7 +142,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
   }
   at.y += parameters_height + gap;
-  theory_panel(rows, at, ImVec2(layout.column_size.x, theory_height), colours);
+  theory_panel(rows, at, ImVec2(layout.column_size.x, theory_height), colours, readings.error, readings.caveat);
   at.y += theory_height + gap;
   if (tabbed) {
     if (begin_panel("books", "", at, ImVec2(layout.column_size.x, energy_height)) && ImGui::BeginTabBar("books")) {

@@ -31,6 +31,7 @@ struct LessonReadings {
   std::vector<lessons::ExpectationResult> expectations;
   double duration = 1.0;  // s
   std::string error;      // the script failed to work them out
+  std::string caveat;     // why the measurements do not answer the predictions yet
 };
 
 struct FrameStyle {

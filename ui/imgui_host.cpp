@@ -47,12 +47,16 @@ const Fonts& ImGuiHost::prepare(float scale, ThemeName theme) {
   make_current();
   if (std::abs(scale - built_scale_) > 0.02f * scale) {
     ImGuiIO& io = ImGui::GetIO();
+    const bool first = built_scale_ == 0.0f;
     io.Fonts->Clear();
     fonts_ = load_fonts(scale, glyph_ranges_);
     built_scale_ = scale;
-    // The renderer made its font texture from the old atlas; it makes its objects again,
-    // the texture from the new atlas among them, at the next frame.
-    ImGui_ImplOpenGL3_DestroyDeviceObjects();
+    // The renderer's font texture was made from the old atlas: make it again from the new one.
+    // (Before the first frame the renderer makes it itself.)
+    if (!first) {
+      ImGui_ImplOpenGL3_DestroyFontsTexture();
+      ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
   }
   if (theme != styled_theme_ || scale != styled_scale_) {
     apply_imgui_style(theme, scale);

@@ -82,8 +82,17 @@ std::string with_unit(double value, const std::string& unit) {
 
 }  // namespace
 
-void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme) {
+void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
+                  const std::string& error, const std::string& caveat) {
   if (begin_panel("theory", "Theory against simulation", corner, size)) {
+    ImGui::PushTextWrapPos(0.0f);
+    if (!error.empty()) ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme.bad), "%s", error.c_str());
+    if (!caveat.empty()) ImGui::TextDisabled("%s", caveat.c_str());
+    ImGui::PopTextWrapPos();
+    if (rows.empty() && !error.empty()) {
+      end_panel();
+      return;
+    }
     if (rows.empty()) {
       ImGui::TextDisabled("This lesson states no expectations (expect{} in its script).");
       end_panel();

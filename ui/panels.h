@@ -18,7 +18,10 @@ void end_panel();
 
 void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
 void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
-void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme);
+// `error`: the script could not work the table out (shown instead of it); `caveat`: why the
+// rows should not be trusted yet (shown above them).
+void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
+                  const std::string& error = "", const std::string& caveat = "");
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
 // What those two panels hold, for a window that shows them as tabs of one panel.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <sstream>
 
@@ -30,6 +31,8 @@ constexpr double most_per_display_frame = 0.27;
 // How often the script works out the theory table, and looks at its file, in real seconds.
 constexpr double readings_period = 0.2;
 constexpr double file_check_period = 0.25;
+// About 8 ms of Box2D a display frame for a small lesson: room for 8× speed at 1920 Hz with 2 sub-steps.
+constexpr long most_world_steps_per_display_frame = 5000;
 
 }  // namespace
 
@@ -65,6 +68,18 @@ void Playback::after_rebuild() {
 void Playback::refresh_readings() {
   since_readings_ = 0.0;
   readings_.error.clear();
+  readings_.caveat.clear();
+  // Values changed during the run: the predictions use the new ones, the record holds both.
+  for (std::size_t i = 0; i < next_action_; ++i) {
+    if (record_[i].kind != Action::Kind::set) continue;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%s was changed at t = %.2f s: what was measured before it ran with the old value. Press R to "
+                  "measure again with the new one.",
+                  record_[i].name.c_str(), static_cast<double>(record_[i].frame) * lesson_->scene().frame_step());
+    readings_.caveat = text;
+    break;
+  }
   try {
     readings_.duration = lesson_->duration();
     readings_.expectations = lesson_->expectations();
@@ -94,8 +109,18 @@ void Playback::advance(double wall_seconds) {
       owed_ = most_per_display_frame;
     }
     // Steps are whole frames of the lesson; the fraction left waits for the next display frame.
+    // At most so many world steps a display frame (a 100 kHz rate with 1000 sub-steps asks for
+    // millions): the lesson then runs slower than asked, and says so, instead of freezing.
+    long world_steps = 0;
+    const long substeps = lesson_->settings().substeps;
     while (playing_ && owed_ >= h * (1.0 - 1e-9)) {
+      if (world_steps + substeps > most_world_steps_per_display_frame && world_steps > 0) {
+        behind_ = true;
+        owed_ = 0.0;
+        break;
+      }
       owed_ -= h;
+      world_steps += substeps;
       step_and_check();
     }
     if (!playing_) owed_ = 0.0;
@@ -289,6 +314,7 @@ bool Playback::reload() {
   // the new one play.
   if (!lesson_->reload()) {
     script_error_ = lesson_->last_error();
+    notice_.clear();
     return false;
   }
   script_error_.clear();
@@ -305,7 +331,7 @@ void Playback::watch_file(double wall_seconds) {
   if (!stamp) {
     // Moved, deleted, or half-way through an editor's save: say so, keep the lesson running.
     if (script_error_.empty() || script_error_.rfind("cannot read", 0) == 0) {
-      script_error_ = "cannot read " + lesson_->path() + " (moved or deleted?); the lesson keeps running";
+      script_error_ = "cannot read " + lesson_->path() + " (moved or deleted?)";
     }
     return;
   }

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -111,8 +112,9 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   ImGui::PushFont(fonts.body);
   handle_mouse(origin, area, s);
   const FrameLayout layout = FrameLayout::of(area, s, origin);
-  messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + 6.0f * s),
-           layout.world_size.x - layout.inset_size.x - 18.0f * s);
+  // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
+  messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
+           layout.world_size.x - 12.0f * s);
   transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
   help_panel();
   open_script_popup();
@@ -126,7 +128,8 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
 
 void Sandbox::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;  // typing a value: the keys are the text's
+  // Typing a value or a path, or a dialog open: the keys are the text's, not shortcuts.
+  if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
   if (io.KeyCtrl) {
     if (pressed(GLFW_KEY_S)) request_screenshot();
     if (pressed(GLFW_KEY_E)) save_history();
@@ -163,6 +166,7 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
         if (fixture->TestPoint(point)) {
           playback_->grab(name, body->GetLocalPoint(point), point);
           hand_held_ = true;
+          if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
           break;
         }
       }
@@ -218,11 +222,9 @@ void Sandbox::messages(ImVec2 corner, float width) {
     lines.push_back({playback_->script_error() + "  (the last good version keeps running)", true});
   }
   if (!playback_->problem().empty()) lines.push_back({playback_->problem(), true});
-  if (!playback_->readings().error.empty()) lines.push_back({playback_->readings().error, true});
-  if (!playback_->notice().empty()) lines.push_back({playback_->notice(), false});
   if (lines.empty()) return;
   const Theme& colours = theme(window_.theme);
-  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowPos(corner, ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, FLT_MAX));
   ImGui::SetNextWindowBgAlpha(0.92f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -243,7 +245,10 @@ void Sandbox::messages(ImVec2 corner, float width) {
 
 std::string Sandbox::open(const std::string& name_or_path) {
   try {
-    const std::string path = lessons::resolve_lesson(name_or_path);
+    // "~/steep_slope.lua", as a shell would have it.
+    const char* home = std::getenv("HOME");
+    const std::string named = name_or_path.rfind("~/", 0) == 0 && home != nullptr ? home + name_or_path.substr(1) : name_or_path;
+    const std::string path = lessons::resolve_lesson(named);
     // The command line's --set values belong to the script it named.
     const bool named_script = path == failed_script_;
     auto next = std::make_unique<Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
@@ -325,13 +330,13 @@ std::string Sandbox::export_history() {
     const std::string& unit = lesson.probe_unit(probe.name);
     csv << ',' << probe.name << (unit.empty() ? "" : " (" + unit + ")");
   }
-  csv << ",slipping\n";
+  csv << ",any_contact_slipping\n";
   for (std::size_t i = 0; i < scene.times().size(); ++i) {
     csv << scene.times()[i];
     for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
     csv << ',' << static_cast<int>(scene.slipping()[i]) << '\n';
   }
-  const std::string path = output_path(lesson_stem(lesson.path()) + "_history", ".csv");
+  const std::string path = output_path("frictionlab_" + lesson_stem(lesson.path()) + "_history", ".csv");
   const std::string text = csv.str();
   write_whole_file(path, text.data(), text.size());
   return path;

@@ -126,6 +126,7 @@ class Sandbox {
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;
+  bool refocus_path_ = false;
   char open_path_[512] = {};
   std::string open_error_;
   std::string status_;

@@ -250,7 +250,10 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     remember("speed");
     ImGui::SameLine();
     const Scene& scene = playback_->lesson().scene();
-    const std::string said = playback_->behind() ? "running slower than asked  " + status_ : status_;
+    // Notices (the run is over, the file reloaded) and what was saved where, on one line.
+    std::string said = playback_->notice();
+    if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
+    if (playback_->behind()) said = "running slower than asked  " + said;
     const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.45f * size.x) + 8.0f * s;
     ImGui::SetNextItemWidth(std::max(100.0f * s, ImGui::GetContentRegionAvail().x - said_width));
     double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();

@@ -1,8 +1,10 @@
 // The sandbox's menus (lessons, simulation settings, view), the help panel and the dialog that
 // opens a script by its path.
 #define IMGUI_DEFINE_MATH_OPERATORS
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "lessons/runtime/catalog.h"
 #include "ui/sandbox.h"
@@ -16,7 +18,9 @@ std::string lesson_stem(const std::string& path) { return std::filesystem::path(
 
 void Sandbox::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  if (ImGui::BeginMenu("Lesson")) {
+  const bool lesson_menu = ImGui::BeginMenu("Lesson");
+  remember("Lesson menu");
+  if (lesson_menu) {
     // Under a teacher's lock the class stays on the lesson the teacher chose.
     const bool may_switch = lock_.empty();
     for (const std::string& name : lessons::builtin_lessons()) {
@@ -25,6 +29,7 @@ void Sandbox::menu_bar() {
     }
     ImGui::Separator();
     if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;
+    remember("Open a script");
     if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) request_screenshot();
@@ -64,7 +69,7 @@ void Sandbox::menu_bar() {
       }
     }
     ImGui::Separator();
-    ImGui::TextDisabled("Sub-steps per frame");
+    ImGui::TextDisabled("Sub-steps per step");
     for (const int substeps : {1, 2, 4, 8, 16}) {
       const std::string label = std::to_string(substeps);
       const bool chosen = ImGui::MenuItem(label.c_str(), nullptr, settings.substeps == substeps, may_substep);
@@ -150,13 +155,17 @@ void Sandbox::open_script_popup() {
   if (!ImGui::BeginPopupModal("Open a lesson script", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::TextUnformatted("A .lua file (path from the folder FrictionLab was started in, or from /):");
   ImGui::SetNextItemWidth(560.0f * s);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  if (ImGui::IsWindowAppearing() || refocus_path_) ImGui::SetKeyboardFocusHere();
+  refocus_path_ = false;
   bool go = ImGui::InputText("##path", open_path_, sizeof open_path_, ImGuiInputTextFlags_EnterReturnsTrue);
   // Scripts in the current folder, one click each.
   std::error_code error;
+  std::vector<std::string> scripts;
   for (std::filesystem::directory_iterator entry(".", error), end; !error && entry != end; entry.increment(error)) {
-    if (entry->path().extension() != ".lua") continue;
-    const std::string name = entry->path().filename().string();
+    if (entry->path().extension() == ".lua") scripts.push_back(entry->path().filename().string());
+  }
+  std::sort(scripts.begin(), scripts.end());
+  for (const std::string& name : scripts) {
     if (ImGui::Selectable(name.c_str())) {
       std::snprintf(open_path_, sizeof open_path_, "%s", name.c_str());
       go = true;
@@ -168,6 +177,7 @@ void Sandbox::open_script_popup() {
   if (go) {
     open_error_ = open(open_path_);
     if (open_error_.empty()) ImGui::CloseCurrentPopup();
+    else refocus_path_ = true;  // back into the path next frame, to correct it
   }
   if (!open_error_.empty()) {
     ImGui::PushTextWrapPos(560.0f * s);
