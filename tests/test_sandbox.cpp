@@ -158,6 +158,10 @@ TEST(Sandbox, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
   EXPECT_EQ(driver.lesson().scene().pairs().pair("aluminium", "wood").mu_k, 0.3125);
 
   driver.click("mu_k value");
+  driver.type("0,5");
+  driver.key(GLFW_KEY_ENTER);
+  EXPECT_NE(driver.sandbox().control_error("mu_k").find("write decimals with a point"), std::string::npos);
+  driver.click("mu_k value");
   driver.type("3");
   driver.key(GLFW_KEY_ENTER);
   EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.3125);
@@ -188,6 +192,23 @@ TEST(Sandbox, PauseAndStepAdvanceExactlyOneStep) {
   EXPECT_EQ(driver.lesson().scene().frame(), paused + 2);
   EXPECT_DOUBLE_EQ(driver.lesson().scene().time(), static_cast<double>(paused + 2) / 240.0);
   EXPECT_FALSE(driver.playback().playing());
+}
+
+TEST(Sandbox, AKeyTappedBetweenTwoFramesStillCounts) {
+  Driver driver("incline");
+  driver.frame();
+  ASSERT_TRUE(driver.playback().playing());
+  driver.sandbox().key_pressed(GLFW_KEY_SPACE, false);  // as GLFW reports it; ImGui never saw it down
+  driver.frame();
+  EXPECT_FALSE(driver.playback().playing());
+  driver.sandbox().key_pressed(GLFW_KEY_PERIOD, false);
+  const long before = driver.lesson().scene().frame();
+  // Held across two frames it shows both ways at once: still one press, one step.
+  ImGui::GetIO().KeysDown[GLFW_KEY_PERIOD] = true;
+  driver.frame();
+  ImGui::GetIO().KeysDown[GLFW_KEY_PERIOD] = false;
+  driver.frame();
+  EXPECT_EQ(driver.lesson().scene().frame(), before + 1);
 }
 
 TEST(Sandbox, PlayingRunsAtTheChosenSpeedOnTheFixedStep) {

@@ -171,8 +171,7 @@ void Playback::step_and_check() {
   if (!run_over_ && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
     run_over_ = true;
     playing_ = false;
-    notice_ = "Paused at the end of the lesson's run (" + seconds_text(readings_.duration) +
-              "), where its theory table is read. Space plays on.";
+    notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
   }
 }
 

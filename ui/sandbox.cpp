@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,8 +25,6 @@ long long modified(const std::string& path) {
   if (stat(path.c_str(), &status) != 0) return -1;
   return static_cast<long long>(status.st_mtim.tv_sec) * 1'000'000'000LL + status.st_mtim.tv_nsec;
 }
-
-bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
 
 std::string lesson_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
@@ -128,22 +127,28 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
 
 void Sandbox::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
+  std::vector<std::pair<int, bool>> taps;
+  taps.swap(taps_);
   // Typing a value or a path, or a dialog open: the keys are the text's, not shortcuts.
   if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
-  if (io.KeyCtrl) {
-    if (pressed(GLFW_KEY_S)) request_screenshot();
-    if (pressed(GLFW_KEY_E)) save_history();
-    return;
+  // Held across frames, a key shows both ways in the same frame; either is one press.
+  const auto hit = [&](int key, bool ctrl) {
+    const bool tapped = std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
+    return tapped || (io.KeyCtrl == ctrl && ImGui::IsKeyPressed(key, false));
+  };
+  if (hit(GLFW_KEY_S, true)) request_screenshot();
+  if (hit(GLFW_KEY_E, true)) save_history();
+  if (hit(GLFW_KEY_SPACE, false)) playback_->toggle();
+  if (hit(GLFW_KEY_PERIOD, false)) playback_->step_once();
+  if (hit(GLFW_KEY_COMMA, false)) {
+    playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
   }
-  if (pressed(GLFW_KEY_SPACE)) playback_->toggle();
-  if (pressed(GLFW_KEY_PERIOD)) playback_->step_once();
-  if (pressed(GLFW_KEY_COMMA)) playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
-  if (pressed(GLFW_KEY_R)) playback_->reset();
-  if (pressed(GLFW_KEY_F5)) playback_->reload();
-  if (pressed(GLFW_KEY_F11)) full_screen_toggle_ = true;
-  if (pressed(GLFW_KEY_F1)) window_.help = !window_.help;
-  if (pressed(GLFW_KEY_P)) window_.projector = !window_.projector;
-  if (pressed(GLFW_KEY_D)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
+  if (hit(GLFW_KEY_R, false)) playback_->reset();
+  if (hit(GLFW_KEY_F5, false)) playback_->reload();
+  if (hit(GLFW_KEY_F11, false)) full_screen_toggle_ = true;
+  if (hit(GLFW_KEY_F1, false)) window_.help = !window_.help;
+  if (hit(GLFW_KEY_P, false)) window_.projector = !window_.projector;
+  if (hit(GLFW_KEY_D, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
 void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {

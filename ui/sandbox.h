@@ -55,6 +55,10 @@ class Sandbox {
   Playback& playback() { return *playback_; }
   const Playback& playback() const { return *playback_; }
 
+  // A key pressed, as the window system reports it: a tap pressed and let go between two frames
+  // (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame key state.
+  void key_pressed(int glfw_key, bool ctrl) { taps_.emplace_back(glfw_key, ctrl); }
+
   // Requests the host carries out after the frame is drawn, each taken once.
   std::optional<std::string> take_screenshot_request();  // the path to save the window to
   void screenshot_done(const std::string& path, const std::string& error);
@@ -121,6 +125,7 @@ class Sandbox {
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;
+  std::vector<std::pair<int, bool>> taps_;  // keys reported since the last frame, with Ctrl
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   bool full_screen_toggle_ = false;

@@ -254,7 +254,7 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     std::string said = playback_->notice();
     if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
     if (playback_->behind()) said = "running slower than asked  " + said;
-    const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.45f * size.x) + 8.0f * s;
+    const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.35f * size.x) + 8.0f * s;
     ImGui::SetNextItemWidth(std::max(100.0f * s, ImGui::GetContentRegionAvail().x - said_width));
     double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();
     const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());

@@ -48,6 +48,14 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
   ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  // Every key press reaches the sandbox, even one let go before the next frame; set before
+  // ImGui's backend, which then calls it after its own.
+  glfwSetWindowUserPointer(window.get(), &sandbox);
+  glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS) {
+      static_cast<Sandbox*>(glfwGetWindowUserPointer(from))->key_pressed(key, (mods & GLFW_MOD_CONTROL) != 0);
+    }
+  });
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
   struct GlfwInput {
     ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }

@@ -485,7 +485,11 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
     throw InvalidInput(parameter.name + "=" + text + ": not one of the choices " + list);
   }
   const std::optional<double> value = parse_number(text);
-  if (!value) throw InvalidInput(parameter.name + "=" + text + ": not a number");
+  if (!value) {
+    // A decimal comma is what many classrooms write: say what is wanted instead.
+    const bool comma = text.find(',') != std::string::npos;
+    throw InvalidInput(parameter.name + "=" + text + ": not a number" + (comma ? "; write decimals with a point, as in 0.5" : ""));
+  }
   const std::string unit = parameter.unit.empty() ? "" : " " + parameter.unit;
   validation::require_in_range(parameter.name, *value, parameter.min, parameter.max, false, unit.c_str());
   return *value;
