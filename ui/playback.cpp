@@ -9,14 +9,14 @@
 #include <sstream>
 
 namespace frictionlab::ui {
-namespace {
-
-std::optional<std::pair<long long, long long>> file_stamp(const std::string& path) {
+FileStamp file_stamp(const std::string& path) {
   struct stat status {};
   if (stat(path.c_str(), &status) != 0) return std::nullopt;
   return std::make_pair(static_cast<long long>(status.st_mtim.tv_sec) * 1'000'000'000LL + status.st_mtim.tv_nsec,
                         static_cast<long long>(status.st_size));
 }
+
+namespace {
 
 std::string seconds_text(double t) {
   std::ostringstream text;

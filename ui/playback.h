@@ -19,6 +19,11 @@
 
 namespace frictionlab::ui {
 
+// A file's modification time (ns) and size, to notice that it was saved; nothing when it
+// cannot be read.
+using FileStamp = std::optional<std::pair<long long, long long>>;
+FileStamp file_stamp(const std::string& path);
+
 class Playback {
  public:
   static constexpr double slowest = 0.1, fastest = 8.0;
@@ -112,7 +117,7 @@ class Playback {
   bool blown_ = false;     // stays stopped until a reset or a rebuild
   double since_readings_ = 0.0;
   double since_file_check_ = 0.0;
-  std::optional<std::pair<long long, long long>> file_stamp_;  // modification time (ns) and size
+  FileStamp file_stamp_;
   std::size_t next_action_ = 0;  // the first action of the record not yet applied
   std::string script_error_;
   std::string problem_;

@@ -5,7 +5,6 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui_internal.h>
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -20,12 +19,6 @@
 namespace frictionlab::ui {
 namespace {
 
-long long modified(const std::string& path) {
-  struct stat status {};
-  if (stat(path.c_str(), &status) != 0) return -1;
-  return static_cast<long long>(status.st_mtim.tv_sec) * 1'000'000'000LL + status.st_mtim.tv_nsec;
-}
-
 std::string lesson_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 }  // namespace
@@ -35,7 +28,7 @@ Sandbox::Sandbox(SandboxOptions options)
       lock_(options.lock.begin(), options.lock.end()),
       overrides_(options.overrides),
       output_folder_(options.output_folder) {
-  const long long stamp = modified(options.lesson);  // before it is read: a save meanwhile is seen
+  const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     playback_ = std::make_unique<Playback>(options.lesson, options.overrides, options.settings);
     check_lock(playback_->lesson());
@@ -277,7 +270,7 @@ void Sandbox::try_failed_script(double wall_seconds) {
   since_failed_check_ += wall_seconds;
   if (since_failed_check_ < 0.25) return;
   since_failed_check_ = 0.0;
-  const long long stamp = modified(failed_script_);
+  const FileStamp stamp = file_stamp(failed_script_);
   if (stamp == failed_stamp_) return;
   failed_stamp_ = stamp;
   const std::string script = failed_script_;

@@ -138,7 +138,7 @@ class Sandbox {
   // A script named on the command line that did not build: shown and watched until it does.
   std::string failed_script_, failed_error_;
   double since_failed_check_ = 0.0;
-  long long failed_stamp_ = -1;
+  FileStamp failed_stamp_;
 };
 
 }  // namespace frictionlab::ui
