@@ -58,7 +58,7 @@ WindowSettings load_settings(const std::string& path) {
 
 bool save_settings(const WindowSettings& settings, const std::string& path) {
   std::ostringstream text;
-  text << "# FrictionLab's window settings; written when the window closes.\n"
+  text << "# FrictionLab's window settings, written as they change.\n"
        << "theme = " << theme_name(settings.theme) << "\n"
        << "projector = " << (settings.projector ? "on" : "off") << "\n"
        << "help = " << (settings.help ? "on" : "off") << "\n"

@@ -66,6 +66,7 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
   bool full_screen = false;
   int windowed[4] = {0, 0, settings.width, settings.height};
   double last = glfwGetTime();
+  WindowSettings saved = settings;
   while (!glfwWindowShouldClose(window.get()) && !sandbox.quit_requested()) {
     glfwPollEvents();
     int width = 0, height = 0;
@@ -121,6 +122,12 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
       }
     }
     glfwSwapBuffers(window.get());
+    // A choice the teacher made (theme, projector, help, speed) is kept at once, so a window
+    // that is killed rather than closed still remembers it.
+    if (!run.settings_path.empty() && !(settings == saved)) {
+      save_settings(settings, run.settings_path);
+      saved = settings;
+    }
   }
 
   if (!full_screen) glfwGetWindowSize(window.get(), &settings.width, &settings.height);
