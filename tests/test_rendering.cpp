@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "rendering.h"
+#include "ui/chart.h"
 #include "ui/frame.h"
 #include "ui/image.h"
 #include "ui/overlays.h"
@@ -156,6 +157,40 @@ TEST(Rendering, TwoRenderersAtOnceDrawTheSamePicture) {
     EXPECT_EQ(renderer().render(*at.lesson, at.framing).rgba, alone.rgba);
   }
   EXPECT_EQ(renderer().render(*at.lesson, at.framing).rgba, alone.rgba);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// A chart's map cells land where their grid points are: a 2×2 map of two categories, read back
+// from the picture at the middle of each quarter of the plot.
+TEST(Charts, MapCellsAreDrawnWhereTheirGridPointsAre) {
+  Chart chart;
+  chart.title = "map";
+  chart.log_x = chart.log_y = true;
+  chart.categories = {{"low", IM_COL32(0, 200, 0, 255)}, {"high", IM_COL32(200, 0, 0, 255)}};
+  chart.cells = {{1.0, 1.0, 0}, {10.0, 1.0, 0}, {1.0, 10.0, 1}, {10.0, 10.0, 1}};
+  const Image image = render_charts({chart}, 1, 800, 600);
+  // Down a column through the left cells (the middle one is their shared edge).
+  int first_red = -1, last_green = -1;
+  for (int y = 0; y < image.height; ++y) {
+    const std::uint8_t* p = image.pixel(image.width * 2 / 5, y);
+    if (p[0] == 200 && p[1] == 0 && first_red < 0) first_red = y;
+    if (p[0] == 0 && p[1] == 200) last_green = y;
+  }
+  ASSERT_GE(first_red, 0) << "no cell of the upper category";
+  ASSERT_GT(last_green, first_red) << "the upper category is not above the lower one";
+  // Both halves of the plot are about equally tall: cells span half-way to their neighbours.
+  int red_rows = 0, green_rows = 0;
+  for (int y = 0; y < image.height; ++y) {
+    const std::uint8_t* p = image.pixel(image.width * 2 / 5, y);
+    red_rows += p[0] == 200 && p[1] == 0;
+    green_rows += p[0] == 0 && p[1] == 200;
+  }
+  EXPECT_NEAR(red_rows, green_rows, 3);
 }
 
 }  // namespace

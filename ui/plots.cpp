@@ -19,6 +19,15 @@ std::vector<double> axis_ticks(double low, double high, int count) {
   return ticks;
 }
 
+std::string tick_text(double value, double step) {
+  char text[32];
+  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(text, sizeof text, "%.*f", std::min(decimals, 6), value);
+  std::string shown = text;
+  if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
+  return shown;
+}
+
 namespace {
 
 struct Range {
@@ -50,14 +59,6 @@ Range range_of(const std::vector<const std::vector<double>*>& series, std::size_
   return {low < 0.0 || !include_zero ? low - margin : low, high + margin};
 }
 
-std::string tick_text(double value, double step) {
-  char text[32];
-  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  std::snprintf(text, sizeof text, "%.*f", std::min(decimals, 6), value);
-  std::string shown = text;
-  if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
-  return shown;
-}
 
 std::string axis_title(const lessons::Lesson& lesson, const std::string& quantity) {
   if (quantity == "time") return "time (s)";

@@ -17,6 +17,8 @@ namespace frictionlab::ui {
 // Tick positions for an axis from low to high: 1, 2 or 5 times a power of ten apart, about
 // `count` of them.
 std::vector<double> axis_ticks(double low, double high, int count);
+// A tick's label with as many decimals as the step needs, and a true minus sign.
+std::string tick_text(double value, double step);
 
 // Draws `plot` into the rectangle. `time_span` is the time axis' length (the lesson's
 // duration, or longer once the lesson has run past it).

@@ -1,0 +1,134 @@
+// frictionlab bench, where the methods fail: the regularized law's stability map for explicit
+// Euler, semi-implicit Euler and RK4 over (step, threshold), with linear theory's boundary on
+// it; the creep a large threshold causes on a slope; the viscous term applied explicitly
+// against the project's exact step. A CSV of every cell and one picture of the charts.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "app/bench.h"
+#include "app/table.h"
+#include "physics/stability.h"
+#include "ui/chart.h"
+#include "ui/headless.h"
+
+namespace frictionlab {
+namespace {
+
+constexpr double g = 9.81;
+const FrictionPair wood_on_wood{0.5, 0.4, 0.0, 0.0};
+
+struct Method {
+  Integrator integrator;
+  const char* name;
+};
+constexpr Method methods[] = {{Integrator::explicit_euler, "explicit Euler"},
+                              {Integrator::semi_implicit_euler, "semi-implicit Euler"},
+                              {Integrator::rk4, "RK4"}};
+
+const ImU32 stable_colour = IM_COL32(150, 214, 170, 255), chatter_colour = IM_COL32(240, 170, 120, 255),
+            divergent_colour = IM_COL32(200, 70, 70, 255), theory_colour = IM_COL32(20, 20, 20, 255),
+            measured_colour = IM_COL32(0, 90, 200, 255);
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> stability_files(bool quick, const std::string& directory, std::ostream& out) {
+  const std::vector<double> steps = logarithmic_range(1e-4, 1e-1, quick ? 13 : 31);
+  const std::vector<double> epsilons = logarithmic_range(1e-4, 1e-1, quick ? 10 : 25);
+  std::ostringstream csv;
+  csv << "integrator,h_s,epsilon_m_per_s,behaviour,theoretical_boundary_h_s\n";
+  std::vector<ui::Chart> charts;
+  std::vector<std::vector<std::string>> table{{"method", "epsilon", "boundary h, theory", "measured", "measured / theory"}};
+  for (const Method& method : methods) {
+    ui::Chart map;
+    map.title = std::string("Regularized friction, ") + method.name;
+    map.x_label = "threshold speed \u03b5 (m/s)";
+    map.y_label = "step h (s)";
+    map.log_x = map.log_y = true;
+    map.categories = {{"stable: settles", stable_colour}, {"chattering: never settles", chatter_colour},
+                      {"divergent", divergent_colour}};
+    for (const StabilityCell& cell : stability_map(wood_on_wood, g, method.integrator, steps, epsilons)) {
+      map.cells.push_back({cell.epsilon, cell.h, static_cast<int>(cell.behaviour)});
+      csv << method.name << ',' << cell.h << ',' << cell.epsilon << ',' << behaviour_name(cell.behaviour) << ','
+          << theoretical_boundary(wood_on_wood, g, cell.epsilon, method.integrator) << '\n';
+    }
+    ui::ChartSeries theory{"theory: h = " + number(theoretical_boundary(wood_on_wood, g, 1.0, method.integrator) *
+                                                   wood_on_wood.mu_s * g) + "\u00b7\u03b5/(\u03bcs\u00b7g)",
+                           {}, theory_colour, true, ui::Marker::none};
+    ui::ChartSeries measured{"measured boundary", {}, measured_colour, false, ui::Marker::dot};
+    for (const double epsilon : epsilons) theory.points.push_back({epsilon, theoretical_boundary(wood_on_wood, g, epsilon, method.integrator)});
+    for (const double epsilon : {1e-3, 1e-2, 1e-1}) {
+      const double expected = theoretical_boundary(wood_on_wood, g, epsilon, method.integrator);
+      const double found = measured_boundary(wood_on_wood, g, epsilon, method.integrator);
+      measured.points.push_back({epsilon, found});
+      table.push_back({method.name, number(epsilon) + " m/s", number(expected) + " s", number(found) + " s",
+                       number(found / expected)});
+    }
+    map.series = {theory, measured};
+    map.notes = {"a block launched at 1 m/s on flat ground, \u03bcs = 0.5, \u03bck = 0.4"};
+    charts.push_back(map);
+  }
+
+  // Creep on a 20° slope, where Coulomb's block sticks (tan 20° = 0.36 < 0.5).
+  const double angle = 20.0 * M_PI / 180.0;
+  ui::Chart creep;
+  creep.title = "Creep on a 20\u00b0 slope that should hold the block";
+  creep.x_label = "threshold speed \u03b5 (m/s)";
+  creep.y_label = "creep speed (m/s)";
+  creep.log_x = creep.log_y = true;
+  ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none};
+  ui::ChartSeries creep_measured{"semi-implicit Euler, h = \u03b5/(5\u00b7\u03bcs\u00b7g)", {}, measured_colour, false,
+                                 ui::Marker::dot};
+  double worst_creep = 0.0;
+  for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {
+    const double h = 0.2 * theoretical_boundary(wood_on_wood, g, epsilon, Integrator::semi_implicit_euler);
+    const double measured = creep_speed(wood_on_wood, g, angle, epsilon, h, Integrator::semi_implicit_euler);
+    const double expected = theoretical_creep_speed(wood_on_wood, angle, epsilon);
+    worst_creep = std::max(worst_creep, std::abs(measured / expected - 1.0));
+    creep_theory.points.push_back({epsilon, expected});
+    creep_measured.points.push_back({epsilon, measured});
+  }
+  creep.series = {creep_theory, creep_measured};
+  creep.notes = {"\u03b5 = 0.1 m/s: the block that should stick slides 0.73 m in ten seconds"};
+  charts.push_back(creep);
+
+  // The viscous term: what one step does to the velocity.
+  ui::Chart viscous;
+  viscous.title = "Viscous term: one step's factor on v";
+  viscous.x_label = "h\u00b7c/m";
+  viscous.y_label = "v after / v before";
+  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, chatter_colour, true, ui::Marker::none};
+  ui::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, ui::Marker::none};
+  ui::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, ui::Marker::none};
+  ui::ChartSeries bound_low{"", {}, theory_colour, true, ui::Marker::none};
+  for (double ratio = 0.0; ratio <= 3.0 + 1e-9; ratio += 0.05) {
+    explicit_step.points.push_back({ratio, viscous_explicit(ratio, 1)[1]});
+    exact_step.points.push_back({ratio, viscous_exact(ratio, 1)[1]});
+  }
+  bound_high.points = {{0.0, 1.0}, {3.0, 1.0}};
+  bound_low.points = {{0.0, -1.0}, {3.0, -1.0}};
+  viscous.series = {bound_high, bound_low, explicit_step, exact_step};
+  viscous.notes = {"explicit: reverses v past 1, grows past 2"};
+  charts.push_back(viscous);
+
+  out << "\nWhere methods fail: regularized friction's stability boundary (block on flat ground, mu_s = 0.5)\n";
+  print_table(out, table);
+  out << "Creep on a 20 degree slope: within " << number(100.0 * worst_creep) << " % of epsilon*tan(theta)/mu_s\n";
+
+  std::vector<std::pair<std::string, std::string>> files{{directory + "/stability_map.csv", csv.str()}};
+  try {
+    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts(charts, 3, 1920, 1080));
+    files.emplace_back(directory + "/stability.png", std::string(png.begin(), png.end()));
+  } catch (const ui::HeadlessUnavailable& error) {
+    out << "stability.png: not drawn, " << error.what() << '\n';
+  }
+  return files;
+}
+
+}  // namespace frictionlab
