@@ -3,6 +3,7 @@
 // Figures are measured here and reported, never asserted: the machines are shared.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <functional>
 #include <ostream>
@@ -14,6 +15,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/reduced_model.h"
+#include "physics/stability.h"
 
 namespace frictionlab {
 
@@ -81,17 +83,26 @@ double cost_per_simulated_second(const std::function<void()>& work, double simul
   return median(costs);
 }
 
-std::string stick_slip_accuracy(bool quick, std::ostream& out) {
+std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<AccuracyRun>& runs) {
   const SpringPull setup;
   const double duration = 10.0;
   const int repeats = quick ? 1 : 3;
   const Trajectory exact = solve_exact(spring_pull_model(setup), duration);
   std::ostringstream csv;
-  csv << "method,hz,max_position_error_m,cpu_s_per_simulated_s\n";
-  std::vector<std::vector<std::string>> table{{"method", "hz", "max error (mm)", "CPU ms per simulated s"}};
+  csv << "method,hz,max_position_error_m,cpu_s_per_simulated_s,fails\n";
+  std::vector<std::vector<std::string>> table{{"method", "hz", "max error (mm)", "CPU ms per simulated s", "fails"}};
+  // The regularized law chatters wherever the step is past its stability boundary (where
+  // methods fail, below): such runs are kept, and marked.
+  const double epsilon = StepSettings{}.threshold_speed;
+  const FrictionPair pair = setup.block.pair;
   auto add = [&](const std::string& method, double hz, double error, double cost) {
-    csv << method << ',' << hz << ',' << error << ',' << cost << '\n';
-    table.push_back({method, format_number(hz), format_number(error * 1e3, 3), format_number(cost * 1e3, 3)});
+    const bool regularized = method.find("regularized") != std::string::npos;
+    const Integrator integrator = method.find("rk4") != std::string::npos ? Integrator::rk4 : Integrator::explicit_euler;
+    const bool chatters = regularized && hz > 0 && 1.0 / hz > theoretical_boundary(pair, 9.81, epsilon, integrator);
+    const std::string fails = !std::isfinite(error) ? "not a number" : chatters ? "chatters" : "";
+    csv << method << ',' << hz << ',' << error << ',' << cost << ',' << fails << '\n';
+    table.push_back({method, format_number(hz), format_number(error * 1e3, 3), format_number(cost * 1e3, 3), fails});
+    runs.push_back({method, hz, error, cost, fails});
   };
   const std::vector<double> rates = quick ? std::vector<double>{60, 240} : std::vector<double>{60, 120, 240, 480, 960};
   for (FrictionTreatment treatment : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
@@ -112,9 +123,8 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out) {
     for (const Sample& s : samples) worst = std::max(worst, std::abs(s.x - exact.position(s.t)));
     return worst;
   };
-  // The listener's default threshold speed, so the reduced regularized models and the Box2D
-  // threshold/regularized treatments are charted with the same epsilon.
-  const double epsilon = StepSettings{}.threshold_speed;
+  // The listener's default threshold speed (epsilon above), so the reduced regularized models
+  // and the Box2D threshold/regularized treatments are charted with the same epsilon.
   for (auto [name, integrator] : {std::pair{"reduced explicit-euler", Integrator::explicit_euler},
                                   std::pair{"reduced semi-implicit-euler", Integrator::semi_implicit_euler},
                                   std::pair{"reduced rk4", Integrator::rk4}}) {
@@ -205,7 +215,9 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   prepare_output_folder("bench: --out", directory);
 
   const std::string cost = listener_cost(quick, out);
-  const std::string accuracy = stick_slip_accuracy(quick, out);
+  std::vector<AccuracyRun> runs;
+  const std::string accuracy = stick_slip_accuracy(quick, out, runs);
+  const std::string work_precision = work_precision_png(runs);
   const std::string speed = lesson_speed(quick, out);
   const std::string frames = frame_speed(quick, out);
   const std::string window_frames = window_frame_speed(quick, out);
@@ -216,10 +228,11 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   if (!frames.empty()) files.emplace_back(directory + "/frame_speed.csv", frames);
   if (!window_frames.empty()) files.emplace_back(directory + "/window_frame.csv", window_frames);
   files.insert(files.end(), stability.begin(), stability.end());
+  if (!work_precision.empty()) files.emplace_back(directory + "/work_precision.png", work_precision);
   write_files_atomically(files);
   out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv, lesson_speed.csv" << (frames.empty() ? "" : ", frame_speed.csv")
       << (window_frames.empty() ? "" : ", window_frame.csv") << ", stability_map.csv"
-      << (stability.size() > 1 ? ", stability.png" : "")
+      << (stability.size() > 1 ? ", stability.png" : "") << (work_precision.empty() ? "" : ", work_precision.png")
       << " in " << directory << "\n";
   return 0;
 }

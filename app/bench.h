@@ -9,6 +9,17 @@
 namespace frictionlab {
 
 double median(std::vector<double> values);
+
+// One run of the spring problem: its error against the exact answer and what it cost.
+struct AccuracyRun {
+  std::string method;
+  double hz;
+  double error;  // max position error over the run, m
+  double cost;   // CPU s per simulated s
+  std::string fails;  // "" or why the run failed ("chatters", "not a number")
+};
+// The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
+std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.
 std::string frame_speed(bool quick, std::ostream& out);
 // The window_frame.csv text (CPU time per display frame of the window), or empty where EGL cannot start.

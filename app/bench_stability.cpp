@@ -60,8 +60,8 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
     }
     ui::ChartSeries theory{"theory: h = " + number(theoretical_boundary(wood_on_wood, g, 1.0, method.integrator) *
                                                    wood_on_wood.mu_s * g) + "\u00b7\u03b5/(\u03bcs\u00b7g)",
-                           {}, theory_colour, true, ui::Marker::none};
-    ui::ChartSeries measured{"measured boundary", {}, measured_colour, false, ui::Marker::dot};
+                           {}, theory_colour, true, ui::Marker::none, {}};
+    ui::ChartSeries measured{"measured boundary", {}, measured_colour, false, ui::Marker::dot, {}};
     for (const double epsilon : epsilons) theory.points.push_back({epsilon, theoretical_boundary(wood_on_wood, g, epsilon, method.integrator)});
     for (const double epsilon : {1e-3, 1e-2, 1e-1}) {
       const double expected = theoretical_boundary(wood_on_wood, g, epsilon, method.integrator);
@@ -82,9 +82,9 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   creep.x_label = "threshold speed \u03b5 (m/s)";
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
-  ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none};
+  ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
   ui::ChartSeries creep_measured{"semi-implicit Euler, h = \u03b5/(5\u00b7\u03bcs\u00b7g)", {}, measured_colour, false,
-                                 ui::Marker::dot};
+                                 ui::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {
     const double h = 0.2 * theoretical_boundary(wood_on_wood, g, epsilon, Integrator::semi_implicit_euler);
@@ -103,10 +103,10 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   viscous.title = "Viscous term: one step's factor on v";
   viscous.x_label = "h\u00b7c/m";
   viscous.y_label = "v after / v before";
-  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, chatter_colour, true, ui::Marker::none};
-  ui::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, ui::Marker::none};
-  ui::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, ui::Marker::none};
-  ui::ChartSeries bound_low{"", {}, theory_colour, true, ui::Marker::none};
+  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, chatter_colour, true, ui::Marker::none, {}};
+  ui::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, ui::Marker::none, {}};
+  ui::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, ui::Marker::none, {}};
+  ui::ChartSeries bound_low{"", {}, theory_colour, true, ui::Marker::none, {}};
   for (double ratio = 0.0; ratio <= 3.0 + 1e-9; ratio += 0.05) {
     explicit_step.points.push_back({ratio, viscous_explicit(ratio, 1)[1]});
     exact_step.points.push_back({ratio, viscous_exact(ratio, 1)[1]});

@@ -10,5 +10,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 build/app/frictionlab bench --out "$out"
 mkdir -p docs/charts
-cp "$out/stability.png" docs/charts/stability.png
-echo docs/charts/stability.png
+for chart in stability work_precision; do
+  cp "$out/$chart.png" "docs/charts/$chart.png"
+  echo "docs/charts/$chart.png"
+done

@@ -180,8 +180,14 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
   }
   for (const ChartSeries& series : chart.series) {
     std::vector<ImVec2> points;
-    for (const auto& [x, y] : series.points) {
-      if (x_axis.shows(x) && y_axis.shows(y)) points.push_back(to_screen(x, y));
+    for (std::size_t i = 0; i < series.points.size(); ++i) {
+      const auto [x, y] = series.points[i];
+      if (!x_axis.shows(x) || !y_axis.shows(y)) continue;
+      points.push_back(to_screen(x, y));
+      if (i < series.labels.size()) {
+        draw->AddText(font, 0.85f * text, ImVec2(points.back().x + 4.0f * s, points.back().y - 0.9f * text), series.colour,
+                      series.labels[i].c_str());
+      }
     }
     if (series.line && points.size() > 1) {
       draw->AddPolyline(points.data(), static_cast<int>(points.size()), series.colour, ImDrawFlags_None, 2.0f * s);

@@ -22,6 +22,7 @@ struct ChartSeries {
   ImU32 colour = IM_COL32(0, 0, 0, 255);
   bool line = true;
   Marker marker = Marker::none;
+  std::vector<std::string> labels;  // beside each point, when given (a step rate, say)
 };
 
 // One cell of a map: the point of a grid it stands for, and the category that colours it.
