@@ -7,14 +7,19 @@
 #include <ctime>
 #include <functional>
 #include <ostream>
+#include <iostream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "app/modes.h"
 #include "app/bench.h"
+#include "app/options.h"
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/reduced_model.h"
+#include "physics/recommend.h"
 #include "physics/stability.h"
 
 namespace frictionlab {
@@ -198,18 +203,72 @@ std::string lesson_speed(bool quick, std::ostream& out) {
 
 }  // namespace
 
+// frictionlab bench --recommend LESSON --tol X: the cheapest setting that answers the lesson's
+// benchmark problem within X, measured here.
+int run_recommend(const std::string& lesson, const std::string& tolerance_text, std::ostream& out) {
+  const BenchmarkProblem problem = lesson_problem(lesson);
+  const double tolerance =
+      option_number("--tol", tolerance_text, 0.0, 1e6, true, (" " + problem.unit).c_str());
+  Recommender recommender(problem, tolerance);
+  out << "Measuring " << problem.question << " (" << problem.unit << "), for every friction treatment at 30 to 1920 Hz "
+      << "with 1, 2 or 4 sub-steps:\n";
+  const bool terminal = &out == &std::cout && isatty(STDOUT_FILENO);
+  while (!recommender.done()) {
+    recommender.run_next();
+    if (!terminal) continue;  // a progress bar is for a person watching, not for a file
+    const int width = 40, filled = static_cast<int>(recommender.progress() * width + 0.5);
+    out << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(width - filled), ' ')
+        << "] " << static_cast<int>(recommender.progress() * 100.0 + 0.5) << " %" << std::flush;
+  }
+  out << "\n\n";
+  std::vector<Trial> trials = recommender.trials();
+  std::sort(trials.begin(), trials.end(), [](const Trial& a, const Trial& b) { return a.cost < b.cost; });
+  std::vector<std::vector<std::string>> table{{"setting", "error (" + problem.unit + ")", "CPU ms per simulated s", "meets"}};
+  int shown = 0;
+  for (const Trial& trial : trials) {
+    // The cheap end of the list, up to the first few that meet the tolerance.
+    if (shown >= 12) break;
+    if (trial.meets || shown < 6) {
+      table.push_back({describe(trial.settings), std::isfinite(trial.error) ? format_number(trial.error, 3) : "wrong answer",
+                       format_number(trial.cost * 1e3, 3), trial.meets ? "yes" : "no"});
+      ++shown;
+    }
+  }
+  print_table(out, table);
+  const std::optional<Trial> best = recommender.cheapest();
+  if (!best) {
+    out << "\nNo setting tried answers within " << format_number(tolerance, 3) << " " << problem.unit << ".\n";
+    return 1;
+  }
+  out << "\nCheapest within " << format_number(tolerance, 3) << " " << problem.unit << ": " << describe(best->settings)
+      << " (error " << format_number(best->error, 3) << " " << problem.unit << ", " << format_number(best->cost * 1e3, 3)
+      << " ms CPU per simulated s). In the window: the Model card tab; here: --hz " << best->settings.hz << " --substeps "
+      << best->settings.substeps << " --friction " << treatment_name(best->settings.treatment) << "\n";
+  return 0;
+}
+
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   bool quick = false;
-  std::string directory;
+  std::string directory, recommend, tolerance;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--quick") {
       quick = true;
     } else if (args[i] == "--out" && i + 1 < args.size() && !args[i + 1].empty()) {
       if (!directory.empty()) throw InvalidInput("bench: --out given twice; give one folder");
       directory = args[++i];
+    } else if (args[i] == "--recommend" && i + 1 < args.size()) {
+      recommend = args[++i];
+    } else if (args[i] == "--tol" && i + 1 < args.size()) {
+      tolerance = args[++i];
     } else {
-      throw InvalidInput("bench: unknown or incomplete option '" + args[i] + "'; usage: bench [--quick] --out DIR");
+      throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
+                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X");
     }
+  }
+  if (!recommend.empty() || !tolerance.empty()) {
+    if (recommend.empty()) throw InvalidInput("bench: --tol goes with --recommend LESSON");
+    if (tolerance.empty()) throw InvalidInput("bench --recommend: --tol X is required: the largest error to accept");
+    return run_recommend(recommend, tolerance, out);
   }
   if (directory.empty()) throw InvalidInput("bench: --out DIR is required (the folder for the CSV files)");
   prepare_output_folder("bench: --out", directory);

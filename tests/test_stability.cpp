@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "physics/recommend.h"
 #include "physics/stability.h"
 
 namespace frictionlab {
@@ -83,6 +84,46 @@ TEST(StabilityMap, CellsBelowTheBoundarySettleAndAboveChatter) {
     disagreements += cell.behaviour != expected;
   }
   EXPECT_EQ(disagreements, 0);
+}
+
+// The cheapest setting that answers a lesson's problem: the one the recommender names meets
+// the tolerance and costs no more than any other that does.
+TEST(Recommend, TheCheapestSettingMeetsTheToleranceAndNothingThatMeetsItIsCheaper) {
+  Recommender recommender(lesson_problem("incline"), 0.001, 1);
+  recommender.run_all();
+  EXPECT_EQ(recommender.trials().size(), 4u * 7u * 3u);
+  const std::optional<Trial> best = recommender.cheapest();
+  ASSERT_TRUE(best.has_value());
+  EXPECT_LE(best->error, 0.001);
+  int meeting = 0;
+  for (const Trial& trial : recommender.trials()) {
+    if (trial.meets) {
+      ++meeting;
+      EXPECT_GE(trial.cost, best->cost) << describe(trial.settings);
+    }
+    EXPECT_EQ(trial.meets, trial.error <= 0.001);
+  }
+  EXPECT_GT(meeting, 1);
+  // 1 mm over a 6.6 m slide is out of the default's reach (the release step still holds with
+  // mu_s, a lag of a·h that grows with t): halving the step halves the error.
+  StepSettings settings;
+  const double at_240 = lesson_problem("incline").error(settings);
+  settings.hz = 480;
+  const double at_480 = lesson_problem("incline").error(settings);
+  EXPECT_GT(at_240, 0.001);
+  EXPECT_NEAR(at_240 / at_480, 2.0, 0.3);
+}
+
+TEST(Recommend, AProblemForEachBuiltInLessonAndAClearMessageOtherwise) {
+  for (const char* lesson : {"spring_pull", "incline", "tipping_box"}) EXPECT_EQ(lesson_problem(lesson).lesson, lesson);
+  try {
+    lesson_problem("ramp");
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("spring_pull, incline and tipping_box"), std::string::npos);
+  }
+  // The box pushed above d/(2 mu_s) tips at m g d/(2 h) = 35.0 N; within a newton at 240 Hz.
+  EXPECT_LT(lesson_problem("tipping_box").error(StepSettings{}), 1.0);
 }
 
 }  // namespace

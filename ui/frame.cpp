@@ -154,6 +154,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         model_contents(lesson);
         ImGui::EndTabItem();
       }
+      if (style.more_tabs) style.more_tabs();
       ImGui::EndTabBar();
     }
     end_panel();

@@ -46,6 +46,8 @@ struct FrameStyle {
   // model card as two tabs of one panel, to leave the sliders room.
   std::function<void(ImVec2 corner, ImVec2 size)> parameters_panel;
   float parameters_height = 0.0f;
+  // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
+  std::function<void()> more_tabs;
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and

@@ -78,6 +78,8 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   controls_.clear();
   const float s = fonts.scale;
   handle_keys();
+  // One setting of the cheapest-setting search a frame: the window stays live while it measures.
+  if (recommender_ && !recommender_->done()) recommender_->run_next();
   playback_->advance(wall_seconds);
   playback_->watch_file(wall_seconds);
   try_failed_script(wall_seconds);
@@ -96,6 +98,7 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   style.origin = origin;
   style.readings = &playback_->readings();
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size) { parameters_panel(corner, size); };
+  style.more_tabs = [this] { cheapest_setting_tab(); };
   ImGui::PushFont(fonts.body);
   style.parameters_height = parameters_height();
   ImGui::PopFont();

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/recommend.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
@@ -95,6 +96,7 @@ class Sandbox {
   void menu_bar();
   void transport_bar(ImVec2 corner, ImVec2 size);
   void parameters_panel(ImVec2 corner, ImVec2 size);
+  void cheapest_setting_tab();
   float parameters_height() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);
@@ -128,6 +130,8 @@ class Sandbox {
   std::vector<std::pair<int, bool>> taps_;  // keys reported since the last frame, with Ctrl
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
+  std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on
+  double recommend_tolerance_ = 0.0;           // as typed; 0: the problem's default
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;

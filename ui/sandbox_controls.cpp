@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 
 #include "physics/materials.h"
 #include "ui/sandbox.h"
@@ -281,6 +282,59 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     }
   }
   ImGui::End();
+}
+
+void Sandbox::cheapest_setting_tab() {
+  const bool open = ImGui::BeginTabItem("Cheapest setting");
+  remember("Cheapest setting tab");
+  if (!open) return;
+  const std::string lesson = std::filesystem::path(playback_->lesson().path()).stem().string();
+  std::optional<BenchmarkProblem> problem;
+  try {
+    problem = lesson_problem(lesson);
+  } catch (const InvalidInput&) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("Only spring_pull, incline and tipping_box have a benchmark problem with an exact answer to "
+                        "measure settings on.");
+    ImGui::PopTextWrapPos();
+    ImGui::EndTabItem();
+    return;
+  }
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", problem->question.c_str());
+  ImGui::PopTextWrapPos();
+  if (recommend_tolerance_ <= 0.0) recommend_tolerance_ = problem->unit == "N" ? 0.5 : 0.001;
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("within");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f * fonts_->scale);
+  ImGui::InputDouble("##tolerance", &recommend_tolerance_, 0.0, 0.0, "%g");
+  remember("tolerance");
+  if (recommend_tolerance_ <= 0.0) recommend_tolerance_ = 1e-9;
+  ImGui::SameLine();
+  ImGui::TextUnformatted(problem->unit.c_str());
+  ImGui::SameLine();
+  const bool measuring = recommender_ && !recommender_->done() && recommender_->problem().lesson == lesson;
+  ImGui::BeginDisabled(measuring);
+  if (ImGui::Button("Measure")) recommender_ = std::make_unique<Recommender>(*problem, recommend_tolerance_, 1);
+  ImGui::EndDisabled();
+  remember("measure");
+  if (recommender_ && recommender_->problem().lesson == lesson) {
+    if (!recommender_->done()) {
+      ImGui::ProgressBar(static_cast<float>(recommender_->progress()));
+    } else if (const std::optional<Trial> best = recommender_->cheapest()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::Text("Cheapest: %s, error %.3g %s, %.3g ms CPU per simulated s.", describe(best->settings).c_str(), best->error,
+                  problem->unit.c_str(), best->cost * 1e3);
+      ImGui::PopTextWrapPos();
+      if (ImGui::Button("Use it")) change_settings(best->settings);
+      remember("use it");
+    } else {
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "No setting tried answers within %g %s.",
+                         recommender_->tolerance(), problem->unit.c_str());
+    }
+  }
+  ImGui::EndTabItem();
 }
 
 }  // namespace frictionlab::ui
