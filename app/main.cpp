@@ -58,7 +58,11 @@ int main(int argc, char** argv) {
       std::cout << usage;
       return 0;
     }
-    std::cerr << "frictionlab: unknown command '" << command << "'; commands: list, run, check, render, demo, bench, help; or a lesson to open in the window: spring_pull, incline, tipping_box, or a .lua file\n";
+    std::string lessons;
+    for (const std::string& name : frictionlab::lessons::builtin_lessons()) lessons += name + ", ";
+    std::cerr << "frictionlab: unknown command '" << command
+              << "'; commands: list, run, check, render, demo, bench, help; or a lesson to open in the window: " << lessons
+              << "or a .lua file\n";
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';

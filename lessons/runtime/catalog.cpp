@@ -8,7 +8,7 @@
 namespace frictionlab::lessons {
 
 const std::vector<std::string>& builtin_lessons() {
-  static const std::vector<std::string> names = {"spring_pull", "incline", "tipping_box"};
+  static const std::vector<std::string> names = {"spring_pull", "incline", "tipping_box", "where_methods_fail"};
   return names;
 }
 

@@ -4,6 +4,7 @@
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
+#include "physics/reduced_model.h"
 #include "physics/scenarios.h"
 
 namespace frictionlab::lessons {
@@ -164,6 +165,47 @@ int stacked_blocks(lua_State* state) {
   });
 }
 
+// The tribology article's regularized friction on a slope, run the way a game runs it: a
+// block released at rest, a fixed step, and friction -mu_s·N·v/epsilon below the threshold
+// speed. Returns speed and distance down the slope at t = 0, step, 2·step, ... so a lesson can
+// set it beside its own (Box2D) block and the exact answer.
+int regularized_run(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.regularized_run",
+                  {"angle", "mu_s", "mu_k", "epsilon", "step", "duration", "integrator", "g"});
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
+    const double g = fields.number("g", "m/s²", standard_gravity);
+    const double step = fields.number_in("step", "s", 1e-6, 1.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
+    const std::string name = fields.text("integrator", "semi-implicit");
+    const Integrator integrator = name == "explicit"        ? Integrator::explicit_euler
+                                  : name == "semi-implicit" ? Integrator::semi_implicit_euler
+                                  : name == "rk4"           ? Integrator::rk4
+                                                            : throw InvalidInput("theory.regularized_run: integrator '" + name +
+                                                                                 "' is none of explicit, semi-implicit, rk4");
+    if (duration / step > 200000.0) {
+      throw InvalidInput("theory.regularized_run: duration / step is over 200000 samples; take a longer step or a shorter run");
+    }
+    OneDofBlock block;
+    block.mass = 1.0;
+    block.normal_force = g * std::cos(angle);
+    block.constant_force = g * std::sin(angle);
+    block.pair = {fields.number_in("mu_s", "", 0.0, 2.0, true), fields.number_in("mu_k", "", 0.0, 2.0), 0.0, 0.0};
+    const double epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    const std::vector<Sample> samples = integrate_regularized(block, duration, step, epsilon, integrator);
+    lua_createtable(state, 0, 2);
+    for (const auto& [key, of] : {std::pair{"speed", &Sample::v}, std::pair{"distance", &Sample::x}}) {
+      lua_createtable(state, static_cast<int>(samples.size()), 0);
+      for (std::size_t i = 0; i < samples.size(); ++i) {
+        lua_pushnumber(state, samples[i].*of);
+        lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+      }
+      lua_setfield(state, -2, key);
+    }
+    return 1;
+  });
+}
+
 }  // namespace
 
 void register_theory_api(lua_State* state) {
@@ -177,6 +219,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_on_incline", disk_on_incline},
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
+                                {"regularized_run", regularized_run},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);
   lua_setglobal(state, "theory");

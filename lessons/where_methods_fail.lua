@@ -1,0 +1,78 @@
+-- where_methods_fail: a block on a slope it should stick to, simulated three ways.
+-- The tribology article's games replace Coulomb's jump at v = 0 with a steep line: below a
+-- threshold speed epsilon, friction = -mu_s·N·v/epsilon. With a large epsilon the block creeps
+-- down a slope that should hold it, at epsilon·tan(angle)/mu_s. With a small one the line is so
+-- steep that a fixed step overshoots it: it settles only while the step h < 2·epsilon/(mu_s·g·cos
+-- angle), and beyond that the block jitters for ever. FrictionLab's stick-slip treatment (the
+-- block you see) holds it still, as the exact answer does. `frictionlab bench` draws the map of
+-- where each integrator settles or chatters.
+
+lesson {
+  title = "Where methods fail",
+  question = "Why does a game's block creep down a slope it should stick to, or jitter on it, and what holds it still?",
+  duration = 3,
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local angle = parameter { "angle", 20, min = 2, max = 30, unit = "°", text = "slope angle (below atan 0.6 = 31°: it sticks)" }
+local large = parameter { "large_epsilon", 0.05, min = 0.005, max = 0.5, unit = "m/s", text = "a large threshold speed" }
+local small = parameter { "small_epsilon", 0.002, min = 0.0001, max = 0.05, unit = "m/s", text = "a small threshold speed" }
+
+material { "block", density = 500, note = "the mass is set on the block itself" }
+material { "slope", density = 500, note = "fixed, so its density plays no part" }
+pair { "block", "slope", mu_s = 0.6, mu_k = 0.5 }
+
+-- World -----------------------------------------------------------------------------------
+ground { material = "slope" }
+local slope = incline { "slope", material = "slope", angle = angle, length = 6 }
+local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 4, mass = 1 }
+local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
+
+-- The regularized law, run as a game would run it: a fixed step, this lesson's own.
+local g = 9.81
+local function regularized(epsilon)
+  return theory.regularized_run { angle = angle, mu_s = param.mu_s, mu_k = param.mu_k, epsilon = epsilon,
+                                  step = step_length(), duration = 3 }
+end
+local creeping, jittering = regularized(large), regularized(small)
+local function sample(values)  -- the run's value at this moment of the lesson
+  return function() return values[math.floor(time() / step_length() + 0.5) + 1] or 0 end
+end
+
+-- Probes and plots ------------------------------------------------------------------------
+probe { "stick_slip", unit = "m", read = { block, "distance", along = downhill } }
+probe { "exact", unit = "m", function() return 0 end }  -- Coulomb: it never moves
+probe { "large_epsilon_distance", unit = "m", sample(creeping.distance) }
+probe { "stick_slip_speed", unit = "m/s", read = { block, "speed", along = downhill } }
+probe { "small_epsilon_speed", unit = "m/s", sample(jittering.speed) }
+
+plot { "Distance down the slope", y = { "large_epsilon_distance", "stick_slip", "exact" } }
+plot { "Speed: the small threshold jitters", y = { "small_epsilon_speed", "stick_slip_speed" } }
+
+-- Expectations ----------------------------------------------------------------------------
+local function over() return time() >= 3 - 0.5 * step_length() end
+
+expect { "stick-slip: slid", unit = "m",
+  predicted = 0,
+  measured = function() return over() and value_at("stick_slip", time()) or nil end,
+  tolerance = 0.001 }
+
+expect { "large ε: creep speed", unit = "m/s",
+  predicted = function() return large * math.tan(math.rad(angle)) / param.mu_s end,
+  measured = function() return over() and creeping.speed[#creeping.speed] or nil end,
+  tolerance = function() return 0.01 * large * math.tan(math.rad(angle)) / param.mu_s end }
+
+-- Past the boundary the speed flips sign at nearly every step; below it, it dies away.
+expect { "small ε: at this step",
+  predicted = function()
+    local boundary = 2 * small / (param.mu_s * g * math.cos(math.rad(angle)))
+    return step_length() > boundary and "jitters" or "settles"
+  end,
+  measured = function()
+    if not over() then return nil end
+    local speeds, flips = history("small_epsilon_speed"), 0
+    for i = math.floor(#speeds / 2) + 1, #speeds do
+      if speeds[i] * speeds[i - 1] < 0 then flips = flips + 1 end
+    end
+    return flips > #speeds / 8 and "jitters" or "settles"
+  end }
