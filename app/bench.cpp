@@ -201,8 +201,6 @@ std::string lesson_speed(bool quick, std::ostream& out) {
   return csv.str();
 }
 
-}  // namespace
-
 // frictionlab bench --recommend LESSON --tol X: the cheapest setting that answers the lesson's
 // benchmark problem within X, measured here.
 int run_recommend(const std::string& lesson, const std::string& tolerance_text, std::ostream& out) {
@@ -242,10 +240,12 @@ int run_recommend(const std::string& lesson, const std::string& tolerance_text, 
   }
   out << "\nCheapest within " << format_number(tolerance, 3) << " " << problem.unit << ": " << describe(best->settings)
       << " (error " << format_number(best->error, 3) << " " << problem.unit << ", " << format_number(best->cost * 1e3, 3)
-      << " ms CPU per simulated s). In the window: the Model card tab; here: --hz " << best->settings.hz << " --substeps "
+      << " ms CPU per simulated s). In the window: the Cheapest setting tab; here: --hz " << best->settings.hz << " --substeps "
       << best->settings.substeps << " --friction " << treatment_name(best->settings.treatment) << "\n";
   return 0;
 }
+
+}  // namespace
 
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   bool quick = false;
@@ -267,6 +267,7 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   }
   if (!recommend.empty() || !tolerance.empty()) {
     if (recommend.empty()) throw InvalidInput("bench: --tol goes with --recommend LESSON");
+    if (quick || !directory.empty()) throw InvalidInput("bench --recommend takes no --quick or --out: it only prints");
     if (tolerance.empty()) throw InvalidInput("bench --recommend: --tol X is required: the largest error to accept");
     return run_recommend(recommend, tolerance, out);
   }

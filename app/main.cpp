@@ -27,7 +27,10 @@ const char* const usage =
     "                       [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] --out PATH\n"
     "                                            draw the lesson at each time to PNG, with no display\n"
     "       frictionlab demo                     theory beside simulation for every situation\n"
-    "       frictionlab bench [--quick] --out DIR     speed and accuracy figures\n";
+    "       frictionlab bench [--quick] --out DIR     speed and accuracy figures, CSV files and charts\n"
+    "       frictionlab bench --recommend LESSON --tol X\n"
+    "                                            the cheapest setting that answers the lesson's benchmark\n"
+    "                                            problem within X (measured now; exit 1 if none does)\n";
 
 }  // namespace
 
