@@ -29,7 +29,6 @@ local block = box { "block", material = "block", width = 0.4, height = 0.2, on =
 local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 
 -- The regularized law, run as a game would run it: a fixed step, this lesson's own.
-local g = 9.81
 local function regularized(epsilon)
   return theory.regularized_run { angle = angle, mu_s = param.mu_s, mu_k = param.mu_k, epsilon = epsilon,
                                   step = step_length(), duration = 3 }
