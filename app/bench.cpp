@@ -282,17 +282,20 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   const std::string frames = frame_speed(quick, out);
   const std::string window_frames = window_frame_speed(quick, out);
   const auto stability = stability_files(quick, directory, out);
+  const auto problems = problem_files(quick, directory, out);
   std::vector<std::pair<std::string, std::string>> files{{directory + "/listener_cost.csv", cost},
                                                          {directory + "/stick_slip_accuracy.csv", accuracy},
                                                          {directory + "/lesson_speed.csv", speed}};
   if (!frames.empty()) files.emplace_back(directory + "/frame_speed.csv", frames);
   if (!window_frames.empty()) files.emplace_back(directory + "/window_frame.csv", window_frames);
   files.insert(files.end(), stability.begin(), stability.end());
+  files.insert(files.end(), problems.begin(), problems.end());
   if (!work_precision.empty()) files.emplace_back(directory + "/work_precision.png", work_precision);
   write_files_atomically(files);
   out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv, lesson_speed.csv" << (frames.empty() ? "" : ", frame_speed.csv")
       << (window_frames.empty() ? "" : ", window_frame.csv") << ", stability_map.csv"
       << (stability.size() > 1 ? ", stability.png" : "") << (work_precision.empty() ? "" : ", work_precision.png")
+      << ", work_precision.csv" << (problems.size() > 1 ? ", problems.png" : "")
       << " in " << directory << "\n";
   return 0;
 }

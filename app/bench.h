@@ -24,6 +24,10 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 std::string frame_speed(bool quick, std::ostream& out);
 // The window_frame.csv text (CPU time per display frame of the window), or empty where EGL cannot start.
 std::string window_frame_speed(bool quick, std::ostream& out);
+// work_precision.csv (every problem × treatment × rate, and the spring's iterations and
+// sub-steps) and problems.png (a work-precision chart per problem), as (path, bytes).
+std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory,
+                                                                std::ostream& out);
 // stability_map.csv and stability.png (the charts; left out where EGL cannot start), as (path, bytes).
 std::vector<std::pair<std::string, std::string>> stability_files(bool quick, const std::string& directory,
                                                                   std::ostream& out);

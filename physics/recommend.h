@@ -15,7 +15,8 @@
 namespace frictionlab {
 
 struct BenchmarkProblem {
-  std::string lesson;    // the built-in lesson it stands for
+  std::string name;      // short, for a chart's title
+  std::string lesson;    // the built-in lesson it stands for ("" for the benchmark's others)
   std::string question;  // what is compared with the exact answer, in words
   std::string unit;      // of the error
   double simulated = 1.0;  // s, for the cost per simulated second
@@ -24,6 +25,10 @@ struct BenchmarkProblem {
 };
 // spring_pull, incline or tipping_box; throws InvalidInput listing them for another name.
 BenchmarkProblem lesson_problem(const std::string& lesson);
+// Every problem the benchmark charts, each with an exact answer: the three lessons' problems,
+// the block on a slope just below its sticking angle, slides to rest with c and with b, the
+// tipping threshold found by bisection against d/(2·mu_s), and the disk that starts to roll.
+std::vector<BenchmarkProblem> benchmark_problems();
 
 struct Trial {
   StepSettings settings;

@@ -10,7 +10,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 build/app/frictionlab bench --out "$out"
 mkdir -p docs/charts
-for chart in stability work_precision; do
+for chart in stability work_precision problems; do
   cp "$out/$chart.png" "docs/charts/$chart.png"
   echo "docs/charts/$chart.png"
 done

@@ -126,5 +126,36 @@ TEST(Recommend, AProblemForEachBuiltInLessonAndAClearMessageOtherwise) {
   EXPECT_LT(lesson_problem("tipping_box").error(StepSettings{}), 1.0);
 }
 
+// Every benchmark problem has an exact answer the stick-slip treatment approaches as the step
+// halves (or meets exactly), and the slope below its sticking angle tells the treatments apart.
+TEST(BenchmarkProblems, StickSlipConvergesOnEachAndHoldsTheSlopeTheOthersLetGo) {
+  const std::vector<BenchmarkProblem> problems = benchmark_problems();
+  ASSERT_EQ(problems.size(), 8u);
+  StepSettings coarse, fine;
+  fine.hz = 480;
+  for (const BenchmarkProblem& problem : problems) {
+    const double at_240 = problem.error(coarse), at_480 = problem.error(fine);
+    EXPECT_TRUE(std::isfinite(at_240)) << problem.name;
+    if (problem.name.rfind("Tipping threshold", 0) == 0) {
+      // A floor, not a step error: the bisection's 0.17 mm and Box2D's 1 cm polygon skin, which
+      // moves the corner the box tips about.
+      EXPECT_LT(std::max(at_240, at_480), 0.002) << problem.name;
+      continue;
+    }
+    EXPECT_LE(at_480, at_240 + 1e-12) << problem.name << ": halving the step made it worse";
+  }
+  const BenchmarkProblem& holds = problems[2];
+  ASSERT_EQ(holds.name, "Incline 25\u00b0: it sticks");
+  EXPECT_EQ(holds.error(coarse), 0.0);
+  StepSettings box2d, regularized;
+  box2d.treatment = FrictionTreatment::box2d;
+  regularized.treatment = FrictionTreatment::regularized;
+  // One coefficient (mu_k = 0.4 < tan 25° = 0.47) cannot hold it: it slides a metre in 2 s.
+  EXPECT_GT(holds.error(box2d), 1.0);
+  // The regularized law at 240 Hz with epsilon = 0.01 m/s is past its boundary on this slope
+  // (2·eps/(mu_s·g·cos 25°) = 3.7 ms < 4.2 ms): its chatter carries it past epsilon and away.
+  EXPECT_GT(holds.error(regularized), 1.0);
+}
+
 }  // namespace
 }  // namespace frictionlab

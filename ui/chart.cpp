@@ -67,6 +67,16 @@ std::vector<Tick> ticks_of(const Axis& axis) {
     for (int exponent = first; exponent <= last; ++exponent) {
       if ((exponent - first) % every == 0) ticks.push_back({static_cast<double>(exponent), power_of_ten(exponent)});
     }
+    if (ticks.size() >= 2) return ticks;
+    // Less than two decades in view: 1, 2 and 5 times each power of ten, so the axis still reads.
+    ticks.clear();
+    for (int exponent = first - 1; exponent <= last; ++exponent) {
+      for (const int mantissa : {1, 2, 5}) {
+        const double at = exponent + std::log10(static_cast<double>(mantissa));
+        if (at < axis.low - 1e-9 || at > axis.high + 1e-9) continue;
+        ticks.push_back({at, mantissa == 1 ? power_of_ten(exponent) : std::to_string(mantissa) + "\u00d7" + power_of_ten(exponent)});
+      }
+    }
     return ticks;
   }
   const std::vector<double> values = axis_ticks(axis.low, axis.high, 5);
