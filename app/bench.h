@@ -18,6 +18,8 @@ struct AccuracyRun {
   double cost;   // CPU s per simulated s
   std::string fails;  // "" or why the run failed ("chatters", "not a number")
 };
+// The runs no other beats on both cost and error: (cost, error) pairs, cheapest first.
+std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double, double>> points);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.

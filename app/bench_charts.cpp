@@ -45,6 +45,15 @@ double fitted_order(const std::vector<std::pair<double, double>>& step_and_error
 
 }  // namespace
 
+std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double, double>> points) {
+  std::sort(points.begin(), points.end());
+  std::vector<std::pair<double, double>> front;
+  for (const auto& point : points) {
+    if (front.empty() || point.second < front.back().second) front.push_back(point);
+  }
+  return front;
+}
+
 std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
   ui::Chart work;
   work.title = "Spring stick-slip: error against cost";
@@ -60,7 +69,7 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
   std::vector<std::string> order;  // methods, as met
   std::map<std::string, std::vector<const AccuracyRun*>> by_method;
   for (const AccuracyRun& run : runs) {
-    if (run.hz <= 0.0 || !(run.error > 0.0)) continue;  // the exact reference has no step and no error
+    if (run.hz <= 0.0) continue;  // the exact reference has no step and no error
     if (!by_method.count(run.method)) order.push_back(run.method);
     by_method[run.method].push_back(&run);
   }
@@ -72,6 +81,11 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
     ui::ChartSeries step_curve{"", {}, colour, true, ui::Marker::dot, {}};
     std::vector<std::pair<double, double>> converging;
     for (const AccuracyRun* run : by_method[order[i]]) {
+      if (!std::isfinite(run->error)) {
+        // Not a number: crossed along the top of the chart, at its cost.
+        failures.points.push_back({run->cost, 1.0});
+        continue;
+      }
       cost_curve.points.push_back({run->cost, run->error});
       cost_curve.labels.push_back(std::to_string(static_cast<int>(run->hz)));
       step_curve.points.push_back({1.0 / run->hz, run->error});
@@ -93,17 +107,7 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
     work.series.push_back(cost_curve);
     convergence.series.push_back(step_curve);
   }
-  // The Pareto front: no other sound run is both cheaper and more accurate.
-  std::sort(sound.begin(), sound.end());
-  ui::ChartSeries front{"Pareto front", {}, IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}};
-  double best = INFINITY;
-  for (const auto& [cost, error] : sound) {
-    if (error < best) {
-      front.points.push_back({cost, error});
-      best = error;
-    }
-  }
-  work.series.push_back(front);
+  work.series.push_back({"Pareto front", pareto_front(sound), IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}});
   if (!failures.points.empty()) work.series.push_back(failures);
   work.notes = {"points labelled by step rate (Hz); the exact event-driven solution is the reference (error 0)"};
   convergence.notes = {"order: slope of log error against log h over the runs that did not fail"};

@@ -17,24 +17,6 @@
 namespace frictionlab {
 namespace {
 
-struct ProblemRun {
-  StepSettings settings;
-  double error, cost;
-};
-
-double cpu_now() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-
-ProblemRun measure(const BenchmarkProblem& problem, const StepSettings& settings, int repeats) {
-  std::vector<double> costs;
-  double error = 0.0;
-  for (int r = 0; r < repeats; ++r) {
-    const double start = cpu_now();
-    error = problem.error(settings);
-    costs.push_back((cpu_now() - start) / problem.simulated);
-  }
-  return {settings, error, median(costs)};
-}
-
 const ImU32 treatment_colours[] = {IM_COL32(0, 114, 178, 255), IM_COL32(230, 159, 0, 255), IM_COL32(0, 158, 115, 255),
                                    IM_COL32(204, 121, 167, 255)};
 constexpr FrictionTreatment treatments[] = {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
@@ -59,7 +41,8 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     chart.y_label = "error (" + problem.unit + ")";
     chart.log_x = chart.log_y = true;
     std::vector<std::pair<double, double>> sound;
-    int exact = 0, wrong = 0;
+    std::vector<double> wrong_costs;
+    int exact = 0;
     std::vector<std::string> row{problem.name};
     for (std::size_t t = 0; t < 4; ++t) {
       ui::ChartSeries series{std::string(treatment_name(treatments[t])), {}, treatment_colours[t], true, ui::Marker::dot, {}};
@@ -68,14 +51,14 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
         StepSettings settings;
         settings.treatment = treatments[t];
         settings.hz = hz;
-        const ProblemRun run = measure(problem, settings, repeats);
+        const Trial run = measure_setting(problem, settings, repeats, INFINITY);
         const bool failed = !std::isfinite(run.error);
-        csv << problem.name << ",\"" << problem.question << "\"," << problem.unit << ',' << treatment_name(treatments[t]) << ',' << hz << ",1,"
+        csv << '"' << problem.name << "\",\"" << problem.question << "\"," << problem.unit << ',' << treatment_name(treatments[t]) << ',' << hz << ",1,"
             << settings.velocity_iterations << ',' << run.error << ',' << run.cost << ',' << (failed ? "wrong answer" : "")
             << '\n';
         if (hz == 240) at_240 = run.error;
         if (failed) {
-          ++wrong;
+          wrong_costs.push_back(run.cost);
           continue;
         }
         exact += run.error < error_floor;
@@ -89,18 +72,16 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     }
     row.push_back(problem.unit);
     table.push_back(row);
-    std::sort(sound.begin(), sound.end());
-    ui::ChartSeries front{"Pareto front", {}, IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}};
-    double best = INFINITY;
-    for (const auto& [cost, error] : sound) {
-      if (error < best) {
-        front.points.push_back({cost, error});
-        best = error;
-      }
+    chart.series.push_back({"Pareto front", pareto_front(sound), IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}});
+    if (!wrong_costs.empty()) {
+      // A wrong answer has no error to draw: it is crossed along the top, at its cost.
+      double top = error_floor;
+      for (const auto& point : sound) top = std::max(top, point.second);
+      ui::ChartSeries wrong{"wrong answer", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}};
+      for (const double cost : wrong_costs) wrong.points.push_back({cost, 3.0 * top});
+      chart.series.push_back(wrong);
     }
-    chart.series.push_back(front);
     if (exact > 0) chart.notes.push_back(std::to_string(exact) + " runs exact (error 0), drawn at 10\u207b\u00b9\u00b2");
-    if (wrong > 0) chart.notes.push_back(std::to_string(wrong) + " runs got the answer wrong (not drawn)");
     charts.push_back(chart);
   }
 
@@ -117,8 +98,8 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   for (const int count : quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}) {
     StepSettings settings;
     settings.velocity_iterations = count;
-    const ProblemRun run = measure(spring, settings, repeats);
-    csv << spring.name << ",\"" << spring.question << "\",m,stick-slip,240,1," << count << ',' << run.error << ',' << run.cost << ",\n";
+    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
+    csv << '"' << spring.name << "\",\"" << spring.question << "\",m,stick-slip,240,1," << count << ',' << run.error << ',' << run.cost << ",\n";
     iterations.points.push_back({run.cost, std::max(run.error, error_floor)});
     iterations.labels.push_back(std::to_string(count));
   }
@@ -126,8 +107,8 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     StepSettings settings;
     settings.hz = 60;
     settings.substeps = count;
-    const ProblemRun run = measure(spring, settings, repeats);
-    csv << spring.name << ",\"" << spring.question << "\",m,stick-slip,60," << count << ",8," << run.error << ',' << run.cost << ",\n";
+    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
+    csv << '"' << spring.name << "\",\"" << spring.question << "\",m,stick-slip,60," << count << ",8," << run.error << ',' << run.cost << ",\n";
     substeps.points.push_back({run.cost, std::max(run.error, error_floor)});
     substeps.labels.push_back(std::to_string(count) + "\u00d7");
   }

@@ -83,7 +83,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
   ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries creep_measured{"semi-implicit Euler, h = \u03b5/(5\u00b7\u03bcs\u00b7g)", {}, measured_colour, false,
+  ui::ChartSeries creep_measured{"semi-implicit Euler, h = 2\u03b5/(5\u00b7\u03bcs\u00b7g)", {}, measured_colour, false,
                                  ui::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {

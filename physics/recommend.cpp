@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+
+#include <time.h>
 #include <sstream>
 
 #include "physics/closed_forms.h"
@@ -10,8 +12,6 @@
 
 namespace frictionlab {
 namespace {
-
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 // A block released on a 40° slope (above atan 0.6 = 31°, so it slides): the distance it has
 // gone against ½·g·(sin θ − μk·cos θ)·t², at every step of 2 s.
@@ -68,11 +68,16 @@ double tipping_threshold_error(const StepSettings& settings) {
   PushedBox setup;
   const double mg = setup.block.mass * standard_gravity;
   double low = 0.2, high = 0.9;  // slides at low, tips at high
+  bool tipped_once = false, slid_once = false;
   for (int i = 0; i < 12; ++i) {
     setup.push_height = 0.5 * (low + high);
     const double first = std::min(setup.block.pair.mu_s * mg, mg * setup.block.width / (2.0 * setup.push_height));
-    (run_pushed_box(setup, settings, first / setup.push_rate + 1.0).tipped ? high : low) = setup.push_height;
+    const bool tipped = run_pushed_box(setup, settings, first / setup.push_rate + 1.0).tipped;
+    (tipped ? high : low) = setup.push_height;
+    (tipped ? tipped_once : slid_once) = true;
   }
+  // Never one outcome or the other: no threshold inside the range, the answer is wrong.
+  if (!tipped_once || !slid_once) return INFINITY;
   return std::abs(0.5 * (low + high) - theory::tip_height(setup.block.width, setup.block.pair.mu_s));
 }
 
@@ -168,21 +173,31 @@ Recommender::Recommender(BenchmarkProblem problem, double tolerance, int repeats
   }
 }
 
-void Recommender::run_next() {
-  if (done()) return;
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+Trial measure_setting(const BenchmarkProblem& problem, const StepSettings& settings, int repeats, double tolerance) {
   Trial trial;
-  trial.settings = candidates_[next_++];
+  trial.settings = settings;
   std::vector<double> costs;
   // The error is the same each time (the step is fixed); the cost is the median of the repeats.
-  for (int r = 0; r < repeats_; ++r) {
-    const double start = cpu_seconds();
-    trial.error = problem_.error(trial.settings);
-    costs.push_back((cpu_seconds() - start) / problem_.simulated);
+  for (int r = 0; r < std::max(1, repeats); ++r) {
+    const double start = thread_cpu_seconds();
+    trial.error = problem.error(settings);
+    costs.push_back((thread_cpu_seconds() - start) / problem.simulated);
   }
   std::sort(costs.begin(), costs.end());
   trial.cost = costs[costs.size() / 2];
-  trial.meets = trial.error <= tolerance_;
-  trials_.push_back(trial);
+  trial.meets = trial.error <= tolerance;
+  return trial;
+}
+
+void Recommender::run_next() {
+  if (done()) return;
+  trials_.push_back(measure_setting(problem_, candidates_[next_++], repeats_, tolerance_));
 }
 
 std::optional<Trial> Recommender::cheapest() const {

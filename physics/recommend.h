@@ -37,6 +37,12 @@ struct Trial {
   bool meets = false;
 };
 
+// CPU seconds this thread has used: a measurement's own cost, whatever other threads (Mesa's
+// rasterizer in the window) are doing.
+double thread_cpu_seconds();
+// One setting on one problem: its error, and the median cost of `repeats` runs.
+Trial measure_setting(const BenchmarkProblem& problem, const StepSettings& settings, int repeats, double tolerance);
+
 class Recommender {
  public:
   // Every treatment at 30 to 1920 Hz with 1, 2 or 4 sub-steps. Throws InvalidInput for a

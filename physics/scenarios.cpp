@@ -285,21 +285,30 @@ PushResult run_pushed_box(const PushedBox& setup, const StepSettings& settings, 
   const b2Body* box = scene->body("box");
   const b2Body* ground = scene->body("ground");
   PushResult result;
+  double back_before = NAN;  // the back edge's load at the step before, N
   run(*scene, duration, [&] {
+    // The push applied during the step just taken (it is set at the step's start).
+    const double push = setup.push_rate * (scene->time() - scene->frame_step());
     const ContactRecord* contact = scene->friction().find(box, ground);
-    if (contact == nullptr) {
-      result.tipped = true;  // nothing touches the ground any more: it has gone over
-    } else if (contact->state == ContactState::slipping) {
+    if (contact != nullptr && contact->state == ContactState::slipping) {
       result.tipped = false;
-    } else {
-      // Tipping starts when the back edge stops carrying any of the weight.
-      const double total = contact->point_normal_force[0] + contact->point_normal_force[1];
-      const double back = std::min(contact->point_normal_force[0], contact->point_normal_force[1]);
-      const bool lifted = contact->point_count < 2 || back < 0.001 * total;
-      if (!lifted) return false;
-      result.tipped = true;
+      result.force = push;
+      return true;
     }
-    result.force = setup.push_rate * (scene->time() - scene->frame_step());
+    // Tipping starts when the back edge stops carrying any of the weight: where its load,
+    // falling in a straight line with the push, reaches zero between two steps.
+    const double back = contact == nullptr || contact->point_count < 2
+                            ? 0.0
+                            : std::min(contact->point_normal_force[0], contact->point_normal_force[1]);
+    const double total = contact == nullptr ? 0.0 : contact->point_normal_force[0] + contact->point_normal_force[1];
+    if (back > 1e-9 * total) {
+      back_before = back;
+      return false;
+    }
+    result.tipped = true;
+    const double step_push = setup.push_rate * scene->frame_step();
+    const double fraction = std::isfinite(back_before) ? back_before / (back_before - back) : 1.0;
+    result.force = push - step_push + fraction * step_push;
     return true;
   });
   return result;

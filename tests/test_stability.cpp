@@ -76,14 +76,18 @@ TEST(Viscous, AnExplicitForceDivergesPastTwoAndTheExactStepNever) {
 TEST(StabilityMap, CellsBelowTheBoundarySettleAndAboveChatter) {
   const std::vector<double> steps = logarithmic_range(1e-4, 1e-1, 13);
   const std::vector<double> epsilons = logarithmic_range(1e-3, 1e-1, 9);
-  int disagreements = 0;
-  for (const StabilityCell& cell : stability_map(wood_on_wood, g, Integrator::explicit_euler, steps, epsilons)) {
-    const double boundary = theoretical_boundary(wood_on_wood, g, cell.epsilon, cell.integrator);
-    if (std::abs(std::log(cell.h / boundary)) < std::log(1.1)) continue;  // on the line: either
-    const Behaviour expected = cell.h < boundary ? Behaviour::stable : Behaviour::chattering;
-    disagreements += cell.behaviour != expected;
+  for (const Integrator integrator : {Integrator::explicit_euler, Integrator::semi_implicit_euler, Integrator::rk4}) {
+    int disagreements = 0, judged = 0;
+    for (const StabilityCell& cell : stability_map(wood_on_wood, g, integrator, steps, epsilons)) {
+      const double boundary = theoretical_boundary(wood_on_wood, g, cell.epsilon, cell.integrator);
+      if (std::abs(std::log(cell.h / boundary)) < std::log(1.1)) continue;  // on the line: either
+      const Behaviour expected = cell.h < boundary ? Behaviour::stable : Behaviour::chattering;
+      disagreements += cell.behaviour != expected;
+      ++judged;
+    }
+    EXPECT_EQ(disagreements, 0) << "integrator " << static_cast<int>(integrator);
+    EXPECT_GT(judged, 90);
   }
-  EXPECT_EQ(disagreements, 0);
 }
 
 // The cheapest setting that answers a lesson's problem: the one the recommender names meets
@@ -122,8 +126,13 @@ TEST(Recommend, AProblemForEachBuiltInLessonAndAClearMessageOtherwise) {
   } catch (const InvalidInput& error) {
     EXPECT_NE(std::string(error.what()).find("spring_pull, incline and tipping_box"), std::string::npos);
   }
-  // The box pushed above d/(2 mu_s) tips at m g d/(2 h) = 35.0 N; within a newton at 240 Hz.
-  EXPECT_LT(lesson_problem("tipping_box").error(StepSettings{}), 1.0);
+  // The box pushed above d/(2 mu_s) tips at m g d/(2 h) = 35.0 N: within 0.1 N at 240 Hz, and
+  // the error falls with the step (the push is placed where the back edge's load reaches zero).
+  StepSettings fine;
+  fine.hz = 960;
+  const double at_240 = lesson_problem("tipping_box").error(StepSettings{});
+  EXPECT_LT(at_240, 0.1);
+  EXPECT_LT(lesson_problem("tipping_box").error(fine), 0.5 * at_240);
 }
 
 // Every benchmark problem has an exact answer the stick-slip treatment approaches as the step
@@ -136,12 +145,6 @@ TEST(BenchmarkProblems, StickSlipConvergesOnEachAndHoldsTheSlopeTheOthersLetGo) 
   for (const BenchmarkProblem& problem : problems) {
     const double at_240 = problem.error(coarse), at_480 = problem.error(fine);
     EXPECT_TRUE(std::isfinite(at_240)) << problem.name;
-    if (problem.name.rfind("Tipping threshold", 0) == 0) {
-      // A floor, not a step error: the bisection's 0.17 mm and Box2D's 1 cm polygon skin, which
-      // moves the corner the box tips about.
-      EXPECT_LT(std::max(at_240, at_480), 0.002) << problem.name;
-      continue;
-    }
     EXPECT_LE(at_480, at_240 + 1e-12) << problem.name << ": halving the step made it worse";
   }
   const BenchmarkProblem& holds = problems[2];

@@ -257,7 +257,8 @@ Image render_charts(const std::vector<Chart>& charts, int columns, int width, in
   gl.bind_framebuffer(width, height);
   host.begin_frame();
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const int rows = (static_cast<int>(charts.size()) + columns - 1) / std::max(columns, 1);
+  columns = std::max(columns, 1);
+  const int rows = (static_cast<int>(charts.size()) + columns - 1) / columns;
   const float cell_width = static_cast<float>(width) / static_cast<float>(columns);
   const float cell_height = static_cast<float>(height) / static_cast<float>(std::max(rows, 1));
   const float gap = 6.0f * scale;

@@ -2,6 +2,7 @@
 // material presets for a friction pair, and the transport bar along the bottom.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <cfloat>
+#include <cmath>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -310,7 +311,8 @@ void Sandbox::cheapest_setting_tab() {
   ImGui::SetNextItemWidth(90.0f * fonts_->scale);
   ImGui::InputDouble("##tolerance", &recommend_tolerance_, 0.0, 0.0, "%g");
   remember("tolerance");
-  if (recommend_tolerance_ <= 0.0) recommend_tolerance_ = 1e-9;
+  // "1e999" reads as infinity and "-1" as less than nothing: neither is a tolerance.
+  if (!(recommend_tolerance_ > 0.0) || !std::isfinite(recommend_tolerance_)) recommend_tolerance_ = 1e-9;
   ImGui::SameLine();
   ImGui::TextUnformatted(problem->unit.c_str());
   ImGui::SameLine();

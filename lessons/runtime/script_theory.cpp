@@ -174,7 +174,7 @@ int regularized_run(lua_State* state) {
     Fields fields(state, 1, "theory.regularized_run",
                   {"angle", "mu_s", "mu_k", "epsilon", "step", "duration", "integrator", "g"});
     const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
-    const double g = fields.number("g", "m/s²", standard_gravity);
+    const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
     const double step = fields.number_in("step", "s", 1e-6, 1.0);
     const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
     const std::string name = fields.text("integrator", "semi-implicit");
@@ -183,8 +183,9 @@ int regularized_run(lua_State* state) {
                                   : name == "rk4"           ? Integrator::rk4
                                                             : throw InvalidInput("theory.regularized_run: integrator '" + name +
                                                                                  "' is none of explicit, semi-implicit, rk4");
-    if (duration / step > 200000.0) {
-      throw InvalidInput("theory.regularized_run: duration / step is over 200000 samples; take a longer step or a shorter run");
+    // Two lists of this many numbers stay well inside the script's 64 MB.
+    if (duration / step > 500000.0) {
+      throw InvalidInput("theory.regularized_run: duration / step is over 500000 samples; take a longer step or a shorter run");
     }
     OneDofBlock block;
     block.mass = 1.0;
