@@ -4,8 +4,6 @@
 // velocity iterations and the sub-steps buy.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <ctime>
 #include <sstream>
 
 #include "app/bench.h"
@@ -23,7 +21,6 @@ constexpr FrictionTreatment treatments[] = {FrictionTreatment::stick_slip, Frict
                                             FrictionTreatment::regularized, FrictionTreatment::box2d};
 // Exact answers (a block that should not move and does not) are drawn at this floor.
 constexpr double error_floor = 1e-12;
-
 
 }  // namespace
 
@@ -53,9 +50,9 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
         settings.hz = hz;
         const Trial run = measure_setting(problem, settings, repeats, INFINITY);
         const bool failed = !std::isfinite(run.error);
-        csv << '"' << problem.name << "\",\"" << problem.question << "\"," << problem.unit << ',' << treatment_name(treatments[t]) << ',' << hz << ",1,"
-            << settings.velocity_iterations << ',' << run.error << ',' << run.cost << ',' << (failed ? "wrong answer" : "")
-            << '\n';
+        csv << '"' << problem.name << "\",\"" << problem.question << "\"," << problem.unit << ','
+            << treatment_name(treatments[t]) << ',' << hz << ",1," << settings.velocity_iterations << ',' << run.error
+            << ',' << run.cost << ',' << (failed ? "wrong answer" : "") << '\n';
         if (hz == 240) at_240 = run.error;
         if (failed) {
           wrong_costs.push_back(run.cost);
