@@ -5,7 +5,6 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
 #include <backends/imgui_impl_opengl3.h>
-#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -14,18 +13,13 @@
 #include "app/bench.h"
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
+#include "physics/recommend.h"
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
 #include "ui/sandbox.h"
 
 namespace frictionlab {
 namespace {
-
-double thread_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 double percentile(std::vector<double> values, double fraction) {
   std::sort(values.begin(), values.end());
@@ -64,19 +58,19 @@ std::string window_frame_speed(bool quick, std::ostream& out) {
       // Past the lesson's run it pauses; a class watching keeps it going.
       if (!sandbox.playback().playing()) sandbox.playback().play();
       if (!physics_only.playing()) physics_only.play();
-      double start = thread_seconds();
+      double start = thread_cpu_seconds();
       physics_only.advance(1.0 / 60.0);
-      physics.push_back(thread_seconds() - start);
+      physics.push_back(thread_cpu_seconds() - start);
 
       const ui::Fonts& fonts = host.prepare(sandbox.ui_scale(display), sandbox.window_settings().theme);
       ImGuiIO& io = ImGui::GetIO();
       io.DisplaySize = display;
       io.DeltaTime = 1.0f / 60.0f;
-      start = thread_seconds();
+      start = thread_cpu_seconds();
       host.begin_frame();
       sandbox.frame(fonts, display, 1.0 / 60.0);
       ImGui::Render();
-      whole.push_back(thread_seconds() - start);
+      whole.push_back(thread_cpu_seconds() - start);
       const auto draw_start = std::chrono::steady_clock::now();
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

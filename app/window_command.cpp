@@ -33,13 +33,10 @@ std::vector<std::string> split_names(const std::string& option, const std::strin
   std::vector<std::string> names;
   std::stringstream parts(text);
   std::string part;
-  while (std::getline(parts, part, ',')) {
-    if (part.empty()) throw InvalidInput(option + " " + text + ": give names separated by commas, as in " + option + " mu_s,mu_k");
-    names.push_back(part);
-  }
-  if (names.empty() || text.back() == ',') {
-    throw InvalidInput(option + " " + text + ": give names separated by commas, as in " + option + " mu_s,mu_k");
-  }
+  while (std::getline(parts, part, ',')) names.push_back(part);
+  // getline drops a trailing empty part: "mu_s," must be refused like "mu_s,,mu_k".
+  const bool empty_name = text.empty() || text.back() == ',' || std::find(names.begin(), names.end(), "") != names.end();
+  if (empty_name) throw InvalidInput(option + " " + text + ": give names separated by commas, as in " + option + " mu_s,mu_k");
   return names;
 }
 

@@ -36,11 +36,15 @@ constexpr long most_world_steps_per_display_frame = 5000;
 
 }  // namespace
 
+std::string exact_text(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
 std::string parameter_text(const lessons::Parameter& parameter) {
   if (parameter.is_choice()) return parameter.choices[static_cast<std::size_t>(parameter.value)];
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, parameter.value).ptr;  // shortest exact form
-  return std::string(text, end);
+  return exact_text(parameter.value);
 }
 
 Playback::Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings)

@@ -124,6 +124,8 @@ class Playback {
   std::string notice_;
 };
 
+// A number as the shortest text that reads back as the same double: "0.45", "1e-05".
+std::string exact_text(double value);
 // The value of a parameter as text that sets it again exactly: "0.45", "plastic".
 std::string parameter_text(const lessons::Parameter& parameter);
 

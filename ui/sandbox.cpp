@@ -19,9 +19,9 @@
 namespace frictionlab::ui {
 namespace {
 
-std::string lesson_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
-
 }  // namespace
+
+std::string lesson_name(const std::string& script_path) { return std::filesystem::path(script_path).stem().string(); }
 
 Sandbox::Sandbox(SandboxOptions options)
     : window_(options.window),
@@ -217,8 +217,8 @@ void Sandbox::set_value(const std::string& name, const std::string& text) {
 
 void Sandbox::messages(ImVec2 corner, float width) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
-  if (!failed_script_.empty()) lines.push_back({failed_error_ + "  (showing " + lesson_stem(playback_->lesson().path()) +
-                                                    " until " + lesson_stem(failed_script_) + ".lua builds)", true});
+  if (!failed_script_.empty()) lines.push_back({failed_error_ + "  (showing " + lesson_name(playback_->lesson().path()) +
+                                                    " until " + lesson_name(failed_script_) + ".lua builds)", true});
   if (!playback_->script_error().empty()) {
     lines.push_back({playback_->script_error() + "  (the last good version keeps running)", true});
   }
@@ -307,7 +307,7 @@ std::string Sandbox::output_path(const std::string& stem, const std::string& ext
 
 void Sandbox::request_screenshot() {
   try {
-    screenshot_request_ = output_path("frictionlab_" + lesson_stem(playback_->lesson().path()), ".png");
+    screenshot_request_ = output_path("frictionlab_" + lesson_name(playback_->lesson().path()), ".png");
   } catch (const std::exception& error) {
     status_ = std::string("Could not take a screenshot: ") + error.what();
   }
@@ -337,7 +337,7 @@ std::string Sandbox::export_history() {
     for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
     csv << ',' << static_cast<int>(scene.slipping()[i]) << '\n';
   }
-  const std::string path = output_path("frictionlab_" + lesson_stem(lesson.path()) + "_history", ".csv");
+  const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
   const std::string text = csv.str();
   write_whole_file(path, text.data(), text.size());
   return path;

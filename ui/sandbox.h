@@ -37,6 +37,9 @@ struct SandboxOptions {
 // The names --lock takes besides a lesson's parameters.
 inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
 
+// A lesson's name as the lesson list gives it: its script's file name without ".lua".
+std::string lesson_name(const std::string& script_path);
+
 class Sandbox {
  public:
   // Opens the lesson; a script that fails to build opens the first built-in lesson instead,

@@ -3,21 +3,13 @@
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <cfloat>
 #include <cmath>
-#include <charconv>
 #include <cstdio>
-#include <filesystem>
 
 #include "physics/materials.h"
 #include "ui/sandbox.h"
 
 namespace frictionlab::ui {
 namespace {
-
-std::string exact_text(double value) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  return std::string(text, end);
-}
 
 // "μs" for a pair's coefficient, the parameter's own name otherwise.
 std::string control_label(const lessons::Parameter& parameter) {
@@ -289,7 +281,7 @@ void Sandbox::cheapest_setting_tab() {
   const bool open = ImGui::BeginTabItem("Cheapest setting");
   remember("Cheapest setting tab");
   if (!open) return;
-  const std::string lesson = std::filesystem::path(playback_->lesson().path()).stem().string();
+  const std::string lesson = lesson_name(playback_->lesson().path());
   std::optional<BenchmarkProblem> problem;
   try {
     problem = lesson_problem(lesson);

@@ -10,12 +10,6 @@
 #include "ui/sandbox.h"
 
 namespace frictionlab::ui {
-namespace {
-
-std::string lesson_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
-
-}  // namespace
-
 void Sandbox::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   const bool lesson_menu = ImGui::BeginMenu("Lesson");
@@ -24,7 +18,7 @@ void Sandbox::menu_bar() {
     // Under a teacher's lock the class stays on the lesson the teacher chose.
     const bool may_switch = lock_.empty();
     for (const std::string& name : lessons::builtin_lessons()) {
-      const bool current = lesson_stem(playback_->lesson().path()) == name;
+      const bool current = lesson_name(playback_->lesson().path()) == name;
       if (ImGui::MenuItem(name.c_str(), nullptr, current, may_switch)) status_ = open(name);
     }
     ImGui::Separator();
