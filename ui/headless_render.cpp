@@ -13,39 +13,23 @@ namespace frictionlab::ui {
 
 HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
     : width_(width), height_(height), theme_(theme), gl_(std::make_unique<HeadlessContext>()) {
-  IMGUI_CHECKVERSION();
-  // CreateContext makes the new context current only when there is none yet.
-  ImGuiContext* previous = ImGui::GetCurrentContext();
-  imgui_ = ImGui::CreateContext();
-  ImGui::SetCurrentContext(imgui_);
-  ImGuiIO& io = ImGui::GetIO();
-  // No imgui.ini or log: a headless picture must not depend on, or leave, files.
-  io.IniFilename = nullptr;
-  io.LogFilename = nullptr;
   try {
-    fonts_ = load_fonts(frame_scale(width, height), glyph_ranges_);
-    apply_imgui_style(theme, fonts_.scale);
-    if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
-      throw HeadlessUnavailable("headless rendering cannot start: ImGui's OpenGL 3 renderer could not load OpenGL "
-                                "(it needs libGL.so.1 from Debian's libgl1)");
-    }
-  } catch (...) {
-    ImGui::DestroyContext(imgui_);
-    ImGui::SetCurrentContext(previous);
-    throw;
+    // No imgui.ini: a headless picture must not depend on, or leave, files.
+    host_ = std::make_unique<ImGuiHost>(nullptr);
+  } catch (const std::runtime_error& error) {
+    throw HeadlessUnavailable(std::string("headless rendering cannot start: ") + error.what());
   }
+  host_->prepare(frame_scale(width, height), theme);
 }
 
 HeadlessRenderer::~HeadlessRenderer() {
   gl_->make_current();
-  ImGui::SetCurrentContext(imgui_);
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui::DestroyContext(imgui_);
+  host_.reset();
 }
 
 Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& framing) {
   gl_->make_current();
-  ImGui::SetCurrentContext(imgui_);
+  host_->make_current();
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
   io.DeltaTime = 1.0f / 60.0f;  // no clock: ImGui's animations must not depend on when we draw
@@ -55,13 +39,12 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
   };
   FrameStyle style;
   style.theme = theme_;
-  style.fonts = &fonts_;
+  style.fonts = &host_->fonts();
   auto start = clock::now();
   // Twice: the first pass lets tables and windows settle their sizes, so the picture does not
   // depend on which frame came before.
   for (int pass = 0; pass < 2; ++pass) {
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui::NewFrame();
+    host_->begin_frame();
     build_frame(lesson, framing, style, io.DisplaySize);
     ImGui::Render();
   }

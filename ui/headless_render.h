@@ -10,6 +10,7 @@
 #include "ui/camera.h"
 #include "ui/headless.h"
 #include "ui/image.h"
+#include "ui/imgui_host.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
@@ -38,16 +39,14 @@ class HeadlessRenderer {
   const FrameTimes& last_times() const { return times_; }
   int width() const { return width_; }
   int height() const { return height_; }
-  float scale() const { return fonts_.scale; }
+  float scale() const { return host_->fonts().scale; }
   const HeadlessContext& context() const { return *gl_; }
 
  private:
   int width_, height_;
   ThemeName theme_;
   std::unique_ptr<HeadlessContext> gl_;
-  ImGuiContext* imgui_ = nullptr;
-  ImVector<ImWchar> glyph_ranges_;  // the font atlas points into them while it lives
-  Fonts fonts_;
+  std::unique_ptr<ImGuiHost> host_;  // after gl_: its renderer goes while the context lives
   FrameTimes times_;
 };
 
