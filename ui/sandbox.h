@@ -100,6 +100,13 @@ class Sandbox {
   void transport_bar(ImVec2 corner, ImVec2 size);
   void parameters_panel(ImVec2 corner, ImVec2 size);
   void cheapest_setting_tab();
+  // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
+  // (with its presets) comes before it. The panel draws them; its height is counted from them.
+  struct ParameterRow {
+    const lessons::Parameter* parameter;
+    bool pair_heading;
+  };
+  std::vector<ParameterRow> parameter_rows() const;
   float parameters_height() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);

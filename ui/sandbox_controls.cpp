@@ -62,19 +62,24 @@ struct ControlColumns {
   }
 };
 
-float Sandbox::parameters_height() const {
-  int rows = 0;
+std::vector<Sandbox::ParameterRow> Sandbox::parameter_rows() const {
+  std::vector<ParameterRow> rows;
   std::string last_pair;
   for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
     if (!shown(parameter.name)) continue;
-    const std::string pair = parameter.material_a + " / " + parameter.material_b;
-    if (!parameter.coefficient.empty() && pair != last_pair) {
-      last_pair = pair;
-      ++rows;
-    }
-    rows += 1 + (control_errors_.count(parameter.name) ? 2 : 0);
+    const std::string pair = parameter.material_a + " on " + parameter.material_b;
+    const bool heading = !parameter.coefficient.empty() && pair != last_pair;
+    if (heading) last_pair = pair;
+    rows.push_back({&parameter, heading});
   }
-  if (!lock_.empty()) ++rows;
+  return rows;
+}
+
+float Sandbox::parameters_height() const {
+  int rows = lock_.empty() ? 0 : 1;
+  for (const ParameterRow& row : parameter_rows()) {
+    rows += 1 + (row.pair_heading ? 1 : 0) + (control_errors_.count(row.parameter->name) ? 2 : 0);
+  }
   const ImGuiStyle& style = ImGui::GetStyle();
   return ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing();
 }
@@ -91,14 +96,11 @@ void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size) {
   const std::string title = lock_.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
     const ControlColumns columns = ControlColumns::of(ImGui::GetContentRegionAvail().x, fonts_->scale);
-    std::string last_pair;
-    for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
-      if (!shown(parameter.name)) continue;
-      const std::string pair = parameter.material_a + " on " + parameter.material_b;
-      if (!parameter.coefficient.empty() && pair != last_pair) {
-        last_pair = pair;
+    for (const ParameterRow& row : parameter_rows()) {
+      const lessons::Parameter& parameter = *row.parameter;
+      if (row.pair_heading) {
         ImGui::AlignTextToFramePadding();
-        ImGui::TextDisabled("%s", pair.c_str());
+        ImGui::TextDisabled("%s on %s", parameter.material_a.c_str(), parameter.material_b.c_str());
         if (parameter.coefficient == "mu_s") {
           ImGui::SameLine();
           ImGui::SetNextItemWidth(-FLT_MIN);
