@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "ui/chart.h"
+
 namespace frictionlab {
 
 double median(std::vector<double> values);
@@ -20,6 +22,10 @@ struct AccuracyRun {
 };
 // The runs no other beats on both cost and error: (cost, error) pairs, cheapest first.
 std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double, double>> points);
+// Charts drawn headless as PNG bytes; empty where EGL cannot start, and then, given `out`, a
+// line there saying why `name` was not drawn.
+std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
+                       std::ostream* out);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.

@@ -45,6 +45,17 @@ double fitted_order(const std::vector<std::pair<double, double>>& step_and_error
 
 }  // namespace
 
+std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
+                       std::ostream* out) {
+  try {
+    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts(charts, columns, width, height));
+    return std::string(png.begin(), png.end());
+  } catch (const ui::HeadlessUnavailable& error) {
+    if (out) *out << name << ": not drawn, " << error.what() << '\n';
+    return "";
+  }
+}
+
 std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double, double>> points) {
   std::sort(points.begin(), points.end());
   std::vector<std::pair<double, double>> front;
@@ -111,12 +122,7 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
   if (!failures.points.empty()) work.series.push_back(failures);
   work.notes = {"points labelled by step rate (Hz); the exact event-driven solution is the reference (error 0)"};
   convergence.notes = {"order: slope of log error against log h over the runs that did not fail"};
-  try {
-    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts({work, convergence}, 2, 1920, 1080));
-    return std::string(png.begin(), png.end());
-  } catch (const ui::HeadlessUnavailable&) {
-    return "";
-  }
+  return charts_png({work, convergence}, 2, 1920, 1080, "work_precision.png", nullptr);
 }
 
 }  // namespace frictionlab

@@ -10,7 +10,6 @@
 #include "app/table.h"
 #include "physics/recommend.h"
 #include "ui/chart.h"
-#include "ui/headless.h"
 
 namespace frictionlab {
 namespace {
@@ -116,11 +115,8 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   out << "\nEvery benchmark problem at 240 Hz: error against the exact answer (CSV: every rate, work_precision.csv)\n";
   print_table(out, table);
   std::vector<std::pair<std::string, std::string>> files{{directory + "/work_precision.csv", csv.str()}};
-  try {
-    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts(charts, 3, 2400, 2100));
-    files.emplace_back(directory + "/problems.png", std::string(png.begin(), png.end()));
-  } catch (const ui::HeadlessUnavailable& error) {
-    out << "problems.png: not drawn, " << error.what() << '\n';
+  if (std::string png = charts_png(charts, 3, 2400, 2100, "problems.png", &out); !png.empty()) {
+    files.emplace_back(directory + "/problems.png", std::move(png));
   }
   return files;
 }

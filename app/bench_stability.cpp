@@ -10,7 +10,6 @@
 #include "app/table.h"
 #include "physics/stability.h"
 #include "ui/chart.h"
-#include "ui/headless.h"
 
 namespace frictionlab {
 namespace {
@@ -122,11 +121,8 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   out << "Creep on a 20 degree slope: within " << number(100.0 * worst_creep) << " % of epsilon*tan(theta)/mu_s\n";
 
   std::vector<std::pair<std::string, std::string>> files{{directory + "/stability_map.csv", csv.str()}};
-  try {
-    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts(charts, 3, 1920, 1080));
-    files.emplace_back(directory + "/stability.png", std::string(png.begin(), png.end()));
-  } catch (const ui::HeadlessUnavailable& error) {
-    out << "stability.png: not drawn, " << error.what() << '\n';
+  if (std::string png = charts_png(charts, 3, 1920, 1080, "stability.png", &out); !png.empty()) {
+    files.emplace_back(directory + "/stability.png", std::move(png));
   }
   return files;
 }
