@@ -332,14 +332,18 @@ void Playback::watch_file(double wall_seconds) {
   since_file_check_ = 0.0;
   const auto stamp = file_stamp(lesson_->path());
   if (!stamp) {
-    // Moved, deleted, or half-way through an editor's save: say so, keep the lesson running.
-    if (script_error_.empty() || script_error_.rfind("cannot read", 0) == 0) {
+    // Moved, deleted, or half-way through an editor's save: say so (unless a failed reload
+    // already says more), keep the lesson running.
+    if (script_error_.empty() || file_missing_) {
       script_error_ = "cannot read " + lesson_->path() + " (moved or deleted?)";
+      file_missing_ = true;
     }
     return;
   }
+  const bool was_missing = file_missing_;
+  file_missing_ = false;
   if (stamp == file_stamp_) {
-    if (script_error_.rfind("cannot read", 0) == 0) script_error_.clear();
+    if (was_missing) script_error_.clear();  // back as it was
     return;
   }
   file_stamp_ = stamp;

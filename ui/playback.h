@@ -120,6 +120,7 @@ class Playback {
   FileStamp file_stamp_;
   std::size_t next_action_ = 0;  // the first action of the record not yet applied
   std::string script_error_;
+  bool file_missing_ = false;  // script_error_ says the file is gone, not why a reload failed
   std::string problem_;
   std::string notice_;
 };
