@@ -77,38 +77,21 @@ std::string listener_cost(bool quick, std::ostream& out) {
   return csv.str();
 }
 
-// Runs `work` (which simulates `simulated` seconds) `repeats` times; median CPU s per simulated s.
-double cost_per_simulated_second(const std::function<void()>& work, double simulated, int repeats) {
-  std::vector<double> costs;
-  for (int r = 0; r < repeats; ++r) {
-    const double start = cpu_seconds();
-    work();
-    costs.push_back((cpu_seconds() - start) / simulated);
-  }
-  return median(costs);
-}
-
 std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<AccuracyRun>& runs) {
-  const SpringPull setup;
-  const double duration = 10.0;
+  const BenchmarkProblem spring = lesson_problem("spring_pull");
+  const LineProblem& line = *spring.line;
   const int repeats = quick ? 1 : 3;
-  const Trajectory exact = solve_exact(spring_pull_model(setup), duration);
   std::ostringstream csv;
   csv << "method,hz,max_position_error_m,cpu_s_per_simulated_s,fails\n";
   std::vector<std::vector<std::string>> table{{"method", "hz", "max error (mm)", "CPU ms per simulated s", "fails"}};
-  // The regularized law chatters wherever the step is past its stability boundary (where
-  // methods fail, below): such runs are kept, and marked.
-  const double epsilon = StepSettings{}.threshold_speed;
-  const FrictionPair pair = setup.block.pair;
-  auto add = [&](const std::string& method, double hz, double error, double cost) {
-    const bool regularized = method.find("regularized") != std::string::npos;
-    const Integrator integrator = method.find("rk4") != std::string::npos ? Integrator::rk4 : Integrator::explicit_euler;
-    const bool chatters = regularized && hz > 0 && 1.0 / hz > theoretical_boundary(pair, 9.81, epsilon, integrator);
-    const std::string fails = !std::isfinite(error) ? "not a number" : chatters ? "chatters" : "";
-    csv << method << ',' << hz << ',' << error << ',' << cost << ',' << fails << '\n';
-    table.push_back({method, format_number(hz), format_number(error * 1e3, 3), format_number(cost * 1e3, 3), fails});
-    runs.push_back({method, hz, error, cost, fails});
+  auto add = [&](const std::string& method, double hz, const Outcome& outcome, double cost) {
+    csv << method << ',' << hz << ',' << outcome.error << ',' << cost << ',' << outcome.fails << '\n';
+    table.push_back({method, format_number(hz), format_number(outcome.error * 1e3, 3), format_number(cost * 1e3, 3), outcome.fails});
+    runs.push_back({method, hz, outcome.error, cost, outcome.fails});
   };
+  // The listener's default threshold speed for the threshold and regularized treatments and
+  // for the reduced regularized models alike.
+  const double epsilon = StepSettings{}.threshold_speed;
   const std::vector<double> rates = quick ? std::vector<double>{60, 240} : std::vector<double>{60, 120, 240, 480, 960};
   for (FrictionTreatment treatment : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
                                       FrictionTreatment::regularized, FrictionTreatment::box2d}) {
@@ -116,47 +99,26 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<Accur
       StepSettings settings;
       settings.hz = hz;
       settings.treatment = treatment;
-      double error = 0.0;
-      const double cost = cost_per_simulated_second(
-          [&] { error = spring_pull_max_error(setup, settings, duration); }, duration, repeats);
-      add("Box2D treatment=" + std::string(treatment_name(treatment)), hz, error, cost);
+      const auto [outcome, cost] = measure([&] { return spring.run(settings); }, line.t_end, repeats);
+      add("Box2D + " + std::string(treatment_name(treatment)), hz, outcome, cost);
     }
   }
-  const OneDofBlock model = spring_pull_model(setup);
-  auto worst_against_exact = [&](const std::vector<Sample>& samples) {
-    double worst = 0.0;
-    for (const Sample& s : samples) worst = std::max(worst, std::abs(s.x - exact.position(s.t)));
-    return worst;
-  };
-  // The listener's default threshold speed (epsilon above), so the reduced regularized models
-  // and the Box2D threshold/regularized treatments are charted with the same epsilon.
-  for (auto [name, integrator] : {std::pair{"reduced explicit-euler", Integrator::explicit_euler},
-                                  std::pair{"reduced semi-implicit-euler", Integrator::semi_implicit_euler},
-                                  std::pair{"reduced rk4", Integrator::rk4}}) {
+  for (const ReducedMethod method : {ReducedMethod::explicit_euler, ReducedMethod::semi_implicit_euler, ReducedMethod::rk4,
+                                     ReducedMethod::located_events}) {
     for (double hz : rates) {
-      double error = 0.0;
-      const double cost = cost_per_simulated_second(
-          [&] { error = worst_against_exact(integrate_regularized(model, duration, 1.0 / hz, epsilon, integrator)); },
-          duration, repeats);
-      add(std::string(name) + " regularized", hz, error, cost);
+      const auto [outcome, cost] = measure([&] { return run_reduced(line, method, hz, epsilon); }, line.t_end, repeats);
+      add(reduced_method_name(method), hz, outcome, cost);
     }
   }
-  for (double hz : rates) {
-    double error = 0.0;
-    const double cost = cost_per_simulated_second(
-        [&] {
-          const Trajectory located = solve_event_rk4(model, duration, 1.0 / hz);
-          error = 0.0;
-          for (double t = 0.0; t <= duration; t += 1e-3) {
-            error = std::max(error, std::abs(located.position(t) - exact.position(t)));
-          }
-        },
-        duration, repeats);
-    add("reduced rk4 with located events", hz, error, cost);
-  }
-  const double exact_cost = cost_per_simulated_second([&] { solve_exact(model, duration); }, duration, repeats);
-  add("reduced exact event-driven (reference)", 0, 0.0, exact_cost);
-  out << "\nSpring-pull stick-slip over " << duration
+  const auto [reference, exact_cost] =
+      measure(
+      [&] {
+        solve_exact(line.block, line.t_end);
+        return Outcome{};
+      },
+      line.t_end, repeats);
+  add("1-DOF exact event-driven (reference)", 0, reference, exact_cost);
+  out << "\nSpring-pull stick-slip over " << line.t_end
       << " s: max position error against the exact solution (regularized and threshold: epsilon = " << epsilon
       << " m/s)\n";
   print_table(out, table);
@@ -245,6 +207,35 @@ int run_recommend(const std::string& lesson, const std::string& tolerance_text, 
   return 0;
 }
 
+// The bench's progress on one line of a terminal: the whole run's share done, and the part
+// being measured. Each part is given its share of the run's time (measured on a full run).
+class ProgressBar {
+ public:
+  ProgressBar(bool shown, std::ostream& out) : shown_(shown), out_(out) {}
+  // The part about to run and its share of the whole; returns how to report within it.
+  Progress stage(std::string name, double share) {
+    done_ += share_;
+    share_ = share;
+    name_ = std::move(name);
+    return [this](double fraction) { draw(done_ + share_ * std::clamp(fraction, 0.0, 1.0)); };
+  }
+  void clear() {
+    if (shown_) out_ << '\r' << std::string(90, ' ') << '\r' << std::flush;
+  }
+
+ private:
+  void draw(double whole) {
+    if (!shown_) return;
+    const int width = 30, filled = static_cast<int>(std::min(whole, 1.0) * width + 0.5);
+    out_ << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(width - filled), ' ')
+         << "] " << static_cast<int>(std::min(whole, 1.0) * 100.0 + 0.5) << " %  " << name_ << std::string(20, ' ') << std::flush;
+  }
+  bool shown_;
+  std::ostream& out_;
+  double done_ = 0.0, share_ = 0.0;
+  std::string name_;
+};
+
 }  // namespace
 
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
@@ -274,15 +265,36 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   if (directory.empty()) throw InvalidInput("bench: --out DIR is required (the folder for the CSV files)");
   prepare_output_folder("bench: --out", directory);
 
-  const std::string cost = listener_cost(quick, out);
+  // Each part prints its table into a buffer, shown once the bar's line is cleared, so the
+  // bar never lands inside a table.
+  ProgressBar bar(&out == &std::cout && isatty(STDOUT_FILENO), out);
+  std::ostringstream part;
+  auto finish = [&] {
+    bar.clear();
+    out << part.str() << std::flush;
+    part.str("");
+  };
+  bar.stage("cost of the listener", 0.02)(0.0);
+  const std::string cost = listener_cost(quick, part);
+  finish();
+  bar.stage("spring stick-slip accuracy", 0.08)(0.0);
   std::vector<AccuracyRun> runs;
-  const std::string accuracy = stick_slip_accuracy(quick, out, runs);
+  const std::string accuracy = stick_slip_accuracy(quick, part, runs);
   const std::string work_precision = work_precision_png(runs);
-  const std::string speed = lesson_speed(quick, out);
-  const std::string frames = frame_speed(quick, out);
-  const std::string window_frames = window_frame_speed(quick, out);
-  const auto stability = stability_files(quick, directory, out);
-  const auto problems = problem_files(quick, directory, out);
+  finish();
+  bar.stage("lessons' speed", 0.04)(0.0);
+  const std::string speed = lesson_speed(quick, part);
+  finish();
+  bar.stage("frames drawn headless", 0.03)(0.0);
+  const std::string frames = frame_speed(quick, part);
+  finish();
+  bar.stage("the window's frames", 0.05)(0.0);
+  const std::string window_frames = window_frame_speed(quick, part);
+  finish();
+  const auto stability = stability_files(quick, directory, part, bar.stage("stability maps", 0.18));
+  finish();
+  const auto problems = problem_files(quick, directory, part, bar.stage("every benchmark problem", 0.60));
+  finish();
   std::vector<std::pair<std::string, std::string>> files{{directory + "/listener_cost.csv", cost},
                                                          {directory + "/stick_slip_accuracy.csv", accuracy},
                                                          {directory + "/lesson_speed.csv", speed}};

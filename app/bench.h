@@ -1,6 +1,7 @@
 // Parts of frictionlab bench that live in files of their own.
 #pragma once
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -12,11 +13,14 @@ namespace frictionlab {
 
 double median(std::vector<double> values);
 
+// How far a long part of the bench has got, 0 to 1, for the progress bar on a terminal.
+using Progress = std::function<void(double fraction)>;
+
 // One run of the spring problem: its error against the exact answer and what it cost.
 struct AccuracyRun {
   std::string method;
-  double hz;
-  double error;  // max position error over the run, m
+  double hz;     // step rate (or, for a chart of another knob, its value: the point's label)
+  double error;  // against the exact answer (the spring: max position error over the run, m)
   double cost;   // CPU s per simulated s
   std::string fails;  // "" or why the run failed ("chatters", "not a number")
 };
@@ -26,6 +30,13 @@ std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double
 // line there saying why `name` was not drawn.
 std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
                        std::ostream* out);
+// A work-precision chart of runs: error against cost, a curve per method (in the order met,
+// its fitted order of convergence in the legend when `fit_orders`), points labelled by rate,
+// exact answers at 10⁻¹², failed runs crossed where they lie and wrong answers along the top,
+// and the Pareto front of the runs that did not fail.
+// Given `orders`, each method's fitted order is also put there.
+ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
+                               bool fit_orders = true, std::vector<std::pair<std::string, double>>* orders = nullptr);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.
@@ -35,9 +46,9 @@ std::string window_frame_speed(bool quick, std::ostream& out);
 // work_precision.csv (every problem × treatment × rate, and the spring's iterations and
 // sub-steps) and problems.png (a work-precision chart per problem), as (path, bytes).
 std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory,
-                                                                std::ostream& out);
+                                                                std::ostream& out, const Progress& progress);
 // stability_map.csv and stability.png (the charts; left out where EGL cannot start), as (path, bytes).
 std::vector<std::pair<std::string, std::string>> stability_files(bool quick, const std::string& directory,
-                                                                  std::ostream& out);
+                                                                  std::ostream& out, const Progress& progress);
 
 }  // namespace frictionlab

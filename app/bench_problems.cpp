@@ -1,9 +1,13 @@
-// frictionlab bench, every benchmark problem: each friction treatment at each step rate on
-// each problem with an exact answer (error, CPU time per simulated second), a CSV of every
-// run and one work-precision chart per problem; and, on the spring problem, what the solver's
-// velocity iterations and the sub-steps buy.
+// frictionlab bench, every benchmark problem: each friction treatment (the regularized law
+// with three threshold speeds) at each step rate on each problem with an exact answer, and the
+// reduced 1-DOF models on the problems that are a block on a line; the error, the CPU time per
+// simulated second and how a run failed, in a CSV of every run and a work-precision chart per
+// problem; and, on the spring problem, what the solver's velocity iterations and the
+// sub-steps buy.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "app/bench.h"
@@ -14,108 +18,184 @@
 namespace frictionlab {
 namespace {
 
-const ImU32 treatment_colours[] = {IM_COL32(0, 114, 178, 255), IM_COL32(230, 159, 0, 255), IM_COL32(0, 158, 115, 255),
-                                   IM_COL32(204, 121, 167, 255)};
-constexpr FrictionTreatment treatments[] = {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
-                                            FrictionTreatment::regularized, FrictionTreatment::box2d};
-// Exact answers (a block that should not move and does not) are drawn at this floor.
-constexpr double error_floor = 1e-12;
+struct Method {
+  std::string name;
+  std::optional<StepSettings> box2d;    // a Box2D scene with this setting (its rate set per run)
+  std::optional<ReducedMethod> reduced; // or a reduced model, on line problems only
+};
+
+std::string epsilon_text(double epsilon) {
+  std::ostringstream text;
+  text << epsilon;
+  return text.str();
+}
+
+std::vector<Method> methods() {
+  std::vector<Method> all;
+  auto box2d = [&](FrictionTreatment treatment, double epsilon, const std::string& suffix) {
+    StepSettings settings;
+    settings.treatment = treatment;
+    settings.threshold_speed = epsilon;
+    all.push_back({"Box2D + " + std::string(treatment_name(treatment)) + suffix, settings, std::nullopt});
+  };
+  box2d(FrictionTreatment::stick_slip, 0.01, "");
+  box2d(FrictionTreatment::threshold, 0.01, "");
+  for (const double epsilon : {0.1, 0.01, 0.001}) {
+    box2d(FrictionTreatment::regularized, epsilon, " \u03b5=" + epsilon_text(epsilon));
+  }
+  box2d(FrictionTreatment::box2d, 0.01, "");
+  for (const ReducedMethod method : {ReducedMethod::explicit_euler, ReducedMethod::semi_implicit_euler, ReducedMethod::rk4,
+                                     ReducedMethod::located_events}) {
+    all.push_back({reduced_method_name(method), std::nullopt, method});
+  }
+  return all;
+}
+
+// A method's name short enough for a list of fitted orders under a chart.
+std::string short_method(std::string name) {
+  for (const char* long_part : {"Box2D + ", " (regularized)", "1-DOF "}) {
+    const std::size_t at = name.find(long_part);
+    if (at != std::string::npos) name.erase(at, std::strlen(long_part));
+  }
+  return name;
+}
+
+std::string quoted(const std::string& text) { return '"' + text + '"'; }
+
+// How a run failed, in a letter for the terminal's table (its key is printed under it).
+constexpr std::pair<const char*, const char*> failure_letters[] = {
+    {"not a number", "N"}, {"blew up", "B"}, {"chatters", "C"}, {"spurious stick-slip", "S"}, {"misses stick-slip", "M"},
+    {"creeps", "K"},       {"slides", "L"},  {"wrong answer", "W"}};
+
+// The error at 240 Hz as the terminal table shows it: the number, and how the run failed.
+std::string cell(const Outcome& outcome) {
+  std::string letter;
+  for (const auto& [failure, code] : failure_letters) {
+    if (outcome.fails == failure) letter = code;
+  }
+  if (!std::isfinite(outcome.error)) return letter;
+  return format_number(outcome.error, 2) + (letter.empty() ? "" : " " + letter);
+}
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory, std::ostream& out) {
+std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory, std::ostream& out,
+                                                                const Progress& progress) {
   const std::vector<double> rates = quick ? std::vector<double>{60, 240} : std::vector<double>{30, 60, 120, 240, 480, 960, 1920};
   const int repeats = quick ? 1 : 3;
+  const double reduced_epsilon = StepSettings{}.threshold_speed;
+  const std::vector<Method> all = methods();
+  const std::vector<BenchmarkProblem> problems = benchmark_problems();
   std::ostringstream csv;
-  csv << "problem,measure,unit,treatment,hz,substeps,velocity_iterations,error,cpu_s_per_simulated_s,fails\n";
+  csv << "problem,measure,unit,method,treatment,epsilon_m_per_s,hz,substeps,velocity_iterations,error,cpu_s_per_simulated_s,fails\n";
   std::vector<ui::Chart> charts;
-  std::vector<std::vector<std::string>> table{{"problem", "stick-slip", "threshold", "regularized", "box2d", "unit"}};
-  for (const BenchmarkProblem& problem : benchmark_problems()) {
-    ui::Chart chart;
-    chart.title = problem.name;
-    chart.x_label = "CPU time per simulated second (s)";
-    chart.y_label = "error (" + problem.unit + ")";
-    chart.log_x = chart.log_y = true;
-    std::vector<std::pair<double, double>> sound;
-    std::vector<double> wrong_costs;
-    int exact = 0;
-    std::vector<std::string> row{problem.name};
-    for (std::size_t t = 0; t < 4; ++t) {
-      ui::ChartSeries series{std::string(treatment_name(treatments[t])), {}, treatment_colours[t], true, ui::Marker::dot, {}};
-      double at_240 = NAN;
+  // A row per method, a column per problem.
+  std::vector<std::vector<std::string>> table{{"method at 240 Hz"}};
+  for (const Method& method : all) table.push_back({method.name});
+  for (const BenchmarkProblem& problem : problems) table[0].push_back(problem.label + " (" + problem.unit + ")");
+  ui::Chart legend;
+  legend.title = "Every chart's methods";
+  legend.legend = ui::Chart::Legend::only;
+  std::size_t done = 0;
+  const std::size_t total = problems.size() * all.size() * rates.size();
+  for (const BenchmarkProblem& problem : problems) {
+    std::vector<AccuracyRun> runs;
+    for (std::size_t m = 0; m < all.size(); ++m) {
+      const Method& method = all[m];
+      std::string at_240 = "";
       for (const double hz : rates) {
-        StepSettings settings;
-        settings.treatment = treatments[t];
-        settings.hz = hz;
-        const Trial run = measure_setting(problem, settings, repeats, INFINITY);
-        const bool failed = !std::isfinite(run.error);
-        csv << '"' << problem.name << "\",\"" << problem.question << "\"," << problem.unit << ','
-            << treatment_name(treatments[t]) << ',' << hz << ",1," << settings.velocity_iterations << ',' << run.error
-            << ',' << run.cost << ',' << (failed ? "wrong answer" : "") << '\n';
-        if (hz == 240) at_240 = run.error;
-        if (failed) {
-          wrong_costs.push_back(run.cost);
-          continue;
+        progress(static_cast<double>(done++) / static_cast<double>(total));
+        if (method.reduced && !problem.line) continue;  // a box that tips, a disk that rolls: not a block on a line
+        std::pair<Outcome, double> measured;
+        if (method.box2d) {
+          StepSettings settings = *method.box2d;
+          settings.hz = hz;
+          measured = measure([&] { return problem.run(settings); }, problem.simulated, repeats);
+        } else {
+          measured = measure([&] { return run_reduced(*problem.line, *method.reduced, hz, reduced_epsilon); }, problem.simulated,
+                             repeats);
         }
-        exact += run.error < error_floor;
-        const double shown = std::max(run.error, error_floor);
-        series.points.push_back({run.cost, shown});
-        series.labels.push_back(std::to_string(static_cast<int>(hz)));
-        sound.push_back({run.cost, shown});
+        const auto& [outcome, cost] = measured;
+        const StepSettings shown = method.box2d.value_or(StepSettings{});
+        csv << quoted(problem.name) << ',' << quoted(problem.question) << ',' << problem.unit << ',' << quoted(method.name) << ','
+            << (method.box2d ? std::string(treatment_name(shown.treatment)) : "") << ','
+            << (method.box2d ? shown.threshold_speed : reduced_epsilon) << ',' << hz << ','
+            << (method.box2d ? "1," + std::to_string(shown.velocity_iterations) : ",") << ',' << outcome.error << ',' << cost << ','
+            << outcome.fails << '\n';
+        if (hz == 240) at_240 = cell(outcome);
+        runs.push_back({method.name, hz, outcome.error, cost, outcome.fails});
       }
-      row.push_back(std::isfinite(at_240) ? format_number(at_240, 3) : "wrong");
-      chart.series.push_back(series);
+      table[m + 1].push_back(method.reduced && !problem.line ? "-" : at_240);
     }
-    row.push_back(problem.unit);
-    table.push_back(row);
-    chart.series.push_back({"Pareto front", pareto_front(sound), IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}});
-    if (!wrong_costs.empty()) {
-      // A wrong answer has no error to draw: it is crossed along the top, at its cost.
-      double top = error_floor;
-      for (const auto& point : sound) top = std::max(top, point.second);
-      ui::ChartSeries wrong{"wrong answer", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}};
-      for (const double cost : wrong_costs) wrong.points.push_back({cost, 3.0 * top});
-      chart.series.push_back(wrong);
+    std::vector<std::pair<std::string, double>> orders;
+    ui::Chart chart = work_precision_chart(problem.name, "error (" + problem.unit + ")", runs, true, &orders);
+    // One legend for all (the colours are the same in every chart), the fitted orders here.
+    chart.legend = ui::Chart::Legend::none;
+    chart.notes.pop_back();
+    std::string note = "fitted order:";
+    for (const auto& [method, order] : orders) {
+      char part[120];
+      std::snprintf(part, sizeof part, " %s %.1f%s", short_method(method).c_str(), order, &order == &orders.back().second ? "" : ",");
+      if (note.size() + std::strlen(part) > 95) {
+        chart.notes.push_back(note);
+        note = " ";
+      }
+      note += part;
     }
-    if (exact > 0) chart.notes.push_back(std::to_string(exact) + " runs exact (error 0), drawn at 10\u207b\u00b9\u00b2");
+    if (!orders.empty()) chart.notes.push_back(note);
     charts.push_back(chart);
+    if (legend.series.empty()) legend.series = chart.series;
   }
 
   // The spring problem at 240 Hz with the stick-slip treatment: the solver's velocity
   // iterations, and sub-steps at 60 Hz.
-  ui::Chart knobs;
-  knobs.title = "Spring, stick-slip: iterations and sub-steps";
-  knobs.x_label = "CPU time per simulated second (s)";
-  knobs.y_label = "error (m)";
-  knobs.log_x = knobs.log_y = true;
-  ui::ChartSeries iterations{"240 Hz, velocity iterations", {}, treatment_colours[0], true, ui::Marker::dot, {}};
-  ui::ChartSeries substeps{"60 Hz, sub-steps", {}, treatment_colours[3], true, ui::Marker::dot, {}};
+  std::vector<AccuracyRun> knob_runs;
   const BenchmarkProblem spring = lesson_problem("spring_pull");
   for (const int count : quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}) {
     StepSettings settings;
     settings.velocity_iterations = count;
     const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << '"' << spring.name << "\",\"" << spring.question << "\",m,stick-slip,240,1," << count << ',' << run.error << ',' << run.cost << ",\n";
-    iterations.points.push_back({run.cost, std::max(run.error, error_floor)});
-    iterations.labels.push_back(std::to_string(count));
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip," << settings.threshold_speed
+        << ",240,1," << count << ',' << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    knob_runs.push_back({"240 Hz, velocity iterations", static_cast<double>(count), run.error, run.cost, run.fails});
   }
   for (const int count : quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 4, 8, 16}) {
     StepSettings settings;
     settings.hz = 60;
     settings.substeps = count;
     const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << '"' << spring.name << "\",\"" << spring.question << "\",m,stick-slip,60," << count << ",8," << run.error << ',' << run.cost << ",\n";
-    substeps.points.push_back({run.cost, std::max(run.error, error_floor)});
-    substeps.labels.push_back(std::to_string(count) + "\u00d7");
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip," << settings.threshold_speed
+        << ",60," << count << ",8," << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    knob_runs.push_back({"60 Hz, sub-steps", static_cast<double>(count), run.error, run.cost, run.fails});
   }
-  knobs.series = {iterations, substeps};
-  knobs.notes = {"labels: velocity iterations; sub-steps per 1/60 s frame"};
+  // The legend: every method's colour, and the marks.
+  std::erase_if(legend.series, [](const ui::ChartSeries& series) { return series.marker == ui::Marker::cross; });
+  for (ui::ChartSeries& series : legend.series) {
+    const std::size_t cut = series.name.find(" (order");
+    if (cut != std::string::npos) series.name.erase(cut);
+    series.points.clear();
+  }
+  legend.series.push_back({"failed run (chatters, spurious or missing stick-slip, creeps, slides)", {}, IM_COL32(200, 30, 30, 255), false,
+                           ui::Marker::cross, {}});
+  legend.series.push_back({"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}});
+  legend.notes = {"points labelled by step rate (Hz)", "exact answers (error 0) drawn at 10\u207b\u00b9\u00b2",
+                  "fitted order: slope of log error against log step", "over the runs that did not fail"};
+  charts.push_back(legend);
+  ui::Chart knobs = work_precision_chart("Spring, Box2D + stick-slip: iterations and sub-steps", "error (m)", knob_runs, false);
+  knobs.series[0].colour = IM_COL32(0, 114, 178, 255);
+  knobs.series[1].colour = IM_COL32(204, 121, 167, 255);
+  knobs.notes = {"labels: velocity iterations at 240 Hz; sub-steps per 1/60 s frame"};
   charts.push_back(knobs);
+  progress(1.0);
 
-  out << "\nEvery benchmark problem at 240 Hz: error against the exact answer (CSV: every rate, work_precision.csv)\n";
+  out << "\nEvery benchmark problem at 240 Hz: error against the exact answer, and how a run failed (CSV: every rate, "
+         "work_precision.csv)\n";
   print_table(out, table);
+  out << "failed:";
+  for (const auto& [failure, code] : failure_letters) out << ' ' << code << " = " << failure << (code[0] == 'W' ? "\n" : ",");
+  out << "-: not a block on a line, so no 1-DOF model\n";
   std::vector<std::pair<std::string, std::string>> files{{directory + "/work_precision.csv", csv.str()}};
-  if (std::string png = charts_png(charts, 3, 2400, 2100, "problems.png", &out); !png.empty()) {
+  if (std::string png = charts_png(charts, 3, 2700, 3000, "problems.png", &out); !png.empty()) {
     files.emplace_back(directory + "/problems.png", std::move(png));
   }
   return files;

@@ -37,7 +37,8 @@ std::string number(double value) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string>> stability_files(bool quick, const std::string& directory, std::ostream& out) {
+std::vector<std::pair<std::string, std::string>> stability_files(bool quick, const std::string& directory, std::ostream& out,
+                                                                  const Progress& progress) {
   const std::vector<double> steps = logarithmic_range(1e-4, 1e-1, quick ? 13 : 31);
   const std::vector<double> epsilons = logarithmic_range(1e-4, 1e-1, quick ? 10 : 25);
   std::ostringstream csv;
@@ -45,6 +46,8 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   std::vector<ui::Chart> charts;
   std::vector<std::vector<std::string>> table{{"method", "epsilon", "boundary h, theory", "measured", "measured / theory"}};
   for (const Method& method : methods) {
+    // The maps are most of the work: a third each.
+    progress(static_cast<double>(&method - methods) / 3.0);
     ui::Chart map;
     map.title = std::string("Regularized friction, ") + method.name;
     map.x_label = "threshold speed \u03b5 (m/s)";

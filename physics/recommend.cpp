@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <memory>
 
 #include <time.h>
 #include <sstream>
@@ -13,20 +14,120 @@
 namespace frictionlab {
 namespace {
 
-// A block released on a 40° slope (above atan 0.6 = 31°, so it slides): the distance it has
-// gone against ½·g·(sin θ − μk·cos θ)·t², at every step of 2 s.
-double incline_error(const StepSettings& settings) {
-  Incline setup;
-  setup.angle = 40.0 * M_PI / 180.0;
-  auto scene = make_incline(setup, settings);
-  const double a = theory::incline_sliding_acceleration(setup.angle, setup.block.pair.mu_k, standard_gravity);
+// Judges a run of a block on a line, sampled frame by frame, against its problem's exact answer.
+Outcome judge(const LineProblem& line, const std::vector<Sample>& samples) {
+  RunCheck check;
   double worst = 0.0;
-  while (scene->time() < 2.0 - 0.5 * scene->frame_step()) {
-    scene->step();
-    const double exact = 0.5 * a * scene->time() * scene->time();
-    worst = std::max(worst, std::abs(scene->probe("distance").history.back() - exact));
+  for (const Sample& s : samples) {
+    check.add(s.t, s.x, s.v);
+    if (!line.final_only) worst = std::max(worst, std::abs(s.x - line.exact_position(s.t)));
   }
-  return worst;
+  if (line.final_only) worst = std::abs(samples.back().x - line.exact_position(samples.back().t));
+  Outcome outcome{worst, check.failure(line.expected)};
+  if (!std::isfinite(outcome.error)) outcome.error = INFINITY;
+  return outcome;
+}
+
+// A Box2D scene run to the problem's end, read along the block's line after every frame.
+Outcome follow(Scene& scene, const LineProblem& line, const std::function<Sample()>& read) {
+  std::vector<Sample> samples{read()};
+  samples.reserve(static_cast<std::size_t>(line.t_end / scene.frame_step()) + 2);
+  while (scene.time() < line.t_end - 0.5 * scene.frame_step()) {
+    scene.step();
+    samples.push_back(read());
+  }
+  return judge(line, samples);
+}
+
+// The exact motion kept alive for the problem's lambdas, solved a little past the end so the
+// last frame (which rounding can put just after it) has an answer.
+LineProblem exact_line(const OneDofBlock& block, double t_end) {
+  const auto exact = std::make_shared<Trajectory>(solve_exact(block, t_end + 1.0));
+  return {block, t_end, [exact](double t) { return exact->position(t); }, false, expected_motion(*exact)};
+}
+
+LineProblem spring_line() { return exact_line(spring_pull_model(SpringPull{}), 10.0); }
+
+// A block released at rest on the slope: gravity along it, the normal force across it.
+LineProblem incline_line(double angle) {
+  const Incline setup;
+  OneDofBlock block;
+  block.mass = setup.block.mass;
+  block.pair = setup.block.pair;
+  block.normal_force = block.mass * standard_gravity * std::cos(angle);
+  block.constant_force = block.mass * standard_gravity * std::sin(angle);
+  return exact_line(block, 2.0);
+}
+
+// A block launched at 3 m/s on flat ground, judged by where it comes to rest (closed forms
+// with c or with b: the event solver's closed forms take no b).
+LineProblem slide_line(const FrictionPair& pair) {
+  const Slide setup;
+  OneDofBlock block;
+  block.mass = setup.block.mass;
+  block.pair = pair;
+  block.normal_force = block.mass * standard_gravity;
+  block.v0 = setup.launch_speed;
+  const theory::SlideToRest rest = theory::slide_to_rest(setup.launch_speed, block.mass, pair, standard_gravity);
+  const double distance = rest.distance;
+  return {block, 2.0, [distance](double) { return distance; }, true, {{rest.time}, true}};
+}
+
+Outcome spring_run(const LineProblem& line, const StepSettings& settings) {
+  auto scene = make_spring_pull(SpringPull{}, settings);
+  const b2Body* block = scene->body("block");
+  const double start = block->GetPosition().x;
+  return follow(*scene, line, [&] {
+    return Sample{scene->time(), block->GetPosition().x - start, block->GetLinearVelocity().x};
+  });
+}
+
+Outcome incline_run(const LineProblem& line, double angle, const StepSettings& settings) {
+  Incline setup;
+  setup.angle = angle;
+  auto scene = make_incline(setup, settings);
+  const std::vector<double>& distance = scene->probe("distance").history;
+  const std::vector<double>& speed = scene->probe("speed").history;
+  return follow(*scene, line, [&] {
+    return distance.empty() ? Sample{0.0, 0.0, 0.0} : Sample{scene->time(), distance.back(), speed.back()};
+  });
+}
+
+Outcome slide_run(const LineProblem& line, const StepSettings& settings) {
+  Slide setup;
+  setup.block.pair = line.block.pair;
+  auto scene = make_slide(setup, settings);
+  const b2Body* block = scene->body("block");
+  const double start = block->GetPosition().x;
+  return follow(*scene, line, [&] {
+    return Sample{scene->time(), block->GetPosition().x - start, block->GetLinearVelocity().x};
+  });
+}
+
+// The two slopes a degree either side of the sticking angle of the scenarios' pair.
+double sticking_angle() { return theory::sticking_angle(Incline{}.block.pair.mu_s); }
+double above_angle() { return std::round(sticking_angle() * 180.0 / M_PI + 1.0) * M_PI / 180.0; }
+double below_angle() { return std::round(sticking_angle() * 180.0 / M_PI - 1.0) * M_PI / 180.0; }
+
+BenchmarkProblem line_problem(std::string name, std::string label, std::string lesson, std::string question, LineProblem line,
+                              std::function<Outcome(const LineProblem&, const StepSettings&)> run) {
+  BenchmarkProblem problem{std::move(name), std::move(label), std::move(lesson), std::move(question), "m", line.t_end, {}, line};
+  problem.run = [line = std::move(line), run = std::move(run)](const StepSettings& settings) { return run(line, settings); };
+  return problem;
+}
+
+// A wrong answer (infinite error) is the only failure the other problems can show.
+std::function<Outcome(const StepSettings&)> answered(std::function<double(const StepSettings&)> error) {
+  return [error = std::move(error)](const StepSettings& settings) {
+    const double e = error(settings);
+    return Outcome{std::isnan(e) ? INFINITY : e, std::isfinite(e) ? "" : "wrong answer"};
+  };
+}
+
+std::string degrees(double angle) {
+  std::ostringstream text;
+  text << std::lround(angle * 180.0 / M_PI) << "\u00b0";
+  return text.str();
 }
 
 // The tipping box pushed at 0.7 m (above d/(2·μs) = 0.5 m): it must tip, at the push
@@ -38,28 +139,6 @@ double tipping_error(const StepSettings& settings) {
   const double tipping_push = mg * setup.block.width / (2.0 * setup.push_height);
   const PushResult result = run_pushed_box(setup, settings, tipping_push / setup.push_rate + 1.0);
   return result.tipped ? std::abs(result.force - tipping_push) : INFINITY;
-}
-
-// On a 25° slope (tan 25° = 0.47 < mu_s = 0.6) Coulomb's block never moves: the error is how
-// far it went anyway, the largest over 2 s.
-double incline_below_error(const StepSettings& settings) {
-  Incline setup;
-  setup.angle = 25.0 * M_PI / 180.0;
-  auto scene = make_incline(setup, settings);
-  double worst = 0.0;
-  while (scene->time() < 2.0 - 0.5 * scene->frame_step()) {
-    scene->step();
-    worst = std::max(worst, std::abs(scene->probe("distance").history.back()));
-  }
-  return worst;
-}
-
-// A block launched at 3 m/s slides to rest; the distance against the closed form with drag.
-double slide_error(const StepSettings& settings, const FrictionPair& pair) {
-  Slide setup;
-  setup.block.pair = pair;
-  const Measurement slid = measure_slide_distance(setup, settings);
-  return std::abs(slid.error());
 }
 
 // The push height where the box stops sliding and starts to tip, found by bisection (12
@@ -117,34 +196,75 @@ double disk_rolling_error(const StepSettings& settings) {
 
 std::vector<BenchmarkProblem> benchmark_problems() {
   std::vector<BenchmarkProblem> problems{lesson_problem("spring_pull"), lesson_problem("incline")};
-  problems.push_back({"Incline 25\u00b0: it sticks", "", "a block on a 25\u00b0 slope, below its sticking angle: the largest distance it moved in 2 s (exact: 0)",
-                      "m", 2.0, incline_below_error});
-  problems.push_back({"Slide to rest with c", "", "slide to rest from 3 m/s with c = 2 N\u00b7s/m: the distance against the closed form", "m", 1.5,
-                      [](const StepSettings& settings) { return slide_error(settings, {0.6, 0.4, 2.0, 0.0}); }});
-  problems.push_back({"Slide to rest with b", "", "slide to rest from 3 m/s with b = 1 N\u00b7s\u00b2/m\u00b2: the distance against the closed form", "m",
-                      1.5, [](const StepSettings& settings) { return slide_error(settings, {0.6, 0.4, 0.0, 1.0}); }});
+  const double below = below_angle();
+  problems.push_back(line_problem("Incline " + degrees(below) + ": just below, it sticks", degrees(below) + " sticks", "",
+                                  "a block released on a " + degrees(below) + " slope, a degree below its sticking angle: the largest "
+                                  "distance it moved in 2 s (exact: it never moves)",
+                                  incline_line(below), [below](const LineProblem& line, const StepSettings& settings) {
+                                    return incline_run(line, below, settings);
+                                  }));
+  problems.push_back(line_problem("Slide to rest with c", "slide, c", "",
+                                  "slide to rest from 3 m/s with c = 2 N\u00b7s/m: where it stops, against the closed form",
+                                  slide_line({0.6, 0.4, 2.0, 0.0}), slide_run));
+  problems.push_back(line_problem("Slide to rest with b", "slide, b", "",
+                                  "slide to rest from 3 m/s with b = 1 N\u00b7s\u00b2/m\u00b2: where it stops, against the closed form",
+                                  slide_line({0.6, 0.4, 0.0, 1.0}), slide_run));
   problems.push_back(lesson_problem("tipping_box"));
-  problems.push_back({"Tipping threshold, by bisection", "", "the push height where a box stops sliding and tips, by bisection, against d/(2\u00b7\u03bcs) = 0.5 m",
-                      "m", 40.0, tipping_threshold_error});
-  problems.push_back({"Disk starts to roll", "", "a disk launched sliding at 2 m/s: when it starts to roll, against v0/(3\u00b7\u03bck\u00b7g)", "s", 1.0,
-                      disk_rolling_error});
+  problems.push_back({"Tipping threshold, by bisection", "tip height", "", "the push height where a box stops sliding and tips, by bisection, against d/(2\u00b7\u03bcs) = 0.5 m",
+                      "m", 40.0, answered(tipping_threshold_error), std::nullopt});
+  problems.push_back({"Disk starts to roll", "disk rolls", "", "a disk launched sliding at 2 m/s: when it starts to roll, against v0/(3\u00b7\u03bck\u00b7g)", "s", 1.0,
+                      answered(disk_rolling_error), std::nullopt});
   return problems;
 }
 
 BenchmarkProblem lesson_problem(const std::string& lesson) {
   if (lesson == "spring_pull") {
-    return {"Spring stick-slip", lesson, "the spring-pulled block's largest position error over 10 s, against the exact stick-slip solution",
-            "m", 10.0, [](const StepSettings& settings) { return spring_pull_max_error(SpringPull{}, settings, 10.0); }};
+    return line_problem("Spring stick-slip", "spring", lesson,
+                        "the spring-pulled block's largest position error over 10 s, against the exact stick-slip solution",
+                        spring_line(), spring_run);
   }
   if (lesson == "incline") {
-    return {"Incline 40\u00b0: it slides", lesson, "the distance slid down a 40\u00b0 slope, largest error over 2 s against \u00bd\u00b7a\u00b7t\u00b2", "m", 2.0,
-            incline_error};
+    const double above = above_angle();
+    return line_problem("Incline " + degrees(above) + ": just above, it slides", degrees(above) + " slides", lesson,
+                        "the distance slid down a " + degrees(above) + " slope, a degree above its sticking angle: the largest "
+                        "error over 2 s against \u00bd\u00b7a\u00b7t\u00b2",
+                        incline_line(above), [above](const LineProblem& line, const StepSettings& settings) {
+                          return incline_run(line, above, settings);
+                        });
   }
   if (lesson == "tipping_box") {
-    return {"Tipping push", lesson, "the push at which the box pushed at 0.7 m tips, against m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N", "N", 2.75,
-            tipping_error};
+    return {"Tipping push", "tip push", lesson, "the push at which the box pushed at 0.7 m tips, against m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N", "N", 2.75,
+            answered(tipping_error), std::nullopt};
   }
   throw InvalidInput("no benchmark problem for '" + lesson + "'; there is one for spring_pull, incline and tipping_box");
+}
+
+std::string reduced_method_name(ReducedMethod method) {
+  switch (method) {
+    case ReducedMethod::explicit_euler: return "1-DOF explicit Euler (regularized)";
+    case ReducedMethod::semi_implicit_euler: return "1-DOF semi-implicit Euler (regularized)";
+    case ReducedMethod::rk4: return "1-DOF RK4 (regularized)";
+    case ReducedMethod::located_events: return "1-DOF RK4 (located events)";
+  }
+  return "";
+}
+
+Outcome run_reduced(const LineProblem& line, ReducedMethod method, double hz, double epsilon) {
+  if (method == ReducedMethod::located_events) {
+    const Trajectory located = solve_event_rk4(line.block, line.t_end, 1.0 / hz);
+    std::vector<Sample> samples;
+    const int count = static_cast<int>(std::lround(line.t_end * 1000.0));
+    for (int i = 0; i <= count; ++i) {
+      const double t = std::min(line.t_end, i * 1e-3);
+      const BlockState state = located.state(t);
+      samples.push_back({t, state.x, state.v});
+    }
+    return judge(line, samples);
+  }
+  const Integrator integrator = method == ReducedMethod::explicit_euler        ? Integrator::explicit_euler
+                                : method == ReducedMethod::semi_implicit_euler ? Integrator::semi_implicit_euler
+                                                                               : Integrator::rk4;
+  return judge(line, integrate_regularized(line.block, line.t_end, 1.0 / hz, epsilon, integrator));
 }
 
 std::string describe(const StepSettings& settings) {
@@ -179,19 +299,23 @@ double thread_cpu_seconds() {
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-Trial measure_setting(const BenchmarkProblem& problem, const StepSettings& settings, int repeats, double tolerance) {
-  Trial trial;
-  trial.settings = settings;
+std::pair<Outcome, double> measure(const std::function<Outcome()>& run, double simulated, int repeats) {
+  Outcome outcome;
   std::vector<double> costs;
-  // The error is the same each time (the step is fixed); the cost is the median of the repeats.
+  // The answer is the same each time (the step is fixed); the cost is the median of the repeats.
   for (int r = 0; r < std::max(1, repeats); ++r) {
     const double start = thread_cpu_seconds();
-    trial.error = problem.error(settings);
-    costs.push_back((thread_cpu_seconds() - start) / problem.simulated);
+    outcome = run();
+    costs.push_back((thread_cpu_seconds() - start) / simulated);
   }
   std::sort(costs.begin(), costs.end());
-  trial.cost = costs[costs.size() / 2];
-  trial.meets = trial.error <= tolerance;
+  return {outcome, costs[costs.size() / 2]};
+}
+
+Trial measure_setting(const BenchmarkProblem& problem, const StepSettings& settings, int repeats, double tolerance) {
+  const auto [outcome, cost] = measure([&] { return problem.run(settings); }, problem.simulated, repeats);
+  Trial trial{settings, outcome.error, outcome.fails, cost, false};
+  trial.meets = trial.error <= tolerance && trial.fails.empty();
   return trial;
 }
 

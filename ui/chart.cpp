@@ -147,6 +147,20 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
     if (!series.name.empty()) entries.push_back({series.name, series.colour});
   }
   const float line = text + 3.0f * s;
+  if (chart.legend == Chart::Legend::only) {
+    float y = corner.y + fonts.body->FontSize + text + 16.0f * s;
+    for (const auto& [name, colour] : entries) {
+      draw->AddRectFilled(ImVec2(corner.x + 12.0f * s, y + 2.0f * s), ImVec2(corner.x + 24.0f * s, y + text - 2.0f * s), colour);
+      draw->AddText(font, text, ImVec2(corner.x + 30.0f * s, y), theme.text, name.c_str());
+      y += line;
+    }
+    for (const std::string& note : chart.notes) {
+      draw->AddText(font, text, ImVec2(corner.x + 12.0f * s, y + 6.0f * s), theme.faint_text, note.c_str());
+      y += line;
+    }
+    return;
+  }
+  if (chart.legend == Chart::Legend::none) entries.clear();
   const std::size_t entry_rows = (entries.size() + 1) / 2;
   const float legend_height = line * static_cast<float>(entry_rows + chart.notes.size()) + (entries.empty() ? 0.0f : 6.0f * s);
   const float top = corner.y + fonts.body->FontSize + text + 16.0f * s;

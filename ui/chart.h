@@ -39,6 +39,9 @@ struct Chart {
   std::vector<std::pair<std::string, ImU32>> categories;  // name and colour, by category number
   std::vector<ChartSeries> series;
   std::vector<std::string> notes;  // lines of text under the legend
+  // Charts that share their series' colours can leave the legend to one chart that is only a
+  // legend (one column, no axes), so each plot keeps its room.
+  enum class Legend { under, none, only } legend = Legend::under;
 };
 
 void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts);

@@ -1,0 +1,56 @@
+// How a run of a block along a line went wrong, judged from its position and velocity at
+// each frame against what the exact answer does. A benchmark keeps failed runs and marks them
+// (a wrong picture of the physics is worse than a large error), so it needs the failure named:
+// not a number, blown up, chattering, stick-slip that is not there or is missing, a block that
+// should stay put creeping or sliding.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "physics/reduced_model.h"
+
+namespace frictionlab {
+
+// What the exact motion does over the run.
+struct ExpectedMotion {
+  std::vector<double> stop_times;  // when it comes to rest (and sticks)
+  bool moves = true;               // false: it should never leave its place
+};
+// From an exact (or any event-driven) trajectory: its stops before t_end, whether it slides.
+ExpectedMotion expected_motion(const Trajectory& exact);
+
+class RunCheck {
+ public:
+  // At rest below stop_speed; moving again only above ten times that, so noise about zero
+  // does not count as stops and starts. Velocity reversals count above a tenth of it.
+  explicit RunCheck(double stop_speed = 1e-3) : stop_speed_(stop_speed) {}
+  void add(double t, double x, double v);
+
+  // "" when the run did what the exact motion does; else the first of "not a number", "blew
+  // up", "chatters", "spurious stick-slip", "misses stick-slip", "slides" or "creeps" (a block
+  // that should have stayed put, accelerating or at a steady speed).
+  std::string failure(const ExpectedMotion& expected) const;
+
+  const std::vector<double>& stop_times() const { return stop_times_; }
+  // The longest run of frames in which the velocity flipped sign every frame.
+  int longest_flipping() const { return longest_flipping_; }
+
+ private:
+  double stop_speed_;
+  bool finite_ = true;
+  double largest_ = 0.0;  // of |x| and |v|
+  double first_t_ = 0.0, last_t_ = 0.0, start_x_ = 0.0, farthest_ = 0.0;
+  bool started_ = false, moving_ = false;
+  std::vector<double> stop_times_;
+  // Chatter: the velocity alternating in sign frame after frame without dying away.
+  double last_v_ = 0.0;
+  int flipping_ = 0;
+  double flip_start_amplitude_ = 0.0;
+  int longest_flipping_ = 0;
+  bool sustained_flipping_ = false;
+  // Speed at the middle and at the end, to tell a slide (speeding up) from a creep.
+  std::vector<std::pair<double, double>> speeds_;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,124 @@
+// Failed runs are named, not dropped: a run that chatters, sticks where the exact motion
+// slides, slides or creeps where it sticks, or stops being a number is marked as such, on
+// made-up velocity records and on real runs either side of the regularized law's boundary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/recommend.h"
+#include "physics/run_check.h"
+#include "physics/stability.h"
+
+namespace frictionlab {
+namespace {
+
+constexpr double h = 1.0 / 240.0;
+
+// A block at rest whose velocity is kicked to 5 mm/s and then multiplied by `factor` each step:
+// between -1 and 0 it rings and dies away (stable), at -1 it flips for ever (chatter).
+std::string ringing(double factor, const ExpectedMotion& expected) {
+  RunCheck check;
+  double v = 0.005;
+  for (int i = 0; i < 480; ++i, v *= factor) check.add(i * h, 0.0, v);
+  return check.failure(expected);
+}
+
+TEST(RunCheck, ChatterIsFlippingThatDoesNotDieAway) {
+  const ExpectedMotion at_rest{{}, false};
+  EXPECT_EQ(ringing(-1.0, at_rest), "chatters");
+  EXPECT_EQ(ringing(-0.95, at_rest), "chatters");  // halves only after 14 flips: still chatter over 8
+  EXPECT_EQ(ringing(-0.5, at_rest), "");
+  EXPECT_EQ(ringing(0.5, at_rest), "");
+}
+
+TEST(RunCheck, NotANumberAndBlowUpComeFirst) {
+  RunCheck nan, blown;
+  for (int i = 0; i < 10; ++i) {
+    nan.add(i * h, 0.0, i == 5 ? NAN : 0.0);
+    blown.add(i * h, std::pow(10.0, i), 1.0);
+  }
+  EXPECT_EQ(nan.failure({}), "not a number");
+  EXPECT_EQ(blown.failure({}), "blew up");
+}
+
+// Three slides of a second, each followed by half a second at rest, over 4.5 s.
+RunCheck three_slides() {
+  RunCheck check;
+  for (int i = 0; i <= static_cast<int>(4.5 / h); ++i) {
+    const double t = i * h, phase = std::fmod(t, 1.5);
+    check.add(t, t, phase < 1.0 ? 0.3 * std::sin(M_PI * phase) : 0.0);
+  }
+  return check;
+}
+
+TEST(RunCheck, StopsAreCountedAgainstTheExactMotions) {
+  const RunCheck check = three_slides();
+  ASSERT_EQ(check.stop_times().size(), 3u);
+  EXPECT_NEAR(check.stop_times()[1], 2.5, 0.01);
+  EXPECT_EQ(check.failure({{1.0, 2.5, 4.0}, true}), "");
+  EXPECT_EQ(check.failure({{2.5}, true}), "spurious stick-slip");
+  EXPECT_EQ(check.failure({{1.0, 2.0, 3.0, 3.5, 4.0}, true}), "misses stick-slip");
+  // A stop in the last tenth of the run may fall either side of the end: not held against it.
+  EXPECT_EQ(check.failure({{1.0, 2.5}, true}), "spurious stick-slip");
+  EXPECT_EQ(check.failure({{1.0, 2.5, 4.0, 4.45}, true}), "");
+}
+
+TEST(RunCheck, ABlockThatShouldStayPutCreepsOrSlides) {
+  RunCheck creep, slide, still;
+  for (int i = 0; i <= 480; ++i) {
+    const double t = i * h;
+    creep.add(t, 0.01 * t, 0.01);
+    slide.add(t, 0.5 * t * t, t);
+    still.add(t, 1e-4 * t, 1e-4);
+  }
+  const ExpectedMotion at_rest{{}, false};
+  EXPECT_EQ(creep.failure(at_rest), "creeps");
+  EXPECT_EQ(slide.failure(at_rest), "slides");
+  EXPECT_EQ(still.failure(at_rest), "");  // 0.2 mm in 2 s: within a millimetre of its place
+}
+
+// The spring problem in Box2D with the regularized law: a step a fifth inside the boundary
+// 2·eps/(mu_s·g) does not chatter, a quarter past it does; Box2D's single coefficient stops
+// the block more often than Coulomb's (it touches rest each period of the spring); a large
+// epsilon creeps through the sticks and misses them.
+TEST(FailedRuns, TheSpringProblemNamesHowEachTreatmentFails) {
+  const BenchmarkProblem spring = lesson_problem("spring_pull");
+  StepSettings settings;
+  settings.treatment = FrictionTreatment::regularized;
+  settings.threshold_speed = 0.01;
+  const double boundary = 2.0 * settings.threshold_speed / (0.6 * 9.81);
+  settings.hz = 1.0 / (0.8 * boundary);
+  EXPECT_NE(spring.run(settings).fails, "chatters") << settings.hz << " Hz";
+  settings.hz = 1.0 / (1.25 * boundary);
+  EXPECT_EQ(spring.run(settings).fails, "chatters") << settings.hz << " Hz";
+  settings.hz = 240.0;
+  settings.threshold_speed = 0.1;
+  EXPECT_EQ(spring.run(settings).fails, "misses stick-slip");
+  settings.treatment = FrictionTreatment::box2d;
+  EXPECT_EQ(spring.run(settings).fails, "spurious stick-slip");
+  settings.treatment = FrictionTreatment::stick_slip;
+  EXPECT_EQ(spring.run(settings).fails, "");
+}
+
+// The reduced models answer every problem that is a block on a line: RK4 between located
+// events to well under a micrometre, explicit Euler with the regularized law chattering once
+// the block has come to rest exactly when its step passes 2·eps/(mu_s·g).
+TEST(FailedRuns, ReducedModelsOnEveryLineProblem) {
+  int lines = 0;
+  for (const BenchmarkProblem& problem : benchmark_problems()) {
+    if (!problem.line) continue;
+    ++lines;
+    const Outcome located = run_reduced(*problem.line, ReducedMethod::located_events, 240.0, 0.01);
+    EXPECT_LT(located.error, 1e-6) << problem.name;
+    EXPECT_EQ(located.fails, "") << problem.name;
+  }
+  EXPECT_EQ(lines, 5);
+  const LineProblem slide = *benchmark_problems()[3].line;
+  ASSERT_GT(slide.block.pair.c, 0.0);
+  const double epsilon = 0.01, boundary = 2.0 * epsilon / (0.6 * 9.81);
+  EXPECT_EQ(run_reduced(slide, ReducedMethod::explicit_euler, 1.0 / (0.9 * boundary), epsilon).fails, "");
+  EXPECT_EQ(run_reduced(slide, ReducedMethod::explicit_euler, 1.0 / (1.1 * boundary), epsilon).fails, "chatters");
+}
+
+}  // namespace
+}  // namespace frictionlab
