@@ -34,6 +34,9 @@ std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int wi
 // its fitted order of convergence in the legend when `fit_orders`), points labelled by rate,
 // exact answers at 10⁻¹², failed runs crossed where they lie and wrong answers along the top,
 // and the Pareto front of the runs that did not fail.
+// The crosses a work-precision chart marks runs with: failed (drawn where the run's error lies)
+// and wrong answers (no error to draw: along the top).
+std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks();
 // Given `orders`, each method's fitted order is also put there.
 ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
                                bool fit_orders = true, std::vector<std::pair<std::string, double>>* orders = nullptr);

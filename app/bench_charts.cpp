@@ -74,6 +74,11 @@ std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double
   return front;
 }
 
+std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks() {
+  return {{"failed run (chatter, wrong stick-slip, creep, slide)", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}},
+          {"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}}};
+}
+
 ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
                                bool fit_orders, std::vector<std::pair<std::string, double>>* orders) {
   ui::Chart chart;
@@ -88,8 +93,7 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
     if (!by_method.count(run.method)) order.push_back(run.method);
     by_method[run.method].push_back(&run);
   }
-  ui::ChartSeries failed{"failed run (chatters, spurious or missing stick-slip, creeps, slides)", {}, IM_COL32(200, 30, 30, 255),
-                         false, ui::Marker::cross, {}};
+  auto [failed, wrong] = failure_marks();
   std::vector<double> wrong_costs;
   std::vector<std::pair<double, double>> sound;  // (cost, error) of the runs that did not fail
   int exact = 0;
@@ -128,7 +132,6 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
     double top = error_floor;
     for (const auto& point : sound) top = std::max(top, point.second);
     for (const auto& point : failed.points) top = std::max(top, point.second);
-    ui::ChartSeries wrong{"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}};
     for (const double cost : wrong_costs) wrong.points.push_back({cost, 3.0 * top});
     chart.series.push_back(wrong);
   }

@@ -89,6 +89,9 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   std::ostringstream csv;
   csv << "problem,measure,unit,method,treatment,epsilon_m_per_s,hz,substeps,velocity_iterations,error,cpu_s_per_simulated_s,fails\n";
   std::vector<ui::Chart> charts;
+  // Fitted orders: a row per problem, a column per method (short names).
+  std::vector<std::vector<std::string>> order_table{{"fitted order"}};
+  for (const Method& method : all) order_table[0].push_back(short_method(method.name));
   // A row per method, a column per problem.
   std::vector<std::vector<std::string>> table{{"method at 240 Hz"}};
   for (const Method& method : all) table.push_back({method.name});
@@ -129,6 +132,12 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     }
     std::vector<std::pair<std::string, double>> orders;
     ui::Chart chart = work_precision_chart(problem.name, "error (" + problem.unit + ")", runs, true, &orders);
+    std::vector<std::string> order_row{problem.label};
+    for (const Method& method : all) {
+      const auto found = std::find_if(orders.begin(), orders.end(), [&](const auto& entry) { return entry.first == method.name; });
+      order_row.push_back(found == orders.end() ? "-" : format_number(found->second, 2));
+    }
+    order_table.push_back(order_row);
     // One legend for all (the colours are the same in every chart), the fitted orders here.
     chart.legend = ui::Chart::Legend::none;
     chart.notes.pop_back();
@@ -136,7 +145,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     for (const auto& [method, order] : orders) {
       char part[120];
       std::snprintf(part, sizeof part, " %s %.1f%s", short_method(method).c_str(), order, &order == &orders.back().second ? "" : ",");
-      if (note.size() + std::strlen(part) > 95) {
+      if (note.size() + std::strlen(part) > 72) {
         chart.notes.push_back(note);
         note = " ";
       }
@@ -175,9 +184,9 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     if (cut != std::string::npos) series.name.erase(cut);
     series.points.clear();
   }
-  legend.series.push_back({"failed run (chatters, spurious or missing stick-slip, creeps, slides)", {}, IM_COL32(200, 30, 30, 255), false,
-                           ui::Marker::cross, {}});
-  legend.series.push_back({"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}});
+  const auto [failed, wrong] = failure_marks();
+  legend.series.push_back(failed);
+  legend.series.push_back(wrong);
   legend.notes = {"points labelled by step rate (Hz)", "exact answers (error 0) drawn at 10\u207b\u00b9\u00b2",
                   "fitted order: slope of log error against log step", "over the runs that did not fail"};
   charts.push_back(legend);
@@ -194,6 +203,9 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   out << "failed:";
   for (const auto& [failure, code] : failure_letters) out << ' ' << code << " = " << failure << (code[0] == 'W' ? "\n" : ",");
   out << "-: not a block on a line, so no 1-DOF model\n";
+  out << "\nOrder of convergence per problem: slope of log error against log step over the runs that did not fail and\n"
+         "were not exact (-: fewer than three such runs)\n";
+  print_table(out, order_table);
   std::vector<std::pair<std::string, std::string>> files{{directory + "/work_precision.csv", csv.str()}};
   if (std::string png = charts_png(charts, 3, 2700, 3000, "problems.png", &out); !png.empty()) {
     files.emplace_back(directory + "/problems.png", std::move(png));

@@ -319,6 +319,21 @@ Trial measure_setting(const BenchmarkProblem& problem, const StepSettings& setti
   return trial;
 }
 
+std::string Recommender::failures() const {
+  std::map<std::string, int> counts;
+  int failed = 0;
+  for (const Trial& trial : trials_) {
+    if (trial.fails.empty()) continue;
+    ++counts[trial.fails];
+    ++failed;
+  }
+  if (failed == 0) return "";
+  std::ostringstream text;
+  text << failed << " of " << trials_.size() << " failed:";
+  for (const auto& [why, count] : counts) text << (&why == &counts.begin()->first ? " " : ", ") << why << ' ' << count;
+  return text.str();
+}
+
 void Recommender::run_next() {
   if (done()) return;
   trials_.push_back(measure_setting(problem_, candidates_[next_++], repeats_, tolerance_));

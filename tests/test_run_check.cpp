@@ -100,6 +100,18 @@ TEST(FailedRuns, TheSpringProblemNamesHowEachTreatmentFails) {
   EXPECT_EQ(spring.run(settings).fails, "");
 }
 
+// A run that gets the number within the tolerance with the physics wrong does not meet it:
+// box2d is within 5 cm on the spring, by a block that stops every period of the spring.
+TEST(FailedRuns, AFailedRunNeverMeetsTheTolerance) {
+  StepSettings one_mu;
+  one_mu.treatment = FrictionTreatment::box2d;
+  one_mu.hz = 60;
+  const Trial trial = measure_setting(lesson_problem("spring_pull"), one_mu, 1, 0.05);
+  EXPECT_LT(trial.error, 0.05);
+  EXPECT_EQ(trial.fails, "spurious stick-slip");
+  EXPECT_FALSE(trial.meets);
+}
+
 // The reduced models answer every problem that is a block on a line: RK4 between located
 // events to well under a micrometre, explicit Euler with the regularized law chattering once
 // the block has come to rest exactly when its step passes 2·eps/(mu_s·g).

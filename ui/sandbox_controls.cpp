@@ -325,6 +325,7 @@ void Sandbox::cheapest_setting_tab() {
       ImGui::PopTextWrapPos();
       if (ImGui::Button("Use it")) change_settings(best->settings);
       remember("use it");
+      if (const std::string failed = recommender_->failures(); !failed.empty()) ImGui::TextDisabled("%s", failed.c_str());
     } else {
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "No setting tried answers within %g %s.",
                          recommender_->tolerance(), problem->unit.c_str());
