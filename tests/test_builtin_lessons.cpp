@@ -15,11 +15,13 @@ struct Case {
   std::string lesson;
   std::map<std::string, std::string> settings;
   std::string outcome;  // the word the lesson's first word expectation must show, if any
+  double hz = 240.0;    // the step rate the lesson runs at
 };
 
 std::ostream& operator<<(std::ostream& out, const Case& c) {
   out << c.lesson;
   for (const auto& [name, value] : c.settings) out << ' ' << name << '=' << value;
+  if (c.hz != 240.0) out << " at " << c.hz << " Hz";
   return out;
 }
 
@@ -27,7 +29,9 @@ class BuiltinLesson : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BuiltinLesson, MeetsEveryExpectation) {
   const Case& c = GetParam();
-  Lesson lesson(resolve_lesson(c.lesson), c.settings);
+  StepSettings rate;
+  rate.hz = c.hz;
+  Lesson lesson(resolve_lesson(c.lesson), c.settings, rate);
   run_for(lesson, lesson.duration());
   const std::vector<ExpectationResult> rows = lesson.expectations();
   ASSERT_FALSE(rows.empty());
@@ -55,6 +59,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"where_methods_fail", {}, "jitters"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.02"}}, "settles"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.0005"}, {"angle", "5"}}, "jitters"},
+                      // Just past the boundary the speed swings about its creep speed without
+                      // crossing zero: still jitter. Just inside it, it settles.
+                      Case{"where_methods_fail", {}, "jitters", 480},
+                      Case{"where_methods_fail", {}, "jitters", 1380},
+                      Case{"where_methods_fail", {}, "settles", 1400},
+                      Case{"where_methods_fail", {{"angle", "30"}}, "jitters"},
                       Case{"incline", {{"angle", "20"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "slides"},
                       Case{"incline", {{"angle", "15"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "sticks"},
                       Case{"incline", {{"angle", "45"}, {"c", "2"}, {"mass", "0.5"}}, "slides"},
