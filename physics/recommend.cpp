@@ -130,15 +130,23 @@ std::string degrees(double angle) {
   return text.str();
 }
 
-// The tipping box pushed at 0.7 m (above d/(2·μs) = 0.5 m): it must tip, at the push
-// m·g·d/(2·h); a box that slides instead has the answer wrong altogether.
+// The tipping box pushed low, at 0.3 m (below d/(2·mu_s) = 0.5 m), must slide when the push
+// reaches mu_s·m·g = 49.05 N; pushed high, at 0.7 m, it must tip at m·g·d/(2·h) = 35.0 N. The
+// larger error of the two, so that a treatment without mu_s (box2d slides at mu_k·m·g) does
+// not pass on tipping alone; the wrong outcome at either height is a wrong answer.
 double tipping_error(const StepSettings& settings) {
-  PushedBox setup;
-  setup.push_height = 0.7;
-  const double mg = setup.block.mass * standard_gravity;
-  const double tipping_push = mg * setup.block.width / (2.0 * setup.push_height);
-  const PushResult result = run_pushed_box(setup, settings, tipping_push / setup.push_rate + 1.0);
-  return result.tipped ? std::abs(result.force - tipping_push) : INFINITY;
+  double worst = 0.0;
+  for (const double height : {0.3, 0.7}) {
+    PushedBox setup;
+    setup.push_height = height;
+    const double mg = setup.block.mass * standard_gravity;
+    const bool tips = height > theory::tip_height(setup.block.width, setup.block.pair.mu_s);
+    const double expected = tips ? mg * setup.block.width / (2.0 * height) : setup.block.pair.mu_s * mg;
+    const PushResult result = run_pushed_box(setup, settings, expected / setup.push_rate + 1.0);
+    if (result.tipped != tips) return INFINITY;
+    worst = std::max(worst, std::abs(result.force - expected));
+  }
+  return worst;
 }
 
 // The push height where the box stops sliding and starts to tip, found by bisection (12
@@ -233,10 +241,22 @@ BenchmarkProblem lesson_problem(const std::string& lesson) {
                         });
   }
   if (lesson == "tipping_box") {
-    return {"Tipping push", "tip push", lesson, "the push at which the box pushed at 0.7 m tips, against m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N", "N", 2.75,
-            answered(tipping_error), std::nullopt};
+    return {"Tipping push", "tip push", lesson,
+            "the push at which the box slides, pushed at 0.3 m (\u03bcs\u00b7m\u00b7g = 49.05 N), and tips, pushed at 0.7 m "
+            "(m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N): the larger error",
+            "N", 6.2, answered(tipping_error), std::nullopt};
   }
-  throw InvalidInput("no benchmark problem for '" + lesson + "'; there is one for spring_pull, incline and tipping_box");
+  if (lesson == "where_methods_fail") {
+    // Its question: what holds the block still on a slope it should stick to.
+    const double angle = 20.0 * M_PI / 180.0;
+    return line_problem("Incline 20\u00b0: it sticks", "20\u00b0 sticks", lesson,
+                        "a block released on a 20\u00b0 slope, well below its sticking angle: the largest distance it moved in 2 s "
+                        "(exact: it never moves)",
+                        incline_line(angle),
+                        [angle](const LineProblem& line, const StepSettings& settings) { return incline_run(line, angle, settings); });
+  }
+  throw InvalidInput("no benchmark problem for '" + lesson +
+                     "'; there is one for each built-in lesson: spring_pull, incline, tipping_box and where_methods_fail");
 }
 
 std::string reduced_method_name(ReducedMethod method) {

@@ -55,7 +55,8 @@ struct BenchmarkProblem {
   std::optional<LineProblem> line;  // when it is a block on a line
   double error(const StepSettings& settings) const { return run(settings).error; }
 };
-// spring_pull, incline or tipping_box; throws InvalidInput listing them for another name.
+// spring_pull, incline, tipping_box or where_methods_fail; throws InvalidInput listing them
+// for another name.
 BenchmarkProblem lesson_problem(const std::string& lesson);
 // Every problem the benchmark charts, each with an exact answer: the three lessons' problems
 // (incline's is a slope a degree above the sticking angle), the slope a degree below it,

@@ -694,6 +694,27 @@ TEST(Sandbox, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
   EXPECT_EQ(driver.lesson().scene().frame(), 0);  // a new setting starts the lesson again
 }
 
+// A tolerance that is not a positive number is refused (Measure stays off) rather than
+// quietly replaced by another one.
+TEST(Sandbox, ANegativeToleranceMeasuresNothing) {
+  Driver driver("incline");
+  driver.frame();
+  driver.frame();
+  driver.click("Cheapest setting tab");
+  driver.click("tolerance");
+  driver.type("-1");
+  driver.key(GLFW_KEY_ENTER);
+  driver.click("measure");
+  EXPECT_EQ(driver.sandbox().cheapest_tolerance(), -1.0);
+  EXPECT_FALSE(driver.sandbox().cheapest_started());
+  driver.click("tolerance");
+  driver.type("0.01");
+  driver.key(GLFW_KEY_ENTER);
+  driver.click("measure");
+  for (int i = 0; i < 100 && !driver.sandbox().control("use it"); ++i) driver.frame(1.0 / 60.0);
+  EXPECT_TRUE(driver.sandbox().control("use it").has_value());
+}
+
 TEST(Sandbox, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_settings_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings settings;

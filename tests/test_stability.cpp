@@ -119,20 +119,35 @@ TEST(Recommend, TheCheapestSettingMeetsTheToleranceAndNothingThatMeetsItIsCheape
 }
 
 TEST(Recommend, AProblemForEachBuiltInLessonAndAClearMessageOtherwise) {
-  for (const char* lesson : {"spring_pull", "incline", "tipping_box"}) EXPECT_EQ(lesson_problem(lesson).lesson, lesson);
+  for (const char* lesson : {"spring_pull", "incline", "tipping_box", "where_methods_fail"}) {
+    EXPECT_EQ(lesson_problem(lesson).lesson, lesson);
+  }
   try {
     lesson_problem("ramp");
     ADD_FAILURE() << "no error";
   } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find("spring_pull, incline and tipping_box"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("spring_pull, incline, tipping_box and where_methods_fail"), std::string::npos);
   }
-  // The box pushed above d/(2 mu_s) tips at m g d/(2 h) = 35.0 N: within 0.1 N at 240 Hz, and
-  // the error falls with the step (the push is placed where the back edge's load reaches zero).
+  // The box pushed above d/(2 mu_s) tips at m g d/(2 h) = 35.0 N and pushed below slides at
+  // mu_s m g = 49.05 N: within 0.1 N at 240 Hz, and the error falls with the step (the tipping
+  // push is placed where the back edge's load reaches zero).
   StepSettings fine;
   fine.hz = 960;
-  const double at_240 = lesson_problem("tipping_box").error(StepSettings{});
+  const BenchmarkProblem tipping = lesson_problem("tipping_box");
+  const double at_240 = tipping.error(StepSettings{});
   EXPECT_LT(at_240, 0.1);
-  EXPECT_LT(lesson_problem("tipping_box").error(fine), 0.5 * at_240);
+  EXPECT_LT(tipping.error(fine), 0.5 * at_240);
+  // One coefficient tips the box right but lets it slide at mu_k m g: 0.1 × 98.1 N early.
+  StepSettings one_mu;
+  one_mu.treatment = FrictionTreatment::box2d;
+  EXPECT_NEAR(tipping.error(one_mu), 0.1 * 98.1, 0.2);
+  // On the lesson's 20° slope every treatment that holds with a coefficient keeps the block
+  // still; the regularized law with its default epsilon creeps or slides.
+  const BenchmarkProblem holds = lesson_problem("where_methods_fail");
+  EXPECT_EQ(holds.run(StepSettings{}).fails, "");
+  StepSettings regularized;
+  regularized.treatment = FrictionTreatment::regularized;
+  EXPECT_NE(holds.run(regularized).fails, "");
 }
 
 // Every benchmark problem has an exact answer the stick-slip treatment approaches as the step

@@ -84,6 +84,9 @@ class Sandbox {
   // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
   // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
   std::optional<ImRect> control(const std::string& name) const;
+  // The Cheapest setting tab's tolerance as typed, and whether a search was started.
+  double cheapest_tolerance() const { return recommend_tolerance_; }
+  bool cheapest_started() const { return recommender_ != nullptr; }
   bool shown(const std::string& control_name) const;  // --lock
   // The world view's camera in the last frame: where the mouse's hand finds bodies.
   const Camera& world_camera() const { return camera_; }
@@ -141,7 +144,8 @@ class Sandbox {
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on
-  double recommend_tolerance_ = 0.0;           // as typed; 0: the problem's default
+  double recommend_tolerance_ = 0.0;           // as typed, for the lesson below
+  std::string recommend_lesson_;               // whose problem the tolerance is for
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;

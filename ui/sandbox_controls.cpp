@@ -289,46 +289,56 @@ void Sandbox::cheapest_setting_tab() {
     problem = lesson_problem(lesson);
   } catch (const InvalidInput&) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("Only spring_pull, incline and tipping_box have a benchmark problem with an exact answer to "
-                        "measure settings on.");
+    ImGui::TextDisabled("Only the built-in lessons have a benchmark problem with an exact answer to measure settings on.");
     ImGui::PopTextWrapPos();
     ImGui::EndTabItem();
     return;
   }
-  ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextDisabled("%s", problem->question.c_str());
-  ImGui::PopTextWrapPos();
-  if (recommend_tolerance_ <= 0.0) recommend_tolerance_ = problem->unit == "N" ? 0.5 : 0.001;
+  // The panel is short: the problem's name here, what it measures when hovered.
+  ImGui::TextDisabled("Benchmark: %s (?)", problem->name.c_str());
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s.\nMeasured on the benchmark's own values, not on this lesson's sliders.", problem->question.c_str());
+  }
+  // A tolerance belongs to its lesson's problem and unit: another lesson starts from its own.
+  if (recommend_lesson_ != lesson) {
+    recommend_lesson_ = lesson;
+    recommend_tolerance_ = problem->unit == "N" ? 0.5 : 0.001;
+  }
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("within");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f * fonts_->scale);
   ImGui::InputDouble("##tolerance", &recommend_tolerance_, 0.0, 0.0, "%g");
   remember("tolerance");
-  // "1e999" reads as infinity and "-1" as less than nothing: neither is a tolerance.
-  if (!(recommend_tolerance_ > 0.0) || !std::isfinite(recommend_tolerance_)) recommend_tolerance_ = 1e-9;
   ImGui::SameLine();
   ImGui::TextUnformatted(problem->unit.c_str());
+  // "1e999" reads as infinity and "-1" as less than nothing: neither is a tolerance.
+  const bool valid = recommend_tolerance_ > 0.0 && std::isfinite(recommend_tolerance_);
   ImGui::SameLine();
   const bool measuring = recommender_ && !recommender_->done() && recommender_->problem().lesson == lesson;
-  ImGui::BeginDisabled(measuring);
+  ImGui::BeginDisabled(measuring || !valid);
   if (ImGui::Button("Measure")) recommender_ = std::make_unique<Recommender>(*problem, recommend_tolerance_, 1);
   ImGui::EndDisabled();
   remember("measure");
+  const ImVec4 bad = ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad);
+  if (!valid) ImGui::TextColored(bad, "The tolerance must be a positive number of %s.", problem->unit.c_str());
   if (recommender_ && recommender_->problem().lesson == lesson) {
     if (!recommender_->done()) {
       ImGui::ProgressBar(static_cast<float>(recommender_->progress()));
     } else if (const std::optional<Trial> best = recommender_->cheapest()) {
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::Text("Cheapest: %s, error %.3g %s, %.3g ms CPU per simulated s.", describe(best->settings).c_str(), best->error,
-                  problem->unit.c_str(), best->cost * 1e3);
-      ImGui::PopTextWrapPos();
       if (ImGui::Button("Use it")) change_settings(best->settings);
       remember("use it");
+      ImGui::SameLine();
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::Text("Cheapest within %g %s: %s, error %.3g %s, %.3g ms CPU per simulated s.", recommender_->tolerance(),
+                  problem->unit.c_str(), describe(best->settings).c_str(), best->error, problem->unit.c_str(), best->cost * 1e3);
       if (const std::string failed = recommender_->failures(); !failed.empty()) ImGui::TextDisabled("%s", failed.c_str());
+      ImGui::PopTextWrapPos();
     } else {
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "No setting tried answers within %g %s.",
-                         recommender_->tolerance(), problem->unit.c_str());
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(bad, "No setting tried answers within %g %s.", recommender_->tolerance(), problem->unit.c_str());
+      if (const std::string failed = recommender_->failures(); !failed.empty()) ImGui::TextDisabled("%s", failed.c_str());
+      ImGui::PopTextWrapPos();
     }
   }
   ImGui::EndTabItem();
