@@ -210,7 +210,7 @@ int run_recommend(const std::string& lesson, const std::string& tolerance_text, 
 
 // The bench's progress on one line of a terminal: the whole run's share done, and the part
 // being measured. Each part is given its share of a full run's time (measured in a
-// Release build: the window's 600 paced frames take half of it).
+// Release build: drawing the window's frames on llvmpipe takes half of it).
 class ProgressBar {
  public:
   ProgressBar(bool shown, std::ostream& out) : shown_(shown), out_(out) {}
@@ -250,8 +250,10 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
       if (!directory.empty()) throw InvalidInput("bench: --out given twice; give one folder");
       directory = args[++i];
     } else if (args[i] == "--recommend" && i + 1 < args.size()) {
+      if (!recommend.empty()) throw InvalidInput("bench: --recommend given twice; give one lesson");
       recommend = args[++i];
     } else if (args[i] == "--tol" && i + 1 < args.size()) {
+      if (!tolerance.empty()) throw InvalidInput("bench: --tol given twice; give one tolerance");
       tolerance = args[++i];
     } else {
       throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
@@ -287,11 +289,9 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   bar.stage("lessons' speed", 0.01)(0.0);
   const std::string speed = lesson_speed(quick, part);
   finish();
-  bar.stage("frames drawn headless", 0.22)(0.0);
-  const std::string frames = frame_speed(quick, part);
+  const std::string frames = frame_speed(quick, part, bar.stage("frames drawn headless", 0.22));
   finish();
-  bar.stage("the window's frames", 0.50)(0.0);
-  const std::string window_frames = window_frame_speed(quick, part);
+  const std::string window_frames = window_frame_speed(quick, part, bar.stage("the window's frames", 0.50));
   finish();
   const auto stability = stability_files(quick, directory, part, bar.stage("stability maps", 0.01));
   finish();

@@ -43,9 +43,9 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.
-std::string frame_speed(bool quick, std::ostream& out);
+std::string frame_speed(bool quick, std::ostream& out, const Progress& progress);
 // The window_frame.csv text (CPU time per display frame of the window), or empty where EGL cannot start.
-std::string window_frame_speed(bool quick, std::ostream& out);
+std::string window_frame_speed(bool quick, std::ostream& out, const Progress& progress);
 // work_precision.csv (every problem × treatment × rate, and the spring's iterations and
 // sub-steps) and problems.png (a work-precision chart per problem), as (path, bytes).
 std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory,

@@ -60,6 +60,17 @@ std::string short_method(std::string name) {
   return name;
 }
 
+// The threshold speed a method runs with; blank for those that use none (stick-slip, box2d,
+// located events).
+std::string epsilon_cell(const Method& method, double reduced_epsilon) {
+  if (method.box2d) {
+    const FrictionTreatment t = method.box2d->treatment;
+    const bool uses = t == FrictionTreatment::threshold || t == FrictionTreatment::regularized;
+    return uses ? epsilon_text(method.box2d->threshold_speed) : "";
+  }
+  return *method.reduced == ReducedMethod::located_events ? "" : epsilon_text(reduced_epsilon);
+}
+
 std::string quoted(const std::string& text) { return '"' + text + '"'; }
 
 // How a run failed, in a letter for the terminal's table (its key is printed under it).
@@ -122,7 +133,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
         const StepSettings shown = method.box2d.value_or(StepSettings{});
         csv << quoted(problem.name) << ',' << quoted(problem.question) << ',' << problem.unit << ',' << quoted(method.name) << ','
             << (method.box2d ? std::string(treatment_name(shown.treatment)) : "") << ','
-            << (method.box2d ? shown.threshold_speed : reduced_epsilon) << ',' << hz << ','
+            << epsilon_cell(method, reduced_epsilon) << ',' << hz << ','
             << (method.box2d ? "1," + std::to_string(shown.velocity_iterations) : ",") << ',' << outcome.error << ',' << cost << ','
             << outcome.fails << '\n';
         if (hz == 240) at_240 = cell(outcome);
@@ -164,8 +175,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     StepSettings settings;
     settings.velocity_iterations = count;
     const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip," << settings.threshold_speed
-        << ",240,1," << count << ',' << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,240,1," << count << ',' << run.error << ',' << run.cost << ',' << run.fails << '\n';
     knob_runs.push_back({"240 Hz, velocity iterations", static_cast<double>(count), run.error, run.cost, run.fails});
   }
   for (const int count : quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 4, 8, 16}) {
@@ -173,8 +183,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     settings.hz = 60;
     settings.substeps = count;
     const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip," << settings.threshold_speed
-        << ",60," << count << ",8," << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,60," << count << ",8," << run.error << ',' << run.cost << ',' << run.fails << '\n';
     knob_runs.push_back({"60 Hz, sub-steps", static_cast<double>(count), run.error, run.cost, run.fails});
   }
   // The legend: every method's colour, and the marks.

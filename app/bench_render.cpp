@@ -15,7 +15,7 @@
 
 namespace frictionlab {
 
-std::string frame_speed(bool quick, std::ostream& out) {
+std::string frame_speed(bool quick, std::ostream& out, const Progress& progress) {
   using clock = std::chrono::steady_clock;
   const auto seconds_since = [](clock::time_point start) {
     return std::chrono::duration<double>(clock::now() - start).count();
@@ -33,7 +33,8 @@ std::string frame_speed(bool quick, std::ostream& out) {
                                                "PNG write", "PNG size"}};
   const std::string scratch =
       (std::filesystem::temp_directory_path() / ("frictionlab_bench_" + std::to_string(::getpid()) + ".png")).string();
-  for (const std::string& name : lessons::builtin_lessons()) {
+  const std::vector<std::string> names = lessons::builtin_lessons();
+  for (const std::string& name : names) {
     lessons::Lesson lesson(lessons::resolve_lesson(name));
     const ui::WorldFraming framing = ui::WorldFraming::of(lesson.scene());
     // Frames spread over the lesson, so plots with long records are timed too.
@@ -42,6 +43,7 @@ std::string frame_speed(bool quick, std::ostream& out) {
     std::vector<double> step, ui, raster, readback, frame, encode, write;
     std::size_t bytes = 0;
     for (int f = 0; f < frames; ++f) {
+      progress((static_cast<double>(&name - names.data()) + static_cast<double>(f) / frames) / static_cast<double>(names.size()));
       for (long s = 1; s < steps_between; ++s) lesson.step();
       const auto step_start = clock::now();
       lesson.step();

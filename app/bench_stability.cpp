@@ -80,12 +80,12 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   // Creep on a 20° slope, where Coulomb's block sticks (tan 20° = 0.36 < 0.5).
   const double angle = 20.0 * M_PI / 180.0;
   ui::Chart creep;
-  creep.title = "Creep on a 20\u00b0 slope that should hold the block";
+  creep.title = "Creep on a 20\u00b0 slope, \u03bcs 0.5: it should hold";
   creep.x_label = "threshold speed \u03b5 (m/s)";
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
   ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries creep_measured{"semi-implicit Euler, h = 2\u03b5/(5\u00b7\u03bcs\u00b7g)", {}, measured_colour, false,
+  ui::ChartSeries creep_measured{"semi-implicit Euler, a fifth of its boundary step", {}, measured_colour, false,
                                  ui::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {

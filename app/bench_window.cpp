@@ -28,7 +28,7 @@ double percentile(std::vector<double> values, double fraction) {
 
 }  // namespace
 
-std::string window_frame_speed(bool quick, std::ostream& out) {
+std::string window_frame_speed(bool quick, std::ostream& out, const Progress& progress) {
   std::unique_ptr<ui::HeadlessContext> gl;
   try {
     gl = std::make_unique<ui::HeadlessContext>();
@@ -43,7 +43,8 @@ std::string window_frame_speed(bool quick, std::ostream& out) {
          "physics_and_ui_cpu_ms_max,draw_ms_median\n";
   std::vector<std::vector<std::string>> table{
       {"lesson", "physics", "physics + UI", "95th percentile", "worst", "drawing (llvmpipe)"}};
-  for (const std::string& name : lessons::builtin_lessons()) {
+  const std::vector<std::string> names = lessons::builtin_lessons();
+  for (const std::string& name : names) {
     ui::ImGuiHost host(nullptr);
     gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
     ui::SandboxOptions options;
@@ -55,6 +56,7 @@ std::string window_frame_speed(bool quick, std::ostream& out) {
     physics_only.play();
     std::vector<double> physics, whole, draw;
     for (int f = 0; f < frames; ++f) {
+      progress((static_cast<double>(&name - names.data()) + static_cast<double>(f) / frames) / static_cast<double>(names.size()));
       // Past the lesson's run it pauses; a class watching keeps it going.
       if (!sandbox.playback().playing()) sandbox.playback().play();
       if (!physics_only.playing()) physics_only.play();

@@ -167,7 +167,7 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
   const ImVec2 low_left(corner.x + label_width + 16.0f * s, corner.y + size.y - 2.0f * text - 14.0f * s - legend_height);
   // Room on the right for the labels beside the last points (a step rate, say).
   const bool labelled = std::any_of(chart.series.begin(), chart.series.end(), [](const ChartSeries& series) { return !series.labels.empty(); });
-  const ImVec2 high_right(corner.x + size.x - (labelled ? 40.0f : 10.0f) * s, top);
+  const ImVec2 high_right(corner.x + size.x - (labelled ? 60.0f : 10.0f) * s, top);
   const float width = high_right.x - low_left.x, height = low_left.y - high_right.y;
   if (width < 20.0f || height < 20.0f) return;
   const auto to_screen = [&](double x, double y) {
