@@ -16,7 +16,7 @@ double median(std::vector<double> values);
 // How far a long part of the bench has got, 0 to 1, for the progress bar on a terminal.
 using Progress = std::function<void(double fraction)>;
 
-// One run of the spring problem: its error against the exact answer and what it cost.
+// One run of a method on a benchmark problem: its error against the exact answer and what it cost.
 struct AccuracyRun {
   std::string method;
   double hz;     // step rate (or, for a chart of another knob, its value: the point's label)
@@ -30,14 +30,14 @@ std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double
 // line there saying why `name` was not drawn.
 std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
                        std::ostream* out);
-// A work-precision chart of runs: error against cost, a curve per method (in the order met,
-// its fitted order of convergence in the legend when `fit_orders`), points labelled by rate,
-// exact answers at 10⁻¹², failed runs crossed where they lie and wrong answers along the top,
-// and the Pareto front of the runs that did not fail.
 // The crosses a work-precision chart marks runs with: failed (drawn where the run's error lies)
 // and wrong answers (no error to draw: along the top).
 std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks();
-// Given `orders`, each method's fitted order is also put there.
+// A work-precision chart of runs: error against cost, a curve per method (in the order met,
+// its fitted order of convergence in the legend when `fit_orders`), points labelled by rate,
+// exact answers at 10⁻¹², failed runs crossed where they lie and wrong answers along the top,
+// and the Pareto front of the runs that did not fail. Given `orders`, each method's fitted
+// order is also put there.
 ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
                                bool fit_orders = true, std::vector<std::pair<std::string, double>>* orders = nullptr);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.

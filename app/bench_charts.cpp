@@ -1,5 +1,5 @@
-// frictionlab bench's charts of the spring problem: error against cost (work-precision), one
-// curve per method, points labelled by step rate, the Pareto front, failures marked; and error
+// frictionlab bench's charts: error against cost (work-precision), one curve per method, points
+// labelled by step rate, the Pareto front, failures marked; and, for the spring problem, error
 // against step with the order of convergence fitted per method.
 #include <algorithm>
 #include <cmath>
@@ -75,7 +75,7 @@ std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double
 }
 
 std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks() {
-  return {{"failed run (chatter, wrong stick-slip, creep, slide)", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}},
+  return {{"failed run (chatter, wrong stops, creep, slide)", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}},
           {"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}}};
 }
 

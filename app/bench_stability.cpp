@@ -85,7 +85,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
   ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries creep_measured{"semi-implicit Euler, a fifth of its boundary step", {}, measured_colour, false,
+  ui::ChartSeries creep_measured{"semi-implicit Euler at h = boundary / 5", {}, measured_colour, false,
                                  ui::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {

@@ -16,9 +16,11 @@ namespace frictionlab {
 struct ExpectedMotion {
   std::vector<double> stop_times;  // when it comes to rest (and sticks)
   bool moves = true;               // false: it should never leave its place
+  double scale = 1.0;              // its largest |x| (m) and |v| (m/s): a blow-up is far beyond
 };
-// From an exact (or any event-driven) trajectory: its stops before t_end, whether it slides.
-ExpectedMotion expected_motion(const Trajectory& exact);
+// From an exact (or any event-driven) trajectory: its stops up to t_end, whether it slides,
+// its scale.
+ExpectedMotion expected_motion(const Trajectory& exact, double t_end);
 
 class RunCheck {
  public:
@@ -28,8 +30,11 @@ class RunCheck {
   void add(double t, double x, double v);
 
   // "" when the run did what the exact motion does; else the first of "not a number", "blew
-  // up", "chatters", "spurious stick-slip", "misses stick-slip", "slides" or "creeps" (a block
-  // that should have stayed put, accelerating or at a steady speed).
+  // up" (a hundred times the exact motion's scale), "chatters", "slides" or "creeps" (a block
+  // that should have stayed put, speeding up or at a steady speed), "sticks" (one that should
+  // have moved), "spurious stick-slip" (a stop the exact motion has not near that time),
+  // "misses stick-slip" (an exact stop the run has not near its time) or "never comes to
+  // rest" (the exact motion's one stop missed).
   std::string failure(const ExpectedMotion& expected) const;
 
   const std::vector<double>& stop_times() const { return stop_times_; }

@@ -343,6 +343,7 @@ void Scene::step() {
     // next one, and functions of time would be asked twice a step instead of once.
     const double end = (static_cast<double>(frame_) + static_cast<double>(i + 1) / settings_.substeps) * frame_step();
     advance(time_, h, end, true);
+    if (after_substep_) after_substep_(end);
   }
   ++frame_;
   time_ = static_cast<double>(frame_) * frame_step();

@@ -115,6 +115,9 @@ class Scene {
   // Runs after each frame, just before the probes sample: a script runtime measures all its
   // probes there in one go, and they then only hand over the values.
   void set_before_probes(std::function<void()> work) { before_probes_ = std::move(work); }
+  // Called after every world step (each sub-step of a frame) with the time it reached: a
+  // method that flips the velocity every sub-step shows nothing at frames of an even count.
+  void set_after_substep(std::function<void(double t)> watch) { after_substep_ = std::move(watch); }
 
   // One frame: 1/hz of simulated time in `substeps` world steps.
   void step();
@@ -186,6 +189,7 @@ class Scene {
   std::vector<Driver> drivers_;
   std::vector<Probe> probes_;
   std::function<void()> before_probes_;
+  std::function<void(double)> after_substep_;
   std::vector<double> times_;
   std::vector<unsigned char> slipping_;
   struct MaterialUse {
