@@ -10,6 +10,7 @@
 #include "app/table.h"
 #include "physics/stability.h"
 #include "ui/chart.h"
+#include "ui/stability_chart.h"
 
 namespace frictionlab {
 namespace {
@@ -25,9 +26,8 @@ constexpr Method methods[] = {{Integrator::explicit_euler, "explicit Euler"},
                               {Integrator::semi_implicit_euler, "semi-implicit Euler"},
                               {Integrator::rk4, "RK4"}};
 
-const ImU32 stable_colour = IM_COL32(150, 214, 170, 255), chatter_colour = IM_COL32(240, 170, 120, 255),
-            divergent_colour = IM_COL32(200, 70, 70, 255), theory_colour = IM_COL32(20, 20, 20, 255),
-            measured_colour = IM_COL32(0, 90, 200, 255);
+const ImU32 theory_colour = IM_COL32(20, 20, 20, 255), measured_colour = IM_COL32(0, 90, 200, 255),
+            explicit_colour = IM_COL32(240, 170, 120, 255);
 
 std::string number(double value) {
   char text[32];
@@ -48,23 +48,14 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   for (const Method& method : methods) {
     // The maps are most of the work: a third each.
     progress(static_cast<double>(&method - methods) / 3.0);
-    ui::Chart map;
-    map.title = std::string("Regularized friction, ") + method.name;
-    map.x_label = "threshold speed \u03b5 (m/s)";
-    map.y_label = "step h (s)";
-    map.log_x = map.log_y = true;
-    map.categories = {{"stable: settles", stable_colour}, {"chattering: never settles", chatter_colour},
-                      {"divergent", divergent_colour}};
-    for (const StabilityCell& cell : stability_map(wood_on_wood, g, method.integrator, steps, epsilons)) {
-      map.cells.push_back({cell.epsilon, cell.h, static_cast<int>(cell.behaviour)});
+    const std::vector<StabilityCell> cells = stability_map(wood_on_wood, g, method.integrator, steps, epsilons);
+    for (const StabilityCell& cell : cells) {
       csv << method.name << ',' << cell.h << ',' << cell.epsilon << ',' << behaviour_name(cell.behaviour) << ','
           << theoretical_boundary(wood_on_wood, g, cell.epsilon, method.integrator) << '\n';
     }
-    ui::ChartSeries theory{"theory: h = " + number(theoretical_boundary(wood_on_wood, g, 1.0, method.integrator) *
-                                                   wood_on_wood.mu_s * g) + "\u00b7\u03b5/(\u03bcs\u00b7g)",
-                           {}, theory_colour, true, ui::Marker::none, {}};
+    ui::Chart map = ui::stability_map_chart(std::string("Regularized friction, ") + method.name, cells, wood_on_wood, g,
+                                            method.integrator, epsilons);
     ui::ChartSeries measured{"measured boundary", {}, measured_colour, false, ui::Marker::dot, {}};
-    for (const double epsilon : epsilons) theory.points.push_back({epsilon, theoretical_boundary(wood_on_wood, g, epsilon, method.integrator)});
     for (const double epsilon : {1e-3, 1e-2, 1e-1}) {
       const double expected = theoretical_boundary(wood_on_wood, g, epsilon, method.integrator);
       const double found = measured_boundary(wood_on_wood, g, epsilon, method.integrator);
@@ -72,7 +63,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
       table.push_back({method.name, number(epsilon) + " m/s", number(expected) + " s", number(found) + " s",
                        number(found / expected)});
     }
-    map.series = {theory, measured};
+    map.series.push_back(measured);
     map.notes = {"a block launched at 1 m/s on flat ground, \u03bcs = 0.5, \u03bck = 0.4"};
     charts.push_back(map);
   }
@@ -105,7 +96,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   viscous.title = "Viscous term: one step's factor on v";
   viscous.x_label = "h\u00b7c/m";
   viscous.y_label = "v after / v before";
-  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, chatter_colour, true, ui::Marker::none, {}};
+  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, explicit_colour, true, ui::Marker::none, {}};
   ui::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, ui::Marker::none, {}};
   ui::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, ui::Marker::none, {}};
   ui::ChartSeries bound_low{"", {}, theory_colour, true, ui::Marker::none, {}};

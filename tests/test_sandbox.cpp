@@ -3,6 +3,8 @@
 // test checks what the action must do to the lesson, not only that the UI moved.
 #include <gtest/gtest.h>
 
+#include "physics/stability.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -692,6 +694,41 @@ TEST(Sandbox, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
   const StepSettings used = driver.lesson().settings();
   EXPECT_LE(lesson_problem("incline").error(used), 0.001) << describe(used);
   EXPECT_EQ(driver.lesson().scene().frame(), 0);  // a new setting starts the lesson again
+}
+
+// The Stability map tab draws the regularized law's map for the lesson's mu_s on its slope, and
+// marks the lesson's two thresholds at its step: the small one on the chattering side, the
+// large one on the stable side, as the lesson's own table says.
+TEST(Sandbox, TheStabilityMapMarksTheLessonsThresholdsAtItsStep) {
+  Driver driver("where_methods_fail");
+  driver.frame();
+  driver.frame();
+  driver.click("Stability map tab");
+  driver.frame();
+  const Chart& chart = driver.sandbox().stability_chart();
+  ASSERT_FALSE(chart.cells.empty());
+  ASSERT_FALSE(chart.series.empty());
+  const ChartSeries& marks = chart.series.back();
+  ASSERT_EQ(marks.points.size(), 2u);
+  auto nearest = [&](double epsilon, double h) {
+    const ChartCell* best = nullptr;
+    double distance = INFINITY;
+    for (const ChartCell& cell : chart.cells) {
+      const double d = std::hypot(std::log(cell.x / epsilon), std::log(cell.y / h));
+      if (d < distance) {
+        distance = d;
+        best = &cell;
+      }
+    }
+    return static_cast<Behaviour>(best->category);
+  };
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto [epsilon, h] = marks.points[i];
+    EXPECT_DOUBLE_EQ(h, 1.0 / 240.0);
+    const bool small = marks.labels[i] == "small_epsilon";
+    EXPECT_EQ(epsilon, small ? 0.002 : 0.05) << marks.labels[i];
+    EXPECT_EQ(nearest(epsilon, h), small ? Behaviour::chattering : Behaviour::stable) << marks.labels[i];
+  }
 }
 
 // A tolerance that is not a positive number is refused (Measure stays off) rather than

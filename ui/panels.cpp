@@ -185,8 +185,9 @@ void energy_contents(const Scene& scene, const Theme& theme) {
                           ledger.work_friction, ledger.work_damping, ledger.work_impacts}) {
       largest = std::max(largest, std::abs(amount));
     }
+    // A share of nothing says nothing: a block at rest has only float noise in its books.
     char share[64] = "";
-    if (largest > 1e-9) std::snprintf(share, sizeof share, ", %.2f %% of the largest term", 100.0 * std::abs(residual) / largest);
+    if (largest > 1e-3) std::snprintf(share, sizeof share, ", %.2f %% of the largest term", 100.0 * std::abs(residual) / largest);
     const bool small = std::abs(residual) <= 0.02 * std::max(largest, 1e-3);
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "residual %s%s",
                        format_quantity(residual, "J").c_str(), share);

@@ -98,7 +98,10 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   style.origin = origin;
   style.readings = &playback_->readings();
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size) { parameters_panel(corner, size); };
-  style.more_tabs = [this] { cheapest_setting_tab(); };
+  style.more_tabs = [this] {
+    cheapest_setting_tab();
+    stability_map_tab();
+  };
   ImGui::PushFont(fonts.body);
   style.parameters_height = parameters_height();
   ImGui::PopFont();
@@ -112,6 +115,7 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
            layout.world_size.x - 12.0f * s);
   transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
   help_panel();
+  stability_map_window();
   open_script_popup();
   ImGui::PopFont();
 

@@ -19,6 +19,8 @@
 #include <vector>
 
 #include "physics/recommend.h"
+#include "physics/stability.h"
+#include "ui/chart.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
@@ -87,6 +89,8 @@ class Sandbox {
   // The Cheapest setting tab's tolerance as typed, and whether a search was started.
   double cheapest_tolerance() const { return recommend_tolerance_; }
   bool cheapest_started() const { return recommender_ != nullptr; }
+  // The Stability map tab's chart as last drawn: the map and this lesson's marks.
+  const Chart& stability_chart() const { return stability_chart_; }
   bool shown(const std::string& control_name) const;  // --lock
   // The world view's camera in the last frame: where the mouse's hand finds bodies.
   const Camera& world_camera() const { return camera_; }
@@ -103,6 +107,9 @@ class Sandbox {
   void transport_bar(ImVec2 corner, ImVec2 size);
   void parameters_panel(ImVec2 corner, ImVec2 size);
   void cheapest_setting_tab();
+  void stability_map_tab();
+  void stability_map_window();
+  void update_stability_chart();
   // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
   // (with its presets) comes before it. The panel draws them; its height is counted from them.
   struct ParameterRow {
@@ -146,6 +153,12 @@ class Sandbox {
   std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on
   double recommend_tolerance_ = 0.0;           // as typed, for the lesson below
   std::string recommend_lesson_;               // whose problem the tolerance is for
+  // The Stability map tab: the map for a mu_s and the g·cos θ of the slope, made once for each.
+  std::vector<StabilityCell> stability_cells_;
+  std::pair<double, double> stability_for_{-1.0, -1.0};
+  Chart stability_chart_;                    // as last drawn
+  std::vector<std::string> stability_words_;  // each threshold's side of the boundary, in words
+  bool stability_window_ = false;
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;
