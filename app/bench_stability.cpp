@@ -76,7 +76,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
   ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries creep_measured{"semi-implicit Euler at h = boundary / 5", {}, measured_colour, false,
+  ui::ChartSeries creep_measured{"measured, h = boundary/5", {}, measured_colour, false,
                                  ui::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {
@@ -88,7 +88,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
     creep_measured.points.push_back({epsilon, measured});
   }
   creep.series = {creep_theory, creep_measured};
-  creep.notes = {"\u03b5 = 0.1 m/s: the block that should stick slides 0.73 m in ten seconds"};
+  creep.notes = {"semi-implicit Euler; at \u03b5 = 0.1 m/s it slides 0.73 m in 10 s"};
   charts.push_back(creep);
 
   // The viscous term: what one step does to the velocity.
