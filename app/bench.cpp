@@ -110,13 +110,11 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<Accur
       add(reduced_method_name(method), hz, outcome, cost);
     }
   }
-  const auto [reference, exact_cost] =
-      measure(
-      [&] {
-        solve_exact(line.block, line.t_end);
-        return Outcome{};
-      },
-      line.t_end, repeats);
+  const auto solve = [&] {
+    solve_exact(line.block, line.t_end);
+    return Outcome{};
+  };
+  const auto [reference, exact_cost] = measure(solve, line.t_end, repeats);
   add("1-DOF exact event-driven (reference)", 0, reference, exact_cost);
   out << "\nSpring-pull stick-slip over " << line.t_end
       << " s: max position error against the exact solution (regularized and threshold: epsilon = " << epsilon

@@ -65,7 +65,6 @@ void RunCheck::add(double t, double x, double v) {
       flip_start_amplitude_ = std::abs(v);
     }
     ++flipping_;
-    longest_flipping_ = std::max(longest_flipping_, flipping_);
   } else {
     flipping_ = 0;
   }

@@ -38,8 +38,6 @@ class RunCheck {
   std::string failure(const ExpectedMotion& expected) const;
 
   const std::vector<double>& stop_times() const { return stop_times_; }
-  // The longest run of frames in which the velocity flipped sign every frame.
-  int longest_flipping() const { return longest_flipping_; }
 
  private:
   double stop_speed_;
@@ -52,7 +50,6 @@ class RunCheck {
   double last_v_ = 0.0;
   int flipping_ = 0;
   double flip_start_amplitude_ = 0.0;
-  int longest_flipping_ = 0;
   bool sustained_flipping_ = false;
   // Speed at the middle and at the end, to tell a slide (speeding up) from a creep.
   std::vector<std::pair<double, double>> speeds_;
