@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <functional>
 #include <ostream>
 #include <iostream>
@@ -31,8 +30,6 @@ double median(std::vector<double> values) {
 
 namespace {
 
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-
 // CPU seconds per step of both worlds, timed in alternating blocks so that a busy neighbour
 // slows both alike.
 struct PileCost {
@@ -50,12 +47,12 @@ PileCost time_pile(int rows, int steps, int repeats) {
   }
   std::vector<double> listener, plain;
   for (int r = 0; r < repeats; ++r) {
-    double start = cpu_seconds();
+    double start = thread_cpu_seconds();
     for (int i = 0; i < steps; ++i) with.scene->step();
-    listener.push_back((cpu_seconds() - start) / steps);
-    start = cpu_seconds();
+    listener.push_back((thread_cpu_seconds() - start) / steps);
+    start = thread_cpu_seconds();
     for (int i = 0; i < steps; ++i) without.plain->Step(h, settings.velocity_iterations, settings.position_iterations);
-    plain.push_back((cpu_seconds() - start) / steps);
+    plain.push_back((thread_cpu_seconds() - start) / steps);
   }
   return {with.boxes, median(listener), median(plain)};
 }
@@ -141,9 +138,9 @@ std::string lesson_speed(bool quick, std::ostream& out) {
       lesson.time_script(share_pass);
       simulated = lesson.duration();
       const auto wall_start = std::chrono::steady_clock::now();
-      const double cpu_start = cpu_seconds();
+      const double cpu_start = thread_cpu_seconds();
       lesson.step_to(simulated);
-      const double cpu = cpu_seconds() - cpu_start;
+      const double cpu = thread_cpu_seconds() - cpu_start;
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       if (share_pass) {
         shares.push_back(lesson.seconds_in_script() / wall);

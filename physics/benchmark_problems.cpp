@@ -85,32 +85,31 @@ LineProblem slide_line(const FrictionPair& pair) {
   return {block, 2.0, [distance](double) { return distance; }, true, {{rest.time}, true, std::max(distance, block.v0)}};
 }
 
-Outcome spring_run(const LineProblem& line, const StepSettings& settings) {
-  auto scene = make_spring_pull(SpringPull{}, settings);
-  const b2Body* block = scene->body("block");
+// A scene whose block moves along x: its distance from where it started, and its velocity.
+Outcome follow_along_x(Scene& scene, const LineProblem& line) {
+  const b2Body* block = scene.body("block");
   const double start = block->GetPosition().x;
-  return follow(*scene, line, [&] { return Sample{0.0, block->GetPosition().x - start, block->GetLinearVelocity().x}; });
+  return follow(scene, line, [&] { return Sample{0.0, block->GetPosition().x - start, block->GetLinearVelocity().x}; });
 }
 
-Outcome incline_run(const LineProblem& line, double angle, const StepSettings& settings) {
-  Incline setup;
-  setup.angle = angle;
-  auto scene = make_incline(setup, settings);
-  const b2Body* block = scene->body("block");
-  const b2Vec2 start = block->GetPosition();
-  const b2Vec2 downhill{-std::cos(static_cast<float>(angle)), -std::sin(static_cast<float>(angle))};
-  return follow(*scene, line, [&] {
-    return Sample{0.0, b2Dot(block->GetPosition() - start, downhill), b2Dot(block->GetLinearVelocity(), downhill)};
-  });
+Outcome spring_run(const LineProblem& line, const StepSettings& settings) {
+  return follow_along_x(*make_spring_pull(SpringPull{}, settings), line);
 }
 
 Outcome slide_run(const LineProblem& line, const StepSettings& settings) {
   Slide setup;
   setup.block.pair = line.block.pair;
-  auto scene = make_slide(setup, settings);
-  const b2Body* block = scene->body("block");
-  const double start = block->GetPosition().x;
-  return follow(*scene, line, [&] { return Sample{0.0, block->GetPosition().x - start, block->GetLinearVelocity().x}; });
+  return follow_along_x(*make_slide(setup, settings), line);
+}
+
+// The incline's own probes read the block down the slope; asked at every world step here.
+Outcome incline_run(const LineProblem& line, double angle, const StepSettings& settings) {
+  Incline setup;
+  setup.angle = angle;
+  auto scene = make_incline(setup, settings);
+  const Probe& distance = scene->probe("distance");
+  const Probe& speed = scene->probe("speed");
+  return follow(*scene, line, [&] { return Sample{0.0, distance.measure(), speed.measure()}; });
 }
 
 // The two slopes a degree either side of the sticking angle of the scenarios' pair.
@@ -123,6 +122,12 @@ BenchmarkProblem line_problem(std::string name, std::string label, std::string l
   BenchmarkProblem problem{std::move(name), std::move(label), std::move(lesson), std::move(question), "m", line.t_end, {}, line};
   problem.run = [line = std::move(line), run = std::move(run)](const StepSettings& settings) { return run(line, settings); };
   return problem;
+}
+
+// A block released on a slope of `angle`, in Box2D and in the reduced models.
+BenchmarkProblem incline_problem(std::string name, std::string label, std::string lesson, std::string question, double angle) {
+  return line_problem(std::move(name), std::move(label), std::move(lesson), std::move(question), incline_line(angle),
+                      [angle](const LineProblem& line, const StepSettings& settings) { return incline_run(line, angle, settings); });
 }
 
 // A wrong answer (infinite error) is the only failure the other problems can show.
@@ -216,12 +221,10 @@ double disk_rolling_error(const StepSettings& settings) {
 std::vector<BenchmarkProblem> benchmark_problems() {
   std::vector<BenchmarkProblem> problems{lesson_problem("spring_pull"), lesson_problem("incline")};
   const double below = below_angle();
-  problems.push_back(line_problem("Incline " + degrees(below) + ": just below, it sticks", degrees(below) + " sticks", "",
-                                  "a block released on a " + degrees(below) + " slope, a degree below its sticking angle: the largest "
-                                  "distance it moved in 2 s (exact: it never moves)",
-                                  incline_line(below), [below](const LineProblem& line, const StepSettings& settings) {
-                                    return incline_run(line, below, settings);
-                                  }));
+  problems.push_back(incline_problem("Incline " + degrees(below) + ": just below, it sticks", degrees(below) + " sticks", "",
+                                     "a block released on a " + degrees(below) + " slope, a degree below its sticking angle: the largest "
+                                     "distance it moved in 2 s (exact: it never moves)",
+                                     below));
   problems.push_back(line_problem("Slide to rest with c", "slide, c", "",
                                   "slide to rest from 3 m/s with c = 2 N\u00b7s/m: where it stops, against the closed form",
                                   slide_line({0.6, 0.4, 2.0, 0.0}), slide_run));
@@ -251,12 +254,10 @@ BenchmarkProblem lesson_problem(const std::string& lesson) {
   }
   if (lesson == "incline") {
     const double above = above_angle();
-    return line_problem("Incline " + degrees(above) + ": just above, it slides", degrees(above) + " slides", lesson,
-                        "the distance slid down a " + degrees(above) + " slope, a degree above its sticking angle: the largest "
-                        "error over 2 s against \u00bd\u00b7a\u00b7t\u00b2",
-                        incline_line(above), [above](const LineProblem& line, const StepSettings& settings) {
-                          return incline_run(line, above, settings);
-                        });
+    return incline_problem("Incline " + degrees(above) + ": just above, it slides", degrees(above) + " slides", lesson,
+                           "the distance slid down a " + degrees(above) + " slope, a degree above its sticking angle: the largest "
+                           "error over 2 s against \u00bd\u00b7a\u00b7t\u00b2",
+                           above);
   }
   if (lesson == "tipping_box") {
     return {"Tipping push", "tip push", lesson,
@@ -266,12 +267,10 @@ BenchmarkProblem lesson_problem(const std::string& lesson) {
   }
   if (lesson == "where_methods_fail") {
     // Its question: what holds the block still on a slope it should stick to.
-    const double angle = 20.0 * M_PI / 180.0;
-    return line_problem("Incline 20\u00b0: it sticks", "20\u00b0 sticks", lesson,
-                        "a block released on a 20\u00b0 slope, well below its sticking angle: the largest distance it moved in 2 s "
-                        "(exact: it never moves)",
-                        incline_line(angle),
-                        [angle](const LineProblem& line, const StepSettings& settings) { return incline_run(line, angle, settings); });
+    return incline_problem("Incline 20\u00b0: it sticks", "20\u00b0 sticks", lesson,
+                           "a block released on a 20\u00b0 slope, well below its sticking angle: the largest distance it moved in 2 s "
+                           "(exact: it never moves)",
+                           20.0 * M_PI / 180.0);
   }
   throw InvalidInput("no benchmark problem for '" + lesson +
                      "'; there is one for each built-in lesson: spring_pull, incline, tipping_box and where_methods_fail");

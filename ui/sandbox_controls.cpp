@@ -332,12 +332,13 @@ void Sandbox::cheapest_setting_tab() {
       ImGui::PushTextWrapPos(0.0f);
       ImGui::Text("Cheapest within %g %s: %s, error %.3g %s, %.3g ms CPU per simulated s.", recommender_->tolerance(),
                   problem->unit.c_str(), describe(best->settings).c_str(), best->error, problem->unit.c_str(), best->cost * 1e3);
-      if (const std::string failed = recommender_->failures(); !failed.empty()) ImGui::TextDisabled("%s", failed.c_str());
       ImGui::PopTextWrapPos();
     } else {
-      ImGui::PushTextWrapPos(0.0f);
       ImGui::TextColored(bad, "No setting tried answers within %g %s.", recommender_->tolerance(), problem->unit.c_str());
-      if (const std::string failed = recommender_->failures(); !failed.empty()) ImGui::TextDisabled("%s", failed.c_str());
+    }
+    if (const std::string failed = recommender_->failures(); recommender_->done() && !failed.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("%s", failed.c_str());
       ImGui::PopTextWrapPos();
     }
   }
