@@ -164,12 +164,29 @@ void print_heading(const Lesson& lesson, std::ostream& out) {
 }  // namespace
 
 int run_list(const std::vector<std::string>& args, std::ostream& out) {
-  if (!args.empty()) throw InvalidInput("list takes no options, got '" + args[0] + "'");
-  std::vector<std::vector<std::string>> table{{"lesson", "title"}};
-  for (const std::string& name : lessons::builtin_lessons()) {
-    Lesson lesson(lessons::resolve_lesson(name));
-    table.push_back({name, lesson.title()});
+  const bool tsv = args.size() == 1 && args[0] == "--tsv";
+  if (!args.empty() && !tsv) throw InvalidInput("list takes no options but --tsv, got '" + args[0] + "'");
+  // The moments by name, the README's frame marked with a star.
+  const auto moment_names = [](const lessons::CatalogEntry& entry, const char* separator, bool star) {
+    std::string names;
+    for (const lessons::Moment& moment : entry.moments) {
+      names += (names.empty() ? "" : separator) + moment.name + (moment.readme && star ? "*" : "");
+    }
+    return names;
+  };
+  if (tsv) {
+    // For scripts (scripts/readme_frames.sh): one lesson a line, tab-separated, no heading.
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      std::string readme;
+      for (const lessons::Moment& moment : entry.moments) {
+        if (moment.readme) readme = moment.name;
+      }
+      out << entry.name << '\t' << entry.title << '\t' << readme << '\t' << moment_names(entry, ",", false) << '\n';
+    }
+    return 0;
   }
+  std::vector<std::vector<std::string>> table{{"lesson", "title", "moments (* the README's frame)"}};
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) table.push_back({entry.name, entry.title, moment_names(entry, ", ", true)});
   print_table(out, table);
   out << "Scripts are in " << lessons::lessons_directory() << "; run one with: frictionlab run LESSON\n";
   return 0;

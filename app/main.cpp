@@ -17,7 +17,8 @@ const char* const usage =
     "                                            named); --lock shows only the named controls; --at and\n"
     "                                            --screenshot save the window at that time and close it.\n"
     "                                            Without a display it draws the lesson to a PNG instead.\n"
-    "       frictionlab list                     the built-in lessons with their titles\n"
+    "       frictionlab list [--tsv]             the built-in lessons with their titles and moments (--tsv: for\n"
+    "                                            scripts, name, title, README moment and moments, tab-separated)\n"
     "       frictionlab run LESSON [--duration S] [--hz N] [--substeps N]\n"
     "                       [--friction stick-slip|threshold|regularized|box2d]\n"
     "                       [--set NAME=VALUE ...] [--csv FILE]\n"
@@ -26,6 +27,8 @@ const char* const usage =
     "       frictionlab render LESSON --at S[,S...] [--size WxH] [--theme light|dark]\n"
     "                       [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] --out PATH\n"
     "                                            draw the lesson at each time to PNG, with no display\n"
+    "       frictionlab render LESSON --moment NAME [--size WxH] --out PATH\n"
+    "                                            draw one of the lesson's moments (its time, values and theme)\n"
     "       frictionlab demo                     theory beside simulation for every situation\n"
     "       frictionlab bench [--quick] --out DIR     speed and accuracy figures, CSV files and charts\n"
     "       frictionlab bench --recommend LESSON --tol X\n"
@@ -43,9 +46,7 @@ int main(int argc, char** argv) {
     const bool a_command = std::find(std::begin(commands), std::end(commands), command) != std::end(commands);
     const bool looks_like_lesson = command.empty() || command.rfind("--", 0) == 0 ||
                                    command.find('/') != std::string::npos || command.find(".lua") != std::string::npos ||
-                                   std::find(frictionlab::lessons::builtin_lessons().begin(),
-                                             frictionlab::lessons::builtin_lessons().end(),
-                                             command) != frictionlab::lessons::builtin_lessons().end();
+                                   frictionlab::lessons::is_builtin_lesson(command);
     if (!a_command && looks_like_lesson) return frictionlab::run_window_mode(args, std::cout);
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "demo") {

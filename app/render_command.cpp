@@ -25,6 +25,8 @@ struct RenderOptions {
   StepSettings settings;
   std::map<std::string, std::string> overrides;
   std::string out;
+  std::string moment;       // --moment NAME: its time, parameters and theme
+  bool have_theme = false;  // --theme given: it wins over the moment's
 };
 
 std::vector<double> parse_times(const std::string& text) {
@@ -76,10 +78,11 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
       options.lesson = arg;
       continue;
     }
-    static const std::string known[] = {"--at", "--size", "--theme", "--set", "--out", "--hz", "--substeps", "--friction"};
+    static const std::string known[] = {"--at", "--moment", "--size", "--theme", "--set", "--out", "--hz", "--substeps",
+                                        "--friction"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
       throw InvalidInput("render: unknown option '" + arg +
-                         "'; options: --at S[,S...], --size WxH, --theme light|dark, --set NAME=VALUE, --out PATH, "
+                         "'; options: --at S[,S...], --moment NAME, --size WxH, --theme light|dark, --set NAME=VALUE, --out PATH, "
                          "--hz N, --substeps N, --friction T");
     }
     if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
@@ -91,10 +94,13 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
     if (arg == "--at") {
       options.times = parse_times(value);
       have_times = true;
+    } else if (arg == "--moment") {
+      options.moment = value;
     } else if (arg == "--size") {
       parse_size(value, options.width, options.height);
     } else if (arg == "--theme") {
       options.theme = named(arg, value, [&] { return ui::parse_theme(value); });
+      options.have_theme = true;
     } else if (arg == "--set") {
       add_override(value, options.overrides);
     } else if (arg == "--out") {
@@ -106,7 +112,13 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
     }
   }
   if (options.lesson.empty()) throw InvalidInput("render needs a lesson: frictionlab render LESSON --at S --out PATH");
-  if (!have_times) throw InvalidInput("render: --at S[,S...] is required: the times to draw, in seconds");
+  if (have_times && !options.moment.empty()) {
+    throw InvalidInput("render: give --at or --moment, not both (a moment has its own time)");
+  }
+  if (!have_times && options.moment.empty()) {
+    throw InvalidInput("render: --at S[,S...] is required: the times to draw, in seconds (or --moment NAME, one of the "
+                       "lesson's moments)");
+  }
   if (options.out.empty()) throw InvalidInput("render: --out PATH is required: a .png file, or a folder for several times");
   return options;
 }
@@ -144,16 +156,34 @@ std::vector<std::string> output_paths(const RenderOptions& options, const std::s
   }
   std::vector<std::string> paths;
   for (double t : options.times) {
-    paths.push_back(to_file ? out.string() : (out / (lesson_name + "_t" + time_text(t) + ".png")).string());
+    // A moment's picture in a folder takes its golden's name.
+    const std::string file = options.moment.empty() ? lesson_name + "_t" + time_text(t) : lesson_name + "_" + options.moment;
+    paths.push_back(to_file ? out.string() : (out / (file + ".png")).string());
   }
   return paths;
+}
+
+// --moment NAME: the moment's time, its parameters under the --set ones, its theme unless
+// --theme is given. Throws InvalidInput listing the lesson's moments when it has no such one.
+void apply_moment(const std::string& path, RenderOptions& options) {
+  const lessons::Lesson defaults(path);
+  const lessons::Moment* moment = nullptr;
+  try {
+    moment = &defaults.moment(options.moment);
+  } catch (const InvalidInput& error) {
+    throw InvalidInput("render: --moment " + options.moment + ": " + error.what());
+  }
+  options.times = {moment->at};
+  for (const auto& [name, value] : moment->set) options.overrides.emplace(name, value);
+  if (!options.have_theme) options.theme = moment->theme == "dark" ? ui::ThemeName::dark : ui::ThemeName::light;
 }
 
 }  // namespace
 
 int run_render(const std::vector<std::string>& args, std::ostream& out) {
-  const RenderOptions options = parse_render(args);
+  RenderOptions options = parse_render(args);
   const std::string path = lessons::resolve_lesson(options.lesson);
+  if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
   const ui::WorldFraming framing = ui::WorldFraming::of(lesson.scene());

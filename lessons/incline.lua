@@ -6,6 +6,13 @@ lesson {
   title = "A block on an incline",
   question = "How steep can the slope be before the block slides, and how fast does it then speed up?",
   duration = 1,
+  order = 20,
+  -- Below and above the sticking angle atan(mu_s) = 31°: it stays put, or slides and speeds up.
+  moments = {
+    { "below_critical_angle", at = 1, set = { angle = 25 },
+      shows = function() return value_at("distance", time()) < 1e-4 and math.abs(value_at("speed", time())) < 1e-3 end },
+    { "above_critical_angle", at = 1, readme = true, shows = function() return value_at("speed", time()) > 1 end },
+  },
 }
 
 -- Parameters ------------------------------------------------------------------------------

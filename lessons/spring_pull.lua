@@ -12,6 +12,15 @@ lesson {
                                              mu_s = param.mu_s, mu_k = param.mu_k }
     return cycle.first_breakaway_time + 4.5 * cycle.period
   end,
+  order = 10,
+  -- Its pictures: held by static friction, in the first slip, in the second slip (the README's
+  -- frame), and the same in the dark theme. The probes are recorded once these run.
+  moments = {
+    { "sticking", at = 0.5, shows = function() return value_at("slipping", time()) == 0 end },
+    { "mid_slip", at = 1.2, shows = function() return value_at("slipping", time()) == 1 end },
+    { "second_slip", at = 2.5, readme = true, shows = function() return value_at("slipping", time()) == 1 end },
+    { "dark_theme", at = 2.5, theme = "dark", shows = function() return value_at("slipping", time()) == 1 end },
+  },
 }
 
 -- Parameters ------------------------------------------------------------------------------

@@ -11,6 +11,13 @@ lesson {
                                           mu_s = param.mu_s }
     return outcome.force / param.push_rate + 1
   end,
+  order = 30,
+  -- Pushed below d/(2·mu_s) = 0.5 m it slides upright; above, it tips about its front edge.
+  moments = {
+    { "pushed_low", at = 3, set = { push_height = 0.2 },
+      shows = function() return value_at("slipping", time()) == 1 and math.abs(value_at("tilt", time())) < 0.5 end },
+    { "pushed_high", at = 2.2, readme = true, shows = function() return value_at("tilt", time()) > 1.7 end },
+  },
 }
 
 -- Parameters ------------------------------------------------------------------------------

@@ -11,6 +11,20 @@ lesson {
   title = "Where methods fail",
   question = "Why does a game's block creep down a slope it should stick to, or jitter on it, and what holds it still?",
   duration = 3,
+  order = 40,
+  -- Two seconds in: the stick-slip block has not moved while the large threshold has crept
+  -- centimetres; with a threshold of 2 cm/s the small one settles to its creep speed instead.
+  moments = {
+    { "stick_slip_holds", at = 2, readme = true,
+      shows = function()
+        return math.abs(value_at("stick_slip", time())) < 0.001 and value_at("large_epsilon_distance", time()) > 0.02
+      end },
+    { "small_epsilon_settles", at = 2, set = { small_epsilon = 0.02 },
+      shows = function()
+        local creep = param.small_epsilon * math.tan(math.rad(param.angle)) / param.mu_s
+        return math.abs(value_at("small_epsilon_speed", time()) - creep) < 0.01 * creep
+      end },
+  },
 }
 
 -- Parameters ------------------------------------------------------------------------------

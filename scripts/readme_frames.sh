@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Renders the frame of each built-in lesson the README shows, into docs/frames/, headless.
+# Renders each built-in lesson's README frame, into docs/frames/LESSON.png, headless: every
+# lesson `frictionlab list` gives, at the moment it marks with readme = true (its time, its
+# parameter values and its theme, as its golden snapshot shows it).
 #   scripts/readme_frames.sh
 # Look at the pictures before committing them.
 set -euo pipefail
@@ -7,8 +9,10 @@ cd "$(dirname "$0")/.."
 
 FRICTIONLAB_TARGET=frictionlab scripts/setup.sh build -DBUILD_TESTING=OFF
 mkdir -p docs/frames
-# Moments that show each lesson's point: the second slip of the block, the block sliding down
-# the slope, the box tipping about its front edge.
-build/app/frictionlab render spring_pull --at 2.5 --out docs/frames/spring_pull.png
-build/app/frictionlab render incline --at 1 --out docs/frames/incline.png
-build/app/frictionlab render tipping_box --at 2.2 --out docs/frames/tipping_box.png
+build/app/frictionlab list --tsv | while IFS=$'\t' read -r lesson title readme moments; do
+  if [ -z "$readme" ]; then
+    echo "readme_frames.sh: $lesson ($title) marks none of its moments ($moments) with readme = true" >&2
+    exit 2
+  fi
+  build/app/frictionlab render "$lesson" --moment "$readme" --out "docs/frames/$lesson.png"
+done

@@ -1,8 +1,13 @@
-// The built-in lessons meet their expectations at their defaults and on both sides of each
-// threshold they teach: breakaway with either block, sticking below and sliding above the
-// critical angle, tipping above and sliding below d/(2·mu_s), the regularized law jittering
-// past its stability boundary and settling below it.
+// The built-in lessons are the scripts in lessons/, in the order they declare. Each meets its
+// expectations at its defaults and on both sides of each threshold it teaches: breakaway with
+// either block, sticking below and sliding above the critical angle, tipping above and sliding
+// below d/(2·mu_s), the regularized law jittering past its stability boundary and settling
+// below it. And the moments a lesson declares: read as written, and their shows functions run.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
 
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
@@ -24,6 +29,32 @@ std::ostream& operator<<(std::ostream& out, const Case& c) {
   if (c.hz != 240.0) out << " at " << c.hz << " Hz";
   return out;
 }
+
+// Every lesson in the list, whatever it is: at its defaults it has expectations and meets them.
+class ListedLesson : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ListedLesson, HasExpectationsAndMeetsThemAtItsDefaults) {
+  Lesson lesson(resolve_lesson(GetParam()));
+  run_for(lesson, lesson.duration());
+  const std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_FALSE(rows.empty()) << GetParam() << ": a built-in lesson says what theory predicts, with expect{ ... }";
+  for (const ExpectationResult& row : rows) {
+    EXPECT_TRUE(row.passes) << row.name << ": predicted " << (row.numeric ? std::to_string(row.predicted) : row.predicted_text)
+                            << ", measured " << (row.numeric ? std::to_string(row.measured) : row.measured_text)
+                            << ", tolerance " << row.tolerance;
+  }
+}
+
+std::vector<std::string> listed() {
+  try {
+    return builtin_lessons();
+  } catch (const InvalidInput&) {
+    return {};  // BuiltinLessons.AreTheScriptsInTheFolderInTeachingOrder reports it
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(TheList, ListedLesson, ::testing::ValuesIn(listed()),
+                         [](const ::testing::TestParamInfo<std::string>& name) { return name.param; });
 
 class BuiltinLesson : public ::testing::TestWithParam<Case> {};
 
@@ -49,7 +80,7 @@ TEST_P(BuiltinLesson, MeetsEveryExpectation) {
 // it is 1 m wide.
 INSTANTIATE_TEST_SUITE_P(
     AtTheirDefaultsAndAcrossTheirThresholds, BuiltinLesson,
-    ::testing::Values(Case{"spring_pull", {}, ""}, Case{"spring_pull", {{"block", "plastic"}}, ""},
+    ::testing::Values(Case{"spring_pull", {{"block", "plastic"}}, ""},
                       Case{"spring_pull", {{"k", "200"}, {"pull_speed", "0.2"}, {"mass", "2"}}, ""},
                       Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, ""},
                       Case{"incline", {}, "slides"}, Case{"incline", {{"angle", "29"}}, "sticks"},
@@ -73,14 +104,131 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"tipping_box", {{"width", "1"}, {"push_height", "0.9"}}, "slides"},
                       Case{"tipping_box", {{"mu_s", "0.8"}, {"mu_k", "0.6"}, {"push_height", "0.35"}}, "tips"}));
 
-TEST(BuiltinLessons, AreListedInTeachingOrderAndResolveToTheirScripts) {
-  EXPECT_EQ(builtin_lessons(), (std::vector<std::string>{"spring_pull", "incline", "tipping_box", "where_methods_fail"}));
-  for (const std::string& name : builtin_lessons()) {
-    EXPECT_NO_THROW(Lesson{resolve_lesson(name)}) << name;
+TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
+  std::vector<std::string> files;
+  for (const auto& file : std::filesystem::directory_iterator(lessons_directory())) {
+    if (file.path().extension() == ".lua") files.push_back(file.path().stem().string());
   }
+  std::vector<std::string> names = builtin_lessons();
+  std::sort(files.begin(), files.end());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, files);
+  // Each declares its own place; the first four keep theirs, new ones slot in by number.
+  std::set<double> orders;
+  for (const CatalogEntry& entry : catalog()) {
+    ASSERT_TRUE(entry.order.has_value()) << entry.path << ": a built-in lesson says where it comes, lesson{ order = N }";
+    EXPECT_TRUE(orders.insert(*entry.order).second) << entry.path << ": order = " << *entry.order << " is taken";
+    EXPECT_EQ(Lesson(resolve_lesson(entry.name)).title(), entry.title);
+  }
+  const std::vector<std::string>& order = builtin_lessons();
+  const auto place = [&](const char* name) { return std::find(order.begin(), order.end(), name) - order.begin(); };
+  EXPECT_EQ(place("spring_pull"), 0);
+  EXPECT_LT(place("incline"), place("tipping_box"));
+  EXPECT_LT(place("tipping_box"), place("where_methods_fail"));
+  EXPECT_LT(place("where_methods_fail"), static_cast<long>(order.size()));
+  // The message lists them from the list, in its order.
+  std::string known;
+  for (const std::string& name : order) known += (known.empty() ? "" : ", ") + name;
   const std::string unknown = error_of([] { resolve_lesson("spring_push"); });
-  EXPECT_NE(unknown.find("unknown lesson 'spring_push'; built-in lessons: spring_pull, incline, tipping_box, where_methods_fail"),
+  EXPECT_NE(unknown.find("unknown lesson 'spring_push'; built-in lessons: " + known + ", or give the path of a .lua file"),
             std::string::npos) << unknown;
+}
+
+// A folder of lessons as $FRICTIONLAB_LESSONS names it, for the test's length.
+class LessonFolder {
+ public:
+  // A new folder each time: the list of a folder is read once.
+  LessonFolder()
+      : path_(std::filesystem::temp_directory_path() /
+              ("frictionlab_lessons_" + std::to_string(::getpid()) + "_" + std::to_string(++count_))) {
+    std::filesystem::create_directories(path_);
+    ::setenv("FRICTIONLAB_LESSONS", path_.c_str(), 1);
+  }
+  ~LessonFolder() {
+    ::unsetenv("FRICTIONLAB_LESSONS");
+    std::filesystem::remove_all(path_);
+  }
+  void add(const std::string& name, const std::string& text) const { std::ofstream(path_ / (name + ".lua")) << text; }
+
+ private:
+  static inline int count_ = 0;
+  std::filesystem::path path_;
+};
+
+TEST(BuiltinLessons, AddingALessonIsAddingItsFileWhereItsOrderSays) {
+  const LessonFolder folder;
+  folder.add("ramp", "lesson { title = \"Ramp\", question = \"?\", order = 20 }");
+  folder.add("bench", "lesson { title = \"Bench\", question = \"?\", order = 10 }");
+  folder.add("extra", "lesson { title = \"Extra\", question = \"?\" }");  // no order: after the others
+  folder.add("another", "lesson { title = \"Another\", question = \"?\" }");
+  EXPECT_EQ(builtin_lessons(), (std::vector<std::string>{"bench", "ramp", "another", "extra"}));
+  EXPECT_EQ(catalog()[0].title, "Bench");
+  EXPECT_TRUE(is_builtin_lesson("ramp"));
+  EXPECT_FALSE(is_builtin_lesson("../ramp"));
+  EXPECT_FALSE(is_builtin_lesson("spring_pull"));
+}
+
+TEST(BuiltinLessons, ANameResolvesWithoutRunningAnyScriptAndABrokenOneIsNamedWhenListed) {
+  const LessonFolder folder;
+  folder.add("good", "lesson { title = \"Good\", question = \"?\", order = 10 }");
+  folder.add("broken", "lesson { title = \"Broken\", question = \"?\", order = 20 }\nbox { }");
+  EXPECT_NO_THROW(resolve_lesson("good"));
+  const std::string message = error_of([] { builtin_lessons(); });
+  EXPECT_EQ(message.rfind("built-in lesson 'broken' cannot be built: ", 0), 0u) << message;
+}
+
+TEST(LessonMoments, AreReadAsDeclared) {
+  const Lesson lesson(resolve_lesson("incline"));
+  ASSERT_EQ(lesson.moments().size(), 2u);
+  const Moment& below = lesson.moment("below_critical_angle");
+  EXPECT_EQ(below.at, 1.0);
+  EXPECT_EQ(below.set, (std::map<std::string, std::string>{{"angle", "25"}}));
+  EXPECT_EQ(below.theme, "light");
+  EXPECT_FALSE(below.readme);
+  EXPECT_TRUE(below.has_shows);
+  EXPECT_TRUE(lesson.moment("above_critical_angle").readme);
+  EXPECT_EQ(Lesson(resolve_lesson("spring_pull")).moment("dark_theme").theme, "dark");
+  EXPECT_EQ(lesson.order(), 20.0);
+  const std::string unknown = error_of([&] { lesson.moment("steep"); });
+  EXPECT_NE(unknown.find("no moment 'steep' in " + lesson.path() + "; its moments: below_critical_angle, above_critical_angle"),
+            std::string::npos) << unknown;
+}
+
+TEST(LessonMoments, ShowsIsFalseAtAMomentThatDoesNotShowItsName) {
+  // spring_pull slips at 1.2 s: its "sticking" moment's function says no there, yes at 0.5 s.
+  Lesson lesson(resolve_lesson("spring_pull"));
+  lesson.step_to(0.5);
+  EXPECT_EQ(lesson.shows("sticking"), true);
+  EXPECT_EQ(lesson.shows("mid_slip"), false);
+  lesson.step_to(1.2);
+  EXPECT_EQ(lesson.shows("sticking"), false);
+  EXPECT_EQ(lesson.shows("mid_slip"), true);
+}
+
+TEST(LessonMoments, ShowsMustAnswerTrueOrFalseAndMayBeLeftOut) {
+  const ScriptFile script(
+      "lesson { title = \"test\", question = \"?\", duration = 1,\n"
+      "  moments = { { \"plain\", at = 0.5 },\n"
+      "              { \"vague\", at = 0.5, shows = function() return 1 end } } }\n");
+  Lesson lesson(script.path());
+  EXPECT_EQ(lesson.shows("plain"), std::nullopt);
+  const std::string message = error_of([&] { lesson.shows("vague"); });
+  EXPECT_EQ(message, script.path() + ":3: moment 'vague': shows returned the number 1; it must return true or false");
+}
+
+TEST(LessonMoments, AMomentWithValuesMayComeAfterTheDefaultsEndAndIsCheckedOnlyAtTheDefaults) {
+  // With angle = 50 the lesson lasts 5 s: its moment at 4 s is fine. At its defaults it lasts
+  // 2 s, so a plain moment at 4 s is refused, but a slider that shortens it is not.
+  const std::string head = "local angle = parameter { \"angle\", 20, min = 2, max = 60 }\n";
+  const ScriptFile script("lesson { title = \"test\", question = \"?\", duration = function() return param.angle / 10 end,\n"
+                          "  moments = { { \"steep\", at = 4, set = { angle = 50 } }, { \"start\", at = 1 } } }\n" + head);
+  EXPECT_NO_THROW(Lesson lesson(script.path()));
+  Lesson shortened(script.path(), {{"angle", "5"}});
+  EXPECT_EQ(shortened.duration(), 0.5);
+  const ScriptFile late("lesson { title = \"test\", question = \"?\", duration = function() return param.angle / 10 end,\n"
+                        "  moments = { { \"late\", at = 4 } } }\n" + head);
+  EXPECT_EQ(error_of([&] { Lesson lesson(late.path()); }),
+            late.path() + ":1: lesson: moment 'late': at = 4 s is after the lesson's end, at 2 s");
 }
 
 TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {

@@ -17,9 +17,10 @@ void Sandbox::menu_bar() {
   if (lesson_menu) {
     // Under a teacher's lock the class stays on the lesson the teacher chose.
     const bool may_switch = lock_.empty();
-    for (const std::string& name : lessons::builtin_lessons()) {
-      const bool current = lesson_name(playback_->lesson().path()) == name;
-      if (ImGui::MenuItem(name.c_str(), nullptr, current, may_switch)) status_ = open(name);
+    // Titles, with the name to open it by (frictionlab NAME) beside each.
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      const bool current = lesson_name(playback_->lesson().path()) == entry.name;
+      if (ImGui::MenuItem(entry.title.c_str(), entry.name.c_str(), current, may_switch)) status_ = open(entry.name);
     }
     ImGui::Separator();
     if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;

@@ -64,6 +64,9 @@ struct LessonBuild {
   std::string title, question;
   double duration = 10.0;
   int duration_function = LUA_NOREF;
+  std::optional<double> order;
+  std::vector<Moment> moments;
+  std::vector<int> moment_shows;  // one per moment: its shows function, or LUA_NOREF
   std::vector<Parameter> parameters;
   std::string override_error;  // the first bad --set value, reported after the build
   std::vector<std::string> warnings;
@@ -165,6 +168,15 @@ void declare_preset_pairs(LessonBuild& build);
 // Reads a parameter's value from text: a number within its range, or one of its choices.
 // Throws InvalidInput naming the parameter and the range or the choices.
 double parse_parameter_value(const Parameter& parameter, const std::string& text);
+
+// lesson{ moments = { ... } }, the value on the stack top: reads and checks each moment
+// (everything that can be checked before the parameters exist) into build.moments.
+void read_moments(lua_State* state, LessonBuild& build);
+// After the script: each moment's set names parameters and gives values within their ranges,
+// and, at the lesson's defaults, each moment that sets no parameter comes within its duration
+// (`duration`, in s).
+// Throws ScriptError placed at lesson{}.
+void check_moments(LessonBuild& build, std::optional<double> duration);
 
 void register_lesson_api(lua_State* state);
 void register_world_api(lua_State* state);

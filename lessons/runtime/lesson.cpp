@@ -167,6 +167,10 @@ void LessonBuild::numbers_returned(int reference, int count, const std::string& 
   throw ScriptError(message.str());
 }
 
+namespace {
+double duration_of(LessonBuild& build);
+}  // namespace
+
 std::string read_script(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InvalidInput("cannot read the lesson script " + path + ": " + std::strerror(errno));
@@ -208,6 +212,9 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
     throw ScriptError(path_ + ":1: the script never says what it is; begin it with lesson{ title = \"...\", question = "
                       "\"...\" }");
   }
+  // At the defaults a moment must come before the end; with other values the lesson may be
+  // shorter, and a moment past its end is simply not reached.
+  check_moments(*next, next->overrides.empty() && !next->moments.empty() ? std::optional(duration_of(*next)) : std::nullopt);
   for (const Plot& plot : next->plots) {
     std::vector<std::string> names = plot.y;
     if (plot.x != "time") names.push_back(plot.x);
@@ -237,8 +244,11 @@ void Lesson::replace(std::unique_ptr<LessonBuild> next, std::string source) {
 
 const std::string& Lesson::title() const { return current_->title; }
 const std::string& Lesson::question() const { return current_->question; }
-double Lesson::duration() const {
-  LessonBuild& build = *current_;
+double Lesson::duration() const { return duration_of(*current_); }
+
+namespace {
+
+double duration_of(LessonBuild& build) {
   if (build.duration_function == LUA_NOREF) return build.duration;
   build.call(build.duration_function, {}, 1);
   double seconds = 0.0;
@@ -248,6 +258,38 @@ double Lesson::duration() const {
                       format_value(seconds) + " s; it must be in (0, 86400]");
   }
   return seconds;
+}
+
+}  // namespace
+
+std::optional<double> Lesson::order() const { return current_->order; }
+const std::vector<Moment>& Lesson::moments() const { return current_->moments; }
+
+const Moment& Lesson::moment(const std::string& name) const {
+  for (const Moment& moment : current_->moments) {
+    if (moment.name == name) return moment;
+  }
+  std::string names;
+  for (const Moment& moment : current_->moments) names += (names.empty() ? "" : ", ") + moment.name;
+  throw InvalidInput("no moment '" + name + "' in " + path_ + "; its moments: " + (names.empty() ? "(none)" : names));
+}
+
+std::optional<bool> Lesson::shows(const std::string& name) {
+  const Moment& wanted = moment(name);
+  LessonBuild& build = *current_;
+  const int reference = build.moment_shows[static_cast<size_t>(&wanted - build.moments.data())];
+  if (reference == LUA_NOREF) return std::nullopt;
+  build.call(reference, {}, 1);
+  lua_State* state = build.sandbox.state();
+  if (lua_type(state, -1) != LUA_TBOOLEAN) {
+    const std::string got = describe(state, -1);
+    lua_pop(state, 1);
+    throw ScriptError(build.defined_at(reference) + ": moment '" + name + "': shows returned " + got +
+                      "; it must return true or false");
+  }
+  const bool shown = lua_toboolean(state, -1) != 0;
+  lua_pop(state, 1);
+  return shown;
 }
 Scene& Lesson::scene() { return *current_->scene; }
 const Scene& Lesson::scene() const { return *current_->scene; }

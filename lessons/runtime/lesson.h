@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,19 @@ struct ExpectationResult {
   double error() const { return measured - predicted; }
 };
 
+// A teaching moment the lesson declares in lesson{ moments = { ... } }: a time worth a
+// picture (its golden snapshot; one of them is the README's frame), with the parameters and
+// theme to show it in.
+struct Moment {
+  std::string name;                         // a word: it names the golden, <lesson>_<name>.png
+  double at = 0.0;                          // s
+  std::map<std::string, std::string> set;   // parameter values, as --set NAME=VALUE gives them
+  std::string theme = "light";              // "light" or "dark"
+  bool readme = false;                      // the lesson's frame in the README
+  bool has_shows = false;                   // a function says whether it shows what its name says
+  std::string declared_at;                  // "path:line" of lesson{}
+};
+
 // A rope over a fixed pulley (a Box2D pulley joint): both ends stay taut, their lengths add up.
 struct Rope {
   std::string name;
@@ -80,6 +94,15 @@ class Lesson {
   const std::string& title() const;
   const std::string& question() const;
   double duration() const;  // how long `run` and `check` run it, s
+  // Its place in the teaching order (lesson{ order = 10 }), if it gives one.
+  std::optional<double> order() const;
+  const std::vector<Moment>& moments() const;
+  // The moment of that name; throws InvalidInput listing the lesson's moments.
+  const Moment& moment(const std::string& name) const;
+  // Runs the moment's shows function now (step the lesson to the moment, with the moment's
+  // parameters, first): true when it shows what its name says, nullopt when it has no such
+  // function. Throws ScriptError when the function fails or returns anything but a boolean.
+  std::optional<bool> shows(const std::string& moment);
   const StepSettings& settings() const { return settings_; }
 
   // The scene, parameters, plots and ropes belong to the current build: set() on a structural

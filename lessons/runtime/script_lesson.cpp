@@ -65,7 +65,7 @@ int lesson(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "lesson");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "lesson", {"title", "question", "duration"});
+    Fields fields(state, 1, "lesson", {"title", "question", "duration", "order", "moments"});
     build.title = fields.text("title", "");
     build.question = fields.text("question", "");
     if (build.title.empty()) throw InvalidInput("lesson: title must be text, as in lesson{ title = \"...\" }");
@@ -76,6 +76,11 @@ int lesson(lua_State* state) {
     } else {
       build.duration = fields.number_in("duration", "s", 10.0, 0.0, 86400.0, true);
     }
+    // Where it comes among the built-in lessons: lessons/ is their list, in this order.
+    if (fields.has("order")) build.order = fields.number_in("order", "", -1e6, 1e6);
+    fields.push("moments");
+    if (!lua_isnil(state, -1)) read_moments(state, build);
+    lua_pop(state, 1);
     return 0;
   });
 }
