@@ -9,9 +9,12 @@ cd "$(dirname "$0")/.."
 
 FRICTIONLAB_TARGET=frictionlab scripts/setup.sh build -DBUILD_TESTING=OFF
 mkdir -p docs/frames
-build/app/frictionlab list --tsv | while IFS=$'\t' read -r lesson title readme moments; do
+# One line a lesson: name, title, README moment, moments, tab-separated (cut keeps an empty field).
+build/app/frictionlab list --tsv | while IFS= read -r line; do
+  lesson=$(cut -f1 <<<"$line")
+  readme=$(cut -f3 <<<"$line")
   if [ -z "$readme" ]; then
-    echo "readme_frames.sh: $lesson ($title) marks none of its moments ($moments) with readme = true" >&2
+    echo "readme_frames.sh: $lesson marks none of its moments ($(cut -f4 <<<"$line")) with readme = true" >&2
     exit 2
   fi
   build/app/frictionlab render "$lesson" --moment "$readme" --out "docs/frames/$lesson.png"
