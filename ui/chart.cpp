@@ -261,6 +261,68 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
   }
 }
 
+LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
+                          const std::vector<ImVec2>& points, float radius) {
+  const ImVec2 corners[] = {{area_max.x - inset - legend_size.x, area_min.y + inset},
+                            {area_min.x + inset, area_min.y + inset},
+                            {area_max.x - inset - legend_size.x, area_max.y - inset - legend_size.y},
+                            {area_min.x + inset, area_max.y - inset - legend_size.y}};
+  LegendPlace best;
+  std::size_t fewest = static_cast<std::size_t>(-1);
+  for (const ImVec2& corner : corners) {
+    std::size_t met = 0;
+    for (const ImVec2& p : points) {
+      met += p.x + radius >= corner.x && p.x - radius <= corner.x + legend_size.x && p.y + radius >= corner.y &&
+             p.y - radius <= corner.y + legend_size.y;
+    }
+    if (met < fewest) {
+      fewest = met;
+      best = {corner, ImVec2(corner.x + legend_size.x, corner.y + legend_size.y), met == 0};
+    }
+  }
+  return best;
+}
+
+int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point) {
+  int nearest = -1;
+  double least = INFINITY;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    for (const std::vector<ImVec2>& piece : curves[c]) {
+      for (std::size_t i = 0; i < piece.size(); ++i) {
+        // Distance to the segment from this point to the next (or to the point, when alone).
+        const ImVec2 a = piece[i], b = i + 1 < piece.size() ? piece[i + 1] : piece[i];
+        const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+        const double along = length2 > 0.0 ? std::clamp(((point.x - a.x) * dx + (point.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+        const double ex = a.x + along * dx - point.x, ey = a.y + along * dy - point.y;
+        const double distance = ex * ex + ey * ey;
+        if (distance < least) least = distance, nearest = static_cast<int>(c);
+      }
+    }
+  }
+  return nearest;
+}
+
+void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap) {
+  float phase = 0.0f;  // how far into the dash-and-gap pattern the next segment starts
+  const float period = dash + gap;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const ImVec2 a = points[i - 1], b = points[i];
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    float done = 0.0f;
+    while (done < length) {
+      const float in_period = std::fmod(phase + done, period);
+      const float step = std::min(length - done, in_period < dash ? dash - in_period : period - in_period);
+      if (in_period < dash && length > 0.0f) {
+        const float t0 = done / length, t1 = (done + step) / length;
+        draw->AddLine(ImVec2(a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0), ImVec2(a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1),
+                      colour, thickness);
+      }
+      done += std::max(step, 1e-3f);
+    }
+    phase = std::fmod(phase + length, period);
+  }
+}
+
 Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height) {
   HeadlessContext gl;
   ImGuiHost host(nullptr);

@@ -46,6 +46,25 @@ struct Chart {
 
 void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts);
 
+// Parts the lesson plots (ui/plots.cpp) draw with too.
+
+// Where a legend of `legend_size` goes inside the data area [area_min, area_max], `inset` from
+// its edge: the corner whose rectangle meets the fewest `points` (each a square `radius` each
+// side of it). `clear` when that corner meets none; otherwise the caller puts it outside.
+struct LegendPlace {
+  ImVec2 min, max;
+  bool clear = false;
+};
+LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
+                          const std::vector<ImVec2>& points, float radius);
+
+// A curve made of pieces (a nil in a theory function splits it), in screen points.
+using CurvePieces = std::vector<std::vector<ImVec2>>;
+// The curve passing nearest `point`; -1 when no curve has a point.
+int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point);
+// A polyline drawn in dashes of `dash` pixels with `gap` between them.
+void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap);
+
 // The charts in a grid of `columns`, on one picture, drawn headless (EGL). Throws
 // HeadlessUnavailable where EGL cannot start.
 Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height);
