@@ -51,7 +51,7 @@ plot { "Forces on the block", kind = "time", y = { "spring_force", "friction_for
 local N = mass * g  -- the bench holds the block up: it lies flat
 plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "friction_force" },
   theory = {
-    { "sticking: f = −F while |F| ≤ μs·N", function(F) if math.abs(F) <= param.mu_s * N then return -F end end,
+    { "sticking: f = −F, |F| ≤ μs·N", function(F) if math.abs(F) <= param.mu_s * N then return -F end end,
       active = function() return touch.state ~= "slipping" end },
     { "sliding: f = −μk·N", function(F) return -param.mu_k * N end,
       active = function() return touch.state == "slipping" end },

@@ -172,12 +172,12 @@ plot { "waves", kind = "time", y = { "wave", "other" } }
   for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
 }
 
-// The legend corner: the one free of points, the top right first.
+// The legend corner: the one free of points, the top left first.
 TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
   const ImVec2 low(0, 0), high(200, 100), size(50, 20);
   const LegendPlace empty = legend_corner(low, high, size, 5, {}, 2);
   EXPECT_TRUE(empty.clear);
-  EXPECT_EQ(empty.min.x, 145.0f);
+  EXPECT_EQ(empty.min.x, 5.0f);
   EXPECT_EQ(empty.min.y, 5.0f);
   // Points along the top: a bottom corner.
   const LegendPlace below = legend_corner(low, high, size, 5, {ImVec2(20, 10), ImVec2(180, 10)}, 2);

@@ -299,21 +299,47 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
                                              legend_size, 5.0f * s, avoid, 3.0f * s);
     if (inside.clear) {
       layout.legend_min = inside.min, layout.legend_max = inside.max;
+      float y = inside.min.y;
+      for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
     } else {
-      // No corner is free of the data: the legend goes in one row above the data area, beside
-      // the y label, and the data area gives up a row when the label leaves no room.
+      // No corner is free of the data: the legend goes above the data area, in one row beside
+      // the y label when it fits there, else in as many rows as it needs under the label,
+      // the data area giving up their height.
       layout.legend_outside = true;
+      const float row_height = text + 4.0f * s;
       const float room = layout.high_right.x - corner.x - width_of(font, chart.y_label) - 12.0f * s;
-      if (row_width > room) {
-        layout.high_right.y += text + 4.0f * s;
+      if (row_width <= room) {
+        float x = layout.high_right.x - row_width;
+        for (const Key& key : keys) {
+          layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
+          x += width_of(font, key.name) + 32.0f * s;
+        }
+      } else {
+        const float left = layout.low_left.x, right = layout.high_right.x;
+        float x = left, y = layout.high_right.y - 4.0f * s;
+        for (const Key& key : keys) {
+          const float w = width_of(font, key.name) + 32.0f * s;
+          if (x > left && x + w > right) {
+            x = left;
+            y += row_height;
+          }
+          layout.legend_at.push_back(ImVec2(x, y));
+          x += w;
+        }
+        layout.high_right.y = y + row_height + 4.0f * s;
         if (layout.low_left.y - layout.high_right.y < 20.0f) {
           layout.drawable = false;
           return layout;
         }
         place();
       }
-      layout.legend_min = ImVec2(layout.high_right.x - row_width, layout.high_right.y - text - 6.0f * s);
-      layout.legend_max = ImVec2(layout.high_right.x, layout.high_right.y - 4.0f * s);
+      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
+      for (std::size_t i = 0; i < keys.size(); ++i) {
+        const ImVec2 at = layout.legend_at[i];
+        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + width_of(font, keys[i].name) + 22.0f * s),
+                                   std::max(layout.legend_max.y, at.y + text));
+      }
     }
   }
   layout.active = chart.active_theory;
@@ -474,8 +500,9 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
       y += line;
     }
   } else if (chart.legend == Chart::Legend::inside) {
-    ImVec2 at = layout.legend_min;
-    for (const Key& key : keys) {
+    for (std::size_t i = 0; i < keys.size() && i < layout.legend_at.size(); ++i) {
+      const Key& key = keys[i];
+      const ImVec2 at = layout.legend_at[i];
       const float w = width_of(font, key.name);
       draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + 22.0f * s + w + 2, at.y + text + 1),
                           (theme.panel & 0x00FFFFFFu) | (200u << IM_COL32_A_SHIFT));
@@ -488,21 +515,16 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
         draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle), key.colour, 3.0f * s);
       }
       draw->AddText(font, text, ImVec2(at.x + 20.0f * s, at.y), theme.text, key.name.c_str());
-      if (layout.legend_outside) {
-        at.x += w + 32.0f * s;
-      } else {
-        at.y += text + 2.0f * s;
-      }
     }
   }
 }
 
 LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
                           const std::vector<ImVec2>& points, float radius) {
-  const ImVec2 corners[] = {{area_max.x - inset - legend_size.x, area_min.y + inset},
-                            {area_min.x + inset, area_min.y + inset},
-                            {area_max.x - inset - legend_size.x, area_max.y - inset - legend_size.y},
-                            {area_min.x + inset, area_max.y - inset - legend_size.y}};
+  const ImVec2 corners[] = {{area_min.x + inset, area_min.y + inset},
+                            {area_max.x - inset - legend_size.x, area_min.y + inset},
+                            {area_min.x + inset, area_max.y - inset - legend_size.y},
+                            {area_max.x - inset - legend_size.x, area_max.y - inset - legend_size.y}};
   LegendPlace best;
   std::size_t fewest = static_cast<std::size_t>(-1);
   for (const ImVec2& corner : corners) {

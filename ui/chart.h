@@ -102,6 +102,7 @@ struct ChartLayout {
   std::vector<std::vector<std::vector<ImVec2>>> theory;  // [curve][piece][point]
   int active = -1;
   ImVec2 legend_min, legend_max;
+  std::vector<ImVec2> legend_at;  // an inside legend's keys, one by one
   bool legend_outside = false;  // an inside legend that found no free corner: in a row above
   bool drawable = false;        // room enough for a data area
 
@@ -114,8 +115,9 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
 // Parts the lesson plots (ui/plots.cpp) draw with too.
 
 // Where a legend of `legend_size` goes inside the data area [area_min, area_max], `inset` from
-// its edge: the corner whose rectangle meets the fewest `points` (each a square `radius` each
-// side of it). `clear` when that corner meets none; otherwise the caller puts it outside.
+// its edge: the corner whose rectangle meets the fewest `points` (each a square `radius`
+// each side of it), the first of equals in the order top left, top right, bottom left,
+// bottom right. `clear` when that corner meets none; otherwise the caller puts it outside.
 struct LegendPlace {
   ImVec2 min, max;
   bool clear = false;
