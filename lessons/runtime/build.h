@@ -117,6 +117,11 @@ struct LessonBuild {
 
 LessonBuild& build_of(lua_State* state);
 
+// Asks every plot's theory curves for x (or t) from 0 to 1, and their active functions once,
+// so that a curve that cannot work is refused with the script rather than first seen drawn.
+// Throws ScriptError placed at the curve.
+void try_theory_curves(LessonBuild& build);
+
 // "path:line" of the script line that called the running API function.
 std::string caller(lua_State* state);
 

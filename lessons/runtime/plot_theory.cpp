@@ -181,6 +181,23 @@ int ask_active(lua_State* state) {
 
 }  // namespace
 
+void try_theory_curves(LessonBuild& build) {
+  lua_State* state = build.sandbox.state();
+  for (std::size_t plot = 0; plot < build.plots.size(); ++plot) {
+    if (build.plot_functions[plot].curves.empty()) continue;
+    TheorySamples samples;
+    SamplingJob job{plot, 0.0, 1.0, 3, &samples};
+    lua_pushcfunction(state, sample_plot);
+    lua_pushlightuserdata(state, &job);
+    build.sandbox.call(1, 0);
+    std::vector<int> active(build.plot_functions[plot].curves.size(), -1);
+    ActiveJob asking{plot, &active};
+    lua_pushcfunction(state, ask_active);
+    lua_pushlightuserdata(state, &asking);
+    build.sandbox.call(1, 0);
+  }
+}
+
 const TheorySamples& Lesson::theory_samples(std::size_t plot, double x_low, double x_high, int count) {
   LessonBuild& build = *current_;
   PlotFunctions& functions = build.plot_functions.at(plot);

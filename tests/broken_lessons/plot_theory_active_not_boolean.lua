@@ -1,5 +1,5 @@
 -- expect: 6: plot 'Motion': theory curve 'law': active gave the number 1; it must give true (the branch applies now) or false
--- when: plots
+-- when: load
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 probe { "speed", unit = "m/s", function() return 0 end }

@@ -1,5 +1,5 @@
 -- expect: 7: attempt to perform arithmetic on a nil value (global 'slope')
--- when: plots
+-- when: load
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 probe { "speed", unit = "m/s", function() return 0 end }
