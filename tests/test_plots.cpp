@@ -137,6 +137,28 @@ TEST(TheoryCurves, NearestCurveIsTheOnePassingClosest) {
   EXPECT_EQ(nearest_curve({}, ImVec2(10, 48)), -1);
 }
 
+// A curve that fails only further along than the load tries: the plot says where, the
+// lesson runs on, and the plot keeps its measured points.
+TEST(TheoryCurves, AScriptErrorInACurveIsWrittenInThePlotAndTheLessonRunsOn) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "height", unit = "m", function() return block.y end }
+plot { "late", kind = "time", y = { "height" }, theory = { { "law", function(t)
+  if t > 2 then return rate * t end return 0 end } } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const Chart chart = plot_chart(lesson, 0, 10.0, theme(ThemeName::light));
+  EXPECT_EQ(chart.message.rfind(script.path() + ":7: ", 0), 0u) << chart.message;
+  EXPECT_NE(chart.message.find("global 'rate'"), std::string::npos) << chart.message;
+  EXPECT_TRUE(chart.theory.empty());
+  EXPECT_EQ(chart.series.size(), 1u);
+  EXPECT_FALSE(lesson.failed());
+  lesson.step();
+  EXPECT_GT(lesson.scene().time(), 0.5);
+}
+
 bool covers(const ChartLayout& layout, ImVec2 p) {
   return p.x >= layout.legend_min.x && p.x <= layout.legend_max.x && p.y >= layout.legend_min.y && p.y <= layout.legend_max.y;
 }
