@@ -53,8 +53,18 @@ probe { "friction_force", unit = "N", read = { touch, "fx" } }
 probe { "block_speed", unit = "m/s", read = { block, "vx" } }
 probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides, 0 while it sticks
 
-plot { "Forces on the block", y = { "spring_force", "friction_force" } }
-plot { "Friction against the pull", x = "spring_force", y = { "friction_force" } }
+plot { "Forces on the block", kind = "time", y = { "spring_force", "friction_force" } }
+-- Friction against the pull, over the Coulomb law as the article stacks it: stuck, friction
+-- answers the pull, f = −F, as long as |F| ≤ μs·N; sliding, it is −μk·N whatever the pull.
+-- The branch that applies (the contact's state) is drawn bold.
+local N = mass * g  -- the bench holds the block up: it lies flat
+plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "friction_force" },
+  theory = {
+    { "sticking: f = −F, |F| ≤ μs·N", function(F) if math.abs(F) <= param.mu_s * N then return -F end end,
+      active = function() return touch.state ~= "slipping" end },
+    { "sliding: f = −μk·N", function(F) return -param.mu_k * N end,
+      active = function() return touch.state == "slipping" end },
+  } }
 
 -- Reading the record ----------------------------------------------------------------------
 -- Like the article's experiment: record, then read the graph. The contact changes state during

@@ -7,6 +7,7 @@
 // and, when the error comes after loading, when it comes:
 //   -- when: step          (while it runs, within one simulated second)
 //   -- when: expectations  (when its expectations are evaluated after that second)
+//   -- when: plots         (when its plots' theory curves are drawn, after the expectations)
 // The message must start with "<path>:<line>: " and contain the rest.
 #include <gtest/gtest.h>
 
@@ -65,8 +66,8 @@ Expected read_header(const fs::path& path) {
   expected.text = first.substr(colon + 2);
   if (second.rfind(when, 0) == 0) {
     expected.when = second.substr(when.size());
-    if (expected.when != "load" && expected.when != "step" && expected.when != "expectations") {
-      expected.problem = "'-- when:' takes load, step or expectations, got '" + expected.when + "'";
+    if (expected.when != "load" && expected.when != "step" && expected.when != "expectations" && expected.when != "plots") {
+      expected.problem = "'-- when:' takes load, step, expectations or plots, got '" + expected.when + "'";
     }
   }
   return expected;
@@ -99,6 +100,12 @@ Failure first_failure(const std::string& path, const std::string& when) {
     if (when == "step") return {};
     failure.stage = "expectations";
     lesson.expectations();
+    if (when == "expectations") return {};
+    failure.stage = "plots";
+    for (std::size_t plot = 0; plot < lesson.plots().size(); ++plot) {
+      lesson.theory_samples(plot, 0.0, 10.0, 16);  // wider than the 0 to 1 tried at load
+      lesson.theory_active(plot);
+    }
     return {};
   } catch (const ScriptError& error) {
     failure.message = error.what();

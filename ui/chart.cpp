@@ -5,13 +5,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
-#include "ui/plots.h"
 
 namespace frictionlab::ui {
+
+std::vector<double> axis_ticks(double low, double high, int count) {
+  std::vector<double> ticks;
+  if (!(high > low) || count < 1) return ticks;
+  const double rough = (high - low) / count;
+  const double power = std::pow(10.0, std::floor(std::log10(rough)));
+  const double fraction = rough / power;
+  const double step = (fraction < 1.5 ? 1.0 : fraction < 3.5 ? 2.0 : fraction < 7.5 ? 5.0 : 10.0) * power;
+  for (double tick = std::ceil(low / step - 1e-9) * step; tick <= high + 1e-9 * step; tick += step) {
+    ticks.push_back(std::abs(tick) < 1e-12 * step ? 0.0 : tick);
+  }
+  return ticks;
+}
+
+std::string tick_text(double value, double step) {
+  char text[32];
+  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(text, sizeof text, "%.*f", std::min(decimals, 6), value);
+  std::string shown = text;
+  if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
+  return shown;
+}
+
 namespace {
 
 struct Axis {
@@ -101,14 +124,15 @@ std::vector<std::pair<double, double>> cell_edges(const Axis& axis, std::vector<
 
 }  // namespace
 
-void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts) {
-  const float s = fonts.scale;
-  ImFont* font = fonts.small;
-  const float text = font->FontSize;
-  draw->AddRectFilled(corner, ImVec2(corner.x + size.x, corner.y + size.y), theme.panel);
-  draw->AddText(fonts.body, fonts.body->FontSize, ImVec2(corner.x + 8.0f * s, corner.y + 4.0f * s), theme.text,
-                chart.title.c_str());
+namespace {
 
+// The axes of a chart before its data area is known: ranges, and a map's cell edges.
+struct ChartAxes {
+  Axis x, y;
+  std::vector<std::pair<double, double>> x_edges, y_edges;
+};
+
+ChartAxes axes_of(const Chart& chart) {
   std::vector<double> xs, ys;
   for (const ChartCell& cell : chart.cells) {
     xs.push_back(cell.x);
@@ -120,38 +144,230 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
       ys.push_back(y);
     }
   }
-  Axis x_axis = axis_of(chart.log_x, xs), y_axis = axis_of(chart.log_y, ys);
+  ChartAxes axes;
+  axes.x = chart.fixed_x ? Axis{false, chart.x_low, chart.x_high} : axis_of(chart.log_x, xs);
+  axes.y = chart.fixed_y ? Axis{false, chart.y_low, chart.y_high} : axis_of(chart.log_y, ys);
   // A map fills its axes to the cells' edges.
-  std::vector<std::pair<double, double>> x_edges, y_edges;
   if (!chart.cells.empty()) {
-    x_edges = cell_edges(x_axis, xs.size() > chart.cells.size() ? std::vector<double>(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(chart.cells.size())) : xs);
-    y_edges = cell_edges(y_axis, ys.size() > chart.cells.size() ? std::vector<double>(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(chart.cells.size())) : ys);
-    x_axis.low = x_edges.front().first;
-    x_axis.high = x_edges.back().second;
-    y_axis.low = y_edges.front().first;
-    y_axis.high = y_edges.back().second;
+    const auto first_cells = [&](const std::vector<double>& values) {
+      return values.size() > chart.cells.size()
+                 ? std::vector<double>(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(chart.cells.size()))
+                 : values;
+    };
+    axes.x_edges = cell_edges(axes.x, first_cells(xs));
+    axes.y_edges = cell_edges(axes.y, first_cells(ys));
+    axes.x.low = axes.x_edges.front().first;
+    axes.x.high = axes.x_edges.back().second;
+    axes.y.low = axes.y_edges.front().first;
+    axes.y.high = axes.y_edges.back().second;
   }
-  const std::vector<Tick> x_ticks = ticks_of(x_axis), y_ticks = ticks_of(y_axis);
-  float label_width = 0.0f;
-  for (const Tick& tick : y_ticks) label_width = std::max(label_width, font->CalcTextSizeA(text, 1e6f, 0.0f, tick.label.c_str()).x);
-  // The legend goes under the chart, in two columns, so it hides none of it.
+  return axes;
+}
+
+// One line of a legend: a colour swatch (a square under the chart; inside it, a line, a band
+// or a dashed theory line) and its text.
+struct Key {
+  std::string name;
+  ImU32 colour;
+  enum class Look { line, band, theory } look;
+};
+
+std::vector<Key> keys_of(const Chart& chart) {
+  std::vector<Key> keys;
   // A map's categories that no cell has are left out of the legend.
-  std::vector<std::pair<std::string, ImU32>> entries;
   for (std::size_t category = 0; category < chart.categories.size(); ++category) {
     const bool present = std::any_of(chart.cells.begin(), chart.cells.end(), [&](const ChartCell& cell) {
       return cell.category == static_cast<int>(category);
     });
-    if (present) entries.push_back(chart.categories[category]);
+    if (present) keys.push_back({chart.categories[category].first, chart.categories[category].second, Key::Look::band});
   }
+  for (const auto& [name, colour] : chart.colour_keys) keys.push_back({name, colour, Key::Look::line});
   for (const ChartSeries& series : chart.series) {
-    if (!series.name.empty()) entries.push_back({series.name, series.colour});
+    if (!series.name.empty()) keys.push_back({series.name, series.colour, Key::Look::line});
   }
+  if (!chart.band_name.empty()) keys.push_back({chart.band_name, chart.band_colour, Key::Look::band});
+  for (const ChartCurve& curve : chart.theory) keys.push_back({curve.name, chart.theory_colour, Key::Look::theory});
+  return keys;
+}
+
+float width_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; }
+
+std::vector<Tick> ticks_every(const Axis& axis, int count) {
+  if (axis.log) return ticks_of(axis);
+  std::vector<Tick> ticks;
+  const std::vector<double> values = axis_ticks(axis.low, axis.high, count);
+  const double step = values.size() > 1 ? values[1] - values[0] : 1.0;
+  for (const double value : values) ticks.push_back({value, tick_text(value, step)});
+  return ticks;
+}
+
+}  // namespace
+
+ImVec2 ChartLayout::to_screen(double x, double y) const {
+  const double ax = log_x ? std::log10(x) : x, ay = log_y ? std::log10(y) : y;
+  return ImVec2(low_left.x + static_cast<float>((ax - x_low) / (x_high - x_low)) * (high_right.x - low_left.x),
+                low_left.y - static_cast<float>((ay - y_low) / (y_high - y_low)) * (low_left.y - high_right.y));
+}
+
+ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+  const float s = fonts.scale;
+  ImFont* font = fonts.small;
+  const float text = font->FontSize;
+  ChartLayout layout;
+  const ChartAxes axes = axes_of(chart);
+  layout.log_x = axes.x.log, layout.log_y = axes.y.log;
+  layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
+  for (const Tick& tick : ticks_every(axes.y, chart.y_tick_count)) {
+    layout.y_ticks.push_back(tick.value);
+    layout.y_tick_labels.push_back(tick.label);
+  }
+  float label_width = 0.0f;
+  for (const std::string& label : layout.y_tick_labels) label_width = std::max(label_width, width_of(font, label));
+  const std::vector<Key> keys = keys_of(chart);
+  if (chart.legend == Chart::Legend::only) return layout;
+
+  const float line = text + 3.0f * s;
+  if (chart.plain) {
+    layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
+    layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
+  } else {
+    // The legend goes under the chart, in two columns, so it hides none of it.
+    const std::size_t rows = chart.legend == Chart::Legend::under ? (keys.size() + 1) / 2 : 0;
+    const float legend_height =
+        line * static_cast<float>(rows + chart.notes.size()) + (rows == 0 ? 0.0f : 6.0f * s);
+    const float top = corner.y + fonts.body->FontSize + text + 16.0f * s;
+    layout.low_left = ImVec2(corner.x + label_width + 16.0f * s, corner.y + size.y - 2.0f * text - 14.0f * s - legend_height);
+    // Room on the right for the labels beside the last points (a step rate, say).
+    const bool labelled = std::any_of(chart.series.begin(), chart.series.end(), [](const ChartSeries& series) { return !series.labels.empty(); });
+    layout.high_right = ImVec2(corner.x + size.x - (labelled ? 60.0f : 10.0f) * s, top);
+  }
+  const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
+  layout.drawable = width >= 20.0f && height >= 20.0f;
+  if (!layout.drawable) return layout;
+  const int x_count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(width / (70.0f * s)));
+  for (const Tick& tick : ticks_every(axes.x, x_count)) {
+    layout.x_ticks.push_back(tick.value);
+    layout.x_tick_labels.push_back(tick.label);
+  }
+
+  // The points where they land; at most about two a pixel, the rest would be drawn over each other.
+  const auto place = [&] {
+    const float w = layout.high_right.x - layout.low_left.x;
+    layout.points.clear();
+    layout.series_points.assign(chart.series.size(), {});
+    layout.series_indices.assign(chart.series.size(), {});
+    for (std::size_t k = 0; k < chart.series.size(); ++k) {
+      const auto& points = chart.series[k].points;
+      const std::size_t stride = std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(std::max(1.0f, 2.0f * w)));
+      const auto add = [&](std::size_t i) {
+        const auto [x, y] = points[i];
+        if (!axes.x.shows(x) || !axes.y.shows(y)) return;
+        layout.series_points[k].push_back(layout.to_screen(x, y));
+        layout.series_indices[k].push_back(i);
+        layout.points.push_back(layout.series_points[k].back());
+      };
+      for (std::size_t i = 0; i < points.size(); i += stride) add(i);
+      if (!points.empty() && (points.size() - 1) % stride != 0) add(points.size() - 1);  // the latest point always
+    }
+    layout.theory.clear();
+    for (const ChartCurve& curve : chart.theory) {
+      layout.theory.emplace_back();
+      for (const auto& piece : curve.pieces) {
+        layout.theory.back().emplace_back();
+        for (const auto& [x, y] : piece) layout.theory.back().back().push_back(layout.to_screen(x, y));
+      }
+    }
+  };
+  place();
+
+  if (!chart.plain && chart.legend != Chart::Legend::inside) {
+    const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
+    layout.legend_min = ImVec2(corner.x + 12.0f * s, layout.low_left.y + 2.0f * text + 14.0f * s);
+    layout.legend_max = ImVec2(corner.x + size.x - 12.0f * s, layout.legend_min.y + line * static_cast<float>((shown + 1) / 2));
+  } else if (chart.legend == Chart::Legend::inside && !keys.empty()) {
+    float legend_width = 0.0f, row_width = 0.0f;
+    for (const Key& key : keys) {
+      legend_width = std::max(legend_width, width_of(font, key.name));
+      row_width += width_of(font, key.name) + 32.0f * s;
+    }
+    const ImVec2 legend_size(legend_width + 24.0f * s, static_cast<float>(keys.size()) * (text + 2.0f * s));
+    std::vector<ImVec2> avoid = layout.points;
+    for (const auto& curve : layout.theory) {
+      for (const auto& piece : curve) avoid.insert(avoid.end(), piece.begin(), piece.end());
+    }
+    const LegendPlace inside = legend_corner(ImVec2(layout.low_left.x, layout.high_right.y), ImVec2(layout.high_right.x, layout.low_left.y),
+                                             legend_size, 5.0f * s, avoid, 3.0f * s);
+    if (inside.clear) {
+      layout.legend_min = inside.min, layout.legend_max = inside.max;
+      float y = inside.min.y;
+      for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
+    } else {
+      // No corner is free of the data: the legend goes above the data area, in one row beside
+      // the y label when it fits there, else in as many rows as it needs under the label,
+      // the data area giving up their height.
+      layout.legend_outside = true;
+      const float row_height = text + 4.0f * s;
+      const float room = layout.high_right.x - corner.x - width_of(font, chart.y_label) - 12.0f * s;
+      if (row_width <= room) {
+        float x = layout.high_right.x - row_width;
+        for (const Key& key : keys) {
+          layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
+          x += width_of(font, key.name) + 32.0f * s;
+        }
+      } else {
+        const float left = layout.low_left.x, right = layout.high_right.x;
+        float x = left, y = layout.high_right.y - 4.0f * s;
+        for (const Key& key : keys) {
+          const float w = width_of(font, key.name) + 32.0f * s;
+          if (x > left && x + w > right) {
+            x = left;
+            y += row_height;
+          }
+          layout.legend_at.push_back(ImVec2(x, y));
+          x += w;
+        }
+        layout.high_right.y = y + row_height + 4.0f * s;
+        if (layout.low_left.y - layout.high_right.y < 20.0f) {
+          layout.drawable = false;
+          return layout;
+        }
+        place();
+      }
+      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
+      for (std::size_t i = 0; i < keys.size(); ++i) {
+        const ImVec2 at = layout.legend_at[i];
+        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + width_of(font, keys[i].name) + 22.0f * s),
+                                   std::max(layout.legend_max.y, at.y + text));
+      }
+    }
+  }
+  layout.active = chart.active_theory;
+  if (layout.active == Chart::nearest) {
+    layout.active = -1;
+    if (!layout.series_points.empty() && !layout.series_points.front().empty()) {
+      layout.active = nearest_curve(layout.theory, layout.series_points.front().back());
+    }
+  }
+  return layout;
+}
+
+void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts) {
+  const float s = fonts.scale;
+  ImFont* font = fonts.small;
+  const float text = font->FontSize;
+  if (!chart.plain) {
+    draw->AddRectFilled(corner, ImVec2(corner.x + size.x, corner.y + size.y), theme.panel);
+    draw->AddText(fonts.body, fonts.body->FontSize, ImVec2(corner.x + 8.0f * s, corner.y + 4.0f * s), theme.text,
+                  chart.title.c_str());
+  }
+  const std::vector<Key> keys = keys_of(chart);
   const float line = text + 3.0f * s;
   if (chart.legend == Chart::Legend::only) {
     float y = corner.y + fonts.body->FontSize + text + 16.0f * s;
-    for (const auto& [name, colour] : entries) {
-      draw->AddRectFilled(ImVec2(corner.x + 12.0f * s, y + 2.0f * s), ImVec2(corner.x + 24.0f * s, y + text - 2.0f * s), colour);
-      draw->AddText(font, text, ImVec2(corner.x + 30.0f * s, y), theme.text, name.c_str());
+    for (const Key& key : keys) {
+      draw->AddRectFilled(ImVec2(corner.x + 12.0f * s, y + 2.0f * s), ImVec2(corner.x + 24.0f * s, y + text - 2.0f * s), key.colour);
+      draw->AddText(font, text, ImVec2(corner.x + 30.0f * s, y), theme.text, key.name.c_str());
       y += line;
     }
     for (const std::string& note : chart.notes) {
@@ -160,62 +376,73 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
     }
     return;
   }
-  if (chart.legend == Chart::Legend::none) entries.clear();
-  const std::size_t entry_rows = (entries.size() + 1) / 2;
-  const float legend_height = line * static_cast<float>(entry_rows + chart.notes.size()) + (entries.empty() ? 0.0f : 6.0f * s);
-  const float top = corner.y + fonts.body->FontSize + text + 16.0f * s;
-  const ImVec2 low_left(corner.x + label_width + 16.0f * s, corner.y + size.y - 2.0f * text - 14.0f * s - legend_height);
-  // Room on the right for the labels beside the last points (a step rate, say).
-  const bool labelled = std::any_of(chart.series.begin(), chart.series.end(), [](const ChartSeries& series) { return !series.labels.empty(); });
-  const ImVec2 high_right(corner.x + size.x - (labelled ? 60.0f : 10.0f) * s, top);
-  const float width = high_right.x - low_left.x, height = low_left.y - high_right.y;
-  if (width < 20.0f || height < 20.0f) return;
-  const auto to_screen = [&](double x, double y) {
-    return ImVec2(low_left.x + static_cast<float>(x_axis.fraction(x)) * width,
-                  low_left.y - static_cast<float>(y_axis.fraction(y)) * height);
-  };
+  const ChartLayout layout = layout_chart(chart, corner, size, fonts);
+  if (!layout.drawable) return;
+  const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
+  const float width = high_right.x - low_left.x;
+  const ChartAxes axes = axes_of(chart);
   const auto at_axis_value = [&](double x, double y) {  // values already in axis space
-    return ImVec2(low_left.x + static_cast<float>((x - x_axis.low) / (x_axis.high - x_axis.low)) * width,
-                  low_left.y - static_cast<float>((y - y_axis.low) / (y_axis.high - y_axis.low)) * height);
+    return ImVec2(low_left.x + static_cast<float>((x - layout.x_low) / (layout.x_high - layout.x_low)) * width,
+                  low_left.y - static_cast<float>((y - layout.y_low) / (layout.y_high - layout.y_low)) * (low_left.y - high_right.y));
   };
 
-  draw->PushClipRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), true);
+  draw->PushClipRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x + 1.0f, low_left.y + 1.0f), true);
   for (const ChartCell& cell : chart.cells) {
-    if (!x_axis.shows(cell.x) || !y_axis.shows(cell.y) || cell.category < 0 ||
+    if (!axes.x.shows(cell.x) || !axes.y.shows(cell.y) || cell.category < 0 ||
         cell.category >= static_cast<int>(chart.categories.size())) {
       continue;
     }
-    const double x = x_axis.map(cell.x), y = y_axis.map(cell.y);
+    const double x = axes.x.map(cell.x), y = axes.y.map(cell.y);
     const auto edge = [](const std::vector<std::pair<double, double>>& edges, double value) {
       for (const auto& e : edges) {
         if (value >= e.first && value <= e.second) return e;
       }
       return std::make_pair(value, value);
     };
-    const auto [x0, x1] = edge(x_edges, x);
-    const auto [y0, y1] = edge(y_edges, y);
+    const auto [x0, x1] = edge(axes.x_edges, x);
+    const auto [y0, y1] = edge(axes.y_edges, y);
     draw->AddRectFilled(at_axis_value(x0, y1), at_axis_value(x1, y0), chart.categories[static_cast<std::size_t>(cell.category)].second);
   }
-  for (const Tick& tick : x_ticks) {
-    const float x = at_axis_value(tick.value, y_axis.low).x;
-    draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), theme.grid, 1.0f);
+  // The zero lines of a plain chart are darker: forces are read against zero.
+  for (const double tick : layout.x_ticks) {
+    const float x = at_axis_value(tick, layout.y_low).x;
+    draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), chart.plain && tick == 0.0 ? theme.axis : theme.grid, 1.0f);
   }
-  for (const Tick& tick : y_ticks) {
-    const float y = at_axis_value(x_axis.low, tick.value).y;
-    draw->AddLine(ImVec2(low_left.x, y), ImVec2(high_right.x, y), theme.grid, 1.0f);
+  for (const double tick : layout.y_ticks) {
+    const float y = at_axis_value(layout.x_low, tick).y;
+    draw->AddLine(ImVec2(low_left.x, y), ImVec2(high_right.x, y), chart.plain && tick == 0.0 ? theme.axis : theme.grid, 1.0f);
   }
-  for (const ChartSeries& series : chart.series) {
-    std::vector<ImVec2> points;
-    for (std::size_t i = 0; i < series.points.size(); ++i) {
-      const auto [x, y] = series.points[i];
-      if (!x_axis.shows(x) || !y_axis.shows(y)) continue;
-      points.push_back(to_screen(x, y));
-      if (i < series.labels.size()) {
-        draw->AddText(font, 0.85f * text, ImVec2(points.back().x + 4.0f * s, points.back().y - 0.9f * text), series.colour,
-                      series.labels[i].c_str());
+  for (const auto& [x0, x1] : chart.bands) {
+    const float left = layout.to_screen(x0, 1.0).x, right = layout.to_screen(x1, 1.0).x;
+    draw->AddRectFilled(ImVec2(left, high_right.y), ImVec2(std::max(right, left + 1.0f), low_left.y), chart.band_colour);
+  }
+  // The theory under the measurements: the branch that applies now bold, the others dashed.
+  for (std::size_t c = 0; c < layout.theory.size(); ++c) {
+    for (const std::vector<ImVec2>& piece : layout.theory[c]) {
+      if (static_cast<int>(c) == layout.active) {
+        draw->AddPolyline(piece.data(), static_cast<int>(piece.size()), chart.theory_colour, ImDrawFlags_None, 3.5f * s);
+      } else {
+        draw_dashed(draw, piece, chart.theory_colour, 1.5f * s, 6.0f * s, 4.0f * s);
       }
     }
-    if (series.line && points.size() > 1) {
+  }
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const ChartSeries& series = chart.series[k];
+    const std::vector<ImVec2>& points = layout.series_points[k];
+    const std::vector<std::size_t>& indices = layout.series_indices[k];
+    const std::vector<ImU32>* colours = k < chart.segment_colours.size() && !chart.segment_colours[k].empty() ? &chart.segment_colours[k] : nullptr;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (indices[i] < series.labels.size()) {
+        draw->AddText(font, 0.85f * text, ImVec2(points[i].x + 4.0f * s, points[i].y - 0.9f * text), series.colour,
+                      series.labels[indices[i]].c_str());
+      }
+    }
+    if (series.line && colours != nullptr) {
+      for (std::size_t i = 1; i < points.size(); ++i) {
+        const ImU32 colour = indices[i] < colours->size() ? (*colours)[indices[i]] : series.colour;
+        draw->AddLine(points[i - 1], points[i], colour, 2.5f * s);
+      }
+    } else if (series.line && points.size() > 1) {
       draw->AddPolyline(points.data(), static_cast<int>(points.size()), series.colour, ImDrawFlags_None, 2.0f * s);
     }
     for (const ImVec2& p : points) {
@@ -226,38 +453,131 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
         draw->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), series.colour, 2.0f * s);
       }
     }
+    if (chart.mark_now && !points.empty()) draw->AddCircleFilled(points.back(), 4.0f * s, chart.now_colour, 12);
+  }
+  if (chart.mark_now && std::isfinite(chart.now_x)) {
+    const float x = layout.to_screen(chart.now_x, 1.0).x;
+    draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), chart.now_colour, 1.5f * s);
+  }
+  if (!chart.message.empty()) {
+    draw->AddText(font, text, ImVec2(low_left.x + 4.0f * s, high_right.y + 4.0f * s), theme.bad, chart.message.c_str(), nullptr,
+                  width - 8.0f * s);
   }
   draw->PopClipRect();
 
   // Axes, tick labels and titles.
   draw->AddRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), theme.axis, 0.0f, 0, 1.0f);
-  for (const Tick& tick : x_ticks) {
-    const float x = at_axis_value(tick.value, y_axis.low).x;
-    const float w = font->CalcTextSizeA(text, 1e6f, 0.0f, tick.label.c_str()).x;
-    draw->AddText(font, text, ImVec2(x - 0.5f * w, low_left.y + 3.0f * s), theme.text, tick.label.c_str());
+  const float gap = (chart.plain ? 5.0f : 4.0f) * s;
+  for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
+    const float x = at_axis_value(layout.x_ticks[i], layout.y_low).x;
+    const std::string& label = layout.x_tick_labels[i];
+    draw->AddText(font, text, ImVec2(x - 0.5f * width_of(font, label), low_left.y + 3.0f * s), theme.text, label.c_str());
   }
-  for (const Tick& tick : y_ticks) {
-    const float y = at_axis_value(x_axis.low, tick.value).y;
-    const float w = font->CalcTextSizeA(text, 1e6f, 0.0f, tick.label.c_str()).x;
-    draw->AddText(font, text, ImVec2(low_left.x - w - 4.0f * s, y - 0.5f * text), theme.text, tick.label.c_str());
+  for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
+    const float y = at_axis_value(layout.x_low, layout.y_ticks[i]).y;
+    const std::string& label = layout.y_tick_labels[i];
+    draw->AddText(font, text, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text, label.c_str());
   }
-  const float x_title = font->CalcTextSizeA(text, 1e6f, 0.0f, chart.x_label.c_str()).x;
-  draw->AddText(font, text, ImVec2(low_left.x + 0.5f * (width - x_title), low_left.y + text + 6.0f * s), theme.text,
-                chart.x_label.c_str());
-  draw->AddText(font, text, ImVec2(corner.x + 8.0f * s, top - text - 4.0f * s), theme.faint_text, chart.y_label.c_str());
+  draw->AddText(font, text,
+                ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)), low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s),
+                chart.plain ? theme.faint_text : theme.text, chart.x_label.c_str());
+  const ImVec2 y_label_at = chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
+                                        : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
+  draw->AddText(font, text, y_label_at, theme.faint_text, chart.y_label.c_str());
 
-  // The legend: categories, then series, in two columns; then the notes.
-  const ImVec2 legend(corner.x + 12.0f * s, low_left.y + 2.0f * text + 14.0f * s);
-  const float column = 0.5f * (size.x - 24.0f * s);
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const ImVec2 at(legend.x + column * static_cast<float>(i % 2), legend.y + line * static_cast<float>(i / 2));
-    draw->AddRectFilled(ImVec2(at.x, at.y + 2.0f * s), ImVec2(at.x + 12.0f * s, at.y + text - 2.0f * s), entries[i].second);
-    draw->AddText(font, text, ImVec2(at.x + 18.0f * s, at.y), theme.text, entries[i].first.c_str());
+  if (chart.legend == Chart::Legend::under || (chart.legend == Chart::Legend::none && !chart.plain)) {
+    // Categories, then series, in two columns; then the notes.
+    const float column = 0.5f * (size.x - 24.0f * s);
+    const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
+    for (std::size_t i = 0; i < shown; ++i) {
+      const ImVec2 at(layout.legend_min.x + column * static_cast<float>(i % 2), layout.legend_min.y + line * static_cast<float>(i / 2));
+      draw->AddRectFilled(ImVec2(at.x, at.y + 2.0f * s), ImVec2(at.x + 12.0f * s, at.y + text - 2.0f * s), keys[i].colour);
+      draw->AddText(font, text, ImVec2(at.x + 18.0f * s, at.y), theme.text, keys[i].name.c_str());
+    }
+    float y = layout.legend_min.y + line * static_cast<float>((shown + 1) / 2);
+    for (const std::string& note : chart.notes) {
+      draw->AddText(font, text, ImVec2(layout.legend_min.x, y), theme.faint_text, note.c_str());
+      y += line;
+    }
+  } else if (chart.legend == Chart::Legend::inside) {
+    for (std::size_t i = 0; i < keys.size() && i < layout.legend_at.size(); ++i) {
+      const Key& key = keys[i];
+      const ImVec2 at = layout.legend_at[i];
+      const float w = width_of(font, key.name);
+      draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + 22.0f * s + w + 2, at.y + text + 1),
+                          (theme.panel & 0x00FFFFFFu) | (200u << IM_COL32_A_SHIFT));
+      const float middle = at.y + 0.5f * text;
+      if (key.look == Key::Look::band) {
+        draw->AddRectFilled(ImVec2(at.x, at.y + 2), ImVec2(at.x + 16.0f * s, at.y + text - 2), key.colour);
+      } else if (key.look == Key::Look::theory) {
+        draw_dashed(draw, {ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle)}, key.colour, 2.0f * s, 5.0f * s, 3.0f * s);
+      } else {
+        draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle), key.colour, 3.0f * s);
+      }
+      draw->AddText(font, text, ImVec2(at.x + 20.0f * s, at.y), theme.text, key.name.c_str());
+    }
   }
-  float y = legend.y + line * static_cast<float>(entry_rows);
-  for (const std::string& note : chart.notes) {
-    draw->AddText(font, text, ImVec2(legend.x, y), theme.faint_text, note.c_str());
-    y += line;
+}
+
+LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
+                          const std::vector<ImVec2>& points, float radius) {
+  const ImVec2 corners[] = {{area_min.x + inset, area_min.y + inset},
+                            {area_max.x - inset - legend_size.x, area_min.y + inset},
+                            {area_min.x + inset, area_max.y - inset - legend_size.y},
+                            {area_max.x - inset - legend_size.x, area_max.y - inset - legend_size.y}};
+  LegendPlace best;
+  std::size_t fewest = static_cast<std::size_t>(-1);
+  for (const ImVec2& corner : corners) {
+    std::size_t met = 0;
+    for (const ImVec2& p : points) {
+      met += p.x + radius >= corner.x && p.x - radius <= corner.x + legend_size.x && p.y + radius >= corner.y &&
+             p.y - radius <= corner.y + legend_size.y;
+    }
+    if (met < fewest) {
+      fewest = met;
+      best = {corner, ImVec2(corner.x + legend_size.x, corner.y + legend_size.y), met == 0};
+    }
+  }
+  return best;
+}
+
+int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point) {
+  int nearest = -1;
+  double least = INFINITY;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    for (const std::vector<ImVec2>& piece : curves[c]) {
+      for (std::size_t i = 0; i < piece.size(); ++i) {
+        // Distance to the segment from this point to the next (or to the point, when alone).
+        const ImVec2 a = piece[i], b = i + 1 < piece.size() ? piece[i + 1] : piece[i];
+        const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+        const double along = length2 > 0.0 ? std::clamp(((point.x - a.x) * dx + (point.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+        const double ex = a.x + along * dx - point.x, ey = a.y + along * dy - point.y;
+        const double distance = ex * ex + ey * ey;
+        if (distance < least) least = distance, nearest = static_cast<int>(c);
+      }
+    }
+  }
+  return nearest;
+}
+
+void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap) {
+  float phase = 0.0f;  // how far into the dash-and-gap pattern the next segment starts
+  const float period = dash + gap;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const ImVec2 a = points[i - 1], b = points[i];
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    float done = 0.0f;
+    while (done < length) {
+      const float in_period = std::fmod(phase + done, period);
+      const float step = std::min(length - done, in_period < dash ? dash - in_period : period - in_period);
+      if (in_period < dash && length > 0.0f) {
+        const float t0 = done / length, t1 = (done + step) / length;
+        draw->AddLine(ImVec2(a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0), ImVec2(a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1),
+                      colour, thickness);
+      }
+      done += std::max(step, 1e-3f);
+    }
+    phase = std::fmod(phase + length, period);
   }
 }
 

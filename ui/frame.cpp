@@ -107,7 +107,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const std::string id = "plot" + std::to_string(i);
       if (begin_panel(id.c_str(), plots[i].title.c_str(), corner, size)) {
         const ImVec2 area = ImGui::GetContentRegionAvail();
-        draw_plot(ImGui::GetWindowDrawList(), lesson, plots[i], time_span, ImGui::GetCursorScreenPos(), area, colours,
+        draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
                   fonts);
       }
       end_panel();

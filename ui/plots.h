@@ -1,7 +1,6 @@
-// The lesson's plots, drawn from the probes' record with ImGui's draw lists: axes with tick
-// labels and units, a legend, the current time marked on time series, and the slip regime
-// shaded (time series) or coloured (X–Y against one quantity) from the scene's record of
-// which frames had a slipping contact.
+// The lesson's plots: the probes' record, the scene's record of which frames had a slipping
+// contact (shaded on time plots, colouring an X–Y plot of one quantity) and the script's
+// theory curves, handed to the chart engine (ui/chart.h) that also draws the benchmark's charts.
 #pragma once
 
 #include <imgui.h>
@@ -10,19 +9,25 @@
 #include <vector>
 
 #include "lessons/runtime/lesson.h"
+#include "ui/chart.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
 
-// Tick positions for an axis from low to high: 1, 2 or 5 times a power of ten apart, about
-// `count` of them.
-std::vector<double> axis_ticks(double low, double high, int count);
-// A tick's label with as many decimals as the step needs, and a true minus sign.
-std::string tick_text(double value, double step);
+// Plot number `plot` of the lesson as a chart for the chart engine: the probes' record as
+// series (coloured by regime on an X–Y plot of one probe), the slip shaded on a time plot, the
+// present marked, and the theory curves sampled across the x range (kept between frames while
+// the range and parameters stay; a script error in one becomes the chart's message).
+// `time_span` is the time axis' length (the lesson's duration, or longer once the lesson has
+// run past it).
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme);
 
-// Draws `plot` into the rectangle. `time_span` is the time axis' length (the lesson's
-// duration, or longer once the lesson has run past it).
-void draw_plot(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::Plot& plot, double time_span,
-               ImVec2 corner, ImVec2 size, const Theme& theme, const Fonts& fonts);
+// Where plot number `plot` of the lesson goes in the rectangle, for tests and the drawing.
+ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
+                        const Fonts& fonts);
+
+// Draws plot number `plot` of the lesson into the rectangle.
+void draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
+               const Theme& theme, const Fonts& fonts);
 
 }  // namespace frictionlab::ui

@@ -27,6 +27,7 @@ struct Theme {
   ImU32 force[force_kind_count];
   ImU32 sticking, slipping, slip_band, now_marker;
   ImU32 series[4];
+  ImU32 theory;  // a law drawn beside the measurements (plots' theory curves)
   ImU32 good, bad;
   ImVec4 imgui_text, imgui_window, imgui_title, imgui_border, imgui_header;
 };

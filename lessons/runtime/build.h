@@ -47,6 +47,15 @@ struct RememberedValues {
   int next = 0;
 };
 
+// A plot's theory curves as the registry keeps them, with the samples last drawn.
+struct PlotFunctions {
+  std::vector<int> curves;  // function(x) per curve
+  std::vector<int> active;  // active = function() per curve, LUA_NOREF when not given
+  TheorySamples samples;
+  int sample_count = 0;
+  std::vector<double> sampled_with;  // the parameters' values when sampled
+};
+
 struct LessonBuild {
   LessonBuild(std::string chunk_name, std::map<std::string, std::string> overrides, bool strict, StepSettings settings);
 
@@ -71,6 +80,7 @@ struct LessonBuild {
   std::string override_error;  // the first bad --set value, reported after the build
   std::vector<std::string> warnings;
   std::vector<Plot> plots;
+  std::vector<PlotFunctions> plot_functions;  // beside plots, one for one
   std::vector<ProbeInfo> probes;
   std::vector<Expectation> expectations;
   std::vector<int> every_step;
@@ -109,6 +119,11 @@ struct LessonBuild {
 };
 
 LessonBuild& build_of(lua_State* state);
+
+// Asks every plot's theory curves for x (or t) from 0 to 1, and their active functions once,
+// so that a curve that cannot work is refused with the script rather than first seen drawn.
+// Throws ScriptError placed at the curve.
+void try_theory_curves(LessonBuild& build);
 
 // "path:line" of the script line that called the running API function.
 std::string caller(lua_State* state);

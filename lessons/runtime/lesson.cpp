@@ -231,6 +231,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
       }
     }
   }
+  try_theory_curves(*next);
   return next;
 }
 

@@ -37,12 +37,36 @@ struct Parameter {
   std::string shown() const;         // "0.6", "25 °", "plastic"
 };
 
-// A plot the script asked for: time series when x is "time", else y against x.
+// A plot's kind: probes against time, or probes against another probe.
+enum class PlotKind { time, xy };
+
+// A law drawn beside the measured points: a function of the plot's x (of t on a time plot)
+// that gives y, two numbers (a vertical segment, such as static friction's range at v = 0) or
+// nil where the branch does not apply.
+struct TheoryCurve {
+  std::string label;
+  std::string declared_at;  // "path:line" of the function
+  bool says_when_active = false;  // it has an active = function() ... end
+};
+
 struct Plot {
   std::string title;
   std::string declared_at;
-  std::string x;
+  PlotKind kind = PlotKind::time;
+  std::string x;  // "time" on a time plot
   std::vector<std::string> y;
+  std::vector<TheoryCurve> theory;
+};
+
+// A plot's theory curves sampled across its x range, one list of pieces a curve. A piece is a
+// polyline where the function gave numbers; nil ends it. Jumps are kept as (near-)vertical
+// steps, found by bisection, not slanted lines between samples.
+struct TheoryPoint {
+  double x, y;
+};
+struct TheorySamples {
+  double x_low = 0.0, x_high = 0.0;
+  std::vector<std::vector<std::vector<TheoryPoint>>> curves;  // [curve][piece][point]
 };
 
 // One row of the theory-against-simulation table.
@@ -126,6 +150,13 @@ class Lesson {
   void step_to(double t);
   // The expectations as they stand now.
   std::vector<ExpectationResult> expectations();
+  // The theory curves of plot `plot` sampled at `count` points across [x_low, x_high] (more
+  // where a branch ends or jumps). Kept and given again until the range, the count or a
+  // parameter changes. A script error throws ScriptError placed at the curve's function.
+  const TheorySamples& theory_samples(std::size_t plot, double x_low, double x_high, int count);
+  // For each curve of the plot: whether its active = function() says it applies now; -1 when
+  // the curve does not say (the plot then takes the branch nearest the latest point).
+  std::vector<int> theory_active(std::size_t plot);
 
   // Sets a parameter from text ("0.45", "plastic"). Throws InvalidInput (naming the
   // parameter and its range, or listing the parameters) and changes nothing when the value is

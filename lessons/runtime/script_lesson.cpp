@@ -330,14 +330,105 @@ int probe(lua_State* state) {
   });
 }
 
+// theory = { { "label", function(x) ... end, active = function() ... end }, ... }: the
+// curves kept in the registry beside the plot, in the build's plot_functions.
+void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
+  const std::string example = "as in theory = { { \"sliding: f = \u2212\u03bck\u00b7N\", function(F) return -param.mu_k * N end } }";
+  fields.push("theory");
+  if (lua_isnil(state, -1)) {
+    lua_pop(state, 1);
+    return;
+  }
+  if (!lua_istable(state, -1) || lua_rawlen(state, -1) == 0) {
+    throw InvalidInput(fields.what() + ": theory must be a list of curves, " + example + "; got " + describe(state, -1));
+  }
+  const int list = lua_gettop(state);
+  for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, list)); ++i) {
+    const std::string which = fields.what() + ": theory curve " + std::to_string(i);
+    lua_rawgeti(state, list, i);
+    const int curve = lua_gettop(state);
+    if (!lua_istable(state, curve)) {
+      throw InvalidInput(which + " must be { \"label\", function(x) return y end }; got " + describe(state, curve));
+    }
+    lua_rawgeti(state, curve, 1);
+    if (lua_type(state, -1) != LUA_TSTRING || lua_rawlen(state, -1) == 0) {
+      throw InvalidInput(which + " needs its label first (the legend names it), as in { \"sticking: f = \u2212F\", "
+                         "function(F) ... end }; got " + describe(state, -1));
+    }
+    TheoryCurve theory;
+    theory.label = lua_tostring(state, -1);
+    lua_pop(state, 1);
+    const std::string named = fields.what() + ": theory curve '" + theory.label + "'";
+    // Only the label, the function and active: a misspelt field is said, not ignored.
+    lua_pushnil(state);
+    while (lua_next(state, curve) != 0) {
+      lua_pop(state, 1);
+      const bool position = lua_isinteger(state, -1) && (lua_tointeger(state, -1) == 1 || lua_tointeger(state, -1) == 2);
+      const bool active = lua_type(state, -1) == LUA_TSTRING && std::string(lua_tostring(state, -1)) == "active";
+      if (!position && !active) {
+        const std::string key = lua_type(state, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(state, -1)) + "'" : describe(state, -1);
+        throw InvalidInput(named + ": unknown field " + key + "; a curve is a label, a function and perhaps active = function() ... end");
+      }
+    }
+    lua_rawgeti(state, curve, 2);
+    if (!lua_isfunction(state, -1)) {
+      throw InvalidInput(named + " needs a function of " + (declared.kind == PlotKind::time ? "t" : "x (" + declared.x + ")") +
+                         " second, returning y or nil where it does not apply; got " + describe(state, -1));
+    }
+    require_script_function(state, -1, named);
+    lua_Debug debug;
+    lua_pushvalue(state, -1);
+    lua_getinfo(state, ">S", &debug);
+    theory.declared_at = std::string(debug.source[0] == '@' ? debug.source + 1 : debug.source) + ":" + std::to_string(debug.linedefined);
+    functions.curves.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
+    lua_getfield(state, curve, "active");
+    if (lua_isnil(state, -1)) {
+      lua_pop(state, 1);
+      functions.active.push_back(LUA_NOREF);
+    } else {
+      if (!lua_isfunction(state, -1)) {
+        throw InvalidInput(named + ": active must be a function saying whether this branch applies now, as in "
+                           "active = function() return touch.state == \"slipping\" end; got " + describe(state, -1));
+      }
+      require_script_function(state, -1, named + ": active");
+      functions.active.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
+      theory.says_when_active = true;
+    }
+    declared.theory.push_back(std::move(theory));
+    lua_settop(state, list);
+  }
+  lua_pop(state, 1);
+}
+
 int plot(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "plot");
-    Fields fields(state, 1, "plot", {"x", "y"});
+    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory"});
     Plot declared;
     declared.title = fields.name();
     declared.declared_at = caller(state);
-    declared.x = fields.text("x", "time");
+    // Without a kind the old form still reads as before: no x, a time series; an x, y against it.
+    const std::string kind = fields.text("kind", fields.has("x") ? "xy" : "time");
+    if (kind != "time" && kind != "xy") {
+      throw InvalidInput(fields.what() + ": kind must be \"time\" (probes against time) or \"xy\" (probes against the "
+                         "probe x); got \"" + kind + "\"");
+    }
+    declared.kind = kind == "time" ? PlotKind::time : PlotKind::xy;
+    if (declared.kind == PlotKind::xy) {
+      if (!fields.has("x")) {
+        throw InvalidInput(fields.what() + ": kind = \"xy\" needs x, the probe along the bottom, as in x = \"push\"");
+      }
+      declared.x = fields.text("x", "");
+      if (declared.x == "time") {
+        throw InvalidInput(fields.what() + ": x = \"time\" is a time plot; say kind = \"time\" and leave x out");
+      }
+    } else {
+      if (fields.has("x") && fields.text("x", "") != "time") {
+        throw InvalidInput(fields.what() + ": a time plot's x is the time; leave x out, or say kind = \"xy\" to plot against " +
+                           fields.text("x", ""));
+      }
+      declared.x = "time";
+    }
     fields.push("y");
     if (lua_type(state, -1) == LUA_TSTRING) {
       declared.y.emplace_back(lua_tostring(state, -1));
@@ -352,7 +443,11 @@ int plot(lua_State* state) {
       throw InvalidInput(fields.what() + ": y must be a probe's name or a list of them, as in y = { \"spring_force\" }");
     }
     lua_pop(state, 1);
-    build_of(state).plots.push_back(std::move(declared));
+    LessonBuild& build = build_of(state);
+    PlotFunctions functions;
+    read_theory(state, fields, declared, functions);
+    build.plots.push_back(std::move(declared));
+    build.plot_functions.push_back(std::move(functions));
     return 0;
   });
 }

@@ -1,0 +1,213 @@
+// Lesson plots laid out and drawn by the chart engine: theory curves sampled from the
+// script's functions (points on f(x), nil splitting a curve, jumps kept as jumps), the branch
+// that applies drawn bold, and the legend kept off the data.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lesson_scripts.h"
+#include "lessons/runtime/catalog.h"
+#include "rendering.h"
+#include "ui/chart.h"
+#include "ui/headless.h"
+#include "ui/imgui_host.h"
+#include "ui/plots.h"
+
+namespace frictionlab::ui {
+namespace {
+
+using lessons::Lesson;
+using lessons::ScriptFile;
+using lessons::with_heading;
+
+// Fonts for measuring text, as a frame has them at 1280 × 720.
+struct FontsForLayout {
+  HeadlessContext gl;
+  ImGuiHost host{nullptr};
+  const Fonts& fonts = host.prepare(1.0f, ThemeName::light);
+};
+
+FontsForLayout& measuring() {
+  static FontsForLayout fonts;
+  fonts.host.make_current();
+  return fonts;
+}
+
+const ImVec2 corner(10.0f, 20.0f), area(600.0f, 300.0f);
+
+// A ramp up to t = 1, nothing from 1 to 2, a constant after: two pieces, each on f(t).
+TEST(TheoryCurves, PointsLieOnTheFunctionAndANilSplitsTheCurve) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "height", unit = "m", function() return block.y end }
+plot { "ramp", kind = "time", y = { "height" },
+       theory = { { "ramp then flat", function(t) if t < 1 then return 2 * t elseif t > 2 then return 3 end end } } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const auto f = [](double t) { return t < 1 ? 2 * t : 3.0; };
+
+  // In the lesson's own numbers: every point on f, the first piece ending at t = 1, the
+  // second starting at t = 2 (bisected to a billionth of the range).
+  const lessons::TheorySamples& samples = lesson.theory_samples(0, 0.0, 4.0, 64);
+  ASSERT_EQ(samples.curves.size(), 1u);
+  ASSERT_EQ(samples.curves[0].size(), 2u) << "the nil between t = 1 and 2 must split the curve";
+  for (const auto& piece : samples.curves[0]) {
+    for (const lessons::TheoryPoint& p : piece) EXPECT_DOUBLE_EQ(p.y, f(p.x)) << "at t = " << p.x;
+  }
+  EXPECT_NEAR(samples.curves[0][0].back().x, 1.0, 1e-8);
+  EXPECT_NEAR(samples.curves[0][1].front().x, 2.0, 1e-8);
+  EXPECT_EQ(&lesson.theory_samples(0, 0.0, 4.0, 64), &samples) << "the same range must not sample again";
+
+  // On the screen: each polyline point within a pixel of f at its x.
+  const ChartLayout layout = layout_plot(lesson, 0, 10.0, corner, area, measuring().fonts);
+  ASSERT_EQ(layout.theory.size(), 1u);
+  ASSERT_EQ(layout.theory[0].size(), 2u);
+  std::size_t checked = 0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (const ImVec2& p : layout.theory[0][k]) {
+      // t read back from the pixel; each piece its own branch (t read back at the ramp's end
+      // may fall a hair past 1).
+      const double t = layout.x_low + (p.x - layout.low_left.x) / (layout.high_right.x - layout.low_left.x) * (layout.x_high - layout.x_low);
+      EXPECT_NEAR(p.y, layout.to_screen(t, k == 0 ? 2 * t : 3.0).y, 1.0) << "at t = " << t;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100u);
+}
+
+// A law of velocity with a jump at v = 0 and the static range there: the jump is vertical
+// (no slanted line between samples either side), and the vertical segment is drawn.
+TEST(TheoryCurves, AJumpStaysAJumpAndTwoNumbersDrawAVerticalSegment) {
+  ScriptFile script(with_heading(R"lua(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "v", unit = "m/s", function() return block.vx end }
+probe { "f", unit = "N", function() return 0 end }
+plot { "law", kind = "xy", x = "v", y = { "f" },
+       theory = { { "F(v)", function(v)
+         if v > 0 then return -3.4 - 0.5 * v elseif v < 0 then return 3.4 - 0.5 * v else return -4.4, 4.4 end
+       end } } }
+)lua"));
+  Lesson lesson(script.path());
+  const lessons::TheorySamples& samples = lesson.theory_samples(0, -1.0, 1.0, 33);
+  ASSERT_EQ(samples.curves[0].size(), 1u);
+  const auto& points = samples.curves[0][0];
+  bool reached_top = false, reached_bottom = false;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const double rise = std::abs(points[i].y - points[i - 1].y), run = points[i].x - points[i - 1].x;
+    EXPECT_GE(run, 0.0);
+    if (rise > 0.1) {
+      EXPECT_LT(run, 1e-8) << "a slanted jump between v = " << points[i - 1].x << " and " << points[i].x;
+    }
+    reached_top = reached_top || (points[i].x == 0.0 && points[i].y == 4.4);
+    reached_bottom = reached_bottom || (points[i].x == 0.0 && points[i].y == -4.4);
+  }
+  EXPECT_TRUE(reached_top && reached_bottom) << "the static range at v = 0 must be drawn";
+}
+
+// spring_pull's friction against the pull: the sticking branch bold while the block sticks,
+// the sliding one while it slides; each bold curve within a pixel of the law.
+TEST(TheoryCurves, SpringPullMarksTheBranchThatApplies) {
+  LessonAt at("spring_pull", {}, 0.5);  // the pull is 2.5 N, below μs·N = 4.41 N: stuck
+  const std::size_t plot = 1;
+  ASSERT_EQ(at.lesson->plots()[plot].title, "Friction against the pull");
+  ASSERT_EQ(at.lesson->plots()[plot].theory.size(), 2u);
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 0.0);
+  ChartLayout layout = layout_plot(*at.lesson, plot, 10.0, corner, area, measuring().fonts);
+  EXPECT_EQ(layout.active, 0) << "sticking";
+  while (at.scene().probe("slipping").history.back() == 0.0 && at.scene().time() < 3.0) at.lesson->step();
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 1.0) << "the block never broke away";
+  for (int i = 0; i < 10; ++i) at.lesson->step();  // well into the slide
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 1.0);
+  layout = layout_plot(*at.lesson, plot, 10.0, corner, area, measuring().fonts);
+  EXPECT_EQ(layout.active, 1) << "sliding";
+  // The sliding branch is −μk·N = −0.35 · 9.81 N at every pull.
+  for (const ImVec2& p : layout.theory[1].front()) EXPECT_NEAR(p.y, layout.to_screen(0.0, -0.35 * 9.81).y, 1.0);
+  const Chart chart = plot_chart(*at.lesson, plot, 10.0, theme(ThemeName::light));
+  EXPECT_TRUE(chart.message.empty()) << chart.message;
+}
+
+// Without active functions the branch nearest the latest point is the one that applies.
+TEST(TheoryCurves, NearestCurveIsTheOnePassingClosest) {
+  const std::vector<CurvePieces> curves = {{{ImVec2(0, 0), ImVec2(100, 100)}}, {{ImVec2(0, 50), ImVec2(100, 50)}}};
+  EXPECT_EQ(nearest_curve(curves, ImVec2(80, 78)), 0);
+  EXPECT_EQ(nearest_curve(curves, ImVec2(10, 48)), 1);
+  EXPECT_EQ(nearest_curve({}, ImVec2(10, 48)), -1);
+}
+
+// A curve that fails only further along than the load tries: the plot says where, the
+// lesson runs on, and the plot keeps its measured points.
+TEST(TheoryCurves, AScriptErrorInACurveIsWrittenInThePlotAndTheLessonRunsOn) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "height", unit = "m", function() return block.y end }
+plot { "late", kind = "time", y = { "height" }, theory = { { "law", function(t)
+  if t > 2 then return rate * t end return 0 end } } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const Chart chart = plot_chart(lesson, 0, 10.0, theme(ThemeName::light));
+  EXPECT_EQ(chart.message.rfind(script.path() + ":7: ", 0), 0u) << chart.message;
+  EXPECT_NE(chart.message.find("global 'rate'"), std::string::npos) << chart.message;
+  EXPECT_TRUE(chart.theory.empty());
+  EXPECT_EQ(chart.series.size(), 1u);
+  EXPECT_FALSE(lesson.failed());
+  lesson.step();
+  EXPECT_GT(lesson.scene().time(), 0.5);
+}
+
+bool covers(const ChartLayout& layout, ImVec2 p) {
+  return p.x >= layout.legend_min.x && p.x <= layout.legend_max.x && p.y >= layout.legend_min.y && p.y <= layout.legend_max.y;
+}
+
+// Every built-in lesson's plots, part way through: no measured point under the legend.
+TEST(PlotLegends, SitOnNoDataPointInAnyBuiltInLesson) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 2.0);
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const ChartLayout layout = layout_plot(*at.lesson, plot, at.lesson->duration(), corner, area, measuring().fonts);
+      ASSERT_FALSE(layout.points.empty());
+      for (const ImVec2& p : layout.points) {
+        EXPECT_FALSE(covers(layout, p)) << name << ", plot " << plot << ": the legend covers the point at " << p.x << ", " << p.y;
+      }
+    }
+  }
+}
+
+// A curve that fills the plot leaves no corner free: the legend goes above the data area.
+TEST(PlotLegends, GoAboveTheDataWhenNoCornerIsFree) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "wave", unit = "m", function() return math.sin(80 * time()) end }
+probe { "other", unit = "m", function() return math.cos(80 * time()) end }
+plot { "waves", kind = "time", y = { "wave", "other" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(lesson.duration());
+  const ChartLayout layout = layout_plot(lesson, 0, lesson.duration(), corner, area, measuring().fonts);
+  EXPECT_TRUE(layout.legend_outside);
+  EXPECT_LE(layout.legend_max.y, layout.high_right.y);
+  for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
+}
+
+// The legend corner: the one free of points, the top left first.
+TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
+  const ImVec2 low(0, 0), high(200, 100), size(50, 20);
+  const LegendPlace empty = legend_corner(low, high, size, 5, {}, 2);
+  EXPECT_TRUE(empty.clear);
+  EXPECT_EQ(empty.min.x, 5.0f);
+  EXPECT_EQ(empty.min.y, 5.0f);
+  // Points along the top: a bottom corner.
+  const LegendPlace below = legend_corner(low, high, size, 5, {ImVec2(20, 10), ImVec2(180, 10)}, 2);
+  EXPECT_TRUE(below.clear);
+  EXPECT_EQ(below.min.y, 75.0f);
+  // A point in every corner: not clear.
+  EXPECT_FALSE(legend_corner(low, high, size, 5, {ImVec2(10, 10), ImVec2(190, 10), ImVec2(10, 90), ImVec2(190, 90)}, 2).clear);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
