@@ -1,5 +1,6 @@
 #include "physics/closed_forms.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -47,6 +48,24 @@ double exp_minus_one_plus(double u) {
     term *= -u / n;
   }
   return sum;
+}
+
+// e^(−u) less the first n terms of its series, Σ_{k>=n} (−u)^k/k!: summed as a series for
+// small u, where subtracting the terms from e^(−u) would cancel every digit.
+double exp_series_tail(double u, int n) {
+  double term = 1.0;  // (−u)^k / k!
+  if (std::abs(u) > 1.0) {
+    double tail = std::exp(-u);
+    for (int k = 0; k < n; ++k, term *= -u / k) tail -= term;
+    return tail;
+  }
+  for (int k = 1; k <= n; ++k) term *= -u / k;
+  double tail = 0.0;
+  for (int k = n; k < n + 30 && term != 0.0; ++k) {
+    tail += term;
+    term *= -u / (k + 1);
+  }
+  return tail;
 }
 
 }  // namespace
@@ -265,6 +284,57 @@ StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const Friction
   const double top_a = between.mu_k * g;
   const double bottom_a = (force - between.mu_k * top_mass * g - ground.mu_k * total_mass * g) / bottom_mass;
   return {StackRegime::top_slips, direction * top_a, direction * bottom_a, max_push_together};
+}
+
+GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t) {
+  const char* where = "growing_push";
+  require_positive(where, "mass", mass);
+  require_positive(where, "rate", rate);
+  require_pair(where, pair);
+  require_positive(where, "g", g);
+  require_non_negative(where, "t", t);
+  GrowingPush push{};
+  push.breakaway_push = std::max(pair.mu_s, pair.mu_k) * mass * g;
+  push.breakaway_time = push.breakaway_push / rate;
+  push.push = rate * t;
+  if (t <= push.breakaway_time) {
+    push.friction = push.push;
+    return push;
+  }
+  // Sliding from v = 0 at t_b: m·v' = R·τ + D − c·v − b·v², with τ = t − t_b and D the push's
+  // excess over kinetic friction at breakaway, (max(mu_s, mu_k) − mu_k)·m·g >= 0.
+  const double tau = t - push.breakaway_time, kinetic = pair.mu_k * mass * g;
+  const double excess = push.breakaway_push - kinetic;
+  const double ramp = rate / mass, offset = excess / mass, gamma = pair.c / mass, beta = pair.b / mass;
+  if (beta == 0.0 && gamma == 0.0) {
+    push.speed = ramp * tau * tau / 2.0 + offset * tau;
+    push.distance = ramp * tau * tau * tau / 6.0 + offset * tau * tau / 2.0;
+  } else if (beta == 0.0) {
+    // v = (D/c)·(1 − e^(−u)) + (R/c²)·(e^(−u) − 1 + u) with u = γτ, and its integral; the tails
+    // of e^(−u)'s series keep every digit when c is small.
+    const double u = gamma * tau;
+    push.speed = -offset * exp_series_tail(u, 1) / gamma + ramp * exp_series_tail(u, 2) / (gamma * gamma);
+    push.distance = offset * exp_series_tail(u, 2) / (gamma * gamma) - ramp * exp_series_tail(u, 3) / (gamma * gamma * gamma);
+  } else {
+    constexpr double step = 1e-4;
+    const auto acceleration = [&](double s, double v) { return ramp * s + offset - gamma * v - beta * v * std::abs(v); };
+    double s = 0.0, x = 0.0, v = 0.0;
+    while (s < tau) {
+      const double h = std::min(step, tau - s);
+      const double k1v = acceleration(s, v), k1x = v;
+      const double k2v = acceleration(s + h / 2, v + h / 2 * k1v), k2x = v + h / 2 * k1v;
+      const double k3v = acceleration(s + h / 2, v + h / 2 * k2v), k3x = v + h / 2 * k2v;
+      const double k4v = acceleration(s + h, v + h * k3v), k4x = v + h * k3v;
+      x += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
+      v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+      s += h;
+    }
+    push.speed = v;
+    push.distance = x;
+  }
+  push.friction = kinetic + pair.c * push.speed + pair.b * push.speed * push.speed;
+  push.acceleration = (push.push - push.friction) / mass;
+  return push;
 }
 
 }  // namespace frictionlab::theory

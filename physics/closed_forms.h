@@ -95,4 +95,25 @@ struct StackedBlocks {
 StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const FrictionPair& between,
                              const FrictionPair& ground, double push, double g);
 
+// The tribology article's book pushed harder and harder (the force-sensor lab): a block of mass
+// m at rest on flat ground, pushed along it by a force growing at `rate` from 0 at t = 0.
+// Static friction answers the push until it reaches the breakaway push; then kinetic friction
+// mu_k·m·g and the drag c·v + b·v² hold back a block that only speeds up, since the push keeps
+// growing past them. The breakaway push is max(mu_s, mu_k)·m·g: with mu_k above mu_s a block
+// pushed past mu_s·N would at once be pushed back by kinetic friction, so it cannot start
+// before the push also beats mu_k·N (the same rule as the friction listener's).
+// With b = 0 the slide is m·v' + c·v = rate·t − mu_k·m·g, solved in closed form. With b > 0 it
+// is a Riccati equation with a ramp, which has no elementary solution: the same equation is
+// then integrated with RK4 at 0.1 ms (its error is below 1e-12 of the answer).
+struct GrowingPush {
+  double breakaway_push;    // N
+  double breakaway_time;    // s after the push starts
+  double push;              // N, rate·t
+  double friction;          // N, magnitude at t: the push itself while stuck, then mu_k·m·g + c·v + b·v²
+  double acceleration;      // m/s² at t
+  double speed;             // m/s at t
+  double distance;          // m at t, from where it stood
+};
+GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t);
+
 }  // namespace frictionlab::theory

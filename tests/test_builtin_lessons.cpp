@@ -102,7 +102,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"tipping_box", {}, "tips"}, Case{"tipping_box", {{"push_height", "0.45"}}, "slides"},
                       Case{"tipping_box", {{"push_height", "0.55"}}, "tips"},
                       Case{"tipping_box", {{"width", "1"}, {"push_height", "0.9"}}, "slides"},
-                      Case{"tipping_box", {{"mu_s", "0.8"}, {"mu_k", "0.6"}, {"push_height", "0.35"}}, "tips"}));
+                      Case{"tipping_box", {{"mu_s", "0.8"}, {"mu_k", "0.6"}, {"push_height", "0.35"}}, "tips"},
+                      // push: light and heavy, slow and fast; mu_k above mu_s (it starts at mu_k·N);
+                      // no friction (it moves at once); the sliders' top (a 3:1 block cannot tip);
+                      // viscous and quadratic drag on the slide.
+                      Case{"push", {{"mass", "0.1"}}, ""}, Case{"push", {{"mass", "10"}, {"push_rate", "50"}}, ""},
+                      Case{"push", {{"push_rate", "0.2"}}, ""}, Case{"push", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
+                      Case{"push", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}, Case{"push", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

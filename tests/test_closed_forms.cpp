@@ -397,5 +397,44 @@ TEST(ClosedFormsInput, NegativeTimeThrows) {
   expect_invalid([] { incline_distance(0.6, 0.3, 0.0, 1.0, g, -1.0); }, "t", ">= 0");
 }
 
+// The growing push, against the event solver. The reduced model has no force that grows with
+// time alone, but a spring whose far end runs away at V gives k·(V·t − x): with k tiny and
+// k·V the push's rate, the k·x part is below 1e-9 N over the run, so this is the same problem.
+// Pure Coulomb, with viscous drag (closed form) and with quadratic drag (RK4 inside).
+TEST(ClosedForms, GrowingPushMatchesEventSolver) {
+  struct Case {
+    double mass, rate;
+    FrictionPair pair;
+  };
+  for (const Case c : {Case{1.0, 2.0, {0.5, 0.4, 0, 0}}, Case{3.0, 10.0, {0.8, 0.3, 0, 0}},
+                       Case{0.5, 1.0, {0.3, 0.45, 0, 0}}, Case{1.0, 2.0, {0.4, 0.3, 2.0, 0}},
+                       Case{1.0, 2.0, {0.4, 0.3, 1e-5, 0}}, Case{2.0, 5.0, {0.4, 0.3, 0.5, 0.8}}}) {
+    OneDofBlock block;
+    block.mass = c.mass;
+    block.normal_force = c.mass * g;
+    block.pair = c.pair;
+    block.spring_k = 1e-10;
+    block.pull_speed = c.rate / block.spring_k;
+    const GrowingPush start = growing_push(c.mass, c.rate, c.pair, g, 0.0);
+    const double t_end = start.breakaway_time + 2.0;
+    const Trajectory numeric = solve_event_rk4(block, t_end, 1e-4);
+    ASSERT_EQ(numeric.events().front().kind, EventKind::breakaway);
+    EXPECT_NEAR(numeric.events().front().t, start.breakaway_time, 1e-9) << "mass " << c.mass;
+    EXPECT_DOUBLE_EQ(start.breakaway_push, std::max(c.pair.mu_s, c.pair.mu_k) * c.mass * g);
+    for (const double t : {0.5 * start.breakaway_time, start.breakaway_time + 0.3, t_end}) {
+      const GrowingPush now = growing_push(c.mass, c.rate, c.pair, g, t);
+      EXPECT_NEAR(now.speed, numeric.velocity(t), 1e-7 * std::max(1.0, now.speed)) << "c " << c.pair.c << " t " << t;
+      EXPECT_NEAR(now.distance, numeric.position(t), 1e-7 * std::max(1.0, now.distance)) << "c " << c.pair.c << " t " << t;
+      // Friction is whatever balances the rest of m·a: the push while stuck, mu_k·N and drag after.
+      EXPECT_NEAR(now.friction, now.push - c.mass * now.acceleration, 1e-9 * now.push) << "t " << t;
+    }
+  }
+}
+
+TEST(ClosedFormsInput, GrowingPushNeedsAGrowingPush) {
+  expect_invalid([] { growing_push(1.0, 0.0, {0.5, 0.4, 0, 0}, g, 1.0); }, "rate", "> 0");
+  expect_invalid([] { growing_push(1.0, 1.0, {0.5, 0.4, 0, 0}, g, -1.0); }, "t", ">= 0");
+}
+
 }  // namespace
 }  // namespace frictionlab

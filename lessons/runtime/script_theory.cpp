@@ -207,6 +207,25 @@ int regularized_run(lua_State* state) {
   });
 }
 
+int growing_push(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.growing_push", {"mass", "rate", "mu_s", "mu_k", "c", "b", "t", "g"});
+    const double mass = fields.number("mass", "kg"), rate = fields.number("rate", "N/s");
+    const FrictionPair pair = pair_from(fields);
+    const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s", 0.0);
+    const theory::GrowingPush push = theory::growing_push(mass, rate, pair, g, t);
+    lua_createtable(state, 0, 7);
+    set_number(state, "breakaway_push", push.breakaway_push);
+    set_number(state, "breakaway_time", push.breakaway_time);
+    set_number(state, "push", push.push);
+    set_number(state, "friction", push.friction);
+    set_number(state, "acceleration", push.acceleration);
+    set_number(state, "speed", push.speed);
+    set_number(state, "distance", push.distance);
+    return 1;
+  });
+}
+
 }  // namespace
 
 void register_theory_api(lua_State* state) {
@@ -220,6 +239,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_on_incline", disk_on_incline},
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
+                                {"growing_push", growing_push},
                                 {"regularized_run", regularized_run},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);

@@ -1,0 +1,91 @@
+-- push: a block on a table pushed harder and harder, as the tribology article pushes its book
+-- (and as a force-sensor lab does). Static friction answers the push exactly, f = −F, until the
+-- push reaches mu_s·N; then the block breaks away, friction drops to mu_k·N, and the push,
+-- still growing, speeds the block up: a = (F − mu_k·N)/m.
+
+-- What theory says at time t, with the sliders as they are now.
+local function push_theory(t)
+  return theory.growing_push { mass = param.mass, rate = param.push_rate, mu_s = param.mu_s, mu_k = param.mu_k,
+                               c = param.c, b = param.b, t = t }
+end
+
+lesson {
+  title = "Push a block harder and harder",
+  question = "How hard must you push before the block moves, and what does friction do once it moves?",
+  -- A second and a half of sliding after theory says it breaks away, whatever the sliders say.
+  duration = function() return push_theory(0).breakaway_time + 1.5 end,
+  order = 12,
+  moments = {
+    { "static_friction_answers", at = 1,
+      shows = function() return value_at("slipping", time()) == 0 and value_at("push", time()) > 1 end },
+    { "sliding", at = 3, readme = true, shows = function() return value_at("slipping", time()) == 1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local mass = parameter { "mass", 1.0, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }
+local push_rate = parameter { "push_rate", 2, min = 0.2, max = 50, unit = "N/s", text = "how fast the push grows" }
+
+-- A wooden block on a wooden table: the tribology article's wood on wood, 0.25 to 0.50.
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+
+-- World -----------------------------------------------------------------------------------
+local table_top = ground { "table", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.1, on = table_top, at = 0, mass = mass }
+-- At the block's centre, along the table. Three times as wide as it is tall, it cannot tip
+-- about its front edge for any mu up to 3 (friction's moment mu·N·h/2 against N·w/2).
+local push = force { "push", on = block, force = function(t) return push_rate * t, 0 end }
+
+-- Probes and plots ------------------------------------------------------------------------
+local touch = contact(block, table_top)
+probe { "push", unit = "N", read = { push, "fx" } }
+probe { "friction_force", unit = "N", read = { touch, "fx" } }  -- negative: it pushes back
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
+
+plot { "Push and friction", kind = "time", y = { "push", "friction_force" } }
+-- Friction against the push, over the Coulomb law as the spring article stacks it: stuck,
+-- friction answers the push, f = −F, while F ≤ mu_s·N; sliding, it is −mu_k·N. The branch that
+-- applies now (the contact's state) is drawn bold.
+local N = mass * g
+plot { "Friction against the push", kind = "xy", x = "push", y = { "friction_force" },
+  theory = {
+    { "sticking: f = −F, F ≤ μs·N", function(F) if F <= math.max(param.mu_s, param.mu_k) * N then return -F end end,
+      active = function() return touch.state ~= "slipping" end },
+    { "sliding: f = −μk·N", function(F) if F >= param.mu_k * N then return -param.mu_k * N end end,
+      active = function() return touch.state == "slipping" end },
+  } }
+
+-- Reading the record ----------------------------------------------------------------------
+-- The block broke away in the first step that ends with the contact slipping; the push that
+-- did it is the one recorded the step before (none before the first step).
+local function breakaway_push()
+  local slipping, pushes = history("slipping"), history("push")
+  for i = 1, #slipping do
+    if slipping[i] == 1 then return i > 1 and pushes[i - 1] or 0 end
+  end
+end
+
+-- The end of the run at the sliders' values, where the last two rows are read.
+local function ending() return push_theory(0).breakaway_time + 1.5 end
+local function at_the_end(probe)
+  return time() >= ending() - 0.5 * step_length() and value_at(probe, ending()) or nil
+end
+
+-- Expectations ----------------------------------------------------------------------------
+expect { "breakaway push", unit = "N",
+  predicted = function() return push_theory(0).breakaway_push end,
+  measured = breakaway_push,
+  -- The push grows by rate·h in a step, and the slip is seen at the end of the step it begins in.
+  tolerance = function() return 0.01 * push_theory(0).breakaway_push + push_rate * step_length() end }
+
+-- Friction includes the drag c·v + b·v² when a slider sets them: the table's whole answer.
+expect { "friction at the end", unit = "N",
+  predicted = function() return push_theory(ending()).friction end,
+  measured = function() local f = at_the_end("friction_force") return f and -f end,
+  tolerance = function() return 0.01 * push_theory(ending()).friction + 1e-3 end }
+
+expect { "speed at the end", unit = "m/s",
+  predicted = function() return push_theory(ending()).speed end,
+  measured = function() return at_the_end("speed") end,
+  tolerance = function() return 0.01 * push_theory(ending()).speed + 0.01 end }
