@@ -109,7 +109,16 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"push", {{"mass", "0.1"}}, ""}, Case{"push", {{"mass", "10"}, {"push_rate", "50"}}, ""},
                       Case{"push", {{"push_rate", "0.2"}}, ""}, Case{"push", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
                       Case{"push", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}, Case{"push", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
-                      Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""}));
+                      Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""},
+                      // friction_models: no drag and strong drag on both drag lanes; slow and fast
+                      // launches; light and heavy blocks; the least and the most kinetic friction.
+                      Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
+                      Case{"friction_models", {{"c", "50"}, {"b", "50"}}, ""},
+                      Case{"friction_models", {{"launch_speed", "0.2"}}, ""},
+                      Case{"friction_models", {{"launch_speed", "5"}, {"mass", "10"}}, ""},
+                      Case{"friction_models", {{"mass", "0.1"}}, ""},
+                      Case{"friction_models", {{"mu_k", "0.05"}}, ""},
+                      Case{"friction_models", {{"mu_s", "2"}, {"mu_k", "2"}}, ""}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

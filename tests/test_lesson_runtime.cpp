@@ -9,6 +9,7 @@
 
 #include "assertions.h"
 #include "lesson_scripts.h"
+#include "lessons/runtime/model_card.h"
 #include "physics/closed_forms.h"
 #include "physics/scenarios.h"
 
@@ -40,6 +41,56 @@ plot { "phase", x = "x", y = "vx" }
   EXPECT_EQ(lesson.plots()[0].y, (std::vector<std::string>{"x", "vx"}));
   EXPECT_EQ(lesson.plots()[1].x, "x");
   EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
+}
+
+// One parameter handed to several pairs with sliders = false: the pairs make no sliders of
+// their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
+// the drag lane less far), the model card still sees every term, and moving the shared slider
+// rebuilds both lanes with the new value.
+TEST(LessonRuntime, PairsWithoutSlidersTakeTheScriptsValues) {
+  ScriptFile script(with_heading(R"(
+local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 1 }
+material { "block", density = 500 }
+material { "lane_a", density = 500 }
+material { "lane_b", density = 500 }
+pair { "block", "lane_a", mu_s = 0.5, mu_k = mu_k, sliders = false }
+pair { "block", "lane_b", mu_s = 0.5, mu_k = mu_k, c = 2, sliders = false }
+pair { "block", "block", mu_s = 0.5, mu_k = mu_k, sliders = false }
+local a = ground { "a", material = "lane_a", y = 0.5, thickness = 0.2 }
+local b = ground { "b", material = "lane_b", y = 0, thickness = 0.2 }
+local on_a = box { "on_a", material = "block", width = 0.2, height = 0.1, on = a, at = 0, mass = 1, velocity = { 2, 0 } }
+local on_b = box { "on_b", material = "block", width = 0.2, height = 0.1, on = b, at = 0, mass = 1, velocity = { 2, 0 } }
+probe { "a_speed", unit = "m/s", read = { on_a, "vx" } }
+probe { "b_speed", unit = "m/s", read = { on_b, "vx" } }
+probe { "a_friction", unit = "N", read = { contact(on_a, a), "fx" } }
+probe { "b_friction", unit = "N", read = { contact(on_b, b), "fx" } }
+plot { "friction against speed", kind = "xy", x = { "a_speed", "b_speed" }, y = { "a_friction", "b_friction" } }
+)"));
+  Lesson lesson(script.path());
+  std::vector<std::string> names;
+  for (const Parameter& parameter : lesson.parameters()) names.push_back(parameter.name);
+  EXPECT_EQ(names, std::vector<std::string>{"mu_k"});
+  const ModelCard card = model_card(lesson);
+  EXPECT_TRUE(card.dry);
+  EXPECT_TRUE(card.viscous);
+  EXPECT_FALSE(card.quadratic);
+  ASSERT_EQ(lesson.plots().size(), 1u);
+  EXPECT_EQ(lesson.plots()[0].x_of(0), "a_speed");
+  EXPECT_EQ(lesson.plots()[0].x_of(1), "b_speed");
+
+  const auto distances = [&lesson] {
+    const b2Vec2 start_a = lesson.scene().body("on_a")->GetPosition(), start_b = lesson.scene().body("on_b")->GetPosition();
+    run_for(lesson, 2.0);
+    return std::pair{lesson.scene().body("on_a")->GetPosition().x - start_a.x,
+                     lesson.scene().body("on_b")->GetPosition().x - start_b.x};
+  };
+  const auto [slid_a, slid_b] = distances();
+  EXPECT_RELATIVE(slid_a, theory::slide_to_rest(2.0, 1.0, {0.5, 0.3, 0, 0}, g).distance, 0.01);
+  EXPECT_RELATIVE(slid_b, theory::slide_to_rest(2.0, 1.0, {0.5, 0.3, 2, 0}, g).distance, 0.01);
+  lesson.set("mu_k", "0.6");
+  const auto [again_a, again_b] = distances();
+  EXPECT_RELATIVE(again_a, theory::slide_to_rest(2.0, 1.0, {0.5, 0.6, 0, 0}, g).distance, 0.01);
+  EXPECT_RELATIVE(again_b, theory::slide_to_rest(2.0, 1.0, {0.5, 0.6, 2, 0}, g).distance, 0.01);
 }
 
 TEST(LessonRuntime, BodiesArePlacedRestingOnGroundAndInclines) {

@@ -58,10 +58,12 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   const Scene& scene = lesson.scene();
   const bool over_time = plot.kind == lessons::PlotKind::time;
   const std::vector<double>& times = scene.times();
-  const std::vector<double>& xs = over_time ? times : scene.probe(plot.x).history;
-  std::vector<const std::vector<double>*> ys;
-  for (const std::string& name : plot.y) ys.push_back(&scene.probe(name).history);
-  const std::size_t count = xs.size();
+  std::vector<const std::vector<double>*> xs, ys;
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    xs.push_back(over_time ? &times : &scene.probe(plot.x_of(k)).history);
+    ys.push_back(&scene.probe(plot.y[k]).history);
+  }
+  const std::size_t count = times.size();
   const std::vector<unsigned char>& slipping = scene.slipping();
 
   Chart chart;
@@ -70,14 +72,16 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   chart.legend = Chart::Legend::inside;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
-  chart.x_label = axis_title(lesson, plot.x);
+  // Several x probes share their unit, not their name.
+  chart.x_label = plot.xs.size() > 1 && !lesson.probe_unit(plot.x).empty() ? "(" + lesson.probe_unit(plot.x) + ")"
+                                                                            : axis_title(lesson, plot.x);
   const std::string& y_unit = lesson.probe_unit(plot.y.front());
   bool one_unit = true;
   for (const std::string& name : plot.y) one_unit = one_unit && lesson.probe_unit(name) == y_unit;
   chart.y_label = plot.y.size() == 1 ? axis_title(lesson, plot.y.front()) : one_unit && !y_unit.empty() ? "(" + y_unit + ")" : "";
 
   // The x axis: the lesson's time span, or the data's range with zero in it.
-  const Range x_range = over_time ? Range{0.0, std::max(time_span, count ? times.back() : 0.0)} : range_of({&xs}, count, true);
+  const Range x_range = over_time ? Range{0.0, std::max(time_span, count ? times.back() : 0.0)} : range_of(xs, count, true);
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
 
@@ -89,7 +93,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     if (plot.y.size() > 1 || over_time) series.name = plot.y[k] + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
     series.colour = theme.series[k % 4];
     series.points.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) series.points.push_back({xs[i], (*ys[k])[i]});
+    for (std::size_t i = 0; i < count; ++i) series.points.push_back({(*xs[k])[i], (*ys[k])[i]});
     chart.series.push_back(std::move(series));
   }
   if (regimes) {

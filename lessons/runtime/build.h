@@ -69,6 +69,9 @@ struct LessonBuild {
   StepSettings settings;
   std::unique_ptr<Scene> scene;
   PairTable presets;
+  // Pairs a script gave fixed values with pair{ ..., sliders = false }: declared, with no
+  // coefficient parameters of their own, so declare_preset_pairs leaves them alone.
+  std::vector<std::pair<std::string, std::string>> fixed_pairs;
 
   std::string title, question;
   double duration = 10.0;

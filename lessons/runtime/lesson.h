@@ -53,8 +53,12 @@ struct Plot {
   std::string title;
   std::string declared_at;
   PlotKind kind = PlotKind::time;
-  std::string x;  // "time" on a time plot
+  std::string x;  // "time" on a time plot; the first of `xs` when each y has its own x
   std::vector<std::string> y;
+  // An X–Y plot may pair each y with an x of its own (x = { ... } as long as y): three blocks'
+  // friction each against its own speed. Empty: every y is against x.
+  std::vector<std::string> xs;
+  const std::string& x_of(std::size_t k) const { return xs.empty() ? x : xs[k]; }
   std::vector<TheoryCurve> theory;
 };
 

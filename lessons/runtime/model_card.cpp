@@ -16,11 +16,17 @@ ModelCard model_card(const Lesson& lesson) {
     if (joint->GetType() == e_pulleyJoint) card.constraints += 1;
   }
   card.degrees_of_freedom -= card.constraints;
-  for (const Parameter& parameter : lesson.parameters()) {
-    if (parameter.coefficient.empty() || parameter.value <= 0.0) continue;
-    if (parameter.coefficient == "mu_s" || parameter.coefficient == "mu_k") card.dry = true;
-    if (parameter.coefficient == "c") card.viscous = true;
-    if (parameter.coefficient == "b") card.quadratic = true;
+  // The terms in use are those of the pairs that can rub in this scene, whether their values
+  // came from sliders, from the presets or from the script (pair{ ..., sliders = false }).
+  const PairTable& pairs = scene.pairs();
+  for (int a = 0; a < pairs.material_count(); ++a) {
+    for (int b = a; b < pairs.material_count(); ++b) {
+      if (!pairs.has_pair(a, b) || !scene.can_touch(pairs.material(a).name, pairs.material(b).name)) continue;
+      const FrictionPair& pair = pairs.pair(a, b);
+      card.dry = card.dry || pair.mu_s > 0.0 || pair.mu_k > 0.0;
+      card.viscous = card.viscous || pair.c > 0.0;
+      card.quadratic = card.quadratic || pair.b > 0.0;
+    }
   }
   const StepSettings& settings = scene.settings();
   card.treatment = std::string(treatment_name(settings.treatment));

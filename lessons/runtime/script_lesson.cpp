@@ -229,6 +229,9 @@ void declare_preset_pairs(LessonBuild& build) {
         declared = declared || (p.material_a == name_a && p.material_b == name_b) ||
                    (p.material_a == name_b && p.material_b == name_a);
       }
+      for (const auto& [fixed_a, fixed_b] : build.fixed_pairs) {
+        declared = declared || (fixed_a == name_a && fixed_b == name_b) || (fixed_a == name_b && fixed_b == name_a);
+      }
       if (declared || !table.has_pair(a, b) || !build.scene->can_touch(name_a, name_b)) {
         continue;
       }
@@ -248,7 +251,7 @@ int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name"});
+    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name", "sliders"});
     std::string names[2];
     for (int i = 0; i < 2; ++i) {
       lua_rawgeti(state, 1, i + 1);
@@ -264,6 +267,11 @@ int pair(lua_State* state) {
       const bool same = (declared.material_a == names[0] && declared.material_b == names[1]) ||
                         (declared.material_a == names[1] && declared.material_b == names[0]);
       if (same) throw InvalidInput("pair " + label + " is given twice (first at " + declared.declared_at + ")");
+    }
+    for (const auto& [fixed_a, fixed_b] : build.fixed_pairs) {
+      if ((fixed_a == names[0] && fixed_b == names[1]) || (fixed_a == names[1] && fixed_b == names[0])) {
+        throw InvalidInput("pair " + label + " is given twice");
+      }
     }
     for (const std::string& name : names) build.use_material(name);
     FrictionPair values;
@@ -286,7 +294,14 @@ int pair(lua_State* state) {
     for (int i = 0; i < 4; ++i) {
       *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
-    values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state));
+    // sliders = false: the script fixes the values itself (from parameters of its own, say, when
+    // one slider must drive several pairs), so the pair makes no parameters.
+    if (fields.flag("sliders").value_or(true)) {
+      values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state));
+    } else {
+      if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with sliders = false it has none");
+      build.fixed_pairs.emplace_back(names[0], names[1]);
+    }
     for (std::string& warning : build.scene->pairs().set_pair(names[0], names[1], values)) {
       build.warnings.push_back(caller(state) + ": " + warning);
     }
@@ -418,7 +433,20 @@ int plot(lua_State* state) {
       if (!fields.has("x")) {
         throw InvalidInput(fields.what() + ": kind = \"xy\" needs x, the probe along the bottom, as in x = \"push\"");
       }
-      declared.x = fields.text("x", "");
+      fields.push("x");
+      if (lua_istable(state, -1)) {
+        for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, -1)); ++i) {
+          lua_rawgeti(state, -1, i);
+          if (lua_type(state, -1) != LUA_TSTRING) throw InvalidInput(fields.what() + ": x must list probe names");
+          declared.xs.emplace_back(lua_tostring(state, -1));
+          lua_pop(state, 1);
+        }
+        if (declared.xs.empty()) throw InvalidInput(fields.what() + ": x must be a probe's name or a list of them");
+        declared.x = declared.xs.front();
+      } else {
+        declared.x = fields.text("x", "");
+      }
+      lua_pop(state, 1);
       if (declared.x == "time") {
         throw InvalidInput(fields.what() + ": x = \"time\" is a time plot; say kind = \"time\" and leave x out");
       }
@@ -443,6 +471,10 @@ int plot(lua_State* state) {
       throw InvalidInput(fields.what() + ": y must be a probe's name or a list of them, as in y = { \"spring_force\" }");
     }
     lua_pop(state, 1);
+    if (!declared.xs.empty() && declared.xs.size() != declared.y.size()) {
+      throw InvalidInput(fields.what() + ": x lists " + std::to_string(declared.xs.size()) + " probes and y " +
+                         std::to_string(declared.y.size()) + "; a list of x pairs each y with its own x, so give as many");
+    }
     LessonBuild& build = build_of(state);
     PlotFunctions functions;
     read_theory(state, fields, declared, functions);

@@ -84,13 +84,15 @@ int ground(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "ground");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "ground", {"material", "y"});
+    Fields fields(state, 1, "ground", {"material", "y", "thickness"});
     lua_rawgeti(state, 1, 1);
     const std::string name = lua_type(state, -1) == LUA_TSTRING ? fields.name() : "ground";
     lua_pop(state, 1);
     const std::string material = required_material(build, fields);
     const float top = static_cast<float>(fields.number("y", "m", 0.0));
-    constexpr float width = 400.0f, thickness = 1.0f;
+    // Thinner grounds let lanes stack close together (one block above another's floor).
+    constexpr float width = 400.0f;
+    const float thickness = static_cast<float>(fields.number_in("thickness", "m", 1.0, 0.02, 2.0));
     b2Body* body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
     // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
     push_body(state, body, true, {-0.5f * width, top}, {1.0f, 0.0f}, width);

@@ -1,0 +1,111 @@
+-- friction_models: the spring article's three friction models side by side. Three identical
+-- blocks are launched together on three lanes and slide to rest. On the first lane friction is
+-- Coulomb's, mu_k·N whatever the speed; on the second the engineering model adds viscous drag
+-- c·v; on the third a quadratic term b·v². Each block traces its law's friction against speed
+-- from the launch speed down to 0, where all three meet Coulomb's jump: at v = 0 friction can
+-- be anything from −mu_s·N to +mu_s·N.
+
+-- Theory for one lane: the slide to rest under mu_k·N + c·v + b·v².
+local function rest(c, b)
+  return theory.slide_to_rest { v0 = param.launch_speed, mass = param.mass, mu_s = param.mu_s, mu_k = param.mu_k,
+                                c = c, b = b }
+end
+
+lesson {
+  title = "Three friction models, one launch",
+  question = "Coulomb, Coulomb + c·v, Coulomb + b·v²: which block stops first, and how does each law slow it?",
+  -- Half a second after the last block has stopped (Coulomb's, which has no drag to help).
+  -- (At most 10 s, which the slowest slide allowed, mu_k = 0.05 at 5 m/s, fits.)
+  duration = function() return math.min(rest(0, 0).time + 0.5, 10) end,
+  order = 16,
+  moments = {
+    { "all_sliding", at = 0.2, readme = true,
+      shows = function() return value_at("coulomb_slipping", time()) == 1 and value_at("quadratic_slipping", time()) == 1 end },
+    { "drag_stopped_first", at = 0.6,
+      shows = function() return value_at("engineering_slipping", time()) == 0 and value_at("coulomb_slipping", time()) == 1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local launch_speed = parameter { "launch_speed", 2, min = 0.2, max = 5, unit = "m/s", text = "launch speed" }
+local mass = parameter { "mass", 1, min = 0.1, max = 10, unit = "kg", text = "mass of each block" }
+-- One mu_s and one mu_k for all three lanes, so only the drag differs. They are the lesson's own
+-- parameters, handed to the three pairs below, so moving one restarts the launch.
+local mu_s = parameter { "mu_s", 0.5, min = 0, max = 2, text = "static friction coefficient (all lanes)" }
+-- From 0.05: with no kinetic friction the Coulomb block would never stop, and nothing would be compared.
+local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 2, text = "kinetic friction coefficient (all lanes)" }
+local c = parameter { "c", 4, min = 0, max = 50, unit = "N·s/m", text = "viscous drag c (engineering lane)" }
+local b = parameter { "b", 4, min = 0, max = 50, unit = "N·s²/m²", text = "quadratic drag b (quadratic lane)" }
+
+material { "block", density = 500, note = "the mass is set on each block" }
+material { "coulomb_lane", density = 1000, note = "fixed, so its density plays no part" }
+material { "engineering_lane", density = 1000, note = "fixed" }
+material { "quadratic_lane", density = 1000, note = "fixed" }
+-- sliders = false: the pairs take the lesson's own mu_s, mu_k, c and b instead of making four
+-- sliders each. The blocks ride separate lanes and never meet, but block on block needs values.
+pair { "block", "coulomb_lane", mu_s = mu_s, mu_k = mu_k, sliders = false }
+pair { "block", "engineering_lane", mu_s = mu_s, mu_k = mu_k, c = c, sliders = false }
+pair { "block", "quadratic_lane", mu_s = mu_s, mu_k = mu_k, b = b, sliders = false }
+pair { "block", "block", mu_s = mu_s, mu_k = mu_k, sliders = false }
+
+-- World -----------------------------------------------------------------------------------
+-- Three lanes 0.45 m apart, each floor 0.2 m thick, so the block below clears the floor above.
+-- The blocks are three times as wide as tall: up to mu_k = 2 they cannot pitch over their front
+-- edge as friction slows them (friction's moment mu_k·N·h/2 against N·w/2).
+local lanes = {}
+for i, model in ipairs { "coulomb", "engineering", "quadratic" } do
+  local floor = ground { model .. "_floor", material = model .. "_lane", y = 0.9 - 0.45 * (i - 1), thickness = 0.2 }
+  local block = box { model, material = "block", width = 0.3, height = 0.1, on = floor, at = 0, mass = mass,
+                      velocity = { launch_speed, 0 } }
+  lanes[model] = contact(block, floor)
+  probe { model .. "_speed", unit = "m/s", read = { block, "vx" } }
+  probe { model .. "_friction", unit = "N", read = { lanes[model], "fx" } }  -- dry and drag: all the floor does
+  probe { model .. "_distance", unit = "m", read = { block, "distance", along = { 1, 0 } } }
+  probe { model .. "_slipping", read = { lanes[model], "slipping" } }
+end
+
+-- Probes and plots ------------------------------------------------------------------------
+plot { "Speed of each block", kind = "time", y = { "coulomb_speed", "engineering_speed", "quadratic_speed" } }
+-- Friction against speed over each lane's law: −(mu_k·N + c·v + b·v²) while it slides, and at
+-- v = 0 anything from −mu_s·N to +mu_s·N (the vertical line): Coulomb's jump.
+local N = mass * g
+local function law(drag_c, drag_b)
+  return function(v)
+    if v > 0 then return -(mu_k * N + drag_c * v + drag_b * v * v) end
+    if v == 0 then return -mu_s * N, mu_s * N end
+  end
+end
+plot { "Friction against speed", kind = "xy",
+  x = { "coulomb_speed", "engineering_speed", "quadratic_speed" },  -- each block against its own speed
+  y = { "coulomb_friction", "engineering_friction", "quadratic_friction" },
+  theory = { { "Coulomb: −μk·N", law(0, 0) }, { "engineering: −μk·N − c·v", law(c, 0) },
+             { "quadratic: −μk·N − b·v²", law(0, b) } } }
+
+-- Reading the record ----------------------------------------------------------------------
+-- A block stopped during the first step that ends with its floor gripping it; that step began
+-- one step_length() earlier. Nothing yet while it still slides.
+local function stop(model)
+  local times, slipping, distances = history("time"), history(model .. "_slipping"), history(model .. "_distance")
+  for i = 1, #times do
+    if slipping[i] == 0 then return { time = times[i] - step_length(), distance = distances[i] } end
+  end
+  return {}
+end
+
+-- Expectations ----------------------------------------------------------------------------
+for _, lane in ipairs { { "coulomb", 0, 0 }, { "engineering", c, 0 }, { "quadratic", 0, b } } do
+  local model, drag_c, drag_b = lane[1], lane[2], lane[3]
+  expect { model .. ": stopping distance", unit = "m",
+    predicted = function() return rest(drag_c, drag_b).distance end,
+    measured = function() return stop(model).distance end,
+    -- 1 %, and for the drag a quarter of (c + b·v0)·h/m: the drag is stepped implicitly, exact
+    -- alone but first order beside dry friction, so a strong drag needs a finer step.
+    tolerance = function()
+      return rest(drag_c, drag_b).distance * (0.01 + 0.25 * (drag_c + drag_b * launch_speed) * step_length() / mass)
+    end }
+  expect { model .. ": stopping time", unit = "s",
+    predicted = function() return rest(drag_c, drag_b).time end,
+    measured = function() return stop(model).time end,
+    -- A stop is placed to within a step.
+    tolerance = function() return step_length() end }
+end
