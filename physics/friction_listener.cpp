@@ -240,7 +240,14 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
   r.sliding_velocity = sliding_end;
 
   if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
-  const double reached = std::abs(tangent_impulse) / normal_impulse;
+  // A body standing on several feet touches the floor through several contacts. Being rigid,
+  // it sticks or slides as a whole: its feet share one static limit, mu_s times their total
+  // load, however the load happens to be split between them (which statics cannot decide for
+  // three feet in a row, and the solver decides its own way). So the state is judged from the
+  // totals over every contact between the two bodies; with one contact nothing changes.
+  double group_normal = normal_impulse, group_tangent = tangent_impulse;
+  sum_sibling_impulses(contact, t, &group_normal, &group_tangent);
+  const double reached = std::abs(group_tangent) / group_normal;
   switch (treatment_) {
     case FrictionTreatment::stick_slip:
       if (r.state == ContactState::sticking) {
@@ -264,6 +271,28 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
     case FrictionTreatment::threshold:
     case FrictionTreatment::regularized:
       break;
+  }
+}
+
+void FrictionListener::sum_sibling_impulses(const b2Contact* contact, const b2Vec2& t, double* normal,
+                                            double* tangent) const {
+  const b2Body* a = contact->GetFixtureA()->GetBody();
+  const b2Body* b = contact->GetFixtureB()->GetBody();
+  for (const b2ContactEdge* edge = b->GetContactList(); edge != nullptr; edge = edge->next) {
+    const b2Contact* other = edge->contact;
+    if (other == contact || edge->other != a || !other->IsTouching() || !other->IsEnabled()) continue;
+    // Box2D keeps each point's accumulated impulses in the manifold for warm starting; they are
+    // stored before any contact's PostSolve is called. Along this contact's tangent, and with
+    // the same sign convention (on the body that is this contact's B).
+    const b2Manifold* manifold = other->GetManifold();
+    b2WorldManifold world;
+    other->GetWorldManifold(&world);
+    const float side = other->GetFixtureB()->GetBody() == b ? 1.0f : -1.0f;
+    const b2Vec2 other_t = ContactRecord::tangent_of(world.normal);
+    for (int i = 0; i < manifold->pointCount; ++i) {
+      *normal += manifold->points[i].normalImpulse;
+      *tangent += side * manifold->points[i].tangentImpulse * b2Dot(other_t, t);
+    }
   }
 }
 

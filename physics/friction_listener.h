@@ -114,6 +114,9 @@ class FrictionListener : public b2ContactListener {
   // The breakaway impulse owed, the viscous and quadratic drag and the regularized dry force,
   // as impulses at the contact for the coming step.
   void apply_velocity_terms(b2Contact* contact, ContactRecord& r);
+  // Adds the impulses of every other touching contact between the same two bodies (a body on
+  // feet), along this contact's tangent `t`, to the totals.
+  void sum_sibling_impulses(const b2Contact* contact, const b2Vec2& t, double* normal, double* tangent) const;
   double breakaway_correction(const ContactRecord& r, const FrictionPair& pair, double normal_impulse,
                               float sliding_end) const;
 

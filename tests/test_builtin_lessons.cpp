@@ -118,7 +118,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"friction_models", {{"launch_speed", "5"}, {"mass", "10"}}, ""},
                       Case{"friction_models", {{"mass", "0.1"}}, ""},
                       Case{"friction_models", {{"mu_k", "0.05"}}, ""},
-                      Case{"friction_models", {{"mu_s", "2"}, {"mu_k", "2"}}, ""}));
+                      Case{"friction_models", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // contact_area: doubling the mass doubles the breakaway pull on every face and
+                      // foot count; light and heavy, slow and fast; mu_k above mu_s; no friction.
+                      Case{"contact_area", {{"mass", "2"}}, ""}, Case{"contact_area", {{"mass", "0.1"}}, ""},
+                      Case{"contact_area", {{"mass", "10"}, {"pull_rate", "50"}}, ""},
+                      Case{"contact_area", {{"pull_rate", "0.2"}}, ""},
+                      Case{"contact_area", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
+                      Case{"contact_area", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

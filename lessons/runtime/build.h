@@ -72,6 +72,8 @@ struct LessonBuild {
   // Pairs a script gave fixed values with pair{ ..., sliders = false }: declared, with no
   // coefficient parameters of their own, so declare_preset_pairs leaves them alone.
   std::vector<std::pair<std::string, std::string>> fixed_pairs;
+  // A box on feet (box{ ..., feet = n }): its foot fixtures from left to right, for contact(a, b, k).
+  std::map<const b2Body*, std::vector<const b2Fixture*>> feet;
 
   std::string title, question;
   double duration = 10.0;

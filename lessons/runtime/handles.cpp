@@ -22,8 +22,26 @@ int contact(lua_State* state) {
     const b2Body* a = body_handle(state, 1, "contact's first argument")->body;
     const b2Body* b = body_handle(state, 2, "contact's second argument")->body;
     if (a == b) throw InvalidInput("contact needs two different bodies, as in contact(block, floor)");
+    // contact(a, b, k): the k-th foot from the left of whichever of the two stands on feet.
+    const b2Fixture* foot = nullptr;
+    if (!lua_isnoneornil(state, 3)) {
+      const LessonBuild& build = build_of(state);
+      auto feet = build.feet.find(a);
+      if (feet == build.feet.end()) feet = build.feet.find(b);
+      if (feet == build.feet.end()) {
+        throw InvalidInput("contact(a, b, k) reads one foot of a body on feet (box{ ..., feet = n }); neither of these "
+                           "has feet");
+      }
+      const lua_Integer count = static_cast<lua_Integer>(feet->second.size());
+      if (!lua_isinteger(state, 3) || lua_tointeger(state, 3) < 1 || lua_tointeger(state, 3) > count) {
+        throw InvalidInput("contact(a, b, k): k is a foot's number from the left, 1 to " + std::to_string(count) + "; got " +
+                           describe(state, 3));
+      }
+      foot = feet->second[static_cast<size_t>(lua_tointeger(state, 3) - 1)];
+      if (feet->first == b) std::swap(a, b);  // read from the body on feet
+    }
     auto* handle = static_cast<ContactHandle*>(lua_newuserdatauv(state, sizeof(ContactHandle), 0));
-    *handle = {a, b};
+    *handle = {a, b, foot};
     luaL_setmetatable(state, type_names[contact_type]);
     return 1;
   });
@@ -67,7 +85,7 @@ struct Handle {
   HandleType type;
   const b2Body* body = nullptr;   // a body
   size_t index = 0;               // a spring or a force
-  ContactHandle contact{nullptr, nullptr};
+  ContactHandle contact{nullptr, nullptr, nullptr};
   // How a probe reads a body: at which of its points, along which unit direction (distance
   // and speed), from where that point started (distance), and times what (scale).
   bool at_point = false;  // without one, x and y are the body's origin and vx, vy its centre's
@@ -92,6 +110,19 @@ std::optional<Handle> any_handle(lua_State* state, int index) {
     if (const void* data = handle_of(state, index, type)) return copy_handle(data, type);
   }
   return std::nullopt;
+}
+
+// The record a contact view reads: of the two bodies' touch, or of one foot's.
+const ContactRecord* find_record(const Scene& scene, const ContactHandle& view) {
+  if (view.foot == nullptr) return scene.friction().find(view.a, view.b);
+  for (const b2ContactEdge* edge = view.a->GetContactList(); edge != nullptr; edge = edge->next) {
+    b2Contact* touch = edge->contact;
+    if (edge->other != view.b || !touch->IsTouching()) continue;
+    if (touch->GetFixtureA() != view.foot && touch->GetFixtureB() != view.foot) continue;
+    const auto found = scene.friction().contacts().find(touch);
+    return found == scene.friction().contacts().end() ? nullptr : &found->second;
+  }
+  return nullptr;
 }
 
 std::optional<Field> find_field(HandleType type, const char* key) {
@@ -134,7 +165,7 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
     return field == Field::fx ? now.x : now.y;
   }
   const b2Body* a = handle.contact.a;
-  const ContactRecord* record = scene.friction().find(a, handle.contact.b);
+  const ContactRecord* record = find_record(scene, handle.contact);
   if (record == nullptr) return 0.0;
   const b2Vec2 drag = record->side(a) * static_cast<float>(record->damping_force) * record->tangent();
   // Friction here is all the surface does along itself: the dry part and the drag.
@@ -212,7 +243,7 @@ int handle_index(lua_State* state) {
     const char* key = lua_type(state, 2) == LUA_TSTRING ? lua_tostring(state, 2) : "?";
     const Scene& scene = *build_of(state).scene;
     if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
-      const ContactRecord* record = scene.friction().find(handle->contact.a, handle->contact.b);
+      const ContactRecord* record = find_record(scene, handle->contact);
       lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
       if (field == Field::distance || field == Field::speed) {

@@ -27,10 +27,12 @@ struct SpringHandle {
 struct ForceHandle {
   size_t index;
 };
-// contact(a, b): a view of the touching pair, read when a field is read.
+// contact(a, b): a view of the touching pair, read when a field is read. contact(a, b, k) is
+// the view of one foot of a body on feet: the touch of that foot's fixture alone.
 struct ContactHandle {
   const b2Body* a;
   const b2Body* b;
+  const b2Fixture* foot = nullptr;  // null: the first touching contact between the two bodies
 };
 
 // b2Vec2's default constructor leaves it uninitialised: every default here is spelled out.

@@ -60,7 +60,9 @@ void finish_body(Fields& fields, b2Body* body, double area) {
     // Box2D keeps masses in floats: far below a milligram a small body's mass and inertia lose
     // their digits, and Box2D aborts on an inertia that is no longer positive.
     const double mass = fields.number_in("mass", "kg", 1.0, 1e-6, 1e6);
-    body->GetFixtureList()->SetDensity(static_cast<float>(mass / area));
+    for (b2Fixture* part = body->GetFixtureList(); part != nullptr; part = part->GetNext()) {
+      part->SetDensity(static_cast<float>(mass / area));  // a box on feet is several fixtures
+    }
     body->ResetMassData();
   }
   // The limits the scene puts on a body's starting motion (Scene::add_body), which the body
@@ -78,6 +80,44 @@ std::string required_material(LessonBuild& build, Fields& fields) {
   if (material.empty()) throw InvalidInput(fields.what() + ": material is missing, as in material = \"wood\"");
   build.use_material(material);
   return material;
+}
+
+// box{ ..., feet = n }: n small feet spread evenly under the box, from its left edge to its
+// right, each its own fixture, so each makes its own contact with the floor (a Box2D contact
+// has at most two points: a face of n feet needs n fixtures).
+struct Feet {
+  int count = 0;
+  double width = 0.0, height = 0.0;
+};
+
+Feet read_feet(Fields& fields, double width, double height) {
+  if (!fields.has("feet")) {
+    if (fields.has("foot_width") || fields.has("foot_height")) {
+      throw InvalidInput(fields.what() + ": foot_width and foot_height go with feet = n");
+    }
+    return {};
+  }
+  const double count = fields.number_in("feet", "", 2.0, 16.0);
+  if (count != std::floor(count)) throw InvalidInput(fields.what() + ": feet must be a whole number, from 2 to 16");
+  Feet feet;
+  feet.count = static_cast<int>(count);
+  // Box2D's skin makes anything under 2 cm all skin; n feet must fit under the box side by side.
+  feet.width = fields.number_in("foot_width", "m", 0.02, 0.02, width / feet.count);
+  feet.height = fields.number_in("foot_height", "m", 0.02, 0.02, std::max(0.02, height));
+  return feet;
+}
+
+std::vector<const b2Fixture*> add_feet(Scene& scene, b2Body* body, const std::string& material, const Feet& feet,
+                                       double width, double height) {
+  std::vector<const b2Fixture*> made;
+  const double first = -0.5 * width + 0.5 * feet.width, gap = (width - feet.width) / (feet.count - 1);
+  for (int i = 0; i < feet.count; ++i) {
+    b2PolygonShape foot;
+    const b2Vec2 centre{static_cast<float>(first + i * gap), static_cast<float>(-0.5 * height - 0.5 * feet.height)};
+    foot.SetAsBox(static_cast<float>(0.5 * feet.width), static_cast<float>(0.5 * feet.height), centre, 0.0f);
+    made.push_back(scene.add_fixture(body, foot, material));
+  }
+  return made;
 }
 
 int ground(lua_State* state) {
@@ -105,14 +145,16 @@ int box(lua_State* state) {
     require_building(state, "box");
     LessonBuild& build = build_of(state);
     Fields fields(state, 1, "box", {"material", "width", "height", "x", "y", "angle", "on", "at", "mass", "kind",
-                                    "velocity", "spin", "fixed_rotation"});
+                                    "velocity", "spin", "fixed_rotation", "feet", "foot_width", "foot_height"});
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
     const double width = fields.number("width", "m"), height = fields.number("height", "m");
-    const Placement where = place(state, fields, static_cast<float>(0.5 * height) + resting_gap);
+    const Feet feet = read_feet(fields, width, height);
+    const Placement where = place(state, fields, static_cast<float>(0.5 * height + feet.height) + resting_gap);
     b2Body* body = build.scene->add_box(name, body_kind(fields, "dynamic"), material, where.position,
                                         static_cast<float>(width), static_cast<float>(height), where.angle);
-    finish_body(fields, body, width * height);
+    if (feet.count > 0) build.feet[body] = add_feet(*build.scene, body, material, feet, width, height);
+    finish_body(fields, body, width * height + feet.count * feet.width * feet.height);
     push_body(state, body);
     return 1;
   });

@@ -1,0 +1,137 @@
+-- contact_area: does the area in contact change friction? The spring article asks it and
+-- answers "in the ideal case, no; in the real world, yes". Its model: friction comes from the
+-- peaks where the surfaces touch, each pressed by its share of the normal force. Three peaks
+-- each carry N/3 and hold mu_s·N/3; six carry N/6 and hold mu_s·N/6: either way mu_s·N.
+-- Here the same block lies on its wide face and stands on its narrow one, and a block stands on
+-- three feet beside one on six; each is pulled by a force growing at pull_rate, low down, at the
+-- height of the floor, so the pull cannot tip it or shift its load between its feet.
+-- Where the ideal answer stops holding: real surfaces deflect under the load, their texture
+-- changes with the face, and between areas a hundred or a thousand times apart the measured
+-- coefficients differ. A Coulomb simulation, like the article's ideal case, cannot show that:
+-- mu_s belongs to the pair of surfaces, not to an area.
+-- Known limit: from mu_s of about 1 up, the blocks on feet rock on the solver's uneven sharing
+-- of their weight and break away early (at mu_s = 1 the six-footed one at 7.2 N, not 9.8 N);
+-- their rows then fail, and say so.
+
+local function pull_theory(t)
+  return theory.growing_push { mass = param.mass, rate = param.pull_rate, mu_s = param.mu_s, mu_k = param.mu_k,
+                               c = param.c, b = param.b, t = t }
+end
+
+-- How many of the four blocks move now.
+local function moving()
+  local count = 0
+  for _, name in ipairs { "wide", "narrow", "three_feet", "six_feet" } do
+    if value_at(name .. "_speed", time()) > 1e-3 then count = count + 1 end
+  end
+  return count
+end
+
+lesson {
+  title = "Does contact area matter?",
+  question = "A block on its wide face, on its narrow face, on three feet or on six: which is hardest to start sliding?",
+  duration = function() return pull_theory(0).breakaway_time + 1 end,
+  order = 14,
+  moments = {
+    { "all_held", at = 1, shows = function() return moving() == 0 end },
+    { "all_broke_away_together", at = 2.6, readme = true, shows = function() return moving() == 4 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local mass = parameter { "mass", 1, min = 0.1, max = 10, unit = "kg", text = "mass of each block" }
+local pull_rate = parameter { "pull_rate", 2, min = 0.2, max = 50, unit = "N/s", text = "how fast each pull grows" }
+
+-- The spring article's aluminium block on a wooden bench: mu_s, mu_k, c and b become sliders.
+pair { "aluminium", "wood" }
+-- The blocks never meet (they are pulled alike), but two blocks could touch, so they need values.
+pair { "aluminium", "aluminium", mu_s = 1.1, mu_k = 1.0, sliders = false }
+
+-- World -----------------------------------------------------------------------------------
+local bench = ground { "bench", material = "wood" }
+local foot = 0.02  -- each foot is 2 cm wide and 2 cm tall
+local blocks = {
+  box { "wide", material = "aluminium", width = 0.4, height = 0.1, on = bench, at = -0.85, mass = mass },
+  box { "narrow", material = "aluminium", width = 0.1, height = 0.4, on = bench, at = -0.35, mass = mass },
+  box { "three_feet", material = "aluminium", width = 0.4, height = 0.08, on = bench, at = 0.2, mass = mass,
+        feet = 3, foot_width = foot, foot_height = foot },
+  box { "six_feet", material = "aluminium", width = 0.4, height = 0.08, on = bench, at = 0.8, mass = mass,
+        feet = 6, foot_width = foot, foot_height = foot },
+}
+-- Each pull acts at the height where the block touches the bench (Box2D puts the contact in
+-- the middle of the resting gap), so it has no moment about the contact to tip the block.
+local lowest = { -0.05, -0.2, -0.04 - foot, -0.04 - foot }
+for i, block in ipairs(blocks) do
+  local pull = force { block.name .. "_pull", on = block, at = { 0, lowest[i] - resting_gap / 2 },
+                       force = function(t) return pull_rate * t, 0 end }
+  -- A block on feet is read at a middle foot: a rigid block slides on all its feet at once, but
+  -- an end foot can carry no load at all, and a touch without load keeps whatever it last said.
+  local middle = ({ nil, nil, 2, 3 })[i]
+  local touch = middle and contact(block, bench, middle) or contact(block, bench)
+  probe { block.name .. "_pull", unit = "N", read = { pull, "fx" } }
+  probe { block.name .. "_speed", unit = "m/s", read = { block, "vx" } }
+  probe { block.name .. "_slipping", read = { touch, "slipping" } }
+end
+-- Each foot's load, read from its own touch with the bench.
+local three, six = blocks[3], blocks[4]
+for k = 1, 3 do probe { "three_feet_load_" .. k, unit = "N", read = { contact(three, bench, k), "normal" } } end
+for k = 1, 6 do probe { "six_feet_load_" .. k, unit = "N", read = { contact(six, bench, k), "normal" } } end
+plot { "Speed of each block", kind = "time", y = { "wide_speed", "narrow_speed", "three_feet_speed", "six_feet_speed" } }
+-- Against the article's equal shares, N/3 and N/6 (see the expectations below for why they differ).
+plot { "Each foot's load (three feet)", kind = "time", y = { "three_feet_load_1", "three_feet_load_2", "three_feet_load_3" },
+  theory = { { "N/3, the article's share", function() return param.mass * g / 3 end } } }
+
+-- Reading the record ----------------------------------------------------------------------
+-- A block broke away in the first step that ends with its touch slipping; the pull that did it
+-- is the one recorded the step before (none before the first step). A block on feet sticks or
+-- slides as a whole, so one foot's touch says it for all.
+local function breakaway(name)
+  local slipping, pulls = history(name .. "_slipping"), history(name .. "_pull")
+  for i = 1, #slipping do
+    if slipping[i] == 1 then return i > 1 and pulls[i - 1] or 0 end
+  end
+end
+
+-- A foot's load while every block still holds, at half the breakaway time.
+local function held_load(probe)
+  local half = pull_theory(0).breakaway_time / 2
+  return time() >= half and value_at(probe, half) or nil
+end
+
+-- Expectations ----------------------------------------------------------------------------
+for _, name in ipairs { "wide", "narrow", "three_feet", "six_feet" } do
+  expect { name .. ": breakaway pull", unit = "N",
+    predicted = function() return pull_theory(0).breakaway_push end,
+    measured = function() return breakaway(name) end,
+    -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.
+    tolerance = function() return 0.01 * pull_theory(0).breakaway_push + pull_rate * step_length() end }
+end
+-- Friction is proportional to the normal force: the breakaway pull over the weight is mu_s
+-- whatever the mass (try the mass slider).
+expect { "breakaway pull ÷ weight",
+  predicted = function() return pull_theory(0).breakaway_push / (mass * g) end,
+  measured = function() local pull = breakaway("wide") return pull and pull / (mass * g) end,
+  tolerance = function() return 0.01 * param.mu_s + pull_rate * step_length() / (mass * g) end }
+-- The article gives each of three peaks N/3 and each of six N/6. For a rigid block on three or
+-- more feet in a row, statics cannot say how the load is shared: two equations (forces up and
+-- down, moments) for three or more unknowns. Real feet share it by how much each deflects, and
+-- equal feet share it equally; rigid ones in a simulation share it as the solver happens to
+-- (here the middle feet carry most: see the plot). What statics does decide is the total, N, and
+-- so the friction the feet can hold together, mu_s·N, whatever the split.
+local function total_load(name, feet)
+  local sum = 0
+  for k = 1, feet do
+    local load = held_load(name .. "_load_" .. k)
+    if load == nil then return nil end
+    sum = sum + load
+  end
+  return sum
+end
+expect { "three feet: their loads add up to", unit = "N",
+  predicted = function() return mass * g end,
+  measured = function() return total_load("three_feet", 3) end,
+  tolerance = function() return 0.001 * mass * g end }
+expect { "six feet: their loads add up to", unit = "N",
+  predicted = function() return mass * g end,
+  measured = function() return total_load("six_feet", 6) end,
+  tolerance = function() return 0.001 * mass * g end }
