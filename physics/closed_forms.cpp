@@ -337,4 +337,81 @@ GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, dou
   return push;
 }
 
+BoxLanding box_landing(double width, double height, double centre_height, double angle, double omega, double g,
+                       double clearance) {
+  const char* where = "box_landing";
+  require_positive(where, "width", width);
+  require_positive(where, "height", height);
+  require_finite(where, "angle", angle);
+  require_finite(where, "omega", omega);
+  require_positive(where, "g", g);
+  require_non_negative(where, "clearance", clearance);
+  // The lowest corner's height above the floor at t, and which corner it is.
+  const auto lowest = [&](double t, double* cx, double* cy) {
+    const double turned = angle + omega * t, c = std::cos(turned), s = std::sin(turned);
+    double low = std::numeric_limits<double>::infinity();
+    for (const double sx : {-0.5, 0.5}) {
+      for (const double sy : {-0.5, 0.5}) {
+        const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
+        if (y < low) {
+          low = y;
+          if (cx != nullptr) *cx = x, *cy = y;
+        }
+      }
+    }
+    return centre_height - 0.5 * g * t * t + low - clearance;
+  };
+  if (lowest(0.0, nullptr, nullptr) <= 0.0) reject(where, "centre_height", "high enough that no corner starts touching", centre_height);
+  constexpr double step = 1e-4;
+  double before = 0.0;
+  while (lowest(before + step, nullptr, nullptr) > 0.0) before += step;
+  double after = before + step;
+  for (int i = 0; i < 60; ++i) {
+    const double middle = 0.5 * (before + after);
+    (lowest(middle, nullptr, nullptr) > 0.0 ? before : after) = middle;
+  }
+  BoxLanding landing{after, angle + omega * after, 0.0, 0.0, false};
+  lowest(after, &landing.corner_x, &landing.corner_y);
+  // The next corner along the bottom: the one at the other end of the face that is lowest.
+  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+  const double rise = std::min(std::abs(width * s), std::abs(height * c));
+  landing.flat = rise < 1e-3;
+  return landing;
+}
+
+CornerImpact corner_impact(double mass, double inertia, double rx, double ry, double vx, double vy, double omega,
+                           double mu, double restitution) {
+  const char* where = "corner_impact";
+  require_positive(where, "mass", mass);
+  require_positive(where, "inertia", inertia);
+  require_non_negative(where, "mu", mu);
+  if (!(restitution >= 0.0 && restitution <= 1.0)) reject(where, "restitution", "in [0, 1]", restitution);
+  // The point's velocity, and how an impulse (J_t, J_n) at it changes that velocity: Δu = K·J.
+  const double ux = vx - omega * ry, uy = vy + omega * rx;
+  if (!(uy < 0.0)) reject(where, "the point's vertical speed", "< 0 (moving into the floor)", uy);
+  const double k_tt = 1.0 / mass + ry * ry / inertia, k_nn = 1.0 / mass + rx * rx / inertia, k_tn = -rx * ry / inertia;
+  CornerImpact impact{};
+  // Grips: after the impact the point does not slide, and bounces back at −e·uy.
+  const double want_t = -ux, want_n = -(1.0 + restitution) * uy;
+  const double determinant = k_tt * k_nn - k_tn * k_tn;
+  double jt = (want_t * k_nn - k_tn * want_n) / determinant, jn = (k_tt * want_n - k_tn * want_t) / determinant;
+  impact.grips = jn >= 0.0 && std::abs(jt) <= mu * jn;
+  if (!impact.grips) {
+    // Slides: kinetic friction against the point's sliding just after the impact (what a solver
+    // that clamps friction at mu·J_n settles on), the normal impulse what stops the fall. Of the
+    // two directions, the one whose sliding after the impact agrees with it.
+    for (const double direction : {ux > 0.0 ? 1.0 : -1.0, ux > 0.0 ? -1.0 : 1.0}) {
+      jn = want_n / (k_nn - direction * mu * k_tn);
+      jt = -direction * mu * jn;
+      if (jn >= 0.0 && direction * (ux + k_tt * jt + k_tn * jn) >= 0.0) break;
+    }
+  }
+  impact.normal_impulse = jn;
+  impact.tangent_impulse = jt;
+  impact.vx = vx + jt / mass;
+  impact.vy = vy + jn / mass;
+  impact.omega = omega + (rx * jn - ry * jt) / inertia;
+  return impact;
+}
+
 }  // namespace frictionlab::theory

@@ -116,4 +116,35 @@ struct GrowingPush {
 };
 GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t);
 
+// The tribology article's thrown box: a box of width w and height h thrown with its centre at
+// centre_height, at speed vx (level), spinning at omega (counter-clockwise positive), tilted by
+// angle, falls until its lowest corner comes within `clearance` of the floor (Box2D's bodies
+// touch when their cores are two skins apart). Free flight: the centre falls as g·t²/2 and the
+// box turns at omega. Found by stepping the lowest corner's height at 0.1 ms and bisecting the
+// step where it passes the clearance. corner_x, corner_y: that corner from the centre, world axes.
+struct BoxLanding {
+  double time;
+  double angle;  // rad, at landing
+  double corner_x, corner_y;
+  // Its bottom face is level to within 1 mm (thrown without spin, say): it lands on the face,
+  // whose two ends share the impact, and no single corner takes it.
+  bool flat;
+};
+BoxLanding box_landing(double width, double height, double centre_height, double angle, double omega, double g,
+                       double clearance);
+
+// A rigid body (mass, inertia about its centre) strikes a level floor at one point r from its
+// centre (world axes), moving at (vx, vy) and spinning at omega, with restitution e. The impulse
+// (J_t along x, J_n up) follows m·Δv = J, I·Δω = r × J. The point either grips (its sliding is
+// stopped within the impact: needs |J_t| <= mu·J_n) or slides throughout (J_t = −mu·J_n·sign of
+// its sliding), whichever is consistent; mu is the kinetic coefficient, since the point arrives
+// sliding. Returns the motion just after.
+struct CornerImpact {
+  bool grips;
+  double normal_impulse, tangent_impulse;  // N·s
+  double vx, vy, omega;                    // just after
+};
+CornerImpact corner_impact(double mass, double inertia, double rx, double ry, double vx, double vy, double omega,
+                           double mu, double restitution);
+
 }  // namespace frictionlab::theory

@@ -125,7 +125,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"contact_area", {{"mass", "10"}, {"pull_rate", "50"}}, ""},
                       Case{"contact_area", {{"pull_rate", "0.2"}}, ""},
                       Case{"contact_area", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
-                      Case{"contact_area", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}));
+                      Case{"contact_area", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      // thrown_box: no spin (it lands flat), both ways at the slider's ends, a slow and
+                      // a fast throw, the corner sliding (little friction) and gripping (much).
+                      Case{"thrown_box", {{"spin", "0"}}, ""}, Case{"thrown_box", {{"spin", "20"}}, ""},
+                      Case{"thrown_box", {{"spin", "-20"}}, ""}, Case{"thrown_box", {{"throw_speed", "0.5"}}, ""},
+                      Case{"thrown_box", {{"throw_speed", "8"}, {"mass", "20"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "0.1"}, {"mu_k", "0.05"}, {"spin", "-20"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "2"}, {"mu_k", "2"}}, ""}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

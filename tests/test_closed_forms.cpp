@@ -436,5 +436,70 @@ TEST(ClosedFormsInput, GrowingPushNeedsAGrowingPush) {
   expect_invalid([] { growing_push(1.0, 1.0, {0.5, 0.4, 0, 0}, g, -1.0); }, "t", ">= 0");
 }
 
+// The thrown box's landing: without spin, the centre falls until the bottom face is within the
+// clearance, t = sqrt(2·(y0 − h/2 − clearance)/g), and it lands flat; with spin, at the time
+// found the lowest corner is at the clearance, and just before it every corner was above it.
+TEST(ClosedForms, BoxLandingMatchesFreeFall) {
+  const BoxLanding level = box_landing(0.4, 0.3, 1.0, 0.0, 0.0, g, 0.02);
+  EXPECT_NEAR(level.time, std::sqrt(2.0 * (1.0 - 0.15 - 0.02) / g), 1e-9);
+  EXPECT_TRUE(level.flat);
+  for (const double omega : {-20.0, -6.0, 3.0, 20.0}) {
+    const BoxLanding landing = box_landing(0.4, 0.3, 1.0, 0.0, omega, g, 0.02);
+    EXPECT_FALSE(landing.flat) << omega;
+    const auto lowest_corner = [&](double t) {
+      double low = infinity;
+      for (const double sx : {-0.2, 0.2}) {
+        for (const double sy : {-0.15, 0.15}) {
+          low = std::min(low, 1.0 - 0.5 * g * t * t + sx * std::sin(omega * t) + sy * std::cos(omega * t));
+        }
+      }
+      return low;
+    };
+    EXPECT_NEAR(lowest_corner(landing.time), 0.02, 1e-9) << omega;
+    for (double t = 0.0; t < landing.time - 1e-6; t += 1e-5) ASSERT_GT(lowest_corner(t), 0.02) << omega << " at " << t;
+    EXPECT_NEAR(landing.corner_y, lowest_corner(landing.time) - (1.0 - 0.5 * g * landing.time * landing.time), 1e-9);
+  }
+}
+
+// The impact on a corner: whatever branch it takes, its answer must satisfy the impulse laws
+// (checked here from the impulses, not from the formulas): momentum and angular momentum about
+// the centre change by J and r × J; the point stops falling (e = 0); and either it stops sliding
+// with |J_t| <= mu·J_n, or it still slides with J_t = mu·J_n against that sliding. And a rigid
+// impact with e = 0 never creates energy.
+TEST(ClosedForms, CornerImpactObeysTheImpulseLaws) {
+  const double mass = 2.0, inertia = mass * (0.4 * 0.4 + 0.3 * 0.3) / 12.0;
+  int grips = 0, slides = 0;
+  for (const double mu : {0.05, 0.4, 2.0}) {
+    for (const double omega : {-20.0, -6.0, 0.0, 6.0, 20.0}) {
+      for (const double rx : {-0.2, 0.1, 0.2}) {
+        const double ry = -0.15, vx = 3.0, vy = -3.8;
+        if (vy + omega * rx >= 0.0) continue;  // that corner is not coming down
+        const CornerImpact after = corner_impact(mass, inertia, rx, ry, vx, vy, omega, mu, 0.0);
+        const double jt = after.tangent_impulse, jn = after.normal_impulse;
+        EXPECT_NEAR(after.vx, vx + jt / mass, 1e-12);
+        EXPECT_NEAR(after.vy, vy + jn / mass, 1e-12);
+        EXPECT_NEAR(after.omega, omega + (rx * jn - ry * jt) / inertia, 1e-12);
+        EXPECT_GE(jn, 0.0);
+        const double ux = after.vx - after.omega * ry, uy = after.vy + after.omega * rx;
+        EXPECT_NEAR(uy, 0.0, 1e-9) << "mu " << mu << " omega " << omega << " rx " << rx;
+        if (after.grips) {
+          ++grips;
+          EXPECT_NEAR(ux, 0.0, 1e-9);
+          EXPECT_LE(std::abs(jt), mu * jn * (1.0 + 1e-12));
+        } else {
+          ++slides;
+          EXPECT_NEAR(std::abs(jt), mu * jn, 1e-9 * jn);
+          EXPECT_LE(jt * ux, 1e-12) << "friction against the sliding after the impact";
+        }
+        const double before = 0.5 * mass * (vx * vx + vy * vy) + 0.5 * inertia * omega * omega;
+        const double now = 0.5 * mass * (after.vx * after.vx + after.vy * after.vy) + 0.5 * inertia * after.omega * after.omega;
+        EXPECT_LE(now, before * (1.0 + 1e-12));
+      }
+    }
+  }
+  EXPECT_GT(grips, 0);
+  EXPECT_GT(slides, 0);
+}
+
 }  // namespace
 }  // namespace frictionlab

@@ -2,6 +2,8 @@
 // same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
 // mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
 
+#include <limits>
+
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
@@ -226,6 +228,48 @@ int growing_push(lua_State* state) {
   });
 }
 
+// The thrown box and its rotation-locked twin: the landing of the lowest corner, the impact on
+// it, and how far the locked box (thrown level, landing flat) goes before it stops.
+int thrown_box(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
+                                                  "centre_height", "mu_k", "restitution", "g", "clearance"});
+    const double width = fields.number("width", "m"), height = fields.number("height", "m");
+    const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
+    const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
+    const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
+    const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
+    // Box2D's polygons touch when their cores are two skins apart.
+    const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
+    const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
+    const double inertia = mass * (width * width + height * height) / 12.0;
+    // Landing flat, the face's two ends share the impact and their loads shift to keep the box
+    // from pitching: no lever arm, as for the locked box (its spin is then unchanged).
+    const theory::CornerImpact impact =
+        landing.flat ? theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * landing.time, spin, mu_k, restitution)
+                     : theory::corner_impact(mass, inertia, landing.corner_x, landing.corner_y, speed, -g * landing.time,
+                                             spin, mu_k, restitution);
+    // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
+    const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
+    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * flat.time, 0.0, mu_k,
+                                                             restitution);
+    const double slide = mu_k > 0.0 ? lands.vx * lands.vx / (2.0 * mu_k * g) : std::numeric_limits<double>::infinity();
+    lua_createtable(state, 0, 10);
+    set_number(state, "landing_time", landing.time);
+    set_number(state, "landing_angle", landing.angle / degrees);
+    lua_pushstring(state, landing.flat ? "lands flat" : impact.grips ? "grips" : "slides");
+    lua_setfield(state, -2, "corner");
+    set_number(state, "spin_after", impact.omega);
+    set_number(state, "vx_after", impact.vx);
+    set_number(state, "vy_after", impact.vy);
+    set_number(state, "locked_landing_time", flat.time);
+    set_number(state, "locked_speed_after_landing", lands.vx);
+    set_number(state, "locked_distance", speed * flat.time + slide);
+    set_number(state, "locked_stop_time", flat.time + (mu_k > 0.0 ? lands.vx / (mu_k * g) : slide));
+    return 1;
+  });
+}
+
 }  // namespace
 
 void register_theory_api(lua_State* state) {
@@ -240,6 +284,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
                                 {"growing_push", growing_push},
+                                {"thrown_box", thrown_box},
                                 {"regularized_run", regularized_run},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);
