@@ -234,6 +234,24 @@ b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
   return force;
 }
 
+void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
+  const std::string name = name_of(body);
+  if (body == nullptr || body->GetType() != b2_dynamicBody) {
+    throw InvalidInput("body '" + name + "': only a body that moves freely (dynamic) has a velocity to set");
+  }
+  using validation::require_in_range;
+  require_in_range("body '" + name + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
+  require_in_range("body '" + name + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  const b2Vec2 before = body->GetLinearVelocity();
+  body->SetLinearVelocity(velocity);
+  // Booked with the very formula mechanical_energy() uses, so the residual does not move; the
+  // ledger's kinetic line follows at once, so the panel adds up between frames too.
+  const double change = 0.5 * static_cast<double>(body->GetMass()) *
+                        (static_cast<double>(b2Dot(velocity, velocity)) - static_cast<double>(b2Dot(before, before)));
+  ledger_.work_script += change;
+  if (ledger_started_) ledger_.kinetic += change;
+}
+
 void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
   if (body == nullptr || body->GetType() != b2_kinematicBody) {
     throw InvalidInput("drive: only a kinematic body can be moved by a function of time");

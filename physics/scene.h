@@ -61,12 +61,13 @@ struct EnergyLedger {
   double work_friction = 0.0;    // dry friction, <= 0
   double work_damping = 0.0;     // viscous and quadratic terms, <= 0
   double work_impacts = 0.0;     // collisions, <= 0
+  double work_script = 0.0;      // kinetic energy given (> 0) or taken (< 0) by a script setting velocities
   double initial = 0.0;          // kinetic + spring at t = 0 (potential is counted from the start)
   double potential_reference = 0.0;  // gravity potential at t = 0, the zero of `potential`
   double dissipated() const { return -(work_friction + work_damping + work_impacts); }
   double residual() const {
     return kinetic + potential + spring - initial - work_applied - work_drivers - work_friction - work_damping -
-           work_impacts;
+           work_impacts - work_script;
   }
 };
 
@@ -141,6 +142,12 @@ class Scene {
   const std::vector<b2Vec2>& forces_applied() const { return forces_applied_; }
 
   const EnergyLedger& ledger() const { return ledger_; }
+
+  // A script setting a dynamic body's velocity between frames, as a game does. The kinetic
+  // energy it gives or takes is booked as work_script, so the ledger still closes. Throws
+  // InvalidInput for a body that is not dynamic or a velocity that is not finite within ±1e4 m/s
+  // (the limits a body's starting velocity has), naming the body.
+  void set_velocity(b2Body* body, b2Vec2 velocity);
 
   // A hand on a dynamic body, as the mouse gives it: a stiff, damped pull of the grabbed point
   // towards `target`, capped at 20·m·g, applied like any applied force (drawn, and its work
