@@ -165,7 +165,10 @@ void energy_contents(const Scene& scene, const Theme& theme) {
       return shown;
     };
     if (ImGui::BeginTable("ledger", 4, ImGuiTableFlags_SizingFixedFit)) {
-      for (std::size_t i = 0; i < std::size(work); ++i) {
+      // The script's line only in lessons whose script has set a velocity: the others keep the
+      // panel they had.
+      const std::size_t lines = ledger.work_script != 0.0 ? std::size(work) : std::size(work) - 1;
+      for (std::size_t i = 0; i < lines; ++i) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (i < 3) ImGui::TextUnformatted(stored[i].name);
