@@ -252,6 +252,20 @@ void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
   if (ledger_started_) ledger_.kinetic += change;
 }
 
+bool Scene::touching_now(b2Contact* contact) const {
+  if (touching_checked_at_ != world_steps_) {
+    touching_.clear();
+    touching_checked_at_ = world_steps_;
+  }
+  for (const auto& [known, touching] : touching_) {
+    if (known == contact) return touching;
+  }
+  b2Manifold now;
+  contact->Evaluate(&now, contact->GetFixtureA()->GetBody()->GetTransform(), contact->GetFixtureB()->GetBody()->GetTransform());
+  touching_.emplace_back(contact, now.pointCount > 0);
+  return now.pointCount > 0;
+}
+
 void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
   if (body == nullptr || body->GetType() != b2_kinematicBody) {
     throw InvalidInput("drive: only a kinematic body can be moved by a function of time");
@@ -430,6 +444,7 @@ void Scene::advance(double t, float h, double t_end, bool move) {
   }
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
+  ++world_steps_;
   if (std::string error = listener_.take_error(); !error.empty()) throw InvalidInput(error);
   for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());
 

@@ -143,6 +143,12 @@ class Scene {
 
   const EnergyLedger& ledger() const { return ledger_; }
 
+  // Whether a contact Box2D counts as touching still touches where its bodies are now. Box2D
+  // finds that a contact ended only when it next collides the pair, at the start of the next
+  // step; contact views ask here to say so in the step the bodies part. Worked out once per
+  // contact and world step, when first asked.
+  bool touching_now(b2Contact* contact) const;
+
   // A script setting a dynamic body's velocity between frames, as a game does. The kinetic
   // energy it gives or takes is booked as work_script, so the ledger still closes. Throws
   // InvalidInput for a body that is not dynamic or a velocity that is not finite within ±1e4 m/s
@@ -209,6 +215,9 @@ class Scene {
   long frame_ = 0;
   bool ledger_started_ = false;
   EnergyLedger ledger_;
+  long world_steps_ = 0;  // every world step, trial or not: what touching_now() remembers is for one
+  mutable long touching_checked_at_ = -1;
+  mutable std::vector<std::pair<const b2Contact*, bool>> touching_;
 };
 
 // The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)

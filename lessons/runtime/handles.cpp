@@ -107,20 +107,14 @@ std::optional<Field> find_field(HandleType type, const char* key) {
   return std::nullopt;
 }
 
-// The record of a and b's contact while their shapes still touch where the bodies are now.
-// Box2D finds that a contact ended only when it next collides them, at the start of the
-// following step; asked again here, a block that has just left the floor reads "none" and 0
-// in the very frame it leaves.
+// The record of a and b's contact while their shapes still touch where the bodies are now:
+// a block that has just left the floor reads "none" and 0 in the very step it leaves, not a
+// step later when Box2D notices (Scene::touching_now).
 const ContactRecord* touching_record(const Scene& scene, const b2Body* a, const b2Body* b) {
   const ContactRecord* record = scene.friction().find(a, b);
   if (record == nullptr) return nullptr;
   for (const b2ContactEdge* edge = a->GetContactList(); edge != nullptr; edge = edge->next) {
-    if (edge->other != b || !edge->contact->IsTouching()) continue;
-    b2Contact* contact = edge->contact;
-    b2Manifold now;
-    contact->Evaluate(&now, contact->GetFixtureA()->GetBody()->GetTransform(),
-                      contact->GetFixtureB()->GetBody()->GetTransform());
-    if (now.pointCount > 0) return record;
+    if (edge->other == b && edge->contact->IsTouching() && scene.touching_now(edge->contact)) return record;
   }
   return nullptr;
 }
