@@ -234,6 +234,38 @@ b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
   return force;
 }
 
+void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
+  const std::string name = name_of(body);
+  if (body == nullptr || body->GetType() != b2_dynamicBody) {
+    throw InvalidInput("body '" + name + "': only a body that moves freely (dynamic) has a velocity to set");
+  }
+  using validation::require_in_range;
+  require_in_range("body '" + name + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
+  require_in_range("body '" + name + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  const b2Vec2 before = body->GetLinearVelocity();
+  body->SetLinearVelocity(velocity);
+  // Booked with the very formula mechanical_energy() uses, so the residual does not move; the
+  // ledger's kinetic line follows at once, so the panel adds up between frames too.
+  const double change = 0.5 * static_cast<double>(body->GetMass()) *
+                        (static_cast<double>(b2Dot(velocity, velocity)) - static_cast<double>(b2Dot(before, before)));
+  ledger_.work_script += change;
+  if (ledger_started_) ledger_.kinetic += change;
+}
+
+bool Scene::touching_now(b2Contact* contact) const {
+  if (touching_checked_at_ != world_steps_) {
+    touching_.clear();
+    touching_checked_at_ = world_steps_;
+  }
+  for (const auto& [known, touching] : touching_) {
+    if (known == contact) return touching;
+  }
+  b2Manifold now;
+  contact->Evaluate(&now, contact->GetFixtureA()->GetBody()->GetTransform(), contact->GetFixtureB()->GetBody()->GetTransform());
+  touching_.emplace_back(contact, now.pointCount > 0);
+  return now.pointCount > 0;
+}
+
 void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
   if (body == nullptr || body->GetType() != b2_kinematicBody) {
     throw InvalidInput("drive: only a kinematic body can be moved by a function of time");
@@ -412,6 +444,7 @@ void Scene::advance(double t, float h, double t_end, bool move) {
   }
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
+  ++world_steps_;
   if (std::string error = listener_.take_error(); !error.empty()) throw InvalidInput(error);
   for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());
 

@@ -61,12 +61,13 @@ struct EnergyLedger {
   double work_friction = 0.0;    // dry friction, <= 0
   double work_damping = 0.0;     // viscous and quadratic terms, <= 0
   double work_impacts = 0.0;     // collisions, <= 0
+  double work_script = 0.0;      // kinetic energy given (> 0) or taken (< 0) by a script setting velocities
   double initial = 0.0;          // kinetic + spring at t = 0 (potential is counted from the start)
   double potential_reference = 0.0;  // gravity potential at t = 0, the zero of `potential`
   double dissipated() const { return -(work_friction + work_damping + work_impacts); }
   double residual() const {
     return kinetic + potential + spring - initial - work_applied - work_drivers - work_friction - work_damping -
-           work_impacts;
+           work_impacts - work_script;
   }
 };
 
@@ -142,6 +143,18 @@ class Scene {
 
   const EnergyLedger& ledger() const { return ledger_; }
 
+  // Whether a contact Box2D counts as touching still touches where its bodies are now. Box2D
+  // finds that a contact ended only when it next collides the pair, at the start of the next
+  // step; contact views ask here to say so in the step the bodies part. Worked out once per
+  // contact and world step, when first asked.
+  bool touching_now(b2Contact* contact) const;
+
+  // A script setting a dynamic body's velocity between frames, as a game does. The kinetic
+  // energy it gives or takes is booked as work_script, so the ledger still closes. Throws
+  // InvalidInput for a body that is not dynamic or a velocity that is not finite within ±1e4 m/s
+  // (the limits a body's starting velocity has), naming the body.
+  void set_velocity(b2Body* body, b2Vec2 velocity);
+
   // A hand on a dynamic body, as the mouse gives it: a stiff, damped pull of the grabbed point
   // towards `target`, capped at 20·m·g, applied like any applied force (drawn, and its work
   // counted in the ledger). Releasing leaves the body its velocity: that is how a push is given.
@@ -202,6 +215,9 @@ class Scene {
   long frame_ = 0;
   bool ledger_started_ = false;
   EnergyLedger ledger_;
+  long world_steps_ = 0;  // every world step, trial or not: what touching_now() remembers is for one
+  mutable long touching_checked_at_ = -1;
+  mutable std::vector<std::pair<const b2Contact*, bool>> touching_;
 };
 
 // The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)

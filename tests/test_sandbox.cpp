@@ -768,5 +768,34 @@ TEST(Sandbox, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   std::filesystem::remove(path);
 }
 
+TEST(Sandbox, VelocitiesTheScriptSetsAreReplayedExactlyByTheTimeBar) {
+  // The game's velocity hack, cut every frame for the first 100 frames (a counter the script
+  // keeps), with a teacher's change on the way: going back and forth replays it bit for bit.
+  ScriptFile script(lessons::with_heading(R"(
+parameter { "cut", 0.02, min = 0, max = 0.5 }
+pair { "wood", "metal", mu_s = 0.3, mu_k = 0.2 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0, velocity = { 3, 0 } }
+local frames = 0
+every_step(function(t)
+  frames = frames + 1
+  if frames <= 100 then block:scale_velocity(1 - param.cut) end
+end)
+)"));
+  Driver driver(script.path());
+  driver.frame();
+  driver.playback().run_to(0.2);
+  driver.playback().set_parameter("cut", "0.05");
+  driver.playback().run_to(1.0);
+  const b2Vec2 at_one = driver.lesson().scene().body("block")->GetPosition();
+  const double taken = driver.lesson().scene().ledger().work_script;
+  ASSERT_LT(taken, 0.0);
+  driver.playback().scrub_to(0.1);
+  driver.playback().scrub_to(1.0);
+  EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().x, at_one.x);
+  EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().y, at_one.y);
+  EXPECT_EQ(driver.lesson().scene().ledger().work_script, taken);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -122,7 +122,9 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
   const bool tabbed = static_cast<bool>(style.parameters_panel);
   const float model_height = tabbed ? 0.0f : height_for(4);
-  const float energy_height = height_for(6) + (tabbed ? 4.0f * s : 0.0f);
+  // The ledger's line for velocities a script set is there only once one has (energy_contents).
+  const std::size_t ledger_lines = lesson.scene().ledger().work_script != 0.0 ? 7 : 6;
+  const float energy_height = height_for(ledger_lines) + (tabbed ? 4.0f * s : 0.0f);
   const float gap = 4.0f * s;
   // Parameters and the theory table share what the ledger and model card leave. The table
   // gets room for names that wrap onto a second line, but at most half when the parameters

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 #include "lessons/runtime/model_card.h"
@@ -154,7 +155,7 @@ void energy_contents(const Scene& scene, const Theme& theme) {
     const Line stored[] = {{"kinetic", ledger.kinetic}, {"gravity", ledger.potential}, {"spring", ledger.spring}};
     const Line work[] = {{"work: applied", ledger.work_applied}, {"driven bodies", ledger.work_drivers},
                          {"dry friction", ledger.work_friction}, {"drag (c, b)", ledger.work_damping},
-                         {"impacts", ledger.work_impacts}};
+                         {"impacts", ledger.work_impacts}, {"velocity set by the script", ledger.work_script}};
     // One resolution for every line, 0.1 mJ, so the columns line up and add up by eye.
     const auto joules = [](double value) {
       char text[32];
@@ -164,7 +165,10 @@ void energy_contents(const Scene& scene, const Theme& theme) {
       return shown;
     };
     if (ImGui::BeginTable("ledger", 4, ImGuiTableFlags_SizingFixedFit)) {
-      for (std::size_t i = 0; i < 5; ++i) {
+      // The script's line only in lessons whose script has set a velocity: the others keep the
+      // panel they had.
+      const std::size_t lines = ledger.work_script != 0.0 ? std::size(work) : std::size(work) - 1;
+      for (std::size_t i = 0; i < lines; ++i) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (i < 3) ImGui::TextUnformatted(stored[i].name);
@@ -182,7 +186,7 @@ void energy_contents(const Scene& scene, const Theme& theme) {
     const double residual = ledger.residual();
     double largest = ledger.initial;
     for (double amount : {ledger.kinetic, ledger.potential, ledger.spring, ledger.work_applied, ledger.work_drivers,
-                          ledger.work_friction, ledger.work_damping, ledger.work_impacts}) {
+                          ledger.work_friction, ledger.work_damping, ledger.work_impacts, ledger.work_script}) {
       largest = std::max(largest, std::abs(amount));
     }
     // A share of nothing says nothing: a block at rest has only float noise in its books.

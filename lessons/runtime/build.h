@@ -92,8 +92,12 @@ struct LessonBuild {
   bool lua_probes = false;  // some probe is a Lua function
   std::vector<Rope> ropes;
   std::vector<std::shared_ptr<RememberedValues>> remembered;  // forgotten when a parameter changes live
-  // The metatables of the handle types (body, spring, force, contact), by HandleType.
-  const void* metatables[4] = {nullptr, nullptr, nullptr, nullptr};
+  // The force functions' among them, also forgotten when the script sets a velocity: a force
+  // may read the state, and the next step must apply its answer for the state as it now is.
+  std::vector<std::shared_ptr<RememberedValues>> force_memories;
+  bool in_every_step = false;  // an every_step function is running: velocities may be set
+  // The metatables of the handle types (body, spring, force, contact, rope), by HandleType.
+  const void* metatables[5] = {nullptr, nullptr, nullptr, nullptr, nullptr};
   bool building = true;
 
   Parameter* find_parameter(const std::string& name);

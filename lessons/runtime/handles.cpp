@@ -7,10 +7,12 @@
 #include <optional>
 #include <vector>
 
+#include "physics/validation.h"
+
 namespace frictionlab::lessons {
 
-const char* const type_names[4] = {"frictionlab.body", "frictionlab.spring", "frictionlab.force",
-                                   "frictionlab.contact"};
+const char* const type_names[5] = {"frictionlab.body", "frictionlab.spring", "frictionlab.force",
+                                   "frictionlab.contact", "frictionlab.rope"};
 
 namespace {
 
@@ -64,6 +66,7 @@ const std::vector<FieldName>& field_names(HandleType type) {
   static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
                                                 {"length", Field::length}, {"tension", Field::tension}};
   static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
+  static const std::vector<FieldName> rope = {{"tension", Field::tension}};
   static const std::vector<FieldName> contact = {
       {"friction", Field::friction}, {"fx", Field::fx},         {"fy", Field::fy},
       {"normal", Field::normal},     {"nx", Field::nx},         {"ny", Field::ny},
@@ -75,6 +78,7 @@ const std::vector<FieldName>& field_names(HandleType type) {
     case body_type: return body;
     case spring_type: return spring;
     case force_type: return force;
+    case rope_type: return rope;
     case contact_type: break;
   }
   return contact;
@@ -84,6 +88,7 @@ const std::vector<FieldName>& field_names(HandleType type) {
 struct Handle {
   HandleType type;
   const b2Body* body = nullptr;   // a body
+  const b2Joint* joint = nullptr; // a rope
   size_t index = 0;               // a spring or a force
   ContactHandle contact{nullptr, nullptr, nullptr};
   // How a probe reads a body: at which of its points, along which unit direction (distance
@@ -101,28 +106,16 @@ Handle copy_handle(const void* data, HandleType type) {
   if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
   if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
   if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
+  if (type == rope_type) handle.joint = static_cast<const RopeHandle*>(data)->joint;
   return handle;
 }
 
 // Whatever handle is at `index`, found by its metatable.
 std::optional<Handle> any_handle(lua_State* state, int index) {
-  for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
+  for (const HandleType type : {body_type, spring_type, force_type, contact_type, rope_type}) {
     if (const void* data = handle_of(state, index, type)) return copy_handle(data, type);
   }
   return std::nullopt;
-}
-
-// The record a contact view reads: of the two bodies' touch, or of one foot's.
-const ContactRecord* find_record(const Scene& scene, const ContactHandle& view) {
-  if (view.foot == nullptr) return scene.friction().find(view.a, view.b);
-  for (const b2ContactEdge* edge = view.a->GetContactList(); edge != nullptr; edge = edge->next) {
-    b2Contact* touch = edge->contact;
-    if (edge->other != view.b || !touch->IsTouching()) continue;
-    if (touch->GetFixtureA() != view.foot && touch->GetFixtureB() != view.foot) continue;
-    const auto found = scene.friction().contacts().find(touch);
-    return found == scene.friction().contacts().end() ? nullptr : &found->second;
-  }
-  return nullptr;
 }
 
 std::optional<Field> find_field(HandleType type, const char* key) {
@@ -132,7 +125,45 @@ std::optional<Field> find_field(HandleType type, const char* key) {
   return std::nullopt;
 }
 
+// The record of a and b's contact while their shapes still touch where the bodies are now:
+// a block that has just left the floor reads "none" and 0 in the very step it leaves, not a
+// step later when Box2D notices (Scene::touching_now).
+const ContactRecord* touching_record(const Scene& scene, const b2Body* a, const b2Body* b) {
+  const ContactRecord* record = scene.friction().find(a, b);
+  if (record == nullptr) return nullptr;
+  for (const b2ContactEdge* edge = a->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (edge->other == b && edge->contact->IsTouching() && scene.touching_now(edge->contact)) return record;
+  }
+  return nullptr;
+}
+
+// The record a contact view reads: of the two bodies' touch, or of one foot's (touching where
+// the bodies are now, as touching_record).
+const ContactRecord* find_record(const Scene& scene, const ContactHandle& view) {
+  if (view.foot == nullptr) return touching_record(scene, view.a, view.b);
+  for (const b2ContactEdge* edge = view.a->GetContactList(); edge != nullptr; edge = edge->next) {
+    b2Contact* touch = edge->contact;
+    if (edge->other != view.b || !touch->IsTouching()) continue;
+    if (touch->GetFixtureA() != view.foot && touch->GetFixtureB() != view.foot) continue;
+    if (!scene.touching_now(touch)) return nullptr;
+    const auto found = scene.friction().contacts().find(touch);
+    return found == scene.friction().contacts().end() ? nullptr : &found->second;
+  }
+  return nullptr;
+}
+
+// A rope's tension from the last step's impulse (positive when it pulls). Box2D reports the
+// force's size; its sign is along the rope from the pulley to the end on body B.
+double rope_tension(const Scene& scene, const b2Joint* joint) {
+  const auto* pulley = static_cast<const b2PulleyJoint*>(joint);
+  const double per_second = scene.settings().hz * scene.settings().substeps;
+  const b2Vec2 force = pulley->GetReactionForce(static_cast<float>(per_second));
+  const b2Vec2 out = pulley->GetAnchorB() - pulley->GetGroundAnchorB();
+  return b2Dot(force, out) >= 0.0f ? force.Length() : -force.Length();
+}
+
 double read_field(const Scene& scene, const Handle& handle, Field field) {
+  if (handle.type == rope_type) return rope_tension(scene, handle.joint);
   const b2Body* body = handle.body;
   if (handle.type == body_type) {
     // As in the CSV: a body's x, y are its origin and its vx, vy its centre of mass's velocity.
@@ -212,7 +243,7 @@ std::string field_list(HandleType type, bool in_lua = false) {
   return list;
 }
 
-const char* const handle_words[] = {"a body", "a spring", "a force", "a contact"};
+const char* const handle_words[] = {"a body", "a spring", "a force", "a contact", "a rope"};
 
 int world_point(lua_State* state) {
   return guarded(state, [&] {
@@ -223,6 +254,73 @@ int world_point(lua_State* state) {
     lua_pushnumber(state, world.y);
     return 2;
   });
+}
+
+// block:set_velocity(vx, vy) and block:scale_velocity(factor), as a game changes a body's
+// velocity between frames. Only from an every_step function: there the frame is over, so the
+// next step starts from the new velocity, the record (and a replay) holds it, and the ledger
+// books the kinetic energy it gives or takes.
+b2Body* velocity_body(lua_State* state, const char* call) {
+  BodyHandle* handle = body_handle(state, 1, (std::string(call) + "'s body (call it as block:" + call + "(...))").c_str());
+  if (!build_of(state).in_every_step) {
+    throw InvalidInput(std::string(call) + " works only inside an every_step function, between frames; a body's "
+                       "starting velocity is given where it is made, as in velocity = { 2, 0 }");
+  }
+  return handle->body;
+}
+
+double velocity_argument(lua_State* state, int index, const char* call, const char* what, double limit,
+                         const char* unit) {
+  if (lua_type(state, index) != LUA_TNUMBER) {
+    throw InvalidInput(std::string(call) + ": " + what + " must be a number, got " + describe(state, index));
+  }
+  const double value = lua_tonumber(state, index);
+  validation::require_in_range(std::string(call) + ": " + what, value, -limit, limit, false, unit);
+  return value;
+}
+
+void set_and_forget(lua_State* state, b2Body* body, double vx, double vy) {
+  LessonBuild& build = build_of(state);
+  validation::require_in_range("body '" + body_name(state, body) + "': velocity x", vx, -1e4, 1e4, false, " m/s");
+  validation::require_in_range("body '" + body_name(state, body) + "': velocity y", vy, -1e4, 1e4, false, " m/s");
+  build.scene->set_velocity(body, {static_cast<float>(vx), static_cast<float>(vy)});
+  for (const auto& memory : build.force_memories) memory->filled = 0;
+}
+
+int set_velocity(lua_State* state) {
+  return guarded(state, [&] {
+    b2Body* body = velocity_body(state, "set_velocity");
+    const double vx = velocity_argument(state, 2, "set_velocity", "vx", 1e4, " m/s");
+    const double vy = velocity_argument(state, 3, "set_velocity", "vy", 1e4, " m/s");
+    set_and_forget(state, body, vx, vy);
+    return 0;
+  });
+}
+
+int scale_velocity(lua_State* state) {
+  return guarded(state, [&] {
+    b2Body* body = velocity_body(state, "scale_velocity");
+    const double factor = velocity_argument(state, 2, "scale_velocity", "factor", 1e4, "");
+    const b2Vec2 v = body->GetLinearVelocity();
+    set_and_forget(state, body, factor * v.x, factor * v.y);
+    return 0;
+  });
+}
+
+std::string handle_name(lua_State* state, const Handle& handle) {
+  const Scene& scene = *build_of(state).scene;
+  switch (handle.type) {
+    case body_type: return body_name(state, handle.body);
+    case spring_type: return scene.springs()[handle.index].name;
+    case force_type: return scene.applied_forces()[handle.index].name;
+    case rope_type:
+      for (const Rope& rope : build_of(state).ropes) {
+        if (rope.joint == handle.joint) return rope.name;
+      }
+      return "?";
+    case contact_type: break;
+  }
+  return "";
 }
 
 // __index of every handle type: its name (or a contact's state), a method, or a number.
@@ -252,14 +350,16 @@ int handle_index(lua_State* state) {
       }
       lua_pushnumber(state, read_field(scene, *handle, *field));
     } else if (std::strcmp(key, "name") == 0 && handle->type != contact_type) {
-      const std::string name = handle->type == body_type     ? body_name(state, handle->body)
-                               : handle->type == spring_type ? scene.springs()[handle->index].name
-                                                             : scene.applied_forces()[handle->index].name;
-      lua_pushstring(state, name.c_str());
+      lua_pushstring(state, handle_name(state, *handle).c_str());
     } else if (std::strcmp(key, "world_point") == 0 && handle->type == body_type) {
       lua_pushcfunction(state, world_point);
+    } else if (std::strcmp(key, "set_velocity") == 0 && handle->type == body_type) {
+      lua_pushcfunction(state, set_velocity);
+    } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {
+      lua_pushcfunction(state, scale_velocity);
     } else {
-      const std::string extra = handle->type == body_type      ? "name, world_point(x, y), "
+      const std::string extra = handle->type == body_type      ? "name, world_point(x, y), set_velocity(vx, vy), "
+                                                                 "scale_velocity(factor), "
                                 : handle->type == contact_type ? "state, "
                                                                : "name, ";
       throw InvalidInput(std::string(handle_words[handle->type]) + " has no field '" +
@@ -280,6 +380,7 @@ int handle_text(lua_State* state) {
     case body_type: lua_pushfstring(state, "body '%s'", body_name(state, handle->body).c_str()); break;
     case spring_type: lua_pushfstring(state, "spring '%s'", scene.springs()[handle->index].name.c_str()); break;
     case force_type: lua_pushfstring(state, "force '%s'", scene.applied_forces()[handle->index].name.c_str()); break;
+    case rope_type: lua_pushfstring(state, "rope '%s'", handle_name(state, *handle).c_str()); break;
     case contact_type:
       lua_pushfstring(state, "contact of '%s' and '%s'", body_name(state, handle->contact.a).c_str(),
                       body_name(state, handle->contact.b).c_str());
@@ -290,7 +391,8 @@ int handle_text(lua_State* state) {
 
 int refuse_write(lua_State* state) {
   return guarded(state, [&]() -> int {
-    throw InvalidInput("handles are read-only: a body moves by forces, springs and drive{}, and its setup is given "
+    throw InvalidInput("handles are read-only: a body moves by forces, springs and drive{} (or block:set_velocity(vx, vy) in "
+                       "an every_step function), and its setup is given "
                        "where it is made");
   });
 }
@@ -301,6 +403,12 @@ void push_body(lua_State* state, b2Body* body, bool is_surface, b2Vec2 origin, b
   auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
   *handle = {body, is_surface, origin, along, length};
   luaL_setmetatable(state, type_names[body_type]);
+}
+
+void push_rope(lua_State* state, const b2Joint* joint) {
+  auto* handle = static_cast<RopeHandle*>(lua_newuserdatauv(state, sizeof(RopeHandle), 0));
+  handle->joint = joint;
+  luaL_setmetatable(state, type_names[rope_type]);
 }
 
 void push_indexed(lua_State* state, HandleType type, size_t index) {
@@ -378,7 +486,7 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
 void register_handles(lua_State* state) {
   lua_pushcfunction(state, contact);
   lua_setglobal(state, "contact");
-  for (const HandleType type : {body_type, spring_type, force_type, contact_type}) {
+  for (const HandleType type : {body_type, spring_type, force_type, contact_type, rope_type}) {
     luaL_newmetatable(state, type_names[type]);
     build_of(state).metatables[type] = lua_topointer(state, -1);
     lua_pushinteger(state, type);

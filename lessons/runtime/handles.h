@@ -9,8 +9,8 @@
 namespace frictionlab::lessons {
 
 // The handle types a script holds, each with its own metatable.
-enum HandleType { body_type, spring_type, force_type, contact_type };
-extern const char* const type_names[4];
+enum HandleType { body_type, spring_type, force_type, contact_type, rope_type };
+extern const char* const type_names[5];
 
 // A body as the script holds it. Ground and inclines also carry their surface, a line along
 // which `on = ..., at = s` places things: origin, and the unit direction s grows in.
@@ -27,6 +27,10 @@ struct SpringHandle {
 struct ForceHandle {
   size_t index;
 };
+// rope{}: the pulley joint it made.
+struct RopeHandle {
+  const b2Joint* joint;
+};
 // contact(a, b): a view of the touching pair, read when a field is read. contact(a, b, k) is
 // the view of one foot of a body on feet: the touch of that foot's fixture alone.
 struct ContactHandle {
@@ -40,6 +44,7 @@ inline const b2Vec2 origin_point{0.0f, 0.0f};
 
 void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
                b2Vec2 along = {1.0f, 0.0f}, float length = 0.0f);
+void push_rope(lua_State* state, const b2Joint* joint);
 // Pushes a new handle of `type` holding `index` (a spring's or a force's place in the scene).
 void push_indexed(lua_State* state, HandleType type, size_t index);
 

@@ -101,6 +101,7 @@ int measure_frame(lua_State* state) {
       build.numbers_returned(probe.function, 1, probe.what, &probe.value, build.scene->time());
     }
     const double now = build.scene->time();
+    build.in_every_step = true;  // after_frame clears it, whatever happens here
     for (const int reference : build.every_step) {
       lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
       lua_pushnumber(state, now);
@@ -114,6 +115,10 @@ int measure_frame(lua_State* state) {
 
 void LessonBuild::after_frame() {
   if (!lua_probes && every_step.empty()) return;
+  struct Clear {
+    bool& flag;
+    ~Clear() { flag = false; }
+  } clear{in_every_step};
   lua_pushcfunction(sandbox.state(), measure_frame);
   sandbox.call(0, 0);
 }

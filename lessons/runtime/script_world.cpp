@@ -29,8 +29,41 @@ struct Placement {
   float angle;
 };
 
+struct TopFace {
+  b2Vec2 centre;  // world
+  float width;
+};
+
+// The flat top of a body something is placed on with on = body: the highest edge of its
+// polygon, which must be level. A rotated body's top is refused rather than guessed (a box at
+// 0.1° has a corner for a top), as is a circle's (nothing rests on one).
+TopFace top_face(lua_State* state, Fields& fields, const b2Body* below) {
+  const std::string what = fields.what() + ": on = " + body_name(state, below);
+  if (below->GetAngle() != 0.0f) {
+    throw InvalidInput(what + " is turned (angle ≠ 0); on = a body needs it level; place this one with x, y and angle");
+  }
+  const b2Fixture* fixture = below->GetFixtureList();
+  if (fixture == nullptr || fixture->GetType() != b2Shape::e_polygon) {
+    throw InvalidInput(what + " has no flat top face (only a box or a polygon has one); place this one with x and y");
+  }
+  const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+  float top = -b2_maxFloat, left = b2_maxFloat, right = -b2_maxFloat;
+  for (int i = 0; i < shape->m_count; ++i) top = std::max(top, shape->m_vertices[i].y);
+  int on_top = 0;
+  for (int i = 0; i < shape->m_count; ++i) {
+    if (shape->m_vertices[i].y < top - 1e-5f) continue;
+    ++on_top;
+    left = std::min(left, shape->m_vertices[i].x);
+    right = std::max(right, shape->m_vertices[i].x);
+  }
+  if (on_top < 2) throw InvalidInput(what + " has a corner on top, not a level face; place this one with x and y");
+  return {below->GetWorldPoint({0.5f * (left + right), top}), right - left};
+}
+
 // Where a body goes: at x, y and angle (degrees), or resting on a surface, `at` metres along
-// it, lifted by `lift` (its centre's height above the surface plus Box2D's resting gap).
+// it, lifted by `lift` (its centre's height above the surface plus Box2D's resting gap). The
+// surface is a ground{} or an incline{}, or the level top face of any other body, `at` then
+// measured from the face's middle.
 Placement place(lua_State* state, Fields& fields, float lift) {
   float angle = static_cast<float>(fields.number("angle", "°", 0.0) * degrees);
   if (!fields.has("on")) {
@@ -40,7 +73,14 @@ Placement place(lua_State* state, Fields& fields, float lift) {
   if (fields.has("x") || fields.has("y")) throw InvalidInput(fields.what() + ": give either on = ... or x and y, not both");
   fields.push("on");
   const BodyHandle* surface = body_handle(state, -1, fields.what() + ": on");
-  if (!surface->is_surface) throw InvalidInput(fields.what() + ": on must be a ground{} or an incline{}");
+  if (!surface->is_surface) {
+    const b2Body* below = surface->body;
+    lua_pop(state, 1);
+    const TopFace top = top_face(state, fields, below);
+    const double half = 0.5 * top.width;
+    const float at = static_cast<float>(fields.number_in("at", "m", 0.0, -half, half));
+    return {{top.centre.x + at, top.centre.y + lift}, angle};
+  }
   const b2Vec2 origin = surface->origin, along = surface->along;
   const float length = surface->length;
   const bool is_ground = along.y == 0.0f && along.x == 1.0f && origin.x == -0.5f * length;
@@ -311,13 +351,18 @@ int incline(lua_State* state) {
 
 // A function of time the script gave for a body, a hand or a force: called with t, it must
 // return `count` numbers.
-// Functions of time are taken to depend on t (and parameters) alone, so an answer for the
-// same t is reused.
+// An answer for the same t is reused (the scene asks at t and t + h several times a step).
+// A function may read the world (block.x, block.vx): it sees it as it is when first asked
+// about t. The scene asks every function before the step that starts at t moves
+// anything, so a force sees the state at the start of its step, and a hand or a driven body
+// asked where it will be at t + h sees the state at t (the path is planned a step ahead).
+// A force's answer is forgotten when the script sets a velocity (`is_force`).
 std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build, int reference, int count,
-                                                              std::string what) {
+                                                              std::string what, bool is_force = false) {
   LessonBuild* owner = &build;
   auto memory = std::make_shared<RememberedValues>();
   build.remembered.push_back(memory);
+  if (is_force) build.force_memories.push_back(memory);
   return [owner, reference, count, what, memory](double t) {
     for (int i = 0; i < memory->filled; ++i) {
       if (memory->times[i] == t) {
@@ -397,7 +442,8 @@ int rope(lua_State* state) {
     b2PulleyJointDef definition;
     definition.Initialize(from, to, pulley, pulley, a, b, 1.0f);
     build.ropes.push_back({name, build.scene->world().CreateJoint(&definition)});
-    return 0;
+    push_rope(state, build.ropes.back().joint);
+    return 1;
   });
 }
 
@@ -414,7 +460,7 @@ int force(lua_State* state) {
     made.local_point = fields.point("at", origin_point);
     if (fields.push_function("force")) {
       const auto push = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2,
-                                         fields.what() + ": the force function (t -> fx, fy in N)");
+                                         fields.what() + ": the force function (t -> fx, fy in N)", true);
       made.force = [push](double t) {
         const std::array<double, 2> f = push(t);
         return b2Vec2{static_cast<float>(f[0]), static_cast<float>(f[1])};
