@@ -414,4 +414,36 @@ CornerImpact corner_impact(double mass, double inertia, double rx, double ry, do
   return impact;
 }
 
+SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, double g) {
+  const char* where = "slope_launch";
+  require_non_negative(where, "v0", v0);
+  require_slope_angle(where, angle);
+  require_non_negative(where, "mu_s", mu_s);
+  require_non_negative(where, "mu_k", mu_k);
+  require_positive(where, "g", g);
+  const double deceleration = g * (std::sin(angle) + mu_k * std::cos(angle));
+  if (deceleration <= 0.0) return {infinity, infinity, true};  // flat and frictionless: it never stops
+  return {v0 * v0 / (2.0 * deceleration), v0 / deceleration, std::tan(angle) <= mu_s};
+}
+
+VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g) {
+  const char* where = "velocity_hack";
+  require_non_negative(where, "v0", v0);
+  if (!(keep >= 0.0 && keep < 1.0)) reject(where, "keep", "in [0, 1)", keep);
+  require_positive(where, "h", h);
+  require_slope_angle(where, angle);
+  require_positive(where, "g", g);
+  const double pull = g * std::sin(angle) * h;  // speed gravity takes away in a frame
+  // v_(k+1) = keep·(v_k − pull), and the frame moves the body h·(v_k − pull): v_k tends to
+  // v* = −keep·pull/(1 − keep), as v* + (v0 − v*)·keep^k.
+  const double drift = -keep * pull / (1.0 - keep);
+  if (pull == 0.0) return {h * v0 / (1.0 - keep), 0.0};
+  // Frames move it up while v_k > pull; sum those moves in closed form (a geometric series).
+  const double excess = v0 - drift, threshold = pull - drift;  // v_k − v* = excess·keep^k
+  if (excess <= threshold || keep == 0.0) return {std::max(0.0, h * (v0 - pull)), drift};
+  const double frames = std::floor(std::log(threshold / excess) / std::log(keep)) + 1.0;  // k with v_k > pull
+  const double geometric = (1.0 - std::pow(keep, frames)) / (1.0 - keep);
+  return {h * (excess * geometric + frames * (drift - pull)), drift};
+}
+
 }  // namespace frictionlab::theory

@@ -147,4 +147,25 @@ struct CornerImpact {
 CornerImpact corner_impact(double mass, double inertia, double rx, double ry, double vx, double vy, double omega,
                            double mu, double restitution);
 
+// A block launched up a slope of `angle` (0: flat ground) at v0 with kinetic friction mu_k:
+// it slows at g·(sin θ + mu_k·cos θ) and stops after v0²/(2·g·(sin θ + mu_k·cos θ)); it then
+// stays where it stopped if tan θ <= mu_s, and otherwise slides back down.
+struct SlopeLaunch {
+  double distance;  // m up the slope
+  double time;      // s until it stops
+  bool stays;
+};
+SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, double g);
+
+// The games' velocity hack of the tribology article: no friction at all, but each frame of
+// length h the velocity is multiplied by `keep` (1 − f) after the frame has moved the body
+// (which, on a slope, includes gravity's g·sin θ·h down the slope). Exact for that discrete
+// process: on the flat it goes h·v0/(1 − keep) in all, linear in v0 where friction's distance
+// grows as v0²; on any slope it never holds, but drifts down towards −keep·g·sin θ·h/(1 − keep).
+struct VelocityHack {
+  double distance_up;  // m, the farthest it gets along its launch (the whole slide on the flat)
+  double drift_speed;  // m/s up the slope that it tends to: 0 on the flat, negative on a slope
+};
+VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g);
+
 }  // namespace frictionlab::theory

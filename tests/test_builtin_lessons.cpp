@@ -132,7 +132,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"thrown_box", {{"spin", "-20"}}, ""}, Case{"thrown_box", {{"throw_speed", "0.5"}}, ""},
                       Case{"thrown_box", {{"throw_speed", "8"}, {"mass", "20"}}, ""},
                       Case{"thrown_box", {{"mu_s", "0.1"}, {"mu_k", "0.05"}, {"spin", "-20"}}, ""},
-                      Case{"thrown_box", {{"mu_s", "2"}, {"mu_k", "2"}}, ""}));
+                      Case{"thrown_box", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // terrain: on slopes below and above every surface's sticking angle (ice's is
+                      // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
+                      // stickiest asphalt the sliders allow.
+                      Case{"terrain", {{"slope", "3"}}, ""}, Case{"terrain", {{"slope", "15"}}, ""},
+                      Case{"terrain", {{"slope", "30"}}, ""}, Case{"terrain", {{"launch_speed", "0.5"}}, ""},
+                      Case{"terrain", {{"launch_speed", "5"}, {"slope", "10"}}, ""}, Case{"terrain", {{"mass", "10"}}, ""},
+                      Case{"terrain", {{"asphalt.mu_s", "2"}, {"asphalt.mu_k", "2"}, {"slope", "20"}}, ""}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

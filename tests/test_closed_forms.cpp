@@ -501,5 +501,46 @@ TEST(ClosedForms, CornerImpactObeysTheImpulseLaws) {
   EXPECT_GT(slides, 0);
 }
 
+// Launched up a slope: against the event solver (gravity along the slope as a constant force),
+// where it stops, and whether it stays there.
+TEST(ClosedForms, SlopeLaunchMatchesEventSolver) {
+  for (const double angle : {0.0, 0.2, 0.5}) {
+    for (const double mu_k : {0.05, 0.45}) {
+      const double mu_s = mu_k + 0.1, mass = 1.0;
+      OneDofBlock block;
+      block.mass = mass;
+      block.normal_force = mass * g * std::cos(angle);
+      block.constant_force = -mass * g * std::sin(angle);
+      block.pair = {mu_s, mu_k, 0.0, 0.0};
+      block.v0 = 3.0;
+      const SlopeLaunch launch = slope_launch(3.0, angle, mu_s, mu_k, g);
+      const Trajectory numeric = solve_event_rk4(block, launch.time + 1.0, 1e-4);
+      const Event& stop = numeric.events().front();
+      EXPECT_NEAR(stop.t, launch.time, 1e-9) << angle << " " << mu_k;
+      EXPECT_NEAR(stop.x, launch.distance, 1e-9) << angle << " " << mu_k;
+      EXPECT_EQ(launch.stays, stop.kind == EventKind::stop) << angle << " " << mu_k;
+    }
+  }
+}
+
+// The velocity hack against the discrete process itself, frame by frame.
+TEST(ClosedForms, VelocityHackMatchesTheFramesItSums) {
+  for (const double angle : {0.0, 0.1, 0.35}) {
+    for (const double keep : {0.0, 0.5, 0.99}) {
+      const double h = 1.0 / 240.0, v0 = 3.0, pull = g * std::sin(angle) * h;
+      double x = 0.0, v = v0, farthest = 0.0;
+      for (int frame = 0; frame < 200000; ++frame) {
+        x += h * (v - pull);
+        v = keep * (v - pull);
+        farthest = std::max(farthest, x);
+      }
+      const VelocityHack hack = velocity_hack(v0, keep, h, angle, g);
+      EXPECT_NEAR(hack.distance_up, farthest, 1e-9 * std::max(1.0, farthest)) << angle << " " << keep;
+      EXPECT_NEAR(hack.drift_speed, v, 1e-9) << angle << " " << keep;
+    }
+  }
+  EXPECT_NEAR(velocity_hack(3.0, 0.99, 0.01, 0.0, g).distance_up, 0.01 * 3.0 / 0.01, 1e-9);
+}
+
 }  // namespace
 }  // namespace frictionlab

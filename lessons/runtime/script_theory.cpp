@@ -270,6 +270,34 @@ int thrown_box(lua_State* state) {
   });
 }
 
+int slope_launch(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.slope_launch", {"v0", "angle", "mu_s", "mu_k", "g"});
+    const theory::SlopeLaunch launch = theory::slope_launch(
+        fields.number("v0", "m/s"), fields.number_in("angle", "°", 0.0, 90.0) * degrees, fields.number("mu_s", ""),
+        fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 3);
+    set_number(state, "distance", launch.distance);
+    set_number(state, "time", launch.time);
+    lua_pushstring(state, launch.stays ? "stays" : "slides back");
+    lua_setfield(state, -2, "then");
+    return 1;
+  });
+}
+
+int velocity_hack(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g"});
+    const theory::VelocityHack hack = theory::velocity_hack(
+        fields.number("v0", "m/s"), fields.number("keep", ""), fields.number("step", "s"),
+        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 2);
+    set_number(state, "distance_up", hack.distance_up);
+    set_number(state, "drift_speed", hack.drift_speed);
+    return 1;
+  });
+}
+
 }  // namespace
 
 void register_theory_api(lua_State* state) {
@@ -285,6 +313,8 @@ void register_theory_api(lua_State* state) {
                                 {"stacked_blocks", stacked_blocks},
                                 {"growing_push", growing_push},
                                 {"thrown_box", thrown_box},
+                                {"slope_launch", slope_launch},
+                                {"velocity_hack", velocity_hack},
                                 {"regularized_run", regularized_run},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);

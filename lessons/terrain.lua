@@ -1,0 +1,130 @@
+-- terrain: the tribology article's terrain (asphalt, grass, ice) and the games' velocity hack.
+-- Three wooden boxes are launched together across three surfaces; Coulomb friction mu_k·N stops
+-- each after v0²/(2·g·(sin θ + mu_k·cos θ)), up the slope when there is one, and a box stays
+-- where it stopped if tan θ <= mu_s. A fourth box, hack_box, feels no friction at all: instead
+-- its velocity is cut by a fixed fraction every frame, "reducing the velocity by a percentage
+-- based on the surface type", as many games do, tuned so that it stops where the asphalt box
+-- does on flat ground at the default speed. It looks right there, and nowhere else: on a slope
+-- it never holds and drifts back down; at another speed it stops elsewhere (its distance grows
+-- as v0, friction's as v0²); it would slide from the gentlest push, however small against mu_s·N;
+-- nothing in it depends on the normal force; and its tuning holds only at one frame rate.
+
+local function launch(surface)
+  return theory.slope_launch { v0 = param.launch_speed, angle = param.slope, mu_s = param[surface .. ".mu_s"],
+                               mu_k = param[surface .. ".mu_k"] }
+end
+
+lesson {
+  title = "Asphalt, grass, ice, and the games' velocity hack",
+  question = "Why does a box that a game slows by cutting its speed every frame look wrong on a slope, or when thrown harder?",
+  -- Until the slowest box (the ice's) has stopped, and a second more to see what it does then.
+  duration = function()
+    local longest = 3  -- long enough, on a slope, to see the hack box drift back down
+    for _, surface in ipairs { "asphalt", "grass", "ice" } do longest = math.max(longest, launch(surface).time + 1) end
+    return math.min(longest, 60)
+  end,
+  order = 25,
+  moments = {
+    { "sliding", at = 0.4, shows = function() return value_at("asphalt_box_speed", time()) > 0.5 end },
+    { "hack_drifts_on_a_slope", at = 2.5, set = { slope = 15 }, readme = true,
+      shows = function() return value_at("hack_box_speed", time()) < -0.05 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local launch_speed = parameter { "launch_speed", 3, min = 0.5, max = 5, unit = "m/s", text = "launch speed" }
+local mass = parameter { "mass", 1, min = 0.1, max = 10, unit = "kg", text = "mass of each box" }
+local slope = parameter { "slope", 0, min = 0, max = 30, unit = "°", text = "slope (0: flat); the boxes go up it" }
+
+-- A wooden box on each surface (the presets: asphalt 0.55/0.45, grass 0.45/0.35, ice 0.08/0.04).
+pair { "wood", "asphalt", name = "asphalt" }
+pair { "wood", "grass", name = "grass" }
+pair { "wood", "ice", name = "ice" }
+material { "smooth", density = 1000, note = "no friction at all: the hack does the slowing" }
+pair { "wood", "smooth", mu_s = 0, mu_k = 0, sliders = false }
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3, sliders = false }  -- the boxes never meet
+
+-- The hack's cut, tuned at the default speed (3 m/s) and the asphalt's default mu_k (0.45) to
+-- stop where the asphalt box stops on the flat: h·v0/f = v0²/(2·mu_k·g), so f = 2·mu_k·g·h/v0
+-- at this lesson's frame rate. (A game tuned at 60 frames a second is off at 240.)
+local keep = 1 - 2 * 0.45 * g * step_length() / 3
+
+-- World -----------------------------------------------------------------------------------
+-- Four lanes 1.5 m apart. On the flat each is a floor; on a slope each is a thin ramp 20 m long
+-- (a solid wedge would reach up into the lane above), and the box starts 5 m up it, with room to
+-- slide back. The boxes
+-- are 2.5 times as wide as tall, so friction up to mu_k = 2 cannot pitch them over.
+local up = { math.cos(math.rad(slope)), math.sin(math.rad(slope)) }
+local across = { -up[2], up[1] }  -- out of the ramp's top face
+local boxes = {}
+for i, surface in ipairs { "asphalt", "grass", "ice", "smooth" } do
+  local y = 4.5 - 1.5 * (i - 1)
+  local name = surface == "smooth" and "hack_box" or surface .. "_box"
+  local placed
+  if slope == 0 then
+    placed = { on = ground { surface .. "_lane", material = surface, y = y, thickness = 0.2 }, at = 0 }
+  else
+    local length, thick = 20, 0.2
+    polygon { surface .. "_lane", material = surface, kind = "static", x = 0, y = y,
+              points = { { 0, 0 }, { length * up[1], length * up[2] },
+                         { length * up[1] - thick * across[1], length * up[2] - thick * across[2] },
+                         { -thick * across[1], -thick * across[2] } } }
+    local lift = 0.1 + resting_gap  -- half the box's height and the resting gap above the top face
+    placed = { x = 5 * up[1] + lift * across[1], y = y + 5 * up[2] + lift * across[2], angle = slope }
+  end
+  boxes[i] = box { name, material = "wood", width = 0.5, height = 0.2, on = placed.on, at = placed.at,
+                   x = placed.x, y = placed.y, angle = placed.angle, mass = mass,
+                   velocity = { launch_speed * up[1], launch_speed * up[2] } }
+  probe { name .. "_distance", unit = "m", read = { boxes[i], "distance", along = up } }
+  probe { name .. "_speed", unit = "m/s", read = { boxes[i], "speed", along = up } }
+end
+local hack_box = boxes[4]
+every_step(function() hack_box:scale_velocity(keep) end)
+
+plot { "Distance along the launch", kind = "time",
+       y = { "asphalt_box_distance", "grass_box_distance", "ice_box_distance", "hack_box_distance" } }
+plot { "Speed along the launch", kind = "time",
+       y = { "asphalt_box_speed", "grass_box_speed", "ice_box_speed", "hack_box_speed" } }
+
+-- Reading the record ----------------------------------------------------------------------
+-- How far a box got along its launch before it turned back or stopped.
+local function farthest(name)
+  local distances, largest = history(name .. "_distance"), 0
+  for i = 1, #distances do largest = math.max(largest, distances[i]) end
+  return largest
+end
+-- Measured once every box has stopped going up its launch, a second after the slowest.
+local function over()
+  local last = 0
+  for _, surface in ipairs { "asphalt", "grass", "ice" } do
+    if launch(surface).time < math.huge then last = math.max(last, launch(surface).time) end  -- frictionless: never
+  end
+  return time() >= math.min(last + 1, 60) - step_length()
+end
+
+-- Expectations ----------------------------------------------------------------------------
+for _, surface in ipairs { "asphalt", "grass", "ice" } do
+  local name = surface .. "_box"
+  expect { name .. ": distance", unit = "m",
+    predicted = function() return launch(surface).distance end,
+    measured = function() return over() and farthest(name) or nil end,
+    tolerance = function() return 0.01 * launch(surface).distance + launch_speed * step_length() end }
+  expect { name .. ": then",
+    predicted = function() return launch(surface)["then"] end,
+    measured = function()
+      if not over() then return nil end
+      return math.abs(value_at(name .. "_speed", time())) < 1e-3 and "stays" or "slides back"
+    end }
+end
+
+local function hack()
+  return theory.velocity_hack { v0 = launch_speed, keep = keep, step = step_length(), angle = slope }
+end
+expect { "hack_box: distance", unit = "m",
+  predicted = function() return hack().distance_up end,
+  measured = function() return over() and farthest("hack_box") or nil end,
+  tolerance = function() return 0.01 * hack().distance_up end }
+expect { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
+  predicted = function() return hack().drift_speed end,
+  measured = function() return over() and value_at("hack_box_speed", time()) or nil end,
+  tolerance = function() return 0.01 * math.abs(hack().drift_speed) + 1e-3 end }
