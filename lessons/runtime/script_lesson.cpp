@@ -243,7 +243,7 @@ int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name"});
+    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name", "treatment", "epsilon"});
     std::string names[2];
     for (int i = 0; i < 2; ++i) {
       lua_rawgeti(state, 1, i + 1);
@@ -281,10 +281,31 @@ int pair(lua_State* state) {
     for (int i = 0; i < 4; ++i) {
       *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
+    // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
+    // Its epsilon is no slider of its own: a lesson that varies it passes one of its parameters.
+    std::optional<FrictionTreatment> treatment;
+    std::optional<double> epsilon;
+    if (fields.has("treatment")) {
+      const std::string name = fields.text("treatment", "");
+      try {
+        treatment = parse_treatment(name);
+      } catch (const InvalidInput& error) {
+        throw InvalidInput("pair " + label + ": " + error.what());
+      }
+      if (fields.has("epsilon")) {
+        if (!uses_epsilon(*treatment)) {
+          throw InvalidInput("pair " + label + ": epsilon is for the threshold and regularized treatments, not " + name);
+        }
+        epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+      }
+    } else if (fields.has("epsilon")) {
+      throw InvalidInput("pair " + label + ": epsilon needs treatment = \"threshold\" or \"regularized\"");
+    }
     values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state));
     for (std::string& warning : build.scene->pairs().set_pair(names[0], names[1], values)) {
       build.warnings.push_back(caller(state) + ": " + warning);
     }
+    if (treatment) build.scene->pairs().set_treatment(names[0], names[1], *treatment, epsilon);
     return 0;
   });
 }
