@@ -80,6 +80,12 @@ class PairTable {
   const FrictionPair& pair(int a, int b) const;
   const FrictionPair& pair(std::string_view a, std::string_view b) const;
 
+  // Makes the pair a-b take the values of the pair leader_a-leader_b (which must be set), now
+  // and whenever those are set again: several pairs with one set of sliders, each free to
+  // have its own treatment. Setting a-b's own values later ends the sharing.
+  void share_pair(std::string_view a, std::string_view b, std::string_view leader_a, std::string_view leader_b);
+  bool is_shared(int a, int b) const;
+
   // Gives the pair (already set) its own treatment. epsilon (m/s, in (0, 100]) is for the
   // threshold and regularized treatments only; without it they use the run's threshold speed.
   // Throws InvalidInput naming the pair and the allowed values; the table is then unchanged.
@@ -101,6 +107,11 @@ class PairTable {
   std::vector<FrictionPair> pairs_;
   std::vector<char> pair_set_;
   std::vector<PairTreatment> treatments_;
+  struct Share {
+    int a, b, leader_a, leader_b;
+  };
+  std::vector<Share> shares_;
+  void store(int a, int b, const FrictionPair& pair);
   void grow(int new_count);
 };
 

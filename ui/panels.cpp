@@ -210,16 +210,15 @@ void model_contents(const lessons::Lesson& lesson) {
     terms += card.quadratic ? ", quadratic b" : ", no quadratic b";
     ImGui::Text("friction: %s", terms.c_str());
     ImGui::Text("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
-    // When some pair names its own treatment, every pair says which it uses.
-    const bool mixed = std::any_of(card.pairs.begin(), card.pairs.end(), [](const auto& pair) { return pair.own; });
-    for (const lessons::ModelCard::PairLine& pair : mixed ? card.pairs : decltype(card.pairs){}) {
-      char epsilon[48] = "";
-      if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
-      ImGui::Text("  %s on %s: %s%s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon,
-                  pair.own ? "" : " (the run's)");
-    }
     ImGui::Text("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
                 card.velocity_iterations);
+    // Pairs that name their own treatment say so; every other pair follows the run's.
+    for (const lessons::ModelCard::PairLine& pair : card.pairs) {
+      if (!pair.own) continue;
+      char epsilon[48] = "";
+      if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
+      ImGui::Text("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
+    }
   }
 }
 
