@@ -45,6 +45,9 @@ struct ContactRecord {
   bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction while stuck in the previous step
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
+  // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
+  // once the step's velocity is known.
+  double explicit_impulse = 0.0;
 
   // Box2D's friction direction for a contact normal: the normal turned by -90°.
   static b2Vec2 tangent_of(const b2Vec2& n) { return b2Cross(n, 1.0f); }
