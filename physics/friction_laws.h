@@ -26,6 +26,9 @@ struct FrictionOutcome {
 //   v = 0 and |F_a| >  mu_s·N : friction = -mu_s·N·sign(F_a) (breaks away)
 //   v != 0                    : friction = -mu_k·N·sign(v) - c·v - b·v²·sign(v)
 // `applied` is the sum of every other force along the surface, `normal_force` >= 0.
+// No run steps with it: the stick-slip treatment realises this law through the solver's
+// impulses (treatment_stick_slip.cpp) and the exact reduced model through located events.
+// It is the law a theory curve draws (friction against the applied force, its branches).
 FrictionOutcome engineering_friction(double applied, double normal_force, double velocity, const FrictionPair& pair);
 
 // The tribology article's regularized static friction: below the threshold speed epsilon the

@@ -4,46 +4,30 @@
 
 #include <box2d/box2d.h>
 
-#include <optional>
 #include <string>
-#include <string_view>
-#include <unordered_map>
 #include <vector>
 
+#include "physics/contact_mechanics.h"
 #include "physics/friction_laws.h"
 #include "physics/materials.h"
+#include "physics/treatment.h"
 
 namespace frictionlab {
-
-// How the dry (Coulomb) part of friction is treated; selectable per run so they can be compared.
-enum class FrictionTreatment {
-  stick_slip,   // each contact sticks (mu_s) or slips (mu_k), switched by what the solver did
-  threshold,    // mu_s below a sliding speed epsilon, mu_k above: the usual game approach
-  regularized,  // the tribology article's F = mu_s·N·v/epsilon below epsilon, an explicit force
-  box2d,        // Box2D's single coefficient (mu_k of the pair) for sticking and sliding alike
-};
-std::string_view treatment_name(FrictionTreatment treatment);
-// Throws InvalidInput listing the allowed names.
-FrictionTreatment parse_treatment(std::string_view name);
 
 // A fixture's material is stored in its user data as id + 1, so 0 means "none given".
 inline int fixture_material(b2Fixture* fixture) {
   return static_cast<int>(fixture->GetUserData().pointer) - 1;
 }
 
-// Box2D reports inertia about the body origin; dynamics needs it about the centre of mass.
-inline float central_inertia(const b2Body* body) {
-  const b2Vec2 c = body->GetLocalCenter();
-  return body->GetInertia() - body->GetMass() * b2Dot(c, c);
-}
-
 // What the solver did at one contact in the last step, so arrows, plots and the energy ledger
 // show the solver's numbers rather than the formula's.
 struct ContactRecord {
+  b2Contact* contact = nullptr;
   b2Body* body_a = nullptr;
   b2Body* body_b = nullptr;
   int material_a = -1;
   int material_b = -1;
+  int pair_index = -1;             // the pair's place in the table (PairTable::pair_at)
   ContactState state = ContactState::sticking;
   float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
   int point_count = 0;
@@ -61,6 +45,9 @@ struct ContactRecord {
   bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction while stuck in the previous step
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
+  // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
+  // once the step's velocity is known.
+  double explicit_impulse = 0.0;
 
   // Box2D's friction direction for a contact normal: the normal turned by -90°.
   static b2Vec2 tangent_of(const b2Vec2& n) { return b2Cross(n, 1.0f); }
@@ -83,11 +70,17 @@ class FrictionListener : public b2ContactListener {
  public:
   explicit FrictionListener(const PairTable& pairs) : pairs_(pairs) { records_.reserve(256); }
 
-  void set_treatment(FrictionTreatment treatment) { treatment_ = treatment; }
-  FrictionTreatment treatment() const { return treatment_; }
-  // The speed epsilon of the threshold and regularized treatments, m/s, > 0.
+  // The run's treatment: what every pair without a treatment of its own follows. A pair that
+  // names one (PairTable::set_treatment) keeps it whatever the run's is.
+  void set_treatment(FrictionTreatment treatment) { run_rule_ = &rule_of(treatment); }
+  FrictionTreatment treatment() const { return run_rule_->treatment; }
+  // The run's speed epsilon of the threshold and regularized treatments, m/s, > 0; a pair with
+  // its own epsilon uses that instead.
   void set_threshold_speed(double epsilon);
   double threshold_speed() const { return threshold_speed_; }
+  // The treatment and epsilon a contact between these materials uses now.
+  FrictionTreatment treatment_of(int material_a, int material_b) const;
+  double epsilon_of(int material_a, int material_b) const;
 
   // Before each world step of length h: applies the viscous and quadratic terms (and, for the
   // regularized treatment, the dry force) as impulses at each contact, equal and opposite.
@@ -98,8 +91,14 @@ class FrictionListener : public b2ContactListener {
   // the next step, owes no breakaway impulse, and the trial's work is dropped.
   void forget_trial();
 
-  // Unordered: iterate the world's contact list where order matters.
-  const std::unordered_map<b2Contact*, ContactRecord>& contacts() const { return records_; }
+  // Every touching-or-not contact Box2D has begun and not ended, in no order that means
+  // anything: iterate the world's contact list where order matters.
+  const std::vector<ContactRecord>& contacts() const { return records_; }
+  // The record of one of the world's contacts (null if the listener has none).
+  const ContactRecord* record(const b2Contact* contact) const {
+    const std::size_t index = index_of(contact);
+    return index < records_.size() && records_[index].contact == contact ? &records_[index] : nullptr;
+  }
   // The first error met during the last step (empty if none), cleared by reading it.
   std::string take_error();
   // The record for the contact between two bodies, if they touch.
@@ -117,14 +116,40 @@ class FrictionListener : public b2ContactListener {
   // Adds the impulses of every other touching contact between the same two bodies (a body on
   // feet), along this contact's tangent `t`, to the totals.
   void sum_sibling_impulses(const b2Contact* contact, const b2Vec2& t, double* normal, double* tangent) const;
-  double breakaway_correction(const ContactRecord& r, const FrictionPair& pair, double normal_impulse,
-                              float sliding_end) const;
+  ContactRecord* mutable_record(const b2Contact* contact) {
+    return const_cast<ContactRecord*>(static_cast<const FrictionListener*>(this)->record(contact));
+  }
+  // Where a contact's record is. Box2D 2.4.1's b2Contact has no user data, and hashing the
+  // contact three times a step cost a 4000-box pile a fifth of its step in cache misses. The
+  // index is kept in the contact's restitution threshold instead: Box2D reads that only to
+  // decide whether a contact bounces, and FrictionLab's fixtures have no restitution, so the
+  // threshold changes nothing. A contact that never began (its threshold is Box2D's 1 m/s)
+  // fails the check in record(), whose records_[index].contact must be the contact itself.
+  static std::size_t index_of(const b2Contact* contact) {
+    return static_cast<std::size_t>(contact->GetRestitutionThreshold());
+  }
+  void place(ContactRecord& record, std::size_t index) {
+    record.contact->SetRestitutionThreshold(static_cast<float>(index));
+  }
+  // Whether any contact may owe a velocity term before the coming step.
+  bool velocity_terms_due() const;
+  const TreatmentRule& rule_at(int pair_index) const {
+    const PairTreatment& own = pairs_.treatment_at(pair_index);
+    return own.own ? rule_of(own.treatment) : *run_rule_;
+  }
+  double epsilon_at(int pair_index) const {
+    const PairTreatment& own = pairs_.treatment_at(pair_index);
+    return own.own && own.epsilon > 0.0 ? own.epsilon : threshold_speed_;
+  }
 
   const PairTable& pairs_;
-  FrictionTreatment treatment_ = FrictionTreatment::stick_slip;
+  const TreatmentRule* run_rule_ = &stick_slip_rule();
   double threshold_speed_ = 0.01;
   float step_ = 1.0f / 240.0f;
-  std::unordered_map<b2Contact*, ContactRecord> records_;
+  // Records live in one dense array (an ended contact's slot is filled by the last record).
+  std::vector<ContactRecord> records_;
+  // Some record was left a breakaway impulse or a drag force to apply or clear.
+  bool terms_pending_ = false;
   ContactWork work_;
   std::string error_;
 };

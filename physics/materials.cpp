@@ -1,5 +1,6 @@
 #include "physics/materials.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -25,6 +26,29 @@ void check_coefficient(std::vector<std::string>& errors, const std::string& pair
 
 }  // namespace
 
+std::string_view treatment_name(FrictionTreatment treatment) {
+  switch (treatment) {
+    case FrictionTreatment::stick_slip: return "stick-slip";
+    case FrictionTreatment::threshold: return "threshold";
+    case FrictionTreatment::regularized: return "regularized";
+    case FrictionTreatment::box2d: return "box2d";
+  }
+  return "?";
+}
+
+FrictionTreatment parse_treatment(std::string_view name) {
+  for (FrictionTreatment t : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
+                              FrictionTreatment::regularized, FrictionTreatment::box2d}) {
+    if (name == treatment_name(t)) return t;
+  }
+  throw InvalidInput("unknown friction treatment '" + std::string(name) +
+                     "'; allowed: stick-slip, threshold, regularized, box2d");
+}
+
+bool uses_epsilon(FrictionTreatment treatment) {
+  return treatment == FrictionTreatment::threshold || treatment == FrictionTreatment::regularized;
+}
+
 PairCheck check_pair(std::string_view material_a, std::string_view material_b, const FrictionPair& pair) {
   PairCheck check;
   const std::string name = pair_name(material_a, material_b);
@@ -46,14 +70,17 @@ void PairTable::grow(int new_count) {
   const int old_count = material_count();
   std::vector<FrictionPair> pairs(static_cast<size_t>(new_count * new_count));
   std::vector<char> set(pairs.size(), 0);
+  std::vector<PairTreatment> treatments(pairs.size());
   for (int a = 0; a < old_count; ++a) {
     for (int b = 0; b < old_count; ++b) {
       pairs[a * new_count + b] = pairs_[a * old_count + b];
       set[a * new_count + b] = pair_set_[a * old_count + b];
+      treatments[a * new_count + b] = treatments_[a * old_count + b];
     }
   }
   pairs_ = std::move(pairs);
   pair_set_ = std::move(set);
+  treatments_ = std::move(treatments);
 }
 
 int PairTable::add_material(const Material& material) {
@@ -96,12 +123,74 @@ std::vector<std::string> PairTable::set_pair(std::string_view a, std::string_vie
     for (size_t i = 1; i < check.errors.size(); ++i) message += "; " + check.errors[i];
     throw InvalidInput(message);
   }
-  const int n = material_count();
-  pairs_[id_a * n + id_b] = pair;
-  pairs_[id_b * n + id_a] = pair;
-  pair_set_[id_a * n + id_b] = 1;
-  pair_set_[id_b * n + id_a] = 1;
+  std::erase_if(shares_, [&](const Share& share) {
+    return (share.a == id_a && share.b == id_b) || (share.a == id_b && share.b == id_a);
+  });
+  store(id_a, id_b, pair);
   return check.warnings;
+}
+
+void PairTable::store(int a, int b, const FrictionPair& pair) {
+  const int n = material_count();
+  pairs_[a * n + b] = pair;
+  pairs_[b * n + a] = pair;
+  pair_set_[a * n + b] = 1;
+  pair_set_[b * n + a] = 1;
+  for (const Share& share : shares_) {
+    const bool led = (share.leader_a == a && share.leader_b == b) || (share.leader_a == b && share.leader_b == a);
+    if (led) store(share.a, share.b, pair);
+  }
+}
+
+bool PairTable::is_shared(int a, int b) const {
+  return std::any_of(shares_.begin(), shares_.end(), [&](const Share& share) {
+    return (share.a == a && share.b == b) || (share.a == b && share.b == a);
+  });
+}
+
+void PairTable::share_pair(std::string_view a, std::string_view b, std::string_view leader_a,
+                           std::string_view leader_b) {
+  const int id_a = material_id(a), id_b = material_id(b);
+  const int lead_a = material_id(leader_a), lead_b = material_id(leader_b);
+  if (!has_pair(lead_a, lead_b)) {
+    throw InvalidInput("pair " + pair_name(a, b) + ": the pair " + pair_name(leader_a, leader_b) +
+                       " it takes its values from has none yet; set that one first");
+  }
+  const bool same = (id_a == lead_a && id_b == lead_b) || (id_a == lead_b && id_b == lead_a);
+  if (same) throw InvalidInput("pair " + pair_name(a, b) + ": cannot take its values from itself");
+  // A leader never follows another pair, so sharing cannot go round in a circle.
+  for (const Share& share : shares_) {
+    if ((share.a == lead_a && share.b == lead_b) || (share.a == lead_b && share.b == lead_a)) {
+      throw InvalidInput("pair " + pair_name(a, b) + ": " + pair_name(leader_a, leader_b) +
+                         " takes its own values from " + pair_name(materials_[share.leader_a].name, materials_[share.leader_b].name) +
+                         "; name that pair instead");
+    }
+  }
+  std::erase_if(shares_, [&](const Share& share) {
+    return (share.a == id_a && share.b == id_b) || (share.a == id_b && share.b == id_a);
+  });
+  shares_.push_back({id_a, id_b, lead_a, lead_b});
+  store(id_a, id_b, pair(lead_a, lead_b));
+}
+
+void PairTable::set_treatment(std::string_view a, std::string_view b, FrictionTreatment treatment,
+                              std::optional<double> epsilon) {
+  const int id_a = material_id(a);
+  const int id_b = material_id(b);
+  const std::string name = pair_name(a, b);
+  if (!has_pair(id_a, id_b)) throw InvalidInput("pair " + name + ": set its friction values before its treatment");
+  if (epsilon && !uses_epsilon(treatment)) {
+    throw InvalidInput("pair " + name + ": epsilon is for the threshold and regularized treatments, not " +
+                       std::string(treatment_name(treatment)));
+  }
+  if (epsilon && !(*epsilon > 0.0 && *epsilon <= 100.0)) {
+    std::ostringstream message;
+    message << "pair " << name << ": epsilon = " << *epsilon << " m/s is outside the allowed range (0, 100]";
+    throw InvalidInput(message.str());
+  }
+  const PairTreatment own{true, treatment, epsilon.value_or(0.0)};
+  treatments_[static_cast<size_t>(pair_index(id_a, id_b))] = own;
+  treatments_[static_cast<size_t>(pair_index(id_b, id_a))] = own;
 }
 
 bool PairTable::has_pair(int a, int b) const {

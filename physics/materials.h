@@ -1,6 +1,7 @@
 // Materials and the symmetric table of friction parameters for each pair of them.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,6 +21,29 @@ struct FrictionPair {
   double mu_k = 0.0;  // kinetic coefficient: sliding friction is mu_k * N
   double c = 0.0;     // viscous coefficient, N·s/m: F = -c·v
   double b = 0.0;     // quadratic coefficient, N·s²/m²: F = -b·v²·sign(v)
+};
+
+// How the dry (Coulomb) part of friction is treated; selectable per run so they can be compared,
+// and per pair so that one world can hold them side by side (physics/treatment.h).
+enum class FrictionTreatment {
+  stick_slip,   // each contact sticks (mu_s) or slips (mu_k), switched by what the solver did
+  threshold,    // mu_s below a sliding speed epsilon, mu_k above: the usual game approach
+  regularized,  // the tribology article's F = mu_s·N·v/epsilon below epsilon, an explicit force
+  box2d,        // Box2D's single coefficient (mu_k of the pair) for sticking and sliding alike
+};
+std::string_view treatment_name(FrictionTreatment treatment);
+// Throws InvalidInput listing the allowed names.
+FrictionTreatment parse_treatment(std::string_view name);
+// Whether the treatment has a threshold speed epsilon (threshold and regularized).
+bool uses_epsilon(FrictionTreatment treatment);
+
+// A pair's own treatment. A pair without one follows the run's (StepSettings::treatment, the
+// command line's --friction, the window's Simulation menu); a pair that names one keeps it
+// whatever the run's is, so a lesson can set a regularized block beside a stick-slip one.
+struct PairTreatment {
+  bool own = false;
+  FrictionTreatment treatment = FrictionTreatment::stick_slip;
+  double epsilon = 0.0;  // m/s, threshold and regularized; 0: the run's threshold speed
 };
 
 struct Material {
@@ -56,12 +80,38 @@ class PairTable {
   const FrictionPair& pair(int a, int b) const;
   const FrictionPair& pair(std::string_view a, std::string_view b) const;
 
+  // Makes the pair a-b take the values of the pair leader_a-leader_b (which must be set), now
+  // and whenever those are set again: several pairs with one set of sliders, each free to
+  // have its own treatment. Setting a-b's own values later ends the sharing.
+  void share_pair(std::string_view a, std::string_view b, std::string_view leader_a, std::string_view leader_b);
+  bool is_shared(int a, int b) const;
+
+  // Gives the pair (already set) its own treatment. epsilon (m/s, in (0, 100]) is for the
+  // threshold and regularized treatments only; without it they use the run's threshold speed.
+  // Throws InvalidInput naming the pair and the allowed values; the table is then unchanged.
+  void set_treatment(std::string_view a, std::string_view b, FrictionTreatment treatment,
+                     std::optional<double> epsilon = std::nullopt);
+  const PairTreatment& treatment(int a, int b) const { return treatments_[pair_index(a, b)]; }
+
+  // A pair's place in the table, fixed once every material is added: the contact listener
+  // finds it when a contact begins and then reads the values in place at every step, so live
+  // edits still reach running contacts. Both ids must be valid.
+  int pair_index(int a, int b) const { return a * material_count() + b; }
+  const FrictionPair& pair_at(int index) const { return pairs_[static_cast<size_t>(index)]; }
+  const PairTreatment& treatment_at(int index) const { return treatments_[static_cast<size_t>(index)]; }
+
  private:
   std::vector<Material> materials_;
   // Dense, symmetric, indexed by id: the contact listener reads it every step for every
   // contact, so a lookup must cost two multiplies, not a hash.
   std::vector<FrictionPair> pairs_;
   std::vector<char> pair_set_;
+  std::vector<PairTreatment> treatments_;
+  struct Share {
+    int a, b, leader_a, leader_b;
+  };
+  std::vector<Share> shares_;
+  void store(int a, int b, const FrictionPair& pair);
   void grow(int new_count);
 };
 

@@ -386,7 +386,7 @@ void Scene::step() {
   for (Probe& probe : probes_) probe.history.push_back(probe.measure());
   times_.push_back(time_);
   bool any_slipping = false;
-  for (const auto& [contact, record] : listener_.contacts()) {
+  for (const ContactRecord& record : listener_.contacts()) {
     any_slipping = any_slipping || (record.point_count > 0 && record.state == ContactState::slipping);
   }
   slipping_.push_back(any_slipping ? 1 : 0);

@@ -96,6 +96,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"where_methods_fail", {}, "jitters", 1380},
                       Case{"where_methods_fail", {}, "settles", 1400},
                       Case{"where_methods_fail", {{"angle", "30"}}, "jitters"},
+                      // mu_k = 0.1 < tan 20°: an overshoot past epsilon breaks the block away.
+                      Case{"where_methods_fail", {{"mu_k", "0.1"}}, "jitters"},
+                      // mu_s = 0: the regularized law has no creep speed and no boundary there;
+                      // stick-slip still holds on mu_k = 0.5 > tan 20°, or slides with mu_k = 0.
+                      Case{"where_methods_fail", {{"mu_s", "0"}}, "no theory: μs ≤ tan θ"},
+                      Case{"where_methods_fail", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
                       Case{"incline", {{"angle", "20"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "slides"},
                       Case{"incline", {{"angle", "15"}, {"mu_s", "0.3"}, {"mu_k", "0.2"}}, "sticks"},
                       Case{"incline", {{"angle", "45"}, {"c", "2"}, {"mass", "0.5"}}, "slides"},
@@ -300,6 +306,42 @@ TEST(BuiltinLessons, TippingBoxTiltsAndSlidesAsItsProbesSay) {
   run_for(low, low.duration());
   EXPECT_LT(std::abs(low.scene().probe("tilt").history.back()), 1.0);
   EXPECT_GT(low.scene().probe("slide").history.back(), 0.05);
+}
+
+TEST(BuiltinLessons, WhereMethodsFailStepsItsThreeBlocksEachWithItsOwnTreatment) {
+  // Box2D bodies, not 1-DOF probes: the stick-slip block holds, the large-epsilon one creeps
+  // a visible 4.5 cm in 1.5 s at eps·tan 20°/mu_s, and the run's treatment (box2d here) does
+  // not reach pairs that name their own.
+  StepSettings run_box2d;
+  run_box2d.treatment = FrictionTreatment::box2d;
+  for (const StepSettings& settings : {StepSettings{}, run_box2d}) {
+    Lesson lesson(resolve_lesson("where_methods_fail"), {}, settings);
+    const Scene& scene = lesson.scene();
+    const PairTable& pairs = scene.pairs();
+    const int slope = pairs.material_id("slope");
+    EXPECT_EQ(scene.friction().treatment_of(pairs.material_id("block"), slope), FrictionTreatment::stick_slip);
+    EXPECT_EQ(scene.friction().treatment_of(pairs.material_id("creeping_block"), slope), FrictionTreatment::regularized);
+    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("creeping_block"), slope), 0.05);
+    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("jittering_block"), slope), 0.002);
+    const b2Vec2 block = scene.body("block")->GetPosition();
+    const b2Vec2 creeping = scene.body("creeping")->GetPosition();
+    run_for(lesson, 1.5);
+    EXPECT_LT((scene.body("block")->GetPosition() - block).Length(), 1e-6f);
+    const double creep = 0.05 * std::tan(20.0 * M_PI / 180.0) / 0.6;
+    EXPECT_NEAR(scene.probe("large_epsilon_speed").history.back(), creep, 0.01 * creep);
+    EXPECT_GT((scene.body("creeping")->GetPosition() - creeping).Length(), 0.04f);
+  }
+}
+
+TEST(BuiltinLessons, WhereMethodsFailsSlidersReachEveryBlock) {
+  // The regularized pairs take mu_s from the stick-slip pair: the live slider changes the
+  // creep speed of the block beside it at the next step.
+  Lesson lesson(resolve_lesson("where_methods_fail"));
+  run_for(lesson, 1.0);
+  lesson.set("mu_s", "1.2");
+  run_for(lesson, 2.0);
+  const double creep = 0.05 * std::tan(20.0 * M_PI / 180.0) / 1.2;
+  EXPECT_NEAR(lesson.scene().probe("large_epsilon_speed").history.back(), creep, 0.01 * creep);
 }
 
 }  // namespace

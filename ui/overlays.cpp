@@ -38,9 +38,9 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
     const b2Body* a = contact->GetFixtureA()->GetBody();
     const b2Body* b = contact->GetFixtureB()->GetBody();
     if (a != body && b != body) continue;
-    const auto found = scene.friction().contacts().find(const_cast<b2Contact*>(contact));
-    if (found == scene.friction().contacts().end() || !touching(found->second)) continue;
-    const ContactRecord& record = found->second;
+    const ContactRecord* found = scene.friction().record(contact);
+    if (found == nullptr || !touching(*found)) continue;
+    const ContactRecord& record = *found;
     const b2Vec2 point = centre_of_load(record);
     forces.push_back({ForceKind::normal, body, point, record.normal_on(body)});
     forces.push_back({ForceKind::friction, body, point, record.friction_on(body)});
@@ -91,9 +91,9 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
 std::vector<ContactMark> contact_marks(const Scene& scene) {
   std::vector<ContactMark> marks;
   for (const b2Contact* contact = scene.world().GetContactList(); contact != nullptr; contact = contact->GetNext()) {
-    const auto found = scene.friction().contacts().find(const_cast<b2Contact*>(contact));
-    if (found == scene.friction().contacts().end() || !touching(found->second)) continue;
-    const ContactRecord& record = found->second;
+    const ContactRecord* found = scene.friction().record(contact);
+    if (found == nullptr || !touching(*found)) continue;
+    const ContactRecord& record = *found;
     if (record.body_a->GetType() != b2_dynamicBody && record.body_b->GetType() != b2_dynamicBody) continue;
     marks.push_back({record.body_a, record.body_b, centre_of_load(record), record.tangent(), record.state,
                      record.sliding_velocity, record.friction_force});

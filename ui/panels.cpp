@@ -216,6 +216,13 @@ void model_contents(const lessons::Lesson& lesson) {
     ImGui::Text("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
     ImGui::Text("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
                 card.velocity_iterations);
+    // Pairs that name their own treatment say so; every other pair follows the run's.
+    for (const lessons::ModelCard::PairLine& pair : card.pairs) {
+      if (!pair.own) continue;
+      char epsilon[48] = "";
+      if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
+      ImGui::Text("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
+    }
   }
 }
 

@@ -146,8 +146,7 @@ const ContactRecord* find_record(const Scene& scene, const ContactHandle& view) 
     if (edge->other != view.b || !touch->IsTouching()) continue;
     if (touch->GetFixtureA() != view.foot && touch->GetFixtureB() != view.foot) continue;
     if (!scene.touching_now(touch)) return nullptr;
-    const auto found = scene.friction().contacts().find(touch);
-    return found == scene.friction().contacts().end() ? nullptr : &found->second;
+    return scene.friction().record(touch);
   }
   return nullptr;
 }

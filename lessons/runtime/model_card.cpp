@@ -30,6 +30,17 @@ ModelCard model_card(const Lesson& lesson) {
   }
   const StepSettings& settings = scene.settings();
   card.treatment = std::string(treatment_name(settings.treatment));
+  const PairTable& table = scene.pairs();
+  for (int a = 0; a < table.material_count(); ++a) {
+    for (int b = a; b < table.material_count(); ++b) {
+      const std::string& name_a = table.material(a).name;
+      const std::string& name_b = table.material(b).name;
+      if (!table.has_pair(a, b) || !scene.can_touch(name_a, name_b)) continue;
+      const FrictionTreatment treatment = scene.friction().treatment_of(a, b);
+      card.pairs.push_back({name_a, name_b, std::string(treatment_name(treatment)), table.treatment(a, b).own,
+                            uses_epsilon(treatment) ? scene.friction().epsilon_of(a, b) : 0.0});
+    }
+  }
   card.hz = settings.hz;
   card.substeps = settings.substeps;
   card.velocity_iterations = settings.velocity_iterations;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "lessons/runtime/lesson.h"
 
@@ -16,7 +17,16 @@ struct ModelCard {
   bool dry = false;            // some pair has mu_s or mu_k above zero
   bool viscous = false;        // some pair has c above zero
   bool quadratic = false;      // some pair has b above zero
-  std::string treatment;       // "stick-slip", ...
+  std::string treatment;       // the run's: "stick-slip", ...
+  // Each pair that can touch in the scene, with the treatment its contacts use (its own, or
+  // the run's) and, for threshold and regularized, its epsilon in m/s.
+  struct PairLine {
+    std::string material_a, material_b;
+    std::string treatment;
+    bool own = false;     // named by the pair itself, not inherited from the run
+    double epsilon = 0.0;  // m/s; 0 when the treatment has none
+  };
+  std::vector<PairLine> pairs;
   double hz = 0.0;
   int substeps = 1;
   int velocity_iterations = 8;

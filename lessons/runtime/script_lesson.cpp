@@ -232,7 +232,7 @@ void declare_preset_pairs(LessonBuild& build) {
       for (const auto& [fixed_a, fixed_b] : build.fixed_pairs) {
         declared = declared || (fixed_a == name_a && fixed_b == name_b) || (fixed_a == name_b && fixed_b == name_a);
       }
-      if (declared || !table.has_pair(a, b) || !build.scene->can_touch(name_a, name_b)) {
+      if (declared || !table.has_pair(a, b) || table.is_shared(a, b) || !build.scene->can_touch(name_a, name_b)) {
         continue;
       }
       const std::string prefix = first_pair ? "" : name_a + "_" + name_b + ".";
@@ -251,7 +251,7 @@ int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name", "sliders"});
+    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name", "sliders", "treatment", "epsilon", "like"});
     std::string names[2];
     for (int i = 0; i < 2; ++i) {
       lua_rawgeti(state, 1, i + 1);
@@ -274,8 +274,36 @@ int pair(lua_State* state) {
       }
     }
     for (const std::string& name : names) build.use_material(name);
+    {
+      PairTable& table = build.scene->pairs();
+      const int a = table.find_material(names[0]), b = table.find_material(names[1]);
+      if (a >= 0 && b >= 0 && table.is_shared(a, b)) throw InvalidInput("pair " + label + " is given twice");
+    }
+    std::string like[2];
+    if (fields.has("like")) {
+      for (const char* key : {"mu_s", "mu_k", "c", "b", "name", "sliders"}) {
+        if (fields.has(key)) {
+          throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " + key);
+        }
+      }
+      fields.push("like");
+      for (int i = 0; i < 2; ++i) {
+        if (lua_istable(state, -1)) lua_rawgeti(state, -1, i + 1); else lua_pushnil(state);
+        const bool named = lua_type(state, -1) == LUA_TSTRING;
+        if (named) like[i] = lua_tostring(state, -1);
+        lua_pop(state, 1);
+        if (!named) {
+          lua_pop(state, 1);
+          throw InvalidInput("pair " + label + ": like names the pair whose values this one takes, as in "
+                             "like = { \"block\", \"slope\" }");
+        }
+      }
+      lua_pop(state, 1);
+    }
     FrictionPair values;
-    if (fields.has("mu_s") || fields.has("mu_k")) {
+    if (!like[0].empty()) {
+      // Values come from the other pair, now and at every slider change: no sliders here.
+    } else if (fields.has("mu_s") || fields.has("mu_k")) {
       if (!fields.has("mu_s") || !fields.has("mu_k")) {
         throw InvalidInput("pair " + label + ": give both mu_s and mu_k, or neither for the preset values");
       }
@@ -294,6 +322,31 @@ int pair(lua_State* state) {
     for (int i = 0; i < 4; ++i) {
       *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
+    // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
+    // Its epsilon is no slider of its own: a lesson that varies it passes one of its parameters.
+    std::optional<FrictionTreatment> treatment;
+    std::optional<double> epsilon;
+    if (fields.has("treatment")) {
+      const std::string name = fields.text("treatment", "");
+      try {
+        treatment = parse_treatment(name);
+      } catch (const InvalidInput& error) {
+        throw InvalidInput("pair " + label + ": " + error.what());
+      }
+      if (fields.has("epsilon")) {
+        if (!uses_epsilon(*treatment)) {
+          throw InvalidInput("pair " + label + ": epsilon is for the threshold and regularized treatments, not " + name);
+        }
+        epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+      }
+    } else if (fields.has("epsilon")) {
+      throw InvalidInput("pair " + label + ": epsilon needs treatment = \"threshold\" or \"regularized\"");
+    }
+    if (!like[0].empty()) {
+      build.scene->pairs().share_pair(names[0], names[1], like[0], like[1]);
+      if (treatment) build.scene->pairs().set_treatment(names[0], names[1], *treatment, epsilon);
+      return 0;
+    }
     // sliders = false: the script fixes the values itself (from parameters of its own, say, when
     // one slider must drive several pairs), so the pair makes no parameters.
     if (fields.flag("sliders").value_or(true)) {
@@ -305,6 +358,7 @@ int pair(lua_State* state) {
     for (std::string& warning : build.scene->pairs().set_pair(names[0], names[1], values)) {
       build.warnings.push_back(caller(state) + ": " + warning);
     }
+    if (treatment) build.scene->pairs().set_treatment(names[0], names[1], *treatment, epsilon);
     return 0;
   });
 }

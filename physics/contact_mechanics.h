@@ -1,0 +1,80 @@
+// The mechanics of one contact that the listener and the treatments share: the mass its
+// tangential motion feels, its sliding speed, and a tangential impulse on both bodies.
+#pragma once
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+
+#include "physics/materials.h"
+
+namespace frictionlab {
+
+// Box2D reports inertia about the body origin; dynamics needs it about the centre of mass.
+inline float central_inertia(const b2Body* body) {
+  const b2Vec2 c = body->GetLocalCenter();
+  return body->GetInertia() - body->GetMass() * b2Dot(c, c);
+}
+
+inline b2Vec2 point_velocity(const b2Body* body, const b2Vec2& world_point) {
+  return body->GetLinearVelocityFromWorldPoint(world_point);
+}
+
+// The mass the contact's tangential motion feels: what an impulse P along t at p needs to
+// change the relative sliding speed by P / m.
+inline float tangential_mass(const b2Body* a, const b2Body* b, const b2Vec2& p, const b2Vec2& t) {
+  float inverse = 0.0f;
+  for (const b2Body* body : {a, b}) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    inverse += 1.0f / body->GetMass();
+    // A fixed-rotation body (inertia 0) cannot turn, so the lever arm adds nothing.
+    const float inertia = central_inertia(body);
+    const float arm = b2Cross(p - body->GetWorldCenter(), t);
+    if (inertia > 0.0f) inverse += arm * arm / inertia;
+  }
+  return inverse > 0.0f ? 1.0f / inverse : 0.0f;
+}
+
+// The mass a push through both centres of mass feels, rotation aside.
+inline float translational_mass(const b2Body* a, const b2Body* b) {
+  float inverse = 0.0f;
+  for (const b2Body* body : {a, b}) {
+    if (body->GetType() == b2_dynamicBody) inverse += 1.0f / body->GetMass();
+  }
+  return inverse > 0.0f ? 1.0f / inverse : 0.0f;
+}
+
+// On a face (two manifold points) the normal forces redistribute to keep a body from pitching,
+// so tangential impulses there move the translational mass and go through the centres of
+// mass. Applied at the face instead, their torque would set the body pitching for a step until
+// the normal impulses stopped it, and the velocity they leave can even reverse. At a single
+// point (a corner, a wheel) rotation is free and the point's own effective mass applies.
+inline float contact_mass(const b2Body* a, const b2Body* b, bool face, const b2Vec2& p, const b2Vec2& t) {
+  return face ? translational_mass(a, b) : tangential_mass(a, b, p, t);
+}
+
+// The sliding speed the contact's own impulses act on: of the centres of mass on a face (where
+// those impulses go through the centres), of the contact point elsewhere.
+inline double sliding_speed(const b2Body* a, const b2Body* b, bool face, const b2Vec2& p, const b2Vec2& t) {
+  const b2Vec2 relative = face ? b->GetLinearVelocity() - a->GetLinearVelocity() : point_velocity(b, p) - point_velocity(a, p);
+  return b2Dot(relative, t);
+}
+
+// The static limit: with mu_k > mu_s a contact pushed past mu_s·N but not mu_k·N would be
+// pushed back by kinetic friction the moment it moved, so it cannot start until mu_k·N.
+inline double breakaway_coefficient(const FrictionPair& pair) { return std::max(pair.mu_s, pair.mu_k); }
+
+inline void apply_tangential_impulse(b2Body* a, b2Body* b, const b2Vec2& p, const b2Vec2& t, float impulse,
+                                     bool through_centres = false) {
+  for (b2Body* body : {b, a}) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const b2Vec2 push = (body == b ? impulse : -impulse) * t;
+    if (through_centres) {
+      body->ApplyLinearImpulseToCenter(push, true);
+    } else {
+      body->ApplyLinearImpulse(push, p, true);
+    }
+  }
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,82 @@
+// stick-slip: each contact is stuck or slipping. Stuck, the solver may use up to mu_s·N; a
+// contact starts slipping when the solved tangential impulse reaches that limit, and slips
+// with mu_k·N until its sliding stops or reverses. This is what makes the spring lesson
+// converge to the exact Coulomb answer as the step shrinks (it realises the engineering
+// model's piecewise law through the solver's impulses).
+#include <cmath>
+
+#include "physics/contact_mechanics.h"
+#include "physics/friction_listener.h"
+#include "physics/treatment.h"
+
+namespace frictionlab {
+namespace {
+
+// A contact born sliding faster than this starts out slipping; slower, it starts stuck and
+// the solver decides at the first step. Only a contact's birth uses a speed: afterwards the
+// state follows from the impulses, which is what lets the error vanish as the step shrinks.
+constexpr float birth_sliding_speed = 1e-3f;
+
+// The solver clamps each point's friction impulse against the normal impulse of its own
+// iteration, and the final normal impulse differs from it by round-off and by the last
+// iteration's change (about 1e-4 of it on a sliding block). Breaking away must not wait for
+// more than float noise, or the breakaway comes a step late at high rates; stopping must not
+// be declared on noise, or a sliding block would stick for a step in mid-slide.
+constexpr double breakaway_tolerance = 1e-5;
+
+float solver_coefficient(ContactRecord& r, const FrictionPair& pair, float sliding, double) {
+  if (r.fresh && std::abs(sliding) > birth_sliding_speed) {
+    r.state = ContactState::slipping;
+    r.slip_direction = sign(sliding);
+  }
+  return static_cast<float>(r.state == ContactState::sticking ? breakaway_coefficient(pair) : pair.mu_k);
+}
+
+// The step in which a contact breaks free was solved with mu_s throughout, although the
+// static limit was passed somewhere inside it; from then on friction is only mu_k. Box2D's
+// velocities are those of the middle of a step (x_{n+1} = x_n + h·v_{n+1/2}), so the
+// kinetic friction has been acting for s = late + h/2 when the step ends, where `late` is how
+// long before the step's sample time the demanded friction crossed mu_s·N. That crossing is
+// found by linear interpolation between the friction that held in the previous step and the
+// friction this step demanded (the limit plus the excess that set the contact sliding). The
+// impulse owed is (mu_s - mu_k)·N·s. Without it the breakaway is a step late on average and
+// the error is first order; with it the spring lesson converges at second order.
+double breakaway_correction(const ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
+  const double h = solved.step;
+  const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
+  const double normal_force = solved.normal_impulse / h;
+  const double excess = mass * std::abs(solved.sliding_end) / h;
+  const double growth = (breakaway_coefficient(pair) * normal_force + excess - r.held_force) / h;
+  const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, h) : 0.5 * h;
+  return (breakaway_coefficient(pair) - pair.mu_k) * normal_force * (late + 0.5 * h);
+}
+
+void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
+  // A rigid body sticks or slips as a whole on all its contacts with the other body, so what
+  // they reached together decides (see FrictionListener::PostSolve).
+  const double reached = std::abs(solved.group_tangent_impulse) / solved.group_normal_impulse;
+  if (r.state == ContactState::sticking) {
+    if (reached >= breakaway_coefficient(pair) * (1.0 - breakaway_tolerance)) {
+      r.state = ContactState::slipping;
+      // Friction on B opposes B's sliding, so an unmoved contact slides against it.
+      r.slip_direction = solved.sliding_end != 0.0f ? sign(solved.sliding_end)
+                                                    : -sign(static_cast<float>(solved.tangent_impulse));
+      r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, solved);
+    } else {
+      r.held_force = std::abs(solved.tangent_impulse) / solved.step;
+    }
+  } else {
+    const bool held = reached < pair.mu_k * (1.0 - stop_tolerance);
+    const bool reversed = sign(solved.sliding_end) == -r.slip_direction;
+    if (held || reversed) r.state = ContactState::sticking;
+  }
+}
+
+}  // namespace
+
+const TreatmentRule& stick_slip_rule() {
+  static const TreatmentRule rule{FrictionTreatment::stick_slip, solver_coefficient, after_solve, nullptr};
+  return rule;
+}
+
+}  // namespace frictionlab
