@@ -17,6 +17,7 @@
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
+#include "lessons/runtime/lesson_benchmark.h"
 #include "physics/reduced_model.h"
 #include "physics/recommend.h"
 #include "physics/stability.h"
@@ -75,7 +76,7 @@ std::string listener_cost(bool quick, std::ostream& out) {
 }
 
 std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<AccuracyRun>& runs) {
-  const BenchmarkProblem spring = lesson_problem("spring_pull");
+  const BenchmarkProblem spring = spring_problem();
   const LineProblem& line = *spring.line;
   const int repeats = quick ? 1 : 3;
   std::ostringstream csv;
@@ -158,13 +159,14 @@ std::string lesson_speed(bool quick, std::ostream& out) {
   return csv.str();
 }
 
-// frictionlab bench --recommend LESSON --tol X: the cheapest setting that answers the lesson's
-// benchmark problem within X, measured here.
-int run_recommend(const std::string& lesson, const std::string& tolerance_text, std::ostream& out) {
-  const BenchmarkProblem problem = lesson_problem(lesson);
-  const double tolerance =
-      option_number("--tol", tolerance_text, 0.0, 1e6, true, (" " + problem.unit).c_str());
-  Recommender recommender(problem, tolerance);
+// frictionlab bench --recommend LESSON --tol X [--set NAME=VALUE]: the cheapest setting whose
+// run of the lesson's own script meets its expectations within X times their tolerances.
+// Each run builds the lesson's Lua and Box2D afresh, so the cost is the median of 2 runs.
+int run_recommend(const std::string& lesson, const std::map<std::string, std::string>& overrides,
+                  const std::string& tolerance_text, std::ostream& out) {
+  const double tolerance = option_number("--tol", tolerance_text, 0.0, 1e6, true, " × the lesson's tolerances");
+  const BenchmarkProblem problem = lessons::lesson_problem(lesson, overrides);
+  Recommender recommender(problem, tolerance, 2);
   out << "Measuring " << problem.question << " (" << problem.unit << "), for every friction treatment at 30 to 1920 Hz "
       << "with 1, 2 or 4 sub-steps:\n";
   const bool terminal = &out == &std::cout && isatty(STDOUT_FILENO);
@@ -238,6 +240,7 @@ class ProgressBar {
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   bool quick = false;
   std::string directory, recommend, tolerance;
+  std::map<std::string, std::string> overrides;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--quick") {
       quick = true;
@@ -247,19 +250,25 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
     } else if (args[i] == "--recommend" && i + 1 < args.size()) {
       if (!recommend.empty()) throw InvalidInput("bench: --recommend given twice; give one lesson");
       recommend = args[++i];
+    } else if (args[i] == "--set" && i + 1 < args.size()) {
+      const std::string& pair = args[++i];
+      const std::size_t equals = pair.find('=');
+      if (equals == std::string::npos || equals == 0) throw InvalidInput("bench --set: expected NAME=VALUE, got '" + pair + "'");
+      overrides[pair.substr(0, equals)] = pair.substr(equals + 1);
     } else if (args[i] == "--tol" && i + 1 < args.size()) {
       if (!tolerance.empty()) throw InvalidInput("bench: --tol given twice; give one tolerance");
       tolerance = args[++i];
     } else {
       throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
-                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X");
+                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE]");
     }
   }
+  if (!overrides.empty() && recommend.empty()) throw InvalidInput("bench: --set goes with --recommend LESSON");
   if (!recommend.empty() || !tolerance.empty()) {
     if (recommend.empty()) throw InvalidInput("bench: --tol goes with --recommend LESSON");
     if (quick || !directory.empty()) throw InvalidInput("bench --recommend takes no --quick or --out: it only prints");
     if (tolerance.empty()) throw InvalidInput("bench --recommend: --tol X is required: the largest error to accept");
-    return run_recommend(recommend, tolerance, out);
+    return run_recommend(recommend, overrides, tolerance, out);
   }
   if (directory.empty()) throw InvalidInput("bench: --out DIR is required (the folder for the CSV files)");
   prepare_output_folder("bench: --out", directory);

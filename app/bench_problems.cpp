@@ -171,7 +171,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   // The spring problem at 240 Hz with the stick-slip treatment: the solver's velocity
   // iterations, and sub-steps at 60 Hz.
   std::vector<AccuracyRun> knob_runs;
-  const BenchmarkProblem spring = lesson_problem("spring_pull");
+  const BenchmarkProblem spring = spring_problem();
   for (const int count : quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}) {
     StepSettings settings;
     settings.velocity_iterations = count;

@@ -31,9 +31,11 @@ const char* const usage =
     "                                            draw one of the lesson's moments (its time, values and theme)\n"
     "       frictionlab demo                     theory beside simulation for every situation\n"
     "       frictionlab bench [--quick] --out DIR     speed and accuracy figures, CSV files and charts\n"
-    "       frictionlab bench --recommend LESSON --tol X\n"
-    "                                            the cheapest setting that answers the lesson's benchmark\n"
-    "                                            problem within X (measured now; exit 1 if none does)\n";
+    "       frictionlab bench --recommend LESSON --tol X [--set NAME=VALUE]\n"
+    "                                            the cheapest setting whose run of the lesson meets its\n"
+    "                                            table within X times the rows' tolerances at 240 Hz\n"
+    "                                            (1: the table passes; 0.1: ten times tighter; measured\n"
+    "                                            now; exit 1 if none does)\n";
 
 }  // namespace
 

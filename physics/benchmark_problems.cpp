@@ -117,16 +117,16 @@ double sticking_angle() { return theory::sticking_angle(Incline{}.block.pair.mu_
 double above_angle() { return std::round(sticking_angle() * 180.0 / M_PI + 1.0) * M_PI / 180.0; }
 double below_angle() { return std::round(sticking_angle() * 180.0 / M_PI - 1.0) * M_PI / 180.0; }
 
-BenchmarkProblem line_problem(std::string name, std::string label, std::string lesson, std::string question, LineProblem line,
+BenchmarkProblem line_problem(std::string name, std::string label, std::string question, LineProblem line,
                               std::function<Outcome(const LineProblem&, const StepSettings&)> run) {
-  BenchmarkProblem problem{std::move(name), std::move(label), std::move(lesson), std::move(question), "m", line.t_end, {}, line};
+  BenchmarkProblem problem{std::move(name), std::move(label), std::move(question), "m", line.t_end, {}, line};
   problem.run = [line = std::move(line), run = std::move(run)](const StepSettings& settings) { return run(line, settings); };
   return problem;
 }
 
 // A block released on a slope of `angle`, in Box2D and in the reduced models.
-BenchmarkProblem incline_problem(std::string name, std::string label, std::string lesson, std::string question, double angle) {
-  return line_problem(std::move(name), std::move(label), std::move(lesson), std::move(question), incline_line(angle),
+BenchmarkProblem incline_problem(std::string name, std::string label, std::string question, double angle) {
+  return line_problem(std::move(name), std::move(label), std::move(question), incline_line(angle),
                       [angle](const LineProblem& line, const StepSettings& settings) { return incline_run(line, angle, settings); });
 }
 
@@ -219,20 +219,20 @@ double disk_rolling_error(const StepSettings& settings) {
 }  // namespace
 
 std::vector<BenchmarkProblem> benchmark_problems() {
-  std::vector<BenchmarkProblem> problems{lesson_problem("spring_pull"), lesson_problem("incline")};
+  std::vector<BenchmarkProblem> problems{spring_problem(), incline_slides_problem()};
   const double below = below_angle();
-  problems.push_back(incline_problem("Incline " + degrees(below) + ": just below, it sticks", degrees(below) + " sticks", "",
+  problems.push_back(incline_problem("Incline " + degrees(below) + ": just below, it sticks", degrees(below) + " sticks",
                                      "a block released on a " + degrees(below) + " slope, a degree below its sticking angle: the largest "
                                      "distance it moved in 2 s (exact: it never moves)",
                                      below));
-  problems.push_back(line_problem("Slide to rest with c", "slide, c", "",
+  problems.push_back(line_problem("Slide to rest with c", "slide, c",
                                   "slide to rest from 3 m/s with c = 2 N\u00b7s/m: where it stops, against the closed form",
                                   slide_line({0.6, 0.4, 2.0, 0.0}), slide_run));
-  problems.push_back(line_problem("Slide to rest with b", "slide, b", "",
+  problems.push_back(line_problem("Slide to rest with b", "slide, b",
                                   "slide to rest from 3 m/s with b = 1 N\u00b7s\u00b2/m\u00b2: where it stops, against the closed form",
                                   slide_line({0.6, 0.4, 0.0, 1.0}), slide_run));
-  problems.push_back(lesson_problem("tipping_box"));
-  problems.push_back({"Tipping threshold, by bisection", "tip height", "", "the push height where a box stops sliding and tips, by bisection, against d/(2\u00b7\u03bcs) = 0.5 m",
+  problems.push_back(tipping_push_problem());
+  problems.push_back({"Tipping threshold, by bisection", "tip height", "the push height where a box stops sliding and tips, by bisection, against d/(2\u00b7\u03bcs) = 0.5 m",
                       "m", 20.0,
                       [](const StepSettings& settings) {
                         double simulated = 0.0;
@@ -241,39 +241,37 @@ std::vector<BenchmarkProblem> benchmark_problems() {
                         return outcome;
                       },
                       std::nullopt});
-  problems.push_back({"Disk starts to roll", "disk rolls", "", "a disk launched sliding at 2 m/s: when it starts to roll, against v0/(3\u00b7\u03bck\u00b7g)", "s", 1.0,
+  problems.push_back({"Disk starts to roll", "disk rolls", "a disk launched sliding at 2 m/s: when it starts to roll, against v0/(3\u00b7\u03bck\u00b7g)", "s", 1.0,
                       answered(disk_rolling_error), std::nullopt});
   return problems;
 }
 
-BenchmarkProblem lesson_problem(const std::string& lesson) {
-  if (lesson == "spring_pull") {
-    return line_problem("Spring stick-slip", "spring", lesson,
-                        "the spring-pulled block's largest position error over 10 s, against the exact stick-slip solution",
-                        spring_line(), spring_run);
-  }
-  if (lesson == "incline") {
-    const double above = above_angle();
-    return incline_problem("Incline " + degrees(above) + ": just above, it slides", degrees(above) + " slides", lesson,
-                           "the distance slid down a " + degrees(above) + " slope, a degree above its sticking angle: the largest "
-                           "error over 2 s against \u00bd\u00b7a\u00b7t\u00b2",
-                           above);
-  }
-  if (lesson == "tipping_box") {
-    return {"Tipping push", "tip push", lesson,
-            "the push at which the box slides, pushed at 0.3 m (\u03bcs\u00b7m\u00b7g = 49.05 N), and tips, pushed at 0.7 m "
-            "(m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N): the larger error",
-            "N", 6.2, answered(tipping_error), std::nullopt};
-  }
-  if (lesson == "where_methods_fail") {
-    // Its question: what holds the block still on a slope it should stick to.
-    return incline_problem("Incline 20\u00b0: it sticks", "20\u00b0 sticks", lesson,
-                           "a block released on a 20\u00b0 slope, well below its sticking angle: the largest distance it moved in 2 s "
-                           "(exact: it never moves)",
-                           20.0 * M_PI / 180.0);
-  }
-  throw InvalidInput("no benchmark problem for '" + lesson +
-                     "'; there is one for each built-in lesson: spring_pull, incline, tipping_box and where_methods_fail");
+BenchmarkProblem spring_problem() {
+  return line_problem("Spring stick-slip", "spring",
+                      "the spring-pulled block's largest position error over 10 s, against the exact stick-slip solution",
+                      spring_line(), spring_run);
+}
+
+BenchmarkProblem incline_slides_problem() {
+  const double above = above_angle();
+  return incline_problem("Incline " + degrees(above) + ": just above, it slides", degrees(above) + " slides",
+                         "the distance slid down a " + degrees(above) + " slope, a degree above its sticking angle: the largest "
+                         "error over 2 s against \u00bd\u00b7a\u00b7t\u00b2",
+                         above);
+}
+
+BenchmarkProblem tipping_push_problem() {
+  return {"Tipping push", "tip push",
+          "the push at which the box slides, pushed at 0.3 m (\u03bcs\u00b7m\u00b7g = 49.05 N), and tips, pushed at 0.7 m "
+          "(m\u00b7g\u00b7d/(2\u00b7h) = 35.0 N): the larger error",
+          "N", 6.2, answered(tipping_error), std::nullopt};
+}
+
+BenchmarkProblem incline_sticks_problem(double angle) {
+  return incline_problem("Incline " + degrees(angle) + ": it sticks", degrees(angle) + " sticks",
+                         "a block released on a " + degrees(angle) + " slope, below its sticking angle: the largest distance it "
+                         "moved in 2 s (exact: it never moves)",
+                         angle);
 }
 
 std::string reduced_method_name(ReducedMethod method) {

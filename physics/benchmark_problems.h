@@ -1,5 +1,5 @@
-// Benchmark problems with exact answers, for speed against accuracy: the built-in lessons'
-// questions and the benchmark's others, each runnable in Box2D with any setting and, where the
+// Benchmark problems with exact answers, for speed against accuracy (the bench's own: a built-in
+// lesson is judged by its own script, lessons/runtime/lesson_benchmark.h), each runnable in Box2D with any setting and, where the
 // problem is a block on a line, by the reduced 1-DOF models; every run judged by its error and
 // by how it failed (RunCheck).
 #pragma once
@@ -50,7 +50,6 @@ Outcome run_reduced(const LineProblem& line, ReducedMethod method, double hz, do
 struct BenchmarkProblem {
   std::string name;      // short, for a chart's title
   std::string label;     // shorter, for a table's column
-  std::string lesson;    // the built-in lesson it stands for ("" for the benchmark's others)
   std::string question;  // what is compared with the exact answer, in words
   std::string unit;      // of the error
   double simulated = 1.0;  // s, for the cost per simulated second
@@ -59,13 +58,18 @@ struct BenchmarkProblem {
   std::optional<LineProblem> line;  // when it is a block on a line
   double error(const StepSettings& settings) const { return run(settings).error; }
 };
-// spring_pull, incline, tipping_box or where_methods_fail; throws InvalidInput listing them
-// for another name.
-BenchmarkProblem lesson_problem(const std::string& lesson);
-// Every problem the benchmark charts, each with an exact answer: the three lessons' problems
-// (incline's is a slope a degree above the sticking angle), the slope a degree below it,
-// slides to rest with c and with b, the tipping threshold found by bisection against
-// d/(2·mu_s), and the disk that starts to roll.
+// The bench's own problems, in C++ with exact answers (none of them is a lesson's copy):
+// a block (0.4 × 0.2 m, mu_s 0.6, mu_k 0.4) pulled through a spring at constant speed, stick-slip
+// over 10 s; a block on a slope a degree above its sticking angle; a box pushed at 0.3 m (slides)
+// and at 0.7 m (tips); a block on a slope of `angle` radians below its sticking angle.
+BenchmarkProblem spring_problem();
+BenchmarkProblem incline_slides_problem();
+BenchmarkProblem tipping_push_problem();
+BenchmarkProblem incline_sticks_problem(double angle);
+// Every problem the benchmark charts, each with an exact answer: the spring, the slope a
+// degree above the sticking angle and a degree below it, slides to rest with c and with b, the
+// tipping push, the tipping threshold found by bisection against d/(2·mu_s), and the disk that
+// starts to roll.
 std::vector<BenchmarkProblem> benchmark_problems();
 
 }  // namespace frictionlab

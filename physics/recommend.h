@@ -1,7 +1,7 @@
-// The cheapest model that answers the question: each built-in lesson has a benchmark problem
-// with an exact answer, and the recommender measures the friction treatments, step rates and
-// sub-steps on it (error against the exact answer, CPU time per simulated second) to find the
-// cheapest setting that meets a tolerance. One setting per call of run_next(), so a window can
+// The cheapest model that answers the question: the recommender measures the friction
+// treatments, step rates and sub-steps on any problem (a run function; a lesson's is built in
+// lessons/runtime/lesson_benchmark.h) by its error and CPU time per simulated second, to find
+// the cheapest setting that meets a tolerance. One setting per call of run_next(), so a window can
 // measure between frames and show its progress.
 #pragma once
 

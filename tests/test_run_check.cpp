@@ -107,7 +107,7 @@ TEST(RunCheck, ABlockThatShouldStayPutCreepsOrSlides) {
 // the block more often than Coulomb's (it touches rest each period of the spring); a large
 // epsilon creeps through the sticks and misses them.
 TEST(FailedRuns, TheSpringProblemNamesHowEachTreatmentFails) {
-  const BenchmarkProblem spring = lesson_problem("spring_pull");
+  const BenchmarkProblem spring = spring_problem();
   StepSettings settings;
   settings.treatment = FrictionTreatment::regularized;
   settings.threshold_speed = 0.01;
@@ -137,7 +137,7 @@ TEST(FailedRuns, AFailedRunNeverMeetsTheTolerance) {
   StepSettings one_mu;
   one_mu.treatment = FrictionTreatment::box2d;
   one_mu.hz = 60;
-  const Trial trial = measure_setting(lesson_problem("spring_pull"), one_mu, 1, 0.05);
+  const Trial trial = measure_setting(spring_problem(), one_mu, 1, 0.05);
   EXPECT_LT(trial.error, 0.05);
   EXPECT_EQ(trial.fails, "spurious stick-slip");
   EXPECT_FALSE(trial.meets);

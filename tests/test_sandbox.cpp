@@ -15,6 +15,7 @@
 
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
+#include "lessons/runtime/lesson_benchmark.h"
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
 #include <backends/imgui_impl_opengl3.h>
@@ -676,8 +677,12 @@ end)
   EXPECT_EQ(driver.lesson().scene().frame(), 0);
 }
 
+// The tab runs the lesson's own script with its sliders as they are: the tipping box pushed
+// low slides, which one coefficient (Box2D's own) gets wrong, so the cheapest setting found
+// is not Box2D's and answers the lesson's table at that slider value.
 TEST(Sandbox, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
-  Driver driver("incline");
+  Driver driver("tipping_box");
+  driver.playback().set_parameter("push_height", "0.3");
   driver.frame();
   driver.frame();  // a tab bar lays its tabs out in its first frame: the user sees them from the second
   driver.click("Cheapest setting tab");
@@ -689,10 +694,13 @@ TEST(Sandbox, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
   }
   ASSERT_TRUE(driver.sandbox().control("use it").has_value()) << "no answer after " << frames << " frames";
   EXPECT_GE(frames, 84 - 2) << "one setting a frame: 4 treatments x 7 rates x 3 sub-step counts";
+  // Measuring ran other Lesson instances: the running one kept its slider and its settings.
+  EXPECT_EQ(driver.lesson().parameter("push_height").value, 0.3);
+  EXPECT_EQ(driver.lesson().settings().hz, 240.0);
   driver.click("use it");
-  // The setting used answers the incline's problem within the 1 mm asked for.
   const StepSettings used = driver.lesson().settings();
-  EXPECT_LE(lesson_problem("incline").error(used), 0.001) << describe(used);
+  EXPECT_NE(used.treatment, FrictionTreatment::box2d) << describe(used);
+  EXPECT_LE(lessons::lesson_problem("tipping_box", {{"push_height", "0.3"}}).error(used), 1.0) << describe(used);
   EXPECT_EQ(driver.lesson().scene().frame(), 0);  // a new setting starts the lesson again
 }
 

@@ -151,8 +151,9 @@ class Sandbox {
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on
-  double recommend_tolerance_ = 0.0;           // as typed, for the lesson below
-  std::string recommend_lesson_;               // whose problem the tolerance is for
+  double recommend_tolerance_ = 1.0;           // as typed: times the lesson's own tolerances
+  std::string recommend_path_;                 // the lesson the search was started on
+  std::string recommend_error_;                // why the last Measure could not start
   // The Stability map tab: the map for a mu_s and the g·cos θ of the slope, made once for each.
   std::vector<StabilityCell> stability_cells_;
   std::pair<double, double> stability_for_{-1.0, -1.0};
