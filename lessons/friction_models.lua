@@ -15,8 +15,8 @@ lesson {
   title = "Three friction models, one launch",
   question = "Coulomb, Coulomb + c·v, Coulomb + b·v²: which block stops first, and how does each law slow it?",
   -- Half a second after the last block has stopped (Coulomb's, which has no drag to help).
-  -- (At most 10 s, which the slowest slide allowed, mu_k = 0.05 at 5 m/s, fits.)
-  duration = function() return math.min(rest(0, 0).time + 0.5, 10) end,
+  -- (At most 15 s, which the slowest slide allowed, mu_k = 0.05 at 5 m/s (10.2 s), fits.)
+  duration = function() return math.min(rest(0, 0).time + 0.5, 15) end,
   order = 16,
   moments = {
     { "all_sliding", at = 0.2, readme = true,

@@ -316,7 +316,9 @@ GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, dou
     push.speed = -offset * exp_series_tail(u, 1) / gamma + ramp * exp_series_tail(u, 2) / (gamma * gamma);
     push.distance = offset * exp_series_tail(u, 2) / (gamma * gamma) - ramp * exp_series_tail(u, 3) / (gamma * gamma * gamma);
   } else {
-    constexpr double step = 1e-4;
+    // 0.1 ms, or more for a very long slide, so that no call takes more than 200 000 steps: a
+    // script cannot stop C++ code, so it must not be able to ask for a run without end.
+    const double step = std::max(1e-4, tau / 200000.0);
     const auto acceleration = [&](double s, double v) { return ramp * s + offset - gamma * v - beta * v * std::abs(v); };
     double s = 0.0, x = 0.0, v = 0.0;
     while (s < tau) {
@@ -423,7 +425,9 @@ SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, doub
   require_positive(where, "g", g);
   const double deceleration = g * (std::sin(angle) + mu_k * std::cos(angle));
   if (deceleration <= 0.0) return {infinity, infinity, true};  // flat and frictionless: it never stops
-  return {v0 * v0 / (2.0 * deceleration), v0 / deceleration, std::tan(angle) <= mu_s};
+  // It stays while static friction can hold it: up to max(mu_s, mu_k)·N, as the listener holds
+  // (with mu_k above mu_s, a block just pushed past mu_s·N would at once be held back by mu_k·N).
+  return {v0 * v0 / (2.0 * deceleration), v0 / deceleration, std::tan(angle) <= std::max(mu_s, mu_k)};
 }
 
 VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g) {

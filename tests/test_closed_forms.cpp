@@ -506,7 +506,7 @@ TEST(ClosedForms, CornerImpactObeysTheImpulseLaws) {
 TEST(ClosedForms, SlopeLaunchMatchesEventSolver) {
   for (const double angle : {0.0, 0.2, 0.5}) {
     for (const double mu_k : {0.05, 0.45}) {
-      const double mu_s = mu_k + 0.1, mass = 1.0;
+      const double mu_s = mu_k + 0.1, mass = 1.0;  // and below, mu_k above mu_s
       OneDofBlock block;
       block.mass = mass;
       block.normal_force = mass * g * std::cos(angle);
@@ -521,6 +521,13 @@ TEST(ClosedForms, SlopeLaunchMatchesEventSolver) {
       EXPECT_EQ(launch.stays, stop.kind == EventKind::stop) << angle << " " << mu_k;
     }
   }
+}
+
+// With mu_k above mu_s a stopped block is held up to mu_k·N (as the solver holds it): on a slope
+// with mu_s < tan θ <= mu_k it stays.
+TEST(ClosedForms, SlopeLaunchHoldsUpToTheLargerCoefficient) {
+  EXPECT_TRUE(slope_launch(3.0, std::atan(0.4), 0.3, 0.5, g).stays);
+  EXPECT_FALSE(slope_launch(3.0, std::atan(0.6), 0.3, 0.5, g).stays);
 }
 
 // The velocity hack against the discrete process itself, frame by frame.

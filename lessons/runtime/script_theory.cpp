@@ -214,7 +214,7 @@ int growing_push(lua_State* state) {
     Fields fields(state, 1, "theory.growing_push", {"mass", "rate", "mu_s", "mu_k", "c", "b", "t", "g"});
     const double mass = fields.number("mass", "kg"), rate = fields.number("rate", "N/s");
     const FrictionPair pair = pair_from(fields);
-    const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s", 0.0);
+    const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number_in("t", "s", 0.0, 0.0, 86400.0);
     const theory::GrowingPush push = theory::growing_push(mass, rate, pair, g, t);
     lua_createtable(state, 0, 7);
     set_number(state, "breakaway_push", push.breakaway_push);

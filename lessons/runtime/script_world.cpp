@@ -42,7 +42,10 @@ TopFace top_face(lua_State* state, Fields& fields, const b2Body* below) {
   if (below->GetAngle() != 0.0f) {
     throw InvalidInput(what + " is turned (angle ≠ 0); on = a body needs it level; place this one with x, y and angle");
   }
+  // Its first fixture, the box itself: Box2D lists a body's fixtures newest first, and a box on
+  // feet (box{ feet = n }) adds its feet after the box.
   const b2Fixture* fixture = below->GetFixtureList();
+  while (fixture->GetNext() != nullptr) fixture = fixture->GetNext();
   if (fixture == nullptr || fixture->GetType() != b2Shape::e_polygon) {
     throw InvalidInput(what + " has no flat top face (only a box or a polygon has one); place this one with x and y");
   }
