@@ -171,9 +171,13 @@ void FrictionListener::sum_sibling_impulses(const b2Contact* contact, const b2Ve
                                             double* tangent) const {
   const b2Body* a = contact->GetFixtureA()->GetBody();
   const b2Body* b = contact->GetFixtureB()->GetBody();
-  for (const b2ContactEdge* edge = b->GetContactList(); edge != nullptr; edge = edge->next) {
+  // Every contact between the two is in both bodies' lists: walk the moving body's, which is
+  // short, not a ground's, which holds every contact on the ground (quadratic in a pile's base).
+  const b2Body* walked = b->GetType() == b2_staticBody ? a : b;
+  const b2Body* partner = walked == b ? a : b;
+  for (const b2ContactEdge* edge = walked->GetContactList(); edge != nullptr; edge = edge->next) {
     const b2Contact* other = edge->contact;
-    if (other == contact || edge->other != a || !other->IsTouching() || !other->IsEnabled()) continue;
+    if (other == contact || edge->other != partner || !other->IsTouching() || !other->IsEnabled()) continue;
     // Box2D keeps each point's accumulated impulses in the manifold for warm starting; they are
     // stored before any contact's PostSolve is called. Along this contact's tangent, and with
     // the same sign convention (on the body that is this contact's B).
