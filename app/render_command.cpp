@@ -186,7 +186,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
-  const ui::WorldFraming framing = ui::WorldFraming::of(lesson.scene());
+  const ui::WorldFraming framing = ui::WorldFraming::of(lesson);
 
   std::unique_ptr<ui::HeadlessRenderer> renderer;
   try {

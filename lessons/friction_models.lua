@@ -52,17 +52,20 @@ pair { "block", "block", mu_s = mu_s, mu_k = mu_k, sliders = false }
 -- Three lanes 0.45 m apart, each floor 0.2 m thick, so the block below clears the floor above.
 -- The blocks are three times as wide as tall: up to mu_k = 2 they cannot pitch over their front
 -- edge as friction slows them (friction's moment mu_k·N·h/2 against N·w/2).
-local lanes = {}
+local lanes, blocks = {}, {}
 for i, model in ipairs { "coulomb", "engineering", "quadratic" } do
   local floor = ground { model .. "_floor", material = model .. "_lane", y = 0.9 - 0.45 * (i - 1), thickness = 0.2 }
   local block = box { model, material = "block", width = 0.3, height = 0.1, on = floor, at = 0, mass = mass,
                       velocity = { launch_speed, 0 } }
-  lanes[model] = contact(block, floor)
+  lanes[model], blocks[i] = contact(block, floor), block
   probe { model .. "_speed", unit = "m/s", read = { block, "vx" } }
   probe { model .. "_friction", unit = "N", read = { lanes[model], "fx" } }  -- dry and drag: all the floor does
   probe { model .. "_distance", unit = "m", read = { block, "distance", along = { 1, 0 } } }
   probe { model .. "_slipping", read = { lanes[model], "slipping" } }
 end
+
+-- A strip per lane, each on its block, all with one scale and one stretch of floor.
+view { lanes = blocks }
 
 -- Probes and plots ------------------------------------------------------------------------
 plot { "Speed of each block", kind = "time", y = { "coulomb_speed", "engineering_speed", "quadratic_speed" } }

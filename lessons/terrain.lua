@@ -50,15 +50,15 @@ pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3, sliders = false }  -- the boxes n
 local keep = 1 - 2 * 0.45 * g * step_length() / 3
 
 -- World -----------------------------------------------------------------------------------
--- Four lanes 1.5 m apart. On the flat each is a floor; on a slope each is a thin ramp 20 m long
--- (a solid wedge would reach up into the lane above), and the box starts 5 m up it, with room to
--- slide back. The boxes
--- are 2.5 times as wide as tall, so friction up to mu_k = 2 cannot pitch them over.
+-- Four lanes 4 m apart, so a lane's strip in the view shows no other lane's ramp. On the flat
+-- each is a floor; on a slope each is a thin ramp 20 m long (a solid wedge would reach up into
+-- the lane above), and the box starts 5 m up it, with room to slide back. The boxes are 2.5
+-- times as wide as tall, so friction up to mu_k = 2 cannot pitch them over.
 local up = { math.cos(math.rad(slope)), math.sin(math.rad(slope)) }
 local across = { -up[2], up[1] }  -- out of the ramp's top face
 local boxes = {}
 for i, surface in ipairs { "asphalt", "grass", "ice", "smooth" } do
-  local y = 4.5 - 1.5 * (i - 1)
+  local y = 12 - 4 * (i - 1)
   local name = surface == "smooth" and "hack_box" or surface .. "_box"
   local placed
   if slope == 0 then
@@ -79,6 +79,8 @@ for i, surface in ipairs { "asphalt", "grass", "ice", "smooth" } do
   probe { name .. "_speed", unit = "m/s", read = { boxes[i], "speed", along = up } }
 end
 local hack_box = boxes[4]
+-- A strip per surface, each on its box, all with one scale: where each stops compares across.
+view { lanes = boxes }
 every_step(function() hack_box:scale_velocity(keep) end)
 
 plot { "Distance along the launch", kind = "time",

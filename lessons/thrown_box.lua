@@ -40,6 +40,9 @@ local thrown = box { "box", material = "wood", width = 0.4, height = 0.3, x = 0,
 local locked = box { "locked_box", material = "wood", width = 0.4, height = 0.3, x = 0, y = 2.6, mass = mass,
                      velocity = { throw_speed, 0 }, spin = spin, fixed_rotation = true }
 
+-- A strip for each box, side by side in time: the tumble above, the game's slide below.
+view { lanes = { thrown, locked } }
+
 -- Probes and plots ------------------------------------------------------------------------
 local landing = contact(thrown, floor)
 probe { "box_spin", unit = "rad/s", read = { thrown, "omega" } }

@@ -54,9 +54,10 @@ pair { "jittering_block", "jittering_block", like = { "block", "slope" } }
 -- World -----------------------------------------------------------------------------------
 ground { material = "slope" }
 local slope = incline { "slope", material = "slope", angle = angle, length = 8 }
-local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 6.4, mass = 1 }
-local creeping = box { "creeping", material = "creeping_block", width = 0.4, height = 0.2, on = slope, at = 4.0, mass = 1 }
-local jittering = box { "jittering", material = "jittering_block", width = 0.4, height = 0.2, on = slope, at = 1.6, mass = 1 }
+local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 5.6, mass = 1 }
+local creeping = box { "creeping", material = "creeping_block", width = 0.4, height = 0.2, on = slope, at = 4.4, mass = 1 }
+-- 1.2 m apart: close enough to be seen together, and the creep (3 cm/s) never closes the gap.
+local jittering = box { "jittering", material = "jittering_block", width = 0.4, height = 0.2, on = slope, at = 3.2, mass = 1 }
 local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 
 -- Probes and plots ------------------------------------------------------------------------

@@ -24,7 +24,7 @@ struct LessonAt {
 
   LessonAt(const std::string& name, std::map<std::string, std::string> set, double t)
       : lesson(std::make_unique<lessons::Lesson>(lessons::resolve_lesson(name), std::move(set))),
-        framing(WorldFraming::of(lesson->scene())) {
+        framing(WorldFraming::of(*lesson)) {
     step_to(t);
   }
   void step_to(double t) { lesson->step_to(t); }

@@ -147,7 +147,7 @@ TEST(Overlays, ArrowsAlongOneLineAreDrawnSideBySide) {
   const ImVec2 display(frame_width, frame_height);
   const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
   const std::vector<ScreenArrow> arrows =
-      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, display, 1.0f));
+      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, at.framing, display, 1.0f));
   const ScreenArrow* weight = nullptr;
   const ScreenArrow* normal = nullptr;
   for (const ScreenArrow& arrow : arrows) {

@@ -105,7 +105,7 @@ float drawn_length(const Image& image, const ScreenArrow& arrow, ImU32 colour) {
 void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, ContactState state) {
   const ImVec2 display(frame_width, frame_height);
   const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
-  const float scale = arrow_scale(*at.lesson, display, 1.0f);
+  const float scale = arrow_scale(*at.lesson, at.framing, display, 1.0f);
   const b2Body* block = at.scene().body("block");
   const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale);
   const ScreenArrow& friction = arrow_of(arrows, ForceKind::friction);

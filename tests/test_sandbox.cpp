@@ -404,6 +404,52 @@ TEST(Sandbox, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
   EXPECT_LT(std::abs(lesson.scene().ledger().residual()), 0.02 * std::abs(lesson.scene().ledger().work_applied) + 1e-3);
 }
 
+// The wheel zooms about the point under the mouse, a drag on empty space pans the view with the
+// mouse, and a double click puts the lesson's own view back; the lesson does not notice.
+TEST(Sandbox, TheWheelZoomsAndADragOnEmptySpacePans) {
+  Driver driver("spring_pull");
+  driver.frame();
+  driver.key(GLFW_KEY_SPACE);  // paused: the view moves only because of the mouse
+  const FrameLayout layout = FrameLayout::of(ImVec2(1280.0f, 720.0f), driver.sandbox().ui_scale(ImVec2(1280.0f, 720.0f)),
+                                             ImVec2(0.0f, ImGui::GetFrameHeight()));
+  // Empty sky, high in the world view and left of the free-body diagram.
+  const ImVec2 sky(layout.world_corner.x + 60.0f, layout.world_corner.y + 40.0f);
+  driver.move_mouse(sky);
+  const Camera before = driver.sandbox().world_camera();
+  const b2Vec2 under = before.to_world(sky);
+  ImGui::GetIO().MouseWheel = 2.0f;
+  driver.frame();
+  ImGui::GetIO().MouseWheel = 0.0f;
+  driver.frame();
+  const Camera zoomed = driver.sandbox().world_camera();
+  EXPECT_NEAR(zoomed.pixels_per_metre, before.pixels_per_metre * 1.44f, 1e-3f * before.pixels_per_metre);
+  const b2Vec2 still_under = zoomed.to_world(sky);
+  EXPECT_NEAR(still_under.x, under.x, 1e-4);
+  EXPECT_NEAR(still_under.y, under.y, 1e-4);
+
+  // Drag 100 px right and 30 px down from empty space: the world moves with the mouse.
+  driver.mouse_button(true);
+  EXPECT_EQ(driver.lesson().scene().grabbed(), nullptr);  // nothing was taken hold of
+  ImGui::GetIO().MousePos = ImVec2(sky.x + 100.0f, sky.y + 30.0f);
+  driver.frame();
+  driver.mouse_button(false);
+  const Camera panned = driver.sandbox().world_camera();
+  const ImVec2 moved = panned.to_screen(under);
+  EXPECT_NEAR(moved.x, sky.x + 100.0f, 0.5f);
+  EXPECT_NEAR(moved.y, sky.y + 30.0f, 0.5f);
+  EXPECT_EQ(driver.lesson().scene().time(), 0.0);
+
+  // A double click on empty space: the lesson's own view again.
+  ImGui::GetIO().MousePos = sky;
+  driver.frame();
+  for (int i = 0; i < 2; ++i) {
+    driver.mouse_button(true);
+    driver.mouse_button(false);
+  }
+  EXPECT_EQ(driver.sandbox().view_adjust(), ViewAdjust{});
+  EXPECT_FLOAT_EQ(driver.sandbox().world_camera().pixels_per_metre, before.pixels_per_metre);
+}
+
 // A copy of a built-in lesson a student can edit, opened in the sandbox.
 struct StudentCopy {
   ScriptFile script{read_file(lessons::resolve_lesson("incline"))};

@@ -49,26 +49,188 @@ b2AABB lesson_bounds(const Scene& scene) {
   return box;
 }
 
-WorldFraming WorldFraming::of(const Scene& scene) {
+b2AABB moving_bounds(const Scene& scene) {
+  b2AABB box;
+  box.lowerBound = box.upperBound = b2Vec2{0.0f, 0.0f};
+  bool empty = true;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      grow(box, empty, fixture->GetAABB(0).lowerBound);
+      grow(box, empty, fixture->GetAABB(0).upperBound);
+    }
+  }
+  return box;
+}
+
+namespace {
+
+// A body's width and height as its fixtures' boxes cover it now (a body on feet counts whole), m.
+b2Vec2 body_size(const b2Body* body) {
+  b2AABB box;
+  box.lowerBound = box.upperBound = b2Vec2{0.0f, 0.0f};
+  bool empty = true;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    grow(box, empty, fixture->GetAABB(0).lowerBound);
+    grow(box, empty, fixture->GetAABB(0).upperBound);
+  }
+  return box.upperBound - box.lowerBound;
+}
+
+// The longer side of the smallest moving body, m; 0 with none.
+float smallest_moving_body(const Scene& scene) {
+  float smallest = 0.0f;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const b2Vec2 size = body_size(body);
+    const float side = std::max(size.x, size.y);
+    if (side > 0.0f && (smallest == 0.0f || side < smallest)) smallest = side;
+  }
+  return smallest;
+}
+
+// The view's bodies in this scene; empty when one of them is missing (a script since
+// reloaded that no longer makes it): the camera then frames the whole lesson.
+std::vector<const b2Body*> view_bodies(const Scene& scene, const lessons::View& view) {
+  std::vector<const b2Body*> found;
+  for (const std::string& name : view.bodies) {
+    const auto at = std::find_if(scene.bodies().begin(), scene.bodies().end(),
+                                 [&](const auto& entry) { return entry.first == name; });
+    if (at == scene.bodies().end()) return {};
+    found.push_back(at->second);
+  }
+  return found;
+}
+
+// Moves a camera that shows less than the whole lesson so that it shows as much of the lesson
+// as it can: its view stays inside `bounds` (with a little room), along each axis on which it
+// is smaller than them; but what moves (`moving`) stays in view with room for its arrows, the
+// most above it, where the normal force and its label go.
+void keep_within(Camera& camera, const b2AABB& bounds, const b2AABB& moving, float free_width) {
+  const float ppm = camera.pixels_per_metre;
+  // The world seen left, right, above and below the anchor, m.
+  const float left = (camera.anchor.x - camera.origin.x) / ppm;
+  const float right = (camera.origin.x + free_width - camera.anchor.x) / ppm;
+  const float above = (camera.anchor.y - camera.origin.y) / ppm;
+  const float below = (camera.origin.y + camera.size.y - camera.anchor.y) / ppm;
+  const float room_x = 0.12f * (left + right), room_y = 0.08f * (above + below);
+  const auto clamp_axis = [](float centre, float low, float high, float before, float after) {
+    if (high - low < before + after) return centre;  // the view is wider than the lesson here
+    return std::clamp(centre, low + before, high - after);
+  };
+  camera.centre.x = clamp_axis(camera.centre.x, bounds.lowerBound.x - room_x, bounds.upperBound.x + room_x, left, right);
+  camera.centre.y = clamp_axis(camera.centre.y, bounds.lowerBound.y - room_y, bounds.upperBound.y + room_y, below, above);
+  const auto shift_to_show = [](float centre, float low, float high, float before, float after) {
+    if (low < centre - before) centre = low + before;      // show the low end first...
+    if (high > centre + after) centre = high - after;      // ...and the high end wins: arrows go up
+    return centre;
+  };
+  const float arrows_above = 0.3f * (above + below), arrows_aside = 0.12f * (left + right);
+  camera.centre.x = shift_to_show(camera.centre.x, moving.lowerBound.x - arrows_aside, moving.upperBound.x + arrows_aside,
+                                  left, right);
+  camera.centre.y = shift_to_show(camera.centre.y, moving.lowerBound.y - room_y, moving.upperBound.y + arrows_above,
+                                  below, above);
+}
+
+// Room around the lesson for the arrows and their labels.
+constexpr float room = 1.45f;
+
+}  // namespace
+
+WorldFraming WorldFraming::of(const lessons::Lesson& lesson) {
+  const Scene& scene = lesson.scene();
   const b2AABB box = lesson_bounds(scene);
   WorldFraming framing;
+  framing.view = lesson.view();
   // Thin scenes (a block on a bench) still get some height, so arrows have room.
   framing.extent = b2Vec2{std::max(box.upperBound.x - box.lowerBound.x, 0.3f),
                           std::max(box.upperBound.y - box.lowerBound.y, 0.3f)};
+  framing.smallest_body = smallest_moving_body(scene);
   return framing;
 }
 
-Camera WorldFraming::camera(const Scene& scene, ImVec2 origin, ImVec2 size, float free_width) const {
-  Camera camera;
-  camera.origin = origin;
-  camera.size = size;
-  // Room around the lesson for the arrows and their labels.
-  constexpr float room = 1.45f;
-  camera.pixels_per_metre = std::min(free_width / (room * extent.x), size.y / (room * extent.y));
-  camera.centre = lesson_bounds(scene).GetCenter();
-  // A little below the middle: forces drawn above bodies need more room than the ground.
-  camera.anchor = ImVec2(origin.x + 0.5f * free_width, origin.y + 0.56f * size.y);
-  return camera;
+std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImVec2 size, float free_width, float scale,
+                                          const ViewAdjust& adjust) const {
+  using Kind = lessons::View::Kind;
+  const std::vector<const b2Body*> bodies = view_bodies(scene, view);
+  const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
+  const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
+  const float strip_height = size.y / static_cast<float>(strips);
+  const float fit = std::min(free_width / (room * extent.x), size.y / (room * extent.y));
+  float pixels_per_metre = fit;
+  if (kind == Kind::window) {
+    const b2Vec2 span = view.high - view.low;
+    pixels_per_metre = std::min(free_width / span.x, size.y / span.y);
+  } else if (view.width > 0.0) {
+    pixels_per_metre = free_width / static_cast<float>(view.width);
+  }
+  if (kind == Kind::lanes) {
+    // Each lane's body, with room above it for the normal force and below for the ground,
+    // fits in its strip: the tallest of them a third of the strip high unless a width says.
+    float tallest = 0.0f;
+    for (const b2Body* body : bodies) tallest = std::max(tallest, body_size(body).y);
+    if (tallest > 0.0f) {
+      if (view.width <= 0.0) pixels_per_metre = strip_height / (3.0f * tallest);
+      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.2f * tallest));
+    }
+  }
+  // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
+  float readable = smallest_body > 0.0f ? min_body_pixels * scale / smallest_body : 0.0f;
+  if (kind == Kind::whole) {
+    // ...but not so close that a moving body is out of the picture at the start.
+    const b2AABB moving = moving_bounds(scene);
+    const b2Vec2 span = moving.upperBound - moving.lowerBound;
+    if (span.x > 0.0f && span.y > 0.0f) {
+      readable = std::min(readable, std::min(free_width / (1.2f * span.x), size.y / (1.2f * span.y)));
+    }
+  }
+  const bool zoomed_in = kind != Kind::window && pixels_per_metre < readable;
+  if (kind != Kind::window) pixels_per_metre = std::max(pixels_per_metre, readable);
+
+  b2Vec2 centre{0.0f, 0.0f};
+  switch (kind) {
+    case Kind::whole:
+      // Everything when it fits; what moves when the view had to zoom in to keep it readable.
+      centre = (zoomed_in ? moving_bounds(scene) : lesson_bounds(scene)).GetCenter();
+      break;
+    case Kind::follow:
+      centre = bodies.front()->GetWorldCenter();
+      break;
+    case Kind::window:
+      centre = 0.5f * (view.low + view.high);
+      break;
+    case Kind::lanes: {
+      // One horizontal window for every lane, so distances compare across lanes: centred
+      // between the lane that is furthest behind and the one furthest ahead.
+      float low = bodies.front()->GetWorldCenter().x, high = low;
+      for (const b2Body* body : bodies) {
+        low = std::min(low, body->GetWorldCenter().x);
+        high = std::max(high, body->GetWorldCenter().x);
+      }
+      centre.x = 0.5f * (low + high);
+      break;
+    }
+  }
+
+  std::vector<Camera> made;
+  for (std::size_t i = 0; i < strips; ++i) {
+    Camera camera;
+    camera.origin = ImVec2(origin.x, origin.y + strip_height * static_cast<float>(i));
+    camera.size = ImVec2(size.x, strip_height);
+    camera.pixels_per_metre = pixels_per_metre * adjust.zoom;
+    // A little below the middle: forces drawn above bodies need more room than the ground.
+    // A window the script fixed is centred exactly, so all of it is in view.
+    const float down = kind == Kind::window ? 0.5f : strips > 1 ? 0.6f : 0.56f;
+    camera.anchor = ImVec2(origin.x + 0.5f * free_width, camera.origin.y + down * strip_height);
+
+    camera.centre = centre;
+    // Each lane on its own body's height.
+    if (kind == Kind::lanes) camera.centre.y = bodies[i]->GetWorldCenter().y;
+    if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson_bounds(scene), moving_bounds(scene), free_width);
+    camera.centre += adjust.pan;
+    made.push_back(camera);
+  }
+  return made;
 }
 
 }  // namespace frictionlab::ui

@@ -1,10 +1,13 @@
 // Metres to pixels. The zoom is chosen once from the lesson's world at t = 0 (so a block does
-// not shrink as it slides away); the view then follows what moves.
+// not shrink as it slides away) and its view{}; the view then follows what moves.
 #pragma once
 
 #include <box2d/box2d.h>
 #include <imgui.h>
 
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
 #include "physics/scene.h"
 
 namespace frictionlab::ui {
@@ -32,15 +35,32 @@ bool is_ground(const b2Fixture* fixture);
 // the pulleys.
 b2AABB lesson_bounds(const Scene& scene);
 
+// The part of the world that moves: every dynamic body. Empty (zero box) when none does.
+b2AABB moving_bounds(const Scene& scene);
+
+// What the user did to the view in the window (the wheel zooms, a drag on empty space pans),
+// on top of what the lesson asks for. Kept while the lesson is rebuilt (a slider moved), so a
+// teacher's close-up stays; a double click or another lesson puts it back.
+struct ViewAdjust {
+  float zoom = 1.0f;           // times the lesson's scale
+  b2Vec2 pan{0.0f, 0.0f};      // m, added to every camera's centre
+  bool operator==(const ViewAdjust&) const = default;
+};
+
 // Chosen when a lesson is built and kept until it is rebuilt.
 struct WorldFraming {
-  b2Vec2 extent{1.0f, 1.0f};  // m, the size of lesson_bounds at t = 0
-  // Frames the scene as it is now: this is meant to be called at t = 0.
-  static WorldFraming of(const Scene& scene);
-  // A camera on the view rectangle, zoomed to fit the extent with room around it into the part
-  // of the view left free (`free_width` from its left edge), centred there on what the lesson
-  // is about now.
-  Camera camera(const Scene& scene, ImVec2 origin, ImVec2 size, float free_width) const;
+  lessons::View view;            // the lesson's view{} (its bodies belong to that build)
+  b2Vec2 extent{1.0f, 1.0f};     // m, the size of lesson_bounds at t = 0
+  float smallest_body = 0.0f;    // m, the longer side of the smallest moving body at t = 0
+  // Frames the lesson as it is now: this is meant to be called at t = 0.
+  static WorldFraming of(const lessons::Lesson& lesson);
+  // The cameras on the view rectangle as the lesson's view asks (one per lane; one otherwise),
+  // with room for arrows, centred on the part of the view left free (`free_width` from its
+  // left edge). `scale` is the frame's text scale: no moving body is drawn with its longer side
+  // under min_body_pixels × scale, except in a window the lesson fixed.
+  std::vector<Camera> cameras(const Scene& scene, ImVec2 origin, ImVec2 size, float free_width, float scale,
+                              const ViewAdjust& adjust = {}) const;
+  static constexpr float min_body_pixels = 48.0f;
 };
 
 }  // namespace frictionlab::ui

@@ -40,17 +40,26 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   return layout;
 }
 
-Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale,
-                    ImVec2 origin) {
+std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display,
+                                  float scale, ImVec2 origin, const ViewAdjust& adjust) {
   const FrameLayout layout = FrameLayout::of(display, scale, origin);
-  return framing.camera(lesson.scene(), layout.world_corner, layout.world_size, layout.world_size.x - layout.inset_size.x);
+  return framing.cameras(lesson.scene(), layout.world_corner, layout.world_size,
+                         layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
 
-float arrow_scale(const lessons::Lesson& lesson, ImVec2 display, float scale) {
+Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale,
+                    ImVec2 origin) {
+  return world_cameras(lesson, framing, display, scale, origin).front();
+}
+
+float arrow_scale(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale) {
   const FrameLayout layout = FrameLayout::of(display, scale);
-  // The heaviest body's weight is a quarter of the view's height: long enough to read, short
-  // enough to stay in the picture.
-  return pixels_per_newton(lesson.scene(), std::clamp(0.26f * layout.world_size.y, 40.0f * scale, 150.0f * scale));
+  // The heaviest body's weight is a quarter of the view's height (of a lane's, with lanes):
+  // long enough to read, short enough to stay in the picture.
+  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
+  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
+  // A lane holds one body's arrows only, so they may take more of its height.
+  return pixels_per_newton(lesson.scene(), std::clamp((lanes ? 0.4f : 0.26f) * height, 30.0f * scale, 150.0f * scale));
 }
 
 void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
@@ -72,13 +81,26 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const ImVec2 world_and_legend(layout.world_size.x, layout.world_size.y + layout.legend_size.y);
   if (begin_panel("world", "", layout.world_corner, world_and_legend)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const Camera camera = world_camera(lesson, framing, display, s, style.origin);
-    const float newtons_to_pixels = arrow_scale(lesson, display, s);
-    draw->PushClipRect(layout.world_corner, ImVec2(layout.world_corner.x + layout.world_size.x,
-                                                    layout.world_corner.y + layout.world_size.y), true);
-    LabelPlacer labels(layout.world_corner, layout.world_size);
-    draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
-    draw->PopClipRect();
+    const std::vector<Camera> cameras =
+        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust);
+    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s);
+    for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
+      const Camera& camera = cameras[lane];
+      const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
+      draw->PushClipRect(camera.origin, lane_end, true);
+      LabelPlacer labels(camera.origin, camera.size);
+      draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
+      if (cameras.size() > 1) {
+        // Each lane named by its body, in the corner, and parted from the next by a line.
+        const std::string& name = framing.view.bodies[lane];
+        const ImVec2 text = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, name.c_str());
+        draw_label(draw, fonts.small, ImVec2(camera.origin.x + 8.0f * s + 0.5f * text.x, camera.origin.y + 6.0f * s + 0.5f * text.y),
+                   colours.text, colours.panel, name.c_str());
+        if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
+      }
+      draw->PopClipRect();
+    }
+    const Camera& camera = cameras.front();
     draw_legend(draw, lesson.scene(), camera, layout.legend_corner, layout.legend_size, colours, fonts, newtons_to_pixels);
     const b2Body* focus = main_body(lesson.scene());
     std::string focus_name;

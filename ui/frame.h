@@ -46,6 +46,8 @@ struct FrameStyle {
   // model card as two tabs of one panel, to leave the sliders room.
   std::function<void(ImVec2 corner, ImVec2 size)> parameters_panel;
   float parameters_height = 0.0f;
+  // The window's wheel zoom and drag pan.
+  ViewAdjust view_adjust;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
 };
@@ -54,10 +56,13 @@ struct FrameStyle {
 // ImGui::Render(). `framing` is the one chosen when the lesson was (re)built.
 void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const FrameStyle& style, ImVec2 display);
 
-// The world view's camera and arrow scale for this frame, as build_frame draws them: tests
-// use these to find the arrows in the picture.
+// The world view's cameras (one per lane) and arrow scale for this frame, as build_frame draws
+// them: the window finds bodies under the mouse with them, tests find the arrows.
+std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display,
+                                  float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {});
+// The first (or only) of them.
 Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale,
                     ImVec2 origin = ImVec2(0.0f, 0.0f));
-float arrow_scale(const lessons::Lesson& lesson, ImVec2 display, float scale);
+float arrow_scale(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale);
 
 }  // namespace frictionlab::ui

@@ -55,7 +55,7 @@ Playback::Playback(const std::string& path, std::map<std::string, std::string> o
 }
 
 void Playback::after_rebuild() {
-  framing_ = WorldFraming::of(lesson_->scene());
+  framing_ = WorldFraming::of(*lesson_);
   initial_values_.clear();
   for (const lessons::Parameter& parameter : lesson_->parameters()) initial_values_[parameter.name] = parameter_text(parameter);
   record_.clear();
@@ -243,7 +243,7 @@ void Playback::scrub_to(double t) {
       problem_ = error.what();
       return;
     }
-    framing_ = WorldFraming::of(lesson_->scene());
+    framing_ = WorldFraming::of(*lesson_);
     next_action_ = 0;
     blown_ = false;
     problem_.clear();

@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -97,6 +98,7 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   style.fonts = &fonts;
   style.origin = origin;
   style.readings = &playback_->readings();
+  style.view_adjust = view_adjust_;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size) { parameters_panel(corner, size); };
   style.more_tabs = [this] {
     cheapest_setting_tab();
@@ -151,18 +153,38 @@ void Sandbox::handle_keys() {
   if (hit(GLFW_KEY_D, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
+const Camera& Sandbox::world_camera_at(ImVec2 point) const {
+  for (const Camera& camera : cameras_) {
+    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
+  }
+  return cameras_.front();
+}
+
 void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
   ImGuiContext& context = *ImGui::GetCurrentContext();
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback_->lesson();
   Scene& scene = lesson.scene();
   const FrameLayout layout = FrameLayout::of(size, scale, origin);
-  camera_ = ui::world_camera(lesson, playback_->framing(), size, scale, origin);
-  const Camera& camera = camera_;
+  cameras_ = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
+  const Camera& camera = world_camera_at(io.MousePos);
   const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
   const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
   const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
                           world.Contains(io.MousePos) && !inset.Contains(io.MousePos);
+  if (over_world && io.MouseWheel != 0.0f) {
+    // Zoom about the point under the mouse: it stays where it is on the screen.
+    const b2Vec2 under = camera.to_world(io.MousePos);
+    view_adjust_.zoom = std::clamp(view_adjust_.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
+    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
+    const auto lane = static_cast<std::size_t>(&camera - cameras_.data());
+    view_adjust_.pan += under - zoomed[lane].to_world(io.MousePos);
+  }
+  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    view_adjust_ = {};
+    panning_from_.reset();
+    return;
+  }
   if (scene.grabbed() == nullptr && over_world && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const b2Vec2 point = camera.to_world(io.MousePos);
     for (const auto& [name, body] : scene.bodies()) {
@@ -176,6 +198,15 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
         }
       }
       if (hand_held_) break;
+    }
+    // Empty space: the drag pans the view, holding that point of the world under the mouse.
+    if (!hand_held_) panning_from_ = point;
+  }
+  if (panning_from_) {
+    if (!io.MouseDown[ImGuiMouseButton_Left]) {
+      panning_from_.reset();
+    } else {
+      view_adjust_.pan += *panning_from_ - camera.to_world(io.MousePos);
     }
   }
   // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves
@@ -265,6 +296,8 @@ std::string Sandbox::open(const std::string& name_or_path) {
     control_errors_.clear();
     sliding_.reset();
     hand_held_ = false;
+    view_adjust_ = {};
+    panning_from_.reset();
     failed_script_.clear();
     return "";
   } catch (const InvalidInput& error) {

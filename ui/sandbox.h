@@ -92,8 +92,13 @@ class Sandbox {
   // The Stability map tab's chart as last drawn: the map and this lesson's marks.
   const Chart& stability_chart() const { return stability_chart_; }
   bool shown(const std::string& control_name) const;  // --lock
-  // The world view's camera in the last frame: where the mouse's hand finds bodies.
-  const Camera& world_camera() const { return camera_; }
+  // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
+  // bodies. The first one, or the one whose strip holds `point`.
+  const Camera& world_camera() const { return cameras_.front(); }
+  const Camera& world_camera_at(ImVec2 point) const;
+  // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
+  // (or opening another lesson) puts the view back.
+  const ViewAdjust& view_adjust() const { return view_adjust_; }
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
     const auto found = control_errors_.find(name);
@@ -139,7 +144,9 @@ class Sandbox {
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   const Fonts* fonts_ = nullptr;
-  Camera camera_;
+  std::vector<Camera> cameras_{Camera{}};
+  ViewAdjust view_adjust_;
+  std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
 
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;

@@ -127,7 +127,8 @@ void Sandbox::help_panel() {
     ImGui::Separator();
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(
-        "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. Drag a slider, or "
+        "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. The wheel zooms, a "
+        "drag on empty space pans, a double click there gives the lesson's view back. Drag a slider, or "
         "type an exact value in the box beside it and press Enter; the arrow resets it to the script's value. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
         "until you change something.");

@@ -192,9 +192,18 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts);
   }
-  for (const ContactMark& mark : contact_marks(scene)) draw_contact_mark(draw, mark, camera, theme, fonts, labels);
+  // Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped)
+  // but their labels would otherwise be pushed into the lane by the label placer.
+  const auto in_view = [&](b2Vec2 point) {
+    const ImVec2 at = camera.to_screen(point);
+    return at.x >= camera.origin.x && at.x <= camera.origin.x + camera.size.x && at.y >= camera.origin.y &&
+           at.y <= camera.origin.y + camera.size.y;
+  };
+  for (const ContactMark& mark : contact_marks(scene)) {
+    if (in_view(mark.point)) draw_contact_mark(draw, mark, camera, theme, fonts, labels);
+  }
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() != b2_dynamicBody) continue;
+    if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter())) continue;
     for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
       draw_force(draw, arrow, theme, fonts.body, 3.5f * fonts.scale, labels);
     }

@@ -91,6 +91,7 @@ struct LessonBuild {
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function
   std::vector<Rope> ropes;
+  View view;
   std::vector<std::shared_ptr<RememberedValues>> remembered;  // forgotten when a parameter changes live
   // The force functions' among them, also forgotten when the script sets a velocity: a force
   // may read the state, and the next step must apply its answer for the state as it now is.
@@ -204,6 +205,8 @@ void check_moments(LessonBuild& build, std::optional<double> duration);
 
 void register_lesson_api(lua_State* state);
 void register_world_api(lua_State* state);
+// view{}: what the world view shows.
+void register_view_api(lua_State* state);
 void register_theory_api(lua_State* state);
 
 // A number read from a handle without Lua, for probe{ read = { handle, "field" } }. The

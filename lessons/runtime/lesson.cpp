@@ -49,6 +49,7 @@ LessonBuild::LessonBuild(std::string chunk, std::map<std::string, std::string> g
   scene->set_before_probes([this] { after_frame(); });
   register_lesson_api(state);
   register_world_api(state);
+  register_view_api(state);
   register_theory_api(state);
 }
 
@@ -303,6 +304,7 @@ const Scene& Lesson::scene() const { return *current_->scene; }
 const std::vector<Parameter>& Lesson::parameters() const { return current_->parameters; }
 const std::vector<Plot>& Lesson::plots() const { return current_->plots; }
 const std::vector<Rope>& Lesson::ropes() const { return current_->ropes; }
+const View& Lesson::view() const { return current_->view; }
 void Lesson::time_script(bool on) { current_->sandbox.set_timing(on); }
 double Lesson::seconds_in_script() const { return std::chrono::duration<double>(current_->sandbox.time_in_lua()).count(); }
 const std::vector<std::string>& Lesson::warnings() const { return current_->warnings; }

@@ -107,6 +107,24 @@ struct Rope {
   b2Joint* joint = nullptr;
 };
 
+// What the world view shows, as the script's view{} asks. The window's wheel and drag then
+// zoom and pan from there; every kind keeps moving bodies big enough to read, except a window
+// the script fixed in metres.
+struct View {
+  enum class Kind {
+    whole,   // no view{}: the lesson's bodies as they stand at t = 0, framed with room around
+    follow,  // view{ follow = body [, width = m] }: centred on one body as it moves
+    window,  // view{ window = { left, bottom, right, top } }: a fixed part of the world, m
+    lanes,   // view{ lanes = { a, b, ... } [, width = m] }: a strip per body, top first, one scale
+  };
+  Kind kind = Kind::whole;
+  // Names, not pointers: a rebuild (a mass changed, a reload) makes new bodies of the same names.
+  std::vector<std::string> bodies;    // follow: the one; lanes: one per strip
+  double width = 0.0;                 // m across the view (follow, lanes); 0: framed as whole
+  b2Vec2 low{0.0f, 0.0f}, high{0.0f, 0.0f};  // window: its lower-left and upper-right corners
+  std::string declared_at;            // "path:line" of view{}, empty when the lesson has none
+};
+
 struct LessonBuild;  // one run of the script: its sandbox, scene and declarations
 
 class Lesson {
@@ -141,6 +159,7 @@ class Lesson {
   const Parameter& parameter(const std::string& name) const;  // throws InvalidInput listing them
   const std::vector<Plot>& plots() const;
   const std::vector<Rope>& ropes() const;
+  const View& view() const;
   // Doubts about the values, such as mu_k above mu_s, placed at the script line.
   const std::vector<std::string>& warnings() const;
   // Probes with the unit the script gave them, in the order declared.

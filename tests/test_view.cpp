@@ -1,0 +1,167 @@
+// The view: what a lesson's view{} asks the camera to show (follow a body, a window in metres,
+// lanes), and that every built-in lesson's moving bodies are in the picture and big enough to
+// read at the sizes a classroom uses.
+#include <gtest/gtest.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "lesson_scripts.h"
+#include "lessons/runtime/catalog.h"
+#include "rendering.h"
+#include "ui/frame.h"
+#include "ui/theme.h"
+
+namespace frictionlab::ui {
+namespace {
+
+// Two blocks sliding apart on two floors 3 m apart, and a view{} line to try.
+std::string two_blocks(const std::string& view) {
+  return lessons::with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { "floor", material = "wood" }
+local upper = ground { "upper", material = "wood", y = 3, thickness = 0.2 }
+local slow = box { "slow", material = "wood", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1, velocity = { 1, 0 } }
+local fast = box { "fast", material = "wood", width = 0.3, height = 0.1, on = upper, at = 0, mass = 1, velocity = { 3, 0 } }
+)" + view + "\n");
+}
+
+const ImVec2 display(1280.0f, 720.0f);
+
+std::vector<Camera> cameras_of(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 size = display,
+                               float scale = 1.0f, const ViewAdjust& adjust = {}) {
+  return world_cameras(lesson, framing, size, scale, ImVec2(0.0f, 0.0f), adjust);
+}
+
+bool inside(const Camera& camera, ImVec2 point) {
+  return point.x >= camera.origin.x && point.x <= camera.origin.x + camera.size.x && point.y >= camera.origin.y &&
+         point.y <= camera.origin.y + camera.size.y;
+}
+
+TEST(View, FollowKeepsTheBodyAtTheSamePlaceOnTheScreen) {
+  lessons::ScriptFile script(two_blocks(R"(view { follow = fast, width = 2 })"));
+  lessons::Lesson lesson(script.path());
+  const WorldFraming framing = WorldFraming::of(lesson);
+  const ImVec2 before = cameras_of(lesson, framing).front().to_screen(lesson.scene().body("fast")->GetWorldCenter());
+  lesson.step_to(0.5);
+  const b2Body* fast = lesson.scene().body("fast");
+  ASSERT_GT(fast->GetWorldCenter().x, 1.0f);  // it has moved a metre and more
+  const Camera camera = cameras_of(lesson, framing).front();
+  const ImVec2 after = camera.to_screen(fast->GetWorldCenter());
+  EXPECT_NEAR(after.x, before.x, 1e-3);
+  EXPECT_NEAR(after.y, before.y, 1e-3);
+  // 2 m across the part of the view the free-body diagram leaves free.
+  const FrameLayout layout = FrameLayout::of(display, 1.0f);
+  EXPECT_NEAR(camera.pixels_per_metre * 2.0f, layout.world_size.x - layout.inset_size.x, 1e-2);
+}
+
+TEST(View, AWindowShowsItsCornersAndFillsOneSide) {
+  lessons::ScriptFile script(two_blocks(R"(view { window = { -1, -0.5, 5, 3.5 } })"));
+  lessons::Lesson lesson(script.path());
+  const WorldFraming framing = WorldFraming::of(lesson);
+  lesson.step_to(0.5);  // a fixed window does not follow
+  const Camera camera = cameras_of(lesson, framing).front();
+  const FrameLayout layout = FrameLayout::of(display, 1.0f);
+  const float free_width = layout.world_size.x - layout.inset_size.x;
+  const ImVec2 low = camera.to_screen({-1.0f, -0.5f}), high = camera.to_screen({5.0f, 3.5f});
+  EXPECT_TRUE(inside(camera, low) && inside(camera, high));
+  EXPECT_LE(high.x - low.x, free_width + 1e-2f);
+  // It fills the free width or the height, whichever is tighter.
+  const bool fills = std::abs((high.x - low.x) - free_width) < 0.5f || std::abs((low.y - high.y) - camera.size.y) < 0.5f;
+  EXPECT_TRUE(fills) << "the window spans " << high.x - low.x << " × " << low.y - high.y << " px";
+}
+
+TEST(View, LanesStackAStripPerBodyOnOneScaleAndOneStretchOfFloor) {
+  lessons::ScriptFile script(two_blocks(R"(view { lanes = { fast, slow } })"));
+  lessons::Lesson lesson(script.path());
+  const WorldFraming framing = WorldFraming::of(lesson);
+  lesson.step_to(0.3);
+  const std::vector<Camera> cameras = cameras_of(lesson, framing);
+  ASSERT_EQ(cameras.size(), 2u);
+  const FrameLayout layout = FrameLayout::of(display, 1.0f);
+  // Top first, in the order given, covering the world view between them.
+  EXPECT_FLOAT_EQ(cameras[0].origin.y, layout.world_corner.y);
+  EXPECT_FLOAT_EQ(cameras[1].origin.y, cameras[0].origin.y + cameras[0].size.y);
+  EXPECT_NEAR(cameras[1].origin.y + cameras[1].size.y, layout.world_corner.y + layout.world_size.y, 1e-3);
+  EXPECT_TRUE(inside(cameras[0], cameras[0].to_screen(lesson.scene().body("fast")->GetWorldCenter())));
+  EXPECT_TRUE(inside(cameras[1], cameras[1].to_screen(lesson.scene().body("slow")->GetWorldCenter())));
+  // One scale and one horizontal window: a metre along the floor is the same in both lanes.
+  EXPECT_EQ(cameras[0].pixels_per_metre, cameras[1].pixels_per_metre);
+  EXPECT_EQ(cameras[0].to_screen({1.0f, 0.0f}).x, cameras[1].to_screen({1.0f, 0.0f}).x);
+  // The arrows scale to a lane: the heaviest weight is at most 0.4 of a lane's height.
+  const float per_newton = arrow_scale(lesson, framing, display, 1.0f);
+  EXPECT_LE(per_newton * 9.81f, 0.4f * cameras[0].size.y + 1e-3f);
+}
+
+TEST(View, TheWheelZoomAndTheDragPanComeOnTopOfTheLessonsView) {
+  lessons::ScriptFile script(two_blocks(R"(view { follow = slow })"));
+  lessons::Lesson lesson(script.path());
+  const WorldFraming framing = WorldFraming::of(lesson);
+  const Camera plain = cameras_of(lesson, framing).front();
+  ViewAdjust adjust;
+  adjust.zoom = 2.0f;
+  adjust.pan = b2Vec2{0.5f, -0.25f};
+  const Camera moved = cameras_of(lesson, framing, display, 1.0f, adjust).front();
+  EXPECT_FLOAT_EQ(moved.pixels_per_metre, 2.0f * plain.pixels_per_metre);
+  EXPECT_FLOAT_EQ(moved.centre.x, plain.centre.x + 0.5f);
+  EXPECT_FLOAT_EQ(moved.centre.y, plain.centre.y - 0.25f);
+}
+
+TEST(View, ABodyTheViewNamesThatAReloadRemovedFallsBackToTheWholeLesson) {
+  lessons::ScriptFile script(two_blocks(R"(view { follow = fast })"));
+  lessons::Lesson lesson(script.path());
+  WorldFraming framing = WorldFraming::of(lesson);
+  framing.view.bodies = {"gone"};
+  const std::vector<Camera> cameras = cameras_of(lesson, framing);
+  ASSERT_EQ(cameras.size(), 1u);
+  EXPECT_GT(cameras.front().pixels_per_metre, 0.0f);
+}
+
+// Every built-in lesson at each of its moments, at the sizes a classroom uses: each moving
+// body is in the picture (in its own lane, out from under the free-body diagram) and its
+// longer side is at least min_body_pixels × the text scale.
+struct Screen {
+  const char* name;
+  ImVec2 size;
+  float scale;
+};
+const Screen screens[] = {{"1280x720", {1280.0f, 720.0f}, 1.0f},
+                          {"1024x768", {1024.0f, 768.0f}, frame_scale(1024, 768)},
+                          {"projector_1920x1080", {1920.0f, 1080.0f}, 1.5f * 1.35f}};
+
+TEST(View, EveryLessonsMovingBodiesAreInThePictureAndReadable) {
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    for (const lessons::Moment& moment : entry.moments) {
+      LessonAt at(entry.name, moment.set, moment.at);
+      const lessons::View& view = at.lesson->view();
+      for (const Screen& screen : screens) {
+        const std::string where = entry.name + " at " + moment.name + ", " + screen.name;
+        const std::vector<Camera> cameras = cameras_of(*at.lesson, at.framing, screen.size, screen.scale);
+        const FrameLayout layout = FrameLayout::of(screen.size, screen.scale);
+        const ImRect inset(layout.inset_corner, ImVec2(layout.inset_corner.x + layout.inset_size.x, layout.inset_corner.y + layout.inset_size.y));
+        for (const auto& [name, body] : at.scene().bodies()) {
+          if (body->GetType() != b2_dynamicBody) continue;
+          std::size_t lane = 0;
+          if (view.kind == lessons::View::Kind::lanes) {
+            lane = static_cast<std::size_t>(std::find(view.bodies.begin(), view.bodies.end(), name) - view.bodies.begin());
+            if (lane == view.bodies.size()) continue;  // not a lane's body
+          }
+          const Camera& camera = cameras[lane];
+          const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
+          EXPECT_TRUE(inside(camera, centre)) << where << ": " << name << " is out of the picture";
+          EXPECT_FALSE(inset.Contains(centre)) << where << ": " << name << " is under the free-body diagram";
+          b2AABB box = body->GetFixtureList()->GetAABB(0);
+          for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
+          const float longer = std::max(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
+          EXPECT_GE(longer * camera.pixels_per_metre, WorldFraming::min_body_pixels * screen.scale - 0.5f)
+              << where << ": " << name << " is drawn " << longer * camera.pixels_per_metre << " px long";
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
