@@ -48,16 +48,21 @@ pair { "aluminium", "wood" }
 pair { "aluminium", "aluminium", mu_s = 1.1, mu_k = 1.0, sliders = false }
 
 -- World -----------------------------------------------------------------------------------
-local bench = ground { "bench", material = "wood" }
+-- Two benches 1.6 m apart, one per lane of the view: the faces above, the feet below, each
+-- pair 0.9 m apart so their arrows keep clear of each other.
+local face_bench = ground { "face_bench", material = "wood", y = 1.6, thickness = 0.2 }
+local feet_bench = ground { "feet_bench", material = "wood" }
 local foot = 0.02  -- each foot is 2 cm wide and 2 cm tall
 local blocks = {
-  box { "wide", material = "aluminium", width = 0.4, height = 0.1, on = bench, at = -0.85, mass = mass },
-  box { "narrow", material = "aluminium", width = 0.1, height = 0.4, on = bench, at = -0.35, mass = mass },
-  box { "three_feet", material = "aluminium", width = 0.4, height = 0.08, on = bench, at = 0.2, mass = mass,
+  box { "wide", material = "aluminium", width = 0.4, height = 0.1, on = face_bench, at = -0.45, mass = mass },
+  box { "narrow", material = "aluminium", width = 0.1, height = 0.4, on = face_bench, at = 0.45, mass = mass },
+  box { "three_feet", material = "aluminium", width = 0.4, height = 0.08, on = feet_bench, at = -0.45, mass = mass,
         feet = 3, foot_width = foot, foot_height = foot },
-  box { "six_feet", material = "aluminium", width = 0.4, height = 0.08, on = bench, at = 0.8, mass = mass,
+  box { "six_feet", material = "aluminium", width = 0.4, height = 0.08, on = feet_bench, at = 0.45, mass = mass,
         feet = 6, foot_width = foot, foot_height = foot },
 }
+local bench_of = { face_bench, face_bench, feet_bench, feet_bench }
+view { lanes = { blocks[1], blocks[3] }, titles = { "on a face: wide and narrow", "on feet: three and six" } }
 -- Each pull acts at the height where the block touches the bench (Box2D puts the contact in
 -- the middle of the resting gap), so it has no moment about the contact to tip the block.
 local lowest = { -0.05, -0.2, -0.04 - foot, -0.04 - foot }
@@ -67,15 +72,15 @@ for i, block in ipairs(blocks) do
   -- A block on feet is read at a middle foot: a rigid block slides on all its feet at once, but
   -- an end foot can carry no load at all, and a touch without load keeps whatever it last said.
   local middle = ({ nil, nil, 2, 3 })[i]
-  local touch = middle and contact(block, bench, middle) or contact(block, bench)
+  local touch = middle and contact(block, bench_of[i], middle) or contact(block, bench_of[i])
   probe { block.name .. "_pull", unit = "N", read = { pull, "fx" } }
   probe { block.name .. "_speed", unit = "m/s", read = { block, "vx" } }
   probe { block.name .. "_slipping", read = { touch, "slipping" } }
 end
 -- Each foot's load, read from its own touch with the bench.
 local three, six = blocks[3], blocks[4]
-for k = 1, 3 do probe { "three_feet_load_" .. k, unit = "N", read = { contact(three, bench, k), "normal" } } end
-for k = 1, 6 do probe { "six_feet_load_" .. k, unit = "N", read = { contact(six, bench, k), "normal" } } end
+for k = 1, 3 do probe { "three_feet_load_" .. k, unit = "N", read = { contact(three, feet_bench, k), "normal" } } end
+for k = 1, 6 do probe { "six_feet_load_" .. k, unit = "N", read = { contact(six, feet_bench, k), "normal" } } end
 plot { "Speed of each block", kind = "time", y = { "wide_speed", "narrow_speed", "three_feet_speed", "six_feet_speed" } }
 -- Against the article's equal shares, N/3 and N/6 (see the expectations below for why they differ).
 plot { "Each foot's load (three feet)", kind = "time", y = { "three_feet_load_1", "three_feet_load_2", "three_feet_load_3" },

@@ -165,12 +165,20 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
     pixels_per_metre = free_width / static_cast<float>(view.width);
   }
   if (kind == Kind::lanes) {
-    // Each lane's body, with room above it for the normal force and below for the ground,
-    // fits in its strip: the tallest of them a third of the strip high unless a width says.
+    // Each lane's bodies, with room above for the normal force and below for the ground, fit
+    // in its strip: the tallest moving body a third of the strip high, and every moving body
+    // across the free width, unless a width says.
     float tallest = 0.0f;
-    for (const b2Body* body : bodies) tallest = std::max(tallest, body_size(body).y);
+    for (const auto& [name, body] : scene.bodies()) {
+      if (body->GetType() == b2_dynamicBody) tallest = std::max(tallest, body_size(body).y);
+    }
     if (tallest > 0.0f) {
-      if (view.width <= 0.0) pixels_per_metre = strip_height / (3.0f * tallest);
+      if (view.width <= 0.0) {
+        pixels_per_metre = strip_height / (3.0f * tallest);
+        const b2AABB moving = moving_bounds(scene);
+        const float span = moving.upperBound.x - moving.lowerBound.x;
+        if (span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * span));
+      }
       pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.2f * tallest));
     }
   }
@@ -200,14 +208,9 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
       centre = 0.5f * (view.low + view.high);
       break;
     case Kind::lanes: {
-      // One horizontal window for every lane, so distances compare across lanes: centred
-      // between the lane that is furthest behind and the one furthest ahead.
-      float low = bodies.front()->GetWorldCenter().x, high = low;
-      for (const b2Body* body : bodies) {
-        low = std::min(low, body->GetWorldCenter().x);
-        high = std::max(high, body->GetWorldCenter().x);
-      }
-      centre.x = 0.5f * (low + high);
+      // One horizontal window for every lane, so distances compare across lanes: centred on
+      // what moves, from the body furthest behind to the one furthest ahead.
+      centre.x = moving_bounds(scene).GetCenter().x;
       break;
     }
   }

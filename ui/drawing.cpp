@@ -21,32 +21,74 @@ ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& 
   return material_colour(theme, material, scene.pairs().find_material(material));
 }
 
+bool overlaps(const ImVec4& box, const DrawnSegment& segment) {
+  // The box grown by the half width, against the segment's centre line (Liang and Barsky's
+  // clipping: the part of the line inside the box is empty or not).
+  const float x0 = box.x - segment.half_width, y0 = box.y - segment.half_width;
+  const float x1 = box.z + segment.half_width, y1 = box.w + segment.half_width;
+  const float dx = segment.to.x - segment.from.x, dy = segment.to.y - segment.from.y;
+  float enter = 0.0f, leave = 1.0f;
+  const float p[4] = {-dx, dx, -dy, dy};
+  const float q[4] = {segment.from.x - x0, x1 - segment.from.x, segment.from.y - y0, y1 - segment.from.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0f) {
+      if (q[i] < 0.0f) return false;  // parallel to this side and outside it
+      continue;
+    }
+    const float r = q[i] / p[i];
+    if (p[i] < 0.0f) {
+      enter = std::max(enter, r);
+    } else {
+      leave = std::min(leave, r);
+    }
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
 ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
   const float pad = 2.0f;
+  const auto box_at = [&](ImVec2 c) {
+    return ImVec4(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
+                  c.y + 0.5f * size.y + pad);
+  };
   const auto free_at = [&](ImVec2 c) {
-    const ImVec4 box(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
-                     c.y + 0.5f * size.y + pad);
+    const ImVec4 box = box_at(c);
     for (const ImVec4& t : taken_) {
-      if (box.x < t.z && t.x < box.z && box.y < t.w && t.y < box.w) return false;
+      if (overlaps(box, t)) return false;
+    }
+    for (const ImVec4& m : marks_) {
+      if (overlaps(box, m)) return false;
+    }
+    for (const DrawnSegment& s : segments_) {
+      if (overlaps(box, s)) return false;
     }
     return true;
   };
   // Inside the view, so a label near its edge is moved in rather than cut.
   const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
   const float top = low_.y + half_y, bottom = std::max(top, high_.y - half_y);
-  wanted.x = std::clamp(wanted.x, low_.x + half_x, std::max(low_.x + half_x, high_.x - half_x));
-  wanted.y = std::clamp(wanted.y, top, bottom);
+  const auto inside = [&](ImVec2 c) { return ImVec2(std::clamp(c.x, left, right), std::clamp(c.y, top, bottom)); };
+  wanted = inside(wanted);
+  // Rings of places around the wanted one, nearest first: above and below (a line of text
+  // apart), then to the sides, then the corners between.
+  const float step_y = size.y + 2.0f * pad, step_x = 0.5f * size.x + pad;
+  const ImVec2 directions[8] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
   ImVec2 chosen = wanted;
-  for (int step = 0; step < 12; ++step) {
-    const float shift = static_cast<float>((step + 1) / 2) * (size.y + 2.0f * pad) * (step % 2 == 1 ? 1.0f : -1.0f);
-    const ImVec2 candidate(wanted.x, std::clamp(wanted.y + (step == 0 ? 0.0f : shift), top, bottom));
-    if (free_at(candidate)) {
-      chosen = candidate;
-      break;
+  bool found = free_at(wanted);
+  for (int ring = 1; ring <= 10 && !found; ++ring) {
+    for (const ImVec2& d : directions) {
+      const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * static_cast<float>(ring),
+                                             wanted.y + d.y * step_y * static_cast<float>(ring)));
+      if (free_at(candidate)) {
+        chosen = candidate;
+        found = true;
+        break;
+      }
     }
   }
-  taken_.emplace_back(chosen.x - 0.5f * size.x - pad, chosen.y - 0.5f * size.y - pad, chosen.x + 0.5f * size.x + pad,
-                      chosen.y + 0.5f * size.y + pad);
+  taken_.push_back(box_at(chosen));
   return chosen;
 }
 
@@ -76,9 +118,14 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
 
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels) {
+  draw_force(draw, arrow, theme, font, thickness, labels, format_quantity(arrow.force.force.Length(), "N"));
+}
+
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels, const std::string& text) {
   const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
   draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
-  const std::string text = format_quantity(arrow.force.force.Length(), "N");
+  if (text.empty()) return;
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
   // Just beyond the tip, far enough along the arrow's line that the text clears the head.

@@ -27,17 +27,37 @@ float nice_length(float wanted);
 const std::string& material_name(const Scene& scene, const b2Fixture* fixture);
 ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& theme);
 
-// Keeps text labels from landing on each other, and inside the view, within one picture.
+// A line drawn in the picture, as thick as it is drawn: an arrow's shaft and head.
+struct DrawnSegment {
+  ImVec2 from, to;
+  float half_width;
+};
+// Whether a box (x0, y0, x1, y1) and a thick segment share any point.
+bool overlaps(const ImVec4& box, const DrawnSegment& segment);
+inline bool overlaps(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
+
+// Keeps text labels off each other and off the arrows and marks drawn, and inside the view,
+// within one picture. Tell it what is drawn (avoid) before asking where labels go (place).
 class LabelPlacer {
  public:
   LabelPlacer(ImVec2 corner, ImVec2 size) : low_(corner), high_(add(corner, size)) {}
-  // Where a label of this size goes: at `wanted` (its centre) or the nearest free place
-  // above or below it.
+  void avoid(const DrawnSegment& segment) { segments_.push_back(segment); }
+  void avoid(const ImVec4& box) { marks_.push_back(box); }
+  // Where a label of this size goes: at `wanted` (its centre), or the nearest place around it
+  // that covers no label, arrow or mark; `wanted` itself when there is none near.
   ImVec2 place(ImVec2 wanted, ImVec2 size);
+
+  // What it placed and what it was told to avoid, for tests that check the picture's layout.
+  const std::vector<ImVec4>& labels() const { return taken_; }  // x0, y0, x1, y1, padding included
+  const std::vector<DrawnSegment>& segments() const { return segments_; }
+  const std::vector<ImVec4>& marks() const { return marks_; }
+  ImVec4 bounds() const { return ImVec4(low_.x, low_.y, high_.x, high_.y); }
 
  private:
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
+  std::vector<DrawnSegment> segments_;
+  std::vector<ImVec4> marks_;
 };
 
 // A label with a background that keeps it readable over bodies and lines; `centre` is where
@@ -47,6 +67,9 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
 // A force's arrow in its kind's colour, with its value in newtons just beyond the tip.
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels);
+// The same with its own label text ("9.81 N in all"); no label when `text` is empty.
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels, const std::string& text);
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
                   ImU32 outline, float thickness);
 

@@ -26,7 +26,9 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   layout.world_size = ImVec2(left_width, 0.57f * below - legend_height);
   layout.legend_corner = ImVec2(0.0f, layout.world_corner.y + layout.world_size.y);
   layout.legend_size = ImVec2(left_width, legend_height);
-  layout.inset_size = ImVec2(260.0f * scale, 200.0f * scale);
+  // The free-body diagram takes at most a third of the world's width and half its height, so
+  // that with large text (projector mode) it does not cover the world it explains.
+  layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.55f * layout.world_size.y));
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
   layout.plots_corner = ImVec2(0.0f, layout.legend_corner.y + legend_height + gap);
   layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);
@@ -89,13 +91,27 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
       draw->PushClipRect(camera.origin, lane_end, true);
       LabelPlacer labels(camera.origin, camera.size);
+      const ImVec4 inset(layout.inset_corner.x, layout.inset_corner.y, layout.inset_corner.x + layout.inset_size.x,
+                         layout.inset_corner.y + layout.inset_size.y);
+      labels.avoid(inset);
+      // Each lane named (by its body, or the title the lesson gave it) in its corner.
+      const std::string lane_name = cameras.size() < 2                  ? ""
+                                    : lane < framing.view.titles.size() ? framing.view.titles[lane]
+                                                                        : framing.view.bodies[lane];
+      const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lane_name.c_str());
+      const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
+      if (!lane_name.empty()) {
+        labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
+                            name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
+      }
       draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
-      if (cameras.size() > 1) {
-        // Each lane named by its body, in the corner, and parted from the next by a line.
-        const std::string& name = framing.view.bodies[lane];
-        const ImVec2 text = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, name.c_str());
-        draw_label(draw, fonts.small, ImVec2(camera.origin.x + 8.0f * s + 0.5f * text.x, camera.origin.y + 6.0f * s + 0.5f * text.y),
-                   colours.text, colours.panel, name.c_str());
+      if (style.record != nullptr) {
+        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks()});
+        style.record->inset = inset;
+      }
+      if (!lane_name.empty()) {
+        draw_label(draw, fonts.small, name_at, colours.text, colours.panel, lane_name.c_str());
+        // Parted from the lane above by a line.
         if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
       }
       draw->PopClipRect();

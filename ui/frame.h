@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/drawing.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
@@ -34,6 +35,19 @@ struct LessonReadings {
   std::string caveat;     // why the measurements do not answer the predictions yet
 };
 
+// Where the frame put things in the world view, for tests of its layout: per lane, the
+// camera and what its label placer placed and avoided; and the free-body inset.
+struct FrameRecord {
+  struct Lane {
+    Camera camera;
+    std::vector<ImVec4> labels;          // x0, y0, x1, y1
+    std::vector<DrawnSegment> arrows;    // as thick as drawn, heads included
+    std::vector<ImVec4> avoided;         // contact marks and the inset
+  };
+  std::vector<Lane> lanes;
+  ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
+};
+
 struct FrameStyle {
   ThemeName theme = ThemeName::light;
   const Fonts* fonts = nullptr;
@@ -48,6 +62,8 @@ struct FrameStyle {
   float parameters_height = 0.0f;
   // The window's wheel zoom and drag pan.
   ViewAdjust view_adjust;
+  // Filled with the world view's layout when not null.
+  FrameRecord* record = nullptr;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
 };

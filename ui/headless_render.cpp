@@ -11,7 +11,7 @@
 
 namespace frictionlab::ui {
 
-HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
+HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme, float scale)
     : width_(width), height_(height), theme_(theme), gl_(std::make_unique<HeadlessContext>()) {
   try {
     // No imgui.ini: a headless picture must not depend on, or leave, files.
@@ -19,7 +19,7 @@ HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme)
   } catch (const std::runtime_error& error) {
     throw HeadlessUnavailable(std::string("headless rendering cannot start: ") + error.what());
   }
-  host_->prepare(frame_scale(width, height), theme);
+  host_->prepare(scale > 0.0f ? scale : frame_scale(width, height), theme);
 }
 
 HeadlessRenderer::~HeadlessRenderer() {
@@ -27,7 +27,7 @@ HeadlessRenderer::~HeadlessRenderer() {
   host_.reset();
 }
 
-Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& framing) {
+Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& framing, FrameRecord* record) {
   gl_->make_current();
   host_->make_current();
   ImGuiIO& io = ImGui::GetIO();
@@ -45,6 +45,8 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
   // depend on which frame came before.
   for (int pass = 0; pass < 2; ++pass) {
     host_->begin_frame();
+    if (record != nullptr) *record = FrameRecord{};
+    style.record = pass == 1 ? record : nullptr;
     build_frame(lesson, framing, style, io.DisplaySize);
     ImGui::Render();
   }

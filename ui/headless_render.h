@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/frame.h"
 #include "ui/headless.h"
 #include "ui/image.h"
 #include "ui/imgui_host.h"
@@ -27,14 +28,16 @@ struct FrameTimes {
 class HeadlessRenderer {
  public:
   // Throws HeadlessUnavailable when EGL cannot start, std::runtime_error when the font is missing.
-  HeadlessRenderer(int width, int height, ThemeName theme = ThemeName::light);
+  // `scale`: the text scale, as the window's projector mode makes it; 0: the size's own.
+  HeadlessRenderer(int width, int height, ThemeName theme = ThemeName::light, float scale = 0.0f);
   ~HeadlessRenderer();
   HeadlessRenderer(const HeadlessRenderer&) = delete;
   HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
   // The lesson as it is now, drawn whole. The same lesson at the same moment gives the same
   // picture whatever was drawn before it.
-  Image render(lessons::Lesson& lesson, const WorldFraming& framing);
+  // With `record`, also where the frame put things in the world view.
+  Image render(lessons::Lesson& lesson, const WorldFraming& framing, FrameRecord* record = nullptr);
 
   const FrameTimes& last_times() const { return times_; }
   int width() const { return width_; }

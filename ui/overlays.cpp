@@ -1,5 +1,6 @@
 #include "ui/overlays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -34,6 +35,12 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
   if (body == nullptr || body->GetType() != b2_dynamicBody) return forces;
   const b2Vec2 gravity = scene.world().GetGravity();
   forces.push_back({ForceKind::weight, body, body->GetWorldCenter(), body->GetMass() * gravity});
+  struct Shared {
+    const b2Body* other;
+    std::size_t friction;  // its friction force's place in `forces`; its drag's is the next
+    float load;            // N, the normal load summed so far
+  };
+  std::vector<Shared> shared;
   for (const b2Contact* contact = scene.world().GetContactList(); contact != nullptr; contact = contact->GetNext()) {
     const b2Body* a = contact->GetFixtureA()->GetBody();
     const b2Body* b = contact->GetFixtureB()->GetBody();
@@ -43,13 +50,33 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
     const ContactRecord& record = *found;
     const b2Vec2 point = centre_of_load(record);
     forces.push_back({ForceKind::normal, body, point, record.normal_on(body)});
-    forces.push_back({ForceKind::friction, body, point, record.friction_on(body)});
-    // The viscous and quadratic terms apart from dry friction, so mu_k·N stays readable.
-    if (record.damping_force != 0.0) {
-      forces.push_back({ForceKind::drag, body, point,
-                        record.side(body) * static_cast<float>(record.damping_force) * record.tangent()});
+    const b2Vec2 drag = record.side(body) * static_cast<float>(record.damping_force) * record.tangent();
+    // Friction (and drag) from one other body is drawn as one arrow, their sum, at the centre of
+    // the load: a block on six feet has six normal forces to show but one friction force to
+    // read. Each foot's normal force keeps its own arrow.
+    const b2Body* other = a == body ? b : a;
+    const float load = record.normal_on(body).Length();
+    const auto same = std::find_if(shared.begin(), shared.end(), [&](const Shared& s) { return s.other == other; });
+    if (same == shared.end()) {
+      shared.push_back({other, forces.size(), load});
+      forces.push_back({ForceKind::friction, body, point, record.friction_on(body)});
+      // The viscous and quadratic terms apart from dry friction, so mu_k·N stays readable.
+      forces.push_back({ForceKind::drag, body, point, drag});
+      continue;
     }
+    ForceOnBody& friction = forces[same->friction];
+    ForceOnBody& damping = forces[same->friction + 1];
+    const float total = same->load + load;
+    if (total > 0.0f) friction.point = (same->load / total) * friction.point + (load / total) * point;
+    damping.point = friction.point;
+    friction.force += record.friction_on(body);
+    damping.force += drag;
+    same->load = total;
   }
+  // A drag arrow only where there is drag.
+  forces.erase(std::remove_if(forces.begin(), forces.end(),
+                              [](const ForceOnBody& f) { return f.kind == ForceKind::drag && f.force.LengthSquared() == 0.0f; }),
+               forces.end());
   // Springs and applied forces as the last step applied them, the step whose friction the
   // record holds: while a block sticks, the forces then add up to zero.
   for (std::size_t i = 0; i < scene.springs().size(); ++i) {

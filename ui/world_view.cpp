@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "ui/drawing.h"
 
@@ -148,13 +150,14 @@ void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
 
 
 void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& camera, const Theme& theme,
-                       const Fonts& fonts, LabelPlacer& labels) {
+                       const Fonts& fonts, LabelPlacer& labels, bool with_label) {
   const ImVec2 at = camera.to_screen(mark.point);
   const bool slipping = mark.state == ContactState::slipping;
   const ImU32 colour = slipping ? theme.slipping : theme.sticking;
   const float r = 6.0f * fonts.scale;
   draw->AddCircleFilled(at, r, colour, 20);
   draw->AddCircle(at, r, theme.background, 20, 1.5f);
+  if (!with_label) return;
   // A slipping contact's label says which way the upper body slides.
   std::string text = slipping ? "slipping" : "sticking";
   if (slipping) {
@@ -199,14 +202,54 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     return at.x >= camera.origin.x && at.x <= camera.origin.x + camera.size.x && at.y >= camera.origin.y &&
            at.y <= camera.origin.y + camera.size.y;
   };
+  std::vector<ContactMark> marks;
   for (const ContactMark& mark : contact_marks(scene)) {
-    if (in_view(mark.point)) draw_contact_mark(draw, mark, camera, theme, fonts, labels);
+    if (in_view(mark.point)) marks.push_back(mark);
   }
+  std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter())) continue;
     for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
-      draw_force(draw, arrow, theme, fonts.body, 3.5f * fonts.scale, labels);
+      arrows.push_back(arrow);
     }
+  }
+  // Every arrow and mark is known before any label is placed, so no label lands on one.
+  const float thickness = 3.5f * fonts.scale;
+  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
+  const float mark_radius = 6.0f * fonts.scale;
+  for (const ContactMark& mark : marks) {
+    const ImVec2 at = camera.to_screen(mark.point);
+    labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
+  }
+  // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
+  std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool>> said;
+  for (const ContactMark& mark : marks) {
+    const bool rightward = mark.sliding_velocity >= 0.0;
+    const auto key = std::make_tuple(mark.body_a, mark.body_b, mark.state, rightward);
+    const bool first = std::find(said.begin(), said.end(), key) == said.end();
+    if (first) said.push_back(key);
+    draw_contact_mark(draw, mark, camera, theme, fonts, labels, first);
+  }
+  // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
+  // longest (each foot's own value is a probe away). One label per foot crowds the picture.
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    const ForceOnBody& force = arrows[i].force;
+    if (force.kind != ForceKind::normal) {
+      draw_force(draw, arrows[i], theme, fonts.body, thickness, labels);
+      continue;
+    }
+    int count = 0;
+    b2Vec2 sum{0.0f, 0.0f};
+    std::size_t longest = i;
+    for (std::size_t j = 0; j < arrows.size(); ++j) {
+      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body) continue;
+      ++count;
+      sum += arrows[j].force.force;
+      if (arrows[j].length() > arrows[longest].length()) longest = j;
+    }
+    std::string text = format_quantity(force.force.Length(), "N");
+    if (count > 1) text = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
+    draw_force(draw, arrows[i], theme, fonts.body, thickness, labels, text);
   }
 }
 

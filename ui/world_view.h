@@ -12,7 +12,8 @@
 
 namespace frictionlab::ui {
 
-// The world, the arrows on every dynamic body and the contact marks into `camera`'s view.
+// The world, the arrows on every dynamic body and the contact marks into `camera`'s view;
+// `labels` already knows what else covers the view (the free-body inset), and keeps labels off it.
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels);
 

@@ -39,6 +39,29 @@ std::vector<std::string> lane_bodies(lua_State* state, Fields& fields) {
   return bodies;
 }
 
+std::vector<std::string> lane_titles(lua_State* state, Fields& fields, std::size_t lanes) {
+  fields.push("titles");
+  const int list = lua_gettop(state);
+  const std::string example = "as in titles = { \"on a face\", \"on feet\" }";
+  if (!lua_istable(state, list) || handle_of(state, list, body_type) != nullptr ||
+      static_cast<std::size_t>(luaL_len(state, list)) != lanes) {
+    throw InvalidInput(fields.what() + ": titles must be a list of " + std::to_string(lanes) + " words, one per lane, " +
+                       example + "; got " + describe(state, list));
+  }
+  std::vector<std::string> titles;
+  for (std::size_t i = 1; i <= lanes; ++i) {
+    lua_rawgeti(state, list, static_cast<lua_Integer>(i));
+    if (lua_type(state, -1) != LUA_TSTRING) {
+      throw InvalidInput(fields.what() + ": titles[" + std::to_string(i) + "] must be text, " + example + "; got " +
+                         describe(state, -1));
+    }
+    titles.emplace_back(lua_tostring(state, -1));
+    lua_pop(state, 1);
+  }
+  lua_pop(state, 1);
+  return titles;
+}
+
 void read_window(lua_State* state, Fields& fields, View& view) {
   fields.push("window");
   const int list = lua_gettop(state);
@@ -74,7 +97,7 @@ int view(lua_State* state) {
     if (!build.view.declared_at.empty()) {
       throw InvalidInput("view: the lesson's view was already set at " + build.view.declared_at + "; a lesson has one view");
     }
-    Fields fields(state, 1, "view", {"follow", "window", "lanes", "width"});
+    Fields fields(state, 1, "view", {"follow", "window", "lanes", "width", "titles"});
     const int kinds = (fields.has("follow") ? 1 : 0) + (fields.has("window") ? 1 : 0) + (fields.has("lanes") ? 1 : 0);
     const std::string kinds_wanted = "one of follow = body, window = { left, bottom, right, top } or lanes = { body, ... }";
     if (kinds == 0) {
@@ -98,6 +121,10 @@ int view(lua_State* state) {
       if (fields.has("width")) throw InvalidInput(fields.what() + ": a window sets its own width; leave width out");
     }
     if (fields.has("width")) made.width = fields.number_in("width", "m", narrowest, widest);
+    if (fields.has("titles")) {
+      if (made.kind != View::Kind::lanes) throw InvalidInput(fields.what() + ": titles name lanes; this view has none");
+      made.titles = lane_titles(state, fields, made.bodies.size());
+    }
     build.view = std::move(made);
     return 0;
   });

@@ -1,0 +1,109 @@
+// The world view's layout at the sizes a classroom uses, light and dark: no label lands on
+// another label, on an arrow or under the free-body diagram, and no moving body is under the
+// diagram. The frame records every rectangle it placed; these tests read that record rather
+// than pixels.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/catalog.h"
+#include "rendering.h"
+#include "ui/frame.h"
+#include "ui/headless_render.h"
+#include "ui/theme.h"
+
+namespace frictionlab::ui {
+namespace {
+
+struct Screen {
+  const char* name;
+  int width, height;
+  float scale;  // 0: the size's own; the window's projector mode makes text 1.35 times larger
+};
+const Screen screens[] = {{"1280x720", 1280, 720, 0.0f},
+                          {"1024x768", 1024, 768, 0.0f},
+                          {"projector_1920x1080", 1920, 1080, 1.35f * 1.5f}};
+
+// A label's box as drawn, without the placer's 2 px of padding, so labels that only touch pass.
+ImVec4 drawn(const ImVec4& box) { return ImVec4(box.x + 2.0f, box.y + 2.0f, box.z - 2.0f, box.w - 2.0f); }
+
+std::string text_of(const ImVec4& box) {
+  char text[80];
+  std::snprintf(text, sizeof text, "(%.0f, %.0f)–(%.0f, %.0f)", static_cast<double>(box.x), static_cast<double>(box.y),
+                static_cast<double>(box.z), static_cast<double>(box.w));
+  return text;
+}
+
+void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, const std::string& where) {
+  ASSERT_FALSE(record.lanes.empty()) << where;
+  for (const FrameRecord::Lane& lane : record.lanes) {
+    const Camera& camera = lane.camera;
+    for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+      const ImVec4 label = drawn(lane.labels[i]);
+      for (std::size_t j = i + 1; j < lane.labels.size(); ++j) {
+        EXPECT_FALSE(overlaps(label, drawn(lane.labels[j])))
+            << where << ": labels at " << text_of(label) << " and " << text_of(drawn(lane.labels[j])) << " overlap";
+      }
+      for (const DrawnSegment& arrow : lane.arrows) {
+        // The shaft as drawn (its head is wider, and the placer keeps clear of that too).
+        const DrawnSegment shaft{arrow.from, arrow.to, 0.25f * arrow.half_width};
+        EXPECT_FALSE(overlaps(label, shaft)) << where << ": the label at " << text_of(label) << " lies on an arrow";
+      }
+      EXPECT_FALSE(overlaps(label, record.inset)) << where << ": the label at " << text_of(label)
+                                                  << " is under the free-body diagram";
+      EXPECT_TRUE(label.x >= camera.origin.x && label.z <= camera.origin.x + camera.size.x &&
+                  label.y >= camera.origin.y && label.w <= camera.origin.y + camera.size.y)
+          << where << ": the label at " << text_of(label) << " is cut by the edge of its view";
+    }
+  }
+  // No panel covers a moving body: none is under the free-body diagram in the lane it is in.
+  for (const auto& [name, body] : lesson.scene().bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    for (const FrameRecord::Lane& lane : record.lanes) {
+      const ImVec2 centre = lane.camera.to_screen(body->GetWorldCenter());
+      const bool in_lane = centre.y >= lane.camera.origin.y && centre.y <= lane.camera.origin.y + lane.camera.size.y &&
+                           centre.x >= lane.camera.origin.x && centre.x <= lane.camera.origin.x + lane.camera.size.x;
+      if (!in_lane) continue;
+      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+        const b2AABB& box = fixture->GetAABB(0);
+        const ImVec2 a = lane.camera.to_screen(box.lowerBound), b = lane.camera.to_screen(box.upperBound);
+        const ImVec4 on_screen(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y));
+        EXPECT_FALSE(overlaps(on_screen, record.inset)) << where << ": " << name << " is under the free-body diagram";
+      }
+    }
+  }
+}
+
+class Layout : public ::testing::TestWithParam<Screen> {};
+
+TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
+  const Screen& screen = GetParam();
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    HeadlessRenderer renderer(screen.width, screen.height, theme, screen.scale);
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      for (const lessons::Moment& moment : entry.moments) {
+        LessonAt at(entry.name, moment.set, moment.at);
+        FrameRecord record;
+        renderer.render(*at.lesson, at.framing, &record);
+        std::string where = entry.name;
+        where += " at ";
+        where += moment.name;
+        where += ", ";
+        where += screen.name;
+        if (theme == ThemeName::dark) where += ", dark";
+        check_layout(record, *at.lesson, where);
+      }
+    }
+  }
+}
+
+std::string screen_name(const ::testing::TestParamInfo<Screen>& screen) { return screen.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Screens, Layout, ::testing::ValuesIn(screens), screen_name);
+
+}  // namespace
+}  // namespace frictionlab::ui
