@@ -131,34 +131,52 @@ const Screen screens[] = {{"1280x720", {1280.0f, 720.0f}, 1.0f},
                           {"1024x768", {1024.0f, 768.0f}, frame_scale(1024, 768)},
                           {"projector_1920x1080", {1920.0f, 1080.0f}, 1.5f * 1.35f}};
 
-TEST(View, EveryLessonsMovingBodiesAreInThePictureAndReadable) {
+void check_bodies_shown(const LessonAt& at, const std::string& what) {
+  const lessons::View& view = at.lesson->view();
+  for (const Screen& screen : screens) {
+    const std::string where = what + ", " + screen.name;
+    const std::vector<Camera> cameras = cameras_of(*at.lesson, at.framing, screen.size, screen.scale);
+    const FrameLayout layout = FrameLayout::of(screen.size, screen.scale);
+    const ImRect inset(layout.inset_corner, ImVec2(layout.inset_corner.x + layout.inset_size.x,
+                                                   layout.inset_corner.y + layout.inset_size.y));
+    for (const auto& [name, body] : at.scene().bodies()) {
+      if (body->GetType() != b2_dynamicBody) continue;
+      std::size_t lane = 0;
+      if (view.kind == lessons::View::Kind::lanes) {
+        lane = static_cast<std::size_t>(std::find(view.bodies.begin(), view.bodies.end(), name) - view.bodies.begin());
+        if (lane == view.bodies.size()) continue;  // not a lane's body
+      }
+      const Camera& camera = cameras[lane];
+      const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
+      EXPECT_TRUE(inside(camera, centre)) << where << ": " << name << " is out of the picture";
+      EXPECT_FALSE(inset.Contains(centre)) << where << ": " << name << " is under the free-body diagram";
+      b2AABB box = body->GetFixtureList()->GetAABB(0);
+      for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
+      const float longer = std::max(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
+      EXPECT_GE(longer * camera.pixels_per_metre, WorldFraming::min_body_pixels * screen.scale - 0.5f)
+          << where << ": " << name << " is drawn " << longer * camera.pixels_per_metre << " px long";
+    }
+  }
+}
+
+TEST(View, EveryLessonsMovingBodiesAreInThePictureAndReadableAtItsMoments) {
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     for (const lessons::Moment& moment : entry.moments) {
       LessonAt at(entry.name, moment.set, moment.at);
-      const lessons::View& view = at.lesson->view();
-      for (const Screen& screen : screens) {
-        const std::string where = entry.name + " at " + moment.name + ", " + screen.name;
-        const std::vector<Camera> cameras = cameras_of(*at.lesson, at.framing, screen.size, screen.scale);
-        const FrameLayout layout = FrameLayout::of(screen.size, screen.scale);
-        const ImRect inset(layout.inset_corner, ImVec2(layout.inset_corner.x + layout.inset_size.x, layout.inset_corner.y + layout.inset_size.y));
-        for (const auto& [name, body] : at.scene().bodies()) {
-          if (body->GetType() != b2_dynamicBody) continue;
-          std::size_t lane = 0;
-          if (view.kind == lessons::View::Kind::lanes) {
-            lane = static_cast<std::size_t>(std::find(view.bodies.begin(), view.bodies.end(), name) - view.bodies.begin());
-            if (lane == view.bodies.size()) continue;  // not a lane's body
-          }
-          const Camera& camera = cameras[lane];
-          const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
-          EXPECT_TRUE(inside(camera, centre)) << where << ": " << name << " is out of the picture";
-          EXPECT_FALSE(inset.Contains(centre)) << where << ": " << name << " is under the free-body diagram";
-          b2AABB box = body->GetFixtureList()->GetAABB(0);
-          for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
-          const float longer = std::max(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
-          EXPECT_GE(longer * camera.pixels_per_metre, WorldFraming::min_body_pixels * screen.scale - 0.5f)
-              << where << ": " << name << " is drawn " << longer * camera.pixels_per_metre << " px long";
-        }
-      }
+      check_bodies_shown(at, entry.name + " at " + moment.name);
+    }
+  }
+}
+
+// And all through a run at its defaults, not only at the moments its author chose.
+TEST(View, EveryLessonsMovingBodiesStayInThePictureAllThroughARun) {
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    LessonAt at(entry.name, {}, 0.0);
+    const double duration = at.lesson->duration();
+    for (int k = 0; k <= 4; ++k) {
+      const double t = duration * k / 4.0;
+      at.step_to(t);
+      check_bodies_shown(at, entry.name + " at t = " + std::to_string(t) + " s");
     }
   }
 }

@@ -207,12 +207,11 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
     case Kind::window:
       centre = 0.5f * (view.low + view.high);
       break;
-    case Kind::lanes: {
+    case Kind::lanes:
       // One horizontal window for every lane, so distances compare across lanes: centred on
       // what moves, from the body furthest behind to the one furthest ahead.
       centre.x = moving_bounds(scene).GetCenter().x;
       break;
-    }
   }
 
   std::vector<Camera> made;
@@ -228,7 +227,15 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
 
     camera.centre = centre;
     // Each lane on its own body's height.
-    if (kind == Kind::lanes) camera.centre.y = bodies[i]->GetWorldCenter().y;
+    if (kind == Kind::lanes) {
+      camera.centre.y = bodies[i]->GetWorldCenter().y;
+      // Once the lanes' bodies have spread wider than the view, one window would lose some of
+      // them: each lane then follows its own body (the ground's hatching still shows who moved).
+      const b2AABB moving = moving_bounds(scene);
+      if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * free_width) {
+        camera.centre.x = bodies[i]->GetWorldCenter().x;
+      }
+    }
     if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson_bounds(scene), moving_bounds(scene), free_width);
     camera.centre += adjust.pan;
     made.push_back(camera);

@@ -26,9 +26,9 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   layout.world_size = ImVec2(left_width, 0.57f * below - legend_height);
   layout.legend_corner = ImVec2(0.0f, layout.world_corner.y + layout.world_size.y);
   layout.legend_size = ImVec2(left_width, legend_height);
-  // The free-body diagram takes at most a third of the world's width and half its height, so
+  // The free-body diagram takes at most a third of the world's width and 70 % of its height, so
   // that with large text (projector mode) it does not cover the world it explains.
-  layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.55f * layout.world_size.y));
+  layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.7f * layout.world_size.y));
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
   layout.plots_corner = ImVec2(0.0f, layout.legend_corner.y + legend_height + gap);
   layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);

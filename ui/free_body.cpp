@@ -11,7 +11,11 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   const float s = fonts.scale;
   draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
   draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
-  const std::string title = "Free-body diagram: " + name;
+  // Shortened when the inset is narrow (large text): the name must show.
+  std::string title = "Free-body diagram: " + name;
+  if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
+    title = name + ", forces";
+  }
   draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
   if (body == nullptr) return;
 
@@ -26,11 +30,15 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   inset.centre = box.GetCenter();
   const b2Vec2 extent = box.upperBound - box.lowerBound;
   inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
-  inset.pixels_per_metre = std::min(0.42f * inset.size.x / std::max(extent.x, 1e-3f), 0.36f * inset.size.y / std::max(extent.y, 1e-3f));
+  inset.pixels_per_metre = std::min(0.32f * inset.size.x / std::max(extent.x, 1e-3f), 0.24f * inset.size.y / std::max(extent.y, 1e-3f));
   const std::vector<ForceOnBody> forces = forces_on(scene, body);
   float largest = 1e-6f;
   for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
-  const float newtons_to_pixels = 0.36f * std::min(inset.size.x, inset.size.y) / largest;
+  // The longest arrow, with its label beyond its tip, stays inside the diagram's area.
+  const float label_room = fonts.small->FontSize + 8.0f * s;
+  const float reach = std::max(0.32f * std::min(inset.size.x, inset.size.y),
+                               std::min(0.36f * std::min(inset.size.x, inset.size.y), 0.5f * inset.size.y - label_room));
+  const float newtons_to_pixels = reach / largest;
 
   draw->PushClipRect(corner, add(corner, size), true);
   for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
@@ -43,11 +51,12 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     }
   }
   draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
-  LabelPlacer labels(corner, size);
+  // Labels between the title and the net force line, off every arrow.
+  LabelPlacer labels(inset.origin, inset.size);
   b2Vec2 net{0.0f, 0.0f};
-  for (const ScreenArrow& arrow : place_arrows(forces, inset, newtons_to_pixels)) {
-    draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
-  }
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
+  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
+  for (const ScreenArrow& arrow : arrows) draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
   for (const ForceOnBody& force : forces) net += force.force;
   draw->PopClipRect();
   // Before the first step the solver has not yet said what the contacts push with.

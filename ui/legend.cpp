@@ -20,7 +20,8 @@ std::string metres(float value) {
   return text;
 }
 
-// In the legend's strip, bottom right: a bar of a round length in metres.
+// In the legend's strip, right, on the arrows' row (the materials' row below runs longer): a
+// bar of a round length in metres, its end at `bottom_right`.
 void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_right, const Theme& theme, const Fonts& fonts) {
   const float bar = nice_length(110.0f * fonts.scale / pixels_per_metre);
   const float pixels = bar * pixels_per_metre;
@@ -42,9 +43,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   const float s = fonts.scale, line = font->FontSize + 6.0f * s;
   draw->AddRectFilled(corner, add(corner, size), theme.panel);
   draw->AddLine(corner, ImVec2(corner.x + size.x, corner.y), theme.grid);
-  draw_scale_bar(draw, camera.pixels_per_metre, add(corner, size), theme, fonts);
   const ImVec2 bottom_left(corner.x, corner.y + size.y - 2.0f * s);
   ImVec2 at(bottom_left.x + 10.0f * s, bottom_left.y - 2.0f * line);
+  draw_scale_bar(draw, camera.pixels_per_metre,
+                 ImVec2(corner.x + size.x, at.y + 0.5f * font->FontSize + 12.0f * s + 2.0f * s), theme, fonts);
   // The kinds of force in the picture, with the arrow scale so a teacher can read a length as
   // newtons. Friction, normal force and weight are always named: they are the lesson.
   bool present[force_kind_count] = {};

@@ -2,5 +2,5 @@
 lesson { title = "Broken", question = "What goes wrong?" }
 local log = {}
 while true do
-  log[#log + 1] = "step " .. #log
+  log[#log + 1] = string.rep("step ", 200) .. #log
 end
