@@ -9,9 +9,9 @@
 -- changes with the face, and between areas a hundred or a thousand times apart the measured
 -- coefficients differ. A Coulomb simulation, like the article's ideal case, cannot show that:
 -- mu_s belongs to the pair of surfaces, not to an area.
--- Known limit: from mu_s of about 1 up, the blocks on feet rock on the solver's uneven sharing
--- of their weight and break away early (at mu_s = 1 the six-footed one at 7.2 N, not 9.8 N);
--- their rows then fail, and say so.
+-- A block on feet sticks or slides as one body: its feet share one state, judged from their
+-- total friction against mu_s times their total load, so it breaks away at mu_s·N like the
+-- others, at every mu_s the slider allows.
 
 local function pull_theory(t)
   return theory.growing_push { mass = param.mass, rate = param.pull_rate, mu_s = param.mu_s, mu_k = param.mu_k,
@@ -69,8 +69,8 @@ local lowest = { -0.05, -0.2, -0.04 - foot, -0.04 - foot }
 for i, block in ipairs(blocks) do
   local pull = force { block.name .. "_pull", on = block, at = { 0, lowest[i] - resting_gap / 2 },
                        force = function(t) return pull_rate * t, 0 end }
-  -- A block on feet is read at a middle foot: a rigid block slides on all its feet at once, but
-  -- an end foot can carry no load at all, and a touch without load keeps whatever it last said.
+  -- A block on feet is read at a middle foot; any foot would do, since the block sticks or
+  -- slides as one body and all its feet say the same, a foot without load included.
   local middle = ({ nil, nil, 2, 3 })[i]
   local touch = middle and contact(block, bench_of[i], middle) or contact(block, bench_of[i])
   probe { block.name .. "_pull", unit = "N", read = { pull, "fx" } }

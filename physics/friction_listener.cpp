@@ -52,6 +52,7 @@ void FrictionListener::BeginContact(b2Contact* contact) {
     record.pair_index = pairs_.pair_index(record.material_a, record.material_b);
   }
   if (ContactRecord* known = mutable_record(contact)) {
+    record.siblings = known->siblings;  // counted when it began
     *known = record;
     return;
   }
@@ -63,6 +64,16 @@ void FrictionListener::BeginContact(b2Contact* contact) {
   }
   records_.push_back(record);
   place(records_.back(), records_.size() - 1);
+  // The groups are counted here and in EndContact, where touching begins and ends, so that a
+  // step never has to search for them.
+  ContactRecord& added = records_.back();
+  visit_group(added, [&](const b2Contact* other, ContactRecord& member) {
+    if (other != contact) {
+      ++member.siblings;
+      ++added.siblings;
+    }
+    return true;
+  });
 }
 
 std::string FrictionListener::take_error() {
@@ -72,7 +83,14 @@ std::string FrictionListener::take_error() {
 }
 
 void FrictionListener::EndContact(b2Contact* contact) {
-  if (record(contact) == nullptr) return;
+  const ContactRecord* ended = record(contact);
+  if (ended == nullptr) return;
+  if (ended->siblings > 0) {
+    visit_group(*ended, [&](const b2Contact* other, ContactRecord& member) {
+      if (other != contact) --member.siblings;
+      return true;
+    });
+  }
   const std::size_t index = index_of(contact);
   if (index + 1 != records_.size()) {
     records_[index] = records_.back();
@@ -93,6 +111,9 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   // A contact born in this step missed apply_contact_forces: its drag starts now, before the
   // solve, so a block landing on a viscous film is not let off for a step.
   if (r.fresh) apply_velocity_terms(contact, r);
+  const TreatmentRule& rule = rule_at(r.pair_index);
+  // A foot that touches down while its body's other feet already touch joins their state.
+  if (r.fresh && r.siblings > 0 && rule.judges_groups) join_group(contact, r);
 
   b2WorldManifold manifold;
   contact->GetWorldManifold(&manifold);
@@ -111,7 +132,7 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
     sliding /= static_cast<float>(r.point_count);
     r.point *= 1.0f / static_cast<float>(r.point_count);
   }
-  contact->SetFriction(rule_at(r.pair_index).solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
+  contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
   r.fresh = false;
 }
 
@@ -154,43 +175,87 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
   work_.friction += r.explicit_impulse * sliding_end;
   r.explicit_impulse = 0.0;
 
-  if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
-  // A body standing on several feet touches the floor through several contacts. Being rigid,
-  // it sticks or slides as a whole: its feet share one static limit, mu_s times their total
-  // load, however the load happens to be split between them (which statics cannot decide for
-  // three feet in a row, and the solver decides its own way). So the state is judged from the
-  // totals over every contact between the two bodies; with one contact nothing changes.
-  SolvedContact solved{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse};
-  sum_sibling_impulses(contact, ContactRecord::tangent_of(r.normal), &solved.group_normal_impulse,
-                       &solved.group_tangent_impulse);
-  rule.after_solve(r, pairs_.pair_at(r.pair_index), solved);
+  const FrictionPair& pair = pairs_.pair_at(r.pair_index);
+  SolvedContact solved{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse, sliding_end};
+  if (r.siblings > 0 && rule.judges_groups) {
+    // A body standing on several feet touches the floor through several contacts. Being rigid,
+    // it sticks or slides as a whole: its feet share one static limit, mu_s times their total
+    // load, however the load happens to be split between them (which statics cannot decide for
+    // three feet in a row, and the solver decides its own way). So the group is judged once,
+    // from its totals, and all its contacts take the verdict, a foot without load included.
+    if (!sum_group(contact, r, &solved)) return;  // the group's first contact decides
+    if (solved.group_normal_impulse <= 0.0) return;  // no load, no evidence either way
+    rule.after_solve(r, pair, solved);
+    share_group_state(contact, r);
+  } else {
+    if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
+    rule.after_solve(r, pair, solved);
+  }
   terms_pending_ = terms_pending_ || r.breakaway_impulse != 0.0;
 }
 
-void FrictionListener::sum_sibling_impulses(const b2Contact* contact, const b2Vec2& t, double* normal,
-                                            double* tangent) const {
-  const b2Body* a = contact->GetFixtureA()->GetBody();
-  const b2Body* b = contact->GetFixtureB()->GetBody();
-  // Every contact between the two is in both bodies' lists: walk the moving body's, which is
-  // short, not a ground's, which holds every contact on the ground (quadratic in a pile's base).
-  const b2Body* walked = b->GetType() == b2_staticBody ? a : b;
-  const b2Body* partner = walked == b ? a : b;
-  for (const b2ContactEdge* edge = walked->GetContactList(); edge != nullptr; edge = edge->next) {
-    const b2Contact* other = edge->contact;
-    if (other == contact || edge->other != partner || !other->IsTouching() || !other->IsEnabled()) continue;
+bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved) {
+  const b2Vec2 t = r.tangent();
+  bool first = true;
+  double normal = 0.0, tangent = 0.0, weighted_sliding = 0.0;
+  float sliding = 0.0f;
+  int points = 0;
+  visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
+    if (first && other != contact) return false;
+    first = false;
     // Box2D keeps each point's accumulated impulses in the manifold for warm starting; they are
     // stored before any contact's PostSolve is called. Along this contact's tangent, and with
-    // the same sign convention (on the body that is this contact's B).
+    // the same sign convention (on the body that is this contact's B). The member's points and
+    // normal are those its PreSolve saw in this step, as the solver did.
     const b2Manifold* manifold = other->GetManifold();
-    b2WorldManifold world;
-    other->GetWorldManifold(&world);
-    const float side = other->GetFixtureB()->GetBody() == b ? 1.0f : -1.0f;
-    const b2Vec2 other_t = ContactRecord::tangent_of(world.normal);
-    for (int i = 0; i < manifold->pointCount; ++i) {
-      *normal += manifold->points[i].normalImpulse;
-      *tangent += side * manifold->points[i].tangentImpulse * b2Dot(other_t, t);
+    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float along = side * b2Dot(member.tangent(), t);
+    const int count = std::min(member.point_count, manifold->pointCount);
+    for (int i = 0; i < count; ++i) {
+      const double jn = manifold->points[i].normalImpulse;
+      const b2Vec2 p = member.world_points[i];
+      const float v = b2Dot(point_velocity(r.body_b, p) - point_velocity(r.body_a, p), t);
+      normal += jn;
+      tangent += along * manifold->points[i].tangentImpulse;
+      weighted_sliding += jn * v;
+      sliding += v;
+      ++points;
     }
+    return true;
+  });
+  if (first) return false;
+  solved->group_normal_impulse = normal;
+  solved->group_tangent_impulse = tangent;
+  if (normal > 0.0) {
+    solved->group_sliding_end = static_cast<float>(weighted_sliding / normal);
+  } else if (points > 0) {
+    solved->group_sliding_end = sliding / static_cast<float>(points);
   }
+  return true;
+}
+
+void FrictionListener::share_group_state(const b2Contact* contact, const ContactRecord& r) {
+  visit_group(r, [&](const b2Contact* other, ContactRecord& member) {
+    if (other != contact) {
+      member.state = r.state;
+      // The sign of B's sliding relative to A along the tangent is the same seen from either
+      // body (both flip), so it is copied as it is.
+      member.slip_direction = r.slip_direction;
+      member.held_force = r.held_force;
+    }
+    return true;
+  });
+}
+
+void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
+  visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
+    if (other == contact || member.fresh) return true;
+    r.state = member.state;
+    r.slip_direction = member.slip_direction;
+    r.held_force = member.held_force;
+    r.fresh = false;  // its state is the group's, not one judged from its own speed
+    return false;
+  });
 }
 
 void FrictionListener::apply_contact_forces(b2World& world, float h) {
@@ -227,7 +292,8 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   r.damping_force = 0.0;
   if (r.breakaway_impulse != 0.0) {
     const b2Vec2 t = r.tangent();
-    const bool face = r.point_count == 2;
+    // A group's correction is its body's, through the centres like a face's.
+    const bool face = r.point_count == 2 || r.siblings > 0;
     const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
     const double v = sliding_speed(r.body_a, r.body_b, face, r.point, t);
     apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse), face);

@@ -42,6 +42,10 @@ struct ContactRecord {
   b2Vec2 world_points[b2_maxManifoldPoints];
   b2Vec2 start_velocity[b2_maxManifoldPoints];  // B's point velocity minus A's
   bool fresh = true;               // not yet seen by PreSolve: its first state comes from its speed
+  // How many other touching contacts join the same two bodies through the same pair of
+  // materials (a body on feet has one contact a foot). Such a group sticks or slips as one:
+  // under stick-slip its state is decided once a step for all of them (see PostSolve).
+  int siblings = 0;
   bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction while stuck in the previous step
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
@@ -113,9 +117,28 @@ class FrictionListener : public b2ContactListener {
   // The breakaway impulse owed, the viscous and quadratic drag and the regularized dry force,
   // as impulses at the contact for the coming step.
   void apply_velocity_terms(b2Contact* contact, ContactRecord& r);
-  // Adds the impulses of every other touching contact between the same two bodies (a body on
-  // feet), along this contact's tangent `t`, to the totals.
-  void sum_sibling_impulses(const b2Contact* contact, const b2Vec2& t, double* normal, double* tangent) const;
+  // Calls visit(contact, record) for every contact of r's group, r's own included, in the
+  // moving body's contact list order, until visit returns false. A ground's list holds every
+  // contact on it (quadratic in a pile's base), so the moving body's is walked.
+  template <class Visit>
+  void visit_group(const ContactRecord& r, Visit visit) {
+    if (r.unpaired) return;
+    b2Body* walked = r.body_b->GetType() == b2_staticBody ? r.body_a : r.body_b;
+    const b2Body* partner = walked == r.body_b ? r.body_a : r.body_b;
+    for (b2ContactEdge* edge = walked->GetContactList(); edge != nullptr; edge = edge->next) {
+      if (edge->other != partner) continue;
+      ContactRecord* member = mutable_record(edge->contact);
+      if (member == nullptr || member->unpaired || member->pair_index != r.pair_index) continue;
+      if (!visit(static_cast<const b2Contact*>(edge->contact), *member)) return;
+    }
+  }
+  // In the PostSolve of a contact with siblings: false unless it is its group's first contact;
+  // if it is, the group's totals and sliding go into `solved`.
+  bool sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved);
+  // The state the group's first contact was left in, given to the rest of the group.
+  void share_group_state(const b2Contact* contact, const ContactRecord& r);
+  // A new contact takes its group's state from a sibling that has one already.
+  void join_group(const b2Contact* contact, ContactRecord& r);
   ContactRecord* mutable_record(const b2Contact* contact) {
     return const_cast<ContactRecord*>(static_cast<const FrictionListener*>(this)->record(contact));
   }

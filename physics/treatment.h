@@ -24,10 +24,13 @@ struct SolvedContact {
   double tangent_impulse = 0.0;  // N·s on B along the tangent
   float sliding_end = 0.0f;      // m/s, B relative to A along the tangent, after the solve
   float step = 0.0f;             // s
-  // The same over every contact between the two bodies (a body on feet has one a foot); the
-  // contact's own when it is the only one.
+  // The same over the contact's group, every touching contact between the two bodies through
+  // the same pair (a body on feet has one a foot), when the rule judges groups; the contact's
+  // own otherwise and when it is the only one. The group's sliding is the mean over its points
+  // weighted by their normal impulses, along this contact's tangent.
   double group_normal_impulse = 0.0;
   double group_tangent_impulse = 0.0;
+  float group_sliding_end = 0.0f;
 };
 
 // One treatment's three moments in a step. Plain functions, no state of their own: the state
@@ -43,6 +46,12 @@ struct TreatmentRule {
   // The dry friction this treatment applies itself, as an explicit force before the step
   // (N, on B along the tangent), or null when the solver's impulse is the dry friction.
   double (*explicit_dry_force)(double sliding, double normal_force, const FrictionPair& pair, double epsilon);
+  // Whether a group of contacts between the same two bodies keeps one state. If so, the listener
+  // calls after_solve once a step per group, on its first contact in the moving body's contact
+  // list, with the group's totals, and gives the state it leaves to every contact of the group;
+  // a contact joining a group takes the group's state instead of judging its own birth. If not,
+  // every contact is judged alone.
+  bool judges_groups = false;
 };
 
 const TreatmentRule& stick_slip_rule();

@@ -20,7 +20,7 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
 }  // namespace
 
 const TreatmentRule& box2d_rule() {
-  static const TreatmentRule rule{FrictionTreatment::box2d, solver_coefficient, after_solve, nullptr};
+  static const TreatmentRule rule{FrictionTreatment::box2d, solver_coefficient, after_solve, nullptr, false};
   return rule;
 }
 

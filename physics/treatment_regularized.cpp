@@ -25,7 +25,7 @@ double dry_force(double sliding, double normal_force, const FrictionPair& pair, 
 }  // namespace
 
 const TreatmentRule& regularized_rule() {
-  static const TreatmentRule rule{FrictionTreatment::regularized, solver_coefficient, after_solve, dry_force};
+  static const TreatmentRule rule{FrictionTreatment::regularized, solver_coefficient, after_solve, dry_force, false};
   return rule;
 }
 

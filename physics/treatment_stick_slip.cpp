@@ -1,8 +1,10 @@
 // stick-slip: each contact is stuck or slipping. Stuck, the solver may use up to mu_s·N; a
 // contact starts slipping when the solved tangential impulse reaches that limit, and slips
-// with mu_k·N until its sliding stops or reverses. This is what makes the spring lesson
+// with mu_k·N until its sliding stops or reverses. Several contacts between the same two
+// bodies (a body on feet) are one group with one state, judged from their totals. This is what makes the spring lesson
 // converge to the exact Coulomb answer as the step shrinks (it realises the engineering
 // model's piecewise law through the solver's impulses).
+#include <algorithm>
 #include <cmath>
 
 #include "physics/contact_mechanics.h"
@@ -24,12 +26,24 @@ constexpr float birth_sliding_speed = 1e-3f;
 // be declared on noise, or a sliding block would stick for a step in mid-slide.
 constexpr double breakaway_tolerance = 1e-5;
 
+// What a stuck group's contacts give the solver. Box2D clamps every manifold point's friction
+// at the coefficient times that point's own normal impulse, a cone per point; a rigid body on
+// feet has one cone for all of them, mu_s times the total load. With mu_s per point the solver
+// cannot always find the split that holds the body (its eight iterations move friction from a
+// saturated point to the others too slowly, and the loads of feet in a row are its own choice),
+// so the body crept while it should hold and then broke away early: a block on six feet at
+// mu_s = 1 at 7.2 N instead of 9.8 N. So the stuck group's points get a coefficient no load
+// share reaches; the solver then holds the body wherever a rigid hold needs no more than that,
+// and the group's cone is applied after the solve, from the totals (after_solve).
+constexpr float group_hold_coefficient = 1e4f;
+
 float solver_coefficient(ContactRecord& r, const FrictionPair& pair, float sliding, double) {
   if (r.fresh && std::abs(sliding) > birth_sliding_speed) {
     r.state = ContactState::slipping;
     r.slip_direction = sign(sliding);
   }
-  return static_cast<float>(r.state == ContactState::sticking ? breakaway_coefficient(pair) : pair.mu_k);
+  if (r.state == ContactState::slipping) return static_cast<float>(pair.mu_k);
+  return r.siblings > 0 ? group_hold_coefficient : static_cast<float>(breakaway_coefficient(pair));
 }
 
 // The step in which a contact breaks free was solved with mu_s throughout, although the
@@ -51,23 +65,52 @@ double breakaway_correction(const ContactRecord& r, const FrictionPair& pair, co
   return (breakaway_coefficient(pair) - pair.mu_k) * normal_force * (late + 0.5 * h);
 }
 
+// The same for a stuck group, whose points the solver held with group_hold_coefficient: it kept
+// the body still with friction |T| that may pass the group's limit mu_s·N. A lone contact's
+// solve would have stopped at the limit and left the rest as velocity; that rest, |T| - mu_s·N·h,
+// is handed back, and then the kinetic friction owed since the crossing, as above, with the
+// demanded friction the hold plus whatever velocity the solve left. The body's translational
+// mass applies: the feet keep it level, as a face does.
+double group_breakaway_correction(const ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
+  const double h = solved.step;
+  const double mass = translational_mass(r.body_a, r.body_b);
+  const double normal_force = solved.group_normal_impulse / h;
+  const double limit = breakaway_coefficient(pair) * normal_force;
+  const double held = std::abs(solved.group_tangent_impulse) / h;
+  const double demanded = held + mass * std::abs(solved.group_sliding_end) / h;
+  const double excess = std::max(demanded - limit, 0.0);
+  const double growth = (demanded - r.held_force) / h;
+  const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, h) : 0.5 * h;
+  const double handed_back = std::max(held - limit, 0.0) * h;
+  return handed_back + (breakaway_coefficient(pair) - pair.mu_k) * normal_force * (late + 0.5 * h);
+}
+
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   // A rigid body sticks or slips as a whole on all its contacts with the other body, so what
-  // they reached together decides (see FrictionListener::PostSolve).
+  // they reached together decides, once for the group (see FrictionListener::PostSolve). For a
+  // contact alone the group's figures are its own.
   const double reached = std::abs(solved.group_tangent_impulse) / solved.group_normal_impulse;
   if (r.state == ContactState::sticking) {
     if (reached >= breakaway_coefficient(pair) * (1.0 - breakaway_tolerance)) {
       r.state = ContactState::slipping;
-      // Friction on B opposes B's sliding, so an unmoved contact slides against it.
-      r.slip_direction = solved.sliding_end != 0.0f ? sign(solved.sliding_end)
-                                                    : -sign(static_cast<float>(solved.tangent_impulse));
-      r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, solved);
+      if (r.siblings == 0) {
+        // Friction on B opposes B's sliding, so an unmoved contact slides against it.
+        r.slip_direction = solved.sliding_end != 0.0f ? sign(solved.sliding_end)
+                                                      : -sign(static_cast<float>(solved.tangent_impulse));
+        r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, solved);
+      } else {
+        // A held group ends the step with round-off for a velocity, of either sign. B goes the
+        // way it would have gone without the friction: m·v - T.
+        const double mass = translational_mass(r.body_a, r.body_b);
+        r.slip_direction = sign(static_cast<float>(mass * solved.group_sliding_end - solved.group_tangent_impulse));
+        r.breakaway_impulse = r.slip_direction * group_breakaway_correction(r, pair, solved);
+      }
     } else {
-      r.held_force = std::abs(solved.tangent_impulse) / solved.step;
+      r.held_force = std::abs(solved.group_tangent_impulse) / solved.step;
     }
   } else {
     const bool held = reached < pair.mu_k * (1.0 - stop_tolerance);
-    const bool reversed = sign(solved.sliding_end) == -r.slip_direction;
+    const bool reversed = sign(solved.group_sliding_end) == -r.slip_direction;
     if (held || reversed) r.state = ContactState::sticking;
   }
 }
@@ -75,7 +118,7 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
 }  // namespace
 
 const TreatmentRule& stick_slip_rule() {
-  static const TreatmentRule rule{FrictionTreatment::stick_slip, solver_coefficient, after_solve, nullptr};
+  static const TreatmentRule rule{FrictionTreatment::stick_slip, solver_coefficient, after_solve, nullptr, true};
   return rule;
 }
 

@@ -19,7 +19,7 @@ void after_solve(ContactRecord&, const FrictionPair&, const SolvedContact&) {}
 }  // namespace
 
 const TreatmentRule& threshold_rule() {
-  static const TreatmentRule rule{FrictionTreatment::threshold, solver_coefficient, after_solve, nullptr};
+  static const TreatmentRule rule{FrictionTreatment::threshold, solver_coefficient, after_solve, nullptr, false};
   return rule;
 }
 

@@ -132,6 +132,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"contact_area", {{"pull_rate", "0.2"}}, ""},
                       Case{"contact_area", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
                       Case{"contact_area", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      // The blocks on feet from mu_s 0.5 up, where they once broke away early, at
+                      // 120 Hz too, up to the slider's end.
+                      Case{"contact_area", {{"mu_s", "0.5"}}, "", 120.0},
+                      Case{"contact_area", {{"mu_s", "1"}, {"mu_k", "0.7"}}, ""},
+                      Case{"contact_area", {{"mu_s", "2"}, {"mu_k", "1.5"}}, "", 120.0},
                       // thrown_box: no spin (it lands flat), both ways at the slider's ends, a slow and
                       // a fast throw, the corner sliding (little friction) and gripping (much).
                       Case{"thrown_box", {{"spin", "0"}}, ""}, Case{"thrown_box", {{"spin", "20"}}, ""},
