@@ -62,7 +62,7 @@ local blocks = {
         feet = 6, foot_width = foot, foot_height = foot },
 }
 local bench_of = { face_bench, face_bench, feet_bench, feet_bench }
-view { lanes = { blocks[1], blocks[3] }, titles = { "on a face: wide and narrow", "on feet: three and six" } }
+view { lanes = { blocks[1], blocks[3] }, titles = { "on a face: wide and narrow", "on feet: three and six" }, width = 1.8 }
 -- Each pull acts at the height where the block touches the bench (Box2D puts the contact in
 -- the middle of the resting gap), so it has no moment about the contact to tip the block.
 local lowest = { -0.05, -0.2, -0.04 - foot, -0.04 - foot }

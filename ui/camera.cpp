@@ -179,7 +179,7 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
         const float span = moving.upperBound.x - moving.lowerBound.x;
         if (span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * span));
       }
-      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.2f * tallest));
+      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.0f * tallest));
     }
   }
   // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
