@@ -116,6 +116,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"push", {{"push_rate", "0.2"}}, ""}, Case{"push", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
                       Case{"push", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}, Case{"push", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
                       Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""},
+                      // The drag's step term: at c = 10 on 0.1 kg (Γh = 0.42) the speed runs 22 %
+                      // high; past Γh = 1 the row says the step is too long, in words.
+                      Case{"push", {{"c", "10"}, {"mass", "0.1"}}, ""},
+                      Case{"push", {{"c", "1000"}, {"mass", "0.1"}}, "step too long for this drag: Γ·h = 41.7 > 1"},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -125,6 +129,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"friction_models", {{"mass", "0.1"}}, ""},
                       Case{"friction_models", {{"mu_k", "0.05"}}, ""},
                       Case{"friction_models", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // The step's terms: strong drag (its split and leapfrog start), slides of a
+                      // few steps, and past Γh = 1 (a slide over in a few steps) words.
+                      Case{"friction_models", {{"c", "50"}, {"b", "50"}}, ""},
+                      Case{"friction_models", {{"c", "0.5"}, {"b", "0.5"}, {"launch_speed", "0.2"}, {"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      Case{"friction_models", {{"b", "50"}, {"mass", "0.1"}, {"launch_speed", "0.2"}}, ""},
+                      Case{"friction_models", {{"c", "0"}, {"b", "50"}, {"mass", "0.1"}, {"launch_speed", "5"}},
+                           "step too long for this drag: Γ·h = 20.8 > 1"},
                       // contact_area: doubling the mass doubles the breakaway pull on every face and
                       // foot count; light and heavy, slow and fast; mu_k above mu_s; no friction.
                       Case{"contact_area", {{"mass", "2"}}, ""}, Case{"contact_area", {{"mass", "0.1"}}, ""},

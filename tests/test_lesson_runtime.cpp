@@ -405,6 +405,23 @@ expect { "tight", unit = "N", predicted = 10, measured = 10.4, tolerance = 0.3 }
   EXPECT_FALSE(rows[2].passes);
 }
 
+TEST(LessonRuntime, AWordFromMeasuredInANumberRowIsNotMeasuredYetAndSaysWhy) {
+  ScriptFile script(with_heading(R"(
+expect { "distance", unit = "m", predicted = 0.5, tolerance = 0.01,
+  measured = function() if time() < 0.2 then return "still sliding" end return 0.5 end }
+)"));
+  Lesson lesson(script.path());
+  std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].numeric);
+  EXPECT_FALSE(rows[0].measured_yet);
+  EXPECT_EQ(rows[0].measured_text, "still sliding");
+  EXPECT_FALSE(rows[0].passes);
+  run_for(lesson, 0.5);
+  rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].measured_yet);
+  EXPECT_TRUE(rows[0].passes);
+}
+
 TEST(LessonRuntime, TheoryInScriptsIsTheTheoryTheTestsCheck) {
   ScriptFile script(with_heading(R"(
 local r = {}

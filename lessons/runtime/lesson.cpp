@@ -367,6 +367,11 @@ std::vector<ExpectationResult> Lesson::expectations() {
       row.measured_text = "not measured";
     } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
       row.measured = lua_tonumber(state, -1);
+    } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
+      // A word where a number is due says why there is no number yet ("still sliding"): the
+      // row is not measured, and shows the word instead of "not measured".
+      row.measured_yet = false;
+      row.measured_text = lua_tostring(state, -1);
     } else if (!row.numeric && (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN)) {
       row.measured_text = luaL_tolstring(state, -1, nullptr);
       lua_pop(state, 1);
