@@ -156,7 +156,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"terrain", {{"slope", "3"}}, ""}, Case{"terrain", {{"slope", "15"}}, ""},
                       Case{"terrain", {{"slope", "30"}}, ""}, Case{"terrain", {{"launch_speed", "0.5"}}, ""},
                       Case{"terrain", {{"launch_speed", "5"}, {"slope", "10"}}, ""}, Case{"terrain", {{"mass", "10"}}, ""},
-                      Case{"terrain", {{"asphalt.mu_s", "2"}, {"asphalt.mu_k", "2"}, {"slope", "20"}}, ""}));
+                      Case{"terrain", {{"asphalt.mu_s", "2"}, {"asphalt.mu_k", "2"}, {"slope", "20"}}, ""},
+                      // A long slide on ice (22 m: the ramp grows for it), no friction on the flat
+                      // (never stops, in words), and on a steep slope at a coarse frame rate and
+                      // with sub-steps the hack's closed form holds exactly.
+                      Case{"terrain", {{"slope", "1"}, {"launch_speed", "5"}}, ""},
+                      Case{"terrain", {{"ice.mu_s", "0"}, {"ice.mu_k", "0"}}, ""},
+                      Case{"terrain", {{"slope", "30"}}, "", 60}, Case{"terrain", {}, "", 2}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

@@ -47,6 +47,26 @@ plot { "phase", x = "x", y = "vx" }
 // their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
 // the drag lane less far), the model card still sees every term, and moving the shared slider
 // rebuilds both lanes with the new value.
+TEST(LessonRuntime, APairsSlidersListMakesOnlyThoseAndTheOthersKeepTheScriptsValues) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, sliders = { "mu_s", "mu_k" } }
+local floor = ground { "floor", material = "ice" }
+box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_s"));
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_k"));
+  EXPECT_THROW(lesson.parameter("ice.c"), InvalidInput);
+  EXPECT_THROW(lesson.parameter("ice.b"), InvalidInput);
+  lesson.set("ice.mu_k", "0.07");  // live: the pair keeps its c
+  const FrictionPair& pair = lesson.scene().pairs().pair("wood", "ice");
+  EXPECT_EQ(pair.mu_k, 0.07);
+  EXPECT_EQ(pair.c, 2.0);
+  const ScriptFile wrong(with_heading("pair { \"wood\", \"ice\", mu_s = 0.1, mu_k = 0.05, sliders = { \"mu\" } }\n"));
+  EXPECT_NE(error_of([&] { Lesson broken(wrong.path()); }).find("sliders lists coefficients from mu_s, mu_k, c, b"),
+            std::string::npos);
+}
+
 TEST(LessonRuntime, PairsWithoutSlidersTakeTheScriptsValues) {
   ScriptFile script(with_heading(R"(
 local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 1 }

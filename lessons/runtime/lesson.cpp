@@ -408,7 +408,8 @@ void Lesson::set(const std::string& name, const std::string& text) {
   if (!changed.structural && !changed.coefficient.empty()) {
     // A coefficient the script reads only while running: the pair table changes under the
     // running lesson, as a teacher moving a slider expects.
-    FrictionPair values;
+    // From the pair as it is: a coefficient with no slider of its own keeps the script's value.
+    FrictionPair values = scene().pairs().pair(changed.material_a, changed.material_b);
     for (const Parameter& sibling : current_->parameters) {
       if (sibling.material_a != changed.material_a || sibling.material_b != changed.material_b) continue;
       const double v = &sibling == &changed ? value : sibling.value;

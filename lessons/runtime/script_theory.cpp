@@ -2,7 +2,9 @@
 // same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
 // mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
 
+#include <cmath>
 #include <limits>
+#include <string>
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
@@ -287,10 +289,17 @@ int slope_launch(lua_State* state) {
 
 int velocity_hack(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g"});
+    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g", "substeps"});
+    // The frame's sub-steps, as the run takes them unless the script says otherwise.
+    const double run_substeps = build_of(state).scene->settings().substeps;
+    const double substeps = fields.number_in("substeps", "", run_substeps, 1.0, 1000.0);
+    if (substeps != std::floor(substeps)) {
+      throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
+    }
     const theory::VelocityHack hack = theory::velocity_hack(
         fields.number("v0", "m/s"), fields.number("keep", ""), fields.number("step", "s"),
-        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity));
+        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity),
+        static_cast<int>(substeps));
     lua_createtable(state, 0, 2);
     set_number(state, "distance_up", hack.distance_up);
     set_number(state, "drift_speed", hack.drift_speed);
