@@ -150,6 +150,18 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"thrown_box", {{"throw_speed", "8"}, {"mass", "20"}}, ""},
                       Case{"thrown_box", {{"mu_s", "0.1"}, {"mu_k", "0.05"}, {"spin", "-20"}}, ""},
                       Case{"thrown_box", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // Where the impact swaps which way the box turns (spin after from −4.3 to
+                      // +4.8 rad/s between −1.5 and −1): the skin's lever arm and the step term.
+                      Case{"thrown_box", {{"spin", "-1"}}, ""}, Case{"thrown_box", {{"spin", "-1.2"}}, ""},
+                      Case{"thrown_box", {{"spin", "-1.5"}}, ""}, Case{"thrown_box", {{"spin", "-1"}}, "", 3840},
+                      // Near a quarter turn both ends of a face land within two steps; thrown flat
+                      // with mu_k = 2 it pitches over its front edge; frictionless, the locked box
+                      // never stops; sliding on a corner with mu_k = 2 the solver cannot settle.
+                      Case{"thrown_box", {{"spin", "-4"}}, ""},
+                      Case{"thrown_box", {{"spin", "0"}, {"mu_s", "2"}, {"mu_k", "2"}, {"throw_speed", "8"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"thrown_box", {{"spin", "0.5"}, {"mu_s", "2"}, {"mu_k", "2"}, {"throw_speed", "8"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "0.05"}, {"mu_k", "0.03"}, {"throw_speed", "8"}}, ""},
                       // terrain: on slopes below and above every surface's sticking angle (ice's is
                       // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
                       // stickiest asphalt the sliders allow.
