@@ -147,6 +147,89 @@ polygon { "wedge", material = "crate", points = { { 0, 0 }, { 0.5, 0 }, { 0, 0.3
   EXPECT_NEAR(b2Dot(on_slope->GetPosition() - b2Vec2{2.0f, 0.5f}, along), 2.0, 1e-4);
 }
 
+// A block pushed with 8 N from rest across a floor that changes from wood (mu_k 0.3) to ice
+// (0.04) at x = 0. The speed follows the piecewise closed form v² = 2·a·d, a = (F − mu_k·m·g)/m,
+// on the wood until its front edge reaches the seam and on the ice from where its back edge
+// leaves it, and across the seam it never slows: friction there is shared between the two,
+// between mu_k(ice)·m·g and mu_k(wood)·m·g, and the floor stays level (no vertical speed, no
+// turning). Two boxes side by side instead jolt it at the seam (Box2D's ghost collision).
+struct SeamRun {
+  double worst_speed_error = 0.0, worst_vy = 0.0, worst_spin = 0.0, least_acceleration = 1e9, most_acceleration = -1e9;
+  bool crossed = false;  // wholly on the ice by the end
+};
+SeamRun push_across_the_seam(const std::string& floor) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+pair { "wood", "ice", mu_s = 0.08, mu_k = 0.04 }
+)" + floor + R"(
+local block = box { "block", material = "wood", width = 0.4, height = 0.3, on = wood_floor, at = start, mass = 2 }
+force { "push", on = block, force = function(t) return 8, 0 end }
+probe { "x", unit = "m", read = { block, "x" } }
+probe { "vx", unit = "m/s", read = { block, "vx" } }
+probe { "vy", unit = "m/s", read = { block, "vy" } }
+probe { "spin", unit = "rad/s", read = { block, "omega" } }
+)"));
+  Lesson lesson(script.path());
+  const double h = lesson.scene().frame_step(), m = 2.0, push = 8.0;
+  const double on_wood = (push - 0.3 * m * g) / m, on_ice = (push - 0.04 * m * g) / m;
+  SeamRun run;
+  double x1 = 0.0, v1 = 0.0, last_v = 0.0;
+  bool left_the_wood = false;
+  for (int i = 0; i < static_cast<int>(1.8 / h); ++i) {
+    lesson.step();
+    const double x = probe_now(lesson, "x") + 1.0, v = probe_now(lesson, "vx");  // x: from the start
+    run.worst_vy = std::max(run.worst_vy, std::abs(probe_now(lesson, "vy")));
+    run.worst_spin = std::max(run.worst_spin, std::abs(probe_now(lesson, "spin")));
+    const double front = x - 1.0 + 0.2, back = x - 1.0 - 0.2;
+    // vx belongs to the middle of the step, x to its end: v(x) is read half a step late.
+    if (front <= 0.0) {
+      run.worst_speed_error = std::max(run.worst_speed_error, std::abs(v - std::sqrt(2.0 * on_wood * x)));
+    } else if (back < 0.0) {
+      const double a = (v - last_v) / h;
+      run.least_acceleration = std::min(run.least_acceleration, a);
+      run.most_acceleration = std::max(run.most_acceleration, a);
+    } else {
+      if (!left_the_wood) left_the_wood = true, x1 = x, v1 = v;
+      run.worst_speed_error = std::max(run.worst_speed_error, std::abs(v - std::sqrt(v1 * v1 + 2.0 * on_ice * (x - x1))));
+    }
+    last_v = v;
+  }
+  run.crossed = left_the_wood;
+  return run;
+}
+
+TEST(LessonRuntime, AFloorOfStripsCarriesABoxAcrossItsSeamWithoutAJolt) {
+  const SeamRun strips = push_across_the_seam(
+      "local wood_floor = ground { \"floor\", strips = { { \"wood\", to = 0 }, { \"ice\" } } }\nlocal start = -1");
+  const double h = 1.0 / 240.0, on_wood = (8.0 - 0.3 * 2.0 * g) / 2.0, on_ice = (8.0 - 0.04 * 2.0 * g) / 2.0;
+  EXPECT_TRUE(strips.crossed);
+  // v(x) read half a step late: off by at most a·h/2 (a <= 3.6 m/s²), 7.5 mm/s.
+  EXPECT_LT(strips.worst_speed_error, on_ice * h / 2.0);
+  EXPECT_LT(strips.worst_vy, 1e-4);
+  EXPECT_LT(strips.worst_spin, 1e-3);
+  EXPECT_GE(strips.least_acceleration, on_wood - 1e-3);
+  EXPECT_LE(strips.most_acceleration, on_ice + 1e-3);
+  const SeamRun boxes = push_across_the_seam(
+      "local wood_floor = box { \"wood_floor\", material = \"wood\", kind = \"static\", width = 10, height = 0.5, x = -5, y = -0.25 }\n"
+      "box { \"ice_floor\", material = \"ice\", kind = \"static\", width = 10, height = 0.5, x = 5, y = -0.25 }\nlocal start = 4");
+  EXPECT_GT(boxes.worst_vy, 0.1) << "two boxes side by side no longer snag: the guide's advice on strips can go";
+}
+
+TEST(LessonRuntime, AFloorOfStripsRefusesStripsOutOfOrder) {
+  const auto message = [](const std::string& strips) {
+    const ScriptFile script(with_heading("ground { \"floor\", strips = " + strips + " }\n"));
+    return error_of([&] { Lesson lesson(script.path()); });
+  };
+  EXPECT_NE(message("{ { \"wood\", to = 1 }, { \"ice\", to = 0.5 }, { \"wood\" } }").find(
+                "ground 'floor': strips[2] 'ice': to = 0.5 m is outside the allowed range [1.02, 199.98]"),
+            std::string::npos) << message("{ { \"wood\", to = 1 }, { \"ice\", to = 0.5 }, { \"wood\" } }");
+  EXPECT_NE(message("{ { \"wood\", to = 1 }, { \"ice\", to = 5 } }").find("strips[2]: the last strip runs to the floor's right end"),
+            std::string::npos);
+  EXPECT_NE(message("{ { \"wood\" }, { \"ice\" } }").find("strips[1]: to = where this strip ends (x in m) is missing"),
+            std::string::npos);
+  EXPECT_NE(message("{ }").find("strips lists 1 to 16 strips"), std::string::npos);
+}
+
 TEST(LessonRuntime, ForcesConstantAndFunctionsOfTimeAccelerateAFrictionlessBlock) {
   ScriptFile script(with_heading(R"(
 material { "puck", density = 100 }
