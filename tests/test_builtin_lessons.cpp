@@ -120,6 +120,10 @@ INSTANTIATE_TEST_SUITE_P(
                       // high; past Γh = 1 the row says the step is too long, in words.
                       Case{"push", {{"c", "10"}, {"mass", "0.1"}}, ""},
                       Case{"push", {{"c", "1000"}, {"mass", "0.1"}}, "step too long for this drag: Γ·h = 41.7 > 1"},
+                      // The friction row's step terms (a reading half a step old, the drag on the
+                      // step-raised speed), and a push that sends the block off the table's end.
+                      Case{"push", {{"mass", "10"}, {"b", "10"}, {"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"push", {{"mass", "0.1"}, {"push_rate", "50"}}, "off the table's end before the run ends"},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -162,6 +166,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"thrown_box", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
                       Case{"thrown_box", {{"spin", "0.5"}, {"mu_s", "2"}, {"mu_k", "2"}, {"throw_speed", "8"}}, ""},
                       Case{"thrown_box", {{"mu_s", "0.05"}, {"mu_k", "0.03"}, {"throw_speed", "8"}}, ""},
+                      // Met a step late the corner has sunk into the gap: the lever arm it is met at.
+                      Case{"thrown_box", {{"spin", "3"}, {"throw_speed", "3"}}, ""},
+                      Case{"thrown_box", {{"spin", "-0.5"}, {"mu_s", "1"}, {"mu_k", "1"}, {"throw_speed", "3"}}, ""},
                       // terrain: on slopes below and above every surface's sticking angle (ice's is
                       // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
                       // stickiest asphalt the sliders allow.

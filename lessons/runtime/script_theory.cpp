@@ -2,6 +2,7 @@
 // same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
 // mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -264,9 +265,12 @@ int thrown_box(lua_State* state) {
     // its lever arm turned with the box. The contact point is where the two skins meet, half the
     // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
     // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
+    // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
+    // middle of what is left of the gap, where the point is, has risen by half that.
     const auto impact_on = [&](double rx, double ry, double late) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
-      return theory::corner_impact(mass, inertia, c * rx - s * ry, s * rx + c * ry - 0.5 * clearance, speed,
+      const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
+      return theory::corner_impact(mass, inertia, c * rx - s * ry, s * rx + c * ry - 0.5 * (clearance - sunk), speed,
                                    -g * (landing.time + late), spin, mu_k, restitution);
     };
     // Landing flat, the face's two ends share the impact, and their loads shift to keep the box
