@@ -69,13 +69,13 @@ expect { "landing time", unit = "s",
   tolerance = function() return step_length() end }
 
 -- Whether theory has the corner grip or slide (or the box land flat), throw().corner says; the
--- spin it leaves is what the class can see.
--- Where no single impact describes the first step on the floor, the row says why instead:
--- the face's far end comes down within two steps of the corner (the stepped world meets both in
--- one step), or the corner slides with friction so strong that Box2D's solver, which takes
--- friction and the normal impulse in turns, settles too slowly: each turn leaves
--- mu_k·|k_tn|/k_nn of the last one's error, and of its 8 turns the last 7 leave 0.5^7 < 1 % of
--- the first one's (up to 12 rad/s) only while that ratio is at most 0.5.
+-- spin it leaves is what the class can see. Where no single impact describes the first step on
+-- the floor, the row says why instead: the face's far end comes down within two steps of the
+-- corner (the stepped world meets both in one step), or the corner slides with friction so
+-- strong that Box2D's solver, which takes friction and the normal impulse in turns, settles too
+-- slowly: each turn leaves mu_k·|k_tn|/k_nn of the last one's error, and of its 8 turns the
+-- last 7 leave 0.5^7 < 1 % of the first one's (up to 12 rad/s) only while that ratio is at
+-- most 0.5.
 local function no_single_impact()
   local t = throw()
   if t.corner == "lands flat" then return nil end
@@ -93,11 +93,11 @@ expect { "spin just after the impact", unit = "rad/s",
     return i and (no_single_impact() or history("box_spin")[i])
   end,
   -- 5 %, and two step terms. The world meets the floor up to a step after the exact landing,
-  -- the box turned by up to spin·h and falling g·h faster, and the impact's lever arm with it:
-  -- what that does is theory's own answer for an impact a step late (up to 0.7 rad/s at 240 Hz
-  -- near spin −1.5 rad/s, where the impact swaps which way the box turns). And the spin is read
-  -- at the end of the impact's step, after up to a step of turning about the corner under
-  -- gravity: pivot_acceleration·h.
+  -- the box turned by up to spin·h, falling g·h faster and sunk into the gap, and the impact's
+  -- lever arm with it: what that does is theory's own answer for an impact a step late (at
+  -- 240 Hz 0.5 rad/s at the default spin, 1.1 at −20 rad/s and 1.2 at +3, where the corner
+  -- meets the floor at a glancing angle). And the spin is read at the end of the impact's step,
+  -- after up to a step of turning about the corner under gravity: pivot_acceleration·h.
   tolerance = function()
     local t = throw()
     return 0.05 * math.abs(t.spin_after - spin) + 0.05 + math.abs(t.spin_after_a_step_late - t.spin_after)
