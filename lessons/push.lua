@@ -79,13 +79,52 @@ expect { "breakaway push", unit = "N",
   -- The push grows by rate·h in a step, and the slip is seen at the end of the step it begins in.
   tolerance = function() return 0.01 * push_theory(0).breakaway_push + push_rate * step_length() end }
 
+-- Where the run cannot show the end theory describes, the last two rows say so: the block has
+-- slid off the table's end (200 m from where it stood, less its half width), or it moves more
+-- than Box2D lets a body move in one step (b2_maxTranslation, 2 m), which caps its speed.
+local function out_of_reach()
+  local final = push_theory(ending())
+  if final.distance > 200 - 0.15 then return "off the table's end before the run ends" end
+  if final.speed * step_length() > 2 then return "faster than Box2D's 2 m a step" end
+end
+
+-- The drag's step term. The drag is taken off before each step and the push's impulse added
+-- after it, so each step's push escapes that step's drag: the step is forward Euler with the
+-- drag's rate Γ = f'(v)/m (f = c·v + b·v²) replaced by (1 − e^(−Γh))/h, and the speed the drag
+-- holds the block to runs high by (f/f')·(q − 1), q = Γh/(1 − e^(−Γh)) ≈ 1 + Γh/2 (at c = 10,
+-- mass 0.1: Γh = 0.42, 22 %). Past Γh = 1 that is over half the drag's share of the speed:
+-- the row then says the step is too long rather than compare.
+local function drag_step()
+  local v = push_theory(ending()).speed
+  local gamma_h = (param.c + 2 * param.b * v) / mass * step_length()
+  if gamma_h == 0 then return 0, 0 end
+  local share = (param.c * v + param.b * v * v) / (param.c + 2 * param.b * v)  -- f/f'
+  return share * (gamma_h / (1 - math.exp(-gamma_h)) - 1), gamma_h
+end
+local function step_too_long()
+  local _, gamma_h = drag_step()
+  if gamma_h > 1 then return string.format("step too long for this drag: Γ·h = %.3g > 1", gamma_h) end
+end
+
 -- Friction includes the drag c·v + b·v² when a slider sets them: the table's whole answer.
 expect { "friction at the end", unit = "N",
-  predicted = function() return push_theory(ending()).friction end,
-  measured = function() local f = at_the_end("friction_force") return f and -f end,
-  tolerance = function() return 0.01 * push_theory(ending()).friction + 1e-3 end }
+  predicted = function() return out_of_reach() or push_theory(ending()).friction end,
+  measured = function()
+    if out_of_reach() then return out_of_reach() end
+    local f = at_the_end("friction_force")
+    return f and -f
+  end,
+  -- 1 %, 1 mN, and the drag's two step terms: the contact reads the mean over the step just
+  -- taken, half a step before the end, while the drag grows at f'(v)·v'; and it drags the
+  -- speed the drag step term above puts on the block, f'(v) times that.
+  tolerance = function()
+    local final = push_theory(ending())
+    local slope = param.c + 2 * param.b * final.speed  -- f'(v)
+    return 0.01 * final.friction + 1e-3 + slope * (math.abs(final.acceleration) * step_length() / 2 + drag_step())
+  end }
 
 expect { "speed at the end", unit = "m/s",
-  predicted = function() return push_theory(ending()).speed end,
-  measured = function() return at_the_end("speed") end,
-  tolerance = function() return 0.01 * push_theory(ending()).speed + 0.01 end }
+  predicted = function() return out_of_reach() or step_too_long() or push_theory(ending()).speed end,
+  measured = function() return out_of_reach() or step_too_long() or at_the_end("speed") end,
+  -- 1 %, 1 cm/s for the push sampled at the start of each step, and the drag's step term.
+  tolerance = function() return 0.01 * push_theory(ending()).speed + 0.01 + drag_step() end }

@@ -8,14 +8,15 @@
 
 local function throw()
   return theory.thrown_box { width = 0.4, height = 0.3, mass = param.mass, throw_speed = param.throw_speed,
-                             spin = param.spin, centre_height = 1, mu_k = param.mu_k }
+                             spin = param.spin, centre_height = 1, mu_k = param.mu_k, step = step_length() }
 end
 
 lesson {
   title = "Throw a box: does it slide or tumble?",
   question = "Why does a thrown box tumble when it lands, while a game's box that cannot turn slides to a halt?",
-  -- (At most 10 s: with no friction the locked box never stops.)
-  duration = function() return math.min(throw().locked_stop_time + 0.5, 10) end,
+  -- (At most 30 s, which the slowest stop on the floor, mu_k = 0.03 at 8 m/s (27 s, 110 m),
+  -- fits; with less friction the locked box's row says so.)
+  duration = function() return math.min(throw().locked_stop_time + 0.5, 30) end,
   order = 35,
   moments = {
     { "in_flight", at = 0.3, shows = function() return value_at("box_touches", time()) == 0 end },
@@ -71,18 +72,50 @@ expect { "landing time", unit = "s",
   tolerance = function() return step_length() end }
 
 -- Whether theory has the corner grip or slide (or the box land flat), throw().corner says; the
--- spin it leaves is what the class can see.
+-- spin it leaves is what the class can see. Where no single impact describes the first step on
+-- the floor, the row says why instead: the face's far end comes down within two steps of the
+-- corner (the stepped world meets both in one step), or the corner slides with friction so
+-- strong that Box2D's solver, which takes friction and the normal impulse in turns, settles too
+-- slowly: each turn leaves mu_k·|k_tn|/k_nn of the last one's error, and of its 8 turns the
+-- last 7 leave 0.5^7 < 1 % of the first one's (up to 12 rad/s) only while that ratio is at
+-- most 0.5.
+local function no_single_impact()
+  local t = throw()
+  if t.corner == "lands flat" then return nil end
+  if t.second_corner_after < 2 * step_length() then
+    return string.format("both corners of a face land within two steps (%.1f ms apart)", 1000 * t.second_corner_after)
+  end
+  if t.solver_swing > 0.5 then
+    return string.format("too much friction for the solver to settle: mu_k·|k_tn|/k_nn = %.2f > 0.5", t.solver_swing)
+  end
+end
 expect { "spin just after the impact", unit = "rad/s",
-  predicted = function() return throw().spin_after end,
-  measured = function() local i = first_impact() return i and history("box_spin")[i] end,
-  -- 5 %, and for the step: the box lands at the end of a step, within about spin·h of the exact
-  -- landing angle, and the impact's lever arm with it; that error is first order in the step
-  -- (at spin −20 rad/s: 1.0, 0.2 and 0.07 rad/s at 240, 960 and 3840 Hz), so spin²·h/2 is allowed.
-  tolerance = function() return 0.05 * math.abs(throw().spin_after - spin) + 0.05 + spin * spin * step_length() / 2 end }
-
-expect { "locked box: distance to rest", unit = "m",
-  predicted = function() return throw().locked_distance end,
+  predicted = function() return no_single_impact() or throw().spin_after end,
   measured = function()
+    local i = first_impact()
+    return i and (no_single_impact() or history("box_spin")[i])
+  end,
+  -- 5 %, and two step terms. The world meets the floor up to a step after the exact landing,
+  -- the box turned by up to spin·h, falling g·h faster and sunk into the gap, and the impact's
+  -- lever arm with it: what that does is theory's own answer for an impact a step late (at
+  -- 240 Hz 0.5 rad/s at the default spin, 1.1 at −20 rad/s and 1.2 at +3, where the corner
+  -- meets the floor at a glancing angle). And the spin is read at the end of the impact's step,
+  -- after up to a step of turning about the corner under gravity: pivot_acceleration·h.
+  tolerance = function()
+    local t = throw()
+    return 0.05 * math.abs(t.spin_after - spin) + 0.05 + math.abs(t.spin_after_a_step_late - t.spin_after)
+           + t.pivot_acceleration * step_length()
+  end }
+
+-- With no kinetic friction it never stops; with very little it stops after the run has ended.
+local function no_stop_to_see()
+  if throw().locked_stop_time == math.huge then return "never stops: no friction" end
+  if throw().locked_stop_time + 0.25 > 30 then return "stops after the run's 30 s" end
+end
+expect { "locked box: distance to rest", unit = "m",
+  predicted = function() return no_stop_to_see() or throw().locked_distance end,
+  measured = function()
+    if no_stop_to_see() then return no_stop_to_see() end
     return time() >= throw().locked_stop_time + 0.25 and value_at("locked_box_distance", time()) or nil
   end,
   tolerance = function() return 0.01 * throw().locked_distance + throw_speed * step_length() end }

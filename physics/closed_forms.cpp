@@ -430,24 +430,31 @@ SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, doub
   return {v0 * v0 / (2.0 * deceleration), v0 / deceleration, std::tan(angle) <= std::max(mu_s, mu_k)};
 }
 
-VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g) {
+VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g, int substeps) {
   const char* where = "velocity_hack";
   require_non_negative(where, "v0", v0);
   if (!(keep >= 0.0 && keep < 1.0)) reject(where, "keep", "in [0, 1)", keep);
   require_positive(where, "h", h);
   require_slope_angle(where, angle);
   require_positive(where, "g", g);
+  if (!(substeps >= 1 && substeps <= 1000)) reject(where, "substeps", "in [1, 1000]", substeps);
+  const double n = substeps;
   const double pull = g * std::sin(angle) * h;  // speed gravity takes away in a frame
-  // v_(k+1) = keep·(v_k − pull), and the frame moves the body h·(v_k − pull): v_k tends to
-  // v* = −keep·pull/(1 − keep), as v* + (v0 − v*)·keep^k.
-  const double drift = -keep * pull / (1.0 - keep);
+  // Frame k starts at u_k. Its n sub-steps each take pull/n off the speed and then move the
+  // body by h/n times the new speed: h·(u_k − lag·pull) in all, lag = (n + 1)/(2n). Then the
+  // cut: u_(k+1) = keep·(u_k − pull), which tends to u* = −keep·pull/(1 − keep), as
+  // u* + (u_0 − u*)·keep^k. The first frame starts from the velocity half a sub-step back (the
+  // scene's leapfrog start, v(−h/2) = v0 − (h/2)·a with a = −g·sin θ): u_0 = v0 + pull/(2n).
+  const double lag = (n + 1.0) / (2.0 * n), drift = -keep * pull / (1.0 - keep);
+  const double start = v0 + pull / (2.0 * n);
   if (pull == 0.0) return {h * v0 / (1.0 - keep), 0.0};
-  // Frames move it up while v_k > pull; sum those moves in closed form (a geometric series).
-  const double excess = v0 - drift, threshold = pull - drift;  // v_k − v* = excess·keep^k
-  if (excess <= threshold || keep == 0.0) return {std::max(0.0, h * (v0 - pull)), drift};
-  const double frames = std::floor(std::log(threshold / excess) / std::log(keep)) + 1.0;  // k with v_k > pull
+  // Frames move it up while u_k > lag·pull; sum those moves in closed form (a geometric series).
+  const double excess = start - drift, threshold = lag * pull - drift;  // u_k − u* = excess·keep^k
+  if (excess <= threshold) return {0.0, drift};
+  if (keep == 0.0) return {h * (start - lag * pull), drift};  // one frame up, then only down
+  const double frames = std::floor(std::log(threshold / excess) / std::log(keep)) + 1.0;  // k with u_k > lag·pull
   const double geometric = (1.0 - std::pow(keep, frames)) / (1.0 - keep);
-  return {h * (excess * geometric + frames * (drift - pull)), drift};
+  return {h * (excess * geometric + frames * (drift - lag * pull)), drift};
 }
 
 }  // namespace frictionlab::theory

@@ -160,12 +160,15 @@ SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, doub
 // The games' velocity hack of the tribology article: no friction at all, but each frame of
 // length h the velocity is multiplied by `keep` (1 − f) after the frame has moved the body
 // (which, on a slope, includes gravity's g·sin θ·h down the slope). Exact for that discrete
-// process: on the flat it goes h·v0/(1 − keep) in all, linear in v0 where friction's distance
-// grows as v0²; on any slope it never holds, but drifts down towards −keep·g·sin θ·h/(1 − keep).
+// process as the scene runs it: a frame of n sub-steps, each taking g·sin θ·h/n off the speed
+// before it moves the body h/n, and the first frame starting from v0 + g·sin θ·h/(2n) (the
+// scene's leapfrog start: the velocity half a sub-step before t = 0). On the flat it goes h·v0/(1 − keep) in all,
+// linear in v0 where friction's distance grows as v0²; on any slope it never holds, but drifts
+// down towards −keep·g·sin θ·h/(1 − keep).
 struct VelocityHack {
   double distance_up;  // m, the farthest it gets along its launch (the whole slide on the flat)
   double drift_speed;  // m/s up the slope that it tends to: 0 on the flat, negative on a slope
 };
-VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g);
+VelocityHack velocity_hack(double v0, double keep, double h, double angle, double g, int substeps = 1);
 
 }  // namespace frictionlab::theory

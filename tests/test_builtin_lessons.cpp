@@ -116,6 +116,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"push", {{"push_rate", "0.2"}}, ""}, Case{"push", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
                       Case{"push", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}, Case{"push", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
                       Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""},
+                      // The drag's step term: at c = 10 on 0.1 kg (Γh = 0.42) the speed runs 22 %
+                      // high; past Γh = 1 the row says the step is too long, in words.
+                      Case{"push", {{"c", "10"}, {"mass", "0.1"}}, ""},
+                      Case{"push", {{"c", "1000"}, {"mass", "0.1"}}, "step too long for this drag: Γ·h = 41.7 > 1"},
+                      // The friction row's step terms (a reading half a step old, the drag on the
+                      // step-raised speed), and a push that sends the block off the table's end.
+                      Case{"push", {{"mass", "10"}, {"b", "10"}, {"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"push", {{"mass", "0.1"}, {"push_rate", "50"}}, "off the table's end before the run ends"},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -125,6 +133,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"friction_models", {{"mass", "0.1"}}, ""},
                       Case{"friction_models", {{"mu_k", "0.05"}}, ""},
                       Case{"friction_models", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // The step's terms: strong drag (its split and leapfrog start), slides of a
+                      // few steps, and past Γh = 1 (a slide over in a few steps) words.
+                      Case{"friction_models", {{"c", "50"}, {"b", "50"}}, ""},
+                      Case{"friction_models", {{"c", "0.5"}, {"b", "0.5"}, {"launch_speed", "0.2"}, {"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      Case{"friction_models", {{"b", "50"}, {"mass", "0.1"}, {"launch_speed", "0.2"}}, ""},
+                      Case{"friction_models", {{"c", "0"}, {"b", "50"}, {"mass", "0.1"}, {"launch_speed", "5"}},
+                           "step too long for this drag: Γ·h = 20.8 > 1"},
                       // contact_area: doubling the mass doubles the breakaway pull on every face and
                       // foot count; light and heavy, slow and fast; mu_k above mu_s; no friction.
                       Case{"contact_area", {{"mass", "2"}}, ""}, Case{"contact_area", {{"mass", "0.1"}}, ""},
@@ -144,13 +159,34 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"thrown_box", {{"throw_speed", "8"}, {"mass", "20"}}, ""},
                       Case{"thrown_box", {{"mu_s", "0.1"}, {"mu_k", "0.05"}, {"spin", "-20"}}, ""},
                       Case{"thrown_box", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // Where the impact swaps which way the box turns (spin after from −4.3 to
+                      // +4.8 rad/s between −1.5 and −1): the skin's lever arm and the step term.
+                      Case{"thrown_box", {{"spin", "-1"}}, ""}, Case{"thrown_box", {{"spin", "-1.2"}}, ""},
+                      Case{"thrown_box", {{"spin", "-1.5"}}, ""}, Case{"thrown_box", {{"spin", "-1"}}, "", 3840},
+                      // Near a quarter turn both ends of a face land within two steps; thrown flat
+                      // with mu_k = 2 it pitches over its front edge; frictionless, the locked box
+                      // never stops; sliding on a corner with mu_k = 2 the solver cannot settle.
+                      Case{"thrown_box", {{"spin", "-4"}}, ""},
+                      Case{"thrown_box", {{"spin", "0"}, {"mu_s", "2"}, {"mu_k", "2"}, {"throw_speed", "8"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"thrown_box", {{"spin", "0.5"}, {"mu_s", "2"}, {"mu_k", "2"}, {"throw_speed", "8"}}, ""},
+                      Case{"thrown_box", {{"mu_s", "0.05"}, {"mu_k", "0.03"}, {"throw_speed", "8"}}, ""},
+                      // Met a step late the corner has sunk into the gap: the lever arm it is met at.
+                      Case{"thrown_box", {{"spin", "3"}, {"throw_speed", "3"}}, ""},
+                      Case{"thrown_box", {{"spin", "-0.5"}, {"mu_s", "1"}, {"mu_k", "1"}, {"throw_speed", "3"}}, ""},
                       // terrain: on slopes below and above every surface's sticking angle (ice's is
                       // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
                       // stickiest asphalt the sliders allow.
                       Case{"terrain", {{"slope", "3"}}, ""}, Case{"terrain", {{"slope", "15"}}, ""},
                       Case{"terrain", {{"slope", "30"}}, ""}, Case{"terrain", {{"launch_speed", "0.5"}}, ""},
                       Case{"terrain", {{"launch_speed", "5"}, {"slope", "10"}}, ""}, Case{"terrain", {{"mass", "10"}}, ""},
-                      Case{"terrain", {{"asphalt.mu_s", "2"}, {"asphalt.mu_k", "2"}, {"slope", "20"}}, ""}));
+                      Case{"terrain", {{"asphalt.mu_s", "2"}, {"asphalt.mu_k", "2"}, {"slope", "20"}}, ""},
+                      // A long slide on ice (22 m: the ramp grows for it), no friction on the flat
+                      // (never stops, in words), and on a steep slope at a coarse frame rate and
+                      // with sub-steps the hack's closed form holds exactly.
+                      Case{"terrain", {{"slope", "1"}, {"launch_speed", "5"}}, ""},
+                      Case{"terrain", {{"ice.mu_s", "0"}, {"ice.mu_k", "0"}}, ""},
+                      Case{"terrain", {{"slope", "30"}}, "", 60}, Case{"terrain", {}, "", 2}));
 
 TEST(BuiltinLessons, AreTheScriptsInTheFolderInTeachingOrder) {
   std::vector<std::string> files;

@@ -530,23 +530,32 @@ TEST(ClosedForms, SlopeLaunchHoldsUpToTheLargerCoefficient) {
   EXPECT_FALSE(slope_launch(3.0, std::atan(0.6), 0.3, 0.5, g).stays);
 }
 
-// The velocity hack against the discrete process itself, frame by frame.
+// The velocity hack against the discrete process itself, sub-step by sub-step, as the scene
+// runs it: the first frame from half a sub-step back (its leapfrog start), gravity before each
+// sub-step's move, the cut after each frame. On the flat the start and the sub-steps change
+// nothing; on a slope the old model (no half step, one step a frame) is 0.5 % off at 30°.
 TEST(ClosedForms, VelocityHackMatchesTheFramesItSums) {
-  for (const double angle : {0.0, 0.1, 0.35}) {
-    for (const double keep : {0.0, 0.5, 0.99}) {
-      const double h = 1.0 / 240.0, v0 = 3.0, pull = g * std::sin(angle) * h;
-      double x = 0.0, v = v0, farthest = 0.0;
-      for (int frame = 0; frame < 200000; ++frame) {
-        x += h * (v - pull);
-        v = keep * (v - pull);
-        farthest = std::max(farthest, x);
+  for (const int substeps : {1, 2, 3}) {
+    for (const double angle : {0.0, 0.1, 0.35, 0.5236}) {
+      for (const double keep : {0.0, 0.5, 0.99}) {
+        const double h = 1.0 / 240.0, v0 = 3.0, pull = g * std::sin(angle) * h / substeps;
+        double x = 0.0, v = v0 + 0.5 * pull, farthest = 0.0;  // v(−h/2) = v0 − (h/2)·(−g sin θ)
+        for (int frame = 0; frame < 200000; ++frame) {
+          for (int sub = 0; sub < substeps; ++sub) {
+            v -= pull;
+            x += h / substeps * v;
+          }
+          v *= keep;
+          farthest = std::max(farthest, x);
+        }
+        const VelocityHack hack = velocity_hack(v0, keep, h, angle, g, substeps);
+        EXPECT_NEAR(hack.distance_up, farthest, 1e-9 * std::max(1.0, farthest)) << angle << " " << keep << " " << substeps;
+        EXPECT_NEAR(hack.drift_speed, v, 1e-9) << angle << " " << keep << " " << substeps;
       }
-      const VelocityHack hack = velocity_hack(v0, keep, h, angle, g);
-      EXPECT_NEAR(hack.distance_up, farthest, 1e-9 * std::max(1.0, farthest)) << angle << " " << keep;
-      EXPECT_NEAR(hack.drift_speed, v, 1e-9) << angle << " " << keep;
     }
   }
   EXPECT_NEAR(velocity_hack(3.0, 0.99, 0.01, 0.0, g).distance_up, 0.01 * 3.0 / 0.01, 1e-9);
+  EXPECT_THROW(velocity_hack(3.0, 0.99, 0.01, 0.0, g, 0), InvalidInput);
 }
 
 }  // namespace

@@ -47,6 +47,26 @@ plot { "phase", x = "x", y = "vx" }
 // their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
 // the drag lane less far), the model card still sees every term, and moving the shared slider
 // rebuilds both lanes with the new value.
+TEST(LessonRuntime, APairsSlidersListMakesOnlyThoseAndTheOthersKeepTheScriptsValues) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, sliders = { "mu_s", "mu_k" } }
+local floor = ground { "floor", material = "ice" }
+box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_s"));
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_k"));
+  EXPECT_THROW(lesson.parameter("ice.c"), InvalidInput);
+  EXPECT_THROW(lesson.parameter("ice.b"), InvalidInput);
+  lesson.set("ice.mu_k", "0.07");  // live: the pair keeps its c
+  const FrictionPair& pair = lesson.scene().pairs().pair("wood", "ice");
+  EXPECT_EQ(pair.mu_k, 0.07);
+  EXPECT_EQ(pair.c, 2.0);
+  const ScriptFile wrong(with_heading("pair { \"wood\", \"ice\", mu_s = 0.1, mu_k = 0.05, sliders = { \"mu\" } }\n"));
+  EXPECT_NE(error_of([&] { Lesson broken(wrong.path()); }).find("sliders lists coefficients from mu_s, mu_k, c, b"),
+            std::string::npos);
+}
+
 TEST(LessonRuntime, PairsWithoutSlidersTakeTheScriptsValues) {
   ScriptFile script(with_heading(R"(
 local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 1 }
@@ -125,6 +145,89 @@ polygon { "wedge", material = "crate", points = { { 0, 0 }, { 0.5, 0 }, { 0, 0.3
   EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1 + resting_gap, 1e-4);
   EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1 + b2_polygonRadius - b2_linearSlop, 1e-4);
   EXPECT_NEAR(b2Dot(on_slope->GetPosition() - b2Vec2{2.0f, 0.5f}, along), 2.0, 1e-4);
+}
+
+// A block pushed with 8 N from rest across a floor that changes from wood (mu_k 0.3) to ice
+// (0.04) at x = 0. The speed follows the piecewise closed form v² = 2·a·d, a = (F − mu_k·m·g)/m,
+// on the wood until its front edge reaches the seam and on the ice from where its back edge
+// leaves it, and across the seam it never slows: friction there is shared between the two,
+// between mu_k(ice)·m·g and mu_k(wood)·m·g, and the floor stays level (no vertical speed, no
+// turning). Two boxes side by side instead jolt it at the seam (Box2D's ghost collision).
+struct SeamRun {
+  double worst_speed_error = 0.0, worst_vy = 0.0, worst_spin = 0.0, least_acceleration = 1e9, most_acceleration = -1e9;
+  bool crossed = false;  // wholly on the ice by the end
+};
+SeamRun push_across_the_seam(const std::string& floor) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+pair { "wood", "ice", mu_s = 0.08, mu_k = 0.04 }
+)" + floor + R"(
+local block = box { "block", material = "wood", width = 0.4, height = 0.3, on = wood_floor, at = start, mass = 2 }
+force { "push", on = block, force = function(t) return 8, 0 end }
+probe { "x", unit = "m", read = { block, "x" } }
+probe { "vx", unit = "m/s", read = { block, "vx" } }
+probe { "vy", unit = "m/s", read = { block, "vy" } }
+probe { "spin", unit = "rad/s", read = { block, "omega" } }
+)"));
+  Lesson lesson(script.path());
+  const double h = lesson.scene().frame_step(), m = 2.0, push = 8.0;
+  const double on_wood = (push - 0.3 * m * g) / m, on_ice = (push - 0.04 * m * g) / m;
+  SeamRun run;
+  double x1 = 0.0, v1 = 0.0, last_v = 0.0;
+  bool left_the_wood = false;
+  for (int i = 0; i < static_cast<int>(1.8 / h); ++i) {
+    lesson.step();
+    const double x = probe_now(lesson, "x") + 1.0, v = probe_now(lesson, "vx");  // x: from the start
+    run.worst_vy = std::max(run.worst_vy, std::abs(probe_now(lesson, "vy")));
+    run.worst_spin = std::max(run.worst_spin, std::abs(probe_now(lesson, "spin")));
+    const double front = x - 1.0 + 0.2, back = x - 1.0 - 0.2;
+    // vx belongs to the middle of the step, x to its end: v(x) is read half a step late.
+    if (front <= 0.0) {
+      run.worst_speed_error = std::max(run.worst_speed_error, std::abs(v - std::sqrt(2.0 * on_wood * x)));
+    } else if (back < 0.0) {
+      const double a = (v - last_v) / h;
+      run.least_acceleration = std::min(run.least_acceleration, a);
+      run.most_acceleration = std::max(run.most_acceleration, a);
+    } else {
+      if (!left_the_wood) left_the_wood = true, x1 = x, v1 = v;
+      run.worst_speed_error = std::max(run.worst_speed_error, std::abs(v - std::sqrt(v1 * v1 + 2.0 * on_ice * (x - x1))));
+    }
+    last_v = v;
+  }
+  run.crossed = left_the_wood;
+  return run;
+}
+
+TEST(LessonRuntime, AFloorOfStripsCarriesABoxAcrossItsSeamWithoutAJolt) {
+  const SeamRun strips = push_across_the_seam(
+      "local wood_floor = ground { \"floor\", strips = { { \"wood\", to = 0 }, { \"ice\" } } }\nlocal start = -1");
+  const double h = 1.0 / 240.0, on_wood = (8.0 - 0.3 * 2.0 * g) / 2.0, on_ice = (8.0 - 0.04 * 2.0 * g) / 2.0;
+  EXPECT_TRUE(strips.crossed);
+  // v(x) read half a step late: off by at most a·h/2 (a <= 3.6 m/s²), 7.5 mm/s.
+  EXPECT_LT(strips.worst_speed_error, on_ice * h / 2.0);
+  EXPECT_LT(strips.worst_vy, 1e-4);
+  EXPECT_LT(strips.worst_spin, 1e-3);
+  EXPECT_GE(strips.least_acceleration, on_wood - 1e-3);
+  EXPECT_LE(strips.most_acceleration, on_ice + 1e-3);
+  const SeamRun boxes = push_across_the_seam(
+      "local wood_floor = box { \"wood_floor\", material = \"wood\", kind = \"static\", width = 10, height = 0.5, x = -5, y = -0.25 }\n"
+      "box { \"ice_floor\", material = \"ice\", kind = \"static\", width = 10, height = 0.5, x = 5, y = -0.25 }\nlocal start = 4");
+  EXPECT_GT(boxes.worst_vy, 0.1) << "two boxes side by side no longer snag: the guide's advice on strips can go";
+}
+
+TEST(LessonRuntime, AFloorOfStripsRefusesStripsOutOfOrder) {
+  const auto message = [](const std::string& strips) {
+    const ScriptFile script(with_heading("ground { \"floor\", strips = " + strips + " }\n"));
+    return error_of([&] { Lesson lesson(script.path()); });
+  };
+  EXPECT_NE(message("{ { \"wood\", to = 1 }, { \"ice\", to = 0.5 }, { \"wood\" } }").find(
+                "ground 'floor': strips[2] 'ice': to = 0.5 m is outside the allowed range [1.02, 199.98]"),
+            std::string::npos) << message("{ { \"wood\", to = 1 }, { \"ice\", to = 0.5 }, { \"wood\" } }");
+  EXPECT_NE(message("{ { \"wood\", to = 1 }, { \"ice\", to = 5 } }").find("strips[2]: the last strip runs to the floor's right end"),
+            std::string::npos);
+  EXPECT_NE(message("{ { \"wood\" }, { \"ice\" } }").find("strips[1]: to = where this strip ends (x in m) is missing"),
+            std::string::npos);
+  EXPECT_NE(message("{ }").find("strips lists 1 to 16 strips"), std::string::npos);
 }
 
 TEST(LessonRuntime, ForcesConstantAndFunctionsOfTimeAccelerateAFrictionlessBlock) {
@@ -403,6 +506,23 @@ expect { "tight", unit = "N", predicted = 10, measured = 10.4, tolerance = 0.3 }
   EXPECT_NEAR(rows[1].error(), 0.4, 1e-12);
   EXPECT_EQ(rows[1].unit, "N");
   EXPECT_FALSE(rows[2].passes);
+}
+
+TEST(LessonRuntime, AWordFromMeasuredInANumberRowIsNotMeasuredYetAndSaysWhy) {
+  ScriptFile script(with_heading(R"(
+expect { "distance", unit = "m", predicted = 0.5, tolerance = 0.01,
+  measured = function() if time() < 0.2 then return "still sliding" end return 0.5 end }
+)"));
+  Lesson lesson(script.path());
+  std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].numeric);
+  EXPECT_FALSE(rows[0].measured_yet);
+  EXPECT_EQ(rows[0].measured_text, "still sliding");
+  EXPECT_FALSE(rows[0].passes);
+  run_for(lesson, 0.5);
+  rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].measured_yet);
+  EXPECT_TRUE(rows[0].passes);
 }
 
 TEST(LessonRuntime, TheoryInScriptsIsTheTheoryTheTestsCheck) {

@@ -369,6 +369,11 @@ std::vector<ExpectationResult> Lesson::expectations() {
       row.measured_text = "not measured";
     } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
       row.measured = lua_tonumber(state, -1);
+    } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
+      // A word where a number is due says why there is no number yet ("still sliding"): the
+      // row is not measured, and shows the word instead of "not measured".
+      row.measured_yet = false;
+      row.measured_text = lua_tostring(state, -1);
     } else if (!row.numeric && (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN)) {
       row.measured_text = luaL_tolstring(state, -1, nullptr);
       lua_pop(state, 1);
@@ -405,7 +410,8 @@ void Lesson::set(const std::string& name, const std::string& text) {
   if (!changed.structural && !changed.coefficient.empty()) {
     // A coefficient the script reads only while running: the pair table changes under the
     // running lesson, as a teacher moving a slider expects.
-    FrictionPair values;
+    // From the pair as it is: a coefficient with no slider of its own keeps the script's value.
+    FrictionPair values = scene().pairs().pair(changed.material_a, changed.material_b);
     for (const Parameter& sibling : current_->parameters) {
       if (sibling.material_a != changed.material_a || sibling.material_b != changed.material_b) continue;
       const double v = &sibling == &changed ? value : sibling.value;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 #include "lessons/runtime/build.h"
 #include "physics/scenarios.h"
@@ -195,10 +196,12 @@ constexpr Coefficient coefficients[] = {
 }  // namespace
 
 FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
-                                  const std::string& prefix, const std::string& declared_at) {
+                                  const std::string& prefix, const std::string& declared_at,
+                                  const std::set<std::string>& only) {
   double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
   for (int i = 0; i < 4; ++i) {
     const Coefficient& coefficient = coefficients[i];
+    if (!only.empty() && only.count(coefficient.key) == 0) continue;  // the script keeps this one
     Parameter declared;
     declared.name = prefix + coefficient.key;
     declared.unit = coefficient.unit;
@@ -348,9 +351,36 @@ int pair(lua_State* state) {
       return 0;
     }
     // sliders = false: the script fixes the values itself (from parameters of its own, say, when
-    // one slider must drive several pairs), so the pair makes no parameters.
-    if (fields.flag("sliders").value_or(true)) {
-      values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state));
+    // one slider must drive several pairs), so the pair makes no parameters. A list of
+    // coefficients makes sliders for those only (terrain's surfaces offer mu_s and mu_k, not
+    // the c and b its theory leaves out); the others keep the script's values.
+    std::set<std::string> only;
+    bool with_sliders = true;
+    if (fields.has("sliders")) {
+      fields.push("sliders");
+      if (lua_istable(state, -1)) {
+        const lua_Integer count = luaL_len(state, -1);
+        for (lua_Integer i = 1; i <= count; ++i) {
+          lua_rawgeti(state, -1, i);
+          const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
+          const std::string word = key ? key : describe(state, -1);
+          lua_pop(state, 1);
+          if (key == nullptr || (word != "mu_s" && word != "mu_k" && word != "c" && word != "b")) {
+            lua_pop(state, 1);
+            throw InvalidInput("pair " + label + ": sliders lists coefficients from mu_s, mu_k, c, b, as in sliders = "
+                               "{ \"mu_s\", \"mu_k\" }; got " + word);
+          }
+          only.insert(word);
+        }
+        lua_pop(state, 1);
+        if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
+      } else {
+        lua_pop(state, 1);
+        with_sliders = fields.flag("sliders").value_or(true);
+      }
+    }
+    if (with_sliders) {
+      values = declare_coefficients(build, names[0], names[1], values, prefix, caller(state), only);
     } else {
       if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with sliders = false it has none");
       build.fixed_pairs.emplace_back(names[0], names[1]);

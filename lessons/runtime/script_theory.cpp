@@ -2,7 +2,10 @@
 // same answers the tests check. Arguments are named (theory.tip_height{ width = 0.5,
 // mu_s = 0.5 }); angles are in degrees, as everywhere in scripts; g defaults to 9.81 m/s².
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <string>
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
@@ -233,7 +236,7 @@ int growing_push(lua_State* state) {
 int thrown_box(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
-                                                  "centre_height", "mu_k", "restitution", "g", "clearance"});
+                                                  "centre_height", "mu_k", "restitution", "g", "clearance", "step"});
     const double width = fields.number("width", "m"), height = fields.number("height", "m");
     const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
     const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
@@ -241,25 +244,96 @@ int thrown_box(lua_State* state) {
     const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
     // Box2D's polygons touch when their cores are two skins apart.
     const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
+    const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
+    constexpr double infinity = std::numeric_limits<double>::infinity();
     const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
     const double inertia = mass * (width * width + height * height) / 12.0;
-    // Landing flat, the face's two ends share the impact and their loads shift to keep the box
-    // from pitching: no lever arm, as for the locked box (its spin is then unchanged).
-    const theory::CornerImpact impact =
-        landing.flat ? theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * landing.time, spin, mu_k, restitution)
-                     : theory::corner_impact(mass, inertia, landing.corner_x, landing.corner_y, speed, -g * landing.time,
-                                             spin, mu_k, restitution);
+    // The face the box lands on: the landing corner and the far end of that face (the
+    // second-lowest corner), how much higher that end is, and where it is from the centre.
+    double rise = infinity, far_x = 0.0, far_y = 0.0;
+    {
+      const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+      for (const double sx : {-0.5, 0.5}) {
+        for (const double sy : {-0.5, 0.5}) {
+          const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
+          const bool landing_corner = std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12;
+          if (!landing_corner && y - landing.corner_y < rise) rise = y - landing.corner_y, far_x = x, far_y = y;
+        }
+      }
+    }
+    // An impact on one corner (rx, ry from the centre, world axes), `late` s after the landing,
+    // its lever arm turned with the box. The contact point is where the two skins meet, half the
+    // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
+    // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
+    // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
+    // middle of what is left of the gap, where the point is, has risen by half that.
+    const auto impact_on = [&](double rx, double ry, double late) {
+      const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
+      const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
+      return theory::corner_impact(mass, inertia, c * rx - s * ry, s * rx + c * ry - 0.5 * (clearance - sunk), speed,
+                                   -g * (landing.time + late), spin, mu_k, restitution);
+    };
+    // Landing flat, the face's two ends share the impact, and their loads shift to keep the box
+    // from pitching (no lever arm: its spin is unchanged), unless friction's moment about the
+    // front end is more than the weight of the impact can hold: then the front end takes it
+    // alone and the rear end lifts.
+    std::string corner = "lands flat";
+    theory::CornerImpact impact{};
+    double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
+    if (landing.flat) {
+      const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
+      const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
+      const double rear_x = landing_leads ? far_x : landing.corner_x;
+      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0);
+      if (front.vy + front.omega * rear_x > 0.0) {
+        impact = front;
+        corner = "pitches over its front edge";
+        hit_x = front_x, hit_y = front_y;
+      } else {
+        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * landing.time, spin, mu_k, restitution);
+      }
+    } else {
+      impact = impact_on(landing.corner_x, landing.corner_y, 0.0);
+      corner = impact.grips ? "grips" : "slides";
+    }
+    const bool on_a_corner = corner != "lands flat";
+    // The far end comes down too soon after the impact (falling at the impact's end speed, and
+    // under gravity): within a step or two a stepped world meets both corners in one step, and
+    // no single-corner impact describes what it shows.
+    const double far_speed = -(impact.vy + impact.omega * far_x);  // downward, m/s
+    const double far_root = far_speed + std::sqrt(far_speed * far_speed + 2.0 * g * rise);
+    const double second_corner = !on_a_corner || landing.flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
+    // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
+    // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
+    // corner moves it; k_tn couples sliding to falling).
+    double swing = 0.0, pivot = 0.0;
+    if (on_a_corner) {
+      const double rx = hit_x, ry = hit_y - 0.5 * clearance;
+      if (!impact.grips) swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
+      // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
+      // inertia about the corner: how fast the spin changes there, rad/s².
+      pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
+    }
+    // A stepped world meets the floor up to a step after the exact landing, turned and falling
+    // further: the spin that impact leaves (spin_after itself when step = 0 or it lands flat).
+    const double late = !on_a_corner ? impact.omega
+                        : landing.flat ? impact.omega
+                                       : impact_on(landing.corner_x, landing.corner_y, step).omega;
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
     const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * flat.time, 0.0, mu_k,
                                                              restitution);
-    const double slide = mu_k > 0.0 ? lands.vx * lands.vx / (2.0 * mu_k * g) : std::numeric_limits<double>::infinity();
-    lua_createtable(state, 0, 10);
+    const double slide = mu_k > 0.0 ? lands.vx * lands.vx / (2.0 * mu_k * g) : infinity;
+    lua_createtable(state, 0, 14);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_angle", landing.angle / degrees);
-    lua_pushstring(state, landing.flat ? "lands flat" : impact.grips ? "grips" : "slides");
+    lua_pushstring(state, corner.c_str());
     lua_setfield(state, -2, "corner");
     set_number(state, "spin_after", impact.omega);
+    set_number(state, "spin_after_a_step_late", late);
+    set_number(state, "pivot_acceleration", pivot);
+    set_number(state, "second_corner_after", second_corner);
+    set_number(state, "solver_swing", swing);
     set_number(state, "vx_after", impact.vx);
     set_number(state, "vy_after", impact.vy);
     set_number(state, "locked_landing_time", flat.time);
@@ -287,10 +361,17 @@ int slope_launch(lua_State* state) {
 
 int velocity_hack(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g"});
+    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g", "substeps"});
+    // The frame's sub-steps, as the run takes them unless the script says otherwise.
+    const double run_substeps = build_of(state).scene->settings().substeps;
+    const double substeps = fields.number_in("substeps", "", run_substeps, 1.0, 1000.0);
+    if (substeps != std::floor(substeps)) {
+      throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
+    }
     const theory::VelocityHack hack = theory::velocity_hack(
         fields.number("v0", "m/s"), fields.number("keep", ""), fields.number("step", "s"),
-        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity));
+        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity),
+        static_cast<int>(substeps));
     lua_createtable(state, 0, 2);
     set_number(state, "distance_up", hack.distance_up);
     set_number(state, "drift_speed", hack.drift_speed);

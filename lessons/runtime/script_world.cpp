@@ -163,20 +163,109 @@ std::vector<const b2Fixture*> add_feet(Scene& scene, b2Body* body, const std::st
   return made;
 }
 
+// A floor of several materials side by side: strips = { { "wood", to = 1.5 }, { "ice" } }, each
+// strip from where the one before ends (the first from the left end) to its `to` (the last to
+// the right end). Box2D snags a box sliding across the seam of two boxes side by side on the
+// second one's corner (its "ghost collision"), so each strip's surface is a one-sided edge
+// whose ghost vertices run on level past both its ends: the box meets a flat floor all the
+// way, and each strip has its own material. Beneath each edge, a box of the strip's material
+// that collides with nothing shows the floor's thickness.
+struct Strip {
+  std::string material;
+  float from, to;
+};
+
+std::vector<Strip> read_strips(lua_State* state, Fields& fields, LessonBuild& build, float half_width) {
+  fields.push("strips");
+  const std::string what = fields.what() + ": strips";
+  const lua_Integer count = lua_istable(state, -1) ? luaL_len(state, -1) : 0;
+  if (count < 1 || count > 16) {
+    lua_pop(state, 1);
+    throw InvalidInput(what + " lists 1 to 16 strips from left to right, as in strips = { { \"wood\", to = 1.5 }, "
+                       "{ \"ice\" } }");
+  }
+  std::vector<Strip> strips;
+  float from = -half_width;
+  for (lua_Integer i = 1; i <= count; ++i) {
+    lua_rawgeti(state, -1, i);
+    const std::string which = what + "[" + std::to_string(i) + "]";
+    if (!lua_istable(state, -1)) {
+      lua_pop(state, 2);
+      throw InvalidInput(which + " must be a table, as in { \"ice\", to = 3 }");
+    }
+    Fields strip(state, lua_gettop(state), which, {"to"});
+    lua_rawgeti(state, -1, 1);
+    const bool named = lua_type(state, -1) == LUA_TSTRING;
+    const std::string material = named ? lua_tostring(state, -1) : "";
+    lua_pop(state, 1);
+    if (!named) {
+      lua_pop(state, 2);
+      throw InvalidInput(which + " names its material first, as in { \"ice\", to = 3 }");
+    }
+    build.use_material(material);
+    const bool last = i == count;
+    if (last && strip.has("to")) {
+      lua_pop(state, 2);
+      std::ostringstream message;
+      message << which << ": the last strip runs to the floor's right end, " << half_width << " m; give it no to";
+      throw InvalidInput(message.str());
+    }
+    float to = half_width;
+    if (!last) {
+      if (!strip.has("to")) {
+        lua_pop(state, 2);
+        throw InvalidInput(which + ": to = where this strip ends (x in m) is missing");
+      }
+      // At least 2 cm wide, as any body; and ending before the floor does.
+      to = static_cast<float>(strip.number_in("to", "m", from + 0.02, half_width - 0.02));
+    }
+    strips.push_back({material, from, to});
+    from = to;
+    lua_pop(state, 1);
+  }
+  lua_pop(state, 1);
+  return strips;
+}
+
 int ground(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "ground");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "ground", {"material", "y", "thickness"});
+    Fields fields(state, 1, "ground", {"material", "y", "thickness", "strips"});
     lua_rawgeti(state, 1, 1);
     const std::string name = lua_type(state, -1) == LUA_TSTRING ? fields.name() : "ground";
     lua_pop(state, 1);
-    const std::string material = required_material(build, fields);
     const float top = static_cast<float>(fields.number("y", "m", 0.0));
     // Thinner grounds let lanes stack close together (one block above another's floor).
     constexpr float width = 400.0f;
     const float thickness = static_cast<float>(fields.number_in("thickness", "m", 1.0, 0.02, 2.0));
-    b2Body* body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
+    b2Body* body = nullptr;
+    if (fields.has("strips")) {
+      if (fields.has("material")) throw InvalidInput(fields.what() + ": give material or strips, not both");
+      const std::vector<Strip> strips = read_strips(state, fields, build, 0.5f * width);
+      b2BodyDef definition;
+      definition.type = b2_staticBody;
+      definition.position = {0.0f, top - 0.5f * thickness};
+      body = build.scene->add_body(name, definition);
+      const float surface = 0.5f * thickness;  // the top, in the body's own coordinates
+      for (const Strip& strip : strips) {
+        // Right to left, so that the one-sided edge faces up (Box2D: its normal points to the
+        // right looking from v1 to v2); the ghost vertices continue the level floor both ways.
+        b2EdgeShape edge;
+        edge.SetOneSided({strip.to + 1.0f, surface}, {strip.to, surface}, {strip.from, surface},
+                         {strip.from - 1.0f, surface});
+        build.scene->add_fixture(body, edge, strip.material);
+        b2PolygonShape slab;
+        slab.SetAsBox(0.5f * (strip.to - strip.from), 0.5f * thickness, {0.5f * (strip.from + strip.to), 0.0f}, 0.0f);
+        b2Fixture* shown = build.scene->add_fixture(body, slab, strip.material);
+        b2Filter nothing;
+        nothing.maskBits = 0;  // drawn, never touched: the edge above it is the surface
+        shown->SetFilterData(nothing);
+      }
+    } else {
+      const std::string material = required_material(build, fields);
+      body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
+    }
     // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
     push_body(state, body, true, {-0.5f * width, top}, {1.0f, 0.0f}, width);
     return 1;
