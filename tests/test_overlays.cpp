@@ -120,6 +120,24 @@ box { "block", material = "wood", width = 0.4, height = 0.2, on = slope, at = 1,
   EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 160.0f);
 }
 
+// A floor of strips (edges with a slab under each, none wide alone) is ground as a whole: left
+// out of the framing, which then covers the box alone.
+TEST(Overlays, AFloorOfStripsIsGround) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+pair { "wood", "ice", mu_s = 0.1, mu_k = 0.05 }
+local floor = ground { "floor", strips = { { "wood", to = 1 }, { "ice", to = 4 }, { "wood" } } }
+box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0, mass = 1 }
+)"));
+  lessons::Lesson lesson(script.path());
+  const Scene& scene = lesson.scene();
+  for (const b2Fixture* f = scene.body("floor")->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+    EXPECT_TRUE(is_ground(f));
+  }
+  const b2AABB bounds = lesson_bounds(scene);
+  EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 0.5f);
+}
+
 // A box tipping over its front edge: the floor's push has moved to that edge, which is where
 // the normal arrow starts.
 TEST(Overlays, NormalForceActsAtTheFrontEdgeOfATippingBox) {

@@ -18,11 +18,18 @@ void grow(b2AABB& box, bool& empty, b2Vec2 p) {
 }  // namespace
 
 bool is_ground(const b2Fixture* fixture) {
-  if (fixture->GetBody()->GetType() != b2_staticBody || fixture->GetType() != b2Shape::e_polygon) return false;
-  const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
-  const b2AABB& box = fixture->GetAABB(0);
+  // Judged on the whole body: a floor of strips (ground{ strips = ... }) is level edges with a
+  // slab under each, none of them wide alone.
+  const b2Body* body = fixture->GetBody();
+  if (body->GetType() != b2_staticBody) return false;
+  b2AABB box = body->GetFixtureList()->GetAABB(0);
+  for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+    const bool slab = f->GetType() == b2Shape::e_polygon && static_cast<const b2PolygonShape*>(f->GetShape())->m_count == 4;
+    if (!slab && f->GetType() != b2Shape::e_edge) return false;
+    box.Combine(f->GetAABB(0));
+  }
   const float width = box.upperBound.x - box.lowerBound.x, height = box.upperBound.y - box.lowerBound.y;
-  return shape.m_count == 4 && width > 100.0f && height <= 2.0f + 2.0f * b2_polygonRadius;
+  return width > 100.0f && height <= 2.0f + 2.0f * b2_polygonRadius;
 }
 
 b2AABB lesson_bounds(const Scene& scene) {

@@ -80,7 +80,8 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
   const float thickness = (driven ? 3.0f : 1.5f) * fonts.scale;
   for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
     if (is_ground(fixture)) {
-      draw_ground(draw, scene, fixture, camera, theme);
+      // A strip's edge is its surface; the slab under it is what is drawn.
+      if (fixture->GetType() != b2Shape::e_edge) draw_ground(draw, scene, fixture, camera, theme);
       continue;
     }
     const ImU32 fill = fixture_colour(scene, fixture, theme);
