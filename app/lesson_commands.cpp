@@ -206,9 +206,31 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
 }
 
 int run_check(const std::vector<std::string>& args, std::ostream& out) {
-  std::vector<std::string> names = args;
-  for (const std::string& name : names) {
-    if (name.rfind("--", 0) == 0) throw InvalidInput("check takes lessons only, got the option '" + name + "'");
+  // Lessons, and the values and step settings to check them at (a student checks a threshold
+  // from both sides: check my_lesson.lua --set launch_speed=2.4).
+  std::vector<std::string> names;
+  std::map<std::string, std::string> overrides;
+  StepSettings settings;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      names.push_back(arg);
+      continue;
+    }
+    static const std::string known[] = {"--hz", "--substeps", "--friction", "--set"};
+    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
+      throw InvalidInput("check: unknown option '" + arg + "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T");
+    }
+    if (i + 1 >= args.size()) throw InvalidInput("check: " + arg + " needs a value; see frictionlab help");
+    const std::string& value = args[++i];
+    if (arg == "--set") {
+      add_override(value, overrides);
+    } else {
+      step_option(arg, value, settings);  // --hz, --substeps or --friction
+    }
+  }
+  if (names.empty() && !overrides.empty()) {
+    throw InvalidInput("check: --set names a parameter of one lesson; name the lesson too, as in check push --set mass=2");
   }
   if (names.empty()) names = lessons::builtin_lessons();
   // Every lesson is checked even when one cannot be run: a broken script is reported and the
@@ -216,7 +238,7 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
   int failed_lessons = 0, broken_lessons = 0;
   for (const std::string& name : names) {
     try {
-      Lesson lesson(lessons::resolve_lesson(name));
+      Lesson lesson(lessons::resolve_lesson(name), overrides, settings);
       out << "== " << name << ": ";
       print_heading(lesson, out);
       if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
