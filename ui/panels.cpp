@@ -99,39 +99,79 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
       end_panel();
       return;
     }
+    // Each row's three cells as text, so the layout can be chosen from their widths.
+    struct Cells {
+      std::string predicted, measured, error;
+      bool measured_yet, passes;
+    };
+    std::vector<Cells> cells;
+    float widest[3] = {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
+                       ImGui::CalcTextSize("error").x};
+    for (const lessons::ExpectationResult& row : rows) {
+      Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "", row.measured_yet,
+                 row.passes};
+      if (row.measured_yet) {
+        cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
+        if (row.numeric) {
+          // The unit is in the columns beside it; here it would push the names into wrapping.
+          std::string number = with_unit(row.error(), "");
+          number.pop_back();
+          cell.error = (row.passes ? "\u2713 " : "\u2717 ") + std::string(row.error() > 0.0 ? "+" : "") + number;
+        } else {
+          cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
+        }
+      }
+      widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
+      widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
+      widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
+      cells.push_back(std::move(cell));
+    }
+    const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
+    const float numbers = widest[0] + widest[1] + widest[2] + 3.0f * padding;
+    // Beside the numbers, a name needs room for a word or two; with large text in a narrow
+    // column there is none, and each name goes on a line of its own above its numbers.
+    const bool names_above = ImGui::GetContentRegionAvail().x - numbers < 9.0f * ImGui::CalcTextSize("m").x;
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
-    if (ImGui::BeginTable("rows", 4, flags)) {
+    // A name above its numbers spans the row: the cells must not clip it.
+    if (ImGui::BeginTable("rows", names_above ? 3 : 4, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
       // The numbers keep their width; a long name wraps.
-      ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-      ImGui::TableSetupColumn("predicted");
-      ImGui::TableSetupColumn("measured");
-      ImGui::TableSetupColumn("error");
+      if (names_above) {
+        // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
+        ImGui::TableSetupColumn("predicted", ImGuiTableColumnFlags_WidthFixed, widest[0]);
+        ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
+        ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthStretch);
+      } else {
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("predicted");
+        ImGui::TableSetupColumn("measured");
+        ImGui::TableSetupColumn("error");
+      }
       ImGui::TableHeadersRow();
-      for (const lessons::ExpectationResult& row : rows) {
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        const Cells& cell = cells[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", row.name.c_str());
+        if (names_above) {
+          // The name across the whole row: drawn from the first cell, wrapped at the table's edge.
+          ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x + numbers);
+          ImGui::TextUnformatted(rows[i].name.c_str());
+          ImGui::PopTextWrapPos();
+          ImGui::TableNextRow();
+          ImGui::TableNextColumn();
+        } else {
+          ImGui::TextWrapped("%s", rows[i].name.c_str());
+          ImGui::TableNextColumn();
+        }
+        ImGui::TextUnformatted(cell.predicted.c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.numeric ? with_unit(row.predicted, row.unit).c_str() : row.predicted_text.c_str());
-        ImGui::TableNextColumn();
-        if (!row.measured_yet) {
+        if (!cell.measured_yet) {
           ImGui::TextDisabled("not yet");
           ImGui::TableNextColumn();
           continue;
         }
-        ImGui::TextUnformatted(row.numeric ? with_unit(row.measured, row.unit).c_str() : row.measured_text.c_str());
+        ImGui::TextUnformatted(cell.measured.c_str());
         ImGui::TableNextColumn();
-        const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(row.passes ? theme.good : theme.bad);
-        if (row.numeric) {
-          const std::string sign = row.error() > 0.0 ? "+" : "";
-          // The unit is in the columns beside it; here it would push the names into wrapping.
-          std::string number = with_unit(row.error(), "");
-          number.pop_back();
-          const std::string text = (row.passes ? "\u2713 " : "\u2717 ") + sign + number;
-          ImGui::TextColored(colour, "%s", text.c_str());
-        } else {
-          ImGui::TextColored(colour, "%s", row.passes ? "\u2713 agrees" : "\u2717 differs");
-        }
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.error.c_str());
       }
       ImGui::EndTable();
     }
