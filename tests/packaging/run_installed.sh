@@ -56,7 +56,7 @@ if [[ ${1:-} == --inside ]]; then
   FRICTIONLAB_LESSONS="$work/run/own" "$frictionlab" list --tsv | cut -f1 > own.txt
   [[ $(cat own.txt) == my_copy ]] || fail "FRICTIONLAB_LESSONS=own: list gives $(tr '\n' ' ' < own.txt)"
 
-  echo "ok: $frictionlab (version $("$frictionlab" --version | cut -d' ' -f2)): $count lessons listed from $lessons, check passes, $name rendered at its moment $moment; hidden: $*"
+  echo "ok: $frictionlab (version $("$frictionlab" --version | cut -d' ' -f2)): $count lessons listed from $lessons, check passes, $name rendered at its moment $moment; out of reach: ${*:-nothing (no mount namespace here)}"
   exit 0
 fi
 
