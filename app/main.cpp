@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/install_paths.h"
 #include "app/modes.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
@@ -36,15 +37,23 @@ const char* const usage =
     "                                            the cheapest setting whose run of the lesson meets its\n"
     "                                            table within X times the rows' tolerances at 240 Hz\n"
     "                                            (1: the table passes; 0.1: ten times tighter; measured\n"
-    "                                            now; exit 1 if none does)\n";
+    "                                            now; exit 1 if none does)\n"
+    "       frictionlab help | --help | -h       this text\n"
+    "       frictionlab --version                the version\n"
+    "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing, or\n"
+    "bench --recommend found no setting; 2 bad input (the message names what and where) or the\n"
+    "program could not finish.\n"
+    "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
+    "More in the manual: man frictionlab\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
+    frictionlab::use_installed_lessons();
     const std::string command = args.empty() ? "" : args[0];
-    static const char* const commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help"};
+    static const char* const commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help", "--version"};
     // Anything but a command is a lesson (a name or a .lua file) or the window's options.
     const bool a_command = std::find(std::begin(commands), std::end(commands), command) != std::end(commands);
     const bool looks_like_lesson = command.empty() || command.rfind("--", 0) == 0 ||
@@ -61,6 +70,11 @@ int main(int argc, char** argv) {
     if (command == "check") return frictionlab::run_check(rest, std::cout);
     if (command == "render") return frictionlab::run_render(rest, std::cout);
     if (command == "bench") return frictionlab::run_bench(rest, std::cout);
+    if (command == "--version") {
+      if (!rest.empty()) throw frictionlab::InvalidInput("--version takes no options, got '" + rest[0] + "'");
+      std::cout << "frictionlab " FRICTIONLAB_VERSION "\n";
+      return 0;
+    }
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << usage;
       return 0;
@@ -68,7 +82,7 @@ int main(int argc, char** argv) {
     std::string lessons;
     for (const std::string& name : frictionlab::lessons::builtin_lessons()) lessons += name + ", ";
     std::cerr << "frictionlab: unknown command '" << command
-              << "'; commands: list, run, check, render, demo, bench, help; or a lesson to open in the window: " << lessons
+              << "'; commands: list, run, check, render, demo, bench, help, --version; or a lesson to open in the window: " << lessons
               << "or a .lua file\n";
     return 2;
   } catch (const frictionlab::InvalidInput& error) {

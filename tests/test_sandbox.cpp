@@ -264,6 +264,26 @@ TEST(Sandbox, ShortcutsAreOffWhileADialogIsOpen) {
   EXPECT_FALSE(driver.playback().playing());
 }
 
+// A student's copy saved in their lessons folder ($XDG_DATA_HOME/frictionlab/lessons) is in the
+// Lesson menu, and a click on it opens that file.
+TEST(Sandbox, TheLessonMenuListsAndOpensTheStudentsOwnLessons) {
+  const std::filesystem::path data = std::filesystem::temp_directory_path() / ("frictionlab_xdg_" + std::to_string(::getpid()));
+  const std::filesystem::path own = data / "frictionlab" / "lessons" / "my_slope.lua";
+  std::filesystem::create_directories(own.parent_path());
+  std::filesystem::copy_file(lessons::resolve_lesson("incline"), own, std::filesystem::copy_options::overwrite_existing);
+  ::setenv("XDG_DATA_HOME", data.c_str(), 1);
+  {
+    Driver driver("spring_pull");
+    driver.frame();
+    driver.click("Lesson menu");
+    driver.frame();
+    driver.click("user lesson my_slope");
+    EXPECT_EQ(driver.lesson().path(), own.string());
+  }
+  ::unsetenv("XDG_DATA_HOME");
+  std::filesystem::remove_all(data);
+}
+
 TEST(Sandbox, ResetRestoresTheInitialState) {
   Driver driver("tipping_box");
   driver.frame();

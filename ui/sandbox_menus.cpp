@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/catalog.h"
 #include "ui/sandbox.h"
+#include "ui/user_lessons.h"
 
 namespace frictionlab::ui {
 void Sandbox::menu_bar() {
@@ -21,6 +22,17 @@ void Sandbox::menu_bar() {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       const bool current = lesson_name(playback_->lesson().path()) == entry.name;
       if (ImGui::MenuItem(entry.title.c_str(), entry.name.c_str(), current, may_switch)) status_ = open(entry.name);
+    }
+    // The student's own folder, read each time the menu is drawn, so a copy saved there shows at once.
+    const std::vector<UserLesson> own = user_lessons();
+    if (!own.empty()) {
+      ImGui::Separator();
+      ImGui::TextDisabled("Your lessons, in %s", user_lessons_folder().c_str());
+      for (const UserLesson& lesson : own) {
+        const bool current = playback_->lesson().path() == lesson.path;
+        if (ImGui::MenuItem(lesson.name.c_str(), nullptr, current, may_switch)) status_ = open(lesson.path);
+        remember("user lesson " + lesson.name);
+      }
     }
     ImGui::Separator();
     if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;

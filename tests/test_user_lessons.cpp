@@ -1,0 +1,78 @@
+// Where the window looks for a student's own lessons: the XDG base directory rule, and the
+// listing of that folder.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "ui/user_lessons.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Sets (or unsets, with nullopt) an environment variable for the test's length.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::optional<std::string>& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value) ::setenv(name, value->c_str(), 1);
+    else ::unsetenv(name);
+  }
+  ~ScopedEnvironment() {
+    if (old_) ::setenv(name_, old_->c_str(), 1);
+    else ::unsetenv(name_);
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(UserLessons, TheFolderIsUnderXdgDataHome) {
+  const ScopedEnvironment data("XDG_DATA_HOME", "/srv/class/data");
+  const ScopedEnvironment home("HOME", "/home/student");
+  EXPECT_EQ(user_lessons_folder(), "/srv/class/data/frictionlab/lessons");
+}
+
+TEST(UserLessons, WithoutXdgDataHomeOrWithARelativeOneItIsInTheHome) {
+  const ScopedEnvironment home("HOME", "/home/student");
+  {
+    const ScopedEnvironment data("XDG_DATA_HOME", std::nullopt);
+    EXPECT_EQ(user_lessons_folder(), "/home/student/.local/share/frictionlab/lessons");
+  }
+  // The XDG rule: a relative path is invalid and ignored.
+  const ScopedEnvironment data("XDG_DATA_HOME", "data");
+  EXPECT_EQ(user_lessons_folder(), "/home/student/.local/share/frictionlab/lessons");
+}
+
+TEST(UserLessons, NoHomeNoFolder) {
+  const ScopedEnvironment data("XDG_DATA_HOME", std::nullopt);
+  const ScopedEnvironment home("HOME", std::nullopt);
+  EXPECT_EQ(user_lessons_folder(), "");
+  EXPECT_TRUE(user_lessons().empty());
+}
+
+TEST(UserLessons, OnlyTheLuaFilesAreListedByName) {
+  const fs::path data = fs::temp_directory_path() / ("frictionlab_user_lessons_" + std::to_string(::getpid()));
+  const ScopedEnvironment environment("XDG_DATA_HOME", data.string());
+  EXPECT_TRUE(user_lessons().empty());  // no folder yet: nothing, and no error
+  const fs::path folder = data / "frictionlab" / "lessons";
+  fs::create_directories(folder / "old.lua");  // a folder named like a script is not one
+  for (const char* name : {"steep.lua", "notes.txt", "a_first.lua"}) std::ofstream(folder / name) << "-- a lesson\n";
+  const std::vector<UserLesson> found = user_lessons();
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].name, "a_first");
+  EXPECT_EQ(found[0].path, (folder / "a_first.lua").string());
+  EXPECT_EQ(found[1].name, "steep");
+  fs::remove_all(data);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
