@@ -136,8 +136,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 TEST(Sandbox, MovingTheStaticSliderChangesThePairTableAndWhenTheBlockBreaksAway) {
   Driver driver("spring_pull");
   driver.frame();
-  driver.click("play");  // it opens playing; pause it
-  ASSERT_FALSE(driver.playback().playing());
+  ASSERT_FALSE(driver.playback().playing());  // it opens paused
   // Half-way along the slider's range [0, 2] is mu_s = 1.
   const ImRect slider = driver.control("mu_s slider");
   driver.click(ImVec2(slider.Min.x + 0.5f * slider.GetWidth(), slider.GetCenter().y));
@@ -178,8 +177,31 @@ TEST(Sandbox, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
   EXPECT_EQ(driver.sandbox().control_error("mu_k"), "");
 }
 
+// A lesson opens paused at t = 0, its first frame drawn, however much time passes: the class
+// looks at the setup and predicts first. Space plays. So does one picked from the menu.
+TEST(Sandbox, ALessonOpensPausedAtTheStart) {
+  Driver driver("incline");
+  driver.frame(0.5);
+  driver.frame(0.5);
+  EXPECT_FALSE(driver.playback().playing());
+  EXPECT_EQ(driver.lesson().scene().frame(), 0);
+  driver.key(GLFW_KEY_SPACE);
+  EXPECT_TRUE(driver.playback().playing());
+  driver.frame(0.25);
+  EXPECT_GT(driver.lesson().scene().frame(), 0);
+
+  driver.click("Lesson menu");
+  driver.click("lesson spring_pull");
+  driver.frame(0.5);
+  EXPECT_NE(driver.lesson().path().find("spring_pull"), std::string::npos);
+  EXPECT_FALSE(driver.playback().playing());
+  EXPECT_EQ(driver.lesson().scene().frame(), 0);
+}
+
 TEST(Sandbox, PauseAndStepAdvanceExactlyOneStep) {
   Driver driver("incline");
+  driver.frame();
+  driver.key(GLFW_KEY_SPACE);  // play
   driver.frame(0.5);
   ASSERT_TRUE(driver.playback().playing());
   const long running = driver.lesson().scene().frame();
@@ -200,6 +222,7 @@ TEST(Sandbox, PauseAndStepAdvanceExactlyOneStep) {
 TEST(Sandbox, AKeyTappedBetweenTwoFramesStillCounts) {
   Driver driver("incline");
   driver.frame();
+  driver.playback().play();
   ASSERT_TRUE(driver.playback().playing());
   driver.sandbox().key_pressed(GLFW_KEY_SPACE, false);  // as GLFW reports it; ImGui never saw it down
   driver.frame();
@@ -217,6 +240,7 @@ TEST(Sandbox, AKeyTappedBetweenTwoFramesStillCounts) {
 TEST(Sandbox, PlayingRunsAtTheChosenSpeedOnTheFixedStep) {
   Driver driver("spring_pull");
   driver.frame();
+  driver.playback().play();
   driver.playback().set_speed(0.1);  // slow motion: a tenth of real time
   for (int i = 0; i < 60; ++i) driver.frame(1.0 / 60.0);
   EXPECT_NEAR(driver.lesson().scene().time(), 0.1, 1.0 / 240.0);
@@ -253,8 +277,7 @@ TEST(Sandbox, ChangingAValueMidRunSaysTheMeasurementsMixTwoRunsUntilReset) {
 
 TEST(Sandbox, ShortcutsAreOffWhileADialogIsOpen) {
   Driver driver("incline");
-  driver.frame();
-  driver.click("play");  // paused
+  driver.frame();  // it opens paused
   driver.click("Lesson menu");
   driver.click("Open a script");
   driver.frame();
@@ -327,8 +350,7 @@ TEST(Sandbox, GoingBackInTheRecordReplaysItExactlyWithTheChangesMadeOnTheWay) {
 
 TEST(Sandbox, ARecordedDragIsReplayedNotCutByTheIdleMouse) {
   Driver driver("spring_pull");
-  driver.frame();
-  driver.key(GLFW_KEY_SPACE);
+  driver.frame();  // it opens paused
   b2Body* block = driver.lesson().scene().body("block");
   const ImVec2 held = driver.sandbox().world_camera().to_screen(block->GetPosition());
   driver.move_mouse(held);
@@ -393,8 +415,7 @@ TEST(Sandbox, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed) {
 
 TEST(Sandbox, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
   Driver driver("spring_pull");
-  driver.frame();
-  driver.key(GLFW_KEY_SPACE);  // pause to take hold
+  driver.frame();  // it opens paused: take hold
   lessons::Lesson& lesson = driver.lesson();
   b2Body* block = lesson.scene().body("block");
   const ImVec2 held = driver.sandbox().world_camera().to_screen(block->GetPosition());
@@ -428,8 +449,7 @@ TEST(Sandbox, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
 // mouse, and a double click puts the lesson's own view back; the lesson does not notice.
 TEST(Sandbox, TheWheelZoomsAndADragOnEmptySpacePans) {
   Driver driver("spring_pull");
-  driver.frame();
-  driver.key(GLFW_KEY_SPACE);  // paused: the view moves only because of the mouse
+  driver.frame();  // paused: the view moves only because of the mouse
   const FrameLayout layout = FrameLayout::of(ImVec2(1280.0f, 720.0f), driver.sandbox().ui_scale(ImVec2(1280.0f, 720.0f)),
                                              ImVec2(0.0f, ImGui::GetFrameHeight()));
   // Empty sky, high in the world view and left of the free-body diagram.
@@ -474,6 +494,8 @@ TEST(Sandbox, TheWheelZoomsAndADragOnEmptySpacePans) {
 struct StudentCopy {
   ScriptFile script{read_file(lessons::resolve_lesson("incline"))};
   Driver driver{script.path()};
+  // Playing, as in a class: the running lesson must keep running whatever the student saves.
+  StudentCopy() { driver.playback().play(); }
   // Time for the file watcher to look (it looks four times a second).
   void let_it_notice() {
     for (int i = 0; i < 3; ++i) driver.frame(0.15);
@@ -600,6 +622,7 @@ TEST(Sandbox, ARunawaySimulationPausesAndSaysSo) {
   // Nothing a lesson's values can reach blows up (the extremes test above), so the runaway is
   // made by hand: energy from nowhere, a kick no force in the books gave.
   Driver driver("spring_pull");
+  driver.playback().play();
   driver.frame(0.5);
   driver.lesson().scene().body("block")->SetLinearVelocity(b2Vec2(1e6f, 0.0f));
   driver.frame(0.1);
@@ -648,6 +671,7 @@ TEST(Sandbox, NewFontSizesAreDrawnAfterProjectorModeAndResizes) {
 
 TEST(Sandbox, TinyAndOddWindowSizesDrawWithoutTrouble) {
   Driver driver("tipping_box");
+  driver.playback().play();
   for (const ImVec2 size : {ImVec2(1.0f, 1.0f), ImVec2(200.0f, 900.0f), ImVec2(3840.0f, 400.0f), ImVec2(1280.0f, 720.0f)}) {
     driver.frame(0.05, size);
     driver.frame(0.05, size);
@@ -657,6 +681,7 @@ TEST(Sandbox, TinyAndOddWindowSizesDrawWithoutTrouble) {
 
 TEST(Sandbox, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriting) {
   Driver driver("incline");
+  driver.playback().play();
   driver.frame(0.25);
   driver.key(GLFW_KEY_SPACE);
   driver.key(GLFW_KEY_E, true);
@@ -735,6 +760,7 @@ every_step(function(t)
 end)
 )"));
   Driver driver(script.path());
+  driver.playback().play();
   for (int i = 0; i < 10 && driver.playback().problem().empty(); ++i) driver.frame(0.1);
   EXPECT_EQ(driver.playback().problem().rfind(script.path() + ":6:", 0), 0u) << driver.playback().problem();
   EXPECT_FALSE(driver.playback().playing());

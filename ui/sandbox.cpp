@@ -43,7 +43,8 @@ Sandbox::Sandbox(SandboxOptions options)
                                            std::map<std::string, std::string>{}, options.settings);
   }
   playback_->set_speed(window_.speed);
-  playback_->play();  // a lesson opens running: what moves is what the class looks at first
+  // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
+  // predicts, before anything moves; Space plays.
 }
 
 void Sandbox::check_lock(const lessons::Lesson& lesson) const {
@@ -291,7 +292,7 @@ std::string Sandbox::open(const std::string& name_or_path) {
                                            playback_->lesson().settings());
     check_lock(next->lesson());
     next->set_speed(playback_->speed());
-    next->play();
+    // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     control_errors_.clear();
     sliding_.reset();

@@ -22,6 +22,7 @@ void Sandbox::menu_bar() {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       const bool current = lesson_name(playback_->lesson().path()) == entry.name;
       if (ImGui::MenuItem(entry.title.c_str(), entry.name.c_str(), current, may_switch)) status_ = open(entry.name);
+      remember("lesson " + entry.name);
     }
     // The student's own folder, read each time the menu is drawn, so a copy saved there shows at once.
     const std::vector<UserLesson> own = user_lessons();
