@@ -250,6 +250,20 @@ TEST(Sandbox, PlayingRunsAtTheChosenSpeedOnTheFixedStep) {
   EXPECT_NEAR(driver.lesson().scene().time() - before, 4.0, 1.0 / 240.0);
 }
 
+// A logarithmic slider's pixels never land on ×1 exactly; near it, the slider gives ×1.
+TEST(Sandbox, TheSpeedSliderComesBackToExactlyRealTime) {
+  Driver driver("incline");
+  driver.frame();
+  const ImRect slider = driver.control("speed");
+  // ×1 lies log(1/0.1)/log(8/0.1) = 52.5 % along: clicks a little either side of it give ×1.
+  for (const float along : {0.517f, 0.525f, 0.533f}) {
+    driver.click(ImVec2(slider.Min.x + along * slider.GetWidth(), slider.GetCenter().y));
+    EXPECT_EQ(driver.playback().speed(), 1.0) << "clicked at " << along;
+  }
+  driver.click(ImVec2(slider.Min.x + 0.9f * slider.GetWidth(), slider.GetCenter().y));
+  EXPECT_GT(driver.playback().speed(), 3.0);
+}
+
 TEST(Sandbox, AHugeStepRateRunsSlowerThanAskedInsteadOfFreezing) {
   Driver driver("incline");
   StepSettings settings;
@@ -269,9 +283,13 @@ TEST(Sandbox, ChangingAValueMidRunSaysTheMeasurementsMixTwoRunsUntilReset) {
   driver.playback().run_to(1.2);
   EXPECT_EQ(driver.playback().readings().caveat, "");
   driver.playback().set_parameter("mu_s", "0.6");
-  EXPECT_EQ(driver.playback().readings().caveat.rfind("mu_s was changed at t = 1.20 s", 0), 0u)
+  // In the books' letters, with the pair.
+  EXPECT_EQ(driver.playback().readings().caveat.rfind("\u03bcs  aluminium / wood was changed at t = 1.20 s", 0), 0u)
       << driver.playback().readings().caveat;
   driver.key(GLFW_KEY_R);
+  EXPECT_EQ(driver.playback().readings().caveat, "");
+  // A change before anything was measured mixes nothing, and says nothing.
+  driver.playback().set_parameter("mu_k", "0.3");
   EXPECT_EQ(driver.playback().readings().caveat, "");
 }
 
@@ -441,6 +459,7 @@ TEST(Sandbox, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
   EXPECT_NEAR(friction_sliding, 0.35 * 9.81, 0.05 * 0.35 * 9.81);
   driver.mouse_button(false);
   EXPECT_EQ(lesson.scene().grabbed(), nullptr);
+  EXPECT_EQ(driver.sandbox().status().rfind("Holding", 0), std::string::npos) << "the hand's message outlived the hand";
   // The hand's work is in the books: the residual stays small beside it.
   EXPECT_LT(std::abs(lesson.scene().ledger().residual()), 0.02 * std::abs(lesson.scene().ledger().work_applied) + 1e-3);
 }

@@ -49,6 +49,14 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
   end_panel();
 }
 
+std::string parameter_title(const lessons::Parameter& parameter) {
+  if (parameter.coefficient.empty()) return parameter.name;
+  const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
+                             : parameter.coefficient == "mu_k" ? "\u03bck"
+                                                               : parameter.coefficient;
+  return letter + "  " + parameter.material_a + " / " + parameter.material_b;
+}
+
 void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
   if (begin_panel("parameters", "Parameters", corner, size)) {
     if (ImGui::BeginTable("values", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
@@ -57,15 +65,7 @@ void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size)
       for (const lessons::Parameter& parameter : lesson.parameters()) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        // Pair coefficients in the books' letters, with their pair: "μs  aluminium / wood".
-        std::string name = parameter.name;
-        if (!parameter.coefficient.empty()) {
-          const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
-                                     : parameter.coefficient == "mu_k" ? "\u03bck"
-                                                                       : parameter.coefficient;
-          name = letter + "  " + parameter.material_a + " / " + parameter.material_b;
-        }
-        ImGui::TextUnformatted(name.c_str());
+        ImGui::TextUnformatted(parameter_title(parameter).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(parameter.shown().c_str());
       }

@@ -17,6 +17,10 @@ bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size);
 void end_panel();
 
 void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+// A parameter as a class reads it: a pair's coefficient in the books' letters with its pair
+// ("μs  aluminium / wood"), any other by its name.
+std::string parameter_title(const lessons::Parameter& parameter);
+
 void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
 // `error`: the script could not work the table out (shown instead of it); `caveat`: why the
 // rows should not be trusted yet (shown above them).

@@ -1,5 +1,7 @@
 #include "ui/playback.h"
 
+#include "ui/panels.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -74,13 +76,18 @@ void Playback::refresh_readings() {
   readings_.error.clear();
   readings_.caveat.clear();
   // Values changed during the run: the predictions use the new ones, the record holds both.
+  // A change at t = 0, before anything was measured, mixes nothing.
   for (std::size_t i = 0; i < next_action_; ++i) {
-    if (record_[i].kind != Action::Kind::set) continue;
-    char text[200];
+    if (record_[i].kind != Action::Kind::set || record_[i].frame == 0) continue;
+    std::string name = record_[i].name;
+    for (const lessons::Parameter& parameter : lesson_->parameters()) {
+      if (parameter.name == name) name = parameter_title(parameter);
+    }
+    char text[300];
     std::snprintf(text, sizeof text,
                   "%s was changed at t = %.2f s: what was measured before it ran with the old value. Press R to "
                   "measure again with the new one.",
-                  record_[i].name.c_str(), static_cast<double>(record_[i].frame) * lesson_->scene().frame_step());
+                  name.c_str(), static_cast<double>(record_[i].frame) * lesson_->scene().frame_step());
     readings_.caveat = text;
     break;
   }

@@ -217,6 +217,8 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
     if (!io.MouseDown[ImGuiMouseButton_Left]) {
       playback_->release();
       hand_held_ = false;
+      // "Holding block: press Space..." is over once the hand lets go.
+      if (status_.rfind("Holding ", 0) == 0) status_.clear();
       return;
     }
     const b2Vec2 target = camera.to_world(io.MousePos);

@@ -241,6 +241,9 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
     float speed = static_cast<float>(playback_->speed());
     if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
                            "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
+      // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
+      // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
+      if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
       playback_->set_speed(speed);
       window_.speed = playback_->speed();
     }
