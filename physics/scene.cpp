@@ -84,6 +84,7 @@ b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
   require_in_range("body '" + name + "': gravity scale", definition.gravityScale, -100.0, 100.0, false, "");
   b2Body* created = world_->CreateBody(&definition);
   bodies_.emplace_back(name, created);
+  rest_.push_back({definition.position, definition.angle, 0});
   return created;
 }
 
@@ -235,13 +236,16 @@ b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
 }
 
 void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
-  const std::string name = name_of(body);
+  // A script may call this every step: the body's name is looked up only for a message.
   if (body == nullptr || body->GetType() != b2_dynamicBody) {
-    throw InvalidInput("body '" + name + "': only a body that moves freely (dynamic) has a velocity to set");
+    throw InvalidInput("body '" + name_of(body) + "': only a body that moves freely (dynamic) has a velocity to set");
   }
+  using validation::in_range;
   using validation::require_in_range;
-  require_in_range("body '" + name + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
-  require_in_range("body '" + name + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  if (!in_range(velocity.x, -1e4, 1e4, false) || !in_range(velocity.y, -1e4, 1e4, false)) {
+    require_in_range("body '" + name_of(body) + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
+    require_in_range("body '" + name_of(body) + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  }
   const b2Vec2 before = body->GetLinearVelocity();
   body->SetLinearVelocity(velocity);
   // Booked with the very formula mechanical_energy() uses, so the residual does not move; the
@@ -379,6 +383,7 @@ void Scene::step() {
   }
   ++frame_;
   time_ = static_cast<double>(frame_) * frame_step();
+  rest_resting_bodies();
   update_ledger_state();
   // The time joins the record with the probes' values, so whatever runs before they sample
   // sees a record whose columns all have the same length.
@@ -390,6 +395,70 @@ void Scene::step() {
     any_slipping = any_slipping || (record.point_count > 0 && record.state == ContactState::slipping);
   }
   slipping_.push_back(any_slipping ? 1 : 0);
+}
+
+namespace {
+// At rest: slower than a micrometre a second (and a milliradian a second), and moved less
+// than a nanometre in the last frame (Box2D's position correction moves bodies without
+// velocity). A body stuck by static friction under gravity alone sits at 1e-8 m/s or less.
+constexpr float rest_speed = 1e-6f;
+constexpr float rest_spin = 1e-3f;
+constexpr float rest_shift = 1e-9f;
+// Frames in a row at rest before a body is let sleep: it stopped, and stays stopped, for a
+// twentieth of a second at 240 Hz.
+constexpr int rest_frames = 12;
+}  // namespace
+
+bool Scene::at_rest(const b2Body* body, std::size_t index) const {
+  if (body->GetType() != b2_dynamicBody || body->GetJointList() != nullptr) return false;
+  const b2Vec2 v = body->GetLinearVelocity();
+  if (b2Dot(v, v) > rest_speed * rest_speed || std::abs(body->GetAngularVelocity()) > rest_spin) return false;
+  const Rest& before = rest_[index];
+  if ((body->GetPosition() - before.position).LengthSquared() > rest_shift * rest_shift ||
+      std::abs(body->GetAngle() - before.angle) > rest_shift) {
+    return false;
+  }
+  // Nothing but gravity on it: no spring, applied force or hand.
+  for (const Spring& spring : springs_) {
+    if (spring.body == body || spring.other == body) return false;
+  }
+  for (const AppliedForce& force : applied_) {
+    if (force.body == body) return false;
+  }
+  // Resting on fixed bodies only, every touch stuck under the stick-slip law.
+  bool touching = false;
+  for (const b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (!edge->contact->IsTouching()) continue;
+    if (edge->other->GetType() != b2_staticBody) return false;
+    const ContactRecord* record = listener_.record(edge->contact);
+    if (record == nullptr || record->unpaired || record->point_count == 0 || record->state != ContactState::sticking ||
+        listener_.treatment_of(record->material_a, record->material_b) != FrictionTreatment::stick_slip) {
+      return false;
+    }
+    touching = true;
+  }
+  return touching;
+}
+
+void Scene::rest_resting_bodies() {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    b2Body* body = bodies_[i].second;
+    Rest& rest = rest_[i];
+    if (!body->IsAwake()) continue;
+    rest.frames = at_rest(body, i) ? rest.frames + 1 : 0;
+    rest.position = body->GetPosition();
+    rest.angle = body->GetAngle();
+    if (rest.frames >= rest_frames) {
+      body->SetAwake(false);
+      rest.frames = 0;
+    }
+  }
+}
+
+void Scene::wake() {
+  for (const auto& [name, body] : bodies_) {
+    if (body->GetType() != b2_staticBody) body->SetAwake(true);
+  }
 }
 
 void Scene::advance(double t, float h, double t_end, bool move) {
