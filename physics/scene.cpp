@@ -256,17 +256,37 @@ void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
   if (ledger_started_) ledger_.kinetic += change;
 }
 
+namespace {
+bool same(const b2Transform& a, const b2Transform& b) {
+  return a.p.x == b.p.x && a.p.y == b.p.y && a.q.s == b.q.s && a.q.c == b.q.c;
+}
+}  // namespace
+
 bool Scene::touching_now(b2Contact* contact) const {
   if (touching_checked_at_ != world_steps_) {
+    touching_before_.swap(touching_);
     touching_.clear();
     touching_checked_at_ = world_steps_;
   }
-  for (const auto& [known, touching] : touching_) {
-    if (known == contact) return touching;
+  for (const Touching& known : touching_) {
+    if (known.contact == contact) return known.touching;
+  }
+  const b2Fixture* fixture_a = contact->GetFixtureA();
+  const b2Fixture* fixture_b = contact->GetFixtureB();
+  const int child_a = contact->GetChildIndexA(), child_b = contact->GetChildIndexB();
+  const b2Transform& transform_a = fixture_a->GetBody()->GetTransform();
+  const b2Transform& transform_b = fixture_b->GetBody()->GetTransform();
+  for (const Touching& known : touching_before_) {
+    if (known.contact == contact && known.fixture_a == fixture_a && known.fixture_b == fixture_b &&
+        known.child_a == child_a && known.child_b == child_b && same(known.transform_a, transform_a) &&
+        same(known.transform_b, transform_b)) {
+      touching_.push_back(known);
+      return known.touching;
+    }
   }
   b2Manifold now;
-  contact->Evaluate(&now, contact->GetFixtureA()->GetBody()->GetTransform(), contact->GetFixtureB()->GetBody()->GetTransform());
-  touching_.emplace_back(contact, now.pointCount > 0);
+  contact->Evaluate(&now, transform_a, transform_b);
+  touching_.push_back({contact, fixture_a, fixture_b, child_a, child_b, transform_a, transform_b, now.pointCount > 0});
   return now.pointCount > 0;
 }
 

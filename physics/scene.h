@@ -235,7 +235,19 @@ class Scene {
   EnergyLedger ledger_;
   long world_steps_ = 0;  // every world step, trial or not: what touching_now() remembers is for one
   mutable long touching_checked_at_ = -1;
-  mutable std::vector<std::pair<const b2Contact*, bool>> touching_;
+  // What touching_now() found: whether the two fixtures' shapes touch at these transforms.
+  // Box2D's answer depends on nothing else, so a pair that has not moved since the world step
+  // before, bit for bit (a body at rest, put to sleep), is answered without colliding again.
+  struct Touching {
+    const b2Contact* contact;
+    const b2Fixture* fixture_a;
+    const b2Fixture* fixture_b;
+    int child_a, child_b;  // which edge of a chain
+    b2Transform transform_a, transform_b;
+    bool touching;
+  };
+  mutable std::vector<Touching> touching_;         // this world step's answers
+  mutable std::vector<Touching> touching_before_;  // those of the last world step that asked
 };
 
 // The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)
