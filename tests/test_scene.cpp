@@ -280,3 +280,22 @@ TEST(SceneRest, BlocksHeldByAForceOrCreepingUnderARegularizedLawStayAwake) {
   EXPECT_GT(creeping->probe("distance").history.back(), 0.0);
   EXPECT_TRUE(block->IsAwake());
 }
+
+// On a frictionless floor the listener may call a touch slipping however slowly the block goes;
+// still, a block at rest there is on level ground and stays: it rests too. On a frictionless
+// slope it never comes to rest.
+TEST(SceneRest, ABlockAtRestOnAFrictionlessFloorRestsButOneOnAFrictionlessSlopeSlides) {
+  Block frictionless;
+  frictionless.pair = FrictionPair{0.0, 0.0, 0.0, 0.0};
+  auto flat = make_slide(Slide{frictionless, 0.0}, StepSettings{});
+  Incline setup{frictionless, 0.3};
+  auto slope = make_incline(setup, StepSettings{});
+  for (int i = 0; i < 120; ++i) {
+    flat->step();
+    slope->step();
+  }
+  EXPECT_FALSE(flat->body("block")->IsAwake());
+  EXPECT_EQ(flat->probe("distance").history.back(), 0.0);
+  EXPECT_TRUE(slope->body("block")->IsAwake());
+  EXPECT_NEAR(slope->probe("distance").history.back(), 0.5 * standard_gravity * std::sin(0.3) * 0.25, 0.01);
+}
