@@ -350,6 +350,8 @@ int handle_index(lua_State* state) {
     if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
       const ContactRecord* record = find_record(scene, handle->contact);
       lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
+    } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {  // every step in terrain
+      lua_pushcfunction(state, scale_velocity);
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
       if (field == Field::distance || field == Field::speed) {
         throw InvalidInput(std::string("a body's ") + key + " needs a direction: read it in a probe, as in read = { block, \"" +
@@ -362,8 +364,6 @@ int handle_index(lua_State* state) {
       lua_pushcfunction(state, world_point);
     } else if (std::strcmp(key, "set_velocity") == 0 && handle->type == body_type) {
       lua_pushcfunction(state, set_velocity);
-    } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {
-      lua_pushcfunction(state, scale_velocity);
     } else {
       const std::string extra = handle->type == body_type      ? "name, world_point(x, y), set_velocity(vx, vy), "
                                                                  "scale_velocity(factor), "
