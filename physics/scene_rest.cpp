@@ -9,7 +9,8 @@ namespace frictionlab {
 namespace {
 // At rest: slower than a micrometre a second (and a milliradian a second), and moved less
 // than a nanometre in the last frame (Box2D's position correction moves bodies without
-// velocity). A body stuck by static friction under gravity alone sits at 1e-8 m/s or less.
+// velocity): in float, at a few metres from the origin, not moved at all. A block stuck by
+// static friction on the ground gets there within a few frames of stopping.
 constexpr float rest_speed = 1e-6f;
 constexpr float rest_spin = 1e-3f;
 constexpr float rest_shift = 1e-9f;
