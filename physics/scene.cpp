@@ -84,6 +84,7 @@ b2Body* Scene::add_body(const std::string& name, const b2BodyDef& definition) {
   require_in_range("body '" + name + "': gravity scale", definition.gravityScale, -100.0, 100.0, false, "");
   b2Body* created = world_->CreateBody(&definition);
   bodies_.emplace_back(name, created);
+  rest_.push_back({definition.position, definition.angle, 0});
   return created;
 }
 
@@ -235,13 +236,16 @@ b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
 }
 
 void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
-  const std::string name = name_of(body);
+  // A script may call this every step: the body's name is looked up only for a message.
   if (body == nullptr || body->GetType() != b2_dynamicBody) {
-    throw InvalidInput("body '" + name + "': only a body that moves freely (dynamic) has a velocity to set");
+    throw InvalidInput("body '" + name_of(body) + "': only a body that moves freely (dynamic) has a velocity to set");
   }
+  using validation::in_range;
   using validation::require_in_range;
-  require_in_range("body '" + name + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
-  require_in_range("body '" + name + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  if (!in_range(velocity.x, -1e4, 1e4, false) || !in_range(velocity.y, -1e4, 1e4, false)) {
+    require_in_range("body '" + name_of(body) + "': velocity x", velocity.x, -1e4, 1e4, false, " m/s");
+    require_in_range("body '" + name_of(body) + "': velocity y", velocity.y, -1e4, 1e4, false, " m/s");
+  }
   const b2Vec2 before = body->GetLinearVelocity();
   body->SetLinearVelocity(velocity);
   // Booked with the very formula mechanical_energy() uses, so the residual does not move; the
@@ -252,17 +256,37 @@ void Scene::set_velocity(b2Body* body, b2Vec2 velocity) {
   if (ledger_started_) ledger_.kinetic += change;
 }
 
+namespace {
+bool same(const b2Transform& a, const b2Transform& b) {
+  return a.p.x == b.p.x && a.p.y == b.p.y && a.q.s == b.q.s && a.q.c == b.q.c;
+}
+}  // namespace
+
 bool Scene::touching_now(b2Contact* contact) const {
   if (touching_checked_at_ != world_steps_) {
+    touching_before_.swap(touching_);
     touching_.clear();
     touching_checked_at_ = world_steps_;
   }
-  for (const auto& [known, touching] : touching_) {
-    if (known == contact) return touching;
+  for (const Touching& known : touching_) {
+    if (known.contact == contact) return known.touching;
+  }
+  const b2Fixture* fixture_a = contact->GetFixtureA();
+  const b2Fixture* fixture_b = contact->GetFixtureB();
+  const int child_a = contact->GetChildIndexA(), child_b = contact->GetChildIndexB();
+  const b2Transform& transform_a = fixture_a->GetBody()->GetTransform();
+  const b2Transform& transform_b = fixture_b->GetBody()->GetTransform();
+  for (const Touching& known : touching_before_) {
+    if (known.contact == contact && known.fixture_a == fixture_a && known.fixture_b == fixture_b &&
+        known.child_a == child_a && known.child_b == child_b && same(known.transform_a, transform_a) &&
+        same(known.transform_b, transform_b)) {
+      touching_.push_back(known);
+      return known.touching;
+    }
   }
   b2Manifold now;
-  contact->Evaluate(&now, contact->GetFixtureA()->GetBody()->GetTransform(), contact->GetFixtureB()->GetBody()->GetTransform());
-  touching_.emplace_back(contact, now.pointCount > 0);
+  contact->Evaluate(&now, transform_a, transform_b);
+  touching_.push_back({contact, fixture_a, fixture_b, child_a, child_b, transform_a, transform_b, now.pointCount > 0});
   return now.pointCount > 0;
 }
 
@@ -379,6 +403,7 @@ void Scene::step() {
   }
   ++frame_;
   time_ = static_cast<double>(frame_) * frame_step();
+  rest_resting_bodies();
   update_ledger_state();
   // The time joins the record with the probes' values, so whatever runs before they sample
   // sees a record whose columns all have the same length.

@@ -122,6 +122,9 @@ class Scene {
 
   // One frame: 1/hz of simulated time in `substeps` world steps.
   void step();
+  // Wakes every body the scene put to rest (see the private rest_resting_bodies()): a pair's
+  // friction values changed under it, and a body held only by static friction may now slide.
+  void wake();
   double time() const { return time_; }
   long frame() const { return frame_; }
   const std::vector<double>& times() const { return times_; }
@@ -186,6 +189,15 @@ class Scene {
   void check_new_name(const std::string& name) const;
   std::string name_of(const b2Body* body) const;
   void check_placement(const std::string& name, b2Vec2 position, float angle) const;
+  // "Model no more than a scene needs": a body that has come to rest on fixed bodies, every
+  // contact stuck (stick-slip) and nothing but gravity acting on it, stays where it is: static
+  // friction holds it and nothing changes. After rest_steps such frames in a row it is put to
+  // sleep, and Box2D stops solving it (its contacts keep their last record, which is what they
+  // would read: the load and the friction holding it) until something touches it, a script sets
+  // its velocity, or wake() is called. Box2D's own sleeping (0.5 s below 1 cm/s) stays off:
+  // it would also stop a body creeping under a regularized law or a drag's long tail.
+  void rest_resting_bodies();
+  bool at_rest(const b2Body* body, std::size_t index) const;
   void mechanical_energy(double* kinetic, double* potential, double* elastic) const;
   void update_ledger_state();
 
@@ -195,6 +207,12 @@ class Scene {
   FrictionListener listener_;
   std::unique_ptr<b2World> world_;
   std::vector<std::pair<std::string, b2Body*>> bodies_;
+  struct Rest {
+    b2Vec2 position{0.0f, 0.0f};  // where the body was at the end of the last frame
+    float angle = 0.0f;
+    int frames = 0;               // frames in a row it has been at rest
+  };
+  std::vector<Rest> rest_;        // beside bodies_
   std::vector<Spring> springs_;
   std::vector<AppliedForce> applied_;
   std::vector<b2Vec2> spring_forces_applied_;
@@ -217,7 +235,19 @@ class Scene {
   EnergyLedger ledger_;
   long world_steps_ = 0;  // every world step, trial or not: what touching_now() remembers is for one
   mutable long touching_checked_at_ = -1;
-  mutable std::vector<std::pair<const b2Contact*, bool>> touching_;
+  // What touching_now() found: whether the two fixtures' shapes touch at these transforms.
+  // Box2D's answer depends on nothing else, so a pair that has not moved since the world step
+  // before, bit for bit (a body at rest, put to sleep), is answered without colliding again.
+  struct Touching {
+    const b2Contact* contact;
+    const b2Fixture* fixture_a;
+    const b2Fixture* fixture_b;
+    int child_a, child_b;  // which edge of a chain
+    b2Transform transform_a, transform_b;
+    bool touching;
+  };
+  mutable std::vector<Touching> touching_;         // this world step's answers
+  mutable std::vector<Touching> touching_before_;  // those of the last world step that asked
 };
 
 // The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)

@@ -25,8 +25,7 @@ void require_finite(const char* where, const char* name, double value) {
 
 void require_in_range(const std::string& name, double value, double low, double high, bool low_open,
                       const char* unit) {
-  const bool ok = (low_open ? value > low : value >= low) && value <= high;  // false for NaN
-  if (!ok) {
+  if (!in_range(value, low, high, low_open)) {
     std::ostringstream message;
     message << name << " = " << value << unit << " is outside the allowed range " << (low_open ? "(" : "[") << low
             << ", " << high << "]";

@@ -623,6 +623,26 @@ TEST(LessonParameters, ACoefficientChangesTheRunningLessonAndAStructuralOneRebui
   EXPECT_EQ(lesson.parameter("mu_s").value, 0.35);
 }
 
+// A block at rest on a slope with nothing but gravity on it is let sleep (Scene's rest); a
+// slider lowering mu_s below tan θ must still set it sliding in the running lesson.
+TEST(LessonParameters, ACoefficientChangeWakesABlockRestingOnStaticFriction) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "metal", mu_s = 0.6, mu_k = 0.4 }
+ground { material = "metal" }
+local slope = incline { "slope", material = "metal", angle = 20, length = 6 }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = slope, at = 5 }
+probe { "x", unit = "m", read = { block, "x" } }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 0.5);  // tan 20° = 0.36 < 0.6: it holds, and rests
+  EXPECT_FALSE(lesson.scene().body("block")->IsAwake());
+  const double held = probe_now(lesson, "x");
+  lesson.set("mu_k", "0.1");
+  lesson.set("mu_s", "0.2");
+  run_for(lesson, 0.5);
+  EXPECT_LT(probe_now(lesson, "x"), held - 0.1);  // g·(sin 20° − 0.1·cos 20°)·0.5²/2·cos 20° = 0.28 m back
+}
+
 TEST(LessonParameters, ACoefficientReadWhileBuildingRebuildsTheScene) {
   ScriptFile script(with_heading(R"(
 pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }

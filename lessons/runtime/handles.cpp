@@ -259,8 +259,11 @@ int world_point(lua_State* state) {
 // velocity between frames. Only from an every_step function: there the frame is over, so the
 // next step starts from the new velocity, the record (and a replay) holds it, and the ledger
 // books the kinetic energy it gives or takes.
+// These run every step in a lesson such as terrain's: the names in their messages are built
+// only when a message is given.
 b2Body* velocity_body(lua_State* state, const char* call) {
-  BodyHandle* handle = body_handle(state, 1, (std::string(call) + "'s body (call it as block:" + call + "(...))").c_str());
+  auto* handle = static_cast<BodyHandle*>(handle_of(state, 1, body_type));
+  if (handle == nullptr) handle = body_handle(state, 1, std::string(call) + "'s body (call it as block:" + call + "(...))");
   if (!build_of(state).in_every_step) {
     throw InvalidInput(std::string(call) + " works only inside an every_step function, between frames; a body's "
                        "starting velocity is given where it is made, as in velocity = { 2, 0 }");
@@ -274,14 +277,19 @@ double velocity_argument(lua_State* state, int index, const char* call, const ch
     throw InvalidInput(std::string(call) + ": " + what + " must be a number, got " + describe(state, index));
   }
   const double value = lua_tonumber(state, index);
-  validation::require_in_range(std::string(call) + ": " + what, value, -limit, limit, false, unit);
+  if (!validation::in_range(value, -limit, limit, false)) {
+    validation::require_in_range(std::string(call) + ": " + what, value, -limit, limit, false, unit);
+  }
   return value;
 }
 
 void set_and_forget(lua_State* state, b2Body* body, double vx, double vy) {
   LessonBuild& build = build_of(state);
-  validation::require_in_range("body '" + body_name(state, body) + "': velocity x", vx, -1e4, 1e4, false, " m/s");
-  validation::require_in_range("body '" + body_name(state, body) + "': velocity y", vy, -1e4, 1e4, false, " m/s");
+  for (const auto& [part, value] : {std::pair{"x", vx}, std::pair{"y", vy}}) {
+    if (!validation::in_range(value, -1e4, 1e4, false)) {
+      validation::require_in_range("body '" + body_name(state, body) + "': velocity " + part, value, -1e4, 1e4, false, " m/s");
+    }
+  }
   build.scene->set_velocity(body, {static_cast<float>(vx), static_cast<float>(vy)});
   for (const auto& memory : build.force_memories) memory->filled = 0;
 }
@@ -342,6 +350,8 @@ int handle_index(lua_State* state) {
     if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
       const ContactRecord* record = find_record(scene, handle->contact);
       lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
+    } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {  // every step in terrain
+      lua_pushcfunction(state, scale_velocity);
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
       if (field == Field::distance || field == Field::speed) {
         throw InvalidInput(std::string("a body's ") + key + " needs a direction: read it in a probe, as in read = { block, \"" +
@@ -354,8 +364,6 @@ int handle_index(lua_State* state) {
       lua_pushcfunction(state, world_point);
     } else if (std::strcmp(key, "set_velocity") == 0 && handle->type == body_type) {
       lua_pushcfunction(state, set_velocity);
-    } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {
-      lua_pushcfunction(state, scale_velocity);
     } else {
       const std::string extra = handle->type == body_type      ? "name, world_point(x, y), set_velocity(vx, vy), "
                                                                  "scale_velocity(factor), "

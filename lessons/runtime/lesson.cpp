@@ -421,6 +421,7 @@ void Lesson::set(const std::string& name, const std::string& text) {
       if (sibling.coefficient == "b") values.b = v;
     }
     scene().pairs().set_pair(changed.material_a, changed.material_b, values);
+    scene().wake();  // a block resting on static friction may slide with the new values
     changed.value = value;
     for (const auto& memory : current_->remembered) memory->filled = 0;  // functions may read param
     overrides_[name] = text;
