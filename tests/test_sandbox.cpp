@@ -185,8 +185,10 @@ TEST(Sandbox, ALessonOpensPausedAtTheStart) {
   driver.frame(0.5);
   EXPECT_FALSE(driver.playback().playing());
   EXPECT_EQ(driver.lesson().scene().frame(), 0);
+  EXPECT_TRUE(driver.sandbox().idle()) << "paused and untouched, the window may wait for input";
   driver.key(GLFW_KEY_SPACE);
   EXPECT_TRUE(driver.playback().playing());
+  EXPECT_FALSE(driver.sandbox().idle());
   driver.frame(0.25);
   EXPECT_GT(driver.lesson().scene().frame(), 0);
 

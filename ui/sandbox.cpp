@@ -154,6 +154,11 @@ void Sandbox::handle_keys() {
   if (hit(GLFW_KEY_D, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
+bool Sandbox::idle() const {
+  const bool searching = recommender_ != nullptr && !recommender_->done();
+  return !playback_->playing() && !searching && !hand_held_ && !panning_from_ && !screenshot_request_;
+}
+
 const Camera& Sandbox::world_camera_at(ImVec2 point) const {
   for (const Camera& camera : cameras_) {
     if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;

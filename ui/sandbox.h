@@ -70,6 +70,10 @@ class Sandbox {
   void screenshot_done(const std::string& path, const std::string& error);
   bool take_full_screen_toggle();
   bool quit_requested() const { return quit_; }
+  // Nothing moves until the user does something: paused, no search measuring between frames,
+  // no hand held. The window then waits for input (a few times a second for the file watcher)
+  // instead of drawing the same frame sixty times a second.
+  bool idle() const;
   // What the status line says now (saved files, failures to save).
   const std::string& status() const { return status_; }
   // A script named on the command line that does not build yet: its path, "" when none.

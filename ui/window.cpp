@@ -67,8 +67,20 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
   int windowed[4] = {0, 0, settings.width, settings.height};
   double last = glfwGetTime();
   WindowSettings saved = settings;
+  int settle_frames = 3;
   while (!glfwWindowShouldClose(window.get()) && !sandbox.quit_requested()) {
-    glfwPollEvents();
+    // Paused and untouched, the picture cannot change: wait for input, waking four times a
+    // second so a saved script is still seen (a paused llvmpipe window drew at 97 % of a core).
+    // A few frames after any input let ImGui settle hover and focus before waiting again.
+    if (sandbox.idle() && frames_left < 0 && settle_frames == 0) {
+      const double asleep_from = glfwGetTime();
+      glfwWaitEventsTimeout(0.25);
+      // Woken by input: a few frames; by the clock (to look at the script file): one.
+      settle_frames = glfwGetTime() - asleep_from < 0.24 ? 3 : 1;
+    } else {
+      glfwPollEvents();
+    }
+    settle_frames = sandbox.idle() ? std::max(0, settle_frames - 1) : 3;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
     const double now = glfwGetTime();
