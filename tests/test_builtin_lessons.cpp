@@ -85,6 +85,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, ""},
                       Case{"incline", {}, "slides"}, Case{"incline", {{"angle", "29"}}, "sticks"},
                       Case{"incline", {{"angle", "33"}}, "slides"},
+                      // mu_k above mu_s: it holds up to atan(mu_k) = 35.0°, breaking away and stopping at once.
+                      Case{"incline", {{"angle", "34"}, {"mu_k", "0.7"}}, "sticks"},
+                      Case{"incline", {{"angle", "36"}, {"mu_k", "0.7"}}, "slides"},
                       // 2·eps/(mu_s·g·cos 20°) = 0.72 ms for eps = 2 mm/s: 240 Hz (4.2 ms) is past it,
                       // 20 mm/s (7.2 ms) is not.
                       Case{"where_methods_fail", {}, "jitters"},
