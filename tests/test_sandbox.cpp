@@ -873,6 +873,16 @@ TEST(Sandbox, ANegativeToleranceMeasuresNothing) {
   EXPECT_TRUE(driver.sandbox().control("use it").has_value());
 }
 
+// F11 asks the window to toggle full screen, and the setting (which the window keeps in its
+// settings file, and opens with) follows.
+TEST(Sandbox, F11TogglesFullScreen) {
+  Driver driver("incline");
+  driver.frame();
+  driver.key(GLFW_KEY_F11);
+  EXPECT_TRUE(driver.sandbox().take_full_screen_toggle());
+  EXPECT_FALSE(driver.sandbox().take_full_screen_toggle());  // once per press
+}
+
 TEST(Sandbox, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_settings_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings settings;
@@ -880,6 +890,7 @@ TEST(Sandbox, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   settings.projector = true;
   settings.speed = 0.25;
   settings.width = 1920;
+  settings.full_screen = true;  // a projector's whole screen, kept for the next class
   ASSERT_TRUE(save_settings(settings, path));
   EXPECT_EQ(load_settings(path), settings);
   std::ofstream(path) << "theme = pink\nspeed = 99\nprojector = on\ngarbage\n";

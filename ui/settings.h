@@ -14,7 +14,8 @@ struct WindowSettings {
   bool projector = false;
   bool help = true;  // a newcomer sees the shortcuts first
   double speed = 1.0;
-  int width = 1280, height = 720;
+  int width = 1280, height = 720;  // the window's size when it is not full screen
+  bool full_screen = false;         // F11: a projector's whole screen, kept for the next class
 
   bool operator==(const WindowSettings&) const = default;
 };

@@ -120,7 +120,8 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
       sandbox.screenshot_done(*screenshot, error);
       if (frames_left == 0) break;
     }
-    if (sandbox.take_full_screen_toggle()) {
+    if (sandbox.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
+    if (settings.full_screen != full_screen) {
       GLFWmonitor* monitor = glfwGetPrimaryMonitor();
       const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
       if (!full_screen && mode != nullptr) {
@@ -131,6 +132,8 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
       } else if (full_screen) {
         glfwSetWindowMonitor(window.get(), nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
         full_screen = false;
+      } else {
+        settings.full_screen = false;  // no monitor to fill
       }
     }
     glfwSwapBuffers(window.get());
@@ -142,7 +145,13 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
     }
   }
 
-  if (!full_screen) glfwGetWindowSize(window.get(), &settings.width, &settings.height);
+  // The windowed size is kept, full screen or not: leaving full screen next time goes back to it.
+  if (!full_screen) {
+    glfwGetWindowSize(window.get(), &settings.width, &settings.height);
+  } else {
+    settings.width = windowed[2];
+    settings.height = windowed[3];
+  }
   if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
 }
 
