@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/csv_log.h"
 #include "app/modes.h"
 #include "app/options.h"
 #include "app/table.h"
@@ -60,58 +61,6 @@ RunOptions parse_run(const std::vector<std::string>& args) {
   return options;
 }
 
-// One CSV row per step, written to FILE.partial and renamed when the run is over, so a run
-// that fails leaves no half file behind.
-class CsvLog {
- public:
-  CsvLog(const std::string& path, const std::string& script) : path_(path), partial_(path + ".partial") {
-    namespace fs = std::filesystem;
-    std::error_code same;
-    if (fs::path(path).extension() == ".lua" || fs::equivalent(path, script, same)) {
-      throw InvalidInput("--csv " + path + ": that looks like a lesson script; give a .csv file so no script is overwritten");
-    }
-    file_.open(partial_, std::ios::binary);
-    if (!file_) throw InvalidInput("--csv " + path + ": cannot write there: " + std::strerror(errno));
-    file_.precision(9);
-  }
-  ~CsvLog() {
-    if (!done_) {
-      file_.close();
-      std::remove(partial_.c_str());
-    }
-  }
-  void header(const Scene& scene) {
-    file_ << "t";
-    for (const auto& [name, body] : scene.bodies()) {
-      for (const char* part : {"x", "y", "angle", "vx", "vy", "omega"}) file_ << ',' << name << '.' << part;
-    }
-    for (const Probe& probe : scene.probes()) file_ << ',' << probe.name;
-    file_ << '\n';
-  }
-  void row(const Scene& scene) {
-    file_ << scene.time();
-    for (const auto& [name, body] : scene.bodies()) {
-      const b2Vec2 p = body->GetPosition(), v = body->GetLinearVelocity();
-      file_ << ',' << p.x << ',' << p.y << ',' << body->GetAngle() << ',' << v.x << ',' << v.y << ','
-            << body->GetAngularVelocity();
-    }
-    for (const Probe& probe : scene.probes()) file_ << ',' << probe.history.back();
-    file_ << '\n';
-  }
-  void finish() {
-    file_.close();
-    if (!file_ || std::rename(partial_.c_str(), path_.c_str()) != 0) {
-      throw InvalidInput("--csv " + path_ + ": could not finish writing: " + std::strerror(errno));
-    }
-    done_ = true;
-  }
-
- private:
-  std::string path_, partial_;
-  std::ofstream file_;
-  bool done_ = false;
-};
-
 // Runs the lesson for `duration` and prints its expectations; returns how many failed.
 int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
   // Every probe keeps a value a step in memory; refuse a run whose record would not fit.
@@ -124,7 +73,7 @@ int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& o
             << " values (1.6 GB); shorten --duration or lower --hz";
     throw InvalidInput(message.str());
   }
-  if (csv) csv->header(lesson.scene());
+  if (csv) csv->header(lesson);
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {
     lesson.step();
@@ -196,11 +145,13 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   const RunOptions options = parse_run(args);
   Lesson lesson(lessons::resolve_lesson(options.lesson), options.overrides, options.settings);
   std::optional<CsvLog> csv;
-  if (!options.csv.empty()) csv.emplace(options.csv, lesson.path());
-  print_heading(lesson, out);
+  if (!options.csv.empty()) csv.emplace(options.csv, lesson, out);
+  // With --csv -, the rows are standard output's; the table goes to standard error.
+  std::ostream& report = options.csv == "-" ? std::cerr : out;
+  print_heading(lesson, report);
   // The lesson's own duration only when none is given: its function may not even be needed.
   const double duration = options.duration ? *options.duration : lesson.duration();
-  run_and_report(lesson, duration, csv ? &*csv : nullptr, out);
+  run_and_report(lesson, duration, csv ? &*csv : nullptr, report);
   if (csv) csv->finish();
   return 0;
 }

@@ -8,6 +8,7 @@
 #include "app/modes.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
+#include "ui/output_file.h"
 
 namespace {
 
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     frictionlab::use_installed_lessons();
+    // Ctrl-C while a CSV or PNG is being written leaves no temporary file behind.
+    frictionlab::ui::remove_partial_files_on_interrupt();
     const std::string command = args.empty() ? "" : args[0];
     static const char* const commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help", "--version"};
     // Anything but a command is a lesson (a name or a .lua file) or the window's options.

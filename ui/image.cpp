@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "ui/output_file.h"
+
 namespace frictionlab::ui {
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
@@ -39,24 +41,6 @@ std::string unused_path(const std::string& folder, const std::string& stem, cons
     path = where / (stem + "_" + std::to_string(n) + extension);
   }
   return path.string();
-}
-
-void write_whole_file(const std::string& path, const void* data, std::size_t size) {
-  const std::string partial = path + ".partial";
-  std::FILE* file = std::fopen(partial.c_str(), "wb");
-  if (file == nullptr) throw std::runtime_error(path + ": cannot write there");
-  const bool written = std::fwrite(data, 1, size, file) == size;
-  const bool closed = std::fclose(file) == 0;
-  std::error_code error;
-  if (!written || !closed) {
-    std::filesystem::remove(partial, error);
-    throw std::runtime_error(path + ": the file could not be written whole (disk full?)");
-  }
-  std::filesystem::rename(partial, path, error);
-  if (error) {
-    std::filesystem::remove(partial, error);
-    throw std::runtime_error(path + ": cannot replace the file there");
-  }
 }
 
 void write_png(const Image& image, const std::string& path) {

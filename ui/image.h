@@ -21,14 +21,13 @@ struct Image {
   std::uint8_t* pixel(int x, int y) { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
-// Encodes to PNG in memory, writes PATH.partial, then renames it over PATH: a reader never
-// sees half a picture, and a failure leaves nothing behind. Throws std::runtime_error.
+// Encodes to PNG in memory and writes it whole or not at all, never over anything but a
+// regular file (ui/output_file.h): a reader never sees half a picture, and a failure leaves
+// nothing behind. Throws std::runtime_error.
 void write_png(const Image& image, const std::string& path);
 // FOLDER/STEM.EXTENSION, or STEM_2, STEM_3... when taken: a new file never replaces one made
 // before. Throws std::runtime_error when the folder cannot be looked into.
 std::string unused_path(const std::string& folder, const std::string& stem, const std::string& extension);
-// The same for any bytes: PATH.partial, then renamed over PATH.
-void write_whole_file(const std::string& path, const void* data, std::size_t size);
 // The encoded PNG bytes, for timing the encoder apart from the disk.
 std::vector<std::uint8_t> encode_png(const Image& image);
 // Throws std::runtime_error naming the path when it cannot be read as a PNG.

@@ -16,6 +16,7 @@
 #include "lessons/runtime/catalog.h"
 #include "ui/frame.h"
 #include "ui/image.h"
+#include "ui/output_file.h"
 
 namespace frictionlab::ui {
 namespace {

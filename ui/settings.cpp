@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ui/image.h"
+#include "ui/output_file.h"
 
 namespace frictionlab::ui {
 
