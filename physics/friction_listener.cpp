@@ -39,6 +39,8 @@ void FrictionListener::BeginContact(b2Contact* contact) {
   record.body_b = contact->GetFixtureB()->GetBody();
   record.material_a = fixture_material(contact->GetFixtureA());
   record.material_b = fixture_material(contact->GetFixtureB());
+  record.radius_a = contact->GetFixtureA()->GetShape()->m_radius;
+  record.radius_b = contact->GetFixtureB()->GetShape()->m_radius;
   if (!pairs_.has_pair(record.material_a, record.material_b)) {
     // Throwing here would unwind through Box2D and leave the world locked; the contact is
     // switched off instead and the scene reports the error once the step is over.
@@ -116,7 +118,7 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   if (r.fresh && r.siblings > 0 && rule.judges_groups) join_group(contact, r);
 
   b2WorldManifold manifold;
-  contact->GetWorldManifold(&manifold);
+  world_manifold(contact, r, &manifold);
   r.point_count = contact->GetManifold()->pointCount;
   r.normal = manifold.normal;
   const b2Vec2 t = ContactRecord::tangent_of(r.normal);
@@ -134,12 +136,54 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   }
   contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
   r.fresh = false;
+  r.solving = true;
 }
 
-void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {
-  ContactRecord* found = mutable_record(contact);
-  if (found == nullptr || found->unpaired) return;
-  ContactRecord& r = *found;
+void FrictionListener::world_manifold(const b2Contact* contact, const ContactRecord& r, b2WorldManifold* world) {
+  // b2Contact::GetWorldManifold reaches the transforms and skins through the fixtures, their
+  // bodies and shapes: four more objects a contact and step, cache misses all in a big pile.
+  // The record keeps the bodies and skins, so a face's points are found here, with Box2D 2.4.1's
+  // arithmetic in its order (each point midway between the two surfaces, the normal from A to
+  // B), which gives the same floats. A circle's manifold is left to Box2D.
+  const b2Manifold* m = contact->GetManifold();
+  if (m->type == b2Manifold::e_circles || m->pointCount == 0) {
+    contact->GetWorldManifold(world);
+    return;
+  }
+  const bool face_a = m->type == b2Manifold::e_faceA;
+  // The face's body, whose frame holds the normal and the plane, and the other, whose frame
+  // holds the clipped points.
+  const b2Transform& face = (face_a ? r.body_a : r.body_b)->GetTransform();
+  const b2Transform& other = (face_a ? r.body_b : r.body_a)->GetTransform();
+  const float face_radius = face_a ? r.radius_a : r.radius_b;
+  const float other_radius = face_a ? r.radius_b : r.radius_a;
+  const b2Vec2 normal = b2Mul(face.q, m->localNormal);
+  const b2Vec2 plane = b2Mul(face, m->localPoint);
+  for (int i = 0; i < m->pointCount; ++i) {
+    const b2Vec2 clipped = b2Mul(other, m->points[i].localPoint);
+    const b2Vec2 on_face = clipped + (face_radius - b2Dot(clipped - plane, normal)) * normal;
+    const b2Vec2 on_other = clipped - other_radius * normal;
+    world->points[i] = face_a ? 0.5f * (on_face + on_other) : 0.5f * (on_other + on_face);
+  }
+  world->normal = face_a ? normal : -normal;
+}
+
+void FrictionListener::finish_step() {
+  // Box2D would report each contact to PostSolve in the solver's order, and finding the record
+  // from there costs two dependent cache misses (the contact, then the record); the records are
+  // read here in their own order instead, the contact's impulses from its manifold, where the
+  // solver stored them. The physics is the same; only the ledger's sums are added up in
+  // another order.
+  for (ContactRecord& r : records_) {
+    if (!r.solving) continue;
+    r.solving = false;
+    settle(r);
+  }
+}
+
+void FrictionListener::settle(ContactRecord& r) {
+  b2Contact* contact = r.contact;
+  const b2Manifold* solved_manifold = contact->GetManifold();
   const TreatmentRule& rule = rule_at(r.pair_index);
   const b2Vec2 n = r.normal;
   const b2Vec2 t = ContactRecord::tangent_of(n);
@@ -149,13 +193,13 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
   double normal_impulse = 0.0;
   double tangent_impulse = 0.0;
   float sliding_end = 0.0f;
-  const int count = std::min(r.point_count, impulse->count);
+  const int count = std::min(r.point_count, solved_manifold->pointCount);
   for (int i = 0; i < count; ++i) {
     const b2Vec2 p = r.world_points[i];
     const b2Vec2 end_velocity = point_velocity(r.body_b, p) - point_velocity(r.body_a, p);
     const b2Vec2 mean_velocity = 0.5f * (r.start_velocity[i] + end_velocity);
-    const float jn = impulse->normalImpulses[i];
-    const float jt = impulse->tangentImpulses[i];
+    const float jn = solved_manifold->points[i].normalImpulse;
+    const float jt = solved_manifold->points[i].tangentImpulse;
     // An impulse changes kinetic energy by itself times the mean of the velocities before
     // and after it: exact for the solver's sequence of impulses, so the ledger closes.
     work_.friction += jt * b2Dot(mean_velocity, t);
@@ -191,7 +235,7 @@ void FrictionListener::PostSolve(b2Contact* contact, const b2ContactImpulse* imp
     if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
     rule.after_solve(r, pair, solved);
   }
-  terms_pending_ = terms_pending_ || r.breakaway_impulse != 0.0;
+  if (r.breakaway_impulse != 0.0) owing_.push_back(contact);
 }
 
 bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved) {
@@ -203,8 +247,8 @@ bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& 
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
     if (first && other != contact) return false;
     first = false;
-    // Box2D keeps each point's accumulated impulses in the manifold for warm starting; they are
-    // stored before any contact's PostSolve is called. Along this contact's tangent, and with
+    // Box2D keeps each point's accumulated impulses in the manifold for warm starting, where
+    // the solver left them at the end of the step. Along this contact's tangent, and with
     // the same sign convention (on the body that is this contact's B). The member's points and
     // normal are those its PreSolve saw in this step, as the solver did.
     const b2Manifold* manifold = other->GetManifold();
@@ -260,12 +304,20 @@ void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
 
 void FrictionListener::apply_contact_forces(b2World& world, float h) {
   step_ = h;
+  if (!drag_due()) {
+    // Most worlds (a pile of boxes, every stick-slip lesson without c or b) owe nothing before
+    // a step but the breakaway corrections of the few contacts that broke away in the last
+    // one: those alone are visited, in the order the last step found them.
+    for (b2Contact* contact : owing_) {
+      if (ContactRecord* found = mutable_record(contact)) apply_velocity_terms(contact, *found);
+    }
+    owing_.clear();
+    return;
+  }
   // The world's contact list, not the hash map, sets the order: impulses summed in a fixed
   // order keep runs bit-for-bit repeatable.
-  // Most worlds (a pile of boxes, every stick-slip lesson without c or b) owe nothing before
-  // most steps, and then the world's contacts are not visited at all.
-  if (!velocity_terms_due()) return;
-  terms_pending_ = false;
+  owing_.clear();
+  drag_pending_ = false;
   for (b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext()) {
     if (!contact->IsTouching()) continue;
     ContactRecord* found = mutable_record(contact);
@@ -273,8 +325,8 @@ void FrictionListener::apply_contact_forces(b2World& world, float h) {
   }
 }
 
-bool FrictionListener::velocity_terms_due() const {
-  if (terms_pending_ || run_rule_->explicit_dry_force != nullptr) return true;
+bool FrictionListener::drag_due() const {
+  if (drag_pending_ || run_rule_->explicit_dry_force != nullptr) return true;
   const int n = pairs_.material_count();
   for (int index = 0; index < n * n; ++index) {
     const FrictionPair& pair = pairs_.pair_at(index);
@@ -334,7 +386,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   r.explicit_impulse = dry_impulse;
   r.damping_force = damping_impulse / h;
   // Cleared at the next step even if the drag has been switched off by then.
-  terms_pending_ = terms_pending_ || r.damping_force != 0.0;
+  drag_pending_ = drag_pending_ || r.damping_force != 0.0;
   if (explicit_dry) r.friction_force = dry_impulse / h;
 }
 
@@ -345,7 +397,9 @@ void FrictionListener::forget_trial() {
     r.breakaway_impulse = 0.0;
     r.held_force = 0.0;
     r.explicit_impulse = 0.0;
+    r.solving = false;
   }
+  owing_.clear();
   work_ = ContactWork{};
 }
 

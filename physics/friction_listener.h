@@ -27,6 +27,8 @@ struct ContactRecord {
   b2Body* body_b = nullptr;
   int material_a = -1;
   int material_b = -1;
+  float radius_a = 0.0f;           // the fixtures' shapes' skins (b2Shape::m_radius), m
+  float radius_b = 0.0f;
   int pair_index = -1;             // the pair's place in the table (PairTable::pair_at)
   ContactState state = ContactState::sticking;
   float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
@@ -42,9 +44,10 @@ struct ContactRecord {
   b2Vec2 world_points[b2_maxManifoldPoints];
   b2Vec2 start_velocity[b2_maxManifoldPoints];  // B's point velocity minus A's
   bool fresh = true;               // not yet seen by PreSolve: its first state comes from its speed
+  bool solving = false;            // seen by PreSolve in this step, not yet by finish_step
   // How many other touching contacts join the same two bodies through the same pair of
   // materials (a body on feet has one contact a foot). Such a group sticks or slips as one:
-  // under stick-slip its state is decided once a step for all of them (see PostSolve).
+  // under stick-slip its state is decided once a step for all of them (see settle).
   int siblings = 0;
   bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction while stuck in the previous step
@@ -111,7 +114,11 @@ class FrictionListener : public b2ContactListener {
   void BeginContact(b2Contact* contact) override;
   void EndContact(b2Contact* contact) override;
   void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
-  void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
+  // After each world step: what the solver did at every contact it solved, read from the
+  // contacts' manifolds, goes into their records (forces, sliding, work, the treatment's next
+  // state). The scene calls it right after b2World::Step; until then the records hold the
+  // previous step's figures.
+  void finish_step();
 
  private:
   // The breakaway impulse owed, the viscous and quadratic drag and the regularized dry force,
@@ -132,7 +139,7 @@ class FrictionListener : public b2ContactListener {
       if (!visit(static_cast<const b2Contact*>(edge->contact), *member)) return;
     }
   }
-  // In the PostSolve of a contact with siblings: false unless it is its group's first contact;
+  // In the settling of a contact with siblings: false unless it is its group's first contact;
   // if it is, the group's totals and sliding go into `solved`.
   bool sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved);
   // The state the group's first contact was left in, given to the rest of the group.
@@ -154,8 +161,13 @@ class FrictionListener : public b2ContactListener {
   void place(ContactRecord& record, std::size_t index) {
     record.contact->SetRestitutionThreshold(static_cast<float>(index));
   }
-  // Whether any contact may owe a velocity term before the coming step.
-  bool velocity_terms_due() const;
+  // The figures of one contact the solver solved in the last step (see finish_step).
+  void settle(ContactRecord& r);
+  // The contact's world manifold now, as b2Contact::GetWorldManifold gives it.
+  static void world_manifold(const b2Contact* contact, const ContactRecord& r, b2WorldManifold* world);
+  // Whether some contact may owe a drag or regularized force before the coming step, so that
+  // every contact must be visited (breakaway corrections alone are listed in owing_).
+  bool drag_due() const;
   const TreatmentRule& rule_at(int pair_index) const {
     const PairTreatment& own = pairs_.treatment_at(pair_index);
     return own.own ? rule_of(own.treatment) : *run_rule_;
@@ -171,8 +183,10 @@ class FrictionListener : public b2ContactListener {
   float step_ = 1.0f / 240.0f;
   // Records live in one dense array (an ended contact's slot is filled by the last record).
   std::vector<ContactRecord> records_;
-  // Some record was left a breakaway impulse or a drag force to apply or clear.
-  bool terms_pending_ = false;
+  // Some record was left a drag force to apply or clear.
+  bool drag_pending_ = false;
+  // The contacts left a breakaway correction by the last step, in the order it found them.
+  std::vector<b2Contact*> owing_;
   ContactWork work_;
   std::string error_;
 };

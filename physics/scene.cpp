@@ -469,6 +469,7 @@ void Scene::advance(double t, float h, double t_end, bool move) {
   }
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
+  listener_.finish_step();
   ++world_steps_;
   if (std::string error = listener_.take_error(); !error.empty()) throw InvalidInput(error);
   for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());

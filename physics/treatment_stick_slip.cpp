@@ -87,7 +87,7 @@ double group_breakaway_correction(const ContactRecord& r, const FrictionPair& pa
 
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   // A rigid body sticks or slips as a whole on all its contacts with the other body, so what
-  // they reached together decides, once for the group (see FrictionListener::PostSolve). For a
+  // they reached together decides, once for the group (see FrictionListener::settle). For a
   // contact alone the group's figures are its own.
   const double reached = std::abs(solved.group_tangent_impulse) / solved.group_normal_impulse;
   if (r.state == ContactState::sticking) {

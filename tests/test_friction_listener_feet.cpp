@@ -5,10 +5,11 @@
 // contact_area, so it cannot tip the block or shift its load between the feet.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
-#include <vector>
+#include <tuple>
 
 #include "physics/scene.h"
 
@@ -66,7 +67,7 @@ PulledBlock make_block(int feet, double mu_s, double mu_k, double hz, double pul
   return made;
 }
 
-// Whether every touching contact between the block and the floor slips (all), or any does.
+// How many of the block's contacts with the floor touch, and how many of those slip.
 struct Touches {
   int touching = 0;
   int slipping = 0;
@@ -92,6 +93,7 @@ struct PullRun {
   int split_steps = 0;           // steps that ended with some feet slipping and some stuck
 };
 
+// For a block made with the default pull rate.
 PullRun pull_until(PulledBlock& made, double until) {
   Scene& scene = *made.scene;
   const float x0 = made.block->GetPosition().x;
