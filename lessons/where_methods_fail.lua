@@ -58,6 +58,8 @@ local block = box { "block", material = "block", width = 0.4, height = 0.2, on =
 local creeping = box { "creeping", material = "creeping_block", width = 0.4, height = 0.2, on = slope, at = 4.4, mass = 1 }
 -- 1.2 m apart: close enough to be seen together, and the creep (3 cm/s) never closes the gap.
 local jittering = box { "jittering", material = "jittering_block", width = 0.4, height = 0.2, on = slope, at = 3.2, mass = 1 }
+-- A strip each, on its own block: the three methods side by side, each big enough to read.
+view { lanes = { block, creeping, jittering }, titles = { "stick-slip", "regularized, large epsilon: creeps", "regularized, small epsilon: jitters" } }
 local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 
 -- Probes and plots ------------------------------------------------------------------------

@@ -26,7 +26,10 @@ struct Screen {
 };
 const Screen screens[] = {{"1280x720", 1280, 720, 0.0f},
                           {"1024x768", 1024, 768, 0.0f},
-                          {"projector_1920x1080", 1920, 1080, 1.35f * 1.5f}};
+                          {"projector_1920x1080", 1920, 1080, 1.35f * 1.5f},
+                          // The window's frame in projector mode on a 1920 × 1080 screen, under its
+                          // menu bar and above its transport bar.
+                          {"window_projector_1920x1080", 1920, 944, 1.35f * 1.5f}};
 
 // A label's box as drawn, without the placer's 2 px of padding, so labels that only touch pass.
 ImVec4 drawn(const ImVec4& box) { return ImVec4(box.x + 2.0f, box.y + 2.0f, box.z - 2.0f, box.w - 2.0f); }
