@@ -511,6 +511,29 @@ TEST(Sandbox, TheWheelZoomsAndADragOnEmptySpacePans) {
   EXPECT_FLOAT_EQ(driver.sandbox().world_camera().pixels_per_metre, before.pixels_per_metre);
 }
 
+// With lanes, a drag stays in the lane it began in: each lane's camera sits on its own body's
+// height, so the next lane's camera would put the hand metres away (terrain's lanes are 4 m apart).
+TEST(Sandbox, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
+  Driver driver("terrain");
+  driver.frame();
+  const Camera lane = driver.sandbox().world_camera();  // the first lane's, asphalt_box's
+  const b2Body* box = driver.lesson().scene().body("asphalt_box");
+  const ImVec2 held = lane.to_screen(box->GetWorldCenter());
+  driver.move_mouse(held);
+  driver.mouse_button(true);
+  ASSERT_EQ(driver.lesson().scene().grabbed(), box);
+  // 5 px into the lane below (whole pixels: ImGui rounds the mouse's position down).
+  const ImVec2 below(std::floor(held.x), std::floor(lane.origin.y + lane.size.y) + 5.0f);
+  ImGui::GetIO().MousePos = below;
+  driver.frame();
+  const b2Vec2 target = driver.lesson().scene().grab_target();
+  const b2Vec2 meant = lane.to_world(below);
+  EXPECT_NEAR(target.x, meant.x, 1e-3);
+  EXPECT_NEAR(target.y, meant.y, 1e-3);
+  EXPECT_LT(std::abs(target.y - box->GetWorldCenter().y), 1.0f);
+  driver.mouse_button(false);
+}
+
 // A copy of a built-in lesson a student can edit, opened in the sandbox.
 struct StudentCopy {
   ScriptFile script{read_file(lessons::resolve_lesson("incline"))};
@@ -873,8 +896,8 @@ TEST(Sandbox, ANegativeToleranceMeasuresNothing) {
   EXPECT_TRUE(driver.sandbox().control("use it").has_value());
 }
 
-// F11 asks the window to toggle full screen, and the setting (which the window keeps in its
-// settings file, and opens with) follows.
+// F11 asks the window (once a press) to toggle full screen; the window keeps the result in its
+// settings (window_opens_full_screen_when_the_settings_say_so checks that under Xvfb).
 TEST(Sandbox, F11TogglesFullScreen) {
   Driver driver("incline");
   driver.frame();

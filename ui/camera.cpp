@@ -1,6 +1,7 @@
 #include "ui/camera.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace frictionlab::ui {
 namespace {
@@ -153,12 +154,20 @@ WorldFraming WorldFraming::of(const lessons::Lesson& lesson) {
   framing.extent = b2Vec2{std::max(box.upperBound.x - box.lowerBound.x, 0.3f),
                           std::max(box.upperBound.y - box.lowerBound.y, 0.3f)};
   framing.smallest_body = smallest_moving_body(scene);
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() == b2_dynamicBody) framing.tallest_body = std::max(framing.tallest_body, body_size(body).y);
+  }
+  const b2AABB moving = moving_bounds(scene);
+  framing.moving_span = moving.upperBound.x - moving.lowerBound.x;
   return framing;
 }
 
 std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImVec2 size, float free_width, float scale,
                                           const ViewAdjust& adjust) const {
   using Kind = lessons::View::Kind;
+  // A window squeezed to nothing still gets a camera with a positive, finite scale.
+  free_width = std::max(free_width, 1.0f);
+  size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
   const std::vector<const b2Body*> bodies = view_bodies(scene, view);
   const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
   const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
@@ -175,18 +184,14 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
     // Each lane's bodies, with room above for the normal force and below for the ground, fit
     // in its strip: the tallest moving body a third of the strip high, and every moving body
     // across the free width, unless a width says.
-    float tallest = 0.0f;
-    for (const auto& [name, body] : scene.bodies()) {
-      if (body->GetType() == b2_dynamicBody) tallest = std::max(tallest, body_size(body).y);
-    }
-    if (tallest > 0.0f) {
+    // Both as they were at t = 0, so the scale does not breathe as a box tumbles or the bodies
+    // spread.
+    if (tallest_body > 0.0f) {
       if (view.width <= 0.0) {
-        pixels_per_metre = strip_height / (3.0f * tallest);
-        const b2AABB moving = moving_bounds(scene);
-        const float span = moving.upperBound.x - moving.lowerBound.x;
-        if (span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * span));
+        pixels_per_metre = strip_height / (3.0f * tallest_body);
+        if (moving_span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * moving_span));
       }
-      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.0f * tallest));
+      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.0f * tallest_body));
     }
   }
   // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
@@ -201,6 +206,7 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
   }
   const bool zoomed_in = kind != Kind::window && pixels_per_metre < readable;
   if (kind != Kind::window) pixels_per_metre = std::max(pixels_per_metre, readable);
+  if (!std::isfinite(pixels_per_metre) || pixels_per_metre <= 0.0f) pixels_per_metre = 1.0f;
 
   b2Vec2 centre{0.0f, 0.0f};
   switch (kind) {

@@ -1,5 +1,6 @@
 // Metres to pixels. The zoom is chosen once from the lesson's world at t = 0 (so a block does
-// not shrink as it slides away) and its view{}; the view then follows what moves.
+// not shrink as it slides away) and its view{}; the view then follows what moves. The
+// window's wheel and drag change it on top (ViewAdjust).
 #pragma once
 
 #include <box2d/box2d.h>
@@ -31,8 +32,8 @@ struct Camera {
 // ground and left out of the framing; a long incline is neither.
 bool is_ground(const b2Fixture* fixture);
 
-// The part of the world a lesson is about: every body but the grounds, the spring hands and
-// the pulleys.
+// The part of the world a lesson is about: every body but the grounds, with the spring hands
+// and the pulleys.
 b2AABB lesson_bounds(const Scene& scene);
 
 // The part of the world that moves: every dynamic body. Empty (zero box) when none does.
@@ -52,6 +53,8 @@ struct WorldFraming {
   lessons::View view;            // the lesson's view{} (its bodies belong to that build)
   b2Vec2 extent{1.0f, 1.0f};     // m, the size of lesson_bounds at t = 0
   float smallest_body = 0.0f;    // m, the longer side of the smallest moving body at t = 0
+  float tallest_body = 0.0f;     // m, the height of the tallest moving body at t = 0 (lanes' scale)
+  float moving_span = 0.0f;      // m, how wide what moves spread at t = 0 (lanes' scale)
   // Frames the lesson as it is now: this is meant to be called at t = 0.
   static WorldFraming of(const lessons::Lesson& lesson);
   // The cameras on the view rectangle as the lesson's view asks (one per lane; one otherwise),

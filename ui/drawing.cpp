@@ -77,10 +77,11 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
   const ImVec2 directions[8] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
   ImVec2 chosen = wanted;
   bool found = free_at(wanted);
-  for (int ring = 1; ring <= 10 && !found; ++ring) {
+  // Half steps, so a label fits a gap of one line and a half.
+  for (int ring = 1; ring <= 20 && !found; ++ring) {
+    const float reach = 0.5f * static_cast<float>(ring);
     for (const ImVec2& d : directions) {
-      const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * static_cast<float>(ring),
-                                             wanted.y + d.y * step_y * static_cast<float>(ring)));
+      const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach));
       if (free_at(candidate)) {
         chosen = candidate;
         found = true;

@@ -1,6 +1,7 @@
 #include "ui/frame.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "ui/overlays.h"
 #include "ui/panels.h"
@@ -56,8 +57,8 @@ Camera world_camera(const lessons::Lesson& lesson, const WorldFraming& framing, 
 
 float arrow_scale(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 display, float scale) {
   const FrameLayout layout = FrameLayout::of(display, scale);
-  // The heaviest body's weight is a quarter of the view's height (of a lane's, with lanes):
-  // long enough to read, short enough to stay in the picture.
+  // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
+  // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
   const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
   // A lane holds one body's arrows only, so they may take more of its height.
@@ -86,6 +87,17 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     const std::vector<Camera> cameras =
         world_cameras(lesson, framing, display, s, style.origin, style.view_adjust);
     const float newtons_to_pixels = arrow_scale(lesson, framing, display, s);
+    // With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
+    std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (body->GetType() != b2_dynamicBody) continue;
+      std::size_t nearest = 0;
+      for (std::size_t lane = 1; lane < cameras.size(); ++lane) {
+        const float y = body->GetWorldCenter().y;
+        if (std::abs(y - cameras[lane].centre.y) < std::abs(y - cameras[nearest].centre.y)) nearest = lane;
+      }
+      lane_bodies[nearest].push_back(body);
+    }
     for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
       const Camera& camera = cameras[lane];
       const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
@@ -104,7 +116,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
                             name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
       }
-      draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels);
+      draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels,
+                 cameras.size() > 1 ? &lane_bodies[lane] : nullptr);
       if (style.record != nullptr) {
         style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks()});
         style.record->inset = inset;

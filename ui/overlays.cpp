@@ -49,19 +49,19 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
     if (found == nullptr || !touching(*found)) continue;
     const ContactRecord& record = *found;
     const b2Vec2 point = centre_of_load(record);
-    forces.push_back({ForceKind::normal, body, point, record.normal_on(body)});
+    const b2Body* other = a == body ? b : a;
+    forces.push_back({ForceKind::normal, body, point, record.normal_on(body), other});
     const b2Vec2 drag = record.side(body) * static_cast<float>(record.damping_force) * record.tangent();
     // Friction (and drag) from one other body is drawn as one arrow, their sum, at the centre of
     // the load: a block on six feet has six normal forces to show but one friction force to
     // read. Each foot's normal force keeps its own arrow.
-    const b2Body* other = a == body ? b : a;
     const float load = record.normal_on(body).Length();
     const auto same = std::find_if(shared.begin(), shared.end(), [&](const Shared& s) { return s.other == other; });
     if (same == shared.end()) {
       shared.push_back({other, forces.size(), load});
-      forces.push_back({ForceKind::friction, body, point, record.friction_on(body)});
+      forces.push_back({ForceKind::friction, body, point, record.friction_on(body), other});
       // The viscous and quadratic terms apart from dry friction, so mu_k·N stays readable.
-      forces.push_back({ForceKind::drag, body, point, drag});
+      forces.push_back({ForceKind::drag, body, point, drag, other});
       continue;
     }
     ForceOnBody& friction = forces[same->friction];

@@ -20,6 +20,7 @@ struct ForceOnBody {
   const b2Body* body = nullptr;
   b2Vec2 point{0.0f, 0.0f};  // world, where it acts
   b2Vec2 force{0.0f, 0.0f};  // N, world axes
+  const b2Body* other = nullptr;  // the body pushing (normal force) or rubbing (friction, drag), if any
 };
 
 struct ContactMark {
@@ -35,10 +36,10 @@ struct ContactMark {
 // The body a lesson is about: its first dynamic body, in the order the script made them.
 const b2Body* main_body(const Scene& scene);
 
-// Every force on a dynamic body now: weight at the centre of mass; for each touching contact
-// the normal force, dry friction and (with c or b) drag at the point the normal load is
-// centred on; springs at their ends, ropes at theirs and applied forces at their points, as the last
-// step applied them.
+// Every force on a dynamic body now: weight at the centre of mass; the normal force at each
+// touching contact, where its load is centred; dry friction and (with c or b) drag summed over
+// the contacts with each other body, at the centre of their loads; springs at their ends, ropes
+// at theirs and applied forces at their points, as the last step applied them.
 std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body);
 // Every touching contact with a dynamic body in it, in the world's contact order.
 std::vector<ContactMark> contact_marks(const Scene& scene);

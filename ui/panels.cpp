@@ -130,7 +130,8 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
     const float numbers = widest[0] + widest[1] + widest[2] + 3.0f * padding;
     // Beside the numbers, a name needs room for a word or two; with large text in a narrow
     // column there is none, and each name goes on a line of its own above its numbers.
-    const bool names_above = ImGui::GetContentRegionAvail().x - numbers < 9.0f * ImGui::CalcTextSize("m").x;
+    const float table_width = ImGui::GetContentRegionAvail().x;
+    const bool names_above = table_width - numbers < 9.0f * ImGui::CalcTextSize("m").x;
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
     // A name above its numbers spans the row: the cells must not clip it.
     if (ImGui::BeginTable("rows", names_above ? 3 : 4, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
@@ -153,7 +154,7 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
         ImGui::TableNextColumn();
         if (names_above) {
           // The name across the whole row: drawn from the first cell, wrapped at the table's edge.
-          ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x + numbers);
+          ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
           ImGui::TextUnformatted(rows[i].name.c_str());
           ImGui::PopTextWrapPos();
           ImGui::TableNextRow();

@@ -174,7 +174,10 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
   Scene& scene = lesson.scene();
   const FrameLayout layout = FrameLayout::of(size, scale, origin);
   cameras_ = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
-  const Camera& camera = world_camera_at(io.MousePos);
+  // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
+  // own body's height, so the same screen point is another world point in the next lane.
+  const bool dragging = (hand_held_ || panning_from_) && drag_lane_ < cameras_.size();
+  const Camera& camera = dragging ? cameras_[drag_lane_] : world_camera_at(io.MousePos);
   const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
   const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
   const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
@@ -185,14 +188,17 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
     view_adjust_.zoom = std::clamp(view_adjust_.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
     const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
     const auto lane = static_cast<std::size_t>(&camera - cameras_.data());
-    view_adjust_.pan += under - zoomed[lane].to_world(io.MousePos);
+    const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
+    if (shift.IsValid()) view_adjust_.pan += shift;
   }
-  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+  // A double click on empty space (not on a body, which the first click took hold of).
+  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !hand_held_) {
     view_adjust_ = {};
     panning_from_.reset();
     return;
   }
   if (scene.grabbed() == nullptr && over_world && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    drag_lane_ = static_cast<std::size_t>(&camera - cameras_.data());
     const b2Vec2 point = camera.to_world(io.MousePos);
     for (const auto& [name, body] : scene.bodies()) {
       if (body->GetType() != b2_dynamicBody) continue;
@@ -213,7 +219,8 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
     if (!io.MouseDown[ImGuiMouseButton_Left]) {
       panning_from_.reset();
     } else {
-      view_adjust_.pan += *panning_from_ - camera.to_world(io.MousePos);
+      const b2Vec2 shift = *panning_from_ - camera.to_world(io.MousePos);
+      if (shift.IsValid()) view_adjust_.pan += shift;  // a view squeezed to nothing has no scale to pan by
     }
   }
   // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves

@@ -151,6 +151,7 @@ class Sandbox {
   std::vector<Camera> cameras_{Camera{}};
   ViewAdjust view_adjust_;
   std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
+  std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
 
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;

@@ -75,6 +75,8 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
     if (sandbox.idle() && frames_left < 0 && settle_frames == 0) {
       const double asleep_from = glfwGetTime();
       glfwWaitEventsTimeout(0.25);
+      // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
+      last = glfwGetTime();
       // Woken by input: a few frames; by the clock (to look at the script file): one.
       settle_frames = glfwGetTime() - asleep_from < 0.24 ? 3 : 1;
     } else {

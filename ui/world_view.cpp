@@ -179,7 +179,8 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
 }  // namespace
 
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
-                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels) {
+                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
+                const std::vector<const b2Body*>* labelled) {
   const Scene& scene = lesson.scene();
   draw->AddRectFilled(camera.origin, add(camera.origin, camera.size), theme.sky);
   for (const auto& [name, body] : scene.bodies()) {
@@ -198,6 +199,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   // Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped)
   // but their labels would otherwise be pushed into the lane by the label placer.
+  const auto ours = [&](const b2Body* body) {
+    return labelled == nullptr || std::find(labelled->begin(), labelled->end(), body) != labelled->end();
+  };
   const auto in_view = [&](b2Vec2 point) {
     const ImVec2 at = camera.to_screen(point);
     return at.x >= camera.origin.x && at.x <= camera.origin.x + camera.size.x && at.y >= camera.origin.y &&
@@ -205,11 +209,12 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   };
   std::vector<ContactMark> marks;
   for (const ContactMark& mark : contact_marks(scene)) {
-    if (in_view(mark.point)) marks.push_back(mark);
+    const b2Body* moving = mark.body_b->GetType() == b2_dynamicBody ? mark.body_b : mark.body_a;
+    if (in_view(mark.point) && ours(moving)) marks.push_back(mark);
   }
   std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter())) continue;
+    if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
     for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
       arrows.push_back(arrow);
     }
@@ -243,7 +248,11 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     b2Vec2 sum{0.0f, 0.0f};
     std::size_t longest = i;
     for (std::size_t j = 0; j < arrows.size(); ++j) {
-      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body) continue;
+      // The same two bodies: a body's feet on one floor, not a block's floor and the block on it.
+      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body ||
+          arrows[j].force.other != force.other) {
+        continue;
+      }
       ++count;
       sum += arrows[j].force.force;
       if (arrows[j].length() > arrows[longest].length()) longest = j;

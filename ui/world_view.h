@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include <vector>
+
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
 #include "ui/drawing.h"
@@ -14,7 +16,11 @@ namespace frictionlab::ui {
 
 // The world, the arrows on every dynamic body and the contact marks into `camera`'s view;
 // `labels` already knows what else covers the view (the free-body inset), and keeps labels off it.
+// `labelled`, when given, are the bodies whose arrows and contact marks this view draws (a
+// lane's own): the others are drawn as bodies only, so a neighbour seen at a lane's edge does
+// not repeat its forces there.
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
-                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels);
+                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
+                const std::vector<const b2Body*>* labelled = nullptr);
 
 }  // namespace frictionlab::ui

@@ -121,7 +121,7 @@ struct View {
   // Names, not pointers: a rebuild (a mass changed, a reload) makes new bodies of the same names.
   std::vector<std::string> bodies;    // follow: the one; lanes: one per strip
   std::vector<std::string> titles;    // lanes: what each strip is called (its body's name if none)
-  double width = 0.0;                 // m across the view (follow, lanes); 0: framed as whole
+  double width = 0.0;                 // m across the view (follow, lanes); 0: the framing chooses
   b2Vec2 low{0.0f, 0.0f}, high{0.0f, 0.0f};  // window: its lower-left and upper-right corners
   std::string declared_at;            // "path:line" of view{}, empty when the lesson has none
 };
