@@ -209,5 +209,28 @@ TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
   EXPECT_FALSE(legend_corner(low, high, size, 5, {ImVec2(10, 10), ImVec2(190, 10), ImVec2(10, 90), ImVec2(190, 90)}, 2).clear);
 }
 
+// Projector text (2 times larger) in the plot the window gives terrain on a 1920 × 1080
+// projector: four series and the slipping band. Before, the legend's rows above the data left
+// it no height and the plot was drawn empty; the y labels were printed on top of each other.
+TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
+  static FontsForLayout* large = [] {
+    auto* fonts = new FontsForLayout;
+    fonts->host.prepare(2.025f, ThemeName::light);
+    return fonts;
+  }();
+  large->host.make_current();
+  const Fonts& fonts = large->host.fonts();
+  LessonAt at("terrain", {}, 2.5);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(590.0f, 200.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  EXPECT_GT(layout.low_left.y - layout.high_right.y, 0.25f * 200.0f) << "the data area lost its height";
+  EXPECT_FALSE(layout.points.empty());
+  for (std::size_t i = 1; i < layout.y_ticks.size(); ++i) {
+    const float gap = layout.to_screen(0.0, layout.y_ticks[i - 1]).y - layout.to_screen(0.0, layout.y_ticks[i]).y;
+    EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "y labels " << layout.y_tick_labels[i - 1] << " and "
+                                                << layout.y_tick_labels[i] << " overlap";
+  }
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

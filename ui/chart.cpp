@@ -192,6 +192,23 @@ std::vector<Key> keys_of(const Chart& chart) {
 
 float width_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; }
 
+// How many rows the keys take, wrapped as the legend above the data wraps them.
+float width_of(ImFont* font, const std::string& text);
+
+std::size_t legend_rows(const std::vector<Key>& keys, float width, ImFont* font, float s) {
+  std::size_t rows = keys.empty() ? 0 : 1;
+  float x = 0.0f;
+  for (const Key& key : keys) {
+    const float w = width_of(font, key.name) + 32.0f * s;
+    if (x > 0.0f && x + w > width) {
+      x = 0.0f;
+      ++rows;
+    }
+    x += w;
+  }
+  return rows;
+}
+
 std::vector<Tick> ticks_every(const Axis& axis, int count) {
   if (axis.log) return ticks_of(axis);
   std::vector<Tick> ticks;
@@ -314,6 +331,15 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
           layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
           x += width_of(font, key.name) + 32.0f * s;
         }
+      } else if (static_cast<float>(legend_rows(keys, layout.high_right.x - layout.low_left.x, font, s)) * row_height >
+                 0.45f * (layout.low_left.y - layout.high_right.y)) {
+        // Rows above the data would leave it too little height (large text in a small plot):
+        // the legend goes in the corner it covers least of, over the data, rather than the plot
+        // losing its data.
+        layout.legend_outside = false;
+        layout.legend_min = inside.min, layout.legend_max = inside.max;
+        float y = inside.min.y;
+        for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
       } else {
         const float left = layout.low_left.x, right = layout.high_right.x;
         float x = left, y = layout.high_right.y - 4.0f * s;
@@ -339,6 +365,26 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
         layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + width_of(font, keys[i].name) + 22.0f * s),
                                    std::max(layout.legend_max.y, at.y + text));
+      }
+    }
+  }
+  // Fewer y ticks where the data area is short for its text (large text in a small plot): the
+  // labels at least a line and a third apart, so none is printed on another.
+  const float data_height = layout.low_left.y - layout.high_right.y;
+  const auto spacing = [&](const std::vector<double>& ticks) {
+    return ticks.size() < 2 ? INFINITY
+                            : static_cast<float>((ticks[1] - ticks[0]) / (layout.y_high - layout.y_low)) * data_height;
+  };
+  if (!axes.y.log && spacing(layout.y_ticks) < 1.35f * text) {
+    for (int count = chart.y_tick_count - 1; count >= 1; --count) {
+      const std::vector<Tick> fewer = ticks_every(axes.y, count);
+      std::vector<double> values;
+      for (const Tick& tick : fewer) values.push_back(tick.value);
+      if (spacing(values) >= 1.35f * text || count == 1) {
+        layout.y_ticks = values;
+        layout.y_tick_labels.clear();
+        for (const Tick& tick : fewer) layout.y_tick_labels.push_back(tick.label);
+        break;
       }
     }
   }
