@@ -123,6 +123,7 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
       if (frames_left == 0) break;
     }
     if (sandbox.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
+    // Wanted full screen with no monitor to fill (yet): the wish is kept, and tried each frame.
     if (settings.full_screen != full_screen) {
       GLFWmonitor* monitor = glfwGetPrimaryMonitor();
       const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
@@ -134,8 +135,6 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
       } else if (full_screen) {
         glfwSetWindowMonitor(window.get(), nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
         full_screen = false;
-      } else {
-        settings.full_screen = false;  // no monitor to fill
       }
     }
     glfwSwapBuffers(window.get());
