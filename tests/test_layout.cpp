@@ -58,6 +58,11 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
       }
       EXPECT_FALSE(overlaps(label, record.inset)) << where << ": the label at " << text_of(label)
                                                   << " is under the free-body diagram";
+      // Contact marks and lane titles (and the inset) were there before any label.
+      for (const ImVec4& mark : lane.avoided) {
+        EXPECT_FALSE(overlaps(label, mark)) << where << ": the label at " << text_of(label) << " covers a mark at "
+                                            << text_of(mark);
+      }
       EXPECT_TRUE(label.x >= camera.origin.x && label.z <= camera.origin.x + camera.size.x &&
                   label.y >= camera.origin.y && label.w <= camera.origin.y + camera.size.y)
           << where << ": the label at " << text_of(label) << " is cut by the edge of its view";
