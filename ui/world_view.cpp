@@ -53,8 +53,32 @@ void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShap
       if (std::abs(level.y) > 1e-3f * level.Length()) continue;
       const float angle = std::acos(std::clamp(b2Dot(level, slope) / (level.Length() * slope.Length()), -1.0f, 1.0f));
       if (angle < 0.5f * pi / 180.0f || angle > 89.5f * pi / 180.0f) continue;
-      const ImVec2 centre = camera.to_screen(corner);
+      ImVec2 centre = camera.to_screen(corner);
       const float radius = 46.0f * fonts.scale;
+      // A view zoomed in on a block may have left the corner out: the angle is then marked where
+      // the slope first comes into view, with a dashed level line to measure it from.
+      const auto shown = [&](ImVec2 p) {
+        const float room = radius + 30.0f * fonts.scale;
+        return p.x >= camera.origin.x + room && p.x <= camera.origin.x + camera.size.x - room &&
+               p.y >= camera.origin.y + room && p.y <= camera.origin.y + camera.size.y - 8.0f * fonts.scale;
+      };
+      if (!shown(centre)) {
+        // A lane's strip is too thin for a mark away from its block: the corner's mark or none.
+        if (camera.size.y < 4.0f * radius) continue;
+        bool found = false;
+        for (int k = 1; k <= 200 && !found; ++k) {
+          const ImVec2 p = camera.to_screen(corner + (static_cast<float>(k) / 200.0f) * slope);
+          if (shown(p)) centre = p, found = true;
+        }
+        if (!found) continue;
+        const b2Vec2 unit_level = (1.0f / level.Length()) * level;
+        const ImVec2 end = camera.to_screen(camera.to_world(centre) + (1.4f * radius / camera.pixels_per_metre) * unit_level);
+        for (int dash = 0; dash < 7; dash += 2) {
+          const ImVec2 a = add(centre, mul(sub(end, centre), static_cast<float>(dash) / 7.0f));
+          const ImVec2 b = add(centre, mul(sub(end, centre), static_cast<float>(dash + 1) / 7.0f));
+          draw->AddLine(a, b, theme.text, 1.5f * fonts.scale);
+        }
+      }
       // Screen angles turn the other way: y points down.
       const float level_angle = -std::atan2(level.y, level.x);
       const float slope_angle = -std::atan2(slope.y, slope.x);
