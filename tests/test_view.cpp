@@ -153,8 +153,7 @@ void check_bodies_shown(const LessonAt& at, const std::string& what) {
       const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
       EXPECT_TRUE(inside(camera, centre)) << where << ": " << name << " is out of the picture";
       EXPECT_FALSE(inset.Contains(centre)) << where << ": " << name << " is under the free-body diagram";
-      b2AABB box = body->GetFixtureList()->GetAABB(0);
-      for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
+      const b2AABB box = body_box(body);
       const float longer = std::max(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
       EXPECT_GE(longer * camera.pixels_per_metre, WorldFraming::min_body_pixels * screen.scale - 0.5f)
           << where << ": " << name << " is drawn " << longer * camera.pixels_per_metre << " px long";

@@ -57,16 +57,26 @@ b2AABB lesson_bounds(const Scene& scene) {
   return box;
 }
 
+b2AABB body_box(const b2Body* body) {
+  b2AABB box;
+  box.lowerBound = box.upperBound = body->GetWorldCenter();
+  bool empty = true;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    grow(box, empty, fixture->GetAABB(0).lowerBound);
+    grow(box, empty, fixture->GetAABB(0).upperBound);
+  }
+  return box;
+}
+
 b2AABB moving_bounds(const Scene& scene) {
   b2AABB box;
   box.lowerBound = box.upperBound = b2Vec2{0.0f, 0.0f};
   bool empty = true;
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() != b2_dynamicBody) continue;
-    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      grow(box, empty, fixture->GetAABB(0).lowerBound);
-      grow(box, empty, fixture->GetAABB(0).upperBound);
-    }
+    if (body->GetType() != b2_dynamicBody || body->GetFixtureList() == nullptr) continue;
+    const b2AABB covers = body_box(body);
+    grow(box, empty, covers.lowerBound);
+    grow(box, empty, covers.upperBound);
   }
   return box;
 }
@@ -75,13 +85,7 @@ namespace {
 
 // A body's width and height as its fixtures' boxes cover it now (a body on feet counts whole), m.
 b2Vec2 body_size(const b2Body* body) {
-  b2AABB box;
-  box.lowerBound = box.upperBound = b2Vec2{0.0f, 0.0f};
-  bool empty = true;
-  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-    grow(box, empty, fixture->GetAABB(0).lowerBound);
-    grow(box, empty, fixture->GetAABB(0).upperBound);
-  }
+  const b2AABB box = body_box(body);
   return box.upperBound - box.lowerBound;
 }
 
@@ -169,6 +173,8 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
   free_width = std::max(free_width, 1.0f);
   size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
   const std::vector<const b2Body*> bodies = view_bodies(scene, view);
+  // What moves now, worked out once: the framing, the centre and each lane read it.
+  const b2AABB moving = moving_bounds(scene);
   const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
   const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
   const float strip_height = size.y / static_cast<float>(strips);
@@ -197,8 +203,7 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
   // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
   float readable = smallest_body > 0.0f ? min_body_pixels * scale / smallest_body : 0.0f;
   if (kind == Kind::whole) {
-    // ...but not so close that a moving body is out of the picture at the start.
-    const b2AABB moving = moving_bounds(scene);
+    // ...but not so close that what moves now falls out of the picture.
     const b2Vec2 span = moving.upperBound - moving.lowerBound;
     if (span.x > 0.0f && span.y > 0.0f) {
       readable = std::min(readable, std::min(free_width / (1.2f * span.x), size.y / (1.2f * span.y)));
@@ -212,7 +217,7 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
   switch (kind) {
     case Kind::whole:
       // Everything when it fits; what moves when the view had to zoom in to keep it readable.
-      centre = (zoomed_in ? moving_bounds(scene) : lesson_bounds(scene)).GetCenter();
+      centre = (zoomed_in ? moving : lesson_bounds(scene)).GetCenter();
       break;
     case Kind::follow:
       centre = bodies.front()->GetWorldCenter();
@@ -223,10 +228,11 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
     case Kind::lanes:
       // One horizontal window for every lane, so distances compare across lanes: centred on
       // what moves, from the body furthest behind to the one furthest ahead.
-      centre.x = moving_bounds(scene).GetCenter().x;
+      centre.x = moving.GetCenter().x;
       break;
   }
 
+  const b2AABB lesson = kind == Kind::whole && zoomed_in ? lesson_bounds(scene) : b2AABB{};
   std::vector<Camera> made;
   for (std::size_t i = 0; i < strips; ++i) {
     Camera camera;
@@ -244,12 +250,11 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
       camera.centre.y = bodies[i]->GetWorldCenter().y;
       // Once the lanes' bodies have spread wider than the view, one window would lose some of
       // them: each lane then follows its own body (the ground's hatching still shows who moved).
-      const b2AABB moving = moving_bounds(scene);
       if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * free_width) {
         camera.centre.x = bodies[i]->GetWorldCenter().x;
       }
     }
-    if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson_bounds(scene), moving_bounds(scene), free_width);
+    if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson, moving, free_width);
     camera.centre += adjust.pan;
     made.push_back(camera);
   }

@@ -36,6 +36,9 @@ bool is_ground(const b2Fixture* fixture);
 // and the pulleys.
 b2AABB lesson_bounds(const Scene& scene);
 
+// The box a body's fixtures cover now (a body on feet counts whole).
+b2AABB body_box(const b2Body* body);
+
 // The part of the world that moves: every dynamic body. Empty (zero box) when none does.
 b2AABB moving_bounds(const Scene& scene);
 

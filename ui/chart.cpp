@@ -192,21 +192,22 @@ std::vector<Key> keys_of(const Chart& chart) {
 
 float width_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; }
 
-// How many rows the keys take, wrapped as the legend above the data wraps them.
-float width_of(ImFont* font, const std::string& text);
-
-std::size_t legend_rows(const std::vector<Key>& keys, float width, ImFont* font, float s) {
-  std::size_t rows = keys.empty() ? 0 : 1;
-  float x = 0.0f;
+// Where each key goes when the legend runs in rows from `left` to `right`, starting at `top`:
+// a key that would cross `right` starts the next row.
+std::vector<ImVec2> wrap_keys(const std::vector<Key>& keys, float left, float right, float top, float row_height,
+                              ImFont* font, float s) {
+  std::vector<ImVec2> at;
+  float x = left, y = top;
   for (const Key& key : keys) {
     const float w = width_of(font, key.name) + 32.0f * s;
-    if (x > 0.0f && x + w > width) {
-      x = 0.0f;
-      ++rows;
+    if (x > left && x + w > right) {
+      x = left;
+      y += row_height;
     }
+    at.push_back(ImVec2(x, y));
     x += w;
   }
-  return rows;
+  return at;
 }
 
 std::vector<Tick> ticks_every(const Axis& axis, int count) {
@@ -314,10 +315,14 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     }
     const LegendPlace inside = legend_corner(ImVec2(layout.low_left.x, layout.high_right.y), ImVec2(layout.high_right.x, layout.low_left.y),
                                              legend_size, 5.0f * s, avoid, 3.0f * s);
-    if (inside.clear) {
+    // In the chosen corner, a key a line.
+    const auto in_corner = [&] {
       layout.legend_min = inside.min, layout.legend_max = inside.max;
       float y = inside.min.y;
       for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
+    };
+    if (inside.clear) {
+      in_corner();
     } else {
       // No corner is free of the data: the legend goes above the data area, in one row beside
       // the y label when it fits there, else in as many rows as it needs under the label,
@@ -331,28 +336,17 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
           layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
           x += width_of(font, key.name) + 32.0f * s;
         }
-      } else if (static_cast<float>(legend_rows(keys, layout.high_right.x - layout.low_left.x, font, s)) * row_height >
-                 0.45f * (layout.low_left.y - layout.high_right.y)) {
+      } else if (const std::vector<ImVec2> rows = wrap_keys(keys, layout.low_left.x, layout.high_right.x,
+                                                            layout.high_right.y - 4.0f * s, row_height, font, s);
+                 rows.back().y - rows.front().y + row_height > 0.45f * (layout.low_left.y - layout.high_right.y)) {
         // Rows above the data would leave it too little height (large text in a small plot):
         // the legend goes in the corner it covers least of, over the data, rather than the plot
         // losing its data.
         layout.legend_outside = false;
-        layout.legend_min = inside.min, layout.legend_max = inside.max;
-        float y = inside.min.y;
-        for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
+        in_corner();
       } else {
-        const float left = layout.low_left.x, right = layout.high_right.x;
-        float x = left, y = layout.high_right.y - 4.0f * s;
-        for (const Key& key : keys) {
-          const float w = width_of(font, key.name) + 32.0f * s;
-          if (x > left && x + w > right) {
-            x = left;
-            y += row_height;
-          }
-          layout.legend_at.push_back(ImVec2(x, y));
-          x += w;
-        }
-        layout.high_right.y = y + row_height + 4.0f * s;
+        layout.legend_at = rows;
+        layout.high_right.y = rows.back().y + row_height + 4.0f * s;
         if (layout.low_left.y - layout.high_right.y < 20.0f) {
           layout.drawable = false;
           return layout;
