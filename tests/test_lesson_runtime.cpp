@@ -394,6 +394,61 @@ probe { "minus_x", unit = "m", read = { puck, "x", scale = -1 } }
   EXPECT_NEAR(probe_now(lesson, "minus_x"), -x, 1e-6);
 }
 
+TEST(LessonRuntime, AnAccelerationReadingIsTheChangeOfSpeedAlongADirection) {
+  // A frictionless 1 kg puck launched at 1 m/s and pushed along x by 2 N, and a ball falling
+  // freely: every sample, the first included, reads the constant acceleration (2 m/s² along x,
+  // g along −y and 0 across it), and a spring's block reads −(k/m)·x at the sample before, to
+  // O(h²). In Lua the field needs a probe's direction, as distance and speed do.
+  ScriptFile script(with_heading(R"(
+material { "puck", density = 100 }
+pair { "puck", "ice", mu_s = 0, mu_k = 0 }
+pair { "puck", "puck", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+local puck = box { "puck", material = "puck", width = 0.2, height = 0.1, on = floor, at = 1, mass = 1, velocity = { 1, 0 } }
+force { "push", on = puck, force = { 2, 0 } }
+local ball = circle { "ball", material = "puck", radius = 0.1, x = -3, y = 50 }
+local bob = box { "bob", material = "puck", width = 0.2, height = 0.1, on = floor, at = -10, mass = 2 }
+spring { "spring", from = bob, to = function(t) return -10.5, bob.y end, k = 8, rest_length = 0 }
+probe { "push_acceleration", unit = "m/s²", read = { puck, "acceleration", along = { 4, 0 } } }
+probe { "fall", unit = "m/s²", read = { ball, "acceleration", along = { 0, -1 } } }
+probe { "across_fall", unit = "m/s²", read = { ball, "acceleration", along = { 1, 0 } } }
+probe { "bob_acceleration", unit = "m/s²", read = { bob, "acceleration", along = { 1, 0 } } }
+probe { "bob_x", unit = "m", read = { bob, "x" } }
+)"));
+  Lesson lesson(script.path());
+  const double h = lesson.scene().frame_step();
+  run_for(lesson, 1.0);
+  const auto& push = lesson.scene().probe("push_acceleration").history;
+  const auto& fall = lesson.scene().probe("fall").history;
+  const auto& across = lesson.scene().probe("across_fall").history;
+  const auto& bob = lesson.scene().probe("bob_acceleration").history;
+  const auto& bob_x = lesson.scene().probe("bob_x").history;
+  ASSERT_GT(push.size(), 200u);
+  for (std::size_t i = 0; i < push.size(); ++i) {
+    EXPECT_NEAR(push[i], 2.0, 2e-3) << "sample " << i;
+    EXPECT_NEAR(fall[i], g, 2e-2) << "sample " << i;  // float velocities of up to 10 m/s
+    EXPECT_NEAR(across[i], 0.0, 1e-9) << "sample " << i;
+  }
+  // The spring pulls the bob towards x = -10.5 with −(k/m)·(x + 10.5); sample i reads the
+  // acceleration at the instant of sample i − 1, whose position bob_x[i − 1] gives.
+  const double omega_squared = 8.0 / 2.0;
+  for (std::size_t i = 2; i < bob.size(); ++i) {
+    const double expected = -omega_squared * (bob_x[i - 1] + 10.5);
+    EXPECT_NEAR(bob[i], expected, omega_squared * 0.5 * omega_squared * h * h + 1e-4) << "sample " << i;
+  }
+  ScriptFile in_lua(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+probe { "a", unit = "m/s²", function() return block.acceleration end }
+)"));
+  const std::string message = error_of([&] {
+    Lesson broken(in_lua.path());
+    run_for(broken, 0.1);
+  });
+  EXPECT_NE(message.find(":6: a body's acceleration needs a direction: read it in a probe"), std::string::npos) << message;
+}
+
 TEST(LessonRuntime, HistoryAndValueAtReadTheRecord) {
   ScriptFile script(with_heading(R"(
 probe { "twice_t", unit = "s", function() return 2 * time() end }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -51,18 +52,22 @@ int contact(lua_State* state) {
 
 // What a script can read from a handle. One table serves both `block.vx` in Lua and
 // probe{ read = { block, "vx" } }, which the runtime reads itself every step without Lua.
-enum class Field { x, y, angle, vx, vy, omega, mass, distance, speed, force_x, force_y, length, tension, fx, fy,
+enum class Field { x, y, angle, vx, vy, omega, mass, distance, speed, acceleration, force_x, force_y, length, tension, fx, fy,
                    friction, normal, nx, ny, drag, drag_x, drag_y, sliding_speed, slipping, points, load1, load2,
                    load_left, load_right };
 struct FieldName {
   const char* name;
   Field field;
 };
+// A body's fields that mean something only along a direction, and so only in a probe.
+bool directed_field(Field field) {
+  return field == Field::distance || field == Field::speed || field == Field::acceleration;
+}
 const std::vector<FieldName>& field_names(HandleType type) {
   static const std::vector<FieldName> body = {{"x", Field::x},   {"y", Field::y},         {"angle", Field::angle},
                                               {"vx", Field::vx}, {"vy", Field::vy},       {"omega", Field::omega},
                                               {"mass", Field::mass}, {"distance", Field::distance},
-                                              {"speed", Field::speed}};
+                                              {"speed", Field::speed}, {"acceleration", Field::acceleration}};
   static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
                                                 {"length", Field::length}, {"tension", Field::tension}};
   static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
@@ -232,11 +237,12 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
   }
 }
 
-// `in_lua`: the fields a script reads with a dot; distance and speed need a probe's direction.
+// `in_lua`: the fields a script reads with a dot; distance, speed and acceleration need a
+// probe's direction.
 std::string field_list(HandleType type, bool in_lua = false) {
   std::string list;
   for (const FieldName& known : field_names(type)) {
-    if (in_lua && (known.field == Field::distance || known.field == Field::speed)) continue;
+    if (in_lua && directed_field(known.field)) continue;
     list += (list.empty() ? "" : ", ") + std::string(known.name);
   }
   return list;
@@ -353,7 +359,7 @@ int handle_index(lua_State* state) {
     } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {  // every step in terrain
       lua_pushcfunction(state, scale_velocity);
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
-      if (field == Field::distance || field == Field::speed) {
+      if (directed_field(*field)) {
         throw InvalidInput(std::string("a body's ") + key + " needs a direction: read it in a probe, as in read = { block, \"" +
                            key + "\", along = { 1, 0 } }, or work it out from x, y, vx and vy");
       }
@@ -372,7 +378,7 @@ int handle_index(lua_State* state) {
       throw InvalidInput(std::string(handle_words[handle->type]) + " has no field '" +
                          (lua_type(state, 2) == LUA_TSTRING ? std::string(key) : describe(state, 2)) + "'; it has " +
                          extra + field_list(handle->type, true) +
-                         (handle->type == body_type ? " (and, in a probe's read, distance and speed)" : ""));
+                         (handle->type == body_type ? " (and, in a probe's read, distance, speed and acceleration)" : ""));
     }
     return 1;
   });
@@ -453,6 +459,38 @@ std::string body_name(lua_State* state, const b2Body* body) {
   return "?";
 }
 
+namespace {
+
+// A body's acceleration along a direction, as a probe samples it after each frame: the change
+// of its speed between two samples over the time between their velocities. Box2D's velocity
+// after a (sub-)step is the one the step moved the body with, the middle of that step's time
+// (section 3.8 of the guide), so the velocity a sample reads belongs to t − h_sub/2. The first
+// one's predecessor is the velocity the body was given at t = 0, or, for a body at rest then,
+// which the scene takes to have been held until then, its 0 at −h_sub/2 (Scene::start). The
+// reading is the acceleration at the middle of the two velocities' instants (t − h after the
+// first frame, with one sub-step), exact for a constant acceleration and O(h²) otherwise. A
+// probe is made anew each time the lesson is built, so a replay from t = 0 starts it afresh.
+std::function<double()> acceleration_reading(const Scene& scene, const Handle& handle) {
+  struct Sample {
+    double speed, at;
+  };
+  const b2Vec2 start = handle.at_point ? handle.body->GetLinearVelocityFromLocalPoint(handle.point)
+                                       : handle.body->GetLinearVelocity();
+  const bool at_rest = handle.body->GetLinearVelocity().LengthSquared() == 0.0f && handle.body->GetAngularVelocity() == 0.0f;
+  const double held_until = at_rest ? -0.5 * scene.frame_step() / scene.settings().substeps : 0.0;
+  auto last = std::make_shared<Sample>(Sample{b2Dot(start, handle.along), held_until});
+  return [&scene, h = handle, last] {
+    const b2Vec2 v = h.at_point ? h.body->GetLinearVelocityFromLocalPoint(h.point) : h.body->GetLinearVelocity();
+    const double speed = b2Dot(v, h.along);
+    const double at = scene.time() - 0.5 * scene.frame_step() / scene.settings().substeps;
+    const double acceleration = at > last->at ? (speed - last->speed) / (at - last->at) : 0.0;
+    *last = {speed, at};
+    return h.scale * acceleration;
+  };
+}
+
+}  // namespace
+
 std::function<double()> reading(lua_State* state, int index, const std::string& what) {
   index = lua_absindex(state, index);
   const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
@@ -469,13 +507,14 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
     throw InvalidInput(expected + fields);
   }
   lua_pop(state, 2);
-  const bool pointwise = *field == Field::x || *field == Field::y || *field == Field::vx || *field == Field::vy ||
-                         *field == Field::distance || *field == Field::speed;
-  const bool directed = *field == Field::distance || *field == Field::speed;
-  if (options.has("at") && !pointwise) throw InvalidInput(what + ": at is for a body's x, y, vx, vy, distance and speed");
+  const bool directed = directed_field(*field);
+  const bool pointwise = *field == Field::x || *field == Field::y || *field == Field::vx || *field == Field::vy || directed;
+  if (options.has("at") && !pointwise) {
+    throw InvalidInput(what + ": at is for a body's x, y, vx, vy, distance, speed and acceleration");
+  }
   if (directed != options.has("along")) {
     throw InvalidInput(what + (directed ? ": " + std::string(key) + " needs along = { dx, dy }, the direction it is measured in"
-                                        : ": along is only for a body's distance and speed"));
+                                        : ": along is only for a body's distance, speed and acceleration"));
   }
   handle->at_point = options.has("at");
   handle->point = options.point("at", origin_point);
@@ -487,6 +526,7 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
   }
   handle->scale = options.number("scale", "", 1.0);
   const Scene* scene = build_of(state).scene.get();
+  if (*field == Field::acceleration) return acceleration_reading(*scene, *handle);
   return [scene, h = *handle, f = *field] { return h.scale * read_field(*scene, h, f); };
 }
 

@@ -1,0 +1,103 @@
+-- pulley: connected masses, from the friction-situations article. A block on a table is tied by
+-- a rope over a pulley at the table's edge to a weight that hangs beside it. The rope makes
+-- the two one body along it, of mass m_b + m_h, pulled by the weight's m_h·g and held back by
+-- the table's friction on the block alone, whose normal force is m_b·g (the weight touches
+-- nothing). So the block stays put while m_h·g <= mu_s·m_b·g, at equality too, and otherwise
+-- both move with a = g·(m_h − mu_k·m_b)/(m_b + m_h). The rope pulls each of them with the same
+-- T = m_h·(g − a): less than the weight's m_h·g, since the weight speeds up, and more than the
+-- table's mu_k·m_b·g, since the block speeds up too.
+
+local function pulley_theory()
+  return theory.connected_masses { block_mass = param.block_mass, hanging_mass = param.hanging_mass,
+                                   mu_s = param.mu_s, mu_k = param.mu_k }
+end
+
+-- The block may slide 0.25 m before the weight reaches the floor: the run ends before that,
+-- or after 2 s.
+local travel = 0.25
+local function run_length()
+  local a = pulley_theory().acceleration
+  return a > 0 and math.min(2, math.sqrt(2 * travel / a)) or 2
+end
+
+lesson {
+  title = "A block pulled by a hanging weight",
+  question = "How heavy must the hanging weight be to drag the block, and does the rope pull with the weight's whole weight?",
+  duration = run_length,
+  order = 13,
+  moments = {
+    { "held", at = 1, set = { hanging_mass = 0.3 },
+      shows = function() return value_at("slipping", time()) == 0 and math.abs(value_at("speed", time())) < 1e-3 end },
+    { "sliding", at = 0.6, readme = true, shows = function() return value_at("slipping", time()) == 1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local block_mass = parameter { "block_mass", 1, min = 0.1, max = 10, unit = "kg", text = "mass of the block on the table" }
+local hanging_mass = parameter { "hanging_mass", 0.45, min = 0.01, max = 10, unit = "kg", text = "mass of the hanging weight" }
+
+-- Wood on wood, from the tribology article's 0.25 to 0.50; only mu_s and mu_k as sliders.
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3, sliders = { "mu_s", "mu_k" } }
+material { "iron", density = 7870 }
+pair { "wood", "iron", mu_s = 0.5, mu_k = 0.4, sliders = false }  -- the weight never touches the table
+
+-- World -----------------------------------------------------------------------------------
+local floor = ground { "floor", material = "wood" }
+local table_top = box { "table", material = "wood", kind = "static", width = 1.2, height = 0.5, x = 0, y = 0.25 }
+local block = box { "block", material = "wood", width = 0.3, height = 0.15, on = table_top, at = -0.25, mass = block_mass }
+-- The pulley sits just past the table's edge at the height of the block's middle, so the rope
+-- runs level to the block and straight down to the weight.
+local pulley_at = { 0.75, block.y }
+local weight = box { "weight", material = "iron", width = 0.2, height = 0.2, x = 0.75, y = block.y - 0.22,
+                     mass = hanging_mass }
+-- The table's top, the pulley and the weight's whole fall, from the floor up.
+view { window = { -0.65, -0.03, 0.95, 0.75 } }
+local cord = rope { "rope", from = block, at = { 0.15, 0 }, over = pulley_at, to = weight, to_at = { 0, 0.1 } }
+
+-- Probes and plots ------------------------------------------------------------------------
+local touch = contact(block, table_top)
+probe { "acceleration", unit = "m/s²", read = { block, "acceleration", along = { 1, 0 } } }
+probe { "tension", unit = "N", read = { cord, "tension" } }
+probe { "friction_force", unit = "N", read = { touch, "fx" } }  -- negative: it holds the block back
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
+
+plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_force" },
+  theory = { { "weight m_h·g", function() return param.hanging_mass * g end } } }
+-- The speed rather than the acceleration: a straight line whose slope is the acceleration
+-- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
+plot { "Speed of the block", kind = "time", y = { "speed" },
+  theory = { { "a·t, a = g·(m_h − μk·m_b)/(m_b + m_h)", function(t) return pulley_theory().acceleration * t end } } }
+
+-- Reading the record ----------------------------------------------------------------------
+local function at_the_end(probe)
+  return time() >= run_length() - 0.5 * step_length() and value_at(probe, run_length()) or nil
+end
+local function ever_slipped()
+  for _, slipping in ipairs(history("slipping")) do
+    if slipping == 1 then return true end
+  end
+  return false
+end
+
+-- Expectations ----------------------------------------------------------------------------
+expect { "the block",
+  predicted = function() return pulley_theory().slides and "slides" or "stays put" end,
+  measured = function() return ever_slipped() and "slides" or "stays put" end }
+expect { "acceleration", unit = "m/s²",
+  predicted = function() return pulley_theory().acceleration end,
+  measured = function() return at_the_end("acceleration") end,
+  -- 0.5 % and 1 mm/s²: the rope is solved as a joint beside the contact, to Box2D's float
+  -- precision, and the probe differences two velocities a step apart.
+  tolerance = function() return 0.005 * pulley_theory().acceleration + 1e-3 end }
+expect { "rope tension", unit = "N",
+  predicted = function() return pulley_theory().tension end,
+  measured = function() return at_the_end("tension") end,
+  tolerance = function() return 0.005 * pulley_theory().tension + 1e-3 end }
+expect { "friction on the block", unit = "N",
+  predicted = function() return pulley_theory().friction end,
+  measured = function()
+    local f = at_the_end("friction_force")
+    return f and -f
+  end,
+  tolerance = function() return 0.005 * pulley_theory().friction + 1e-3 end }
