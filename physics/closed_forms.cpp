@@ -286,6 +286,28 @@ StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const Friction
   return {StackRegime::top_slips, direction * top_a, direction * bottom_a, max_push_together};
 }
 
+ConnectedMasses connected_masses(double block_mass, double hanging_mass, double mu_s, double mu_k, double g) {
+  const char* where = "connected_masses";
+  require_positive(where, "block_mass", block_mass);
+  require_positive(where, "hanging_mass", hanging_mass);
+  require_non_negative(where, "mu_s", mu_s);
+  require_non_negative(where, "mu_k", mu_k);
+  require_positive(where, "g", g);
+  ConnectedMasses result{};
+  result.heaviest_held = std::max(mu_s, mu_k) * block_mass;
+  if (hanging_mass <= result.heaviest_held) {
+    // Held: friction answers the rope, which holds the weight up.
+    result.tension = hanging_mass * g;
+    result.friction = result.tension;
+    return result;
+  }
+  result.slides = true;
+  result.acceleration = g * (hanging_mass - mu_k * block_mass) / (block_mass + hanging_mass);
+  result.tension = hanging_mass * (g - result.acceleration);
+  result.friction = mu_k * block_mass * g;
+  return result;
+}
+
 GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t) {
   const char* where = "growing_push";
   require_positive(where, "mass", mass);

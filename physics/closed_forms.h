@@ -95,6 +95,24 @@ struct StackedBlocks {
 StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const FrictionPair& between,
                              const FrictionPair& ground, double push, double g);
 
+// Connected masses: a block of mass m_b on a level table, tied by a light rope over a light,
+// frictionless pulley at the table's edge to a weight of mass m_h hanging beside it, both let go
+// at rest. The rope makes them one body of mass m_b + m_h along the rope, driven by m_h·g and
+// held back by the table's friction on the block alone, whose normal force is m_b·g. It stays
+// put while m_h <= max(mu_s, mu_k)·m_b (at equality too: static friction can give exactly
+// mu_s·m_b·g; with mu_k above mu_s a block pulled past mu_s·N would at once be held back by
+// mu_k·N, so it cannot start before the pull beats both, the listener's rule). Otherwise both
+// move with a = g·(m_h − mu_k·m_b)/(m_b + m_h), and the rope pulls with T = m_h·(g − a) on each.
+struct ConnectedMasses {
+  bool slides;
+  double acceleration;  // m/s², of each along the rope; 0 while it stays put
+  double tension;       // N, the rope's pull on each body
+  double friction;      // N, magnitude of the table's friction on the block
+  // The heaviest weight the block holds: max(mu_s, mu_k)·m_b.
+  double heaviest_held;
+};
+ConnectedMasses connected_masses(double block_mass, double hanging_mass, double mu_s, double mu_k, double g);
+
 // The tribology article's book pushed harder and harder (the force-sensor lab): a block of mass
 // m at rest on flat ground, pushed along it by a force growing at `rate` from 0 at t = 0.
 // Static friction answers the push until it reaches the breakaway push; then kinetic friction

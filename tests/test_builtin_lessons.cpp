@@ -127,6 +127,16 @@ INSTANTIATE_TEST_SUITE_P(
                       // step-raised speed), and a push that sends the block off the table's end.
                       Case{"push", {{"mass", "10"}, {"b", "10"}, {"mu_s", "0"}, {"mu_k", "0"}}, ""},
                       Case{"push", {{"mass", "0.1"}, {"push_rate", "50"}}, "off the table's end before the run ends"},
+                      // pulley: held below mu_s·m_b and dragged just above it; with mu_k above mu_s
+                      // held up to mu_k·m_b; frictionless; the lightest block under the heaviest
+                      // weight and the reverse; the most friction the sliders give.
+                      Case{"pulley", {{"hanging_mass", "0.3"}}, ""}, Case{"pulley", {{"hanging_mass", "0.41"}}, ""},
+                      Case{"pulley", {{"mu_s", "0.3"}, {"mu_k", "0.5"}}, ""},
+                      Case{"pulley", {{"mu_s", "0.3"}, {"mu_k", "0.5"}, {"hanging_mass", "0.55"}}, ""},
+                      Case{"pulley", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"pulley", {{"block_mass", "0.1"}, {"hanging_mass", "10"}}, ""},
+                      Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "0.01"}}, ""},
+                      Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "10"}, {"mu_s", "2"}, {"mu_k", "2"}}, ""},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -327,6 +337,8 @@ TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {
       {"spring_pull", "block", {"mu_s", "mu_k", "c", "mass", "k", "pull_speed", "block"}, {"spring_force", "friction_force"}},
       {"incline", "block", {"angle", "mu_s", "mu_k", "c", "mass"}, {"distance", "speed"}},
       {"tipping_box", "box", {"push_height", "push_rate", "mu_s", "mu_k", "width", "height", "mass"}, {"tilt", "slide"}},
+      {"pulley", "block", {"block_mass", "hanging_mass", "mu_s", "mu_k"}, {"acceleration", "tension"}},
+      {"pulley", "weight", {}, {}},
   };
   for (const Expected& e : expected) {
     Lesson lesson(resolve_lesson(e.lesson));

@@ -558,5 +558,34 @@ TEST(ClosedForms, VelocityHackMatchesTheFramesItSums) {
   EXPECT_THROW(velocity_hack(3.0, 0.99, 0.01, 0.0, g, 0), InvalidInput);
 }
 
+// Connected masses against the event solver: the block and the weight are one body of mass
+// m_b + m_h along the rope, driven by m_h·g, with the table's friction on N = m_b·g. On both
+// sides of the threshold m_h = max(mu_s, mu_k)·m_b, at it, and with mu_k above mu_s.
+TEST(ClosedForms, ConnectedMassesMatchTheEventSolver) {
+  struct Case {
+    double block_mass, hanging_mass, mu_s, mu_k;
+  };
+  for (const Case& c : {Case{1.0, 0.3, 0.4, 0.3}, Case{1.0, 0.5, 0.4, 0.3}, Case{2.0, 0.8, 0.4, 0.3},
+                        Case{2.0, 0.81, 0.4, 0.3}, Case{0.5, 3.0, 0.6, 0.5}, Case{1.0, 0.45, 0.4, 0.5},
+                        Case{1.0, 0.55, 0.4, 0.5}, Case{1.0, 0.2, 0.0, 0.0}}) {
+    OneDofBlock line;
+    line.mass = c.block_mass + c.hanging_mass;
+    line.normal_force = c.block_mass * g;
+    line.constant_force = c.hanging_mass * g;
+    line.pair = {c.mu_s, c.mu_k, 0.0, 0.0};
+    const Trajectory numeric = solve_event_rk4(line, 2.0, 1e-4);
+    const ConnectedMasses exact = connected_masses(c.block_mass, c.hanging_mass, c.mu_s, c.mu_k, g);
+    const std::string name = std::to_string(c.hanging_mass) + " kg on " + std::to_string(c.block_mass) + " kg";
+    EXPECT_EQ(exact.slides, numeric.position(2.0) > 0.0) << name;
+    EXPECT_NEAR(0.5 * exact.acceleration * 4.0, numeric.position(2.0), 1e-9) << name;
+    // The weight's own balance, m_h·a = m_h·g − T, and the block's, m_b·a = T − friction.
+    EXPECT_NEAR(c.hanging_mass * exact.acceleration, c.hanging_mass * g - exact.tension, 1e-12) << name;
+    EXPECT_NEAR(c.block_mass * exact.acceleration, exact.tension - exact.friction, 1e-12) << name;
+  }
+  // Exactly at the threshold it stays put.
+  EXPECT_FALSE(connected_masses(2.0, 0.8, 0.4, 0.3, g).slides);
+  EXPECT_TRUE(connected_masses(2.0, 0.8000001, 0.4, 0.3, g).slides);
+}
+
 }  // namespace
 }  // namespace frictionlab

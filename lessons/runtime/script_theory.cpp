@@ -151,6 +151,23 @@ FrictionPair nested_pair(lua_State* state, Fields& outer, const char* key) {
   return pair;
 }
 
+int connected_masses(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.connected_masses", {"block_mass", "hanging_mass", "mu_s", "mu_k", "g"});
+    const theory::ConnectedMasses pulled = theory::connected_masses(
+        fields.number("block_mass", "kg"), fields.number("hanging_mass", "kg"), fields.number("mu_s", ""),
+        fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 5);
+    lua_pushboolean(state, pulled.slides);
+    lua_setfield(state, -2, "slides");
+    set_number(state, "acceleration", pulled.acceleration);
+    set_number(state, "tension", pulled.tension);
+    set_number(state, "friction", pulled.friction);
+    set_number(state, "heaviest_held", pulled.heaviest_held);
+    return 1;
+  });
+}
+
 int stacked_blocks(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
@@ -392,6 +409,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_on_incline", disk_on_incline},
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
+                                {"connected_masses", connected_masses},
                                 {"growing_push", growing_push},
                                 {"thrown_box", thrown_box},
                                 {"slope_launch", slope_launch},
