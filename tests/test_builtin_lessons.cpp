@@ -137,6 +137,22 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"pulley", {{"block_mass", "0.1"}, {"hanging_mass", "10"}}, ""},
                       Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "0.01"}}, ""},
                       Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "10"}, {"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // stacked_blocks: no friction between the blocks (the top one slips at once),
+                      // little (no together phase to speak of), the most (the pair runs off the
+                      // floor's end first, in words), mu_k above mu_s on each surface (no closed
+                      // form, in words), the heaviest top on the lightest bottom, both ends of the rate.
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0"}, {"top_on_bottom.mu_k", "0"}}, ""},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.1"}, {"top_on_bottom.mu_k", "0.05"}},
+                           "no together phase: it slips at once"},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "2"}, {"top_on_bottom.mu_k", "2"}},
+                           "off the floor's end before the top block slips"},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_k", "0.6"}}, "no closed form: μk above μs between the blocks"},
+                      Case{"stacked_blocks", {{"bottom_on_floor.mu_k", "0.5"}}, "no closed form: μk above μs on the floor"},
+                      Case{"stacked_blocks", {{"bottom_on_floor.mu_s", "0"}, {"bottom_on_floor.mu_k", "0"}}, ""},
+                      Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "1"}}, ""},
+                      Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "10"}}, ""},
+                      Case{"stacked_blocks", {{"pull_rate", "50"}}, ""},
+                      Case{"stacked_blocks", {{"pull_rate", "0.5"}, {"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -339,6 +355,9 @@ TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {
       {"tipping_box", "box", {"push_height", "push_rate", "mu_s", "mu_k", "width", "height", "mass"}, {"tilt", "slide"}},
       {"pulley", "block", {"block_mass", "hanging_mass", "mu_s", "mu_k"}, {"acceleration", "tension"}},
       {"pulley", "weight", {}, {}},
+      {"stacked_blocks", "top", {"top_mass", "bottom_mass", "pull_rate", "top_on_bottom.mu_s", "top_on_bottom.mu_k",
+                                 "bottom_on_floor.mu_s", "bottom_on_floor.mu_k"}, {}},
+      {"stacked_blocks", "bottom", {}, {}},
   };
   for (const Expected& e : expected) {
     Lesson lesson(resolve_lesson(e.lesson));

@@ -1,0 +1,196 @@
+-- stacked_blocks: a block on a block, the bottom one pulled harder and harder (the
+-- friction-situations article's pitfalls). Two surfaces, two coefficients, two friction forces:
+-- the floor holds the pair back, while the bottom block's top face is what drags the top block
+-- along, so the friction on the top block points forward, the way it moves. The pair stays
+-- put until the pull beats the floor's mu_s·(m_top + m_bottom)·g; then both move as one while
+-- the top block needs no more than mu_s(top_on_bottom)·m_top·g to keep up, that is up to a pull
+-- of (mu_s(top_on_bottom) + mu_k(bottom_on_floor))·(m_top + m_bottom)·g; past it the top block
+-- slips back along the bottom one, carried forward at mu_k(top_on_bottom)·g only.
+
+local ending  -- when the run ends, worked out below from the closed form
+
+lesson {
+  title = "A block on a block, pulled harder and harder",
+  question = "Which way does friction push the top block, and when does it stop keeping up?",
+  duration = function() return ending() end,
+  order = 15,
+  moments = {
+    { "together", at = 3,
+      shows = function() return value_at("floor_slipping", time()) == 1 and value_at("top_slipping", time()) == 0 end },
+    { "top_slips", at = 4.2, readme = true, shows = function() return value_at("top_slipping", time()) == 1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+-- At most five times heavier on top: a light body under a heavy one is where Box2D's solver
+-- stops converging in its eight turns (at 5 kg on 0.5 kg the top block's friction stays a
+-- hair under mu_s·N while it creeps back, and it is never seen to slip).
+local top_mass = parameter { "top_mass", 1, min = 0.2, max = 5, unit = "kg", text = "mass of the top block" }
+local bottom_mass = parameter { "bottom_mass", 2, min = 1, max = 10, unit = "kg", text = "mass of the bottom block" }
+local pull_rate = parameter { "pull_rate", 5, min = 0.5, max = 50, unit = "N/s", text = "how fast the pull on the bottom block grows" }
+
+-- A wooden block on an aluminium one (the spring article's pair), which slides on a stone floor.
+pair { "wood", "aluminium", name = "top_on_bottom", mu_s = 0.45, mu_k = 0.35, sliders = { "mu_s", "mu_k" } }
+pair { "aluminium", "stone", name = "bottom_on_floor", mu_s = 0.3, mu_k = 0.2, sliders = { "mu_s", "mu_k" } }
+pair { "wood", "stone", mu_s = 0.5, mu_k = 0.4, sliders = false }  -- only if the top block falls off
+pair { "wood", "wood", sliders = false }  -- the preset values; no wooden body meets another
+
+-- Theory ----------------------------------------------------------------------------------
+local function pairs_now()
+  return { mu_s = param["top_on_bottom.mu_s"], mu_k = param["top_on_bottom.mu_k"] },
+         { mu_s = param["bottom_on_floor.mu_s"], mu_k = param["bottom_on_floor.mu_k"] }
+end
+-- The closed form asks mu_k <= mu_s of both pairs: with mu_k above mu_s a surface pushed past
+-- mu_s·N would at once be held back harder, and which block then does what has no closed form.
+local function no_theory()
+  local between, floor = pairs_now()
+  if between.mu_k > between.mu_s then return "no closed form: μk above μs between the blocks" end
+  if floor.mu_k > floor.mu_s then return "no closed form: μk above μs on the floor" end
+end
+local function stack(push)
+  local between, floor = pairs_now()
+  return theory.stacked_blocks { top_mass = param.top_mass, bottom_mass = param.bottom_mass,
+                                 between = between, ground = floor, push = push }
+end
+local function total_weight() return (param.top_mass + param.bottom_mass) * g end
+-- The pulls at which the pair starts to slide, and at which the top block starts to slip (at
+-- once, if the floor's kinetic friction leaves the top block more to keep up with than its
+-- static friction can give).
+local function start_pull() return math.max(param["bottom_on_floor.mu_s"], param["bottom_on_floor.mu_k"]) * total_weight() end
+local function slip_pull()
+  if no_theory() then return start_pull() end
+  return math.max(stack(0).max_push_together, start_pull())
+end
+-- Whether the pair moves together for at least two steps before the top block slips.
+local function together_phase() return slip_pull() - start_pull() > 2 * param.pull_rate * step_length() end
+local function top_acceleration_after() return param["top_on_bottom.mu_k"] * g end
+local function bottom_acceleration(t)
+  return (param.pull_rate * t - param["top_on_bottom.mu_k"] * param.top_mass * g
+          - param["bottom_on_floor.mu_k"] * total_weight()) / param.bottom_mass
+end
+
+-- How long after the pair starts to slide it has slid x metres together, pulled by rate·t:
+-- x = rate·τ³/(6·M) + (mu_s − mu_k)·g·τ²/2 on the floor, solved by bisection. The floor ends
+-- 200 m from where the pair stands; a run that would take it past 150 m is cut short there.
+local floor_room = 150
+local function together_time_to(x)
+  local M = param.top_mass + param.bottom_mass
+  local a0 = math.max(param["bottom_on_floor.mu_s"] - param["bottom_on_floor.mu_k"], 0) * g
+  local function slid(tau) return param.pull_rate * tau ^ 3 / (6 * M) + a0 * tau * tau / 2 end
+  local low, high = 0, 1
+  while slid(high) < x do high = 2 * high end
+  for _ = 1, 60 do
+    local middle = (low + high) / 2
+    if slid(middle) < x then low = middle else high = middle end
+  end
+  return high
+end
+local function off_the_floor()
+  if no_theory() then return nil end
+  if (slip_pull() - start_pull()) / param.pull_rate > together_time_to(floor_room) then
+    return "off the floor's end before the top block slips"
+  end
+end
+
+-- The run ends once the top block has slipped 0.15 m back along the bottom one (0.25 m would
+-- take it to the back edge), or 2 s after it started to slip; without a closed form, 8 s after
+-- the pair would start to slide, or sooner near the floor's end.
+local slip_room = 0.15
+ending = function()
+  local start = start_pull() / param.pull_rate
+  if no_theory() then return start + math.min(8, together_time_to(floor_room)) end
+  if off_the_floor() then return start + together_time_to(floor_room) end
+  local t, lag, lag_speed = slip_pull() / param.pull_rate, 0, 0
+  local step = 1e-3
+  for _ = 1, 2000 do
+    if lag >= slip_room then break end
+    lag_speed = lag_speed + (bottom_acceleration(t) - top_acceleration_after()) * step
+    lag = lag + lag_speed * step
+    t = t + step
+  end
+  return t
+end
+
+-- World -----------------------------------------------------------------------------------
+local floor = ground { "floor", material = "stone" }
+-- The top block is made first, so that the free-body diagram is its own: friction forward.
+-- It rests one resting gap above the bottom block, which rests one above the floor (what
+-- on = ... would do). Three times as wide as it is tall, it would tip backwards only at an
+-- acceleration above g·w/h = 3g, which no mu up to 2 can give it: it slips first.
+local top = box { "top", material = "wood", width = 0.3, height = 0.1, x = 0, y = 0.15 + 2 * resting_gap + 0.05,
+                  mass = top_mass }
+local bottom = box { "bottom", material = "aluminium", width = 0.8, height = 0.15, on = floor, at = 0, mass = bottom_mass }
+-- Pulled at the height where the bottom block meets the floor, so the pull cannot tip it.
+local pull = force { "pull", on = bottom, at = { 0.4, -0.075 - resting_gap / 2 }, force = function(t) return pull_rate * t, 0 end }
+view { follow = bottom }
+
+-- Probes and plots ------------------------------------------------------------------------
+local on_floor, on_bottom = contact(bottom, floor), contact(top, bottom)
+probe { "pull", unit = "N", read = { pull, "fx" } }
+probe { "friction_on_top", unit = "N", read = { on_bottom, "fx" } }      -- positive: forward
+probe { "friction_on_bottom", unit = "N", read = { on_floor, "fx" } }    -- from the floor
+probe { "top_acceleration", unit = "m/s²", read = { top, "acceleration", along = { 1, 0 } } }
+probe { "bottom_acceleration", unit = "m/s²", read = { bottom, "acceleration", along = { 1, 0 } } }
+probe { "floor_slipping", read = { on_floor, "slipping" } }
+probe { "top_slipping", read = { on_bottom, "slipping" } }
+
+plot { "Friction on each block", kind = "time", y = { "pull", "friction_on_top", "friction_on_bottom" } }
+plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "bottom_acceleration" },
+  theory = { { "top slipping: μk·g", function(t)
+    if not no_theory() and t * param.pull_rate >= slip_pull() then return top_acceleration_after() end
+  end } } }
+
+-- Reading the record ----------------------------------------------------------------------
+-- The pull that set a contact slipping: the one recorded the step before it first slipped.
+-- The top block slips on the bottom one only once that moves: with no friction between them
+-- their contact reads slipping from the start, while nothing moves at all.
+local function first_slip(probe)
+  local slipping, floor_slipping, pulls = history(probe), history("floor_slipping"), history("pull")
+  for i = 1, #slipping do
+    if slipping[i] == 1 and floor_slipping[i] == 1 then return i > 1 and pulls[i - 1] or 0 end
+  end
+end
+local function at_the_end(probe)
+  return time() >= ending() - 0.5 * step_length() and value_at(probe, ending()) or nil
+end
+
+-- Expectations ----------------------------------------------------------------------------
+expect { "the pair starts to slide at a pull of", unit = "N",
+  predicted = function() return no_theory() or start_pull() end,
+  measured = function() return no_theory() or first_slip("floor_slipping") end,
+  -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.
+  tolerance = function() return 0.01 * start_pull() + pull_rate * step_length() end }
+expect { "the top block starts to slip at a pull of", unit = "N",
+  predicted = function() return no_theory() or off_the_floor() or slip_pull() end,
+  measured = function() return no_theory() or off_the_floor() or first_slip("top_slipping") end,
+  tolerance = function() return 0.01 * slip_pull() + pull_rate * step_length() end }
+-- Halfway between the two, the top block keeps up: its friction is m_top·a, forward.
+local function halfway() return (start_pull() + slip_pull()) / (2 * param.pull_rate) end
+expect { "friction on the top block halfway, forward", unit = "N",
+  predicted = function()
+    if no_theory() then return no_theory() end
+    if not together_phase() then return "no together phase: it slips at once" end
+    if off_the_floor() then return off_the_floor() end
+    return stack(param.pull_rate * halfway()).top_acceleration * param.top_mass
+  end,
+  measured = function()
+    if no_theory() then return no_theory() end
+    if not together_phase() then return "no together phase: it slips at once" end
+    if off_the_floor() then return off_the_floor() end
+    return time() >= halfway() and value_at("friction_on_top", halfway()) or nil
+  end,
+  -- The contact reads the mean over the step just taken, while the friction grows at
+  -- m_top·rate/(m_top + m_bottom): half a step's growth, and 1 % of it.
+  tolerance = function()
+    return 0.01 * slip_pull() * param.top_mass / (param.top_mass + param.bottom_mass)
+           + param.top_mass * pull_rate / (param.top_mass + param.bottom_mass) * step_length()
+  end }
+expect { "top block's acceleration, slipping", unit = "m/s²",
+  predicted = function() return no_theory() or off_the_floor() or top_acceleration_after() end,
+  measured = function() return no_theory() or off_the_floor() or at_the_end("top_acceleration") end,
+  tolerance = function() return 0.01 * top_acceleration_after() + 1e-3 end }
+-- Read at the step before the end (the reading's instant), where the pull was rate·(t − h).
+expect { "bottom block's acceleration at the end", unit = "m/s²",
+  predicted = function() return no_theory() or off_the_floor() or bottom_acceleration(ending() - step_length()) end,
+  measured = function() return no_theory() or off_the_floor() or at_the_end("bottom_acceleration") end,
+  tolerance = function() return 0.01 * math.abs(bottom_acceleration(ending())) + 1e-3 end }
