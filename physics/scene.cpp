@@ -418,6 +418,7 @@ void Scene::step() {
 }
 
 void Scene::advance(double t, float h, double t_end, bool move) {
+  if (before_substep_) before_substep_(t);
   std::vector<std::pair<b2Body*, b2Transform>> held;
   if (!move) {
     for (b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {

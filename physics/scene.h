@@ -119,6 +119,10 @@ class Scene {
   // Called after every world step (each sub-step of a frame) with the time it reached: a
   // method that flips the velocity every sub-step shows nothing at frames of an even count.
   void set_after_substep(std::function<void(double t)> watch) { after_substep_ = std::move(watch); }
+  // Called at the start of every (sub-)step with its start time, before anything is applied:
+  // what a lesson changes as time goes on, such as a pair's coefficients given as functions of
+  // time. The trial half step at t = 0 calls it too.
+  void set_before_substep(std::function<void(double t)> prepare) { before_substep_ = std::move(prepare); }
 
   // One frame: 1/hz of simulated time in `substeps` world steps.
   void step();
@@ -221,6 +225,7 @@ class Scene {
   std::vector<Probe> probes_;
   std::function<void()> before_probes_;
   std::function<void(double)> after_substep_;
+  std::function<void(double)> before_substep_;
   std::vector<double> times_;
   std::vector<unsigned char> slipping_;
   struct MaterialUse {

@@ -449,6 +449,68 @@ probe { "a", unit = "m/s²", function() return block.acceleration end }
   EXPECT_NE(message.find(":6: a body's acceleration needs a direction: read it in a probe"), std::string::npos) << message;
 }
 
+TEST(LessonRuntime, APairsCoefficientsMayBeFunctionsOfTime) {
+  // A 1 kg block pulled by 3 N on a table whose mu_s and mu_k drop from 0.5/0.45 to 0.15/0.1
+  // at t = 1 s: held until then (long enough for the scene to put it to rest), it must wake
+  // and slide at (3 − 0.1·g) m/s² from the first step that starts at 1 s, with no slider for
+  // the coefficients that are functions (c and b keep theirs).
+  ScriptFile script(with_heading(R"(
+pair { "wood", "wood", mu_s = function(t) if t < 1 then return 0.5 end return 0.15 end,
+                       mu_k = function(t) if t < 1 then return 0.45 end return 0.1 end }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = floor, at = 0, mass = 1 }
+force { "pull", on = block, force = { 3, 0 } }
+probe { "a", unit = "m/s²", read = { block, "acceleration", along = { 1, 0 } } }
+probe { "v", unit = "m/s", read = { block, "vx" } }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_THROW(lesson.parameter("mu_s"), std::exception);
+  EXPECT_THROW(lesson.parameter("mu_k"), std::exception);
+  EXPECT_NO_THROW(lesson.parameter("c"));
+  run_for(lesson, 1.0);
+  EXPECT_EQ(probe_now(lesson, "v"), 0.0);
+  run_for(lesson, 0.5);
+  EXPECT_NEAR(probe_now(lesson, "a"), 3.0 - 0.1 * g, 1e-3);
+  // The first step from t = 1 s on slides: 0.5 s of it, less nothing.
+  EXPECT_NEAR(probe_now(lesson, "v"), 0.5 * (3.0 - 0.1 * g), 2e-3);
+
+  // A block held on a 20° slope by gravity alone is put to rest by the scene; when the slope
+  // is oiled at t = 1 s it must wake and slide at g·(sin θ − mu_k·cos θ).
+  ScriptFile slope(with_heading(R"(
+pair { "wood", "wood", mu_s = function(t) if t < 1 then return 0.5 end return 0.1 end,
+                       mu_k = function(t) if t < 1 then return 0.45 end return 0.05 end }
+local ramp = incline { "ramp", material = "wood", angle = 20, length = 4 }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = ramp, at = 3, mass = 1 }
+probe { "down", unit = "m/s²", read = { block, "acceleration", along = { -math.cos(math.rad(20)), -math.sin(math.rad(20)) } } }
+)"));
+  Lesson oiled_slope(slope.path());
+  run_for(oiled_slope, 1.5);
+  const double angle = 20.0 * std::numbers::pi / 180.0;
+  EXPECT_NEAR(probe_now(oiled_slope, "down"), g * (std::sin(angle) - 0.05 * std::cos(angle)), 2e-3);
+
+  // Out of range at some time: the message is placed at the function and says when.
+  ScriptFile bad(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5,
+  mu_k = function(t) return 0.3 + t end }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = floor, at = 0, mass = 1 }
+)"));
+  const std::string message = error_of([&] {
+    Lesson broken(bad.path());
+    run_for(broken, 2.0);
+  });
+  EXPECT_NE(message.find(":4: pair wood/wood: mu_k returned 2.00"), std::string::npos) << message;
+  EXPECT_NE(message.find("it must be in [0, 2]"), std::string::npos) << message;
+
+  // A function of time has no slider to list.
+  ScriptFile listed(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = function(t) return 0.3 end, sliders = { "mu_k" } }
+)"));
+  const std::string refused = error_of([&] { Lesson broken(listed.path()); });
+  EXPECT_NE(refused.find(":3: pair wood/wood: mu_k is a function of time, which no slider can set"), std::string::npos)
+      << refused;
+}
+
 TEST(LessonRuntime, HistoryAndValueAtReadTheRecord) {
   ScriptFile script(with_heading(R"(
 probe { "twice_t", unit = "s", function() return 2 * time() end }

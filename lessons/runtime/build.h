@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -98,6 +99,9 @@ struct LessonBuild {
   // may read the state, and the next step must apply its answer for the state as it now is.
   std::vector<std::shared_ptr<RememberedValues>> force_memories;
   bool in_every_step = false;  // an every_step function is running: velocities may be set
+  // What the scene does at the start of every sub-step (pairs' coefficients that are functions
+  // of time take their values); each pair{} that needs it wraps the one before.
+  std::function<void(double t)> before_substep;
   // The metatables of the handle types (body, spring, force, contact, rope), by HandleType.
   const void* metatables[5] = {nullptr, nullptr, nullptr, nullptr, nullptr};
   bool building = true;
@@ -130,6 +134,12 @@ struct LessonBuild {
 };
 
 LessonBuild& build_of(lua_State* state);
+
+// A script's function of time kept at `reference` (in the registry), asked for `count` numbers
+// at t; its last two answers are remembered (RememberedValues). `what` names it in errors.
+// `is_force`: a force's, forgotten also when the script sets a velocity.
+std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build, int reference, int count,
+                                                              std::string what, bool is_force = false);
 
 // Asks every plot's theory curves for x (or t) from 0 to 1, and their active functions once,
 // so that a curve that cannot work is refused with the script rather than first seen drawn.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <sstream>
 #include <set>
 
 #include "lessons/runtime/build.h"
@@ -250,6 +252,49 @@ void declare_preset_pairs(LessonBuild& build) {
 
 namespace {
 
+// A pair's coefficient that is a function of time, and which of mu_s, mu_k, c, b it is.
+struct TimedCoefficient {
+  int slot;       // index into `coefficients`
+  int reference;  // the function, in the registry
+  std::function<std::array<double, 2>(double)> at;
+};
+
+// The coefficient's value at t, within its slider's range, or an error placed at the function.
+double timed_value(LessonBuild& build, const TimedCoefficient& coefficient, const std::string& label, double t) {
+  const double value = coefficient.at(t)[0];
+  const Coefficient& which = coefficients[coefficient.slot];
+  if (value >= 0.0 && value <= which.max) return value;
+  std::ostringstream message;
+  message << build.defined_at(coefficient.reference) << ": pair " << label << ": " << which.key << " returned " << value
+          << " at t = " << t << " s; it must be in [0, " << which.max << "]";
+  throw ScriptError(message.str());
+}
+
+// Before every sub-step, the pair takes its timed coefficients' values at the sub-step's start
+// (its other coefficients as they are, sliders included). A change wakes the bodies the scene
+// put to rest: a block held by static friction may slide with the new values.
+void follow_in_time(LessonBuild& build, const std::string& a, const std::string& b, const std::string& label,
+                    std::vector<TimedCoefficient> timed) {
+  Scene* scene = build.scene.get();
+  LessonBuild* owner = &build;
+  auto earlier = std::move(build.before_substep);
+  build.before_substep = [=](double t) {
+    if (earlier) earlier(t);
+    FrictionPair values = scene->pairs().pair(a, b);
+    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
+    bool changed = false;
+    for (const TimedCoefficient& coefficient : timed) {
+      const double value = timed_value(*owner, coefficient, label, t);
+      changed = changed || value != *slots[coefficient.slot];
+      *slots[coefficient.slot] = value;
+    }
+    if (!changed) return;
+    scene->pairs().set_pair(a, b, values);
+    scene->wake();
+  };
+  scene->set_before_substep(build.before_substep);
+}
+
 int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
@@ -320,9 +365,24 @@ int pair(lua_State* state) {
     bool first_pair = true;
     for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
     const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
-    // The same range as its slider, so the default a script gives can also be set back.
+    // The same range as its slider, so the default a script gives can also be set back. A
+    // coefficient given as a function of time (a surface oiled now and then) is asked at the
+    // start of every sub-step instead, and has no slider.
     double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
+    std::vector<TimedCoefficient> timed;
     for (int i = 0; i < 4; ++i) {
+      if (fields.push_function(coefficients[i].key)) {
+        if (!like[0].empty()) {
+          lua_pop(state, 1);
+          throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " +
+                             coefficients[i].key);
+        }
+        const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
+        const std::string what = "pair " + label + ": " + coefficients[i].key + " (t -> a number)";
+        timed.push_back({i, reference, function_of_time(build, reference, 1, what)});
+        *slots[i] = timed_value(build, timed.back(), label, 0.0);
+        continue;
+      }
       *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
     // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
@@ -374,9 +434,25 @@ int pair(lua_State* state) {
         }
         lua_pop(state, 1);
         if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
+        for (const TimedCoefficient& coefficient : timed) {
+          if (only.count(coefficients[coefficient.slot].key) > 0) {
+            throw InvalidInput("pair " + label + ": " + coefficients[coefficient.slot].key +
+                               " is a function of time, which no slider can set; leave it out of sliders");
+          }
+        }
       } else {
         lua_pop(state, 1);
         with_sliders = fields.flag("sliders").value_or(true);
+      }
+    }
+    if (with_sliders && !timed.empty()) {
+      // Sliders for the coefficients that are numbers only.
+      if (only.empty()) only = {"mu_s", "mu_k", "c", "b"};
+      for (const TimedCoefficient& coefficient : timed) only.erase(coefficients[coefficient.slot].key);
+      with_sliders = !only.empty();
+      if (!with_sliders) {
+        if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with every coefficient a function of time it has none");
+        build.fixed_pairs.emplace_back(names[0], names[1]);
       }
     }
     if (with_sliders) {
@@ -389,6 +465,7 @@ int pair(lua_State* state) {
       build.warnings.push_back(caller(state) + ": " + warning);
     }
     if (treatment) build.scene->pairs().set_treatment(names[0], names[1], *treatment, epsilon);
+    if (!timed.empty()) follow_in_time(build, names[0], names[1], label, std::move(timed));
     return 0;
   });
 }

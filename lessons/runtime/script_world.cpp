@@ -441,6 +441,8 @@ int incline(lua_State* state) {
   });
 }
 
+}  // namespace
+
 // A function of time the script gave for a body, a hand or a force: called with t, it must
 // return `count` numbers.
 // An answer for the same t is reused (the scene asks at t and t + h several times a step).
@@ -450,7 +452,7 @@ int incline(lua_State* state) {
 // asked where it will be at t + h sees the state at t (the path is planned a step ahead).
 // A force's answer is forgotten when the script sets a velocity (`is_force`).
 std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build, int reference, int count,
-                                                              std::string what, bool is_force = false) {
+                                                              std::string what, bool is_force) {
   LessonBuild* owner = &build;
   auto memory = std::make_shared<RememberedValues>();
   build.remembered.push_back(memory);
@@ -473,6 +475,8 @@ std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build
     return answer;
   };
 }
+
+namespace {
 
 int spring(lua_State* state) {
   return guarded(state, [&] {
