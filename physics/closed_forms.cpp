@@ -308,6 +308,54 @@ ConnectedMasses connected_masses(double block_mass, double hanging_mass, double 
   return result;
 }
 
+IntermittentSlide intermittent_slide(double mass, double pull, const FrictionPair& dry, const FrictionPair& lubricated,
+                                     double from, double until, double t, double g) {
+  const char* where = "intermittent_slide";
+  require_positive(where, "mass", mass);
+  require_non_negative(where, "pull", pull);
+  require_pair(where, dry);
+  require_pair(where, lubricated);
+  require_non_negative(where, "from", from);
+  if (!(until >= from)) reject(where, "until", "at or after from", until);
+  require_non_negative(where, "t", t);
+  require_positive(where, "g", g);
+  const double weight = mass * g;
+  // The three stretches, each [start, end) with its coefficients.
+  const struct {
+    double start, end;
+    const FrictionPair* pair;
+  } stretches[] = {{0.0, from, &dry}, {from, until, &lubricated}, {until, infinity, &dry}};
+  IntermittentSlide state{false, 0.0, 0.0, 0.0};
+  for (const auto& stretch : stretches) {
+    if (stretch.end <= stretch.start || t < stretch.start) continue;
+    const double stop_at = std::min(t, stretch.end);
+    const double starts_past = std::max(stretch.pair->mu_s, stretch.pair->mu_k) * weight;
+    const double a = (pull - stretch.pair->mu_k * weight) / mass;
+    double now = stretch.start;
+    if (state.speed == 0.0 && pull <= starts_past) {
+      state = {false, 0.0, 0.0, state.distance};
+      continue;  // held all through this stretch
+    }
+    // Sliding (or starting): at a, until the speed reaches 0 if a < 0.
+    const double run = stop_at - now;
+    if (a < 0.0 && state.speed + a * run <= 0.0) {
+      const double to_stop = -state.speed / a;
+      state.distance += state.speed * to_stop + 0.5 * a * to_stop * to_stop;
+      state.speed = 0.0;
+      now += to_stop;
+      // At rest again: the pull cannot beat max(mu_s, mu_k)·N here, since it lost to mu_k·N.
+      state.sliding = false;
+      state.acceleration = 0.0;
+      continue;
+    }
+    state.distance += state.speed * run + 0.5 * a * run * run;
+    state.speed += a * run;
+    state.sliding = true;
+    state.acceleration = a;
+  }
+  return state;
+}
+
 GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t) {
   const char* where = "growing_push";
   require_positive(where, "mass", mass);

@@ -113,6 +113,22 @@ struct ConnectedMasses {
 };
 ConnectedMasses connected_masses(double block_mass, double hanging_mass, double mu_s, double mu_k, double g);
 
+// The friction-situations article's changing coefficient: a block of mass m at rest on level
+// ground, pulled along it by a constant force from t = 0, on a surface that is dry before
+// `from`, lubricated from `from` until `until`, and dry again after. In each stretch the
+// coefficients are constant: a block at rest starts when the pull beats max(mu_s, mu_k)·m·g
+// (the listener's rule) and then moves at a = (pull − mu_k·m·g)/m; a sliding block slowed by
+// a < 0 stops where its speed reaches 0 and stays unless the pull beats max(mu_s, mu_k)·m·g.
+// No drag (c and b are not used). The state at time t >= 0:
+struct IntermittentSlide {
+  bool sliding;
+  double acceleration;  // m/s², at t (while sliding; 0 at rest)
+  double speed;         // m/s
+  double distance;      // m from where it stood
+};
+IntermittentSlide intermittent_slide(double mass, double pull, const FrictionPair& dry, const FrictionPair& lubricated,
+                                     double from, double until, double t, double g);
+
 // The tribology article's book pushed harder and harder (the force-sensor lab): a block of mass
 // m at rest on flat ground, pushed along it by a force growing at `rate` from 0 at t = 0.
 // Static friction answers the push until it reaches the breakaway push; then kinetic friction

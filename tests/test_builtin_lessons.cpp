@@ -153,6 +153,18 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "10"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "50"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "0.5"}, {"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
+                      // lubricated: no pull; a pull strong enough to start dry, and one that runs
+                      // off the table's end (in words); no oil at all (until before from); oil from
+                      // the start to the end; frictionless oil; mu_k above mu_s dry; oil that holds
+                      // harder than the dry table; the heaviest block.
+                      Case{"lubricated", {{"pull", "0"}}, ""}, Case{"lubricated", {{"pull", "8"}}, ""},
+                      Case{"lubricated", {{"pull", "50"}}, ""},
+                      Case{"lubricated", {{"lubricated_until", "0.5"}}, ""},
+                      Case{"lubricated", {{"lubricated_from", "0"}, {"lubricated_until", "10"}}, ""},
+                      Case{"lubricated", {{"lubricated_mu_s", "0"}, {"lubricated_mu_k", "0"}}, ""},
+                      Case{"lubricated", {{"mu_s", "0.5"}, {"mu_k", "1"}}, ""},
+                      Case{"lubricated", {{"lubricated_mu_s", "0.1"}, {"lubricated_mu_k", "2"}, {"pull", "10"}}, ""},
+                      Case{"lubricated", {{"mass", "10"}, {"pull", "20"}}, ""},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -358,6 +370,8 @@ TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {
       {"stacked_blocks", "top", {"top_mass", "bottom_mass", "pull_rate", "top_on_bottom.mu_s", "top_on_bottom.mu_k",
                                  "bottom_on_floor.mu_s", "bottom_on_floor.mu_k"}, {}},
       {"stacked_blocks", "bottom", {}, {}},
+      {"lubricated", "block", {"mass", "pull", "mu_s", "mu_k", "lubricated_mu_s", "lubricated_mu_k", "lubricated_from",
+                               "lubricated_until"}, {"speed", "acceleration", "distance"}},
   };
   for (const Expected& e : expected) {
     Lesson lesson(resolve_lesson(e.lesson));

@@ -587,5 +587,43 @@ TEST(ClosedForms, ConnectedMassesMatchTheEventSolver) {
   EXPECT_TRUE(connected_masses(2.0, 0.8000001, 0.4, 0.3, g).slides);
 }
 
+// A surface oiled between two instants, against the event solver run stretch by stretch (each
+// from where the last left the block): held, set going by the oil, slowed and stopped on the
+// dry surface again, or still sliding; with mu_k above mu_s; and with no oil at all.
+TEST(ClosedForms, IntermittentSlideMatchesTheEventSolverStretchByStretch) {
+  struct Case {
+    double pull, mu_s, mu_k, oiled_mu_s, oiled_mu_k, from, until;
+  };
+  const double mass = 1.0;
+  for (const Case& c : {Case{3.0, 0.4, 0.35, 0.15, 0.1, 1.0, 2.0}, Case{3.0, 0.4, 0.25, 0.15, 0.1, 1.0, 2.0},
+                        Case{5.0, 0.4, 0.35, 0.15, 0.1, 0.5, 1.5}, Case{3.0, 0.2, 0.4, 0.15, 0.1, 1.0, 2.0},
+                        Case{3.0, 0.4, 0.35, 0.4, 0.35, 1.0, 2.0}, Case{0.0, 0.4, 0.35, 0.0, 0.0, 1.0, 2.0},
+                        Case{3.0, 0.4, 0.35, 0.15, 0.1, 1.0, 1.0}}) {
+    const FrictionPair dry{c.mu_s, c.mu_k, 0.0, 0.0}, oiled{c.oiled_mu_s, c.oiled_mu_k, 0.0, 0.0};
+    double x = 0.0, v = 0.0;
+    const double bounds[] = {0.0, c.from, c.until, 4.0};
+    for (int stretch = 0; stretch < 3; ++stretch) {
+      const double length = bounds[stretch + 1] - bounds[stretch];
+      if (length <= 0.0) continue;
+      OneDofBlock line;
+      line.mass = mass;
+      line.normal_force = mass * g;
+      line.constant_force = c.pull;
+      line.pair = stretch == 1 ? oiled : dry;
+      line.x0 = x;
+      line.v0 = v;
+      const Trajectory numeric = solve_event_rk4(line, length, 1e-4);
+      for (const double fraction : {0.25, 0.5, 1.0}) {
+        const double t = bounds[stretch] + fraction * length;
+        const IntermittentSlide exact = intermittent_slide(mass, c.pull, dry, oiled, c.from, c.until, t, g);
+        EXPECT_NEAR(exact.distance, numeric.position(fraction * length), 1e-9) << "pull " << c.pull << " at " << t;
+        EXPECT_NEAR(exact.speed, numeric.velocity(fraction * length), 1e-9) << "pull " << c.pull << " at " << t;
+      }
+      x = numeric.position(length);
+      v = numeric.velocity(length);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace frictionlab

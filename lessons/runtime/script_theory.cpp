@@ -168,6 +168,23 @@ int connected_masses(lua_State* state) {
   });
 }
 
+int intermittent_slide(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.intermittent_slide", {"mass", "pull", "dry", "lubricated", "from", "until", "t", "g"});
+    const theory::IntermittentSlide slide = theory::intermittent_slide(
+        fields.number("mass", "kg"), fields.number("pull", "N"), nested_pair(state, fields, "dry"),
+        nested_pair(state, fields, "lubricated"), fields.number("from", "s"), fields.number("until", "s"),
+        fields.number("t", "s"), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 4);
+    lua_pushboolean(state, slide.sliding);
+    lua_setfield(state, -2, "sliding");
+    set_number(state, "acceleration", slide.acceleration);
+    set_number(state, "speed", slide.speed);
+    set_number(state, "distance", slide.distance);
+    return 1;
+  });
+}
+
 int stacked_blocks(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
@@ -410,6 +427,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
                                 {"connected_masses", connected_masses},
+                                {"intermittent_slide", intermittent_slide},
                                 {"growing_push", growing_push},
                                 {"thrown_box", thrown_box},
                                 {"slope_launch", slope_launch},

@@ -1,0 +1,134 @@
+-- lubricated: the friction-situations article's changing coefficient. A block on a table is
+-- pulled by a constant force; for a while the table is oiled (lubricated intermittently), so
+-- its coefficients drop and then come back. In each stretch they are constant, and the block
+-- does what Coulomb's law says with the values of that stretch: held while the pull is at most
+-- mu_s·N, sliding at a = (pull − mu_k·N)/m otherwise, and, slowed on the dry table again, it
+-- stops and sticks. The pair's coefficients here are functions of time, asked at the start of
+-- every step.
+
+local function oiled_until() return math.max(param.lubricated_from, param.lubricated_until) end
+local function oiled(t) return t >= param.lubricated_from and t < oiled_until() end
+
+local function slide(t)
+  return theory.intermittent_slide { mass = param.mass, pull = param.pull,
+    dry = { mu_s = param.mu_s, mu_k = param.mu_k },
+    lubricated = { mu_s = param.lubricated_mu_s, mu_k = param.lubricated_mu_k },
+    from = param.lubricated_from, ["until"] = oiled_until(), t = t }
+end
+-- Until a second after the block has stopped on the dry table again (at most 8 s after the oil
+-- is gone), or 2 s after the oil if it never stops.
+local function run_length()
+  local after = slide(oiled_until())
+  local a = (param.pull - param.mu_k * param.mass * g) / param.mass
+  if after.speed > 0 and a < 0 then return oiled_until() + math.min(after.speed / -a + 1, 8) end
+  return oiled_until() + 2
+end
+
+lesson {
+  title = "A table oiled for a while",
+  question = "A pull too weak to move the block: what happens while the table is oiled, and after?",
+  duration = run_length,
+  order = 18,
+  moments = {
+    { "held_dry", at = 0.8, shows = function() return value_at("slipping", time()) == 0 end },
+    { "sliding_on_oil", at = 1.8, readme = true, shows = function() return value_at("slipping", time()) == 1 end },
+    { "stopped_dry_again", at = 4.2,
+      shows = function() return value_at("slipping", time()) == 0 and value_at("distance", time()) > 0.1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local mass = parameter { "mass", 1, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }
+local pull = parameter { "pull", 3, min = 0, max = 50, unit = "N", text = "the constant pull" }
+-- Wood on wood, dry (the tribology article's 0.25 to 0.50) and with a film of oil.
+local mu_s = parameter { "mu_s", 0.5, min = 0, max = 2, text = "dry: static coefficient" }
+local mu_k = parameter { "mu_k", 0.45, min = 0, max = 2, text = "dry: kinetic coefficient" }
+local lubricated_mu_s = parameter { "lubricated_mu_s", 0.15, min = 0, max = 2, text = "oiled: static coefficient" }
+local lubricated_mu_k = parameter { "lubricated_mu_k", 0.1, min = 0, max = 2, text = "oiled: kinetic coefficient" }
+local lubricated_from = parameter { "lubricated_from", 1, min = 0, max = 10, unit = "s", text = "the oil comes at" }
+local lubricated_until = parameter { "lubricated_until", 2, min = 0, max = 10, unit = "s",
+                                     text = "the oil is gone at (no oil if not after the start)" }
+
+-- The pair's coefficients as functions of time: the oiled values while oiled(t). No sliders of
+-- its own (the four above set it), and no drag, which the closed form leaves out.
+pair { "wood", "wood", sliders = false,
+  mu_s = function(t) if oiled(t) then return lubricated_mu_s end return mu_s end,
+  mu_k = function(t) if oiled(t) then return lubricated_mu_k end return mu_k end }
+
+-- World -----------------------------------------------------------------------------------
+local table_top = ground { "table", material = "wood" }
+-- Pulled at its centre, the pull has no moment about the centre of mass, and friction's
+-- mu·N·h/2 about it tips the block only past mu = w/h = 4: it slides for every mu up to 2.
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = table_top, at = 0, mass = mass }
+force { "pull", on = block, force = { pull, 0 } }
+view { follow = block }
+
+-- Probes and plots ------------------------------------------------------------------------
+local touch = contact(block, table_top)
+probe { "friction_force", unit = "N", read = { touch, "fx" } }  -- negative: it holds the block back
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+probe { "acceleration", unit = "m/s²", read = { block, "acceleration", along = { 1, 0 } } }
+probe { "distance", unit = "m", read = { block, "distance", along = { 1, 0 } } }
+probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
+
+-- Friction as theory has it: it answers the pull while the block is held, and is −mu_k·N of the
+-- moment's surface while it slides.
+local function friction_theory(t)
+  if not slide(t).sliding then return -param.pull end
+  return -(oiled(t) and param.lubricated_mu_k or param.mu_k) * param.mass * g
+end
+plot { "Friction on the block", kind = "time", y = { "friction_force" },
+  theory = { { "Coulomb, dry then oiled then dry", friction_theory } } }
+plot { "Speed of the block", kind = "time", y = { "speed" },
+  theory = { { "piecewise closed form", function(t) return slide(t).speed end } } }
+
+-- Expectations ----------------------------------------------------------------------------
+-- The coefficients change at the start of the first step at or after each instant, up to a
+-- step late: the speed may then be off by the change in acceleration times a step, and the
+-- distance by that over the rest of the run.
+local function jump() return math.abs(param.mu_k - param.lubricated_mu_k) * g + math.abs(param.mu_s - param.lubricated_mu_s) * g end
+
+-- Where the run cannot show what theory describes at t, the row says so: the block has slid
+-- off the table's end (200 m from where it stood, less its half width), or it moves more than
+-- Box2D lets a body move in one step (b2_maxTranslation, 2 m), which caps its speed.
+local function out_of_reach(t)
+  local state = slide(t)
+  if state.distance > 200 - 0.2 then return "off the table's end by then" end
+  if state.speed * step_length() > 2 then return "faster than Box2D's 2 m a step by then" end
+end
+
+-- The middle of each stretch; the reading at a sample belongs to the step before it.
+local stretches = {
+  { "dry, before the oil", function() return param.lubricated_from / 2 end },
+  { "oiled", function() return (param.lubricated_from + oiled_until()) / 2 end },
+  { "dry again", function() return (oiled_until() + run_length()) / 2 end },
+}
+for _, stretch in ipairs(stretches) do
+  local name, middle = stretch[1], stretch[2]
+  expect { "acceleration, " .. name, unit = "m/s²",
+    predicted = function()
+      if name == "oiled" and oiled_until() <= param.lubricated_from then return "no oil" end
+      if middle() < step_length() then return "too short to read" end
+      return out_of_reach(middle()) or slide(middle()).acceleration
+    end,
+    measured = function()
+      if name == "oiled" and oiled_until() <= param.lubricated_from then return "no oil" end
+      if middle() < step_length() then return "too short to read" end
+      if out_of_reach(middle()) then return out_of_reach(middle()) end
+      local at = middle() + step_length()
+      return time() >= at and value_at("acceleration", at) or nil
+    end,
+    tolerance = function() return 0.01 * math.abs(slide(middle()).acceleration) + 1e-3 end }
+end
+
+local function at_the_end(probe)
+  return time() >= run_length() - 0.5 * step_length() and value_at(probe, run_length()) or nil
+end
+expect { "speed at the end", unit = "m/s",
+  predicted = function() return out_of_reach(run_length()) or slide(run_length()).speed end,
+  measured = function() return out_of_reach(run_length()) or at_the_end("speed") end,
+  tolerance = function() return 0.01 * slide(run_length()).speed + 2 * jump() * step_length() + 1e-3 end }
+expect { "distance at the end", unit = "m",
+  predicted = function() return out_of_reach(run_length()) or slide(run_length()).distance end,
+  measured = function() return out_of_reach(run_length()) or at_the_end("distance") end,
+  tolerance = function() return 0.01 * slide(run_length()).distance + 2 * jump() * step_length() * run_length() + 1e-3 end }
