@@ -185,11 +185,13 @@ void Scene::add_spring(const Spring& spring) {
 }
 
 void Scene::add_applied_force(const AppliedForce& force) {
-  if (force.body == nullptr || !force.force) {
-    throw InvalidInput("applied force '" + force.name + "': it needs a body and a force");
+  if (force.body == nullptr || (!force.force && !force.torque)) {
+    throw InvalidInput("applied force '" + force.name + "': it needs a body and a force or a torque");
   }
   applied_.push_back(force);
+  if (!applied_.back().force) applied_.back().force = [](double) { return b2Vec2{0.0f, 0.0f}; };
   forces_applied_.push_back({0.0f, 0.0f});
+  torques_applied_.push_back(0.0);
 }
 
 namespace {
@@ -205,6 +207,7 @@ void Scene::grab(b2Body* body, b2Vec2 local_point, b2Vec2 target) {
   applied_.push_back({grab_name, body, local_point, {}});
   applied_.back().force = [this, index = applied_.size() - 1](double) { return grab_force(applied_[index]); };
   forces_applied_.push_back({0.0f, 0.0f});
+  torques_applied_.push_back(0.0);
 }
 
 void Scene::move_grab(b2Vec2 target) {
@@ -217,6 +220,7 @@ void Scene::release() {
   // The hand is always the last applied force: it is added last and removed before another.
   applied_.pop_back();
   forces_applied_.pop_back();
+  torques_applied_.pop_back();
 }
 
 b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
@@ -460,6 +464,12 @@ void Scene::advance(double t, float h, double t_end, bool move) {
   };
   std::vector<Pending> pending;
   pending.reserve(applied_.size());
+  struct Turning {
+    b2Body* body;
+    double torque;
+    double start_spin;
+  };
+  std::vector<Turning> turning;
   for (std::size_t i = 0; i < applied_.size(); ++i) {
     const AppliedForce& applied = applied_[i];
     const b2Vec2 point = world_point(applied.body, applied.local_point);
@@ -467,6 +477,16 @@ void Scene::advance(double t, float h, double t_end, bool move) {
     if (move) forces_applied_[i] = force;
     applied.body->ApplyForce(force, point, true);
     pending.push_back({applied.body, applied.local_point, force, applied.body->GetLinearVelocityFromWorldPoint(point)});
+    if (applied.torque) {
+      const double torque = applied.torque(t);
+      if (!std::isfinite(torque) || std::abs(torque) > 1e9) {
+        throw InvalidInput("applied force '" + applied.name + "': torque " + std::to_string(torque) + " N·m at t = " +
+                           std::to_string(t) + " s is outside ±1e9");
+      }
+      if (move) torques_applied_[i] = torque;
+      applied.body->ApplyTorque(static_cast<float>(torque), true);
+      turning.push_back({applied.body, torque, applied.body->GetAngularVelocity()});
+    }
   }
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
@@ -479,6 +499,10 @@ void Scene::advance(double t, float h, double t_end, bool move) {
     // The point moved with the body; its velocity is taken where the body now holds it.
     const b2Vec2 end_velocity = p.body->GetLinearVelocityFromLocalPoint(p.local_point);
     ledger_.work_applied += h * b2Dot(p.force, 0.5f * (p.start_velocity + end_velocity));
+  }
+  // A torque's work is itself times the angle turned: h times the mean of the spins.
+  for (const Turning& turn : turning) {
+    ledger_.work_applied += h * turn.torque * 0.5 * (turn.start_spin + turn.body->GetAngularVelocity());
   }
   const ContactWork work = listener_.take_work();
   ledger_.work_friction += work.friction;

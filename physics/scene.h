@@ -42,12 +42,15 @@ struct Spring {
   double rest_length = 0.0;         // m, >= 0
 };
 
-// A force on a body at a point fixed in the body, given in world axes as a function of time.
+// A force on a body at a point fixed in the body, given in world axes as a function of time,
+// and perhaps a torque about the body's centre of mass (N·m, counter-clockwise positive): a
+// motor turning a wheel. Either may be left out (a force of zero, no torque).
 struct AppliedForce {
   std::string name;
   b2Body* body = nullptr;
   b2Vec2 local_point{0.0f, 0.0f};
   VectorOfTime force;
+  ScalarOfTime torque{};
 };
 
 // Energies in joules. The residual is what the books fail to explain: zero for an exact
@@ -147,6 +150,8 @@ class Scene {
   // the order added: what the contacts' recorded friction answered. Zero before the first step.
   const std::vector<b2Vec2>& spring_forces_applied() const { return spring_forces_applied_; }
   const std::vector<b2Vec2>& forces_applied() const { return forces_applied_; }
+  // Each applied force's torque as the last step applied it (0 without one), N·m.
+  const std::vector<double>& torques_applied() const { return torques_applied_; }
 
   const EnergyLedger& ledger() const { return ledger_; }
 
@@ -221,6 +226,7 @@ class Scene {
   std::vector<AppliedForce> applied_;
   std::vector<b2Vec2> spring_forces_applied_;
   std::vector<b2Vec2> forces_applied_;
+  std::vector<double> torques_applied_;
   std::vector<Driver> drivers_;
   std::vector<Probe> probes_;
   std::function<void()> before_probes_;

@@ -511,6 +511,39 @@ pair { "wood", "wood", mu_s = 0.5, mu_k = function(t) return 0.3 end, sliders = 
       << refused;
 }
 
+TEST(LessonRuntime, AForceMayBeATorqueThatTurnsABodyAndDoesWork) {
+  // A disc of 2 kg and radius 0.5 m falling freely, turned by a motor whose torque grows as
+  // 3·t N·m: ω(t) = 1.5·t²/I with I = m·r²/2 = 0.25 kg·m², the handle reads the torque of the
+  // time now, and the energy ledger books the torque's work, ∫τ·ω dt, as applied work (its
+  // residual stays at round-off).
+  ScriptFile script(with_heading(R"(
+material { "disc", density = 100 }
+pair { "disc", "disc", mu_s = 0.5, mu_k = 0.4 }
+local disc = circle { "disc", material = "disc", radius = 0.5, x = 0, y = 100, mass = 2 }
+local motor = force { "motor", on = disc, torque = function(t) return 3 * t end }
+probe { "spin", unit = "rad/s", read = { disc, "omega" } }
+probe { "torque", unit = "N·m", read = { motor, "torque" } }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 1.0);
+  // Each step applies the torque of its start, and the spin read is the step's, its middle's:
+  // a left sum, 1.5·t·(t − h)/I, O(h) from the exact 1.5·t²/I.
+  const double h = lesson.scene().frame_step();
+  EXPECT_NEAR(probe_now(lesson, "spin"), 1.5 * (1.0 - h) / 0.25, 1e-4);
+  EXPECT_NEAR(probe_now(lesson, "torque"), 3.0, 1e-9);
+  const EnergyLedger& books = lesson.scene().ledger();
+  // All the torque's work went into spin, ½·I·ω² (the fall's books are gravity's).
+  const double spin = probe_now(lesson, "spin");
+  EXPECT_NEAR(books.work_applied, 0.5 * 0.25 * spin * spin, 0.01);
+  ScriptFile neither(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = 0.4 }
+local block = box { "block", material = "wood", width = 0.2, height = 0.2, x = 0, y = 1 }
+force { "nothing", on = block }
+)"));
+  EXPECT_NE(error_of([&] { Lesson broken(neither.path()); }).find("force is missing: {fx, fy} in N, or a function(t); or give a torque"),
+            std::string::npos);
+}
+
 TEST(LessonRuntime, HistoryAndValueAtReadTheRecord) {
   ScriptFile script(with_heading(R"(
 probe { "twice_t", unit = "s", function() return 2 * time() end }

@@ -52,7 +52,7 @@ int contact(lua_State* state) {
 
 // What a script can read from a handle. One table serves both `block.vx` in Lua and
 // probe{ read = { block, "vx" } }, which the runtime reads itself every step without Lua.
-enum class Field { x, y, angle, vx, vy, omega, mass, distance, speed, acceleration, force_x, force_y, length, tension, fx, fy,
+enum class Field { x, y, angle, vx, vy, omega, mass, distance, speed, acceleration, torque, force_x, force_y, length, tension, fx, fy,
                    friction, normal, nx, ny, drag, drag_x, drag_y, sliding_speed, slipping, points, load1, load2,
                    load_left, load_right };
 struct FieldName {
@@ -70,7 +70,7 @@ const std::vector<FieldName>& field_names(HandleType type) {
                                               {"speed", Field::speed}, {"acceleration", Field::acceleration}};
   static const std::vector<FieldName> spring = {{"force_x", Field::force_x}, {"force_y", Field::force_y},
                                                 {"length", Field::length}, {"tension", Field::tension}};
-  static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}};
+  static const std::vector<FieldName> force = {{"fx", Field::fx}, {"fy", Field::fy}, {"torque", Field::torque}};
   static const std::vector<FieldName> rope = {{"tension", Field::tension}};
   static const std::vector<FieldName> contact = {
       {"friction", Field::friction}, {"fx", Field::fx},         {"fy", Field::fy},
@@ -196,7 +196,9 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
     return field == Field::length ? length : spring.stiffness * (length - spring.rest_length);
   }
   if (handle.type == force_type) {
-    const b2Vec2 now = scene.applied_forces()[handle.index].force(scene.time());
+    const AppliedForce& applied = scene.applied_forces()[handle.index];
+    if (field == Field::torque) return applied.torque ? applied.torque(scene.time()) : 0.0;
+    const b2Vec2 now = applied.force(scene.time());
     return field == Field::fx ? now.x : now.y;
   }
   const b2Body* a = handle.contact.a;

@@ -547,7 +547,7 @@ int force(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "force");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "force", {"on", "at", "force"});
+    Fields fields(state, 1, "force", {"on", "at", "force", "torque"});
     AppliedForce made;
     made.name = fields.name();
     fields.push("on");
@@ -561,10 +561,20 @@ int force(lua_State* state) {
         const std::array<double, 2> f = push(t);
         return b2Vec2{static_cast<float>(f[0]), static_cast<float>(f[1])};
       };
-    } else {
-      if (!fields.has("force")) throw InvalidInput(fields.what() + ": force is missing: {fx, fy} in N, or a function(t)");
+    } else if (fields.has("force")) {
       const b2Vec2 constant = fields.point("force", origin_point);
       made.force = [constant](double) { return constant; };
+    } else if (!fields.has("torque")) {
+      throw InvalidInput(fields.what() + ": force is missing: {fx, fy} in N, or a function(t); or give a torque");
+    }
+    // A torque about the body's centre of mass, N·m, counter-clockwise positive: a motor.
+    if (fields.push_function("torque")) {
+      const auto turn = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 1,
+                                         fields.what() + ": the torque function (t -> N·m)", true);
+      made.torque = [turn](double t) { return turn(t)[0]; };
+    } else if (fields.has("torque")) {
+      const double constant = fields.number_in("torque", "N·m", -1e9, 1e9);
+      made.torque = [constant](double) { return constant; };
     }
     build.scene->add_applied_force(made);
     push_indexed(state, force_type, build.scene->applied_forces().size() - 1);
