@@ -356,6 +356,32 @@ IntermittentSlide intermittent_slide(double mass, double pull, const FrictionPai
   return state;
 }
 
+DrivenWheel driven_wheel(double mass, double radius, double inertia, double torque, double mu_s, double mu_k, double g) {
+  const char* where = "driven_wheel";
+  require_positive(where, "mass", mass);
+  require_positive(where, "radius", radius);
+  require_non_negative(where, "inertia", inertia);
+  require_non_negative(where, "torque", torque);
+  require_non_negative(where, "mu_s", mu_s);
+  require_non_negative(where, "mu_k", mu_k);
+  require_positive(where, "g", g);
+  DrivenWheel wheel{};
+  const double rolling_inertia = inertia + mass * radius * radius;  // about the contact point
+  wheel.traction_limit = std::max(mu_s, mu_k) * g * rolling_inertia / radius;
+  if (torque <= wheel.traction_limit) {
+    wheel.rolls = true;
+    wheel.acceleration = torque * radius / rolling_inertia;
+    wheel.angular_acceleration = wheel.acceleration / radius;
+    wheel.friction = mass * wheel.acceleration;
+    return wheel;
+  }
+  if (inertia == 0.0) reject(where, "inertia", "more than 0 when the torque passes the traction limit", inertia);
+  wheel.friction = mu_k * mass * g;
+  wheel.acceleration = mu_k * g;
+  wheel.angular_acceleration = (torque - wheel.friction * radius) / inertia;
+  return wheel;
+}
+
 GrowingPush growing_push(double mass, double rate, const FrictionPair& pair, double g, double t) {
   const char* where = "growing_push";
   require_positive(where, "mass", mass);

@@ -129,6 +129,24 @@ struct IntermittentSlide {
 IntermittentSlide intermittent_slide(double mass, double pull, const FrictionPair& dry, const FrictionPair& lubricated,
                                      double from, double until, double t, double g);
 
+// The friction-situations article's FAQ: friction in the direction of motion. A wheel of mass
+// m, radius r and inertia I about its axle on level ground, turned forward by a torque from
+// rest. Rolling without slipping, the ground's friction f pushes it forward and is all that
+// speeds it up: m·a = f, I·α = torque − f·r, a = α·r, so a = torque·r/(I + m·r²) and
+// f = m·a. That needs f <= max(mu_s, mu_k)·m·g, so it rolls up to the traction limit
+// torque = max(mu_s, mu_k)·g·(I + m·r²)/r (mu_s·m·g·r for a wheel of no inertia, the article's
+// simplest case). Above it the wheel spins: kinetic friction mu_k·m·g still pushes forward,
+// a = mu_k·g, and the rest of the torque spins it up, α = (torque − mu_k·m·g·r)/I. Magnitudes,
+// forward positive; torque >= 0.
+struct DrivenWheel {
+  bool rolls;
+  double acceleration;          // m/s², of the axle
+  double angular_acceleration;  // rad/s², in the rolling-forward sense
+  double friction;              // N, forward
+  double traction_limit;        // N·m
+};
+DrivenWheel driven_wheel(double mass, double radius, double inertia, double torque, double mu_s, double mu_k, double g);
+
 // The tribology article's book pushed harder and harder (the force-sensor lab): a block of mass
 // m at rest on flat ground, pushed along it by a force growing at `rate` from 0 at t = 0.
 // Static friction answers the push until it reaches the breakaway push; then kinetic friction

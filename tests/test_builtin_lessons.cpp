@@ -165,6 +165,17 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"lubricated", {{"mu_s", "0.5"}, {"mu_k", "1"}}, ""},
                       Case{"lubricated", {{"lubricated_mu_s", "0.1"}, {"lubricated_mu_k", "2"}, {"pull", "10"}}, ""},
                       Case{"lubricated", {{"mass", "10"}, {"pull", "20"}}, ""},
+                      // driven_wheel: no torque; gripping all through; spinning (light, small wheel:
+                      // faster than Box2D turns, in words); frictionless; mu_k above mu_s; the
+                      // heaviest, largest wheel; a grip too short to read (in words).
+                      Case{"driven_wheel", {{"torque", "0"}}, ""}, Case{"driven_wheel", {{"torque", "5"}}, ""},
+                      Case{"driven_wheel", {{"torque", "20"}, {"mass", "0.5"}, {"radius", "0.1"}},
+                           "spins faster than Box2D's quarter turn a step"},
+                      Case{"driven_wheel", {{"mu_s", "0"}, {"mu_k", "0"}}, ""},
+                      Case{"driven_wheel", {{"mu_s", "0.5"}, {"mu_k", "1"}}, ""},
+                      Case{"driven_wheel", {{"torque", "20"}, {"mass", "10"}, {"radius", "0.5"}}, ""},
+                      Case{"driven_wheel", {{"torque", "20"}, {"mu_s", "0.1"}, {"mu_k", "0.05"}}, ""},
+                      Case{"driven_wheel", {{"radius", "0.1"}, {"torque", "3"}}, ""},
                       // friction_models: no drag and strong drag on both drag lanes; slow and fast
                       // launches; light and heavy blocks; the least and the most kinetic friction.
                       Case{"friction_models", {{"c", "0"}, {"b", "0"}}, ""},
@@ -370,6 +381,7 @@ TEST(BuiltinLessons, NameTheBodiesParametersAndProbesTheIssueAsksFor) {
       {"stacked_blocks", "top", {"top_mass", "bottom_mass", "pull_rate", "top_on_bottom.mu_s", "top_on_bottom.mu_k",
                                  "bottom_on_floor.mu_s", "bottom_on_floor.mu_k"}, {}},
       {"stacked_blocks", "bottom", {}, {}},
+      {"driven_wheel", "wheel", {"torque", "mass", "radius", "mu_s", "mu_k"}, {}},
       {"lubricated", "block", {"mass", "pull", "mu_s", "mu_k", "lubricated_mu_s", "lubricated_mu_k", "lubricated_from",
                                "lubricated_until"}, {"speed", "acceleration", "distance"}},
   };

@@ -625,5 +625,32 @@ TEST(ClosedForms, IntermittentSlideMatchesTheEventSolverStretchByStretch) {
   }
 }
 
+// The driven wheel obeys Newton's laws on both sides of the traction limit: rolling, a = α·r,
+// f = m·a and I·α = torque − f·r with f within the static limit; spinning, f = mu_k·m·g and the
+// contact point's backward slip grows (α·r > a). At the limit the two agree on the friction,
+// and a wheel of no inertia has the article's limit mu_s·m·g·r.
+TEST(ClosedForms, DrivenWheelObeysNewtonOnBothSidesOfTheTractionLimit) {
+  const double mass = 2.0, radius = 0.3, inertia = 0.5 * mass * radius * radius, mu_s = 0.6, mu_k = 0.5;
+  const double limit = driven_wheel(mass, radius, inertia, 0.0, mu_s, mu_k, g).traction_limit;
+  EXPECT_NEAR(limit, 1.5 * mu_s * mass * g * radius, 1e-12);
+  for (const double torque : {0.0, 0.3 * limit, limit, 1.0001 * limit, 3.0 * limit}) {
+    const DrivenWheel wheel = driven_wheel(mass, radius, inertia, torque, mu_s, mu_k, g);
+    EXPECT_EQ(wheel.rolls, torque <= limit) << torque;
+    EXPECT_NEAR(mass * wheel.acceleration, wheel.friction, 1e-12) << torque;
+    EXPECT_NEAR(inertia * wheel.angular_acceleration, torque - wheel.friction * radius, 1e-12) << torque;
+    if (wheel.rolls) {
+      EXPECT_NEAR(wheel.angular_acceleration * radius, wheel.acceleration, 1e-12) << torque;
+      EXPECT_LE(wheel.friction, mu_s * mass * g * (1.0 + 1e-12)) << torque;
+    } else {
+      EXPECT_NEAR(wheel.friction, mu_k * mass * g, 1e-12) << torque;
+      EXPECT_GT(wheel.angular_acceleration * radius, wheel.acceleration) << torque;
+    }
+  }
+  EXPECT_NEAR(driven_wheel(mass, radius, inertia, limit, mu_s, mu_k, g).friction, mu_s * mass * g, 1e-9);
+  EXPECT_NEAR(driven_wheel(mass, radius, 0.0, 0.0, mu_s, mu_k, g).traction_limit, mu_s * mass * g * radius, 1e-12);
+  // With mu_k above mu_s it rolls up to the larger coefficient, as the listener holds.
+  EXPECT_TRUE(driven_wheel(mass, radius, inertia, 1.2 * limit, mu_s, 0.8, g).rolls);
+}
+
 }  // namespace
 }  // namespace frictionlab

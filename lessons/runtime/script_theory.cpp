@@ -185,6 +185,24 @@ int intermittent_slide(lua_State* state) {
   });
 }
 
+int driven_wheel(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.driven_wheel", {"mass", "radius", "inertia", "torque", "mu_s", "mu_k", "g"});
+    const double mass = fields.number("mass", "kg"), radius = fields.number("radius", "m");
+    const theory::DrivenWheel wheel = theory::driven_wheel(
+        mass, radius, fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius), fields.number("torque", "N·m"),
+        fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 5);
+    lua_pushboolean(state, wheel.rolls);
+    lua_setfield(state, -2, "rolls");
+    set_number(state, "acceleration", wheel.acceleration);
+    set_number(state, "angular_acceleration", wheel.angular_acceleration);
+    set_number(state, "friction", wheel.friction);
+    set_number(state, "traction_limit", wheel.traction_limit);
+    return 1;
+  });
+}
+
 int stacked_blocks(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
@@ -427,6 +445,7 @@ void register_theory_api(lua_State* state) {
                                 {"disk_starts_rolling", disk_starts_rolling},
                                 {"stacked_blocks", stacked_blocks},
                                 {"connected_masses", connected_masses},
+                                {"driven_wheel", driven_wheel},
                                 {"intermittent_slide", intermittent_slide},
                                 {"growing_push", growing_push},
                                 {"thrown_box", thrown_box},

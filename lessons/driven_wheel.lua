@@ -1,0 +1,145 @@
+-- driven_wheel: friction can act in the direction of motion (the friction-situations article's
+-- FAQ). A motor turns a wheel on a road; the wheel pushes back on the road at the contact, and
+-- the road's friction pushes the wheel forward: it is the only forward force, and all that
+-- speeds the wheel up. Rolling without slipping, friction is m·a (static, as much as rolling
+-- needs), up to the traction limit; past it the tyre spins on the road and kinetic friction,
+-- mu_k·m·g, still forward, takes over. The motor winds up over the first second, as a driver
+-- presses the pedal, so a run that passes the limit shows where.
+-- The article's simplest case, torque > mu_s·N·r, is a wheel with no inertia of its own. A real
+-- wheel (here a solid disc, I = m·r²/2) needs part of the torque to spin itself up, so it grips
+-- up to 1.5 times that: torque = mu_s·g·(I + m·r²)/r.
+
+local function ramp(t) return math.min(math.max(t, 0), 1) end  -- share of the full torque at t
+-- Box2D's bodies touch two skins apart: the road's polygon has a 1 cm skin, and the wheel
+-- rests 5 mm into it, on a contact point in the middle of the overlap, 2.5 mm inside its rim.
+-- So the road's friction acts 2.5 mm nearer the axle than the rim, and the wheel rolls as one
+-- of radius r − 2.5 mm (a 0.3 m wheel speeds up 0.3 % faster and spins up 1.1 % faster than a
+-- rim-radius theory says). Theory is given that lever arm; the inertia is the disc's, m·r²/2.
+local skin_offset = 0.0025
+local function wheel_theory(torque)
+  return theory.driven_wheel { mass = param.mass, radius = param.radius - skin_offset, torque = torque,
+                               inertia = 0.5 * param.mass * param.radius ^ 2, mu_s = param.mu_s, mu_k = param.mu_k }
+end
+local function limit() return wheel_theory(0).traction_limit end
+-- When the motor's torque reaches the traction limit (nil if it never does).
+local function spin_start()
+  if param.torque <= limit() then return nil end
+  return limit() / param.torque
+end
+
+lesson {
+  title = "A motor turns a wheel",
+  question = "Which way does the road's friction push a driven wheel, and what happens when the motor is too strong?",
+  duration = 2,
+  order = 37,
+  moments = {
+    { "gripping", at = 0.4, shows = function() return value_at("slipping", time()) == 0 end },
+    { "spinning", at = 1.5, readme = true, shows = function() return value_at("slipping", time()) == 1 end },
+    { "gentle_motor", at = 1.5, set = { torque = 5 }, shows = function() return value_at("slipping", time()) == 0 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+local torque = parameter { "torque", 12, min = 0, max = 20, unit = "N·m", text = "the motor's full torque, reached at 1 s" }
+local mass = parameter { "mass", 2, min = 0.5, max = 10, unit = "kg", text = "mass of the wheel" }
+local radius = parameter { "radius", 0.3, min = 0.1, max = 0.5, unit = "m", text = "radius of the wheel" }
+
+-- A rubber tyre on asphalt, dry.
+pair { "rubber", "asphalt", mu_s = 0.9, mu_k = 0.7, sliders = { "mu_s", "mu_k" } }
+
+-- World -----------------------------------------------------------------------------------
+local road = ground { "road", material = "asphalt" }
+local wheel = circle { "wheel", material = "rubber", radius = radius, on = road, at = 0, mass = mass }
+-- Clockwise, the way that rolls it to the right (torques are counter-clockwise positive).
+local motor = force { "motor", on = wheel, torque = function(t) return -torque * ramp(t) end }
+view { follow = wheel }
+
+-- Probes and plots ------------------------------------------------------------------------
+local touch = contact(wheel, road)
+probe { "torque", unit = "N·m", read = { motor, "torque", scale = -1 } }
+probe { "friction_force", unit = "N", read = { touch, "fx" } }  -- positive: forward
+probe { "acceleration", unit = "m/s²", read = { wheel, "acceleration", along = { 1, 0 } } }
+probe { "spin", unit = "rad/s", read = { wheel, "omega", scale = -1 } }  -- rolling forward
+probe { "speed", unit = "m/s", read = { wheel, "vx" } }
+probe { "slipping", read = { touch, "slipping" } }
+
+plot { "The road's friction on the wheel", kind = "xy", x = "torque", y = { "friction_force" },
+  theory = {
+    { "gripping: m·a", function(T) if T <= limit() then return wheel_theory(T).friction end end,
+      active = function() return touch.state ~= "slipping" end },
+    { "spinning: μk·m·g", function(T) if T >= limit() then return param.mu_k * param.mass * g end end,
+      active = function() return touch.state == "slipping" end },
+  } }
+-- Gripping, the rim turns as fast as the axle moves (ω·r = v); spinning, it runs ahead.
+probe { "rim_speed", unit = "m/s", read = { wheel, "omega", scale = -radius } }
+plot { "Speed of the axle and of the tyre's rim", kind = "time", y = { "speed", "rim_speed" } }
+
+-- Reading the record ----------------------------------------------------------------------
+local function first_slip_torque()
+  local slipping, torques = history("slipping"), history("torque")
+  for i = 1, #slipping do
+    if slipping[i] == 1 then return i > 1 and torques[i - 1] or 0 end
+  end
+end
+local function at_the_end(probe) return time() >= 2 - 0.5 * step_length() and value_at(probe, 2) or nil end
+-- ∫ ramp(t) dt from a to b: the torque's time integral in units of the full torque.
+local function ramp_integral(a, b)
+  local function up_to(t) if t <= 1 then return t * t / 2 end return 0.5 + (t - 1) end
+  return up_to(b) - up_to(a)
+end
+-- The wheel's spin at the end of the run, from theory: rolling, ω = v/r with a in step with the
+-- torque; spinning from t_s, ω(t_s) plus (torque − mu_k·m·g·r)/I over the rest of the run.
+local function spin_at_end()
+  local inertia = 0.5 * param.mass * param.radius ^ 2
+  local per_torque = 1 / (inertia + param.mass * param.radius ^ 2)  -- rolling: α per N·m
+  local start = spin_start()
+  if not start then return per_torque * param.torque * ramp_integral(0, 2) end
+  return per_torque * param.torque * ramp_integral(0, start)
+         + (param.torque * ramp_integral(start, 2) - param.mu_k * param.mass * g * param.radius * (2 - start)) / inertia
+end
+-- Box2D turns a body at most a quarter turn a step, which caps its spin at (π/2)/h.
+local function too_fast()
+  if spin_at_end() > 0.8 * (math.pi / 2) / step_length() then return "spins faster than Box2D's quarter turn a step" end
+end
+
+-- Expectations ----------------------------------------------------------------------------
+expect { "traction limit", unit = "N·m",
+  predicted = function() return spin_start() and limit() or "not reached: the motor stays below it" end,
+  measured = function()
+    if not spin_start() then return first_slip_torque() and "passed" or "not reached: the motor stays below it" end
+    return first_slip_torque()
+  end,
+  -- The torque grows by full·h a step, and the slip shows at the end of the step it began in.
+  tolerance = function() return 0.01 * limit() + param.torque * step_length() end }
+-- Half way to the limit (or at 0.5 s), the wheel grips: the road pushes it forward with m·a.
+-- On a step, so that the sample read there is the one meant.
+local function gripping_time()
+  local h = step_length()
+  return math.max(1, math.floor(math.min(0.5, (spin_start() or 2) / 2) / h + 0.5)) * h
+end
+-- The contact reads the step just taken, which the torque asked at its start drove.
+local function short_grip()
+  if gripping_time() < 4 * step_length() then return "grips for under eight steps" end
+end
+expect { "friction while gripping, forward", unit = "N",
+  predicted = function()
+    return short_grip() or wheel_theory(param.torque * ramp(gripping_time() - step_length())).friction
+  end,
+  measured = function()
+    if short_grip() then return short_grip() end
+    return time() >= gripping_time() and value_at("friction_force", gripping_time()) or nil
+  end,
+  tolerance = function() return 0.01 * wheel_theory(param.torque).friction + 1e-3 end }
+expect { "acceleration at the end", unit = "m/s²",
+  predicted = function() return too_fast() or wheel_theory(param.torque).acceleration end,
+  measured = function() return too_fast() or at_the_end("acceleration") end,
+  tolerance = function() return 0.01 * wheel_theory(param.torque).acceleration + 1e-3 end }
+expect { "spin-up at the end", unit = "rad/s²",
+  predicted = function() return too_fast() or wheel_theory(param.torque).angular_acceleration end,
+  measured = function()
+    if too_fast() then return too_fast() end
+    local spins = history("spin")
+    if #spins < 2 then return nil end
+    return (spins[#spins] - spins[#spins - 1]) / step_length()
+  end,
+  tolerance = function() return 0.01 * wheel_theory(param.torque).angular_acceleration + 1e-2 end }
