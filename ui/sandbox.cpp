@@ -17,6 +17,7 @@
 #include "ui/frame.h"
 #include "ui/image.h"
 #include "ui/output_file.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -76,8 +77,13 @@ std::optional<ImRect> Sandbox::control(const std::string& name) const {
   return found->second;
 }
 
-void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
+void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record) {
   fonts_ = &fonts;
+  std::optional<TextRecording> noting;
+  if (record != nullptr) {
+    *record = FrameRecord{};
+    noting.emplace(&record->texts);
+  }
   controls_.clear();
   const float s = fonts.scale;
   handle_keys();
@@ -90,7 +96,7 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y + 2.0f * s;
+  const float transport_height = transport_shape(display.x).height;
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - transport_height));
@@ -101,13 +107,16 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   style.origin = origin;
   style.readings = &playback_->readings();
   style.view_adjust = view_adjust_;
-  style.parameters_panel = [this](ImVec2 corner, ImVec2 size) { parameters_panel(corner, size); };
+  style.record = record;
+  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
+    parameters_panel(corner, size, folded);
+  };
   style.more_tabs = [this] {
     cheapest_setting_tab();
     stability_map_tab();
   };
   ImGui::PushFont(fonts.body);
-  style.parameters_height = parameters_height();
+  style.parameters_heights = parameters_heights();
   ImGui::PopFont();
   build_frame(playback_->lesson(), playback_->framing(), style, area);
 
@@ -286,7 +295,7 @@ void Sandbox::messages(ImVec2 corner, float width) {
     ImGui::PushTextWrapPos(0.0f);
     for (const auto& [text, fault] : lines) {
       ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));
-      ImGui::TextUnformatted(text.c_str());
+      shown_text(text.c_str());
       ImGui::PopStyleColor();
     }
     ImGui::PopTextWrapPos();
@@ -310,6 +319,7 @@ std::string Sandbox::open(const std::string& name_or_path) {
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     control_errors_.clear();
+    pair_open_.clear();
     sliding_.reset();
     hand_held_ = false;
     view_adjust_ = {};

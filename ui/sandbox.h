@@ -21,6 +21,7 @@
 #include "physics/recommend.h"
 #include "physics/stability.h"
 #include "ui/chart.h"
+#include "ui/frame.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
@@ -56,7 +57,8 @@ class Sandbox {
 
   // One display frame: the keys and mouse in ImGui's io, `wall_seconds` of real time passing,
   // then the whole window built.
-  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds);
+  // With `record`, where the frame put things and every text it drew (the layout test).
+  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record = nullptr);
 
   Playback& playback() { return *playback_; }
   const Playback& playback() const { return *playback_; }
@@ -114,21 +116,39 @@ class Sandbox {
   void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
   void transport_bar(ImVec2 corner, ImVec2 size);
-  void parameters_panel(ImVec2 corner, ImVec2 size);
+  // The transport bar's words, and its height: one row, or two when the words do not fit
+  // beside the time bar.
+  std::string transport_words() const;
+  struct TransportShape {
+    float controls = 0.0f, bar = 0.0f, height = 0.0f;
+    bool words_below = false;
+  };
+  TransportShape transport_shape(float width) const;
+  void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   void cheapest_setting_tab();
   void stability_map_tab();
   void stability_map_window();
   void update_stability_chart();
   // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
   // (with its presets) comes before it. The panel draws them; its height is counted from them.
+  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
+  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
+  // folds one more pair the teacher has not opened, the last first, into its heading with its
+  // values.
   struct ParameterRow {
     const lessons::Parameter* parameter;
-    bool pair_heading;
+    const lessons::Parameter* partner;  // the second coefficient on a row of two
+    bool pair_heading, folded, two_a_row;
   };
-  std::vector<ParameterRow> parameter_rows() const;
-  float parameters_height() const;
+  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
+  std::vector<std::string> foldable_pairs(bool opened_too) const;
+  std::vector<ParameterRow> parameter_rows(std::size_t step) const;
+  std::vector<float> parameters_heights() const;  // at each step
   void remember(const std::string& name);  // the last item's place, under `name`
-  void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);
+  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
+  // value (none when value_x is reset_x) and its reset.
+  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+                     float value_x, float reset_x);
   void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);
   void help_panel();
@@ -156,6 +176,7 @@ class Sandbox {
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;
   std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
+  std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;

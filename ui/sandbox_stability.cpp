@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "physics/scenarios.h"
+#include "ui/panels.h"
 #include "ui/sandbox.h"
+#include "ui/text_record.h"
 #include "ui/stability_chart.h"
 
 namespace frictionlab::ui {
@@ -68,7 +70,7 @@ void Sandbox::update_stability_chart() {
 }
 
 void Sandbox::stability_map_tab() {
-  const bool open = ImGui::BeginTabItem("Stability map");
+  const bool open = begin_tab("Stability###stability map");
   remember("Stability map tab");
   if (!open) return;
   update_stability_chart();
@@ -79,8 +81,9 @@ void Sandbox::stability_map_tab() {
     remember("stability map");
     ImGui::SameLine();
     ImGui::TextDisabled("the regularized law here");
+    note_text("the regularized law here");
     ImGui::PushTextWrapPos(0.0f);
-    for (const std::string& line : stability_words_) ImGui::TextUnformatted(line.c_str());
+    for (const std::string& line : stability_words_) shown_text(line.c_str());
     ImGui::PopTextWrapPos();
   }
   ImGui::EndTabItem();
