@@ -142,7 +142,9 @@ void Sandbox::help_panel() {
     ImGui::TextUnformatted(
         "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. The wheel zooms, a "
         "drag on empty space pans, a double click there gives the lesson's view back. Drag a slider, or "
-        "type an exact value in the box beside it and press Enter; the arrow resets it to the script's value. "
+        "type an exact value in the box beside it and press Enter (Ctrl+click a slider that has no box); the "
+        "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
+        "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
         "until you change something.");
     ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
