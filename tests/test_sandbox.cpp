@@ -56,8 +56,11 @@ class Driver {
   lessons::Lesson& lesson() { return playback().lesson(); }
   const std::string& folder() const { return folder_; }
 
+  // The display the hands' frames are drawn for.
+  void set_display(ImVec2 display) { display_ = display; }
   // One display frame in which `wall` seconds of real time pass.
-  void frame(double wall = 0.0, ImVec2 display = ImVec2(1280.0f, 720.0f)) {
+  void frame(double wall = 0.0, ImVec2 display = ImVec2(0.0f, 0.0f)) {
+    if (display.x == 0.0f) display = display_;
     gl_.make_current();
     const Fonts& fonts = host_.prepare(sandbox_->ui_scale(display), sandbox_->window_settings().theme);
     ImGuiIO& io = ImGui::GetIO();
@@ -118,6 +121,7 @@ class Driver {
                           ::testing::UnitTest::GetInstance()->current_test_info()->name()))
                             .string();
   std::unique_ptr<Sandbox> sandbox_;
+  ImVec2 display_{1280.0f, 720.0f};
 };
 
 double first_slip_time(const Scene& scene) {
@@ -631,6 +635,47 @@ TEST(Sandbox, APresetSetsBothCoefficientsOfThePair) {
   EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.18);
   EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.14);
   EXPECT_EQ(driver.lesson().scene().pairs().pair("aluminium", "wood").mu_k, 0.14);
+}
+
+TEST(Sandbox, APairsArrowFoldsItsSlidersIntoItsHeadingAndOpensThemAgain) {
+  Driver driver("spring_pull");
+  driver.frame();
+  ASSERT_TRUE(driver.sandbox().control("mu_s slider").has_value());
+  driver.click("aluminium on wood fold");
+  driver.frame();
+  EXPECT_FALSE(driver.sandbox().control("mu_s slider").has_value());
+  EXPECT_FALSE(driver.sandbox().control("mu_k value").has_value());
+  EXPECT_TRUE(driver.sandbox().control("mass slider").has_value());
+  driver.click("aluminium on wood fold");
+  driver.frame();
+  EXPECT_TRUE(driver.sandbox().control("mu_s slider").has_value());
+  EXPECT_TRUE(driver.sandbox().control("mu_k value").has_value());
+}
+
+TEST(Sandbox, InProjectorModeAPairsSlidersGoTwoARowAndCtrlClickTypesAValue) {
+  Driver driver("spring_pull");
+  driver.sandbox().window_settings().projector = true;
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.playback().run_to(2.5);
+  driver.frame();
+  // With its table measured, spring_pull's column holds its four controls, the pair's heading
+  // and the theory tab only with the pair's four coefficients two a row.
+  const ImRect mu_s = driver.control("mu_s slider"), mu_k = driver.control("mu_k slider");
+  EXPECT_EQ(mu_s.Min.y, mu_k.Min.y);
+  EXPECT_LT(mu_s.Max.x, mu_k.Min.x);
+  EXPECT_FALSE(driver.sandbox().control("mu_s value").has_value());
+  EXPECT_TRUE(driver.sandbox().control("mass value").has_value());
+  ImGui::GetIO().KeyCtrl = true;
+  driver.click(mu_s.GetCenter());
+  ImGui::GetIO().KeyCtrl = false;
+  // The slider's text box opens with its value selected: typing replaces it.
+  driver.type("0.3");
+  ImGui::GetIO().KeysDown[ImGui::GetIO().KeyMap[ImGuiKey_Enter]] = true;
+  driver.frame();
+  ImGui::GetIO().KeysDown[ImGui::GetIO().KeyMap[ImGuiKey_Enter]] = false;
+  driver.frame();
+  driver.frame();
+  EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.3);
 }
 
 TEST(Sandbox, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {
