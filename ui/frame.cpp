@@ -137,10 +137,17 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& read
   for (std::size_t step = 0; step <= steps; ++step) {
     if (fits(tabs + gap, step)) return plan;
   }
-  // The parameters keep at least half the column; the tabs scroll.
+  // The tabs scroll; the parameters keep at least half the column, giving way only as far as
+  // that needs.
+  const float budget = std::max(0.5f * room, room - tabs - gap);
   plan.parameters_step = steps;
-  plan.parameters = std::min(parameters(steps), std::max(0.5f * room, room - tabs - gap));
-  plan.books_scroll = true;
+  for (std::size_t step = 0; step <= steps; ++step) {
+    if (parameters(step) <= budget) {
+      plan.parameters_step = step;
+      break;
+    }
+  }
+  plan.parameters = std::min(parameters(plan.parameters_step), budget);
   return plan;
 }
 
@@ -285,8 +292,11 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
     const char* const* names = short_names ? brief : full;
+    // With the theory table the tabs are another bar, which opens on its first tab: the theory
+    // shows as it joins them (a column that just became short), and whatever tab was chosen
+    // comes back with the room. A picture, which nobody clicks, shows each bar's first tab.
     if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
-        ImGui::BeginTabBar("books")) {
+        ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
       if (plan.theory_in_tabs && begin_tab(names[0])) {
         theory_contents(rows, colours, readings.error, readings.caveat);
         ImGui::EndTabItem();

@@ -92,20 +92,26 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     for (const auto& [colour, material] : materials) width += advance + width_of(material);
     return width;
   };
-  // With large text in a narrow world the contact states are named by a word each, and then
-  // the chips close up.
-  const bool short_states = chips_width("sticking contact", "slipping contact", 32.0f * s) > right;
-  const char* sticking = short_states ? "sticking" : "sticking contact";
-  const char* slipping = short_states ? "slipping" : "slipping contact";
-  const bool tight = chips_width(sticking, slipping, 32.0f * s) > right;
-  const float advance = (tight ? 26.0f : 32.0f) * s, name_offset = (tight ? 18.0f : 20.0f) * s;
-  const float chips_end = chips_width(sticking, slipping, advance);
-
-  // The scale bar at the right of the row that leaves it room: the arrows' row, else the
-  // materials' row with its length written before it.
+  // The scale bar goes at the right of the arrows' row, or of the materials' row (its length
+  // written before it) when the arrows leave it no room. With large text in a narrow world the
+  // contact states are then named by a word each, and then the chips close up, as far as the
+  // row needs.
   const float bar = nice_length(110.0f * s / camera.pixels_per_metre);
   const float bar_room = bar * camera.pixels_per_metre + 32.0f * s;
-  const bool bar_below = arrows_end + bar_room > right && chips_end + bar_room + width_of(metres(bar)) + 8.0f * s <= right;
+  const bool bar_below = arrows_end + bar_room > right;
+  const float chips_room = bar_below ? right - bar_room - width_of(metres(bar)) - 8.0f * s : right;
+  bool short_states = false, tight = false;
+  for (const auto& [shorter, closer] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+    short_states = shorter;
+    tight = closer;
+    if (chips_width(shorter ? "sticking" : "sticking contact", shorter ? "slipping" : "slipping contact",
+                    (closer ? 26.0f : 32.0f) * s) <= chips_room) {
+      break;
+    }
+  }
+  const char* sticking = short_states ? "sticking" : "sticking contact";
+  const char* slipping = short_states ? "slipping" : "slipping contact";
+  const float advance = (tight ? 26.0f : 32.0f) * s, name_offset = (tight ? 18.0f : 20.0f) * s;
   const float arrows_y = bottom_left.y - 2.0f * line, chips_y = bottom_left.y - line;
   draw_scale_bar(draw, camera.pixels_per_metre,
                  ImVec2(right, (bar_below ? chips_y : arrows_y) + 0.5f * font->FontSize + 14.0f * s), theme, fonts,
