@@ -18,7 +18,7 @@
 #include "ui/headless.h"
 #include "ui/headless_render.h"
 #include "ui/imgui_host.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
@@ -149,19 +149,19 @@ const WindowScreen window_screens[] = {
 
 class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
 
-TEST_P(WindowLayout, EveryLessonsTextIsWholeMidRunAndWhenTheRunEnds) {
+TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAndWhenTheRunEnds) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
   HeadlessContext gl;
   ImGuiHost host(nullptr);
   for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-      SandboxOptions options;
+      ClassroomOptions options;
       options.lesson = lessons::resolve_lesson(entry.name);
       options.window.help = false;
       options.window.projector = screen.projector;
       options.window.theme = theme;
-      Sandbox window(options);
+      Classroom window(options);
       const auto check_at = [&](double t, const char* moment) {
         window.playback().run_to(t);
         FrameRecord record;
@@ -181,6 +181,8 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeMidRunAndWhenTheRunEnds) {
         check_texts(record, where);
       };
       const double duration = window.playback().lesson().duration();
+      // As it opens (paused at t = 0), mid-run and when the run ends.
+      check_at(0.0, "at the start");
       check_at(0.5 * duration, "mid-run");
       // The run's end says so in the transport bar.
       check_at(duration, "at the end");

@@ -1,4 +1,4 @@
-// The classroom sandbox: a lesson's frame with everything that drives it around it. A menu bar
+// The classroom window: a lesson's frame with everything that drives it around it. A menu bar
 // (lessons, simulation settings, view), the transport bar (play, step, speed, the recorded
 // run), sliders that also take typed values, the mouse's hand in the world, keyboard
 // shortcuts and a help panel. Immediate mode: every panel reads the running lesson and acts
@@ -22,13 +22,14 @@
 #include "physics/stability.h"
 #include "ui/chart.h"
 #include "ui/frame.h"
+#include "ui/keys.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
 
-struct SandboxOptions {
+struct ClassroomOptions {
   std::string lesson;                               // the script's path
   std::map<std::string, std::string> overrides;     // --set
   StepSettings settings;                            // --hz, --substeps, --friction
@@ -43,12 +44,12 @@ inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".
 std::string lesson_name(const std::string& script_path);
 
-class Sandbox {
+class Classroom {
  public:
   // Opens the lesson; a script that fails to build opens the first built-in lesson instead,
   // with the script's error shown and its file watched until it builds. Throws InvalidInput
   // when --lock names something the lesson does not have.
-  explicit Sandbox(SandboxOptions options);
+  explicit Classroom(ClassroomOptions options);
 
   // The size the host should prepare fonts at for a display of this size.
   float ui_scale(ImVec2 display) const;
@@ -63,9 +64,10 @@ class Sandbox {
   Playback& playback() { return *playback_; }
   const Playback& playback() const { return *playback_; }
 
-  // A key pressed, as the window system reports it: a tap pressed and let go between two frames
-  // (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame key state.
-  void key_pressed(int glfw_key, bool ctrl) { taps_.emplace_back(glfw_key, ctrl); }
+  // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
+  // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
+  // key state, so shortcuts come from here only.
+  void key_pressed(Key key, bool ctrl) { taps_.emplace_back(key, ctrl); }
 
   // Requests the host carries out after the frame is drawn, each taken once.
   std::optional<std::string> take_screenshot_request();  // the path to save the window to
@@ -180,7 +182,7 @@ class Sandbox {
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;
-  std::vector<std::pair<int, bool>> taps_;  // keys reported since the last frame, with Ctrl
+  std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on

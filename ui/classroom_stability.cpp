@@ -7,7 +7,7 @@
 
 #include "physics/scenarios.h"
 #include "ui/panels.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 #include "ui/text_record.h"
 #include "ui/stability_chart.h"
 
@@ -21,7 +21,7 @@ struct Threshold {
 
 }  // namespace
 
-void Sandbox::update_stability_chart() {
+void Classroom::update_stability_chart() {
   const lessons::Lesson& lesson = playback_->lesson();
   double mu_s = NAN, gravity = standard_gravity;
   std::string slope;
@@ -69,7 +69,7 @@ void Sandbox::update_stability_chart() {
   stability_chart_.series.push_back(marks);
 }
 
-void Sandbox::stability_map_tab() {
+void Classroom::stability_map_tab() {
   const bool open = begin_tab("Stability###stability map");
   remember("Stability map tab");
   if (!open) return;
@@ -89,7 +89,7 @@ void Sandbox::stability_map_tab() {
   ImGui::EndTabItem();
 }
 
-void Sandbox::stability_map_window() {
+void Classroom::stability_map_window() {
   if (!stability_window_) return;
   update_stability_chart();
   const float s = fonts_->scale;

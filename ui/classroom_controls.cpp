@@ -1,4 +1,4 @@
-// The sandbox's controls: the parameters as sliders with a box for typed values and a reset,
+// The classroom's controls: the parameters as sliders with a box for typed values and a reset,
 // material presets for a friction pair, and the transport bar along the bottom.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include "lessons/runtime/lesson_benchmark.h"
 #include "physics/materials.h"
 #include "ui/panels.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -84,7 +84,7 @@ struct ControlColumns {
   }
 };
 
-std::vector<std::string> Sandbox::foldable_pairs(bool opened_too) const {
+std::vector<std::string> Classroom::foldable_pairs(bool opened_too) const {
   std::vector<std::string> pairs;
   for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
     const std::string pair = pair_of(parameter);
@@ -96,7 +96,7 @@ std::vector<std::string> Sandbox::foldable_pairs(bool opened_too) const {
   return pairs;
 }
 
-std::vector<Sandbox::ParameterRow> Sandbox::parameter_rows(std::size_t step) const {
+std::vector<Classroom::ParameterRow> Classroom::parameter_rows(std::size_t step) const {
   // Pairs the teacher opened still go two a row; only those left to the layout fold.
   const std::vector<std::string> compact = foldable_pairs(true), foldable = foldable_pairs(false);
   const std::size_t two_a_row = std::min(step, compact.size());
@@ -133,7 +133,7 @@ std::vector<Sandbox::ParameterRow> Sandbox::parameter_rows(std::size_t step) con
   return rows;
 }
 
-std::vector<float> Sandbox::parameters_heights() const {
+std::vector<float> Classroom::parameters_heights() const {
   const ImGuiStyle& style = ImGui::GetStyle();
   std::vector<float> heights;
   for (std::size_t step = 0; step <= foldable_pairs(true).size() + foldable_pairs(false).size(); ++step) {
@@ -150,11 +150,11 @@ std::vector<float> Sandbox::parameters_heights() const {
   return heights;
 }
 
-void Sandbox::remember(const std::string& name) {
+void Classroom::remember(const std::string& name) {
   controls_[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
-void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
+void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -240,7 +240,7 @@ void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
   ImGui::End();
 }
 
-void Sandbox::preset_row(const lessons::Parameter& mu_s) {
+void Classroom::preset_row(const lessons::Parameter& mu_s) {
   const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
   const std::string mu_k = prefix + "mu_k";
   if (!shown(mu_k)) {
@@ -273,7 +273,7 @@ void Sandbox::preset_row(const lessons::Parameter& mu_s) {
   ImGui::PopID();
 }
 
-void Sandbox::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+void Classroom::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
                             float value_x, float reset_x) {
   const std::string& name = parameter.name;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
@@ -367,7 +367,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, const std::stri
   }
 }
 
-std::string Sandbox::transport_words() const {
+std::string Classroom::transport_words() const {
   // Notices (the run is over, the file reloaded) and what was saved where, on one line.
   std::string said = playback_->notice();
   if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
@@ -375,7 +375,7 @@ std::string Sandbox::transport_words() const {
   return said;
 }
 
-Sandbox::TransportShape Sandbox::transport_shape(float width) const {
+Classroom::TransportShape Classroom::transport_shape(float width) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float s = fonts_->scale;
   TransportShape shape;
@@ -392,7 +392,7 @@ Sandbox::TransportShape Sandbox::transport_shape(float width) const {
   return shape;
 }
 
-void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
+void Classroom::transport_bar(ImVec2 corner, ImVec2 size) {
   const float s = fonts_->scale;
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
@@ -470,7 +470,7 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
   ImGui::End();
 }
 
-void Sandbox::cheapest_setting_tab() {
+void Classroom::cheapest_setting_tab() {
   const bool open = begin_tab("Cheapest###cheapest setting");
   remember("Cheapest setting tab");
   if (!open) return;

@@ -1,4 +1,4 @@
-// The sandbox's menus (lessons, simulation settings, view), the help panel and the dialog that
+// The classroom's menus (lessons, simulation settings, view), the help panel and the dialog that
 // opens a script by its path.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "lessons/runtime/catalog.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 #include "ui/user_lessons.h"
 
 namespace frictionlab::ui {
-void Sandbox::menu_bar() {
+void Classroom::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   const bool lesson_menu = ImGui::BeginMenu("Lesson");
   remember("Lesson menu");
@@ -107,7 +107,7 @@ void Sandbox::menu_bar() {
   ImGui::EndMainMenuBar();
 }
 
-void Sandbox::help_panel() {
+void Classroom::help_panel() {
   if (!window_.help) return;
   const float s = fonts_->scale;
   ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
@@ -155,7 +155,7 @@ void Sandbox::help_panel() {
   ImGui::End();
 }
 
-void Sandbox::open_script_popup() {
+void Classroom::open_script_popup() {
   if (open_popup_) {
     ImGui::OpenPopup("Open a lesson script");
     open_popup_ = false;
