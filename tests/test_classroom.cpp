@@ -56,7 +56,8 @@ class Driver {
   // The display the hands' frames are drawn for.
   void set_display(ImVec2 display) { display_ = display; }
   // One display frame in which `wall` seconds of real time pass.
-  void frame(double wall = 0.0, ImVec2 display = ImVec2(0.0f, 0.0f)) {
+  // With `record`, every text it drew (FrameRecord::texts).
+  void frame(double wall = 0.0, ImVec2 display = ImVec2(0.0f, 0.0f), FrameRecord* record = nullptr) {
     if (display.x == 0.0f) display = display_;
     gl_.make_current();
     const Fonts& fonts = host_.prepare(classroom_->ui_scale(display), classroom_->window_settings().theme);
@@ -64,7 +65,7 @@ class Driver {
     io.DisplaySize = display;
     io.DeltaTime = 1.0f / 60.0f;
     host_.begin_frame();
-    classroom_->frame(fonts, display, wall);
+    classroom_->frame(fonts, display, wall, record);
     ImGui::Render();
   }
   // The frame drawn: what the window would show.
@@ -676,6 +677,18 @@ TEST(Classroom, InProjectorModeAPairsSlidersGoTwoARowAndCtrlClickTypesAValue) {
   driver.press(ImGuiKey_Enter);
   driver.frame();
   EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.3);
+}
+
+TEST(Classroom, AUnitWithAPercentSignIsShownAsText) {
+  // A student's unit with a % in it ("%s" would make a format read a string that is not there).
+  ScriptFile script(replaced(read_file(lessons::resolve_lesson("push")), "unit = \"kg\"", "unit = \"%s\""));
+  Driver driver(script.path());
+  driver.frame();
+  FrameRecord record;
+  driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+  bool shown = false;
+  for (const ShownText& text : record.texts) shown = shown || text.text == "1 %s";
+  EXPECT_TRUE(shown) << "the mass slider should read 1 %s";
 }
 
 TEST(Classroom, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {

@@ -311,7 +311,10 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     ImGui::SetNextItemWidth(value_x - spacing - slider_x);
     const bool sliding_this = sliding_ && sliding_->first == name;
     double value = sliding_this ? sliding_->second : parameter.value;
-    const std::string format = "%.3g" + (parameter.unit.empty() ? "" : " " + parameter.unit);
+    // A unit is text, not format: a script's "%" is written "%%".
+    std::string unit;
+    for (const char c : parameter.unit) unit += c == '%' ? std::string("%%") : std::string(1, c);
+    const std::string format = "%.3g" + (unit.empty() ? "" : " " + unit);
     // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
     const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
     const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
