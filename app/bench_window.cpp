@@ -1,6 +1,6 @@
 // frictionlab bench, the window's part: the CPU time one display frame of the classroom window
 // takes for each lesson at 60 frames a second (the lesson's steps for 1/60 s, then every
-// panel built), measured on the sandbox's own code on a headless context. Drawing the lists
+// panel built), measured on the classroom's own code on a headless context. Drawing the lists
 // is the GPU's job in a classroom; here llvmpipe does it on other threads, timed apart.
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
@@ -16,7 +16,7 @@
 #include "physics/recommend.h"
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 
 namespace frictionlab {
 namespace {
@@ -47,10 +47,10 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
   for (const std::string& name : names) {
     ui::ImGuiHost host(nullptr);
     gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
-    ui::SandboxOptions options;
+    ui::ClassroomOptions options;
     options.lesson = lessons::resolve_lesson(name);
     options.window.help = false;
-    ui::Sandbox sandbox(options);
+    ui::Classroom classroom(options);
     // The lesson alone, the same frames, for the physics' share.
     ui::Playback physics_only(options.lesson, {}, {});
     physics_only.play();
@@ -58,19 +58,19 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
     for (int f = 0; f < frames; ++f) {
       progress((static_cast<double>(&name - names.data()) + static_cast<double>(f) / frames) / static_cast<double>(names.size()));
       // Past the lesson's run it pauses; a class watching keeps it going.
-      if (!sandbox.playback().playing()) sandbox.playback().play();
+      if (!classroom.playback().playing()) classroom.playback().play();
       if (!physics_only.playing()) physics_only.play();
       double start = thread_cpu_seconds();
       physics_only.advance(1.0 / 60.0);
       physics.push_back(thread_cpu_seconds() - start);
 
-      const ui::Fonts& fonts = host.prepare(sandbox.ui_scale(display), sandbox.window_settings().theme);
+      const ui::Fonts& fonts = host.prepare(classroom.ui_scale(display), classroom.window_settings().theme);
       ImGuiIO& io = ImGui::GetIO();
       io.DisplaySize = display;
       io.DeltaTime = 1.0f / 60.0f;
       start = thread_cpu_seconds();
       host.begin_frame();
-      sandbox.frame(fonts, display, 1.0 / 60.0);
+      classroom.frame(fonts, display, 1.0 / 60.0);
       ImGui::Render();
       whole.push_back(thread_cpu_seconds() - start);
       const auto draw_start = std::chrono::steady_clock::now();
@@ -79,7 +79,7 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
       glFinish();
       draw.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - draw_start).count());
     }
-    const double hz = sandbox.playback().lesson().settings().hz;
+    const double hz = classroom.playback().lesson().settings().hz;
     csv << name << ',' << hz << ',' << frames << ',' << median(physics) * 1e3 << ',' << median(whole) * 1e3 << ','
         << percentile(whole, 0.95) * 1e3 << ',' << percentile(whole, 1.0) * 1e3 << ',' << median(draw) * 1e3 << '\n';
     const auto ms = [](double seconds) { return format_number(seconds * 1e3, 3) + " ms"; };

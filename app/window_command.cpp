@@ -111,15 +111,15 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   // README's screenshot script gives each shot a folder of its own) but never writes them.
   const std::string folder = ui::settings_folder();
   const std::string settings_path = folder.empty() ? "" : folder + "/settings.ini";
-  ui::SandboxOptions sandbox_options;
-  sandbox_options.lesson = path;
-  sandbox_options.overrides = options.overrides;
-  sandbox_options.settings = options.settings;
-  sandbox_options.lock = options.lock;
-  sandbox_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
-  if (options.theme) sandbox_options.window.theme = *options.theme;
-  if (options.projector) sandbox_options.window.projector = true;
-  ui::Sandbox sandbox(sandbox_options);
+  ui::ClassroomOptions classroom_options;
+  classroom_options.lesson = path;
+  classroom_options.overrides = options.overrides;
+  classroom_options.settings = options.settings;
+  classroom_options.lock = options.lock;
+  classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  if (options.theme) classroom_options.window.theme = *options.theme;
+  if (options.projector) classroom_options.window.projector = true;
+  ui::Classroom classroom(classroom_options);
 
   ui::WindowRun run;
   run.at = options.at;
@@ -129,13 +129,13 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     run.imgui_ini = folder + "/imgui.ini";
   }
   try {
-    ui::run_window(sandbox, run);
+    ui::run_window(classroom, run);
   } catch (const ui::NoDisplay& error) {
     if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
     // A script that does not build has no picture to give: its mistake is the answer.
-    if (!sandbox.failed_script().empty()) throw InvalidInput(sandbox.failed_error());
+    if (!classroom.failed_script().empty()) throw InvalidInput(classroom.failed_error());
     // No window here (a server, CI, a remote shell): the same lesson as a picture instead.
-    const double at = options.at ? *options.at : 0.5 * sandbox.playback().readings().duration;
+    const double at = options.at ? *options.at : 0.5 * classroom.playback().readings().duration;
     const std::string stem = fs::path(path).stem().string();
     const std::string picture =
         ui::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");

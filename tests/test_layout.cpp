@@ -1,7 +1,9 @@
-// The world view's layout at the sizes a classroom uses, light and dark: no label lands on
-// another label, on an arrow or under the free-body diagram, and no moving body is under the
-// diagram. The frame records every rectangle it placed; these tests read that record rather
-// than pixels.
+// The layout at the sizes a classroom uses, light and dark: no label lands on another label,
+// on an arrow or under the free-body diagram, no moving body is under the diagram, and no text
+// is cut by its panel (a panel's edge, a table's cell, a slider's frame, a tab, the screen),
+// in the pictures and in the window with its sliders, tabs and transport bar. The frame
+// records every rectangle it placed and every text it drew; these tests read that record
+// rather than pixels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,10 @@
 #include "lessons/runtime/catalog.h"
 #include "rendering.h"
 #include "ui/frame.h"
+#include "ui/headless.h"
 #include "ui/headless_render.h"
+#include "ui/imgui_host.h"
+#include "ui/classroom.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
@@ -23,13 +28,17 @@ struct Screen {
   const char* name;
   int width, height;
   float scale;  // 0: the size's own; the window's projector mode makes text 1.35 times larger
+  // Pictures are drawn at a size's own text scale (the window's projector mode is tested with
+  // its sliders and tabs below); at projector scale only the world's layout is checked here.
+  bool text;
 };
-const Screen screens[] = {{"1280x720", 1280, 720, 0.0f},
-                          {"1024x768", 1024, 768, 0.0f},
-                          {"projector_1920x1080", 1920, 1080, 1.35f * 1.5f},
+const Screen screens[] = {{"1280x720", 1280, 720, 0.0f, true},
+                          {"1024x768", 1024, 768, 0.0f, true},
+                          {"1920x1080", 1920, 1080, 0.0f, true},
+                          {"projector_1920x1080", 1920, 1080, 1.35f * 1.5f, false},
                           // The window's frame in projector mode on a 1920 × 1080 screen, under its
                           // menu bar and above its transport bar.
-                          {"window_projector_1920x1080", 1920, 944, 1.35f * 1.5f}};
+                          {"window_projector_1920x1080", 1920, 944, 1.35f * 1.5f, false}};
 
 // A label's box as drawn, without the placer's 2 px of padding, so labels that only touch pass.
 ImVec4 drawn(const ImVec4& box) { return ImVec4(box.x + 2.0f, box.y + 2.0f, box.z - 2.0f, box.w - 2.0f); }
@@ -86,6 +95,20 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
   }
 }
 
+// Every text whole where it was drawn. Only the tabs under the sliders may scroll (when even
+// folded friction pairs leave the theory table too little room): text there may be a scroll
+// away above or below, never cut across. The sliders never scroll.
+void check_texts(const FrameRecord& record, const std::string& where) {
+  EXPECT_FALSE(record.texts.empty()) << where << ": no text was recorded";
+  for (const ShownText& text : record.texts) {
+    const std::string panel = text.panel.substr(text.panel.find("###") == std::string::npos ? 0 : text.panel.find("###") + 3);
+    const bool scrolled = text.scrolls && panel == "books";
+    EXPECT_TRUE(scrolled ? text.whole_across() : text.whole())
+        << where << ": \"" << text.text << "\" in " << panel << " needs " << text_of(text.needed) << " but only "
+        << text_of(text.visible) << " shows";
+  }
+}
+
 class Layout : public ::testing::TestWithParam<Screen> {};
 
 TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
@@ -104,6 +127,7 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
         where += screen.name;
         if (theme == ThemeName::dark) where += ", dark";
         check_layout(record, *at.lesson, where);
+        if (screen.text) check_texts(record, where);
       }
     }
   }
@@ -112,6 +136,63 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
 std::string screen_name(const ::testing::TestParamInfo<Screen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, Layout, ::testing::ValuesIn(screens), screen_name);
+
+// The window as a teacher sees it: its sliders, tabs, menu and transport bars, at a screen's
+// own text size or in projector mode.
+struct WindowScreen {
+  const char* name;
+  int width, height;
+  bool projector;
+};
+const WindowScreen window_screens[] = {
+    {"1280x720", 1280, 720, false}, {"1024x768", 1024, 768, false}, {"projector_1920x1080", 1920, 1080, true}};
+
+class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
+
+TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAndWhenTheRunEnds) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(entry.name);
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.theme = theme;
+      Classroom window(options);
+      const auto check_at = [&](double t, const char* moment) {
+        window.playback().run_to(t);
+        FrameRecord record;
+        // A few frames for tables and tab bars to settle their sizes, as the window's screenshots wait.
+        for (int frame = 0; frame < 3; ++frame) {
+          gl.make_current();
+          const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
+          ImGuiIO& io = ImGui::GetIO();
+          io.DisplaySize = display;
+          io.DeltaTime = 1.0f / 60.0f;
+          host.begin_frame();
+          window.frame(fonts, display, 0.0, frame == 2 ? &record : nullptr);
+          ImGui::Render();
+        }
+        std::string where = entry.name + " " + moment + ", window " + screen.name;
+        if (theme == ThemeName::dark) where += ", dark";
+        check_texts(record, where);
+      };
+      const double duration = window.playback().lesson().duration();
+      // As it opens (paused at t = 0), mid-run and when the run ends.
+      check_at(0.0, "at the start");
+      check_at(0.5 * duration, "mid-run");
+      // The run's end says so in the transport bar.
+      check_at(duration, "at the end");
+    }
+  }
+}
+
+std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
 }  // namespace
 }  // namespace frictionlab::ui

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "lessons/runtime/model_card.h"
 #include "ui/overlays.h"
 #include "ui/panels.h"
 #include "ui/plots.h"
+#include "ui/text_record.h"
 #include "ui/free_body.h"
 #include "ui/legend.h"
 #include "ui/world_view.h"
@@ -16,7 +19,10 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   const float title_height = 70.0f * scale;
-  const float column_width = std::max(0.36f * display.x, 300.0f * scale);
+  // A slider row and a theory row need a width that grows with the text: at a screen's own
+  // text size a third of the screen holds them, at projector size (the screen's text size
+  // times 1.35) 39 % of it does; the world keeps the rest, room for its labels.
+  const float column_width = std::max({0.36f * display.x, 300.0f * scale, std::min(0.5f * display.x, 370.0f * scale)});
   const float left_width = display.x - column_width - gap;
   layout.title_corner = ImVec2(0.0f, 0.0f);
   layout.title_size = ImVec2(display.x, title_height);
@@ -65,11 +71,95 @@ float arrow_scale(const lessons::Lesson& lesson, const WorldFraming& framing, Im
   return pixels_per_newton(lesson.scene(), std::clamp((lanes ? 0.4f : 0.26f) * height, 30.0f * scale, 150.0f * scale));
 }
 
+namespace {
+
+// How the column's panels share its height. The parameters and the theory table come first:
+// the ledger and the model card become tabs of one panel when the column is short, the theory
+// table joins them as the first tab when it is shorter still, and only then do friction pairs
+// give way, the last pair first: the window's sliders two a row, then folded into a line each
+// (a picture's values folded at once). What still does not fit is cut (a picture) or scrolled
+// (the window's tabs).
+struct ColumnPlan {
+  float parameters = 0.0f, theory = 0.0f, energy = 0.0f, model = 0.0f;
+  std::size_t parameters_step = 0;  // how far the parameters gave way
+  bool books_tabbed = false, theory_in_tabs = false, books_scroll = false;
+};
+
+ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& readings, const FrameStyle& style,
+                       ImVec2 display) {
+  const float s = style.fonts->scale;
+  const FrameLayout base = FrameLayout::of(display, s, style.origin);
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
+  const float padding = 2.0f * imgui.WindowPadding.y;
+  const float gap = 4.0f * s;
+  const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
+  const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
+  const float theory = bar + padding + 4.0f * s +
+                       theory_contents_height(readings.expectations, inside, readings.error, readings.caveat);
+  const bool window = static_cast<bool>(style.parameters_panel);
+  // The parameters' height at each step of giving way: in a picture, the last k pairs folded;
+  // the window's steps are its own (parameters_heights).
+  const std::size_t steps = window ? style.parameters_heights.size() - 1 : parameter_pairs(lesson).size();
+  const auto parameters = [&](std::size_t step) {
+    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step);
+  };
+  std::size_t model_lines = 4;
+  for (const lessons::ModelCard::PairLine& pair : lessons::model_card(lesson).pairs) model_lines += pair.own ? 1 : 0;
+  const float ledger = energy_contents_height(lesson.scene(), inside);
+  const float energy = bar + padding + 4.0f * s + ledger, model = height_for(model_lines);
+  // A tab bar in place of a title bar, and "since t = 0" under it when the tab's name is short.
+  const float books = std::max(bar + padding + 4.0f * s + line + ledger, model) + imgui.ItemSpacing.y;
+  const float room = base.column_size.y;
+
+  ColumnPlan plan;
+  plan.theory = theory;
+  plan.energy = energy;
+  plan.model = model;
+  // Whatever the column has to spare goes to the parameters.
+  const auto fits = [&](float others, std::size_t step) {
+    const float wanted = parameters(step) + others;
+    if (wanted > room) return false;
+    plan.parameters_step = step;
+    plan.parameters = room - others;
+    return true;
+  };
+  // The window always keeps the books as tabs (it has more of them).
+  if (!window && fits(theory + energy + model + 3.0f * gap, 0)) return plan;
+  plan.books_tabbed = true;
+  if (fits(theory + books + 2.0f * gap, 0)) return plan;
+  // The theory tab is the one shown first: the panel is made to hold it, and scrolls for a
+  // longer tab the teacher picks.
+  plan.theory_in_tabs = true;
+  plan.books_scroll = window;
+  const float tabs = theory;
+  for (std::size_t step = 0; step <= steps; ++step) {
+    if (fits(tabs + gap, step)) return plan;
+  }
+  // The tabs scroll; the parameters keep at least half the column, giving way only as far as
+  // that needs.
+  const float budget = std::max(0.5f * room, room - tabs - gap);
+  plan.parameters_step = steps;
+  for (std::size_t step = 0; step <= steps; ++step) {
+    if (parameters(step) <= budget) {
+      plan.parameters_step = step;
+      break;
+    }
+  }
+  plan.parameters = std::min(parameters(plan.parameters_step), budget);
+  return plan;
+}
+
+}  // namespace
+
 void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
   const Fonts& fonts = *style.fonts;
   const Theme& colours = theme(style.theme);
   const float s = fonts.scale;
-  const FrameLayout layout = FrameLayout::of(display, s, style.origin);
+  // Every text the panels draw is noted for the layout test.
+  std::optional<TextRecording> noting;
+  if (style.record != nullptr) noting.emplace(&style.record->texts);
   ImGui::PushFont(fonts.body);
   LessonReadings own;
   if (style.readings == nullptr) {
@@ -77,6 +167,9 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     own.expectations = lesson.expectations();
   }
   const LessonReadings& readings = style.readings ? *style.readings : own;
+  const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
+  const ColumnPlan column_plan = plan_column(lesson, readings, style, display);
+  const FrameLayout layout = FrameLayout::of(display, s, style.origin);
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts);
 
@@ -156,7 +249,17 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const ImVec2 size(width - (column + 1 < per_row ? 4.0f * s : 0.0f),
                         height - (row + 1 < rows_of_plots ? 4.0f * s : 0.0f));
       const std::string id = "plot" + std::to_string(i);
-      if (begin_panel(id.c_str(), plots[i].title.c_str(), corner, size)) {
+      // A title longer than its title bar (large text, three plots in a row) goes inside the
+      // panel instead, wrapped over the chart.
+      const std::string& title = plots[i].title;
+      const bool title_inside =
+          ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
+      if (begin_panel(id.c_str(), title_inside ? "" : title.c_str(), corner, size)) {
+        if (title_inside) {
+          ImGui::PushTextWrapPos(0.0f);
+          shown_text(title.c_str());
+          ImGui::PopTextWrapPos();
+        }
         const ImVec2 area = ImGui::GetContentRegionAvail();
         draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
                   fonts);
@@ -166,44 +269,47 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
 
   // The column: parameters, theory against simulation, energy, model.
-  const float line = ImGui::GetTextLineHeightWithSpacing();
-  const float title_bar = ImGui::GetFrameHeight();
-  const float padding = 2.0f * ImGui::GetStyle().WindowPadding.y;
-  const auto height_for = [&](std::size_t lines) { return title_bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
-  const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
-  const bool tabbed = static_cast<bool>(style.parameters_panel);
-  const float model_height = tabbed ? 0.0f : height_for(4);
-  // The ledger's line for velocities a script set is there only once one has (energy_contents).
-  const std::size_t ledger_lines = lesson.scene().ledger().work_script != 0.0 ? 7 : 6;
-  const float energy_height = height_for(ledger_lines) + (tabbed ? 4.0f * s : 0.0f);
+  const ColumnPlan& plan = column_plan;
   const float gap = 4.0f * s;
-  // Parameters and the theory table share what the ledger and model card leave. The table
-  // gets room for names that wrap onto a second line, but at most half when the parameters
-  // need more; rows that do not fit are cut at the panel's edge.
-  const float shared = layout.column_size.y - model_height - energy_height - (tabbed ? 2.0f : 3.0f) * gap;
-  const float theory_wanted = height_for(rows.size() * 3 / 2 + 1) + 2.0f * s * static_cast<float>(rows.size());
-  const float parameters_wanted =
-      style.parameters_height > 0.0f ? style.parameters_height : height_for(lesson.parameters().size() + 1);
-  const float theory_height = theory_wanted + parameters_wanted <= shared
-                                  ? theory_wanted
-                                  : std::min(theory_wanted, std::max(0.5f * shared, shared - parameters_wanted));
-  const float parameters_height = shared - theory_height;
   ImVec2 at = layout.column_corner;
+  const float width = layout.column_size.x;
   if (style.parameters_panel) {
-    style.parameters_panel(at, ImVec2(layout.column_size.x, parameters_height));
+    style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
   } else {
-    parameters_panel(lesson, at, ImVec2(layout.column_size.x, parameters_height));
+    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step);
   }
-  at.y += parameters_height + gap;
-  theory_panel(rows, at, ImVec2(layout.column_size.x, theory_height), colours, readings.error, readings.caveat);
-  at.y += theory_height + gap;
-  if (tabbed) {
-    if (begin_panel("books", "", at, ImVec2(layout.column_size.x, energy_height)) && ImGui::BeginTabBar("books")) {
-      if (ImGui::BeginTabItem("Energy ledger (since t = 0)")) {
+  at.y += plan.parameters + gap;
+  if (!plan.theory_in_tabs) {
+    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat);
+    at.y += plan.theory + gap;
+  }
+  if (plan.books_tabbed) {
+    // Short names when the full ones would not fit side by side.
+    const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
+                                "Model card###model"};
+    const char* const brief[] = {"Theory###theory tab", "Energy###energy", "Model###model"};
+    float full_width = 0.0f;
+    for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
+    const char* const* names = short_names ? brief : full;
+    // With the theory table the tabs are another bar, which opens on its first tab: the theory
+    // shows as it joins them (a column that just became short), and whatever tab was chosen
+    // comes back with the room. A picture, which nobody clicks, shows each bar's first tab.
+    if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
+        ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
+      if (plan.theory_in_tabs && begin_tab(names[0])) {
+        theory_contents(rows, colours, readings.error, readings.caveat);
+        ImGui::EndTabItem();
+      }
+      if (begin_tab(names[1])) {
+        if (short_names) {
+          ImGui::TextDisabled("since t = 0");
+          note_text("since t = 0");
+        }
         energy_contents(lesson.scene(), colours);
         ImGui::EndTabItem();
       }
-      if (ImGui::BeginTabItem("Model card")) {
+      if (begin_tab(names[2])) {
         model_contents(lesson);
         ImGui::EndTabItem();
       }
@@ -212,9 +318,9 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     }
     end_panel();
   } else {
-    energy_panel(lesson.scene(), at, ImVec2(layout.column_size.x, energy_height), colours);
-    at.y += energy_height + gap;
-    model_panel(lesson, at, ImVec2(layout.column_size.x, model_height));
+    energy_panel(lesson.scene(), at, ImVec2(width, plan.energy), colours);
+    at.y += plan.energy + gap;
+    model_panel(lesson, at, ImVec2(width, plan.model));
   }
 
   ImGui::PopFont();

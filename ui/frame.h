@@ -9,12 +9,14 @@
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
 #include "ui/drawing.h"
+#include "ui/text_record.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
 
 // Where each part of the frame goes, for a display of a given size: the world at the top
-// left with the plots below it, the panels in a column on the right.
+// left with the plots below it, the panels in a column on the right. Large text (projector
+// mode) widens the column, so that sliders and the theory table's names keep their room.
 struct FrameLayout {
   ImVec2 title_corner, title_size;
   ImVec2 world_corner, world_size;
@@ -46,6 +48,8 @@ struct FrameRecord {
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
+  // Every piece of text the panels drew, with what of it could show.
+  std::vector<ShownText> texts;
 };
 
 struct FrameStyle {
@@ -56,10 +60,11 @@ struct FrameStyle {
   // them out a few times a second); null: worked out for this frame.
   const LessonReadings* readings = nullptr;
   // Draws the parameters panel in its place instead of the values as text (the window's
-  // sliders), given the height it would like. The window then shows the energy ledger and the
-  // model card as two tabs of one panel, to leave the sliders room.
-  std::function<void(ImVec2 corner, ImVec2 size)> parameters_panel;
-  float parameters_height = 0.0f;
+  // sliders), at a step of giving way to a short column (0: every control whole); its heights
+  // at steps 0, 1, ... The window then shows the energy ledger and the model card as tabs of
+  // one panel, to leave the sliders room.
+  std::function<void(ImVec2 corner, ImVec2 size, std::size_t step)> parameters_panel;
+  std::vector<float> parameters_heights;
   // The window's wheel zoom and drag pan.
   ViewAdjust view_adjust;
   // Filled with the world view's layout when not null.

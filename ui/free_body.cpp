@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ui/drawing.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 
@@ -16,7 +17,15 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
     title = name + ", forces";
   }
+  const ImRect whole(corner, add(corner, size));
+  // Its texts noted for the layout test, in the inset's font.
+  const auto noted = [&](const std::string& text, ImVec2 at) {
+    ImGui::PushFont(fonts.small);
+    note_text_in(text.c_str(), at, whole);
+    ImGui::PopFont();
+  };
   draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
+  noted(title, ImVec2(corner.x + 8 * s, corner.y + 5 * s));
   if (body == nullptr) return;
 
   // The body alone, at its own zoom, upright as it is now.
@@ -60,10 +69,15 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   for (const ForceOnBody& force : forces) net += force.force;
   draw->PopClipRect();
   // Before the first step the solver has not yet said what the contacts push with.
-  const std::string net_text = scene.frame() == 0 ? "contact forces: after the first step"
-                                                  : "net force: " + format_quantity(net.Length(), "N");
-  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + size.y - footer + 2 * s),
-                theme.faint_text, net_text.c_str());
+  std::string net_text = scene.frame() == 0 ? "contact forces: after the first step"
+                                            : "net force: " + format_quantity(net.Length(), "N");
+  // Said shorter in a narrow inset (large text).
+  if (scene.frame() == 0 && fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, net_text.c_str()).x > size.x - 16.0f * s) {
+    net_text = "no contact forces yet";
+  }
+  const ImVec2 net_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
+  draw->AddText(fonts.small, fonts.small->FontSize, net_at, theme.faint_text, net_text.c_str());
+  noted(net_text, net_at);
 }
 
 }  // namespace frictionlab::ui

@@ -8,23 +8,35 @@
 
 #include "lessons/runtime/model_card.h"
 #include "ui/overlays.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 
-bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size) {
+bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, bool scroll) {
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   // No scroll bars: a picture cannot be scrolled, so what does not fit is cut at the edge.
   ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                           ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar |
-                           ImGuiWindowFlags_NoScrollWithMouse;
+                           ImGuiWindowFlags_NoBringToFrontOnFocus;
+  if (!scroll) flags |= ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
   if (title == nullptr || *title == '\0') flags |= ImGuiWindowFlags_NoTitleBar;
   const std::string label = std::string(title ? title : "") + "###" + id;
-  return ImGui::Begin(label.c_str(), nullptr, flags);
+  const bool open = ImGui::Begin(label.c_str(), nullptr, flags);
+  if (title != nullptr) note_title(title);
+  return open;
 }
 
 void end_panel() { ImGui::End(); }
+
+bool begin_tab(const char* label) {
+  const bool open = ImGui::BeginTabItem(label);
+  // A tab too narrow for its name shows it cut with an ellipsis.
+  const ImVec2 padding = ImGui::GetStyle().FramePadding;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  note_text_in(label, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min.x + padding.x, min.y, max.x - padding.x + 0.5f, max.y));
+  return open;
+}
 
 void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
   if (begin_panel("title", "", corner, size)) {
@@ -35,15 +47,15 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
     const float clock_x = ImGui::GetWindowContentRegionMax().x - clock_width;
     // A long title stops short of the clock.
     ImGui::PushTextWrapPos(clock_x - 12.0f * fonts.scale);
-    ImGui::TextUnformatted(lesson.title().c_str());
+    shown_text(lesson.title().c_str());
     ImGui::PopTextWrapPos();
     const ImVec2 after_title = ImGui::GetCursorPos();
     ImGui::SetCursorPos(ImVec2(clock_x, ImGui::GetStyle().WindowPadding.y));
-    ImGui::TextUnformatted(clock);
+    shown_text(clock);
     ImGui::SetCursorPos(after_title);
     ImGui::PopFont();
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(lesson.question().c_str());
+    shown_text(lesson.question().c_str());
     ImGui::PopTextWrapPos();
   }
   end_panel();
@@ -57,17 +69,91 @@ std::string parameter_title(const lessons::Parameter& parameter) {
   return letter + "  " + parameter.material_a + " / " + parameter.material_b;
 }
 
-void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
+std::string pair_of(const lessons::Parameter& parameter) {
+  return parameter.coefficient.empty() ? "" : parameter.material_a + " on " + parameter.material_b;
+}
+
+std::vector<std::string> parameter_pairs(const lessons::Lesson& lesson) {
+  std::vector<std::string> pairs;
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    const std::string pair = pair_of(parameter);
+    if (!pair.empty() && std::find(pairs.begin(), pairs.end(), pair) == pairs.end()) pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+std::string pair_values(const lessons::Lesson& lesson, const std::string& pair) {
+  std::string line;
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    // Drag coefficients at 0 are off: not worth a place on a folded line.
+    if (pair_of(parameter) != pair || (parameter.value == 0.0 && (parameter.coefficient == "c" || parameter.coefficient == "b"))) {
+      continue;
+    }
+    const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
+                               : parameter.coefficient == "mu_k" ? "\u03bck"
+                                                                 : parameter.coefficient;
+    // Without units: the sliders, one arrow away, have them.
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", parameter.value);
+    line += (line.empty() ? "" : "  ") + letter + " " + value;
+  }
+  return line;
+}
+
+namespace {
+
+// The rows of the values' table: a parameter, or a folded pair's one line.
+struct ValueRow {
+  std::string name, value;
+};
+
+std::vector<ValueRow> value_rows(const lessons::Lesson& lesson, std::size_t folded_pairs) {
+  const std::vector<std::string> pairs = parameter_pairs(lesson);
+  const std::size_t first_folded = pairs.size() - std::min(folded_pairs, pairs.size());
+  std::vector<ValueRow> rows;
+  std::vector<std::string> listed;
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    const std::string pair = pair_of(parameter);
+    const auto at = std::find(pairs.begin(), pairs.end(), pair);
+    const bool folded = !pair.empty() && static_cast<std::size_t>(at - pairs.begin()) >= first_folded;
+    if (!folded) {
+      rows.push_back({parameter_title(parameter), parameter.shown()});
+    } else if (std::find(listed.begin(), listed.end(), pair) == listed.end()) {
+      listed.push_back(pair);
+      rows.push_back({pair, pair_values(lesson, pair)});
+    }
+  }
+  return rows;
+}
+
+}  // namespace
+
+float parameters_panel_height(const lessons::Lesson& lesson, float width, std::size_t folded_pairs) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // Two columns of equal weight; a value wraps in its half.
+  const float half = 0.5f * (width - 2.0f * style.WindowPadding.x) - 2.0f * style.CellPadding.x;
+  float height = ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + 4.0f * style.ItemSpacing.y;
+  for (const ValueRow& row : value_rows(lesson, folded_pairs)) {
+    const float name = ImGui::CalcTextSize(row.name.c_str(), nullptr, false, half).y;
+    const float value = ImGui::CalcTextSize(row.value.c_str(), nullptr, false, half).y;
+    height += std::max(name, value) + 2.0f * style.CellPadding.y;
+  }
+  return height;
+}
+
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, std::size_t folded_pairs) {
   if (begin_panel("parameters", "Parameters", corner, size)) {
     if (ImGui::BeginTable("values", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 1.0f);
       ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-      for (const lessons::Parameter& parameter : lesson.parameters()) {
+      for (const ValueRow& row : value_rows(lesson, folded_pairs)) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(parameter_title(parameter).c_str());
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(row.name.c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(parameter.shown().c_str());
+        shown_text(row.value.c_str());
+        ImGui::PopTextWrapPos();
       }
       ImGui::EndTable();
     }
@@ -81,57 +167,80 @@ std::string with_unit(double value, const std::string& unit) {
   return format_quantity(value, unit.c_str());
 }
 
+// Each row's three cells as text, so the layout can be chosen from their widths.
+struct TheoryCells {
+  struct Cells {
+    std::string predicted, measured, error;
+    bool measured_yet, passes;
+  };
+  std::vector<Cells> cells;
+  float widest[3];
+  float numbers() const { return widest[0] + widest[1] + widest[2] + 6.0f * ImGui::GetStyle().CellPadding.x; }
+  // Beside the numbers, a name needs room for a word or two; with large text in a narrow
+  // column there is none, and each name goes on a line of its own above its numbers.
+  bool names_above(float table_width) const { return table_width - numbers() < 9.0f * ImGui::CalcTextSize("m").x; }
+};
+
+TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows) {
+  TheoryCells table{{}, {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
+                         ImGui::CalcTextSize("error").x}};
+  float* widest = table.widest;
+  for (const lessons::ExpectationResult& row : rows) {
+    TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
+                            row.measured_yet, row.passes};
+    if (row.measured_yet) {
+      cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
+      if (row.numeric) {
+        // The unit is in the columns beside it; here it would push the names into wrapping.
+        std::string number = with_unit(row.error(), "");
+        number.pop_back();
+        cell.error = (row.passes ? "\u2713 " : "\u2717 ") + std::string(row.error() > 0.0 ? "+" : "") + number;
+      } else {
+        cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
+      }
+    }
+    widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
+    widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
+    widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
+    table.cells.push_back(std::move(cell));
+  }
+  return table;
+}
+
 }  // namespace
 
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
                   const std::string& error, const std::string& caveat) {
-  if (begin_panel("theory", "Theory against simulation", corner, size)) {
+  if (begin_panel("theory", "Theory against simulation", corner, size)) theory_contents(rows, theme, error, caveat);
+  end_panel();
+}
+
+void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
+                     const std::string& caveat) {
+  {
     ImGui::PushTextWrapPos(0.0f);
-    if (!error.empty()) ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme.bad), "%s", error.c_str());
-    if (!caveat.empty()) ImGui::TextDisabled("%s", caveat.c_str());
+    if (!error.empty()) {
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme.bad), "%s", error.c_str());
+      note_text(error.c_str());
+    }
+    if (!caveat.empty()) {
+      ImGui::TextDisabled("%s", caveat.c_str());
+      note_text(caveat.c_str());
+    }
     ImGui::PopTextWrapPos();
-    if (rows.empty() && !error.empty()) {
-      end_panel();
-      return;
-    }
+    if (rows.empty() && !error.empty()) return;
     if (rows.empty()) {
-      ImGui::TextDisabled("This lesson states no expectations (expect{} in its script).");
-      end_panel();
+      const char* none = "This lesson states no expectations (expect{} in its script).";
+      ImGui::TextDisabled("%s", none);
+      note_text(none);
       return;
     }
-    // Each row's three cells as text, so the layout can be chosen from their widths.
-    struct Cells {
-      std::string predicted, measured, error;
-      bool measured_yet, passes;
-    };
-    std::vector<Cells> cells;
-    float widest[3] = {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
-                       ImGui::CalcTextSize("error").x};
-    for (const lessons::ExpectationResult& row : rows) {
-      Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "", row.measured_yet,
-                 row.passes};
-      if (row.measured_yet) {
-        cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
-        if (row.numeric) {
-          // The unit is in the columns beside it; here it would push the names into wrapping.
-          std::string number = with_unit(row.error(), "");
-          number.pop_back();
-          cell.error = (row.passes ? "\u2713 " : "\u2717 ") + std::string(row.error() > 0.0 ? "+" : "") + number;
-        } else {
-          cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
-        }
-      }
-      widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
-      widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
-      widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
-      cells.push_back(std::move(cell));
-    }
+    const TheoryCells table = theory_cells(rows);
+    const std::vector<TheoryCells::Cells>& cells = table.cells;
+    const float* widest = table.widest;
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
-    const float numbers = widest[0] + widest[1] + widest[2] + 3.0f * padding;
-    // Beside the numbers, a name needs room for a word or two; with large text in a narrow
-    // column there is none, and each name goes on a line of its own above its numbers.
     const float table_width = ImGui::GetContentRegionAvail().x;
-    const bool names_above = table_width - numbers < 9.0f * ImGui::CalcTextSize("m").x;
+    const bool names_above = table.names_above(table_width);
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
     // A name above its numbers spans the row: the cells must not clip it.
     if (ImGui::BeginTable("rows", names_above ? 3 : 4, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
@@ -149,40 +258,75 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
       }
       ImGui::TableHeadersRow();
       for (std::size_t i = 0; i < rows.size(); ++i) {
-        const Cells& cell = cells[i];
+        const TheoryCells::Cells& cell = cells[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (names_above) {
           // The name across the whole row: drawn from the first cell, wrapped at the table's edge.
           ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
-          ImGui::TextUnformatted(rows[i].name.c_str());
+          shown_text(rows[i].name.c_str());
           ImGui::PopTextWrapPos();
           ImGui::TableNextRow();
           ImGui::TableNextColumn();
         } else {
           ImGui::TextWrapped("%s", rows[i].name.c_str());
+          note_text(rows[i].name.c_str());
           ImGui::TableNextColumn();
         }
-        ImGui::TextUnformatted(cell.predicted.c_str());
+        shown_text(cell.predicted.c_str());
         ImGui::TableNextColumn();
         if (!cell.measured_yet) {
           ImGui::TextDisabled("not yet");
+          note_text("not yet");
           ImGui::TableNextColumn();
           continue;
         }
-        ImGui::TextUnformatted(cell.measured.c_str());
+        shown_text(cell.measured.c_str());
         ImGui::TableNextColumn();
         ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.error.c_str());
+        note_text(cell.error.c_str());
       }
       ImGui::EndTable();
     }
   }
-  end_panel();
+}
+
+float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width, const std::string& error,
+                             const std::string& caveat) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  const float row_padding = 2.0f * style.CellPadding.y;  // above and below a row's text
+  float height = 0.0f;
+  for (const std::string* text : {&error, &caveat}) {
+    if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
+  }
+  if (rows.empty()) return height + font + style.ItemSpacing.y;
+  const TheoryCells table = theory_cells(rows);
+  const bool above = table.names_above(width);
+  const float padding = 2.0f * style.CellPadding.x;
+  // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.
+  const float name_width = above ? width - padding : std::max(1.0f, width - table.numbers() - padding);
+  height += font + row_padding;  // the headers
+  for (const lessons::ExpectationResult& row : rows) {
+    height += ImGui::CalcTextSize(row.name.c_str(), nullptr, false, name_width).y + row_padding;
+    if (above) height += font + row_padding;
+  }
+  return height + style.ItemSpacing.y;
 }
 
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme) {
   if (begin_panel("energy", "Energy ledger (since t = 0)", corner, size)) energy_contents(scene, theme);
   end_panel();
+}
+
+float energy_contents_height(const Scene& scene, float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // As energy_contents lays it out: the table's rows, then the residual, wrapped, at its
+  // longest.
+  const float rows = scene.ledger().work_script != 0.0 ? 6.0f : 5.0f;
+  const float table = rows * (ImGui::GetFontSize() + 2.0f * style.CellPadding.y) + style.ItemSpacing.y;
+  const char* longest = "residual \u22124.7\u00d710\u207b\u2074 J, 100.00 % of the largest term";
+  return table + ImGui::CalcTextSize(longest, nullptr, false, width).y + style.ItemSpacing.y;
 }
 
 void energy_contents(const Scene& scene, const Theme& theme) {
@@ -212,13 +356,13 @@ void energy_contents(const Scene& scene, const Theme& theme) {
       for (std::size_t i = 0; i < lines; ++i) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        if (i < 3) ImGui::TextUnformatted(stored[i].name);
+        if (i < 3) shown_text(stored[i].name);
         ImGui::TableNextColumn();
-        if (i < 3) ImGui::TextUnformatted(joules(stored[i].value).c_str());
+        if (i < 3) shown_text(joules(stored[i].value).c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(work[i].name);
+        shown_text(work[i].name);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(joules(work[i].value).c_str());
+        shown_text(joules(work[i].value).c_str());
       }
       ImGui::EndTable();
     }
@@ -234,8 +378,12 @@ void energy_contents(const Scene& scene, const Theme& theme) {
     char share[64] = "";
     if (largest > 1e-3) std::snprintf(share, sizeof share, ", %.2f %% of the largest term", 100.0 * std::abs(residual) / largest);
     const bool small = std::abs(residual) <= 0.02 * std::max(largest, 1e-3);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "residual %s%s",
-                       format_quantity(residual, "J").c_str(), share);
+    const std::string line = "residual " + format_quantity(residual, "J") + share;
+    // Wrapped: with large text in a narrow column the share goes on a line of its own.
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(small ? theme.good : theme.bad), "%s", line.c_str());
+    ImGui::PopTextWrapPos();
+    note_text(line.c_str());
   }
 }
 
@@ -248,21 +396,27 @@ void model_contents(const lessons::Lesson& lesson) {
   {
     const lessons::ModelCard card = lessons::model_card(lesson);
     const std::string held = card.constraints > 0 ? ", less " + std::to_string(card.constraints) + " held by joints" : "";
-    ImGui::Text("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
-                card.moving_bodies == 1 ? "y" : "ies", held.c_str());
+    // Each line noted as drawn, so the layout test sees a line the panel cuts.
+    const auto line = [](const char* format, auto... values) {
+      char text[256];
+      std::snprintf(text, sizeof text, format, values...);
+      shown_text(text);
+    };
+    line("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
+         card.moving_bodies == 1 ? "y" : "ies", held.c_str());
     std::string terms = card.dry ? "dry (\u03bcs, \u03bck)" : "no dry friction";
     terms += card.viscous ? ", viscous c" : ", no viscous c";
     terms += card.quadratic ? ", quadratic b" : ", no quadratic b";
-    ImGui::Text("friction: %s", terms.c_str());
-    ImGui::Text("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
-    ImGui::Text("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
-                card.velocity_iterations);
+    line("friction: %s", terms.c_str());
+    line("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
+    line("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
+         card.velocity_iterations);
     // Pairs that name their own treatment say so; every other pair follows the run's.
     for (const lessons::ModelCard::PairLine& pair : card.pairs) {
       if (!pair.own) continue;
       char epsilon[48] = "";
       if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
-      ImGui::Text("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
+      line("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
     }
   }
 }

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <string>
 #include <vector>
 
 #include "lessons/runtime/lesson.h"
@@ -13,7 +14,8 @@
 namespace frictionlab::ui {
 
 // A fixed panel at a place in the frame, with a title bar unless `title` is empty.
-bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size);
+// `scroll`: what does not fit scrolls (a window's panel) instead of being cut at the edge.
+bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, bool scroll = false);
 void end_panel();
 
 void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
@@ -21,15 +23,35 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
 // ("μs  aluminium / wood"), any other by its name.
 std::string parameter_title(const lessons::Parameter& parameter);
 
-void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
+// The friction pair a parameter is a coefficient of ("aluminium on wood"), "" for any other.
+std::string pair_of(const lessons::Parameter& parameter);
+// The pairs among a lesson's parameters, each once, in the order they come.
+std::vector<std::string> parameter_pairs(const lessons::Lesson& lesson);
+// A pair's coefficients on one line, without units, drag coefficients only when on: "μs 0.45  μk 0.35".
+std::string pair_values(const lessons::Lesson& lesson, const std::string& pair);
+
+// The values as text. The last `folded_pairs` friction pairs are folded into a line each (their
+// coefficients side by side) when the column is short.
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, std::size_t folded_pairs = 0);
+// The height that panel takes, in the current font, at a width.
+float parameters_panel_height(const lessons::Lesson& lesson, float width, std::size_t folded_pairs);
 // `error`: the script could not work the table out (shown instead of it); `caveat`: why the
 // rows should not be trusted yet (shown above them).
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
                   const std::string& error = "", const std::string& caveat = "");
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
-// What those two panels hold, for a window that shows them as tabs of one panel.
+// What the theory, energy and model panels hold, for a window that shows them as tabs of one panel.
+void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme,
+                     const std::string& error = "", const std::string& caveat = "");
+// The height theory_contents takes at a width (the panel's inside), in the current font.
+float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width,
+                             const std::string& error = "", const std::string& caveat = "");
+// A tab of a panel's tab bar (ImGui::BeginTabItem), its name noted for the layout test.
+bool begin_tab(const char* label);
 void energy_contents(const Scene& scene, const Theme& theme);
+// The height energy_contents takes at a width (the panel's inside), in the current font.
+float energy_contents_height(const Scene& scene, float width);
 void model_contents(const lessons::Lesson& lesson);
 
 }  // namespace frictionlab::ui

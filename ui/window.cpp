@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "ui/headless.h"
 #include "ui/image.h"
@@ -29,15 +30,33 @@ struct Glfw {
   ~Glfw() { glfwTerminate(); }
 };
 
+// GLFW's key codes for the keys the classroom answers: the one place they are named.
+std::optional<Key> classroom_key(int glfw_key) {
+  switch (glfw_key) {
+    case GLFW_KEY_SPACE: return Key::space;
+    case GLFW_KEY_PERIOD: return Key::period;
+    case GLFW_KEY_COMMA: return Key::comma;
+    case GLFW_KEY_R: return Key::r;
+    case GLFW_KEY_F1: return Key::f1;
+    case GLFW_KEY_F5: return Key::f5;
+    case GLFW_KEY_F11: return Key::f11;
+    case GLFW_KEY_P: return Key::p;
+    case GLFW_KEY_D: return Key::d;
+    case GLFW_KEY_S: return Key::s;
+    case GLFW_KEY_E: return Key::e;
+    default: return std::nullopt;
+  }
+}
+
 struct WindowDeleter {
   void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
 };
 
 }  // namespace
 
-void run_window(Sandbox& sandbox, const WindowRun& run) {
+void run_window(Classroom& classroom, const WindowRun& run) {
   Glfw glfw;
-  WindowSettings& settings = sandbox.window_settings();
+  WindowSettings& settings = classroom.window_settings();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -48,12 +67,13 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
   ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
-  // Every key press reaches the sandbox, even one let go before the next frame; set before
+  // Every key press reaches the classroom, even one let go before the next frame; set before
   // ImGui's backend, which then calls it after its own.
-  glfwSetWindowUserPointer(window.get(), &sandbox);
+  glfwSetWindowUserPointer(window.get(), &classroom);
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS) {
-      static_cast<Sandbox*>(glfwGetWindowUserPointer(from))->key_pressed(key, (mods & GLFW_MOD_CONTROL) != 0);
+    if (action != GLFW_PRESS) return;
+    if (const std::optional<Key> named = classroom_key(key)) {
+      static_cast<Classroom*>(glfwGetWindowUserPointer(from))->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
     }
   });
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
@@ -61,18 +81,18 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
     ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
   } input;
 
-  if (run.at) sandbox.playback().run_to(*run.at);
+  if (run.at) classroom.playback().run_to(*run.at);
   int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
   bool full_screen = false;
   int windowed[4] = {0, 0, settings.width, settings.height};
   double last = glfwGetTime();
   WindowSettings saved = settings;
   int settle_frames = 3;
-  while (!glfwWindowShouldClose(window.get()) && !sandbox.quit_requested()) {
+  while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
     // Paused and untouched, the picture cannot change: wait for input, waking four times a
     // second so a saved script is still seen (a paused llvmpipe window drew at 97 % of a core).
     // A few frames after any input let ImGui settle hover and focus before waiting again.
-    if (sandbox.idle() && frames_left < 0 && settle_frames == 0) {
+    if (classroom.idle() && frames_left < 0 && settle_frames == 0) {
       const double asleep_from = glfwGetTime();
       glfwWaitEventsTimeout(0.25);
       // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
@@ -82,7 +102,7 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
     } else {
       glfwPollEvents();
     }
-    settle_frames = sandbox.idle() ? std::max(0, settle_frames - 1) : 3;
+    settle_frames = classroom.idle() ? std::max(0, settle_frames - 1) : 3;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
     const double now = glfwGetTime();
@@ -97,18 +117,18 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
     last = now;
 
     host.make_current();
-    const Fonts& fonts = host.prepare(sandbox.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+    const Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
                                       settings.theme);
     ImGui_ImplGlfw_NewFrame();
     host.begin_frame();
-    sandbox.frame(fonts, ImGui::GetIO().DisplaySize, wall);
+    classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
     glViewport(0, 0, width, height);
     const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
     glClearColor(clear.x, clear.y, clear.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     host.end_frame();
 
-    std::optional<std::string> screenshot = sandbox.take_screenshot_request();
+    std::optional<std::string> screenshot = classroom.take_screenshot_request();
     if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
     if (screenshot) {
       glReadBuffer(GL_BACK);
@@ -119,10 +139,10 @@ void run_window(Sandbox& sandbox, const WindowRun& run) {
         error = failure.what();
         if (frames_left == 0) throw;
       }
-      sandbox.screenshot_done(*screenshot, error);
+      classroom.screenshot_done(*screenshot, error);
       if (frames_left == 0) break;
     }
-    if (sandbox.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
+    if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
     // Wanted full screen with no monitor to fill (yet): the wish is kept, and tried each frame.
     if (settings.full_screen != full_screen) {
       GLFWmonitor* monitor = glfwGetPrimaryMonitor();

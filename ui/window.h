@@ -1,4 +1,4 @@
-// The sandbox in a GLFW window: OpenGL 3.3 through GLX (Mesa's llvmpipe needs no GPU), Dear
+// The classroom in a GLFW window: OpenGL 3.3 through GLX (Mesa's llvmpipe needs no GPU), Dear
 // ImGui's GLFW input, a fixed-step lesson paced by the wall clock, and what only a window can
 // do (full screen, screenshots of itself, keeping its size between runs).
 #pragma once
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 
 namespace frictionlab::ui {
 
@@ -29,6 +29,6 @@ struct WindowRun {
 
 // Returns when the window is closed. Throws NoDisplay before anything is shown when it cannot
 // open, std::runtime_error if the screenshot asked for cannot be written.
-void run_window(Sandbox& sandbox, const WindowRun& run);
+void run_window(Classroom& classroom, const WindowRun& run);
 
 }  // namespace frictionlab::ui

@@ -1,4 +1,4 @@
-// The classroom sandbox: a lesson's frame with everything that drives it around it. A menu bar
+// The classroom window: a lesson's frame with everything that drives it around it. A menu bar
 // (lessons, simulation settings, view), the transport bar (play, step, speed, the recorded
 // run), sliders that also take typed values, the mouse's hand in the world, keyboard
 // shortcuts and a help panel. Immediate mode: every panel reads the running lesson and acts
@@ -21,13 +21,15 @@
 #include "physics/recommend.h"
 #include "physics/stability.h"
 #include "ui/chart.h"
+#include "ui/frame.h"
+#include "ui/keys.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
 
-struct SandboxOptions {
+struct ClassroomOptions {
   std::string lesson;                               // the script's path
   std::map<std::string, std::string> overrides;     // --set
   StepSettings settings;                            // --hz, --substeps, --friction
@@ -42,12 +44,12 @@ inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".
 std::string lesson_name(const std::string& script_path);
 
-class Sandbox {
+class Classroom {
  public:
   // Opens the lesson; a script that fails to build opens the first built-in lesson instead,
   // with the script's error shown and its file watched until it builds. Throws InvalidInput
   // when --lock names something the lesson does not have.
-  explicit Sandbox(SandboxOptions options);
+  explicit Classroom(ClassroomOptions options);
 
   // The size the host should prepare fonts at for a display of this size.
   float ui_scale(ImVec2 display) const;
@@ -56,14 +58,16 @@ class Sandbox {
 
   // One display frame: the keys and mouse in ImGui's io, `wall_seconds` of real time passing,
   // then the whole window built.
-  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds);
+  // With `record`, where the frame put things and every text it drew (the layout test).
+  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record = nullptr);
 
   Playback& playback() { return *playback_; }
   const Playback& playback() const { return *playback_; }
 
-  // A key pressed, as the window system reports it: a tap pressed and let go between two frames
-  // (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame key state.
-  void key_pressed(int glfw_key, bool ctrl) { taps_.emplace_back(glfw_key, ctrl); }
+  // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
+  // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
+  // key state, so shortcuts come from here only.
+  void key_pressed(Key key, bool ctrl) { taps_.emplace_back(key, ctrl); }
 
   // Requests the host carries out after the frame is drawn, each taken once.
   std::optional<std::string> take_screenshot_request();  // the path to save the window to
@@ -114,21 +118,39 @@ class Sandbox {
   void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
   void transport_bar(ImVec2 corner, ImVec2 size);
-  void parameters_panel(ImVec2 corner, ImVec2 size);
+  // The transport bar's words, and its height: one row, or two when the words do not fit
+  // beside the time bar.
+  std::string transport_words() const;
+  struct TransportShape {
+    float controls = 0.0f, bar = 0.0f, height = 0.0f;
+    bool words_below = false;
+  };
+  TransportShape transport_shape(float width) const;
+  void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   void cheapest_setting_tab();
   void stability_map_tab();
   void stability_map_window();
   void update_stability_chart();
   // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
   // (with its presets) comes before it. The panel draws them; its height is counted from them.
+  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
+  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
+  // folds one more pair the teacher has not opened, the last first, into its heading with its
+  // values.
   struct ParameterRow {
     const lessons::Parameter* parameter;
-    bool pair_heading;
+    const lessons::Parameter* partner;  // the second coefficient on a row of two
+    bool pair_heading, folded, two_a_row;
   };
-  std::vector<ParameterRow> parameter_rows() const;
-  float parameters_height() const;
+  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
+  std::vector<std::string> foldable_pairs(bool opened_too) const;
+  std::vector<ParameterRow> parameter_rows(std::size_t step) const;
+  std::vector<float> parameters_heights() const;  // at each step
   void remember(const std::string& name);  // the last item's place, under `name`
-  void parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x);
+  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
+  // value (none when value_x is reset_x) and its reset.
+  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+                     float value_x, float reset_x);
   void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);
   void help_panel();
@@ -156,10 +178,11 @@ class Sandbox {
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;
   std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
+  std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;
-  std::vector<std::pair<int, bool>> taps_;  // keys reported since the last frame, with Ctrl
+  std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on

@@ -1,9 +1,7 @@
 // ImVec2 arithmetic for ImRect.
 #define IMGUI_DEFINE_MATH_OPERATORS
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui_internal.h>
 
 #include <algorithm>
@@ -17,6 +15,7 @@
 #include "ui/frame.h"
 #include "ui/image.h"
 #include "ui/output_file.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -25,7 +24,7 @@ namespace {
 
 std::string lesson_name(const std::string& script_path) { return std::filesystem::path(script_path).stem().string(); }
 
-Sandbox::Sandbox(SandboxOptions options)
+Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
       lock_(options.lock.begin(), options.lock.end()),
       overrides_(options.overrides),
@@ -48,7 +47,7 @@ Sandbox::Sandbox(SandboxOptions options)
   // predicts, before anything moves; Space plays.
 }
 
-void Sandbox::check_lock(const lessons::Lesson& lesson) const {
+void Classroom::check_lock(const lessons::Lesson& lesson) const {
   for (const std::string& name : lock_) {
     bool known = false;
     for (const char* setting : lockable_settings) known = known || name == setting;
@@ -62,22 +61,27 @@ void Sandbox::check_lock(const lessons::Lesson& lesson) const {
   }
 }
 
-float Sandbox::ui_scale(ImVec2 display) const {
+float Classroom::ui_scale(ImVec2 display) const {
   const float fit = frame_scale(static_cast<int>(display.x), static_cast<int>(display.y));
   // Projector mode: a third larger, text and lines alike, for the back of the room.
   return std::max(0.5f, fit) * (window_.projector ? 1.35f : 1.0f);
 }
 
-bool Sandbox::shown(const std::string& control_name) const { return lock_.empty() || lock_.count(control_name) > 0; }
+bool Classroom::shown(const std::string& control_name) const { return lock_.empty() || lock_.count(control_name) > 0; }
 
-std::optional<ImRect> Sandbox::control(const std::string& name) const {
+std::optional<ImRect> Classroom::control(const std::string& name) const {
   const auto found = controls_.find(name);
   if (found == controls_.end()) return std::nullopt;
   return found->second;
 }
 
-void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
+void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record) {
   fonts_ = &fonts;
+  std::optional<TextRecording> noting;
+  if (record != nullptr) {
+    *record = FrameRecord{};
+    noting.emplace(&record->texts);
+  }
   controls_.clear();
   const float s = fonts.scale;
   handle_keys();
@@ -90,7 +94,7 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y + 2.0f * s;
+  const float transport_height = transport_shape(display.x).height;
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - transport_height));
@@ -101,13 +105,16 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   style.origin = origin;
   style.readings = &playback_->readings();
   style.view_adjust = view_adjust_;
-  style.parameters_panel = [this](ImVec2 corner, ImVec2 size) { parameters_panel(corner, size); };
+  style.record = record;
+  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
+    parameters_panel(corner, size, folded);
+  };
   style.more_tabs = [this] {
     cheapest_setting_tab();
     stability_map_tab();
   };
   ImGui::PushFont(fonts.body);
-  style.parameters_height = parameters_height();
+  style.parameters_heights = parameters_heights();
   ImGui::PopFont();
   build_frame(playback_->lesson(), playback_->framing(), style, area);
 
@@ -129,45 +136,43 @@ void Sandbox::frame(const Fonts& fonts, ImVec2 display, double wall_seconds) {
   pending_values_.clear();
 }
 
-void Sandbox::handle_keys() {
+void Classroom::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
-  std::vector<std::pair<int, bool>> taps;
+  std::vector<std::pair<Key, bool>> taps;
   taps.swap(taps_);
   // Typing a value or a path, or a dialog open: the keys are the text's, not shortcuts.
   if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
-  // Held across frames, a key shows both ways in the same frame; either is one press.
-  const auto hit = [&](int key, bool ctrl) {
-    const bool tapped = std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
-    return tapped || (io.KeyCtrl == ctrl && ImGui::IsKeyPressed(key, false));
+  const auto hit = [&](Key key, bool ctrl) {
+    return std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
   };
-  if (hit(GLFW_KEY_S, true)) request_screenshot();
-  if (hit(GLFW_KEY_E, true)) save_history();
-  if (hit(GLFW_KEY_SPACE, false)) playback_->toggle();
-  if (hit(GLFW_KEY_PERIOD, false)) playback_->step_once();
-  if (hit(GLFW_KEY_COMMA, false)) {
+  if (hit(Key::s, true)) request_screenshot();
+  if (hit(Key::e, true)) save_history();
+  if (hit(Key::space, false)) playback_->toggle();
+  if (hit(Key::period, false)) playback_->step_once();
+  if (hit(Key::comma, false)) {
     playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
   }
-  if (hit(GLFW_KEY_R, false)) playback_->reset();
-  if (hit(GLFW_KEY_F5, false)) playback_->reload();
-  if (hit(GLFW_KEY_F11, false)) full_screen_toggle_ = true;
-  if (hit(GLFW_KEY_F1, false)) window_.help = !window_.help;
-  if (hit(GLFW_KEY_P, false)) window_.projector = !window_.projector;
-  if (hit(GLFW_KEY_D, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
+  if (hit(Key::r, false)) playback_->reset();
+  if (hit(Key::f5, false)) playback_->reload();
+  if (hit(Key::f11, false)) full_screen_toggle_ = true;
+  if (hit(Key::f1, false)) window_.help = !window_.help;
+  if (hit(Key::p, false)) window_.projector = !window_.projector;
+  if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
-bool Sandbox::idle() const {
+bool Classroom::idle() const {
   const bool searching = recommender_ != nullptr && !recommender_->done();
   return !playback_->playing() && !searching && !hand_held_ && !panning_from_ && !screenshot_request_;
 }
 
-const Camera& Sandbox::world_camera_at(ImVec2 point) const {
+const Camera& Classroom::world_camera_at(ImVec2 point) const {
   for (const Camera& camera : cameras_) {
     if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
   }
   return cameras_.front();
 }
 
-void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
+void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
   ImGuiContext& context = *ImGui::GetCurrentContext();
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback_->lesson();
@@ -249,7 +254,7 @@ void Sandbox::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
   }
 }
 
-void Sandbox::change_settings(const StepSettings& settings) {
+void Classroom::change_settings(const StepSettings& settings) {
   try {
     playback_->set_settings(settings);
   } catch (const InvalidInput& error) {
@@ -257,7 +262,7 @@ void Sandbox::change_settings(const StepSettings& settings) {
   }
 }
 
-void Sandbox::set_value(const std::string& name, const std::string& text) {
+void Classroom::set_value(const std::string& name, const std::string& text) {
   try {
     playback_->set_parameter(name, text);
     control_errors_.erase(name);
@@ -266,7 +271,7 @@ void Sandbox::set_value(const std::string& name, const std::string& text) {
   }
 }
 
-void Sandbox::messages(ImVec2 corner, float width) {
+void Classroom::messages(ImVec2 corner, float width) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
   if (!failed_script_.empty()) lines.push_back({failed_error_ + "  (showing " + lesson_name(playback_->lesson().path()) +
                                                     " until " + lesson_name(failed_script_) + ".lua builds)", true});
@@ -286,7 +291,7 @@ void Sandbox::messages(ImVec2 corner, float width) {
     ImGui::PushTextWrapPos(0.0f);
     for (const auto& [text, fault] : lines) {
       ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));
-      ImGui::TextUnformatted(text.c_str());
+      shown_text(text.c_str());
       ImGui::PopStyleColor();
     }
     ImGui::PopTextWrapPos();
@@ -295,7 +300,7 @@ void Sandbox::messages(ImVec2 corner, float width) {
   ImGui::End();
 }
 
-std::string Sandbox::open(const std::string& name_or_path) {
+std::string Classroom::open(const std::string& name_or_path) {
   try {
     // "~/steep_slope.lua", as a shell would have it.
     const char* home = std::getenv("HOME");
@@ -310,6 +315,7 @@ std::string Sandbox::open(const std::string& name_or_path) {
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     control_errors_.clear();
+    pair_open_.clear();
     sliding_.reset();
     hand_held_ = false;
     view_adjust_ = {};
@@ -321,7 +327,7 @@ std::string Sandbox::open(const std::string& name_or_path) {
   }
 }
 
-void Sandbox::try_failed_script(double wall_seconds) {
+void Classroom::try_failed_script(double wall_seconds) {
   if (failed_script_.empty()) return;
   since_failed_check_ += wall_seconds;
   if (since_failed_check_ < 0.25) return;
@@ -336,29 +342,29 @@ void Sandbox::try_failed_script(double wall_seconds) {
   }
 }
 
-std::optional<std::string> Sandbox::take_screenshot_request() {
+std::optional<std::string> Classroom::take_screenshot_request() {
   auto request = std::move(screenshot_request_);
   screenshot_request_.reset();
   return request;
 }
 
-void Sandbox::screenshot_done(const std::string& path, const std::string& error) {
+void Classroom::screenshot_done(const std::string& path, const std::string& error) {
   status_ = error.empty() ? "Screenshot saved to " + path : "Could not save the screenshot: " + error;
 }
 
-bool Sandbox::take_full_screen_toggle() {
+bool Classroom::take_full_screen_toggle() {
   const bool toggle = full_screen_toggle_;
   full_screen_toggle_ = false;
   return toggle;
 }
 
-std::string Sandbox::output_path(const std::string& stem, const std::string& extension) const {
+std::string Classroom::output_path(const std::string& stem, const std::string& extension) const {
   char time[32];
   std::snprintf(time, sizeof time, "_t%.2f", playback_->lesson().scene().time());
   return unused_path(output_folder_, stem + time, extension);
 }
 
-void Sandbox::request_screenshot() {
+void Classroom::request_screenshot() {
   try {
     screenshot_request_ = output_path("frictionlab_" + lesson_name(playback_->lesson().path()), ".png");
   } catch (const std::exception& error) {
@@ -366,7 +372,7 @@ void Sandbox::request_screenshot() {
   }
 }
 
-void Sandbox::save_history() {
+void Classroom::save_history() {
   try {
     status_ = "History saved to " + export_history();
   } catch (const std::exception& error) {
@@ -374,7 +380,7 @@ void Sandbox::save_history() {
   }
 }
 
-std::string Sandbox::export_history() {
+std::string Classroom::export_history() {
   const lessons::Lesson& lesson = playback_->lesson();
   const Scene& scene = lesson.scene();
   std::ostringstream csv;

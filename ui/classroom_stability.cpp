@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "physics/scenarios.h"
-#include "ui/sandbox.h"
+#include "ui/panels.h"
+#include "ui/classroom.h"
+#include "ui/text_record.h"
 #include "ui/stability_chart.h"
 
 namespace frictionlab::ui {
@@ -19,7 +21,7 @@ struct Threshold {
 
 }  // namespace
 
-void Sandbox::update_stability_chart() {
+void Classroom::update_stability_chart() {
   const lessons::Lesson& lesson = playback_->lesson();
   double mu_s = NAN, gravity = standard_gravity;
   std::string slope;
@@ -67,8 +69,8 @@ void Sandbox::update_stability_chart() {
   stability_chart_.series.push_back(marks);
 }
 
-void Sandbox::stability_map_tab() {
-  const bool open = ImGui::BeginTabItem("Stability map");
+void Classroom::stability_map_tab() {
+  const bool open = begin_tab("Stability###stability map");
   remember("Stability map tab");
   if (!open) return;
   update_stability_chart();
@@ -79,14 +81,15 @@ void Sandbox::stability_map_tab() {
     remember("stability map");
     ImGui::SameLine();
     ImGui::TextDisabled("the regularized law here");
+    note_text("the regularized law here");
     ImGui::PushTextWrapPos(0.0f);
-    for (const std::string& line : stability_words_) ImGui::TextUnformatted(line.c_str());
+    for (const std::string& line : stability_words_) shown_text(line.c_str());
     ImGui::PopTextWrapPos();
   }
   ImGui::EndTabItem();
 }
 
-void Sandbox::stability_map_window() {
+void Classroom::stability_map_window() {
   if (!stability_window_) return;
   update_stability_chart();
   const float s = fonts_->scale;

@@ -1,4 +1,4 @@
-// The sandbox's menus (lessons, simulation settings, view), the help panel and the dialog that
+// The classroom's menus (lessons, simulation settings, view), the help panel and the dialog that
 // opens a script by its path.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "lessons/runtime/catalog.h"
-#include "ui/sandbox.h"
+#include "ui/classroom.h"
 #include "ui/user_lessons.h"
 
 namespace frictionlab::ui {
-void Sandbox::menu_bar() {
+void Classroom::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   const bool lesson_menu = ImGui::BeginMenu("Lesson");
   remember("Lesson menu");
@@ -107,7 +107,7 @@ void Sandbox::menu_bar() {
   ImGui::EndMainMenuBar();
 }
 
-void Sandbox::help_panel() {
+void Classroom::help_panel() {
   if (!window_.help) return;
   const float s = fonts_->scale;
   ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
@@ -142,7 +142,9 @@ void Sandbox::help_panel() {
     ImGui::TextUnformatted(
         "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. The wheel zooms, a "
         "drag on empty space pans, a double click there gives the lesson's view back. Drag a slider, or "
-        "type an exact value in the box beside it and press Enter; the arrow resets it to the script's value. "
+        "type an exact value in the box beside it and press Enter (Ctrl+click a slider that has no box); the "
+        "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
+        "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
         "until you change something.");
     ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
@@ -153,7 +155,7 @@ void Sandbox::help_panel() {
   ImGui::End();
 }
 
-void Sandbox::open_script_popup() {
+void Classroom::open_script_popup() {
   if (open_popup_) {
     ImGui::OpenPopup("Open a lesson script");
     open_popup_ = false;

@@ -1,13 +1,16 @@
-// The sandbox's controls: the parameters as sliders with a box for typed values and a reset,
+// The classroom's controls: the parameters as sliders with a box for typed values and a reset,
 // material presets for a friction pair, and the transport bar along the bottom.
 #define IMGUI_DEFINE_MATH_OPERATORS
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 
 #include "lessons/runtime/lesson_benchmark.h"
 #include "physics/materials.h"
-#include "ui/sandbox.h"
+#include "ui/panels.h"
+#include "ui/classroom.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -46,78 +49,198 @@ const std::vector<Preset>& presets() {
   return list;
 }
 
+// A pair's coefficient by its letter alone, for two sliders a row.
+std::string coefficient_letter(const lessons::Parameter& parameter) {
+  if (parameter.coefficient == "mu_s") return "\u03bcs";
+  if (parameter.coefficient == "mu_k") return "\u03bck";
+  return parameter.coefficient.empty() ? parameter.name : parameter.coefficient;
+}
+
+// A combo box's shown choice, left in its frame before the arrow button.
+void note_combo(const char* preview) {
+  const ImVec2 padding = ImGui::GetStyle().FramePadding;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  note_text_in(preview, ImVec2(min.x + padding.x, min.y + padding.y),
+               ImRect(min, ImVec2(max.x - ImGui::GetFrameHeight(), max.y)));
+}
+
 }  // namespace
 
 // Each row: the name, the slider, a box for a typed value, and a reset; a friction pair's
 // rows come under a heading with its material presets.
+// The names' column is as wide as the widest name, within a third and 45 % of the panel.
 struct ControlColumns {
   float slider, value, reset, end;
-  static ControlColumns of(float width, float scale) {
+  static ControlColumns of(float width, float scale, float widest_name) {
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     ControlColumns columns;
     columns.end = width;
     columns.reset = width - ImGui::GetFrameHeight();
     columns.value = columns.reset - spacing - 72.0f * scale;
-    columns.slider = std::min(0.3f * width, 120.0f * scale);
+    // Offsets count from the panel's left edge (ImGui::SameLine), the names from its padding.
+    const float names_end = ImGui::GetStyle().WindowPadding.x + widest_name + spacing;
+    columns.slider = std::clamp(names_end, std::min(0.3f * width, 120.0f * scale), 0.45f * width);
     return columns;
   }
 };
 
-std::vector<Sandbox::ParameterRow> Sandbox::parameter_rows() const {
+std::vector<std::string> Classroom::foldable_pairs(bool opened_too) const {
+  std::vector<std::string> pairs;
+  for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
+    const std::string pair = pair_of(parameter);
+    if (pair.empty() || !shown(parameter.name)) continue;
+    const auto choice = pair_open_.find(pair);
+    if (choice != pair_open_.end() && !(opened_too && choice->second)) continue;
+    if (std::find(pairs.begin(), pairs.end(), pair) == pairs.end()) pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+std::vector<Classroom::ParameterRow> Classroom::parameter_rows(std::size_t step) const {
+  // Pairs the teacher opened still go two a row; only those left to the layout fold.
+  const std::vector<std::string> compact = foldable_pairs(true), foldable = foldable_pairs(false);
+  const std::size_t two_a_row = std::min(step, compact.size());
+  const std::size_t folded = step > compact.size() ? std::min(step - compact.size(), foldable.size()) : 0;
+  // Whether a pair is among the last `count` of `pairs`.
+  const auto among_last = [](const std::vector<std::string>& pairs, const std::string& pair, std::size_t count) {
+    const auto at = std::find(pairs.begin(), pairs.end(), pair);
+    return at != pairs.end() && static_cast<std::size_t>(at - pairs.begin()) >= pairs.size() - count;
+  };
   std::vector<ParameterRow> rows;
   std::string last_pair;
   for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
     if (!shown(parameter.name)) continue;
-    const std::string pair = parameter.material_a + " on " + parameter.material_b;
-    const bool heading = !parameter.coefficient.empty() && pair != last_pair;
+    const std::string pair = pair_of(parameter);
+    const bool heading = !pair.empty() && pair != last_pair;
     if (heading) last_pair = pair;
-    rows.push_back({&parameter, heading});
+    ParameterRow row{&parameter, nullptr, heading, false, false};
+    if (!pair.empty()) {
+      // The teacher's own choice first; then the layout's step.
+      const auto choice = pair_open_.find(pair);
+      row.folded = choice != pair_open_.end() ? !choice->second : among_last(foldable, pair, folded);
+      row.two_a_row = !row.folded && among_last(compact, pair, two_a_row);
+    }
+    // A folded pair is its heading alone, its values on that line.
+    if (row.folded && !heading) continue;
+    // The second of two coefficients shares the row of the first.
+    if (row.two_a_row && !heading && !rows.empty() && rows.back().two_a_row && rows.back().partner == nullptr &&
+        pair_of(*rows.back().parameter) == pair) {
+      rows.back().partner = &parameter;
+      continue;
+    }
+    rows.push_back(row);
   }
   return rows;
 }
 
-float Sandbox::parameters_height() const {
-  int rows = lock_.empty() ? 0 : 1;
-  for (const ParameterRow& row : parameter_rows()) {
-    rows += 1 + (row.pair_heading ? 1 : 0) + (control_errors_.count(row.parameter->name) ? 2 : 0);
-  }
+std::vector<float> Classroom::parameters_heights() const {
   const ImGuiStyle& style = ImGui::GetStyle();
-  return ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing();
+  std::vector<float> heights;
+  for (std::size_t step = 0; step <= foldable_pairs(true).size() + foldable_pairs(false).size(); ++step) {
+    int rows = lock_.empty() ? 0 : 1;
+    for (const ParameterRow& row : parameter_rows(step)) {
+      rows += 1 + (row.pair_heading && !row.folded ? 1 : 0);
+      for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
+        if (shown != nullptr && !row.folded && control_errors_.count(shown->name) > 0) rows += 2;
+      }
+    }
+    heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
+                      static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing());
+  }
+  return heights;
 }
 
-void Sandbox::remember(const std::string& name) {
+void Classroom::remember(const std::string& name) {
   controls_[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
-void Sandbox::parameters_panel(ImVec2 corner, ImVec2 size) {
+void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
   const std::string title = lock_.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
-    const ControlColumns columns = ControlColumns::of(ImGui::GetContentRegionAvail().x, fonts_->scale);
-    for (const ParameterRow& row : parameter_rows()) {
+    note_title(title.substr(0, title.find("###")).c_str());
+    const std::vector<ParameterRow> rows = parameter_rows(step);
+    float widest_name = 0.0f, widest_letter = 0.0f;
+    for (const ParameterRow& row : rows) {
+      if (row.folded) continue;
+      for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
+        if (shown == nullptr) continue;
+        float& widest = row.two_a_row ? widest_letter : widest_name;
+        widest = std::max(widest, ImGui::CalcTextSize((row.two_a_row ? coefficient_letter(*shown) : control_label(*shown)).c_str()).x);
+      }
+    }
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const ControlColumns columns = ControlColumns::of(width, fonts_->scale, widest_name);
+    for (const ParameterRow& row : rows) {
       const lessons::Parameter& parameter = *row.parameter;
       if (row.pair_heading) {
+        // The pair's heading, with an arrow that folds its sliders into the line or opens them.
+        const std::string pair = pair_of(parameter);
+        ImGui::PushID(pair.c_str());
+        if (ImGui::ArrowButton("##fold", row.folded ? ImGuiDir_Right : ImGuiDir_Down)) pair_open_[pair] = row.folded;
+        remember(pair + " fold");
+        ImGui::PopID();
+        ImGui::SameLine();
         ImGui::AlignTextToFramePadding();
-        ImGui::TextDisabled("%s on %s", parameter.material_a.c_str(), parameter.material_b.c_str());
+        ImGui::TextDisabled("%s", pair.c_str());
+        note_text(pair.c_str());
+        if (row.folded) {
+          const std::string values = pair_values(playback_->lesson(), pair);
+          ImGui::SameLine();
+          ImGui::TextUnformatted(values.c_str());
+          note_text(values.c_str());
+          continue;
+        }
         if (parameter.coefficient == "mu_s") {
           ImGui::SameLine();
           ImGui::SetNextItemWidth(-FLT_MIN);
           preset_row(parameter);
         }
       }
-      ImGui::PushID(parameter.name.c_str());
-      parameter_row(parameter, columns.slider, columns.value, columns.reset);
-      ImGui::PopID();
+      if (row.two_a_row) {
+        // Two coefficients a row, each its letter, slider and reset; a value is typed with
+        // Ctrl+click on its slider.
+        const float half = 0.5f * (width - spacing);
+        for (int side = 0; side < 2; ++side) {
+          const lessons::Parameter* shown = side == 0 ? row.parameter : row.partner;
+          if (shown == nullptr) continue;
+          // Offsets from the panel's left edge, as ImGui::SameLine takes them.
+          const float start = ImGui::GetStyle().WindowPadding.x + (side == 0 ? 0.0f : half + spacing);
+          const float reset = start + half - ImGui::GetFrameHeight();
+          ImGui::PushID(shown->name.c_str());
+          parameter_row(*shown, coefficient_letter(*shown), side == 0 ? 0.0f : start, start + widest_letter + spacing,
+                        reset, reset);
+          ImGui::PopID();
+        }
+      } else {
+        ImGui::PushID(parameter.name.c_str());
+        parameter_row(parameter, control_label(parameter), 0.0f, columns.slider, columns.value, columns.reset);
+        ImGui::PopID();
+      }
+      for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
+        if (shown == nullptr) continue;
+        if (const auto error = control_errors_.find(shown->name); error != control_errors_.end()) {
+          ImGui::PushTextWrapPos(0.0f);
+          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", error->second.c_str());
+          ImGui::PopTextWrapPos();
+          note_text(error->second.c_str());
+        }
+      }
     }
-    if (!lock_.empty()) ImGui::TextDisabled("Only the controls the teacher chose are shown.");
+    if (!lock_.empty()) {
+      const char* locked = "Only the controls the teacher chose are shown.";
+      ImGui::TextDisabled("%s", locked);
+      note_text(locked);
+    }
   }
   ImGui::End();
 }
 
-void Sandbox::preset_row(const lessons::Parameter& mu_s) {
+void Classroom::preset_row(const lessons::Parameter& mu_s) {
   const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
   const std::string mu_k = prefix + "mu_k";
   if (!shown(mu_k)) {
@@ -125,7 +248,15 @@ void Sandbox::preset_row(const lessons::Parameter& mu_s) {
     return;
   }
   ImGui::PushID(mu_s.name.c_str());
-  if (ImGui::BeginCombo("##preset", "material presets (seed tables)...")) {
+  // As much of the name as the box holds.
+  const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
+  const char* preview = "material presets (seed tables)\u2026";
+  for (const char* shorter : {"material presets\u2026", "presets\u2026"}) {
+    if (ImGui::CalcTextSize(preview).x > room) preview = shorter;
+  }
+  const bool open = ImGui::BeginCombo("##preset", preview);
+  note_combo(preview);
+  if (open) {
     for (const Preset& preset : presets()) {
       if (ImGui::Selectable(preset.label.c_str())) {
         // mu_k first when it falls, so the pair never passes through mu_k > mu_s on the way.
@@ -142,11 +273,19 @@ void Sandbox::preset_row(const lessons::Parameter& mu_s) {
   ImGui::PopID();
 }
 
-void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x, float value_x, float reset_x) {
+void Classroom::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+                            float value_x, float reset_x) {
   const std::string& name = parameter.name;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  // The second control of a row goes on the same line, from its own start.
+  if (label_x > 0.0f) ImGui::SameLine(label_x);
   ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted(control_label(parameter).c_str());
+  ImGui::TextUnformatted(label.c_str());
+  {
+    // The slider starts at slider_x from the panel's edge: the name must end before it.
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    note_text_in(label.c_str(), min, ImRect(min, ImVec2(ImGui::GetWindowPos().x + slider_x, max.y)));
+  }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
                       exact_text(parameter.min).c_str(), exact_text(parameter.max).c_str(),
@@ -159,7 +298,9 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
     // A choice has no number to type: its list takes the box's place too.
     ImGui::SetNextItemWidth(reset_x - spacing - slider_x);
     const std::string& chosen = parameter.choices[static_cast<std::size_t>(parameter.value)];
-    if (ImGui::BeginCombo("##choice", chosen.c_str())) {
+    const bool open = ImGui::BeginCombo("##choice", chosen.c_str());
+    note_combo(chosen.c_str());
+    if (open) {
       for (const std::string& choice : parameter.choices) {
         if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) pending_values_.push_back({name, choice});
       }
@@ -170,12 +311,20 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
     ImGui::SetNextItemWidth(value_x - spacing - slider_x);
     const bool sliding_this = sliding_ && sliding_->first == name;
     double value = sliding_this ? sliding_->second : parameter.value;
-    const std::string format = "%.3g" + (parameter.unit.empty() ? "" : " " + parameter.unit);
+    // A unit is text, not format: a script's "%" is written "%%".
+    std::string unit;
+    for (const char c : parameter.unit) unit += c == '%' ? std::string("%%") : std::string(1, c);
+    const std::string format = "%.3g" + (unit.empty() ? "" : " " + unit);
     // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
     const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
     const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
                                            format.c_str(), wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
     remember(name + " slider");
+    {
+      char shown[96];
+      std::snprintf(shown, sizeof shown, format.c_str(), value);
+      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    }
     if (moved) {
       // A value the scene is built from restarts the lesson: wait until the slider is let go.
       if (parameter.structural) {
@@ -188,6 +337,7 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
       pending_values_.push_back({name, exact_text(sliding_->second)});
       sliding_.reset();
     }
+    if (value_x < reset_x) {
     ImGui::SameLine(value_x);
     ImGui::SetNextItemWidth(reset_x - spacing - value_x);
     char typed[64];
@@ -197,7 +347,13 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
       pending_values_.push_back({name, typed});
     }
     remember(name + " value");
+    {
+      const ImVec2 padding = ImGui::GetStyle().FramePadding;
+      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+      note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
+    }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
+    }
   }
 
   ImGui::SameLine(reset_x);
@@ -212,30 +368,53 @@ void Sandbox::parameter_row(const lessons::Parameter& parameter, float slider_x,
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("Back to the script's value, %s", exact_text(parameter.default_value).c_str());
   }
-
-  if (const auto error = control_errors_.find(name); error != control_errors_.end()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", error->second.c_str());
-    ImGui::PopTextWrapPos();
-  }
 }
 
-void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
+std::string Classroom::transport_words() const {
+  // Notices (the run is over, the file reloaded) and what was saved where, on one line.
+  std::string said = playback_->notice();
+  if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
+  if (playback_->behind()) said = "running slower than asked  " + said;
+  return said;
+}
+
+Classroom::TransportShape Classroom::transport_shape(float width) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float s = fonts_->scale;
+  TransportShape shape;
+  // The controls before the time bar, and the time bar's own words at their longest.
+  shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
+  shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
+  const std::string said = transport_words();
+  const float inside = width - 2.0f * style.WindowPadding.x;
+  const float said_width = said.empty() ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + style.ItemSpacing.x;
+  // The words beside the bar when they fit there, else on lines of their own under it.
+  shape.words_below = shape.controls + shape.bar + said_width > inside;
+  const float words = shape.words_below ? ImGui::CalcTextSize(said.c_str(), nullptr, false, inside).y + style.ItemSpacing.y : 0.0f;
+  shape.height = ImGui::GetFrameHeight() + words + 2.0f * style.WindowPadding.y + 2.0f * s;
+  return shape;
+}
+
+void Classroom::transport_bar(ImVec2 corner, ImVec2 size) {
   const float s = fonts_->scale;
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("###transport", nullptr, flags)) {
+    const TransportShape shape = transport_shape(size.x);
     const float button = 80.0f * s;
-    if (ImGui::Button(playback_->playing() ? "Pause" : "Play", ImVec2(button, 0.0f))) playback_->toggle();
-    remember("play");
+    const auto noted_button = [&](const char* label, const char* name) {
+      const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
+      remember(name);
+      note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      return pressed;
+    };
+    if (noted_button(playback_->playing() ? "Pause" : "Play", "play")) playback_->toggle();
     ImGui::SameLine();
-    if (ImGui::Button("Step", ImVec2(button, 0.0f))) playback_->step_once();
-    remember("step");
+    if (noted_button("Step", "step")) playback_->step_once();
     ImGui::SameLine();
-    if (ImGui::Button("Reset", ImVec2(button, 0.0f))) playback_->reset();
-    remember("reset");
+    if (noted_button("Reset", "reset")) playback_->reset();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f * s);
     float speed = static_cast<float>(playback_->speed());
@@ -248,14 +427,17 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
       window_.speed = playback_->speed();
     }
     remember("speed");
+    {
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
+      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    }
     ImGui::SameLine();
     const Scene& scene = playback_->lesson().scene();
-    // Notices (the run is over, the file reloaded) and what was saved where, on one line.
-    std::string said = playback_->notice();
-    if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
-    if (playback_->behind()) said = "running slower than asked  " + said;
-    const float said_width = said.empty() ? 0.0f : std::min(ImGui::CalcTextSize(said.c_str()).x, 0.35f * size.x) + 8.0f * s;
-    ImGui::SetNextItemWidth(std::max(100.0f * s, ImGui::GetContentRegionAvail().x - said_width));
+    const std::string said = transport_words();
+    const float said_width =
+        said.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - said_width));
     double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();
     const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());
     char format[64];
@@ -275,16 +457,24 @@ void Sandbox::transport_bar(ImVec2 corner, ImVec2 size) {
       scrubbing_to_.reset();
     }
     remember("scrub");
+    {
+      char shown[96];
+      std::snprintf(shown, sizeof shown, format, t);
+      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    }
     if (!said.empty()) {
-      ImGui::SameLine();
+      if (!shape.words_below) ImGui::SameLine();
+      ImGui::PushTextWrapPos(0.0f);
       ImGui::TextDisabled("%s", said.c_str());
+      ImGui::PopTextWrapPos();
+      note_text(said.c_str());
     }
   }
   ImGui::End();
 }
 
-void Sandbox::cheapest_setting_tab() {
-  const bool open = ImGui::BeginTabItem("Cheapest setting");
+void Classroom::cheapest_setting_tab() {
+  const bool open = begin_tab("Cheapest###cheapest setting");
   remember("Cheapest setting tab");
   if (!open) return;
   const std::string& path = playback_->lesson().path();
