@@ -99,14 +99,14 @@ local function spin_at_end()
 end
 -- Box2D turns a body at most a quarter turn a step, which caps its spin at (π/2)/h.
 local function too_fast()
-  if spin_at_end() > 0.8 * (math.pi / 2) / step_length() then return "spins faster than Box2D's quarter turn a step" end
+  if spin_at_end() > 0.8 * (math.pi / 2) / step_length() then return "too fast for Box2D" end
 end
 
 -- Expectations ----------------------------------------------------------------------------
 expect { "traction limit", unit = "N·m",
-  predicted = function() return spin_start() and limit() or "not reached: the motor stays below it" end,
+  predicted = function() return spin_start() and limit() or "not reached" end,
   measured = function()
-    if not spin_start() then return first_slip_torque() and "passed" or "not reached: the motor stays below it" end
+    if not spin_start() then return first_slip_torque() and "passed" or "not reached" end
     return first_slip_torque()
   end,
   -- The torque grows by full·h a step, and the slip shows at the end of the step it began in.
@@ -119,7 +119,7 @@ local function gripping_time()
 end
 -- The contact reads the step just taken, which the torque asked at its start drove.
 local function short_grip()
-  if gripping_time() < 4 * step_length() then return "grips for under eight steps" end
+  if gripping_time() < 4 * step_length() then return "grips too briefly" end
 end
 expect { "friction while gripping, forward", unit = "N",
   predicted = function()

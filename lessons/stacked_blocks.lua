@@ -44,8 +44,8 @@ end
 -- mu_s·N would at once be held back harder, and which block then does what has no closed form.
 local function no_theory()
   local between, floor = pairs_now()
-  if between.mu_k > between.mu_s then return "no closed form: μk above μs between the blocks" end
-  if floor.mu_k > floor.mu_s then return "no closed form: μk above μs on the floor" end
+  if between.mu_k > between.mu_s then return "no closed form (μk > μs)" end
+  if floor.mu_k > floor.mu_s then return "no closed form (μk > μs)" end
 end
 local function stack(push)
   local between, floor = pairs_now()
@@ -88,7 +88,7 @@ end
 local function off_the_floor()
   if no_theory() then return nil end
   if (slip_pull() - start_pull()) / param.pull_rate > together_time_to(floor_room) then
-    return "off the floor's end before the top block slips"
+    return "runs off the floor first"
   end
 end
 
@@ -169,13 +169,13 @@ local function halfway() return (start_pull() + slip_pull()) / (2 * param.pull_r
 expect { "friction on the top block halfway, forward", unit = "N",
   predicted = function()
     if no_theory() then return no_theory() end
-    if not together_phase() then return "no together phase: it slips at once" end
+    if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
     return stack(param.pull_rate * halfway()).top_acceleration * param.top_mass
   end,
   measured = function()
     if no_theory() then return no_theory() end
-    if not together_phase() then return "no together phase: it slips at once" end
+    if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
     return time() >= halfway() and value_at("friction_on_top", halfway()) or nil
   end,
