@@ -196,7 +196,7 @@ void FrictionListener::settle(ContactRecord& r) {
   const int count = std::min(r.point_count, solved_manifold->pointCount);
   for (int i = 0; i < count; ++i) {
     const b2Vec2 p = r.world_points[i];
-    const b2Vec2 end_velocity = point_velocity(r.body_b, p) - point_velocity(r.body_a, p);
+    const b2Vec2 end_velocity = solved_point_velocity(r.body_b, p, step_) - solved_point_velocity(r.body_a, p, step_);
     const b2Vec2 mean_velocity = 0.5f * (r.start_velocity[i] + end_velocity);
     const float jn = solved_manifold->points[i].normalImpulse;
     const float jt = solved_manifold->points[i].tangentImpulse;
@@ -205,8 +205,8 @@ void FrictionListener::settle(ContactRecord& r) {
     work_.friction += jt * b2Dot(mean_velocity, t);
     work_.impacts += jn * b2Dot(mean_velocity, n);
     const b2Vec2 on_b = jn * n + jt * t;
-    if (a_driven) work_.drivers += b2Dot(on_b, point_velocity(r.body_a, p));
-    if (b_driven) work_.drivers -= b2Dot(on_b, point_velocity(r.body_b, p));
+    if (a_driven) work_.drivers += b2Dot(on_b, solved_point_velocity(r.body_a, p, step_));
+    if (b_driven) work_.drivers -= b2Dot(on_b, solved_point_velocity(r.body_b, p, step_));
     r.point_normal_force[i] = jn / step_;
     normal_impulse += jn;
     tangent_impulse += jt;
@@ -258,7 +258,7 @@ bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& 
     for (int i = 0; i < count; ++i) {
       const double jn = manifold->points[i].normalImpulse;
       const b2Vec2 p = member.world_points[i];
-      const float v = b2Dot(point_velocity(r.body_b, p) - point_velocity(r.body_a, p), t);
+      const float v = b2Dot(solved_point_velocity(r.body_b, p, step_) - solved_point_velocity(r.body_a, p, step_), t);
       normal += jn;
       tangent += along * manifold->points[i].tangentImpulse;
       weighted_sliding += jn * v;

@@ -544,6 +544,25 @@ force { "nothing", on = block }
             std::string::npos);
 }
 
+TEST(LessonRuntime, TheBooksOfAWheelSpinningOnARoadClose) {
+  // A 2 kg wheel spun by 12 N·m on a road slips from the first step: friction pushes it along
+  // while it spins at up to 100 rad/s. The normal impulses do no work (nothing moves across
+  // the road), and the books close: before the contact's lever arms were taken from the wheel's
+  // centre at the step's start, a point velocity off by ω·v·h booked 9 J of "impacts" by 1.5 s.
+  ScriptFile script(with_heading(R"(
+pair { "rubber", "asphalt", mu_s = 0.3, mu_k = 0.2 }
+local road = ground { "road", material = "asphalt" }
+local wheel = circle { "wheel", material = "rubber", radius = 0.3, on = road, at = 0, mass = 2 }
+force { "motor", on = wheel, torque = -12 }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 1.5);
+  const EnergyLedger& books = lesson.scene().ledger();
+  EXPECT_GT(books.work_applied, 100.0);
+  EXPECT_LT(std::abs(books.work_impacts), 1e-3 * books.work_applied) << books.work_impacts;
+  EXPECT_LT(std::abs(books.residual()), 1e-3 * books.work_applied) << books.residual();
+}
+
 TEST(LessonRuntime, HistoryAndValueAtReadTheRecord) {
   ScriptFile script(with_heading(R"(
 probe { "twice_t", unit = "s", function() return 2 * time() end }
