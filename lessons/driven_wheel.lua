@@ -138,6 +138,7 @@ expect { "spin-up at the end", unit = "rad/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).angular_acceleration end,
   measured = function()
     if too_fast() then return too_fast() end
+    if time() < 2 - 0.5 * step_length() then return nil end
     local spins = history("spin")
     if #spins < 2 then return nil end
     return (spins[#spins] - spins[#spins - 1]) / step_length()

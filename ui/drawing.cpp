@@ -134,6 +134,37 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size), colour, theme.panel, text.c_str());
 }
 
+TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
+  TorqueArc arc{centre, radius, torque, {}};
+  // Screen y runs down, so a counter-clockwise torque turns the screen angle down.
+  const float sense = torque >= 0.0 ? -1.0f : 1.0f;
+  const float start = -0.25f * b2_pi;
+  constexpr int segments = 24;
+  for (int i = 0; i <= segments; ++i) {
+    const float angle = start + sense * 1.5f * b2_pi * static_cast<float>(i) / segments;
+    arc.points.push_back(ImVec2(centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle)));
+  }
+  return arc;
+}
+
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 LabelPlacer& labels) {
+  draw->AddPolyline(arc.points.data(), static_cast<int>(arc.points.size()), colour, ImDrawFlags_None, thickness);
+  // The head, along the arc's last chord.
+  const ImVec2 tip = arc.points.back();
+  ImVec2 along = sub(tip, arc.points[arc.points.size() - 2]);
+  along = mul(along, 1.0f / std::sqrt(along.x * along.x + along.y * along.y));
+  const ImVec2 across(-along.y, along.x);
+  const float head = 3.0f * thickness;
+  draw->AddTriangleFilled(add(tip, mul(along, head)), add(tip, mul(across, 0.6f * head)), sub(tip, mul(across, 0.6f * head)),
+                          colour);
+  const std::string text = format_quantity(std::abs(arc.torque), "N·m");
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+  const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
+  const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
+  draw_label(draw, font, labels.place(wanted, size), colour, background, text.c_str());
+}
+
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,
                   ImU32 fill, ImU32 outline, float thickness) {
   ImVec2 points[b2_maxPolygonVertices];

@@ -60,6 +60,19 @@ class LabelPlacer {
   std::vector<ImVec4> marks_;
 };
 
+// A torque drawn as a curved arrow three quarters of the way round `centre` in its sense
+// (counter-clockwise positive, as in the world), with its size in N·m by the arrow's tail.
+// Made apart from drawing, so its chords can be given to the label placer before any label.
+struct TorqueArc {
+  ImVec2 centre;
+  float radius = 0.0f;
+  double torque = 0.0;
+  std::vector<ImVec2> points;  // along the arc, tail first
+};
+TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 LabelPlacer& labels);
+
 // A label with a background that keeps it readable over bodies and lines; `centre` is where
 // the middle of the text goes. No background when `background` is 0.
 void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU32 background, const char* text);

@@ -65,7 +65,21 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   b2Vec2 net{0.0f, 0.0f};
   const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
   for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
+  // A motor's torque on the body, round its centre of mass.
+  std::vector<TorqueArc> torques;
+  for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
+    if (scene.applied_forces()[i].body != body || scene.torques_applied()[i] == 0.0) continue;
+    const float half = 0.5f * std::min(extent.x, extent.y) * inset.pixels_per_metre;
+    torques.push_back(torque_arc(inset.to_screen(body->GetWorldCenter()), std::max(1.3f * half, 12.0f * s),
+                                 scene.torques_applied()[i]));
+    for (std::size_t k = 1; k < torques.back().points.size(); ++k) {
+      labels.avoid(DrawnSegment{torques.back().points[k - 1], torques.back().points[k], 6.0f * s});
+    }
+  }
   for (const ScreenArrow& arrow : arrows) draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
+  for (const TorqueArc& arc : torques) {
+    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
+  }
   for (const ForceOnBody& force : forces) net += force.force;
   draw->PopClipRect();
   // Before the first step the solver has not yet said what the contacts push with.

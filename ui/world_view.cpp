@@ -243,9 +243,24 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
       arrows.push_back(arrow);
     }
   }
+  std::vector<TorqueArc> torques;
+  for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
+    const b2Body* body = scene.applied_forces()[i].body;
+    const double torque = scene.torques_applied()[i];
+    if (torque == 0.0 || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
+    const b2AABB box = body_box(body);
+    const float half = 0.5f * std::min(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
+    torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
+                                 std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
+  }
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   const float thickness = 3.5f * fonts.scale;
   for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
+  for (const TorqueArc& arc : torques) {
+    for (std::size_t k = 1; k < arc.points.size(); ++k) {
+      labels.avoid(DrawnSegment{arc.points[k - 1], arc.points[k], 2.0f * thickness});
+    }
+  }
   const float mark_radius = 6.0f * fonts.scale;
   for (const ContactMark& mark : marks) {
     const ImVec2 at = camera.to_screen(mark.point);
@@ -259,6 +274,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     const bool first = std::find(said.begin(), said.end(), key) == said.end();
     if (first) said.push_back(key);
     draw_contact_mark(draw, mark, camera, theme, fonts, labels, first);
+  }
+  for (const TorqueArc& arc : torques) {
+    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.body, theme.panel, thickness, labels);
   }
   // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
   // longest (each foot's own value is a probe away). One label per foot crowds the picture.
