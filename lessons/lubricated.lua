@@ -50,11 +50,15 @@ local lubricated_from = parameter { "lubricated_from", 1, min = 0, max = 10, uni
 local lubricated_until = parameter { "lubricated_until", 2, min = 0, max = 10, unit = "s",
                                      text = "the oil is gone at (no oil if not after the start)" }
 
--- The pair's coefficients as functions of time: the oiled values while oiled(t). No sliders of
--- its own (the four above set it), and no drag, which the closed form leaves out.
+-- The pair's coefficients as functions of time: the oiled values while oiled. No sliders of
+-- its own (the parameters above set it), and no drag, which the closed form leaves out. They
+-- are asked every step, so they read the parameters' values as the script was built with
+-- them (a change restarts the lesson) rather than look each one up again.
+local oil_gone = math.max(lubricated_from, lubricated_until)
+local function oiled_now(t) return t >= lubricated_from and t < oil_gone end
 pair { "wood", "wood", sliders = false,
-  mu_s = function(t) if oiled(t) then return lubricated_mu end return mu_s end,
-  mu_k = function(t) if oiled(t) then return lubricated_mu end return mu_k end }
+  mu_s = function(t) if oiled_now(t) then return lubricated_mu end return mu_s end,
+  mu_k = function(t) if oiled_now(t) then return lubricated_mu end return mu_k end }
 
 -- World -----------------------------------------------------------------------------------
 local table_top = ground { "table", material = "wood" }

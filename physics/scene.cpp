@@ -267,6 +267,16 @@ bool same(const b2Transform& a, const b2Transform& b) {
 }  // namespace
 
 bool Scene::touching_now(b2Contact* contact) const {
+  // A contact the solver pressed in the step just taken still touches at its end: a positive
+  // normal impulse means the solver held the two bodies with no normal relative speed, so the
+  // step left them where they touched, up to the position correction's slop, well inside the
+  // margin within which Box2D's collision keeps points. Only an unloaded contact may have come
+  // apart, and only that one is collided again. (Touching at the step's start, the contact was
+  // solved in it, so its record's normal force is this step's.)
+  if (contact->IsTouching()) {
+    const ContactRecord* record = listener_.record(contact);
+    if (record != nullptr && record->normal_force > 0.0) return true;
+  }
   if (touching_checked_at_ != world_steps_) {
     touching_before_.swap(touching_);
     touching_.clear();
