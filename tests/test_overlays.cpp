@@ -213,5 +213,26 @@ TEST(Overlays, QuantitiesAreWrittenAsAClassroomWritesThem) {
   EXPECT_EQ(format_quantity(4.2e-8, "J"), "4.2\u00d710\u207b\u2078 J");
 }
 
+// The slipping word says which way the upper body slides over the lower one, whichever of the
+// two Box2D made body A: on stacked_blocks once the top block slips, the top block goes back
+// over the bottom one while the pair goes forward over the floor.
+TEST(Overlays, TheSlippingWordGivesTheUpperBodysWayOverTheLowerOne) {
+  lessons::Lesson lesson(lessons::resolve_lesson("stacked_blocks"));
+  lesson.step_to(4.2);
+  const b2Body* top = lesson.scene().body("top");
+  const b2Body* floor = lesson.scene().body("floor");
+  int checked = 0;
+  for (const ContactMark& mark : contact_marks(lesson.scene())) {
+    if (mark.body_a == top || mark.body_b == top) {
+      EXPECT_EQ(contact_word(mark), "\u2190 slipping");
+      ++checked;
+    } else if (mark.body_a == floor || mark.body_b == floor) {
+      EXPECT_EQ(contact_word(mark), "slipping \u2192");
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -43,6 +43,9 @@ const b2Body* main_body(const Scene& scene);
 std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body);
 // Every touching contact with a dynamic body in it, in the world's contact order.
 std::vector<ContactMark> contact_marks(const Scene& scene);
+// What a contact's mark says: "sticking", or "slipping" with the way the upper body slides over
+// the lower one ("slipping →", "← slipping").
+std::string contact_word(const ContactMark& mark);
 
 // Newtons to pixels, the same for every frame of a lesson: the heaviest weight gets
 // `reference_pixels`.

@@ -183,16 +183,13 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   draw->AddCircleFilled(at, r, colour, 20);
   draw->AddCircle(at, r, theme.background, 20, 1.5f);
   if (!with_label) return;
-  // A slipping contact's label says which way the upper body slides.
-  std::string text = slipping ? "slipping" : "sticking";
-  if (slipping) {
-    const b2Vec2 way = static_cast<float>(mark.sliding_velocity >= 0.0 ? 1.0 : -1.0) * mark.tangent;
-    text = way.x >= 0.0f ? "slipping \u2192" : "\u2190 slipping";
-  }
+  const std::string text = contact_word(mark);
+  const b2Vec2 normal = b2Cross(1.0f, mark.tangent);
+  const float upper_is_b = normal.y >= 0.0f ? 1.0f : -1.0f;
   const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
-  // Into the surface, where nothing else is drawn, and to the side the friction arrow does not
-  // point to.
-  const b2Vec2 into = -b2Cross(1.0f, mark.tangent);  // the tangent turned toward A, the surface
+  // Into the lower body, the surface, where nothing else is drawn, and to the side the friction
+  // arrow does not point to.
+  const b2Vec2 into = -upper_is_b * normal;
   const float side = mark.friction_force > 0.0 ? -1.0f : 1.0f;
   const b2Vec2 along = side * mark.tangent;
   const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
