@@ -45,6 +45,10 @@ class Sandbox {
   // are left on the stack.
   void call(int arguments, int results);
 
+  // Charges work done inside one C function (a sort) to the running call's instruction budget,
+  // and raises the budget's error at once when that spends it.
+  void spend(lua_State* state, long instructions);
+
   std::size_t memory_in_use() const { return memory_.used; }
   // How many calls into the script are running: 1 in the build's own chunk, more inside a
   // function it gave (a hand asked for while spring{} runs).
@@ -66,6 +70,7 @@ class Sandbox {
   static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
   static void count_instructions(lua_State* state, lua_Debug* debug);
   static int place_error(lua_State* state);
+  void budget_spent(lua_State* state, int level) const;
 
   SandboxLimits limits_;
   Memory memory_;
