@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
 #include <set>
 
 #include "lesson_scripts.h"
@@ -43,6 +44,20 @@ TEST_P(ListedLesson, HasExpectationsAndMeetsThemAtItsDefaults) {
                             << ", measured " << (row.numeric ? std::to_string(row.measured) : row.measured_text)
                             << ", tolerance " << row.tolerance;
   }
+}
+
+// A script may build at most 100 bodies and 200 shapes (script_world.cpp): the built-in
+// lessons stay within a fifth of that, so a student's lesson as big as ten of them still fits.
+TEST_P(ListedLesson, StaysWellInsideWhatAScriptMayBuild) {
+  Lesson lesson(resolve_lesson(GetParam()));
+  const b2World& world = lesson.scene().world();
+  int shapes = 0;
+  for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext()) {
+    for (const b2Fixture* shape = body->GetFixtureList(); shape != nullptr; shape = shape->GetNext()) ++shapes;
+  }
+  EXPECT_LE(world.GetBodyCount(), 20) << GetParam();
+  EXPECT_LE(shapes, 40) << GetParam();
+  std::cout << GetParam() << ": " << world.GetBodyCount() << " bodies, " << shapes << " shapes\n";
 }
 
 std::vector<std::string> listed() {

@@ -16,6 +16,32 @@ void require_building(lua_State* state, const char* call) {
   require_top_level(state, std::string(call) + " adds to the world");
 }
 
+// What a script may build. Box2D looks at every pair of shapes whose boxes overlap, so a pile
+// of n bodies on one spot costs about n² contacts a step: 2 000 boxes there took minutes for a
+// dozen steps, where no budget of the script's own looks. The built-in lessons use at most a
+// dozen bodies and a few dozen shapes; these limits leave room for ten times that, and keep a
+// step of the worst pile (every body on one spot) to milliseconds.
+constexpr int most_bodies = 100;
+constexpr int most_shapes = 200;
+
+// Called once a body is built (a failed build is thrown away whole, so it need not be undone).
+void require_room(const Scene& scene, const std::string& what) {
+  const b2World& world = scene.world();
+  if (world.GetBodyCount() > most_bodies) {
+    throw InvalidInput(what + ": a lesson builds at most " + std::to_string(most_bodies) +
+                       " bodies (a pile of more would make every step slow); this is one too many");
+  }
+  int shapes = 0;
+  for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext()) {
+    for (const b2Fixture* shape = body->GetFixtureList(); shape != nullptr; shape = shape->GetNext()) ++shapes;
+  }
+  if (shapes > most_shapes) {
+    throw InvalidInput(what + ": a lesson builds at most " + std::to_string(most_shapes) +
+                       " shapes (a box on feet is one shape per foot and one for the box, a ground of strips two per "
+                       "strip); this one would make " + std::to_string(shapes));
+  }
+}
+
 b2BodyType body_kind(Fields& fields, const char* fallback) {
   const std::string kind = fields.text("kind", fallback);
   if (kind == "dynamic") return b2_dynamicBody;
@@ -266,6 +292,7 @@ int ground(lua_State* state) {
       const std::string material = required_material(build, fields);
       body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
     }
+    require_room(*build.scene, fields.what());
     // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
     push_body(state, body, true, {-0.5f * width, top}, {1.0f, 0.0f}, width);
     return 1;
@@ -287,6 +314,7 @@ int box(lua_State* state) {
                                         static_cast<float>(width), static_cast<float>(height), where.angle);
     if (feet.count > 0) build.feet[body] = add_feet(*build.scene, body, material, feet, width, height);
     finish_body(fields, body, width * height + feet.count * feet.width * feet.height);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -312,6 +340,7 @@ int circle(lua_State* state) {
     shape.m_radius = static_cast<float>(radius);
     build.scene->add_fixture(body, shape, material);
     finish_body(fields, body, std::numbers::pi * radius * radius);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -407,6 +436,7 @@ int polygon(lua_State* state) {
     b2MassData unit;
     shape.ComputeMass(&unit, 1.0f);
     finish_body(fields, body, unit.mass);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -436,6 +466,7 @@ int incline(lua_State* state) {
     b2PolygonShape shape;
     shape.Set(corners, 3);
     build.scene->add_fixture(body, shape, material);
+    require_room(*build.scene, fields.what());
     push_body(state, body, true, foot, along, static_cast<float>(length));
     return 1;
   });
