@@ -63,16 +63,7 @@ RunOptions parse_run(const std::vector<std::string>& args) {
 
 // Runs the lesson for `duration` and prints its expectations; returns how many failed.
 int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
-  // Every probe keeps a value a step in memory; refuse a run whose record would not fit.
-  const double steps = duration * lesson.settings().hz;
-  const double values = steps * static_cast<double>(lesson.scene().probes().size() + 1);
-  if (values > 2e8) {
-    std::ostringstream message;
-    message << "a run of " << format_number(duration) << " s at " << format_number(lesson.settings().hz) << " Hz with "
-            << lesson.scene().probes().size() << " probes would record " << format_number(values, 3)
-            << " values (1.6 GB); shorten --duration or lower --hz";
-    throw InvalidInput(message.str());
-  }
+  require_record_fits(duration, lesson.settings().hz, lesson.scene().probes().size(), "shorten --duration or lower --hz");
   if (csv) csv->header(lesson);
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {

@@ -1,6 +1,7 @@
 #include "app/options.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "physics/validation.h"
 
@@ -40,6 +41,15 @@ bool step_option(const std::string& option, const std::string& value, StepSettin
     return false;
   }
   return true;
+}
+
+void require_record_fits(double duration, double hz, std::size_t probes, const std::string& advice) {
+  const double values = duration * hz * static_cast<double>(probes + 1);  // and the time itself
+  if (values <= 2e8) return;
+  char text[256];
+  std::snprintf(text, sizeof text, "a run of %.4g s at %.6g Hz with %zu probes would record %.3g values (more than 1.6 GB); ",
+                duration, hz, probes, values);
+  throw InvalidInput(text + advice);
 }
 
 }  // namespace frictionlab

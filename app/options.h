@@ -2,6 +2,7 @@
 // step settings.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -17,5 +18,9 @@ double option_number(const std::string& option, const std::string& text, double 
 void add_override(const std::string& text, std::map<std::string, std::string>& overrides);
 // --hz, --substeps or --friction into `settings`; false if `option` is none of them.
 bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
+
+// Every probe keeps a value a step in memory: refuses, before any step, a run of `duration`
+// seconds at `hz` whose record would pass 1.6 GB. `advice` says which options make it smaller.
+void require_record_fits(double duration, double hz, std::size_t probes, const std::string& advice);
 
 }  // namespace frictionlab

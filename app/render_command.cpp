@@ -185,6 +185,9 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
+  // The record grows with every step up to the last time drawn, as in frictionlab run.
+  require_record_fits(options.times.back(), lesson.settings().hz, lesson.scene().probes().size(),
+                      "draw an earlier --at or lower --hz");
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
   const ui::WorldFraming framing = ui::WorldFraming::of(lesson);
 
