@@ -94,9 +94,13 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     if (reached >= breakaway_coefficient(pair) * (1.0 - breakaway_tolerance)) {
       r.state = ContactState::slipping;
       if (r.siblings == 0) {
-        // Friction on B opposes B's sliding, so an unmoved contact slides against it.
-        r.slip_direction = solved.sliding_end != 0.0f ? sign(solved.sliding_end)
-                                                      : -sign(static_cast<float>(solved.tangent_impulse));
+        // B goes the way it would have gone without the friction: m·v - T (friction on B
+        // opposes B's sliding). The sliding velocity alone will not do: the limit is declared
+        // within breakaway_tolerance, so at fine steps the contact often breaks away in a step
+        // whose friction still held, with round-off of either sign for a velocity; slipping
+        // the wrong way, the next step saw a reversal and stuck again at once.
+        const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
+        r.slip_direction = sign(static_cast<float>(mass * solved.sliding_end - solved.tangent_impulse));
         r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, solved);
       } else {
         // A held group ends the step with round-off for a velocity, of either sign. B goes the
