@@ -147,7 +147,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // No cycle for the closed form: every row says so in words.
                       Case{"spring_pull", {{"mu_s", "0"}}, "no cycle: μk ≥ μs"},
                       Case{"spring_pull", {{"mu_s", "0.2"}, {"mu_k", "0.5"}}, "no cycle: μk ≥ μs"},
-                      Case{"spring_pull", {{"mu_k", "0"}}, "no cycle: μk = 0"},
+                      Case{"spring_pull", {{"mu_k", "0"}}, "μk = 0: stops at the static limit"},
+                      // Kinetic friction a tenth of static or less: the spring pushing back
+                      // stops the block close to the static limit, and it holds there (it
+                      // used to break away backwards at once, at any step).
+                      Case{"spring_pull", {{"mu_s", "0.1"}, {"mu_k", "0.01"}}, ""},
+                      Case{"spring_pull", {{"mu_k", "0.001"}}, ""},
+                      Case{"spring_pull", {{"mu_s", "1.5"}, {"mu_k", "0.1"}}, ""},
                       // Across the step rates --hz accepts (from 10 000 Hz it used to stick
                       // again for a step right after each breakaway).
                       Case{"spring_pull", {}, "", 10000}, Case{"spring_pull", {}, "", 100000},

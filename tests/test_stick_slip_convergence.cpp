@@ -80,3 +80,24 @@ TEST(StickSlipConvergence, StaysRightAcrossTheAcceptedStepRates) {
     }
   }
 }
+
+// Kinetic friction a tenth of static: after each slip the spring, pushing back, stops the block
+// at (2·mu_k - mu_s)·m·g, within the static limit, and it holds. The solver leaves kinetic
+// friction on to the end of the step in which the block stops, and the block moving back;
+// undoing that in the next step asked friction for more than mu_s·N, whatever the step, and
+// the block broke away backwards at once (re-stick -0.27 N for -0.78 N, period 0.54 s for
+// 0.99 s at 240 Hz, as wrong at any step). The stop is now finished as Coulomb's law says. (The
+// rates are fine enough for the breakaway to be within 1 % without the lesson's step term.)
+TEST(StickSlipConvergence, HoldsWhereTheSpringStopsItWithLittleKineticFriction) {
+  SpringPull setup;
+  setup.block.pair.mu_s = 0.1;
+  setup.block.pair.mu_k = 0.01;
+  for (double hz : {960.0, 3840.0}) {
+    StepSettings settings;
+    settings.hz = hz;
+    for (const Measurement& row : spring_pull_measurements(setup, settings, duration)) {
+      EXPECT_LE(std::abs(row.measured - row.predicted), row.tolerance)
+          << row.name << " at " << hz << " Hz: predicted " << row.predicted << ", measured " << row.measured;
+    }
+  }
+}
