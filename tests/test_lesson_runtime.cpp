@@ -47,6 +47,21 @@ plot { "phase", x = "x", y = "vx" }
 // their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
 // the drag lane less far), the model card still sees every term, and moving the shared slider
 // rebuilds both lanes with the new value.
+// The guide gives 0.02 m as the least width and height of a box: exactly that is a box. It was
+// refused, with a range that included it, once 0.02 had been rounded down to single precision.
+TEST(LessonRuntime, ABoxAtTheLeastSizeIsABox) {
+  ScriptFile script(with_heading(R"(local floor = ground { material = "wood" }
+box { "chip", material = "wood", width = 0.02, height = 0.02, on = floor, at = 0 }
+)"));
+  EXPECT_NO_THROW(Lesson{script.path()});
+  ScriptFile thinner(with_heading(R"(local floor = ground { material = "wood" }
+box { "chip", material = "wood", width = 0.0199, height = 0.02, on = floor, at = 0 }
+)"));
+  const std::string message = error_of([&] { Lesson{thinner.path()}; });
+  EXPECT_NE(message.find(":3: box 'chip': width = 0.0199 m is outside the allowed range [0.02, 1000]"), std::string::npos)
+      << message;
+}
+
 TEST(LessonRuntime, APairsSlidersListMakesOnlyThoseAndTheOthersKeepTheScriptsValues) {
   ScriptFile script(with_heading(R"(
 pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, sliders = { "mu_s", "mu_k" } }

@@ -66,6 +66,12 @@ int lesson(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "lesson");
     LessonBuild& build = build_of(state);
+    // A second lesson{} would replace the first one's title but keep its duration: one only.
+    if (!build.lesson_declared_at.empty()) {
+      throw InvalidInput("lesson{} is given twice (first at " + build.lesson_declared_at +
+                         "); a script is one lesson, so give its title, question and the rest once");
+    }
+    build.lesson_declared_at = caller(state);
     Fields fields(state, 1, "lesson", {"title", "question", "duration", "order", "moments"});
     build.title = fields.text("title", "");
     build.question = fields.text("question", "");
@@ -164,6 +170,19 @@ int refuse_parameter_write(lua_State* state) {
   return guarded(state, [&]() -> int {
     throw InvalidInput("param is read-only: parameters change from the sliders or with --set NAME=VALUE");
   });
+}
+
+// rawset(param, ...) would write past __newindex: a field that shadows the parameter for the
+// script while the scene keeps the real value. rawset refuses param and does the rest.
+int raw_set(lua_State* state) {
+  if (lua_rawequal(state, 1, lua_upvalueindex(2))) {
+    return luaL_error(state, "param is read-only, rawset included: parameters change from the sliders or with --set "
+                      "NAME=VALUE");
+  }
+  lua_pushvalue(state, lua_upvalueindex(1));
+  lua_insert(state, 1);
+  lua_call(state, lua_gettop(state) - 1, 1);
+  return 1;
 }
 
 int material(lua_State* state) {
@@ -731,6 +750,10 @@ void register_lesson_api(lua_State* state) {
   lua_pushcfunction(state, refuse_parameter_write);
   lua_setfield(state, -2, "__newindex");
   lua_setmetatable(state, -2);
+  lua_getglobal(state, "rawset");
+  lua_pushvalue(state, -2);
+  lua_pushcclosure(state, raw_set, 2);
+  lua_setglobal(state, "rawset");
   lua_setglobal(state, "param");
   luaL_newmetatable(state, "frictionlab.history");
   const luaL_Reg history_methods[] = {{"__index", history_index}, {"__len", history_length}, {nullptr, nullptr}};

@@ -94,10 +94,14 @@ TopFace top_face(lua_State* state, Fields& fields, const b2Body* below) {
 // surface is a ground{} or an incline{}, or the level top face of any other body, `at` then
 // measured from the face's middle.
 Placement place(lua_State* state, Fields& fields, float lift) {
-  float angle = static_cast<float>(fields.number("angle", "°", 0.0) * degrees);
+  // Checked here, in the script's own units and before single precision: the scene's own check
+  // would report an angle in radians, and 1e39 m as "inf m".
+  float angle = static_cast<float>(fields.number_in("angle", "°", 0.0, -360000.0, 360000.0) * degrees);
   if (!fields.has("on")) {
     if (fields.has("at")) throw InvalidInput(fields.what() + ": at needs on, as in on = slope, at = 1.5");
-    return {{static_cast<float>(fields.number("x", "m", 0.0)), static_cast<float>(fields.number("y", "m", 0.0))}, angle};
+    return {{static_cast<float>(fields.number_in("x", "m", 0.0, -1e5, 1e5)),
+             static_cast<float>(fields.number_in("y", "m", 0.0, -1e5, 1e5))},
+            angle};
   }
   if (fields.has("x") || fields.has("y")) throw InvalidInput(fields.what() + ": give either on = ... or x and y, not both");
   fields.push("on");
@@ -307,7 +311,8 @@ int box(lua_State* state) {
                                     "velocity", "spin", "fixed_rotation", "feet", "foot_width", "foot_height"});
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
-    const double width = fields.number("width", "m"), height = fields.number("height", "m");
+    // In double, before single precision turns the documented 0.02 m into 0.0199999996.
+    const double width = fields.number_in("width", "m", 0.02, 1000.0), height = fields.number_in("height", "m", 0.02, 1000.0);
     const Feet feet = read_feet(fields, width, height);
     const Placement where = place(state, fields, static_cast<float>(0.5 * height + feet.height) + resting_gap);
     b2Body* body = build.scene->add_box(name, body_kind(fields, "dynamic"), material, where.position,
@@ -531,6 +536,11 @@ int spring(lua_State* state) {
     } else {
       made.other = body_handle(state, -1, fields.what() + ": to")->body;
       lua_pop(state, 1);
+      // Its forces on the one body would cancel out, less the turn they make: nothing a spring is.
+      if (made.other == made.body) {
+        throw InvalidInput(fields.what() + ": from and to are the same body; a spring joins two bodies, or a body and a "
+                           "hand (to = function(t) ... end)");
+      }
       made.other_local_point = fields.point("to_at", origin_point);
     }
     made.stiffness = fields.number("k", "N/m");
