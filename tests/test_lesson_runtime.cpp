@@ -803,10 +803,35 @@ while true do for _ in pairs(t) do break end end
       << message;
 }
 
-TEST(LessonSandbox, BinaryChunksAreRefused) {
+TEST(LessonSandbox, BinaryChunksAreRefusedWithTheFilesName) {
   ScriptFile script(std::string("\x1bLua\x54\x00", 6) + "rest");
   const std::string message = error_of([&] { Lesson{script.path()}; });
-  EXPECT_NE(message.find("binary chunk"), std::string::npos) << message;
+  EXPECT_EQ(message.rfind(script.path() + ": the file is a precompiled (binary) Lua chunk; a lesson is given as its Lua "
+                          "source text", 0), 0u) << message;
+}
+
+// Lua reads these without saying where: the file's name, at least, and what it means.
+TEST(LessonSandbox, LoadErrorsWithoutALineNameTheFile) {
+  ScriptFile deep(with_heading("local x = " + std::string(1000, '(') + "1" + std::string(1000, ')') + "\n"));
+  const std::string nesting = error_of([&] { Lesson{deep.path()}; });
+  EXPECT_EQ(nesting.rfind(deep.path() + ": the script nests brackets, tables or blocks too deeply for Lua to read", 0), 0u)
+      << nesting;
+  // A string literal larger than the script's memory: 80 MB written out in the file.
+  ScriptFile huge(with_heading("local x = \"" + std::string(80u << 20, 'x') + "\"\n"));
+  const std::string literal = error_of([&] { Lesson{huge.path()}; });
+  EXPECT_EQ(literal.rfind(huge.path() + ": the script is too large to read within 64 MB of memory", 0), 0u)
+      << literal.substr(0, 300);
+}
+
+// Lua's own loadfile skips a UTF-8 byte-order mark and a first line starting with #, as
+// editors and `#!/usr/bin/env lua` write them; so does the lesson loader, every line keeping its
+// number.
+TEST(LessonSandbox, AByteOrderMarkAndAHashLineAreSkipped) {
+  ScriptFile script("\xEF\xBB\xBF#!/usr/bin/env lua\n" + with_heading("local x = nil + 1\n"));
+  const std::string message = error_of([&] { Lesson{script.path()}; });
+  EXPECT_EQ(message.rfind(script.path() + ":3: attempt to perform arithmetic on a nil value", 0), 0u) << message;
+  ScriptFile clean("#!/usr/bin/env lua\n" + with_heading(""));
+  EXPECT_NO_THROW(Lesson{clean.path()});
 }
 
 TEST(LessonSandbox, AnEndlessLoopAndARunawayTableEndWithAnError) {

@@ -303,12 +303,34 @@ int Sandbox::place_error(lua_State* state) {
 
 void Sandbox::load(std::string_view source, const std::string& chunk_name) {
   chunk_name_ = chunk_name;
-  const std::string named = "@" + chunk_name;
-  if (luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t") != LUA_OK) {
-    std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
-    lua_pop(state_, 1);
-    throw ScriptError(full_path(message));
+  // What Lua's own loadfile skips, and editors write: a UTF-8 byte-order mark, and a first line
+  // starting with # (#!/usr/bin/env lua). The # line is emptied, not removed, so that every
+  // line keeps its number.
+  std::string text;
+  if (source.substr(0, 3) == "\xEF\xBB\xBF") source.remove_prefix(3);
+  if (!source.empty() && source.front() == '#') {
+    const std::size_t end = source.find('\n');
+    text = end == std::string_view::npos ? std::string() : std::string(source.substr(end));
+    source = text;
   }
+  const std::string named = "@" + chunk_name;
+  const int status = luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t");
+  if (status == LUA_OK) return;
+  std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
+  lua_pop(state_, 1);
+  message = full_path(message);
+  if (message.rfind(chunk_name + ":", 0) == 0) throw ScriptError(message);
+  // The few load errors Lua gives without a place get the file's name, and what they mean.
+  if (status == LUA_ERRMEM) {
+    message = "the script is too large to read within " + std::to_string(limits_.memory_bytes >> 20) +
+              " MB of memory (a huge string or table written out in the file?)";
+  } else if (message.find("C stack overflow") != std::string::npos) {
+    message = "the script nests brackets, tables or blocks too deeply for Lua to read (about 200 levels; C stack "
+              "overflow)";
+  } else if (message.find("binary chunk") != std::string::npos) {
+    message = "the file is a precompiled (binary) Lua chunk; a lesson is given as its Lua source text";
+  }
+  throw ScriptError(chunk_name + ": " + message);
 }
 
 // Lua shortens a long file name in its messages to "..." and the last 56 characters; a
