@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "physics/scene.h"
 
@@ -16,6 +17,9 @@ double option_number(const std::string& option, const std::string& text, double 
                      const char* unit);
 // --set NAME=VALUE into `overrides`.
 void add_override(const std::string& text, std::map<std::string, std::string>& overrides);
+// Refuses an option given a second time (all but --set, which is repeatable), for every command
+// alike; `seen` collects the options given so far.
+void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen);
 // --hz, --substeps or --friction into `settings`; false if `option` is none of them.
 bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
 

@@ -17,15 +17,6 @@ void require_building(lua_State* state, const char* call) {
   require_top_level(state, std::string(call) + " declares part of the lesson");
 }
 
-// Whole-text number, so "0.5x" is refused rather than read as 0.5.
-std::optional<double> parse_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 // Applies a --set value to a freshly declared parameter. A bad value keeps the default and is
 // reported once the build is over, as a command-line mistake rather than a script one.
 void apply_override(LessonBuild& build, Parameter& parameter) {
@@ -719,8 +710,11 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
     for (const std::string& choice : parameter.choices) list += (list.empty() ? "" : ", ") + choice;
     throw InvalidInput(parameter.name + "=" + text + ": not one of the choices " + list);
   }
-  const std::optional<double> value = parse_number(text);
+  // Read as the command line's numbers are (--hz, --duration): decimal only.
+  std::string why;
+  const std::optional<double> value = validation::parse_decimal(text, why);
   if (!value) {
+    if (!why.empty()) throw InvalidInput(parameter.name + "=" + text + ": " + why);
     // A decimal comma is what many classrooms write: say what is wanted instead.
     const bool comma = text.find(',') != std::string::npos;
     throw InvalidInput(parameter.name + "=" + text + ": not a number" + (comma ? "; write decimals with a point, as in 0.5" : ""));
