@@ -20,11 +20,18 @@ struct ScriptError : InvalidInput {
 };
 
 struct SandboxLimits {
+#ifdef FRICTIONLAB_FUZZING
+  // A fuzzer runs thousands of scripts a second: a runaway one must end in milliseconds.
+  std::size_t memory_bytes = 16u << 20;
+  long instructions_per_call = 1'000'000;
+  double seconds_per_call = 0.5;
+#else
   std::size_t memory_bytes = 64u << 20;
   // Per call into the script: the build, one frame's probes and every_step functions, one
   // function of time, one expectation. Calls made from inside another share its budget.
   long instructions_per_call = 50'000'000;
   double seconds_per_call = 5.0;
+#endif
 };
 
 class Sandbox {
