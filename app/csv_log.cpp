@@ -25,9 +25,9 @@ constexpr Column body_columns[] = {{"x", "m"}, {"y", "m"}, {"angle", "rad"}, {"v
 // Only what moves has columns: a fixed body's would repeat its first row for ever.
 bool moves(const b2Body* body) { return body->GetType() != b2_staticBody; }
 
-// A CSV field: quoted when it holds a comma or a quote.
+// A CSV field: quoted when it holds a comma, a quote or a line break.
 std::string field(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) {
     quoted += c;

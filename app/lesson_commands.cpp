@@ -33,6 +33,7 @@ struct RunOptions {
 
 RunOptions parse_run(const std::vector<std::string>& args) {
   RunOptions options;
+  std::vector<std::string> seen;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.rfind("--", 0) != 0) {
@@ -46,12 +47,15 @@ RunOptions parse_run(const std::vector<std::string>& args) {
                          "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE");
     }
     if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
+    refuse_repeat("run", arg, seen);
     const std::string& value = args[++i];
     if (arg == "--duration") {
       options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
     } else if (arg == "--set") {
       add_override(value, options.overrides);
     } else if (arg == "--csv") {
+      // Empty, it would write nothing and say nothing: exit 0 with no file.
+      if (value.empty()) throw InvalidInput("--csv \"\": give a file name, or - for standard output");
       options.csv = value;
     } else {
       step_option(arg, value, options.settings);  // --hz, --substeps or --friction
@@ -63,16 +67,7 @@ RunOptions parse_run(const std::vector<std::string>& args) {
 
 // Runs the lesson for `duration` and prints its expectations; returns how many failed.
 int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
-  // Every probe keeps a value a step in memory; refuse a run whose record would not fit.
-  const double steps = duration * lesson.settings().hz;
-  const double values = steps * static_cast<double>(lesson.scene().probes().size() + 1);
-  if (values > 2e8) {
-    std::ostringstream message;
-    message << "a run of " << format_number(duration) << " s at " << format_number(lesson.settings().hz) << " Hz with "
-            << lesson.scene().probes().size() << " probes would record " << format_number(values, 3)
-            << " values (1.6 GB); shorten --duration or lower --hz";
-    throw InvalidInput(message.str());
-  }
+  require_record_fits(duration, lesson.settings().hz, lesson.scene().probes().size(), "shorten --duration or lower --hz");
   if (csv) csv->header(lesson);
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {
@@ -162,6 +157,7 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
   std::vector<std::string> names;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
+  std::vector<std::string> seen;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.rfind("--", 0) != 0) {
@@ -173,6 +169,7 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
       throw InvalidInput("check: unknown option '" + arg + "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T");
     }
     if (i + 1 >= args.size()) throw InvalidInput("check: " + arg + " needs a value; see frictionlab help");
+    refuse_repeat("check", arg, seen);
     const std::string& value = args[++i];
     if (arg == "--set") {
       add_override(value, overrides);

@@ -1,6 +1,8 @@
 #include "app/options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "physics/validation.h"
 
@@ -8,24 +10,33 @@ namespace frictionlab {
 
 double option_number(const std::string& option, const std::string& text, double low, double high, bool low_open,
                      const char* unit) {
-  std::size_t used = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  // Decimal only: stod would also read "0x10" as 16 and "inf" as infinity.
-  const bool decimal = text.find_first_not_of("0123456789+-.eE") == std::string::npos;
-  if (used != text.size() || text.empty() || !decimal) throw InvalidInput(option + " " + text + ": not a number");
-  validation::require_in_range(option, value, low, high, low_open, unit);
-  return value;
+  // The same reading as --set's (validation::parse_decimal): decimal only, so "0x10" and "inf"
+  // are refused by both.
+  std::string why;
+  const std::optional<double> value = validation::parse_decimal(text, why);
+  if (!value) throw InvalidInput(option + " " + text + ": " + (why.empty() ? "not a number" : why));
+  validation::require_in_range(option, *value, low, high, low_open, unit);
+  return *value;
 }
 
 void add_override(const std::string& text, std::map<std::string, std::string>& overrides) {
   const std::size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0) throw InvalidInput("--set " + text + ": write it as NAME=VALUE, as in --set mu_s=0.5");
-  overrides[text.substr(0, equals)] = text.substr(equals + 1);
+  const std::string name = text.substr(0, equals), value = text.substr(equals + 1);
+  const auto given = overrides.find(name);
+  // As any option given twice: which one was meant is not for the program to guess.
+  if (given != overrides.end() && given->second != value) {
+    throw InvalidInput("--set " + name + " given twice (" + given->second + " and " + value + "); give each parameter once");
+  }
+  overrides[name] = value;
+}
+
+void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen) {
+  if (option == "--set") return;  // repeatable, one parameter each
+  if (std::find(seen.begin(), seen.end(), option) != seen.end()) {
+    throw InvalidInput(command + ": " + option + " given twice; give it once");
+  }
+  seen.push_back(option);
 }
 
 bool step_option(const std::string& option, const std::string& value, StepSettings& settings) {
@@ -40,6 +51,15 @@ bool step_option(const std::string& option, const std::string& value, StepSettin
     return false;
   }
   return true;
+}
+
+void require_record_fits(double duration, double hz, std::size_t probes, const std::string& advice) {
+  const double values = duration * hz * static_cast<double>(probes + 1);  // and the time itself
+  if (values <= 2e8) return;
+  char text[256];
+  std::snprintf(text, sizeof text, "a run of %.4g s at %.6g Hz with %zu probes would record %.3g values (more than 1.6 GB); ",
+                duration, hz, probes, values);
+  throw InvalidInput(text + advice);
 }
 
 }  // namespace frictionlab

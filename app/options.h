@@ -2,8 +2,10 @@
 // step settings.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "physics/scene.h"
 
@@ -15,7 +17,14 @@ double option_number(const std::string& option, const std::string& text, double 
                      const char* unit);
 // --set NAME=VALUE into `overrides`.
 void add_override(const std::string& text, std::map<std::string, std::string>& overrides);
+// Refuses an option given a second time (all but --set, which is repeatable), for every command
+// alike; `seen` collects the options given so far.
+void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen);
 // --hz, --substeps or --friction into `settings`; false if `option` is none of them.
 bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
+
+// Every probe keeps a value a step in memory: refuses, before any step, a run of `duration`
+// seconds at `hz` whose record would pass 1.6 GB. `advice` says which options make it smaller.
+void require_record_fits(double duration, double hz, std::size_t probes, const std::string& advice);
 
 }  // namespace frictionlab

@@ -86,10 +86,10 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
                          "--hz N, --substeps N, --friction T");
     }
     if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
-    if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) {
-      throw InvalidInput("render: " + arg + " given twice; give it once (several times go in one --at, as in --at 1,2)");
+    if (arg == "--at" && std::find(seen.begin(), seen.end(), arg) != seen.end()) {
+      throw InvalidInput("render: --at given twice; give it once (several times go in one --at, as in --at 1,2)");
     }
-    seen.push_back(arg);
+    refuse_repeat("render", arg, seen);  // as run and check do
     const std::string& value = args[++i];
     if (arg == "--at") {
       options.times = parse_times(value);
@@ -185,6 +185,9 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
+  // The record grows with every step up to the last time drawn, as in frictionlab run.
+  require_record_fits(options.times.back(), lesson.settings().hz, lesson.scene().probes().size(),
+                      "draw an earlier --at or lower --hz");
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
   const ui::WorldFraming framing = ui::WorldFraming::of(lesson);
 

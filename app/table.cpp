@@ -7,7 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "ui/output_file.h"
 
 namespace frictionlab {
 
@@ -73,35 +79,52 @@ void prepare_output_folder(const std::string& option, const std::string& folder)
 }
 
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
-  std::vector<std::string> written;
-  auto discard = [&] {
-    for (const std::string& partial : written) std::remove(partial.c_str());
-  };
-  for (const auto& [path, text] : files) {
-    const std::string temporary = path + ".partial";
-    std::ofstream file(temporary, std::ios::binary);
-    if (!file) {
-      const std::string reason = std::strerror(errno);
-      discard();
-      throw InvalidInput("cannot write " + path + ": " + reason);
+  namespace fs = std::filesystem;
+  // Every file is written in full to its own temporary file first; a target that is not a
+  // regular file (a folder, a device, a link) is refused before anything is replaced.
+  std::vector<std::unique_ptr<ui::OutputFile>> written;
+  try {
+    for (const auto& [path, text] : files) {
+      written.push_back(std::make_unique<ui::OutputFile>(path));
+      written.back()->write(text);
     }
-    written.push_back(temporary);
-    file << text;
-    file.close();
-    if (!file) {
-      discard();
-      throw InvalidInput("cannot write " + path + ": the disk refused the data");
-    }
+  } catch (const std::runtime_error& error) {
+    throw InvalidInput(std::string("cannot write ") + error.what());
   }
-  for (size_t i = 0; i < files.size(); ++i) {
-    if (std::rename(written[i].c_str(), files[i].first.c_str()) != 0) {
-      const std::string reason = std::strerror(errno);
-      // None at all: the files already renamed go too, with the partial ones.
-      for (size_t done = 0; done < i; ++done) std::remove(files[done].first.c_str());
-      written.erase(written.begin(), written.begin() + static_cast<std::ptrdiff_t>(i));
-      discard();
-      throw InvalidInput("cannot write " + files[i].first + ": " + reason);
+  // Then each is put in place. An older file there is kept under a hidden second name (a hard
+  // link, no copy) until all are in place, so that a failure part way puts back what was there
+  // before instead of leaving some new files and deleting the old ones they replaced.
+  std::vector<std::string> kept(files.size());
+  std::size_t placed = 0;
+  std::error_code ignored;
+  try {
+    for (; placed < files.size(); ++placed) {
+      const fs::path target(files[placed].first);
+      if (fs::is_regular_file(fs::symlink_status(target, ignored))) {
+        std::string hidden = ".";  // built in steps: GCC 12 warns wrongly about one long sum
+        hidden += target.filename().string();
+        hidden += ".old-";
+        hidden += std::to_string(::getpid());
+        const fs::path old = target.parent_path() / hidden;
+        fs::remove(old, ignored);
+        std::error_code linked;
+        fs::create_hard_link(target, old, linked);
+        if (linked) fs::copy_file(target, old, linked);
+        if (linked) throw std::runtime_error(target.string() + ": cannot keep the older file while replacing it (" +
+                                             linked.message() + ")");
+        kept[placed] = old.string();
+      }
+      written[placed]->commit();
     }
+  } catch (const std::runtime_error& error) {
+    for (std::size_t i = 0; i <= placed && i < files.size(); ++i) {
+      if (i < placed && kept[i].empty()) fs::remove(files[i].first, ignored);  // new: nothing was there
+      if (!kept[i].empty()) fs::rename(kept[i], files[i].first, ignored);     // put the older one back
+    }
+    throw InvalidInput(std::string("cannot write ") + error.what());
+  }
+  for (const std::string& old : kept) {
+    if (!old.empty()) fs::remove(old, ignored);
   }
 }
 

@@ -129,8 +129,10 @@ b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::str
 b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
                        float width, float height, float angle) {
   // Box2D wraps every polygon in a 1 cm skin; a box much thinner than two skins is all skin.
-  validation::require_in_range("box '" + name + "': width", width, 0.02, 1000.0, false, " m");
-  validation::require_in_range("box '" + name + "': height", height, 0.02, 1000.0, false, " m");
+  // The least size as a float, so that 0.02 given in double and rounded down to float passes.
+  constexpr double least = static_cast<double>(0.02f);
+  validation::require_in_range("box '" + name + "': width", width, least, 1000.0, false, " m");
+  validation::require_in_range("box '" + name + "': height", height, least, 1000.0, false, " m");
   // Everything is checked before the body exists, so a refused box leaves nothing behind.
   check_new_name(name);
   check_placement(name, center, angle);

@@ -85,6 +85,42 @@ double group_breakaway_correction(const ContactRecord& r, const FrictionPair& pa
   return handed_back + (breakaway_coefficient(pair) - pair.mu_k) * normal_force * (late + 0.5 * h);
 }
 
+// A slipping contact whose sliding reversed inside the step stopped somewhere in it, and from
+// there on Coulomb's law says: static friction holds it if the other forces along the surface
+// are within mu_s·N, or it slides back with kinetic friction the other way. The solver kept
+// kinetic friction against the old direction to the step's end instead, and left the body
+// moving back too fast. Left as it was, the next step's stuck solve had to undo that motion
+// too: up to (mu_s + mu_k)·N more of friction than holding needs, whatever the step, so a block
+// with mu_k a tenth of mu_s, stopped by a spring pushing back, broke away backwards at once.
+// The other forces come from the step's own velocities: B's sliding at the start (PreSolve,
+// before the forces acted) and at the end, less the friction impulse. The impulse that makes
+// the step end as Coulomb's law would is owed to the body now, and the state follows the law.
+void restick_correction(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
+  const double h = solved.step;
+  const b2Vec2 t = r.tangent();
+  if (r.point_count == 0 || h <= 0.0) return;
+  double start = 0.0;
+  for (int i = 0; i < r.point_count; ++i) start += b2Dot(r.start_velocity[i], t);
+  start /= r.point_count;
+  const double end = solved.sliding_end;
+  const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, t);
+  const double normal_force = solved.normal_impulse / h;
+  const double other = (mass * (end - start) - solved.tangent_impulse) / h;  // N on B along t, but friction
+  const double moving = start - end;
+  const double stopped = moving != 0.0 ? std::clamp(start / moving, 0.0, 1.0) : 0.0;  // share of the step
+  double wanted = 0.0;  // B's sliding at the step's end by Coulomb's law: held
+  // Read from float velocities, `other` is good to a few parts in a million; at the limit
+  // itself (a spring stopping a block with mu_k = 0 pushes back with exactly mu_s·N) it holds,
+  // and were it a hair above, the next step's stuck solve would find that out.
+  if (std::abs(other) > breakaway_coefficient(pair) * normal_force * (1.0 + stop_tolerance)) {
+    const double way = other > 0.0 ? 1.0 : -1.0;
+    wanted = way * std::max(std::abs(other) - pair.mu_k * normal_force, 0.0) * (1.0 - stopped) * h / mass;
+    r.state = ContactState::slipping;
+    r.slip_direction = static_cast<float>(way);
+  }
+  r.breakaway_impulse = mass * (wanted - end);
+}
+
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   // A rigid body sticks or slips as a whole on all its contacts with the other body, so what
   // they reached together decides, once for the group (see FrictionListener::settle). For a
@@ -94,9 +130,13 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     if (reached >= breakaway_coefficient(pair) * (1.0 - breakaway_tolerance)) {
       r.state = ContactState::slipping;
       if (r.siblings == 0) {
-        // Friction on B opposes B's sliding, so an unmoved contact slides against it.
-        r.slip_direction = solved.sliding_end != 0.0f ? sign(solved.sliding_end)
-                                                      : -sign(static_cast<float>(solved.tangent_impulse));
+        // B goes the way it would have gone without the friction: m·v - T (friction on B
+        // opposes B's sliding). The sliding velocity alone will not do: the limit is declared
+        // within breakaway_tolerance, so at fine steps the contact often breaks away in a step
+        // whose friction still held, with round-off of either sign for a velocity; slipping
+        // the wrong way, the next step saw a reversal and stuck again at once.
+        const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
+        r.slip_direction = sign(static_cast<float>(mass * solved.sliding_end - solved.tangent_impulse));
         r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, solved);
       } else {
         // A held group ends the step with round-off for a velocity, of either sign. B goes the
@@ -112,6 +152,7 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     const bool held = reached < pair.mu_k * (1.0 - stop_tolerance);
     const bool reversed = sign(solved.group_sliding_end) == -r.slip_direction;
     if (held || reversed) r.state = ContactState::sticking;
+    if (reversed && r.siblings == 0) restick_correction(r, pair, solved);
   }
 }
 

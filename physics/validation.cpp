@@ -1,6 +1,9 @@
 #include "physics/validation.h"
 
+#include <cerrno>
+#include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace frictionlab::validation {
@@ -31,6 +34,25 @@ void require_in_range(const std::string& name, double value, double low, double 
             << ", " << high << "]";
     throw InvalidInput(message.str());
   }
+}
+
+std::optional<double> parse_decimal(const std::string& text, std::string& why) {
+  why.clear();
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return std::nullopt;
+  if (!std::isfinite(value)) {
+    why = "too large a number for a double (beyond ±1.8e308)";
+    return std::nullopt;
+  }
+  // strtod gives a subnormal or 0 for 1e-320 and says ERANGE: too close to 0 to be held.
+  if (errno == ERANGE && std::abs(value) < DBL_MIN) {
+    why = "too close to 0 for a double to hold (below 2.2e-308); give 0 or a larger number";
+    return std::nullopt;
+  }
+  return value;
 }
 
 }  // namespace frictionlab::validation

@@ -2,6 +2,7 @@
 // message that names where, what and the allowed range, never a NaN further in.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "physics/materials.h"
@@ -20,5 +21,11 @@ inline bool in_range(double value, double low, double high, bool low_open) {
 // name is built only for the message.
 void require_in_range(const std::string& name, double value, double low, double high, bool low_open,
                       const char* unit);
+
+// A number as the command line and --set take it: decimal only ("0.5", "-2", "1e-3"; not
+// "0x10", "inf" or " 1"), the whole text, finite and not so close to 0 that a double cannot
+// hold it. nullopt when it is not; `why` then says what is wrong when more than "not a number"
+// can be said (left empty otherwise).
+std::optional<double> parse_decimal(const std::string& text, std::string& why);
 
 }  // namespace frictionlab::validation

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
+#include <sstream>
 #include <set>
 
 #include "lesson_scripts.h"
@@ -42,6 +44,65 @@ TEST_P(ListedLesson, HasExpectationsAndMeetsThemAtItsDefaults) {
     EXPECT_TRUE(row.passes) << row.name << ": predicted " << (row.numeric ? std::to_string(row.predicted) : row.predicted_text)
                             << ", measured " << (row.numeric ? std::to_string(row.measured) : row.measured_text)
                             << ", tolerance " << row.tolerance;
+  }
+}
+
+// A script may build at most 100 bodies and 200 shapes (script_world.cpp): the built-in
+// lessons stay within a fifth of that, so a student's lesson as big as ten of them still fits.
+TEST_P(ListedLesson, StaysWellInsideWhatAScriptMayBuild) {
+  Lesson lesson(resolve_lesson(GetParam()));
+  const b2World& world = lesson.scene().world();
+  int shapes = 0;
+  for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext()) {
+    for (const b2Fixture* shape = body->GetFixtureList(); shape != nullptr; shape = shape->GetNext()) ++shapes;
+  }
+  EXPECT_LE(world.GetBodyCount(), 20) << GetParam();
+  EXPECT_LE(shapes, 40) << GetParam();
+  std::cout << GetParam() << ": " << world.GetBodyCount() << " bodies, " << shapes << " shapes\n";
+}
+
+// A lesson runs at every value its controls allow: each slider at both ends (the others at
+// their defaults), each choice, and each pair's mu_s and mu_k at opposite ends (mu_k above mu_s,
+// mu_s = 0). Where a closed form has no answer there, the row says so in words; an error from
+// the script (a duration or a prediction that cannot be computed) fails here.
+TEST_P(ListedLesson, RunsAtBothEndsOfEveryControl) {
+  const std::string path = resolve_lesson(GetParam());
+  const Lesson defaults(path);
+  std::vector<std::map<std::string, std::string>> settings;
+  auto text = [](double value) {
+    std::ostringstream out;
+    out.precision(17);
+    out << value;
+    return out.str();
+  };
+  for (const Parameter& parameter : defaults.parameters()) {
+    if (parameter.is_choice()) {
+      for (const std::string& choice : parameter.choices) settings.push_back({{parameter.name, choice}});
+    } else {
+      settings.push_back({{parameter.name, text(parameter.min)}});
+      settings.push_back({{parameter.name, text(parameter.max)}});
+    }
+    if (parameter.coefficient != "mu_s") continue;
+    for (const Parameter& kinetic : defaults.parameters()) {
+      if (kinetic.coefficient != "mu_k" || kinetic.material_a != parameter.material_a ||
+          kinetic.material_b != parameter.material_b) {
+        continue;
+      }
+      settings.push_back({{parameter.name, text(parameter.min)}, {kinetic.name, text(kinetic.max)}});
+      settings.push_back({{parameter.name, text(parameter.max)}, {kinetic.name, text(kinetic.min)}});
+    }
+  }
+  for (const auto& values : settings) {
+    std::string shown;
+    for (const auto& [name, value] : values) shown += " " + name + "=" + value;
+    try {
+      Lesson lesson(path, values);
+      run_for(lesson, lesson.duration());
+      const std::vector<ExpectationResult> rows = lesson.expectations();
+      EXPECT_FALSE(rows.empty()) << GetParam() << shown;
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << GetParam() << shown << ": " << error.what();
+    }
   }
 }
 
@@ -83,6 +144,19 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{"spring_pull", {{"block", "plastic"}}, ""},
                       Case{"spring_pull", {{"k", "200"}, {"pull_speed", "0.2"}, {"mass", "2"}}, ""},
                       Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, ""},
+                      // No cycle for the closed form: every row says so in words.
+                      Case{"spring_pull", {{"mu_s", "0"}}, "no cycle: μk ≥ μs"},
+                      Case{"spring_pull", {{"mu_s", "0.2"}, {"mu_k", "0.5"}}, "no cycle: μk ≥ μs"},
+                      Case{"spring_pull", {{"mu_k", "0"}}, "μk = 0: stops at the static limit"},
+                      // Kinetic friction a tenth of static or less: the spring pushing back
+                      // stops the block close to the static limit, and it holds there (it
+                      // used to break away backwards at once, at any step).
+                      Case{"spring_pull", {{"mu_s", "0.1"}, {"mu_k", "0.01"}}, ""},
+                      Case{"spring_pull", {{"mu_k", "0.001"}}, ""},
+                      Case{"spring_pull", {{"mu_s", "1.5"}, {"mu_k", "0.1"}}, ""},
+                      // Across the step rates --hz accepts (from 10 000 Hz it used to stick
+                      // again for a step right after each breakaway).
+                      Case{"spring_pull", {}, "", 10000}, Case{"spring_pull", {}, "", 100000},
                       Case{"incline", {}, "slides"}, Case{"incline", {{"angle", "29"}}, "sticks"},
                       Case{"incline", {{"angle", "33"}}, "slides"},
                       // mu_k above mu_s: it holds up to atan(mu_k) = 35.0°, breaking away and stopping at once.

@@ -47,6 +47,21 @@ plot { "phase", x = "x", y = "vx" }
 // their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
 // the drag lane less far), the model card still sees every term, and moving the shared slider
 // rebuilds both lanes with the new value.
+// The guide gives 0.02 m as the least width and height of a box: exactly that is a box. It was
+// refused, with a range that included it, once 0.02 had been rounded down to single precision.
+TEST(LessonRuntime, ABoxAtTheLeastSizeIsABox) {
+  ScriptFile script(with_heading(R"(local floor = ground { material = "wood" }
+box { "chip", material = "wood", width = 0.02, height = 0.02, on = floor, at = 0 }
+)"));
+  EXPECT_NO_THROW(Lesson{script.path()});
+  ScriptFile thinner(with_heading(R"(local floor = ground { material = "wood" }
+box { "chip", material = "wood", width = 0.0199, height = 0.02, on = floor, at = 0 }
+)"));
+  const std::string message = error_of([&] { Lesson{thinner.path()}; });
+  EXPECT_NE(message.find(":3: box 'chip': width = 0.0199 m is outside the allowed range [0.02, 1000]"), std::string::npos)
+      << message;
+}
+
 TEST(LessonRuntime, APairsSlidersListMakesOnlyThoseAndTheOthersKeepTheScriptsValues) {
   ScriptFile script(with_heading(R"(
 pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, sliders = { "mu_s", "mu_k" } }
@@ -929,10 +944,63 @@ expect { "order", predicted = "1 2.5 3 alpha beta mid zeta", measured = table.co
   EXPECT_TRUE(lesson.expectations()[0].passes) << lesson.expectations()[0].measured_text;
 }
 
-TEST(LessonSandbox, BinaryChunksAreRefused) {
+TEST(LessonSandbox, PairsOverAHugeTableSortsInTimeAndCountsAgainstTheBudget) {
+  // 80 000 keys: an insertion sort inside one C call took minutes, out of reach of the budget
+  // and the clock; the sort now finishes at once, in the same order as before.
+  ScriptFile once(with_heading(R"(
+local t = {}
+for i = 1, 80000 do t["k" .. (80001 - i)] = i; t[i * 0.5] = i end
+local count, sorted, last_number, last_text = 0, true, -math.huge, ""
+for k in pairs(t) do
+  count = count + 1
+  if type(k) == "number" then sorted = sorted and last_text == "" and k > last_number; last_number = k
+  else sorted = sorted and k > last_text; last_text = k end
+end
+expect { "every key in order", predicted = 160000, tolerance = 0, measured = sorted and count or -count }
+)"));
+  Lesson lesson(once.path());
+  EXPECT_TRUE(lesson.expectations()[0].passes) << lesson.expectations()[0].measured_text;
+  // Sorting is work the instruction count does not see: it is charged to the budget, so pairs
+  // over a huge table in an endless loop ends like any other endless loop.
+  ScriptFile again(with_heading(R"(
+local t = {}
+for i = 1, 80000 do t["k" .. i] = i end
+while true do for _ in pairs(t) do break end end
+)"));
+  const std::string message = error_of([&] { Lesson{again.path()}; });
+  EXPECT_NE(message.find(again.path() + ":5: the script ran for more than 50 million instructions"), std::string::npos)
+      << message;
+}
+
+TEST(LessonSandbox, BinaryChunksAreRefusedWithTheFilesName) {
   ScriptFile script(std::string("\x1bLua\x54\x00", 6) + "rest");
   const std::string message = error_of([&] { Lesson{script.path()}; });
-  EXPECT_NE(message.find("binary chunk"), std::string::npos) << message;
+  EXPECT_EQ(message.rfind(script.path() + ": the file is a precompiled (binary) Lua chunk; a lesson is given as its Lua "
+                          "source text", 0), 0u) << message;
+}
+
+// Lua reads these without saying where: the file's name, at least, and what it means.
+TEST(LessonSandbox, LoadErrorsWithoutALineNameTheFile) {
+  ScriptFile deep(with_heading("local x = " + std::string(1000, '(') + "1" + std::string(1000, ')') + "\n"));
+  const std::string nesting = error_of([&] { Lesson{deep.path()}; });
+  EXPECT_EQ(nesting.rfind(deep.path() + ": the script nests brackets, tables or blocks too deeply for Lua to read", 0), 0u)
+      << nesting;
+  // A string literal larger than the script's memory: 80 MB written out in the file.
+  ScriptFile huge(with_heading("local x = \"" + std::string(80u << 20, 'x') + "\"\n"));
+  const std::string literal = error_of([&] { Lesson{huge.path()}; });
+  EXPECT_EQ(literal.rfind(huge.path() + ": the script is too large to read within 64 MB of memory", 0), 0u)
+      << literal.substr(0, 300);
+}
+
+// Lua's own loadfile skips a UTF-8 byte-order mark and a first line starting with #, as
+// editors and `#!/usr/bin/env lua` write them; so does the lesson loader, every line keeping its
+// number.
+TEST(LessonSandbox, AByteOrderMarkAndAHashLineAreSkipped) {
+  ScriptFile script("\xEF\xBB\xBF#!/usr/bin/env lua\n" + with_heading("local x = nil + 1\n"));
+  const std::string message = error_of([&] { Lesson{script.path()}; });
+  EXPECT_EQ(message.rfind(script.path() + ":3: attempt to perform arithmetic on a nil value", 0), 0u) << message;
+  ScriptFile clean("#!/usr/bin/env lua\n" + with_heading(""));
+  EXPECT_NO_THROW(Lesson{clean.path()});
 }
 
 TEST(LessonSandbox, AnEndlessLoopAndARunawayTableEndWithAnError) {

@@ -78,6 +78,7 @@ struct LessonBuild {
   std::map<const b2Body*, std::vector<const b2Fixture*>> feet;
 
   std::string title, question;
+  std::string lesson_declared_at;  // "path:line" of lesson{}, once given
   double duration = 10.0;
   int duration_function = LUA_NOREF;
   std::optional<double> order;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <system_error>
 
 #include "physics/materials.h"
 
@@ -56,6 +57,31 @@ const Listing& listing() {
   return found->second;
 }
 
+// Why `path` cannot be read as a script, in words, or "" when it can: a folder, a FIFO (whose
+// reading would wait for a writer for ever), a device or a loop of links is not "no such file".
+std::string why_not_a_script(const std::string& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);  // through links
+  if (error == std::errc::too_many_symbolic_link_levels) {
+    return "a loop of symbolic links (each points on to the next, and back); give the script itself";
+  }
+  if (status.type() == fs::file_type::not_found) {
+    std::error_code ignored;
+    return fs::is_symlink(fs::symlink_status(path, ignored)) ? "a symbolic link to nothing (its target is missing)"
+                                                               : "no such file";
+  }
+  if (error) return "cannot be read: " + error.message();
+  switch (status.type()) {
+    case fs::file_type::regular: return "";
+    case fs::file_type::directory: return "that is a folder, not a script; give the .lua file inside it";
+    case fs::file_type::fifo: return "that is a FIFO (named pipe), not a script file";
+    case fs::file_type::character:
+    case fs::file_type::block: return "that is a device, not a script file";
+    case fs::file_type::socket: return "that is a socket, not a script file";
+    default: return "that is not a regular file";
+  }
+}
+
 }  // namespace
 
 const std::vector<CatalogEntry>& catalog() { return listing().entries; }
@@ -75,8 +101,8 @@ bool is_builtin_lesson(const std::string& name) {
 std::string resolve_lesson(const std::string& name_or_path) {
   if (is_builtin_lesson(name_or_path)) return (fs::path(lessons_directory()) / (name_or_path + ".lua")).string();
   if (fs::path(name_or_path).extension() == ".lua") {
-    std::error_code error;
-    if (!fs::is_regular_file(name_or_path, error)) throw InvalidInput("lesson " + name_or_path + ": no such file");
+    const std::string problem = why_not_a_script(name_or_path);
+    if (!problem.empty()) throw InvalidInput("lesson " + name_or_path + ": " + problem);
     return name_or_path;
   }
   std::string known;

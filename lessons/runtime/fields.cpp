@@ -63,8 +63,14 @@ std::string Fields::name() {
     lua_pop(state_, 1);
     throw InvalidInput(call_ + " needs a name first, as in " + call_ + "{ \"name\", ... }; got " + got);
   }
-  std::string name = lua_tostring(state_, -1);
+  std::size_t length = 0;
+  const char* bytes = lua_tolstring(state_, -1, &length);
+  std::string name(bytes, length);
   lua_pop(state_, 1);
+  // Cut at the NUL by every C string it passes through, the name would no longer be itself.
+  if (name.find('\0') != std::string::npos) {
+    throw InvalidInput(call_ + " '" + name.substr(0, name.find('\0')) + "\\0...': a name cannot hold a NUL byte (\\0)");
+  }
   what_ = call_ + " '" + name + "'";
   return name;
 }
@@ -116,8 +122,13 @@ std::string Fields::text(const char* key, const std::string& fallback) {
     return fallback;
   }
   if (lua_type(state_, -1) != LUA_TSTRING) wrong(key, "text in quotes", -1);
-  std::string value = lua_tostring(state_, -1);
+  std::size_t length = 0;
+  const char* bytes = lua_tolstring(state_, -1, &length);
+  std::string value(bytes, length);
   lua_pop(state_, 1);
+  if (value.find('\0') != std::string::npos) {
+    throw InvalidInput(what_ + ": " + key + " cannot hold a NUL byte (\\0)");
+  }
   return value;
 }
 

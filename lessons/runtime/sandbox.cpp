@@ -1,9 +1,12 @@
 #include "lessons/runtime/sandbox.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 namespace frictionlab::lessons {
 namespace {
@@ -53,55 +56,102 @@ void wrap(lua_State* state, const char* name, lua_CFunction wrapper) {
 // pairs in an order that is the same on every run: Lua seeds its string hashing from the
 // clock, so the order of a table's keys changes from run to run, and a lesson that builds
 // bodies in pairs order would too. Numbers come first in increasing order, then strings in
-// alphabetical order, then the rest.
-int key_rank(lua_State* state, int index) {
-  switch (lua_type(state, index)) {
-    case LUA_TNUMBER: return 0;
-    case LUA_TSTRING: return 1;
-    case LUA_TBOOLEAN: return 2;
-    default: return 3;
-  }
+// byte order (alphabetical for plain words), then the rest in the order Lua gives them.
+struct SortKey {
+  int rank = 3;  // 0 number, 1 string, 2 boolean, 3 anything else
+  bool integer = false;
+  lua_Integer whole = 0;
+  lua_Number real = 0;
+  std::string_view text;  // points into a string the list of keys keeps alive
+  lua_Integer position = 0;  // where the key sits in that list
+};
+
+// Whether integer `whole` comes before float `real`, exactly (converting either to the other
+// could round two different keys together).
+bool integer_before_real(lua_Integer whole, lua_Number real) {
+  if (real >= 0x1p63) return true;
+  if (real < -0x1p63) return false;
+  const lua_Number floor = std::floor(real);
+  const auto floor_whole = static_cast<lua_Integer>(floor);
+  return whole < floor_whole || (whole == floor_whole && floor < real);
+}
+
+bool number_before(const SortKey& a, const SortKey& b) {
+  if (a.integer && b.integer) return a.whole < b.whole;
+  if (!a.integer && !b.integer) return a.real < b.real;
+  if (a.integer) return integer_before_real(a.whole, b.real);
+  return !integer_before_real(b.whole, a.real);  // a float key is never equal to an integer key
+}
+
+bool key_before(const SortKey& a, const SortKey& b) {
+  if (a.rank != b.rank) return a.rank < b.rank;
+  if (a.rank == 0) return number_before(a, b);
+  if (a.rank == 1) return a.text < b.text;
+  return false;  // booleans and the rest keep Lua's order (the sort is stable)
 }
 
 int ordered_next(lua_State* state) {
-  // Upvalue 1: the list of keys in order; upvalue 2: the position reached.
+  // Upvalue 1: the list of keys in order; upvalue 2: the position reached; upvalue 3: the
+  // table walked. Called by hand with anything else, rawget would read a number or a handle
+  // as a table.
+  if (!lua_rawequal(state, 1, lua_upvalueindex(3))) {
+    return luaL_error(state, "the function pairs returns walks the table pairs was given, and is called by for ... in "
+                      "pairs(t); it was given %s", describe(state, 1).c_str());
+  }
   const lua_Integer position = lua_tointeger(state, lua_upvalueindex(2)) + 1;
   lua_pushinteger(state, position);
   lua_replace(state, lua_upvalueindex(2));
   if (lua_rawgeti(state, lua_upvalueindex(1), position) == LUA_TNIL) return 1;
   lua_pushvalue(state, -1);
-  lua_rawget(state, 1);
+  lua_rawget(state, lua_upvalueindex(3));
   return 2;
 }
 
 int ordered_pairs(lua_State* state) {
   luaL_checktype(state, 1, LUA_TTABLE);
   lua_settop(state, 1);
-  lua_newtable(state);  // the keys
-  lua_Integer count = 0;
+  lua_newtable(state);  // the keys, in Lua's order
+  std::vector<SortKey> keys;
   lua_pushnil(state);
   while (lua_next(state, 1) != 0) {
     lua_pop(state, 1);
-    lua_pushvalue(state, -1);
-    lua_rawseti(state, 2, ++count);
-  }
-  // Insertion sort keeps this short; lessons' tables are small.
-  for (lua_Integer i = 2; i <= count; ++i) {
-    for (lua_Integer j = i; j > 1; --j) {
-      lua_rawgeti(state, 2, j - 1);
-      lua_rawgeti(state, 2, j);
-      const int earlier = key_rank(state, -2), later = key_rank(state, -1);
-      const bool swap = later < earlier || (later == earlier && later < 2 && lua_compare(state, -1, -2, LUA_OPLT));
-      if (!swap) {
-        lua_pop(state, 2);
+    SortKey key;
+    key.position = static_cast<lua_Integer>(keys.size()) + 1;
+    switch (lua_type(state, -1)) {
+      case LUA_TNUMBER:
+        key.rank = 0;
+        key.integer = lua_isinteger(state, -1);
+        key.whole = lua_tointeger(state, -1);
+        key.real = lua_tonumber(state, -1);
+        break;
+      case LUA_TSTRING: {
+        key.rank = 1;
+        std::size_t length = 0;
+        const char* text = lua_tolstring(state, -1, &length);
+        key.text = std::string_view(text, length);
         break;
       }
-      lua_rawseti(state, 2, j - 1);
-      lua_rawseti(state, 2, j);
+      case LUA_TBOOLEAN: key.rank = 2; break;
+      default: break;
     }
+    keys.push_back(key);
+    lua_pushvalue(state, -1);
+    lua_rawseti(state, 2, key.position);
+  }
+  // A sort inside one C call is where the instruction budget never looks: charged to it here,
+  // so that pairs over a huge table again and again ends like any other long loop.
+  const auto count = static_cast<long>(keys.size());
+  // Measured: a pairs call costs about as much time as 8·(log2 n + 1) instructions a key.
+  sandbox_of(state).spend(state, 8 * count * static_cast<long>(std::log2(static_cast<double>(count) + 1.0) + 1.0));
+  std::stable_sort(keys.begin(), keys.end(), key_before);
+  lua_createtable(state, static_cast<int>(std::min<std::size_t>(keys.size(), 1u << 24)), 0);  // the keys, in order
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    lua_rawgeti(state, 2, keys[i].position);
+    lua_rawseti(state, 3, static_cast<lua_Integer>(i) + 1);
   }
   lua_pushinteger(state, 0);
-  lua_pushcclosure(state, ordered_next, 2);
+  lua_pushvalue(state, 1);
+  lua_pushcclosure(state, ordered_next, 3);
   lua_pushvalue(state, 1);
   lua_pushnil(state);
   return 3;
@@ -208,14 +258,22 @@ void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
     lua_concat(state, 2);
     lua_error(state);
   }
-  if (sandbox.budget_left_ < 0) {
-    // The budget stays spent: anything still run while the error unwinds stops at once.
-    luaL_where(state, 0);
-    lua_pushfstring(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
-                    static_cast<int>(sandbox.limits_.instructions_per_call / 1'000'000));
-    lua_concat(state, 2);
-    lua_error(state);
-  }
+  // The budget stays spent: anything still run while the error unwinds stops at once.
+  if (sandbox.budget_left_ < 0) sandbox.budget_spent(state, 0);
+}
+
+void Sandbox::budget_spent(lua_State* state, int level) const {
+  luaL_where(state, level);
+  lua_pushfstring(state, "the script ran for more than %d million instructions without finishing (an endless loop?)",
+                  static_cast<int>(limits_.instructions_per_call / 1'000'000));
+  lua_concat(state, 2);
+  lua_error(state);
+}
+
+void Sandbox::spend(lua_State* state, long instructions) {
+  budget_left_ -= instructions;
+  // Level 1: the script line that called the C function doing the work.
+  if (budget_left_ < 0) budget_spent(state, 1);
 }
 
 // The innermost frame of the script's own code: where a message belongs. C frames (library
@@ -245,12 +303,34 @@ int Sandbox::place_error(lua_State* state) {
 
 void Sandbox::load(std::string_view source, const std::string& chunk_name) {
   chunk_name_ = chunk_name;
-  const std::string named = "@" + chunk_name;
-  if (luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t") != LUA_OK) {
-    std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
-    lua_pop(state_, 1);
-    throw ScriptError(full_path(message));
+  // What Lua's own loadfile skips, and editors write: a UTF-8 byte-order mark, and a first line
+  // starting with # (#!/usr/bin/env lua). The # line is emptied, not removed, so that every
+  // line keeps its number.
+  std::string text;
+  if (source.substr(0, 3) == "\xEF\xBB\xBF") source.remove_prefix(3);
+  if (!source.empty() && source.front() == '#') {
+    const std::size_t end = source.find('\n');
+    text = end == std::string_view::npos ? std::string() : std::string(source.substr(end));
+    source = text;
   }
+  const std::string named = "@" + chunk_name;
+  const int status = luaL_loadbufferx(state_, source.data(), source.size(), named.c_str(), "t");
+  if (status == LUA_OK) return;
+  std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
+  lua_pop(state_, 1);
+  message = full_path(message);
+  if (message.rfind(chunk_name + ":", 0) == 0) throw ScriptError(message);
+  // The few load errors Lua gives without a place get the file's name, and what they mean.
+  if (status == LUA_ERRMEM) {
+    message = "the script is too large to read within " + std::to_string(limits_.memory_bytes >> 20) +
+              " MB of memory (a huge string or table written out in the file?)";
+  } else if (message.find("C stack overflow") != std::string::npos) {
+    message = "the script nests brackets, tables or blocks too deeply for Lua to read (about 200 levels; C stack "
+              "overflow)";
+  } else if (message.find("binary chunk") != std::string::npos) {
+    message = "the file is a precompiled (binary) Lua chunk; a lesson is given as its Lua source text";
+  }
+  throw ScriptError(chunk_name + ": " + message);
 }
 
 // Lua shortens a long file name in its messages to "..." and the last 56 characters; a

@@ -20,11 +20,18 @@ struct ScriptError : InvalidInput {
 };
 
 struct SandboxLimits {
+#ifdef FRICTIONLAB_FUZZING
+  // A fuzzer runs thousands of scripts a second: a runaway one must end in milliseconds.
+  std::size_t memory_bytes = 16u << 20;
+  long instructions_per_call = 1'000'000;
+  double seconds_per_call = 0.5;
+#else
   std::size_t memory_bytes = 64u << 20;
   // Per call into the script: the build, one frame's probes and every_step functions, one
   // function of time, one expectation. Calls made from inside another share its budget.
   long instructions_per_call = 50'000'000;
   double seconds_per_call = 5.0;
+#endif
 };
 
 class Sandbox {
@@ -44,6 +51,10 @@ class Sandbox {
   // Throws ScriptError carrying Lua's message (which starts with path:line). `results` values
   // are left on the stack.
   void call(int arguments, int results);
+
+  // Charges work done inside one C function (a sort) to the running call's instruction budget,
+  // and raises the budget's error at once when that spends it.
+  void spend(lua_State* state, long instructions);
 
   std::size_t memory_in_use() const { return memory_.used; }
   // How many calls into the script are running: 1 in the build's own chunk, more inside a
@@ -66,6 +77,7 @@ class Sandbox {
   static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
   static void count_instructions(lua_State* state, lua_Debug* debug);
   static int place_error(lua_State* state);
+  void budget_spent(lua_State* state, int level) const;
 
   SandboxLimits limits_;
   Memory memory_;

@@ -19,15 +19,6 @@ void require_building(lua_State* state, const char* call) {
   require_top_level(state, std::string(call) + " declares part of the lesson");
 }
 
-// Whole-text number, so "0.5x" is refused rather than read as 0.5.
-std::optional<double> parse_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 // Applies a --set value to a freshly declared parameter. A bad value keeps the default and is
 // reported once the build is over, as a command-line mistake rather than a script one.
 void apply_override(LessonBuild& build, Parameter& parameter) {
@@ -68,6 +59,12 @@ int lesson(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "lesson");
     LessonBuild& build = build_of(state);
+    // A second lesson{} would replace the first one's title but keep its duration: one only.
+    if (!build.lesson_declared_at.empty()) {
+      throw InvalidInput("lesson{} is given twice (first at " + build.lesson_declared_at +
+                         "); a script is one lesson, so give its title, question and the rest once");
+    }
+    build.lesson_declared_at = caller(state);
     Fields fields(state, 1, "lesson", {"title", "question", "duration", "order", "moments"});
     build.title = fields.text("title", "");
     build.question = fields.text("question", "");
@@ -166,6 +163,19 @@ int refuse_parameter_write(lua_State* state) {
   return guarded(state, [&]() -> int {
     throw InvalidInput("param is read-only: parameters change from the sliders or with --set NAME=VALUE");
   });
+}
+
+// rawset(param, ...) would write past __newindex: a field that shadows the parameter for the
+// script while the scene keeps the real value. rawset refuses param and does the rest.
+int raw_set(lua_State* state) {
+  if (lua_rawequal(state, 1, lua_upvalueindex(2))) {
+    return luaL_error(state, "param is read-only, rawset included: parameters change from the sliders or with --set "
+                      "NAME=VALUE");
+  }
+  lua_pushvalue(state, lua_upvalueindex(1));
+  lua_insert(state, 1);
+  lua_call(state, lua_gettop(state) - 1, 1);
+  return 1;
 }
 
 int material(lua_State* state) {
@@ -777,8 +787,11 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
     for (const std::string& choice : parameter.choices) list += (list.empty() ? "" : ", ") + choice;
     throw InvalidInput(parameter.name + "=" + text + ": not one of the choices " + list);
   }
-  const std::optional<double> value = parse_number(text);
+  // Read as the command line's numbers are (--hz, --duration): decimal only.
+  std::string why;
+  const std::optional<double> value = validation::parse_decimal(text, why);
   if (!value) {
+    if (!why.empty()) throw InvalidInput(parameter.name + "=" + text + ": " + why);
     // A decimal comma is what many classrooms write: say what is wanted instead.
     const bool comma = text.find(',') != std::string::npos;
     throw InvalidInput(parameter.name + "=" + text + ": not a number" + (comma ? "; write decimals with a point, as in 0.5" : ""));
@@ -808,6 +821,10 @@ void register_lesson_api(lua_State* state) {
   lua_pushcfunction(state, refuse_parameter_write);
   lua_setfield(state, -2, "__newindex");
   lua_setmetatable(state, -2);
+  lua_getglobal(state, "rawset");
+  lua_pushvalue(state, -2);
+  lua_pushcclosure(state, raw_set, 2);
+  lua_setglobal(state, "rawset");
   lua_setglobal(state, "param");
   luaL_newmetatable(state, "frictionlab.history");
   const luaL_Reg history_methods[] = {{"__index", history_index}, {"__len", history_length}, {nullptr, nullptr}};

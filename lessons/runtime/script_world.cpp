@@ -16,6 +16,32 @@ void require_building(lua_State* state, const char* call) {
   require_top_level(state, std::string(call) + " adds to the world");
 }
 
+// What a script may build. Box2D looks at every pair of shapes whose boxes overlap, so a pile
+// of n bodies on one spot costs about n² contacts a step: 2 000 boxes there took minutes for a
+// dozen steps, where no budget of the script's own looks. The built-in lessons use at most a
+// dozen bodies and a few dozen shapes; these limits leave room for ten times that, and keep a
+// step of the worst pile (every body on one spot) to milliseconds.
+constexpr int most_bodies = 100;
+constexpr int most_shapes = 200;
+
+// Called once a body is built (a failed build is thrown away whole, so it need not be undone).
+void require_room(const Scene& scene, const std::string& what) {
+  const b2World& world = scene.world();
+  if (world.GetBodyCount() > most_bodies) {
+    throw InvalidInput(what + ": a lesson builds at most " + std::to_string(most_bodies) +
+                       " bodies (a pile of more would make every step slow); this is one too many");
+  }
+  int shapes = 0;
+  for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext()) {
+    for (const b2Fixture* shape = body->GetFixtureList(); shape != nullptr; shape = shape->GetNext()) ++shapes;
+  }
+  if (shapes > most_shapes) {
+    throw InvalidInput(what + ": a lesson builds at most " + std::to_string(most_shapes) +
+                       " shapes (a box on feet is one shape per foot and one for the box, a ground of strips two per "
+                       "strip); this one would make " + std::to_string(shapes));
+  }
+}
+
 b2BodyType body_kind(Fields& fields, const char* fallback) {
   const std::string kind = fields.text("kind", fallback);
   if (kind == "dynamic") return b2_dynamicBody;
@@ -68,10 +94,14 @@ TopFace top_face(lua_State* state, Fields& fields, const b2Body* below) {
 // surface is a ground{} or an incline{}, or the level top face of any other body, `at` then
 // measured from the face's middle.
 Placement place(lua_State* state, Fields& fields, float lift) {
-  float angle = static_cast<float>(fields.number("angle", "°", 0.0) * degrees);
+  // Checked here, in the script's own units and before single precision: the scene's own check
+  // would report an angle in radians, and 1e39 m as "inf m".
+  float angle = static_cast<float>(fields.number_in("angle", "°", 0.0, -360000.0, 360000.0) * degrees);
   if (!fields.has("on")) {
     if (fields.has("at")) throw InvalidInput(fields.what() + ": at needs on, as in on = slope, at = 1.5");
-    return {{static_cast<float>(fields.number("x", "m", 0.0)), static_cast<float>(fields.number("y", "m", 0.0))}, angle};
+    return {{static_cast<float>(fields.number_in("x", "m", 0.0, -1e5, 1e5)),
+             static_cast<float>(fields.number_in("y", "m", 0.0, -1e5, 1e5))},
+            angle};
   }
   if (fields.has("x") || fields.has("y")) throw InvalidInput(fields.what() + ": give either on = ... or x and y, not both");
   fields.push("on");
@@ -266,6 +296,7 @@ int ground(lua_State* state) {
       const std::string material = required_material(build, fields);
       body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
     }
+    require_room(*build.scene, fields.what());
     // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
     push_body(state, body, true, {-0.5f * width, top}, {1.0f, 0.0f}, width);
     return 1;
@@ -280,13 +311,15 @@ int box(lua_State* state) {
                                     "velocity", "spin", "fixed_rotation", "feet", "foot_width", "foot_height"});
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
-    const double width = fields.number("width", "m"), height = fields.number("height", "m");
+    // In double, before single precision turns the documented 0.02 m into 0.0199999996.
+    const double width = fields.number_in("width", "m", 0.02, 1000.0), height = fields.number_in("height", "m", 0.02, 1000.0);
     const Feet feet = read_feet(fields, width, height);
     const Placement where = place(state, fields, static_cast<float>(0.5 * height + feet.height) + resting_gap);
     b2Body* body = build.scene->add_box(name, body_kind(fields, "dynamic"), material, where.position,
                                         static_cast<float>(width), static_cast<float>(height), where.angle);
     if (feet.count > 0) build.feet[body] = add_feet(*build.scene, body, material, feet, width, height);
     finish_body(fields, body, width * height + feet.count * feet.width * feet.height);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -312,6 +345,7 @@ int circle(lua_State* state) {
     shape.m_radius = static_cast<float>(radius);
     build.scene->add_fixture(body, shape, material);
     finish_body(fields, body, std::numbers::pi * radius * radius);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -407,6 +441,7 @@ int polygon(lua_State* state) {
     b2MassData unit;
     shape.ComputeMass(&unit, 1.0f);
     finish_body(fields, body, unit.mass);
+    require_room(*build.scene, fields.what());
     push_body(state, body);
     return 1;
   });
@@ -436,6 +471,7 @@ int incline(lua_State* state) {
     b2PolygonShape shape;
     shape.Set(corners, 3);
     build.scene->add_fixture(body, shape, material);
+    require_room(*build.scene, fields.what());
     push_body(state, body, true, foot, along, static_cast<float>(length));
     return 1;
   });
@@ -504,6 +540,11 @@ int spring(lua_State* state) {
     } else {
       made.other = body_handle(state, -1, fields.what() + ": to")->body;
       lua_pop(state, 1);
+      // Its forces on the one body would cancel out, less the turn they make: nothing a spring is.
+      if (made.other == made.body) {
+        throw InvalidInput(fields.what() + ": from and to are the same body; a spring joins two bodies, or a body and a "
+                           "hand (to = function(t) ... end)");
+      }
       made.other_local_point = fields.point("to_at", origin_point);
     }
     made.stiffness = fields.number("k", "N/m");

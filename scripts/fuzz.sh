@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/) with Clang in build-fuzz/ and runs each for a while.
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     default: 60 s each, every target
+# Targets: fuzz_lesson_loader (a lesson script from bytes), fuzz_command_line (list/run/check
+# arguments), fuzz_numbers (the command line's and --set's numbers). Seeds: the built-in lessons,
+# the broken-script corpus and the command-line test lessons; the lesson API's names as a
+# dictionary. The corpus grows in build-fuzz/corpus/TARGET; a crash, sanitizer report, leak or
+# hang is saved in build-fuzz/findings/ and makes the script fail. Each target's figures
+# (executions, coverage, corpus) end its log in build-fuzz/logs/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_lesson_loader fuzz_command_line fuzz_numbers)
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRICTIONLAB_FUZZ=ON \
+      -DBUILD_TESTING=OFF "${launcher[@]}" >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
+
+seeds=build-fuzz/seeds
+rm -rf "$seeds" && mkdir -p "$seeds"/{fuzz_lesson_loader,fuzz_command_line,fuzz_numbers}
+cp lessons/*.lua tests/broken_lessons/*.lua tests/cli_lessons/*.lua "$seeds/fuzz_lesson_loader/"
+# Command lines: the first byte picks list (0), run (1) or check (2); arguments are split at newlines.
+i=0
+for line in '\000--tsv' '\001incline\n--hz\n480' '\001spring_pull\n--set\nmu_s=0.3\n--set\nmu_k=0.5' \
+             '\002tipping_box\n--set\npush_height=2\n--friction\nthreshold' '\001push\n--duration\n1\n--substeps\n2' \
+             '\002where_methods_fail\n--set\nmu_s=0' '\001tests/cli_lessons/comma_in_a_name.lua' '\002ramp\n--hz\n0x10'; do
+  printf "$line" > "$seeds/fuzz_command_line/seed$((i += 1))"
+done
+for number in 0.5 -2 1e-3 1e-320 1e999 0x10 inf 1,5 '' 100000 3.5e2 .5 5. +1 --1; do
+  printf '%s' "$number" > "$seeds/fuzz_numbers/seed$((i += 1))"
+done
+
+mkdir -p build-fuzz/findings build-fuzz/logs
+failed=0
+for target in "${targets[@]}"; do
+  corpus=build-fuzz/corpus/$target
+  mkdir -p "$corpus"
+  dictionary=()
+  [ "$target" = fuzz_lesson_loader ] && dictionary=(-dict=fuzz/lesson.dict)
+  log=build-fuzz/logs/$target.log
+  echo "== $target for $seconds s"
+  # -timeout: an input that takes longer than this is a hang; the fuzzing budgets end any script call in 0.5 s.
+  if ! ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" -max_total_time="$seconds" -timeout=20 \
+       -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
+       "$corpus" "$seeds/$target" >"$log" 2>&1; then
+    failed=1
+    echo "   FOUND a crash, leak or hang: see $log and build-fuzz/findings/"
+  fi
+  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "$log" | sed 's/^/   /'
+  grep -E '#[0-9]+.*(DONE|pulse|NEW|REDUCE).*cov:' "$log" | tail -1 | sed 's/^/   last: /'
+done
+exit $failed
