@@ -2,7 +2,8 @@
 -- a rope over a pulley at the table's edge to a weight that hangs beside it. The rope makes
 -- the two one body along it, of mass m_b + m_h, pulled by the weight's m_h·g and held back by
 -- the table's friction on the block alone, whose normal force is m_b·g (the weight touches
--- nothing). So the block stays put while m_h·g <= mu_s·m_b·g, at equality too, and otherwise
+-- nothing). So the block stays put while m_h <= mu_s·m_b (max(mu_s, mu_k)·m_b if a slider puts
+-- mu_k above mu_s: pulled past mu_s·N it would at once be held back by mu_k·N), and otherwise
 -- both move with a = g·(m_h − mu_k·m_b)/(m_b + m_h). The rope pulls each of them with the same
 -- T = m_h·(g − a): less than the weight's m_h·g, since the weight speeds up, and more than the
 -- table's mu_k·m_b·g, since the block speeds up too.
@@ -11,12 +12,23 @@ local function pulley_theory()
   return theory.connected_masses { block_mass = param.block_mass, hanging_mass = param.hanging_mass,
                                    mu_s = param.mu_s, mu_k = param.mu_k }
 end
+-- Theory holds the block at equality too (static friction can give all of mu_s·N). The solver
+-- cannot tell equality from a hair past it: it starts a contact slipping once friction is
+-- within 10⁻⁵ of the limit, and the rope, solved beside the contact, overshoots the weight's
+-- pull by up to 10⁻⁴ in the first steps. Within 10⁻⁴ of the threshold the rows say so.
+local function on_threshold()
+  local heaviest = pulley_theory().heaviest_held
+  if heaviest > 0 and math.abs(param.hanging_mass - heaviest) <= 1e-4 * heaviest then
+    return "on the threshold: either"
+  end
+end
 
--- The block may slide 0.25 m before the weight reaches the floor: the run ends before that,
--- or after 2 s.
-local travel = 0.25
+-- The block may slide 0.22 m before the weight reaches the floor: the run ends before that,
+-- or after 2 s (on the threshold, where it may slide, as if it did).
+local travel = 0.22
 local function run_length()
-  local a = pulley_theory().acceleration
+  local m_b, m_h = param.block_mass, param.hanging_mass
+  local a = on_threshold() and g * (m_h - param.mu_k * m_b) / (m_b + m_h) or pulley_theory().acceleration
   return a > 0 and math.min(2, math.sqrt(2 * travel / a)) or 2
 end
 
@@ -44,15 +56,17 @@ pair { "wood", "iron", mu_s = 0.5, mu_k = 0.4, sliders = false }  -- the weight 
 -- World -----------------------------------------------------------------------------------
 local floor = ground { "floor", material = "wood" }
 local table_top = box { "table", material = "wood", kind = "static", width = 1.2, height = 0.5, x = 0, y = 0.25 }
-local block = box { "block", material = "wood", width = 0.3, height = 0.15, on = table_top, at = -0.25, mass = block_mass }
+-- Four times as wide as it is tall, it cannot tip over its front edge for any mu up to 2 (the
+-- rope pulls at its middle, friction at its base).
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = table_top, at = -0.25, mass = block_mass }
 -- The pulley sits just past the table's edge at the height of the block's middle, so the rope
 -- runs level to the block and straight down to the weight.
 local pulley_at = { 0.75, block.y }
-local weight = box { "weight", material = "iron", width = 0.2, height = 0.2, x = 0.75, y = block.y - 0.22,
+local weight = box { "weight", material = "iron", width = 0.2, height = 0.2, x = 0.75, y = block.y - 0.2,
                      mass = hanging_mass }
 -- The table's top, the pulley and the weight's whole fall, from the floor up.
 view { window = { -0.65, -0.03, 0.95, 0.75 } }
-local cord = rope { "rope", from = block, at = { 0.15, 0 }, over = pulley_at, to = weight, to_at = { 0, 0.1 } }
+local cord = rope { "rope", from = block, at = { 0.2, 0 }, over = pulley_at, to = weight, to_at = { 0, 0.1 } }
 
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(block, table_top)
@@ -82,21 +96,22 @@ end
 
 -- Expectations ----------------------------------------------------------------------------
 expect { "the block",
-  predicted = function() return pulley_theory().slides and "slides" or "stays put" end,
-  measured = function() return ever_slipped() and "slides" or "stays put" end }
+  predicted = function() return on_threshold() or (pulley_theory().slides and "slides" or "stays put") end,
+  measured = function() return on_threshold() or (ever_slipped() and "slides" or "stays put") end }
 expect { "acceleration", unit = "m/s²",
-  predicted = function() return pulley_theory().acceleration end,
-  measured = function() return at_the_end("acceleration") end,
+  predicted = function() return on_threshold() or pulley_theory().acceleration end,
+  measured = function() return on_threshold() or at_the_end("acceleration") end,
   -- 0.5 % and 1 mm/s²: the rope is solved as a joint beside the contact, to Box2D's float
   -- precision, and the probe differences two velocities a step apart.
   tolerance = function() return 0.005 * pulley_theory().acceleration + 1e-3 end }
 expect { "rope tension", unit = "N",
-  predicted = function() return pulley_theory().tension end,
-  measured = function() return at_the_end("tension") end,
+  predicted = function() return on_threshold() or pulley_theory().tension end,
+  measured = function() return on_threshold() or at_the_end("tension") end,
   tolerance = function() return 0.005 * pulley_theory().tension + 1e-3 end }
 expect { "friction on the block", unit = "N",
-  predicted = function() return pulley_theory().friction end,
+  predicted = function() return on_threshold() or pulley_theory().friction end,
   measured = function()
+    if on_threshold() then return on_threshold() end
     local f = at_the_end("friction_force")
     return f and -f
   end,

@@ -331,18 +331,16 @@ IntermittentSlide intermittent_slide(double mass, double pull, const FrictionPai
     const double stop_at = std::min(t, stretch.end);
     const double starts_past = std::max(stretch.pair->mu_s, stretch.pair->mu_k) * weight;
     const double a = (pull - stretch.pair->mu_k * weight) / mass;
-    double now = stretch.start;
     if (state.speed == 0.0 && pull <= starts_past) {
       state = {false, 0.0, 0.0, state.distance};
       continue;  // held all through this stretch
     }
     // Sliding (or starting): at a, until the speed reaches 0 if a < 0.
-    const double run = stop_at - now;
+    const double run = stop_at - stretch.start;
     if (a < 0.0 && state.speed + a * run <= 0.0) {
       const double to_stop = -state.speed / a;
       state.distance += state.speed * to_stop + 0.5 * a * to_stop * to_stop;
       state.speed = 0.0;
-      now += to_stop;
       // At rest again: the pull cannot beat max(mu_s, mu_k)·N here, since it lost to mu_k·N.
       state.sliding = false;
       state.acceleration = 0.0;

@@ -211,6 +211,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"pulley", {{"block_mass", "0.1"}, {"hanging_mass", "10"}}, ""},
                       Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "0.01"}}, ""},
                       Case{"pulley", {{"block_mass", "10"}, {"hanging_mass", "10"}, {"mu_s", "2"}, {"mu_k", "2"}}, ""},
+                      // Exactly on the threshold, in words; the most friction while sliding (the
+                      // block is flat enough not to tip over its front edge).
+                      Case{"pulley", {{"hanging_mass", "0.4"}}, "on the threshold: either"},
+                      Case{"pulley", {{"block_mass", "2"}, {"hanging_mass", "0.8"}}, "on the threshold: either"},
+                      Case{"pulley", {{"mu_s", "1.9"}, {"mu_k", "1.9"}, {"hanging_mass", "3"}}, ""},
                       // stacked_blocks: no friction between the blocks (the top one slips at once),
                       // little (no together phase to speak of), the most (the pair runs off the
                       // floor's end first, in words), mu_k above mu_s on each surface (no closed
@@ -232,6 +237,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // the start to the end; frictionless oil; mu_k above mu_s dry; oil that holds
                       // harder than the dry table; the heaviest block.
                       Case{"lubricated", {{"pull", "0"}}, ""}, Case{"lubricated", {{"pull", "8"}}, ""},
+                      Case{"lubricated", {{"pull", "4.905"}}, "on the threshold: either"},
+                      Case{"lubricated", {{"lubricated_from", "1.003"}, {"lubricated_until", "2.001"}}, ""},
                       Case{"lubricated", {{"pull", "50"}}, ""},
                       Case{"lubricated", {{"lubricated_until", "0.5"}}, ""},
                       Case{"lubricated", {{"lubricated_from", "0"}, {"lubricated_until", "10"}}, ""},

@@ -529,8 +529,8 @@ pair { "wood", "wood", mu_s = 0.5, mu_k = function(t) return 0.3 end, sliders = 
 TEST(LessonRuntime, AForceMayBeATorqueThatTurnsABodyAndDoesWork) {
   // A disc of 2 kg and radius 0.5 m falling freely, turned by a motor whose torque grows as
   // 3·t N·m: ω(t) = 1.5·t²/I with I = m·r²/2 = 0.25 kg·m², the handle reads the torque of the
-  // time now, and the energy ledger books the torque's work, ∫τ·ω dt, as applied work (its
-  // residual stays at round-off).
+  // time now, and the energy ledger books the torque's work, ∫τ·ω dt, as applied work: all of
+  // it the disc's spin energy.
   ScriptFile script(with_heading(R"(
 material { "disc", density = 100 }
 pair { "disc", "disc", mu_s = 0.5, mu_k = 0.4 }

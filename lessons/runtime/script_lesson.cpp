@@ -381,12 +381,7 @@ int pair(lua_State* state) {
     double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     std::vector<TimedCoefficient> timed;
     for (int i = 0; i < 4; ++i) {
-      if (fields.push_function(coefficients[i].key)) {
-        if (!like[0].empty()) {
-          lua_pop(state, 1);
-          throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " +
-                             coefficients[i].key);
-        }
+      if (fields.push_function(coefficients[i].key)) {  // (like = with any coefficient is refused above)
         const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
         const std::string what = "pair " + label + ": " + coefficients[i].key + " (t -> a number)";
         timed.push_back({i, reference, function_of_time(build, reference, 1, what)});
@@ -776,6 +771,14 @@ int step_length(lua_State* state) {
   return 1;
 }
 
+// The length of one world step: the frame's over the run's sub-steps. Functions of time (a
+// pair's coefficients) are asked at the start of each.
+int substep_length(lua_State* state) {
+  const Scene& scene = *build_of(state).scene;
+  lua_pushnumber(state, scene.frame_step() / scene.settings().substeps);
+  return 1;
+}
+
 }  // namespace
 
 double parse_parameter_value(const Parameter& parameter, const std::string& text) {
@@ -805,7 +808,7 @@ void register_lesson_api(lua_State* state) {
   const luaL_Reg functions[] = {{"lesson", lesson},       {"parameter", parameter}, {"material", material},
                                 {"pair", pair},           {"probe", probe},         {"plot", plot},
                                 {"expect", expect},       {"every_step", every_step}, {"time", time_now},
-                                {"step_length", step_length}, {"history", history}, {"value_at", value_at}, {nullptr, nullptr}};
+                                {"step_length", step_length}, {"substep_length", substep_length}, {"history", history}, {"value_at", value_at}, {nullptr, nullptr}};
   lua_pushglobaltable(state);
   luaL_setfuncs(state, functions, 0);
   lua_pop(state, 1);
