@@ -45,7 +45,9 @@ for target in "${targets[@]}"; do
   log=build-fuzz/logs/$target.log
   echo "== $target for $seconds s"
   # -timeout: an input that takes longer than this is a hang; the fuzzing budgets end any script call in 0.5 s.
-  if ! ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" -max_total_time="$seconds" -timeout=20 \
+  # FRICTIONLAB_FUZZ_SEED fixes libFuzzer's random seed (the test command's runs repeat); unset, each run differs.
+  if ! ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" \
+       -seed="${FRICTIONLAB_FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=20 \
        -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
        "$corpus" "$seeds/$target" >"$log" 2>&1; then
     failed=1

@@ -3,7 +3,8 @@
 #   scripts/setup.sh [BUILD_DIR] [extra CMake options...]
 # FRICTIONLAB_TARGET names one target to build instead of everything; FRICTIONLAB_TESTS=1 also
 # installs what the test suite needs (Xvfb, to open a real window where there is no display, and
-# the packaging tools); FRICTIONLAB_PACKAGING=1 installs the packaging tools alone.
+# the packaging tools); FRICTIONLAB_PACKAGING=1 installs the packaging tools alone;
+# FRICTIONLAB_FUZZ=1 also installs Clang for the fuzzing targets.
 # Safe to run again: packages already present are not fetched, builds are incremental.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,6 +28,10 @@ if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(xvfb xauth); fi
 if [[ ${FRICTIONLAB_TESTS:-0} == 1 || ${FRICTIONLAB_PACKAGING:-0} == 1 ]]; then
   packages+=(dpkg-dev file lintian desktop-file-utils appstream util-linux mount gzip)
 fi
+
+# The libFuzzer targets (scripts/fuzz.sh, which the test command runs for a minute each): Clang
+# and its sanitizer and fuzzer runtimes.
+if [[ ${FRICTIONLAB_FUZZ:-0} == 1 ]]; then packages+=(clang libclang-rt-14-dev); fi
 
 missing=()
 for package in "${packages[@]}"; do
