@@ -194,6 +194,30 @@ plot { "waves", kind = "time", y = { "wave", "other" } }
   for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
 }
 
+// Finite values at the ends of what a double holds (±1.7e308): their span overflows, and the
+// plot used to come out blank. Every point lands in the data area, and the tick labels stay
+// short (1.5e+308, not 309 digits).
+TEST(PlotLegends, ValuesNearTheLargestDoubleAreDrawn) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "huge", unit = "m", function() return 1.7e308 * math.sin(20 * time()) end }
+plot { "huge", kind = "time", y = { "huge" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const ChartLayout layout = layout_plot(lesson, 0, lesson.duration(), corner, area, measuring().fonts);
+  ASSERT_GT(layout.points.size(), 100u);
+  for (const ImVec2& p : layout.points) {
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+    EXPECT_GE(p.y, layout.high_right.y - 1.0f);
+    EXPECT_LE(p.y, layout.low_left.y + 1.0f);
+  }
+  EXPECT_EQ(tick_text(1.5e308, 5e307), "1.5e+308");
+  EXPECT_EQ(tick_text(-2e12, 1e12), "\u22122e+12");
+  EXPECT_EQ(tick_text(250.0, 50.0), "250");
+}
+
 // The legend corner: the one free of points, the top left first.
 TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
   const ImVec2 low(0, 0), high(200, 100), size(50, 20);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include "ui/headless.h"
@@ -13,14 +14,26 @@
 
 namespace frictionlab::ui {
 
+// Where `value` lies from `low` (0) to `high` (1). In halves: values near ±1.7e308 are finite,
+// but their differences may not be.
+double share(double value, double low, double high) { return (0.5 * value - 0.5 * low) / (0.5 * high - 0.5 * low); }
+
 std::vector<double> axis_ticks(double low, double high, int count) {
   std::vector<double> ticks;
   if (!(high > low) || count < 1) return ticks;
-  const double rough = (high - low) / count;
-  const double power = std::pow(10.0, std::floor(std::log10(rough)));
-  const double fraction = rough / power;
-  const double step = (fraction < 1.5 ? 1.0 : fraction < 3.5 ? 2.0 : fraction < 7.5 ? 5.0 : 10.0) * power;
-  for (double tick = std::ceil(low / step - 1e-9) * step; tick <= high + 1e-9 * step; tick += step) {
+  // In halves: the span of values near ±1.7e308 would overflow to infinity, and so may a step
+  // of ten times a power of ten up there; such a step is made the largest that fits.
+  const double half_rough = (0.5 * high - 0.5 * low) / count;
+  const double power = std::pow(10.0, std::floor(std::log10(half_rough) + std::log10(2.0)));
+  const double fraction = 2.0 * (half_rough / power);
+  double step = (fraction < 1.5 ? 1.0 : fraction < 3.5 ? 2.0 : fraction < 7.5 ? 5.0 : 10.0) * power;
+  for (const double smaller : {5.0, 2.0, 1.0}) {
+    if (!std::isfinite(step)) step = smaller * power;
+  }
+  // At most a few more ticks than asked for: a step lost in the rounding of large ticks must
+  // not loop for ever.
+  for (double tick = std::ceil(low / step - 1e-9) * step; tick <= high + 1e-9 * step && ticks.size() < 4u * count + 4u;
+       tick += step) {
     ticks.push_back(std::abs(tick) < 1e-12 * step ? 0.0 : tick);
   }
   return ticks;
@@ -28,6 +41,13 @@ std::vector<double> axis_ticks(double low, double high, int count) {
 
 std::string tick_text(double value, double step) {
   char text[32];
+  if (std::abs(value) >= 1e7 || step >= 1e7) {
+    // Too many digits to write out (1e308 would take 309): three significant ones, 1.5e+12.
+    std::snprintf(text, sizeof text, "%.3g", value);
+    std::string shown = text;
+    if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
+    return shown;
+  }
   const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
   std::snprintf(text, sizeof text, "%.*f", std::min(decimals, 6), value);
   std::string shown = text;
@@ -44,7 +64,7 @@ struct Axis {
   bool shows(double value) const { return std::isfinite(value) && (!log || value > 0.0); }
   double map(double value) const { return log ? std::log10(value) : value; }
   // 0 at low, 1 at high.
-  double fraction(double value) const { return (map(value) - low) / (high - low); }
+  double fraction(double value) const { return share(map(value), low, high); }
 };
 
 // 10⁻³: the exponent in superscript digits, which the loaded font has.
@@ -67,13 +87,16 @@ Axis axis_of(bool log, const std::vector<double>& values) {
     high = std::max(high, axis.map(value));
   }
   if (!(low <= high)) return axis;
-  if (high - low < 1e-12) {
+  // In halves, and kept within what a double holds: values near ±1.7e308 are finite, but
+  // their span is not.
+  if (0.5 * high - 0.5 * low < 0.5e-12) {
     low -= 0.5;
     high += 0.5;
   }
-  const double margin = 0.04 * (high - low);
-  axis.low = low - margin;
-  axis.high = high + margin;
+  const double margin = 0.08 * (0.5 * high - 0.5 * low);  // 4 % of the span
+  constexpr double largest = std::numeric_limits<double>::max();
+  axis.low = std::max(low - margin, -largest);
+  axis.high = std::min(high + margin, largest);
   return axis;
 }
 
@@ -223,8 +246,8 @@ std::vector<Tick> ticks_every(const Axis& axis, int count) {
 
 ImVec2 ChartLayout::to_screen(double x, double y) const {
   const double ax = log_x ? std::log10(x) : x, ay = log_y ? std::log10(y) : y;
-  return ImVec2(low_left.x + static_cast<float>((ax - x_low) / (x_high - x_low)) * (high_right.x - low_left.x),
-                low_left.y - static_cast<float>((ay - y_low) / (y_high - y_low)) * (low_left.y - high_right.y));
+  return ImVec2(low_left.x + static_cast<float>(share(ax, x_low, x_high)) * (high_right.x - low_left.x),
+                low_left.y - static_cast<float>(share(ay, y_low, y_high)) * (low_left.y - high_right.y));
 }
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
@@ -367,7 +390,8 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   const float data_height = layout.low_left.y - layout.high_right.y;
   const auto spacing = [&](const std::vector<double>& ticks) {
     return ticks.size() < 2 ? INFINITY
-                            : static_cast<float>((ticks[1] - ticks[0]) / (layout.y_high - layout.y_low)) * data_height;
+                            : static_cast<float>((0.5 * ticks[1] - 0.5 * ticks[0]) / (0.5 * layout.y_high - 0.5 * layout.y_low)) *
+                                  data_height;
   };
   if (!axes.y.log && spacing(layout.y_ticks) < 1.35f * text) {
     for (int count = chart.y_tick_count - 1; count >= 1; --count) {
@@ -422,8 +446,8 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
   const float width = high_right.x - low_left.x;
   const ChartAxes axes = axes_of(chart);
   const auto at_axis_value = [&](double x, double y) {  // values already in axis space
-    return ImVec2(low_left.x + static_cast<float>((x - layout.x_low) / (layout.x_high - layout.x_low)) * width,
-                  low_left.y - static_cast<float>((y - layout.y_low) / (layout.y_high - layout.y_low)) * (low_left.y - high_right.y));
+    return ImVec2(low_left.x + static_cast<float>(share(x, layout.x_low, layout.x_high)) * width,
+                  low_left.y - static_cast<float>(share(y, layout.y_low, layout.y_high)) * (low_left.y - high_right.y));
   };
 
   draw->PushClipRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x + 1.0f, low_left.y + 1.0f), true);

@@ -17,6 +17,8 @@
 
 namespace frictionlab::ui {
 
+// Where `value` lies from `low` (0) to `high` (1), without overflow for any finite values.
+double share(double value, double low, double high);
 // Tick positions for an axis from low to high: 1, 2 or 5 times a power of ten apart, about
 // `count` of them.
 std::vector<double> axis_ticks(double low, double high, int count);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace frictionlab::ui {
 namespace {
@@ -25,14 +26,16 @@ Range range_of(const std::vector<const std::vector<double>*>& series, std::size_
   // Rounding noise (a resting block's speed of 1e-9 m/s) is not drawn as a signal: the axis
   // spans at least a thousandth of a unit, or a millionth of the values' size.
   const double least = std::max(1e-3, 1e-6 * std::max(std::abs(low), std::abs(high)));
-  if (high - low < least) {
-    const double middle = 0.5 * (low + high);
+  // Spans in halves: values near ±1.7e308 are finite, but their span is not.
+  if (0.5 * high - 0.5 * low < 0.5 * least) {
+    const double middle = 0.5 * low + 0.5 * high;
     low = std::min(low, middle - 0.5 * least);
     high = std::max(high, middle + 0.5 * least);
     if (include_zero && low < 0.0 && middle >= 0.0 && std::abs(middle) < least) low = std::min(low, 0.0);
   }
-  const double margin = 0.06 * (high - low);
-  return {low < 0.0 || !include_zero ? low - margin : low, high + margin};
+  const double margin = 0.12 * (0.5 * high - 0.5 * low);  // 6 % of the span
+  constexpr double largest = std::numeric_limits<double>::max();
+  return {low < 0.0 || !include_zero ? std::max(low - margin, -largest) : low, std::min(high + margin, largest)};
 }
 
 std::string axis_title(const lessons::Lesson& lesson, const std::string& quantity) {
@@ -45,8 +48,9 @@ std::string axis_title(const lessons::Lesson& lesson, const std::string& quantit
 // growing with the data asks the script again only when it passes a tick.
 std::pair<double, double> sampling_range(double low, double high) {
   const std::vector<double> ticks = axis_ticks(low, high, 5);
-  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : high - low;
-  return {std::floor(low / step) * step, std::ceil(high / step) * step};
+  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 0.5 * high - 0.5 * low;
+  constexpr double largest = std::numeric_limits<double>::max();
+  return {std::max(std::floor(low / step) * step, -largest), std::min(std::ceil(high / step) * step, largest)};
 }
 
 constexpr int theory_sample_count = 256;
