@@ -147,6 +147,10 @@ TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
   return arc;
 }
 
+void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width) {
+  for (std::size_t k = 1; k < arc.points.size(); ++k) labels.avoid(DrawnSegment{arc.points[k - 1], arc.points[k], width});
+}
+
 void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
                  LabelPlacer& labels) {
   draw->AddPolyline(arc.points.data(), static_cast<int>(arc.points.size()), colour, ImDrawFlags_None, thickness);

@@ -70,6 +70,8 @@ struct TorqueArc {
   std::vector<ImVec2> points;  // along the arc, tail first
 };
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
+// Keeps labels off the arc: its chords, `width` wide, for the label placer.
+void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width);
 void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
                  LabelPlacer& labels);
 

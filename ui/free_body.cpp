@@ -72,9 +72,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     const float half = 0.5f * std::min(extent.x, extent.y) * inset.pixels_per_metre;
     torques.push_back(torque_arc(inset.to_screen(body->GetWorldCenter()), std::max(1.3f * half, 12.0f * s),
                                  scene.torques_applied()[i]));
-    for (std::size_t k = 1; k < torques.back().points.size(); ++k) {
-      labels.avoid(DrawnSegment{torques.back().points[k - 1], torques.back().points[k], 6.0f * s});
-    }
+    avoid_arc(labels, torques.back(), 6.0f * s);
   }
   for (const ScreenArrow& arrow : arrows) draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
   for (const TorqueArc& arc : torques) {

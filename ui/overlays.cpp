@@ -128,13 +128,15 @@ std::vector<ContactMark> contact_marks(const Scene& scene) {
   return marks;
 }
 
+float upper_side(const ContactMark& mark) {
+  const b2Vec2 normal = b2Cross(1.0f, mark.tangent);  // from A to B
+  return normal.y >= 0.0f ? 1.0f : -1.0f;
+}
+
 std::string contact_word(const ContactMark& mark) {
   if (mark.state != ContactState::slipping) return "sticking";
-  // The record's sliding is B's relative to A, and Box2D may make either body A: the normal,
-  // from A to B, says which is on top (a block on a block may be either of their contact).
-  const b2Vec2 normal = b2Cross(1.0f, mark.tangent);
-  const float upper_is_b = normal.y >= 0.0f ? 1.0f : -1.0f;
-  const b2Vec2 way = upper_is_b * static_cast<float>(mark.sliding_velocity >= 0.0 ? 1.0 : -1.0) * mark.tangent;
+  // The record's sliding is B's relative to A; turned into the upper body's over the lower one.
+  const b2Vec2 way = upper_side(mark) * static_cast<float>(mark.sliding_velocity >= 0.0 ? 1.0 : -1.0) * mark.tangent;
   return way.x >= 0.0f ? "slipping \u2192" : "\u2190 slipping";
 }
 

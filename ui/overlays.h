@@ -43,6 +43,10 @@ const b2Body* main_body(const Scene& scene);
 std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body);
 // Every touching contact with a dynamic body in it, in the world's contact order.
 std::vector<ContactMark> contact_marks(const Scene& scene);
+// +1 when the contact's body B is the upper of its two bodies, −1 when A is. Box2D may make
+// either body A (a block on a block may be either of their contact); the normal, from A to B,
+// says which is on top.
+float upper_side(const ContactMark& mark);
 // What a contact's mark says: "sticking", or "slipping" with the way the upper body slides over
 // the lower one ("slipping →", "← slipping").
 std::string contact_word(const ContactMark& mark);

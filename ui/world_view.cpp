@@ -184,12 +184,10 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   draw->AddCircle(at, r, theme.background, 20, 1.5f);
   if (!with_label) return;
   const std::string text = contact_word(mark);
-  const b2Vec2 normal = b2Cross(1.0f, mark.tangent);
-  const float upper_is_b = normal.y >= 0.0f ? 1.0f : -1.0f;
   const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
   // Into the lower body, the surface, where nothing else is drawn, and to the side the friction
   // arrow does not point to.
-  const b2Vec2 into = -upper_is_b * normal;
+  const b2Vec2 into = -upper_side(mark) * b2Cross(1.0f, mark.tangent);
   const float side = mark.friction_force > 0.0 ? -1.0f : 1.0f;
   const b2Vec2 along = side * mark.tangent;
   const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
@@ -253,11 +251,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   const float thickness = 3.5f * fonts.scale;
   for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
-  for (const TorqueArc& arc : torques) {
-    for (std::size_t k = 1; k < arc.points.size(); ++k) {
-      labels.avoid(DrawnSegment{arc.points[k - 1], arc.points[k], 2.0f * thickness});
-    }
-  }
+  for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
   const float mark_radius = 6.0f * fonts.scale;
   for (const ContactMark& mark : marks) {
     const ImVec2 at = camera.to_screen(mark.point);
