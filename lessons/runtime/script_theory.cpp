@@ -20,6 +20,11 @@ void set_number(lua_State* state, const char* key, double value) {
   lua_setfield(state, -2, key);
 }
 
+void set_flag(lua_State* state, const char* key, bool value) {
+  lua_pushboolean(state, value);
+  lua_setfield(state, -2, key);
+}
+
 // mu_s may be left out where only sliding matters (it then equals mu_k).
 FrictionPair pair_from(Fields& fields) {
   const double mu_k = fields.number("mu_k", "");
@@ -119,8 +124,7 @@ int disk_on_incline(lua_State* state) {
         fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius), fields.number("mu_s", ""),
         fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
     lua_createtable(state, 0, 4);
-    lua_pushboolean(state, disk.rolls);
-    lua_setfield(state, -2, "rolls");
+    set_flag(state, "rolls", disk.rolls);
     set_number(state, "acceleration", disk.acceleration);
     set_number(state, "angular_acceleration", disk.angular_acceleration);
     set_number(state, "friction_force", disk.friction_force);
@@ -158,8 +162,7 @@ int connected_masses(lua_State* state) {
         fields.number("block_mass", "kg"), fields.number("hanging_mass", "kg"), fields.number("mu_s", ""),
         fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
     lua_createtable(state, 0, 5);
-    lua_pushboolean(state, pulled.slides);
-    lua_setfield(state, -2, "slides");
+    set_flag(state, "slides", pulled.slides);
     set_number(state, "acceleration", pulled.acceleration);
     set_number(state, "tension", pulled.tension);
     set_number(state, "friction", pulled.friction);
@@ -176,8 +179,7 @@ int intermittent_slide(lua_State* state) {
         nested_pair(state, fields, "lubricated"), fields.number("from", "s"), fields.number("until", "s"),
         fields.number("t", "s"), fields.number("g", "m/s²", standard_gravity));
     lua_createtable(state, 0, 4);
-    lua_pushboolean(state, slide.sliding);
-    lua_setfield(state, -2, "sliding");
+    set_flag(state, "sliding", slide.sliding);
     set_number(state, "acceleration", slide.acceleration);
     set_number(state, "speed", slide.speed);
     set_number(state, "distance", slide.distance);
@@ -193,8 +195,7 @@ int driven_wheel(lua_State* state) {
         mass, radius, fields.number("inertia", "kg·m²", 0.5 * mass * radius * radius), fields.number("torque", "N·m"),
         fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
     lua_createtable(state, 0, 5);
-    lua_pushboolean(state, wheel.rolls);
-    lua_setfield(state, -2, "rolls");
+    set_flag(state, "rolls", wheel.rolls);
     set_number(state, "acceleration", wheel.acceleration);
     set_number(state, "angular_acceleration", wheel.angular_acceleration);
     set_number(state, "friction", wheel.friction);
