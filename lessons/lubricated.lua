@@ -6,8 +6,11 @@
 -- stops and sticks. The pair's coefficients here are functions of time, asked at the start of
 -- every step.
 
-local function oiled_until() return math.max(param.lubricated_from, param.lubricated_until) end
-local function oiled(t) return t >= param.lubricated_from and t < oiled_until() end
+-- When the oil comes and goes (no oil if lubricated_until is not after lubricated_from): set
+-- below from the parameters, which restart the lesson when they change, so the pair's
+-- functions, asked every step, and theory read the same two numbers.
+local oil_from, oil_gone
+local function oiled(t) return t >= oil_from and t < oil_gone end
 -- The coefficients change at the start of the first world step at or after each instant: the
 -- instants theory is given, so that it describes the run as stepped.
 local function on_a_step(t)
@@ -20,7 +23,7 @@ local function slide(t)
   return theory.intermittent_slide { mass = mass, pull = param.pull,
     dry = { mu_s = param.mu_s, mu_k = param.mu_k },
     lubricated = { mu_s = param.lubricated_mu, mu_k = param.lubricated_mu },
-    from = on_a_step(param.lubricated_from), ["until"] = on_a_step(oiled_until()), t = t }
+    from = on_a_step(oil_from), ["until"] = on_a_step(oil_gone), t = t }
 end
 -- Theory holds a block whose pull is exactly mu·m·g; the solver starts a contact slipping once
 -- friction is within 10⁻⁵ of its limit, so it cannot tell equality from a hair past it. Within
@@ -34,10 +37,10 @@ end
 -- Until a second after the block has stopped on the dry table again (at most 8 s after the oil
 -- is gone), or 2 s after the oil if it never stops.
 local function run_length()
-  local after = slide(oiled_until())
+  local after = slide(oil_gone)
   local a = (param.pull - param.mu_k * mass * g) / mass
-  if after.speed > 0 and a < 0 then return oiled_until() + math.min(after.speed / -a + 1, 8) end
-  return oiled_until() + 2
+  if after.speed > 0 and a < 0 then return oil_gone + math.min(after.speed / -a + 1, 8) end
+  return oil_gone + 2
 end
 
 lesson {
@@ -65,15 +68,13 @@ local lubricated_from = parameter { "lubricated_from", 1, min = 0, max = 10, uni
 local lubricated_until = parameter { "lubricated_until", 2, min = 0, max = 10, unit = "s",
                                      text = "the oil is gone at (no oil if not after the start)" }
 
+oil_from, oil_gone = lubricated_from, math.max(lubricated_from, lubricated_until)
+
 -- The pair's coefficients as functions of time: the oiled values while oiled. No sliders of
--- its own (the parameters above set it), and no drag, which the closed form leaves out. They
--- are asked every step, so they read the parameters' values as the script was built with
--- them (a change restarts the lesson) rather than look each one up again.
-local oil_gone = math.max(lubricated_from, lubricated_until)
-local function oiled_now(t) return t >= lubricated_from and t < oil_gone end
+-- its own (the parameters above set it), and no drag, which the closed form leaves out.
 pair { "wood", "wood", sliders = false,
-  mu_s = function(t) if oiled_now(t) then return lubricated_mu end return mu_s end,
-  mu_k = function(t) if oiled_now(t) then return lubricated_mu end return mu_k end }
+  mu_s = function(t) if oiled(t) then return lubricated_mu end return mu_s end,
+  mu_k = function(t) if oiled(t) then return lubricated_mu end return mu_k end }
 
 -- World -----------------------------------------------------------------------------------
 local table_top = ground { "table", material = "wood" }
@@ -115,14 +116,14 @@ local function word(t) return on_threshold() or out_of_reach(t) end
 
 -- The middle of each stretch; the reading at a sample belongs to the step before it.
 local stretches = {
-  { "dry, before the oil", function() return param.lubricated_from / 2 end },
-  { "oiled", function() return (param.lubricated_from + oiled_until()) / 2 end },
-  { "dry again", function() return (oiled_until() + run_length()) / 2 end },
+  { "dry, before the oil", function() return oil_from / 2 end },
+  { "oiled", function() return (oil_from + oil_gone) / 2 end },
+  { "dry again", function() return (oil_gone + run_length()) / 2 end },
 }
 for _, stretch in ipairs(stretches) do
   local name, middle = stretch[1], stretch[2]
   local function unread()
-    if name == "oiled" and oiled_until() <= param.lubricated_from then return "no oil" end
+    if name == "oiled" and oil_gone <= oil_from then return "no oil" end
     if middle() < step_length() then return "too short to read" end
     return word(middle())
   end
