@@ -177,6 +177,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"wedge", {{"theta0", "30"}, {"a_x", "20"}, {"a_x_omega", "3"}, {"omega", "2"}}, ""},
                       Case{"wedge", {{"a_x", "4"}, {"a_x_omega", "0"}}, ""}, Case{"wedge", {{"theta0", "20"}}, ""},
                       Case{"wedge", {{"omega", "0.1"}}, ""}, Case{"wedge", {{"mu_k", "0"}}, ""},
+                      Case{"check_the_article", {}, ""}, Case{"check_the_article", {{"example", "advanced"}}, ""},
                       Case{"where_methods_fail", {}, "jitters"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.02"}}, "settles"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.0005"}, {"angle", "5"}}, "jitters"},
@@ -507,6 +508,38 @@ TEST(BuiltinLessons, WedgeFollowsTheArticlesReductionWhenTheSurfaceTurnsSlowly) 
   EXPECT_LT(worst({{"omega", "0.1"}}, "slide", "slide_reduced"), 2e-3);
   EXPECT_LT(worst({{"omega", "0.1"}}, "normal_force", "normal_reduced"), 0.05);
   EXPECT_GT(worst({{"theta0", "20"}}, "slide", "slide_reduced"), 0.5);
+}
+
+// check_the_article: every claim of the article's two worked examples is found not to hold, and
+// the figures it finds instead are the closed forms where there are some. The advanced example
+// (2 kg, 15°, a constant 3 m/s², μk 0.25) slides the whole time, so its peak kinetic friction is
+// μk·N at the flattest point, μk·m(g·cos 15° + 3·sin 15°) = 5.126 N (the article: 0.55 N), and
+// its least normal force m(g·cos 15° − 3·sin 15°) = 17.40 N (the article: contact is lost).
+TEST(BuiltinLessons, CheckTheArticleFindsItsClaimsDoNotHold) {
+  const double theta = 15.0 * std::acos(-1.0) / 180.0;
+  const std::map<std::string, double> advanced{
+      {"peak kinetic friction", 0.25 * 2.0 * (9.81 * std::cos(theta) + 3.0 * std::sin(theta))},
+      {"least normal force", 2.0 * (9.81 * std::cos(theta) - 3.0 * std::sin(theta))}};
+  for (const char* example : {"worked", "advanced"}) {
+    Lesson lesson(resolve_lesson("check_the_article"), {{"example", example}});
+    run_for(lesson, lesson.duration());
+    const std::vector<ExpectationResult> rows = lesson.expectations();
+    ASSERT_EQ(rows.size(), std::string(example) == "worked" ? 7u : 3u);
+    for (const ExpectationResult& row : rows) {
+      EXPECT_TRUE(row.passes) << row.name;
+      EXPECT_NE(row.name.find(" · does not hold"), std::string::npos) << row.name;
+      // It never moves up the slope: its least speed down it is the first step's, a·h at most.
+      if (row.name.rfind("least speed", 0) == 0) {
+        EXPECT_GT(row.predicted, 0.0);
+        EXPECT_LT(row.predicted, 3.0 / 240.0);
+      }
+      for (const auto& [start, value] : advanced) {
+        if (std::string(example) == "advanced" && row.name.rfind(start, 0) == 0) {
+          EXPECT_NEAR(row.predicted, value, 1e-3) << row.name;
+        }
+      }
+    }
+  }
 }
 
 TEST(BuiltinLessons, TippingBoxTiltsAndSlidesAsItsProbesSay) {
