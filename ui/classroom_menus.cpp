@@ -97,6 +97,11 @@ void Classroom::menu_bar() {
     ImGui::MenuItem("Projector mode", "P", &window_.projector);
     if (ImGui::MenuItem("Full screen", "F11")) full_screen_toggle_ = true;
     ImGui::MenuItem("Help", "F1", &window_.help);
+    ImGui::Separator();
+    // Off: the theory shows from the start, as for a teacher who takes no predictions.
+    ImGui::MenuItem("Ask for predictions first", nullptr, &window_.predictions);
+    const bool hidden = theory_hidden();
+    if (ImGui::MenuItem("Reveal the theory", "T", false, hidden)) predictions_.revealed = true;
     ImGui::EndMenu();
   }
   // Which file is running, so a student knows which script to edit.
@@ -124,6 +129,7 @@ void Classroom::help_panel() {
         {"Ctrl+E", "export the history (CSV)"},
         {"P", "projector mode: larger text, thicker lines"},
         {"D", "dark or light theme"},
+        {"T", "reveal the theory after the class's predictions"},
         {"F11", "full screen"},
         {"F1", "this help"},
     };

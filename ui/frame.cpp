@@ -96,8 +96,10 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& read
   const float gap = 4.0f * s;
   const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
   const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
-  const float theory = bar + padding + 4.0f * s +
-                       theory_contents_height(readings.expectations, inside, readings.error, readings.caveat);
+  const float predictions = style.predictions_height ? style.predictions_height(inside) : 0.0f;
+  const float table = style.theory_hidden ? 0.0f
+                                          : theory_contents_height(readings.expectations, inside, readings.error, readings.caveat);
+  const float theory = bar + padding + 4.0f * s + predictions + table;
   const bool window = static_cast<bool>(style.parameters_panel);
   // The parameters' height at each step of giving way: in a picture, the last k pairs folded;
   // the window's steps are its own (parameters_heights).
@@ -262,7 +264,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         }
         const ImVec2 area = ImGui::GetContentRegionAvail();
         draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                  fonts);
+                  fonts, !style.theory_hidden);
       }
       end_panel();
     }
@@ -279,15 +281,28 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step);
   }
   at.y += plan.parameters + gap;
-  if (!plan.theory_in_tabs) {
+  // The class's predictions come first; before the reveal they stand in for the theory.
+  const auto theory_part = [&] {
+    if (style.predictions) style.predictions();
+    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat);
+  };
+  if (!plan.theory_in_tabs && !style.predictions) {
     theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat);
+    at.y += plan.theory + gap;
+  } else if (!plan.theory_in_tabs) {
+    if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
+                    ImVec2(width, plan.theory))) {
+      theory_part();
+    }
+    end_panel();
     at.y += plan.theory + gap;
   }
   if (plan.books_tabbed) {
     // Short names when the full ones would not fit side by side.
     const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
                                 "Model card###model"};
-    const char* const brief[] = {"Theory###theory tab", "Energy###energy", "Model###model"};
+    const char* const brief[] = {style.theory_hidden ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
+                                 "Model###model"};
     float full_width = 0.0f;
     for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
@@ -298,7 +313,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
         ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
       if (plan.theory_in_tabs && begin_tab(names[0])) {
-        theory_contents(rows, colours, readings.error, readings.caveat);
+        theory_part();
         ImGui::EndTabItem();
       }
       if (begin_tab(names[1])) {
