@@ -91,7 +91,9 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("View")) {
+  const bool view = ImGui::BeginMenu("View");
+  remember("View menu");
+  if (view) {
     bool dark = window_.theme == ThemeName::dark;
     if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;
     ImGui::MenuItem("Projector mode", "P", &window_.projector);
@@ -100,8 +102,8 @@ void Classroom::menu_bar() {
     ImGui::Separator();
     // Off: the theory shows from the start, as for a teacher who takes no predictions.
     ImGui::MenuItem("Ask for predictions first", nullptr, &window_.predictions);
-    const bool hidden = theory_hidden();
-    if (ImGui::MenuItem("Reveal the theory", "T", false, hidden)) predictions_.revealed = true;
+    remember("Ask for predictions first");
+    if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.revealed = true;
     ImGui::EndMenu();
   }
   // Which file is running, so a student knows which script to edit.

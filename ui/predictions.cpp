@@ -44,9 +44,14 @@ std::string measured_shown(const lessons::ExpectationResult& row) {
   return row.numeric ? format_quantity(row.measured, row.unit.c_str()) : row.measured_text;
 }
 
+// Beside the reveal button, or under it when there is no room.
 const char* intro(bool editable) {
-  return editable ? "Ask the class before Play. The theory stays hidden until you reveal it."
-                  : "The class's predictions, kept for this run (R goes back to t = 0 to change them).";
+  return editable ? "Ask the class before Play." : "Kept for this run (R: back to t = 0).";
+}
+bool intro_beside(float width) {
+  const float button = ImGui::CalcTextSize("Reveal the theory (T)").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  const float words = std::max(ImGui::CalcTextSize(intro(true)).x, ImGui::CalcTextSize(intro(false)).x);
+  return button + ImGui::GetStyle().ItemSpacing.x + words <= width;
 }
 const char* reveal_label = "Reveal the theory (T)";
 
@@ -135,8 +140,12 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
   if (controls.remember) controls.remember("reveal");
   const ImRect button(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   note_text_centred(reveal_label, button);
-  wrapped(intro(editable), std::nullopt, true);
   const float width = ImGui::GetContentRegionAvail().x;
+  if (intro_beside(width)) {
+    ImGui::SameLine();
+    ImGui::AlignTextToFramePadding();
+  }
+  wrapped(intro(editable), std::nullopt, true);
   for (const lessons::Prediction& prediction : lesson.predictions()) {
     ImGui::PushID(prediction.expectation.c_str());
     wrapped(prediction.question.c_str());
@@ -217,6 +226,8 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
       ImGui::PopTextWrapPos();
     };
     across(prediction.expectation, std::nullopt);
+    // Each row's name on the headers' shade, so the class's rows read as groups of three lines.
+    ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImGuiCol_TableHeaderBg));
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     shown_text(answer_shown(prediction, answer).c_str());
@@ -250,14 +261,14 @@ std::optional<double> read_answer(const std::string& typed, std::string& why) {
 
 Closeness closeness(const lessons::Prediction& prediction, const std::string& answer,
                     const lessons::ExpectationResult& row) {
-  if (answer.empty()) return {"no prediction", false};
+  if (answer.empty()) return {"class: no prediction", false};
   // Against what happened once it has, and the theory before.
   const bool measured = row.measured_yet;
   const char* against = measured ? "the measurement" : "the theory";
   if (prediction.is_choice() || !row.numeric) {
     const std::string truth = measured ? row.measured_text : row.predicted_text;
-    if (prediction.is_choice() && answer == truth) return {"right", true};
-    return {std::string(measured ? "measured: " : "the theory says: ") + truth, false};
+    if (prediction.is_choice() && answer == truth) return {"class: \u2713 right", true};
+    return {std::string(measured ? "class: \u2717 the run says " : "class: \u2717 the theory says ") + truth, false};
   }
   std::string why;
   const std::optional<double> value = read_answer(answer, why);
@@ -279,7 +290,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
   } else {
     words += " from ";
   }
-  return {words + against, close};
+  return {"class: " + words + against, close};
 }
 
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
@@ -314,7 +325,7 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
     return height + style.ItemSpacing.y;
   }
   height += frame;  // the reveal button
-  height += std::max(wrapped_height(intro(true), width), wrapped_height(intro(false), width));
+  if (!intro_beside(width)) height += std::max(wrapped_height(intro(true), width), wrapped_height(intro(false), width));
   for (const lessons::Prediction& prediction : lesson.predictions()) {
     height += wrapped_height(prediction.question, width);
     bool fault = false;

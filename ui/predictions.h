@@ -31,7 +31,8 @@ bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predic
 std::optional<double> read_answer(const std::string& typed, std::string& why);
 
 // How close the class came, in words, against the measurement once there is one and the
-// theory before: "+0.12 N, 4 % above the measurement", "right", "the theory says tips".
+// theory before: "class: +0.12 N, 4 % above the measurement", "class: ✓ right", "class: ✗ the
+// theory says tips".
 // `close`: within 10 % of it, or the same word.
 struct Closeness {
   std::string words;
