@@ -33,8 +33,8 @@ sed 's/^local angle = parameter/local angle = parameter {/' lessons/incline.lua 
 shot window_script_error "help = off\npredictions = off\n" "$scratch/my_incline.lua" --at 1
 
 # Predict, then reveal (projector mode, 1920 × 1080): the window driven by hand on Xvfb with
-# xdotool, as a teacher would: fold the friction pair, pick "slides", scroll to the number's
-# box and type 50, play the run to its end, press T. The points clicked are where the window
+# xdotool, as a teacher would: fold the friction pair, pick "slides", type 50 in the number's
+# box, play the run to its end, press T. The points clicked are where the window
 # puts those controls at this size; look at both pictures.
 predict_shots() {
   local home="$scratch/predict" display=:57
@@ -51,11 +51,9 @@ predict_shots() {
   x() { DISPLAY=$display xdotool "$@"; sleep 0.7; }
   x mousemove 1210 537 click 1          # fold "crate on floor" into its heading
   x mousemove 1336 841 click 1          # the box slides
-  x mousemove 1516 800 click 5 click 5  # scroll the questions to the number's box
-  x mousemove 1305 928 click 1
+  x mousemove 1305 969 click 1          # the number's box
   x type --delay 100 50
   x mousemove 1800 560 click 1          # done typing
-  x mousemove 1516 800 click 4 click 4  # back to the top
   x mousemove 1900 120
   x key --window "$window" ctrl+s
   x key --window "$window" space
