@@ -120,10 +120,11 @@ local function verdict(claim, computed)
   return math.abs(computed - claim) <= 0.1 * math.abs(claim) and "holds" or "does not hold"
 end
 -- A row: the claim as written and its verdict, the exact solution of the article's own
--- equations, and the Box2D block on the laid-flat surface.
+-- equations, and the Box2D block on the laid-flat surface. Returns the row's name.
 local function claim(name, article, computed, measured, tolerance, unit)
-  expect { name .. " · " .. verdict(article, computed()), unit = unit,
-    predicted = computed, measured = measured, tolerance = tolerance }
+  local row = name .. " · " .. verdict(article, computed())
+  expect { row, unit = unit, predicted = computed, measured = measured, tolerance = tolerance }
+  return row
 end
 
 local right_end = right.slide[sample(duration)]
@@ -146,8 +147,10 @@ if param.example == "worked" then
     function() return time() >= duration - 0.5 * h and count_slipping() or nil end,
     -- Each start and stop is found within a step.
     2 * #right.slip_windows * h + 0.01 * windows_total(), "s")
-  claim("slide at 5 s (article: 0.27 m down)", 0.27, function() return right_end end,
+  local slide_row = claim("slide at 5 s (article: 0.27 m down)", 0.27, function() return right_end end,
     function() return recorded("slide", duration) end, 0.002 * path + 2e-3, "m")
+  predict { slide_row, unit = "m",
+    question = "The article says the block ends 0.27 m down the slope after 5 s. Where does it end (up the slope: negative)?" }
   local final_speed = right.speed[sample(duration)]
   claim("speed at 5 s (article: 0.44 m/s)", 0.44, function() return final_speed end,
     function() return recorded("speed", duration) end, 0.01, "m/s")
@@ -193,7 +196,7 @@ else
     end,
     -- 1 mm/s: the reading is the step's mean velocity.
     tolerance = 1e-3 }
-  claim("peak kinetic friction, two swings (article: ≈ 0.55 N)", 0.55, function() return peak_friction end,
+  local peak_row = claim("peak kinetic friction, two swings (article: ≈ 0.55 N)", 0.55, function() return peak_friction end,
     function()
       if time() < two_swings then return nil end
       local peak = 0
@@ -205,6 +208,8 @@ else
     end,
     -- A step's mean against the peak instant: μk times how much N changes in a step.
     0.01 * peak_friction + chosen.mu_k * mass * g * theta0 * omega * h, "N")
+  predict { peak_row, unit = "N",
+    question = "The article says the kinetic friction peaks at about 0.55 N on this 2 kg block. What is its peak?" }
   -- "If aₓ exceeds g tan θ₀ ... the block would lose contact": 3 m/s² exceeds g·tan 15° = 2.63,
   -- yet N = m(g cos θ − a sin θ) stays positive; it reaches 0 only past a = g·cot θ0 = 36.6.
   local least_normal = math.huge  -- over the two swings, as N repeats with the swing here

@@ -201,7 +201,7 @@ end
 local function no_model(t)
   local left = left_the_plank()
   if left and left <= t then return "off the plank by then" end
-  if rocks_by(t) then return "rocks on an edge: no model" end
+  if rocks_by(t) then return "rocks: no model" end
   if tumbled(t) then return "tumbled: no model" end
 end
 local function recorded(name, t)
@@ -245,13 +245,13 @@ expect { "normal force halfway", unit = "N",
 expect { "first slip", unit = "s",
   predicted = function()
     local t = (turning.contact[1] == "slipping" and 0) or first_event(turning, "breakaway")
-    return no_model(t or duration) or t or "never slips"
+    return no_model(t or duration) or t or "never"
   end,
   measured = function()
     local t = (turning.contact[1] == "slipping" and 0) or first_event(turning, "breakaway")
     if no_model(t or duration) then return no_model(t or duration) end
     if time() < duration then return nil end
-    return first_recorded("slipping", function(v) return v == 1 end) or "never slips"
+    return first_recorded("slipping", function(v) return v == 1 end) or "never"
   end,
   -- Two and a half steps: the record says "slipping" at the end of a step, and the listener
   -- judges a slip from the impulses of the step it began in (a block that must slip from the
@@ -260,13 +260,13 @@ expect { "first slip", unit = "s",
 expect { "first lift-off", unit = "s",
   predicted = function()
     local t = first_event(turning, "lift-off")
-    return no_model(t or duration) or t or "stays on the surface"
+    return no_model(t or duration) or t or "never"
   end,
   measured = function()
     local t = first_event(turning, "lift-off")
     if no_model(t or duration) then return no_model(t or duration) end
     if time() < duration then return nil end
-    return first_recorded("normal_force", function(v) return v == 0 end) or "stays on the surface"
+    return first_recorded("normal_force", function(v) return v == 0 end) or "never"
   end,
   -- Three steps: the normal force reads 0 only after a whole step without a push, and as N
   -- crosses 0 it passes through the last 1 % of the weight over a step or more. And the time
@@ -284,6 +284,11 @@ expect { "first lift-off", unit = "s",
 -- energy in the turning frame, which the model books as gravity's, the pseudo-force's, the
 -- turn's and friction's work and what landings took.
 local function first_swing() return omega > 0 and math.min(duration, 2 * math.pi / omega) or duration end
+predict { "first slip", unit = "s",
+  question = "The wedge starts to swing and to be shaken: how long does static friction hold the block?" }
+predict { "slide at the end", unit = "m",
+  question = "Where is the block after 5 s: how far down the slope from where it started (up the slope: negative)?" }
+
 -- The block's speed along the surface over the step that ends at t, from the slide recorded at
 -- either end of it: in contact it is all of the block's speed in the surface's frame.
 local function speed_before(t)
