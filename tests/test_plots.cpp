@@ -194,6 +194,24 @@ plot { "waves", kind = "time", y = { "wave", "other" } }
   for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
 }
 
+// Five keys in a short plot, its data all on the left (early in a run): the free corner on the
+// right is too short for the legend, which used to run out of it over the x axis and its
+// labels. It goes above or beside the data instead, and covers no point.
+TEST(PlotLegends, ATallLegendDoesNotRunOutOfAFreeCorner) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+for i = 1, 5 do probe { "series_" .. i, unit = "m", function() return i * time() end } end
+plot { "many", kind = "time", y = { "series_1", "series_2", "series_3", "series_4", "series_5" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.3);
+  const ChartLayout layout = layout_plot(lesson, 0, 5.0, corner, ImVec2(420.0f, 130.0f), measuring().fonts);
+  ASSERT_TRUE(layout.drawable);
+  EXPECT_LE(layout.legend_max.y, layout.low_left.y) << "the legend runs out over the x axis";
+  for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
+}
+
 // Finite values at the ends of what a double holds (±1.7e308): their span overflows, and the
 // plot used to come out blank. Every point lands in the data area, and the tick labels stay
 // short (1.5e+308, not 309 digits).
