@@ -125,8 +125,42 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
     }
   }
   if (driven) {
-    const ImVec2 at = camera.to_screen(body->GetWorldCenter());
-    draw_label(draw, fonts.small, at, theme.driven_outline, theme.panel, "driven");
+    // At its centre, unless a moving body sits there (wedge's block rests on its plank's
+    // pivot): then further along the body, the first of a few points along its length that
+    // no moving body covers.
+    const auto covered = [&](b2Vec2 point) {
+      for (const b2Body* other = scene.world().GetBodyList(); other != nullptr; other = other->GetNext()) {
+        if (other->GetType() != b2_dynamicBody) continue;
+        for (const b2Fixture* f = other->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+          b2AABB box;
+          f->GetShape()->ComputeAABB(&box, other->GetTransform(), 0);
+          box.lowerBound -= b2Vec2(0.1f, 0.1f), box.upperBound += b2Vec2(0.1f, 0.1f);
+          if (point.x >= box.lowerBound.x && point.x <= box.upperBound.x && point.y >= box.lowerBound.y &&
+              point.y <= box.upperBound.y) {
+            return true;
+          }
+        }
+      }
+      return false;
+    };
+    b2AABB extent;
+    extent.lowerBound = extent.upperBound = body->GetLocalCenter();
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      b2AABB box;
+      fixture->GetShape()->ComputeAABB(&box, b2Transform(b2Vec2_zero, b2Rot(0.0f)), 0);
+      extent.Combine(box);
+    }
+    const b2Vec2 centre = body->GetLocalCenter();
+    const float reach = 0.5f * (extent.upperBound.x - extent.lowerBound.x);
+    b2Vec2 at = body->GetWorldCenter();
+    for (const float share : {0.0f, 0.1f, -0.1f, 0.2f, -0.2f, 0.35f, -0.35f}) {
+      const b2Vec2 candidate = body->GetWorldPoint(b2Vec2(centre.x + share * reach, centre.y));
+      if (!covered(candidate)) {
+        at = candidate;
+        break;
+      }
+    }
+    draw_label(draw, fonts.small, camera.to_screen(at), theme.driven_outline, theme.panel, "driven");
   }
 }
 
