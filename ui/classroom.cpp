@@ -190,7 +190,8 @@ void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {
   const std::vector<Camera> cameras =
       ui::world_cameras(playback_->lesson(), playback_->framing(), size, scale, origin, view_adjust_);
   if (drag_lane_ >= cameras.size()) return;
-  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].centre;
+  // The same world point under the same screen point: the mouse's place means what it meant.
+  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].to_world(held_view_->anchor);
   if (shift.IsValid()) view_adjust_.pan += shift;
 }
 
@@ -240,7 +241,7 @@ void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
         if (fixture->TestPoint(point)) {
           playback_->grab(name, body->GetLocalPoint(point), point);
           hand_held_ = true;
-          held_view_ = HeldView{camera.centre, view_adjust_.pan};
+          held_view_ = HeldView{camera.centre, camera.anchor, view_adjust_.pan};
           if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
           break;
         }

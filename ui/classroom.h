@@ -127,6 +127,7 @@ class Classroom {
                    LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
+  std::string gauge_figures() const;  // "peak 39.4 N   sliding 29.1 N"; "" before the hand pulls
   void transport_bar(ImVec2 corner, ImVec2 size);
   // The transport bar's words, and its height: one row, or two when the words do not fit
   // beside the time bar.
@@ -187,9 +188,13 @@ class Classroom {
   std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
   // While the hand pulls, the view holds still: a view that follows the body would carry the
   // world point under a still mouse along with it, and the hand would chase the body it pulls.
-  // The drag lane's centre when the hand took hold, and the pan before it (given back on letting go).
+  // The world point at the drag lane's anchor when the hand took hold, that anchor on the screen
+  // (a line of status under the transport bar moves it), and the pan before it (given back on
+  // letting go).
   struct HeldView {
-    b2Vec2 centre, pan;
+    b2Vec2 centre;
+    ImVec2 anchor;
+    b2Vec2 pan;
   };
   std::optional<HeldView> held_view_;
   void hold_view(ImVec2 origin, ImVec2 size, float scale);

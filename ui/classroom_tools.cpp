@@ -4,6 +4,7 @@
 
 #include "ui/classroom.h"
 #include "ui/overlays.h"
+#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 
@@ -55,21 +56,29 @@ void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, 
   if (gauge_here) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
 }
 
-std::string Classroom::gauge_plot_title() const {
+std::string Classroom::gauge_plot_title() const { return "Force gauge"; }
+
+std::string Classroom::gauge_figures() const {
   const Scene& scene = playback_->lesson().scene();
-  std::string title = "Force gauge";
-  if (const std::optional<GaugeFigures> figures = playback_->gauge().figures(scene.frame_step())) {
-    title += ": peak " + format_quantity(figures->peak, "N");
-    if (figures->plateau) title += ", sliding " + format_quantity(*figures->plateau, "N");
-  }
-  return title;
+  const std::optional<GaugeFigures> figures = playback_->gauge().figures(scene.frame_step());
+  if (!figures) return "";
+  std::string text = "peak " + format_quantity(figures->peak, "N");
+  text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
+  return text;
 }
 
 void Classroom::gauge_plot(ImVec2 corner, ImVec2 size) {
   const lessons::Lesson& lesson = playback_->lesson();
-  const double span = std::max(playback_->readings().duration, lesson.scene().time());
-  const Chart chart = gauge_chart(playback_->gauge(), lesson.scene().frame_step(), span, theme(window_.theme));
-  draw_chart(ImGui::GetWindowDrawList(), corner, size, chart, theme(window_.theme), *fonts_);
+  // The latest stretch's figures over the chart, as a class reads them off a sensor's screen.
+  const std::string figures = gauge_figures();
+  ImGui::SetCursorScreenPos(corner);
+  ImGui::PushTextWrapPos(0.0f);
+  shown_text(figures.c_str());
+  ImGui::PopTextWrapPos();
+  const float used = ImGui::GetCursorScreenPos().y - corner.y;
+  const Chart chart = gauge_chart(playback_->gauge(), lesson.scene().frame_step(), theme(window_.theme));
+  draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),
+             chart, theme(window_.theme), *fonts_);
 }
 
 }  // namespace frictionlab::ui

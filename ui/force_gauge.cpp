@@ -153,17 +153,18 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
   draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
 
-Chart gauge_chart(const GaugeRecord& record, double frame_step, double time_span, const Theme& theme) {
+Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& theme) {
   Chart chart;
   chart.title = "Force gauge";
   chart.plain = true;
-  chart.legend = Chart::Legend::inside;
+  // One line and the slip's shading, as the lesson's plots shade it: no legend to cover them.
+  chart.legend = Chart::Legend::none;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
   chart.y_label = "gauge (N)";
   ChartSeries reading;
-  reading.name = "gauge reading";
+  reading.name = "gauge";
   reading.colour = theme.hand;
   double highest = 0.0, latest = 0.0;
   for (std::size_t i = 0; i < record.samples().size(); ++i) {
@@ -194,9 +195,13 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, double time_span
   chart.mark_now = true;
   chart.now_colour = theme.now_marker;
   chart.now_x = latest;
+  // From a little before the hand took hold to now: a lesson that runs for minutes would squeeze
+  // a pull of a few seconds into a line.
+  const double first = record.empty() ? 0.0 : record.samples().front().t - frame_step;
+  const double span = std::max(latest - first, 1.0);
   chart.fixed_x = true;
-  chart.x_low = 0.0;
-  chart.x_high = std::max({time_span, latest, 1e-3});
+  chart.x_low = std::max(0.0, first - 0.1 * span);
+  chart.x_high = std::max(latest, first + span) + 0.05 * span;
   chart.fixed_y = true;
   chart.y_low = 0.0;
   chart.y_high = std::max(1.0, 1.15 * highest);

@@ -74,7 +74,7 @@ void avoid_gauge(const Scene& scene, const Camera& camera, float scale, LabelPla
 void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, const Theme& theme, const Fonts& fonts,
                 LabelPlacer& labels);
 
-// The gauge's reading against time, the stretches' slips shaded, the peak and plateau noted.
-Chart gauge_chart(const GaugeRecord& record, double frame_step, double time_span, const Theme& theme);
+// The gauge's reading against time over the stretches the hand pulled, the slips shaded.
+Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& theme);
 
 }  // namespace frictionlab::ui

@@ -49,8 +49,38 @@ const b2Body* measured_body(const lessons::Lesson& lesson) {
   return main_body(lesson.scene());
 }
 
+namespace {
+
+// Before the first step there are no contacts yet: a body set down on a surface (a box{} placed
+// `on` one) stands on the face its own angle gives, its lowest along its own up.
+std::optional<Surface> set_down_on(const b2Body* body) {
+  const b2Vec2 along = body->GetWorldVector(b2Vec2(1.0f, 0.0f)), up = body->GetWorldVector(b2Vec2(0.0f, 1.0f));
+  float lowest = 0.0f;
+  bool any = false;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() != b2Shape::e_polygon) continue;
+    const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+    for (int i = 0; i < polygon->m_count; ++i) {
+      const float height = b2Dot(body->GetWorldPoint(polygon->m_vertices[i]) - body->GetWorldCenter(), up);
+      lowest = any ? std::min(lowest, height) : height;
+      any = true;
+    }
+  }
+  if (!any) return std::nullopt;
+  Surface surface{body->GetWorldCenter() + lowest * up, along, up};
+  if (surface.along.x < 0.0f) surface.along = -surface.along;
+  return surface;
+}
+
+}  // namespace
+
 std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
   if (body == nullptr) return std::nullopt;
+  // A body given a velocity at t = 0 (thrown, launched) stands on nothing yet.
+  if (scene.frame() == 0) {
+    return body->GetLinearVelocity().Length() == 0.0f && body->GetAngularVelocity() == 0.0f ? set_down_on(body)
+                                                                                              : std::nullopt;
+  }
   for (const ContactMark& mark : contact_marks(scene)) {
     const b2Body* other = mark.body_a == body ? mark.body_b : mark.body_b == body ? mark.body_a : nullptr;
     if (other == nullptr || other->GetType() != b2_staticBody) continue;
@@ -61,6 +91,9 @@ std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
     if (surface.along.x < 0.0f || (surface.along.x == 0.0f && surface.along.y < 0.0f)) surface.along = -surface.along;
     surface.normal = b2Vec2(-surface.along.y, surface.along.x);
     if (b2Dot(surface.normal, body->GetWorldCenter() - surface.point) < 0.0f) surface.normal = -surface.normal;
+    // Under the centre of mass, not where the load is centred: friction shifts the load towards
+    // the leading edge of a sliding block (by mu_k·h/2), and a mark there would not be its place.
+    surface.point += b2Dot(body->GetWorldCenter() - surface.point, surface.along) * surface.along;
     return surface;
   }
   return std::nullopt;
@@ -96,8 +129,29 @@ void MeasuringTools::follow(const lessons::Lesson& lesson) {
 
 namespace {
 
-// The distance marks' step: a nice length about 90 pixels long.
-float mark_step(const Camera& camera, float scale) { return nice_length(90.0f * scale / camera.pixels_per_metre); }
+// The distance marks' step: a nice length about 120 pixels long.
+float mark_step(const Camera& camera, float scale) { return nice_length(120.0f * scale / camera.pixels_per_metre); }
+
+// Whether a label of `size` centred at `centre` would cover nothing the placer knows of and stay
+// in its view. A distance mark's number goes just under its tick or not at all: moved away it
+// would name another place.
+bool free_for(const LabelPlacer& labels, ImVec2 centre, ImVec2 size) {
+  const float pad = 2.0f;  // as the placer pads its labels
+  const ImVec4 box(centre.x - 0.5f * size.x - pad, centre.y - 0.5f * size.y - pad, centre.x + 0.5f * size.x + pad,
+                   centre.y + 0.5f * size.y + pad);
+  const ImVec4 view = labels.bounds();
+  if (box.x < view.x || box.y < view.y || box.z > view.z || box.w > view.w) return false;
+  for (const ImVec4& taken : labels.labels()) {
+    if (overlaps(box, taken)) return false;
+  }
+  for (const ImVec4& mark : labels.marks()) {
+    if (overlaps(box, mark)) return false;
+  }
+  for (const DrawnSegment& segment : labels.segments()) {
+    if (overlaps(box, segment)) return false;
+  }
+  return true;
+}
 
 // Whether the body's centre is in this lane's strip.
 bool in_lane(const Camera& camera, const b2Body* body) {
@@ -154,9 +208,17 @@ ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, 
   return {centre, tip(weight.downhill, weight.along), tip(weight.into, weight.across)};
 }
 
-std::string speed_text(const b2Body* body) {
-  return "v = " + format_quantity(static_cast<double>(body->GetLinearVelocity().Length()), "m/s");
+}  // namespace
+
+std::string speed_reading(const b2Body* body) {
+  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read: a resting
+  // block's 1e-9 m/s of rounding is 0.000.
+  char text[48];
+  std::snprintf(text, sizeof text, "v = %.3f m/s", static_cast<double>(body->GetLinearVelocity().Length()));
+  return text;
 }
+
+namespace {
 
 }  // namespace
 
@@ -212,7 +274,8 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
           char text[32];
           std::snprintf(text, sizeof text, "%g m", metres);
           const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text);
-          label(fonts.small, add(foot, mul(marks->inward, 12.0f * s + 0.5f * size.y + 2.0f)), text);
+          const ImVec2 wanted = add(foot, mul(marks->inward, 12.0f * s + 0.5f * size.y + 2.0f));
+          if (free_for(labels, wanted, ImVec2(size.x + 6.0f, size.y + 2.0f))) label(fonts.small, wanted, text);
         }
       }
     }
@@ -239,7 +302,7 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
   if (on.speed) {
     const b2AABB box = body_box(body);
     const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
-    const std::string text = speed_text(body);
+    const std::string text = speed_reading(body);
     const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
     label(fonts.body, ImVec2(top.x, top.y - 10.0f * s - 0.5f * size.y), text);
   }

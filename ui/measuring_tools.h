@@ -43,12 +43,16 @@ class Stopwatch {
 // (the free-body diagram's). Null when nothing moves.
 const b2Body* measured_body(const lessons::Lesson& lesson);
 
-// The surface a body stands on: a touching contact with a fixed body, where its load is centred,
-// its direction along the surface (x ≥ 0, rightwards), and the normal out of it towards the body.
+// The surface a body stands on: a touching contact with a fixed body, the point on it under the
+// body's centre of mass, its direction along the surface (x ≥ 0, rightwards), and the normal out of it towards the body.
+// At t = 0, before any contact, a body at rest stands on the face its own angle puts lowest.
 struct Surface {
   b2Vec2 point, along, normal;
 };
 std::optional<Surface> surface_under(const Scene& scene, const b2Body* body);
+
+// What the speed tool shows beside a body: its centre of mass's speed, "v = 0.092 m/s".
+std::string speed_reading(const b2Body* body);
 
 // The weight of a body on a slope split along and across it: m·g·sin θ downhill and m·g·cos θ
 // into the slope. None on a level surface (θ under half a degree) or off any fixed surface.
