@@ -74,6 +74,26 @@ std::optional<Surface> set_down_on(const b2Body* body) {
 
 }  // namespace
 
+namespace {
+
+// The fixed body's polygons projected on the surface's line: where the marks may run.
+void reach_of(const b2Body* fixed, Surface* surface) {
+  bool any = false;
+  for (const b2Fixture* fixture = fixed->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() != b2Shape::e_polygon) return;  // a chain or a circle: leave it unbounded
+    const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+    for (int i = 0; i < polygon->m_count; ++i) {
+      const float at = b2Dot(fixed->GetWorldPoint(polygon->m_vertices[i]) - surface->point, surface->along);
+      surface->low = any ? std::min(surface->low, at) : at;
+      surface->high = any ? std::max(surface->high, at) : at;
+      any = true;
+    }
+  }
+  if (!any) surface->low = -1e30f, surface->high = 1e30f;
+}
+
+}  // namespace
+
 std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
   if (body == nullptr) return std::nullopt;
   // A body given a velocity at t = 0 (thrown, launched) stands on nothing yet.
@@ -94,6 +114,7 @@ std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
     // Under the centre of mass, not where the load is centred: friction shifts the load towards
     // the leading edge of a sliding block (by mu_k·h/2), and a mark there would not be its place.
     surface.point += b2Dot(body->GetWorldCenter() - surface.point, surface.along) * surface.along;
+    reach_of(other, &surface);
     return surface;
   }
   return std::nullopt;
@@ -178,6 +199,10 @@ std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& 
     low = std::min(low, b2Dot(corner - base, surface.along));
     high = std::max(high, b2Dot(corner - base, surface.along));
   }
+  // No further than the surface goes (the foot and the top of a slope).
+  const float shift = b2Dot(surface.point - base, surface.along);
+  low = std::max(low, surface.low + shift);
+  high = std::min(high, surface.high + shift);
   if (!(high > low) || (high - low) / step > 400.0f) return std::nullopt;
   Ruler ruler;
   const ImVec2 inward_world = camera.to_screen(base - surface.normal);
@@ -251,10 +276,10 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
                           const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
-  const auto label = [&](ImFont* font, ImVec2 wanted, const std::string& text) {
+  const auto label = [&](ImFont* font, ImVec2 wanted, const std::string& text, ImU32 colour = 0) {
     const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
     const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f));
-    draw_label(draw, font, at, theme.text, theme.panel, text.c_str());
+    draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
   };
   if (on.stopwatch && first_lane) {
     const std::string text = stopwatch.text(scene.time());
@@ -293,7 +318,7 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
         const float span = std::max(1e-3f, length(direction));
         direction = mul(direction, 1.0f / span);
         label(fonts.small, add(tip, ImVec2(direction.x * (0.5f * size.x + 8.0f * s), direction.y * (0.5f * size.y + 8.0f * s))),
-              text);
+              text, theme.force[static_cast<int>(ForceKind::weight)]);
       };
       beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + format_quantity(weight->along, "N"));
       beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));

@@ -48,6 +48,9 @@ const b2Body* measured_body(const lessons::Lesson& lesson);
 // At t = 0, before any contact, a body at rest stands on the face its own angle puts lowest.
 struct Surface {
   b2Vec2 point, along, normal;
+  // How far the fixed body reaches along the surface from `point`, m (a slope's top ends the
+  // marks; a ground runs on). Unbounded when the body is not known (set down at t = 0).
+  float low = -1e30f, high = 1e30f;
 };
 std::optional<Surface> surface_under(const Scene& scene, const b2Body* body);
 
