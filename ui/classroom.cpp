@@ -272,6 +272,8 @@ void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
     }
     const b2Vec2 target = camera.to_world(io.MousePos);
     if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
+    // "press Space to play" is done with once it plays.
+    if (playback_->playing() && status_.rfind("Holding ", 0) == 0) status_.clear();
   }
   // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
 }

@@ -56,7 +56,7 @@ void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, 
   if (gauge_here) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
 }
 
-std::string Classroom::gauge_plot_title() const { return "Force gauge"; }
+std::string Classroom::gauge_plot_title() const { return "Force gauge (N)"; }
 
 std::string Classroom::gauge_figures() const {
   const Scene& scene = playback_->lesson().scene();
@@ -72,9 +72,13 @@ void Classroom::gauge_plot(ImVec2 corner, ImVec2 size) {
   // The latest stretch's figures over the chart, as a class reads them off a sensor's screen.
   const std::string figures = gauge_figures();
   ImGui::SetCursorScreenPos(corner);
+  // On one line: in the small font when the body's does not fit.
+  const bool small = ImGui::CalcTextSize(figures.c_str()).x > size.x;
+  if (small) ImGui::PushFont(fonts_->small);
   ImGui::PushTextWrapPos(0.0f);
   shown_text(figures.c_str());
   ImGui::PopTextWrapPos();
+  if (small) ImGui::PopFont();
   const float used = ImGui::GetCursorScreenPos().y - corner.y;
   const Chart chart = gauge_chart(playback_->gauge(), lesson.scene().frame_step(), theme(window_.theme));
   draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),

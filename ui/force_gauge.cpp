@@ -144,11 +144,13 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
                   theme.hand, 1.0f * s);
   }
   draw->AddCircle(add(shape.case_end, mul(shape.along, 5.0f * s)), 5.0f * s, theme.hand, 0, 2.0f * s);
-  // Its reading beyond the ring, or the nearest free place.
+  // Its reading on the case's upper side, as a scale's window shows it, or the nearest free place.
   const std::string text = reading_text(scene);
   const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-  const ImVec2 wanted = add(shape.case_end, mul(shape.along, 14.0f * s + 0.5f * std::abs(shape.along.x) * size.x +
-                                                                     0.5f * std::abs(shape.along.y) * size.y));
+  const ImVec2 middle = mul(add(shape.hand, shape.case_end), 0.5f);
+  const ImVec2 up = across.y <= 0.0f ? across : mul(across, -1.0f);
+  const ImVec2 wanted = add(middle, mul(up, shape.half_width + 6.0f * s + 0.5f * std::abs(up.y) * size.y +
+                                                0.5f * std::abs(up.x) * size.x));
   const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f));
   draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
@@ -162,7 +164,7 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
-  chart.y_label = "gauge (N)";
+  chart.y_label = "";  // the panel's title says it: "Force gauge (N)"
   ChartSeries reading;
   reading.name = "gauge";
   reading.colour = theme.hand;
