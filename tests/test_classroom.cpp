@@ -974,6 +974,11 @@ TEST(Classroom, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   settings.speed = 0.25;
   settings.width = 1920;
   settings.full_screen = true;  // a projector's whole screen, kept for the next class
+  settings.tools.stopwatch = true;  // the Tools menu's choices, each on its own
+  settings.tools.speed = true;
+  ASSERT_TRUE(save_settings(settings, path));
+  EXPECT_EQ(load_settings(path), settings);
+  settings.tools = ToolSettings{false, true, false, true};
   ASSERT_TRUE(save_settings(settings, path));
   EXPECT_EQ(load_settings(path), settings);
   std::ofstream(path) << "theme = pink\nspeed = 99\nprojector = on\ngarbage\n";

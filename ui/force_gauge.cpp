@@ -26,12 +26,6 @@ std::vector<HandStretch> GaugeRecord::stretches(double frame_step) const {
   return found;
 }
 
-bool GaugeRecord::pulled_at(long frame) const {
-  const auto at = std::lower_bound(samples_.begin(), samples_.end(), frame,
-                                   [](const GaugeSample& sample, long f) { return sample.frame < f; });
-  return at != samples_.end() && at->frame == frame;
-}
-
 std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
   if (samples_.empty()) return std::nullopt;
   // The latest stretch: back from the last sample while the frames run on without a gap.

@@ -55,8 +55,6 @@ class GaugeRecord {
   bool empty() const { return samples_.empty(); }
   // Consecutive frames of samples, each a stretch; `frame_step` is the lesson's 1/hz.
   std::vector<HandStretch> stretches(double frame_step) const;
-  // Whether the hand pulled during the step that ended at this frame.
-  bool pulled_at(long frame) const;
   // The latest stretch's figures; none before any sample.
   std::optional<GaugeFigures> figures(double frame_step) const;
 
