@@ -233,6 +233,11 @@ TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
   EXPECT_GT(scene.time(), paused_at);
   EXPECT_DOUBLE_EQ(hands.classroom().tools().stopwatch.reading(scene.time()), paused_at - started);
   EXPECT_EQ(hands.classroom().tools().stopwatch.text(scene.time()).rfind("stopwatch ", 0), 0u);
+  // R: a new run from t = 0, and a stopwatch cleared for it.
+  hands.key(Key::r);
+  EXPECT_EQ(hands.lesson().scene().time(), 0.0);
+  EXPECT_EQ(hands.classroom().tools().stopwatch.reading(0.0), 0.0);
+  EXPECT_TRUE(hands.classroom().tools().stopwatch.laps().empty());
 }
 
 // The speed shown beside the main body is its velocity: push's block sliding at t = 3 s, read

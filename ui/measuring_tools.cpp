@@ -144,6 +144,10 @@ std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body) 
 
 void MeasuringTools::follow(const lessons::Lesson& lesson) {
   const Scene& scene = lesson.scene();
+  // Back to t = 0 (R, a rebuild, another lesson) is a new run: a stopwatch started in the old
+  // one would read from a time that is not in this one.
+  if (scene.frame() == 0 && last_frame_ > 0) stopwatch.reset();
+  last_frame_ = scene.frame();
   if (scene.frame() != 0 && origin_) return;
   if (const std::optional<Surface> surface = surface_under(scene, measured_body(lesson))) origin_ = surface->point;
 }

@@ -76,7 +76,8 @@ class MeasuringTools {
   Stopwatch stopwatch;
 
   // Each frame before drawing: where distances count from (the main body's place on its surface
-  // at t = 0, taken whenever the lesson is at t = 0).
+  // at t = 0, taken whenever the lesson is at t = 0), and the stopwatch cleared when the lesson
+  // goes back to t = 0 (a new run).
   void follow(const lessons::Lesson& lesson);
   void avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
              LabelPlacer& labels) const;
@@ -86,6 +87,7 @@ class MeasuringTools {
 
  private:
   std::optional<b2Vec2> origin_;
+  long last_frame_ = 0;  // the lesson's frame when last followed
 };
 
 }  // namespace frictionlab::ui
