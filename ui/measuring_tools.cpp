@@ -216,9 +216,11 @@ std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& 
   const ImVec2 offset = mul(ruler.inward, 6.0f * scale);
   ruler.from = add(camera.to_screen(base + low * surface.along), offset);
   ruler.to = add(camera.to_screen(base + high * surface.along), offset);
-  for (float k = std::ceil(low / step); k * step <= high; k += 1.0f) {
-    ruler.ticks.push_back({add(camera.to_screen(base + (k * step) * surface.along), offset),
-                           std::abs(static_cast<double>(k * step))});
+  // Counted in whole ticks: far from the start a float count would stop growing.
+  const double first = std::ceil(static_cast<double>(low) / step), last = std::floor(static_cast<double>(high) / step);
+  for (double k = first; k <= last && k - first < 400.0; k += 1.0) {
+    const double metres = k * static_cast<double>(step);
+    ruler.ticks.push_back({add(camera.to_screen(base + static_cast<float>(metres) * surface.along), offset), std::abs(metres)});
   }
   return ruler;
 }
