@@ -129,6 +129,18 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
   // The peak is static, the plateau kinetic: the drop a class sees is (mu_s − mu_k)·m·g.
   EXPECT_NEAR(figures->peak - *figures->plateau, (mu_s - mu_k) * m * g, 0.1 * (mu_s - mu_k) * m * g);
+  // Back through the time bar and forward again: the run is replayed, and the gauge reads the
+  // same, sample for sample.
+  const std::vector<GaugeSample> recorded = gauge.samples();
+  const double end = scene.time();
+  hands.classroom().playback().scrub_to(0.5);
+  EXPECT_LT(gauge.samples().size(), recorded.size());
+  hands.classroom().playback().scrub_to(end);
+  ASSERT_EQ(gauge.samples().size(), recorded.size());
+  for (std::size_t i = 0; i < recorded.size(); ++i) {
+    EXPECT_EQ(gauge.samples()[i].frame, recorded[i].frame);
+    EXPECT_EQ(gauge.samples()[i].force, recorded[i].force);
+  }
   std::printf("gauge: peak %.4f N at %.3f s (mu_s·m·g %.4f N), plateau %.4f N over %.2f–%.2f s (mu_k·m·g %.4f N), "
               "hand %.3f m/s\n",
               figures->peak, figures->peak_time, mu_s * m * g, *figures->plateau, figures->plateau_from,
