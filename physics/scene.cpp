@@ -205,7 +205,8 @@ void Scene::grab(b2Body* body, b2Vec2 local_point, b2Vec2 target) {
     throw InvalidInput("grab: only a body that moves freely (dynamic) can be taken by the hand");
   }
   release();
-  grab_ = std::make_unique<Grab>(Grab{body, target});
+  // The gauge starts slack: its far end where the hand took hold.
+  grab_ = std::make_unique<Grab>(Grab{body, target, body->GetWorldPoint(local_point)});
   applied_.push_back({grab_name, body, local_point, {}});
   applied_.back().force = [this, index = applied_.size() - 1](double) { return grab_force(applied_[index]); };
   forces_applied_.push_back({0.0f, 0.0f});
@@ -225,16 +226,28 @@ void Scene::release() {
   torques_applied_.pop_back();
 }
 
+double Scene::grab_omega() const {
+  const double h = frame_step() / settings_.substeps;
+  return std::min(2.0 * b2_pi * grab_gauge_hz, 0.5 / h);
+}
+
+double Scene::grab_stiffness() const {
+  if (!grab_) return 0.0;
+  const double omega = grab_omega();
+  return static_cast<double>(grab_->body->GetMass()) * omega * omega;
+}
+
 b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
   const b2Body& body = *hand.body;
   const b2Vec2 point = body.GetWorldPoint(hand.local_point);
   const b2Vec2 velocity = body.GetLinearVelocityFromWorldPoint(point);
-  // Critically damped at 3 Hz, or slower when the step is long, so the explicit pull stays
-  // stable at any step rate (omega·h <= 0.5).
-  const double h = frame_step() / settings_.substeps;
-  const double omega = std::min(2.0 * b2_pi * 3.0, 0.5 / h);
+  // Damped against the body's own velocity, not the stretch's rate: the hand's end moves in
+  // bursts as the mouse is read once a display frame, and a damper on its speed would put each
+  // burst into the reading. A body held still (stuck) feels the spring alone, so the reading
+  // rises smoothly to static friction's limit.
+  const double omega = grab_omega();
   const double mass = body.GetMass();
-  b2Vec2 force = static_cast<float>(mass * omega * omega) * (grab_->target - point) -
+  b2Vec2 force = static_cast<float>(mass * omega * omega) * (grab_->hand - point) -
                  static_cast<float>(2.0 * mass * omega) * velocity;
   const double cap = 20.0 * mass * gravity_.Length();
   if (cap > 0.0 && force.Length() > cap) force *= static_cast<float>(cap / force.Length());
@@ -503,6 +516,8 @@ void Scene::advance(double t, float h, double t_end, bool move) {
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
   listener_.finish_step();
+  // The hand's end of the gauge closes on the mouse, exactly for a mouse held still over the step.
+  if (grab_ && move) grab_->hand += static_cast<float>(1.0 - std::exp(-h / grab_hand_lag)) * (grab_->target - grab_->hand);
   ++world_steps_;
   if (std::string error = listener_.take_error(); !error.empty()) throw InvalidInput(error);
   for (const auto& [body, transform] : held) body->SetTransform(transform.p, transform.q.GetAngle());

@@ -167,20 +167,34 @@ class Scene {
   // (the limits a body's starting velocity has), naming the body.
   void set_velocity(b2Body* body, b2Vec2 velocity);
 
-  // A hand on a dynamic body, as the mouse gives it: a stiff, damped pull of the grabbed point
-  // towards `target`, capped at 20·m·g, applied like any applied force (drawn, and its work
-  // counted in the ledger). Releasing leaves the body its velocity: that is how a push is given.
+  // A hand on a dynamic body, as the mouse gives it, pulling through a force gauge: a spring
+  // scale from the grabbed point to the hand's end of it, which follows `target` (the mouse)
+  // within grab_hand_lag s, so the jumps of a mouse read once a display frame become a steady
+  // pull. The scale is stiff but finite (it swings at grab_gauge_hz with the body's mass on it,
+  // or slower when the step is long, so the explicit pull stays stable: omega·h <= 0.5) and
+  // critically damped against the body's velocity; its pull is capped at 20·m·g. It is applied like
+  // any applied force (drawn, its work counted in the ledger), so the gauge reads the force
+  // actually applied. Releasing leaves the body its velocity: that is how a push is given.
+  static constexpr double grab_gauge_hz = 1.5;
+  static constexpr double grab_hand_lag = 0.08;  // s
   void grab(b2Body* body, b2Vec2 local_point, b2Vec2 target);
   void move_grab(b2Vec2 target);
   void release();
   b2Body* grabbed() const { return grab_ ? grab_->body : nullptr; }
   b2Vec2 grab_target() const { return grab_ ? grab_->target : b2Vec2{0.0f, 0.0f}; }
+  // Where the hand holds the gauge's far end now (the grabbed point at the moment of grabbing).
+  b2Vec2 grab_hand() const { return grab_ ? grab_->hand : b2Vec2{0.0f, 0.0f}; }
+  // The gauge's stiffness for the body held, N/m (0 with no hand).
+  double grab_stiffness() const;
 
  private:
   struct Grab {
     b2Body* body;
     b2Vec2 target;
+    b2Vec2 hand;  // the gauge's far end, following target
   };
+  // The gauge's angular frequency with the body's mass on it, rad/s.
+  double grab_omega() const;
   b2Vec2 grab_force(const AppliedForce& hand) const;
   struct Driver {
     b2Body* body;

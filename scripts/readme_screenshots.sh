@@ -67,3 +67,32 @@ predict_shots() {
   echo docs/screenshots/window_predict.png docs/screenshots/window_reveal.png
 }
 predict_shots
+
+# The force gauge and the measuring tools, in projector mode at 1920 × 1080, driven by a hand on
+# the real window (xdotool on the same Xvfb display). The window saves them itself (Ctrl+S) into
+# the folder it was started in.
+live() {  # live NAME "settings lines" "xdotool steps" frictionlab-arguments...
+  local name=$1 settings=$2 steps=$3
+  shift 3
+  mkdir -p "$scratch/$name/frictionlab" "$scratch/$name/out"
+  printf '%b' "$settings" > "$scratch/$name/frictionlab/settings.ini"
+  local program
+  program=$(realpath build/app/frictionlab)
+  (cd "$scratch/$name/out" && XDG_CONFIG_HOME="$scratch/$name" xvfb-run -a -s '-screen 0 1920x1080x24' \
+    bash -c "'$program' $* & window=\$!; sleep 4; $steps; xdotool key ctrl+s; sleep 1.5; kill \$window")
+  mv "$(ls "$scratch/$name/out"/*.png | head -1)" "docs/screenshots/$name.png"
+  echo "docs/screenshots/$name.png"
+}
+projector="help = off\npredictions = off\nprojector = on\nwidth = 1920\nheight = 1080\n"
+# push's 10 kg block (its own push at its slowest, 0.2 N/s) pulled by hand at about 4 cm/s through
+# the gauge: a peak at mu_s·m·g = 39.2 N, then the plateau at mu_k·m·g = 29.4 N. (396, 397) is the
+# block's centre in this layout; read it off a first picture if the layout changes.
+pull='xdotool mousemove 396 397; sleep 0.5; xdotool mousedown 1; sleep 0.3; xdotool key space;
+  for i in $(seq 1 70); do xdotool mousemove $((396 + 2 * i)) 397; sleep 0.02; done; sleep 0.2'
+live window_force_gauge "${projector}distance_marks = on\nspeed_readout = on\n" "$pull" \
+  push --set mass=10 --set push_rate=0.2
+# The incline's block sliding, every tool on: the stopwatch started with the run (W) and a lap
+# taken (L); the run pauses at its end, 1 s.
+watch='xdotool key w space; sleep 0.6; xdotool key l; sleep 1.5'
+live window_tools "${projector}stopwatch = on\ndistance_marks = on\nspeed_readout = on\nweight_components = on\n" \
+  "$watch" incline

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -19,6 +20,7 @@
 #include "ui/headless_render.h"
 #include "ui/imgui_host.h"
 #include "ui/classroom.h"
+#include "ui/measuring_tools.h"
 #include "ui/theme.h"
 
 namespace frictionlab::ui {
@@ -201,6 +203,84 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
 std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);
+
+// The window with the force gauge pulling and every measuring tool on: the gauge's reading, the
+// stopwatch, the speed, the distance marks' numbers and the weight's components along a slope
+// keep clear of each other, of the lesson's labels and arrows and of the inset, and the gauge's
+// plot and the theory table's hand-pulled rows are whole, light and dark, in projector mode too.
+TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const char* name : {"push", "incline", "spring_pull"}) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(name);
+      if (std::string(name) == "incline") options.overrides = {{"angle", "25"}};
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.theme = theme;
+      options.window.tools = ToolSettings{true, true, true, true};
+      Classroom window(options);
+      const auto frame = [&](double wall, FrameRecord* record) {
+        gl.make_current();
+        const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        window.frame(fonts, display, wall, record);
+        ImGui::Render();
+      };
+      frame(0.0, nullptr);
+      // The stopwatch running with a lap, and the hand pulling the main body to the right for
+      // a second and a half, still held when the frame is recorded.
+      window.key_pressed(Key::w, false);
+      const b2Body* body = measured_body(window.playback().lesson());
+      const ImVec2 held = window.world_camera().to_screen(body->GetWorldCenter());
+      ImGuiIO& io = ImGui::GetIO();
+      io.MousePos = held;
+      frame(0.0, nullptr);
+      io.MouseDown[0] = true;
+      frame(0.0, nullptr);
+      window.key_pressed(Key::space, false);
+      for (int i = 1; i <= 90; ++i) {
+        io.MousePos = ImVec2(held.x + static_cast<float>(i), held.y);
+        frame(1.0 / 60.0, nullptr);
+        if (i == 45) window.key_pressed(Key::l, false);
+      }
+      ASSERT_NE(window.playback().lesson().scene().grabbed(), nullptr) << name;
+      FrameRecord record;
+      frame(0.0, &record);
+      std::string where = std::string(name) + " with the gauge and tools, window " + screen.name;
+      if (theme == ThemeName::dark) where += ", dark";
+      check_layout(record, window.playback().lesson(), where);
+      check_texts(record, where);
+      // The new rectangles are the layout's: the gauge's coil, from the point held to the hand's
+      // end, is among what labels keep off, and the stopwatch's label is placed in the lane's
+      // top left corner.
+      ASSERT_EQ(record.lanes.size(), 1u) << where;
+      const FrameRecord::Lane& lane = record.lanes.front();
+      const Scene& scene = window.playback().lesson().scene();
+      const ImVec2 hook = lane.camera.to_screen(scene.grabbed()->GetWorldPoint(scene.applied_forces().back().local_point));
+      const ImVec2 hand = lane.camera.to_screen(scene.grab_hand());
+      const bool coil = std::any_of(lane.arrows.begin(), lane.arrows.end(), [&](const DrawnSegment& segment) {
+        return std::abs(segment.from.x - hook.x) < 1.0f && std::abs(segment.from.y - hook.y) < 1.0f &&
+               std::abs(segment.to.x - hand.x) < 1.0f && std::abs(segment.to.y - hand.y) < 1.0f;
+      });
+      EXPECT_TRUE(coil) << where << ": the gauge's coil is not in the layout";
+      const float corner = 30.0f * window.ui_scale(display);
+      const bool stopwatch = std::any_of(lane.labels.begin(), lane.labels.end(), [&](const ImVec4& label) {
+        return label.x >= lane.camera.origin.x && label.x < lane.camera.origin.x + corner &&
+               label.y >= lane.camera.origin.y && label.y < lane.camera.origin.y + corner;
+      });
+      EXPECT_TRUE(stopwatch) << where << ": no label in the lane's top left corner (the stopwatch)";
+      io.MouseDown[0] = false;
+      frame(0.0, nullptr);
+    }
+  }
+}
 
 }  // namespace
 }  // namespace frictionlab::ui

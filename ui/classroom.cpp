@@ -91,6 +91,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   playback_->watch_file(wall_seconds);
   try_failed_script(wall_seconds);
 
+  tools_.on = window_.tools;
+  tools_.follow(playback_->lesson());
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
@@ -98,6 +100,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - transport_height));
+  hold_view(origin, area, s);
 
   FrameStyle style;
   style.theme = window_.theme;
@@ -109,6 +112,12 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
     parameters_panel(corner, size, folded);
   };
+  style.world_tools = [this](bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                             LabelPlacer& labels) { world_tools(avoid, draw, camera, lane, newtons_to_pixels, labels); };
+  if (!playback_->gauge().empty()) {
+    style.extra_plot_title = gauge_plot_title();
+    style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
+  }
   style.more_tabs = [this] {
     cheapest_setting_tab();
     stability_map_tab();
@@ -159,12 +168,33 @@ void Classroom::handle_keys() {
   if (hit(Key::f1, false)) window_.help = !window_.help;
   if (hit(Key::p, false)) window_.projector = !window_.projector;
   if (hit(Key::t, false) && theory_hidden()) predictions_.revealed = true;
+  const double now = playback_->lesson().scene().time();
+  if (hit(Key::w, false)) {
+    window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
+    tools_.stopwatch.start_stop(now);
+  }
+  if (hit(Key::l, false)) tools_.stopwatch.lap(now);
   if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
 bool Classroom::idle() const {
   const bool searching = recommender_ != nullptr && !recommender_->done();
   return !playback_->playing() && !searching && !hand_held_ && !panning_from_ && !screenshot_request_;
+}
+
+void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {
+  if (!held_view_) return;
+  if (!hand_held_ || playback_->lesson().scene().grabbed() == nullptr) {
+    view_adjust_.pan = held_view_->pan;
+    held_view_.reset();
+    return;
+  }
+  const std::vector<Camera> cameras =
+      ui::world_cameras(playback_->lesson(), playback_->framing(), size, scale, origin, view_adjust_);
+  if (drag_lane_ >= cameras.size()) return;
+  // The same world point under the same screen point: the mouse's place means what it meant.
+  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].to_world(held_view_->anchor);
+  if (shift.IsValid()) view_adjust_.pan += shift;
 }
 
 const Camera& Classroom::world_camera_at(ImVec2 point) const {
@@ -213,6 +243,7 @@ void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
         if (fixture->TestPoint(point)) {
           playback_->grab(name, body->GetLocalPoint(point), point);
           hand_held_ = true;
+          held_view_ = HeldView{camera.centre, camera.anchor, view_adjust_.pan};
           if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
           break;
         }
@@ -243,17 +274,10 @@ void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
     }
     const b2Vec2 target = camera.to_world(io.MousePos);
     if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
+    // "press Space to play" is done with once it plays.
+    if (playback_->playing() && status_.rfind("Holding ", 0) == 0) status_.clear();
   }
-  if (b2Body* body = scene.grabbed()) {
-    // The hand: a line from the point held to where it pulls towards.
-    const Theme& colours = theme(window_.theme);
-    const b2Vec2 held = body->GetWorldPoint(scene.applied_forces().back().local_point);
-    const ImVec2 target = camera.to_screen(scene.grab_target());
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
-    draw->AddLine(camera.to_screen(held), target, colours.hand, 2.0f * scale);
-    draw->AddCircleFilled(camera.to_screen(held), 4.0f * scale, colours.hand);
-    draw->AddCircle(target, 7.0f * scale, colours.hand, 0, 2.0f * scale);
-  }
+  // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
 }
 
 void Classroom::change_settings(const StepSettings& settings) {
@@ -322,6 +346,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     sliding_.reset();
     hand_held_ = false;
     view_adjust_ = {};
+    held_view_.reset();
     panning_from_.reset();
     failed_script_.clear();
     return "";
@@ -393,11 +418,22 @@ std::string Classroom::export_history() {
     const std::string& unit = lesson.probe_unit(probe.name);
     csv << ',' << probe.name << (unit.empty() ? "" : " (" + unit + ")");
   }
-  csv << ",any_contact_slipping\n";
+  // The mouse's hand: whether it pulled in the step that ended at the row's time, and what its
+  // force gauge read (empty where it did not pull).
+  csv << ",any_contact_slipping,hand_pulled,gauge (N)\n";
+  const std::vector<GaugeSample>& gauge = playback_->gauge().samples();
+  std::size_t next_sample = 0;
   for (std::size_t i = 0; i < scene.times().size(); ++i) {
     csv << scene.times()[i];
     for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
-    csv << ',' << static_cast<int>(scene.slipping()[i]) << '\n';
+    csv << ',' << static_cast<int>(scene.slipping()[i]);
+    const long frame = static_cast<long>(i) + 1;  // row i is the end of the scene's frame i + 1
+    while (next_sample < gauge.size() && gauge[next_sample].frame < frame) ++next_sample;
+    if (next_sample < gauge.size() && gauge[next_sample].frame == frame) {
+      csv << ",1," << gauge[next_sample].force << '\n';
+    } else {
+      csv << ",0,\n";
+    }
   }
   const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
   const std::string text = csv.str();

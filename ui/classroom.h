@@ -23,6 +23,7 @@
 #include "ui/chart.h"
 #include "ui/frame.h"
 #include "ui/keys.h"
+#include "ui/measuring_tools.h"
 #include "ui/playback.h"
 #include "ui/predictions.h"
 #include "ui/settings.h"
@@ -81,6 +82,8 @@ class Classroom {
   bool idle() const;
   // What the status line says now (saved files, failures to save).
   const std::string& status() const { return status_; }
+  // The measuring tools (Tools menu): which are on, and the stopwatch.
+  const MeasuringTools& tools() const { return tools_; }
   // A script named on the command line that does not build yet: its path, "" when none.
   const std::string& failed_script() const { return failed_script_; }
   const std::string& failed_error() const { return failed_error_; }
@@ -122,6 +125,14 @@ class Classroom {
   void handle_keys();
   void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
+  void tools_menu();
+  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
+  // and the gauge's plot.
+  void world_tools(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                   LabelPlacer& labels);
+  void gauge_plot(ImVec2 corner, ImVec2 size);
+  std::string gauge_plot_title() const;
+  std::string gauge_figures() const;  // "peak 39.4 N   sliding 29.1 N"; "" before the hand pulls
   void transport_bar(ImVec2 corner, ImVec2 size);
   // The transport bar's words, and its height: one row, or two when the words do not fit
   // beside the time bar.
@@ -174,6 +185,7 @@ class Classroom {
 
   std::unique_ptr<Playback> playback_;
   WindowSettings window_;
+  MeasuringTools tools_;
   std::set<std::string> lock_;
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
@@ -182,6 +194,18 @@ class Classroom {
   ViewAdjust view_adjust_;
   std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
   std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
+  // While the hand pulls, the view holds still: a view that follows the body would carry the
+  // world point under a still mouse along with it, and the hand would chase the body it pulls.
+  // The world point at the drag lane's anchor when the hand took hold, that anchor on the screen
+  // (a line of status under the transport bar moves it), and the pan before it (given back on
+  // letting go).
+  struct HeldView {
+    b2Vec2 centre;
+    ImVec2 anchor;
+    b2Vec2 pan;
+  };
+  std::optional<HeldView> held_view_;
+  void hold_view(ImVec2 origin, ImVec2 size, float scale);
 
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;

@@ -106,6 +106,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.revealed = true;
     ImGui::EndMenu();
   }
+  tools_menu();
   // Which file is running, so a student knows which script to edit.
   const std::string& path = playback_->lesson().path();
   const float width = ImGui::CalcTextSize(path.c_str()).x;
@@ -133,6 +134,8 @@ void Classroom::help_panel() {
         {"D", "dark or light theme"},
         {"T", "reveal the theory after the class's predictions"},
         {"F11", "full screen"},
+        {"W", "start / stop the stopwatch (lesson time)"},
+        {"L", "the stopwatch's lap"},
         {"F1", "this help"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
@@ -148,13 +151,21 @@ void Classroom::help_panel() {
     ImGui::Separator();
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(
-        "Mouse: drag a body to pull it with your hand; let go while it moves to give it a push. The wheel zooms, a "
+        "Mouse: drag a body to pull it with your hand through a force gauge (a spring scale): its reading in "
+        "newtons is drawn beside it and plotted under the world. Pull slowly along a level floor: the peak is "
+        "static friction (\u03bcs\u00b7m\u00b7g), the plateau while it slides kinetic friction (\u03bck\u00b7m\u00b7g); the "
+        "theory table marks the run hand-pulled. Let go while it moves to give it a push. The wheel zooms, a "
         "drag on empty space pans, a double click there gives the lesson's view back. Drag a slider, or "
         "type an exact value in the box beside it and press Enter (Ctrl+click a slider that has no box); the "
         "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
         "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
         "until you change something.");
+    ImGui::TextUnformatted(
+        "Tools menu: a stopwatch on the lesson's clock (W starts and stops it, L takes a lap; slow motion and pauses "
+        "do not fool it), distance marks along the floor or the slope from where the main body stood at t = 0, "
+        "the main body's speed, and its weight split along and across a slope (m\u00b7g\u00b7sin \u03b8, "
+        "m\u00b7g\u00b7cos \u03b8). They stay on for the next class.");
     ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
                             ". Settings are kept in " + settings_folder() + ".")
                                .c_str());

@@ -220,8 +220,10 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
                             name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
       }
+      if (style.world_tools) style.world_tools(true, draw, camera, lane, newtons_to_pixels, labels);
       draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels,
                  cameras.size() > 1 ? &lane_bodies[lane] : nullptr);
+      if (style.world_tools) style.world_tools(false, draw, camera, lane, newtons_to_pixels, labels);
       if (style.record != nullptr) {
         style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks()});
         style.record->inset = inset;
@@ -246,14 +248,16 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
 
   // The plots side by side under the world.
   const auto& plots = lesson.plots();
-  if (!plots.empty()) {
+  // The window's extra plot (the force gauge) comes last.
+  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
+  if (plot_count > 0) {
     const double time_span = std::max(readings.duration, lesson.scene().time());
     // Up to three side by side; more go on a second row.
-    const std::size_t per_row = std::min<std::size_t>(plots.size(), 3);
-    const std::size_t rows_of_plots = (plots.size() + per_row - 1) / per_row;
+    const std::size_t per_row = std::min<std::size_t>(plot_count, 3);
+    const std::size_t rows_of_plots = (plot_count + per_row - 1) / per_row;
     const float width = layout.plots_size.x / static_cast<float>(per_row);
     const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
-    for (std::size_t i = 0; i < plots.size(); ++i) {
+    for (std::size_t i = 0; i < plot_count; ++i) {
       const std::size_t column = i % per_row, row = i / per_row;
       const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(column),
                           layout.plots_corner.y + height * static_cast<float>(row));
@@ -262,7 +266,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const std::string id = "plot" + std::to_string(i);
       // A title longer than its title bar (large text, three plots in a row) goes inside the
       // panel instead, wrapped over the chart.
-      const std::string& title = plots[i].title;
+      const bool extra = i == plots.size();
+      const std::string& title = extra ? style.extra_plot_title : plots[i].title;
       const bool title_inside =
           ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
       if (begin_panel(id.c_str(), title_inside ? "" : title.c_str(), corner, size)) {
@@ -272,8 +277,12 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
           ImGui::PopTextWrapPos();
         }
         const ImVec2 area = ImGui::GetContentRegionAvail();
-        draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                  fonts, !style.theory_hidden);
+        if (extra) {
+          style.extra_plot(ImGui::GetCursorScreenPos(), area);
+        } else {
+          draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
+                    fonts, !style.theory_hidden);
+        }
       }
       end_panel();
     }

@@ -77,6 +77,16 @@ struct FrameStyle {
   std::function<void()> predictions;
   std::function<float(float width)> predictions_height;
   bool theory_hidden = false;
+  // The window's own drawing in each lane of the world (the force gauge, the measuring tools):
+  // called with `avoid` before the lesson's labels are placed, to tell the placer what it will
+  // draw, and again without, after the world is drawn, to draw it and place its labels.
+  std::function<void(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                     LabelPlacer& labels)>
+      world_tools;
+  // One more plot after the lesson's (the force gauge's reading), drawn in its panel's inside;
+  // its title. None when empty.
+  std::string extra_plot_title;
+  std::function<void(ImVec2 corner, ImVec2 size)> extra_plot;
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and

@@ -171,7 +171,7 @@ std::string with_unit(double value, const std::string& unit) {
 struct TheoryCells {
   struct Cells {
     std::string predicted, measured, error;
-    bool measured_yet, passes;
+    bool measured_yet, passes, hand_pulled;
   };
   std::vector<Cells> cells;
   float widest[3];
@@ -187,7 +187,7 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows) {
   float* widest = table.widest;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
-                            row.measured_yet, row.passes};
+                            row.measured_yet, row.passes, row.hand_pulled && !row.passes};
     if (row.measured_yet) {
       cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
       if (row.numeric) {
@@ -198,6 +198,8 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows) {
       } else {
         cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
       }
+      // Not a failure: the hand's pull is in no prediction (the caveat above says when it pulled).
+      if (row.hand_pulled && !row.passes) cell.error = "hand-pulled";
     }
     widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
     widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
@@ -283,7 +285,11 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         }
         shown_text(cell.measured.c_str());
         ImGui::TableNextColumn();
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.error.c_str());
+        if (cell.hand_pulled) {
+          ImGui::TextDisabled("%s", cell.error.c_str());
+        } else {
+          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.error.c_str());
+        }
         note_text(cell.error.c_str());
       }
       ImGui::EndTable();

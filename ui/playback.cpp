@@ -61,6 +61,7 @@ void Playback::after_rebuild() {
   initial_values_.clear();
   for (const lessons::Parameter& parameter : lesson_->parameters()) initial_values_[parameter.name] = parameter_text(parameter);
   record_.clear();
+  gauge_.clear();
   next_action_ = 0;
   recorded_frames_ = 0;
   owed_ = 0.0;
@@ -97,6 +98,17 @@ void Playback::refresh_readings() {
   } catch (const InvalidInput& error) {
     readings_.expectations.clear();
     readings_.error = error.what();
+  }
+  // The mouse's hand pulled during the run: the rows are not judged against predictions that
+  // know nothing of it, and the class is told why, and when.
+  const std::vector<HandStretch> stretches = gauge_.stretches(lesson_->scene().frame_step());
+  if (!stretches.empty()) {
+    for (lessons::ExpectationResult& row : readings_.expectations) row.hand_pulled = true;
+    std::string why = stretches_text(stretches);
+    why[0] = 'H';
+    why += ": the hand's force is in no prediction, so a row that differs reads hand-pulled, not "
+           "failed. Press R to measure without it.";
+    readings_.caveat = readings_.caveat.empty() ? why : why + " " + readings_.caveat;
   }
 }
 
@@ -168,6 +180,7 @@ void Playback::step_and_check() {
     return;
   }
   recorded_frames_ = std::max(recorded_frames_, frame());
+  gauge_.after_step(lesson_->scene());
   // What was done at this frame is done as soon as it is reached, as it was live: a moment
   // shown after scrubbing is the moment as it was.
   apply_due();
@@ -252,6 +265,7 @@ void Playback::scrub_to(double t) {
     }
     framing_ = WorldFraming::of(*lesson_);
     next_action_ = 0;
+    gauge_.clear();  // recorded again as the run is replayed
     blown_ = false;
     problem_.clear();
     apply_due();

@@ -15,6 +15,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/force_gauge.h"
 #include "ui/frame.h"
 
 namespace frictionlab::ui {
@@ -70,6 +71,9 @@ class Playback {
   void grab(const std::string& body, b2Vec2 local_point, b2Vec2 target);
   void move_grab(b2Vec2 target);
   void release();
+  // What the force gauge read each frame the hand held a body, in the run as it now stands (a
+  // step back replays it), and the stretches the theory table marks hand-pulled.
+  const GaugeRecord& gauge() const { return gauge_; }
 
   // The script's file: call every frame with the wall time; it looks at the file a few times
   // a second and reloads it when it changed. A failed reload leaves the last good lesson
@@ -123,6 +127,7 @@ class Playback {
   bool file_missing_ = false;  // script_error_ says the file is gone, not why a reload failed
   std::string problem_;
   std::string notice_;
+  GaugeRecord gauge_;
 };
 
 // A number as the shortest text that reads back as the same double: "0.45", "1e-05".

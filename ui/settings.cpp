@@ -50,6 +50,13 @@ WindowSettings load_settings(const std::string& path) {
       settings.predictions = value == "on";
     } else if (name == "full_screen" && (value == "on" || value == "off")) {
       settings.full_screen = value == "on";
+    } else if (bool* tool = name == "stopwatch"           ? &settings.tools.stopwatch
+                            : name == "distance_marks"    ? &settings.tools.distance_marks
+                            : name == "speed_readout"     ? &settings.tools.speed
+                            : name == "weight_components" ? &settings.tools.weight_components
+                                                          : nullptr;
+               tool != nullptr && (value == "on" || value == "off")) {
+      *tool = value == "on";
     } else if (name == "speed" && numeric && x >= 0.1 && x <= 8.0) {
       settings.speed = x;
     } else if (name == "width" && numeric && x >= 320 && x <= 16384) {
@@ -69,6 +76,10 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
        << "help = " << (settings.help ? "on" : "off") << "\n"
        << "predictions = " << (settings.predictions ? "on" : "off") << "\n"
        << "full_screen = " << (settings.full_screen ? "on" : "off") << "\n"
+       << "stopwatch = " << (settings.tools.stopwatch ? "on" : "off") << "\n"
+       << "distance_marks = " << (settings.tools.distance_marks ? "on" : "off") << "\n"
+       << "speed_readout = " << (settings.tools.speed ? "on" : "off") << "\n"
+       << "weight_components = " << (settings.tools.weight_components ? "on" : "off") << "\n"
        << "speed = " << settings.speed << "\n"
        << "width = " << settings.width << "\n"
        << "height = " << settings.height << "\n";

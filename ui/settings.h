@@ -9,6 +9,15 @@
 
 namespace frictionlab::ui {
 
+// The measuring tools that are on (ui/measuring_tools.h), kept for the next class.
+struct ToolSettings {
+  bool stopwatch = false;
+  bool distance_marks = false;
+  bool speed = false;
+  bool weight_components = false;
+  bool operator==(const ToolSettings&) const = default;
+};
+
 struct WindowSettings {
   ThemeName theme = ThemeName::light;
   bool projector = false;
@@ -17,6 +26,7 @@ struct WindowSettings {
   int width = 1280, height = 720;  // the window's size when it is not full screen
   bool full_screen = false;         // F11: a projector's whole screen, kept for the next class
   bool predictions = true;          // ask the class to predict before the theory shows (View menu)
+  ToolSettings tools;               // the Tools menu
 
   bool operator==(const WindowSettings&) const = default;
 };

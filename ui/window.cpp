@@ -45,6 +45,8 @@ std::optional<Key> classroom_key(int glfw_key) {
     case GLFW_KEY_T: return Key::t;
     case GLFW_KEY_S: return Key::s;
     case GLFW_KEY_E: return Key::e;
+    case GLFW_KEY_W: return Key::w;
+    case GLFW_KEY_L: return Key::l;
     default: return std::nullopt;
   }
 }

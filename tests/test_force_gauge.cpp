@@ -1,0 +1,334 @@
+// The force gauge and the measuring tools, driven as a teacher drives them: ImGui's mouse and
+// keys written across frames on an EGL context with no display (as test_classroom does). Each
+// test checks a figure against the closed form it must show: static friction mu_s·m·g as the
+// gauge's peak, kinetic friction mu_k·m·g as its plateau, the stopwatch against the lesson's
+// clock, the speed against the body's velocity, and the weight's parts along and across a slope.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lessons/runtime/catalog.h"
+#include "ui/classroom.h"
+#include "ui/headless.h"
+#include "ui/imgui_host.h"
+#include "ui/measuring_tools.h"
+#include "ui/overlays.h"
+
+namespace frictionlab::ui {
+namespace {
+
+constexpr double g = 9.81;
+
+// The classroom on a headless context, and a teacher's hand on its io.
+class Hands {
+ public:
+  explicit Hands(const std::string& lesson, std::map<std::string, std::string> overrides = {}, bool projector = false)
+      : host_(nullptr) {
+    ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(lesson);
+    options.overrides = std::move(overrides);
+    options.window.help = false;
+    options.window.projector = projector;
+    options.window.predictions = false;  // the theory table shows from the start: the gauge marks it
+    options.output_folder = folder_;
+    std::filesystem::create_directories(folder_);
+    classroom_ = std::make_unique<Classroom>(options);
+  }
+  ~Hands() { std::filesystem::remove_all(folder_); }
+  Classroom& classroom() { return *classroom_; }
+  lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
+  void frame(double wall = 0.0, FrameRecord* record = nullptr) {
+    gl_.make_current();
+    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display_;
+    io.DeltaTime = 1.0f / 60.0f;
+    host_.begin_frame();
+    classroom_->frame(fonts, display_, wall, record);
+    ImGui::Render();
+  }
+  void mouse_at(ImVec2 at) {
+    ImGui::GetIO().MousePos = at;
+    frame();
+  }
+  void button(bool down) {
+    ImGui::GetIO().MouseDown[0] = down;
+    frame();
+  }
+  void key(Key key) {
+    classroom_->key_pressed(key, false);
+    frame();
+  }
+  void set_display(ImVec2 display) { display_ = display; }
+
+  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
+  // right each display frame (60 a second) for `seconds` of lesson time at speed 1.
+  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds) {
+    const b2Body* body = lesson().scene().body(body_name);
+    const ImVec2 held = classroom_->world_camera().to_screen(body->GetWorldCenter());
+    mouse_at(held);
+    button(true);
+    EXPECT_EQ(lesson().scene().grabbed(), body);
+    key(Key::space);
+    const int frames = static_cast<int>(std::lround(seconds * 60.0));
+    for (int i = 1; i <= frames; ++i) {
+      ImGui::GetIO().MousePos = ImVec2(held.x + pixels_per_frame * static_cast<float>(i), held.y);
+      frame(1.0 / 60.0);
+    }
+    button(false);
+  }
+
+ private:
+  HeadlessContext gl_;
+  ImGuiHost host_;
+  std::string folder_ = (std::filesystem::temp_directory_path() /
+                         ("frictionlab_gauge_" + std::to_string(::getpid()) + "_" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
+                            .string();
+  std::unique_ptr<Classroom> classroom_;
+  ImVec2 display_{1280.0f, 720.0f};
+};
+
+// push at its default mu (wood on wood, mu_s 0.4, mu_k 0.3), a 10 kg block, its own push at its
+// slowest (0.2 N/s, so that the hand does nearly all the pulling: 0.3 N by 1.5 s, 1 % of the
+// friction). Pulled by hand at a steady 0.1 m/s or so, slowly enough that the gauge's force grows
+// by a few newtons a second: it holds until the hand's pull and the push reach mu_s·m·g, then
+// slides with the pull at mu_k·m·g once the gauge's swing has died.
+TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
+  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  hands.frame();
+  const double mu_s = hands.lesson().parameter("mu_s").value, mu_k = hands.lesson().parameter("mu_k").value;
+  ASSERT_EQ(mu_s, 0.4);
+  ASSERT_EQ(mu_k, 0.3);
+  const double m = 10.0;
+  // A pixel a frame: 60 px/s, about 0.1 m/s at this view's scale.
+  const float ppm = hands.classroom().world_camera().pixels_per_metre;
+  hands.pull_right("block", 1.0f, 2.0);
+  const double hand_speed = 60.0 / static_cast<double>(ppm);
+  EXPECT_GT(hand_speed, 0.03);
+  EXPECT_LT(hand_speed, 0.3);
+
+  const Scene& scene = hands.lesson().scene();
+  const GaugeRecord& gauge = hands.classroom().playback().gauge();
+  ASSERT_FALSE(gauge.empty());
+  const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
+  ASSERT_TRUE(figures.has_value());
+  ASSERT_TRUE(figures->plateau.has_value()) << "it slid for less than 0.1 s after settling";
+  const double push_at_peak = 0.2 * (figures->peak_time - scene.frame_step());  // the push over the peak's step
+  // The peak: hand and push together are static friction's limit (the push read at the start of
+  // the step, the hand's force held over it); 1 % for the gauge's rise within the breaking step.
+  EXPECT_NEAR(figures->peak + push_at_peak, mu_s * m * g, 0.01 * mu_s * m * g);
+  // The gauge alone, as the class reads it: within 2 % of mu_s·m·g (the push is under 0.5 %).
+  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.02 * mu_s * m * g);
+  // The plateau: the mean reading while it slid, from 0.4 s after the peak; the pull's swing has
+  // died to a tenth by then, and the push grows under 0.35 N (1.2 % of mu_k·m·g) over the run.
+  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
+  // The peak is static, the plateau kinetic: the drop a class sees is (mu_s − mu_k)·m·g.
+  EXPECT_NEAR(figures->peak - *figures->plateau, (mu_s - mu_k) * m * g, 0.1 * (mu_s - mu_k) * m * g);
+  // Back through the time bar and forward again: the run is replayed, and the gauge reads the
+  // same, sample for sample.
+  const std::vector<GaugeSample> recorded = gauge.samples();
+  const double end = scene.time();
+  hands.classroom().playback().scrub_to(0.5);
+  EXPECT_LT(gauge.samples().size(), recorded.size());
+  hands.classroom().playback().scrub_to(end);
+  ASSERT_EQ(gauge.samples().size(), recorded.size());
+  for (std::size_t i = 0; i < recorded.size(); ++i) {
+    EXPECT_EQ(gauge.samples()[i].frame, recorded[i].frame);
+    EXPECT_EQ(gauge.samples()[i].force, recorded[i].force);
+  }
+  std::printf("gauge: peak %.4f N at %.3f s (mu_s·m·g %.4f N), plateau %.4f N over %.2f–%.2f s (mu_k·m·g %.4f N), "
+              "hand %.3f m/s\n",
+              figures->peak, figures->peak_time, mu_s * m * g, *figures->plateau, figures->plateau_from,
+              figures->plateau_to, mu_k * m * g, hand_speed);
+}
+
+// A hand-pulled run differs from the lesson's predictions because of the hand, not the physics:
+// the theory table marks the rows hand-pulled with the stretch's times and why, and shows no
+// failure for them; a reset measures without the hand and judges again.
+TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
+  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  hands.frame();
+  hands.pull_right("block", 1.0f, 2.0);
+  Playback& playback = hands.classroom().playback();
+  playback.refresh_readings();
+  const double h = hands.lesson().scene().frame_step();
+  const std::vector<HandStretch> stretches = playback.gauge().stretches(h);
+  ASSERT_EQ(stretches.size(), 1u);
+  EXPECT_NEAR(stretches[0].from, 0.0, 1e-9);
+  EXPECT_NEAR(stretches[0].to, hands.lesson().scene().time(), 0.02);  // let go in the last display frame
+  const LessonReadings& readings = playback.readings();
+  // The breakaway row measured the lesson's push at breakaway: a third of a newton against
+  // 39.2 N, since the hand did the pulling. Without the mark it is a failure.
+  const auto breakaway = std::find_if(readings.expectations.begin(), readings.expectations.end(),
+                                      [](const lessons::ExpectationResult& row) { return row.name == "breakaway push"; });
+  ASSERT_NE(breakaway, readings.expectations.end());
+  ASSERT_TRUE(breakaway->measured_yet);
+  EXPECT_FALSE(breakaway->passes);
+  for (const lessons::ExpectationResult& row : readings.expectations) EXPECT_TRUE(row.hand_pulled) << row.name;
+  char times[64];
+  std::snprintf(times, sizeof times, "Hand-pulled 0.00\u2013%.2f s: ", stretches[0].to);
+  EXPECT_EQ(readings.caveat.rfind(times, 0), 0u) << readings.caveat;
+  EXPECT_NE(readings.caveat.find("in no prediction"), std::string::npos) << readings.caveat;
+
+  // What the panel shows: the word, and no failure's cross anywhere.
+  FrameRecord record;
+  hands.frame(0.0, &record);
+  bool marked = false, caveat_shown = false;
+  for (const ShownText& text : record.texts) {
+    marked = marked || text.text == "hand-pulled";
+    caveat_shown = caveat_shown || text.text == readings.caveat;
+    EXPECT_EQ(text.text.find("\u2717"), std::string::npos) << "a failure is shown: " << text.text;
+  }
+  EXPECT_TRUE(marked);
+  EXPECT_TRUE(caveat_shown);
+
+  // The window's CSV says which rows the hand pulled and what the gauge read.
+  const std::string path = hands.classroom().export_history();
+  std::ifstream csv(path);
+  std::string header, first, line, last_pulled;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",hand_pulled,gauge (N)"), std::string::npos) << header;
+  std::getline(csv, first);
+  EXPECT_NE(first.find(",1,"), std::string::npos) << "the first step was pulled: " << first;
+  std::size_t pulled = 0, rows = 1;
+  while (std::getline(csv, line)) {
+    ++rows;
+    if (line.size() >= 2 && line.back() != ',') ++pulled;
+  }
+  EXPECT_EQ(pulled + 1, playback.gauge().samples().size());
+
+  // Reset: a run without the hand, judged again.
+  hands.key(Key::r);
+  playback.refresh_readings();
+  EXPECT_TRUE(playback.gauge().empty());
+  for (const lessons::ExpectationResult& row : playback.readings().expectations) EXPECT_FALSE(row.hand_pulled) << row.name;
+  EXPECT_EQ(playback.readings().caveat.find("Hand-pulled"), std::string::npos);
+}
+
+// The stopwatch reads the lesson's clock: at half speed a second of wall time is half a second
+// of lesson, and a pause stops nothing it reads but the lesson.
+TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
+  Hands hands("push");
+  hands.classroom().playback().set_speed(0.5);
+  hands.frame();
+  hands.key(Key::space);  // play
+  for (int i = 0; i < 12; ++i) hands.frame(1.0 / 60.0);
+  const Scene& scene = hands.lesson().scene();
+  const double started = scene.time();
+  hands.key(Key::w);  // start
+  EXPECT_TRUE(hands.classroom().window_settings().tools.stopwatch) << "W shows the stopwatch it starts";
+  EXPECT_TRUE(hands.classroom().tools().stopwatch.running());
+  double wall = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    hands.frame(1.0 / 60.0);
+    wall += 1.0 / 60.0;
+  }
+  const double at_lap = scene.time();
+  hands.key(Key::l);
+  ASSERT_EQ(hands.classroom().tools().stopwatch.laps().size(), 1u);
+  EXPECT_DOUBLE_EQ(hands.classroom().tools().stopwatch.laps()[0], at_lap - started);
+  // Half speed: the lesson ran half the wall time, to within a frame of the lesson (1/240 s).
+  EXPECT_NEAR(at_lap - started, 0.5 * wall, 1.0 / 240.0 + 1e-9);
+  hands.key(Key::space);  // pause: the lesson's clock stops, and so does what the stopwatch reads
+  const double paused_at = scene.time();
+  for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(hands.classroom().tools().stopwatch.reading(scene.time()), paused_at - started);
+  hands.key(Key::w);  // stop
+  EXPECT_FALSE(hands.classroom().tools().stopwatch.running());
+  hands.key(Key::space);
+  for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);
+  EXPECT_GT(scene.time(), paused_at);
+  EXPECT_DOUBLE_EQ(hands.classroom().tools().stopwatch.reading(scene.time()), paused_at - started);
+  EXPECT_EQ(hands.classroom().tools().stopwatch.text(scene.time()).rfind("stopwatch ", 0), 0u);
+  // R: a new run from t = 0, and a stopwatch cleared for it.
+  hands.key(Key::r);
+  EXPECT_EQ(hands.lesson().scene().time(), 0.0);
+  EXPECT_EQ(hands.classroom().tools().stopwatch.reading(0.0), 0.0);
+  EXPECT_TRUE(hands.classroom().tools().stopwatch.laps().empty());
+}
+
+// The speed shown beside the main body is its velocity: push's block sliding at t = 3 s, read
+// against the lesson's own probe of it.
+TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
+  Hands hands("push");
+  hands.frame();
+  hands.classroom().playback().run_to(3.0);
+  const lessons::Lesson& lesson = hands.lesson();
+  const b2Body* block = lesson.scene().body("block");
+  ASSERT_EQ(measured_body(lesson), block);
+  const double probe = lesson.scene().probe("speed").history.back();
+  EXPECT_GT(probe, 0.5) << "sliding by 3 s";
+  EXPECT_DOUBLE_EQ(static_cast<double>(block->GetLinearVelocity().x), probe);
+  char expected[48];
+  std::snprintf(expected, sizeof expected, "v = %.3f m/s", probe);
+  EXPECT_EQ(speed_reading(block), expected);
+  // A view that follows a body measures that one: stacked_blocks makes its top block first but
+  // follows the bottom one, which the pull drives.
+  Hands stacked("stacked_blocks");
+  stacked.frame();
+  ASSERT_EQ(main_body(stacked.lesson().scene()), stacked.lesson().scene().body("top"));
+  EXPECT_EQ(measured_body(stacked.lesson()), stacked.lesson().scene().body("bottom"));
+}
+
+// The weight's parts along and across the slope, as PhET draws them, for a block resting on
+// the incline at 25° (below its sticking angle): m·g·sin θ and m·g·cos θ, before the first step
+// and while it rests.
+TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
+  Hands hands("incline", {{"angle", "25"}, {"mass", "2"}});
+  hands.frame();
+  const double theta = 25.0 * M_PI / 180.0, mg = 2.0 * g;
+  for (const double t : {0.0, 0.5}) {
+    hands.classroom().playback().run_to(t);
+    const Scene& scene = hands.lesson().scene();
+    const b2Body* block = scene.body("block");
+    const std::optional<SlopeWeight> weight = slope_weight(scene, block);
+    ASSERT_TRUE(weight.has_value()) << "at t = " << t;
+    // The slope's angle as Box2D holds it: float vertices, 2e-7 rad.
+    EXPECT_NEAR(weight->angle, theta, 1e-5) << "at t = " << t;
+    EXPECT_NEAR(weight->along, mg * std::sin(theta), 1e-4 * mg) << "at t = " << t;
+    EXPECT_NEAR(weight->across, mg * std::cos(theta), 1e-4 * mg) << "at t = " << t;
+    EXPECT_NEAR(weight->downhill.x, -std::cos(theta), 1e-5);
+    EXPECT_NEAR(weight->downhill.y, -std::sin(theta), 1e-5);
+    EXPECT_NEAR(weight->into.x, std::sin(theta), 1e-5);
+    EXPECT_NEAR(weight->into.y, -std::cos(theta), 1e-5);
+  }
+  // On a level floor there is nothing to split.
+  Hands level("push");
+  level.frame();
+  level.classroom().playback().run_to(0.5);
+  EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
+}
+
+// Distance marks count from where the main body stood at t = 0 (under its centre of mass), along
+// the surface: the incline's block at 1 s is as far from the mark "0 m" as its own probe says.
+TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
+  Hands hands("incline");
+  hands.frame();
+  const std::optional<b2Vec2> origin = hands.classroom().tools().distance_origin();
+  ASSERT_TRUE(origin.has_value());
+  const b2Body* block = hands.lesson().scene().body("block");
+  const std::optional<Surface> surface = surface_under(hands.lesson().scene(), block);
+  ASSERT_TRUE(surface.has_value());
+  // On the slope's face under the block's centre, 35° up to the right.
+  const double theta = 35.0 * M_PI / 180.0;
+  EXPECT_NEAR(surface->along.x, std::cos(theta), 1e-5);
+  EXPECT_NEAR(surface->along.y, std::sin(theta), 1e-5);
+  hands.classroom().playback().run_to(1.0);
+  hands.frame();
+  // The origin stays where the block began while the block slides away from it.
+  EXPECT_EQ(hands.classroom().tools().distance_origin()->x, origin->x);
+  const std::optional<Surface> now = surface_under(hands.lesson().scene(), block);
+  ASSERT_TRUE(now.has_value());
+  const double slid = static_cast<double>(b2Dot(origin.value() - now->point, now->along));
+  // Float positions a metre from the origin: 1e-5 m.
+  EXPECT_NEAR(slid, hands.lesson().scene().probe("distance").history.back(), 1e-5);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

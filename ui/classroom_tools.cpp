@@ -1,0 +1,88 @@
+// The classroom's measuring tools and force gauge: the Tools menu, their drawing in the world's
+// lanes, and the gauge's plot under the world once the hand has pulled.
+#include <cstdio>
+
+#include "ui/classroom.h"
+#include "ui/overlays.h"
+#include "ui/text_record.h"
+
+namespace frictionlab::ui {
+
+void Classroom::tools_menu() {
+  const bool open = ImGui::BeginMenu("Tools");
+  remember("Tools menu");
+  if (!open) return;
+  ToolSettings& on = window_.tools;
+  const double now = playback_->lesson().scene().time();
+  ImGui::MenuItem("Stopwatch (lesson time)", nullptr, &on.stopwatch);
+  remember("tool stopwatch");
+  if (ImGui::MenuItem(tools_.stopwatch.running() ? "Stop the stopwatch" : "Start the stopwatch", "W")) {
+    on.stopwatch = true;
+    tools_.stopwatch.start_stop(now);
+  }
+  remember("stopwatch start");
+  if (ImGui::MenuItem("Lap", "L", false, tools_.stopwatch.running())) tools_.stopwatch.lap(now);
+  remember("stopwatch lap");
+  if (ImGui::MenuItem("Reset the stopwatch")) tools_.stopwatch.reset();
+  remember("stopwatch reset");
+  ImGui::Separator();
+  ImGui::MenuItem("Distance marks along the surface", nullptr, &on.distance_marks);
+  remember("tool distance marks");
+  ImGui::MenuItem("Speed of the main body", nullptr, &on.speed);
+  remember("tool speed");
+  ImGui::MenuItem("Weight along and across a slope", nullptr, &on.weight_components);
+  remember("tool weight components");
+  ImGui::EndMenu();
+}
+
+void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                            LabelPlacer& labels) {
+  const lessons::Lesson& lesson = playback_->lesson();
+  const Scene& scene = lesson.scene();
+  const float s = fonts_->scale;
+  // The gauge in the lane its body is drawn in: the one whose strip holds the point held.
+  bool gauge_here = false;
+  if (const b2Body* held = scene.grabbed()) {
+    const ImVec2 at = camera.to_screen(held->GetWorldCenter());
+    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == drag_lane_;
+  }
+  if (avoid) {
+    if (gauge_here) avoid_gauge(scene, camera, s, labels);
+    tools_.avoid(lesson, camera, newtons_to_pixels, s, labels);
+    return;
+  }
+  const Theme& colours = theme(window_.theme);
+  tools_.draw(draw, lesson, camera, newtons_to_pixels, colours, *fonts_, lane == 0, labels);
+  if (gauge_here) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
+}
+
+std::string Classroom::gauge_plot_title() const { return "Force gauge (N)"; }
+
+std::string Classroom::gauge_figures() const {
+  const Scene& scene = playback_->lesson().scene();
+  const std::optional<GaugeFigures> figures = playback_->gauge().figures(scene.frame_step());
+  if (!figures) return "";
+  std::string text = "peak " + format_quantity(figures->peak, "N");
+  text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
+  return text;
+}
+
+void Classroom::gauge_plot(ImVec2 corner, ImVec2 size) {
+  const lessons::Lesson& lesson = playback_->lesson();
+  // The latest stretch's figures over the chart, as a class reads them off a sensor's screen.
+  const std::string figures = gauge_figures();
+  ImGui::SetCursorScreenPos(corner);
+  // On one line: in the small font when the body's does not fit.
+  const bool small = ImGui::CalcTextSize(figures.c_str()).x > size.x;
+  if (small) ImGui::PushFont(fonts_->small);
+  ImGui::PushTextWrapPos(0.0f);
+  shown_text(figures.c_str());
+  ImGui::PopTextWrapPos();
+  if (small) ImGui::PopFont();
+  const float used = ImGui::GetCursorScreenPos().y - corner.y;
+  const Chart chart = gauge_chart(playback_->gauge(), lesson.scene().frame_step(), theme(window_.theme));
+  draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),
+             chart, theme(window_.theme), *fonts_);
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,342 @@
+#include "ui/measuring_tools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/overlays.h"
+
+namespace frictionlab::ui {
+
+void Stopwatch::start_stop(double now) {
+  if (running_) {
+    banked_ = reading(now);
+    running_ = false;
+  } else {
+    started_at_ = now;
+    running_ = true;
+  }
+}
+
+void Stopwatch::lap(double now) {
+  if (running_) laps_.push_back(reading(now));
+}
+
+void Stopwatch::reset() { *this = Stopwatch{}; }
+
+double Stopwatch::reading(double now) const { return std::max(0.0, banked_ + (running_ ? now - started_at_ : 0.0)); }
+
+std::string Stopwatch::text(double now) const {
+  char line[64];
+  std::snprintf(line, sizeof line, "stopwatch %.2f s%s", reading(now), running_ ? "" : " (stopped)");
+  std::string text = line;
+  // The last three laps, numbered as the class counts them.
+  const std::size_t first = laps_.size() > 3 ? laps_.size() - 3 : 0;
+  for (std::size_t i = first; i < laps_.size(); ++i) {
+    std::snprintf(line, sizeof line, "\nlap %zu: %.2f s", i + 1, laps_[i]);
+    text += line;
+  }
+  return text;
+}
+
+const b2Body* measured_body(const lessons::Lesson& lesson) {
+  const lessons::View& view = lesson.view();
+  if (view.kind == lessons::View::Kind::follow && !view.bodies.empty()) {
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (name == view.bodies.front() && body->GetType() == b2_dynamicBody) return body;
+    }
+  }
+  return main_body(lesson.scene());
+}
+
+namespace {
+
+// Before the first step there are no contacts yet: a body set down on a surface (a box{} placed
+// `on` one) stands on the face its own angle gives, its lowest along its own up.
+std::optional<Surface> set_down_on(const b2Body* body) {
+  const b2Vec2 along = body->GetWorldVector(b2Vec2(1.0f, 0.0f)), up = body->GetWorldVector(b2Vec2(0.0f, 1.0f));
+  float lowest = 0.0f;
+  bool any = false;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() != b2Shape::e_polygon) continue;
+    const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+    for (int i = 0; i < polygon->m_count; ++i) {
+      const float height = b2Dot(body->GetWorldPoint(polygon->m_vertices[i]) - body->GetWorldCenter(), up);
+      lowest = any ? std::min(lowest, height) : height;
+      any = true;
+    }
+  }
+  if (!any) return std::nullopt;
+  Surface surface{body->GetWorldCenter() + lowest * up, along, up};
+  if (surface.along.x < 0.0f) surface.along = -surface.along;
+  return surface;
+}
+
+}  // namespace
+
+namespace {
+
+// The fixed body's polygons projected on the surface's line: where the marks may run.
+void reach_of(const b2Body* fixed, Surface* surface) {
+  bool any = false;
+  for (const b2Fixture* fixture = fixed->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() != b2Shape::e_polygon) return;  // a chain or a circle: leave it unbounded
+    const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+    for (int i = 0; i < polygon->m_count; ++i) {
+      const float at = b2Dot(fixed->GetWorldPoint(polygon->m_vertices[i]) - surface->point, surface->along);
+      surface->low = any ? std::min(surface->low, at) : at;
+      surface->high = any ? std::max(surface->high, at) : at;
+      any = true;
+    }
+  }
+  if (!any) surface->low = -1e30f, surface->high = 1e30f;
+}
+
+}  // namespace
+
+std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
+  if (body == nullptr) return std::nullopt;
+  // A body given a velocity at t = 0 (thrown, launched) stands on nothing yet.
+  if (scene.frame() == 0) {
+    return body->GetLinearVelocity().Length() == 0.0f && body->GetAngularVelocity() == 0.0f ? set_down_on(body)
+                                                                                              : std::nullopt;
+  }
+  for (const ContactMark& mark : contact_marks(scene)) {
+    const b2Body* other = mark.body_a == body ? mark.body_b : mark.body_b == body ? mark.body_a : nullptr;
+    if (other == nullptr || other->GetType() != b2_staticBody) continue;
+    Surface surface;
+    surface.point = mark.point;
+    surface.along = mark.tangent;
+    surface.along.Normalize();
+    if (surface.along.x < 0.0f || (surface.along.x == 0.0f && surface.along.y < 0.0f)) surface.along = -surface.along;
+    surface.normal = b2Vec2(-surface.along.y, surface.along.x);
+    if (b2Dot(surface.normal, body->GetWorldCenter() - surface.point) < 0.0f) surface.normal = -surface.normal;
+    // Under the centre of mass, not where the load is centred: friction shifts the load towards
+    // the leading edge of a sliding block (by mu_k·h/2), and a mark there would not be its place.
+    surface.point += b2Dot(body->GetWorldCenter() - surface.point, surface.along) * surface.along;
+    reach_of(other, &surface);
+    return surface;
+  }
+  return std::nullopt;
+}
+
+std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body) {
+  const std::optional<Surface> surface = surface_under(scene, body);
+  if (!surface) return std::nullopt;
+  const b2Vec2 gravity = scene.world().GetGravity();
+  const double g = static_cast<double>(gravity.Length());
+  if (g <= 0.0) return std::nullopt;
+  b2Vec2 down = gravity;
+  down.Normalize();
+  // θ is the angle between the surface's normal and straight up.
+  const double cos_angle = std::clamp(static_cast<double>(-b2Dot(surface->normal, down)), -1.0, 1.0);
+  const double angle = std::acos(cos_angle);
+  if (angle < 0.5 * b2_pi / 180.0) return std::nullopt;
+  SlopeWeight weight;
+  weight.angle = angle;
+  const double mg = static_cast<double>(body->GetMass()) * g;
+  weight.along = mg * std::sin(angle);
+  weight.across = mg * std::cos(angle);
+  weight.into = -surface->normal;
+  weight.downhill = b2Dot(surface->along, down) > 0.0f ? surface->along : -surface->along;
+  return weight;
+}
+
+void MeasuringTools::follow(const lessons::Lesson& lesson) {
+  const Scene& scene = lesson.scene();
+  // Back to t = 0 (R, a rebuild, another lesson) is a new run: a stopwatch started in the old
+  // one would read from a time that is not in this one.
+  if (scene.frame() == 0 && last_frame_ > 0) stopwatch.reset();
+  last_frame_ = scene.frame();
+  if (scene.frame() != 0 && origin_) return;
+  if (const std::optional<Surface> surface = surface_under(scene, measured_body(lesson))) origin_ = surface->point;
+}
+
+namespace {
+
+// The distance marks' step: a nice length about 120 pixels long.
+float mark_step(const Camera& camera, float scale) { return nice_length(120.0f * scale / camera.pixels_per_metre); }
+
+// Whether a label of `size` centred at `centre` would cover nothing the placer knows of and stay
+// in its view. A distance mark's number goes just under its tick or not at all: moved away it
+// would name another place.
+bool free_for(const LabelPlacer& labels, ImVec2 centre, ImVec2 size) {
+  const float pad = 2.0f;  // as the placer pads its labels
+  const ImVec4 box(centre.x - 0.5f * size.x - pad, centre.y - 0.5f * size.y - pad, centre.x + 0.5f * size.x + pad,
+                   centre.y + 0.5f * size.y + pad);
+  const ImVec4 view = labels.bounds();
+  if (box.x < view.x || box.y < view.y || box.z > view.z || box.w > view.w) return false;
+  for (const ImVec4& taken : labels.labels()) {
+    if (overlaps(box, taken)) return false;
+  }
+  for (const ImVec4& mark : labels.marks()) {
+    if (overlaps(box, mark)) return false;
+  }
+  for (const DrawnSegment& segment : labels.segments()) {
+    if (overlaps(box, segment)) return false;
+  }
+  return true;
+}
+
+// Whether the body's centre is in this lane's strip.
+bool in_lane(const Camera& camera, const b2Body* body) {
+  const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
+  return centre.y >= camera.origin.y && centre.y <= camera.origin.y + camera.size.y;
+}
+
+struct Ruler {
+  ImVec2 from, to;                   // the line, just inside the surface
+  std::vector<std::pair<ImVec2, double>> ticks;  // each tick's foot on the line and its distance, m
+  ImVec2 inward;                     // screen direction into the surface
+};
+
+std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& camera, float scale) {
+  const float step = mark_step(camera, scale);
+  // The view's corners projected on the surface's line give the span of it in sight.
+  const b2Vec2 corners[4] = {camera.to_world(camera.origin), camera.to_world(add(camera.origin, ImVec2(camera.size.x, 0.0f))),
+                             camera.to_world(add(camera.origin, camera.size)),
+                             camera.to_world(add(camera.origin, ImVec2(0.0f, camera.size.y)))};
+  // The line runs through where the body stood at t = 0, along the surface it stands on now.
+  const b2Vec2 base = origin + b2Dot(surface.point - origin, surface.normal) * surface.normal;
+  float low = 1e30f, high = -1e30f;
+  for (const b2Vec2& corner : corners) {
+    low = std::min(low, b2Dot(corner - base, surface.along));
+    high = std::max(high, b2Dot(corner - base, surface.along));
+  }
+  // No further than the surface goes (the foot and the top of a slope).
+  const float shift = b2Dot(surface.point - base, surface.along);
+  low = std::max(low, surface.low + shift);
+  high = std::min(high, surface.high + shift);
+  if (!(high > low) || (high - low) / step > 400.0f) return std::nullopt;
+  Ruler ruler;
+  const ImVec2 inward_world = camera.to_screen(base - surface.normal);
+  ImVec2 inward = sub(inward_world, camera.to_screen(base));
+  if (length(inward) < 1e-6f) return std::nullopt;
+  ruler.inward = mul(inward, 1.0f / length(inward));
+  const ImVec2 offset = mul(ruler.inward, 6.0f * scale);
+  ruler.from = add(camera.to_screen(base + low * surface.along), offset);
+  ruler.to = add(camera.to_screen(base + high * surface.along), offset);
+  // Counted in whole ticks: far from the start a float count would stop growing.
+  const double first = std::ceil(static_cast<double>(low) / step), last = std::floor(static_cast<double>(high) / step);
+  for (double k = first; k <= last && k - first < 400.0; k += 1.0) {
+    const double metres = k * static_cast<double>(step);
+    ruler.ticks.push_back({add(camera.to_screen(base + static_cast<float>(metres) * surface.along), offset), std::abs(metres)});
+  }
+  return ruler;
+}
+
+struct ComponentArrows {
+  ImVec2 centre, along_tip, across_tip;
+};
+
+ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, const Camera& camera,
+                                 float newtons_to_pixels) {
+  const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
+  const auto tip = [&](b2Vec2 direction, double newtons) {
+    const ImVec2 screen(direction.x, -direction.y);
+    return add(centre, mul(screen, static_cast<float>(newtons) * newtons_to_pixels));
+  };
+  return {centre, tip(weight.downhill, weight.along), tip(weight.into, weight.across)};
+}
+
+}  // namespace
+
+std::string speed_reading(const b2Body* body) {
+  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read: a resting
+  // block's 1e-9 m/s of rounding is 0.000.
+  char text[48];
+  std::snprintf(text, sizeof text, "v = %.3f m/s", static_cast<double>(body->GetLinearVelocity().Length()));
+  return text;
+}
+
+namespace {
+
+}  // namespace
+
+void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
+                           LabelPlacer& labels) const {
+  const Scene& scene = lesson.scene();
+  const b2Body* body = measured_body(lesson);
+  if (body == nullptr || !in_lane(camera, body)) return;
+  if (on.distance_marks) {
+    const std::optional<Surface> surface = surface_under(scene, body);
+    if (surface && origin_) {
+      if (const std::optional<Ruler> marks = ruler(*surface, *origin_, camera, scale)) {
+        labels.avoid(DrawnSegment{marks->from, marks->to, 1.5f * scale});
+        for (const auto& [foot, metres] : marks->ticks) {
+          labels.avoid(DrawnSegment{foot, add(foot, mul(marks->inward, 8.0f * scale)), 1.0f * scale});
+        }
+      }
+    }
+  }
+  if (on.weight_components) {
+    if (const std::optional<SlopeWeight> weight = slope_weight(scene, body)) {
+      const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
+      labels.avoid(DrawnSegment{arrows.centre, arrows.along_tip, 4.0f * scale});
+      labels.avoid(DrawnSegment{arrows.centre, arrows.across_tip, 4.0f * scale});
+    }
+  }
+}
+
+void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
+                          const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
+  const float s = fonts.scale;
+  const Scene& scene = lesson.scene();
+  const auto label = [&](ImFont* font, ImVec2 wanted, const std::string& text, ImU32 colour = 0) {
+    const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+    const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f));
+    draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
+  };
+  if (on.stopwatch && first_lane) {
+    const std::string text = stopwatch.text(scene.time());
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
+    label(fonts.body, ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + 0.5f * size.y), text);
+  }
+  const b2Body* body = measured_body(lesson);
+  if (body == nullptr || !in_lane(camera, body)) return;
+  if (on.distance_marks) {
+    const std::optional<Surface> surface = surface_under(scene, body);
+    if (surface && origin_) {
+      if (const std::optional<Ruler> marks = ruler(*surface, *origin_, camera, s)) {
+        draw->AddLine(marks->from, marks->to, theme.text, 1.5f * s);
+        for (const auto& [foot, metres] : marks->ticks) {
+          const bool zero = metres < 1e-9;
+          draw->AddLine(foot, add(foot, mul(marks->inward, (zero ? 12.0f : 8.0f) * s)), theme.text, (zero ? 2.5f : 1.5f) * s);
+          char text[32];
+          std::snprintf(text, sizeof text, "%g m", metres);
+          const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text);
+          const ImVec2 wanted = add(foot, mul(marks->inward, 12.0f * s + 0.5f * size.y + 2.0f));
+          if (free_for(labels, wanted, ImVec2(size.x + 6.0f, size.y + 2.0f))) label(fonts.small, wanted, text);
+        }
+      }
+    }
+  }
+  if (on.weight_components) {
+    if (const std::optional<SlopeWeight> weight = slope_weight(scene, body)) {
+      const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
+      // The weight's own colour, paler: parts of it, not forces beside it.
+      const ImU32 colour = (theme.force[static_cast<int>(ForceKind::weight)] & 0x00FFFFFFu) | (170u << IM_COL32_A_SHIFT);
+      draw_arrow(draw, arrows.centre, arrows.along_tip, colour, 2.0f * s);
+      draw_arrow(draw, arrows.centre, arrows.across_tip, colour, 2.0f * s);
+      const auto beyond = [&](ImVec2 tip, const std::string& text) {
+        const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
+        ImVec2 direction = sub(tip, arrows.centre);
+        const float span = std::max(1e-3f, length(direction));
+        direction = mul(direction, 1.0f / span);
+        label(fonts.small, add(tip, ImVec2(direction.x * (0.5f * size.x + 8.0f * s), direction.y * (0.5f * size.y + 8.0f * s))),
+              text, theme.force[static_cast<int>(ForceKind::weight)]);
+      };
+      beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + format_quantity(weight->along, "N"));
+      beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));
+    }
+  }
+  if (on.speed) {
+    const b2AABB box = body_box(body);
+    const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
+    const std::string text = speed_reading(body);
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
+    label(fonts.body, ImVec2(top.x, top.y - 10.0f * s - 0.5f * size.y), text);
+  }
+}
+
+}  // namespace frictionlab::ui

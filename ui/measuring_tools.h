@@ -1,0 +1,93 @@
+// The measuring tools a teacher switches on from the Tools menu: a stopwatch in lesson time,
+// distance marks along the surface the main body stands on (a floor, or along an incline), the
+// main body's speed, and the weight's components along and across a slope (m·g·sin θ and
+// m·g·cos θ, as PhET draws them). Each reads the running lesson; they are drawn into the world
+// view through its label placer, so their labels keep off the lesson's own labels and arrows.
+#pragma once
+
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
+#include "ui/camera.h"
+#include "ui/drawing.h"
+#include "ui/settings.h"
+#include "ui/theme.h"
+
+namespace frictionlab::ui {
+
+// A stopwatch on the lesson's clock: started, stopped and read at lesson times, so slow motion,
+// a pause or fast forward change nothing it reads.
+class Stopwatch {
+ public:
+  void start_stop(double now);
+  void lap(double now);  // the reading now joins the laps (while running)
+  void reset();
+  double reading(double now) const;  // s of lesson time while it ran; never below 0 after a step back
+  bool running() const { return running_; }
+  const std::vector<double>& laps() const { return laps_; }
+  // "stopwatch 1.23 s" with its last laps on lines below.
+  std::string text(double now) const;
+
+ private:
+  bool running_ = false;
+  double started_at_ = 0.0;  // lesson time of the last start
+  double banked_ = 0.0;      // time run before it
+  std::vector<double> laps_;
+};
+
+// The body the tools measure: the one the view follows, else the lesson's first moving body
+// (the free-body diagram's). Null when nothing moves.
+const b2Body* measured_body(const lessons::Lesson& lesson);
+
+// The surface a body stands on: a touching contact with a fixed body, the point on it under the
+// body's centre of mass, its direction along the surface (x ≥ 0, rightwards), and the normal out of it towards the body.
+// At t = 0, before any contact, a body at rest stands on the face its own angle puts lowest.
+struct Surface {
+  b2Vec2 point, along, normal;
+  // How far the fixed body reaches along the surface from `point`, m (a slope's top ends the
+  // marks; a ground runs on). Unbounded when the body is not known (set down at t = 0).
+  float low = -1e30f, high = 1e30f;
+};
+std::optional<Surface> surface_under(const Scene& scene, const b2Body* body);
+
+// What the speed tool shows beside a body: its centre of mass's speed, "v = 0.092 m/s".
+std::string speed_reading(const b2Body* body);
+
+// The weight of a body on a slope split along and across it: m·g·sin θ downhill and m·g·cos θ
+// into the slope. None on a level surface (θ under half a degree) or off any fixed surface.
+struct SlopeWeight {
+  double angle = 0.0;   // rad
+  double along = 0.0;   // N, m·g·sin θ
+  double across = 0.0;  // N, m·g·cos θ
+  b2Vec2 downhill{0.0f, 0.0f}, into{0.0f, 0.0f};  // unit vectors
+};
+std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body);
+
+// The tools in one lane of the world view. avoid() tells the placer what they draw before any
+// label is placed; draw() draws them and places their labels. `first_lane`: the stopwatch goes
+// in the first lane only; the body's tools go in the lane whose strip holds it.
+class MeasuringTools {
+ public:
+  ToolSettings on;  // the window's, copied in each frame
+  Stopwatch stopwatch;
+
+  // Each frame before drawing: where distances count from (the main body's place on its surface
+  // at t = 0, taken whenever the lesson is at t = 0), and the stopwatch cleared when the lesson
+  // goes back to t = 0 (a new run).
+  void follow(const lessons::Lesson& lesson);
+  void avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
+             LabelPlacer& labels) const;
+  void draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
+            const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const;
+  std::optional<b2Vec2> distance_origin() const { return origin_; }
+
+ private:
+  std::optional<b2Vec2> origin_;
+  long last_frame_ = 0;  // the lesson's frame when last followed
+};
+
+}  // namespace frictionlab::ui
