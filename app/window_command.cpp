@@ -27,6 +27,8 @@ struct WindowOptions {
   bool projector = false;
   std::optional<double> at;
   std::string screenshot;
+  MysteryOptions mystery;  // --mystery PAIR --seed N
+  std::vector<std::string> mystery_arguments;  // as given, for the fallback picture
 };
 
 std::vector<std::string> split_names(const std::string& option, const std::string& text) {
@@ -54,17 +56,23 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       options.projector = true;
       continue;
     }
-    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot"};
+    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot",
+                                        "--mystery", "--seed"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
       throw InvalidInput("unknown option '" + arg +
                          "'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, --substeps N, "
-                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png "
+                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, "
+                         "--mystery MATERIAL/MATERIAL --seed N "
                          "(commands: list, run, check, render, demo, bench, help)");
     }
     if (i + 1 >= args.size()) throw InvalidInput(arg + " needs a value; see frictionlab help");
     if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) throw InvalidInput(arg + " given twice");
     seen.push_back(arg);
     const std::string& value = args[++i];
+    if (options.mystery.take(arg, value)) {
+      options.mystery_arguments.insert(options.mystery_arguments.end(), {arg, value});
+      continue;
+    }
     if (arg == "--lock") {
       options.lock = split_names(arg, value);
     } else if (arg == "--set") {
@@ -93,6 +101,7 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       options.step_arguments.insert(options.step_arguments.end(), {arg, value});
     }
   }
+  options.mystery.choice();  // --mystery without --seed, or the other way round, refused before the window opens
   return options;
 }
 
@@ -116,6 +125,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   classroom_options.overrides = options.overrides;
   classroom_options.settings = options.settings;
   classroom_options.lock = options.lock;
+  classroom_options.mystery = options.mystery.choice();
   classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
@@ -144,6 +154,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     std::vector<std::string> render_args{path, "--at", time_text(at), "--out", picture};
     for (const auto& [name, value] : options.overrides) render_args.insert(render_args.end(), {"--set", name + "=" + value});
     render_args.insert(render_args.end(), options.step_arguments.begin(), options.step_arguments.end());
+    render_args.insert(render_args.end(), options.mystery_arguments.begin(), options.mystery_arguments.end());
     if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(ui::theme_name(*options.theme))});
     return run_render(render_args, out);
   }

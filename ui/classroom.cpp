@@ -33,6 +33,20 @@ Classroom::Classroom(ClassroomOptions options)
   try {
     playback_ = std::make_unique<Playback>(options.lesson, options.overrides, options.settings);
     check_lock(playback_->lesson());
+    if (options.mystery) {
+      // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
+      mystery_.emplace(*options.mystery, playback_->lesson());
+      std::map<std::string, std::string> overrides = options.overrides;
+      for (const auto& [name, value] : mystery_->settings()) {
+        if (overrides.count(name) > 0) {
+          throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + options.mystery->pair +
+                             "); leave it out");
+        }
+        overrides[name] = value;
+      }
+      playback_ = std::make_unique<Playback>(options.lesson, overrides, options.settings);
+      select_mystery_tab_ = true;
+    }
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
@@ -109,7 +123,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
     parameters_panel(corner, size, folded);
   };
+  style.hidden = hidden_values();
   style.more_tabs = [this] {
+    mystery_tab();
     cheapest_setting_tab();
     stability_map_tab();
   };
@@ -314,6 +330,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
+    mystery_.reset();  // it was a pair of the lesson that closed
     control_errors_.clear();
     pair_open_.clear();
     sliding_.reset();
@@ -385,6 +402,14 @@ std::string Classroom::export_history() {
   const Scene& scene = lesson.scene();
   std::ostringstream csv;
   csv.precision(9);
+  // The values that made the run, so a file found later says which run it is; a mystery's are "?".
+  std::string settings = "# FrictionLab history of " + lesson.path() + ";";
+  const HiddenValues hidden = hidden_values();
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    settings += " " + parameter.name + " = " + (hidden.hides(parameter.name) ? "?" : parameter.shown()) + ";";
+  }
+  std::replace(settings.begin(), settings.end(), ',', ';');  // one field: a spreadsheet shows the line in its first cell
+  csv << settings << '\n';
   csv << "t";
   for (const Probe& probe : scene.probes()) {
     const std::string& unit = lesson.probe_unit(probe.name);

@@ -23,6 +23,7 @@
 #include "ui/chart.h"
 #include "ui/frame.h"
 #include "ui/keys.h"
+#include "ui/mystery.h"
 #include "ui/playback.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
@@ -36,6 +37,7 @@ struct ClassroomOptions {
   std::vector<std::string> lock;                    // --lock: the only controls shown; empty: all
   WindowSettings window;                            // as remembered
   std::string output_folder = ".";                  // screenshots and history exports
+  std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
 };
 
 // The names --lock takes besides a lesson's parameters.
@@ -91,6 +93,19 @@ class Classroom {
   // folder; returns the path, or throws std::runtime_error.
   std::string export_history();
 
+  // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
+  const std::optional<Mystery>& mystery() const { return mystery_; }
+  // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
+  // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
+  std::string make_mystery(const MysteryChoice& choice);
+  void reveal_mystery();
+  // The class's answers, as typed in the Mystery tab.
+  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k);
+  // What the class must not see now.
+  HiddenValues hidden_values() const;
+  // The window's title: the program and the lesson (never a hidden value).
+  std::string window_title() const;
+
   // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
   // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
   std::optional<ImRect> control(const std::string& name) const;
@@ -128,6 +143,8 @@ class Classroom {
   TransportShape transport_shape(float width) const;
   void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   void cheapest_setting_tab();
+  void mystery_menu();
+  void mystery_tab();
   void stability_map_tab();
   void stability_map_window();
   void update_stability_chart();
@@ -195,6 +212,13 @@ class Classroom {
   Chart stability_chart_;                    // as last drawn
   std::vector<std::string> stability_words_;  // each threshold's side of the boundary, in words
   bool stability_window_ = false;
+  // The mystery pair, and the Mystery tab's state: chosen once when a mystery begins, the
+  // answers and the seed as typed.
+  std::optional<Mystery> mystery_;
+  bool select_mystery_tab_ = false;
+  char answer_text_[2][32] = {};
+  std::string answer_error_[2];
+  int menu_seed_ = 1;
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;

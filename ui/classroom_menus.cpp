@@ -91,6 +91,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
+  mystery_menu();
   if (ImGui::BeginMenu("View")) {
     bool dark = window_.theme == ThemeName::dark;
     if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;

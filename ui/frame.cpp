@@ -97,13 +97,13 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& read
   const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
   const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
   const float theory = bar + padding + 4.0f * s +
-                       theory_contents_height(readings.expectations, inside, readings.error, readings.caveat);
+                       theory_contents_height(readings.expectations, inside, readings.error, readings.caveat, style.hidden.theory());
   const bool window = static_cast<bool>(style.parameters_panel);
   // The parameters' height at each step of giving way: in a picture, the last k pairs folded;
   // the window's steps are its own (parameters_heights).
   const std::size_t steps = window ? style.parameters_heights.size() - 1 : parameter_pairs(lesson).size();
   const auto parameters = [&](std::size_t step) {
-    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step);
+    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step, style.hidden);
   };
   std::size_t model_lines = 4;
   for (const lessons::ModelCard::PairLine& pair : lessons::model_card(lesson).pairs) model_lines += pair.own ? 1 : 0;
@@ -262,7 +262,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         }
         const ImVec2 area = ImGui::GetContentRegionAvail();
         draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                  fonts);
+                  fonts, !style.hidden.theory());
       }
       end_panel();
     }
@@ -276,11 +276,11 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   if (style.parameters_panel) {
     style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
   } else {
-    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step);
+    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
   }
   at.y += plan.parameters + gap;
   if (!plan.theory_in_tabs) {
-    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat);
+    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());
     at.y += plan.theory + gap;
   }
   if (plan.books_tabbed) {
@@ -298,7 +298,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
         ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
       if (plan.theory_in_tabs && begin_tab(names[0])) {
-        theory_contents(rows, colours, readings.error, readings.caveat);
+        theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
         ImGui::EndTabItem();
       }
       if (begin_tab(names[1])) {

@@ -9,6 +9,7 @@
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
 #include "ui/drawing.h"
+#include "ui/panels.h"
 #include "ui/text_record.h"
 #include "ui/theme.h"
 
@@ -71,6 +72,8 @@ struct FrameStyle {
   FrameRecord* record = nullptr;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
+  // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
+  HiddenValues hidden;
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and

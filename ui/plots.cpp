@@ -57,7 +57,7 @@ constexpr int theory_sample_count = 256;
 
 }  // namespace
 
-Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme) {
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme, bool with_theory) {
   const lessons::Plot& plot = lesson.plots().at(plot_index);
   const Scene& scene = lesson.scene();
   const bool over_time = plot.kind == lessons::PlotKind::time;
@@ -128,7 +128,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // The theory across the x range; its values count for the y axis, so a law is seen before
   // the run gets there.
   std::vector<double> theory_values;
-  if (!plot.theory.empty()) {
+  if (with_theory && !plot.theory.empty()) {
     try {
       const auto [low, high] = sampling_range(x_range.low, x_range.high);
       const lessons::TheorySamples& samples = lesson.theory_samples(plot_index, low, high, theory_sample_count);
@@ -174,8 +174,8 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
 }
 
 void draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
-               const Theme& theme, const Fonts& fonts) {
-  draw_chart(draw, corner, size, plot_chart(lesson, plot, time_span, theme), theme, fonts);
+               const Theme& theme, const Fonts& fonts, bool with_theory) {
+  draw_chart(draw, corner, size, plot_chart(lesson, plot, time_span, theme, with_theory), theme, fonts);
 }
 
 }  // namespace frictionlab::ui
