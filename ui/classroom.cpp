@@ -127,7 +127,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.more_tabs = [this] {
     mystery_tab();
     cheapest_setting_tab();
-    stability_map_tab();
+    // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
+    // (whose boundary would give μs away until the reveal anyway).
+    if (!mystery_) stability_map_tab();
   };
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_heights();
