@@ -147,7 +147,8 @@ void Classroom::help_panel() {
         "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
         "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
-        "until you change something.");
+        "until you change something. The Mystery menu draws a pair's \u03bcs and \u03bck from a seed and hides them "
+        "until revealed: the class measures them and types its answers in the Mystery tab.");
     ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
                             ". Settings are kept in " + settings_folder() + ".")
                                .c_str());
