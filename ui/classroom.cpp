@@ -31,22 +31,9 @@ Classroom::Classroom(ClassroomOptions options)
       output_folder_(options.output_folder) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
-    playback_ = std::make_unique<Playback>(options.lesson, options.overrides, options.settings);
+    playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
     check_lock(playback_->lesson());
-    if (options.mystery) {
-      // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
-      mystery_.emplace(*options.mystery, playback_->lesson());
-      std::map<std::string, std::string> overrides = options.overrides;
-      for (const auto& [name, value] : mystery_->settings()) {
-        if (overrides.count(name) > 0) {
-          throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + options.mystery->pair +
-                             "); leave it out");
-        }
-        overrides[name] = value;
-      }
-      playback_ = std::make_unique<Playback>(options.lesson, overrides, options.settings);
-      select_mystery_tab_ = true;
-    }
+    select_mystery_tab_ = mystery_.has_value();
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
@@ -59,6 +46,34 @@ Classroom::Classroom(ClassroomOptions options)
   playback_->set_speed(window_.speed);
   // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
   // predicts, before anything moves; Space plays.
+}
+
+std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                                   const StepSettings& settings, const std::optional<MysteryChoice>& choice,
+                                                   std::optional<Mystery>& mystery) const {
+  auto playback = std::make_unique<Playback>(path, overrides, settings);
+  if (!choice) return playback;
+  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
+  Mystery drawn(*choice, playback->lesson());
+  for (const auto& [name, value] : drawn.settings()) {
+    if (overrides.count(name) > 0) {
+      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
+    }
+    overrides[name] = value;
+  }
+  playback = std::make_unique<Playback>(path, overrides, settings);
+  mystery = std::move(drawn);
+  return playback;
+}
+
+void Classroom::forget_interaction() {
+  control_errors_.clear();
+  pair_open_.clear();
+  sliding_.reset();
+  hand_held_ = false;
+  view_adjust_ = {};
+  panning_from_.reset();
+  failed_script_.clear();
 }
 
 void Classroom::check_lock(const lessons::Lesson& lesson) const {
@@ -146,6 +161,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   help_panel();
   stability_map_window();
   open_script_popup();
+  setup_popup();
   ImGui::PopFont();
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
@@ -333,13 +349,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     mystery_.reset();  // it was a pair of the lesson that closed
-    control_errors_.clear();
-    pair_open_.clear();
-    sliding_.reset();
-    hand_held_ = false;
-    view_adjust_ = {};
-    panning_from_.reset();
-    failed_script_.clear();
+    forget_interaction();
     return "";
   } catch (const InvalidInput& error) {
     return error.what();

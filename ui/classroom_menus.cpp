@@ -38,6 +38,17 @@ void Classroom::menu_bar() {
     ImGui::Separator();
     if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;
     remember("Open a script");
+    // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
+    if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) {
+      setup_dialog_ = SetupDialog::open;
+      setup_dialog_asked_ = true;
+    }
+    remember("Open a setup");
+    if (ImGui::MenuItem("Save as a setup...")) {
+      setup_dialog_ = SetupDialog::save;
+      setup_dialog_asked_ = true;
+    }
+    remember("Save as a setup");
     if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) request_screenshot();
