@@ -116,7 +116,7 @@ class Classroom {
   std::string open_setup(const std::string& path);
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
   // value but a mystery's, the lock, the mystery's pair and seed, the step settings.
-  Setup current_setup(const std::string& path) const;
+  PreparedSetup current_setup(const std::string& path) const;
   // Writes current_setup to `path` (never over a .lua script or a file that is not a setup
   // FrictionLab wrote). Returns "" or why not.
   std::string save_setup(const std::string& path);

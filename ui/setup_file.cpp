@@ -73,8 +73,8 @@ bool is_setup_file(const std::string& path) {
 
 }  // namespace
 
-Setup parse_setup(const std::string& text, const std::string& path) {
-  Setup setup;
+PreparedSetup parse_setup(const std::string& text, const std::string& path) {
+  PreparedSetup setup;
   int hz_line = 0, substeps_line = 0, friction_line = 0;
   std::istringstream lines(text);
   std::string raw;
@@ -100,7 +100,7 @@ Setup parse_setup(const std::string& text, const std::string& path) {
       const std::string name = trimmed(rest.substr(0, equals));
       const std::string value = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
       if (equals == std::string::npos || name.empty() || value.empty()) at.fail("set " + rest + ": write it as set NAME = VALUE, as in set mass = 1.5");
-      for (const Setup::Value& given : setup.values) {
+      for (const PreparedSetup::Value& given : setup.values) {
         if (given.name == name) {
           at.fail("set " + name + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
                   "); give each parameter once");
@@ -151,7 +151,7 @@ Setup parse_setup(const std::string& text, const std::string& path) {
   return setup;
 }
 
-Setup read_setup(const std::string& path) {
+PreparedSetup read_setup(const std::string& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
   if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");
@@ -167,11 +167,11 @@ Setup read_setup(const std::string& path) {
   return parse_setup(text.str(), path);
 }
 
-std::string setup_text(const Setup& setup) {
+std::string setup_text(const PreparedSetup& setup) {
   std::ostringstream text;
   text << setup_first_line << "\n# Open it with: frictionlab --setup FILE, or the window's Lesson menu (Open a setup).\n";
   text << "lesson " << setup.lesson << '\n';
-  for (const Setup::Value& value : setup.values) text << "set " << value.name << " = " << value.text << '\n';
+  for (const PreparedSetup::Value& value : setup.values) text << "set " << value.name << " = " << value.text << '\n';
   if (!setup.lock.empty()) {
     text << "lock ";
     for (std::size_t i = 0; i < setup.lock.size(); ++i) text << (i > 0 ? ", " : "") << setup.lock[i];
@@ -184,7 +184,7 @@ std::string setup_text(const Setup& setup) {
   return text.str();
 }
 
-void write_setup(const std::string& path, const Setup& setup) {
+void write_setup(const std::string& path, const PreparedSetup& setup) {
   if (path.empty()) throw InvalidInput("give the setup a file name, such as class.setup");
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -199,7 +199,7 @@ void write_setup(const std::string& path, const Setup& setup) {
   }
 }
 
-std::string setup_lesson_path(const Setup& setup, const std::string& setup_path) {
+std::string setup_lesson_path(const PreparedSetup& setup, const std::string& setup_path) {
   const bool a_name = setup.lesson.find('/') == std::string::npos && fs::path(setup.lesson).extension() != ".lua";
   const fs::path script(setup.lesson);
   try {
@@ -221,7 +221,7 @@ std::string setup_lesson_name(const std::string& script_path, const std::string&
   return relative.empty() ? script.string() : relative.string();
 }
 
-void check_setup(const Setup& setup, const std::string& setup_path, lessons::Lesson& lesson) {
+void check_setup(const PreparedSetup& setup, const std::string& setup_path, lessons::Lesson& lesson) {
   std::pair<std::string, std::string> mystery_names;
   if (setup.mystery) {
     // Found in the lesson at its script's values: a value set below may not be one of them.
@@ -231,7 +231,7 @@ void check_setup(const Setup& setup, const std::string& setup_path, lessons::Les
       // Said below, once the values (which may change the materials) are set.
     }
   }
-  for (const Setup::Value& value : setup.values) {
+  for (const PreparedSetup::Value& value : setup.values) {
     const At at{setup_path, value.line};
     if (value.name == mystery_names.first || value.name == mystery_names.second) {
       at.fail("set " + value.name + ": " + value.name + " is the mystery's (line " + std::to_string(setup.mystery_line) +
@@ -269,7 +269,7 @@ void check_setup(const Setup& setup, const std::string& setup_path, lessons::Les
 namespace frictionlab::ui {
 
 ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base) {
-  const Setup setup = read_setup(setup_path);
+  const PreparedSetup setup = read_setup(setup_path);
   const std::string lesson_path = setup_lesson_path(setup, setup_path);
   try {
     lessons::Lesson lesson(lesson_path, {}, setup.settings);
@@ -280,7 +280,7 @@ ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions b
   }
   base.lesson = lesson_path;
   base.overrides.clear();
-  for (const Setup::Value& value : setup.values) base.overrides[value.name] = value.text;
+  for (const PreparedSetup::Value& value : setup.values) base.overrides[value.name] = value.text;
   base.lock = setup.lock;
   base.mystery = setup.mystery;
   base.settings = setup.settings;

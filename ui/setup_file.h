@@ -32,7 +32,7 @@ namespace frictionlab::ui {
 // The first line a setup file begins with: only a file that does is ever replaced by a save.
 inline constexpr const char* setup_first_line = "# FrictionLab setup";
 
-struct Setup {
+struct PreparedSetup {
   std::string lesson;  // a built-in name or a script's path, as written
   struct Value {
     std::string name, text;
@@ -48,18 +48,18 @@ struct Setup {
 
 // Reads a setup from its text; `path` names it in messages. Throws InvalidInput as
 // "path:line: what is wrong" for a line it cannot read, and "path: ..." when it has no lesson.
-Setup parse_setup(const std::string& text, const std::string& path);
+PreparedSetup parse_setup(const std::string& text, const std::string& path);
 // The same from the file at `path`; refuses what is not a readable regular file of a setup's size.
-Setup read_setup(const std::string& path);
+PreparedSetup read_setup(const std::string& path);
 
 // The setup as the file holds it (setup_text then parse_setup gives it back).
-std::string setup_text(const Setup& setup);
+std::string setup_text(const PreparedSetup& setup);
 // Writes it whole (a temporary file beside it, renamed over it) to `path`. Refuses a .lua path
 // and anything there but a setup file FrictionLab wrote. Throws InvalidInput naming the path.
-void write_setup(const std::string& path, const Setup& setup);
+void write_setup(const std::string& path, const PreparedSetup& setup);
 
 // The script a setup's lesson names: a built-in name, or a path from the setup's own folder.
-std::string setup_lesson_path(const Setup& setup, const std::string& setup_path);
+std::string setup_lesson_path(const PreparedSetup& setup, const std::string& setup_path);
 // The setup's lesson name as a setup file writes it: a built-in lesson's name, else the
 // script's path from the folder the setup is saved in.
 std::string setup_lesson_name(const std::string& script_path, const std::string& setup_path);
@@ -67,6 +67,6 @@ std::string setup_lesson_name(const std::string& script_path, const std::string&
 // Checks the setup against its lesson built at the script's values: every value set (in order),
 // then the lock's names and the mystery's pair. Throws InvalidInput "path:line: ..." at the line
 // that is wrong.
-void check_setup(const Setup& setup, const std::string& setup_path, lessons::Lesson& lesson);
+void check_setup(const PreparedSetup& setup, const std::string& setup_path, lessons::Lesson& lesson);
 
 }  // namespace frictionlab::ui

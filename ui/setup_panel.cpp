@@ -32,9 +32,9 @@ std::string Classroom::open_setup(const std::string& path) {
   }
 }
 
-Setup Classroom::current_setup(const std::string& path) const {
+PreparedSetup Classroom::current_setup(const std::string& path) const {
   const lessons::Lesson& lesson = playback_->lesson();
-  Setup setup;
+  PreparedSetup setup;
   setup.lesson = setup_lesson_name(lesson.path(), path);
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // A mystery is saved as its pair and seed: its values are drawn again when it opens.
