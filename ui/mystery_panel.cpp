@@ -1,7 +1,6 @@
 // The classroom's mystery surface: the Mystery menu where the teacher makes a pair a mystery or
 // reveals it, and the Mystery tab where the class types what it measured and sees how far off
 // it is. What stays hidden until the reveal is decided by hidden_values(), which every panel reads.
-#define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
 #include <cstdio>
 

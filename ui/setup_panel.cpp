@@ -1,6 +1,5 @@
 // Prepared setups in the classroom: the window's state as a setup file (ui/setup_file.h), saving
 // it, opening one in place of the running lesson, and the Lesson menu's dialog for both.
-#define IMGUI_DEFINE_MATH_OPERATORS
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
