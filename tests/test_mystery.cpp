@@ -228,3 +228,41 @@ TEST(MysteryWindow, APairTheLessonDoesNotHaveIsRefusedWithItsPairs) {
 
 }  // namespace
 }  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// A value that rebuilds the lesson keeps the mystery's values; one that would take its pair away
+// (the block's material in spring_pull) is refused while the mystery lasts, and says why.
+TEST(MysteryWindow, ARebuildKeepsTheValuesAndThePairCannotBeChangedAway) {
+  ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
+  ClassroomHands hands(options);
+  const MysteryValues truth = mystery_values(window_seed);
+  hands.texts();
+  hands.click("block slider");
+  hands.frame();
+  hands.click("block choice plastic");
+  hands.frame();
+  EXPECT_EQ(hands.lesson().parameter("block").shown(), "aluminium") << "the pair stays aluminium on wood";
+  EXPECT_NE(hands.classroom().control_error("block").find("The mystery is aluminium/wood"), std::string::npos)
+      << hands.classroom().control_error("block");
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_s, truth.mu_s);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_k, truth.mu_k);
+  // A value that rebuilds the scene (the mass, read while it is built) keeps the drawn values.
+  hands.classroom().playback().run_to(1.0);
+  const ImRect mass = hands.control("mass slider");
+  ImGui::GetIO().MousePos = ImVec2(mass.Min.x + 0.7f * mass.GetWidth(), mass.GetCenter().y);
+  hands.frame();
+  ImGui::GetIO().MouseDown[0] = true;
+  hands.frame();
+  ImGui::GetIO().MouseDown[0] = false;
+  hands.frame();
+  EXPECT_NE(hands.lesson().parameter("mass").value, 1.0) << "the click set the mass";
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().parameter("mu_k").value, truth.mu_k);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_s, truth.mu_s);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

@@ -298,8 +298,10 @@ void Classroom::change_settings(const StepSettings& settings) {
 
 void Classroom::set_value(const std::string& name, const std::string& text) {
   try {
+    const std::string before = parameter_text(playback_->lesson().parameter(name));
     playback_->set_parameter(name, text);
     control_errors_.erase(name);
+    keep_mystery(name, before);
   } catch (const InvalidInput& error) {
     control_errors_[name] = error.what();
   }

@@ -162,6 +162,9 @@ class Classroom {
   void cheapest_setting_tab();
   void mystery_menu();
   void mystery_tab();
+  // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
+  // would take its pair away (a material chosen) is put back, with why beside its control.
+  void keep_mystery(const std::string& name, const std::string& before);
   // The Lesson menu's dialog that opens a setup or saves one, by its path.
   void setup_popup();
   // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one

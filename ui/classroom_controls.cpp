@@ -312,6 +312,7 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     if (open) {
       for (const std::string& choice : parameter.choices) {
         if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) pending_values_.push_back({name, choice});
+        remember(name + " choice " + choice);
       }
       ImGui::EndCombo();
     }

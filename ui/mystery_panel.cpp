@@ -39,6 +39,25 @@ std::string Classroom::make_mystery(const MysteryChoice& choice) {
   }
 }
 
+void Classroom::keep_mystery(const std::string& name, const std::string& before) {
+  if (!mystery_) return;
+  const lessons::Lesson& lesson = playback_->lesson();
+  try {
+    if (mystery_parameters(lesson, mystery_->choice().pair) != std::make_pair(mystery_->mu_s_name(), mystery_->mu_k_name())) {
+      throw InvalidInput("another pair");
+    }
+  } catch (const InvalidInput&) {
+    playback_->set_parameter(name, before);
+    control_errors_[name] = "The mystery is " + mystery_->choice().pair + ": this " + name +
+                            " would take that pair away. Open the lesson again to end the mystery first.";
+    return;
+  }
+  // A rebuild reads the pair's values from the script again: the drawn ones are put back.
+  for (const auto& [coefficient, value] : mystery_->settings()) {
+    if (parameter_text(lesson.parameter(coefficient)) != value) playback_->set_parameter(coefficient, value);
+  }
+}
+
 void Classroom::reveal_mystery() {
   if (mystery_) mystery_->reveal();
 }
