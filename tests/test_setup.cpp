@@ -165,6 +165,11 @@ TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
   EXPECT_EQ(parse_error("lesson\n"), "class.setup:1: lesson needs what it sets, as in: lesson spring_pull");
   // Comments, blank lines, a byte-order mark and Windows line ends are all fine.
   EXPECT_EQ(parse_error("\xEF\xBB\xBF# a class\r\n\r\n  lesson incline  \r\n# more\r\nset angle = 30\r\n"), "");
+  // Found by the fuzzer: a line ending in two carriage returns reads, and writes back, as the same lesson.
+  const PreparedSetup twice = parse_setup("lesson my.lua\r\r\nlock x,y\r\n", "class.setup");
+  EXPECT_EQ(twice.lesson, "my.lua");
+  EXPECT_EQ(parse_setup(setup_text(twice), "again.setup").lesson, "my.lua");
+  EXPECT_EQ(twice.lock, (std::vector<std::string>{"x", "y"}));
 
   // Against the lesson: the value, the lock's name and the pair are checked where the file gives them.
   ClassroomOptions options;

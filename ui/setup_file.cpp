@@ -21,10 +21,13 @@ namespace fs = std::filesystem;
 // A setup is a few dozen lines: anything much larger is not one.
 constexpr std::size_t largest_setup = 64 * 1024;
 
+// Spaces, tabs and carriage returns at either end are not part of what a line says (a file
+// saved on Windows, then edited elsewhere, can end a line in two of them).
 std::string trimmed(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t");
+  const char* const blank = " \t\r";
+  const std::size_t first = text.find_first_not_of(blank);
   if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+  return text.substr(first, text.find_last_not_of(blank) - first + 1);
 }
 
 // Where a line of the file is, for messages: "class.setup:4: ".
@@ -79,12 +82,11 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
   std::istringstream lines(text);
   std::string raw;
   for (int number_of_line = 1; std::getline(lines, raw); ++number_of_line) {
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();  // written on Windows
     if (number_of_line == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);
     const std::string line = trimmed(raw);
     if (line.empty() || line[0] == '#') continue;
     const At at{path, number_of_line};
-    const std::size_t space = line.find_first_of(" \t");
+    const std::size_t space = line.find_first_of(" \t\r");
     const std::string word = line.substr(0, space);
     const std::string rest = space == std::string::npos ? "" : trimmed(line.substr(space));
     if (word != "lesson" && word != "set" && word != "lock" && word != "mystery" && word != "hz" && word != "substeps" &&
