@@ -117,13 +117,14 @@ void Classroom::mystery_tab() {
   Mystery& mystery = *mystery_;
   const Theme& colours = theme(window_.theme);
   ImGui::PushTextWrapPos(0.0f);
-  // Not the seed: with it a student could draw the values at home.
-  const std::string heading =
-      "\u03bcs and \u03bck of " + mystery.choice().pair + " are a mystery. Measure them from the run and type them:";
+  // Not the seed: with it a student could draw the values at home. Short: in projector mode
+  // the column shows four lines of a tab before it scrolls, and the reveal must be among them.
+  const std::string heading = "Measure \u03bcs and \u03bck of " + mystery.choice().pair + ":";
   shown_text(heading.c_str());
   const double truths[2] = {mystery.values().mu_s, mystery.values().mu_k};
   std::optional<double>* answers[2] = {&mystery.answer_mu_s, &mystery.answer_mu_k};
-  const float box = ImGui::CalcTextSize("0.0000").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float box = ImGui::CalcTextSize("0.0000").x + 2.0f * style.FramePadding.x;
   for (int k = 0; k < 2; ++k) {
     ImGui::PushID(k);
     ImGui::AlignTextToFramePadding();
@@ -146,27 +147,32 @@ void Classroom::mystery_tab() {
       }
     }
     ImGui::SameLine();
+    // How far off, and once revealed the true value beside it.
+    std::string said = answers[k]->has_value() ? closeness_text(**answers[k], truths[k]) : "not yet";
+    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + exact_text(truths[k]);
     if (!answer_error_[k].empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
       shown_text(answer_error_[k].c_str());
       ImGui::PopStyleColor();
-    } else if (answers[k]->has_value()) {
-      const std::string off = closeness_text(**answers[k], truths[k]);
-      shown_text(off.c_str());
+    } else if (answers[k]->has_value() || mystery.revealed()) {
+      shown_text(said.c_str());
     } else {
-      ImGui::TextDisabled("not answered yet");
-      note_text("not answered yet");
+      ImGui::TextDisabled("%s", said.c_str());
+      note_text(said.c_str());
     }
     ImGui::PopID();
   }
   if (!mystery.revealed()) {
-    if (ImGui::Button("Reveal the true values")) reveal_mystery();
+    // At the end of the μk line when it has room.
+    const char* reveal = "Reveal";
+    const float button = ImGui::CalcTextSize(reveal).x + 2.0f * style.FramePadding.x;
+    const float after = ImGui::GetItemRectMax().x + 2.0f * style.ItemSpacing.x;
+    if (after + button <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+      ImGui::SameLine(after - ImGui::GetWindowPos().x);
+    }
+    if (ImGui::Button(reveal)) reveal_mystery();
     remember("mystery reveal");
-  } else {
-    char truth[96];
-    std::snprintf(truth, sizeof truth, "The true values: \u03bcs %s, \u03bck %s", exact_text(truths[0]).c_str(),
-                  exact_text(truths[1]).c_str());
-    shown_text(truth);
+    note_text_centred(reveal, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
   }
   ImGui::PopTextWrapPos();
   ImGui::EndTabItem();
