@@ -153,3 +153,9 @@ expect { "six feet: their loads add up to", unit = "N",
   predicted = function() return mass * g end,
   measured = function() return total_load("six_feet", 6) end,
   tolerance = function() return 0.001 * mass * g end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "wide: breakaway pull", unit = "N",
+  question = "How hard must the pull be to start the block lying on its wide face?" }
+predict { "narrow: breakaway pull", unit = "N",
+  question = "And the same block standing on its narrow face?" }

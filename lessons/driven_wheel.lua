@@ -130,6 +130,10 @@ expect { "friction while gripping, forward", unit = "N",
     return time() >= gripping_time() and value_at("friction_force", gripping_time()) or nil
   end,
   tolerance = function() return 0.01 * wheel_theory(param.torque).friction + 1e-3 end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "friction while gripping, forward", unit = "N",
+  question = "While the tyre grips, how hard does the road push the wheel forward (a minus sign for backward)?" }
 expect { "acceleration at the end", unit = "m/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).acceleration end,
   measured = function() return too_fast() or at_the_end("acceleration") end,

@@ -139,3 +139,9 @@ for _, lane in ipairs { { "coulomb", 0, 0 }, { "engineering", c, 0 }, { "quadrat
     -- (above) ends the slide sooner.
     tolerance = function() return step_length() + rest(drag_c, drag_b).time - harder(drag_c, drag_b).time end }
 end
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "coulomb: stopping time", unit = "s",
+  question = "How long does the block with dry friction only (Coulomb) take to stop?" }
+predict { "quadratic: stopping time", unit = "s",
+  question = "And the block that also feels drag growing with its speed squared?" }

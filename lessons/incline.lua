@@ -73,3 +73,9 @@ expect { "mean acceleration down the slope", unit = "m/s²",
     return (value_at("speed", late_time) - value_at("speed", early_time)) / (late_time - early_time)
   end,
   tolerance = function() return math.max(0.01 * math.abs(predicted_acceleration()), 0.01) end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "sticks or slides", choices = { "sticks", "slides" },
+  question = "Let go on this slope: does the block stay where it is or slide down?" }
+predict { "mean acceleration down the slope", unit = "m/s²",
+  question = "If it slides, how fast does it speed up (0 if it stays)?" }

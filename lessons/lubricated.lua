@@ -149,3 +149,9 @@ expect { "distance at the end", unit = "m",
   predicted = function() return word(run_length()) or slide(run_length()).distance end,
   measured = function() return word(run_length()) or at_the_end("distance") end,
   tolerance = function() return 0.01 * slide(run_length()).distance + 1e-3 end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "acceleration, oiled", unit = "m/s²",
+  question = "While the table is oiled, how fast does the block speed up under the same pull?" }
+predict { "speed at the end", unit = "m/s",
+  question = "The oil is gone again. How fast is the block going at the end?" }

@@ -108,6 +108,12 @@ expect { "rope tension", unit = "N",
   predicted = function() return on_threshold() or pulley_theory().tension end,
   measured = function() return on_threshold() or at_the_end("tension") end,
   tolerance = function() return 0.005 * pulley_theory().tension + 1e-3 end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "the block", choices = { "slides", "stays put" },
+  question = "Let the weight hang: does it drag the block along the table, or does the block stay put?" }
+predict { "rope tension", unit = "N",
+  question = "How hard does the rope pull on the block: the hanging weight's whole weight, or less?" }
 expect { "friction on the block", unit = "N",
   predicted = function() return on_threshold() or pulley_theory().friction end,
   measured = function()

@@ -123,6 +123,12 @@ expect { "friction at the end", unit = "N",
     return 0.01 * final.friction + 1e-3 + slope * (math.abs(final.acceleration) * step_length() / 2 + drag_step())
   end }
 
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "breakaway push", unit = "N",
+  question = "The push grows steadily. How hard is it when the block starts to move?" }
+predict { "friction at the end", unit = "N",
+  question = "Once the block slides, how hard does friction hold it back?" }
+
 expect { "speed at the end", unit = "m/s",
   predicted = function() return out_of_reach() or step_too_long() or push_theory(ending()).speed end,
   measured = function() return out_of_reach() or step_too_long() or at_the_end("speed") end,

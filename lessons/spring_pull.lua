@@ -121,6 +121,12 @@ expect { "re-stick force", unit = "N",
   measured = function() return at_the_limit() or stick_and_slip().restick_force end,
   tolerance = function() return 0.02 * param.mu_s * weight end }
 
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "breakaway force", unit = "N",
+  question = "The spring pulls harder and harder. How hard is it pulling when the block starts to move?" }
+predict { "re-stick force", unit = "N",
+  question = "Once the block has jerked forward and stopped again, how hard is the spring still pulling?" }
+
 expect { "stick-slip period", unit = "s",
   predicted = function() return at_the_limit() or cycle().period end,
   measured = function() return at_the_limit() or stick_and_slip().period end,

@@ -193,3 +193,9 @@ expect { "bottom block's acceleration at the end", unit = "m/s²",
   predicted = function() return no_theory() or off_the_floor() or bottom_acceleration(ending() - step_length()) end,
   measured = function() return no_theory() or off_the_floor() or at_the_end("bottom_acceleration") end,
   tolerance = function() return 0.01 * math.abs(bottom_acceleration(ending())) + 1e-3 end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "friction on the top block halfway, forward", unit = "N",
+  question = "While the two move together, how hard does friction push the top block forward (a minus sign for backward)?" }
+predict { "the top block starts to slip at a pull of", unit = "N",
+  question = "How hard is the pull when the top block stops keeping up?" }

@@ -157,3 +157,9 @@ expect { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
   predicted = function() return hack().drift_speed end,
   measured = function() return over() and value_at("hack_box_speed", time()) or nil end,
   tolerance = function() return 0.01 * math.abs(hack().drift_speed) + 1e-3 end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "ice_box: then", choices = { "stays", "slides back" },
+  question = "The box thrown up the icy slope stops. Does it stay there or slide back?" }
+predict { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
+  question = "The game's box has its speed cut every frame. How fast is it drifting at the end?" }

@@ -119,3 +119,9 @@ expect { "locked box: distance to rest", unit = "m",
     return time() >= throw().locked_stop_time + 0.25 and value_at("locked_box_distance", time()) or nil
   end,
   tolerance = function() return 0.01 * throw().locked_distance + throw_speed * step_length() end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "spin just after the impact", unit = "rad/s",
+  question = "The box lands on a corner. How fast is it spinning just after (counter-clockwise positive)?" }
+predict { "locked box: distance to rest", unit = "m",
+  question = "The game's box cannot turn. How far does it slide before it stops?" }

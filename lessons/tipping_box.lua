@@ -98,3 +98,9 @@ expect { "push when it happens", unit = "N",
     return push_then
   end,
   tolerance = function() return 0.005 * predicted().force end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "tips or slides", choices = { "tips", "slides" },
+  question = "Pushed at this height, does the box tip over or slide along the floor?" }
+predict { "push when it happens", unit = "N",
+  question = "How hard is the push when the box starts to tip or slide?" }

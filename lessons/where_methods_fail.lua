@@ -130,3 +130,9 @@ expect { "small ε: at this step",
     local late, middle = swing(0.9 * n, n), swing(0.4 * n, 0.5 * n)
     return (late > 1e-3 * small and late >= 0.5 * middle) and "jitters" or "settles"
   end }
+
+-- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
+predict { "small ε: at this step", choices = { "jitters", "settles" },
+  question = "With a small threshold and this time step, does the block jitter for ever or settle?" }
+predict { "large ε: creep speed", unit = "m/s",
+  question = "With a large threshold, how fast does the block creep down a slope it should stick to?" }

@@ -22,13 +22,50 @@ shot() {  # shot NAME "settings lines" frictionlab-arguments...
   echo "docs/screenshots/$name.png"
 }
 
-shot window "help = off\n" spring_pull --at 2
-shot window_help "help = on\n" incline --at 0.6
-shot window_projector_dark "help = off\ntheme = dark\nprojector = on\nwidth = 1920\nheight = 1080\n" tipping_box --at 2.2
-shot window_locked "help = off\n" spring_pull --lock mu_s,mu_k --at 1.2
+# The theory as it always shows; predict first has shots of its own below.
+shot window "help = off\npredictions = off\n" spring_pull --at 2
+shot window_help "help = on\npredictions = off\n" incline --at 0.6
+shot window_projector_dark "help = off\npredictions = off\ntheme = dark\nprojector = on\nwidth = 1920\nheight = 1080\n" tipping_box --at 2.2
+shot window_locked "help = off\npredictions = off\n" spring_pull --lock mu_s,mu_k --at 1.2
 # A mystery surface in projector mode: its values hidden, the class's answers asked for.
-shot window_mystery "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" spring_pull --mystery aluminium/wood --seed 42 --at 3
+shot window_mystery "help = off\npredictions = off\nprojector = on\nwidth = 1920\nheight = 1080\n" spring_pull --mystery aluminium/wood --seed 42 --at 3
 # What a student sees after saving a script with a mistake: the error with its file and line,
 # and a lesson that works still running.
 sed 's/^local angle = parameter/local angle = parameter {/' lessons/incline.lua > "$scratch/my_incline.lua"
-shot window_script_error "help = off\n" "$scratch/my_incline.lua" --at 1
+shot window_script_error "help = off\npredictions = off\n" "$scratch/my_incline.lua" --at 1
+
+# Predict, then reveal (projector mode, 1920 × 1080): the window driven by hand on Xvfb with
+# xdotool, as a teacher would: fold the friction pair, pick "slides", type 50 in the number's
+# box, play the run to its end, press T. The points clicked are where the window
+# puts those controls at this size; look at both pictures.
+predict_shots() {
+  local home="$scratch/predict" display=:57
+  mkdir -p "$home/frictionlab" "$home/out"
+  printf 'help = off\nprojector = on\nwidth = 1920\nheight = 1080\n' > "$home/frictionlab/settings.ini"
+  Xvfb $display -screen 0 1920x1080x24 >/dev/null 2>&1 &
+  local xvfb=$!
+  sleep 2
+  (cd "$home/out" && DISPLAY=$display XDG_CONFIG_HOME="$home" "$OLDPWD/build/app/frictionlab" tipping_box) &
+  local app=$!
+  sleep 4
+  local window
+  window=$(DISPLAY=$display xdotool search --name . | head -1)
+  x() { DISPLAY=$display xdotool "$@"; sleep 0.7; }
+  x mousemove 1210 537 click 1          # fold "crate on floor" into its heading
+  x mousemove 1336 841 click 1          # the box slides
+  x mousemove 1305 969 click 1          # the number's box
+  x type --delay 100 50
+  x mousemove 1800 560 click 1          # done typing
+  x mousemove 1900 120
+  x key --window "$window" ctrl+s
+  x key --window "$window" space
+  sleep 5                               # the run ends at 2.75 s and pauses
+  x key --window "$window" t
+  x key --window "$window" ctrl+s
+  sleep 2
+  kill $app $xvfb
+  cp "$home/out/frictionlab_tipping_box_t0.00.png" docs/screenshots/window_predict.png
+  cp "$home/out/frictionlab_tipping_box_t2.75.png" docs/screenshots/window_reveal.png
+  echo docs/screenshots/window_predict.png docs/screenshots/window_reveal.png
+}
+predict_shots

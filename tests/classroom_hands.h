@@ -63,9 +63,22 @@ class ClassroomHands {
     return rect.value_or(ImRect());
   }
   // Press and release on the named control, a frame for each, as a hand does.
-  void click(const std::string& name) {
+  void click(const std::string& name) { click_at(control(name).GetCenter()); }
+  // The same on a text the last frames drew (a tab's name): its middle.
+  void click_text(const std::string& text) {
+    frame();
+    FrameRecord record;
+    frame(&record);
+    for (const ShownText& shown : record.texts) {
+      if (shown.text != text) continue;
+      click_at(ImVec2(0.5f * (shown.needed.x + shown.needed.z), 0.5f * (shown.needed.y + shown.needed.w)));
+      return;
+    }
+    ADD_FAILURE() << "no text '" << text << "' was drawn";
+  }
+  void click_at(ImVec2 point) {
     ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = control(name).GetCenter();
+    io.MousePos = point;
     frame();
     io.MouseDown[0] = true;
     frame();

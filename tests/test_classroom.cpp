@@ -5,6 +5,7 @@
 
 #include "physics/stability.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -1012,6 +1013,152 @@ end)
   EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().x, at_one.x);
   EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().y, at_one.y);
   EXPECT_EQ(driver.lesson().scene().ledger().work_script, taken);
+}
+
+// Predict first: the class's answer is typed before Play, fixed once the run starts, and set
+// beside the theory and the measurement once the teacher reveals them.
+TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasurement) {
+  Driver driver("spring_pull");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
+  driver.frame();
+  ASSERT_TRUE(driver.classroom().theory_hidden());
+  driver.click("prediction breakaway force");
+  driver.type("4");
+  driver.press(ImGuiKey_Enter);
+  EXPECT_EQ(driver.classroom().predictions().answers["breakaway force"], "4");
+  // The run: the answer is the class's, and stays as it was.
+  driver.key(Key::space);
+  driver.playback().run_to(driver.lesson().duration());
+  driver.key(Key::space);
+  driver.click("prediction breakaway force");
+  driver.type("9");
+  driver.press(ImGuiKey_Enter);
+  EXPECT_EQ(driver.classroom().predictions().answers["breakaway force"], "4");
+  EXPECT_TRUE(driver.classroom().theory_hidden()) << "the run alone reveals nothing";
+
+  driver.click("reveal");
+  EXPECT_FALSE(driver.classroom().theory_hidden());
+  FrameRecord record;
+  driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+  driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+  // Breakaway at mu_s·m·g = 0.45 × 1 kg × 9.81 m/s² = 4.41 N: the class's 4 N is 0.41 N below.
+  lessons::ExpectationResult breakaway;
+  for (const lessons::ExpectationResult& row : driver.playback().readings().expectations) {
+    if (row.name == "breakaway force") breakaway = row;
+  }
+  ASSERT_TRUE(breakaway.measured_yet);
+  EXPECT_NEAR(breakaway.predicted, 0.45 * 9.81, 1e-9);
+  const auto drawn = [&](const std::string& text) {
+    for (const ShownText& shown : record.texts) {
+      if (shown.text == text) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(drawn("4 N")) << "the class's answer with its unit";
+  EXPECT_TRUE(drawn(format_quantity(breakaway.predicted, "N")));
+  EXPECT_TRUE(drawn(format_quantity(breakaway.measured, "N")));
+  const double off = 4.0 - breakaway.measured;
+  char close[96];
+  std::snprintf(close, sizeof close, "class: \u2212%s, %.0f %% below the measurement", format_quantity(-off, "N").c_str(),
+                100.0 * -off / breakaway.measured);
+  EXPECT_TRUE(drawn(close)) << close;
+  // T hides nothing again; a lesson opened afresh asks again.
+  driver.key(Key::t);
+  EXPECT_FALSE(driver.classroom().theory_hidden());
+  EXPECT_EQ(driver.classroom().open("tipping_box"), "");
+  driver.frame();
+  EXPECT_TRUE(driver.classroom().theory_hidden());
+  EXPECT_TRUE(driver.classroom().predictions().answers.empty());
+  driver.click("prediction tips or slides: slides");
+  EXPECT_EQ(driver.classroom().predictions().answers["tips or slides"], "slides");
+  driver.key(Key::t);
+  EXPECT_FALSE(driver.classroom().theory_hidden());
+}
+
+// A teacher who takes no predictions has the theory from the start.
+TEST(Classroom, WithPredictionsOffTheTheoryShowsFromTheStart) {
+  Driver driver("incline");
+  driver.frame();
+  EXPECT_TRUE(driver.classroom().theory_hidden());
+  driver.click("View menu");
+  driver.click("Ask for predictions first");
+  EXPECT_FALSE(driver.classroom().window_settings().predictions);
+  EXPECT_FALSE(driver.classroom().theory_hidden());
+}
+
+// The vertices a plot's window drew in the theory's colour: its curves and their legend key.
+int theory_vertices(const Theme& colours, std::size_t plots) {
+  int count = 0;
+  for (std::size_t i = 0; i < plots; ++i) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(("###plot" + std::to_string(i)).c_str());
+    if (window == nullptr) continue;
+    for (const ImDrawVert& vertex : window->DrawList->VtxBuffer) {
+      if ((vertex.col & 0x00ffffffu) == (colours.theory & 0x00ffffffu) && (vertex.col >> 24) > 0) ++count;
+    }
+  }
+  return count;
+}
+
+// Before the reveal no panel states a theory value of the lesson, and no plot draws a theory
+// curve: every text the frame drew is searched for each row's theory as the table writes it
+// (a word only as one of the choices offered, as often as the choices name it). After the
+// reveal each predicted row's theory is drawn beside the class's answer.
+TEST(Classroom, BeforeTheRevealNoPanelGivesTheTheoryAway) {
+  const auto all = [](const FrameRecord& record, const std::string& text, bool whole) {
+    int count = 0;
+    for (const ShownText& shown : record.texts) count += whole ? shown.text == text : shown.text.find(text) != std::string::npos;
+    return count;
+  };
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    SCOPED_TRACE(entry.name);
+    Driver driver(entry.name);
+    driver.set_display(ImVec2(1920.0f, 1080.0f));
+    FrameRecord record;
+    driver.frame();
+    driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+    const std::vector<lessons::ExpectationResult> rows = driver.lesson().expectations();
+    const auto& predictions = driver.lesson().predictions();
+    ASSERT_FALSE(predictions.empty());
+    for (const lessons::ExpectationResult& row : rows) {
+      if (row.numeric) {
+        // A theory of exactly 0 (check_the_article's block ends at rest) reads "0 J", which the
+        // energy ledger's "0.0000 J" contains without giving anything away.
+        if (row.predicted == 0.0) continue;
+        EXPECT_EQ(all(record, format_quantity(row.predicted, row.unit.c_str()), false), 0)
+            << row.name << ": " << format_quantity(row.predicted, row.unit.c_str());
+        continue;
+      }
+      int offered = 0;
+      for (const lessons::Prediction& prediction : predictions) {
+        offered += static_cast<int>(std::count(prediction.choices.begin(), prediction.choices.end(), row.predicted_text));
+      }
+      EXPECT_EQ(all(record, row.predicted_text, true), offered) << row.name << ": " << row.predicted_text;
+    }
+    const Theme& colours = theme(ThemeName::light);
+    const std::size_t plots = driver.lesson().plots().size();
+    bool any_theory_curve = false;
+    for (const lessons::Plot& plot : driver.lesson().plots()) any_theory_curve = any_theory_curve || !plot.theory.empty();
+    EXPECT_EQ(theory_vertices(colours, plots), 0);
+
+    // Revealed, with an answer for each question: the theory beside the class's answer.
+    for (const lessons::Prediction& prediction : predictions) {
+      driver.classroom().predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices[0] : "1";
+    }
+    driver.classroom().predictions().revealed = true;
+    driver.frame();
+    driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+    for (const lessons::Prediction& prediction : predictions) {
+      const auto row = std::find_if(rows.begin(), rows.end(),
+                                    [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
+      ASSERT_NE(row, rows.end());
+      const std::string theory = row->numeric ? format_quantity(row->predicted, row->unit.c_str()) : row->predicted_text;
+      EXPECT_GE(all(record, theory, true), 2) << prediction.expectation << ": in the class's table and the theory table";
+      EXPECT_GE(all(record, prediction.is_choice() ? prediction.choices[0] : "1 " + prediction.unit, true), 1);
+    }
+    if (any_theory_curve) {
+      EXPECT_GT(theory_vertices(colours, plots), 0);
+    }
+  }
 }
 
 }  // namespace

@@ -96,13 +96,15 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
 }
 
 // Every text whole where it was drawn. Only the tabs under the sliders may scroll (when even
-// folded friction pairs leave the theory table too little room): text there may be a scroll
-// away above or below, never cut across. The sliders never scroll.
+// folded friction pairs leave the theory table too little room), and the class's predictions
+// in the theory table's place: text there may be a scroll away above or below, never cut
+// across. The sliders never scroll.
 void check_texts(const FrameRecord& record, const std::string& where) {
   EXPECT_FALSE(record.texts.empty()) << where << ": no text was recorded";
   for (const ShownText& text : record.texts) {
     const std::string panel = text.panel.substr(text.panel.find("###") == std::string::npos ? 0 : text.panel.find("###") + 3);
-    const bool scrolled = text.scrolls && panel == "books";
+    // So may the class's predictions, where they are longer than the theory table they stand in for.
+    const bool scrolled = text.scrolls && (panel == "books" || panel == "theory");
     EXPECT_TRUE(scrolled ? text.whole_across() : text.whole())
         << where << ": \"" << text.text << "\" in " << panel << " needs " << text_of(text.needed) << " but only "
         << text_of(text.visible) << " shows";
@@ -149,7 +151,7 @@ const WindowScreen window_screens[] = {
 
 class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
 
-TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAndWhenTheRunEnds) {
+TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
   HeadlessContext gl;
@@ -186,6 +188,12 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAndWhenTheRunEnds) {
       check_at(0.5 * duration, "mid-run");
       // The run's end says so in the transport bar.
       check_at(duration, "at the end");
+      // The theory revealed beside the class's answers (the class's table, then the theory table).
+      for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+        window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
+      }
+      window.predictions().revealed = true;
+      check_at(duration, "revealed");
     }
   }
 }

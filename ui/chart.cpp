@@ -344,7 +344,11 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       float y = inside.min.y;
       for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
     };
-    if (inside.clear) {
+    // A corner clear of the data holds the legend only if the legend fits in the data area:
+    // a tall one would run out over the axis and its labels.
+    const bool fits = legend_size.y + 10.0f * s <= layout.low_left.y - layout.high_right.y &&
+                      legend_size.x + 10.0f * s <= layout.high_right.x - layout.low_left.x;
+    if (inside.clear && fits) {
       in_corner();
     } else {
       // No corner is free of the data: the legend goes above the data area, in one row beside
@@ -362,11 +366,37 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       } else if (const std::vector<ImVec2> rows = wrap_keys(keys, layout.low_left.x, layout.high_right.x,
                                                             layout.high_right.y - 4.0f * s, row_height, font, s);
                  rows.back().y - rows.front().y + row_height > 0.45f * (layout.low_left.y - layout.high_right.y)) {
-        // Rows above the data would leave it too little height (large text in a small plot):
-        // the legend goes in the corner it covers least of, over the data, rather than the plot
-        // losing its data.
-        layout.legend_outside = false;
-        in_corner();
+        // Rows above the data would leave it little height (large text in a small plot, as on
+        // a projector). Beside it, on the right, a key a line, if the data keeps at least half
+        // the width; else the rows above all the same while the data keeps 30 px of height
+        // (a short plot beats one with its data under the keys); else, rather than the plot
+        // losing its data, in the corner it covers least of.
+        const float column = legend_size.x + 8.0f * s;
+        const float data_width = layout.high_right.x - layout.low_left.x;
+        const float rows_height = rows.back().y - rows.front().y + row_height + 4.0f * s;
+        if (data_width - column >= 0.5f * data_width && legend_size.y <= layout.low_left.y - layout.high_right.y) {
+          layout.high_right.x -= column;
+          float y = layout.high_right.y;
+          for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) {
+            layout.legend_at.push_back(ImVec2(layout.high_right.x + 8.0f * s, y));
+          }
+          // Fewer x ticks for the narrower data, as many as its width holds.
+          const int narrower = chart.x_tick_count > 0 ? chart.x_tick_count
+                                                      : std::max(2, static_cast<int>((data_width - column) / (70.0f * s)));
+          layout.x_ticks.clear(), layout.x_tick_labels.clear();
+          for (const Tick& tick : ticks_every(axes.x, narrower)) {
+            layout.x_ticks.push_back(tick.value);
+            layout.x_tick_labels.push_back(tick.label);
+          }
+          place();
+        } else if (layout.low_left.y - (layout.high_right.y + rows_height) >= 30.0f * s) {
+          layout.legend_at = rows;
+          layout.high_right.y = rows.back().y + row_height + 4.0f * s;
+          place();
+        } else {
+          layout.legend_outside = false;
+          in_corner();
+        }
       } else {
         layout.legend_at = rows;
         layout.high_right.y = rows.back().y + row_height + 4.0f * s;

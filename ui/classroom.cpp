@@ -146,6 +146,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     // (whose boundary would give μs away until the reveal anyway).
     if (!mystery_) stability_map_tab();
   };
+  predictions_style(style);
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_heights();
   ImGui::PopFont();
@@ -191,6 +192,7 @@ void Classroom::handle_keys() {
   if (hit(Key::f11, false)) full_screen_toggle_ = true;
   if (hit(Key::f1, false)) window_.help = !window_.help;
   if (hit(Key::p, false)) window_.projector = !window_.projector;
+  if (hit(Key::t, false) && theory_hidden()) predictions_.revealed = true;
   if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 
@@ -351,6 +353,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     mystery_.reset();  // it was a pair of the lesson that closed
+    predictions_ = {};
     forget_interaction();
     return "";
   } catch (const InvalidInput& error) {

@@ -26,6 +26,7 @@
 #include "ui/mystery.h"
 #include "ui/setup_file.h"
 #include "ui/playback.h"
+#include "ui/predictions.h"
 #include "ui/settings.h"
 #include "ui/theme.h"
 
@@ -139,6 +140,10 @@ class Classroom {
   // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
   // (or opening another lesson) puts the view back.
   const ViewAdjust& view_adjust() const { return view_adjust_; }
+  // The class's predictions for the lesson on screen (typed in the theory panel before Play),
+  // and whether the theory is still kept from the class.
+  ClassPredictions& predictions() { return predictions_; }
+  bool theory_hidden() const;
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
     const auto found = control_errors_.find(name);
@@ -200,6 +205,9 @@ class Classroom {
                      float value_x, float reset_x);
   void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);
+  // The predictions' part of the frame: their contents and height in the theory panel, and
+  // what they hide (ui/classroom_predictions.cpp).
+  void predictions_style(FrameStyle& style);
   void help_panel();
   void open_script_popup();
   void set_value(const std::string& name, const std::string& text);
@@ -225,6 +233,7 @@ class Classroom {
   // Interaction state only: what is being dragged, typed or asked for.
   std::map<std::string, ImRect> controls_;
   std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
+  ClassPredictions predictions_;  // a new lesson asks again
   std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame

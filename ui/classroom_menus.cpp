@@ -103,12 +103,19 @@ void Classroom::menu_bar() {
     ImGui::EndMenu();
   }
   mystery_menu();
-  if (ImGui::BeginMenu("View")) {
+  const bool view = ImGui::BeginMenu("View");
+  remember("View menu");
+  if (view) {
     bool dark = window_.theme == ThemeName::dark;
     if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;
     ImGui::MenuItem("Projector mode", "P", &window_.projector);
     if (ImGui::MenuItem("Full screen", "F11")) full_screen_toggle_ = true;
     ImGui::MenuItem("Help", "F1", &window_.help);
+    ImGui::Separator();
+    // Off: the theory shows from the start, as for a teacher who takes no predictions.
+    ImGui::MenuItem("Ask for predictions first", nullptr, &window_.predictions);
+    remember("Ask for predictions first");
+    if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.revealed = true;
     ImGui::EndMenu();
   }
   // Which file is running, so a student knows which script to edit.
@@ -136,6 +143,7 @@ void Classroom::help_panel() {
         {"Ctrl+E", "export the history (CSV)"},
         {"P", "projector mode: larger text, thicker lines"},
         {"D", "dark or light theme"},
+        {"T", "reveal the theory after the class's predictions"},
         {"F11", "full screen"},
         {"F1", "this help"},
     };

@@ -85,8 +85,8 @@ struct ColumnPlan {
   bool books_tabbed = false, theory_in_tabs = false, books_scroll = false;
 };
 
-ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& readings, const FrameStyle& style,
-                       ImVec2 display) {
+// `theory`: the theory panel's contents, the height it is planned for.
+ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents) {
   const float s = style.fonts->scale;
   const FrameLayout base = FrameLayout::of(display, s, style.origin);
   const ImGuiStyle& imgui = ImGui::GetStyle();
@@ -96,8 +96,7 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const LessonReadings& read
   const float gap = 4.0f * s;
   const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
   const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
-  const float theory = bar + padding + 4.0f * s +
-                       theory_contents_height(readings.expectations, inside, readings.error, readings.caveat, style.hidden.theory());
+  const float theory = bar + padding + 4.0f * s + theory_contents;
   const bool window = static_cast<bool>(style.parameters_panel);
   // The parameters' height at each step of giving way: in a picture, the last k pairs folded;
   // the window's steps are its own (parameters_heights).
@@ -168,7 +167,19 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
   const LessonReadings& readings = style.readings ? *style.readings : own;
   const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
-  const ColumnPlan column_plan = plan_column(lesson, readings, style, display);
+  const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
+  const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
+  ColumnPlan column_plan = plan_column(lesson, style, display, table);
+  // The class's predictions are planned for whole (as the first tab, if need be) while that
+  // folds no sliders; else they have the theory table's room and scroll (the reveal button
+  // comes first).
+  bool theory_scrolls = false;
+  if (style.predictions_height) {
+    const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
+    const ColumnPlan roomy = plan_column(lesson, style, display, whole);
+    theory_scrolls = roomy.parameters_step > column_plan.parameters_step;
+    if (!theory_scrolls) column_plan = roomy;
+  }
   const FrameLayout layout = FrameLayout::of(display, s, style.origin);
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts);
@@ -262,7 +273,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         }
         const ImVec2 area = ImGui::GetContentRegionAvail();
         draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                  fonts, !style.hidden.theory());
+                  fonts, !style.theory_hidden && !style.hidden.theory());
       }
       end_panel();
     }
@@ -279,15 +290,28 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
   }
   at.y += plan.parameters + gap;
-  if (!plan.theory_in_tabs) {
+  // The class's predictions come first; before the reveal they stand in for the theory.
+  const auto theory_part = [&] {
+    if (style.predictions) style.predictions();
+    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
+  };
+  if (!plan.theory_in_tabs && !style.predictions) {
     theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());
+    at.y += plan.theory + gap;
+  } else if (!plan.theory_in_tabs) {
+    if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
+                    ImVec2(width, plan.theory), theory_scrolls)) {
+      theory_part();
+    }
+    end_panel();
     at.y += plan.theory + gap;
   }
   if (plan.books_tabbed) {
     // Short names when the full ones would not fit side by side.
     const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
                                 "Model card###model"};
-    const char* const brief[] = {"Theory###theory tab", "Energy###energy", "Model###model"};
+    const char* const brief[] = {style.theory_hidden ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
+                                 "Model###model"};
     float full_width = 0.0f;
     for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
@@ -298,7 +322,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
         ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
       if (plan.theory_in_tabs && begin_tab(names[0])) {
-        theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
+        theory_part();
         ImGui::EndTabItem();
       }
       if (begin_tab(names[1])) {

@@ -72,6 +72,12 @@ struct FrameStyle {
   FrameRecord* record = nullptr;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
+  // The class's predictions (the window), drawn at the top of the theory panel; their height
+  // at the panel's inside width. With `theory_hidden` they take the theory table's place, and
+  // nothing that states a theory value is drawn: the table, the plots' theory curves.
+  std::function<void()> predictions;
+  std::function<float(float width)> predictions_height;
+  bool theory_hidden = false;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
   HiddenValues hidden;
 };

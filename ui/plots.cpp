@@ -57,7 +57,8 @@ constexpr int theory_sample_count = 256;
 
 }  // namespace
 
-Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme, bool with_theory) {
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
+                 bool with_theory) {
   const lessons::Plot& plot = lesson.plots().at(plot_index);
   const Scene& scene = lesson.scene();
   const bool over_time = plot.kind == lessons::PlotKind::time;

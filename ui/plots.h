@@ -19,9 +19,10 @@ namespace frictionlab::ui {
 // present marked, and the theory curves sampled across the x range (kept between frames while
 // the range and parameters stay; a script error in one becomes the chart's message).
 // `time_span` is the time axis' length (the lesson's duration, or longer once the lesson has
-// run past it). Without `with_theory` (a mystery's values would be read off the curves) the
-// probes alone.
-Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme, bool with_theory = true);
+// run past it). Without `with_theory` the probes alone: the class has not seen the theory yet,
+// or a mystery's values would be read off the curves.
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme,
+                 bool with_theory = true);
 
 // Where plot number `plot` of the lesson goes in the rectangle, for tests and the drawing.
 ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,

@@ -46,6 +46,8 @@ WindowSettings load_settings(const std::string& path) {
       settings.projector = value == "on";
     } else if (name == "help" && (value == "on" || value == "off")) {
       settings.help = value == "on";
+    } else if (name == "predictions" && (value == "on" || value == "off")) {
+      settings.predictions = value == "on";
     } else if (name == "full_screen" && (value == "on" || value == "off")) {
       settings.full_screen = value == "on";
     } else if (name == "speed" && numeric && x >= 0.1 && x <= 8.0) {
@@ -65,6 +67,7 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
        << "theme = " << theme_name(settings.theme) << "\n"
        << "projector = " << (settings.projector ? "on" : "off") << "\n"
        << "help = " << (settings.help ? "on" : "off") << "\n"
+       << "predictions = " << (settings.predictions ? "on" : "off") << "\n"
        << "full_screen = " << (settings.full_screen ? "on" : "off") << "\n"
        << "speed = " << settings.speed << "\n"
        << "width = " << settings.width << "\n"

@@ -16,6 +16,7 @@ struct WindowSettings {
   double speed = 1.0;
   int width = 1280, height = 720;  // the window's size when it is not full screen
   bool full_screen = false;         // F11: a projector's whole screen, kept for the next class
+  bool predictions = true;          // ask the class to predict before the theory shows (View menu)
 
   bool operator==(const WindowSettings&) const = default;
 };

@@ -42,6 +42,7 @@ std::optional<Key> classroom_key(int glfw_key) {
     case GLFW_KEY_F11: return Key::f11;
     case GLFW_KEY_P: return Key::p;
     case GLFW_KEY_D: return Key::d;
+    case GLFW_KEY_T: return Key::t;
     case GLFW_KEY_S: return Key::s;
     case GLFW_KEY_E: return Key::e;
     default: return std::nullopt;

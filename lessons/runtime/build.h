@@ -91,6 +91,7 @@ struct LessonBuild {
   std::vector<PlotFunctions> plot_functions;  // beside plots, one for one
   std::vector<ProbeInfo> probes;
   std::vector<Expectation> expectations;
+  std::vector<Prediction> predictions;
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function
   std::vector<Rope> ropes;
@@ -222,6 +223,11 @@ void register_world_api(lua_State* state);
 // view{}: what the world view shows.
 void register_view_api(lua_State* state);
 void register_theory_api(lua_State* state);
+// predict{}: what the class predicts, one of the expect rows declared above it.
+void register_predict_api(lua_State* state);
+// After the script: each prediction's row, at the lesson's defaults, answers as the
+// prediction asks (a number, or one of its choices). Throws ScriptError placed at predict{}.
+void check_predictions(LessonBuild& build);
 
 // A number read from a handle without Lua, for probe{ read = { handle, "field" } }. The
 // table is at `index`; throws InvalidInput naming `what` and the handle's fields.

@@ -51,6 +51,7 @@ LessonBuild::LessonBuild(std::string chunk, std::map<std::string, std::string> g
   register_world_api(state);
   register_view_api(state);
   register_theory_api(state);
+  register_predict_api(state);
 }
 
 Parameter* LessonBuild::find_parameter(const std::string& name) {
@@ -239,6 +240,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
     }
   }
   try_theory_curves(*next);
+  check_predictions(*next);
   return next;
 }
 
@@ -272,6 +274,7 @@ double duration_of(LessonBuild& build) {
 
 std::optional<double> Lesson::order() const { return current_->order; }
 const std::vector<Moment>& Lesson::moments() const { return current_->moments; }
+const std::vector<Prediction>& Lesson::predictions() const { return current_->predictions; }
 
 const Moment& Lesson::moment(const std::string& name) const {
   for (const Moment& moment : current_->moments) {

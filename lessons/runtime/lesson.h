@@ -88,6 +88,18 @@ struct ExpectationResult {
   double error() const { return measured - predicted; }
 };
 
+// What the class is asked to predict before the run (predict{}): one of the lesson's expect
+// rows, so that the class's answer is set beside that row's theory and measurement, with no
+// second copy of either.
+struct Prediction {
+  std::string expectation;           // the expect row's name
+  std::string question;              // as the class is asked it
+  std::string unit;                  // the row's unit; empty for a word
+  std::vector<std::string> choices;  // not empty: the class picks one of these words
+  std::string declared_at;           // "path:line"
+  bool is_choice() const { return !choices.empty(); }
+};
+
 // A teaching moment the lesson declares in lesson{ moments = { ... } }: a time worth a
 // picture (its golden snapshot; one of them is the README's frame), with the parameters and
 // theme to show it in.
@@ -144,6 +156,8 @@ class Lesson {
   // Its place in the teaching order (lesson{ order = 10 }), if it gives one.
   std::optional<double> order() const;
   const std::vector<Moment>& moments() const;
+  // What the class predicts before the run, in the order declared.
+  const std::vector<Prediction>& predictions() const;
   // The moment of that name; throws InvalidInput listing the lesson's moments.
   const Moment& moment(const std::string& name) const;
   // Runs the moment's shows function now (step the lesson to the moment, with the moment's

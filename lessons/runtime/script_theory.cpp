@@ -11,6 +11,7 @@
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
 #include "physics/scenarios.h"
+#include "physics/wedge_model.h"
 
 namespace frictionlab::lessons {
 namespace {
@@ -432,6 +433,98 @@ int velocity_hack(lua_State* state) {
   });
 }
 
+// The article's block on a swinging, accelerating wedge, reduced to its slide along the surface
+// (physics/wedge_model.h), solved once over `duration` and sampled every `step`: lists of the
+// state at t = 0, step, 2·step, ... (index k + 1 for t = k·step), the events, and the windows in
+// which the block slips. law = "coulomb" (friction opposes the sliding; static friction holds)
+// or "article" (the article's equation as written: friction opposes the driving force, always
+// sliding). rotation = true puts back the turning surface's terms the article leaves out, for a
+// block whose centre is centre_height above the surface line and starts `start` m up the slope
+// from the pivot.
+int wedge(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.wedge", {"mass", "theta0", "omega", "a_x", "a_x_omega", "mu_s", "mu_k", "g",
+                                             "duration", "step", "law", "rotation", "centre_height", "start"});
+    WedgeDrive drive;
+    drive.mass = fields.number_in("mass", "kg", 0.0, 1e6, true);
+    drive.theta0 = fields.number_in("theta0", "°", -85.0, 85.0) * degrees;
+    drive.omega = fields.number_in("omega", "rad/s", 0.0, 0.0, 1000.0);
+    drive.a_x = fields.number_in("a_x", "m/s²", 0.0, -1e4, 1e4);
+    drive.a_x_omega = fields.number_in("a_x_omega", "rad/s", 0.0, 0.0, 1000.0);
+    drive.mu_k = fields.number_in("mu_k", "", 0.0, 10.0);
+    drive.mu_s = fields.number_in("mu_s", "", drive.mu_k, 0.0, 10.0);
+    drive.g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    drive.rotation = fields.flag("rotation").value_or(false);
+    drive.centre_height = fields.number_in("centre_height", "m", 0.0, 0.0, 100.0);
+    drive.start = fields.number_in("start", "m", 0.0, -1000.0, 1000.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
+    const double step = fields.number_in("step", "s", 1e-6, 1.0);
+    const std::string law_name = fields.text("law", "coulomb");
+    const WedgeLaw law = law_name == "coulomb"   ? WedgeLaw::coulomb
+                         : law_name == "article" ? WedgeLaw::article
+                                                 : throw InvalidInput("theory.wedge: law '" + law_name +
+                                                                      "' is neither \"coulomb\" nor \"article\"");
+    // Twelve lists of this many numbers stay well inside the script's 64 MB.
+    if (duration / step > 100000.0) {
+      throw InvalidInput("theory.wedge: duration / step is over 100000 samples; take a longer step or a shorter run");
+    }
+    const WedgeRun run = solve_wedge(drive, law, duration, step);
+    const auto list = [&](const char* key, auto of) {
+      lua_createtable(state, static_cast<int>(run.samples.size()), 0);
+      for (std::size_t i = 0; i < run.samples.size(); ++i) {
+        of(run.samples[i]);
+        lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+      }
+      lua_setfield(state, -2, key);
+    };
+    const auto number_list = [&](const char* key, double WedgeState::*field) {
+      list(key, [&](const WedgeState& sample) { lua_pushnumber(state, sample.*field); });
+    };
+    lua_createtable(state, 0, 16);
+    number_list("slide", &WedgeState::slide);
+    number_list("speed", &WedgeState::speed);
+    number_list("height", &WedgeState::height);
+    number_list("normal", &WedgeState::normal);
+    number_list("friction", &WedgeState::friction);
+    number_list("work_gravity", &WedgeState::work_gravity);
+    number_list("work_pseudo", &WedgeState::work_pseudo);
+    number_list("work_friction", &WedgeState::work_friction);
+    number_list("work_landings", &WedgeState::work_landings);
+    number_list("work_rotation", &WedgeState::work_rotation);
+    list("kinetic", [&](const WedgeState& sample) { lua_pushnumber(state, kinetic_energy(drive, sample)); });
+    list("contact", [&](const WedgeState& sample) {
+      lua_pushstring(state, sample.contact == WedgeContact::stick ? "sticking"
+                            : sample.contact == WedgeContact::slip ? "slipping"
+                                                                   : "flying");
+    });
+    lua_createtable(state, static_cast<int>(run.events.size()), 0);
+    for (std::size_t i = 0; i < run.events.size(); ++i) {
+      const WedgeEvent& event = run.events[i];
+      static constexpr const char* kinds[] = {"breakaway", "stop", "reversal", "lift-off", "landing", "sign change"};
+      lua_createtable(state, 0, 4);
+      set_number(state, "t", event.t);
+      lua_pushstring(state, kinds[static_cast<int>(event.kind)]);
+      lua_setfield(state, -2, "kind");
+      set_number(state, "slide", event.slide);
+      set_number(state, "speed", event.speed);
+      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(state, -2, "events");
+    lua_createtable(state, static_cast<int>(run.slip_windows.size()), 0);
+    for (std::size_t i = 0; i < run.slip_windows.size(); ++i) {
+      lua_createtable(state, 2, 0);
+      lua_pushnumber(state, run.slip_windows[i].first);
+      lua_rawseti(state, -2, 1);
+      lua_pushnumber(state, run.slip_windows[i].second);
+      lua_rawseti(state, -2, 2);
+      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(state, -2, "slip_windows");
+    set_number(state, "step", step);
+    return 1;
+  });
+}
+
 }  // namespace
 
 void register_theory_api(lua_State* state) {
@@ -452,6 +545,7 @@ void register_theory_api(lua_State* state) {
                                 {"thrown_box", thrown_box},
                                 {"slope_launch", slope_launch},
                                 {"velocity_hack", velocity_hack},
+                                {"wedge", wedge},
                                 {"regularized_run", regularized_run},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);

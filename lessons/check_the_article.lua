@@ -1,0 +1,231 @@
+-- check_the_article: the friction-situations article's two worked examples on a swinging,
+-- accelerating wedge, claim by claim. Each row names a claim as the article writes it and
+-- whether it holds; its numbers are what the article's own equations give, solved exactly
+-- (theory.wedge, events located), beside a Box2D block that lives those same equations.
+--
+-- The Box2D block: the article reduces the wedge to one line along its surface, felt in the
+-- wedge's frame. Lay that line flat (x down the slope, y away from the surface) and the frame's
+-- effective gravity becomes a force on a block on a level bench: F(t) = m(g·sin θ + a·cos θ)
+-- along it, and a push into it that makes the bench's normal force N(t) = m(g·cos θ − a·sin θ)
+-- (the force below adds m·g − N to cancel the world's gravity). Box2D's contact then does the
+-- rest: static friction while it holds, μk·N while it slides, a flight when N < 0. Nothing of
+-- the wedge's turning is in it, because the article leaves that out (the `wedge` lesson shows
+-- what it adds).
+--
+-- Beside the right law, the plot runs the article's equation as it is written: friction
+-- opposing the driving force F rather than the sliding, and never holding.
+
+local examples = {
+  -- "A 1.5 kg block ... θ(t) = 10° sin(3t) ... aₓ = 2 cos(2t) m s⁻² ... μₖ = 0.18 ... μₛ = 0.25 (assumed)"
+  worked = { mass = 1.5, theta0 = 10, omega = 3, a_x = 2, a_x_omega = 2, mu_s = 0.25, mu_k = 0.18 },
+  -- "m = 2 kg, θ₀ = 15°, ω = 4 rad s⁻¹, aₓ = 3 m s⁻², and μₖ = 0.25": no μs is given, and the
+  -- article never lets it stick; μs = μk here.
+  advanced = { mass = 2, theta0 = 15, omega = 4, a_x = 3, a_x_omega = 0, mu_s = 0.25, mu_k = 0.25 },
+}
+local duration = 5  -- s: the worked example's "after 5 s"
+
+lesson {
+  title = "Checking the article's worked examples",
+  question = "The article gives numbers for a block on a swinging, accelerating wedge: which of them hold?",
+  duration = duration,
+  order = 39,
+  moments = {
+    { "worked_example", at = 5, readme = true, shows = function() return time() >= duration - step_length() end },
+    { "advanced_example", at = 3.5, set = { example = "advanced" },
+      shows = function() return value_at("slipping", time()) == 1 end },
+  },
+}
+
+-- Parameters ------------------------------------------------------------------------------
+parameter { "example", "worked", choices = { "worked", "advanced" },
+  text = "the article's complete worked example, or its advanced example 1" }
+local chosen = examples[param.example]
+local mass = chosen.mass
+pair { "wood", "wood", mu_s = chosen.mu_s, mu_k = chosen.mu_k, sliders = false }
+
+-- The article's equations, solved exactly, with the right law and with its own as written.
+local h = step_length()
+local function solve(law)
+  return theory.wedge { mass = mass, theta0 = chosen.theta0, omega = chosen.omega, a_x = chosen.a_x,
+    a_x_omega = chosen.a_x_omega, mu_s = chosen.mu_s, mu_k = chosen.mu_k, duration = duration, step = h, law = law }
+end
+local right, as_written = solve("coulomb"), solve("article")
+local function sample(t) return math.min(math.floor(t / h + 0.5) + 1, #right.slide) end
+
+-- World -----------------------------------------------------------------------------------
+local sin, cos = math.sin, math.cos
+local theta0, omega = math.rad(chosen.theta0), chosen.omega
+local function frame(t)
+  local theta, a = theta0 * sin(omega * t), chosen.a_x * cos(chosen.a_x_omega * t)
+  return mass * (g * sin(theta) + a * cos(theta)), mass * (g * cos(theta) - a * sin(theta))
+end
+local bench = ground { "bench", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.15, on = bench, at = 0, mass = mass }
+-- The surface's line laid flat: the frame's effective gravity along it, and into it (less the
+-- world's gravity, which the force cancels). The force is asked at the start of every world
+-- step, so it is worked out once for those instants: four sines a step cost this lesson a
+-- third of its speed.
+local substep = substep_length()
+local along_at, lift_at, floor, abs = {}, {}, math.floor, math.abs
+for j = 0, math.ceil(duration / substep) do
+  local along, pressing = frame(j * substep)
+  along_at[j], lift_at[j] = along, mass * g - pressing
+end
+force { "frame", on = block, force = function(t)
+  local j = floor(t / substep + 0.5)
+  if along_at[j] and abs(t - j * substep) < 1e-9 then return along_at[j], lift_at[j] end
+  local along, pressing = frame(t)  -- a run longer than the lesson's
+  return along, mass * g - pressing
+end }
+view { follow = block, width = 3 }
+
+-- Probes and plots ------------------------------------------------------------------------
+local touch = contact(block, bench)
+probe { "slide", unit = "m", read = { block, "distance", along = { 1, 0 } } }  -- down the slope positive
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+probe { "friction_force", unit = "N", read = { touch, "fx" } }
+probe { "normal_force", unit = "N", read = { touch, "normal" } }
+probe { "slipping", read = { touch, "slipping" } }
+
+local function at(list) return function(t) return list[sample(t)] end end
+plot { "Slide down the slope", kind = "time", y = { "slide" },
+  theory = { { "Coulomb's law (exact)", at(right.slide) }, { "the article's equation as written", at(as_written.slide) } } }
+plot { "Friction along the slope", kind = "time", y = { "friction_force" },
+  theory = { { "exact", at(right.friction) },
+             { "the article: peak ≈ 0.55 N", function() return param.example == "advanced" and -0.55 or nil end } } }
+
+-- Reading the record ----------------------------------------------------------------------
+local function recorded(name, t) return time() >= t - 0.5 * h and value_at(name, t) or nil end
+-- A sum over the record of the run, Σ f(i)·h, once it is over.
+local function summed(term)
+  if time() < duration - 0.5 * h then return nil end
+  local times, total = history("time"), 0
+  for i = 1, #times do total = total + term(i, times[i]) end
+  return total * h
+end
+local function first_slip_recorded()
+  local times, slipping = history("time"), history("slipping")
+  for i = 1, #slipping do
+    if slipping[i] == 1 then return times[i] end
+  end
+end
+local function count_slipping()
+  local n = 0
+  for _, s in ipairs(history("slipping")) do n = n + s end
+  return n * h
+end
+
+-- Whether a claim holds: within 10 % of the article's number (it writes two figures).
+local function verdict(claim, computed)
+  return math.abs(computed - claim) <= 0.1 * math.abs(claim) and "holds" or "does not hold"
+end
+-- A row: the claim as written and its verdict, the exact solution of the article's own
+-- equations, and the Box2D block on the laid-flat surface. Returns the row's name.
+local function claim(name, article, computed, measured, tolerance, unit)
+  local row = name .. " · " .. verdict(article, computed())
+  expect { row, unit = unit, predicted = computed, measured = measured, tolerance = tolerance }
+  return row
+end
+
+local right_end = right.slide[sample(duration)]
+local path = 0  -- how far it slid, back and forth, by the exact solution
+for k = 2, sample(duration) do path = path + math.abs(right.slide[k] - right.slide[k - 1]) end
+local function windows_total()
+  local total = 0
+  for _, w in ipairs(right.slip_windows) do total = total + math.min(w[2], duration) - w[1] end
+  return total
+end
+
+-- Expectations ----------------------------------------------------------------------------
+if param.example == "worked" then
+  local first = right.slip_windows[1] and right.slip_windows[1][1]
+  claim("first slip (article: 0.42 s)", 0.42, function() return first end,
+    function() return time() >= duration - 0.5 * h and first_slip_recorded() or nil end,
+    -- Two and a half steps: the slip is judged from the step it begins in, and recorded at a step's end.
+    2.5 * h, "s")
+  claim("time slipping in 5 s (article: 0.36 + 0.36 s)", 0.72, windows_total,
+    function() return time() >= duration - 0.5 * h and count_slipping() or nil end,
+    -- Each start and stop is found within a step.
+    2 * #right.slip_windows * h + 0.01 * windows_total(), "s")
+  local slide_row = claim("slide at 5 s (article: 0.27 m down)", 0.27, function() return right_end end,
+    function() return recorded("slide", duration) end, 0.002 * path + 2e-3, "m")
+  predict { slide_row, unit = "m",
+    question = "The article says the block ends 0.27 m down the slope after 5 s. Where does it end (up the slope: negative)?" }
+  local final_speed = right.speed[sample(duration)]
+  claim("speed at 5 s (article: 0.44 m/s)", 0.44, function() return final_speed end,
+    function() return recorded("speed", duration) end, 0.01, "m/s")
+  -- The books over the run: the frame's forces' work (gravity and the pseudo-force, the force on
+  -- the bench's block along x), friction's, and the kinetic energy gained.
+  local k_end = sample(duration)
+  local driving_work = right.work_gravity[k_end] + right.work_pseudo[k_end]
+  local speeds, frictions = history("speed"), history("friction_force")
+  claim("W_a + W_g over 5 s (article: +1.9 J)", 1.9, function() return driving_work end,
+    function() return summed(function(i, t) return frame(t - 0.5 * h) * speeds[i] end) end,
+    0.02 * driving_work + 0.01, "J")
+  local friction_work = right.work_friction[k_end]
+  claim("W_friction over 5 s (article: −1.6 J)", -1.6, function() return friction_work end,
+    function() return summed(function(i) return frictions[i] * speeds[i] end) end,
+    0.02 * math.abs(friction_work) + 0.01, "J")
+  claim("ΔK over 5 s (article: +0.3 J; ½·1.5·0.44² is 0.145)", 0.3, function() return right.kinetic[k_end] end,
+    function()
+      local v = recorded("speed", duration)
+      return v and 0.5 * mass * v * v
+    end, 0.01, "J")
+else
+  -- Two swings of the surface, 2·2π/ω: the article's "first two periods of θ(t)".
+  local two_swings = 4 * math.pi / omega
+  local k_two = sample(two_swings)
+  local least_speed, peak_friction = math.huge, 0
+  -- From the end of the first step, where the record starts.
+  for k = 2, k_two do
+    least_speed = math.min(least_speed, right.speed[k])
+    if right.contact[k] == "slipping" then peak_friction = math.max(peak_friction, math.abs(right.friction[k])) end
+  end
+  -- "During the steepening phase the block slides upward": it would need a negative speed.
+  expect { "least speed down the slope (article: slides up while steepening) · "
+           .. (least_speed < 0 and "holds" or "does not hold"), unit = "m/s",
+    predicted = least_speed,
+    measured = function()
+      if time() < two_swings then return nil end
+      local least = math.huge
+      local times, speeds = history("time"), history("speed")
+      for i = 1, #times do
+        if times[i] <= two_swings then least = math.min(least, speeds[i]) end
+      end
+      return least
+    end,
+    -- 1 mm/s: the reading is the step's mean velocity.
+    tolerance = 1e-3 }
+  local peak_row = claim("peak kinetic friction, two swings (article: ≈ 0.55 N)", 0.55, function() return peak_friction end,
+    function()
+      if time() < two_swings then return nil end
+      local peak = 0
+      local times, frictions, slipping = history("time"), history("friction_force"), history("slipping")
+      for i = 1, #times do
+        if times[i] <= two_swings and slipping[i] == 1 then peak = math.max(peak, math.abs(frictions[i])) end
+      end
+      return peak
+    end,
+    -- A step's mean against the peak instant: μk times how much N changes in a step.
+    0.01 * peak_friction + chosen.mu_k * mass * g * theta0 * omega * h, "N")
+  predict { peak_row, unit = "N",
+    question = "The article says the kinetic friction peaks at about 0.55 N on this 2 kg block. What is its peak?" }
+  -- "If aₓ exceeds g tan θ₀ ... the block would lose contact": 3 m/s² exceeds g·tan 15° = 2.63,
+  -- yet N = m(g cos θ − a sin θ) stays positive; it reaches 0 only past a = g·cot θ0 = 36.6.
+  local least_normal = math.huge  -- over the two swings, as N repeats with the swing here
+  for k = 1, k_two do least_normal = math.min(least_normal, right.normal[k]) end
+  local article_loses = chosen.a_x > g * math.tan(theta0)
+  expect { string.format("least normal force (article: lost, as a_x > g·tan θ0 = %.2f m/s²) · %s", g * math.tan(theta0),
+                         (article_loses == (least_normal <= 0)) and "holds" or "does not hold"), unit = "N",
+    predicted = least_normal,
+    measured = function()
+      if time() < two_swings then return nil end
+      local least = math.huge
+      local times, normals = history("time"), history("normal_force")
+      for i = 1, #times do
+        if times[i] <= two_swings then least = math.min(least, normals[i]) end
+      end
+      return least
+    end,
+    tolerance = 0.01 * mass * g + mass * g * theta0 * omega * h }
+end

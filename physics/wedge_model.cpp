@@ -1,0 +1,321 @@
+#include "physics/wedge_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "physics/validation.h"
+
+namespace frictionlab {
+
+double WedgeDrive::angle(double t) const { return theta0 * std::sin(omega * t); }
+double WedgeDrive::angular_velocity(double t) const { return theta0 * omega * std::cos(omega * t); }
+double WedgeDrive::angular_acceleration(double t) const { return -theta0 * omega * omega * std::sin(omega * t); }
+double WedgeDrive::acceleration(double t) const { return a_x * std::cos(a_x_omega * t); }
+double WedgeDrive::driving_force(double t) const {
+  const double theta = angle(t);
+  return mass * (g * std::sin(theta) + acceleration(t) * std::cos(theta));
+}
+double WedgeDrive::normal_force(double t) const {
+  const double theta = angle(t);
+  return mass * (g * std::cos(theta) - acceleration(t) * std::sin(theta));
+}
+// From rest at x = 0: x'' = a_x·cos(ω_a·t) gives x' = a_x·sin(ω_a·t)/ω_a, x = a_x·(1 − cos(ω_a·t))/ω_a²,
+// and ½·a_x·t² in the limit ω_a → 0. 1 − cos is written as 2·sin²(·/2) so small ω_a·t loses nothing.
+double WedgeDrive::wedge_position(double t) const {
+  if (a_x_omega == 0.0) return 0.5 * a_x * t * t;
+  const double half = std::sin(0.5 * a_x_omega * t) / a_x_omega;
+  return 2.0 * a_x * half * half;
+}
+double WedgeDrive::wedge_velocity(double t) const {
+  if (a_x_omega == 0.0) return a_x * t;
+  return a_x * std::sin(a_x_omega * t) / a_x_omega;
+}
+
+double kinetic_energy(const WedgeDrive& drive, const WedgeState& state) {
+  return 0.5 * drive.mass * (state.speed * state.speed + state.height_rate * state.height_rate);
+}
+
+namespace {
+
+constexpr double event_tolerance = 1e-13;  // s: how closely events are located
+constexpr std::size_t max_events = 1'000'000;
+constexpr double max_samples = 2e6;
+
+// What the solver integrates: the slide and its rate, the height above the surface and its
+// rate (0 in contact), and the three works that accumulate continuously.
+struct Vector {
+  double s = 0, v = 0, d = 0, dd = 0, work_gravity = 0, work_pseudo = 0, work_friction = 0, work_rotation = 0;
+};
+Vector operator+(const Vector& a, const Vector& b) {
+  return {a.s + b.s, a.v + b.v, a.d + b.d, a.dd + b.dd, a.work_gravity + b.work_gravity,
+          a.work_pseudo + b.work_pseudo, a.work_friction + b.work_friction, a.work_rotation + b.work_rotation};
+}
+Vector operator*(double k, const Vector& a) {
+  return {k * a.s, k * a.v, k * a.d, k * a.dd, k * a.work_gravity, k * a.work_pseudo, k * a.work_friction,
+          k * a.work_rotation};
+}
+
+double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
+
+// A phase: the contact, and in a slip the sign σ of the friction's opposition (friction is
+// −σ·μk·N): the sliding direction for Coulomb's law, the driving force's for the article's.
+struct Phase {
+  WedgeContact contact = WedgeContact::stick;
+  double sigma = 1.0;
+};
+
+class Solver {
+ public:
+  Solver(const WedgeDrive& drive, WedgeLaw law) : drive_(drive), law_(law) {}
+
+  // The turning frame's accelerations on the block's centre (0 without rotation): along the
+  // slope (down positive) and away from the surface, split into the parts that do work
+  // (centrifugal and Euler) and Coriolis, which does none.
+  struct Turning {
+    double along = 0, across = 0, coriolis_along = 0, coriolis_across = 0;
+  };
+  Turning turning(double t, const Vector& y) const {
+    if (!drive_.rotation) return {};
+    const double rate = drive_.angular_velocity(t), spin_up = drive_.angular_acceleration(t);
+    const double rho = drive_.start - y.s;           // up the slope from the pivot
+    const double z = drive_.centre_height + y.d;     // above the surface line
+    // Up the slope: θ''·z + θ'²·ρ (+ 2θ'·z'); away from the surface: −θ''·ρ + θ'²·z (− 2θ'·ρ' = + 2θ'·s').
+    return {-(spin_up * z + rate * rate * rho), -spin_up * rho + rate * rate * z, -2.0 * rate * y.dd, 2.0 * rate * y.v};
+  }
+  // What pushes the block down the slope, and the surface's push, with the block in contact.
+  double driving(double t, const Vector& y) const {
+    const Turning turn = turning(t, y);
+    return drive_.driving_force(t) + drive_.mass * (turn.along + turn.coriolis_along);
+  }
+  double pressing(double t, const Vector& y) const {
+    const Turning turn = turning(t, y);
+    return drive_.normal_force(t) - drive_.mass * (turn.across + turn.coriolis_across);
+  }
+
+  double friction(const Phase& phase, double t, const Vector& y) const {
+    switch (phase.contact) {
+      case WedgeContact::stick: return -driving(t, y);
+      case WedgeContact::slip: return -phase.sigma * drive_.mu_k * pressing(t, y);
+      case WedgeContact::flight: return 0.0;
+    }
+    return 0.0;
+  }
+
+  Vector rate(const Phase& phase, double t, const Vector& y) const {
+    if (phase.contact == WedgeContact::stick) return {};
+    const double m = drive_.mass, theta = drive_.angle(t), a = drive_.acceleration(t);
+    const double sin_t = std::sin(theta), cos_t = std::cos(theta);
+    const Turning turn = turning(t, y);
+    Vector r;
+    r.s = y.v;
+    r.work_gravity = m * drive_.g * sin_t * y.v;
+    r.work_pseudo = m * a * cos_t * y.v;
+    r.work_rotation = m * turn.along * y.v;
+    if (phase.contact == WedgeContact::slip) {
+      const double f = friction(phase, t, y);
+      r.v = (driving(t, y) + f) / m;
+      r.work_friction = f * y.v;
+    } else {  // flight: the frame's effective gravity across the surface too
+      r.v = driving(t, y) / m;
+      r.d = y.dd;
+      r.dd = -drive_.normal_force(t) / m + turn.across + turn.coriolis_across;
+      r.work_gravity -= m * drive_.g * cos_t * y.dd;
+      r.work_pseudo += m * a * sin_t * y.dd;
+      r.work_rotation += m * turn.across * y.dd;
+    }
+    return r;
+  }
+
+  Vector rk4(const Phase& phase, double t, const Vector& y, double h) const {
+    const Vector k1 = rate(phase, t, y);
+    const Vector k2 = rate(phase, t + 0.5 * h, y + (0.5 * h) * k1);
+    const Vector k3 = rate(phase, t + 0.5 * h, y + (0.5 * h) * k2);
+    const Vector k4 = rate(phase, t + h, y + h * k3);
+    return y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+
+  double breakaway_limit(double t, const Vector& y) const { return std::max(drive_.mu_s, drive_.mu_k) * pressing(t, y); }
+
+  // Whether the phase has ended by (t, y).
+  bool ended(const Phase& phase, double t, const Vector& y) const {
+    switch (phase.contact) {
+      case WedgeContact::stick:
+        return pressing(t, y) < 0.0 || std::abs(driving(t, y)) > breakaway_limit(t, y);
+      case WedgeContact::slip:
+        if (pressing(t, y) < 0.0) return true;
+        return law_ == WedgeLaw::coulomb ? phase.sigma * y.v <= 0.0 : phase.sigma * driving(t, y) < 0.0;
+      case WedgeContact::flight: return y.d < 0.0;
+    }
+    return false;
+  }
+
+  // The phase a block in contact at t enters, touching with slide rate v (v = 0: at rest on it).
+  Phase contact_phase(double t, const Vector& y) const {
+    const double force = driving(t, y);
+    if (law_ == WedgeLaw::article) {
+      // At F = 0 exactly, the sign F takes next.
+      return {WedgeContact::slip, force != 0.0 ? sign_of(force) : sign_of(driving(t + 1e-9, y))};
+    }
+    if (y.v != 0.0) return {WedgeContact::slip, sign_of(y.v)};
+    if (std::abs(force) <= breakaway_limit(t, y)) return {WedgeContact::stick, 1.0};
+    return {WedgeContact::slip, sign_of(force)};
+  }
+
+  WedgeState state_of(const Phase& phase, double t, const Vector& y, double work_landings) const {
+    WedgeState state;
+    state.t = t;
+    state.slide = y.s, state.speed = y.v, state.height = y.d, state.height_rate = y.dd;
+    state.contact = phase.contact;
+    state.normal = phase.contact == WedgeContact::flight ? 0.0 : pressing(t, y);
+    state.friction = friction(phase, t, y);
+    state.work_gravity = y.work_gravity, state.work_pseudo = y.work_pseudo, state.work_friction = y.work_friction;
+    state.work_rotation = y.work_rotation;
+    state.work_landings = work_landings;
+    return state;
+  }
+
+  WedgeRun run(double t_end, double sample_step, double max_step) {
+    WedgeRun result;
+    result.sample_step = sample_step;
+    const auto sample_count = static_cast<std::size_t>(std::floor(t_end / sample_step + 1e-9)) + 1;
+    result.samples.reserve(sample_count);
+    double t = 0.0, work_landings = 0.0;
+    Vector y;
+    Phase phase = contact_phase(0.0, y);
+    double window_start = phase.contact == WedgeContact::slip ? 0.0 : -1.0;
+    result.samples.push_back(state_of(phase, 0.0, y, 0.0));
+    std::size_t next = 1;
+    auto event = [&](WedgeEventKind kind) {
+      if (result.events.size() >= max_events) {
+        throw InvalidInput("the wedge: more than a million events before t = " + std::to_string(t) +
+                           " s (the block chatters between phases); shorten the run");
+      }
+      result.events.push_back({t, kind, y.s, y.v});
+    };
+    auto enter = [&](Phase entered) {
+      const bool was_slipping = phase.contact == WedgeContact::slip;
+      const bool slips = entered.contact == WedgeContact::slip;
+      if (slips && !was_slipping) window_start = t;
+      if (was_slipping && !slips) {
+        result.slip_windows.emplace_back(window_start, t);
+        window_start = -1.0;
+      }
+      phase = entered;
+    };
+    while (next < sample_count) {
+      const double sample_t = static_cast<double>(next) * sample_step;
+      const double h = std::min(max_step, sample_t - t);
+      Vector after = rk4(phase, t, y, h);
+      if (!ended(phase, t + h, after)) {
+        y = after;
+        t = h == sample_t - t ? sample_t : t + h;
+        if (t == sample_t) result.samples.push_back(state_of(phase, t, y, work_landings)), ++next;
+        continue;
+      }
+      // The phase ends inside this step: the first instant it has, to event_tolerance.
+      double lo = 0.0, hi = h;
+      while (hi - lo > event_tolerance) {
+        const double mid = 0.5 * (lo + hi);
+        if (ended(phase, t + mid, rk4(phase, t, y, mid))) hi = mid;
+        else lo = mid;
+      }
+      y = rk4(phase, t, y, hi);
+      t += hi;
+      transition(phase, t, y, work_landings, event, enter);
+    }
+    if (phase.contact == WedgeContact::slip) result.slip_windows.emplace_back(window_start, t);
+    // A slip that ends where the next begins (a reversal) is one window.
+    std::vector<std::pair<double, double>> merged;
+    for (const auto& window : result.slip_windows) {
+      if (!merged.empty() && window.first - merged.back().second <= event_tolerance) merged.back().second = window.second;
+      else merged.push_back(window);
+    }
+    result.slip_windows = merged;
+    return result;
+  }
+
+ private:
+  template <class Event, class Enter>
+  void transition(const Phase& phase, double t, Vector& y, double& work_landings, Event event, Enter enter) {
+    const double m = drive_.mass;
+    if (phase.contact != WedgeContact::flight && pressing(t, y) < 0.0) {
+      y.d = 0.0, y.dd = 0.0;
+      event(WedgeEventKind::lift_off);
+      enter({WedgeContact::flight, 1.0});
+      return;
+    }
+    switch (phase.contact) {
+      case WedgeContact::stick: {
+        event(WedgeEventKind::breakaway);
+        enter({WedgeContact::slip, sign_of(driving(t, y))});
+        return;
+      }
+      case WedgeContact::slip: {
+        if (law_ == WedgeLaw::article) {
+          event(WedgeEventKind::sign_change);
+          enter({WedgeContact::slip, -phase.sigma});
+          return;
+        }
+        y.v = 0.0;
+        const Phase next = contact_phase(t, y);
+        event(next.contact == WedgeContact::stick ? WedgeEventKind::stop : WedgeEventKind::reversal);
+        enter(next);
+        return;
+      }
+      case WedgeContact::flight: {
+        // A plastic landing: the surface stops the fall (normal impulse m·|dd|), and friction's
+        // impulse, at most μ times that, acts along the surface (Coulomb's law for impacts).
+        const double fall = -y.dd, before = 0.5 * m * (y.v * y.v + y.dd * y.dd);
+        if (law_ == WedgeLaw::coulomb) {
+          if (std::abs(y.v) <= std::max(drive_.mu_s, drive_.mu_k) * fall) y.v = 0.0;
+          else y.v -= sign_of(y.v) * drive_.mu_k * fall;
+        } else {
+          y.v -= sign_of(driving(t, y)) * drive_.mu_k * fall;
+        }
+        y.d = 0.0, y.dd = 0.0;
+        work_landings += 0.5 * m * y.v * y.v - before;
+        event(WedgeEventKind::landing);
+        if (pressing(t, y) <= 0.0) {
+          enter({WedgeContact::flight, 1.0});  // lands as the wedge falls away again: flies on
+        } else {
+          enter(contact_phase(t, y));
+        }
+        return;
+      }
+    }
+  }
+
+  WedgeDrive drive_;
+  WedgeLaw law_;
+};
+
+}  // namespace
+
+WedgeRun solve_wedge(const WedgeDrive& drive, WedgeLaw law, double t_end, double sample_step, double max_step) {
+  using namespace validation;
+  const char* where = "the wedge";
+  require_positive(where, "mass", drive.mass);
+  require_finite(where, "theta0", drive.theta0);
+  if (std::abs(drive.theta0) >= 1.5) reject(where, "theta0", "strictly between -1.5 and 1.5 rad", drive.theta0);
+  require_non_negative(where, "omega", drive.omega);
+  require_finite(where, "a_x", drive.a_x);
+  require_non_negative(where, "a_x_omega", drive.a_x_omega);
+  for (const auto& [name, mu] : {std::pair{"mu_s", drive.mu_s}, std::pair{"mu_k", drive.mu_k}}) {
+    if (!in_range(mu, 0.0, 10.0, false)) reject(where, name, "0 to 10", mu);
+  }
+  require_positive(where, "g", drive.g);
+  require_non_negative(where, "centre_height", drive.centre_height);
+  require_finite(where, "start", drive.start);
+  require_non_negative(where, "t_end", t_end);
+  require_positive(where, "sample_step", sample_step);
+  require_positive(where, "max_step", max_step);
+  if (t_end / sample_step > max_samples) {
+    std::ostringstream range;
+    range << ">= t_end / 2e6 = " << t_end / max_samples << " s (at most 2e6 samples)";
+    reject(where, "sample_step", range.str(), sample_step);
+  }
+  return Solver(drive, law).run(t_end, sample_step, max_step);
+}
+
+}  // namespace frictionlab

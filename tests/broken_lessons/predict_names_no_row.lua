@@ -1,0 +1,7 @@
+-- expect: 7: predict 'rest height': no expect row above it is named so; a prediction names the row whose theory and measurement it is set beside (rows so far: "resting height", "moves or stays")
+lesson { title = "Broken", question = "What goes wrong?" }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "resting height", unit = "m", predicted = 0.1, measured = function() return block.y end, tolerance = 0.001 }
+expect { "moves or stays", predicted = "stays", measured = function() return "stays" end }
+predict { "rest height", question = "How high is the block's centre?" }

@@ -1,0 +1,7 @@
+-- expect: 7: predict 'moves or stays': choices must be a list of at least two words the class picks from
+lesson { title = "Broken", question = "What goes wrong?" }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "resting height", unit = "m", predicted = 0.1, measured = function() return block.y end, tolerance = 0.001 }
+expect { "moves or stays", predicted = "stays", measured = function() return "stays" end }
+predict { "moves or stays", question = "Does it move?", choices = { "stays" } }
