@@ -72,12 +72,14 @@ void CsvLog::put(const std::string& text) {
   }
 }
 
-void CsvLog::header(const lessons::Lesson& lesson) {
+void CsvLog::header(const lessons::Lesson& lesson, const std::set<std::string>& hidden) {
   // What made the run, so a file found later says which run it is.
   std::ostringstream text;
   text << byte_order_mark << first_words << " of " << lesson.path() << " at " << lesson.settings().hz << " Hz, "
        << lesson.settings().substeps << " sub-step(s), " << treatment_name(lesson.settings().treatment) << ";";
-  for (const lessons::Parameter& parameter : lesson.parameters()) text << ' ' << parameter.name << " = " << parameter.shown() << ';';
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    text << ' ' << parameter.name << " = " << (hidden.count(parameter.name) > 0 ? "? (a mystery)" : parameter.shown()) << ';';
+  }
   std::string settings = text.str();
   for (char& c : settings) {
     if (c == ',') c = ';';  // one field: a spreadsheet shows the line in its first cell

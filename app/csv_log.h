@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <ostream>
+#include <set>
 #include <string>
 
 #include "lessons/runtime/lesson.h"
@@ -15,8 +16,9 @@ class CsvLog {
  public:
   // Throws InvalidInput, naming the option and the path, when it cannot or must not write there.
   CsvLog(const std::string& path, const lessons::Lesson& lesson, std::ostream& standard_output);
-  // The run's settings and the columns' names with their units.
-  void header(const lessons::Lesson& lesson);
+  // The run's settings and the columns' names with their units. The `hidden` parameters' values
+  // (a mystery pair's) are written as "?".
+  void header(const lessons::Lesson& lesson, const std::set<std::string>& hidden = {});
   void row(const Scene& scene);
   // Puts the file in place (or flushes standard output). Throws InvalidInput.
   void finish();

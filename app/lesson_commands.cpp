@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "app/csv_log.h"
@@ -29,6 +30,7 @@ struct RunOptions {
   StepSettings settings;
   std::map<std::string, std::string> overrides;
   std::string csv;
+  MysteryOptions mystery;
 };
 
 RunOptions parse_run(const std::vector<std::string>& args) {
@@ -41,14 +43,16 @@ RunOptions parse_run(const std::vector<std::string>& args) {
       options.lesson = arg;
       continue;
     }
-    static const std::string known[] = {"--duration", "--hz", "--substeps", "--friction", "--set", "--csv"};
+    static const std::string known[] = {"--duration", "--hz", "--substeps", "--friction", "--set", "--csv", "--mystery", "--seed"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
       throw InvalidInput("run: unknown option '" + arg +
-                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE");
+                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE, "
+                         "--mystery MATERIAL/MATERIAL --seed N");
     }
     if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
     refuse_repeat("run", arg, seen);
     const std::string& value = args[++i];
+    if (options.mystery.take(arg, value)) continue;
     if (arg == "--duration") {
       options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
     } else if (arg == "--set") {
@@ -65,10 +69,12 @@ RunOptions parse_run(const std::vector<std::string>& args) {
   return options;
 }
 
-// Runs the lesson for `duration` and prints its expectations; returns how many failed.
-int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out) {
+// Runs the lesson for `duration` and prints its expectations; returns how many failed. With
+// values `hidden` (a mystery pair's), the predictions, errors and tolerances worked out from them
+// are hidden too.
+int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out, const std::set<std::string>& hidden = {}) {
   require_record_fits(duration, lesson.settings().hz, lesson.scene().probes().size(), "shorten --duration or lower --hz");
-  if (csv) csv->header(lesson);
+  if (csv) csv->header(lesson, hidden);
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {
     lesson.step();
@@ -77,8 +83,13 @@ int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& o
   for (const std::string& warning : lesson.warnings()) out << "warning: " << warning << '\n';
   std::vector<std::vector<std::string>> table{{"expectation", "unit", "predicted", "measured", "error", "tolerance", "pass"}};
   int failed = 0;
+  const bool theory_hidden = !hidden.empty();
   for (const lessons::ExpectationResult& row : lesson.expectations()) {
-    if (row.numeric) {
+    if (theory_hidden) {
+      table.push_back({row.name, row.unit, "hidden",
+                       !row.measured_yet ? row.measured_text : row.numeric ? format_number(row.measured) : row.measured_text,
+                       "", "", row.passes ? "yes" : "NO"});
+    } else if (row.numeric) {
       table.push_back({row.name, row.unit, format_number(row.predicted),
                        row.measured_yet ? format_number(row.measured) : row.measured_text,
                        row.measured_yet ? format_number(row.error(), 2) : "", format_number(row.tolerance, 2),
@@ -96,11 +107,11 @@ int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& o
   return failed;
 }
 
-void print_heading(const Lesson& lesson, std::ostream& out) {
+void print_heading(const Lesson& lesson, std::ostream& out, const std::set<std::string>& hidden = {}) {
   out << lesson.title() << "\n" << lesson.question() << "\n";
   std::string values;
   for (const lessons::Parameter& parameter : lesson.parameters()) {
-    values += (values.empty() ? "" : ", ") + parameter.name + " = " + parameter.shown();
+    values += (values.empty() ? "" : ", ") + parameter.name + " = " + (hidden.count(parameter.name) > 0 ? "? (a mystery)" : parameter.shown());
   }
   out << "  " << values << "\n\n";
 }
@@ -138,15 +149,18 @@ int run_list(const std::vector<std::string>& args, std::ostream& out) {
 
 int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   const RunOptions options = parse_run(args);
+  const std::optional<ui::MysteryChoice> mystery_choice = options.mystery.choice();
   Lesson lesson(lessons::resolve_lesson(options.lesson), options.overrides, options.settings);
+  std::set<std::string> hidden;
+  if (mystery_choice) hidden = apply_mystery(lesson, *mystery_choice, options.overrides).hidden();
   std::optional<CsvLog> csv;
   if (!options.csv.empty()) csv.emplace(options.csv, lesson, out);
   // With --csv -, the rows are standard output's; the table goes to standard error.
   std::ostream& report = options.csv == "-" ? std::cerr : out;
-  print_heading(lesson, report);
+  print_heading(lesson, report, hidden);
   // The lesson's own duration only when none is given: its function may not even be needed.
   const double duration = options.duration ? *options.duration : lesson.duration();
-  run_and_report(lesson, duration, csv ? &*csv : nullptr, report);
+  run_and_report(lesson, duration, csv ? &*csv : nullptr, report, hidden);
   if (csv) csv->finish();
   return 0;
 }

@@ -53,6 +53,43 @@ bool step_option(const std::string& option, const std::string& value, StepSettin
   return true;
 }
 
+bool MysteryOptions::take(const std::string& option, const std::string& value) {
+  if (option == "--mystery") {
+    if (value.find('/') == std::string::npos) {
+      throw InvalidInput("--mystery " + value + ": name a friction pair as MATERIAL/MATERIAL, as in --mystery aluminium/wood");
+    }
+    pair = value;
+  } else if (option == "--seed") {
+    seed = ui::parse_mystery_seed(option, value);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::optional<ui::MysteryChoice> MysteryOptions::choice() const {
+  const std::string range = "a whole number from 0 to " + std::to_string(ui::mystery_seed_max);
+  if (pair.empty() && !seed) return std::nullopt;
+  if (pair.empty()) throw InvalidInput("--seed draws a mystery pair's values: give --mystery MATERIAL/MATERIAL with it");
+  if (!seed) throw InvalidInput("--mystery " + pair + " needs --seed N (" + range + "): the same seed draws the same values");
+  return ui::MysteryChoice{pair, *seed};
+}
+
+ui::Mystery apply_mystery(lessons::Lesson& lesson, const ui::MysteryChoice& choice,
+                          const std::map<std::string, std::string>& overrides) {
+  ui::Mystery mystery(choice, lesson);
+  std::vector<std::pair<std::string, std::string>> settings = mystery.settings();
+  for (const auto& [name, value] : settings) {
+    if (overrides.count(name) > 0) {
+      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice.pair + "); leave it out");
+    }
+  }
+  // μk first when it falls, so the pair never passes through μk > μs on the way.
+  if (mystery.values().mu_k < lesson.parameter(mystery.mu_k_name()).value) std::swap(settings[0], settings[1]);
+  for (const auto& [name, value] : settings) lesson.set(name, value);
+  return mystery;
+}
+
 void require_record_fits(double duration, double hz, std::size_t probes, const std::string& advice) {
   const double values = duration * hz * static_cast<double>(probes + 1);  // and the time itself
   if (values <= 2e8) return;

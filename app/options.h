@@ -4,10 +4,12 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "physics/scene.h"
+#include "ui/mystery.h"
 
 namespace frictionlab {
 
@@ -22,6 +24,22 @@ void add_override(const std::string& text, std::map<std::string, std::string>& o
 void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen);
 // --hz, --substeps or --friction into `settings`; false if `option` is none of them.
 bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
+
+// --mystery PAIR and --seed N, as the window, render and run take them: gathered one option at
+// a time, then checked together.
+struct MysteryOptions {
+  std::string pair;
+  std::optional<std::uint64_t> seed;
+  // Takes --mystery or --seed; false if `option` is neither. Throws InvalidInput for a bad seed.
+  bool take(const std::string& option, const std::string& value);
+  // The choice, or none when neither was given; throws InvalidInput when only one was.
+  std::optional<ui::MysteryChoice> choice() const;
+};
+// Makes the lesson's pair a mystery: its coefficients set to the seed's values. Throws
+// InvalidInput naming --mystery when the lesson has no such pair, or --set when `overrides`
+// set one of its coefficients.
+ui::Mystery apply_mystery(lessons::Lesson& lesson, const ui::MysteryChoice& choice,
+                          const std::map<std::string, std::string>& overrides);
 
 // Every probe keeps a value a step in memory: refuses, before any step, a run of `duration`
 // seconds at `hz` whose record would pass 1.6 GB. `advice` says which options make it smaller.

@@ -27,6 +27,7 @@ struct RenderOptions {
   std::string out;
   std::string moment;       // --moment NAME: its time, parameters and theme
   bool have_theme = false;  // --theme given: it wins over the moment's
+  MysteryOptions mystery;   // --mystery PAIR --seed N
 };
 
 std::vector<double> parse_times(const std::string& text) {
@@ -79,11 +80,11 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
       continue;
     }
     static const std::string known[] = {"--at", "--moment", "--size", "--theme", "--set", "--out", "--hz", "--substeps",
-                                        "--friction"};
+                                        "--friction", "--mystery", "--seed"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
       throw InvalidInput("render: unknown option '" + arg +
                          "'; options: --at S[,S...], --moment NAME, --size WxH, --theme light|dark, --set NAME=VALUE, --out PATH, "
-                         "--hz N, --substeps N, --friction T");
+                         "--hz N, --substeps N, --friction T, --mystery MATERIAL/MATERIAL --seed N");
     }
     if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
     if (arg == "--at" && std::find(seen.begin(), seen.end(), arg) != seen.end()) {
@@ -91,6 +92,7 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
     }
     refuse_repeat("render", arg, seen);  // as run and check do
     const std::string& value = args[++i];
+    if (options.mystery.take(arg, value)) continue;
     if (arg == "--at") {
       options.times = parse_times(value);
       have_times = true;
@@ -120,6 +122,7 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
                        "lesson's moments)");
   }
   if (options.out.empty()) throw InvalidInput("render: --out PATH is required: a .png file, or a folder for several times");
+  options.mystery.choice();  // --mystery without --seed, or the other way round, refused before any work
   return options;
 }
 
@@ -185,6 +188,10 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
+  ui::HiddenValues hidden;
+  if (const std::optional<ui::MysteryChoice> mystery = options.mystery.choice()) {
+    hidden.parameters = apply_mystery(lesson, *mystery, options.overrides).hidden();
+  }
   // The record grows with every step up to the last time drawn, as in frictionlab run.
   require_record_fits(options.times.back(), lesson.settings().hz, lesson.scene().probes().size(),
                       "draw an earlier --at or lower --hz");
@@ -197,6 +204,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   } catch (const ui::HeadlessUnavailable& error) {
     throw InvalidInput(std::string("render: ") + error.what());
   }
+  renderer->hide(hidden);
   // Every picture is drawn and encoded before any is written: a lesson that fails at a later
   // time leaves nothing behind, and an encoded frame is a tenth of the raw one.
   std::vector<std::pair<std::string, std::string>> files;

@@ -22,11 +22,12 @@ struct WindowOptions {
   std::vector<std::string> lock;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::vector<std::string> step_arguments;  // --hz, --substeps, --friction as given, for the fallback picture
   std::optional<ui::ThemeName> theme;
   bool projector = false;
   std::optional<double> at;
   std::string screenshot;
+  MysteryOptions mystery;  // --mystery PAIR --seed N
+  std::string setup;       // --setup FILE: the lesson, values, lock and mystery from a prepared setup
 };
 
 std::vector<std::string> split_names(const std::string& option, const std::string& text) {
@@ -54,18 +55,23 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       options.projector = true;
       continue;
     }
-    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot"};
+    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot",
+                                        "--mystery", "--seed", "--setup"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
       throw InvalidInput("unknown option '" + arg +
                          "'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, --substeps N, "
-                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png "
+                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, "
+                         "--mystery MATERIAL/MATERIAL --seed N, --setup FILE "
                          "(commands: list, run, check, render, demo, bench, help)");
     }
     if (i + 1 >= args.size()) throw InvalidInput(arg + " needs a value; see frictionlab help");
     if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) throw InvalidInput(arg + " given twice");
     seen.push_back(arg);
     const std::string& value = args[++i];
-    if (arg == "--lock") {
+    if (options.mystery.take(arg, value)) continue;
+    if (arg == "--setup") {
+      options.setup = value;
+    } else if (arg == "--lock") {
       options.lock = split_names(arg, value);
     } else if (arg == "--set") {
       add_override(value, options.overrides);
@@ -90,7 +96,18 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       } catch (const InvalidInput& error) {
         throw InvalidInput(arg == "--friction" ? "--friction " + value + ": " + error.what() : error.what());
       }
-      options.step_arguments.insert(options.step_arguments.end(), {arg, value});
+    }
+  }
+  options.mystery.choice();  // --mystery without --seed, or the other way round, refused before the window opens
+  if (!options.setup.empty()) {
+    // The setup holds these: given beside it, which one was meant is not for the program to guess.
+    std::string given = options.lesson.empty() ? "" : "the lesson '" + options.lesson + "'";
+    for (const char* option : {"--lock", "--set", "--hz", "--substeps", "--friction", "--mystery", "--seed"}) {
+      if (given.empty() && std::find(seen.begin(), seen.end(), option) != seen.end()) given = option;
+    }
+    if (!given.empty()) {
+      throw InvalidInput("--setup " + options.setup + " holds the lesson, its values, the lock and the mystery: give " + given +
+                         " in the setup file, or leave --setup out");
     }
   }
   return options;
@@ -106,7 +123,8 @@ std::string time_text(double t) {
 
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   const WindowOptions options = parse_window(args);
-  const std::string path = lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
+  const std::string path = !options.setup.empty() ? ""
+                           : lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
   // The window's settings come from the settings folder; a screenshot run reads them (the
   // README's screenshot script gives each shot a folder of its own) but never writes them.
   const std::string folder = ui::settings_folder();
@@ -116,9 +134,12 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   classroom_options.overrides = options.overrides;
   classroom_options.settings = options.settings;
   classroom_options.lock = options.lock;
+  classroom_options.mystery = options.mystery.choice();
   classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
+  // A prepared setup: read and checked against its lesson before the window opens.
+  if (!options.setup.empty()) classroom_options = ui::setup_options(options.setup, classroom_options);
   ui::Classroom classroom(classroom_options);
 
   ui::WindowRun run;
@@ -136,14 +157,20 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     if (!classroom.failed_script().empty()) throw InvalidInput(classroom.failed_error());
     // No window here (a server, CI, a remote shell): the same lesson as a picture instead.
     const double at = options.at ? *options.at : 0.5 * classroom.playback().readings().duration;
-    const std::string stem = fs::path(path).stem().string();
+    const std::string& lesson = classroom_options.lesson;  // the setup's, with --setup
+    const std::string stem = fs::path(lesson).stem().string();
     const std::string picture =
         ui::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
     out << "frictionlab: " << error.what() << ", so no window; drawing " << stem << " at t = " << time_text(at)
         << " s to a PNG instead (frictionlab render draws any moment):\n";
-    std::vector<std::string> render_args{path, "--at", time_text(at), "--out", picture};
-    for (const auto& [name, value] : options.overrides) render_args.insert(render_args.end(), {"--set", name + "=" + value});
-    render_args.insert(render_args.end(), options.step_arguments.begin(), options.step_arguments.end());
+    std::vector<std::string> render_args{lesson, "--at", time_text(at), "--out", picture};
+    for (const auto& [name, value] : classroom_options.overrides) render_args.insert(render_args.end(), {"--set", name + "=" + value});
+    const StepSettings& settings = classroom_options.settings;
+    render_args.insert(render_args.end(), {"--hz", ui::exact_text(settings.hz), "--substeps", std::to_string(settings.substeps),
+                                           "--friction", std::string(treatment_name(settings.treatment))});
+    if (const auto& mystery = classroom_options.mystery) {
+      render_args.insert(render_args.end(), {"--mystery", mystery->pair, "--seed", std::to_string(mystery->seed)});
+    }
     if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(ui::theme_name(*options.theme))});
     return run_render(render_args, out);
   }

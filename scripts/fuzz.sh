@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (fuzz/) with Clang in build-fuzz/ and runs each for a while.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     default: 60 s each, every target
 # Targets: fuzz_lesson_loader (a lesson script from bytes), fuzz_command_line (list/run/check
-# arguments), fuzz_numbers (the command line's and --set's numbers). Seeds: the built-in lessons,
+# arguments), fuzz_numbers (the command line's and --set's numbers), fuzz_setup_file (a prepared
+# setup file, read and written back). Seeds: the built-in lessons,
 # the broken-script corpus and the command-line test lessons; the lesson API's names as a
 # dictionary. The corpus grows in build-fuzz/corpus/TARGET; a crash, sanitizer report, leak or
 # hang is saved in build-fuzz/findings/ and makes the script fail. Each target's figures
@@ -13,7 +14,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_lesson_loader fuzz_command_line fuzz_numbers)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_lesson_loader fuzz_command_line fuzz_numbers fuzz_setup_file)
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -22,7 +23,7 @@ cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWith
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 
 seeds=build-fuzz/seeds
-rm -rf "$seeds" && mkdir -p "$seeds"/{fuzz_lesson_loader,fuzz_command_line,fuzz_numbers}
+rm -rf "$seeds" && mkdir -p "$seeds"/{fuzz_lesson_loader,fuzz_command_line,fuzz_numbers,fuzz_setup_file}
 cp lessons/*.lua tests/broken_lessons/*.lua tests/cli_lessons/*.lua "$seeds/fuzz_lesson_loader/"
 # Command lines: the first byte picks list (0), run (1) or check (2); arguments are split at newlines.
 i=0
@@ -33,6 +34,11 @@ for line in '\000--tsv' '\001incline\n--hz\n480' '\001spring_pull\n--set\nmu_s=0
 done
 for number in 0.5 -2 1e-3 1e-320 1e999 0x10 inf 1,5 '' 100000 3.5e2 .5 5. +1 --1; do
   printf '%s' "$number" > "$seeds/fuzz_numbers/seed$((i += 1))"
+done
+
+for setup in '# FrictionLab setup\nlesson spring_pull\nset mass = 1.5\nlock mu_s, mu_k\nmystery aluminium/wood seed 42\nhz 240\nsubsteps 1\nfriction stick-slip\n' \
+             'lesson my.lua\r\nset a = b = c\r\n# note\r\nlock x,y\n' 'lesson incline\nmystery block/slope seed 999999\nhz 1e5\n' 'sett x\nlesson\n'; do
+  printf "$setup" > "$seeds/fuzz_setup_file/seed$((i += 1))"
 done
 
 mkdir -p build-fuzz/findings build-fuzz/logs

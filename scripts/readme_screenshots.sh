@@ -27,6 +27,8 @@ shot window "help = off\npredictions = off\n" spring_pull --at 2
 shot window_help "help = on\npredictions = off\n" incline --at 0.6
 shot window_projector_dark "help = off\npredictions = off\ntheme = dark\nprojector = on\nwidth = 1920\nheight = 1080\n" tipping_box --at 2.2
 shot window_locked "help = off\npredictions = off\n" spring_pull --lock mu_s,mu_k --at 1.2
+# A mystery surface in projector mode: its values hidden, the class's answers asked for.
+shot window_mystery "help = off\npredictions = off\nprojector = on\nwidth = 1920\nheight = 1080\n" spring_pull --mystery aluminium/wood --seed 42 --at 3
 # What a student sees after saving a script with a mistake: the error with its file and line,
 # and a lesson that works still running.
 sed 's/^local angle = parameter/local angle = parameter {/' lessons/incline.lua > "$scratch/my_incline.lua"

@@ -796,6 +796,10 @@ TEST(Classroom, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriti
   std::istringstream rows(csv);
   std::string header;
   std::getline(rows, header);
+  // The first line says which run it is (the lesson and its values); the columns' names follow.
+  EXPECT_EQ(header.rfind("# FrictionLab history of ", 0), 0u) << header;
+  EXPECT_NE(header.find("; angle = 35 \u00b0;"), std::string::npos) << header;
+  std::getline(rows, header);
   EXPECT_EQ(header.rfind("t,", 0), 0u);
   EXPECT_NE(header.find(",any_contact_slipping"), std::string::npos);
   long count = 0;

@@ -204,6 +204,53 @@ std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& scr
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
+// The Mystery tab as the class sees it, answers typed, before and after the reveal: every
+// lesson with a pair that can be a mystery, its first such pair.
+class MysteryLayout : public ::testing::TestWithParam<WindowScreen> {};
+
+TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int lessons_with_a_mystery = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(entry.name);
+    const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(options.lesson));
+    if (pairs.empty()) continue;
+    ++lessons_with_a_mystery;
+    options.window.help = false;
+    options.window.projector = screen.projector;
+    options.mystery = MysteryChoice{pairs.front(), 1};
+    Classroom window(options);
+    window.answer_mystery(0.5, 0.25);
+    for (const bool revealed : {false, true}) {
+      if (revealed) window.reveal_mystery();
+      FrameRecord record;
+      for (int frame = 0; frame < 3; ++frame) {
+        gl.make_current();
+        const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        window.frame(fonts, display, 0.0, frame == 2 ? &record : nullptr);
+        ImGui::Render();
+      }
+      const std::string where = entry.name + " with " + pairs.front() + " a mystery" + (revealed ? ", revealed" : "") +
+                                ", window " + screen.name;
+      const bool tab_shown = std::any_of(record.texts.begin(), record.texts.end(),
+                                         [](const ShownText& text) { return text.text.find("% off") != std::string::npos; });
+      EXPECT_TRUE(tab_shown) << where << ": the Mystery tab is not showing";
+      check_texts(record, where);
+    }
+  }
+  EXPECT_GE(lessons_with_a_mystery, 5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Screens, MysteryLayout, ::testing::ValuesIn(window_screens), window_screen_name);
+
 // The window with the force gauge pulling and every measuring tool on: the gauge's reading, the
 // stopwatch, the speed, the distance marks' numbers and the weight's components along a slope
 // keep clear of each other, of the lesson's labels and arrows and of the inset, and the gauge's

@@ -31,8 +31,9 @@ Classroom::Classroom(ClassroomOptions options)
       output_folder_(options.output_folder) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
-    playback_ = std::make_unique<Playback>(options.lesson, options.overrides, options.settings);
+    playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
     check_lock(playback_->lesson());
+    select_mystery_tab_ = mystery_.has_value();
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
@@ -45,6 +46,35 @@ Classroom::Classroom(ClassroomOptions options)
   playback_->set_speed(window_.speed);
   // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
   // predicts, before anything moves; Space plays.
+}
+
+std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                                   const StepSettings& settings, const std::optional<MysteryChoice>& choice,
+                                                   std::optional<Mystery>& mystery) const {
+  auto playback = std::make_unique<Playback>(path, overrides, settings);
+  if (!choice) return playback;
+  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
+  Mystery drawn(*choice, playback->lesson());
+  for (const auto& [name, value] : drawn.settings()) {
+    if (overrides.count(name) > 0) {
+      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
+    }
+    overrides[name] = value;
+  }
+  playback = std::make_unique<Playback>(path, overrides, settings);
+  mystery = std::move(drawn);
+  return playback;
+}
+
+void Classroom::forget_interaction() {
+  control_errors_.clear();
+  pair_open_.clear();
+  sliding_.reset();
+  hand_held_ = false;
+  view_adjust_ = {};
+  held_view_.reset();
+  panning_from_.reset();
+  failed_script_.clear();
 }
 
 void Classroom::check_lock(const lessons::Lesson& lesson) const {
@@ -118,9 +148,13 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     style.extra_plot_title = gauge_plot_title();
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
   }
+  style.hidden = hidden_values();
   style.more_tabs = [this] {
+    mystery_tab();
     cheapest_setting_tab();
-    stability_map_tab();
+    // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
+    // (whose boundary would give μs away until the reveal anyway).
+    if (!mystery_) stability_map_tab();
   };
   predictions_style(style);
   ImGui::PushFont(fonts.body);
@@ -138,6 +172,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   help_panel();
   stability_map_window();
   open_script_popup();
+  setup_popup();
   ImGui::PopFont();
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
@@ -290,8 +325,10 @@ void Classroom::change_settings(const StepSettings& settings) {
 
 void Classroom::set_value(const std::string& name, const std::string& text) {
   try {
+    const std::string before = parameter_text(playback_->lesson().parameter(name));
     playback_->set_parameter(name, text);
     control_errors_.erase(name);
+    keep_mystery(name, before);
   } catch (const InvalidInput& error) {
     control_errors_[name] = error.what();
   }
@@ -340,15 +377,9 @@ std::string Classroom::open(const std::string& name_or_path) {
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
-    control_errors_.clear();
+    mystery_.reset();  // it was a pair of the lesson that closed
     predictions_ = {};
-    pair_open_.clear();
-    sliding_.reset();
-    hand_held_ = false;
-    view_adjust_ = {};
-    held_view_.reset();
-    panning_from_.reset();
-    failed_script_.clear();
+    forget_interaction();
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
@@ -413,6 +444,14 @@ std::string Classroom::export_history() {
   const Scene& scene = lesson.scene();
   std::ostringstream csv;
   csv.precision(9);
+  // The values that made the run, so a file found later says which run it is; a mystery's are "?".
+  std::string settings = "# FrictionLab history of " + lesson.path() + ";";
+  const HiddenValues hidden = hidden_values();
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    settings += " " + parameter.name + " = " + (hidden.hides(parameter.name) ? "?" : parameter.shown()) + ";";
+  }
+  std::replace(settings.begin(), settings.end(), ',', ';');  // one field: a spreadsheet shows the line in its first cell
+  csv << settings << '\n';
   csv << "t";
   for (const Probe& probe : scene.probes()) {
     const std::string& unit = lesson.probe_unit(probe.name);

@@ -24,6 +24,8 @@
 #include "ui/frame.h"
 #include "ui/keys.h"
 #include "ui/measuring_tools.h"
+#include "ui/mystery.h"
+#include "ui/setup_file.h"
 #include "ui/playback.h"
 #include "ui/predictions.h"
 #include "ui/settings.h"
@@ -38,10 +40,16 @@ struct ClassroomOptions {
   std::vector<std::string> lock;                    // --lock: the only controls shown; empty: all
   WindowSettings window;                            // as remembered
   std::string output_folder = ".";                  // screenshots and history exports
+  std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
 };
 
 // The names --lock takes besides a lesson's parameters.
 inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
+
+// The options a prepared setup file gives (its lesson, values, lock, mystery and step settings)
+// in place of those in `base`; the window's own settings stay. Throws InvalidInput as
+// "file:line: what is wrong", checked against the lesson before anything opens.
+ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base);
 
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".
 std::string lesson_name(const std::string& script_path);
@@ -95,6 +103,30 @@ class Classroom {
   // folder; returns the path, or throws std::runtime_error.
   std::string export_history();
 
+  // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
+  const std::optional<Mystery>& mystery() const { return mystery_; }
+  // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
+  // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
+  std::string make_mystery(const MysteryChoice& choice);
+  void reveal_mystery();
+  // The class's answers, as typed in the Mystery tab.
+  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k);
+  // What the class must not see now.
+  HiddenValues hidden_values() const;
+
+  // Opens a prepared setup (ui/setup_file.h): its lesson with its values, lock and mystery, at
+  // t = 0. On failure the running lesson keeps running and the message ("file:line: ...") is
+  // returned (also shown in the window); "" on success.
+  std::string open_setup(const std::string& path);
+  // The window as a setup saved at `path` would hold it: the lesson (named from there), every
+  // value but a mystery's, the lock, the mystery's pair and seed, the step settings.
+  PreparedSetup current_setup(const std::string& path) const;
+  // Writes current_setup to `path` (never over a .lua script or a file that is not a setup
+  // FrictionLab wrote). Returns "" or why not.
+  std::string save_setup(const std::string& path);
+  // The window's title: the program and the lesson (never a hidden value).
+  std::string window_title() const;
+
   // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
   // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
   std::optional<ImRect> control(const std::string& name) const;
@@ -144,6 +176,21 @@ class Classroom {
   TransportShape transport_shape(float width) const;
   void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   void cheapest_setting_tab();
+  void mystery_menu();
+  void mystery_tab();
+  // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
+  // would take its pair away (a material chosen) is put back, with why beside its control.
+  void keep_mystery(const std::string& name, const std::string& before);
+  // The Lesson menu's dialog that opens a setup or saves one, by its path.
+  void setup_popup();
+  // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
+  // (then made in `mystery`). Throws as Playback does, and InvalidInput for a pair the lesson
+  // does not have or a value of the mystery's in `overrides`.
+  std::unique_ptr<Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                           const StepSettings& settings, const std::optional<MysteryChoice>& choice,
+                                           std::optional<Mystery>& mystery) const;
+  // Forgets what the hands and boxes were doing in the lesson that is being replaced.
+  void forget_interaction();
   void stability_map_tab();
   void stability_map_window();
   void update_stability_chart();
@@ -228,6 +275,18 @@ class Classroom {
   Chart stability_chart_;                    // as last drawn
   std::vector<std::string> stability_words_;  // each threshold's side of the boundary, in words
   bool stability_window_ = false;
+  // The mystery pair, and the Mystery tab's state: chosen once when a mystery begins, the
+  // answers and the seed as typed.
+  std::optional<Mystery> mystery_;
+  bool select_mystery_tab_ = false;
+  char answer_text_[2][32] = {};
+  std::string answer_error_[2];
+  int menu_seed_ = 1;
+  // The setup dialog: which one is open (asked for this frame, or showing), its path and error.
+  enum class SetupDialog { none, open, save } setup_dialog_ = SetupDialog::none;
+  bool setup_dialog_asked_ = false;
+  char setup_path_[512] = {};
+  std::string setup_error_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   bool open_popup_ = false;

@@ -189,7 +189,7 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
         ImGui::TextDisabled("%s", pair.c_str());
         note_text(pair.c_str());
         if (row.folded) {
-          const std::string values = pair_values(playback_->lesson(), pair);
+          const std::string values = pair_values(playback_->lesson(), pair, hidden_values());
           ImGui::SameLine();
           ImGui::TextUnformatted(values.c_str());
           note_text(values.c_str());
@@ -243,7 +243,8 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
 void Classroom::preset_row(const lessons::Parameter& mu_s) {
   const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
   const std::string mu_k = prefix + "mu_k";
-  if (!shown(mu_k)) {
+  // A mystery's pair takes no presets: choosing one would end the mystery without a reveal.
+  if (!shown(mu_k) || (mystery_ && mystery_->hides(mu_s.name))) {
     ImGui::NewLine();
     return;
   }
@@ -292,6 +293,14 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
                       parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
                       exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
   }
+  if (mystery_ && mystery_->hides(name)) {
+    // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
+    const char* hidden = value_x == reset_x ? "?" : hidden_value_text;
+    ImGui::SameLine(slider_x);
+    ImGui::TextDisabled("%s", hidden);
+    note_text(hidden);
+    return;
+  }
 
   ImGui::SameLine(slider_x);
   if (parameter.is_choice()) {
@@ -303,6 +312,7 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     if (open) {
       for (const std::string& choice : parameter.choices) {
         if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) pending_values_.push_back({name, choice});
+        remember(name + " choice " + choice);
       }
       ImGui::EndCombo();
     }

@@ -38,6 +38,17 @@ void Classroom::menu_bar() {
     ImGui::Separator();
     if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;
     remember("Open a script");
+    // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
+    if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) {
+      setup_dialog_ = SetupDialog::open;
+      setup_dialog_asked_ = true;
+    }
+    remember("Open a setup");
+    if (ImGui::MenuItem("Save as a setup...")) {
+      setup_dialog_ = SetupDialog::save;
+      setup_dialog_asked_ = true;
+    }
+    remember("Save as a setup");
     if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) request_screenshot();
@@ -91,6 +102,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
+  mystery_menu();
   const bool view = ImGui::BeginMenu("View");
   remember("View menu");
   if (view) {
@@ -160,7 +172,8 @@ void Classroom::help_panel() {
         "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
         "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
         "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
-        "until you change something.");
+        "until you change something. The Mystery menu draws a pair's \u03bcs and \u03bck from a seed and hides them "
+        "until revealed: the class measures them and types its answers in the Mystery tab.");
     ImGui::TextUnformatted(
         "Tools menu: a stopwatch on the lesson's clock (W starts and stops it, L takes a lap; slow motion and pauses "
         "do not fool it), distance marks along the floor or the slope from where the main body stood at t = 0, "

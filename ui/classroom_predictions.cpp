@@ -19,11 +19,13 @@ void Classroom::predictions_style(FrameStyle& style) {
     PredictionControls controls;
     controls.remember = [this](const std::string& name) { remember(name); };
     controls.reveal = [this] { predictions_.revealed = true; };
+    // A mystery's values are in the theory: it stays hidden here too until the mystery is revealed.
     predictions_contents(playback_->lesson(), playback_->readings().expectations, predictions_, editable,
-                         theme(window_.theme), controls);
+                         theme(window_.theme), controls, hidden_values().theory());
   };
   style.predictions_height = [this](float width) {
-    return predictions_contents_height(playback_->lesson(), playback_->readings().expectations, predictions_, width);
+    return predictions_contents_height(playback_->lesson(), playback_->readings().expectations, predictions_, width,
+                                       hidden_values().theory());
   };
 }
 

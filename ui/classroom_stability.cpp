@@ -29,7 +29,15 @@ void Classroom::update_stability_chart() {
   const StepSettings& settings = lesson.settings();
   const double h = 1.0 / settings.hz;  // the regularized law's step in a lesson: one a frame
   for (const lessons::Parameter& parameter : lesson.parameters()) {
-    if (parameter.coefficient == "mu_s" && std::isnan(mu_s)) mu_s = parameter.value;
+    if (parameter.coefficient == "mu_s" && std::isnan(mu_s)) {
+      // A mystery's μs would be read off the map's boundary: no map until it is revealed.
+      if (mystery_ && mystery_->hides(parameter.name)) {
+        stability_chart_ = Chart{};
+        stability_words_.clear();
+        return;
+      }
+      mu_s = parameter.value;
+    }
     // A block on a slope presses on it with g·cos θ: the boundary moves with it.
     if (parameter.name == "angle" && parameter.unit == "\u00b0") {
       gravity = standard_gravity * std::cos(parameter.value * M_PI / 180.0);
@@ -75,7 +83,12 @@ void Classroom::stability_map_tab() {
   if (!open) return;
   update_stability_chart();
   if (stability_chart_.cells.empty()) {
-    ImGui::TextDisabled("This lesson has no \u03bcs to draw the regularized law's map for.");
+    const char* none = mystery_ && !mystery_->revealed() ? "\u03bcs is a mystery until revealed: its map would give it away."
+                                                         : "This lesson has no \u03bcs to draw the regularized law's map for.";
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", none);
+    ImGui::PopTextWrapPos();
+    note_text(none);
   } else {
     if (ImGui::Button(stability_window_ ? "Hide the map" : "Show the map")) stability_window_ = !stability_window_;
     remember("stability map");

@@ -102,7 +102,7 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   // the window's steps are its own (parameters_heights).
   const std::size_t steps = window ? style.parameters_heights.size() - 1 : parameter_pairs(lesson).size();
   const auto parameters = [&](std::size_t step) {
-    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step);
+    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step, style.hidden);
   };
   std::size_t model_lines = 4;
   for (const lessons::ModelCard::PairLine& pair : lessons::model_card(lesson).pairs) model_lines += pair.own ? 1 : 0;
@@ -168,7 +168,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const LessonReadings& readings = style.readings ? *style.readings : own;
   const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
   const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
-  const float table = theory_contents_height(rows, inside, readings.error, readings.caveat);
+  const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
   ColumnPlan column_plan = plan_column(lesson, style, display, table);
   // The class's predictions are planned for whole (as the first tab, if need be) while that
   // folds no sliders; else they have the theory table's room and scroll (the reveal button
@@ -281,7 +281,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
           style.extra_plot(ImGui::GetCursorScreenPos(), area);
         } else {
           draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                    fonts, !style.theory_hidden);
+                    fonts, !style.theory_hidden && !style.hidden.theory());
         }
       }
       end_panel();
@@ -296,16 +296,16 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   if (style.parameters_panel) {
     style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
   } else {
-    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step);
+    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
   }
   at.y += plan.parameters + gap;
   // The class's predictions come first; before the reveal they stand in for the theory.
   const auto theory_part = [&] {
     if (style.predictions) style.predictions();
-    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat);
+    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
   };
   if (!plan.theory_in_tabs && !style.predictions) {
-    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat);
+    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());
     at.y += plan.theory + gap;
   } else if (!plan.theory_in_tabs) {
     if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,

@@ -9,6 +9,7 @@
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
 #include "ui/drawing.h"
+#include "ui/panels.h"
 #include "ui/text_record.h"
 #include "ui/theme.h"
 
@@ -87,6 +88,8 @@ struct FrameStyle {
   // its title. None when empty.
   std::string extra_plot_title;
   std::function<void(ImVec2 corner, ImVec2 size)> extra_plot;
+  // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
+  HiddenValues hidden;
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and

@@ -40,6 +40,7 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
   FrameStyle style;
   style.theme = theme_;
   style.fonts = &host_->fonts();
+  style.hidden = hidden_;
   auto start = clock::now();
   // Twice: the first pass lets tables and windows settle their sizes, so the picture does not
   // depend on which frame came before.

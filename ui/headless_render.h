@@ -39,6 +39,9 @@ class HeadlessRenderer {
   // With `record`, also where the frame put things in the world view.
   Image render(lessons::Lesson& lesson, const WorldFraming& framing, FrameRecord* record = nullptr);
 
+  // Values the pictures must not show (a mystery pair's), from now on.
+  void hide(HiddenValues hidden) { hidden_ = std::move(hidden); }
+
   const FrameTimes& last_times() const { return times_; }
   int width() const { return width_; }
   int height() const { return height_; }
@@ -51,6 +54,7 @@ class HeadlessRenderer {
   std::unique_ptr<HeadlessContext> gl_;
   std::unique_ptr<ImGuiHost> host_;  // after gl_: its renderer goes while the context lives
   FrameTimes times_;
+  HiddenValues hidden_;
 };
 
 }  // namespace frictionlab::ui

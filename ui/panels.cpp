@@ -29,8 +29,8 @@ bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, 
 
 void end_panel() { ImGui::End(); }
 
-bool begin_tab(const char* label) {
-  const bool open = ImGui::BeginTabItem(label);
+bool begin_tab(const char* label, int flags) {
+  const bool open = ImGui::BeginTabItem(label, nullptr, flags);
   // A tab too narrow for its name shows it cut with an ellipsis.
   const ImVec2 padding = ImGui::GetStyle().FramePadding;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
@@ -82,7 +82,7 @@ std::vector<std::string> parameter_pairs(const lessons::Lesson& lesson) {
   return pairs;
 }
 
-std::string pair_values(const lessons::Lesson& lesson, const std::string& pair) {
+std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, const HiddenValues& hidden) {
   std::string line;
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // Drag coefficients at 0 are off: not worth a place on a folded line.
@@ -95,6 +95,7 @@ std::string pair_values(const lessons::Lesson& lesson, const std::string& pair) 
     // Without units: the sliders, one arrow away, have them.
     char value[32];
     std::snprintf(value, sizeof value, "%g", parameter.value);
+    if (hidden.hides(parameter.name)) std::snprintf(value, sizeof value, "?");
     line += (line.empty() ? "" : "  ") + letter + " " + value;
   }
   return line;
@@ -107,7 +108,7 @@ struct ValueRow {
   std::string name, value;
 };
 
-std::vector<ValueRow> value_rows(const lessons::Lesson& lesson, std::size_t folded_pairs) {
+std::vector<ValueRow> value_rows(const lessons::Lesson& lesson, std::size_t folded_pairs, const HiddenValues& hidden) {
   const std::vector<std::string> pairs = parameter_pairs(lesson);
   const std::size_t first_folded = pairs.size() - std::min(folded_pairs, pairs.size());
   std::vector<ValueRow> rows;
@@ -117,10 +118,10 @@ std::vector<ValueRow> value_rows(const lessons::Lesson& lesson, std::size_t fold
     const auto at = std::find(pairs.begin(), pairs.end(), pair);
     const bool folded = !pair.empty() && static_cast<std::size_t>(at - pairs.begin()) >= first_folded;
     if (!folded) {
-      rows.push_back({parameter_title(parameter), parameter.shown()});
+      rows.push_back({parameter_title(parameter), hidden.hides(parameter.name) ? hidden_value_text : parameter.shown()});
     } else if (std::find(listed.begin(), listed.end(), pair) == listed.end()) {
       listed.push_back(pair);
-      rows.push_back({pair, pair_values(lesson, pair)});
+      rows.push_back({pair, pair_values(lesson, pair, hidden)});
     }
   }
   return rows;
@@ -128,12 +129,13 @@ std::vector<ValueRow> value_rows(const lessons::Lesson& lesson, std::size_t fold
 
 }  // namespace
 
-float parameters_panel_height(const lessons::Lesson& lesson, float width, std::size_t folded_pairs) {
+float parameters_panel_height(const lessons::Lesson& lesson, float width, std::size_t folded_pairs,
+                              const HiddenValues& hidden) {
   const ImGuiStyle& style = ImGui::GetStyle();
   // Two columns of equal weight; a value wraps in its half.
   const float half = 0.5f * (width - 2.0f * style.WindowPadding.x) - 2.0f * style.CellPadding.x;
   float height = ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + 4.0f * style.ItemSpacing.y;
-  for (const ValueRow& row : value_rows(lesson, folded_pairs)) {
+  for (const ValueRow& row : value_rows(lesson, folded_pairs, hidden)) {
     const float name = ImGui::CalcTextSize(row.name.c_str(), nullptr, false, half).y;
     const float value = ImGui::CalcTextSize(row.value.c_str(), nullptr, false, half).y;
     height += std::max(name, value) + 2.0f * style.CellPadding.y;
@@ -141,12 +143,13 @@ float parameters_panel_height(const lessons::Lesson& lesson, float width, std::s
   return height;
 }
 
-void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, std::size_t folded_pairs) {
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, std::size_t folded_pairs,
+                      const HiddenValues& hidden) {
   if (begin_panel("parameters", "Parameters", corner, size)) {
     if (ImGui::BeginTable("values", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 1.0f);
       ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-      for (const ValueRow& row : value_rows(lesson, folded_pairs)) {
+      for (const ValueRow& row : value_rows(lesson, folded_pairs, hidden)) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::PushTextWrapPos(0.0f);
@@ -181,16 +184,19 @@ struct TheoryCells {
   bool names_above(float table_width) const { return table_width - numbers() < 9.0f * ImGui::CalcTextSize("m").x; }
 };
 
-TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows) {
+TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden) {
   TheoryCells table{{}, {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
                          ImGui::CalcTextSize("error").x}};
   float* widest = table.widest;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
                             row.measured_yet, row.passes, row.hand_pulled && !row.passes};
+    if (predictions_hidden) cell.predicted = "hidden";
     if (row.measured_yet) {
       cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
-      if (row.numeric) {
+      if (predictions_hidden) {
+        cell.error = "";  // measured minus predicted would give the prediction away
+      } else if (row.numeric) {
         // The unit is in the columns beside it; here it would push the names into wrapping.
         std::string number = with_unit(row.error(), "");
         number.pop_back();
@@ -212,13 +218,15 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows) {
 }  // namespace
 
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
-                  const std::string& error, const std::string& caveat) {
-  if (begin_panel("theory", "Theory against simulation", corner, size)) theory_contents(rows, theme, error, caveat);
+                  const std::string& error, const std::string& caveat, bool predictions_hidden) {
+  if (begin_panel("theory", "Theory against simulation", corner, size)) {
+    theory_contents(rows, theme, error, caveat, predictions_hidden);
+  }
   end_panel();
 }
 
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
-                     const std::string& caveat) {
+                     const std::string& caveat, bool predictions_hidden) {
   {
     ImGui::PushTextWrapPos(0.0f);
     if (!error.empty()) {
@@ -237,7 +245,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       note_text(none);
       return;
     }
-    const TheoryCells table = theory_cells(rows);
+    const TheoryCells table = theory_cells(rows, predictions_hidden);
     const std::vector<TheoryCells::Cells>& cells = table.cells;
     const float* widest = table.widest;
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
@@ -285,6 +293,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         }
         shown_text(cell.measured.c_str());
         ImGui::TableNextColumn();
+        if (cell.error.empty()) continue;
         if (cell.hand_pulled) {
           ImGui::TextDisabled("%s", cell.error.c_str());
         } else {
@@ -298,7 +307,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
 }
 
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width, const std::string& error,
-                             const std::string& caveat) {
+                             const std::string& caveat, bool predictions_hidden) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float row_padding = 2.0f * style.CellPadding.y;  // above and below a row's text
@@ -307,7 +316,7 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
   if (rows.empty()) return height + font + style.ItemSpacing.y;
-  const TheoryCells table = theory_cells(rows);
+  const TheoryCells table = theory_cells(rows, predictions_hidden);
   const bool above = table.names_above(width);
   const float padding = 2.0f * style.CellPadding.x;
   // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.

@@ -19,8 +19,8 @@ namespace frictionlab::ui {
 // present marked, and the theory curves sampled across the x range (kept between frames while
 // the range and parameters stay; a script error in one becomes the chart's message).
 // `time_span` is the time axis' length (the lesson's duration, or longer once the lesson has
-// run past it).
-// `with_theory` false leaves the theory curves out (the class has not seen the theory yet).
+// run past it). Without `with_theory` the probes alone: the class has not seen the theory yet,
+// or a mystery's values would be read off the curves.
 Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme,
                  bool with_theory = true);
 

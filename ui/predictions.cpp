@@ -199,10 +199,17 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
   }
 }
 
+// How close the class came; while a mystery withholds the theory, against the run only.
+Closeness judged(const lessons::Prediction& prediction, const std::string& answer, const lessons::ExpectationResult& row,
+                 bool theory_withheld) {
+  if (theory_withheld && !answer.empty() && !row.measured_yet) return {"class: judged once the run has measured it", false};
+  return closeness(prediction, answer, row);
+}
+
 // The class's answer, the theory and the measurement of each predicted row side by side,
 // each row's name above its numbers and how close the class came below them.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                      const ClassPredictions& predictions, const Theme& theme) {
+                      const ClassPredictions& predictions, const Theme& theme, bool theory_withheld) {
   const float table_width = ImGui::GetContentRegionAvail().x;
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
@@ -232,11 +239,11 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
     ImGui::TableNextColumn();
     shown_text(answer_shown(prediction, answer).c_str());
     ImGui::TableNextColumn();
-    shown_text(row ? theory_shown(*row).c_str() : "?");
+    shown_text(!row ? "?" : theory_withheld ? "hidden" : theory_shown(*row).c_str());
     ImGui::TableNextColumn();
     shown_text(row ? measured_shown(*row).c_str() : "?");
     if (row != nullptr) {
-      const Closeness near = closeness(prediction, answer, *row);
+      const Closeness near = judged(prediction, answer, *row, theory_withheld);
       across(near.words, near.close ? std::optional<ImU32>(theme.good) : std::nullopt);
     }
   }
@@ -295,16 +302,16 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
 
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                           ClassPredictions& predictions, bool editable, const Theme& theme,
-                          const PredictionControls& controls) {
+                          const PredictionControls& controls, bool theory_withheld) {
   if (predictions.revealed) {
-    after_the_reveal(lesson, rows, predictions, theme);
+    after_the_reveal(lesson, rows, predictions, theme, theory_withheld);
   } else {
     before_the_reveal(lesson, rows, predictions, editable, theme, controls);
   }
 }
 
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                                  const ClassPredictions& predictions, float width) {
+                                  const ClassPredictions& predictions, float width, bool theory_withheld) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float frame = ImGui::GetFrameHeight() + style.ItemSpacing.y;
@@ -318,7 +325,7 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
       height += ImGui::CalcTextSize(prediction.expectation.c_str(), nullptr, false, across).y + row_padding;
       height += font + row_padding;
       if (const lessons::ExpectationResult* row = row_of(rows, prediction)) {
-        const Closeness near = closeness(prediction, answer_of(predictions, prediction), *row);
+        const Closeness near = judged(prediction, answer_of(predictions, prediction), *row, theory_withheld);
         height += ImGui::CalcTextSize(near.words.c_str(), nullptr, false, across).y + row_padding;
       }
     }

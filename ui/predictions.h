@@ -50,12 +50,14 @@ struct PredictionControls {
 
 // The panel's contents: before the reveal the questions with the class's answers (editable
 // while `editable`: at t = 0) and what the run has measured so far, and the reveal button;
-// after it, the class's answer, the theory and the measurement side by side.
+// after it, the class's answer, the theory and the measurement side by side. With
+// `theory_withheld` (a mystery pair's values are in it: ui/mystery.h) the theory says "hidden"
+// even then, and the class is judged against the measurement alone.
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                           ClassPredictions& predictions, bool editable, const Theme& theme,
-                          const PredictionControls& controls);
+                          const PredictionControls& controls, bool theory_withheld = false);
 // The height predictions_contents takes at a width (the panel's inside), in the current font.
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                                  const ClassPredictions& predictions, float width);
+                                  const ClassPredictions& predictions, float width, bool theory_withheld = false);
 
 }  // namespace frictionlab::ui

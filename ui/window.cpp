@@ -91,6 +91,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   double last = glfwGetTime();
   WindowSettings saved = settings;
   int settle_frames = 3;
+  std::string shown_title = "FrictionLab";
   while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
     // Paused and untouched, the picture cannot change: wait for input, waking four times a
     // second so a saved script is still seen (a paused llvmpipe window drew at 97 % of a core).
@@ -125,6 +126,11 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     ImGui_ImplGlfw_NewFrame();
     host.begin_frame();
     classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
+    // The lesson's title, and whether a surface is a mystery (never its values).
+    if (std::string title = classroom.window_title(); title != shown_title) {
+      glfwSetWindowTitle(window.get(), title.c_str());
+      shown_title = std::move(title);
+    }
     glViewport(0, 0, width, height);
     const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
     glClearColor(clear.x, clear.y, clear.z, 1.0f);

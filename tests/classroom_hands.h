@@ -1,0 +1,111 @@
+// The classroom window on an EGL context with no display, driven by a user's hands: frames
+// drawn with every text recorded, clicks and typing written to ImGui's io across frames
+// (Dear ImGui 1.86 has no event API). For the mystery and setup tests.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "lessons/runtime/catalog.h"
+#include "ui/classroom.h"
+#include "ui/headless.h"
+#include "ui/imgui_host.h"
+
+namespace frictionlab::ui {
+
+class ClassroomHands {
+ public:
+  // `options.lesson` is a built-in name or a path; the output folder is a fresh one of the test's own.
+  explicit ClassroomHands(ClassroomOptions options, ImVec2 display = ImVec2(1280.0f, 720.0f))
+      : host_(nullptr), display_(display) {
+    options.lesson = lessons::resolve_lesson(options.lesson);
+    options.window.help = false;
+    options.output_folder = folder_;
+    classroom_ = std::make_unique<Classroom>(options);
+    std::filesystem::create_directories(folder_);
+  }
+  ~ClassroomHands() { std::filesystem::remove_all(folder_); }
+  ClassroomHands(const ClassroomHands&) = delete;
+  ClassroomHands& operator=(const ClassroomHands&) = delete;
+
+  Classroom& classroom() { return *classroom_; }
+  lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
+  const std::string& folder() const { return folder_; }
+
+  // One display frame; with `record`, every text it drew.
+  void frame(FrameRecord* record = nullptr) {
+    gl_.make_current();
+    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display_;
+    io.DeltaTime = 1.0f / 60.0f;
+    host_.begin_frame();
+    classroom_->frame(fonts, display_, 0.0, record);
+    ImGui::Render();
+  }
+  // Every text of a frame drawn after a few have let tables and tab bars settle, each on a line.
+  std::string texts() {
+    frame();
+    frame();
+    FrameRecord record;
+    frame(&record);
+    std::string all;
+    for (const ShownText& text : record.texts) all += text.text + "\n";
+    return all;
+  }
+  ImRect control(const std::string& name) {
+    const auto rect = classroom_->control(name);
+    EXPECT_TRUE(rect.has_value()) << "no control named '" << name << "' was drawn";
+    return rect.value_or(ImRect());
+  }
+  // Press and release on the named control, a frame for each, as a hand does.
+  void click(const std::string& name) { click_at(control(name).GetCenter()); }
+  // The same on a text the last frames drew (a tab's name): its middle.
+  void click_text(const std::string& text) {
+    frame();
+    FrameRecord record;
+    frame(&record);
+    for (const ShownText& shown : record.texts) {
+      if (shown.text != text) continue;
+      click_at(ImVec2(0.5f * (shown.needed.x + shown.needed.z), 0.5f * (shown.needed.y + shown.needed.w)));
+      return;
+    }
+    ADD_FAILURE() << "no text '" << text << "' was drawn";
+  }
+  void click_at(ImVec2 point) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = point;
+    frame();
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+  }
+  void type(const std::string& text) {
+    for (const char c : text) ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
+    frame();
+  }
+  void press_enter() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = true;
+    frame();
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = false;
+    frame();
+  }
+
+ private:
+  HeadlessContext gl_;
+  ImGuiHost host_;
+  ImVec2 display_;
+  std::string folder_ = (std::filesystem::temp_directory_path() /
+                         ("frictionlab_hands_" + std::to_string(::getpid()) + "_" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
+                            .string();
+  std::unique_ptr<Classroom> classroom_;
+};
+
+}  // namespace frictionlab::ui

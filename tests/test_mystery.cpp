@@ -1,0 +1,330 @@
+// The mystery surface: the draw (the same seed gives the same values on every machine, μk < μs
+// always, within the documented range), the pair named on the command line, and the window:
+// no hidden value in any text drawn, the CSV or the title before the reveal, and every one of
+// them after; the class's answers and how far off each is.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "classroom_hands.h"
+#include "lessons/runtime/lesson.h"
+#include "ui/mystery.h"
+#include "ui/overlays.h"
+#include "ui/playback.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
+// "0.470"), not as part of a longer number ("10.47", "0.475").
+bool mentions(const std::string& text, double value) {
+  std::set<std::string> forms{exact_text(value)};
+  for (const char* format : {"%.2f", "%.3f", "%g", "%.3g"}) {
+    char shown[32];
+    std::snprintf(shown, sizeof shown, format, value);
+    forms.insert(shown);
+  }
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  for (const std::string& form : forms) {
+    for (std::size_t at = text.find(form); at != std::string::npos; at = text.find(form, at + 1)) {
+      const bool starts = at == 0 || (!digit(text[at - 1]) && text[at - 1] != '.');
+      const std::size_t end = at + form.size();
+      const bool ends = end >= text.size() || !(digit(text[end]) || (text[end] == '.' && end + 1 < text.size() && digit(text[end + 1])));
+      if (starts && ends) return true;
+    }
+  }
+  return false;
+}
+
+TEST(MysteryDraw, TheEngineIsTheStandardsMersenneTwister) {
+  // The C++ standard fixes this output ([rand.predef]): the draw rests on nothing a library chooses.
+  std::mt19937_64 engine;
+  engine.discard(9999);
+  EXPECT_EQ(engine(), 9981545732273789042ULL);
+}
+
+TEST(MysteryDraw, EverySeedGivesHundredthsInTheRangeWithMuKBelowMuS) {
+  for (std::uint64_t seed = 0; seed <= 20000; ++seed) {
+    const MysteryValues values = mystery_values(seed);
+    ASSERT_GE(values.mu_s, 0.20 - 1e-12) << seed;
+    ASSERT_LE(values.mu_s, 0.90 + 1e-12) << seed;
+    ASSERT_LT(values.mu_k, values.mu_s) << seed;
+    // μk is 50 % to 90 % of μs, rounded to a hundredth.
+    ASSERT_GE(values.mu_k, 0.5 * values.mu_s - 0.005 - 1e-12) << seed;
+    ASSERT_LE(values.mu_k, 0.9 * values.mu_s + 0.005 + 1e-12) << seed;
+    ASSERT_EQ(std::round(values.mu_s * 100.0) / 100.0, values.mu_s) << seed;
+    ASSERT_EQ(std::round(values.mu_k * 100.0) / 100.0, values.mu_k) << seed;
+  }
+  // The largest seed too.
+  EXPECT_LT(mystery_values(mystery_seed_max).mu_k, mystery_values(mystery_seed_max).mu_s);
+}
+
+TEST(MysteryDraw, TheSameSeedGivesTheSameValuesAndOthersOtherValues) {
+  const MysteryValues first = mystery_values(42), again = mystery_values(42);
+  EXPECT_EQ(first.mu_s, again.mu_s);
+  EXPECT_EQ(first.mu_k, again.mu_k);
+  // Fixed here so that another machine or standard library drawing anything else fails: the
+  // values follow from the standard's engine and this file's arithmetic alone.
+  EXPECT_EQ(exact_text(first.mu_s), "0.58");
+  EXPECT_EQ(exact_text(first.mu_k), "0.49");
+  // Neighbouring seeds are not neighbouring values: of 100 seeds, nearly all draw a pair of their own.
+  std::set<std::pair<double, double>> drawn;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) drawn.insert({mystery_values(seed).mu_s, mystery_values(seed).mu_k});
+  EXPECT_GE(drawn.size(), 95u);
+  EXPECT_FALSE(mystery_values(1).mu_s == mystery_values(2).mu_s && mystery_values(1).mu_k == mystery_values(2).mu_k);
+}
+
+TEST(MysteryDraw, ASeedIsAWholeNumberInItsRange) {
+  EXPECT_EQ(parse_mystery_seed("--seed", "0"), 0u);
+  EXPECT_EQ(parse_mystery_seed("--seed", "999999"), 999999u);
+  for (const char* bad : {"", "-1", "1000000", "1.5", "1e3", " 7", "0x10", "12345678901234567890"}) {
+    try {
+      parse_mystery_seed("--seed", bad);
+      ADD_FAILURE() << "'" << bad << "' was taken";
+    } catch (const InvalidInput& error) {
+      EXPECT_NE(std::string(error.what()).find("--seed " + std::string(bad) + ": "), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("a whole number from 0 to 999999"), std::string::npos) << error.what();
+    }
+  }
+}
+
+TEST(MysteryPairs, APairIsNamedByItsMaterialsEitherWayRoundAndAnUnknownOneListsThem) {
+  const lessons::Lesson stacked(lessons::resolve_lesson("stacked_blocks"));
+  EXPECT_EQ(mystery_pairs(stacked), (std::vector<std::string>{"wood/aluminium", "aluminium/stone"}));
+  EXPECT_EQ(mystery_parameters(stacked, "aluminium/stone"),
+            (std::pair<std::string, std::string>{"bottom_on_floor.mu_s", "bottom_on_floor.mu_k"}));
+  EXPECT_EQ(mystery_parameters(stacked, "aluminium/wood").first, "top_on_bottom.mu_s");
+  try {
+    mystery_parameters(stacked, "wood/stone");  // a pair of the lesson, but without sliders
+    ADD_FAILURE();
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("--mystery wood/stone: "), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("its pairs: wood/aluminium, aluminium/stone"), std::string::npos) << error.what();
+  }
+}
+
+TEST(MysteryCloseness, AnAnswerIsJudgedInPercentOfTheTrueValue) {
+  EXPECT_NEAR(percent_off(0.55, 0.5), 10.0, 1e-9);
+  EXPECT_NEAR(percent_off(0.45, 0.5), 10.0, 1e-9);
+  EXPECT_EQ(closeness_text(0.33, 0.3), "10.0 % off");
+  EXPECT_EQ(closeness_text(0.3, 0.3), "0.0 % off");
+}
+
+ClassroomOptions mystery_options(const std::string& lesson, const std::string& pair, std::uint64_t seed) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.mystery = MysteryChoice{pair, seed};
+  return options;
+}
+
+// The seed whose values the window tests hide: no other text of spring_pull at these moments
+// happens to show the same numbers, so a mention is a leak.
+constexpr std::uint64_t window_seed = 42;
+
+// The window with the theory table showing (predictions not asked for), or asking the class to
+// predict first, or with the class's predictions revealed beside the theory.
+enum class Theory { table, predict_first, predictions_revealed };
+
+class MysteryHidden : public ::testing::TestWithParam<Theory> {};
+
+TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
+  ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
+  options.window.predictions = GetParam() != Theory::table;
+  ClassroomHands hands(options);
+  const MysteryValues truth = mystery_values(window_seed);
+  Classroom& window = hands.classroom();
+  if (GetParam() == Theory::predictions_revealed) {
+    window.key_pressed(Key::t, false);  // the teacher reveals the theory: the mystery's stays hidden
+    hands.frame();
+    hands.click_text("Theory###theory tab");  // where the class's predictions stand beside the theory
+  }
+  // The lesson runs with the drawn values...
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().parameter("mu_k").value, truth.mu_k);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_s, truth.mu_s);
+  // ...which no panel shows, at the start or after stick-slip has begun.
+  for (const double t : {0.0, 3.0}) {
+    window.playback().run_to(t);
+    const std::string texts = hands.texts();
+    EXPECT_FALSE(mentions(texts, truth.mu_s)) << "at t = " << t << ":\n" << texts;
+    EXPECT_FALSE(mentions(texts, truth.mu_k)) << "at t = " << t << ":\n" << texts;
+    // Nor any value the theory works out from them (a breakaway force is μs·m·g), as the table
+    // writes it; a row whose measurement reads the same is left out, since the run may show that.
+    window.playback().refresh_readings();
+    for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
+      if (!row.numeric) continue;
+      const std::string predicted = format_quantity(row.predicted, row.unit.c_str());
+      if (row.measured_yet && format_quantity(row.measured, row.unit.c_str()) == predicted) continue;
+      EXPECT_EQ(texts.find(predicted), std::string::npos) << row.name << " " << predicted << " at t = " << t << ":\n" << texts;
+    }
+    if (GetParam() != Theory::predict_first) {
+      EXPECT_NE(texts.find("hidden"), std::string::npos) << "the theory's values are hidden:\n" << texts;
+    }
+    if (GetParam() != Theory::predictions_revealed) {  // there the Theory tab is showing instead
+      EXPECT_NE(texts.find("Measure \u03bcs and \u03bck of aluminium/wood:"), std::string::npos) << texts;
+    }
+  }
+  EXPECT_FALSE(window.control("mu_s slider").has_value()) << "no slider to read the value off";
+  EXPECT_FALSE(window.control("mu_k value").has_value());
+  EXPECT_FALSE(window.control("mu_s presets").has_value());
+  const std::string csv = read_file(window.export_history());
+  EXPECT_FALSE(mentions(csv.substr(0, csv.find('\n')), truth.mu_s)) << csv.substr(0, 400);
+  EXPECT_NE(csv.find("mu_s = ?;"), std::string::npos) << csv.substr(0, 400);
+  EXPECT_FALSE(mentions(window.window_title(), truth.mu_s) || mentions(window.window_title(), truth.mu_k));
+  EXPECT_NE(window.window_title().find("mystery"), std::string::npos) << window.window_title();
+
+  if (GetParam() == Theory::predictions_revealed) hands.click_text("Mystery###mystery");
+  hands.click("mystery reveal");
+  ASSERT_TRUE(window.mystery()->revealed());
+  const std::string revealed = hands.texts();
+  EXPECT_TRUE(mentions(revealed, truth.mu_s)) << revealed;
+  EXPECT_TRUE(mentions(revealed, truth.mu_k)) << revealed;
+  EXPECT_TRUE(window.control("mu_s slider").has_value()) << "the sliders come back";
+  const std::string after = read_file(window.export_history());
+  EXPECT_NE(after.find("mu_s = " + exact_text(truth.mu_s) + ";"), std::string::npos) << after.substr(0, 400);
+  EXPECT_NE(after.find("mu_k = " + exact_text(truth.mu_k) + ";"), std::string::npos) << after.substr(0, 400);
+  EXPECT_NE(window.window_title().find("revealed"), std::string::npos) << window.window_title();
+}
+
+std::string theory_name(const ::testing::TestParamInfo<Theory>& theory) {
+  return theory.param == Theory::table ? "TheoryTable" : theory.param == Theory::predict_first ? "PredictFirst" : "PredictionsRevealed";
+}
+
+INSTANTIATE_TEST_SUITE_P(Theory, MysteryHidden,
+                         ::testing::Values(Theory::table, Theory::predict_first, Theory::predictions_revealed), theory_name);
+
+TEST(MysteryWindow, TypedAnswersAreJudgedAndABadOneSaysWhy) {
+  ClassroomHands hands(mystery_options("spring_pull", "aluminium/wood", window_seed));
+  const MysteryValues truth = mystery_values(window_seed);
+  hands.texts();
+  hands.click("mystery answer mu_s");
+  hands.type("0.5");
+  hands.press_enter();
+  const std::optional<Mystery>& mystery = hands.classroom().mystery();
+  ASSERT_TRUE(mystery->answer_mu_s.has_value());
+  EXPECT_EQ(*mystery->answer_mu_s, 0.5);
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.1f %% off", 100.0 * std::abs(0.5 - truth.mu_s) / truth.mu_s);
+  std::string texts = hands.texts();
+  EXPECT_NE(texts.find(expected), std::string::npos) << expected << " in\n" << texts;
+  EXPECT_NE(texts.find("not yet"), std::string::npos) << "μk is still to come:\n" << texts;
+
+  hands.click("mystery answer mu_k");
+  hands.type("3");
+  hands.press_enter();
+  EXPECT_FALSE(mystery->answer_mu_k.has_value());
+  texts = hands.texts();
+  EXPECT_NE(texts.find("type a number from 0 to 2"), std::string::npos) << texts;
+  EXPECT_FALSE(mystery->revealed()) << "answering reveals nothing";
+}
+
+TEST(MysteryWindow, TheMenuMakesAPairAMysteryAtTheStartOfAFreshRun) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  ClassroomHands hands(options);
+  Classroom& window = hands.classroom();
+  window.playback().run_to(0.5);
+  EXPECT_NE(window.make_mystery({"slope/fish", 7}), "");
+  EXPECT_FALSE(window.mystery().has_value()) << "a refused pair changes nothing";
+  EXPECT_EQ(window.make_mystery({"slope/block", 7}), "");
+  const MysteryValues truth = mystery_values(7);
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().parameter("mu_k").value, truth.mu_k);
+  EXPECT_EQ(hands.lesson().scene().frame(), 0) << "a new surface starts a new run";
+  const std::string texts = hands.texts();
+  EXPECT_FALSE(mentions(texts, truth.mu_s)) << texts;
+  EXPECT_FALSE(mentions(texts, truth.mu_k)) << texts;
+  // Opening another lesson ends it: the mystery was a pair of the lesson that closed.
+  EXPECT_EQ(window.open("spring_pull"), "");
+  EXPECT_FALSE(window.mystery().has_value());
+}
+
+TEST(MysteryWindow, APairTheLessonDoesNotHaveIsRefusedWithItsPairs) {
+  try {
+    ClassroomHands hands(mystery_options("spring_pull", "rubber/ice", 1));
+    ADD_FAILURE() << "rubber/ice was taken";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("--mystery rubber/ice: "), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("its pairs: aluminium/wood"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// A value that rebuilds the lesson keeps the mystery's values; one that would take its pair away
+// (the block's material in spring_pull) is refused while the mystery lasts, and says why.
+TEST(MysteryWindow, ARebuildKeepsTheValuesAndThePairCannotBeChangedAway) {
+  ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
+  ClassroomHands hands(options);
+  const MysteryValues truth = mystery_values(window_seed);
+  hands.texts();
+  hands.click("block slider");
+  hands.frame();
+  hands.click("block choice plastic");
+  hands.frame();
+  EXPECT_EQ(hands.lesson().parameter("block").shown(), "aluminium") << "the pair stays aluminium on wood";
+  EXPECT_NE(hands.classroom().control_error("block").find("The mystery is aluminium/wood"), std::string::npos)
+      << hands.classroom().control_error("block");
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_s, truth.mu_s);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_k, truth.mu_k);
+  // A value that rebuilds the scene (the mass, read while it is built) keeps the drawn values.
+  hands.classroom().playback().run_to(1.0);
+  const ImRect mass = hands.control("mass slider");
+  ImGui::GetIO().MousePos = ImVec2(mass.Min.x + 0.7f * mass.GetWidth(), mass.GetCenter().y);
+  hands.frame();
+  ImGui::GetIO().MouseDown[0] = true;
+  hands.frame();
+  ImGui::GetIO().MouseDown[0] = false;
+  hands.frame();
+  EXPECT_NE(hands.lesson().parameter("mass").value, 1.0) << "the click set the mass";
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
+  EXPECT_EQ(hands.lesson().parameter("mu_k").value, truth.mu_k);
+  EXPECT_EQ(hands.lesson().scene().pairs().pair("aluminium", "wood").mu_s, truth.mu_s);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// In projector mode the column shows only the first lines of a tab before it scrolls: both
+// answers and the reveal are there, where a hand clicks them.
+TEST(MysteryWindow, TheAnswersAndTheRevealAreInSightInProjectorMode) {
+  ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
+  options.window.projector = true;
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.classroom().playback().run_to(3.0);
+  hands.texts();
+  hands.click("mystery answer mu_s");
+  hands.type("0.55");
+  hands.press_enter();
+  hands.click("mystery answer mu_k");
+  hands.type("0.5");
+  hands.press_enter();
+  EXPECT_EQ(hands.classroom().mystery()->answer_mu_s, 0.55);
+  EXPECT_EQ(hands.classroom().mystery()->answer_mu_k, 0.5);
+  hands.click("mystery reveal");
+  EXPECT_TRUE(hands.classroom().mystery()->revealed()) << "the click found the button";
+  EXPECT_NEAR(hands.lesson().scene().time(), 3.0, 1e-9) << "and nothing under it (the time bar) instead";
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

@@ -1,0 +1,229 @@
+// Prepared setups: saved from the window and opened again (by the Lesson menu, by the API the
+// --setup option uses) with the lesson, values, lock, mystery and step settings as they were;
+// a broken file says file:line: and leaves the running lesson alone; saving never writes over a
+// script or anything but a setup file FrictionLab wrote, and leaves no temporary file behind.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "classroom_hands.h"
+#include "ui/setup_file.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const std::string& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The message parse_setup gives `text`, "" when it reads it.
+std::string parse_error(const std::string& text) {
+  try {
+    parse_setup(text, "class.setup");
+    return "";
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+// A teacher's preparation: values, a lock, a mystery and step settings of their own.
+ClassroomOptions prepared() {
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  options.overrides = {{"mass", "1.5"}, {"k", "80"}, {"block", "plastic"}};
+  options.lock = {"mass", "k", "friction"};
+  options.mystery = MysteryChoice{"plastic/wood", 42};
+  options.settings.hz = 480.0;
+  options.settings.substeps = 2;
+  options.settings.treatment = FrictionTreatment::threshold;
+  return options;
+}
+
+// Everything a setup holds, as the window has it now.
+void expect_prepared(Classroom& window, const std::string& where) {
+  const lessons::Lesson& lesson = window.playback().lesson();
+  EXPECT_EQ(fs::path(lesson.path()).filename(), "spring_pull.lua") << where;
+  EXPECT_EQ(lesson.parameter("mass").value, 1.5) << where;
+  EXPECT_EQ(lesson.parameter("k").value, 80.0) << where;
+  EXPECT_EQ(lesson.parameter("block").shown(), "plastic") << where;
+  EXPECT_EQ(lesson.parameter("pull_speed").value, 0.1) << where << ": a value the teacher left is the script's";
+  EXPECT_TRUE(window.shown("mass") && window.shown("k") && window.shown("friction")) << where;
+  EXPECT_FALSE(window.shown("mu_s") || window.shown("pull_speed") || window.shown("hz")) << where << ": the lock";
+  ASSERT_TRUE(window.mystery().has_value()) << where;
+  EXPECT_EQ(window.mystery()->choice(), (MysteryChoice{"plastic/wood", 42})) << where;
+  EXPECT_FALSE(window.mystery()->revealed()) << where;
+  EXPECT_EQ(lesson.parameter("mu_s").value, mystery_values(42).mu_s) << where << ": drawn again from the seed";
+  EXPECT_EQ(lesson.parameter("mu_k").value, mystery_values(42).mu_k) << where;
+  EXPECT_EQ(lesson.settings().hz, 480.0) << where;
+  EXPECT_EQ(lesson.settings().substeps, 2) << where;
+  EXPECT_EQ(lesson.settings().treatment, FrictionTreatment::threshold) << where;
+  EXPECT_EQ(lesson.scene().frame(), 0) << where << ": it opens at t = 0";
+  EXPECT_FALSE(window.playback().playing()) << where;
+}
+
+TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasByTheMenuAndByTheCommandLinesPath) {
+  ClassroomHands teacher(prepared());
+  teacher.classroom().playback().run_to(1.0);
+  teacher.classroom().reveal_mystery();  // revealed at home: the class still gets it hidden
+  const std::string path = teacher.folder() + "/class.setup";
+  ASSERT_EQ(teacher.classroom().save_setup(path), "");
+  const std::string text = read_file(path);
+  EXPECT_EQ(text.rfind("# FrictionLab setup\n", 0), 0u) << text;
+  EXPECT_NE(text.find("\nlesson spring_pull\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nset mass = 1.5\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nlock friction, k, mass\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nmystery plastic/wood seed 42\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nfriction threshold\n"), std::string::npos) << text;
+  // The pair and seed, never the values.
+  EXPECT_EQ(text.find("mu_s ="), std::string::npos) << text;
+  EXPECT_EQ(text.find("mu_k ="), std::string::npos) << text;
+
+  // In class: another lesson running, the setup opened from the Lesson menu.
+  ClassroomOptions plain;
+  plain.lesson = "incline";
+  ClassroomHands hands(plain);
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Open a setup");
+  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+  hands.click("setup path");
+  hands.type(path);
+  hands.click("setup go");
+  expect_prepared(hands.classroom(), "opened from the menu");
+
+  // The --setup option's way: the options read and checked before the window is made.
+  Classroom from_options(setup_options(path, ClassroomOptions{}));
+  expect_prepared(from_options, "opened by setup_options");
+}
+
+TEST(SetupFile, SavedByTheMenuBesideTheScreenshotsUnderTheLessonsName) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  options.overrides = {{"angle", "31"}};
+  ClassroomHands hands(options);
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Save as a setup");
+  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+  hands.click("setup go");
+  const std::string path = hands.folder() + "/incline.setup";
+  ASSERT_TRUE(fs::is_regular_file(path));
+  const PreparedSetup setup = read_setup(path);
+  EXPECT_EQ(setup.lesson, "incline");
+  const auto angle = std::find_if(setup.values.begin(), setup.values.end(), [](const PreparedSetup::Value& v) { return v.name == "angle"; });
+  ASSERT_NE(angle, setup.values.end());
+  EXPECT_EQ(angle->text, "31");
+  EXPECT_FALSE(setup.mystery.has_value());
+  EXPECT_TRUE(setup.lock.empty());
+}
+
+TEST(SetupFile, AStudentsScriptIsNamedFromTheSetupsFolderAndFoundFromAnywhere) {
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  ClassroomHands scratch(options);
+  const std::string folder = scratch.folder() + "/class";
+  fs::create_directories(folder);
+  fs::copy_file(lessons::resolve_lesson("spring_pull"), folder + "/my_pull.lua");
+  ClassroomOptions own;
+  own.lesson = folder + "/my_pull.lua";
+  own.overrides = {{"k", "120"}};
+  ClassroomHands hands(own);
+  ASSERT_EQ(hands.classroom().save_setup(folder + "/my.setup"), "");
+  EXPECT_EQ(read_setup(folder + "/my.setup").lesson, "my_pull.lua");
+  ClassroomHands other(options);
+  ASSERT_EQ(other.classroom().open_setup(folder + "/my.setup"), "");
+  EXPECT_EQ(fs::path(other.lesson().path()).filename(), "my_pull.lua");
+  EXPECT_EQ(other.lesson().parameter("k").value, 120.0);
+}
+
+TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
+  EXPECT_EQ(parse_error("lesson incline\nsett angle = 3\n"),
+            "class.setup:2: 'sett' is not a line a setup has; its lines: lesson, set, lock, mystery, hz, substeps, friction");
+  EXPECT_EQ(parse_error("# only a comment\n"), "class.setup: no lesson line; a setup names the lesson it opens, as in: lesson spring_pull");
+  EXPECT_EQ(parse_error("lesson incline\nlesson push\n"), "class.setup:2: lesson given twice (lines 1 and 2); a setup opens one lesson");
+  EXPECT_EQ(parse_error("lesson incline\nset angle 30\n"), "class.setup:2: set angle 30: write it as set NAME = VALUE, as in set mass = 1.5");
+  EXPECT_EQ(parse_error("lesson incline\nset angle = 30\nset angle = 20\n"),
+            "class.setup:3: set angle given twice (lines 2 and 3); give each parameter once");
+  EXPECT_EQ(parse_error("lesson incline\nlock mu_s,,mu_k\n"), "class.setup:2: lock mu_s,,mu_k: give names separated by commas, as in lock mu_s, mu_k");
+  EXPECT_EQ(parse_error("lesson incline\n\nmystery block/slope 42\n"),
+            "class.setup:3: mystery block/slope 42: write it as mystery MATERIAL/MATERIAL seed N, as in mystery aluminium/wood seed 42");
+  EXPECT_EQ(parse_error("lesson incline\nmystery block/slope seed 1000000\n"),
+            "class.setup:2: seed 1000000: outside the allowed range; give a whole number from 0 to 999999");
+  EXPECT_EQ(parse_error("lesson incline\nhz fast\n"), "class.setup:2: hz fast: not a number");
+  EXPECT_EQ(parse_error("lesson incline\nsubsteps 2.5\n"), "class.setup:2: substeps 2.5: a whole number from 1 to 1000");
+  EXPECT_NE(parse_error("lesson incline\nfriction dry\n").find("class.setup:2: friction dry: unknown friction treatment 'dry'"), std::string::npos);
+  EXPECT_EQ(parse_error("lesson\n"), "class.setup:1: lesson needs what it sets, as in: lesson spring_pull");
+  // Comments, blank lines, a byte-order mark and Windows line ends are all fine.
+  EXPECT_EQ(parse_error("\xEF\xBB\xBF# a class\r\n\r\n  lesson incline  \r\n# more\r\nset angle = 30\r\n"), "");
+  // Found by the fuzzer: a line ending in two carriage returns reads, and writes back, as the same lesson.
+  const PreparedSetup twice = parse_setup("lesson my.lua\r\r\nlock x,y\r\n", "class.setup");
+  EXPECT_EQ(twice.lesson, "my.lua");
+  EXPECT_EQ(parse_setup(setup_text(twice), "again.setup").lesson, "my.lua");
+  EXPECT_EQ(twice.lock, (std::vector<std::string>{"x", "y"}));
+
+  // Against the lesson: the value, the lock's name and the pair are checked where the file gives them.
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  ClassroomHands hands(options);
+  hands.classroom().playback().run_to(0.5);
+  const auto opened = [&](const std::string& text) {
+    write_file(hands.folder() + "/broken.setup", text);
+    return hands.classroom().open_setup(hands.folder() + "/broken.setup");
+  };
+  const std::string at = hands.folder() + "/broken.setup:";
+  EXPECT_EQ(opened("lesson incline\nset angle = 95\n"), at + "2: angle = 95 \u00b0 is outside the allowed range [2, 60]");
+  EXPECT_NE(opened("lesson incline\nset angel = 30\n").find(at + "2: no parameter 'angel' in "), std::string::npos);
+  EXPECT_NE(opened("lesson incline\n# the lock\nlock mu_s, tilt\n").find(at + "3: lock tilt: "), std::string::npos);
+  EXPECT_NE(opened("lesson incline\nmystery block/ice seed 4\n").find(at + "2: mystery block/ice: "), std::string::npos);
+  EXPECT_EQ(opened("lesson incline\nmystery block/slope seed 4\nset mu_k = 0.1\n"),
+            at + "3: set mu_k: mu_k is the mystery's (line 2); leave it out");
+  EXPECT_NE(opened("lesson ramp\n").find(at + "1: unknown lesson 'ramp'"), std::string::npos);
+  EXPECT_EQ(hands.classroom().open_setup(hands.folder() + "/absent.setup"), "setup " + hands.folder() + "/absent.setup: no such file");
+  EXPECT_EQ(hands.classroom().open_setup(hands.folder()), "setup " + hands.folder() + ": that is a folder, not a setup file");
+  // None of them stopped the lesson that was running.
+  EXPECT_EQ(fs::path(hands.lesson().path()).filename(), "spring_pull.lua");
+  EXPECT_NEAR(hands.lesson().scene().time(), 0.5, 1e-9);
+}
+
+TEST(SetupFile, SavingNeverWritesOverAScriptOrAnythingButASetupItWrote) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  ClassroomHands hands(options);
+  Classroom& window = hands.classroom();
+  const std::string folder = hands.folder();
+  write_file(folder + "/lesson.lua", "-- a student's lesson\n");
+  EXPECT_NE(window.save_setup(folder + "/lesson.lua").find("that looks like a lesson script"), std::string::npos);
+  EXPECT_EQ(read_file(folder + "/lesson.lua"), "-- a student's lesson\n");
+  write_file(folder + "/notes.setup", "my notes\n");
+  EXPECT_NE(window.save_setup(folder + "/notes.setup").find("a file FrictionLab did not write is there"), std::string::npos);
+  EXPECT_EQ(read_file(folder + "/notes.setup"), "my notes\n");
+  ASSERT_EQ(::mkfifo((folder + "/pipe.setup").c_str(), 0600), 0);
+  EXPECT_NE(window.save_setup(folder + "/pipe.setup").find("a FIFO (named pipe) is there"), std::string::npos);
+  fs::create_directory(folder + "/folder.setup");
+  EXPECT_NE(window.save_setup(folder + "/folder.setup").find("a folder is there"), std::string::npos);
+  fs::create_symlink(folder + "/notes.setup", folder + "/link.setup");
+  EXPECT_NE(window.save_setup(folder + "/link.setup").find("a symbolic link is there"), std::string::npos);
+  EXPECT_EQ(read_file(folder + "/notes.setup"), "my notes\n");
+  // A setup it wrote is replaced, whole.
+  ASSERT_EQ(window.save_setup(folder + "/class.setup"), "");
+  window.playback().set_parameter("angle", "33");
+  ASSERT_EQ(window.save_setup(folder + "/class.setup"), "");
+  EXPECT_NE(read_file(folder + "/class.setup").find("\nset angle = 33\n"), std::string::npos);
+  // No temporary file is left beside them.
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

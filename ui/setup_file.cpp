@@ -1,0 +1,292 @@
+#include "ui/setup_file.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lessons/runtime/catalog.h"
+#include "physics/validation.h"
+#include "ui/classroom.h"
+#include "ui/output_file.h"
+#include "ui/playback.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A setup is a few dozen lines: anything much larger is not one.
+constexpr std::size_t largest_setup = 64 * 1024;
+
+// Spaces, tabs and carriage returns at either end are not part of what a line says (a file
+// saved on Windows, then edited elsewhere, can end a line in two of them).
+std::string trimmed(const std::string& text) {
+  const char* const blank = " \t\r";
+  const std::size_t first = text.find_first_not_of(blank);
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(blank) - first + 1);
+}
+
+// Where a line of the file is, for messages: "class.setup:4: ".
+struct At {
+  const std::string& path;
+  int line;
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InvalidInput(path + ":" + std::to_string(line) + ": " + what);
+  }
+};
+
+// A line kind that may come once: refused the second time, with where the first was.
+void once(int& seen_at, const At& at, const std::string& word, const std::string& why) {
+  if (seen_at != 0) at.fail(word + " given twice (lines " + std::to_string(seen_at) + " and " + std::to_string(at.line) + "); " + why);
+  seen_at = at.line;
+}
+
+double number(const At& at, const std::string& word, const std::string& text, double low, double high, const char* unit) {
+  std::string why;
+  const std::optional<double> value = validation::parse_decimal(text, why);
+  if (!value) at.fail(word + " " + text + ": " + (why.empty() ? "not a number" : why));
+  try {
+    validation::require_in_range(word, *value, low, high, false, unit);
+  } catch (const InvalidInput& error) {
+    at.fail(error.what());
+  }
+  return *value;
+}
+
+// Each line's form, for the message when a line has only its word.
+std::string example_of(const std::string& word) {
+  if (word == "lesson") return "lesson spring_pull";
+  if (word == "set") return "set mass = 1.5";
+  if (word == "lock") return "lock mu_s, mu_k";
+  if (word == "mystery") return "mystery aluminium/wood seed 42";
+  if (word == "hz") return "hz 240";
+  if (word == "substeps") return "substeps 1";
+  return "friction stick-slip";
+}
+
+bool is_setup_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::string line;
+  return std::getline(file, line) && line.rfind(setup_first_line, 0) == 0;
+}
+
+}  // namespace
+
+PreparedSetup parse_setup(const std::string& text, const std::string& path) {
+  PreparedSetup setup;
+  int hz_line = 0, substeps_line = 0, friction_line = 0;
+  std::istringstream lines(text);
+  std::string raw;
+  for (int number_of_line = 1; std::getline(lines, raw); ++number_of_line) {
+    if (number_of_line == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);
+    const std::string line = trimmed(raw);
+    if (line.empty() || line[0] == '#') continue;
+    const At at{path, number_of_line};
+    const std::size_t space = line.find_first_of(" \t\r");
+    const std::string word = line.substr(0, space);
+    const std::string rest = space == std::string::npos ? "" : trimmed(line.substr(space));
+    if (word != "lesson" && word != "set" && word != "lock" && word != "mystery" && word != "hz" && word != "substeps" &&
+        word != "friction") {
+      at.fail("'" + word + "' is not a line a setup has; its lines: lesson, set, lock, mystery, hz, substeps, friction");
+    }
+    if (rest.empty()) at.fail(word + " needs what it sets, as in: " + example_of(word));
+    if (word == "lesson") {
+      once(setup.lesson_line, at, "lesson", "a setup opens one lesson");
+      setup.lesson = rest;
+    } else if (word == "set") {
+      const std::size_t equals = rest.find('=');
+      const std::string name = trimmed(rest.substr(0, equals));
+      const std::string value = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
+      if (equals == std::string::npos || name.empty() || value.empty()) at.fail("set " + rest + ": write it as set NAME = VALUE, as in set mass = 1.5");
+      for (const PreparedSetup::Value& given : setup.values) {
+        if (given.name == name) {
+          at.fail("set " + name + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
+                  "); give each parameter once");
+        }
+      }
+      setup.values.push_back({name, value, at.line});
+    } else if (word == "lock") {
+      once(setup.lock_line, at, "lock", "list every control on one lock line");
+      std::stringstream names(rest);
+      std::string name;
+      while (std::getline(names, name, ',')) {
+        name = trimmed(name);
+        if (name.empty()) at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
+        setup.lock.push_back(name);
+      }
+      if (rest.back() == ',') at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
+    } else if (word == "mystery") {
+      once(setup.mystery_line, at, "mystery", "a setup has one mystery pair");
+      std::istringstream parts(rest);
+      std::string pair, seed_word, seed, more;
+      parts >> pair >> seed_word >> seed;
+      if (pair.find('/') == std::string::npos || seed_word != "seed" || seed.empty() || (parts >> more)) {
+        at.fail("mystery " + rest + ": write it as mystery MATERIAL/MATERIAL seed N, as in mystery aluminium/wood seed 42");
+      }
+      try {
+        setup.mystery = MysteryChoice{pair, parse_mystery_seed("seed", seed)};
+      } catch (const InvalidInput& error) {
+        at.fail(error.what());
+      }
+    } else if (word == "hz") {
+      once(hz_line, at, "hz", "give the step rate once");
+      setup.settings.hz = number(at, "hz", rest, 1.0, 100000.0, " steps per second");
+    } else if (word == "substeps") {
+      once(substeps_line, at, "substeps", "give the sub-steps once");
+      const double substeps = number(at, "substeps", rest, 1.0, 1000.0, "");
+      if (substeps != static_cast<int>(substeps)) at.fail("substeps " + rest + ": a whole number from 1 to 1000");
+      setup.settings.substeps = static_cast<int>(substeps);
+    } else {
+      once(friction_line, at, "friction", "give the treatment once");
+      try {
+        setup.settings.treatment = parse_treatment(rest);
+      } catch (const InvalidInput& error) {
+        at.fail("friction " + rest + ": " + error.what());
+      }
+    }
+  }
+  if (setup.lesson.empty()) throw InvalidInput(path + ": no lesson line; a setup names the lesson it opens, as in: lesson spring_pull");
+  return setup;
+}
+
+PreparedSetup read_setup(const std::string& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
+  if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");
+  // A FIFO or a device would be waited on, or read for ever.
+  if (!S_ISREG(status.st_mode)) throw InvalidInput("setup " + path + ": that is not a regular file");
+  if (static_cast<std::size_t>(status.st_size) > largest_setup) {
+    throw InvalidInput("setup " + path + ": " + std::to_string(status.st_size) + " bytes is too large for a setup file (at most 64 KB)");
+  }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InvalidInput("setup " + path + ": cannot be read");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parse_setup(text.str(), path);
+}
+
+std::string setup_text(const PreparedSetup& setup) {
+  std::ostringstream text;
+  text << setup_first_line << "\n# Open it with: frictionlab --setup FILE, or the window's Lesson menu (Open a setup).\n";
+  text << "lesson " << setup.lesson << '\n';
+  for (const PreparedSetup::Value& value : setup.values) text << "set " << value.name << " = " << value.text << '\n';
+  if (!setup.lock.empty()) {
+    text << "lock ";
+    for (std::size_t i = 0; i < setup.lock.size(); ++i) text << (i > 0 ? ", " : "") << setup.lock[i];
+    text << '\n';
+  }
+  if (setup.mystery) text << "mystery " << setup.mystery->pair << " seed " << setup.mystery->seed << '\n';
+  text << "hz " << exact_text(setup.settings.hz) << '\n';
+  text << "substeps " << setup.settings.substeps << '\n';
+  text << "friction " << treatment_name(setup.settings.treatment) << '\n';
+  return text.str();
+}
+
+void write_setup(const std::string& path, const PreparedSetup& setup) {
+  if (path.empty()) throw InvalidInput("give the setup a file name, such as class.setup");
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".lua") throw InvalidInput(path + ": that looks like a lesson script; give the setup a name of its own, such as class.setup");
+  const std::string text = setup_text(setup);
+  try {
+    OutputFile file(path, is_setup_file);
+    file.write(text);
+    file.commit();
+  } catch (const std::runtime_error& error) {
+    throw InvalidInput(error.what());
+  }
+}
+
+std::string setup_lesson_path(const PreparedSetup& setup, const std::string& setup_path) {
+  const bool a_name = setup.lesson.find('/') == std::string::npos && fs::path(setup.lesson).extension() != ".lua";
+  const fs::path script(setup.lesson);
+  try {
+    if (a_name) return lessons::resolve_lesson(setup.lesson);
+    return lessons::resolve_lesson(script.is_absolute() ? script.string() : (fs::path(setup_path).parent_path() / script).string());
+  } catch (const InvalidInput& error) {
+    At{setup_path, setup.lesson_line}.fail(error.what());
+  }
+}
+
+std::string setup_lesson_name(const std::string& script_path, const std::string& setup_path) {
+  std::error_code error;
+  const fs::path script = fs::weakly_canonical(script_path, error);
+  const fs::path builtins = fs::weakly_canonical(lessons::lessons_directory(), error);
+  const std::string name = script.stem().string();
+  if (script.parent_path() == builtins && lessons::is_builtin_lesson(name)) return name;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(setup_path).parent_path(), error);
+  const fs::path relative = script.lexically_relative(folder);
+  return relative.empty() ? script.string() : relative.string();
+}
+
+void check_setup(const PreparedSetup& setup, const std::string& setup_path, lessons::Lesson& lesson) {
+  std::pair<std::string, std::string> mystery_names;
+  if (setup.mystery) {
+    // Found in the lesson at its script's values: a value set below may not be one of them.
+    try {
+      mystery_names = mystery_parameters(lesson, setup.mystery->pair, "mystery");
+    } catch (const InvalidInput&) {
+      // Said below, once the values (which may change the materials) are set.
+    }
+  }
+  for (const PreparedSetup::Value& value : setup.values) {
+    const At at{setup_path, value.line};
+    if (value.name == mystery_names.first || value.name == mystery_names.second) {
+      at.fail("set " + value.name + ": " + value.name + " is the mystery's (line " + std::to_string(setup.mystery_line) +
+              "); leave it out");
+    }
+    try {
+      lesson.set(value.name, value.text);
+    } catch (const InvalidInput& error) {
+      at.fail(error.what());
+    }
+  }
+  for (const std::string& name : setup.lock) {
+    bool known = std::find(std::begin(lockable_settings), std::end(lockable_settings), name) != std::end(lockable_settings);
+    std::string controls;
+    for (const lessons::Parameter& parameter : lesson.parameters()) {
+      known = known || parameter.name == name;
+      controls += parameter.name + ", ";
+    }
+    if (!known) {
+      At{setup_path, setup.lock_line}.fail("lock " + name + ": " + lesson.path() + " has no control of that name; its controls: " +
+                                           controls + "hz, substeps, friction");
+    }
+  }
+  if (setup.mystery) {
+    try {
+      mystery_parameters(lesson, setup.mystery->pair, "mystery");
+    } catch (const InvalidInput& error) {
+      At{setup_path, setup.mystery_line}.fail(error.what());
+    }
+  }
+}
+
+}  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+
+ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base) {
+  const PreparedSetup setup = read_setup(setup_path);
+  const std::string lesson_path = setup_lesson_path(setup, setup_path);
+  try {
+    lessons::Lesson lesson(lesson_path, {}, setup.settings);
+    check_setup(setup, setup_path, lesson);
+  } catch (const lessons::ScriptError& error) {
+    // The lesson line names a script that does not build: the script's own place, after the setup's.
+    throw InvalidInput(setup_path + ":" + std::to_string(setup.lesson_line) + ": " + error.what());
+  }
+  base.lesson = lesson_path;
+  base.overrides.clear();
+  for (const PreparedSetup::Value& value : setup.values) base.overrides[value.name] = value.text;
+  base.lock = setup.lock;
+  base.mystery = setup.mystery;
+  base.settings = setup.settings;
+  return base;
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,72 @@
+// A prepared setup: what a teacher sets up before class (the lesson, its values, the lock of
+// controls, a mystery pair and its seed, the step settings), as a small text file to open in
+// class with `frictionlab --setup FILE` or the Lesson menu. A mystery is saved as its pair and
+// seed, never its values.
+//
+// The file, one instruction a line (a word, then what it takes); `#` starts a comment:
+//
+//   # FrictionLab setup
+//   lesson spring_pull
+//   set mass = 1.5
+//   lock mu_s, mu_k
+//   mystery aluminium/wood seed 42
+//   hz 240
+//   substeps 1
+//   friction stick-slip
+//
+// `lesson` is a built-in lesson's name or a script's path (from the setup file's folder, or
+// from /); every other line may be left out. Each line's first word says what it is, so a
+// later kind of line (the class's predictions) is a new word, and a file without it still reads.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lessons/runtime/lesson.h"
+#include "ui/mystery.h"
+
+namespace frictionlab::ui {
+
+// The first line a setup file begins with: only a file that does is ever replaced by a save.
+inline constexpr const char* setup_first_line = "# FrictionLab setup";
+
+struct PreparedSetup {
+  std::string lesson;  // a built-in name or a script's path, as written
+  struct Value {
+    std::string name, text;
+    int line = 0;  // where the file gave it (0: not read from a file)
+  };
+  std::vector<Value> values;
+  std::vector<std::string> lock;
+  std::optional<MysteryChoice> mystery;
+  StepSettings settings;
+  // Where the file gave each line, for messages that point at it: lesson, lock, mystery, hz, substeps, friction.
+  int lesson_line = 0, lock_line = 0, mystery_line = 0;
+};
+
+// Reads a setup from its text; `path` names it in messages. Throws InvalidInput as
+// "path:line: what is wrong" for a line it cannot read, and "path: ..." when it has no lesson.
+PreparedSetup parse_setup(const std::string& text, const std::string& path);
+// The same from the file at `path`; refuses what is not a readable regular file of a setup's size.
+PreparedSetup read_setup(const std::string& path);
+
+// The setup as the file holds it (setup_text then parse_setup gives it back).
+std::string setup_text(const PreparedSetup& setup);
+// Writes it whole (a temporary file beside it, renamed over it) to `path`. Refuses a .lua path
+// and anything there but a setup file FrictionLab wrote. Throws InvalidInput naming the path.
+void write_setup(const std::string& path, const PreparedSetup& setup);
+
+// The script a setup's lesson names: a built-in name, or a path from the setup's own folder.
+std::string setup_lesson_path(const PreparedSetup& setup, const std::string& setup_path);
+// The setup's lesson name as a setup file writes it: a built-in lesson's name, else the
+// script's path from the folder the setup is saved in.
+std::string setup_lesson_name(const std::string& script_path, const std::string& setup_path);
+
+// Checks the setup against its lesson built at the script's values: every value set (in order),
+// then the lock's names and the mystery's pair. Throws InvalidInput "path:line: ..." at the line
+// that is wrong.
+void check_setup(const PreparedSetup& setup, const std::string& setup_path, lessons::Lesson& lesson);
+
+}  // namespace frictionlab::ui
