@@ -26,7 +26,8 @@ local duration = 5  -- s: the worked example's "after 5 s"
 
 lesson {
   title = "Checking the article's worked examples",
-  question = "The article gives numbers for a block on a swinging, accelerating wedge: which of them hold?",
+  question = "Which of the article's numbers for its swinging, accelerating wedge hold? Each row gives a claim and "
+    .. "whether it holds; ✓ says the block, on the slope laid flat, agrees with the exact solution of the article's equations.",
   duration = duration,
   order = 39,
   moments = {
@@ -90,9 +91,11 @@ probe { "slipping", read = { touch, "slipping" } }
 local function at(list) return function(t) return list[sample(t)] end end
 plot { "Slide down the slope", kind = "time", y = { "slide" },
   theory = { { "Coulomb's law (exact)", at(right.slide) }, { "the article's equation as written", at(as_written.slide) } } }
-plot { "Friction along the slope", kind = "time", y = { "friction_force" },
-  theory = { { "exact", at(right.friction) },
-             { "the article: peak ≈ 0.55 N", function() return param.example == "advanced" and -0.55 or nil end } } }
+local friction_curves = { { "exact", at(right.friction) } }
+if param.example == "advanced" then
+  friction_curves[2] = { "the article: peak ≈ 0.55 N", function() return -0.55 end }
+end
+plot { "Friction along the slope", kind = "time", y = { "friction_force" }, theory = friction_curves }
 
 -- Reading the record ----------------------------------------------------------------------
 local function recorded(name, t) return time() >= t - 0.5 * h and value_at(name, t) or nil end
@@ -175,36 +178,60 @@ else
   -- Two swings of the surface, 2·2π/ω: the article's "first two periods of θ(t)".
   local two_swings = 4 * math.pi / omega
   local k_two = sample(two_swings)
-  local least_speed, peak_friction = math.huge, 0
-  -- From the end of the first step, where the record starts.
-  for k = 2, k_two do
-    least_speed = math.min(least_speed, right.speed[k])
-    if right.contact[k] == "slipping" then peak_friction = math.max(peak_friction, math.abs(right.friction[k])) end
+  -- The exact solution's least and greatest of a field over the two swings, from the end of the
+  -- first step, where the record starts; `counts` picks the samples (all, by default).
+  local function exact_over_swings(field, counts)
+    local least, most = math.huge, -math.huge
+    for k = 2, k_two do
+      if not counts or counts(k) then
+        least, most = math.min(least, right[field][k]), math.max(most, right[field][k])
+      end
+    end
+    return least, most
   end
+  -- The same of a probe's record, once the two swings are over.
+  local function recorded_over_swings(name, counts)
+    if time() < two_swings then return nil end
+    local least, most = math.huge, -math.huge
+    local times, values = history("time"), history(name)
+    for i = 1, #times do
+      if times[i] <= two_swings and (not counts or counts(i)) then
+        least, most = math.min(least, values[i]), math.max(most, values[i])
+      end
+    end
+    return least, most
+  end
+  -- Its acceleration: the change of the slide's rate over a step, from the record and from the
+  -- exact solution alike.
+  probe { "acceleration", unit = "m/s²", read = { block, "acceleration", along = { 1, 0 } } }
+  local least_acceleration = math.huge
+  for k = 3, k_two do
+    least_acceleration = math.min(least_acceleration, (right.speed[k] - right.speed[k - 1]) / h)
+  end
+  -- "The computed acceleration alternates between positive and negative values as the wedge
+  -- steepens and flattens": it starts positive (3 m/s² of pseudo-force against 2.45 of friction)
+  -- and the flattening swings it negative. The one claim of the example that holds.
+  expect { "least acceleration down the slope (article: alternates in sign) · "
+           .. (least_acceleration < 0 and "holds" or "does not hold"), unit = "m/s²",
+    predicted = least_acceleration,
+    measured = function() return (recorded_over_swings("acceleration")) end,
+    -- The probe reads a step's change of velocity: how much the acceleration changes in a step.
+    tolerance = 0.01 + g * theta0 * omega * h }
   -- "During the steepening phase the block slides upward": it would need a negative speed.
+  local least_speed = exact_over_swings("speed")
   expect { "least speed down the slope (article: slides up while steepening) · "
            .. (least_speed < 0 and "holds" or "does not hold"), unit = "m/s",
     predicted = least_speed,
-    measured = function()
-      if time() < two_swings then return nil end
-      local least = math.huge
-      local times, speeds = history("time"), history("speed")
-      for i = 1, #times do
-        if times[i] <= two_swings then least = math.min(least, speeds[i]) end
-      end
-      return least
-    end,
+    measured = function() return (recorded_over_swings("speed")) end,
     -- 1 mm/s: the reading is the step's mean velocity.
     tolerance = 1e-3 }
+  local least_friction = exact_over_swings("friction", function(k) return right.contact[k] == "slipping" end)
+  local peak_friction = -least_friction  -- friction points up the slope: the peak is the most negative
+  local slipping = history("slipping")
   local peak_row = claim("peak kinetic friction, two swings (article: ≈ 0.55 N)", 0.55, function() return peak_friction end,
     function()
-      if time() < two_swings then return nil end
-      local peak = 0
-      local times, frictions, slipping = history("time"), history("friction_force"), history("slipping")
-      for i = 1, #times do
-        if times[i] <= two_swings and slipping[i] == 1 then peak = math.max(peak, math.abs(frictions[i])) end
-      end
-      return peak
+      local least = recorded_over_swings("friction_force", function(i) return slipping[i] == 1 end)
+      return least and -least
     end,
     -- A step's mean against the peak instant: μk times how much N changes in a step.
     0.01 * peak_friction + chosen.mu_k * mass * g * theta0 * omega * h, "N")
@@ -212,20 +239,12 @@ else
     question = "The article says the kinetic friction peaks at about 0.55 N on this 2 kg block. What is its peak?" }
   -- "If aₓ exceeds g tan θ₀ ... the block would lose contact": 3 m/s² exceeds g·tan 15° = 2.63,
   -- yet N = m(g cos θ − a sin θ) stays positive; it reaches 0 only past a = g·cot θ0 = 36.6.
-  local least_normal = math.huge  -- over the two swings, as N repeats with the swing here
-  for k = 1, k_two do least_normal = math.min(least_normal, right.normal[k]) end
+  -- Over the two swings, as N repeats with the swing here.
+  local least_normal = exact_over_swings("normal")
   local article_loses = chosen.a_x > g * math.tan(theta0)
   expect { string.format("least normal force (article: lost, as a_x > g·tan θ0 = %.2f m/s²) · %s", g * math.tan(theta0),
                          (article_loses == (least_normal <= 0)) and "holds" or "does not hold"), unit = "N",
     predicted = least_normal,
-    measured = function()
-      if time() < two_swings then return nil end
-      local least = math.huge
-      local times, normals = history("time"), history("normal_force")
-      for i = 1, #times do
-        if times[i] <= two_swings then least = math.min(least, normals[i]) end
-      end
-      return least
-    end,
+    measured = function() return (recorded_over_swings("normal_force")) end,
     tolerance = 0.01 * mass * g + mass * g * theta0 * omega * h }
 end

@@ -319,7 +319,7 @@ bool Scene::touching_now(b2Contact* contact) const {
   return now.pointCount > 0;
 }
 
-void Scene::drive(b2Body* body, VectorOfTime position, ScalarOfTime angle) {
+void Scene::drive(b2Body* body, PointOfTime position, ScalarOfTime angle) {
   if (body == nullptr || body->GetType() != b2_kinematicBody) {
     throw InvalidInput("drive: only a kinematic body can be moved by a function of time");
   }
@@ -458,13 +458,16 @@ void Scene::advance(double t, float h, double t_end, bool move) {
 
   for (const Driver& driver : drivers_) {
     const auto named = [&](const char* what) { return "driven body '" + name_of(driver.body) + "': " + what; };
-    const b2Vec2 now = checked(driver.position(t), t, [&] { return named("position"); });
-    const b2Vec2 next = checked(driver.position(t_end), t_end, [&] { return named("position"); });
+    const std::array<double, 2> now = driver.position(t), next = driver.position(t_end);
+    checked(b2Vec2{static_cast<float>(now[0]), static_cast<float>(now[1])}, t, [&] { return named("position"); });
+    checked(b2Vec2{static_cast<float>(next[0]), static_cast<float>(next[1])}, t_end, [&] { return named("position"); });
     const double angle_now = driver.angle ? checked(driver.angle(t), t, [&] { return named("angle"); }) : 0.0;
     const double angle_next = driver.angle ? checked(driver.angle(t_end), t_end, [&] { return named("angle"); }) : 0.0;
-    driver.body->SetTransform(now, static_cast<float>(angle_now));
-    driver.body->SetLinearVelocity((1.0f / h) * (next - now));
-    driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / h));
+    const double span = t_end - t;  // the step, in double as the path is
+    driver.body->SetTransform(b2Vec2{static_cast<float>(now[0]), static_cast<float>(now[1])}, static_cast<float>(angle_now));
+    driver.body->SetLinearVelocity(
+        b2Vec2{static_cast<float>((next[0] - now[0]) / span), static_cast<float>((next[1] - now[1]) / span)});
+    driver.body->SetAngularVelocity(static_cast<float>((angle_next - angle_now) / span));
   }
 
   for (std::size_t i = 0; i < springs_.size(); ++i) {

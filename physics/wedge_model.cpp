@@ -32,6 +32,18 @@ double WedgeDrive::wedge_velocity(double t) const {
   return a_x * std::sin(a_x_omega * t) / a_x_omega;
 }
 
+const char* name_of(WedgeEventKind kind) {
+  switch (kind) {
+    case WedgeEventKind::breakaway: return "breakaway";
+    case WedgeEventKind::stop: return "stop";
+    case WedgeEventKind::reversal: return "reversal";
+    case WedgeEventKind::lift_off: return "lift-off";
+    case WedgeEventKind::landing: return "landing";
+    case WedgeEventKind::sign_change: return "sign change";
+  }
+  return "?";
+}
+
 double kinetic_energy(const WedgeDrive& drive, const WedgeState& state) {
   return 0.5 * drive.mass * (state.speed * state.speed + state.height_rate * state.height_rate);
 }
@@ -144,7 +156,10 @@ class Solver {
         return pressing(t, y) < 0.0 || std::abs(driving(t, y)) > breakaway_limit(t, y);
       case WedgeContact::slip:
         if (pressing(t, y) < 0.0) return true;
-        return law_ == WedgeLaw::coulomb ? phase.sigma * y.v <= 0.0 : phase.sigma * driving(t, y) < 0.0;
+        if (law_ == WedgeLaw::coulomb) return phase.sigma * y.v <= 0.0;
+        // The article's friction, −sgn(F)·μk·N, is none while F = 0 (σ = 0): that phase ends
+        // when F takes a sign, the others when F changes it.
+        return phase.sigma == 0.0 ? driving(t, y) != 0.0 : phase.sigma * driving(t, y) < 0.0;
       case WedgeContact::flight: return y.d < 0.0;
     }
     return false;
@@ -154,8 +169,10 @@ class Solver {
   Phase contact_phase(double t, const Vector& y) const {
     const double force = driving(t, y);
     if (law_ == WedgeLaw::article) {
-      // At F = 0 exactly, the sign F takes next.
-      return {WedgeContact::slip, force != 0.0 ? sign_of(force) : sign_of(driving(t + 1e-9, y))};
+      // At F = 0 exactly, the sign F takes next; none if it stays 0 (a still, level surface).
+      if (force != 0.0) return {WedgeContact::slip, sign_of(force)};
+      const double next = driving(t + 1e-9, y);
+      return {WedgeContact::slip, next == 0.0 ? 0.0 : sign_of(next)};
     }
     if (y.v != 0.0) return {WedgeContact::slip, sign_of(y.v)};
     if (std::abs(force) <= breakaway_limit(t, y)) return {WedgeContact::stick, 1.0};
@@ -205,6 +222,10 @@ class Solver {
     };
     while (next < sample_count) {
       const double sample_t = static_cast<double>(next) * sample_step;
+      if (t == sample_t) {  // an event found on a sample's instant: record it before stepping on
+        result.samples.push_back(state_of(phase, t, y, work_landings)), ++next;
+        continue;
+      }
       const double h = std::min(max_step, sample_t - t);
       Vector after = rk4(phase, t, y, h);
       if (!ended(phase, t + h, after)) {
@@ -225,13 +246,6 @@ class Solver {
       transition(phase, t, y, work_landings, event, enter);
     }
     if (phase.contact == WedgeContact::slip) result.slip_windows.emplace_back(window_start, t);
-    // A slip that ends where the next begins (a reversal) is one window.
-    std::vector<std::pair<double, double>> merged;
-    for (const auto& window : result.slip_windows) {
-      if (!merged.empty() && window.first - merged.back().second <= event_tolerance) merged.back().second = window.second;
-      else merged.push_back(window);
-    }
-    result.slip_windows = merged;
     return result;
   }
 
@@ -254,7 +268,7 @@ class Solver {
       case WedgeContact::slip: {
         if (law_ == WedgeLaw::article) {
           event(WedgeEventKind::sign_change);
-          enter({WedgeContact::slip, -phase.sigma});
+          enter({WedgeContact::slip, sign_of(driving(t, y))});  // F has just taken this sign
           return;
         }
         y.v = 0.0;
@@ -268,7 +282,9 @@ class Solver {
         // impulse, at most μ times that, acts along the surface (Coulomb's law for impacts).
         const double fall = -y.dd, before = 0.5 * m * (y.v * y.v + y.dd * y.dd);
         if (law_ == WedgeLaw::coulomb) {
-          if (std::abs(y.v) <= std::max(drive_.mu_s, drive_.mu_k) * fall) y.v = 0.0;
+          // Sliding through the impact, only kinetic friction acts: it stops the block if its
+          // impulse, μk times the landing's, is enough.
+          if (std::abs(y.v) <= drive_.mu_k * fall) y.v = 0.0;
           else y.v -= sign_of(y.v) * drive_.mu_k * fall;
         } else {
           y.v -= sign_of(driving(t, y)) * drive_.mu_k * fall;

@@ -4,8 +4,9 @@
 // a(t) = a_x·cos(ω_a·t) (ω_a = 0: constant) entering only through
 //   the driving force  F(t) = m·(g·sin θ + a·cos θ)   down the slope, and
 //   the normal force   N(t) = m·(g·cos θ − a·sin θ)   pressing the block on the surface.
-// The reduction leaves out the surface's own rotation (its centripetal and angular-acceleration
-// terms): what a Box2D block on a turning plank feels besides is exactly what it leaves out.
+// The reduction leaves out the surface's own rotation (its centrifugal, angular-acceleration
+// and Coriolis terms): what a Box2D block on a turning plank feels besides is exactly what it
+// leaves out.
 //
 // Solved phase by phase (sticking, slipping one way, in flight) with the phases joined at
 // located events: classical RK4 within a phase on a smooth right-hand side, each event found by
@@ -70,6 +71,8 @@ struct WedgeState {
 };
 
 enum class WedgeEventKind { breakaway, stop, reversal, lift_off, landing, sign_change };
+// In words, as scripts read it: "breakaway", "stop", "reversal", "lift-off", "landing", "sign change".
+const char* name_of(WedgeEventKind kind);
 struct WedgeEvent {
   double t;
   WedgeEventKind kind;
@@ -80,8 +83,8 @@ struct WedgeRun {
   double sample_step = 0;
   std::vector<WedgeState> samples;  // at t = k·sample_step, k = 0 .. t_end / sample_step
   std::vector<WedgeEvent> events;
-  // The stretches in which the block slips along the surface ([start, end] of each slip phase,
-  // flights left out), merged where one slip phase follows another at once.
+  // The stretches in which the block slips along the surface, from a breakaway (or a landing
+  // while sliding) to a stop or a lift-off; a reversal does not end one.
   std::vector<std::pair<double, double>> slip_windows;
 };
 

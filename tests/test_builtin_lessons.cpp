@@ -177,6 +177,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"wedge", {{"theta0", "30"}, {"a_x", "20"}, {"a_x_omega", "3"}, {"omega", "2"}}, ""},
                       Case{"wedge", {{"a_x", "4"}, {"a_x_omega", "0"}}, ""}, Case{"wedge", {{"theta0", "20"}}, ""},
                       Case{"wedge", {{"omega", "0.1"}}, ""}, Case{"wedge", {{"mu_k", "0"}}, ""},
+                      // The driven plank's step velocity from its path in doubles: with float
+                      // positions it was noisy by an ulp over h, and at 2000 Hz the block
+                      // slipped more than it should (the slide ended 2.1 cm off).
+                      Case{"wedge", {}, "", 2000},
                       Case{"check_the_article", {}, ""}, Case{"check_the_article", {{"example", "advanced"}}, ""},
                       Case{"where_methods_fail", {}, "jitters"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.02"}}, "settles"},
@@ -510,7 +514,7 @@ TEST(BuiltinLessons, WedgeFollowsTheArticlesReductionWhenTheSurfaceTurnsSlowly) 
   EXPECT_GT(worst({{"theta0", "20"}}, "slide", "slide_reduced"), 0.5);
 }
 
-// check_the_article: every claim of the article's two worked examples is found not to hold, and
+// check_the_article: every claim of the article's two worked examples but one is found not to hold, and
 // the figures it finds instead are the closed forms where there are some. The advanced example
 // (2 kg, 15°, a constant 3 m/s², μk 0.25) slides the whole time, so its peak kinetic friction is
 // μk·N at the flattest point, μk·m(g·cos 15° + 3·sin 15°) = 5.126 N (the article: 0.55 N), and
@@ -524,10 +528,15 @@ TEST(BuiltinLessons, CheckTheArticleFindsItsClaimsDoNotHold) {
     Lesson lesson(resolve_lesson("check_the_article"), {{"example", example}});
     run_for(lesson, lesson.duration());
     const std::vector<ExpectationResult> rows = lesson.expectations();
-    ASSERT_EQ(rows.size(), std::string(example) == "worked" ? 7u : 3u);
+    ASSERT_EQ(rows.size(), std::string(example) == "worked" ? 7u : 4u);
     for (const ExpectationResult& row : rows) {
       EXPECT_TRUE(row.passes) << row.name;
-      EXPECT_NE(row.name.find(" · does not hold"), std::string::npos) << row.name;
+      // The one claim that holds: the advanced example's acceleration does change sign.
+      const bool holds = row.name.rfind("least acceleration", 0) == 0;
+      EXPECT_NE(row.name.find(holds ? " · holds" : " · does not hold"), std::string::npos) << row.name;
+      if (holds) {
+        EXPECT_LT(row.predicted, 0.0);
+      }
       // It never moves up the slope: its least speed down it is the first step's, a·h at most.
       if (row.name.rfind("least speed", 0) == 0) {
         EXPECT_GT(row.predicted, 0.0);

@@ -119,7 +119,7 @@ TEST(Scene, RejectsBadSpringsForcesAndDrivers) {
   spring.hand = nullptr;
   expect_invalid([&] { scene.add_spring(spring); }, "spring 's'", "far end");
   EXPECT_THROW(scene.add_applied_force({"push", block, {0, 0}, nullptr}), InvalidInput);
-  EXPECT_THROW(scene.drive(block, [](double) { return b2Vec2{0, 0}; }, nullptr), InvalidInput);
+  EXPECT_THROW(scene.drive(block, [](double) { return std::array<double, 2>{0, 0}; }, nullptr), InvalidInput);
   expect_invalid([&] { scene.body("nobody"); }, "unknown body 'nobody'", "block");
   expect_invalid([&] { scene.probe("nothing"); }, "unknown probe", "nothing");
 }
@@ -160,7 +160,7 @@ TEST(Scene, KinematicPlateDragsABlockUpToItsSpeed) {
   Scene scene(block_on_ground(block));
   const double speed = 0.5;
   b2Body* plate = scene.add_box("plate", b2_kinematicBody, "ground", {0, -0.5f}, 20, 1);
-  scene.drive(plate, [speed](double t) { return b2Vec2{static_cast<float>(speed * t), -0.5f}; }, nullptr);
+  scene.drive(plate, [speed](double t) { return std::array<double, 2>{speed * t, -0.5}; }, nullptr);
   b2Body* body = scene.add_box("block", b2_dynamicBody, "block", {0, 0.1f + resting_gap}, 0.4f, 0.2f);
   for (int i = 0; i < 480; ++i) scene.step();
   EXPECT_NEAR(plate->GetPosition().x, 2.0 * speed, 1e-5);

@@ -2,8 +2,8 @@
 // equations: Moreau's time stepping at a fine step, which knows nothing of phases or events.
 // Each step it takes the impulse the surface must give to stop the block falling into it, and
 // friction's impulse bounded by μ times that impulse (held if that is enough, sliding with μk
-// otherwise). It is first order, so at 2·10⁻⁶ s its positions are good to well under a
-// millimetre.
+// otherwise). It is first order: at 2·10⁻⁶ s the two agree to 4 µm over 5 s (63 µm with a
+// flight, whose lift-off and landing the stepping finds only to its step).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,9 +95,10 @@ TEST(WedgeModel, DriveIsTheArticlesForces) {
 }
 
 TEST(WedgeModel, MatchesFineTimeSteppingWithinAMillimetre) {
-  EXPECT_LT(worst_slide_difference(example_two(), WedgeLaw::coulomb, 5.0), 1e-3);
-  EXPECT_LT(worst_slide_difference(example_one(), WedgeLaw::coulomb, 5.0), 1e-3);
-  EXPECT_LT(worst_slide_difference(example_one(), WedgeLaw::article, 5.0), 1e-3);
+  EXPECT_LT(worst_slide_difference(example_two(), WedgeLaw::coulomb, 5.0), 2e-5);
+  EXPECT_LT(worst_slide_difference(example_one(), WedgeLaw::coulomb, 5.0), 2e-5);
+  EXPECT_LT(worst_slide_difference(example_one(), WedgeLaw::article, 5.0), 2e-5);
+  EXPECT_LT(worst_slide_difference(example_two(), WedgeLaw::article, 5.0), 2e-5);
 }
 
 // With a_x large the wedge falls away from the block at the steep end of each swing: N < 0.
@@ -115,7 +116,20 @@ TEST(WedgeModel, LosesContactFliesAndLandsAsFineTimeStepping) {
       EXPECT_NEAR(drive.normal_force(e.t), 0.0, 1e-9);
     }
   }
-  EXPECT_LT(worst_slide_difference(drive, WedgeLaw::coulomb, 5.0), 1e-3);
+  EXPECT_LT(worst_slide_difference(drive, WedgeLaw::coulomb, 5.0), 2e-4);
+  EXPECT_LT(worst_slide_difference(drive, WedgeLaw::article, 5.0), 2e-4);
+}
+
+// Landing while sliding, only kinetic friction's impulse acts: a block with μs 1 and μk 0.3 that
+// lands sliding faster than μk times its fall goes on sliding (the model stopped it with μs, and
+// ended 2.09 m from the fine stepping).
+TEST(WedgeModel, ALandingStopsTheBlockOnlyByKineticFriction) {
+  const WedgeDrive drive{1.0, 40 * degree, 1.0, 30.0, 5.0, 1.0, 0.3};
+  const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 5.0, 1e-3);
+  ASSERT_GE(std::count_if(run.events.begin(), run.events.end(),
+                          [](const WedgeEvent& e) { return e.kind == WedgeEventKind::landing; }),
+            1);
+  EXPECT_LT(worst_slide_difference(drive, WedgeLaw::coulomb, 5.0), 2e-4);
 }
 
 // ΔK = W_gravity + W_pseudo + W_friction (+ what landings take), state by state.
@@ -142,7 +156,7 @@ TEST(WedgeModel, FrictionWorkMatchesFineTimeStepping) {
   const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 5.0, 1e-3);
   double fine = 0.0;
   time_step(drive, WedgeLaw::coulomb, 5.0, 2e-6, [&](double, const Fine& x) { fine = x.work_friction; });
-  EXPECT_NEAR(run.samples.back().work_friction, fine, 1e-3 * std::abs(fine) + 1e-4);
+  EXPECT_NEAR(run.samples.back().work_friction, fine, 1e-5 * std::abs(fine));
 }
 
 // Sticking: the block stays exactly put while |F| <= μs·N, and slips as soon as it is not.
@@ -174,19 +188,10 @@ TEST(WedgeModel, ArticleLawFrictionGivesEnergy) {
   EXPECT_LT(right.samples.back().work_friction, -1.0);
 }
 
-// The turning frame's terms: nothing without a turn; with a turn, the surface's push on a block
-// held at the pivot is the reduced one less m·θ'²·z (the block's centre is z above the pivot),
-// and plus m·θ''·ρ a distance ρ up the slope.
-TEST(WedgeModel, RotationTermsVanishWithoutTurningAndActAsTheyShould) {
-  WedgeDrive still = example_two();
-  still.omega = 0.0, still.theta0 = 20 * degree;  // θ stays 0
-  WedgeDrive turned = still;
-  turned.rotation = true, turned.centre_height = 0.07, turned.start = 0.4;
-  const WedgeRun a = solve_wedge(still, WedgeLaw::coulomb, 3.0, 1e-2), b = solve_wedge(turned, WedgeLaw::coulomb, 3.0, 1e-2);
-  for (std::size_t i = 0; i < a.samples.size(); ++i) {
-    EXPECT_NEAR(a.samples[i].slide, b.samples[i].slide, 1e-12);
-    EXPECT_NEAR(a.samples[i].normal, b.samples[i].normal, 1e-12);
-  }
+// The turning frame's terms on a held block: the surface's push is the reduced one less m·θ'²·z
+// (the block's centre is z above the surface line) and plus m·θ''·ρ a distance ρ up the slope;
+// friction holds against F less m(θ''·z + θ'²·ρ).
+TEST(WedgeModel, RotationTermsActOnAHeldBlockAsTheyShould) {
   // Held (μs large), a block ρ up the slope: N = N_reduced + m(θ''·ρ − θ'²·z).
   WedgeDrive held{1.0, 10 * degree, 3.0, 0.0, 0.0, 5.0, 4.0};
   held.rotation = true, held.centre_height = 0.07, held.start = 0.4;
@@ -198,6 +203,51 @@ TEST(WedgeModel, RotationTermsVanishWithoutTurningAndActAsTheyShould) {
     // and friction holds against F + m(−θ''·z − θ'²·ρ)
     EXPECT_NEAR(-state.friction, held.driving_force(t) - held.angular_acceleration(t) * 0.07 - rate * rate * 0.4, 1e-12);
   }
+}
+
+// A slipping block's normal force on the turning surface: N_reduced + m(θ''·ρ − θ'²·z) − 2m·θ'·s'
+// (ρ up the slope from the pivot, z the centre's height, s' the slide down the slope). The
+// Coriolis term is the last: the block sliding across a turning surface is pressed or lifted.
+TEST(WedgeModel, ASlippingBlockOnTheTurningSurfaceFeelsCoriolis) {
+  WedgeDrive drive = example_two();
+  drive.theta0 = 20 * degree, drive.mu_s = drive.mu_k = 0.1;
+  drive.rotation = true, drive.centre_height = 0.09, drive.start = 0.3;
+  const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 3.0, 1e-2);
+  int slipping = 0;
+  double largest_coriolis = 0.0;
+  for (const WedgeState& state : run.samples) {
+    if (state.contact != WedgeContact::slip) continue;
+    ++slipping;
+    const double t = state.t, rate = drive.angular_velocity(t), rho = drive.start - state.slide;
+    const double coriolis = -2.0 * drive.mass * rate * state.speed;
+    largest_coriolis = std::max(largest_coriolis, std::abs(coriolis));
+    EXPECT_NEAR(state.normal,
+                drive.normal_force(t) +
+                    drive.mass * (drive.angular_acceleration(t) * rho - rate * rate * drive.centre_height) + coriolis,
+                1e-9);
+  }
+  EXPECT_GT(slipping, 100);
+  EXPECT_GT(largest_coriolis, 0.5);  // newtons: the term is there to be seen
+}
+
+// An event on a sample's instant (a breakaway at exactly t = 1 s, sampled every ms): recorded, not
+// stepped over in zero-length steps until the million-event limit. μs a few ulps either side.
+TEST(WedgeModel, AnEventOnASampleInstantIsRecordedOnce) {
+  WedgeDrive drive{1.0, 0.6, 1.0, 0.0, 0.0, 0.0, 0.2};
+  const double held_to = std::tan(0.6 * std::sin(1.0));
+  double mu_s = held_to;
+  for (int i = 0; i < 20; ++i) mu_s = std::nextafter(mu_s, 0.0);
+  for (int i = 0; i < 40; ++i, mu_s = std::nextafter(mu_s, 1.0)) {
+    drive.mu_s = mu_s;
+    EXPECT_NO_THROW(solve_wedge(drive, WedgeLaw::coulomb, 2.0, 1e-3)) << "mu_s " << mu_s;
+  }
+}
+
+// The article's friction opposes F: with no F at all (a level, still surface) there is none,
+// and the block stays put.
+TEST(WedgeModel, ArticleLawWithoutADrivingForceLeavesTheBlockAlone) {
+  const WedgeRun run = solve_wedge(WedgeDrive{1.0, 0.0, 3.0, 0.0, 0.0, 0.3, 0.2}, WedgeLaw::article, 1.0, 1e-2);
+  for (const WedgeState& state : run.samples) EXPECT_EQ(state.slide, 0.0);
 }
 
 TEST(WedgeModel, RefusesBadParameters) {

@@ -500,10 +500,9 @@ int wedge(lua_State* state) {
     lua_createtable(state, static_cast<int>(run.events.size()), 0);
     for (std::size_t i = 0; i < run.events.size(); ++i) {
       const WedgeEvent& event = run.events[i];
-      static constexpr const char* kinds[] = {"breakaway", "stop", "reversal", "lift-off", "landing", "sign change"};
       lua_createtable(state, 0, 4);
       set_number(state, "t", event.t);
-      lua_pushstring(state, kinds[static_cast<int>(event.kind)]);
+      lua_pushstring(state, name_of(event.kind));
       lua_setfield(state, -2, "kind");
       set_number(state, "slide", event.slide);
       set_number(state, "speed", event.speed);

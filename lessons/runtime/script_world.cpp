@@ -637,16 +637,12 @@ int drive(lua_State* state) {
     const std::string what = "drive '" + body_name(state, body) + "'";
     Fields fields(state, 1, what, {"position", "angle"});
     if (body->GetType() != b2_kinematicBody) throw InvalidInput(what + ": only a body of kind = \"kinematic\" can be driven");
-    VectorOfTime position;
+    PointOfTime position;
     ScalarOfTime angle;
     if (fields.push_function("position")) {
-      const auto path = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2, what + ": position (t -> x, y in m)");
-      position = [path](double t) {
-        const std::array<double, 2> xy = path(t);
-        return b2Vec2{static_cast<float>(xy[0]), static_cast<float>(xy[1])};
-      };
+      position = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2, what + ": position (t -> x, y in m)");
     } else {
-      const b2Vec2 fixed = body->GetPosition();
+      const std::array<double, 2> fixed{body->GetPosition().x, body->GetPosition().y};
       position = [fixed](double) { return fixed; };
     }
     if (fields.push_function("angle")) {
