@@ -286,6 +286,9 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
       // body (both flip), so it is copied as it is.
       member.slip_direction = r.slip_direction;
       member.held_force = r.held_force;
+      member.band_steps = r.band_steps;
+      member.band_excess = r.band_excess;
+      member.band_impulse = r.band_impulse;
     }
     return true;
   });
@@ -297,6 +300,9 @@ void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
     r.state = member.state;
     r.slip_direction = member.slip_direction;
     r.held_force = member.held_force;
+    r.band_steps = member.band_steps;
+    r.band_excess = member.band_excess;
+    r.band_impulse = member.band_impulse;
     r.fresh = false;  // its state is the group's, not one judged from its own speed
     return false;
   });
@@ -396,6 +402,9 @@ void FrictionListener::forget_trial() {
     r.state = ContactState::sticking;
     r.breakaway_impulse = 0.0;
     r.held_force = 0.0;
+    r.band_steps = 0;
+    r.band_excess = 0.0;
+    r.band_impulse = 0.0;
     r.explicit_impulse = 0.0;
     r.solving = false;
   }

@@ -50,7 +50,13 @@ struct ContactRecord {
   // under stick-slip its state is decided once a step for all of them (see settle).
   int siblings = 0;
   bool unpaired = false;           // its materials have no pair values: switched off, reported
-  double held_force = 0.0;         // N, friction while stuck in the previous step
+  double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
+  // A stuck contact whose friction went a hair past mu_s·N, within what the solver holds for a
+  // step (see treatment_stick_slip.cpp): how many steps in a row, the last step's friction
+  // above the limit (N), and the impulse held above the limit over them (N·s).
+  int band_steps = 0;
+  double band_excess = 0.0;
+  double band_impulse = 0.0;
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
   // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
   // once the step's velocity is known.
