@@ -348,16 +348,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   const FrictionPair& pair = pairs_.pair_at(r.pair_index);
   const TreatmentRule& rule = rule_at(r.pair_index);
   r.damping_force = 0.0;
-  if (r.breakaway_impulse != 0.0) {
-    const b2Vec2 t = r.tangent();
-    // A group's correction is its body's, through the centres like a face's.
-    const bool face = r.point_count == 2 || r.siblings > 0;
-    const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
-    const double v = sliding_speed(r.body_a, r.body_b, face, r.point, t);
-    apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse), face);
-    if (mass > 0.0) work_.friction += r.breakaway_impulse * (v + 0.5 * r.breakaway_impulse / mass);
-    r.breakaway_impulse = 0.0;
-  }
+  if (r.breakaway_impulse != 0.0) apply_breakaway(contact, r);
   const bool explicit_dry = rule.explicit_dry_force != nullptr;
   if (!explicit_dry && pair.c == 0.0 && pair.b == 0.0) return;
 
@@ -401,6 +392,7 @@ void FrictionListener::forget_trial() {
     r.fresh = true;
     r.state = ContactState::sticking;
     r.breakaway_impulse = 0.0;
+    r.breakaway_span = 0.0;
     r.held_force = 0.0;
     r.band_steps = 0;
     r.band_excess = 0.0;

@@ -58,6 +58,10 @@ struct ContactRecord {
   double band_excess = 0.0;
   double band_impulse = 0.0;
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
+  // s, how long the kinetic friction that impulse stands for has been acting: it was owed at
+  // that rate, and a stuck neighbour must have carried its share as fast. 0 for a re-stick's
+  // correction, which is a change of B's velocity rather than friction over a time.
+  double breakaway_span = 0.0;
   // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
   // once the step's velocity is known.
   double explicit_impulse = 0.0;
@@ -130,6 +134,16 @@ class FrictionListener : public b2ContactListener {
   // The breakaway impulse owed, the viscous and quadratic drag and the regularized dry force,
   // as impulses at the contact for the coming step.
   void apply_velocity_terms(b2Contact* contact, ContactRecord& r);
+  // The breakaway impulse r owes, on its two bodies, each side shared with the bodies stuck to
+  // it (friction_listener_breakaway.cpp).
+  void apply_breakaway(b2Contact* contact, ContactRecord& r);
+  // The bodies stuck to `body` through stuck contacts other than `broken` that can carry their
+  // share of `push` (N·s on body, world axes) over `span` seconds, and the share each takes.
+  struct Share {
+    b2Body* body;
+    b2Vec2 push;
+  };
+  void share_with_stuck(const b2Contact* broken, b2Body* body, const b2Vec2& push, double span, std::vector<Share>* shares);
   // Calls visit(contact, record) for every contact of r's group, r's own included, in the
   // moving body's contact list order, until visit returns false. A ground's list holds every
   // contact on it (quadratic in a pile's base), so the moving body's is walked.

@@ -126,14 +126,16 @@ bool looks_like_leftover(const ContactRecord& r, const StuckStep& step, double p
 // the friction last held within the limit and the friction this step demanded. The impulse
 // owed is what the solver held past the limit (in this step and any it held within the band)
 // and (mu_s - mu_k)·N·s. Without it the breakaway is a step late on average and the error is
-// first order; with it the spring lesson converges at second order.
-double breakaway_correction(const ContactRecord& r, const FrictionPair& pair, const StuckStep& step) {
+// first order; with it the spring lesson converges at second order. s goes into the record
+// (breakaway_span): the listener shares the impulse with bodies stuck to B or A at that rate.
+double breakaway_correction(ContactRecord& r, const FrictionPair& pair, const StuckStep& step) {
   const double span = (r.band_steps + 1) * step.h;  // since the friction was last within the limit
   const double excess = std::max(step.demanded - step.limit, 0.0);
   const double growth = (step.demanded - r.held_force) / span;
   const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, span) : 0.5 * step.h;
   const double held_past = r.band_impulse + std::max(step.held - step.limit, 0.0) * step.h;
-  return held_past + (breakaway_coefficient(pair) - pair.mu_k) * step.normal_force * (late + 0.5 * step.h);
+  r.breakaway_span = late + 0.5 * step.h;
+  return held_past + (breakaway_coefficient(pair) - pair.mu_k) * step.normal_force * r.breakaway_span;
 }
 
 void leave_band(ContactRecord& r) {
@@ -176,6 +178,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
     r.slip_direction = static_cast<float>(way);
   }
   r.breakaway_impulse = mass * (wanted - end);
+  r.breakaway_span = 0.0;
 }
 
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
@@ -207,6 +210,9 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     r.slip_direction = step.way;
     r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, step);
     leave_band(r);
+    // What the step held past the limit is handed back with the correction: the step's
+    // friction, as the arrows and plots show it, is the limit.
+    if (r.siblings == 0 && step.held > step.limit) r.friction_force *= step.limit / step.held;
   } else {
     const bool held = reached < pair.mu_k * (1.0 - stop_tolerance);
     const bool reversed = sign(solved.group_sliding_end) == -r.slip_direction;

@@ -246,6 +246,16 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "10"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "50"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "0.5"}, {"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
+                      // A top block whose mu_s is 1.1 to 2.5 times the floor's mu_s - mu_k keeps
+                      // up when the pair breaks away: the floor's breakaway correction is shared
+                      // with it through their stuck contact. Given to the bottom block alone it
+                      // slipped the top one at once (at 8.85 N for 10.3 N with 0.15/0.1).
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.15"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.11"}, {"top_on_bottom.mu_k", "0.07"}}, ""},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.25"}, {"top_on_bottom.mu_k", "0.15"}}, ""},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.13"}, {"top_mass", "5"}, {"bottom_mass", "1"}}, ""},
+                      Case{"stacked_blocks", {{"bottom_on_floor.mu_s", "1"}, {"bottom_on_floor.mu_k", "0.5"}, {"top_on_bottom.mu_s", "0.75"}, {"top_on_bottom.mu_k", "0.5"}}, ""},
+                      Case{"stacked_blocks", {{"top_on_bottom.mu_s", "0.15"}, {"top_on_bottom.mu_k", "0.1"}, {"pull_rate", "50"}}, ""},
                       // lubricated: no pull; a pull strong enough to start dry, and one that runs
                       // off the table's end (in words); no oil at all (until before from); oil from
                       // the start to the end; frictionless oil; mu_k above mu_s dry; oil that holds
