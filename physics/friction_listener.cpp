@@ -333,13 +333,18 @@ void FrictionListener::apply_contact_forces(b2World& world, float h) {
 
 bool FrictionListener::drag_due() const {
   if (drag_pending_ || run_rule_->explicit_dry_force != nullptr) return true;
-  const int n = pairs_.material_count();
-  for (int index = 0; index < n * n; ++index) {
-    const FrictionPair& pair = pairs_.pair_at(index);
-    const PairTreatment& own = pairs_.treatment_at(index);
-    if (pair.c != 0.0 || pair.b != 0.0 || (own.own && rule_of(own.treatment).explicit_dry_force != nullptr)) return true;
+  // The table is read through only when it has changed since the last look.
+  if (pairs_.revision() != drag_read_at_) {
+    pairs_have_drag_ = false;
+    const int n = pairs_.material_count();
+    for (int index = 0; index < n * n && !pairs_have_drag_; ++index) {
+      const FrictionPair& pair = pairs_.pair_at(index);
+      const PairTreatment& own = pairs_.treatment_at(index);
+      pairs_have_drag_ = pair.c != 0.0 || pair.b != 0.0 || (own.own && rule_of(own.treatment).explicit_dry_force != nullptr);
+    }
+    drag_read_at_ = pairs_.revision();
   }
-  return false;
+  return pairs_have_drag_;
 }
 
 void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r) {

@@ -205,6 +205,10 @@ class FrictionListener : public b2ContactListener {
   std::vector<ContactRecord> records_;
   // Some record was left a drag force to apply or clear.
   bool drag_pending_ = false;
+  // Whether some pair of the table has drag or a dry force of its own, as of its revision
+  // drag_read_at_ (see drag_due).
+  mutable bool pairs_have_drag_ = false;
+  mutable unsigned long drag_read_at_ = 0;
   // The contacts left a breakaway correction by the last step, in the order it found them.
   std::vector<b2Contact*> owing_;
   ContactWork work_;
