@@ -121,7 +121,7 @@ local top = box { "top", material = "wood", width = 0.3, height = 0.1, x = 0, y 
                   mass = top_mass }
 local bottom = box { "bottom", material = "aluminium", width = 0.8, height = 0.15, on = floor, at = 0, mass = bottom_mass }
 -- Pulled at the height where the bottom block meets the floor, so the pull cannot tip it.
-local pull = force { "pull", on = bottom, at = { 0.4, -0.075 - resting_gap / 2 }, force = function(t) return pull_rate * t, 0 end }
+local pull = force { "pull", on = bottom, at = { 0.4, -0.075 - resting_gap / 2 }, grows = { pull_rate, 0 } }
 view { follow = bottom }
 
 -- Probes and plots ------------------------------------------------------------------------

@@ -286,6 +286,9 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
       // body (both flip), so it is copied as it is.
       member.slip_direction = r.slip_direction;
       member.held_force = r.held_force;
+      member.band_steps = r.band_steps;
+      member.band_excess = r.band_excess;
+      member.band_impulse = r.band_impulse;
     }
     return true;
   });
@@ -297,6 +300,9 @@ void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
     r.state = member.state;
     r.slip_direction = member.slip_direction;
     r.held_force = member.held_force;
+    r.band_steps = member.band_steps;
+    r.band_excess = member.band_excess;
+    r.band_impulse = member.band_impulse;
     r.fresh = false;  // its state is the group's, not one judged from its own speed
     return false;
   });
@@ -327,13 +333,18 @@ void FrictionListener::apply_contact_forces(b2World& world, float h) {
 
 bool FrictionListener::drag_due() const {
   if (drag_pending_ || run_rule_->explicit_dry_force != nullptr) return true;
-  const int n = pairs_.material_count();
-  for (int index = 0; index < n * n; ++index) {
-    const FrictionPair& pair = pairs_.pair_at(index);
-    const PairTreatment& own = pairs_.treatment_at(index);
-    if (pair.c != 0.0 || pair.b != 0.0 || (own.own && rule_of(own.treatment).explicit_dry_force != nullptr)) return true;
+  // The table is read through only when it has changed since the last look.
+  if (pairs_.revision() != drag_read_at_) {
+    pairs_have_drag_ = false;
+    const int n = pairs_.material_count();
+    for (int index = 0; index < n * n && !pairs_have_drag_; ++index) {
+      const FrictionPair& pair = pairs_.pair_at(index);
+      const PairTreatment& own = pairs_.treatment_at(index);
+      pairs_have_drag_ = pair.c != 0.0 || pair.b != 0.0 || (own.own && rule_of(own.treatment).explicit_dry_force != nullptr);
+    }
+    drag_read_at_ = pairs_.revision();
   }
-  return false;
+  return pairs_have_drag_;
 }
 
 void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r) {
@@ -342,16 +353,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   const FrictionPair& pair = pairs_.pair_at(r.pair_index);
   const TreatmentRule& rule = rule_at(r.pair_index);
   r.damping_force = 0.0;
-  if (r.breakaway_impulse != 0.0) {
-    const b2Vec2 t = r.tangent();
-    // A group's correction is its body's, through the centres like a face's.
-    const bool face = r.point_count == 2 || r.siblings > 0;
-    const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
-    const double v = sliding_speed(r.body_a, r.body_b, face, r.point, t);
-    apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(r.breakaway_impulse), face);
-    if (mass > 0.0) work_.friction += r.breakaway_impulse * (v + 0.5 * r.breakaway_impulse / mass);
-    r.breakaway_impulse = 0.0;
-  }
+  if (r.breakaway_impulse != 0.0) apply_breakaway(contact, r);
   const bool explicit_dry = rule.explicit_dry_force != nullptr;
   if (!explicit_dry && pair.c == 0.0 && pair.b == 0.0) return;
 
@@ -395,7 +397,11 @@ void FrictionListener::forget_trial() {
     r.fresh = true;
     r.state = ContactState::sticking;
     r.breakaway_impulse = 0.0;
+    r.breakaway_span = 0.0;
     r.held_force = 0.0;
+    r.band_steps = 0;
+    r.band_excess = 0.0;
+    r.band_impulse = 0.0;
     r.explicit_impulse = 0.0;
     r.solving = false;
   }

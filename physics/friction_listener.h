@@ -50,8 +50,18 @@ struct ContactRecord {
   // under stick-slip its state is decided once a step for all of them (see settle).
   int siblings = 0;
   bool unpaired = false;           // its materials have no pair values: switched off, reported
-  double held_force = 0.0;         // N, friction while stuck in the previous step
+  double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
+  // A stuck contact whose friction went a hair past mu_s·N, within what the solver holds for a
+  // step (see treatment_stick_slip.cpp): how many steps in a row, the last step's friction
+  // above the limit (N), and the impulse held above the limit over them (N·s).
+  int band_steps = 0;
+  double band_excess = 0.0;
+  double band_impulse = 0.0;
   double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
+  // s, how long the kinetic friction that impulse stands for has been acting: it was owed at
+  // that rate, and a stuck neighbour must have carried its share as fast. 0 for a re-stick's
+  // correction, which is a change of B's velocity rather than friction over a time.
+  double breakaway_span = 0.0;
   // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
   // once the step's velocity is known.
   double explicit_impulse = 0.0;
@@ -124,6 +134,16 @@ class FrictionListener : public b2ContactListener {
   // The breakaway impulse owed, the viscous and quadratic drag and the regularized dry force,
   // as impulses at the contact for the coming step.
   void apply_velocity_terms(b2Contact* contact, ContactRecord& r);
+  // The breakaway impulse r owes, on its two bodies, each side shared with the bodies stuck to
+  // it (friction_listener_breakaway.cpp).
+  void apply_breakaway(b2Contact* contact, ContactRecord& r);
+  // The bodies stuck to `body` through stuck contacts other than `broken` that can carry their
+  // share of `push` (N·s on body, world axes) over `span` seconds, and the share each takes.
+  struct Share {
+    b2Body* body;
+    b2Vec2 push;
+  };
+  void share_with_stuck(const b2Contact* broken, b2Body* body, const b2Vec2& push, double span, std::vector<Share>* shares);
   // Calls visit(contact, record) for every contact of r's group, r's own included, in the
   // moving body's contact list order, until visit returns false. A ground's list holds every
   // contact on it (quadratic in a pile's base), so the moving body's is walked.
@@ -185,6 +205,10 @@ class FrictionListener : public b2ContactListener {
   std::vector<ContactRecord> records_;
   // Some record was left a drag force to apply or clear.
   bool drag_pending_ = false;
+  // Whether some pair of the table has drag or a dry force of its own, as of its revision
+  // drag_read_at_ (see drag_due).
+  mutable bool pairs_have_drag_ = false;
+  mutable unsigned long drag_read_at_ = 0;
   // The contacts left a breakaway correction by the last step, in the order it found them.
   std::vector<b2Contact*> owing_;
   ContactWork work_;

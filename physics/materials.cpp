@@ -1,6 +1,7 @@
 #include "physics/materials.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -81,6 +82,14 @@ void PairTable::grow(int new_count) {
   pairs_ = std::move(pairs);
   pair_set_ = std::move(set);
   treatments_ = std::move(treatments);
+  revise();
+}
+
+void PairTable::revise() {
+  // One count for every table: a table copied from another keeps its stamp, one changed since
+  // gets a new one that no other table has had.
+  static std::atomic<unsigned long> revisions{0};
+  revision_ = ++revisions;
 }
 
 int PairTable::add_material(const Material& material) {
@@ -134,6 +143,7 @@ void PairTable::store(int a, int b, const FrictionPair& pair) {
   const int n = material_count();
   pairs_[a * n + b] = pair;
   pairs_[b * n + a] = pair;
+  revise();
   pair_set_[a * n + b] = 1;
   pair_set_[b * n + a] = 1;
   for (const Share& share : shares_) {
@@ -191,6 +201,7 @@ void PairTable::set_treatment(std::string_view a, std::string_view b, FrictionTr
   const PairTreatment own{true, treatment, epsilon.value_or(0.0)};
   treatments_[static_cast<size_t>(pair_index(id_a, id_b))] = own;
   treatments_[static_cast<size_t>(pair_index(id_b, id_a))] = own;
+  revise();
 }
 
 bool PairTable::has_pair(int a, int b) const {

@@ -99,8 +99,14 @@ class PairTable {
   int pair_index(int a, int b) const { return a * material_count() + b; }
   const FrictionPair& pair_at(int index) const { return pairs_[static_cast<size_t>(index)]; }
   const PairTreatment& treatment_at(int index) const { return treatments_[static_cast<size_t>(index)]; }
+  // Changes whenever a pair's values or treatment change (or materials are added), and is
+  // never the same for two different tables' contents: what is worked out from the whole table
+  // (whether any pair has drag) is worked out again only when it changes.
+  unsigned long revision() const { return revision_; }
 
  private:
+  unsigned long revision_ = 0;
+  void revise();
   std::vector<Material> materials_;
   // Dense, symmetric, indexed by id: the contact listener reads it every step for every
   // contact, so a lookup must cost two multiplies, not a hash.

@@ -484,20 +484,11 @@ void Scene::advance(double t, float h, double t_end, bool move) {
     }
   }
 
-  struct Pending {
-    b2Body* body;
-    b2Vec2 local_point;
-    b2Vec2 force;
-    b2Vec2 start_velocity;
-  };
-  std::vector<Pending> pending;
-  pending.reserve(applied_.size());
-  struct Turning {
-    b2Body* body;
-    double torque;
-    double start_spin;
-  };
-  std::vector<Turning> turning;
+  // Kept between steps, so that a step allocates nothing for them.
+  std::vector<Pending>& pending = pending_;
+  pending.clear();
+  std::vector<Turning>& turning = turning_;
+  turning.clear();
   for (std::size_t i = 0; i < applied_.size(); ++i) {
     const AppliedForce& applied = applied_[i];
     const b2Vec2 point = world_point(applied.body, applied.local_point);

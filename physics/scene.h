@@ -243,6 +243,21 @@ class Scene {
   std::vector<Rest> rest_;        // beside bodies_
   std::vector<Spring> springs_;
   std::vector<AppliedForce> applied_;
+  // Within a step: each applied force and torque with the velocity it started on, whose work
+  // is booked once the step is over.
+  struct Pending {
+    b2Body* body;
+    b2Vec2 local_point;
+    b2Vec2 force;
+    b2Vec2 start_velocity;
+  };
+  struct Turning {
+    b2Body* body;
+    double torque;
+    double start_spin;
+  };
+  std::vector<Pending> pending_;
+  std::vector<Turning> turning_;
   std::vector<b2Vec2> spring_forces_applied_;
   std::vector<b2Vec2> forces_applied_;
   std::vector<double> torques_applied_;

@@ -253,9 +253,13 @@ pair { "puck", "puck", mu_s = 0, mu_k = 0 }
 local floor = ground { material = "ice" }
 local steady = box { "steady", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 2 }
 local ramped = box { "ramped", material = "puck", width = 0.2, height = 0.1, on = floor, at = 5, mass = 1 }
+local grown = box { "grown", material = "puck", width = 0.2, height = 0.1, on = floor, at = 10, mass = 1 }
 local push = force { "push", on = steady, force = { 3, 0 } }
 force { "ramp", on = ramped, force = function(t) return 2 * t, 0 end }
+local growing = force { "growing", on = grown, force = { 0, 1 }, grows = { 2, -1 } }
 probe { "push_fx", unit = "N", function() return push.fx end }
+probe { "growing_fx", unit = "N", function() return growing.fx end }
+probe { "growing_fy", unit = "N", function() return growing.fy end }
 )"));
   Lesson lesson(script.path());
   run_for(lesson, 1.0);
@@ -267,6 +271,32 @@ probe { "push_fx", unit = "N", function() return push.fx end }
   // F = 2t on 1 kg: v = t², reached to O(h) because the force is taken at each step's start.
   EXPECT_RELATIVE(lesson.scene().body("ramped")->GetLinearVelocity().x, 1.0, 0.005);
   EXPECT_EQ(probe_now(lesson, "push_fx"), 3.0);
+  // A force that grows at a rate, F = start + rate·t, is the same force as the function's,
+  // step for step, computed without calling the script (the start's y and the rate's cancel
+  // at t = 1 s; until then the block is pressed down a little harder, which ice ignores).
+  EXPECT_EQ(lesson.scene().body("grown")->GetLinearVelocity().x, lesson.scene().body("ramped")->GetLinearVelocity().x);
+  EXPECT_NEAR(probe_now(lesson, "growing_fx"), 2.0, 1e-6);
+  EXPECT_NEAR(probe_now(lesson, "growing_fy"), 0.0, 1e-6);
+}
+
+TEST(LessonRuntime, AGrowingForceIsCheckedAsItIsRead) {
+  const auto message = [](const std::string& fields) {
+    ScriptFile script(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = 0.4 }
+local block = box { "block", material = "wood", width = 0.2, height = 0.2, x = 0, y = 1 }
+force { "pull", on = block, )" + fields + R"( }
+)"));
+    return error_of([&] { Lesson broken(script.path()); });
+  };
+  std::string text = message("force = function(t) return t, 0 end, grows = { 1, 0 }");
+  EXPECT_NE(text.find("force 'pull': grows adds to a constant force {fx, fy}; a function(t) gives the whole force"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find(".lua:5: force 'pull'"), std::string::npos) << text;  // the line of force{}
+  text = message("grows = 5");
+  EXPECT_NE(text.find("grows"), std::string::npos) << text;
+  EXPECT_NE(text.find("a pair of numbers such as {0.5, 0} (N/s)"), std::string::npos) << text;
+  text = message("grows = { 2e9, 0 }");
+  EXPECT_NE(text.find("grows = {2e+09, 0} must be within ±1e+09 N/s"), std::string::npos) << text;
 }
 
 TEST(LessonRuntime, SpringBetweenTwoBlocksOscillatesAtItsNaturalFrequency) {
@@ -555,7 +585,7 @@ pair { "wood", "wood", mu_s = 0.5, mu_k = 0.4 }
 local block = box { "block", material = "wood", width = 0.2, height = 0.2, x = 0, y = 1 }
 force { "nothing", on = block }
 )"));
-  EXPECT_NE(error_of([&] { Lesson broken(neither.path()); }).find("force is missing: {fx, fy} in N, or a function(t); or give a torque"),
+  EXPECT_NE(error_of([&] { Lesson broken(neither.path()); }).find("force is missing: {fx, fy} in N, or a function(t), or grows = {rate_x, rate_y} in N/s; or give a torque"),
             std::string::npos);
 }
 

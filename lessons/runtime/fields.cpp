@@ -151,8 +151,13 @@ b2Vec2 Fields::point(const char* key, b2Vec2 fallback) {
     return fallback;
   }
   // Most points are places in m; a starting velocity, a constant force and a direction are not.
-  const bool force = std::strcmp(key, "force") == 0;
-  const char* unit = std::strcmp(key, "velocity") == 0 ? "m/s" : force ? "N" : std::strcmp(key, "along") == 0 ? "" : "m";
+  const bool grows = std::strcmp(key, "grows") == 0;
+  const bool force = std::strcmp(key, "force") == 0 || grows;
+  const char* unit = std::strcmp(key, "velocity") == 0 ? "m/s"
+                     : grows                            ? "N/s"
+                     : force                            ? "N"
+                     : std::strcmp(key, "along") == 0   ? ""
+                                                        : "m";
   const std::string expected = std::string("a pair of numbers such as {0.5, 0}") + (*unit ? std::string(" (") + unit + ")" : "");
   if (!lua_istable(state_, -1)) wrong(key, expected, -1);
   double xy[2];

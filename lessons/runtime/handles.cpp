@@ -134,10 +134,15 @@ std::optional<Field> find_field(HandleType type, const char* key) {
 // a block that has just left the floor reads "none" and 0 in the very step it leaves, not a
 // step later when Box2D notices (Scene::touching_now).
 const ContactRecord* touching_record(const Scene& scene, const b2Body* a, const b2Body* b) {
-  const ContactRecord* record = scene.friction().find(a, b);
-  if (record == nullptr) return nullptr;
+  // One walk of a's contacts: the record is the first touching one's that has a record, as
+  // FrictionListener::find gives it; a probe reads it every step, four on stacked_blocks.
+  const ContactRecord* record = nullptr;
+  bool touching = false;
   for (const b2ContactEdge* edge = a->GetContactList(); edge != nullptr; edge = edge->next) {
-    if (edge->other == b && edge->contact->IsTouching() && scene.touching_now(edge->contact)) return record;
+    if (edge->other != b || !edge->contact->IsTouching()) continue;
+    if (record == nullptr) record = scene.friction().record(edge->contact);
+    touching = touching || scene.touching_now(edge->contact);
+    if (record != nullptr && touching) return record;
   }
   return nullptr;
 }

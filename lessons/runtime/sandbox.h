@@ -86,6 +86,7 @@ class Sandbox {
   void* owner_ = nullptr;
   long budget_left_ = 0;
   std::chrono::steady_clock::time_point deadline_{};
+  bool deadline_set_ = false;  // the outermost call's clock has started (see call)
   int depth_ = 0;  // a call made from inside another (a hand read while spring{} runs) shares its budget
   bool timing_ = false;
   std::chrono::nanoseconds time_in_lua_{0};

@@ -588,14 +588,25 @@ int force(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "force");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "force", {"on", "at", "force", "torque"});
+    Fields fields(state, 1, "force", {"on", "at", "force", "grows", "torque"});
     AppliedForce made;
     made.name = fields.name();
     fields.push("on");
     made.body = body_handle(state, -1, fields.what() + ": on")->body;
     lua_pop(state, 1);
     made.local_point = fields.point("at", origin_point);
-    if (fields.push_function("force")) {
+    if (fields.has("grows")) {
+      // A force growing at a steady rate from its start value: computed here, with no call
+      // into Lua a step (a pull that grows, as stacked_blocks' does, is the common case).
+      if (fields.push_function("force")) {
+        throw InvalidInput(fields.what() + ": grows adds to a constant force {fx, fy}; a function(t) gives the whole force");
+      }
+      const b2Vec2 rate = fields.point("grows", origin_point);
+      const b2Vec2 start = fields.point("force", origin_point);
+      made.force = [start, rate](double t) {
+        return b2Vec2{static_cast<float>(start.x + rate.x * t), static_cast<float>(start.y + rate.y * t)};
+      };
+    } else if (fields.push_function("force")) {
       const auto push = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2,
                                          fields.what() + ": the force function (t -> fx, fy in N)", true);
       made.force = [push](double t) {
@@ -606,7 +617,7 @@ int force(lua_State* state) {
       const b2Vec2 constant = fields.point("force", origin_point);
       made.force = [constant](double) { return constant; };
     } else if (!fields.has("torque")) {
-      throw InvalidInput(fields.what() + ": force is missing: {fx, fy} in N, or a function(t); or give a torque");
+      throw InvalidInput(fields.what() + ": force is missing: {fx, fy} in N, or a function(t), or grows = {rate_x, rate_y} in N/s; or give a torque");
     }
     // A torque about the body's centre of mass, N·m, counter-clockwise positive: a motor.
     if (fields.push_function("torque")) {
