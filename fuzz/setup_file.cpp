@@ -1,6 +1,6 @@
 // Fuzz target: a prepared setup file from bytes (ui/setup_file.h). Besides not crashing, every
-// refusal is InvalidInput with a message, and what is read is written back by setup_text to a
-// text that reads as the same setup.
+// refusal is InvalidInput with a message, and what is read (the class's predictions too) is
+// written back by setup_text to a text that reads as the same setup.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -14,6 +14,10 @@ bool same(const frictionlab::ui::PreparedSetup& a, const frictionlab::ui::Prepar
   if (a.lesson != b.lesson || a.lock != b.lock || a.mystery != b.mystery || a.values.size() != b.values.size()) return false;
   for (std::size_t i = 0; i < a.values.size(); ++i) {
     if (a.values[i].name != b.values[i].name || a.values[i].text != b.values[i].text) return false;
+  }
+  if (a.answers.size() != b.answers.size() || a.revealed != b.revealed || a.ask_predictions != b.ask_predictions) return false;
+  for (std::size_t i = 0; i < a.answers.size(); ++i) {
+    if (a.answers[i].row != b.answers[i].row || a.answers[i].text != b.answers[i].text) return false;
   }
   return a.settings.hz == b.settings.hz && a.settings.substeps == b.settings.substeps &&
          a.settings.treatment == b.settings.treatment;

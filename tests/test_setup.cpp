@@ -1,5 +1,6 @@
 // Prepared setups: saved from the window and opened again (by the Lesson menu, by the API the
-// --setup option uses) with the lesson, values, lock, mystery and step settings as they were;
+// --setup option uses) with the lesson, values, lock, mystery, step settings and the class's
+// predictions as they were;
 // a broken file says file:line: and leaves the running lesson alone; saving never writes over a
 // script or anything but a setup file FrictionLab wrote, and leaves no temporary file behind.
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "classroom_hands.h"
@@ -148,7 +150,8 @@ TEST(SetupFile, AStudentsScriptIsNamedFromTheSetupsFolderAndFoundFromAnywhere) {
 
 TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
   EXPECT_EQ(parse_error("lesson incline\nsett angle = 3\n"),
-            "class.setup:2: 'sett' is not a line a setup has; its lines: lesson, set, lock, mystery, hz, substeps, friction");
+            "class.setup:2: 'sett' is not a line a setup has; its lines: lesson, set, lock, mystery, hz, substeps, friction, "
+            "predictions, predict, theory");
   EXPECT_EQ(parse_error("# only a comment\n"), "class.setup: no lesson line; a setup names the lesson it opens, as in: lesson spring_pull");
   EXPECT_EQ(parse_error("lesson incline\nlesson push\n"), "class.setup:2: lesson given twice (lines 1 and 2); a setup opens one lesson");
   EXPECT_EQ(parse_error("lesson incline\nset angle 30\n"), "class.setup:2: set angle 30: write it as set NAME = VALUE, as in set mass = 1.5");
@@ -193,6 +196,182 @@ TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
   // None of them stopped the lesson that was running.
   EXPECT_EQ(fs::path(hands.lesson().path()).filename(), "spring_pull.lua");
   EXPECT_NEAR(hands.lesson().scene().time(), 0.5, 1e-9);
+}
+
+// The class's predictions, typed and picked in the theory panel, and the reveal: saved, then
+// opened by the menu into a window that had other answers, and by setup_options.
+TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  ClassroomHands teacher(options, ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
+  teacher.frame();
+  teacher.frame();
+  teacher.click("prediction mean acceleration down the slope");
+  teacher.type("2.5");
+  teacher.press_enter();
+  teacher.click("prediction sticks or slides: slides");
+  ASSERT_EQ(teacher.classroom().predictions().answers["mean acceleration down the slope"], "2.5");
+  ASSERT_EQ(teacher.classroom().predictions().answers["sticks or slides"], "slides");
+  ASSERT_TRUE(teacher.classroom().theory_hidden());
+  teacher.click("reveal");
+  ASSERT_FALSE(teacher.classroom().theory_hidden());
+  const std::string path = teacher.folder() + "/predicted.setup";
+  ASSERT_EQ(teacher.classroom().save_setup(path), "");
+  const std::string text = read_file(path);
+  EXPECT_NE(text.find("\npredictions on\npredict sticks or slides = slides\npredict mean acceleration down the slope = 2.5\n"
+                      "theory revealed\n"),
+            std::string::npos)
+      << text;
+
+  // Another window: another lesson's answers, hidden theory, predictions not asked.
+  ClassroomOptions other;
+  other.lesson = "tipping_box";
+  other.window.predictions = false;
+  ClassroomHands hands(other);
+  hands.classroom().predictions().answers["tips or slides"] = "tips";
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Open a setup");
+  hands.frame();
+  hands.click("setup path");
+  hands.type(path);
+  hands.click("setup go");
+  const auto expect_predicted = [](Classroom& window, const std::string& where) {
+    EXPECT_EQ(fs::path(window.playback().lesson().path()).filename(), "incline.lua") << where;
+    EXPECT_EQ(window.predictions().answers,
+              (std::map<std::string, std::string>{{"mean acceleration down the slope", "2.5"}, {"sticks or slides", "slides"}}))
+        << where;
+    EXPECT_TRUE(window.predictions().revealed) << where;
+    EXPECT_TRUE(window.window_settings().predictions) << where << ": predictions on";
+    EXPECT_FALSE(window.theory_hidden()) << where;
+  };
+  expect_predicted(hands.classroom(), "opened from the menu");
+  ClassroomOptions plain;
+  plain.window.predictions = false;
+  Classroom from_options(setup_options(path, plain));
+  expect_predicted(from_options, "opened by setup_options");
+
+  // Not yet revealed, and a teacher who takes none: saved so, and opened so.
+  hands.classroom().predictions().revealed = false;
+  hands.classroom().window_settings().predictions = false;
+  hands.classroom().predictions().answers.erase("sticks or slides");
+  ASSERT_EQ(hands.classroom().save_setup(path), "");
+  const std::string quiet = read_file(path);
+  EXPECT_NE(quiet.find("\npredictions off\npredict mean acceleration down the slope = 2.5\n"), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("theory"), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("sticks or slides"), std::string::npos) << quiet;
+  ASSERT_EQ(teacher.classroom().open_setup(path), "");
+  EXPECT_EQ(teacher.classroom().predictions().answers,
+            (std::map<std::string, std::string>{{"mean acceleration down the slope", "2.5"}}));
+  EXPECT_FALSE(teacher.classroom().predictions().revealed);
+  EXPECT_FALSE(teacher.classroom().window_settings().predictions);
+  // A setup that says nothing of predictions leaves the window's choice, and asks afresh.
+  write_file(path, "lesson incline\n");
+  teacher.classroom().window_settings().predictions = true;
+  ASSERT_EQ(teacher.classroom().open_setup(path), "");
+  EXPECT_TRUE(teacher.classroom().predictions().answers.empty());
+  EXPECT_TRUE(teacher.classroom().window_settings().predictions);
+  EXPECT_TRUE(teacher.classroom().theory_hidden());
+}
+
+// Row names hold spaces, '·', '(' and '=': a prediction's line is split at its last '='.
+TEST(SetupFile, APredictionsRowNameMayHoldAnythingButALineBreak) {
+  const PreparedSetup read = parse_setup(
+      "lesson terrain\npredict hack_box: speed at the end (drifts down a slope) = 0.25\npredict μk = tan θ · x =slides back\n"
+      "predict ice_box: then=stays\n",
+      "class.setup");
+  ASSERT_EQ(read.answers.size(), 3u);
+  EXPECT_EQ(read.answers[0].row, "hack_box: speed at the end (drifts down a slope)");
+  EXPECT_EQ(read.answers[0].text, "0.25");
+  EXPECT_EQ(read.answers[1].row, "μk = tan θ · x");
+  EXPECT_EQ(read.answers[1].text, "slides back");
+  EXPECT_EQ(read.answers[2].row, "ice_box: then");
+  EXPECT_EQ(read.answers[2].line, 4);
+  const PreparedSetup again = parse_setup(setup_text(read), "again.setup");
+  ASSERT_EQ(again.answers.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(again.answers[i].row, read.answers[i].row);
+    EXPECT_EQ(again.answers[i].text, read.answers[i].text);
+  }
+  // What a line cannot hold as it is is refused when saving, not written to read back otherwise.
+  PreparedSetup odd;
+  odd.lesson = "terrain";
+  odd.answers = {{"ice_box: then", "a = b", 0}};
+  ClassroomOptions options;
+  options.lesson = "terrain";
+  ClassroomHands hands(options);
+  const std::string path = hands.folder() + "/odd.setup";
+  try {
+    write_setup(path, odd);
+    ADD_FAILURE() << "an answer holding '=' was written";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find(path + ": the class's answer \"a = b\" to \"ice_box: then\" cannot be written"),
+              std::string::npos)
+        << error.what();
+  }
+  odd.answers = {{" ice_box: then", "stays", 0}};
+  EXPECT_THROW(write_setup(path, odd), InvalidInput);
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(SetupFile, ABrokenPredictionSaysWhichLineAndTheRunningLessonKeepsRunning) {
+  EXPECT_EQ(parse_error("lesson incline\npredict sticks or slides = slides\n\npredict sticks or slides = sticks\n"),
+            "class.setup:4: predict sticks or slides given twice (lines 2 and 4); give each prediction once");
+  EXPECT_EQ(parse_error("lesson incline\npredict sticks or slides\n"),
+            "class.setup:2: predict sticks or slides: write it as predict ROW = ANSWER, as in predict breakaway force = 4.5");
+  EXPECT_EQ(parse_error("lesson incline\npredict sticks or slides =\n"),
+            "class.setup:2: predict sticks or slides =: write it as predict ROW = ANSWER, as in predict breakaway force = 4.5");
+  EXPECT_EQ(parse_error("lesson incline\npredict\n"), "class.setup:2: predict needs what it sets, as in: predict breakaway force = 4.5");
+  EXPECT_EQ(parse_error("lesson incline\npredictions yes\n"),
+            "class.setup:2: predictions yes: write predictions on (the class predicts before the theory shows) or predictions off");
+  EXPECT_EQ(parse_error("lesson incline\npredictions on\npredictions off\n"),
+            "class.setup:3: predictions given twice (lines 2 and 3); say once whether the class is asked");
+  EXPECT_EQ(parse_error("lesson incline\ntheory shown\n"),
+            "class.setup:2: theory shown: write theory revealed (the class's predictions are set beside it) or theory hidden");
+  EXPECT_EQ(parse_error("lesson incline\ntheory revealed\ntheory revealed\n"),
+            "class.setup:3: theory given twice (lines 2 and 3); say once whether the theory is shown");
+
+  // Against the lesson, where the file gives each.
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  ClassroomHands hands(options);
+  hands.classroom().playback().run_to(0.5);
+  hands.classroom().predictions().answers["breakaway force"] = "4";
+  const auto opened = [&](const std::string& text) {
+    write_file(hands.folder() + "/broken.setup", text);
+    return hands.classroom().open_setup(hands.folder() + "/broken.setup");
+  };
+  const std::string at = hands.folder() + "/broken.setup:";
+  const std::string incline = lessons::resolve_lesson("incline");
+  EXPECT_EQ(opened("lesson incline\npredictions on\npredict breakaway force = 4.5\n"),
+            at + "3: predict breakaway force = 4.5: " + incline +
+                " asks for no prediction of that name; its predictions: \"sticks or slides\", \"mean acceleration down the slope\"");
+  EXPECT_EQ(opened("lesson incline\npredict mean acceleration down the slope = fast\n"),
+            at + "2: predict mean acceleration down the slope = fast: not a number: type it as 2.5 or -0.3");
+  EXPECT_EQ(opened("lesson incline\npredict mean acceleration down the slope = 2,5\n"),
+            at + "2: predict mean acceleration down the slope = 2,5: not a number: write decimals with a point, as in 0.5");
+  EXPECT_EQ(opened("lesson incline\npredict mean acceleration down the slope = 2e6\n"),
+            at + "2: predict mean acceleration down the slope = 2e6: outside the range a prediction takes, from -1000000 to 1000000");
+  EXPECT_EQ(opened("lesson incline\n# the class\npredict sticks or slides = falls over\n"),
+            at + "3: predict sticks or slides = falls over: not one of its choices: \"sticks\", \"slides\"");
+  EXPECT_EQ(opened("lesson incline\npredict sticks or slides = Slides\n"),
+            at + "2: predict sticks or slides = Slides: not one of its choices: \"sticks\", \"slides\"");
+  // None of them stopped the lesson that was running, nor took the class's answers.
+  EXPECT_EQ(fs::path(hands.lesson().path()).filename(), "spring_pull.lua");
+  EXPECT_NEAR(hands.lesson().scene().time(), 0.5, 1e-9);
+  EXPECT_EQ(hands.classroom().predictions().answers, (std::map<std::string, std::string>{{"breakaway force", "4"}}));
+
+  // A typed answer that is no number is not saved into a file that would not open.
+  hands.classroom().predictions().answers["re-stick force"] = "about 3";
+  const std::string path = hands.folder() + "/class.setup";
+  EXPECT_EQ(hands.classroom().save_setup(path),
+            path + ": the class's prediction of re-stick force is about 3: not a number: type it as 2.5 or -0.3; correct it "
+                   "or clear it in the theory panel, then save");
+  EXPECT_FALSE(fs::exists(path));
+  // An emptied box is no answer: not written.
+  hands.classroom().predictions().answers["re-stick force"] = "";
+  ASSERT_EQ(hands.classroom().save_setup(path), "");
+  EXPECT_EQ(read_setup(path).answers.size(), 1u);
 }
 
 TEST(SetupFile, SavingNeverWritesOverAScriptOrAnythingButASetupItWrote) {

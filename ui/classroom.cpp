@@ -34,6 +34,7 @@ Classroom::Classroom(ClassroomOptions options)
     playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
     check_lock(playback_->lesson());
     select_mystery_tab_ = mystery_.has_value();
+    predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.

@@ -41,13 +41,15 @@ struct ClassroomOptions {
   WindowSettings window;                            // as remembered
   std::string output_folder = ".";                  // screenshots and history exports
   std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
+  ClassPredictions predictions;                     // the class's answers, from a prepared setup
 };
 
 // The names --lock takes besides a lesson's parameters.
 inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
 
-// The options a prepared setup file gives (its lesson, values, lock, mystery and step settings)
-// in place of those in `base`; the window's own settings stay. Throws InvalidInput as
+// The options a prepared setup file gives (its lesson, values, lock, mystery, step settings and
+// the class's predictions) in place of those in `base`; the window's own settings stay, but for
+// whether predictions are asked when the file says (`predictions on|off`). Throws InvalidInput as
 // "file:line: what is wrong", checked against the lesson before anything opens.
 ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base);
 
@@ -119,10 +121,11 @@ class Classroom {
   // returned (also shown in the window); "" on success.
   std::string open_setup(const std::string& path);
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
-  // value but a mystery's, the lock, the mystery's pair and seed, the step settings.
+  // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether
+  // predictions are asked, the class's answers to the lesson's predict rows and the reveal.
   PreparedSetup current_setup(const std::string& path) const;
   // Writes current_setup to `path` (never over a .lua script or a file that is not a setup
-  // FrictionLab wrote). Returns "" or why not.
+  // FrictionLab wrote, nor with a typed prediction that is not a number). Returns "" or why not.
   std::string save_setup(const std::string& path);
   // The window's title: the program and the lesson (never a hidden value).
   std::string window_title() const;

@@ -258,6 +258,10 @@ bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predic
 
 std::optional<double> read_answer(const std::string& typed, std::string& why) {
   const std::optional<double> value = validation::parse_decimal(typed, why);
+  if (value && std::abs(*value) > largest_answer) {
+    why = "outside the range a prediction takes, from -1000000 to 1000000";
+    return std::nullopt;
+  }
   if (value) return value;
   if (why.empty()) {
     why = typed.find(',') != std::string::npos ? "not a number: write decimals with a point, as in 0.5"

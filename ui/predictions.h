@@ -27,7 +27,12 @@ struct ClassPredictions {
 // View menu), and they have not been revealed yet.
 bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predictions, bool asking);
 
-// A typed answer read as a number ("2.5", "-0.3"); nullopt with `why` filled when it is not one.
+// The largest a numeric answer may be, either way: no lesson's quantity comes near it in its
+// unit, and a setup file (ui/setup_file.h) refuses the same answers the window marks.
+inline constexpr double largest_answer = 1e6;
+
+// A typed answer read as a number ("2.5", "-0.3") within ±largest_answer; nullopt with `why`
+// filled when it is not one.
 std::optional<double> read_answer(const std::string& typed, std::string& why);
 
 // How close the class came, in words, against the measurement once there is one and the

@@ -65,7 +65,31 @@ std::string example_of(const std::string& word) {
   if (word == "mystery") return "mystery aluminium/wood seed 42";
   if (word == "hz") return "hz 240";
   if (word == "substeps") return "substeps 1";
+  if (word == "predictions") return "predictions on";
+  if (word == "predict") return "predict breakaway force = 4.5";
+  if (word == "theory") return "theory revealed";
   return "friction stick-slip";
+}
+
+// The line words a setup has, in the order a saved setup writes them.
+const char* const line_words[] = {"lesson", "set", "lock", "mystery", "hz", "substeps", "friction", "predictions", "predict", "theory"};
+
+std::string quoted_list(const std::vector<std::string>& words) {
+  std::string list;
+  for (const std::string& word : words) list += (list.empty() ? "\"" : ", \"") + word + "\"";
+  return list;
+}
+
+// The lesson's predict rows, for a message: "\"breakaway force\", \"re-stick force\"".
+std::string predictions_listed(const lessons::Lesson& lesson) {
+  std::vector<std::string> rows;
+  for (const lessons::Prediction& prediction : lesson.predictions()) rows.push_back(prediction.expectation);
+  return quoted_list(rows);
+}
+
+// Whether a line holds `text` as it is: read back trimmed, a line at a time.
+bool fits_a_line(const std::string& text) {
+  return !text.empty() && text == trimmed(text) && text.find_first_of("\n\r") == std::string::npos;
 }
 
 bool is_setup_file(const std::string& path) {
@@ -78,7 +102,7 @@ bool is_setup_file(const std::string& path) {
 
 PreparedSetup parse_setup(const std::string& text, const std::string& path) {
   PreparedSetup setup;
-  int hz_line = 0, substeps_line = 0, friction_line = 0;
+  int hz_line = 0, substeps_line = 0, friction_line = 0, predictions_line = 0, theory_line = 0;
   std::istringstream lines(text);
   std::string raw;
   for (int number_of_line = 1; std::getline(lines, raw); ++number_of_line) {
@@ -89,9 +113,11 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
     const std::size_t space = line.find_first_of(" \t\r");
     const std::string word = line.substr(0, space);
     const std::string rest = space == std::string::npos ? "" : trimmed(line.substr(space));
-    if (word != "lesson" && word != "set" && word != "lock" && word != "mystery" && word != "hz" && word != "substeps" &&
-        word != "friction") {
-      at.fail("'" + word + "' is not a line a setup has; its lines: lesson, set, lock, mystery, hz, substeps, friction");
+    if (std::find_if(std::begin(line_words), std::end(line_words), [&](const char* known) { return word == known; }) ==
+        std::end(line_words)) {
+      std::string words;
+      for (const char* known : line_words) words += (words.empty() ? "" : ", ") + std::string(known);
+      at.fail("'" + word + "' is not a line a setup has; its lines: " + words);
     }
     if (rest.empty()) at.fail(word + " needs what it sets, as in: " + example_of(word));
     if (word == "lesson") {
@@ -135,6 +161,33 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
     } else if (word == "hz") {
       once(hz_line, at, "hz", "give the step rate once");
       setup.settings.hz = number(at, "hz", rest, 1.0, 100000.0, " steps per second");
+    } else if (word == "predict") {
+      // At the last '=': a row's name may hold one ("μk = tan θ"); a number or a choice word does not.
+      const std::size_t equals = rest.rfind('=');
+      const std::string row = trimmed(rest.substr(0, equals));
+      const std::string answer = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
+      if (equals == std::string::npos || row.empty() || answer.empty()) {
+        at.fail("predict " + rest + ": write it as predict ROW = ANSWER, as in predict breakaway force = 4.5");
+      }
+      for (const PreparedSetup::Answer& given : setup.answers) {
+        if (given.row == row) {
+          at.fail("predict " + row + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
+                  "); give each prediction once");
+        }
+      }
+      setup.answers.push_back({row, answer, at.line});
+    } else if (word == "predictions") {
+      once(predictions_line, at, "predictions", "say once whether the class is asked");
+      if (rest != "on" && rest != "off") {
+        at.fail("predictions " + rest + ": write predictions on (the class predicts before the theory shows) or predictions off");
+      }
+      setup.ask_predictions = rest == "on";
+    } else if (word == "theory") {
+      once(theory_line, at, "theory", "say once whether the theory is shown");
+      if (rest != "revealed" && rest != "hidden") {
+        at.fail("theory " + rest + ": write theory revealed (the class's predictions are set beside it) or theory hidden");
+      }
+      setup.revealed = rest == "revealed";
     } else if (word == "substeps") {
       once(substeps_line, at, "substeps", "give the sub-steps once");
       const double substeps = number(at, "substeps", rest, 1.0, 1000.0, "");
@@ -183,6 +236,9 @@ std::string setup_text(const PreparedSetup& setup) {
   text << "hz " << exact_text(setup.settings.hz) << '\n';
   text << "substeps " << setup.settings.substeps << '\n';
   text << "friction " << treatment_name(setup.settings.treatment) << '\n';
+  if (setup.ask_predictions) text << "predictions " << (*setup.ask_predictions ? "on" : "off") << '\n';
+  for (const PreparedSetup::Answer& answer : setup.answers) text << "predict " << answer.row << " = " << answer.text << '\n';
+  if (setup.revealed) text << "theory revealed\n";
   return text.str();
 }
 
@@ -191,6 +247,16 @@ void write_setup(const std::string& path, const PreparedSetup& setup) {
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".lua") throw InvalidInput(path + ": that looks like a lesson script; give the setup a name of its own, such as class.setup");
+  for (const PreparedSetup::Answer& answer : setup.answers) {
+    if (!fits_a_line(answer.row)) {
+      throw InvalidInput(path + ": the prediction \"" + answer.row + "\" cannot be written on a line of a setup (a blank at either end, "
+                         "or a line break); give its expect row another name in the lesson");
+    }
+    if (!fits_a_line(answer.text) || answer.text.find('=') != std::string::npos) {
+      throw InvalidInput(path + ": the class's answer \"" + answer.text + "\" to \"" + answer.row + "\" cannot be written on a line of a setup "
+                         "(an '=', a blank at either end, or a line break); give the choice another word in the lesson");
+    }
+  }
   const std::string text = setup_text(setup);
   try {
     OutputFile file(path, is_setup_file);
@@ -264,6 +330,27 @@ void check_setup(const PreparedSetup& setup, const std::string& setup_path, less
       At{setup_path, setup.mystery_line}.fail(error.what());
     }
   }
+  for (const PreparedSetup::Answer& answer : setup.answers) {
+    const std::string problem = prediction_problem(lesson, answer.row, answer.text);
+    if (!problem.empty()) At{setup_path, answer.line}.fail("predict " + answer.row + " = " + answer.text + ": " + problem);
+  }
+}
+
+std::string prediction_problem(const lessons::Lesson& lesson, const std::string& row, const std::string& answer) {
+  const std::vector<lessons::Prediction>& predictions = lesson.predictions();
+  const auto asked = std::find_if(predictions.begin(), predictions.end(),
+                                  [&](const lessons::Prediction& prediction) { return prediction.expectation == row; });
+  if (asked == predictions.end()) {
+    if (predictions.empty()) return lesson.path() + " asks the class for no predictions";
+    return lesson.path() + " asks for no prediction of that name; its predictions: " + predictions_listed(lesson);
+  }
+  if (asked->is_choice()) {
+    if (std::find(asked->choices.begin(), asked->choices.end(), answer) != asked->choices.end()) return "";
+    return "not one of its choices: " + quoted_list(asked->choices);
+  }
+  std::string why;
+  if (!read_answer(answer, why)) return why;
+  return "";
 }
 
 }  // namespace frictionlab::ui
@@ -286,6 +373,10 @@ ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions b
   base.lock = setup.lock;
   base.mystery = setup.mystery;
   base.settings = setup.settings;
+  base.predictions = ClassPredictions{};
+  for (const PreparedSetup::Answer& answer : setup.answers) base.predictions.answers[answer.row] = answer.text;
+  base.predictions.revealed = setup.revealed;
+  if (setup.ask_predictions) base.window.predictions = *setup.ask_predictions;
   return base;
 }
 

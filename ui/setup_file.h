@@ -1,7 +1,7 @@
 // A prepared setup: what a teacher sets up before class (the lesson, its values, the lock of
-// controls, a mystery pair and its seed, the step settings), as a small text file to open in
-// class with `frictionlab --setup FILE` or the Lesson menu. A mystery is saved as its pair and
-// seed, never its values.
+// controls, a mystery pair and its seed, the step settings, and the class's predictions), as a
+// small text file to open in class with `frictionlab --setup FILE` or the Lesson menu. A
+// mystery is saved as its pair and seed, never its values.
 //
 // The file, one instruction a line (a word, then what it takes); `#` starts a comment:
 //
@@ -13,10 +13,18 @@
 //   hz 240
 //   substeps 1
 //   friction stick-slip
+//   predictions on
+//   predict breakaway force = 4.5
+//   predict sticks or slides = slides
+//   theory revealed
 //
 // `lesson` is a built-in lesson's name or a script's path (from the setup file's folder, or
 // from /); every other line may be left out. Each line's first word says what it is, so a
-// later kind of line (the class's predictions) is a new word, and a file without it still reads.
+// later kind of line is a new word, and a file without it still reads. `predictions on|off`
+// is whether the class is asked to predict (the View menu's choice; left as the window has it
+// when the line is missing); each `predict ROW = ANSWER` is the class's answer to the lesson's
+// predict row of that name, split at the line's last '=' (a row's name may hold one; a number
+// or a choice word holds none); `theory revealed` says the teacher has shown the theory.
 #pragma once
 
 #include <optional>
@@ -42,6 +50,14 @@ struct PreparedSetup {
   std::vector<std::string> lock;
   std::optional<MysteryChoice> mystery;
   StepSettings settings;
+  // The class's predictions: each answer by its predict row, as typed or picked, in order.
+  struct Answer {
+    std::string row, text;
+    int line = 0;  // where the file gave it (0: not read from a file)
+  };
+  std::vector<Answer> answers;
+  bool revealed = false;                  // the theory has been shown
+  std::optional<bool> ask_predictions;    // predictions on/off; none: the window's own choice
   // Where the file gave each line, for messages that point at it: lesson, lock, mystery, hz, substeps, friction.
   int lesson_line = 0, lock_line = 0, mystery_line = 0;
 };
@@ -54,8 +70,10 @@ PreparedSetup read_setup(const std::string& path);
 
 // The setup as the file holds it (setup_text then parse_setup gives it back).
 std::string setup_text(const PreparedSetup& setup);
-// Writes it whole (a temporary file beside it, renamed over it) to `path`. Refuses a .lua path
-// and anything there but a setup file FrictionLab wrote. Throws InvalidInput naming the path.
+// Writes it whole (a temporary file beside it, renamed over it) to `path`. Refuses a .lua path,
+// anything there but a setup file FrictionLab wrote, and a prediction whose row or answer a
+// line cannot hold as it is (a line break, a blank at either end, an '=' in the answer).
+// Throws InvalidInput naming the path.
 void write_setup(const std::string& path, const PreparedSetup& setup);
 
 // The script a setup's lesson names: a built-in name, or a path from the setup's own folder.
@@ -65,8 +83,13 @@ std::string setup_lesson_path(const PreparedSetup& setup, const std::string& set
 std::string setup_lesson_name(const std::string& script_path, const std::string& setup_path);
 
 // Checks the setup against its lesson built at the script's values: every value set (in order),
-// then the lock's names and the mystery's pair. Throws InvalidInput "path:line: ..." at the line
-// that is wrong.
+// then the lock's names, the mystery's pair and the predictions (each a predict row of the
+// lesson set at those values). Throws InvalidInput "path:line: ..." at the line that is wrong.
 void check_setup(const PreparedSetup& setup, const std::string& setup_path, lessons::Lesson& lesson);
+
+// What is wrong with `answer` as the class's answer to the lesson's predict row `row`: "" when
+// it is one of the row's choices or a number as the window takes it (ui/predictions.h), else
+// why not, naming the lesson's predictions or the row's choices.
+std::string prediction_problem(const lessons::Lesson& lesson, const std::string& row, const std::string& answer);
 
 }  // namespace frictionlab::ui

@@ -11,7 +11,9 @@ namespace frictionlab::ui {
 
 std::string Classroom::open_setup(const std::string& path) {
   try {
-    const ClassroomOptions options = setup_options(path, ClassroomOptions{});
+    ClassroomOptions base;
+    base.window = window_;
+    const ClassroomOptions options = setup_options(path, base);
     std::optional<Mystery> mystery;
     auto next = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     next->set_speed(playback_->speed());
@@ -19,6 +21,9 @@ std::string Classroom::open_setup(const std::string& path) {
     playback_ = std::move(next);
     mystery_ = std::move(mystery);
     lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
+    // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
+    predictions_ = options.predictions;
+    window_.predictions = options.window.predictions;
     forget_interaction();
     for (int k = 0; k < 2; ++k) {
       answer_text_[k][0] = '\0';
@@ -43,12 +48,28 @@ PreparedSetup Classroom::current_setup(const std::string& path) const {
   setup.lock.assign(lock_.begin(), lock_.end());
   if (mystery_) setup.mystery = mystery_->choice();
   setup.settings = lesson.settings();
+  setup.ask_predictions = window_.predictions;
+  // In the lesson's order; a box the class typed in and emptied again is no answer.
+  for (const lessons::Prediction& prediction : lesson.predictions()) {
+    const auto answer = predictions_.answers.find(prediction.expectation);
+    if (answer != predictions_.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
+  }
+  setup.revealed = predictions_.revealed;
   return setup;
 }
 
 std::string Classroom::save_setup(const std::string& path) {
   try {
-    write_setup(path, current_setup(path));
+    const PreparedSetup setup = current_setup(path);
+    // What the window marks as no number is refused here too: the file would not open again.
+    for (const PreparedSetup::Answer& answer : setup.answers) {
+      const std::string problem = prediction_problem(playback_->lesson(), answer.row, answer.text);
+      if (!problem.empty()) {
+        throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
+                           "; correct it or clear it in the theory panel, then save");
+      }
+    }
+    write_setup(path, setup);
     status_ = "Setup saved to " + path;
     return "";
   } catch (const InvalidInput& error) {
@@ -74,7 +95,7 @@ void Classroom::setup_popup() {
   const char* title = titles[static_cast<int>(setup_dialog_)];
   if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   const bool saving = setup_dialog_ == SetupDialog::save;
-  ImGui::TextUnformatted(saving ? "Save the lesson, its values, the lock and the mystery (its pair and seed) to:"
+  ImGui::TextUnformatted(saving ? "Save the lesson, its values, the lock, the mystery and the predictions to:"
                                 : "A setup file (path from the folder FrictionLab was started in, or from /):");
   ImGui::SetNextItemWidth(560.0f * s);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
