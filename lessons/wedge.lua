@@ -257,10 +257,13 @@ expect { "first slip", unit = "s",
     if seen and not t then return "slips" end  -- where the model says it never does
     if seen or time() >= duration then return seen or "never" end
   end,
-  -- Two and a half steps: the record says "slipping" at the end of a step, and the listener
+  -- Three and a half steps: the record says "slipping" at the end of a step; the listener
   -- judges a slip from the impulses of the step it began in (a block that must slip from the
-  -- start is held through the first step, judged, and shown slipping at the end of the second).
-  tolerance = function() return 2.5 * step_length() end }
+  -- start is held through the first step, judged, and shown slipping at the end of the second);
+  -- and a contact just past μs·N may be held a step more while the listener tells the
+  -- solver's leftover from a real excess (measured: up to 2.9 steps late, at ω = 0.1 rad/s).
+  -- The breakaway correction gives the slide back what the late steps held.
+  tolerance = function() return 3.5 * step_length() end }
 expect { "first lift-off", unit = "s",
   predicted = function()
     local t = first_event(turning, "lift-off")
