@@ -240,8 +240,11 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
       }
       const std::string where = entry.name + " with " + pairs.front() + " a mystery" + (revealed ? ", revealed" : "") +
                                 ", window " + screen.name;
-      const bool tab_shown = std::any_of(record.texts.begin(), record.texts.end(),
-                                         [](const ShownText& text) { return text.text.find("% off") != std::string::npos; });
+      // Its answers' line: kept until the reveal, then how far off.
+      const char* answered = revealed ? "% off" : "kept for the reveal";
+      const bool tab_shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+        return text.text.find(answered) != std::string::npos;
+      });
       EXPECT_TRUE(tab_shown) << where << ": the Mystery tab is not showing";
       check_texts(record, where);
     }

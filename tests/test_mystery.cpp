@@ -218,7 +218,9 @@ TEST(MysteryWindow, TypedAnswersAreJudgedAndABadOneSaysWhy) {
   char expected[32];
   std::snprintf(expected, sizeof expected, "%.1f %% off", 100.0 * std::abs(0.5 - truth.mu_s) / truth.mu_s);
   std::string texts = hands.texts();
-  EXPECT_NE(texts.find(expected), std::string::npos) << expected << " in\n" << texts;
+  // How far off waits for the reveal: two guesses and their closeness would give the value away.
+  EXPECT_EQ(texts.find("% off"), std::string::npos) << texts;
+  EXPECT_NE(texts.find("kept for the reveal"), std::string::npos) << texts;
   EXPECT_NE(texts.find("not yet"), std::string::npos) << "μk is still to come:\n" << texts;
 
   hands.click("mystery answer mu_k");
@@ -228,6 +230,9 @@ TEST(MysteryWindow, TypedAnswersAreJudgedAndABadOneSaysWhy) {
   texts = hands.texts();
   EXPECT_NE(texts.find("type a number from 0 to 2"), std::string::npos) << texts;
   EXPECT_FALSE(mystery->revealed()) << "answering reveals nothing";
+  hands.classroom().reveal_mystery();
+  texts = hands.texts();
+  EXPECT_NE(texts.find(expected), std::string::npos) << expected << " in\n" << texts;
 }
 
 TEST(MysteryWindow, TheMenuMakesAPairAMysteryAtTheStartOfAFreshRun) {

@@ -147,8 +147,11 @@ void Classroom::mystery_tab() {
       }
     }
     ImGui::SameLine();
-    // How far off, and once revealed the true value beside it.
-    std::string said = answers[k]->has_value() ? closeness_text(**answers[k], truths[k]) : "not yet";
+    // How far off, once revealed, with the true value beside it. Not before: a class told how
+    // far off each guess is finds the hidden value in two guesses.
+    std::string said = !answers[k]->has_value() ? "not yet"
+                       : mystery.revealed()     ? closeness_text(**answers[k], truths[k])
+                                                : "kept for the reveal";
     if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + exact_text(truths[k]);
     if (!answer_error_[k].empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
