@@ -274,5 +274,23 @@ TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
   }
 }
 
+// Projector text in a short plot (spring_pull's forces at the run's end, ±9 N): the y axis kept
+// one tick, "0", and could not be read. Its ends are labelled instead.
+TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
+  static FontsForLayout* large = [] {
+    auto* fonts = new FontsForLayout;
+    fonts->host.prepare(2.025f, ThemeName::light);
+    return fonts;
+  }();
+  large->host.make_current();
+  const Fonts& fonts = large->host.fonts();
+  LessonAt at("spring_pull", {}, 3.0);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(560.0f, 190.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  ASSERT_GE(layout.y_ticks.size(), 2u);
+  const float gap = layout.to_screen(0.0, layout.y_ticks.front()).y - layout.to_screen(0.0, layout.y_ticks.back()).y;
+  EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -435,6 +435,13 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         break;
       }
     }
+    // Down to one tick (often just "0"), the axis could not be read: its two ends are labelled
+    // instead, where the data area is tall enough to hold two labels apart.
+    if (layout.y_ticks.size() < 2 && data_height >= 1.35f * text && layout.y_high > layout.y_low) {
+      const double span = layout.y_high - layout.y_low;
+      layout.y_ticks = {layout.y_low, layout.y_high};
+      layout.y_tick_labels = {tick_text(layout.y_low, 0.1 * span), tick_text(layout.y_high, 0.1 * span)};
+    }
   }
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
