@@ -251,17 +251,22 @@ TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
   EXPECT_FALSE(legend_corner(low, high, size, 5, {ImVec2(10, 10), ImVec2(190, 10), ImVec2(10, 90), ImVec2(190, 90)}, 2).clear);
 }
 
-// Projector text (2 times larger) in the plot the window gives terrain on a 1920 × 1080
-// projector: four series and the slipping band. Before, the legend's rows above the data left
-// it no height and the plot was drawn empty; the y labels were printed on top of each other.
-TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
+// Projector text, 2.025 times the window's, on a context of its own made once.
+const Fonts& projector_fonts() {
   static FontsForLayout* large = [] {
     auto* fonts = new FontsForLayout;
     fonts->host.prepare(2.025f, ThemeName::light);
     return fonts;
   }();
   large->host.make_current();
-  const Fonts& fonts = large->host.fonts();
+  return large->host.fonts();
+}
+
+// Projector text (2 times larger) in the plot the window gives terrain on a 1920 × 1080
+// projector: four series and the slipping band. Before, the legend's rows above the data left
+// it no height and the plot was drawn empty; the y labels were printed on top of each other.
+TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
+  const Fonts& fonts = projector_fonts();
   LessonAt at("terrain", {}, 2.5);
   const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(590.0f, 200.0f), fonts);
   ASSERT_TRUE(layout.drawable);
@@ -277,13 +282,7 @@ TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
 // Projector text in a short plot (spring_pull's forces at the run's end, ±9 N): the y axis kept
 // one tick, "0", and could not be read. Its ends are labelled instead.
 TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
-  static FontsForLayout* large = [] {
-    auto* fonts = new FontsForLayout;
-    fonts->host.prepare(2.025f, ThemeName::light);
-    return fonts;
-  }();
-  large->host.make_current();
-  const Fonts& fonts = large->host.fonts();
+  const Fonts& fonts = projector_fonts();
   LessonAt at("spring_pull", {}, 3.0);
   const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(560.0f, 190.0f), fonts);
   ASSERT_TRUE(layout.drawable);

@@ -285,11 +285,16 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
   layout.drawable = width >= 20.0f && height >= 20.0f;
   if (!layout.drawable) return layout;
-  const int x_count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(width / (70.0f * s)));
-  for (const Tick& tick : ticks_every(axes.x, x_count)) {
-    layout.x_ticks.push_back(tick.value);
-    layout.x_tick_labels.push_back(tick.label);
-  }
+  // As many x ticks as the data area's width holds, unless the chart says how many.
+  const auto set_x_ticks = [&](float data_width) {
+    const int count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(data_width / (70.0f * s)));
+    layout.x_ticks.clear(), layout.x_tick_labels.clear();
+    for (const Tick& tick : ticks_every(axes.x, count)) {
+      layout.x_ticks.push_back(tick.value);
+      layout.x_tick_labels.push_back(tick.label);
+    }
+  };
+  set_x_ticks(width);
 
   // The points where they land; at most about two a pixel, the rest would be drawn over each other.
   const auto place = [&] {
@@ -380,14 +385,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
           for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) {
             layout.legend_at.push_back(ImVec2(layout.high_right.x + 8.0f * s, y));
           }
-          // Fewer x ticks for the narrower data, as many as its width holds.
-          const int narrower = chart.x_tick_count > 0 ? chart.x_tick_count
-                                                      : std::max(2, static_cast<int>((data_width - column) / (70.0f * s)));
-          layout.x_ticks.clear(), layout.x_tick_labels.clear();
-          for (const Tick& tick : ticks_every(axes.x, narrower)) {
-            layout.x_ticks.push_back(tick.value);
-            layout.x_tick_labels.push_back(tick.label);
-          }
+          set_x_ticks(data_width - column);  // fewer for the narrower data
           place();
         } else if (layout.low_left.y - (layout.high_right.y + rows_height) >= 30.0f * s) {
           layout.legend_at = rows;
