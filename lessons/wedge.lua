@@ -52,9 +52,9 @@ parameter { "a_x_omega", 2, min = 0, max = 10, unit = "rad/s", text = "how fast 
 pair { "wood", "wood", mu_s = 0.25, mu_k = 0.18, sliders = { "mu_s", "mu_k" } }
 
 -- Every parameter rebuilds the lesson when it changes (the models below read them all), so
--- they are copied once here. Each step calls the functions below a few times, and a local is
--- much cheaper to read than param.NAME or math.sin, which go through tables.
-local sin, cos, floor = math.sin, math.cos, math.floor
+-- they are copied once here. The plots' theory curves call the functions below for every point
+-- they draw, and a local is cheaper to read than param.NAME or math.sin, which go through tables.
+local sin, floor = math.sin, math.floor
 local theta0, omega = math.rad(param.theta0), param.omega
 local a_x, a_x_omega = param.a_x, param.a_x_omega
 local function theta(t) return theta0 * sin(omega * t) end
@@ -70,8 +70,12 @@ end
 -- swings the surface about the pivot, as the article's wedge does.
 local wedge = polygon { "wedge", material = "wood", kind = "kinematic", x = 0, y = y0,
                         points = { { -half, -0.12 }, { half, -0.12 }, { half, 0 }, { -half, 0 } } }
-local degrees = 180 / math.pi
-drive { wedge, position = function(t) return wedge_x(t), y0 end, angle = function(t) return degrees * theta(t) end }
+-- The plank's path as numbers, which the runtime works out itself each step (a function of time
+-- would be a call into the script, four a step): θ0·sin(ω·t), and x = ½·a_x·t², or for a
+-- swinging a_x, (a_x/ω_a²)·(1 − cos ω_a·t) = a_x/ω_a² + (a_x/ω_a²)·sin(ω_a·t − π/2).
+local sway = a_x_omega == 0 and { acceleration = a_x }
+  or { offset = a_x / a_x_omega ^ 2, swing = a_x / a_x_omega ^ 2, omega = a_x_omega, phase = -math.pi / 2 }
+drive { wedge, position = { x = sway, y = y0 }, angle = { swing = param.theta0, omega = omega } }
 -- The models start the block at rest on the surface. The driven plank moves through its first
 -- step at the mean velocities of that step, so the block starts with them too: turning with
 -- the surface (θ0·ω at first), its centre carried round the pivot and along with it. Started
@@ -112,6 +116,11 @@ local function sample(t)
   if t > horizon - 2 * spacing and horizon < longest then solve(math.max(2 * horizon, t + 1)) end
   return math.min(floor(t / spacing + 0.5) + 1, #reduced.slide)
 end
+-- The reduced model solved at least to t: what the probes below read their lists from.
+local function reduced_to(t)
+  sample(t)
+  return reduced
+end
 -- A contact's force is the mean over the step just taken: the models' at the middle of it.
 local function mid_step(turned, field, t)
   local k = sample(t)  -- first: it may solve further
@@ -121,29 +130,17 @@ end
 
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(block, wedge)
--- How far the block's centre is up the slope from the pivot, along the surface.
-local function up_the_slope(t)
-  local th = theta(t)
-  return (block.x - wedge_x(t)) * cos(th) + (block.y - y0) * sin(th)
-end
-local start = up_the_slope(0)
--- Probes are read after each step in the order they are declared. The first, slide, notes the
--- step's time and sample for the rest, so that time() is asked once a step: each call from Lua
--- into the runtime costs as much as a dozen lines of Lua, and this lesson must keep up with
--- 2000 times real time.
-local now, k_now = 0, 1
-probe { "slide", unit = "m", function()  -- down the slope positive
-  now = time()
-  k_now = sample(now)
-  return start - up_the_slope(now)
-end }
-probe { "slide_reduced", unit = "m", function() return reduced.slide[k_now] end }
+-- Every probe here is read by the runtime without running a line of the script: this lesson
+-- must keep up with 2000 times real time, and each call into the script costs as much as a few
+-- dozen lines of it. The slide is how far the block's centre has moved down the slope, in the
+-- plank's own axes (its x axis runs up the surface from the pivot); the models' lists are
+-- read at the probe's time.
+probe { "slide", unit = "m", read = { block, "distance", along = { -1, 0 }, relative_to = wedge } }
+probe { "slide_reduced", unit = "m", samples = function(t) return reduced_to(t).slide end, every = spacing }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 -- A contact's force is the mean over the step just taken: the model's at the middle of it.
-probe { "normal_reduced", unit = "N", function()
-  local list = reduced.normal
-  return 0.5 * (list[k_now] + list[math.max(k_now - 1, 1)])
-end }
+probe { "normal_reduced", unit = "N", samples = function(t) return reduced_to(t).normal end, every = spacing,
+        delay = 0.5 * h }
 probe { "slipping", read = { touch, "slipping" } }
 probe { "tilt", unit = "°", read = { block, "angle" } }
 
@@ -160,7 +157,7 @@ plot { "Normal force on the block", kind = "time", y = { "normal_force", "normal
 for _, book in ipairs { { "kinetic_gained", "kinetic" }, { "work_pseudo", "work_pseudo" },
                         { "work_gravity", "work_gravity" }, { "work_friction", "work_friction" } } do
   local field = book[2]
-  probe { book[1], unit = "J", function() return reduced[field][k_now] end }
+  probe { book[1], unit = "J", samples = function(t) return reduced_to(t)[field] end, every = spacing }
 end
 plot { "Energy books (the article's model)", kind = "time",
   y = { "kinetic_gained", "work_pseudo", "work_gravity", "work_friction" },

@@ -32,6 +32,8 @@ double checked(double value, double t, Describe describe) {
 
 }  // namespace
 
+double Motion::at(double t) const { return offset + t * (speed + 0.5 * acceleration * t) + swing * std::sin(omega * t + phase); }
+
 void validate(const StepSettings& s) {
   using validation::require_in_range;
   require_in_range("hz", s.hz, 1.0, 100000.0, false, " Hz");

@@ -34,6 +34,15 @@ using VectorOfTime = std::function<b2Vec2(double t)>;
 using PointOfTime = std::function<std::array<double, 2>(double t)>;
 using ScalarOfTime = std::function<double(double t)>;
 
+// A driven coordinate's path given as numbers rather than as a script function, worked out in
+// doubles without running any script: offset + speed·t + ½·acceleration·t² + swing·sin(omega·t
+// + phase). A shaken table, a belt at a steady speed, a truck speeding up, a swinging plank.
+struct Motion {
+  double offset = 0.0, speed = 0.0, acceleration = 0.0;
+  double swing = 0.0, omega = 0.0, phase = 0.0;  // amplitude, rad/s, rad
+  double at(double t) const;
+};
+
 // A spring from a point on a body to either a point on another body or a hand that moves
 // along `hand` (world coordinates, a function of time).
 struct Spring {

@@ -143,6 +143,14 @@ LessonBuild& build_of(lua_State* state);
 std::function<std::array<double, 2>(double)> function_of_time(LessonBuild& build, int reference, int count,
                                                               std::string what, bool is_force = false);
 
+// probe{ samples = function(t) return list end, every = s, delay = d }: the value at the
+// probe's time t is the list read at t − d, entry k + 1 being the value at k·s, straight
+// between entries. The function (kept at `function` in the registry) is asked for the list
+// at the first reading and again whenever the run passes its end; a list no longer than the
+// one before is held at its last value from then on. `what` names the probe in errors, which
+// are ScriptError placed at the function.
+std::function<double()> sampled_reading(LessonBuild& build, int function, double every, double delay, std::string what);
+
 // Asks every plot's theory curves for x (or t) from 0 to 1, and their active functions once,
 // so that a curve that cannot work is refused with the script rather than first seen drawn.
 // Throws ScriptError placed at the curve.

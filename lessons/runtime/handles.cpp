@@ -103,6 +103,9 @@ struct Handle {
   b2Vec2 along{1.0f, 0.0f};
   b2Vec2 start{0.0f, 0.0f};
   double scale = 1.0;
+  // Positions in another body's own axes (x, y and distance): where a block is along a plank
+  // that moves and turns, read without a line of script.
+  const b2Body* frame = nullptr;
 };
 
 Handle copy_handle(const void* data, HandleType type) {
@@ -176,7 +179,8 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
   const b2Body* body = handle.body;
   if (handle.type == body_type) {
     // As in the CSV: a body's x, y are its origin and its vx, vy its centre of mass's velocity.
-    const b2Vec2 p = handle.at_point ? body->GetWorldPoint(handle.point) : body->GetPosition();
+    b2Vec2 p = handle.at_point ? body->GetWorldPoint(handle.point) : body->GetPosition();
+    if (handle.frame != nullptr) p = handle.frame->GetLocalPoint(p);
     const b2Vec2 v = handle.at_point ? body->GetLinearVelocityFromLocalPoint(handle.point) : body->GetLinearVelocity();
     switch (field) {
       case Field::x: return p.x;
@@ -502,7 +506,7 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
   index = lua_absindex(state, index);
   const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
   if (!lua_istable(state, index)) throw InvalidInput(expected + "; got " + describe(state, index));
-  Fields options(state, index, what + ": read", {"at", "along", "scale"});
+  Fields options(state, index, what + ": read", {"at", "along", "scale", "relative_to"});
   lua_rawgeti(state, index, 1);
   std::optional<Handle> handle = any_handle(state, -1);
   lua_rawgeti(state, index, 2);
@@ -525,11 +529,22 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
   }
   handle->at_point = options.has("at");
   handle->point = options.point("at", origin_point);
+  if (options.has("relative_to")) {
+    if (handle->type != body_type || (*field != Field::x && *field != Field::y && *field != Field::distance)) {
+      throw InvalidInput(what + ": relative_to is for a body's x, y and distance (positions in the other body's axes)");
+    }
+    options.push("relative_to");
+    handle->frame = body_handle(state, -1, what + ": relative_to")->body;
+    lua_pop(state, 1);
+    if (handle->frame == handle->body) throw InvalidInput(what + ": relative_to names the body read; name another body");
+  }
   if (directed) {
     const b2Vec2 along = options.point("along", origin_point);
     if (along.Length() < 1e-6f) throw InvalidInput(what + ": along must be a direction, not {0, 0}");
     handle->along = (1.0f / along.Length()) * along;
-    handle->start = handle->body->GetWorldPoint(handle->point);  // distance counts from where it starts
+    // Distance counts from where the point starts (in the other body's axes with relative_to).
+    handle->start = handle->body->GetWorldPoint(handle->point);
+    if (handle->frame != nullptr) handle->start = handle->frame->GetLocalPoint(handle->start);
   }
   handle->scale = options.number("scale", "", 1.0);
   const Scene* scene = build_of(state).scene.get();

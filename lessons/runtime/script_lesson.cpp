@@ -479,16 +479,35 @@ int probe(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "probe");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "probe", {"unit", "read"});
+    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay"});
     const std::string name = fields.name();
     if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
     const std::string unit = fields.text("unit", "");
     const size_t index = build.probes.size();
+    lua_rawgeti(state, 1, 2);
+    const bool has_function = !lua_isnil(state, -1);
+    lua_pop(state, 1);
+    if (fields.has("read") + fields.has("samples") + has_function > 1) {
+      throw InvalidInput(fields.what() + ": give one of read = { ... }, samples = function(t) ... end or a function, "
+                         "not two");
+    }
+    if (!fields.has("samples") && (fields.has("every") || fields.has("delay"))) {
+      throw InvalidInput(fields.what() + ": every and delay go with samples = function(t) return list end");
+    }
+    if (fields.has("samples")) {
+      if (!fields.push_function("samples")) {
+        fields.push("samples");
+        throw InvalidInput(fields.what() + ": samples must be a function(t) returning a list of values, as in samples = "
+                           "function(t) return model.slide end; got " + describe(state, -1));
+      }
+      const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
+      const double every = fields.number_in("every", "s", 0.0, 1e6, true);
+      const double delay = fields.number_in("delay", "s", 0.0, 0.0, 1e6);
+      build.scene->add_probe(name, sampled_reading(build, reference, every, delay, fields.what()));
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0});
+      return 0;
+    }
     if (fields.has("read")) {
-      lua_rawgeti(state, 1, 2);
-      const bool also_function = !lua_isnil(state, -1);
-      lua_pop(state, 1);
-      if (also_function) throw InvalidInput(fields.what() + ": give either read = { ... } or a function, not both");
       fields.push("read");
       build.scene->add_probe(name, reading(state, -1, fields.what()));
       lua_pop(state, 1);

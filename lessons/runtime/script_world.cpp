@@ -634,6 +634,33 @@ int force(lua_State* state) {
   });
 }
 
+// A driven coordinate's path as numbers (drive's position = { x = ..., y = ... } and angle): a
+// number holds it there, and { offset, speed, acceleration, swing, omega, phase } is
+// Motion::at. Left out: `fixed`, where the body stands.
+Motion motion_field(lua_State* state, Fields& fields, const char* key, double fixed, const std::string& where) {
+  Motion motion;
+  motion.offset = fixed;
+  fields.push(key);
+  const std::string what = where + ": " + key;
+  if (lua_type(state, -1) == LUA_TNUMBER) {
+    motion.offset = fields.number_in(key, "", -1e9, 1e9);
+  } else if (lua_istable(state, -1)) {
+    Fields terms(state, -1, what, {"offset", "speed", "acceleration", "swing", "omega", "phase"});
+    motion.offset = terms.number_in("offset", "", 0.0, -1e9, 1e9);
+    motion.speed = terms.number_in("speed", "per s", 0.0, -1e9, 1e9);
+    motion.acceleration = terms.number_in("acceleration", "per s²", 0.0, -1e9, 1e9);
+    motion.swing = terms.number_in("swing", "", 0.0, -1e9, 1e9);
+    motion.omega = terms.number_in("omega", "rad/s", 0.0, -1e6, 1e6);
+    motion.phase = terms.number_in("phase", "rad", 0.0, -1e6, 1e6);
+  } else if (!lua_isnil(state, -1)) {
+    throw InvalidInput(what + " must be a number, or a motion such as { offset = 0, speed = 0.2 } or { swing = 10, "
+                       "omega = 3 }" + (std::string(key) == "angle" ? ", or a function(t) returning degrees" : "") +
+                       "; got " + describe(state, -1));
+  }
+  lua_pop(state, 1);
+  return motion;
+}
+
 int drive(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "drive");
@@ -652,6 +679,18 @@ int drive(lua_State* state) {
     ScalarOfTime angle;
     if (fields.push_function("position")) {
       position = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 2, what + ": position (t -> x, y in m)");
+    } else if (fields.has("position")) {
+      fields.push("position");
+      const std::string where = what + ": position";
+      if (!lua_istable(state, -1)) {
+        throw InvalidInput(where + " must be a function(t) returning x, y, or { x = ..., y = ... } with a motion for "
+                           "each; got " + describe(state, -1));
+      }
+      Fields coordinates(state, -1, where, {"x", "y"});
+      const Motion x = motion_field(state, coordinates, "x", body->GetPosition().x, where);
+      const Motion y = motion_field(state, coordinates, "y", body->GetPosition().y, where);
+      lua_pop(state, 1);
+      position = [x, y](double t) { return std::array<double, 2>{x.at(t), y.at(t)}; };
     } else {
       const std::array<double, 2> fixed{body->GetPosition().x, body->GetPosition().y};
       position = [fixed](double) { return fixed; };
@@ -660,8 +699,8 @@ int drive(lua_State* state) {
       const auto turn = function_of_time(build, luaL_ref(state, LUA_REGISTRYINDEX), 1, what + ": angle (t -> degrees)");
       angle = [turn](double t) { return turn(t)[0] * degrees; };
     } else {
-      const double fixed = body->GetAngle();
-      angle = [fixed](double) { return fixed; };
+      const Motion turn = motion_field(state, fields, "angle", body->GetAngle() / degrees, what);
+      angle = [turn](double t) { return turn.at(t) * degrees; };
     }
     build.scene->drive(body, position, angle);
     return 0;
