@@ -90,11 +90,18 @@ void StabilityMapTab::draw_tab(const lessons::Lesson& lesson, const HiddenValues
     ImGui::PopTextWrapPos();
     note_text(none);
   } else {
-    if (ImGui::Button(window_open ? "Hide the map" : "Show the map")) window_open = !window_open;
+    const char* button = window_open ? "Hide the map" : "Show the map";
+    if (ImGui::Button(button)) window_open = !window_open;
     remember_item(controls, "stability map");
-    ImGui::SameLine();
-    ImGui::TextDisabled("the regularized law here");
-    note_text("the regularized law here");
+    note_text_centred(button, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    // Beside the button when it fits: the projector's column is narrow for its large text.
+    const char* what = "the regularized law here";
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(what).x <=
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+      ImGui::SameLine();
+    }
+    ImGui::TextDisabled("%s", what);
+    note_text(what);
     ImGui::PushTextWrapPos(0.0f);
     for (const std::string& line : words) shown_text(line.c_str());
     ImGui::PopTextWrapPos();
