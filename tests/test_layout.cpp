@@ -223,6 +223,9 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
     options.window.help = false;
     options.window.projector = screen.projector;
     options.mystery = MysteryChoice{pairs.front(), 1};
+    // No predictions asked: they would keep the Predict tab in front of the Mystery tab (the
+    // tab opened by a click, with predictions asked: WindowTabsLayout).
+    options.window.predictions = false;
     Classroom window(options);
     window.answer_mystery(0.5, 0.25);
     for (const bool revealed : {false, true}) {

@@ -151,7 +151,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   style.hidden = hidden_values();
   style.more_tabs = [this, s] {
-    if (mystery_) mystery_tab_.draw_tab(*mystery_, theme(window_.theme), controls_);
+    if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
     if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
       change_settings(*use);
     }

@@ -14,6 +14,16 @@ namespace {
 
 const char* const coefficient_letters[2] = {"\u03bcs", "\u03bck"};
 
+// The theory's tab in the tab bar being drawn, when it was drawn there this frame: a column too
+// short for the theory's own panel puts it first among the tabs (ui/frame.cpp names it
+// "Predict###theory tab" until the reveal; a tab's id is made from what follows "###").
+ImGuiTabItem* theory_tab_beside() {
+  ImGuiTabBar* bar = ImGui::GetCurrentContext()->CurrentTabBar;
+  if (bar == nullptr) return nullptr;
+  ImGuiTabItem* tab = ImGui::TabBarFindTabByID(bar, ImGui::GetID("###theory tab"));
+  return tab != nullptr && tab->LastFrameVisible == ImGui::GetFrameCount() ? tab : nullptr;
+}
+
 }  // namespace
 
 void MysteryTab::begin() {
@@ -55,9 +65,19 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   return said;
 }
 
-void MysteryTab::draw_tab(Mystery& mystery, const Theme& colours, ControlPlaces& controls) {
-  const bool open = begin_tab("Mystery###mystery", select ? ImGuiTabItemFlags_SetSelected : 0);
-  select = false;
+void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls) {
+  ImGuiTabItemFlags flags = 0;
+  if (select) {
+    // The class predicts before it measures: while the predictions are asked and their tab is
+    // beside this one, that tab comes forward (whatever tab the last lesson left open), not this.
+    if (ImGuiTabItem* predict = predicting ? theory_tab_beside() : nullptr) {
+      ImGui::GetCurrentContext()->CurrentTabBar->NextSelectedTabId = predict->ID;
+    } else {
+      flags = ImGuiTabItemFlags_SetSelected;
+    }
+    select = false;
+  }
+  const bool open = begin_tab("Mystery###mystery", flags);
   remember_item(controls, "Mystery tab");
   if (!open) return;
   ImGui::PushTextWrapPos(0.0f);

@@ -22,12 +22,14 @@ struct MysteryTab {
   char answer_text[2][32] = {};  // μs, μk as typed
   std::string answer_error[2];   // why a typed answer was refused
   int menu_seed = 1;
-  bool select = false;           // a mystery just began: the tab is shown on the next frame
+  bool select = false;           // a mystery just began: the tab (or the Predict tab) comes forward
 
   // A new mystery: no answers yet, and the tab comes forward.
   void begin();
-  // The tab, in the tab bar being drawn: the answers go into `mystery`.
-  void draw_tab(Mystery& mystery, const Theme& colours, ControlPlaces& controls);
+  // The tab, in the tab bar being drawn: the answers go into `mystery`. `predicting`: the class's
+  // predictions are asked and the theory kept back; a mystery just begun then leaves the
+  // Predict tab in front when it shares this tab bar.
+  void draw_tab(Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls);
   // The Mystery menu, acting on the classroom's lesson. Returns what the status line should say
   // when the teacher chose a pair ("" for a mystery made).
   std::optional<std::string> draw_menu(Classroom& classroom, ControlPlaces& controls);
