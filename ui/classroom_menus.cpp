@@ -1,7 +1,6 @@
 // The classroom's menus (lessons, simulation settings, view) and the help panel.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <vector>
 

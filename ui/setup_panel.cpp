@@ -1,11 +1,6 @@
 // Prepared setups in the classroom: the window's state as a setup file (ui/setup_file.h), saving
 // it, and opening one in place of the running lesson (the Lesson menu's dialog: ui/dialogs.h).
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-
 #include "ui/classroom.h"
-#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 
