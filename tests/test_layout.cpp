@@ -223,6 +223,9 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
     options.window.help = false;
     options.window.projector = screen.projector;
     options.mystery = MysteryChoice{pairs.front(), 1};
+    // No predictions asked: they would keep the Predict tab in front of the Mystery tab (the
+    // tab opened by a click, with predictions asked: WindowTabsLayout).
+    options.window.predictions = false;
     Classroom window(options);
     window.answer_mystery(0.5, 0.25);
     for (const bool revealed : {false, true}) {
@@ -331,6 +334,130 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
     }
   }
 }
+
+}  // namespace
+}  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// The window's own tabs as a teacher opens them, each by a click on its name: the Cheapest
+// setting tab (as it opens, with a tolerance refused, and with the cheapest setting found), the
+// Stability map tab, and the Mystery tab of a lesson with a mystery pair. Every lesson, at each
+// size, light and dark: every text of the tab whole.
+class WindowTabs {
+ public:
+  WindowTabs(const WindowScreen& screen, ClassroomOptions options)
+      : display_(static_cast<float>(screen.width), static_cast<float>(screen.height)) {
+    options.lesson = lessons::resolve_lesson(options.lesson);
+    options.window.help = false;
+    options.window.projector = screen.projector;
+    window_ = std::make_unique<Classroom>(options);
+    // A tab bar lays its tabs out in its first frame: a hand finds them from the second.
+    frame();
+    frame();
+  }
+  Classroom& window() { return *window_; }
+  void frame(FrameRecord* record = nullptr) {
+    gl_.make_current();
+    const Fonts& fonts = host_.prepare(window_->ui_scale(display_), window_->window_settings().theme);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display_;
+    io.DeltaTime = 1.0f / 60.0f;
+    host_.begin_frame();
+    window_->frame(fonts, display_, 0.0, record);
+    ImGui::Render();
+  }
+  void click(const std::string& control) {
+    frame();
+    const std::optional<ImRect> rect = window_->control(control);
+    ASSERT_TRUE(rect.has_value()) << "no " << control << " was drawn";
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = rect->GetCenter();
+    frame();
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+    io.MousePos = ImVec2(-1.0f, -1.0f);  // no tooltip over what is checked
+  }
+  void type(const std::string& text) {
+    for (const char c : text) ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
+    frame();
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = true;
+    frame();
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = false;
+    frame();
+  }
+  // The frame after a few have let the tab bar settle, light and dark, each checked whole and
+  // for `shows` (a text only that tab draws).
+  void check(const std::string& where, const std::string& shows) {
+    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+      window_->window_settings().theme = theme;
+      frame();
+      frame();
+      FrameRecord record;
+      frame(&record);
+      const std::string said = where + (theme == ThemeName::dark ? ", dark" : "");
+      const bool shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+        return text.text.find(shows) != std::string::npos;
+      });
+      EXPECT_TRUE(shown) << said << ": no \"" << shows << "\": the tab is not showing";
+      check_texts(record, said);
+    }
+  }
+
+ private:
+  HeadlessContext gl_;
+  ImGuiHost host_{nullptr};
+  ImVec2 display_;
+  std::unique_ptr<Classroom> window_;
+};
+
+class WindowTabsLayout : public ::testing::TestWithParam<WindowScreen> {};
+
+TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIsSelected) {
+  const WindowScreen& screen = GetParam();
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    const std::string where = entry.name + ", window " + screen.name;
+    {
+      ClassroomOptions options;
+      options.lesson = entry.name;
+      WindowTabs tabs(screen, options);
+      tabs.click("Cheapest setting tab");
+      tabs.check(where + ", Cheapest setting tab", "Runs this lesson at each setting");
+      tabs.click("Stability map tab");
+      const bool has_map = !tabs.window().stability_chart().cells.empty();
+      tabs.check(where + ", Stability map tab", has_map ? "the regularized law here" : "This lesson has no \u03bcs");
+    }
+    const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(lessons::resolve_lesson(entry.name)));
+    if (pairs.empty()) continue;
+    ClassroomOptions options;
+    options.lesson = entry.name;
+    options.mystery = MysteryChoice{pairs.front(), 1};
+    WindowTabs tabs(screen, options);
+    tabs.window().answer_mystery(0.5, 0.25);
+    tabs.click("Mystery tab");
+    tabs.check(where + " with " + pairs.front() + " a mystery, Mystery tab", "kept for the reveal");
+  }
+  // A tolerance refused, then the cheapest setting found and named.
+  ClassroomOptions options;
+  options.lesson = "incline";
+  WindowTabs tabs(screen, options);
+  tabs.click("Cheapest setting tab");
+  tabs.click("tolerance");
+  tabs.type("-1");
+  tabs.check(std::string("incline, window ") + screen.name + ", a tolerance refused", "must be a positive number");
+  tabs.click("tolerance");
+  tabs.type("0.01");
+  tabs.click("measure");
+  for (int i = 0; i < 100 && tabs.window().control("use it") == std::nullopt; ++i) tabs.frame();
+  ASSERT_TRUE(tabs.window().control("use it").has_value()) << "the search did not end";
+  tabs.check(std::string("incline, window ") + screen.name + ", the cheapest setting found", "Cheapest within");
+}
+
+INSTANTIATE_TEST_SUITE_P(Screens, WindowTabsLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
 }  // namespace
 }  // namespace frictionlab::ui

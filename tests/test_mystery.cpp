@@ -172,9 +172,16 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
     if (GetParam() != Theory::predict_first) {
       EXPECT_NE(texts.find("hidden"), std::string::npos) << "the theory's values are hidden:\n" << texts;
     }
-    if (GetParam() != Theory::predictions_revealed) {  // there the Theory tab is showing instead
+    // With predictions asked the Predict (or Theory) tab is in front, the Mystery tab a click away.
+    if (GetParam() == Theory::table) {
       EXPECT_NE(texts.find("Measure \u03bcs and \u03bck of aluminium/wood:"), std::string::npos) << texts;
     }
+  }
+  if (GetParam() != Theory::table) {
+    hands.click_text("Mystery###mystery");
+    const std::string tab = hands.texts();
+    EXPECT_NE(tab.find("Measure \u03bcs and \u03bck of aluminium/wood:"), std::string::npos) << tab;
+    EXPECT_FALSE(mentions(tab, truth.mu_s) || mentions(tab, truth.mu_k)) << tab;
   }
   EXPECT_FALSE(window.control("mu_s slider").has_value()) << "no slider to read the value off";
   EXPECT_FALSE(window.control("mu_k value").has_value());
@@ -185,7 +192,6 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   EXPECT_FALSE(mentions(window.window_title(), truth.mu_s) || mentions(window.window_title(), truth.mu_k));
   EXPECT_NE(window.window_title().find("mystery"), std::string::npos) << window.window_title();
 
-  if (GetParam() == Theory::predictions_revealed) hands.click_text("Mystery###mystery");
   hands.click("mystery reveal");
   ASSERT_TRUE(window.mystery()->revealed());
   const std::string revealed = hands.texts();
@@ -209,6 +215,8 @@ TEST(MysteryWindow, TypedAnswersAreJudgedAndABadOneSaysWhy) {
   ClassroomHands hands(mystery_options("spring_pull", "aluminium/wood", window_seed));
   const MysteryValues truth = mystery_values(window_seed);
   hands.texts();
+  // The class predicts first (the Predict tab is in front); then it measures, in the Mystery tab.
+  hands.click_text("Mystery###mystery");
   hands.click("mystery answer mu_s");
   hands.type("0.5");
   hands.press_enter();
@@ -318,6 +326,7 @@ TEST(MysteryWindow, TheAnswersAndTheRevealAreInSightInProjectorMode) {
   ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
   hands.classroom().playback().run_to(3.0);
   hands.texts();
+  hands.click_text("Mystery###mystery");  // the Predict tab was in front
   hands.click("mystery answer mu_s");
   hands.type("0.55");
   hands.press_enter();

@@ -406,3 +406,61 @@ TEST(SetupFile, SavingNeverWritesOverAScriptOrAnythingButASetupItWrote) {
 
 }  // namespace
 }  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// A prepared setup with a mystery and predictions to take opens on what the class predicts. In
+// projector mode the predictions share the column's tab bar with the Mystery tab: the Predict
+// tab is the one shown, also when another tab was chosen before. Where they have a panel of
+// their own (1280 × 720) the Mystery tab comes forward beside it, and so it does once the
+// theory shows.
+TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
+  ClassroomHands teacher(prepared());
+  // Not in a window's folder: each window below has that folder's name, and takes it away when it closes.
+  const fs::path folder = fs::temp_directory_path() / ("frictionlab_predict_first_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string path = (folder / "mystery.setup").string();
+  ASSERT_EQ(teacher.classroom().save_setup(path), "");
+  // The same setup for a teacher who takes no predictions: the theory shows from the start.
+  const std::string quiet = (folder / "quiet.setup").string();
+  teacher.classroom().window_settings().predictions = false;
+  ASSERT_EQ(teacher.classroom().save_setup(quiet), "");
+  const lessons::Prediction& first = teacher.lesson().predictions().at(0);
+  const std::string predicted =
+      "prediction " + first.expectation + (first.is_choice() ? ": " + first.choices.front() : std::string());
+  const std::string mystery_heading = "Measure \u03bcs and \u03bck of plastic/wood";
+  struct Screen {
+    const char* name;
+    ImVec2 size;
+    bool projector, mystery_shown;
+  };
+  for (const Screen& screen : {Screen{"projector 1920x1080", ImVec2(1920.0f, 1080.0f), true, false},
+                               Screen{"1280x720", ImVec2(1280.0f, 720.0f), false, true}}) {
+    ClassroomOptions options;
+    options.lesson = "incline";
+    options.window.projector = screen.projector;
+    ClassroomHands hands(options, screen.size);
+    hands.frame();
+    hands.frame();
+    hands.click_text("Energy###energy");  // the tab the last class left open
+    ASSERT_EQ(hands.classroom().open_setup(path), "");
+    std::string texts = hands.texts();
+    EXPECT_TRUE(hands.classroom().control(predicted).has_value()) << screen.name << ": " << predicted << " not shown in\n" << texts;
+    EXPECT_EQ(texts.find(mystery_heading) != std::string::npos, screen.mystery_shown) << screen.name << ":\n" << texts;
+    // By the command line's --setup too.
+    ClassroomOptions base;
+    base.window.projector = screen.projector;
+    ClassroomHands opened(setup_options(path, base), screen.size);
+    texts = opened.texts();
+    EXPECT_TRUE(opened.classroom().control(predicted).has_value()) << screen.name << ", --setup:\n" << texts;
+    EXPECT_EQ(texts.find(mystery_heading) != std::string::npos, screen.mystery_shown) << screen.name << ", --setup:\n" << texts;
+    // No predictions taken: the Mystery tab is what the class works in.
+    ASSERT_EQ(hands.classroom().open_setup(quiet), "");
+    EXPECT_NE(hands.texts().find(mystery_heading), std::string::npos) << screen.name << ", no predictions taken";
+  }
+  fs::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

@@ -33,7 +33,7 @@ Classroom::Classroom(ClassroomOptions options)
   try {
     playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
     check_lock(playback_->lesson());
-    select_mystery_tab_ = mystery_.has_value();
+    if (mystery_) mystery_tab_.begin();
     predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
@@ -117,7 +117,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   const float s = fonts.scale;
   handle_keys();
   // One setting of the cheapest-setting search a frame: the window stays live while it measures.
-  if (recommender_ && !recommender_->done()) recommender_->run_next();
+  cheapest_.measure_next();
   playback_->advance(wall_seconds);
   playback_->watch_file(wall_seconds);
   try_failed_script(wall_seconds);
@@ -150,12 +150,14 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
   }
   style.hidden = hidden_values();
-  style.more_tabs = [this] {
-    mystery_tab();
-    cheapest_setting_tab();
+  style.more_tabs = [this, s] {
+    if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
+    if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
+      change_settings(*use);
+    }
     // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
     // (whose boundary would give μs away until the reveal anyway).
-    if (!mystery_) stability_map_tab();
+    if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   predictions_style(style);
   ImGui::PushFont(fonts.body);
@@ -171,9 +173,11 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
            layout.world_size.x - 12.0f * s);
   transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
   help_panel();
-  stability_map_window();
-  open_script_popup();
-  setup_popup();
+  stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
+  open_script_.draw(*this, s, theme(window_.theme));
+  if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
+    status_ = said;
+  }
   ImGui::PopFont();
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
@@ -214,8 +218,7 @@ void Classroom::handle_keys() {
 }
 
 bool Classroom::idle() const {
-  const bool searching = recommender_ != nullptr && !recommender_->done();
-  return !playback_->playing() && !searching && !hand_held_ && !panning_from_ && !screenshot_request_;
+  return !playback_->playing() && !cheapest_.measuring() && !hand_held_ && !panning_from_ && !screenshot_request_;
 }
 
 void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {

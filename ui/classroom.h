@@ -18,14 +18,17 @@
 #include <string>
 #include <vector>
 
-#include "physics/recommend.h"
-#include "physics/stability.h"
 #include "ui/chart.h"
+#include "ui/dialogs.h"
+#include "ui/cheapest_setting_tab.h"
+#include "ui/control_places.h"
 #include "ui/frame.h"
 #include "ui/keys.h"
 #include "ui/measuring_tools.h"
 #include "ui/mystery.h"
+#include "ui/mystery_tab.h"
 #include "ui/setup_file.h"
+#include "ui/stability_map_tab.h"
 #include "ui/playback.h"
 #include "ui/predictions.h"
 #include "ui/settings.h"
@@ -134,10 +137,10 @@ class Classroom {
   // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
   std::optional<ImRect> control(const std::string& name) const;
   // The Cheapest setting tab's tolerance as typed, and whether a search was started.
-  double cheapest_tolerance() const { return recommend_tolerance_; }
-  bool cheapest_started() const { return recommender_ != nullptr; }
+  double cheapest_tolerance() const { return cheapest_.tolerance; }
+  bool cheapest_started() const { return cheapest_.started(); }
   // The Stability map tab's chart as last drawn: the map and this lesson's marks.
-  const Chart& stability_chart() const { return stability_chart_; }
+  const Chart& stability_chart() const { return stability_.chart; }
   bool shown(const std::string& control_name) const;  // --lock
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
   // bodies. The first one, or the one whose strip holds `point`.
@@ -178,14 +181,9 @@ class Classroom {
   };
   TransportShape transport_shape(float width) const;
   void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
-  void cheapest_setting_tab();
-  void mystery_menu();
-  void mystery_tab();
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
   // would take its pair away (a material chosen) is put back, with why beside its control.
   void keep_mystery(const std::string& name, const std::string& before);
-  // The Lesson menu's dialog that opens a setup or saves one, by its path.
-  void setup_popup();
   // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
   // (then made in `mystery`). Throws as Playback does, and InvalidInput for a pair the lesson
   // does not have or a value of the mystery's in `overrides`.
@@ -194,9 +192,6 @@ class Classroom {
                                            std::optional<Mystery>& mystery) const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
-  void stability_map_tab();
-  void stability_map_window();
-  void update_stability_chart();
   // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
   // (with its presets) comes before it. The panel draws them; its height is counted from them.
   // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
@@ -223,7 +218,6 @@ class Classroom {
   // what they hide (ui/classroom_predictions.cpp).
   void predictions_style(FrameStyle& style);
   void help_panel();
-  void open_script_popup();
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);
   void try_failed_script(double wall_seconds);
@@ -258,7 +252,7 @@ class Classroom {
   void hold_view(ImVec2 origin, ImVec2 size, float scale);
 
   // Interaction state only: what is being dragged, typed or asked for.
-  std::map<std::string, ImRect> controls_;
+  ControlPlaces controls_;
   std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
   ClassPredictions predictions_;  // a new lesson asks again
   std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
@@ -268,34 +262,14 @@ class Classroom {
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
-  std::unique_ptr<Recommender> recommender_;  // the cheapest-setting search, for the lesson it was started on
-  double recommend_tolerance_ = 1.0;           // as typed: times the lesson's own tolerances
-  std::string recommend_path_;                 // the lesson the search was started on
-  std::string recommend_error_;                // why the last Measure could not start
-  // The Stability map tab: the map for a mu_s and the g·cos θ of the slope, made once for each.
-  std::vector<StabilityCell> stability_cells_;
-  std::pair<double, double> stability_for_{-1.0, -1.0};
-  Chart stability_chart_;                    // as last drawn
-  std::vector<std::string> stability_words_;  // each threshold's side of the boundary, in words
-  bool stability_window_ = false;
-  // The mystery pair, and the Mystery tab's state: chosen once when a mystery begins, the
-  // answers and the seed as typed.
-  std::optional<Mystery> mystery_;
-  bool select_mystery_tab_ = false;
-  char answer_text_[2][32] = {};
-  std::string answer_error_[2];
-  int menu_seed_ = 1;
-  // The setup dialog: which one is open (asked for this frame, or showing), its path and error.
-  enum class SetupDialog { none, open, save } setup_dialog_ = SetupDialog::none;
-  bool setup_dialog_asked_ = false;
-  char setup_path_[512] = {};
-  std::string setup_error_;
+  CheapestSettingTab cheapest_;
+  StabilityMapTab stability_;
+  std::optional<Mystery> mystery_;  // chosen once when a mystery begins
+  MysteryTab mystery_tab_;
+  SetupDialog setup_dialog_;
+  OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;
-  bool open_popup_ = false;
-  bool refocus_path_ = false;
-  char open_path_[512] = {};
-  std::string open_error_;
   std::string status_;
   // A script named on the command line that did not build: shown and watched until it does.
   std::string failed_script_, failed_error_;

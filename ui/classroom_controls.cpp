@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lessons/runtime/lesson_benchmark.h"
 #include "physics/materials.h"
 #include "ui/panels.h"
 #include "ui/classroom.h"
@@ -150,9 +149,7 @@ std::vector<float> Classroom::parameters_heights() const {
   return heights;
 }
 
-void Classroom::remember(const std::string& name) {
-  controls_[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-}
+void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
 
 void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
   ImGui::SetNextWindowPos(corner);
@@ -481,78 +478,6 @@ void Classroom::transport_bar(ImVec2 corner, ImVec2 size) {
     }
   }
   ImGui::End();
-}
-
-void Classroom::cheapest_setting_tab() {
-  const bool open = begin_tab("Cheapest###cheapest setting");
-  remember("Cheapest setting tab");
-  if (!open) return;
-  const std::string& path = playback_->lesson().path();
-  const char* unit = "\u00d7 the lesson's tolerances";
-  ImGui::TextDisabled("Runs this lesson at each setting, judged by its table (?)");
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Every friction treatment at 30 to 1920 Hz with 1, 2 or 4 sub-steps, each a fresh run of this\n"
-                      "lesson's script with its sliders as they are now. Error: the largest |measured - predicted| over\n"
-                      "the table's rows, each in its tolerance at the default setting (stick-slip, 240 Hz, 1 sub-step);\n"
-                      "a word row that differs is wrong. Within 1: the lesson's own table passes; 0.1: ten times tighter.");
-  }
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted("within");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90.0f * fonts_->scale);
-  ImGui::InputDouble("##tolerance", &recommend_tolerance_, 0.0, 0.0, "%g");
-  remember("tolerance");
-  ImGui::SameLine();
-  ImGui::TextUnformatted(unit);
-  // "1e999" reads as infinity and "-1" as less than nothing: neither is a tolerance.
-  const bool valid = recommend_tolerance_ > 0.0 && std::isfinite(recommend_tolerance_);
-  ImGui::SameLine();
-  const bool mine = recommender_ && recommend_path_ == path;
-  const bool measuring = mine && !recommender_->done();
-  ImGui::BeginDisabled(measuring || !valid);
-  if (ImGui::Button("Measure")) {
-    // Its own Lesson instances, built from the script with the sliders' values: the running
-    // lesson is not touched.
-    try {
-      recommender_ = std::make_unique<Recommender>(
-          lessons::lesson_problem(path, lessons::parameter_values(playback_->lesson())), recommend_tolerance_, 1);
-      recommend_path_ = path;
-      recommend_error_.clear();
-    } catch (const std::exception& error) {
-      recommender_.reset();
-      recommend_error_ = error.what();
-    }
-  }
-  ImGui::EndDisabled();
-  remember("measure");
-  const ImVec4 bad = ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad);
-  if (!valid) ImGui::TextColored(bad, "The tolerance must be a positive number (%s).", unit);
-  if (!recommend_error_.empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(bad, "%s", recommend_error_.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  if (recommender_ && recommend_path_ == path) {
-    if (!recommender_->done()) {
-      ImGui::ProgressBar(static_cast<float>(recommender_->progress()));
-    } else if (const std::optional<Trial> best = recommender_->cheapest()) {
-      if (ImGui::Button("Use it")) change_settings(best->settings);
-      remember("use it");
-      ImGui::SameLine();
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::Text("Cheapest within %g %s: %s, error %.3g, %.3g ms CPU per simulated s.", recommender_->tolerance(), unit,
-                  describe(best->settings).c_str(), best->error, best->cost * 1e3);
-      ImGui::PopTextWrapPos();
-    } else {
-      ImGui::TextColored(bad, "No setting tried answers within %g %s.", recommender_->tolerance(), unit);
-    }
-    if (const std::string failed = recommender_->failures(); recommender_->done() && !failed.empty()) {
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("%s", failed.c_str());
-      ImGui::PopTextWrapPos();
-    }
-  }
-  ImGui::EndTabItem();
 }
 
 }  // namespace frictionlab::ui

@@ -1,8 +1,6 @@
-// The classroom's menus (lessons, simulation settings, view), the help panel and the dialog that
-// opens a script by its path.
+// The classroom's menus (lessons, simulation settings, view) and the help panel.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <vector>
 
@@ -36,18 +34,12 @@ void Classroom::menu_bar() {
       }
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_popup_ = true;
+    if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_script_.ask();
     remember("Open a script");
     // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
-    if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) {
-      setup_dialog_ = SetupDialog::open;
-      setup_dialog_asked_ = true;
-    }
+    if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setup_dialog_.ask(SetupDialog::Kind::open);
     remember("Open a setup");
-    if (ImGui::MenuItem("Save as a setup...")) {
-      setup_dialog_ = SetupDialog::save;
-      setup_dialog_asked_ = true;
-    }
+    if (ImGui::MenuItem("Save as a setup...")) setup_dialog_.ask(SetupDialog::Kind::save);
     remember("Save as a setup");
     if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     ImGui::Separator();
@@ -102,7 +94,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
-  mystery_menu();
+  if (std::optional<std::string> said = mystery_tab_.draw_menu(*this, controls_)) status_ = *said;
   const bool view = ImGui::BeginMenu("View");
   remember("View menu");
   if (view) {
@@ -185,49 +177,6 @@ void Classroom::help_panel() {
     ImGui::PopTextWrapPos();
   }
   ImGui::End();
-}
-
-void Classroom::open_script_popup() {
-  if (open_popup_) {
-    ImGui::OpenPopup("Open a lesson script");
-    open_popup_ = false;
-    open_error_.clear();
-  }
-  const float s = fonts_->scale;
-  ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
-  if (!ImGui::BeginPopupModal("Open a lesson script", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::TextUnformatted("A .lua file (path from the folder FrictionLab was started in, or from /):");
-  ImGui::SetNextItemWidth(560.0f * s);
-  if (ImGui::IsWindowAppearing() || refocus_path_) ImGui::SetKeyboardFocusHere();
-  refocus_path_ = false;
-  bool go = ImGui::InputText("##path", open_path_, sizeof open_path_, ImGuiInputTextFlags_EnterReturnsTrue);
-  // Scripts in the current folder, one click each.
-  std::error_code error;
-  std::vector<std::string> scripts;
-  for (std::filesystem::directory_iterator entry(".", error), end; !error && entry != end; entry.increment(error)) {
-    if (entry->path().extension() == ".lua") scripts.push_back(entry->path().filename().string());
-  }
-  std::sort(scripts.begin(), scripts.end());
-  for (const std::string& name : scripts) {
-    if (ImGui::Selectable(name.c_str())) {
-      std::snprintf(open_path_, sizeof open_path_, "%s", name.c_str());
-      go = true;
-    }
-  }
-  if (ImGui::Button("Open")) go = true;
-  ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-  if (go) {
-    open_error_ = open(open_path_);
-    if (open_error_.empty()) ImGui::CloseCurrentPopup();
-    else refocus_path_ = true;  // back into the path next frame, to correct it
-  }
-  if (!open_error_.empty()) {
-    ImGui::PushTextWrapPos(560.0f * s);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", open_error_.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  ImGui::EndPopup();
 }
 
 }  // namespace frictionlab::ui

@@ -1,11 +1,6 @@
 // Prepared setups in the classroom: the window's state as a setup file (ui/setup_file.h), saving
-// it, opening one in place of the running lesson, and the Lesson menu's dialog for both.
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-
+// it, and opening one in place of the running lesson (the Lesson menu's dialog: ui/dialogs.h).
 #include "ui/classroom.h"
-#include "ui/text_record.h"
 
 namespace frictionlab::ui {
 
@@ -25,11 +20,7 @@ std::string Classroom::open_setup(const std::string& path) {
     predictions_ = options.predictions;
     window_.predictions = options.window.predictions;
     forget_interaction();
-    for (int k = 0; k < 2; ++k) {
-      answer_text_[k][0] = '\0';
-      answer_error_[k].clear();
-    }
-    select_mystery_tab_ = mystery_.has_value();
+    if (mystery_) mystery_tab_.begin();
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
@@ -75,59 +66,6 @@ std::string Classroom::save_setup(const std::string& path) {
   } catch (const InvalidInput& error) {
     return error.what();
   }
-}
-
-void Classroom::setup_popup() {
-  const char* const titles[] = {"", "Open a setup", "Save as a setup"};
-  if (setup_dialog_asked_) {
-    ImGui::OpenPopup(titles[static_cast<int>(setup_dialog_)]);
-    setup_dialog_asked_ = false;
-    setup_error_.clear();
-    if (setup_dialog_ == SetupDialog::save && setup_path_[0] == '\0') {
-      // A name to start from: the lesson's, in the folder screenshots go to.
-      const std::string suggested = (std::filesystem::path(output_folder_) / (lesson_name(playback_->lesson().path()) + ".setup")).string();
-      std::snprintf(setup_path_, sizeof setup_path_, "%s", suggested.c_str());
-    }
-  }
-  if (setup_dialog_ == SetupDialog::none) return;
-  const float s = fonts_->scale;
-  ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
-  const char* title = titles[static_cast<int>(setup_dialog_)];
-  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const bool saving = setup_dialog_ == SetupDialog::save;
-  ImGui::TextUnformatted(saving ? "Save the lesson, its values, the lock, the mystery and the predictions to:"
-                                : "A setup file (path from the folder FrictionLab was started in, or from /):");
-  ImGui::SetNextItemWidth(560.0f * s);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  bool go = ImGui::InputText("##setup path", setup_path_, sizeof setup_path_, ImGuiInputTextFlags_EnterReturnsTrue);
-  remember("setup path");
-  if (ImGui::Button(saving ? "Save" : "Open")) go = true;
-  remember("setup go");
-  ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel");
-  if (go) {
-    // "~/class.setup", as a shell would have it.
-    const char* home = std::getenv("HOME");
-    const std::string typed = setup_path_;
-    const std::string path = typed.rfind("~/", 0) == 0 && home != nullptr ? home + typed.substr(1) : typed;
-    setup_error_ = saving ? save_setup(path) : open_setup(path);
-    if (setup_error_.empty()) {
-      if (!saving) status_ = "Opened the setup " + path;
-      setup_dialog_ = SetupDialog::none;
-      ImGui::CloseCurrentPopup();
-    }
-  }
-  if (cancel) {
-    setup_dialog_ = SetupDialog::none;
-    ImGui::CloseCurrentPopup();
-  }
-  if (!setup_error_.empty()) {
-    ImGui::PushTextWrapPos(560.0f * s);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", setup_error_.c_str());
-    note_text(setup_error_.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  ImGui::EndPopup();
 }
 
 }  // namespace frictionlab::ui

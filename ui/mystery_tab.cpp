@@ -1,0 +1,148 @@
+// The Mystery menu and tab (ui/mystery_tab.h).
+#include "ui/mystery_tab.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "physics/validation.h"
+#include "ui/classroom.h"
+#include "ui/panels.h"
+#include "ui/text_record.h"
+
+namespace frictionlab::ui {
+namespace {
+
+const char* const coefficient_letters[2] = {"\u03bcs", "\u03bck"};
+
+// The theory's tab in the tab bar being drawn, when it was drawn there this frame: a column too
+// short for the theory's own panel puts it first among the tabs (ui/frame.cpp names it
+// "Predict###theory tab" until the reveal; a tab's id is made from what follows "###").
+ImGuiTabItem* theory_tab_beside() {
+  ImGuiTabBar* bar = ImGui::GetCurrentContext()->CurrentTabBar;
+  if (bar == nullptr) return nullptr;
+  ImGuiTabItem* tab = ImGui::TabBarFindTabByID(bar, ImGui::GetID("###theory tab"));
+  return tab != nullptr && tab->LastFrameVisible == ImGui::GetFrameCount() ? tab : nullptr;
+}
+
+}  // namespace
+
+void MysteryTab::begin() {
+  for (int k = 0; k < 2; ++k) {
+    answer_text[k][0] = '\0';
+    answer_error[k].clear();
+  }
+  select = true;
+}
+
+std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPlaces& controls) {
+  const bool open = ImGui::BeginMenu("Mystery");
+  remember_item(controls, "Mystery menu");
+  if (!open) return std::nullopt;
+  std::optional<std::string> said;
+  const std::optional<Mystery>& mystery = classroom.mystery();
+  const std::vector<std::string> pairs = mystery_pairs(classroom.playback().lesson());
+  if (pairs.empty()) {
+    ImGui::TextDisabled("This lesson has no friction pair whose \u03bcs and \u03bck are sliders.");
+  } else {
+    ImGui::TextDisabled("Seed (the same seed draws the same values)");
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("0000000").x + 2.0f * ImGui::GetFrameHeight());
+    ImGui::InputInt("##seed", &menu_seed);
+    remember_item(controls, "mystery seed");
+    menu_seed = std::clamp(menu_seed, 0, static_cast<int>(mystery_seed_max));
+    for (const std::string& pair : pairs) {
+      const bool current = mystery && mystery->choice().pair == pair;
+      const std::string label = "Make " + pair + " a mystery";
+      if (ImGui::MenuItem(label.c_str(), nullptr, current)) {
+        said = classroom.make_mystery({pair, static_cast<std::uint64_t>(menu_seed)});
+      }
+      remember_item(controls, "mystery " + pair);
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Reveal the true values", nullptr, false, mystery && !mystery->revealed())) classroom.reveal_mystery();
+    remember_item(controls, "mystery reveal menu");
+  }
+  ImGui::EndMenu();
+  return said;
+}
+
+void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls) {
+  ImGuiTabItemFlags flags = 0;
+  if (select) {
+    // The class predicts before it measures: while the predictions are asked and their tab is
+    // beside this one, that tab comes forward (whatever tab the last lesson left open), not this.
+    if (ImGuiTabItem* predict = predicting ? theory_tab_beside() : nullptr) {
+      ImGui::GetCurrentContext()->CurrentTabBar->NextSelectedTabId = predict->ID;
+    } else {
+      flags = ImGuiTabItemFlags_SetSelected;
+    }
+    select = false;
+  }
+  const bool open = begin_tab("Mystery###mystery", flags);
+  remember_item(controls, "Mystery tab");
+  if (!open) return;
+  ImGui::PushTextWrapPos(0.0f);
+  // Not the seed: with it a student could draw the values at home. Short: in projector mode
+  // the column shows four lines of a tab before it scrolls, and the reveal must be among them.
+  const std::string heading = "Measure \u03bcs and \u03bck of " + mystery.choice().pair + ":";
+  shown_text(heading.c_str());
+  const double truths[2] = {mystery.values().mu_s, mystery.values().mu_k};
+  std::optional<double>* answers[2] = {&mystery.answer_mu_s, &mystery.answer_mu_k};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float box = ImGui::CalcTextSize("0.0000").x + 2.0f * style.FramePadding.x;
+  for (int k = 0; k < 2; ++k) {
+    ImGui::PushID(k);
+    ImGui::AlignTextToFramePadding();
+    shown_text(coefficient_letters[k]);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(box);
+    const bool entered = ImGui::InputText("##answer", answer_text[k], sizeof answer_text[k],
+                                          ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_EnterReturnsTrue);
+    remember_item(controls, std::string("mystery answer ") + (k == 0 ? "mu_s" : "mu_k"));
+    if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
+      std::string why;
+      const std::string typed = answer_text[k];
+      const std::optional<double> value = typed.empty() ? std::nullopt : validation::parse_decimal(typed, why);
+      answer_error[k].clear();
+      if (!typed.empty() && !(value && *value >= 0.0 && *value <= 2.0)) {
+        answer_error[k] = "type a number from 0 to 2, as 0.45";
+        answers[k]->reset();
+      } else {
+        *answers[k] = value;
+      }
+    }
+    ImGui::SameLine();
+    // How far off, once revealed, with the true value beside it. Not before: a class told how
+    // far off each guess is finds the hidden value in two guesses.
+    std::string said = !answers[k]->has_value() ? "not yet"
+                       : mystery.revealed()     ? closeness_text(**answers[k], truths[k])
+                                                : "kept for the reveal";
+    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + exact_text(truths[k]);
+    if (!answer_error[k].empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
+      shown_text(answer_error[k].c_str());
+      ImGui::PopStyleColor();
+    } else if (answers[k]->has_value() || mystery.revealed()) {
+      shown_text(said.c_str());
+    } else {
+      ImGui::TextDisabled("%s", said.c_str());
+      note_text(said.c_str());
+    }
+    ImGui::PopID();
+  }
+  if (!mystery.revealed()) {
+    // At the end of the μk line when it has room.
+    const char* reveal = "Reveal";
+    const float button = ImGui::CalcTextSize(reveal).x + 2.0f * style.FramePadding.x;
+    const float after = ImGui::GetItemRectMax().x + 2.0f * style.ItemSpacing.x;
+    if (after + button <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+      ImGui::SameLine(after - ImGui::GetWindowPos().x);
+    }
+    if (ImGui::Button(reveal)) mystery.reveal();
+    remember_item(controls, "mystery reveal");
+    note_text_centred(reveal, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::EndTabItem();
+}
+
+}  // namespace frictionlab::ui
