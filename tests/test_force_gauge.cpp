@@ -10,12 +10,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "classroom_hands.h"
 #include "lessons/runtime/catalog.h"
 #include "ui/classroom.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
 #include "ui/measuring_tools.h"
 #include "ui/overlays.h"
 
@@ -24,75 +24,17 @@ namespace {
 
 constexpr double g = 9.81;
 
-// The classroom on a headless context, and a teacher's hand on its io.
-class Hands {
- public:
-  explicit Hands(const std::string& lesson, std::map<std::string, std::string> overrides = {}, bool projector = false)
-      : host_(nullptr) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(lesson);
-    options.overrides = std::move(overrides);
-    options.window.help = false;
-    options.window.projector = projector;
-    options.window.predictions = false;  // the theory table shows from the start: the gauge marks it
-    options.output_folder = folder_;
-    std::filesystem::create_directories(folder_);
-    classroom_ = std::make_unique<Classroom>(options);
-  }
-  ~Hands() { std::filesystem::remove_all(folder_); }
-  Classroom& classroom() { return *classroom_; }
-  lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
-  void frame(double wall = 0.0, FrameRecord* record = nullptr) {
-    gl_.make_current();
-    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = display_;
-    io.DeltaTime = 1.0f / 60.0f;
-    host_.begin_frame();
-    classroom_->frame(fonts, display_, wall, record);
-    ImGui::Render();
-  }
-  void mouse_at(ImVec2 at) {
-    ImGui::GetIO().MousePos = at;
-    frame();
-  }
-  void button(bool down) {
-    ImGui::GetIO().MouseDown[0] = down;
-    frame();
-  }
-  void key(Key key) {
-    classroom_->key_pressed(key, false);
-    frame();
-  }
-  void set_display(ImVec2 display) { display_ = display; }
-
-  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
-  // right each display frame (60 a second) for `seconds` of lesson time at speed 1.
-  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds) {
-    const b2Body* body = lesson().scene().body(body_name);
-    const ImVec2 held = classroom_->world_camera().to_screen(body->GetWorldCenter());
-    mouse_at(held);
-    button(true);
-    EXPECT_EQ(lesson().scene().grabbed(), body);
-    key(Key::space);
-    const int frames = static_cast<int>(std::lround(seconds * 60.0));
-    for (int i = 1; i <= frames; ++i) {
-      ImGui::GetIO().MousePos = ImVec2(held.x + pixels_per_frame * static_cast<float>(i), held.y);
-      frame(1.0 / 60.0);
-    }
-    button(false);
-  }
-
- private:
-  HeadlessContext gl_;
-  ImGuiHost host_;
-  std::string folder_ = (std::filesystem::temp_directory_path() /
-                         ("frictionlab_gauge_" + std::to_string(::getpid()) + "_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
-                            .string();
-  std::unique_ptr<Classroom> classroom_;
-  ImVec2 display_{1280.0f, 720.0f};
-};
+// The classroom with the theory table shown from the start (the gauge marks it), in projector
+// mode when asked, and a teacher's hands on it.
+ClassroomOptions gauge_options(const std::string& lesson, std::map<std::string, std::string> overrides = {},
+                               bool projector = false) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.overrides = std::move(overrides);
+  options.window.projector = projector;
+  options.window.predictions = false;
+  return options;
+}
 
 // push at its default mu (wood on wood, mu_s 0.4, mu_k 0.3), a 10 kg block, its own push at its
 // slowest (0.2 N/s, so that the hand does nearly all the pulling: 0.3 N by 1.5 s, 1 % of the
@@ -100,7 +42,7 @@ class Hands {
 // by a few newtons a second: it holds until the hand's pull and the push reach mu_s·m·g, then
 // slides with the pull at mu_k·m·g once the gauge's swing has died.
 TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
-  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   const double mu_s = hands.lesson().parameter("mu_s").value, mu_k = hands.lesson().parameter("mu_k").value;
   ASSERT_EQ(mu_s, 0.4);
@@ -152,7 +94,7 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
 // the theory table marks the rows hand-pulled with the stretch's times and why, and shows no
 // failure for them; a reset measures without the hand and judges again.
 TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
-  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   hands.pull_right("block", 1.0f, 2.0);
   Playback& playback = hands.classroom().playback();
@@ -213,10 +155,46 @@ TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
   EXPECT_EQ(playback.readings().caveat.find("Hand-pulled"), std::string::npos);
 }
 
+// A hand that pulls the block and then holds still brings it to rest, and it is held there: its
+// contact sticks (it is not labelled slipping at 0 m/s). push (10 kg, its own push growing at
+// 0.2 N/s) pulled 2 s at 9 cm/s, then held still for 2 s: the gauge and the push together
+// (28.5 N + 0.6 N) are under mu_s·m·g = 39.2 N, so static friction holds. With a critically
+// damped gauge the block crept after the hand at rate/k = 0.2 mm/s, slipping, for ever.
+TEST(ForceGauge, ABodyTheHandHoldsStillSticks) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
+  hands.frame();
+  const b2Body* block = hands.lesson().scene().body("block");
+  // Held still for 2 s, not let go: the last frame still holds it.
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  for (int i = 1; i <= 240; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x + static_cast<float>(std::min(i, 120)), held.y);
+    hands.frame(1.0 / 60.0);
+  }
+  const Scene& scene = hands.lesson().scene();
+  ASSERT_EQ(scene.grabbed(), block);
+  EXPECT_NEAR(scene.time(), 4.0, 0.01);
+  const std::optional<GaugeFigures> figures = hands.classroom().playback().gauge().figures(scene.frame_step());
+  ASSERT_TRUE(figures && figures->plateau) << "it slid while the hand pulled";
+  // At rest, to float round-off: not a creep of 0.2 mm/s the speed tool shows as 0.000 m/s.
+  EXPECT_LT(block->GetLinearVelocity().Length(), 1e-6f) << speed_reading(block);
+  ASSERT_FALSE(scene.slipping().empty());
+  EXPECT_EQ(scene.slipping().back(), 0) << "the contact still slips";
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(contact_word(marks.front()), "sticking");
+  // And what holds it is within static friction's limit.
+  const double pull = static_cast<double>(scene.forces_applied()[0].x + scene.forces_applied().back().x);
+  EXPECT_LT(pull, 0.4 * 10.0 * g);
+  EXPECT_NEAR(std::abs(marks.front().friction_force), pull, 1e-3 * pull);
+}
+
 // The stopwatch reads the lesson's clock: at half speed a second of wall time is half a second
 // of lesson, and a pause stops nothing it reads but the lesson.
 TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
-  Hands hands("push");
+  ClassroomHands hands(gauge_options("push"));
   hands.classroom().playback().set_speed(0.5);
   hands.frame();
   hands.key(Key::space);  // play
@@ -258,7 +236,7 @@ TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
 // The speed shown beside the main body is its velocity: push's block sliding at t = 3 s, read
 // against the lesson's own probe of it.
 TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
-  Hands hands("push");
+  ClassroomHands hands(gauge_options("push"));
   hands.frame();
   hands.classroom().playback().run_to(3.0);
   const lessons::Lesson& lesson = hands.lesson();
@@ -272,7 +250,7 @@ TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
   EXPECT_EQ(speed_reading(block), expected);
   // A view that follows a body measures that one: stacked_blocks makes its top block first but
   // follows the bottom one, which the pull drives.
-  Hands stacked("stacked_blocks");
+  ClassroomHands stacked(gauge_options("stacked_blocks"));
   stacked.frame();
   ASSERT_EQ(main_body(stacked.lesson().scene()), stacked.lesson().scene().body("top"));
   EXPECT_EQ(measured_body(stacked.lesson()), stacked.lesson().scene().body("bottom"));
@@ -282,7 +260,7 @@ TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
 // the incline at 25° (below its sticking angle): m·g·sin θ and m·g·cos θ, before the first step
 // and while it rests.
 TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
-  Hands hands("incline", {{"angle", "25"}, {"mass", "2"}});
+  ClassroomHands hands(gauge_options("incline", {{"angle", "25"}, {"mass", "2"}}));
   hands.frame();
   const double theta = 25.0 * M_PI / 180.0, mg = 2.0 * g;
   for (const double t : {0.0, 0.5}) {
@@ -301,7 +279,7 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
     EXPECT_NEAR(weight->into.y, -std::cos(theta), 1e-5);
   }
   // On a level floor there is nothing to split.
-  Hands level("push");
+  ClassroomHands level(gauge_options("push"));
   level.frame();
   level.classroom().playback().run_to(0.5);
   EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
@@ -310,7 +288,7 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
 // Distance marks count from where the main body stood at t = 0 (under its centre of mass), along
 // the surface: the incline's block at 1 s is as far from the mark "0 m" as its own probe says.
 TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
-  Hands hands("incline");
+  ClassroomHands hands(gauge_options("incline"));
   hands.frame();
   const std::optional<b2Vec2> origin = hands.classroom().tools().distance_origin();
   ASSERT_TRUE(origin.has_value());
