@@ -46,9 +46,11 @@ probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
 plot { "Push and friction", kind = "time", y = { "push", "friction_force" } }
 -- Friction against the push, over the Coulomb law as the spring article stacks it: stuck,
 -- friction answers the push, f = −F, while F ≤ mu_s·N; sliding, it is −mu_k·N. The branch that
--- applies now (the contact's state) is drawn bold.
+-- applies now (the contact's state) is drawn bold. The push is the lesson's alone: while the
+-- mouse's hand pulls the block too, friction answers both, and the title says so (the window's
+-- force gauge plots the hand's pull and the push together).
 local N = mass * g
-plot { "Friction against the push", kind = "xy", x = "push", y = { "friction_force" },
+plot { "Friction against the lesson's push", kind = "xy", x = "push", y = { "friction_force" },
   theory = {
     { "sticking: f = −F, F ≤ μs·N", function(F) if F <= math.max(param.mu_s, param.mu_k) * N then return -F end end,
       active = function() return touch.state ~= "slipping" end },

@@ -61,15 +61,22 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
   ASSERT_TRUE(figures.has_value());
   ASSERT_TRUE(figures->plateau.has_value()) << "it slid for less than 0.1 s after settling";
-  const double push_at_peak = 0.2 * (figures->peak_time - scene.frame_step());  // the push over the peak's step
-  // The peak: hand and push together are static friction's limit (the push read at the start of
-  // the step, the hand's force held over it); 1 % for the gauge's rise within the breaking step.
-  EXPECT_NEAR(figures->peak + push_at_peak, mu_s * m * g, 0.01 * mu_s * m * g);
-  // The gauge alone, as the class reads it: within 2 % of mu_s·m·g (the push is under 0.5 %).
-  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.02 * mu_s * m * g);
-  // The plateau: the mean reading while it slid, from 0.4 s after the peak; the pull's swing has
-  // died to a tenth by then, and the push grows under 0.35 N (1.2 % of mu_k·m·g) over the run.
-  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
+  // The lesson pushed too: the figures are the hand's pull and the push together, which is what
+  // friction answered, and say so.
+  EXPECT_EQ(figures->lesson_pulls, "push");
+  EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + push: peak ", 0), 0u) << hands.classroom().gauge_figures();
+  // The peak: hand and push together are static friction's limit; 1 % for the gauge's rise
+  // within the breaking step.
+  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.01 * mu_s * m * g);
+  // The gauge alone at the peak, as the class reads the scale: within 2 % of mu_s·m·g (the push
+  // is under 0.5 %).
+  const auto at_peak = std::find_if(gauge.samples().begin(), gauge.samples().end(),
+                                    [&](const GaugeSample& sample) { return sample.t == figures->peak_time; });
+  ASSERT_NE(at_peak, gauge.samples().end());
+  EXPECT_NEAR(at_peak->force, mu_s * m * g, 0.02 * mu_s * m * g);
+  // The plateau: the mean pull while it slid, from 0.4 s after the peak; the pull's swing has
+  // died to a tenth by then.
+  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.01 * mu_k * m * g);
   // The peak is static, the plateau kinetic: the drop a class sees is (mu_s − mu_k)·m·g.
   EXPECT_NEAR(figures->peak - *figures->plateau, (mu_s - mu_k) * m * g, 0.1 * (mu_s - mu_k) * m * g);
   // Back through the time bar and forward again: the run is replayed, and the gauge reads the
@@ -88,6 +95,101 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
               "hand %.3f m/s\n",
               figures->peak, figures->peak_time, mu_s * m * g, *figures->plateau, figures->plateau_from,
               figures->plateau_to, mu_k * m * g, hand_speed);
+}
+
+// spring_pull: the lesson's spring drags the block ahead of a hand that holds still. The gauge
+// reads the hand holding back; its figures are the spring's pull and the hand's together, which
+// is what friction answers: mu_s·m·g at the breakaway, mu_k·m·g while it slides. (Taken from
+// the gauge alone they were "peak 9.3 N, sliding: not yet": the hand's pull only grew.)
+TEST(ForceGauge, WhenTheLessonPullsTooTheFiguresAreThePullsTogether) {
+  ClassroomHands hands(gauge_options("spring_pull"));
+  hands.frame();
+  const double mu_s = hands.lesson().parameter("mu_s").value, mu_k = hands.lesson().parameter("mu_k").value;
+  const double m = hands.lesson().parameter("mass").value;
+  hands.pull_right("block", 0.0f, 0.0, 5.0);
+  const Scene& scene = hands.lesson().scene();
+  const GaugeRecord& gauge = hands.classroom().playback().gauge();
+  const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
+  ASSERT_TRUE(figures.has_value());
+  EXPECT_EQ(figures->lesson_pulls, "spring");
+  std::printf("spring_pull held: peak %.4f N (mu_s·m·g %.4f N), plateau %.4f N over %.2f–%.2f s (mu_k·m·g %.4f N)\n",
+              figures->peak, mu_s * m * g, figures->plateau.value_or(NAN), figures->plateau_from, figures->plateau_to,
+              mu_k * m * g);
+  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.01 * mu_s * m * g);
+  ASSERT_TRUE(figures->plateau.has_value()) << hands.classroom().gauge_figures();
+  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
+  EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + spring: peak ", 0), 0u) << hands.classroom().gauge_figures();
+  // The scale reads the hand holding back: its far end stays where the block was taken, so its
+  // reading grows as the block slides away from it.
+  EXPECT_GT(gauge.samples().back().force, gauge.samples().front().force);
+}
+
+// The ring the hand holds is drawn under the pointer, in projector mode at 1920 × 1080 (it was
+// drawn at the far end of the scale's case, 124 px ahead of it), while the mouse moves and when
+// it stops; the hook stays on the point taken, and the case lies between them.
+TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
+  ClassroomOptions options = gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true);
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  const float scale = hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
+  for (int i = 1; i <= 120; ++i) {
+    // Two pixels a frame for a second, then still for a second.
+    ImGui::GetIO().MousePos = ImVec2(held.x + 2.0f * static_cast<float>(std::min(i, 60)), held.y);
+    FrameRecord record;
+    hands.frame(1.0 / 60.0, &record);
+    if (i % 30 != 0) continue;
+    ASSERT_EQ(record.lanes.size(), 1u);
+    const Scene& scene = hands.lesson().scene();
+    const Camera& camera = record.lanes.front().camera;
+    const GaugeShape shape = gauge_shape(scene, camera, scale);
+    const ImVec2 pointer = ImGui::GetIO().MousePos;
+    EXPECT_NEAR(shape.ring.x, pointer.x, 0.5f) << "frame " << i;
+    EXPECT_NEAR(shape.ring.y, pointer.y, 0.5f) << "frame " << i;
+    // The pointer means the world point the hand pulls to, through the camera the lane drew with.
+    const b2Vec2 under = camera.to_world(pointer);
+    EXPECT_NEAR(under.x, scene.grab_target().x, 0.5f / camera.pixels_per_metre);
+    const ImVec2 hook = camera.to_screen(block->GetWorldPoint(scene.applied_forces().back().local_point));
+    EXPECT_NEAR(shape.hook.x, hook.x, 1e-3f);
+    // The case lies between the hook and the ring, ending at the ring's edge.
+    EXPECT_GE(shape.case_start.x, shape.hook.x) << "frame " << i;
+    EXPECT_LE(shape.case_start.x, shape.ring.x - shape.ring_radius + 1e-3f) << "frame " << i;
+  }
+  hands.button(false);
+}
+
+// The gauge's plot covers the hand's latest pull, not the lesson's whole time axis: a pull of a
+// second at t = 20 s after one at t = 0 is drawn over 20 s or so, not as a line at the end of
+// 0–21 s. With the lesson pushing too, the line is the hand's pull and the push together.
+TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
+  hands.frame();
+  hands.pull_right("block", 1.0f, 1.0);
+  Playback& playback = hands.classroom().playback();
+  playback.run_to(20.0);
+  const double taken = playback.lesson().scene().time();
+  hands.pull_right("block", 1.0f, 1.0);
+  const double h = playback.lesson().scene().frame_step();
+  const GaugeRecord& gauge = playback.gauge();
+  ASSERT_EQ(gauge.stretches(h).size(), 2u);
+  const double end = gauge.samples().back().t;
+  const Chart chart = gauge_chart(gauge, h, theme(ThemeName::light));
+  ASSERT_TRUE(chart.fixed_x);
+  // From a tenth of the pull before the hand took hold to a twentieth after it let go.
+  EXPECT_NEAR(chart.x_low, taken - 0.1 * (end - taken), 2.0 * h);
+  EXPECT_NEAR(chart.x_high, end + 0.05 * (end - taken), 2.0 * h);
+  ASSERT_EQ(chart.series.size(), 1u);
+  for (const auto& [t, force] : chart.series[0].points) EXPECT_GE(t, taken);
+  // The lesson pushes too: the line is the hand's reading and the push together along the floor,
+  // as the figures over it are taken.
+  EXPECT_EQ(chart.series[0].name, "hand + push");
+  const GaugeSample& last = gauge.samples().back();
+  EXPECT_NEAR(chart.series[0].points.back().second, last.force + 0.2 * (last.t - h), 1e-3);
+  for (const auto& [from, to] : chart.bands) EXPECT_GE(from, taken - h);
 }
 
 // A hand-pulled run differs from the lesson's predictions because of the hand, not the physics:
