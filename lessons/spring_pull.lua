@@ -3,20 +3,23 @@
 -- block until the pull reaches mu_s·N; then kinetic friction, mu_k·N, takes over, the block
 -- lurches forward, the spring relaxes, and the block sticks again: stick-slip.
 
+-- Long enough for the first breakaway and four more cycles, whatever the sliders say. With
+-- no cycle (mu_k >= mu_s: see below) the spring's own swing, 2π·sqrt(m/k), stands in.
+local function run_length()
+  local first = param.mu_s * param.mass * g / (param.k * param.pull_speed)
+  if param.mu_k >= param.mu_s then
+    return first + 4.5 * 2 * math.pi * math.sqrt(param.mass / param.k)
+  end
+  local cycle = theory.spring_stick_slip { mass = param.mass, k = param.k, pull_speed = param.pull_speed,
+                                           mu_s = param.mu_s, mu_k = param.mu_k }
+  return cycle.first_breakaway_time + 4.5 * cycle.period
+end
+
 lesson {
   title = "A spring pulls a block",
-  question = "How hard must the spring pull before the block moves, and why does it then move in jerks?",
-  -- Long enough for the first breakaway and four more cycles, whatever the sliders say. With
-  -- no cycle (mu_k >= mu_s: see below) the spring's own swing, 2π·sqrt(m/k), stands in.
-  duration = function()
-    local first = param.mu_s * param.mass * g / (param.k * param.pull_speed)
-    if param.mu_k >= param.mu_s then
-      return first + 4.5 * 2 * math.pi * math.sqrt(param.mass / param.k)
-    end
-    local cycle = theory.spring_stick_slip { mass = param.mass, k = param.k, pull_speed = param.pull_speed,
-                                             mu_s = param.mu_s, mu_k = param.mu_k }
-    return cycle.first_breakaway_time + 4.5 * cycle.period
-  end,
+  -- The question leaves the jerks for the class to predict (see predict below).
+  question = "How hard must the spring pull before the block moves, and how does it move once it does?",
+  duration = run_length,
   order = 10,
   -- Its pictures: held by static friction, in the first slip, in the second slip (the README's
   -- frame), and the same in the dark theme. The probes are recorded once these run.
@@ -121,11 +124,25 @@ expect { "re-stick force", unit = "N",
   measured = function() return at_the_limit() or stick_and_slip().restick_force end,
   tolerance = function() return 0.02 * param.mu_s * weight end }
 
+-- How the block moves once it has broken away, as the class sees it: in jerks (it stops, the
+-- spring stretches again, it lurches: stick-slip) or steadily after the hand. Theory: in jerks
+-- whenever mu_k < mu_s. Measured: in jerks once it has stuck again and broken away a second
+-- time; steadily if the whole run passed without that. Where the other rows have no answer to
+-- check (mu_k >= mu_s, mu_k = 0), this one says the same in words from both sides.
+local function run_over() return time() >= run_length() - 0.5 * step_length() end
+expect { "steadily or in jerks",
+  predicted = function() return at_the_limit() or "in jerks" end,
+  measured = function()
+    if at_the_limit() then return at_the_limit() end
+    if stick_and_slip().period then return "in jerks" end
+    if run_over() then return "steadily" end
+  end }
+
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "breakaway force", unit = "N",
   question = "The spring pulls harder and harder. How hard is it pulling when the block starts to move?" }
-predict { "re-stick force", unit = "N",
-  question = "Once the block has jerked forward and stopped again, how hard is the spring still pulling?" }
+predict { "steadily or in jerks", choices = { "steadily", "in jerks" },
+  question = "Once the block starts to move, does it follow the hand steadily or in jerks?" }
 
 expect { "stick-slip period", unit = "s",
   predicted = function() return at_the_limit() or cycle().period end,

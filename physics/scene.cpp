@@ -250,7 +250,7 @@ b2Vec2 Scene::grab_force(const AppliedForce& hand) const {
   const double omega = grab_omega();
   const double mass = body.GetMass();
   b2Vec2 force = static_cast<float>(mass * omega * omega) * (grab_->hand - point) -
-                 static_cast<float>(2.0 * mass * omega) * velocity;
+                 static_cast<float>(2.0 * grab_damping_ratio * mass * omega) * velocity;
   const double cap = 20.0 * mass * gravity_.Length();
   if (cap > 0.0 && force.Length() > cap) force *= static_cast<float>(cap / force.Length());
   return force;

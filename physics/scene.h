@@ -186,10 +186,15 @@ class Scene {
   // within grab_hand_lag s, so the jumps of a mouse read once a display frame become a steady
   // pull. The scale is stiff but finite (it swings at grab_gauge_hz with the body's mass on it,
   // or slower when the step is long, so the explicit pull stays stable: omega·h <= 0.5) and
-  // critically damped against the body's velocity; its pull is capped at 20·m·g. It is applied like
+  // damped against the body's velocity at grab_damping_ratio of critical; its pull is capped at 20·m·g. It is applied like
   // any applied force (drawn, its work counted in the ledger), so the gauge reads the force
   // actually applied. Releasing leaves the body its velocity: that is how a push is given.
   static constexpr double grab_gauge_hz = 1.5;
+  // Just under critical: a body the hand brings to rest overshoots a little (4.6 % of its
+  // speed), so its sliding stops and static friction takes hold, as under a real hand. Critically
+  // damped, a sliding body crept towards the hand ever slower and never stopped: its contact
+  // stayed slipping at 0.2 mm/s for as long as the hand held still (push's growing push).
+  static constexpr double grab_damping_ratio = 0.7;
   static constexpr double grab_hand_lag = 0.08;  // s
   void grab(b2Body* body, b2Vec2 local_point, b2Vec2 target);
   void move_grab(b2Vec2 target);

@@ -1,11 +1,12 @@
 // The classroom window on an EGL context with no display, driven by a user's hands: frames
-// drawn with every text recorded, clicks and typing written to ImGui's io across frames
-// (Dear ImGui 1.86 has no event API). For the mystery and setup tests.
+// drawn with every text recorded, clicks, drags, keys and typing written to ImGui's io across
+// frames (Dear ImGui 1.86 has no event API). For the mystery, setup and force gauge tests.
 #pragma once
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,15 +37,16 @@ class ClassroomHands {
   lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
   const std::string& folder() const { return folder_; }
 
-  // One display frame; with `record`, every text it drew.
-  void frame(FrameRecord* record = nullptr) {
+  // One display frame, `wall` seconds after the last (the lesson plays that long when playing);
+  // with `record`, every text it drew.
+  void frame(double wall = 0.0, FrameRecord* record = nullptr) {
     gl_.make_current();
     const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = display_;
     io.DeltaTime = 1.0f / 60.0f;
     host_.begin_frame();
-    classroom_->frame(fonts, display_, 0.0, record);
+    classroom_->frame(fonts, display_, wall, record);
     ImGui::Render();
   }
   // Every text of a frame drawn after a few have let tables and tab bars settle, each on a line.
@@ -52,7 +54,7 @@ class ClassroomHands {
     frame();
     frame();
     FrameRecord record;
-    frame(&record);
+    frame(0.0, &record);
     std::string all;
     for (const ShownText& text : record.texts) all += text.text + "\n";
     return all;
@@ -68,7 +70,7 @@ class ClassroomHands {
   void click_text(const std::string& text) {
     frame();
     FrameRecord record;
-    frame(&record);
+    frame(0.0, &record);
     for (const ShownText& shown : record.texts) {
       if (shown.text != text) continue;
       click_at(ImVec2(0.5f * (shown.needed.x + shown.needed.z), 0.5f * (shown.needed.y + shown.needed.w)));
@@ -84,6 +86,38 @@ class ClassroomHands {
     frame();
     io.MouseDown[0] = false;
     frame();
+  }
+  void mouse_at(ImVec2 at) {
+    ImGui::GetIO().MousePos = at;
+    frame();
+  }
+  void button(bool down) {
+    ImGui::GetIO().MouseDown[0] = down;
+    frame();
+  }
+  // A shortcut, as the window's layer passes it on.
+  void key(Key key) {
+    classroom_->key_pressed(key, false);
+    frame();
+  }
+  void set_display(ImVec2 display) { display_ = display; }
+  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
+  // right each display frame (60 a second) for `seconds` of lesson time at speed 1, then holds
+  // the mouse still for `held_still` s more before letting go.
+  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds, double held_still = 0.0) {
+    const b2Body* body = lesson().scene().body(body_name);
+    const ImVec2 held = classroom_->world_camera().to_screen(body->GetWorldCenter());
+    mouse_at(held);
+    button(true);
+    EXPECT_EQ(lesson().scene().grabbed(), body);
+    key(Key::space);
+    const int frames = static_cast<int>(std::lround(seconds * 60.0));
+    for (int i = 1; i <= frames; ++i) {
+      ImGui::GetIO().MousePos = ImVec2(held.x + pixels_per_frame * static_cast<float>(i), held.y);
+      frame(1.0 / 60.0);
+    }
+    for (int i = 0; i < static_cast<int>(std::lround(held_still * 60.0)); ++i) frame(1.0 / 60.0);
+    button(false);
   }
   void type(const std::string& text) {
     for (const char c : text) ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));

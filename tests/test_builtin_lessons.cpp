@@ -145,7 +145,7 @@ INSTANTIATE_TEST_SUITE_P(
     AtTheirDefaultsAndAcrossTheirThresholds, BuiltinLesson,
     ::testing::Values(Case{"spring_pull", {{"block", "plastic"}}, ""},
                       Case{"spring_pull", {{"k", "200"}, {"pull_speed", "0.2"}, {"mass", "2"}}, ""},
-                      Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, ""},
+                      Case{"spring_pull", {{"mu_s", "0.8"}, {"mu_k", "0.3"}}, "in jerks"},
                       // No cycle for the closed form: every row says so in words.
                       Case{"spring_pull", {{"mu_s", "0"}}, "no cycle: μk ≥ μs"},
                       Case{"spring_pull", {{"mu_s", "0.2"}, {"mu_k", "0.5"}}, "no cycle: μk ≥ μs"},
@@ -207,10 +207,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // push: light and heavy, slow and fast; mu_k above mu_s (it starts at mu_k·N);
                       // no friction (it moves at once); the sliders' top (a 3:1 block cannot tip);
                       // viscous and quadratic drag on the slide.
-                      Case{"push", {{"mass", "0.1"}}, ""}, Case{"push", {{"mass", "10"}, {"push_rate", "50"}}, ""},
+                      Case{"push", {{"mass", "0.1"}}, ""}, Case{"push", {{"mass", "10"}, {"push_rate", "50"}}, "smaller"},
                       Case{"push", {{"push_rate", "0.2"}}, ""}, Case{"push", {{"mu_s", "0.3"}, {"mu_k", "0.45"}}, ""},
                       Case{"push", {{"mu_s", "0"}, {"mu_k", "0"}}, ""}, Case{"push", {{"mu_s", "2"}, {"mu_k", "2"}}, ""},
-                      Case{"push", {{"c", "5"}}, ""}, Case{"push", {{"b", "3"}}, ""},
+                      Case{"push", {{"c", "5"}}, "larger"}, Case{"push", {{"b", "3"}}, ""},
+                      // Sliding friction against the breakaway push: the same when mu_k = mu_s,
+                      // larger than it once a drag adds to it (above), smaller at the defaults.
+                      Case{"push", {{"mu_k", "0.4"}}, "the same"},
                       // The drag's step term: at c = 10 on 0.1 kg (Γh = 0.42) the speed runs 22 %
                       // high; past Γh = 1 the row says the step is too long, in words.
                       Case{"push", {{"c", "10"}, {"mass", "0.1"}}, ""},

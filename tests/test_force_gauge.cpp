@@ -10,12 +10,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "classroom_hands.h"
 #include "lessons/runtime/catalog.h"
 #include "ui/classroom.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
 #include "ui/measuring_tools.h"
 #include "ui/overlays.h"
 
@@ -24,75 +24,17 @@ namespace {
 
 constexpr double g = 9.81;
 
-// The classroom on a headless context, and a teacher's hand on its io.
-class Hands {
- public:
-  explicit Hands(const std::string& lesson, std::map<std::string, std::string> overrides = {}, bool projector = false)
-      : host_(nullptr) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(lesson);
-    options.overrides = std::move(overrides);
-    options.window.help = false;
-    options.window.projector = projector;
-    options.window.predictions = false;  // the theory table shows from the start: the gauge marks it
-    options.output_folder = folder_;
-    std::filesystem::create_directories(folder_);
-    classroom_ = std::make_unique<Classroom>(options);
-  }
-  ~Hands() { std::filesystem::remove_all(folder_); }
-  Classroom& classroom() { return *classroom_; }
-  lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
-  void frame(double wall = 0.0, FrameRecord* record = nullptr) {
-    gl_.make_current();
-    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = display_;
-    io.DeltaTime = 1.0f / 60.0f;
-    host_.begin_frame();
-    classroom_->frame(fonts, display_, wall, record);
-    ImGui::Render();
-  }
-  void mouse_at(ImVec2 at) {
-    ImGui::GetIO().MousePos = at;
-    frame();
-  }
-  void button(bool down) {
-    ImGui::GetIO().MouseDown[0] = down;
-    frame();
-  }
-  void key(Key key) {
-    classroom_->key_pressed(key, false);
-    frame();
-  }
-  void set_display(ImVec2 display) { display_ = display; }
-
-  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
-  // right each display frame (60 a second) for `seconds` of lesson time at speed 1.
-  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds) {
-    const b2Body* body = lesson().scene().body(body_name);
-    const ImVec2 held = classroom_->world_camera().to_screen(body->GetWorldCenter());
-    mouse_at(held);
-    button(true);
-    EXPECT_EQ(lesson().scene().grabbed(), body);
-    key(Key::space);
-    const int frames = static_cast<int>(std::lround(seconds * 60.0));
-    for (int i = 1; i <= frames; ++i) {
-      ImGui::GetIO().MousePos = ImVec2(held.x + pixels_per_frame * static_cast<float>(i), held.y);
-      frame(1.0 / 60.0);
-    }
-    button(false);
-  }
-
- private:
-  HeadlessContext gl_;
-  ImGuiHost host_;
-  std::string folder_ = (std::filesystem::temp_directory_path() /
-                         ("frictionlab_gauge_" + std::to_string(::getpid()) + "_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
-                            .string();
-  std::unique_ptr<Classroom> classroom_;
-  ImVec2 display_{1280.0f, 720.0f};
-};
+// The classroom with the theory table shown from the start (the gauge marks it), in projector
+// mode when asked, and a teacher's hands on it.
+ClassroomOptions gauge_options(const std::string& lesson, std::map<std::string, std::string> overrides = {},
+                               bool projector = false) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.overrides = std::move(overrides);
+  options.window.projector = projector;
+  options.window.predictions = false;
+  return options;
+}
 
 // push at its default mu (wood on wood, mu_s 0.4, mu_k 0.3), a 10 kg block, its own push at its
 // slowest (0.2 N/s, so that the hand does nearly all the pulling: 0.3 N by 1.5 s, 1 % of the
@@ -100,7 +42,7 @@ class Hands {
 // by a few newtons a second: it holds until the hand's pull and the push reach mu_s·m·g, then
 // slides with the pull at mu_k·m·g once the gauge's swing has died.
 TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
-  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   const double mu_s = hands.lesson().parameter("mu_s").value, mu_k = hands.lesson().parameter("mu_k").value;
   ASSERT_EQ(mu_s, 0.4);
@@ -119,15 +61,22 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
   ASSERT_TRUE(figures.has_value());
   ASSERT_TRUE(figures->plateau.has_value()) << "it slid for less than 0.1 s after settling";
-  const double push_at_peak = 0.2 * (figures->peak_time - scene.frame_step());  // the push over the peak's step
-  // The peak: hand and push together are static friction's limit (the push read at the start of
-  // the step, the hand's force held over it); 1 % for the gauge's rise within the breaking step.
-  EXPECT_NEAR(figures->peak + push_at_peak, mu_s * m * g, 0.01 * mu_s * m * g);
-  // The gauge alone, as the class reads it: within 2 % of mu_s·m·g (the push is under 0.5 %).
-  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.02 * mu_s * m * g);
-  // The plateau: the mean reading while it slid, from 0.4 s after the peak; the pull's swing has
-  // died to a tenth by then, and the push grows under 0.35 N (1.2 % of mu_k·m·g) over the run.
-  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
+  // The lesson pushed too: the figures are the hand's pull and the push together, which is what
+  // friction answered, and say so.
+  EXPECT_EQ(figures->lesson_pulls, "push");
+  EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + push: peak ", 0), 0u) << hands.classroom().gauge_figures();
+  // The peak: hand and push together are static friction's limit; 1 % for the gauge's rise
+  // within the breaking step.
+  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.01 * mu_s * m * g);
+  // The gauge alone at the peak, as the class reads the scale: within 2 % of mu_s·m·g (the push
+  // is under 0.5 %).
+  const auto at_peak = std::find_if(gauge.samples().begin(), gauge.samples().end(),
+                                    [&](const GaugeSample& sample) { return sample.t == figures->peak_time; });
+  ASSERT_NE(at_peak, gauge.samples().end());
+  EXPECT_NEAR(at_peak->force, mu_s * m * g, 0.02 * mu_s * m * g);
+  // The plateau: the mean pull while it slid, from 0.4 s after the peak; the pull's swing has
+  // died to a tenth by then.
+  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.01 * mu_k * m * g);
   // The peak is static, the plateau kinetic: the drop a class sees is (mu_s − mu_k)·m·g.
   EXPECT_NEAR(figures->peak - *figures->plateau, (mu_s - mu_k) * m * g, 0.1 * (mu_s - mu_k) * m * g);
   // Back through the time bar and forward again: the run is replayed, and the gauge reads the
@@ -148,11 +97,106 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
               figures->plateau_to, mu_k * m * g, hand_speed);
 }
 
+// spring_pull: the lesson's spring drags the block ahead of a hand that holds still. The gauge
+// reads the hand holding back; its figures are the spring's pull and the hand's together, which
+// is what friction answers: mu_s·m·g at the breakaway, mu_k·m·g while it slides. (Taken from
+// the gauge alone they were "peak 9.3 N, sliding: not yet": the hand's pull only grew.)
+TEST(ForceGauge, WhenTheLessonPullsTooTheFiguresAreThePullsTogether) {
+  ClassroomHands hands(gauge_options("spring_pull"));
+  hands.frame();
+  const double mu_s = hands.lesson().parameter("mu_s").value, mu_k = hands.lesson().parameter("mu_k").value;
+  const double m = hands.lesson().parameter("mass").value;
+  hands.pull_right("block", 0.0f, 0.0, 5.0);
+  const Scene& scene = hands.lesson().scene();
+  const GaugeRecord& gauge = hands.classroom().playback().gauge();
+  const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
+  ASSERT_TRUE(figures.has_value());
+  EXPECT_EQ(figures->lesson_pulls, "spring");
+  std::printf("spring_pull held: peak %.4f N (mu_s·m·g %.4f N), plateau %.4f N over %.2f–%.2f s (mu_k·m·g %.4f N)\n",
+              figures->peak, mu_s * m * g, figures->plateau.value_or(NAN), figures->plateau_from, figures->plateau_to,
+              mu_k * m * g);
+  EXPECT_NEAR(figures->peak, mu_s * m * g, 0.01 * mu_s * m * g);
+  ASSERT_TRUE(figures->plateau.has_value()) << hands.classroom().gauge_figures();
+  EXPECT_NEAR(*figures->plateau, mu_k * m * g, 0.02 * mu_k * m * g);
+  EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + spring: peak ", 0), 0u) << hands.classroom().gauge_figures();
+  // The scale reads the hand holding back: its far end stays where the block was taken, so its
+  // reading grows as the block slides away from it.
+  EXPECT_GT(gauge.samples().back().force, gauge.samples().front().force);
+}
+
+// The ring the hand holds is drawn under the pointer, in projector mode at 1920 × 1080 (it was
+// drawn at the far end of the scale's case, 124 px ahead of it), while the mouse moves and when
+// it stops; the hook stays on the point taken, and the case lies between them.
+TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
+  ClassroomOptions options = gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true);
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  const float scale = hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
+  for (int i = 1; i <= 120; ++i) {
+    // Two pixels a frame for a second, then still for a second.
+    ImGui::GetIO().MousePos = ImVec2(held.x + 2.0f * static_cast<float>(std::min(i, 60)), held.y);
+    FrameRecord record;
+    hands.frame(1.0 / 60.0, &record);
+    if (i % 30 != 0) continue;
+    ASSERT_EQ(record.lanes.size(), 1u);
+    const Scene& scene = hands.lesson().scene();
+    const Camera& camera = record.lanes.front().camera;
+    const GaugeShape shape = gauge_shape(scene, camera, scale);
+    const ImVec2 pointer = ImGui::GetIO().MousePos;
+    EXPECT_NEAR(shape.ring.x, pointer.x, 0.5f) << "frame " << i;
+    EXPECT_NEAR(shape.ring.y, pointer.y, 0.5f) << "frame " << i;
+    // The pointer means the world point the hand pulls to, through the camera the lane drew with.
+    const b2Vec2 under = camera.to_world(pointer);
+    EXPECT_NEAR(under.x, scene.grab_target().x, 0.5f / camera.pixels_per_metre);
+    const ImVec2 hook = camera.to_screen(block->GetWorldPoint(scene.applied_forces().back().local_point));
+    EXPECT_NEAR(shape.hook.x, hook.x, 1e-3f);
+    // The case lies between the hook and the ring, ending at the ring's edge.
+    EXPECT_GE(shape.case_start.x, shape.hook.x) << "frame " << i;
+    EXPECT_LE(shape.case_start.x, shape.ring.x - shape.ring_radius + 1e-3f) << "frame " << i;
+  }
+  hands.button(false);
+}
+
+// The gauge's plot covers the hand's latest pull, not the lesson's whole time axis: a pull of a
+// second at t = 20 s after one at t = 0 is drawn over 20 s or so, not as a line at the end of
+// 0–21 s. With the lesson pushing too, the line is the hand's pull and the push together.
+TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
+  hands.frame();
+  hands.pull_right("block", 1.0f, 1.0);
+  Playback& playback = hands.classroom().playback();
+  playback.run_to(20.0);
+  const double taken = playback.lesson().scene().time();
+  hands.pull_right("block", 1.0f, 1.0);
+  const double h = playback.lesson().scene().frame_step();
+  const GaugeRecord& gauge = playback.gauge();
+  ASSERT_EQ(gauge.stretches(h).size(), 2u);
+  const double end = gauge.samples().back().t;
+  const Chart chart = gauge_chart(gauge, h, theme(ThemeName::light));
+  ASSERT_TRUE(chart.fixed_x);
+  // From a tenth of the pull before the hand took hold to a twentieth after it let go.
+  EXPECT_NEAR(chart.x_low, taken - 0.1 * (end - taken), 2.0 * h);
+  EXPECT_NEAR(chart.x_high, end + 0.05 * (end - taken), 2.0 * h);
+  ASSERT_EQ(chart.series.size(), 1u);
+  for (const auto& [t, force] : chart.series[0].points) EXPECT_GE(t, taken);
+  // The lesson pushes too: the line is the hand's reading and the push together along the floor,
+  // as the figures over it are taken.
+  EXPECT_EQ(chart.series[0].name, "hand + push");
+  const GaugeSample& last = gauge.samples().back();
+  EXPECT_NEAR(chart.series[0].points.back().second, last.force + 0.2 * (last.t - h), 1e-3);
+  for (const auto& [from, to] : chart.bands) EXPECT_GE(from, taken - h);
+}
+
 // A hand-pulled run differs from the lesson's predictions because of the hand, not the physics:
 // the theory table marks the rows hand-pulled with the stretch's times and why, and shows no
 // failure for them; a reset measures without the hand and judges again.
 TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
-  Hands hands("push", {{"mass", "10"}, {"push_rate", "0.2"}});
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   hands.pull_right("block", 1.0f, 2.0);
   Playback& playback = hands.classroom().playback();
@@ -213,10 +257,46 @@ TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
   EXPECT_EQ(playback.readings().caveat.find("Hand-pulled"), std::string::npos);
 }
 
+// A hand that pulls the block and then holds still brings it to rest, and it is held there: its
+// contact sticks (it is not labelled slipping at 0 m/s). push (10 kg, its own push growing at
+// 0.2 N/s) pulled 2 s at 9 cm/s, then held still for 2 s: the gauge and the push together
+// (28.5 N + 0.6 N) are under mu_s·m·g = 39.2 N, so static friction holds. With a critically
+// damped gauge the block crept after the hand at rate/k = 0.2 mm/s, slipping, for ever.
+TEST(ForceGauge, ABodyTheHandHoldsStillSticks) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
+  hands.frame();
+  const b2Body* block = hands.lesson().scene().body("block");
+  // Held still for 2 s, not let go: the last frame still holds it.
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  for (int i = 1; i <= 240; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x + static_cast<float>(std::min(i, 120)), held.y);
+    hands.frame(1.0 / 60.0);
+  }
+  const Scene& scene = hands.lesson().scene();
+  ASSERT_EQ(scene.grabbed(), block);
+  EXPECT_NEAR(scene.time(), 4.0, 0.01);
+  const std::optional<GaugeFigures> figures = hands.classroom().playback().gauge().figures(scene.frame_step());
+  ASSERT_TRUE(figures && figures->plateau) << "it slid while the hand pulled";
+  // At rest, to float round-off: not a creep of 0.2 mm/s the speed tool shows as 0.000 m/s.
+  EXPECT_LT(block->GetLinearVelocity().Length(), 1e-6f) << speed_reading(block);
+  ASSERT_FALSE(scene.slipping().empty());
+  EXPECT_EQ(scene.slipping().back(), 0) << "the contact still slips";
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(contact_word(marks.front()), "sticking");
+  // And what holds it is within static friction's limit.
+  const double pull = static_cast<double>(scene.forces_applied()[0].x + scene.forces_applied().back().x);
+  EXPECT_LT(pull, 0.4 * 10.0 * g);
+  EXPECT_NEAR(std::abs(marks.front().friction_force), pull, 1e-3 * pull);
+}
+
 // The stopwatch reads the lesson's clock: at half speed a second of wall time is half a second
 // of lesson, and a pause stops nothing it reads but the lesson.
 TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
-  Hands hands("push");
+  ClassroomHands hands(gauge_options("push"));
   hands.classroom().playback().set_speed(0.5);
   hands.frame();
   hands.key(Key::space);  // play
@@ -258,7 +338,7 @@ TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {
 // The speed shown beside the main body is its velocity: push's block sliding at t = 3 s, read
 // against the lesson's own probe of it.
 TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
-  Hands hands("push");
+  ClassroomHands hands(gauge_options("push"));
   hands.frame();
   hands.classroom().playback().run_to(3.0);
   const lessons::Lesson& lesson = hands.lesson();
@@ -272,7 +352,7 @@ TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
   EXPECT_EQ(speed_reading(block), expected);
   // A view that follows a body measures that one: stacked_blocks makes its top block first but
   // follows the bottom one, which the pull drives.
-  Hands stacked("stacked_blocks");
+  ClassroomHands stacked(gauge_options("stacked_blocks"));
   stacked.frame();
   ASSERT_EQ(main_body(stacked.lesson().scene()), stacked.lesson().scene().body("top"));
   EXPECT_EQ(measured_body(stacked.lesson()), stacked.lesson().scene().body("bottom"));
@@ -282,7 +362,7 @@ TEST(MeasuringTools, TheSpeedReadoutIsTheMainBodysVelocity) {
 // the incline at 25° (below its sticking angle): m·g·sin θ and m·g·cos θ, before the first step
 // and while it rests.
 TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
-  Hands hands("incline", {{"angle", "25"}, {"mass", "2"}});
+  ClassroomHands hands(gauge_options("incline", {{"angle", "25"}, {"mass", "2"}}));
   hands.frame();
   const double theta = 25.0 * M_PI / 180.0, mg = 2.0 * g;
   for (const double t : {0.0, 0.5}) {
@@ -301,7 +381,7 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
     EXPECT_NEAR(weight->into.y, -std::cos(theta), 1e-5);
   }
   // On a level floor there is nothing to split.
-  Hands level("push");
+  ClassroomHands level(gauge_options("push"));
   level.frame();
   level.classroom().playback().run_to(0.5);
   EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
@@ -310,7 +390,7 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
 // Distance marks count from where the main body stood at t = 0 (under its centre of mass), along
 // the surface: the incline's block at 1 s is as far from the mark "0 m" as its own probe says.
 TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
-  Hands hands("incline");
+  ClassroomHands hands(gauge_options("incline"));
   hands.frame();
   const std::optional<b2Vec2> origin = hands.classroom().tools().distance_origin();
   ASSERT_TRUE(origin.has_value());

@@ -142,7 +142,8 @@ class MysteryHidden : public ::testing::TestWithParam<Theory> {};
 TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
   options.window.predictions = GetParam() != Theory::table;
-  ClassroomHands hands(options);
+  // Tall enough for spring_pull's four rows of theory to keep their own panel beside the tabs.
+  ClassroomHands hands(options, ImVec2(1280.0f, 800.0f));
   const MysteryValues truth = mystery_values(window_seed);
   Classroom& window = hands.classroom();
   if (GetParam() == Theory::predictions_revealed) {

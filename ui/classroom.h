@@ -159,6 +159,10 @@ class Classroom {
     return found == control_errors_.end() ? "" : found->second;
   }
 
+  // The force gauge's figures over its plot: "peak 39.4 N,  sliding 29.1 N", or "hand + spring:
+  // peak ..." when the lesson pulled the body too; "" before the hand pulls.
+  std::string gauge_figures() const;
+
  private:
   void handle_keys();
   void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
@@ -170,7 +174,6 @@ class Classroom {
                    LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
-  std::string gauge_figures() const;  // "peak 39.4 N   sliding 29.1 N"; "" before the hand pulls
   void transport_bar(ImVec2 corner, ImVec2 size);
   // The transport bar's words, and its height: one row, or two when the words do not fit
   // beside the time bar.

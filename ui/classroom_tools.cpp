@@ -56,13 +56,21 @@ void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, 
   if (gauge_here) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
 }
 
-std::string Classroom::gauge_plot_title() const { return "Force gauge (N)"; }
+std::string Classroom::gauge_plot_title() const {
+  // The plot shows the pulls together when the lesson pulled the body too.
+  const Scene& scene = playback_->lesson().scene();
+  const std::optional<GaugeFigures> figures = playback_->gauge().figures(scene.frame_step());
+  if (!figures || figures->lesson_pulls.empty()) return "Force gauge (N)";
+  return "Hand + " + figures->lesson_pulls + " (N)";
+}
 
 std::string Classroom::gauge_figures() const {
   const Scene& scene = playback_->lesson().scene();
   const std::optional<GaugeFigures> figures = playback_->gauge().figures(scene.frame_step());
   if (!figures) return "";
-  std::string text = "peak " + format_quantity(figures->peak, "N");
+  // When the lesson pulled the body too, the figures are the pulls together, and say so.
+  std::string text = figures->lesson_pulls.empty() ? "" : "hand + " + figures->lesson_pulls + ": ";
+  text += "peak " + format_quantity(figures->peak, "N");
   text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
   return text;
 }

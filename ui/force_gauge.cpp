@@ -4,15 +4,45 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ui/measuring_tools.h"
 #include "ui/overlays.h"
 
 namespace frictionlab::ui {
 
 void GaugeRecord::after_step(const Scene& scene) {
-  if (scene.grabbed() == nullptr || scene.forces_applied().empty()) return;
+  const b2Body* body = scene.grabbed();
+  if (body == nullptr || scene.forces_applied().empty()) return;
   // The hand is always the scene's last applied force.
-  const b2Vec2 force = scene.forces_applied().back();
-  samples_.push_back({scene.frame(), scene.time(), static_cast<double>(force.Length()),
+  const b2Vec2 hand = scene.forces_applied().back();
+  bool lesson_pulls = false;
+  const auto name_pull = [&](const std::string& name, b2Vec2 force) {
+    if (force.LengthSquared() == 0.0f) return;
+    lesson_pulls = true;
+    if (lesson_pulls_.find(name) != std::string::npos) return;
+    lesson_pulls_ += (lesson_pulls_.empty() ? "" : " and ") + name;
+  };
+  for (std::size_t i = 0; i + 1 < scene.applied_forces().size(); ++i) {
+    if (scene.applied_forces()[i].body == body) name_pull(scene.applied_forces()[i].name, scene.forces_applied()[i]);
+  }
+  for (std::size_t i = 0; i < scene.springs().size(); ++i) {
+    const Spring& spring = scene.springs()[i];
+    if (spring.body == body || spring.other == body) name_pull(spring.name, scene.spring_forces_applied()[i]);
+  }
+  // Every pull on the body as the step applied it, the hand's among them: what friction answers
+  // while the body sticks.
+  b2Vec2 total{0.0f, 0.0f};
+  for (const ForceOnBody& force : forces_on(scene, body)) {
+    if (force.kind == ForceKind::tension) name_pull("rope", force.force);
+    if (force.kind == ForceKind::applied || force.kind == ForceKind::spring || force.kind == ForceKind::tension) {
+      total += force.force;
+    }
+  }
+  // Along the surface it stands on; off any, along the hand's pull.
+  b2Vec2 along = hand;
+  if (const std::optional<Surface> surface = surface_under(scene, body)) along = surface->along;
+  const float size = along.Normalize();
+  const double pull = size > 0.0f ? static_cast<double>(b2Dot(total, along)) : static_cast<double>(total.Length());
+  samples_.push_back({scene.frame(), scene.time(), static_cast<double>(hand.Length()), pull, lesson_pulls,
                       !scene.slipping().empty() && scene.slipping().back() != 0});
 }
 
@@ -26,16 +56,27 @@ std::vector<HandStretch> GaugeRecord::stretches(double frame_step) const {
   return found;
 }
 
+std::size_t GaugeRecord::latest_stretch_start() const {
+  // Back from the last sample while the frames run on without a gap.
+  std::size_t first = samples_.empty() ? 0 : samples_.size() - 1;
+  while (first > 0 && samples_[first].frame == samples_[first - 1].frame + 1) --first;
+  return first;
+}
+
 std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
   if (samples_.empty()) return std::nullopt;
-  // The latest stretch: back from the last sample while the frames run on without a gap.
-  std::size_t first = samples_.size() - 1;
-  while (first > 0 && samples_[first].frame == samples_[first - 1].frame + 1) --first;
+  const std::size_t first = latest_stretch_start();
   GaugeFigures figures;
+  bool lesson_pulled = false;
+  for (std::size_t i = first; i < samples_.size(); ++i) lesson_pulled = lesson_pulled || samples_[i].lesson_pulls;
+  // The gauge alone when the hand pulled alone: the pull along the surface then differs from it
+  // only by a slant the hand gave it.
+  const auto pull = [&](const GaugeSample& sample) { return lesson_pulled ? std::abs(sample.pull) : sample.force; };
+  if (lesson_pulled) figures.lesson_pulls = lesson_pulls_;
   figures.peak = -1.0;
   for (std::size_t i = first; i < samples_.size(); ++i) {
-    if (samples_[i].force > figures.peak) {
-      figures.peak = samples_[i].force;
+    if (pull(samples_[i]) > figures.peak) {
+      figures.peak = pull(samples_[i]);
       figures.peak_time = samples_[i].t;
     }
   }
@@ -46,7 +87,7 @@ std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
     if (sample.t < figures.peak_time + settle_time - 0.5 * frame_step || !sample.slipping) continue;
     if (count == 0) figures.plateau_from = sample.t;
     figures.plateau_to = sample.t;
-    sum += sample.force;
+    sum += pull(sample);
     ++count;
   }
   // A tenth of a second of sliding at least, or there is no plateau to speak of yet.
@@ -66,21 +107,16 @@ std::string stretches_text(const std::vector<HandStretch>& stretches) {
   return text;
 }
 
-namespace {
-
-// Where the gauge lies on the screen: its hook on the body, the hand's end of the coil, and its
-// case beyond the hand, along the pull.
-struct GaugeShape {
-  ImVec2 hook, hand, case_end, along;
-  float half_width;
-};
-
 GaugeShape gauge_shape(const Scene& scene, const Camera& camera, float scale) {
   const b2Body* body = scene.grabbed();
   GaugeShape shape{};
   shape.hook = camera.to_screen(body->GetWorldPoint(scene.applied_forces().back().local_point));
   shape.hand = camera.to_screen(scene.grab_hand());
-  ImVec2 along = sub(shape.hand, shape.hook);
+  // The ring is where the hand is: under the pointer, as the mouse moved it last.
+  shape.ring = camera.to_screen(scene.grab_target());
+  shape.half_width = 7.0f * scale;
+  shape.ring_radius = 5.0f * scale;
+  ImVec2 along = sub(shape.ring, shape.hook);
   if (length(along) < 2.0f) {
     // Slack: along the force it applies, or level when it applies none.
     const b2Vec2 force = scene.forces_applied().back();
@@ -88,10 +124,15 @@ GaugeShape gauge_shape(const Scene& scene, const Camera& camera, float scale) {
     if (length(along) < 1e-6f) along = ImVec2(1.0f, 0.0f);
   }
   shape.along = mul(along, 1.0f / length(along));
-  shape.case_end = add(shape.hand, mul(shape.along, 56.0f * scale));
-  shape.half_width = 7.0f * scale;
+  // The case ends at the ring and reaches back towards the hook, leaving the coil a little room.
+  const float room = length(sub(shape.ring, shape.hook)) - shape.ring_radius - 12.0f * scale;
+  const float case_length = std::clamp(room, 0.0f, 56.0f * scale);
+  const ImVec2 case_end = sub(shape.ring, mul(shape.along, shape.ring_radius));
+  shape.case_start = sub(case_end, mul(shape.along, case_length));
   return shape;
 }
+
+namespace {
 
 std::string reading_text(const Scene& scene) {
   return "gauge " + format_quantity(static_cast<double>(scene.forces_applied().back().Length()), "N");
@@ -102,8 +143,10 @@ std::string reading_text(const Scene& scene) {
 void avoid_gauge(const Scene& scene, const Camera& camera, float scale, LabelPlacer& labels) {
   if (scene.grabbed() == nullptr || scene.applied_forces().empty()) return;
   const GaugeShape shape = gauge_shape(scene, camera, scale);
+  // The scale's spring, from the point held to the hand's end of it, and the case with its ring.
   labels.avoid(DrawnSegment{shape.hook, shape.hand, shape.half_width});
-  labels.avoid(DrawnSegment{shape.hand, shape.case_end, shape.half_width + 2.0f * scale});
+  labels.avoid(DrawnSegment{shape.case_start, add(shape.ring, mul(shape.along, shape.ring_radius)),
+                            shape.half_width + 2.0f * scale});
 }
 
 void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, const Theme& theme, const Fonts& fonts,
@@ -112,8 +155,8 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
   const float s = fonts.scale;
   const GaugeShape shape = gauge_shape(scene, camera, s);
   const ImVec2 across(-shape.along.y, shape.along.x);
-  // The coil: a zigzag from the hook to the hand's end, as many turns however far it stretches.
-  const float stretch = length(sub(shape.hand, shape.hook));
+  // The coil: a zigzag from the hook into the case, as many turns however far it stretches.
+  const float stretch = length(sub(shape.case_start, shape.hook));
   if (stretch >= 3.0f) {
     constexpr int turns = 10;
     std::vector<ImVec2> coil;
@@ -121,27 +164,31 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
     for (int i = 1; i < 2 * turns; ++i) {
       const float f = static_cast<float>(i) / (2.0f * turns);
       const float side = (i % 2 == 0 ? -1.0f : 1.0f) * 0.7f * shape.half_width;
-      coil.push_back(add(add(shape.hook, mul(sub(shape.hand, shape.hook), f)), mul(across, side)));
+      coil.push_back(add(add(shape.hook, mul(sub(shape.case_start, shape.hook), f)), mul(across, side)));
     }
-    coil.push_back(shape.hand);
+    coil.push_back(shape.case_start);
     draw->AddPolyline(coil.data(), static_cast<int>(coil.size()), theme.spring, 0, 1.6f * s);
   }
   draw->AddCircleFilled(shape.hook, 3.5f * s, theme.hand);
-  // The case the hand holds, with a scale of marks along it, and the ring at its far end.
-  const ImVec2 corners[4] = {add(shape.hand, mul(across, shape.half_width)), add(shape.case_end, mul(across, shape.half_width)),
-                             sub(shape.case_end, mul(across, shape.half_width)), sub(shape.hand, mul(across, shape.half_width))};
-  draw->AddConvexPolyFilled(corners, 4, theme.panel);
-  draw->AddPolyline(corners, 4, theme.hand, ImDrawFlags_Closed, 2.0f * s);
-  for (int mark = 1; mark < 6; ++mark) {
-    const ImVec2 at = add(shape.hand, mul(shape.along, 56.0f * s * static_cast<float>(mark) / 6.0f));
-    draw->AddLine(add(at, mul(across, 0.5f * shape.half_width)), sub(at, mul(across, 0.5f * shape.half_width)),
-                  theme.hand, 1.0f * s);
+  // The case the hand holds, with a scale of marks along it, and the ring under the pointer.
+  const ImVec2 case_end = sub(shape.ring, mul(shape.along, shape.ring_radius));
+  const float case_length = length(sub(case_end, shape.case_start));
+  if (case_length >= 2.0f * s) {
+    const ImVec2 corners[4] = {add(shape.case_start, mul(across, shape.half_width)), add(case_end, mul(across, shape.half_width)),
+                               sub(case_end, mul(across, shape.half_width)), sub(shape.case_start, mul(across, shape.half_width))};
+    draw->AddConvexPolyFilled(corners, 4, theme.panel);
+    draw->AddPolyline(corners, 4, theme.hand, ImDrawFlags_Closed, 2.0f * s);
+    for (int mark = 1; mark < 6; ++mark) {
+      const ImVec2 at = add(shape.case_start, mul(shape.along, case_length * static_cast<float>(mark) / 6.0f));
+      draw->AddLine(add(at, mul(across, 0.5f * shape.half_width)), sub(at, mul(across, 0.5f * shape.half_width)),
+                    theme.hand, 1.0f * s);
+    }
   }
-  draw->AddCircle(add(shape.case_end, mul(shape.along, 5.0f * s)), 5.0f * s, theme.hand, 0, 2.0f * s);
+  draw->AddCircle(shape.ring, shape.ring_radius, theme.hand, 0, 2.0f * s);
   // Its reading on the case's upper side, as a scale's window shows it, or the nearest free place.
   const std::string text = reading_text(scene);
   const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-  const ImVec2 middle = mul(add(shape.hand, shape.case_end), 0.5f);
+  const ImVec2 middle = mul(add(shape.case_start, shape.ring), 0.5f);
   const ImVec2 up = across.y <= 0.0f ? across : mul(across, -1.0f);
   const ImVec2 wanted = add(middle, mul(up, shape.half_width + 6.0f * s + 0.5f * std::abs(up.y) * size.y +
                                                 0.5f * std::abs(up.x) * size.x));
@@ -153,37 +200,41 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   Chart chart;
   chart.title = "Force gauge";
   chart.plain = true;
-  // One line and the slip's shading, as the lesson's plots shade it: no legend to cover them.
   chart.legend = Chart::Legend::none;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
   chart.y_label = "";  // the panel's title says it: "Force gauge (N)"
+  // The latest stretch alone: a lesson that runs for minutes, or pulls long apart, would squeeze
+  // a pull of a few seconds into a line.
+  const std::vector<GaugeSample>& samples = record.samples();
+  const std::size_t first = record.latest_stretch_start();
+  // One line, as the figures over it are taken: the gauge's reading, or the hand's pull and the
+  // lesson's together when the lesson pulled the body too (the scale in the world reads the
+  // hand's alone). No legend to cover it: the panel's title and figures say which.
+  bool lesson_pulled = false;
+  for (std::size_t i = first; i < samples.size(); ++i) lesson_pulled = lesson_pulled || samples[i].lesson_pulls;
   ChartSeries reading;
-  reading.name = "gauge";
+  reading.name = lesson_pulled ? "hand + " + record.lesson_pulls() : "gauge";
   reading.colour = theme.hand;
   double highest = 0.0, latest = 0.0;
-  for (std::size_t i = 0; i < record.samples().size(); ++i) {
-    const GaugeSample& sample = record.samples()[i];
-    // A stretch's line starts afresh: no line across the time the hand let go.
-    if (i > 0 && sample.frame != record.samples()[i - 1].frame + 1) reading.points.push_back({sample.t, NAN});
-    reading.points.push_back({sample.t, sample.force});
-    highest = std::max(highest, sample.force);
+  for (std::size_t i = first; i < samples.size(); ++i) {
+    const GaugeSample& sample = samples[i];
+    const double shown = lesson_pulled ? std::abs(sample.pull) : sample.force;
+    reading.points.push_back({sample.t, shown});
+    highest = std::max(highest, shown);
     latest = sample.t;
   }
   chart.series.push_back(std::move(reading));
   // The slip shaded, as the lesson's plots shade it, where the hand was pulling.
-  for (std::size_t i = 0; i < record.samples().size();) {
-    if (!record.samples()[i].slipping) {
+  for (std::size_t i = first; i < samples.size();) {
+    if (!samples[i].slipping) {
       ++i;
       continue;
     }
     std::size_t j = i;
-    while (j + 1 < record.samples().size() && record.samples()[j + 1].slipping &&
-           record.samples()[j + 1].frame == record.samples()[j].frame + 1) {
-      ++j;
-    }
-    chart.bands.push_back({record.samples()[i].t - frame_step, record.samples()[j].t});
+    while (j + 1 < samples.size() && samples[j + 1].slipping) ++j;
+    chart.bands.push_back({samples[i].t - frame_step, samples[j].t});
     i = j + 1;
   }
   chart.band_colour = theme.slip_band;
@@ -191,13 +242,12 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   chart.mark_now = true;
   chart.now_colour = theme.now_marker;
   chart.now_x = latest;
-  // From a little before the hand took hold to now: a lesson that runs for minutes would squeeze
-  // a pull of a few seconds into a line.
-  const double first = record.empty() ? 0.0 : record.samples().front().t - frame_step;
-  const double span = std::max(latest - first, 1.0);
+  // From a little before the hand took hold to the latest sample.
+  const double start = samples.empty() ? 0.0 : samples[first].t - frame_step;
+  const double span = std::max(latest - start, 1.0);
   chart.fixed_x = true;
-  chart.x_low = std::max(0.0, first - 0.1 * span);
-  chart.x_high = std::max(latest, first + span) + 0.05 * span;
+  chart.x_low = std::max(0.0, start - 0.1 * span);
+  chart.x_high = std::max(latest, start + span) + 0.05 * span;
   chart.fixed_y = true;
   chart.y_low = 0.0;
   chart.y_high = std::max(1.0, 1.15 * highest);
