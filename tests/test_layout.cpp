@@ -74,9 +74,13 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
         EXPECT_FALSE(overlaps(label, mark)) << where << ": the label at " << text_of(label) << " covers a mark at "
                                             << text_of(mark);
       }
-      EXPECT_TRUE(label.x >= camera.origin.x && label.z <= camera.origin.x + camera.size.x &&
-                  label.y >= camera.origin.y && label.w <= camera.origin.y + camera.size.y)
-          << where << ": the label at " << text_of(label) << " is cut by the edge of its view";
+      // Inside what of the lane shows (its panel clips its edges), which is inside the lane.
+      const ImVec4& shown = lane.shown;
+      EXPECT_TRUE(label.x >= shown.x && label.z <= shown.z && label.y >= shown.y && label.w <= shown.w)
+          << where << ": the label at " << text_of(label) << " is cut by the edge of its view, " << text_of(shown);
+      EXPECT_TRUE(shown.x >= camera.origin.x && shown.z <= camera.origin.x + camera.size.x &&
+                  shown.y >= camera.origin.y && shown.w <= camera.origin.y + camera.size.y)
+          << where << ": the view's visible part " << text_of(shown) << " runs out of its lane";
     }
   }
   // No panel covers a moving body: none is under the free-body diagram in the lane it is in.
@@ -328,6 +332,72 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
       EXPECT_TRUE(stopwatch) << where << ": no label in the lane's top left corner (the stopwatch)";
       io.MouseDown[0] = false;
       frame(0.0, nullptr);
+    }
+  }
+}
+
+// The speed readout of a body at the world view's left edge, with projector text: centred over
+// the body it would start left of the view; the placer moves it in, and used to stop at the
+// lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
+// first letter. Every label is inside the part of the lane that shows.
+TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const float scale = 1.35f * 1.5f;
+  const Fonts& fonts = host.prepare(scale, ThemeName::light);
+  const ImVec2 display(1920.0f, 944.0f);
+  for (const char* name : {"push", "incline"}) {
+    LessonAt at(name, {}, 0.5);
+    lessons::Lesson& lesson = *at.lesson;
+    MeasuringTools tools;
+    tools.on.speed = true;
+    tools.follow(lesson);
+    FrameRecord record;
+    FrameStyle style;
+    style.fonts = &fonts;
+    style.record = &record;
+    // The view panned so that the main body's centre is at its left edge.
+    const Camera before = world_camera(lesson, at.framing, display, scale);
+    const b2Body* body = measured_body(lesson);
+    ASSERT_NE(body, nullptr) << name;
+    const float offset = before.to_screen(body->GetWorldCenter()).x - before.origin.x;
+    style.view_adjust.pan = b2Vec2(offset / before.pixels_per_metre, 0.0f);
+    style.world_tools = [&](bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                            LabelPlacer& labels) {
+      if (avoid) {
+        tools.avoid(lesson, camera, newtons_to_pixels, scale, labels);
+      } else {
+        tools.draw(draw, lesson, camera, newtons_to_pixels, theme(ThemeName::light), fonts, lane == 0, labels);
+      }
+    };
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display;
+    io.DeltaTime = 1.0f / 60.0f;
+    host.begin_frame();
+    build_frame(lesson, at.framing, style, display);
+    ImGui::Render();
+    ASSERT_EQ(record.lanes.size(), 1u) << name;
+    const FrameRecord::Lane& lane = record.lanes.front();
+    const float body_x = lane.camera.to_screen(body->GetWorldCenter()).x;
+    ASSERT_NEAR(body_x, lane.camera.origin.x, 2.0f) << name << ": the body is not at the view's left edge";
+    EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
+    check_layout(record, lesson, std::string(name) + " panned to the left edge, speed readout on");
+  }
+}
+
+// An open menu hides what is under it: its background (every popup's) and the menu bar's are
+// opaque in both themes, at a screen's text size and in projector mode. ImGui's own popups are
+// 94 % (dark) and 98 % (light) opaque, and on a projector the title and panels showed through.
+TEST(Menus, AreOpaqueInBothThemes) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const float scale : {1.0f, 1.35f * 1.5f}) {
+      host.prepare(scale, theme);
+      const ImGuiStyle& style = ImGui::GetStyle();
+      const char* where = theme == ThemeName::dark ? "dark" : "light";
+      EXPECT_EQ(style.Colors[ImGuiCol_PopupBg].w, 1.0f) << where << " at text scale " << scale;
+      EXPECT_EQ(style.Colors[ImGuiCol_MenuBarBg].w, 1.0f) << where << " at text scale " << scale;
     }
   }
 }

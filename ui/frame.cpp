@@ -206,7 +206,11 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const Camera& camera = cameras[lane];
       const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
       draw->PushClipRect(camera.origin, lane_end, true);
-      LabelPlacer labels(camera.origin, camera.size);
+      // Labels stay in what of the lane shows: the world's panel clips half its padding off
+      // each edge (10 px with projector text), and a label placed only inside the lane lost its
+      // first letter there (the speed readout of a body at the view's left edge).
+      const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
+      LabelPlacer labels(shown_min, sub(shown_max, shown_min));
       const ImVec4 inset(layout.inset_corner.x, layout.inset_corner.y, layout.inset_corner.x + layout.inset_size.x,
                          layout.inset_corner.y + layout.inset_size.y);
       labels.avoid(inset);
@@ -225,7 +229,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
                  cameras.size() > 1 ? &lane_bodies[lane] : nullptr);
       if (style.world_tools) style.world_tools(false, draw, camera, lane, newtons_to_pixels, labels);
       if (style.record != nullptr) {
-        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks()});
+        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
+                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y)});
         style.record->inset = inset;
       }
       if (!lane_name.empty()) {

@@ -46,6 +46,7 @@ struct FrameRecord {
     std::vector<ImVec4> labels;          // x0, y0, x1, y1
     std::vector<DrawnSegment> arrows;    // as thick as drawn, heads included
     std::vector<ImVec4> avoided;         // contact marks and the inset
+    ImVec4 shown{0.0f, 0.0f, 0.0f, 0.0f};  // what of the lane is not clipped away, x0, y0, x1, y1
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
