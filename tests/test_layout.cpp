@@ -204,6 +204,66 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
   }
 }
 
+// The tabs beside the theory table, each opened as a teacher clicks it: the energy ledger and
+// the model card. Their lines ran past the column's right edge in projector mode.
+TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(entry.name);
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.theme = theme;
+      Classroom window(options);
+      window.playback().run_to(0.5 * window.playback().lesson().duration());
+      const auto frame = [&](FrameRecord* record) {
+        gl.make_current();
+        const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        window.frame(fonts, display, 0.0, record);
+        ImGui::Render();
+      };
+      for (const char* tab : {"###energy", "###model"}) {
+        FrameRecord before;
+        frame(nullptr);
+        frame(&before);
+        const auto named = std::find_if(before.texts.begin(), before.texts.end(), [&](const ShownText& text) {
+          return text.text.find(tab) != std::string::npos;
+        });
+        ASSERT_NE(named, before.texts.end()) << entry.name << ": no tab " << tab;
+        // A click on the tab's name, then a few frames for the tab to settle.
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(0.5f * (named->needed.x + named->needed.z), 0.5f * (named->needed.y + named->needed.w));
+        frame(nullptr);
+        io.MouseDown[0] = true;
+        frame(nullptr);
+        io.MouseDown[0] = false;
+        frame(nullptr);
+        io.MousePos = ImVec2(-1.0f, -1.0f);
+        frame(nullptr);
+        FrameRecord record;
+        frame(&record);
+        std::string where = entry.name + " with the tab " + tab + " open, window " + screen.name;
+        if (theme == ThemeName::dark) where += ", dark";
+        // What only that tab shows: the ledger's residual, the model card's friction terms.
+        const char* shows = std::string(tab) == "###energy" ? "residual " : "friction: ";
+        const bool open = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+          return text.text.rfind(shows, 0) == 0;
+        });
+        EXPECT_TRUE(open) << where << ": the tab did not open";
+        check_texts(record, where);
+      }
+    }
+  }
+}
+
 std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);

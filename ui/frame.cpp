@@ -4,7 +4,6 @@
 #include <cmath>
 #include <optional>
 
-#include "lessons/runtime/model_card.h"
 #include "ui/overlays.h"
 #include "ui/panels.h"
 #include "ui/plots.h"
@@ -94,7 +93,6 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
   const float padding = 2.0f * imgui.WindowPadding.y;
   const float gap = 4.0f * s;
-  const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
   const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
   const float theory = bar + padding + 4.0f * s + theory_contents;
   const bool window = static_cast<bool>(style.parameters_panel);
@@ -104,10 +102,9 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   const auto parameters = [&](std::size_t step) {
     return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step, style.hidden);
   };
-  std::size_t model_lines = 4;
-  for (const lessons::ModelCard::PairLine& pair : lessons::model_card(lesson).pairs) model_lines += pair.own ? 1 : 0;
   const float ledger = energy_contents_height(lesson.scene(), inside);
-  const float energy = bar + padding + 4.0f * s + ledger, model = height_for(model_lines);
+  const float energy = bar + padding + 4.0f * s + ledger;
+  const float model = bar + padding + 4.0f * s + model_contents_height(lesson, inside);
   // A tab bar in place of a title bar, and "since t = 0" under it when the tab's name is short.
   const float books = std::max(bar + padding + 4.0f * s + line + ledger, model) + imgui.ItemSpacing.y;
   const float room = base.column_size.y;
