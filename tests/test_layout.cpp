@@ -264,6 +264,74 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
   }
 }
 
+// How much of a panel of the column is left empty under what it drew, and whether it scrolls.
+struct ColumnPanel {
+  bool drawn = false, scrolls = false;
+  float empty = 0.0f;
+};
+ColumnPanel column_panel(const char* id) {
+  const ImGuiWindow* panel = ImGui::FindWindowByName(id);
+  ColumnPanel found;
+  if (panel == nullptr || !panel->WasActive) return found;
+  found.drawn = true;
+  found.scrolls = panel->ScrollMax.y > 0.0f;
+  found.empty = panel->Pos.y + panel->Size.y - panel->WindowPadding.y - panel->DC.CursorMaxPos.y;
+  return found;
+}
+
+// The column's room goes where it is needed: while the theory table (or the class's
+// predictions, or the tabs it shares) scrolls, the Parameters panel keeps no empty room under
+// its controls. check_the_article's table showed 5 of its 7 rows in projector mode beside a
+// Parameters panel half empty.
+TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int scrolled = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    for (const bool predictions : {false, true}) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(entry.name);
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.predictions = predictions;
+      Classroom window(options);
+      const auto check_at = [&](double t, const char* moment) {
+        window.playback().run_to(t);
+        for (int frame = 0; frame < 4; ++frame) {
+          gl.make_current();
+          const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+          ImGuiIO& io = ImGui::GetIO();
+          io.DisplaySize = display;
+          io.DeltaTime = 1.0f / 60.0f;
+          host.begin_frame();
+          window.frame(fonts, display, 0.0, nullptr);
+          ImGui::Render();
+        }
+        const std::string where = entry.name + " " + moment + (predictions ? " with predictions" : "") + ", window " +
+                                  screen.name;
+        const ColumnPanel parameters = column_panel("###parameters");
+        ASSERT_TRUE(parameters.drawn) << where;
+        const ColumnPanel theory = column_panel("###theory"), books = column_panel("###books");
+        if (!theory.scrolls && !books.scrolls) return;
+        ++scrolled;
+        EXPECT_LE(parameters.empty, ImGui::GetFrameHeightWithSpacing())
+            << where << ": the theory scrolls while the Parameters panel keeps " << parameters.empty << " px empty";
+      };
+      check_at(0.0, "at the start");
+      for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+        window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
+      }
+      window.predictions().revealed = true;
+      check_at(window.playback().lesson().duration(), "revealed at the end");
+    }
+  }
+  if (screen.projector) {
+    EXPECT_GT(scrolled, 0) << "no lesson's theory scrolls in projector mode: the test tests nothing";
+  }
+}
+
 std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);

@@ -113,17 +113,23 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   plan.theory = theory;
   plan.energy = energy;
   plan.model = model;
-  // Whatever the column has to spare goes to the parameters.
+  // Whatever the column has to spare goes to the parameters while every panel has its own
+  // panel and all fit; once the books are tabs, the parameters take what they need and the
+  // tabs (the last panel, to the column's foot) the rest, for the theory table, the class's
+  // predictions or a longer tab the teacher picks: a projector's theory table scrolled beside
+  // a half-empty Parameters panel.
+  bool spare_to_parameters = true;
   const auto fits = [&](float others, std::size_t step) {
     const float wanted = parameters(step) + others;
     if (wanted > room) return false;
     plan.parameters_step = step;
-    plan.parameters = room - others;
+    plan.parameters = spare_to_parameters ? room - others : parameters(step);
     return true;
   };
   // The window always keeps the books as tabs (it has more of them).
   if (!window && fits(theory + energy + model + 3.0f * gap, 0)) return plan;
   plan.books_tabbed = true;
+  spare_to_parameters = false;
   if (fits(theory + books + 2.0f * gap, 0)) return plan;
   // The theory tab is the one shown first: the panel is made to hold it, and scrolls for a
   // longer tab the teacher picks.
