@@ -264,6 +264,148 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
   }
 }
 
+// Whether a plot's legend lies on any of its data: a measured point or the line to the next,
+// or a piece of a theory curve. Empty when none.
+std::string legend_on_data(const ChartLayout& plot) {
+  // The data are drawn clipped to the data area (a pixel more at the right and bottom): only
+  // the legend's part inside it can cover them.
+  const ImVec4 legend(std::max(plot.legend_min.x, plot.low_left.x), std::max(plot.legend_min.y, plot.high_right.y),
+                      std::min(plot.legend_max.x, plot.high_right.x + 1.0f), std::min(plot.legend_max.y, plot.low_left.y + 1.0f));
+  if (!plot.drawable || !(legend.z > legend.x && legend.w > legend.y)) return "";
+  const auto crosses = [&](const std::vector<ImVec2>& line) {
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const ImVec2 to = i + 1 < line.size() ? line[i + 1] : line[i];
+      if (overlaps(legend, DrawnSegment{line[i], to, 1.0f})) return text_of(ImVec4(line[i].x, line[i].y, to.x, to.y));
+    }
+    return std::string();
+  };
+  for (const std::vector<ImVec2>& series : plot.series_points) {
+    if (const std::string at = crosses(series); !at.empty()) return "the data at " + at;
+  }
+  for (const auto& curve : plot.theory) {
+    for (const std::vector<ImVec2>& piece : curve) {
+      if (const std::string at = crosses(piece); !at.empty()) return "a theory curve at " + at;
+    }
+  }
+  return "";
+}
+
+// Every plot's legend off its data, in the window as the class sees it: through the run, before
+// and after the theory is revealed (its curves add keys). With projector text three plots
+// across the screen put 3–5-key legends over the data (wedge, check_the_article, tipping_box,
+// push's friction against the pull after the reveal).
+TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(entry.name);
+    options.window.help = false;
+    options.window.projector = screen.projector;
+    Classroom window(options);
+    const double duration = window.playback().lesson().duration();
+    const auto frame = [&](FrameRecord* record) {
+      gl.make_current();
+      const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = display;
+      io.DeltaTime = 1.0f / 60.0f;
+      host.begin_frame();
+      window.frame(fonts, display, 0.0, record);
+      ImGui::Render();
+    };
+    const std::size_t plot_count = window.playback().lesson().plots().size();
+    const auto check_at = [&](double t, const char* moment) {
+      window.playback().run_to(t);
+      const std::string where = entry.name + " " + moment + ", window " + screen.name;
+      FrameRecord record;
+      frame(nullptr);
+      frame(nullptr);
+      frame(&record);
+      // The plots in view, then those on each further page (turned by the → button, when there
+      // are pages).
+      std::vector<bool> seen(plot_count, false);
+      std::vector<FrameRecord::Plot> plots = record.plots;
+      const auto button = [](const FrameRecord& shown, const char* label) -> const ShownText* {
+        for (const ShownText& text : shown.texts) {
+          if (text.text == label) return &text;
+        }
+        return nullptr;
+      };
+      const auto click = [&](const ShownText& at) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(0.5f * (at.needed.x + at.needed.z), 0.5f * (at.needed.y + at.needed.w));
+        frame(nullptr);
+        io.MouseDown[0] = true;
+        frame(nullptr);
+        // A button acts when let go over it.
+        io.MouseDown[0] = false;
+        frame(nullptr);
+        io.MousePos = ImVec2(-1.0f, -1.0f);
+        frame(nullptr);
+      };
+      FrameRecord page = record;
+      int pages = 1;
+      std::size_t page_start = plots.empty() ? 0 : plots.front().number;
+      for (const ShownText* next = button(page, "\u2192"); next != nullptr && pages <= static_cast<int>(plot_count);
+           next = button(page, "\u2192")) {
+        const ShownText at = *next;
+        click(at);
+        page = FrameRecord();
+        frame(&page);
+        // The last page's → does nothing.
+        if (page.plots.empty() || page.plots.front().number == page_start) break;
+        page_start = page.plots.front().number;
+        ++pages;
+        check_texts(page, where + ", plot page " + std::to_string(pages));
+        plots.insert(plots.end(), page.plots.begin(), page.plots.end());
+      }
+      // Back to the first page for the next moment.
+      for (int back = 1; back < pages; ++back) {
+        const ShownText* previous = button(page, "\u2190");
+        ASSERT_NE(previous, nullptr) << where;
+        const ShownText at = *previous;
+        click(at);
+        page = FrameRecord();
+        frame(&page);
+      }
+      for (const FrameRecord::Plot& plot : plots) {
+        ASSERT_LT(plot.number, plot_count) << where;
+        seen[plot.number] = true;
+        const std::string& title = window.playback().lesson().plots()[plot.number].title;
+        EXPECT_TRUE(plot.layout.drawable) << where << ": \"" << title << "\" has no data area";
+        const std::string covered = legend_on_data(plot.layout);
+        EXPECT_TRUE(covered.empty()) << where << ": the legend of \"" << title << "\" at "
+                                     << text_of(ImVec4(plot.layout.legend_min.x, plot.layout.legend_min.y,
+                                                       plot.layout.legend_max.x, plot.layout.legend_max.y))
+                                     << (plot.layout.legend_outside ? " (outside)" : "")
+                                     << (plot.layout.legend_on_data ? " (no room)" : "") << " lies on " << covered
+                                     << "; data area " << text_of(ImVec4(plot.layout.low_left.x, plot.layout.high_right.y,
+                                                                         plot.layout.high_right.x, plot.layout.low_left.y));
+      }
+      for (std::size_t i = 0; i < plot_count; ++i) {
+        EXPECT_TRUE(seen[i]) << where << ": \"" << window.playback().lesson().plots()[i].title << "\" is on no page";
+      }
+    };
+    for (const double share : {0.25, 0.5, 0.75, 1.0}) {
+      char moment[32];
+      std::snprintf(moment, sizeof moment, "at %.0f %% of the run", 100.0 * share);
+      check_at(share * duration, moment);
+    }
+    for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+      window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
+    }
+    window.predictions().revealed = true;
+    for (const double share : {0.5, 1.0}) {
+      char moment[48];
+      std::snprintf(moment, sizeof moment, "revealed, at %.0f %% of the run", 100.0 * share);
+      check_at(share * duration, moment);
+    }
+  }
+}
+
 // How much of a panel of the column is left empty under what it drew, and whether it scrolls.
 struct ColumnPanel {
   bool drawn = false, scrolls = false;

@@ -153,6 +153,141 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   return plan;
 }
 
+// A plot panel's inside, for its chart: less its title bar, or its title wrapped inside it
+// when the title is longer than the bar (large text, three plots in a row), or the pager's
+// row (buttons and title) that stands for the bar.
+bool title_inside(const std::string& title, ImVec2 size) {
+  return ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
+}
+// The pager's line: its title and the page's number, after the two buttons.
+std::string pager_line(const std::string& title, std::size_t page, std::size_t pages) {
+  return title + "  (" + std::to_string(page + 1) + "/" + std::to_string(pages) + ")";
+}
+float pager_buttons_width() {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  return 2.0f * (ImGui::CalcTextSize("\u2192").x + 2.0f * imgui.FramePadding.x + imgui.ItemSpacing.x);
+}
+ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  const float inside_width = size.x - 2.0f * imgui.WindowPadding.x;
+  const auto wrapped = [&](const std::string& text, float wrap) {
+    return ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap).y;
+  };
+  const float top =
+      pager ? std::max(ImGui::GetFrameHeight(), wrapped(pager_line(title, 9, 9), inside_width - pager_buttons_width()) +
+                                                    imgui.FramePadding.y) +
+                  imgui.ItemSpacing.y
+      : title_inside(title, size) ? wrapped(title, inside_width) + imgui.ItemSpacing.y
+                                  : ImGui::GetFrameHeight();
+  return ImVec2(inside_width, size.y - 2.0f * imgui.WindowPadding.y - top);
+}
+
+// The plots under the world: up to three side by side, more on a second row. In the window,
+// when that leaves a plot's legend no room off its data (large text: three plots across a
+// projector put 3–5-key legends over the data), fewer go side by side, a page at a time; the
+// first plot of a page has ← and → before its title to turn the pages, in place of its title
+// bar. The choice counts every key a plot can have (its theory curves, shown or not yet), so
+// the pages stay as the run goes on and at the reveal. A picture, which nobody clicks, keeps
+// every plot in view.
+void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
+                const Theme& colours) {
+  const Fonts& fonts = *style.fonts;
+  const float s = fonts.scale;
+  const auto& plots = lesson.plots();
+  // The window's extra plot (the force gauge) comes last.
+  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
+  if (plot_count == 0) return;
+  const auto title_of = [&](std::size_t i) -> const std::string& {
+    return i == plots.size() ? style.extra_plot_title : plots[i].title;
+  };
+  const float gap = 4.0f * s;
+  const std::size_t most = std::min<std::size_t>(plot_count, 3);
+  // Each lesson plot's legend has room at `per_row` plots side by side (a page of one row when
+  // that is fewer than all of them).
+  const auto all_have_room = [&](std::size_t per_row) {
+    const bool paged = per_row < most;
+    const std::size_t rows = paged ? 1 : (plot_count + per_row - 1) / per_row;
+    const ImVec2 size(layout.plots_size.x / static_cast<float>(per_row) - (per_row > 1 ? gap : 0.0f),
+                      layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+      // A little less than the panel will hold, so that rounding does not tip the choice.
+      const ImVec2 area = chart_area(title_of(i), size, paged && i % per_row == 0);
+      if (!legend_has_room(plot_chart(lesson, i, time_span, colours, true), ImVec2(area.x - 4.0f * s, area.y - 4.0f * s),
+                           fonts)) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::size_t per_row = most;
+  if (style.parameters_panel) {
+    while (per_row > 1 && !all_have_room(per_row)) --per_row;
+  }
+  const bool paged = per_row < most;
+  const std::size_t page_count = paged ? (plot_count + per_row - 1) / per_row : 1;
+  const std::size_t rows_of_plots = paged ? 1 : (plot_count + per_row - 1) / per_row;
+  const float width = layout.plots_size.x / static_cast<float>(per_row);
+  const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
+  std::size_t page = 0;
+  for (std::size_t k = 0; k < (paged ? per_row : plot_count); ++k) {
+    const std::size_t column = k % per_row, row = k / per_row;
+    const ImVec2 at(layout.plots_corner.x + width * static_cast<float>(column),
+                    layout.plots_corner.y + height * static_cast<float>(row));
+    const ImVec2 size(width - (column + 1 < per_row ? gap : 0.0f), height - (row + 1 < rows_of_plots ? gap : 0.0f));
+    const bool pager = paged && k == 0;
+    // The pager's panel keeps its name from page to page: the page is kept in its state.
+    const std::string id = pager ? std::string("plot pager") : "plot" + std::to_string(k);
+    std::size_t i = k;
+    bool open = false;
+    if (pager) {
+      open = begin_panel(id.c_str(), "", at, size);
+      ImGuiStorage* state = ImGui::GetStateStorage();
+      const ImGuiID kept = ImGui::GetID("page");
+      page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
+      const auto turn = [&](const char* label, bool enabled, std::size_t to) {
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::Button(label)) page = to;
+        note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+      };
+      turn("\u2190", page > 0, page > 0 ? page - 1 : 0);
+      turn("\u2192", page + 1 < page_count, page + 1);
+      state->SetInt(kept, static_cast<int>(page));
+      i = page * per_row;
+    } else {
+      i = page * per_row + k;
+      if (i >= plot_count) break;
+    }
+    const std::string& title = title_of(i);
+    const bool inside = !pager && title_inside(title, size);
+    if (!pager) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
+    if (open) {
+      if (pager) {
+        // The title on the buttons' line, as a title bar would have it, with the page's number.
+        ImGui::AlignTextToFramePadding();
+        const std::string line = pager_line(title, page, page_count);
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(line.c_str());
+        ImGui::PopTextWrapPos();
+      } else if (inside) {
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(title.c_str());
+        ImGui::PopTextWrapPos();
+      }
+      const ImVec2 area = ImGui::GetContentRegionAvail();
+      if (i == plots.size()) {
+        style.extra_plot(ImGui::GetCursorScreenPos(), area);
+      } else {
+        const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
+                                            area, colours, fonts, !style.theory_hidden && !style.hidden.theory());
+        if (style.record != nullptr) style.record->plots.push_back({i, drawn});
+      }
+    }
+    end_panel();
+  }
+}
+
 }  // namespace
 
 void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
@@ -254,47 +389,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
   end_panel();
 
-  // The plots side by side under the world.
-  const auto& plots = lesson.plots();
-  // The window's extra plot (the force gauge) comes last.
-  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
-  if (plot_count > 0) {
-    const double time_span = std::max(readings.duration, lesson.scene().time());
-    // Up to three side by side; more go on a second row.
-    const std::size_t per_row = std::min<std::size_t>(plot_count, 3);
-    const std::size_t rows_of_plots = (plot_count + per_row - 1) / per_row;
-    const float width = layout.plots_size.x / static_cast<float>(per_row);
-    const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
-    for (std::size_t i = 0; i < plot_count; ++i) {
-      const std::size_t column = i % per_row, row = i / per_row;
-      const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(column),
-                          layout.plots_corner.y + height * static_cast<float>(row));
-      const ImVec2 size(width - (column + 1 < per_row ? 4.0f * s : 0.0f),
-                        height - (row + 1 < rows_of_plots ? 4.0f * s : 0.0f));
-      const std::string id = "plot" + std::to_string(i);
-      // A title longer than its title bar (large text, three plots in a row) goes inside the
-      // panel instead, wrapped over the chart.
-      const bool extra = i == plots.size();
-      const std::string& title = extra ? style.extra_plot_title : plots[i].title;
-      const bool title_inside =
-          ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
-      if (begin_panel(id.c_str(), title_inside ? "" : title.c_str(), corner, size)) {
-        if (title_inside) {
-          ImGui::PushTextWrapPos(0.0f);
-          shown_text(title.c_str());
-          ImGui::PopTextWrapPos();
-        }
-        const ImVec2 area = ImGui::GetContentRegionAvail();
-        if (extra) {
-          style.extra_plot(ImGui::GetCursorScreenPos(), area);
-        } else {
-          draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                    fonts, !style.theory_hidden && !style.hidden.theory());
-        }
-      }
-      end_panel();
-    }
-  }
+  draw_plots(lesson, style, layout, std::max(readings.duration, lesson.scene().time()), colours);
 
   // The column: parameters, theory against simulation, energy, model.
   const ColumnPlan& plan = column_plan;

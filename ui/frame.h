@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/chart.h"
 #include "ui/drawing.h"
 #include "ui/panels.h"
 #include "ui/text_record.h"
@@ -52,6 +53,12 @@ struct FrameRecord {
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
   // Every piece of text the panels drew, with what of it could show.
   std::vector<ShownText> texts;
+  // Where each of the lesson's plots in view put its data, curves and legend: its number, its layout.
+  struct Plot {
+    std::size_t number;
+    ChartLayout layout;
+  };
+  std::vector<Plot> plots;
 };
 
 struct FrameStyle {
