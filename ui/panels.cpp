@@ -173,7 +173,7 @@ std::string with_unit(double value, const std::string& unit) {
 // Each row's three cells as text, so the layout can be chosen from their widths.
 struct TheoryCells {
   struct Cells {
-    std::string predicted, measured, error;
+    std::string theory, measured, error;
     bool measured_yet, passes, hand_pulled;
   };
   std::vector<Cells> cells;
@@ -185,13 +185,13 @@ struct TheoryCells {
 };
 
 TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden) {
-  TheoryCells table{{}, {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
+  TheoryCells table{{}, {ImGui::CalcTextSize("theory").x, ImGui::CalcTextSize("measured").x,
                          ImGui::CalcTextSize("error").x}};
   float* widest = table.widest;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
                             row.measured_yet, row.passes, row.hand_pulled && !row.passes};
-    if (predictions_hidden) cell.predicted = "hidden";
+    if (predictions_hidden) cell.theory = "hidden";
     if (row.measured_yet) {
       cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
       if (predictions_hidden) {
@@ -207,7 +207,7 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
       // Not a failure: the hand's pull is in no prediction (the caveat above says when it pulled).
       if (row.hand_pulled && !row.passes) cell.error = "hand-pulled";
     }
-    widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
+    widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.theory.c_str()).x);
     widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
     widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
     table.cells.push_back(std::move(cell));
@@ -257,12 +257,12 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       // The numbers keep their width; a long name wraps.
       if (names_above) {
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
-        ImGui::TableSetupColumn("predicted", ImGuiTableColumnFlags_WidthFixed, widest[0]);
+        ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
         ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
         ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthStretch);
       } else {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("predicted");
+        ImGui::TableSetupColumn("theory");
         ImGui::TableSetupColumn("measured");
         ImGui::TableSetupColumn("error");
       }
@@ -283,7 +283,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
           note_text(rows[i].name.c_str());
           ImGui::TableNextColumn();
         }
-        shown_text(cell.predicted.c_str());
+        shown_text(cell.theory.c_str());
         ImGui::TableNextColumn();
         if (!cell.measured_yet) {
           ImGui::TextDisabled("not yet");
