@@ -74,9 +74,13 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
         EXPECT_FALSE(overlaps(label, mark)) << where << ": the label at " << text_of(label) << " covers a mark at "
                                             << text_of(mark);
       }
-      EXPECT_TRUE(label.x >= camera.origin.x && label.z <= camera.origin.x + camera.size.x &&
-                  label.y >= camera.origin.y && label.w <= camera.origin.y + camera.size.y)
-          << where << ": the label at " << text_of(label) << " is cut by the edge of its view";
+      // Inside what of the lane shows (its panel clips its edges), which is inside the lane.
+      const ImVec4& shown = lane.shown;
+      EXPECT_TRUE(label.x >= shown.x && label.z <= shown.z && label.y >= shown.y && label.w <= shown.w)
+          << where << ": the label at " << text_of(label) << " is cut by the edge of its view, " << text_of(shown);
+      EXPECT_TRUE(shown.x >= camera.origin.x && shown.z <= camera.origin.x + camera.size.x &&
+                  shown.y >= camera.origin.y && shown.w <= camera.origin.y + camera.size.y)
+          << where << ": the view's visible part " << text_of(shown) << " runs out of its lane";
     }
   }
   // No panel covers a moving body: none is under the free-body diagram in the lane it is in.
@@ -197,6 +201,276 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
       window.predictions().revealed = true;
       check_at(duration, "revealed");
     }
+  }
+}
+
+// The tabs beside the theory table, each opened as a teacher clicks it: the energy ledger and
+// the model card. Their lines ran past the column's right edge in projector mode.
+TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(entry.name);
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.theme = theme;
+      Classroom window(options);
+      window.playback().run_to(0.5 * window.playback().lesson().duration());
+      const auto frame = [&](FrameRecord* record) {
+        gl.make_current();
+        const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        window.frame(fonts, display, 0.0, record);
+        ImGui::Render();
+      };
+      for (const char* tab : {"###energy", "###model"}) {
+        FrameRecord before;
+        frame(nullptr);
+        frame(&before);
+        const auto named = std::find_if(before.texts.begin(), before.texts.end(), [&](const ShownText& text) {
+          return text.text.find(tab) != std::string::npos;
+        });
+        ASSERT_NE(named, before.texts.end()) << entry.name << ": no tab " << tab;
+        // A click on the tab's name, then a few frames for the tab to settle.
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(0.5f * (named->needed.x + named->needed.z), 0.5f * (named->needed.y + named->needed.w));
+        frame(nullptr);
+        io.MouseDown[0] = true;
+        frame(nullptr);
+        io.MouseDown[0] = false;
+        frame(nullptr);
+        io.MousePos = ImVec2(-1.0f, -1.0f);
+        frame(nullptr);
+        FrameRecord record;
+        frame(&record);
+        std::string where = entry.name + " with the tab " + tab + " open, window " + screen.name;
+        if (theme == ThemeName::dark) where += ", dark";
+        // What only that tab shows: the ledger's residual, the model card's friction terms.
+        const char* shows = std::string(tab) == "###energy" ? "residual " : "friction: ";
+        const bool open = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+          return text.text.rfind(shows, 0) == 0;
+        });
+        EXPECT_TRUE(open) << where << ": the tab did not open";
+        check_texts(record, where);
+      }
+    }
+  }
+}
+
+// Whether a plot's legend lies on any of its data: a measured point or the line to the next,
+// or a piece of a theory curve. Empty when none.
+std::string legend_on_data(const ChartLayout& plot) {
+  // The data are drawn clipped to the data area (a pixel more at the right and bottom): only
+  // the legend's part inside it can cover them.
+  const ImVec4 legend(std::max(plot.legend_min.x, plot.low_left.x), std::max(plot.legend_min.y, plot.high_right.y),
+                      std::min(plot.legend_max.x, plot.high_right.x + 1.0f), std::min(plot.legend_max.y, plot.low_left.y + 1.0f));
+  if (!plot.drawable || !(legend.z > legend.x && legend.w > legend.y)) return "";
+  const auto crosses = [&](const std::vector<ImVec2>& line) {
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const ImVec2 to = i + 1 < line.size() ? line[i + 1] : line[i];
+      if (overlaps(legend, DrawnSegment{line[i], to, 1.0f})) return text_of(ImVec4(line[i].x, line[i].y, to.x, to.y));
+    }
+    return std::string();
+  };
+  for (const std::vector<ImVec2>& series : plot.series_points) {
+    if (const std::string at = crosses(series); !at.empty()) return "the data at " + at;
+  }
+  for (const auto& curve : plot.theory) {
+    for (const std::vector<ImVec2>& piece : curve) {
+      if (const std::string at = crosses(piece); !at.empty()) return "a theory curve at " + at;
+    }
+  }
+  return "";
+}
+
+// Every plot's legend off its data, in the window as the class sees it: through the run, before
+// and after the theory is revealed (its curves add keys). With projector text three plots
+// across the screen put 3–5-key legends over the data (wedge, check_the_article, tipping_box,
+// push's friction against the pull after the reveal).
+TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(entry.name);
+    options.window.help = false;
+    options.window.projector = screen.projector;
+    Classroom window(options);
+    const double duration = window.playback().lesson().duration();
+    const auto frame = [&](FrameRecord* record) {
+      gl.make_current();
+      const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = display;
+      io.DeltaTime = 1.0f / 60.0f;
+      host.begin_frame();
+      window.frame(fonts, display, 0.0, record);
+      ImGui::Render();
+    };
+    const std::size_t plot_count = window.playback().lesson().plots().size();
+    const auto check_at = [&](double t, const char* moment) {
+      window.playback().run_to(t);
+      const std::string where = entry.name + " " + moment + ", window " + screen.name;
+      FrameRecord record;
+      frame(nullptr);
+      frame(nullptr);
+      frame(&record);
+      // The plots in view, then those on each further page (turned by the → button, when there
+      // are pages).
+      std::vector<bool> seen(plot_count, false);
+      std::vector<FrameRecord::Plot> plots = record.plots;
+      const auto button = [](const FrameRecord& shown, const char* label) -> const ShownText* {
+        for (const ShownText& text : shown.texts) {
+          if (text.text == label) return &text;
+        }
+        return nullptr;
+      };
+      const auto click = [&](const ShownText& at) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(0.5f * (at.needed.x + at.needed.z), 0.5f * (at.needed.y + at.needed.w));
+        frame(nullptr);
+        io.MouseDown[0] = true;
+        frame(nullptr);
+        // A button acts when let go over it.
+        io.MouseDown[0] = false;
+        frame(nullptr);
+        io.MousePos = ImVec2(-1.0f, -1.0f);
+        frame(nullptr);
+      };
+      FrameRecord page = record;
+      int pages = 1;
+      std::size_t page_start = plots.empty() ? 0 : plots.front().number;
+      for (const ShownText* next = button(page, "\u2192"); next != nullptr && pages <= static_cast<int>(plot_count);
+           next = button(page, "\u2192")) {
+        const ShownText at = *next;
+        click(at);
+        page = FrameRecord();
+        frame(&page);
+        // The last page's → does nothing.
+        if (page.plots.empty() || page.plots.front().number == page_start) break;
+        page_start = page.plots.front().number;
+        ++pages;
+        check_texts(page, where + ", plot page " + std::to_string(pages));
+        plots.insert(plots.end(), page.plots.begin(), page.plots.end());
+      }
+      // Back to the first page for the next moment.
+      for (int back = 1; back < pages; ++back) {
+        const ShownText* previous = button(page, "\u2190");
+        ASSERT_NE(previous, nullptr) << where;
+        const ShownText at = *previous;
+        click(at);
+        page = FrameRecord();
+        frame(&page);
+      }
+      for (const FrameRecord::Plot& plot : plots) {
+        ASSERT_LT(plot.number, plot_count) << where;
+        seen[plot.number] = true;
+        const std::string& title = window.playback().lesson().plots()[plot.number].title;
+        EXPECT_TRUE(plot.layout.drawable) << where << ": \"" << title << "\" has no data area";
+        const std::string covered = legend_on_data(plot.layout);
+        EXPECT_TRUE(covered.empty()) << where << ": the legend of \"" << title << "\" at "
+                                     << text_of(ImVec4(plot.layout.legend_min.x, plot.layout.legend_min.y,
+                                                       plot.layout.legend_max.x, plot.layout.legend_max.y))
+                                     << (plot.layout.legend_outside ? " (outside)" : "")
+                                     << (plot.layout.legend_on_data ? " (no room)" : "") << " lies on " << covered
+                                     << "; data area " << text_of(ImVec4(plot.layout.low_left.x, plot.layout.high_right.y,
+                                                                         plot.layout.high_right.x, plot.layout.low_left.y));
+      }
+      for (std::size_t i = 0; i < plot_count; ++i) {
+        EXPECT_TRUE(seen[i]) << where << ": \"" << window.playback().lesson().plots()[i].title << "\" is on no page";
+      }
+    };
+    for (const double share : {0.25, 0.5, 0.75, 1.0}) {
+      char moment[32];
+      std::snprintf(moment, sizeof moment, "at %.0f %% of the run", 100.0 * share);
+      check_at(share * duration, moment);
+    }
+    for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+      window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
+    }
+    window.predictions().revealed = true;
+    for (const double share : {0.5, 1.0}) {
+      char moment[48];
+      std::snprintf(moment, sizeof moment, "revealed, at %.0f %% of the run", 100.0 * share);
+      check_at(share * duration, moment);
+    }
+  }
+}
+
+// How much of a panel of the column is left empty under what it drew, and whether it scrolls.
+struct ColumnPanel {
+  bool drawn = false, scrolls = false;
+  float empty = 0.0f;
+};
+ColumnPanel column_panel(const char* id) {
+  const ImGuiWindow* panel = ImGui::FindWindowByName(id);
+  ColumnPanel found;
+  if (panel == nullptr || !panel->WasActive) return found;
+  found.drawn = true;
+  found.scrolls = panel->ScrollMax.y > 0.0f;
+  found.empty = panel->Pos.y + panel->Size.y - panel->WindowPadding.y - panel->DC.CursorMaxPos.y;
+  return found;
+}
+
+// The column's room goes where it is needed: while the theory table (or the class's
+// predictions, or the tabs it shares) scrolls, the Parameters panel keeps no empty room under
+// its controls. check_the_article's table showed 5 of its 7 rows in projector mode beside a
+// Parameters panel half empty.
+TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int scrolled = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    for (const bool predictions : {false, true}) {
+      ClassroomOptions options;
+      options.lesson = lessons::resolve_lesson(entry.name);
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      options.window.predictions = predictions;
+      Classroom window(options);
+      const auto check_at = [&](double t, const char* moment) {
+        window.playback().run_to(t);
+        for (int frame = 0; frame < 4; ++frame) {
+          gl.make_current();
+          const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+          ImGuiIO& io = ImGui::GetIO();
+          io.DisplaySize = display;
+          io.DeltaTime = 1.0f / 60.0f;
+          host.begin_frame();
+          window.frame(fonts, display, 0.0, nullptr);
+          ImGui::Render();
+        }
+        const std::string where = entry.name + " " + moment + (predictions ? " with predictions" : "") + ", window " +
+                                  screen.name;
+        const ColumnPanel parameters = column_panel("###parameters");
+        ASSERT_TRUE(parameters.drawn) << where;
+        const ColumnPanel theory = column_panel("###theory"), books = column_panel("###books");
+        if (!theory.scrolls && !books.scrolls) return;
+        ++scrolled;
+        EXPECT_LE(parameters.empty, ImGui::GetFrameHeightWithSpacing())
+            << where << ": the theory scrolls while the Parameters panel keeps " << parameters.empty << " px empty";
+      };
+      check_at(0.0, "at the start");
+      for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+        window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
+      }
+      window.predictions().revealed = true;
+      check_at(window.playback().lesson().duration(), "revealed at the end");
+    }
+  }
+  if (screen.projector) {
+    EXPECT_GT(scrolled, 0) << "no lesson's theory scrolls in projector mode: the test tests nothing";
   }
 }
 
@@ -331,6 +605,72 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
       EXPECT_TRUE(stopwatch) << where << ": no label in the lane's top left corner (the stopwatch)";
       io.MouseDown[0] = false;
       frame(0.0, nullptr);
+    }
+  }
+}
+
+// The speed readout of a body at the world view's left edge, with projector text: centred over
+// the body it would start left of the view; the placer moves it in, and used to stop at the
+// lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
+// first letter. Every label is inside the part of the lane that shows.
+TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const float scale = 1.35f * 1.5f;
+  const Fonts& fonts = host.prepare(scale, ThemeName::light);
+  const ImVec2 display(1920.0f, 944.0f);
+  for (const char* name : {"push", "incline"}) {
+    LessonAt at(name, {}, 0.5);
+    lessons::Lesson& lesson = *at.lesson;
+    MeasuringTools tools;
+    tools.on.speed = true;
+    tools.follow(lesson);
+    FrameRecord record;
+    FrameStyle style;
+    style.fonts = &fonts;
+    style.record = &record;
+    // The view panned so that the main body's centre is at its left edge.
+    const Camera before = world_camera(lesson, at.framing, display, scale);
+    const b2Body* body = measured_body(lesson);
+    ASSERT_NE(body, nullptr) << name;
+    const float offset = before.to_screen(body->GetWorldCenter()).x - before.origin.x;
+    style.view_adjust.pan = b2Vec2(offset / before.pixels_per_metre, 0.0f);
+    style.world_tools = [&](bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
+                            LabelPlacer& labels) {
+      if (avoid) {
+        tools.avoid(lesson, camera, newtons_to_pixels, scale, labels);
+      } else {
+        tools.draw(draw, lesson, camera, newtons_to_pixels, theme(ThemeName::light), fonts, lane == 0, labels);
+      }
+    };
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display;
+    io.DeltaTime = 1.0f / 60.0f;
+    host.begin_frame();
+    build_frame(lesson, at.framing, style, display);
+    ImGui::Render();
+    ASSERT_EQ(record.lanes.size(), 1u) << name;
+    const FrameRecord::Lane& lane = record.lanes.front();
+    const float body_x = lane.camera.to_screen(body->GetWorldCenter()).x;
+    ASSERT_NEAR(body_x, lane.camera.origin.x, 2.0f) << name << ": the body is not at the view's left edge";
+    EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
+    check_layout(record, lesson, std::string(name) + " panned to the left edge, speed readout on");
+  }
+}
+
+// An open menu hides what is under it: its background (every popup's) and the menu bar's are
+// opaque in both themes, at a screen's text size and in projector mode. ImGui's own popups are
+// 94 % (dark) and 98 % (light) opaque, and on a projector the title and panels showed through.
+TEST(Menus, AreOpaqueInBothThemes) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const float scale : {1.0f, 1.35f * 1.5f}) {
+      host.prepare(scale, theme);
+      const ImGuiStyle& style = ImGui::GetStyle();
+      const char* where = theme == ThemeName::dark ? "dark" : "light";
+      EXPECT_EQ(style.Colors[ImGuiCol_PopupBg].w, 1.0f) << where << " at text scale " << scale;
+      EXPECT_EQ(style.Colors[ImGuiCol_MenuBarBg].w, 1.0f) << where << " at text scale " << scale;
     }
   }
 }

@@ -378,6 +378,24 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         // losing its data, in the corner it covers least of.
         const float column = legend_size.x + 8.0f * s;
         const float data_width = layout.high_right.x - layout.low_left.x;
+        // A legend too tall for one column beside the data, in two or more: each column's
+        // width, or none when the data would keep less than 30 % of the width.
+        const auto beside_columns = [&](float full_width, float data_height) {
+          const float key_height = text + 2.0f * s;
+          for (std::size_t columns = 2; columns <= keys.size(); ++columns) {
+            const std::size_t per_column = (keys.size() + columns - 1) / columns;
+            if (static_cast<float>(per_column) * key_height > data_height) continue;
+            std::vector<float> widths((keys.size() + per_column - 1) / per_column, 0.0f);
+            float total = 0.0f;
+            for (std::size_t i = 0; i < keys.size(); ++i) {
+              widths[i / per_column] = std::max(widths[i / per_column], width_of(font, keys[i].name) + 24.0f * s);
+            }
+            for (const float w : widths) total += w + 8.0f * s;
+            if (full_width - total >= 0.3f * full_width) return widths;
+            break;  // more columns are wider still
+          }
+          return std::vector<float>();
+        };
         const float rows_height = rows.back().y - rows.front().y + row_height + 4.0f * s;
         if (data_width - column >= 0.5f * data_width && legend_size.y <= layout.low_left.y - layout.high_right.y) {
           layout.high_right.x -= column;
@@ -391,8 +409,23 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
           layout.legend_at = rows;
           layout.high_right.y = rows.back().y + row_height + 4.0f * s;
           place();
+        } else if (const std::vector<float> widths = beside_columns(data_width, layout.low_left.y - layout.high_right.y);
+                   !widths.empty()) {
+          // Beside the data in columns, as few as its height allows, keys in order down each.
+          const std::size_t per_column = (keys.size() + widths.size() - 1) / widths.size();
+          float total = 0.0f;
+          for (const float w : widths) total += w + 8.0f * s;
+          layout.high_right.x -= total;
+          float x = layout.high_right.x + 8.0f * s;
+          for (std::size_t i = 0; i < keys.size(); ++i) {
+            if (i > 0 && i % per_column == 0) x += widths[i / per_column - 1] + 8.0f * s;
+            layout.legend_at.push_back(ImVec2(x, layout.high_right.y + static_cast<float>(i % per_column) * (text + 2.0f * s)));
+          }
+          set_x_ticks(data_width - total);
+          place();
         } else {
           layout.legend_outside = false;
+          layout.legend_on_data = true;
           in_corner();
         }
       } else {
@@ -451,7 +484,8 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   return layout;
 }
 
-void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts) {
+ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
+                       const Fonts& fonts) {
   const float s = fonts.scale;
   ImFont* font = fonts.small;
   const float text = font->FontSize;
@@ -473,10 +507,10 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
       draw->AddText(font, text, ImVec2(corner.x + 12.0f * s, y + 6.0f * s), theme.faint_text, note.c_str());
       y += line;
     }
-    return;
+    return {};
   }
   const ChartLayout layout = layout_chart(chart, corner, size, fonts);
-  if (!layout.drawable) return;
+  if (!layout.drawable) return layout;
   const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
   const float width = high_right.x - low_left.x;
   const ChartAxes axes = axes_of(chart);
@@ -616,6 +650,30 @@ void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart
       draw->AddText(font, text, ImVec2(at.x + 20.0f * s, at.y), theme.text, key.name.c_str());
     }
   }
+  return layout;
+}
+
+bool legend_has_room(const Chart& chart, ImVec2 size, const Fonts& fonts) {
+  if (chart.legend != Chart::Legend::inside || chart.log_x || chart.log_y) return true;
+  const ChartLayout plain = layout_chart(chart, ImVec2(0.0f, 0.0f), size, fonts);
+  if (!plain.drawable) return false;
+  // Data everywhere: a nameless series on a grid over the axes' whole range, so that no corner
+  // is free. The axes keep their range (fixed by the chart, or its data's with a margin).
+  Chart filled = chart;
+  filled.fixed_x = filled.fixed_y = true;
+  filled.x_low = plain.x_low, filled.x_high = plain.x_high, filled.y_low = plain.y_low, filled.y_high = plain.y_high;
+  ChartSeries everywhere;
+  everywhere.line = false;
+  constexpr int grid = 24;
+  for (int i = 0; i <= grid; ++i) {
+    for (int j = 0; j <= grid; ++j) {
+      everywhere.points.push_back({plain.x_low + (plain.x_high - plain.x_low) * i / grid,
+                                   plain.y_low + (plain.y_high - plain.y_low) * j / grid});
+    }
+  }
+  filled.series.push_back(std::move(everywhere));
+  const ChartLayout layout = layout_chart(filled, ImVec2(0.0f, 0.0f), size, fonts);
+  return layout.drawable && !layout.legend_on_data;
 }
 
 LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,

@@ -106,13 +106,18 @@ struct ChartLayout {
   ImVec2 legend_min, legend_max;
   std::vector<ImVec2> legend_at;  // an inside legend's keys, one by one
   bool legend_outside = false;  // an inside legend that found no free corner: in a row above
+  // An inside legend with no room off the data (neither a free corner, beside nor above): in
+  // the corner it covers least of.
+  bool legend_on_data = false;
   bool drawable = false;        // room enough for a data area
 
   ImVec2 to_screen(double x, double y) const;  // the chart's own numbers to screen points
 };
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts);
-void draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme, const Fonts& fonts);
+// Draws the chart and returns where its parts went.
+ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
+                       const Fonts& fonts);
 
 // Parts the lesson plots (ui/plots.cpp) draw with too.
 
@@ -126,6 +131,11 @@ struct LegendPlace {
 };
 LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
                           const std::vector<ImVec2>& points, float radius);
+
+// Whether a chart of this size has room for its legend off its data however the data fill the
+// data area (beside or above it), or needs more room: for choosing how many plots go side by
+// side, once, without the choice changing as the data come in.
+bool legend_has_room(const Chart& chart, ImVec2 size, const Fonts& fonts);
 
 // A curve made of pieces (a nil in a theory function splits it), in screen points.
 using CurvePieces = std::vector<std::vector<ImVec2>>;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <optional>
 
-#include "lessons/runtime/model_card.h"
 #include "ui/overlays.h"
 #include "ui/panels.h"
 #include "ui/plots.h"
@@ -94,7 +93,6 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
   const float padding = 2.0f * imgui.WindowPadding.y;
   const float gap = 4.0f * s;
-  const auto height_for = [&](std::size_t lines) { return bar + padding + line * static_cast<float>(lines) + 4.0f * s; };
   const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
   const float theory = bar + padding + 4.0f * s + theory_contents;
   const bool window = static_cast<bool>(style.parameters_panel);
@@ -104,10 +102,9 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   const auto parameters = [&](std::size_t step) {
     return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step, style.hidden);
   };
-  std::size_t model_lines = 4;
-  for (const lessons::ModelCard::PairLine& pair : lessons::model_card(lesson).pairs) model_lines += pair.own ? 1 : 0;
   const float ledger = energy_contents_height(lesson.scene(), inside);
-  const float energy = bar + padding + 4.0f * s + ledger, model = height_for(model_lines);
+  const float energy = bar + padding + 4.0f * s + ledger;
+  const float model = bar + padding + 4.0f * s + model_contents_height(lesson, inside);
   // A tab bar in place of a title bar, and "since t = 0" under it when the tab's name is short.
   const float books = std::max(bar + padding + 4.0f * s + line + ledger, model) + imgui.ItemSpacing.y;
   const float room = base.column_size.y;
@@ -116,17 +113,23 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   plan.theory = theory;
   plan.energy = energy;
   plan.model = model;
-  // Whatever the column has to spare goes to the parameters.
+  // Whatever the column has to spare goes to the parameters while every panel has its own
+  // panel and all fit; once the books are tabs, the parameters take what they need and the
+  // tabs (the last panel, to the column's foot) the rest, for the theory table, the class's
+  // predictions or a longer tab the teacher picks: a projector's theory table scrolled beside
+  // a half-empty Parameters panel.
+  bool spare_to_parameters = true;
   const auto fits = [&](float others, std::size_t step) {
     const float wanted = parameters(step) + others;
     if (wanted > room) return false;
     plan.parameters_step = step;
-    plan.parameters = room - others;
+    plan.parameters = spare_to_parameters ? room - others : parameters(step);
     return true;
   };
   // The window always keeps the books as tabs (it has more of them).
   if (!window && fits(theory + energy + model + 3.0f * gap, 0)) return plan;
   plan.books_tabbed = true;
+  spare_to_parameters = false;
   if (fits(theory + books + 2.0f * gap, 0)) return plan;
   // The theory tab is the one shown first: the panel is made to hold it, and scrolls for a
   // longer tab the teacher picks.
@@ -148,6 +151,141 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   }
   plan.parameters = std::min(parameters(plan.parameters_step), budget);
   return plan;
+}
+
+// A plot panel's inside, for its chart: less its title bar, or its title wrapped inside it
+// when the title is longer than the bar (large text, three plots in a row), or the pager's
+// row (buttons and title) that stands for the bar.
+bool title_inside(const std::string& title, ImVec2 size) {
+  return ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
+}
+// The pager's line: its title and the page's number, after the two buttons.
+std::string pager_line(const std::string& title, std::size_t page, std::size_t pages) {
+  return title + "  (" + std::to_string(page + 1) + "/" + std::to_string(pages) + ")";
+}
+float pager_buttons_width() {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  return 2.0f * (ImGui::CalcTextSize("\u2192").x + 2.0f * imgui.FramePadding.x + imgui.ItemSpacing.x);
+}
+ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  const float inside_width = size.x - 2.0f * imgui.WindowPadding.x;
+  const auto wrapped = [&](const std::string& text, float wrap) {
+    return ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap).y;
+  };
+  const float top =
+      pager ? std::max(ImGui::GetFrameHeight(), wrapped(pager_line(title, 9, 9), inside_width - pager_buttons_width()) +
+                                                    imgui.FramePadding.y) +
+                  imgui.ItemSpacing.y
+      : title_inside(title, size) ? wrapped(title, inside_width) + imgui.ItemSpacing.y
+                                  : ImGui::GetFrameHeight();
+  return ImVec2(inside_width, size.y - 2.0f * imgui.WindowPadding.y - top);
+}
+
+// The plots under the world: up to three side by side, more on a second row. In the window,
+// when that leaves a plot's legend no room off its data (large text: three plots across a
+// projector put 3–5-key legends over the data), fewer go side by side, a page at a time; the
+// first plot of a page has ← and → before its title to turn the pages, in place of its title
+// bar. The choice counts every key a plot can have (its theory curves, shown or not yet), so
+// the pages stay as the run goes on and at the reveal. A picture, which nobody clicks, keeps
+// every plot in view.
+void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
+                const Theme& colours) {
+  const Fonts& fonts = *style.fonts;
+  const float s = fonts.scale;
+  const auto& plots = lesson.plots();
+  // The window's extra plot (the force gauge) comes last.
+  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
+  if (plot_count == 0) return;
+  const auto title_of = [&](std::size_t i) -> const std::string& {
+    return i == plots.size() ? style.extra_plot_title : plots[i].title;
+  };
+  const float gap = 4.0f * s;
+  const std::size_t most = std::min<std::size_t>(plot_count, 3);
+  // Each lesson plot's legend has room at `per_row` plots side by side (a page of one row when
+  // that is fewer than all of them).
+  const auto all_have_room = [&](std::size_t per_row) {
+    const bool paged = per_row < most;
+    const std::size_t rows = paged ? 1 : (plot_count + per_row - 1) / per_row;
+    const ImVec2 size(layout.plots_size.x / static_cast<float>(per_row) - (per_row > 1 ? gap : 0.0f),
+                      layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+      // A little less than the panel will hold, so that rounding does not tip the choice.
+      const ImVec2 area = chart_area(title_of(i), size, paged && i % per_row == 0);
+      if (!legend_has_room(plot_chart(lesson, i, time_span, colours, true), ImVec2(area.x - 4.0f * s, area.y - 4.0f * s),
+                           fonts)) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::size_t per_row = most;
+  if (style.parameters_panel) {
+    while (per_row > 1 && !all_have_room(per_row)) --per_row;
+  }
+  const bool paged = per_row < most;
+  const std::size_t page_count = paged ? (plot_count + per_row - 1) / per_row : 1;
+  const std::size_t rows_of_plots = paged ? 1 : (plot_count + per_row - 1) / per_row;
+  const float width = layout.plots_size.x / static_cast<float>(per_row);
+  const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
+  std::size_t page = 0;
+  for (std::size_t k = 0; k < (paged ? per_row : plot_count); ++k) {
+    const std::size_t column = k % per_row, row = k / per_row;
+    const ImVec2 at(layout.plots_corner.x + width * static_cast<float>(column),
+                    layout.plots_corner.y + height * static_cast<float>(row));
+    const ImVec2 size(width - (column + 1 < per_row ? gap : 0.0f), height - (row + 1 < rows_of_plots ? gap : 0.0f));
+    const bool pager = paged && k == 0;
+    // The pager's panel keeps its name from page to page: the page is kept in its state.
+    const std::string id = pager ? std::string("plot pager") : "plot" + std::to_string(k);
+    std::size_t i = k;
+    bool open = false;
+    if (pager) {
+      open = begin_panel(id.c_str(), "", at, size);
+      ImGuiStorage* state = ImGui::GetStateStorage();
+      const ImGuiID kept = ImGui::GetID("page");
+      page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
+      const auto turn = [&](const char* label, bool enabled, std::size_t to) {
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::Button(label)) page = to;
+        note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+      };
+      turn("\u2190", page > 0, page > 0 ? page - 1 : 0);
+      turn("\u2192", page + 1 < page_count, page + 1);
+      state->SetInt(kept, static_cast<int>(page));
+      i = page * per_row;
+    } else {
+      i = page * per_row + k;
+      if (i >= plot_count) break;
+    }
+    const std::string& title = title_of(i);
+    const bool inside = !pager && title_inside(title, size);
+    if (!pager) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
+    if (open) {
+      if (pager) {
+        // The title on the buttons' line, as a title bar would have it, with the page's number.
+        ImGui::AlignTextToFramePadding();
+        const std::string line = pager_line(title, page, page_count);
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(line.c_str());
+        ImGui::PopTextWrapPos();
+      } else if (inside) {
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(title.c_str());
+        ImGui::PopTextWrapPos();
+      }
+      const ImVec2 area = ImGui::GetContentRegionAvail();
+      if (i == plots.size()) {
+        style.extra_plot(ImGui::GetCursorScreenPos(), area);
+      } else {
+        const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
+                                            area, colours, fonts, !style.theory_hidden && !style.hidden.theory());
+        if (style.record != nullptr) style.record->plots.push_back({i, drawn});
+      }
+    }
+    end_panel();
+  }
 }
 
 }  // namespace
@@ -206,7 +344,11 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       const Camera& camera = cameras[lane];
       const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
       draw->PushClipRect(camera.origin, lane_end, true);
-      LabelPlacer labels(camera.origin, camera.size);
+      // Labels stay in what of the lane shows: the world's panel clips half its padding off
+      // each edge (10 px with projector text), and a label placed only inside the lane lost its
+      // first letter there (the speed readout of a body at the view's left edge).
+      const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
+      LabelPlacer labels(shown_min, sub(shown_max, shown_min));
       const ImVec4 inset(layout.inset_corner.x, layout.inset_corner.y, layout.inset_corner.x + layout.inset_size.x,
                          layout.inset_corner.y + layout.inset_size.y);
       labels.avoid(inset);
@@ -225,7 +367,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
                  cameras.size() > 1 ? &lane_bodies[lane] : nullptr);
       if (style.world_tools) style.world_tools(false, draw, camera, lane, newtons_to_pixels, labels);
       if (style.record != nullptr) {
-        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks()});
+        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
+                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y)});
         style.record->inset = inset;
       }
       if (!lane_name.empty()) {
@@ -246,47 +389,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
   end_panel();
 
-  // The plots side by side under the world.
-  const auto& plots = lesson.plots();
-  // The window's extra plot (the force gauge) comes last.
-  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
-  if (plot_count > 0) {
-    const double time_span = std::max(readings.duration, lesson.scene().time());
-    // Up to three side by side; more go on a second row.
-    const std::size_t per_row = std::min<std::size_t>(plot_count, 3);
-    const std::size_t rows_of_plots = (plot_count + per_row - 1) / per_row;
-    const float width = layout.plots_size.x / static_cast<float>(per_row);
-    const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
-    for (std::size_t i = 0; i < plot_count; ++i) {
-      const std::size_t column = i % per_row, row = i / per_row;
-      const ImVec2 corner(layout.plots_corner.x + width * static_cast<float>(column),
-                          layout.plots_corner.y + height * static_cast<float>(row));
-      const ImVec2 size(width - (column + 1 < per_row ? 4.0f * s : 0.0f),
-                        height - (row + 1 < rows_of_plots ? 4.0f * s : 0.0f));
-      const std::string id = "plot" + std::to_string(i);
-      // A title longer than its title bar (large text, three plots in a row) goes inside the
-      // panel instead, wrapped over the chart.
-      const bool extra = i == plots.size();
-      const std::string& title = extra ? style.extra_plot_title : plots[i].title;
-      const bool title_inside =
-          ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
-      if (begin_panel(id.c_str(), title_inside ? "" : title.c_str(), corner, size)) {
-        if (title_inside) {
-          ImGui::PushTextWrapPos(0.0f);
-          shown_text(title.c_str());
-          ImGui::PopTextWrapPos();
-        }
-        const ImVec2 area = ImGui::GetContentRegionAvail();
-        if (extra) {
-          style.extra_plot(ImGui::GetCursorScreenPos(), area);
-        } else {
-          draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area, colours,
-                    fonts, !style.theory_hidden && !style.hidden.theory());
-        }
-      }
-      end_panel();
-    }
-  }
+  draw_plots(lesson, style, layout, std::max(readings.duration, lesson.scene().time()), colours);
 
   // The column: parameters, theory against simulation, energy, model.
   const ColumnPlan& plan = column_plan;

@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/chart.h"
 #include "ui/drawing.h"
 #include "ui/panels.h"
 #include "ui/text_record.h"
@@ -46,11 +47,18 @@ struct FrameRecord {
     std::vector<ImVec4> labels;          // x0, y0, x1, y1
     std::vector<DrawnSegment> arrows;    // as thick as drawn, heads included
     std::vector<ImVec4> avoided;         // contact marks and the inset
+    ImVec4 shown{0.0f, 0.0f, 0.0f, 0.0f};  // what of the lane is not clipped away, x0, y0, x1, y1
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
   // Every piece of text the panels drew, with what of it could show.
   std::vector<ShownText> texts;
+  // Where each of the lesson's plots in view put its data, curves and legend: its number, its layout.
+  struct Plot {
+    std::size_t number;
+    ChartLayout layout;
+  };
+  std::vector<Plot> plots;
 };
 
 struct FrameStyle {

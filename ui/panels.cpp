@@ -173,7 +173,7 @@ std::string with_unit(double value, const std::string& unit) {
 // Each row's three cells as text, so the layout can be chosen from their widths.
 struct TheoryCells {
   struct Cells {
-    std::string predicted, measured, error;
+    std::string theory, measured, error;
     bool measured_yet, passes, hand_pulled;
   };
   std::vector<Cells> cells;
@@ -185,13 +185,13 @@ struct TheoryCells {
 };
 
 TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden) {
-  TheoryCells table{{}, {ImGui::CalcTextSize("predicted").x, ImGui::CalcTextSize("measured").x,
+  TheoryCells table{{}, {ImGui::CalcTextSize("theory").x, ImGui::CalcTextSize("measured").x,
                          ImGui::CalcTextSize("error").x}};
   float* widest = table.widest;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
                             row.measured_yet, row.passes, row.hand_pulled && !row.passes};
-    if (predictions_hidden) cell.predicted = "hidden";
+    if (predictions_hidden) cell.theory = "hidden";
     if (row.measured_yet) {
       cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
       if (predictions_hidden) {
@@ -207,7 +207,7 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
       // Not a failure: the hand's pull is in no prediction (the caveat above says when it pulled).
       if (row.hand_pulled && !row.passes) cell.error = "hand-pulled";
     }
-    widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.predicted.c_str()).x);
+    widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.theory.c_str()).x);
     widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
     widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
     table.cells.push_back(std::move(cell));
@@ -257,12 +257,12 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       // The numbers keep their width; a long name wraps.
       if (names_above) {
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
-        ImGui::TableSetupColumn("predicted", ImGuiTableColumnFlags_WidthFixed, widest[0]);
+        ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
         ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
         ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthStretch);
       } else {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("predicted");
+        ImGui::TableSetupColumn("theory");
         ImGui::TableSetupColumn("measured");
         ImGui::TableSetupColumn("error");
       }
@@ -283,7 +283,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
           note_text(rows[i].name.c_str());
           ImGui::TableNextColumn();
         }
-        shown_text(cell.predicted.c_str());
+        shown_text(cell.theory.c_str());
         ImGui::TableNextColumn();
         if (!cell.measured_yet) {
           ImGui::TextDisabled("not yet");
@@ -334,11 +334,53 @@ void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& t
   end_panel();
 }
 
+namespace {
+
+// The ledger's lines: what the bodies have, then what has been done to them since t = 0.
+struct LedgerLine {
+  const char* name;
+  double value;
+};
+constexpr const char* stored_names[] = {"kinetic", "gravity", "spring"};
+constexpr const char* work_names[] = {"work: applied", "driven bodies", "dry friction",
+                                      "drag (c, b)",   "impacts",       "velocity set by the script"};
+
+// The script's line only in lessons whose script has set a velocity: the others keep the
+// panel they had.
+std::size_t work_lines(const EnergyLedger& ledger) { return ledger.work_script != 0.0 ? 6 : 5; }
+
+// One resolution for every line, 0.1 mJ, so the columns line up and add up by eye.
+std::string joules(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4f J", std::abs(value) < 5e-5 ? 0.0 : value);
+  std::string shown = text;
+  if (shown[0] == '-') shown.replace(0, 1, "\u2212");
+  return shown;
+}
+
+// Whether the stored and the work lines fit side by side (four columns) in `width`, in the
+// current font, with values as long as a ledger's usually are; else they go one under the
+// other (two columns), as with large text in a narrow column (projector mode).
+bool ledger_side_by_side(const EnergyLedger& ledger, float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const auto widest = [](const char* const* names, std::size_t count) {
+    float w = 0.0f;
+    for (std::size_t i = 0; i < count; ++i) w = std::max(w, ImGui::CalcTextSize(names[i]).x);
+    return w;
+  };
+  const float value = ImGui::CalcTextSize("\u2212000.0000 J").x;
+  const float cells = 4.0f * 2.0f * style.CellPadding.x + 3.0f * style.ItemSpacing.x;
+  return widest(stored_names, 3) + widest(work_names, work_lines(ledger)) + 2.0f * value + cells <= width;
+}
+
+}  // namespace
+
 float energy_contents_height(const Scene& scene, float width) {
   const ImGuiStyle& style = ImGui::GetStyle();
   // As energy_contents lays it out: the table's rows, then the residual, wrapped, at its
   // longest.
-  const float rows = scene.ledger().work_script != 0.0 ? 6.0f : 5.0f;
+  const EnergyLedger& ledger = scene.ledger();
+  const float rows = static_cast<float>(ledger_side_by_side(ledger, width) ? work_lines(ledger) : 3 + work_lines(ledger));
   const float table = rows * (ImGui::GetFontSize() + 2.0f * style.CellPadding.y) + style.ItemSpacing.y;
   const char* longest = "residual \u22124.7\u00d710\u207b\u2074 J, 100.00 % of the largest term";
   return table + ImGui::CalcTextSize(longest, nullptr, false, width).y + style.ItemSpacing.y;
@@ -347,37 +389,40 @@ float energy_contents_height(const Scene& scene, float width) {
 void energy_contents(const Scene& scene, const Theme& theme) {
   {
     const EnergyLedger& ledger = scene.ledger();
-    struct Line {
-      const char* name;
-      double value;
-    };
-    // What the bodies have, then what has been done to them since t = 0.
-    const Line stored[] = {{"kinetic", ledger.kinetic}, {"gravity", ledger.potential}, {"spring", ledger.spring}};
-    const Line work[] = {{"work: applied", ledger.work_applied}, {"driven bodies", ledger.work_drivers},
-                         {"dry friction", ledger.work_friction}, {"drag (c, b)", ledger.work_damping},
-                         {"impacts", ledger.work_impacts}, {"velocity set by the script", ledger.work_script}};
-    // One resolution for every line, 0.1 mJ, so the columns line up and add up by eye.
-    const auto joules = [](double value) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.4f J", std::abs(value) < 5e-5 ? 0.0 : value);
-      std::string shown = text;
-      if (shown[0] == '-') shown.replace(0, 1, "\u2212");
-      return shown;
-    };
-    if (ImGui::BeginTable("ledger", 4, ImGuiTableFlags_SizingFixedFit)) {
-      // The script's line only in lessons whose script has set a velocity: the others keep the
-      // panel they had.
-      const std::size_t lines = ledger.work_script != 0.0 ? std::size(work) : std::size(work) - 1;
-      for (std::size_t i = 0; i < lines; ++i) {
-        ImGui::TableNextRow();
+    const LedgerLine stored[] = {{stored_names[0], ledger.kinetic}, {stored_names[1], ledger.potential},
+                                 {stored_names[2], ledger.spring}};
+    const LedgerLine work[] = {{work_names[0], ledger.work_applied}, {work_names[1], ledger.work_drivers},
+                               {work_names[2], ledger.work_friction}, {work_names[3], ledger.work_damping},
+                               {work_names[4], ledger.work_impacts},  {work_names[5], ledger.work_script}};
+    const std::size_t lines = work_lines(ledger);
+    const bool side_by_side = ledger_side_by_side(ledger, ImGui::GetContentRegionAvail().x);
+    if (ImGui::BeginTable("ledger", side_by_side ? 4 : 2, ImGuiTableFlags_SizingFixedFit)) {
+      const auto cell = [](const LedgerLine& line) {
         ImGui::TableNextColumn();
-        if (i < 3) shown_text(stored[i].name);
+        shown_text(line.name);
         ImGui::TableNextColumn();
-        if (i < 3) shown_text(joules(stored[i].value).c_str());
-        ImGui::TableNextColumn();
-        shown_text(work[i].name);
-        ImGui::TableNextColumn();
-        shown_text(joules(work[i].value).c_str());
+        shown_text(joules(line.value).c_str());
+      };
+      if (side_by_side) {
+        for (std::size_t i = 0; i < lines; ++i) {
+          ImGui::TableNextRow();
+          if (i < 3) {
+            cell(stored[i]);
+          } else {
+            ImGui::TableNextColumn();
+            ImGui::TableNextColumn();
+          }
+          cell(work[i]);
+        }
+      } else {
+        for (const LedgerLine& line : stored) {
+          ImGui::TableNextRow();
+          cell(line);
+        }
+        for (std::size_t i = 0; i < lines; ++i) {
+          ImGui::TableNextRow();
+          cell(work[i]);
+        }
       }
       ImGui::EndTable();
     }
@@ -407,33 +452,53 @@ void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size) {
   end_panel();
 }
 
-void model_contents(const lessons::Lesson& lesson) {
-  {
-    const lessons::ModelCard card = lessons::model_card(lesson);
-    const std::string held = card.constraints > 0 ? ", less " + std::to_string(card.constraints) + " held by joints" : "";
-    // Each line noted as drawn, so the layout test sees a line the panel cuts.
-    const auto line = [](const char* format, auto... values) {
-      char text[256];
-      std::snprintf(text, sizeof text, format, values...);
-      shown_text(text);
-    };
-    line("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
-         card.moving_bodies == 1 ? "y" : "ies", held.c_str());
-    std::string terms = card.dry ? "dry (\u03bcs, \u03bck)" : "no dry friction";
-    terms += card.viscous ? ", viscous c" : ", no viscous c";
-    terms += card.quadratic ? ", quadratic b" : ", no quadratic b";
-    line("friction: %s", terms.c_str());
-    line("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
-    line("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
-         card.velocity_iterations);
-    // Pairs that name their own treatment say so; every other pair follows the run's.
-    for (const lessons::ModelCard::PairLine& pair : card.pairs) {
-      if (!pair.own) continue;
-      char epsilon[48] = "";
-      if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
-      line("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
-    }
+namespace {
+
+// The model card's lines.
+std::vector<std::string> model_lines(const lessons::Lesson& lesson) {
+  const lessons::ModelCard card = lessons::model_card(lesson);
+  std::vector<std::string> lines;
+  const auto line = [&](const char* format, auto... values) {
+    char text[256];
+    std::snprintf(text, sizeof text, format, values...);
+    lines.emplace_back(text);
+  };
+  const std::string held = card.constraints > 0 ? ", less " + std::to_string(card.constraints) + " held by joints" : "";
+  line("%d degrees of freedom: %d moving bod%s%s", card.degrees_of_freedom, card.moving_bodies,
+       card.moving_bodies == 1 ? "y" : "ies", held.c_str());
+  std::string terms = card.dry ? "dry (\u03bcs, \u03bck)" : "no dry friction";
+  terms += card.viscous ? ", viscous c" : ", no viscous c";
+  terms += card.quadratic ? ", quadratic b" : ", no quadratic b";
+  line("friction: %s", terms.c_str());
+  line("%s treatment, %g steps per second", card.treatment.c_str(), card.hz);
+  line("%d sub-step%s a step, %d velocity iterations", card.substeps, card.substeps == 1 ? "" : "s",
+       card.velocity_iterations);
+  // Pairs that name their own treatment say so; every other pair follows the run's.
+  for (const lessons::ModelCard::PairLine& pair : card.pairs) {
+    if (!pair.own) continue;
+    char epsilon[48] = "";
+    if (pair.epsilon > 0.0) std::snprintf(epsilon, sizeof epsilon, ", \u03b5 = %g m/s", pair.epsilon);
+    line("  %s on %s: %s%s", pair.material_a.c_str(), pair.material_b.c_str(), pair.treatment.c_str(), epsilon);
   }
+  return lines;
+}
+
+}  // namespace
+
+void model_contents(const lessons::Lesson& lesson) {
+  // Each line wrapped at the panel's edge (with projector text a line is longer than the
+  // column) and noted as drawn, so the layout test sees a line the panel cuts.
+  ImGui::PushTextWrapPos(0.0f);
+  for (const std::string& line : model_lines(lesson)) shown_text(line.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+float model_contents_height(const lessons::Lesson& lesson, float width) {
+  float height = 0.0f;
+  for (const std::string& line : model_lines(lesson)) {
+    height += ImGui::CalcTextSize(line.c_str(), nullptr, false, width).y + ImGui::GetStyle().ItemSpacing.y;
+  }
+  return height;
 }
 
 }  // namespace frictionlab::ui

@@ -70,5 +70,7 @@ void energy_contents(const Scene& scene, const Theme& theme);
 // The height energy_contents takes at a width (the panel's inside), in the current font.
 float energy_contents_height(const Scene& scene, float width);
 void model_contents(const lessons::Lesson& lesson);
+// The height model_contents takes at a width (the panel's inside), in the current font.
+float model_contents_height(const lessons::Lesson& lesson, float width);
 
 }  // namespace frictionlab::ui

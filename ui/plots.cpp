@@ -174,9 +174,9 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
   return layout_chart(plot_chart(lesson, plot, time_span, theme(ThemeName::light)), corner, size, fonts);
 }
 
-void draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
-               const Theme& theme, const Fonts& fonts, bool with_theory) {
-  draw_chart(draw, corner, size, plot_chart(lesson, plot, time_span, theme, with_theory), theme, fonts);
+ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
+                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory) {
+  return draw_chart(draw, corner, size, plot_chart(lesson, plot, time_span, theme, with_theory), theme, fonts);
 }
 
 }  // namespace frictionlab::ui

@@ -28,8 +28,8 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, co
 ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
                         const Fonts& fonts);
 
-// Draws plot number `plot` of the lesson into the rectangle.
-void draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
-               const Theme& theme, const Fonts& fonts, bool with_theory = true);
+// Draws plot number `plot` of the lesson into the rectangle; where its parts went.
+ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
+                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true);
 
 }  // namespace frictionlab::ui
