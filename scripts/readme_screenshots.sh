@@ -89,7 +89,8 @@ projector="help = off\npredictions = off\nprojector = on\nwidth = 1920\nheight =
 # push's 10 kg block (its own push at its slowest, 0.2 N/s) pulled by hand at about 4 cm/s through
 # the gauge: a peak of hand and push together at mu_s·m·g = 39.2 N, then the plateau at
 # mu_k·m·g = 29.4 N. (396, 397) is the
-# block's centre in this layout; read it off a first picture if the layout changes.
+# block's centre in this layout; read it off a first picture if the layout changes. (In projector
+# mode push's plots come a page at a time; while the hand pulls they show the gauge's.)
 pull='xdotool mousemove 396 397; sleep 0.5; xdotool mousedown 1; sleep 0.3; xdotool key space;
   for i in $(seq 1 70); do xdotool mousemove $((396 + 2 * i)) 397; sleep 0.02; done; sleep 0.2'
 live window_force_gauge "${projector}distance_marks = on\nspeed_readout = on\n" "$pull" \

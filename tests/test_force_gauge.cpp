@@ -162,6 +162,36 @@ TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
   hands.button(false);
 }
 
+// In projector mode push's plots come a page at a time, and the gauge's plot is the last page:
+// while the hand pulls, the pages turn to it, so the class sees the reading the hand makes.
+TEST(ForceGauge, WhileTheHandPullsThePlotPagesShowTheGauge) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true), ImVec2(1920.0f, 1080.0f));
+  const auto gauge_plot_shown = [&] {
+    FrameRecord record;
+    hands.frame(1.0 / 60.0, &record);
+    bool paged = false, shown = false;
+    for (const ShownText& text : record.texts) {
+      // The pager's line: the first plot's title and "  (page/pages)".
+      paged = paged || (text.text.find("  (") != std::string::npos && text.text.find('/') != std::string::npos);
+      shown = shown || text.text.rfind("Hand + push (N)", 0) == 0;
+    }
+    EXPECT_TRUE(paged) << "push's plots are expected a page at a time in projector mode";
+    return shown;
+  };
+  gauge_plot_shown();
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  for (int i = 1; i <= 30; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x + 2.0f * static_cast<float>(i), held.y);
+    hands.frame(1.0 / 60.0);
+  }
+  EXPECT_TRUE(gauge_plot_shown());
+  hands.button(false);
+}
+
 // The gauge's plot covers the hand's latest pull, not the lesson's whole time axis: a pull of a
 // second at t = 20 s after one at t = 0 is drawn over 20 s or so, not as a line at the end of
 // 0–21 s. With the lesson pushing too, the line is the hand's pull and the push together.

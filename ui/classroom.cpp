@@ -148,6 +148,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title();
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
+    style.show_extra_plot = hand_held_;
   }
   style.hidden = hidden_values();
   style.more_tabs = [this, s] {

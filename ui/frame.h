@@ -96,6 +96,9 @@ struct FrameStyle {
   // its title. None when empty.
   std::string extra_plot_title;
   std::function<void(ImVec2 corner, ImVec2 size)> extra_plot;
+  // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
+  // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
+  bool show_extra_plot = false;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
   HiddenValues hidden;
 };
