@@ -1087,6 +1087,27 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
   EXPECT_FALSE(driver.classroom().theory_hidden());
 }
 
+// Space is how the window plays. Typed into a prediction's number (a teacher who typed the
+// class's answer and pressed Space to start, as the trial did), it ends the typing and plays,
+// and never becomes part of the number ("40 " read as "not a number" after the reveal).
+TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
+  Driver driver("spring_pull");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  driver.click("prediction breakaway force");
+  driver.type("4");
+  ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the box is being typed in";
+  driver.classroom().key_pressed(Key::space, false);  // the key, as the window passes it on...
+  driver.type(" ");                                    // ...and the character it types
+  EXPECT_EQ(driver.classroom().predictions().answers["breakaway force"], "4");
+  EXPECT_TRUE(driver.playback().playing()) << "Space played the run";
+  driver.frame();
+  driver.frame();  // ImGui tells what the frame before asked for
+  EXPECT_FALSE(ImGui::GetIO().WantTextInput) << "the typing ended";
+  std::string why;
+  EXPECT_EQ(read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
+}
+
 // A teacher who takes no predictions has the theory from the start.
 TEST(Classroom, WithPredictionsOffTheTheoryShowsFromTheStart) {
   Driver driver("incline");

@@ -222,6 +222,27 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
   for (const auto& [from, to] : chart.bands) EXPECT_GE(from, taken - h);
 }
 
+// The class's prediction is about the lesson, not the hand: a run the hand pulled measured the
+// hand too (push's breakaway read 3.19 N after a pull by hand, and the class that said 39 N was
+// told it was 370 % above), so it is judged against the theory and says why.
+TEST(ForceGauge, AHandPulledRunJudgesTheClassAgainstTheTheory) {
+  lessons::Prediction breakaway{"breakaway push", "How hard?", "N", {}, "push.lua:1"};
+  lessons::ExpectationResult row;
+  row.name = "breakaway push";
+  row.unit = "N";
+  row.numeric = true;
+  row.predicted = 39.24;
+  row.measured = 3.19;
+  row.measured_yet = true;
+  row.tolerance = 0.5;
+  const Closeness measured = closeness(breakaway, "39", row);
+  EXPECT_FALSE(measured.close) << measured.words;  // without the hand: judged against 3.19 N
+  row.hand_pulled = true;
+  const Closeness pulled = closeness(breakaway, "39", row);
+  EXPECT_TRUE(pulled.close) << pulled.words;
+  EXPECT_NE(pulled.words.find("the theory (the hand pulled this run)"), std::string::npos) << pulled.words;
+}
+
 // A hand-pulled run differs from the lesson's predictions because of the hand, not the physics:
 // the theory table marks the rows hand-pulled with the stretch's times and why, and shows no
 // failure for them; a reset measures without the hand and judges again.

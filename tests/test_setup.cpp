@@ -429,7 +429,7 @@ TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
   const lessons::Prediction& first = teacher.lesson().predictions().at(0);
   const std::string predicted =
       "prediction " + first.expectation + (first.is_choice() ? ": " + first.choices.front() : std::string());
-  const std::string mystery_heading = "Measure \u03bcs and \u03bck of plastic/wood";
+  const std::string mystery_heading = "Measure \u03bcs and \u03bck of the mystery plastic/wood surface";
   struct Screen {
     const char* name;
     ImVec2 size;

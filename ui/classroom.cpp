@@ -181,6 +181,11 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   ImGui::PopFont();
 
+  // Space typed into a prediction's number: the typing ended there, and the run plays.
+  if (predictions_.play_asked) {
+    predictions_.play_asked = false;
+    playback_->toggle();
+  }
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
   for (const auto& [name, text] : pending_values_) set_value(name, text);

@@ -189,6 +189,16 @@ ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
 // bar. The choice counts every key a plot can have (its theory curves, shown or not yet), so
 // the pages stay as the run goes on and at the reveal. A picture, which nobody clicks, keeps
 // every plot in view.
+// Before the reveal the time axis must not tell how long the run is: a lesson runs until what it
+// teaches has been seen, so push's axis, drawn before Play, gave a mystery's μs away (it runs a
+// while past the breakaway at μs·m·g), and any lesson's axis says roughly when things happen.
+// The axis grows with the run instead, to the next of 1, 2, 5, 10, 20, ... s.
+double time_axis_before_reveal(double now) {
+  double span = 1.0;
+  for (int i = 0; span < now && i < 60; ++i) span *= (i % 3 == 1) ? 2.5 : 2.0;
+  return span;
+}
+
 void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
                 const Theme& colours) {
   const Fonts& fonts = *style.fonts;
@@ -390,7 +400,10 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
   end_panel();
 
-  draw_plots(lesson, style, layout, std::max(readings.duration, lesson.scene().time()), colours);
+  const bool keeps_secrets = style.theory_hidden || style.hidden.theory();
+  const double now = lesson.scene().time();
+  draw_plots(lesson, style, layout, keeps_secrets ? time_axis_before_reveal(now) : std::max(readings.duration, now),
+             colours);
 
   // The column: parameters, theory against simulation, energy, model.
   const ColumnPlan& plan = column_plan;

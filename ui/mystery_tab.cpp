@@ -83,7 +83,10 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
   ImGui::PushTextWrapPos(0.0f);
   // Not the seed: with it a student could draw the values at home. Short: in projector mode
   // the column shows four lines of a tab before it scrolls, and the reveal must be among them.
-  const std::string heading = "Measure \u03bcs and \u03bck of " + mystery.choice().pair + ":";
+  // The pair's materials stay, but not their book values: a class that knows wood on wood's
+  // would be misled (the trial's class was).
+  const std::string heading = "Measure \u03bcs and \u03bck of the mystery " + mystery.choice().pair +
+                              " surface (its values drawn at random, not the book's):";
   shown_text(heading.c_str());
   const double truths[2] = {mystery.values().mu_s, mystery.values().mu_k};
   std::optional<double>* answers[2] = {&mystery.answer_mu_s, &mystery.answer_mu_k};

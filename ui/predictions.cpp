@@ -41,7 +41,9 @@ std::string theory_shown(const lessons::ExpectationResult& row) {
 
 std::string measured_shown(const lessons::ExpectationResult& row) {
   if (!row.measured_yet) return row.measured_text == "not measured" ? "not yet" : row.measured_text;
-  return row.numeric ? format_quantity(row.measured, row.unit.c_str()) : row.measured_text;
+  const std::string shown = row.numeric ? format_quantity(row.measured, row.unit.c_str()) : row.measured_text;
+  // The mouse's hand pulled in this run: what it measured is not what the lesson asked about.
+  return row.hand_pulled ? shown + " (hand-pulled)" : shown;
 }
 
 // Beside the reveal button, or under it when there is no room.
@@ -175,7 +177,20 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
       char typed[answer_length + 1] = {};
       std::snprintf(typed, sizeof typed, "%s", before.c_str());
       ImGui::SetNextItemWidth(std::min(answer_box_width(), width));
-      if (ImGui::InputText("##answer", typed, sizeof typed)) predictions.answers[prediction.expectation] = typed;
+      // A space ends the typing and plays (ClassPredictions::play_asked); it never joins the number.
+      const auto no_spaces = [](ImGuiInputTextCallbackData* data) -> int {
+        if (data->EventChar != ' ') return 0;
+        *static_cast<bool*>(data->UserData) = true;
+        return 1;
+      };
+      bool space = false;
+      if (ImGui::InputText("##answer", typed, sizeof typed, ImGuiInputTextFlags_CallbackCharFilter, no_spaces, &space)) {
+        predictions.answers[prediction.expectation] = typed;
+      }
+      if (space) {
+        ImGui::ClearActiveID();
+        predictions.play_asked = true;
+      }
       if (controls.remember) controls.remember("prediction " + prediction.expectation);
       const ImRect box(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
       note_text_in(typed, ImVec2(box.Min.x + ImGui::GetStyle().FramePadding.x, box.Min.y + ImGui::GetStyle().FramePadding.y),
@@ -203,6 +218,10 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
 Closeness judged(const lessons::Prediction& prediction, const std::string& answer, const lessons::ExpectationResult& row,
                  bool theory_withheld) {
   if (theory_withheld && !answer.empty() && !row.measured_yet) return {"class: judged once the run has measured it", false};
+  // Against the theory is no judging while the mystery keeps it (closeness would give it away).
+  if (theory_withheld && !answer.empty() && row.hand_pulled) {
+    return {"class: judged once a run without the hand has measured it (R)", false};
+  }
   return closeness(prediction, answer, row);
 }
 
@@ -256,7 +275,11 @@ bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predic
   return asking && !lesson.predictions().empty() && !predictions.revealed;
 }
 
-std::optional<double> read_answer(const std::string& typed, std::string& why) {
+std::optional<double> read_answer(const std::string& as_typed, std::string& why) {
+  // Spaces around a number are no part of it ("40 " from a box typed into before Play).
+  const std::size_t first = as_typed.find_first_not_of(" \t");
+  const std::string typed =
+      first == std::string::npos ? std::string() : as_typed.substr(first, as_typed.find_last_not_of(" \t") - first + 1);
   const std::optional<double> value = validation::parse_decimal(typed, why);
   if (value && std::abs(*value) > largest_answer) {
     why = "outside the range a prediction takes, from -1000000 to 1000000";
@@ -273,9 +296,10 @@ std::optional<double> read_answer(const std::string& typed, std::string& why) {
 Closeness closeness(const lessons::Prediction& prediction, const std::string& answer,
                     const lessons::ExpectationResult& row) {
   if (answer.empty()) return {"class: no prediction", false};
-  // Against what happened once it has, and the theory before.
-  const bool measured = row.measured_yet;
-  const char* against = measured ? "the measurement" : "the theory";
+  // Against what happened once it has, and the theory before; a run the mouse's hand pulled
+  // measured the hand too, which no prediction was about: against the theory then.
+  const bool measured = row.measured_yet && !row.hand_pulled;
+  const char* against = measured ? "the measurement" : row.hand_pulled ? "the theory (the hand pulled this run)" : "the theory";
   if (prediction.is_choice() || !row.numeric) {
     const std::string truth = measured ? row.measured_text : row.predicted_text;
     if (prediction.is_choice() && answer == truth) return {"class: \u2713 right", true};
