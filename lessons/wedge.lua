@@ -292,7 +292,7 @@ local function first_swing() return omega > 0 and math.min(duration, 2 * math.pi
 predict { "first slip", unit = "s",
   question = "The wedge starts to swing and to be shaken: how long does static friction hold the block?" }
 predict { "slide at the end", unit = "m",
-  question = "Where is the block after 5 s: how far down the slope from where it started (up the slope: negative)?" }
+  question = "After 5 s, how far down the slope is the block from where it started (up: negative)?" }
 
 -- The block's speed along the surface over the step that ends at t, from the slide recorded at
 -- either end of it: in contact it is all of the block's speed in the surface's frame.

@@ -474,6 +474,38 @@ TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
   }
 }
 
+// While the class predicts, every question and its answer's box is in sight: the friction pairs'
+// sliders give way for them. A teacher typing the class's answers on a projector found push's
+// second question a scroll away, and scrolling took the reveal button out of sight.
+TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(entry.name);
+    options.window.help = false;
+    options.window.projector = screen.projector;
+    options.window.predictions = true;
+    Classroom window(options);
+    for (int frame = 0; frame < 4; ++frame) {
+      gl.make_current();
+      const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = display;
+      io.DeltaTime = 1.0f / 60.0f;
+      host.begin_frame();
+      window.frame(fonts, display, 0.0, nullptr);
+      ImGui::Render();
+    }
+    ASSERT_TRUE(window.theory_hidden()) << entry.name;
+    const ColumnPanel theory = column_panel("###theory"), books = column_panel("###books");
+    EXPECT_FALSE(theory.scrolls || books.scrolls) << entry.name << ", window " << screen.name
+                                                  << ": the class's predictions are a scroll away";
+  }
+}
+
 std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);

@@ -319,14 +319,16 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
   const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
   ColumnPlan column_plan = plan_column(lesson, style, display, table);
-  // The class's predictions are planned for whole (as the first tab, if need be) while that
-  // folds no sliders; else they have the theory table's room and scroll (the reveal button
-  // comes first).
+  // The class's predictions are planned for whole (as the first tab, if need be). Before the
+  // reveal, while the class predicts, the friction pairs' sliders give way for them (a teacher
+  // typing the class's answer on a projector found the second question a scroll away, and the
+  // reveal button scrolled out of sight); after it they do so only while that folds no sliders,
+  // else they have the theory table's room and scroll (the reveal button comes first).
   bool theory_scrolls = false;
   if (style.predictions_height) {
     const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
     const ColumnPlan roomy = plan_column(lesson, style, display, whole);
-    theory_scrolls = roomy.parameters_step > column_plan.parameters_step;
+    theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
     if (!theory_scrolls) column_plan = roomy;
   }
   const FrameLayout layout = FrameLayout::of(display, s, style.origin);
