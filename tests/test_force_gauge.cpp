@@ -222,6 +222,38 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
   for (const auto& [from, to] : chart.bands) EXPECT_GE(from, taken - h);
 }
 
+// The view holds still while the hand pulls, so a body can be dragged to the world's top right,
+// where the free-body inset sits: the inset then moves to the top left, and the body, the gauge
+// and the ring stay in sight (the trial's block went under it).
+TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
+  ClassroomHands hands(gauge_options("push", {}, true), ImVec2(1920.0f, 1080.0f));
+  FrameRecord record;
+  hands.frame(0.0, &record);
+  const ImVec4 inset_at_first = record.inset;
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  // Across to under the inset's middle, in a second and a half.
+  const float to_x = 0.5f * (inset_at_first.x + inset_at_first.z);
+  const float to_y = 0.5f * (inset_at_first.y + inset_at_first.w);
+  for (int i = 1; i <= 90; ++i) {
+    const float part = static_cast<float>(i) / 90.0f;
+    ImGui::GetIO().MousePos = ImVec2(held.x + part * (to_x - held.x), held.y + part * (to_y - held.y));
+    hands.frame(1.0 / 60.0, &record);
+  }
+  const b2AABB box = body_box(block);
+  const Camera& camera = record.lanes.front().camera;
+  const ImVec2 top_right = camera.to_screen(box.upperBound), bottom_left = camera.to_screen(box.lowerBound);
+  ASSERT_GT(top_right.x, inset_at_first.x) << "the block was dragged to where the inset was";
+  ASSERT_LT(top_right.y, inset_at_first.w);
+  const bool covered = top_right.x > record.inset.x && bottom_left.x < record.inset.z && top_right.y < record.inset.w &&
+                       bottom_left.y > record.inset.y;
+  EXPECT_FALSE(covered) << "the inset now spans x " << record.inset.x << " to " << record.inset.z;
+  hands.button(false);
+}
+
 // The class's prediction is about the lesson, not the hand: a run the hand pulled measured the
 // hand too (push's breakaway read 3.19 N after a pull by hand, and the class that said 39 N was
 // told it was 370 % above), so it is judged against the theory and says why.

@@ -353,6 +353,18 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       }
       lane_bodies[nearest].push_back(body);
     }
+    // The free-body inset sits over the world's top right, where the framing leaves no body; a
+    // body the mouse's hand drags there (the view holds still while it pulls) would go under it,
+    // gauge and all: the inset then takes the top left instead.
+    const b2Body* focus = main_body(lesson.scene());
+    ImVec2 inset_corner = layout.inset_corner;
+    if (focus != nullptr && lesson.scene().grabbed() == focus) {
+      const b2AABB box = body_box(focus);
+      const ImVec2 high_right = cameras.front().to_screen(box.upperBound);  // screen y grows downwards: its top
+      if (high_right.x > inset_corner.x && high_right.y < inset_corner.y + layout.inset_size.y) {
+        inset_corner.x = layout.world_corner.x + 6.0f * s;
+      }
+    }
     for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
       const Camera& camera = cameras[lane];
       const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
@@ -362,8 +374,8 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       // first letter there (the speed readout of a body at the view's left edge).
       const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
       LabelPlacer labels(shown_min, sub(shown_max, shown_min));
-      const ImVec4 inset(layout.inset_corner.x, layout.inset_corner.y, layout.inset_corner.x + layout.inset_size.x,
-                         layout.inset_corner.y + layout.inset_size.y);
+      const ImVec4 inset(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x,
+                         inset_corner.y + layout.inset_size.y);
       labels.avoid(inset);
       // Each lane named (by its body, or the title the lesson gave it) in its corner.
       const std::string lane_name = cameras.size() < 2                  ? ""
@@ -393,12 +405,11 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
     }
     const Camera& camera = cameras.front();
     draw_legend(draw, lesson.scene(), camera, layout.legend_corner, layout.legend_size, colours, fonts, newtons_to_pixels);
-    const b2Body* focus = main_body(lesson.scene());
     std::string focus_name;
     for (const auto& [name, body] : lesson.scene().bodies()) {
       if (body == focus) focus_name = name;
     }
-    draw_free_body(draw, lesson.scene(), focus, focus_name, layout.inset_corner, layout.inset_size, colours, fonts);
+    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, colours, fonts);
   }
   end_panel();
 
