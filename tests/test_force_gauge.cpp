@@ -254,6 +254,31 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
   hands.button(false);
 }
 
+// The lesson's run ends (and pauses) at its duration, but not under a hand that is pulling: the
+// trial's teacher had push pause mid-pull. Let go past the end, it pauses then.
+TEST(ForceGauge, TheRunsEndWaitsForAPullingHand) {
+  ClassroomHands hands(gauge_options("push"));
+  hands.frame();
+  Playback& playback = hands.classroom().playback();
+  const double duration = playback.lesson().duration();
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
+  hands.mouse_at(held);
+  hands.button(true);
+  hands.key(Key::space);
+  const int frames = static_cast<int>(std::lround((duration + 1.0) * 60.0));
+  for (int i = 1; i <= frames; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x + 0.5f * static_cast<float>(std::min(i, 120)), held.y);
+    hands.frame(1.0 / 60.0);
+  }
+  EXPECT_GT(playback.lesson().scene().time(), duration + 0.5);
+  EXPECT_TRUE(playback.playing()) << "paused under the hand at the run's end";
+  hands.button(false);
+  hands.frame(1.0 / 60.0);
+  hands.frame(1.0 / 60.0);
+  EXPECT_FALSE(playback.playing()) << "let go past the end, the run pauses";
+}
+
 // The class's prediction is about the lesson, not the hand: a run the hand pulled measured the
 // hand too (push's breakaway read 3.19 N after a pull by hand, and the class that said 39 N was
 // told it was 370 % above), so it is judged against the theory and says why.

@@ -192,7 +192,9 @@ void Playback::step_and_check() {
     return;
   }
   const double h = lesson_->scene().frame_step();
-  if (!run_over_ && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
+  // The end of the lesson's run waits for a hand that is pulling: a teacher mid-pull, the class
+  // watching the gauge, had the run pause under the mouse.
+  if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
     run_over_ = true;
     playing_ = false;
     notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
