@@ -18,6 +18,22 @@
 
 namespace frictionlab::ui {
 
+// One display frame of `window` at `display` on a headless context, as the window layer draws
+// one: the fonts for its scale and theme, ImGui's frame, the window's, rendered. `wall` seconds
+// of real time pass (the lesson plays that long when playing); with `record`, where the frame
+// put things and every text it drew.
+inline void draw_window_frame(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 display, double wall = 0.0,
+                              FrameRecord* record = nullptr) {
+  gl.make_current();
+  const Fonts& fonts = host.prepare(window.ui_scale(display), window.window_settings().theme);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = display;
+  io.DeltaTime = 1.0f / 60.0f;
+  host.begin_frame();
+  window.frame(fonts, display, wall, record);
+  ImGui::Render();
+}
+
 class ClassroomHands {
  public:
   // `options.lesson` is a built-in name or a path; the output folder is a fresh one of the test's own.
@@ -39,16 +55,7 @@ class ClassroomHands {
 
   // One display frame, `wall` seconds after the last (the lesson plays that long when playing);
   // with `record`, every text it drew.
-  void frame(double wall = 0.0, FrameRecord* record = nullptr) {
-    gl_.make_current();
-    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display_), classroom_->window_settings().theme);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = display_;
-    io.DeltaTime = 1.0f / 60.0f;
-    host_.begin_frame();
-    classroom_->frame(fonts, display_, wall, record);
-    ImGui::Render();
-  }
+  void frame(double wall = 0.0, FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *classroom_, display_, wall, record); }
   // Every text of a frame drawn after a few have let tables and tab bars settle, each on a line.
   std::string texts() {
     frame();
@@ -101,16 +108,21 @@ class ClassroomHands {
     frame();
   }
   void set_display(ImVec2 display) { display_ = display; }
-  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
-  // right each display frame (60 a second) for `seconds` of lesson time at speed 1, then holds
-  // the mouse still for `held_still` s more before letting go.
-  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds, double held_still = 0.0) {
+  // Takes hold of the body at its centre with the mouse and plays; where the hand took hold.
+  ImVec2 take_hold_and_play(const std::string& body_name) {
     const b2Body* body = lesson().scene().body(body_name);
     const ImVec2 held = classroom_->world_camera().to_screen(body->GetWorldCenter());
     mouse_at(held);
     button(true);
     EXPECT_EQ(lesson().scene().grabbed(), body);
     key(Key::space);
+    return held;
+  }
+  // Takes hold of the body at its centre, plays, and pulls the mouse `pixels_per_frame` to the
+  // right each display frame (60 a second) for `seconds` of lesson time at speed 1, then holds
+  // the mouse still for `held_still` s more before letting go.
+  void pull_right(const std::string& body_name, float pixels_per_frame, double seconds, double held_still = 0.0) {
+    const ImVec2 held = take_hold_and_play(body_name);
     const int frames = static_cast<int>(std::lround(seconds * 60.0));
     for (int i = 1; i <= frames; ++i) {
       ImGui::GetIO().MousePos = ImVec2(held.x + pixels_per_frame * static_cast<float>(i), held.y);

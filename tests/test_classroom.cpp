@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "classroom_hands.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson_benchmark.h"
@@ -60,14 +61,7 @@ class Driver {
   // With `record`, every text it drew (FrameRecord::texts).
   void frame(double wall = 0.0, ImVec2 display = ImVec2(0.0f, 0.0f), FrameRecord* record = nullptr) {
     if (display.x == 0.0f) display = display_;
-    gl_.make_current();
-    const Fonts& fonts = host_.prepare(classroom_->ui_scale(display), classroom_->window_settings().theme);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = display;
-    io.DeltaTime = 1.0f / 60.0f;
-    host_.begin_frame();
-    classroom_->frame(fonts, display, wall, record);
-    ImGui::Render();
+    draw_window_frame(gl_, host_, *classroom_, display, wall, record);
   }
   // The frame drawn: what the window would show.
   Image picture(ImVec2 display = ImVec2(1280.0f, 720.0f)) {

@@ -132,10 +132,7 @@ TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
   ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
   hands.frame();
   const b2Body* block = hands.lesson().scene().body("block");
-  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
-  hands.mouse_at(held);
-  hands.button(true);
-  hands.key(Key::space);
+  const ImVec2 held = hands.take_hold_and_play("block");
   const float scale = hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
   for (int i = 1; i <= 120; ++i) {
     // Two pixels a frame for a second, then still for a second.
@@ -179,11 +176,7 @@ TEST(ForceGauge, WhileTheHandPullsThePlotPagesShowTheGauge) {
     return shown;
   };
   gauge_plot_shown();
-  const b2Body* block = hands.lesson().scene().body("block");
-  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
-  hands.mouse_at(held);
-  hands.button(true);
-  hands.key(Key::space);
+  const ImVec2 held = hands.take_hold_and_play("block");
   for (int i = 1; i <= 30; ++i) {
     ImGui::GetIO().MousePos = ImVec2(held.x + 2.0f * static_cast<float>(i), held.y);
     hands.frame(1.0 / 60.0);
@@ -231,10 +224,7 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
   hands.frame(0.0, &record);
   const ImVec4 inset_at_first = record.inset;
   const b2Body* block = hands.lesson().scene().body("block");
-  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
-  hands.mouse_at(held);
-  hands.button(true);
-  hands.key(Key::space);
+  const ImVec2 held = hands.take_hold_and_play("block");
   // Across to under the inset's middle, in a second and a half.
   const float to_x = 0.5f * (inset_at_first.x + inset_at_first.z);
   const float to_y = 0.5f * (inset_at_first.y + inset_at_first.w);
@@ -261,11 +251,7 @@ TEST(ForceGauge, TheRunsEndWaitsForAPullingHand) {
   hands.frame();
   Playback& playback = hands.classroom().playback();
   const double duration = playback.lesson().duration();
-  const b2Body* block = hands.lesson().scene().body("block");
-  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
-  hands.mouse_at(held);
-  hands.button(true);
-  hands.key(Key::space);
+  const ImVec2 held = hands.take_hold_and_play("block");
   const int frames = static_cast<int>(std::lround((duration + 1.0) * 60.0));
   for (int i = 1; i <= frames; ++i) {
     ImGui::GetIO().MousePos = ImVec2(held.x + 0.5f * static_cast<float>(std::min(i, 120)), held.y);
@@ -375,10 +361,7 @@ TEST(ForceGauge, ABodyTheHandHoldsStillSticks) {
   hands.frame();
   const b2Body* block = hands.lesson().scene().body("block");
   // Held still for 2 s, not let go: the last frame still holds it.
-  const ImVec2 held = hands.classroom().world_camera().to_screen(block->GetWorldCenter());
-  hands.mouse_at(held);
-  hands.button(true);
-  hands.key(Key::space);
+  const ImVec2 held = hands.take_hold_and_play("block");
   for (int i = 1; i <= 240; ++i) {
     ImGui::GetIO().MousePos = ImVec2(held.x + static_cast<float>(std::min(i, 120)), held.y);
     hands.frame(1.0 / 60.0);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lessons/runtime/catalog.h"
+#include "classroom_hands.h"
 #include "rendering.h"
 #include "ui/frame.h"
 #include "ui/headless.h"
@@ -175,14 +176,7 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
         FrameRecord record;
         // A few frames for tables and tab bars to settle their sizes, as the window's screenshots wait.
         for (int frame = 0; frame < 3; ++frame) {
-          gl.make_current();
-          const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
-          ImGuiIO& io = ImGui::GetIO();
-          io.DisplaySize = display;
-          io.DeltaTime = 1.0f / 60.0f;
-          host.begin_frame();
-          window.frame(fonts, display, 0.0, frame == 2 ? &record : nullptr);
-          ImGui::Render();
+          draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
         }
         std::string where = entry.name + " " + moment + ", window " + screen.name;
         if (theme == ThemeName::dark) where += ", dark";
@@ -221,14 +215,7 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
       Classroom window(options);
       window.playback().run_to(0.5 * window.playback().lesson().duration());
       const auto frame = [&](FrameRecord* record) {
-        gl.make_current();
-        const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = display;
-        io.DeltaTime = 1.0f / 60.0f;
-        host.begin_frame();
-        window.frame(fonts, display, 0.0, record);
-        ImGui::Render();
+        draw_window_frame(gl, host, window, display, 0.0, record);
       };
       for (const char* tab : {"###energy", "###model"}) {
         FrameRecord before;
@@ -307,14 +294,7 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
     Classroom window(options);
     const double duration = window.playback().lesson().duration();
     const auto frame = [&](FrameRecord* record) {
-      gl.make_current();
-      const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
-      ImGuiIO& io = ImGui::GetIO();
-      io.DisplaySize = display;
-      io.DeltaTime = 1.0f / 60.0f;
-      host.begin_frame();
-      window.frame(fonts, display, 0.0, record);
-      ImGui::Render();
+      draw_window_frame(gl, host, window, display, 0.0, record);
     };
     const std::size_t plot_count = window.playback().lesson().plots().size();
     const auto check_at = [&](double t, const char* moment) {
@@ -442,14 +422,7 @@ TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
       const auto check_at = [&](double t, const char* moment) {
         window.playback().run_to(t);
         for (int frame = 0; frame < 4; ++frame) {
-          gl.make_current();
-          const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
-          ImGuiIO& io = ImGui::GetIO();
-          io.DisplaySize = display;
-          io.DeltaTime = 1.0f / 60.0f;
-          host.begin_frame();
-          window.frame(fonts, display, 0.0, nullptr);
-          ImGui::Render();
+          draw_window_frame(gl, host, window, display, 0.0, nullptr);
         }
         const std::string where = entry.name + " " + moment + (predictions ? " with predictions" : "") + ", window " +
                                   screen.name;
@@ -490,14 +463,7 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
     options.window.predictions = true;
     Classroom window(options);
     for (int frame = 0; frame < 4; ++frame) {
-      gl.make_current();
-      const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
-      ImGuiIO& io = ImGui::GetIO();
-      io.DisplaySize = display;
-      io.DeltaTime = 1.0f / 60.0f;
-      host.begin_frame();
-      window.frame(fonts, display, 0.0, nullptr);
-      ImGui::Render();
+      draw_window_frame(gl, host, window, display, 0.0, nullptr);
     }
     ASSERT_TRUE(window.theory_hidden()) << entry.name;
     const ColumnPanel theory = column_panel("###theory"), books = column_panel("###books");
@@ -538,14 +504,7 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
       if (revealed) window.reveal_mystery();
       FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) {
-        gl.make_current();
-        const Fonts& fonts = host.prepare(window.ui_scale(display), ThemeName::light);
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = display;
-        io.DeltaTime = 1.0f / 60.0f;
-        host.begin_frame();
-        window.frame(fonts, display, 0.0, frame == 2 ? &record : nullptr);
-        ImGui::Render();
+        draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
       }
       const std::string where = entry.name + " with " + pairs.front() + " a mystery" + (revealed ? ", revealed" : "") +
                                 ", window " + screen.name;
@@ -583,14 +542,7 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
       options.window.tools = ToolSettings{true, true, true, true};
       Classroom window(options);
       const auto frame = [&](double wall, FrameRecord* record) {
-        gl.make_current();
-        const Fonts& fonts = host.prepare(window.ui_scale(display), theme);
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = display;
-        io.DeltaTime = 1.0f / 60.0f;
-        host.begin_frame();
-        window.frame(fonts, display, wall, record);
-        ImGui::Render();
+        draw_window_frame(gl, host, window, display, wall, record);
       };
       frame(0.0, nullptr);
       // The stopwatch running with a lap, and the hand pulling the main body to the right for
@@ -730,16 +682,7 @@ class WindowTabs {
     frame();
   }
   Classroom& window() { return *window_; }
-  void frame(FrameRecord* record = nullptr) {
-    gl_.make_current();
-    const Fonts& fonts = host_.prepare(window_->ui_scale(display_), window_->window_settings().theme);
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = display_;
-    io.DeltaTime = 1.0f / 60.0f;
-    host_.begin_frame();
-    window_->frame(fonts, display_, 0.0, record);
-    ImGui::Render();
-  }
+  void frame(FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *window_, display_, 0.0, record); }
   void click(const std::string& control) {
     frame();
     const std::optional<ImRect> rect = window_->control(control);
