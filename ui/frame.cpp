@@ -291,7 +291,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
         style.extra_plot(ImGui::GetCursorScreenPos(), area);
       } else {
         const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
-                                            area, colours, fonts, !style.theory_hidden && !style.hidden.theory());
+                                            area, colours, fonts, !style.theory_kept_back());
         if (style.record != nullptr) style.record->plots.push_back({i, drawn});
       }
     }
@@ -413,10 +413,9 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   }
   end_panel();
 
-  const bool keeps_secrets = style.theory_hidden || style.hidden.theory();
   const double now = lesson.scene().time();
-  draw_plots(lesson, style, layout, keeps_secrets ? time_axis_before_reveal(now) : std::max(readings.duration, now),
-             colours);
+  draw_plots(lesson, style, layout,
+             style.theory_kept_back() ? time_axis_before_reveal(now) : std::max(readings.duration, now), colours);
 
   // The column: parameters, theory against simulation, energy, model.
   const ColumnPlan& plan = column_plan;

@@ -101,6 +101,8 @@ struct FrameStyle {
   bool show_extra_plot = false;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
   HiddenValues hidden;
+  // Nothing may show the theory yet: kept back for the class's predictions, or giving a mystery away.
+  bool theory_kept_back() const { return theory_hidden || hidden.theory(); }
 };
 
 // Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and
