@@ -43,6 +43,13 @@ void validate(const StepSettings& s) {
   require_in_range("threshold speed", s.threshold_speed, 0.0, 100.0, true, " m/s");
 }
 
+void Scene::set_velocity_iterations(int count) {
+  StepSettings changed = settings_;
+  changed.velocity_iterations = count;
+  validate(changed);
+  settings_ = changed;
+}
+
 Scene::Scene(PairTable pairs, StepSettings settings, b2Vec2 gravity)
     : pairs_(std::move(pairs)), settings_(settings), gravity_(gravity), listener_(pairs_) {
   validate(settings_);

@@ -108,6 +108,10 @@ class Scene {
   const FrictionListener& friction() const { return listener_; }
   const StepSettings& settings() const { return settings_; }
   double frame_step() const { return 1.0 / settings_.hz; }
+  // The contact solver's passes a step, for a scene whose contacts settle in fewer than the
+  // default (a lesson says so: lesson{ velocity_iterations = 4 }). Throws InvalidInput naming
+  // the range [1, 1000].
+  void set_velocity_iterations(int count);
 
   // Bodies. Every fixture names its material; a material with no pair value for a material
   // already in the scene that it could touch (one of the two on a dynamic body) is rejected

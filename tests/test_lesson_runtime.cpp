@@ -4,6 +4,7 @@
 // (test_lesson_errors) covers the error messages one by one.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -80,6 +81,43 @@ box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 
   const ScriptFile wrong(with_heading("pair { \"wood\", \"ice\", mu_s = 0.1, mu_k = 0.05, sliders = { \"mu\" } }\n"));
   EXPECT_NE(error_of([&] { Lesson broken(wrong.path()); }).find("sliders lists coefficients from mu_s, mu_k, c, b"),
             std::string::npos);
+}
+
+// lesson{ velocity_iterations = N }: a scene whose contacts settle in fewer passes says so, and
+// its world steps with N passes, as if they had been the settings, through every rebuild. A
+// tower of three boxes dropped on the floor lands differently with 1 pass than with 8.
+TEST(LessonRuntime, ALessonMaySayHowManyPassesItsContactSolverNeeds) {
+  const std::string tower = R"(
+local floor = ground { "floor", material = "wood" }
+local low = box { "low", material = "wood", width = 0.4, height = 0.2, x = 0, y = 0.15, mass = 1 }
+local middle = box { "middle", material = "wood", width = 0.4, height = 0.2, x = 0.05, y = 0.4, mass = 3 }
+box { "high", material = "wood", width = 0.4, height = 0.2, x = 0.1, y = 0.65, mass = 9 }
+parameter { "height_of_nothing", 1, min = 0, max = 2 }
+)";
+  ScriptFile declared("lesson { title = \"test\", question = \"does it work?\", velocity_iterations = 1 }\n" + tower);
+  ScriptFile plain(with_heading(tower));
+  const auto heights_after = [](Lesson& lesson) {
+    run_for(lesson, 0.5);
+    return std::array<float, 3>{lesson.scene().body("low")->GetPosition().y, lesson.scene().body("middle")->GetPosition().y,
+                                lesson.scene().body("high")->GetPosition().y};
+  };
+  StepSettings one_pass;
+  one_pass.velocity_iterations = 1;
+  Lesson with_one(declared.path()), told_one(plain.path(), {}, one_pass), with_eight(plain.path());
+  EXPECT_EQ(with_one.scene().settings().velocity_iterations, 1);
+  EXPECT_EQ(model_card(with_one).velocity_iterations, 1);
+  EXPECT_EQ(model_card(with_eight).velocity_iterations, 8);
+  const auto one = heights_after(with_one), eight = heights_after(with_eight);
+  EXPECT_EQ(one, heights_after(told_one));
+  EXPECT_NE(one, eight);
+  // A rebuild (a structural parameter, another step rate) runs the declaration again.
+  with_one.set("height_of_nothing", "2");
+  EXPECT_EQ(with_one.scene().settings().velocity_iterations, 1);
+  StepSettings faster;
+  faster.hz = 480;
+  with_one.set_settings(faster);
+  EXPECT_EQ(with_one.scene().settings().velocity_iterations, 1);
+  EXPECT_EQ(with_one.scene().settings().hz, 480);
 }
 
 TEST(LessonRuntime, PairsWithoutSlidersTakeTheScriptsValues) {

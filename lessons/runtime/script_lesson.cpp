@@ -65,7 +65,7 @@ int lesson(lua_State* state) {
                          "); a script is one lesson, so give its title, question and the rest once");
     }
     build.lesson_declared_at = caller(state);
-    Fields fields(state, 1, "lesson", {"title", "question", "duration", "order", "moments"});
+    Fields fields(state, 1, "lesson", {"title", "question", "duration", "order", "moments", "velocity_iterations"});
     build.title = fields.text("title", "");
     build.question = fields.text("question", "");
     if (build.title.empty()) throw InvalidInput("lesson: title must be text, as in lesson{ title = \"...\" }");
@@ -78,6 +78,15 @@ int lesson(lua_State* state) {
     }
     // Where it comes among the built-in lessons: lessons/ is their list, in this order.
     if (fields.has("order")) build.order = fields.number_in("order", "", -1e6, 1e6);
+    // A scene whose few contacts settle in fewer passes of the solver than the default 8 may
+    // say so, and step faster (model no more than the scene needs).
+    if (fields.has("velocity_iterations")) {
+      const double count = fields.number_in("velocity_iterations", "", 1.0, 1000.0);
+      if (count != std::floor(count)) {
+        throw InvalidInput("lesson: velocity_iterations must be a whole number, from 1 to 1000");
+      }
+      build.scene->set_velocity_iterations(static_cast<int>(count));
+    }
     fields.push("moments");
     if (!lua_isnil(state, -1)) read_moments(state, build);
     lua_pop(state, 1);
