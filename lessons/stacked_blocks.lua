@@ -22,6 +22,9 @@ lesson {
     { "together", at = 3,
       shows = function() return value_at("floor_slipping", time()) == 1 and value_at("top_slipping", time()) == 0 end },
     { "top_slips", at = 4.2, readme = true, shows = function() return value_at("top_slipping", time()) == 1 end },
+    -- A heavy top block gripped hard: the pair tips back before the top block can slip.
+    { "front_lifts", at = 2.14, set = { top_mass = 5, bottom_mass = 1, pull_rate = 50, ["top_on_bottom.mu_s"] = 1.6 },
+      shows = function() return value_at("tilt", time()) > 2 and value_at("top_slipping", time()) == 0 end },
   },
 }
 
@@ -89,30 +92,81 @@ local function together_time_to(x)
   end
   return high
 end
-local function off_the_floor()
-  if no_theory() then return nil end
-  if (slip_pull() - start_pull()) / param.pull_rate > together_time_to(floor_room) then
-    return "runs off the floor first"
-  end
-end
 
 -- The run ends once the top block has slipped 0.15 m back along the bottom one (0.25 m would
 -- take it to the back edge), or 2 s after it started to slip; without a closed form, 8 s after
 -- the pair would start to slide, or sooner near the floor's end.
 local slip_room = 0.15
-ending = function()
-  local start = start_pull() / param.pull_rate
-  if no_theory() then return start + math.min(8, together_time_to(floor_room)) end
-  if off_the_floor() then return start + together_time_to(floor_room) end
+
+-- Friction can tip the pair over backwards. In the frame of the accelerating pair each block is
+-- pushed back by m·a at its centre, and about the bottom block's back edge only the weights
+-- hold the pair down: the pull and the floor's push act at the floor, at the edge's height. A
+-- heavy top block on a light bottom one, gripped hard (top_mass 5, bottom_mass 1, mu_s above
+-- 1.38), lifts the pair's front before the top block slips; a light bottom block pulled fast
+-- from under a slipping top one rears up by itself. The closed form has both blocks flat on
+-- the floor. Heights are of the blocks' centres above the floor's contact points, which lie
+-- half a resting gap up.
+local bottom_width, bottom_height = 0.8, 0.25
+local top_width, top_height = 0.3, 0.1
+local top_centre = bottom_height + top_height / 2 + 1.5 * resting_gap
+local bottom_centre = bottom_height / 2 + 0.5 * resting_gap
+-- Positive when the pair's front lifts, the top block slid `top_back_by` back from the middle.
+local function tipping_moment(top_acceleration, bottom_acceleration_now, top_back_by)
+  local lifting = param.bottom_mass * bottom_acceleration_now * bottom_centre + param.top_mass * top_acceleration * top_centre
+  local holding = g * (param.bottom_mass * bottom_width / 2 + param.top_mass * (bottom_width / 2 - top_back_by))
+  return lifting - holding
+end
+-- When the pair, moving as one, would start to tip (nil: the top block slips first).
+local function tipping_time()
+  if no_theory() or not together_phase() then return nil end
+  local M, dragged = param.top_mass + param.bottom_mass, param["bottom_on_floor.mu_k"] * total_weight()
+  local a = g * M * bottom_width / 2 / (param.bottom_mass * bottom_centre + param.top_mass * top_centre)
+  if slip_pull() - dragged < a * M then return nil end
+  return math.max(start_pull(), a * M + dragged) / param.pull_rate
+end
+-- Whether the pair reaches the floor's end before the top block slips or the pair tips.
+local function off_the_floor()
+  if no_theory() then return nil end
+  local next_event = math.min(slip_pull() / param.pull_rate, tipping_time() or math.huge)
+  if next_event - start_pull() / param.pull_rate > together_time_to(floor_room) then
+    return "runs off the floor first"
+  end
+end
+-- After the top block slips: when it has slid slip_room back, or (first) when the bottom block
+-- racing ahead would lift the front; and which of the two came first.
+local function slipping_until()
   local t, lag, lag_speed = slip_pull() / param.pull_rate, 0, 0
   local step = 1e-3
   for _ = 1, 2000 do
     if lag >= slip_room then break end
+    if tipping_moment(top_acceleration_after(), bottom_acceleration(t), lag) >= 0 then return t, true end
     lag_speed = lag_speed + (bottom_acceleration(t) - top_acceleration_after()) * step
     lag = lag + lag_speed * step
     t = t + step
   end
-  return t
+  return t, false
+end
+-- When the front lifts while the theory still has something to show (nil: it does not). Moving
+-- as one on the floor; or right as the top block slips, before its slipping can be read (3
+-- steps). A front that would lift later, while the top block slips, ends the run just before.
+local function tips_at()
+  if no_theory() or off_the_floor() then return nil end
+  if tipping_time() then return tipping_time() end
+  local t, lifts = slipping_until()
+  if lifts and t < slip_pull() / param.pull_rate + 3 * step_length() then return t end
+end
+-- The words for a row read at t when the pair has tipped by then (nil otherwise).
+local tipped_words = "front lifts: no closed form"
+local function tipped_by(t)
+  if tips_at() and tips_at() <= t then return tipped_words end
+end
+ending = function()
+  local start = start_pull() / param.pull_rate
+  if no_theory() then return start + math.min(8, together_time_to(floor_room)) end
+  if off_the_floor() then return start + together_time_to(floor_room) end
+  -- Half a second after the front lifts: long enough to see the pair go over.
+  if tips_at() then return tips_at() + 0.5 end
+  return (slipping_until())
 end
 
 -- World -----------------------------------------------------------------------------------
@@ -124,13 +178,14 @@ local floor = ground { "floor", material = "stone" }
 -- The bottom block is 0.25 m tall, more than the 0.2 m by which Box2D widens every shape's
 -- box when it looks for shapes that may touch: so Box2D does not test the top block against
 -- the floor every step (3 % of the lesson's time at 0.15 m), until it falls off.
-local bottom_height = 0.25
-local top = box { "top", material = "wood", width = 0.3, height = 0.1, x = 0, y = bottom_height + 2 * resting_gap + 0.05,
-                  mass = top_mass }
-local bottom = box { "bottom", material = "aluminium", width = 0.8, height = bottom_height, on = floor, at = 0,
+local top = box { "top", material = "wood", width = top_width, height = top_height, x = 0,
+                  y = bottom_height + 2 * resting_gap + top_height / 2, mass = top_mass }
+local bottom = box { "bottom", material = "aluminium", width = bottom_width, height = bottom_height, on = floor, at = 0,
                      mass = bottom_mass }
--- Pulled at the height where the bottom block meets the floor, so the pull cannot tip it.
-local pull = force { "pull", on = bottom, at = { 0.4, -bottom_height / 2 - resting_gap / 2 }, grows = { pull_rate, 0 } }
+-- Pulled at the height where the bottom block meets the floor, so the pull itself cannot tip
+-- it (the top block's friction, at the bottom block's top face, can: see tipping_moment).
+local pull = force { "pull", on = bottom, at = { bottom_width / 2, -bottom_height / 2 - resting_gap / 2 },
+                     grows = { pull_rate, 0 } }
 view { follow = bottom }
 
 -- Probes and plots ------------------------------------------------------------------------
@@ -142,11 +197,12 @@ probe { "top_acceleration", unit = "m/s²", read = { top, "acceleration", along 
 probe { "bottom_acceleration", unit = "m/s²", read = { bottom, "acceleration", along = { 1, 0 } } }
 probe { "floor_slipping", read = { on_floor, "slipping" } }
 probe { "top_slipping", read = { on_bottom, "slipping" } }
+probe { "tilt", unit = "°", read = { bottom, "angle" } }  -- the front lifting: positive
 
 plot { "Friction on each block", kind = "time", y = { "pull", "friction_on_top", "friction_on_bottom" } }
 plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "bottom_acceleration" },
   theory = { { "top slipping: μk·g", function(t)
-    if not no_theory() and t * param.pull_rate >= slip_pull() then return top_acceleration_after() end
+    if not no_theory() and t * param.pull_rate >= slip_pull() and not tipped_by(t) then return top_acceleration_after() end
   end } } }
 
 -- Reading the record ----------------------------------------------------------------------
@@ -159,6 +215,15 @@ local function first_slip(probe)
     if slipping[i] == 1 and floor_slipping[i] == 1 then return i > 1 and pulls[i - 1] or 0 end
   end
 end
+-- The measured side of a row the theory gives up on because the front lifts: whether the run
+-- shows it (the bottom block tilted by more than a degree at some time), read at the run's end.
+local function lifted_seen()
+  if time() < ending() - 0.5 * step_length() then return nil end
+  for _, tilt in ipairs(history("tilt")) do
+    if math.abs(tilt) > 1 then return tipped_words end
+  end
+  return "stays flat"
+end
 local function at_the_end(probe)
   return time() >= ending() - 0.5 * step_length() and value_at(probe, ending()) or nil
 end
@@ -170,8 +235,11 @@ expect { "the pair starts to slide at a pull of", unit = "N",
   -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.
   tolerance = function() return 0.01 * start_pull() + pull_rate * step_length() end }
 expect { "the top block starts to slip at a pull of", unit = "N",
-  predicted = function() return no_theory() or off_the_floor() or slip_pull() end,
-  measured = function() return no_theory() or off_the_floor() or first_slip("top_slipping") end,
+  predicted = function() return no_theory() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate) or slip_pull() end,
+  measured = function()
+    if tipped_by(slip_pull() / param.pull_rate) then return lifted_seen() end
+    return no_theory() or off_the_floor() or first_slip("top_slipping")
+  end,
   tolerance = function() return 0.01 * slip_pull() + pull_rate * step_length() end }
 -- Halfway between the two, the top block keeps up: its friction is m_top·a, forward.
 local function halfway()  -- on a step, so that the sample read there is the one meant
@@ -183,6 +251,7 @@ expect { "friction on the top block halfway, forward", unit = "N",
     if no_theory() then return no_theory() end
     if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
+    if tipped_by(halfway()) then return tipped_by(halfway()) end
     -- The contact reads the step just taken, which the pull of its start drove.
     return stack(param.pull_rate * (halfway() - step_length())).top_acceleration * param.top_mass
   end,
@@ -190,17 +259,26 @@ expect { "friction on the top block halfway, forward", unit = "N",
     if no_theory() then return no_theory() end
     if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
+    if tipped_by(halfway()) then return lifted_seen() end
     return time() >= halfway() and value_at("friction_on_top", halfway()) or nil
   end,
   tolerance = function() return 0.01 * slip_pull() * param.top_mass / (param.top_mass + param.bottom_mass) end }
 expect { "top block's acceleration, slipping", unit = "m/s²",
-  predicted = function() return no_theory() or off_the_floor() or top_acceleration_after() end,
-  measured = function() return no_theory() or off_the_floor() or at_the_end("top_acceleration") end,
+  predicted = function() return no_theory() or off_the_floor() or tipped_by(ending()) or top_acceleration_after() end,
+  measured = function()
+    if tipped_by(ending()) then return lifted_seen() end
+    return no_theory() or off_the_floor() or at_the_end("top_acceleration")
+  end,
   tolerance = function() return 0.01 * top_acceleration_after() + 1e-3 end }
 -- Read at the step before the end (the reading's instant), where the pull was rate·(t − h).
 expect { "bottom block's acceleration at the end", unit = "m/s²",
-  predicted = function() return no_theory() or off_the_floor() or bottom_acceleration(ending() - step_length()) end,
-  measured = function() return no_theory() or off_the_floor() or at_the_end("bottom_acceleration") end,
+  predicted = function()
+    return no_theory() or off_the_floor() or tipped_by(ending()) or bottom_acceleration(ending() - step_length())
+  end,
+  measured = function()
+    if tipped_by(ending()) then return lifted_seen() end
+    return no_theory() or off_the_floor() or at_the_end("bottom_acceleration")
+  end,
   tolerance = function() return 0.01 * math.abs(bottom_acceleration(ending())) + 1e-3 end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.

@@ -266,6 +266,15 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "1"}}, ""},
                       Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "10"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "50"}}, ""},
+                      // Either side of the pair tipping back as one (5 kg on 1 kg: at μs·g above
+                      // 13.5 m/s² the front lifts before the top block slips, and the run shows it).
+                      Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "1.35"}}, ""},
+                      Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "1.4"}},
+                           "front lifts: no closed form"},
+                      // A light bottom block pulled fast from under a slipping top one would rear up
+                      // by itself: the run ends before its front lifts.
+                      Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "2"},
+                                              {"top_on_bottom.mu_k", "1.2"}, {"bottom_on_floor.mu_s", "2"}, {"bottom_on_floor.mu_k", "0"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "0.5"}, {"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
                       // A top block whose mu_s is 1.1 to 2.5 times the floor's mu_s - mu_k keeps
                       // up when the pair breaks away: the floor's breakaway correction is shared
