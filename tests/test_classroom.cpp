@@ -746,6 +746,43 @@ TEST(Classroom, ARunawaySimulationPausesAndSaysSo) {
   EXPECT_GT(driver.lesson().scene().frame(), 0);
 }
 
+// Played on past its end, push's block leaves the table's end and falls for ever: the window
+// pauses once, says which body fell and when, and plays on if asked without saying it again.
+TEST(Classroom, ABodyThatFallsPastEverythingPausesTheRunOnceAndSaysSo) {
+  Driver driver("push");
+  Playback& playback = driver.playback();
+  const auto play_until_paused = [&](int frames) {
+    driver.key(Key::space);
+    for (int i = 0; i < frames && playback.playing(); ++i) driver.frame(0.25);
+  };
+  play_until_paused(100);
+  EXPECT_NE(playback.notice().find("run ends"), std::string::npos) << playback.notice();
+  play_until_paused(200);
+  EXPECT_FALSE(playback.playing());
+  EXPECT_NE(playback.notice().find("block has fallen off, past everything that could catch it (t = "), std::string::npos)
+      << playback.notice();
+  // The table is 200 m long; the push, growing at 2 N/s, gets the block there in about 9 s.
+  const double fell_at = driver.lesson().scene().time();
+  EXPECT_GT(fell_at, 8.0);
+  EXPECT_LT(fell_at, 12.0);
+  EXPECT_LT(driver.lesson().scene().body("block")->GetPosition().y, -2.0f);
+  play_until_paused(8);
+  EXPECT_TRUE(playback.playing()) << "paused again for the same body: " << playback.notice();
+  EXPECT_GT(driver.lesson().scene().time(), fell_at + 1.5);
+  driver.key(Key::r);
+  EXPECT_EQ(playback.notice().find("fallen off"), std::string::npos) << playback.notice();
+}
+
+// Every built-in lesson, through its own run at its defaults, keeps its bodies where something
+// can hold them (the pulley's weight hangs below the table, above the floor).
+TEST(Classroom, NoBuiltinLessonsBodyFallsOffDuringItsRun) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    Playback playback(lessons::resolve_lesson(name), {}, {});
+    playback.run_to(playback.lesson().duration());
+    EXPECT_EQ(playback.notice().find("fallen off"), std::string::npos) << name << ": " << playback.notice();
+  }
+}
+
 // Pixels that are not the background: text, lines, panels.
 long drawn_pixels(const Image& image) {
   long count = 0;

@@ -66,6 +66,7 @@ void Playback::after_rebuild() {
   recorded_frames_ = 0;
   owed_ = 0.0;
   run_over_ = false;
+  fallen_.clear();
   blown_ = false;
   problem_.clear();
   notice_.clear();
@@ -199,6 +200,35 @@ void Playback::step_and_check() {
     playing_ = false;
     notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
   }
+  // Played on, a pushed block leaves the floor's end and falls for ever, with plots running on
+  // and nothing said: the trial's teacher saw push do it. Pause, once for each body, and say so.
+  if (std::string fallen = newly_fallen(); !fallen.empty()) {
+    fallen_.push_back(fallen);
+    playing_ = false;
+    notice_ = "Paused: " + fallen + " has fallen off, past everything that could catch it (t = " +
+              seconds_text(lesson_->scene().time()) + "). R starts again; Space plays on.";
+  }
+}
+
+std::string Playback::newly_fallen() const {
+  const Scene& scene = lesson_->scene();
+  float lowest = INFINITY;  // the lowest point of any fixed or driven body
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() == b2_dynamicBody) continue;
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      lowest = std::min(lowest, fixture->GetAABB(0).lowerBound.y);
+    }
+  }
+  if (!std::isfinite(lowest)) return "";  // nothing to fall off
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody || std::find(fallen_.begin(), fallen_.end(), name) != fallen_.end()) continue;
+    float highest = -INFINITY;
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      highest = std::max(highest, fixture->GetAABB(0).upperBound.y);
+    }
+    if (highest < lowest - 1.0f) return name;
+  }
+  return "";
 }
 
 std::string Playback::health() const {

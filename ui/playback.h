@@ -104,7 +104,10 @@ class Playback {
   void apply_due();
   void record(Action action);
   void step_and_check();
-  std::string health() const;  // "" when the state is sound
+  std::string health() const;
+  // A moving body that has fallen more than a metre below every fixed and driven body, so
+  // that nothing can catch it any more, and was not named yet: its name, or empty.
+  std::string newly_fallen() const;  // "" when the state is sound
   long frame() const { return lesson_->scene().frame(); }
 
   std::unique_ptr<lessons::Lesson> lesson_;
@@ -118,6 +121,8 @@ class Playback {
   double owed_ = 0.0;  // lesson seconds due but not yet stepped
   bool behind_ = false;
   bool run_over_ = false;  // the lesson's duration was reached once in this run
+  // Bodies that fell past everything that could hold them in this run, each said once.
+  std::vector<std::string> fallen_;
   bool blown_ = false;     // stays stopped until a reset or a rebuild
   double since_readings_ = 0.0;
   double since_file_check_ = 0.0;
