@@ -182,6 +182,20 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12) << "the next run is timed too";
 }
 
+// Shown from the last class's settings, it is armed as the window opens: a window opened at a
+// later time (--at, as the README's screenshots are taken) shows it read the run up to there.
+TEST(Stopwatch, ShownFromTheSettingsItTimesTheRunFromTheStart) {
+  ClassroomOptions options = lesson_options("incline");
+  options.window.tools.stopwatch = true;
+  ClassroomHands hands(options);
+  hands.classroom().playback().run_to(0.6);  // what --at does before the first frame
+  hands.frame();
+  const double now = hands.lesson().scene().time();
+  EXPECT_NEAR(now, 0.6, 1e-9);
+  EXPECT_NEAR(hands.classroom().tools().stopwatch.reading(now), now, 1e-12);
+  EXPECT_EQ(hands.classroom().tools().stopwatch.text(now, false), "stopwatch 0.60 s (paused)");
+}
+
 // A stopwatch started and stopped by hand (W) mid-run, with a lap: taken back to a time inside
 // what it timed, it reads what it read then, is on again, and keeps the laps taken by then only.
 TEST(Stopwatch, TakenBackInTimeItReadsWhatItReadThen) {

@@ -47,7 +47,10 @@ Classroom::Classroom(ClassroomOptions options)
   }
   playback_->set_speed(window_.speed);
   // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
-  // predicts, before anything moves; Space plays.
+  // predicts, before anything moves; Space plays. A stopwatch the last class left shown is armed
+  // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
+  tools_.on = window_.tools;
+  tools_.arm_stopwatch(0.0, false);
 }
 
 std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
