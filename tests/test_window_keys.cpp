@@ -122,6 +122,30 @@ TEST(WindowKeys, SpaceInASlidersTypedValueKeepsItAndPlays) {
   EXPECT_FALSE(typing(hands));
 }
 
+// A number's box inside a menu (the Mystery menu's seed): Space ends the typing, plays, and closes
+// the menu once the box has kept its value.
+TEST(WindowKeys, SpaceInTheMysteryMenusSeedKeepsItPlaysAndClosesTheMenu) {
+  ClassroomHands hands(lesson_options("spring_pull"));
+  hands.frame();
+  hands.click("Mystery menu");
+  hands.click("mystery seed");
+  ASSERT_TRUE(typing(hands));
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeysDown[io.KeyMap[ImGuiKey_Backspace]] = true;  // the seed shown, 1, taken out
+  hands.frame();
+  io.KeysDown[io.KeyMap[ImGuiKey_Backspace]] = false;
+  hands.type("42");
+  press_space(hands);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  hands.frame();
+  EXPECT_FALSE(any_popup_open()) << "the menu closed";
+  EXPECT_FALSE(typing(hands));
+  hands.click("Mystery menu");
+  hands.click("mystery aluminium/wood");
+  ASSERT_TRUE(hands.classroom().mystery().has_value());
+  EXPECT_EQ(hands.classroom().mystery()->choice().seed, 42u) << "the seed typed was kept";
+}
+
 // A file's name is free text: Space is typed into it, and nothing plays.
 TEST(WindowKeys, SpaceInAFilesNameIsTyped) {
   ClassroomHands hands(lesson_options("incline"));
