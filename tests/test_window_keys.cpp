@@ -122,6 +122,21 @@ TEST(WindowKeys, SpaceInASlidersTypedValueKeepsItAndPlays) {
   EXPECT_FALSE(typing(hands));
 }
 
+// ImGui's own number box (InputDouble): the Cheapest setting tab's tolerance.
+TEST(WindowKeys, SpaceInTheCheapestSettingsToleranceKeepsItAndPlays) {
+  ClassroomHands hands(lesson_options("spring_pull"));
+  hands.frame();
+  hands.frame();  // the tab bar settles
+  hands.click("Cheapest setting tab");
+  hands.click("tolerance");
+  ASSERT_TRUE(typing(hands)) << "its text selected as it opens: what is typed replaces it";
+  hands.type("0.25");
+  press_space(hands);
+  EXPECT_EQ(hands.classroom().cheapest_tolerance(), 0.25);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  EXPECT_FALSE(typing(hands));
+}
+
 // A number's box inside a menu (the Mystery menu's seed): Space ends the typing, plays, and closes
 // the menu once the box has kept its value.
 TEST(WindowKeys, SpaceInTheMysteryMenusSeedKeepsItPlaysAndClosesTheMenu) {
