@@ -95,8 +95,8 @@ pull='xdotool mousemove 396 397; sleep 0.5; xdotool mousedown 1; sleep 0.3; xdot
   for i in $(seq 1 70); do xdotool mousemove $((396 + 2 * i)) 397; sleep 0.02; done; sleep 0.2'
 live window_force_gauge "${projector}distance_marks = on\nspeed_readout = on\n" "$pull" \
   push --set mass=10 --set push_rate=0.2
-# The incline's block sliding, every tool on: the stopwatch started with the run (W) and a lap
-# taken (L); the run pauses at its end, 1 s.
-watch='xdotool key w space; sleep 0.6; xdotool key l; sleep 1.5'
+# The incline's block sliding, every tool on: the stopwatch, shown before the run, started with
+# it (Space) and a lap taken (L); the run pauses at its end, 1 s, and so does the stopwatch.
+watch='xdotool key space; sleep 0.6; xdotool key l; sleep 1.5'
 live window_tools "${projector}stopwatch = on\ndistance_marks = on\nspeed_readout = on\nweight_components = on\n" \
   "$watch" incline

@@ -545,9 +545,9 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
         draw_window_frame(gl, host, window, display, wall, record);
       };
       frame(0.0, nullptr);
-      // The stopwatch running with a lap, and the hand pulling the main body to the right for
-      // a second and a half, still held when the frame is recorded.
-      window.key_pressed(Key::w, false);
+      // The stopwatch running with a lap (shown before the run, Play starts it), and the hand
+      // pulling the main body to the right for a second and a half, still held when the frame is
+      // recorded.
       const b2Body* body = measured_body(window.playback().lesson());
       const ImVec2 held = window.world_camera().to_screen(body->GetWorldCenter());
       ImGuiIO& io = ImGui::GetIO();
@@ -608,7 +608,7 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
     lessons::Lesson& lesson = *at.lesson;
     MeasuringTools tools;
     tools.on.speed = true;
-    tools.follow(lesson);
+    tools.follow(lesson, false);
     FrameRecord record;
     FrameStyle style;
     style.fonts = &fonts;

@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson_benchmark.h"
 #include "ui/panels.h"
+#include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -54,6 +55,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f * scale);
   ImGui::InputDouble("##tolerance", &tolerance, 0.0, 0.0, "%g");
+  takes_a_number();
   remember_item(controls, "tolerance");
   beside_if_room(ImGui::CalcTextSize(unit.c_str()).x);
   ImGui::AlignTextToFramePadding();

@@ -15,6 +15,7 @@
 #include "ui/frame.h"
 #include "ui/image.h"
 #include "ui/output_file.h"
+#include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -46,7 +47,10 @@ Classroom::Classroom(ClassroomOptions options)
   }
   playback_->set_speed(window_.speed);
   // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
-  // predicts, before anything moves; Space plays.
+  // predicts, before anything moves; Space plays. A stopwatch the last class left shown is armed
+  // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
+  tools_.on = window_.tools;
+  tools_.arm_stopwatch(0.0, false);
 }
 
 std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
@@ -76,6 +80,7 @@ void Classroom::forget_interaction() {
   held_view_.reset();
   panning_from_.reset();
   failed_script_.clear();
+  tools_.stopwatch.reset();  // it timed a run of the lesson that closed
 }
 
 void Classroom::check_lock(const lessons::Lesson& lesson) const {
@@ -123,7 +128,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   try_failed_script(wall_seconds);
 
   tools_.on = window_.tools;
-  tools_.follow(playback_->lesson());
+  tools_.follow(playback_->lesson(), playback_->playing());
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
@@ -181,26 +186,59 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   ImGui::PopFont();
 
-  // Space typed into a prediction's number: the typing ended there, and the run plays.
-  if (predictions_.play_asked) {
-    predictions_.play_asked = false;
-    playback_->toggle();
-  }
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
   for (const auto& [name, text] : pending_values_) set_value(name, text);
   pending_values_.clear();
+  after_keys();
 }
 
+namespace {
+
+// How many of ImGui's open popups are dialogs (modal, up to the topmost one); those above them
+// are menus: the menu bar's, a combo's list, a tab's menu.
+int dialog_levels() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  int level = g.OpenPopupStack.Size;
+  while (level > 0) {
+    const ImGuiWindow* popup = g.OpenPopupStack[level - 1].Window;
+    if (popup != nullptr && (popup->Flags & ImGuiWindowFlags_Modal) != 0) break;
+    --level;
+  }
+  return level;
+}
+
+}  // namespace
+
 void Classroom::handle_keys() {
-  const ImGuiIO& io = ImGui::GetIO();
   std::vector<std::pair<Key, bool>> taps;
   taps.swap(taps_);
-  // Typing a value or a path, or a dialog open: the keys are the text's, not shortcuts.
-  if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
   const auto hit = [&](Key key, bool ctrl) {
     return std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
   };
+  const int dialogs = dialog_levels();
+  const bool menu_open = ImGui::GetCurrentContext()->OpenPopupStack.Size > dialogs;
+  const Typing typed = typing();
+  // Space in a box that takes a number (ui/text_boxes.h) ends the typing as Enter does (the value
+  // kept; ImGui 1.86 reads Enter from the key's state, so it is pressed for this frame only) and
+  // then plays: a teacher types the class's answer and presses Space to start. The box lets no
+  // blank in. In a box of free text (a file's name), Space is typed.
+  if (typed == Typing::number && hit(Key::space, false)) {
+    ImGuiIO& io = ImGui::GetIO();
+    enter_for_typing_ = io.KeysDown[io.KeyMap[ImGuiKey_Enter]];
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = true;
+    io.KeysDownDuration[io.KeyMap[ImGuiKey_Enter]] = 0.0f;
+    if (dialogs == 0) play_after_typing_ = true;
+    close_menus_ = menu_open;
+    return;
+  }
+  // Typing a value or a path, or a dialog open: the other keys are the text's or the dialog's
+  // (Escape in a box puts its text back, as ImGui does).
+  if (typed != Typing::nothing || dialogs > 0) return;
+  // A menu open: Escape closes it; a shortcut closes it and acts (the class watches the run, not
+  // the menu; the trial's Space did nothing while the Tools menu was open).
+  if (menu_open && !taps.empty()) close_menus_ = true;
+  if (hit(Key::escape, false)) return;
   if (hit(Key::s, true)) request_screenshot();
   if (hit(Key::e, true)) save_history();
   if (hit(Key::space, false)) playback_->toggle();
@@ -221,6 +259,20 @@ void Classroom::handle_keys() {
   }
   if (hit(Key::l, false)) tools_.stopwatch.lap(now);
   if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
+}
+
+void Classroom::after_keys() {
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  if (enter_for_typing_) {
+    g.IO.KeysDown[g.IO.KeyMap[ImGuiKey_Enter]] = *enter_for_typing_;
+    enter_for_typing_.reset();
+  }
+  // After the frame, so that a box in a menu took its Enter first.
+  if (close_menus_) ImGui::ClosePopupToLevel(dialog_levels(), true);
+  close_menus_ = false;
+  // The Space that ended the typing plays once the value it kept has been set (a rebuild first).
+  if (play_after_typing_) playback_->toggle();
+  play_after_typing_ = false;
 }
 
 bool Classroom::idle() const {

@@ -164,7 +164,10 @@ class Classroom {
   std::string gauge_figures() const;
 
  private:
+  // The keys the window layer reported since the last frame, at the frame's start; and what
+  // they leave for its end (ImGui's popups closed, Enter let go, the run played).
   void handle_keys();
+  void after_keys();
   void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
   void tools_menu();
@@ -263,6 +266,9 @@ class Classroom {
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
+  std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
+  bool play_after_typing_ = false;        // ... and the run to play when its value is set
+  bool close_menus_ = false;              // a key pressed while a menu was open
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   CheapestSettingTab cheapest_;

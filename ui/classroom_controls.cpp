@@ -9,6 +9,7 @@
 #include "physics/materials.h"
 #include "ui/panels.h"
 #include "ui/classroom.h"
+#include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -349,10 +350,14 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     ImGui::SetNextItemWidth(reset_x - spacing - value_x);
     char typed[64];
     std::snprintf(typed, sizeof typed, "%s", parameter_text(parameter).c_str());
+    // A number, read here (to say why "0,5" is refused): no blank joins it, and Space ends the
+    // typing as Enter does and plays (ui/text_boxes.h).
     if (ImGui::InputText("##value", typed, sizeof typed,
-                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
+                             ImGuiInputTextFlags_CharsNoBlank)) {
       pending_values_.push_back({name, typed});
     }
+    takes_a_number();
     remember(name + " value");
     {
       const ImVec2 padding = ImGui::GetStyle().FramePadding;

@@ -127,7 +127,8 @@ void Classroom::help_panel() {
   ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Help (F1 shows and hides it)", &window_.help)) {
     static const char* const keys[][2] = {
-        {"Space", "play / pause"},
+        {"Space", "play / pause; typing a number, ends the typing and plays"},
+        {"Esc", "closes an open menu (any key above acts and closes it)"},
         {". (period)", "one step of the lesson (1/hz s), paused"},
         {", (comma)", "one step back (replays the record)"},
         {"R", "reset to t = 0, keeping the values set"},
@@ -167,8 +168,9 @@ void Classroom::help_panel() {
         "until you change something. The Mystery menu draws a pair's \u03bcs and \u03bck from a seed and hides them "
         "until revealed: the class measures them and types its answers in the Mystery tab.");
     ImGui::TextUnformatted(
-        "Tools menu: a stopwatch on the lesson's clock (W starts and stops it, L takes a lap; slow motion and pauses "
-        "do not fool it), distance marks along the floor or the slope from where the main body stood at t = 0, "
+        "Tools menu: a stopwatch on the lesson's clock (shown before the run, it starts with Play and stops when the "
+        "run pauses or ends; W starts and stops it, L takes a lap; slow motion does not fool it, and R or the time "
+        "bar takes it back with the run), distance marks along the floor or the slope from where the main body stood at t = 0, "
         "the main body's speed, and its weight split along and across a slope (m\u00b7g\u00b7sin \u03b8, "
         "m\u00b7g\u00b7cos \u03b8). They stay on for the next class.");
     ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +

@@ -14,7 +14,11 @@ void Classroom::tools_menu() {
   if (!open) return;
   ToolSettings& on = window_.tools;
   const double now = playback_->lesson().scene().time();
-  ImGui::MenuItem("Stopwatch (lesson time)", nullptr, &on.stopwatch);
+  // Shown before the run, it is armed at once: the teacher's next key may well be Space.
+  if (ImGui::MenuItem("Stopwatch (lesson time)", nullptr, &on.stopwatch)) {
+    tools_.on = on;
+    tools_.arm_stopwatch(now, playback_->playing());
+  }
   remember("tool stopwatch");
   if (ImGui::MenuItem(tools_.stopwatch.running() ? "Stop the stopwatch" : "Start the stopwatch", "W")) {
     on.stopwatch = true;

@@ -3,37 +3,70 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "ui/overlays.h"
 
 namespace frictionlab::ui {
 
+namespace {
+
+constexpr double never = std::numeric_limits<double>::infinity();
+// Lesson times are whole frames of the fixed step; a rounding's worth apart is the same time.
+constexpr double same_time = 1e-9;
+
+}  // namespace
+
+bool Stopwatch::Span::on() const { return to == never; }
+
 void Stopwatch::start_stop(double now) {
-  if (running_) {
-    banked_ = reading(now);
-    running_ = false;
+  used_ = true;
+  if (running()) {
+    spans_.back().to = now;
+    // Switched on and off at one moment (W twice while paused): it never counted anything.
+    if (spans_.back().to <= spans_.back().from + same_time) spans_.pop_back();
   } else {
-    started_at_ = now;
-    running_ = true;
+    spans_.push_back({now, never});
   }
 }
 
 void Stopwatch::lap(double now) {
-  if (running_) laps_.push_back(reading(now));
+  if (!running()) return;
+  used_ = true;
+  laps_.push_back({now, reading(now)});
 }
 
 void Stopwatch::reset() { *this = Stopwatch{}; }
 
-double Stopwatch::reading(double now) const { return std::max(0.0, banked_ + (running_ ? now - started_at_ : 0.0)); }
+void Stopwatch::rewind(double now) {
+  // Spans begun after `now` had not begun then; one that held `now` was on then, and is on again.
+  while (!spans_.empty() && spans_.back().from > now + same_time) spans_.pop_back();
+  if (!spans_.empty() && spans_.back().to > now + same_time) spans_.back().to = never;
+  while (!laps_.empty() && laps_.back().at > now + same_time) laps_.pop_back();
+}
 
-std::string Stopwatch::text(double now) const {
+double Stopwatch::reading(double now) const {
+  double counted = 0.0;
+  for (const Span& span : spans_) counted += std::max(0.0, std::min(span.to, now) - span.from);
+  return counted;
+}
+
+std::vector<double> Stopwatch::laps() const {
+  std::vector<double> readings;
+  for (const Lap& taken : laps_) readings.push_back(taken.reading);
+  return readings;
+}
+
+std::string Stopwatch::text(double now, bool playing) const {
+  const double shown = reading(now);
+  const char* state = !running() ? " (stopped)" : playing ? "" : shown == 0.0 ? " (starts with Play)" : " (paused)";
   char line[64];
-  std::snprintf(line, sizeof line, "stopwatch %.2f s%s", reading(now), running_ ? "" : " (stopped)");
+  std::snprintf(line, sizeof line, "stopwatch %.2f s%s", shown, state);
   std::string text = line;
   // The last three laps, numbered as the class counts them.
   const std::size_t first = laps_.size() > 3 ? laps_.size() - 3 : 0;
   for (std::size_t i = first; i < laps_.size(); ++i) {
-    std::snprintf(line, sizeof line, "\nlap %zu: %.2f s", i + 1, laps_[i]);
+    std::snprintf(line, sizeof line, "\nlap %zu: %.2f s", i + 1, laps_[i].reading);
     text += line;
   }
   return text;
@@ -142,14 +175,20 @@ std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body) 
   return weight;
 }
 
-void MeasuringTools::follow(const lessons::Lesson& lesson) {
+void MeasuringTools::follow(const lessons::Lesson& lesson, bool playing) {
   const Scene& scene = lesson.scene();
-  // Back to t = 0 (R, a rebuild, another lesson) is a new run: a stopwatch started in the old
-  // one would read from a time that is not in this one.
-  if (scene.frame() == 0 && last_frame_ > 0) stopwatch.reset();
+  // Back in time (R, a step back, the time bar, a rebuild): the stopwatch as it was then.
+  if (scene.frame() < last_frame_) stopwatch.rewind(scene.time());
   last_frame_ = scene.frame();
+  playing_ = playing;
+  arm_stopwatch(scene.time(), playing);
   if (scene.frame() != 0 && origin_) return;
   if (const std::optional<Surface> surface = surface_under(scene, measured_body(lesson))) origin_ = surface->point;
+}
+
+void MeasuringTools::arm_stopwatch(double now, bool playing) {
+  // The trial's teacher showed the stopwatch, pressed Play and saw it stay at 0.
+  if (on.stopwatch && !playing && !stopwatch.used()) stopwatch.start_stop(now);
 }
 
 namespace {
@@ -288,7 +327,7 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
     draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
   };
   if (on.stopwatch && first_lane) {
-    const std::string text = stopwatch.text(scene.time());
+    const std::string text = stopwatch.text(scene.time(), playing_);
     const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
     label(fonts.body, ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + 0.5f * size.y), text);
   }

@@ -19,24 +19,40 @@
 
 namespace frictionlab::ui {
 
-// A stopwatch on the lesson's clock: started, stopped and read at lesson times, so slow motion,
-// a pause or fast forward change nothing it reads.
+// A stopwatch on the lesson's clock: it counts the lesson time that passes while it is on, so
+// slow motion, a pause or fast forward change nothing it reads. On while the lesson is paused, it
+// is armed: Play starts it, and a pause or the run's end stops what it reads. Its reading is kept
+// as the spans of lesson time it was on, so a step back in time (R, the time bar, a rebuild)
+// shows it as it was at that time, rather than clearing it: a stopwatch on from t = 0 reads 0
+// again after R, and is still armed for the next run.
 class Stopwatch {
  public:
+  // W: on from `now` (counting as soon as the lesson's time moves), or off.
   void start_stop(double now);
-  void lap(double now);  // the reading now joins the laps (while running)
+  void lap(double now);  // the reading now joins the laps (while on)
   void reset();
-  double reading(double now) const;  // s of lesson time while it ran; never below 0 after a step back
-  bool running() const { return running_; }
-  const std::vector<double>& laps() const { return laps_; }
-  // "stopwatch 1.23 s" with its last laps on lines below.
-  std::string text(double now) const;
+  // The lesson went back to `now`: the reading, whether it was on and the laps as they were then.
+  void rewind(double now);
+  double reading(double now) const;  // s of lesson time it was on, up to `now`
+  bool running() const { return !spans_.empty() && spans_.back().on(); }  // on: counting lesson time
+  // Started or lapped since the last reset (a stopwatch shown but never used is armed by the tools).
+  bool used() const { return used_; }
+  std::vector<double> laps() const;  // their readings, oldest first
+  // "stopwatch 1.23 s" (while the lesson plays), "... (starts with Play)", "... (paused)" or
+  // "... (stopped)", with its last laps on lines below.
+  std::string text(double now, bool playing) const;
 
  private:
-  bool running_ = false;
-  double started_at_ = 0.0;  // lesson time of the last start
-  double banked_ = 0.0;      // time run before it
-  std::vector<double> laps_;
+  struct Span {
+    double from, to;  // lesson times; `to` infinite while on
+    bool on() const;
+  };
+  struct Lap {
+    double at, reading;  // the lesson time it was taken at, and what it read
+  };
+  std::vector<Span> spans_;
+  std::vector<Lap> laps_;
+  bool used_ = false;
 };
 
 // The body the tools measure: the one the view follows, else the lesson's first moving body
@@ -76,9 +92,12 @@ class MeasuringTools {
   Stopwatch stopwatch;
 
   // Each frame before drawing: where distances count from (the main body's place on its surface
-  // at t = 0, taken whenever the lesson is at t = 0), and the stopwatch cleared when the lesson
-  // goes back to t = 0 (a new run).
-  void follow(const lessons::Lesson& lesson);
+  // at t = 0, taken whenever the lesson is at t = 0), the stopwatch taken back with the lesson's
+  // time, and a stopwatch shown but never used armed while the lesson is paused (Play starts it).
+  void follow(const lessons::Lesson& lesson, bool playing);
+  // The stopwatch shown (on.stopwatch) while the lesson is paused, and never used since its last
+  // reset: armed at `now`, so that Play starts it.
+  void arm_stopwatch(double now, bool playing);
   void avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
              LabelPlacer& labels) const;
   void draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
@@ -88,6 +107,7 @@ class MeasuringTools {
  private:
   std::optional<b2Vec2> origin_;
   long last_frame_ = 0;  // the lesson's frame when last followed
+  bool playing_ = false;  // the lesson, when last followed: what the stopwatch's text says
 };
 
 }  // namespace frictionlab::ui

@@ -7,6 +7,7 @@
 #include "physics/validation.h"
 #include "ui/classroom.h"
 #include "ui/panels.h"
+#include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -47,6 +48,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
     ImGui::TextDisabled("Seed (the same seed draws the same values)");
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("0000000").x + 2.0f * ImGui::GetFrameHeight());
     ImGui::InputInt("##seed", &menu_seed);
+    takes_a_number();
     remember_item(controls, "mystery seed");
     menu_seed = std::clamp(menu_seed, 0, static_cast<int>(mystery_seed_max));
     for (const std::string& pair : pairs) {
@@ -100,6 +102,7 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
     ImGui::SetNextItemWidth(box);
     const bool entered = ImGui::InputText("##answer", answer_text[k], sizeof answer_text[k],
                                           ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_EnterReturnsTrue);
+    takes_a_number();
     remember_item(controls, std::string("mystery answer ") + (k == 0 ? "mu_s" : "mu_k"));
     if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
       std::string why;

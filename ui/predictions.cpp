@@ -8,6 +8,7 @@
 
 #include "physics/validation.h"
 #include "ui/overlays.h"
+#include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
 namespace frictionlab::ui {
@@ -177,20 +178,12 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
       char typed[answer_length + 1] = {};
       std::snprintf(typed, sizeof typed, "%s", before.c_str());
       ImGui::SetNextItemWidth(std::min(answer_box_width(), width));
-      // A space ends the typing and plays (ClassPredictions::play_asked); it never joins the number.
-      const auto no_spaces = [](ImGuiInputTextCallbackData* data) -> int {
-        if (data->EventChar != ' ') return 0;
-        *static_cast<bool*>(data->UserData) = true;
-        return 1;
-      };
-      bool space = false;
-      if (ImGui::InputText("##answer", typed, sizeof typed, ImGuiInputTextFlags_CallbackCharFilter, no_spaces, &space)) {
+      // A number: no blank joins it ("40 " read as "not a number"), and Space ends the typing and
+      // plays (the window's rule for boxes that take a number, ui/text_boxes.h).
+      if (ImGui::InputText("##answer", typed, sizeof typed, ImGuiInputTextFlags_CharsNoBlank)) {
         predictions.answers[prediction.expectation] = typed;
       }
-      if (space) {
-        ImGui::ClearActiveID();
-        predictions.play_asked = true;
-      }
+      takes_a_number();
       if (controls.remember) controls.remember("prediction " + prediction.expectation);
       const ImRect box(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
       note_text_in(typed, ImVec2(box.Min.x + ImGui::GetStyle().FramePadding.x, box.Min.y + ImGui::GetStyle().FramePadding.y),

@@ -21,9 +21,6 @@ namespace frictionlab::ui {
 struct ClassPredictions {
   std::map<std::string, std::string> answers;  // by expect row: the number as typed, or the word picked
   bool revealed = false;
-  // Space pressed while typing a number: a number has no spaces, and Space is how the window
-  // plays everywhere else, so the typing ends and the window plays (taken once by the window).
-  bool play_asked = false;
 };
 
 // The theory is kept back: the lesson asks for predictions, the teacher asks for them (the

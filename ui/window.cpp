@@ -34,6 +34,7 @@ struct Glfw {
 std::optional<Key> classroom_key(int glfw_key) {
   switch (glfw_key) {
     case GLFW_KEY_SPACE: return Key::space;
+    case GLFW_KEY_ESCAPE: return Key::escape;
     case GLFW_KEY_PERIOD: return Key::period;
     case GLFW_KEY_COMMA: return Key::comma;
     case GLFW_KEY_R: return Key::r;

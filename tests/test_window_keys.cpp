@@ -1,0 +1,281 @@
+// The classroom window's keyboard as a teacher's trial found it: the keys while a menu is open
+// (Escape closes it; a shortcut acts and closes it), Space in the boxes the class types in (a
+// number's box: the typing ends, the value kept as Enter keeps it, and the run plays; a box of
+// free text: a space is typed), and the stopwatch the keys and Play drive, read in lesson seconds.
+// Keys come as the window layer passes them on: the key, and for Space the character it types.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "classroom_hands.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool any_popup_open() { return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId); }
+
+// Space as GLFW reports it: the key to the window layer, and its character to ImGui's queue.
+void press_space(ClassroomHands& hands) {
+  hands.classroom().key_pressed(Key::space, false);
+  ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(' '));
+  hands.frame();
+}
+
+// Typing in a box: ImGui tells what the frame before asked for.
+bool typing(ClassroomHands& hands) {
+  hands.frame();
+  hands.frame();
+  return ImGui::GetIO().WantTextInput;
+}
+
+ClassroomOptions lesson_options(const std::string& lesson) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.window.predictions = false;
+  return options;
+}
+
+TEST(WindowKeys, EscapeClosesAnOpenMenuAndNothingElse) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  hands.click("Tools menu");
+  ASSERT_TRUE(any_popup_open()) << "the Tools menu is open";
+  const bool help = hands.classroom().window_settings().help;
+  hands.key(Key::escape);
+  hands.frame();
+  EXPECT_FALSE(any_popup_open()) << "Escape closed the menu";
+  EXPECT_FALSE(hands.classroom().playback().playing());
+  EXPECT_EQ(hands.lesson().scene().frame(), 0);
+  EXPECT_EQ(hands.classroom().window_settings().help, help);
+}
+
+// The class watches the run, not the menu: with the Tools menu open, Space plays and R rewinds,
+// and each closes the menu.
+TEST(WindowKeys, AShortcutWithAMenuOpenActsAndClosesIt) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  hands.click("Tools menu");
+  ASSERT_TRUE(any_popup_open());
+  hands.key(Key::space);
+  EXPECT_TRUE(hands.classroom().playback().playing()) << "Space played with the menu open";
+  hands.frame(0.25);
+  EXPECT_FALSE(any_popup_open()) << "and closed it";
+  EXPECT_GT(hands.lesson().scene().time(), 0.2);
+  hands.click("View menu");
+  ASSERT_TRUE(any_popup_open());
+  hands.key(Key::r);
+  EXPECT_EQ(hands.lesson().scene().frame(), 0) << "R rewound with the menu open";
+  EXPECT_FALSE(hands.classroom().playback().playing());
+  hands.frame();
+  EXPECT_FALSE(any_popup_open());
+}
+
+// A parameter's box: Space keeps the typed value exactly as Enter would, ends the typing and plays.
+TEST(WindowKeys, SpaceInAParametersBoxSetsTheValueAndPlays) {
+  ClassroomHands hands(lesson_options("spring_pull"));
+  hands.frame();
+  hands.click("mu_k value");
+  hands.type("0.3125");
+  ASSERT_TRUE(typing(hands));
+  press_space(hands);
+  EXPECT_EQ(hands.lesson().parameter("mu_k").value, 0.3125) << "the value typed, kept as Enter keeps it";
+  EXPECT_TRUE(hands.classroom().playback().playing()) << "Space played";
+  EXPECT_FALSE(typing(hands)) << "the typing ended";
+  EXPECT_TRUE(hands.classroom().control_error("mu_k").empty()) << hands.classroom().control_error("mu_k");
+}
+
+// The Mystery tab's answers are numbers too.
+TEST(WindowKeys, SpaceInAMysteryAnswerKeepsItAndPlays) {
+  ClassroomOptions options = lesson_options("spring_pull");
+  options.mystery = MysteryChoice{"aluminium/wood", 42};
+  ClassroomHands hands(options);
+  hands.texts();
+  hands.click_text("Mystery###mystery");
+  hands.click("mystery answer mu_s");
+  hands.type("0.5");
+  ASSERT_TRUE(typing(hands));
+  press_space(hands);
+  const std::optional<Mystery>& mystery = hands.classroom().mystery();
+  ASSERT_TRUE(mystery.has_value());
+  ASSERT_TRUE(mystery->answer_mu_s.has_value()) << "the answer was kept";
+  EXPECT_EQ(*mystery->answer_mu_s, 0.5);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  EXPECT_FALSE(typing(hands));
+}
+
+// A slider with no box of its own takes a typed value on Ctrl+click (ImGui's own number box).
+TEST(WindowKeys, SpaceInASlidersTypedValueKeepsItAndPlays) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  ImGui::GetIO().KeyCtrl = true;
+  hands.click("speed");
+  ImGui::GetIO().KeyCtrl = false;
+  ASSERT_TRUE(typing(hands)) << "Ctrl+click opened the slider's box";
+  // Its text is selected as it opens: what is typed replaces it.
+  hands.type("0.5");
+  press_space(hands);
+  EXPECT_DOUBLE_EQ(hands.classroom().playback().speed(), 0.5);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  EXPECT_FALSE(typing(hands));
+}
+
+// ImGui's own number box (InputDouble): the Cheapest setting tab's tolerance.
+TEST(WindowKeys, SpaceInTheCheapestSettingsToleranceKeepsItAndPlays) {
+  ClassroomHands hands(lesson_options("spring_pull"));
+  hands.frame();
+  hands.frame();  // the tab bar settles
+  hands.click("Cheapest setting tab");
+  hands.click("tolerance");
+  ASSERT_TRUE(typing(hands)) << "its text selected as it opens: what is typed replaces it";
+  hands.type("0.25");
+  press_space(hands);
+  EXPECT_EQ(hands.classroom().cheapest_tolerance(), 0.25);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  EXPECT_FALSE(typing(hands));
+}
+
+// A number's box inside a menu (the Mystery menu's seed): Space ends the typing, plays, and closes
+// the menu once the box has kept its value.
+TEST(WindowKeys, SpaceInTheMysteryMenusSeedKeepsItPlaysAndClosesTheMenu) {
+  ClassroomHands hands(lesson_options("spring_pull"));
+  hands.frame();
+  hands.click("Mystery menu");
+  hands.click("mystery seed");
+  ASSERT_TRUE(typing(hands));
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeysDown[io.KeyMap[ImGuiKey_Backspace]] = true;  // the seed shown, 1, taken out
+  hands.frame();
+  io.KeysDown[io.KeyMap[ImGuiKey_Backspace]] = false;
+  hands.type("42");
+  press_space(hands);
+  EXPECT_TRUE(hands.classroom().playback().playing());
+  hands.frame();
+  EXPECT_FALSE(any_popup_open()) << "the menu closed";
+  EXPECT_FALSE(typing(hands));
+  hands.click("Mystery menu");
+  hands.click("mystery aluminium/wood");
+  ASSERT_TRUE(hands.classroom().mystery().has_value());
+  EXPECT_EQ(hands.classroom().mystery()->choice().seed, 42u) << "the seed typed was kept";
+}
+
+// A file's name is free text: Space is typed into it, and nothing plays.
+TEST(WindowKeys, SpaceInAFilesNameIsTyped) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  const std::string path = hands.folder() + "/class one.setup";
+  ASSERT_EQ(hands.classroom().save_setup(path), "");
+  hands.click("Lesson menu");
+  hands.click("Open a setup");
+  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+  hands.click("setup path");
+  hands.type(hands.folder() + "/class");
+  press_space(hands);
+  EXPECT_FALSE(hands.classroom().playback().playing()) << "Space in a file's name does not play";
+  ASSERT_TRUE(typing(hands)) << "the typing goes on";
+  hands.type("one.setup");
+  hands.click("setup go");
+  EXPECT_EQ(hands.classroom().status(), "Opened the setup " + path) << "the name with its space";
+}
+
+// The trial: the stopwatch shown before the run stayed at 0 when Play was pressed, and R cleared
+// it. Shown before the run, it starts with Play, reads the lesson's time while it plays, stops
+// when the run pauses or ends, and R takes it back to the run's start: 0, armed for the next run.
+TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  hands.click("Tools menu");
+  hands.click("tool stopwatch");
+  ASSERT_TRUE(hands.classroom().window_settings().tools.stopwatch);
+  const Stopwatch& stopwatch = hands.classroom().tools().stopwatch;
+  // The lesson's time (R and the time bar rebuild its scene).
+  const auto now = [&] { return hands.lesson().scene().time(); };
+  EXPECT_TRUE(stopwatch.running()) << "armed before the run";
+  EXPECT_EQ(stopwatch.text(0.0, false), "stopwatch 0.00 s (starts with Play)");
+  hands.key(Key::space);
+  for (int i = 0; i < 24; ++i) hands.frame(1.0 / 60.0);
+  EXPECT_GT(now(), 0.3);
+  EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12) << "it started with Play, at t = 0";
+  hands.key(Key::space);  // pause
+  const double paused_at = now();
+  for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);
+  EXPECT_NEAR(stopwatch.reading(now()), paused_at, 1e-12);
+  EXPECT_NE(stopwatch.text(now(), false).find("(paused)"), std::string::npos);
+  // Played on to the run's end (1 s), where the window pauses: the reading stops there.
+  hands.key(Key::space);
+  for (int i = 0; i < 120; ++i) hands.frame(1.0 / 60.0);
+  ASSERT_FALSE(hands.classroom().playback().playing()) << "the run ended";
+  const double duration = hands.classroom().playback().readings().duration;
+  EXPECT_NEAR(now(), duration, hands.lesson().scene().frame_step());
+  EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12);
+  // R: back to t = 0, where it read 0 and was armed.
+  hands.key(Key::r);
+  EXPECT_EQ(now(), 0.0);
+  EXPECT_EQ(stopwatch.reading(0.0), 0.0);
+  EXPECT_TRUE(stopwatch.running()) << "still armed for the next run";
+  hands.key(Key::space);
+  for (int i = 0; i < 12; ++i) hands.frame(1.0 / 60.0);
+  EXPECT_GT(now(), 0.1);
+  EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12) << "the next run is timed too";
+}
+
+// Shown from the last class's settings, it is armed as the window opens: a window opened at a
+// later time (--at, as the README's screenshots are taken) shows it read the run up to there.
+TEST(Stopwatch, ShownFromTheSettingsItTimesTheRunFromTheStart) {
+  ClassroomOptions options = lesson_options("incline");
+  options.window.tools.stopwatch = true;
+  ClassroomHands hands(options);
+  hands.classroom().playback().run_to(0.6);  // what --at does before the first frame
+  hands.frame();
+  const double now = hands.lesson().scene().time();
+  EXPECT_NEAR(now, 0.6, 1e-9);
+  EXPECT_NEAR(hands.classroom().tools().stopwatch.reading(now), now, 1e-12);
+  EXPECT_EQ(hands.classroom().tools().stopwatch.text(now, false), "stopwatch 0.60 s (paused)");
+}
+
+// A stopwatch started and stopped by hand (W) mid-run, with a lap: taken back to a time inside
+// what it timed, it reads what it read then, is on again, and keeps the laps taken by then only.
+TEST(Stopwatch, TakenBackInTimeItReadsWhatItReadThen) {
+  ClassroomHands hands(lesson_options("push"));
+  Playback& playback = hands.classroom().playback();
+  const auto now = [&] { return hands.lesson().scene().time(); };  // R and the time bar rebuild the scene
+  const Stopwatch& stopwatch = hands.classroom().tools().stopwatch;
+  hands.frame();
+  playback.run_to(0.5);
+  hands.key(Key::w);  // on at 0.5, paused: Play starts it
+  EXPECT_EQ(stopwatch.text(now(), false), "stopwatch 0.00 s (starts with Play)");
+  hands.key(Key::space);
+  while (now() < 0.75 - 1e-9) hands.frame(1.0 / 240.0);
+  hands.key(Key::l);  // a lap at 0.75: 0.25 s
+  while (now() < 1.5 - 1e-9) hands.frame(1.0 / 240.0);
+  hands.key(Key::w);  // off at 1.5
+  const double stopped_at = now();
+  while (now() < 2.0 - 1e-9) hands.frame(1.0 / 240.0);
+  hands.key(Key::space);
+  ASSERT_FALSE(playback.playing());
+  EXPECT_NEAR(stopwatch.reading(now()), stopped_at - 0.5, 1e-9);
+  ASSERT_EQ(stopwatch.laps().size(), 1u);
+  EXPECT_NEAR(stopwatch.laps()[0], 0.25, 1e-9);
+  // The time bar back to t = 1.0: it read 0.5 s then, running.
+  playback.scrub_to(1.0);
+  hands.frame();
+  EXPECT_NEAR(now(), 1.0, 1e-9);
+  EXPECT_NEAR(stopwatch.reading(now()), 0.5, 1e-9);
+  EXPECT_TRUE(stopwatch.running());
+  EXPECT_EQ(stopwatch.laps().size(), 1u) << "the lap at 0.75 was taken by then";
+  // Back to 0.6: the lap had not been taken yet.
+  playback.scrub_to(0.6);
+  hands.frame();
+  EXPECT_NEAR(stopwatch.reading(now()), 0.1, 1e-9);
+  EXPECT_TRUE(stopwatch.laps().empty());
+  // R: at t = 0 it had not been started; nor does Play start it now (the teacher started it at 0.5).
+  hands.key(Key::r);
+  EXPECT_EQ(stopwatch.reading(0.0), 0.0);
+  EXPECT_FALSE(stopwatch.running());
+  EXPECT_EQ(stopwatch.text(0.0, false), "stopwatch 0.00 s (stopped)");
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
