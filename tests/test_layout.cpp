@@ -104,6 +104,50 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
   }
 }
 
+// A label's box and a convex polygon share a point unless some edge of either parts them.
+bool overlaps_polygon(const ImVec4& box, const std::vector<ImVec2>& polygon) {
+  const ImVec2 corners[4] = {{box.x, box.y}, {box.z, box.y}, {box.z, box.w}, {box.x, box.w}};
+  std::vector<ImVec2> axes = {{1.0f, 0.0f}, {0.0f, 1.0f}};
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const ImVec2 edge = sub(polygon[(i + 1) % polygon.size()], polygon[i]);
+    axes.push_back(ImVec2(-edge.y, edge.x));
+  }
+  for (const ImVec2& axis : axes) {
+    const auto span = [&](const ImVec2* points, std::size_t count) {
+      float low = 1e30f, high = -1e30f;
+      for (std::size_t k = 0; k < count; ++k) {
+        const float at = points[k].x * axis.x + points[k].y * axis.y;
+        low = std::min(low, at), high = std::max(high, at);
+      }
+      return std::pair(low, high);
+    };
+    const auto [box_low, box_high] = span(corners, 4);
+    const auto [shape_low, shape_high] = span(polygon.data(), polygon.size());
+    if (box_high <= shape_low || shape_high <= box_low) return false;
+  }
+  return true;
+}
+
+// The tools' readings of a body ("v = ..." and the gauge's "gauge ..."), each off every polygon
+// of that body as drawn. Returns how many were found.
+int readings_off(const FrameRecord::Lane& lane, const b2Body* body, const std::string& where) {
+  int found = 0;
+  for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+    if (lane.texts[i].rfind("v = ", 0) != 0 && lane.texts[i].rfind("gauge ", 0) != 0) continue;
+    ++found;
+    const ImVec4 label = drawn(lane.labels[i]);
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (fixture->GetType() != b2Shape::e_polygon) continue;
+      const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      std::vector<ImVec2> polygon;
+      for (int k = 0; k < shape->m_count; ++k) polygon.push_back(lane.camera.to_screen(body->GetWorldPoint(shape->m_vertices[k])));
+      EXPECT_FALSE(overlaps_polygon(label, polygon))
+          << where << ": \"" << lane.texts[i] << "\" at " << text_of(label) << " is drawn on the body it reads";
+    }
+  }
+  return found;
+}
+
 // Every text whole where it was drawn. Only the tabs under the sliders may scroll (when even
 // folded friction pairs leave the theory table too little room), and the class's predictions
 // in the theory table's place: text there may be a scroll away above or below, never cut
@@ -589,6 +633,8 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
                label.y >= lane.camera.origin.y && label.y < lane.camera.origin.y + corner;
       });
       EXPECT_TRUE(stopwatch) << where << ": no label in the lane's top left corner (the stopwatch)";
+      // The speed and the gauge's reading, off the body held (the gauge's sat on push's block).
+      EXPECT_EQ(readings_off(lane, scene.grabbed(), where), 2) << where;
       io.MouseDown[0] = false;
       frame(0.0, nullptr);
     }
@@ -638,30 +684,6 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
     EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
     check_layout(record, lesson, std::string(name) + " panned to the left edge, speed readout on");
   }
-}
-
-// A label's box and a convex polygon share a point unless some edge of either parts them.
-bool overlaps_polygon(const ImVec4& box, const std::vector<ImVec2>& polygon) {
-  const ImVec2 corners[4] = {{box.x, box.y}, {box.z, box.y}, {box.z, box.w}, {box.x, box.w}};
-  std::vector<ImVec2> axes = {{1.0f, 0.0f}, {0.0f, 1.0f}};
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const ImVec2 edge = sub(polygon[(i + 1) % polygon.size()], polygon[i]);
-    axes.push_back(ImVec2(-edge.y, edge.x));
-  }
-  for (const ImVec2& axis : axes) {
-    const auto span = [&](const ImVec2* points, std::size_t count) {
-      float low = 1e30f, high = -1e30f;
-      for (std::size_t k = 0; k < count; ++k) {
-        const float at = points[k].x * axis.x + points[k].y * axis.y;
-        low = std::min(low, at), high = std::max(high, at);
-      }
-      return std::pair(low, high);
-    };
-    const auto [box_low, box_high] = span(corners, 4);
-    const auto [shape_low, shape_high] = span(polygon.data(), polygon.size());
-    if (box_high <= shape_low || shape_high <= box_low) return false;
-  }
-  return true;
 }
 
 // The measuring tools' labels in the lessons a teacher tried them on, at 1280 × 720 and in
@@ -736,20 +758,7 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
         // The speed readout, once, off the body it measures (its polygons as drawn).
         const b2Body* body = measured_body(lesson);
         ASSERT_NE(body, nullptr) << where;
-        int readouts = 0;
-        for (std::size_t i = 0; i < lane.labels.size(); ++i) {
-          if (lane.texts[i].rfind("v = ", 0) != 0) continue;
-          ++readouts;
-          const ImVec4 label = drawn(lane.labels[i]);
-          for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-            if (fixture->GetType() != b2Shape::e_polygon) continue;
-            const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
-            std::vector<ImVec2> polygon;
-            for (int k = 0; k < shape->m_count; ++k) polygon.push_back(camera.to_screen(body->GetWorldPoint(shape->m_vertices[k])));
-            EXPECT_FALSE(overlaps_polygon(label, polygon)) << where << ": the speed readout at " << text_of(label)
-                                                   << " is drawn on the body it measures";
-          }
-        }
+        const int readouts = readings_off(lane, body, where);
         EXPECT_EQ(readouts, 1) << where;
 
         // No label on a spring's coils: its line, and the coils' 7 px (times the text scale) either
