@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,50 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
       }
     }
   }
+}
+
+// A label's box and a convex polygon share a point unless some edge of either parts them.
+bool overlaps_polygon(const ImVec4& box, const std::vector<ImVec2>& polygon) {
+  const ImVec2 corners[4] = {{box.x, box.y}, {box.z, box.y}, {box.z, box.w}, {box.x, box.w}};
+  std::vector<ImVec2> axes = {{1.0f, 0.0f}, {0.0f, 1.0f}};
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const ImVec2 edge = sub(polygon[(i + 1) % polygon.size()], polygon[i]);
+    axes.push_back(ImVec2(-edge.y, edge.x));
+  }
+  for (const ImVec2& axis : axes) {
+    const auto span = [&](const ImVec2* points, std::size_t count) {
+      float low = 1e30f, high = -1e30f;
+      for (std::size_t k = 0; k < count; ++k) {
+        const float at = points[k].x * axis.x + points[k].y * axis.y;
+        low = std::min(low, at), high = std::max(high, at);
+      }
+      return std::pair(low, high);
+    };
+    const auto [box_low, box_high] = span(corners, 4);
+    const auto [shape_low, shape_high] = span(polygon.data(), polygon.size());
+    if (box_high <= shape_low || shape_high <= box_low) return false;
+  }
+  return true;
+}
+
+// The tools' readings of a body ("v = ..." and the gauge's "gauge ..."), each off every polygon
+// of that body as drawn. Returns how many were found.
+int readings_off(const FrameRecord::Lane& lane, const b2Body* body, const std::string& where) {
+  int found = 0;
+  for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+    if (lane.texts[i].rfind("v = ", 0) != 0 && lane.texts[i].rfind("gauge ", 0) != 0) continue;
+    ++found;
+    const ImVec4 label = drawn(lane.labels[i]);
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (fixture->GetType() != b2Shape::e_polygon) continue;
+      const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      std::vector<ImVec2> polygon;
+      for (int k = 0; k < shape->m_count; ++k) polygon.push_back(lane.camera.to_screen(body->GetWorldPoint(shape->m_vertices[k])));
+      EXPECT_FALSE(overlaps_polygon(label, polygon))
+          << where << ": \"" << lane.texts[i] << "\" at " << text_of(label) << " is drawn on the body it reads";
+    }
+  }
+  return found;
 }
 
 // Every text whole where it was drawn. Only the tabs under the sliders may scroll (when even
@@ -587,6 +633,8 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
                label.y >= lane.camera.origin.y && label.y < lane.camera.origin.y + corner;
       });
       EXPECT_TRUE(stopwatch) << where << ": no label in the lane's top left corner (the stopwatch)";
+      // The speed and the gauge's reading, off the body held (the gauge's sat on push's block).
+      EXPECT_EQ(readings_off(lane, scene.grabbed(), where), 2) << where;
       io.MouseDown[0] = false;
       frame(0.0, nullptr);
     }
@@ -619,13 +667,9 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
     ASSERT_NE(body, nullptr) << name;
     const float offset = before.to_screen(body->GetWorldCenter()).x - before.origin.x;
     style.view_adjust.pan = b2Vec2(offset / before.pixels_per_metre, 0.0f);
-    style.world_tools = [&](bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                            LabelPlacer& labels) {
-      if (avoid) {
-        tools.avoid(lesson, camera, newtons_to_pixels, scale, labels);
-      } else {
-        tools.draw(draw, lesson, camera, newtons_to_pixels, theme(ThemeName::light), fonts, lane == 0, labels);
-      }
+    style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                            float newtons_to_pixels, LabelPlacer& labels) {
+      tools.in_world(pass, draw, lesson, camera, newtons_to_pixels, theme(ThemeName::light), fonts, lane == 0, labels);
     };
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = display;
@@ -640,6 +684,138 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
     EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
     check_layout(record, lesson, std::string(name) + " panned to the left edge, speed readout on");
   }
+}
+
+// The measuring tools' labels in the lessons a teacher tried them on, at 1280 × 720 and in
+// projector mode: the speed readout is never on the body it measures (it was drawn on
+// spring_pull's block); no label lies on a spring's coils (spring_pull's force label was drawn
+// on them); every distance mark's number is drawn at its tick unless an arrow, a contact mark, a
+// spring, a body or the view's edge is there, never given up to a label that could move (force
+// labels and the speed readout hid them); and behind the start the numbers are negative (they
+// had no minus sign; forward is rightwards, or downhill on a slope). With every other layout
+// rule of check_layout.
+TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOther) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  struct Size {
+    const char* name;
+    ImVec2 display;
+    float scale;
+  };
+  // The window's world frame in projector mode: under its menu bar, above its transport bar.
+  const Size sizes[] = {{"1280x720", ImVec2(1280.0f, 720.0f), frame_scale(1280, 720)},
+                        {"projector_1920x1080", ImVec2(1920.0f, 944.0f), 1.35f * frame_scale(1920, 1080)}};
+  struct Moment {
+    const char* lesson;
+    std::map<std::string, std::string> set;
+    double at;
+  };
+  const Moment moments[] = {{"spring_pull", {}, 0.0},  {"spring_pull", {}, 0.5}, {"spring_pull", {}, 1.2},
+                            {"spring_pull", {}, 2.5},  {"push", {}, 0.0},        {"push", {}, 1.0},
+                            {"push", {}, 2.0},         {"incline", {}, 0.0},     {"incline", {}, 0.3},
+                            {"incline", {}, 0.8},      {"incline", {{"angle", "25"}}, 0.5}};
+  int numbers_shown = 0, negative_numbers = 0, springs_checked = 0;
+  for (const Size& size : sizes) {
+    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+      const Fonts& fonts = host.prepare(size.scale, theme_name);
+      for (const Moment& moment : moments) {
+        LessonAt at(moment.lesson, moment.set, 0.0);
+        lessons::Lesson& lesson = *at.lesson;
+        MeasuringTools tools;
+        tools.on = ToolSettings{true, true, true, true};
+        tools.follow(lesson);  // the start is taken at t = 0, as the window does
+        at.step_to(moment.at);
+        tools.follow(lesson);
+        FrameRecord record;
+        FrameStyle style;
+        style.theme = theme_name;
+        style.fonts = &fonts;
+        style.record = &record;
+        std::vector<std::optional<DistanceMarks>> marks;
+        style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                                float newtons_to_pixels, LabelPlacer& labels) {
+          if (pass == WorldToolsPass::avoid) marks.push_back(tools.distance_marks(lesson, camera, fonts));
+          tools.in_world(pass, draw, lesson, camera, newtons_to_pixels, theme(theme_name), fonts, lane == 0, labels);
+        };
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = size.display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        build_frame(lesson, at.framing, style, size.display);
+        ImGui::Render();
+        char when[32];
+        std::snprintf(when, sizeof when, " at %.1f s", moment.at);
+        std::string where = std::string(moment.lesson) + (moment.set.empty() ? "" : " at 25°") + when + ", " + size.name;
+        if (theme_name == ThemeName::dark) where += ", dark";
+        check_layout(record, lesson, where);
+        ASSERT_EQ(record.lanes.size(), 1u) << where;
+        ASSERT_EQ(marks.size(), 1u) << where;
+        const FrameRecord::Lane& lane = record.lanes.front();
+        ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
+        const Camera& camera = lane.camera;
+        const Scene& scene = lesson.scene();
+
+        // The speed readout, once, off the body it measures (its polygons as drawn).
+        const b2Body* body = measured_body(lesson);
+        ASSERT_NE(body, nullptr) << where;
+        const int readouts = readings_off(lane, body, where);
+        EXPECT_EQ(readouts, 1) << where;
+
+        // No label on a spring's coils: its line, and the coils' 7 px (times the text scale) either
+        // side of it.
+        for (const Spring& spring : scene.springs()) {
+          const ImVec2 from = camera.to_screen(spring.body->GetWorldPoint(spring.local_point));
+          const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)
+                                                          : scene.hand_position(spring));
+          const DrawnSegment coils{from, to, 7.0f * size.scale};
+          ++springs_checked;
+          for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+            EXPECT_FALSE(overlaps(drawn(lane.labels[i]), coils))
+                << where << ": the label \"" << lane.texts[i] << "\" at " << text_of(drawn(lane.labels[i]))
+                << " lies on the spring's coils";
+          }
+        }
+
+        // Each tick's number at its tick, or a fixed drawing in its place: never a label.
+        ASSERT_TRUE(marks.front().has_value()) << where << ": no distance marks";
+        const ImVec2 start = camera.to_screen(*tools.distance_origin());
+        const std::optional<Surface> surface = surface_under(scene, body);
+        ASSERT_TRUE(surface.has_value()) << where;
+        const bool downhill_left = surface->along.y > 0.01f;
+        for (const DistanceMark& mark : marks.front()->ticks) {
+          const auto shown = std::find_if(lane.texts.begin(), lane.texts.end(), [&](const std::string& text) {
+            return text == mark.text;
+          });
+          if (shown != lane.texts.end()) {
+            const ImVec4& box = lane.labels[static_cast<std::size_t>(shown - lane.texts.begin())];
+            EXPECT_NEAR(box.x, mark.number_box.x, 0.01f) << where << ": " << mark.text << " is not at its tick";
+            EXPECT_NEAR(box.y, mark.number_box.y, 0.01f) << where << ": " << mark.text << " is not at its tick";
+            ++numbers_shown;
+            // Its sign says which side of the start it is on: forward is rightwards on a floor,
+            // downhill on a slope. (The start's own tick, a few pixels into a slope, says 0 m.)
+            if (mark.text == "0 m") continue;
+            const bool behind = downhill_left ? mark.foot.x > start.x + 1.0f : mark.foot.x < start.x - 1.0f;
+            EXPECT_EQ(mark.text.rfind("\u2212", 0) == 0, behind) << where << ": " << mark.text << " at x = " << mark.foot.x
+                                                                   << ", the start at x = " << start.x;
+            if (behind) ++negative_numbers;
+            continue;
+          }
+          const ImVec4& box = mark.number_box;
+          const ImVec4& view = lane.shown;
+          const bool cut = box.x < view.x || box.y < view.y || box.z > view.z || box.w > view.w;
+          const auto any = [&](const auto& list) {
+            return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
+          };
+          EXPECT_TRUE(cut || any(lane.arrows) || any(lane.avoided) || any(lane.bodies))
+              << where << ": the number " << mark.text << " at " << text_of(box)
+              << " was left out where only labels were";
+        }
+      }
+    }
+  }
+  EXPECT_GE(springs_checked, 16);
+  EXPECT_GE(numbers_shown, 100);
+  EXPECT_GE(negative_numbers, 4);  // push's view shows the floor behind the block, incline's the slope above it
 }
 
 // An open menu hides what is under it: its background (every popup's) and the menu bar's are

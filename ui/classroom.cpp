@@ -148,8 +148,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
     parameters_panel(corner, size, folded);
   };
-  style.world_tools = [this](bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                             LabelPlacer& labels) { world_tools(avoid, draw, camera, lane, newtons_to_pixels, labels); };
+  style.world_tools = [this](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                             float newtons_to_pixels,
+                             LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title();
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };

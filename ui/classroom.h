@@ -173,8 +173,8 @@ class Classroom {
   void tools_menu();
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
   // and the gauge's plot.
-  void world_tools(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                   LabelPlacer& labels);
+  void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                   float newtons_to_pixels, LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
   void transport_bar(ImVec2 corner, ImVec2 size);

@@ -39,8 +39,8 @@ void Classroom::tools_menu() {
   ImGui::EndMenu();
 }
 
-void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                            LabelPlacer& labels) {
+void Classroom::world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                            float newtons_to_pixels, LabelPlacer& labels) {
   const lessons::Lesson& lesson = playback_->lesson();
   const Scene& scene = lesson.scene();
   const float s = fonts_->scale;
@@ -50,14 +50,10 @@ void Classroom::world_tools(bool avoid, ImDrawList* draw, const Camera& camera, 
     const ImVec2 at = camera.to_screen(held->GetWorldCenter());
     gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == drag_lane_;
   }
-  if (avoid) {
-    if (gauge_here) avoid_gauge(scene, camera, s, labels);
-    tools_.avoid(lesson, camera, newtons_to_pixels, s, labels);
-    return;
-  }
+  if (gauge_here && pass == WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
   const Theme& colours = theme(window_.theme);
-  tools_.draw(draw, lesson, camera, newtons_to_pixels, colours, *fonts_, lane == 0, labels);
-  if (gauge_here) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
+  tools_.in_world(pass, draw, lesson, camera, newtons_to_pixels, colours, *fonts_, lane == 0, labels);
+  if (gauge_here && pass == WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
 }
 
 std::string Classroom::gauge_plot_title() const {

@@ -46,25 +46,26 @@ bool overlaps(const ImVec4& box, const DrawnSegment& segment) {
   return true;
 }
 
-ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
+bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
+  const auto any = [&](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
+  };
+  return !any(taken_) && !any(marks_) && !any(segments_) && !(off_bodies && any(bodies_));
+}
+
+bool LabelPlacer::free(const ImVec4& box, bool off_bodies) const {
+  const bool inside = box.x >= low_.x && box.y >= low_.y && box.z <= high_.x && box.w <= high_.y;
+  return inside && clear(box, off_bodies);
+}
+
+ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
   const float pad = 2.0f;
   const auto box_at = [&](ImVec2 c) {
     return ImVec4(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
                   c.y + 0.5f * size.y + pad);
   };
-  const auto free_at = [&](ImVec2 c) {
-    const ImVec4 box = box_at(c);
-    for (const ImVec4& t : taken_) {
-      if (overlaps(box, t)) return false;
-    }
-    for (const ImVec4& m : marks_) {
-      if (overlaps(box, m)) return false;
-    }
-    for (const DrawnSegment& s : segments_) {
-      if (overlaps(box, s)) return false;
-    }
-    return true;
-  };
+  // Candidates are moved inside the view first, so its edge is no obstacle here.
+  const auto free_at = [&](ImVec2 c) { return clear(box_at(c), off_bodies); };
   // Inside the view, so a label near its edge is moved in rather than cut.
   const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
   const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
@@ -89,7 +90,7 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size) {
       }
     }
   }
-  taken_.push_back(box_at(chosen));
+  take(box_at(chosen), text);
   return chosen;
 }
 
@@ -131,7 +132,11 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
   // Just beyond the tip, far enough along the arrow's line that the text clears the head.
   const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
-  draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size), colour, theme.panel, text.c_str());
+  // A spring's arrow runs along the spring from the body it pulls, so its label, beyond the tip
+  // and off the coils, would otherwise settle on that body's edge.
+  const bool off_bodies = arrow.force.kind == ForceKind::spring;
+  draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size, text, off_bodies), colour, theme.panel,
+             text.c_str());
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
@@ -166,7 +171,7 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
   const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
-  draw_label(draw, font, labels.place(wanted, size), colour, background, text.c_str());
+  draw_label(draw, font, labels.place(wanted, size, text), colour, background, text.c_str());
 }
 
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,

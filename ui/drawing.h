@@ -43,21 +43,48 @@ class LabelPlacer {
   LabelPlacer(ImVec2 corner, ImVec2 size) : low_(corner), high_(add(corner, size)) {}
   void avoid(const DrawnSegment& segment) { segments_.push_back(segment); }
   void avoid(const ImVec4& box) { marks_.push_back(box); }
+  // A moving body's box on screen. The lesson's own labels may lie on a body (a contact's word
+  // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
+  void body(const ImVec4& box) { bodies_.push_back(box); }
   // Where a label of this size goes: at `wanted` (its centre), or the nearest place around it
-  // that covers no label, arrow or mark; `wanted` itself when there is none near.
-  ImVec2 place(ImVec2 wanted, ImVec2 size);
+  // that covers no label, arrow or mark (nor body, with `off_bodies`); `wanted` itself when there
+  // is none near. `text` is kept with its box for the layout's tests.
+  ImVec2 place(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // Whether a label's box (padding included) would cover nothing known and stay in the view.
+  bool free(const ImVec4& box, bool off_bodies) const;
+  // Takes a box found free() as it is: a label that names a place (a distance mark's number)
+  // goes there or nowhere.
+  void take(const ImVec4& box, const std::string& text) {
+    taken_.push_back(box);
+    texts_.push_back(text);
+  }
 
   // What it placed and what it was told to avoid, for tests that check the picture's layout.
   const std::vector<ImVec4>& labels() const { return taken_; }  // x0, y0, x1, y1, padding included
+  const std::vector<std::string>& texts() const { return texts_; }  // each label's text
   const std::vector<DrawnSegment>& segments() const { return segments_; }
   const std::vector<ImVec4>& marks() const { return marks_; }
+  const std::vector<ImVec4>& bodies() const { return bodies_; }
   ImVec4 bounds() const { return ImVec4(low_.x, low_.y, high_.x, high_.y); }
 
  private:
+  bool clear(const ImVec4& box, bool off_bodies) const;  // covers nothing known
+
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
+  std::vector<std::string> texts_;
   std::vector<DrawnSegment> segments_;
   std::vector<ImVec4> marks_;
+  std::vector<ImVec4> bodies_;
+};
+
+// The passes of a lane's drawing that the window adds to the world (FrameStyle::world_tools),
+// in their order: what it will draw is told to the placer first, labels that name a place take
+// it before the lesson's labels, which may move, are placed, and the rest comes last.
+enum class WorldToolsPass {
+  avoid,         // before the world: what will be drawn, for the label placer
+  fixed_labels,  // once the world's arrows, marks, springs and bodies are known, before its labels
+  draw,          // after the world: the rest, with labels that may move
 };
 
 // A torque drawn as a curved arrow three quarters of the way round `centre` in its sense

@@ -192,7 +192,8 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
   const ImVec2 up = across.y <= 0.0f ? across : mul(across, -1.0f);
   const ImVec2 wanted = add(middle, mul(up, shape.half_width + 6.0f * s + 0.5f * std::abs(up.y) * size.y +
                                                 0.5f * std::abs(up.x) * size.x));
-  const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f));
+  // Off the body it pulls, as the other tools' readings are: the hand holds the case over it.
+  const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
   draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
 

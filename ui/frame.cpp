@@ -387,13 +387,17 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
         labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
                             name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
       }
-      if (style.world_tools) style.world_tools(true, draw, camera, lane, newtons_to_pixels, labels);
+      const auto tools = [&](WorldToolsPass pass) {
+        if (style.world_tools) style.world_tools(pass, draw, camera, lane, newtons_to_pixels, labels);
+      };
+      tools(WorldToolsPass::avoid);
       draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels,
-                 cameras.size() > 1 ? &lane_bodies[lane] : nullptr);
-      if (style.world_tools) style.world_tools(false, draw, camera, lane, newtons_to_pixels, labels);
+                 cameras.size() > 1 ? &lane_bodies[lane] : nullptr, [&] { tools(WorldToolsPass::fixed_labels); });
+      tools(WorldToolsPass::draw);
       if (style.record != nullptr) {
         style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
-                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y)});
+                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(),
+                                       labels.bodies()});
         style.record->inset = inset;
       }
       if (!lane_name.empty()) {

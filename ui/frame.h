@@ -48,6 +48,8 @@ struct FrameRecord {
     std::vector<DrawnSegment> arrows;    // as thick as drawn, heads included
     std::vector<ImVec4> avoided;         // contact marks and the inset
     ImVec4 shown{0.0f, 0.0f, 0.0f, 0.0f};  // what of the lane is not clipped away, x0, y0, x1, y1
+    std::vector<std::string> texts;        // each label's text, in the order of `labels`
+    std::vector<ImVec4> bodies;            // the moving bodies' boxes, which the tools' readings keep off
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
@@ -86,11 +88,11 @@ struct FrameStyle {
   std::function<void()> predictions;
   std::function<float(float width)> predictions_height;
   bool theory_hidden = false;
-  // The window's own drawing in each lane of the world (the force gauge, the measuring tools):
-  // called with `avoid` before the lesson's labels are placed, to tell the placer what it will
-  // draw, and again without, after the world is drawn, to draw it and place its labels.
-  std::function<void(bool avoid, ImDrawList* draw, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                     LabelPlacer& labels)>
+  // The window's own drawing in each lane of the world (the force gauge, the measuring tools),
+  // called three times (WorldToolsPass): to tell the placer what it will draw, to draw what has
+  // fixed labels before the lesson's labels are placed, and to draw the rest after the world.
+  std::function<void(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                     float newtons_to_pixels, LabelPlacer& labels)>
       world_tools;
   // One more plot after the lesson's (the force gauge's reading), drawn in its panel's inside;
   // its title. None when empty.

@@ -196,27 +196,6 @@ namespace {
 // The distance marks' step: a nice length about 120 pixels long.
 float mark_step(const Camera& camera, float scale) { return nice_length(120.0f * scale / camera.pixels_per_metre); }
 
-// Whether a label of `size` centred at `centre` would cover nothing the placer knows of and stay
-// in its view. A distance mark's number goes just under its tick or not at all: moved away it
-// would name another place.
-bool free_for(const LabelPlacer& labels, ImVec2 centre, ImVec2 size) {
-  const float pad = 2.0f;  // as the placer pads its labels
-  const ImVec4 box(centre.x - 0.5f * size.x - pad, centre.y - 0.5f * size.y - pad, centre.x + 0.5f * size.x + pad,
-                   centre.y + 0.5f * size.y + pad);
-  const ImVec4 view = labels.bounds();
-  if (box.x < view.x || box.y < view.y || box.z > view.z || box.w > view.w) return false;
-  for (const ImVec4& taken : labels.labels()) {
-    if (overlaps(box, taken)) return false;
-  }
-  for (const ImVec4& mark : labels.marks()) {
-    if (overlaps(box, mark)) return false;
-  }
-  for (const DrawnSegment& segment : labels.segments()) {
-    if (overlaps(box, segment)) return false;
-  }
-  return true;
-}
-
 // Whether the body's centre is in this lane's strip.
 bool in_lane(const Camera& camera, const b2Body* body) {
   const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
@@ -257,9 +236,12 @@ std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& 
   ruler.to = add(camera.to_screen(base + high * surface.along), offset);
   // Counted in whole ticks: far from the start a float count would stop growing.
   const double first = std::ceil(static_cast<double>(low) / step), last = std::floor(static_cast<double>(high) / step);
+  // Counted forward the way a body let go moves: rightwards along a level floor, downhill on a
+  // slope (as the lessons' distances are); behind the start the marks read negative.
+  const double forward = surface.along.y > std::sin(0.5f * b2_pi / 180.0f) ? -1.0 : 1.0;
   for (double k = first; k <= last && k - first < 400.0; k += 1.0) {
     const double metres = k * static_cast<double>(step);
-    ruler.ticks.push_back({add(camera.to_screen(base + static_cast<float>(metres) * surface.along), offset), std::abs(metres)});
+    ruler.ticks.push_back({add(camera.to_screen(base + static_cast<float>(metres) * surface.along), offset), forward * metres});
   }
   return ruler;
 }
@@ -288,10 +270,6 @@ std::string speed_reading(const b2Body* body) {
   return text;
 }
 
-namespace {
-
-}  // namespace
-
 void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
                            LabelPlacer& labels) const {
   const Scene& scene = lesson.scene();
@@ -317,13 +295,65 @@ void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, 
   }
 }
 
+void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                              float newtons_to_pixels, const Theme& theme, const Fonts& fonts, bool first_lane,
+                              LabelPlacer& labels) const {
+  switch (pass) {
+    case WorldToolsPass::avoid: avoid(lesson, camera, newtons_to_pixels, fonts.scale, labels); break;
+    case WorldToolsPass::fixed_labels: draw_distance_marks(draw, lesson, camera, theme, fonts, labels); break;
+    case WorldToolsPass::draw: this->draw(draw, lesson, camera, newtons_to_pixels, theme, fonts, first_lane, labels); break;
+  }
+}
+
+std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesson& lesson, const Camera& camera,
+                                                            const Fonts& fonts) const {
+  const b2Body* body = measured_body(lesson);
+  if (!on.distance_marks || !origin_ || body == nullptr || !in_lane(camera, body)) return std::nullopt;
+  const std::optional<Surface> surface = surface_under(lesson.scene(), body);
+  if (!surface) return std::nullopt;
+  const float s = fonts.scale;
+  const std::optional<Ruler> line = ruler(*surface, *origin_, camera, s);
+  if (!line) return std::nullopt;
+  DistanceMarks marks{line->from, line->to, line->inward, {}};
+  for (const auto& [foot, metres] : line->ticks) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%g m", std::abs(metres) < 1e-9 ? 0.0 : metres);
+    std::string text = number;
+    if (text[0] == '-') text.replace(0, 1, "\u2212");  // a minus sign, not a hyphen
+    const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
+    const ImVec2 centre = add(foot, mul(line->inward, 12.0f * s + 0.5f * size.y + 2.0f));
+    // As the placer pads a label of the size the other readings give it.
+    const float half_x = 0.5f * (size.x + 6.0f) + 2.0f, half_y = 0.5f * (size.y + 2.0f) + 2.0f;
+    marks.ticks.push_back({foot, metres, text, ImVec4(centre.x - half_x, centre.y - half_y, centre.x + half_x, centre.y + half_y)});
+  }
+  return marks;
+}
+
+void MeasuringTools::draw_distance_marks(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                                         const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const {
+  const std::optional<DistanceMarks> marks = distance_marks(lesson, camera, fonts);
+  if (!marks) return;
+  const float s = fonts.scale;
+  draw->AddLine(marks->from, marks->to, theme.text, 1.5f * s);
+  for (const DistanceMark& mark : marks->ticks) {
+    const bool zero = std::abs(mark.metres) < 1e-9;
+    draw->AddLine(mark.foot, add(mark.foot, mul(marks->inward, (zero ? 12.0f : 8.0f) * s)), theme.text, (zero ? 2.5f : 1.5f) * s);
+    // Just under its tick or not at all: moved away it would name another place.
+    if (!labels.free(mark.number_box, true)) continue;
+    labels.take(mark.number_box, mark.text);
+    const ImVec2 centre(0.5f * (mark.number_box.x + mark.number_box.z), 0.5f * (mark.number_box.y + mark.number_box.w));
+    draw_label(draw, fonts.small, centre, theme.text, theme.panel, mark.text.c_str());
+  }
+}
+
 void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
                           const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
+  // A reading of the body keeps off it (and off every other moving body).
   const auto label = [&](ImFont* font, ImVec2 wanted, const std::string& text, ImU32 colour = 0) {
     const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
-    const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f));
+    const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
     draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
   };
   if (on.stopwatch && first_lane) {
@@ -333,23 +363,6 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
   }
   const b2Body* body = measured_body(lesson);
   if (body == nullptr || !in_lane(camera, body)) return;
-  if (on.distance_marks) {
-    const std::optional<Surface> surface = surface_under(scene, body);
-    if (surface && origin_) {
-      if (const std::optional<Ruler> marks = ruler(*surface, *origin_, camera, s)) {
-        draw->AddLine(marks->from, marks->to, theme.text, 1.5f * s);
-        for (const auto& [foot, metres] : marks->ticks) {
-          const bool zero = metres < 1e-9;
-          draw->AddLine(foot, add(foot, mul(marks->inward, (zero ? 12.0f : 8.0f) * s)), theme.text, (zero ? 2.5f : 1.5f) * s);
-          char text[32];
-          std::snprintf(text, sizeof text, "%g m", metres);
-          const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text);
-          const ImVec2 wanted = add(foot, mul(marks->inward, 12.0f * s + 0.5f * size.y + 2.0f));
-          if (free_for(labels, wanted, ImVec2(size.x + 6.0f, size.y + 2.0f))) label(fonts.small, wanted, text);
-        }
-      }
-    }
-  }
   if (on.weight_components) {
     if (const std::optional<SlopeWeight> weight = slope_weight(scene, body)) {
       const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);

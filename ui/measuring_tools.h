@@ -83,6 +83,22 @@ struct SlopeWeight {
 };
 std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body);
 
+// The distance marks in a lane: a line along the surface just inside it, from where the view
+// shows it to where it ends, a tick every nice length counted from where the measured body stood
+// at t = 0, and each tick's number just under it: counted forward rightwards along a level
+// floor and downhill on a slope, with a minus sign behind the start.
+struct DistanceMark {
+  ImVec2 foot;        // the tick's foot on the line
+  double metres;      // from the start, forward (rightwards, or downhill) positive
+  std::string text;   // "0.4 m", "−0.2 m"
+  ImVec4 number_box;  // where its number goes, x0, y0, x1, y1, as the label placer pads a label
+};
+struct DistanceMarks {
+  ImVec2 from, to;  // the line
+  ImVec2 inward;    // screen direction into the surface
+  std::vector<DistanceMark> ticks;
+};
+
 // The tools in one lane of the world view. avoid() tells the placer what they draw before any
 // label is placed; draw() draws them and places their labels. `first_lane`: the stopwatch goes
 // in the first lane only; the body's tools go in the lane whose strip holds it.
@@ -100,6 +116,20 @@ class MeasuringTools {
   void arm_stopwatch(double now, bool playing);
   void avoid(const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels, float scale,
              LabelPlacer& labels) const;
+  // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), draw_distance_marks()
+  // and draw() in turn.
+  void in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                float newtons_to_pixels, const Theme& theme, const Fonts& fonts, bool first_lane,
+                LabelPlacer& labels) const;
+  // The distance marks, when on, and the measured body is in this lane (none otherwise).
+  std::optional<DistanceMarks> distance_marks(const lessons::Lesson& lesson, const Camera& camera,
+                                              const Fonts& fonts) const;
+  // Draws the distance marks, each number at its tick where it covers nothing the placer knows
+  // (an arrow, a contact mark, a spring, a body, a label placed earlier): called before the
+  // lesson's labels are placed (WorldToolsPass::fixed_labels), which then keep off the numbers.
+  void draw_distance_marks(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                           const Fonts& fonts, LabelPlacer& labels) const;
+  // The stopwatch, the weight's components and the speed, whose labels keep off the bodies.
   void draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
             const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const;
   std::optional<b2Vec2> distance_origin() const { return origin_; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -165,6 +166,9 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
 }
 
 
+// How far a spring's coils reach either side of its line, line width included.
+float coil_reach(float scale) { return 8.0f * scale; }
+
 // A coil spring: its turns spread out as it stretches and crowd as it is squeezed.
 void draw_spring(ImDrawList* draw, ImVec2 from, ImVec2 to, const Theme& theme, float scale) {
   const ImVec2 along = sub(to, from);
@@ -173,7 +177,7 @@ void draw_spring(ImDrawList* draw, ImVec2 from, ImVec2 to, const Theme& theme, f
   const ImVec2 unit = mul(along, 1.0f / span);
   const ImVec2 across(-unit.y, unit.x);
   constexpr int turns = 12;
-  const float lead = 0.12f * span, amplitude = 7.0f * scale;
+  const float lead = 0.12f * span, amplitude = coil_reach(scale) - 1.0f * scale;
   std::vector<ImVec2> points;
   points.push_back(from);
   points.push_back(add(from, mul(unit, lead)));
@@ -186,9 +190,13 @@ void draw_spring(ImDrawList* draw, ImVec2 from, ImVec2 to, const Theme& theme, f
   draw->AddPolyline(points.data(), static_cast<int>(points.size()), theme.spring, 0, 2.0f * scale);
 }
 
-void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fonts) {
+// The hand and its word, which labels placed later keep off.
+void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) {
   draw->AddCircleFilled(at, 7.0f * fonts.scale, theme.hand, 24);
-  draw_label(draw, fonts.small, ImVec2(at.x, at.y - 18.0f * fonts.scale), theme.hand, 0, "hand");
+  const ImVec2 word(at.x, at.y - 18.0f * fonts.scale);
+  draw_label(draw, fonts.small, word, theme.hand, 0, "hand");
+  const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, "hand");
+  labels.avoid(ImVec4(word.x - 0.5f * size.x, word.y - 0.5f * size.y, word.x + 0.5f * size.x, at.y + 7.0f * fonts.scale));
 }
 
 void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
@@ -226,14 +234,14 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   const b2Vec2 along = side * mark.tangent;
   const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
   const ImVec2 wanted(at.x + along.x * reach + into.x * depth, at.y - along.y * reach - into.y * depth);
-  draw_label(draw, fonts.small, labels.place(wanted, size), colour, theme.panel, text.c_str());
+  draw_label(draw, fonts.small, labels.place(wanted, size, text), colour, theme.panel, text.c_str());
 }
 
 }  // namespace
 
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
-                const std::vector<const b2Body*>* labelled) {
+                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
   const Scene& scene = lesson.scene();
   draw->AddRectFilled(camera.origin, add(camera.origin, camera.size), theme.sky);
   for (const auto& [name, body] : scene.bodies()) {
@@ -245,7 +253,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)
                                                     : scene.hand_position(spring));
     draw_spring(draw, from, to, theme, fonts.scale);
-    if (!spring.other) draw_hand(draw, to, theme, fonts);
+    // A spring's force label beyond its arrow's tip would lie on the coils: they are kept clear.
+    labels.avoid(DrawnSegment{from, to, coil_reach(fonts.scale)});
+    if (!spring.other) draw_hand(draw, to, theme, fonts, labels);
   }
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts);
@@ -291,6 +301,15 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     const ImVec2 at = camera.to_screen(mark.point);
     labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
   }
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const b2AABB box = body_box(body);
+    const ImVec2 a = camera.to_screen(box.lowerBound), b = camera.to_screen(box.upperBound);
+    labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)));
+  }
+  // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
+  // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
+  if (fixed_labels) fixed_labels();
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
   std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool>> said;
   for (const ContactMark& mark : marks) {
