@@ -206,6 +206,30 @@ TEST(Classroom, ALessonOpensPausedAtTheStart) {
   EXPECT_EQ(driver.lesson().scene().frame(), 0);
 }
 
+// Under a teacher's lock the Lesson menu's lessons are greyed: the menu says why, and how the
+// teacher unlocks them (nothing in the window does), at a screen's size and on a projector.
+TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
+  for (const ImVec2 display : {ImVec2(1024.0f, 768.0f), ImVec2(1920.0f, 1080.0f)}) {
+    Driver driver("incline", {"mu_s", "mu_k"});
+    driver.classroom().window_settings().projector = display.x > 1900.0f;
+    driver.set_display(display);
+    driver.frame();
+    driver.click("Lesson menu");
+    FrameRecord record;
+    driver.frame(0.0, display, &record);
+    const auto said = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) {
+      return text.text.rfind("Locked by --lock on the command line", 0) == 0;
+    });
+    ASSERT_NE(said, record.texts.end()) << display.x << ": the open menu says nothing of the lock";
+    EXPECT_NE(said->text.find("start FrictionLab without --lock"), std::string::npos) << said->text;
+    EXPECT_TRUE(said->whole()) << display.x << ": \"" << said->text << "\" is cut";
+  }
+  // Unlocked, the menu has no such line.
+  Driver free("incline");
+  free.frame();
+  EXPECT_EQ(free.classroom().lock_words(), "");
+}
+
 // The theory table's error column has a unit: in its heading when every row shares it
 // (tipping_box's force: "error (N)"), else in each cell (check_the_article's seconds, metres,
 // joules and newtons), after the number or, on a projector where that would not fit, under it.
