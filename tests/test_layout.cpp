@@ -143,6 +143,25 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
   }
 }
 
+// The world's words for the class too: the legend's materials and the free-body diagram's
+// body in words (where_methods_fail's "creeping_block" material, terrain's "asphalt_box").
+TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
+  HeadlessRenderer renderer(frame_width, frame_height);
+  const auto texts_of = [&](const std::string& lesson, double t) {
+    LessonAt at(lesson, {}, t);
+    FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    std::string all;
+    for (const ShownText& text : record.texts) all += text.text + "\n";
+    return all;
+  };
+  const std::string where_methods_fail = texts_of("where_methods_fail", 1.0);
+  EXPECT_NE(where_methods_fail.find("\ncreeping block\n"), std::string::npos) << where_methods_fail;
+  EXPECT_EQ(where_methods_fail.find("creeping_block"), std::string::npos) << where_methods_fail;
+  const std::string terrain = texts_of("terrain", 1.0);
+  EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
+}
+
 std::string screen_name(const ::testing::TestParamInfo<Screen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, Layout, ::testing::ValuesIn(screens), screen_name);
@@ -690,7 +709,8 @@ TEST(Menus, TheMenuBarShowsAsMuchOfTheScriptsPathAsFitsAndCutsNone) {
         if (text.text.size() < name.size() || text.text.compare(text.text.size() - name.size(), name.size(), name) != 0) continue;
         ++shown;
         const std::string where = std::string(screen.name) + ": \"" + text.text + "\"";
-        EXPECT_TRUE(text.whole()) << where << " is cut: it needs " << text.needed.z << " but the bar ends at " << text.visible.z;
+        EXPECT_TRUE(text.whole()) << where << " is cut: it needs x " << text.needed.x << " to " << text.needed.z << ", the bar shows "
+                                  << text.visible.x << " to " << text.visible.z;
         if (path == script.string()) {
           EXPECT_NE(text.text.find("\u2026/"), std::string::npos) << where << ": too long to show whole";
           EXPECT_EQ(text.text.rfind("/", 0), 0u) << where << ": its start";

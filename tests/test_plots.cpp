@@ -302,8 +302,9 @@ TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
   EXPECT_EQ(class_words("mu_k_top"), "\u03bck top");
   EXPECT_EQ(class_words("six_feet_load_"), "six feet load");
   EXPECT_EQ(class_words("__a__b"), "a b");
-  EXPECT_EQ(class_words("mu"), "mu");
-  EXPECT_EQ(class_words("mu_x"), "mu x");
+  EXPECT_EQ(class_words("lubricated_mu"), "lubricated \u03bc");
+  EXPECT_EQ(class_words("mu_x"), "\u03bc x");
+  EXPECT_EQ(class_words("music_k"), "music k") << "mu only as a word of its own";
   EXPECT_EQ(class_words("speed"), "speed");
   lessons::Parameter push_rate;
   push_rate.name = "push_rate";

@@ -18,10 +18,11 @@ std::string class_words(std::string_view name) {
   std::string words;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (!words.empty()) words += ' ';
-    // μ with its index: mu_s is the static coefficient, written μs beside the sliders.
-    if (parts[i] == "mu" && i + 1 < parts.size() && (parts[i + 1] == "s" || parts[i + 1] == "k")) {
+    // μ, with its index when it has one: mu_s is the static coefficient, written μs beside the
+    // sliders; lubricated_mu is the oiled table's μ.
+    if (parts[i] == "mu") {
       words += "\u03bc";
-      words += parts[++i];
+      if (i + 1 < parts.size() && (parts[i + 1] == "s" || parts[i + 1] == "k")) words += parts[++i];
     } else {
       words += parts[i];
     }

@@ -9,9 +9,10 @@
 
 namespace frictionlab::ui {
 
-// "mu_s" → "μs", "mu_k" → "μk", "mu_s_top" → "μs top", "slide_reduced" → "slide reduced",
-// "six_feet_load_" → "six feet load": underscores become spaces (never two in a row, none at
-// either end), and mu followed by s or k becomes the Greek letter with its index.
+// "mu_s" → "μs", "mu_k" → "μk", "mu_s_top" → "μs top", "lubricated_mu" → "lubricated μ",
+// "slide_reduced" → "slide reduced", "six_feet_load_" → "six feet load": underscores become
+// spaces (never two in a row, none at either end), and mu the Greek letter, with its index
+// when s or k follows.
 std::string class_words(std::string_view name);
 
 // A file's path as it fits in `room` points of the current ImGui font, never cut: the whole
