@@ -6,6 +6,7 @@
 #include "physics/stability.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -203,6 +204,74 @@ TEST(Classroom, ALessonOpensPausedAtTheStart) {
   EXPECT_NE(driver.lesson().path().find("spring_pull"), std::string::npos);
   EXPECT_FALSE(driver.playback().playing());
   EXPECT_EQ(driver.lesson().scene().frame(), 0);
+}
+
+// Under a teacher's lock the Lesson menu's lessons are greyed: the menu says why, and how the
+// teacher unlocks them (nothing in the window does), at a screen's size and on a projector.
+TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
+  for (const ImVec2 display : {ImVec2(1024.0f, 768.0f), ImVec2(1920.0f, 1080.0f)}) {
+    Driver driver("incline", {"mu_s", "mu_k"});
+    driver.classroom().window_settings().projector = display.x > 1900.0f;
+    driver.set_display(display);
+    driver.frame();
+    driver.click("Lesson menu");
+    FrameRecord record;
+    driver.frame(0.0, display, &record);
+    const auto said = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) {
+      return text.text.rfind("Locked by --lock on the command line", 0) == 0;
+    });
+    ASSERT_NE(said, record.texts.end()) << display.x << ": the open menu says nothing of the lock";
+    EXPECT_NE(said->text.find("start FrictionLab without --lock"), std::string::npos) << said->text;
+    EXPECT_TRUE(said->whole()) << display.x << ": \"" << said->text << "\" is cut";
+  }
+  // Unlocked, the menu has no such line.
+  Driver free("incline");
+  free.frame();
+  EXPECT_EQ(free.classroom().lock_words(), "");
+}
+
+// The theory table's error column has a unit: in its heading when every row shares it
+// (tipping_box's force: "error (N)"), else in each cell (check_the_article's seconds, metres,
+// joules and newtons), after the number or, on a projector where that would not fit, under it.
+TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
+  for (const bool projector : {false, true}) {
+    for (const std::string lesson : {"tipping_box", "check_the_article"}) {
+      Driver driver(lesson);
+      driver.classroom().window_settings().projector = projector;
+      const ImVec2 display = projector ? ImVec2(1920.0f, 1080.0f) : ImVec2(1280.0f, 720.0f);
+      driver.set_display(display);
+      driver.classroom().predictions().revealed = true;
+      driver.playback().run_to(driver.lesson().duration());
+      driver.frame();
+      driver.frame();
+      FrameRecord record;
+      driver.frame(0.0, display, &record);
+      const std::string where = lesson + (projector ? ", projector" : "");
+      std::set<std::string> units;
+      for (const lessons::ExpectationResult& row : driver.lesson().expectations()) {
+        if (row.numeric) units.insert(row.unit);
+      }
+      ASSERT_FALSE(units.empty()) << where;
+      bool heading = false;
+      int errors = 0;
+      for (const ShownText& text : record.texts) {
+        heading = heading || text.text == "error (" + *units.begin() + ")";
+        if (text.text.rfind("\u2713 ", 0) != 0 && text.text.rfind("\u2717 ", 0) != 0) continue;
+        if (text.text.find("agrees") != std::string::npos || text.text.find("differs") != std::string::npos) continue;
+        ++errors;
+        const bool has_unit = std::any_of(units.begin(), units.end(), [&](const std::string& unit) {
+          const std::size_t at = text.text.size() - std::min(text.text.size(), unit.size() + 1);
+          return !unit.empty() && (text.text.substr(at) == " " + unit || text.text.substr(at) == "\n" + unit);
+        });
+        EXPECT_EQ(has_unit, units.size() > 1) << where << ": \"" << text.text << "\""
+                                              << (units.size() > 1 ? " has no unit" : ": the heading has it");
+        // Across: the table may be a scroll away above or below in a short column.
+        EXPECT_TRUE(text.scrolls ? text.whole_across() : text.whole()) << where << ": \"" << text.text << "\" is cut";
+      }
+      EXPECT_GT(errors, 0) << where << ": no error cell was drawn";
+      EXPECT_EQ(heading, units.size() == 1) << where << ": the heading names the unit all rows share, and only then";
+    }
+  }
 }
 
 TEST(Classroom, PauseAndStepAdvanceExactlyOneStep) {
@@ -1150,14 +1219,16 @@ TEST(Classroom, WithPredictionsOffTheTheoryShowsFromTheStart) {
   EXPECT_FALSE(driver.classroom().theory_hidden());
 }
 
-// The vertices a plot's window drew in the theory's colour: its curves and their legend key.
+// The vertices a plot's window drew in the theory's colours: its curves and their legend keys.
 int theory_vertices(const Theme& colours, std::size_t plots) {
   int count = 0;
   for (std::size_t i = 0; i < plots; ++i) {
     const ImGuiWindow* window = ImGui::FindWindowByName(("###plot" + std::to_string(i)).c_str());
     if (window == nullptr) continue;
     for (const ImDrawVert& vertex : window->DrawList->VtxBuffer) {
-      if ((vertex.col & 0x00ffffffu) == (colours.theory & 0x00ffffffu) && (vertex.col >> 24) > 0) ++count;
+      for (const ImU32 theory : colours.theory) {
+        if ((vertex.col & 0x00ffffffu) == (theory & 0x00ffffffu) && (vertex.col >> 24) > 0) ++count;
+      }
     }
   }
   return count;

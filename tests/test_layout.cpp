@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -186,6 +187,25 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
       }
     }
   }
+}
+
+// The world's words for the class too: the legend's materials and the free-body diagram's
+// body in words (where_methods_fail's "creeping_block" material, terrain's "asphalt_box").
+TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
+  HeadlessRenderer renderer(frame_width, frame_height);
+  const auto texts_of = [&](const std::string& lesson, double t) {
+    LessonAt at(lesson, {}, t);
+    FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    std::string all;
+    for (const ShownText& text : record.texts) all += text.text + "\n";
+    return all;
+  };
+  const std::string where_methods_fail = texts_of("where_methods_fail", 1.0);
+  EXPECT_NE(where_methods_fail.find("\ncreeping block\n"), std::string::npos) << where_methods_fail;
+  EXPECT_EQ(where_methods_fail.find("creeping_block"), std::string::npos) << where_methods_fail;
+  const std::string terrain = texts_of("terrain", 1.0);
+  EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
 }
 
 std::string screen_name(const ::testing::TestParamInfo<Screen>& screen) { return screen.param.name; }
@@ -723,9 +743,9 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
         lessons::Lesson& lesson = *at.lesson;
         MeasuringTools tools;
         tools.on = ToolSettings{true, true, true, true};
-        tools.follow(lesson);  // the start is taken at t = 0, as the window does
+        tools.follow(lesson, false);  // the start is taken at t = 0, as the window does
         at.step_to(moment.at);
-        tools.follow(lesson);
+        tools.follow(lesson, false);
         FrameRecord record;
         FrameStyle style;
         style.theme = theme_name;
@@ -833,6 +853,49 @@ TEST(Menus, AreOpaqueInBothThemes) {
       EXPECT_EQ(style.Colors[ImGuiCol_MenuBarBg].w, 1.0f) << where << " at text scale " << scale;
     }
   }
+}
+
+// The menu bar names the running script's file, so a student knows which to edit. A path
+// longer than the bar has room for (a projector's large text, a student's folder deep in
+// their home) shows its start and its whole file name with "…" between, never cut at the
+// window's edge; a path that fits shows whole.
+TEST(Menus, TheMenuBarShowsAsMuchOfTheScriptsPathAsFitsAndCutsNone) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / "frictionlab_menu_path" /
+                          "a_folder_name_long_enough_to_fill_a_projectors_menu_bar_twice_over" /
+                          "and_another_one_inside_it_for_the_classroom_of_tuesday_morning";
+  fs::create_directories(folder);
+  const fs::path script = folder / "check_the_article.lua";
+  fs::copy_file(lessons::resolve_lesson("check_the_article"), script, fs::copy_options::overwrite_existing);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const WindowScreen& screen : window_screens) {
+    for (const std::string& path : {script.string(), lessons::resolve_lesson("wedge")}) {
+      ClassroomOptions options;
+      options.lesson = path;
+      options.window.help = false;
+      options.window.projector = screen.projector;
+      Classroom window(options);
+      const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+      FrameRecord record;
+      for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+      const std::string name = fs::path(path).filename().string();
+      int shown = 0;
+      for (const ShownText& text : record.texts) {
+        if (text.text.size() < name.size() || text.text.compare(text.text.size() - name.size(), name.size(), name) != 0) continue;
+        ++shown;
+        const std::string where = std::string(screen.name) + ": \"" + text.text + "\"";
+        EXPECT_TRUE(text.whole()) << where << " is cut: it needs x " << text.needed.x << " to " << text.needed.z << ", the bar shows "
+                                  << text.visible.x << " to " << text.visible.z;
+        if (path == script.string()) {
+          EXPECT_NE(text.text.find("\u2026/"), std::string::npos) << where << ": too long to show whole";
+          EXPECT_EQ(text.text.rfind("/", 0), 0u) << where << ": its start";
+        }
+      }
+      EXPECT_EQ(shown, 1) << screen.name << ": " << name << " in the menu bar";
+    }
+  }
+  fs::remove_all(fs::temp_directory_path() / "frictionlab_menu_path");
 }
 
 }  // namespace

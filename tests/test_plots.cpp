@@ -11,7 +11,9 @@
 #include "ui/chart.h"
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
+#include "ui/panels.h"
 #include "ui/plots.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -289,6 +291,128 @@ TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
   ASSERT_GE(layout.y_ticks.size(), 2u);
   const float gap = layout.to_screen(0.0, layout.y_ticks.front()).y - layout.to_screen(0.0, layout.y_ticks.back()).y;
   EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
+}
+
+// A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
+// window's μs and μk.
+TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
+  EXPECT_EQ(class_words("friction_force"), "friction force");
+  EXPECT_EQ(class_words("slide_reduced"), "slide reduced");
+  EXPECT_EQ(class_words("mu_s"), "\u03bcs");
+  EXPECT_EQ(class_words("mu_k_top"), "\u03bck top");
+  EXPECT_EQ(class_words("six_feet_load_"), "six feet load");
+  EXPECT_EQ(class_words("__a__b"), "a b");
+  EXPECT_EQ(class_words("lubricated_mu"), "lubricated \u03bc");
+  EXPECT_EQ(class_words("mu_x"), "\u03bc x");
+  EXPECT_EQ(class_words("music_k"), "music k") << "mu only as a word of its own";
+  EXPECT_EQ(class_words("speed"), "speed");
+  lessons::Parameter push_rate;
+  push_rate.name = "push_rate";
+  EXPECT_EQ(parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
+}
+
+// A script's path in the room the menu bar has: whole, else whole folders from its start and the
+// whole file name, else the file name with its middle left out; never wider than the room.
+TEST(ClassWords, APathIsShortenedInTheMiddleToFitNeverCut) {
+  FontsForLayout& fonts = measuring();
+  ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 720.0f);
+  fonts.host.begin_frame();  // the window's font, as the menu bar has it
+  const auto width = [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; };
+  const std::string path = "/home/ann/physics/week_7/file.lua";
+  EXPECT_EQ(path_that_fits(path, width(path)), path);
+  EXPECT_EQ(path_that_fits(path, width(path) - 1.0f), "/home/ann/physics/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("/home/ann/\u2026/file.lua") + 1.0f), "/home/ann/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("/\u2026/file.lua")), "/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("fil\u2026lua")), "fil\u2026lua");
+  EXPECT_EQ(path_that_fits(path, width("\u2026")), "\u2026");
+  EXPECT_EQ(path_that_fits(path, 0.0f), "");
+  for (float room = 0.0f; room < width(path) + 10.0f; room += 3.0f) {
+    EXPECT_LE(width(path_that_fits(path, room)), room) << "in " << room << " points";
+  }
+  ImGui::EndFrame();
+}
+
+// Every plot of every built-in lesson names its probes in words on its axes and in its legend:
+// no identifier with an underscore reaches the class (check_the_article's "friction_force",
+// wedge's "slide_reduced" did).
+TEST(PlotLegends, NameEveryBuiltInLessonsProbesInWords) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 1.0);
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const Chart chart = plot_chart(*at.lesson, plot, at.lesson->duration(), theme(ThemeName::light));
+      const std::string where = name + ", plot " + std::to_string(plot) + ": ";
+      EXPECT_EQ(chart.x_label.find('_'), std::string::npos) << where << chart.x_label;
+      EXPECT_EQ(chart.y_label.find('_'), std::string::npos) << where << chart.y_label;
+      for (const ChartSeries& series : chart.series) EXPECT_EQ(series.name.find('_'), std::string::npos) << where << series.name;
+    }
+  }
+}
+
+// A probe's label, when the script gives one, is what the plot calls it; the others in words.
+TEST(PlotLegends, AProbesLabelIsItsNameOnThePlot) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "friction_force", unit = "N", function() return 1 end }
+probe { "f_reduced", unit = "N", label = "the reduced model's friction", function() return 2 end }
+plot { "both", kind = "time", y = { "friction_force", "f_reduced" } }
+plot { "one", kind = "xy", x = "friction_force", y = { "f_reduced" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.1);
+  const Chart both = plot_chart(lesson, 0, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(both.series.size(), 2u);
+  EXPECT_EQ(both.series[0].name, "friction force");
+  EXPECT_EQ(both.series[1].name, "the reduced model's friction");
+  const Chart one = plot_chart(lesson, 1, lesson.duration(), theme(ThemeName::light));
+  EXPECT_EQ(one.x_label, "friction force (N)");
+  EXPECT_EQ(one.y_label, "the reduced model's friction (N)");
+}
+
+// check_the_article draws Coulomb's law and the article's equation as written on one plot: each
+// in a dash pattern and colour of its own, on the plot and in the legend's key, in both themes.
+TEST(TheoryCurves, EachCurveOfAPlotHasALookOfItsOwnOnThePlotAndInItsLegend) {
+  FontsForLayout& fonts = measuring();
+  LessonAt at("check_the_article", {}, 2.0);
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours);
+    ASSERT_EQ(chart.theory.size(), 2u);
+    const ChartCurve &right = chart.theory[0], &as_written = chart.theory[1];
+    EXPECT_NE(right.colour, as_written.colour) << theme_name(name);
+    EXPECT_NE(right.dash, as_written.dash) << theme_name(name);
+    // Six curves, six looks.
+    for (std::size_t i = 0; i < 6; ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        ChartCurve a, b;
+        give_theory_look(a, colours, i);
+        give_theory_look(b, colours, j);
+        EXPECT_TRUE(a.colour != b.colour || a.dash != b.dash || a.gap != b.gap) << i << " and " << j;
+      }
+    }
+    // Drawn: the vertices in each theory key's swatch are in its curve's colour, in as many
+    // dashes as its pattern gives.
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(1280.0f, 720.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    fonts.host.begin_frame();
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ChartLayout layout = draw_chart(draw, corner, area, chart, colours, fonts.fonts);
+    ASSERT_GE(layout.legend_at.size(), 2u);
+    int swatch_vertices[2] = {0, 0};
+    for (std::size_t c = 0; c < 2; ++c) {
+      const ImVec2 key = layout.legend_at[layout.legend_at.size() - 2 + c];
+      const float text = fonts.fonts.small->FontSize;
+      for (const ImDrawVert& vertex : draw->VtxBuffer) {
+        if (vertex.pos.x < key.x - 1.0f || vertex.pos.x > key.x + 17.0f || vertex.pos.y < key.y || vertex.pos.y > key.y + text) continue;
+        if (vertex.col == chart.theory[c].colour) ++swatch_vertices[c];
+        EXPECT_NE(vertex.col, chart.theory[1 - c].colour) << theme_name(name) << ": key " << c << " drawn in the other's colour";
+      }
+    }
+    ImGui::EndFrame();
+    EXPECT_GT(swatch_vertices[0], 0) << theme_name(name);
+    EXPECT_GT(swatch_vertices[1], swatch_vertices[0]) << theme_name(name) << ": dots are more pieces than dashes";
+  }
 }
 
 }  // namespace

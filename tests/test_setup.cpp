@@ -108,6 +108,33 @@ TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasByTheMenuAndByTheCommandLin
   expect_prepared(from_options, "opened by setup_options");
 }
 
+// A setup's lock greys the Lesson menu's lessons; the menu names the setup, and the line to
+// delete, as the reason (not --lock, which the teacher never typed), by --setup's way and the
+// menu's. A lesson opened from a setup without a lock is not locked.
+TEST(SetupFile, ItsLockIsNamedInTheLessonMenu) {
+  ClassroomHands teacher(prepared());
+  const std::string path = teacher.folder() + "/monday.setup";
+  ASSERT_EQ(teacher.classroom().save_setup(path), "");
+  Classroom opened(setup_options(path, ClassroomOptions{}));
+  const std::string why = opened.lock_words();
+  EXPECT_EQ(why.rfind("Locked by the setup monday.setup", 0), 0u) << why;
+  EXPECT_NE(why.find("delete its lock line (in " + path + ")"), std::string::npos) << why;
+
+  ClassroomOptions plain;
+  plain.lesson = "incline";
+  ClassroomHands hands(plain);
+  EXPECT_EQ(hands.classroom().lock_words(), "");
+  ASSERT_EQ(hands.classroom().open_setup(path), "");
+  hands.frame();
+  hands.click("Lesson menu");
+  EXPECT_NE(hands.texts().find("Locked by the setup monday.setup"), std::string::npos) << "the open menu says it";
+
+  const std::string unlocked = teacher.folder() + "/unlocked.setup";
+  write_file(unlocked, "# FrictionLab setup\nlesson incline\n");
+  ASSERT_EQ(hands.classroom().open_setup(unlocked), "") << "a locked window opens a setup by its API";
+  EXPECT_EQ(hands.classroom().lock_words(), "");
+}
+
 TEST(SetupFile, SavedByTheMenuBesideTheScreenshotsUnderTheLessonsName) {
   ClassroomOptions options;
   options.lesson = "incline";

@@ -193,6 +193,7 @@ struct Key {
   std::string name;
   ImU32 colour;
   enum class Look { line, band, theory } look;
+  float dash = 0.0f, gap = 0.0f;  // a theory curve's pattern
 };
 
 std::vector<Key> keys_of(const Chart& chart) {
@@ -209,7 +210,7 @@ std::vector<Key> keys_of(const Chart& chart) {
     if (!series.name.empty()) keys.push_back({series.name, series.colour, Key::Look::line});
   }
   if (!chart.band_name.empty()) keys.push_back({chart.band_name, chart.band_colour, Key::Look::band});
-  for (const ChartCurve& curve : chart.theory) keys.push_back({curve.name, chart.theory_colour, Key::Look::theory});
+  for (const ChartCurve& curve : chart.theory) keys.push_back({curve.name, curve.colour, Key::Look::theory, curve.dash, curve.gap});
   return keys;
 }
 
@@ -549,15 +550,12 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     const float left = layout.to_screen(x0, 1.0).x, right = layout.to_screen(x1, 1.0).x;
     draw->AddRectFilled(ImVec2(left, high_right.y), ImVec2(std::max(right, left + 1.0f), low_left.y), chart.band_colour);
   }
-  // The theory under the measurements: the branch that applies now bold, the others dashed.
+  // The theory under the measurements, each curve in its own pattern: the branch that applies
+  // now bold.
   for (std::size_t c = 0; c < layout.theory.size(); ++c) {
-    for (const std::vector<ImVec2>& piece : layout.theory[c]) {
-      if (static_cast<int>(c) == layout.active) {
-        draw->AddPolyline(piece.data(), static_cast<int>(piece.size()), chart.theory_colour, ImDrawFlags_None, 3.5f * s);
-      } else {
-        draw_dashed(draw, piece, chart.theory_colour, 1.5f * s, 6.0f * s, 4.0f * s);
-      }
-    }
+    const ChartCurve& curve = chart.theory[c];
+    const float thickness = (static_cast<int>(c) == layout.active ? 3.5f : 1.8f) * s;
+    for (const std::vector<ImVec2>& piece : layout.theory[c]) draw_dashed(draw, piece, curve.colour, thickness, curve.dash * s, curve.gap * s);
   }
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& series = chart.series[k];
@@ -643,7 +641,7 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
       if (key.look == Key::Look::band) {
         draw->AddRectFilled(ImVec2(at.x, at.y + 2), ImVec2(at.x + 16.0f * s, at.y + text - 2), key.colour);
       } else if (key.look == Key::Look::theory) {
-        draw_dashed(draw, {ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle)}, key.colour, 2.0f * s, 5.0f * s, 3.0f * s);
+        draw_dashed(draw, {ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle)}, key.colour, 2.0f * s, key.dash * s, key.gap * s);
       } else {
         draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle), key.colour, 3.0f * s);
       }
@@ -696,6 +694,15 @@ LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, 
     }
   }
   return best;
+}
+
+void give_theory_look(ChartCurve& curve, const Theme& theme, std::size_t index) {
+  // Dots short enough to read as dots beside the dashes, long dashes long enough to read as
+  // longer, even in a legend's 16-point swatch.
+  constexpr float patterns[3][2] = {{6.0f, 4.0f}, {2.0f, 3.0f}, {11.0f, 4.0f}};
+  curve.dash = patterns[index % 3][0];
+  curve.gap = patterns[index % 3][1];
+  curve.colour = theme.theory[index % 2];
 }
 
 int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point) {

@@ -46,7 +46,16 @@ struct ChartCell {
 struct ChartCurve {
   std::string name;
   std::vector<std::vector<std::pair<double, double>>> pieces;
+  // Its own colour and dash pattern (in points at text scale 1), on the plot and in the legend
+  // alike: two laws on one plot (the right one and an article's as written) are told apart.
+  ImU32 colour = 0;
+  float dash = 6.0f, gap = 4.0f;
 };
+
+// The look of a plot's theory curve number `index`: dashes, dots and long dashes in turn, in
+// the theme's theory colours in turn, so that the curves of one plot (up to six) each have
+// one of their own.
+void give_theory_look(ChartCurve& curve, const Theme& theme, std::size_t index);
 
 struct Chart {
   std::string title, x_label, y_label;
@@ -82,12 +91,11 @@ struct Chart {
   bool mark_now = false;
   double now_x = NAN;
   ImU32 now_colour = 0;
-  // Theory curves, drawn dashed in `theory_colour` under the series, the `active` one bold
+  // Theory curves, each drawn in its own look under the series, the `active` one bold
   // (`nearest`: the one passing nearest the first series' last point).
   static constexpr int nearest = -2;
   std::vector<ChartCurve> theory;
   int active_theory = -1;
-  ImU32 theory_colour = 0;
   std::string message;  // drawn in the data area in the theme's `bad` colour (a script error)
 };
 

@@ -28,6 +28,7 @@ std::string lesson_name(const std::string& script_path) { return std::filesystem
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
       lock_(options.lock.begin(), options.lock.end()),
+      lock_from_(options.lock_from),
       overrides_(options.overrides),
       output_folder_(options.output_folder) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen

@@ -41,6 +41,7 @@ struct ClassroomOptions {
   std::map<std::string, std::string> overrides;     // --set
   StepSettings settings;                            // --hz, --substeps, --friction
   std::vector<std::string> lock;                    // --lock: the only controls shown; empty: all
+  std::string lock_from;                            // the setup file that gave the lock; "": --lock
   WindowSettings window;                            // as remembered
   std::string output_folder = ".";                  // screenshots and history exports
   std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
@@ -142,6 +143,8 @@ class Classroom {
   // The Stability map tab's chart as last drawn: the map and this lesson's marks.
   const Chart& stability_chart() const { return stability_.chart; }
   bool shown(const std::string& control_name) const;  // --lock
+  // Why the Lesson menu's lessons are greyed, and how to unlock them; "" when nothing is locked.
+  std::string lock_words() const;
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
   // bodies. The first one, or the one whose strip holds `point`.
   const Camera& world_camera() const { return cameras_.front(); }
@@ -237,6 +240,7 @@ class Classroom {
   WindowSettings window_;
   MeasuringTools tools_;
   std::set<std::string> lock_;
+  std::string lock_from_;  // the setup file the lock came from; "": the command line's --lock
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   const Fonts* fonts_ = nullptr;

@@ -11,17 +11,19 @@
 #include "ui/classroom.h"
 #include "ui/text_boxes.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
 
-// "μs" for a pair's coefficient, the parameter's own name otherwise.
+// "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
 std::string control_label(const lessons::Parameter& parameter) {
-  if (parameter.coefficient == "mu_s") return "\u03bcs static";
-  if (parameter.coefficient == "mu_k") return "\u03bck kinetic";
-  if (parameter.coefficient == "c") return "c viscous";
-  if (parameter.coefficient == "b") return "b quadratic";
-  return parameter.name;
+  const std::string letter = class_words(parameter.coefficient);
+  if (parameter.coefficient == "mu_s") return letter + " static";
+  if (parameter.coefficient == "mu_k") return letter + " kinetic";
+  if (parameter.coefficient == "c") return letter + " viscous";
+  if (parameter.coefficient == "b") return letter + " quadratic";
+  return class_words(parameter.name);
 }
 
 struct Preset {
@@ -51,9 +53,7 @@ const std::vector<Preset>& presets() {
 
 // A pair's coefficient by its letter alone, for two sliders a row.
 std::string coefficient_letter(const lessons::Parameter& parameter) {
-  if (parameter.coefficient == "mu_s") return "\u03bcs";
-  if (parameter.coefficient == "mu_k") return "\u03bck";
-  return parameter.coefficient.empty() ? parameter.name : parameter.coefficient;
+  return class_words(parameter.coefficient.empty() ? parameter.name : parameter.coefficient);
 }
 
 // A combo box's shown choice, left in its frame before the arrow button.

@@ -6,9 +6,24 @@
 
 #include "lessons/runtime/catalog.h"
 #include "ui/classroom.h"
+#include "ui/text_record.h"
 #include "ui/user_lessons.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
+
+std::string Classroom::lock_words() const {
+  if (lock_.empty()) return "";
+  // Nothing in the window unlocks it: the class cannot undo what the teacher prepared.
+  if (!lock_from_.empty()) {
+    return "Locked by the setup " + std::filesystem::path(lock_from_).filename().string() +
+           ", for the class to stay on this lesson. To unlock: delete its lock line (in " + lock_from_ +
+           "), then quit and open the setup again.";
+  }
+  return "Locked by --lock on the command line, for the class to stay on this lesson. To unlock: quit and start "
+         "FrictionLab without --lock.";
+}
+
 void Classroom::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   const bool lesson_menu = ImGui::BeginMenu("Lesson");
@@ -16,6 +31,15 @@ void Classroom::menu_bar() {
   if (lesson_menu) {
     // Under a teacher's lock the class stays on the lesson the teacher chose.
     const bool may_switch = lock_.empty();
+    if (!may_switch) {
+      // Greyed lessons say why, and how the teacher gets them back.
+      const std::string why = lock_words();
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
+      ImGui::TextDisabled("%s", why.c_str());
+      note_text(why.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::Separator();
+    }
     // Titles, with the name to open it by (frictionlab NAME) beside each.
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       const bool current = lesson_name(playback_->lesson().path()) == entry.name;
@@ -111,11 +135,21 @@ void Classroom::menu_bar() {
     ImGui::EndMenu();
   }
   tools_menu();
-  // Which file is running, so a student knows which script to edit.
+  // Which file is running, so a student knows which script to edit: as much of its path as
+  // fits at the right of the bar, never cut (the whole of it under the pointer).
+  // In screen points: the menu bar is laid out as a group, so SameLine's x would be off by
+  // the window's padding.
   const std::string& path = playback_->lesson().path();
-  const float width = ImGui::CalcTextSize(path.c_str()).x;
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - width - 16.0f));
-  ImGui::TextDisabled("%s", path.c_str());
+  const float left = ImGui::GetCursorScreenPos().x + 20.0f;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowWidth() - 16.0f;
+  const std::string shown = path_that_fits(path, right - left);
+  if (!shown.empty()) {
+    ImGui::SameLine();
+    ImGui::SetCursorScreenPos(ImVec2(right - ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetCursorScreenPos().y));
+    ImGui::TextDisabled("%s", shown.c_str());
+    note_text(shown.c_str());
+    if (shown != path && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+  }
   ImGui::EndMainMenuBar();
 }
 

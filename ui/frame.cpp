@@ -8,6 +8,7 @@
 #include "ui/panels.h"
 #include "ui/plots.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 #include "ui/free_body.h"
 #include "ui/legend.h"
 #include "ui/world_view.h"
@@ -380,7 +381,7 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
       // Each lane named (by its body, or the title the lesson gave it) in its corner.
       const std::string lane_name = cameras.size() < 2                  ? ""
                                     : lane < framing.view.titles.size() ? framing.view.titles[lane]
-                                                                        : framing.view.bodies[lane];
+                                                                        : class_words(framing.view.bodies[lane]);
       const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lane_name.c_str());
       const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
       if (!lane_name.empty()) {

@@ -4,6 +4,7 @@
 
 #include "ui/drawing.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 
@@ -13,9 +14,10 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
   draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
   // Shortened when the inset is narrow (large text): the name must show.
-  std::string title = "Free-body diagram: " + name;
+  const std::string body_name = class_words(name);
+  std::string title = "Free-body diagram: " + body_name;
   if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
-    title = name + ", forces";
+    title = body_name + ", forces";
   }
   const ImRect whole(corner, add(corner, size));
   // Its texts noted for the layout test, in the inset's font.

@@ -7,6 +7,7 @@
 
 #include "ui/drawing.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -80,7 +81,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   std::vector<std::pair<ImU32, std::string>> materials;
   for (const auto& [name, body] : scene.bodies()) {
     for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      const std::string& material = material_name(scene, fixture);
+      const std::string material = class_words(material_name(scene, fixture));
       bool listed = false;
       for (const auto& [colour, named] : materials) listed = listed || named == material;
       if (!listed) materials.emplace_back(fixture_colour(scene, fixture, theme), material);

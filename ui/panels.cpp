@@ -9,6 +9,7 @@
 #include "lessons/runtime/model_card.h"
 #include "ui/overlays.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 
@@ -62,11 +63,8 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
 }
 
 std::string parameter_title(const lessons::Parameter& parameter) {
-  if (parameter.coefficient.empty()) return parameter.name;
-  const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
-                             : parameter.coefficient == "mu_k" ? "\u03bck"
-                                                               : parameter.coefficient;
-  return letter + "  " + parameter.material_a + " / " + parameter.material_b;
+  if (parameter.coefficient.empty()) return class_words(parameter.name);
+  return class_words(parameter.coefficient) + "  " + parameter.material_a + " / " + parameter.material_b;
 }
 
 std::string pair_of(const lessons::Parameter& parameter) {
@@ -89,9 +87,7 @@ std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, 
     if (pair_of(parameter) != pair || (parameter.value == 0.0 && (parameter.coefficient == "c" || parameter.coefficient == "b"))) {
       continue;
     }
-    const std::string letter = parameter.coefficient == "mu_s"   ? "\u03bcs"
-                               : parameter.coefficient == "mu_k" ? "\u03bck"
-                                                                 : parameter.coefficient;
+    const std::string letter = class_words(parameter.coefficient);
     // Without units: the sliders, one arrow away, have them.
     char value[32];
     std::snprintf(value, sizeof value, "%g", parameter.value);
@@ -175,8 +171,10 @@ struct TheoryCells {
   struct Cells {
     std::string theory, measured, error;
     bool measured_yet, passes, hand_pulled;
+    int error_lines = 1;  // 2: the error's unit under its number
   };
   std::vector<Cells> cells;
+  std::string error_heading;  // "error", or "error (N)" when every numeric row is in newtons
   float widest[3];
   float numbers() const { return widest[0] + widest[1] + widest[2] + 6.0f * ImGui::GetStyle().CellPadding.x; }
   // Beside the numbers, a name needs room for a word or two; with large text in a narrow
@@ -184,10 +182,46 @@ struct TheoryCells {
   bool names_above(float table_width) const { return table_width - numbers() < 9.0f * ImGui::CalcTextSize("m").x; }
 };
 
-TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden) {
-  TheoryCells table{{}, {ImGui::CalcTextSize("theory").x, ImGui::CalcTextSize("measured").x,
-                         ImGui::CalcTextSize("error").x}};
+// The unit every numeric row shares, "" when they have none or differ.
+std::string shared_unit(const std::vector<lessons::ExpectationResult>& rows) {
+  std::string unit;
+  bool first = true;
+  for (const lessons::ExpectationResult& row : rows) {
+    if (!row.numeric) continue;
+    if (!first && row.unit != unit) return "";
+    unit = row.unit;
+    first = false;
+  }
+  return unit;
+}
+
+// ImGui's row of column headings (as TableHeadersRow draws it), each heading noted, so the
+// layout test sees one its column cuts.
+void noted_headers(int columns) {
+  ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+  for (int column = 0; column < columns; ++column) {
+    if (!ImGui::TableSetColumnIndex(column)) continue;
+    const char* name = ImGui::TableGetColumnName(column);
+    const ImVec2 start = ImGui::GetCursorScreenPos();
+    ImGui::PushID(column);
+    ImGui::TableHeader(name);
+    ImGui::PopID();
+    // The heading is drawn from the cursor up to its cell's right edge.
+    if (*name != '\0') note_text_in(name, start, ImRect(start, ImGui::GetItemRectMax()));
+  }
+}
+
+// The table's cells for a table `width` wide.
+TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden, float width) {
+  // The error's unit: once in the heading when every row has it (the cells stay narrow and the
+  // names keep their room), else in each cell, after the number, or under it in a cell that
+  // would not fit across the table with it beside (projector text).
+  const std::string unit_for_all = shared_unit(rows);
+  TheoryCells table{{}, unit_for_all.empty() ? "error" : "error (" + unit_for_all + ")", {}};
   float* widest = table.widest;
+  widest[0] = ImGui::CalcTextSize("theory").x;
+  widest[1] = ImGui::CalcTextSize("measured").x;
+  widest[2] = ImGui::CalcTextSize(table.error_heading.c_str()).x;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
                             row.measured_yet, row.passes, row.hand_pulled && !row.passes};
@@ -197,10 +231,10 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
       if (predictions_hidden) {
         cell.error = "";  // measured minus predicted would give the prediction away
       } else if (row.numeric) {
-        // The unit is in the columns beside it; here it would push the names into wrapping.
         std::string number = with_unit(row.error(), "");
         number.pop_back();
         cell.error = (row.passes ? "\u2713 " : "\u2717 ") + std::string(row.error() > 0.0 ? "+" : "") + number;
+        if (unit_for_all.empty() && !row.unit.empty()) cell.error += " " + row.unit;
       } else {
         cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
       }
@@ -209,8 +243,17 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
     }
     widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.theory.c_str()).x);
     widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
-    widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
     table.cells.push_back(std::move(cell));
+  }
+  const float room = width - widest[0] - widest[1] - 6.0f * ImGui::GetStyle().CellPadding.x;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    TheoryCells::Cells& cell = table.cells[i];
+    if (ImGui::CalcTextSize(cell.error.c_str()).x > room && unit_for_all.empty() && !rows[i].unit.empty() &&
+        cell.error.size() > rows[i].unit.size() + 1 && rows[i].numeric && !cell.hand_pulled) {
+      cell.error[cell.error.size() - rows[i].unit.size() - 1] = '\n';
+      cell.error_lines = 2;
+    }
+    widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
   }
   return table;
 }
@@ -245,11 +288,11 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       note_text(none);
       return;
     }
-    const TheoryCells table = theory_cells(rows, predictions_hidden);
+    const float table_width = ImGui::GetContentRegionAvail().x;
+    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width);
     const std::vector<TheoryCells::Cells>& cells = table.cells;
     const float* widest = table.widest;
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
-    const float table_width = ImGui::GetContentRegionAvail().x;
     const bool names_above = table.names_above(table_width);
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
     // A name above its numbers spans the row: the cells must not clip it.
@@ -259,14 +302,14 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
         ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
         ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
-        ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
       } else {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("theory");
         ImGui::TableSetupColumn("measured");
-        ImGui::TableSetupColumn("error");
+        ImGui::TableSetupColumn(table.error_heading.c_str());
       }
-      ImGui::TableHeadersRow();
+      noted_headers(names_above ? 3 : 4);
       for (std::size_t i = 0; i < rows.size(); ++i) {
         const TheoryCells::Cells& cell = cells[i];
         ImGui::TableNextRow();
@@ -316,15 +359,16 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
   if (rows.empty()) return height + font + style.ItemSpacing.y;
-  const TheoryCells table = theory_cells(rows, predictions_hidden);
+  const TheoryCells table = theory_cells(rows, predictions_hidden, width);
   const bool above = table.names_above(width);
   const float padding = 2.0f * style.CellPadding.x;
   // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.
   const float name_width = above ? width - padding : std::max(1.0f, width - table.numbers() - padding);
   height += font + row_padding;  // the headers
-  for (const lessons::ExpectationResult& row : rows) {
-    height += ImGui::CalcTextSize(row.name.c_str(), nullptr, false, name_width).y + row_padding;
-    if (above) height += font + row_padding;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const float name = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, name_width).y;
+    const float numbers = static_cast<float>(table.cells[i].error_lines) * font;
+    height += above ? name + numbers + 2.0f * row_padding : std::max(name, numbers) + row_padding;
   }
   return height + style.ItemSpacing.y;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ui/words.h"
+
 namespace frictionlab::ui {
 namespace {
 
@@ -38,10 +40,16 @@ Range range_of(const std::vector<const std::vector<double>*>& series, std::size_
   return {low < 0.0 || !include_zero ? std::max(low - margin, -largest) : low, std::min(high + margin, largest)};
 }
 
+// A probe as the class reads it: the script's label for it, else its name in words.
+std::string probe_words(const lessons::Lesson& lesson, const std::string& probe) {
+  const std::string& label = lesson.probe_label(probe);
+  return label.empty() ? class_words(probe) : label;
+}
+
 std::string axis_title(const lessons::Lesson& lesson, const std::string& quantity) {
   if (quantity == "time") return "time (s)";
   const std::string& unit = lesson.probe_unit(quantity);
-  return unit.empty() ? quantity : quantity + " (" + unit + ")";
+  return unit.empty() ? probe_words(lesson, quantity) : probe_words(lesson, quantity) + " (" + unit + ")";
 }
 
 // Theory curves are sampled over the x range widened to whole tick steps, so that a range
@@ -95,7 +103,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     ChartSeries series;
     const std::string& unit = lesson.probe_unit(plot.y[k]);
-    if (plot.y.size() > 1 || over_time) series.name = plot.y[k] + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
+    if (plot.y.size() > 1 || over_time) series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
     series.colour = theme.series[k % 4];
     series.points.reserve(count);
     for (std::size_t i = 0; i < count; ++i) series.points.push_back({(*xs[k])[i], (*ys[k])[i]});
@@ -137,6 +145,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
       for (std::size_t c = 0; c < samples.curves.size(); ++c) {
         ChartCurve curve;
         curve.name = plot.theory[c].label;
+        give_theory_look(curve, theme, c);
         for (const auto& piece : samples.curves[c]) {
           curve.pieces.emplace_back();
           for (const lessons::TheoryPoint& p : piece) {
@@ -157,7 +166,6 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
       theory_values.clear();
       chart.message = error.what();  // the lesson itself runs on
     }
-    chart.theory_colour = theme.theory;
   }
   Range y_range = range_of(ys, count, true);
   if (!theory_values.empty()) {

@@ -371,6 +371,7 @@ ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions b
   base.overrides.clear();
   for (const PreparedSetup::Value& value : setup.values) base.overrides[value.name] = value.text;
   base.lock = setup.lock;
+  base.lock_from = setup.lock.empty() ? "" : setup_path;
   base.mystery = setup.mystery;
   base.settings = setup.settings;
   base.predictions = ClassPredictions{};

@@ -16,6 +16,7 @@ std::string Classroom::open_setup(const std::string& path) {
     playback_ = std::move(next);
     mystery_ = std::move(mystery);
     lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
+    lock_from_ = options.lock_from;
     // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
     predictions_ = options.predictions;
     window_.predictions = options.window.predictions;

@@ -69,7 +69,8 @@ Theme make_light() {
   t.series[1] = IM_COL32(220, 70, 0, 255);
   t.series[2] = IM_COL32(0, 140, 70, 255);
   t.series[3] = IM_COL32(130, 50, 170, 255);
-  t.theory = IM_COL32(90, 90, 100, 255);
+  t.theory[0] = IM_COL32(90, 90, 100, 255);    // grey
+  t.theory[1] = IM_COL32(150, 95, 20, 255);    // ochre: no series, force or contact state has it
   t.good = IM_COL32(0, 130, 60, 255);
   t.bad = IM_COL32(200, 20, 20, 255);
   t.imgui_text = rgb(20, 20, 24);
@@ -111,7 +112,8 @@ Theme make_dark() {
   t.series[1] = IM_COL32(255, 130, 60, 255);
   t.series[2] = IM_COL32(70, 210, 130, 255);
   t.series[3] = IM_COL32(200, 140, 255, 255);
-  t.theory = IM_COL32(190, 190, 200, 255);
+  t.theory[0] = IM_COL32(190, 190, 200, 255);
+  t.theory[1] = IM_COL32(225, 175, 80, 255);
   t.good = IM_COL32(90, 220, 130, 255);
   t.bad = IM_COL32(255, 90, 90, 255);
   t.imgui_text = rgb(236, 236, 236);

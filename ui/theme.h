@@ -27,7 +27,8 @@ struct Theme {
   ImU32 force[force_kind_count];
   ImU32 sticking, slipping, slip_band, now_marker;
   ImU32 series[4];
-  ImU32 theory;  // a law drawn beside the measurements (plots' theory curves)
+  // Laws drawn beside the measurements (plots' theory curves): a plot's curves take them in turn.
+  ImU32 theory[2];
   ImU32 good, bad;
   ImVec4 imgui_text, imgui_window, imgui_title, imgui_border, imgui_header;
 };

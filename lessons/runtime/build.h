@@ -27,6 +27,7 @@ struct ProbeInfo {
   int function = LUA_NOREF;  // LUA_NOREF: read by the runtime itself (probe{ read = ... })
   std::string what;    // "probe 'name'", made once for error messages
   double value = 0.0;  // measured after the latest frame
+  std::string label;   // probe{ label = ... }: what plots call it; "" leaves it to the window
 };
 
 // Each part is a Lua value kept in the registry: a constant or a function to call.

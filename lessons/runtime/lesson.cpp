@@ -324,6 +324,13 @@ const std::string& Lesson::probe_unit(const std::string& probe) const {
   throw InvalidInput("no probe '" + probe + "' in " + path_);
 }
 
+const std::string& Lesson::probe_label(const std::string& probe) const {
+  for (const ProbeInfo& info : current_->probes) {
+    if (info.name == probe) return info.label;
+  }
+  throw InvalidInput("no probe '" + probe + "' in " + path_);
+}
+
 void Lesson::step_to(double t) {
   while (scene().time() + 0.5 * scene().frame_step() < t) step();
 }

@@ -182,6 +182,9 @@ class Lesson {
   const std::vector<std::string>& warnings() const;
   // Probes with the unit the script gave them, in the order declared.
   const std::string& probe_unit(const std::string& probe) const;
+  // What the script calls the probe for the class (probe{ label = ... }), "" when it gives no
+  // label (the window then says its name in words).
+  const std::string& probe_label(const std::string& probe) const;
 
   // One frame: the scene's step, then the script's every-step functions. A script error stops
   // the lesson (failed() is true until a rebuild) and is thrown as ScriptError.

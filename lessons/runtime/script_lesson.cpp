@@ -488,10 +488,11 @@ int probe(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "probe");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay"});
+    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay", "label"});
     const std::string name = fields.name();
     if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
     const std::string unit = fields.text("unit", "");
+    const std::string label = fields.text("label", "");
     const size_t index = build.probes.size();
     lua_rawgeti(state, 1, 2);
     const bool has_function = !lua_isnil(state, -1);
@@ -513,14 +514,14 @@ int probe(lua_State* state) {
       const double every = fields.number_in("every", "s", 0.0, 1e6, true);
       const double delay = fields.number_in("delay", "s", 0.0, 0.0, 1e6);
       build.scene->add_probe(name, sampled_reading(build, reference, every, delay, fields.what()));
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label});
       return 0;
     }
     if (fields.has("read")) {
       fields.push("read");
       build.scene->add_probe(name, reading(state, -1, fields.what()));
       lua_pop(state, 1);
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label});
       return 0;
     }
     lua_rawgeti(state, 1, 2);
@@ -533,7 +534,7 @@ int probe(lua_State* state) {
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
     build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
-    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0});
+    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label});
     build.lua_probes = true;
     return 0;
   });
