@@ -135,7 +135,7 @@ local function off_the_floor()
 end
 -- After the top block slips: when it has slid slip_room back, or (first) when the bottom block
 -- racing ahead would lift the front; and which of the two came first.
-local function slipping_until()
+local function slipping_from_scratch()
   local t, lag, lag_speed = slip_pull() / param.pull_rate, 0, 0
   local step = 1e-3
   for _ = 1, 2000 do
@@ -146,6 +146,17 @@ local function slipping_until()
     t = t + step
   end
   return t, false
+end
+local slipping_known = {}  -- the last answer, and the values it was worked out for
+local function slipping_until()
+  -- Asked many times over by the rows and the run's end: worked out again only when a value
+  -- changed (the pairs' sliders change the running lesson).
+  local values = table.concat({ param.top_mass, param.bottom_mass, param.pull_rate, param["top_on_bottom.mu_s"],
+    param["top_on_bottom.mu_k"], param["bottom_on_floor.mu_s"], param["bottom_on_floor.mu_k"] }, " ")
+  if slipping_known.values == values then return slipping_known.t, slipping_known.lifts end
+  local t, lifts = slipping_from_scratch()
+  slipping_known = { values = values, t = t, lifts = lifts }
+  return t, lifts
 end
 -- When the front lifts while the theory still has something to show (nil: it does not). Moving
 -- as one on the floor; or right as the top block slips, before its slipping can be read (3
