@@ -3,12 +3,12 @@
 -- its coefficients drop and then come back. In each stretch they are constant, and the block
 -- does what Coulomb's law says with the values of that stretch: held while the pull is at most
 -- mu_s·N, sliding at a = (pull − mu_k·N)/m otherwise, and, slowed on the dry table again, it
--- stops and sticks. The pair's coefficients here are functions of time, asked at the start of
--- every step.
+-- stops and sticks. The pair's coefficients here change with time (a schedule of values), read
+-- at the start of every step.
 
 -- When the oil comes and goes (no oil if lubricated_until is not after lubricated_from): set
 -- below from the parameters, which restart the lesson when they change, so the pair's
--- functions, asked every step, and theory read the same two numbers.
+-- schedules and theory read the same two numbers.
 local oil_from, oil_gone
 local function oiled(t) return t >= oil_from and t < oil_gone end
 -- The coefficients change at the start of the first world step at or after each instant: the
@@ -70,11 +70,16 @@ local lubricated_until = parameter { "lubricated_until", 2, min = 0, max = 10, u
 
 oil_from, oil_gone = lubricated_from, math.max(lubricated_from, lubricated_until)
 
--- The pair's coefficients as functions of time: the oiled values while oiled. No sliders of
--- its own (the parameters above set it), and no drag, which the closed form leaves out.
-pair { "wood", "wood", sliders = false,
-  mu_s = function(t) if oiled(t) then return lubricated_mu end return mu_s end,
-  mu_k = function(t) if oiled(t) then return lubricated_mu end return mu_k end }
+-- The pair's coefficients change with time: the oiled values while oiled. Each is a schedule,
+-- { { time, value }, ... }, from each time on its value: the same as the function
+--   function(t) if oiled(t) then return lubricated_mu end return mu_s end
+-- which the runtime would call every step, a quarter of this lesson's time; the schedule it
+-- reads itself. No sliders of its own (the parameters above set it), and no drag, which the
+-- closed form leaves out.
+local function while_oiled(dry, oiled_value)
+  return { { 0, dry }, { oil_from, oiled_value }, { oil_gone, dry } }
+end
+pair { "wood", "wood", sliders = false, mu_s = while_oiled(mu_s, lubricated_mu), mu_k = while_oiled(mu_k, lubricated_mu) }
 
 -- World -----------------------------------------------------------------------------------
 local table_top = ground { "table", material = "wood" }

@@ -1,9 +1,11 @@
 // What the runtime works out itself each step, without a call into the script: a driven body's
-// path given as numbers (a motion), a position read in another body's axes (relative_to), and a
-// probe that reads a list of samples a model worked out once. Each is checked against the
+// path given as numbers (a motion), a position read in another body's axes (relative_to), a
+// probe that reads a list of samples a model worked out once, and a pair's coefficient given
+// as a schedule. Each is checked against the
 // formula it stands for and against the script function it replaces.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -196,6 +198,65 @@ TEST(ScriptFreeReadings, SamplesThatAreNotAListOfNumbersStopTheLessonSayingWhere
   EXPECT_NE(stopped("probe { \"p\", samples = function(t) return { 1 } end, every = 1, function() return 1 end }\n")
                 .find("not two"),
             std::string::npos);
+}
+
+// A block pulled across a floor oiled from 0.5 s to 1.2 s: its coefficients as schedules and as
+// the same functions of time give the same run, step for step, and the pair holds each value
+// from its time on (the last one given for a time counts).
+TEST(ScriptFreeReadings, ACoefficientsScheduleIsTheSameRunAsTheFunctionOfTime) {
+  const std::string world = R"(
+local floor = ground { "floor", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1 }
+force { "pull", on = block, force = { 3, 0 } }
+)";
+  ScriptFile as_schedule(with_heading(R"(
+pair { "wood", "wood", sliders = false, mu_s = { { 0, 0.5 }, { 0.5, 0.1 }, { 1.2, 0.5 } },
+       mu_k = { { 0, 0.45 }, { 0, 0.4 }, { 0.5, 0.08 }, { 1.2, 0.4 } } }
+)" + world));
+  ScriptFile as_function(with_heading(R"(
+local function oiled(t) return t >= 0.5 and t < 1.2 end
+pair { "wood", "wood", sliders = false, mu_s = function(t) return oiled(t) and 0.1 or 0.5 end,
+       mu_k = function(t) return oiled(t) and 0.08 or 0.4 end }
+)" + world));
+  Lesson scheduled(as_schedule.path()), called(as_function.path());
+  const auto coefficients = [](const Lesson& lesson) {
+    const FrictionPair& pair = lesson.scene().pairs().pair("wood", "wood");
+    return std::array<double, 2>{pair.mu_s, pair.mu_k};
+  };
+  EXPECT_EQ(coefficients(scheduled), (std::array<double, 2>{0.5, 0.4}));  // { 0, 0.4 } came last for t = 0
+  const double h = 1.0 / 240.0;
+  bool slid = false;
+  for (int k = 0; k < 480; ++k) {
+    scheduled.step();
+    called.step();
+    ASSERT_EQ(scheduled.scene().body("block")->GetPosition().x, called.scene().body("block")->GetPosition().x) << "step " << k;
+    ASSERT_EQ(coefficients(scheduled), coefficients(called)) << "step " << k;
+    // The values of the sub-step that starts at k·h.
+    const double started = k * h;
+    const bool oiled = started >= 0.5 - 1e-12 && started < 1.2 - 1e-12;
+    EXPECT_EQ(coefficients(scheduled), (oiled ? std::array<double, 2>{0.1, 0.08} : std::array<double, 2>{0.5, 0.4}))
+        << "at " << started << " s";
+    slid = slid || std::abs(scheduled.scene().body("block")->GetLinearVelocity().x) > 0.1f;
+  }
+  EXPECT_TRUE(slid) << "the pull of 3 N never moved the block on the oiled stretch";
+}
+
+TEST(ScriptFreeReadings, AScheduleThatIsNotOneSaysWhereAndWhy) {
+  const auto refused = [](const std::string& schedule) {
+    ScriptFile script(with_heading("pair { \"wood\", \"wood\", sliders = false, mu_s = 0.5, mu_k = " + schedule + " }\n"));
+    return error_of([&] { Lesson lesson(script.path()); });
+  };
+  const std::string late = refused("{ { 1, 0.4 } }");
+  EXPECT_NE(late.find(":2: pair wood/wood: mu_k: a schedule is a list of { time, value } pairs"), std::string::npos) << late;
+  EXPECT_NE(late.find("entry 1 starts at t = 1 s, not 0"), std::string::npos) << late;
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 2, 0.1 }, { 1, 0.4 } }").find("entry 3 goes back in time, to 1 s after 2 s"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1, 3 } }").find("mu_k: entry 2 of the schedule is 3; it must be in [0, 2]"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1 } }").find("entry 2 is a table"), std::string::npos);
+  EXPECT_NE(refused("{ 0, 0.4 }").find("entry 1 is the number 0"), std::string::npos);
+  EXPECT_NE(refused("{}").find("1 to 10000 of them"), std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1e6, 0.1 } }").find("past a day"), std::string::npos);
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 // plot is drawn every frame, and the law it shows does not change with the frame.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "lessons/runtime/build.h"
 
@@ -24,12 +23,6 @@ struct SamplingJob {
   int count = 2;
   TheorySamples* out = nullptr;
 };
-
-std::string number_text(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 Sample evaluate(lua_State* state, LessonBuild& build, std::size_t plot, std::size_t curve, double x) {
   const int reference = build.plot_functions[plot].curves[curve];

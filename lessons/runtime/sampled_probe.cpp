@@ -4,7 +4,6 @@
 // and a lesson that reads six lists a step through functions spends most of its time there.
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include "lessons/runtime/build.h"
@@ -22,12 +21,6 @@ struct SampledList {
   std::string what;
 };
 
-std::string seconds(double t) {
-  std::ostringstream text;
-  text << t;
-  return text.str();
-}
-
 // Asks the function for the list again, for a run that has reached `t`, and copies it out,
 // each entry checked once here rather than at every read.
 void refresh(LessonBuild& build, SampledList& list, double t) {
@@ -37,7 +30,7 @@ void refresh(LessonBuild& build, SampledList& list, double t) {
     const std::string got = describe(state, -1);
     lua_pop(state, 1);
     throw ScriptError(build.defined_at(list.function) + ": " + list.what + ": samples must return a list of numbers "
-                      "(the values at t = 0, every, 2·every, ...); at t = " + seconds(t) + " s it returned " + got);
+                      "(the values at t = 0, every, 2·every, ...); at t = " + number_text(t) + " s it returned " + got);
   }
   const auto length = static_cast<lua_Integer>(lua_rawlen(state, -1));
   list.final = length <= static_cast<lua_Integer>(list.values.size());

@@ -393,6 +393,12 @@ void Sandbox::call(int arguments, int results) {
   throw ScriptError(full_path(message));
 }
 
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 std::string describe(lua_State* state, int index) {
   switch (lua_type(state, index)) {
     case LUA_TNONE:

@@ -118,5 +118,7 @@ int guarded(lua_State* state, Body&& body) {
 
 // Names a Lua value's type the way error messages speak: "a number", "nil", "a table".
 std::string describe(lua_State* state, int index);
+// A number as an error message shows it: 0.1, 2.5e-07, inf (the stream's shortest form).
+std::string number_text(double value);
 
 }  // namespace frictionlab::lessons

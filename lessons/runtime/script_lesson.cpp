@@ -274,9 +274,47 @@ namespace {
 // A pair's coefficient that is a function of time, and which of mu_s, mu_k, c, b it is.
 struct TimedCoefficient {
   int slot;       // index into `coefficients`
-  int reference;  // the function, in the registry
+  int reference;  // the function, in the registry; LUA_NOREF for a schedule
   std::function<std::array<double, 2>(double)> at;
+  std::string declared_at;  // "path:line" of the pair, for a schedule's errors
 };
+
+// A coefficient's schedule, { { t0, v0 }, { t1, v1 }, ... }: from each time on, its value (the
+// last one given for a time counts). A lubricated stretch as numbers: the runtime reads it each
+// sub-step without calling the script, where a function costs a call into Lua every sub-step.
+std::vector<std::array<double, 2>> read_schedule(lua_State* state, int index, const std::string& what, double max) {
+  const std::string form = what + ": a schedule is a list of { time, value } pairs from time 0 on, as in "
+                                  "{ { 0, 0.5 }, { 1, 0.1 }, { 2, 0.5 } }";
+  std::vector<std::array<double, 2>> steps;
+  const lua_Integer count = static_cast<lua_Integer>(lua_rawlen(state, index));
+  if (count == 0 || count > 10000) throw InvalidInput(form + " (1 to 10000 of them); got " + describe(state, index));
+  for (lua_Integer k = 1; k <= count; ++k) {
+    lua_rawgeti(state, index, k);
+    std::array<double, 2> step{NAN, NAN};
+    const bool pair = lua_istable(state, -1) && lua_rawlen(state, -1) == 2;
+    for (int i = 0; pair && i < 2; ++i) {
+      lua_rawgeti(state, -1, i + 1);
+      if (lua_type(state, -1) == LUA_TNUMBER) step[static_cast<std::size_t>(i)] = lua_tonumber(state, -1);
+      lua_pop(state, 1);
+    }
+    const std::string got = describe(state, -1);
+    lua_pop(state, 1);
+    const std::string entry = "; entry " + std::to_string(k);
+    if (!std::isfinite(step[0]) || !std::isfinite(step[1])) throw InvalidInput(form + entry + " is " + got);
+    if (k == 1 && step[0] != 0.0) throw InvalidInput(form + entry + " starts at t = " + number_text(step[0]) + " s, not 0");
+    if (k > 1 && step[0] < steps.back()[0]) {
+      throw InvalidInput(form + entry + " goes back in time, to " + number_text(step[0]) + " s after " +
+                         number_text(steps.back()[0]) + " s");
+    }
+    if (step[0] > 86400.0) throw InvalidInput(form + entry + ": time " + number_text(step[0]) + " s is past a day (86400 s)");
+    if (step[1] < 0.0 || step[1] > max) {
+      throw InvalidInput(what + ": entry " + std::to_string(k) + " of the schedule is " + number_text(step[1]) +
+                         "; it must be in [0, " + number_text(max) + "]");
+    }
+    steps.push_back(step);
+  }
+  return steps;
+}
 
 // The coefficient's value at t, within its slider's range, or an error placed at the function.
 double timed_value(LessonBuild& build, const TimedCoefficient& coefficient, const std::string& label, double t) {
@@ -284,7 +322,7 @@ double timed_value(LessonBuild& build, const TimedCoefficient& coefficient, cons
   const Coefficient& which = coefficients[coefficient.slot];
   if (value >= 0.0 && value <= which.max) return value;
   std::ostringstream message;
-  message << build.defined_at(coefficient.reference) << ": pair " << label << ": " << which.key << " returned " << value
+  message << (coefficient.reference == LUA_NOREF ? coefficient.declared_at : build.defined_at(coefficient.reference)) << ": pair " << label << ": " << which.key << " returned " << value
           << " at t = " << t << " s; it must be in [0, " << which.max << "]";
   throw ScriptError(message.str());
 }
@@ -393,10 +431,24 @@ int pair(lua_State* state) {
       if (fields.push_function(coefficients[i].key)) {  // (like = with any coefficient is refused above)
         const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
         const std::string what = "pair " + label + ": " + coefficients[i].key + " (t -> a number)";
-        timed.push_back({i, reference, function_of_time(build, reference, 1, what)});
+        timed.push_back({i, reference, function_of_time(build, reference, 1, what), ""});
         *slots[i] = timed_value(build, timed.back(), label, 0.0);
         continue;
       }
+      fields.push(coefficients[i].key);
+      if (lua_istable(state, -1)) {
+        auto steps = read_schedule(state, -1, "pair " + label + ": " + coefficients[i].key, coefficients[i].max);
+        lua_pop(state, 1);
+        const auto at = [steps = std::move(steps)](double t) {
+          std::size_t k = steps.size() - 1;
+          while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
+          return std::array<double, 2>{steps[k][1], 0.0};
+        };
+        timed.push_back({i, LUA_NOREF, at, caller(state)});
+        *slots[i] = timed_value(build, timed.back(), label, 0.0);
+        continue;
+      }
+      lua_pop(state, 1);
       *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
     }
     // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
