@@ -590,7 +590,7 @@ local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = 
 pair { "wood", "wood", mu_s = 0.5, mu_k = function(t) return 0.3 end, sliders = { "mu_k" } }
 )"));
   const std::string refused = error_of([&] { Lesson broken(listed.path()); });
-  EXPECT_NE(refused.find(":3: pair wood/wood: mu_k is a function of time, which no slider can set"), std::string::npos)
+  EXPECT_NE(refused.find(":3: pair wood/wood: mu_k changes with time (a function or a schedule), which no slider can set"), std::string::npos)
       << refused;
 }
 

@@ -253,8 +253,13 @@ TEST(ScriptFreeReadings, AScheduleThatIsNotOneSaysWhereAndWhy) {
             std::string::npos);
   EXPECT_NE(refused("{ { 0, 0.4 }, { 1, 3 } }").find("mu_k: entry 2 of the schedule is 3; it must be in [0, 2]"),
             std::string::npos);
-  EXPECT_NE(refused("{ { 0, 0.4 }, { 1 } }").find("entry 2 is a table"), std::string::npos);
-  EXPECT_NE(refused("{ 0, 0.4 }").find("entry 1 is the number 0"), std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1 } }").find("entry 2 must be two numbers, { time, value }; it is a table"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1, \"x\" } }").find("entry 2 must be two numbers, { time, value }; it is a pair that is not"),
+            std::string::npos);
+  EXPECT_NE(refused("{ 0, 0.4 }").find("entry 1 must be two numbers, { time, value }; it is the number 0"), std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 } }, sliders = { \"mu_k\" }").find("mu_k changes with time (a function or a schedule)"),
+            std::string::npos);
   EXPECT_NE(refused("{}").find("1 to 10000 of them"), std::string::npos);
   EXPECT_NE(refused("{ { 0, 0.4 }, { 1e6, 0.1 } }").find("past a day"), std::string::npos);
 }

@@ -104,10 +104,13 @@ class Playback {
   void apply_due();
   void record(Action action);
   void step_and_check();
+  // What is wrong with the simulation (a value that is not a number, a body flown off, energy
+  // from nowhere); "" when the state is sound.
   std::string health() const;
   // A moving body that has fallen more than a metre below every fixed and driven body, so
-  // that nothing can catch it any more, and was not named yet: its name, or empty.
-  std::string newly_fallen() const;  // "" when the state is sound
+  // that nothing can catch it any more, and was not named yet in this run: its name, or "".
+  // Once a run: going back with the time bar and playing the fall again does not pause again.
+  std::string newly_fallen() const;
   long frame() const { return lesson_->scene().frame(); }
 
   std::unique_ptr<lessons::Lesson> lesson_;

@@ -167,6 +167,8 @@ class Lesson {
   // parameters, first): true when it shows what its name says, nullopt when it has no such
   // function. Throws ScriptError when the function fails or returns anything but a boolean.
   std::optional<bool> shows(const std::string& moment);
+  // The settings the lesson was given. The scene's own (scene().settings()) are those in force:
+  // a lesson may ask for fewer solver passes (lesson{ velocity_iterations = 4 }).
   const StepSettings& settings() const { return settings_; }
 
   // The scene, parameters, plots and ropes belong to the current build: set() on a structural

@@ -297,10 +297,13 @@ std::vector<std::array<double, 2>> read_schedule(lua_State* state, int index, co
       if (lua_type(state, -1) == LUA_TNUMBER) step[static_cast<std::size_t>(i)] = lua_tonumber(state, -1);
       lua_pop(state, 1);
     }
-    const std::string got = describe(state, -1);
+    const std::string got = pair ? "{ " + number_text(step[0]) + ", " + number_text(step[1]) + " }" : describe(state, -1);
     lua_pop(state, 1);
     const std::string entry = "; entry " + std::to_string(k);
-    if (!std::isfinite(step[0]) || !std::isfinite(step[1])) throw InvalidInput(form + entry + " is " + got);
+    if (!std::isfinite(step[0]) || !std::isfinite(step[1])) {
+      throw InvalidInput(form + entry + " must be two numbers, { time, value }; it is " +
+                         (pair ? "a pair that is not two finite numbers" : got));
+    }
     if (k == 1 && step[0] != 0.0) throw InvalidInput(form + entry + " starts at t = " + number_text(step[0]) + " s, not 0");
     if (k > 1 && step[0] < steps.back()[0]) {
       throw InvalidInput(form + entry + " goes back in time, to " + number_text(step[0]) + " s after " +
@@ -503,7 +506,7 @@ int pair(lua_State* state) {
         for (const TimedCoefficient& coefficient : timed) {
           if (only.count(coefficients[coefficient.slot].key) > 0) {
             throw InvalidInput("pair " + label + ": " + coefficients[coefficient.slot].key +
-                               " is a function of time, which no slider can set; leave it out of sliders");
+                               " changes with time (a function or a schedule), which no slider can set; leave it out of sliders");
           }
         }
       } else {
@@ -517,7 +520,7 @@ int pair(lua_State* state) {
       for (const TimedCoefficient& coefficient : timed) only.erase(coefficients[coefficient.slot].key);
       with_sliders = !only.empty();
       if (!with_sliders) {
-        if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with every coefficient a function of time it has none");
+        if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with every coefficient changing with time it has none");
         build.fixed_pairs.emplace_back(names[0], names[1]);
       }
     }
