@@ -169,7 +169,8 @@ end
 -- starts to lift (at the first millisecond of the integration past the moment's zero).
 local function tips_at()
   if no_theory() or off_the_floor() then return nil end
-  if tipping_time() then return tipping_time() end
+  local together = tipping_time()
+  if together then return together end
   local t, lifts = slipping_until()
   if lifts and t < slip_pull() / param.pull_rate + 3 * step_length() then return t end
 end

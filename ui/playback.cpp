@@ -214,19 +214,12 @@ std::string Playback::newly_fallen() const {
   const Scene& scene = lesson_->scene();
   float lowest = INFINITY;  // the lowest point of any fixed or driven body
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() == b2_dynamicBody) continue;
-    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      lowest = std::min(lowest, fixture->GetAABB(0).lowerBound.y);
-    }
+    if (body->GetType() != b2_dynamicBody) lowest = std::min(lowest, body_box(body).lowerBound.y);
   }
   if (!std::isfinite(lowest)) return "";  // nothing to fall off
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || std::find(fallen_.begin(), fallen_.end(), name) != fallen_.end()) continue;
-    float highest = -INFINITY;
-    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      highest = std::max(highest, fixture->GetAABB(0).upperBound.y);
-    }
-    if (highest < lowest - 1.0f) return name;
+    if (body_box(body).upperBound.y < lowest - 1.0f) return name;
   }
   return "";
 }

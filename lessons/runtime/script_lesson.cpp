@@ -273,10 +273,9 @@ namespace {
 
 // A pair's coefficient that is a function of time, and which of mu_s, mu_k, c, b it is.
 struct TimedCoefficient {
-  int slot;       // index into `coefficients`
-  int reference;  // the function, in the registry; LUA_NOREF for a schedule
+  int slot;  // index into `coefficients`
   std::function<std::array<double, 2>(double)> at;
-  std::string declared_at;  // "path:line" of the pair, for a schedule's errors
+  std::string declared_at;  // "path:line" its errors name: the function's, or the pair's for a schedule
 };
 
 // A coefficient's schedule, { { t0, v0 }, { t1, v1 }, ... }: from each time on, its value (the
@@ -297,12 +296,11 @@ std::vector<std::array<double, 2>> read_schedule(lua_State* state, int index, co
       if (lua_type(state, -1) == LUA_TNUMBER) step[static_cast<std::size_t>(i)] = lua_tonumber(state, -1);
       lua_pop(state, 1);
     }
-    const std::string got = pair ? "{ " + number_text(step[0]) + ", " + number_text(step[1]) + " }" : describe(state, -1);
+    const std::string got = pair ? "a pair that is not two finite numbers" : describe(state, -1);
     lua_pop(state, 1);
     const std::string entry = "; entry " + std::to_string(k);
     if (!std::isfinite(step[0]) || !std::isfinite(step[1])) {
-      throw InvalidInput(form + entry + " must be two numbers, { time, value }; it is " +
-                         (pair ? "a pair that is not two finite numbers" : got));
+      throw InvalidInput(form + entry + " must be two numbers, { time, value }; it is " + got);
     }
     if (k == 1 && step[0] != 0.0) throw InvalidInput(form + entry + " starts at t = " + number_text(step[0]) + " s, not 0");
     if (k > 1 && step[0] < steps.back()[0]) {
@@ -320,12 +318,12 @@ std::vector<std::array<double, 2>> read_schedule(lua_State* state, int index, co
 }
 
 // The coefficient's value at t, within its slider's range, or an error placed at the function.
-double timed_value(LessonBuild& build, const TimedCoefficient& coefficient, const std::string& label, double t) {
+double timed_value(const TimedCoefficient& coefficient, const std::string& label, double t) {
   const double value = coefficient.at(t)[0];
   const Coefficient& which = coefficients[coefficient.slot];
   if (value >= 0.0 && value <= which.max) return value;
   std::ostringstream message;
-  message << (coefficient.reference == LUA_NOREF ? coefficient.declared_at : build.defined_at(coefficient.reference)) << ": pair " << label << ": " << which.key << " returned " << value
+  message << coefficient.declared_at << ": pair " << label << ": " << which.key << " returned " << value
           << " at t = " << t << " s; it must be in [0, " << which.max << "]";
   throw ScriptError(message.str());
 }
@@ -336,7 +334,6 @@ double timed_value(LessonBuild& build, const TimedCoefficient& coefficient, cons
 void follow_in_time(LessonBuild& build, const std::string& a, const std::string& b, const std::string& label,
                     std::vector<TimedCoefficient> timed) {
   Scene* scene = build.scene.get();
-  LessonBuild* owner = &build;
   auto earlier = std::move(build.before_substep);
   build.before_substep = [=](double t) {
     if (earlier) earlier(t);
@@ -344,7 +341,7 @@ void follow_in_time(LessonBuild& build, const std::string& a, const std::string&
     double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     bool changed = false;
     for (const TimedCoefficient& coefficient : timed) {
-      const double value = timed_value(*owner, coefficient, label, t);
+      const double value = timed_value(coefficient, label, t);
       changed = changed || value != *slots[coefficient.slot];
       *slots[coefficient.slot] = value;
     }
@@ -434,8 +431,8 @@ int pair(lua_State* state) {
       if (fields.push_function(coefficients[i].key)) {  // (like = with any coefficient is refused above)
         const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
         const std::string what = "pair " + label + ": " + coefficients[i].key + " (t -> a number)";
-        timed.push_back({i, reference, function_of_time(build, reference, 1, what), ""});
-        *slots[i] = timed_value(build, timed.back(), label, 0.0);
+        timed.push_back({i, function_of_time(build, reference, 1, what), build.defined_at(reference)});
+        *slots[i] = timed_value(timed.back(), label, 0.0);
         continue;
       }
       fields.push(coefficients[i].key);
@@ -447,8 +444,8 @@ int pair(lua_State* state) {
           while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
           return std::array<double, 2>{steps[k][1], 0.0};
         };
-        timed.push_back({i, LUA_NOREF, at, caller(state)});
-        *slots[i] = timed_value(build, timed.back(), label, 0.0);
+        timed.push_back({i, at, caller(state)});
+        *slots[i] = timed_value(timed.back(), label, 0.0);
         continue;
       }
       lua_pop(state, 1);
