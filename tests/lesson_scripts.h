@@ -53,4 +53,10 @@ std::string error_of(Call call) {
   return "";
 }
 
+// The message a script refused while it builds gives (written to its own file first).
+inline std::string error_building(const std::string& text) {
+  const ScriptFile script(text);
+  return error_of([&] { Lesson lesson(script.path()); });
+}
+
 }  // namespace frictionlab::lessons

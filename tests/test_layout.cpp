@@ -222,6 +222,15 @@ struct WindowScreen {
 const WindowScreen window_screens[] = {
     {"1280x720", 1280, 720, false}, {"1024x768", 1024, 768, false}, {"projector_1920x1080", 1920, 1080, true}};
 
+// The window on `lesson` (a script's path) as a class sees it on `screen`: help panel closed.
+ClassroomOptions class_window(const std::string& lesson, const WindowScreen& screen) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.window.help = false;
+  options.window.projector = screen.projector;
+  return options;
+}
+
 class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
 
 TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed) {
@@ -231,10 +240,7 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
   ImGuiHost host(nullptr);
   for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-      ClassroomOptions options;
-      options.lesson = lessons::resolve_lesson(entry.name);
-      options.window.help = false;
-      options.window.projector = screen.projector;
+      ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
       options.window.theme = theme;
       Classroom window(options);
       const auto check_at = [&](double t, const char* moment) {
@@ -273,10 +279,7 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
   ImGuiHost host(nullptr);
   for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-      ClassroomOptions options;
-      options.lesson = lessons::resolve_lesson(entry.name);
-      options.window.help = false;
-      options.window.projector = screen.projector;
+      ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
       options.window.theme = theme;
       Classroom window(options);
       window.playback().run_to(0.5 * window.playback().lesson().duration());
@@ -353,10 +356,7 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
   HeadlessContext gl;
   ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(entry.name);
-    options.window.help = false;
-    options.window.projector = screen.projector;
+    ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
     Classroom window(options);
     const double duration = window.playback().lesson().duration();
     const auto frame = [&](FrameRecord* record) {
@@ -479,10 +479,7 @@ TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
   int scrolled = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     for (const bool predictions : {false, true}) {
-      ClassroomOptions options;
-      options.lesson = lessons::resolve_lesson(entry.name);
-      options.window.help = false;
-      options.window.projector = screen.projector;
+      ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
       options.window.predictions = predictions;
       Classroom window(options);
       const auto check_at = [&](double t, const char* moment) {
@@ -522,10 +519,7 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
   HeadlessContext gl;
   ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(entry.name);
-    options.window.help = false;
-    options.window.projector = screen.projector;
+    ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
     options.window.predictions = true;
     Classroom window(options);
     for (int frame = 0; frame < 4; ++frame) {
@@ -553,13 +547,10 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
   ImGuiHost host(nullptr);
   int lessons_with_a_mystery = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(entry.name);
+    ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
     const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(options.lesson));
     if (pairs.empty()) continue;
     ++lessons_with_a_mystery;
-    options.window.help = false;
-    options.window.projector = screen.projector;
     options.mystery = MysteryChoice{pairs.front(), 1};
     // No predictions asked: they would keep the Predict tab in front of the Mystery tab (the
     // tab opened by a click, with predictions asked: WindowTabsLayout).
@@ -599,11 +590,8 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
   ImGuiHost host(nullptr);
   for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
     for (const char* name : {"push", "incline", "spring_pull"}) {
-      ClassroomOptions options;
-      options.lesson = lessons::resolve_lesson(name);
+      ClassroomOptions options = class_window(lessons::resolve_lesson(name), screen);
       if (std::string(name) == "incline") options.overrides = {{"angle", "25"}};
-      options.window.help = false;
-      options.window.projector = screen.projector;
       options.window.theme = theme;
       options.window.tools = ToolSettings{true, true, true, true};
       Classroom window(options);
@@ -871,10 +859,7 @@ TEST(Menus, TheMenuBarShowsAsMuchOfTheScriptsPathAsFitsAndCutsNone) {
   ImGuiHost host(nullptr);
   for (const WindowScreen& screen : window_screens) {
     for (const std::string& path : {script.string(), lessons::resolve_lesson("wedge")}) {
-      ClassroomOptions options;
-      options.lesson = path;
-      options.window.help = false;
-      options.window.projector = screen.projector;
+      ClassroomOptions options = class_window(path, screen);
       Classroom window(options);
       const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
       FrameRecord record;

@@ -270,8 +270,7 @@ TEST(LessonRuntime, AFloorOfStripsCarriesABoxAcrossItsSeamWithoutAJolt) {
 
 TEST(LessonRuntime, AFloorOfStripsRefusesStripsOutOfOrder) {
   const auto message = [](const std::string& strips) {
-    const ScriptFile script(with_heading("ground { \"floor\", strips = " + strips + " }\n"));
-    return error_of([&] { Lesson lesson(script.path()); });
+    return error_building(with_heading("ground { \"floor\", strips = " + strips + " }\n"));
   };
   EXPECT_NE(message("{ { \"wood\", to = 1 }, { \"ice\", to = 0.5 }, { \"wood\" } }").find(
                 "ground 'floor': strips[2] 'ice': to = 0.5 m is outside the allowed range [1.02, 199.98]"),

@@ -80,10 +80,7 @@ drive { plank, position = function(t) return 0.3 + 0.05 * math.sin(12 * t), 1.5 
 }
 
 TEST(ScriptFreeReadings, AMotionsFieldsAreChecked) {
-  const auto refused = [](const std::string& drive) {
-    ScriptFile script(with_heading(std::string(plank_world) + drive));
-    return error_of([&] { Lesson lesson(script.path()); });
-  };
+  const auto refused = [](const std::string& drive) { return error_building(with_heading(std::string(plank_world) + drive)); };
   EXPECT_NE(refused("drive { plank, position = { x = { swng = 1 } } }\n").find("drive 'plank': position: x"), std::string::npos);
   EXPECT_NE(refused("drive { plank, position = { x = { swng = 1 } } }\n").find("swng"), std::string::npos);
   EXPECT_NE(refused("drive { plank, angle = \"fast\" }\n").find("angle must be a number, or a motion"), std::string::npos);
@@ -124,9 +121,8 @@ end }
 
 TEST(ScriptFreeReadings, RelativeToIsForPositionsOfBodies) {
   const auto refused = [](const std::string& probe) {
-    ScriptFile script(with_heading(std::string(plank_world) + "local post = box { \"post\", material = \"wood\", kind = "
-                                   "\"static\", width = 0.1, height = 0.1, x = 1, y = 0.5 }\n" + probe));
-    return error_of([&] { Lesson lesson(script.path()); });
+    return error_building(with_heading(std::string(plank_world) + "local post = box { \"post\", material = \"wood\", kind = "
+                                       "\"static\", width = 0.1, height = 0.1, x = 1, y = 0.5 }\n" + probe));
   };
   EXPECT_NE(refused("probe { \"v\", read = { post, \"vx\", relative_to = plank } }\n")
                 .find("relative_to is for a body's x, y and distance"),
@@ -243,8 +239,7 @@ pair { "wood", "wood", sliders = false, mu_s = function(t) return oiled(t) and 0
 
 TEST(ScriptFreeReadings, AScheduleThatIsNotOneSaysWhereAndWhy) {
   const auto refused = [](const std::string& schedule) {
-    ScriptFile script(with_heading("pair { \"wood\", \"wood\", sliders = false, mu_s = 0.5, mu_k = " + schedule + " }\n"));
-    return error_of([&] { Lesson lesson(script.path()); });
+    return error_building(with_heading("pair { \"wood\", \"wood\", sliders = false, mu_s = 0.5, mu_k = " + schedule + " }\n"));
   };
   const std::string late = refused("{ { 1, 0.4 } }");
   EXPECT_NE(late.find(":2: pair wood/wood: mu_k: a schedule is a list of { time, value } pairs"), std::string::npos) << late;
