@@ -123,40 +123,51 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<Accur
 
 // How many times faster than real time each built-in lesson runs headless at 240 Hz, and the
 // share of the stepping spent inside the script's Lua (hands, forces, probes, every_step).
+// A lesson's run takes a few milliseconds, while this shared machine's speed wanders by a
+// third over minutes: so the lessons take turns, a run each per round, and every lesson's
+// median is over the same stretch of the machine's moods. Run one lesson's repeats after
+// another's and two lessons of equal cost could differ by a third, the one timed on a slow
+// minute.
 std::string lesson_speed(bool quick, std::ostream& out) {
+  const std::vector<std::string> names = lessons::builtin_lessons();
+  const int rounds = quick ? 1 : 21;
+  std::vector<std::vector<double>> costs(names.size()), shares(names.size());
+  std::vector<double> simulated(names.size(), 0.0);
+  for (int round = 0; round < rounds; ++round) {
+    // The first pass of a round times the speed alone; the second also clocks every call into
+    // Lua for the share (reading the clock costs time of its own).
+    for (const bool share_pass : {false, true}) {
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        lessons::Lesson lesson(lessons::resolve_lesson(names[i]));
+        // The duration first: a script may work it out at length (stacked_blocks integrates
+        // the slip), and that is not stepping.
+        simulated[i] = lesson.duration();
+        lesson.time_script(share_pass);
+        const auto wall_start = std::chrono::steady_clock::now();
+        const double cpu_start = thread_cpu_seconds();
+        lesson.step_to(simulated[i]);
+        const double cpu = thread_cpu_seconds() - cpu_start;
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+        if (share_pass) {
+          shares[i].push_back(lesson.seconds_in_script() / wall);
+        } else {
+          costs[i].push_back(cpu / simulated[i]);
+        }
+      }
+    }
+  }
   std::ostringstream csv;
   csv << "lesson,hz,simulated_s,cpu_ms_per_simulated_s,times_real_time,script_share\n";
   std::vector<std::vector<std::string>> table{
       {"lesson", "simulated (s)", "CPU ms per simulated s", "× real time", "script share of step time"}};
-  for (const std::string& name : lessons::builtin_lessons()) {
-    std::vector<double> costs, shares;
-    double simulated = 0.0;
-    // Repeats 0, 2, 4, ... time the speed alone; 1, 3, 5, ... also clock every call into Lua
-    // for the share (reading the clock costs time of its own).
-    for (int r = 0; r < (quick ? 2 : 10); ++r) {
-      const bool share_pass = r % 2 == 1;
-      lessons::Lesson lesson(lessons::resolve_lesson(name));
-      // The duration first: a script may work it out at length (stacked_blocks integrates the
-      // slip), and that is not stepping.
-      simulated = lesson.duration();
-      lesson.time_script(share_pass);
-      const auto wall_start = std::chrono::steady_clock::now();
-      const double cpu_start = thread_cpu_seconds();
-      lesson.step_to(simulated);
-      const double cpu = thread_cpu_seconds() - cpu_start;
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-      if (share_pass) {
-        shares.push_back(lesson.seconds_in_script() / wall);
-      } else {
-        costs.push_back(cpu / simulated);
-      }
-    }
-    const double cost = median(costs), share = median(shares);
-    csv << name << ",240," << simulated << ',' << cost * 1e3 << ',' << 1.0 / cost << ',' << share << '\n';
-    table.push_back({name, format_number(simulated), format_number(cost * 1e3, 3), format_number(1.0 / cost, 3),
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const double cost = median(costs[i]), share = median(shares[i]);
+    csv << names[i] << ",240," << simulated[i] << ',' << cost * 1e3 << ',' << 1.0 / cost << ',' << share << '\n';
+    table.push_back({names[i], format_number(simulated[i]), format_number(cost * 1e3, 3),
+                     format_number(std::round(1.0 / cost), 6),  // "3124", not "3.12e+03"
                      format_number(share * 100.0, 2) + " %"});
   }
-  out << "\nBuilt-in lessons, headless at 240 Hz (median of " << (quick ? 1 : 5) << " runs each)\n";
+  out << "\nBuilt-in lessons, headless at 240 Hz (median of " << rounds << " runs each, the lessons taking turns)\n";
   print_table(out, table);
   return csv.str();
 }
