@@ -278,6 +278,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // by itself: the run ends before its front lifts.
                       Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "2"},
                                               {"top_on_bottom.mu_k", "1.2"}, {"bottom_on_floor.mu_s", "2"}, {"bottom_on_floor.mu_k", "0"}}, ""},
+                      // A floor that grips harder than the blocks do (mu_s 2 against 1.5): the top
+                      // block slips the moment the pair breaks away, and the bottom one, let go
+                      // at 24.5 m/s², lifts its front at once. Theory has nothing to show past
+                      // that instant, so the run goes on half a second to show the lift (without
+                      // that branch of tips_at it would end at the breakaway, before anything moved).
+                      Case{"stacked_blocks", {{"top_mass", "1"}, {"bottom_mass", "1"}, {"top_on_bottom.mu_s", "1.5"}, {"top_on_bottom.mu_k", "1.5"},
+                                              {"bottom_on_floor.mu_s", "2"}, {"bottom_on_floor.mu_k", "0"}}, ""},
                       Case{"stacked_blocks", {{"pull_rate", "0.5"}, {"top_on_bottom.mu_s", "0.2"}, {"top_on_bottom.mu_k", "0.1"}}, ""},
                       // A top block whose mu_s is 1.1 to 2.5 times the floor's mu_s - mu_k keeps
                       // up when the pair breaks away: the floor's breakaway correction is shared
