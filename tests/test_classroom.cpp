@@ -633,6 +633,43 @@ TEST(Classroom, SavingTheScriptReloadsTheLesson) {
   EXPECT_LT(copy.driver.lesson().scene().time(), 0.5);  // a new lesson starts from t = 0
 }
 
+// Paused and untouched, the window waits for input and its frames pass no wall time; the time
+// it waited still runs the file watcher's clock. The trial's student saved a fixed script and
+// the old error stayed up until the mouse moved.
+TEST(Classroom, APausedWindowSeesASavedScriptWhileNobodyTouchesIt) {
+  StudentCopy copy;
+  copy.driver.key(Key::space);
+  ASSERT_TRUE(copy.driver.classroom().idle());
+  const std::string original = read_file(copy.script.path());
+  copy.script.rewrite(replaced(original, copy.driver.lesson().title(), "Saved while paused"));
+  for (int i = 0; i < 2; ++i) {
+    copy.driver.classroom().waited(0.25);  // what the window's wait for input took
+    copy.driver.frame(0.0);
+  }
+  EXPECT_EQ(copy.driver.lesson().title(), "Saved while paused");
+}
+
+// The run pauses itself at its end and the table reads the rows then, not up to a fifth of a
+// second of wall time later: a paused window passes none, and the trial's pulley showed its
+// tension "not yet" measured until the mouse moved.
+TEST(Classroom, TheRowsAreReadTheMomentTheRunPausesItself) {
+  Driver driver("pulley");
+  driver.key(Key::space);
+  for (int i = 0; i < 600 && driver.playback().playing(); ++i) driver.frame(1.0 / 60.0);
+  ASSERT_FALSE(driver.playback().playing());
+  const std::vector<lessons::ExpectationResult> now = driver.lesson().expectations();
+  const std::vector<lessons::ExpectationResult>& shown = driver.playback().readings().expectations;
+  ASSERT_EQ(shown.size(), now.size());
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    EXPECT_TRUE(now[i].measured_yet) << now[i].name;
+    EXPECT_EQ(shown[i].measured_yet, now[i].measured_yet) << now[i].name << ": the table still shows an older reading";
+    EXPECT_EQ(shown[i].measured_text, now[i].measured_text) << now[i].name;
+    if (now[i].numeric) {
+      EXPECT_EQ(shown[i].measured, now[i].measured) << now[i].name;
+    }
+  }
+}
+
 TEST(Classroom, ABrokenSaveShowsTheErrorWithItsLineAndTheLastGoodLessonKeepsRunning) {
   StudentCopy copy;
   const std::string original = read_file(copy.script.path());

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "lessons/runtime/catalog.h"
 #include "ui/frame.h"
@@ -125,8 +126,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   // One setting of the cheapest-setting search a frame: the window stays live while it measures.
   cheapest_.measure_next();
   playback_->advance(wall_seconds);
-  playback_->watch_file(wall_seconds);
-  try_failed_script(wall_seconds);
+  const double watched = wall_seconds + std::exchange(waited_, 0.0);
+  playback_->watch_file(watched);
+  try_failed_script(watched);
 
   tools_.on = window_.tools;
   tools_.follow(playback_->lesson(), playback_->playing());

@@ -94,6 +94,10 @@ class Classroom {
   // no hand held. The window then waits for input (a few times a second for the file watcher)
   // instead of drawing the same frame sixty times a second.
   bool idle() const;
+  // Time the window spent waiting for input while idle: no lesson time, but the file watchers'
+  // clocks run on it, so a script saved while nobody touches the window is still seen (the
+  // next frame, given no wall time, would never reach their quarter-second look).
+  void waited(double seconds) { waited_ += seconds; }
   // What the status line says now (saved files, failures to save).
   const std::string& status() const { return status_; }
   // The measuring tools (Tools menu): which are on, and the stopwatch.
@@ -287,6 +291,7 @@ class Classroom {
   // A script named on the command line that did not build: shown and watched until it does.
   std::string failed_script_, failed_error_;
   double since_failed_check_ = 0.0;
+  double waited_ = 0.0;  // see waited()
   FileStamp failed_stamp_;
 };
 

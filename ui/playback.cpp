@@ -120,6 +120,11 @@ void Playback::play() {
   notice_.clear();
 }
 
+void Playback::pause() {
+  if (playing_) since_readings_ = readings_period;
+  playing_ = false;
+}
+
 void Playback::set_speed(double speed) { speed_ = std::clamp(speed, slowest, fastest); }
 
 void Playback::advance(double wall_seconds) {
@@ -169,14 +174,14 @@ void Playback::run_to(double t) {
 
 void Playback::step_and_check() {
   if (blown_ || lesson_->failed()) {
-    playing_ = false;
+    pause();
     return;
   }
   apply_due();
   try {
     lesson_->step();
   } catch (const InvalidInput& error) {
-    playing_ = false;
+    pause();
     problem_ = std::string(error.what()) + ". Fix the script and save it (it reloads), or press R to start again.";
     return;
   }
@@ -186,7 +191,7 @@ void Playback::step_and_check() {
   // shown after scrubbing is the moment as it was.
   apply_due();
   if (std::string trouble = health(); !trouble.empty()) {
-    playing_ = false;
+    pause();
     blown_ = true;
     problem_ = "The simulation blew up at t = " + seconds_text(lesson_->scene().time()) + ": " + trouble +
                ". Press R to reset; a smaller step (higher step rate, more sub-steps) or gentler values may hold.";
@@ -197,14 +202,14 @@ void Playback::step_and_check() {
   // watching the gauge, had the run pause under the mouse.
   if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
     run_over_ = true;
-    playing_ = false;
+    pause();
     notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
   }
   // Played on, a pushed block leaves the floor's end and falls for ever, with plots running on
   // and nothing said: the trial's teacher saw push do it. Pause, once for each body, and say so.
   if (std::string fallen = newly_fallen(); !fallen.empty()) {
     fallen_.push_back(fallen);
-    playing_ = false;
+    pause();
     notice_ = "Paused: " + fallen + " has fallen off, past everything that could catch it (t = " +
               seconds_text(lesson_->scene().time()) + "). R starts again; Space plays on.";
   }

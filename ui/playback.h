@@ -44,7 +44,10 @@ class Playback {
   void advance(double wall_seconds);
   bool playing() const { return playing_; }
   void play();
-  void pause() { playing_ = false; }
+  // Paused (or stopped by itself: the run's end, a fall, a failure), the rows are read again
+  // at the next frame, whatever the wall clock says: a paused window waits for input and
+  // passes no time, and the table would keep what it read up to a fifth of a second before.
+  void pause();
   void toggle() { playing_ ? pause() : play(); }
   // Exactly one frame of the lesson (1/hz s), paused.
   void step_once();

@@ -102,6 +102,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
       glfwWaitEventsTimeout(0.25);
       // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
       last = glfwGetTime();
+      classroom.waited(last - asleep_from);
       // Woken by input: a few frames; by the clock (to look at the script file): one.
       settle_frames = glfwGetTime() - asleep_from < 0.24 ? 3 : 1;
     } else {
