@@ -18,6 +18,7 @@
 #include "lessons/runtime/lesson_benchmark.h"
 #include "ui/headless.h"
 #include "ui/imgui_host.h"
+#include "ui/key_taps.h"
 #include <backends/imgui_impl_opengl3.h>
 #include "ui/overlays.h"
 #include "ui/classroom.h"
@@ -181,6 +182,34 @@ TEST(Classroom, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
   driver.click("mu_k reset");
   EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.35);
   EXPECT_EQ(driver.classroom().control_error("mu_k"), "");
+}
+
+// Enter pressed and let go between two frames, as a fast typist (or xdotool) does: ImGui 1.86
+// reads io.KeysDown when a frame starts, and finds it up at both. The window's KeyTaps holds a
+// key pressed since the last frame down through the next one.
+TEST(Classroom, AnEnterTappedBetweenTwoFramesSetsTheTypedValue) {
+  Driver driver("spring_pull");
+  driver.frame();
+  ImGuiIO& io = ImGui::GetIO();
+  const int enter = io.KeyMap[ImGuiKey_Enter];
+
+  // Without the holder the tap is lost: the box keeps 0.3125, the lesson 0.35.
+  driver.click("mu_k value");
+  driver.type("0.3125");
+  driver.frame();
+  EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.35);
+  driver.press(ImGuiKey_Escape);
+
+  KeyTaps taps;
+  driver.click("mu_k value");
+  driver.type("0.3125");
+  taps.pressed(enter);  // down and up again before the frame: io.KeysDown[enter] stays false
+  taps.hold(io);
+  driver.frame();
+  taps.release(io, [](int) { return false; });
+  driver.frame();
+  EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.3125);
+  EXPECT_FALSE(io.KeysDown[enter]) << "a tapped key is let go after its frame";
 }
 
 // A lesson opens paused at t = 0, its first frame drawn, however much time passes: the class

@@ -13,6 +13,7 @@
 #include "ui/headless.h"
 #include "ui/image.h"
 #include "ui/imgui_host.h"
+#include "ui/key_taps.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -71,14 +72,18 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
   ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
-  // Every key press reaches the classroom, even one let go before the next frame; set before
-  // ImGui's backend, which then calls it after its own.
-  glfwSetWindowUserPointer(window.get(), &classroom);
+  // Every key press reaches the classroom, and ImGui's widgets, even one let go before the next
+  // frame; set before ImGui's backend, which calls it before its own.
+  struct Listeners {
+    Classroom* classroom;
+    KeyTaps taps;
+  } listeners{&classroom, {}};
+  glfwSetWindowUserPointer(window.get(), &listeners);
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
-    if (const std::optional<Key> named = classroom_key(key)) {
-      static_cast<Classroom*>(glfwGetWindowUserPointer(from))->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
-    }
+    auto* to = static_cast<Listeners*>(glfwGetWindowUserPointer(from));
+    to->taps.pressed(key);  // GLFW's key codes are ImGui's indices under its GLFW backend
+    if (const std::optional<Key> named = classroom_key(key)) to->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
   });
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
   struct GlfwInput {
@@ -126,6 +131,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     const Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
                                       settings.theme);
     ImGui_ImplGlfw_NewFrame();
+    listeners.taps.hold(ImGui::GetIO());
     host.begin_frame();
     classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
     // The lesson's title, and whether a surface is a mystery (never its values).
@@ -138,6 +144,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     glClearColor(clear.x, clear.y, clear.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     host.end_frame();
+    listeners.taps.release(ImGui::GetIO(), [&](int key) { return glfwGetKey(window.get(), key) == GLFW_PRESS; });
 
     std::optional<std::string> screenshot = classroom.take_screenshot_request();
     if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
