@@ -49,6 +49,16 @@ TEST_P(ListedLesson, HasExpectationsAndMeetsThemAtItsDefaults) {
   }
 }
 
+// Before Play nothing has been measured, and the class predicts against an empty column: a row
+// that read its answer off an empty record (pulley's "stays put" at t = 0) gave it away.
+TEST_P(ListedLesson, MeasuresNothingBeforeItsFirstStep) {
+  Lesson lesson(resolve_lesson(GetParam()));
+  for (const ExpectationResult& row : lesson.expectations()) {
+    EXPECT_FALSE(row.measured_yet) << row.name << ": measured " << (row.numeric ? std::to_string(row.measured) : row.measured_text)
+                                   << " at t = 0";
+  }
+}
+
 // A script may build at most 100 bodies and 200 shapes (script_world.cpp): the built-in
 // lessons stay within a fifth of that, so a student's lesson as big as ten of them still fits.
 TEST_P(ListedLesson, StaysWellInsideWhatAScriptMayBuild) {
