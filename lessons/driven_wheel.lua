@@ -133,7 +133,7 @@ expect { "friction while gripping, forward", unit = "N",
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "friction while gripping, forward", unit = "N",
-  question = "While the tyre grips, how hard does the road push the wheel forward (a minus sign for backward)?" }
+  question = "Half a second in (sooner if the tyre spins within a second), the motor gives half its full torque or less. How hard does the road push the wheel forward then (a minus sign for backward)?" }
 expect { "acceleration at the end", unit = "m/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).acceleration end,
   measured = function() return too_fast() or at_the_end("acceleration") end,

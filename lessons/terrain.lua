@@ -160,6 +160,6 @@ expect { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "ice_box: then", choices = { "stays", "slides back" },
-  question = "The box thrown up the icy slope stops. Does it stay there or slide back?" }
+  question = "The box thrown along the ice stops. Does it stay there or slide back?" }
 predict { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
   question = "The game's box has its speed cut every frame. How fast is it drifting at the end?" }
