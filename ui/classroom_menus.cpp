@@ -177,13 +177,19 @@ void Classroom::help_panel() {
         {"L", "the stopwatch's lap"},
         {"F1", "this help"},
     };
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+    // The keys' column as wide as its widest key, the words wrapped in what is left: at
+    // projector size the panel is narrower than its longest line (the trial saw "…and pla").
+    if (ImGui::BeginTable("keys", 2)) {
+      ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& row : keys) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row[0]);
         ImGui::TableNextColumn();
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted(row[1]);
+        ImGui::PopTextWrapPos();
       }
       ImGui::EndTable();
     }
