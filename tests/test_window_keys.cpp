@@ -5,6 +5,7 @@
 // Keys come as the window layer passes them on: the key, and for Space the character it types.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -251,13 +252,35 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);
   EXPECT_NEAR(stopwatch.reading(now()), paused_at, 1e-12);
   EXPECT_NE(stopwatch.text(now(), false).find("(paused)"), std::string::npos);
-  // Played on to the run's end (1 s), where the window pauses: the reading stops there.
+  // Played on to the run's end (1 s), where the window pauses: the reading stops there, and it
+  // says it stopped with the run, not that someone paused it (the trial's "(paused)").
   hands.key(Key::space);
   for (int i = 0; i < 120; ++i) hands.frame(1.0 / 60.0);
   ASSERT_FALSE(hands.classroom().playback().playing()) << "the run ended";
   const double duration = hands.classroom().playback().readings().duration;
   EXPECT_NEAR(now(), duration, hands.lesson().scene().frame_step());
   EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12);
+  ASSERT_TRUE(hands.classroom().playback().at_run_end());
+  char said[64];
+  std::snprintf(said, sizeof said, "stopwatch %.2f s (stopped at the run's end)", now());
+  const auto shown_text = [&] {
+    FrameRecord record;
+    hands.frame(0.0, &record);
+    for (const FrameRecord::Lane& lane : record.lanes) {
+      for (const std::string& text : lane.texts) {
+        if (text.rfind("stopwatch ", 0) == 0) return text;
+      }
+    }
+    return std::string("no stopwatch drawn");
+  };
+  EXPECT_EQ(shown_text(), said) << "as the world view draws it";
+  // Played on past the end and paused by hand: paused, as it says.
+  hands.key(Key::space);
+  for (int i = 0; i < 6; ++i) hands.frame(1.0 / 60.0);
+  hands.key(Key::space);
+  EXPECT_FALSE(hands.classroom().playback().at_run_end());
+  std::snprintf(said, sizeof said, "stopwatch %.2f s (paused)", now());
+  EXPECT_EQ(shown_text(), said);
   // R: back to t = 0, where it read 0 and was armed.
   hands.key(Key::r);
   EXPECT_EQ(now(), 0.0);

@@ -129,7 +129,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   try_failed_script(wall_seconds);
 
   tools_.on = window_.tools;
-  tools_.follow(playback_->lesson(), playback_->playing());
+  tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();

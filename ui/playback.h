@@ -43,6 +43,8 @@ class Playback {
   // (the lesson then runs slower than asked, and behind() says so).
   void advance(double wall_seconds);
   bool playing() const { return playing_; }
+  // Paused where the lesson's run ended by itself (not played on past it since).
+  bool at_run_end() const;
   void play();
   void pause() { playing_ = false; }
   void toggle() { playing_ ? pause() : play(); }
