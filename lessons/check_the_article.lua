@@ -165,11 +165,11 @@ if param.example == "worked" then
   local k_end = sample(duration)
   local driving_work = right.work_gravity[k_end] + right.work_pseudo[k_end]
   local speeds, frictions = history("speed"), history("friction_force")
-  claim("W_a + W_g over 5 s (article: +1.9 J)", 1.9, function() return driving_work end,
+  claim("pseudo-force and gravity's work over 5 s (article: +1.9 J)", 1.9, function() return driving_work end,
     function() return summed(function(i, t) return frame(t - 0.5 * h) * speeds[i] end) end,
     0.02 * driving_work + 0.01, "J")
   local friction_work = right.work_friction[k_end]
-  claim("W_friction over 5 s (article: −1.6 J)", -1.6, function() return friction_work end,
+  claim("friction's work over 5 s (article: −1.6 J)", -1.6, function() return friction_work end,
     function() return summed(function(i) return frictions[i] * speeds[i] end) end,
     0.02 * math.abs(friction_work) + 0.01, "J")
   claim("ΔK over 5 s (article: +0.3 J; ½·1.5·0.44² is 0.145)", 0.3, function() return right.kinetic[k_end] end,

@@ -108,8 +108,11 @@ local function held_load(probe)
 end
 
 -- Expectations ----------------------------------------------------------------------------
-for _, name in ipairs { "wide", "narrow", "three_feet", "six_feet" } do
-  expect { name .. ": breakaway pull", unit = "N",
+-- Each block by its body's name, and its row by the name in words.
+for _, block in ipairs { { "wide", "wide" }, { "narrow", "narrow" }, { "three_feet", "three feet" },
+                         { "six_feet", "six feet" } } do
+  local name = block[1]
+  expect { block[2] .. ": breakaway pull", unit = "N",
     predicted = function() return pull_theory(0).breakaway_push end,
     measured = function() return breakaway(name) end,
     -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.

@@ -71,11 +71,11 @@ probe { "speed", unit = "m/s", read = { block, "vx" } }
 probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
 
 plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_force" },
-  theory = { { "weight m_h·g", function() return param.hanging_mass * g end } } }
+  theory = { { "weight of the hanging mass M: M·g", function() return param.hanging_mass * g end } } }
 -- The speed rather than the acceleration: a straight line whose slope is the acceleration
 -- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
 plot { "Speed of the block", kind = "time", y = { "speed" },
-  theory = { { "a·t, a = g·(m_h − μk·m_b)/(m_b + m_h)", function(t) return pulley_theory().acceleration * t end } } }
+  theory = { { "a·t, a = g·(M − μk·m)/(m + M)", function(t) return pulley_theory().acceleration * t end } } }
 
 -- Reading the record ----------------------------------------------------------------------
 local function at_the_end(probe)

@@ -128,14 +128,15 @@ local function beyond(surface)
 end
 for _, surface in ipairs { "asphalt", "grass", "ice" } do
   local name = surface .. "_box"
-  expect { name .. ": distance", unit = "m",
+  local in_words = surface .. " box"  -- the rows' names, as the class reads them
+  expect { in_words .. ": distance", unit = "m",
     predicted = function() return beyond(surface) or launch(surface).distance end,
     measured = function()
       if not over() then return nil end
       return beyond(surface) or (farthest(name) > room and off_the_end) or farthest(name)
     end,
     tolerance = function() return 0.01 * launch(surface).distance + launch_speed * step_length() end }
-  expect { name .. ": then",
+  expect { in_words .. ": then",
     predicted = function() return beyond(surface) or launch(surface)["then"] end,
     measured = function()
       if not over() then return nil end
@@ -147,19 +148,19 @@ end
 local function hack()
   return theory.velocity_hack { v0 = launch_speed, keep = keep, step = step_length(), angle = slope }
 end
-expect { "hack_box: distance", unit = "m",
+expect { "hack box: distance", unit = "m",
   predicted = function() return hack().distance_up end,
   measured = function() return over() and farthest("hack_box") or nil end,
   -- The closed form is exact for the frames the scene runs (leapfrog start and sub-steps too):
   -- only single-precision positions are left, 1e-6 m here.
   tolerance = function() return 1e-4 * hack().distance_up + 1e-5 end }
-expect { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
+expect { "hack box: speed at the end (drifts down a slope)", unit = "m/s",
   predicted = function() return hack().drift_speed end,
   measured = function() return over() and value_at("hack_box_speed", time()) or nil end,
   tolerance = function() return 0.01 * math.abs(hack().drift_speed) + 1e-3 end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
-predict { "ice_box: then", choices = { "stays", "slides back" },
+predict { "ice box: then", choices = { "stays", "slides back" },
   question = "The box thrown along the ice stops. Does it stay there or slide back?" }
-predict { "hack_box: speed at the end (drifts down a slope)", unit = "m/s",
+predict { "hack box: speed at the end (drifts down a slope)", unit = "m/s",
   question = "The game's box has its speed cut every frame. How fast is it drifting at the end?" }

@@ -165,7 +165,7 @@ for _, book in ipairs { { "kinetic_gained", "kinetic" }, { "work_pseudo", "work_
 end
 plot { "Energy books (the article's model)", kind = "time",
   y = { "kinetic_gained", "work_pseudo", "work_gravity", "work_friction" },
-  theory = { { "W_a + W_g + W_friction", function(t)
+  theory = { { "work pseudo + gravity + friction", function(t)
     local k = sample(t)
     return reduced.work_pseudo[k] + reduced.work_gravity[k] + reduced.work_friction[k] + reduced.work_landings[k]
   end } } }

@@ -63,8 +63,10 @@ void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, cons
     for (std::size_t i = 0; i < lane.labels.size(); ++i) {
       const ImVec4 label = drawn(lane.labels[i]);
       for (std::size_t j = i + 1; j < lane.labels.size(); ++j) {
+        const auto said = [&](std::size_t k) { return k < lane.texts.size() ? " \"" + lane.texts[k] + "\"" : std::string(); };
         EXPECT_FALSE(overlaps(label, drawn(lane.labels[j])))
-            << where << ": labels at " << text_of(label) << " and " << text_of(drawn(lane.labels[j])) << " overlap";
+            << where << ": labels" << said(i) << " at " << text_of(label) << " and" << said(j) << " at "
+            << text_of(drawn(lane.labels[j])) << " overlap";
       }
       for (const DrawnSegment& arrow : lane.arrows) {
         // The shaft as drawn (its head is wider, and the placer keeps clear of that too).
@@ -206,6 +208,80 @@ TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
   EXPECT_EQ(where_methods_fail.find("creeping_block"), std::string::npos) << where_methods_fail;
   const std::string terrain = texts_of("terrain", 1.0);
   EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
+}
+
+// Whether a label's box lies on a moving body as drawn: its polygons and its circles.
+bool on_body(const ImVec4& label, const b2Body* body, const Camera& camera) {
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() == b2Shape::e_polygon) {
+      const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      std::vector<ImVec2> polygon;
+      for (int k = 0; k < shape->m_count; ++k) polygon.push_back(camera.to_screen(body->GetWorldPoint(shape->m_vertices[k])));
+      if (overlaps_polygon(label, polygon)) return true;
+    } else if (fixture->GetType() == b2Shape::e_circle) {
+      const auto* shape = static_cast<const b2CircleShape*>(fixture->GetShape());
+      const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape->m_p));
+      const float radius = shape->m_radius * camera.pixels_per_metre;
+      // The box's point nearest the centre.
+      const float x = std::clamp(centre.x, label.x, label.z), y = std::clamp(centre.y, label.y, label.w);
+      if (std::hypot(x - centre.x, y - centre.y) < radius) return true;
+    }
+  }
+  return false;
+}
+
+// The trial: a slope's angle drawn under the block, a driven plank's word under the block on
+// it, forces' values on the bodies their arrows push (a wheel's normal force on the wheel, the
+// top block's on the bottom block). In the lessons with slopes, driven bodies, wheels, stacks
+// and ropes, at the start and as they run, at 1280 × 720 and with projector text: the slope's
+// angle and the word "driven" are placed labels, and they and every force's value (N, N·m) lie on
+// no moving body (only a contact's word goes into the body under it), nor on each other, nor
+// on an arrow (with every other rule of check_layout).
+TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesAndEachOther) {
+  struct Expected {
+    const char* lesson;
+    bool slope_angle, driven;  // shown whenever its lane is: the slope's corner, the driven body
+  };
+  const Expected lessons_tried[] = {{"incline", true, false},        {"wedge", false, true},
+                                    {"check_the_article", false, false}, {"driven_wheel", false, false},
+                                    {"stacked_blocks", false, false}, {"pulley", false, false}};
+  const double times[] = {0.0, 0.5, 1.5, 3.0};
+  int checked = 0;
+  for (const Screen& screen : {screens[0], screens[3]}) {
+    HeadlessRenderer renderer(screen.width, screen.height, ThemeName::light, screen.scale);
+    for (const Expected& expected : lessons_tried) {
+      for (const double t : times) {
+        LessonAt at(expected.lesson, {}, t);
+        FrameRecord record;
+        renderer.render(*at.lesson, at.framing, &record);
+        char when[32];
+        std::snprintf(when, sizeof when, " at %.1f s, ", t);
+        const std::string where = expected.lesson + std::string(when) + screen.name;
+        check_layout(record, *at.lesson, where);
+        int angles = 0, driven = 0;
+        for (const FrameRecord::Lane& lane : record.lanes) {
+          ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
+          for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+            const std::string& text = lane.texts[i];
+            const bool angle = text.size() > 2 && text.compare(text.size() - 2, 2, "\u00b0") == 0;
+            angles += angle ? 1 : 0;
+            driven += text == "driven" ? 1 : 0;
+            if (text.find("sticking") != std::string::npos || text.find("slipping") != std::string::npos) continue;
+            const ImVec4 label = drawn(lane.labels[i]);
+            for (const auto& [name, body] : at.lesson->scene().bodies()) {
+              if (body->GetType() != b2_dynamicBody) continue;
+              EXPECT_FALSE(on_body(label, body, lane.camera))
+                  << where << ": \"" << text << "\" at " << text_of(label) << " lies on " << name;
+            }
+            ++checked;
+          }
+        }
+        EXPECT_TRUE(!expected.slope_angle || angles >= 1) << where << ": the slope's angle is not a placed label";
+        EXPECT_TRUE(!expected.driven || driven >= 1) << where << ": the word \"driven\" is not a placed label";
+      }
+    }
+  }
+  EXPECT_GE(checked, 150);
 }
 
 std::string screen_name(const ::testing::TestParamInfo<Screen>& screen) { return screen.param.name; }

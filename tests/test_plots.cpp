@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
+#include <sstream>
+#include <string>
 
+#include "classroom_hands.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "rendering.h"
@@ -294,7 +298,7 @@ TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
 }
 
 // A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
-// window's μs and μk.
+// window's μs and μk, theta and omega their letters, a_x as aₓ.
 TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
   EXPECT_EQ(class_words("friction_force"), "friction force");
   EXPECT_EQ(class_words("slide_reduced"), "slide reduced");
@@ -306,9 +310,74 @@ TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
   EXPECT_EQ(class_words("mu_x"), "\u03bc x");
   EXPECT_EQ(class_words("music_k"), "music k") << "mu only as a word of its own";
   EXPECT_EQ(class_words("speed"), "speed");
+  // The Greek letters wedge's sliders spelt out, and a letter's index below the line.
+  EXPECT_EQ(class_words("theta0"), "\u03b80");
+  EXPECT_EQ(class_words("omega"), "\u03c9");
+  EXPECT_EQ(class_words("a_x"), "a\u2093");
+  EXPECT_EQ(class_words("a_x_omega"), "a\u2093 \u03c9");
+  EXPECT_EQ(class_words("thetas"), "thetas") << "the letter's name with only digits after it";
+  EXPECT_EQ(class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
+  EXPECT_EQ(class_words("x_top"), "x top") << "an index is one letter";
   lessons::Parameter push_rate;
   push_rate.name = "push_rate";
   EXPECT_EQ(parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
+}
+
+// What reads as a program's name rather than the subject's words: two word characters joined by
+// an underscore ("W_a", "asphalt_box"), or theta or omega spelt out ("theta0"); "" when none.
+std::string identifier_in(const std::string& text) {
+  static const std::regex identifier(R"([A-Za-z0-9]_[A-Za-z0-9]|(^|[^A-Za-z])(theta|omega)([^A-Za-z]|$))",
+                                     std::regex::icase);
+  std::smatch found;
+  return std::regex_search(text, found, identifier) ? found.str() : "";
+}
+
+// The trial: theory rows and legends named "W_a + W_g" and "asphalt_box: distance", sliders
+// named theta0 and omega. Every built-in lesson's names as the class reads them, in the window
+// (sliders, theory rows, the plot shown, tabs, at the run's end with the theory shown) and in
+// every plot of it (title, axes, legend: series, theory curves, shading), its predictions'
+// questions and its parameters' names and choices: none is a program's identifier. The menu
+// bar's path to the script is a file's name, not a name the lesson gives.
+TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
+  ASSERT_EQ(identifier_in("W_a + W_g"), "W_a");
+  ASSERT_NE(identifier_in("theta0"), "");
+  ASSERT_EQ(identifier_in("\u03b80 and \u03c9, a\u2093, asphalt box: distance"), "");
+  ASSERT_EQ(identifier_in("Omegas"), "") << "only the word itself";
+  int names = 0;
+  const auto check = [&](const std::string& lesson, const std::string& where, const std::string& text) {
+    ++names;
+    EXPECT_EQ(identifier_in(text), "") << lesson << ", " << where << ": \"" << text << "\"";
+  };
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = entry.name;
+    options.window.predictions = false;  // the theory table shown from the start
+    ClassroomHands hands(options);
+    lessons::Lesson& lesson = hands.lesson();
+    hands.classroom().playback().run_to(lesson.duration());
+    std::istringstream shown(hands.texts());
+    for (std::string line; std::getline(shown, line);) {
+      if (line.find(".lua") == std::string::npos) check(entry.name, "in the window", line);
+    }
+    for (std::size_t i = 0; i < lesson.plots().size(); ++i) {
+      const Chart chart = plot_chart(lesson, i, lesson.duration(), theme(ThemeName::light));
+      const std::string plot = "plot " + std::to_string(i + 1);
+      for (const std::string& text : {chart.title, chart.x_label, chart.y_label, chart.band_name}) check(entry.name, plot, text);
+      for (const ChartSeries& series : chart.series) check(entry.name, plot + "'s legend", series.name);
+      for (const ChartCurve& curve : chart.theory) check(entry.name, plot + "'s theory", curve.name);
+      for (const auto& [key, colour] : chart.colour_keys) check(entry.name, plot + "'s legend", key);
+    }
+    for (const lessons::ExpectationResult& row : lesson.expectations()) check(entry.name, "theory row", row.name);
+    for (const lessons::Prediction& prediction : lesson.predictions()) {
+      check(entry.name, "prediction", prediction.question);
+      for (const std::string& choice : prediction.choices) check(entry.name, "prediction's choice", choice);
+    }
+    for (const lessons::Parameter& parameter : lesson.parameters()) {
+      check(entry.name, "slider", parameter_title(parameter));
+      for (const std::string& choice : parameter.choices) check(entry.name, "slider's choice", choice);
+    }
+  }
+  EXPECT_GE(names, 1000);
 }
 
 // A script's path in the room the menu bar has: whole, else whole folders from its start and the

@@ -5,7 +5,9 @@
 // Keys come as the window layer passes them on: the key, and for Space the character it types.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "classroom_hands.h"
@@ -50,6 +52,53 @@ TEST(WindowKeys, EscapeClosesAnOpenMenuAndNothingElse) {
   EXPECT_FALSE(hands.classroom().playback().playing());
   EXPECT_EQ(hands.lesson().scene().frame(), 0);
   EXPECT_EQ(hands.classroom().window_settings().help, help);
+}
+
+// The trial: Escape closed a menu but not a dialog. Each of the Lesson menu's dialogs, opened and
+// given a path to act on (a setup of another lesson to open, a file to save, a script to open),
+// closes on Escape as on its Cancel: nothing is opened or saved, nothing plays, nothing else
+// changes, and the dialog opens again when asked.
+TEST(WindowKeys, EscapeClosesAnOpenDialogWithoutActing) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  const std::string lesson_path = hands.lesson().path();
+  // Something for each dialog to act on, were it to act: a setup of another lesson, a script.
+  const std::string setup = hands.folder() + "/push.setup";
+  {
+    std::ofstream file(setup);
+    file << "# FrictionLab setup\nlesson push\n";
+  }
+  const std::string script = lessons::resolve_lesson("spring_pull");
+  const auto files = [&] {
+    int count = 0;
+    for ([[maybe_unused]] const fs::directory_entry& entry : fs::directory_iterator(hands.folder())) ++count;
+    return count;
+  };
+  struct Case {
+    const char* menu_item;
+    std::string path;  // typed into its path box (a save's suggested name stays before it)
+  };
+  const Case cases[] = {{"Open a setup", setup}, {"Save as a setup", "x.setup"}, {"Open a script", script}};
+  for (const Case& dialog : cases) {
+    for (int round = 0; round < 2; ++round) {  // the second time: it opens again after Escape
+      hands.click("Lesson menu");
+      hands.click(dialog.menu_item);
+      hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+      ASSERT_TRUE(any_popup_open()) << dialog.menu_item << " opened, round " << round;
+      hands.type(dialog.path);  // each dialog puts the typing in its path box as it appears
+      ASSERT_TRUE(typing(hands)) << dialog.menu_item << ": typing in its path";
+      const std::string status = hands.classroom().status();
+      hands.key(Key::escape);
+      hands.frame();
+      EXPECT_FALSE(any_popup_open()) << "Escape closed " << dialog.menu_item << ", round " << round;
+      EXPECT_FALSE(typing(hands)) << dialog.menu_item;
+      EXPECT_EQ(hands.lesson().path(), lesson_path) << dialog.menu_item << " opened nothing";
+      EXPECT_EQ(files(), 1) << dialog.menu_item << " saved nothing";
+      EXPECT_EQ(hands.classroom().status(), status) << dialog.menu_item;
+      EXPECT_FALSE(hands.classroom().playback().playing()) << dialog.menu_item;
+      EXPECT_EQ(hands.lesson().scene().frame(), 0) << dialog.menu_item;
+    }
+  }
 }
 
 // The class watches the run, not the menu: with the Tools menu open, Space plays and R rewinds,
@@ -203,13 +252,35 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);
   EXPECT_NEAR(stopwatch.reading(now()), paused_at, 1e-12);
   EXPECT_NE(stopwatch.text(now(), false).find("(paused)"), std::string::npos);
-  // Played on to the run's end (1 s), where the window pauses: the reading stops there.
+  // Played on to the run's end (1 s), where the window pauses: the reading stops there, and it
+  // says it stopped with the run, not that someone paused it (the trial's "(paused)").
   hands.key(Key::space);
   for (int i = 0; i < 120; ++i) hands.frame(1.0 / 60.0);
   ASSERT_FALSE(hands.classroom().playback().playing()) << "the run ended";
   const double duration = hands.classroom().playback().readings().duration;
   EXPECT_NEAR(now(), duration, hands.lesson().scene().frame_step());
   EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12);
+  ASSERT_TRUE(hands.classroom().playback().at_run_end());
+  char said[64];
+  std::snprintf(said, sizeof said, "stopwatch %.2f s (stopped at the run's end)", now());
+  const auto shown_text = [&] {
+    FrameRecord record;
+    hands.frame(0.0, &record);
+    for (const FrameRecord::Lane& lane : record.lanes) {
+      for (const std::string& text : lane.texts) {
+        if (text.rfind("stopwatch ", 0) == 0) return text;
+      }
+    }
+    return std::string("no stopwatch drawn");
+  };
+  EXPECT_EQ(shown_text(), said) << "as the world view draws it";
+  // Played on past the end and paused by hand: paused, as it says.
+  hands.key(Key::space);
+  for (int i = 0; i < 6; ++i) hands.frame(1.0 / 60.0);
+  hands.key(Key::space);
+  EXPECT_FALSE(hands.classroom().playback().at_run_end());
+  std::snprintf(said, sizeof said, "stopwatch %.2f s (paused)", now());
+  EXPECT_EQ(shown_text(), said);
   // R: back to t = 0, where it read 0 and was armed.
   hands.key(Key::r);
   EXPECT_EQ(now(), 0.0);

@@ -131,7 +131,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   try_failed_script(watched);
 
   tools_.on = window_.tools;
-  tools_.follow(playback_->lesson(), playback_->playing());
+  tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
@@ -223,6 +223,15 @@ void Classroom::handle_keys() {
   const int dialogs = dialog_levels();
   const bool menu_open = ImGui::GetCurrentContext()->OpenPopupStack.Size > dialogs;
   const Typing typed = typing();
+  // Escape with a dialog open closes it, doing nothing it offers, as its Cancel does (the trial's
+  // teacher pressed Escape to leave "Save as a setup" and it stayed); a menu over a dialog closes
+  // first. Before the frame's dialogs are drawn, so the one closed draws nothing this frame and
+  // a path being typed in it goes with it.
+  if (hit(Key::escape, false) && dialogs > 0) {
+    if (menu_open) close_menus_ = true;
+    else ImGui::ClosePopupToLevel(dialogs - 1, true);
+    return;
+  }
   // Space in a box that takes a number (ui/text_boxes.h) ends the typing as Enter does (the value
   // kept; ImGui 1.86 reads Enter from the key's state, so it is pressed for this frame only) and
   // then plays: a teacher types the class's answer and presses Space to start. The box lets no

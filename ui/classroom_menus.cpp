@@ -162,7 +162,7 @@ void Classroom::help_panel() {
   if (ImGui::Begin("Help (F1 shows and hides it)", &window_.help)) {
     static const char* const keys[][2] = {
         {"Space", "play / pause; typing a number, ends the typing and plays"},
-        {"Esc", "closes an open menu (any key above acts and closes it)"},
+        {"Esc", "closes a menu or a dialog (with a menu open, keys act too)"},
         {". (period)", "one step of the lesson (1/hz s), paused"},
         {", (comma)", "one step back (replays the record)"},
         {"R", "reset to t = 0, keeping the values set"},

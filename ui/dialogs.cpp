@@ -74,7 +74,10 @@ std::string SetupDialog::draw(Classroom& classroom, const std::string& output_fo
   const float s = scale;
   ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
   const char* title = titles[static_cast<int>(kind)];
-  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return "";
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    kind = Kind::none;  // closed without its buttons (Escape): none is open any more
+    return "";
+  }
   std::string said;
   const bool saving = kind == Kind::save;
   ImGui::TextUnformatted(saving ? "Save the lesson, its values, the lock, the mystery and the predictions to:"

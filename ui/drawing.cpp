@@ -1,6 +1,7 @@
 #include "ui/drawing.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace frictionlab::ui {
 
@@ -64,8 +65,6 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, b
     return ImVec4(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
                   c.y + 0.5f * size.y + pad);
   };
-  // Candidates are moved inside the view first, so its edge is no obstacle here.
-  const auto free_at = [&](ImVec2 c) { return clear(box_at(c), off_bodies); };
   // Inside the view, so a label near its edge is moved in rather than cut.
   const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
   const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
@@ -73,23 +72,27 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, b
   const auto inside = [&](ImVec2 c) { return ImVec2(std::clamp(c.x, left, right), std::clamp(c.y, top, bottom)); };
   wanted = inside(wanted);
   // Rings of places around the wanted one, nearest first: above and below (a line of text
-  // apart), then to the sides, then the corners between.
+  // apart), then to the sides, then the corners between. Candidates are moved inside the view
+  // first, so its edge is no obstacle here.
   const float step_y = size.y + 2.0f * pad, step_x = 0.5f * size.x + pad;
   const ImVec2 directions[8] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
-  ImVec2 chosen = wanted;
-  bool found = free_at(wanted);
-  // Half steps, so a label fits a gap of one line and a half.
-  for (int ring = 1; ring <= 20 && !found; ++ring) {
-    const float reach = 0.5f * static_cast<float>(ring);
-    for (const ImVec2& d : directions) {
-      const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach));
-      if (free_at(candidate)) {
-        chosen = candidate;
-        found = true;
-        break;
+  const auto search = [&](bool keep_off_bodies) -> std::optional<ImVec2> {
+    if (clear(box_at(wanted), keep_off_bodies)) return wanted;
+    // Half steps, so a label fits a gap of one line and a half.
+    for (int ring = 1; ring <= 30; ++ring) {
+      const float reach = 0.5f * static_cast<float>(ring);
+      for (const ImVec2& d : directions) {
+        const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach));
+        if (clear(box_at(candidate), keep_off_bodies)) return candidate;
       }
     }
-  }
+    return std::nullopt;
+  };
+  // Where the bodies leave no room (a thin lane of blocks side by side), on a body rather than
+  // on another label.
+  std::optional<ImVec2> found = search(off_bodies);
+  if (!found && off_bodies) found = search(false);
+  const ImVec2 chosen = found.value_or(wanted);
   take(box_at(chosen), text);
   return chosen;
 }
@@ -132,10 +135,10 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
   // Just beyond the tip, far enough along the arrow's line that the text clears the head.
   const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
-  // A spring's arrow runs along the spring from the body it pulls, so its label, beyond the tip
-  // and off the coils, would otherwise settle on that body's edge.
-  const bool off_bodies = arrow.force.kind == ForceKind::spring;
-  draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size, text, off_bodies), colour, theme.panel,
+  // Off every moving body: a normal force's arrow points into the body it pushes (a wheel's
+  // from the road, a top block's from under it) and its value was drawn on that body; a
+  // spring's runs along the spring from the body it pulls and settled on its edge.
+  draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size, text, true), colour, theme.panel,
              text.c_str());
 }
 
@@ -171,7 +174,7 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
   const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
-  draw_label(draw, font, labels.place(wanted, size, text), colour, background, text.c_str());
+  draw_label(draw, font, labels.place(wanted, size, text, true), colour, background, text.c_str());
 }
 
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,

@@ -47,8 +47,9 @@ class LabelPlacer {
   // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
   void body(const ImVec4& box) { bodies_.push_back(box); }
   // Where a label of this size goes: at `wanted` (its centre), or the nearest place around it
-  // that covers no label, arrow or mark (nor body, with `off_bodies`); `wanted` itself when there
-  // is none near. `text` is kept with its box for the layout's tests.
+  // that covers no label, arrow or mark (nor body, with `off_bodies`, unless the bodies leave no
+  // such place near); `wanted` itself when there is none near. `text` is kept with its box for
+  // the layout's tests.
   ImVec2 place(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
   // Whether a label's box (padding included) would cover nothing known and stay in the view.
   bool free(const ImVec4& box, bool off_bodies) const;

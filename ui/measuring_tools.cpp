@@ -57,9 +57,15 @@ std::vector<double> Stopwatch::laps() const {
   return readings;
 }
 
-std::string Stopwatch::text(double now, bool playing) const {
+std::string Stopwatch::text(double now, bool playing, bool run_ended) const {
   const double shown = reading(now);
-  const char* state = !running() ? " (stopped)" : playing ? "" : shown == 0.0 ? " (starts with Play)" : " (paused)";
+  // At the run's end the stopwatch stopped with the run; "paused" told the trial's class that
+  // someone had paused it.
+  const char* state = !running()              ? " (stopped)"
+                      : playing               ? ""
+                      : shown == 0.0          ? " (starts with Play)"
+                      : run_ended             ? " (stopped at the run's end)"
+                                              : " (paused)";
   char line[64];
   std::snprintf(line, sizeof line, "stopwatch %.2f s%s", shown, state);
   std::string text = line;
@@ -175,12 +181,13 @@ std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body) 
   return weight;
 }
 
-void MeasuringTools::follow(const lessons::Lesson& lesson, bool playing) {
+void MeasuringTools::follow(const lessons::Lesson& lesson, bool playing, bool run_ended) {
   const Scene& scene = lesson.scene();
   // Back in time (R, a step back, the time bar, a rebuild): the stopwatch as it was then.
   if (scene.frame() < last_frame_) stopwatch.rewind(scene.time());
   last_frame_ = scene.frame();
   playing_ = playing;
+  run_ended_ = run_ended;
   arm_stopwatch(scene.time(), playing);
   if (scene.frame() != 0 && origin_) return;
   if (const std::optional<Surface> surface = surface_under(scene, measured_body(lesson))) origin_ = surface->point;
@@ -357,7 +364,7 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
     draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
   };
   if (on.stopwatch && first_lane) {
-    const std::string text = stopwatch.text(scene.time(), playing_);
+    const std::string text = stopwatch.text(scene.time(), playing_, run_ended_);
     const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
     label(fonts.body, ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + 0.5f * size.y), text);
   }

@@ -38,9 +38,10 @@ class Stopwatch {
   // Started or lapped since the last reset (a stopwatch shown but never used is armed by the tools).
   bool used() const { return used_; }
   std::vector<double> laps() const;  // their readings, oldest first
-  // "stopwatch 1.23 s" (while the lesson plays), "... (starts with Play)", "... (paused)" or
-  // "... (stopped)", with its last laps on lines below.
-  std::string text(double now, bool playing) const;
+  // "stopwatch 1.23 s" (while the lesson plays), "... (starts with Play)", "... (paused)",
+  // "... (stopped at the run's end)" (on, when the lesson's run ended by itself: `run_ended`)
+  // or "... (stopped)" (switched off), with its last laps on lines below.
+  std::string text(double now, bool playing, bool run_ended = false) const;
 
  private:
   struct Span {
@@ -110,7 +111,8 @@ class MeasuringTools {
   // Each frame before drawing: where distances count from (the main body's place on its surface
   // at t = 0, taken whenever the lesson is at t = 0), the stopwatch taken back with the lesson's
   // time, and a stopwatch shown but never used armed while the lesson is paused (Play starts it).
-  void follow(const lessons::Lesson& lesson, bool playing);
+  // `run_ended`: paused where the lesson's run ended by itself (Playback::at_run_end).
+  void follow(const lessons::Lesson& lesson, bool playing, bool run_ended = false);
   // The stopwatch shown (on.stopwatch) while the lesson is paused, and never used since its last
   // reset: armed at `now`, so that Play starts it.
   void arm_stopwatch(double now, bool playing);
@@ -137,7 +139,8 @@ class MeasuringTools {
  private:
   std::optional<b2Vec2> origin_;
   long last_frame_ = 0;  // the lesson's frame when last followed
-  bool playing_ = false;  // the lesson, when last followed: what the stopwatch's text says
+  bool playing_ = false;    // the lesson, when last followed: what the stopwatch's text says
+  bool run_ended_ = false;  // paused at the run's end, when last followed
 };
 
 }  // namespace frictionlab::ui

@@ -9,11 +9,13 @@
 #include "ui/panels.h"
 #include "ui/text_boxes.h"
 #include "ui/text_record.h"
+#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
 
-const char* const coefficient_letters[2] = {"\u03bcs", "\u03bck"};
+// The pair's two coefficients by their parameters' names, written as every other panel writes them.
+const char* const coefficients[2] = {"mu_s", "mu_k"};
 
 // The theory's tab in the tab bar being drawn, when it was drawn there this frame: a column too
 // short for the theory's own panel puts it first among the tabs (ui/frame.cpp names it
@@ -43,7 +45,9 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   const std::optional<Mystery>& mystery = classroom.mystery();
   const std::vector<std::string> pairs = mystery_pairs(classroom.playback().lesson());
   if (pairs.empty()) {
-    ImGui::TextDisabled("This lesson has no friction pair whose \u03bcs and \u03bck are sliders.");
+    const std::string none =
+        "This lesson has no friction pair whose " + class_words("mu_s") + " and " + class_words("mu_k") + " are sliders.";
+    ImGui::TextDisabled("%s", none.c_str());
   } else {
     ImGui::TextDisabled("Seed (the same seed draws the same values)");
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("0000000").x + 2.0f * ImGui::GetFrameHeight());
@@ -87,7 +91,8 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
   // the column shows four lines of a tab before it scrolls, and the reveal must be among them.
   // The pair's materials stay, but not their book values: a class that knows wood on wood's
   // would be misled (the trial's class was).
-  const std::string heading = "Measure \u03bcs and \u03bck of the mystery " + mystery.choice().pair +
+  const std::string heading = "Measure " + class_words("mu_s") + " and " + class_words("mu_k") + " of the mystery " +
+                              mystery.choice().pair +
                               " surface (its values drawn at random, not the book's):";
   shown_text(heading.c_str());
   const double truths[2] = {mystery.values().mu_s, mystery.values().mu_k};
@@ -97,13 +102,13 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
   for (int k = 0; k < 2; ++k) {
     ImGui::PushID(k);
     ImGui::AlignTextToFramePadding();
-    shown_text(coefficient_letters[k]);
+    shown_text(class_words(coefficients[k]).c_str());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(box);
     const bool entered = ImGui::InputText("##answer", answer_text[k], sizeof answer_text[k],
                                           ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_EnterReturnsTrue);
     takes_a_number();
-    remember_item(controls, std::string("mystery answer ") + (k == 0 ? "mu_s" : "mu_k"));
+    remember_item(controls, std::string("mystery answer ") + coefficients[k]);
     if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
       std::string why;
       const std::string typed = answer_text[k];

@@ -215,6 +215,11 @@ void Playback::step_and_check() {
   }
 }
 
+bool Playback::at_run_end() const {
+  const double h = lesson_->scene().frame_step();
+  return !playing_ && run_over_ && lesson_->scene().time() < readings_.duration + 0.5 * h;
+}
+
 std::string Playback::newly_fallen() const {
   const Scene& scene = lesson_->scene();
   float lowest = INFINITY;  // the lowest point of any fixed or driven body

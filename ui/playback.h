@@ -43,6 +43,8 @@ class Playback {
   // (the lesson then runs slower than asked, and behind() says so).
   void advance(double wall_seconds);
   bool playing() const { return playing_; }
+  // Paused where the lesson's run ended by itself (not played on past it since).
+  bool at_run_end() const;
   void play();
   // Paused (or stopped by itself: the run's end, a fall, a failure), the rows are read again
   // at the next frame, whatever the wall clock says: a paused window waits for input and

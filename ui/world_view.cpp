@@ -15,6 +15,16 @@ namespace {
 
 constexpr float pi = 3.14159265358979f;
 
+// A label that names a place in the world (a slope's angle, a driven body), drawn with the
+// world's other labels once every arrow, mark and moving body is known to the placer: near its
+// place, off the moving bodies and every other label.
+struct PlaceLabel {
+  ImVec2 wanted;  // its centre, where it would go with nothing in the way
+  std::string text;
+  ImFont* font;
+  ImU32 colour, background;
+};
+
 // The ground in its material's colour, as far as it really goes (a body beyond its end falls).
 void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture, const Camera& camera,
                  const Theme& theme) {
@@ -42,7 +52,7 @@ void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture,
 
 // Slopes: at a corner between a level edge and a sloping one, the angle between them.
 void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,
-                       const Theme& theme, const Fonts& fonts) {
+                       const Theme& theme, const Fonts& fonts, std::vector<PlaceLabel>& place_labels) {
   const int n = shape.m_count;
   for (int i = 0; i < n; ++i) {
     const b2Vec2 corner = body->GetWorldPoint(shape.m_vertices[i]);
@@ -93,13 +103,13 @@ void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShap
       std::snprintf(text, sizeof text, "%.3g°", static_cast<double>(angle * 180.0f / pi));
       const ImVec2 at = add(centre, ImVec2(std::cos(middle) * (radius + 24.0f * fonts.scale),
                                            std::sin(middle) * (radius + 12.0f * fonts.scale)));
-      draw_label(draw, fonts.body, at, theme.text, 0, text);
+      place_labels.push_back({at, text, fonts.body, theme.text, 0});
     }
   }
 }
 
 void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const Camera& camera, const Theme& theme,
-               const Fonts& fonts) {
+               const Fonts& fonts, std::vector<PlaceLabel>& place_labels) {
   const bool driven = body->GetType() == b2_kinematicBody;
   const ImU32 outline = driven ? theme.driven_outline : theme.outline;
   const float thickness = (driven ? 3.0f : 1.5f) * fonts.scale;
@@ -113,7 +123,7 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
     if (fixture->GetType() == b2Shape::e_polygon) {
       const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
       draw_polygon(draw, body, shape, camera, fill, outline, thickness);
-      if (body->GetType() == b2_staticBody) mark_slope_angles(draw, body, shape, camera, theme, fonts);
+      if (body->GetType() == b2_staticBody) mark_slope_angles(draw, body, shape, camera, theme, fonts, place_labels);
     } else if (fixture->GetType() == b2Shape::e_circle) {
       const auto& shape = *static_cast<const b2CircleShape*>(fixture->GetShape());
       const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape.m_p));
@@ -161,7 +171,7 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
         break;
       }
     }
-    draw_label(draw, fonts.small, camera.to_screen(at), theme.driven_outline, theme.panel, "driven");
+    place_labels.push_back({camera.to_screen(at), "driven", fonts.small, theme.driven_outline, theme.panel});
   }
 }
 
@@ -244,8 +254,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
                 const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
   const Scene& scene = lesson.scene();
   draw->AddRectFilled(camera.origin, add(camera.origin, camera.size), theme.sky);
+  std::vector<PlaceLabel> place_labels;
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() == b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts);
+    if (body->GetType() == b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
   }
   draw_ropes(draw, lesson, camera, theme, fonts.scale);
   for (const Spring& spring : scene.springs()) {
@@ -258,7 +269,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     if (!spring.other) draw_hand(draw, to, theme, fonts, labels);
   }
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts);
+    if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
   }
   // Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped)
   // but their labels would otherwise be pushed into the lane by the label placer.
@@ -310,6 +321,14 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
   // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
   if (fixed_labels) fixed_labels();
+  // The labels of places (a slope's angle, a driven body), before the labels that go with an
+  // arrow or a mark, which keep off them; none on a moving body (the trial found a slope's angle
+  // under a block, a driven plank's word under the block on it).
+  for (const PlaceLabel& label : place_labels) {
+    const ImVec2 size = label.font->CalcTextSizeA(label.font->FontSize, 1e6f, 0.0f, label.text.c_str());
+    draw_label(draw, label.font, labels.place(label.wanted, size, label.text, true), label.colour, label.background,
+               label.text.c_str());
+  }
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
   std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool>> said;
   for (const ContactMark& mark : marks) {
