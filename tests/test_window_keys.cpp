@@ -243,10 +243,17 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   const auto now = [&] { return hands.lesson().scene().time(); };
   EXPECT_TRUE(stopwatch.running()) << "armed before the run";
   EXPECT_EQ(stopwatch.text(0.0, false), "stopwatch 0.00 s (starts with Play)");
+  // Armed, it has not started: the Tools menu offers to disarm it, not to stop it (the trial's
+  // menu said "Stop the stopwatch" at 0.00 s), and there is no lap to take.
+  EXPECT_TRUE(stopwatch.armed(0.0));
+  EXPECT_STREQ(stopwatch.start_stop_words(0.0), "Disarm the stopwatch (it starts with Play)");
+  hands.key(Key::l);
+  EXPECT_TRUE(stopwatch.laps().empty()) << "a lap of 0 s, before anything was timed";
   hands.key(Key::space);
   for (int i = 0; i < 24; ++i) hands.frame(1.0 / 60.0);
   EXPECT_GT(now(), 0.3);
   EXPECT_NEAR(stopwatch.reading(now()), now(), 1e-12) << "it started with Play, at t = 0";
+  EXPECT_STREQ(stopwatch.start_stop_words(now()), "Stop the stopwatch");
   hands.key(Key::space);  // pause
   const double paused_at = now();
   for (int i = 0; i < 30; ++i) hands.frame(1.0 / 60.0);

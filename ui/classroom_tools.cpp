@@ -20,12 +20,14 @@ void Classroom::tools_menu() {
     tools_.arm_stopwatch(now, playback_->playing());
   }
   remember("tool stopwatch");
-  if (ImGui::MenuItem(tools_.stopwatch.running() ? "Stop the stopwatch" : "Start the stopwatch", "W")) {
+  // Armed before the run, it has not started: the trial's menu offered to stop it, and a lap of 0 s.
+  const bool armed = tools_.stopwatch.armed(now);
+  if (ImGui::MenuItem(tools_.stopwatch.start_stop_words(now), "W")) {
     on.stopwatch = true;
     tools_.stopwatch.start_stop(now);
   }
   remember("stopwatch start");
-  if (ImGui::MenuItem("Lap", "L", false, tools_.stopwatch.running())) tools_.stopwatch.lap(now);
+  if (ImGui::MenuItem("Lap", "L", false, tools_.stopwatch.running() && !armed)) tools_.stopwatch.lap(now);
   remember("stopwatch lap");
   if (ImGui::MenuItem("Reset the stopwatch")) tools_.stopwatch.reset();
   remember("stopwatch reset");

@@ -31,7 +31,7 @@ void Stopwatch::start_stop(double now) {
 }
 
 void Stopwatch::lap(double now) {
-  if (!running()) return;
+  if (!running() || armed(now)) return;  // armed, it has nothing to lap yet
   used_ = true;
   laps_.push_back({now, reading(now)});
 }
@@ -63,7 +63,7 @@ std::string Stopwatch::text(double now, bool playing, bool run_ended) const {
   // someone had paused it.
   const char* state = !running()              ? " (stopped)"
                       : playing               ? ""
-                      : shown == 0.0          ? " (starts with Play)"
+                      : armed(now)            ? " (starts with Play)"
                       : run_ended             ? " (stopped at the run's end)"
                                               : " (paused)";
   char line[64];

@@ -35,6 +35,12 @@ class Stopwatch {
   void rewind(double now);
   double reading(double now) const;  // s of lesson time it was on, up to `now`
   bool running() const { return !spans_.empty() && spans_.back().on(); }  // on: counting lesson time
+  // On but still at 0 s at `now`: it starts counting when the lesson's time moves (Play).
+  bool armed(double now) const { return running() && reading(now) == 0.0; }
+  // What W does now, in the Tools menu's words: armed, it has not started, so W disarms it.
+  const char* start_stop_words(double now) const {
+    return armed(now) ? "Disarm the stopwatch (it starts with Play)" : running() ? "Stop the stopwatch" : "Start the stopwatch";
+  }
   // Started or lapped since the last reset (a stopwatch shown but never used is armed by the tools).
   bool used() const { return used_; }
   std::vector<double> laps() const;  // their readings, oldest first
