@@ -355,5 +355,29 @@ TEST(Stopwatch, TakenBackInTimeItReadsWhatItReadThen) {
   EXPECT_EQ(stopwatch.text(0.0, false), "stopwatch 0.00 s (stopped)");
 }
 
+// The plots' page buttons are drawn as ← and →, and the trial's teacher pressed those keys: they
+// turn the pages as the buttons do, and stop at the first and the last.
+TEST(WindowKeys, TheArrowKeysTurnThePlotsPages) {
+  ClassroomOptions options = lesson_options("spring_pull");
+  options.window.projector = true;
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  const auto first_plot = [&] {
+    FrameRecord record;
+    hands.frame();
+    hands.frame(0.0, &record);
+    return record.plots.empty() ? std::size_t{999} : record.plots.front().number;
+  };
+  const std::size_t start = first_plot();
+  ASSERT_EQ(start, 0u) << "the first page shows the first plot";
+  hands.key(Key::right);
+  const std::size_t next = first_plot();
+  ASSERT_GT(next, start) << "spring_pull's plots come a page at a time on a projector";
+  hands.key(Key::right);
+  hands.key(Key::right);
+  EXPECT_GE(first_plot(), next) << "past the last page it stays there";
+  for (int i = 0; i < 4; ++i) hands.key(Key::left);
+  EXPECT_EQ(first_plot(), start);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

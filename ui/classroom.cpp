@@ -160,6 +160,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     style.show_extra_plot = hand_held_;
   }
   style.hidden = hidden_values();
+  style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
   style.more_tabs = [this, s] {
     if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
     if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
@@ -271,6 +272,9 @@ void Classroom::handle_keys() {
     tools_.stopwatch.start_stop(now);
   }
   if (hit(Key::l, false)) tools_.stopwatch.lap(now);
+  // The plots' page buttons are drawn as ← and →: the keys turn the pages too.
+  if (hit(Key::left, false)) --turn_plot_pages_;
+  if (hit(Key::right, false)) ++turn_plot_pages_;
   if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
 }
 

@@ -292,6 +292,7 @@ class Classroom {
   std::string failed_script_, failed_error_;
   double since_failed_check_ = 0.0;
   double waited_ = 0.0;  // see waited()
+  int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
   FileStamp failed_stamp_;
 };
 

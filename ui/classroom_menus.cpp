@@ -175,6 +175,7 @@ void Classroom::help_panel() {
         {"F11", "full screen"},
         {"W", "start / stop the stopwatch (lesson time)"},
         {"L", "the stopwatch's lap"},
+        {"\u2190 \u2192", "the plots' pages, when they are shown a page at a time"},
         {"F1", "this help"},
     };
     // The keys' column as wide as its widest key, the words wrapped in what is left: at

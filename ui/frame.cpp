@@ -255,6 +255,10 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       ImGuiStorage* state = ImGui::GetStateStorage();
       const ImGuiID kept = ImGui::GetID("page");
       page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
+      if (style.turn_plot_pages != 0) {
+        const long turned = static_cast<long>(page) + style.turn_plot_pages;
+        page = static_cast<std::size_t>(std::clamp<long>(turned, 0, static_cast<long>(page_count) - 1));
+      }
       if (style.show_extra_plot && style.extra_plot) page = page_count - 1;  // the extra plot is the last
       const auto turn = [&](const char* label, bool enabled, std::size_t to) {
         ImGui::BeginDisabled(!enabled);

@@ -101,6 +101,8 @@ struct FrameStyle {
   // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
   // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
   bool show_extra_plot = false;
+  // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
+  int turn_plot_pages = 0;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
   HiddenValues hidden;
   // Nothing may show the theory yet: kept back for the class's predictions, or giving a mystery away.

@@ -5,6 +5,6 @@
 
 namespace frictionlab::ui {
 
-enum class Key { space, escape, period, comma, r, f1, f5, f11, p, d, s, e, t, w, l };
+enum class Key { space, escape, period, comma, r, f1, f5, f11, p, d, s, e, t, w, l, left, right };
 
 }  // namespace frictionlab::ui

@@ -49,6 +49,8 @@ std::optional<Key> classroom_key(int glfw_key) {
     case GLFW_KEY_E: return Key::e;
     case GLFW_KEY_W: return Key::w;
     case GLFW_KEY_L: return Key::l;
+    case GLFW_KEY_LEFT: return Key::left;
+    case GLFW_KEY_RIGHT: return Key::right;
     default: return std::nullopt;
   }
 }
