@@ -60,6 +60,17 @@ bool LabelPlacer::free(const ImVec4& box, bool off_bodies) const {
 }
 
 ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
+  if (const std::optional<ImVec2> found = place_if_free(wanted, size, text, off_bodies)) return *found;
+  // Nowhere free: where it was wanted, moved inside the view, over what is there.
+  const float pad = 2.0f;
+  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  const ImVec2 at(std::clamp(wanted.x, low_.x + half_x, std::max(low_.x + half_x, high_.x - half_x)),
+                  std::clamp(wanted.y, low_.y + half_y, std::max(low_.y + half_y, high_.y - half_y)));
+  take(ImVec4(at.x - half_x, at.y - half_y, at.x + half_x, at.y + half_y), text);
+  return at;
+}
+
+std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
   const float pad = 2.0f;
   const auto box_at = [&](ImVec2 c) {
     return ImVec4(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
@@ -92,9 +103,8 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, b
   // on another label.
   std::optional<ImVec2> found = search(off_bodies);
   if (!found && off_bodies) found = search(false);
-  const ImVec2 chosen = found.value_or(wanted);
-  take(box_at(chosen), text);
-  return chosen;
+  if (found) take(box_at(*found), text);
+  return found;
 }
 
 void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU32 background, const char* text) {
@@ -138,8 +148,9 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   // Off every moving body: a normal force's arrow points into the body it pushes (a wheel's
   // from the road, a top block's from under it) and its value was drawn on that body; a
   // spring's runs along the spring from the body it pulls and settled on its edge.
-  draw_label(draw, font, labels.place(add(arrow.tip, mul(unit, reach)), size, text, true), colour, theme.panel,
-             text.c_str());
+  if (const std::optional<ImVec2> at = labels.place_if_free(add(arrow.tip, mul(unit, reach)), size, text, true)) {
+    draw_label(draw, font, *at, colour, theme.panel, text.c_str());
+  }
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
@@ -174,7 +185,9 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
   const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
-  draw_label(draw, font, labels.place(wanted, size, text, true), colour, background, text.c_str());
+  if (const std::optional<ImVec2> at = labels.place_if_free(wanted, size, text, true)) {
+    draw_label(draw, font, *at, colour, background, text.c_str());
+  }
 }
 
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,

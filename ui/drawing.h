@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ class LabelPlacer {
   // such place near); `wanted` itself when there is none near. `text` is kept with its box for
   // the layout's tests.
   ImVec2 place(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // As place(), but nowhere (nullopt, nothing taken) when no place near is free: a force's value
+  // or a contact's word left out is better than one drawn over another label, where neither
+  // can be read (a projector's thin lanes of blocks side by side).
+  std::optional<ImVec2> place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
   // Whether a label's box (padding included) would cover nothing known and stay in the view.
   bool free(const ImVec4& box, bool off_bodies) const;
   // Takes a box found free() as it is: a label that names a place (a distance mark's number)

@@ -307,8 +307,14 @@ void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lesso
                               LabelPlacer& labels) const {
   switch (pass) {
     case WorldToolsPass::avoid: avoid(lesson, camera, newtons_to_pixels, fonts.scale, labels); break;
-    case WorldToolsPass::fixed_labels: draw_distance_marks(draw, lesson, camera, theme, fonts, labels); break;
-    case WorldToolsPass::draw: this->draw(draw, lesson, camera, newtons_to_pixels, theme, fonts, first_lane, labels); break;
+    case WorldToolsPass::fixed_labels:
+      draw_distance_marks(draw, lesson, camera, theme, fonts, labels);
+      // The stopwatch and the speed next, each in its place or the nearest free one: before the
+      // lesson's labels, which then keep off them (placed last, they had no room left and
+      // covered a lane's name, the forces' values or the body they read).
+      draw_readings(draw, lesson, camera, theme, fonts, first_lane, labels);
+      break;
+    case WorldToolsPass::draw: this->draw(draw, lesson, camera, newtons_to_pixels, theme, fonts, labels); break;
   }
 }
 
@@ -353,8 +359,30 @@ void MeasuringTools::draw_distance_marks(ImDrawList* draw, const lessons::Lesson
   }
 }
 
+void MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                                   const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
+  const float s = fonts.scale;
+  // Keeps off every moving body, unless the bodies leave no room near.
+  const auto reading = [&](ImVec2 wanted, const std::string& text) {
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
+    const ImVec2 at = labels.place(ImVec2(wanted.x, wanted.y - 0.5f * size.y), ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
+    draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
+  };
+  if (on.stopwatch && first_lane) {
+    const std::string text = stopwatch.text(lesson.scene().time(), playing_, run_ended_);
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
+    reading(ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + size.y), text);
+  }
+  const b2Body* body = measured_body(lesson);
+  if (on.speed && body != nullptr && in_lane(camera, body)) {
+    const b2AABB box = body_box(body);
+    const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
+    reading(ImVec2(top.x, top.y - 10.0f * s), speed_reading(body));
+  }
+}
+
 void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
-                          const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
+                          const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
   // A reading of the body keeps off it (and off every other moving body).
@@ -363,11 +391,6 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
     const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
     draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
   };
-  if (on.stopwatch && first_lane) {
-    const std::string text = stopwatch.text(scene.time(), playing_, run_ended_);
-    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-    label(fonts.body, ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + 0.5f * size.y), text);
-  }
   const b2Body* body = measured_body(lesson);
   if (body == nullptr || !in_lane(camera, body)) return;
   if (on.weight_components) {
@@ -388,13 +411,6 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
       beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + format_quantity(weight->along, "N"));
       beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));
     }
-  }
-  if (on.speed) {
-    const b2AABB box = body_box(body);
-    const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
-    const std::string text = speed_reading(body);
-    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-    label(fonts.body, ImVec2(top.x, top.y - 10.0f * s - 0.5f * size.y), text);
   }
 }
 

@@ -137,9 +137,14 @@ class MeasuringTools {
   // lesson's labels are placed (WorldToolsPass::fixed_labels), which then keep off the numbers.
   void draw_distance_marks(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                            const Fonts& fonts, LabelPlacer& labels) const;
-  // The stopwatch, the weight's components and the speed, whose labels keep off the bodies.
+  // The stopwatch (in the first lane's corner) and the speed (above the body), each there or in
+  // the nearest place free of what the placer knows; called before the lesson's labels are
+  // placed (WorldToolsPass::fixed_labels), which keep off them.
+  void draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                     const Fonts& fonts, bool first_lane, LabelPlacer& labels) const;
+  // The weight's components, whose labels keep off the bodies.
   void draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, float newtons_to_pixels,
-            const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const;
+            const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
   std::optional<b2Vec2> distance_origin() const { return origin_; }
 
  private:

@@ -244,7 +244,9 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   const b2Vec2 along = side * mark.tangent;
   const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
   const ImVec2 wanted(at.x + along.x * reach + into.x * depth, at.y - along.y * reach - into.y * depth);
-  draw_label(draw, fonts.small, labels.place(wanted, size, text), colour, theme.panel, text.c_str());
+  if (const std::optional<ImVec2> placed = labels.place_if_free(wanted, size, text)) {
+    draw_label(draw, fonts.small, *placed, colour, theme.panel, text.c_str());
+  }
 }
 
 }  // namespace
