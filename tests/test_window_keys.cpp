@@ -281,6 +281,13 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
     return std::string("no stopwatch drawn");
   };
   EXPECT_EQ(shown_text(), said) << "as the world view draws it";
+  // A step back from the end is no longer the run's end: paused there.
+  hands.key(Key::comma);
+  EXPECT_FALSE(hands.classroom().playback().at_run_end());
+  std::snprintf(said, sizeof said, "stopwatch %.2f s (paused)", now());
+  EXPECT_EQ(shown_text(), said);
+  hands.key(Key::period);
+  ASSERT_TRUE(hands.classroom().playback().at_run_end()) << "stepped forward to the end again";
   // Played on past the end and paused by hand: paused, as it says.
   hands.key(Key::space);
   for (int i = 0; i < 6; ++i) hands.frame(1.0 / 60.0);

@@ -217,7 +217,9 @@ void Playback::step_and_check() {
 
 bool Playback::at_run_end() const {
   const double h = lesson_->scene().frame_step();
-  return !playing_ && run_over_ && lesson_->scene().time() < readings_.duration + 0.5 * h;
+  // At the end itself: a step back (",") or the time bar leaves the run's end behind.
+  const double t = lesson_->scene().time();
+  return !playing_ && run_over_ && t + 0.5 * h >= readings_.duration && t < readings_.duration + 0.5 * h;
 }
 
 std::string Playback::newly_fallen() const {
