@@ -75,7 +75,7 @@ plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_
 -- The speed rather than the acceleration: a straight line whose slope is the acceleration
 -- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
 plot { "Speed of the block", kind = "time", y = { "speed" },
-  theory = { { "a·t, a = g·(M − μk·m)/(m + M)", function(t) return pulley_theory().acceleration * t end } } }
+  theory = { { "a·t, a = g·(M − μk·m)/(m + M), m the block's mass", function(t) return pulley_theory().acceleration * t end } } }
 
 -- Reading the record ----------------------------------------------------------------------
 local function at_the_end(probe)

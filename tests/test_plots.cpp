@@ -326,7 +326,7 @@ TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
 // What reads as a program's name rather than the subject's words: two word characters joined by
 // an underscore ("W_a", "asphalt_box"), or theta or omega spelt out ("theta0"); "" when none.
 std::string identifier_in(const std::string& text) {
-  static const std::regex identifier(R"([A-Za-z0-9]_[A-Za-z0-9]|(^|[^A-Za-z])(theta|omega)([^A-Za-z]|$))",
+  static const std::regex identifier(R"([A-Za-z0-9]_[A-Za-z0-9]|(^|[^A-Za-z])(theta|omega|alpha)([^A-Za-z]|$))",
                                      std::regex::icase);
   std::smatch found;
   return std::regex_search(text, found, identifier) ? found.str() : "";

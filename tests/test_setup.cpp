@@ -304,15 +304,15 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
 // Row names hold spaces, '·', '(' and '=': a prediction's line is split at its last '='.
 TEST(SetupFile, APredictionsRowNameMayHoldAnythingButALineBreak) {
   const PreparedSetup read = parse_setup(
-      "lesson terrain\npredict hack_box: speed at the end (drifts down a slope) = 0.25\npredict μk = tan θ · x =slides back\n"
-      "predict ice_box: then=stays\n",
+      "lesson terrain\npredict hack box: speed at the end (drifts down a slope) = 0.25\npredict μk = tan θ · x =slides back\n"
+      "predict ice box: then=stays\n",
       "class.setup");
   ASSERT_EQ(read.answers.size(), 3u);
-  EXPECT_EQ(read.answers[0].row, "hack_box: speed at the end (drifts down a slope)");
+  EXPECT_EQ(read.answers[0].row, "hack box: speed at the end (drifts down a slope)");
   EXPECT_EQ(read.answers[0].text, "0.25");
   EXPECT_EQ(read.answers[1].row, "μk = tan θ · x");
   EXPECT_EQ(read.answers[1].text, "slides back");
-  EXPECT_EQ(read.answers[2].row, "ice_box: then");
+  EXPECT_EQ(read.answers[2].row, "ice box: then");
   EXPECT_EQ(read.answers[2].line, 4);
   const PreparedSetup again = parse_setup(setup_text(read), "again.setup");
   ASSERT_EQ(again.answers.size(), 3u);
@@ -323,7 +323,7 @@ TEST(SetupFile, APredictionsRowNameMayHoldAnythingButALineBreak) {
   // What a line cannot hold as it is is refused when saving, not written to read back otherwise.
   PreparedSetup odd;
   odd.lesson = "terrain";
-  odd.answers = {{"ice_box: then", "a = b", 0}};
+  odd.answers = {{"ice box: then", "a = b", 0}};
   ClassroomOptions options;
   options.lesson = "terrain";
   ClassroomHands hands(options);
@@ -332,11 +332,11 @@ TEST(SetupFile, APredictionsRowNameMayHoldAnythingButALineBreak) {
     write_setup(path, odd);
     ADD_FAILURE() << "an answer holding '=' was written";
   } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find(path + ": the class's answer \"a = b\" to \"ice_box: then\" cannot be written"),
+    EXPECT_NE(std::string(error.what()).find(path + ": the class's answer \"a = b\" to \"ice box: then\" cannot be written"),
               std::string::npos)
         << error.what();
   }
-  odd.answers = {{" ice_box: then", "stays", 0}};
+  odd.answers = {{" ice box: then", "stays", 0}};
   EXPECT_THROW(write_setup(path, odd), InvalidInput);
   EXPECT_FALSE(fs::exists(path));
 }
