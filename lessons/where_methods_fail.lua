@@ -37,29 +37,31 @@ local small = parameter { "small_epsilon", 0.002, min = 0.0001, max = 0.05, unit
 -- Each block has its own material, so that its pair with the slope can have its own treatment;
 -- the two regularized pairs take the stick-slip pair's mu_s and mu_k (one pair of sliders).
 material { "block", density = 500, note = "the mass is set on the block itself" }
-material { "creeping_block", density = 500, note = "the mass is set on the block itself" }
-material { "jittering_block", density = 500, note = "the mass is set on the block itself" }
+material { "soft_law_block", density = 500, note = "the mass is set on the block itself" }
+material { "stiff_law_block", density = 500, note = "the mass is set on the block itself" }
 material { "slope", density = 500, note = "fixed, so its density plays no part" }
 pair { "block", "slope", mu_s = 0.6, mu_k = 0.5, treatment = "stick-slip" }
-pair { "creeping_block", "slope", like = { "block", "slope" }, treatment = "regularized", epsilon = large }
-pair { "jittering_block", "slope", like = { "block", "slope" }, treatment = "regularized", epsilon = small }
+pair { "soft_law_block", "slope", like = { "block", "slope" }, treatment = "regularized", epsilon = large }
+pair { "stiff_law_block", "slope", like = { "block", "slope" }, treatment = "regularized", epsilon = small }
 -- The blocks stand apart and never touch, but any two that could need values.
-pair { "block", "creeping_block", like = { "block", "slope" } }
-pair { "block", "jittering_block", like = { "block", "slope" } }
-pair { "creeping_block", "jittering_block", like = { "block", "slope" } }
+pair { "block", "soft_law_block", like = { "block", "slope" } }
+pair { "block", "stiff_law_block", like = { "block", "slope" } }
+pair { "soft_law_block", "stiff_law_block", like = { "block", "slope" } }
 pair { "block", "block", like = { "block", "slope" } }
-pair { "creeping_block", "creeping_block", like = { "block", "slope" } }
-pair { "jittering_block", "jittering_block", like = { "block", "slope" } }
+pair { "soft_law_block", "soft_law_block", like = { "block", "slope" } }
+pair { "stiff_law_block", "stiff_law_block", like = { "block", "slope" } }
 
 -- World -----------------------------------------------------------------------------------
 ground { material = "slope" }
 local slope = incline { "slope", material = "slope", angle = angle, length = 8 }
 local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 5.6, mass = 1 }
-local creeping = box { "creeping", material = "creeping_block", width = 0.4, height = 0.2, on = slope, at = 4.4, mass = 1 }
+local creeping = box { "creeping", material = "soft_law_block", width = 0.4, height = 0.2, on = slope, at = 4.4, mass = 1 }
 -- 1.2 m apart: close enough to be seen together, and the creep (3 cm/s) never closes the gap.
-local jittering = box { "jittering", material = "jittering_block", width = 0.4, height = 0.2, on = slope, at = 3.2, mass = 1 }
+local jittering = box { "jittering", material = "stiff_law_block", width = 0.4, height = 0.2, on = slope, at = 3.2, mass = 1 }
 -- A strip each, on its own block: the three methods side by side, each big enough to read.
-view { lanes = { block, creeping, jittering }, titles = { "stick-slip", "regularized, large epsilon: creeps", "regularized, small epsilon: jitters" } }
+-- The lanes and plots name each block by its law and threshold, not by what it does: the class
+-- predicts that (a lane called "jitters" gave the answer away before Play).
+view { lanes = { block, creeping, jittering }, titles = { "stick-slip", "regularized, large threshold ε", "regularized, small threshold ε" } }
 local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 
 -- Probes and plots ------------------------------------------------------------------------
@@ -72,7 +74,7 @@ probe { "small_epsilon_speed", unit = "m/s", read = { jittering, "speed", along 
 probe { "small_epsilon_distance", unit = "m", read = { jittering, "distance", along = downhill } }
 
 plot { "Distance down the slope", y = { "large_epsilon_distance", "stick_slip", "exact" } }
-plot { "Speed: the small threshold jitters", y = { "small_epsilon_speed", "stick_slip_speed" } }
+plot { "Speed down the slope", y = { "small_epsilon_speed", "stick_slip_speed" } }
 
 -- Expectations ----------------------------------------------------------------------------
 -- Read as the lesson runs, once half a second has shown what each does. Stick-slip holds

@@ -673,9 +673,9 @@ TEST(BuiltinLessons, WhereMethodsFailStepsItsThreeBlocksEachWithItsOwnTreatment)
     const PairTable& pairs = scene.pairs();
     const int slope = pairs.material_id("slope");
     EXPECT_EQ(scene.friction().treatment_of(pairs.material_id("block"), slope), FrictionTreatment::stick_slip);
-    EXPECT_EQ(scene.friction().treatment_of(pairs.material_id("creeping_block"), slope), FrictionTreatment::regularized);
-    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("creeping_block"), slope), 0.05);
-    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("jittering_block"), slope), 0.002);
+    EXPECT_EQ(scene.friction().treatment_of(pairs.material_id("soft_law_block"), slope), FrictionTreatment::regularized);
+    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("soft_law_block"), slope), 0.05);
+    EXPECT_EQ(scene.friction().epsilon_of(pairs.material_id("stiff_law_block"), slope), 0.002);
     const b2Vec2 block = scene.body("block")->GetPosition();
     const b2Vec2 creeping = scene.body("creeping")->GetPosition();
     run_for(lesson, 1.5);

@@ -192,7 +192,7 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
 }
 
 // The world's words for the class too: the legend's materials and the free-body diagram's
-// body in words (where_methods_fail's "creeping_block" material, terrain's "asphalt_box").
+// body in words (where_methods_fail's "soft_law_block" material, terrain's "asphalt_box").
 TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
   HeadlessRenderer renderer(frame_width, frame_height);
   const auto texts_of = [&](const std::string& lesson, double t) {
@@ -204,8 +204,8 @@ TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
     return all;
   };
   const std::string where_methods_fail = texts_of("where_methods_fail", 1.0);
-  EXPECT_NE(where_methods_fail.find("\ncreeping block\n"), std::string::npos) << where_methods_fail;
-  EXPECT_EQ(where_methods_fail.find("creeping_block"), std::string::npos) << where_methods_fail;
+  EXPECT_NE(where_methods_fail.find("\nsoft law block\n"), std::string::npos) << where_methods_fail;
+  EXPECT_EQ(where_methods_fail.find("soft_law_block"), std::string::npos) << where_methods_fail;
   const std::string terrain = texts_of("terrain", 1.0);
   EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
 }

@@ -315,6 +315,7 @@ TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
   EXPECT_EQ(class_words("omega"), "\u03c9");
   EXPECT_EQ(class_words("a_x"), "a\u2093");
   EXPECT_EQ(class_words("a_x_omega"), "a\u2093 \u03c9");
+  EXPECT_EQ(class_words("large_epsilon_distance"), "large \u03b5 distance") << "where_methods_fail's probes";
   EXPECT_EQ(class_words("thetas"), "thetas") << "the letter's name with only digits after it";
   EXPECT_EQ(class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
   EXPECT_EQ(class_words("x_top"), "x top") << "an index is one letter";
@@ -326,7 +327,7 @@ TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
 // What reads as a program's name rather than the subject's words: two word characters joined by
 // an underscore ("W_a", "asphalt_box"), or theta or omega spelt out ("theta0"); "" when none.
 std::string identifier_in(const std::string& text) {
-  static const std::regex identifier(R"([A-Za-z0-9]_[A-Za-z0-9]|(^|[^A-Za-z])(theta|omega|alpha)([^A-Za-z]|$))",
+  static const std::regex identifier(R"([A-Za-z0-9]_[A-Za-z0-9]|(^|[^A-Za-z])(theta|omega|alpha|epsilon)([^A-Za-z]|$))",
                                      std::regex::icase);
   std::smatch found;
   return std::regex_search(text, found, identifier) ? found.str() : "";

@@ -16,7 +16,7 @@ namespace {
 // that follow kept; nothing when the part is no such letter.
 std::optional<std::string> greek(std::string_view part) {
   static const std::pair<std::string_view, std::string_view> letters[] = {
-      {"alpha", "\u03b1"}, {"theta", "\u03b8"}, {"omega", "\u03c9"}};
+      {"alpha", "\u03b1"}, {"epsilon", "\u03b5"}, {"theta", "\u03b8"}, {"omega", "\u03c9"}};
   for (const auto& [spelt, letter] : letters) {
     if (part.substr(0, spelt.size()) != spelt) continue;
     const std::string_view rest = part.substr(spelt.size());

@@ -13,7 +13,7 @@ namespace frictionlab::ui {
 // "slide_reduced" → "slide reduced", "six_feet_load_" → "six feet load", "theta0" → "θ0",
 // "omega" → "ω", "a_x" → "aₓ", "a_x_omega" → "aₓ ω": underscores become spaces (never two in
 // a row, none at either end); mu the Greek letter, with its index when s or k follows; theta,
-// omega and alpha their letters, with the digits after them; a one-letter name and a one-letter
+// omega, alpha and epsilon their letters, with the digits after them; a one-letter name and a one-letter
 // index its letter with the index below the line, where Unicode has that subscript.
 std::string class_words(std::string_view name);
 
