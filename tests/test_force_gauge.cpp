@@ -479,6 +479,22 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
   EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
 }
 
+// A window opened at a later time (--at, as a teacher's or the README's screenshots are taken)
+// counts from the run's start too: it counted from wherever the block had got to, and push's
+// block, 2 m along, stood at "0 m".
+TEST(MeasuringTools, AWindowOpenedLaterCountsTheMarksFromTheRunsStart) {
+  ClassroomHands opened_later(gauge_options("push"));
+  const b2Body* block = opened_later.lesson().scene().body("block");
+  const std::optional<Surface> start = surface_under(opened_later.lesson().scene(), block);
+  ASSERT_TRUE(start.has_value());
+  opened_later.classroom().run_to(3.0);
+  opened_later.frame();
+  const std::optional<b2Vec2> origin = opened_later.classroom().tools().distance_origin();
+  ASSERT_TRUE(origin.has_value());
+  EXPECT_EQ(origin->x, start->point.x);
+  EXPECT_GT(block->GetPosition().x - origin->x, 0.5f) << "the block has slid away from the start";
+}
+
 // Distance marks count from where the main body stood at t = 0 (under its centre of mass), along
 // the surface: the incline's block at 1 s is as far from the mark "0 m" as its own probe says.
 TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {

@@ -211,6 +211,9 @@ TEST(Overlays, QuantitiesAreWrittenAsAClassroomWritesThem) {
   EXPECT_EQ(format_quantity(-0.0357, "N"), "\u22120.0357 N");
   EXPECT_EQ(format_quantity(0.0, "J"), "0 J");
   EXPECT_EQ(format_quantity(4.2e-8, "J"), "4.2\u00d710\u207b\u2078 J");
+  // A mantissa that rounds up to 10 moves the power on (push's error read "+10×10⁻⁴ N").
+  EXPECT_EQ(format_quantity(9.99e-4, "N"), "1\u00d710\u207b\u00b3 N");
+  EXPECT_EQ(format_quantity(-9.97e-5, "m"), "\u22121\u00d710\u207b\u2074 m");
 }
 
 // The slipping word says which way the upper body slides over the lower one, whichever of the

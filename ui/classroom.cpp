@@ -292,6 +292,12 @@ void Classroom::after_keys() {
   play_after_typing_ = false;
 }
 
+void Classroom::run_to(double t) {
+  tools_.on = window_.tools;
+  tools_.follow(playback_->lesson(), false);
+  playback_->run_to(t);
+}
+
 bool Classroom::idle() const {
   return !playback_->playing() && !cheapest_.measuring() && !hand_held_ && !panning_from_ && !screenshot_request_;
 }

@@ -94,6 +94,9 @@ class Classroom {
   // no hand held. The window then waits for input (a few times a second for the file watcher)
   // instead of drawing the same frame sixty times a second.
   bool idle() const;
+  // Plays the lesson on to `t` at once, as the window opened with --at does: the measuring tools
+  // take the run's start first (where the distance marks count from).
+  void run_to(double t);
   // Time the window spent waiting for input while idle: no lesson time, but the file watchers'
   // clocks run on it, so a script saved while nobody touches the window is still seen (the
   // next frame, given no wall time, would never reach their quarter-second look).

@@ -189,7 +189,9 @@ void MeasuringTools::follow(const lessons::Lesson& lesson, bool playing, bool ru
   playing_ = playing;
   run_ended_ = run_ended;
   arm_stopwatch(scene.time(), playing);
-  if (scene.frame() != 0 && origin_) return;
+  // Only at t = 0: taken later, the marks would count from wherever the body had got to (a
+  // window opened with --at showed push's block at "0 m" after sliding 2 m).
+  if (scene.frame() != 0) return;
   if (const std::optional<Surface> surface = surface_under(scene, measured_body(lesson))) origin_ = surface->point;
 }
 

@@ -195,8 +195,14 @@ std::string format_quantity(double value, const char* unit) {
   if (magnitude == 0.0) return std::string("0 ") + unit;
   if (magnitude < 1e-3) {
     // 4.2×10⁻⁸ rather than 4.2e-08: the notation of the classroom.
-    const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
-    std::snprintf(text, sizeof text, "%.2g\u00d710", value / std::pow(10.0, exponent));
+    int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    double mantissa = value / std::pow(10.0, exponent);
+    // 9.96×10⁻⁴ rounds to two digits as 10: written 1×10⁻³, not 10×10⁻⁴.
+    if (std::abs(mantissa) >= 9.95) {
+      mantissa /= 10.0;
+      ++exponent;
+    }
+    std::snprintf(text, sizeof text, "%.2g\u00d710", mantissa);
     std::string shown = text;
     static const char* const superscript[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
                                               "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};

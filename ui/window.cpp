@@ -92,7 +92,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
   } input;
 
-  if (run.at) classroom.playback().run_to(*run.at);
+  if (run.at) classroom.run_to(*run.at);
   int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
   bool full_screen = false;
   int windowed[4] = {0, 0, settings.width, settings.height};
