@@ -59,28 +59,30 @@ bool LabelPlacer::free(const ImVec4& box, bool off_bodies) const {
   return inside && clear(box, off_bodies);
 }
 
+ImVec4 LabelPlacer::box_around(ImVec2 centre, ImVec2 size) {
+  return ImVec4(centre.x - 0.5f * size.x - pad, centre.y - 0.5f * size.y - pad, centre.x + 0.5f * size.x + pad,
+                centre.y + 0.5f * size.y + pad);
+}
+
+ImVec2 LabelPlacer::moved_inside(ImVec2 centre, ImVec2 size) const {
+  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
+  const float top = low_.y + half_y, bottom = std::max(top, high_.y - half_y);
+  return ImVec2(std::clamp(centre.x, left, right), std::clamp(centre.y, top, bottom));
+}
+
 ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
   if (const std::optional<ImVec2> found = place_if_free(wanted, size, text, off_bodies)) return *found;
   // Nowhere free: where it was wanted, moved inside the view, over what is there.
-  const float pad = 2.0f;
-  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
-  const ImVec2 at(std::clamp(wanted.x, low_.x + half_x, std::max(low_.x + half_x, high_.x - half_x)),
-                  std::clamp(wanted.y, low_.y + half_y, std::max(low_.y + half_y, high_.y - half_y)));
-  take(ImVec4(at.x - half_x, at.y - half_y, at.x + half_x, at.y + half_y), text);
+  const ImVec2 at = moved_inside(wanted, size);
+  take(box_around(at, size), text);
   return at;
 }
 
 std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
-  const float pad = 2.0f;
-  const auto box_at = [&](ImVec2 c) {
-    return ImVec4(c.x - 0.5f * size.x - pad, c.y - 0.5f * size.y - pad, c.x + 0.5f * size.x + pad,
-                  c.y + 0.5f * size.y + pad);
-  };
+  const auto box_at = [&](ImVec2 c) { return box_around(c, size); };
   // Inside the view, so a label near its edge is moved in rather than cut.
-  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
-  const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
-  const float top = low_.y + half_y, bottom = std::max(top, high_.y - half_y);
-  const auto inside = [&](ImVec2 c) { return ImVec2(std::clamp(c.x, left, right), std::clamp(c.y, top, bottom)); };
+  const auto inside = [&](ImVec2 c) { return moved_inside(c, size); };
   wanted = inside(wanted);
   // Rings of places around the wanted one, nearest first: above and below (a line of text
   // apart), then to the sides, then the corners between. Candidates are moved inside the view

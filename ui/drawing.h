@@ -75,6 +75,10 @@ class LabelPlacer {
 
  private:
   bool clear(const ImVec4& box, bool off_bodies) const;  // covers nothing known
+  static constexpr float pad = 2.0f;  // px kept clear around a label's text
+  // A label's box at `centre`, padding included; and a centre moved so the box stays in the view.
+  static ImVec4 box_around(ImVec2 centre, ImVec2 size);
+  ImVec2 moved_inside(ImVec2 centre, ImVec2 size) const;
 
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1

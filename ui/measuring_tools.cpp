@@ -269,6 +269,17 @@ ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, 
   return {centre, tip(weight.downhill, weight.along), tip(weight.into, weight.across)};
 }
 
+// A tool's reading, its text placed by `anchor` (`in_sizes` of the text's own width and height
+// from it to the text's centre), or in the nearest free place: off every moving body, unless
+// the bodies leave no room near.
+void draw_reading(ImDrawList* draw, LabelPlacer& labels, ImFont* font, ImVec2 anchor, ImVec2 in_sizes,
+                  const std::string& text, ImU32 colour, ImU32 background) {
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+  const ImVec2 wanted(anchor.x + in_sizes.x * size.x, anchor.y + in_sizes.y * size.y);
+  const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
+  draw_label(draw, font, at, colour, background, text.c_str());
+}
+
 }  // namespace
 
 std::string speed_reading(const b2Body* body) {
@@ -364,22 +375,18 @@ void MeasuringTools::draw_distance_marks(ImDrawList* draw, const lessons::Lesson
 void MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
                                    const Theme& theme, const Fonts& fonts, bool first_lane, LabelPlacer& labels) const {
   const float s = fonts.scale;
-  // Keeps off every moving body, unless the bodies leave no room near.
-  const auto reading = [&](ImVec2 wanted, const std::string& text) {
-    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-    const ImVec2 at = labels.place(ImVec2(wanted.x, wanted.y - 0.5f * size.y), ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
-    draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
-  };
   if (on.stopwatch && first_lane) {
-    const std::string text = stopwatch.text(lesson.scene().time(), playing_, run_ended_);
-    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text.c_str());
-    reading(ImVec2(camera.origin.x + 10.0f * s + 0.5f * size.x, camera.origin.y + 10.0f * s + size.y), text);
+    // Its top left corner in the lane's.
+    draw_reading(draw, labels, fonts.body, ImVec2(camera.origin.x + 10.0f * s, camera.origin.y + 10.0f * s), ImVec2(0.5f, 0.5f),
+                 stopwatch.text(lesson.scene().time(), playing_, run_ended_), theme.text, theme.panel);
   }
   const b2Body* body = measured_body(lesson);
   if (on.speed && body != nullptr && in_lane(camera, body)) {
+    // Centred over the body's top.
     const b2AABB box = body_box(body);
     const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
-    reading(ImVec2(top.x, top.y - 10.0f * s), speed_reading(body));
+    draw_reading(draw, labels, fonts.body, ImVec2(top.x, top.y - 10.0f * s), ImVec2(0.0f, -0.5f), speed_reading(body),
+                 theme.text, theme.panel);
   }
 }
 
@@ -387,12 +394,6 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
                           const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
-  // A reading of the body keeps off it (and off every other moving body).
-  const auto label = [&](ImFont* font, ImVec2 wanted, const std::string& text, ImU32 colour = 0) {
-    const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
-    const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
-    draw_label(draw, font, at, colour != 0 ? colour : theme.text, theme.panel, text.c_str());
-  };
   const b2Body* body = measured_body(lesson);
   if (body == nullptr || !in_lane(camera, body)) return;
   if (on.weight_components) {
@@ -402,13 +403,13 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
       const ImU32 colour = (theme.force[static_cast<int>(ForceKind::weight)] & 0x00FFFFFFu) | (170u << IM_COL32_A_SHIFT);
       draw_arrow(draw, arrows.centre, arrows.along_tip, colour, 2.0f * s);
       draw_arrow(draw, arrows.centre, arrows.across_tip, colour, 2.0f * s);
+      // Beyond each tip, along its arrow: 8 px past it, and half the text's size.
       const auto beyond = [&](ImVec2 tip, const std::string& text) {
-        const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
         ImVec2 direction = sub(tip, arrows.centre);
         const float span = std::max(1e-3f, length(direction));
         direction = mul(direction, 1.0f / span);
-        label(fonts.small, add(tip, ImVec2(direction.x * (0.5f * size.x + 8.0f * s), direction.y * (0.5f * size.y + 8.0f * s))),
-              text, theme.force[static_cast<int>(ForceKind::weight)]);
+        draw_reading(draw, labels, fonts.small, add(tip, mul(direction, 8.0f * s)), mul(direction, 0.5f), text,
+                     theme.force[static_cast<int>(ForceKind::weight)], theme.panel);
       };
       beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + format_quantity(weight->along, "N"));
       beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));
