@@ -26,6 +26,10 @@
 namespace frictionlab::ui {
 namespace {
 
+// The modifier keys as the window layer gives them to KeyTaps (GLFW's key codes, ImGui's indices
+// under its GLFW backend).
+constexpr ModifierKeys test_modifier_keys{{341, 345}, {340, 344}, {342, 346}, {343, 347}};
+
 using lessons::ScriptFile;
 
 std::string read_file(const std::string& path) {
@@ -203,7 +207,7 @@ TEST(Classroom, AnEnterTappedBetweenTwoFramesSetsTheTypedValue) {
   EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.35);
   driver.press(ImGuiKey_Escape);
 
-  KeyTaps taps;
+  KeyTaps taps(test_modifier_keys);
   driver.click("mu_k value");
   driver.type("0.3125");
   taps.pressed(enter);  // down and up again before the frame: io.KeysDown[enter] stays false
@@ -213,6 +217,25 @@ TEST(Classroom, AnEnterTappedBetweenTwoFramesSetsTheTypedValue) {
   driver.frame();
   EXPECT_EQ(driver.lesson().parameter("mu_k").value, 0.3125);
   EXPECT_FALSE(io.KeysDown[enter]) << "a tapped key is let go after its frame";
+}
+
+// Ctrl and V tapped between two frames (a paste): the chord's Ctrl is down in the frame that
+// sees the V, as ImGui reads it (io.KeyCtrl), and up again once both are let go.
+TEST(Classroom, ATappedChordHoldsItsModifierForItsFrame) {
+  ImGuiIO io;  // the keyboard's state alone: no frame is drawn
+  KeyTaps taps(test_modifier_keys);
+  const int ctrl = test_modifier_keys.ctrl[1], v = 86;
+  io.KeysDown[ctrl] = io.KeysDown[v] = false;
+  io.KeyCtrl = false;
+  taps.pressed(ctrl);
+  taps.pressed(v);
+  taps.hold(io);
+  EXPECT_TRUE(io.KeysDown[v]);
+  EXPECT_TRUE(io.KeyCtrl) << "the chord is Ctrl+V in its frame";
+  EXPECT_FALSE(io.KeyShift);
+  taps.release(io, [](int) { return false; });
+  EXPECT_FALSE(io.KeyCtrl) << "let go after it";
+  EXPECT_FALSE(io.KeysDown[v]);
 }
 
 // A lesson opens paused at t = 0, its first frame drawn, however much time passes: the class

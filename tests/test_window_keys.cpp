@@ -101,6 +101,22 @@ TEST(WindowKeys, EscapeClosesAnOpenDialogWithoutActing) {
   }
 }
 
+// Escape and then Space, both before the next frame (a quick hand, or a window that waited for
+// input and gets both at once): the dialog closes, and the Space is the window's, not lost.
+TEST(WindowKeys, AKeyPressedAfterEscapeInTheSameFrameActsOnTheWindow) {
+  ClassroomHands hands(lesson_options("incline"));
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Save as a setup");
+  hands.frame();
+  ASSERT_TRUE(any_popup_open());
+  hands.classroom().key_pressed(Key::escape, false);
+  hands.classroom().key_pressed(Key::space, false);
+  hands.frame();
+  EXPECT_FALSE(any_popup_open()) << "Escape closed the dialog";
+  EXPECT_TRUE(hands.classroom().playback().playing()) << "the Space after it played";
+}
+
 // The class watches the run, not the menu: with the Tools menu open, Space plays and R rewinds,
 // and each closes the menu.
 TEST(WindowKeys, AShortcutWithAMenuOpenActsAndClosesIt) {

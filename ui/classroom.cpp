@@ -221,17 +221,25 @@ void Classroom::handle_keys() {
   const auto hit = [&](Key key, bool ctrl) {
     return std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
   };
-  const int dialogs = dialog_levels();
+  int dialogs = dialog_levels();
   const bool menu_open = ImGui::GetCurrentContext()->OpenPopupStack.Size > dialogs;
-  const Typing typed = typing();
+  Typing typed = typing();
   // Escape with a dialog open closes it, doing nothing it offers, as its Cancel does (the trial's
   // teacher pressed Escape to leave "Save as a setup" and it stayed); a menu over a dialog closes
   // first. Before the frame's dialogs are drawn, so the one closed draws nothing this frame and
   // a path being typed in it goes with it.
   if (hit(Key::escape, false) && dialogs > 0) {
-    if (menu_open) close_menus_ = true;
-    else ImGui::ClosePopupToLevel(dialogs - 1, true);
-    return;
+    if (menu_open) {
+      close_menus_ = true;
+      return;
+    }
+    ImGui::ClosePopupToLevel(dialogs - 1, true);
+    // The keys pressed after Escape in the same frame are the window's again (a quick Escape,
+    // Space closes the dialog and plays), or the dialog's below if one is still open; the typing
+    // was in the dialog closed.
+    --dialogs;
+    typed = Typing::nothing;
+    std::erase(taps, std::make_pair(Key::escape, false));
   }
   // Space in a box that takes a number (ui/text_boxes.h) ends the typing as Enter does (the value
   // kept; ImGui 1.86 reads Enter from the key's state, so it is pressed for this frame only) and

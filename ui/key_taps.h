@@ -12,8 +12,16 @@
 
 namespace frictionlab::ui {
 
+// The modifier keys' indices in io.KeysDown, left and right: ImGui reads a chord's Ctrl from
+// io.KeyCtrl, which 1.86's backend works out only when a key event arrives, so a Ctrl tapped
+// with V between frames (a paste) must set it here too.
+struct ModifierKeys {
+  int ctrl[2], shift[2], alt[2], super[2];
+};
+
 class KeyTaps {
  public:
+  explicit KeyTaps(ModifierKeys modifiers) : modifiers_(modifiers) {}
   // A key went down (the index ImGui reads it at in io.KeysDown).
   void pressed(int key) { pressed_.push_back(key); }
   // Before ImGui::NewFrame: every key pressed since the last frame is down in this one.
@@ -24,6 +32,7 @@ class KeyTaps {
       held_.push_back(key);
     }
     pressed_.clear();
+    read_modifiers(io);
   }
   // After the frame: a held key the keyboard no longer holds is let go. `down(key)` asks it.
   template <class Down>
@@ -32,9 +41,24 @@ class KeyTaps {
       if (!down(key)) io.KeysDown[key] = false;
     }
     held_.clear();
+    read_modifiers(io);
   }
 
  private:
+  void read_modifiers(ImGuiIO& io) const {
+    const auto either = [&](const int (&keys)[2]) {
+      for (const int key : keys) {
+        if (key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key]) return true;
+      }
+      return false;
+    };
+    io.KeyCtrl = either(modifiers_.ctrl);
+    io.KeyShift = either(modifiers_.shift);
+    io.KeyAlt = either(modifiers_.alt);
+    io.KeySuper = either(modifiers_.super);
+  }
+
+  ModifierKeys modifiers_;
   std::vector<int> pressed_;
   std::vector<int> held_;
 };

@@ -79,7 +79,10 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   struct Listeners {
     Classroom* classroom;
     KeyTaps taps;
-  } listeners{&classroom, {}};
+  } listeners{&classroom, KeyTaps({{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
+                                    {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT},
+                                    {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
+                                    {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}})};
   glfwSetWindowUserPointer(window.get(), &listeners);
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
