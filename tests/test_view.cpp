@@ -95,6 +95,43 @@ TEST(View, LanesStackAStripPerBodyOnOneScaleAndOneStretchOfFloor) {
   EXPECT_LE(per_newton * 9.81f, 0.4f * cameras[0].size.y + 1e-3f);
 }
 
+// A box thrown from 0.8 m over its floor, in a lane beside one resting on the upper floor: the
+// floor the box will land on is in its lane from t = 0, and the box with it, all through the
+// fall (the thrown box fell towards a floor out of sight until it landed); the lane stays
+// still while the box falls, then follows it. The resting box is framed on itself, as it was.
+TEST(View, ALaneKeepsTheFloorUnderABodyInTheAir) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { "floor", material = "wood" }
+local upper = ground { "upper", material = "wood", y = 3, thickness = 0.2 }
+local thrown = box { "thrown", material = "wood", width = 0.4, height = 0.3, x = 0, y = 0.8, mass = 2, velocity = { 2, 0 } }
+local resting = box { "resting", material = "wood", width = 0.4, height = 0.3, on = upper, at = 0, mass = 2 }
+view { lanes = { thrown, resting } }
+)"));
+  for (const auto& [size, scale] : {std::pair{display, 1.0f}, std::pair{ImVec2(1920.0f, 1080.0f), 1.35f}}) {
+    lessons::Lesson lesson(script.path());
+    const WorldFraming framing = WorldFraming::of(lesson);
+    const b2Body* thrown = lesson.scene().body("thrown");
+    float lane_still = 0.0f;
+    for (const double t : {0.0, 0.15, 0.3}) {
+      lesson.step_to(t);
+      const std::vector<Camera> cameras = world_cameras(lesson, framing, size, scale);
+      ASSERT_EQ(cameras.size(), 2u);
+      const Camera& lane = cameras[0];
+      const float floor_y = lane.to_screen({0.0f, 0.0f}).y;
+      EXPECT_LT(floor_y, lane.origin.y + lane.size.y) << "the floor is in the lane at t = " << t;
+      EXPECT_GT(lane.to_screen(thrown->GetWorldPoint({0.0f, 0.15f})).y, lane.origin.y) << "and the box's top, t = " << t;
+      if (t == 0.0) lane_still = floor_y;
+      if (t == 0.15) {
+        EXPECT_FLOAT_EQ(floor_y, lane_still) << "the lane stays still while the box falls";
+      }
+      EXPECT_GE(0.4f * lane.pixels_per_metre, WorldFraming::min_body_pixels * scale - 1e-3f) << "readable";
+      // The resting box's lane is on the box's own height, as every resting lane is.
+      EXPECT_FLOAT_EQ(cameras[1].centre.y, lesson.scene().body("resting")->GetWorldCenter().y);
+    }
+  }
+}
+
 TEST(View, TheWheelZoomAndTheDragPanComeOnTopOfTheLessonsView) {
   lessons::ScriptFile script(two_blocks(R"(view { follow = slow })"));
   lessons::Lesson lesson(script.path());

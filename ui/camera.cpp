@@ -114,6 +114,23 @@ std::vector<const b2Body*> view_bodies(const Scene& scene, const lessons::View& 
   return found;
 }
 
+// The top of the fixed surface straight under `body`'s centre, at most `reach` below its foot;
+// NaN when there is none. Other moving bodies are looked through: a lane's floor is what counts.
+float ground_under(const Scene& scene, const b2Body* body, float reach) {
+  struct Nearest : b2RayCastCallback {
+    float y = std::nanf("");
+    float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2&, float fraction) override {
+      if (fixture->GetBody()->GetType() != b2_staticBody || fixture->IsSensor()) return -1.0f;  // look through it
+      y = point.y;
+      return fraction;  // only nearer ones from now on
+    }
+  } nearest;
+  const b2Vec2 from = body->GetWorldCenter();
+  const b2Vec2 to(from.x, body_box(body).lowerBound.y - reach);
+  if (to.y < from.y) scene.world().RayCast(&nearest, from, to);
+  return nearest.y;
+}
+
 // Moves a camera that shows less than the whole lesson so that it shows as much of the lesson
 // as it can: its view stays inside `bounds` (with a little room), along each axis on which it
 // is smaller than them; but what moves (`moving`) stays in view with room for its arrows, the
@@ -146,6 +163,8 @@ void keep_within(Camera& camera, const b2AABB& bounds, const b2AABB& moving, flo
 
 // Room around the lesson for the arrows and their labels.
 constexpr float room = 1.45f;
+// Pixels (at text scale 1) kept between a lane's floor and the lane's foot, and above a body.
+constexpr float lane_ground_edge = 6.0f;
 
 }  // namespace
 
@@ -163,6 +182,17 @@ WorldFraming WorldFraming::of(const lessons::Lesson& lesson) {
   }
   const b2AABB moving = moving_bounds(scene);
   framing.moving_span = moving.upperBound.x - moving.lowerBound.x;
+  if (framing.view.kind == lessons::View::Kind::lanes) {
+    for (const b2Body* body : view_bodies(scene, framing.view)) {
+      // Only a body clear of its floor: one standing on it (on a slope, its lowest corner under
+      // the floor's height at its centre) is framed on itself as before, wherever it goes.
+      const float ground = ground_under(scene, body, ground_reach * framing.tallest_body);
+      const b2AABB covers = body_box(body);
+      const bool in_the_air = covers.lowerBound.y - ground > 0.1f * framing.tallest_body;
+      framing.lane_ground.push_back(in_the_air ? ground : std::nanf(""));
+      framing.lane_top.push_back(covers.upperBound.y);
+    }
+  }
   return framing;
 }
 
@@ -198,6 +228,19 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
         if (moving_span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * moving_span));
       }
       pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.0f * tallest_body));
+      // A body in the air at t = 0 keeps its floor in its lane, from the floor to half a body
+      // above its top (the thrown box fell towards a floor out of sight), unless that makes it
+      // too small to read (below).
+      if (view.width <= 0.0) {
+        float span = 0.0f;
+        for (std::size_t i = 0; i < lane_ground.size() && i < lane_top.size(); ++i) {
+          if (std::isfinite(lane_ground[i])) span = std::max(span, lane_top[i] - lane_ground[i]);
+        }
+        const float edges = 2.0f * lane_ground_edge * scale;
+        if (span > 0.0f && strip_height > edges) {
+          pixels_per_metre = std::min(pixels_per_metre, (strip_height - edges) / (span + 0.5f * tallest_body));
+        }
+      }
     }
   }
   // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
@@ -248,6 +291,14 @@ std::vector<Camera> WorldFraming::cameras(const Scene& scene, ImVec2 origin, ImV
     // Each lane on its own body's height.
     if (kind == Kind::lanes) {
       camera.centre.y = bodies[i]->GetWorldCenter().y;
+      // Not so high that the floor under the body drops out of the lane's foot, while the
+      // body's top stays in it: the lane stays still and the body falls to its floor.
+      if (i < lane_ground.size() && std::isfinite(lane_ground[i])) {
+        const float metres = 1.0f / camera.pixels_per_metre, edge = lane_ground_edge * scale * metres;
+        const float floor_in_view = lane_ground[i] + (1.0f - down) * strip_height * metres - edge;
+        const float top_in_view = body_box(bodies[i]).upperBound.y + edge - down * strip_height * metres;
+        camera.centre.y = std::max(std::min(camera.centre.y, floor_in_view), top_in_view);
+      }
       // Once the lanes' bodies have spread wider than the view, one window would lose some of
       // them: each lane then follows its own body (the ground's hatching still shows who moved).
       if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * free_width) {

@@ -58,6 +58,11 @@ struct WorldFraming {
   float smallest_body = 0.0f;    // m, the longer side of the smallest moving body at t = 0
   float tallest_body = 0.0f;     // m, the height of the tallest moving body at t = 0 (lanes' scale)
   float moving_span = 0.0f;      // m, how wide what moves spread at t = 0 (lanes' scale)
+  // Per lane, at t = 0: the height of the fixed surface straight under its body's centre
+  // (within ground_reach of its foot; NaN: none), and of the body's top. A body that starts in
+  // the air (a thrown box) is framed with the floor it will land on.
+  std::vector<float> lane_ground, lane_top;
+  static constexpr float ground_reach = 5.0f;  // × the tallest moving body
   // Frames the lesson as it is now: this is meant to be called at t = 0.
   static WorldFraming of(const lessons::Lesson& lesson);
   // The cameras on the view rectangle as the lesson's view asks (one per lane; one otherwise),
