@@ -166,6 +166,129 @@ b2Body* Scene::body(const std::string& name) const {
   throw InvalidInput("unknown body '" + name + "'; bodies in this scene:" + known);
 }
 
+std::size_t Scene::add_rope(const std::string& name, b2Body* a, b2Vec2 end_a, b2Body* b, b2Vec2 end_b,
+                            b2Vec2 pulley_a, b2Vec2 pulley_b) {
+  Rope rope;
+  rope.name = name;
+  rope.body_a = a;
+  rope.body_b = b;
+  rope.local_a = a->GetLocalPoint(end_a);
+  rope.local_b = b->GetLocalPoint(end_b);
+  rope.pulley_a = pulley_a;
+  rope.pulley_b = pulley_b;
+  rope.length = rope.stretches();
+  tie(rope);
+  ropes_.push_back(rope);
+  return ropes_.size() - 1;
+}
+
+void Scene::tie(Rope& rope) {
+  b2PulleyJointDef definition;
+  definition.bodyA = rope.body_a;
+  definition.bodyB = rope.body_b;
+  definition.groundAnchorA = rope.pulley_a;
+  definition.groundAnchorB = rope.pulley_b;
+  definition.localAnchorA = rope.local_a;
+  definition.localAnchorB = rope.local_b;
+  // The rope's own length, however far past it the ends have gone: the joint pulls them back.
+  definition.lengthA = (rope.end_a() - rope.pulley_a).Length();
+  definition.lengthB = rope.length - definition.lengthA;
+  definition.ratio = 1.0f;
+  rope.joint = static_cast<b2PulleyJoint*>(world_->CreateJoint(&definition));
+}
+
+namespace {
+
+// Whether something the body touches holds it against being pushed along `push` (a floor under
+// a landed weight that the rope pressed down): that contact took the push, not the body.
+bool held_against(const b2Body* body, b2Vec2 push) {
+  for (const b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next) {
+    const b2Contact* contact = edge->contact;
+    if (!contact->IsTouching() || !contact->IsEnabled()) continue;
+    b2WorldManifold manifold;
+    contact->GetWorldManifold(&manifold);
+    // Box2D's normal points from A to B: onto the body when it is B.
+    const b2Vec2 onto = contact->GetFixtureB()->GetBody() == body ? manifold.normal : -manifold.normal;
+    if (b2Dot(onto, push) < -0.5f) return true;
+  }
+  return false;
+}
+
+// Takes back from a body the impulse `p` (N·s) it was given at `point` in the last step, unless
+// a contact held it against it; returns the kinetic energy that gives back, J.
+double take_back(b2Body* body, b2Vec2 point, b2Vec2 p) {
+  if (body->GetType() != b2_dynamicBody || held_against(body, p)) return 0.0;
+  const auto energy = [body] {
+    const float spin = body->GetAngularVelocity();
+    const float local_centre = b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
+    return 0.5 * body->GetMass() * b2Dot(body->GetLinearVelocity(), body->GetLinearVelocity()) +
+           0.5 * (body->GetInertia() - body->GetMass() * local_centre) * spin * spin;
+  };
+  const double before = energy();
+  const float mass = body->GetMass();
+  const b2Vec2 arm = point - body->GetWorldCenter();
+  const float local_centre = b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
+  const float inertia = body->GetInertia() - mass * local_centre;  // about the centre of mass
+  body->SetLinearVelocity(body->GetLinearVelocity() - (1.0f / mass) * p);
+  if (inertia > 0.0f) body->SetAngularVelocity(body->GetAngularVelocity() - b2Cross(arm, p) / inertia);
+  return energy() - before;
+}
+
+// How fast a rope's two ends draw apart (m/s), each along its stretch from the pulley.
+float parting_speed(const Rope& rope) {
+  const auto along = [](const b2Body* body, b2Vec2 end, b2Vec2 pulley) {
+    b2Vec2 out = end - pulley;
+    if (out.Normalize() <= 0.0f) return 0.0f;
+    return b2Dot(body->GetLinearVelocityFromWorldPoint(end), out);
+  };
+  return along(rope.body_a, rope.end_a(), rope.pulley_a) + along(rope.body_b, rope.end_b(), rope.pulley_b);
+}
+
+// The unit vector from the pulley to a rope's end (zero when they meet).
+b2Vec2 outward(b2Vec2 pulley, b2Vec2 end) {
+  b2Vec2 d = end - pulley;
+  return d.Normalize() > 0.0f ? d : b2Vec2{0.0f, 0.0f};
+}
+
+}  // namespace
+
+double Scene::rope_tension(std::size_t index) const {
+  const Rope& rope = ropes_.at(index);
+  if (rope.joint == nullptr) return 0.0;
+  const double per_second = settings_.hz * settings_.substeps;
+  const b2Vec2 force = rope.joint->GetReactionForce(static_cast<float>(per_second));
+  // Box2D reports the force's size along the stretch from the pulley to the end on body B.
+  return b2Dot(force, rope.end_b() - rope.pulley_b) >= 0.0f ? force.Length() : -force.Length();
+}
+
+void Scene::slacken_or_tie_ropes() {
+  for (Rope& rope : ropes_) {
+    const b2Vec2 out_a = outward(rope.pulley_a, rope.end_a()), out_b = outward(rope.pulley_b, rope.end_b());
+    if (rope.joint != nullptr) {
+      // The step's impulse, positive when the rope pulled each end towards the pulley.
+      const b2Vec2 reaction = rope.joint->GetReactionForce(1.0f);
+      const float impulse = b2Dot(reaction, out_b) >= 0.0f ? reaction.Length() : -reaction.Length();
+      if (impulse >= 0.0f) {
+        // A pull does work on the ends as they part: none while the rope keeps its length, a
+        // loss when it jerks taut (the impulse times the mean of the parting speeds before and
+        // after it, as the contacts' impacts are booked).
+        ledger_.work_impacts -= impulse * 0.5 * (rope.parting_before + parting_speed(rope));
+        continue;
+      }
+      // It pushed each end away from the pulley with -impulse: a rope cannot. What the push did
+      // to the ends is undone, and the energy that gives back books against the impacts that
+      // the push made the contacts absorb (a landing weight stopped the block through the rope).
+      ledger_.work_impacts += take_back(rope.body_a, rope.end_a(), -impulse * out_a);
+      ledger_.work_impacts += take_back(rope.body_b, rope.end_b(), -impulse * out_b);
+      world_->DestroyJoint(rope.joint);
+      rope.joint = nullptr;
+      continue;
+    }
+    // Slack: taut again once the ends are as far apart as the rope is long and still parting.
+    if (rope.stretches() >= rope.length && parting_speed(rope) > 0.0f) tie(rope);
+  }
+}
+
 void Scene::add_spring(const Spring& spring) {
   if (spring.body == nullptr) throw InvalidInput("spring '" + spring.name + "': it must be attached to a body");
   if (spring.other == nullptr && !spring.hand) {
@@ -464,6 +587,7 @@ void Scene::advance(double t, float h, double t_end, bool move) {
     }
   }
   listener_.apply_contact_forces(*world_, h);
+  for (Rope& rope : ropes_) rope.parting_before = parting_speed(rope);
 
   for (const Driver& driver : drivers_) {
     const auto named = [&](const char* what) { return "driven body '" + name_of(driver.body) + "': " + what; };
@@ -519,6 +643,7 @@ void Scene::advance(double t, float h, double t_end, bool move) {
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
   listener_.finish_step();
+  slacken_or_tie_ropes();
   // The hand's end of the gauge closes on the mouse, exactly for a mouse held still over the step.
   if (grab_ && move) grab_->hand += static_cast<float>(1.0 - std::exp(-h / grab_hand_lag)) * (grab_->target - grab_->hand);
   ++world_steps_;

@@ -88,6 +88,29 @@ struct EnergyLedger {
   }
 };
 
+// A rope over a pulley tying two bodies: its two stretches, from each end to where it leaves the
+// pulley, add up to at most `length`. A rope pulls and never pushes; Box2D's pulley joint holds
+// the sum fixed both ways, as a rod would (the hanging weight that landed on the floor stopped
+// the sliding block dead, and a hand pushing the block towards the pulley pressed the weight
+// into the floor). So the scene lets the joint go in the step its impulse turns to a push,
+// giving the ends back what that push did to their velocities (the rope goes slack), and ties
+// it again when the ends move apart past the rope's length (taut again, with a rope's jerk).
+struct Rope {
+  std::string name;
+  b2Body* body_a = nullptr;
+  b2Body* body_b = nullptr;
+  b2Vec2 local_a{0.0f, 0.0f}, local_b{0.0f, 0.0f};    // the ends, in the bodies' frames
+  b2Vec2 pulley_a{0.0f, 0.0f}, pulley_b{0.0f, 0.0f};  // where each stretch leaves the pulley
+  float length = 0.0f;                                 // both stretches when taut, m
+  b2PulleyJoint* joint = nullptr;                      // null while slack
+  float parting_before = 0.0f;  // m/s, how fast the ends drew apart as the last step began
+
+  b2Vec2 end_a() const { return body_a->GetWorldPoint(local_a); }
+  b2Vec2 end_b() const { return body_b->GetWorldPoint(local_b); }
+  float stretches() const { return (end_a() - pulley_a).Length() + (end_b() - pulley_b).Length(); }
+  bool taut() const { return joint != nullptr; }
+};
+
 struct Probe {
   std::string name;
   std::function<double()> measure;
@@ -130,6 +153,10 @@ class Scene {
   // Add the bodies' fixtures first: the spring is refused when it is too stiff for the step
   // given the mass it moves.
   void add_spring(const Spring& spring);
+  // A rope over a pulley, taut as the bodies lie now (each end at least 5 cm from the pulley,
+  // the script checks); returns its index in ropes().
+  std::size_t add_rope(const std::string& name, b2Body* a, b2Vec2 end_a, b2Body* b, b2Vec2 end_b, b2Vec2 pulley_a,
+                       b2Vec2 pulley_b);
   void add_applied_force(const AppliedForce& force);
   // A kinematic body follows position(t) and angle(t) exactly at every step.
   void drive(b2Body* body, PointOfTime position, ScalarOfTime angle);
@@ -162,6 +189,9 @@ class Scene {
   // Forces now, for probes and arrows: a spring's pull on its body, an applied force.
   b2Vec2 spring_force(const Spring& spring) const;
   const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<Rope>& ropes() const { return ropes_; }
+  // N: the pull the last world step's solver gave the rope (0 while it is slack).
+  double rope_tension(std::size_t index) const;
   const std::vector<AppliedForce>& applied_forces() const { return applied_; }
   b2Vec2 hand_position(const Spring& spring) const;
   // The forces the last step applied, one per spring (on its body) and per applied force, in
@@ -211,6 +241,10 @@ class Scene {
   double grab_stiffness() const;
 
  private:
+  void tie(Rope& rope);
+  // After each world step: a rope that pushed goes slack, a slack one pulled past its length is
+  // tied; the work a taut rope did (a jerk's loss) goes into the ledger's impacts.
+  void slacken_or_tie_ropes();
   struct Grab {
     b2Body* body;
     b2Vec2 target;
@@ -260,6 +294,7 @@ class Scene {
   };
   std::vector<Rest> rest_;        // beside bodies_
   std::vector<Spring> springs_;
+  std::vector<Rope> ropes_;
   std::vector<AppliedForce> applied_;
   // Within a step: each applied force and torque with the velocity it started on, whose work
   // is booked once the step is over.

@@ -48,11 +48,9 @@ b2AABB lesson_bounds(const Scene& scene) {
   for (const Spring& spring : scene.springs()) {
     grow(box, empty, spring.other ? spring.other->GetWorldPoint(spring.other_local_point) : scene.hand_position(spring));
   }
-  for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
-    if (joint->GetType() != e_pulleyJoint) continue;
-    const auto* pulley = static_cast<const b2PulleyJoint*>(joint);
-    grow(box, empty, pulley->GetGroundAnchorA());
-    grow(box, empty, pulley->GetGroundAnchorB());
+  for (const Rope& rope : scene.ropes()) {
+    grow(box, empty, rope.pulley_a);
+    grow(box, empty, rope.pulley_b);
   }
   return box;
 }

@@ -89,23 +89,17 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
   }
   // A rope pulls each end toward its pulley with the tension the last world step's solver
   // found (its impulse over that step's length).
-  const float last_step = static_cast<float>(scene.frame_step() / scene.settings().substeps);
-  for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
-    if (joint->GetType() != e_pulleyJoint || scene.frame() == 0) continue;
-    auto* pulley = const_cast<b2PulleyJoint*>(static_cast<const b2PulleyJoint*>(joint));
-    const float tension = pulley->GetReactionForce(1.0f / last_step).Length();
+  for (std::size_t i = 0; i < scene.ropes().size(); ++i) {
+    const Rope& rope = scene.ropes()[i];
+    // A slack rope pulls with nothing, and draws no arrow.
+    if (!rope.taut() || scene.frame() == 0) continue;
+    const auto tension = static_cast<float>(scene.rope_tension(i));
     const auto toward = [](b2Vec2 from, b2Vec2 to) {
       b2Vec2 d = to - from;
       return d.Normalize() > 0.0f ? d : b2Vec2{0.0f, 0.0f};
     };
-    if (pulley->GetBodyA() == body) {
-      forces.push_back({ForceKind::tension, body, pulley->GetAnchorA(),
-                        tension * toward(pulley->GetAnchorA(), pulley->GetGroundAnchorA())});
-    }
-    if (pulley->GetBodyB() == body) {
-      forces.push_back({ForceKind::tension, body, pulley->GetAnchorB(),
-                        tension * toward(pulley->GetAnchorB(), pulley->GetGroundAnchorB())});
-    }
+    if (rope.body_a == body) forces.push_back({ForceKind::tension, body, rope.end_a(), tension * toward(rope.end_a(), rope.pulley_a)});
+    if (rope.body_b == body) forces.push_back({ForceKind::tension, body, rope.end_b(), tension * toward(rope.end_b(), rope.pulley_b)});
   }
   for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
     const AppliedForce& applied = scene.applied_forces()[i];

@@ -211,13 +211,24 @@ void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fon
 
 void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 float scale) {
-  for (const lessons::Rope& rope : lesson.ropes()) {
-    const auto* pulley = static_cast<const b2PulleyJoint*>(rope.joint);
-    const ImVec2 a = camera.to_screen(pulley->GetAnchorA()), b = camera.to_screen(pulley->GetAnchorB());
-    const ImVec2 ga = camera.to_screen(pulley->GetGroundAnchorA()), gb = camera.to_screen(pulley->GetGroundAnchorB());
-    draw->AddLine(a, ga, theme.rope, 2.5f * scale);
+  for (const Rope& rope : lesson.scene().ropes()) {
+    const ImVec2 a = camera.to_screen(rope.end_a()), b = camera.to_screen(rope.end_b());
+    const ImVec2 ga = camera.to_screen(rope.pulley_a), gb = camera.to_screen(rope.pulley_b);
+    // A slack rope sags: the rope it does not need hangs in the more level of its two stretches
+    // (the block's, on a table), as deep as half of it, so a class sees that it pulls nothing.
+    const float slack = rope.taut() ? 0.0f : std::max(rope.length - rope.stretches(), 0.0f);
+    const bool sag_a = std::abs(a.x - ga.x) >= std::abs(b.x - gb.x);
+    const auto stretch = [&](ImVec2 end, ImVec2 pulley, bool sags) {
+      if (!sags || slack <= 0.0f) {
+        draw->AddLine(end, pulley, theme.rope, 2.5f * scale);
+        return;
+      }
+      const ImVec2 low(0.5f * (end.x + pulley.x), 0.5f * (end.y + pulley.y) + 0.5f * slack * camera.pixels_per_metre);
+      draw->AddBezierQuadratic(end, low, pulley, theme.rope, 2.5f * scale);
+    };
+    stretch(a, ga, sag_a);
     draw->AddLine(ga, gb, theme.rope, 2.5f * scale);
-    draw->AddLine(gb, b, theme.rope, 2.5f * scale);
+    stretch(b, gb, !sag_a);
     const ImVec2 middle = mul(add(ga, gb), 0.5f);
     const float radius = std::max(0.5f * length(sub(gb, ga)), 8.0f * scale);
     draw->AddCircle(middle, radius, theme.outline, 32, 2.0f * scale);

@@ -95,7 +95,6 @@ struct LessonBuild {
   std::vector<Prediction> predictions;
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function
-  std::vector<Rope> ropes;
   View view;
   std::vector<std::shared_ptr<RememberedValues>> remembered;  // forgotten when a parameter changes live
   // The force functions' among them, also forgotten when the script sets a velocity: a force

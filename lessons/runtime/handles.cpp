@@ -93,8 +93,7 @@ const std::vector<FieldName>& field_names(HandleType type) {
 struct Handle {
   HandleType type;
   const b2Body* body = nullptr;   // a body
-  const b2Joint* joint = nullptr; // a rope
-  size_t index = 0;               // a spring or a force
+  size_t index = 0;               // a spring, a force or a rope
   ContactHandle contact{nullptr, nullptr, nullptr};
   // How a probe reads a body: at which of its points, along which unit direction (distance
   // and speed), from where that point started (distance), and times what (scale).
@@ -114,7 +113,7 @@ Handle copy_handle(const void* data, HandleType type) {
   if (type == spring_type) handle.index = static_cast<const SpringHandle*>(data)->index;
   if (type == force_type) handle.index = static_cast<const ForceHandle*>(data)->index;
   if (type == contact_type) handle.contact = *static_cast<const ContactHandle*>(data);
-  if (type == rope_type) handle.joint = static_cast<const RopeHandle*>(data)->joint;
+  if (type == rope_type) handle.index = static_cast<const RopeHandle*>(data)->index;
   return handle;
 }
 
@@ -164,18 +163,8 @@ const ContactRecord* find_record(const Scene& scene, const ContactHandle& view) 
   return nullptr;
 }
 
-// A rope's tension from the last step's impulse (positive when it pulls). Box2D reports the
-// force's size; its sign is along the rope from the pulley to the end on body B.
-double rope_tension(const Scene& scene, const b2Joint* joint) {
-  const auto* pulley = static_cast<const b2PulleyJoint*>(joint);
-  const double per_second = scene.settings().hz * scene.settings().substeps;
-  const b2Vec2 force = pulley->GetReactionForce(static_cast<float>(per_second));
-  const b2Vec2 out = pulley->GetAnchorB() - pulley->GetGroundAnchorB();
-  return b2Dot(force, out) >= 0.0f ? force.Length() : -force.Length();
-}
-
 double read_field(const Scene& scene, const Handle& handle, Field field) {
-  if (handle.type == rope_type) return rope_tension(scene, handle.joint);
+  if (handle.type == rope_type) return scene.rope_tension(handle.index);
   const b2Body* body = handle.body;
   if (handle.type == body_type) {
     // As in the CSV: a body's x, y are its origin and its vx, vy its centre of mass's velocity.
@@ -337,11 +326,7 @@ std::string handle_name(lua_State* state, const Handle& handle) {
     case body_type: return body_name(state, handle.body);
     case spring_type: return scene.springs()[handle.index].name;
     case force_type: return scene.applied_forces()[handle.index].name;
-    case rope_type:
-      for (const Rope& rope : build_of(state).ropes) {
-        if (rope.joint == handle.joint) return rope.name;
-      }
-      return "?";
+    case rope_type: return scene.ropes()[handle.index].name;
     case contact_type: break;
   }
   return "";
@@ -427,12 +412,6 @@ void push_body(lua_State* state, b2Body* body, bool is_surface, b2Vec2 origin, b
   auto* handle = static_cast<BodyHandle*>(lua_newuserdatauv(state, sizeof(BodyHandle), 0));
   *handle = {body, is_surface, origin, along, length};
   luaL_setmetatable(state, type_names[body_type]);
-}
-
-void push_rope(lua_State* state, const b2Joint* joint) {
-  auto* handle = static_cast<RopeHandle*>(lua_newuserdatauv(state, sizeof(RopeHandle), 0));
-  handle->joint = joint;
-  luaL_setmetatable(state, type_names[rope_type]);
 }
 
 void push_indexed(lua_State* state, HandleType type, size_t index) {

@@ -27,9 +27,9 @@ struct SpringHandle {
 struct ForceHandle {
   size_t index;
 };
-// rope{}: the pulley joint it made.
+// rope{}: its index in the scene's ropes.
 struct RopeHandle {
-  const b2Joint* joint;
+  size_t index;
 };
 // contact(a, b): a view of the touching pair, read when a field is read. contact(a, b, k) is
 // the view of one foot of a body on feet: the touch of that foot's fixture alone.
@@ -44,7 +44,6 @@ inline const b2Vec2 origin_point{0.0f, 0.0f};
 
 void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
                b2Vec2 along = {1.0f, 0.0f}, float length = 0.0f);
-void push_rope(lua_State* state, const b2Joint* joint);
 // Pushes a new handle of `type` holding `index` (a spring's or a force's place in the scene).
 void push_indexed(lua_State* state, HandleType type, size_t index);
 

@@ -306,7 +306,6 @@ Scene& Lesson::scene() { return *current_->scene; }
 const Scene& Lesson::scene() const { return *current_->scene; }
 const std::vector<Parameter>& Lesson::parameters() const { return current_->parameters; }
 const std::vector<Plot>& Lesson::plots() const { return current_->plots; }
-const std::vector<Rope>& Lesson::ropes() const { return current_->ropes; }
 const View& Lesson::view() const { return current_->view; }
 void Lesson::time_script(bool on) { current_->sandbox.set_timing(on); }
 double Lesson::seconds_in_script() const { return std::chrono::duration<double>(current_->sandbox.time_in_lua()).count(); }

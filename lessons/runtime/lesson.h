@@ -117,11 +117,6 @@ struct Moment {
 };
 
 // A rope over a fixed pulley (a Box2D pulley joint): both ends stay taut, their lengths add up.
-struct Rope {
-  std::string name;
-  b2Joint* joint = nullptr;
-};
-
 // What the world view shows, as the script's view{} asks. The window's wheel and drag then
 // zoom and pan from there; every kind keeps moving bodies big enough to read, except a window
 // the script fixed in metres.
@@ -178,7 +173,6 @@ class Lesson {
   const std::vector<Parameter>& parameters() const;
   const Parameter& parameter(const std::string& name) const;  // throws InvalidInput listing them
   const std::vector<Plot>& plots() const;
-  const std::vector<Rope>& ropes() const;
   const View& view() const;
   // Doubts about the values, such as mu_k above mu_s, placed at the script line.
   const std::vector<std::string>& warnings() const;

@@ -10,11 +10,9 @@ ModelCard model_card(const Lesson& lesson) {
     ++card.moving_bodies;
     card.degrees_of_freedom += body->IsFixedRotation() ? 2 : 3;
   }
-  // Scripts make one kind of joint, the rope over a pulley: it ties the two ends' lengths
-  // together, one degree of freedom.
-  for (const b2Joint* joint = scene.world().GetJointList(); joint != nullptr; joint = joint->GetNext()) {
-    if (joint->GetType() == e_pulleyJoint) card.constraints += 1;
-  }
+  // Scripts make one kind of tie, the rope over a pulley: taut, it ties the two ends' lengths
+  // together, one degree of freedom (slack, none: the card counts the rope as the lesson made it).
+  card.constraints += static_cast<int>(scene.ropes().size());
   card.degrees_of_freedom -= card.constraints;
   // The terms in use are those of the pairs that can rub in this scene, whether their values
   // came from sliders, from the presets or from the script (pair{ ..., sliders = false }).

@@ -576,10 +576,7 @@ int rope(lua_State* state) {
     for (const b2Vec2 end : {a, b}) {
       if ((end - pulley).Length() < 0.05f) throw InvalidInput(fields.what() + ": each end must start at least 5 cm from the pulley");
     }
-    b2PulleyJointDef definition;
-    definition.Initialize(from, to, pulley, pulley, a, b, 1.0f);
-    build.ropes.push_back({name, build.scene->world().CreateJoint(&definition)});
-    push_rope(state, build.ropes.back().joint);
+    push_indexed(state, rope_type, build.scene->add_rope(name, from, a, to, b, pulley, pulley));
     return 1;
   });
 }
