@@ -626,8 +626,8 @@ std::optional<std::size_t> lower_panel_text(const FrameRecord& record, std::size
 // reveals the theory, and sets class, theory and measurement side by side: every question (its
 // short name once revealed), the class's answer and its comparison (the measurement before the
 // reveal; after it the verdict under class, theory and measured) stays in sight, none a scroll
-// away. In projector mode the Predict tab scrolled for half the lessons before the reveal, and
-// for almost all after it.
+// away. In projector mode six lessons' answers were a scroll away before the reveal (stacked_blocks,
+// friction_models, lubricated, terrain, tipping_box, wedge) and four lessons' after it.
 TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
