@@ -338,19 +338,16 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   // typing the class's answer on a projector found the second question a scroll away, and the
   // reveal button scrolled out of sight); after it they do so only while that folds no sliders,
   // else they have the theory table's room and scroll (the reveal button comes first).
-  // Once the run has been played the class compares: its answers are planned whole whatever
-  // gives way (the whole Parameters panel, in the window), and the theory table under them has
-  // its room only while that folds nothing more; else it scrolls.
+  // Once the run has been played the class compares, and nobody slides values: the answers and
+  // the theory table under them have whatever gives way (the whole Parameters panel, in the
+  // window); what still does not fit of the table scrolls, the answers coming first.
   bool theory_scrolls = false;
   if (style.predictions_height) {
-    const float answers = style.predictions_height(inside);
-    const float whole = answers + (style.theory_hidden ? 0.0f : table);
+    const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
     const ColumnPlan roomy = plan_column(lesson, style, display, whole, style.comparing);
     if (style.comparing) {
-      const ColumnPlan answers_whole = plan_column(lesson, style, display, answers, true);
-      theory_scrolls =
-          !style.theory_hidden && (!roomy.theory_whole || roomy.parameters_step > answers_whole.parameters_step);
-      column_plan = theory_scrolls ? answers_whole : roomy;
+      theory_scrolls = !roomy.theory_whole;
+      column_plan = roomy;
     } else {
       theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
       if (!theory_scrolls) column_plan = roomy;
