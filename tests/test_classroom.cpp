@@ -1300,6 +1300,48 @@ TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
   EXPECT_EQ(read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
 }
 
+// Once the run has been played the class compares its answers with it, and nobody slides values:
+// on a projector the Parameters panel folds into its heading to leave the answers their room
+// (stacked_blocks' second answer was a scroll away). A click on its arrow opens it for the rest
+// of the run; the next run, and the sliders before it, are as they were.
+TEST(Classroom, TheParametersFoldIntoAHeadingWhileTheClassComparesAndOpenOnAClick) {
+  Driver driver("stacked_blocks");
+  driver.classroom().window_settings().projector = true;
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  ASSERT_TRUE(driver.classroom().theory_hidden());
+  const auto folded = [&] { return driver.classroom().control("parameters open").has_value(); };
+  const auto slider = [&] { return driver.classroom().control("pull_rate slider").has_value(); };
+  EXPECT_FALSE(folded()) << "before the run the class predicts and the teacher may set values";
+  EXPECT_TRUE(slider());
+  driver.playback().run_to(0.5 * driver.lesson().duration());
+  driver.frame();
+  EXPECT_FALSE(folded()) << "mid-run the run has not been seen yet";
+  driver.playback().run_to(driver.lesson().duration());
+  driver.frame();
+  driver.frame();
+  EXPECT_TRUE(folded());
+  EXPECT_FALSE(slider());
+  driver.click("parameters open");
+  driver.frame();
+  EXPECT_FALSE(folded()) << "opened by the teacher";
+  EXPECT_TRUE(slider());
+  EXPECT_TRUE(driver.classroom().theory_hidden()) << "opening the sliders reveals nothing";
+  // Back to t = 0 and played again: folded again for the new comparison.
+  driver.key(Key::r);
+  EXPECT_FALSE(folded());
+  EXPECT_TRUE(slider());
+  driver.playback().run_to(driver.lesson().duration());
+  driver.frame();
+  driver.frame();
+  EXPECT_TRUE(folded());
+  // A teacher who takes no predictions compares nothing: the sliders stay.
+  driver.classroom().window_settings().predictions = false;
+  driver.frame();
+  EXPECT_FALSE(folded());
+  EXPECT_TRUE(slider());
+}
+
 // A teacher who takes no predictions has the theory from the start.
 TEST(Classroom, WithPredictionsOffTheTheoryShowsFromTheStart) {
   Driver driver("incline");

@@ -608,6 +608,101 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
   }
 }
 
+// The first text drawn in the column's lower panel (the theory panel, or the tab it shares)
+// from `from` on that reads `wanted` (or starts with it, `prefix`): its place in the record.
+std::optional<std::size_t> lower_panel_text(const FrameRecord& record, std::size_t from, const std::string& wanted,
+                                            bool prefix = false) {
+  for (std::size_t i = from; i < record.texts.size(); ++i) {
+    const ShownText& text = record.texts[i];
+    const std::size_t id = text.panel.find("###");
+    const std::string panel = id == std::string::npos ? text.panel : text.panel.substr(id + 3);
+    if (panel != "theory" && panel != "books") continue;
+    if (prefix ? text.text.rfind(wanted, 0) == 0 : text.text == wanted) return i;
+  }
+  return std::nullopt;
+}
+
+// At the run's end a teacher reads what the run measured beside each of the class's answers,
+// reveals the theory, and sets class, theory and measurement side by side: every question (its
+// short name once revealed), the class's answer and its comparison (the measurement before the
+// reveal; after it the verdict under class, theory and measured) stays in sight, none a scroll
+// away. In projector mode six lessons' answers were a scroll away before the reveal (stacked_blocks,
+// friction_models, lubricated, terrain, tipping_box, wedge) and four lessons' after it.
+TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int checked = 0, out_of_sight = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
+    options.window.predictions = true;
+    Classroom window(options);
+    const std::vector<lessons::Prediction> predictions = window.playback().lesson().predictions();
+    if (predictions.empty()) continue;
+    // Typed before Play, as a class answers: numbers that are off, the last of each choice.
+    for (const lessons::Prediction& prediction : predictions) {
+      window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
+    }
+    window.playback().run_to(window.playback().lesson().duration());
+    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+      for (const bool revealed : {false, true}) {
+        window.window_settings().theme = theme;
+        window.predictions().revealed = revealed;
+        FrameRecord record;
+        for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+        std::string where = entry.name + (revealed ? " revealed" : " before the reveal") + " at the run's end, window " +
+                            screen.name + (theme == ThemeName::dark ? ", dark" : "");
+        ASSERT_EQ(window.theory_hidden(), !revealed) << where;
+        // The column's panels one under the other: none over the answers.
+        const ImGuiWindow* parameters = ImGui::FindWindowByName("###parameters");
+        ASSERT_TRUE(parameters != nullptr && parameters->WasActive) << where;
+        for (const char* id : {"###theory", "###books"}) {
+          const ImGuiWindow* below = ImGui::FindWindowByName(id);
+          if (below == nullptr || !below->WasActive) continue;
+          EXPECT_LE(parameters->Pos.y + parameters->Size.y, below->Pos.y + 0.5f)
+              << where << ": the Parameters panel reaches down over " << id;
+        }
+        const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
+        // Each prediction's texts in the order drawn: the first of each after the one before, so
+        // that the theory table's row of the same name below is not taken for the class's.
+        std::size_t next = 0;
+        for (const lessons::Prediction& prediction : predictions) {
+          const std::string answer = window.predictions().answers[prediction.expectation];
+          std::vector<std::pair<std::string, bool>> wanted;  // the text, whether it is a prefix
+          if (!revealed) {
+            wanted = {{prediction.question, false}, {answer, false}, {"measured: ", true}};
+          } else {
+            const auto row = std::find_if(rows.begin(), rows.end(), [&](const lessons::ExpectationResult& r) {
+              return r.name == prediction.expectation;
+            });
+            ASSERT_NE(row, rows.end()) << where << ": no row " << prediction.expectation;
+            wanted = {{prediction.expectation, false},
+                      {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
+                      {closeness(prediction, answer, *row).words, false}};
+          }
+          for (const auto& [text, prefix] : wanted) {
+            const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
+            ++checked;
+            if (!found) {
+              ADD_FAILURE() << where << ": \"" << text << "\" (" << prediction.expectation << ") is not drawn";
+              ++out_of_sight;
+              continue;
+            }
+            next = *found + 1;
+            const ShownText& shown = record.texts[*found];
+            if (!shown.whole()) ++out_of_sight;
+            EXPECT_TRUE(shown.whole()) << where << ": \"" << text << "\" needs " << text_of(shown.needed)
+                                       << " but only " << text_of(shown.visible) << " shows: a scroll away";
+          }
+        }
+      }
+    }
+  }
+  std::printf("[ %s ] %d of %d answers' texts out of sight at the run's end\n", screen.name, out_of_sight, checked);
+  EXPECT_GT(checked, 0);
+}
+
 std::string window_screen_name(const ::testing::TestParamInfo<WindowScreen>& screen) { return screen.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayout, ::testing::ValuesIn(window_screens), window_screen_name);

@@ -76,6 +76,7 @@ std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std
 void Classroom::forget_interaction() {
   control_errors_.clear();
   pair_open_.clear();
+  parameters_opened_ = false;
   sliding_.reset();
   hand_held_ = false;
   view_adjust_ = {};
@@ -170,6 +171,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     // (whose boundary would give μs away until the reveal anyway).
     if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
+  // Opened by the teacher for one run's comparison: the next run folds it again.
+  if (!run_played()) parameters_opened_ = false;
   predictions_style(style);
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_heights();

@@ -223,6 +223,13 @@ class Classroom {
   std::vector<std::string> foldable_pairs(bool opened_too) const;
   std::vector<ParameterRow> parameter_rows(std::size_t step) const;
   std::vector<float> parameters_heights() const;  // at each step
+  // Once the class's predictions can be set beside a whole run (it has been played to its end),
+  // nobody slides values while comparing: the whole Parameters panel may fold into a heading,
+  // the last step of giving way, which a click opens again for the rest of this run.
+  bool parameters_may_fold_away() const;
+  bool run_played() const;  // to the run's end, in the record
+  std::size_t parameters_folded_away_step() const;  // the step that folds it, when it may
+  void folded_parameters_panel(ImVec2 corner, ImVec2 size);
   void remember(const std::string& name);  // the last item's place, under `name`
   // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
   // value (none when value_x is reset_x) and its reset.
@@ -273,6 +280,7 @@ class Classroom {
   std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
   ClassPredictions predictions_;  // a new lesson asks again
   std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
+  bool parameters_opened_ = false;  // the teacher opened the Parameters panel folded for this run's comparison
   std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
   std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
   std::optional<std::string> screenshot_request_;

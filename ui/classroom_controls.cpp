@@ -147,12 +147,56 @@ std::vector<float> Classroom::parameters_heights() const {
     heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
                       static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing());
   }
+  // Folded away: its heading alone, a line with the arrow that opens it.
+  if (parameters_may_fold_away()) heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y);
   return heights;
+}
+
+bool Classroom::run_played() const {
+  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
+  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
+}
+
+bool Classroom::parameters_may_fold_away() const {
+  const lessons::Lesson& lesson = playback_->lesson();
+  return window_.predictions && !lesson.predictions().empty() && !parameters_opened_ && run_played();
+}
+
+std::size_t Classroom::parameters_folded_away_step() const {
+  return foldable_pairs(true).size() + foldable_pairs(false).size() + 1;
+}
+
+void Classroom::folded_parameters_panel(ImVec2 corner, ImVec2 size) {
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
+  if (ImGui::Begin("###parameters", nullptr, flags)) {
+    // As a friction pair folds: an arrow before the heading, the heading, and why it is folded.
+    if (ImGui::ArrowButton("##open parameters", ImGuiDir_Right)) parameters_opened_ = true;
+    remember("parameters open");
+    ImGui::SameLine();
+    ImGui::AlignTextToFramePadding();
+    shown_text("Parameters");
+    // Why, when the line holds it: the arrow and the heading say enough alone.
+    const char* why = lock_.empty() ? "folded while comparing" : "chosen by the teacher, folded";
+    ImGui::SameLine();
+    if (ImGui::CalcTextSize(why).x <= ImGui::GetContentRegionAvail().x) {
+      ImGui::TextDisabled("%s", why);
+      note_text(why);
+    }
+  }
+  ImGui::End();
 }
 
 void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
 
 void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
+  if (parameters_may_fold_away() && step >= parameters_folded_away_step()) {
+    folded_parameters_panel(corner, size);
+    return;
+  }
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

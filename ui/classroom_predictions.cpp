@@ -13,6 +13,7 @@ void Classroom::predictions_style(FrameStyle& style) {
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
   if (!window_.predictions || lesson.predictions().empty()) return;
   style.theory_hidden = theory_hidden();
+  style.comparing = run_played();
   style.predictions = [this] {
     // Answers are given before the run: once it has started they are what the class said.
     const bool editable = !predictions_.revealed && playback_->lesson().scene().frame() == 0;

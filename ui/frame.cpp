@@ -83,10 +83,14 @@ struct ColumnPlan {
   float parameters = 0.0f, theory = 0.0f, energy = 0.0f, model = 0.0f;
   std::size_t parameters_step = 0;  // how far the parameters gave way
   bool books_tabbed = false, theory_in_tabs = false, books_scroll = false;
+  bool theory_whole = true;  // the theory panel (or its tab) holds what it was planned for
 };
 
-// `theory`: the theory panel's contents, the height it is planned for.
-ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents) {
+// `theory`: the theory panel's contents, the height it is planned for. `whole_theory`: when
+// even the last step leaves them too little room, the parameters give way as far as they can
+// (else they keep half the column).
+ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
+                       bool whole_theory = false) {
   const float s = style.fonts->scale;
   const FrameLayout base = FrameLayout::of(display, s, style.origin);
   const ImGuiStyle& imgui = ImGui::GetStyle();
@@ -142,8 +146,13 @@ ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, I
   }
   // The tabs scroll; the parameters keep at least half the column, giving way only as far as
   // that needs.
-  const float budget = std::max(0.5f * room, room - tabs - gap);
+  plan.theory_whole = false;
   plan.parameters_step = steps;
+  if (whole_theory) {
+    plan.parameters = parameters(steps);
+    return plan;
+  }
+  const float budget = std::max(0.5f * room, room - tabs - gap);
   for (std::size_t step = 0; step <= steps; ++step) {
     if (parameters(step) <= budget) {
       plan.parameters_step = step;
@@ -329,12 +338,20 @@ void build_frame(lessons::Lesson& lesson, const WorldFraming& framing, const Fra
   // typing the class's answer on a projector found the second question a scroll away, and the
   // reveal button scrolled out of sight); after it they do so only while that folds no sliders,
   // else they have the theory table's room and scroll (the reveal button comes first).
+  // Once the run has been played the class compares, and nobody slides values: the answers and
+  // the theory table under them have whatever gives way (the whole Parameters panel, in the
+  // window); what still does not fit of the table scrolls, the answers coming first.
   bool theory_scrolls = false;
   if (style.predictions_height) {
     const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
-    const ColumnPlan roomy = plan_column(lesson, style, display, whole);
-    theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
-    if (!theory_scrolls) column_plan = roomy;
+    const ColumnPlan roomy = plan_column(lesson, style, display, whole, style.comparing);
+    if (style.comparing) {
+      theory_scrolls = !roomy.theory_whole;
+      column_plan = roomy;
+    } else {
+      theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
+      if (!theory_scrolls) column_plan = roomy;
+    }
   }
   const FrameLayout layout = FrameLayout::of(display, s, style.origin);
 

@@ -88,6 +88,10 @@ struct FrameStyle {
   std::function<void()> predictions;
   std::function<float(float width)> predictions_height;
   bool theory_hidden = false;
+  // The run has been played: the class compares its answers with it, before the reveal and
+  // after. The answers are then planned whole whatever gives way for them (the window's last
+  // step of giving way folds the whole Parameters panel); the theory table under them may scroll.
+  bool comparing = false;
   // The window's own drawing in each lane of the world (the force gauge, the measuring tools),
   // called three times (WorldToolsPass): to tell the placer what it will draw, to draw what has
   // fixed labels before the lesson's labels are placed, and to draw the rest after the world.
