@@ -1279,6 +1279,31 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
   EXPECT_FALSE(driver.classroom().theory_hidden());
 }
 
+// A second round: after the reveal the teacher changes a value and asks the class again. The
+// View menu's "Predict again" hides the theory, clears the answers and takes the run back to
+// t = 0, where the new answers are typed; before, the theory stayed up until another lesson
+// was opened, and the old answers were judged against the new run.
+TEST(Classroom, PredictAgainHidesTheTheoryForANewRoundOfAnswers) {
+  Driver driver("tipping_box");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  driver.click("prediction tips or slides: slides");
+  driver.key(Key::space);
+  driver.playback().run_to(driver.lesson().duration());
+  driver.key(Key::t);
+  ASSERT_FALSE(driver.classroom().theory_hidden());
+  driver.playback().set_parameter("push_height", "0.3");
+  driver.click("View menu");
+  driver.click("Predict again");
+  driver.frame();
+  EXPECT_TRUE(driver.classroom().theory_hidden()) << "the theory is hidden for the new round";
+  EXPECT_TRUE(driver.classroom().predictions().answers.empty()) << "the old answers are gone";
+  EXPECT_EQ(driver.lesson().scene().frame(), 0) << "back at the start, where answers are typed";
+  EXPECT_EQ(driver.lesson().parameter("push_height").value, 0.3) << "the teacher's new value stays";
+  driver.click("prediction tips or slides: tips");
+  EXPECT_EQ(driver.classroom().predictions().answers["tips or slides"], "tips");
+}
+
 // Space is how the window plays. Typed into a prediction's number (a teacher who typed the
 // class's answer and pressed Space to start, as the trial did), it ends the typing and plays,
 // and never becomes part of the number ("40 " read as "not a number" after the reveal).

@@ -163,6 +163,9 @@ class Classroom {
   // and whether the theory is still kept from the class.
   ClassPredictions& predictions() { return predictions_; }
   bool theory_hidden() const;
+  // A new round of predictions (the View menu): the answers cleared, the theory hidden again,
+  // the run back at t = 0.
+  void predict_again();
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
     const auto found = control_errors_.find(name);

@@ -132,6 +132,12 @@ void Classroom::menu_bar() {
     ImGui::MenuItem("Ask for predictions first", nullptr, &window_.predictions);
     remember("Ask for predictions first");
     if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.revealed = true;
+    // A second round: the teacher changed a value after the reveal, and the class predicts anew
+    // (before, the theory stayed up and the old answers were judged against the new run).
+    const bool answered = predictions_.revealed || !predictions_.answers.empty();
+    const bool asks = window_.predictions && !playback_->lesson().predictions().empty();
+    if (ImGui::MenuItem("Predict again (new answers, theory hidden)", nullptr, false, asks && answered)) predict_again();
+    remember("Predict again");
     ImGui::EndMenu();
   }
   tools_menu();

@@ -8,6 +8,13 @@ bool Classroom::theory_hidden() const {
   return ui::theory_hidden(playback_->lesson(), predictions_, window_.predictions);
 }
 
+void Classroom::predict_again() {
+  predictions_ = {};
+  // Answers are typed before the run: it goes back to its start.
+  playback_->reset();
+  status_ = "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
+}
+
 void Classroom::predictions_style(FrameStyle& style) {
   const lessons::Lesson& lesson = playback_->lesson();
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
