@@ -157,7 +157,7 @@ plot { "late", kind = "time", y = { "height" }, theory = { { "law", function(t)
   lesson.step_to(0.5);
   const Chart chart = plot_chart(lesson, 0, 10.0, theme(ThemeName::light));
   EXPECT_EQ(chart.message.rfind(script.path() + ":7: ", 0), 0u) << chart.message;
-  EXPECT_NE(chart.message.find("global 'rate'"), std::string::npos) << chart.message;
+  EXPECT_NE(chart.message.find("'rate' is not defined"), std::string::npos) << chart.message;
   EXPECT_TRUE(chart.theory.empty());
   EXPECT_EQ(chart.series.size(), 1u);
   EXPECT_FALSE(lesson.failed());

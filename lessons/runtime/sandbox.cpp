@@ -157,6 +157,20 @@ int ordered_pairs(lua_State* state) {
   return 3;
 }
 
+// Reading a global that nothing set: in plain Lua it is nil, so a student's `mass = mas` built
+// a 40 kg block beside a slider that said 1 kg, with no word. Here it is an error at the line
+// that read it. (A script may still ask whether a name is set with rawget(_G, name).)
+int undefined_global(lua_State* state) {
+  const char* name = lua_tostring(state, 2);
+  luaL_where(state, 2);  // the line of the script that read it; level 1 is this function
+  lua_pushfstring(state,
+                  "'%s' is not defined: nothing in the script gives it a value (check its spelling; a local must be "
+                  "declared above the line that uses it)",
+                  name != nullptr ? name : "?");
+  lua_concat(state, 2);
+  return lua_error(state);
+}
+
 // Libraries a lesson may use, and from the base library only what cannot reach outside the
 // script or outlive its budgets: pcall and xpcall go, since a script that catches the
 // budget's error could loop forever; setmetatable and getmetatable go, since metatables run
@@ -193,6 +207,12 @@ void open_safe_libraries(lua_State* state) {
     lua_pushnil(state);
     lua_setfield(state, -2, unseeded);
   }
+  lua_pop(state, 1);
+  lua_pushglobaltable(state);
+  lua_newtable(state);
+  lua_pushcfunction(state, undefined_global);
+  lua_setfield(state, -2, "__index");
+  lua_setmetatable(state, -2);
   lua_pop(state, 1);
 }
 

@@ -1,4 +1,4 @@
--- expect: 5: attempt to perform arithmetic on a nil value
+-- expect: 5: 'undefined_number' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 -- Repeating nothing a huge number of times is nothing, at once.
 local nothing = string.rep("", math.maxinteger)

@@ -1,3 +1,3 @@
--- expect: 3: attempt to call a nil value (global 'dofile')
+-- expect: 3: 'dofile' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 dofile("lessons/incline.lua")

@@ -1,3 +1,3 @@
--- expect: 3: attempt to index a nil value (global 'io')
+-- expect: 3: 'io' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local file = io.open("results.csv", "w")

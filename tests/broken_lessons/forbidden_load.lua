@@ -1,3 +1,3 @@
--- expect: 3: attempt to call a nil value (global 'load')
+-- expect: 3: 'load' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local f = load("return 1")

@@ -1,3 +1,3 @@
--- expect: 3: attempt to index a nil value (global 'os')
+-- expect: 3: 'os' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local seed = os.time()

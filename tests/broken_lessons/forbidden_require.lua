@@ -1,3 +1,3 @@
--- expect: 3: attempt to call a nil value (global 'require')
+-- expect: 3: 'require' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local json = require("json")

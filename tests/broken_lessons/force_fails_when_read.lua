@@ -1,4 +1,4 @@
--- expect: 7: attempt to perform arithmetic on a nil value (global 'rate')
+-- expect: 7: 'rate' is not defined
 -- when: step
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }

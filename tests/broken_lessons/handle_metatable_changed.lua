@@ -1,4 +1,4 @@
--- expect: 4: attempt to call a nil value (global 'getmetatable')
+-- expect: 4: 'getmetatable' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 getmetatable(floor).__gc = function() while true do end end

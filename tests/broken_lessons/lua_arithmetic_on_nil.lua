@@ -1,4 +1,4 @@
--- expect: 4: attempt to perform arithmetic on a nil value (global 'widht')
+-- expect: 4: 'widht' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local width = 0.4
 local half = widht / 2

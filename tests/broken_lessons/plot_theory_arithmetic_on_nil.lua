@@ -1,4 +1,4 @@
--- expect: 7: attempt to perform arithmetic on a nil value (global 'slope')
+-- expect: 7: 'slope' is not defined
 -- when: load
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }

@@ -1,3 +1,3 @@
--- expect: 3: attempt to call a nil value (global 'setmetatable')
+-- expect: 3: 'setmetatable' is not defined
 lesson { title = "Broken", question = "What goes wrong?" }
 local log = setmetatable({}, { __gc = function() while true do end end })
