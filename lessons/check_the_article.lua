@@ -27,7 +27,7 @@ local duration = 5  -- s: the worked example's "after 5 s"
 lesson {
   title = "Checking the article's worked examples",
   question = "Which of the article's numbers for its swinging, accelerating wedge hold? Each row gives a claim and "
-    .. "whether it holds; ✓ says the block, on the slope laid flat, agrees with the exact solution of the article's equations.",
+    .. "whether it holds; \"model agrees\" says the block, on the slope laid flat, agrees with the exact solution of the article's equations.",
   duration = duration,
   order = 39,
   -- wedge's scene: one block on one driven plank, settled by 4 passes of the contact solver

@@ -289,14 +289,13 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   const auto shown_text = [&] {
     FrameRecord record;
     hands.frame(0.0, &record);
-    for (const FrameRecord::Lane& lane : record.lanes) {
-      for (const std::string& text : lane.texts) {
-        if (text.rfind("stopwatch ", 0) == 0) return text;
-      }
+    // Over the title, beside the lesson's clock.
+    for (const ShownText& text : record.texts) {
+      if (text.text.rfind("stopwatch ", 0) == 0) return text.text;
     }
     return std::string("no stopwatch drawn");
   };
-  EXPECT_EQ(shown_text(), said) << "as the world view draws it";
+  EXPECT_EQ(shown_text(), said) << "as the window draws it";
   // A step back from the end is no longer the run's end: paused there.
   hands.key(Key::comma);
   EXPECT_FALSE(hands.classroom().playback().at_run_end());

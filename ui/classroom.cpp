@@ -137,9 +137,13 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
   const float transport_height = transport_shape(display.x).height;
+  // The stopwatch over the title: in the world's first lane it was written across the lanes'
+  // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
+  const float stopwatch_height = stopwatch_strip_height();
+  if (stopwatch_height > 0.0f) stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height));
   ImGui::PopFont();
-  const ImVec2 origin(0.0f, menu_height);
-  const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - transport_height));
+  const ImVec2 origin(0.0f, menu_height + stopwatch_height);
+  const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
   hold_view(origin, area, s);
 
   FrameStyle style;

@@ -190,6 +190,11 @@ class Classroom {
                    float newtons_to_pixels, LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
+  // The stopwatch, when shown, on a line of its own over the title and its clock (it reads the
+  // lesson's one clock, whatever the lanes): its height in the current font (0 when not shown),
+  // and the line.
+  float stopwatch_strip_height() const;
+  void stopwatch_strip(ImVec2 corner, ImVec2 size);
   void transport_bar(ImVec2 corner, ImVec2 size);
   // The transport bar's words, and its height: one row, or two when the words do not fit
   // beside the time bar.

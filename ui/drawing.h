@@ -56,6 +56,8 @@ class LabelPlacer {
   // or a contact's word left out is better than one drawn over another label, where neither
   // can be read (a projector's thin lanes of blocks side by side).
   std::optional<ImVec2> place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // A label's box at `centre`, padding included, as place() takes it.
+  static ImVec4 box_around(ImVec2 centre, ImVec2 size);
   // Whether a label's box (padding included) would cover nothing known and stay in the view.
   bool free(const ImVec4& box, bool off_bodies) const;
   // Takes a box found free() as it is: a label that names a place (a distance mark's number)
@@ -76,9 +78,7 @@ class LabelPlacer {
  private:
   bool clear(const ImVec4& box, bool off_bodies) const;  // covers nothing known
   static constexpr float pad = 2.0f;  // px kept clear around a label's text
-  // A label's box at `centre`, padding included; and a centre moved so the box stays in the view.
-  static ImVec4 box_around(ImVec2 centre, ImVec2 size);
-  ImVec2 moved_inside(ImVec2 centre, ImVec2 size) const;
+  ImVec2 moved_inside(ImVec2 centre, ImVec2 size) const;  // a centre moved so the box stays in the view
 
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1

@@ -1,6 +1,7 @@
 #include "ui/free_body.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "ui/drawing.h"
 #include "ui/text_record.h"
@@ -62,6 +63,24 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     }
   }
   draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
+  const ImVec2 footer_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
+  if (scene.frame() == 0) {
+    // Before the first step the solver has not yet said what the contacts push with: the weight
+    // alone, on a block resting on a floor, showed the class unbalanced forces. No arrows until
+    // the run starts, and words that say so, on as many lines as the inset's width needs.
+    draw->PopClipRect();
+    std::vector<std::string> lines = {"forces appear once the run starts"};
+    if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lines.front().c_str()).x > size.x - 16.0f * s) {
+      lines = {"forces appear once", "the run starts"};
+    }
+    const float line_height = fonts.small->FontSize;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const ImVec2 at(footer_at.x, footer_at.y - static_cast<float>(lines.size() - 1 - i) * line_height);
+      draw->AddText(fonts.small, fonts.small->FontSize, at, theme.faint_text, lines[i].c_str());
+      noted(lines[i], at);
+    }
+    return;
+  }
   // Labels between the title and the net force line, off every arrow.
   LabelPlacer labels(inset.origin, inset.size);
   b2Vec2 net{0.0f, 0.0f};
@@ -82,16 +101,9 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   }
   for (const ForceOnBody& force : forces) net += force.force;
   draw->PopClipRect();
-  // Before the first step the solver has not yet said what the contacts push with.
-  std::string net_text = scene.frame() == 0 ? "contact forces: after the first step"
-                                            : "net force: " + format_quantity(net.Length(), "N");
-  // Said shorter in a narrow inset (large text).
-  if (scene.frame() == 0 && fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, net_text.c_str()).x > size.x - 16.0f * s) {
-    net_text = "no contact forces yet";
-  }
-  const ImVec2 net_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
-  draw->AddText(fonts.small, fonts.small->FontSize, net_at, theme.faint_text, net_text.c_str());
-  noted(net_text, net_at);
+  const std::string net_text = "net force: " + format_quantity(net.Length(), "N");
+  draw->AddText(fonts.small, fonts.small->FontSize, footer_at, theme.faint_text, net_text.c_str());
+  noted(net_text, footer_at);
 }
 
 }  // namespace frictionlab::ui

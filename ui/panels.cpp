@@ -182,6 +182,17 @@ struct TheoryCells {
   bool names_above(float table_width) const { return table_width - numbers() < 9.0f * ImGui::CalcTextSize("m").x; }
 };
 
+// A row that states a claim's verdict of its own after " \u00b7 " (check_the_article's "first slip
+// (article: 0.42 s) \u00b7 does not hold"): its mark says in words that it checks the simulation
+// against the theory, since a bare \u2713 beside "does not hold" reads to a class as a contradiction.
+bool claims_verdict(const lessons::ExpectationResult& row) { return row.name.find(" \u00b7 ") != std::string::npos; }
+
+// What goes before the error: \u2713 or \u2717, or the words for a row with a verdict of its own.
+std::string pass_mark(const lessons::ExpectationResult& row) {
+  if (claims_verdict(row)) return row.passes ? "model agrees " : "model differs ";
+  return row.passes ? "\u2713 " : "\u2717 ";
+}
+
 // The unit every numeric row shares, "" when they have none or differ.
 std::string shared_unit(const std::vector<lessons::ExpectationResult>& rows) {
   std::string unit;
@@ -233,10 +244,10 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
       } else if (row.numeric) {
         std::string number = with_unit(row.error(), "");
         number.pop_back();
-        cell.error = (row.passes ? "\u2713 " : "\u2717 ") + std::string(row.error() > 0.0 ? "+" : "") + number;
+        cell.error = pass_mark(row) + std::string(row.error() > 0.0 ? "+" : "") + number;
         if (unit_for_all.empty() && !row.unit.empty()) cell.error += " " + row.unit;
       } else {
-        cell.error = row.passes ? "\u2713 agrees" : "\u2717 differs";
+        cell.error = claims_verdict(row) ? pass_mark(row) : row.passes ? "\u2713 agrees" : "\u2717 differs";
       }
       // Not a failure: the hand's pull is in no prediction (the caveat above says when it pulled).
       if (row.hand_pulled && !row.passes) cell.error = "hand-pulled";
@@ -248,10 +259,17 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
   const float room = width - widest[0] - widest[1] - 6.0f * ImGui::GetStyle().CellPadding.x;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     TheoryCells::Cells& cell = table.cells[i];
+    // A mark in words goes on a line of its own over the number where the two do not fit.
+    const std::string mark = pass_mark(rows[i]);
+    if (ImGui::CalcTextSize(cell.error.c_str()).x > room && claims_verdict(rows[i]) && rows[i].numeric && !cell.hand_pulled &&
+        cell.error.compare(0, mark.size(), mark) == 0) {
+      cell.error[mark.size() - 1] = '\n';
+      cell.error_lines = 2;
+    }
     if (ImGui::CalcTextSize(cell.error.c_str()).x > room && unit_for_all.empty() && !rows[i].unit.empty() &&
         cell.error.size() > rows[i].unit.size() + 1 && rows[i].numeric && !cell.hand_pulled) {
       cell.error[cell.error.size() - rows[i].unit.size() - 1] = '\n';
-      cell.error_lines = 2;
+      ++cell.error_lines;
     }
     widest[2] = std::max(widest[2], ImGui::CalcTextSize(cell.error.c_str()).x);
   }
