@@ -35,9 +35,9 @@ sed 's/^local angle = parameter/local angle = parameter {/' lessons/incline.lua 
 shot window_script_error "help = off\npredictions = off\n" "$scratch/my_incline.lua" --at 1
 
 # Predict, then reveal (projector mode, 1920 × 1080): the window driven by hand on Xvfb with
-# xdotool, as a teacher would: fold the friction pair, pick "slides", type 50 in the number's
-# box, play the run to its end, press T. The points clicked are where the window
-# puts those controls at this size; look at both pictures.
+# xdotool, as a teacher would: pick "slides", type 50 in the number's box, play the run to its
+# end, press T. (The window folds the friction pair itself to leave the questions room.) The
+# points clicked are where the window puts those controls at this size; look at both pictures.
 predict_shots() {
   local home="$scratch/predict" display=:57
   mkdir -p "$home/frictionlab" "$home/out"
@@ -51,7 +51,6 @@ predict_shots() {
   local window
   window=$(DISPLAY=$display xdotool search --name . | head -1)
   x() { DISPLAY=$display xdotool "$@"; sleep 0.7; }
-  x mousemove 1210 537 click 1          # fold "crate on floor" into its heading
   x mousemove 1336 841 click 1          # the box slides
   x mousemove 1305 969 click 1          # the number's box
   x type --delay 100 50
