@@ -292,6 +292,28 @@ TEST(MysteryWindow, TheMenuMakesAPairAMysteryAtTheStartOfAFreshRun) {
   EXPECT_FALSE(window.mystery().has_value());
 }
 
+// Under the teacher's lock the class cannot draw a new mystery in place of the one prepared:
+// the menu's pairs are greyed and say why; the teacher's reveal is still there. (The trial's
+// locked setup let the menu replace its mystery.)
+TEST(MysteryWindow, UnderALockTheMenuDrawsNoNewMysteryButStillReveals) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  options.lock = {"angle", "mass"};
+  options.mystery = MysteryChoice{"slope/block", 42};
+  ClassroomHands hands(options);
+  Classroom& window = hands.classroom();
+  const MysteryValues truth = mystery_values(42);
+  hands.frame();
+  hands.click("Mystery menu");
+  hands.click("mystery block/slope");
+  EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s) << "the prepared mystery stays";
+  EXPECT_EQ(window.mystery()->choice().seed, 42u);
+  hands.click("Mystery menu");
+  EXPECT_NE(hands.texts().find("Locked by --lock"), std::string::npos) << "the menu says why";
+  hands.click("mystery reveal menu");
+  EXPECT_TRUE(window.mystery()->revealed()) << "the teacher still reveals it";
+}
+
 TEST(MysteryWindow, APairTheLessonDoesNotHaveIsRefusedWithItsPairs) {
   try {
     ClassroomHands hands(mystery_options("spring_pull", "rubber/ice", 1));

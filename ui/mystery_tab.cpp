@@ -49,7 +49,21 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
         "This lesson has no friction pair whose " + class_words("mu_s") + " and " + class_words("mu_k") + " are sliders.";
     ImGui::TextDisabled("%s", none.c_str());
   } else {
-    ImGui::TextDisabled("Seed (the same seed draws the same values)");
+    // A new mystery changes a pair's values: under the teacher's lock the class cannot draw one
+    // (the trial's locked setup still let a student replace its mystery). The reveal stays the
+    // teacher's, as T's reveal of the theory does.
+    const std::string locked = classroom.lock_words();
+    if (!locked.empty()) {
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
+      ImGui::TextDisabled("%s", locked.c_str());
+      note_text(locked.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::Separator();
+    }
+    ImGui::BeginDisabled(!locked.empty());
+    // The seed of the next mystery drawn, never the current one's: with that a student could
+    // draw the values at home (a teacher read 1 here for a mystery drawn with 42).
+    ImGui::TextDisabled("Seed for a new mystery (the same seed draws the same values)");
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("0000000").x + 2.0f * ImGui::GetFrameHeight());
     ImGui::InputInt("##seed", &menu_seed);
     takes_a_number();
@@ -63,6 +77,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
       }
       remember_item(controls, "mystery " + pair);
     }
+    ImGui::EndDisabled();
     ImGui::Separator();
     if (ImGui::MenuItem("Reveal the true values", nullptr, false, mystery && !mystery->revealed())) classroom.reveal_mystery();
     remember_item(controls, "mystery reveal menu");
