@@ -102,7 +102,12 @@ std::string Classroom::gauge_figures() const {
   if (!figures) return "";
   // When the lesson pulled the body too, the figures are the pulls together, and say so.
   std::string text = figures->lesson_pulls.empty() ? "" : "hand + " + figures->lesson_pulls + ": ";
-  text += "peak " + format_quantity(figures->peak, "N");
+  // The peak is the breakaway's once it slid; before, the most it has held so far.
+  if (!figures->peak) {
+    text += "no peak (sliding when taken)";
+  } else {
+    text += (figures->broke_away ? "peak " : "held so far ") + format_quantity(*figures->peak, "N");
+  }
   text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
   return text;
 }

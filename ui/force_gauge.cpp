@@ -73,18 +73,31 @@ std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
   // only by a slant the hand gave it.
   const auto pull = [&](const GaugeSample& sample) { return lesson_pulled ? std::abs(sample.pull) : sample.force; };
   if (lesson_pulled) figures.lesson_pulls = lesson_pulls_;
-  figures.peak = -1.0;
+  // The step it broke away in: the first that ended slipping, after one that held.
+  std::size_t end = samples_.size();
   for (std::size_t i = first; i < samples_.size(); ++i) {
-    if (pull(samples_[i]) > figures.peak) {
-      figures.peak = pull(samples_[i]);
-      figures.peak_time = samples_[i].t;
+    if (samples_[i].slipping) {
+      end = i + 1;
+      figures.broke_away = i > first;
+      break;
     }
   }
+  const bool held = end > first + 1 || !samples_[first].slipping;
+  if (held) {
+    for (std::size_t i = first; i < end; ++i) {
+      if (!figures.peak || pull(samples_[i]) > *figures.peak) {
+        figures.peak = pull(samples_[i]);
+        figures.peak_time = samples_[i].t;
+      }
+    }
+  }
+  // Sliding from the start of the stretch: the plateau counts from there.
+  const double slid_from = figures.peak ? figures.peak_time : samples_[first].t;
   double sum = 0.0;
   long count = 0;
   for (std::size_t i = first; i < samples_.size(); ++i) {
     const GaugeSample& sample = samples_[i];
-    if (sample.t < figures.peak_time + settle_time - 0.5 * frame_step || !sample.slipping) continue;
+    if (sample.t < slid_from + settle_time - 0.5 * frame_step || !sample.slipping) continue;
     if (count == 0) figures.plateau_from = sample.t;
     figures.plateau_to = sample.t;
     sum += pull(sample);

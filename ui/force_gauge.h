@@ -42,11 +42,17 @@ struct HandStretch {
   double from = 0.0, to = 0.0;  // s
 };
 
-// What the latest stretch shows: its largest pull, and the mean pull while the body slid once
-// the pull had settled after the peak (none until it has slid that long). The pull is the
-// gauge's reading, or with the lesson's own pulls added when the lesson pulled the body too.
+// What the latest stretch shows: the peak, the largest pull while the body held, up to the step
+// it broke away in (static friction's limit; none when it was sliding when taken), and the mean
+// pull while the body slid once the pull had settled after the breakaway (none until it has slid
+// that long). A pull after the breakaway is no peak: the trial's pulley gave "peak 10.5 N" for
+// the jolt of its weight landing, and the incline a peak in mid-slide, where the hand sped up.
+// The pull is the gauge's reading, or with the lesson's own pulls added when the lesson pulled
+// the body too.
 struct GaugeFigures {
-  double peak = 0.0, peak_time = 0.0;
+  std::optional<double> peak;
+  double peak_time = 0.0;
+  bool broke_away = false;  // it slid after holding: the peak is the breakaway's
   std::optional<double> plateau;
   double plateau_from = 0.0, plateau_to = 0.0;  // s, the part of the run the plateau averages
   // The lesson's pulls on the body that the figures add to the hand's ("spring"); empty when the
