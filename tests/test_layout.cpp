@@ -551,6 +551,12 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
         seen[plot.number] = true;
         const std::string& title = window.playback().lesson().plots()[plot.number].title;
         EXPECT_TRUE(plot.layout.drawable) << where << ": \"" << title << "\" has no data area";
+        // Nor a sliver of data beside its legend: at least 30 % of the plots' strip wide (the
+        // incline's two plots side by side in projector mode drew their curves 240 px wide).
+        const float strip = FrameLayout::of(display, window.ui_scale(display)).plots_size.x;
+        EXPECT_GE(plot.layout.high_right.x - plot.layout.low_left.x, 0.3f * strip - 1.0f)
+            << where << ": \"" << title << "\" draws its data " << plot.layout.high_right.x - plot.layout.low_left.x
+            << " px wide of a strip " << strip << " px wide";
         const std::string covered = legend_on_data(plot.layout);
         EXPECT_TRUE(covered.empty()) << where << ": the legend of \"" << title << "\" at "
                                      << text_of(ImVec4(plot.layout.legend_min.x, plot.layout.legend_min.y,

@@ -209,6 +209,10 @@ double time_axis_before_reveal(double now) {
   return span;
 }
 
+// The least width of a plot's data, as a share of the plots' strip, before the window shows
+// fewer plots side by side (a page at a time).
+constexpr float min_data_share = 0.3f;
+
 void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
                 const Theme& colours) {
   const Fonts& fonts = *style.fonts;
@@ -232,10 +236,13 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
     for (std::size_t i = 0; i < plots.size(); ++i) {
       // A little less than the panel will hold, so that rounding does not tip the choice.
       const ImVec2 area = chart_area(title_of(i), size, paged && i % per_row == 0);
-      if (!legend_has_room(plot_chart(lesson, i, time_span, colours, true), ImVec2(area.x - 4.0f * s, area.y - 4.0f * s),
-                           fonts)) {
-        return false;
-      }
+      const Chart chart = plot_chart(lesson, i, time_span, colours, true);
+      const ImVec2 room(area.x - 4.0f * s, area.y - 4.0f * s);
+      if (!legend_has_room(chart, room, fonts)) return false;
+      // Nor a legend beside the data that leaves the data a sliver: the incline's two plots side
+      // by side in projector mode drew their curves 240 px wide, their legends as wide again.
+      const ChartLayout laid = layout_chart(chart, ImVec2(0.0f, 0.0f), room, fonts);
+      if (laid.high_right.x - laid.low_left.x < min_data_share * layout.plots_size.x) return false;
     }
     return true;
   };
