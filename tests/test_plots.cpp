@@ -297,6 +297,25 @@ TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
   EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
 }
 
+// Round values, and zero, rather than the ends: pulley's rope and table forces (−4.4 to 4.8 N)
+// in a short projector plot read "−4.4" and "4.8" and nothing between (the trial), since steps
+// of 5 left only 0. Round values a little closer, 4 apart, fit: −4, 0, 4.
+TEST(TheoryCurves, AShortPlotsFewYLabelsAreRoundValuesWithZero) {
+  const Fonts& fonts = projector_fonts();
+  LessonAt at("pulley", {}, 0.6);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(1100.0f, 250.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  ASSERT_GE(layout.y_ticks.size(), 2u);
+  EXPECT_NE(std::find(layout.y_ticks.begin(), layout.y_ticks.end(), 0.0), layout.y_ticks.end()) << "0 is labelled";
+  for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
+    EXPECT_EQ(layout.y_ticks[i], std::round(layout.y_ticks[i])) << layout.y_tick_labels[i] << " is no round value";
+    if (i > 0) {
+      const float gap = layout.to_screen(0.0, layout.y_ticks[i - 1]).y - layout.to_screen(0.0, layout.y_ticks[i]).y;
+      EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
+    }
+  }
+}
+
 // A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
 // window's μs and μk, theta and omega their letters, a_x as aₓ.
 TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {

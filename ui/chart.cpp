@@ -467,8 +467,30 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         break;
       }
     }
-    // Down to one tick (often just "0"), the axis could not be read: its two ends are labelled
-    // instead, where the data area is tall enough to hold two labels apart.
+    // Down to one tick (often just "0"), the axis could not be read. Round values a little
+    // closer together than the 1, 2, 5 steps allow come first (−4, 0, 4 on pulley's −4.4 to 4.8
+    // N, where the steps of 5 left "0" alone and the ends read "−4.4" and "4.8"); else its two
+    // ends are labelled, where the data area is tall enough to hold two labels apart.
+    if (layout.y_ticks.size() < 2 && layout.y_high > layout.y_low) {
+      const double span = layout.y_high - layout.y_low;
+      const double power = std::pow(10.0, std::floor(std::log10(span)));
+      for (const double decade : {power, 0.1 * power}) {
+        for (const double whole : {5.0, 4.0, 3.0, 2.0, 1.0}) {
+          const double step = whole * decade;
+          std::vector<double> values;
+          for (double k = std::ceil(layout.y_low / step - 1e-9); k * step <= layout.y_high + 1e-9 * step && values.size() < 12;
+               k += 1.0) {
+            values.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
+          }
+          if (values.size() < 2 || spacing(values) < 1.35f * text) continue;
+          layout.y_ticks = values;
+          layout.y_tick_labels.clear();
+          for (const double value : values) layout.y_tick_labels.push_back(tick_text(value, step));
+          break;
+        }
+        if (layout.y_ticks.size() >= 2) break;
+      }
+    }
     if (layout.y_ticks.size() < 2 && data_height >= 1.35f * text && layout.y_high > layout.y_low) {
       const double span = layout.y_high - layout.y_low;
       layout.y_ticks = {layout.y_low, layout.y_high};
