@@ -16,6 +16,7 @@
 #include "classroom_hands.h"
 #include "lessons/runtime/catalog.h"
 #include "ui/classroom.h"
+#include "lesson_scripts.h"
 #include "ui/measuring_tools.h"
 #include "ui/overlays.h"
 
@@ -511,6 +512,26 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
   level.frame();
   level.classroom().playback().run_to(0.5);
   EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
+}
+
+// A plank lying across the corner of a fixed block stands on no surface of it: Box2D's contact
+// with a corner takes the plank's own face for its normal, and the weight was split along the
+// plank's tilt (the trial dragged the incline's block over the slope's top and read
+// "m·g·sin θ = 1.24 N" beside a 30° slope). Resting on the block's top face it is split again.
+TEST(MeasuringTools, ABodyOnACornerGetsNoWeightSplitOfItsOwnTilt) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "stone", mu_s = 0.9, mu_k = 0.8 }
+box { "pedestal", material = "stone", kind = "static", width = 1, height = 1, x = 0, y = -0.5 }
+-- Its underside touching the pedestal's right-hand corner, tilted 10° down to the right.
+box { "plank", material = "wood", width = 2, height = 0.1, angle = -10, mass = 1,
+      x = 0.5 + 0.05 * math.sin(math.rad(10)), y = 0.05 * math.cos(math.rad(10)) - 0.003 }
+)"));
+  lessons::Lesson lesson(script.path());
+  lesson.step();
+  const Scene& scene = lesson.scene();
+  ASSERT_FALSE(contact_marks(scene).empty()) << "the plank touches the corner";
+  EXPECT_FALSE(surface_under(scene, scene.body("plank")).has_value());
+  EXPECT_FALSE(slope_weight(scene, scene.body("plank")).has_value()) << "no split along the plank's own tilt";
 }
 
 // A window opened at a later time (--at, as a teacher's or the README's screenshots are taken)
