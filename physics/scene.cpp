@@ -200,8 +200,10 @@ void Scene::tie(Rope& rope) {
 namespace {
 
 // Whether something the body touches holds it against being pushed along `push` (a floor under
-// a landed weight that the rope pressed down): that contact took the push, not the body.
+// a landed weight that the rope pressed down): that contact took the push, not the body. By
+// direction alone: a light weight's small push is held as surely as a heavy one's.
 bool held_against(const b2Body* body, b2Vec2 push) {
+  if (push.Normalize() <= 0.0f) return false;
   for (const b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next) {
     const b2Contact* contact = edge->contact;
     if (!contact->IsTouching() || !contact->IsEnabled()) continue;
@@ -209,39 +211,35 @@ bool held_against(const b2Body* body, b2Vec2 push) {
     contact->GetWorldManifold(&manifold);
     // Box2D's normal points from A to B: onto the body when it is B.
     const b2Vec2 onto = contact->GetFixtureB()->GetBody() == body ? manifold.normal : -manifold.normal;
-    if (b2Dot(onto, push) < -0.5f) return true;
+    if (b2Dot(onto, push) < -0.5f) return true;  // within 60° of straight against it
   }
   return false;
 }
 
-// Takes back from a body the impulse `p` (N·s) it was given at `point` in the last step, unless
-// a contact held it against it; returns the kinetic energy that gives back, J.
-double take_back(b2Body* body, b2Vec2 point, b2Vec2 p) {
-  if (body->GetType() != b2_dynamicBody || held_against(body, p)) return 0.0;
-  const auto energy = [body] {
-    const float spin = body->GetAngularVelocity();
-    const float local_centre = b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
-    return 0.5 * body->GetMass() * b2Dot(body->GetLinearVelocity(), body->GetLinearVelocity()) +
-           0.5 * (body->GetInertia() - body->GetMass() * local_centre) * spin * spin;
-  };
-  const double before = energy();
-  const float mass = body->GetMass();
-  const b2Vec2 arm = point - body->GetWorldCenter();
-  const float local_centre = b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
-  const float inertia = body->GetInertia() - mass * local_centre;  // about the centre of mass
-  body->SetLinearVelocity(body->GetLinearVelocity() - (1.0f / mass) * p);
-  if (inertia > 0.0f) body->SetAngularVelocity(body->GetAngularVelocity() - b2Cross(arm, p) / inertia);
-  return energy() - before;
+// A body's rotational inertia about its centre of mass (Box2D's GetInertia is about its origin).
+float inertia_about_centre(const b2Body* body) {
+  return body->GetInertia() - body->GetMass() * b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
 }
 
-// How fast a rope's two ends draw apart (m/s), each along its stretch from the pulley.
-float parting_speed(const Rope& rope) {
-  const auto along = [](const b2Body* body, b2Vec2 end, b2Vec2 pulley) {
-    b2Vec2 out = end - pulley;
-    if (out.Normalize() <= 0.0f) return 0.0f;
-    return b2Dot(body->GetLinearVelocityFromWorldPoint(end), out);
-  };
-  return along(rope.body_a, rope.end_a(), rope.pulley_a) + along(rope.body_b, rope.end_b(), rope.pulley_b);
+double kinetic_energy(const b2Body* body) {
+  const float spin = body->GetAngularVelocity();
+  return 0.5 * body->GetMass() * b2Dot(body->GetLinearVelocity(), body->GetLinearVelocity()) +
+         0.5 * inertia_about_centre(body) * spin * spin;
+}
+
+// Takes back from a body the impulse `p` (N·s) it was given at `point` in the last step, unless
+// a contact held it against it; returns the kinetic energy that gives back, J. The velocities
+// only: the step already moved the body by h times what is taken back, and the arm is the one
+// at the step's end, not its start; both differ by one step's worth.
+double take_back(b2Body* body, b2Vec2 point, b2Vec2 p) {
+  if (body->GetType() != b2_dynamicBody || held_against(body, p)) return 0.0;
+  const double before = kinetic_energy(body);
+  const float inertia = inertia_about_centre(body);
+  body->SetLinearVelocity(body->GetLinearVelocity() - (1.0f / body->GetMass()) * p);
+  if (inertia > 0.0f) {
+    body->SetAngularVelocity(body->GetAngularVelocity() - b2Cross(point - body->GetWorldCenter(), p) / inertia);
+  }
+  return kinetic_energy(body) - before;
 }
 
 // The unit vector from the pulley to a rope's end (zero when they meet).
@@ -250,15 +248,27 @@ b2Vec2 outward(b2Vec2 pulley, b2Vec2 end) {
   return d.Normalize() > 0.0f ? d : b2Vec2{0.0f, 0.0f};
 }
 
+// How fast a rope's two ends draw apart (m/s), each along its stretch from the pulley.
+float parting_speed(const Rope& rope) {
+  const auto along = [](const b2Body* body, b2Vec2 end, b2Vec2 pulley) {
+    return b2Dot(body->GetLinearVelocityFromWorldPoint(end), outward(pulley, end));
+  };
+  return along(rope.body_a, rope.end_a(), rope.pulley_a) + along(rope.body_b, rope.end_b(), rope.pulley_b);
+}
+
+// The joint's last step along the rope: positive when it pulled the ends towards the pulley.
+// Box2D reports the size along the stretch from the pulley to the end on body B.
+float signed_pull(const Rope& rope, float inv_dt) {
+  const b2Vec2 reaction = rope.joint->GetReactionForce(inv_dt);
+  return b2Dot(reaction, rope.end_b() - rope.pulley_b) >= 0.0f ? reaction.Length() : -reaction.Length();
+}
+
 }  // namespace
 
 double Scene::rope_tension(std::size_t index) const {
   const Rope& rope = ropes_.at(index);
   if (rope.joint == nullptr) return 0.0;
-  const double per_second = settings_.hz * settings_.substeps;
-  const b2Vec2 force = rope.joint->GetReactionForce(static_cast<float>(per_second));
-  // Box2D reports the force's size along the stretch from the pulley to the end on body B.
-  return b2Dot(force, rope.end_b() - rope.pulley_b) >= 0.0f ? force.Length() : -force.Length();
+  return signed_pull(rope, static_cast<float>(settings_.hz * settings_.substeps));
 }
 
 void Scene::slacken_or_tie_ropes() {
@@ -266,8 +276,7 @@ void Scene::slacken_or_tie_ropes() {
     const b2Vec2 out_a = outward(rope.pulley_a, rope.end_a()), out_b = outward(rope.pulley_b, rope.end_b());
     if (rope.joint != nullptr) {
       // The step's impulse, positive when the rope pulled each end towards the pulley.
-      const b2Vec2 reaction = rope.joint->GetReactionForce(1.0f);
-      const float impulse = b2Dot(reaction, out_b) >= 0.0f ? reaction.Length() : -reaction.Length();
+      const float impulse = signed_pull(rope, 1.0f);
       if (impulse >= 0.0f) {
         // A pull does work on the ends as they part: none while the rope keeps its length, a
         // loss when it jerks taut (the impulse times the mean of the parting speeds before and
@@ -643,7 +652,9 @@ void Scene::advance(double t, float h, double t_end, bool move) {
 
   world_->Step(h, settings_.velocity_iterations, settings_.position_iterations);
   listener_.finish_step();
-  slacken_or_tie_ropes();
+  // Not in the trial half step at t = 0, whose bodies are put back: a rope let go there would
+  // stay let go.
+  if (move) slacken_or_tie_ropes();
   // The hand's end of the gauge closes on the mouse, exactly for a mouse held still over the step.
   if (grab_ && move) grab_->hand += static_cast<float>(1.0 - std::exp(-h / grab_hand_lag)) * (grab_->target - grab_->hand);
   ++world_steps_;

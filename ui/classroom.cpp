@@ -243,8 +243,9 @@ void Classroom::handle_keys() {
     ImGui::ClosePopupToLevel(dialogs - 1, true);
     // The keys pressed after Escape in the same frame are the window's again (a quick Escape,
     // Space closes the dialog and plays), or the dialog's below if one is still open; the typing
-    // was in the dialog closed.
-    --dialogs;
+    // was in the dialog closed. (The frame's taps keep no order: a key pressed just before the
+    // Escape counts too.)
+    dialogs = dialog_levels();
     typed = Typing::nothing;
     std::erase(taps, std::make_pair(Key::escape, false));
   }

@@ -73,18 +73,20 @@ std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
   // only by a slant the hand gave it.
   const auto pull = [&](const GaugeSample& sample) { return lesson_pulled ? std::abs(sample.pull) : sample.force; };
   if (lesson_pulled) figures.lesson_pulls = lesson_pulls_;
-  // The step it broke away in: the first that ended slipping, after one that held.
+  // The first step that held (a body taken while sliding may come to rest and break away
+  // later), and the step it broke away in: the first after that one to end slipping.
+  std::size_t held = first;
+  while (held < samples_.size() && samples_[held].slipping) ++held;
   std::size_t end = samples_.size();
-  for (std::size_t i = first; i < samples_.size(); ++i) {
+  for (std::size_t i = held; i < samples_.size(); ++i) {
     if (samples_[i].slipping) {
       end = i + 1;
-      figures.broke_away = i > first;
+      figures.broke_away = true;
       break;
     }
   }
-  const bool held = end > first + 1 || !samples_[first].slipping;
-  if (held) {
-    for (std::size_t i = first; i < end; ++i) {
+  if (held < samples_.size()) {
+    for (std::size_t i = held; i < end; ++i) {
       if (!figures.peak || pull(samples_[i]) > *figures.peak) {
         figures.peak = pull(samples_[i]);
         figures.peak_time = samples_[i].t;

@@ -209,9 +209,9 @@ double time_axis_before_reveal(double now) {
   return span;
 }
 
-// The least width of a plot's data, as a share of the plots' strip, before the window shows
-// fewer plots side by side (a page at a time).
-constexpr float min_data_share = 0.3f;
+// The least width of a plot's data, as a share of its panel's, before the window shows fewer
+// plots side by side (a page at a time): the rest is for its axis labels and a legend beside it.
+constexpr float min_data_share = 0.5f;
 
 void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
                 const Theme& colours) {
@@ -242,7 +242,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       // Nor a legend beside the data that leaves the data a sliver: the incline's two plots side
       // by side in projector mode drew their curves 240 px wide, their legends as wide again.
       const ChartLayout laid = layout_chart(chart, ImVec2(0.0f, 0.0f), room, fonts);
-      if (laid.high_right.x - laid.low_left.x < min_data_share * layout.plots_size.x) return false;
+      if (laid.high_right.x - laid.low_left.x < min_data_share * room.x) return false;
     }
     return true;
   };

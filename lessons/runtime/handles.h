@@ -44,7 +44,7 @@ inline const b2Vec2 origin_point{0.0f, 0.0f};
 
 void push_body(lua_State* state, b2Body* body, bool is_surface = false, b2Vec2 origin = origin_point,
                b2Vec2 along = {1.0f, 0.0f}, float length = 0.0f);
-// Pushes a new handle of `type` holding `index` (a spring's or a force's place in the scene).
+// Pushes a new handle of `type` holding `index` (a spring's, a force's or a rope's place in the scene).
 void push_indexed(lua_State* state, HandleType type, size_t index);
 
 // The userdata at `index` when its metatable is `type`'s; null otherwise.

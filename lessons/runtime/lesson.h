@@ -116,7 +116,6 @@ struct Moment {
   std::string declared_at;                  // "path:line" of lesson{}
 };
 
-// A rope over a fixed pulley (a Box2D pulley joint): both ends stay taut, their lengths add up.
 // What the world view shows, as the script's view{} asks. The window's wheel and drag then
 // zoom and pan from there; every kind keeps moving bodies big enough to read, except a window
 // the script fixed in metres.

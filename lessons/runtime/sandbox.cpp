@@ -160,13 +160,28 @@ int ordered_pairs(lua_State* state) {
 // Reading a global that nothing set: in plain Lua it is nil, so a student's `mass = mas` built
 // a 40 kg block beside a slider that said 1 kg, with no word. Here it is an error at the line
 // that read it. (A script may still ask whether a name is set with rawget(_G, name).)
+// What the sandbox leaves out (open_safe_libraries, and the libraries it never opens): a script
+// that reaches for one is told so, not to check its spelling.
+constexpr std::string_view left_out[] = {"dofile", "loadfile", "load",         "require",      "collectgarbage",
+                                         "pcall",  "xpcall",   "setmetatable", "getmetatable", "io",
+                                         "os",     "package",  "debug",        "coroutine"};
+
 int undefined_global(lua_State* state) {
   const char* name = lua_tostring(state, 2);
-  luaL_where(state, 2);  // the line of the script that read it; level 1 is this function
-  lua_pushfstring(state,
-                  "'%s' is not defined: nothing in the script gives it a value (check its spelling; a local must be "
-                  "declared above the line that uses it)",
-                  name != nullptr ? name : "?");
+  const std::string_view named = name != nullptr ? name : "?";
+  luaL_where(state, 1);  // the line of the script that read it (level 0 is this function)
+  if (std::find(std::begin(left_out), std::end(left_out), named) != std::end(left_out)) {
+    lua_pushfstring(state,
+                    "'%s' is left out of the lesson sandbox: a lesson reaches no files or programs and runs the "
+                    "same every time",
+                    named.data());
+  } else {
+    lua_pushfstring(state,
+                    "'%s' is not defined: nothing in the script gave it a value before this line (check its "
+                    "spelling; a local must be declared above the line that uses it, a global given a value "
+                    "before it is read)",
+                    named.data());
+  }
   lua_concat(state, 2);
   return lua_error(state);
 }

@@ -1,3 +1,3 @@
--- expect: 3: 'require' is not defined
+-- expect: 3: 'require' is left out of the lesson sandbox
 lesson { title = "Broken", question = "What goes wrong?" }
 local json = require("json")

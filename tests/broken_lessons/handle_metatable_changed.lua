@@ -1,4 +1,4 @@
--- expect: 4: 'getmetatable' is not defined
+-- expect: 4: 'getmetatable' is left out of the lesson sandbox
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 getmetatable(floor).__gc = function() while true do end end
