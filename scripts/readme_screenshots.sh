@@ -58,13 +58,13 @@ predict_shots() {
   x mousemove 1900 120
   x key --window "$window" ctrl+s
   x key --window "$window" space
-  sleep 5                               # the run ends at 2.75 s and pauses
+  sleep 5                               # the run ends at 2.49 s and pauses
   x key --window "$window" t
   x key --window "$window" ctrl+s
   sleep 2
   kill $app $xvfb
   cp "$home/out/frictionlab_tipping_box_t0.00.png" docs/screenshots/window_predict.png
-  cp "$home/out/frictionlab_tipping_box_t2.75.png" docs/screenshots/window_reveal.png
+  cp "$home/out/frictionlab_tipping_box_t2.49.png" docs/screenshots/window_reveal.png
   echo docs/screenshots/window_predict.png docs/screenshots/window_reveal.png
 }
 predict_shots
