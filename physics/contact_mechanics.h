@@ -16,6 +16,13 @@ inline float central_inertia(const b2Body* body) {
   return body->GetInertia() - body->GetMass() * b2Dot(c, c);
 }
 
+// J: the body's kinetic energy, its motion and its spin about the centre of mass.
+inline double kinetic_energy(const b2Body* body) {
+  const b2Vec2 v = body->GetLinearVelocity();
+  const double w = body->GetAngularVelocity();
+  return 0.5 * body->GetMass() * b2Dot(v, v) + 0.5 * central_inertia(body) * w * w;
+}
+
 inline b2Vec2 point_velocity(const b2Body* body, const b2Vec2& world_point) {
   return body->GetLinearVelocityFromWorldPoint(world_point);
 }

@@ -31,12 +31,6 @@ constexpr float parallel_links = 0.999f;
 // How many bodies a share reaches: a stack, not a pile.
 constexpr std::size_t most_sharing = 16;
 
-double kinetic_energy(const b2Body* body) {
-  const b2Vec2 v = body->GetLinearVelocity();
-  const double w = body->GetAngularVelocity();
-  return 0.5 * body->GetMass() * b2Dot(v, v) + 0.5 * central_inertia(body) * w * w;
-}
-
 }  // namespace
 
 void FrictionListener::share_with_stuck(const b2Contact* broken, b2Body* body, const b2Vec2& push, double span,

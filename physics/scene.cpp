@@ -216,17 +216,6 @@ bool held_against(const b2Body* body, b2Vec2 push) {
   return false;
 }
 
-// A body's rotational inertia about its centre of mass (Box2D's GetInertia is about its origin).
-float inertia_about_centre(const b2Body* body) {
-  return body->GetInertia() - body->GetMass() * b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
-}
-
-double kinetic_energy(const b2Body* body) {
-  const float spin = body->GetAngularVelocity();
-  return 0.5 * body->GetMass() * b2Dot(body->GetLinearVelocity(), body->GetLinearVelocity()) +
-         0.5 * inertia_about_centre(body) * spin * spin;
-}
-
 // Takes back from a body the impulse `p` (N·s) it was given at `point` in the last step, unless
 // a contact held it against it; returns the kinetic energy that gives back, J. The velocities
 // only: the step already moved the body by h times what is taken back, and the arm is the one
@@ -234,11 +223,7 @@ double kinetic_energy(const b2Body* body) {
 double take_back(b2Body* body, b2Vec2 point, b2Vec2 p) {
   if (body->GetType() != b2_dynamicBody || held_against(body, p)) return 0.0;
   const double before = kinetic_energy(body);
-  const float inertia = inertia_about_centre(body);
-  body->SetLinearVelocity(body->GetLinearVelocity() - (1.0f / body->GetMass()) * p);
-  if (inertia > 0.0f) {
-    body->SetAngularVelocity(body->GetAngularVelocity() - b2Cross(point - body->GetWorldCenter(), p) / inertia);
-  }
+  body->ApplyLinearImpulse(-p, point, true);
   return kinetic_energy(body) - before;
 }
 
@@ -506,11 +491,8 @@ void Scene::mechanical_energy(double* kinetic, double* potential, double* elasti
   double k = 0.0, p = 0.0, s = 0.0;
   for (const b2Body* body = world_->GetBodyList(); body != nullptr; body = body->GetNext()) {
     if (body->GetType() != b2_dynamicBody) continue;
-    const double m = body->GetMass();
-    const b2Vec2 v = body->GetLinearVelocity();
-    const double w = body->GetAngularVelocity();
-    k += 0.5 * m * b2Dot(v, v) + 0.5 * central_inertia(body) * w * w;
-    p -= m * b2Dot(gravity_, body->GetWorldCenter());
+    k += kinetic_energy(body);
+    p -= static_cast<double>(body->GetMass()) * b2Dot(gravity_, body->GetWorldCenter());
   }
   for (const Spring& spring : springs_) {
     const double stretch = (hand_position(spring) - world_point(spring.body, spring.local_point)).Length() -
