@@ -18,9 +18,22 @@ namespace frictionlab::ui {
 // but their differences may not be.
 double share(double value, double low, double high) { return (0.5 * value - 0.5 * low) / (0.5 * high - 0.5 * low); }
 
-std::vector<double> axis_ticks(double low, double high, int count) {
+namespace {
+
+// The multiples of `step` from `low` to `high`, at most `most` of them: a step lost in the
+// rounding of large values must not loop for ever.
+std::vector<double> multiples_of(double step, double low, double high, std::size_t most) {
   std::vector<double> ticks;
-  if (!(high > low) || count < 1) return ticks;
+  for (double tick = std::ceil(low / step - 1e-9) * step; tick <= high + 1e-9 * step && ticks.size() < most; tick += step) {
+    ticks.push_back(std::abs(tick) < 1e-12 * step ? 0.0 : tick);
+  }
+  return ticks;
+}
+
+}  // namespace
+
+std::vector<double> axis_ticks(double low, double high, int count) {
+  if (!(high > low) || count < 1) return {};
   // In halves: the span of values near ±1.7e308 would overflow to infinity, and so may a step
   // of ten times a power of ten up there; such a step is made the largest that fits.
   const double half_rough = (0.5 * high - 0.5 * low) / count;
@@ -30,13 +43,8 @@ std::vector<double> axis_ticks(double low, double high, int count) {
   for (const double smaller : {5.0, 2.0, 1.0}) {
     if (!std::isfinite(step)) step = smaller * power;
   }
-  // At most a few more ticks than asked for: a step lost in the rounding of large ticks must
-  // not loop for ever.
-  for (double tick = std::ceil(low / step - 1e-9) * step; tick <= high + 1e-9 * step && ticks.size() < 4u * count + 4u;
-       tick += step) {
-    ticks.push_back(std::abs(tick) < 1e-12 * step ? 0.0 : tick);
-  }
-  return ticks;
+  // At most a few more ticks than asked for.
+  return multiples_of(step, low, high, 4u * static_cast<std::size_t>(count) + 4u);
 }
 
 std::string tick_text(double value, double step) {
@@ -477,11 +485,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       for (const double decade : {power, 0.1 * power}) {
         for (const double whole : {5.0, 4.0, 3.0, 2.0, 1.0}) {
           const double step = whole * decade;
-          std::vector<double> values;
-          for (double k = std::ceil(layout.y_low / step - 1e-9); k * step <= layout.y_high + 1e-9 * step && values.size() < 12;
-               k += 1.0) {
-            values.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
-          }
+          const std::vector<double> values = multiples_of(step, layout.y_low, layout.y_high, 12);
           if (values.size() < 2 || spacing(values) < 1.35f * text) continue;
           layout.y_ticks = values;
           layout.y_tick_labels.clear();
