@@ -133,7 +133,8 @@ std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<Accur
 // the fastest round is the code at the core's full pace, the median what this machine gave.
 std::string lesson_speed(bool quick, std::ostream& out) {
   const std::vector<std::string> names = lessons::builtin_lessons();
-  const int rounds = quick ? 1 : 21;
+  // 61 rounds of about 0.2 s: twelve seconds, longer than the slow spells, which last a second or two.
+  const int rounds = quick ? 1 : 61;
   std::vector<std::vector<double>> costs(names.size()), shares(names.size());
   std::vector<double> simulated(names.size(), 0.0);
   for (int round = 0; round < rounds; ++round) {
