@@ -136,6 +136,11 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   classroom_options.lock = options.lock;
   classroom_options.mystery = options.mystery.choice();
   classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  // The help panel a newcomer's first window opens with is for a person at the window: a
+  // picture taken where the window has no settings yet would show it over the lesson.
+  if (!options.screenshot.empty() && (settings_path.empty() || !fs::exists(settings_path))) {
+    classroom_options.window.help = false;
+  }
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
   // A prepared setup: read and checked against its lesson before the window opens.
@@ -145,6 +150,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   ui::WindowRun run;
   run.at = options.at;
   run.screenshot = options.screenshot;
+  run.fill_screen = options.projector;
   if (options.screenshot.empty() && !folder.empty()) {
     run.settings_path = settings_path;
     run.imgui_ini = folder + "/imgui.ini";

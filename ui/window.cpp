@@ -67,9 +67,26 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  std::unique_ptr<GLFWwindow, WindowDeleter> window(
-      glfwCreateWindow(settings.width, settings.height, "FrictionLab", nullptr, nullptr));
+  int area[4] = {0, 0, settings.width, settings.height};  // x, y, width, height
+  GLFWmonitor* const screen = run.fill_screen ? glfwGetPrimaryMonitor() : nullptr;
+  if (screen != nullptr) {
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetMonitorWorkarea(screen, &x, &y, &width, &height);
+    if (width > 0 && height > 0) {
+      area[0] = x;
+      area[1] = y;
+      area[2] = width;
+      area[3] = height;
+    }
+  }
+  std::unique_ptr<GLFWwindow, WindowDeleter> window(glfwCreateWindow(area[2], area[3], "FrictionLab", nullptr, nullptr));
   if (!window) throw NoDisplay("the display would not open an OpenGL 3.3 window (" + glfw_error + ")");
+  if (screen != nullptr) {
+    // The work area's size is the window's inside; a window manager adds its title bar, and
+    // maximizing lets it fit the two. With no window manager (Xvfb) the size alone does it.
+    glfwSetWindowPos(window.get(), area[0], area[1]);
+    glfwMaximizeWindow(window.get());
+  }
   glfwMakeContextCurrent(window.get());
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
@@ -98,7 +115,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   if (run.at) classroom.run_to(*run.at);
   int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
   bool full_screen = false;
-  int windowed[4] = {0, 0, settings.width, settings.height};
+  int windowed[4] = {area[0], area[1], area[2], area[3]};
   double last = glfwGetTime();
   WindowSettings saved = settings;
   int settle_frames = 3;

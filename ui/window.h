@@ -25,6 +25,9 @@ struct WindowRun {
   std::string screenshot;
   std::string settings_path;  // where the window's settings are kept; empty: nowhere
   std::string imgui_ini;      // ImGui's window places; empty: nowhere
+  // Open over the whole screen but its panels and task bars (frictionlab --projector: the
+  // class's screen is the projector's), rather than at the size the settings keep.
+  bool fill_screen = false;
 };
 
 // Returns when the window is closed. Throws NoDisplay before anything is shown when it cannot
