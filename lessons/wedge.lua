@@ -174,33 +174,59 @@ plot { "Energy books (the article's model)", kind = "time",
 -- Where no model describes the run, the rows say so in words: the block has slid off the
 -- plank's end (the turning model says when), or it has tumbled (turned more than 3° against
 -- the surface), which neither model allows.
+-- When the block leaves the plank, as the turning model has it; worked out once for each
+-- solution of the model (the rows below ask many times).
+local left_for, left_at
 local function left_the_plank()
-  for k, s in ipairs(turning.slide) do
-    if math.abs(s) > half - 0.5 * block_width then return (k - 1) * spacing end
+  if left_for ~= turning then
+    left_for, left_at = turning, nil
+    for k, s in ipairs(turning.slide) do
+      if math.abs(s) > half - 0.5 * block_width then
+        left_at = (k - 1) * spacing
+        break
+      end
+    end
   end
+  return left_at
 end
--- Tumbled before t (turned more than 3° against the surface while on the plank).
+-- Tumbled before t (turned more than 3° against the surface while on the plank). The record
+-- only grows while this script runs (going back in the window replays the run in a fresh one),
+-- so each recorded step is looked at once: the first whose tilt is 3° off the surface's.
+local twist_checked, first_twist = 0, nil  -- steps looked at; when the first such step was
 local function tumbled(t)
-  local times, tilts = history("time"), history("tilt")
-  local left = left_the_plank() or math.huge
-  for i = 1, #tilts do
-    if times[i] > t or times[i] >= left then break end
-    if math.abs(tilts[i] - math.deg(theta(times[i]))) > 3 then return true end
+  if not first_twist then
+    local times, tilts = history("time"), history("tilt")
+    for i = twist_checked + 1, #tilts do
+      if math.abs(tilts[i] - math.deg(theta(times[i]))) > 3 then
+        first_twist = times[i]
+        break
+      end
+      twist_checked = i
+    end
   end
-  return false
+  return first_twist ~= nil and first_twist <= t and first_twist < (left_the_plank() or math.huge)
 end
 -- The models carry the block turning with the surface. The contact can turn it only as far as
 -- its normal force's moment reaches: the surface's angular acceleration θ'' needs I·θ'' about
 -- the centre, and friction, e below it, adds −e·f. Past N·w/2 the block rocks onto an edge.
 local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
+-- The first sample at which it would rock, once for each solution of the model.
+local rocks_for, rocks_from
 local function rocks_by(t)
-  for k = 1, sample(t) do
-    local time_k = (k - 1) * spacing
-    local spin_up = -theta0 * omega * omega * sin(omega * time_k)
-    local needed = math.abs(inertia * spin_up + centre_height * turning.friction[k])
-    if turning.contact[k] ~= "flying" and needed > 0.5 * block_width * turning.normal[k] then return true end
+  local last = sample(t)  -- first: it may solve further
+  if rocks_for ~= turning then
+    rocks_for, rocks_from = turning, nil
+    for k = 1, #turning.slide do
+      local time_k = (k - 1) * spacing
+      local spin_up = -theta0 * omega * omega * sin(omega * time_k)
+      local needed = math.abs(inertia * spin_up + centre_height * turning.friction[k])
+      if turning.contact[k] ~= "flying" and needed > 0.5 * block_width * turning.normal[k] then
+        rocks_from = k
+        break
+      end
+    end
   end
-  return false
+  return rocks_from ~= nil and rocks_from <= last
 end
 local function no_model(t)
   local left = left_the_plank()
