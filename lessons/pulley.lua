@@ -74,8 +74,13 @@ plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_
   theory = { { "weight of the hanging mass M: M·g", function() return param.hanging_mass * g end } } }
 -- The speed rather than the acceleration: a straight line whose slope is the acceleration
 -- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
+-- The law holds while the weight hangs: it ends where the run does, as the weight lands (a
+-- render past the end shows the block sliding on without it).
 plot { "Speed of the block", kind = "time", y = { "speed" },
-  theory = { { "a·t, a = g·(M − μk·m)/(m + M), m the block's mass", function(t) return pulley_theory().acceleration * t end } } }
+  theory = { { "a·t, a = g·(M − μk·m)/(m + M), m the block's mass", function(t)
+    if t > run_length() then return nil end
+    return pulley_theory().acceleration * t
+  end } } }
 
 -- Reading the record ----------------------------------------------------------------------
 local function at_the_end(probe)
