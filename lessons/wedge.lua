@@ -50,7 +50,7 @@ lesson {
 -- a = 2·cos 2t m/s², μs 0.25, μk 0.18.
 local mass = parameter { "mass", 1.5, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }
 parameter { "theta0", 10, min = 0, max = 40, unit = "°", text = "how far the surface swings each way" }
-parameter { "omega", 3, min = 0, max = 10, unit = "rad/s", text = "how fast it swings" }
+parameter { "omega", 3, min = 0, max = 10, unit = "rad/s", text = "how fast it swings (0: it stays level)" }
 parameter { "a_x", 2, min = -30, max = 30, unit = "m/s²", text = "the wedge's sideways acceleration" }
 parameter { "a_x_omega", 2, min = 0, max = 10, unit = "rad/s", text = "how fast that acceleration swings (0: constant)" }
 pair { "wood", "wood", mu_s = 0.25, mu_k = 0.18, sliders = { "mu_s", "mu_k" } }

@@ -329,10 +329,41 @@ std::string script_place(lua_State* state, int level) {
   return "";
 }
 
+// Lua names the operation in arithmetic on a text that does not read as a number by its
+// metamethod ("attempt to mul a 'number' with a 'string'"): in words, for a student. Any other
+// message is returned as it is.
+static std::string arithmetic_in_words(const std::string& message) {
+  static const std::pair<const char*, const char*> operations[] = {
+      {"add", "add"},         {"sub", "subtract"},      {"mul", "multiply"}, {"div", "divide"},
+      {"mod", "take the remainder of"}, {"pow", "raise to a power"}, {"idiv", "floor-divide"},
+      {"unm", "negate"},      {"band", "and the bits of"}, {"bor", "or the bits of"},
+      {"bxor", "xor the bits of"}, {"shl", "shift"},   {"shr", "shift"},   {"bnot", "invert the bits of"}};
+  const std::string opening = "attempt to ";
+  const std::size_t at = message.find(opening);
+  if (at == std::string::npos) return message;
+  const std::size_t name_start = at + opening.size();
+  const std::size_t name_end = message.find(" a '", name_start);
+  if (name_end == std::string::npos) return message;
+  const std::string name = message.substr(name_start, name_end - name_start);
+  const char* verb = nullptr;
+  for (const auto& [lua_name, words] : operations) {
+    if (name == lua_name) verb = words;
+  }
+  const std::size_t first_end = message.find("' with a '", name_end + 4);
+  const std::size_t second_end = first_end == std::string::npos ? first_end : message.find('\'', first_end + 10);
+  if (verb == nullptr || second_end == std::string::npos || second_end + 1 != message.size()) return message;
+  const std::string first = message.substr(name_end + 4, first_end - name_end - 4);
+  const std::string second = message.substr(first_end + 10, second_end - first_end - 10);
+  const bool one_operand = name == "unm" || name == "bnot";
+  return message.substr(0, at) + "cannot " + verb + " " + (one_operand ? "a " + first : "a " + first + " and a " + second) +
+         ": a string (text in quotes) takes part in arithmetic only if it reads as a number, as \"2.5\" does";
+}
+
 int Sandbox::place_error(lua_State* state) {
   const Sandbox& sandbox = sandbox_of(state);
   const char* text = lua_tostring(state, 1);
-  std::string message = text ? text : "the script raised an error that is not a message (" + describe(state, 1) + ")";
+  std::string message =
+      text ? arithmetic_in_words(text) : "the script raised an error that is not a message (" + describe(state, 1) + ")";
   const std::string place = script_place(state, 1);
   const std::string full = sandbox.full_path(message);
   const bool placed = full.rfind(sandbox.chunk_name_ + ":", 0) == 0 || message.rfind("...", 0) == 0;
