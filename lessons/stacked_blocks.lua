@@ -220,8 +220,11 @@ probe { "floor_slipping", read = { on_floor, "slipping" } }
 probe { "top_slipping", read = { on_bottom, "slipping" } }
 probe { "tilt", unit = "°", read = { bottom, "angle" } }  -- the front lifting: positive
 
-plot { "Friction on each block", kind = "time", y = { "pull", "friction_on_top", "friction_on_bottom" } }
-plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "bottom_acceleration" },
+-- Each plot shades the slip it is about: the floor's, where the pair breaks away and the friction
+-- on the bottom block drops to kinetic; the top block's, where it stops keeping up.
+plot { "Friction on each block", kind = "time", y = { "pull", "friction_on_top", "friction_on_bottom" },
+  shade = "floor_slipping" }
+plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "bottom_acceleration" }, shade = "top_slipping",
   theory = { { "top slipping: μk·g", function(t)
     if not no_theory() and t * param.pull_rate >= slip_pull() and not tipped_by(t) then return top_acceleration_after() end
   end } } }

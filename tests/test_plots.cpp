@@ -470,6 +470,38 @@ plot { "one", kind = "xy", x = "friction_force", y = { "f_reduced" } }
   EXPECT_EQ(one.y_label, "the reduced model's friction (N)");
 }
 
+// A time plot shades what its shade probe says (a contact's slipping), named by it; without one,
+// any contact's slipping. stacked_blocks: the pair breaks away from the floor at 8.83 N (1.77 s
+// at 5 N/s) and the top block slips on the bottom one at 19.1 N (3.83 s).
+TEST(PlotBands, AShadeProbeChoosesWhichSlipAPlotShades) {
+  Lesson lesson(lessons::resolve_lesson("stacked_blocks"));
+  lesson.step_to(lesson.duration());
+  const double h = lesson.scene().frame_step();
+  const double floor_slips = 0.3 * 3.0 * 9.81 / 5.0, top_slips = (0.45 + 0.2) * 3.0 * 9.81 / 5.0;
+  const Chart friction = plot_chart(lesson, 0, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(friction.bands.size(), 1u);
+  EXPECT_NEAR(friction.bands[0].first, floor_slips, 2.0 * h);
+  EXPECT_EQ(friction.band_name, "floor slipping");
+  const Chart acceleration = plot_chart(lesson, 1, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(acceleration.bands.size(), 1u);
+  EXPECT_NEAR(acceleration.bands[0].first, top_slips, 2.0 * h);
+  EXPECT_NEAR(acceleration.bands[0].second, lesson.scene().times().back(), 1e-12);
+  EXPECT_EQ(acceleration.band_name, "top slipping");
+
+  // Without shade: every stretch when any contact slipped.
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+plot { "slide", kind = "time", y = { "speed" } }
+)"));
+  Lesson sliding(script.path());
+  sliding.step_to(0.1);
+  const Chart any = plot_chart(sliding, 0, 0.1, theme(ThemeName::light));
+  ASSERT_EQ(any.bands.size(), 1u);
+  EXPECT_EQ(any.band_name, "slipping");
+}
+
 // check_the_article draws Coulomb's law and the article's equation as written on one plot: each
 // in a dash pattern and colour of its own, on the plot and in the legend's key, in both themes.
 TEST(TheoryCurves, EachCurveOfAPlotHasALookOfItsOwnOnThePlotAndInItsLegend) {

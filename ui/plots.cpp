@@ -116,19 +116,23 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     chart.colour_keys = {{"sticking", theme.sticking}, {"slipping", theme.slipping}};
   }
   if (over_time) {
-    // The slip regime shaded behind the curves, from the frame before it began.
-    for (std::size_t i = 0; i < count && i < slipping.size();) {
-      if (!slipping[i]) {
+    // The slip regime shaded behind the curves, from the frame before it began: any contact's,
+    // or the steps where the plot's own shade probe reads other than 0.
+    const std::vector<double>* shade = plot.shade.empty() ? nullptr : &scene.probe(plot.shade).history;
+    const std::size_t shaded = shade ? shade->size() : slipping.size();
+    const auto on = [&](std::size_t i) { return shade ? (*shade)[i] != 0.0 : slipping[i] != 0; };
+    for (std::size_t i = 0; i < count && i < shaded;) {
+      if (!on(i)) {
         ++i;
         continue;
       }
       std::size_t j = i;
-      while (j + 1 < count && j + 1 < slipping.size() && slipping[j + 1]) ++j;
+      while (j + 1 < count && j + 1 < shaded && on(j + 1)) ++j;
       chart.bands.push_back({i > 0 ? times[i - 1] : 0.0, times[j]});
       i = j + 1;
     }
     chart.band_colour = theme.slip_band;
-    chart.band_name = "slipping";
+    chart.band_name = shade ? probe_words(lesson, plot.shade) : "slipping";
   }
   chart.mark_now = true;
   chart.now_colour = theme.now_marker;

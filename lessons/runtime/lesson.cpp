@@ -226,6 +226,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
     std::vector<std::string> names = plot.y;
     if (plot.x != "time") names.push_back(plot.x);
     names.insert(names.end(), plot.xs.begin(), plot.xs.end());
+    if (!plot.shade.empty()) names.push_back(plot.shade);
     for (const std::string& name : names) {
       bool known = false;
       std::string probes;

@@ -60,6 +60,9 @@ struct Plot {
   std::vector<std::string> xs;
   const std::string& x_of(std::size_t k) const { return xs.empty() ? x : xs[k]; }
   std::vector<TheoryCurve> theory;
+  // A time plot shades the stretches when a contact was slipping: any contact, or (shade =
+  // "probe") the steps where that probe, a contact's "slipping" say, reads other than 0.
+  std::string shade;
 };
 
 // A plot's theory curves sampled across its x range, one list of pieces a curve. A piece is a

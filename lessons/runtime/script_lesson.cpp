@@ -665,7 +665,7 @@ void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions
 int plot(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "plot");
-    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory"});
+    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory", "shade"});
     Plot declared;
     declared.title = fields.name();
     declared.declared_at = caller(state);
@@ -721,6 +721,19 @@ int plot(lua_State* state) {
     if (!declared.xs.empty() && declared.xs.size() != declared.y.size()) {
       throw InvalidInput(fields.what() + ": x lists " + std::to_string(declared.xs.size()) + " probes and y " +
                          std::to_string(declared.y.size()) + "; a list of x pairs each y with its own x, so give as many");
+    }
+    if (fields.has("shade")) {
+      fields.push("shade");
+      if (lua_type(state, -1) != LUA_TSTRING) {
+        throw InvalidInput(fields.what() + ": shade must be a probe's name, as in shade = \"top_slipping\"; got " +
+                           describe(state, -1));
+      }
+      declared.shade = lua_tostring(state, -1);
+      lua_pop(state, 1);
+      if (declared.kind != PlotKind::time) {
+        throw InvalidInput(fields.what() + ": shade marks stretches of time; an X–Y plot colours its line by whether a "
+                           "contact slips instead, so leave shade out");
+      }
     }
     LessonBuild& build = build_of(state);
     PlotFunctions functions;
