@@ -74,12 +74,15 @@ plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_
   theory = { { "weight of the hanging mass M: M·g", function() return param.hanging_mass * g end } } }
 -- The speed rather than the acceleration: a straight line whose slope is the acceleration
 -- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
--- The law holds while the weight hangs: it ends where the run does, as the weight lands (a
--- render past the end shows the block sliding on without it).
+-- The law holds while the weight hangs: it ends where the weight lands, its foot (half its
+-- 0.2 m height below its centre) come down to a resting gap above the floor (a render past the
+-- run's end shows the block sliding on without the rope).
+local fall = weight.y - 0.1 - resting_gap
 plot { "Speed of the block", kind = "time", y = { "speed" },
   theory = { { "a·t, a = g·(M − μk·m)/(m + M), m the block's mass", function(t)
-    if t > run_length() then return nil end
-    return pulley_theory().acceleration * t
+    local a = pulley_theory().acceleration
+    if a > 0 and t > math.sqrt(2 * fall / a) then return nil end
+    return a * t
   end } } }
 
 -- Reading the record ----------------------------------------------------------------------

@@ -175,11 +175,12 @@ plot { "Energy books (the article's model)", kind = "time",
 -- plank's end (the turning model says when), or it has tumbled (turned more than 3° against
 -- the surface), which neither model allows.
 -- When the block leaves the plank, as the turning model has it; worked out once for each
--- solution of the model (the rows below ask many times).
+-- solution of the model (the rows below ask many times), which its horizon names: each new
+-- solution reaches further. A number, so that the old solution's lists can go.
 local left_for, left_at
 local function left_the_plank()
-  if left_for ~= turning then
-    left_for, left_at = turning, nil
+  if left_for ~= horizon then
+    left_for, left_at = horizon, nil
     for k, s in ipairs(turning.slide) do
       if math.abs(s) > half - 0.5 * block_width then
         left_at = (k - 1) * spacing
@@ -214,8 +215,8 @@ local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
 local rocks_for, rocks_from
 local function rocks_by(t)
   local last = sample(t)  -- first: it may solve further
-  if rocks_for ~= turning then
-    rocks_for, rocks_from = turning, nil
+  if rocks_for ~= horizon then
+    rocks_for, rocks_from = horizon, nil
     for k = 1, #turning.slide do
       local time_k = (k - 1) * spacing
       local spin_up = -theta0 * omega * omega * sin(omega * time_k)

@@ -49,6 +49,25 @@ plot { "phase", x = "x", y = "vx" }
 // their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
 // the drag lane less far), the model card still sees every term, and moving the shared slider
 // rebuilds both lanes with the new value.
+// Lua names arithmetic on a string by its metamethod ("attempt to mul a 'number' with a
+// 'string'"). The message says the operation in words, and says what a string may do only where
+// a string is at fault: "2" + nil is the nil's, and a number with nil keeps Lua's own message.
+TEST(LessonRuntime, ArithmeticOnAStringIsSaidInWordsAndBlamesTheRightSide) {
+  const auto message = [](const std::string& line) {
+    const std::string text = error_building(with_heading(line + "\n"));
+    return text.substr(text.find(": ", text.find(".lua:")) + 2);
+  };
+  EXPECT_EQ(message("local half = \"0.4 m\" / 2"),
+            "cannot divide a string and a number: a string (text in quotes) takes part in arithmetic only if it reads as "
+            "a number, as \"2.5\" does");
+  EXPECT_EQ(message("local wrong = -\"fast\""),
+            "cannot negate a string: a string (text in quotes) takes part in arithmetic only if it reads as a number, as "
+            "\"2.5\" does");
+  EXPECT_EQ(message("local missing = \"2\" + nil"), "cannot add a string and a nil");
+  EXPECT_EQ(message("local flag = true * \"1\""), "cannot multiply a boolean and a string");
+  EXPECT_EQ(message("local missing = 3 + nil"), "attempt to perform arithmetic on a nil value");
+}
+
 // The guide gives 0.02 m as the least width and height of a box: exactly that is a box. It was
 // refused, with a range that included it, once 0.02 had been rounded down to single precision.
 TEST(LessonRuntime, ABoxAtTheLeastSizeIsABox) {

@@ -120,7 +120,8 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     // or the steps where the plot's own shade probe reads other than 0.
     const std::vector<double>* shade = plot.shade.empty() ? nullptr : &scene.probe(plot.shade).history;
     const std::size_t shaded = shade ? shade->size() : slipping.size();
-    const auto on = [&](std::size_t i) { return shade ? (*shade)[i] != 0.0 : slipping[i] != 0; };
+    // A shade probe that reads no number (NaN) shades nothing there.
+    const auto on = [&](std::size_t i) { return shade ? std::isfinite((*shade)[i]) && (*shade)[i] != 0.0 : slipping[i] != 0; };
     for (std::size_t i = 0; i < count && i < shaded;) {
       if (!on(i)) {
         ++i;

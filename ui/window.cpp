@@ -207,7 +207,11 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   }
 
   // The windowed size is kept, full screen or not: leaving full screen next time goes back to it.
-  if (!full_screen) {
+  // A window opened over the whole screen for a projector keeps the size it had before: the
+  // screen's would open the next plain window as large, its title bar past the screen's edge.
+  if (run.fill_screen) {
+    // settings.width and settings.height stay as they were read
+  } else if (!full_screen) {
     glfwGetWindowSize(window.get(), &settings.width, &settings.height);
   } else {
     settings.width = windowed[2];

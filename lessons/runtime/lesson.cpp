@@ -234,10 +234,14 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
         known = known || probe.name == name;
         probes += " " + probe.name;
       }
-      if (!known) {
-        throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': no probe is named '" + name +
-                          "'; probes:" + (probes.empty() ? " (none)" : probes) + ", and x may also be \"time\"");
+      if (known) continue;
+      const std::string listed = probes.empty() ? " (none)" : probes;
+      if (name == plot.shade) {
+        throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': shade names no probe '" + name + "'; probes:" +
+                          listed + " (a contact's slipping, say)");
       }
+      throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': no probe is named '" + name + "'; probes:" + listed +
+                        ", and x may also be \"time\"");
     }
   }
   try_theory_curves(*next);

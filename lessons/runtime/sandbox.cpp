@@ -329,15 +329,13 @@ std::string script_place(lua_State* state, int level) {
   return "";
 }
 
-// Lua names the operation in arithmetic on a text that does not read as a number by its
-// metamethod ("attempt to mul a 'number' with a 'string'"): in words, for a student. Any other
-// message is returned as it is.
+// Lua names the operation in arithmetic on a string by its metamethod ("attempt to mul a
+// 'number' with a 'string'"): in words, for a student. The hint about strings only where both
+// sides are numbers or strings; "2" + nil is the nil's fault. Any other message is kept.
 static std::string arithmetic_in_words(const std::string& message) {
   static const std::pair<const char*, const char*> operations[] = {
-      {"add", "add"},         {"sub", "subtract"},      {"mul", "multiply"}, {"div", "divide"},
-      {"mod", "take the remainder of"}, {"pow", "raise to a power"}, {"idiv", "floor-divide"},
-      {"unm", "negate"},      {"band", "and the bits of"}, {"bor", "or the bits of"},
-      {"bxor", "xor the bits of"}, {"shl", "shift"},   {"shr", "shift"},   {"bnot", "invert the bits of"}};
+      {"add", "add"},       {"sub", "subtract"},           {"mul", "multiply"},         {"div", "divide"},
+      {"mod", "take the remainder of"}, {"pow", "raise to a power"}, {"idiv", "floor-divide"}, {"unm", "negate"}};
   const std::string opening = "attempt to ";
   const std::size_t at = message.find(opening);
   if (at == std::string::npos) return message;
@@ -354,9 +352,12 @@ static std::string arithmetic_in_words(const std::string& message) {
   if (verb == nullptr || second_end == std::string::npos || second_end + 1 != message.size()) return message;
   const std::string first = message.substr(name_end + 4, first_end - name_end - 4);
   const std::string second = message.substr(first_end + 10, second_end - first_end - 10);
-  const bool one_operand = name == "unm" || name == "bnot";
+  const bool one_operand = name == "unm";
+  const auto plain = [](const std::string& type) { return type == "number" || type == "string"; };
+  const bool strings_only = plain(first) && (one_operand || plain(second));
   return message.substr(0, at) + "cannot " + verb + " " + (one_operand ? "a " + first : "a " + first + " and a " + second) +
-         ": a string (text in quotes) takes part in arithmetic only if it reads as a number, as \"2.5\" does";
+         (strings_only ? ": a string (text in quotes) takes part in arithmetic only if it reads as a number, as \"2.5\" does"
+                       : "");
 }
 
 int Sandbox::place_error(lua_State* state) {

@@ -724,7 +724,7 @@ int plot(lua_State* state) {
     }
     if (fields.has("shade")) {
       fields.push("shade");
-      if (lua_type(state, -1) != LUA_TSTRING) {
+      if (lua_type(state, -1) != LUA_TSTRING || lua_rawlen(state, -1) == 0) {
         throw InvalidInput(fields.what() + ": shade must be a probe's name, as in shade = \"top_slipping\"; got " +
                            describe(state, -1));
       }
