@@ -207,15 +207,15 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   }
 
   // The windowed size is kept, full screen or not: leaving full screen next time goes back to it.
-  // A window opened over the whole screen for a projector keeps the size it had before: the
+  // A window opened over the whole screen for a projector keeps the size read at the start: the
   // screen's would open the next plain window as large, its title bar past the screen's edge.
-  if (run.fill_screen) {
-    // settings.width and settings.height stay as they were read
-  } else if (!full_screen) {
-    glfwGetWindowSize(window.get(), &settings.width, &settings.height);
-  } else {
-    settings.width = windowed[2];
-    settings.height = windowed[3];
+  if (!run.fill_screen) {
+    if (full_screen) {
+      settings.width = windowed[2];
+      settings.height = windowed[3];
+    } else {
+      glfwGetWindowSize(window.get(), &settings.width, &settings.height);
+    }
   }
   if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
 }
