@@ -45,10 +45,6 @@ plot { "phase", x = "x", y = "vx" }
   EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
 }
 
-// One parameter handed to several pairs with sliders = false: the pairs make no sliders of
-// their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
-// the drag lane less far), the model card still sees every term, and moving the shared slider
-// rebuilds both lanes with the new value.
 // Lua names arithmetic on a string by its metamethod ("attempt to mul a 'number' with a
 // 'string'"). The message says the operation in words, and says what a string may do only where
 // a string is at fault: "2" + nil is the nil's, and a number with nil keeps Lua's own message.
@@ -140,6 +136,10 @@ parameter { "height_of_nothing", 1, min = 0, max = 2 }
   EXPECT_EQ(with_one.scene().settings().hz, 480);
 }
 
+// One parameter handed to several pairs with sliders = false: the pairs make no sliders of
+// their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
+// the drag lane less far), the model card still sees every term, and moving the shared slider
+// rebuilds both lanes with the new value.
 TEST(LessonRuntime, PairsWithoutSlidersTakeTheScriptsValues) {
   ScriptFile script(with_heading(R"(
 local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 1 }
