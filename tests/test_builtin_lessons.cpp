@@ -225,6 +225,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"wedge", {{"theta0", "30"}, {"a_x", "20"}, {"a_x_omega", "3"}, {"omega", "2"}}, ""},
                       Case{"wedge", {{"a_x", "4"}, {"a_x_omega", "0"}}, ""}, Case{"wedge", {{"theta0", "20"}}, ""},
                       Case{"wedge", {{"omega", "0.1"}}, ""}, Case{"wedge", {{"mu_k", "0"}}, ""},
+                      // A block that tumbles on the plank before the first swing ends: the ΔK row
+                      // says so on both sides (the record's twist, read once a step, found).
+                      Case{"wedge", {{"theta0", "10"}, {"omega", "4"}, {"a_x", "10"}, {"a_x_omega", "0"}}, ""},
                       // The driven plank's step velocity from its path in doubles: with float
                       // positions it was noisy by an ulp over h, and at 2000 Hz the block
                       // slipped more than it should (the slide ended 2.1 cm off).
