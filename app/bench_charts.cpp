@@ -9,6 +9,7 @@
 #include "app/bench.h"
 #include "ui/chart.h"
 #include "ui/headless.h"
+#include "ui/headless_render.h"
 
 namespace frictionlab {
 namespace {

@@ -2,8 +2,7 @@
 // takes for each lesson at 60 frames a second (the lesson's steps for 1/60 s, then every
 // panel built), measured on the classroom's own code on a headless context. Drawing the lists
 // is the GPU's job in a classroom; here llvmpipe does it on other threads, timed apart.
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glcorearb.h>
+#include "ui/gl.h"
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>

@@ -12,6 +12,25 @@
 
 namespace {
 
+#if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
+// The command line built for node (web/): the commands that need no drawing. The window is the
+// page's, and pictures to PNG files are the desktop program's.
+const char* const usage =
+    "usage: node frictionlab-cli.js list [--tsv]   the built-in lessons with their titles and moments\n"
+    "       node frictionlab-cli.js run LESSON [--duration S] [--hz N] [--substeps N]\n"
+    "                       [--friction stick-slip|threshold|regularized|box2d]\n"
+    "                       [--set NAME=VALUE ...] [--csv FILE] [--mystery MATERIAL/MATERIAL --seed N]\n"
+    "                                            run a lesson (a name from list, or a .lua file)\n"
+    "       node frictionlab-cli.js check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
+    "                                            run lessons and check their expectations; exit 1 if any fails\n"
+    "       node frictionlab-cli.js demo         theory beside simulation for every situation\n"
+    "       node frictionlab-cli.js help | --version\n"
+    "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing; 2 bad input (the\n"
+    "message names what and where) or the program could not finish.\n"
+    "This is FrictionLab's WebAssembly build for node: the classroom is the web page, and render and\n"
+    "bench are the desktop program's.\n";
+constexpr const char* command_names = "list, run, check, demo, help, --version";
+#else
 const char* const usage =
     "usage: frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N]\n"
     "                   [--friction T] [--theme light|dark] [--projector] [--at S --screenshot FILE.png]\n"
@@ -55,6 +74,9 @@ const char* const usage =
     "program could not finish.\n"
     "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
     "More in the manual: man frictionlab\n";
+constexpr const char* commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help", "--version"};
+constexpr const char* command_names = "list, run, check, render, demo, bench, help, --version; or a lesson to open in the window";
+#endif
 
 }  // namespace
 
@@ -65,13 +87,19 @@ int main(int argc, char** argv) {
     // Ctrl-C while a CSV or PNG is being written leaves no temporary file behind.
     frictionlab::ui::remove_partial_files_on_interrupt();
     const std::string command = args.empty() ? "" : args[0];
-    static const char* const commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help", "--version"};
+#if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
+    if (command.empty()) {
+      std::cerr << usage;
+      return 2;
+    }
+#else
     // Anything but a command is a lesson (a name or a .lua file) or the window's options.
     const bool a_command = std::find(std::begin(commands), std::end(commands), command) != std::end(commands);
     const bool looks_like_lesson = command.empty() || command.rfind("--", 0) == 0 ||
                                    command.find('/') != std::string::npos || command.find(".lua") != std::string::npos ||
                                    frictionlab::lessons::is_builtin_lesson(command);
     if (!a_command && looks_like_lesson) return frictionlab::run_window_mode(args, std::cout);
+#endif
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "demo") {
       if (!rest.empty()) throw frictionlab::InvalidInput("demo takes no options, got '" + rest[0] + "'; usage: frictionlab demo");
@@ -80,8 +108,10 @@ int main(int argc, char** argv) {
     if (command == "list") return frictionlab::run_list(rest, std::cout);
     if (command == "run") return frictionlab::run_lesson(rest, std::cout);
     if (command == "check") return frictionlab::run_check(rest, std::cout);
+#if !defined(FRICTIONLAB_COMMAND_LINE_ONLY)
     if (command == "render") return frictionlab::run_render(rest, std::cout);
     if (command == "bench") return frictionlab::run_bench(rest, std::cout);
+#endif
     if (command == "--version") {
       if (!rest.empty()) throw frictionlab::InvalidInput("--version takes no options, got '" + rest[0] + "'");
       std::cout << "frictionlab " FRICTIONLAB_VERSION "\n";
@@ -91,11 +121,15 @@ int main(int argc, char** argv) {
       std::cout << usage;
       return 0;
     }
+#if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
+    std::cerr << "frictionlab: unknown command '" << command << "'; commands: " << command_names
+              << (command == "render" || command == "bench" ? " (render and bench are the desktop program's)" : "") << '\n';
+#else
     std::string lessons;
     for (const std::string& name : frictionlab::lessons::builtin_lessons()) lessons += name + ", ";
-    std::cerr << "frictionlab: unknown command '" << command
-              << "'; commands: list, run, check, render, demo, bench, help, --version; or a lesson to open in the window: " << lessons
+    std::cerr << "frictionlab: unknown command '" << command << "'; commands: " << command_names << ": " << lessons
               << "or a .lua file\n";
+#endif
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';

@@ -18,8 +18,12 @@
 b2Timer::b2Timer() { Reset(); }
 
 void b2Timer::Reset() {
+  // b2_timer.h gives the timer its fields on Linux and Apple only (and on Windows, which this
+  // build is not for); WebAssembly (emscripten) has none to clear.
+#if defined(__linux__) || defined(__APPLE__)
   m_start_sec = 0;
   m_start_usec = 0;
+#endif
 }
 
 float b2Timer::GetMilliseconds() const { return 0.0f; }

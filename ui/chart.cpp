@@ -1,16 +1,10 @@
 #include "ui/chart.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glcorearb.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <memory>
 
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
 
 namespace frictionlab::ui {
 
@@ -771,34 +765,5 @@ void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colo
   }
 }
 
-Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height) {
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  const float scale = frame_scale(width, height) < 1.0f ? 1.0f : frame_scale(width, height);
-  const Fonts& fonts = host.prepare(scale, ThemeName::light);
-  const Theme& colours = theme(ThemeName::light);
-  ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-  io.DeltaTime = 1.0f / 60.0f;
-  gl.bind_framebuffer(width, height);
-  host.begin_frame();
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  columns = std::max(columns, 1);
-  const int rows = (static_cast<int>(charts.size()) + columns - 1) / columns;
-  const float cell_width = static_cast<float>(width) / static_cast<float>(columns);
-  const float cell_height = static_cast<float>(height) / static_cast<float>(std::max(rows, 1));
-  const float gap = 6.0f * scale;
-  for (std::size_t i = 0; i < charts.size(); ++i) {
-    const float x = cell_width * static_cast<float>(static_cast<int>(i) % columns);
-    const float y = cell_height * static_cast<float>(static_cast<int>(i) / columns);
-    draw_chart(draw, ImVec2(x + gap, y + gap), ImVec2(cell_width - 2.0f * gap, cell_height - 2.0f * gap), charts[i],
-               colours, fonts);
-  }
-  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(colours.background);
-  glClearColor(clear.x, clear.y, clear.z, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  host.end_frame();
-  return gl.read_pixels();
-}
 
 }  // namespace frictionlab::ui

@@ -152,8 +152,4 @@ int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point);
 // A polyline drawn in dashes of `dash` pixels with `gap` between them.
 void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap);
 
-// The charts in a grid of `columns`, on one picture, drawn headless (EGL). Throws
-// HeadlessUnavailable where EGL cannot start.
-Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height);
-
 }  // namespace frictionlab::ui

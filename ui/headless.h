@@ -42,8 +42,4 @@ class HeadlessContext {
   int height_ = 0;
 };
 
-// The bound framebuffer's pixels (a window's back buffer, or an offscreen one), top row first,
-// from the current GL context.
-Image read_framebuffer(int width, int height);
-
 }  // namespace frictionlab::ui

@@ -1,10 +1,10 @@
 #include "ui/headless_render.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glcorearb.h>
+#include "ui/gl.h"
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "ui/frame.h"
@@ -64,6 +64,36 @@ Image HeadlessRenderer::render(lessons::Lesson& lesson, const WorldFraming& fram
   Image image = gl_->read_pixels();
   times_.readback = seconds_since(start);
   return image;
+}
+
+Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const float scale = frame_scale(width, height) < 1.0f ? 1.0f : frame_scale(width, height);
+  const Fonts& fonts = host.prepare(scale, ThemeName::light);
+  const Theme& colours = theme(ThemeName::light);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+  io.DeltaTime = 1.0f / 60.0f;
+  gl.bind_framebuffer(width, height);
+  host.begin_frame();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  columns = std::max(columns, 1);
+  const int rows = (static_cast<int>(charts.size()) + columns - 1) / columns;
+  const float cell_width = static_cast<float>(width) / static_cast<float>(columns);
+  const float cell_height = static_cast<float>(height) / static_cast<float>(std::max(rows, 1));
+  const float gap = 6.0f * scale;
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    const float x = cell_width * static_cast<float>(static_cast<int>(i) % columns);
+    const float y = cell_height * static_cast<float>(static_cast<int>(i) / columns);
+    draw_chart(draw, ImVec2(x + gap, y + gap), ImVec2(cell_width - 2.0f * gap, cell_height - 2.0f * gap), charts[i],
+               colours, fonts);
+  }
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(colours.background);
+  glClearColor(clear.x, clear.y, clear.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  host.end_frame();
+  return gl.read_pixels();
 }
 
 }  // namespace frictionlab::ui

@@ -8,6 +8,7 @@
 
 #include "lessons/runtime/lesson.h"
 #include "ui/camera.h"
+#include "ui/chart.h"
 #include "ui/frame.h"
 #include "ui/headless.h"
 #include "ui/image.h"
@@ -56,5 +57,9 @@ class HeadlessRenderer {
   FrameTimes times_;
   HiddenValues hidden_;
 };
+
+// The charts in a grid of `columns`, on one picture, drawn headless (EGL). Throws
+// HeadlessUnavailable where EGL cannot start.
+Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height);
 
 }  // namespace frictionlab::ui

@@ -18,7 +18,12 @@ ImGuiHost::ImGuiHost(const char* ini_path) {
   // ImGui 1.86 reads keys from io.KeysDown at the indices io.KeyMap names. A window's backend
   // writes its own codes there; with none (tests, pictures), each key's index is its ImGuiKey.
   for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;
-  if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+#if defined(__EMSCRIPTEN__)
+  const char* const shading_language = "#version 300 es";  // WebGL 2
+#else
+  const char* const shading_language = "#version 330 core";
+#endif
+  if (!ImGui_ImplOpenGL3_Init(shading_language)) {
     ImGui::DestroyContext(context_);
     ImGui::SetCurrentContext(previous);
     throw std::runtime_error("ImGui's OpenGL 3 renderer could not load OpenGL (it needs libGL.so.1 from Debian's libgl1)");

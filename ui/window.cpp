@@ -2,15 +2,15 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glcorearb.h>
+#include "ui/gl.h"
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
 #include <memory>
 #include <optional>
 
-#include "ui/headless.h"
+#include "ui/framebuffer.h"
+#include "ui/glfw_keys.h"
 #include "ui/image.h"
 #include "ui/imgui_host.h"
 #include "ui/key_taps.h"
@@ -30,30 +30,6 @@ struct Glfw {
   }
   ~Glfw() { glfwTerminate(); }
 };
-
-// GLFW's key codes for the keys the classroom answers: the one place they are named.
-std::optional<Key> classroom_key(int glfw_key) {
-  switch (glfw_key) {
-    case GLFW_KEY_SPACE: return Key::space;
-    case GLFW_KEY_ESCAPE: return Key::escape;
-    case GLFW_KEY_PERIOD: return Key::period;
-    case GLFW_KEY_COMMA: return Key::comma;
-    case GLFW_KEY_R: return Key::r;
-    case GLFW_KEY_F1: return Key::f1;
-    case GLFW_KEY_F5: return Key::f5;
-    case GLFW_KEY_F11: return Key::f11;
-    case GLFW_KEY_P: return Key::p;
-    case GLFW_KEY_D: return Key::d;
-    case GLFW_KEY_T: return Key::t;
-    case GLFW_KEY_S: return Key::s;
-    case GLFW_KEY_E: return Key::e;
-    case GLFW_KEY_W: return Key::w;
-    case GLFW_KEY_L: return Key::l;
-    case GLFW_KEY_LEFT: return Key::left;
-    case GLFW_KEY_RIGHT: return Key::right;
-    default: return std::nullopt;
-  }
-}
 
 struct WindowDeleter {
   void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
@@ -96,10 +72,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   struct Listeners {
     Classroom* classroom;
     KeyTaps taps;
-  } listeners{&classroom, KeyTaps({{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
-                                    {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT},
-                                    {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
-                                    {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}})};
+  } listeners{&classroom, KeyTaps(glfw_modifier_keys)};
   glfwSetWindowUserPointer(window.get(), &listeners);
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Tests the web version, as scripts/test.sh's last part: builds it (scripts/web.sh), runs the
+# command line under node (every lesson's check, and run's CSV beside the native program's
+# when a native build is given), then drives the page in Debian's Chromium, headless
+# (puppeteer-core from npm, which brings no browser of its own).
+#   scripts/web_test.sh [NATIVE_BUILD_DIR]
+# Pictures the page test takes are left in build-web/page-shots/ to look at.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+native_build="${1:-}"
+
+packages=(chromium nodejs npm fonts-dejavu-core)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+# A node that did not come from Debian (nodesource's, say) is as good, and npm comes with it.
+command -v node > /dev/null && command -v npm > /dev/null && missing=("${missing[@]/nodejs}") && missing=("${missing[@]/npm}")
+missing=(${missing[@]})
+if ((${#missing[@]})); then
+  echo "web_test: installing ${missing[*]}"
+  if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+scripts/web.sh build-web -DFRICTIONLAB_WERROR=ON
+build="$PWD/build-web"
+mkdir -p "$build/page-test"
+cp web/test/package.json "$build/page-test/package.json"
+(cd "$build/page-test" && npm install --no-audit --no-fund --loglevel=error > npm.log 2>&1) ||
+  { cat "$build/page-test/npm.log"; echo "web_test: npm could not install puppeteer-core" >&2; exit 1; }
+rm -rf "$build/page-shots"
+mkdir -p "$build/page-shots"
+FRICTIONLAB_WEB_BUILD="$build" FRICTIONLAB_PAGE_SHOTS="$build/page-shots" FRICTIONLAB_NATIVE_BUILD="${native_build:+$PWD/$native_build}" \
+  NODE_PATH="$build/page-test/node_modules" node --test --test-concurrency=1 web/test/

@@ -1,0 +1,263 @@
+#include "web/browser_window.h"
+
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "ui/framebuffer.h"
+#include "ui/gl.h"
+#include "ui/glfw_keys.h"
+#include "ui/image.h"
+#include "ui/imgui_host.h"
+#include "web/browser_files.h"
+
+namespace frictionlab::web {
+namespace {
+
+// A finger on the canvas stands for the mouse: emscripten 3.1.6's GLFW presses the button on a
+// touch but never moves the pointer to it, so the page reads touches itself.
+struct Finger {
+  bool down = false;
+  bool pointing = false;  // the last pointer was a finger: keep it where it was lifted
+  ImVec2 at;
+  int id = -1;
+};
+
+struct Page {
+  ui::Classroom* classroom = nullptr;
+  PageRun run;
+  GLFWwindow* window = nullptr;
+  std::unique_ptr<ui::ImGuiHost> host;
+  ui::KeyTaps taps{ui::glfw_modifier_keys};
+  Finger finger;
+  double last = 0.0;
+  int settle_frames = 3;  // frames still to draw after the last input, for hover and focus
+  bool looping = true;
+  long drawn = 0;
+  std::string shown_title;
+  ui::WindowSettings saved;
+  bool full_screen = false;
+};
+
+Page* page = nullptr;
+
+double seconds_now() { return emscripten_get_now() / 1000.0; }
+
+// The canvas's size in the screen's own pixels (CSS pixels × devicePixelRatio), so text and
+// lines are as sharp as the screen allows.
+void canvas_size(int& width, int& height) {
+  double css_width = 0.0, css_height = 0.0;
+  emscripten_get_element_css_size("#canvas", &css_width, &css_height);
+  const double ratio = emscripten_get_device_pixel_ratio();
+  width = std::max(1, static_cast<int>(std::lround(css_width * ratio)));
+  height = std::max(1, static_cast<int>(std::lround(css_height * ratio)));
+}
+
+// Input arrived: draw again, and a few frames after it for ImGui's hover and focus to settle.
+void wake() {
+  if (page == nullptr) return;
+  page->settle_frames = 3;
+  if (!page->looping) {
+    page->looping = true;
+    page->last = seconds_now();  // time spent asleep is no time for the lesson to catch up on
+    emscripten_resume_main_loop();
+  }
+}
+
+EM_BOOL on_any_event(int, const void*, void*) {
+  wake();
+  return EM_FALSE;  // the event goes on to GLFW and the page as it would
+}
+
+EM_BOOL on_mouse(int, const EmscriptenMouseEvent*, void*) {
+  if (page != nullptr) page->finger.pointing = false;
+  wake();
+  return EM_FALSE;
+}
+
+EM_BOOL on_touch(int type, const EmscriptenTouchEvent* event, void*) {
+  if (page == nullptr) return EM_FALSE;
+  Finger& finger = page->finger;
+  const double ratio = emscripten_get_device_pixel_ratio();
+  for (int i = 0; i < event->numTouches; ++i) {
+    const EmscriptenTouchPoint& touch = event->touches[i];
+    if (!touch.isChanged) continue;
+    if (type == EMSCRIPTEN_EVENT_TOUCHSTART && !finger.down) finger.id = touch.identifier;
+    if (touch.identifier != finger.id) continue;  // one finger is the mouse; a second is ignored
+    finger.at = ImVec2(static_cast<float>(touch.targetX * ratio), static_cast<float>(touch.targetY * ratio));
+    finger.pointing = true;
+    if (type == EMSCRIPTEN_EVENT_TOUCHSTART) finger.down = true;
+    if (type == EMSCRIPTEN_EVENT_TOUCHEND || type == EMSCRIPTEN_EVENT_TOUCHCANCEL) finger.down = false;
+  }
+  wake();
+  return EM_TRUE;  // no scrolling or zooming of the page under a finger that pulls a block
+}
+
+// The clipboard: ImGui copies through the browser's clipboard; pasting comes from the page's
+// paste event (page.js types it into the focused field), since a page cannot read the
+// clipboard when ImGui asks.
+void copy_to_clipboard(void*, const char* text) {
+  EM_ASM({ frictionlabPage.copy(UTF8ToString($0)); }, text);
+}
+const char* nothing_to_paste(void*) { return ""; }
+
+void draw_frame() {
+  Page& p = *page;
+  ui::Classroom& classroom = *p.classroom;
+  const double now = seconds_now();
+  const double wall = std::clamp(now - p.last, 0.0, 0.25);  // a hidden tab must not ask for minutes at once
+  p.last = now;
+
+  int width = 0, height = 0;
+  canvas_size(width, height);
+  int canvas_width = 0, canvas_height = 0;
+  emscripten_get_canvas_element_size("#canvas", &canvas_width, &canvas_height);
+  if (canvas_width != width || canvas_height != height) emscripten_set_canvas_element_size("#canvas", width, height);
+
+  const ImVec2 display(static_cast<float>(width), static_cast<float>(height));
+  const ui::Fonts& fonts = p.host->prepare(classroom.ui_scale(display), classroom.window_settings().theme);
+  ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  // The canvas's own pixels are the display: GLFW's pointer is in them already.
+  io.DisplaySize = display;
+  io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+  if (p.finger.pointing) {
+    io.MousePos = p.finger.at;
+    io.MouseDown[0] = p.finger.down;
+  }
+  p.taps.hold(io);
+  p.host->begin_frame();
+  classroom.frame(fonts, display, wall);
+  if (std::string title = classroom.window_title(); title != p.shown_title) {
+    emscripten_set_window_title(title.c_str());
+    p.shown_title = std::move(title);
+  }
+  glViewport(0, 0, width, height);
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(ui::theme(classroom.window_settings().theme).background);
+  glClearColor(clear.x, clear.y, clear.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  p.host->end_frame();
+  ++p.drawn;
+  p.taps.release(io, [&](int key) { return glfwGetKey(p.window, key) == GLFW_PRESS; });
+
+  // A screenshot is read back before the browser shows the frame (and clears it).
+  if (std::optional<std::string> screenshot = classroom.take_screenshot_request()) {
+    std::string error;
+    try {
+      ui::write_png(ui::read_framebuffer(width, height), *screenshot);
+    } catch (const std::exception& failure) {
+      error = failure.what();
+    }
+    classroom.screenshot_done(*screenshot, error);
+  }
+  offer_downloads();
+
+  // Projector mode's full screen is the browser's: asked for within the key's or button's
+  // event (browsers allow it only then), left with Esc as well.
+  ui::WindowSettings& settings = classroom.window_settings();
+  if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
+  if (settings.full_screen != p.full_screen) {
+    EM_ASM({ frictionlabPage.setFullScreen($0); }, settings.full_screen ? 1 : 0);
+    p.full_screen = settings.full_screen;
+  }
+  if (!p.run.settings_path.empty() && !(settings == p.saved)) {
+    ui::save_settings(settings, p.run.settings_path);
+    keep_home_folder();
+    p.saved = settings;
+  }
+}
+
+// One turn of the browser's animation frame. Paused and untouched, the picture cannot change:
+// the loop stops until input wakes it, so an open page costs a laptop nothing.
+void frame_loop() {
+  Page& p = *page;
+  draw_frame();
+  p.settle_frames = p.classroom->idle() ? std::max(0, p.settle_frames - 1) : 3;
+  if (p.settle_frames == 0) {
+    p.looping = false;
+    emscripten_pause_main_loop();
+  }
+}
+
+}  // namespace
+
+long frames_drawn() { return page == nullptr ? 0 : page->drawn; }
+
+void run_page(ui::Classroom& classroom, const PageRun& run) {
+  if (glfwInit() == GLFW_FALSE) throw std::runtime_error("the browser offers no canvas to draw on");
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+  int width = 0, height = 0;
+  canvas_size(width, height);
+  GLFWwindow* window = glfwCreateWindow(width, height, "FrictionLab", nullptr, nullptr);
+  if (window == nullptr) throw std::runtime_error("this browser would not give the page WebGL 2");
+  glfwMakeContextCurrent(window);
+  // GLFW sized the canvas's style too; the page's stylesheet decides its size.
+  EM_ASM({ frictionlabPage.canvasSized(); });
+
+  page = new Page;  // lives as long as the page
+  page->classroom = &classroom;
+  page->run = run;
+  page->window = window;
+  page->saved = classroom.window_settings();
+  page->full_screen = false;
+  page->host = std::make_unique<ui::ImGuiHost>(nullptr);
+  glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS || page == nullptr) return;
+    page->taps.pressed(key);
+    if (const std::optional<ui::Key> named = ui::classroom_key(key)) {
+      page->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
+    }
+  });
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGuiIO& io = ImGui::GetIO();
+  io.SetClipboardTextFn = copy_to_clipboard;
+  io.GetClipboardTextFn = nothing_to_paste;
+
+  // Everything that can change the picture wakes the loop.
+  const char* const canvas = "#canvas";
+  emscripten_set_mousedown_callback(canvas, nullptr, EM_TRUE, on_mouse);
+  emscripten_set_mousemove_callback(canvas, nullptr, EM_TRUE, on_mouse);
+  emscripten_set_mouseup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, on_mouse);
+  emscripten_set_wheel_callback(canvas, nullptr, EM_TRUE,
+                                [](int type, const EmscriptenWheelEvent*, void*) { return on_any_event(type, nullptr, nullptr); });
+  emscripten_set_touchstart_callback(canvas, nullptr, EM_TRUE, on_touch);
+  emscripten_set_touchmove_callback(canvas, nullptr, EM_TRUE, on_touch);
+  emscripten_set_touchend_callback(canvas, nullptr, EM_TRUE, on_touch);
+  emscripten_set_touchcancel_callback(canvas, nullptr, EM_TRUE, on_touch);
+  const auto key_woke = [](int type, const EmscriptenKeyboardEvent*, void*) { return on_any_event(type, nullptr, nullptr); };
+  emscripten_set_keydown_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, key_woke);
+  emscripten_set_keyup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, key_woke);
+  emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE,
+                                 [](int type, const EmscriptenUiEvent*, void*) { return on_any_event(type, nullptr, nullptr); });
+  emscripten_set_fullscreenchange_callback(EMSCRIPTEN_EVENT_TARGET_DOCUMENT, nullptr, EM_TRUE,
+                                           [](int type, const EmscriptenFullscreenChangeEvent* change, void*) {
+                                             // Esc leaves the browser's full screen without asking us.
+                                             if (page != nullptr && !change->isFullscreen) {
+                                               page->classroom->window_settings().full_screen = false;
+                                               page->full_screen = false;
+                                             }
+                                             return on_any_event(type, nullptr, nullptr);
+                                           });
+  page->last = seconds_now();
+  emscripten_set_main_loop(frame_loop, 0, false);
+}
+
+}  // namespace frictionlab::web
+
+// The page's JavaScript wakes the loop when it changes something the picture shows (a lesson
+// applied from the editor, a setting), and reads the frame count for its tests.
+extern "C" {
+EMSCRIPTEN_KEEPALIVE void frictionlab_wake() { frictionlab::web::wake(); }
+EMSCRIPTEN_KEEPALIVE long frictionlab_frames_drawn() { return frictionlab::web::frames_drawn(); }
+}

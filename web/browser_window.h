@@ -1,0 +1,27 @@
+// The classroom in a web page: the browser's platform adapter, as ui/window.h is the desktop's.
+// The canvas (#canvas) through emscripten's GLFW and WebGL 2, ImGui's GLFW input, touch as the
+// mouse, the canvas following the page's size at the screen's own pixel density, the browser's
+// full screen, and a loop that stops drawing while nothing can change.
+#pragma once
+
+#include <string>
+
+#include "ui/classroom.h"
+
+namespace frictionlab::web {
+
+struct PageRun {
+  std::string settings_path;  // the window's settings, kept in the browser; empty: nowhere
+};
+
+// Starts the page's frame loop and returns to the browser (the loop runs from its events).
+// The classroom must outlive the page.
+void run_page(ui::Classroom& classroom, const PageRun& run);
+
+// The loop's counts, for the page's tests: frames drawn since the page opened.
+long frames_drawn();
+
+}  // namespace frictionlab::web
+
+// Wakes the page's loop after JavaScript changed something the picture shows.
+extern "C" void frictionlab_wake();

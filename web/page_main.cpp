@@ -1,0 +1,177 @@
+// FrictionLab's web page: the classroom on the page's canvas, with the built-in lessons and the
+// font in the page's packaged files (/lessons, /fonts) and the student's own lessons and the
+// window's settings in the browser's storage (the home folder, which page.js keeps on IndexedDB).
+//
+// page.js starts it with the arguments a link or the page gives: [LESSON] [--setup FILE]
+// [--projector], and calls the functions at the end of this file for what the page's own
+// controls do (the lesson editor, links, the projector button).
+#include <emscripten.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lessons/runtime/catalog.h"
+#include "physics/validation.h"
+#include "ui/classroom.h"
+#include "ui/playback.h"
+#include "ui/setup_file.h"
+#include "web/browser_files.h"
+#include "web/browser_window.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace frictionlab;
+
+std::unique_ptr<ui::Classroom> classroom;
+std::string returned;  // the last text handed to JavaScript; lives until the next call
+
+const char* hand_over(std::string text) {
+  returned = std::move(text);
+  return returned.c_str();
+}
+
+ui::ClassroomOptions page_options(const std::vector<std::string>& args, std::string& problem) {
+  std::string lesson, setup;
+  bool projector = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--projector") {
+      projector = true;
+    } else if (args[i] == "--setup" && i + 1 < args.size()) {
+      setup = args[++i];
+    } else {
+      lesson = args[i];
+    }
+  }
+  ui::ClassroomOptions options;
+  const std::string folder = ui::settings_folder();
+  if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
+  if (projector) options.window.projector = true;
+  options.output_folder = web::downloads_folder;
+  try {
+    options.lesson = lessons::resolve_lesson(lesson.empty() ? lessons::builtin_lessons().front() : lesson);
+  } catch (const InvalidInput& error) {
+    problem = error.what();
+    options.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
+  }
+  if (!setup.empty()) {
+    try {
+      options = ui::setup_options(setup, options);
+    } catch (const InvalidInput& error) {
+      problem = error.what();
+    }
+  }
+  return options;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The lessons packaged with the page; a student's own are in the home folder (ui/user_lessons.h).
+  ::setenv("FRICTIONLAB_LESSONS", "/lessons", 1);
+  std::error_code error;
+  fs::create_directories(web::downloads_folder, error);
+  std::string problem;
+  const ui::ClassroomOptions options = page_options(std::vector<std::string>(argv + 1, argv + argc), problem);
+  try {
+    classroom = std::make_unique<ui::Classroom>(options);
+  } catch (const std::exception& failure) {
+    problem = failure.what();
+    ui::ClassroomOptions plain;
+    plain.window = options.window;
+    plain.output_folder = options.output_folder;
+    plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
+    classroom = std::make_unique<ui::Classroom>(plain);
+  }
+  if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
+  web::PageRun run;
+  if (const std::string folder = ui::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
+  try {
+    web::run_page(*classroom, run);
+  } catch (const std::exception& failure) {
+    EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, failure.what());
+    return 2;
+  }
+  return 0;
+}
+
+// What the page's own controls ask of the classroom.
+extern "C" {
+
+// The running lesson's script (a built-in's under /lessons, or a student's own).
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_lesson_path() { return hand_over(classroom->playback().lesson().path()); }
+
+// Opens a script (a student's, just written by the editor): the same file as the running
+// lesson reloads as F5 does. Returns "" or the script's message ("file:line: ..."); on a
+// mistake the last good lesson keeps running.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_open(const char* path) {
+  std::string message;
+  if (classroom->playback().lesson().path() == path) {
+    if (!classroom->playback().reload()) message = classroom->playback().script_error();
+  } else {
+    message = classroom->open(path);
+  }
+  frictionlab_wake();
+  return hand_over(message);
+}
+
+// The window as a prepared setup's text, for a link; its lesson named as the page finds it.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_setup_text() {
+  return hand_over(ui::setup_text(classroom->current_setup("/link/frictionlab.setup")));
+}
+
+// Opens a setup file's text (a link's), as Lesson > Open a setup does. Returns "" or the message.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_setup(const char* path) {
+  const std::string message = classroom->open_setup(path);
+  frictionlab_wake();
+  return hand_over(message);
+}
+
+// The page's Projector button: the larger text of projector mode, on or off.
+EMSCRIPTEN_KEEPALIVE void frictionlab_set_projector(int on) {
+  classroom->window_settings().projector = on != 0;
+  frictionlab_wake();
+}
+EMSCRIPTEN_KEEPALIVE int frictionlab_projector() { return classroom->window_settings().projector ? 1 : 0; }
+
+// Text pasted from the system clipboard, typed into whichever field has the keyboard.
+EMSCRIPTEN_KEEPALIVE void frictionlab_paste(const char* text) {
+  ImGui::GetIO().AddInputCharactersUTF8(text);
+  frictionlab_wake();
+}
+
+// What the page shows, read by its tests (web/test/) and by nothing the user sees. Positions
+// are the canvas's own pixels; the test divides by the screen's pixel ratio.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_control(const char* name) {
+  const std::optional<ImRect> rect = classroom->control(name);
+  if (!rect) return hand_over("");
+  return hand_over(std::to_string(rect->Min.x) + " " + std::to_string(rect->Min.y) + " " + std::to_string(rect->Max.x) + " " +
+                   std::to_string(rect->Max.y));
+}
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_body_on_screen(const char* name) {
+  const b2Body* body = classroom->playback().lesson().scene().body(name);
+  if (body == nullptr) return hand_over("");
+  const ImVec2 at = classroom->world_camera().to_screen(body->GetWorldCenter());
+  return hand_over(std::to_string(at.x) + " " + std::to_string(at.y));
+}
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_parameter(const char* name) {
+  for (const lessons::Parameter& parameter : classroom->playback().lesson().parameters()) {
+    if (parameter.name == name) return hand_over(ui::parameter_text(parameter));
+  }
+  return hand_over("");
+}
+EMSCRIPTEN_KEEPALIVE double frictionlab_time() { return classroom->playback().lesson().scene().time(); }
+EMSCRIPTEN_KEEPALIVE int frictionlab_playing() { return classroom->playback().playing() ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int frictionlab_theory_hidden() { return classroom->theory_hidden() ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_gauge_figures() { return hand_over(classroom->gauge_figures()); }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_mystery_pair() {
+  return hand_over(classroom->mystery() ? classroom->mystery()->choice().pair : "");
+}
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_status() { return hand_over(classroom->status()); }
+
+}  // extern "C"
