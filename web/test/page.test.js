@@ -199,3 +199,90 @@ test('push with predictions: a slider dragged, a value typed, a prediction, play
   assert.deepEqual(page.problems, []);
   await page.close();
 });
+
+test('a student edits push into a mistake (message and line shown), back, and finds the copy after a reload', async () => {
+  const page = await openPage(site + '#lesson=push');
+  await closeHelp(page);
+  await page.click('#edit');
+  await page.waitForSelector('#editor.open');
+  const original = await page.$eval('#source', (source) => source.value);
+  assert.match(original, /parameter \{ "mass"/);
+  // Line 26 holds the mass parameter: break it.
+  const broken = original.split('\n');
+  const line = broken.findIndex((text) => text.includes('parameter { "mass"')) + 1;
+  broken[line - 1] = 'local mass = parameter { "mass", 1.0, min = 0.1, max = 10 unit = "kg" }';
+  await page.$eval('#source', (source, text) => { source.value = text; }, broken.join('\n'));
+  await page.click('#apply');
+  await page.waitForSelector('#mistake.shown');
+  const mistake = await page.$eval('#mistake', (element) => element.textContent);
+  assert.match(mistake, new RegExp('my_push\\.lua:' + line + ':'), 'the message names the file and line: ' + mistake);
+  assert.equal(await page.$eval('#lines .wrong', (element) => element.textContent), String(line));
+  // The last good version keeps running: still push, at its values.
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '1');
+  await shoot(page, 'editor_mistake');
+  // Mended, with a new default mass, it runs.
+  const mended = original.replace('parameter { "mass", 1.0,', 'parameter { "mass", 2.5,');
+  await page.$eval('#source', (source, text) => { source.value = text; }, mended);
+  await page.keyboard.down('Control');
+  await page.focus('#source');
+  await page.keyboard.press('Enter');
+  await page.keyboard.up('Control');
+  await page.waitForFunction(() => !document.querySelector('#mistake.shown'));
+  await settled(page);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /my_push\.lua$/);
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '2.5');
+  // Space typed in the editor is the editor's, not the classroom's Play.
+  await page.focus('#source');
+  await page.keyboard.press('Space');
+  await new Promise((resolve) => setTimeout(resolve, 300));
+  assert.equal(await number(page, 'frictionlab_playing'), 0);
+  // Kept in the browser: after a reload the student's copy is still there, and opens.
+  await page.waitForFunction(() => new Promise((resolve) => FS.syncfs(false, () => resolve(true))));
+  await page.reload();
+  await page.waitForFunction(() => typeof Module !== 'undefined' && Module.calledRun && Module._frictionlab_frames_drawn() > 0);
+  const kept = '/home/web_user/.local/share/frictionlab/lessons/my_push.lua';
+  assert.equal(await page.evaluate((file) => FS.analyzePath(file).exists, kept), true, 'the student\'s lesson is gone after a reload');
+  assert.equal(await call(page, 'frictionlab_open', kept), '');
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '2.5');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+test('a setup link opens a mystery, and a finger pulls the block through the force gauge', async () => {
+  const setup = '# FrictionLab setup\nlesson push\nmystery wood/wood seed 42\nset push_rate = 0.2\npredictions off\n';
+  const page = await openPage(site + '#setup=' + encodeURIComponent(setup), { touch: true });
+  await closeHelp(page);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /push\.lua$/);
+  assert.equal(await call(page, 'frictionlab_mystery_pair'), 'wood/wood');
+  assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '0.2');
+  // A finger on the block, dragged to the right while the lesson plays.
+  const block = await bodyAt(page, 'block');
+  await page.touchscreen.touchStart(block.x, block.y);
+  await frame();
+  await page.keyboard.press('Space');  // play
+  for (let i = 1; i <= 30; ++i) {
+    await page.touchscreen.touchMove(block.x + 12 * i, block.y);
+    await frame();
+  }
+  await shoot(page, 'gauge_touch');
+  await page.touchscreen.touchEnd();
+  await page.keyboard.press('Space');  // pause
+  await settled(page);
+  const figures = await call(page, 'frictionlab_gauge_figures');
+  assert.match(figures, /peak \d/, 'the gauge read nothing: ' + figures);
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+test('the page in one file opens from file:// with no server', async () => {
+  const single = path.join(build, 'frictionlab.html');
+  const bytes = fs.statSync(single).size;
+  console.log(`# frictionlab.html is ${(bytes / 1e6).toFixed(2)} MB`);
+  const page = await openPage('file://' + single + '#lesson=incline');
+  console.log(`# first frame from file:// ${page.firstFrameMs} ms after navigation`);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /incline\.lua$/);
+  await closeHelp(page);
+  await shoot(page, 'single_file_incline');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
