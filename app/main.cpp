@@ -1,4 +1,9 @@
 // frictionlab: the command line. With no command it opens the classroom window on a lesson.
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#include <sys/stat.h>
+#endif
+
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -24,12 +29,14 @@ const char* const usage =
     "       node frictionlab-cli.js check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
     "                                            run lessons and check their expectations; exit 1 if any fails\n"
     "       node frictionlab-cli.js demo         theory beside simulation for every situation\n"
+    "       node frictionlab-cli.js link FILE.setup [--page ADDRESS] | link LINK\n"
+    "                                            a setup file as a link to the web page, or back\n"
     "       node frictionlab-cli.js help | --version\n"
     "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing; 2 bad input (the\n"
     "message names what and where) or the program could not finish.\n"
     "This is FrictionLab's WebAssembly build for node: the classroom is the web page, and render and\n"
     "bench are the desktop program's.\n";
-constexpr const char* command_names = "list, run, check, demo, help, --version";
+constexpr const char* command_names = "list, run, check, demo, link, help, --version";
 #else
 const char* const usage =
     "usage: frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N]\n"
@@ -61,6 +68,10 @@ const char* const usage =
     "       frictionlab render LESSON --moment NAME [--size WxH] --out PATH\n"
     "                                            draw one of the lesson's moments (its time, values and theme)\n"
     "       frictionlab demo                     theory beside simulation for every situation\n"
+    "       frictionlab link FILE.setup [--page ADDRESS]\n"
+    "                                            the setup as a link to the web page (ADDRESS#setup=...;\n"
+    "                                            without --page, the part to put after the page's address)\n"
+    "       frictionlab link LINK                the setup file a link holds, printed (--setup takes a link too)\n"
     "       frictionlab bench [--quick] --out DIR     speed and accuracy figures, CSV files and charts\n"
     "       frictionlab bench --recommend LESSON --tol X [--set NAME=VALUE]\n"
     "                                            the cheapest setting whose run of the lesson meets its\n"
@@ -74,14 +85,19 @@ const char* const usage =
     "program could not finish.\n"
     "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
     "More in the manual: man frictionlab\n";
-constexpr const char* commands[] = {"demo", "list", "run", "check", "render", "bench", "--help", "-h", "help", "--version"};
-constexpr const char* command_names = "list, run, check, render, demo, bench, help, --version; or a lesson to open in the window";
+constexpr const char* commands[] = {"demo", "list", "run", "check", "render", "bench", "link", "--help", "-h", "help", "--version"};
+constexpr const char* command_names = "list, run, check, render, demo, bench, link, help, --version; or a lesson to open in the window";
 #endif
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
+#if defined(__EMSCRIPTEN__)
+  // emscripten starts every program with a umask of 0777, so a file it writes (run --csv) would
+  // be readable by nobody: take node's own, the user's.
+  ::umask(static_cast<mode_t>(EM_ASM_INT({ return process.umask(); })));
+#endif
   try {
     frictionlab::use_installed_lessons();
     // Ctrl-C while a CSV or PNG is being written leaves no temporary file behind.
@@ -108,6 +124,7 @@ int main(int argc, char** argv) {
     if (command == "list") return frictionlab::run_list(rest, std::cout);
     if (command == "run") return frictionlab::run_lesson(rest, std::cout);
     if (command == "check") return frictionlab::run_check(rest, std::cout);
+    if (command == "link") return frictionlab::run_link(rest, std::cout);
 #if !defined(FRICTIONLAB_COMMAND_LINE_ONLY)
     if (command == "render") return frictionlab::run_render(rest, std::cout);
     if (command == "bench") return frictionlab::run_bench(rest, std::cout);

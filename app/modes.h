@@ -15,5 +15,6 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out);   // fr
 int run_check(const std::vector<std::string>& args, std::ostream& out);
 int run_render(const std::vector<std::string>& args, std::ostream& out);  // frictionlab render
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out);  // frictionlab [LESSON]
+int run_link(const std::vector<std::string>& args, std::ostream& out);  // frictionlab link: setup file <-> web page link
 
 }  // namespace frictionlab

@@ -4,7 +4,7 @@
 #   build-web/frictionlab.html   one self-contained file that opens from disk (file://), no server
 #   build-web/frictionlab-cli.js the command line under node: list, run, check, demo
 # It installs what it needs from Debian 12 (emscripten, and node's acorn for emcc's optimizer),
-# fetches the source packages of Box2D, Lua and Dear ImGui with an apt configuration private to
+# fetches the source packages of Box2D, Lua, Dear ImGui (and GoogleTest, for the tests) with an apt configuration private to
 # the build folder (the machine's apt sources are left alone), Debian's patches applied, and
 # builds them with the project. Nothing fetched is copied into the repository.
 #   scripts/web.sh [BUILD_DIR] [extra CMake options...]
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 build_dir="${1:-build-web}"
 shift || true
 
-packages=(emscripten node-acorn dpkg-dev cmake make fonts-dejavu-core libstb-dev pkg-config xz-utils)
+packages=(emscripten node-acorn nodejs dpkg-dev cmake make fonts-dejavu-core libstb-dev pkg-config xz-utils)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
@@ -28,12 +28,14 @@ fi
 # Debian's source packages, once per build folder. The private apt state lists the same
 # archives as the machine's own sources, for source packages (deb-src).
 sources="$PWD/$build_dir/debian-sources"
-wanted=(box2d-2.4.1 lua5.4-5.4.4 imgui-1.86+ds)
-have_all=1
-for folder in "${wanted[@]}"; do [[ -d $sources/$folder ]] || have_all=0; done
-if ((!have_all)); then
-  echo "web: fetching the sources of box2d, lua5.4 and imgui from Debian into $sources"
+# Each source package and the folder it unpacks to (the versions Debian 12 ships).
+declare -A folders=([box2d]=box2d-2.4.1 [lua5.4]=lua5.4-5.4.4 [imgui]=imgui-1.86+ds [googletest]=googletest-1.12.1)
+fetch=()
+for package in "${!folders[@]}"; do [[ -d $sources/${folders[$package]} ]] || fetch+=("$package"); done
+if ((${#fetch[@]})); then
+  echo "web: fetching the Debian sources of ${fetch[*]} into $sources"
   mkdir -p "$sources/apt/lists/partial" "$sources/apt/cache/archives/partial" "$sources/apt/sources.list.d"
+  rm -f "$sources/apt/sources.list.d/"*
   shopt -s nullglob
   for list in /etc/apt/sources.list.d/*.sources; do
     sed -E 's/^Types:.*/Types: deb-src/' "$list" > "$sources/apt/sources.list.d/$(basename "$list")"
@@ -42,16 +44,16 @@ if ((!have_all)); then
     [[ -f $list ]] && sed -nE 's/^deb (.*)/deb-src \1/p' "$list" >> "$sources/apt/sources.list.d/from-lists.list"
   done
   shopt -u nullglob
+  touch "$sources/apt/none.list"
   apt_private=(-o "Dir::Etc::SourceList=$sources/apt/none.list" -o "Dir::Etc::SourceParts=$sources/apt/sources.list.d"
                -o "Dir::State::Lists=$sources/apt/lists" -o "Dir::Cache=$sources/apt/cache" -o "Debug::NoLocking=1"
                -o "APT::Sandbox::User=root")
-  touch "$sources/apt/none.list"
   apt-get "${apt_private[@]}" update -qq
   # dpkg-source unpacks each and applies Debian's patches (Lua's C++ linkage among them).
-  (cd "$sources" && apt-get "${apt_private[@]}" source -qq box2d lua5.4 imgui > apt/source.log 2>&1) ||
+  (cd "$sources" && apt-get "${apt_private[@]}" source -qq "${fetch[@]}" > apt/source.log 2>&1) ||
     { cat "$sources/apt/source.log"; echo "web: could not fetch the Debian source packages" >&2; exit 1; }
-  for folder in "${wanted[@]}"; do
-    [[ -d $sources/$folder ]] || { echo "web: Debian's sources did not give $folder (another version?)" >&2; exit 1; }
+  for package in "${fetch[@]}"; do
+    [[ -d $sources/${folders[$package]} ]] || { echo "web: Debian's $package source is not ${folders[$package]} (another version?)" >&2; exit 1; }
   done
 fi
 

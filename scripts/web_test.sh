@@ -9,14 +9,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 native_build="${1:-}"
 
-packages=(chromium nodejs npm fonts-dejavu-core)
+packages=(chromium fonts-dejavu-core)
+# node and npm: Debian's nodejs and npm, unless a node with its npm is here already (NodeSource's
+# nodejs brings both, and Debian's npm would not install beside it).
+if ! command -v node > /dev/null || ! command -v npm > /dev/null; then packages+=(nodejs npm); fi
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
-# A node that did not come from Debian (nodesource's, say) is as good, and npm comes with it.
-command -v node > /dev/null && command -v npm > /dev/null && missing=("${missing[@]/nodejs}") && missing=("${missing[@]/npm}")
-missing=(${missing[@]})
 if ((${#missing[@]})); then
   echo "web_test: installing ${missing[*]}"
   if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
@@ -24,7 +24,9 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-scripts/web.sh build-web -DFRICTIONLAB_WERROR=ON
+scripts/web.sh build-web -DFRICTIONLAB_WERROR=ON -DFRICTIONLAB_WEB_TESTS=ON
+# The GoogleTest suites that need no window, in WebAssembly under node.
+ctest --test-dir build-web/web --output-on-failure --parallel "$(nproc)"
 build="$PWD/build-web"
 mkdir -p "$build/page-test"
 cp web/test/package.json "$build/page-test/package.json"

@@ -491,3 +491,56 @@ TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
 
 }  // namespace
 }  // namespace frictionlab::ui
+
+namespace frictionlab::ui {
+namespace {
+
+// A setup as a link to the web page (the teacher sends an address): the text comes back whole,
+// every byte a setup can hold (spaces, '=', '#', '&', a line break, UTF-8's μ), encoded as the
+// page's own encodeURIComponent does, and the link opens the setup as the file does.
+TEST(SetupLink, HoldsTheWholeSetupAndOpensAsTheFileDoes) {
+  const std::string text =
+      "# FrictionLab setup\nlesson push\nset mass = 2.5\nlock mass, mu_s\nmystery wood/wood seed 42\n"
+      "predict breakaway push = 7.5\n# μs & μk: #1\n";
+  const std::string link = setup_link(text, "https://school.example/frictionlab/");
+  EXPECT_EQ(link.rfind("https://school.example/frictionlab/#setup=%23%20FrictionLab%20setup%0Alesson%20push%0A", 0), 0u) << link;
+  EXPECT_EQ(link.find_first_of(" \n#&=", link.find("#setup=") + 7), std::string::npos) << "unescaped in " << link;
+  EXPECT_NE(link.find("%CE%BC"), std::string::npos) << "μ is two UTF-8 bytes, each escaped: " << link;
+  EXPECT_EQ(setup_text_from_link(link), text);
+  // As the page writes its own address after the fragment's other keys, and a mail program's '+'.
+  EXPECT_EQ(setup_text_from_link("frictionlab.html#setup=lesson+push%0A&projector=1"), "lesson push\n");
+  EXPECT_EQ(setup_text_from_link("setup=lesson%20incline"), "lesson incline");
+  EXPECT_EQ(setup_text_from_link("/home/teacher/push.setup"), std::nullopt);
+
+  const PreparedSetup from_link = read_setup(link);
+  EXPECT_EQ(from_link.lesson, "push");
+  ASSERT_EQ(from_link.values.size(), 1u);
+  EXPECT_EQ(from_link.values[0].text, "2.5");
+  ASSERT_TRUE(from_link.mystery.has_value());
+  EXPECT_EQ(from_link.mystery->seed, 42u);
+  ClassroomOptions base;
+  const ClassroomOptions options = setup_options(link, base);
+  EXPECT_EQ(options.overrides.at("mass"), "2.5");
+  EXPECT_EQ(options.lock, (std::vector<std::string>{"mass", "mu_s"}));
+}
+
+TEST(SetupLink, ACutOrChangedLinkSaysWhereAndWhat) {
+  try {
+    setup_text_from_link("page.html#setup=lesson%2");
+    FAIL() << "a cut escape was read";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("'%2' at character 23 is not a %-escape"), std::string::npos) << error.what();
+  }
+  EXPECT_THROW(setup_text_from_link("#setup=%zz"), InvalidInput);
+  EXPECT_THROW(setup_text_from_link("#setup=" + std::string(70 * 1024, 'a')), InvalidInput);
+  // A link whose setup has a mistake names the link and the line, as a file's would.
+  try {
+    read_setup(setup_link("lesson push\nhz fast\n", ""));
+    FAIL() << "hz fast was read";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("setup link:2: ", 0), 0u) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

@@ -31,7 +31,8 @@ Classroom::Classroom(ClassroomOptions options)
       lock_(options.lock.begin(), options.lock.end()),
       lock_from_(options.lock_from),
       overrides_(options.overrides),
-      output_folder_(options.output_folder) {
+      output_folder_(options.output_folder),
+      script_paths_(options.script_paths) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
@@ -435,12 +436,23 @@ void Classroom::set_value(const std::string& name, const std::string& text) {
   }
 }
 
+std::string Classroom::script_words(const std::string& path_or_message) const {
+  if (script_paths_) return path_or_message;
+  // The folders before a ".lua" that the text starts with are left out: "/a/b/my_push.lua:26: x"
+  // reads "my_push.lua:26: x".
+  const std::size_t script_end = path_or_message.find(".lua");
+  if (script_end == std::string::npos) return path_or_message;
+  const std::size_t last_slash = path_or_message.rfind('/', script_end);
+  if (last_slash == std::string::npos || path_or_message.find_first_of(" \n") < last_slash) return path_or_message;
+  return path_or_message.substr(last_slash + 1);
+}
+
 void Classroom::messages(ImVec2 corner, float width) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
-  if (!failed_script_.empty()) lines.push_back({failed_error_ + "  (showing " + lesson_name(playback_->lesson().path()) +
+  if (!failed_script_.empty()) lines.push_back({script_words(failed_error_) + "  (showing " + lesson_name(playback_->lesson().path()) +
                                                     " until " + lesson_name(failed_script_) + ".lua builds)", true});
   if (!playback_->script_error().empty()) {
-    lines.push_back({playback_->script_error() + "  (the last good version keeps running)", true});
+    lines.push_back({script_words(playback_->script_error()) + "  (the last good version keeps running)", true});
   }
   if (!playback_->problem().empty()) lines.push_back({playback_->problem(), true});
   if (lines.empty()) return;

@@ -46,6 +46,9 @@ struct ClassroomOptions {
   std::string output_folder = ".";                  // screenshots and history exports
   std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
   ClassPredictions predictions;                     // the class's answers, from a prepared setup
+  // Name scripts by their whole path (the desktop: the student finds the file there), or by
+  // the file's name alone (the web page: its files live in the browser, not where anyone looks).
+  bool script_paths = true;
 };
 
 // The names --lock takes besides a lesson's parameters.
@@ -265,6 +268,9 @@ class Classroom {
   std::string lock_from_;  // the setup file the lock came from; "": the command line's --lock
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
+  bool script_paths_ = true;
+  // A script's path, or a message that starts with one ("path:line: ..."), as the class sees it.
+  std::string script_words(const std::string& path_or_message) const;
   const Fonts* fonts_ = nullptr;
   std::vector<Camera> cameras_{Camera{}};
   ViewAdjust view_adjust_;

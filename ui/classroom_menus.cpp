@@ -145,7 +145,7 @@ void Classroom::menu_bar() {
   // fits at the right of the bar, never cut (the whole of it under the pointer).
   // In screen points: the menu bar is laid out as a group, so SameLine's x would be off by
   // the window's padding.
-  const std::string& path = playback_->lesson().path();
+  const std::string path = script_words(playback_->lesson().path());
   const float left = ImGui::GetCursorScreenPos().x + 20.0f;
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowWidth() - 16.0f;
   const std::string shown = path_that_fits(path, right - left);

@@ -3,8 +3,11 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "lessons/runtime/catalog.h"
@@ -206,7 +209,64 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
   return setup;
 }
 
+std::string setup_link(const std::string& text, const std::string& page) {
+  static const char hex[] = "0123456789ABCDEF";
+  std::string link = page + "#setup=";
+  for (const char character : text) {
+    const auto byte = static_cast<unsigned char>(character);
+    // encodeURIComponent's unreserved characters stay as they are; every other byte of the
+    // UTF-8 text is %XX.
+    if (std::isalnum(byte) || std::strchr("-_.!~*'()", byte) != nullptr) {
+      link += character;
+    } else {
+      link += '%';
+      link += hex[byte >> 4];
+      link += hex[byte & 15];
+    }
+  }
+  return link;
+}
+
+std::optional<std::string> setup_text_from_link(const std::string& link) {
+  std::size_t start = link.find("#setup=");
+  if (start != std::string::npos) {
+    start += 7;
+  } else if (link.rfind("setup=", 0) == 0) {
+    start = 6;
+  } else {
+    return std::nullopt;
+  }
+  const std::size_t end = link.find('&', start);
+  const std::string encoded = link.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  const auto digit = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+  };
+  std::string text;
+  for (std::size_t i = 0; i < encoded.size(); ++i) {
+    if (encoded[i] == '+') {
+      text += ' ';  // a form's space, as some mail programs write it
+    } else if (encoded[i] != '%') {
+      text += encoded[i];
+    } else {
+      const int high = i + 2 < encoded.size() ? digit(encoded[i + 1]) : -1;
+      const int low = i + 2 < encoded.size() ? digit(encoded[i + 2]) : -1;
+      if (high < 0 || low < 0) {
+        throw InvalidInput("setup link: '" + encoded.substr(i, 3) + "' at character " + std::to_string(start + i + 1) +
+                           " is not a %-escape (% and two hexadecimal digits); was the link cut or changed?");
+      }
+      text += static_cast<char>(high * 16 + low);
+      i += 2;
+    }
+    if (text.size() > largest_setup) throw InvalidInput("setup link: holds more than a setup file may (64 KB)");
+  }
+  return text;
+}
+
 PreparedSetup read_setup(const std::string& path) {
+  if (const std::optional<std::string> text = setup_text_from_link(path)) return parse_setup(*text, "setup link");
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
   if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");

@@ -65,8 +65,17 @@ struct PreparedSetup {
 // Reads a setup from its text; `path` names it in messages. Throws InvalidInput as
 // "path:line: what is wrong" for a line it cannot read, and "path: ..." when it has no lesson.
 PreparedSetup parse_setup(const std::string& text, const std::string& path);
-// The same from the file at `path`; refuses what is not a readable regular file of a setup's size.
+// The same from the file at `path` (or from a link that holds one: setup_text_from_link);
+// refuses what is not a readable regular file of a setup's size.
 PreparedSetup read_setup(const std::string& path);
+
+// A setup as a link to the web page (web/): PAGE#setup=TEXT, the setup file's text encoded as
+// JavaScript's encodeURIComponent does, so a teacher can send a prepared setup as an address.
+std::string setup_link(const std::string& text, const std::string& page);
+// The setup text a link holds after "#setup=" (or after "setup=" at the fragment's start);
+// nullopt when the text is not such a link. Throws InvalidInput naming the link for a broken
+// %-escape or a text longer than a setup file may be.
+std::optional<std::string> setup_text_from_link(const std::string& link);
 
 // The setup as the file holds it (setup_text then parse_setup gives it back).
 std::string setup_text(const PreparedSetup& setup);

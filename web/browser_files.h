@@ -8,8 +8,9 @@
 
 namespace frictionlab::web {
 
-// Where the classroom writes what the user should receive as downloads.
-inline constexpr const char* downloads_folder = "/downloads";
+// Where the classroom writes what the user should receive as downloads, from the page's
+// working folder (/).
+inline constexpr const char* downloads_folder = "Downloads";
 
 // Writes the home folder back to IndexedDB (asynchronously; a later call waits its turn).
 void keep_home_folder();

@@ -2,11 +2,14 @@
 // font in the page's packaged files (/lessons, /fonts) and the student's own lessons and the
 // window's settings in the browser's storage (the home folder, which page.js keeps on IndexedDB).
 //
-// page.js starts it with the arguments a link or the page gives: [LESSON] [--setup FILE]
-// [--projector], and calls the functions at the end of this file for what the page's own
+// page.html starts it with the arguments its link gives (#lesson=NAME or #setup=TEXT, and
+// &projector=1, &at=S), and calls the functions at the end of this file for what the page's own
 // controls do (the lesson editor, links, the projector button).
 #include <emscripten.h>
+#include <sys/stat.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -36,23 +39,41 @@ const char* hand_over(std::string text) {
   return returned.c_str();
 }
 
-ui::ClassroomOptions page_options(const std::vector<std::string>& args, std::string& problem) {
+// The page's arguments, from its link: [LESSON] [--setup FILE] [--projector] [--at S].
+struct PageArguments {
   std::string lesson, setup;
   bool projector = false;
+  double at = 0.0;  // play the lesson on to this time, paused there (a picture's moment)
+};
+
+PageArguments page_arguments(const std::vector<std::string>& args) {
+  PageArguments given;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--projector") {
-      projector = true;
+      given.projector = true;
     } else if (args[i] == "--setup" && i + 1 < args.size()) {
-      setup = args[++i];
+      given.setup = args[++i];
+    } else if (args[i] == "--at" && i + 1 < args.size()) {
+      // A link's word, not a command line: a time that does not read is no time.
+      const double at = std::strtod(args[++i].c_str(), nullptr);
+      given.at = std::isfinite(at) ? std::clamp(at, 0.0, 3600.0) : 0.0;
     } else {
-      lesson = args[i];
+      given.lesson = args[i];
     }
   }
+  return given;
+}
+
+ui::ClassroomOptions page_options(const PageArguments& given, std::string& problem) {
+  const std::string& lesson = given.lesson;
+  const std::string& setup = given.setup;
+  const bool projector = given.projector;
   ui::ClassroomOptions options;
   const std::string folder = ui::settings_folder();
   if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
   if (projector) options.window.projector = true;
   options.output_folder = web::downloads_folder;
+  options.script_paths = false;
   try {
     options.lesson = lessons::resolve_lesson(lesson.empty() ? lessons::builtin_lessons().front() : lesson);
   } catch (const InvalidInput& error) {
@@ -74,10 +95,17 @@ ui::ClassroomOptions page_options(const std::vector<std::string>& args, std::str
 int main(int argc, char** argv) {
   // The lessons packaged with the page; a student's own are in the home folder (ui/user_lessons.h).
   ::setenv("FRICTIONLAB_LESSONS", "/lessons", 1);
+  // emscripten starts with a umask of 0777: files the page writes (a student's lesson, a
+  // screenshot) would be unreadable, to the page itself too. The usual 022.
+  ::umask(022);
+  // Files the classroom writes for the user land in Downloads, and leave it as downloads: its
+  // messages then say "saved to Downloads/...", which is where the browser puts them.
   std::error_code error;
+  fs::current_path("/", error);
   fs::create_directories(web::downloads_folder, error);
   std::string problem;
-  const ui::ClassroomOptions options = page_options(std::vector<std::string>(argv + 1, argv + argc), problem);
+  const PageArguments given = page_arguments(std::vector<std::string>(argv + 1, argv + argc));
+  const ui::ClassroomOptions options = page_options(given, problem);
   try {
     classroom = std::make_unique<ui::Classroom>(options);
   } catch (const std::exception& failure) {
@@ -85,9 +113,11 @@ int main(int argc, char** argv) {
     ui::ClassroomOptions plain;
     plain.window = options.window;
     plain.output_folder = options.output_folder;
+    plain.script_paths = false;
     plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
     classroom = std::make_unique<ui::Classroom>(plain);
   }
+  if (given.at > 0.0) classroom->run_to(given.at);
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
   web::PageRun run;
   if (const std::string folder = ui::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
@@ -167,6 +197,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_parameter(const char* name) {
 }
 EMSCRIPTEN_KEEPALIVE double frictionlab_time() { return classroom->playback().lesson().scene().time(); }
 EMSCRIPTEN_KEEPALIVE int frictionlab_playing() { return classroom->playback().playing() ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int frictionlab_help_shown() { return classroom->window_settings().help ? 1 : 0; }
 EMSCRIPTEN_KEEPALIVE int frictionlab_theory_hidden() { return classroom->theory_hidden() ? 1 : 0; }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_gauge_figures() { return hand_over(classroom->gauge_figures()); }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_mystery_pair() {

@@ -49,6 +49,8 @@ test('run --csv gives the native program\'s record', { skip: !native && 'no nati
     for (const lesson of lessons) {
       const webCsv = path.join(folder, lesson + '_web.csv'), nativeCsv = path.join(folder, lesson + '_native.csv');
       assert.equal(web('run', lesson, '--csv', webCsv).status, 0, lesson);
+      // Written with the user's umask, as the native program writes it (emscripten's own is 0777).
+      assert.equal(fs.statSync(webCsv).mode & 0o777, 0o666 & ~process.umask(), lesson + ': the CSV file\'s permissions');
       assert.equal(spawnSync(path.join(native, 'app', 'frictionlab'), ['run', lesson, '--csv', nativeCsv]).status, 0, lesson);
       const a = fs.readFileSync(webCsv, 'utf8').split('\n'), b = fs.readFileSync(nativeCsv, 'utf8').split('\n');
       assert.equal(a.length, b.length, lesson + ': a different number of rows');

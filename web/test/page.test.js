@@ -15,6 +15,7 @@ const puppeteer = require('puppeteer-core');
 
 const build = process.env.FRICTIONLAB_WEB_BUILD;
 const shots = process.env.FRICTIONLAB_PAGE_SHOTS;
+const native = process.env.FRICTIONLAB_NATIVE_BUILD;
 const chromium = process.env.FRICTIONLAB_CHROMIUM || '/usr/bin/chromium';
 assert.ok(build && shots, 'FRICTIONLAB_WEB_BUILD and FRICTIONLAB_PAGE_SHOTS must be set (scripts/web_test.sh sets them)');
 
@@ -51,8 +52,12 @@ after(async () => {
 });
 
 // A page at 1920×1080 whose classroom has drawn its first frame. `fragment`: a link's.
+// Each page in a browser context of its own: storage (the IndexedDB home folder, with the
+// window's settings and the student's lessons) starts empty, whatever another test left.
 async function openPage(address, options = {}) {
-  const page = await browser.newPage();
+  const context = await browser.createBrowserContext();
+  const page = await context.newPage();
+  page.once('close', () => context.close().catch(() => {}));
   await page.setViewport({ width: options.width || 1920, height: options.height || 1080, deviceScaleFactor: options.scale || 1,
                            hasTouch: !!options.touch });
   const problems = [];
@@ -130,8 +135,9 @@ async function drag(page, from, to, steps = 10) {
 // The help panel a first visit opens with covers the lesson's controls: F1 closes it, as a
 // teacher would.
 async function closeHelp(page) {
-  await page.keyboard.press('F1');
+  if (await number(page, 'frictionlab_help_shown')) await page.keyboard.press('F1');
   await settled(page);
+  assert.equal(await number(page, 'frictionlab_help_shown'), 0, 'F1 left the help open');
 }
 async function shoot(page, name) {
   const file = path.join(shots, name + '.png');
@@ -284,5 +290,152 @@ test('the page in one file opens from file:// with no server', async () => {
   await closeHelp(page);
   await shoot(page, 'single_file_incline');
   assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+// The same moment in the desktop window (GLFW, OpenGL 3.3, Mesa's llvmpipe, under Xvfb) and in
+// the page (WebGL 2, SwiftShader): push at t = 1 s in projector mode at 1920×1080. Both draw
+// with the same ImGui and the same font atlas, so they differ only where the two rasterizers
+// round edges differently: the test counts pixels with a channel more than 8 apart, as the
+// goldens do, and allows 1 % of them (anti-aliased text and lines; a misplaced panel or a
+// missing plot is tens of percent).
+test('the page draws what the desktop window draws, at 1920×1080 in projector mode', { skip: !native && 'no native build given' }, async () => {
+  const { spawnSync } = require('child_process');
+  const home = fs.mkdtempSync(path.join(shots, 'native-home-'));
+  const desktop = path.join(shots, 'desktop_push_projector.png');
+  const made = spawnSync('xvfb-run', ['-a', '-s', '-screen 0 1920x1080x24', path.join(native, 'app', 'frictionlab'), 'push',
+                                      '--projector', '--at', '1', '--screenshot', desktop],
+                         { env: { ...process.env, HOME: home, XDG_CONFIG_HOME: home, XDG_DATA_HOME: home }, encoding: 'utf8' });
+  assert.equal(made.status, 0, made.stderr);
+  const page = await openPage(site + '#lesson=push&projector=1&at=1');
+  const bar = await page.$eval('#bar', (element) => element.getBoundingClientRect().height);
+  await page.setViewport({ width: 1920, height: 1080 + Math.round(bar) });
+  await settled(page);
+  await closeHelp(page);
+  const canvas = await page.$eval('#canvas', (element) => [element.width, element.height]);
+  assert.deepEqual(canvas, [1920, 1080]);
+  const browser_shot = path.join(shots, 'page_push_projector.png');
+  await page.screenshot({ path: browser_shot, clip: { x: 0, y: Math.round(bar), width: 1920, height: 1080 } });
+  // Compared inside the page itself: both pictures drawn onto canvases and read back.
+  const images = [desktop, browser_shot].map((file) => 'data:image/png;base64,' + fs.readFileSync(file).toString('base64'));
+  const result = await page.evaluate(async (images) => {
+    const read = (source) => new Promise((resolve) => {
+      const image = new Image();
+      image.onload = () => {
+        const canvas = document.createElement('canvas');
+        canvas.width = image.width;
+        canvas.height = image.height;
+        const context = canvas.getContext('2d');
+        context.drawImage(image, 0, 0);
+        resolve(context.getImageData(0, 0, image.width, image.height));
+      };
+      image.src = source;
+    });
+    const [a, b] = await Promise.all(images.map(read));
+    if (a.width !== b.width || a.height !== b.height) return { size: [a.width, a.height, b.width, b.height] };
+    let apart = 0;
+    const diff = document.createElement('canvas');
+    diff.width = a.width;
+    diff.height = a.height;
+    const marks = diff.getContext('2d').createImageData(a.width, a.height);
+    for (let i = 0; i < a.data.length; i += 4) {
+      const far = Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2]));
+      const grey = 255 - (a.data[i] + a.data[i + 1] + a.data[i + 2]) / 12;
+      marks.data[i] = far > 8 ? 255 : grey;
+      marks.data[i + 1] = marks.data[i + 2] = far > 8 ? 0 : grey;
+      marks.data[i + 3] = 255;
+      if (far > 8) ++apart;
+    }
+    diff.getContext('2d').putImageData(marks, 0, 0);
+    return { share: apart / (a.width * a.height), diff: diff.toDataURL('image/png') };
+  }, images);
+  assert.ok(!result.size, 'the pictures differ in size: ' + JSON.stringify(result.size));
+  fs.writeFileSync(path.join(shots, 'page_vs_desktop_diff.png'), Buffer.from(result.diff.split(',')[1], 'base64'));
+  console.log(`# page against desktop window: ${(100 * result.share).toFixed(3)} % of pixels more than 8 apart`);
+  assert.ok(result.share <= 0.01, `${(100 * result.share).toFixed(2)} % of the pixels differ (see page_vs_desktop_diff.png)`);
+  await page.close();
+});
+
+test('the canvas follows the window and draws at the screen\'s pixel density', async () => {
+  const page = await openPage(site + '#lesson=incline', { width: 1280, height: 720, scale: 2 });
+  const [css, pixels] = await page.$eval('#canvas', (element) => [[element.clientWidth, element.clientHeight], [element.width, element.height]]);
+  assert.deepEqual(pixels, [css[0] * 2, css[1] * 2], 'the canvas is not drawn at twice its CSS size on a 2× screen');
+  await shoot(page, 'incline_hidpi');
+  await page.setViewport({ width: 1000, height: 700, deviceScaleFactor: 1 });
+  await settled(page);
+  const resized = await page.$eval('#canvas', (element) => [element.clientWidth, element.width]);
+  assert.equal(resized[1], resized[0], 'the canvas did not follow the window');
+  await page.close();
+});
+
+// Figures for the README (printed, not asserted: this machine is shared): drawing time per
+// frame while a lesson plays, at two sizes.
+test('frame time while playing, at 1280×720 and 1920×1080 (reported)', async () => {
+  for (const [width, height] of [[1280, 720], [1920, 1080]]) {
+    const page = await openPage(site + '#lesson=tipping_box', { width, height });
+    await closeHelp(page);
+    await page.keyboard.press('Space');
+    const before = await number(page, 'frictionlab_frames_drawn');
+    const started = Date.now();
+    await new Promise((resolve) => setTimeout(resolve, 3000));
+    const frames = (await number(page, 'frictionlab_frames_drawn')) - before;
+    const seconds = (Date.now() - started) / 1000;
+    console.log(`# ${width}x${height}: ${(frames / seconds).toFixed(1)} frames a second while playing, ${(1000 * seconds / frames).toFixed(1)} ms a frame`);
+    await page.close();
+  }
+});
+
+test('a screenshot (Ctrl+S) and the run\'s CSV (Ctrl+E) arrive as downloads', async () => {
+  const page = await openPage(site + '#lesson=incline&at=0.5');
+  await closeHelp(page);
+  const folder = fs.mkdtempSync(path.join(shots, 'downloads-'));
+  const session = await page.createCDPSession();
+  await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: folder,
+                                                      browserContextId: page.browserContext().id });
+  await page.focus('#canvas');
+  for (const key of ['s', 'e']) {
+    await page.keyboard.down('Control');
+    await page.keyboard.press(key);
+    await page.keyboard.up('Control');
+    await settled(page);
+  }
+  const arrived = async () => {
+    for (let i = 0; i < 100; ++i) {
+      const names = fs.readdirSync(folder).filter((name) => !name.endsWith('.crdownload'));
+      if (names.length >= 2) return names.sort();
+      await new Promise((resolve) => setTimeout(resolve, 100));
+    }
+    return fs.readdirSync(folder).sort();
+  };
+  const names = await arrived();
+  const png = names.find((name) => /^frictionlab_incline.*\.png$/.test(name));
+  const csv = names.find((name) => /^frictionlab_incline.*\.csv$/.test(name));
+  assert.ok(png && csv, 'downloads: ' + names.join(', '));
+  assert.equal(fs.readFileSync(path.join(folder, png)).subarray(1, 4).toString(), 'PNG');
+  assert.match(fs.readFileSync(path.join(folder, csv), 'utf8'), /incline/);
+  // What the status line says is where the browser put it, not a folder inside the page.
+  assert.match(await call(page, 'frictionlab_status'), /Downloads\/frictionlab_incline/);
+  await page.close();
+});
+
+test('a setup file and a link convert both ways: the command line\'s link opens the page so', { skip: !native && 'no native build given' }, async () => {
+  const { spawnSync } = require('child_process');
+  const folder = fs.mkdtempSync(path.join(shots, 'setup-'));
+  const file = path.join(folder, 'friday.setup');
+  fs.writeFileSync(file, '# FrictionLab setup\nlesson incline\nset mass = 3\nlock mass, mu_s\npredictions on\n');
+  const made = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', file, '--page', site], { encoding: 'utf8' });
+  assert.equal(made.status, 0, made.stderr);
+  const link = made.stdout.trim();
+  assert.ok(link.startsWith(site + '#setup='), link);
+  const page = await openPage(link);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /incline\.lua$/);
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '3');
+  // And back: the page's own link, read by the command line, is a setup file with the same values.
+  const shared = await page.evaluate(() => Module.ccall('frictionlab_setup_text', 'string', [], []));
+  const back = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', site + '#setup=' + encodeURIComponent(shared)], { encoding: 'utf8' });
+  assert.equal(back.status, 0, back.stderr);
+  assert.match(back.stdout, /^lesson incline$/m);
+  assert.match(back.stdout, /^set mass = 3$/m);
+  assert.match(back.stdout, /^lock mass, mu_s$/m);
   await page.close();
 });

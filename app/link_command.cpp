@@ -1,0 +1,44 @@
+// frictionlab link: a prepared setup file as a link to the web page, and a link as a setup
+// file, so a teacher can hand a class either.
+#include <fstream>
+#include <sstream>
+
+#include "app/modes.h"
+#include "physics/validation.h"
+#include "ui/setup_file.h"
+
+namespace frictionlab {
+
+int run_link(const std::vector<std::string>& args, std::ostream& out) {
+  std::string source, page;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--page") {
+      if (i + 1 >= args.size()) throw InvalidInput("link: --page needs the page's address, as in --page https://school.example/frictionlab/");
+      if (!page.empty()) throw InvalidInput("link: --page given twice");
+      page = args[++i];
+    } else if (args[i].rfind("--", 0) == 0) {
+      throw InvalidInput("link: unknown option '" + args[i] + "'; usage: frictionlab link FILE.setup [--page ADDRESS] | frictionlab link LINK");
+    } else if (!source.empty()) {
+      throw InvalidInput("link: one setup file or link at a time, got '" + source + "' and '" + args[i] + "'");
+    } else {
+      source = args[i];
+    }
+  }
+  if (source.empty()) throw InvalidInput("link: name a setup file (to make its link) or give a link (to write its setup)");
+  // A link in: its setup's text out, checked as a setup file is.
+  if (const std::optional<std::string> text = ui::setup_text_from_link(source)) {
+    if (!page.empty()) throw InvalidInput("link: --page goes with a setup file, not with a link");
+    ui::parse_setup(*text, "setup link");
+    out << *text;
+    if (!text->empty() && text->back() != '\n') out << '\n';
+    return 0;
+  }
+  ui::read_setup(source);  // refuses what is not a setup file, with its line
+  std::ifstream file(source, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  out << ui::setup_link(text.str(), page) << '\n';
+  return 0;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,38 @@
+# The GoogleTest suites that need no window, built for node (scripts/web_test.sh configures
+# with FRICTIONLAB_WEB_TESTS=ON): the physics, the lesson runtime and its built-in lessons, and
+# the student's lesson folder, run by ctest in build-web/ as node programs. GoogleTest 1.12
+# comes from Debian's source package, as Box2D, Lua and ImGui do.
+set(gtest_root "${FRICTIONLAB_WEB_SOURCES}/googletest-1.12.1/googletest")
+if(NOT IS_DIRECTORY "${gtest_root}")
+  message(FATAL_ERROR "googletest-1.12.1 not found in FRICTIONLAB_WEB_SOURCES: scripts/web.sh fetches it")
+endif()
+add_library(web_gtest STATIC "${gtest_root}/src/gtest-all.cc" "${gtest_root}/src/gtest_main.cc")
+target_include_directories(web_gtest SYSTEM PUBLIC "${gtest_root}/include" PRIVATE "${gtest_root}")
+# One thread in WebAssembly without workers: GoogleTest's locks are left out.
+target_compile_definitions(web_gtest PUBLIC GTEST_HAS_PTHREAD=0)
+target_compile_options(web_gtest PRIVATE -w)
+
+set(tests_folder "${PROJECT_SOURCE_DIR}/tests")
+set(web_test_link_options -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sTOTAL_STACK=4MB
+                          -sWASM_ASYNC_COMPILATION=0)
+function(frictionlab_web_test name library)
+  add_executable(web_${name} "${tests_folder}/${name}.cpp")
+  target_link_libraries(web_${name} PRIVATE ${library} frictionlab_flags web_gtest)
+  target_link_options(web_${name} PRIVATE ${web_test_link_options})
+  set_target_properties(web_${name} PROPERTIES SUFFIX ".js")
+  add_test(NAME web_${name} COMMAND node $<TARGET_FILE:web_${name}>)
+  set_tests_properties(web_${name} PROPERTIES TIMEOUT 900)
+endfunction()
+
+foreach(name test_materials test_friction_laws test_closed_forms test_reduced_model test_wedge_model test_scene
+             test_box2d_friction test_stick_slip_convergence test_energy_ledger test_stability test_run_check
+             test_pair_treatment test_friction_listener_feet)
+  frictionlab_web_test(${name} frictionlab_physics)
+endforeach()
+foreach(name test_lesson_runtime test_builtin_lessons test_world_functions test_lesson_benchmark test_predict
+             test_script_free_readings)
+  frictionlab_web_test(${name} frictionlab_lessons)
+endforeach()
+frictionlab_web_test(test_lesson_errors frictionlab_lessons)
+target_compile_definitions(web_test_lesson_errors PRIVATE FRICTIONLAB_BROKEN_LESSONS="${tests_folder}/broken_lessons")
+frictionlab_web_test(test_user_lessons frictionlab_ui)
