@@ -20,6 +20,9 @@ double incline_sliding_acceleration(double angle, double mu_k, double g);
 // Where kinetic friction alone would hold it (tan θ <= mu_k) it never starts: both are 0.
 double incline_speed(double angle, double mu_k, double c, double mass, double g, double t);
 double incline_distance(double angle, double mu_k, double c, double mass, double g, double t);
+// The same with quadratic drag b too (F = −b·v²): m v' = m·g(sin θ − μk cos θ) − c·v − b·v².
+double incline_speed(double angle, double mu_k, double c, double b, double mass, double g, double t);
+double incline_distance(double angle, double mu_k, double c, double b, double mass, double g, double t);
 
 // A uniform box of width d pushed horizontally at height h: pushed at or above d/(2 μs) it
 // tips about its front edge before it slides, however hard the push.

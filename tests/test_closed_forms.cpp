@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
@@ -77,6 +78,23 @@ TEST(ClosedForms, InclineSpeedAndDistanceMatchEventSolver) {
     for (const double t : {0.25, 1.0, 2.0}) {
       EXPECT_RELATIVE(incline_speed(angle, 0.3, c, mass, g, t), numeric.velocity(t), 1e-6) << "c " << c << " t " << t;
       EXPECT_RELATIVE(incline_distance(angle, 0.3, c, mass, g, t), numeric.position(t), 1e-6) << "c " << c << " t " << t;
+    }
+  }
+  // Quadratic drag b too (the incline lesson's b slider), alone and with c: from a b too small
+  // to matter (where the Riccati form would cancel) to one that holds the block near its
+  // terminal speed within milliseconds.
+  for (const auto& [c, b] : {std::pair{0.0, 1e-9}, std::pair{0.0, 0.7}, std::pair{0.8, 0.7}, std::pair{5.0, 30.0},
+                             std::pair{0.0, 900.0}}) {
+    const double mass = 2.0, angle = 0.6;
+    OneDofBlock block;
+    block.mass = mass;
+    block.normal_force = mass * g * std::cos(angle);
+    block.constant_force = mass * g * std::sin(angle);
+    block.pair = {0.5, 0.3, c, b};
+    const Trajectory numeric = solve_event_rk4(block, 2.0, 1e-5);
+    for (const double t : {0.25, 1.0, 2.0}) {
+      EXPECT_RELATIVE(incline_speed(angle, 0.3, c, b, mass, g, t), numeric.velocity(t), 1e-6) << "c " << c << " b " << b << " t " << t;
+      EXPECT_RELATIVE(incline_distance(angle, 0.3, c, b, mass, g, t), numeric.position(t), 1e-6) << "c " << c << " b " << b << " t " << t;
     }
   }
   // Steeper than atan(μs) but not than atan(μk): it cannot keep sliding.

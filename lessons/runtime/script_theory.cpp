@@ -52,13 +52,14 @@ int incline_acceleration(lua_State* state) {
 
 int incline_motion(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "mass", "t", "g"});
+    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "b", "mass", "t", "g"});
     const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees, mu_k = fields.number("mu_k", "");
-    const double c = fields.number("c", "N·s/m", 0.0), mass = fields.number("mass", "kg");
+    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const double mass = fields.number("mass", "kg");
     const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s");
     lua_createtable(state, 0, 2);
-    set_number(state, "speed", theory::incline_speed(angle, mu_k, c, mass, g, t));
-    set_number(state, "distance", theory::incline_distance(angle, mu_k, c, mass, g, t));
+    set_number(state, "speed", theory::incline_speed(angle, mu_k, c, b, mass, g, t));
+    set_number(state, "distance", theory::incline_distance(angle, mu_k, c, b, mass, g, t));
     return 1;
   });
 }
