@@ -9,6 +9,7 @@
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
+#include "physics/friction_laws.h"
 #include "physics/reduced_model.h"
 #include "physics/scenarios.h"
 #include "physics/wedge_model.h"
@@ -291,7 +292,8 @@ int growing_push(lua_State* state) {
 int thrown_box(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
-                                                  "centre_height", "mu_k", "restitution", "g", "clearance", "step"});
+                                                  "centre_height", "mu_k", "c", "b", "restitution", "g", "clearance",
+                                                  "step"});
     const double width = fields.number("width", "m"), height = fields.number("height", "m");
     const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
     const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
@@ -300,6 +302,11 @@ int thrown_box(lua_State* state) {
     // Box2D's polygons touch when their cores are two skins apart.
     const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
     const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
+    // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
+    // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
+    // speed the box brings into the step it lands in, before that step's impact is solved
+    // (a contact born in a step has its drag at once). The same once here.
+    const FrictionPair drag{mu_k, mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
     const double inertia = mass * (width * width + height * height) / 12.0;
@@ -325,9 +332,24 @@ int thrown_box(lua_State* state) {
     const auto impact_on = [&](double rx, double ry, double late) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
       const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
-      return theory::corner_impact(mass, inertia, c * rx - s * ry, s * rx + c * ry - 0.5 * (clearance - sunk), speed,
-                                   -g * (landing.time + late), spin, mu_k, restitution);
+      const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
+      // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
+      // along the floor at that point feels.
+      double vx = speed, omega = spin;
+      if (step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
+        const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
+        const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
+        vx += impulse / mass;
+        omega -= py * impulse / inertia;
+      }
+      const double vy = -g * (landing.time + late);
+      // Drag strong enough to turn the corner up off the floor leaves the normal impulse
+      // nothing to stop: the step's drag is then the whole of the impact.
+      if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
+      return theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu_k, restitution);
     };
+    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
+    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
     // Landing flat, the face's two ends share the impact, and their loads shift to keep the box
     // from pitching (no lever arm: its spin is unchanged), unless friction's moment about the
     // front end is more than the weight of the impact can hold: then the front end takes it
@@ -345,7 +367,7 @@ int thrown_box(lua_State* state) {
         corner = "pitches over its front edge";
         hit_x = front_x, hit_y = front_y;
       } else {
-        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * landing.time, spin, mu_k, restitution);
+        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
       }
     } else {
       impact = impact_on(landing.corner_x, landing.corner_y, 0.0);
@@ -376,9 +398,11 @@ int thrown_box(lua_State* state) {
                                        : impact_on(landing.corner_x, landing.corner_y, step).omega;
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
-    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * flat.time, 0.0, mu_k,
-                                                             restitution);
-    const double slide = mu_k > 0.0 ? lands.vx * lands.vx / (2.0 * mu_k * g) : infinity;
+    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
+                                                             mu_k, restitution);
+    // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
+    // slows it, ever more slowly).
+    const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
     lua_createtable(state, 0, 14);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_angle", landing.angle / degrees);
@@ -393,8 +417,8 @@ int thrown_box(lua_State* state) {
     set_number(state, "vy_after", impact.vy);
     set_number(state, "locked_landing_time", flat.time);
     set_number(state, "locked_speed_after_landing", lands.vx);
-    set_number(state, "locked_distance", speed * flat.time + slide);
-    set_number(state, "locked_stop_time", flat.time + (mu_k > 0.0 ? lands.vx / (mu_k * g) : slide));
+    set_number(state, "locked_distance", speed * flat.time + slide.distance);
+    set_number(state, "locked_stop_time", flat.time + slide.time);
     return 1;
   });
 }
