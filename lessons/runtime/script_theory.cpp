@@ -268,6 +268,69 @@ int regularized_run(lua_State* state) {
   });
 }
 
+// The regularized law's creep down a slope it should stick to, as a fixed step takes it: each
+// step the drag c, b acts exactly over the step on the speed the block brings (as the listener
+// applies it), the law's linear branch −μs·N·v/ε and gravity's pull explicitly, so the step's
+// speed v' = damped(v) + h·g·(sin θ − μs·cos θ·v/ε) and the creep is its fixed point. With no
+// drag that is ε·tan θ/μs at any step; with step 0, the continuous law's b v² + (μs·m·g·cos θ/ε
+// + c)·v = m·g·sin θ. `amplification` is dv'/dv there: the step settles onto the creep while
+// its size is below 1 (with no drag: while h < 2ε/(μs·g·cos θ)) and jitters for ever past it.
+// Needs μs > tan θ, so that the linear branch can balance the slope. With `duration`, the steps
+// from rest are taken too: `breaks_away` when the block ends faster than ε, and `settles` then
+// false whatever the amplification.
+int regularized_creep(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.regularized_creep",
+                  {"angle", "mu_s", "mu_k", "epsilon", "step", "c", "b", "mass", "duration", "g"});
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
+    const double mu_s = fields.number("mu_s", ""), epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    const double h = fields.number_in("step", "s", 0.0, 0.0, 1.0), mass = fields.number("mass", "kg", 1.0);
+    const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    const FrictionPair drag{0.0, 0.0, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    if (mu_s <= std::tan(angle)) {
+      throw InvalidInput("theory.regularized_creep: mu_s must be above tan(angle) (" + std::to_string(std::tan(angle)) +
+                         "): only then can the law's linear branch balance the slope");
+    }
+    const double pull = g * std::sin(angle), k = mu_s * g * std::cos(angle) / epsilon;  // per unit mass
+    // What the step lacks of a fixed point at v: rises with v (damped(v) rises slower than v).
+    const auto excess = [&](double v) {
+      if (h == 0.0) return (drag.c * v + drag.b * v * v) / mass - (pull - k * v);
+      return v - damped_velocity(v, mass, h, drag) - h * (pull - k * v);
+    };
+    double low = 0.0, high = epsilon;  // excess(0) <= 0 < excess(ε), as μs > tan θ
+    for (int i = 0; i < 200 && high - low > 1e-15 * epsilon; ++i) {
+      const double middle = 0.5 * (low + high);
+      (excess(middle) > 0.0 ? high : low) = middle;
+    }
+    const double creep = 0.5 * (low + high);
+    double amplification = 0.0;
+    if (h > 0.0) {
+      const double dv = 1e-6 * epsilon;
+      const double slope = (damped_velocity(creep + dv, mass, h, drag) - damped_velocity(std::max(creep - dv, 0.0), mass, h, drag)) /
+                           (creep + dv - std::max(creep - dv, 0.0));
+      amplification = slope - h * k;
+    }
+    // The steps themselves from rest, over `duration`, with the whole law (kinetic friction
+    // μk·N past ε): a step that overshoots ε (the first one does where h·g·sin θ > ε) lets a
+    // slope steeper than atan μk take the block away, whatever the creep's own stability.
+    const double mu_k = fields.number("mu_k", "", mu_s);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 3600.0);
+    double v = 0.0;
+    if (h > 0.0 && duration / h > 1e7) throw InvalidInput("theory.regularized_creep: duration / step is over 10 million steps");
+    for (double t = 0.0; h > 0.0 && t < duration - 0.5 * h; t += h) {
+      const double dry = std::abs(v) < epsilon ? -k * v : -mu_k * g * std::cos(angle) * (v > 0.0 ? 1.0 : -1.0);
+      v = damped_velocity(v, mass, h, drag) + h * (pull + dry);
+    }
+    lua_createtable(state, 0, 5);
+    set_number(state, "speed", creep);
+    set_number(state, "amplification", amplification);
+    set_flag(state, "breaks_away", v > epsilon);
+    set_number(state, "speed_at_end", v);
+    set_flag(state, "settles", std::abs(amplification) < 1.0 && v <= epsilon);
+    return 1;
+  });
+}
+
 int growing_push(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.growing_push", {"mass", "rate", "mu_s", "mu_k", "c", "b", "t", "g"});
@@ -571,6 +634,7 @@ void register_theory_api(lua_State* state) {
                                 {"velocity_hack", velocity_hack},
                                 {"wedge", wedge},
                                 {"regularized_run", regularized_run},
+                                {"regularized_creep", regularized_creep},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);
   lua_setglobal(state, "theory");
