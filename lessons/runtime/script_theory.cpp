@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "lessons/runtime/build.h"
@@ -89,18 +90,75 @@ int push_outcome(lua_State* state) {
 
 int spring_stick_slip(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.spring_stick_slip", {"mass", "k", "pull_speed", "mu_s", "mu_k", "g"});
-    const theory::StickSlip cycle = theory::spring_stick_slip(
-        fields.number("mass", "kg"), fields.number("k", "N/m"), fields.number("pull_speed", "m/s"),
-        fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
-    lua_createtable(state, 0, 7);
-    set_number(state, "breakaway_force", cycle.breakaway_force);
-    set_number(state, "restick_force", cycle.restick_force);
-    set_number(state, "stick_duration", cycle.stick_duration);
-    set_number(state, "slip_duration", cycle.slip_duration);
-    set_number(state, "period", cycle.period);
-    set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
-    set_number(state, "slip_distance", cycle.slip_distance);
+    Fields fields(state, 1, "theory.spring_stick_slip",
+                  {"mass", "k", "pull_speed", "mu_s", "mu_k", "c", "b", "duration", "g"});
+    const double mass = fields.number("mass", "kg"), k = fields.number("k", "N/m");
+    const double pull_speed = fields.number("pull_speed", "m/s"), mu_s = fields.number("mu_s", "");
+    const double mu_k = fields.number("mu_k", ""), g = fields.number("g", "m/s²", standard_gravity);
+    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 86400.0);
+    lua_createtable(state, 0, 8);
+    // The closed form's cycle, where it has one (no drag, mu_k <= mu_s).
+    if (c == 0.0 && b == 0.0 && mu_k <= mu_s) {
+      const theory::StickSlip cycle = theory::spring_stick_slip(mass, k, pull_speed, mu_s, mu_k, g);
+      set_number(state, "breakaway_force", cycle.breakaway_force);
+      set_number(state, "restick_force", cycle.restick_force);
+      set_number(state, "stick_duration", cycle.stick_duration);
+      set_number(state, "slip_duration", cycle.slip_duration);
+      set_number(state, "period", cycle.period);
+      set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
+      set_number(state, "slip_distance", cycle.slip_distance);
+    } else {
+      lua_pushstring(state, mu_k > mu_s ? "no periodic cycle: μk > μs" : "no closed form with drag c or b");
+      lua_setfield(state, -2, "no_closed_form");
+    }
+    // With a duration: the run itself from rest, by the exact reduced model (closed-form phases
+    // joined at events; with b, RK4 phases with their events bisected to 1e-13 s), read as a
+    // lesson reads its record: the mean spring force at the breakaways and at the re-sticks
+    // (a reversal, where the block stops and at once slides back, is both), and the mean time
+    // from one breakaway to the next. Drag (c, b) has no closed form here; this answers it.
+    if (duration > 0.0) {
+      OneDofBlock block;
+      block.mass = mass;
+      block.normal_force = mass * g;
+      block.pair = {mu_s, mu_k, c, b};
+      block.spring_k = k;
+      block.pull_speed = pull_speed;
+      // RK4's step: 200 a swing of the spring, and short against the drag's own time m/(c + 2b·v)
+      // (RK4 is stable only while h·(c + 2b·v)/m < 2.78), v at most the hand's speed and the
+      // lurch's, max(mu_s, mu_k)·g/ω.
+      const double swing = 2.0 * std::numbers::pi * std::sqrt(mass / k);
+      // (The lurch is slower still where the drag at that speed would outpull the spring's
+      // largest pull, max(mu_s, mu_k)·m·g plus what it takes to stop.)
+      const double largest = 2.0 * std::max(mu_s, mu_k) * mass * g;
+      double fastest = std::max(mu_s, mu_k) * g * swing / (2.0 * std::numbers::pi);
+      if (b > 0.0) fastest = std::min(fastest, std::sqrt(largest / b));
+      if (c > 0.0) fastest = std::min(fastest, largest / c);
+      fastest += pull_speed;
+      const double h = std::min({1e-3, swing / 200.0, duration / 16.0, 0.5 * mass / (c + 2.0 * b * fastest)});
+      if (b != 0.0 && duration / h > 2e7) throw InvalidInput("theory.spring_stick_slip: duration is over 20 million model steps");
+      const Trajectory run = b == 0.0 ? solve_exact(block, duration) : solve_event_rk4(block, duration, h);
+      int breakaways = 0, resticks = 0;
+      double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
+      for (const Event& event : run.events()) {
+        const double force = applied_force(block, event.t, event.x);
+        const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
+        if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
+        if (breaks) {
+          if (breakaways == 0) first = event.t, first_force = force;
+          last = event.t;
+          ++breakaways, breakaway_sum += force;
+        }
+      }
+      lua_createtable(state, 0, 6);
+      set_number(state, "breakaways", breakaways);
+      set_number(state, "resticks", resticks);
+      if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
+      if (breakaways > 0) set_number(state, "first_breakaway_force", first_force);
+      if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
+      if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
+      lua_setfield(state, -2, "run");
+    }
     return 1;
   });
 }
