@@ -251,14 +251,16 @@ DiskOnIncline disk_on_incline(double angle, double mass, double radius, double i
   require_positive(where, "inertia", inertia);
   require_non_negative(where, "mu_s", mu_s);
   require_non_negative(where, "mu_k", mu_k);
-  require_kinetic_not_above_static(where, mu_s, mu_k);
   require_positive(where, "g", g);
   // κ = I/(mR²): how much of the weight's pull goes into spinning the body up when it rolls.
   const double kappa = inertia / (mass * radius * radius);
   const double normal_force = mass * g * std::cos(angle);
   const double rolling_acceleration = g * std::sin(angle) / (1.0 + kappa);
   const double rolling_friction = kappa * mass * rolling_acceleration;
-  if (rolling_friction <= mu_s * normal_force) {
+  // The grip holds up to max(μs, μk)·N, the rule the simulation's contacts follow: with μk above
+  // μs a contact pushed past μs·N but not μk·N would be stopped slipping at once by the larger
+  // kinetic friction, so it holds. Past that it slips, against μk·N.
+  if (rolling_friction <= std::max(mu_s, mu_k) * normal_force) {
     return {true, rolling_acceleration, rolling_acceleration / radius, rolling_friction};
   }
   const double friction = mu_k * normal_force;

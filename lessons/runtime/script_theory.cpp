@@ -268,9 +268,18 @@ int driven_wheel(lua_State* state) {
 int stacked_blocks(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
-    const theory::StackedBlocks stack = theory::stacked_blocks(
-        fields.number("top_mass", "kg"), fields.number("bottom_mass", "kg"), nested_pair(state, fields, "between"),
-        nested_pair(state, fields, "ground"), fields.number("push", "N"), fields.number("g", "m/s²", standard_gravity));
+    const double top_mass = fields.number("top_mass", "kg"), bottom_mass = fields.number("bottom_mass", "kg");
+    const FrictionPair between = nested_pair(state, fields, "between"), ground = nested_pair(state, fields, "ground");
+    const double push = fields.number("push", "N"), g = fields.number("g", "m/s²", standard_gravity);
+    // A slider may put mu_k above mu_s; the closed form has no answer there, and says so in words
+    // (`no_closed_form`) rather than refusing the value.
+    if (between.mu_k > between.mu_s || ground.mu_k > ground.mu_s) {
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no closed form (μk > μs)");
+      lua_setfield(state, -2, "no_closed_form");
+      return 1;
+    }
+    const theory::StackedBlocks stack = theory::stacked_blocks(top_mass, bottom_mass, between, ground, push, g);
     lua_createtable(state, 0, 4);
     const char* regime = stack.regime == theory::StackRegime::at_rest    ? "at_rest"
                          : stack.regime == theory::StackRegime::together ? "together"
@@ -333,7 +342,7 @@ int regularized_run(lua_State* state) {
 // drag that is ε·tan θ/μs at any step; with step 0, the continuous law's b v² + (μs·m·g·cos θ/ε
 // + c)·v = m·g·sin θ. `amplification` is dv'/dv there: the step settles onto the creep while
 // its size is below 1 (with no drag: while h < 2ε/(μs·g·cos θ)) and jitters for ever past it.
-// Needs μs > tan θ, so that the linear branch can balance the slope. With `duration`, the steps
+// Where μs <= tan θ the linear branch cannot balance the slope: `no_creep` says so. With `duration`, the steps
 // from rest are taken too: `breaks_away` when the block ends faster than ε, and `settles` then
 // false whatever the amplification.
 int regularized_creep(lua_State* state) {
@@ -345,9 +354,11 @@ int regularized_creep(lua_State* state) {
     const double h = fields.number_in("step", "s", 0.0, 0.0, 1.0), mass = fields.number("mass", "kg", 1.0);
     const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
     const FrictionPair drag{0.0, 0.0, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
-    if (mu_s <= std::tan(angle)) {
-      throw InvalidInput("theory.regularized_creep: mu_s must be above tan(angle) (" + std::to_string(std::tan(angle)) +
-                         "): only then can the law's linear branch balance the slope");
+    if (mu_s <= std::tan(angle)) {  // an answer in words, not a refusal
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no creep: μs ≤ tan θ, the law's linear branch cannot hold the slope");
+      lua_setfield(state, -2, "no_creep");
+      return 1;
     }
     const double pull = g * std::sin(angle), k = mu_s * g * std::cos(angle) / epsilon;  // per unit mass
     // What the step lacks of a fixed point at v: rises with v (damped(v) rises slower than v).
