@@ -90,9 +90,17 @@ local function has_theory() return param.mu_s > tilt end
 local no_theory = "no theory: μs ≤ tan θ"
 -- The creep as this step takes the law, with the pair's drag c and b too (they slow the creep;
 -- with neither it is ε·tan θ/μs at any step), and whether the step settles onto it.
+-- The rows ask it several times whenever they are read; it steps the law from rest to now, so
+-- each answer is kept until the time or a value changes.
+local creeps = {}
 local function creep(epsilon)
-  return theory.regularized_creep { angle = angle, mu_s = param.mu_s, mu_k = param.mu_k, epsilon = epsilon, c = param.c,
-                                    b = param.b, mass = 1, step = step_length(), duration = time() }
+  local key = string.format("%.17g %.17g %.17g %.17g %.17g %.17g", epsilon, time(), param.mu_s, param.mu_k, param.c, param.b)
+  if not creeps[epsilon] or creeps[epsilon].key ~= key then
+    creeps[epsilon] = { key = key, answer = theory.regularized_creep {
+      angle = angle, mu_s = param.mu_s, mu_k = param.mu_k, epsilon = epsilon, c = param.c, b = param.b, mass = 1,
+      step = step_length(), duration = time() } }
+  end
+  return creeps[epsilon].answer
 end
 local no_creep = "jitters: no steady creep at this step"
 
