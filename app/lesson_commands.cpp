@@ -1,7 +1,11 @@
 // frictionlab list | run | check: lessons headless, as a test suite or a teacher without a
 // window uses them.
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -18,6 +22,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/validation.h"
+#include "ui/mystery.h"
 
 namespace frictionlab {
 namespace {
@@ -69,17 +74,23 @@ RunOptions parse_run(const std::vector<std::string>& args) {
   return options;
 }
 
-// Runs the lesson for `duration` and prints its expectations; returns how many failed. With
-// values `hidden` (a mystery pair's), the predictions, errors and tolerances worked out from them
-// are hidden too.
-int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out, const std::set<std::string>& hidden = {}) {
-  require_record_fits(duration, lesson.settings().hz, lesson.scene().probes().size(), "shorten --duration or lower --hz");
-  if (csv) csv->header(lesson, hidden);
+// Steps the lesson until `duration`, writing each step to `csv` when there is one.
+void run_for(Lesson& lesson, double duration, CsvLog* csv) {
   const double h = lesson.scene().frame_step();
   while (lesson.scene().time() < duration - 0.5 * h) {
     lesson.step();
     if (csv) csv->row(lesson.scene());
   }
+}
+
+// Runs the lesson for `duration` and prints its expectations; returns how many failed. With
+// values `hidden` (a mystery pair's), the predictions, errors and tolerances worked out from them
+// are hidden too.
+
+int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& out, const std::set<std::string>& hidden = {}) {
+  require_record_fits(duration, lesson.settings().hz, lesson.scene().probes().size(), "shorten --duration or lower --hz");
+  if (csv) csv->header(lesson, hidden);
+  run_for(lesson, duration, csv);
   for (const std::string& warning : lesson.warnings()) out << "warning: " << warning << '\n';
   std::vector<std::vector<std::string>> table{{"expectation", "unit", "predicted", "measured", "error", "tolerance", "pass"}};
   int failed = 0;
@@ -114,6 +125,117 @@ void print_heading(const Lesson& lesson, std::ostream& out, const std::set<std::
     values += (values.empty() ? "" : ", ") + parameter.name + " = " + (hidden.count(parameter.name) > 0 ? "? (a mystery)" : parameter.shown());
   }
   out << "  " << values << "\n\n";
+}
+
+// check --random: settings drawn inside the lesson's own sliders' ranges.
+constexpr int max_random_settings = 100000;
+constexpr std::uint64_t default_random_seed = 1;  // help and the man page say so
+
+// SplitMix64, written out so that a seed draws the same settings with every compiler and
+// standard library (std::uniform_real_distribution's algorithm is not specified).
+class Draws {
+ public:
+  explicit Draws(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
+
+ private:
+  std::uint64_t state_;
+};
+
+// The shortest text that reads back as the same double, as --set takes it.
+std::string exact_text(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+// A value for one slider in setting `index`: the first setting puts every slider at its
+// minimum, the second at its maximum; after that each slider is at an end one time in five
+// each, else anywhere between, rounded to four significant figures so that the command line
+// reproducing it stays short (rounding never leaves the range).
+std::string draw_value(const lessons::Parameter& parameter, int index, Draws& draws) {
+  if (parameter.is_choice()) return parameter.choices[draws.next() % parameter.choices.size()];
+  const std::uint64_t pick = draws.next() % 5;
+  if (index == 0 || (index > 1 && pick == 0)) return exact_text(parameter.min);
+  if (index == 1 || pick == 1) return exact_text(parameter.max);
+  const double value = parameter.min + draws.unit() * (parameter.max - parameter.min);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  const double rounded = std::strtod(text, nullptr);
+  if (rounded < parameter.min) return exact_text(parameter.min);
+  if (rounded > parameter.max) return exact_text(parameter.max);
+  return exact_text(rounded);
+}
+
+// A word as a shell takes it: quoted when it holds anything but letters, digits and ._-=/+.
+std::string shell_word(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::strchr("._-=/+,", c) != nullptr;
+  });
+  if (plain) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Checks the lesson `name` at `count` settings drawn from `seed`; the values in `fixed` (from
+// --set) are kept in every setting. Prints each failing setting as the command line that
+// reproduces it, with the rows it missed. Returns how many settings failed.
+int check_random_settings(const std::string& name, const std::map<std::string, std::string>& fixed,
+                          const StepSettings& settings, const std::vector<std::string>& step_options, int count,
+                          std::uint64_t seed, std::ostream& out) {
+  const std::string path = lessons::resolve_lesson(name);
+  std::vector<lessons::Parameter> sliders;
+  {
+    const Lesson defaults(path, fixed, settings);  // the sliders as the script declares them
+    for (const lessons::Parameter& parameter : defaults.parameters()) {
+      if (fixed.count(parameter.name) == 0) sliders.push_back(parameter);
+    }
+  }
+  // The lesson's name salts the seed, so that two lessons checked together draw differently.
+  std::uint64_t salt = 1469598103934665603ULL;
+  for (const char c : std::filesystem::path(path).stem().string()) salt = (salt ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  Draws draws(seed ^ salt);
+  int failed = 0;
+  for (int index = 0; index < count; ++index) {
+    std::map<std::string, std::string> values = fixed;
+    for (const lessons::Parameter& slider : sliders) values[slider.name] = draw_value(slider, index, draws);
+    std::string command = "frictionlab check " + shell_word(name);
+    for (const auto& [parameter, value] : values) command.append(" --set ").append(shell_word(parameter + "=" + value));
+    for (const std::string& option : step_options) command.append(" ").append(shell_word(option));
+    std::vector<std::string> missed;
+    try {
+      Lesson lesson(path, values, settings);
+      require_record_fits(lesson.duration(), lesson.settings().hz, lesson.scene().probes().size(), "lower --hz");
+      run_for(lesson, lesson.duration(), nullptr);
+      for (const lessons::ExpectationResult& row : lesson.expectations()) {
+        if (row.passes) continue;
+        if (row.numeric && row.measured_yet) {
+          missed.push_back(row.name + ": predicted " + format_number(row.predicted) + ", measured " +
+                           format_number(row.measured) + ", error " + format_number(row.error(), 2) + ", tolerance " +
+                           format_number(row.tolerance, 2) + (row.unit.empty() ? "" : " " + row.unit));
+        } else {
+          const std::string predicted = row.numeric ? format_number(row.predicted) : row.predicted_text;
+          missed.push_back(row.name + ": predicted " + predicted + ", measured " + row.measured_text);
+        }
+      }
+    } catch (const InvalidInput& error) {
+      missed.push_back(std::string("could not be run: ") + error.what());
+    }
+    if (missed.empty()) continue;
+    ++failed;
+    out << "FAIL: " << command << '\n';
+    for (const std::string& row : missed) out << "  " << row << '\n';
+  }
+  out << name << ": " << count - failed << " of " << count << " random settings meet every expectation (seed " << seed
+      << ")\n";
+  return failed;
 }
 
 }  // namespace
@@ -167,43 +289,67 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
 
 int run_check(const std::vector<std::string>& args, std::ostream& out) {
   // Lessons, and the values and step settings to check them at (a student checks a threshold
-  // from both sides: check my_lesson.lua --set launch_speed=2.4).
+  // from both sides: check my_lesson.lua --set launch_speed=2.4), or at N settings drawn inside
+  // the sliders' ranges (check my_lesson.lua --random 50).
   std::vector<std::string> names;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::vector<std::string> seen;
+  std::vector<std::string> seen, step_options;
+  std::optional<int> random_count;
+  std::optional<std::uint64_t> seed;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.rfind("--", 0) != 0) {
       names.push_back(arg);
       continue;
     }
-    static const std::string known[] = {"--hz", "--substeps", "--friction", "--set"};
+    static const std::string known[] = {"--hz", "--substeps", "--friction", "--set", "--random", "--seed"};
     if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("check: unknown option '" + arg + "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T");
+      throw InvalidInput("check: unknown option '" + arg +
+                         "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T, --random N, --seed S");
     }
     if (i + 1 >= args.size()) throw InvalidInput("check: " + arg + " needs a value; see frictionlab help");
     refuse_repeat("check", arg, seen);
     const std::string& value = args[++i];
     if (arg == "--set") {
       add_override(value, overrides);
+    } else if (arg == "--random") {
+      const std::string allowed = "a whole number of settings from 1 to " + std::to_string(max_random_settings);
+      const bool digits = !value.empty() && value.size() <= 6 &&
+                          std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!digits || std::stoi(value) < 1 || std::stoi(value) > max_random_settings) {
+        throw InvalidInput("check: --random " + value + ": give " + allowed);
+      }
+      random_count = std::stoi(value);
+    } else if (arg == "--seed") {
+      seed = ui::parse_mystery_seed("check: --seed", value);
     } else {
       step_option(arg, value, settings);  // --hz, --substeps or --friction
+      step_options.push_back(arg);
+      step_options.push_back(value);
     }
   }
   if (names.empty() && !overrides.empty()) {
     throw InvalidInput("check: --set names a parameter of one lesson; name the lesson too, as in check push --set mass=2");
   }
+  if (seed && !random_count) throw InvalidInput("check: --seed S draws the settings of --random N; give --random N with it");
   if (names.empty()) names = lessons::builtin_lessons();
   // Every lesson is checked even when one cannot be run: a broken script is reported and the
   // others still get their verdict.
   int failed_lessons = 0, broken_lessons = 0;
   for (const std::string& name : names) {
     try {
-      Lesson lesson(lessons::resolve_lesson(name), overrides, settings);
-      out << "== " << name << ": ";
-      print_heading(lesson, out);
-      if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
+      if (random_count) {
+        if (check_random_settings(name, overrides, settings, step_options, *random_count, seed.value_or(default_random_seed),
+                                  out) > 0) {
+          ++failed_lessons;
+        }
+      } else {
+        Lesson lesson(lessons::resolve_lesson(name), overrides, settings);
+        out << "== " << name << ": ";
+        print_heading(lesson, out);
+        if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
+      }
     } catch (const InvalidInput& error) {
       std::cerr << "frictionlab: check " << name << ": " << error.what() << '\n';
       ++broken_lessons;
@@ -214,7 +360,8 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
     out << broken_lessons << " lesson(s) could not be run (see the messages above)\n";
     return 2;
   }
-  out << (failed_lessons == 0 ? "every lesson meets its expectations\n"
+  const std::string what = random_count ? "at every random setting" : "";
+  out << (failed_lessons == 0 ? "every lesson meets its expectations" + (what.empty() ? "" : " " + what) + "\n"
                               : std::to_string(failed_lessons) + " lesson(s) missed an expectation\n");
   return failed_lessons == 0 ? 0 : 1;
 }

@@ -115,8 +115,11 @@ for _, block in ipairs { { "wide", "wide" }, { "narrow", "narrow" }, { "three_fe
   expect { block[2] .. ": breakaway pull", unit = "N",
     predicted = function() return pull_theory(0).breakaway_push end,
     measured = function() return breakaway(name) end,
-    -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.
-    tolerance = function() return 0.01 * pull_theory(0).breakaway_push + pull_rate * step_length() end }
+    -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in;
+    -- and a contact just past mu_s·N may be held one step more while the listener tells the
+    -- solver's leftover from a real excess (a growing pull's excess grows, so never two):
+    -- the narrow block, light and pulled fast, shows it.
+    tolerance = function() return 0.01 * pull_theory(0).breakaway_push + 2 * pull_rate * step_length() end }
 end
 -- Friction is proportional to the normal force: the most the bench's friction on the wide
 -- block reached, over the normal force the bench pressed it with (both as the solver found

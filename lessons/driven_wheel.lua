@@ -75,10 +75,17 @@ probe { "rim_speed", unit = "m/s", read = { wheel, "omega", scale = -radius } }
 plot { "Speed of the axle and of the tyre's rim", kind = "time", y = { "speed", "rim_speed" } }
 
 -- Reading the record ----------------------------------------------------------------------
+-- With no friction at all (mu_s = mu_k = 0) the contact reads "slipping" whatever happens, as
+-- nothing holds it; there a slip counts only once the tyre really slides on the road, its rim
+-- running ahead of the axle.
 local function first_slip_torque()
   local slipping, torques = history("slipping"), history("torque")
+  local frictionless = param.mu_s == 0 and param.mu_k == 0
+  local rims, axles = history("rim_speed"), history("speed")
   for i = 1, #slipping do
-    if slipping[i] == 1 then return i > 1 and torques[i - 1] or 0 end
+    if slipping[i] == 1 and (not frictionless or math.abs(rims[i] - axles[i]) > 1e-6) then
+      return i > 1 and torques[i - 1] or 0
+    end
   end
 end
 local function at_the_end(probe) return time() >= 2 - 0.5 * step_length() and value_at(probe, 2) or nil end

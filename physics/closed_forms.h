@@ -20,6 +20,9 @@ double incline_sliding_acceleration(double angle, double mu_k, double g);
 // Where kinetic friction alone would hold it (tan θ <= mu_k) it never starts: both are 0.
 double incline_speed(double angle, double mu_k, double c, double mass, double g, double t);
 double incline_distance(double angle, double mu_k, double c, double mass, double g, double t);
+// The same with quadratic drag b too (F = −b·v²): m v' = m·g(sin θ − μk cos θ) − c·v − b·v².
+double incline_speed(double angle, double mu_k, double c, double b, double mass, double g, double t);
+double incline_distance(double angle, double mu_k, double c, double b, double mass, double g, double t);
 
 // A uniform box of width d pushed horizontally at height h: pushed at or above d/(2 μs) it
 // tips about its front edge before it slides, however hard the push.
@@ -58,13 +61,13 @@ SlideToRest slide_to_rest(double v0, double mass, const FrictionPair& pair, doub
 // A round body (disk, ring, ball: any inertia about its centre) released on an incline.
 // Positive is down the slope; friction_force is the magnitude of friction, acting up the slope.
 struct DiskOnIncline {
-  bool rolls;                   // rolls without slipping when tan θ <= μs (1 + m R² / I)
+  bool rolls;                   // rolls without slipping when tan θ <= max(μs, μk)·(1 + m R² / I)
   double acceleration;          // of the centre, m/s²
   double angular_acceleration;  // rad/s², in the rolling-down sense
   double friction_force;        // N
 };
-// Requires mu_k <= mu_s: otherwise a disk that starts to slip would be stopped slipping at once,
-// and the model has no answer.
+// With mu_k above mu_s it grips up to max(mu_s, mu_k)·N, as the simulation's contacts do (a
+// contact pushed past mu_s·N but not mu_k·N is stopped slipping at once), and slips past that.
 DiskOnIncline disk_on_incline(double angle, double mass, double radius, double inertia, double mu_s, double mu_k,
                               double g);
 
@@ -91,7 +94,8 @@ struct StackedBlocks {
   // breakaway push the top block slips as soon as the bottom one moves.
   double max_push_together;
 };
-// Requires mu_k <= mu_s for both pairs (see disk_on_incline).
+// Requires mu_k <= mu_s for both pairs: with mu_k above mu_s a surface pushed past mu_s·N would
+// at once be held back harder, and which block then does what has no closed form here.
 StackedBlocks stacked_blocks(double top_mass, double bottom_mass, const FrictionPair& between,
                              const FrictionPair& ground, double push, double g);
 

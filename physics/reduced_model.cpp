@@ -204,10 +204,20 @@ class SlipClosedForm {
       shortest = 1.0 / (32.0 * -fast_);
     }
     const auto stopped = [&](double tau) { return direction * at(tau).v <= 0.0; };
+    // The speed can dip below zero and back between two scan points: a block that follows a
+    // fast hand, its spring swinging, touches v = 0 for a sliver of each swing. So where the
+    // speed turns from falling to rising within a scan step, its lowest point is found (by
+    // bisection on the slope's sign) and tested too.
+    const double nudge = 1e-6 * shortest;
+    const auto rising = [&](double tau) { return direction * (at(tau + nudge).v - at(tau).v) > 0.0; };
     double tau = 0.0;
     while (tau < tau_max) {
       const double next = std::min(tau + std::clamp(0.05 * tau, shortest, longest), tau_max);
       if (stopped(next)) return bisect(tau, next, stopped);
+      if (!rising(tau) && rising(next)) {
+        const double lowest = bisect(tau, next, rising);
+        if (stopped(lowest)) return bisect(tau, lowest, stopped);
+      }
       tau = next;
     }
     return infinity;
@@ -310,11 +320,14 @@ Trajectory solve_event_rk4(const OneDofBlock& block, double t_end, double h) {
   require_non_negative("solve_event_rk4", "t_end", t_end);
   require_step("solve_event_rk4", h, t_end);
   const double threshold = breakaway_threshold(block);
-  // Stuck, only the push matters: scan it at step h and bisect the step where it wins.
+  // Stuck, only the push matters: scan it and bisect the scan step where it wins. The push is
+  // linear in t (a constant force and a spring whose end moves steadily), so no crossing hides
+  // between two scan points, and a long stick is scanned in at most about 1000 steps of h or more.
   const auto stick = [&block, threshold, h](double t0, double x, double t_limit) -> Breakaway {
     const auto wins = [&](double t) { return std::abs(applied_force(block, t, x)) > threshold; };
+    const double scan = std::isfinite(t_limit) ? std::max(h, (t_limit - t0) / 1000.0) : h;
     for (double n = 1.0;; n += 1.0) {
-      const double before = t0 + (n - 1.0) * h, after = std::min(t0 + n * h, t_limit);
+      const double before = t0 + (n - 1.0) * scan, after = std::min(t0 + n * scan, t_limit);
       if (wins(after)) {
         const double t = bisect(before, after, wins);
         return {t, sign(applied_force(block, after, x))};

@@ -214,6 +214,14 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // friction, as the arrows and plots show it, is the limit.
     if (r.siblings == 0 && step.held > step.limit) r.friction_force *= step.limit / step.held;
   } else {
+    // With no friction at all nothing stops the sliding, so a reversal is the other body's doing
+    // (a driven plank's velocity changes between steps) and the contact slides on, the new way.
+    // Taken for a stop, its correction set the sliding to zero: a frictionless block on a shaken
+    // plank was dragged along at the plank's speed at every reversal.
+    if (breakaway_coefficient(pair) == 0.0) {
+      if (solved.group_sliding_end != 0.0) r.slip_direction = static_cast<float>(sign(solved.group_sliding_end));
+      return;
+    }
     const bool held = reached < pair.mu_k * (1.0 - stop_tolerance);
     const bool reversed = sign(solved.group_sliding_end) == -r.slip_direction;
     if (held || reversed) r.state = ContactState::sticking;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "physics/closed_forms.h"
 #include "physics/reduced_model.h"
@@ -77,6 +78,23 @@ TEST(ClosedForms, InclineSpeedAndDistanceMatchEventSolver) {
     for (const double t : {0.25, 1.0, 2.0}) {
       EXPECT_RELATIVE(incline_speed(angle, 0.3, c, mass, g, t), numeric.velocity(t), 1e-6) << "c " << c << " t " << t;
       EXPECT_RELATIVE(incline_distance(angle, 0.3, c, mass, g, t), numeric.position(t), 1e-6) << "c " << c << " t " << t;
+    }
+  }
+  // Quadratic drag b too (the incline lesson's b slider), alone and with c: from a b too small
+  // to matter (where the Riccati form would cancel) to one that holds the block near its
+  // terminal speed within milliseconds.
+  for (const auto& [c, b] : {std::pair{0.0, 1e-9}, std::pair{0.0, 0.7}, std::pair{0.8, 0.7}, std::pair{5.0, 30.0},
+                             std::pair{0.0, 900.0}}) {
+    const double mass = 2.0, angle = 0.6;
+    OneDofBlock block;
+    block.mass = mass;
+    block.normal_force = mass * g * std::cos(angle);
+    block.constant_force = mass * g * std::sin(angle);
+    block.pair = {0.5, 0.3, c, b};
+    const Trajectory numeric = solve_event_rk4(block, 2.0, 1e-5);
+    for (const double t : {0.25, 1.0, 2.0}) {
+      EXPECT_RELATIVE(incline_speed(angle, 0.3, c, b, mass, g, t), numeric.velocity(t), 1e-6) << "c " << c << " b " << b << " t " << t;
+      EXPECT_RELATIVE(incline_distance(angle, 0.3, c, b, mass, g, t), numeric.position(t), 1e-6) << "c " << c << " b " << b << " t " << t;
     }
   }
   // Steeper than atan(μs) but not than atan(μk): it cannot keep sliding.
@@ -371,7 +389,20 @@ TEST(ClosedFormsInput, NegativeCoefficientThrows) {
 
 TEST(ClosedFormsInput, KineticAboveStaticThrowsWhereStickSlipNeedsIt) {
   expect_invalid([] { spring_stick_slip(1.0, 50, 0.1, 0.4, 0.6, g); }, "mu_k", "[0, mu_s]");
-  expect_invalid([] { disk_on_incline(0.3, 1.0, 0.2, 0.02, 0.2, 0.3, g); }, "mu_k", "[0, mu_s]");
+}
+
+// A slider may put mu_k above mu_s (theory.disk_on_incline refused such a lesson's value): the
+// disk grips up to max(mu_s, mu_k)·N, the contacts' own rule, and slips against mu_k·N past it.
+TEST(ClosedForms, DiskOnInclineWithKineticAboveStaticGripsUpToTheLarger) {
+  const double mass = 1.0, radius = 0.2, inertia = 0.5 * mass * radius * radius;  // κ = 1/2
+  // Rolling needs friction κ/(1+κ)·m·g·sin θ = m·g·sin θ/3: at 0.3 rad that is 0.985 N against
+  // N = 9.37 N, more than mu_s = 0.05 holds but within mu_k = 0.2's 1.87 N.
+  const DiskOnIncline grips = disk_on_incline(0.3, mass, radius, inertia, 0.05, 0.2, g);
+  EXPECT_TRUE(grips.rolls);
+  EXPECT_RELATIVE(grips.acceleration, g * std::sin(0.3) / 1.5, 1e-12);
+  const DiskOnIncline slips = disk_on_incline(1.3, mass, radius, inertia, 0.05, 0.2, g);
+  EXPECT_FALSE(slips.rolls);
+  EXPECT_RELATIVE(slips.friction_force, 0.2 * mass * g * std::cos(1.3), 1e-12);
 }
 
 TEST(ClosedFormsInput, NonPositiveSizesThrow) {

@@ -900,6 +900,55 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   EXPECT_NEAR(r(10), stacked_blocks(1, 2, {0.3, 0.2, 0, 0}, {0.4, 0.3, 0, 0}, 30, g).top_acceleration, 1e-12);
 }
 
+// With no friction at all (mu_s = mu_k = 0) nothing can carry a block along a plank that is
+// shaken under it: the plank's velocity reverses between steps, and the contact slides on the
+// other way. Taken for a stop, that reversal had the listener zero the sliding, and the block
+// was dragged to the plank's speed at each reversal (wedge at a_x -4.3, a_x_omega 10, slid
+// 9.1 m where theory says 7.0).
+TEST(LessonRuntime, AFrictionlessBlockIsNotDraggedByAShakenPlank) {
+  ScriptFile script(with_heading(R"(
+pair { "ice", "metal", mu_s = 0, mu_k = 0 }
+local plank = box { "plank", material = "metal", width = 6, height = 0.1, x = 0, y = 0.5, kind = "kinematic" }
+drive { plank, position = { x = { swing = 0.05, omega = 10 }, y = 0.5 } }
+local block = box { "block", material = "ice", width = 0.4, height = 0.2, on = plank, at = 0 }
+probe { "block_vx", unit = "m/s", read = { block, "vx" } }
+probe { "plank_vx", unit = "m/s", read = { plank, "vx" } }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 2.0);  // three swings: the plank's velocity reverses six times, up to 0.5 m/s
+  double fastest_plank = 0.0;
+  for (const double v : lesson.scene().probe("plank_vx").history) fastest_plank = std::max(fastest_plank, std::abs(v));
+  ASSERT_GT(fastest_plank, 0.4);
+  for (const double v : lesson.scene().probe("block_vx").history) EXPECT_LT(std::abs(v), 1e-3);
+}
+
+// A slider may reach values a closed form has no answer for: theory.* then answers in words
+// (or by the contacts' own rule) instead of raising an error that stops the lesson.
+TEST(LessonRuntime, TheoryAnswersEveryValueASliderAllows) {
+  ScriptFile script(with_heading(R"(
+local r = {}
+r[1] = theory.disk_on_incline { angle = 20, mass = 1, radius = 0.1, mu_s = 0.05, mu_k = 0.3 }.rolls and 1 or 0
+r[2] = theory.stacked_blocks { top_mass = 1, bottom_mass = 2, push = 30,
+         between = { mu_s = 0.2, mu_k = 0.4 }, ground = { mu_s = 0.4, mu_k = 0.3 } }.no_closed_form and 1 or 0
+r[3] = theory.regularized_creep { angle = 40, mu_s = 0.5, epsilon = 0.05, step = 1 / 240 }.no_creep and 1 or 0
+r[4] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.2, mu_k = 0.5 }.no_closed_form and 1 or 0
+r[5] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.2, mu_k = 0.5, duration = 3 }.run.breakaways
+for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
+)"));
+  Lesson lesson(script.path());
+  lesson.step();
+  auto r = [&](int i) {
+    std::string name = "r";
+    name += std::to_string(i);
+    return probe_now(lesson, name);
+  };
+  EXPECT_EQ(r(1), 1.0);  // rolling needs 1.12 N of friction: more than mu_s·N holds, within mu_k·N
+  EXPECT_EQ(r(2), 1.0);
+  EXPECT_EQ(r(3), 1.0);
+  EXPECT_EQ(r(4), 1.0);
+  EXPECT_GE(r(5), 1.0);  // the run itself still answers: it breaks away at max(mu_s, mu_k)·N
+}
+
 const char* const parameter_script = R"(
 lesson { title = "parameters", question = "?" }
 local mass = parameter { "mass", 1.0, min = 0.1, max = 10, unit = "kg", text = "mass of the block" }

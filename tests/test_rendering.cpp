@@ -117,10 +117,24 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, Cont
   // The contact's mark, just below the friction arrow's shaft at the contact point.
   const std::vector<ContactMark> marks = contact_marks(at.scene());
   ASSERT_EQ(marks.size(), 1u);
+  // Read inside the 6 px disc, 4 px below the point: the pixel nearest that which shows either
+  // state's colour, since the disc's anti-aliased rim can fall on the sampled pixel (the point
+  // is a fraction of a pixel off the drawn centre). It must be the expected state's.
   const ImVec2 point = camera.to_screen(marks[0].point);
-  const std::uint8_t* mark = image.pixel(static_cast<int>(point.x), static_cast<int>(point.y) + 4);
   const ImU32 expected = state == ContactState::sticking ? colours.sticking : colours.slipping;
-  EXPECT_LE(distance(mark, expected), 8) << "the contact is not marked as " << (state == ContactState::sticking ? "sticking" : "slipping");
+  const ImU32 other = state == ContactState::sticking ? colours.slipping : colours.sticking;
+  int nearest = 1000, best = 255;
+  for (int dy = -3; dy <= 3; ++dy) {
+    for (int dx = -3; dx <= 3; ++dx) {
+      const std::uint8_t* pixel = image.pixel(static_cast<int>(point.x) + dx, static_cast<int>(point.y) + 4 + dy);
+      const int reach = dx * dx + dy * dy;
+      if (std::min(distance(pixel, expected), distance(pixel, other)) <= 8 && reach < nearest) {
+        nearest = reach;
+        best = distance(pixel, expected);
+      }
+    }
+  }
+  EXPECT_LE(best, 8) << "the contact is not marked as " << (state == ContactState::sticking ? "sticking" : "slipping");
 }
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "lessons/runtime/build.h"
 #include "physics/closed_forms.h"
+#include "physics/friction_laws.h"
 #include "physics/reduced_model.h"
 #include "physics/scenarios.h"
 #include "physics/wedge_model.h"
@@ -52,13 +54,14 @@ int incline_acceleration(lua_State* state) {
 
 int incline_motion(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "mass", "t", "g"});
+    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "b", "mass", "t", "g"});
     const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees, mu_k = fields.number("mu_k", "");
-    const double c = fields.number("c", "N·s/m", 0.0), mass = fields.number("mass", "kg");
+    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const double mass = fields.number("mass", "kg");
     const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s");
     lua_createtable(state, 0, 2);
-    set_number(state, "speed", theory::incline_speed(angle, mu_k, c, mass, g, t));
-    set_number(state, "distance", theory::incline_distance(angle, mu_k, c, mass, g, t));
+    set_number(state, "speed", theory::incline_speed(angle, mu_k, c, b, mass, g, t));
+    set_number(state, "distance", theory::incline_distance(angle, mu_k, c, b, mass, g, t));
     return 1;
   });
 }
@@ -87,18 +90,75 @@ int push_outcome(lua_State* state) {
 
 int spring_stick_slip(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.spring_stick_slip", {"mass", "k", "pull_speed", "mu_s", "mu_k", "g"});
-    const theory::StickSlip cycle = theory::spring_stick_slip(
-        fields.number("mass", "kg"), fields.number("k", "N/m"), fields.number("pull_speed", "m/s"),
-        fields.number("mu_s", ""), fields.number("mu_k", ""), fields.number("g", "m/s²", standard_gravity));
-    lua_createtable(state, 0, 7);
-    set_number(state, "breakaway_force", cycle.breakaway_force);
-    set_number(state, "restick_force", cycle.restick_force);
-    set_number(state, "stick_duration", cycle.stick_duration);
-    set_number(state, "slip_duration", cycle.slip_duration);
-    set_number(state, "period", cycle.period);
-    set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
-    set_number(state, "slip_distance", cycle.slip_distance);
+    Fields fields(state, 1, "theory.spring_stick_slip",
+                  {"mass", "k", "pull_speed", "mu_s", "mu_k", "c", "b", "duration", "g"});
+    const double mass = fields.number("mass", "kg"), k = fields.number("k", "N/m");
+    const double pull_speed = fields.number("pull_speed", "m/s"), mu_s = fields.number("mu_s", "");
+    const double mu_k = fields.number("mu_k", ""), g = fields.number("g", "m/s²", standard_gravity);
+    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 86400.0);
+    lua_createtable(state, 0, 8);
+    // The closed form's cycle, where it has one (no drag, mu_k <= mu_s).
+    if (c == 0.0 && b == 0.0 && mu_k <= mu_s) {
+      const theory::StickSlip cycle = theory::spring_stick_slip(mass, k, pull_speed, mu_s, mu_k, g);
+      set_number(state, "breakaway_force", cycle.breakaway_force);
+      set_number(state, "restick_force", cycle.restick_force);
+      set_number(state, "stick_duration", cycle.stick_duration);
+      set_number(state, "slip_duration", cycle.slip_duration);
+      set_number(state, "period", cycle.period);
+      set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
+      set_number(state, "slip_distance", cycle.slip_distance);
+    } else {
+      lua_pushstring(state, mu_k > mu_s ? "no periodic cycle: μk > μs" : "no closed form with drag c or b");
+      lua_setfield(state, -2, "no_closed_form");
+    }
+    // With a duration: the run itself from rest, by the exact reduced model (closed-form phases
+    // joined at events; with b, RK4 phases with their events bisected to 1e-13 s), read as a
+    // lesson reads its record: the mean spring force at the breakaways and at the re-sticks
+    // (a reversal, where the block stops and at once slides back, is both), and the mean time
+    // from one breakaway to the next. Drag (c, b) has no closed form here; this answers it.
+    if (duration > 0.0) {
+      OneDofBlock block;
+      block.mass = mass;
+      block.normal_force = mass * g;
+      block.pair = {mu_s, mu_k, c, b};
+      block.spring_k = k;
+      block.pull_speed = pull_speed;
+      // RK4's step: 200 a swing of the spring, and short against the drag's own time m/(c + 2b·v)
+      // (RK4 is stable only while h·(c + 2b·v)/m < 2.78), v at most the hand's speed and the
+      // lurch's, max(mu_s, mu_k)·g/ω.
+      const double swing = 2.0 * std::numbers::pi * std::sqrt(mass / k);
+      // (The lurch is slower still where the drag at that speed would outpull the spring's
+      // largest pull, max(mu_s, mu_k)·m·g plus what it takes to stop.)
+      const double largest = 2.0 * std::max(mu_s, mu_k) * mass * g;
+      double fastest = std::max(mu_s, mu_k) * g * swing / (2.0 * std::numbers::pi);
+      if (b > 0.0) fastest = std::min(fastest, std::sqrt(largest / b));
+      if (c > 0.0) fastest = std::min(fastest, largest / c);
+      fastest += pull_speed;
+      const double h = std::min({1e-3, swing / 200.0, duration / 16.0, 0.5 * mass / (c + 2.0 * b * fastest)});
+      if (b != 0.0 && duration / h > 2e7) throw InvalidInput("theory.spring_stick_slip: duration is over 20 million model steps");
+      const Trajectory run = b == 0.0 ? solve_exact(block, duration) : solve_event_rk4(block, duration, h);
+      int breakaways = 0, resticks = 0;
+      double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
+      for (const Event& event : run.events()) {
+        const double force = applied_force(block, event.t, event.x);
+        const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
+        if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
+        if (breaks) {
+          if (breakaways == 0) first = event.t, first_force = force;
+          last = event.t;
+          ++breakaways, breakaway_sum += force;
+        }
+      }
+      lua_createtable(state, 0, 6);
+      set_number(state, "breakaways", breakaways);
+      set_number(state, "resticks", resticks);
+      if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
+      if (breakaways > 0) set_number(state, "first_breakaway_force", first_force);
+      if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
+      if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
+      lua_setfield(state, -2, "run");
+    }
     return 1;
   });
 }
@@ -208,9 +268,18 @@ int driven_wheel(lua_State* state) {
 int stacked_blocks(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
-    const theory::StackedBlocks stack = theory::stacked_blocks(
-        fields.number("top_mass", "kg"), fields.number("bottom_mass", "kg"), nested_pair(state, fields, "between"),
-        nested_pair(state, fields, "ground"), fields.number("push", "N"), fields.number("g", "m/s²", standard_gravity));
+    const double top_mass = fields.number("top_mass", "kg"), bottom_mass = fields.number("bottom_mass", "kg");
+    const FrictionPair between = nested_pair(state, fields, "between"), ground = nested_pair(state, fields, "ground");
+    const double push = fields.number("push", "N"), g = fields.number("g", "m/s²", standard_gravity);
+    // A slider may put mu_k above mu_s; the closed form has no answer there, and says so in words
+    // (`no_closed_form`) rather than refusing the value.
+    if (between.mu_k > between.mu_s || ground.mu_k > ground.mu_s) {
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no closed form (μk > μs)");
+      lua_setfield(state, -2, "no_closed_form");
+      return 1;
+    }
+    const theory::StackedBlocks stack = theory::stacked_blocks(top_mass, bottom_mass, between, ground, push, g);
     lua_createtable(state, 0, 4);
     const char* regime = stack.regime == theory::StackRegime::at_rest    ? "at_rest"
                          : stack.regime == theory::StackRegime::together ? "together"
@@ -266,6 +335,71 @@ int regularized_run(lua_State* state) {
   });
 }
 
+// The regularized law's creep down a slope it should stick to, as a fixed step takes it: each
+// step the drag c, b acts exactly over the step on the speed the block brings (as the listener
+// applies it), the law's linear branch −μs·N·v/ε and gravity's pull explicitly, so the step's
+// speed v' = damped(v) + h·g·(sin θ − μs·cos θ·v/ε) and the creep is its fixed point. With no
+// drag that is ε·tan θ/μs at any step; with step 0, the continuous law's b v² + (μs·m·g·cos θ/ε
+// + c)·v = m·g·sin θ. `amplification` is dv'/dv there: the step settles onto the creep while
+// its size is below 1 (with no drag: while h < 2ε/(μs·g·cos θ)) and jitters for ever past it.
+// Where μs <= tan θ the linear branch cannot balance the slope: `no_creep` says so. With `duration`, the steps
+// from rest are taken too: `breaks_away` when the block ends faster than ε, and `settles` then
+// false whatever the amplification.
+int regularized_creep(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.regularized_creep",
+                  {"angle", "mu_s", "mu_k", "epsilon", "step", "c", "b", "mass", "duration", "g"});
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
+    const double mu_s = fields.number("mu_s", ""), epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    const double h = fields.number_in("step", "s", 0.0, 0.0, 1.0), mass = fields.number("mass", "kg", 1.0);
+    const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    const FrictionPair drag{0.0, 0.0, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    if (mu_s <= std::tan(angle)) {  // an answer in words, not a refusal
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no creep: μs ≤ tan θ, the law's linear branch cannot hold the slope");
+      lua_setfield(state, -2, "no_creep");
+      return 1;
+    }
+    const double pull = g * std::sin(angle), k = mu_s * g * std::cos(angle) / epsilon;  // per unit mass
+    // What the step lacks of a fixed point at v: rises with v (damped(v) rises slower than v).
+    const auto excess = [&](double v) {
+      if (h == 0.0) return (drag.c * v + drag.b * v * v) / mass - (pull - k * v);
+      return v - damped_velocity(v, mass, h, drag) - h * (pull - k * v);
+    };
+    double low = 0.0, high = epsilon;  // excess(0) <= 0 < excess(ε), as μs > tan θ
+    for (int i = 0; i < 200 && high - low > 1e-15 * epsilon; ++i) {
+      const double middle = 0.5 * (low + high);
+      (excess(middle) > 0.0 ? high : low) = middle;
+    }
+    const double creep = 0.5 * (low + high);
+    double amplification = 0.0;
+    if (h > 0.0) {
+      const double dv = 1e-6 * epsilon;
+      const double slope = (damped_velocity(creep + dv, mass, h, drag) - damped_velocity(std::max(creep - dv, 0.0), mass, h, drag)) /
+                           (creep + dv - std::max(creep - dv, 0.0));
+      amplification = slope - h * k;
+    }
+    // The steps themselves from rest, over `duration`, with the whole law (kinetic friction
+    // μk·N past ε): a step that overshoots ε (the first one does where h·g·sin θ > ε) lets a
+    // slope steeper than atan μk take the block away, whatever the creep's own stability.
+    const double mu_k = fields.number("mu_k", "", mu_s);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 3600.0);
+    double v = 0.0;
+    if (h > 0.0 && duration / h > 1e7) throw InvalidInput("theory.regularized_creep: duration / step is over 10 million steps");
+    for (double t = 0.0; h > 0.0 && t < duration - 0.5 * h; t += h) {
+      const double dry = std::abs(v) < epsilon ? -k * v : -mu_k * g * std::cos(angle) * (v > 0.0 ? 1.0 : -1.0);
+      v = damped_velocity(v, mass, h, drag) + h * (pull + dry);
+    }
+    lua_createtable(state, 0, 5);
+    set_number(state, "speed", creep);
+    set_number(state, "amplification", amplification);
+    set_flag(state, "breaks_away", v > epsilon);
+    set_number(state, "speed_at_end", v);
+    set_flag(state, "settles", std::abs(amplification) < 1.0 && v <= epsilon);
+    return 1;
+  });
+}
+
 int growing_push(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.growing_push", {"mass", "rate", "mu_s", "mu_k", "c", "b", "t", "g"});
@@ -290,7 +424,8 @@ int growing_push(lua_State* state) {
 int thrown_box(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
-                                                  "centre_height", "mu_k", "restitution", "g", "clearance", "step"});
+                                                  "centre_height", "mu_k", "c", "b", "restitution", "g", "clearance",
+                                                  "step"});
     const double width = fields.number("width", "m"), height = fields.number("height", "m");
     const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
     const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
@@ -299,6 +434,11 @@ int thrown_box(lua_State* state) {
     // Box2D's polygons touch when their cores are two skins apart.
     const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
     const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
+    // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
+    // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
+    // speed the box brings into the step it lands in, before that step's impact is solved
+    // (a contact born in a step has its drag at once). The same once here.
+    const FrictionPair drag{mu_k, mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
     const double inertia = mass * (width * width + height * height) / 12.0;
@@ -324,9 +464,24 @@ int thrown_box(lua_State* state) {
     const auto impact_on = [&](double rx, double ry, double late) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
       const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
-      return theory::corner_impact(mass, inertia, c * rx - s * ry, s * rx + c * ry - 0.5 * (clearance - sunk), speed,
-                                   -g * (landing.time + late), spin, mu_k, restitution);
+      const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
+      // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
+      // along the floor at that point feels.
+      double vx = speed, omega = spin;
+      if (step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
+        const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
+        const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
+        vx += impulse / mass;
+        omega -= py * impulse / inertia;
+      }
+      const double vy = -g * (landing.time + late);
+      // Drag strong enough to turn the corner up off the floor leaves the normal impulse
+      // nothing to stop: the step's drag is then the whole of the impact.
+      if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
+      return theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu_k, restitution);
     };
+    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
+    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
     // Landing flat, the face's two ends share the impact, and their loads shift to keep the box
     // from pitching (no lever arm: its spin is unchanged), unless friction's moment about the
     // front end is more than the weight of the impact can hold: then the front end takes it
@@ -344,7 +499,7 @@ int thrown_box(lua_State* state) {
         corner = "pitches over its front edge";
         hit_x = front_x, hit_y = front_y;
       } else {
-        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * landing.time, spin, mu_k, restitution);
+        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
       }
     } else {
       impact = impact_on(landing.corner_x, landing.corner_y, 0.0);
@@ -375,9 +530,11 @@ int thrown_box(lua_State* state) {
                                        : impact_on(landing.corner_x, landing.corner_y, step).omega;
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
-    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, speed, -g * flat.time, 0.0, mu_k,
-                                                             restitution);
-    const double slide = mu_k > 0.0 ? lands.vx * lands.vx / (2.0 * mu_k * g) : infinity;
+    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
+                                                             mu_k, restitution);
+    // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
+    // slows it, ever more slowly).
+    const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
     lua_createtable(state, 0, 14);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_angle", landing.angle / degrees);
@@ -392,8 +549,8 @@ int thrown_box(lua_State* state) {
     set_number(state, "vy_after", impact.vy);
     set_number(state, "locked_landing_time", flat.time);
     set_number(state, "locked_speed_after_landing", lands.vx);
-    set_number(state, "locked_distance", speed * flat.time + slide);
-    set_number(state, "locked_stop_time", flat.time + (mu_k > 0.0 ? lands.vx / (mu_k * g) : slide));
+    set_number(state, "locked_distance", speed * flat.time + slide.distance);
+    set_number(state, "locked_stop_time", flat.time + slide.time);
     return 1;
   });
 }
@@ -546,6 +703,7 @@ void register_theory_api(lua_State* state) {
                                 {"velocity_hack", velocity_hack},
                                 {"wedge", wedge},
                                 {"regularized_run", regularized_run},
+                                {"regularized_creep", regularized_creep},
                                 {nullptr, nullptr}};
   luaL_newlib(state, functions);
   lua_setglobal(state, "theory");
