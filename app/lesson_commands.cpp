@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -148,12 +147,7 @@ class Draws {
   std::uint64_t state_;
 };
 
-// The shortest text that reads back as the same double, as --set takes it.
-std::string exact_text(double value) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  return std::string(text, end);
-}
+using validation::exact_text;  // the shortest text that reads back as the same double, as --set takes it
 
 // A value for one slider in setting `index`: the first setting puts every slider at its
 // minimum, the second at its maximum; after that each slider is at an end one time in five

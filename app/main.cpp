@@ -28,6 +28,8 @@ const char* const usage =
     "                                            run a lesson (a name from list, or a .lua file)\n"
     "       node frictionlab-cli.js check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
     "                                            run lessons and check their expectations; exit 1 if any fails\n"
+    "       node frictionlab-cli.js check LESSON --random N [--seed S]\n"
+    "                                            the lesson at N settings drawn inside its sliders' ranges\n"
     "       node frictionlab-cli.js demo         theory beside simulation for every situation\n"
     "       node frictionlab-cli.js link FILE.setup [--page ADDRESS] | link LINK\n"
     "                                            a setup file as a link to the web page, or back\n"

@@ -1,9 +1,13 @@
 #include "physics/validation.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 namespace frictionlab::validation {
@@ -53,6 +57,34 @@ std::optional<double> parse_decimal(const std::string& text, std::string& why) {
     return std::nullopt;
   }
   return value;
+}
+
+std::string exact_text(double value) {
+  char text[32];
+#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+#else
+  // emscripten's libc++ has no floating-point to_chars: what it gives, worked out by hand. The
+  // fewest significant digits that read back as the same double, written plainly ("50",
+  // "0.0025") unless scientific notation is shorter ("1e+20"), as to_chars chooses.
+  if (!std::isfinite(value)) {
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+  }
+  int digits = 1;
+  for (; digits < 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*e", digits - 1, value);
+    if (std::strtod(text, nullptr) == value) break;
+  }
+  std::snprintf(text, sizeof text, "%.*e", digits - 1, value);
+  const std::string scientific = text;
+  const int exponent = std::atoi(std::strchr(text, 'e') + 1);
+  std::snprintf(text, sizeof text, "%.*f", std::max(0, digits - 1 - exponent), value);
+  const std::string plain = text;
+  // %e drops a mantissa's trailing point but to_chars writes "1e+20" for one digit: the same.
+  return plain.size() <= scientific.size() ? plain : scientific;
+#endif
 }
 
 }  // namespace frictionlab::validation

@@ -50,7 +50,11 @@ void Classroom::menu_bar() {
     const std::vector<UserLesson> own = user_lessons();
     if (!own.empty()) {
       ImGui::Separator();
-      ImGui::TextDisabled("Your lessons, in %s", user_lessons_folder().c_str());
+      if (script_paths_) {
+        ImGui::TextDisabled("Your lessons, in %s", user_lessons_folder().c_str());
+      } else {
+        ImGui::TextDisabled("Your lessons, kept in this browser");
+      }
       for (const UserLesson& lesson : own) {
         const bool current = playback_->lesson().path() == lesson.path;
         if (ImGui::MenuItem(lesson.name.c_str(), nullptr, current, may_switch)) status_ = open(lesson.path);
@@ -220,9 +224,15 @@ void Classroom::help_panel() {
         "bar takes it back with the run), distance marks along the floor or the slope from where the main body stood at t = 0, "
         "the main body's speed, and its weight split along and across a slope (m\u00b7g\u00b7sin \u03b8, "
         "m\u00b7g\u00b7cos \u03b8). They stay on for the next class.");
-    ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
-                            ". Settings are kept in " + settings_folder() + ".")
-                               .c_str());
+    if (script_paths_) {
+      ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder_).lexically_normal().string() +
+                              ". Settings are kept in " + settings_folder() + ".")
+                                 .c_str());
+    } else {
+      // The web page: its files are the browser's, not folders anyone opens.
+      ImGui::TextUnformatted("Screenshots and exports arrive as downloads. Your lessons and these settings are kept in this "
+                             "browser.");
+    }
     ImGui::PopTextWrapPos();
   }
   ImGui::End();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lessons/runtime/lesson.h"
+#include "physics/validation.h"
 #include "ui/camera.h"
 #include "ui/force_gauge.h"
 #include "ui/frame.h"
@@ -143,8 +144,8 @@ class Playback {
   GaugeRecord gauge_;
 };
 
-// A number as the shortest text that reads back as the same double: "0.45", "1e-05".
-std::string exact_text(double value);
+// A number as the shortest text that reads back as the same double (physics/validation.h).
+using validation::exact_text;
 // The value of a parameter as text that sets it again exactly: "0.45", "plastic".
 std::string parameter_text(const lessons::Parameter& parameter);
 

@@ -216,7 +216,9 @@ std::string setup_link(const std::string& text, const std::string& page) {
     const auto byte = static_cast<unsigned char>(character);
     // encodeURIComponent's unreserved characters stay as they are; every other byte of the
     // UTF-8 text is %XX.
-    if (std::isalnum(byte) || std::strchr("-_.!~*'()", byte) != nullptr) {
+    const bool unreserved = (byte >= 'A' && byte <= 'Z') || (byte >= 'a' && byte <= 'z') || (byte >= '0' && byte <= '9') ||
+                            (byte != 0 && std::strchr("-_.!~*'()", byte) != nullptr);
+    if (unreserved) {
       link += character;
     } else {
       link += '%';

@@ -27,6 +27,7 @@ namespace {
 // touch but never moves the pointer to it, so the page reads touches itself.
 struct Finger {
   bool down = false;
+  bool pressed = false;   // touched since the last frame: down in the next one, however quick the tap
   bool pointing = false;  // the last pointer was a finger: keep it where it was lifted
   ImVec2 at;
   int id = -1;
@@ -95,7 +96,7 @@ EM_BOOL on_touch(int type, const EmscriptenTouchEvent* event, void*) {
     if (touch.identifier != finger.id) continue;  // one finger is the mouse; a second is ignored
     finger.at = ImVec2(static_cast<float>(touch.targetX * ratio), static_cast<float>(touch.targetY * ratio));
     finger.pointing = true;
-    if (type == EMSCRIPTEN_EVENT_TOUCHSTART) finger.down = true;
+    if (type == EMSCRIPTEN_EVENT_TOUCHSTART) finger.down = finger.pressed = true;
     if (type == EMSCRIPTEN_EVENT_TOUCHEND || type == EMSCRIPTEN_EVENT_TOUCHCANCEL) finger.down = false;
   }
   wake();
@@ -132,7 +133,8 @@ void draw_frame() {
   io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
   if (p.finger.pointing) {
     io.MousePos = p.finger.at;
-    io.MouseDown[0] = p.finger.down;
+    io.MouseDown[0] = p.finger.down || p.finger.pressed;
+    p.finger.pressed = false;  // a tap lifted before this frame is let go in the next
   }
   p.taps.hold(io);
   p.host->begin_frame();
@@ -161,8 +163,9 @@ void draw_frame() {
   }
   offer_downloads();
 
-  // Projector mode's full screen is the browser's: asked for within the key's or button's
-  // event (browsers allow it only then), left with Esc as well.
+  // Full screen is the browser's. A key asks for it here, in the frame after the key's event:
+  // browsers allow it for a few seconds after a key or a click, and refuse it otherwise (then
+  // fullscreenchange never comes and the wish is dropped, as the page's message says).
   ui::WindowSettings& settings = classroom.window_settings();
   if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
   if (settings.full_screen != p.full_screen) {
@@ -242,10 +245,11 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
                                  [](int type, const EmscriptenUiEvent*, void*) { return on_any_event(type, nullptr, nullptr); });
   emscripten_set_fullscreenchange_callback(EMSCRIPTEN_EVENT_TARGET_DOCUMENT, nullptr, EM_TRUE,
                                            [](int type, const EmscriptenFullscreenChangeEvent* change, void*) {
-                                             // Esc leaves the browser's full screen without asking us.
-                                             if (page != nullptr && !change->isFullscreen) {
-                                               page->classroom->window_settings().full_screen = false;
-                                               page->full_screen = false;
+                                             // The browser's full screen, however it came or went (Esc,
+                                             // the browser's own F11, the page's button), is the window's.
+                                             if (page != nullptr) {
+                                               page->classroom->window_settings().full_screen = change->isFullscreen;
+                                               page->full_screen = change->isFullscreen;
                                              }
                                              return on_any_event(type, nullptr, nullptr);
                                            });

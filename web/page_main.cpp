@@ -72,6 +72,8 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   const std::string folder = ui::settings_folder();
   if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
   if (projector) options.window.projector = true;
+  // Full screen cannot be restored: a browser grants it only right after a key or a click.
+  options.window.full_screen = false;
   options.output_folder = web::downloads_folder;
   options.script_paths = false;
   try {

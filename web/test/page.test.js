@@ -365,6 +365,26 @@ test('the canvas follows the window and draws at the screen\'s pixel density', a
   await settled(page);
   const resized = await page.$eval('#canvas', (element) => [element.clientWidth, element.width]);
   assert.equal(resized[1], resized[0], 'the canvas did not follow the window');
+  // Whatever the size was, the canvas fits the window, below the bar: the Play bar at its
+  // bottom stays on screen (a teacher's trial lost it after a resize and after the editor).
+  const fits = () => page.evaluate(() => {
+    const canvas = document.getElementById('canvas').getBoundingClientRect();
+    const bar = document.getElementById('bar').getBoundingClientRect();
+    return canvas.top >= bar.bottom - 0.5 && canvas.bottom <= innerHeight + 0.5 && canvas.height >= innerHeight - bar.height - 1;
+  });
+  assert.ok(await fits(), 'after shrinking, the canvas does not fit the window');
+  await page.setViewport({ width: 1920, height: 1080, deviceScaleFactor: 1 });
+  await settled(page);
+  assert.ok(await fits(), 'after growing, the canvas does not fit the window');
+  await page.click('#edit');
+  await settled(page);
+  await page.click('#close');
+  await settled(page);
+  assert.ok(await fits(), 'after the editor opened and closed, the canvas does not fit the window');
+  await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: 1 });
+  await settled(page);
+  assert.ok(await fits(), 'at 1366x768 the canvas does not fit the window');
+  assert.ok(await page.$eval('#projector', (button) => button.getBoundingClientRect().bottom > 0), 'the bar is out of sight');
   await page.close();
 });
 
