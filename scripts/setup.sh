@@ -33,16 +33,7 @@ fi
 # and its sanitizer and fuzzer runtimes.
 if [[ ${FRICTIONLAB_FUZZ:-0} == 1 ]]; then packages+=(clang libclang-rt-14-dev); fi
 
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}"
-  if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+scripts/install_missing.sh setup "${packages[@]}"
 
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" > /dev/null
 # On two cores a first build takes about 3 minutes for the program alone, about 10 with the tests.

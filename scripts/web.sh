@@ -14,16 +14,7 @@ build_dir="${1:-build-web}"
 shift || true
 
 packages=(emscripten node-acorn nodejs dpkg-dev cmake make fonts-dejavu-core libstb-dev pkg-config xz-utils)
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if ((${#missing[@]})); then
-  echo "web: installing ${missing[*]}"
-  if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+scripts/install_missing.sh web "${packages[@]}"
 
 # Debian's source packages, once per build folder. The private apt state lists the same
 # archives as the machine's own sources, for source packages (deb-src).

@@ -13,16 +13,7 @@ packages=(chromium fonts-dejavu-core)
 # node and npm: Debian's nodejs and npm, unless a node with its npm is here already (NodeSource's
 # nodejs brings both, and Debian's npm would not install beside it).
 if ! command -v node > /dev/null || ! command -v npm > /dev/null; then packages+=(nodejs npm); fi
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if ((${#missing[@]})); then
-  echo "web_test: installing ${missing[*]}"
-  if [[ $(id -u) -eq 0 ]]; then sudo=(); else sudo=(sudo); fi
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+scripts/install_missing.sh web_test "${packages[@]}"
 
 scripts/web.sh build-web -DFRICTIONLAB_WERROR=ON -DFRICTIONLAB_WEB_TESTS=ON
 # The GoogleTest suites that need no window, in WebAssembly under node.

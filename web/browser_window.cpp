@@ -194,6 +194,7 @@ void frame_loop() {
 }  // namespace
 
 long frames_drawn() { return page == nullptr ? 0 : page->drawn; }
+bool sleeping() { return page != nullptr && !page->looping; }
 
 void run_page(ui::Classroom& classroom, const PageRun& run) {
   if (glfwInit() == GLFW_FALSE) throw std::runtime_error("the browser offers no canvas to draw on");
@@ -264,4 +265,5 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
 extern "C" {
 EMSCRIPTEN_KEEPALIVE void frictionlab_wake() { frictionlab::web::wake(); }
 EMSCRIPTEN_KEEPALIVE long frictionlab_frames_drawn() { return frictionlab::web::frames_drawn(); }
+EMSCRIPTEN_KEEPALIVE int frictionlab_sleeping() { return frictionlab::web::sleeping() ? 1 : 0; }
 }

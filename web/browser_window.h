@@ -20,6 +20,8 @@ void run_page(ui::Classroom& classroom, const PageRun& run);
 
 // The loop's counts, for the page's tests: frames drawn since the page opened.
 long frames_drawn();
+// Whether the loop is asleep: nothing can change until input wakes it.
+bool sleeping();
 
 }  // namespace frictionlab::web
 

@@ -77,14 +77,13 @@ const call = (page, name, ...args) => page.evaluate((name, args) =>
                args.map((a) => typeof a), args), name, args);
 const number = (page, name) => page.evaluate((name) => Module['_' + name](), name);
 
-// Waits until the page's loop has gone to sleep: nothing moving, no input being settled.
+// Waits until the page's loop has gone to sleep (nothing moving, no input being settled), as
+// the page itself says, however slowly this machine draws.
 async function settled(page) {
-  let last = -1;
-  for (let i = 0; i < 100; ++i) {
-    const drawn = await number(page, 'frictionlab_frames_drawn');
-    if (drawn === last) return drawn;
-    last = drawn;
-    await new Promise((resolve) => setTimeout(resolve, 150));
+  await frame();  // input just sent wakes the loop in its own event; let it
+  for (let i = 0; i < 600; ++i) {
+    if (await number(page, 'frictionlab_sleeping')) return number(page, 'frictionlab_frames_drawn');
+    await new Promise((resolve) => setTimeout(resolve, 50));
   }
   throw new Error('the page never stopped drawing');
 }
