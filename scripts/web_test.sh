@@ -23,7 +23,10 @@ mkdir -p "$build/page-test"
 cp web/test/package.json "$build/page-test/package.json"
 (cd "$build/page-test" && npm install --no-audit --no-fund --loglevel=error > npm.log 2>&1) ||
   { cat "$build/page-test/npm.log"; echo "web_test: npm could not install puppeteer-core" >&2; exit 1; }
+# One test file at a time where node can be told so (20 and later; Debian 12's node 18 cannot).
+one_at_a_time=()
+if node --help | grep -- --test-concurrency > /dev/null; then one_at_a_time=(--test-concurrency=1); fi
 rm -rf "$build/page-shots"
 mkdir -p "$build/page-shots"
-FRICTIONLAB_WEB_BUILD="$build" FRICTIONLAB_PAGE_SHOTS="$build/page-shots" FRICTIONLAB_NATIVE_BUILD="${native_build:+$PWD/$native_build}" \
-  NODE_PATH="$build/page-test/node_modules" node --test --test-concurrency=1 web/test/
+FRICTIONLAB_WEB_BUILD="$build" FRICTIONLAB_PAGE_SHOTS="$build/page-shots" FRICTIONLAB_NATIVE_BUILD="${native_build:+$(realpath "$native_build")}" \
+  NODE_PATH="$build/page-test/node_modules" node --test "${one_at_a_time[@]}" web/test/

@@ -42,6 +42,8 @@ struct Page {
   Finger finger;
   double last = 0.0;
   int settle_frames = 3;  // frames still to draw after the last input, for hover and focus
+  ImVec2 drawn_size;      // the display the last frame was laid out for
+  float drawn_scale = 0.0f;
   bool looping = true;
   long drawn = 0;
   std::string shown_title;
@@ -125,7 +127,16 @@ void draw_frame() {
   if (canvas_width != width || canvas_height != height) emscripten_set_canvas_element_size("#canvas", width, height);
 
   const ImVec2 display(static_cast<float>(width), static_cast<float>(height));
-  const ui::Fonts& fonts = p.host->prepare(classroom.ui_scale(display), classroom.window_settings().theme);
+  const float scale = classroom.ui_scale(display);
+  // A new size or text scale (a resize, projector mode, another screen) moves every panel, and
+  // ImGui's windows take a few frames to find their sizes again (scrollbars come and go): a
+  // page that slept after three frames showed stray scrollbars until the next input.
+  if (display.x != p.drawn_size.x || display.y != p.drawn_size.y || scale != p.drawn_scale) {
+    p.settle_frames = std::max(p.settle_frames, 10);
+    p.drawn_size = display;
+    p.drawn_scale = scale;
+  }
+  const ui::Fonts& fonts = p.host->prepare(scale, classroom.window_settings().theme);
   ImGui_ImplGlfw_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
   // The canvas's own pixels are the display: GLFW's pointer is in them already.
@@ -184,7 +195,7 @@ void draw_frame() {
 void frame_loop() {
   Page& p = *page;
   draw_frame();
-  p.settle_frames = p.classroom->idle() ? std::max(0, p.settle_frames - 1) : 3;
+  p.settle_frames = p.classroom->idle() ? std::max(0, p.settle_frames - 1) : std::max(p.settle_frames, 3);
   if (p.settle_frames == 0) {
     p.looping = false;
     emscripten_pause_main_loop();

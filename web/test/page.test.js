@@ -181,16 +181,21 @@ test('push with predictions: a slider dragged, a value typed, a prediction, play
   // Type an exact value: push_rate 5 N/s.
   await click(page, 'push_rate value');
   await page.keyboard.down('Control');
+  await frame();
   await page.keyboard.press('a');
+  await frame();
   await page.keyboard.up('Control');
-  await page.keyboard.type('5');
+  await frame();
+  await page.keyboard.type('5', { delay: 50 });
+  await frame();
   await page.keyboard.press('Enter');
   await settled(page);
   assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '5');
   // The class predicts the breakaway push before Play; the theory stays hidden until revealed.
   assert.equal(await number(page, 'frictionlab_theory_hidden'), 1);
   await click(page, 'prediction breakaway push');
-  await page.keyboard.type('39');
+  await page.keyboard.type('39', { delay: 50 });
+  await frame();
   await page.keyboard.press('Enter');
   await settled(page);
   await click(page, 'play', false);
