@@ -22,6 +22,13 @@ constexpr double g = standard_gravity;
 constexpr double degrees = std::numbers::pi / 180.0;
 
 double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
+// Probe "r<i>" now, for scripts that list their answers as r[1], r[2]...
+// Appended rather than "r" + to_string(i): GCC 12 warns falsely on that (-Wrestrict, PR 105329).
+double numbered_probe_now(const Lesson& lesson, int i) {
+  std::string name = "r";
+  name += std::to_string(i);
+  return probe_now(lesson, name);
+}
 
 TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
   ScriptFile script(R"(
@@ -881,12 +888,7 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
 )"));
   Lesson lesson(script.path());
   lesson.step();
-  // Appended rather than "r" + to_string(i): GCC 12 warns falsely on that (-Wrestrict, PR 105329).
-  auto r = [&](int i) {
-    std::string name = "r";
-    name += std::to_string(i);
-    return probe_now(lesson, name);
-  };
+  auto r = [&](int i) { return numbered_probe_now(lesson, i); };
   using namespace theory;
   EXPECT_NEAR(r(1), 45.0, 1e-12);
   EXPECT_NEAR(r(2), incline_sliding_acceleration(30 * degrees, 0.2, g), 1e-12);
@@ -937,11 +939,7 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
 )"));
   Lesson lesson(script.path());
   lesson.step();
-  auto r = [&](int i) {
-    std::string name = "r";
-    name += std::to_string(i);
-    return probe_now(lesson, name);
-  };
+  auto r = [&](int i) { return numbered_probe_now(lesson, i); };
   EXPECT_EQ(r(1), 1.0);  // rolling needs 1.12 N of friction: more than mu_s·N holds, within mu_k·N
   EXPECT_EQ(r(2), 1.0);
   EXPECT_EQ(r(3), 1.0);

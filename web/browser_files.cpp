@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <system_error>
+#include <vector>
 
 namespace frictionlab::web {
 
@@ -14,12 +15,16 @@ void keep_home_folder() {
 
 void offer_downloads() {
   namespace fs = std::filesystem;
+  // Listed first, handed over and removed after: removing entries while the folder is being
+  // read leaves what the iterator sees next unspecified.
   std::error_code error;
+  std::vector<fs::path> files;
   for (fs::directory_iterator file(downloads_folder, error), end; !error && file != end; file.increment(error)) {
-    if (!file->is_regular_file(error)) continue;
-    const std::string path = file->path().string();
-    EM_ASM({ frictionlabPage.download(UTF8ToString($0)); }, path.c_str());
-    fs::remove(file->path(), error);
+    if (file->is_regular_file(error)) files.push_back(file->path());
+  }
+  for (const fs::path& file : files) {
+    EM_ASM({ frictionlabPage.download(UTF8ToString($0)); }, file.string().c_str());
+    fs::remove(file, error);
   }
 }
 
