@@ -164,6 +164,21 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_setup(const char* path) {
   return hand_over(message);
 }
 
+// A link followed in an open page (a teacher pastes one into the address bar): its lesson as
+// it opens, with the script's own values, no predictions and the theory hidden, as loading the
+// page from the link would; not a reload that keeps the values of the lesson before.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_link_lesson(const char* name_or_path) {
+  const std::string message = classroom->open(name_or_path);
+  frictionlab_wake();
+  return hand_over(message);
+}
+
+// A link's `at`: the run played to that time, as when the page opens from the link.
+EMSCRIPTEN_KEEPALIVE void frictionlab_run_to(double seconds) {
+  if (std::isfinite(seconds) && seconds > 0.0) classroom->run_to(std::min(seconds, 3600.0));
+  frictionlab_wake();
+}
+
 // The page's Projector button: the larger text of projector mode, on or off.
 EMSCRIPTEN_KEEPALIVE void frictionlab_set_projector(int on) {
   classroom->window_settings().projector = on != 0;

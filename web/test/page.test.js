@@ -284,15 +284,49 @@ test('a setup link opens a mystery, and a finger pulls the block through the for
   await page.close();
 });
 
+// A teacher pastes a link into the address bar of a page already open: the page follows it
+// as if it had been opened from it (a trial found the lesson's old values, predictions and
+// text size kept, and the link's projector=1 ignored).
+test('a link followed in an open page opens its lesson fresh, in projector mode, at its time', async () => {
+  const setup = '# FrictionLab setup\nlesson push\nset mass = 10\nset push_rate = 0.2\n';
+  const page = await openPage(site + '#setup=' + encodeURIComponent(setup));
+  await closeHelp(page);
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '10');
+  await page.evaluate(() => { location.hash = '#lesson=push&projector=1&at=0.5'; });
+  await page.waitForFunction(() => Module._frictionlab_projector() === 1, { timeout: 10000 });
+  await settled(page);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /push\.lua$/);
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '1', 'the lesson kept the values from before the link');
+  assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '2');
+  assert.ok(Math.abs((await number(page, 'frictionlab_time')) - 0.5) < 0.01, 'the link\'s time was not played to');
+  assert.equal(await page.$eval('#message', (message) => message.textContent), 'Opened the link.');
+  await page.evaluate(() => { location.hash = '#lesson=incline'; });
+  await page.waitForFunction(() => Module._frictionlab_projector() === 0, { timeout: 10000 });
+  await settled(page);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /incline\.lua$/);
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
 test('the page in one file opens from file:// with no server', async () => {
   const single = path.join(build, 'frictionlab.html');
   const bytes = fs.statSync(single).size;
   console.log(`# frictionlab.html is ${(bytes / 1e6).toFixed(2)} MB`);
-  const page = await openPage('file://' + single + '#lesson=incline');
+  const page = await openPage('file://' + single + '#lesson=incline', { width: 1366, height: 768 });
   console.log(`# first frame from file:// ${page.firstFrameMs} ms after navigation`);
   assert.match(await call(page, 'frictionlab_lesson_path'), /incline\.lua$/);
   await closeHelp(page);
   await shoot(page, 'single_file_incline');
+  // Copy link from a file says more (the link names this computer's file): a message that
+  // long once widened the page past a 1366-pixel window and pushed the classroom's right edge,
+  // its value boxes and the theory's measured column, off screen.
+  await page.click('#share');
+  await settled(page);
+  assert.match(await page.$eval('#message', (message) => message.textContent), /names this file on this computer/);
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth &&
+                                      document.getElementById('canvas').getBoundingClientRect().right <= innerWidth + 0.5),
+            'the bar\'s message pushed the canvas past the window\'s right edge');
+  await shoot(page, 'single_file_copy_link');
   assert.deepEqual(page.problems, []);
   await page.close();
 });
@@ -389,6 +423,31 @@ test('the canvas follows the window and draws at the screen\'s pixel density', a
   await settled(page);
   assert.ok(await fits(), 'at 1366x768 the canvas does not fit the window');
   assert.ok(await page.$eval('#projector', (button) => button.getBoundingClientRect().bottom > 0), 'the bar is out of sight');
+  await page.close();
+});
+
+// The Projector button: the browser's full screen and projector mode, the classroom filling
+// the whole screen (a teacher's trial found the canvas 1 pixel high once the bar was hidden).
+test('the Projector button fills the screen with the classroom, and leaving full screen ends it', async () => {
+  const page = await openPage(site + '#lesson=push');
+  await closeHelp(page);
+  await page.click('#projector');
+  await page.waitForFunction(() => document.fullscreenElement !== null, { timeout: 10000 });
+  await settled(page);
+  assert.equal(await number(page, 'frictionlab_projector'), 1, 'the button did not turn projector mode on');
+  const box = await page.evaluate(() => {
+    const canvas = document.getElementById('canvas');
+    const rect = canvas.getBoundingClientRect();
+    return { top: rect.top, height: rect.height, pixels: canvas.height, window: innerHeight };
+  });
+  assert.ok(box.top <= 0.5 && box.height >= box.window - 1, `in full screen the canvas is ${box.height} px high at ${box.top}, the screen ${box.window}`);
+  assert.ok(box.pixels >= box.window - 1, `the canvas draws only ${box.pixels} rows`);
+  await page.screenshot({ path: path.join(shots, 'page_projector_button.png') });
+  await page.evaluate(() => document.exitFullscreen());
+  await page.waitForFunction(() => document.fullscreenElement === null, { timeout: 10000 });
+  await settled(page);
+  assert.equal(await number(page, 'frictionlab_projector'), 0, 'leaving full screen kept projector mode');
+  assert.ok(await page.$eval('#projector', (button) => button.getBoundingClientRect().height > 0), 'the bar did not come back');
   await page.close();
 });
 
