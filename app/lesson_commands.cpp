@@ -185,9 +185,10 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
                           const StepSettings& settings, const std::vector<std::string>& step_options, int count,
                           std::uint64_t seed, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(name);
+  const lessons::ScriptText script{path, lessons::read_script(path)};
   std::vector<lessons::Parameter> sliders;
   {
-    const Lesson defaults(path, fixed, settings);  // the sliders as the script declares them
+    const Lesson defaults(script, fixed, settings);  // the sliders as the script declares them
     for (const lessons::Parameter& parameter : defaults.parameters()) {
       if (fixed.count(parameter.name) == 0) sliders.push_back(parameter);
     }
@@ -205,7 +206,7 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
     for (const std::string& option : step_options) command.append(" ").append(shell_word(option));
     std::vector<std::string> missed;
     try {
-      Lesson lesson(path, values, settings);
+      Lesson lesson(script, values, settings);
       require_record_fits(lesson.duration(), lesson.settings().hz, lesson.scene().probes().size(), "lower --hz");
       run_for(lesson, lesson.duration(), nullptr);
       for (const lessons::ExpectationResult& row : lesson.expectations()) {

@@ -140,11 +140,20 @@ struct View {
 
 struct LessonBuild;  // one run of the script: its sandbox, scene and declarations
 
+// A lesson script's text and the path it was read from (its messages name the path).
+struct ScriptText {
+  std::string path;
+  std::string source;
+};
+
 class Lesson {
  public:
   // Loads and builds the script at `path`. `overrides` are --set NAME=VALUE pairs. Throws
   // ScriptError (path:line: message) or InvalidInput (a bad setting or --set).
   Lesson(std::string path, std::map<std::string, std::string> overrides = {}, StepSettings settings = {});
+  // The same from a script already read: many runs of one script (check --random) read it
+  // once, and all of them run the same text even if the file changes meanwhile.
+  Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings);
   ~Lesson();
   Lesson(const Lesson&) = delete;
   Lesson& operator=(const Lesson&) = delete;
