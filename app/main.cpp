@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
 #if defined(__EMSCRIPTEN__)
   // emscripten starts every program with a umask of 0777, so a file it writes (run --csv) would
-  // be readable by nobody: take node's own, the user's.
-  ::umask(static_cast<mode_t>(EM_ASM_INT({ return process.umask(); })));
+  // be readable by nobody: take node's own, the user's (in a browser page, the usual 022).
+  ::umask(static_cast<mode_t>(EM_ASM_INT({ return globalThis.process && process.umask ? process.umask() : 18; })));
 #endif
   try {
     frictionlab::use_installed_lessons();
