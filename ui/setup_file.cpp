@@ -341,7 +341,10 @@ std::string setup_lesson_path(const PreparedSetup& setup, const std::string& set
   const fs::path script(setup.lesson);
   try {
     if (a_name) return lessons::resolve_lesson(setup.lesson);
-    return lessons::resolve_lesson(script.is_absolute() ? script.string() : (fs::path(setup_path).parent_path() / script).string());
+    // Without "folder/../": the window, its Lesson menu and the page's editor know a script by
+    // its plain path (the page's links sit in /link, its student's lessons in the home folder).
+    const fs::path from_setup = script.is_absolute() ? script : fs::path(setup_path).parent_path() / script;
+    return lessons::resolve_lesson(from_setup.lexically_normal().string());
   } catch (const InvalidInput& error) {
     At{setup_path, setup.lesson_line}.fail(error.what());
   }

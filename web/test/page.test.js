@@ -254,6 +254,8 @@ test('a student edits push into a mistake (message and line shown), back, and fi
   await page.waitForFunction(() => typeof Module !== 'undefined' && Module.calledRun && Module._frictionlab_frames_drawn() > 0);
   const kept = '/home/web_user/.local/share/frictionlab/lessons/my_push.lua';
   assert.equal(await page.evaluate((file) => FS.analyzePath(file).exists, kept), true, 'the student\'s lesson is gone after a reload');
+  // The page's address kept the window: the student's lesson runs again, by its own path.
+  assert.equal(await call(page, 'frictionlab_lesson_path'), kept);
   assert.equal(await call(page, 'frictionlab_open', kept), '');
   assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '2.5');
   assert.deepEqual(page.problems, []);
