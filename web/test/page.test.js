@@ -337,6 +337,7 @@ test('a failed Apply keeps the last good version as the student\'s lesson and th
   await page.waitForSelector('#mistake.shown');
   assert.equal(await fileText(page, userLessons + '/my_push.lua'), null, 'a lesson that never worked is in Your lessons');
   assert.equal(await fileText(page, drafts + '/my_push.lua'), broken);
+  assert.match(await page.$eval('#editing-note', (element) => element.textContent), /joins Your lessons once a version of it works/);
   // A good version, then a broken one: the lesson stays the good one.
   const good = original.replace('parameter { "mass", 1.0,', 'parameter { "mass", 2.5,');
   await setSource(page, good);
@@ -354,7 +355,8 @@ test('a failed Apply keeps the last good version as the student\'s lesson and th
   await page.waitForSelector('#mistake.shown');
   assert.equal(await fileText(page, userLessons + '/my_push.lua'), good, 'the broken text replaced the student\'s lesson');
   assert.equal(await fileText(page, drafts + '/my_push.lua'), broken);
-  assert.match(await page.$eval('#editing-note', (element) => element.textContent), /^Draft with a mistake/);
+  assert.match(await page.$eval('#editing-note', (element) => element.textContent),
+               /^Draft with a mistake: not yet your lesson\. my_push\.lua in Your lessons is the last version that worked/);
   assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '2.5', 'the last good version stopped running');
   // The run goes on from where it was: putting the good text back is no change to reload.
   await click(page, 'play', false);
