@@ -158,6 +158,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     shown_readings_.error = script_words(shown_readings_.error);
     style.readings = &shown_readings_;
   }
+  if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
   style.view_adjust = view_adjust_;
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
@@ -462,7 +463,8 @@ std::string Classroom::script_words(const std::string& text) const {
 
 std::string Classroom::running_script_error() const {
   if (playback_->lesson().failed()) return playback_->lesson().last_error();
-  return playback_->readings().error;
+  if (!playback_->readings().error.empty()) return playback_->readings().error;
+  return playback_->lesson().theory_error();
 }
 
 void Classroom::messages(ImVec2 corner, float width) {

@@ -118,7 +118,8 @@ class Classroom {
   const std::string& failed_script() const { return failed_script_; }
   const std::string& failed_error() const { return failed_error_; }
   // The running lesson's script failed while it ran, not when it loaded: an expect row's
-  // function (the theory table is then empty) or an every-step function (the run stopped).
+  // function (the theory table is then empty), an every-step function (the run stopped) or a
+  // plot's theory curve (drawn only once the theory shows).
   // Its message as Lua gives it ("path:line: ..."); "" while neither.
   std::string running_script_error() const;
 

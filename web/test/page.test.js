@@ -324,6 +324,41 @@ test('a script error while the lesson runs is marked in the editor, by the stude
   await page.close();
 });
 
+test('a plot\'s theory curve failing on a slider\'s value is marked in the editor, and named by the file in the plot', async () => {
+  const setup = '# FrictionLab setup\nlesson push\npredictions off\n';
+  const page = await openPage(site + '#setup=' + encodeURIComponent(setup));
+  await closeHelp(page);
+  await page.click('#edit');
+  await page.waitForSelector('#editor.open');
+  const original = await sourceText(page);
+  // The curve loads and draws at μs = 0.4; past 0.5 it fails.
+  const failing = original.replace('function(F) if F <= math.max(param.mu_s, param.mu_k) * N then return -F end end',
+                                   'function(F) if param.mu_s > 0.5 then error("the theory broke") end if F <= param.mu_s * N then return -F end end');
+  assert.notEqual(failing, original);
+  await setSource(page, failing);
+  await page.click('#apply');
+  await settled(page);
+  assert.equal(await page.$eval('#mistake', (element) => element.className), '', 'the script did not load');
+  await click(page, 'mu_s value');
+  await page.keyboard.down('Control');
+  await frame();
+  await page.keyboard.press('a');
+  await frame();
+  await page.keyboard.up('Control');
+  await frame();
+  await page.keyboard.type('0.6', { delay: 50 });
+  await frame();
+  await page.keyboard.press('Enter');
+  await page.waitForSelector('#mistake.shown', { timeout: 30000 });
+  await settled(page);
+  const mistake = await page.$eval('#mistake', (element) => element.textContent);
+  assert.match(mistake, new RegExp('^my_push\\.lua:' + lineOf(failing, 'the theory broke') + ':.*the theory broke'), mistake);
+  noInternalPaths(mistake);
+  await shoot(page, 'editor_theory_error');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
 test('a failed Apply keeps the last good version as the student\'s lesson and the typed text as a marked draft; rename, delete', async () => {
   const page = await openPage(site + '#lesson=push');
   await closeHelp(page);
