@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include "assertions.h"
@@ -1244,6 +1246,33 @@ box { "crate", material = "wood", width = 0.5, height = 0.5, x = 0, y = 0.25 }
   EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_k, 0.03);
   lesson.reset();  // the values set stay
   EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_s, 0.1);
+}
+
+// A plot's theory curve that fails on a value a slider gives it (not at load): the chart shows
+// the message, and the lesson keeps it for whoever shows the script (the web page's editor)
+// until the curve draws again.
+TEST(LessonRuntime, ATheoryCurveFailingOnASlidersValueIsKeptUntilItDrawsAgain) {
+  std::ifstream in(resolve_lesson("push"));
+  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string sticking = "function(F) if F <= math.max(param.mu_s, param.mu_k) * N then return -F end end";
+  ASSERT_NE(original.find(sticking), std::string::npos);
+  std::string text = original;
+  text.replace(text.find(sticking), sticking.size(),
+               "function(F) if param.mu_s > 0.5 then error(\"the theory broke\") end if F <= param.mu_s * N then return -F end end");
+  const ScriptFile script(text);
+  Lesson lesson(script.path());
+  const std::size_t plot = 1;  // friction against the lesson's push
+  ASSERT_EQ(lesson.plots().at(plot).title, "Friction against the lesson's push");
+  lesson.theory_samples(plot, 0.0, 10.0, 50);
+  EXPECT_EQ(lesson.theory_error(), "");
+  lesson.set("mu_s", "0.6");
+  EXPECT_THROW(lesson.theory_samples(plot, 0.0, 10.0, 50), ScriptError);
+  const std::string error = lesson.theory_error();
+  EXPECT_EQ(error.rfind(script.path() + ":", 0), 0u) << error;
+  EXPECT_NE(error.find("the theory broke"), std::string::npos) << error;
+  lesson.set("mu_s", "0.4");
+  lesson.theory_samples(plot, 0.0, 10.0, 50);
+  EXPECT_EQ(lesson.theory_error(), "");
 }
 
 }  // namespace

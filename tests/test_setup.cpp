@@ -511,6 +511,12 @@ TEST(SetupLink, HoldsTheWholeSetupAndOpensAsTheFileDoes) {
   EXPECT_EQ(setup_text_from_link("frictionlab.html#setup=lesson+push%0A&projector=1"), "lesson push\n");
   EXPECT_EQ(setup_text_from_link("setup=lesson%20incline"), "lesson incline");
   EXPECT_EQ(setup_text_from_link("/home/teacher/push.setup"), std::nullopt);
+  // Anywhere among the fragment's parts, as the page reads them: after a lesson or projector part.
+  EXPECT_EQ(setup_text_from_link("https://school.example/fl/#lesson=incline&setup=lesson%20push%0A"), "lesson push\n");
+  EXPECT_EQ(setup_text_from_link("frictionlab.html#projector=1&at=2&setup=lesson+push&x=1"), "lesson push");
+  EXPECT_EQ(setup_text_from_link("lesson=incline&setup=lesson%20push"), "lesson push");
+  // A part that only ends in "setup=" is another part.
+  EXPECT_EQ(setup_text_from_link("page.html#mysetup=lesson%20push"), std::nullopt);
 
   const PreparedSetup from_link = read_setup(link);
   EXPECT_EQ(from_link.lesson, "push");

@@ -401,5 +401,42 @@ TEST(WindowKeys, TheArrowKeysTurnThePlotsPages) {
   EXPECT_EQ(first_plot(), start);
 }
 
+// The web page's classroom (ClassroomOptions::browser): its Lesson menu offers the browser's
+// file chooser, not a path to type in folders the student cannot see; a setup is saved at once
+// (it leaves the page as a download); no Reload (F5) or Quit. Script paths read as file names.
+TEST(WindowKeys, TheBrowsersLessonMenuOffersItsFileChooserAndNamesNoFolders) {
+  ClassroomOptions options = lesson_options("incline");
+  options.browser = true;
+  options.script_paths = false;
+  ClassroomHands hands(options);
+  hands.frame();
+  hands.click("Lesson menu");
+  EXPECT_FALSE(hands.classroom().control("Open a script").has_value());
+  EXPECT_FALSE(hands.classroom().control("Open a setup").has_value());
+  hands.click("Open a file");
+  EXPECT_TRUE(hands.classroom().take_open_file_request());
+  EXPECT_FALSE(hands.classroom().take_open_file_request()) << "taken once";
+  hands.frame();
+  EXPECT_FALSE(any_popup_open());
+  hands.click("Lesson menu");
+  hands.click("Save as a setup");
+  hands.frame();
+  EXPECT_FALSE(any_popup_open()) << "a dialog asks for a path";
+  int setups = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(hands.folder())) setups += entry.path().extension() == ".setup";
+  EXPECT_EQ(setups, 1);
+  EXPECT_EQ(hands.classroom().status().rfind("Setup saved to ", 0), 0u) << hands.classroom().status();
+  EXPECT_EQ(hands.classroom().script_words("Reloaded /home/web_user/.local/share/frictionlab/lessons/my_push.lua."),
+            "Reloaded my_push.lua.");
+  EXPECT_EQ(hands.classroom().script_words("/lessons/push.lua:80: expect 'x': see '/lessons/incline.lua' (a.lua)"),
+            "push.lua:80: expect 'x': see 'incline.lua' (a.lua)");
+  // The desktop's names whole paths: the student finds the file there.
+  ClassroomHands desktop(lesson_options("incline"));
+  desktop.frame();
+  desktop.click("Lesson menu");
+  EXPECT_TRUE(desktop.classroom().control("Open a script").has_value());
+  EXPECT_EQ(desktop.classroom().script_words("Reloaded /a/b.lua."), "Reloaded /a/b.lua.");
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -32,7 +32,8 @@ Classroom::Classroom(ClassroomOptions options)
       lock_from_(options.lock_from),
       overrides_(options.overrides),
       output_folder_(options.output_folder),
-      script_paths_(options.script_paths) {
+      script_paths_(options.script_paths),
+      browser_(options.browser) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
@@ -152,6 +153,12 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.fonts = &fonts;
   style.origin = origin;
   style.readings = &playback_->readings();
+  if (!script_paths_ && !playback_->readings().error.empty()) {
+    shown_readings_ = playback_->readings();
+    shown_readings_.error = script_words(shown_readings_.error);
+    style.readings = &shown_readings_;
+  }
+  if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
   style.view_adjust = view_adjust_;
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
@@ -436,15 +443,28 @@ void Classroom::set_value(const std::string& name, const std::string& text) {
   }
 }
 
-std::string Classroom::script_words(const std::string& path_or_message) const {
-  if (script_paths_) return path_or_message;
-  // The folders before a ".lua" that the text starts with are left out: "/a/b/my_push.lua:26: x"
-  // reads "my_push.lua:26: x".
-  const std::size_t script_end = path_or_message.find(".lua");
-  if (script_end == std::string::npos) return path_or_message;
-  const std::size_t last_slash = path_or_message.rfind('/', script_end);
-  if (last_slash == std::string::npos || path_or_message.find_first_of(" \n") < last_slash) return path_or_message;
-  return path_or_message.substr(last_slash + 1);
+std::string Classroom::script_words(const std::string& text) const {
+  if (script_paths_) return text;
+  // Each path to a ".lua" file in the text is left as the file's name: "/a/b/my_push.lua:26: x"
+  // reads "my_push.lua:26: x", "Reloaded /lessons/push.lua." reads "Reloaded push.lua.".
+  std::string words;
+  std::size_t from = 0;
+  for (std::size_t end = text.find(".lua"); end != std::string::npos; end = text.find(".lua", end + 4)) {
+    // The path's start: after the blank, quote or bracket before it.
+    std::size_t start = text.find_last_of(" \n\t'\"(", end);
+    start = start == std::string::npos || start < from ? from : start + 1;
+    const std::size_t last_slash = text.rfind('/', end);
+    if (last_slash == std::string::npos || last_slash < start) continue;
+    words += text.substr(from, start - from);
+    from = last_slash + 1;
+  }
+  return words + text.substr(from);
+}
+
+std::string Classroom::running_script_error() const {
+  if (playback_->lesson().failed()) return playback_->lesson().last_error();
+  if (!playback_->readings().error.empty()) return playback_->readings().error;
+  return playback_->lesson().theory_error();
 }
 
 void Classroom::messages(ImVec2 corner, float width) {
@@ -454,7 +474,14 @@ void Classroom::messages(ImVec2 corner, float width) {
   if (!playback_->script_error().empty()) {
     lines.push_back({script_words(playback_->script_error()) + "  (the last good version keeps running)", true});
   }
-  if (!playback_->problem().empty()) lines.push_back({playback_->problem(), true});
+  if (browser_ && playback_->lesson().failed()) {
+    // The page's editor is where the student mends it (the desktop's advice is to save the file).
+    lines.push_back({script_words(playback_->lesson().last_error()) +
+                         ". Mend it in the editor (Edit lesson) and Apply, or press R to start again.",
+                     true});
+  } else if (!playback_->problem().empty()) {
+    lines.push_back({script_words(playback_->problem()), true});
+  }
   if (lines.empty()) return;
   const Theme& colours = theme(window_.theme);
   ImGui::SetNextWindowPos(corner, ImGuiCond_Always, ImVec2(0.0f, 1.0f));
@@ -523,6 +550,8 @@ std::optional<std::string> Classroom::take_screenshot_request() {
 void Classroom::screenshot_done(const std::string& path, const std::string& error) {
   status_ = error.empty() ? "Screenshot saved to " + path : "Could not save the screenshot: " + error;
 }
+
+bool Classroom::take_open_file_request() { return std::exchange(open_file_request_, false); }
 
 bool Classroom::take_full_screen_toggle() {
   const bool toggle = full_screen_toggle_;

@@ -49,6 +49,10 @@ struct ClassroomOptions {
   // Name scripts by their whole path (the desktop: the student finds the file there), or by
   // the file's name alone (the web page: its files live in the browser, not where anyone looks).
   bool script_paths = true;
+  // The web page: the browser's files are not the student's to browse, so the Lesson menu
+  // offers the page's own file chooser (not a path to type), saves a setup as a download, and
+  // has no Reload or Quit; the script's advice says Apply (the page's editor), not save.
+  bool browser = false;
 };
 
 // The names --lock takes besides a lesson's parameters.
@@ -92,6 +96,8 @@ class Classroom {
   std::optional<std::string> take_screenshot_request();  // the path to save the window to
   void screenshot_done(const std::string& path, const std::string& error);
   bool take_full_screen_toggle();
+  // The page's file chooser, asked for from the Lesson menu (ClassroomOptions::browser).
+  bool take_open_file_request();
   bool quit_requested() const { return quit_; }
   // Nothing moves until the user does something: paused, no search measuring between frames,
   // no hand held. The window then waits for input (a few times a second for the file watcher)
@@ -111,6 +117,11 @@ class Classroom {
   // A script named on the command line that does not build yet: its path, "" when none.
   const std::string& failed_script() const { return failed_script_; }
   const std::string& failed_error() const { return failed_error_; }
+  // The running lesson's script failed while it ran, not when it loaded: an expect row's
+  // function (the theory table is then empty), an every-step function (the run stopped) or a
+  // plot's theory curve (drawn only once the theory shows).
+  // Its message as Lua gives it ("path:line: ..."); "" while neither.
+  std::string running_script_error() const;
 
   // Opens another lesson (a built-in name or a script's path). On failure the current lesson
   // keeps running and the message is returned (also shown in the window); "" on success.
@@ -269,8 +280,17 @@ class Classroom {
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   bool script_paths_ = true;
-  // A script's path, or a message that starts with one ("path:line: ..."), as the class sees it.
-  std::string script_words(const std::string& path_or_message) const;
+  bool browser_ = false;
+  bool open_file_request_ = false;
+  // The readings with their error in script_words, for the theory panel (script_paths off).
+  LessonReadings shown_readings_;
+
+ public:
+  // A text as the class sees it: with script_paths off, every script's path in it ("path:line:
+  // ...", "Reloaded path.") is its file's name alone.
+  std::string script_words(const std::string& text) const;
+
+ private:
   const Fonts* fonts_ = nullptr;
   std::vector<Camera> cameras_{Camera{}};
   ViewAdjust view_adjust_;

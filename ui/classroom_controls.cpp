@@ -428,8 +428,8 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
 
 std::string Classroom::transport_words() const {
   // Notices (the run is over, the file reloaded) and what was saved where, on one line.
-  std::string said = playback_->notice();
-  if (!status_.empty()) said += (said.empty() ? "" : "  ") + status_;
+  std::string said = script_words(playback_->notice());
+  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
   if (playback_->behind()) said = "running slower than asked  " + said;
   return said;
 }

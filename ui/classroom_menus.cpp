@@ -15,6 +15,11 @@ namespace frictionlab::ui {
 std::string Classroom::lock_words() const {
   if (lock_.empty()) return "";
   // Nothing in the window unlocks it: the class cannot undo what the teacher prepared.
+  if (!lock_from_.empty() && browser_) {
+    // The page's setups come from a link or a file from the computer, copied where nobody looks.
+    return "Locked by the prepared setup this page opened, for the class to stay on this lesson. To unlock: open the "
+           "page's address without its #setup= part, or a setup file without its lock line.";
+  }
   if (!lock_from_.empty()) {
     return "Locked by the setup " + std::filesystem::path(lock_from_).filename().string() +
            ", for the class to stay on this lesson. To unlock: delete its lock line (in " + lock_from_ +
@@ -62,19 +67,41 @@ void Classroom::menu_bar() {
       }
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_script_.ask();
-    remember("Open a script");
-    // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
-    if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setup_dialog_.ask(SetupDialog::Kind::open);
-    remember("Open a setup");
-    if (ImGui::MenuItem("Save as a setup...")) setup_dialog_.ask(SetupDialog::Kind::save);
-    remember("Save as a setup");
-    if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
-    ImGui::Separator();
+    if (browser_) {
+      // The page: a file from the computer through the browser's own chooser (a script or a
+      // setup); a setup saved arrives as a download; the editor's Apply reloads a script.
+      if (ImGui::MenuItem("Open a file from this computer (.lua, .setup)...", nullptr, false, may_switch)) {
+        open_file_request_ = true;
+      }
+      remember("Open a file");
+      if (ImGui::MenuItem("Save as a setup (download)")) {
+        try {
+          // save_setup says where it went ("Setup saved to Downloads/..."), or returns why not.
+          if (std::string why = save_setup(output_path(lesson_name(playback_->lesson().path()), ".setup")); !why.empty()) {
+            status_ = why;
+          }
+        } catch (const std::exception& error) {
+          status_ = std::string("Could not save the setup: ") + error.what();
+        }
+      }
+      remember("Save as a setup");
+    } else {
+      if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_script_.ask();
+      remember("Open a script");
+      // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
+      if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setup_dialog_.ask(SetupDialog::Kind::open);
+      remember("Open a setup");
+      if (ImGui::MenuItem("Save as a setup...")) setup_dialog_.ask(SetupDialog::Kind::save);
+      remember("Save as a setup");
+      if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
+    }
     if (ImGui::MenuItem("Screenshot (PNG)", "Ctrl+S")) request_screenshot();
     if (ImGui::MenuItem("Export the history (CSV)", "Ctrl+E")) save_history();
-    ImGui::Separator();
-    if (ImGui::MenuItem("Quit")) quit_ = true;
+    // A page is closed as the browser closes it.
+    if (!browser_) {
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit")) quit_ = true;
+    }
     ImGui::EndMenu();
   }
   const bool simulation = ImGui::BeginMenu("Simulation");
@@ -170,6 +197,12 @@ void Classroom::help_panel() {
                           ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Help (F1 shows and hides it)", &window_.help)) {
+    // Kept inside the window when the window shrinks under it (a page's editor opening beside
+    // the world, a smaller browser window): ImGui keeps only a corner of it in sight.
+    const ImVec2 display = ImGui::GetIO().DisplaySize, at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    const ImVec2 inside(std::clamp(at.x, 0.0f, std::max(0.0f, display.x - size.x)),
+                        std::clamp(at.y, 0.0f, std::max(0.0f, display.y - size.y)));
+    if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(inside);
     static const char* const keys[][2] = {
         {"Space", "play / pause; typing a number, ends the typing and plays"},
         {"Esc", "closes a menu or a dialog (with a menu open, keys act too)"},
@@ -194,12 +227,17 @@ void Classroom::help_panel() {
       ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& row : keys) {
+        // On the page F5 runs the script as last applied again: the editor's Apply is how a
+        // change arrives, and no file is saved anywhere the student sees.
+        const char* what = browser_ && std::string(row[0]) == "F5"
+                               ? "run the lesson's script again from t = 0 (the editor's Apply runs your changes)"
+                               : row[1];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row[0]);
         ImGui::TableNextColumn();
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(row[1]);
+        ImGui::TextUnformatted(what);
         ImGui::PopTextWrapPos();
       }
       ImGui::EndTable();

@@ -312,7 +312,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
         style.extra_plot(ImGui::GetCursorScreenPos(), area);
       } else {
         const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
-                                            area, colours, fonts, !style.theory_kept_back());
+                                            area, colours, fonts, !style.theory_kept_back(), style.script_words);
         if (style.record != nullptr) style.record->plots.push_back({i, drawn});
       }
     }

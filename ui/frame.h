@@ -70,6 +70,9 @@ struct FrameStyle {
   // The theory table and the lesson's duration, when the caller keeps them (the window works
   // them out a few times a second); null: worked out for this frame.
   const LessonReadings* readings = nullptr;
+  // A plot's script error as the class sees it (Classroom::script_words: the web page names a
+  // script by its file's name); empty: as Lua gives it.
+  std::function<std::string(const std::string&)> script_words;
   // Draws the parameters panel in its place instead of the values as text (the window's
   // sliders), at a step of giving way to a short column (0: every control whole); its heights
   // at steps 0, 1, ... The window then shows the energy ledger and the model card as tabs of

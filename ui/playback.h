@@ -86,6 +86,10 @@ class Playback {
   // running and its message in script_error().
   void watch_file(double wall_seconds);
   bool reload();  // now (F5); false with script_error() set on failure
+  // The file as it is now is the one the lesson knows: whoever wrote it (the web page's
+  // editor, which reloads it itself and puts the last good text back after a failed Apply)
+  // has already reloaded it, and the watcher must not run it again from t = 0 on its next look.
+  void file_written() { file_stamp_ = file_stamp(lesson_->path()); }
   const std::string& script_error() const { return script_error_; }
   // Why the lesson stopped by itself: the simulation blew up or the script failed while it
   // ran. Empty while neither happened; only a reset, a reload or a new value clears it.

@@ -188,8 +188,11 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
 }
 
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
-                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory) {
-  return draw_chart(draw, corner, size, plot_chart(lesson, plot, time_span, theme, with_theory), theme, fonts);
+                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory,
+                      const std::function<std::string(const std::string&)>& script_words) {
+  Chart chart = plot_chart(lesson, plot, time_span, theme, with_theory);
+  if (script_words && !chart.message.empty()) chart.message = script_words(chart.message);
+  return draw_chart(draw, corner, size, chart, theme, fonts);
 }
 
 }  // namespace frictionlab::ui

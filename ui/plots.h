@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
 
 // Draws plot number `plot` of the lesson into the rectangle; where its parts went.
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
-                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true);
+                      ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true,
+                      const std::function<std::string(const std::string&)>& script_words = {});
 
 }  // namespace frictionlab::ui

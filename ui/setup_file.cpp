@@ -230,14 +230,21 @@ std::string setup_link(const std::string& text, const std::string& page) {
 }
 
 std::optional<std::string> setup_text_from_link(const std::string& link) {
-  std::size_t start = link.find("#setup=");
-  if (start != std::string::npos) {
-    start += 7;
-  } else if (link.rfind("setup=", 0) == 0) {
-    start = 6;
-  } else {
-    return std::nullopt;
+  // The fragment (after '#', or the whole text when it is a fragment alone) is parts joined by
+  // '&' in any order, as the page reads it: "#lesson=push&setup=...", "#projector=1&setup=...".
+  const std::size_t hash = link.find('#');
+  const std::size_t fragment = hash == std::string::npos ? 0 : hash + 1;
+  std::size_t start = std::string::npos;
+  for (std::size_t part = fragment;;) {
+    if (link.compare(part, 6, "setup=") == 0) {
+      start = part + 6;
+      break;
+    }
+    const std::size_t next = link.find('&', part);
+    if (next == std::string::npos) break;
+    part = next + 1;
   }
+  if (start == std::string::npos) return std::nullopt;
   const std::size_t end = link.find('&', start);
   const std::string encoded = link.substr(start, end == std::string::npos ? std::string::npos : end - start);
   const auto digit = [](char c) -> int {
@@ -334,7 +341,10 @@ std::string setup_lesson_path(const PreparedSetup& setup, const std::string& set
   const fs::path script(setup.lesson);
   try {
     if (a_name) return lessons::resolve_lesson(setup.lesson);
-    return lessons::resolve_lesson(script.is_absolute() ? script.string() : (fs::path(setup_path).parent_path() / script).string());
+    // Without "folder/../": the window, its Lesson menu and the page's editor know a script by
+    // its plain path (the page's links sit in /link, its student's lessons in the home folder).
+    const fs::path from_setup = script.is_absolute() ? script : fs::path(setup_path).parent_path() / script;
+    return lessons::resolve_lesson(from_setup.lexically_normal().string());
   } catch (const InvalidInput& error) {
     At{setup_path, setup.lesson_line}.fail(error.what());
   }

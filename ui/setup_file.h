@@ -72,7 +72,8 @@ PreparedSetup read_setup(const std::string& path);
 // A setup as a link to the web page (web/): PAGE#setup=TEXT, the setup file's text encoded as
 // JavaScript's encodeURIComponent does, so a teacher can send a prepared setup as an address.
 std::string setup_link(const std::string& text, const std::string& page);
-// The setup text a link holds after "#setup=" (or after "setup=" at the fragment's start);
+// The setup text a link holds in its fragment's "setup=" part, wherever that stands among the
+// fragment's '&'-joined parts ("#setup=...", "#lesson=push&setup=...", or a fragment alone);
 // nullopt when the text is not such a link. Throws InvalidInput naming the link for a broken
 // %-escape or a text longer than a setup file may be.
 std::optional<std::string> setup_text_from_link(const std::string& link);

@@ -18,6 +18,7 @@
 #include "ui/glfw_keys.h"
 #include "ui/image.h"
 #include "ui/imgui_host.h"
+#include "ui/setup_file.h"
 #include "web/browser_files.h"
 
 namespace frictionlab::web {
@@ -47,6 +48,13 @@ struct Page {
   bool looping = true;
   long drawn = 0;
   std::string shown_title;
+  // What the page around the canvas was last told: the running lesson's script (the editor
+  // follows it), the error its script raised while running (the editor marks its line), the
+  // theme (the page's bar follows it).
+  std::string told_lesson, told_error;
+  int told_theme = -1;
+  // The window as a setup's text, as the page's address last kept it (none until the first frame).
+  std::optional<std::string> told_setup;
   ui::WindowSettings saved;
   bool full_screen = false;
 };
@@ -113,6 +121,43 @@ void copy_to_clipboard(void*, const char* text) {
 }
 const char* nothing_to_paste(void*) { return ""; }
 
+// The page's own controls follow the classroom: told when what they show changed, not every frame.
+void tell_the_page(ui::Classroom& classroom) {
+  Page& p = *page;
+  if (const std::string& lesson = classroom.playback().lesson().path(); lesson != p.told_lesson) {
+    p.told_lesson = lesson;
+    EM_ASM({ frictionlabPage.lessonChanged(UTF8ToString($0)); }, lesson.c_str());
+  }
+  if (std::string error = classroom.running_script_error(); error != p.told_error) {
+    p.told_error = std::move(error);
+    EM_ASM({ frictionlabPage.runningError(UTF8ToString($0)); }, p.told_error.c_str());
+  }
+  if (const int theme = static_cast<int>(classroom.window_settings().theme); theme != p.told_theme) {
+    p.told_theme = theme;
+    EM_ASM({ frictionlabPage.setTheme($0); }, classroom.window_settings().theme == ui::ThemeName::dark ? 1 : 0);
+  }
+  // Values typed and predictions made survive a reload: the page's address keeps the window as a
+  // setup (what Copy link gives), once it differs from what the page opened with, so a link
+  // given by a teacher stays as it was until something is changed. A prediction that does not
+  // read yet is left out: the setup would not open.
+  if (!p.run.link_setup_path.empty()) {
+    ui::PreparedSetup setup = classroom.current_setup(p.run.link_setup_path);
+    std::erase_if(setup.answers, [&](const ui::PreparedSetup::Answer& answer) {
+      return !ui::prediction_problem(classroom.playback().lesson(), answer.row, answer.text).empty();
+    });
+    std::string text = ui::setup_text(setup);
+    if (!p.told_setup) {
+      p.told_setup = std::move(text);
+    } else if (text != *p.told_setup) {
+      p.told_setup = std::move(text);
+      EM_ASM({ frictionlabPage.keepInAddress(UTF8ToString($0)); }, p.told_setup->c_str());
+    }
+  }
+  // The Lesson menu's "Open a file": the browser allows its chooser for a few seconds after the
+  // click that asked, and this frame follows that click.
+  if (classroom.take_open_file_request()) EM_ASM({ frictionlabPage.chooseFile(); });
+}
+
 void draw_frame() {
   Page& p = *page;
   ui::Classroom& classroom = *p.classroom;
@@ -154,6 +199,7 @@ void draw_frame() {
     emscripten_set_window_title(title.c_str());
     p.shown_title = std::move(title);
   }
+  tell_the_page(classroom);
   glViewport(0, 0, width, height);
   const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(ui::theme(classroom.window_settings().theme).background);
   glClearColor(clear.x, clear.y, clear.z, 1.0f);

@@ -12,6 +12,9 @@ namespace frictionlab::web {
 
 struct PageRun {
   std::string settings_path;  // the window's settings, kept in the browser; empty: nowhere
+  // Where the page writes a link's setup before opening it: the lesson in the page's address
+  // is named from there.
+  std::string link_setup_path;
 };
 
 // Starts the page's frame loop and returns to the browser (the loop runs from its events).

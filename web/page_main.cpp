@@ -32,6 +32,8 @@ namespace fs = std::filesystem;
 using namespace frictionlab;
 
 std::unique_ptr<ui::Classroom> classroom;
+// Where page.html writes a link's (or a .setup file's) text before the program opens it.
+constexpr const char* link_setup = "/link/frictionlab.setup";
 std::string returned;  // the last text handed to JavaScript; lives until the next call
 
 const char* hand_over(std::string text) {
@@ -76,6 +78,7 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   options.window.full_screen = false;
   options.output_folder = web::downloads_folder;
   options.script_paths = false;
+  options.browser = true;
   try {
     options.lesson = lessons::resolve_lesson(lesson.empty() ? lessons::builtin_lessons().front() : lesson);
   } catch (const InvalidInput& error) {
@@ -116,12 +119,14 @@ int main(int argc, char** argv) {
     plain.window = options.window;
     plain.output_folder = options.output_folder;
     plain.script_paths = false;
+    plain.browser = true;
     plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
     classroom = std::make_unique<ui::Classroom>(plain);
   }
   if (given.at > 0.0) classroom->run_to(given.at);
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
   web::PageRun run;
+  run.link_setup_path = link_setup;
   if (const std::string folder = ui::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
   try {
     web::run_page(*classroom, run);
@@ -148,13 +153,18 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_open(const char* path) {
   } else {
     message = classroom->open(path);
   }
+  // The page wrote the file and ran it here: the watcher must not run it once more.
+  classroom->playback().file_written();
   frictionlab_wake();
   return hand_over(message);
 }
 
+// The page put the running script's last good text back after a failed Apply: not a change to run.
+EMSCRIPTEN_KEEPALIVE void frictionlab_file_written() { classroom->playback().file_written(); }
+
 // The window as a prepared setup's text, for a link; its lesson named as the page finds it.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_setup_text() {
-  return hand_over(ui::setup_text(classroom->current_setup("/link/frictionlab.setup")));
+  return hand_over(ui::setup_text(classroom->current_setup(link_setup)));
 }
 
 // Opens a setup file's text (a link's), as Lesson > Open a setup does. Returns "" or the message.
@@ -221,5 +231,10 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_mystery_pair() {
   return hand_over(classroom->mystery() ? classroom->mystery()->choice().pair : "");
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_status() { return hand_over(classroom->status()); }
+// The status line's words as the transport bar shows them (script paths as file names).
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
+  return hand_over(classroom->script_words(classroom->playback().notice() + " " + classroom->status()));
+}
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
 
 }  // extern "C"

@@ -57,6 +57,9 @@ struct PlotFunctions {
   TheorySamples samples;
   int sample_count = 0;
   std::vector<double> sampled_with;  // the parameters' values when sampled
+  // The script error the last sampling, and the last asking which curve is active, raised
+  // (a slider gave the curve's function a value it fails on); "" when they ran.
+  std::string samples_error, active_error;
 };
 
 struct LessonBuild {

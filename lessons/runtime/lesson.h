@@ -208,6 +208,9 @@ class Lesson {
   // For each curve of the plot: whether its active = function() says it applies now; -1 when
   // the curve does not say (the plot then takes the branch nearest the latest point).
   std::vector<int> theory_active(std::size_t plot);
+  // The script error a plot's theory curve raised the last time it was sampled or asked
+  // whether it is active (the chart shows it in place of the curves); "" when none did.
+  std::string theory_error() const;
 
   // Sets a parameter from text ("0.45", "plastic"). Throws InvalidInput (naming the
   // parameter and its range, or listing the parameters) and changes nothing when the value is

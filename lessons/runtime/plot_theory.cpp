@@ -191,6 +191,14 @@ void try_theory_curves(LessonBuild& build) {
   }
 }
 
+std::string Lesson::theory_error() const {
+  for (const PlotFunctions& functions : current_->plot_functions) {
+    if (!functions.samples_error.empty()) return functions.samples_error;
+    if (!functions.active_error.empty()) return functions.active_error;
+  }
+  return "";
+}
+
 const TheorySamples& Lesson::theory_samples(std::size_t plot, double x_low, double x_high, int count) {
   LessonBuild& build = *current_;
   PlotFunctions& functions = build.plot_functions.at(plot);
@@ -200,6 +208,7 @@ const TheorySamples& Lesson::theory_samples(std::size_t plot, double x_low, doub
   if (!(x_high > x_low)) x_high = x_low + 1.0;
   if (functions.samples.x_low == x_low && functions.samples.x_high == x_high && functions.sample_count == count &&
       functions.sampled_with == parameters) {
+    functions.samples_error.clear();  // the samples kept are those of the values now, which drew
     return functions.samples;
   }
   TheorySamples fresh;
@@ -210,8 +219,14 @@ const TheorySamples& Lesson::theory_samples(std::size_t plot, double x_low, doub
     lua_State* state = build.sandbox.state();
     lua_pushcfunction(state, sample_plot);
     lua_pushlightuserdata(state, &job);
-    build.sandbox.call(1, 0);  // one budget for the whole plot
+    try {
+      build.sandbox.call(1, 0);  // one budget for the whole plot
+    } catch (const ScriptError& error) {
+      functions.samples_error = error.what();
+      throw;
+    }
   }
+  functions.samples_error.clear();
   functions.samples = std::move(fresh);
   functions.sample_count = count;
   functions.sampled_with = std::move(parameters);
@@ -227,7 +242,14 @@ std::vector<int> Lesson::theory_active(std::size_t plot) {
   lua_State* state = build.sandbox.state();
   lua_pushcfunction(state, ask_active);
   lua_pushlightuserdata(state, &job);
-  build.sandbox.call(1, 0);
+  PlotFunctions& asked = build.plot_functions.at(plot);
+  try {
+    build.sandbox.call(1, 0);
+  } catch (const ScriptError& error) {
+    asked.active_error = error.what();
+    throw;
+  }
+  asked.active_error.clear();
   return active;
 }
 

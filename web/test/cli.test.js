@@ -65,3 +65,16 @@ test('run --csv gives the native program\'s record', { skip: !native && 'no nati
     fs.rmSync(folder, { recursive: true, force: true });
   }
 });
+
+// A page's own link puts other parts before the setup (#lesson=...&setup=..., &projector=1): the
+// command line finds the setup wherever it stands in the fragment, as the page does.
+test('link reads a setup wherever it stands in the link\'s fragment', () => {
+  const setup = encodeURIComponent('# FrictionLab setup\nlesson incline\nset mass = 3\n');
+  for (const link of ['https://school.example/fl/#setup=' + setup, 'https://school.example/fl/#lesson=push&setup=' + setup,
+                      'frictionlab.html#projector=1&at=2&setup=' + setup + '&lesson=push']) {
+    const back = web('link', link);
+    assert.equal(back.status, 0, link + ': ' + back.stderr);
+    assert.match(back.stdout, /^lesson incline$/m, link);
+    assert.match(back.stdout, /^set mass = 3$/m, link);
+  }
+});
