@@ -135,6 +135,8 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
     r.point *= 1.0f / static_cast<float>(r.point_count);
   }
   contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
+  r.before_known = !r.fresh;
+  r.sliding_before = r.sliding_velocity;
   r.fresh = false;
   r.solving = true;
 }

@@ -39,6 +39,11 @@ struct ContactRecord {
   double friction_force = 0.0;     // N, on B along the tangent (normal rotated -90°)
   double damping_force = 0.0;      // N, viscous + quadratic, on B along the tangent
   double sliding_velocity = 0.0;   // m/s, B relative to A along the tangent, end of step
+  // m/s, sliding_velocity as the step before left it, kept by PreSolve (when known: not in a
+  // contact's first step). A driven body's velocity is set between steps, so the start of this
+  // step's sliding less this is what the drive (and the drag applied before the step) did.
+  double sliding_before = 0.0;
+  bool before_known = false;
   double point_normal_force[b2_maxManifoldPoints] = {0.0, 0.0};  // N, how the load is shared
   // Per manifold point, at the start of the solve: the solver's lever arms and velocities.
   b2Vec2 world_points[b2_maxManifoldPoints];
