@@ -75,9 +75,9 @@ probe { "rim_speed", unit = "m/s", read = { wheel, "omega", scale = -radius } }
 plot { "Speed of the axle and of the tyre's rim", kind = "time", y = { "speed", "rim_speed" } }
 
 -- Reading the record ----------------------------------------------------------------------
--- With no friction at all (mu_s = mu_k = 0) the contact reads "slipping" whatever happens, as
--- nothing holds it; there a slip counts only once the tyre really slides on the road, its rim
--- running ahead of the axle.
+-- With no friction at all (mu_s = mu_k = 0) nothing holds the contact, so it neither sticks nor
+-- slips: it reads "slipping" only while the tyre slides on the road; a slip counts once the
+-- rim runs ahead of the axle at all.
 local function first_slip_torque()
   local slipping, torques = history("slipping"), history("torque")
   local frictionless = param.mu_s == 0 and param.mu_k == 0

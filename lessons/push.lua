@@ -79,7 +79,10 @@ expect { "breakaway push", unit = "N",
   predicted = function() return push_theory(0).breakaway_push end,
   measured = breakaway_push,
   -- The push grows by rate·h in a step, and the slip is seen at the end of the step it begins in.
-  tolerance = function() return 0.01 * push_theory(0).breakaway_push + push_rate * step_length() end }
+  -- (On a smooth table that is the second step, the first with a push: the recorded push is then
+  -- rate·h exactly, read from Box2D's float force, so a float's rounding, 2^-24 of it, is let
+  -- in too.)
+  tolerance = function() return (0.01 * push_theory(0).breakaway_push + push_rate * step_length()) * (1 + 2 ^ -23) end }
 
 -- Where the run cannot show the end theory describes, the last two rows say so: the block has
 -- slid off the table's end (200 m from where it stood, less its half width), or it moves more

@@ -232,7 +232,7 @@ plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "b
 -- Reading the record ----------------------------------------------------------------------
 -- The pull that set a contact slipping: the one recorded the step before it first slipped.
 -- The top block slips on the bottom one only once that moves: with no friction between them
--- their contact reads slipping from the start, while nothing moves at all.
+-- their contact cannot hold, and reads slipping as soon as the two slide apart at all.
 local function first_slip(probe)
   local slipping, floor_slipping, pulls = history(probe), history("floor_slipping"), history("pull")
   for i = 1, #slipping do
@@ -267,14 +267,17 @@ expect { "the pair starts to slide at a pull of", unit = "N",
   predicted = function() return no_theory() or start_pull() end,
   measured = function() return no_theory() or first_slip("floor_slipping") end,
   -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in.
-  tolerance = function() return 0.01 * start_pull() + pull_rate * step_length() end }
+  -- (On a smooth floor that is the second step, the first with a pull: the recorded pull is then
+  -- rate·h exactly, read from Box2D's float force, so a float's rounding, 2^-24 of it, is let
+  -- in too.)
+  tolerance = function() return (0.01 * start_pull() + pull_rate * step_length()) * (1 + 2 ^ -23) end }
 expect { "the top block starts to slip at a pull of", unit = "N",
   predicted = function() return no_theory() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate) or slip_pull() end,
   measured = function()
     if tipped_by(slip_pull() / param.pull_rate) then return lifted_seen() end
     return no_theory() or off_the_floor() or first_slip("top_slipping")
   end,
-  tolerance = function() return 0.01 * slip_pull() + pull_rate * step_length() end }
+  tolerance = function() return (0.01 * slip_pull() + pull_rate * step_length()) * (1 + 2 ^ -23) end }  -- as above
 -- Halfway between the two, the top block keeps up: its friction is m_top·a, forward.
 local function halfway()  -- on a step, so that the sample read there is the one meant
   local h = step_length()
@@ -303,7 +306,14 @@ expect { "top block's acceleration, slipping", unit = "m/s²",
     if tipped_by(ending()) then return lifted_seen() end
     return no_theory() or off_the_floor() or at_the_end("top_acceleration")
   end,
-  tolerance = function() return 0.01 * top_acceleration_after() + 1e-3 end }
+  -- 1 % and 1 mm/s². And the bottom block's tilt: theory has it flat, but the world lets a
+  -- contact sink into another by up to Box2D's linear slop, and the floor's load shifting to
+  -- the back edge tips the bottom block by a hair (0.02° at top 2.9 kg on 1.2 kg, mu 2 on
+  -- both, a smooth top), down which the top block slides at g·sin(tilt), 4 mm/s² there.
+  tolerance = function()
+    local tilt = time() >= ending() - 0.5 * step_length() and value_at("tilt", ending()) or 0
+    return 0.01 * top_acceleration_after() + 1e-3 + g * math.abs(math.sin(math.rad(tilt)))
+  end }
 -- Read at the step before the end (the reading's instant), where the pull was rate·(t − h).
 expect { "bottom block's acceleration at the end", unit = "m/s²",
   predicted = function()

@@ -110,6 +110,7 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
     return;
   }
   const FrictionPair& pair = pairs_.pair_at(r.pair_index);
+  r.frictionless = pair.mu_s == 0.0 && pair.mu_k == 0.0;
   // A contact born in this step missed apply_contact_forces: its drag starts now, before the
   // solve, so a block landing on a viscous film is not let off for a step.
   if (r.fresh) apply_velocity_terms(contact, r);
@@ -135,6 +136,8 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
     r.point *= 1.0f / static_cast<float>(r.point_count);
   }
   contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
+  r.before_known = !r.fresh;
+  r.sliding_before = r.sliding_velocity;
   r.fresh = false;
   r.solving = true;
 }

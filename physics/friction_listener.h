@@ -2,6 +2,8 @@
 // static and kinetic friction their own coefficients.
 #pragma once
 
+#include <cmath>
+
 #include <box2d/box2d.h>
 
 #include <string>
@@ -32,6 +34,11 @@ struct ContactRecord {
   int pair_index = -1;             // the pair's place in the table (PairTable::pair_at)
   ContactState state = ContactState::sticking;
   float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
+  // Its pair has no dry friction (mu_s = mu_k = 0, a smooth wall; drag c or b may still act,
+  // and it holds nothing either): nothing can hold it, so it neither sticks nor slips in the
+  // lesson's sense; it only slides along or does not (see seen_slipping). Set from the pair
+  // at every PreSolve, as the pair's sliders may change while it touches.
+  bool frictionless = false;
   int point_count = 0;
   b2Vec2 point{0.0f, 0.0f};        // world, mean of the manifold points
   b2Vec2 normal{0.0f, 1.0f};       // world, from A to B
@@ -39,6 +46,11 @@ struct ContactRecord {
   double friction_force = 0.0;     // N, on B along the tangent (normal rotated -90°)
   double damping_force = 0.0;      // N, viscous + quadratic, on B along the tangent
   double sliding_velocity = 0.0;   // m/s, B relative to A along the tangent, end of step
+  // m/s, sliding_velocity as the step before left it, kept by PreSolve (when known: not in a
+  // contact's first step). A driven body's velocity is set between steps, so the start of this
+  // step's sliding less this is what the drive (and the drag applied before the step) did.
+  double sliding_before = 0.0;
+  bool before_known = false;
   double point_normal_force[b2_maxManifoldPoints] = {0.0, 0.0};  // N, how the load is shared
   // Per manifold point, at the start of the solve: the solver's lever arms and velocities.
   b2Vec2 world_points[b2_maxManifoldPoints];
@@ -65,6 +77,23 @@ struct ContactRecord {
   // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
   // once the step's velocity is known.
   double explicit_impulse = 0.0;
+
+  // Whether a student reads it as slipping (the probe `slipping`, the plots' shading): its
+  // state; or, frictionless, whether the bodies slide along each other at all. The listener's
+  // state says "slipping" for every frictionless contact, since nothing there can hold, and a
+  // box standing still against a smooth wall was drawn and probed as slipping. "At all" is
+  // faster than 1e-7 m/s. Bodies at rest on a smooth floor read 0, and against a smooth wall
+  // up to 1e-8 m/s, the solver's leftovers; a pull that grows from nothing acts from the second
+  // step, and at stacked_blocks' slowest on its heaviest pair (0.5 N/s on 15 kg) that step
+  // leaves them sliding at 5.8e-7 m/s at 240 Hz: the slip shows at the end of the first step
+  // anything pushes, as a slip with friction shows at the end of the step it began in. (A box
+  // thrown into a smooth wall creeps on along the floor at 8e-7 m/s, the solver pushing it
+  // into the wall: it slides, slowly, and reads so.)
+  static constexpr double frictionless_sliding_speed = 1e-7;  // m/s
+  bool seen_slipping() const {
+    if (frictionless) return std::abs(sliding_velocity) > frictionless_sliding_speed;
+    return state == ContactState::slipping;
+  }
 
   // Box2D's friction direction for a contact normal: the normal turned by -90°.
   static b2Vec2 tangent_of(const b2Vec2& n) { return b2Cross(n, 1.0f); }

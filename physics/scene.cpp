@@ -564,7 +564,7 @@ void Scene::step() {
   times_.push_back(time_);
   bool any_slipping = false;
   for (const ContactRecord& record : listener_.contacts()) {
-    any_slipping = any_slipping || (record.point_count > 0 && record.state == ContactState::slipping);
+    any_slipping = any_slipping || (record.point_count > 0 && record.seen_slipping());
   }
   slipping_.push_back(any_slipping ? 1 : 0);
 }

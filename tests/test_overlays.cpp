@@ -237,5 +237,35 @@ TEST(Overlays, TheSlippingWordGivesTheUpperBodysWayOverTheLowerOne) {
   EXPECT_EQ(checked, 2);
 }
 
+// A contact with no friction (mu_s = mu_k = 0) neither sticks nor slips: its word says so, at
+// rest or sliding, and only the sliding one is probed as slipping. The listener's own state
+// calls both "slipping", which is what was drawn: "slipping \u2192" under a box standing still.
+TEST(Overlays, AFrictionlessContactIsNeitherStickingNorSlipping) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "ice", "ice", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+box { "still", material = "ice", width = 0.4, height = 0.2, on = floor, at = -2 }
+box { "moving", material = "ice", width = 0.4, height = 0.2, on = floor, at = 2, velocity = { 1, 0 } }
+)"));
+  LessonAt at(script.path(), {}, 0.5);
+  const Scene& scene = at.scene();
+  int checked = 0;
+  for (const ContactMark& mark : contact_marks(scene)) {
+    EXPECT_EQ(contact_word(mark), "frictionless");
+    const ContactRecord* record = nullptr;
+    for (const ContactRecord& r : scene.friction().contacts()) {
+      if (r.body_a == mark.body_a && r.body_b == mark.body_b) record = &r;
+    }
+    ASSERT_NE(record, nullptr);
+    const bool moving = mark.body_a == scene.body("moving") || mark.body_b == scene.body("moving");
+    EXPECT_EQ(record->seen_slipping(), moving);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+  // With friction, the words are the states' as before.
+  LessonAt rough("push", {}, 0.5);
+  for (const ContactMark& mark : contact_marks(rough.scene())) EXPECT_EQ(contact_word(mark), "sticking");
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -117,7 +117,7 @@ std::vector<ContactMark> contact_marks(const Scene& scene) {
     const ContactRecord& record = *found;
     if (record.body_a->GetType() != b2_dynamicBody && record.body_b->GetType() != b2_dynamicBody) continue;
     marks.push_back({record.body_a, record.body_b, centre_of_load(record), record.tangent(), record.state,
-                     record.sliding_velocity, record.friction_force});
+                     record.frictionless, record.sliding_velocity, record.friction_force});
   }
   return marks;
 }
@@ -128,6 +128,8 @@ float upper_side(const ContactMark& mark) {
 }
 
 std::string contact_word(const ContactMark& mark) {
+  // With no dry friction nothing sticks or slips: the word says so, sliding along or not.
+  if (mark.frictionless) return "frictionless";
   if (mark.state != ContactState::slipping) return "sticking";
   // The record's sliding is B's relative to A; turned into the upper body's over the lower one.
   const b2Vec2 way = upper_side(mark) * static_cast<float>(mark.sliding_velocity >= 0.0 ? 1.0 : -1.0) * mark.tangent;

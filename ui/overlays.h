@@ -29,6 +29,7 @@ struct ContactMark {
   b2Vec2 point{0.0f, 0.0f};    // where the normal force acts: the centre of the manifold points' loads
   b2Vec2 tangent{1.0f, 0.0f};  // B's friction direction
   ContactState state = ContactState::sticking;
+  bool frictionless = false;      // mu_s = mu_k = 0: neither sticking nor slipping (ContactRecord)
   double sliding_velocity = 0.0;  // m/s, B relative to A along the tangent
   double friction_force = 0.0;    // N, dry friction on B along the tangent
 };

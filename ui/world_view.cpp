@@ -240,8 +240,9 @@ void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
 void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& camera, const Theme& theme,
                        const Fonts& fonts, LabelPlacer& labels, bool with_label) {
   const ImVec2 at = camera.to_screen(mark.point);
+  // A frictionless contact in neither state's colour: the outline's, as the bodies are drawn.
   const bool slipping = mark.state == ContactState::slipping;
-  const ImU32 colour = slipping ? theme.slipping : theme.sticking;
+  const ImU32 colour = mark.frictionless ? theme.outline : slipping ? theme.slipping : theme.sticking;
   const float r = 6.0f * fonts.scale;
   draw->AddCircleFilled(at, r, colour, 20);
   draw->AddCircle(at, r, theme.background, 20, 1.5f);
@@ -343,10 +344,10 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
                label.text.c_str());
   }
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
-  std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool>> said;
+  std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool, bool>> said;
   for (const ContactMark& mark : marks) {
     const bool rightward = mark.sliding_velocity >= 0.0;
-    const auto key = std::make_tuple(mark.body_a, mark.body_b, mark.state, rightward);
+    const auto key = std::make_tuple(mark.body_a, mark.body_b, mark.state, mark.frictionless, rightward);
     const bool first = std::find(said.begin(), said.end(), key) == said.end();
     if (first) said.push_back(key);
     draw_contact_mark(draw, mark, camera, theme, fonts, labels, first);

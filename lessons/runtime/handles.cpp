@@ -218,7 +218,7 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
     case Field::drag_y: return drag.y;
     case Field::sliding_speed: return std::abs(record->sliding_velocity);
     case Field::points: return record->point_count;
-    case Field::slipping: return record->state == ContactState::slipping ? 1.0 : 0.0;
+    case Field::slipping: return record->seen_slipping() ? 1.0 : 0.0;
     case Field::load1: return record->point_normal_force[0];
     case Field::load2: return record->point_normal_force[1];
     case Field::load_left:
@@ -351,7 +351,10 @@ int handle_index(lua_State* state) {
     const Scene& scene = *build_of(state).scene;
     if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
       const ContactRecord* record = find_record(scene, handle->contact);
-      lua_pushstring(state, record == nullptr ? "none" : record->state == ContactState::sticking ? "sticking" : "slipping");
+      lua_pushstring(state, record == nullptr             ? "none"
+                            : record->frictionless       ? "frictionless"
+                            : record->state == ContactState::sticking ? "sticking"
+                                                                      : "slipping");
     } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {  // every step in terrain
       lua_pushcfunction(state, scale_velocity);
     } else if (const std::optional<Field> field = find_field(handle->type, key)) {
