@@ -66,9 +66,9 @@ probe { "slipping", read = { touch, "slipping" } }
 plot { "The road's friction on the wheel", kind = "xy", x = "torque", y = { "friction_force" },
   theory = {
     { "gripping: m·a", function(T) if T <= limit() then return wheel_theory(T).friction end end,
-      active = function() return touch.state ~= "slipping" end },
+      active = function() return touch.slipping ~= 1 end },
     { "spinning: μk·m·g", function(T) if T >= limit() then return param.mu_k * param.mass * g end end,
-      active = function() return touch.state == "slipping" end },
+      active = function() return touch.slipping == 1 end },
   } }
 -- Gripping, the rim turns as fast as the axle moves (ω·r = v); spinning, it runs ahead.
 probe { "rim_speed", unit = "m/s", read = { wheel, "omega", scale = -radius } }

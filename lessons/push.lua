@@ -53,9 +53,9 @@ local N = mass * g
 plot { "Friction against the lesson's push", kind = "xy", x = "push", y = { "friction_force" },
   theory = {
     { "sticking: f = −F, F ≤ μs·N", function(F) if F <= math.max(param.mu_s, param.mu_k) * N then return -F end end,
-      active = function() return touch.state ~= "slipping" end },
+      active = function() return touch.slipping ~= 1 end },
     { "sliding: f = −μk·N", function(F) if F >= param.mu_k * N then return -param.mu_k * N end end,
-      active = function() return touch.state == "slipping" end },
+      active = function() return touch.slipping == 1 end },
   } }
 
 -- Reading the record ----------------------------------------------------------------------

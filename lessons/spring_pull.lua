@@ -73,9 +73,9 @@ local N = mass * g  -- the bench holds the block up: it lies flat
 plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "friction_force" },
   theory = {
     { "sticking: f = −F, |F| ≤ μs·N", function(F) if math.abs(F) <= param.mu_s * N then return -F end end,
-      active = function() return touch.state ~= "slipping" end },
+      active = function() return touch.slipping ~= 1 end },
     { "sliding: f = −μk·N", function(F) return -param.mu_k * N end,
-      active = function() return touch.state == "slipping" end },
+      active = function() return touch.slipping == 1 end },
   } }
 
 -- Reading the record ----------------------------------------------------------------------

@@ -219,6 +219,7 @@ void FrictionListener::settle(ContactRecord& r) {
   r.normal_force = normal_impulse / step_;
   if (rule.explicit_dry_force == nullptr) r.friction_force = tangent_impulse / step_;
   r.sliding_velocity = sliding_end;
+  r.step = step_;
   work_.friction += r.explicit_impulse * sliding_end;
   r.explicit_impulse = 0.0;
 
