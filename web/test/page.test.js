@@ -133,6 +133,28 @@ async function drag(page, from, to, steps = 10) {
 }
 // The help panel a first visit opens with covers the lesson's controls: F1 closes it, as a
 // teacher would.
+// The push lesson in a page of its own, its help closed and the editor open on it.
+async function openEditorOnPush() {
+  const page = await openPage(site + '#lesson=push');
+  await closeHelp(page);
+  await page.click('#edit');
+  await page.waitForSelector('#editor.open');
+  return page;
+}
+// Types `text` over a field's whole value (Ctrl+A, then the keys at a hand's pace) and Enter.
+async function typeValue(page, control, text) {
+  await click(page, control);
+  await page.keyboard.down('Control');
+  await frame();
+  await page.keyboard.press('a');
+  await frame();
+  await page.keyboard.up('Control');
+  await frame();
+  await page.keyboard.type(text, { delay: 50 });
+  await frame();
+  await page.keyboard.press('Enter');
+  await settled(page);
+}
 async function closeHelp(page) {
   if (await number(page, 'frictionlab_help_shown')) await page.keyboard.press('F1');
   await settled(page);
@@ -179,17 +201,7 @@ test('push with predictions: a slider dragged, a value typed, a prediction, play
   await drag(page, slider, { x: slider.x + 1500, y: slider.y });
   assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '10');
   // Type an exact value: push_rate 5 N/s.
-  await click(page, 'push_rate value');
-  await page.keyboard.down('Control');
-  await frame();
-  await page.keyboard.press('a');
-  await frame();
-  await page.keyboard.up('Control');
-  await frame();
-  await page.keyboard.type('5', { delay: 50 });
-  await frame();
-  await page.keyboard.press('Enter');
-  await settled(page);
+  await typeValue(page, 'push_rate value', '5');
   assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '5');
   // The class predicts the breakaway push before Play; the theory stays hidden until revealed.
   assert.equal(await number(page, 'frictionlab_theory_hidden'), 1);
@@ -211,10 +223,7 @@ test('push with predictions: a slider dragged, a value typed, a prediction, play
 });
 
 test('a student edits push into a mistake (message and line shown), back, and finds the copy after a reload', async () => {
-  const page = await openPage(site + '#lesson=push');
-  await closeHelp(page);
-  await page.click('#edit');
-  await page.waitForSelector('#editor.open');
+  const page = await openEditorOnPush();
   const original = await page.$eval('#source', (source) => source.value);
   assert.match(original, /parameter \{ "mass"/);
   // Line 26 holds the mass parameter: break it.
@@ -278,10 +287,7 @@ function noInternalPaths(text) {
 }
 
 test('a script error while the lesson runs is marked in the editor, by the student\'s file name, theory hidden', async () => {
-  const page = await openPage(site + '#lesson=push');
-  await closeHelp(page);
-  await page.click('#edit');
-  await page.waitForSelector('#editor.open');
+  const page = await openEditorOnPush();
   const original = await sourceText(page);
   // The script loads; its measured function fails only once the run is past half a second.
   const failing = original.replace('  measured = breakaway_push,',
@@ -339,16 +345,7 @@ test('a plot\'s theory curve failing on a slider\'s value is marked in the edito
   await page.click('#apply');
   await settled(page);
   assert.equal(await page.$eval('#mistake', (element) => element.className), '', 'the script did not load');
-  await click(page, 'mu_s value');
-  await page.keyboard.down('Control');
-  await frame();
-  await page.keyboard.press('a');
-  await frame();
-  await page.keyboard.up('Control');
-  await frame();
-  await page.keyboard.type('0.6', { delay: 50 });
-  await frame();
-  await page.keyboard.press('Enter');
+  await typeValue(page, 'mu_s value', '0.6');
   await page.waitForSelector('#mistake.shown', { timeout: 30000 });
   await settled(page);
   const mistake = await page.$eval('#mistake', (element) => element.textContent);
@@ -360,10 +357,7 @@ test('a plot\'s theory curve failing on a slider\'s value is marked in the edito
 });
 
 test('a failed Apply keeps the last good version as the student\'s lesson and the typed text as a marked draft; rename, delete', async () => {
-  const page = await openPage(site + '#lesson=push');
-  await closeHelp(page);
-  await page.click('#edit');
-  await page.waitForSelector('#editor.open');
+  const page = await openEditorOnPush();
   const original = await sourceText(page);
   // A first Apply that fails leaves no lesson in Your lessons, only the draft.
   const broken = original.replace('parameter { "mass", 1.0, min = 0.1, max = 10,', 'parameter { "mass", 1.0, min = 0.1, max = 10');
@@ -427,10 +421,7 @@ test('a failed Apply keeps the last good version as the student\'s lesson and th
 });
 
 test('another lesson chosen in the window while the editor is open is the one the editor shows', async () => {
-  const page = await openPage(site + '#lesson=push');
-  await closeHelp(page);
-  await page.click('#edit');
-  await page.waitForSelector('#editor.open');
+  const page = await openEditorOnPush();
   const typed = (await sourceText(page)) + '\n-- a note not yet applied\n';
   await setSource(page, typed);
   await click(page, 'Lesson menu');
@@ -487,28 +478,43 @@ test('the page\'s bar and editor follow the dark theme; the Lesson menu speaks o
   await page.close();
 });
 
+// Opening a downloaded copy of a lesson the student already has (my_push.lua) brings it in
+// beside the one they have, never over it.
+test('a file opened under the name of one of the student\'s lessons comes in beside it', async () => {
+  const page = await openEditorOnPush();
+  const original = await sourceText(page);
+  await page.click('#apply');
+  await settled(page);
+  assert.match(await call(page, 'frictionlab_lesson_path'), /\/my_push\.lua$/);
+  const folder = fs.mkdtempSync(path.join(shots, 'upload-'));
+  const upload = path.join(folder, 'my_push.lua');
+  fs.writeFileSync(upload, original.replace('parameter { "mass", 1.0,', 'parameter { "mass", 3.0,'));
+  const input = await page.$('#open-file');
+  await input.uploadFile(upload);
+  await page.waitForFunction(() => /my_push_2\.lua$/.test(Module.ccall('frictionlab_lesson_path', 'string', [], [])), { timeout: 20000 });
+  await settled(page);
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '3');
+  assert.match(await page.$eval('#message', (message) => message.textContent), /you have a lesson named my_push\.lua, so this one is my_push_2\.lua/);
+  const kept = await page.evaluate(() => FS.readFile('/home/web_user/.local/share/frictionlab/lessons/my_push.lua', { encoding: 'utf8' }));
+  assert.equal(kept, original, 'the student\'s my_push.lua was overwritten');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
 test('typed values and predictions survive a reload of the page', async () => {
   const page = await openPage(site + '#lesson=push');
   await closeHelp(page);
   // Nothing changed yet: a teacher's link stays as it was given.
   assert.equal(await page.evaluate(() => location.hash), '#lesson=push');
-  await click(page, 'push_rate value');
-  await page.keyboard.down('Control');
-  await frame();
-  await page.keyboard.press('a');
-  await frame();
-  await page.keyboard.up('Control');
-  await frame();
-  await page.keyboard.type('5', { delay: 50 });
-  await frame();
-  await page.keyboard.press('Enter');
-  await settled(page);
+  await typeValue(page, 'push_rate value', '5');
   await click(page, 'prediction breakaway push');
   await page.keyboard.type('39', { delay: 50 });
   await frame();
   await page.keyboard.press('Enter');
   await settled(page);
-  assert.match(await page.evaluate(() => location.hash), /^#setup=/);
+  // The address is written once the values rest (0.4 s), not every frame of a drag.
+  await page.waitForFunction(() => location.hash.startsWith('#setup=') &&
+                                   decodeURIComponent(location.hash).includes('predict breakaway push = 39'), { timeout: 10000 });
   await page.reload();
   await page.waitForFunction(() => typeof Module !== 'undefined' && Module.calledRun && Module._frictionlab_frames_drawn() > 0,
                              { timeout: 60000 });
