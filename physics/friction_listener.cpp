@@ -137,7 +137,10 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   }
   contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
   r.before_known = !r.fresh;
-  r.sliding_before = r.sliding_velocity;
+  r.driven_sliding_before = r.driven_sliding;
+  r.driven_sliding = 0.0;
+  if (r.body_b->GetType() == b2_kinematicBody) r.driven_sliding += b2Dot(point_velocity(r.body_b, r.point), t);
+  if (r.body_a->GetType() == b2_kinematicBody) r.driven_sliding -= b2Dot(point_velocity(r.body_a, r.point), t);
   r.fresh = false;
   r.solving = true;
 }

@@ -46,11 +46,13 @@ struct ContactRecord {
   double friction_force = 0.0;     // N, on B along the tangent (normal rotated -90°)
   double damping_force = 0.0;      // N, viscous + quadratic, on B along the tangent
   double sliding_velocity = 0.0;   // m/s, B relative to A along the tangent, end of step
-  // m/s, sliding_velocity as the step before left it, kept by PreSolve (when known: not in a
-  // contact's first step). A driven body's velocity is set between steps, so the start of this
-  // step's sliding less this is what the drive (and the drag applied before the step) did.
-  double sliding_before = 0.0;
-  bool before_known = false;
+  bool before_known = false;      // the contact was solved in the step before too
+  // m/s, the driven (kinematic) bodies' share of the sliding at the start of this step and of
+  // the step before (B's point velocity along the tangent less A's, counting only a driven
+  // body's): what the drive alone did to the sliding between steps, apart from corrections,
+  // drag and scripts that also change the bodies' velocities there.
+  double driven_sliding = 0.0;
+  double driven_sliding_before = 0.0;
   double point_normal_force[b2_maxManifoldPoints] = {0.0, 0.0};  // N, how the load is shared
   // Per manifold point, at the start of the solve: the solver's lever arms and velocities.
   b2Vec2 world_points[b2_maxManifoldPoints];

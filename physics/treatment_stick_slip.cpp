@@ -169,19 +169,20 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   // itself (a spring stopping a block with mu_k = 0 pushes back with exactly mu_s·N) it holds,
   // and were it a hair above, the next step's stuck solve would find that out.
   const double limit = breakaway_coefficient(pair) * normal_force * (1.0 + stop_tolerance);
-  // Sliding the new way already when the step began: the reversal came between steps, where
-  // only a driven (kinematic) body's velocity changes, and the solver's kinetic friction has
-  // opposed the new sliding all through this step, as Coulomb's law has it for a block that
-  // slides on the other way. Whether static friction could have held it instead depends on the
-  // drive too: what it did to the sliding between the last step's end and this one's start
-  // (less the drag applied before the step, which is 0 held) counts among the other forces.
+  // Sliding the new way already when the step began: the reversal came between steps, where a
+  // driven (kinematic) body's velocity is set, and the solver's kinetic friction has opposed
+  // the new sliding all through this step, as Coulomb's law has it for a block that slides on
+  // the other way. Whether static friction could have held it instead depends on the drive
+  // too: what the driven body's change of velocity between the steps did to the sliding counts
+  // among the other forces. Only the driven body's own change: a breakaway correction, drag or
+  // a script's velocity applied between the steps is no force the contact must hold against.
   // Sliding on, nothing is owed; held, the step ends with B at rest on A. (Taken for a stop
   // inside the step, B was dragged to A's new speed at every reversal: by a·h = 0.125 m/s on a
   // plank shaken at 30 m/s², 40 times what mu_s·N gives in a step at mu_s 0.066; ΔK off by
   // 2.4 J in 5 s.)
   if (start * r.slip_direction < 0.0) {
     const bool driven = r.body_a->GetType() == b2_kinematicBody || r.body_b->GetType() == b2_kinematicBody;
-    const double drive = driven && r.before_known ? mass * (start - r.sliding_before) / h - r.damping_force : 0.0;
+    const double drive = driven && r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
     if (std::abs(other + drive) > limit) {
       r.state = ContactState::slipping;
       r.slip_direction = static_cast<float>(start > 0.0 ? 1.0 : -1.0);
