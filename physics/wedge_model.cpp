@@ -81,6 +81,28 @@ class Solver {
  public:
   Solver(const WedgeDrive& drive, WedgeLaw law) : drive_(drive), law_(law) {}
 
+  // The drive at one time, its sines and cosines taken once: a step of RK4 asks the rate four
+  // times, and each rate asked the drive for them a dozen times over (two thirds of a wedge
+  // check's time was sin and cos). The same expressions as WedgeDrive's, so the same numbers.
+  struct DriveAt {
+    double t = std::nan("");
+    double sin_theta = 0, cos_theta = 0, acceleration = 0, rate = 0, spin_up = 0, driving_force = 0, normal_force = 0;
+  };
+  const DriveAt& at(double t) const {
+    if (t == at_.t) return at_;
+    const double swing = std::sin(drive_.omega * t);
+    const double theta = drive_.theta0 * swing;
+    at_.t = t;
+    at_.sin_theta = std::sin(theta);
+    at_.cos_theta = std::cos(theta);
+    at_.acceleration = drive_.acceleration(t);
+    at_.rate = drive_.rotation ? drive_.angular_velocity(t) : 0.0;
+    at_.spin_up = -drive_.theta0 * drive_.omega * drive_.omega * swing;
+    at_.driving_force = drive_.mass * (drive_.g * at_.sin_theta + at_.acceleration * at_.cos_theta);
+    at_.normal_force = drive_.mass * (drive_.g * at_.cos_theta - at_.acceleration * at_.sin_theta);
+    return at_;
+  }
+
   // The turning frame's accelerations on the block's centre (0 without rotation): along the
   // slope (down positive) and away from the surface, split into the parts that do work
   // (centrifugal and Euler) and Coriolis, which does none.
@@ -89,7 +111,7 @@ class Solver {
   };
   Turning turning(double t, const Vector& y) const {
     if (!drive_.rotation) return {};
-    const double rate = drive_.angular_velocity(t), spin_up = drive_.angular_acceleration(t);
+    const double rate = at(t).rate, spin_up = at(t).spin_up;
     const double rho = drive_.start - y.s;           // up the slope from the pivot
     const double z = drive_.centre_height + y.d;     // above the surface line
     // Up the slope: θ''·z + θ'²·ρ (+ 2θ'·z'); away from the surface: −θ''·ρ + θ'²·z (− 2θ'·ρ' = + 2θ'·s').
@@ -98,11 +120,11 @@ class Solver {
   // What pushes the block down the slope, and the surface's push, with the block in contact.
   double driving(double t, const Vector& y) const {
     const Turning turn = turning(t, y);
-    return drive_.driving_force(t) + drive_.mass * (turn.along + turn.coriolis_along);
+    return at(t).driving_force + drive_.mass * (turn.along + turn.coriolis_along);
   }
   double pressing(double t, const Vector& y) const {
     const Turning turn = turning(t, y);
-    return drive_.normal_force(t) - drive_.mass * (turn.across + turn.coriolis_across);
+    return at(t).normal_force - drive_.mass * (turn.across + turn.coriolis_across);
   }
 
   double friction(const Phase& phase, double t, const Vector& y) const {
@@ -116,8 +138,8 @@ class Solver {
 
   Vector rate(const Phase& phase, double t, const Vector& y) const {
     if (phase.contact == WedgeContact::stick) return {};
-    const double m = drive_.mass, theta = drive_.angle(t), a = drive_.acceleration(t);
-    const double sin_t = std::sin(theta), cos_t = std::cos(theta);
+    const double m = drive_.mass, a = at(t).acceleration;
+    const double sin_t = at(t).sin_theta, cos_t = at(t).cos_theta;
     const Turning turn = turning(t, y);
     Vector r;
     r.s = y.v;
@@ -131,7 +153,7 @@ class Solver {
     } else {  // flight: the frame's effective gravity across the surface too
       r.v = driving(t, y) / m;
       r.d = y.dd;
-      r.dd = -drive_.normal_force(t) / m + turn.across + turn.coriolis_across;
+      r.dd = -at(t).normal_force / m + turn.across + turn.coriolis_across;
       r.work_gravity -= m * drive_.g * cos_t * y.dd;
       r.work_pseudo += m * a * sin_t * y.dd;
       r.work_rotation += m * turn.across * y.dd;
@@ -304,6 +326,7 @@ class Solver {
 
   WedgeDrive drive_;
   WedgeLaw law_;
+  mutable DriveAt at_;  // the drive at the last time asked
 };
 
 }  // namespace

@@ -66,6 +66,13 @@ PageArguments page_arguments(const std::vector<std::string>& args) {
   return given;
 }
 
+// A link's `at`: played to, at most to the end of the lesson's own run. Computed before the page
+// draws again, so an hour of simulated time asked by a link would freeze the tab for as long.
+void run_to_link_time(double seconds) {
+  if (!std::isfinite(seconds) || seconds <= 0.0) return;
+  classroom->run_to(std::min(seconds, classroom->playback().lesson().duration()));
+}
+
 ui::ClassroomOptions page_options(const PageArguments& given, std::string& problem) {
   const std::string& lesson = given.lesson;
   const std::string& setup = given.setup;
@@ -123,7 +130,7 @@ int main(int argc, char** argv) {
     plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
     classroom = std::make_unique<ui::Classroom>(plain);
   }
-  if (given.at > 0.0) classroom->run_to(given.at);
+  run_to_link_time(given.at);
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
   web::PageRun run;
   run.link_setup_path = link_setup;
@@ -185,7 +192,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_link_lesson(const char* name_o
 
 // A link's `at`: the run played to that time, as when the page opens from the link.
 EMSCRIPTEN_KEEPALIVE void frictionlab_run_to(double seconds) {
-  if (std::isfinite(seconds) && seconds > 0.0) classroom->run_to(std::min(seconds, 3600.0));
+  run_to_link_time(seconds);
   frictionlab_wake();
 }
 

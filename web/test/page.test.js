@@ -575,6 +575,11 @@ test('a link followed in an open page opens its lesson fresh, in projector mode,
   await page.waitForFunction(() => /incline\.lua$/.test(Module.ccall('frictionlab_lesson_path', 'string', [], [])), { timeout: 10000 });
   await settled(page);
   assert.equal(await number(page, 'frictionlab_projector'), 1);
+  // A time past the lesson's run plays to its end, not an hour of simulation that freezes the tab.
+  await page.evaluate(() => { location.hash = '#lesson=incline&at=3000'; });
+  await page.waitForFunction(() => Module._frictionlab_time() > 0, { timeout: 20000 });
+  await settled(page);
+  assert.ok(Math.abs((await number(page, 'frictionlab_time')) - 1) < 0.01, 'at=3000 did not stop at the end of incline\'s 1 s run');
   assert.deepEqual(page.problems, []);
   await page.close();
 });
