@@ -181,8 +181,8 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   // plank shaken at 30 m/s², 40 times what mu_s·N gives in a step at mu_s 0.066; ΔK off by
   // 2.4 J in 5 s.)
   if (start * r.slip_direction < 0.0) {
-    const bool driven = r.body_a->GetType() == b2_kinematicBody || r.body_b->GetType() == b2_kinematicBody;
-    const double drive = driven && r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
+    // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
+    const double drive = r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
     if (std::abs(other + drive) > limit) {
       r.state = ContactState::slipping;
       r.slip_direction = static_cast<float>(start > 0.0 ? 1.0 : -1.0);

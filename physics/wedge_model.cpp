@@ -12,13 +12,20 @@ double WedgeDrive::angle(double t) const { return theta0 * std::sin(omega * t); 
 double WedgeDrive::angular_velocity(double t) const { return theta0 * omega * std::cos(omega * t); }
 double WedgeDrive::angular_acceleration(double t) const { return -theta0 * omega * omega * std::sin(omega * t); }
 double WedgeDrive::acceleration(double t) const { return a_x * std::cos(a_x_omega * t); }
+// F and N from the surface's angle (its sine and cosine) and the wedge's acceleration a.
+double WedgeDrive::driving_force_at(double sin_theta, double cos_theta, double a) const {
+  return mass * (g * sin_theta + a * cos_theta);
+}
+double WedgeDrive::normal_force_at(double sin_theta, double cos_theta, double a) const {
+  return mass * (g * cos_theta - a * sin_theta);
+}
 double WedgeDrive::driving_force(double t) const {
   const double theta = angle(t);
-  return mass * (g * std::sin(theta) + acceleration(t) * std::cos(theta));
+  return driving_force_at(std::sin(theta), std::cos(theta), acceleration(t));
 }
 double WedgeDrive::normal_force(double t) const {
   const double theta = angle(t);
-  return mass * (g * std::cos(theta) - acceleration(t) * std::sin(theta));
+  return normal_force_at(std::sin(theta), std::cos(theta), acceleration(t));
 }
 // From rest at x = 0: x'' = a_x·cos(ω_a·t) gives x' = a_x·sin(ω_a·t)/ω_a, x = a_x·(1 − cos(ω_a·t))/ω_a²,
 // and ½·a_x·t² in the limit ω_a → 0. 1 − cos is written as 2·sin²(·/2) so small ω_a·t loses nothing.
@@ -83,7 +90,7 @@ class Solver {
 
   // The drive at one time, its sines and cosines taken once: a step of RK4 asks the rate four
   // times, and each rate asked the drive for them a dozen times over (two thirds of a wedge
-  // check's time was sin and cos). The same expressions as WedgeDrive's, so the same numbers.
+  // check's time was sin and cos). WedgeDrive's own formulas, so the same numbers.
   struct DriveAt {
     double t = std::nan("");
     double sin_theta = 0, cos_theta = 0, acceleration = 0, rate = 0, spin_up = 0, driving_force = 0, normal_force = 0;
@@ -98,8 +105,8 @@ class Solver {
     at_.acceleration = drive_.acceleration(t);
     at_.rate = drive_.rotation ? drive_.angular_velocity(t) : 0.0;
     at_.spin_up = -drive_.theta0 * drive_.omega * drive_.omega * swing;
-    at_.driving_force = drive_.mass * (drive_.g * at_.sin_theta + at_.acceleration * at_.cos_theta);
-    at_.normal_force = drive_.mass * (drive_.g * at_.cos_theta - at_.acceleration * at_.sin_theta);
+    at_.driving_force = drive_.driving_force_at(at_.sin_theta, at_.cos_theta, at_.acceleration);
+    at_.normal_force = drive_.normal_force_at(at_.sin_theta, at_.cos_theta, at_.acceleration);
     return at_;
   }
 

@@ -42,6 +42,9 @@ struct WedgeDrive {
   double acceleration(double t) const;              // a(t), m/s², along +x
   double driving_force(double t) const;             // F(t), N, down the slope
   double normal_force(double t) const;              // N(t), N; negative: the wedge falls away faster than the block
+  // The same from sin θ, cos θ and a(t) already worked out (the solver takes them once a time).
+  double driving_force_at(double sin_theta, double cos_theta, double a) const;
+  double normal_force_at(double sin_theta, double cos_theta, double a) const;
   // Where the wedge's pivot is and how fast it moves, starting at rest at x = 0.
   double wedge_position(double t) const;
   double wedge_velocity(double t) const;
