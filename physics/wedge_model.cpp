@@ -116,28 +116,35 @@ class Solver {
   struct Turning {
     double along = 0, across = 0, coriolis_along = 0, coriolis_across = 0;
   };
-  Turning turning(double t, const Vector& y) const {
+  Turning turning(const DriveAt& drive, const Vector& y) const {
     if (!drive_.rotation) return {};
-    const double rate = at(t).rate, spin_up = at(t).spin_up;
+    const double rate = drive.rate, spin_up = drive.spin_up;
     const double rho = drive_.start - y.s;           // up the slope from the pivot
     const double z = drive_.centre_height + y.d;     // above the surface line
     // Up the slope: θ''·z + θ'²·ρ (+ 2θ'·z'); away from the surface: −θ''·ρ + θ'²·z (− 2θ'·ρ' = + 2θ'·s').
     return {-(spin_up * z + rate * rate * rho), -spin_up * rho + rate * rate * z, -2.0 * rate * y.dd, 2.0 * rate * y.v};
   }
-  // What pushes the block down the slope, and the surface's push, with the block in contact.
-  double driving(double t, const Vector& y) const {
-    const Turning turn = turning(t, y);
-    return at(t).driving_force + drive_.mass * (turn.along + turn.coriolis_along);
+  // What pushes the block down the slope and the surface's push, with the block in contact, and
+  // the turning frame's part in them: worked out once for each rate or test. In WebAssembly
+  // these small methods were not inlined, and each rate worked out the turning three times.
+  struct Forces {
+    DriveAt drive;
+    Turning turn;
+    double driving = 0, pressing = 0;
+  };
+  Forces forces(double t, const Vector& y) const {
+    const DriveAt& drive = at(t);
+    const Turning turn = turning(drive, y);
+    return {drive, turn, drive.driving_force + drive_.mass * (turn.along + turn.coriolis_along),
+            drive.normal_force - drive_.mass * (turn.across + turn.coriolis_across)};
   }
-  double pressing(double t, const Vector& y) const {
-    const Turning turn = turning(t, y);
-    return at(t).normal_force - drive_.mass * (turn.across + turn.coriolis_across);
-  }
+  double driving(double t, const Vector& y) const { return forces(t, y).driving; }
+  double pressing(double t, const Vector& y) const { return forces(t, y).pressing; }
 
-  double friction(const Phase& phase, double t, const Vector& y) const {
+  double friction(const Phase& phase, const Forces& f) const {
     switch (phase.contact) {
-      case WedgeContact::stick: return -driving(t, y);
-      case WedgeContact::slip: return -phase.sigma * drive_.mu_k * pressing(t, y);
+      case WedgeContact::stick: return -f.driving;
+      case WedgeContact::slip: return -phase.sigma * drive_.mu_k * f.pressing;
       case WedgeContact::flight: return 0.0;
     }
     return 0.0;
@@ -145,22 +152,23 @@ class Solver {
 
   Vector rate(const Phase& phase, double t, const Vector& y) const {
     if (phase.contact == WedgeContact::stick) return {};
-    const double m = drive_.mass, a = at(t).acceleration;
-    const double sin_t = at(t).sin_theta, cos_t = at(t).cos_theta;
-    const Turning turn = turning(t, y);
+    const Forces f = forces(t, y);
+    const double m = drive_.mass, a = f.drive.acceleration;
+    const double sin_t = f.drive.sin_theta, cos_t = f.drive.cos_theta;
+    const Turning& turn = f.turn;
     Vector r;
     r.s = y.v;
     r.work_gravity = m * drive_.g * sin_t * y.v;
     r.work_pseudo = m * a * cos_t * y.v;
     r.work_rotation = m * turn.along * y.v;
     if (phase.contact == WedgeContact::slip) {
-      const double f = friction(phase, t, y);
-      r.v = (driving(t, y) + f) / m;
-      r.work_friction = f * y.v;
+      const double friction_force = friction(phase, f);
+      r.v = (f.driving + friction_force) / m;
+      r.work_friction = friction_force * y.v;
     } else {  // flight: the frame's effective gravity across the surface too
-      r.v = driving(t, y) / m;
+      r.v = f.driving / m;
       r.d = y.dd;
-      r.dd = -at(t).normal_force / m + turn.across + turn.coriolis_across;
+      r.dd = -f.drive.normal_force / m + turn.across + turn.coriolis_across;
       r.work_gravity -= m * drive_.g * cos_t * y.dd;
       r.work_pseudo += m * a * sin_t * y.dd;
       r.work_rotation += m * turn.across * y.dd;
@@ -176,19 +184,23 @@ class Solver {
     return y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
   }
 
-  double breakaway_limit(double t, const Vector& y) const { return std::max(drive_.mu_s, drive_.mu_k) * pressing(t, y); }
+  double breakaway_limit(double pressing_force) const { return std::max(drive_.mu_s, drive_.mu_k) * pressing_force; }
 
   // Whether the phase has ended by (t, y).
   bool ended(const Phase& phase, double t, const Vector& y) const {
     switch (phase.contact) {
-      case WedgeContact::stick:
-        return pressing(t, y) < 0.0 || std::abs(driving(t, y)) > breakaway_limit(t, y);
-      case WedgeContact::slip:
-        if (pressing(t, y) < 0.0) return true;
+      case WedgeContact::stick: {
+        const Forces f = forces(t, y);
+        return f.pressing < 0.0 || std::abs(f.driving) > breakaway_limit(f.pressing);
+      }
+      case WedgeContact::slip: {
+        const Forces f = forces(t, y);
+        if (f.pressing < 0.0) return true;
         if (law_ == WedgeLaw::coulomb) return phase.sigma * y.v <= 0.0;
         // The article's friction, −sgn(F)·μk·N, is none while F = 0 (σ = 0): that phase ends
         // when F takes a sign, the others when F changes it.
-        return phase.sigma == 0.0 ? driving(t, y) != 0.0 : phase.sigma * driving(t, y) < 0.0;
+        return phase.sigma == 0.0 ? f.driving != 0.0 : phase.sigma * f.driving < 0.0;
+      }
       case WedgeContact::flight: return y.d < 0.0;
     }
     return false;
@@ -196,7 +208,8 @@ class Solver {
 
   // The phase a block in contact at t enters, touching with slide rate v (v = 0: at rest on it).
   Phase contact_phase(double t, const Vector& y) const {
-    const double force = driving(t, y);
+    const Forces f = forces(t, y);
+    const double force = f.driving;
     if (law_ == WedgeLaw::article) {
       // At F = 0 exactly, the sign F takes next; none if it stays 0 (a still, level surface).
       if (force != 0.0) return {WedgeContact::slip, sign_of(force)};
@@ -204,7 +217,7 @@ class Solver {
       return {WedgeContact::slip, next == 0.0 ? 0.0 : sign_of(next)};
     }
     if (y.v != 0.0) return {WedgeContact::slip, sign_of(y.v)};
-    if (std::abs(force) <= breakaway_limit(t, y)) return {WedgeContact::stick, 1.0};
+    if (std::abs(force) <= breakaway_limit(f.pressing)) return {WedgeContact::stick, 1.0};
     return {WedgeContact::slip, sign_of(force)};
   }
 
@@ -213,8 +226,9 @@ class Solver {
     state.t = t;
     state.slide = y.s, state.speed = y.v, state.height = y.d, state.height_rate = y.dd;
     state.contact = phase.contact;
-    state.normal = phase.contact == WedgeContact::flight ? 0.0 : pressing(t, y);
-    state.friction = friction(phase, t, y);
+    const Forces f = forces(t, y);
+    state.normal = phase.contact == WedgeContact::flight ? 0.0 : f.pressing;
+    state.friction = friction(phase, f);
     state.work_gravity = y.work_gravity, state.work_pseudo = y.work_pseudo, state.work_friction = y.work_friction;
     state.work_rotation = y.work_rotation;
     state.work_landings = work_landings;
