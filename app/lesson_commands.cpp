@@ -185,13 +185,14 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
                           const StepSettings& settings, const std::vector<std::string>& step_options, int count,
                           std::uint64_t seed, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(name);
-  const lessons::ScriptText script{path, lessons::read_script(path)};
+  lessons::ScriptText script{path, lessons::read_script(path), ""};
   std::vector<lessons::Parameter> sliders;
   {
     const Lesson defaults(script, fixed, settings);  // the sliders as the script declares them
     for (const lessons::Parameter& parameter : defaults.parameters()) {
       if (fixed.count(parameter.name) == 0) sliders.push_back(parameter);
     }
+    script = defaults.script();  // compiled: every setting after this one skips reading the text
   }
   // The lesson's name salts the seed, so that two lessons checked together draw differently.
   std::uint64_t salt = 1469598103934665603ULL;

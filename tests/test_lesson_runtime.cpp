@@ -1206,6 +1206,67 @@ TEST(LessonSandbox, AByteOrderMarkAndAHashLineAreSkipped) {
   EXPECT_NO_THROW(Lesson{clean.path()});
 }
 
+// A lesson reads its text once and rebuilds from the compiled script (a slider's change,
+// check --random's settings): those builds run the same code, and their errors name the same
+// file and line as the text's.
+TEST(LessonSandbox, RebuildsRunTheCompiledScriptWithTheTextsLines) {
+  ScriptFile script(with_heading("local mass = parameter { \"mass\", 1, min = 0.5, max = 5, unit = \"kg\" }\n"
+                                 "if mass > 4 then error(\"too heavy for this ramp\") end\n"));
+  const std::string from_text = error_of([&] { Lesson(script.path(), {{"mass", "4.5"}}); });
+  EXPECT_EQ(from_text.rfind(script.path() + ":3: too heavy for this ramp", 0), 0u) << from_text;
+  Lesson lesson(script.path());
+  EXPECT_EQ(error_of([&] { lesson.set("mass", "4.5"); }), from_text);
+  ScriptText compiled = lesson.script();
+  EXPECT_FALSE(compiled.compiled.empty());
+  EXPECT_EQ(error_of([&] { Lesson(compiled, {{"mass", "4.5"}}, {}); }), from_text);
+  // What runs is the compiled script, not its text read again.
+  compiled.source = "this text is not read";
+  const Lesson again(compiled, {{"mass", "2"}}, {});
+  EXPECT_EQ(again.title(), "test");
+  EXPECT_EQ(again.parameter("mass").value, 2.0);
+}
+
+// The guide's table of instants (lessons/README.md, 3.8), as a lesson's tolerance must allow
+// for them: a body falling from rest is ½·g·t·(t + h) below its start, half a step ahead of
+// ½·g·t²; the step in which a stuck contact breaks away reads μs·N and already slipping, the
+// next μk·N.
+TEST(LessonRuntime, ReadingsBelongToTheInstantsTheGuideGives) {
+  ScriptFile falling(with_heading(R"(
+local stone = box { "stone", material = "wood", width = 0.1, height = 0.1, x = 0, y = 10 }
+probe { "height", unit = "m", read = { stone, "y" } }
+)"));
+  Lesson fall(falling.path());
+  const double h = fall.scene().frame_step();
+  run_for(fall, 1.0);
+  const double t = fall.scene().time(), gravity = -fall.scene().world().GetGravity().y;
+  const double dropped = 10.0 - probe_now(fall, "height");
+  // Float positions and velocities, each step rounding each by at most half an ulp (ulp 9.5e-7
+  // for numbers below 16): n·ulp/2 on the height, and h·n²/2·ulp/2 from the velocity's.
+  const double n = t / h, rounding = n * 4.8e-7 + h * n * n / 2.0 * 4.8e-7;
+  EXPECT_NEAR(dropped, 0.5 * gravity * t * (t + h), rounding);
+  EXPECT_GT(dropped - 0.5 * gravity * t * t, 0.5 * gravity * h * t - rounding);  // 2 cm at 240 Hz
+
+  ScriptFile pushed(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+local table_top = ground { "table", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.1, on = table_top, at = 0, mass = 1 }
+force { "push", on = block, grows = { 2, 0 } }
+local touch = contact(block, table_top)
+probe { "friction", unit = "N", read = { touch, "fx" } }
+probe { "normal", unit = "N", read = { touch, "normal" } }
+probe { "slipping", read = { touch, "slipping" } }
+)"));
+  Lesson push(pushed.path());
+  const auto& slipping = push.scene().probe("slipping").history;
+  while (slipping.empty() || slipping.back() == 0.0) push.step();
+  const double breakaway_friction = -probe_now(push, "friction"), normal = probe_now(push, "normal");
+  push.step();
+  const double next_friction = -probe_now(push, "friction");
+  // Float sums of a few impulses: a few float ulps of the 4 N they come to.
+  EXPECT_NEAR(breakaway_friction, 0.4 * normal, 4e-6);
+  EXPECT_NEAR(next_friction, 0.3 * normal, 4e-6);
+}
+
 TEST(LessonSandbox, AnEndlessLoopAndARunawayTableEndWithAnError) {
   ScriptFile loop(with_heading("local n = 0\nwhile true do n = n + 1 end\n"));
   const std::string looping = error_of([&] { Lesson{loop.path()}; });

@@ -192,20 +192,25 @@ std::string read_script(const std::string& path) {
 }
 
 Lesson::Lesson(std::string path, std::map<std::string, std::string> overrides, StepSettings settings)
-    : Lesson(ScriptText{path, read_script(path)}, std::move(overrides), settings) {}
+    : Lesson(ScriptText{path, read_script(path), ""}, std::move(overrides), settings) {}
 
 Lesson::Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings)
-    : path_(script.path), overrides_(std::move(overrides)), settings_(settings) {
+    : path_(script.path), source_(script.source), compiled_(script.compiled), overrides_(std::move(overrides)),
+      settings_(settings) {
   validate(settings_);
-  auto first = build(script.source, true);
-  replace(std::move(first), script.source);
+  replace(build(source_, compiled_, true));
 }
 
 Lesson::~Lesson() = default;
 
-std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool strict) {
+std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, std::string& compiled, bool strict) {
   auto next = std::make_unique<LessonBuild>(path_, overrides_, strict, settings_);
-  next->sandbox.load(source, path_);
+  if (compiled.empty()) {
+    next->sandbox.load(source, path_);
+    compiled = next->sandbox.compiled();
+  } else {
+    next->sandbox.load_compiled(compiled, path_);
+  }
   next->sandbox.call(0, 0);
   next->building = false;
   declare_preset_pairs(*next);
@@ -255,10 +260,9 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, bool stric
   return next;
 }
 
-void Lesson::replace(std::unique_ptr<LessonBuild> next, std::string source) {
+void Lesson::replace(std::unique_ptr<LessonBuild> next) {
   overrides_ = next->overrides;  // what the new build kept of them
   current_ = std::move(next);
-  source_ = std::move(source);
   failed_ = false;
   last_error_.clear();
 }
@@ -450,7 +454,7 @@ void Lesson::set(const std::string& name, const std::string& text) {
   const auto saved = overrides_;
   overrides_[name] = text;
   try {
-    replace(build(source_, false), source_);
+    rebuild();
   } catch (...) {
     overrides_ = saved;
     throw;
@@ -460,8 +464,10 @@ void Lesson::set(const std::string& name, const std::string& text) {
 bool Lesson::reload() {
   try {
     std::string source = read_script(path_);
-    auto next = build(source, false);
-    replace(std::move(next), std::move(source));
+    std::string compiled;
+    replace(build(source, compiled, false));
+    source_ = std::move(source);
+    compiled_ = std::move(compiled);
     return true;
   } catch (const InvalidInput& error) {
     last_error_ = error.what();
@@ -469,14 +475,16 @@ bool Lesson::reload() {
   }
 }
 
-void Lesson::reset() { replace(build(source_, false), source_); }
+void Lesson::rebuild() { replace(build(source_, compiled_, false)); }
+
+void Lesson::reset() { rebuild(); }
 
 void Lesson::set_settings(const StepSettings& settings) {
   validate(settings);
   const StepSettings saved = settings_;
   settings_ = settings;
   try {
-    replace(build(source_, false), source_);
+    rebuild();
   } catch (...) {
     settings_ = saved;
     throw;

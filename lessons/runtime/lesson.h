@@ -144,6 +144,7 @@ struct LessonBuild;  // one run of the script: its sandbox, scene and declaratio
 struct ScriptText {
   std::string path;
   std::string source;
+  std::string compiled;  // the source as bytecode (Sandbox::compiled), once a run has read it; "" before
 };
 
 class Lesson {
@@ -154,6 +155,8 @@ class Lesson {
   // The same from a script already read: many runs of one script (check --random) read it
   // once, and all of them run the same text even if the file changes meanwhile.
   Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings);
+  // The script as this lesson runs it, its text compiled (for more runs of it: check --random).
+  ScriptText script() const { return {path_, source_, compiled_}; }
   ~Lesson();
   Lesson(const Lesson&) = delete;
   Lesson& operator=(const Lesson&) = delete;
@@ -233,11 +236,14 @@ class Lesson {
  private:
   // Runs the script in a fresh sandbox. With `strict`, a --set naming no parameter is an
   // error; a reload after an edit instead forgets values for parameters that are gone.
-  std::unique_ptr<LessonBuild> build(const std::string& source, bool strict);
-  void replace(std::unique_ptr<LessonBuild> next, std::string source);
+  // `compiled` is the source's bytecode, or "" to read the text and fill it in.
+  std::unique_ptr<LessonBuild> build(const std::string& source, std::string& compiled, bool strict);
+  void replace(std::unique_ptr<LessonBuild> next);
+  void rebuild();  // from the same text, after a value or setting changed
 
   std::string path_;
-  std::string source_;  // the text of the last good build
+  std::string source_;    // the text of the last good build
+  std::string compiled_;  // source_ compiled (Sandbox::compiled)
   std::map<std::string, std::string> overrides_;
   StepSettings settings_;
   std::unique_ptr<LessonBuild> current_;

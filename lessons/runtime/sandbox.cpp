@@ -373,6 +373,26 @@ int Sandbox::place_error(lua_State* state) {
   return 1;
 }
 
+std::string Sandbox::compiled() const {
+  std::string bytecode;
+  const auto append = [](lua_State*, const void* piece, std::size_t size, void* to) {
+    static_cast<std::string*>(to)->append(static_cast<const char*>(piece), size);
+    return 0;
+  };
+  lua_dump(state_, append, &bytecode, 0);
+  return bytecode;
+}
+
+void Sandbox::load_compiled(std::string_view bytecode, const std::string& chunk_name) {
+  chunk_name_ = chunk_name;
+  const std::string named = "@" + chunk_name;
+  if (luaL_loadbufferx(state_, bytecode.data(), bytecode.size(), named.c_str(), "b") == LUA_OK) return;
+  // Only memory can fail here: the bytecode is compiled() of a text that loaded.
+  const std::string message = lua_tostring(state_, -1) ? lua_tostring(state_, -1) : "cannot load the script";
+  lua_pop(state_, 1);
+  throw ScriptError(chunk_name + ": " + message);
+}
+
 void Sandbox::load(std::string_view source, const std::string& chunk_name) {
   chunk_name_ = chunk_name;
   // What Lua's own loadfile skips, and editors write: a UTF-8 byte-order mark, and a first line

@@ -47,6 +47,13 @@ class Sandbox {
   // Compiles `source` (text only) under `chunk_name` (the path errors will name) and leaves
   // the function on the stack. Throws ScriptError for a syntax error.
   void load(std::string_view source, const std::string& chunk_name);
+  // The function load left on the stack, as Lua bytecode with its lines and names kept, so
+  // that its errors read as the text's would. Reading (parsing) a script's text is a tenth of
+  // a short lesson's run in WebAssembly, whose number parsing is slow: runs of one text after
+  // the first (a slider's rebuild, check --random) load this instead.
+  std::string compiled() const;
+  // Loads what compiled() gave (bytecode only; never a file's) under `chunk_name`.
+  void load_compiled(std::string_view bytecode, const std::string& chunk_name);
   // Calls the function below `arguments` values on the stack with a fresh instruction budget.
   // Throws ScriptError carrying Lua's message (which starts with path:line). `results` values
   // are left on the stack.
