@@ -458,6 +458,31 @@ TEST(Classroom, TheLessonMenuListsAndOpensTheStudentsOwnLessons) {
   std::filesystem::remove_all(data);
 }
 
+// One expect row whose function raises an error is that row's "?" alone: the other rows are
+// read as ever, the error is said once, and the command line's check still fails on it.
+TEST(Playback, AnExpectRowThatFailsLeavesTheOtherRowsRead) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "first", unit = "N", predicted = function() return 1 end, measured = function() return 1 end, tolerance = 0.1 }
+expect { "broken", unit = "N", predicted = function() return 2 end,
+  measured = function() if time() > 0.05 then return nothing_here.value end end, tolerance = 0.1 }
+expect { "last", predicted = function() return "stays" end, measured = function() return "stays" end }
+)"));
+  Playback playback(script.path(), {}, {});
+  playback.run_to(0.1);
+  const LessonReadings& readings = playback.readings();
+  ASSERT_EQ(readings.expectations.size(), 3u);
+  EXPECT_FALSE(readings.expectations[0].failed);
+  EXPECT_TRUE(readings.expectations[0].passes);
+  EXPECT_TRUE(readings.expectations[1].failed);
+  EXPECT_EQ(readings.expectations[1].name, "broken");
+  EXPECT_FALSE(readings.expectations[2].failed);
+  EXPECT_TRUE(readings.expectations[2].passes);
+  EXPECT_NE(readings.error.find("nothing_here"), std::string::npos) << readings.error;
+  EXPECT_THROW(playback.lesson().expectations(), InvalidInput);
+}
+
 TEST(Classroom, ResetRestoresTheInitialState) {
   Driver driver("tipping_box");
   driver.frame();
