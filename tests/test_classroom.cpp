@@ -1308,6 +1308,33 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
   EXPECT_FALSE(driver.classroom().theory_hidden());
 }
 
+// A prediction is for the values it was made at: a value changed before Play that changes the
+// row's theory (the mass) clears that answer and says so; one that does not (how fast the push
+// grows, for the breakaway push) keeps it.
+TEST(Classroom, APredictionIsClearedWhenAValueItDependsOnChanges) {
+  Driver driver("push");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  driver.click("prediction breakaway push");
+  driver.type("4");
+  driver.press(ImGuiKey_Enter);
+  driver.frame();
+  const std::map<std::string, std::string>& answers = driver.classroom().predictions().answers;
+  ASSERT_EQ(answers.count("breakaway push"), 1u);
+  ASSERT_EQ(answers.at("breakaway push"), "4");
+  // The breakaway push is mu_s·m·g, however fast the push grows.
+  driver.playback().set_parameter("push_rate", "5");
+  driver.frame();
+  driver.frame();
+  ASSERT_EQ(answers.count("breakaway push"), 1u) << "a value the theory does not use cleared it: " << driver.classroom().status();
+  driver.playback().set_parameter("mass", "2");
+  driver.frame();
+  driver.frame();
+  EXPECT_EQ(answers.count("breakaway push"), 0u) << "the prediction for 1 kg was kept at 2 kg";
+  EXPECT_NE(driver.classroom().status().find("breakaway push"), std::string::npos) << driver.classroom().status();
+  EXPECT_TRUE(driver.classroom().theory_hidden());
+}
+
 // A second round: after the reveal the teacher changes a value and asks the class again. The
 // View menu's "Predict again" hides the theory, clears the answers and takes the run back to
 // t = 0, where the new answers are typed; before, the theory stayed up until another lesson
