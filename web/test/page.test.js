@@ -862,7 +862,9 @@ test('a changed value keeps the link\'s projector=1 and at= in the address (proj
   assert.match(hash, /&at=0\.5(&|$)/, hash);
   // Projector mode turned off: the address no longer asks for it.
   await call(page, 'frictionlab_set_projector', 0);
+  await settled(page);  // the controls laid out again at the smaller text before one is clicked
   await typeValue(page, 'push_rate value', '6');
+  assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '6');
   await page.waitForFunction(() => decodeURIComponent(location.hash).includes('set push_rate = 6'), { timeout: 10000 });
   const after = await page.evaluate(() => location.hash);
   assert.doesNotMatch(after, /projector=1/);
