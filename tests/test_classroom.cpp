@@ -458,6 +458,31 @@ TEST(Classroom, TheLessonMenuListsAndOpensTheStudentsOwnLessons) {
   std::filesystem::remove_all(data);
 }
 
+// One expect row whose function raises an error is that row's "?" alone: the other rows are
+// read as ever, the error is said once, and the command line's check still fails on it.
+TEST(Playback, AnExpectRowThatFailsLeavesTheOtherRowsRead) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "first", unit = "N", predicted = function() return 1 end, measured = function() return 1 end, tolerance = 0.1 }
+expect { "broken", unit = "N", predicted = function() return 2 end,
+  measured = function() if time() > 0.05 then return nothing_here.value end end, tolerance = 0.1 }
+expect { "last", predicted = function() return "stays" end, measured = function() return "stays" end }
+)"));
+  Playback playback(script.path(), {}, {});
+  playback.run_to(0.1);
+  const LessonReadings& readings = playback.readings();
+  ASSERT_EQ(readings.expectations.size(), 3u);
+  EXPECT_FALSE(readings.expectations[0].failed);
+  EXPECT_TRUE(readings.expectations[0].passes);
+  EXPECT_TRUE(readings.expectations[1].failed);
+  EXPECT_EQ(readings.expectations[1].name, "broken");
+  EXPECT_FALSE(readings.expectations[2].failed);
+  EXPECT_TRUE(readings.expectations[2].passes);
+  EXPECT_NE(readings.error.find("nothing_here"), std::string::npos) << readings.error;
+  EXPECT_THROW(playback.lesson().expectations(), InvalidInput);
+}
+
 TEST(Classroom, ResetRestoresTheInitialState) {
   Driver driver("tipping_box");
   driver.frame();
@@ -1281,6 +1306,33 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
   EXPECT_EQ(driver.classroom().predictions().answers["tips or slides"], "slides");
   driver.key(Key::t);
   EXPECT_FALSE(driver.classroom().theory_hidden());
+}
+
+// A prediction is for the values it was made at: a value changed before Play that changes the
+// row's theory (the mass) clears that answer and says so; one that does not (how fast the push
+// grows, for the breakaway push) keeps it.
+TEST(Classroom, APredictionIsClearedWhenAValueItDependsOnChanges) {
+  Driver driver("push");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  driver.click("prediction breakaway push");
+  driver.type("4");
+  driver.press(ImGuiKey_Enter);
+  driver.frame();
+  const std::map<std::string, std::string>& answers = driver.classroom().predictions().answers;
+  ASSERT_EQ(answers.count("breakaway push"), 1u);
+  ASSERT_EQ(answers.at("breakaway push"), "4");
+  // The breakaway push is mu_s·m·g, however fast the push grows.
+  driver.playback().set_parameter("push_rate", "5");
+  driver.frame();
+  driver.frame();
+  ASSERT_EQ(answers.count("breakaway push"), 1u) << "a value the theory does not use cleared it: " << driver.classroom().status();
+  driver.playback().set_parameter("mass", "2");
+  driver.frame();
+  driver.frame();
+  EXPECT_EQ(answers.count("breakaway push"), 0u) << "the prediction for 1 kg was kept at 2 kg";
+  EXPECT_NE(driver.classroom().status().find("breakaway push"), std::string::npos) << driver.classroom().status();
+  EXPECT_TRUE(driver.classroom().theory_hidden());
 }
 
 // A second round: after the reveal the teacher changes a value and asks the class again. The

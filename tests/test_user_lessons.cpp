@@ -74,5 +74,24 @@ TEST(UserLessons, OnlyTheLuaFilesAreListedByName) {
   fs::remove_all(data);
 }
 
+// The menu shows a lesson by its title, read from the script's text without running it; a
+// script with no title written as a plain string is shown by its file's name.
+TEST(UserLessons, EachIsListedWithItsLessonsTitle) {
+  const fs::path data = fs::temp_directory_path() / ("frictionlab_user_titles_" + std::to_string(::getpid()));
+  const ScopedEnvironment environment("XDG_DATA_HOME", data.string());
+  const fs::path folder = data / "frictionlab" / "lessons";
+  fs::create_directories(folder);
+  std::ofstream(folder / "my_push.lua") << "-- a plot's title = \"not this\"\nlocal p = plot { title = \"nor this\" }\n"
+                                          "lesson {\n  order = 3,\n  title = 'Pushing a heavy box',\n}\n";
+  std::ofstream(folder / "untitled.lua") << "lesson { title = make_title() }\n";
+  const std::vector<UserLesson> found = user_lessons();
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].title, "Pushing a heavy box");
+  EXPECT_EQ(found[1].title, "untitled");
+  EXPECT_EQ(written_title("lesson{ title = \"Incline\" }"), "Incline");
+  EXPECT_EQ(written_title("-- no lesson here\n"), "");
+  fs::remove_all(data);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -185,6 +185,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
   if (!run_played()) parameters_opened_ = false;
+  forget_outdated_predictions();
   predictions_style(style);
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_heights();

@@ -262,6 +262,7 @@ class Classroom {
   // The predictions' part of the frame: their contents and height in the theory panel, and
   // what they hide (ui/classroom_predictions.cpp).
   void predictions_style(FrameStyle& style);
+  void forget_outdated_predictions();
   void help_panel();
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);

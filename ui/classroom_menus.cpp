@@ -60,9 +60,11 @@ void Classroom::menu_bar() {
       } else {
         ImGui::TextDisabled("Your lessons, kept in this browser");
       }
+      // Titles, as the built-in lessons have them, with the file's name beside each.
       for (const UserLesson& lesson : own) {
         const bool current = playback_->lesson().path() == lesson.path;
-        if (ImGui::MenuItem(lesson.name.c_str(), nullptr, current, may_switch)) status_ = open(lesson.path);
+        const std::string file = lesson.name + ".lua";
+        if (ImGui::MenuItem(lesson.title.c_str(), file.c_str(), current, may_switch)) status_ = open(lesson.path);
         remember("user lesson " + lesson.name);
       }
     }

@@ -15,6 +15,34 @@ void Classroom::predict_again() {
   status_ = "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
 }
 
+// An answer is the class's for the values it was given at. Before the reveal, at t = 0 (where
+// answers are typed, and where R brings a run changed midway), a row whose theory is not what it
+// was when the class answered (the mass was changed, or anything else it depends on) loses its
+// answer, and the class is asked again; a value the row does not depend on keeps it. After the
+// reveal the teacher asks again with View > Predict again.
+void Classroom::forget_outdated_predictions() {
+  if (predictions_.revealed || playback_->lesson().scene().frame() != 0) return;
+  std::vector<std::string> outdated;
+  for (const auto& [row_name, answer] : predictions_.answers) {
+    for (const lessons::ExpectationResult& row : playback_->readings().expectations) {
+      if (row.name != row_name || row.failed) continue;
+      const std::string theory = row.numeric ? exact_text(row.predicted) : row.predicted_text;
+      const auto [seen, first] = predictions_.theory_answered.emplace(row_name, theory);
+      if (!first && seen->second != theory) outdated.push_back(row_name);
+    }
+  }
+  for (const std::string& row_name : outdated) {
+    predictions_.answers.erase(row_name);
+    predictions_.theory_answered.erase(row_name);
+  }
+  // Rows no longer answered (a box emptied) are seen afresh when answered again.
+  std::erase_if(predictions_.theory_answered, [&](const auto& seen) { return predictions_.answers.count(seen.first) == 0; });
+  if (!outdated.empty()) {
+    status_ = "A value changed after the class predicted \"" + outdated.front() + "\"" + (outdated.size() > 1 ? " (and more)" : "") +
+              ": that prediction was for the old values, so it is cleared. Ask the class again.";
+  }
+}
+
 void Classroom::predictions_style(FrameStyle& style) {
   const lessons::Lesson& lesson = playback_->lesson();
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.

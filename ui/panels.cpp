@@ -237,6 +237,11 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
                             row.measured_yet, row.passes, row.hand_pulled && !row.passes};
     if (predictions_hidden) cell.theory = "hidden";
+    // Its function failed (the message above the table says how): nothing of it is known.
+    if (row.failed) {
+      cell.theory.assign(1, '?');
+      cell.measured.assign(1, '?');
+    }
     if (row.measured_yet) {
       cell.measured = row.numeric ? with_unit(row.measured, row.unit) : row.measured_text;
       if (predictions_hidden) {

@@ -86,11 +86,14 @@ void Playback::refresh_readings() {
     readings_.caveat = text;
     break;
   }
+  // A row whose function fails is that row's "?" alone: the others are read as ever.
+  std::exception_ptr failure;
   try {
     readings_.duration = lesson_->duration();
-    readings_.expectations = lesson_->expectations();
+    readings_.expectations = lesson_->expectations(failure);
+    if (failure) std::rethrow_exception(failure);
   } catch (const InvalidInput& error) {
-    readings_.expectations.clear();
+    if (!failure) readings_.expectations.clear();
     readings_.error = error.what();
   }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that

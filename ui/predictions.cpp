@@ -20,7 +20,8 @@ constexpr int answer_length = 16;
 const lessons::ExpectationResult* row_of(const std::vector<lessons::ExpectationResult>& rows,
                                          const lessons::Prediction& prediction) {
   for (const lessons::ExpectationResult& row : rows) {
-    if (row.name == prediction.expectation) return &row;
+    // A row whose function failed is known no better than a missing one ("?").
+    if (row.name == prediction.expectation) return row.failed ? nullptr : &row;
   }
   return nullptr;
 }

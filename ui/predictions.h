@@ -21,6 +21,10 @@ namespace frictionlab::ui {
 struct ClassPredictions {
   std::map<std::string, std::string> answers;  // by expect row: the number as typed, or the word picked
   bool revealed = false;
+  // Each answered row's theory as it was when the answer was given (the window's, seen at t = 0
+  // before the reveal): a value changed since that changes it (the mass) makes the answer one
+  // for other values, and the class is asked again.
+  std::map<std::string, std::string> theory_answered;
 };
 
 // The theory is kept back: the lesson asks for predictions, the teacher asks for them (the

@@ -13,12 +13,17 @@ namespace frictionlab::ui {
 std::string user_lessons_folder();
 
 struct UserLesson {
-  std::string name;  // the file's name without .lua, as the menu shows it
+  std::string name;  // the file's name without .lua
   std::string path;
+  std::string title;  // the script's lesson{ title = "..." }, as the menu shows it; else the name
 };
 
 // The *.lua files in user_lessons_folder(), by name; none when the folder is missing. Scripts
-// are not run here: a broken one is listed, and opening it shows its mistake.
+// are not run here (a broken one is listed, and opening it shows its mistake): the title is
+// read from the script's text, the first title = "..." (or '...') after its `lesson {`.
 std::vector<UserLesson> user_lessons();
+
+// That title read from a script's text; empty when it has none written as a plain string.
+std::string written_title(const std::string& script);
 
 }  // namespace frictionlab::ui

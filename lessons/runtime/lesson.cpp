@@ -366,6 +366,14 @@ void Lesson::step() {
 }
 
 std::vector<ExpectationResult> Lesson::expectations() {
+  std::exception_ptr failure;
+  std::vector<ExpectationResult> rows = expectations(failure);
+  if (failure) std::rethrow_exception(failure);
+  return rows;
+}
+
+std::vector<ExpectationResult> Lesson::expectations(std::exception_ptr& failure) {
+  failure = nullptr;
   LessonBuild& build = *current_;
   lua_State* state = build.sandbox.state();
   std::vector<ExpectationResult> rows;
@@ -373,53 +381,64 @@ std::vector<ExpectationResult> Lesson::expectations() {
     ExpectationResult row;
     row.name = expectation.name;
     row.unit = expectation.unit;
-    const std::string where = expectation.declared_at + ": expect '" + expectation.name + "': ";
-    build.push_value(expectation.predicted);
-    row.numeric = lua_type(state, -1) == LUA_TNUMBER;
-    if (row.numeric) {
-      row.predicted = lua_tonumber(state, -1);
-    } else if (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN) {
-      row.predicted_text = luaL_tolstring(state, -1, nullptr);
-      lua_pop(state, 1);
-    } else {
-      const std::string got = describe(state, -1);
-      lua_pop(state, 1);
-      throw ScriptError(where + "predicted gave " + got + "; it must be a number, a word such as \"slides\", or true/false");
-    }
-    lua_pop(state, 1);
-    build.push_value(expectation.measured);
-    row.measured_yet = !lua_isnil(state, -1);
-    if (!row.measured_yet) {
-      row.measured_text = "not measured";
-    } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
-      row.measured = lua_tonumber(state, -1);
-    } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
-      // A word where a number is due says why there is no number yet ("still sliding"): the
-      // row is not measured, and shows the word instead of "not measured".
-      row.measured_yet = false;
-      row.measured_text = lua_tostring(state, -1);
-    } else if (!row.numeric && (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN)) {
-      row.measured_text = luaL_tolstring(state, -1, nullptr);
-      lua_pop(state, 1);
-    } else {
-      const std::string got = describe(state, -1);
-      lua_pop(state, 1);
-      throw ScriptError(where + "measured gave " + got + " but predicted gave " +
-                        (row.numeric ? "a number" : "a word") + "; they must be alike (or nil: not measured yet)");
-    }
-    lua_pop(state, 1);
-    if (row.numeric) {
-      build.push_value(expectation.tolerance);
-      if (lua_type(state, -1) != LUA_TNUMBER || !(lua_tonumber(state, -1) >= 0.0)) {
+    const int top = lua_gettop(state);
+    try {
+      const std::string where = expectation.declared_at + ": expect '" + expectation.name + "': ";
+      build.push_value(expectation.predicted);
+      row.numeric = lua_type(state, -1) == LUA_TNUMBER;
+      if (row.numeric) {
+        row.predicted = lua_tonumber(state, -1);
+      } else if (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN) {
+        row.predicted_text = luaL_tolstring(state, -1, nullptr);
+        lua_pop(state, 1);
+      } else {
         const std::string got = describe(state, -1);
         lua_pop(state, 1);
-        throw ScriptError(where + "a number needs a tolerance >= 0 in its unit, as in tolerance = 0.05; got " + got);
+        throw ScriptError(where + "predicted gave " + got + "; it must be a number, a word such as \"slides\", or true/false");
       }
-      row.tolerance = lua_tonumber(state, -1);
       lua_pop(state, 1);
-      row.passes = row.measured_yet && std::abs(row.error()) <= row.tolerance;  // false for NaN
-    } else {
-      row.passes = row.measured_yet && row.measured_text == row.predicted_text;
+      build.push_value(expectation.measured);
+      row.measured_yet = !lua_isnil(state, -1);
+      if (!row.measured_yet) {
+        row.measured_text = "not measured";
+      } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
+        row.measured = lua_tonumber(state, -1);
+      } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
+        // A word where a number is due says why there is no number yet ("still sliding"): the
+        // row is not measured, and shows the word instead of "not measured".
+        row.measured_yet = false;
+        row.measured_text = lua_tostring(state, -1);
+      } else if (!row.numeric && (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN)) {
+        row.measured_text = luaL_tolstring(state, -1, nullptr);
+        lua_pop(state, 1);
+      } else {
+        const std::string got = describe(state, -1);
+        lua_pop(state, 1);
+        throw ScriptError(where + "measured gave " + got + " but predicted gave " +
+                          (row.numeric ? "a number" : "a word") + "; they must be alike (or nil: not measured yet)");
+      }
+      lua_pop(state, 1);
+      if (row.numeric) {
+        build.push_value(expectation.tolerance);
+        if (lua_type(state, -1) != LUA_TNUMBER || !(lua_tonumber(state, -1) >= 0.0)) {
+          const std::string got = describe(state, -1);
+          lua_pop(state, 1);
+          throw ScriptError(where + "a number needs a tolerance >= 0 in its unit, as in tolerance = 0.05; got " + got);
+        }
+        row.tolerance = lua_tonumber(state, -1);
+        lua_pop(state, 1);
+        row.passes = row.measured_yet && std::abs(row.error()) <= row.tolerance;  // false for NaN
+      } else {
+        row.passes = row.measured_yet && row.measured_text == row.predicted_text;
+      }
+    } catch (const InvalidInput&) {
+      // This row's function failed: the row is marked, the rows after it are still read.
+      lua_settop(state, top);
+      if (!failure) failure = std::current_exception();
+      row = ExpectationResult{};
+      row.name = expectation.name;
+      row.unit = expectation.unit;
+      row.failed = true;
     }
     rows.push_back(std::move(row));
   }

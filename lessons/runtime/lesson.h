@@ -4,6 +4,7 @@
 // fails leaves the last good lesson running and says why.
 #pragma once
 
+#include <exception>
 #include <map>
 #include <memory>
 #include <optional>
@@ -88,6 +89,8 @@ struct ExpectationResult {
   std::string measured_text;   // "not measured" until the script's measure has an answer
   bool measured_yet = false;
   bool passes = false;
+  // Its own function raised an error (expectations(failure) below): nothing of it is known.
+  bool failed = false;
   // The window: the mouse's hand pulled a body during the run, a force no prediction knows of,
   // so a row that differs is marked hand-pulled rather than failed.
   bool hand_pulled = false;
@@ -202,8 +205,12 @@ class Lesson {
   bool failed() const { return failed_; }
   // Whole steps until the scene's time is the step nearest `t` (never before the present).
   void step_to(double t);
-  // The expectations as they stand now.
+  // The expectations as they stand now. Throws the error of the first row whose function fails.
   std::vector<ExpectationResult> expectations();
+  // The same, row by row: a row whose function fails is given marked `failed`, the other rows
+  // as they stand, and the first row's error is kept in `failure` (the window says it once
+  // and shows "?" for that row alone).
+  std::vector<ExpectationResult> expectations(std::exception_ptr& failure);
   // The theory curves of plot `plot` sampled at `count` points across [x_low, x_high] (more
   // where a branch ends or jumps). Kept and given again until the range, the count or a
   // parameter changes. A script error throws ScriptError placed at the curve's function.

@@ -798,3 +798,148 @@ test('a setup file and a link convert both ways: the command line\'s link opens 
   assert.match(back.stdout, /^lock mass, mu_s$/m);
   await page.close();
 });
+
+// Issue 28: a teacher's and a student's trial of the page.
+
+// A student's own lesson lives in one browser: Copy link carries its script, and a friend's
+// page keeps it as a lesson of the friend's own, beside (never over) one of the same name.
+test('Copy link on a student\'s own lesson carries the script: a friend opens it as a lesson of their own', async () => {
+  const page = await openEditorOnPush();
+  const mended = (await sourceText(page)).replace('parameter { "mass", 1.0,', 'parameter { "mass", 2.5,');
+  await setSource(page, mended);
+  await page.click('#apply');
+  await settled(page);
+  assert.equal(await call(page, 'frictionlab_lesson_path'), userLessons + '/my_push.lua');
+  await page.click('#share');
+  await settled(page);
+  assert.match(await page.$eval('#message', (message) => message.textContent), /your lesson my_push\.lua \(the script goes with it/);
+  const link = await page.evaluate(() => location.href);
+  assert.match(link, /#setup=.*&script=/);
+  await page.close();
+  // A friend's browser, opened from the link: the lesson arrives, with its values, and no
+  // "no such file" naming a folder of the sender's browser.
+  const friend = await openPage(link);
+  assert.equal(await call(friend, 'frictionlab_lesson_path'), userLessons + '/my_push.lua');
+  assert.equal(await call(friend, 'frictionlab_parameter', 'mass'), '2.5');
+  assert.equal(await fileText(friend, userLessons + '/my_push.lua'), mended);
+  const said = await friend.$eval('#message', (message) => message.textContent);
+  assert.match(said, /yours now as my_push\.lua/);
+  noInternalPaths(said);
+  assert.doesNotMatch(await friend.evaluate(() => location.hash), /script=/, 'the address kept the script after it was taken in');
+  assert.deepEqual(friend.problems, []);
+  await friend.close();
+  // A classmate with a my_push.lua of their own follows the link in an open page: it comes
+  // in beside theirs.
+  const classmate = await openPage(site + '#lesson=incline');
+  await classmate.evaluate((file) => FS.writeFile(file, '-- my own push\n'), userLessons + '/my_push.lua');
+  await classmate.evaluate((fragment) => { location.hash = fragment; }, link.slice(link.indexOf('#')));
+  await classmate.waitForFunction(() => /my_push_2\.lua$/.test(Module.ccall('frictionlab_lesson_path', 'string', [], [])), { timeout: 20000 });
+  await settled(classmate);
+  assert.equal(await fileText(classmate, userLessons + '/my_push.lua'), '-- my own push\n');
+  assert.equal(await call(classmate, 'frictionlab_parameter', 'mass'), '2.5');
+  await shoot(classmate, 'link_with_script');
+  // Your lessons by their titles, the file's name beside each (the classmate's own has no title).
+  await click(classmate, 'Lesson menu');
+  await shoot(classmate, 'your_lessons_titles');
+  assert.deepEqual(classmate.problems, []);
+  await classmate.close();
+  // The command line still reads the link's setup.
+  if (native) {
+    const { spawnSync } = require('child_process');
+    const back = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', link], { encoding: 'utf8' });
+    assert.equal(back.status, 0, back.stderr);
+    assert.match(back.stdout, /^lesson .*my_push\.lua$/m);
+  }
+});
+
+test('a changed value keeps the link\'s projector=1 and at= in the address (projector while it is on)', async () => {
+  const page = await openPage(site + '#lesson=push&projector=1&at=0.5');
+  await closeHelp(page);
+  await typeValue(page, 'push_rate value', '5');
+  await page.waitForFunction(() => location.hash.startsWith('#setup='), { timeout: 10000 });
+  const hash = await page.evaluate(() => location.hash);
+  assert.match(hash, /&projector=1(&|$)/, hash);
+  assert.match(hash, /&at=0\.5(&|$)/, hash);
+  // Projector mode turned off: the address no longer asks for it.
+  await call(page, 'frictionlab_set_projector', 0);
+  await settled(page);  // the controls laid out again at the smaller text before one is clicked
+  await typeValue(page, 'push_rate value', '6');
+  assert.equal(await call(page, 'frictionlab_parameter', 'push_rate'), '6');
+  await page.waitForFunction(() => decodeURIComponent(location.hash).includes('set push_rate = 6'), { timeout: 10000 });
+  const after = await page.evaluate(() => location.hash);
+  assert.doesNotMatch(after, /projector=1/);
+  assert.match(after, /&at=0\.5(&|$)/);
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+test('the bar\'s message goes when another lesson opens', async () => {
+  const page = await openPage(site + '#lesson=push');
+  await closeHelp(page);
+  await page.click('#share');
+  await settled(page);
+  assert.match(await page.$eval('#message', (message) => message.textContent), /Link copied/);
+  await click(page, 'Lesson menu');
+  await click(page, 'lesson incline');
+  assert.match(await call(page, 'frictionlab_lesson_path'), /incline\.lua$/);
+  assert.equal(await page.$eval('#message', (message) => message.textContent), '');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+test('a raw Lua message comes with plain words beside it, and its line stays marked', async () => {
+  const page = await openEditorOnPush();
+  const lines = (await sourceText(page)).split('\n');
+  // A name misspelt inside a table (undefined globals already have a message of their own).
+  lines.splice(5, 0, 'local surface = theory.growing_pull.mass');
+  await setSource(page, lines.join('\n'));
+  await page.click('#apply');
+  await page.waitForSelector('#mistake.shown');
+  const mistake = await page.$eval('#mistake', (element) => element.textContent);
+  assert.match(mistake, /my_push\.lua:6: attempt to index a nil value \(field 'growing_pull'\)/, mistake);
+  assert.match(mistake, /In plain words: the table before "\.growing_pull" has nothing called growing_pull/, mistake);
+  assert.equal(await page.$eval('#lines .wrong', (element) => element.textContent), '6');
+  await shoot(page, 'editor_plain_words');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+// The classroom's text is 17 px times the smaller of the canvas's width/1280 and height/720.
+const classroomTextPx = (page) => page.$eval('#canvas', (canvas) => 17 * Math.min(canvas.clientWidth / 1280, canvas.clientHeight / 720));
+test('with the editor open the classroom\'s text stays readable at 1366×768, and the editor as wide as before at 1920×1080', async () => {
+  const page = await openPage(site + '#lesson=push', { width: 1366, height: 768 });
+  await closeHelp(page);
+  await page.click('#edit');
+  await page.waitForSelector('#editor.open');
+  await settled(page);
+  const text = await classroomTextPx(page);
+  assert.ok(text >= 13, `the classroom's text is ${text.toFixed(1)} px beside the editor`);
+  assert.ok(await page.$eval('#editor', (editor) => editor.getBoundingClientRect().width) >= 300, 'the editor is too narrow to use');
+  await shoot(page, 'editor_1366x768');
+  await page.setViewport({ width: 1920, height: 1080 });
+  await settled(page);
+  assert.ok(Math.abs(await page.$eval('#editor', (editor) => editor.getBoundingClientRect().width) - 768) <= 1);
+  assert.ok(await classroomTextPx(page) >= 13);
+  await shoot(page, 'editor_1920x1080');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+// As the desktop window does (the shared classroom): a prediction is for the values it was made at.
+test('a class\'s prediction is cleared when the mass changes before Play, and the bar\'s status says why', async () => {
+  const page = await openPage(site + '#lesson=push');
+  await closeHelp(page);
+  await click(page, 'prediction breakaway push');
+  await page.keyboard.type('39', { delay: 50 });
+  await frame();
+  await page.keyboard.press('Enter');
+  await settled(page);
+  assert.match(await call(page, 'frictionlab_setup_text'), /^predict breakaway push = 39$/m);
+  await typeValue(page, 'mass value', '5');
+  assert.equal(await call(page, 'frictionlab_parameter', 'mass'), '5');
+  assert.doesNotMatch(await call(page, 'frictionlab_setup_text'), /^predict breakaway push/m, 'the prediction for 1 kg was kept at 5 kg');
+  assert.match(await call(page, 'frictionlab_status_words'), /predicted "breakaway push".*cleared/);
+  await shoot(page, 'prediction_cleared');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
