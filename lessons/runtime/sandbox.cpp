@@ -14,8 +14,6 @@ namespace {
 // How often (in VM instructions) the budget is checked: often enough to stop a loop within
 // microseconds of its budget, rarely enough to cost nothing measurable.
 constexpr int instructions_per_check = 1000;
-constexpr int checks_per_clock = 16;                      // see count_instructions
-constexpr std::size_t allocated_per_clock = 1u << 20;  // bytes
 
 // string.rep of an empty string a huge number of times loops inside C, where the budget never
 // looks, making nothing; the result is "" whatever the count.
@@ -269,10 +267,7 @@ void* Sandbox::allocate(void* memory, void* block, std::size_t old_size, std::si
   // on; this hard stop, a little higher, catches one huge allocation in a single instruction.
   if (new_size > had && books->used + (new_size - had) > books->limit + books->limit / 4) return nullptr;
   void* grown = std::realloc(block, new_size);
-  if (grown != nullptr) {
-    books->used = books->used - had + new_size;
-    if (new_size > had) books->allocated += new_size - had;
-  }
+  if (grown != nullptr) books->used = books->used - had + new_size;
   return grown;
 }
 
@@ -289,35 +284,22 @@ void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
     lua_error(state);
   }
   // Instructions are not time: a string grown one character at a time costs more per
-  // instruction the longer it gets. The clock bounds what the count cannot. Reading it costs
-  // 30 to 160 ns natively and more in WebAssembly (a call out to JavaScript), a twentieth of the
-  // script's time there when read at every check; so it is read at every 16th check, and at
-  // the next check once the script has allocated a megabyte since the last reading (the
-  // instructions that cost more than their count copy memory as they go).
-  if (++sandbox.checks_since_clock_ >= checks_per_clock ||
-      sandbox.memory_.allocated - sandbox.allocated_at_clock_ >= allocated_per_clock) {
-    sandbox.check_clock(state);
-  }
-  // The budget stays spent: anything still run while the error unwinds stops at once.
-  if (sandbox.budget_left_ < 0) sandbox.budget_spent(state, 0);
-}
-
-void Sandbox::check_clock(lua_State* state) {
-  checks_since_clock_ = 0;
-  allocated_at_clock_ = memory_.allocated;
+  // instruction the longer it gets. The clock bounds what the count cannot.
   const auto now = std::chrono::steady_clock::now();
-  if (!deadline_set_) {
-    deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                          std::chrono::duration<double>(limits_.seconds_per_call));
-    deadline_set_ = true;
-  } else if (now > deadline_) {
+  if (!sandbox.deadline_set_) {
+    sandbox.deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(sandbox.limits_.seconds_per_call));
+    sandbox.deadline_set_ = true;
+  } else if (now > sandbox.deadline_) {
     luaL_where(state, 0);
     lua_pushfstring(state, "the script ran for more than %d seconds without finishing (an endless loop, or a string "
                     "grown one piece at a time?)",
-                    static_cast<int>(limits_.seconds_per_call));
+                    static_cast<int>(sandbox.limits_.seconds_per_call));
     lua_concat(state, 2);
     lua_error(state);
   }
+  // The budget stays spent: anything still run while the error unwinds stops at once.
+  if (sandbox.budget_left_ < 0) sandbox.budget_spent(state, 0);
 }
 
 void Sandbox::budget_spent(lua_State* state, int level) const {
@@ -463,7 +445,6 @@ void Sandbox::call(int arguments, int results) {
     // (a force's function of time, a probe) finish long before and never read it, and on this
     // machine a reading costs 30 to 160 ns, a tenth of a lesson's step.
     deadline_set_ = false;
-    checks_since_clock_ = checks_per_clock;  // the first check starts the clock
   }
   const bool timed = outermost && timing_;
   const auto start = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};

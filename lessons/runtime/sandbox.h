@@ -79,14 +79,12 @@ class Sandbox {
   struct Memory {
     std::size_t used = 0;
     std::size_t limit = 0;
-    std::size_t allocated = 0;  // bytes ever allocated or grown into: the copying a script has done
   };
   std::string full_path(const std::string& message) const;
   static void* allocate(void* memory, void* block, std::size_t old_size, std::size_t new_size);
   static void count_instructions(lua_State* state, lua_Debug* debug);
   static int place_error(lua_State* state);
   void budget_spent(lua_State* state, int level) const;
-  void check_clock(lua_State* state);  // starts the call's clock, or raises the error once it is past
 
   SandboxLimits limits_;
   Memory memory_;
@@ -96,8 +94,6 @@ class Sandbox {
   long budget_left_ = 0;
   std::chrono::steady_clock::time_point deadline_{};
   bool deadline_set_ = false;  // the outermost call's clock has started (see call)
-  int checks_since_clock_ = 0;          // instruction checks since the clock was last read
-  std::size_t allocated_at_clock_ = 0;  // memory_.allocated when it was
   int depth_ = 0;  // a call made from inside another (a hand read while spring{} runs) shares its budget
   bool timing_ = false;
   std::chrono::nanoseconds time_in_lua_{0};
