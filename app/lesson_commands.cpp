@@ -185,7 +185,7 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
                           const StepSettings& settings, const std::vector<std::string>& step_options, int count,
                           std::uint64_t seed, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(name);
-  lessons::ScriptText script{path, lessons::read_script(path), ""};
+  lessons::ScriptText script(path, lessons::read_script(path));
   std::vector<lessons::Parameter> sliders;
   {
     const Lesson defaults(script, fixed, settings);  // the sliders as the script declares them

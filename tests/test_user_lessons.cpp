@@ -90,6 +90,11 @@ TEST(UserLessons, EachIsListedWithItsLessonsTitle) {
   EXPECT_EQ(found[1].title, "untitled");
   EXPECT_EQ(written_title("lesson{ title = \"Incline\" }"), "Incline");
   EXPECT_EQ(written_title("-- no lesson here\n"), "");
+  // Only lesson{}'s own title: not a later call's, a longer name's, a string's or a nested table's.
+  EXPECT_EQ(written_title("lesson { order = 3 }\nplot { title = \"Speed\" }\n"), "");
+  EXPECT_EQ(written_title("lesson { question = \"what \\\" title = 'x'\", plot_title = 'no', -- title = 'comment'\n"
+                          "  moments = { { title = 'inner' } }, title = 'Yes' }"),
+            "Yes");
   fs::remove_all(data);
 }
 

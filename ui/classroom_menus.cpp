@@ -64,7 +64,9 @@ void Classroom::menu_bar() {
       for (const UserLesson& lesson : own) {
         const bool current = playback_->lesson().path() == lesson.path;
         const std::string file = lesson.name + ".lua";
+        ImGui::PushID(lesson.path.c_str());  // two lessons may share a title (a copy received beside one's own)
         if (ImGui::MenuItem(lesson.title.c_str(), file.c_str(), current, may_switch)) status_ = open(lesson.path);
+        ImGui::PopID();
         remember("user lesson " + lesson.name);
       }
     }

@@ -100,7 +100,7 @@ void Playback::refresh_readings() {
   // know nothing of it, and the class is told why, and when.
   const std::vector<HandStretch> stretches = gauge_.stretches(lesson_->scene().frame_step());
   if (!stretches.empty()) {
-    for (lessons::ExpectationResult& row : readings_.expectations) row.hand_pulled = true;
+    for (lessons::ExpectationResult& row : readings_.expectations) row.hand_pulled = !row.failed;  // a failed row reads "?" alone
     std::string why = stretches_text(stretches);
     why[0] = 'H';
     why += ": the hand's force is in no prediction, so a row that differs reads hand-pulled, not "

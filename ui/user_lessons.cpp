@@ -1,10 +1,10 @@
 #include "ui/user_lessons.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace frictionlab::ui {
 
@@ -37,14 +37,34 @@ std::string written_title(const std::string& script) {
     if (script.find('\n', line) == std::string::npos) break;
   }
   if (at == std::string::npos) return "";
-  for (std::size_t found = script.find("title", at); found != std::string::npos; found = script.find("title", found + 5)) {
-    std::size_t i = script.find_first_not_of(" \t", found + 5);
-    if (i == std::string::npos || script[i] != '=') continue;
-    i = script.find_first_not_of(" \t", i + 1);
-    if (i == std::string::npos || (script[i] != '"' && script[i] != '\'')) return "";
-    const std::size_t end = script.find_first_of(std::string(1, script[i]) + "\n\\", i + 1);
-    if (end == std::string::npos || script[end] != script[i]) return "";
-    return script.substr(i + 1, end - i - 1);
+  // Its own title = "...": at the table's first level (a plot's title inside it is not), a
+  // whole word (not plot_title), outside strings and comments.
+  const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; };
+  int depth = 0;
+  for (std::size_t i = at; i < script.size(); ++i) {
+    const char c = script[i];
+    if (c == '"' || c == '\'') {  // a string: skipped to its closing quote, past escaped ones
+      std::size_t close = script.find_first_of(std::string(1, c) + "\n\\", i + 1);
+      while (close != std::string::npos && script[close] == '\\') close = script.find_first_of(std::string(1, c) + "\n\\", close + 2);
+      if (close == std::string::npos || script[close] != c) return "";
+      i = close;
+    } else if (script.compare(i, 2, "--") == 0) {  // a comment: skipped to the line's end
+      i = script.find('\n', i);
+      if (i == std::string::npos) return "";
+    } else if (c == '{' || c == '(' || c == '[') {
+      ++depth;
+    } else if (c == '}' || c == ')' || c == ']') {
+      if (--depth == 0) return "";
+    } else if (depth == 1 && script.compare(i, 5, "title") == 0 && !word_char(script[i - 1]) &&
+               (i + 5 == script.size() || !word_char(script[i + 5]))) {
+      std::size_t value = script.find_first_not_of(" \t", i + 5);
+      if (value == std::string::npos || script[value] != '=') continue;
+      value = script.find_first_not_of(" \t", value + 1);
+      if (value == std::string::npos || (script[value] != '"' && script[value] != '\'')) return "";
+      const std::size_t close = script.find_first_of(std::string(1, script[value]) + "\n\\", value + 1);
+      if (close == std::string::npos || script[close] != script[value]) return "";
+      return script.substr(value + 1, close - value - 1);
+    }
   }
   return "";
 }
@@ -57,10 +77,12 @@ std::vector<UserLesson> user_lessons() {
   for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
     std::error_code kind;
     if (it->path().extension() != ".lua" || !it->is_regular_file(kind)) continue;
+    // The menu reads these at every frame it is open: a lesson's heading is in its first lines.
     std::ifstream file(it->path(), std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    std::string title = written_title(text.str());
+    std::string text(16 * 1024, '\0');
+    file.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(file.gcount()));
+    std::string title = written_title(text);
     const std::string name = it->path().stem().string();
     found.push_back({name, it->path().string(), title.empty() ? name : std::move(title)});
   }

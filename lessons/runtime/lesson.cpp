@@ -192,16 +192,24 @@ std::string read_script(const std::string& path) {
 }
 
 Lesson::Lesson(std::string path, std::map<std::string, std::string> overrides, StepSettings settings)
-    : Lesson(ScriptText{path, read_script(path), ""}, std::move(overrides), settings) {}
+    : Lesson(ScriptText(path, read_script(path)), std::move(overrides), settings) {}
 
 Lesson::Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings)
-    : path_(script.path), source_(script.source), compiled_(script.compiled), overrides_(std::move(overrides)),
-      settings_(settings) {
+    : path_(script.path), source_(script.source),
+      compiled_(script.compiled_from_ == script.source ? script.compiled_ : std::string()),
+      overrides_(std::move(overrides)), settings_(settings) {
   validate(settings_);
   replace(build(source_, compiled_, true));
 }
 
 Lesson::~Lesson() = default;
+
+ScriptText Lesson::script() const {
+  ScriptText text(path_, source_);
+  text.compiled_ = compiled_;
+  text.compiled_from_ = source_;
+  return text;
+}
 
 std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, std::string& compiled, bool strict) {
   auto next = std::make_unique<LessonBuild>(path_, overrides_, strict, settings_);

@@ -143,11 +143,21 @@ struct View {
 
 struct LessonBuild;  // one run of the script: its sandbox, scene and declarations
 
-// A lesson script's text and the path it was read from (its messages name the path).
-struct ScriptText {
+class Lesson;
+
+// A lesson script's text and the path it was read from (its messages name the path). A Lesson
+// run from it hands it back compiled (Lesson::script()), for more runs of the same text: only a
+// Lesson compiles it, and the bytecode is used only with the very text it was compiled from.
+class ScriptText {
+ public:
+  ScriptText(std::string path_read, std::string text) : path(std::move(path_read)), source(std::move(text)) {}
   std::string path;
   std::string source;
-  std::string compiled;  // the source as bytecode (Sandbox::compiled), once a run has read it; "" before
+
+ private:
+  friend class Lesson;
+  std::string compiled_;       // Sandbox::compiled() of compiled_from_
+  std::string compiled_from_;  // the text it came from
 };
 
 class Lesson {
@@ -159,7 +169,7 @@ class Lesson {
   // once, and all of them run the same text even if the file changes meanwhile.
   Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings);
   // The script as this lesson runs it, its text compiled (for more runs of it: check --random).
-  ScriptText script() const { return {path_, source_, compiled_}; }
+  ScriptText script() const;
   ~Lesson();
   Lesson(const Lesson&) = delete;
   Lesson& operator=(const Lesson&) = delete;

@@ -52,7 +52,8 @@ class Sandbox {
   // a short lesson's run in WebAssembly, whose number parsing is slow: runs of one text after
   // the first (a slider's rebuild, check --random) load this instead.
   std::string compiled() const;
-  // Loads what compiled() gave (bytecode only; never a file's) under `chunk_name`.
+  // Loads what compiled() gave (bytecode only; never a file's or a script's). Its messages name
+  // the chunk it was compiled under (kept in the bytecode): give that same `chunk_name`.
   void load_compiled(std::string_view bytecode, const std::string& chunk_name);
   // Calls the function below `arguments` values on the stack with a fresh instruction budget.
   // Throws ScriptError carrying Lua's message (which starts with path:line). `results` values

@@ -869,6 +869,12 @@ test('a changed value keeps the link\'s projector=1 and at= in the address (proj
   const after = await page.evaluate(() => location.hash);
   assert.doesNotMatch(after, /projector=1/);
   assert.match(after, /&at=0\.5(&|$)/);
+  // Another lesson chosen: the link's time was for push, and goes from the address.
+  await click(page, 'Lesson menu');
+  await click(page, 'lesson incline');
+  await settled(page);
+  await page.waitForFunction(() => decodeURIComponent(location.hash).includes('incline'), { timeout: 10000 });
+  assert.doesNotMatch(await page.evaluate(() => location.hash), /&at=/);
   assert.deepEqual(page.problems, []);
   await page.close();
 });
