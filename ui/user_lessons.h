@@ -20,7 +20,7 @@ struct UserLesson {
 
 // The *.lua files in user_lessons_folder(), by name; none when the folder is missing. Scripts
 // are not run here (a broken one is listed, and opening it shows its mistake): the title is
-// read from the script's text, the first title = "..." (or '...') after its `lesson {`.
+// read from the script's text: lesson{}'s own title = "..." (or '...'), written as a plain string.
 std::vector<UserLesson> user_lessons();
 
 // That title read from a script's text; empty when it has none written as a plain string.

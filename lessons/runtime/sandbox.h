@@ -48,8 +48,8 @@ class Sandbox {
   // the function on the stack. Throws ScriptError for a syntax error.
   void load(std::string_view source, const std::string& chunk_name);
   // The function load left on the stack, as Lua bytecode with its lines and names kept, so
-  // that its errors read as the text's would. Reading (parsing) a script's text is a tenth of
-  // a short lesson's run in WebAssembly, whose number parsing is slow: runs of one text after
+  // that its errors read as the text's would. Reading (parsing) a script's text was a sixth of
+  // a short lesson's check in WebAssembly, whose number parsing is slow: runs of one text after
   // the first (a slider's rebuild, check --random) load this instead.
   std::string compiled() const;
   // Loads what compiled() gave (bytecode only; never a file's or a script's). Its messages name
