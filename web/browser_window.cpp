@@ -290,8 +290,20 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
   emscripten_set_mousedown_callback(canvas, nullptr, EM_TRUE, on_mouse);
   emscripten_set_mousemove_callback(canvas, nullptr, EM_TRUE, on_mouse);
   emscripten_set_mouseup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_TRUE, on_mouse);
-  emscripten_set_wheel_callback(canvas, nullptr, EM_TRUE,
-                                [](int type, const EmscriptenWheelEvent*, void*) { return on_any_event(type, nullptr, nullptr); });
+  // The wheel goes to ImGui from here, not through GLFW: emscripten 3.1.6's GLFW hands on the
+  // browser's deltaY as it is, in pixels and growing downwards, where the desktop's GLFW gives
+  // notches growing upwards. Passed on, a notch down (100 px) scrolled a panel 100 notches up
+  // and zoomed the world out to its limit. A notch is 100 pixels or 3 lines (emscripten's own
+  // measure) and, rarely met, a page 10 notches (an ImGui notch moves a panel about 5 lines).
+  glfwSetScrollCallback(window, nullptr);
+  emscripten_set_wheel_callback(canvas, nullptr, EM_TRUE, [](int type, const EmscriptenWheelEvent* wheel, void*) {
+    const double per_notch = wheel->deltaMode == DOM_DELTA_PIXEL ? 100.0 : wheel->deltaMode == DOM_DELTA_LINE ? 3.0 : 0.1;
+    ImGuiIO& wheel_io = ImGui::GetIO();
+    wheel_io.MouseWheel -= static_cast<float>(wheel->deltaY / per_notch);
+    wheel_io.MouseWheelH -= static_cast<float>(wheel->deltaX / per_notch);
+    on_any_event(type, nullptr, nullptr);
+    return EM_TRUE;  // the page under the canvas does not scroll with it
+  });
   emscripten_set_touchstart_callback(canvas, nullptr, EM_TRUE, on_touch);
   emscripten_set_touchmove_callback(canvas, nullptr, EM_TRUE, on_touch);
   emscripten_set_touchend_callback(canvas, nullptr, EM_TRUE, on_touch);

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <imgui_internal.h>
+
 #include "lessons/runtime/catalog.h"
 #include "physics/validation.h"
 #include "ui/classroom.h"
@@ -243,5 +245,14 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
   return hand_over(classroom->script_words(classroom->playback().notice() + " " + classroom->status()));
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
+// An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
+// ("x0 y0 x1 y1 scroll font"), or "" when no such panel was drawn.
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_panel(const char* name) {
+  const ImGuiWindow* panel = ImGui::FindWindowByName(name);
+  if (panel == nullptr || !panel->WasActive) return hand_over("");
+  return hand_over(std::to_string(panel->Pos.x) + " " + std::to_string(panel->Pos.y) + " " +
+                   std::to_string(panel->Pos.x + panel->Size.x) + " " + std::to_string(panel->Pos.y + panel->Size.y) + " " +
+                   std::to_string(panel->Scroll.y) + " " + std::to_string(panel->CalcFontSize()));
+}
 
 }  // extern "C"
