@@ -1,7 +1,7 @@
 // frictionlab link: a prepared setup file as a link to the web page, and a link as a setup
 // file, so a teacher can hand a class either.
 #include <fstream>
-#include <sstream>
+#include <iostream>
 
 #include "app/modes.h"
 #include "physics/validation.h"
@@ -25,19 +25,25 @@ int run_link(const std::vector<std::string>& args, std::ostream& out) {
     }
   }
   if (source.empty()) throw InvalidInput("link: name a setup file (to make its link) or give a link (to write its setup)");
-  // A link in: its setup's text out, checked as a setup file is.
-  if (const std::optional<std::string> text = ui::setup_text_from_link(source)) {
+  // A link in: its setup's text out, checked as a setup file is. A lesson the link carries (a
+  // student's own, from the page's Copy link) is kept among this user's lessons, as the page
+  // keeps it, and the setup names it there.
+  if (ui::setup_text_from_link(source)) {
     if (!page.empty()) throw InvalidInput("link: --page goes with a setup file, not with a link");
-    ui::parse_setup(*text, "setup link");
-    out << *text;
-    if (!text->empty() && text->back() != '\n') out << '\n';
+    std::string kept;
+    const std::string text = *ui::received_setup_text(source, &kept);
+    ui::parse_setup(text, "setup link");
+    out << text;
+    if (!text.empty() && text.back() != '\n') out << '\n';
+    if (!kept.empty()) std::cerr << "link: the link's lesson is kept as " << kept << " (the window's Lesson > Your lessons)\n";
     return 0;
   }
-  ui::read_setup(source);  // refuses what is not a setup file, with its line
-  std::ifstream file(source, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  out << ui::setup_link(text.str(), page) << '\n';
+  std::string left_out;
+  out << ui::setup_file_link(source, page, &left_out) << '\n';
+  if (!left_out.empty()) {
+    std::cerr << "link: " << left_out << " is too long to go in a link (at most " << ui::largest_linked_script / 1024
+              << " KB as encoded); the link opens it only where that file is: hand out the .lua file with it\n";
+  }
   return 0;
 }
 

@@ -530,6 +530,68 @@ TEST(SetupLink, HoldsTheWholeSetupAndOpensAsTheFileDoes) {
   EXPECT_EQ(options.lock, (std::vector<std::string>{"mass", "mu_s"}));
 }
 
+// A student's own lesson in a link (the page's Copy link adds &script=): opened on the desktop,
+// the lesson is kept among the user's lessons as the page keeps it (never over a different one
+// of that name, once for the same text) and the setup names it there; and a setup naming a
+// script file makes a link that carries it.
+TEST(SetupLink, CarriesAStudentsOwnLessonAndKeepsItAsThePageDoes) {
+  const fs::path data = fs::temp_directory_path() / ("frictionlab_link_" + std::to_string(::getpid()));
+  fs::remove_all(data);
+  ::setenv("XDG_DATA_HOME", data.c_str(), 1);
+  const fs::path lessons = data / "frictionlab" / "lessons";
+  std::ifstream incline(lessons::resolve_lesson("incline"), std::ios::binary);
+  const std::string script{std::istreambuf_iterator<char>(incline), std::istreambuf_iterator<char>()};
+  ASSERT_FALSE(script.empty());
+  // As the page writes it: the lesson line names the browser's own folder.
+  const std::string setup = "# FrictionLab setup\nlesson /home/web_user/.local/share/frictionlab/lessons/my slope.lua\nset mass = 3\n";
+  const std::string link = setup_link(setup, "https://school.example/fl/", script) + "&projector=1";
+  EXPECT_EQ(script_text_from_link(link), script);
+  EXPECT_EQ(setup_text_from_link(link), setup);
+
+  std::string kept;
+  const std::optional<std::string> received = received_setup_text(link, &kept);
+  ASSERT_TRUE(received.has_value());
+  EXPECT_EQ(kept, (lessons / "my_slope.lua").string());
+  EXPECT_EQ(*received, "# FrictionLab setup\nlesson " + kept + "\nset mass = 3\n");
+  std::ifstream file(kept, std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()), script);
+  const ClassroomOptions options = setup_options(link, ClassroomOptions{});
+  EXPECT_EQ(options.lesson, kept);
+  EXPECT_EQ(options.overrides.at("mass"), "3");
+  // The same link again: the same lesson, kept once. Another lesson of that name: beside it.
+  EXPECT_EQ(*received_setup_text(link), *received);
+  const std::string other = script + "\n-- changed by the student\n";
+  received_setup_text(setup_link(setup, "", other), &kept);
+  EXPECT_EQ(kept, (lessons / "my_slope_2.lua").string());
+  std::ifstream first(lessons / "my_slope.lua", std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(first), std::istreambuf_iterator<char>()), script);
+
+  // A setup file naming a script: its link carries the script; one naming a built-in does not.
+  const fs::path folder = data / "class";
+  fs::create_directories(folder);
+  std::ofstream(folder / "own.setup") << "lesson " << (lessons / "my_slope.lua").string() << "\n";
+  std::string left_out;
+  EXPECT_EQ(script_text_from_link(setup_file_link((folder / "own.setup").string(), "", &left_out)), script);
+  EXPECT_EQ(left_out, "");
+  std::ofstream(folder / "builtin.setup") << "lesson push\n";
+  EXPECT_EQ(script_text_from_link(setup_file_link((folder / "builtin.setup").string(), "")), std::nullopt);
+  // Too long for a link: left out, and named.
+  std::ofstream(lessons / "long.lua") << script << std::string(largest_linked_script, '-') << "\n";
+  std::ofstream(folder / "long.setup") << "lesson ../frictionlab/lessons/long.lua\n";
+  const std::string long_link = setup_file_link((folder / "long.setup").string(), "", &left_out);
+  EXPECT_EQ(script_text_from_link(long_link), std::nullopt);
+  EXPECT_EQ(left_out, (lessons / "long.lua").string());
+  // A broken escape in the script part is named as the lesson's.
+  try {
+    received_setup_text("#setup=lesson%20x.lua&script=end%2");
+    FAIL() << "a cut script was read";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("setup link's lesson: '%2'"), std::string::npos) << error.what();
+  }
+  ::unsetenv("XDG_DATA_HOME");
+  fs::remove_all(data);
+}
+
 TEST(SetupLink, ACutOrChangedLinkSaysWhereAndWhat) {
   try {
     setup_text_from_link("page.html#setup=lesson%2");

@@ -15,6 +15,7 @@
 #include "ui/classroom.h"
 #include "ui/output_file.h"
 #include "ui/playback.h"
+#include "ui/user_lessons.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -209,35 +210,40 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
   return setup;
 }
 
-std::string setup_link(const std::string& text, const std::string& page) {
+namespace {
+
+// encodeURIComponent's unreserved characters stay as they are; every other byte of the UTF-8
+// text is %XX.
+std::string encoded_for_link(const std::string& text) {
   static const char hex[] = "0123456789ABCDEF";
-  std::string link = page + "#setup=";
+  std::string encoded;
   for (const char character : text) {
     const auto byte = static_cast<unsigned char>(character);
-    // encodeURIComponent's unreserved characters stay as they are; every other byte of the
-    // UTF-8 text is %XX.
     const bool unreserved = (byte >= 'A' && byte <= 'Z') || (byte >= 'a' && byte <= 'z') || (byte >= '0' && byte <= '9') ||
                             (byte != 0 && std::strchr("-_.!~*'()", byte) != nullptr);
     if (unreserved) {
-      link += character;
+      encoded += character;
     } else {
-      link += '%';
-      link += hex[byte >> 4];
-      link += hex[byte & 15];
+      encoded += '%';
+      encoded += hex[byte >> 4];
+      encoded += hex[byte & 15];
     }
   }
-  return link;
+  return encoded;
 }
 
-std::optional<std::string> setup_text_from_link(const std::string& link) {
-  // The fragment (after '#', or the whole text when it is a fragment alone) is parts joined by
-  // '&' in any order, as the page reads it: "#lesson=push&setup=...", "#projector=1&setup=...".
+// The text of the fragment's part `key`=... (after '#', or the whole text when it is a fragment
+// alone), among parts joined by '&' in any order, as the page reads them: "#lesson=push&setup=...",
+// "#projector=1&setup=...". At most `largest` bytes once decoded; `what` names it in messages.
+std::optional<std::string> link_part(const std::string& link, const std::string& key, std::size_t largest,
+                                     const std::string& what) {
+  const std::string named = key + "=";
   const std::size_t hash = link.find('#');
   const std::size_t fragment = hash == std::string::npos ? 0 : hash + 1;
   std::size_t start = std::string::npos;
   for (std::size_t part = fragment;;) {
-    if (link.compare(part, 6, "setup=") == 0) {
-      start = part + 6;
+    if (link.compare(part, named.size(), named) == 0) {
+      start = part + named.size();
       break;
     }
     const std::size_t next = link.find('&', part);
@@ -263,19 +269,77 @@ std::optional<std::string> setup_text_from_link(const std::string& link) {
       const int high = i + 2 < encoded.size() ? digit(encoded[i + 1]) : -1;
       const int low = i + 2 < encoded.size() ? digit(encoded[i + 2]) : -1;
       if (high < 0 || low < 0) {
-        throw InvalidInput("setup link: '" + encoded.substr(i, 3) + "' at character " + std::to_string(start + i + 1) +
+        throw InvalidInput(what + ": '" + encoded.substr(i, 3) + "' at character " + std::to_string(start + i + 1) +
                            " is not a %-escape (% and two hexadecimal digits); was the link cut or changed?");
       }
       text += static_cast<char>(high * 16 + low);
       i += 2;
     }
-    if (text.size() > largest_setup) throw InvalidInput("setup link: holds more than a setup file may (64 KB)");
+    if (text.size() > largest) {
+      throw InvalidInput(what + ": holds more than " + std::to_string(largest / 1024) + " KB, the most a link carries");
+    }
   }
   return text;
 }
 
+}  // namespace
+
+std::string setup_link(const std::string& text, const std::string& page, const std::string& script) {
+  std::string link = page + "#setup=" + encoded_for_link(text);
+  if (!script.empty()) link += "&script=" + encoded_for_link(script);
+  return link;
+}
+
+std::size_t linked_script_length(const std::string& script) { return encoded_for_link(script).size(); }
+
+std::optional<std::string> setup_text_from_link(const std::string& link) {
+  return link_part(link, "setup", largest_setup, "setup link");
+}
+
+std::optional<std::string> script_text_from_link(const std::string& link) {
+  return link_part(link, "script", largest_linked_script, "setup link's lesson");
+}
+
+std::string setup_file_link(const std::string& path, const std::string& page, std::string* left_out) {
+  const PreparedSetup setup = read_setup(path);  // refuses what is not a setup file, with its line
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  // A setup naming a script file (a lesson of one's own, not a built-in one by name) carries it,
+  // as the page's Copy link does: the page that opens the link has only its built-in lessons.
+  std::string script;
+  if (setup.lesson.find('/') != std::string::npos || fs::path(setup.lesson).extension() == ".lua") {
+    const std::string lesson_path = setup_lesson_path(setup, path);
+    std::ifstream lesson(lesson_path, std::ios::binary);
+    std::ostringstream lesson_text;
+    lesson_text << lesson.rdbuf();
+    script = lesson_text.str();
+    if (linked_script_length(script) > largest_linked_script) {
+      if (left_out != nullptr) *left_out = lesson_path;
+      script.clear();
+    }
+  }
+  return setup_link(text.str(), page, script);
+}
+
+std::optional<std::string> received_setup_text(const std::string& link, std::string* kept) {
+  std::optional<std::string> text = setup_text_from_link(link);
+  if (!text) return std::nullopt;
+  const std::optional<std::string> script = script_text_from_link(link);
+  if (!script) return text;
+  // The setup names the lesson as it was where the link was made (the page's folders, or a
+  // teacher's): kept here under that file's name, the lesson line pointed at it.
+  const PreparedSetup setup = parse_setup(*text, "setup link");
+  const std::string path = keep_user_lesson(fs::path(setup.lesson).filename().string(), *script);
+  if (kept != nullptr) *kept = path;
+  std::istringstream lines(*text);
+  std::string line, rewritten;
+  for (int number = 1; std::getline(lines, line); ++number) rewritten += (number == setup.lesson_line ? "lesson " + path : line) + '\n';
+  return rewritten;
+}
+
 PreparedSetup read_setup(const std::string& path) {
-  if (const std::optional<std::string> text = setup_text_from_link(path)) return parse_setup(*text, "setup link");
+  if (const std::optional<std::string> text = received_setup_text(path)) return parse_setup(*text, "setup link");
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
   if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");

@@ -65,18 +65,36 @@ struct PreparedSetup {
 // Reads a setup from its text; `path` names it in messages. Throws InvalidInput as
 // "path:line: what is wrong" for a line it cannot read, and "path: ..." when it has no lesson.
 PreparedSetup parse_setup(const std::string& text, const std::string& path);
-// The same from the file at `path` (or from a link that holds one: setup_text_from_link);
+// The same from the file at `path` (or from a link that holds one: received_setup_text);
 // refuses what is not a readable regular file of a setup's size.
 PreparedSetup read_setup(const std::string& path);
 
 // A setup as a link to the web page (web/): PAGE#setup=TEXT, the setup file's text encoded as
 // JavaScript's encodeURIComponent does, so a teacher can send a prepared setup as an address.
-std::string setup_link(const std::string& text, const std::string& page);
+// With a `script`, the link carries the lesson too (&script=TEXT, as the page's Copy link adds
+// for a student's own lesson, which lives on one computer only): see received_setup_text.
+std::string setup_link(const std::string& text, const std::string& page, const std::string& script = "");
+// The most a link's &script= part may hold, as encoded (the page's own limit: links far longer
+// are cut by mail programs and refused by some browsers).
+constexpr std::size_t largest_linked_script = 200 * 1024;
+// How long `script` is as a link's &script= part.
+std::size_t linked_script_length(const std::string& script);
+// The link for the setup file at `path` (read_setup's checks first): carrying the lesson the
+// setup names when that is a script file rather than a built-in lesson's name, as long as it
+// fits (largest_linked_script); a script left out for its length is named in *left_out.
+std::string setup_file_link(const std::string& path, const std::string& page, std::string* left_out = nullptr);
 // The setup text a link holds in its fragment's "setup=" part, wherever that stands among the
 // fragment's '&'-joined parts ("#setup=...", "#lesson=push&setup=...", or a fragment alone);
 // nullopt when the text is not such a link. Throws InvalidInput naming the link for a broken
 // %-escape or a text longer than a setup file may be.
 std::optional<std::string> setup_text_from_link(const std::string& link);
+// The lesson a link carries in its "script=" part; nullopt when it carries none.
+std::optional<std::string> script_text_from_link(const std::string& link);
+// A link's setup as the page receives it: a lesson the link carries is kept among the user's
+// own lessons (keep_user_lesson: beside a different lesson of that name, never over it), and
+// the setup's lesson line names where it was kept (in *kept too, when given). nullopt when
+// `link` is not a setup link; the setup's text alone when it carries no lesson.
+std::optional<std::string> received_setup_text(const std::string& link, std::string* kept = nullptr);
 
 // The setup as the file holds it (setup_text then parse_setup gives it back).
 std::string setup_text(const PreparedSetup& setup);

@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+
+#include "physics/validation.h"
 
 namespace frictionlab::ui {
 
@@ -67,6 +70,34 @@ std::string written_title(const std::string& script) {
     }
   }
   return "";
+}
+
+std::string keep_user_lesson(const std::string& name, const std::string& script) {
+  const std::string folder = user_lessons_folder();
+  if (folder.empty()) throw InvalidInput("no home folder (HOME or XDG_DATA_HOME) to keep the lesson " + name + " in");
+  std::string stem = fs::path(name).filename().string();
+  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".lua") == 0) stem.resize(stem.size() - 4);
+  for (char& c : stem) {
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_' && c != '-' && c != '.') c = '_';
+  }
+  if (stem.empty() || stem.find_first_not_of('.') == std::string::npos) stem = "linked_lesson";
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error) throw InvalidInput("cannot make the lessons folder " + folder + ": " + error.message());
+  for (int copy = 1;; ++copy) {
+    const fs::path path = fs::path(folder) / (copy == 1 ? stem + ".lua" : stem + "_" + std::to_string(copy) + ".lua");
+    if (fs::exists(path, error)) {
+      std::ifstream held(path, std::ios::binary);
+      const std::string text{std::istreambuf_iterator<char>(held), std::istreambuf_iterator<char>()};
+      if (held && text == script) return path.string();
+      continue;
+    }
+    std::ofstream file(path, std::ios::binary);
+    file << script;
+    file.close();
+    if (!file) throw InvalidInput("cannot write the lesson " + path.string());
+    return path.string();
+  }
 }
 
 std::vector<UserLesson> user_lessons() {

@@ -797,6 +797,20 @@ test('a setup file and a link convert both ways: the command line\'s link opens 
   assert.match(back.stdout, /^set mass = 3$/m);
   assert.match(back.stdout, /^lock mass, mu_s$/m);
   await page.close();
+  // A setup naming a lesson file of the teacher's own: its link carries the script, and the
+  // page opens it as a lesson of its own (it has none of the teacher's files).
+  const own = path.join(folder, 'sledge.lua');
+  fs.writeFileSync(own, fs.readFileSync(path.join(__dirname, '..', '..', 'lessons', 'incline.lua'), 'utf8').replace(/title = "[^"]*"/, 'title = "A sledge on a hill"'));
+  fs.writeFileSync(path.join(folder, 'sledge.setup'), 'lesson sledge.lua\nset mass = 4\n');
+  const carried = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', path.join(folder, 'sledge.setup'), '--page', site], { encoding: 'utf8' });
+  assert.equal(carried.status, 0, carried.stderr);
+  assert.match(carried.stdout, /&script=/);
+  const opened = await openPage(carried.stdout.trim());
+  assert.equal(await call(opened, 'frictionlab_lesson_path'), userLessons + '/sledge.lua');
+  assert.equal(await call(opened, 'frictionlab_parameter', 'mass'), '4');
+  assert.equal(await fileText(opened, userLessons + '/sledge.lua'), fs.readFileSync(own, 'utf8'));
+  assert.deepEqual(opened.problems, []);
+  await opened.close();
 });
 
 // Issue 28: a teacher's and a student's trial of the page.
@@ -843,12 +857,18 @@ test('Copy link on a student\'s own lesson carries the script: a friend opens it
   await shoot(classmate, 'your_lessons_titles');
   assert.deepEqual(classmate.problems, []);
   await classmate.close();
-  // The command line still reads the link's setup.
+  // The desktop's command line takes the lesson in as the page does: kept among that user's
+  // lessons (here a folder of the test's own), the setup naming it there.
   if (native) {
     const { spawnSync } = require('child_process');
-    const back = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', link], { encoding: 'utf8' });
+    const data = fs.mkdtempSync(path.join(shots, 'desktop-data-'));
+    const back = spawnSync(path.join(native, 'app', 'frictionlab'), ['link', link],
+                           { encoding: 'utf8', env: { ...process.env, XDG_DATA_HOME: data } });
     assert.equal(back.status, 0, back.stderr);
-    assert.match(back.stdout, /^lesson .*my_push\.lua$/m);
+    const kept = path.join(data, 'frictionlab', 'lessons', 'my_push.lua');
+    assert.match(back.stdout, new RegExp('^lesson ' + kept.replace(/[.]/g, '\\.') + '$', 'm'));
+    assert.match(back.stderr, /the link's lesson is kept as .*my_push\.lua/);
+    assert.equal(fs.readFileSync(kept, 'utf8'), mended);
   }
 });
 
@@ -946,6 +966,43 @@ test('a class\'s prediction is cleared when the mass changes before Play, and th
   assert.doesNotMatch(await call(page, 'frictionlab_setup_text'), /^predict breakaway push/m, 'the prediction for 1 kg was kept at 5 kg');
   assert.match(await call(page, 'frictionlab_status_words'), /predicted "breakaway push".*cleared/);
   await shoot(page, 'prediction_cleared');
+  assert.deepEqual(page.problems, []);
+  await page.close();
+});
+
+// Emscripten 3.1.6's GLFW passes the browser's wheel on in pixels and the other way up: a notch
+// down scrolled a panel 100 notches up and zoomed the world out to its limit (a teacher's trial).
+// As on the desktop: a notch down moves a panel 5 lines down (ImGui's step), a notch up zooms
+// the world in by 1.2 about the pointer.
+test('the mouse wheel scrolls a panel down and zooms the world in, a notch at a time, as on the desktop', async () => {
+  const page = await openPage(site + '#lesson=push');
+  const help = 'Help (F1 shows and hides it)';
+  if (!(await number(page, 'frictionlab_help_shown'))) {
+    await page.keyboard.press('F1');
+    await settled(page);
+  }
+  const panel = async () => (await call(page, 'frictionlab_panel', help)).split(' ').map(Number);
+  const [x0, y0, x1, y1, top, font] = await panel();
+  assert.equal(top, 0);
+  await page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2);
+  await frame();
+  await page.mouse.wheel({ deltaY: 100 });
+  await settled(page);
+  assert.equal((await panel())[4], Math.floor(5 * font), 'one notch down is ImGui\'s five lines down');
+  await page.keyboard.press('F1');
+  await settled(page);
+
+  const block = await bodyAt(page, 'block');
+  const pointer = { x: block.x - 150, y: block.y - 80 };
+  await page.mouse.move(pointer.x, pointer.y);
+  await frame();
+  await page.mouse.wheel({ deltaY: -100 });
+  await settled(page);
+  const zoomed = await bodyAt(page, 'block');
+  const ratio = Math.hypot(zoomed.x - pointer.x, zoomed.y - pointer.y) / Math.hypot(block.x - pointer.x, block.y - pointer.y);
+  // 1.2 to within a pixel in 170 (the positions are read to a pixel's thousandth; the ratio's
+  // only error is the camera's single precision).
+  assert.ok(Math.abs(ratio - 1.2) < 0.01, 'a notch up zoomed by ' + ratio);
   assert.deepEqual(page.problems, []);
   await page.close();
 });
