@@ -518,6 +518,31 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
 // with a corner takes the plank's own face for its normal, and the weight was split along the
 // plank's tilt (the trial dragged the incline's block over the slope's top and read
 // "m·g·sin θ = 1.24 N" beside a 30° slope). Resting on the block's top face it is split again.
+// A teacher's trial, projector mode at 1920×1080: the class predicted push's breakaway, the block
+// was pulled by the mouse and the theory revealed; "0.602 N (hand-pulled)" ran past the class
+// table's right edge, with no way to scroll sideways. Each cell wraps in its column now.
+TEST(ForceGauge, AHandPulledMeasurementStaysWholeInTheClassTableOnAProjector) {
+  ClassroomOptions options = gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true);
+  options.window.predictions = true;
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.classroom().predictions().answers["breakaway push"] = "5";
+  hands.frame();
+  hands.pull_right("block", 1.0f, 1.0);
+  hands.classroom().predictions().revealed = true;
+  hands.frame();
+  hands.frame();
+  FrameRecord record;
+  hands.frame(0.0, &record);
+  int found = 0;
+  for (const ShownText& text : record.texts) {
+    if (text.text.find("(hand-pulled)") == std::string::npos) continue;
+    ++found;
+    EXPECT_TRUE(text.whole_across()) << "\"" << text.text << "\" needs x " << text.needed.x << " to " << text.needed.z
+                                     << ", its panel shows " << text.visible.x << " to " << text.visible.z;
+  }
+  EXPECT_GE(found, 1) << "no measurement was marked hand-pulled";
+}
+
 TEST(MeasuringTools, ABodyOnACornerGetsNoWeightSplitOfItsOwnTilt) {
   lessons::ScriptFile script(lessons::with_heading(R"(
 pair { "wood", "stone", mu_s = 0.9, mu_k = 0.8 }

@@ -248,13 +248,18 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
     across(prediction.expectation, std::nullopt);
     // Each row's name on the headers' shade, so the class's rows read as groups of three lines.
     ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImGuiCol_TableHeaderBg));
+    // Each cell wraps at its column's edge: "0.602 N (hand-pulled)" is wider than a third of
+    // the panel in projector mode, and the table has no room to scroll sideways.
+    const auto cell = [](const std::string& text) {
+      ImGui::TableNextColumn();
+      ImGui::PushTextWrapPos(0.0f);
+      shown_text(text.c_str());
+      ImGui::PopTextWrapPos();
+    };
     ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    shown_text(answer_shown(prediction, answer).c_str());
-    ImGui::TableNextColumn();
-    shown_text(!row ? "?" : theory_withheld ? "hidden" : theory_shown(*row).c_str());
-    ImGui::TableNextColumn();
-    shown_text(row ? measured_shown(*row).c_str() : "?");
+    cell(answer_shown(prediction, answer));
+    cell(!row ? "?" : theory_withheld ? "hidden" : theory_shown(*row));
+    cell(row ? measured_shown(*row) : "?");
     if (row != nullptr) {
       const Closeness near = judged(prediction, answer, *row, theory_withheld);
       across(near.words, near.close ? std::optional<ImU32>(theme.good) : std::nullopt);
