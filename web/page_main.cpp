@@ -81,8 +81,13 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   const bool projector = given.projector;
   ui::ClassroomOptions options;
   const std::string folder = ui::settings_folder();
+  const bool first_visit = folder.empty() || !std::filesystem::exists(folder + "/settings.ini");
   if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
   if (projector) options.window.projector = true;
+  // The help panel a newcomer's first page opens with would cover what a link was sent for: a
+  // lesson in projector mode is for a class in front of the screen, and a setup is the lesson
+  // as a teacher prepared it (F1 still shows the help).
+  if (projector || (first_visit && !setup.empty())) options.window.help = false;
   // Full screen cannot be restored: a browser grants it only right after a key or a click.
   options.window.full_screen = false;
   options.output_folder = web::downloads_folder;

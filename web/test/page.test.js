@@ -1006,3 +1006,22 @@ test('the mouse wheel scrolls a panel down and zooms the world in, a notch at a 
   assert.deepEqual(page.problems, []);
   await page.close();
 });
+
+// A teacher's trial: a projector link opened where the page had never been showed the help panel
+// over the question and the sliders, in front of the class; so did a shared setup. A plain first
+// visit still opens with the help.
+test('a projector link or a setup link opens on the lesson, not under the newcomer\'s help', async () => {
+  const plain = await openPage(site + '#lesson=tipping_box');
+  assert.equal(await number(plain, 'frictionlab_help_shown'), 1, 'a first visit opened without its help');
+  await plain.close();
+  const projector = await openPage(site + '#lesson=tipping_box&projector=1');
+  assert.equal(await number(projector, 'frictionlab_help_shown'), 0);
+  assert.equal(await number(projector, 'frictionlab_projector'), 1);
+  await shoot(projector, 'projector_link_first_visit');
+  await projector.close();
+  const setup = await openPage(site + '#setup=' + encodeURIComponent('lesson incline\nset mass = 3\n'));
+  assert.equal(await number(setup, 'frictionlab_help_shown'), 0);
+  assert.equal(await call(setup, 'frictionlab_parameter', 'mass'), '3');
+  assert.deepEqual(setup.problems, []);
+  await setup.close();
+});
