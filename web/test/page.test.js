@@ -605,6 +605,29 @@ test('the page in one file opens from file:// with no server', async () => {
   await shoot(page, 'single_file_copy_link');
   assert.deepEqual(page.problems, []);
   await page.close();
+  // At 1920×1080 too that advice is longer than the bar's line (a teacher's trial saw it end in
+  // "…" just before "hand out the file"): the whole message shows in a box under the bar, which
+  // moves nothing in the classroom, and closes with its ×.
+  const wide = await openPage('file://' + single + '#lesson=push');
+  await closeHelp(wide);
+  const canvasBox = () => wide.evaluate(() => JSON.stringify(document.getElementById('canvas').getBoundingClientRect()));
+  const before = await canvasBox();
+  await wide.click('#share');
+  await settled(wide);
+  const whole = await wide.evaluate(() => {
+    const box = document.getElementById('whole');
+    const r = box.getBoundingClientRect();
+    return { shown: getComputedStyle(box).display !== 'none', text: box.textContent, left: r.left, right: r.right, bottom: r.bottom };
+  });
+  assert.ok(whole.shown, 'the cut message was not shown whole');
+  assert.match(whole.text, /hand out the file and the part from # on\./);
+  assert.ok(whole.left >= 0 && whole.right <= 1920 && whole.bottom <= 1080, JSON.stringify(whole));
+  assert.equal(await canvasBox(), before, 'the message moved the classroom');
+  await shoot(wide, 'single_file_copy_link_whole');
+  await wide.click('#whole-close');
+  assert.equal(await wide.$eval('#whole', (box) => getComputedStyle(box).display), 'none');
+  assert.deepEqual(wide.problems, []);
+  await wide.close();
 });
 
 // The same moment in the desktop window (GLFW, OpenGL 3.3, Mesa's llvmpipe, under Xvfb) and in
