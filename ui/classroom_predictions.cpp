@@ -15,13 +15,14 @@ void Classroom::predict_again() {
   status_ = "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
 }
 
-// An answer is the class's for the values it was given at. Before the reveal, at t = 0 (where
-// answers are typed, and where R brings a run changed midway), a row whose theory is not what it
-// was when the class answered (the mass was changed, or anything else it depends on) loses its
-// answer, and the class is asked again; a value the row does not depend on keeps it. After the
-// reveal the teacher asks again with View > Predict again.
+// An answer is the class's for the values it was given at. At t = 0 (where answers are typed,
+// and where a changed value or R brings a run), a row whose theory is not what it was when the
+// class answered (the mass was changed, or anything else it depends on) loses its answer; a
+// value the row does not depend on keeps it. Before the reveal the class is asked again; after
+// it (a teacher exploring other values) the old answer would be judged against a theory it was
+// never about, so it goes too, and View > Predict again asks anew with the theory hidden.
 void Classroom::forget_outdated_predictions() {
-  if (predictions_.revealed || playback_->lesson().scene().frame() != 0) return;
+  if (playback_->lesson().scene().frame() != 0) return;
   std::vector<std::string> outdated;
   for (const auto& [row_name, answer] : predictions_.answers) {
     for (const lessons::ExpectationResult& row : playback_->readings().expectations) {
@@ -39,7 +40,8 @@ void Classroom::forget_outdated_predictions() {
   std::erase_if(predictions_.theory_answered, [&](const auto& seen) { return predictions_.answers.count(seen.first) == 0; });
   if (!outdated.empty()) {
     status_ = "A value changed after the class predicted \"" + outdated.front() + "\"" + (outdated.size() > 1 ? " (and more)" : "") +
-              ": that prediction was for the old values, so it is cleared. Ask the class again.";
+              ": that prediction was for the old values, so it is cleared. " +
+              (predictions_.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
   }
 }
 
