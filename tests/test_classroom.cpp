@@ -481,6 +481,21 @@ expect { "last", predicted = function() return "stays" end, measured = function(
   EXPECT_TRUE(readings.expectations[2].passes);
   EXPECT_NE(readings.error.find("nothing_here"), std::string::npos) << readings.error;
   EXPECT_THROW(playback.lesson().expectations(), InvalidInput);
+
+  // In the window, the theory table gives the failed row "?" under measured too, as the class's
+  // table does (a student's trial found "?" in one and "not yet" in the other).
+  Driver driver(script.path());
+  driver.classroom().window_settings().predictions = false;
+  driver.playback().run_to(0.1);
+  driver.frame();
+  driver.frame();
+  FrameRecord record;
+  driver.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
+  const auto row = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) { return text.text == "broken"; });
+  ASSERT_NE(row, record.texts.end()) << "the theory table drew no row \"broken\"";
+  ASSERT_GE(std::distance(row, record.texts.end()), 3) << "the row has no cells";
+  EXPECT_EQ(row[1].text, "?");
+  EXPECT_EQ(row[2].text, "?") << "the failed row's measured cell";
 }
 
 TEST(Classroom, ResetRestoresTheInitialState) {

@@ -352,8 +352,9 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         shown_text(cell.theory.c_str());
         ImGui::TableNextColumn();
         if (!cell.measured_yet) {
-          ImGui::TextDisabled("not yet");
-          note_text("not yet");
+          // "not yet", or a failed row's "?" (as the class's table beside it shows it).
+          ImGui::TextDisabled("%s", cell.measured.c_str());
+          note_text(cell.measured.c_str());
           ImGui::TableNextColumn();
           continue;
         }
