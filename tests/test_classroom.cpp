@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "classroom_hands.h"
+#include "ui/plain_words.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson_benchmark.h"
@@ -584,6 +585,38 @@ TEST(Classroom, AChangeAtTheEndOfAReplayedRecordKeepsTheChangesBeforeIt) {
   EXPECT_EQ(driver.lesson().parameter("mu_s").value, 0.6);
   EXPECT_EQ(driver.lesson().parameter("c").value, 1.0);
   EXPECT_EQ(driver.lesson().scene().body("block")->GetPosition().x, live);
+}
+
+// Lua's commonest messages come with plain words in the window too, as in the page's editor: a
+// misspelt field (indexing a nil one) and a missing bracket, each from a script that does not
+// build; and Lua's own words are kept (they name the line).
+TEST(Classroom, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
+  const std::string good = read_file(lessons::resolve_lesson("incline"));
+  const std::vector<std::pair<std::string, std::string>> mistakes = {
+      {replaced(good, "local angle = parameter {", "local angle = math.nothing.x or parameter {"),
+       "the table before \".nothing\" has nothing called nothing"},
+      {replaced(good, "local angle = parameter {", "local angle = parameter { {"), "a bracket is not closed"},
+  };
+  for (const auto& [text, plain] : mistakes) {
+    ScriptFile script(text);
+    Driver driver(script.path());
+    driver.frame();
+    ASSERT_EQ(driver.classroom().failed_script(), script.path()) << plain;
+    FrameRecord record;
+    driver.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
+    // Lua's message from the script's name on: "NAME.lua:LINE: ...", its folders left out.
+    const std::string error = driver.classroom().failed_error();
+    const std::string luas_words = error.substr(error.find(".lua:"));
+    bool luas = false, said = false;
+    for (const ShownText& shown : record.texts) {
+      luas = luas || shown.text.find(luas_words) != std::string::npos;
+      said = said || shown.text.rfind("In plain words: " + plain, 0) == 0;
+    }
+    EXPECT_TRUE(said) << "no plain words \"" << plain << "\" for " << driver.classroom().failed_error();
+    EXPECT_TRUE(luas) << "Lua's own message is gone: " << driver.classroom().failed_error();
+    EXPECT_EQ(plain_words(error).rfind("In plain words: " + plain, 0), 0u);
+  }
+  EXPECT_EQ(plain_words("incline.lua:3: mass must be positive"), "");
 }
 
 TEST(Classroom, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed) {

@@ -16,6 +16,7 @@
 #include "ui/frame.h"
 #include "ui/image.h"
 #include "ui/output_file.h"
+#include "ui/plain_words.h"
 #include "ui/text_boxes.h"
 #include "ui/text_record.h"
 
@@ -470,18 +471,20 @@ std::string Classroom::running_script_error() const {
 
 void Classroom::messages(ImVec2 corner, float width) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
-  if (!failed_script_.empty()) lines.push_back({script_words(failed_error_) + "  (showing " + lesson_name(playback_->lesson().path()) +
-                                                    " until " + lesson_name(failed_script_) + ".lua builds)", true});
-  if (!playback_->script_error().empty()) {
-    lines.push_back({script_words(playback_->script_error()) + "  (the last good version keeps running)", true});
+  // A script's mistake, and under it Lua's message in plain words when it is a common one.
+  const auto mistake = [&](const std::string& message, const std::string& then) {
+    lines.push_back({script_words(message) + then, true});
+    if (std::string plain = plain_words(message); !plain.empty()) lines.push_back({std::move(plain), false});
+  };
+  if (!failed_script_.empty()) {
+    mistake(failed_error_, "  (showing " + lesson_name(playback_->lesson().path()) + " until " + lesson_name(failed_script_) + ".lua builds)");
   }
+  if (!playback_->script_error().empty()) mistake(playback_->script_error(), "  (the last good version keeps running)");
   if (browser_ && playback_->lesson().failed()) {
     // The page's editor is where the student mends it (the desktop's advice is to save the file).
-    lines.push_back({script_words(playback_->lesson().last_error()) +
-                         ". Mend it in the editor (Edit lesson) and Apply, or press R to start again.",
-                     true});
+    mistake(playback_->lesson().last_error(), ". Mend it in the editor (Edit lesson) and Apply, or press R to start again.");
   } else if (!playback_->problem().empty()) {
-    lines.push_back({script_words(playback_->problem()), true});
+    mistake(playback_->problem(), "");
   }
   if (lines.empty()) return;
   const Theme& colours = theme(window_.theme);

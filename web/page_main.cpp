@@ -23,6 +23,7 @@
 #include "lessons/runtime/catalog.h"
 #include "physics/validation.h"
 #include "ui/classroom.h"
+#include "ui/plain_words.h"
 #include "ui/playback.h"
 #include "ui/setup_file.h"
 #include "web/browser_files.h"
@@ -250,6 +251,8 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
   return hand_over(classroom->script_words(classroom->playback().notice() + " " + classroom->status()));
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
+// Lua's message in plain words, for the page's editor and bar (ui/plain_words.h).
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(ui::plain_words(message)); }
 // An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
 // ("x0 y0 x1 y1 scroll font"), or "" when no such panel was drawn.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_panel(const char* name) {
