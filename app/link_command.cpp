@@ -1,7 +1,7 @@
 // frictionlab link: a prepared setup file as a link to the web page, and a link as a setup
 // file, so a teacher can hand a class either.
-#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "app/modes.h"
 #include "physics/validation.h"
@@ -17,7 +17,7 @@ int run_link(const std::vector<std::string>& args, std::ostream& out) {
       if (!page.empty()) throw InvalidInput("link: --page given twice");
       page = args[++i];
     } else if (args[i].rfind("--", 0) == 0) {
-      throw InvalidInput("link: unknown option '" + args[i] + "'; usage: frictionlab link FILE.setup [--page ADDRESS] | frictionlab link LINK");
+      throw InvalidInput("link: unknown option '" + args[i] + "'; usage: frictionlab link FILE.setup [--page ADDRESS] | frictionlab link LINK | frictionlab link - (the link on the standard input)");
     } else if (!source.empty()) {
       throw InvalidInput("link: one setup file or link at a time, got '" + source + "' and '" + args[i] + "'");
     } else {
@@ -25,6 +25,16 @@ int run_link(const std::vector<std::string>& args, std::ostream& out) {
     }
   }
   if (source.empty()) throw InvalidInput("link: name a setup file (to make its link) or give a link (to write its setup)");
+  // "-": the link from the standard input. A link carrying a long lesson is longer than one
+  // command-line argument may be on Linux (128 KB; the page's links carry up to 200 KB).
+  if (source == "-") {
+    std::ostringstream given;
+    given << std::cin.rdbuf();
+    source = given.str();
+    source.erase(0, source.find_first_not_of(" \t\r\n"));
+    source.erase(source.find_last_not_of(" \t\r\n") + 1);
+    if (!ui::setup_text_from_link(source)) throw InvalidInput("link: the standard input holds no link (an address with #setup=...)");
+  }
   // A link in: its setup's text out, checked as a setup file is. A lesson the link carries (a
   // student's own, from the page's Copy link) is kept among this user's lessons, as the page
   // keeps it, and the setup names it there.

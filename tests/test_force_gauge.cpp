@@ -514,10 +514,6 @@ TEST(MeasuringTools, TheWeightsComponentsOnAnInclineAreMgSinAndMgCos) {
   EXPECT_FALSE(slope_weight(level.lesson().scene(), level.lesson().scene().body("block")).has_value());
 }
 
-// A plank lying across the corner of a fixed block stands on no surface of it: Box2D's contact
-// with a corner takes the plank's own face for its normal, and the weight was split along the
-// plank's tilt (the trial dragged the incline's block over the slope's top and read
-// "m·g·sin θ = 1.24 N" beside a 30° slope). Resting on the block's top face it is split again.
 // A teacher's trial, projector mode at 1920×1080: the class predicted push's breakaway, the block
 // was pulled by the mouse and the theory revealed; "0.602 N (hand-pulled)" ran past the class
 // table's right edge, with no way to scroll sideways. Each cell wraps in its column now.
@@ -543,6 +539,10 @@ TEST(ForceGauge, AHandPulledMeasurementStaysWholeInTheClassTableOnAProjector) {
   EXPECT_GE(found, 1) << "no measurement was marked hand-pulled";
 }
 
+// A plank lying across the corner of a fixed block stands on no surface of it: Box2D's contact
+// with a corner takes the plank's own face for its normal, and the weight was split along the
+// plank's tilt (the trial dragged the incline's block over the slope's top and read
+// "m·g·sin θ = 1.24 N" beside a 30° slope). Resting on the block's top face it is split again.
 TEST(MeasuringTools, ABodyOnACornerGetsNoWeightSplitOfItsOwnTilt) {
   lessons::ScriptFile script(lessons::with_heading(R"(
 pair { "wood", "stone", mu_s = 0.9, mu_k = 0.8 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,6 +14,7 @@
 
 #include "classroom_hands.h"
 #include "ui/setup_file.h"
+#include "ui/user_lessons.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -534,10 +536,23 @@ TEST(SetupLink, HoldsTheWholeSetupAndOpensAsTheFileDoes) {
 // the lesson is kept among the user's lessons as the page keeps it (never over a different one
 // of that name, once for the same text) and the setup names it there; and a setup naming a
 // script file makes a link that carries it.
+// A data folder of the test's own as XDG_DATA_HOME, gone (and the variable unset) however the test ends.
+struct OwnDataFolder {
+  fs::path path;
+  OwnDataFolder() {
+    std::string name = (fs::temp_directory_path() / "frictionlab_link_XXXXXX").string();
+    path = ::mkdtemp(name.data());
+    ::setenv("XDG_DATA_HOME", path.c_str(), 1);
+  }
+  ~OwnDataFolder() {
+    ::unsetenv("XDG_DATA_HOME");
+    fs::remove_all(path);
+  }
+};
+
 TEST(SetupLink, CarriesAStudentsOwnLessonAndKeepsItAsThePageDoes) {
-  const fs::path data = fs::temp_directory_path() / ("frictionlab_link_" + std::to_string(::getpid()));
-  fs::remove_all(data);
-  ::setenv("XDG_DATA_HOME", data.c_str(), 1);
+  const OwnDataFolder own_data;
+  const fs::path data = own_data.path;
   const fs::path lessons = data / "frictionlab" / "lessons";
   std::ifstream incline(lessons::resolve_lesson("incline"), std::ios::binary);
   const std::string script{std::istreambuf_iterator<char>(incline), std::istreambuf_iterator<char>()};
@@ -581,6 +596,8 @@ TEST(SetupLink, CarriesAStudentsOwnLessonAndKeepsItAsThePageDoes) {
   const std::string long_link = setup_file_link((folder / "long.setup").string(), "", &left_out);
   EXPECT_EQ(script_text_from_link(long_link), std::nullopt);
   EXPECT_EQ(left_out, (lessons / "long.lua").string());
+  // Carried, the lesson is named by its file alone: the teacher's folders stay out of the link.
+  EXPECT_EQ(setup_text_from_link(setup_file_link((folder / "own.setup").string(), "")), "lesson my_slope.lua\n");
   // A broken escape in the script part is named as the lesson's.
   try {
     received_setup_text("#setup=lesson%20x.lua&script=end%2");
@@ -588,8 +605,21 @@ TEST(SetupLink, CarriesAStudentsOwnLessonAndKeepsItAsThePageDoes) {
   } catch (const InvalidInput& error) {
     EXPECT_NE(std::string(error.what()).find("setup link's lesson: '%2'"), std::string::npos) << error.what();
   }
-  ::unsetenv("XDG_DATA_HOME");
-  fs::remove_all(data);
+  // An empty script is no lesson, and nothing is kept.
+  EXPECT_THROW(received_setup_text("#setup=lesson%20empty.lua&script="), InvalidInput);
+  EXPECT_FALSE(fs::exists(lessons / "empty.lua"));
+  // Names as the page makes them: no hidden file, one '_' a character, at most 100 characters.
+  EXPECT_EQ(lesson_file_stem("/home/web_user/x/.bashrc"), "bashrc");
+  EXPECT_EQ(lesson_file_stem("pente_\u00e9t\u00e9.lua"), "pente__t_");
+  EXPECT_EQ(lesson_file_stem(".lua"), "linked_lesson");
+  EXPECT_EQ(lesson_file_stem(std::string(300, 'a')).size(), 100u);
+  // A link placed in the folder under the lesson's name is not written through: the lesson
+  // comes in beside it, and the file the link points at is untouched.
+  const fs::path outside = data / "outside.txt";
+  fs::create_symlink(outside, lessons / "linked.lua");
+  received_setup_text(setup_link("lesson linked.lua\n", "", script), &kept);
+  EXPECT_EQ(kept, (lessons / "linked_2.lua").string());
+  EXPECT_FALSE(fs::exists(outside)) << "a lesson was written through a link in the lessons folder";
 }
 
 TEST(SetupLink, ACutOrChangedLinkSaysWhereAndWhat) {

@@ -56,6 +56,7 @@ Classroom::Classroom(ClassroomOptions options)
   // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
   tools_.on = window_.tools;
   tools_.arm_stopwatch(0.0, false);
+  if (!options.opening_notice.empty()) status_ = options.opening_notice;
 }
 
 std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,

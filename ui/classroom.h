@@ -53,6 +53,8 @@ struct ClassroomOptions {
   // offers the page's own file chooser (not a path to type), saves a setup as a download, and
   // has no Reload or Quit; the script's advice says Apply (the page's editor), not save.
   bool browser = false;
+  // Said in the status line as the window opens (a link's lesson kept among the user's lessons).
+  std::string opening_notice;
 };
 
 // The names --lock takes besides a lesson's parameters.
@@ -61,7 +63,9 @@ inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
 // The options a prepared setup file gives (its lesson, values, lock, mystery, step settings and
 // the class's predictions) in place of those in `base`; the window's own settings stay, but for
 // whether predictions are asked when the file says (`predictions on|off`). Throws InvalidInput as
-// "file:line: what is wrong", checked against the lesson before anything opens.
+// "file:line: what is wrong", checked against the lesson before anything opens. A link that
+// carries its lesson (the page's Copy link for a student's own) has it kept among the user's
+// lessons (received_setup_text), and opening_notice says where.
 ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base);
 
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".

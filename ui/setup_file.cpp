@@ -284,6 +284,33 @@ std::optional<std::string> link_part(const std::string& link, const std::string&
 
 }  // namespace
 
+namespace {
+
+// A setup's lesson line names a script file ("my_slope.lua", "lessons/push.lua"), not a
+// built-in lesson by its name ("push").
+bool names_a_script_file(const std::string& lesson) {
+  return lesson.find('/') != std::string::npos || fs::path(lesson).extension() == ".lua";
+}
+
+// A setup file's text, refused with a clear message where it is not one: missing, a folder, a
+// FIFO or device (which would be waited on, or read for ever), or more than a setup holds.
+std::string setup_file_text(const std::string& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
+  if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");
+  if (!S_ISREG(status.st_mode)) throw InvalidInput("setup " + path + ": that is not a regular file");
+  if (static_cast<std::size_t>(status.st_size) > largest_setup) {
+    throw InvalidInput("setup " + path + ": " + std::to_string(status.st_size) + " bytes is too large for a setup file (at most 64 KB)");
+  }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InvalidInput("setup " + path + ": cannot be read");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
 std::string setup_link(const std::string& text, const std::string& page, const std::string& script) {
   std::string link = page + "#setup=" + encoded_for_link(text);
   if (!script.empty()) link += "&script=" + encoded_for_link(script);
@@ -301,25 +328,40 @@ std::optional<std::string> script_text_from_link(const std::string& link) {
 }
 
 std::string setup_file_link(const std::string& path, const std::string& page, std::string* left_out) {
-  const PreparedSetup setup = read_setup(path);  // refuses what is not a setup file, with its line
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
+  // Read once: the link carries the very text that was checked.
+  std::string text = setup_file_text(path);
+  const PreparedSetup setup = parse_setup(text, path);
   // A setup naming a script file (a lesson of one's own, not a built-in one by name) carries it,
   // as the page's Copy link does: the page that opens the link has only its built-in lessons.
   std::string script;
-  if (setup.lesson.find('/') != std::string::npos || fs::path(setup.lesson).extension() == ".lua") {
+  if (names_a_script_file(setup.lesson)) {
     const std::string lesson_path = setup_lesson_path(setup, path);
-    std::ifstream lesson(lesson_path, std::ios::binary);
-    std::ostringstream lesson_text;
-    lesson_text << lesson.rdbuf();
-    script = lesson_text.str();
-    if (linked_script_length(script) > largest_linked_script) {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(lesson_path, error);
+    if (error) throw InvalidInput(path + ":" + std::to_string(setup.lesson_line) + ": cannot read " + lesson_path + ": " + error.message());
+    // Each byte takes up to three characters in a link: a file far past the limit is not read.
+    if (size <= 3 * largest_linked_script) {
+      std::ifstream lesson(lesson_path, std::ios::binary);
+      std::ostringstream lesson_text;
+      lesson_text << lesson.rdbuf();
+      if (!lesson) throw InvalidInput(path + ":" + std::to_string(setup.lesson_line) + ": cannot read " + lesson_path);
+      script = lesson_text.str();
+    }
+    if (size > 3 * largest_linked_script || linked_script_length(script) > largest_linked_script) {
       if (left_out != nullptr) *left_out = lesson_path;
       script.clear();
+    } else {
+      // The lesson line names the file alone: a teacher's folders are no part of the link (the
+      // page keeps the lesson under that name).
+      std::istringstream lines(text);
+      std::string line, named;
+      for (int number = 1; std::getline(lines, line); ++number) {
+        named += (number == setup.lesson_line ? "lesson " + fs::path(lesson_path).filename().string() : line) + '\n';
+      }
+      text = named;
     }
   }
-  return setup_link(text.str(), page, script);
+  return setup_link(text, page, script);
 }
 
 std::optional<std::string> received_setup_text(const std::string& link, std::string* kept) {
@@ -339,20 +381,8 @@ std::optional<std::string> received_setup_text(const std::string& link, std::str
 }
 
 PreparedSetup read_setup(const std::string& path) {
-  if (const std::optional<std::string> text = received_setup_text(path)) return parse_setup(*text, "setup link");
-  struct stat status {};
-  if (::stat(path.c_str(), &status) != 0) throw InvalidInput("setup " + path + ": no such file");
-  if (S_ISDIR(status.st_mode)) throw InvalidInput("setup " + path + ": that is a folder, not a setup file");
-  // A FIFO or a device would be waited on, or read for ever.
-  if (!S_ISREG(status.st_mode)) throw InvalidInput("setup " + path + ": that is not a regular file");
-  if (static_cast<std::size_t>(status.st_size) > largest_setup) {
-    throw InvalidInput("setup " + path + ": " + std::to_string(status.st_size) + " bytes is too large for a setup file (at most 64 KB)");
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InvalidInput("setup " + path + ": cannot be read");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_setup(text.str(), path);
+  if (const std::optional<std::string> text = setup_text_from_link(path)) return parse_setup(*text, "setup link");
+  return parse_setup(setup_file_text(path), path);
 }
 
 std::string setup_text(const PreparedSetup& setup) {
@@ -401,7 +431,7 @@ void write_setup(const std::string& path, const PreparedSetup& setup) {
 }
 
 std::string setup_lesson_path(const PreparedSetup& setup, const std::string& setup_path) {
-  const bool a_name = setup.lesson.find('/') == std::string::npos && fs::path(setup.lesson).extension() != ".lua";
+  const bool a_name = !names_a_script_file(setup.lesson);
   const fs::path script(setup.lesson);
   try {
     if (a_name) return lessons::resolve_lesson(setup.lesson);
@@ -494,7 +524,10 @@ std::string prediction_problem(const lessons::Lesson& lesson, const std::string&
 namespace frictionlab::ui {
 
 ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base) {
-  const PreparedSetup setup = read_setup(setup_path);
+  // A link that carries its lesson: kept among the user's lessons, and the window says where.
+  std::string kept;
+  const std::optional<std::string> received = received_setup_text(setup_path, &kept);
+  const PreparedSetup setup = received ? parse_setup(*received, "setup link") : read_setup(setup_path);
   const std::string lesson_path = setup_lesson_path(setup, setup_path);
   try {
     lessons::Lesson lesson(lesson_path, {}, setup.settings);
@@ -504,6 +537,8 @@ ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions b
     throw InvalidInput(setup_path + ":" + std::to_string(setup.lesson_line) + ": " + error.what());
   }
   base.lesson = lesson_path;
+  base.opening_notice = kept.empty() ? "" : "The link brought its lesson: it is yours now as " + fs::path(kept).filename().string() +
+                                                " (Lesson > Your lessons).";
   base.overrides.clear();
   for (const PreparedSetup::Value& value : setup.values) base.overrides[value.name] = value.text;
   base.lock = setup.lock;

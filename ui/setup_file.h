@@ -65,7 +65,8 @@ struct PreparedSetup {
 // Reads a setup from its text; `path` names it in messages. Throws InvalidInput as
 // "path:line: what is wrong" for a line it cannot read, and "path: ..." when it has no lesson.
 PreparedSetup parse_setup(const std::string& text, const std::string& path);
-// The same from the file at `path` (or from a link that holds one: received_setup_text);
+// The same from the file at `path` (or from a link that holds one: setup_text_from_link; a
+// lesson the link carries is not kept, which setup_options does);
 // refuses what is not a readable regular file of a setup's size.
 PreparedSetup read_setup(const std::string& path);
 

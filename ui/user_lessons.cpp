@@ -1,8 +1,13 @@
 #include "ui/user_lessons.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -72,32 +77,64 @@ std::string written_title(const std::string& script) {
   return "";
 }
 
+std::string lesson_file_stem(const std::string& name) {
+  std::string stem = fs::path(name).filename().string();
+  if (stem.size() >= 4 && stem.compare(stem.size() - 4, 4, ".lua") == 0) stem.resize(stem.size() - 4);
+  // Character by character as the page does it (JavaScript counts a character beyond U+FFFF
+  // as two): each one outside A-Z, a-z, 0-9, '_', '-' and '.' becomes '_'.
+  std::string safe;
+  for (std::size_t i = 0; i < stem.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(stem[i]);
+    if (byte < 0x80) {
+      safe += std::isalnum(byte) != 0 || byte == '_' || byte == '-' || byte == '.' ? stem[i] : '_';
+    } else if ((byte & 0xC0) != 0x80) {  // a UTF-8 sequence's first byte: one character
+      safe += byte >= 0xF0 ? "__" : "_";
+    }
+  }
+  // No hidden file (".bashrc"), and a name a menu and a message can hold.
+  safe.erase(0, safe.find_first_not_of('.'));
+  if (safe.size() > 100) safe.resize(100);
+  return safe.empty() ? "linked_lesson" : safe;
+}
+
 std::string keep_user_lesson(const std::string& name, const std::string& script) {
   const std::string folder = user_lessons_folder();
   if (folder.empty()) throw InvalidInput("no home folder (HOME or XDG_DATA_HOME) to keep the lesson " + name + " in");
-  std::string stem = fs::path(name).filename().string();
-  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".lua") == 0) stem.resize(stem.size() - 4);
-  for (char& c : stem) {
-    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_' && c != '-' && c != '.') c = '_';
-  }
-  if (stem.empty() || stem.find_first_not_of('.') == std::string::npos) stem = "linked_lesson";
+  if (script.empty()) throw InvalidInput("the lesson " + name + " came empty: nothing to keep");
+  const std::string stem = lesson_file_stem(name);
   std::error_code error;
   fs::create_directories(folder, error);
   if (error) throw InvalidInput("cannot make the lessons folder " + folder + ": " + error.message());
-  for (int copy = 1;; ++copy) {
+  for (int copy = 1; copy < 1000; ++copy) {
     const fs::path path = fs::path(folder) / (copy == 1 ? stem + ".lua" : stem + "_" + std::to_string(copy) + ".lua");
-    if (fs::exists(path, error)) {
+    // Made only where nothing is, a link (even a dangling one) included: nothing outside the
+    // folder is written through a link placed in it.
+    const int made = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (made < 0) {
+      if (errno != EEXIST) throw InvalidInput("cannot write the lesson " + path.string() + ": " + std::strerror(errno));
+      // Taken: the same lesson if it is a plain file holding that very text.
+      if (fs::is_symlink(fs::symlink_status(path, error))) continue;
       std::ifstream held(path, std::ios::binary);
       const std::string text{std::istreambuf_iterator<char>(held), std::istreambuf_iterator<char>()};
       if (held && text == script) return path.string();
       continue;
     }
-    std::ofstream file(path, std::ios::binary);
-    file << script;
-    file.close();
-    if (!file) throw InvalidInput("cannot write the lesson " + path.string());
+    std::size_t written = 0;
+    while (written < script.size()) {
+      const ssize_t wrote = ::write(made, script.data() + written, script.size() - written);
+      if (wrote < 0 && errno == EINTR) continue;
+      if (wrote <= 0) break;
+      written += static_cast<std::size_t>(wrote);
+    }
+    const bool closed = ::close(made) == 0;
+    if (written != script.size() || !closed) {
+      const std::string why = std::strerror(errno);
+      ::unlink(path.c_str());  // no cut lesson left in the menu
+      throw InvalidInput("cannot write the lesson " + path.string() + ": " + why);
+    }
     return path.string();
   }
+  throw InvalidInput("the lessons folder " + folder + " already holds 999 lessons named " + stem);
 }
 
 std::vector<UserLesson> user_lessons() {

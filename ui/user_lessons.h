@@ -23,12 +23,16 @@ struct UserLesson {
 // read from the script's text: lesson{}'s own title = "..." (or '...'), written as a plain string.
 std::vector<UserLesson> user_lessons();
 
-// Keeps `script` among the user's lessons under the file name `name` (any folder dropped, any
-// character but letters, digits, '_', '-' and '.' made '_', ".lua" added): NAME.lua, else
-// NAME_2.lua, NAME_3.lua..., never over a different lesson, as the page keeps a lesson that
-// comes in from outside; a lesson of that name already holding that very text is the same one,
-// kept once. Makes the folder if need be. Returns the path. Throws InvalidInput when there is no
-// home to keep it in or it cannot be written.
+// A lesson file's name (without ".lua") made from `name` as the page makes it: any folder and
+// ".lua" dropped, every character but letters, digits, '_', '-' and '.' made '_', no leading
+// dots, at most 100 characters; "linked_lesson" when nothing is left.
+std::string lesson_file_stem(const std::string& name);
+// Keeps `script` among the user's lessons under the name lesson_file_stem(name): NAME.lua, else
+// NAME_2.lua, NAME_3.lua..., never over another file or through a link placed in the folder,
+// as the page keeps a lesson that comes in from outside; a lesson of that name already holding
+// that very text is the same one, kept once. Makes the folder if need be; a write that fails
+// leaves no file. Returns the path. Throws InvalidInput when there is no home to keep it in,
+// the script is empty, or it cannot be written.
 std::string keep_user_lesson(const std::string& name, const std::string& script);
 
 // That title read from a script's text; empty when it has none written as a plain string.

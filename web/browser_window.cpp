@@ -294,7 +294,9 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
   // browser's deltaY as it is, in pixels and growing downwards, where the desktop's GLFW gives
   // notches growing upwards. Passed on, a notch down (100 px) scrolled a panel 100 notches up
   // and zoomed the world out to its limit. A notch is 100 pixels or 3 lines (emscripten's own
-  // measure) and, rarely met, a page 10 notches (an ImGui notch moves a panel about 5 lines).
+  // measure). A page (rarely sent: a system set to scroll by pages) is taken as 10 notches, about
+  // what a panel shows (an ImGui notch moves it 5 lines), not emscripten's 80, which would zoom
+  // the world 1.2^80 times at one turn of the wheel (the zoom stops at 0.1 and 20 anyway).
   glfwSetScrollCallback(window, nullptr);
   emscripten_set_wheel_callback(canvas, nullptr, EM_TRUE, [](int type, const EmscriptenWheelEvent* wheel, void*) {
     const double per_notch = wheel->deltaMode == DOM_DELTA_PIXEL ? 100.0 : wheel->deltaMode == DOM_DELTA_LINE ? 3.0 : 0.1;

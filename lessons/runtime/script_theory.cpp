@@ -484,11 +484,12 @@ int thrown_box(lua_State* state) {
     const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
     // Landing flat, the face's two ends share the impact: each end's fall is stopped (or, with
     // restitution e, turned back at e times its speed), and two ends that stop together stop
-    // the box's fall and its spin together (fall and spin each turned back at e times); the
-    // ends' loads shift to hold friction's moment. Unless friction's moment about the front end
-    // is more than the weight of the impact can hold: then the front end takes it alone and the
-    // rear end lifts. (A spinning box landing flat once kept its spin here: 7.6 rad/s predicted
-    // where the world's box stops turning, at spin 7.638 and mu_k 0.4.)
+    // the box's fall and its spin together (fall and spin each turned back at e times), the
+    // ends' loads shifting to hold friction's moment and the spin's. That holds while both
+    // loads are pushes: where one end alone, taking the impact, leaves the other rising (friction's
+    // moment about the front end, or a spin too fast for the fall to stop), that end takes it
+    // alone and the other lifts. A spinning box does not keep its spin through such a landing:
+    // at spin 7.638 rad/s and mu_k 0.4, the world's box stops turning.
     std::string corner = "lands flat";
     theory::CornerImpact impact{};
     double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
@@ -496,11 +497,16 @@ int thrown_box(lua_State* state) {
       const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
       const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
       const double rear_x = landing_leads ? far_x : landing.corner_x;
-      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0);
+      const double rear_y = landing_leads ? far_y : landing.corner_y;
+      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0), rear = impact_on(rear_x, rear_y, 0.0);
       if (front.vy + front.omega * rear_x > 0.0) {
         impact = front;
         corner = "pitches over its front edge";
         hit_x = front_x, hit_y = front_y;
+      } else if (rear.vy + rear.omega * front_x > 0.0) {
+        impact = rear;
+        corner = "pitches over its rear edge";
+        hit_x = rear_x, hit_y = rear_y;
       } else {
         impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
         impact.omega = -restitution * spin;

@@ -889,7 +889,7 @@ test('Copy link on a student\'s own lesson carries the script: a friend opens it
                            { encoding: 'utf8', env: { ...process.env, XDG_DATA_HOME: data } });
     assert.equal(back.status, 0, back.stderr);
     const kept = path.join(data, 'frictionlab', 'lessons', 'my_push.lua');
-    assert.match(back.stdout, new RegExp('^lesson ' + kept.replace(/[.]/g, '\\.') + '$', 'm'));
+    assert.ok(back.stdout.split('\n').includes('lesson ' + kept), back.stdout);
     assert.match(back.stderr, /the link's lesson is kept as .*my_push\.lua/);
     assert.equal(fs.readFileSync(kept, 'utf8'), mended);
   }
