@@ -229,10 +229,13 @@ void draw_frame() {
     EM_ASM({ frictionlabPage.setFullScreen($0); }, settings.full_screen ? 1 : 0);
     p.full_screen = settings.full_screen;
   }
-  if (!p.run.settings_path.empty() && !(settings == p.saved)) {
-    ui::save_settings(settings, p.run.settings_path);
+  if (settings.help) p.run.help_to_save.reset();  // shown: from now on the user's own choice
+  ui::WindowSettings to_save = settings;
+  if (p.run.help_to_save) to_save.help = *p.run.help_to_save;
+  if (!p.run.settings_path.empty() && !(to_save == p.saved)) {
+    ui::save_settings(to_save, p.run.settings_path);
     keep_home_folder();
-    p.saved = settings;
+    p.saved = to_save;
   }
 }
 
@@ -271,6 +274,7 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
   page->run = run;
   page->window = window;
   page->saved = classroom.window_settings();
+  if (run.help_to_save) page->saved.help = *run.help_to_save;
   page->full_screen = false;
   page->host = std::make_unique<ui::ImGuiHost>(nullptr);
   glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {

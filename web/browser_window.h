@@ -4,6 +4,7 @@
 // full screen, and a loop that stops drawing while nothing can change.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "ui/classroom.h"
@@ -15,6 +16,9 @@ struct PageRun {
   // Where the page writes a link's setup before opening it: the lesson in the page's address
   // is named from there.
   std::string link_setup_path;
+  // The help panel's remembered setting while a link opened the page with it closed: saved in
+  // its place until the user shows the help (F1), so one link does not hide it for good.
+  std::optional<bool> help_to_save;
 };
 
 // Starts the page's frame loop and returns to the browser (the loop runs from its events).

@@ -76,7 +76,7 @@ void run_to_link_time(double seconds) {
   classroom->run_to(std::min(seconds, classroom->playback().lesson().duration()));
 }
 
-ui::ClassroomOptions page_options(const PageArguments& given, std::string& problem) {
+ui::ClassroomOptions page_options(const PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
   const std::string& lesson = given.lesson;
   const std::string& setup = given.setup;
   const bool projector = given.projector;
@@ -88,7 +88,11 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   // The help panel a newcomer's first page opens with would cover what a link was sent for: a
   // lesson in projector mode is for a class in front of the screen, and a setup is the lesson
   // as a teacher prepared it (F1 still shows the help).
-  if (projector || (first_visit && !setup.empty())) options.window.help = false;
+  // Closed for this visit only: what is remembered stays the user's own (web::PageRun).
+  if (projector || (first_visit && !setup.empty())) {
+    help_to_save = options.window.help;
+    options.window.help = false;
+  }
   // Full screen cannot be restored: a browser grants it only right after a key or a click.
   options.window.full_screen = false;
   options.output_folder = web::downloads_folder;
@@ -125,7 +129,8 @@ int main(int argc, char** argv) {
   fs::create_directories(web::downloads_folder, error);
   std::string problem;
   const PageArguments given = page_arguments(std::vector<std::string>(argv + 1, argv + argc));
-  const ui::ClassroomOptions options = page_options(given, problem);
+  std::optional<bool> help_to_save;
+  const ui::ClassroomOptions options = page_options(given, problem, help_to_save);
   try {
     classroom = std::make_unique<ui::Classroom>(options);
   } catch (const std::exception& failure) {
@@ -142,6 +147,7 @@ int main(int argc, char** argv) {
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
   web::PageRun run;
   run.link_setup_path = link_setup;
+  run.help_to_save = help_to_save;
   if (const std::string folder = ui::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
   try {
     web::run_page(*classroom, run);

@@ -1045,6 +1045,13 @@ test('a projector link or a setup link opens on the lesson, not under the newcom
   const setup = await openPage(site + '#setup=' + encodeURIComponent('lesson incline\nset mass = 3\n'));
   assert.equal(await number(setup, 'frictionlab_help_shown'), 0);
   assert.equal(await call(setup, 'frictionlab_parameter', 'mass'), '3');
+  // Closed for this visit only: a setting changed now (the dark theme) is remembered, the help's
+  // remembered one stays on, so the next visit without a link opens with it as a newcomer's does.
+  await setup.keyboard.press('d');
+  await settled(setup);
+  const remembered = await fileText(setup, '/home/web_user/.config/frictionlab/settings.ini');
+  assert.match(remembered || '', /^theme = dark$/m, 'the dark theme was not remembered');
+  assert.match(remembered, /^help = on$/m, 'one setup link hid the help for good');
   assert.deepEqual(setup.problems, []);
   await setup.close();
 });
