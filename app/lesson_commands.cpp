@@ -161,7 +161,7 @@ std::string draw_value(const lessons::Parameter& parameter, int index, Draws& dr
   const double value = parameter.min + draws.unit() * (parameter.max - parameter.min);
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", value);
-  const double rounded = std::strtod(text, nullptr);
+  const double rounded = validation::read_decimal(text);
   if (rounded < parameter.min) return exact_text(parameter.min);
   if (rounded > parameter.max) return exact_text(parameter.max);
   return exact_text(rounded);

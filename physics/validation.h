@@ -28,6 +28,10 @@ void require_in_range(const std::string& name, double value, double low, double 
 // can be said (left empty otherwise).
 std::optional<double> parse_decimal(const std::string& text, std::string& why);
 
+// std::strtod(text, nullptr), the same double for any text; the short decimals ("0.25",
+// "1.5e-05") are read without strtod's long double arithmetic (in software in WebAssembly).
+double read_decimal(const char* text);
+
 // The shortest text that reads back as the same double ("50", "0.45", "1e+20"), as --set,
 // setup files and the sliders' boxes write a value: std::to_chars's, and the same text where a
 // standard library lacks it (emscripten's libc++ has no floating-point to_chars).
