@@ -499,6 +499,31 @@ expect { "last", predicted = function() return "stays" end, measured = function(
   EXPECT_EQ(row[2].text, "?") << "the failed row's measured cell";
 }
 
+// Asked of the class before the reveal, a failed row's note beside the answer box says "?" too,
+// as both tables do (a student's second trial found "measured: not yet" there).
+TEST(Classroom, AFailedRowsNoteBesideTheClasssAnswerSaysItIsNotKnown) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "broken", unit = "N", predicted = function() return 2 end,
+  measured = function() if time() > 0.05 then return nothing_here.value end end, tolerance = 0.1 }
+predict { "broken", unit = "N", question = "How hard?" }
+)"));
+  Driver driver(script.path());
+  driver.classroom().window_settings().predictions = true;
+  driver.playback().run_to(0.1);
+  ASSERT_TRUE(driver.classroom().theory_hidden());
+  driver.frame();
+  FrameRecord record;
+  driver.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
+  bool unknown = false;
+  for (const ShownText& text : record.texts) {
+    EXPECT_NE(text.text, "measured: not yet") << "the failed row is said to be not measured yet";
+    unknown = unknown || text.text == "measured: ?";
+  }
+  EXPECT_TRUE(unknown) << "no \"measured: ?\" beside the class's answer";
+}
+
 TEST(Classroom, ResetRestoresTheInitialState) {
   Driver driver("tipping_box");
   driver.frame();
@@ -627,7 +652,9 @@ TEST(Classroom, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
   EXPECT_EQ(plain_words("a.lua:4: attempt to compare two table values"), "");
   EXPECT_EQ(plain_words("a.lua:4: attempt to concatenate a nil value (field 'x')").rfind("In plain words: a value joined", 0), 0u);
   EXPECT_EQ(plain_words("a.lua:9: 'end' expected (to close 'function' at line 4) near <eof>").rfind("In plain words: a function, if", 0), 0u);
-  EXPECT_EQ(plain_words("a.lua:9: '}' expected (to close '{' at line 4) near 'mass'").rfind("In plain words: a bracket is not closed: Lua expected }", 0), 0u);
+  EXPECT_EQ(plain_words("a.lua:9: '}' expected (to close '{' at line 4) near 'mass'"),
+            "In plain words: a bracket is not closed: Lua expected } here. A missing comma between two entries does this too. "
+            "The one it closes opened at line 4.");
   EXPECT_EQ(plain_words("a.lua:9: unexpected symbol near '='").rfind("In plain words: Lua could not read", 0), 0u);
   EXPECT_EQ(plain_words("a.lua:9: unfinished string near '\"push'"), "In plain words: a text in quotes is not closed on its line.");
   EXPECT_EQ(plain_words("a.lua:4: attempt to index a nil value (constant 'x')"), "");

@@ -67,8 +67,13 @@ std::string plain_words(const std::string& lua_message) {
   if (has(m, "'end' expected")) return "In plain words: a function, if, for or while that opens above is not closed with end.";
   for (const char* bracket : {")", "}", "]"}) {
     if (has(m, (std::string("'") + bracket + "' expected").c_str())) {
+      // Lua names the line where it noticed; "(to close '{' at line 8)" where the bracket opened.
+      std::string opened;
+      if (const std::size_t at = after(m, "' at line "); at != std::string::npos && has(m, "(to close '")) {
+        opened = " The one it closes opened at line " + m.substr(at, m.find(')', at) - at) + ".";
+      }
       return std::string("In plain words: a bracket is not closed: Lua expected ") + bracket +
-             " here. A missing comma between two entries does this too.";
+             " here. A missing comma between two entries does this too." + opened;
     }
   }
   if (has(m, "unexpected symbol") || has(m, "'=' expected") || has(m, "syntax error")) {

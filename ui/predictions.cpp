@@ -17,13 +17,19 @@ namespace {
 // Room for a number and its sign, typed: a box wider than that only pushes the unit away.
 constexpr int answer_length = 16;
 
-const lessons::ExpectationResult* row_of(const std::vector<lessons::ExpectationResult>& rows,
-                                         const lessons::Prediction& prediction) {
+// The row the prediction is about, failed or not; nullptr when the lesson has none of that name.
+const lessons::ExpectationResult* named_row(const std::vector<lessons::ExpectationResult>& rows,
+                                            const lessons::Prediction& prediction) {
   for (const lessons::ExpectationResult& row : rows) {
-    // A row whose function failed is known no better than a missing one ("?").
-    if (row.name == prediction.expectation) return row.failed ? nullptr : &row;
+    if (row.name == prediction.expectation) return &row;
   }
   return nullptr;
+}
+// The same for reading: a row whose function failed is known no better than a missing one ("?").
+const lessons::ExpectationResult* row_of(const std::vector<lessons::ExpectationResult>& rows,
+                                         const lessons::Prediction& prediction) {
+  const lessons::ExpectationResult* row = named_row(rows, prediction);
+  return row != nullptr && row->failed ? nullptr : row;
 }
 
 std::string answer_of(const ClassPredictions& predictions, const lessons::Prediction& prediction) {
@@ -111,6 +117,7 @@ std::vector<bool> line_breaks(const std::vector<float>& widths, float width) {
 // Beside the answer: what was typed is no number, or what the run has measured so far.
 std::string answer_note(const lessons::Prediction& prediction, const std::string& answer,
                         const lessons::ExpectationResult* row, bool& fault) {
+  // A row whose function failed: "?", as both tables show it, not "not yet".
   fault = false;
   if (!prediction.is_choice() && !answer.empty()) {
     std::string why;
@@ -119,6 +126,7 @@ std::string answer_note(const lessons::Prediction& prediction, const std::string
       return why;
     }
   }
+  if (row != nullptr && row->failed) return "measured: ?";
   return "measured: " + (row ? measured_shown(*row) : std::string("not yet"));
 }
 
@@ -155,7 +163,7 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
     wrapped(prediction.question.c_str());
     const std::string before = answer_of(predictions, prediction);
     bool fault = false;
-    const std::string note = answer_note(prediction, before, row_of(rows, prediction), fault);
+    const std::string note = answer_note(prediction, before, named_row(rows, prediction), fault);
     const AnswerLayout layout = answer_layout(prediction, note, width);
     std::size_t item = 0;
     const auto place = [&] {
@@ -350,8 +358,17 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
     height += font + row_padding;
     for (const lessons::Prediction& prediction : lesson.predictions()) {
       height += ImGui::CalcTextSize(prediction.expectation.c_str(), nullptr, false, across).y + row_padding;
-      height += font + row_padding;
-      if (const lessons::ExpectationResult* row = row_of(rows, prediction)) {
+      // The numbers' line: as high as its tallest cell, each wrapped in its third of the table.
+      const lessons::ExpectationResult* numbers = row_of(rows, prediction);
+      const float column = across / 3.0f - 2.0f * style.CellPadding.x;
+      float tallest = font;
+      for (const std::string& cell : {answer_shown(prediction, answer_of(predictions, prediction)),
+                                      !numbers ? std::string("?") : theory_withheld ? std::string("hidden") : theory_shown(*numbers),
+                                      numbers ? measured_shown(*numbers) : std::string("?")}) {
+        tallest = std::max(tallest, ImGui::CalcTextSize(cell.c_str(), nullptr, false, column).y);
+      }
+      height += tallest + row_padding;
+      if (const lessons::ExpectationResult* row = numbers) {
         const Closeness near = judged(prediction, answer_of(predictions, prediction), *row, theory_withheld);
         height += ImGui::CalcTextSize(near.words.c_str(), nullptr, false, across).y + row_padding;
       }
@@ -364,7 +381,7 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
     height += wrapped_height(prediction.question, width);
     bool fault = false;
     const std::string note =
-        answer_note(prediction, answer_of(predictions, prediction), row_of(rows, prediction), fault);
+        answer_note(prediction, answer_of(predictions, prediction), named_row(rows, prediction), fault);
     const AnswerLayout layout = answer_layout(prediction, note, width);
     // Each line of controls is a frame high; a note on a line of its own wraps.
     height += frame * static_cast<float>(layout.lines() - (layout.breaks.back() ? 1 : 0));

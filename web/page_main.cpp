@@ -86,10 +86,10 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
   if (projector) options.window.projector = true;
   // The help panel a newcomer's first page opens with would cover what a link was sent for: a
-  // lesson in projector mode is for a class in front of the screen, and a setup is the lesson
-  // as a teacher prepared it (F1 still shows the help).
+  // lesson in projector mode is for a class in front of the screen, and a lesson or a setup is
+  // what a teacher sent a class to look at (F1 still shows the help).
   // Closed for this visit only: what is remembered stays the user's own (web::PageRun).
-  if (projector || (first_visit && !setup.empty())) {
+  if (projector || (first_visit && (!setup.empty() || !lesson.empty()))) {
     help_to_save = options.window.help;
     options.window.help = false;
   }

@@ -1034,9 +1034,13 @@ test('the mouse wheel scrolls a panel down and zooms the world in, a notch at a 
 // over the question and the sliders, in front of the class; so did a shared setup. A plain first
 // visit still opens with the help.
 test('a projector link or a setup link opens on the lesson, not under the newcomer\'s help', async () => {
-  const plain = await openPage(site + '#lesson=tipping_box');
+  const plain = await openPage(site);
   assert.equal(await number(plain, 'frictionlab_help_shown'), 1, 'a first visit opened without its help');
   await plain.close();
+  // A lesson's link too: what a teacher sent the class to look at (a second trial).
+  const lesson = await openPage(site + '#lesson=incline');
+  assert.equal(await number(lesson, 'frictionlab_help_shown'), 0);
+  await lesson.close();
   const projector = await openPage(site + '#lesson=tipping_box&projector=1');
   assert.equal(await number(projector, 'frictionlab_help_shown'), 0);
   assert.equal(await number(projector, 'frictionlab_projector'), 1);
