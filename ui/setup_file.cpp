@@ -282,10 +282,6 @@ std::optional<std::string> link_part(const std::string& link, const std::string&
   return text;
 }
 
-}  // namespace
-
-namespace {
-
 // A setup's lesson line names a script file ("my_slope.lua", "lessons/push.lua"), not a
 // built-in lesson by its name ("push").
 bool names_a_script_file(const std::string& lesson) {
@@ -307,6 +303,14 @@ std::string setup_file_text(const std::string& path) {
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
+}
+
+// A setup's text with its line `number` (its lesson line) made "lesson LESSON".
+std::string with_lesson_line(const std::string& text, int number, const std::string& lesson) {
+  std::istringstream lines(text);
+  std::string line, rewritten;
+  for (int at = 1; std::getline(lines, line); ++at) rewritten += (at == number ? "lesson " + lesson : line) + '\n';
+  return rewritten;
 }
 
 }  // namespace
@@ -339,26 +343,21 @@ std::string setup_file_link(const std::string& path, const std::string& page, st
     std::error_code error;
     const std::uintmax_t size = fs::file_size(lesson_path, error);
     if (error) throw InvalidInput(path + ":" + std::to_string(setup.lesson_line) + ": cannot read " + lesson_path + ": " + error.message());
-    // Each byte takes up to three characters in a link: a file far past the limit is not read.
-    if (size <= 3 * largest_linked_script) {
+    // Each byte takes at least one character in a link: a longer file is not read.
+    if (size <= largest_linked_script) {
       std::ifstream lesson(lesson_path, std::ios::binary);
       std::ostringstream lesson_text;
       lesson_text << lesson.rdbuf();
       if (!lesson) throw InvalidInput(path + ":" + std::to_string(setup.lesson_line) + ": cannot read " + lesson_path);
       script = lesson_text.str();
     }
-    if (size > 3 * largest_linked_script || linked_script_length(script) > largest_linked_script) {
+    if (size > largest_linked_script || linked_script_length(script) > largest_linked_script) {
       if (left_out != nullptr) *left_out = lesson_path;
       script.clear();
     } else {
       // The lesson line names the file alone: a teacher's folders are no part of the link (the
       // page keeps the lesson under that name).
-      std::istringstream lines(text);
-      std::string line, named;
-      for (int number = 1; std::getline(lines, line); ++number) {
-        named += (number == setup.lesson_line ? "lesson " + fs::path(lesson_path).filename().string() : line) + '\n';
-      }
-      text = named;
+      text = with_lesson_line(text, setup.lesson_line, fs::path(lesson_path).filename().string());
     }
   }
   return setup_link(text, page, script);
@@ -374,10 +373,7 @@ std::optional<std::string> received_setup_text(const std::string& link, std::str
   const PreparedSetup setup = parse_setup(*text, "setup link");
   const std::string path = keep_user_lesson(fs::path(setup.lesson).filename().string(), *script);
   if (kept != nullptr) *kept = path;
-  std::istringstream lines(*text);
-  std::string line, rewritten;
-  for (int number = 1; std::getline(lines, line); ++number) rewritten += (number == setup.lesson_line ? "lesson " + path : line) + '\n';
-  return rewritten;
+  return with_lesson_line(*text, setup.lesson_line, path);
 }
 
 PreparedSetup read_setup(const std::string& path) {
