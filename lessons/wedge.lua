@@ -89,14 +89,14 @@ drive { wedge, position = { x = sway, y = y0 }, angle = { swing = param.theta0, 
 -- still, it would begin by slipping on the moving plank, and with mu_k = 0 never stop.
 local first = step_length()
 local start_turn = theta(first) / first
-local centre_height = 0.5 * block_height + resting_gap
+local centre_height = 0.5 * block_height
 local block = box { "block", material = "wood", width = block_width, height = block_height, on = wedge, at = 0, mass = mass,
                     spin = start_turn, velocity = { wedge_x(first) / first - start_turn * centre_height, 0 } }
 view { follow = block, width = 3.2 }
 
 -- The two models, solved once for the whole run at the world's step: the article's reduction,
--- and the same with the turning surface's terms for this block (its centre rests one resting
--- gap plus half its height above the surface, and starts at the pivot).
+-- and the same with the turning surface's terms for this block (its centre rests half its
+-- height above the surface, and starts at the pivot).
 -- The models are sampled every world step (every few steps at rates past 6000 Hz, where the
 -- lesson's 5 s would take more than 30 000 samples; a probe then reads the nearest sample).
 local h = step_length()

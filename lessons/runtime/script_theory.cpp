@@ -431,8 +431,8 @@ int thrown_box(lua_State* state) {
     const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
     const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
     const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
-    // Box2D's polygons touch when their cores are two skins apart.
-    const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
+    // Box2D's polygons touch when they are two skins apart: a script's, true_skin each.
+    const double clearance = fields.number("clearance", "m", 2.0 * true_skin);
     const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
     // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
     // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
@@ -460,10 +460,13 @@ int thrown_box(lua_State* state) {
     // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
     // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
     // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
-    // middle of what is left of the gap, where the point is, has risen by half that.
+    // middle of what is left of the gap, where the point is, has risen by half that. A script's
+    // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
+    // so the corner may sink past it into the floor before a step finds it: the point is then
+    // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
     const auto impact_on = [&](double rx, double ry, double late) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
-      const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
+      const double sunk = std::max((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0);
       const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
       // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
       // along the floor at that point feels.
