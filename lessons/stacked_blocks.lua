@@ -25,7 +25,7 @@ lesson {
       shows = function() return value_at("floor_slipping", time()) == 1 and value_at("top_slipping", time()) == 0 end },
     { "top_slips", at = 4.2, readme = true, shows = function() return value_at("top_slipping", time()) == 1 end },
     -- A heavy top block gripped hard: the pair's front lifts before the top block slips.
-    { "front_lifts", at = 2.14, set = { top_mass = 5, bottom_mass = 1, pull_rate = 50, ["top_on_bottom.mu_s"] = 1.6 },
+    { "front_lifts", at = 2.27, set = { top_mass = 5, bottom_mass = 1, pull_rate = 50, ["top_on_bottom.mu_s"] = 1.8 },
       shows = function() return value_at("tilt", time()) > 2 end },
   },
 }
