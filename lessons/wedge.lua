@@ -232,8 +232,12 @@ local function rocks_by(t)
         local most = math.max(param.mu_s, param.mu_k) * turning.normal[1]
         friction = math.max(-most, math.min(most, -drive))
       end
+      -- At μ = w/h (2, the sliders' end) a block that slips, or is held at μ·N, needs exactly
+      -- the most N·w/2 can give: balanced on its front edge, Box2D's single-precision solver
+      -- (a few parts in 10^7 a sum, over the step's dozens of sums) decides which way it goes,
+      -- so within a part in 10^6 of the edge no model can say either.
       local needed = math.abs(inertia * spin_up + centre_height * friction)
-      if turning.contact[k] ~= "flying" and needed > 0.5 * block_width * turning.normal[k] then
+      if turning.contact[k] ~= "flying" and needed > (1 - 1e-6) * 0.5 * block_width * turning.normal[k] then
         rocks_from = k
         break
       end
