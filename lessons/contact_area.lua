@@ -63,11 +63,11 @@ local blocks = {
 }
 local bench_of = { face_bench, face_bench, feet_bench, feet_bench }
 view { lanes = { blocks[1], blocks[3] }, titles = { "on a face: wide and narrow", "on feet: three and six" }, width = 1.8 }
--- Each pull acts at the height where the block touches the bench (Box2D puts the contact in
--- the middle of the resting gap), so it has no moment about the contact to tip the block.
+-- Each pull acts at the height where the block touches the bench, so it has no moment about
+-- the contact to tip the block.
 local lowest = { -0.05, -0.2, -0.04 - foot, -0.04 - foot }
 for i, block in ipairs(blocks) do
-  local pull = force { block.name .. "_pull", on = block, at = { 0, lowest[i] - resting_gap / 2 },
+  local pull = force { block.name .. "_pull", on = block, at = { 0, lowest[i] },
                        force = function(t) return pull_rate * t, 0 end }
   -- A block on feet is read at a middle foot; any foot would do, since the block sticks or
   -- slides as one body and all its feet say the same, a foot without load included.

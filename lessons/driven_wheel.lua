@@ -10,14 +10,11 @@
 -- up to 1.5 times that: torque = mu_s·g·(I + m·r²)/r.
 
 local function ramp(t) return math.min(math.max(t, 0), 1) end  -- share of the full torque at t
--- Box2D's bodies touch two skins apart: the road's polygon has a 1 cm skin, and the wheel
--- rests 5 mm into it, on a contact point in the middle of the overlap, 2.5 mm inside its rim.
--- So the road's friction acts 2.5 mm nearer the axle than the rim, and the wheel rolls as one
--- of radius r − 2.5 mm (a 0.3 m wheel speeds up 0.3 % faster and spins up 1.1 % faster than a
--- rim-radius theory says). Theory is given that lever arm; the inertia is the disc's, m·r²/2.
-local skin_offset = 0.0025
+-- The wheel touches the road at its rim: the world is built to the script's sizes (the road's
+-- contact point lies r from the axle), so theory takes the wheel's radius as the friction's
+-- lever arm, and the disc's inertia, m·r²/2.
 local function wheel_theory(torque)
-  return theory.driven_wheel { mass = param.mass, radius = param.radius - skin_offset, torque = torque,
+  return theory.driven_wheel { mass = param.mass, radius = param.radius, torque = torque,
                                inertia = 0.5 * param.mass * param.radius ^ 2, mu_s = param.mu_s, mu_k = param.mu_k }
 end
 local function limit() return wheel_theory(0).traction_limit end

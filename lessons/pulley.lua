@@ -59,7 +59,7 @@ local pulley_at = { 0.75, block.y }
 local weight = box { "weight", material = "iron", width = 0.2, height = 0.2, x = 0.75, y = block.y - 0.2,
                      mass = hanging_mass }
 -- The table's top, the pulley and the weight's whole fall, from the floor up.
-view { window = { -0.65, -0.03, 0.95, 0.75 } }
+view { window = { -0.62, -0.02, 0.88, 0.7 } }
 local cord = rope { "rope", from = block, at = { 0.2, 0 }, over = pulley_at, to = weight, to_at = { 0, 0.1 } }
 
 -- Probes and plots ------------------------------------------------------------------------
@@ -75,9 +75,9 @@ plot { "Rope and table on the block", kind = "time", y = { "tension", "friction_
 -- The speed rather than the acceleration: a straight line whose slope is the acceleration
 -- reads better than a flat trace, and at rest it is 0 without the solver's 10⁻⁴ m/s² of noise.
 -- The law holds while the weight hangs: it ends where the weight lands, its foot (half its
--- 0.2 m height below its centre) come down to a resting gap above the floor (a render past the
--- run's end shows the block sliding on without the rope).
-local fall = weight.y - 0.1 - resting_gap
+-- 0.2 m height below its centre) come down to the floor (a render past the run's end shows the
+-- block sliding on without the rope).
+local fall = weight.y - 0.1
 plot { "Speed of the block", kind = "time", y = { "speed" },
   theory = { { "a·t, a = g·(M − μk·m)/(m + M), m the block's mass", function(t)
     local a = pulley_theory().acceleration

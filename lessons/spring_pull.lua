@@ -45,9 +45,8 @@ pair { block_material, "wood" }
 -- World -----------------------------------------------------------------------------------
 local bench = ground { material = "wood" }
 -- 8 cm high: pulled through its centre, only friction at its foot turns it, and the foot is
--- 4.75 cm below the centre (half the height and half the 1.5 cm Box2D keeps between resting
--- skins, where it puts the contact); the weight holds it flat while friction·0.0475 m <=
--- weight·0.1 m, up to mu = 2.1, past the sliders' 2. (10 cm high, it tipped from mu = 1.74.)
+-- 4 cm below the centre; the weight holds it flat while friction·0.04 m <= weight·0.1 m, up to
+-- mu = 2.5, past the sliders' 2. (10 cm high, it would tip from mu = 2.)
 local block = box { "block", material = block_material, width = 0.2, height = 0.08, on = bench, at = 0, mass = mass }
 
 -- The hand holds the spring's far end one rest length ahead of the block and walks away.

@@ -25,7 +25,7 @@ lesson {
       shows = function() return value_at("floor_slipping", time()) == 1 and value_at("top_slipping", time()) == 0 end },
     { "top_slips", at = 4.2, readme = true, shows = function() return value_at("top_slipping", time()) == 1 end },
     -- A heavy top block gripped hard: the pair's front lifts before the top block slips.
-    { "front_lifts", at = 2.14, set = { top_mass = 5, bottom_mass = 1, pull_rate = 50, ["top_on_bottom.mu_s"] = 1.6 },
+    { "front_lifts", at = 2.27, set = { top_mass = 5, bottom_mass = 1, pull_rate = 50, ["top_on_bottom.mu_s"] = 1.8 },
       shows = function() return value_at("tilt", time()) > 2 end },
   },
 }
@@ -108,12 +108,11 @@ local slip_room = 0.15
 -- heavy top block on a light bottom one, gripped hard (top_mass 5, bottom_mass 1, mu_s above
 -- 1.38), lifts the pair's front before the top block slips; a light bottom block pulled fast
 -- from under a slipping top one rears up by itself. The closed form has both blocks flat on
--- the floor. Heights are of the blocks' centres above the floor's contact points, which lie
--- half a resting gap up.
+-- the floor. Heights are of the blocks' centres above the floor.
 local bottom_width, bottom_height = 0.8, 0.25
 local top_width, top_height = 0.3, 0.1
-local top_centre = bottom_height + top_height / 2 + 1.5 * resting_gap
-local bottom_centre = bottom_height / 2 + 0.5 * resting_gap
+local top_centre = bottom_height + top_height / 2
+local bottom_centre = bottom_height / 2
 -- Positive when the pair's front lifts, the top block slid `top_back_by` back from the middle.
 local function tipping_moment(top_acceleration, bottom_acceleration_now, top_back_by)
   local lifting = param.bottom_mass * bottom_acceleration_now * bottom_centre + param.top_mass * top_acceleration * top_centre
@@ -193,19 +192,18 @@ end
 -- World -----------------------------------------------------------------------------------
 local floor = ground { "floor", material = "stone" }
 -- The top block is made first, so that the free-body diagram is its own: friction forward.
--- It rests one resting gap above the bottom block, which rests one above the floor (what
--- on = ... would do). Three times as wide as it is tall, it would tip backwards only at an
+-- It rests on the bottom block's top face, which rests on the floor (what on = ... would do). Three times as wide as it is tall, it would tip backwards only at an
 -- acceleration above g·w/h = 3g, which no mu up to 2 can give it: it slips first.
 -- The bottom block is 0.25 m tall, more than the 0.2 m by which Box2D widens every shape's
 -- box when it looks for shapes that may touch: so Box2D does not test the top block against
 -- the floor every step (3 % of the lesson's time at 0.15 m), until it falls off.
 local top = box { "top", material = "wood", width = top_width, height = top_height, x = 0,
-                  y = bottom_height + 2 * resting_gap + top_height / 2, mass = top_mass }
+                  y = bottom_height + top_height / 2, mass = top_mass }
 local bottom = box { "bottom", material = "aluminium", width = bottom_width, height = bottom_height, on = floor,
                      at = 0, mass = bottom_mass }
 -- Pulled at the height where the bottom block meets the floor, so the pull itself cannot tip
 -- it (the top block's friction, at the bottom block's top face, can: see tipping_moment).
-local pull = force { "pull", on = bottom, at = { bottom_width / 2, -bottom_height / 2 - resting_gap / 2 },
+local pull = force { "pull", on = bottom, at = { bottom_width / 2, -bottom_height / 2 },
                      grows = { pull_rate, 0 } }
 view { follow = bottom }
 

@@ -84,7 +84,7 @@ for i, surface in ipairs { "asphalt", "grass", "ice", "smooth" } do
               points = { { 0, 0 }, { length * up[1], length * up[2] },
                          { length * up[1] - thick * across[1], length * up[2] - thick * across[2] },
                          { -thick * across[1], -thick * across[2] } } }
-    local lift = 0.1 + resting_gap  -- half the box's height and the resting gap above the top face
+    local lift = 0.1  -- half the box's height above the top face
     placed = { x = 5 * up[1] + lift * across[1], y = y + 5 * up[2] + lift * across[2], angle = slope }
   end
   boxes[i] = box { name, material = "wood", width = 0.5, height = 0.2, on = placed.on, at = placed.at,

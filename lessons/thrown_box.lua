@@ -8,7 +8,8 @@
 
 local function throw()
   return theory.thrown_box { width = 0.4, height = 0.3, mass = param.mass, throw_speed = param.throw_speed,
-                             spin = param.spin, centre_height = 1, mu_k = param.mu_k, c = param.c, b = param.b,
+                             spin = param.spin, centre_height = 1, mu_k = param.mu_k, mu_s = param.mu_s,
+                             c = param.c, b = param.b,
                              step = step_length() }
 end
 

@@ -60,10 +60,9 @@ local crate = box { "box", material = "crate", width = width, height = height, o
 
 -- The push acts on the left side, push_height above the plane the box stands on; set above the
 -- box's top (the sliders allow it), it acts through a rigid handle fixed to the box's side, and
--- theory's d/(2·mu_s) holds all the same. Box2D keeps
--- resting boxes resting_gap apart and puts the contact midway, so that plane lies half the
--- gap below the box's face.
-local push = force { "push", on = crate, at = { -width / 2, push_height - height / 2 - resting_gap / 2 },
+-- theory's d/(2·mu_s) holds all the same. The box stands on its bottom face, so that plane is
+-- the face itself.
+local push = force { "push", on = crate, at = { -width / 2, push_height - height / 2 },
                      force = function(t) return push_rate * t, 0 end }
 
 -- Probes and plots ------------------------------------------------------------------------

@@ -44,4 +44,11 @@ double damping_force(double velocity, const FrictionPair& pair);
 // grows |v|, for any h, c, b >= 0 (an explicit step reverses v once h·c/m >= 2).
 double damped_velocity(double velocity, double mass, double h, const FrictionPair& pair);
 
+// Two rules of the stick-slip treatment (treatment_stick_slip.cpp, which says why) that a
+// theory of the stepped world must follow too. A contact born sliding no faster than this
+// (m/s) starts stuck, and a stuck contact is held in the solve at up to
+// max(mu_s, mu_k)·(1 + stick_slip_hold_band) before the step's end judges it.
+constexpr double stick_slip_birth_sliding_speed = 1e-3;
+constexpr double stick_slip_hold_band = 2e-2;
+
 }  // namespace frictionlab

@@ -136,7 +136,7 @@ b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::str
 }
 
 b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
-                       float width, float height, float angle) {
+                       float width, float height, float angle, float skin) {
   // Box2D wraps every polygon in a 1 cm skin; a box much thinner than two skins is all skin.
   // The least size as a float, so that 0.02 given in double and rounded down to float passes.
   constexpr double least = static_cast<double>(0.02f);
@@ -153,8 +153,29 @@ b2Body* Scene::add_box(const std::string& name, b2BodyType type, const std::stri
   b2Body* created = add_body(name, definition);
   b2PolygonShape box;
   box.SetAsBox(0.5f * width, 0.5f * height);
+  box.m_radius = skin;
   add_fixture(created, box, material);
   return created;
+}
+
+void set_mass_from_surfaces(b2Body* body) {
+  if (body->GetType() != b2_dynamicBody) return;
+  b2MassData total{0.0f, {0.0f, 0.0f}, 0.0f};
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    b2MassData part{};
+    if (fixture->GetType() == b2Shape::e_circle) {
+      b2CircleShape surface = *static_cast<const b2CircleShape*>(fixture->GetShape());
+      surface.m_radius = surface_radius(surface);
+      surface.ComputeMass(&part, fixture->GetDensity());
+    } else {
+      fixture->GetShape()->ComputeMass(&part, fixture->GetDensity());  // a polygon's skin has no mass
+    }
+    total.mass += part.mass;
+    total.center += part.mass * part.center;
+    total.I += part.I;
+  }
+  if (total.mass > 0.0f) total.center *= 1.0f / total.mass;
+  body->SetMassData(&total);
 }
 
 b2Body* Scene::body(const std::string& name) const {

@@ -141,9 +141,10 @@ class Scene {
   // here, not mid-step. Give a body its type before its fixtures.
   b2Body* add_body(const std::string& name, const b2BodyDef& definition);
   b2Fixture* add_fixture(b2Body* body, const b2Shape& shape, const std::string& material);
-  // A box of the given size (m), centre and angle (rad): a convenience over the two above.
+  // A box of the given size (m), centre and angle (rad): a convenience over the two above. Its
+  // skin is Box2D's own unless given (a script's box: true_skin).
   b2Body* add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
-                  float width, float height, float angle = 0.0f);
+                  float width, float height, float angle = 0.0f, float skin = b2_polygonRadius);
   b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
   // Whether bodies of these two materials are in the scene where they can rub: both in use,
   // one of them on a dynamic body (Box2D makes no contact between two fixed ones).
@@ -348,8 +349,22 @@ class Scene {
   mutable std::vector<Touching> touching_before_;  // those of the last world step that asked
 };
 
-// The gap Box2D keeps between two resting polygons: their skins (b2_polygonRadius each)
-// overlap by b2_linearSlop. A body placed this far above a surface starts at rest on it.
+// The gap Box2D keeps between the cores of two resting polygons: their skins (b2_polygonRadius
+// each) overlap by b2_linearSlop. A body placed this far above a surface starts at rest on it.
+// (For shapes Box2D is given directly; a script's shapes are built true to size, below.)
 constexpr float resting_gap = 2.0f * b2_polygonRadius - b2_linearSlop;
+
+// A script's shapes are built to the script's sizes. Box2D lets two touching shapes' skins
+// (b2Shape::m_radius) overlap by b2_linearSlop and puts the contact point in the middle of the
+// overlap. So a script's polygons (and a ground's edges) are given exactly the shape the script
+// wrote, with a skin of half the slop, `true_skin`, instead of Box2D's 1 cm; a circle collides
+// with a radius `true_skin` past the script's. Resting bodies then touch face to face, corner on
+// face and rim on face where the script's sizes say, with the contact point on those surfaces.
+constexpr float true_skin = 0.5f * b2_linearSlop;
+// The script's radius of a circle built with true_skin.
+inline float surface_radius(const b2CircleShape& circle) { return circle.m_radius - true_skin; }
+// Gives a dynamic body the mass, centre and rotational inertia of its script's shapes (Box2D's
+// own, but a circle's over its script's radius, not over the radius it collides with).
+void set_mass_from_surfaces(b2Body* body);
 
 }  // namespace frictionlab

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "physics/contact_mechanics.h"
+#include "physics/friction_laws.h"
 #include "physics/friction_listener.h"
 #include "physics/treatment.h"
 
@@ -17,7 +18,7 @@ namespace {
 // A contact born sliding faster than this starts out slipping; slower, it starts stuck and
 // the solver decides at the first step. Only a contact's birth uses a speed: afterwards the
 // state follows from the impulses, which is what lets the error vanish as the step shrinks.
-constexpr float birth_sliding_speed = 1e-3f;
+constexpr float birth_sliding_speed = static_cast<float>(stick_slip_birth_sliding_speed);
 
 // The solver clamps each point's friction impulse against the normal impulse of its own
 // iteration, and the final normal impulse differs from it by round-off and by the last
@@ -43,7 +44,7 @@ constexpr double breakaway_tolerance = 1e-5;
 // spring lesson) leaves a stuck contact creeping at a steady speed, not one dying away, and
 // is not held for a step it should have slipped in, which would cost position the
 // velocity-only correction cannot give back.
-constexpr double hold_band = 2e-2;
+constexpr double hold_band = stick_slip_hold_band;
 // The share of its sliding a step must take away, and the share of the excess that sliding's
 // momentum (the contact's own mass times it) must reach, for the excess to count as the
 // solver's leftover. Measured: after the pulley's first step the block's own momentum is 6 to

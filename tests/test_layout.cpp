@@ -274,7 +274,7 @@ bool on_body(const ImVec4& label, const b2Body* body, const Camera& camera) {
     } else if (fixture->GetType() == b2Shape::e_circle) {
       const auto* shape = static_cast<const b2CircleShape*>(fixture->GetShape());
       const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape->m_p));
-      const float radius = shape->m_radius * camera.pixels_per_metre;
+      const float radius = surface_radius(*shape) * camera.pixels_per_metre;  // as drawn
       // The box's point nearest the centre.
       const float x = std::clamp(centre.x, label.x, label.z), y = std::clamp(centre.y, label.y, label.w);
       if (std::hypot(x - centre.x, y - centre.y) < radius) return true;

@@ -211,21 +211,22 @@ polygon { "wedge", material = "crate", points = { { 0, 0 }, { 0.5, 0 }, { 0, 0.3
   const Scene& scene = lesson.scene();
   const b2Body* on_floor = scene.body("on_floor");
   EXPECT_NEAR(on_floor->GetPosition().x, -1.0, 1e-6);
-  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1 + resting_gap, 1e-6);
+  // A script's bodies rest on their surfaces: no gap (physics/scene.h, true_skin).
+  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1, 1e-6);
   const b2Body* on_slope = scene.body("on_slope");
   EXPECT_NEAR(on_slope->GetAngle(), 20 * degrees, 1e-6);
   EXPECT_NEAR(on_slope->GetMass(), 3.0, 1e-5);
-  // Its centre sits 2 m up the slope from the foot and h/2 + the gap above the surface.
+  // Its centre sits 2 m up the slope from the foot and h/2 above the surface.
   const b2Vec2 along{static_cast<float>(std::cos(20 * degrees)), static_cast<float>(std::sin(20 * degrees))};
   const b2Vec2 offset = on_slope->GetPosition() - b2Vec2{2.0f, 0.5f};
   EXPECT_NEAR(b2Dot(offset, along), 2.0, 1e-5);
-  EXPECT_NEAR(b2Cross(along, offset), 0.1 + resting_gap, 1e-5);
-  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1 + b2_polygonRadius - b2_linearSlop, 1e-6);
+  EXPECT_NEAR(b2Cross(along, offset), 0.1, 1e-5);
+  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1, 1e-6);
   EXPECT_NEAR(scene.body("wedge")->GetMass(), 2.0, 1e-5);
   // Placed at rest where they belong, they stay put (mu_s 0.9 holds the block on 20°).
   run_for(lesson, 1.0);
-  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1 + resting_gap, 1e-4);
-  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1 + b2_polygonRadius - b2_linearSlop, 1e-4);
+  EXPECT_NEAR(on_floor->GetPosition().y, 0.5 + 0.1, 1e-4);
+  EXPECT_NEAR(scene.body("ball")->GetPosition().y, 0.5 + 0.1, 1e-4);
   EXPECT_NEAR(b2Dot(on_slope->GetPosition() - b2Vec2{2.0f, 0.5f}, along), 2.0, 1e-4);
 }
 

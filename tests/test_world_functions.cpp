@@ -214,7 +214,7 @@ box { "top", material = "wood", width = 0.2, height = 0.1, on = bottom, at = 0.1
   const b2Body* bottom = lesson.scene().body("bottom");
   const b2Body* top = lesson.scene().body("top");
   EXPECT_NEAR(top->GetPosition().x, 1.15, 1e-6);
-  EXPECT_NEAR(top->GetPosition().y, bottom->GetPosition().y + 0.15 + 0.05 + resting_gap, 1e-6);
+  EXPECT_NEAR(top->GetPosition().y, bottom->GetPosition().y + 0.15 + 0.05, 1e-6);
   lesson.step();
   EXPECT_LT(top->GetLinearVelocity().Length(), 1e-4);
   EXPECT_LT(bottom->GetLinearVelocity().Length(), 1e-4);
@@ -239,13 +239,13 @@ probe { "normal", unit = "N", read = { touch, "normal" } }
   int parted = 0, joined = 0;
   for (int frame = 0; frame < 30; ++frame) {
     lesson.step();
-    // Box2D's polygons touch while their cores are nearer than their two skins.
-    const double gap = block->GetPosition().y - 0.05;
-    if (gap > 2.0 * b2_polygonRadius + 1e-4) {
+    // Box2D's polygons touch while they are nearer than their two skins (a script's: true_skin).
+    const double gap = block->GetPosition().y - 0.05, touching = 2.0 * true_skin;
+    if (gap > touching + 1e-4) {
       ++parted;
       EXPECT_EQ(probe_now(lesson, "touching"), 0.0) << "frame " << frame << ", gap " << gap;
       EXPECT_EQ(probe_now(lesson, "normal"), 0.0) << "frame " << frame;
-    } else if (gap < 2.0 * b2_polygonRadius - 1e-4) {
+    } else if (gap < touching - 1e-4) {
       ++joined;
       EXPECT_EQ(probe_now(lesson, "touching"), 1.0) << "frame " << frame;
     }

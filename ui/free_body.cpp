@@ -59,7 +59,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
       draw_polygon(draw, body, *static_cast<const b2PolygonShape*>(f->GetShape()), inset, fill, theme.outline, 1.5f * s);
     } else if (f->GetType() == b2Shape::e_circle) {
       const auto& circle = *static_cast<const b2CircleShape*>(f->GetShape());
-      draw->AddCircleFilled(inset.to_screen(body->GetWorldPoint(circle.m_p)), circle.m_radius * inset.pixels_per_metre, fill, 32);
+      draw->AddCircleFilled(inset.to_screen(body->GetWorldPoint(circle.m_p)), surface_radius(circle) * inset.pixels_per_metre, fill, 32);
     }
   }
   draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);

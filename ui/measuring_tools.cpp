@@ -499,6 +499,18 @@ DistanceMarks numbered(const Ruler& line, const Fonts& fonts) {
   return marks;
 }
 
+// A number that would stick out past the view's edge slides inside it while its tick stays
+// under it: it still names its place. Refused for one pixel out, a number of contact_area's
+// projector lane sent the marks to the floor's other side, onto the speed readout's only place.
+void keep_numbers_in(DistanceMarks& marks, const ImVec4& bounds) {
+  const auto slide = [&](ImVec4& box) {
+    const float out = box.x < bounds.x ? bounds.x - box.x : box.z > bounds.z ? bounds.z - box.z : 0.0f;
+    if (std::abs(out) >= 0.5f * (box.z - box.x)) return;  // its tick would no longer be under it
+    box.x += out, box.z += out;
+  };
+  for (DistanceMark& mark : marks.ticks) slide(mark.number_box), slide(mark.across_box);
+}
+
 }  // namespace
 
 // Whether a tick is one of every `every`-th, counted from the start (0 m is always one).
@@ -519,6 +531,7 @@ std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesso
   if (!under) return std::nullopt;
   DistanceMarks marks = numbered(*under, fonts);
   if (labels == nullptr) return marks;
+  keep_numbers_in(marks, labels->bounds());
   // Under the surface when two of the numbers find room there, or as many as over it; else over
   // it: a lane's strip of ground is too thin to hold them (the trial's projector lanes showed none).
   const auto free_numbers = [&](const DistanceMarks& side) {
@@ -529,6 +542,7 @@ std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesso
   const std::optional<Ruler> over = ruler(*surface, *origin_, camera, s, step, true);
   if (!over) return marks;
   DistanceMarks over_marks = numbered(*over, fonts);
+  keep_numbers_in(over_marks, labels->bounds());
   return free_numbers(over_marks) > under_count ? over_marks : marks;
 }
 

@@ -28,14 +28,16 @@ struct PlaceLabel {
 // The ground in its material's colour, as far as it really goes (a body beyond its end falls).
 void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture, const Camera& camera,
                  const Theme& theme) {
+  // Box2D's box around the fixture reaches its skin's outside, the skin's radius past the shape.
   const b2AABB& box = fixture->GetAABB(0);
-  const float top = box.upperBound.y - b2_polygonRadius;
+  const float skin = fixture->GetShape()->m_radius;
+  const float top = box.upperBound.y - skin;
   const ImVec2 view_end = add(camera.origin, camera.size);
   const float left = std::max(camera.origin.x, camera.to_screen(box.lowerBound).x);
   const float right = std::min(view_end.x, camera.to_screen(box.upperBound).x);
   if (left >= right) return;
   const float top_y = camera.to_screen({0.0f, top}).y;
-  const float bottom_y = camera.to_screen({0.0f, box.lowerBound.y + b2_polygonRadius}).y;
+  const float bottom_y = camera.to_screen({0.0f, box.lowerBound.y + skin}).y;
   draw->AddRectFilled(ImVec2(left, top_y), ImVec2(right, std::min(bottom_y, view_end.y)),
                       fixture_colour(scene, fixture, theme));
   // Hatching fixed to the ground, so the ground is seen to stay put while the view follows.
@@ -127,11 +129,11 @@ void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const C
     } else if (fixture->GetType() == b2Shape::e_circle) {
       const auto& shape = *static_cast<const b2CircleShape*>(fixture->GetShape());
       const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape.m_p));
-      const float radius = shape.m_radius * camera.pixels_per_metre;
+      const float radius = surface_radius(shape) * camera.pixels_per_metre;
       draw->AddCircleFilled(centre, radius, fill, 48);
       draw->AddCircle(centre, radius, outline, 48, thickness);
       // A spoke, so rolling can be told from sliding.
-      const ImVec2 rim = camera.to_screen(body->GetWorldPoint(shape.m_p + b2Vec2{shape.m_radius, 0.0f}));
+      const ImVec2 rim = camera.to_screen(body->GetWorldPoint(shape.m_p + b2Vec2{surface_radius(shape), 0.0f}));
       draw->AddLine(centre, rim, outline, thickness);
     }
   }

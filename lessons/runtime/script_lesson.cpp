@@ -908,7 +908,9 @@ void register_lesson_api(lua_State* state) {
   lua_pop(state, 1);
   lua_pushnumber(state, standard_gravity);
   lua_setglobal(state, "g");
-  lua_pushnumber(state, resting_gap);
+  // A script's bodies rest with their surfaces touching (physics/scene.h, true_skin): no gap.
+  // Kept, as 0, for scripts written when they rested 15 mm apart.
+  lua_pushnumber(state, 0.0);
   lua_setglobal(state, "resting_gap");
   // param: a read-only view of the parameters' current values.
   lua_newtable(state);

@@ -424,15 +424,16 @@ int growing_push(lua_State* state) {
 int thrown_box(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
-                                                  "centre_height", "mu_k", "c", "b", "restitution", "g", "clearance",
-                                                  "step"});
+                                                  "centre_height", "mu_k", "mu_s", "c", "b", "restitution", "g",
+                                                  "clearance", "step"});
     const double width = fields.number("width", "m"), height = fields.number("height", "m");
     const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
     const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
     const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
+    const double mu_s = fields.number("mu_s", "", mu_k);
     const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
-    // Box2D's polygons touch when their cores are two skins apart.
-    const double clearance = fields.number("clearance", "m", 2.0 * b2_polygonRadius);
+    // Box2D's polygons touch when they are two skins apart: a script's, true_skin each.
+    const double clearance = fields.number("clearance", "m", 2.0 * true_skin);
     const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
     // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
     // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
@@ -460,10 +461,13 @@ int thrown_box(lua_State* state) {
     // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
     // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
     // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
-    // middle of what is left of the gap, where the point is, has risen by half that.
+    // middle of what is left of the gap, where the point is, has risen by half that. A script's
+    // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
+    // so the corner may sink past it into the floor before a step finds it: the point is then
+    // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
     const auto impact_on = [&](double rx, double ry, double late) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
-      const double sunk = std::clamp((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0, clearance);
+      const double sunk = std::max((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0);
       const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
       // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
       // along the floor at that point feels.
@@ -474,11 +478,19 @@ int thrown_box(lua_State* state) {
         vx += impulse / mass;
         omega -= py * impulse / inertia;
       }
+      // A stepped world's corner born barely sliding (drag may have stopped it) starts stuck
+      // and is held in that step's impact up to static friction, a little over: at c = 300
+      // N·s/m on a 0.52 kg box the corner came in at 0.6 mm/s and left spinning at -6.16 rad/s,
+      // where sliding under mu_k = 0 leaves it at -13.6.
+      double mu = mu_k;
+      if (step > 0.0 && std::abs(vx - omega * py) <= stick_slip_birth_sliding_speed) {
+        mu = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
+      }
       const double vy = -g * (landing.time + late);
       // Drag strong enough to turn the corner up off the floor leaves the normal impulse
       // nothing to stop: the step's drag is then the whole of the impact.
       if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
-      return theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu_k, restitution);
+      return theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution);
     };
     // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
     const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };

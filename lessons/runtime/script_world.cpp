@@ -90,7 +90,8 @@ TopFace top_face(lua_State* state, Fields& fields, const b2Body* below) {
 }
 
 // Where a body goes: at x, y and angle (degrees), or resting on a surface, `at` metres along
-// it, lifted by `lift` (its centre's height above the surface plus Box2D's resting gap). The
+// it, lifted by `lift` (its centre's height above the surface: a script's shapes rest on their
+// surfaces, true_skin in physics/scene.h). The
 // surface is a ground{} or an incline{}, or the level top face of any other body, `at` then
 // measured from the face's middle.
 Placement place(lua_State* state, Fields& fields, float lift) {
@@ -136,8 +137,8 @@ void finish_body(Fields& fields, b2Body* body, double area) {
     for (b2Fixture* part = body->GetFixtureList(); part != nullptr; part = part->GetNext()) {
       part->SetDensity(static_cast<float>(mass / area));  // a box on feet is several fixtures
     }
-    body->ResetMassData();
   }
+  set_mass_from_surfaces(body);  // a circle's over the script's radius, not the one it collides with
   // The limits the scene puts on a body's starting motion (Scene::add_body), which the body
   // made before these were read did not see.
   const b2Vec2 velocity = fields.point("velocity", origin_point);
@@ -188,6 +189,7 @@ std::vector<const b2Fixture*> add_feet(Scene& scene, b2Body* body, const std::st
     b2PolygonShape foot;
     const b2Vec2 centre{static_cast<float>(first + i * gap), static_cast<float>(-0.5 * height - 0.5 * feet.height)};
     foot.SetAsBox(static_cast<float>(0.5 * feet.width), static_cast<float>(0.5 * feet.height), centre, 0.0f);
+    foot.m_radius = true_skin;
     made.push_back(scene.add_fixture(body, foot, material));
   }
   return made;
@@ -284,9 +286,11 @@ int ground(lua_State* state) {
         b2EdgeShape edge;
         edge.SetOneSided({strip.to + 1.0f, surface}, {strip.to, surface}, {strip.from, surface},
                          {strip.from - 1.0f, surface});
+        edge.m_radius = true_skin;
         build.scene->add_fixture(body, edge, strip.material);
         b2PolygonShape slab;
         slab.SetAsBox(0.5f * (strip.to - strip.from), 0.5f * thickness, {0.5f * (strip.from + strip.to), 0.0f}, 0.0f);
+        slab.m_radius = true_skin;
         b2Fixture* shown = build.scene->add_fixture(body, slab, strip.material);
         b2Filter nothing;
         nothing.maskBits = 0;  // drawn, never touched: the edge above it is the surface
@@ -294,7 +298,8 @@ int ground(lua_State* state) {
       }
     } else {
       const std::string material = required_material(build, fields);
-      body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness);
+      body = build.scene->add_box(name, b2_staticBody, material, {0.0f, top - 0.5f * thickness}, width, thickness,
+                                  0.0f, true_skin);
     }
     require_room(*build.scene, fields.what());
     // Its surface runs from x = -width/2 to width/2: `at` is measured from x = 0.
@@ -314,9 +319,9 @@ int box(lua_State* state) {
     // In double, before single precision turns the documented 0.02 m into 0.0199999996.
     const double width = fields.number_in("width", "m", 0.02, 1000.0), height = fields.number_in("height", "m", 0.02, 1000.0);
     const Feet feet = read_feet(fields, width, height);
-    const Placement where = place(state, fields, static_cast<float>(0.5 * height + feet.height) + resting_gap);
+    const Placement where = place(state, fields, static_cast<float>(0.5 * height + feet.height));
     b2Body* body = build.scene->add_box(name, body_kind(fields, "dynamic"), material, where.position,
-                                        static_cast<float>(width), static_cast<float>(height), where.angle);
+                                        static_cast<float>(width), static_cast<float>(height), where.angle, true_skin);
     if (feet.count > 0) build.feet[body] = add_feet(*build.scene, body, material, feet, width, height);
     finish_body(fields, body, width * height + feet.count * feet.width * feet.height);
     require_room(*build.scene, fields.what());
@@ -334,15 +339,14 @@ int circle(lua_State* state) {
     const std::string name = fields.name();
     const std::string material = required_material(build, fields);
     const double radius = fields.number_in("radius", "m", 0.01, 1000.0);
-    // A circle rests closer than a polygon: only the polygon has a skin.
-    const Placement where = place(state, fields, static_cast<float>(radius) + b2_polygonRadius - b2_linearSlop);
+    const Placement where = place(state, fields, static_cast<float>(radius));
     b2BodyDef definition;
     definition.type = body_kind(fields, "dynamic");
     definition.position = where.position;
     definition.angle = where.angle;
     b2Body* body = build.scene->add_body(name, definition);
     b2CircleShape shape;
-    shape.m_radius = static_cast<float>(radius);
+    shape.m_radius = static_cast<float>(radius) + true_skin;  // touching at the script's radius
     build.scene->add_fixture(body, shape, material);
     finish_body(fields, body, std::numbers::pi * radius * radius);
     require_room(*build.scene, fields.what());
@@ -437,6 +441,7 @@ int polygon(lua_State* state) {
     b2Body* body = build.scene->add_body(name, definition);
     b2PolygonShape shape;
     shape.Set(points.data(), static_cast<int32>(points.size()));
+    shape.m_radius = true_skin;
     build.scene->add_fixture(body, shape, material);
     b2MassData unit;
     shape.ComputeMass(&unit, 1.0f);
@@ -470,6 +475,7 @@ int incline(lua_State* state) {
     b2Body* body = build.scene->add_body(name, definition);
     b2PolygonShape shape;
     shape.Set(corners, 3);
+    shape.m_radius = true_skin;
     build.scene->add_fixture(body, shape, material);
     require_room(*build.scene, fields.what());
     push_body(state, body, true, foot, along, static_cast<float>(length));
