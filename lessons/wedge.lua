@@ -283,7 +283,20 @@ local function contact_lost_by(t)
   end
   return lost_at ~= nil and lost_at <= last
 end
+-- Slipping at the start by less than that late pull: the model's block, lightened by the turn,
+-- slips at once, where the world's first step, with the whole weight, holds it; whether it
+-- slips later depends on whether the drive still asks for more when the pull arrives (4.495 kg,
+-- a_x = -9.329 m/s², θ0 = 10.94°, ω = 10, μs 0.9638: the model's demand is 1.5 % over its
+-- limit at t = 0, the world's 1.3 % under, and the drive falls off, so the world held on till
+-- 0.23 s). Neither model says which way such a start goes.
+local function on_the_edge_at_the_start()
+  if turning.contact[1] ~= "slipping" then return false end
+  local demand = math.abs(mass * (g * sin(theta(0)) + a_x * math.cos(theta(0))))
+  local pull = mass * centre_height * (theta0 * omega) ^ 2
+  return demand <= math.max(param.mu_s, param.mu_k) * (turning.normal[1] + pull)
+end
 local function no_model(t)
+  if on_the_edge_at_the_start() then return "on the edge at the start: no model" end
   local left = left_the_plank()
   if left and left <= t then return "off the plank by then" end
   if rocks_by(t) then return "rocks: no model" end
@@ -355,8 +368,12 @@ expect { "first slip", unit = "s",
   -- start is held through the first step, judged, and shown slipping at the end of the second);
   -- and a contact just past μs·N may be held a step more while the listener tells the
   -- solver's leftover from a real excess (measured: up to 2.9 steps late, at ω = 0.1 rad/s).
-  -- The breakaway correction gives the slide back what the late steps held.
-  tolerance = function() return 3.5 * step_length() end }
+  -- The breakaway correction gives the slide back what the late steps held. And on a turning
+  -- plank one more: Box2D solves each step's contact along the normal it had when the step
+  -- began, so the turn's pull m·e·θ'² (which lightens the block) reaches the normal force a
+  -- step late; the first step presses with the whole weight (44.10 N = m·g at θ0 = 10.94°,
+  -- ω = 10 rad/s, 4.495 kg, where the model has 42.86 N).
+  tolerance = function() return (theta0 * omega > 0 and 4.5 or 3.5) * step_length() end }
 expect { "first lift-off", unit = "s",
   predicted = function()
     local t = first_event(turning, "lift-off")
