@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "physics/friction_laws.h"
 #include "physics/validation.h"
 
 namespace frictionlab::theory {
@@ -133,6 +134,26 @@ double incline_speed(double angle, double mu_k, double c, double b, double mass,
 
 double incline_distance(double angle, double mu_k, double c, double b, double mass, double g, double t) {
   return incline_motion("incline_distance", angle, mu_k, c, b, mass, g, t).distance;
+}
+
+InclineSlide incline_slide_stepped(double angle, double mu_k, double c, double b, double mass, double g, double t,
+                                   double h) {
+  constexpr const char* where = "incline_slide_stepped";
+  incline_motion(where, angle, mu_k, c, b, mass, g, t);  // the same checks
+  require_positive(where, "h", h);
+  const double a = incline_sliding_acceleration(angle, mu_k, g);
+  if (a <= 0.0) return {0.0, 0.0};
+  const FrictionPair drag{mu_k, mu_k, c, b};
+  const double steps = std::round(t / h);
+  double v = 0.0, x = 0.0;
+  for (double n = 0.0; n < steps; n += 1.0) {
+    const double next = std::max(damped_velocity(v, mass, h, drag) + a * h, 0.0);
+    // Once the speed no longer changes, the rest of the way is at that speed.
+    if (next == v) return {v, x + (steps - n) * h * v};
+    v = next;
+    x += h * v;
+  }
+  return {v, x};
 }
 
 double tip_height(double width, double mu_s) {

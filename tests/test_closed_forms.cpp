@@ -65,6 +65,27 @@ TEST(ClosedForms, InclineSlidingAccelerationFromFreeBodyDiagramVectors) {
   EXPECT_LT(incline_sliding_acceleration(0.2, 0.45, g), 0.0);  // kinetic friction would stop it
 }
 
+// Stepped as the world steps, the slide tends to the continuous one as the step shrinks (the
+// split of drag from the other forces is first order: the error halves with h); and where the
+// drag is faster than a step it creeps at the stepped fixed point v = a·h/(1 − e^(−c·h/m)),
+// not at a·m/c: where_methods_fail's block at c = 799.5 N·s/m, 1 kg, 30°, μk 0.5539, 240 Hz.
+TEST(ClosedForms, InclineSlideSteppedTendsToTheContinuousOneAndCreepsAtTheSteppedFixedPoint) {
+  const double angle = 0.6, mu_k = 0.3, c = 0.8, b = 0.7, mass = 2.0, t = 2.0;
+  const double exact = incline_distance(angle, mu_k, c, b, mass, g, t);
+  const double coarse = incline_slide_stepped(angle, mu_k, c, b, mass, g, t, 1e-2).distance - exact;
+  const double fine = incline_slide_stepped(angle, mu_k, c, b, mass, g, t, 5e-3).distance - exact;
+  EXPECT_NEAR(fine / coarse, 0.5, 0.02);
+  EXPECT_RELATIVE(incline_slide_stepped(angle, mu_k, c, b, mass, g, t, 1e-5).speed, incline_speed(angle, mu_k, c, b, mass, g, t),
+                  1e-4);
+
+  const double slope = 30.0 * std::numbers::pi / 180.0, h = 1.0 / 240.0, drag = 799.5;
+  const double a = incline_sliding_acceleration(slope, 0.5539, g);
+  const InclineSlide creep = incline_slide_stepped(slope, 0.5539, drag, 0.0, 1.0, g, 3.0, h);
+  EXPECT_RELATIVE(creep.speed, a * h / -std::expm1(-drag * h), 1e-9);
+  EXPECT_GT(creep.speed, 3.0 * a / drag);  // the continuous law's terminal speed, a·m/c
+  EXPECT_EQ(incline_slide_stepped(0.2, 0.45, drag, 0.0, 1.0, g, 3.0, h).distance, 0.0);  // kinetic friction holds it
+}
+
 TEST(ClosedForms, InclineSpeedAndDistanceMatchEventSolver) {
   for (const double c : {0.0, 0.8, 5.0}) {
     const double mass = 2.0, angle = 0.6;

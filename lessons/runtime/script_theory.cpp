@@ -54,12 +54,19 @@ int incline_acceleration(lua_State* state) {
 
 int incline_motion(lua_State* state) {
   return guarded(state, [&] {
-    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "b", "mass", "t", "g"});
+    Fields fields(state, 1, "theory.incline_motion", {"angle", "mu_k", "c", "b", "mass", "t", "g", "step"});
     const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees, mu_k = fields.number("mu_k", "");
     const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
     const double mass = fields.number("mass", "kg");
     const double g = fields.number("g", "m/s²", standard_gravity), t = fields.number("t", "s");
+    const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
     lua_createtable(state, 0, 2);
+    if (step > 0.0) {
+      const theory::InclineSlide slide = theory::incline_slide_stepped(angle, mu_k, c, b, mass, g, t, step);
+      set_number(state, "speed", slide.speed);
+      set_number(state, "distance", slide.distance);
+      return 1;
+    }
     set_number(state, "speed", theory::incline_speed(angle, mu_k, c, b, mass, g, t));
     set_number(state, "distance", theory::incline_distance(angle, mu_k, c, b, mass, g, t));
     return 1;
