@@ -186,7 +186,8 @@ std::string lesson_speed(bool quick, std::ostream& out) {
 // Each run builds the lesson's Lua and Box2D afresh, so the cost is the median of 2 runs.
 int run_recommend(const std::string& lesson, const std::map<std::string, std::string>& overrides,
                   const std::string& tolerance_text, std::ostream& out) {
-  const double tolerance = option_number("--tol", tolerance_text, 0.0, 1e6, true, " × the lesson's tolerances");
+  // Its range is the options table's, which the help and the manual page are held to.
+  const double tolerance = option_for(Command::bench, "--tol").number(tolerance_text);
   const BenchmarkProblem problem = lessons::lesson_problem(lesson, overrides);
   Recommender recommender(problem, tolerance, 2);
   out << "Measuring " << problem.question << " (" << problem.unit << "), for every friction treatment at 30 to 1920 Hz "

@@ -13,7 +13,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
+#include "app/command_line.h"
 #include "app/csv_log.h"
 #include "app/modes.h"
 #include "app/options.h"
@@ -39,36 +41,24 @@ struct RunOptions {
 
 RunOptions parse_run(const std::vector<std::string>& args) {
   RunOptions options;
-  std::vector<std::string> seen;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      if (!options.lesson.empty()) throw InvalidInput("run takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
-      options.lesson = arg;
-      continue;
-    }
-    static const std::string known[] = {"--duration", "--hz", "--substeps", "--friction", "--set", "--csv", "--mystery", "--seed"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("run: unknown option '" + arg +
-                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE, "
-                         "--mystery MATERIAL/MATERIAL --seed N");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
-    refuse_repeat("run", arg, seen);
-    const std::string& value = args[++i];
-    if (options.mystery.take(arg, value)) continue;
-    if (arg == "--duration") {
-      options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
-    } else if (arg == "--set") {
+  const auto lesson = [&](const std::string& word) {
+    if (!options.lesson.empty()) throw InvalidInput("run takes one lesson, got '" + options.lesson + "' and '" + word + "'");
+    options.lesson = word;
+  };
+  read_options(Command::run, args, lesson, [&](const Option& option, const std::string& value) {
+    if (options.mystery.take(option, value) || step_option(option, value, options.settings)) return;
+    if (option.name == "--duration") {
+      options.duration = option.number(value);
+    } else if (option.name == "--set") {
       add_override(value, options.overrides);
-    } else if (arg == "--csv") {
+    } else if (option.name == "--csv") {
       // Empty, it would write nothing and say nothing: exit 0 with no file.
       if (value.empty()) throw InvalidInput("--csv \"\": give a file name, or - for standard output");
       options.csv = value;
     } else {
-      step_option(arg, value, options.settings);  // --hz, --substeps or --friction
+      throw std::logic_error("run does not read " + std::string(option.name) + ", which the options table gives it");
     }
-  }
+  });
   if (options.lesson.empty()) throw InvalidInput("run needs a lesson: frictionlab run LESSON; see frictionlab list");
   return options;
 }
@@ -126,8 +116,8 @@ void print_heading(const Lesson& lesson, std::ostream& out, const std::set<std::
   out << "  " << values << "\n\n";
 }
 
-// check --random: settings drawn inside the lesson's own sliders' ranges.
-constexpr int max_random_settings = 100000;
+// check --random: settings drawn inside the lesson's own sliders' ranges, as many as the options
+// table allows, from this seed unless --seed gives one.
 constexpr std::uint64_t default_random_seed = 1;  // help and the man page say so
 
 // SplitMix64, written out so that a seed draws the same settings with every compiler and
@@ -290,41 +280,30 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
   std::vector<std::string> names;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::vector<std::string> seen, step_options;
+  std::vector<std::string> step_options;
   std::optional<int> random_count;
   std::optional<std::uint64_t> seed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      names.push_back(arg);
-      continue;
-    }
-    static const std::string known[] = {"--hz", "--substeps", "--friction", "--set", "--random", "--seed"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("check: unknown option '" + arg +
-                         "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T, --random N, --seed S");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput("check: " + arg + " needs a value; see frictionlab help");
-    refuse_repeat("check", arg, seen);
-    const std::string& value = args[++i];
-    if (arg == "--set") {
+  const auto add_lesson = [&](const std::string& word) { names.push_back(word); };
+  read_options(Command::check, args, add_lesson, [&](const Option& option, const std::string& value) {
+    if (option.name == "--set") {
       add_override(value, overrides);
-    } else if (arg == "--random") {
-      const std::string allowed = "a whole number of settings from 1 to " + std::to_string(max_random_settings);
+    } else if (option.name == "--random") {
+      const std::string allowed = "a whole number of settings " + option.range_words();
       const bool digits = !value.empty() && value.size() <= 6 &&
                           std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
-      if (!digits || std::stoi(value) < 1 || std::stoi(value) > max_random_settings) {
+      if (!digits || std::stoi(value) < option.range.low || std::stoi(value) > option.range.high) {
         throw InvalidInput("check: --random " + value + ": give " + allowed);
       }
       random_count = std::stoi(value);
-    } else if (arg == "--seed") {
+    } else if (option.name == "--seed") {
       seed = ui::parse_mystery_seed("check: --seed", value);
-    } else {
-      step_option(arg, value, settings);  // --hz, --substeps or --friction
-      step_options.push_back(arg);
+    } else if (step_option(option, value, settings)) {  // --hz, --substeps or --friction
+      step_options.push_back(std::string(option.name));
       step_options.push_back(value);
+    } else {
+      throw std::logic_error("check does not read " + std::string(option.name) + ", which the options table gives it");
     }
-  }
+  });
   if (names.empty() && !overrides.empty()) {
     throw InvalidInput("check: --set names a parameter of one lesson; name the lesson too, as in check push --set mass=2");
   }

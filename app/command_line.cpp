@@ -1,0 +1,383 @@
+#include "app/command_line.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/options.h"
+#include "physics/materials.h"
+#include "ui/mystery.h"
+
+namespace frictionlab {
+namespace {
+
+constexpr Command window = Command::window, list = Command::list, run = Command::run, check = Command::check,
+                  render = Command::render, link = Command::link, bench = Command::bench;
+
+// The one list of options. Where two commands read one name differently (--at is one time for
+// the window, several for render; --seed is a mystery's seed or --random's), each reading has
+// its row. The order is the order of the help and of the unknown-option messages: the
+// lessons' values and step settings first, which most commands share.
+const Option table[] = {
+    {.name = "--lock", .commands = window, .value = "NAME[,NAME...]", .kind = ValueKind::text,
+     .help = "shows only the named controls (parameters, or friction, hz, substeps) and keeps the class on this lesson",
+     .example = "mu_s,mu_k", .held_by_setup = true},
+    {.name = "--set", .commands = window | run | check | render | bench, .value = "NAME=VALUE", .kind = ValueKind::text,
+     .help = "sets a lesson parameter, as in --set mu_s=0.5; a value out of the parameter's range is refused",
+     .example = "mu_s=0.5", .repeatable = true, .held_by_setup = true},
+    {.name = "--hz", .commands = window | run | check | render, .value = "N", .kind = ValueKind::number,
+     .range = {1.0, 100000.0, false, " steps per second"}, .help = "steps per simulated second, {range} (default 240)",
+     .example = "480", .held_by_setup = true},
+    {.name = "--substeps", .commands = window | run | check | render, .value = "N", .kind = ValueKind::whole_number,
+     .range = {1.0, 1000.0, false, ""}, .help = "physics steps inside each step, a whole number {range} (default 1)",
+     .example = "2", .held_by_setup = true},
+    {.name = "--friction", .commands = window | run | check | render, .value = "T", .kind = ValueKind::text,
+     .help = "the friction treatment: stick-slip (the default, converges to Coulomb), threshold, regularized or box2d",
+     .example = "threshold", .held_by_setup = true},
+    {.name = "--theme", .commands = window | render, .value = "light|dark", .kind = ValueKind::text,
+     .help = "the colour theme", .example = "dark"},
+    {.name = "--projector", .commands = window, .kind = ValueKind::none,
+     .help = "fills the screen with larger text and thicker lines, for the back of a classroom"},
+    {.name = "--at", .commands = window, .value = "S", .kind = ValueKind::number, .range = {0.0, 3600.0, false, " s"},
+     .help = "with --screenshot: the time in seconds, {range}, at which the window is saved", .example = "0.5"},
+    {.name = "--screenshot", .commands = window, .value = "FILE.png", .kind = ValueKind::text,
+     .help = "saves the window as a PNG file at the time --at gives, then closes it", .example = "window.png"},
+    {.name = "--duration", .commands = run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
+     .help = "how long to run, in seconds, {range} (the lesson's own duration when not given)", .example = "1.5"},
+    {.name = "--csv", .commands = run, .value = "FILE", .kind = ValueKind::text,
+     .help = "also writes the run's history, one row per step, to FILE (- for the standard output)", .example = "run.csv"},
+    {.name = "--at", .commands = render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
+     .help = "the times to draw, in seconds, each {range}, at most 100 of them", .example = "0.5,2",
+     .twice_hint = " (several times go in one --at, as in --at 1,2)"},
+    {.name = "--moment", .commands = render, .value = "NAME", .kind = ValueKind::text,
+     .help = "instead of --at: one of the lesson's teaching moments (see list), with its time, values and theme",
+     .example = "above_critical_angle"},
+    {.name = "--size", .commands = render, .value = "WxH", .kind = ValueKind::size, .range = {320.0, 7680.0, false, " pixels"},
+     .height_range = {240.0, 4320.0, false, " pixels"},
+     .help = "the picture's size in pixels, {range}, landscape from 4:3 to 2.4:1 (default 1280x720)", .example = "1920x1080"},
+    {.name = "--out", .commands = render, .value = "PATH", .kind = ValueKind::text,
+     .help = "a .png file for one picture, or a folder for several (LESSON_tS.png, or LESSON_MOMENT.png)",
+     .example = "picture.png", .required = render},
+    {.name = "--random", .commands = check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
+     .help = "checks each lesson at N settings, {range}, drawn inside its sliders' ranges, ends included, and prints "
+             "each failing one as the command line that reproduces it",
+     .example = "3"},
+    {.name = "--seed", .commands = check, .value = "S", .kind = ValueKind::whole_number,
+     .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
+     .help = "the seed of --random's draws, {range} (default 1): the same seed draws the same settings", .example = "4",
+     .beside = Beside::within},
+    {.name = "--mystery", .commands = window | run | render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
+     .help = "hides a friction pair's mu_s and mu_k, drawn from the seed, until the teacher reveals them",
+     .example = "aluminium/wood", .held_by_setup = true},
+    {.name = "--seed", .commands = window | run | render, .value = "N", .kind = ValueKind::whole_number,
+     .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
+     .help = "the mystery's seed, {range}: the same seed draws the same values on every machine", .example = "42",
+     .beside = Beside::together, .held_by_setup = true},
+    {.name = "--setup", .commands = window, .value = "FILE", .kind = ValueKind::text,
+     .help = "the window on a prepared setup (Lesson > Save as a setup), which holds the lesson, its values, the lock, "
+             "the mystery and the step settings: not with a lesson or the options for those",
+     .example = "class.setup"},
+    {.name = "--tsv", .commands = list, .kind = ValueKind::none,
+     .help = "for scripts: one lesson a line, its name, title, README moment and moments, tab-separated"},
+    {.name = "--page", .commands = link, .value = "ADDRESS", .kind = ValueKind::text,
+     .help = "the web page's address, for a whole link (without it, the part to put after the address)",
+     .example = "https://school.example/frictionlab/"},
+    {.name = "--quick", .commands = bench, .kind = ValueKind::none,
+     .help = "fewer sizes and repeats: a rough run in seconds instead of minutes"},
+    {.name = "--out", .commands = bench, .value = "DIR", .kind = ValueKind::text,
+     .help = "the folder for the CSV files and charts (required without --recommend)", .example = "figures"},
+    {.name = "--recommend", .commands = bench, .value = "LESSON", .kind = ValueKind::text,
+     .help = "prints the cheapest step setting whose run of the lesson meets its table within --tol times the rows' "
+             "tolerances at 240 Hz, measured now; exit 1 if none does",
+     .example = "incline"},
+    {.name = "--tol", .commands = bench, .value = "X", .kind = ValueKind::number,
+     .range = {0.0, 1e6, true, " × the lesson's tolerances"},
+     .help = "with --recommend: the factor on the tolerances, {range} (1: the table passes; 0.1: ten times tighter)",
+     .example = "1"},
+};
+
+// How each command that reads its options through read_options() words its refusals. They
+// differ only where the messages always have: the window's name no command.
+struct Refusals {
+  Command command;
+  const char* prefix;         // before every message: "run: "
+  const char* options_are;    // "options", before the list of those it takes
+  const char* after_list;     // after it
+  const char* give_it_once;   // after "given twice"
+};
+const Refusals refusals[] = {
+    {window, "", "the window's options", " (commands: list, run, check, render, demo, bench, help)", ""},
+    {run, "run: ", "options", "", "; give it once"},
+    {check, "check: ", "options", "", "; give it once"},
+    {render, "render: ", "options", "", "; give it once"},
+};
+
+const Refusals& refusals_of(Command command) {
+  for (const Refusals& words : refusals) {
+    if (words.command == command) return words;
+  }
+  throw std::logic_error("frictionlab: " + std::string(command_name(command)) + " does not read its options from the table");
+}
+
+// 100000, 0.5, 1000000: as a person writes them.
+std::string number_words(double value) {
+  char text[32];
+  if (value == std::floor(value) && std::fabs(value) < 1e15) {
+    std::snprintf(text, sizeof text, "%.0f", value);
+  } else {
+    std::snprintf(text, sizeof text, "%g", value);
+  }
+  return text;
+}
+
+std::string range_of(const Range& range) {
+  return range.low_open ? "above " + number_words(range.low) + ", at most " + number_words(range.high)
+                        : "from " + number_words(range.low) + " to " + number_words(range.high);
+}
+
+// "--hz N", "--projector".
+std::string written(const Option& option) {
+  std::string text(option.name);
+  if (!option.value.empty()) text.append(" ").append(option.value);
+  return text;
+}
+
+// `words` broken into lines of at most `width` characters, each after `indent` spaces but the
+// first, which continues a line already `column` characters long (after words of its own when
+// `after_words`, so that a space goes first).
+std::string wrapped(const std::vector<std::string>& words, std::size_t column, std::size_t indent, std::size_t width,
+                    bool after_words) {
+  std::string text;
+  for (const std::string& word : words) {
+    if (after_words && column + 1 + word.size() > width) {
+      text += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if (after_words) {
+      text += ' ';
+      ++column;
+    }
+    text += word;
+    column += word.size();
+    after_words = true;
+  }
+  return text;
+}
+
+std::vector<std::string> split_words(std::string_view text) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(' ', start), text.size());
+    if (end > start) words.emplace_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return words;
+}
+
+// One line of the usage: what follows the program's name, and what it does.
+struct Usage {
+  Command command;         // whose options follow; none for the commands that take none
+  std::string_view words;  // after the program's name, before the options
+  std::string_view what;
+  bool on_node;            // in the command line built for node
+};
+constexpr Command no_options{};
+const Usage usages[] = {
+    {window, "[LESSON]",
+     "the classroom window on a lesson (the first one if none is named; a name from list, or a .lua file); "
+     "without a display it draws the lesson to a PNG instead",
+     false},
+    {list, "list", "the built-in lessons with their titles and moments", true},
+    {run, "run LESSON", "run a lesson without a window and print its table of theory against simulation", true},
+    {check, "check [LESSON ...]",
+     "run lessons (every built-in one if none is named) and check their expectations; exit 1 if any fails", true},
+    {render, "render LESSON",
+     "draw the lesson to PNG files with no display, at each time asked for or at one of its moments", false},
+    {no_options, "demo", "theory beside simulation for every situation", true},
+    {link, "link FILE.setup", "a setup file as a link to the web page (ADDRESS#setup=...)", true},
+    {no_options, "link LINK | -",
+     "the setup file a link holds, printed (- reads the link from the standard input); a lesson the link carries "
+     "is kept among your lessons, and the setup names it",
+     true},
+    {bench, "bench",
+     "speed and accuracy figures, CSV files and charts; or the cheapest step setting that meets a lesson's table",
+     false},
+    {no_options, "help | --help | -h", "this text", true},
+    {no_options, "--version", "the version", true},
+};
+
+// The options of `command` as the usage writes them: "[--hz N]", "[--set NAME=VALUE ...]",
+// "--out PATH" when required, "[--mystery MATERIAL/MATERIAL --seed N]".
+std::vector<std::string> synopsis(Command command) {
+  std::vector<std::string> parts;
+  for (const Option& option : table) {
+    if (!includes(option.commands, command)) continue;
+    const std::string text = written(option) + (option.repeatable ? " ..." : "");
+    if (option.beside != Beside::apart && !parts.empty() && parts.back().back() == ']') {
+      parts.back().pop_back();
+      parts.back() += option.beside == Beside::together ? " " + text + "]" : " [" + text + "]]";
+    } else {
+      parts.push_back(includes(option.required, command) ? text : "[" + text + "]");
+    }
+  }
+  return parts;
+}
+
+std::string commands_of(const Option& option, bool node) {
+  std::string names;
+  for (const Command command : {window, list, run, check, render, link, bench}) {
+    if (!includes(option.commands, command)) continue;
+    if (node && (command == window || command == render || command == bench)) continue;
+    names += (names.empty() ? "" : ", ") + std::string(command_name(command));
+  }
+  return names;
+}
+
+}  // namespace
+
+std::string_view command_name(Command command) {
+  switch (command) {
+    case Command::window: return "the window";
+    case Command::list: return "list";
+    case Command::run: return "run";
+    case Command::check: return "check";
+    case Command::render: return "render";
+    case Command::link: return "link";
+    case Command::bench: return "bench";
+  }
+  return "?";
+}
+
+double Option::number(const std::string& text) const {
+  return option_number(std::string(name), text, range.low, range.high, range.low_open, range.unit);
+}
+
+int Option::whole_number(const std::string& text) const {
+  const int whole = static_cast<int>(number(text));
+  if (std::to_string(whole) != text) throw InvalidInput(std::string(name) + " " + text + ": a whole number " + range_words());
+  return whole;
+}
+
+std::string Option::range_words() const {
+  if (kind == ValueKind::size) return "width " + range_of(range) + ", height " + range_of(height_range);
+  return range_of(range);
+}
+
+std::string Option::help_line() const {
+  std::string line(help);
+  const std::size_t at = line.find("{range}");
+  if (at != std::string::npos) line.replace(at, 7, range_words());
+  return line;
+}
+
+std::span<const Option> options_table() { return table; }
+
+const Option& option_for(Command command, std::string_view name) {
+  for (const Option& option : table) {
+    if (option.name == name && includes(option.commands, command)) return option;
+  }
+  throw std::logic_error("frictionlab: the options table gives " + std::string(command_name(command)) + " no " +
+                         std::string(name));
+}
+
+std::string unknown_option_message(Command command, const std::string& option) {
+  const Refusals& words = refusals_of(command);
+  std::string listed;
+  const Option* previous = nullptr;
+  for (const Option& known : table) {
+    if (!includes(known.commands, command)) continue;
+    // One needing the other is written as one: "--mystery MATERIAL/MATERIAL --seed N".
+    const bool together = known.beside == Beside::together && previous != nullptr;
+    listed += (listed.empty() ? "" : together ? " " : ", ") + written(known);
+    previous = &known;
+  }
+  return std::string(words.prefix) + "unknown option '" + option + "'; " + words.options_are + ": " + listed + words.after_list;
+}
+
+void read_options(Command command, const std::vector<std::string>& args,
+                  const std::function<void(const std::string&)>& operand,
+                  const std::function<void(const Option&, const std::string&)>& take) {
+  const Refusals& words = refusals_of(command);
+  std::vector<std::string_view> seen;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      operand(arg);
+      continue;
+    }
+    const auto known = std::find_if(std::begin(table), std::end(table), [&](const Option& option) {
+      return option.name == arg && includes(option.commands, command);
+    });
+    if (known == std::end(table)) throw InvalidInput(unknown_option_message(command, arg));
+    if (known->kind == ValueKind::none) {
+      take(*known, "");  // a switch given twice asks for the same thing twice
+      continue;
+    }
+    if (i + 1 >= args.size()) throw InvalidInput(words.prefix + arg + " needs a value; see frictionlab help");
+    // Given twice, which one was meant is not for the program to guess; --set is repeatable,
+    // one parameter each time, and says itself when one parameter is given two values.
+    if (!known->repeatable) {
+      if (std::find(seen.begin(), seen.end(), known->name) != seen.end()) {
+        throw InvalidInput(words.prefix + arg + " given twice" + words.give_it_once + std::string(known->twice_hint));
+      }
+      seen.push_back(known->name);
+    }
+    take(*known, args[++i]);
+  }
+}
+
+std::string usage_text(Program program) {
+  const bool node = program == Program::node;
+  const std::string name = node ? "node frictionlab-cli.js" : "frictionlab";
+  constexpr std::size_t width = 100, what_column = 44;
+  std::string text;
+  bool first = true;
+  for (const Usage& usage : usages) {
+    if (node && !usage.on_node) continue;
+    std::string line = (first ? "usage: " : "       ") + name + " " + std::string(usage.words);
+    first = false;
+    if (usage.command != no_options) {
+      // Continued lines start under the command's first word after its name.
+      const std::size_t indent = 7 + name.size() + 1 + (usage.command == window ? 0 : command_name(usage.command).size() + 1);
+      line += wrapped(synopsis(usage.command), line.size(), indent, width, true);
+    }
+    const std::size_t last_line = line.size() - std::min(line.size(), line.rfind('\n') + 1);
+    text += line;
+    if (last_line + 2 <= what_column) {
+      text += std::string(what_column - last_line, ' ');
+    } else {
+      text += "\n" + std::string(what_column, ' ');
+    }
+    text += wrapped(split_words(usage.what), what_column, what_column, width, false) + "\n";
+  }
+  text += "Options, with the commands that take them:\n";
+  constexpr std::size_t help_column = 30;
+  for (const Option& option : table) {
+    const std::string commands = commands_of(option, node);
+    if (commands.empty()) continue;
+    std::string line = "  " + written(option);
+    line += line.size() + 2 <= help_column ? std::string(help_column - line.size(), ' ') : "\n" + std::string(help_column, ' ');
+    std::vector<std::string> words = split_words(option.help_line());
+    words.insert(words.begin(), "(" + commands + ")");
+    text += line + wrapped(words, help_column, help_column, width, false) + "\n";
+  }
+  if (node) {
+    text +=
+        "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing; 2 bad input (the\n"
+        "message names what and where) or the program could not finish.\n"
+        "This is FrictionLab's WebAssembly build for node: the classroom is the web page, and render and\n"
+        "bench are the desktop program's.\n";
+  } else {
+    text +=
+        "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing, or\n"
+        "bench --recommend found no setting; 2 bad input (the message names what and where) or the\n"
+        "program could not finish.\n"
+        "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
+        "More in the manual: man frictionlab\n";
+  }
+  return text;
+}
+
+}  // namespace frictionlab
