@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -25,7 +26,8 @@ const Option table[] = {
      .help = "shows only the named controls (parameters, or friction, hz, substeps) and keeps the class on this lesson",
      .example = "mu_s,mu_k", .held_by_setup = true},
     {.name = "--set", .commands = window | run | check | render | bench, .value = "NAME=VALUE", .kind = ValueKind::text,
-     .help = "sets a lesson parameter, as in --set mu_s=0.5; a value out of the parameter's range is refused",
+     .help = "sets a lesson parameter, as in --set mu_s=0.5; may be given several times; a value out of the "
+             "parameter's range is refused with the range",
      .example = "mu_s=0.5", .repeatable = true, .held_by_setup = true},
     {.name = "--hz", .commands = window | run | check | render, .value = "N", .kind = ValueKind::number,
      .range = {1.0, 100000.0, false, " steps per second"}, .help = "steps per simulated second, {range} (default 240)",
@@ -35,6 +37,8 @@ const Option table[] = {
      .example = "2", .held_by_setup = true},
     {.name = "--friction", .commands = window | run | check | render, .value = "T", .kind = ValueKind::text,
      .help = "the friction treatment: stick-slip (the default, converges to Coulomb), threshold, regularized or box2d",
+     .manual = "the friction treatment: stick-slip (converges to Coulomb), threshold (the games' speed switch), "
+               "regularized (smooth, creeps) or box2d (Box2D's own single coefficient); stick-slip when not given",
      .example = "threshold", .held_by_setup = true},
     {.name = "--theme", .commands = window | render, .value = "light|dark", .kind = ValueKind::text,
      .help = "the colour theme", .example = "dark"},
@@ -47,7 +51,10 @@ const Option table[] = {
     {.name = "--duration", .commands = run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
      .help = "how long to run, in seconds, {range} (the lesson's own duration when not given)", .example = "1.5"},
     {.name = "--csv", .commands = run, .value = "FILE", .kind = ValueKind::text,
-     .help = "also writes the run's history, one row per step, to FILE (- for the standard output)", .example = "run.csv"},
+     .help = "also writes the run's history, one row per step, to FILE (- for the standard output)",
+     .manual = "also writes the run's history, one row per step, to FILE (a .csv file, or - for the standard output; "
+               "a .lua file is refused so that no script is overwritten)",
+     .example = "run.csv"},
     {.name = "--at", .commands = render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
      .help = "the times to draw, in seconds, each {range}, at most 100 of them", .example = "0.5,2",
      .twice_hint = " (several times go in one --at, as in --at 1,2)"},
@@ -59,25 +66,46 @@ const Option table[] = {
      .help = "the picture's size in pixels, {range}, landscape from 4:3 to 2.4:1 (default 1280x720)", .example = "1920x1080"},
     {.name = "--out", .commands = render, .value = "PATH", .kind = ValueKind::text,
      .help = "a .png file for one picture, or a folder for several (LESSON_tS.png, or LESSON_MOMENT.png)",
+     .manual = "a .png file for one picture, or a folder (made if missing, inside one that exists) for several: each "
+               "file there is named LESSON_tTIME.png, or LESSON_MOMENT.png with --moment",
      .example = "picture.png", .required = render},
     {.name = "--random", .commands = check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
      .help = "checks each lesson at N settings, {range}, drawn inside its sliders' ranges, ends included, and prints "
              "each failing one as the command line that reproduces it",
+     .manual = "checks each lesson at N settings (a whole number {range}) drawn inside its own sliders' ranges: the "
+               "first with every slider at its minimum, the second at its maximum, then each slider at one end or the "
+               "other two times in five and anywhere between (to four significant figures) otherwise; a value given "
+               "with --set is kept in every setting. Each setting that misses an expectation is printed as the command "
+               "line that reproduces it (frictionlab check LESSON --set NAME=VALUE ...), with the rows it missed; the "
+               "exit status is 1 if any does",
      .example = "3"},
     {.name = "--seed", .commands = check, .value = "S", .kind = ValueKind::whole_number,
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
-     .help = "the seed of --random's draws, {range} (default 1): the same seed draws the same settings", .example = "4",
+     .help = "with --random: the seed of the draws, a whole number {range} (default 1); the same seed draws the same "
+             "settings on every machine",
+     .example = "4",
      .beside = Beside::within},
     {.name = "--mystery", .commands = window | run | render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
      .help = "hides a friction pair's mu_s and mu_k, drawn from the seed, until the teacher reveals them",
+     .manual = "makes a friction pair of the lesson (one whose μs and μk are sliders, named either way round) a "
+               "mystery: both drawn from the seed, μs from 0.20 to 0.90 and μk from 50 % to 90 % of μs, in "
+               "hundredths, and hidden (sliders, values, the theory's predictions and curves, CSV, title) until the "
+               "teacher reveals them; needs --seed",
      .example = "aluminium/wood", .held_by_setup = true},
     {.name = "--seed", .commands = window | run | render, .value = "N", .kind = ValueKind::whole_number,
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
-     .help = "the mystery's seed, {range}: the same seed draws the same values on every machine", .example = "42",
+     .help = "the mystery's seed, a whole number {range}: the same seed draws the same values on every machine",
+     .example = "42",
      .beside = Beside::together, .held_by_setup = true},
     {.name = "--setup", .commands = window, .value = "FILE", .kind = ValueKind::text,
      .help = "the window on a prepared setup (Lesson > Save as a setup), which holds the lesson, its values, the lock, "
              "the mystery and the step settings: not with a lesson or the options for those",
+     .manual = "opens a prepared setup, saved from the window's Lesson menu (Save as a setup): a small text file with "
+               "the lesson (lesson NAME, or a script's path from the file's folder), its values (set NAME = VALUE), "
+               "the lock (lock NAME, ...), a mystery (mystery MATERIAL/MATERIAL seed N), the step settings (hz, "
+               "substeps, friction) and the class's predictions (predictions on|off, predict ROW = ANSWER, theory "
+               "revealed), one a line. A line it cannot use is named as FILE:LINE and nothing opens. Not with a "
+               "lesson, {held}, which the file holds; a link to the web page (see link) opens as its setup does",
      .example = "class.setup"},
     {.name = "--tsv", .commands = list, .kind = ValueKind::none,
      .help = "for scripts: one lesson a line, its name, title, README moment and moments, tab-separated"},
@@ -225,6 +253,40 @@ std::vector<std::string> synopsis(Command command) {
   return parts;
 }
 
+// "run, check and render": the names joined as a sentence joins them, with `last` before the last.
+std::string sentence_list(const std::vector<std::string>& names, const char* last = " and ") {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == names.size() ? last : ", ") + names[i];
+  }
+  return text;
+}
+
+constexpr Command manual_order[] = {window, list, run, check, render, link, bench};
+
+// Plain words as roff: an option's name in bold with its hyphens as \-, μ as \(*m, a backslash
+// as \e, and a line that would start with a control character kept as text.
+std::string roff(std::string_view text) {
+  std::string out;
+  const auto letter = [&](std::size_t i) { return i < text.size() && text[i] >= 'a' && text[i] <= 'z'; };
+  for (std::size_t i = 0; i < text.size();) {
+    const bool word_start = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
+    if (word_start && text.compare(i, 2, "--") == 0 && letter(i + 2)) {
+      out += "\\fB\\-\\-";
+      for (i += 2; letter(i) || (i < text.size() && text[i] == '-'); ++i) out += text[i] == '-' ? "\\-" : std::string(1, text[i]);
+      out += "\\fR";
+    } else if (text.compare(i, 2, "\xCE\xBC") == 0) {  // μ in UTF-8
+      out += "\\(*m";
+      i += 2;
+    } else {
+      out += text[i] == '\\' ? std::string("\\e") : std::string(1, text[i]);
+      ++i;
+    }
+  }
+  if (!out.empty() && (out[0] == '.' || out[0] == '\'')) out.insert(0, "\\&");
+  return out;
+}
+
 std::string commands_of(const Option& option, bool node) {
   std::string names;
   for (const Command command : {window, list, run, check, render, link, bench}) {
@@ -265,12 +327,22 @@ std::string Option::range_words() const {
   return range_of(range);
 }
 
-std::string Option::help_line() const {
-  std::string line(help);
+std::string Option::words(std::string_view text) const {
+  std::string line(text);
   const std::size_t at = line.find("{range}");
   if (at != std::string::npos) line.replace(at, 7, range_words());
+  const std::size_t held_at = line.find("{held}");
+  if (held_at != std::string::npos) {
+    std::vector<std::string> held;
+    for (const Option& option : table) {
+      if (option.held_by_setup && includes(option.commands, Command::window)) held.emplace_back(option.name);
+    }
+    line.replace(held_at, 6, sentence_list(held, " or "));
+  }
   return line;
 }
+
+std::string Option::help_line() const { return words(help); }
 
 std::span<const Option> options_table() { return table; }
 
@@ -376,6 +448,32 @@ std::string usage_text(Program program) {
         "program could not finish.\n"
         "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
         "More in the manual: man frictionlab\n";
+  }
+  return text;
+}
+
+std::string manual_options() {
+  std::string text;
+  for (const Command section : manual_order) {
+    std::string entries;
+    for (const Option& option : table) {
+      const Command* first = std::find_if(std::begin(manual_order), std::end(manual_order),
+                                          [&](Command command) { return includes(option.commands, command); });
+      if (*first != section) continue;
+      std::string name;
+      for (const char c : option.name) name += c == '-' ? std::string("\\-") : std::string(1, c);
+      const std::string tag = option.value.empty() ? ".B " + name : ".BI " + name + " \" " + std::string(option.value) + "\"";
+      std::string paragraph = option.words(option.manual.empty() ? option.help : option.manual);
+      paragraph[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(paragraph[0])));
+      if (paragraph.back() != '.') paragraph += '.';
+      std::vector<std::string> others;
+      for (const Command command : manual_order) {
+        if (command != section && includes(option.commands, command)) others.emplace_back(command_name(command));
+      }
+      if (!others.empty()) paragraph += " Also taken by " + sentence_list(others) + ".";
+      entries += ".TP\n" + tag + "\n" + roff(paragraph) + "\n";
+    }
+    if (!entries.empty()) text += ".SS " + std::string(section == window ? "The window" : command_name(section)) + "\n" + entries;
   }
   return text;
 }

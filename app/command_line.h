@@ -1,8 +1,8 @@
 // The command line's options in one table: for each, the commands that take it, the kind of
 // value it takes and its allowed range, and its line of help. The window, run, check and
-// render read their options through read_options(), `frictionlab help` is written from the
-// table, and tests/test_command_line.cpp holds the manual page to it; so an option is added,
-// renamed or given a new range in one place.
+// render read their options through read_options(), and `frictionlab help` and the manual
+// page's OPTIONS are written from the table; so an option is added, renamed or given a new
+// range in one place.
 #pragma once
 
 #include <functional>
@@ -66,6 +66,7 @@ struct Option {
   Range range{};                 // for the numbers
   Range height_range{};          // --size's height
   std::string_view help{};       // one line; {range} stands for the range in words
+  std::string_view manual{};     // the manual page's paragraph, where it says more than the help
   std::string_view example{};    // a value every command that takes it accepts, for the tests
   Command required{};            // commands that cannot do without it (render's --out)
   Beside beside = Beside::apart;
@@ -82,6 +83,9 @@ struct Option {
   std::string range_words() const;
   // The help line with {range} written out.
   std::string help_line() const;
+  // `text` (the help or the manual's paragraph) with {range} and {held} (the options a setup
+  // holds) written out.
+  std::string words(std::string_view text) const;
 };
 
 // Every option, in the order the help and the unknown-option messages list them.
@@ -99,6 +103,11 @@ void read_options(Command command, const std::vector<std::string>& args,
                   const std::function<void(const Option&, const std::string&)>& take);
 // The message for an option `command` does not take, with the options it does.
 std::string unknown_option_message(Command command, const std::string& option);
+
+// The manual page's OPTIONS section, in roff: a subsection for each command (the window, list,
+// run, check, render, link, bench), each option under the first command that takes it, with its
+// manual paragraph (or its line of help). packaging/ writes it into frictionlab.1 at build time.
+std::string manual_options();
 
 // `frictionlab help`: the commands' usage and every option, from the table. The command line
 // built for node (web/) has list, run, check, demo and link only, and is run as
