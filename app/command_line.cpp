@@ -1,7 +1,8 @@
+// The options table, the reading of a command's arguments through it, and the help and manual
+// page written from it.
 #include "app/command_line.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -127,7 +128,8 @@ const Option table[] = {
 };
 
 // How each command that reads its options through read_options() words its refusals. They
-// differ only where the messages always have: the window's name no command.
+// differ as they always have: the window's messages name no command (the window is what a
+// command line without one opens) and end with the commands, for a mistyped one.
 struct Refusals {
   Command command;
   const char* prefix;         // before every message: "run: "
