@@ -273,20 +273,26 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   return 0;
 }
 
-int run_check(const std::vector<std::string>& args, std::ostream& out) {
-  // Lessons, and the values and step settings to check them at (a student checks a threshold
-  // from both sides: check my_lesson.lua --set launch_speed=2.4), or at N settings drawn inside
-  // the sliders' ranges (check my_lesson.lua --random 50).
+namespace {
+
+struct CheckOptions {
   std::vector<std::string> names;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::vector<std::string> step_options;
+  std::vector<std::string> step_options;  // as given, for the command lines --random prints
   std::optional<int> random_count;
   std::optional<std::uint64_t> seed;
-  const auto add_lesson = [&](const std::string& word) { names.push_back(word); };
+};
+
+CheckOptions parse_check(const std::vector<std::string>& args) {
+  // Lessons, and the values and step settings to check them at (a student checks a threshold
+  // from both sides: check my_lesson.lua --set launch_speed=2.4), or at N settings drawn inside
+  // the sliders' ranges (check my_lesson.lua --random 50).
+  CheckOptions options;
+  const auto add_lesson = [&](const std::string& word) { options.names.push_back(word); };
   read_options(Command::check, args, add_lesson, [&](const Option& option, const std::string& value) {
     if (option.name == "--set") {
-      add_override(value, overrides);
+      add_override(value, options.overrides);
     } else if (option.name == "--random") {
       const std::string allowed = "a whole number of settings " + option.range_words();
       const bool digits = !value.empty() && value.size() <= 6 &&
@@ -294,20 +300,35 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
       if (!digits || std::stoi(value) < option.range.low || std::stoi(value) > option.range.high) {
         throw InvalidInput("check: --random " + value + ": give " + allowed);
       }
-      random_count = std::stoi(value);
+      options.random_count = std::stoi(value);
     } else if (option.name == "--seed") {
-      seed = ui::parse_mystery_seed("check: --seed", value);
-    } else if (step_option(option, value, settings)) {  // --hz, --substeps or --friction
-      step_options.push_back(std::string(option.name));
-      step_options.push_back(value);
+      options.seed = ui::parse_mystery_seed("check: --seed", value);
+    } else if (step_option(option, value, options.settings)) {  // --hz, --substeps or --friction
+      options.step_options.push_back(std::string(option.name));
+      options.step_options.push_back(value);
     } else {
       throw std::logic_error("check does not read " + std::string(option.name) + ", which the options table gives it");
     }
   });
-  if (names.empty() && !overrides.empty()) {
+  if (options.names.empty() && !options.overrides.empty()) {
     throw InvalidInput("check: --set names a parameter of one lesson; name the lesson too, as in check push --set mass=2");
   }
-  if (seed && !random_count) throw InvalidInput("check: --seed S draws the settings of --random N; give --random N with it");
+  if (options.seed && !options.random_count) {
+    throw InvalidInput("check: --seed S draws the settings of --random N; give --random N with it");
+  }
+  return options;
+}
+
+}  // namespace
+
+void parse_run_arguments(const std::vector<std::string>& args) { parse_run(args); }
+void parse_check_arguments(const std::vector<std::string>& args) { parse_check(args); }
+
+int run_check(const std::vector<std::string>& args, std::ostream& out) {
+  CheckOptions options = parse_check(args);
+  std::vector<std::string>& names = options.names;
+  const std::map<std::string, std::string>& overrides = options.overrides;
+  const std::optional<int>& random_count = options.random_count;
   if (names.empty()) names = lessons::builtin_lessons();
   // Every lesson is checked even when one cannot be run: a broken script is reported and the
   // others still get their verdict.
@@ -315,12 +336,12 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
   for (const std::string& name : names) {
     try {
       if (random_count) {
-        if (check_random_settings(name, overrides, settings, step_options, *random_count, seed.value_or(default_random_seed),
-                                  out) > 0) {
+        if (check_random_settings(name, overrides, options.settings, options.step_options, *random_count,
+                                  options.seed.value_or(default_random_seed), out) > 0) {
           ++failed_lessons;
         }
       } else {
-        Lesson lesson(lessons::resolve_lesson(name), overrides, settings);
+        Lesson lesson(lessons::resolve_lesson(name), overrides, options.settings);
         out << "== " << name << ": ";
         print_heading(lesson, out);
         if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;

@@ -172,6 +172,8 @@ void apply_moment(const std::string& path, RenderOptions& options) {
 
 }  // namespace
 
+void parse_render_arguments(const std::vector<std::string>& args) { parse_render(args); }
+
 int run_render(const std::vector<std::string>& args, std::ostream& out) {
   RenderOptions options = parse_render(args);
   const std::string path = lessons::resolve_lesson(options.lesson);

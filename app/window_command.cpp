@@ -111,6 +111,8 @@ std::string time_text(double t) {
 
 }  // namespace
 
+void parse_window_arguments(const std::vector<std::string>& args) { parse_window(args); }
+
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   const WindowOptions options = parse_window(args);
   const std::string path = !options.setup.empty() ? ""
