@@ -69,7 +69,7 @@ const Option table[] = {
      .help = "a .png file for one picture, or a folder for several (LESSON_tS.png, or LESSON_MOMENT.png)",
      .manual = "a .png file for one picture, or a folder (made if missing, inside one that exists) for several: each "
                "file there is named LESSON_tTIME.png, or LESSON_MOMENT.png with --moment",
-     .example = "picture.png", .required = render},
+     .example = "picture.png"},
     {.name = "--random", .commands = check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
      .help = "checks each lesson at N settings, {range}, drawn inside its sliders' ranges, ends included, and prints "
              "each failing one as the command line that reproduces it",
@@ -84,8 +84,7 @@ const Option table[] = {
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
      .help = "with --random: the seed of the draws, a whole number {range} (default 1); the same seed draws the same "
              "settings on every machine",
-     .example = "4",
-     .beside = Beside::within},
+     .example = "4"},
     {.name = "--mystery", .commands = window | run | render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
      .help = "hides a friction pair's mu_s and mu_k, drawn from the seed, until the teacher reveals them",
      .manual = "makes a friction pair of the lesson (one whose μs and μk are sliders, named either way round) a "
@@ -197,7 +196,7 @@ std::string wrapped(const std::vector<std::string>& words, std::size_t column, s
   std::string text;
   for (const std::string& word : words) {
     if (after_words && column + 1 + word.size() > width) {
-      text += "\n" + std::string(indent, ' ');
+      text.append(1, '\n').append(indent, ' ');
       column = indent;
     } else if (after_words) {
       text += ' ';
@@ -221,51 +220,76 @@ std::vector<std::string> split_words(std::string_view text) {
   return words;
 }
 
-// One line of the usage: what follows the program's name, and what it does.
+// One form of a command in the usage: what follows the program's name, and what it does. In
+// `form`, each option is named alone ("--hz") and written from the table with its value ("--hz
+// N"); the brackets, "..." and the other words are the usage's own. A command given in two
+// ways (the window on a lesson or on a setup, render at times or at a moment, bench's figures
+// or its recommendation) has a form for each, as the usage always had.
 struct Usage {
-  Command command;         // whose options follow; none for the commands that take none
-  std::string_view words;  // after the program's name, before the options
+  Command command;         // whose options the form names; none for the forms that name none
+  std::string_view form;
   std::string_view what;
   bool on_node;            // in the command line built for node
 };
 constexpr Command no_options{};
 const Usage usages[] = {
-    {window, "[LESSON]",
+    {window,
+     "[LESSON] [--lock] [--set ...] [--hz] [--substeps] [--friction] [--theme] [--projector] [--at --screenshot] "
+     "[--mystery --seed]",
      "the classroom window on a lesson (the first one if none is named; a name from list, or a .lua file); "
      "without a display it draws the lesson to a PNG instead",
      false},
-    {list, "list", "the built-in lessons with their titles and moments", true},
-    {run, "run LESSON", "run a lesson without a window and print its table of theory against simulation", true},
-    {check, "check [LESSON ...]",
+    {window, "--setup [--theme] [--projector] [--at --screenshot]",
+     "the window on a prepared setup (Lesson > Save as a setup): its lesson, values, lock, mystery and step settings",
+     false},
+    {list, "list [--tsv]", "the built-in lessons with their titles and moments", true},
+    {run, "run LESSON [--duration] [--hz] [--substeps] [--friction] [--set ...] [--csv] [--mystery --seed]",
+     "run a lesson without a window and print its table of theory against simulation", true},
+    {check, "check [LESSON ...] [--set ...] [--hz] [--substeps] [--friction] [--random [--seed]]",
      "run lessons (every built-in one if none is named) and check their expectations; exit 1 if any fails", true},
-    {render, "render LESSON",
-     "draw the lesson to PNG files with no display, at each time asked for or at one of its moments", false},
+    {render, "render LESSON --at [--size] [--theme] [--set ...] [--hz] [--substeps] [--friction] [--mystery --seed] --out",
+     "draw the lesson at each time to PNG files, with no display", false},
+    {render, "render LESSON --moment [--size] --out", "draw one of the lesson's moments (its time, values and theme)",
+     false},
     {no_options, "demo", "theory beside simulation for every situation", true},
-    {link, "link FILE.setup", "a setup file as a link to the web page (ADDRESS#setup=...)", true},
+    {link, "link FILE.setup [--page]", "a setup file as a link to the web page (ADDRESS#setup=...)", true},
     {no_options, "link LINK | -",
      "the setup file a link holds, printed (- reads the link from the standard input); a lesson the link carries "
      "is kept among your lessons, and the setup names it",
      true},
-    {bench, "bench",
-     "speed and accuracy figures, CSV files and charts; or the cheapest step setting that meets a lesson's table",
+    {bench, "bench [--quick] --out", "speed and accuracy figures, CSV files and charts", false},
+    {bench, "bench --recommend --tol [--set ...]",
+     "the cheapest step setting whose run of the lesson meets its table within X times the rows' tolerances at "
+     "240 Hz (exit 1 if none does)",
      false},
     {no_options, "help | --help | -h", "this text", true},
     {no_options, "--version", "the version", true},
 };
 
-// The options of `command` as the usage writes them: "[--hz N]", "[--set NAME=VALUE ...]",
-// "--out PATH" when required, "[--mystery MATERIAL/MATERIAL --seed N]".
-std::vector<std::string> synopsis(Command command) {
+// A usage form as the help writes it, in the parts a line may break between: "run", "LESSON",
+// "[--hz N]", "[--at S --screenshot FILE.png]", "--out PATH". Throws std::logic_error for an
+// option the table does not give the command (option_for).
+std::vector<std::string> form_parts(const Usage& usage) {
   std::vector<std::string> parts;
-  for (const Option& option : table) {
-    if (!includes(option.commands, command)) continue;
-    const std::string text = written(option) + (option.repeatable ? " ..." : "");
-    if (option.beside != Beside::apart && !parts.empty() && parts.back().back() == ']') {
-      parts.back().pop_back();
-      parts.back() += option.beside == Beside::together ? " " + text + "]" : " [" + text + "]]";
+  int depth = 0;  // the brackets open before the word
+  for (const std::string& word : split_words(usage.form)) {
+    std::size_t open = 0, close = word.size();  // the word is word[open, close) inside its brackets
+    while (open < close && word[open] == '[') ++open;
+    while (close > open && word[close - 1] == ']') --close;
+    const std::string_view core = std::string_view(word).substr(open, close - open);
+    std::string text(open, '[');
+    if (usage.command != no_options && core.rfind("--", 0) == 0) {
+      text += written(option_for(usage.command, core));
     } else {
-      parts.push_back(includes(option.required, command) ? text : "[" + text + "]");
+      text += core;
     }
+    text.append(word.size() - close, ']');
+    if (depth > 0 && !parts.empty()) {
+      parts.back().append(" ").append(text);
+    } else {
+      parts.push_back(text);
+    }
+    depth += static_cast<int>(open) - static_cast<int>(word.size() - close);
   }
   return parts;
 }
@@ -432,13 +456,13 @@ std::string usage_text(Program program) {
   bool first = true;
   for (const Usage& usage : usages) {
     if (node && !usage.on_node) continue;
-    std::string line = (first ? "usage: " : "       ") + name + " " + std::string(usage.words);
+    std::string line = (first ? "usage: " : "       ") + name;
     first = false;
-    if (usage.command != no_options) {
-      // Continued lines start under the command's first word after its name.
-      const std::size_t indent = 7 + name.size() + 1 + (usage.command == window ? 0 : command_name(usage.command).size() + 1);
-      line += wrapped(synopsis(usage.command), line.size(), indent, width, true);
-    }
+    // Continued lines start under the command's first word after its name.
+    const std::vector<std::string> parts = form_parts(usage);
+    const bool named = usage.command != window && usage.command != no_options;
+    const std::size_t indent = line.size() + 1 + (named ? parts.front().size() + 1 : 0);
+    line += wrapped(parts, line.size(), indent, width, true);
     const std::size_t last_line = line.size() - std::min(line.size(), line.rfind('\n') + 1);
     text += line;
     if (last_line + 2 <= what_column) {

@@ -50,12 +50,11 @@ struct Range {
   const char* unit = "";  // after the number in the message: " s", " steps per second"
 };
 
-// How an option is written beside the one before it in the table, in the usage and in the
-// list an unknown option is answered with.
+// How an option is written beside the one before it in the list an unknown option is answered
+// with. (The usage's forms, in app/command_line.cpp, bracket their options themselves.)
 enum class Beside {
-  apart,     // [--hz N] [--substeps N]
-  together,  // [--mystery MATERIAL/MATERIAL --seed N]: one needs the other
-  within,    // [--random N [--seed S]]: the second only with the first
+  apart,     // --hz N, --substeps N
+  together,  // --mystery MATERIAL/MATERIAL --seed N: one needs the other
 };
 
 struct Option {
@@ -68,7 +67,6 @@ struct Option {
   std::string_view help{};       // one line; {range} stands for the range in words
   std::string_view manual{};     // the manual page's paragraph, where it says more than the help
   std::string_view example{};    // a value every command that takes it accepts, for the tests
-  Command required{};            // commands that cannot do without it (render's --out)
   Beside beside = Beside::apart;
   bool repeatable = false;       // --set: one parameter each time
   std::string_view twice_hint{}; // said after "given twice" when giving it twice is a likely slip

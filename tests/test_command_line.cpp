@@ -287,6 +287,73 @@ TEST(OptionsTable, TheHelpNamesEveryOptionWithItsRangeAndCommands) {
   }
 }
 
+// The usage's forms, one a line as the help writes them: "frictionlab run LESSON [--duration S] ...".
+std::vector<std::string> usage_forms(const std::string& help, const std::string& name) {
+  const std::string usage = one_line(help.substr(0, help.find("\nOptions, with the commands")));
+  std::vector<std::string> forms;
+  for (std::size_t at = usage.find(" " + name + " "); at != std::string::npos;) {
+    const std::size_t next = usage.find(" " + name + " ", at + 1);
+    forms.push_back(usage.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1));
+    at = next;
+  }
+  return forms;
+}
+
+// Every option a command takes is in one of its usage forms (the window's forms start with
+// "[LESSON]" or "--setup", the others with the command's name).
+TEST(OptionsTable, TheUsageFormsNameEveryOptionOfTheirCommand) {
+  const std::vector<std::string> forms = usage_forms(usage_text(Program::desktop), "frictionlab");
+  ASSERT_GE(forms.size(), 14u);
+  for (const Option& option : options_table()) {
+    for (const Command command : {Command::window, Command::list, Command::run, Command::check, Command::render,
+                                  Command::link, Command::bench}) {
+      if (!includes(option.commands, command)) continue;
+      SCOPED_TRACE(std::string(option.name) + " for " + std::string(command_name(command)));
+      const std::string written = std::string(option.name) + (option.value.empty() ? "" : " " + std::string(option.value));
+      const bool in_a_form = std::any_of(forms.begin(), forms.end(), [&](const std::string& form) {
+        const std::string first = form.substr(12, form.find(' ', 12) - 12);  // after "frictionlab "
+        const bool its = command == Command::window ? first == "[LESSON]" || first == "--setup"
+                                                    : first == command_name(command);
+        for (std::size_t at = form.find(written); its && at != std::string::npos; at = form.find(written, at + 1)) {
+          const std::size_t end = at + written.size();
+          const bool starts = form[at - 1] == ' ' || form[at - 1] == '[';
+          if (starts && (end == form.size() || form[end] == ' ' || form[end] == ']')) return true;
+        }
+        return false;
+      });
+      EXPECT_TRUE(in_a_form);
+    }
+  }
+}
+
+// The forms the usage had before the table (734510b's app/main.cpp), where a command is given
+// in two ways or an option goes only with another: --setup stands apart from a lesson and what
+// a setup holds; --at goes with --screenshot; render takes --at or --moment; bench makes its
+// figures or a recommendation.
+TEST(OptionsTable, TheUsageKeepsTheFormsItHad) {
+  const std::vector<std::string> forms = usage_forms(usage_text(Program::desktop), "frictionlab");
+  for (const char* form :
+       {"frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] "
+        "[--theme light|dark] [--projector] [--at S --screenshot FILE.png] [--mystery MATERIAL/MATERIAL --seed N] the "
+        "classroom window",
+        "frictionlab --setup FILE [--theme light|dark] [--projector] [--at S --screenshot FILE.png] the window on a "
+        "prepared setup",
+        "frictionlab list [--tsv] the built-in lessons",
+        "frictionlab run LESSON [--duration S] [--hz N] [--substeps N] [--friction T] [--set NAME=VALUE ...] "
+        "[--csv FILE] [--mystery MATERIAL/MATERIAL --seed N] run a lesson",
+        "frictionlab check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] "
+        "[--random N [--seed S]] run lessons",
+        "frictionlab render LESSON --at S[,S...] [--size WxH] [--theme light|dark] [--set NAME=VALUE ...] [--hz N] "
+        "[--substeps N] [--friction T] [--mystery MATERIAL/MATERIAL --seed N] --out PATH draw the lesson at each time",
+        "frictionlab render LESSON --moment NAME [--size WxH] --out PATH draw one of the lesson's moments",
+        "frictionlab link FILE.setup [--page ADDRESS] a setup file as a link",
+        "frictionlab bench [--quick] --out DIR speed and accuracy figures",
+        "frictionlab bench --recommend LESSON --tol X [--set NAME=VALUE ...] the cheapest step setting"}) {
+    const bool found = std::any_of(forms.begin(), forms.end(), [&](const std::string& line) { return line.rfind(form, 0) == 0; });
+    EXPECT_TRUE(found) << form;
+  }
+}
+
 TEST(OptionsTable, NodesHelpHasOnlyNodesCommands) {
   const std::string help = usage_text(Program::node);
   EXPECT_EQ(help.rfind("usage: node frictionlab-cli.js list [--tsv]", 0), 0u) << help;
