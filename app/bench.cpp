@@ -277,13 +277,17 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
       const std::string& pair = args[++i];
       const std::size_t equals = pair.find('=');
       if (equals == std::string::npos || equals == 0) throw InvalidInput("bench --set: expected NAME=VALUE, got '" + pair + "'");
-      overrides[pair.substr(0, equals)] = pair.substr(equals + 1);
+      try {
+        add_override(pair, overrides);  // one parameter given two values is refused, as run refuses it
+      } catch (const InvalidInput& error) {
+        throw InvalidInput(std::string("bench: ") + error.what());
+      }
     } else if (args[i] == "--tol" && i + 1 < args.size()) {
       if (!tolerance.empty()) throw InvalidInput("bench: --tol given twice; give one tolerance");
       tolerance = args[++i];
     } else {
       throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
-                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE]");
+                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE ...]");
     }
   }
   if (!overrides.empty() && recommend.empty()) throw InvalidInput("bench: --set goes with --recommend LESSON");
