@@ -82,8 +82,9 @@ const Option table[] = {
      .example = "3"},
     {.name = "--seed", .commands = check, .value = "S", .kind = ValueKind::whole_number,
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
-     .help = "with --random: the seed of the draws, a whole number {range} (default 1); the same seed draws the same "
-             "settings on every machine",
+     .help = "with --random: the seed of the draws, a whole number {range} (default {default}); the same seed draws "
+             "the same settings on every machine",
+     .default_value = static_cast<double>(default_random_seed),
      .example = "4"},
     {.name = "--mystery", .commands = window | run | render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
      .help = "hides a friction pair's mu_s and mu_k, drawn from the seed, until the teacher reveals them",
@@ -372,6 +373,8 @@ std::string Option::words(std::string_view text) const {
   std::string line(text);
   const std::size_t at = line.find("{range}");
   if (at != std::string::npos) line.replace(at, 7, range_words());
+  const std::size_t default_at = line.find("{default}");
+  if (default_at != std::string::npos) line.replace(default_at, 9, number_words(default_value));
   const std::size_t held_at = line.find("{held}");
   if (held_at != std::string::npos) {
     std::vector<std::string> held;

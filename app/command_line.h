@@ -5,6 +5,7 @@
 // range in one place.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <string>
@@ -12,6 +13,9 @@
 #include <vector>
 
 namespace frictionlab {
+
+// check --random's seed when --seed is not given; the help and the manual page say it from here.
+constexpr std::uint64_t default_random_seed = 1;
 
 // The commands that take options, one bit each, so that an option names all of its commands
 // in one word: Command::run | Command::check.
@@ -64,7 +68,8 @@ struct Option {
   ValueKind kind = ValueKind::none;
   Range range{};                 // for the numbers
   Range height_range{};          // --size's height
-  std::string_view help{};       // one line; {range} stands for the range in words
+  std::string_view help{};       // one line; {range} stands for the range in words, {default} for default_value
+  double default_value = 0;      // where the help says it with {default}: the value taken when none is given
   std::string_view manual{};     // the manual page's paragraph, where it says more than the help
   std::string_view example{};    // a value every command that takes it accepts, for the tests
   Beside beside = Beside::apart;
@@ -81,8 +86,8 @@ struct Option {
   std::string range_words() const;
   // The help line with {range} written out.
   std::string help_line() const;
-  // `text` (the help or the manual's paragraph) with {range} and {held} (the options a setup
-  // holds) written out.
+  // `text` (the help or the manual's paragraph) with {range}, {default} and {held} (the options a
+  // setup holds) written out.
   std::string words(std::string_view text) const;
 };
 

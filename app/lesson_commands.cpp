@@ -117,8 +117,7 @@ void print_heading(const Lesson& lesson, std::ostream& out, const std::set<std::
 }
 
 // check --random: settings drawn inside the lesson's own sliders' ranges, as many as the options
-// table allows, from this seed unless --seed gives one.
-constexpr std::uint64_t default_random_seed = 1;  // help and the man page say so
+// table allows, from default_random_seed (app/command_line.h) unless --seed gives one.
 
 // SplitMix64, written out so that a seed draws the same settings with every compiler and
 // standard library (std::uniform_real_distribution's algorithm is not specified).
@@ -295,7 +294,9 @@ CheckOptions parse_check(const std::vector<std::string>& args) {
       add_override(value, options.overrides);
     } else if (option.name == "--random") {
       const std::string allowed = "a whole number of settings " + option.range_words();
-      const bool digits = !value.empty() && value.size() <= 6 &&
+      // No more digits than the table's largest count has, so that std::stoi cannot overflow.
+      const std::size_t most_digits = std::to_string(static_cast<long long>(option.range.high)).size();
+      const bool digits = !value.empty() && value.size() <= most_digits &&
                           std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
       if (!digits || std::stoi(value) < option.range.low || std::stoi(value) > option.range.high) {
         throw InvalidInput("check: --random " + value + ": give " + allowed);

@@ -165,6 +165,28 @@ TEST(OptionsTable, EachCommandsParserReadsEveryOptionTheTableGivesIt) {
   EXPECT_THROW(parse_window_arguments({"incline", "--random", "3"}), InvalidInput);
 }
 
+// check --random's count keeps to the table's range, whatever its number of digits; its seed's
+// default is said in the help from the constant check uses.
+TEST(OptionsTable, ChecksRandomKeepsToTheTable) {
+  const Option& random = option_for(Command::check, "--random");
+  const auto whole = [](double value) { return std::to_string(static_cast<long long>(value)); };
+  EXPECT_NO_THROW(parse_check_arguments({"incline", "--random", whole(random.range.high)}));
+  EXPECT_NO_THROW(parse_check_arguments({"incline", "--random", whole(random.range.low)}));
+  for (const std::string& refused : {whole(random.range.high + 1), whole(random.range.high * 10), whole(random.range.low - 1),
+                                     std::string("99999999999999999999"), std::string("2.5"), std::string("")}) {
+    SCOPED_TRACE(refused);
+    try {
+      parse_check_arguments({"incline", "--random", refused});
+      ADD_FAILURE() << "taken";
+    } catch (const InvalidInput& error) {
+      EXPECT_EQ(std::string(error.what()), "check: --random " + refused + ": give a whole number of settings " +
+                                               random.range_words());
+    }
+  }
+  EXPECT_NE(option_for(Command::check, "--seed").help_line().find("(default " + std::to_string(default_random_seed) + ")"),
+            std::string::npos);
+}
+
 // The messages as they were before the table (copied from 734510b's app/lesson_commands.cpp,
 // app/render_command.cpp and app/window_command.cpp), which tests/CMakeLists.txt's command-line
 // tests and people's scripts know: the options each command lists, in its own order.
