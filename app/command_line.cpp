@@ -15,62 +15,65 @@
 namespace frictionlab {
 namespace {
 
-constexpr Command window = Command::window, list = Command::list, run = Command::run, check = Command::check,
-                  render = Command::render, link = Command::link, bench = Command::bench;
+// The commands as the tables below name them: "for_run | for_check" (not "link", which would
+// hide POSIX's link(), nor "run" and "check", which read as verbs).
+constexpr Command for_window = Command::window, for_list = Command::list, for_run = Command::run,
+                  for_check = Command::check, for_render = Command::render, for_link = Command::link,
+                  for_bench = Command::bench;
 
 // The one list of options. Where two commands read one name differently (--at is one time for
 // the window, several for render; --seed is a mystery's seed or --random's), each reading has
 // its row. The order is the order of the help and of the unknown-option messages: the
 // lessons' values and step settings first, which most commands share.
 const Option table[] = {
-    {.name = "--lock", .commands = window, .value = "NAME[,NAME...]", .kind = ValueKind::text,
+    {.name = "--lock", .commands = for_window, .value = "NAME[,NAME...]", .kind = ValueKind::text,
      .help = "shows only the named controls (parameters, or friction, hz, substeps) and keeps the class on this lesson",
      .example = "mu_s,mu_k", .held_by_setup = true},
-    {.name = "--set", .commands = window | run | check | render | bench, .value = "NAME=VALUE", .kind = ValueKind::text,
+    {.name = "--set", .commands = for_window | for_run | for_check | for_render | for_bench, .value = "NAME=VALUE", .kind = ValueKind::text,
      .help = "sets a lesson parameter, as in --set mu_s=0.5; may be given several times; a value out of the "
              "parameter's range is refused with the range",
      .example = "mu_s=0.5", .repeatable = true, .held_by_setup = true},
-    {.name = "--hz", .commands = window | run | check | render, .value = "N", .kind = ValueKind::number,
+    {.name = "--hz", .commands = for_window | for_run | for_check | for_render, .value = "N", .kind = ValueKind::number,
      .range = {1.0, 100000.0, false, " steps per second"}, .help = "steps per simulated second, {range} (default 240)",
      .example = "480", .held_by_setup = true},
-    {.name = "--substeps", .commands = window | run | check | render, .value = "N", .kind = ValueKind::whole_number,
+    {.name = "--substeps", .commands = for_window | for_run | for_check | for_render, .value = "N", .kind = ValueKind::whole_number,
      .range = {1.0, 1000.0, false, ""}, .help = "physics steps inside each step, a whole number {range} (default 1)",
      .example = "2", .held_by_setup = true},
-    {.name = "--friction", .commands = window | run | check | render, .value = "T", .kind = ValueKind::text,
+    {.name = "--friction", .commands = for_window | for_run | for_check | for_render, .value = "T", .kind = ValueKind::text,
      .help = "the friction treatment: stick-slip (the default, converges to Coulomb), threshold, regularized or box2d",
      .manual = "the friction treatment: stick-slip (converges to Coulomb), threshold (the games' speed switch), "
                "regularized (smooth, creeps) or box2d (Box2D's own single coefficient); stick-slip when not given",
      .example = "threshold", .held_by_setup = true},
-    {.name = "--theme", .commands = window | render, .value = "light|dark", .kind = ValueKind::text,
+    {.name = "--theme", .commands = for_window | for_render, .value = "light|dark", .kind = ValueKind::text,
      .help = "the colour theme", .example = "dark"},
-    {.name = "--projector", .commands = window, .kind = ValueKind::none,
+    {.name = "--projector", .commands = for_window, .kind = ValueKind::none,
      .help = "fills the screen with larger text and thicker lines, for the back of a classroom"},
-    {.name = "--at", .commands = window, .value = "S", .kind = ValueKind::number, .range = {0.0, 3600.0, false, " s"},
+    {.name = "--at", .commands = for_window, .value = "S", .kind = ValueKind::number, .range = {0.0, 3600.0, false, " s"},
      .help = "with --screenshot: the time in seconds, {range}, at which the window is saved", .example = "0.5"},
-    {.name = "--screenshot", .commands = window, .value = "FILE.png", .kind = ValueKind::text,
+    {.name = "--screenshot", .commands = for_window, .value = "FILE.png", .kind = ValueKind::text,
      .help = "saves the window as a PNG file at the time --at gives, then closes it", .example = "window.png"},
-    {.name = "--duration", .commands = run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
+    {.name = "--duration", .commands = for_run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
      .help = "how long to run, in seconds, {range} (the lesson's own duration when not given)", .example = "1.5"},
-    {.name = "--csv", .commands = run, .value = "FILE", .kind = ValueKind::text,
+    {.name = "--csv", .commands = for_run, .value = "FILE", .kind = ValueKind::text,
      .help = "also writes the run's history, one row per step, to FILE (- for the standard output)",
      .manual = "also writes the run's history, one row per step, to FILE (a .csv file, or - for the standard output; "
                "a .lua file is refused so that no script is overwritten)",
      .example = "run.csv"},
-    {.name = "--at", .commands = render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
+    {.name = "--at", .commands = for_render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
      .help = "the times to draw, in seconds, each {range}, at most 100 of them", .example = "0.5,2",
      .twice_hint = " (several times go in one --at, as in --at 1,2)"},
-    {.name = "--moment", .commands = render, .value = "NAME", .kind = ValueKind::text,
+    {.name = "--moment", .commands = for_render, .value = "NAME", .kind = ValueKind::text,
      .help = "instead of --at: one of the lesson's teaching moments (see list), with its time, values and theme",
      .example = "above_critical_angle"},
-    {.name = "--size", .commands = render, .value = "WxH", .kind = ValueKind::size, .range = {320.0, 7680.0, false, " pixels"},
+    {.name = "--size", .commands = for_render, .value = "WxH", .kind = ValueKind::size, .range = {320.0, 7680.0, false, " pixels"},
      .height_range = {240.0, 4320.0, false, " pixels"},
      .help = "the picture's size in pixels, {range}, landscape from 4:3 to 2.4:1 (default 1280x720)", .example = "1920x1080"},
-    {.name = "--out", .commands = render, .value = "PATH", .kind = ValueKind::text,
+    {.name = "--out", .commands = for_render, .value = "PATH", .kind = ValueKind::text,
      .help = "a .png file for one picture, or a folder for several (LESSON_tS.png, or LESSON_MOMENT.png)",
      .manual = "a .png file for one picture, or a folder (made if missing, inside one that exists) for several: each "
                "file there is named LESSON_tTIME.png, or LESSON_MOMENT.png with --moment",
      .example = "picture.png"},
-    {.name = "--random", .commands = check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
+    {.name = "--random", .commands = for_check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
      .help = "checks each lesson at N settings, {range}, drawn inside its sliders' ranges, ends included, and prints "
              "each failing one as the command line that reproduces it",
      .manual = "checks each lesson at N settings (a whole number {range}) drawn inside its own sliders' ranges: the "
@@ -80,25 +83,25 @@ const Option table[] = {
                "line that reproduces it (frictionlab check LESSON --set NAME=VALUE ...), with the rows it missed; the "
                "exit status is 1 if any does",
      .example = "3"},
-    {.name = "--seed", .commands = check, .value = "S", .kind = ValueKind::whole_number,
+    {.name = "--seed", .commands = for_check, .value = "S", .kind = ValueKind::whole_number,
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
      .help = "with --random: the seed of the draws, a whole number {range} (default {default}); the same seed draws "
              "the same settings on every machine",
      .default_value = static_cast<double>(default_random_seed),
      .example = "4"},
-    {.name = "--mystery", .commands = window | run | render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
+    {.name = "--mystery", .commands = for_window | for_run | for_render, .value = "MATERIAL/MATERIAL", .kind = ValueKind::text,
      .help = "hides a friction pair's mu_s and mu_k, drawn from the seed, until the teacher reveals them",
      .manual = "makes a friction pair of the lesson (one whose μs and μk are sliders, named either way round) a "
                "mystery: both drawn from the seed, μs from 0.20 to 0.90 and μk from 50 % to 90 % of μs, in "
                "hundredths, and hidden (sliders, values, the theory's predictions and curves, CSV, title) until the "
                "teacher reveals them; needs --seed",
      .example = "aluminium/wood", .held_by_setup = true},
-    {.name = "--seed", .commands = window | run | render, .value = "N", .kind = ValueKind::whole_number,
+    {.name = "--seed", .commands = for_window | for_run | for_render, .value = "N", .kind = ValueKind::whole_number,
      .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
      .help = "the mystery's seed, a whole number {range}: the same seed draws the same values on every machine",
      .example = "42",
      .beside = Beside::together, .held_by_setup = true},
-    {.name = "--setup", .commands = window, .value = "FILE", .kind = ValueKind::text,
+    {.name = "--setup", .commands = for_window, .value = "FILE", .kind = ValueKind::text,
      .help = "the window on a prepared setup (Lesson > Save as a setup), which holds the lesson, its values, the lock, "
              "the mystery and the step settings: not with a lesson or the options for those",
      .manual = "opens a prepared setup, saved from the window's Lesson menu (Save as a setup): a small text file with "
@@ -108,20 +111,20 @@ const Option table[] = {
                "revealed), one a line. A line it cannot use is named as FILE:LINE and nothing opens. Not with a "
                "lesson, {held}, which the file holds; a link to the web page (see link) opens as its setup does",
      .example = "class.setup"},
-    {.name = "--tsv", .commands = list, .kind = ValueKind::none,
+    {.name = "--tsv", .commands = for_list, .kind = ValueKind::none,
      .help = "for scripts: one lesson a line, its name, title, README moment and moments, tab-separated"},
-    {.name = "--page", .commands = link, .value = "ADDRESS", .kind = ValueKind::text,
+    {.name = "--page", .commands = for_link, .value = "ADDRESS", .kind = ValueKind::text,
      .help = "the web page's address, for a whole link (without it, the part to put after the address)",
      .example = "https://school.example/frictionlab/"},
-    {.name = "--quick", .commands = bench, .kind = ValueKind::none,
+    {.name = "--quick", .commands = for_bench, .kind = ValueKind::none,
      .help = "fewer sizes and repeats: a rough run in seconds instead of minutes"},
-    {.name = "--out", .commands = bench, .value = "DIR", .kind = ValueKind::text,
+    {.name = "--out", .commands = for_bench, .value = "DIR", .kind = ValueKind::text,
      .help = "the folder for the CSV files and charts (required without --recommend)", .example = "figures"},
-    {.name = "--recommend", .commands = bench, .value = "LESSON", .kind = ValueKind::text,
+    {.name = "--recommend", .commands = for_bench, .value = "LESSON", .kind = ValueKind::text,
      .help = "prints the cheapest step setting whose run of the lesson meets its table within --tol times the rows' "
              "tolerances at 240 Hz, measured now; exit 1 if none does",
      .example = "incline"},
-    {.name = "--tol", .commands = bench, .value = "X", .kind = ValueKind::number,
+    {.name = "--tol", .commands = for_bench, .value = "X", .kind = ValueKind::number,
      .range = {0.0, 1e6, true, " × the lesson's tolerances"},
      .help = "with --recommend: the factor on the tolerances, {range} (1: the table passes; 0.1: ten times tighter)",
      .example = "1"},
@@ -138,10 +141,10 @@ struct Refusals {
   const char* give_it_once;   // after "given twice"
 };
 const Refusals refusals[] = {
-    {window, "", "the window's options", " (commands: list, run, check, render, demo, bench, help)", ""},
-    {run, "run: ", "options", "", "; give it once"},
-    {check, "check: ", "options", "", "; give it once"},
-    {render, "render: ", "options", "", "; give it once"},
+    {for_window, "", "the window's options", " (commands: list, run, check, render, demo, bench, help)", ""},
+    {for_run, "run: ", "options", "", "; give it once"},
+    {for_check, "check: ", "options", "", "; give it once"},
+    {for_render, "render: ", "options", "", "; give it once"},
 };
 
 // The order each command lists its options in when it refuses one it does not take: as each
@@ -153,10 +156,10 @@ struct Listing {
   std::string_view names;  // separated by spaces
 };
 const Listing listings[] = {
-    {window, "--lock --set --hz --substeps --friction --theme --projector --at --screenshot --mystery --seed --setup"},
-    {run, "--duration --hz --substeps --friction --set --csv --mystery --seed"},
-    {check, "--set --hz --substeps --friction --random --seed"},
-    {render, "--at --moment --size --theme --set --out --hz --substeps --friction --mystery --seed"},
+    {for_window, "--lock --set --hz --substeps --friction --theme --projector --at --screenshot --mystery --seed --setup"},
+    {for_run, "--duration --hz --substeps --friction --set --csv --mystery --seed"},
+    {for_check, "--set --hz --substeps --friction --random --seed"},
+    {for_render, "--at --moment --size --theme --set --out --hz --substeps --friction --mystery --seed"},
 };
 
 const Refusals& refusals_of(Command command) {
@@ -234,32 +237,32 @@ struct Usage {
 };
 constexpr Command no_options{};
 const Usage usages[] = {
-    {window,
+    {for_window,
      "[LESSON] [--lock] [--set ...] [--hz] [--substeps] [--friction] [--theme] [--projector] [--at --screenshot] "
      "[--mystery --seed]",
      "the classroom window on a lesson (the first one if none is named; a name from list, or a .lua file); "
      "without a display it draws the lesson to a PNG instead",
      false},
-    {window, "--setup [--theme] [--projector] [--at --screenshot]",
+    {for_window, "--setup [--theme] [--projector] [--at --screenshot]",
      "the window on a prepared setup (Lesson > Save as a setup): its lesson, values, lock, mystery and step settings",
      false},
-    {list, "list [--tsv]", "the built-in lessons with their titles and moments", true},
-    {run, "run LESSON [--duration] [--hz] [--substeps] [--friction] [--set ...] [--csv] [--mystery --seed]",
+    {for_list, "list [--tsv]", "the built-in lessons with their titles and moments", true},
+    {for_run, "run LESSON [--duration] [--hz] [--substeps] [--friction] [--set ...] [--csv] [--mystery --seed]",
      "run a lesson without a window and print its table of theory against simulation", true},
-    {check, "check [LESSON ...] [--set ...] [--hz] [--substeps] [--friction] [--random [--seed]]",
+    {for_check, "check [LESSON ...] [--set ...] [--hz] [--substeps] [--friction] [--random [--seed]]",
      "run lessons (every built-in one if none is named) and check their expectations; exit 1 if any fails", true},
-    {render, "render LESSON --at [--size] [--theme] [--set ...] [--hz] [--substeps] [--friction] [--mystery --seed] --out",
+    {for_render, "render LESSON --at [--size] [--theme] [--set ...] [--hz] [--substeps] [--friction] [--mystery --seed] --out",
      "draw the lesson at each time to PNG files, with no display", false},
-    {render, "render LESSON --moment [--size] --out", "draw one of the lesson's moments (its time, values and theme)",
+    {for_render, "render LESSON --moment [--size] --out", "draw one of the lesson's moments (its time, values and theme)",
      false},
     {no_options, "demo", "theory beside simulation for every situation", true},
-    {link, "link FILE.setup [--page]", "a setup file as a link to the web page (ADDRESS#setup=...)", true},
+    {for_link, "link FILE.setup [--page]", "a setup file as a link to the web page (ADDRESS#setup=...)", true},
     {no_options, "link LINK | -",
      "the setup file a link holds, printed (- reads the link from the standard input); a lesson the link carries "
      "is kept among your lessons, and the setup names it",
      true},
-    {bench, "bench [--quick] --out", "speed and accuracy figures, CSV files and charts", false},
-    {bench, "bench --recommend --tol [--set ...]",
+    {for_bench, "bench [--quick] --out", "speed and accuracy figures, CSV files and charts", false},
+    {for_bench, "bench --recommend --tol [--set ...]",
      "the cheapest step setting whose run of the lesson meets its table within X times the rows' tolerances at "
      "240 Hz (exit 1 if none does)",
      false},
@@ -304,7 +307,8 @@ std::string sentence_list(const std::vector<std::string>& names, const char* las
   return text;
 }
 
-constexpr Command manual_order[] = {window, list, run, check, render, link, bench};
+constexpr Command manual_order[] = {Command::window, Command::list,   Command::run,  Command::check,
+                                    Command::render, Command::link, Command::bench};
 
 // Plain words as roff: an option's name in bold with its hyphens as \-, μ as \(*m, a backslash
 // as \e, and a line that would start with a control character kept as text.
@@ -331,9 +335,9 @@ std::string roff(std::string_view text) {
 
 std::string commands_of(const Option& option, bool node) {
   std::string names;
-  for (const Command command : {window, list, run, check, render, link, bench}) {
+  for (const Command command : manual_order) {
     if (!includes(option.commands, command)) continue;
-    if (node && (command == window || command == render || command == bench)) continue;
+    if (node && (command == Command::window || command == Command::render || command == Command::bench)) continue;
     names += (names.empty() ? "" : ", ") + std::string(command_name(command));
   }
   return names;
@@ -369,7 +373,7 @@ std::string Option::range_words() const {
   return range_of(range);
 }
 
-std::string Option::words(std::string_view text) const {
+std::string Option::filled_in(std::string_view text) const {
   std::string line(text);
   const std::size_t at = line.find("{range}");
   if (at != std::string::npos) line.replace(at, 7, range_words());
@@ -386,7 +390,7 @@ std::string Option::words(std::string_view text) const {
   return line;
 }
 
-std::string Option::help_line() const { return words(help); }
+std::string Option::help_line() const { return filled_in(help); }
 
 std::span<const Option> options_table() { return table; }
 
@@ -463,7 +467,7 @@ std::string usage_text(Program program) {
     first = false;
     // Continued lines start under the command's first word after its name.
     const std::vector<std::string> parts = form_parts(usage);
-    const bool named = usage.command != window && usage.command != no_options;
+    const bool named = usage.command != Command::window && usage.command != no_options;
     const std::size_t indent = line.size() + 1 + (named ? parts.front().size() + 1 : 0);
     line += wrapped(parts, line.size(), indent, width, true);
     const std::size_t last_line = line.size() - std::min(line.size(), line.rfind('\n') + 1);
@@ -514,7 +518,7 @@ std::string manual_options() {
       std::string name;
       for (const char c : option.name) name += c == '-' ? std::string("\\-") : std::string(1, c);
       const std::string tag = option.value.empty() ? ".B " + name : ".BI " + name + " \" " + std::string(option.value) + "\"";
-      std::string paragraph = option.words(option.manual.empty() ? option.help : option.manual);
+      std::string paragraph = option.filled_in(option.manual.empty() ? option.help : option.manual);
       paragraph[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(paragraph[0])));
       if (paragraph.back() != '.') paragraph += '.';
       std::vector<std::string> others;
@@ -524,7 +528,7 @@ std::string manual_options() {
       if (!others.empty()) paragraph += " Also taken by " + sentence_list(others) + ".";
       entries += ".TP\n" + tag + "\n" + roff(paragraph) + "\n";
     }
-    if (!entries.empty()) text += ".SS " + std::string(section == window ? "The window" : command_name(section)) + "\n" + entries;
+    if (!entries.empty()) text += ".SS " + std::string(section == Command::window ? "The window" : command_name(section)) + "\n" + entries;
   }
   return text;
 }

@@ -84,11 +84,11 @@ struct Option {
   int whole_number(const std::string& text) const;
   // "from 1 to 100000", "above 0, at most 86400": the range as the help writes it.
   std::string range_words() const;
-  // The help line with {range} written out.
+  // The help line, filled_in().
   std::string help_line() const;
   // `text` (the help or the manual's paragraph) with {range}, {default} and {held} (the options a
   // setup holds) written out.
-  std::string words(std::string_view text) const;
+  std::string filled_in(std::string_view text) const;
 };
 
 // Every option, in the order the help and the unknown-option messages list them.
