@@ -443,6 +443,16 @@ void read_options(Command command, const std::vector<std::string>& args,
       continue;
     }
     if (i + 1 >= args.size()) throw InvalidInput(words.prefix + arg + " needs a value; see frictionlab help");
+    // The next word is the value, unless it is one of this command's options: then the value was
+    // left out (run --csv --set a=1 would write a file named --set). A value that only starts
+    // with a hyphen, -1 or -, is a value.
+    const std::string& value = args[i + 1];
+    const bool an_option = std::any_of(std::begin(table), std::end(table), [&](const Option& option) {
+      return option.name == value && includes(option.commands, command);
+    });
+    if (an_option) {
+      throw InvalidInput(words.prefix + arg + " needs a value (" + std::string(known->value) + "); got the option " + value);
+    }
     // Given twice, which one was meant is not for the program to guess; --set is repeatable,
     // one parameter each time, and says itself when one parameter is given two values.
     if (!known->repeatable) {
@@ -451,7 +461,8 @@ void read_options(Command command, const std::vector<std::string>& args,
       }
       seen.push_back(known->name);
     }
-    take(*known, args[++i]);
+    take(*known, value);
+    ++i;
   }
 }
 

@@ -187,6 +187,34 @@ TEST(OptionsTable, ChecksRandomKeepsToTheTable) {
             std::string::npos);
 }
 
+// A value left out is not taken from the next option: run --csv --set would write a file named
+// --set. A value that only starts with a hyphen is a value.
+TEST(OptionsTable, AnOptionIsNotTakenAsTheValueBeforeIt) {
+  EXPECT_EQ(read(Command::run, {"push", "--duration", "0.01", "--csv", "--set"}).refusal,
+            "run: --csv needs a value (FILE); got the option --set");
+  EXPECT_EQ(read(Command::window, {"--lock", "--projector"}).refusal, "--lock needs a value (NAME[,NAME...]); got the option --projector");
+  EXPECT_EQ(read(Command::render, {"incline", "--out", "--at", "1"}).refusal, "render: --out needs a value (PATH); got the option --at");
+  for (const Option& option : options_table()) {
+    for (const Command command : parsed) {
+      if (!includes(option.commands, command) || option.kind == ValueKind::none) continue;
+      SCOPED_TRACE(std::string(option.name) + " for " + std::string(command_name(command)));
+      // --hz, which every command here takes, where the value should be (for --hz too).
+      const std::string refusal = read(command, {"incline", std::string(option.name), "--hz", "240"}).refusal;
+      const std::string prefix = command == Command::window ? "" : std::string(command_name(command)) + ": ";
+      EXPECT_EQ(refusal, prefix + std::string(option.name) + " needs a value (" + std::string(option.value) + "); got the option --hz");
+    }
+  }
+  // Negative numbers, - and another command's option are values, for the command to judge.
+  Reading at = read(Command::window, {"--at", "-1"});
+  EXPECT_EQ(at.refusal, "");
+  EXPECT_EQ(at.value, "-1");
+  Reading set = read(Command::run, {"push", "--set", "a_x=-3"});
+  EXPECT_EQ(set.refusal, "");
+  EXPECT_EQ(set.value, "a_x=-3");
+  EXPECT_EQ(read(Command::run, {"push", "--csv", "-"}).value, "-");
+  EXPECT_EQ(read(Command::run, {"push", "--csv", "--lock"}).value, "--lock");
+}
+
 // The messages as they were before the table (copied from 734510b's app/lesson_commands.cpp,
 // app/render_command.cpp and app/window_command.cpp), which tests/CMakeLists.txt's command-line
 // tests and people's scripts know: the options each command lists, in its own order.
