@@ -23,14 +23,16 @@ constexpr Command for_window = Command::window, for_list = Command::list, for_ru
 
 // The one list of options. Where two commands read one name differently (--at is one time for
 // the window, several for render; --seed is a mystery's seed or --random's), each reading has
-// its row. The order is the order of the help and of the unknown-option messages: the
-// lessons' values and step settings first, which most commands share.
+// its row. The order is the help's: the lessons' values and step settings first, which most
+// commands share (each command's unknown-option message has its own order, below). In the help
+// and the manual's paragraphs, `backquotes` mark words typed as they stand (stick-slip, a
+// setup's lines): bold in the manual page, the quotes left out in the help.
 const Option table[] = {
     {.name = "--lock", .commands = for_window, .value = "NAME[,NAME...]", .kind = ValueKind::text,
-     .help = "shows only the named controls (parameters, or friction, hz, substeps) and keeps the class on this lesson",
+     .help = "shows only the named controls (parameters, or `friction`, `hz`, `substeps`) and keeps the class on this lesson",
      .example = "mu_s,mu_k", .held_by_setup = true},
     {.name = "--set", .commands = for_window | for_run | for_check | for_render | for_bench, .value = "NAME=VALUE", .kind = ValueKind::text,
-     .help = "sets a lesson parameter, as in --set mu_s=0.5; may be given several times; a value out of the "
+     .help = "sets a lesson parameter, as in `--set mu_s=0.5`; may be given several times; a value out of the "
              "parameter's range is refused with the range",
      .example = "mu_s=0.5", .repeatable = true, .held_by_setup = true},
     {.name = "--hz", .commands = for_window | for_run | for_check | for_render, .value = "N", .kind = ValueKind::number,
@@ -40,9 +42,11 @@ const Option table[] = {
      .range = {1.0, 1000.0, false, ""}, .help = "physics steps inside each step, a whole number {range} (default 1)",
      .example = "2", .held_by_setup = true},
     {.name = "--friction", .commands = for_window | for_run | for_check | for_render, .value = "T", .kind = ValueKind::text,
-     .help = "the friction treatment: stick-slip (the default, converges to Coulomb), threshold, regularized or box2d",
-     .manual = "the friction treatment: stick-slip (converges to Coulomb), threshold (the games' speed switch), "
-               "regularized (smooth, creeps) or box2d (Box2D's own single coefficient); stick-slip when not given",
+     .help = "the friction treatment: `stick-slip` (the default, converges to Coulomb), `threshold`, `regularized` or "
+             "`box2d`",
+     .manual = "the friction treatment: `stick-slip` (converges to Coulomb), `threshold` (the games' speed switch), "
+               "`regularized` (smooth, creeps) or `box2d` (Box2D's own single coefficient); `stick-slip` when not "
+               "given",
      .example = "threshold", .held_by_setup = true},
     {.name = "--theme", .commands = for_window | for_render, .value = "light|dark", .kind = ValueKind::text,
      .help = "the colour theme", .example = "dark"},
@@ -55,9 +59,9 @@ const Option table[] = {
     {.name = "--duration", .commands = for_run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
      .help = "how long to run, in seconds, {range} (the lesson's own duration when not given)", .example = "1.5"},
     {.name = "--csv", .commands = for_run, .value = "FILE", .kind = ValueKind::text,
-     .help = "also writes the run's history, one row per step, to FILE (- for the standard output)",
-     .manual = "also writes the run's history, one row per step, to FILE (a .csv file, or - for the standard output; "
-               "a .lua file is refused so that no script is overwritten)",
+     .help = "also writes the run's history, one row per step, to FILE (`-` for the standard output)",
+     .manual = "also writes the run's history, one row per step, to FILE (a `.csv` file, or `-` for the standard output; "
+               "a `.lua` file is refused so that no script is overwritten)",
      .example = "run.csv"},
     {.name = "--at", .commands = for_render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
      .help = "the times to draw, in seconds, each {range}, at most 100 of them", .example = "0.5,2",
@@ -69,9 +73,9 @@ const Option table[] = {
      .height_range = {240.0, 4320.0, false, " pixels"},
      .help = "the picture's size in pixels, {range}, landscape from 4:3 to 2.4:1 (default 1280x720)", .example = "1920x1080"},
     {.name = "--out", .commands = for_render, .value = "PATH", .kind = ValueKind::text,
-     .help = "a .png file for one picture, or a folder for several (LESSON_tS.png, or LESSON_MOMENT.png)",
-     .manual = "a .png file for one picture, or a folder (made if missing, inside one that exists) for several: each "
-               "file there is named LESSON_tTIME.png, or LESSON_MOMENT.png with --moment",
+     .help = "a `.png` file for one picture, or a folder for several (LESSON`_t`S`.png`, or LESSON`_`MOMENT`.png`)",
+     .manual = "a `.png` file for one picture, or a folder (made if missing, inside one that exists) for several: each "
+               "file there is named LESSON`_t`TIME`.png`, or LESSON`_`MOMENT`.png` with --moment",
      .example = "picture.png"},
     {.name = "--random", .commands = for_check, .value = "N", .kind = ValueKind::whole_number, .range = {1.0, 100000.0, false, ""},
      .help = "checks each lesson at N settings, {range}, drawn inside its sliders' ranges, ends included, and prints "
@@ -80,7 +84,7 @@ const Option table[] = {
                "first with every slider at its minimum, the second at its maximum, then each slider at one end or the "
                "other two times in five and anywhere between (to four significant figures) otherwise; a value given "
                "with --set is kept in every setting. Each setting that misses an expectation is printed as the command "
-               "line that reproduces it (frictionlab check LESSON --set NAME=VALUE ...), with the rows it missed; the "
+               "line that reproduces it (`frictionlab check` LESSON --set NAME=VALUE ...), with the rows it missed; the "
                "exit status is 1 if any does",
      .example = "3"},
     {.name = "--seed", .commands = for_check, .value = "S", .kind = ValueKind::whole_number,
@@ -105,10 +109,10 @@ const Option table[] = {
      .help = "the window on a prepared setup (Lesson > Save as a setup), which holds the lesson, its values, the lock, "
              "the mystery and the step settings: not with a lesson or the options for those",
      .manual = "opens a prepared setup, saved from the window's Lesson menu (Save as a setup): a small text file with "
-               "the lesson (lesson NAME, or a script's path from the file's folder), its values (set NAME = VALUE), "
-               "the lock (lock NAME, ...), a mystery (mystery MATERIAL/MATERIAL seed N), the step settings (hz, "
-               "substeps, friction) and the class's predictions (predictions on|off, predict ROW = ANSWER, theory "
-               "revealed), one a line. A line it cannot use is named as FILE:LINE and nothing opens. Not with a "
+               "the lesson (`lesson` NAME, or a script's path from the file's folder), its values (`set` NAME = "
+               "VALUE), the lock (`lock` NAME, ...), a mystery (`mystery` MATERIAL/MATERIAL `seed` N), the step "
+               "settings (`hz`, `substeps`, `friction`) and the class's predictions (`predictions on`|`off`, "
+               "`predict` ROW = ANSWER, `theory revealed`), one a line. A line it cannot use is named as FILE:LINE and nothing opens. Not with a "
                "lesson, {held}, which the file holds; a link to the web page (see link) opens as its setup does",
      .example = "class.setup"},
     {.name = "--tsv", .commands = for_list, .kind = ValueKind::none,
@@ -310,17 +314,74 @@ std::string sentence_list(const std::vector<std::string>& names, const char* las
 constexpr Command manual_order[] = {Command::window, Command::list,   Command::run,  Command::check,
                                     Command::render, Command::link, Command::bench};
 
-// Plain words as roff: an option's name in bold with its hyphens as \-, μ as \(*m, a backslash
-// as \e, and a line that would start with a control character kept as text.
+// Whether `word` is one a value is written with in the table (NAME, FILE, N, ...) or one of the
+// few more the manual's paragraphs use: a word to replace, in italics in the manual page.
+bool placeholder(std::string_view word) {
+  static const std::vector<std::string> words = [] {
+    std::vector<std::string> found{"LESSON", "LINE", "ROW", "ANSWER", "TIME", "MOMENT"};
+    for (const Option& option : table) {
+      const std::string_view value = option.value;
+      for (std::size_t i = 0; i < value.size();) {
+        std::size_t end = i;
+        while (end < value.size() && std::isupper(static_cast<unsigned char>(value[end]))) ++end;
+        if (end > i) found.emplace_back(value.substr(i, end - i));
+        i = std::max(end, i + 1);
+      }
+    }
+    return found;
+  }();
+  return std::find(words.begin(), words.end(), word) != words.end();
+}
+
+// A value as the manual's tags write it: the words to replace in italics (NAME, FILE), the words
+// typed as they stand in bold (light, png), the signs between in roman: "S[,S...]", "FILE.png".
+std::string roff_value(std::string_view value) {
+  std::string out;
+  for (std::size_t i = 0; i < value.size();) {
+    const auto upper = [&](std::size_t at) { return std::isupper(static_cast<unsigned char>(value[at])) != 0; };
+    const auto lower = [&](std::size_t at) {
+      return std::islower(static_cast<unsigned char>(value[at])) != 0 || std::isdigit(static_cast<unsigned char>(value[at])) != 0;
+    };
+    std::size_t end = i;
+    if (upper(i) || lower(i)) {
+      const bool italic = upper(i);
+      while (end < value.size() && (italic ? upper(end) : lower(end))) ++end;
+      out.append(italic ? "\\fI" : "\\fB").append(value.substr(i, end - i)).append("\\fR");
+    } else {
+      out += value[i] == '-' ? std::string("\\-") : std::string(1, value[i]);
+      end = i + 1;
+    }
+    i = end;
+  }
+  return out;
+}
+
+// Plain words as roff: an option's name in bold with its hyphens as \-, a `typed word` in bold
+// with its hyphens as \- (without the quotes), a word to replace (placeholder()) in italics, μ as
+// \(*m, a backslash as \e, and a line that would start with a control character kept as text.
 std::string roff(std::string_view text) {
   std::string out;
   const auto letter = [&](std::size_t i) { return i < text.size() && text[i] >= 'a' && text[i] <= 'z'; };
+  bool typed = false;  // inside `backquotes`
   for (std::size_t i = 0; i < text.size();) {
     const bool word_start = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
-    if (word_start && text.compare(i, 2, "--") == 0 && letter(i + 2)) {
+    std::size_t caps = i;  // the end of the capitals from i
+    while (caps < text.size() && std::isupper(static_cast<unsigned char>(text[caps]))) ++caps;
+    if (text[i] == '`') {
+      out += typed ? "\\fR" : "\\fB";
+      typed = !typed;
+      ++i;
+    } else if (typed) {
+      out += text[i] == '-' ? std::string("\\-") : text[i] == '\\' ? std::string("\\e") : std::string(1, text[i]);
+      ++i;
+    } else if (word_start && text.compare(i, 2, "--") == 0 && letter(i + 2)) {
       out += "\\fB\\-\\-";
       for (i += 2; letter(i) || (i < text.size() && text[i] == '-'); ++i) out += text[i] == '-' ? "\\-" : std::string(1, text[i]);
       out += "\\fR";
+    } else if (word_start && caps > i && (caps == text.size() || !std::isalnum(static_cast<unsigned char>(text[caps]))) &&
+               placeholder(text.substr(i, caps - i))) {
+      out.append("\\fI").append(text.substr(i, caps - i)).append("\\fR");
+      i = caps;
     } else if (text.compare(i, 2, "\xCE\xBC") == 0) {  // μ in UTF-8
       out += "\\(*m";
       i += 2;
@@ -390,7 +451,11 @@ std::string Option::filled_in(std::string_view text) const {
   return line;
 }
 
-std::string Option::help_line() const { return filled_in(help); }
+std::string Option::help_line() const {
+  std::string line = filled_in(help);
+  std::erase(line, '`');  // the marks of typed words, which the manual page sets in bold
+  return line;
+}
 
 std::span<const Option> options_table() { return table; }
 
@@ -526,15 +591,19 @@ std::string manual_options() {
       const Command* first = std::find_if(std::begin(manual_order), std::end(manual_order),
                                           [&](Command command) { return includes(option.commands, command); });
       if (*first != section) continue;
-      std::string name;
-      for (const char c : option.name) name += c == '-' ? std::string("\\-") : std::string(1, c);
-      const std::string tag = option.value.empty() ? ".B " + name : ".BI " + name + " \" " + std::string(option.value) + "\"";
+      std::string tag = "\\fB";
+      for (const char c : option.name) tag += c == '-' ? std::string("\\-") : std::string(1, c);
+      tag += "\\fR";
+      if (!option.value.empty()) tag.append(1, ' ').append(roff_value(option.value));
       std::string paragraph = option.filled_in(option.manual.empty() ? option.help : option.manual);
       paragraph[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(paragraph[0])));
       if (paragraph.back() != '.') paragraph += '.';
       std::vector<std::string> others;
       for (const Command command : manual_order) {
-        if (command != section && includes(option.commands, command)) others.emplace_back(command_name(command));
+        if (command != section && includes(option.commands, command)) {
+          others.emplace_back(1, '`');
+          others.back().append(command_name(command)).append(1, '`');
+        }
       }
       if (!others.empty()) paragraph += " Also taken by " + sentence_list(others) + ".";
       entries += ".TP\n" + tag + "\n" + roff(paragraph) + "\n";

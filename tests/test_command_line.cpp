@@ -76,6 +76,9 @@ TEST(OptionsTable, EveryRowIsComplete) {
       EXPECT_LT(option.range.low, option.range.high);
     }
     EXPECT_EQ(option.help_line().find('{'), std::string::npos);
+    // `typed words` are closed where they open.
+    EXPECT_EQ(std::count(option.help.begin(), option.help.end(), '`') % 2, 0);
+    EXPECT_EQ(std::count(option.manual.begin(), option.manual.end(), '`') % 2, 0);
   }
 }
 
@@ -419,12 +422,25 @@ TEST(OptionsTable, NodesHelpHasOnlyNodesCommands) {
 
 TEST(ManualPage, OptionsAreRoffFromTheTable) {
   const std::string options = manual_options();
-  EXPECT_EQ(options.rfind(".SS The window\n.TP\n.BI \\-\\-lock \" NAME[,NAME...]\"\n", 0), 0u) << options;
-  EXPECT_NE(options.find("\n.TP\n.B \\-\\-projector\n"), std::string::npos);
-  EXPECT_NE(options.find("\n.TP\n.BI \\-\\-hz \" N\"\nSteps per simulated second, from 1 to 100000 (default 240). "
-                         "Also taken by run, check and render.\n"),
+  // A tag's option in bold, the words of its value to replace in italics, those typed as they
+  // stand in bold, the signs between in roman.
+  EXPECT_EQ(options.rfind(".SS The window\n.TP\n\\fB\\-\\-lock\\fR \\fINAME\\fR[,\\fINAME\\fR...]\n", 0), 0u) << options;
+  EXPECT_NE(options.find("\n.TP\n\\fB\\-\\-projector\\fR\n"), std::string::npos);
+  EXPECT_NE(options.find("\n.TP\n\\fB\\-\\-theme\\fR \\fBlight\\fR|\\fBdark\\fR\n"), std::string::npos);
+  EXPECT_NE(options.find("\n.TP\n\\fB\\-\\-hz\\fR \\fIN\\fR\nSteps per simulated second, from 1 to 100000 (default 240). "
+                         "Also taken by \\fBrun\\fR, \\fBcheck\\fR and \\fBrender\\fR.\n"),
             std::string::npos)
       << options;
+  // Values typed as they stand are bold, with their hyphens as \- (not hyphens, which man may
+  // print as another character); the backquotes that mark them in the table are not printed.
+  EXPECT_NE(options.find("The friction treatment: \\fBstick\\-slip\\fR (converges to Coulomb), \\fBthreshold\\fR"),
+            std::string::npos)
+      << options;
+  EXPECT_EQ(options.find('`'), std::string::npos);
+  EXPECT_NE(options.find("to \\fIFILE\\fR (a \\fB.csv\\fR file, or \\fB\\-\\fR for the standard output"), std::string::npos)
+      << options;
+  EXPECT_NE(one_line(usage_text(Program::desktop)).find("the friction treatment: stick-slip (the default"), std::string::npos);
+  EXPECT_EQ(usage_text(Program::desktop).find('`'), std::string::npos);
   // Options named in a paragraph are bold, μ is roff's.
   EXPECT_NE(options.find("hidden (sliders, values, the theory's predictions and curves, CSV, title) until the teacher "
                          "reveals them; needs \\fB\\-\\-seed\\fR."),
