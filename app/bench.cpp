@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "app/modes.h"
+#include "app/command_line.h"
 #include "app/bench.h"
 #include "app/options.h"
 #include "app/table.h"
@@ -265,6 +266,19 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   std::string directory, recommend, tolerance;
   std::map<std::string, std::string> overrides;
   for (size_t i = 0; i < args.size(); ++i) {
+    // As read_options() refuses it for the other commands: the value left out, not the next
+    // option taken for it (bench --out --quick would make a folder named --quick).
+    const auto bench_option = [](const std::string& word) -> const Option* {
+      for (const Option& option : options_table()) {
+        if (option.name == word && includes(option.commands, Command::bench)) return &option;
+      }
+      return nullptr;
+    };
+    const Option* option = bench_option(args[i]);
+    if (option != nullptr && !option->value.empty() && i + 1 < args.size() && bench_option(args[i + 1]) != nullptr) {
+      throw InvalidInput("bench: " + args[i] + " needs a value (" + std::string(option->value) + "); got the option " +
+                         args[i + 1]);
+    }
     if (args[i] == "--quick") {
       quick = true;
     } else if (args[i] == "--out" && i + 1 < args.size() && !args[i + 1].empty()) {
