@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "app/modes.h"
+#include "app/command_line.h"
 #include "app/bench.h"
 #include "app/options.h"
 #include "app/table.h"
@@ -186,7 +187,8 @@ std::string lesson_speed(bool quick, std::ostream& out) {
 // Each run builds the lesson's Lua and Box2D afresh, so the cost is the median of 2 runs.
 int run_recommend(const std::string& lesson, const std::map<std::string, std::string>& overrides,
                   const std::string& tolerance_text, std::ostream& out) {
-  const double tolerance = option_number("--tol", tolerance_text, 0.0, 1e6, true, " × the lesson's tolerances");
+  // Its range is the options table's, which the help and the manual page are held to.
+  const double tolerance = option_for(Command::bench, "--tol").number(tolerance_text);
   const BenchmarkProblem problem = lessons::lesson_problem(lesson, overrides);
   Recommender recommender(problem, tolerance, 2);
   out << "Measuring " << problem.question << " (" << problem.unit << "), for every friction treatment at 30 to 1920 Hz "
@@ -264,6 +266,19 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   std::string directory, recommend, tolerance;
   std::map<std::string, std::string> overrides;
   for (size_t i = 0; i < args.size(); ++i) {
+    // As read_options() refuses it for the other commands: the value left out, not the next
+    // option taken for it (bench --out --quick would make a folder named --quick).
+    const auto bench_option = [](const std::string& word) -> const Option* {
+      for (const Option& option : options_table()) {
+        if (option.name == word && includes(option.commands, Command::bench)) return &option;
+      }
+      return nullptr;
+    };
+    const Option* option = bench_option(args[i]);
+    if (option != nullptr && !option->value.empty() && i + 1 < args.size() && bench_option(args[i + 1]) != nullptr) {
+      throw InvalidInput("bench: " + args[i] + " needs a value (" + std::string(option->value) + "); got the option " +
+                         args[i + 1]);
+    }
     if (args[i] == "--quick") {
       quick = true;
     } else if (args[i] == "--out" && i + 1 < args.size() && !args[i + 1].empty()) {
@@ -276,13 +291,17 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
       const std::string& pair = args[++i];
       const std::size_t equals = pair.find('=');
       if (equals == std::string::npos || equals == 0) throw InvalidInput("bench --set: expected NAME=VALUE, got '" + pair + "'");
-      overrides[pair.substr(0, equals)] = pair.substr(equals + 1);
+      try {
+        add_override(pair, overrides);  // one parameter given two values is refused, as run refuses it
+      } catch (const InvalidInput& error) {
+        throw InvalidInput(std::string("bench: ") + error.what());
+      }
     } else if (args[i] == "--tol" && i + 1 < args.size()) {
       if (!tolerance.empty()) throw InvalidInput("bench: --tol given twice; give one tolerance");
       tolerance = args[++i];
     } else {
       throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
-                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE]");
+                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE ...]");
     }
   }
   if (!overrides.empty() && recommend.empty()) throw InvalidInput("bench: --set goes with --recommend LESSON");

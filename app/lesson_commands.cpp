@@ -13,7 +13,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
+#include "app/command_line.h"
 #include "app/csv_log.h"
 #include "app/modes.h"
 #include "app/options.h"
@@ -39,36 +41,24 @@ struct RunOptions {
 
 RunOptions parse_run(const std::vector<std::string>& args) {
   RunOptions options;
-  std::vector<std::string> seen;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      if (!options.lesson.empty()) throw InvalidInput("run takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
-      options.lesson = arg;
-      continue;
-    }
-    static const std::string known[] = {"--duration", "--hz", "--substeps", "--friction", "--set", "--csv", "--mystery", "--seed"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("run: unknown option '" + arg +
-                         "'; options: --duration S, --hz N, --substeps N, --friction T, --set NAME=VALUE, --csv FILE, "
-                         "--mystery MATERIAL/MATERIAL --seed N");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput("run: " + arg + " needs a value; see frictionlab help");
-    refuse_repeat("run", arg, seen);
-    const std::string& value = args[++i];
-    if (options.mystery.take(arg, value)) continue;
-    if (arg == "--duration") {
-      options.duration = option_number(arg, value, 0.0, 86400.0, true, " s");
-    } else if (arg == "--set") {
+  const auto lesson = [&](const std::string& word) {
+    if (!options.lesson.empty()) throw InvalidInput("run takes one lesson, got '" + options.lesson + "' and '" + word + "'");
+    options.lesson = word;
+  };
+  read_options(Command::run, args, lesson, [&](const Option& option, const std::string& value) {
+    if (options.mystery.take(option, value) || step_option(option, value, options.settings)) return;
+    if (option.name == "--duration") {
+      options.duration = option.number(value);
+    } else if (option.name == "--set") {
       add_override(value, options.overrides);
-    } else if (arg == "--csv") {
+    } else if (option.name == "--csv") {
       // Empty, it would write nothing and say nothing: exit 0 with no file.
       if (value.empty()) throw InvalidInput("--csv \"\": give a file name, or - for standard output");
       options.csv = value;
     } else {
-      step_option(arg, value, options.settings);  // --hz, --substeps or --friction
+      throw std::logic_error("run does not read " + std::string(option.name) + ", which the options table gives it");
     }
-  }
+  });
   if (options.lesson.empty()) throw InvalidInput("run needs a lesson: frictionlab run LESSON; see frictionlab list");
   return options;
 }
@@ -126,9 +116,8 @@ void print_heading(const Lesson& lesson, std::ostream& out, const std::set<std::
   out << "  " << values << "\n\n";
 }
 
-// check --random: settings drawn inside the lesson's own sliders' ranges.
-constexpr int max_random_settings = 100000;
-constexpr std::uint64_t default_random_seed = 1;  // help and the man page say so
+// check --random: settings drawn inside the lesson's own sliders' ranges, as many as the options
+// table allows, from default_random_seed (app/command_line.h) unless --seed gives one.
 
 // SplitMix64, written out so that a seed draws the same settings with every compiler and
 // standard library (std::uniform_real_distribution's algorithm is not specified).
@@ -283,52 +272,64 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   return 0;
 }
 
-int run_check(const std::vector<std::string>& args, std::ostream& out) {
-  // Lessons, and the values and step settings to check them at (a student checks a threshold
-  // from both sides: check my_lesson.lua --set launch_speed=2.4), or at N settings drawn inside
-  // the sliders' ranges (check my_lesson.lua --random 50).
+namespace {
+
+struct CheckOptions {
   std::vector<std::string> names;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::vector<std::string> seen, step_options;
+  std::vector<std::string> step_options;  // as given, for the command lines --random prints
   std::optional<int> random_count;
   std::optional<std::uint64_t> seed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      names.push_back(arg);
-      continue;
-    }
-    static const std::string known[] = {"--hz", "--substeps", "--friction", "--set", "--random", "--seed"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("check: unknown option '" + arg +
-                         "'; options: --set NAME=VALUE, --hz N, --substeps N, --friction T, --random N, --seed S");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput("check: " + arg + " needs a value; see frictionlab help");
-    refuse_repeat("check", arg, seen);
-    const std::string& value = args[++i];
-    if (arg == "--set") {
-      add_override(value, overrides);
-    } else if (arg == "--random") {
-      const std::string allowed = "a whole number of settings from 1 to " + std::to_string(max_random_settings);
-      const bool digits = !value.empty() && value.size() <= 6 &&
+};
+
+CheckOptions parse_check(const std::vector<std::string>& args) {
+  // Lessons, and the values and step settings to check them at (a student checks a threshold
+  // from both sides: check my_lesson.lua --set launch_speed=2.4), or at N settings drawn inside
+  // the sliders' ranges (check my_lesson.lua --random 50).
+  CheckOptions options;
+  const auto add_lesson = [&](const std::string& word) { options.names.push_back(word); };
+  read_options(Command::check, args, add_lesson, [&](const Option& option, const std::string& value) {
+    if (option.name == "--set") {
+      add_override(value, options.overrides);
+    } else if (option.name == "--random") {
+      const std::string allowed = "a whole number of settings " + option.range_words();
+      // No more digits than the table's largest count has, so that std::stoi cannot overflow.
+      const std::size_t most_digits = std::to_string(static_cast<long long>(option.range.high)).size();
+      const bool digits = !value.empty() && value.size() <= most_digits &&
                           std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
-      if (!digits || std::stoi(value) < 1 || std::stoi(value) > max_random_settings) {
+      if (!digits || std::stoi(value) < option.range.low || std::stoi(value) > option.range.high) {
         throw InvalidInput("check: --random " + value + ": give " + allowed);
       }
-      random_count = std::stoi(value);
-    } else if (arg == "--seed") {
-      seed = ui::parse_mystery_seed("check: --seed", value);
+      options.random_count = std::stoi(value);
+    } else if (option.name == "--seed") {
+      options.seed = ui::parse_mystery_seed("check: --seed", value);
+    } else if (step_option(option, value, options.settings)) {  // --hz, --substeps or --friction
+      options.step_options.push_back(std::string(option.name));
+      options.step_options.push_back(value);
     } else {
-      step_option(arg, value, settings);  // --hz, --substeps or --friction
-      step_options.push_back(arg);
-      step_options.push_back(value);
+      throw std::logic_error("check does not read " + std::string(option.name) + ", which the options table gives it");
     }
-  }
-  if (names.empty() && !overrides.empty()) {
+  });
+  if (options.names.empty() && !options.overrides.empty()) {
     throw InvalidInput("check: --set names a parameter of one lesson; name the lesson too, as in check push --set mass=2");
   }
-  if (seed && !random_count) throw InvalidInput("check: --seed S draws the settings of --random N; give --random N with it");
+  if (options.seed && !options.random_count) {
+    throw InvalidInput("check: --seed S draws the settings of --random N; give --random N with it");
+  }
+  return options;
+}
+
+}  // namespace
+
+void parse_run_arguments(const std::vector<std::string>& args) { parse_run(args); }
+void parse_check_arguments(const std::vector<std::string>& args) { parse_check(args); }
+
+int run_check(const std::vector<std::string>& args, std::ostream& out) {
+  CheckOptions options = parse_check(args);
+  std::vector<std::string>& names = options.names;
+  const std::map<std::string, std::string>& overrides = options.overrides;
+  const std::optional<int>& random_count = options.random_count;
   if (names.empty()) names = lessons::builtin_lessons();
   // Every lesson is checked even when one cannot be run: a broken script is reported and the
   // others still get their verdict.
@@ -336,12 +337,12 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
   for (const std::string& name : names) {
     try {
       if (random_count) {
-        if (check_random_settings(name, overrides, settings, step_options, *random_count, seed.value_or(default_random_seed),
-                                  out) > 0) {
+        if (check_random_settings(name, overrides, options.settings, options.step_options, *random_count,
+                                  options.seed.value_or(default_random_seed), out) > 0) {
           ++failed_lessons;
         }
       } else {
-        Lesson lesson(lessons::resolve_lesson(name), overrides, settings);
+        Lesson lesson(lessons::resolve_lesson(name), overrides, options.settings);
         out << "== " << name << ": ";
         print_heading(lesson, out);
         if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;

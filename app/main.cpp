@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/command_line.h"
 #include "app/install_paths.h"
 #include "app/modes.h"
 #include "lessons/runtime/catalog.h"
@@ -20,80 +21,11 @@ namespace {
 #if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
 // The command line built for node (web/): the commands that need no drawing. The window is the
 // page's, and pictures to PNG files are the desktop program's.
-const char* const usage =
-    "usage: node frictionlab-cli.js list [--tsv]   the built-in lessons with their titles and moments\n"
-    "       node frictionlab-cli.js run LESSON [--duration S] [--hz N] [--substeps N]\n"
-    "                       [--friction stick-slip|threshold|regularized|box2d]\n"
-    "                       [--set NAME=VALUE ...] [--csv FILE] [--mystery MATERIAL/MATERIAL --seed N]\n"
-    "                                            run a lesson (a name from list, or a .lua file)\n"
-    "       node frictionlab-cli.js check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
-    "                                            run lessons and check their expectations; exit 1 if any fails\n"
-    "       node frictionlab-cli.js check LESSON --random N [--seed S]\n"
-    "                                            the lesson at N settings drawn inside its sliders' ranges\n"
-    "       node frictionlab-cli.js demo         theory beside simulation for every situation\n"
-    "       node frictionlab-cli.js link FILE.setup [--page ADDRESS] | link LINK\n"
-    "                                            a setup file as a link to the web page, or back\n"
-    "       node frictionlab-cli.js help | --version\n"
-    "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing; 2 bad input (the\n"
-    "message names what and where) or the program could not finish.\n"
-    "This is FrictionLab's WebAssembly build for node: the classroom is the web page, and render and\n"
-    "bench are the desktop program's.\n";
+constexpr frictionlab::Program program = frictionlab::Program::node;
 constexpr const char* command_names = "list, run, check, demo, link, help, --version";
 #else
-const char* const usage =
-    "usage: frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N]\n"
-    "                   [--friction T] [--theme light|dark] [--projector] [--at S --screenshot FILE.png]\n"
-    "                   [--mystery MATERIAL/MATERIAL --seed N]\n"
-    "                                            the classroom window on a lesson (the first one if none is\n"
-    "                                            named); --lock shows only the named controls; --projector\n"
-    "                                            fills the screen with larger text; --at and --screenshot save\n"
-    "                                            the window at that time and close it;\n"
-    "                                            --mystery hides a pair's mu_s and mu_k, drawn from the seed\n"
-    "                                            (0 to 999999), until the teacher reveals them.\n"
-    "       frictionlab --setup FILE [--theme light|dark] [--projector] [--at S --screenshot FILE.png]\n"
-    "                                            the window on a prepared setup (Lesson > Save as a setup):\n"
-    "                                            its lesson, values, lock, mystery and step settings\n"
-    "                                            Without a display it draws the lesson to a PNG instead.\n"
-    "       frictionlab list [--tsv]             the built-in lessons with their titles and moments (--tsv: for\n"
-    "                                            scripts, name, title, README moment and moments, tab-separated)\n"
-    "       frictionlab run LESSON [--duration S] [--hz N] [--substeps N]\n"
-    "                       [--friction stick-slip|threshold|regularized|box2d]\n"
-    "                       [--set NAME=VALUE ...] [--csv FILE] [--mystery MATERIAL/MATERIAL --seed N]\n"
-    "                                            run a lesson (a name from list, or a .lua file)\n"
-    "       frictionlab check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
-    "                         [--random N [--seed S]]\n"
-    "                                            run lessons and check their expectations; exit 1 if any fails;\n"
-    "                                            --random checks each lesson at N settings (1 to 100000) drawn\n"
-    "                                            inside its sliders' ranges, ends included, from seed S (0 to\n"
-    "                                            999999, default 1), and prints each failing one as the\n"
-    "                                            command line that reproduces it\n"
-    "       frictionlab render LESSON --at S[,S...] [--size WxH] [--theme light|dark]\n"
-    "                       [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T]\n"
-    "                       [--mystery MATERIAL/MATERIAL --seed N] --out PATH\n"
-    "                                            draw the lesson at each time to PNG, with no display; PATH is\n"
-    "                                            a .png file for one time, a folder for several (LESSON_tS.png)\n"
-    "       frictionlab render LESSON --moment NAME [--size WxH] --out PATH\n"
-    "                                            draw one of the lesson's moments (its time, values and theme)\n"
-    "       frictionlab demo                     theory beside simulation for every situation\n"
-    "       frictionlab link FILE.setup [--page ADDRESS]\n"
-    "                                            the setup as a link to the web page (ADDRESS#setup=...;\n"
-    "                                            without --page, the part to put after the page's address)\n"
-    "       frictionlab link LINK | -            the setup file a link holds, printed (--setup takes a link too;\n"
-    "                                            - reads the link from the standard input); a lesson the link\n"
-    "                                            carries is kept among your lessons, and the setup names it\n"
-    "       frictionlab bench [--quick] --out DIR     speed and accuracy figures, CSV files and charts\n"
-    "       frictionlab bench --recommend LESSON --tol X [--set NAME=VALUE]\n"
-    "                                            the cheapest setting whose run of the lesson meets its\n"
-    "                                            table within X times the rows' tolerances at 240 Hz\n"
-    "                                            (1: the table passes; 0.1: ten times tighter; measured\n"
-    "                                            now; exit 1 if none does)\n"
-    "       frictionlab help | --help | -h       this text\n"
-    "       frictionlab --version                the version\n"
-    "Exit status: 0 done; 1 check or demo found simulation and theory disagreeing, or\n"
-    "bench --recommend found no setting; 2 bad input (the message names what and where) or the\n"
-    "program could not finish.\n"
-    "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
-    "More in the manual: man frictionlab\n";
+// Every command, and the window. The usage of both is written from app/command_line.cpp's table.
+constexpr frictionlab::Program program = frictionlab::Program::desktop;
 constexpr const char* commands[] = {"demo", "list", "run", "check", "render", "bench", "link", "--help", "-h", "help", "--version"};
 constexpr const char* command_names = "list, run, check, render, demo, bench, link, help, --version; or a lesson to open in the window";
 #endif
@@ -114,7 +46,7 @@ int main(int argc, char** argv) {
     const std::string command = args.empty() ? "" : args[0];
 #if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
     if (command.empty()) {
-      std::cerr << usage;
+      std::cerr << frictionlab::usage_text(program);
       return 2;
     }
 #else
@@ -144,7 +76,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (command == "--help" || command == "-h" || command == "help") {
-      std::cout << usage;
+      std::cout << frictionlab::usage_text(program);
       return 0;
     }
 #if defined(FRICTIONLAB_COMMAND_LINE_ONLY)

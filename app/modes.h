@@ -17,4 +17,12 @@ int run_render(const std::vector<std::string>& args, std::ostream& out);  // fri
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out);  // frictionlab [LESSON]
 int run_link(const std::vector<std::string>& args, std::ostream& out);  // frictionlab link: setup file <-> web page link
 
+// Each reads `args` as its command does, with every check made before the command starts
+// work, and does nothing with them; throws InvalidInput as the command would. For the tests,
+// which give each parser every option the options table says its command takes.
+void parse_run_arguments(const std::vector<std::string>& args);
+void parse_check_arguments(const std::vector<std::string>& args);
+void parse_render_arguments(const std::vector<std::string>& args);
+void parse_window_arguments(const std::vector<std::string>& args);
+
 }  // namespace frictionlab

@@ -31,21 +31,12 @@ void add_override(const std::string& text, std::map<std::string, std::string>& o
   overrides[name] = value;
 }
 
-void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen) {
-  if (option == "--set") return;  // repeatable, one parameter each
-  if (std::find(seen.begin(), seen.end(), option) != seen.end()) {
-    throw InvalidInput(command + ": " + option + " given twice; give it once");
-  }
-  seen.push_back(option);
-}
-
-bool step_option(const std::string& option, const std::string& value, StepSettings& settings) {
-  if (option == "--hz") {
-    settings.hz = option_number(option, value, 1.0, 100000.0, false, " steps per second");
-  } else if (option == "--substeps") {
-    settings.substeps = static_cast<int>(option_number(option, value, 1.0, 1000.0, false, ""));
-    if (std::to_string(settings.substeps) != value) throw InvalidInput("--substeps " + value + ": a whole number from 1 to 1000");
-  } else if (option == "--friction") {
+bool step_option(const Option& option, const std::string& value, StepSettings& settings) {
+  if (option.name == "--hz") {
+    settings.hz = option.number(value);
+  } else if (option.name == "--substeps") {
+    settings.substeps = option.whole_number(value);
+  } else if (option.name == "--friction") {
     settings.treatment = parse_treatment(value);
   } else {
     return false;
@@ -53,14 +44,14 @@ bool step_option(const std::string& option, const std::string& value, StepSettin
   return true;
 }
 
-bool MysteryOptions::take(const std::string& option, const std::string& value) {
-  if (option == "--mystery") {
+bool MysteryOptions::take(const Option& option, const std::string& value) {
+  if (option.name == "--mystery") {
     if (value.find('/') == std::string::npos) {
       throw InvalidInput("--mystery " + value + ": name a friction pair as MATERIAL/MATERIAL, as in --mystery aluminium/wood");
     }
     pair = value;
-  } else if (option == "--seed") {
-    seed = ui::parse_mystery_seed(option, value);
+  } else if (option.name == "--seed") {
+    seed = ui::parse_mystery_seed(std::string(option.name), value);
   } else {
     return false;
   }

@@ -1,5 +1,6 @@
-// Options shared by the lesson commands (run, render): numbers in a range, --set, and the
-// step settings.
+// The readings the lesson commands (the window, run, check, render) share: numbers in a range,
+// --set, the step settings and the mystery. Which options each command takes, and their
+// ranges, are app/command_line.h's table.
 #pragma once
 
 #include <cstddef>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/command_line.h"
 #include "physics/scene.h"
 #include "ui/mystery.h"
 
@@ -19,11 +21,9 @@ double option_number(const std::string& option, const std::string& text, double 
                      const char* unit);
 // --set NAME=VALUE into `overrides`.
 void add_override(const std::string& text, std::map<std::string, std::string>& overrides);
-// Refuses an option given a second time (all but --set, which is repeatable), for every command
-// alike; `seen` collects the options given so far.
-void refuse_repeat(const std::string& command, const std::string& option, std::vector<std::string>& seen);
-// --hz, --substeps or --friction into `settings`; false if `option` is none of them.
-bool step_option(const std::string& option, const std::string& value, StepSettings& settings);
+// --hz, --substeps or --friction into `settings`, within the table's ranges; false if `option`
+// is none of them.
+bool step_option(const Option& option, const std::string& value, StepSettings& settings);
 
 // --mystery PAIR and --seed N, as the window, render and run take them: gathered one option at
 // a time, then checked together.
@@ -31,7 +31,7 @@ struct MysteryOptions {
   std::string pair;
   std::optional<std::uint64_t> seed;
   // Takes --mystery or --seed; false if `option` is neither. Throws InvalidInput for a bad seed.
-  bool take(const std::string& option, const std::string& value);
+  bool take(const Option& option, const std::string& value);
   // The choice, or none when neither was given; throws InvalidInput when only one was.
   std::optional<ui::MysteryChoice> choice() const;
 };

@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
+#include "app/command_line.h"
 #include "app/modes.h"
 #include "app/options.h"
 #include "app/table.h"
@@ -30,12 +32,13 @@ struct RenderOptions {
   MysteryOptions mystery;   // --mystery PAIR --seed N
 };
 
-std::vector<double> parse_times(const std::string& text) {
+std::vector<double> parse_times(const Option& at, const std::string& text) {
   std::vector<double> times;
   std::stringstream parts(text);
   std::string part;
-  // An hour: the record grows with every step, and the lesson's expectations read all of it.
-  while (std::getline(parts, part, ',')) times.push_back(option_number("--at", part, 0.0, 3600.0, false, " s"));
+  // At most an hour (the table's range): the record grows with every step, and the lesson's
+  // expectations read all of it.
+  while (std::getline(parts, part, ',')) times.push_back(at.number(part));
   if (times.empty() || text.back() == ',') throw InvalidInput("--at " + text + ": give times in seconds, as in --at 0.5,2");
   if (times.size() > 100) throw InvalidInput("--at: at most 100 times in one render, got " + std::to_string(times.size()));
   std::sort(times.begin(), times.end());
@@ -43,11 +46,12 @@ std::vector<double> parse_times(const std::string& text) {
   return times;
 }
 
-void parse_size(const std::string& text, int& width, int& height) {
+void parse_size(const Option& size, const std::string& text, int& width, int& height) {
   const std::size_t x = text.find('x');
   if (x == std::string::npos) throw InvalidInput("--size " + text + ": write it as WIDTHxHEIGHT, as in --size 1280x720");
-  width = static_cast<int>(option_number("--size width", text.substr(0, x), 320.0, 7680.0, false, " pixels"));
-  height = static_cast<int>(option_number("--size height", text.substr(x + 1), 240.0, 4320.0, false, " pixels"));
+  const Range& across = size.range, up = size.height_range;
+  width = static_cast<int>(option_number("--size width", text.substr(0, x), across.low, across.high, across.low_open, across.unit));
+  height = static_cast<int>(option_number("--size height", text.substr(x + 1), up.low, up.high, up.low_open, up.unit));
   if (std::to_string(width) + "x" + std::to_string(height) != text) {
     throw InvalidInput("--size " + text + ": whole numbers of pixels, as in --size 1280x720");
   }
@@ -60,59 +64,44 @@ void parse_size(const std::string& text, int& width, int& height) {
 
 // An error from parsing a value, with the option and value in front: "--theme pink: ...".
 template <class Parse>
-auto named(const std::string& option, const std::string& value, Parse parse) {
+auto named(std::string_view option, const std::string& value, Parse parse) {
   try {
     return parse();
   } catch (const InvalidInput& error) {
-    throw InvalidInput(option + " " + value + ": " + error.what());
+    throw InvalidInput(std::string(option) + " " + value + ": " + error.what());
   }
 }
 
 RenderOptions parse_render(const std::vector<std::string>& args) {
   RenderOptions options;
   bool have_times = false;
-  std::vector<std::string> seen;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      if (!options.lesson.empty()) throw InvalidInput("render takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
-      options.lesson = arg;
-      continue;
-    }
-    static const std::string known[] = {"--at", "--moment", "--size", "--theme", "--set", "--out", "--hz", "--substeps",
-                                        "--friction", "--mystery", "--seed"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("render: unknown option '" + arg +
-                         "'; options: --at S[,S...], --moment NAME, --size WxH, --theme light|dark, --set NAME=VALUE, --out PATH, "
-                         "--hz N, --substeps N, --friction T, --mystery MATERIAL/MATERIAL --seed N");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput("render: " + arg + " needs a value; see frictionlab help");
-    if (arg == "--at" && std::find(seen.begin(), seen.end(), arg) != seen.end()) {
-      throw InvalidInput("render: --at given twice; give it once (several times go in one --at, as in --at 1,2)");
-    }
-    refuse_repeat("render", arg, seen);  // as run and check do
-    const std::string& value = args[++i];
-    if (options.mystery.take(arg, value)) continue;
-    if (arg == "--at") {
-      options.times = parse_times(value);
+  const auto lesson = [&](const std::string& word) {
+    if (!options.lesson.empty()) throw InvalidInput("render takes one lesson, got '" + options.lesson + "' and '" + word + "'");
+    options.lesson = word;
+  };
+  read_options(Command::render, args, lesson, [&](const Option& option, const std::string& value) {
+    if (options.mystery.take(option, value)) return;
+    const std::string_view name = option.name;
+    if (name == "--at") {
+      options.times = parse_times(option, value);
       have_times = true;
-    } else if (arg == "--moment") {
+    } else if (name == "--moment") {
       options.moment = value;
-    } else if (arg == "--size") {
-      parse_size(value, options.width, options.height);
-    } else if (arg == "--theme") {
-      options.theme = named(arg, value, [&] { return ui::parse_theme(value); });
+    } else if (name == "--size") {
+      parse_size(option, value, options.width, options.height);
+    } else if (name == "--theme") {
+      options.theme = named(option.name, value, [&] { return ui::parse_theme(value); });
       options.have_theme = true;
-    } else if (arg == "--set") {
+    } else if (name == "--set") {
       add_override(value, options.overrides);
-    } else if (arg == "--out") {
+    } else if (name == "--out") {
       options.out = value;
-    } else if (arg == "--friction") {
-      named(arg, value, [&] { return step_option(arg, value, options.settings); });
-    } else {
-      step_option(arg, value, options.settings);  // --hz or --substeps
+    } else if (name == "--friction") {
+      named(option.name, value, [&] { return step_option(option, value, options.settings); });
+    } else if (!step_option(option, value, options.settings)) {  // --hz or --substeps
+      throw std::logic_error("render does not read " + std::string(name) + ", which the options table gives it");
     }
-  }
+  });
   if (options.lesson.empty()) throw InvalidInput("render needs a lesson: frictionlab render LESSON --at S --out PATH");
   if (have_times && !options.moment.empty()) {
     throw InvalidInput("render: give --at or --moment, not both (a moment has its own time)");
@@ -182,6 +171,8 @@ void apply_moment(const std::string& path, RenderOptions& options) {
 }
 
 }  // namespace
+
+void parse_render_arguments(const std::vector<std::string>& args) { parse_render(args); }
 
 int run_render(const std::vector<std::string>& args, std::ostream& out) {
   RenderOptions options = parse_render(args);

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
+#include "app/command_line.h"
 #include "app/modes.h"
 #include "app/options.h"
 #include "lessons/runtime/catalog.h"
@@ -43,47 +45,32 @@ std::vector<std::string> split_names(const std::string& option, const std::strin
 
 WindowOptions parse_window(const std::vector<std::string>& args) {
   WindowOptions options;
-  std::vector<std::string> seen;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("--", 0) != 0) {
-      if (!options.lesson.empty()) throw InvalidInput("the window takes one lesson, got '" + options.lesson + "' and '" + arg + "'");
-      options.lesson = arg;
-      continue;
-    }
-    if (arg == "--projector") {
+  std::vector<std::string_view> given_options;  // for --setup, which holds some of them
+  const auto lesson = [&](const std::string& word) {
+    if (!options.lesson.empty()) throw InvalidInput("the window takes one lesson, got '" + options.lesson + "' and '" + word + "'");
+    options.lesson = word;
+  };
+  read_options(Command::window, args, lesson, [&](const Option& option, const std::string& value) {
+    given_options.push_back(option.name);
+    if (options.mystery.take(option, value)) return;
+    const std::string_view name = option.name;
+    if (name == "--projector") {
       options.projector = true;
-      continue;
-    }
-    static const std::string known[] = {"--lock", "--set", "--hz", "--substeps", "--friction", "--theme", "--at", "--screenshot",
-                                        "--mystery", "--seed", "--setup"};
-    if (std::find(std::begin(known), std::end(known), arg) == std::end(known)) {
-      throw InvalidInput("unknown option '" + arg +
-                         "'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, --substeps N, "
-                         "--friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, "
-                         "--mystery MATERIAL/MATERIAL --seed N, --setup FILE "
-                         "(commands: list, run, check, render, demo, bench, help)");
-    }
-    if (i + 1 >= args.size()) throw InvalidInput(arg + " needs a value; see frictionlab help");
-    if (arg != "--set" && std::find(seen.begin(), seen.end(), arg) != seen.end()) throw InvalidInput(arg + " given twice");
-    seen.push_back(arg);
-    const std::string& value = args[++i];
-    if (options.mystery.take(arg, value)) continue;
-    if (arg == "--setup") {
+    } else if (name == "--setup") {
       options.setup = value;
-    } else if (arg == "--lock") {
-      options.lock = split_names(arg, value);
-    } else if (arg == "--set") {
+    } else if (name == "--lock") {
+      options.lock = split_names("--lock", value);
+    } else if (name == "--set") {
       add_override(value, options.overrides);
-    } else if (arg == "--theme") {
+    } else if (name == "--theme") {
       try {
         options.theme = ui::parse_theme(value);
       } catch (const InvalidInput& error) {
         throw InvalidInput("--theme " + value + ": " + error.what());
       }
-    } else if (arg == "--at") {
-      options.at = option_number("--at", value, 0.0, 3600.0, false, " s");
-    } else if (arg == "--screenshot") {
+    } else if (name == "--at") {
+      options.at = option.number(value);
+    } else if (name == "--screenshot") {
       const fs::path path(value);
       if (path.extension() != ".png") throw InvalidInput("--screenshot " + value + ": screenshots are written as PNG; give a .png file");
       if (!path.parent_path().empty() && !fs::is_directory(path.parent_path())) {
@@ -91,19 +78,22 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       }
       options.screenshot = value;
     } else {
+      bool stepped = false;
       try {
-        step_option(arg, value, options.settings);
+        stepped = step_option(option, value, options.settings);
       } catch (const InvalidInput& error) {
-        throw InvalidInput(arg == "--friction" ? "--friction " + value + ": " + error.what() : error.what());
+        throw InvalidInput(name == "--friction" ? "--friction " + value + ": " + error.what() : error.what());
       }
+      if (!stepped) throw std::logic_error("the window does not read " + std::string(name) + ", which the options table gives it");
     }
-  }
+  });
   options.mystery.choice();  // --mystery without --seed, or the other way round, refused before the window opens
   if (!options.setup.empty()) {
     // The setup holds these: given beside it, which one was meant is not for the program to guess.
     std::string given = options.lesson.empty() ? "" : "the lesson '" + options.lesson + "'";
-    for (const char* option : {"--lock", "--set", "--hz", "--substeps", "--friction", "--mystery", "--seed"}) {
-      if (given.empty() && std::find(seen.begin(), seen.end(), option) != seen.end()) given = option;
+    for (const Option& option : options_table()) {
+      if (!given.empty() || !option.held_by_setup || !includes(option.commands, Command::window)) continue;
+      if (std::find(given_options.begin(), given_options.end(), option.name) != given_options.end()) given = option.name;
     }
     if (!given.empty()) {
       throw InvalidInput("--setup " + options.setup + " holds the lesson, its values, the lock and the mystery: give " + given +
@@ -120,6 +110,8 @@ std::string time_text(double t) {
 }
 
 }  // namespace
+
+void parse_window_arguments(const std::vector<std::string>& args) { parse_window(args); }
 
 int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   const WindowOptions options = parse_window(args);
