@@ -124,8 +124,11 @@ expect { "push when it happens", unit = "N",
     return push_then
   end,
   -- The record tells the step it happened in, and the push during that step, which grows by
-  -- push_rate·h a step: up to that much off the exact push, and 0.5 % for the solver.
-  tolerance = function() return 0.005 * predicted().force + push_rate * step_length() end }
+  -- push_rate·h a step: up to that much off the exact push, and 0.5 % for the solver. And a
+  -- step more: in the first step past the tipping push the excess may be too small for the
+  -- solver's passes to lift the back edge (0.7 % past it, the back edge still carried 0.40 N
+  -- of 4.9), so the record may name the next one.
+  tolerance = function() return 0.005 * predicted().force + 2 * push_rate * step_length() end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "tips or slides", choices = { "tips", "slides" },
