@@ -125,10 +125,14 @@ expect { "push when it happens", unit = "N",
   end,
   -- The record tells the step it happened in, and the push during that step, which grows by
   -- push_rate·h a step: up to that much off the exact push, and 0.5 % for the solver. And a
-  -- step more: in the first step past the tipping push the excess may be too small for the
-  -- solver's passes to lift the back edge (0.7 % past it, the back edge still carried 0.40 N
-  -- of 4.9), so the record may name the next one.
-  tolerance = function() return 0.005 * predicted().force + 2 * push_rate * step_length() end }
+  -- step more where the box must tip within the push's first two steps: a fresh contact, its
+  -- load moved from nothing to past tipping in one step, 0.7 % past it, still left the back
+  -- edge 0.40 N of its 4.9 (a light narrow box at 141 N/s; at 1.3 to 60 N/s the first step
+  -- past the tipping push is the one recorded).
+  tolerance = function()
+    local steps = predicted().force < 2 * push_rate * step_length() and 2 or 1
+    return 0.005 * predicted().force + steps * push_rate * step_length()
+  end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "tips or slides", choices = { "tips", "slides" },

@@ -131,8 +131,9 @@ local function seen(speed_probe, epsilon)
     return largest
   end
   local late, middle = swing(0.9 * n, n), swing(0.4 * n, 0.5 * n)
-  -- A swing that settles only shrinks from the first step's (each step multiplies it by the
-  -- same factor, below 1); one past the boundary grows until ε and kinetic friction bound it,
+  -- A swing that settles only shrinks from the first steps' (on the law's linear branch each
+  -- step multiplies it by the same factor, below 1, and drag b only shrinks it faster); one
+  -- past the boundary grows until ε and kinetic friction bound it,
   -- and then wanders there (c = 1000 N·s/m, b = 313.6 N·s²/m² at ε = 0.05 m/s: 0.051 m/s
   -- around the middle of the run, 0.025 at its end, from 0.0007 at the first step).
   local first = swing(1, math.min(2, n))

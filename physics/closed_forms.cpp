@@ -147,7 +147,7 @@ InclineSlide incline_slide_stepped(double angle, double mu_k, double c, double b
   const double steps = std::round(t / h);
   double v = 0.0, x = 0.0;
   for (double n = 0.0; n < steps; n += 1.0) {
-    const double next = std::max(damped_velocity(v, mass, h, drag) + a * h, 0.0);
+    const double next = damped_velocity(v, mass, h, drag) + a * h;
     // Once the speed no longer changes, the rest of the way is at that speed.
     if (next == v) return {v, x + (steps - n) * h * v};
     v = next;

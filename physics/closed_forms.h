@@ -25,8 +25,9 @@ double incline_speed(double angle, double mu_k, double c, double b, double mass,
 double incline_distance(double angle, double mu_k, double c, double b, double mass, double g, double t);
 // The same slide as a world stepped every h s moves it: the drag applied exactly over each step
 // before the step's other forces (as FrictionListener does, damped_velocity), then gravity
-// and kinetic friction for the step, v ← max(damped(v) + a·h, 0), and x ← x + h·v. Where
-// m/c nears h or falls below it the two part: the stepped block creeps at a·h/(1 − e^(−c·h/m)),
+// and kinetic friction for the step, v ← damped(v) + a·h (a > 0: kinetic friction that would
+// stop the block holds it from the start, and both are 0), and x ← x + h·v. Where m/c nears h
+// or falls below it the two part: with c alone the stepped block creeps at a·h/(1 − e^(−c·h/m)),
 // not a·m/c (c = 800 N·s/m on 1 kg at 240 Hz: 3.5 times faster). t is taken to the nearest
 // whole step.
 struct InclineSlide {
