@@ -11,6 +11,7 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -168,6 +169,8 @@ std::string caller(lua_State* state);
 class Fields {
  public:
   Fields(lua_State* state, int index, std::string call, std::initializer_list<const char*> known);
+  // The same, for a list of known fields made at run time (theory.*'s table of arguments).
+  Fields(lua_State* state, int index, std::string call, std::span<const char* const> known);
   // The name in the first position, when the call takes one; it then names the thing in errors.
   std::string name();
   const std::string& what() const { return what_; }

@@ -18,6 +18,9 @@ std::string caller(lua_State* state) {
 }
 
 Fields::Fields(lua_State* state, int index, std::string call, std::initializer_list<const char*> known)
+    : Fields(state, index, std::move(call), std::span<const char* const>(known.begin(), known.size())) {}
+
+Fields::Fields(lua_State* state, int index, std::string call, std::span<const char* const> known)
     : state_(state), index_(lua_absindex(state, index)), call_(std::move(call)), what_(call_) {
   if (!lua_istable(state_, index_)) {
     throw InvalidInput(call_ + " takes a table, as in " + call_ + "{ ... }; got " + describe(state_, index_));

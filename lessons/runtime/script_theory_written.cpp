@@ -1,0 +1,537 @@
+// The theory.* functions written out by hand: those that run a model over time (spring_stick_slip's
+// run, regularized_run, regularized_creep, wedge), take nested tables (stacked_blocks,
+// intermittent_slide), read the run itself (velocity_hack) or work through a long
+// calculation (thrown_box). The rest are described in script_theory.cpp's table, which lists
+// these too.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "lessons/runtime/theory_binding.h"
+#include "physics/closed_forms.h"
+#include "physics/friction_laws.h"
+#include "physics/reduced_model.h"
+#include "physics/scenarios.h"
+#include "physics/wedge_model.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+// mu_s may be left out where only sliding matters (it then equals mu_k).
+FrictionPair pair_from(Fields& fields) {
+  const double mu_k = fields.number("mu_k", "");
+  return {fields.number("mu_s", "", mu_k), mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+}
+
+FrictionPair nested_pair(lua_State* state, Fields& outer, const char* key) {
+  outer.push(key);
+  Fields fields(state, -1, outer.what() + ": " + key, {"mu_s", "mu_k", "c", "b"});
+  const FrictionPair pair = pair_from(fields);
+  lua_pop(state, 1);
+  return pair;
+}
+
+}  // namespace
+
+namespace theory_written {
+
+int spring_stick_slip(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.spring_stick_slip",
+                  {"mass", "k", "pull_speed", "mu_s", "mu_k", "c", "b", "duration", "g"});
+    const double mass = fields.number("mass", "kg"), k = fields.number("k", "N/m");
+    const double pull_speed = fields.number("pull_speed", "m/s"), mu_s = fields.number("mu_s", "");
+    const double mu_k = fields.number("mu_k", ""), g = fields.number("g", "m/s²", standard_gravity);
+    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 86400.0);
+    lua_createtable(state, 0, 8);
+    // The closed form's cycle, where it has one (no drag, mu_k <= mu_s).
+    if (c == 0.0 && b == 0.0 && mu_k <= mu_s) {
+      const theory::StickSlip cycle = theory::spring_stick_slip(mass, k, pull_speed, mu_s, mu_k, g);
+      set_number(state, "breakaway_force", cycle.breakaway_force);
+      set_number(state, "restick_force", cycle.restick_force);
+      set_number(state, "stick_duration", cycle.stick_duration);
+      set_number(state, "slip_duration", cycle.slip_duration);
+      set_number(state, "period", cycle.period);
+      set_number(state, "first_breakaway_time", cycle.first_breakaway_time);
+      set_number(state, "slip_distance", cycle.slip_distance);
+    } else {
+      lua_pushstring(state, mu_k > mu_s ? "no periodic cycle: μk > μs" : "no closed form with drag c or b");
+      lua_setfield(state, -2, "no_closed_form");
+    }
+    // With a duration: the run itself from rest, by the exact reduced model (closed-form phases
+    // joined at events; with b, RK4 phases with their events bisected to 1e-13 s), read as a
+    // lesson reads its record: the mean spring force at the breakaways and at the re-sticks
+    // (a reversal, where the block stops and at once slides back, is both), and the mean time
+    // from one breakaway to the next. Drag (c, b) has no closed form here; this answers it.
+    if (duration > 0.0) {
+      OneDofBlock block;
+      block.mass = mass;
+      block.normal_force = mass * g;
+      block.pair = {mu_s, mu_k, c, b};
+      block.spring_k = k;
+      block.pull_speed = pull_speed;
+      // RK4's step: 200 a swing of the spring, and short against the drag's own time m/(c + 2b·v)
+      // (RK4 is stable only while h·(c + 2b·v)/m < 2.78), v at most the hand's speed and the
+      // lurch's, max(mu_s, mu_k)·g/ω.
+      const double swing = 2.0 * std::numbers::pi * std::sqrt(mass / k);
+      // (The lurch is slower still where the drag at that speed would outpull the spring's
+      // largest pull, max(mu_s, mu_k)·m·g plus what it takes to stop.)
+      const double largest = 2.0 * std::max(mu_s, mu_k) * mass * g;
+      double fastest = std::max(mu_s, mu_k) * g * swing / (2.0 * std::numbers::pi);
+      if (b > 0.0) fastest = std::min(fastest, std::sqrt(largest / b));
+      if (c > 0.0) fastest = std::min(fastest, largest / c);
+      fastest += pull_speed;
+      const double h = std::min({1e-3, swing / 200.0, duration / 16.0, 0.5 * mass / (c + 2.0 * b * fastest)});
+      if (b != 0.0 && duration / h > 2e7) throw InvalidInput("theory.spring_stick_slip: duration is over 20 million model steps");
+      const Trajectory run = b == 0.0 ? solve_exact(block, duration) : solve_event_rk4(block, duration, h);
+      int breakaways = 0, resticks = 0;
+      double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
+      for (const Event& event : run.events()) {
+        const double force = applied_force(block, event.t, event.x);
+        const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
+        if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
+        if (breaks) {
+          if (breakaways == 0) first = event.t, first_force = force;
+          last = event.t;
+          ++breakaways, breakaway_sum += force;
+        }
+      }
+      lua_createtable(state, 0, 6);
+      set_number(state, "breakaways", breakaways);
+      set_number(state, "resticks", resticks);
+      if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
+      if (breakaways > 0) set_number(state, "first_breakaway_force", first_force);
+      if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
+      if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
+      lua_setfield(state, -2, "run");
+    }
+    return 1;
+  });
+}
+
+int stacked_blocks(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.stacked_blocks", {"top_mass", "bottom_mass", "between", "ground", "push", "g"});
+    const double top_mass = fields.number("top_mass", "kg"), bottom_mass = fields.number("bottom_mass", "kg");
+    const FrictionPair between = nested_pair(state, fields, "between"), ground = nested_pair(state, fields, "ground");
+    const double push = fields.number("push", "N"), g = fields.number("g", "m/s²", standard_gravity);
+    // A slider may put mu_k above mu_s; the closed form has no answer there, and says so in words
+    // (`no_closed_form`) rather than refusing the value.
+    if (between.mu_k > between.mu_s || ground.mu_k > ground.mu_s) {
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no closed form (μk > μs)");
+      lua_setfield(state, -2, "no_closed_form");
+      return 1;
+    }
+    const theory::StackedBlocks stack = theory::stacked_blocks(top_mass, bottom_mass, between, ground, push, g);
+    lua_createtable(state, 0, 4);
+    const char* regime = stack.regime == theory::StackRegime::at_rest    ? "at_rest"
+                         : stack.regime == theory::StackRegime::together ? "together"
+                                                                          : "top_slips";
+    lua_pushstring(state, regime);
+    lua_setfield(state, -2, "regime");
+    set_number(state, "top_acceleration", stack.top_acceleration);
+    set_number(state, "bottom_acceleration", stack.bottom_acceleration);
+    set_number(state, "max_push_together", stack.max_push_together);
+    return 1;
+  });
+}
+
+int intermittent_slide(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.intermittent_slide", {"mass", "pull", "dry", "lubricated", "from", "until", "t", "g"});
+    const theory::IntermittentSlide slide = theory::intermittent_slide(
+        fields.number("mass", "kg"), fields.number("pull", "N"), nested_pair(state, fields, "dry"),
+        nested_pair(state, fields, "lubricated"), fields.number("from", "s"), fields.number("until", "s"),
+        fields.number("t", "s"), fields.number("g", "m/s²", standard_gravity));
+    lua_createtable(state, 0, 4);
+    set_flag(state, "sliding", slide.sliding);
+    set_number(state, "acceleration", slide.acceleration);
+    set_number(state, "speed", slide.speed);
+    set_number(state, "distance", slide.distance);
+    return 1;
+  });
+}
+
+// The tribology article's regularized friction on a slope, run the way a game runs it: a
+// block released at rest, a fixed step, and friction -mu_s·N·v/epsilon below the threshold
+// speed. Returns speed and distance down the slope at t = 0, step, 2·step, ... so a lesson can
+// set it beside its own (Box2D) block and the exact answer.
+int regularized_run(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.regularized_run",
+                  {"angle", "mu_s", "mu_k", "epsilon", "step", "duration", "integrator", "g"});
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
+    const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    const double step = fields.number_in("step", "s", 1e-6, 1.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
+    const std::string name = fields.text("integrator", "semi-implicit");
+    const Integrator integrator = name == "explicit"        ? Integrator::explicit_euler
+                                  : name == "semi-implicit" ? Integrator::semi_implicit_euler
+                                  : name == "rk4"           ? Integrator::rk4
+                                                            : throw InvalidInput("theory.regularized_run: integrator '" + name +
+                                                                                 "' is none of explicit, semi-implicit, rk4");
+    // Two lists of this many numbers stay well inside the script's 64 MB.
+    if (duration / step > 500000.0) {
+      throw InvalidInput("theory.regularized_run: duration / step is over 500000 samples; take a longer step or a shorter run");
+    }
+    OneDofBlock block;
+    block.mass = 1.0;
+    block.normal_force = g * std::cos(angle);
+    block.constant_force = g * std::sin(angle);
+    block.pair = {fields.number_in("mu_s", "", 0.0, 2.0, true), fields.number_in("mu_k", "", 0.0, 2.0), 0.0, 0.0};
+    const double epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    const std::vector<Sample> samples = integrate_regularized(block, duration, step, epsilon, integrator);
+    lua_createtable(state, 0, 2);
+    for (const auto& [key, of] : {std::pair{"speed", &Sample::v}, std::pair{"distance", &Sample::x}}) {
+      lua_createtable(state, static_cast<int>(samples.size()), 0);
+      for (std::size_t i = 0; i < samples.size(); ++i) {
+        lua_pushnumber(state, samples[i].*of);
+        lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+      }
+      lua_setfield(state, -2, key);
+    }
+    return 1;
+  });
+}
+
+// The regularized law's creep down a slope it should stick to, as a fixed step takes it: each
+// step the drag c, b acts exactly over the step on the speed the block brings (as the listener
+// applies it), the law's linear branch −μs·N·v/ε and gravity's pull explicitly, so the step's
+// speed v' = damped(v) + h·g·(sin θ − μs·cos θ·v/ε) and the creep is its fixed point. With no
+// drag that is ε·tan θ/μs at any step; with step 0, the continuous law's b v² + (μs·m·g·cos θ/ε
+// + c)·v = m·g·sin θ. `amplification` is dv'/dv there: the step settles onto the creep while
+// its size is below 1 (with no drag: while h < 2ε/(μs·g·cos θ)) and jitters for ever past it.
+// Where μs <= tan θ the linear branch cannot balance the slope: `no_creep` says so. With `duration`, the steps
+// from rest are taken too: `breaks_away` when the block ends faster than ε, and `settles` then
+// false whatever the amplification.
+int regularized_creep(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.regularized_creep",
+                  {"angle", "mu_s", "mu_k", "epsilon", "step", "c", "b", "mass", "duration", "g"});
+    const double angle = fields.number_in("angle", "°", 0.0, 90.0) * degrees;
+    const double mu_s = fields.number("mu_s", ""), epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    const double h = fields.number_in("step", "s", 0.0, 0.0, 1.0), mass = fields.number("mass", "kg", 1.0);
+    const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    const FrictionPair drag{0.0, 0.0, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    if (mu_s <= std::tan(angle)) {  // an answer in words, not a refusal
+      lua_createtable(state, 0, 1);
+      lua_pushstring(state, "no creep: μs ≤ tan θ, the law's linear branch cannot hold the slope");
+      lua_setfield(state, -2, "no_creep");
+      return 1;
+    }
+    const double pull = g * std::sin(angle), k = mu_s * g * std::cos(angle) / epsilon;  // per unit mass
+    // What the step lacks of a fixed point at v: rises with v (damped(v) rises slower than v).
+    const auto excess = [&](double v) {
+      if (h == 0.0) return (drag.c * v + drag.b * v * v) / mass - (pull - k * v);
+      return v - damped_velocity(v, mass, h, drag) - h * (pull - k * v);
+    };
+    double low = 0.0, high = epsilon;  // excess(0) <= 0 < excess(ε), as μs > tan θ
+    for (int i = 0; i < 200 && high - low > 1e-15 * epsilon; ++i) {
+      const double middle = 0.5 * (low + high);
+      (excess(middle) > 0.0 ? high : low) = middle;
+    }
+    const double creep = 0.5 * (low + high);
+    double amplification = 0.0;
+    if (h > 0.0) {
+      const double dv = 1e-6 * epsilon;
+      const double slope = (damped_velocity(creep + dv, mass, h, drag) - damped_velocity(std::max(creep - dv, 0.0), mass, h, drag)) /
+                           (creep + dv - std::max(creep - dv, 0.0));
+      amplification = slope - h * k;
+    }
+    // The steps themselves from rest, over `duration`, with the whole law (kinetic friction
+    // μk·N past ε): a step that overshoots ε (the first one does where h·g·sin θ > ε) lets a
+    // slope steeper than atan μk take the block away, whatever the creep's own stability.
+    const double mu_k = fields.number("mu_k", "", mu_s);
+    const double duration = fields.number_in("duration", "s", 0.0, 0.0, 3600.0);
+    double v = 0.0;
+    if (h > 0.0 && duration / h > 1e7) throw InvalidInput("theory.regularized_creep: duration / step is over 10 million steps");
+    for (double t = 0.0; h > 0.0 && t < duration - 0.5 * h; t += h) {
+      const double dry = std::abs(v) < epsilon ? -k * v : -mu_k * g * std::cos(angle) * (v > 0.0 ? 1.0 : -1.0);
+      v = damped_velocity(v, mass, h, drag) + h * (pull + dry);
+    }
+    lua_createtable(state, 0, 5);
+    set_number(state, "speed", creep);
+    set_number(state, "amplification", amplification);
+    set_flag(state, "breaks_away", v > epsilon);
+    set_number(state, "speed_at_end", v);
+    set_flag(state, "settles", std::abs(amplification) < 1.0 && v <= epsilon);
+    return 1;
+  });
+}
+
+// The thrown box and its rotation-locked twin: the landing of the lowest corner, the impact on
+// it, and how far the locked box (thrown level, landing flat) goes before it stops.
+int thrown_box(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
+                                                  "centre_height", "mu_k", "mu_s", "c", "b", "restitution", "g",
+                                                  "clearance", "step"});
+    const double width = fields.number("width", "m"), height = fields.number("height", "m");
+    const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
+    const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
+    const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
+    const double mu_s = fields.number("mu_s", "", mu_k);
+    const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
+    // Box2D's polygons touch when they are two skins apart: a script's, true_skin each.
+    const double clearance = fields.number("clearance", "m", 2.0 * true_skin);
+    const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
+    // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
+    // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
+    // speed the box brings into the step it lands in, before that step's impact is solved
+    // (a contact born in a step has its drag at once). The same once here.
+    const FrictionPair drag{mu_k, mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
+    const double inertia = mass * (width * width + height * height) / 12.0;
+    // The face the box lands on: the landing corner and the far end of that face (the
+    // second-lowest corner), how much higher that end is, and where it is from the centre.
+    double rise = infinity, far_x = 0.0, far_y = 0.0;
+    {
+      const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+      for (const double sx : {-0.5, 0.5}) {
+        for (const double sy : {-0.5, 0.5}) {
+          const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
+          const bool landing_corner = std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12;
+          if (!landing_corner && y - landing.corner_y < rise) rise = y - landing.corner_y, far_x = x, far_y = y;
+        }
+      }
+    }
+    // An impact on one corner (rx, ry from the centre, world axes), `late` s after the landing,
+    // its lever arm turned with the box. The contact point is where the two skins meet, half the
+    // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
+    // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
+    // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
+    // middle of what is left of the gap, where the point is, has risen by half that. A script's
+    // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
+    // so the corner may sink past it into the floor before a step finds it: the point is then
+    // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
+    const auto impact_on = [&](double rx, double ry, double late) {
+      const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
+      const double sunk = std::max((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0);
+      const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
+      // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
+      // along the floor at that point feels.
+      double vx = speed, omega = spin;
+      if (step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
+        const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
+        const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
+        vx += impulse / mass;
+        omega -= py * impulse / inertia;
+      }
+      // A stepped world's corner born barely sliding (drag may have stopped it) starts stuck
+      // and is held in that step's impact up to static friction, a little over: at c = 300
+      // N·s/m on a 0.52 kg box the corner came in at 0.6 mm/s and left spinning at -6.16 rad/s,
+      // where sliding under mu_k = 0 leaves it at -13.6.
+      double mu = mu_k;
+      if (step > 0.0 && std::abs(vx - omega * py) <= stick_slip_birth_sliding_speed) {
+        mu = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
+      }
+      const double vy = -g * (landing.time + late);
+      // Drag strong enough to turn the corner up off the floor leaves the normal impulse
+      // nothing to stop: the step's drag is then the whole of the impact.
+      if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
+      return theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution);
+    };
+    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
+    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
+    // Landing flat, the face's two ends share the impact: each end's fall is stopped (or, with
+    // restitution e, turned back at e times its speed), and two ends that stop together stop
+    // the box's fall and its spin together (fall and spin each turned back at e times), the
+    // ends' loads shifting to hold friction's moment and the spin's. That holds while both
+    // loads are pushes: where one end alone, taking the impact, leaves the other rising (friction's
+    // moment about the front end, or a spin too fast for the fall to stop), that end takes it
+    // alone and the other lifts. A spinning box does not keep its spin through such a landing:
+    // at spin 7.638 rad/s and mu_k 0.4, the world's box stops turning.
+    std::string corner = "lands flat";
+    theory::CornerImpact impact{};
+    double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
+    if (landing.flat) {
+      const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
+      const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
+      const double rear_x = landing_leads ? far_x : landing.corner_x;
+      const double rear_y = landing_leads ? far_y : landing.corner_y;
+      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0), rear = impact_on(rear_x, rear_y, 0.0);
+      if (front.vy + front.omega * rear_x > 0.0) {
+        impact = front;
+        corner = "pitches over its front edge";
+        hit_x = front_x, hit_y = front_y;
+      } else if (rear.vy + rear.omega * front_x > 0.0) {
+        impact = rear;
+        corner = "pitches over its rear edge";
+        hit_x = rear_x, hit_y = rear_y;
+      } else {
+        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
+        impact.omega = -restitution * spin;
+      }
+    } else {
+      impact = impact_on(landing.corner_x, landing.corner_y, 0.0);
+      corner = impact.grips ? "grips" : "slides";
+    }
+    const bool on_a_corner = corner != "lands flat";
+    // The far end comes down too soon after the impact (falling at the impact's end speed, and
+    // under gravity): within a step or two a stepped world meets both corners in one step, and
+    // no single-corner impact describes what it shows.
+    const double far_speed = -(impact.vy + impact.omega * far_x);  // downward, m/s
+    const double far_root = far_speed + std::sqrt(far_speed * far_speed + 2.0 * g * rise);
+    const double second_corner = !on_a_corner || landing.flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
+    // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
+    // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
+    // corner moves it; k_tn couples sliding to falling).
+    double swing = 0.0, pivot = 0.0;
+    if (on_a_corner) {
+      const double rx = hit_x, ry = hit_y - 0.5 * clearance;
+      if (!impact.grips) swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
+      // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
+      // inertia about the corner: how fast the spin changes there, rad/s².
+      pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
+    }
+    // A stepped world meets the floor up to a step after the exact landing, turned and falling
+    // further: the spin that impact leaves (spin_after itself when step = 0 or it lands flat).
+    const double late = !on_a_corner ? impact.omega
+                        : landing.flat ? impact.omega
+                                       : impact_on(landing.corner_x, landing.corner_y, step).omega;
+    // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
+    const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
+    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
+                                                             mu_k, restitution);
+    // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
+    // slows it, ever more slowly).
+    const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
+    lua_createtable(state, 0, 14);
+    set_number(state, "landing_time", landing.time);
+    set_number(state, "landing_angle", landing.angle / degrees);
+    lua_pushstring(state, corner.c_str());
+    lua_setfield(state, -2, "corner");
+    set_number(state, "spin_after", impact.omega);
+    set_number(state, "spin_after_a_step_late", late);
+    set_number(state, "pivot_acceleration", pivot);
+    set_number(state, "second_corner_after", second_corner);
+    set_number(state, "solver_swing", swing);
+    set_number(state, "vx_after", impact.vx);
+    set_number(state, "vy_after", impact.vy);
+    set_number(state, "locked_landing_time", flat.time);
+    set_number(state, "locked_speed_after_landing", lands.vx);
+    set_number(state, "locked_distance", speed * flat.time + slide.distance);
+    set_number(state, "locked_stop_time", flat.time + slide.time);
+    return 1;
+  });
+}
+
+int velocity_hack(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g", "substeps"});
+    // The frame's sub-steps, as the run takes them unless the script says otherwise.
+    const double run_substeps = build_of(state).scene->settings().substeps;
+    const double substeps = fields.number_in("substeps", "", run_substeps, 1.0, 1000.0);
+    if (substeps != std::floor(substeps)) {
+      throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
+    }
+    const theory::VelocityHack hack = theory::velocity_hack(
+        fields.number("v0", "m/s"), fields.number("keep", ""), fields.number("step", "s"),
+        fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity),
+        static_cast<int>(substeps));
+    lua_createtable(state, 0, 2);
+    set_number(state, "distance_up", hack.distance_up);
+    set_number(state, "drift_speed", hack.drift_speed);
+    return 1;
+  });
+}
+
+// The article's block on a swinging, accelerating wedge, reduced to its slide along the surface
+// (physics/wedge_model.h), solved once over `duration` and sampled every `step`: lists of the
+// state at t = 0, step, 2·step, ... (index k + 1 for t = k·step), the events, and the windows in
+// which the block slips. law = "coulomb" (friction opposes the sliding; static friction holds)
+// or "article" (the article's equation as written: friction opposes the driving force, always
+// sliding). rotation = true puts back the turning surface's terms the article leaves out, for a
+// block whose centre is centre_height above the surface line and starts `start` m up the slope
+// from the pivot.
+int wedge(lua_State* state) {
+  return guarded(state, [&] {
+    Fields fields(state, 1, "theory.wedge", {"mass", "theta0", "omega", "a_x", "a_x_omega", "mu_s", "mu_k", "g",
+                                             "duration", "step", "law", "rotation", "centre_height", "start"});
+    WedgeDrive drive;
+    drive.mass = fields.number_in("mass", "kg", 0.0, 1e6, true);
+    drive.theta0 = fields.number_in("theta0", "°", -85.0, 85.0) * degrees;
+    drive.omega = fields.number_in("omega", "rad/s", 0.0, 0.0, 1000.0);
+    drive.a_x = fields.number_in("a_x", "m/s²", 0.0, -1e4, 1e4);
+    drive.a_x_omega = fields.number_in("a_x_omega", "rad/s", 0.0, 0.0, 1000.0);
+    drive.mu_k = fields.number_in("mu_k", "", 0.0, 10.0);
+    drive.mu_s = fields.number_in("mu_s", "", drive.mu_k, 0.0, 10.0);
+    drive.g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
+    drive.rotation = fields.flag("rotation").value_or(false);
+    drive.centre_height = fields.number_in("centre_height", "m", 0.0, 0.0, 100.0);
+    drive.start = fields.number_in("start", "m", 0.0, -1000.0, 1000.0);
+    const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
+    const double step = fields.number_in("step", "s", 1e-6, 1.0);
+    const std::string law_name = fields.text("law", "coulomb");
+    const WedgeLaw law = law_name == "coulomb"   ? WedgeLaw::coulomb
+                         : law_name == "article" ? WedgeLaw::article
+                                                 : throw InvalidInput("theory.wedge: law '" + law_name +
+                                                                      "' is neither \"coulomb\" nor \"article\"");
+    // Twelve lists of this many numbers stay well inside the script's 64 MB.
+    if (duration / step > 100000.0) {
+      throw InvalidInput("theory.wedge: duration / step is over 100000 samples; take a longer step or a shorter run");
+    }
+    const WedgeRun run = solve_wedge(drive, law, duration, step);
+    const auto list = [&](const char* key, auto of) {
+      lua_createtable(state, static_cast<int>(run.samples.size()), 0);
+      for (std::size_t i = 0; i < run.samples.size(); ++i) {
+        of(run.samples[i]);
+        lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+      }
+      lua_setfield(state, -2, key);
+    };
+    const auto number_list = [&](const char* key, double WedgeState::*field) {
+      list(key, [&](const WedgeState& sample) { lua_pushnumber(state, sample.*field); });
+    };
+    lua_createtable(state, 0, 16);
+    number_list("slide", &WedgeState::slide);
+    number_list("speed", &WedgeState::speed);
+    number_list("height", &WedgeState::height);
+    number_list("normal", &WedgeState::normal);
+    number_list("friction", &WedgeState::friction);
+    number_list("work_gravity", &WedgeState::work_gravity);
+    number_list("work_pseudo", &WedgeState::work_pseudo);
+    number_list("work_friction", &WedgeState::work_friction);
+    number_list("work_landings", &WedgeState::work_landings);
+    number_list("work_rotation", &WedgeState::work_rotation);
+    list("kinetic", [&](const WedgeState& sample) { lua_pushnumber(state, kinetic_energy(drive, sample)); });
+    list("contact", [&](const WedgeState& sample) {
+      lua_pushstring(state, sample.contact == WedgeContact::stick ? "sticking"
+                            : sample.contact == WedgeContact::slip ? "slipping"
+                                                                   : "flying");
+    });
+    lua_createtable(state, static_cast<int>(run.events.size()), 0);
+    for (std::size_t i = 0; i < run.events.size(); ++i) {
+      const WedgeEvent& event = run.events[i];
+      lua_createtable(state, 0, 4);
+      set_number(state, "t", event.t);
+      lua_pushstring(state, name_of(event.kind));
+      lua_setfield(state, -2, "kind");
+      set_number(state, "slide", event.slide);
+      set_number(state, "speed", event.speed);
+      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(state, -2, "events");
+    lua_createtable(state, static_cast<int>(run.slip_windows.size()), 0);
+    for (std::size_t i = 0; i < run.slip_windows.size(); ++i) {
+      lua_createtable(state, 2, 0);
+      lua_pushnumber(state, run.slip_windows[i].first);
+      lua_rawseti(state, -2, 1);
+      lua_pushnumber(state, run.slip_windows[i].second);
+      lua_rawseti(state, -2, 2);
+      lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(state, -2, "slip_windows");
+    set_number(state, "step", step);
+    return 1;
+  });
+}
+
+}  // namespace theory_written
+}  // namespace frictionlab::lessons
