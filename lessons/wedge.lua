@@ -73,6 +73,9 @@ local function wedge_x(t)
   local half_turn = sin(0.5 * a_x_omega * t) / a_x_omega
   return 2 * a_x * half_turn * half_turn
 end
+local function pivot_acceleration(t) return a_x_omega == 0 and a_x or a_x * math.cos(a_x_omega * t) end
+-- The article's drive down the slope on a block held on the plank, m·(g·sin θ + a·cos θ).
+local function drive_along(t) return mass * (g * sin(theta(t)) + pivot_acceleration(t) * math.cos(theta(t))) end
 
 -- World -----------------------------------------------------------------------------------
 -- The plank's top face runs through its own origin, the pivot, so turning it about the origin
@@ -230,9 +233,8 @@ local function rocks_by(t)
       -- "first slip" below): the friction then is all the drive along the surface, F = m·a·cos θ
       -- + m·g·sin θ at t = 0, up to max(mu_s, mu_k)·N.
       if k == 1 and turning.contact[1] == "slipping" then
-        local drive = mass * (g * sin(theta(0)) + a_x * math.cos(theta(0)))
         local most = math.max(param.mu_s, param.mu_k) * turning.normal[1]
-        friction = math.max(-most, math.min(most, -drive))
+        friction = math.max(-most, math.min(most, -drive_along(0)))
       end
       -- At μ = w/h (2, the sliders' end) a block that slips, or is held at μ·N, needs exactly
       -- the most N·w/2 can give: balanced on its front edge, Box2D's single-precision solver
@@ -287,8 +289,7 @@ end
 -- article's m·(g·cos θ − a·sin θ), which does not depend on where the block is.
 local function turn_share(k)
   local t = (k - 1) * spacing
-  local a = a_x_omega == 0 and a_x or a_x * math.cos(a_x_omega * t)
-  return turning.normal[k] - mass * (g * math.cos(theta(t)) - a * sin(theta(t)))
+  return turning.normal[k] - mass * (g * math.cos(theta(t)) - pivot_acceleration(t) * sin(theta(t)))
 end
 -- Box2D solves each step's contact along the normal the step began with, so the turn's share
 -- of N reaches the world's normal force a step late: the world's N is the model's less how much
@@ -308,13 +309,9 @@ end
 local function on_the_edge_at_the_start()
   if turning.contact[1] ~= "slipping" or #turning.normal < 2 then return false end
   local limit = math.max(param.mu_s, param.mu_k)
-  local function drive(t)
-    local a = a_x_omega == 0 and a_x or a_x * math.cos(a_x_omega * t)
-    return math.abs(mass * (g * sin(theta(t)) + a * math.cos(theta(t))))
-  end
   local next_k = math.min(math.floor(h / spacing + 0.5) + 1, #turning.normal)
-  return drive(0) <= limit * (turning.normal[1] + late_share(1))
-         and drive((next_k - 1) * spacing) <= limit * turning.normal[next_k]
+  return math.abs(drive_along(0)) <= limit * (turning.normal[1] + late_share(1))
+         and math.abs(drive_along((next_k - 1) * spacing)) <= limit * turning.normal[next_k]
 end
 local function no_model(t)
   if on_the_edge_at_the_start() then return "on the edge at the start: no model" end
@@ -440,9 +437,10 @@ expect { "first lift-off", unit = "s",
   -- the model's N takes to change by 2 % of the weight there: sliding fast far out on a fast
   -- turn, Box2D's normal force sits up to 2 % of the weight off the model's (θ0 = 40°, 5.4 m/s,
   -- 4 m from the pivot: 0.26 N at 480 Hz and at 960 Hz alike), which is not explained yet.
-  -- And while the world's start still carries the block a_x·h/2 faster along the plank than
-  -- the models' (start_drift), the Coriolis push 2·m·θ'·(that speed) it brings, in the time N
-  -- takes to change by that much (a_x = 24 m/s², θ0 = 40°: 1.6 N, 2.5 ms).
+  -- And while the world's start still carries the block faster along the plank than the
+  -- models' (start_drift's gap speed, a_x·h/2 at first), the Coriolis push 2·m·θ'·(that speed)
+  -- it brings, in the time N takes to change by that much (a_x = 24 m/s², θ0 = 40°: 1.6 N,
+  -- 2.5 ms).
   tolerance = function()
     local t = first_event(turning, "lift-off")
     if not t then return 3 * step_length() end
@@ -483,8 +481,8 @@ expect { "ΔK over the first swing", unit = "J",
     return speed and 0.5 * mass * speed * speed or nil
   end,
   -- 2 % and 1 mJ, and how much the kinetic energy changes in the step the speed is read over;
-  -- and where the world's start still carries the block a_x·h/2 off the models' speed (see
-  -- start_drift), the energy that difference makes at that speed.
+  -- and where the world's start still carries the block off the models' speed (by a_x·h/2 at
+  -- first: see start_drift), the energy that difference makes at that speed.
   tolerance = function()
     local k = sample(first_swing())
     local _, off = start_drift(first_swing())
