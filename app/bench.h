@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "ui/chart.h"
+#include "draw/chart.h"
 
 namespace frictionlab {
 

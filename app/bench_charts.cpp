@@ -7,9 +7,9 @@
 #include <map>
 
 #include "app/bench.h"
-#include "ui/chart.h"
-#include "ui/headless.h"
-#include "ui/headless_render.h"
+#include "draw/chart.h"
+#include "draw/headless.h"
+#include "draw/headless_render.h"
 
 namespace frictionlab {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "app/bench.h"
 #include "app/table.h"
+#include "draw/chart.h"
 #include "physics/recommend.h"
-#include "ui/chart.h"
 
 namespace frictionlab {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "app/bench.h"
 #include "app/table.h"
+#include "draw/headless_render.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
-#include "ui/headless_render.h"
 
 namespace frictionlab {
 
@@ -36,7 +36,7 @@ std::string frame_speed(bool quick, std::ostream& out, const Progress& progress)
   const std::vector<std::string> names = lessons::builtin_lessons();
   for (const std::string& name : names) {
     lessons::Lesson lesson(lessons::resolve_lesson(name));
-    const ui::WorldFraming framing = ui::WorldFraming::of(lesson);
+    const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
     // Frames spread over the lesson, so plots with long records are timed too.
     const int frames = quick ? 4 : 40;
     const long steps_between = static_cast<long>(lesson.duration() * lesson.settings().hz / frames);

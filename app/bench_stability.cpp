@@ -8,9 +8,9 @@
 
 #include "app/bench.h"
 #include "app/table.h"
+#include "draw/chart.h"
+#include "draw/stability_chart.h"
 #include "physics/stability.h"
-#include "ui/chart.h"
-#include "ui/stability_chart.h"
 
 namespace frictionlab {
 namespace {

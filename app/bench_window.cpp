@@ -2,7 +2,7 @@
 // takes for each lesson at 60 frames a second (the lesson's steps for 1/60 s, then every
 // panel built), measured on the classroom's own code on a headless context. Drawing the lists
 // is the GPU's job in a classroom; here llvmpipe does it on other threads, timed apart.
-#include "ui/gl.h"
+#include "draw/gl.h"
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
@@ -11,11 +11,11 @@
 
 #include "app/bench.h"
 #include "app/table.h"
+#include "classroom/classroom.h"
+#include "draw/headless.h"
+#include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/recommend.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
-#include "ui/classroom.h"
 
 namespace frictionlab {
 namespace {

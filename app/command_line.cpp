@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "app/options.h"
+#include "classroom_state/mystery.h"
 #include "physics/materials.h"
-#include "ui/mystery.h"
 
 namespace frictionlab {
 namespace {

@@ -1,5 +1,5 @@
 // `frictionlab run --csv FILE`: one row per step, for a spreadsheet. Written whole or not at
-// all (ui/output_file.h), only over a CSV this program wrote, or to standard output with `-`.
+// all (files/output_file.h), only over a CSV this program wrote, or to standard output with `-`.
 #pragma once
 
 #include <memory>
@@ -7,8 +7,8 @@
 #include <set>
 #include <string>
 
+#include "files/output_file.h"
 #include "lessons/runtime/lesson.h"
-#include "ui/output_file.h"
 
 namespace frictionlab {
 

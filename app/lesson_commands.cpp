@@ -20,10 +20,10 @@
 #include "app/modes.h"
 #include "app/options.h"
 #include "app/table.h"
+#include "classroom_state/mystery.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/validation.h"
-#include "ui/mystery.h"
 
 namespace frictionlab {
 namespace {

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "app/modes.h"
+#include "classroom_state/setup_file.h"
 #include "physics/validation.h"
-#include "ui/setup_file.h"
 
 namespace frictionlab {
 

@@ -12,9 +12,9 @@
 #include "app/command_line.h"
 #include "app/install_paths.h"
 #include "app/modes.h"
+#include "files/output_file.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
-#include "ui/output_file.h"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "app/command_line.h"
+#include "classroom_state/mystery.h"
 #include "physics/scene.h"
-#include "ui/mystery.h"
 
 namespace frictionlab {
 

@@ -10,9 +10,9 @@
 #include "app/modes.h"
 #include "app/options.h"
 #include "app/table.h"
+#include "draw/headless_render.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
-#include "ui/headless_render.h"
 
 namespace frictionlab {
 namespace {
@@ -187,7 +187,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   require_record_fits(options.times.back(), lesson.settings().hz, lesson.scene().probes().size(),
                       "draw an earlier --at or lower --hz");
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
-  const ui::WorldFraming framing = ui::WorldFraming::of(lesson);
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
 
   std::unique_ptr<ui::HeadlessRenderer> renderer;
   try {

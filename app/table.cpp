@@ -13,7 +13,7 @@
 
 #include <unistd.h>
 
-#include "ui/output_file.h"
+#include "files/output_file.h"
 
 namespace frictionlab {
 

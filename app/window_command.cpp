@@ -10,9 +10,9 @@
 #include "app/command_line.h"
 #include "app/modes.h"
 #include "app/options.h"
+#include "desktop/window.h"
+#include "draw/image.h"
 #include "lessons/runtime/catalog.h"
-#include "ui/image.h"
-#include "ui/window.h"
 
 namespace frictionlab {
 namespace {

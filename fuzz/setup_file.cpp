@@ -1,4 +1,4 @@
-// Fuzz target: a prepared setup file from bytes (ui/setup_file.h). Besides not crashing, every
+// Fuzz target: a prepared setup file from bytes (classroom_state/setup_file.h). Besides not crashing, every
 // refusal is InvalidInput with a message, and what is read (the class's predictions too) is
 // written back by setup_text to a text that reads as the same setup.
 #include <cstddef>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "ui/setup_file.h"
+#include "classroom_state/setup_file.h"
 
 namespace {
 

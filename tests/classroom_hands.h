@@ -11,10 +11,10 @@
 #include <memory>
 #include <string>
 
+#include "classroom/classroom.h"
+#include "draw/headless.h"
+#include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
-#include "ui/classroom.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
 
 namespace frictionlab::ui {
 

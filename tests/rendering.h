@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
+#include "draw/camera.h"
+#include "draw/headless_render.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
-#include "ui/camera.h"
-#include "ui/headless_render.h"
 
 namespace frictionlab::ui {
 
@@ -20,11 +20,11 @@ constexpr int frame_width = 1280, frame_height = 720;
 // steps, as frictionlab render does).
 struct LessonAt {
   std::unique_ptr<lessons::Lesson> lesson;
-  WorldFraming framing;
+  lessons::WorldFraming framing;
 
   LessonAt(const std::string& name, std::map<std::string, std::string> set, double t)
       : lesson(std::make_unique<lessons::Lesson>(lessons::resolve_lesson(name), std::move(set))),
-        framing(WorldFraming::of(*lesson)) {
+        framing(lessons::WorldFraming::of(*lesson)) {
     step_to(t);
   }
   void step_to(double t) { lesson->step_to(t); }

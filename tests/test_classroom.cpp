@@ -12,17 +12,17 @@
 #include <fstream>
 #include <sstream>
 
+#include "classroom/key_taps.h"
 #include "classroom_hands.h"
-#include "ui/plain_words.h"
+#include "classroom_state/plain_words.h"
+#include "draw/headless.h"
+#include "draw/imgui_host.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson_benchmark.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
-#include "ui/key_taps.h"
 #include <backends/imgui_impl_opengl3.h>
-#include "ui/overlays.h"
-#include "ui/classroom.h"
+#include "classroom/classroom.h"
+#include "draw/overlays.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -472,7 +472,7 @@ expect { "last", predicted = function() return "stays" end, measured = function(
 )"));
   Playback playback(script.path(), {}, {});
   playback.run_to(0.1);
-  const LessonReadings& readings = playback.readings();
+  const lessons::LessonReadings& readings = playback.readings();
   ASSERT_EQ(readings.expectations.size(), 3u);
   EXPECT_FALSE(readings.expectations[0].failed);
   EXPECT_TRUE(readings.expectations[0].passes);

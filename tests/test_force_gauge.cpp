@@ -13,12 +13,13 @@
 #include <map>
 #include <sstream>
 
+#include "classroom/classroom.h"
+#include "classroom/force_gauge.h"
+#include "classroom/measuring_tools.h"
 #include "classroom_hands.h"
-#include "lessons/runtime/catalog.h"
-#include "ui/classroom.h"
+#include "draw/overlays.h"
 #include "lesson_scripts.h"
-#include "ui/measuring_tools.h"
-#include "ui/overlays.h"
+#include "lessons/runtime/catalog.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -268,7 +269,7 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
     ImGui::GetIO().MousePos = ImVec2(held.x + part * (to_x - held.x), held.y + part * (to_y - held.y));
     hands.frame(1.0 / 60.0, &record);
   }
-  const b2AABB box = body_box(block);
+  const b2AABB box = lessons::body_box(block);
   const Camera& camera = record.lanes.front().camera;
   const ImVec2 top_right = camera.to_screen(box.upperBound), bottom_left = camera.to_screen(box.lowerBound);
   ASSERT_GT(top_right.x, inset_at_first.x) << "the block was dragged to where the inset was";
@@ -335,7 +336,7 @@ TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
   ASSERT_EQ(stretches.size(), 1u);
   EXPECT_NEAR(stretches[0].from, 0.0, 1e-9);
   EXPECT_NEAR(stretches[0].to, hands.lesson().scene().time(), 0.02);  // let go in the last display frame
-  const LessonReadings& readings = playback.readings();
+  const lessons::LessonReadings& readings = playback.readings();
   // The breakaway row measured the lesson's push at breakaway: a third of a newton against
   // 39.2 N, since the hand did the pulling. Without the mark it is a failure.
   const auto breakaway = std::find_if(readings.expectations.begin(), readings.expectations.end(),

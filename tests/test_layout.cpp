@@ -16,17 +16,18 @@
 #include <string>
 #include <vector>
 
-#include "lessons/runtime/catalog.h"
+#include "classroom/classroom.h"
+#include "classroom/measuring_tools.h"
 #include "classroom_hands.h"
+#include "draw/frame.h"
+#include "draw/headless.h"
+#include "draw/headless_render.h"
+#include "draw/imgui_host.h"
+#include "draw/theme.h"
+#include "draw/words.h"
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/class_words.h"
 #include "rendering.h"
-#include "ui/frame.h"
-#include "ui/headless.h"
-#include "ui/headless_render.h"
-#include "ui/imgui_host.h"
-#include "ui/classroom.h"
-#include "ui/measuring_tools.h"
-#include "ui/theme.h"
-#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -922,7 +923,7 @@ TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
       const lessons::Lesson& lesson = window.playback().lesson();
       const b2Body* body = measured_body(lesson);
       ASSERT_NE(body, nullptr) << where;
-      const std::string named = class_words(std::find_if(lesson.scene().bodies().begin(), lesson.scene().bodies().end(),
+      const std::string named = lessons::class_words(std::find_if(lesson.scene().bodies().begin(), lesson.scene().bodies().end(),
                                                          [&](const auto& entry) { return entry.second == body; })->first) + ": v = ";
       int readouts = 0, numbers = 0;
       for (const FrameRecord::Lane& lane : record.lanes) {

@@ -12,10 +12,10 @@
 #include <sstream>
 
 #include "classroom_hands.h"
+#include "classroom_state/mystery.h"
+#include "classroom_state/playback.h"
+#include "draw/overlays.h"
 #include "lessons/runtime/lesson.h"
-#include "ui/mystery.h"
-#include "ui/overlays.h"
-#include "ui/playback.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+#include "draw/frame.h"
+#include "draw/overlays.h"
 #include "lesson_scripts.h"
 #include "rendering.h"
-#include "ui/frame.h"
-#include "ui/overlays.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -111,11 +111,11 @@ box { "block", material = "wood", width = 0.4, height = 0.2, on = slope, at = 1,
 )"));
   lessons::Lesson lesson(script.path());
   const Scene& scene = lesson.scene();
-  EXPECT_TRUE(is_ground(scene.body("ground")->GetFixtureList()));
-  EXPECT_FALSE(is_ground(scene.body("slope")->GetFixtureList()));
-  EXPECT_FALSE(is_ground(scene.body("block")->GetFixtureList()));
+  EXPECT_TRUE(lessons::is_ground(scene.body("ground")->GetFixtureList()));
+  EXPECT_FALSE(lessons::is_ground(scene.body("slope")->GetFixtureList()));
+  EXPECT_FALSE(lessons::is_ground(scene.body("block")->GetFixtureList()));
   // The framing covers the 150 m slope (about 148 m along the ground) but not the 400 m ground.
-  const b2AABB bounds = lesson_bounds(scene);
+  const b2AABB bounds = lessons::lesson_bounds(scene);
   EXPECT_GT(bounds.upperBound.x - bounds.lowerBound.x, 140.0f);
   EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 160.0f);
 }
@@ -132,9 +132,9 @@ box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0,
   lessons::Lesson lesson(script.path());
   const Scene& scene = lesson.scene();
   for (const b2Fixture* f = scene.body("floor")->GetFixtureList(); f != nullptr; f = f->GetNext()) {
-    EXPECT_TRUE(is_ground(f));
+    EXPECT_TRUE(lessons::is_ground(f));
   }
-  const b2AABB bounds = lesson_bounds(scene);
+  const b2AABB bounds = lessons::lesson_bounds(scene);
   EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 0.5f);
 }
 

@@ -9,15 +9,16 @@
 #include <string>
 
 #include "classroom_hands.h"
+#include "draw/chart.h"
+#include "draw/headless.h"
+#include "draw/imgui_host.h"
+#include "draw/panels.h"
+#include "draw/plots.h"
+#include "draw/words.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
+#include "lessons/runtime/class_words.h"
 #include "rendering.h"
-#include "ui/chart.h"
-#include "ui/headless.h"
-#include "ui/imgui_host.h"
-#include "ui/panels.h"
-#include "ui/plots.h"
-#include "ui/words.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -319,28 +320,28 @@ TEST(TheoryCurves, AShortPlotsFewYLabelsAreRoundValuesWithZero) {
 // A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
 // window's μs and μk, theta and omega their letters, a_x as aₓ.
 TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
-  EXPECT_EQ(class_words("friction_force"), "friction force");
-  EXPECT_EQ(class_words("slide_reduced"), "slide reduced");
-  EXPECT_EQ(class_words("mu_s"), "\u03bcs");
-  EXPECT_EQ(class_words("mu_k_top"), "\u03bck top");
-  EXPECT_EQ(class_words("six_feet_load_"), "six feet load");
-  EXPECT_EQ(class_words("__a__b"), "a b");
-  EXPECT_EQ(class_words("lubricated_mu"), "lubricated \u03bc");
-  EXPECT_EQ(class_words("mu_x"), "\u03bc x");
-  EXPECT_EQ(class_words("music_k"), "music k") << "mu only as a word of its own";
-  EXPECT_EQ(class_words("speed"), "speed");
+  EXPECT_EQ(lessons::class_words("friction_force"), "friction force");
+  EXPECT_EQ(lessons::class_words("slide_reduced"), "slide reduced");
+  EXPECT_EQ(lessons::class_words("mu_s"), "\u03bcs");
+  EXPECT_EQ(lessons::class_words("mu_k_top"), "\u03bck top");
+  EXPECT_EQ(lessons::class_words("six_feet_load_"), "six feet load");
+  EXPECT_EQ(lessons::class_words("__a__b"), "a b");
+  EXPECT_EQ(lessons::class_words("lubricated_mu"), "lubricated \u03bc");
+  EXPECT_EQ(lessons::class_words("mu_x"), "\u03bc x");
+  EXPECT_EQ(lessons::class_words("music_k"), "music k") << "mu only as a word of its own";
+  EXPECT_EQ(lessons::class_words("speed"), "speed");
   // The Greek letters wedge's sliders spelt out, and a letter's index below the line.
-  EXPECT_EQ(class_words("theta0"), "\u03b80");
-  EXPECT_EQ(class_words("omega"), "\u03c9");
-  EXPECT_EQ(class_words("a_x"), "a\u2093");
-  EXPECT_EQ(class_words("a_x_omega"), "a\u2093 \u03c9");
-  EXPECT_EQ(class_words("large_epsilon_distance"), "large \u03b5 distance") << "where_methods_fail's probes";
-  EXPECT_EQ(class_words("thetas"), "thetas") << "the letter's name with only digits after it";
-  EXPECT_EQ(class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
-  EXPECT_EQ(class_words("x_top"), "x top") << "an index is one letter";
+  EXPECT_EQ(lessons::class_words("theta0"), "\u03b80");
+  EXPECT_EQ(lessons::class_words("omega"), "\u03c9");
+  EXPECT_EQ(lessons::class_words("a_x"), "a\u2093");
+  EXPECT_EQ(lessons::class_words("a_x_omega"), "a\u2093 \u03c9");
+  EXPECT_EQ(lessons::class_words("large_epsilon_distance"), "large \u03b5 distance") << "where_methods_fail's probes";
+  EXPECT_EQ(lessons::class_words("thetas"), "thetas") << "the letter's name with only digits after it";
+  EXPECT_EQ(lessons::class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
+  EXPECT_EQ(lessons::class_words("x_top"), "x top") << "an index is one letter";
   lessons::Parameter push_rate;
   push_rate.name = "push_rate";
-  EXPECT_EQ(parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
+  EXPECT_EQ(lessons::parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
 }
 
 // What reads as a program's name rather than the subject's words: two word characters joined by
@@ -405,7 +406,7 @@ TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
       for (const std::string& choice : prediction.choices) check(entry.name, "prediction's choice", choice);
     }
     for (const lessons::Parameter& parameter : lesson.parameters()) {
-      check(entry.name, "slider", parameter_title(parameter));
+      check(entry.name, "slider", lessons::parameter_title(parameter));
       for (const std::string& choice : parameter.choices) check(entry.name, "slider's choice", choice);
     }
   }

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "draw/chart.h"
+#include "draw/frame.h"
+#include "draw/image.h"
+#include "draw/overlays.h"
 #include "rendering.h"
-#include "ui/chart.h"
-#include "ui/frame.h"
-#include "ui/image.h"
-#include "ui/overlays.h"
 
 namespace frictionlab::ui {
 namespace {

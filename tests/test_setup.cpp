@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "classroom_hands.h"
-#include "ui/setup_file.h"
-#include "ui/user_lessons.h"
+#include "classroom_state/setup_file.h"
+#include "classroom_state/user_lessons.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -12,9 +12,9 @@
 #include <filesystem>
 #include <set>
 
+#include "draw/image.h"
+#include "draw/theme.h"
 #include "rendering.h"
-#include "ui/image.h"
-#include "ui/theme.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "ui/user_lessons.h"
+#include "classroom_state/user_lessons.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "draw/frame.h"
+#include "draw/theme.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "rendering.h"
-#include "ui/frame.h"
-#include "ui/theme.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -30,7 +30,7 @@ local fast = box { "fast", material = "wood", width = 0.3, height = 0.1, on = up
 
 const ImVec2 display(1280.0f, 720.0f);
 
-std::vector<Camera> cameras_of(const lessons::Lesson& lesson, const WorldFraming& framing, ImVec2 size = display,
+std::vector<Camera> cameras_of(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 size = display,
                                float scale = 1.0f, const ViewAdjust& adjust = {}) {
   return world_cameras(lesson, framing, size, scale, ImVec2(0.0f, 0.0f), adjust);
 }
@@ -43,7 +43,7 @@ bool inside(const Camera& camera, ImVec2 point) {
 TEST(View, FollowKeepsTheBodyAtTheSamePlaceOnTheScreen) {
   lessons::ScriptFile script(two_blocks(R"(view { follow = fast, width = 2 })"));
   lessons::Lesson lesson(script.path());
-  const WorldFraming framing = WorldFraming::of(lesson);
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
   const ImVec2 before = cameras_of(lesson, framing).front().to_screen(lesson.scene().body("fast")->GetWorldCenter());
   lesson.step_to(0.5);
   const b2Body* fast = lesson.scene().body("fast");
@@ -60,7 +60,7 @@ TEST(View, FollowKeepsTheBodyAtTheSamePlaceOnTheScreen) {
 TEST(View, AWindowShowsItsCornersAndFillsOneSide) {
   lessons::ScriptFile script(two_blocks(R"(view { window = { -1, -0.5, 5, 3.5 } })"));
   lessons::Lesson lesson(script.path());
-  const WorldFraming framing = WorldFraming::of(lesson);
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
   lesson.step_to(0.5);  // a fixed window does not follow
   const Camera camera = cameras_of(lesson, framing).front();
   const FrameLayout layout = FrameLayout::of(display, 1.0f);
@@ -76,7 +76,7 @@ TEST(View, AWindowShowsItsCornersAndFillsOneSide) {
 TEST(View, LanesStackAStripPerBodyOnOneScaleAndOneStretchOfFloor) {
   lessons::ScriptFile script(two_blocks(R"(view { lanes = { fast, slow } })"));
   lessons::Lesson lesson(script.path());
-  const WorldFraming framing = WorldFraming::of(lesson);
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
   lesson.step_to(0.3);
   const std::vector<Camera> cameras = cameras_of(lesson, framing);
   ASSERT_EQ(cameras.size(), 2u);
@@ -110,7 +110,7 @@ view { lanes = { thrown, resting } }
 )"));
   for (const auto& [size, scale] : {std::pair{display, 1.0f}, std::pair{ImVec2(1920.0f, 1080.0f), 1.35f}}) {
     lessons::Lesson lesson(script.path());
-    const WorldFraming framing = WorldFraming::of(lesson);
+    const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
     const b2Body* thrown = lesson.scene().body("thrown");
     float lane_still = 0.0f;
     for (const double t : {0.0, 0.15, 0.3}) {
@@ -125,7 +125,7 @@ view { lanes = { thrown, resting } }
       if (t == 0.15) {
         EXPECT_FLOAT_EQ(floor_y, lane_still) << "the lane stays still while the box falls";
       }
-      EXPECT_GE(0.4f * lane.pixels_per_metre, WorldFraming::min_body_pixels * scale - 1e-3f) << "readable";
+      EXPECT_GE(0.4f * lane.pixels_per_metre, min_body_pixels * scale - 1e-3f) << "readable";
       // The resting box's lane is on the box's own height, as every resting lane is.
       EXPECT_FLOAT_EQ(cameras[1].centre.y, lesson.scene().body("resting")->GetWorldCenter().y);
     }
@@ -135,7 +135,7 @@ view { lanes = { thrown, resting } }
 TEST(View, TheWheelZoomAndTheDragPanComeOnTopOfTheLessonsView) {
   lessons::ScriptFile script(two_blocks(R"(view { follow = slow })"));
   lessons::Lesson lesson(script.path());
-  const WorldFraming framing = WorldFraming::of(lesson);
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
   const Camera plain = cameras_of(lesson, framing).front();
   ViewAdjust adjust;
   adjust.zoom = 2.0f;
@@ -149,7 +149,7 @@ TEST(View, TheWheelZoomAndTheDragPanComeOnTopOfTheLessonsView) {
 TEST(View, ABodyTheViewNamesThatAReloadRemovedFallsBackToTheWholeLesson) {
   lessons::ScriptFile script(two_blocks(R"(view { follow = fast })"));
   lessons::Lesson lesson(script.path());
-  WorldFraming framing = WorldFraming::of(lesson);
+  lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
   framing.view.bodies = {"gone"};
   const std::vector<Camera> cameras = cameras_of(lesson, framing);
   ASSERT_EQ(cameras.size(), 1u);
@@ -190,9 +190,9 @@ void check_bodies_shown(const LessonAt& at, const std::string& what) {
       const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
       EXPECT_TRUE(inside(camera, centre)) << where << ": " << name << " is out of the picture";
       EXPECT_FALSE(inset.Contains(centre)) << where << ": " << name << " is under the free-body diagram";
-      const b2AABB box = body_box(body);
+      const b2AABB box = lessons::body_box(body);
       const float longer = std::max(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
-      EXPECT_GE(longer * camera.pixels_per_metre, WorldFraming::min_body_pixels * screen.scale - 0.5f)
+      EXPECT_GE(longer * camera.pixels_per_metre, min_body_pixels * screen.scale - 0.5f)
           << where << ": " << name << " is drawn " << longer * camera.pixels_per_metre << " px long";
     }
   }

@@ -13,12 +13,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "ui/framebuffer.h"
-#include "ui/gl.h"
-#include "ui/glfw_keys.h"
-#include "ui/image.h"
-#include "ui/imgui_host.h"
-#include "ui/setup_file.h"
+#include "classroom_state/setup_file.h"
+#include "desktop/glfw_keys.h"
+#include "draw/framebuffer.h"
+#include "draw/gl.h"
+#include "draw/image.h"
+#include "draw/imgui_host.h"
 #include "web/browser_files.h"
 
 namespace frictionlab::web {

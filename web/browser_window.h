@@ -1,4 +1,4 @@
-// The classroom in a web page: the browser's platform adapter, as ui/window.h is the desktop's.
+// The classroom in a web page: the browser's platform adapter, as desktop/window.h is the desktop's.
 // The canvas (#canvas) through emscripten's GLFW and WebGL 2, ImGui's GLFW input, touch as the
 // mouse, the canvas following the page's size at the screen's own pixel density, the browser's
 // full screen, and a loop that stops drawing while nothing can change.
@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "ui/classroom.h"
+#include "classroom/classroom.h"
 
 namespace frictionlab::web {
 

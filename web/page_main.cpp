@@ -20,12 +20,12 @@
 
 #include <imgui_internal.h>
 
+#include "classroom/classroom.h"
+#include "classroom_state/plain_words.h"
+#include "classroom_state/playback.h"
+#include "classroom_state/setup_file.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/validation.h"
-#include "ui/classroom.h"
-#include "ui/plain_words.h"
-#include "ui/playback.h"
-#include "ui/setup_file.h"
 #include "web/browser_files.h"
 #include "web/browser_window.h"
 
@@ -117,7 +117,7 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The lessons packaged with the page; a student's own are in the home folder (ui/user_lessons.h).
+  // The lessons packaged with the page; a student's own are in the home folder (classroom_state/user_lessons.h).
   ::setenv("FRICTIONLAB_LESSONS", "/lessons", 1);
   // emscripten starts with a umask of 0777: files the page writes (a student's lesson, a
   // screenshot) would be unreadable, to the page itself too. The usual 022.
@@ -257,7 +257,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
   return hand_over(classroom->script_words(classroom->playback().notice() + " " + classroom->status()));
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
-// Lua's message in plain words, for the page's editor and bar (ui/plain_words.h).
+// Lua's message in plain words, for the page's editor and bar (classroom_state/plain_words.h).
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(ui::plain_words(message)); }
 // An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
 // ("x0 y0 x1 y1 scroll font"), or "" when no such panel was drawn.

@@ -35,4 +35,4 @@ foreach(name test_lesson_runtime test_builtin_lessons test_world_functions test_
 endforeach()
 frictionlab_web_test(test_lesson_errors frictionlab_lessons)
 target_compile_definitions(web_test_lesson_errors PRIVATE FRICTIONLAB_BROKEN_LESSONS="${tests_folder}/broken_lessons")
-frictionlab_web_test(test_user_lessons frictionlab_ui)
+frictionlab_web_test(test_user_lessons frictionlab_classroom_state)

@@ -1,0 +1,630 @@
+// ImVec2 arithmetic for ImRect.
+#define IMGUI_DEFINE_MATH_OPERATORS
+#include "classroom/classroom.h"
+
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <utility>
+
+#include "classroom/text_boxes.h"
+#include "classroom_state/plain_words.h"
+#include "draw/frame.h"
+#include "draw/image.h"
+#include "draw/text_record.h"
+#include "files/output_file.h"
+#include "lessons/runtime/catalog.h"
+
+namespace frictionlab::ui {
+namespace {
+
+}  // namespace
+
+std::string lesson_name(const std::string& script_path) { return std::filesystem::path(script_path).stem().string(); }
+
+Classroom::Classroom(ClassroomOptions options)
+    : window_(options.window),
+      lock_(options.lock.begin(), options.lock.end()),
+      lock_from_(options.lock_from),
+      overrides_(options.overrides),
+      output_folder_(options.output_folder),
+      script_paths_(options.script_paths),
+      browser_(options.browser) {
+  const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
+  try {
+    playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
+    check_lock(playback_->lesson());
+    if (mystery_) mystery_tab_.begin();
+    predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
+  } catch (const lessons::ScriptError& error) {
+    // A student's broken script: show why beside a working lesson, and open it once it builds,
+    // with the --set values and the lock it was opened with.
+    failed_script_ = options.lesson;
+    failed_error_ = error.what();
+    failed_stamp_ = stamp;
+    playback_ = std::make_unique<Playback>(lessons::resolve_lesson(lessons::builtin_lessons().front()),
+                                           std::map<std::string, std::string>{}, options.settings);
+  }
+  playback_->set_speed(window_.speed);
+  // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
+  // predicts, before anything moves; Space plays. A stopwatch the last class left shown is armed
+  // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
+  tools_.on = window_.tools;
+  tools_.arm_stopwatch(0.0, false);
+  if (!options.opening_notice.empty()) status_ = options.opening_notice;
+}
+
+std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                                   const StepSettings& settings, const std::optional<MysteryChoice>& choice,
+                                                   std::optional<Mystery>& mystery) const {
+  auto playback = std::make_unique<Playback>(path, overrides, settings);
+  if (!choice) return playback;
+  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
+  Mystery drawn(*choice, playback->lesson());
+  for (const auto& [name, value] : drawn.settings()) {
+    if (overrides.count(name) > 0) {
+      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
+    }
+    overrides[name] = value;
+  }
+  playback = std::make_unique<Playback>(path, overrides, settings);
+  mystery = std::move(drawn);
+  return playback;
+}
+
+void Classroom::forget_interaction() {
+  control_errors_.clear();
+  pair_open_.clear();
+  parameters_opened_ = false;
+  sliding_.reset();
+  hand_held_ = false;
+  view_adjust_ = {};
+  held_view_.reset();
+  panning_from_.reset();
+  failed_script_.clear();
+  tools_.stopwatch.reset();  // it timed a run of the lesson that closed
+}
+
+void Classroom::check_lock(const lessons::Lesson& lesson) const {
+  for (const std::string& name : lock_) {
+    bool known = false;
+    for (const char* setting : lockable_settings) known = known || name == setting;
+    for (const lessons::Parameter& parameter : lesson.parameters()) known = known || name == parameter.name;
+    if (!known) {
+      std::string controls;
+      for (const lessons::Parameter& parameter : lesson.parameters()) controls += parameter.name + ", ";
+      throw InvalidInput("--lock " + name + ": " + lesson.path() + " has no control of that name; its controls: " +
+                         controls + "hz, substeps, friction");
+    }
+  }
+}
+
+float Classroom::ui_scale(ImVec2 display) const {
+  const float fit = frame_scale(static_cast<int>(display.x), static_cast<int>(display.y));
+  // Projector mode: a third larger, text and lines alike, for the back of the room.
+  return std::max(0.5f, fit) * (window_.projector ? 1.35f : 1.0f);
+}
+
+bool Classroom::shown(const std::string& control_name) const { return lock_.empty() || lock_.count(control_name) > 0; }
+
+std::optional<ImRect> Classroom::control(const std::string& name) const {
+  const auto found = controls_.find(name);
+  if (found == controls_.end()) return std::nullopt;
+  return found->second;
+}
+
+void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record) {
+  fonts_ = &fonts;
+  std::optional<TextRecording> noting;
+  if (record != nullptr) {
+    *record = FrameRecord{};
+    noting.emplace(&record->texts);
+  }
+  controls_.clear();
+  const float s = fonts.scale;
+  handle_keys();
+  // One setting of the cheapest-setting search a frame: the window stays live while it measures.
+  cheapest_.measure_next();
+  playback_->advance(wall_seconds);
+  const double watched = wall_seconds + std::exchange(waited_, 0.0);
+  playback_->watch_file(watched);
+  try_failed_script(watched);
+
+  tools_.on = window_.tools;
+  tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
+  ImGui::PushFont(fonts.body);
+  menu_bar();
+  const float menu_height = ImGui::GetFrameHeight();
+  const float transport_height = transport_shape(display.x).height;
+  // The stopwatch over the title: in the world's first lane it was written across the lanes'
+  // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
+  const float stopwatch_height = stopwatch_strip_height();
+  if (stopwatch_height > 0.0f) stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height));
+  ImGui::PopFont();
+  const ImVec2 origin(0.0f, menu_height + stopwatch_height);
+  const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
+  hold_view(origin, area, s);
+
+  FrameStyle style;
+  style.theme = window_.theme;
+  style.fonts = &fonts;
+  style.origin = origin;
+  style.readings = &playback_->readings();
+  if (!script_paths_ && !playback_->readings().error.empty()) {
+    shown_readings_ = playback_->readings();
+    shown_readings_.error = script_words(shown_readings_.error);
+    style.readings = &shown_readings_;
+  }
+  if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
+  style.view_adjust = view_adjust_;
+  style.record = record;
+  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
+    parameters_panel(corner, size, folded);
+  };
+  style.world_tools = [this](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                             float newtons_to_pixels,
+                             LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
+  if (!playback_->gauge().empty()) {
+    style.extra_plot_title = gauge_plot_title();
+    style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
+    style.show_extra_plot = hand_held_;
+  }
+  style.hidden = hidden_values();
+  style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
+  style.more_tabs = [this, s] {
+    if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
+    if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
+      change_settings(*use);
+    }
+    // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
+    // (whose boundary would give μs away until the reveal anyway).
+    if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
+  };
+  // Opened by the teacher for one run's comparison: the next run folds it again.
+  if (!run_played()) parameters_opened_ = false;
+  forget_outdated_predictions();
+  predictions_style(style);
+  ImGui::PushFont(fonts.body);
+  style.parameters_heights = parameters_heights();
+  ImGui::PopFont();
+  build_frame(playback_->lesson(), playback_->framing(), style, area);
+
+  ImGui::PushFont(fonts.body);
+  handle_mouse(origin, area, s);
+  const FrameLayout layout = FrameLayout::of(area, s, origin);
+  // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
+  messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
+           layout.world_size.x - 12.0f * s);
+  transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
+  help_panel();
+  stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
+  open_script_.draw(*this, s, theme(window_.theme));
+  if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
+    status_ = said;
+  }
+  ImGui::PopFont();
+
+  // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
+  // the panels were reading.
+  for (const auto& [name, text] : pending_values_) set_value(name, text);
+  pending_values_.clear();
+  after_keys();
+}
+
+namespace {
+
+// How many of ImGui's open popups are dialogs (modal, up to the topmost one); those above them
+// are menus: the menu bar's, a combo's list, a tab's menu.
+int dialog_levels() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  int level = g.OpenPopupStack.Size;
+  while (level > 0) {
+    const ImGuiWindow* popup = g.OpenPopupStack[level - 1].Window;
+    if (popup != nullptr && (popup->Flags & ImGuiWindowFlags_Modal) != 0) break;
+    --level;
+  }
+  return level;
+}
+
+}  // namespace
+
+void Classroom::handle_keys() {
+  std::vector<std::pair<Key, bool>> taps;
+  taps.swap(taps_);
+  const auto hit = [&](Key key, bool ctrl) {
+    return std::find(taps.begin(), taps.end(), std::make_pair(key, ctrl)) != taps.end();
+  };
+  int dialogs = dialog_levels();
+  const bool menu_open = ImGui::GetCurrentContext()->OpenPopupStack.Size > dialogs;
+  Typing typed = typing();
+  // Escape with a dialog open closes it, doing nothing it offers, as its Cancel does (the trial's
+  // teacher pressed Escape to leave "Save as a setup" and it stayed); a menu over a dialog closes
+  // first. Before the frame's dialogs are drawn, so the one closed draws nothing this frame and
+  // a path being typed in it goes with it.
+  if (hit(Key::escape, false) && dialogs > 0) {
+    if (menu_open) {
+      close_menus_ = true;
+      return;
+    }
+    ImGui::ClosePopupToLevel(dialogs - 1, true);
+    // The keys pressed after Escape in the same frame are the window's again (a quick Escape,
+    // Space closes the dialog and plays), or the dialog's below if one is still open; the typing
+    // was in the dialog closed. (The frame's taps keep no order: a key pressed just before the
+    // Escape counts too.)
+    dialogs = dialog_levels();
+    typed = Typing::nothing;
+    std::erase(taps, std::make_pair(Key::escape, false));
+  }
+  // Space in a box that takes a number (classroom/text_boxes.h) ends the typing as Enter does (the value
+  // kept; ImGui 1.86 reads Enter from the key's state, so it is pressed for this frame only) and
+  // then plays: a teacher types the class's answer and presses Space to start. The box lets no
+  // blank in. In a box of free text (a file's name), Space is typed.
+  if (typed == Typing::number && hit(Key::space, false)) {
+    ImGuiIO& io = ImGui::GetIO();
+    enter_for_typing_ = io.KeysDown[io.KeyMap[ImGuiKey_Enter]];
+    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = true;
+    io.KeysDownDuration[io.KeyMap[ImGuiKey_Enter]] = 0.0f;
+    if (dialogs == 0) play_after_typing_ = true;
+    close_menus_ = menu_open;
+    return;
+  }
+  // Typing a value or a path, or a dialog open: the other keys are the text's or the dialog's
+  // (Escape in a box puts its text back, as ImGui does).
+  if (typed != Typing::nothing || dialogs > 0) return;
+  // A menu open: Escape closes it; a shortcut closes it and acts (the class watches the run, not
+  // the menu; the trial's Space did nothing while the Tools menu was open).
+  if (menu_open && !taps.empty()) close_menus_ = true;
+  if (hit(Key::escape, false)) return;
+  if (hit(Key::s, true)) request_screenshot();
+  if (hit(Key::e, true)) save_history();
+  if (hit(Key::space, false)) playback_->toggle();
+  if (hit(Key::period, false)) playback_->step_once();
+  if (hit(Key::comma, false)) {
+    playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
+  }
+  if (hit(Key::r, false)) playback_->reset();
+  if (hit(Key::f5, false)) playback_->reload();
+  if (hit(Key::f11, false)) full_screen_toggle_ = true;
+  if (hit(Key::f1, false)) window_.help = !window_.help;
+  if (hit(Key::p, false)) window_.projector = !window_.projector;
+  if (hit(Key::t, false) && theory_hidden()) predictions_.revealed = true;
+  const double now = playback_->lesson().scene().time();
+  if (hit(Key::w, false)) {
+    window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
+    tools_.stopwatch.start_stop(now);
+  }
+  if (hit(Key::l, false)) tools_.stopwatch.lap(now);
+  // The plots' page buttons are drawn as ← and →: the keys turn the pages too.
+  if (hit(Key::left, false)) --turn_plot_pages_;
+  if (hit(Key::right, false)) ++turn_plot_pages_;
+  if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
+}
+
+void Classroom::after_keys() {
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  if (enter_for_typing_) {
+    g.IO.KeysDown[g.IO.KeyMap[ImGuiKey_Enter]] = *enter_for_typing_;
+    enter_for_typing_.reset();
+  }
+  // After the frame, so that a box in a menu took its Enter first.
+  if (close_menus_) ImGui::ClosePopupToLevel(dialog_levels(), true);
+  close_menus_ = false;
+  // The Space that ended the typing plays once the value it kept has been set (a rebuild first).
+  if (play_after_typing_) playback_->toggle();
+  play_after_typing_ = false;
+}
+
+void Classroom::run_to(double t) {
+  tools_.on = window_.tools;
+  tools_.follow(playback_->lesson(), false);
+  playback_->run_to(t);
+}
+
+bool Classroom::idle() const {
+  return !playback_->playing() && !cheapest_.measuring() && !hand_held_ && !panning_from_ && !screenshot_request_;
+}
+
+void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {
+  if (!held_view_) return;
+  if (!hand_held_ || playback_->lesson().scene().grabbed() == nullptr) {
+    view_adjust_.pan = held_view_->pan;
+    held_view_.reset();
+    return;
+  }
+  const std::vector<Camera> cameras =
+      ui::world_cameras(playback_->lesson(), playback_->framing(), size, scale, origin, view_adjust_);
+  if (drag_lane_ >= cameras.size()) return;
+  // The same world point under the same screen point: the mouse's place means what it meant.
+  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].to_world(held_view_->anchor);
+  if (shift.IsValid()) view_adjust_.pan += shift;
+}
+
+const Camera& Classroom::world_camera_at(ImVec2 point) const {
+  for (const Camera& camera : cameras_) {
+    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
+  }
+  return cameras_.front();
+}
+
+void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
+  ImGuiContext& context = *ImGui::GetCurrentContext();
+  const ImGuiIO& io = ImGui::GetIO();
+  lessons::Lesson& lesson = playback_->lesson();
+  Scene& scene = lesson.scene();
+  const FrameLayout layout = FrameLayout::of(size, scale, origin);
+  cameras_ = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
+  // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
+  // own body's height, so the same screen point is another world point in the next lane.
+  const bool dragging = (hand_held_ || panning_from_) && drag_lane_ < cameras_.size();
+  const Camera& camera = dragging ? cameras_[drag_lane_] : world_camera_at(io.MousePos);
+  const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
+  const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
+  const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
+                          world.Contains(io.MousePos) && !inset.Contains(io.MousePos);
+  if (over_world && io.MouseWheel != 0.0f) {
+    // Zoom about the point under the mouse: it stays where it is on the screen.
+    const b2Vec2 under = camera.to_world(io.MousePos);
+    view_adjust_.zoom = std::clamp(view_adjust_.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
+    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
+    const auto lane = static_cast<std::size_t>(&camera - cameras_.data());
+    const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
+    if (shift.IsValid()) view_adjust_.pan += shift;
+  }
+  // A double click on empty space (not on a body, which the first click took hold of).
+  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !hand_held_) {
+    view_adjust_ = {};
+    panning_from_.reset();
+    return;
+  }
+  if (scene.grabbed() == nullptr && over_world && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    drag_lane_ = static_cast<std::size_t>(&camera - cameras_.data());
+    const b2Vec2 point = camera.to_world(io.MousePos);
+    for (const auto& [name, body] : scene.bodies()) {
+      if (body->GetType() != b2_dynamicBody) continue;
+      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+        if (fixture->TestPoint(point)) {
+          playback_->grab(name, body->GetLocalPoint(point), point);
+          hand_held_ = true;
+          held_view_ = HeldView{camera.centre, camera.anchor, view_adjust_.pan};
+          if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
+          break;
+        }
+      }
+      if (hand_held_) break;
+    }
+    // Empty space: the drag pans the view, holding that point of the world under the mouse.
+    if (!hand_held_) panning_from_ = point;
+  }
+  if (panning_from_) {
+    if (!io.MouseDown[ImGuiMouseButton_Left]) {
+      panning_from_.reset();
+    } else {
+      const b2Vec2 shift = *panning_from_ - camera.to_world(io.MousePos);
+      if (shift.IsValid()) view_adjust_.pan += shift;  // a view squeezed to nothing has no scale to pan by
+    }
+  }
+  // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves
+  // nor lets go of it. A rebuild or a step back takes the user's hand away.
+  if (scene.grabbed() == nullptr) hand_held_ = false;
+  if (hand_held_) {
+    if (!io.MouseDown[ImGuiMouseButton_Left]) {
+      playback_->release();
+      hand_held_ = false;
+      // "Holding block: press Space..." is over once the hand lets go.
+      if (status_.rfind("Holding ", 0) == 0) status_.clear();
+      return;
+    }
+    const b2Vec2 target = camera.to_world(io.MousePos);
+    if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
+    // "press Space to play" is done with once it plays.
+    if (playback_->playing() && status_.rfind("Holding ", 0) == 0) status_.clear();
+  }
+  // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
+}
+
+void Classroom::change_settings(const StepSettings& settings) {
+  try {
+    playback_->set_settings(settings);
+  } catch (const InvalidInput& error) {
+    status_ = error.what();
+  }
+}
+
+void Classroom::set_value(const std::string& name, const std::string& text) {
+  try {
+    const std::string before = parameter_text(playback_->lesson().parameter(name));
+    playback_->set_parameter(name, text);
+    control_errors_.erase(name);
+    keep_mystery(name, before);
+  } catch (const InvalidInput& error) {
+    control_errors_[name] = error.what();
+  }
+}
+
+std::string Classroom::script_words(const std::string& text) const {
+  if (script_paths_) return text;
+  // Each path to a ".lua" file in the text is left as the file's name: "/a/b/my_push.lua:26: x"
+  // reads "my_push.lua:26: x", "Reloaded /lessons/push.lua." reads "Reloaded push.lua.".
+  std::string words;
+  std::size_t from = 0;
+  for (std::size_t end = text.find(".lua"); end != std::string::npos; end = text.find(".lua", end + 4)) {
+    // The path's start: after the blank, quote or bracket before it.
+    std::size_t start = text.find_last_of(" \n\t'\"(", end);
+    start = start == std::string::npos || start < from ? from : start + 1;
+    const std::size_t last_slash = text.rfind('/', end);
+    if (last_slash == std::string::npos || last_slash < start) continue;
+    words += text.substr(from, start - from);
+    from = last_slash + 1;
+  }
+  return words + text.substr(from);
+}
+
+std::string Classroom::running_script_error() const {
+  if (playback_->lesson().failed()) return playback_->lesson().last_error();
+  if (!playback_->readings().error.empty()) return playback_->readings().error;
+  return playback_->lesson().theory_error();
+}
+
+void Classroom::messages(ImVec2 corner, float width) {
+  std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
+  // A script's mistake, and under it Lua's message in plain words when it is a common one.
+  const auto mistake = [&](const std::string& message, const std::string& then) {
+    lines.push_back({script_words(message) + then, true});
+    if (std::string plain = plain_words(message); !plain.empty()) lines.push_back({std::move(plain), false});
+  };
+  if (!failed_script_.empty()) {
+    mistake(failed_error_, "  (showing " + lesson_name(playback_->lesson().path()) + " until " + lesson_name(failed_script_) + ".lua builds)");
+  }
+  if (!playback_->script_error().empty()) mistake(playback_->script_error(), "  (the last good version keeps running)");
+  if (browser_ && playback_->lesson().failed()) {
+    // The page's editor is where the student mends it (the desktop's advice is to save the file).
+    mistake(playback_->lesson().last_error(), ". Mend it in the editor (Edit lesson) and Apply, or press R to start again.");
+  } else if (!playback_->problem().empty()) {
+    mistake(playback_->problem(), "");
+  }
+  if (lines.empty()) return;
+  const Theme& colours = theme(window_.theme);
+  ImGui::SetNextWindowPos(corner, ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, FLT_MAX));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoMove;
+  if (ImGui::Begin("###messages", nullptr, flags)) {
+    ImGui::PushTextWrapPos(0.0f);
+    for (const auto& [text, fault] : lines) {
+      ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));
+      shown_text(text.c_str());
+      ImGui::PopStyleColor();
+    }
+    ImGui::PopTextWrapPos();
+    controls_["messages"] = ImRect(ImGui::GetWindowPos(), ImGui::GetWindowPos() + ImGui::GetWindowSize());
+  }
+  ImGui::End();
+}
+
+std::string Classroom::open(const std::string& name_or_path) {
+  try {
+    // "~/steep_slope.lua", as a shell would have it.
+    const char* home = std::getenv("HOME");
+    const std::string named = name_or_path.rfind("~/", 0) == 0 && home != nullptr ? home + name_or_path.substr(1) : name_or_path;
+    const std::string path = lessons::resolve_lesson(named);
+    // The command line's --set values belong to the script it named.
+    const bool named_script = path == failed_script_;
+    auto next = std::make_unique<Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
+                                           playback_->lesson().settings());
+    check_lock(next->lesson());
+    next->set_speed(playback_->speed());
+    // Paused at t = 0, as a lesson opens.
+    playback_ = std::move(next);
+    mystery_.reset();  // it was a pair of the lesson that closed
+    predictions_ = {};
+    forget_interaction();
+    return "";
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+void Classroom::try_failed_script(double wall_seconds) {
+  if (failed_script_.empty()) return;
+  since_failed_check_ += wall_seconds;
+  if (since_failed_check_ < 0.25) return;
+  since_failed_check_ = 0.0;
+  const FileStamp stamp = file_stamp(failed_script_);
+  if (stamp == failed_stamp_) return;
+  failed_stamp_ = stamp;
+  const std::string script = failed_script_;
+  if (std::string error = open(script); !error.empty()) {
+    failed_script_ = script;
+    failed_error_ = error;
+  }
+}
+
+std::optional<std::string> Classroom::take_screenshot_request() {
+  auto request = std::move(screenshot_request_);
+  screenshot_request_.reset();
+  return request;
+}
+
+void Classroom::screenshot_done(const std::string& path, const std::string& error) {
+  status_ = error.empty() ? "Screenshot saved to " + path : "Could not save the screenshot: " + error;
+}
+
+bool Classroom::take_open_file_request() { return std::exchange(open_file_request_, false); }
+
+bool Classroom::take_full_screen_toggle() {
+  const bool toggle = full_screen_toggle_;
+  full_screen_toggle_ = false;
+  return toggle;
+}
+
+std::string Classroom::output_path(const std::string& stem, const std::string& extension) const {
+  char time[32];
+  std::snprintf(time, sizeof time, "_t%.2f", playback_->lesson().scene().time());
+  return unused_path(output_folder_, stem + time, extension);
+}
+
+void Classroom::request_screenshot() {
+  try {
+    screenshot_request_ = output_path("frictionlab_" + lesson_name(playback_->lesson().path()), ".png");
+  } catch (const std::exception& error) {
+    status_ = std::string("Could not take a screenshot: ") + error.what();
+  }
+}
+
+void Classroom::save_history() {
+  try {
+    status_ = "History saved to " + export_history();
+  } catch (const std::exception& error) {
+    status_ = std::string("Could not save the history: ") + error.what();
+  }
+}
+
+std::string Classroom::export_history() {
+  const lessons::Lesson& lesson = playback_->lesson();
+  const Scene& scene = lesson.scene();
+  std::ostringstream csv;
+  csv.precision(9);
+  // The values that made the run, so a file found later says which run it is; a mystery's are "?".
+  std::string settings = "# FrictionLab history of " + lesson.path() + ";";
+  const HiddenValues hidden = hidden_values();
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    settings += " " + parameter.name + " = " + (hidden.hides(parameter.name) ? "?" : parameter.shown()) + ";";
+  }
+  std::replace(settings.begin(), settings.end(), ',', ';');  // one field: a spreadsheet shows the line in its first cell
+  csv << settings << '\n';
+  csv << "t";
+  for (const Probe& probe : scene.probes()) {
+    const std::string& unit = lesson.probe_unit(probe.name);
+    csv << ',' << probe.name << (unit.empty() ? "" : " (" + unit + ")");
+  }
+  // The mouse's hand: whether it pulled in the step that ended at the row's time, and what its
+  // force gauge read (empty where it did not pull).
+  csv << ",any_contact_slipping,hand_pulled,gauge (N)\n";
+  const std::vector<GaugeSample>& gauge = playback_->gauge().samples();
+  std::size_t next_sample = 0;
+  for (std::size_t i = 0; i < scene.times().size(); ++i) {
+    csv << scene.times()[i];
+    for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
+    csv << ',' << static_cast<int>(scene.slipping()[i]);
+    const long frame = static_cast<long>(i) + 1;  // row i is the end of the scene's frame i + 1
+    while (next_sample < gauge.size() && gauge[next_sample].frame < frame) ++next_sample;
+    if (next_sample < gauge.size() && gauge[next_sample].frame == frame) {
+      csv << ",1," << gauge[next_sample].force << '\n';
+    } else {
+      csv << ",0,\n";
+    }
+  }
+  const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
+  const std::string text = csv.str();
+  write_whole_file(path, text.data(), text.size());
+  return path;
+}
+
+}  // namespace frictionlab::ui

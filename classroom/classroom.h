@@ -1,0 +1,318 @@
+// The classroom window: a lesson's frame with everything that drives it around it. A menu bar
+// (lessons, simulation settings, view), the transport bar (play, step, speed, the recorded
+// run), sliders that also take typed values, the mouse's hand in the world, keyboard
+// shortcuts and a help panel. Immediate mode: every panel reads the running lesson and acts
+// on it through Playback; nothing here keeps a copy of the lesson's state.
+//
+// It knows nothing of windows: frame() runs between ImGui::NewFrame() and ImGui::Render() with
+// input in ImGui's io, so the GLFW window and the tests (EGL, scripted input) run the same code.
+#pragma once
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "classroom/cheapest_setting_tab.h"
+#include "classroom/classroom_options.h"
+#include "classroom/control_places.h"
+#include "classroom/dialogs.h"
+#include "classroom/keys.h"
+#include "classroom/measuring_tools.h"
+#include "classroom/mystery_tab.h"
+#include "classroom/prediction_panel.h"
+#include "classroom/settings.h"
+#include "classroom/stability_map_tab.h"
+#include "classroom_state/mystery.h"
+#include "classroom_state/playback.h"
+#include "classroom_state/setup_file.h"
+#include "draw/chart.h"
+#include "draw/frame.h"
+#include "draw/theme.h"
+
+namespace frictionlab::ui {
+
+// A lesson's name as the lesson list gives it: its script's file name without ".lua".
+std::string lesson_name(const std::string& script_path);
+
+class Classroom {
+ public:
+  // Opens the lesson; a script that fails to build opens the first built-in lesson instead,
+  // with the script's error shown and its file watched until it builds. Throws InvalidInput
+  // when --lock names something the lesson does not have.
+  explicit Classroom(ClassroomOptions options);
+
+  // The size the host should prepare fonts at for a display of this size.
+  float ui_scale(ImVec2 display) const;
+  const WindowSettings& window_settings() const { return window_; }
+  WindowSettings& window_settings() { return window_; }
+
+  // One display frame: the keys and mouse in ImGui's io, `wall_seconds` of real time passing,
+  // then the whole window built.
+  // With `record`, where the frame put things and every text it drew (the layout test).
+  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record = nullptr);
+
+  Playback& playback() { return *playback_; }
+  const Playback& playback() const { return *playback_; }
+
+  // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
+  // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
+  // key state, so shortcuts come from here only.
+  void key_pressed(Key key, bool ctrl) { taps_.emplace_back(key, ctrl); }
+
+  // Requests the host carries out after the frame is drawn, each taken once.
+  std::optional<std::string> take_screenshot_request();  // the path to save the window to
+  void screenshot_done(const std::string& path, const std::string& error);
+  bool take_full_screen_toggle();
+  // The page's file chooser, asked for from the Lesson menu (ClassroomOptions::browser).
+  bool take_open_file_request();
+  bool quit_requested() const { return quit_; }
+  // Nothing moves until the user does something: paused, no search measuring between frames,
+  // no hand held. The window then waits for input (a few times a second for the file watcher)
+  // instead of drawing the same frame sixty times a second.
+  bool idle() const;
+  // Plays the lesson on to `t` at once, as the window opened with --at does: the measuring tools
+  // take the run's start first (where the distance marks count from).
+  void run_to(double t);
+  // Time the window spent waiting for input while idle: no lesson time, but the file watchers'
+  // clocks run on it, so a script saved while nobody touches the window is still seen (the
+  // next frame, given no wall time, would never reach their quarter-second look).
+  void waited(double seconds) { waited_ += seconds; }
+  // What the status line says now (saved files, failures to save).
+  const std::string& status() const { return status_; }
+  // The measuring tools (Tools menu): which are on, and the stopwatch.
+  const MeasuringTools& tools() const { return tools_; }
+  // A script named on the command line that does not build yet: its path, "" when none.
+  const std::string& failed_script() const { return failed_script_; }
+  const std::string& failed_error() const { return failed_error_; }
+  // The running lesson's script failed while it ran, not when it loaded: an expect row's
+  // function (the theory table is then empty), an every-step function (the run stopped) or a
+  // plot's theory curve (drawn only once the theory shows).
+  // Its message as Lua gives it ("path:line: ..."); "" while neither.
+  std::string running_script_error() const;
+
+  // Opens another lesson (a built-in name or a script's path). On failure the current lesson
+  // keeps running and the message is returned (also shown in the window); "" on success.
+  std::string open(const std::string& name_or_path);
+  // Writes the record (time and every probe, one row per frame) as CSV into the output
+  // folder; returns the path, or throws std::runtime_error.
+  std::string export_history();
+
+  // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
+  const std::optional<Mystery>& mystery() const { return mystery_; }
+  // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
+  // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
+  std::string make_mystery(const MysteryChoice& choice);
+  void reveal_mystery();
+  // The class's answers, as typed in the Mystery tab.
+  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k);
+  // What the class must not see now.
+  HiddenValues hidden_values() const;
+
+  // Opens a prepared setup (classroom_state/setup_file.h): its lesson with its values, lock and mystery, at
+  // t = 0. On failure the running lesson keeps running and the message ("file:line: ...") is
+  // returned (also shown in the window); "" on success.
+  std::string open_setup(const std::string& path);
+  // The window as a setup saved at `path` would hold it: the lesson (named from there), every
+  // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether
+  // predictions are asked, the class's answers to the lesson's predict rows and the reveal.
+  PreparedSetup current_setup(const std::string& path) const;
+  // Writes current_setup to `path` (never over a .lua script or a file that is not a setup
+  // FrictionLab wrote, nor with a typed prediction that is not a number). Returns "" or why not.
+  std::string save_setup(const std::string& path);
+  // The window's title: the program and the lesson (never a hidden value).
+  std::string window_title() const;
+
+  // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
+  // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
+  std::optional<ImRect> control(const std::string& name) const;
+  // The Cheapest setting tab's tolerance as typed, and whether a search was started.
+  double cheapest_tolerance() const { return cheapest_.tolerance; }
+  bool cheapest_started() const { return cheapest_.started(); }
+  // The Stability map tab's chart as last drawn: the map and this lesson's marks.
+  const Chart& stability_chart() const { return stability_.chart; }
+  bool shown(const std::string& control_name) const;  // --lock
+  // Why the Lesson menu's lessons are greyed, and how to unlock them; "" when nothing is locked.
+  std::string lock_words() const;
+  // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
+  // bodies. The first one, or the one whose strip holds `point`.
+  const Camera& world_camera() const { return cameras_.front(); }
+  const Camera& world_camera_at(ImVec2 point) const;
+  // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
+  // (or opening another lesson) puts the view back.
+  const ViewAdjust& view_adjust() const { return view_adjust_; }
+  // The class's predictions for the lesson on screen (typed in the theory panel before Play),
+  // and whether the theory is still kept from the class.
+  ClassPredictions& predictions() { return predictions_; }
+  bool theory_hidden() const;
+  // A new round of predictions (the View menu): the answers cleared, the theory hidden again,
+  // the run back at t = 0.
+  void predict_again();
+  // The message beside a control whose value was refused; empty when there is none.
+  std::string control_error(const std::string& name) const {
+    const auto found = control_errors_.find(name);
+    return found == control_errors_.end() ? "" : found->second;
+  }
+
+  // The force gauge's figures over its plot: "peak 39.4 N,  sliding 29.1 N", or "hand + spring:
+  // peak ..." when the lesson pulled the body too; "" before the hand pulls.
+  std::string gauge_figures() const;
+
+ private:
+  // The keys the window layer reported since the last frame, at the frame's start; and what
+  // they leave for its end (ImGui's popups closed, Enter let go, the run played).
+  void handle_keys();
+  void after_keys();
+  void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
+  void menu_bar();
+  void tools_menu();
+  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
+  // and the gauge's plot.
+  void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                   float newtons_to_pixels, LabelPlacer& labels);
+  void gauge_plot(ImVec2 corner, ImVec2 size);
+  std::string gauge_plot_title() const;
+  // The stopwatch, when shown, on a line of its own over the title and its clock (it reads the
+  // lesson's one clock, whatever the lanes): its height in the current font (0 when not shown),
+  // and the line.
+  float stopwatch_strip_height() const;
+  void stopwatch_strip(ImVec2 corner, ImVec2 size);
+  void transport_bar(ImVec2 corner, ImVec2 size);
+  // The transport bar's words, and its height: one row, or two when the words do not fit
+  // beside the time bar.
+  std::string transport_words() const;
+  struct TransportShape {
+    float controls = 0.0f, bar = 0.0f, height = 0.0f;
+    bool words_below = false;
+  };
+  TransportShape transport_shape(float width) const;
+  void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
+  // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
+  // would take its pair away (a material chosen) is put back, with why beside its control.
+  void keep_mystery(const std::string& name, const std::string& before);
+  // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
+  // (then made in `mystery`). Throws as Playback does, and InvalidInput for a pair the lesson
+  // does not have or a value of the mystery's in `overrides`.
+  std::unique_ptr<Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                           const StepSettings& settings, const std::optional<MysteryChoice>& choice,
+                                           std::optional<Mystery>& mystery) const;
+  // Forgets what the hands and boxes were doing in the lesson that is being replaced.
+  void forget_interaction();
+  // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
+  // (with its presets) comes before it. The panel draws them; its height is counted from them.
+  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
+  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
+  // folds one more pair the teacher has not opened, the last first, into its heading with its
+  // values.
+  struct ParameterRow {
+    const lessons::Parameter* parameter;
+    const lessons::Parameter* partner;  // the second coefficient on a row of two
+    bool pair_heading, folded, two_a_row;
+  };
+  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
+  std::vector<std::string> foldable_pairs(bool opened_too) const;
+  std::vector<ParameterRow> parameter_rows(std::size_t step) const;
+  std::vector<float> parameters_heights() const;  // at each step
+  // Once the class's predictions can be set beside a whole run (it has been played to its end),
+  // nobody slides values while comparing: the whole Parameters panel may fold into a heading,
+  // the last step of giving way, which a click opens again for the rest of this run.
+  bool parameters_may_fold_away() const;
+  bool run_played() const;  // to the run's end, in the record
+  std::size_t parameters_folded_away_step() const;  // the step that folds it, when it may
+  void folded_parameters_panel(ImVec2 corner, ImVec2 size);
+  void remember(const std::string& name);  // the last item's place, under `name`
+  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
+  // value (none when value_x is reset_x) and its reset.
+  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+                     float value_x, float reset_x);
+  void preset_row(const lessons::Parameter& mu_s);
+  void messages(ImVec2 corner, float width);
+  // The predictions' part of the frame: their contents and height in the theory panel, and
+  // what they hide (classroom/classroom_predictions.cpp).
+  void predictions_style(FrameStyle& style);
+  void forget_outdated_predictions();
+  void help_panel();
+  void set_value(const std::string& name, const std::string& text);
+  void change_settings(const StepSettings& settings);
+  void try_failed_script(double wall_seconds);
+  // A new file in the output folder named after the lesson's moment; never an existing one.
+  std::string output_path(const std::string& stem, const std::string& extension) const;
+  void request_screenshot();
+  void save_history();
+  void check_lock(const lessons::Lesson& lesson) const;  // throws InvalidInput naming the stranger
+
+  std::unique_ptr<Playback> playback_;
+  WindowSettings window_;
+  MeasuringTools tools_;
+  std::set<std::string> lock_;
+  std::string lock_from_;  // the setup file the lock came from; "": the command line's --lock
+  std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
+  std::string output_folder_;
+  bool script_paths_ = true;
+  bool browser_ = false;
+  bool open_file_request_ = false;
+  // The readings with their error in script_words, for the theory panel (script_paths off).
+  lessons::LessonReadings shown_readings_;
+
+ public:
+  // A text as the class sees it: with script_paths off, every script's path in it ("path:line:
+  // ...", "Reloaded path.") is its file's name alone.
+  std::string script_words(const std::string& text) const;
+
+ private:
+  const Fonts* fonts_ = nullptr;
+  std::vector<Camera> cameras_{Camera{}};
+  ViewAdjust view_adjust_;
+  std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
+  std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
+  // While the hand pulls, the view holds still: a view that follows the body would carry the
+  // world point under a still mouse along with it, and the hand would chase the body it pulls.
+  // The world point at the drag lane's anchor when the hand took hold, that anchor on the screen
+  // (a line of status under the transport bar moves it), and the pan before it (given back on
+  // letting go).
+  struct HeldView {
+    b2Vec2 centre;
+    ImVec2 anchor;
+    b2Vec2 pan;
+  };
+  std::optional<HeldView> held_view_;
+  void hold_view(ImVec2 origin, ImVec2 size, float scale);
+
+  // Interaction state only: what is being dragged, typed or asked for.
+  ControlPlaces controls_;
+  std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
+  ClassPredictions predictions_;  // a new lesson asks again
+  std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
+  bool parameters_opened_ = false;  // the teacher opened the Parameters panel folded for this run's comparison
+  std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
+  std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
+  std::optional<std::string> screenshot_request_;
+  std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
+  std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
+  bool play_after_typing_ = false;        // ... and the run to play when its value is set
+  bool close_menus_ = false;              // a key pressed while a menu was open
+  bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
+  std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
+  CheapestSettingTab cheapest_;
+  StabilityMapTab stability_;
+  std::optional<Mystery> mystery_;  // chosen once when a mystery begins
+  MysteryTab mystery_tab_;
+  SetupDialog setup_dialog_;
+  OpenScriptDialog open_script_;
+  bool full_screen_toggle_ = false;
+  bool quit_ = false;
+  std::string status_;
+  // A script named on the command line that did not build: shown and watched until it does.
+  std::string failed_script_, failed_error_;
+  double since_failed_check_ = 0.0;
+  double waited_ = 0.0;  // see waited()
+  int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
+  FileStamp failed_stamp_;
+};
+
+}  // namespace frictionlab::ui

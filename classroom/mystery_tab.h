@@ -1,0 +1,38 @@
+// The Mystery tab and the Mystery menu: in the menu the teacher makes a pair a mystery (its seed
+// typed there) or reveals it; in the tab the class types the μs and μk it measured, kept for the
+// reveal and then judged beside the true values.
+//
+// It keeps its own state (the answers as typed, why one was refused, the seed) and draws
+// itself, as each of Dear ImGui's demo windows does: the classroom holds one, calls draw_menu()
+// in its menu bar and draw_tab() inside the books' tab bar.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "classroom/control_places.h"
+#include "classroom_state/mystery.h"
+#include "draw/theme.h"
+
+namespace frictionlab::ui {
+
+class Classroom;
+
+struct MysteryTab {
+  char answer_text[2][32] = {};  // μs, μk as typed
+  std::string answer_error[2];   // why a typed answer was refused
+  int menu_seed = 1;
+  bool select = false;           // a mystery just began: the tab (or the Predict tab) comes forward
+
+  // A new mystery: no answers yet, and the tab comes forward.
+  void begin();
+  // The tab, in the tab bar being drawn: the answers go into `mystery`. `predicting`: the class's
+  // predictions are asked and the theory kept back; a mystery just begun then leaves the
+  // Predict tab in front when it shares this tab bar.
+  void draw_tab(Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls);
+  // The Mystery menu, acting on the classroom's lesson. Returns what the status line should say
+  // when the teacher chose a pair ("" for a mystery made).
+  std::optional<std::string> draw_menu(Classroom& classroom, ControlPlaces& controls);
+};
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,95 @@
+#include "classroom/settings.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "draw/image.h"
+#include "files/output_file.h"
+
+namespace frictionlab::ui {
+
+std::string settings_folder() {
+  std::filesystem::path folder;
+  if (const char* config = std::getenv("XDG_CONFIG_HOME"); config != nullptr && *config == '/') {
+    folder = config;
+  } else if (const char* home = std::getenv("HOME"); home != nullptr && *home == '/') {
+    folder = std::filesystem::path(home) / ".config";
+  } else {
+    return "";
+  }
+  folder /= "frictionlab";
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  return error ? "" : folder.string();
+}
+
+WindowSettings load_settings(const std::string& path) {
+  WindowSettings settings;
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    const auto equals = line.find('=');
+    if (equals == std::string::npos) continue;
+    const auto trim = [](std::string text) {
+      const auto first = text.find_first_not_of(" \t\r"), last = text.find_last_not_of(" \t\r");
+      return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+    };
+    const std::string name = trim(line.substr(0, equals)), value = trim(line.substr(equals + 1));
+    std::istringstream number(value);
+    double x = 0.0;
+    const bool numeric = static_cast<bool>(number >> x) && number.eof();
+    if (name == "theme" && (value == "light" || value == "dark")) {
+      settings.theme = value == "dark" ? ThemeName::dark : ThemeName::light;
+    } else if (name == "projector" && (value == "on" || value == "off")) {
+      settings.projector = value == "on";
+    } else if (name == "help" && (value == "on" || value == "off")) {
+      settings.help = value == "on";
+    } else if (name == "predictions" && (value == "on" || value == "off")) {
+      settings.predictions = value == "on";
+    } else if (name == "full_screen" && (value == "on" || value == "off")) {
+      settings.full_screen = value == "on";
+    } else if (bool* tool = name == "stopwatch"           ? &settings.tools.stopwatch
+                            : name == "distance_marks"    ? &settings.tools.distance_marks
+                            : name == "speed_readout"     ? &settings.tools.speed
+                            : name == "weight_components" ? &settings.tools.weight_components
+                                                          : nullptr;
+               tool != nullptr && (value == "on" || value == "off")) {
+      *tool = value == "on";
+    } else if (name == "speed" && numeric && x >= 0.1 && x <= 8.0) {
+      settings.speed = x;
+    } else if (name == "width" && numeric && x >= 320 && x <= 16384) {
+      settings.width = static_cast<int>(x);
+    } else if (name == "height" && numeric && x >= 240 && x <= 16384) {
+      settings.height = static_cast<int>(x);
+    }
+  }
+  return settings;
+}
+
+bool save_settings(const WindowSettings& settings, const std::string& path) {
+  std::ostringstream text;
+  text << "# FrictionLab's window settings, written as they change.\n"
+       << "theme = " << theme_name(settings.theme) << "\n"
+       << "projector = " << (settings.projector ? "on" : "off") << "\n"
+       << "help = " << (settings.help ? "on" : "off") << "\n"
+       << "predictions = " << (settings.predictions ? "on" : "off") << "\n"
+       << "full_screen = " << (settings.full_screen ? "on" : "off") << "\n"
+       << "stopwatch = " << (settings.tools.stopwatch ? "on" : "off") << "\n"
+       << "distance_marks = " << (settings.tools.distance_marks ? "on" : "off") << "\n"
+       << "speed_readout = " << (settings.tools.speed ? "on" : "off") << "\n"
+       << "weight_components = " << (settings.tools.weight_components ? "on" : "off") << "\n"
+       << "speed = " << settings.speed << "\n"
+       << "width = " << settings.width << "\n"
+       << "height = " << settings.height << "\n";
+  try {
+    const std::string bytes = text.str();
+    write_whole_file(path, bytes.data(), bytes.size());
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace frictionlab::ui

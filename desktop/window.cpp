@@ -1,0 +1,196 @@
+#include "desktop/window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include "draw/gl.h"
+#include <backends/imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "classroom/key_taps.h"
+#include "desktop/glfw_keys.h"
+#include "draw/framebuffer.h"
+#include "draw/image.h"
+#include "draw/imgui_host.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string glfw_error;
+
+void remember_error(int /*code*/, const char* description) { glfw_error = description ? description : "unknown"; }
+
+// GLFW's own lifetime: initialised once per window, terminated whatever happens.
+struct Glfw {
+  Glfw() {
+    glfwSetErrorCallback(remember_error);
+    if (glfwInit() == GLFW_FALSE) throw NoDisplay("no display to open a window on (" + glfw_error + ")");
+  }
+  ~Glfw() { glfwTerminate(); }
+};
+
+struct WindowDeleter {
+  void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
+};
+
+}  // namespace
+
+void run_window(Classroom& classroom, const WindowRun& run) {
+  Glfw glfw;
+  WindowSettings& settings = classroom.window_settings();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  int area[4] = {0, 0, settings.width, settings.height};  // x, y, width, height
+  GLFWmonitor* const screen = run.fill_screen ? glfwGetPrimaryMonitor() : nullptr;
+  if (screen != nullptr) {
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetMonitorWorkarea(screen, &x, &y, &width, &height);
+    if (width > 0 && height > 0) {
+      area[0] = x;
+      area[1] = y;
+      area[2] = width;
+      area[3] = height;
+    }
+  }
+  std::unique_ptr<GLFWwindow, WindowDeleter> window(glfwCreateWindow(area[2], area[3], "FrictionLab", nullptr, nullptr));
+  if (!window) throw NoDisplay("the display would not open an OpenGL 3.3 window (" + glfw_error + ")");
+  if (screen != nullptr) {
+    // The work area's size is the window's inside; a window manager adds its title bar, and
+    // maximizing lets it fit the two. With no window manager (Xvfb) the size alone does it.
+    glfwSetWindowPos(window.get(), area[0], area[1]);
+    glfwMaximizeWindow(window.get());
+  }
+  glfwMakeContextCurrent(window.get());
+  glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
+
+  ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  // Every key press reaches the classroom, and ImGui's widgets, even one let go before the next
+  // frame; set before ImGui's backend, which calls it before its own.
+  struct Listeners {
+    Classroom* classroom;
+    KeyTaps taps;
+  } listeners{&classroom, KeyTaps(glfw_modifier_keys)};
+  glfwSetWindowUserPointer(window.get(), &listeners);
+  glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS) return;
+    auto* to = static_cast<Listeners*>(glfwGetWindowUserPointer(from));
+    to->taps.pressed(key);  // GLFW's key codes are ImGui's indices under its GLFW backend
+    if (const std::optional<Key> named = classroom_key(key)) to->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
+  });
+  ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
+  struct GlfwInput {
+    ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
+  } input;
+
+  if (run.at) classroom.run_to(*run.at);
+  int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
+  bool full_screen = false;
+  int windowed[4] = {area[0], area[1], area[2], area[3]};
+  double last = glfwGetTime();
+  WindowSettings saved = settings;
+  int settle_frames = 3;
+  std::string shown_title = "FrictionLab";
+  while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
+    // Paused and untouched, the picture cannot change: wait for input, waking four times a
+    // second so a saved script is still seen (a paused llvmpipe window drew at 97 % of a core).
+    // A few frames after any input let ImGui settle hover and focus before waiting again.
+    if (classroom.idle() && frames_left < 0 && settle_frames == 0) {
+      const double asleep_from = glfwGetTime();
+      glfwWaitEventsTimeout(0.25);
+      // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
+      last = glfwGetTime();
+      classroom.waited(last - asleep_from);
+      // Woken by input: a few frames; by the clock (to look at the script file): one.
+      settle_frames = glfwGetTime() - asleep_from < 0.24 ? 3 : 1;
+    } else {
+      glfwPollEvents();
+    }
+    settle_frames = classroom.idle() ? std::max(0, settle_frames - 1) : 3;
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window.get(), &width, &height);
+    const double now = glfwGetTime();
+    // Minimised: nothing to draw; wait without spinning, and let no time pile up.
+    if (width <= 0 || height <= 0) {
+      glfwWaitEventsTimeout(0.1);
+      last = glfwGetTime();
+      continue;
+    }
+    // A stall (a debugger, a suspended laptop) must not ask the lesson for minutes at once.
+    const double wall = run.screenshot.empty() ? std::clamp(now - last, 0.0, 0.25) : 0.0;
+    last = now;
+
+    host.make_current();
+    const Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+                                      settings.theme);
+    ImGui_ImplGlfw_NewFrame();
+    listeners.taps.hold(ImGui::GetIO());
+    host.begin_frame();
+    classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
+    // The lesson's title, and whether a surface is a mystery (never its values).
+    if (std::string title = classroom.window_title(); title != shown_title) {
+      glfwSetWindowTitle(window.get(), title.c_str());
+      shown_title = std::move(title);
+    }
+    glViewport(0, 0, width, height);
+    const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
+    glClearColor(clear.x, clear.y, clear.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    host.end_frame();
+    listeners.taps.release(ImGui::GetIO(), [&](int key) { return glfwGetKey(window.get(), key) == GLFW_PRESS; });
+
+    std::optional<std::string> screenshot = classroom.take_screenshot_request();
+    if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
+    if (screenshot) {
+      glReadBuffer(GL_BACK);
+      std::string error;
+      try {
+        write_png(read_framebuffer(width, height), *screenshot);
+      } catch (const std::exception& failure) {
+        error = failure.what();
+        if (frames_left == 0) throw;
+      }
+      classroom.screenshot_done(*screenshot, error);
+      if (frames_left == 0) break;
+    }
+    if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
+    // Wanted full screen with no monitor to fill (yet): the wish is kept, and tried each frame.
+    if (settings.full_screen != full_screen) {
+      GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+      const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+      if (!full_screen && mode != nullptr) {
+        glfwGetWindowPos(window.get(), &windowed[0], &windowed[1]);
+        glfwGetWindowSize(window.get(), &windowed[2], &windowed[3]);
+        glfwSetWindowMonitor(window.get(), monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+        full_screen = true;
+      } else if (full_screen) {
+        glfwSetWindowMonitor(window.get(), nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
+        full_screen = false;
+      }
+    }
+    glfwSwapBuffers(window.get());
+    // A choice the teacher made (theme, projector, help, speed) is kept at once, so a window
+    // that is killed rather than closed still remembers it.
+    if (!run.settings_path.empty() && !(settings == saved)) {
+      save_settings(settings, run.settings_path);
+      saved = settings;
+    }
+  }
+
+  // The windowed size is kept, full screen or not: leaving full screen next time goes back to it.
+  // A window opened over the whole screen for a projector keeps the size read at the start: the
+  // screen's would open the next plain window as large, its title bar past the screen's edge.
+  if (!run.fill_screen) {
+    if (full_screen) {
+      settings.width = windowed[2];
+      settings.height = windowed[3];
+    } else {
+      glfwGetWindowSize(window.get(), &settings.width, &settings.height);
+    }
+  }
+  if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,173 @@
+#include "draw/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frictionlab::ui {
+
+using lessons::body_box;
+using lessons::lesson_bounds;
+using lessons::moving_bounds;
+using lessons::view_bodies;
+
+namespace {
+
+// Moves a camera that shows less than the whole lesson so that it shows as much of the lesson
+// as it can: its view stays inside `bounds` (with a little room), along each axis on which it
+// is smaller than them; but what moves (`moving`) stays in view with room for its arrows, the
+// most above it, where the normal force and its label go.
+void keep_within(Camera& camera, const b2AABB& bounds, const b2AABB& moving, float free_width) {
+  const float ppm = camera.pixels_per_metre;
+  // The world seen left, right, above and below the anchor, m.
+  const float left = (camera.anchor.x - camera.origin.x) / ppm;
+  const float right = (camera.origin.x + free_width - camera.anchor.x) / ppm;
+  const float above = (camera.anchor.y - camera.origin.y) / ppm;
+  const float below = (camera.origin.y + camera.size.y - camera.anchor.y) / ppm;
+  const float room_x = 0.12f * (left + right), room_y = 0.08f * (above + below);
+  const auto clamp_axis = [](float centre, float low, float high, float before, float after) {
+    if (high - low < before + after) return centre;  // the view is wider than the lesson here
+    return std::clamp(centre, low + before, high - after);
+  };
+  camera.centre.x = clamp_axis(camera.centre.x, bounds.lowerBound.x - room_x, bounds.upperBound.x + room_x, left, right);
+  camera.centre.y = clamp_axis(camera.centre.y, bounds.lowerBound.y - room_y, bounds.upperBound.y + room_y, below, above);
+  const auto shift_to_show = [](float centre, float low, float high, float before, float after) {
+    if (low < centre - before) centre = low + before;      // show the low end first...
+    if (high > centre + after) centre = high - after;      // ...and the high end wins: arrows go up
+    return centre;
+  };
+  const float arrows_above = 0.3f * (above + below), arrows_aside = 0.12f * (left + right);
+  camera.centre.x = shift_to_show(camera.centre.x, moving.lowerBound.x - arrows_aside, moving.upperBound.x + arrows_aside,
+                                  left, right);
+  camera.centre.y = shift_to_show(camera.centre.y, moving.lowerBound.y - room_y, moving.upperBound.y + arrows_above,
+                                  below, above);
+}
+
+// Room around the lesson for the arrows and their labels.
+constexpr float room = 1.45f;
+// Pixels (at text scale 1) kept between a lane's floor and the lane's foot, and above a body.
+constexpr float lane_ground_edge = 6.0f;
+
+}  // namespace
+
+std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
+                                    float free_width, float scale, const ViewAdjust& adjust) {
+  const lessons::View& view = framing.view;
+  const b2Vec2 extent = framing.extent;
+  const float tallest_body = framing.tallest_body, moving_span = framing.moving_span, smallest_body = framing.smallest_body;
+  const std::vector<float>& lane_ground = framing.lane_ground;
+  const std::vector<float>& lane_top = framing.lane_top;
+  using Kind = lessons::View::Kind;
+  // A window squeezed to nothing still gets a camera with a positive, finite scale.
+  free_width = std::max(free_width, 1.0f);
+  size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
+  const std::vector<const b2Body*> bodies = view_bodies(scene, view);
+  // What moves now, worked out once: the framing, the centre and each lane read it.
+  const b2AABB moving = moving_bounds(scene);
+  const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
+  const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
+  const float strip_height = size.y / static_cast<float>(strips);
+  const float fit = std::min(free_width / (room * extent.x), size.y / (room * extent.y));
+  float pixels_per_metre = fit;
+  if (kind == Kind::window) {
+    const b2Vec2 span = view.high - view.low;
+    pixels_per_metre = std::min(free_width / span.x, size.y / span.y);
+  } else if (view.width > 0.0) {
+    pixels_per_metre = free_width / static_cast<float>(view.width);
+  }
+  if (kind == Kind::lanes) {
+    // Each lane's bodies, with room above for the normal force and below for the ground, fit
+    // in its strip: the tallest moving body a third of the strip high, and every moving body
+    // across the free width, unless a width says.
+    // Both as they were at t = 0, so the scale does not breathe as a box tumbles or the bodies
+    // spread.
+    if (tallest_body > 0.0f) {
+      if (view.width <= 0.0) {
+        pixels_per_metre = strip_height / (3.0f * tallest_body);
+        if (moving_span > 0.0f) pixels_per_metre = std::min(pixels_per_metre, free_width / (1.2f * moving_span));
+      }
+      pixels_per_metre = std::min(pixels_per_metre, strip_height / (2.0f * tallest_body));
+      // A body in the air at t = 0 keeps its floor in its lane, from the floor to half a body
+      // above its top (the thrown box fell towards a floor out of sight), unless that makes it
+      // too small to read (below).
+      if (view.width <= 0.0) {
+        float span = 0.0f;
+        for (std::size_t i = 0; i < lane_ground.size() && i < lane_top.size(); ++i) {
+          if (std::isfinite(lane_ground[i])) span = std::max(span, lane_top[i] - lane_ground[i]);
+        }
+        const float edges = 2.0f * lane_ground_edge * scale;
+        if (span > 0.0f && strip_height > edges) {
+          pixels_per_metre = std::min(pixels_per_metre, (strip_height - edges) / (span + 0.5f * tallest_body));
+        }
+      }
+    }
+  }
+  // Readable bodies: a lesson that spreads them wide is followed rather than shrunk.
+  float readable = smallest_body > 0.0f ? min_body_pixels * scale / smallest_body : 0.0f;
+  if (kind == Kind::whole) {
+    // ...but not so close that what moves now falls out of the picture.
+    const b2Vec2 span = moving.upperBound - moving.lowerBound;
+    if (span.x > 0.0f && span.y > 0.0f) {
+      readable = std::min(readable, std::min(free_width / (1.2f * span.x), size.y / (1.2f * span.y)));
+    }
+  }
+  const bool zoomed_in = kind != Kind::window && pixels_per_metre < readable;
+  if (kind != Kind::window) pixels_per_metre = std::max(pixels_per_metre, readable);
+  if (!std::isfinite(pixels_per_metre) || pixels_per_metre <= 0.0f) pixels_per_metre = 1.0f;
+
+  b2Vec2 centre{0.0f, 0.0f};
+  switch (kind) {
+    case Kind::whole:
+      // Everything when it fits; what moves when the view had to zoom in to keep it readable.
+      centre = (zoomed_in ? moving : lesson_bounds(scene)).GetCenter();
+      break;
+    case Kind::follow:
+      centre = bodies.front()->GetWorldCenter();
+      break;
+    case Kind::window:
+      centre = 0.5f * (view.low + view.high);
+      break;
+    case Kind::lanes:
+      // One horizontal window for every lane, so distances compare across lanes: centred on
+      // what moves, from the body furthest behind to the one furthest ahead.
+      centre.x = moving.GetCenter().x;
+      break;
+  }
+
+  const b2AABB lesson = kind == Kind::whole && zoomed_in ? lesson_bounds(scene) : b2AABB{};
+  std::vector<Camera> made;
+  for (std::size_t i = 0; i < strips; ++i) {
+    Camera camera;
+    camera.origin = ImVec2(origin.x, origin.y + strip_height * static_cast<float>(i));
+    camera.size = ImVec2(size.x, strip_height);
+    camera.pixels_per_metre = pixels_per_metre * adjust.zoom;
+    // A little below the middle: forces drawn above bodies need more room than the ground.
+    // A window the script fixed is centred exactly, so all of it is in view.
+    const float down = kind == Kind::window ? 0.5f : strips > 1 ? 0.6f : 0.56f;
+    camera.anchor = ImVec2(origin.x + 0.5f * free_width, camera.origin.y + down * strip_height);
+
+    camera.centre = centre;
+    // Each lane on its own body's height.
+    if (kind == Kind::lanes) {
+      camera.centre.y = bodies[i]->GetWorldCenter().y;
+      // Not so high that the floor under the body drops out of the lane's foot, while the
+      // body's top stays in it: the lane stays still and the body falls to its floor.
+      if (i < lane_ground.size() && std::isfinite(lane_ground[i])) {
+        const float metres = 1.0f / camera.pixels_per_metre, edge = lane_ground_edge * scale * metres;
+        const float floor_in_view = lane_ground[i] + (1.0f - down) * strip_height * metres - edge;
+        const float top_in_view = body_box(bodies[i]).upperBound.y + edge - down * strip_height * metres;
+        camera.centre.y = std::max(std::min(camera.centre.y, floor_in_view), top_in_view);
+      }
+      // Once the lanes' bodies have spread wider than the view, one window would lose some of
+      // them: each lane then follows its own body (the ground's hatching still shows who moved).
+      if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * free_width) {
+        camera.centre.x = bodies[i]->GetWorldCenter().x;
+      }
+    }
+    if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson, moving, free_width);
+    camera.centre += adjust.pan;
+    made.push_back(camera);
+  }
+  return made;
+}
+
+}  // namespace frictionlab::ui

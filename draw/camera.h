@@ -1,0 +1,49 @@
+// Metres to pixels. The zoom is chosen once from the lesson's world at t = 0 (so a block does
+// not shrink as it slides away) and its view{}; the view then follows what moves. The
+// window's wheel and drag change it on top (ViewAdjust).
+#pragma once
+
+#include <box2d/box2d.h>
+#include <imgui.h>
+
+#include <vector>
+
+#include "lessons/runtime/framing.h"
+#include "lessons/runtime/lesson.h"
+#include "physics/scene.h"
+
+namespace frictionlab::ui {
+
+struct Camera {
+  ImVec2 origin{0.0f, 0.0f};  // top-left of the view, pixels
+  ImVec2 size{0.0f, 0.0f};    // pixels
+  ImVec2 anchor{0.0f, 0.0f};  // where `centre` is drawn, pixels
+  b2Vec2 centre{0.0f, 0.0f};  // world point drawn at the anchor, m
+  float pixels_per_metre = 100.0f;
+
+  ImVec2 to_screen(b2Vec2 p) const {
+    return ImVec2(anchor.x + (p.x - centre.x) * pixels_per_metre, anchor.y - (p.y - centre.y) * pixels_per_metre);
+  }
+  b2Vec2 to_world(ImVec2 s) const {
+    return {centre.x + (s.x - anchor.x) / pixels_per_metre, centre.y - (s.y - anchor.y) / pixels_per_metre};
+  }
+};
+
+// What the user did to the view in the window (the wheel zooms, a drag on empty space pans),
+// on top of what the lesson asks for. Kept while the lesson is rebuilt (a slider moved), so a
+// teacher's close-up stays; a double click or another lesson puts it back.
+struct ViewAdjust {
+  float zoom = 1.0f;           // times the lesson's scale
+  b2Vec2 pan{0.0f, 0.0f};      // m, added to every camera's centre
+  bool operator==(const ViewAdjust&) const = default;
+};
+
+// The cameras on the view rectangle as the lesson's view asks (one per lane; one otherwise),
+// with room for arrows, centred on the part of the view left free (`free_width` from its
+// left edge). `scale` is the frame's text scale: no moving body is drawn with its longer side
+// under min_body_pixels × scale, except in a window the lesson fixed.
+std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
+                                    float free_width, float scale, const ViewAdjust& adjust = {});
+inline constexpr float min_body_pixels = 48.0f;
+
+}  // namespace frictionlab::ui

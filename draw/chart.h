@@ -1,0 +1,155 @@
+// The one chart engine: the benchmark's charts (error against cost, stability maps) and the
+// lessons' plots (draw/plots.cpp builds a Chart from the probes' record). Linear or logarithmic
+// axes with ticks and units, series as lines or markers, maps, shaded spans, theory curves and
+// a legend placed off the data; rendered headless to a picture for the benchmark's output.
+#pragma once
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "draw/image.h"
+#include "draw/theme.h"
+
+namespace frictionlab::ui {
+
+// Where `value` lies from `low` (0) to `high` (1), without overflow for any finite values.
+double share(double value, double low, double high);
+// Tick positions for an axis from low to high: 1, 2 or 5 times a power of ten apart, about
+// `count` of them.
+std::vector<double> axis_ticks(double low, double high, int count);
+// A tick's label with as many decimals as the step needs, and a true minus sign.
+std::string tick_text(double value, double step);
+
+enum class Marker { none, dot, cross };
+
+struct ChartSeries {
+  std::string name;
+  std::vector<std::pair<double, double>> points;  // (x, y); points not finite, or not > 0 on a log axis, are left out
+  ImU32 colour = IM_COL32(0, 0, 0, 255);
+  bool line = true;
+  Marker marker = Marker::none;
+  std::vector<std::string> labels;  // beside each point, when given (a step rate, say)
+};
+
+// One cell of a map: the point of a grid it stands for, and the category that colours it.
+struct ChartCell {
+  double x, y;
+  int category;
+};
+
+// A law drawn beside the measurements: pieces of polyline in the chart's own numbers.
+struct ChartCurve {
+  std::string name;
+  std::vector<std::vector<std::pair<double, double>>> pieces;
+  // Its own colour and dash pattern (in points at text scale 1), on the plot and in the legend
+  // alike: two laws on one plot (the right one and an article's as written) are told apart.
+  ImU32 colour = 0;
+  float dash = 6.0f, gap = 4.0f;
+};
+
+// The look of a plot's theory curve number `index`: dashes, dots and long dashes in turn, in
+// the theme's theory colours in turn, so that the curves of one plot (up to six) each have
+// one of their own.
+void give_theory_look(ChartCurve& curve, const Theme& theme, std::size_t index);
+
+struct Chart {
+  std::string title, x_label, y_label;
+  bool log_x = false, log_y = false;
+  // A map under the series: each cell fills the space half-way to its neighbours.
+  std::vector<ChartCell> cells;
+  std::vector<std::pair<std::string, ImU32>> categories;  // name and colour, by category number
+  std::vector<ChartSeries> series;
+  std::vector<std::string> notes;  // lines of text under the legend
+  // Charts that share their series' colours can leave the legend to one chart that is only a
+  // legend (one column, no axes), so each plot keeps its room. `inside`: in the corner of the
+  // data area that no point or curve reaches, else in a row above it (lesson plots).
+  enum class Legend { under, none, only, inside } legend = Legend::under;
+
+  // What lesson plots add; a chart that leaves them alone draws as before.
+  // `plain`: no title row or background (the panel around it has them), the y label over the
+  // tick labels, the zero lines darker.
+  bool plain = false;
+  // Linear axes with their range given, instead of the data's with a margin.
+  bool fixed_x = false, fixed_y = false;
+  double x_low = 0.0, x_high = 1.0, y_low = 0.0, y_high = 1.0;
+  int y_tick_count = 5;
+  int x_tick_count = 5;  // 0: one every 70 points of width
+  // Colour of the line leading to each point of series[k] (a regime's colour), for the series
+  // that have them; named in the legend by `colour_keys`.
+  std::vector<std::vector<ImU32>> segment_colours;
+  std::vector<std::pair<std::string, ImU32>> colour_keys;
+  // Shaded spans of x (when the block slipped) and their name in the legend.
+  std::vector<std::pair<double, double>> bands;
+  ImU32 band_colour = 0;
+  std::string band_name;
+  // The present: a dot on each series' last point, and a line at x = now_x when it is finite.
+  bool mark_now = false;
+  double now_x = NAN;
+  ImU32 now_colour = 0;
+  // Theory curves, each drawn in its own look under the series, the `active` one bold
+  // (`nearest`: the one passing nearest the first series' last point).
+  static constexpr int nearest = -2;
+  std::vector<ChartCurve> theory;
+  int active_theory = -1;
+  std::string message;  // drawn in the data area in the theme's `bad` colour (a script error)
+};
+
+// Where a chart's parts go on the screen, worked out before anything is drawn (and by tests).
+struct ChartLayout {
+  ImVec2 low_left, high_right;  // the data area
+  bool log_x = false, log_y = false;
+  double x_low = 0.0, x_high = 1.0, y_low = 0.0, y_high = 1.0;  // axis space: log10 of the value on a log axis
+  std::vector<double> x_ticks, y_ticks;  // axis space
+  std::vector<std::string> x_tick_labels, y_tick_labels;
+  std::vector<ImVec2> points;  // every series' points as drawn (at most about two a pixel)
+  std::vector<std::vector<ImVec2>> series_points;        // the same, series by series
+  std::vector<std::vector<std::size_t>> series_indices;  // which of the series' points each is
+  std::vector<std::vector<std::vector<ImVec2>>> theory;  // [curve][piece][point]
+  int active = -1;
+  ImVec2 legend_min, legend_max;
+  std::vector<ImVec2> legend_at;  // an inside legend's keys, one by one
+  bool legend_outside = false;  // an inside legend that found no free corner: in a row above
+  // An inside legend with no room off the data (neither a free corner, beside nor above): in
+  // the corner it covers least of.
+  bool legend_on_data = false;
+  bool drawable = false;        // room enough for a data area
+
+  ImVec2 to_screen(double x, double y) const;  // the chart's own numbers to screen points
+};
+
+ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+// Draws the chart and returns where its parts went.
+ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
+                       const Fonts& fonts);
+
+// Parts the lesson plots (draw/plots.cpp) draw with too.
+
+// Where a legend of `legend_size` goes inside the data area [area_min, area_max], `inset` from
+// its edge: the corner whose rectangle meets the fewest `points` (each a square `radius`
+// each side of it), the first of equals in the order top left, top right, bottom left,
+// bottom right. `clear` when that corner meets none; otherwise the caller puts it outside.
+struct LegendPlace {
+  ImVec2 min, max;
+  bool clear = false;
+};
+LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, float inset,
+                          const std::vector<ImVec2>& points, float radius);
+
+// Whether a chart of this size has room for its legend off its data however the data fill the
+// data area (beside or above it), or needs more room: for choosing how many plots go side by
+// side, once, without the choice changing as the data come in.
+bool legend_has_room(const Chart& chart, ImVec2 size, const Fonts& fonts);
+
+// A curve made of pieces (a nil in a theory function splits it), in screen points.
+using CurvePieces = std::vector<std::vector<ImVec2>>;
+// The curve passing nearest `point`; -1 when no curve has a point.
+int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point);
+// A polyline drawn in dashes of `dash` pixels with `gap` between them.
+void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap);
+
+}  // namespace frictionlab::ui

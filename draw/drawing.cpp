@@ -1,0 +1,204 @@
+#include "draw/drawing.h"
+
+#include <algorithm>
+#include <optional>
+
+namespace frictionlab::ui {
+
+float nice_length(float wanted) {
+  const float power = std::pow(10.0f, std::floor(std::log10(wanted)));
+  const float fraction = wanted / power;
+  return (fraction < 1.5f ? 1.0f : fraction < 3.5f ? 2.0f : fraction < 7.5f ? 5.0f : 10.0f) * power;
+}
+
+const std::string& material_name(const Scene& scene, const b2Fixture* fixture) {
+  static const std::string none = "?";
+  const int id = fixture_material(const_cast<b2Fixture*>(fixture));
+  return id >= 0 && id < scene.pairs().material_count() ? scene.pairs().material(id).name : none;
+}
+
+ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& theme) {
+  const std::string& material = material_name(scene, fixture);
+  return material_colour(theme, material, scene.pairs().find_material(material));
+}
+
+bool overlaps(const ImVec4& box, const DrawnSegment& segment) {
+  // The box grown by the half width, against the segment's centre line (Liang and Barsky's
+  // clipping: the part of the line inside the box is empty or not).
+  const float x0 = box.x - segment.half_width, y0 = box.y - segment.half_width;
+  const float x1 = box.z + segment.half_width, y1 = box.w + segment.half_width;
+  const float dx = segment.to.x - segment.from.x, dy = segment.to.y - segment.from.y;
+  float enter = 0.0f, leave = 1.0f;
+  const float p[4] = {-dx, dx, -dy, dy};
+  const float q[4] = {segment.from.x - x0, x1 - segment.from.x, segment.from.y - y0, y1 - segment.from.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0f) {
+      if (q[i] < 0.0f) return false;  // parallel to this side and outside it
+      continue;
+    }
+    const float r = q[i] / p[i];
+    if (p[i] < 0.0f) {
+      enter = std::max(enter, r);
+    } else {
+      leave = std::min(leave, r);
+    }
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
+bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
+  const auto any = [&](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
+  };
+  return !any(taken_) && !any(marks_) && !any(segments_) && !(off_bodies && any(bodies_));
+}
+
+bool LabelPlacer::free(const ImVec4& box, bool off_bodies) const {
+  const bool inside = box.x >= low_.x && box.y >= low_.y && box.z <= high_.x && box.w <= high_.y;
+  return inside && clear(box, off_bodies);
+}
+
+ImVec4 LabelPlacer::box_around(ImVec2 centre, ImVec2 size) {
+  return ImVec4(centre.x - 0.5f * size.x - pad, centre.y - 0.5f * size.y - pad, centre.x + 0.5f * size.x + pad,
+                centre.y + 0.5f * size.y + pad);
+}
+
+ImVec2 LabelPlacer::moved_inside(ImVec2 centre, ImVec2 size) const {
+  const float half_x = 0.5f * size.x + pad, half_y = 0.5f * size.y + pad;
+  const float left = low_.x + half_x, right = std::max(left, high_.x - half_x);
+  const float top = low_.y + half_y, bottom = std::max(top, high_.y - half_y);
+  return ImVec2(std::clamp(centre.x, left, right), std::clamp(centre.y, top, bottom));
+}
+
+ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
+  if (const std::optional<ImVec2> found = place_if_free(wanted, size, text, off_bodies)) return *found;
+  // Nowhere free: where it was wanted, moved inside the view, over what is there.
+  const ImVec2 at = moved_inside(wanted, size);
+  take(box_around(at, size), text);
+  return at;
+}
+
+std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
+  const auto box_at = [&](ImVec2 c) { return box_around(c, size); };
+  // Inside the view, so a label near its edge is moved in rather than cut.
+  const auto inside = [&](ImVec2 c) { return moved_inside(c, size); };
+  wanted = inside(wanted);
+  // Rings of places around the wanted one, nearest first: above and below (a line of text
+  // apart), then to the sides, then the corners between. Candidates are moved inside the view
+  // first, so its edge is no obstacle here.
+  const float step_y = size.y + 2.0f * pad, step_x = 0.5f * size.x + pad;
+  const ImVec2 directions[8] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+  const auto search = [&](bool keep_off_bodies) -> std::optional<ImVec2> {
+    if (clear(box_at(wanted), keep_off_bodies)) return wanted;
+    // Half steps, so a label fits a gap of one line and a half.
+    for (int ring = 1; ring <= 30; ++ring) {
+      const float reach = 0.5f * static_cast<float>(ring);
+      for (const ImVec2& d : directions) {
+        const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach));
+        if (clear(box_at(candidate), keep_off_bodies)) return candidate;
+      }
+    }
+    return std::nullopt;
+  };
+  // Where the bodies leave no room (a thin lane of blocks side by side), on a body rather than
+  // on another label.
+  std::optional<ImVec2> found = search(off_bodies);
+  if (!found && off_bodies) found = search(false);
+  if (found) take(box_at(*found), text);
+  return found;
+}
+
+void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU32 background, const char* text) {
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text);
+  const ImVec2 corner(std::round(centre.x - 0.5f * size.x), std::round(centre.y - 0.5f * size.y));
+  if (background != 0) {
+    const ImU32 faded = (background & 0x00FFFFFFu) | (215u << IM_COL32_A_SHIFT);
+    draw->AddRectFilled(ImVec2(corner.x - 3, corner.y - 1), ImVec2(corner.x + size.x + 3, corner.y + size.y + 1), faded,
+                        3.0f);
+  }
+  draw->AddText(font, font->FontSize, corner, colour, text);
+}
+
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness) {
+  const ImVec2 along = sub(tip, tail);
+  const float span = length(along);
+  if (span < 1e-3f) return;
+  const ImVec2 unit = mul(along, 1.0f / span);
+  const ImVec2 across(-unit.y, unit.x);
+  const float head = std::min(4.0f * thickness, 0.6f * span);
+  const ImVec2 base = sub(tip, mul(unit, head));
+  // The shaft runs on under the head, so no seam of anti-aliased edges shows between them.
+  draw->AddLine(tail, add(base, mul(unit, 0.3f * head)), colour, thickness);
+  draw->AddTriangleFilled(tip, add(base, mul(across, 0.45f * head)), sub(base, mul(across, 0.45f * head)), colour);
+}
+
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels) {
+  draw_force(draw, arrow, theme, font, thickness, labels, format_quantity(arrow.force.force.Length(), "N"));
+}
+
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels, const std::string& text) {
+  const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
+  draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
+  if (text.empty()) return;
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+  const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
+  // Just beyond the tip, far enough along the arrow's line that the text clears the head.
+  const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
+  // Off every moving body: a normal force's arrow points into the body it pushes (a wheel's
+  // from the road, a top block's from under it) and its value was drawn on that body; a
+  // spring's runs along the spring from the body it pulls and settled on its edge.
+  if (const std::optional<ImVec2> at = labels.place_if_free(add(arrow.tip, mul(unit, reach)), size, text, true)) {
+    draw_label(draw, font, *at, colour, theme.panel, text.c_str());
+  }
+}
+
+TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
+  TorqueArc arc{centre, radius, torque, {}};
+  // Screen y runs down, so a counter-clockwise torque turns the screen angle down.
+  const float sense = torque >= 0.0 ? -1.0f : 1.0f;
+  const float start = -0.25f * b2_pi;
+  constexpr int segments = 24;
+  for (int i = 0; i <= segments; ++i) {
+    const float angle = start + sense * 1.5f * b2_pi * static_cast<float>(i) / segments;
+    arc.points.push_back(ImVec2(centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle)));
+  }
+  return arc;
+}
+
+void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width) {
+  for (std::size_t k = 1; k < arc.points.size(); ++k) labels.avoid(DrawnSegment{arc.points[k - 1], arc.points[k], width});
+}
+
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 LabelPlacer& labels) {
+  draw->AddPolyline(arc.points.data(), static_cast<int>(arc.points.size()), colour, ImDrawFlags_None, thickness);
+  // The head, along the arc's last chord.
+  const ImVec2 tip = arc.points.back();
+  ImVec2 along = sub(tip, arc.points[arc.points.size() - 2]);
+  along = mul(along, 1.0f / std::sqrt(along.x * along.x + along.y * along.y));
+  const ImVec2 across(-along.y, along.x);
+  const float head = 3.0f * thickness;
+  draw->AddTriangleFilled(add(tip, mul(along, head)), add(tip, mul(across, 0.6f * head)), sub(tip, mul(across, 0.6f * head)),
+                          colour);
+  const std::string text = format_quantity(std::abs(arc.torque), "N·m");
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+  const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
+  const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
+  if (const std::optional<ImVec2> at = labels.place_if_free(wanted, size, text, true)) {
+    draw_label(draw, font, *at, colour, background, text.c_str());
+  }
+}
+
+void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,
+                  ImU32 fill, ImU32 outline, float thickness) {
+  ImVec2 points[b2_maxPolygonVertices];
+  for (int i = 0; i < shape.m_count; ++i) points[i] = camera.to_screen(body->GetWorldPoint(shape.m_vertices[i]));
+  draw->AddConvexPolyFilled(points, shape.m_count, fill);
+  draw->AddPolyline(points, shape.m_count, outline, ImDrawFlags_Closed, thickness);
+}
+
+
+}  // namespace frictionlab::ui

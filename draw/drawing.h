@@ -1,0 +1,128 @@
+// Drawing pieces the world view, the legend and the free-body inset share: labels that keep
+// out of each other's way, arrows, force arrows with their values, polygons, and a few facts
+// about fixtures (is it ground, what is it made of).
+#pragma once
+
+#include <box2d/box2d.h>
+#include <imgui.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "draw/camera.h"
+#include "draw/overlays.h"
+#include "draw/theme.h"
+#include "physics/scene.h"
+
+namespace frictionlab::ui {
+
+inline ImVec2 add(ImVec2 a, ImVec2 b) { return ImVec2(a.x + b.x, a.y + b.y); }
+inline ImVec2 sub(ImVec2 a, ImVec2 b) { return ImVec2(a.x - b.x, a.y - b.y); }
+inline ImVec2 mul(ImVec2 a, float s) { return ImVec2(a.x * s, a.y * s); }
+inline float length(ImVec2 a) { return std::hypot(a.x, a.y); }
+
+// 1, 2 or 5 times a power of ten: the nicest length near `wanted`.
+float nice_length(float wanted);
+const std::string& material_name(const Scene& scene, const b2Fixture* fixture);
+ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& theme);
+
+// A line drawn in the picture, as thick as it is drawn: an arrow's shaft and head.
+struct DrawnSegment {
+  ImVec2 from, to;
+  float half_width;
+};
+// Whether a box (x0, y0, x1, y1) and a thick segment share any point.
+bool overlaps(const ImVec4& box, const DrawnSegment& segment);
+inline bool overlaps(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
+
+// Keeps text labels off each other and off the arrows and marks drawn, and inside the view,
+// within one picture. Tell it what is drawn (avoid) before asking where labels go (place).
+class LabelPlacer {
+ public:
+  LabelPlacer(ImVec2 corner, ImVec2 size) : low_(corner), high_(add(corner, size)) {}
+  void avoid(const DrawnSegment& segment) { segments_.push_back(segment); }
+  void avoid(const ImVec4& box) { marks_.push_back(box); }
+  // A moving body's box on screen. The lesson's own labels may lie on a body (a contact's word
+  // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
+  void body(const ImVec4& box) { bodies_.push_back(box); }
+  // Where a label of this size goes: at `wanted` (its centre), or the nearest place around it
+  // that covers no label, arrow or mark (nor body, with `off_bodies`, unless the bodies leave no
+  // such place near); `wanted` itself when there is none near. `text` is kept with its box for
+  // the layout's tests.
+  ImVec2 place(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // As place(), but nowhere (nullopt, nothing taken) when no place near is free: a force's value
+  // or a contact's word left out is better than one drawn over another label, where neither
+  // can be read (a projector's thin lanes of blocks side by side).
+  std::optional<ImVec2> place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // A label's box at `centre`, padding included, as place() takes it.
+  static ImVec4 box_around(ImVec2 centre, ImVec2 size);
+  // Whether a label's box (padding included) would cover nothing known and stay in the view.
+  bool free(const ImVec4& box, bool off_bodies) const;
+  // Takes a box found free() as it is: a label that names a place (a distance mark's number)
+  // goes there or nowhere.
+  void take(const ImVec4& box, const std::string& text) {
+    taken_.push_back(box);
+    texts_.push_back(text);
+  }
+
+  // What it placed and what it was told to avoid, for tests that check the picture's layout.
+  const std::vector<ImVec4>& labels() const { return taken_; }  // x0, y0, x1, y1, padding included
+  const std::vector<std::string>& texts() const { return texts_; }  // each label's text
+  const std::vector<DrawnSegment>& segments() const { return segments_; }
+  const std::vector<ImVec4>& marks() const { return marks_; }
+  const std::vector<ImVec4>& bodies() const { return bodies_; }
+  ImVec4 bounds() const { return ImVec4(low_.x, low_.y, high_.x, high_.y); }
+
+ private:
+  bool clear(const ImVec4& box, bool off_bodies) const;  // covers nothing known
+  static constexpr float pad = 2.0f;  // px kept clear around a label's text
+  ImVec2 moved_inside(ImVec2 centre, ImVec2 size) const;  // a centre moved so the box stays in the view
+
+  ImVec2 low_, high_;          // the view labels must stay in
+  std::vector<ImVec4> taken_;  // x0, y0, x1, y1
+  std::vector<std::string> texts_;
+  std::vector<DrawnSegment> segments_;
+  std::vector<ImVec4> marks_;
+  std::vector<ImVec4> bodies_;
+};
+
+// The passes of a lane's drawing that the window adds to the world (FrameStyle::world_tools),
+// in their order: what it will draw is told to the placer first, labels that name a place take
+// it before the lesson's labels, which may move, are placed, and the rest comes last.
+enum class WorldToolsPass {
+  avoid,         // before the world: what will be drawn, for the label placer
+  fixed_labels,  // once the world's arrows, marks, springs and bodies are known, before its labels
+  draw,          // after the world: the rest, with labels that may move
+};
+
+// A torque drawn as a curved arrow three quarters of the way round `centre` in its sense
+// (counter-clockwise positive, as in the world), with its size in N·m by the arrow's tail.
+// Made apart from drawing, so its chords can be given to the label placer before any label.
+struct TorqueArc {
+  ImVec2 centre;
+  float radius = 0.0f;
+  double torque = 0.0;
+  std::vector<ImVec2> points;  // along the arc, tail first
+};
+TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
+// Keeps labels off the arc: its chords, `width` wide, for the label placer.
+void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width);
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 LabelPlacer& labels);
+
+// A label with a background that keeps it readable over bodies and lines; `centre` is where
+// the middle of the text goes. No background when `background` is 0.
+void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU32 background, const char* text);
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness);
+// A force's arrow in its kind's colour, with its value in newtons just beyond the tip.
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels);
+// The same with its own label text ("9.81 N in all"); no label when `text` is empty.
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels, const std::string& text);
+void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
+                  ImU32 outline, float thickness);
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,525 @@
+#include "draw/frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "draw/free_body.h"
+#include "draw/legend.h"
+#include "draw/overlays.h"
+#include "draw/panels.h"
+#include "draw/plots.h"
+#include "draw/text_record.h"
+#include "draw/words.h"
+#include "draw/world_view.h"
+#include "lessons/runtime/class_words.h"
+
+namespace frictionlab::ui {
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
+  FrameLayout layout;
+  const float gap = 4.0f * scale;
+  const float title_height = 70.0f * scale;
+  // A slider row and a theory row need a width that grows with the text: at a screen's own
+  // text size a third of the screen holds them, at projector size (the screen's text size
+  // times 1.35) 39 % of it does; the world keeps the rest, room for its labels.
+  const float column_width = std::max({0.36f * display.x, 300.0f * scale, std::min(0.5f * display.x, 370.0f * scale)});
+  const float left_width = display.x - column_width - gap;
+  layout.title_corner = ImVec2(0.0f, 0.0f);
+  layout.title_size = ImVec2(display.x, title_height);
+  const float below = display.y - title_height - gap;
+  layout.world_corner = ImVec2(0.0f, title_height + gap);
+  // The legend has a strip of its own under the world, so nothing in the world hides it.
+  const float legend_height = 50.0f * scale;
+  layout.world_size = ImVec2(left_width, 0.57f * below - legend_height);
+  layout.legend_corner = ImVec2(0.0f, layout.world_corner.y + layout.world_size.y);
+  layout.legend_size = ImVec2(left_width, legend_height);
+  // The free-body diagram takes at most a third of the world's width and 70 % of its height, so
+  // that with large text (projector mode) it does not cover the world it explains.
+  layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.7f * layout.world_size.y));
+  layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
+  layout.plots_corner = ImVec2(0.0f, layout.legend_corner.y + legend_height + gap);
+  layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);
+  layout.column_corner = ImVec2(left_width + gap, title_height + gap);
+  layout.column_size = ImVec2(column_width, below);
+  for (ImVec2* corner : {&layout.title_corner, &layout.world_corner, &layout.legend_corner, &layout.inset_corner,
+                         &layout.plots_corner, &layout.column_corner}) {
+    corner->x += origin.x;
+    corner->y += origin.y;
+  }
+  return layout;
+}
+
+std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
+                                  float scale, ImVec2 origin, const ViewAdjust& adjust) {
+  const FrameLayout layout = FrameLayout::of(display, scale, origin);
+  return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
+                         layout.world_size.x - layout.inset_size.x, scale, adjust);
+}
+
+Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                    ImVec2 origin) {
+  return world_cameras(lesson, framing, display, scale, origin).front();
+}
+
+float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale) {
+  const FrameLayout layout = FrameLayout::of(display, scale);
+  // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
+  // lanes): long enough to read, short enough to stay in the picture.
+  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
+  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
+  // A lane holds one body's arrows only, so they may take more of its height.
+  return pixels_per_newton(lesson.scene(), std::clamp((lanes ? 0.4f : 0.26f) * height, 30.0f * scale, 150.0f * scale));
+}
+
+namespace {
+
+// How the column's panels share its height. The parameters and the theory table come first:
+// the ledger and the model card become tabs of one panel when the column is short, the theory
+// table joins them as the first tab when it is shorter still, and only then do friction pairs
+// give way, the last pair first: the window's sliders two a row, then folded into a line each
+// (a picture's values folded at once). What still does not fit is cut (a picture) or scrolled
+// (the window's tabs).
+struct ColumnPlan {
+  float parameters = 0.0f, theory = 0.0f, energy = 0.0f, model = 0.0f;
+  std::size_t parameters_step = 0;  // how far the parameters gave way
+  bool books_tabbed = false, theory_in_tabs = false, books_scroll = false;
+  bool theory_whole = true;  // the theory panel (or its tab) holds what it was planned for
+};
+
+// `theory`: the theory panel's contents, the height it is planned for. `whole_theory`: when
+// even the last step leaves them too little room, the parameters give way as far as they can
+// (else they keep half the column).
+ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
+                       bool whole_theory = false) {
+  const float s = style.fonts->scale;
+  const FrameLayout base = FrameLayout::of(display, s, style.origin);
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
+  const float padding = 2.0f * imgui.WindowPadding.y;
+  const float gap = 4.0f * s;
+  const float inside = base.column_size.x - 2.0f * imgui.WindowPadding.x;
+  const float theory = bar + padding + 4.0f * s + theory_contents;
+  const bool window = static_cast<bool>(style.parameters_panel);
+  // The parameters' height at each step of giving way: in a picture, the last k pairs folded;
+  // the window's steps are its own (parameters_heights).
+  const std::size_t steps = window ? style.parameters_heights.size() - 1 : parameter_pairs(lesson).size();
+  const auto parameters = [&](std::size_t step) {
+    return window ? style.parameters_heights[step] : parameters_panel_height(lesson, base.column_size.x, step, style.hidden);
+  };
+  const float ledger = energy_contents_height(lesson.scene(), inside);
+  const float energy = bar + padding + 4.0f * s + ledger;
+  const float model = bar + padding + 4.0f * s + model_contents_height(lesson, inside);
+  // A tab bar in place of a title bar, and "since t = 0" under it when the tab's name is short.
+  const float books = std::max(bar + padding + 4.0f * s + line + ledger, model) + imgui.ItemSpacing.y;
+  const float room = base.column_size.y;
+
+  ColumnPlan plan;
+  plan.theory = theory;
+  plan.energy = energy;
+  plan.model = model;
+  // Whatever the column has to spare goes to the parameters while every panel has its own
+  // panel and all fit; once the books are tabs, the parameters take what they need and the
+  // tabs (the last panel, to the column's foot) the rest, for the theory table, the class's
+  // predictions or a longer tab the teacher picks: a projector's theory table scrolled beside
+  // a half-empty Parameters panel.
+  bool spare_to_parameters = true;
+  const auto fits = [&](float others, std::size_t step) {
+    const float wanted = parameters(step) + others;
+    if (wanted > room) return false;
+    plan.parameters_step = step;
+    plan.parameters = spare_to_parameters ? room - others : parameters(step);
+    return true;
+  };
+  // The window always keeps the books as tabs (it has more of them).
+  if (!window && fits(theory + energy + model + 3.0f * gap, 0)) return plan;
+  plan.books_tabbed = true;
+  spare_to_parameters = false;
+  if (fits(theory + books + 2.0f * gap, 0)) return plan;
+  // The theory tab is the one shown first: the panel is made to hold it, and scrolls for a
+  // longer tab the teacher picks.
+  plan.theory_in_tabs = true;
+  plan.books_scroll = window;
+  const float tabs = theory;
+  for (std::size_t step = 0; step <= steps; ++step) {
+    if (fits(tabs + gap, step)) return plan;
+  }
+  // The tabs scroll; the parameters keep at least half the column, giving way only as far as
+  // that needs.
+  plan.theory_whole = false;
+  plan.parameters_step = steps;
+  if (whole_theory) {
+    plan.parameters = parameters(steps);
+    return plan;
+  }
+  const float budget = std::max(0.5f * room, room - tabs - gap);
+  for (std::size_t step = 0; step <= steps; ++step) {
+    if (parameters(step) <= budget) {
+      plan.parameters_step = step;
+      break;
+    }
+  }
+  plan.parameters = std::min(parameters(plan.parameters_step), budget);
+  return plan;
+}
+
+// A plot panel's inside, for its chart: less its title bar, or its title wrapped inside it
+// when the title is longer than the bar (large text, three plots in a row), or the pager's
+// row (buttons and title) that stands for the bar.
+bool title_inside(const std::string& title, ImVec2 size) {
+  return ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x > size.x;
+}
+// The pager's line: its title and the page's number, after the two buttons.
+std::string pager_line(const std::string& title, std::size_t page, std::size_t pages) {
+  return title + "  (" + std::to_string(page + 1) + "/" + std::to_string(pages) + ")";
+}
+float pager_buttons_width() {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  return 2.0f * (ImGui::CalcTextSize("\u2192").x + 2.0f * imgui.FramePadding.x + imgui.ItemSpacing.x);
+}
+ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
+  const ImGuiStyle& imgui = ImGui::GetStyle();
+  const float inside_width = size.x - 2.0f * imgui.WindowPadding.x;
+  const auto wrapped = [&](const std::string& text, float wrap) {
+    return ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap).y;
+  };
+  const float top =
+      pager ? std::max(ImGui::GetFrameHeight(), wrapped(pager_line(title, 9, 9), inside_width - pager_buttons_width()) +
+                                                    imgui.FramePadding.y) +
+                  imgui.ItemSpacing.y
+      : title_inside(title, size) ? wrapped(title, inside_width) + imgui.ItemSpacing.y
+                                  : ImGui::GetFrameHeight();
+  return ImVec2(inside_width, size.y - 2.0f * imgui.WindowPadding.y - top);
+}
+
+// The plots under the world: up to three side by side, more on a second row. In the window,
+// when that leaves a plot's legend no room off its data (large text: three plots across a
+// projector put 3–5-key legends over the data), fewer go side by side, a page at a time; the
+// first plot of a page has ← and → before its title to turn the pages, in place of its title
+// bar. The choice counts every key a plot can have (its theory curves, shown or not yet), so
+// the pages stay as the run goes on and at the reveal. A picture, which nobody clicks, keeps
+// every plot in view.
+// Before the reveal the time axis must not tell how long the run is: a lesson runs until what it
+// teaches has been seen, so push's axis, drawn before Play, gave a mystery's μs away (it runs a
+// while past the breakaway at μs·m·g), and any lesson's axis says roughly when things happen.
+// The axis grows with the run instead, to the next of 1, 2, 5, 10, 20, ... s.
+double time_axis_before_reveal(double now) {
+  double span = 1.0;
+  for (int i = 0; span < now && i < 60; ++i) span *= (i % 3 == 1) ? 2.5 : 2.0;
+  return span;
+}
+
+// The least width of a plot's data, as a share of its panel's, before the window shows fewer
+// plots side by side (a page at a time): the rest is for its axis labels and a legend beside it.
+constexpr float min_data_share = 0.5f;
+
+void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
+                const Theme& colours) {
+  const Fonts& fonts = *style.fonts;
+  const float s = fonts.scale;
+  const auto& plots = lesson.plots();
+  // The window's extra plot (the force gauge) comes last.
+  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
+  if (plot_count == 0) return;
+  const auto title_of = [&](std::size_t i) -> const std::string& {
+    return i == plots.size() ? style.extra_plot_title : plots[i].title;
+  };
+  const float gap = 4.0f * s;
+  const std::size_t most = std::min<std::size_t>(plot_count, 3);
+  // Each lesson plot's legend has room at `per_row` plots side by side (a page of one row when
+  // that is fewer than all of them).
+  const auto all_have_room = [&](std::size_t per_row) {
+    const bool paged = per_row < most;
+    const std::size_t rows = paged ? 1 : (plot_count + per_row - 1) / per_row;
+    const ImVec2 size(layout.plots_size.x / static_cast<float>(per_row) - (per_row > 1 ? gap : 0.0f),
+                      layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+      // A little less than the panel will hold, so that rounding does not tip the choice.
+      const ImVec2 area = chart_area(title_of(i), size, paged && i % per_row == 0);
+      const Chart chart = plot_chart(lesson, i, time_span, colours, true);
+      const ImVec2 room(area.x - 4.0f * s, area.y - 4.0f * s);
+      if (!legend_has_room(chart, room, fonts)) return false;
+      // Nor a legend beside the data that leaves the data a sliver: the incline's two plots side
+      // by side in projector mode drew their curves 240 px wide, their legends as wide again.
+      const ChartLayout laid = layout_chart(chart, ImVec2(0.0f, 0.0f), room, fonts);
+      if (laid.high_right.x - laid.low_left.x < min_data_share * room.x) return false;
+    }
+    return true;
+  };
+  std::size_t per_row = most;
+  if (style.parameters_panel) {
+    while (per_row > 1 && !all_have_room(per_row)) --per_row;
+  }
+  const bool paged = per_row < most;
+  const std::size_t page_count = paged ? (plot_count + per_row - 1) / per_row : 1;
+  const std::size_t rows_of_plots = paged ? 1 : (plot_count + per_row - 1) / per_row;
+  const float width = layout.plots_size.x / static_cast<float>(per_row);
+  const float height = layout.plots_size.y / static_cast<float>(rows_of_plots);
+  std::size_t page = 0;
+  for (std::size_t k = 0; k < (paged ? per_row : plot_count); ++k) {
+    const std::size_t column = k % per_row, row = k / per_row;
+    const ImVec2 at(layout.plots_corner.x + width * static_cast<float>(column),
+                    layout.plots_corner.y + height * static_cast<float>(row));
+    const ImVec2 size(width - (column + 1 < per_row ? gap : 0.0f), height - (row + 1 < rows_of_plots ? gap : 0.0f));
+    const bool pager = paged && k == 0;
+    // The pager's panel keeps its name from page to page: the page is kept in its state.
+    const std::string id = pager ? std::string("plot pager") : "plot" + std::to_string(k);
+    std::size_t i = k;
+    bool open = false;
+    if (pager) {
+      open = begin_panel(id.c_str(), "", at, size);
+      ImGuiStorage* state = ImGui::GetStateStorage();
+      const ImGuiID kept = ImGui::GetID("page");
+      page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
+      if (style.turn_plot_pages != 0) {
+        const long turned = static_cast<long>(page) + style.turn_plot_pages;
+        page = static_cast<std::size_t>(std::clamp<long>(turned, 0, static_cast<long>(page_count) - 1));
+      }
+      if (style.show_extra_plot && style.extra_plot) page = page_count - 1;  // the extra plot is the last
+      const auto turn = [&](const char* label, bool enabled, std::size_t to) {
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::Button(label)) page = to;
+        note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+      };
+      turn("\u2190", page > 0, page > 0 ? page - 1 : 0);
+      turn("\u2192", page + 1 < page_count, page + 1);
+      state->SetInt(kept, static_cast<int>(page));
+      i = page * per_row;
+    } else {
+      i = page * per_row + k;
+      if (i >= plot_count) break;
+    }
+    const std::string& title = title_of(i);
+    const bool inside = !pager && title_inside(title, size);
+    if (!pager) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
+    if (open) {
+      if (pager) {
+        // The title on the buttons' line, as a title bar would have it, with the page's number.
+        ImGui::AlignTextToFramePadding();
+        const std::string line = pager_line(title, page, page_count);
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(line.c_str());
+        ImGui::PopTextWrapPos();
+      } else if (inside) {
+        ImGui::PushTextWrapPos(0.0f);
+        shown_text(title.c_str());
+        ImGui::PopTextWrapPos();
+      }
+      const ImVec2 area = ImGui::GetContentRegionAvail();
+      if (i == plots.size()) {
+        style.extra_plot(ImGui::GetCursorScreenPos(), area);
+      } else {
+        const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
+                                            area, colours, fonts, !style.theory_kept_back(), style.script_words);
+        if (style.record != nullptr) style.record->plots.push_back({i, drawn});
+      }
+    }
+    end_panel();
+  }
+}
+
+}  // namespace
+
+void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
+  const Fonts& fonts = *style.fonts;
+  const Theme& colours = theme(style.theme);
+  const float s = fonts.scale;
+  // Every text the panels draw is noted for the layout test.
+  std::optional<TextRecording> noting;
+  if (style.record != nullptr) noting.emplace(&style.record->texts);
+  ImGui::PushFont(fonts.body);
+  lessons::LessonReadings own;
+  if (style.readings == nullptr) {
+    own.duration = lesson.duration();
+    own.expectations = lesson.expectations();
+  }
+  const lessons::LessonReadings& readings = style.readings ? *style.readings : own;
+  const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
+  const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
+  const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
+  ColumnPlan column_plan = plan_column(lesson, style, display, table);
+  // The class's predictions are planned for whole (as the first tab, if need be). Before the
+  // reveal, while the class predicts, the friction pairs' sliders give way for them (a teacher
+  // typing the class's answer on a projector found the second question a scroll away, and the
+  // reveal button scrolled out of sight); after it they do so only while that folds no sliders,
+  // else they have the theory table's room and scroll (the reveal button comes first).
+  // Once the run has been played the class compares, and nobody slides values: the answers and
+  // the theory table under them have whatever gives way (the whole Parameters panel, in the
+  // window); what still does not fit of the table scrolls, the answers coming first.
+  bool theory_scrolls = false;
+  if (style.predictions_height) {
+    const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
+    const ColumnPlan roomy = plan_column(lesson, style, display, whole, style.comparing);
+    if (style.comparing) {
+      theory_scrolls = !roomy.theory_whole;
+      column_plan = roomy;
+    } else {
+      theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
+      if (!theory_scrolls) column_plan = roomy;
+    }
+  }
+  const FrameLayout layout = FrameLayout::of(display, s, style.origin);
+
+  title_panel(lesson, layout.title_corner, layout.title_size, fonts);
+
+  // The world, drawn into a window of its own so the panels' windows stay on top of it.
+  const ImVec2 world_and_legend(layout.world_size.x, layout.world_size.y + layout.legend_size.y);
+  if (begin_panel("world", "", layout.world_corner, world_and_legend)) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const std::vector<Camera> cameras =
+        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust);
+    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s);
+    // With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
+    std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (body->GetType() != b2_dynamicBody) continue;
+      std::size_t nearest = 0;
+      for (std::size_t lane = 1; lane < cameras.size(); ++lane) {
+        const float y = body->GetWorldCenter().y;
+        if (std::abs(y - cameras[lane].centre.y) < std::abs(y - cameras[nearest].centre.y)) nearest = lane;
+      }
+      lane_bodies[nearest].push_back(body);
+    }
+    // The free-body inset sits over the world's top right, where the framing leaves no body; a
+    // body the mouse's hand drags there (the view holds still while it pulls) would go under it,
+    // gauge and all: the inset then takes the top left instead.
+    const b2Body* focus = main_body(lesson.scene());
+    ImVec2 inset_corner = layout.inset_corner;
+    if (focus != nullptr && lesson.scene().grabbed() == focus) {
+      const b2AABB box = lessons::body_box(focus);
+      const ImVec2 high_right = cameras.front().to_screen(box.upperBound);  // screen y grows downwards: its top
+      if (high_right.x > inset_corner.x && high_right.y < inset_corner.y + layout.inset_size.y) {
+        inset_corner.x = layout.world_corner.x + 6.0f * s;
+      }
+    }
+    for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
+      const Camera& camera = cameras[lane];
+      const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
+      draw->PushClipRect(camera.origin, lane_end, true);
+      // Labels stay in what of the lane shows: the world's panel clips half its padding off
+      // each edge (10 px with projector text), and a label placed only inside the lane lost its
+      // first letter there (the speed readout of a body at the view's left edge).
+      const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
+      LabelPlacer labels(shown_min, sub(shown_max, shown_min));
+      const ImVec4 inset(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x,
+                         inset_corner.y + layout.inset_size.y);
+      labels.avoid(inset);
+      // Each lane named (by its body, or the title the lesson gave it) in its corner.
+      const std::string lane_name = cameras.size() < 2                  ? ""
+                                    : lane < framing.view.titles.size() ? framing.view.titles[lane]
+                                                                        : lessons::class_words(framing.view.bodies[lane]);
+      const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lane_name.c_str());
+      const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
+      if (!lane_name.empty()) {
+        labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
+                            name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
+      }
+      const auto tools = [&](WorldToolsPass pass) {
+        if (style.world_tools) style.world_tools(pass, draw, camera, lane, newtons_to_pixels, labels);
+      };
+      tools(WorldToolsPass::avoid);
+      draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels,
+                 cameras.size() > 1 ? &lane_bodies[lane] : nullptr, [&] { tools(WorldToolsPass::fixed_labels); });
+      tools(WorldToolsPass::draw);
+      if (style.record != nullptr) {
+        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
+                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(),
+                                       labels.bodies()});
+        style.record->inset = inset;
+      }
+      if (!lane_name.empty()) {
+        draw_label(draw, fonts.small, name_at, colours.text, colours.panel, lane_name.c_str());
+        // Parted from the lane above by a line.
+        if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
+      }
+      draw->PopClipRect();
+    }
+    const Camera& camera = cameras.front();
+    draw_legend(draw, lesson.scene(), camera, layout.legend_corner, layout.legend_size, colours, fonts, newtons_to_pixels);
+    std::string focus_name;
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (body == focus) focus_name = name;
+    }
+    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, colours, fonts);
+  }
+  end_panel();
+
+  const double now = lesson.scene().time();
+  draw_plots(lesson, style, layout,
+             style.theory_kept_back() ? time_axis_before_reveal(now) : std::max(readings.duration, now), colours);
+
+  // The column: parameters, theory against simulation, energy, model.
+  const ColumnPlan& plan = column_plan;
+  const float gap = 4.0f * s;
+  ImVec2 at = layout.column_corner;
+  const float width = layout.column_size.x;
+  if (style.parameters_panel) {
+    style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
+  } else {
+    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
+  }
+  at.y += plan.parameters + gap;
+  // The class's predictions come first; before the reveal they stand in for the theory.
+  const auto theory_part = [&] {
+    if (style.predictions) style.predictions();
+    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
+  };
+  if (!plan.theory_in_tabs && !style.predictions) {
+    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());
+    at.y += plan.theory + gap;
+  } else if (!plan.theory_in_tabs) {
+    if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
+                    ImVec2(width, plan.theory), theory_scrolls)) {
+      theory_part();
+    }
+    end_panel();
+    at.y += plan.theory + gap;
+  }
+  if (plan.books_tabbed) {
+    // Short names when the full ones would not fit side by side.
+    const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
+                                "Model card###model"};
+    const char* const brief[] = {style.theory_hidden ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
+                                 "Model###model"};
+    float full_width = 0.0f;
+    for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
+    const char* const* names = short_names ? brief : full;
+    // With the theory table the tabs are another bar, which opens on its first tab: the theory
+    // shows as it joins them (a column that just became short), and whatever tab was chosen
+    // comes back with the room. A picture, which nobody clicks, shows each bar's first tab.
+    if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
+        ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
+      if (plan.theory_in_tabs && begin_tab(names[0])) {
+        theory_part();
+        ImGui::EndTabItem();
+      }
+      if (begin_tab(names[1])) {
+        if (short_names) {
+          ImGui::TextDisabled("since t = 0");
+          note_text("since t = 0");
+        }
+        energy_contents(lesson.scene(), colours);
+        ImGui::EndTabItem();
+      }
+      if (begin_tab(names[2])) {
+        model_contents(lesson);
+        ImGui::EndTabItem();
+      }
+      if (style.more_tabs) style.more_tabs();
+      ImGui::EndTabBar();
+    }
+    end_panel();
+  } else {
+    energy_panel(lesson.scene(), at, ImVec2(width, plan.energy), colours);
+    at.y += plan.energy + gap;
+    model_panel(lesson, at, ImVec2(width, plan.model));
+  }
+
+  ImGui::PopFont();
+}
+
+}  // namespace frictionlab::ui

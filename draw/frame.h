@@ -1,0 +1,125 @@
+// One frame of a lesson: the same function draws a window's frame and a headless PNG. It
+// only draws: stepping the lesson is the caller's business.
+#pragma once
+
+#include <imgui.h>
+
+#include <functional>
+
+#include "draw/camera.h"
+#include "draw/chart.h"
+#include "draw/drawing.h"
+#include "draw/panels.h"
+#include "draw/text_record.h"
+#include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
+#include "lessons/runtime/readings.h"
+
+namespace frictionlab::ui {
+
+// Where each part of the frame goes, for a display of a given size: the world at the top
+// left with the plots below it, the panels in a column on the right. Large text (projector
+// mode) widens the column, so that sliders and the theory table's names keep their room.
+struct FrameLayout {
+  ImVec2 title_corner, title_size;
+  ImVec2 world_corner, world_size;
+  ImVec2 legend_corner, legend_size;
+  ImVec2 inset_corner, inset_size;  // the free-body diagram, over the world's top right
+  ImVec2 plots_corner, plots_size;
+  ImVec2 column_corner, column_size;
+  // The frame fills `size` from `origin` (the window keeps a menu bar above it and its
+  // transport controls below).
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f));
+};
+
+// Where the frame put things in the world view, for tests of its layout: per lane, the
+// camera and what its label placer placed and avoided; and the free-body inset.
+struct FrameRecord {
+  struct Lane {
+    Camera camera;
+    std::vector<ImVec4> labels;          // x0, y0, x1, y1
+    std::vector<DrawnSegment> arrows;    // as thick as drawn, heads included
+    std::vector<ImVec4> avoided;         // contact marks and the inset
+    ImVec4 shown{0.0f, 0.0f, 0.0f, 0.0f};  // what of the lane is not clipped away, x0, y0, x1, y1
+    std::vector<std::string> texts;        // each label's text, in the order of `labels`
+    std::vector<ImVec4> bodies;            // the moving bodies' boxes, which the tools' readings keep off
+  };
+  std::vector<Lane> lanes;
+  ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
+  // Every piece of text the panels drew, with what of it could show.
+  std::vector<ShownText> texts;
+  // Where each of the lesson's plots in view put its data, curves and legend: its number, its layout.
+  struct Plot {
+    std::size_t number;
+    ChartLayout layout;
+  };
+  std::vector<Plot> plots;
+};
+
+struct FrameStyle {
+  ThemeName theme = ThemeName::light;
+  const Fonts* fonts = nullptr;
+  ImVec2 origin{0.0f, 0.0f};
+  // The theory table and the lesson's duration, when the caller keeps them (the window works
+  // them out a few times a second); null: worked out for this frame.
+  const lessons::LessonReadings* readings = nullptr;
+  // A plot's script error as the class sees it (Classroom::script_words: the web page names a
+  // script by its file's name); empty: as Lua gives it.
+  std::function<std::string(const std::string&)> script_words;
+  // Draws the parameters panel in its place instead of the values as text (the window's
+  // sliders), at a step of giving way to a short column (0: every control whole); its heights
+  // at steps 0, 1, ... The window then shows the energy ledger and the model card as tabs of
+  // one panel, to leave the sliders room.
+  std::function<void(ImVec2 corner, ImVec2 size, std::size_t step)> parameters_panel;
+  std::vector<float> parameters_heights;
+  // The window's wheel zoom and drag pan.
+  ViewAdjust view_adjust;
+  // Filled with the world view's layout when not null.
+  FrameRecord* record = nullptr;
+  // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
+  std::function<void()> more_tabs;
+  // The class's predictions (the window), drawn at the top of the theory panel; their height
+  // at the panel's inside width. With `theory_hidden` they take the theory table's place, and
+  // nothing that states a theory value is drawn: the table, the plots' theory curves.
+  std::function<void()> predictions;
+  std::function<float(float width)> predictions_height;
+  bool theory_hidden = false;
+  // The run has been played: the class compares its answers with it, before the reveal and
+  // after. The answers are then planned whole whatever gives way for them (the window's last
+  // step of giving way folds the whole Parameters panel); the theory table under them may scroll.
+  bool comparing = false;
+  // The window's own drawing in each lane of the world (the force gauge, the measuring tools),
+  // called three times (WorldToolsPass): to tell the placer what it will draw, to draw what has
+  // fixed labels before the lesson's labels are placed, and to draw the rest after the world.
+  std::function<void(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+                     float newtons_to_pixels, LabelPlacer& labels)>
+      world_tools;
+  // One more plot after the lesson's (the force gauge's reading), drawn in its panel's inside;
+  // its title. None when empty.
+  std::string extra_plot_title;
+  std::function<void(ImVec2 corner, ImVec2 size)> extra_plot;
+  // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
+  // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
+  bool show_extra_plot = false;
+  // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
+  int turn_plot_pages = 0;
+  // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
+  HiddenValues hidden;
+  // Nothing may show the theory yet: kept back for the class's predictions, or giving a mystery away.
+  bool theory_kept_back() const { return theory_hidden || hidden.theory(); }
+};
+
+// Builds the frame's ImGui windows and draw lists; call between ImGui::NewFrame() and
+// ImGui::Render(). `framing` is the one chosen when the lesson was (re)built.
+void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style, ImVec2 display);
+
+// The world view's cameras (one per lane) and arrow scale for this frame, as build_frame draws
+// them: the window finds bodies under the mouse with them, tests find the arrows.
+std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
+                                  float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {});
+// The first (or only) of them.
+Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                    ImVec2 origin = ImVec2(0.0f, 0.0f));
+float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale);
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,110 @@
+#include "draw/free_body.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "draw/drawing.h"
+#include "draw/text_record.h"
+#include "draw/words.h"
+#include "lessons/runtime/class_words.h"
+
+namespace frictionlab::ui {
+
+void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
+                    ImVec2 size, const Theme& theme, const Fonts& fonts) {
+  const float s = fonts.scale;
+  draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
+  draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
+  // Shortened when the inset is narrow (large text): the name must show.
+  const std::string body_name = lessons::class_words(name);
+  std::string title = "Free-body diagram: " + body_name;
+  if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
+    title = body_name + ", forces";
+  }
+  const ImRect whole(corner, add(corner, size));
+  // Its texts noted for the layout test, in the inset's font.
+  const auto noted = [&](const std::string& text, ImVec2 at) {
+    ImGui::PushFont(fonts.small);
+    note_text_in(text.c_str(), at, whole);
+    ImGui::PopFont();
+  };
+  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
+  noted(title, ImVec2(corner.x + 8 * s, corner.y + 5 * s));
+  if (body == nullptr) return;
+
+  // The body alone, at its own zoom, upright as it is now.
+  b2AABB box;
+  box.lowerBound = box.upperBound = body->GetWorldCenter();
+  for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
+  const float header = fonts.small->FontSize + 10.0f * s, footer = fonts.small->FontSize + 8.0f * s;
+  Camera inset;
+  inset.origin = ImVec2(corner.x, corner.y + header);
+  inset.size = ImVec2(size.x, size.y - header - footer);
+  inset.centre = box.GetCenter();
+  const b2Vec2 extent = box.upperBound - box.lowerBound;
+  inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
+  inset.pixels_per_metre = std::min(0.32f * inset.size.x / std::max(extent.x, 1e-3f), 0.24f * inset.size.y / std::max(extent.y, 1e-3f));
+  const std::vector<ForceOnBody> forces = forces_on(scene, body);
+  float largest = 1e-6f;
+  for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
+  // The longest arrow, with its label beyond its tip, stays inside the diagram's area.
+  const float label_room = fonts.small->FontSize + 8.0f * s;
+  const float reach = std::max(0.32f * std::min(inset.size.x, inset.size.y),
+                               std::min(0.36f * std::min(inset.size.x, inset.size.y), 0.5f * inset.size.y - label_room));
+  const float newtons_to_pixels = reach / largest;
+
+  draw->PushClipRect(corner, add(corner, size), true);
+  for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+    const ImU32 fill = fixture_colour(scene, f, theme);
+    if (f->GetType() == b2Shape::e_polygon) {
+      draw_polygon(draw, body, *static_cast<const b2PolygonShape*>(f->GetShape()), inset, fill, theme.outline, 1.5f * s);
+    } else if (f->GetType() == b2Shape::e_circle) {
+      const auto& circle = *static_cast<const b2CircleShape*>(f->GetShape());
+      draw->AddCircleFilled(inset.to_screen(body->GetWorldPoint(circle.m_p)), surface_radius(circle) * inset.pixels_per_metre, fill, 32);
+    }
+  }
+  draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
+  const ImVec2 footer_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
+  if (scene.frame() == 0) {
+    // Before the first step the solver has not yet said what the contacts push with: the weight
+    // alone, on a block resting on a floor, showed the class unbalanced forces. No arrows until
+    // the run starts, and words that say so, on as many lines as the inset's width needs.
+    draw->PopClipRect();
+    std::vector<std::string> lines = {"forces appear once the run starts"};
+    if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lines.front().c_str()).x > size.x - 16.0f * s) {
+      lines = {"forces appear once", "the run starts"};
+    }
+    const float line_height = fonts.small->FontSize;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const ImVec2 at(footer_at.x, footer_at.y - static_cast<float>(lines.size() - 1 - i) * line_height);
+      draw->AddText(fonts.small, fonts.small->FontSize, at, theme.faint_text, lines[i].c_str());
+      noted(lines[i], at);
+    }
+    return;
+  }
+  // Labels between the title and the net force line, off every arrow.
+  LabelPlacer labels(inset.origin, inset.size);
+  b2Vec2 net{0.0f, 0.0f};
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
+  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
+  // A motor's torque on the body, round its centre of mass.
+  std::vector<TorqueArc> torques;
+  for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
+    if (scene.applied_forces()[i].body != body || scene.torques_applied()[i] == 0.0) continue;
+    const float half = 0.5f * std::min(extent.x, extent.y) * inset.pixels_per_metre;
+    torques.push_back(torque_arc(inset.to_screen(body->GetWorldCenter()), std::max(1.3f * half, 12.0f * s),
+                                 scene.torques_applied()[i]));
+    avoid_arc(labels, torques.back(), 6.0f * s);
+  }
+  for (const ScreenArrow& arrow : arrows) draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
+  for (const TorqueArc& arc : torques) {
+    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
+  }
+  for (const ForceOnBody& force : forces) net += force.force;
+  draw->PopClipRect();
+  const std::string net_text = "net force: " + format_quantity(net.Length(), "N");
+  draw->AddText(fonts.small, fonts.small->FontSize, footer_at, theme.faint_text, net_text.c_str());
+  noted(net_text, footer_at);
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,153 @@
+#include "draw/legend.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "draw/drawing.h"
+#include "draw/text_record.h"
+#include "draw/words.h"
+#include "lessons/runtime/class_words.h"
+
+namespace frictionlab::ui {
+namespace {
+
+std::string metres(float value) {
+  char text[32];
+  if (value >= 1.0f) {
+    std::snprintf(text, sizeof text, "%g m", static_cast<double>(value));
+  } else {
+    std::snprintf(text, sizeof text, "%g cm", static_cast<double>(value * 100.0f));
+  }
+  return text;
+}
+
+// In the legend's strip, right: a bar of a round length in metres, its end at `bottom_right`,
+// its length written above it, or before it (`beside`) when the row above is taken.
+void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_right, const Theme& theme, const Fonts& fonts,
+                    bool beside) {
+  const float bar = nice_length(110.0f * fonts.scale / pixels_per_metre);
+  const float pixels = bar * pixels_per_metre;
+  const ImVec2 end(bottom_right.x - 16.0f * fonts.scale, bottom_right.y - 12.0f * fonts.scale);
+  const ImVec2 start(end.x - pixels, end.y);
+  const float tick = 6.0f * fonts.scale;
+  draw->AddLine(start, end, theme.text, 2.0f * fonts.scale);
+  draw->AddLine(ImVec2(start.x, end.y - tick), ImVec2(start.x, end.y + 1), theme.text, 2.0f * fonts.scale);
+  draw->AddLine(ImVec2(end.x, end.y - tick), ImVec2(end.x, end.y + 1), theme.text, 2.0f * fonts.scale);
+  const std::string length = metres(bar);
+  const float width = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, length.c_str()).x;
+  const ImVec2 label = beside ? ImVec2(start.x - 8.0f * fonts.scale - 0.5f * width, end.y - 0.5f * tick)
+                              : ImVec2(0.5f * (start.x + end.x), end.y - 14.0f * fonts.scale);
+  draw_label(draw, fonts.small, label, theme.text, 0, length.c_str());
+}
+
+}  // namespace
+
+void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImVec2 corner, ImVec2 size,
+                 const Theme& theme, const Fonts& fonts, float newtons_to_pixels) {
+  ImFont* font = fonts.small;
+  const float s = fonts.scale, line = font->FontSize + 6.0f * s;
+  const auto width_of = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  draw->AddRectFilled(corner, add(corner, size), theme.panel);
+  draw->AddLine(corner, ImVec2(corner.x + size.x, corner.y), theme.grid);
+  const ImVec2 bottom_left(corner.x, corner.y + size.y - 2.0f * s);
+  const float left = bottom_left.x + 10.0f * s, right = corner.x + size.x;
+  // The strip's edge and the text drawn in it, noted for the layout test.
+  const ImRect strip(corner, add(corner, size));
+  const auto text_at = [&](ImVec2 at, const std::string& text) {
+    draw->AddText(font, font->FontSize, at, theme.text, text.c_str());
+    ImGui::PushFont(font);
+    note_text_in(text.c_str(), at, strip);
+    ImGui::PopFont();
+  };
+
+  // What goes on each row: the kinds of force in the picture with the arrow scale (so a
+  // teacher can read a length as newtons), then the contact states and the materials.
+  // Friction, normal force and weight are always named: they are the lesson.
+  bool present[force_kind_count] = {};
+  present[static_cast<int>(ForceKind::friction)] = present[static_cast<int>(ForceKind::normal)] =
+      present[static_cast<int>(ForceKind::weight)] = true;
+  for (const auto& [name, body] : scene.bodies()) {
+    for (const ForceOnBody& force : forces_on(scene, body)) present[static_cast<int>(force.kind)] = true;
+  }
+  const float newtons = nice_length(40.0f * s / newtons_to_pixels);
+  char scale_text[48];
+  std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));
+  float arrows_end = left;
+  for (int kind = 0; kind < force_kind_count; ++kind) {
+    if (present[kind]) arrows_end += 40.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))) + 10.0f * s;
+  }
+  arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text);
+  std::vector<std::pair<ImU32, std::string>> materials;
+  for (const auto& [name, body] : scene.bodies()) {
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      const std::string material = lessons::class_words(material_name(scene, fixture));
+      bool listed = false;
+      for (const auto& [colour, named] : materials) listed = listed || named == material;
+      if (!listed) materials.emplace_back(fixture_colour(scene, fixture, theme), material);
+    }
+  }
+  // A chip's swatch, its name after it and a gap before the next: closer together when tight.
+  const auto chips_width = [&](const char* sticking, const char* slipping, float advance) {
+    float width = left + 2.0f * advance + width_of(sticking) + width_of(slipping);
+    for (const auto& [colour, material] : materials) width += advance + width_of(material);
+    return width;
+  };
+  // The scale bar goes at the right of the arrows' row, or of the materials' row (its length
+  // written before it) when the arrows leave it no room. With large text in a narrow world the
+  // contact states are then named by a word each, and then the chips close up, as far as the
+  // row needs.
+  const float bar = nice_length(110.0f * s / camera.pixels_per_metre);
+  const float bar_room = bar * camera.pixels_per_metre + 32.0f * s;
+  const bool bar_below = arrows_end + bar_room > right;
+  const float chips_room = bar_below ? right - bar_room - width_of(metres(bar)) - 8.0f * s : right;
+  bool short_states = false, tight = false;
+  for (const auto& [shorter, closer] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+    short_states = shorter;
+    tight = closer;
+    if (chips_width(shorter ? "sticking" : "sticking contact", shorter ? "slipping" : "slipping contact",
+                    (closer ? 26.0f : 32.0f) * s) <= chips_room) {
+      break;
+    }
+  }
+  const char* sticking = short_states ? "sticking" : "sticking contact";
+  const char* slipping = short_states ? "slipping" : "slipping contact";
+  const float advance = (tight ? 26.0f : 32.0f) * s, name_offset = (tight ? 18.0f : 20.0f) * s;
+  const float arrows_y = bottom_left.y - 2.0f * line, chips_y = bottom_left.y - line;
+  draw_scale_bar(draw, camera.pixels_per_metre,
+                 ImVec2(right, (bar_below ? chips_y : arrows_y) + 0.5f * font->FontSize + 14.0f * s), theme, fonts,
+                 bar_below);
+
+  ImVec2 at(left, arrows_y);
+  for (int kind = 0; kind < force_kind_count; ++kind) {
+    if (!present[kind]) continue;
+    const ImU32 colour = theme.force[kind];
+    draw_arrow(draw, ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + 26.0f * s, at.y + 0.5f * font->FontSize),
+               colour, 3.0f * s);
+    const std::string name(force_kind_name(static_cast<ForceKind>(kind)));
+    text_at(ImVec2(at.x + 32.0f * s, at.y), name);
+    at.x += 40.0f * s + width_of(name) + 10.0f * s;
+  }
+  draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
+                theme.text, 3.0f * s);
+  text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
+
+  at = ImVec2(left, chips_y);
+  const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
+    const ImVec2 centre(at.x + 7.0f * s, at.y + 0.5f * font->FontSize);
+    if (round) {
+      draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
+    } else {
+      draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
+      draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);
+    }
+    text_at(ImVec2(at.x + name_offset, at.y), text);
+    at.x += advance + width_of(text);
+  };
+  chip(theme.sticking, sticking, true);
+  chip(theme.slipping, slipping, true);
+  for (const auto& [colour, material] : materials) chip(colour, material, false);
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,16 @@
+// The strip under the world: what each colour means, the arrows' scale in newtons, the
+// materials in the picture and a scale bar in metres.
+#pragma once
+
+#include <imgui.h>
+
+#include "draw/camera.h"
+#include "draw/theme.h"
+#include "physics/scene.h"
+
+namespace frictionlab::ui {
+
+void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImVec2 corner, ImVec2 size,
+                 const Theme& theme, const Fonts& fonts, float newtons_to_pixels);
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,90 @@
+#include "draw/overlays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace frictionlab::ui {
+
+float pixels_per_newton(const Scene& scene, float reference_pixels) {
+  float heaviest = 0.0f;
+  const float g = scene.world().GetGravity().Length();
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() == b2_dynamicBody) heaviest = std::max(heaviest, body->GetMass() * g);
+  }
+  return reference_pixels / std::max(heaviest, 1e-3f);
+}
+
+float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
+
+std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
+                                      float pixels_per_newton) {
+  std::vector<ScreenArrow> arrows;
+  for (const ForceOnBody& force : forces) {
+    const ImVec2 tail = camera.to_screen(force.point);
+    const ImVec2 tip(tail.x + force.force.x * pixels_per_newton, tail.y - force.force.y * pixels_per_newton);
+    ScreenArrow arrow{force, tail, tip};
+    if (arrow.length() >= 2.0f) arrows.push_back(arrow);
+  }
+  // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
+  // force: each moves half a gap across, keeping its length and direction.
+  constexpr float gap = 9.0f;
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    for (std::size_t j = i + 1; j < arrows.size(); ++j) {
+      ScreenArrow& p = arrows[i];
+      ScreenArrow& q = arrows[j];
+      const float px = p.tip.x - p.tail.x, py = p.tip.y - p.tail.y, pl = p.length();
+      const float qx = q.tip.x - q.tail.x, qy = q.tip.y - q.tail.y, ql = q.length();
+      const float cross = std::abs(px * qy - py * qx) / (pl * ql);
+      if (cross > 0.17f) continue;  // more than 10° apart
+      const float ux = px / pl, uy = py / pl;
+      const float offset = (q.tail.x - p.tail.x) * -uy + (q.tail.y - p.tail.y) * ux;
+      if (std::abs(offset) > gap) continue;
+      // Overlap along the line: project q's ends on p's line.
+      const float q0 = (q.tail.x - p.tail.x) * ux + (q.tail.y - p.tail.y) * uy;
+      const float q1 = (q.tip.x - p.tail.x) * ux + (q.tip.y - p.tail.y) * uy;
+      if (std::max(q0, q1) <= 0.0f || std::min(q0, q1) >= pl) continue;
+      const float side = offset >= 0.0f ? 1.0f : -1.0f;
+      const ImVec2 shift(-uy * side * 0.5f * gap, ux * side * 0.5f * gap);
+      p.tail = ImVec2(p.tail.x - shift.x, p.tail.y - shift.y);
+      p.tip = ImVec2(p.tip.x - shift.x, p.tip.y - shift.y);
+      q.tail = ImVec2(q.tail.x + shift.x, q.tail.y + shift.y);
+      q.tip = ImVec2(q.tip.x + shift.x, q.tip.y + shift.y);
+    }
+  }
+  return arrows;
+}
+
+std::string format_quantity(double value, const char* unit) {
+  char text[64];
+  const double magnitude = std::abs(value);
+  if (magnitude == 0.0) return std::string("0 ") + unit;
+  if (magnitude < 1e-3) {
+    // 4.2×10⁻⁸ rather than 4.2e-08: the notation of the classroom.
+    int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    double mantissa = value / std::pow(10.0, exponent);
+    // 9.96×10⁻⁴ rounds to two digits as 10: written 1×10⁻³, not 10×10⁻⁴.
+    if (std::abs(mantissa) >= 9.95) {
+      mantissa /= 10.0;
+      ++exponent;
+    }
+    std::snprintf(text, sizeof text, "%.2g\u00d710", mantissa);
+    std::string shown = text;
+    static const char* const superscript[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                              "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+    shown += "\u207b";
+    for (char digit : std::to_string(-exponent)) shown += superscript[digit - '0'];
+    shown = shown + " " + unit;
+    if (shown[0] == '-') shown.replace(0, 1, "\u2212");
+    return shown;
+  }
+  const char* format = magnitude >= 100.0 ? "%.0f %s" : magnitude >= 10.0 ? "%.1f %s" : magnitude >= 1.0 ? "%.2f %s"
+                       : magnitude >= 0.1 ? "%.3f %s" : magnitude >= 0.01 ? "%.4f %s" : "%.5f %s";
+  std::snprintf(text, sizeof text, format, value, unit);
+  // A minus sign, not a hyphen, in front of negative numbers.
+  std::string shown = text;
+  if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
+  return shown;
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,39 @@
+// What the teaching overlays show, taken from what the solver did: forces on each body (from
+// the friction listener's contact records, the springs and the applied forces) and the state
+// of every contact. Worked out apart from drawing, so tests can check them against the record.
+#pragma once
+
+#include <box2d/box2d.h>
+#include <imgui.h>
+
+#include <string>
+#include <vector>
+
+#include "draw/camera.h"
+#include "draw/theme.h"
+#include "physics/scene.h"
+#include "physics/scene_forces.h"
+
+namespace frictionlab::ui {
+
+
+// Newtons to pixels, the same for every frame of a lesson: the heaviest weight gets
+// `reference_pixels`.
+float pixels_per_newton(const Scene& scene, float reference_pixels);
+
+// An arrow as drawn: tail and tip in pixels.
+struct ScreenArrow {
+  ForceOnBody force;
+  ImVec2 tail, tip;
+  float length() const;
+};
+// Tails at the point of action; an arrow too short to see (under 2 px) is left out. Two
+// arrows of one body lying along one line (weight and normal force) are drawn side by side.
+std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
+                                      float pixels_per_newton);
+
+// "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
+// ten) and the unit.
+std::string format_quantity(double value, const char* unit);
+
+}  // namespace frictionlab::ui

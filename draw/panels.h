@@ -1,0 +1,73 @@
+// The ImGui panels beside the world: the lesson's title and question, its parameters, the
+// theory-against-simulation table, the energy ledger and the model card. Each reads the lesson
+// directly; nothing is copied.
+#pragma once
+
+#include <imgui.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::ui {
+
+// What the class must not see yet: the parameters of a mystery pair (classroom_state/mystery.h), by name.
+// While any is hidden, so is the theory worked out from them (the theory table's predictions
+// and errors, the plots' theory curves): a breakaway force predicted gives μs away.
+struct HiddenValues {
+  std::set<std::string> parameters;
+  bool hides(const std::string& parameter) const { return parameters.count(parameter) > 0; }
+  bool theory() const { return !parameters.empty(); }
+};
+// What a hidden value shows in its place.
+inline constexpr const char* hidden_value_text = "? (a mystery)";
+
+// A fixed panel at a place in the frame, with a title bar unless `title` is empty.
+// `scroll`: what does not fit scrolls (a window's panel) instead of being cut at the edge.
+bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, bool scroll = false);
+void end_panel();
+
+void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+
+// The friction pair a parameter is a coefficient of ("aluminium on wood"), "" for any other.
+std::string pair_of(const lessons::Parameter& parameter);
+// The pairs among a lesson's parameters, each once, in the order they come.
+std::vector<std::string> parameter_pairs(const lessons::Lesson& lesson);
+// A pair's coefficients on one line, without units, drag coefficients only when on: "μs 0.45  μk 0.35".
+// A hidden coefficient shows "?".
+std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, const HiddenValues& hidden = {});
+
+// The values as text. The last `folded_pairs` friction pairs are folded into a line each (their
+// coefficients side by side) when the column is short.
+void parameters_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, std::size_t folded_pairs = 0,
+                      const HiddenValues& hidden = {});
+// The height that panel takes, in the current font, at a width.
+float parameters_panel_height(const lessons::Lesson& lesson, float width, std::size_t folded_pairs,
+                              const HiddenValues& hidden = {});
+// `error`: the script could not work the table out (shown instead of it); `caveat`: why the
+// rows should not be trusted yet (shown above them); `predictions_hidden`: the predicted and
+// error columns say "hidden" (a mystery's values would be read off them).
+void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
+                  const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false);
+void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
+void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
+// What the theory, energy and model panels hold, for a window that shows them as tabs of one panel.
+void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme,
+                     const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false);
+// The height theory_contents takes at a width (the panel's inside), in the current font.
+float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width,
+                             const std::string& error = "", const std::string& caveat = "",
+                             bool predictions_hidden = false);
+// A tab of a panel's tab bar (ImGui::BeginTabItem), its name noted for the layout test.
+bool begin_tab(const char* label, int flags = 0);  // ImGuiTabItemFlags
+void energy_contents(const Scene& scene, const Theme& theme);
+// The height energy_contents takes at a width (the panel's inside), in the current font.
+float energy_contents_height(const Scene& scene, float width);
+void model_contents(const lessons::Lesson& lesson);
+// The height model_contents takes at a width (the panel's inside), in the current font.
+float model_contents_height(const lessons::Lesson& lesson, float width);
+
+}  // namespace frictionlab::ui

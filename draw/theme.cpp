@@ -1,0 +1,244 @@
+#include "draw/theme.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+#include "physics/materials.h"
+
+namespace frictionlab::ui {
+
+ThemeName parse_theme(std::string_view name) {
+  if (name == "light") return ThemeName::light;
+  if (name == "dark") return ThemeName::dark;
+  throw InvalidInput("unknown theme '" + std::string(name) + "'; allowed: light, dark");
+}
+
+std::string_view theme_name(ThemeName theme) { return theme == ThemeName::light ? "light" : "dark"; }
+
+std::string_view force_kind_name(ForceKind kind) {
+  switch (kind) {
+    case ForceKind::applied: return "applied";
+    case ForceKind::spring: return "spring";
+    case ForceKind::friction: return "friction";
+    case ForceKind::normal: return "normal";
+    case ForceKind::weight: return "weight";
+    case ForceKind::tension: return "rope";
+    case ForceKind::drag: return "drag";
+  }
+  return "force";
+}
+
+namespace {
+
+ImVec4 rgb(int r, int g, int b) {
+  return ImVec4(static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f, 1.0f);
+}
+
+// Force colours are told apart by people with the common colour-vision deficiencies too:
+// blue, green, vermilion, purple and dark grey differ in lightness as well as hue.
+Theme make_light() {
+  Theme t{};
+  t.name = ThemeName::light;
+  t.background = IM_COL32(250, 250, 247, 255);
+  t.panel = IM_COL32(255, 255, 255, 255);
+  t.text = IM_COL32(20, 20, 24, 255);
+  t.faint_text = IM_COL32(95, 95, 105, 255);
+  t.grid = IM_COL32(226, 226, 222, 255);
+  t.axis = IM_COL32(70, 70, 78, 255);
+  t.sky = IM_COL32(238, 244, 250, 255);
+  t.ground_edge = IM_COL32(92, 82, 66, 255);
+  t.outline = IM_COL32(30, 30, 34, 255);
+  t.driven_outline = IM_COL32(160, 110, 0, 255);
+  t.spring = IM_COL32(40, 40, 46, 255);
+  t.rope = IM_COL32(120, 80, 30, 255);
+  t.hand = IM_COL32(160, 110, 0, 255);
+  t.force[0] = IM_COL32(0, 100, 210, 255);    // applied: blue
+  t.force[1] = IM_COL32(0, 140, 70, 255);     // spring: green
+  t.force[2] = IM_COL32(220, 70, 0, 255);     // friction: vermilion
+  t.force[3] = IM_COL32(130, 50, 170, 255);   // normal: purple
+  t.force[4] = IM_COL32(60, 60, 60, 255);     // weight: dark grey
+  t.force[5] = IM_COL32(140, 90, 30, 255);    // rope: brown
+  t.force[6] = IM_COL32(110, 130, 0, 255);    // drag (c, b): olive
+  // Contact states have colours no arrow has, so a mark never reads as a force.
+  t.sticking = IM_COL32(0, 150, 160, 255);    // teal
+  t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
+  t.slip_band = IM_COL32(240, 120, 190, 60);
+  t.now_marker = IM_COL32(20, 20, 24, 255);
+  t.series[0] = IM_COL32(0, 100, 210, 255);
+  t.series[1] = IM_COL32(220, 70, 0, 255);
+  t.series[2] = IM_COL32(0, 140, 70, 255);
+  t.series[3] = IM_COL32(130, 50, 170, 255);
+  t.theory[0] = IM_COL32(90, 90, 100, 255);    // grey
+  t.theory[1] = IM_COL32(150, 95, 20, 255);    // ochre: no series, force or contact state has it
+  t.good = IM_COL32(0, 130, 60, 255);
+  t.bad = IM_COL32(200, 20, 20, 255);
+  t.imgui_text = rgb(20, 20, 24);
+  t.imgui_window = rgb(255, 255, 255);
+  t.imgui_title = rgb(222, 228, 238);
+  t.imgui_border = rgb(190, 190, 196);
+  t.imgui_header = rgb(236, 238, 242);
+  return t;
+}
+
+Theme make_dark() {
+  Theme t{};
+  t.name = ThemeName::dark;
+  t.background = IM_COL32(24, 26, 30, 255);
+  t.panel = IM_COL32(34, 36, 42, 255);
+  t.text = IM_COL32(236, 236, 236, 255);
+  t.faint_text = IM_COL32(165, 165, 175, 255);
+  t.grid = IM_COL32(52, 55, 62, 255);
+  t.axis = IM_COL32(190, 190, 196, 255);
+  t.sky = IM_COL32(30, 34, 42, 255);
+  t.ground_edge = IM_COL32(190, 175, 150, 255);
+  t.outline = IM_COL32(230, 230, 230, 255);
+  t.driven_outline = IM_COL32(230, 180, 60, 255);
+  t.spring = IM_COL32(225, 225, 225, 255);
+  t.rope = IM_COL32(225, 180, 120, 255);
+  t.hand = IM_COL32(230, 180, 60, 255);
+  t.force[0] = IM_COL32(90, 170, 255, 255);
+  t.force[1] = IM_COL32(70, 210, 130, 255);
+  t.force[2] = IM_COL32(255, 130, 60, 255);
+  t.force[3] = IM_COL32(200, 140, 255, 255);
+  t.force[4] = IM_COL32(200, 200, 200, 255);
+  t.force[5] = IM_COL32(210, 160, 100, 255);
+  t.force[6] = IM_COL32(190, 210, 60, 255);
+  t.sticking = IM_COL32(40, 200, 210, 255);
+  t.slipping = IM_COL32(255, 90, 180, 255);
+  t.slip_band = IM_COL32(255, 90, 180, 45);
+  t.now_marker = IM_COL32(236, 236, 236, 255);
+  t.series[0] = IM_COL32(90, 170, 255, 255);
+  t.series[1] = IM_COL32(255, 130, 60, 255);
+  t.series[2] = IM_COL32(70, 210, 130, 255);
+  t.series[3] = IM_COL32(200, 140, 255, 255);
+  t.theory[0] = IM_COL32(190, 190, 200, 255);
+  t.theory[1] = IM_COL32(225, 175, 80, 255);
+  t.good = IM_COL32(90, 220, 130, 255);
+  t.bad = IM_COL32(255, 90, 90, 255);
+  t.imgui_text = rgb(236, 236, 236);
+  t.imgui_window = rgb(34, 36, 42);
+  t.imgui_title = rgb(48, 52, 62);
+  t.imgui_border = rgb(70, 74, 84);
+  t.imgui_header = rgb(44, 48, 56);
+  return t;
+}
+
+}  // namespace
+
+const Theme& theme(ThemeName name) {
+  static const Theme light = make_light();
+  static const Theme dark = make_dark();
+  return name == ThemeName::light ? light : dark;
+}
+
+ImU32 material_colour(const Theme& theme, const std::string& material, int index) {
+  const bool dark = theme.name == ThemeName::dark;
+  struct Look {
+    const char* name;
+    ImU32 light, dark;
+  };
+  static const Look looks[] = {
+      {"wood", IM_COL32(196, 150, 98, 255), IM_COL32(150, 110, 70, 255)},
+      {"aluminium", IM_COL32(190, 198, 208, 255), IM_COL32(150, 160, 172, 255)},
+      {"metal", IM_COL32(150, 158, 170, 255), IM_COL32(120, 128, 140, 255)},
+      {"plastic", IM_COL32(120, 190, 230, 255), IM_COL32(70, 140, 190, 255)},
+      {"rubber", IM_COL32(70, 70, 76, 255), IM_COL32(110, 110, 118, 255)},
+      {"ice", IM_COL32(205, 235, 250, 255), IM_COL32(140, 185, 210, 255)},
+      {"concrete", IM_COL32(170, 170, 165, 255), IM_COL32(120, 120, 116, 255)},
+      {"stone", IM_COL32(160, 150, 140, 255), IM_COL32(115, 108, 100, 255)},
+      {"asphalt", IM_COL32(90, 92, 96, 255), IM_COL32(80, 82, 86, 255)},
+      {"grass", IM_COL32(120, 180, 90, 255), IM_COL32(70, 130, 60, 255)},
+  };
+  for (const Look& look : looks) {
+    if (material == look.name) return dark ? look.dark : look.light;
+  }
+  // Tan, then slate: a lesson's first two materials (a crate and its floor, say) look like them.
+  static const ImU32 light_palette[] = {IM_COL32(230, 180, 90, 255), IM_COL32(160, 168, 182, 255),
+                                        IM_COL32(220, 140, 160, 255), IM_COL32(160, 150, 220, 255),
+                                        IM_COL32(120, 200, 200, 255), IM_COL32(210, 200, 120, 255)};
+  static const ImU32 dark_palette[] = {IM_COL32(180, 130, 50, 255), IM_COL32(105, 112, 128, 255),
+                                       IM_COL32(170, 90, 110, 255), IM_COL32(110, 100, 170, 255),
+                                       IM_COL32(70, 150, 150, 255), IM_COL32(160, 150, 70, 255)};
+  const int slot = (index < 0 ? 0 : index) % 6;
+  return dark ? dark_palette[slot] : light_palette[slot];
+}
+
+float frame_scale(int width, int height) {
+  return std::min(static_cast<float>(height) / 720.0f, static_cast<float>(width) / 1280.0f);
+}
+
+std::string font_path() { return FRICTIONLAB_FONT_DIR "/DejaVuSans.ttf"; }
+
+Fonts load_fonts(float scale, ImVector<ImWchar>& ranges) {
+  const std::string path = font_path();
+  if (!std::filesystem::exists(path)) {
+    throw std::runtime_error(path + " is missing; install Debian's fonts-dejavu-core (scripts/setup.sh does)");
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  ImFontGlyphRangesBuilder builder;
+  builder.AddRanges(io.Fonts->GetGlyphRangesDefault());  // Latin-1: °, ², ·, ±, µ
+  static const ImWchar extra[] = {
+      0x0370, 0x03FF,  // Greek: μ, θ, Δ, ε
+      0x2010, 0x2027,  // dashes, bullet, ellipsis
+      0x2070, 0x209F,  // superscripts and subscripts
+      0x2190, 0x21FF,  // arrows
+      0x2212, 0x2212,  // minus
+      0x2248, 0x2248,  // almost equal
+      0x2260, 0x2265,  // not equal, less or equal, greater or equal
+      0x2713, 0x2717,  // check and cross marks
+      0,
+  };
+  builder.AddRanges(extra);
+  ranges.clear();
+  builder.BuildRanges(&ranges);
+  ImFontConfig config;
+  config.OversampleH = 2;
+  config.OversampleV = 1;
+  Fonts fonts;
+  fonts.scale = scale;
+  fonts.body = io.Fonts->AddFontFromFileTTF(path.c_str(), 17.0f * scale, &config, ranges.Data);
+  fonts.title = io.Fonts->AddFontFromFileTTF(path.c_str(), 26.0f * scale, &config, ranges.Data);
+  fonts.small = io.Fonts->AddFontFromFileTTF(path.c_str(), 14.0f * scale, &config, ranges.Data);
+  if (fonts.body == nullptr || fonts.title == nullptr || fonts.small == nullptr) {
+    throw std::runtime_error(path + " could not be read as a TrueType font");
+  }
+  if (!io.Fonts->Build()) throw std::runtime_error("the font atlas could not be built from " + path);
+  return fonts;
+}
+
+void apply_imgui_style(ThemeName name, float scale) {
+  const Theme& t = theme(name);
+  ImGuiStyle style;
+  if (name == ThemeName::light) {
+    ImGui::StyleColorsLight(&style);
+  } else {
+    ImGui::StyleColorsDark(&style);
+  }
+  style.WindowRounding = 4.0f;
+  style.WindowBorderSize = 1.0f;
+  style.WindowPadding = ImVec2(10, 6);
+  style.ItemSpacing = ImVec2(8, 3);
+  style.CellPadding = ImVec2(6, 1);
+  style.Colors[ImGuiCol_Text] = t.imgui_text;
+  style.Colors[ImGuiCol_WindowBg] = t.imgui_window;
+  style.Colors[ImGuiCol_TitleBg] = t.imgui_title;
+  style.Colors[ImGuiCol_TitleBgActive] = t.imgui_title;
+  style.Colors[ImGuiCol_TitleBgCollapsed] = t.imgui_title;
+  style.Colors[ImGuiCol_Border] = t.imgui_border;
+  style.Colors[ImGuiCol_TableHeaderBg] = t.imgui_header;
+  // Menus and other popups opaque: ImGui's own are slightly see-through (94 %, 98 %), and on a
+  // projector the title and panels behind an open menu showed through its items.
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
+  style.Colors[ImGuiCol_MenuBarBg].w = 1.0f;
+  if (name == ThemeName::light) {
+    // Sliders and boxes stand out from the white panels (ImGui's light frames are white too).
+    style.Colors[ImGuiCol_FrameBg] = ImVec4(0.89f, 0.90f, 0.93f, 1.0f);
+    style.Colors[ImGuiCol_FrameBgHovered] = ImVec4(0.82f, 0.86f, 0.93f, 1.0f);
+    style.Colors[ImGuiCol_FrameBgActive] = ImVec4(0.76f, 0.82f, 0.93f, 1.0f);
+  }
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+}
+
+}  // namespace frictionlab::ui

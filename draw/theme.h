@@ -1,0 +1,63 @@
+// Colours and fonts. Two themes, light for a bright classroom and dark for a dim one, and a
+// TrueType font at sizes that read from the back of a room: every size scales with the
+// frame's height, 720 pixels being 1.
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+#include <string_view>
+
+#include "physics/scene_forces.h"
+
+namespace frictionlab::ui {
+
+enum class ThemeName { light, dark };
+// Throws InvalidInput listing the themes.
+ThemeName parse_theme(std::string_view name);
+std::string_view theme_name(ThemeName theme);
+
+// Each kind of force (physics/scene_forces.h) has its own colour, the same in every picture.
+constexpr int force_kind_count = 7;
+std::string_view force_kind_name(ForceKind kind);
+
+struct Theme {
+  ThemeName name;
+  ImU32 background, panel, text, faint_text, grid, axis;
+  ImU32 sky, ground_edge, outline, driven_outline, spring, rope, hand;
+  ImU32 force[force_kind_count];
+  ImU32 sticking, slipping, slip_band, now_marker;
+  ImU32 series[4];
+  // Laws drawn beside the measurements (plots' theory curves): a plot's curves take them in turn.
+  ImU32 theory[2];
+  ImU32 good, bad;
+  ImVec4 imgui_text, imgui_window, imgui_title, imgui_border, imgui_header;
+};
+const Theme& theme(ThemeName name);
+
+// A material's fill colour: known materials by look (wood brown, ice pale blue), others from
+// a palette by the order they were declared in.
+ImU32 material_colour(const Theme& theme, const std::string& material, int index);
+
+// Sizes in a frame are given for 1280×720 and scaled by this: by the height, or by the width
+// when the frame is narrower than 16:9 (a 1024×768 projector).
+float frame_scale(int width, int height);
+
+struct Fonts {
+  ImFont* body = nullptr;
+  ImFont* title = nullptr;
+  ImFont* small = nullptr;
+  float scale = 1.0f;  // frame height / 720
+};
+// Adds DejaVu Sans at the three sizes to the current context's atlas, with the Greek letters,
+// degree sign, arrows and maths signs the lessons use. Throws std::runtime_error naming the
+// file and the package when the font is missing. The atlas keeps pointing into
+// `glyph_ranges`, which must live as long as it does.
+Fonts load_fonts(float scale, ImVector<ImWchar>& glyph_ranges);
+// The font file used; compiled in from where the build found Debian's fonts-dejavu-core.
+std::string font_path();
+
+// ImGui's own colours and spacing for the theme.
+void apply_imgui_style(ThemeName name, float scale);
+
+}  // namespace frictionlab::ui

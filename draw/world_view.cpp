@@ -1,0 +1,387 @@
+#include "draw/world_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "draw/drawing.h"
+
+namespace frictionlab::ui {
+namespace {
+
+constexpr float pi = 3.14159265358979f;
+
+// A label that names a place in the world (a slope's angle, a driven body), drawn with the
+// world's other labels once every arrow, mark and moving body is known to the placer: near its
+// place, off the moving bodies and every other label.
+struct PlaceLabel {
+  ImVec2 wanted;  // its centre, where it would go with nothing in the way
+  std::string text;
+  ImFont* font;
+  ImU32 colour, background;
+};
+
+// The ground in its material's colour, as far as it really goes (a body beyond its end falls).
+void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture, const Camera& camera,
+                 const Theme& theme) {
+  // Box2D's box around the fixture reaches its skin's outside, the skin's radius past the shape.
+  const b2AABB& box = fixture->GetAABB(0);
+  const float skin = fixture->GetShape()->m_radius;
+  const float top = box.upperBound.y - skin;
+  const ImVec2 view_end = add(camera.origin, camera.size);
+  const float left = std::max(camera.origin.x, camera.to_screen(box.lowerBound).x);
+  const float right = std::min(view_end.x, camera.to_screen(box.upperBound).x);
+  if (left >= right) return;
+  const float top_y = camera.to_screen({0.0f, top}).y;
+  const float bottom_y = camera.to_screen({0.0f, box.lowerBound.y + skin}).y;
+  draw->AddRectFilled(ImVec2(left, top_y), ImVec2(right, std::min(bottom_y, view_end.y)),
+                      fixture_colour(scene, fixture, theme));
+  // Hatching fixed to the ground, so the ground is seen to stay put while the view follows.
+  const float spacing = nice_length(22.0f / camera.pixels_per_metre);
+  const float first = std::floor(camera.to_world(ImVec2(left, top_y)).x / spacing) * spacing;
+  const float depth = 12.0f;
+  for (float x = first; camera.to_screen({x, top}).x < right + depth; x += spacing) {
+    const float sx = camera.to_screen({x, top}).x;
+    if (sx < left || sx > right) continue;
+    draw->AddLine(ImVec2(sx, top_y + 1.0f), ImVec2(sx - depth, top_y + depth), theme.ground_edge, 1.5f);
+  }
+  draw->AddLine(ImVec2(left, top_y), ImVec2(right, top_y), theme.ground_edge, 2.5f);
+}
+
+// Slopes: at a corner between a level edge and a sloping one, the angle between them.
+void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,
+                       const Theme& theme, const Fonts& fonts, std::vector<PlaceLabel>& place_labels) {
+  const int n = shape.m_count;
+  for (int i = 0; i < n; ++i) {
+    const b2Vec2 corner = body->GetWorldPoint(shape.m_vertices[i]);
+    const b2Vec2 to_prev = body->GetWorldPoint(shape.m_vertices[(i + n - 1) % n]) - corner;
+    const b2Vec2 to_next = body->GetWorldPoint(shape.m_vertices[(i + 1) % n]) - corner;
+    for (int flip = 0; flip < 2; ++flip) {
+      const b2Vec2 level = flip == 0 ? to_prev : to_next;
+      const b2Vec2 slope = flip == 0 ? to_next : to_prev;
+      if (std::abs(level.y) > 1e-3f * level.Length()) continue;
+      const float angle = std::acos(std::clamp(b2Dot(level, slope) / (level.Length() * slope.Length()), -1.0f, 1.0f));
+      if (angle < 0.5f * pi / 180.0f || angle > 89.5f * pi / 180.0f) continue;
+      ImVec2 centre = camera.to_screen(corner);
+      const float radius = 46.0f * fonts.scale;
+      // A view zoomed in on a block may have left the corner out: the angle is then marked where
+      // the slope first comes into view, with a dashed level line to measure it from.
+      const auto shown = [&](ImVec2 p) {
+        const float room = radius + 30.0f * fonts.scale;
+        return p.x >= camera.origin.x + room && p.x <= camera.origin.x + camera.size.x - room &&
+               p.y >= camera.origin.y + room && p.y <= camera.origin.y + camera.size.y - 8.0f * fonts.scale;
+      };
+      if (!shown(centre)) {
+        // A lane's strip is too thin for a mark away from its block: the corner's mark or none.
+        if (camera.size.y < 4.0f * radius) continue;
+        bool found = false;
+        for (int k = 1; k <= 200 && !found; ++k) {
+          const ImVec2 p = camera.to_screen(corner + (static_cast<float>(k) / 200.0f) * slope);
+          if (shown(p)) centre = p, found = true;
+        }
+        if (!found) continue;
+        const b2Vec2 unit_level = (1.0f / level.Length()) * level;
+        const ImVec2 end = camera.to_screen(camera.to_world(centre) + (1.4f * radius / camera.pixels_per_metre) * unit_level);
+        for (int dash = 0; dash < 7; dash += 2) {
+          const ImVec2 a = add(centre, mul(sub(end, centre), static_cast<float>(dash) / 7.0f));
+          const ImVec2 b = add(centre, mul(sub(end, centre), static_cast<float>(dash + 1) / 7.0f));
+          draw->AddLine(a, b, theme.text, 1.5f * fonts.scale);
+        }
+      }
+      // Screen angles turn the other way: y points down.
+      const float level_angle = -std::atan2(level.y, level.x);
+      const float slope_angle = -std::atan2(slope.y, slope.x);
+      float from = level_angle, to = slope_angle;
+      if (to - from > pi) to -= 2.0f * pi;
+      if (from - to > pi) to += 2.0f * pi;
+      draw->PathArcTo(centre, radius, from, to, 24);
+      draw->PathStroke(theme.text, 0, 2.0f);
+      const float middle = 0.5f * (from + to);
+      char text[16];
+      std::snprintf(text, sizeof text, "%.3g°", static_cast<double>(angle * 180.0f / pi));
+      const ImVec2 at = add(centre, ImVec2(std::cos(middle) * (radius + 24.0f * fonts.scale),
+                                           std::sin(middle) * (radius + 12.0f * fonts.scale)));
+      place_labels.push_back({at, text, fonts.body, theme.text, 0});
+    }
+  }
+}
+
+void draw_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const Camera& camera, const Theme& theme,
+               const Fonts& fonts, std::vector<PlaceLabel>& place_labels) {
+  const bool driven = body->GetType() == b2_kinematicBody;
+  const ImU32 outline = driven ? theme.driven_outline : theme.outline;
+  const float thickness = (driven ? 3.0f : 1.5f) * fonts.scale;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (lessons::is_ground(fixture)) {
+      // A strip's edge is its surface; the slab under it is what is drawn.
+      if (fixture->GetType() != b2Shape::e_edge) draw_ground(draw, scene, fixture, camera, theme);
+      continue;
+    }
+    const ImU32 fill = fixture_colour(scene, fixture, theme);
+    if (fixture->GetType() == b2Shape::e_polygon) {
+      const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
+      draw_polygon(draw, body, shape, camera, fill, outline, thickness);
+      if (body->GetType() == b2_staticBody) mark_slope_angles(draw, body, shape, camera, theme, fonts, place_labels);
+    } else if (fixture->GetType() == b2Shape::e_circle) {
+      const auto& shape = *static_cast<const b2CircleShape*>(fixture->GetShape());
+      const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape.m_p));
+      const float radius = surface_radius(shape) * camera.pixels_per_metre;
+      draw->AddCircleFilled(centre, radius, fill, 48);
+      draw->AddCircle(centre, radius, outline, 48, thickness);
+      // A spoke, so rolling can be told from sliding.
+      const ImVec2 rim = camera.to_screen(body->GetWorldPoint(shape.m_p + b2Vec2{surface_radius(shape), 0.0f}));
+      draw->AddLine(centre, rim, outline, thickness);
+    }
+  }
+  if (driven) {
+    // At its centre, unless a moving body sits there (wedge's block rests on its plank's
+    // pivot): then further along the body, the first of a few points along its length that
+    // no moving body covers.
+    const auto covered = [&](b2Vec2 point) {
+      for (const b2Body* other = scene.world().GetBodyList(); other != nullptr; other = other->GetNext()) {
+        if (other->GetType() != b2_dynamicBody) continue;
+        for (const b2Fixture* f = other->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+          b2AABB box;
+          f->GetShape()->ComputeAABB(&box, other->GetTransform(), 0);
+          box.lowerBound -= b2Vec2(0.1f, 0.1f), box.upperBound += b2Vec2(0.1f, 0.1f);
+          if (point.x >= box.lowerBound.x && point.x <= box.upperBound.x && point.y >= box.lowerBound.y &&
+              point.y <= box.upperBound.y) {
+            return true;
+          }
+        }
+      }
+      return false;
+    };
+    b2AABB extent;
+    extent.lowerBound = extent.upperBound = body->GetLocalCenter();
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      b2AABB box;
+      fixture->GetShape()->ComputeAABB(&box, b2Transform(b2Vec2_zero, b2Rot(0.0f)), 0);
+      extent.Combine(box);
+    }
+    const b2Vec2 centre = body->GetLocalCenter();
+    const float reach = 0.5f * (extent.upperBound.x - extent.lowerBound.x);
+    b2Vec2 at = body->GetWorldCenter();
+    for (const float share : {0.0f, 0.1f, -0.1f, 0.2f, -0.2f, 0.35f, -0.35f}) {
+      const b2Vec2 candidate = body->GetWorldPoint(b2Vec2(centre.x + share * reach, centre.y));
+      if (!covered(candidate)) {
+        at = candidate;
+        break;
+      }
+    }
+    place_labels.push_back({camera.to_screen(at), "driven", fonts.small, theme.driven_outline, theme.panel});
+  }
+}
+
+
+// How far a spring's coils reach either side of its line, line width included.
+float coil_reach(float scale) { return 8.0f * scale; }
+
+// A coil spring: its turns spread out as it stretches and crowd as it is squeezed.
+void draw_spring(ImDrawList* draw, ImVec2 from, ImVec2 to, const Theme& theme, float scale) {
+  const ImVec2 along = sub(to, from);
+  const float span = length(along);
+  if (span < 1.0f) return;
+  const ImVec2 unit = mul(along, 1.0f / span);
+  const ImVec2 across(-unit.y, unit.x);
+  constexpr int turns = 12;
+  const float lead = 0.12f * span, amplitude = coil_reach(scale) - 1.0f * scale;
+  std::vector<ImVec2> points;
+  points.push_back(from);
+  points.push_back(add(from, mul(unit, lead)));
+  for (int i = 0; i < 2 * turns; ++i) {
+    const float s = lead + (span - 2.0f * lead) * (static_cast<float>(i) + 0.5f) / (2.0f * turns);
+    points.push_back(add(add(from, mul(unit, s)), mul(across, (i % 2 == 0 ? 1.0f : -1.0f) * amplitude)));
+  }
+  points.push_back(sub(to, mul(unit, lead)));
+  points.push_back(to);
+  draw->AddPolyline(points.data(), static_cast<int>(points.size()), theme.spring, 0, 2.0f * scale);
+}
+
+// The hand and its word, which labels placed later keep off.
+void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) {
+  draw->AddCircleFilled(at, 7.0f * fonts.scale, theme.hand, 24);
+  const ImVec2 word(at.x, at.y - 18.0f * fonts.scale);
+  draw_label(draw, fonts.small, word, theme.hand, 0, "hand");
+  const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, "hand");
+  labels.avoid(ImVec4(word.x - 0.5f * size.x, word.y - 0.5f * size.y, word.x + 0.5f * size.x, at.y + 7.0f * fonts.scale));
+}
+
+void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                float scale) {
+  for (const Rope& rope : lesson.scene().ropes()) {
+    const ImVec2 a = camera.to_screen(rope.end_a()), b = camera.to_screen(rope.end_b());
+    const ImVec2 ga = camera.to_screen(rope.pulley_a), gb = camera.to_screen(rope.pulley_b);
+    // A slack rope sags: the rope it does not need hangs in the more level of its two stretches
+    // (the block's, on a table), as deep as half of it, so a class sees that it pulls nothing.
+    const float slack = rope.taut() ? 0.0f : std::max(rope.length - rope.stretches(), 0.0f);
+    const bool sag_a = std::abs(a.x - ga.x) >= std::abs(b.x - gb.x);
+    const auto stretch = [&](ImVec2 end, ImVec2 pulley, bool sags) {
+      if (!sags || slack <= 0.0f) {
+        draw->AddLine(end, pulley, theme.rope, 2.5f * scale);
+        return;
+      }
+      const ImVec2 low(0.5f * (end.x + pulley.x), 0.5f * (end.y + pulley.y) + 0.5f * slack * camera.pixels_per_metre);
+      draw->AddBezierQuadratic(end, low, pulley, theme.rope, 2.5f * scale);
+    };
+    stretch(a, ga, sag_a);
+    draw->AddLine(ga, gb, theme.rope, 2.5f * scale);
+    stretch(b, gb, !sag_a);
+    const ImVec2 middle = mul(add(ga, gb), 0.5f);
+    const float radius = std::max(0.5f * length(sub(gb, ga)), 8.0f * scale);
+    draw->AddCircle(middle, radius, theme.outline, 32, 2.0f * scale);
+    draw->AddCircleFilled(middle, 3.0f * scale, theme.outline, 12);
+  }
+}
+
+
+void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& camera, const Theme& theme,
+                       const Fonts& fonts, LabelPlacer& labels, bool with_label) {
+  const ImVec2 at = camera.to_screen(mark.point);
+  // A frictionless contact in neither state's colour: the outline's, as the bodies are drawn.
+  const bool slipping = mark.state == ContactState::slipping;
+  const ImU32 colour = mark.frictionless ? theme.outline : slipping ? theme.slipping : theme.sticking;
+  const float r = 6.0f * fonts.scale;
+  draw->AddCircleFilled(at, r, colour, 20);
+  draw->AddCircle(at, r, theme.background, 20, 1.5f);
+  if (!with_label) return;
+  const std::string text = contact_word(mark);
+  const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
+  // Into the lower body, the surface, where nothing else is drawn, and to the side the friction
+  // arrow does not point to.
+  const b2Vec2 into = -upper_side(mark) * b2Cross(1.0f, mark.tangent);
+  const float side = mark.friction_force > 0.0 ? -1.0f : 1.0f;
+  const b2Vec2 along = side * mark.tangent;
+  const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
+  const ImVec2 wanted(at.x + along.x * reach + into.x * depth, at.y - along.y * reach - into.y * depth);
+  if (const std::optional<ImVec2> placed = labels.place_if_free(wanted, size, text)) {
+    draw_label(draw, fonts.small, *placed, colour, theme.panel, text.c_str());
+  }
+}
+
+}  // namespace
+
+void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
+                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
+  const Scene& scene = lesson.scene();
+  draw->AddRectFilled(camera.origin, add(camera.origin, camera.size), theme.sky);
+  std::vector<PlaceLabel> place_labels;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() == b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
+  }
+  draw_ropes(draw, lesson, camera, theme, fonts.scale);
+  for (const Spring& spring : scene.springs()) {
+    const ImVec2 from = camera.to_screen(spring.body->GetWorldPoint(spring.local_point));
+    const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)
+                                                    : scene.hand_position(spring));
+    draw_spring(draw, from, to, theme, fonts.scale);
+    // A spring's force label beyond its arrow's tip would lie on the coils: they are kept clear.
+    labels.avoid(DrawnSegment{from, to, coil_reach(fonts.scale)});
+    if (!spring.other) draw_hand(draw, to, theme, fonts, labels);
+  }
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
+  }
+  // Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped)
+  // but their labels would otherwise be pushed into the lane by the label placer.
+  const auto ours = [&](const b2Body* body) {
+    return labelled == nullptr || std::find(labelled->begin(), labelled->end(), body) != labelled->end();
+  };
+  const auto in_view = [&](b2Vec2 point) {
+    const ImVec2 at = camera.to_screen(point);
+    return at.x >= camera.origin.x && at.x <= camera.origin.x + camera.size.x && at.y >= camera.origin.y &&
+           at.y <= camera.origin.y + camera.size.y;
+  };
+  std::vector<ContactMark> marks;
+  for (const ContactMark& mark : contact_marks(scene)) {
+    const b2Body* moving = mark.body_b->GetType() == b2_dynamicBody ? mark.body_b : mark.body_a;
+    if (in_view(mark.point) && ours(moving)) marks.push_back(mark);
+  }
+  std::vector<ScreenArrow> arrows;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
+    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
+      arrows.push_back(arrow);
+    }
+  }
+  std::vector<TorqueArc> torques;
+  for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
+    const b2Body* body = scene.applied_forces()[i].body;
+    const double torque = scene.torques_applied()[i];
+    if (torque == 0.0 || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
+    const b2AABB box = lessons::body_box(body);
+    const float half = 0.5f * std::min(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
+    torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
+                                 std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
+  }
+  // Every arrow and mark is known before any label is placed, so no label lands on one.
+  const float thickness = 3.5f * fonts.scale;
+  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
+  for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
+  const float mark_radius = 6.0f * fonts.scale;
+  for (const ContactMark& mark : marks) {
+    const ImVec2 at = camera.to_screen(mark.point);
+    labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
+  }
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const b2AABB box = lessons::body_box(body);
+    const ImVec2 a = camera.to_screen(box.lowerBound), b = camera.to_screen(box.upperBound);
+    labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)));
+  }
+  // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
+  // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
+  if (fixed_labels) fixed_labels();
+  // The labels of places (a slope's angle, a driven body), before the labels that go with an
+  // arrow or a mark, which keep off them; none on a moving body (the trial found a slope's angle
+  // under a block, a driven plank's word under the block on it).
+  for (const PlaceLabel& label : place_labels) {
+    const ImVec2 size = label.font->CalcTextSizeA(label.font->FontSize, 1e6f, 0.0f, label.text.c_str());
+    draw_label(draw, label.font, labels.place(label.wanted, size, label.text, true), label.colour, label.background,
+               label.text.c_str());
+  }
+  // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
+  std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool, bool>> said;
+  for (const ContactMark& mark : marks) {
+    const bool rightward = mark.sliding_velocity >= 0.0;
+    const auto key = std::make_tuple(mark.body_a, mark.body_b, mark.state, mark.frictionless, rightward);
+    const bool first = std::find(said.begin(), said.end(), key) == said.end();
+    if (first) said.push_back(key);
+    draw_contact_mark(draw, mark, camera, theme, fonts, labels, first);
+  }
+  for (const TorqueArc& arc : torques) {
+    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.body, theme.panel, thickness, labels);
+  }
+  // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
+  // longest (each foot's own value is a probe away). One label per foot crowds the picture.
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    const ForceOnBody& force = arrows[i].force;
+    if (force.kind != ForceKind::normal) {
+      draw_force(draw, arrows[i], theme, fonts.body, thickness, labels);
+      continue;
+    }
+    int count = 0;
+    b2Vec2 sum{0.0f, 0.0f};
+    std::size_t longest = i;
+    for (std::size_t j = 0; j < arrows.size(); ++j) {
+      // The same two bodies: a body's feet on one floor, not a block's floor and the block on it.
+      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body ||
+          arrows[j].force.other != force.other) {
+        continue;
+      }
+      ++count;
+      sum += arrows[j].force.force;
+      if (arrows[j].length() > arrows[longest].length()) longest = j;
+    }
+    std::string text = format_quantity(force.force.Length(), "N");
+    if (count > 1) text = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
+    draw_force(draw, arrows[i], theme, fonts.body, thickness, labels, text);
+  }
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,29 @@
+// The world as a teacher sees it: ground, bodies in their materials' colours, springs that
+// stretch, ropes over pulleys, hands and driven bodies, slopes with their angle marked, the
+// force arrows with their values and every contact's state.
+#pragma once
+
+#include <imgui.h>
+
+#include <functional>
+#include <vector>
+
+#include "draw/camera.h"
+#include "draw/drawing.h"
+#include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::ui {
+
+// The world, the arrows on every dynamic body and the contact marks into `camera`'s view;
+// `labels` already knows what else covers the view (the free-body inset), and keeps labels off it.
+// `labelled`, when given, are the bodies whose arrows and contact marks this view draws (a
+// lane's own): the others are drawn as bodies only, so a neighbour seen at a lane's edge does
+// not repeat its forces there. `fixed_labels`, when given, is called once every arrow, mark,
+// spring and body is known to `labels` and before any label is placed: labels that cannot move
+// (a distance mark's number) take their places then.
+void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
+                const std::vector<const b2Body*>* labelled = nullptr, const std::function<void()>& fixed_labels = {});
+
+}  // namespace frictionlab::ui
