@@ -27,7 +27,7 @@ struct ClassPredictions {
 bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predictions, bool asking);
 
 // The largest a numeric answer may be, either way: no lesson's quantity comes near it in its
-// unit, and a setup file (ui/setup_file.h) refuses the same answers the window marks.
+// unit, and a setup file (classroom_state/setup_file.h) refuses the same answers the window marks.
 inline constexpr double largest_answer = 1e6;
 
 // A typed answer read as a number ("2.5", "-0.3") within ±largest_answer; nullopt with `why`
