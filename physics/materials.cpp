@@ -15,12 +15,13 @@ std::string pair_name(std::string_view a, std::string_view b) {
   return name;
 }
 
-void check_coefficient(std::vector<std::string>& errors, const std::string& pair, const char* what, double value,
-                       double upper, const char* unit) {
-  if (std::isnan(value) || value < 0.0 || value > upper) {
+void check_coefficient(std::vector<std::string>& errors, const std::string& pair, const PairCoefficient& coefficient,
+                       double value) {
+  if (std::isnan(value) || value < 0.0 || value > coefficient.largest) {
     std::ostringstream message;
-    message << "pair " << pair << ": " << what << " = " << value << unit << " is outside the allowed range [0, "
-            << upper << "]";
+    message << "pair " << pair << ": " << coefficient.name << " = " << value
+            << (*coefficient.unit == '\0' ? "" : " ") << coefficient.unit << " is outside the allowed range [0, "
+            << coefficient.largest << "]";
     errors.push_back(message.str());
   }
 }
@@ -50,14 +51,28 @@ bool uses_epsilon(FrictionTreatment treatment) {
   return treatment == FrictionTreatment::threshold || treatment == FrictionTreatment::regularized;
 }
 
+const PairCoefficient* pair_coefficient(std::string_view name) {
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    if (coefficient.name == name) return &coefficient;
+  }
+  return nullptr;
+}
+
+std::string pair_coefficient_names() {
+  std::string names;
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    if (!names.empty()) names += ", ";
+    names += coefficient.name;
+  }
+  return names;
+}
+
 PairCheck check_pair(std::string_view material_a, std::string_view material_b, const FrictionPair& pair) {
   PairCheck check;
   const std::string name = pair_name(material_a, material_b);
-  // Above 10 no real pair of surfaces exists, and the solver's impulses stop meaning anything.
-  check_coefficient(check.errors, name, "mu_s", pair.mu_s, 10.0, "");
-  check_coefficient(check.errors, name, "mu_k", pair.mu_k, 10.0, "");
-  check_coefficient(check.errors, name, "c", pair.c, 1e6, " N·s/m");
-  check_coefficient(check.errors, name, "b", pair.b, 1e6, " N·s²/m²");
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    check_coefficient(check.errors, name, coefficient, pair.*coefficient.value);
+  }
   if (check.errors.empty() && pair.mu_k > pair.mu_s) {
     std::ostringstream message;
     message << "pair " << name << ": mu_k = " << pair.mu_k << " is larger than mu_s = " << pair.mu_s

@@ -23,6 +23,34 @@ struct FrictionPair {
   double b = 0.0;     // quadratic coefficient, N·s²/m²: F = -b·v²·sign(v)
 };
 
+// The pair's four coefficients, described once: the physics checks a pair against this table,
+// the script runtime makes pair{}'s fields, sliders and timed values from it, and the theory,
+// the mystery and the window find a coefficient here by the name scripts, --set and setup
+// files spell it with.
+struct PairCoefficient {
+  const char* name;  // "mu_s": a script's field, a slider's parameter (after the pair's prefix)
+  const char* unit;  // "" for the dimensionless coefficients
+  double FrictionPair::*value;  // which of the pair's values it is
+  // A lesson's slider, and a value a script gives, run from 0 to this: the range every lesson's
+  // theory rows are held to (the random settings of `check --random`), past any classroom surface.
+  double lesson_largest;
+  // The physics refuses more than this from anyone (a C++ caller, a benchmark): above a μ of 10
+  // no real pair of surfaces exists and the solver's impulses stop meaning anything; drag past
+  // 1e6 outruns any step.
+  double largest;
+  const char* meaning;  // "static friction coefficient", as a slider's tooltip says it
+};
+inline constexpr PairCoefficient pair_coefficients[] = {
+    {"mu_s", "", &FrictionPair::mu_s, 2.0, 10.0, "static friction coefficient"},
+    {"mu_k", "", &FrictionPair::mu_k, 2.0, 10.0, "kinetic friction coefficient"},
+    {"c", "N·s/m", &FrictionPair::c, 1000.0, 1e6, "viscous drag coefficient"},
+    {"b", "N·s²/m²", &FrictionPair::b, 1000.0, 1e6, "quadratic drag coefficient"},
+};
+// The coefficient of that name; nullptr when it is none of the four.
+const PairCoefficient* pair_coefficient(std::string_view name);
+// "mu_s, mu_k, c, b", for messages that list them.
+std::string pair_coefficient_names();
+
 // How the dry (Coulomb) part of friction is treated; selectable per run so they can be compared,
 // and per pair so that one world can hold them side by side (physics/treatment.h).
 enum class FrictionTreatment {

@@ -108,6 +108,32 @@ box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 
             std::string::npos);
 }
 
+// A pair's sliders are made from the pair's table (physics/materials.h): each has the table's
+// name, unit, range and meaning, and a value set live reaches that coefficient of the pair alone.
+TEST(LessonRuntime, APairsSlidersAreTheTablesCoefficientsAndEachSetsItsOwnValue) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, b = 3 }
+local floor = ground { "floor", material = "ice" }
+box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+)"));
+  Lesson lesson(script.path());
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    const Parameter& slider = lesson.parameter(std::string("ice.") + coefficient.name);
+    EXPECT_EQ(slider.coefficient, coefficient.name);
+    EXPECT_EQ(slider.unit, coefficient.unit);
+    EXPECT_EQ(slider.min, 0.0);
+    EXPECT_EQ(slider.max, coefficient.lesson_largest);
+    EXPECT_EQ(slider.text.rfind(coefficient.meaning, 0), 0u) << slider.text;
+    const FrictionPair before = lesson.scene().pairs().pair("wood", "ice");
+    lesson.set(slider.name, "0.0625");
+    const FrictionPair after = lesson.scene().pairs().pair("wood", "ice");
+    for (const PairCoefficient& other : pair_coefficients) {
+      EXPECT_EQ(after.*other.value, &other == &coefficient ? 0.0625 : before.*other.value)
+          << "setting " << coefficient.name << ", " << other.name;
+    }
+  }
+}
+
 // lesson{ velocity_iterations = N }: a scene whose contacts settle in fewer passes says so, and
 // its world steps with N passes, as if they had been the settings, through every rebuild. A
 // tower of three boxes dropped on the floor lands differently with 1 pass than with 8.

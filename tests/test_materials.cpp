@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "physics/materials.h"
 #include "tests/assertions.h"
@@ -37,6 +39,36 @@ TEST(PairTable, RejectsBadValuesNamingThePairAndRange) {
     expect_invalid([&] { table.set_pair("metal", "wood", pair); }, "pair metal–wood", "allowed range");
   }
   EXPECT_FALSE(table.has_pair(0, 1)) << "a rejected pair must leave the table unchanged";
+}
+
+// The pair's one table: each coefficient names its own value, distinct from the others, is found
+// by its name, and its largest value is the one the table accepts, one step past it refused with
+// the coefficient's name and unit in the message.
+TEST(PairCoefficients, EachIsItsOwnValueAndItsLargestIsTheOneChecked) {
+  std::set<std::string> names;
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    names.insert(coefficient.name);
+    for (const PairCoefficient& other : pair_coefficients) {
+      if (&other != &coefficient) {
+        EXPECT_NE(other.value, coefficient.value) << coefficient.name << " and " << other.name;
+      }
+    }
+    EXPECT_EQ(pair_coefficient(coefficient.name), &coefficient);
+    EXPECT_GT(coefficient.lesson_largest, 0.0);
+    EXPECT_LE(coefficient.lesson_largest, coefficient.largest) << "a slider offers no value the physics refuses";
+    FrictionPair pair{0.5, 0.4, 0.0, 0.0};
+    pair.*coefficient.value = coefficient.largest;
+    if (pair.mu_k > pair.mu_s) pair.mu_s = pair.mu_k;
+    EXPECT_TRUE(check_pair("a", "b", pair).errors.empty()) << coefficient.name;
+    pair.*coefficient.value = std::nextafter(coefficient.largest, INFINITY);
+    const PairCheck past = check_pair("a", "b", pair);
+    ASSERT_EQ(past.errors.size(), 1u) << coefficient.name;
+    EXPECT_EQ(past.errors[0].find(std::string(coefficient.name) + " = "), past.errors[0].find(": ") + 2) << past.errors[0];
+    EXPECT_NE(past.errors[0].find(coefficient.unit), std::string::npos) << past.errors[0];
+  }
+  EXPECT_EQ(names.size(), std::size(pair_coefficients));
+  EXPECT_EQ(pair_coefficient("mu"), nullptr);
+  EXPECT_EQ(pair_coefficient_names(), "mu_s, mu_k, c, b");
 }
 
 TEST(PairTable, FlagsKineticAboveStaticButAllowsIt) {

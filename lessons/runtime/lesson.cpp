@@ -465,11 +465,9 @@ void Lesson::set(const std::string& name, const std::string& text) {
     FrictionPair values = scene().pairs().pair(changed.material_a, changed.material_b);
     for (const Parameter& sibling : current_->parameters) {
       if (sibling.material_a != changed.material_a || sibling.material_b != changed.material_b) continue;
-      const double v = &sibling == &changed ? value : sibling.value;
-      if (sibling.coefficient == "mu_s") values.mu_s = v;
-      if (sibling.coefficient == "mu_k") values.mu_k = v;
-      if (sibling.coefficient == "c") values.c = v;
-      if (sibling.coefficient == "b") values.b = v;
+      if (const PairCoefficient* coefficient = pair_coefficient(sibling.coefficient)) {
+        values.*coefficient->value = &sibling == &changed ? value : sibling.value;
+      }
     }
     scene().pairs().set_pair(changed.material_a, changed.material_b, values);
     scene().wake();  // a block resting on static friction may slide with the new values

@@ -6,6 +6,8 @@
 #include <functional>
 #include <sstream>
 #include <set>
+#include <span>
+#include <vector>
 
 #include "lessons/runtime/build.h"
 #include "physics/scenarios.h"
@@ -201,41 +203,27 @@ int material(lua_State* state) {
   });
 }
 
-struct Coefficient {
-  const char* key;
-  const char* unit;
-  double max;
-  const char* words;
-};
-constexpr Coefficient coefficients[] = {
-    {"mu_s", "", 2.0, "static friction coefficient"},
-    {"mu_k", "", 2.0, "kinetic friction coefficient"},
-    {"c", "N·s/m", 1000.0, "viscous drag coefficient"},
-    {"b", "N·s²/m²", 1000.0, "quadratic drag coefficient"},
-};
-
 }  // namespace
 
 FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
                                   const std::string& prefix, const std::string& declared_at,
                                   const std::set<std::string>& only) {
-  double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
-  for (int i = 0; i < 4; ++i) {
-    const Coefficient& coefficient = coefficients[i];
-    if (!only.empty() && only.count(coefficient.key) == 0) continue;  // the script keeps this one
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    const std::string key(coefficient.name);
+    if (!only.empty() && only.count(key) == 0) continue;  // the script keeps this one
     Parameter declared;
-    declared.name = prefix + coefficient.key;
+    declared.name = prefix + key;
     declared.unit = coefficient.unit;
-    declared.text = std::string(coefficient.words) + ", " + a + " on " + b;
-    declared.value = declared.default_value = *slots[i];
+    declared.text = std::string(coefficient.meaning) + ", " + a + " on " + b;
+    declared.value = declared.default_value = values.*coefficient.value;
     declared.min = 0.0;
-    declared.max = coefficient.max;
-    declared.coefficient = coefficient.key;
+    declared.max = coefficient.lesson_largest;
+    declared.coefficient = key;
     declared.material_a = a;
     declared.material_b = b;
     declared.declared_at = declared_at;
     add_parameter(build, declared);
-    *slots[i] = build.parameters.back().value;
+    values.*coefficient.value = build.parameters.back().value;
   }
   return values;
 }
@@ -273,7 +261,7 @@ namespace {
 
 // A pair's coefficient that is a function of time, and which of mu_s, mu_k, c, b it is.
 struct TimedCoefficient {
-  int slot;  // index into `coefficients`
+  const PairCoefficient* which;
   std::function<std::array<double, 2>(double)> at;
   std::string declared_at;  // "path:line" its errors name: the function's, or the pair's for a schedule
 };
@@ -320,11 +308,11 @@ std::vector<std::array<double, 2>> read_schedule(lua_State* state, int index, co
 // The coefficient's value at t, within its slider's range, or an error placed at the function.
 double timed_value(const TimedCoefficient& coefficient, const std::string& label, double t) {
   const double value = coefficient.at(t)[0];
-  const Coefficient& which = coefficients[coefficient.slot];
-  if (value >= 0.0 && value <= which.max) return value;
+  const PairCoefficient& which = *coefficient.which;
+  if (value >= 0.0 && value <= which.lesson_largest) return value;
   std::ostringstream message;
-  message << coefficient.declared_at << ": pair " << label << ": " << which.key << " returned " << value
-          << " at t = " << t << " s; it must be in [0, " << which.max << "]";
+  message << coefficient.declared_at << ": pair " << label << ": " << which.name << " returned " << value
+          << " at t = " << t << " s; it must be in [0, " << which.lesson_largest << "]";
   throw ScriptError(message.str());
 }
 
@@ -338,12 +326,12 @@ void follow_in_time(LessonBuild& build, const std::string& a, const std::string&
   build.before_substep = [=](double t) {
     if (earlier) earlier(t);
     FrictionPair values = scene->pairs().pair(a, b);
-    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     bool changed = false;
     for (const TimedCoefficient& coefficient : timed) {
       const double value = timed_value(coefficient, label, t);
-      changed = changed || value != *slots[coefficient.slot];
-      *slots[coefficient.slot] = value;
+      double& slot = values.*coefficient.which->value;
+      changed = changed || value != slot;
+      slot = value;
     }
     if (!changed) return;
     scene->pairs().set_pair(a, b, values);
@@ -356,7 +344,11 @@ int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "pair", {"mu_s", "mu_k", "c", "b", "name", "sliders", "treatment", "epsilon", "like"});
+    // The four coefficients (physics/materials.h), then the pair's own fields.
+    std::vector<const char*> known;
+    for (const PairCoefficient& coefficient : pair_coefficients) known.push_back(coefficient.name);
+    known.insert(known.end(), {"name", "sliders", "treatment", "epsilon", "like"});
+    Fields fields(state, 1, "pair", std::span<const char* const>(known));
     std::string names[2];
     for (int i = 0; i < 2; ++i) {
       lua_rawgeti(state, 1, i + 1);
@@ -386,7 +378,10 @@ int pair(lua_State* state) {
     }
     std::string like[2];
     if (fields.has("like")) {
-      for (const char* key : {"mu_s", "mu_k", "c", "b", "name", "sliders"}) {
+      // Every value; a shared pair may still have a treatment of its own.
+      std::vector<const char*> values_given(known.begin(), known.begin() + std::ssize(pair_coefficients));
+      values_given.insert(values_given.end(), {"name", "sliders"});
+      for (const char* key : values_given) {
         if (fields.has(key)) {
           throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " + key);
         }
@@ -425,31 +420,32 @@ int pair(lua_State* state) {
     // The same range as its slider, so the default a script gives can also be set back. A
     // coefficient given as a function of time (a surface oiled now and then) is asked at the
     // start of every sub-step instead, and has no slider.
-    double* slots[] = {&values.mu_s, &values.mu_k, &values.c, &values.b};
     std::vector<TimedCoefficient> timed;
-    for (int i = 0; i < 4; ++i) {
-      if (fields.push_function(coefficients[i].key)) {  // (like = with any coefficient is refused above)
+    for (const PairCoefficient& coefficient : pair_coefficients) {
+      const char* key = coefficient.name;
+      double& slot = values.*coefficient.value;
+      if (fields.push_function(key)) {  // (like = with any coefficient is refused above)
         const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
-        const std::string what = "pair " + label + ": " + coefficients[i].key + " (t -> a number)";
-        timed.push_back({i, function_of_time(build, reference, 1, what), build.defined_at(reference)});
-        *slots[i] = timed_value(timed.back(), label, 0.0);
+        const std::string what = "pair " + label + ": " + key + " (t -> a number)";
+        timed.push_back({&coefficient, function_of_time(build, reference, 1, what), build.defined_at(reference)});
+        slot = timed_value(timed.back(), label, 0.0);
         continue;
       }
-      fields.push(coefficients[i].key);
+      fields.push(key);
       if (lua_istable(state, -1)) {
-        auto steps = read_schedule(state, -1, "pair " + label + ": " + coefficients[i].key, coefficients[i].max);
+        auto steps = read_schedule(state, -1, "pair " + label + ": " + key, coefficient.lesson_largest);
         lua_pop(state, 1);
         const auto at = [steps = std::move(steps)](double t) {
           std::size_t k = steps.size() - 1;
           while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
           return std::array<double, 2>{steps[k][1], 0.0};
         };
-        timed.push_back({i, at, caller(state)});
-        *slots[i] = timed_value(timed.back(), label, 0.0);
+        timed.push_back({&coefficient, at, caller(state)});
+        slot = timed_value(timed.back(), label, 0.0);
         continue;
       }
       lua_pop(state, 1);
-      *slots[i] = fields.number_in(coefficients[i].key, coefficients[i].unit, *slots[i], 0.0, coefficients[i].max);
+      slot = fields.number_in(key, coefficient.unit, slot, 0.0, coefficient.lesson_largest);
     }
     // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
     // Its epsilon is no slider of its own: a lesson that varies it passes one of its parameters.
@@ -491,18 +487,18 @@ int pair(lua_State* state) {
           const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
           const std::string word = key ? key : describe(state, -1);
           lua_pop(state, 1);
-          if (key == nullptr || (word != "mu_s" && word != "mu_k" && word != "c" && word != "b")) {
+          if (key == nullptr || pair_coefficient(word) == nullptr) {
             lua_pop(state, 1);
-            throw InvalidInput("pair " + label + ": sliders lists coefficients from mu_s, mu_k, c, b, as in sliders = "
-                               "{ \"mu_s\", \"mu_k\" }; got " + word);
+            throw InvalidInput("pair " + label + ": sliders lists coefficients from " + pair_coefficient_names() +
+                               ", as in sliders = { \"mu_s\", \"mu_k\" }; got " + word);
           }
           only.insert(word);
         }
         lua_pop(state, 1);
         if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
         for (const TimedCoefficient& coefficient : timed) {
-          if (only.count(coefficients[coefficient.slot].key) > 0) {
-            throw InvalidInput("pair " + label + ": " + coefficients[coefficient.slot].key +
+          if (only.count(coefficient.which->name) > 0) {
+            throw InvalidInput("pair " + label + ": " + coefficient.which->name +
                                " changes with time (a function or a schedule), which no slider can set; leave it out of sliders");
           }
         }
@@ -513,8 +509,10 @@ int pair(lua_State* state) {
     }
     if (with_sliders && !timed.empty()) {
       // Sliders for the coefficients that are numbers only.
-      if (only.empty()) only = {"mu_s", "mu_k", "c", "b"};
-      for (const TimedCoefficient& coefficient : timed) only.erase(coefficients[coefficient.slot].key);
+      if (only.empty()) {
+        for (const PairCoefficient& coefficient : pair_coefficients) only.insert(coefficient.name);
+      }
+      for (const TimedCoefficient& coefficient : timed) only.erase(coefficient.which->name);
       with_sliders = !only.empty();
       if (!with_sliders) {
         if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with every coefficient changing with time it has none");

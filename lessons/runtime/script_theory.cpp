@@ -15,10 +15,12 @@
 namespace frictionlab::lessons {
 namespace {
 
-// mu_s may be left out where only sliding matters (it then equals mu_k).
+// mu_s may be left out where only sliding matters (it then equals mu_k). Units as the pair's
+// table gives them (physics/materials.h).
 // (Listed mu_s first, as the calls' messages list them; reading it reads mu_k first.)
-const std::vector<TheoryArgument> sliding_pair = {same_as("mu_s", "", "mu_k"), needed("mu_k", ""),
-                                                  defaulted("c", "N·s/m", 0.0), defaulted("b", "N·s²/m²", 0.0)};
+const char* unit_of(const char* coefficient) { return pair_coefficient(coefficient)->unit; }
+const std::vector<TheoryArgument> sliding_pair = {same_as("mu_s", unit_of("mu_s"), "mu_k"), needed("mu_k", unit_of("mu_k")),
+                                                  defaulted("c", unit_of("c"), 0.0), defaulted("b", unit_of("b"), 0.0)};
 
 // A disk's or wheel's moment of inertia, unless given: a uniform disk's, ½ m r².
 double uniform_disk(TheoryValues& values) { return 0.5 * values["mass"] * values["radius"] * values["radius"]; }
@@ -30,7 +32,12 @@ std::vector<TheoryArgument> joined(std::vector<TheoryArgument> first, const std:
   return first;
 }
 
-FrictionPair pair_of(TheoryValues& values) { return {values["mu_s"], values["mu_k"], values["c"], values["b"]}; }
+// The four coefficients, each read by its own name (physics/materials.h).
+FrictionPair pair_of(TheoryValues& values) {
+  FrictionPair pair;
+  for (const PairCoefficient& coefficient : pair_coefficients) pair.*coefficient.value = values[coefficient.name];
+  return pair;
+}
 
 // The order is the one the functions were always registered in (the order of `pairs(theory)`).
 std::vector<TheoryFunction> make_table() {
