@@ -265,45 +265,34 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   bool quick = false;
   std::string directory, recommend, tolerance;
   std::map<std::string, std::string> overrides;
-  for (size_t i = 0; i < args.size(); ++i) {
-    // As read_options() refuses it for the other commands: the value left out, not the next
-    // option taken for it (bench --out --quick would make a folder named --quick).
-    const auto bench_option = [](const std::string& word) -> const Option* {
-      for (const Option& option : options_table()) {
-        if (option.name == word && includes(option.commands, Command::bench)) return &option;
-      }
-      return nullptr;
-    };
-    const Option* option = bench_option(args[i]);
-    if (option != nullptr && !option->value.empty() && i + 1 < args.size() && bench_option(args[i + 1]) != nullptr) {
-      throw InvalidInput("bench: " + args[i] + " needs a value (" + std::string(option->value) + "); got the option " +
-                         args[i + 1]);
-    }
-    if (args[i] == "--quick") {
-      quick = true;
-    } else if (args[i] == "--out" && i + 1 < args.size() && !args[i + 1].empty()) {
-      if (!directory.empty()) throw InvalidInput("bench: --out given twice; give one folder");
-      directory = args[++i];
-    } else if (args[i] == "--recommend" && i + 1 < args.size()) {
-      if (!recommend.empty()) throw InvalidInput("bench: --recommend given twice; give one lesson");
-      recommend = args[++i];
-    } else if (args[i] == "--set" && i + 1 < args.size()) {
-      const std::string& pair = args[++i];
-      const std::size_t equals = pair.find('=');
-      if (equals == std::string::npos || equals == 0) throw InvalidInput("bench --set: expected NAME=VALUE, got '" + pair + "'");
-      try {
-        add_override(pair, overrides);  // one parameter given two values is refused, as run refuses it
-      } catch (const InvalidInput& error) {
-        throw InvalidInput(std::string("bench: ") + error.what());
-      }
-    } else if (args[i] == "--tol" && i + 1 < args.size()) {
-      if (!tolerance.empty()) throw InvalidInput("bench: --tol given twice; give one tolerance");
-      tolerance = args[++i];
-    } else {
-      throw InvalidInput("bench: unknown or incomplete option '" + args[i] +
-                         "'; usage: bench [--quick] --out DIR, or bench --recommend LESSON --tol X [--set NAME=VALUE ...]");
-    }
-  }
+  read_options(
+      Command::bench, args,
+      [](const std::string& word) {
+        throw InvalidInput("bench: '" + word + "' is no option; usage: bench [--quick] --out DIR, or bench --recommend "
+                           "LESSON --tol X [--set NAME=VALUE ...]");
+      },
+      [&](const Option& option, const std::string& value) {
+        if (option.name == "--quick") {
+          quick = true;
+        } else if (option.name == "--out") {
+          if (value.empty()) throw InvalidInput("bench: --out \"\": give the folder for the CSV files");
+          directory = value;
+        } else if (option.name == "--recommend") {
+          recommend = value;
+        } else if (option.name == "--tol") {
+          tolerance = value;
+        } else if (option.name == "--set") {
+          const std::size_t equals = value.find('=');
+          if (equals == std::string::npos || equals == 0) {
+            throw InvalidInput("bench --set: expected NAME=VALUE, got '" + value + "'");
+          }
+          try {
+            add_override(value, overrides);  // one parameter given two values is refused, as run refuses it
+          } catch (const InvalidInput& error) {
+            throw InvalidInput(std::string("bench: ") + error.what());
+          }
+        }
+      });
   if (!overrides.empty() && recommend.empty()) throw InvalidInput("bench: --set goes with --recommend LESSON");
   if (!recommend.empty() || !tolerance.empty()) {
     if (recommend.empty()) throw InvalidInput("bench: --tol goes with --recommend LESSON");

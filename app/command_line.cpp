@@ -149,6 +149,9 @@ const Refusals refusals[] = {
     {for_run, "run: ", "options", "", "; give it once"},
     {for_check, "check: ", "options", "", "; give it once"},
     {for_render, "render: ", "options", "", "; give it once"},
+    {for_list, "list: ", "options", "", "; give it once"},
+    {for_link, "link: ", "options", "", "; give it once"},
+    {for_bench, "bench: ", "options", "", "; give it once"},
 };
 
 // The order each command lists its options in when it refuses one it does not take: as each
@@ -164,6 +167,9 @@ const Listing listings[] = {
     {for_run, "--duration --hz --substeps --friction --set --csv --mystery --seed"},
     {for_check, "--set --hz --substeps --friction --random --seed"},
     {for_render, "--at --moment --size --theme --set --out --hz --substeps --friction --mystery --seed"},
+    {for_list, "--tsv"},
+    {for_link, "--page"},
+    {for_bench, "--quick --out --recommend --tol --set"},
 };
 
 const Refusals& refusals_of(Command command) {

@@ -1,6 +1,6 @@
 // The command line's options in one table: for each, the commands that take it, the kind of
-// value it takes and its allowed range, and its line of help. The window, run, check and
-// render read their options through read_options(), and `frictionlab help` and the manual
+// value it takes and its allowed range, and its line of help. Every command (the window, list,
+// run, check, render, link, bench) reads its options through read_options(), and `frictionlab help` and the manual
 // page's OPTIONS are written from the table; so an option is added, renamed or given a new
 // range in one place.
 #pragma once

@@ -226,8 +226,11 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
 }  // namespace
 
 int run_list(const std::vector<std::string>& args, std::ostream& out) {
-  const bool tsv = args.size() == 1 && args[0] == "--tsv";
-  if (!args.empty() && !tsv) throw InvalidInput("list takes no options but --tsv, got '" + args[0] + "'");
+  bool tsv = false;
+  read_options(
+      Command::list, args,
+      [](const std::string& word) { throw InvalidInput("list: lists every lesson and takes none by name, got '" + word + "'"); },
+      [&](const Option&, const std::string&) { tsv = true; });  // --tsv, its only option
   // The moments by name, the README's frame marked with a star.
   const auto moment_names = [](const lessons::CatalogEntry& entry, const char* separator, bool star) {
     std::string names;

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/command_line.h"
 #include "app/modes.h"
 #include "classroom_state/setup_file.h"
 #include "physics/validation.h"
@@ -11,19 +12,15 @@ namespace frictionlab {
 
 int run_link(const std::vector<std::string>& args, std::ostream& out) {
   std::string source, page;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--page") {
-      if (i + 1 >= args.size()) throw InvalidInput("link: --page needs the page's address, as in --page https://school.example/frictionlab/");
-      if (!page.empty()) throw InvalidInput("link: --page given twice");
-      page = args[++i];
-    } else if (args[i].rfind("--", 0) == 0) {
-      throw InvalidInput("link: unknown option '" + args[i] + "'; usage: frictionlab link FILE.setup [--page ADDRESS] | frictionlab link LINK | frictionlab link - (the link on the standard input)");
-    } else if (!source.empty()) {
-      throw InvalidInput("link: one setup file or link at a time, got '" + source + "' and '" + args[i] + "'");
-    } else {
-      source = args[i];
-    }
-  }
+  read_options(
+      Command::link, args,
+      [&](const std::string& word) {
+        if (!source.empty()) {
+          throw InvalidInput("link: one setup file or link at a time, got '" + source + "' and '" + word + "'");
+        }
+        source = word;
+      },
+      [&](const Option&, const std::string& value) { page = value; });  // --page, its only option
   if (source.empty()) throw InvalidInput("link: name a setup file (to make its link) or give a link (to write its setup)");
   // "-": the link from the standard input. A link carrying a long lesson is longer than one
   // command-line argument may be on Linux (128 KB; the page's links carry up to 200 KB).

@@ -22,7 +22,8 @@ namespace {
 
 // The commands whose parsers read the table; list, link and bench read their few options
 // themselves, so only the help and the manual page are held to the table for them.
-constexpr Command parsed[] = {Command::window, Command::run, Command::check, Command::render};
+constexpr Command parsed[] = {Command::window, Command::run,  Command::check, Command::render,
+                               Command::list,   Command::link, Command::bench};
 
 struct Reading {
   const Option* option = nullptr;  // the last option taken
@@ -201,10 +202,15 @@ TEST(OptionsTable, AnOptionIsNotTakenAsTheValueBeforeIt) {
     for (const Command command : parsed) {
       if (!includes(option.commands, command) || option.kind == ValueKind::none) continue;
       SCOPED_TRACE(std::string(option.name) + " for " + std::string(command_name(command)));
-      // --hz, which every command here takes, where the value should be (for --hz too).
-      const std::string refusal = read(command, {"incline", std::string(option.name), "--hz", "240"}).refusal;
+      // Another option of the command's (or the same one) where the value should be.
+      const Option* next = &option;
+      for (const Option& other : options_table()) {
+        if (&other != &option && includes(other.commands, command)) next = &other;
+      }
+      const std::string refusal = read(command, {"incline", std::string(option.name), std::string(next->name)}).refusal;
       const std::string prefix = command == Command::window ? "" : std::string(command_name(command)) + ": ";
-      EXPECT_EQ(refusal, prefix + std::string(option.name) + " needs a value (" + std::string(option.value) + "); got the option --hz");
+      EXPECT_EQ(refusal, prefix + std::string(option.name) + " needs a value (" + std::string(option.value) +
+                             "); got the option " + std::string(next->name));
     }
   }
   // Negative numbers, - and another command's option are values, for the command to judge.
@@ -235,6 +241,15 @@ TEST(OptionsTable, UnknownOptionMessagesAreAsBeforeTheTable) {
             "unknown option '--fullscreen'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, "
             "--substeps N, --friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, "
             "--mystery MATERIAL/MATERIAL --seed N, --setup FILE (commands: list, run, check, render, demo, bench, help)");
+}
+
+// list, link and bench read their options through the table too, and refuse an unknown one
+// with the options they take.
+TEST(OptionsTable, ListLinkAndBenchListTheirOptionsWhenRefusingOne) {
+  EXPECT_EQ(unknown_option_message(Command::list, "--csv"), "list: unknown option '--csv'; options: --tsv");
+  EXPECT_EQ(unknown_option_message(Command::link, "--site"), "link: unknown option '--site'; options: --page ADDRESS");
+  EXPECT_EQ(unknown_option_message(Command::bench, "--fast"),
+            "bench: unknown option '--fast'; options: --quick, --out DIR, --recommend LESSON, --tol X, --set NAME=VALUE");
 }
 
 TEST(OptionsTable, AValueMissingOrGivenTwiceIsRefused) {
