@@ -408,10 +408,19 @@ expect { "normal force halfway", unit = "N",
   measured = function() return no_model(duration / 2) or recorded("normal_force", duration / 2) end,
   -- 1 % of the weight, and how much the force changes in a step there: Box2D's reading is a
   -- step's mean, and where the surface turns fast (N falls by over 1 N a step in the article's
-  -- first example) a part of a step is most of the difference.
+  -- first example) a part of a step is most of the difference. And the turn's share of N
+  -- arriving a step late (late_share). And where the world's start (and reversals) carried the
+  -- block apart from the model's (start_drift: δs off, δs' faster), the turn presses it
+  -- differently there, by m·(θ''·δs + 2θ'·δs') (frictionless, shaken at 17 m/s² on a plank
+  -- swinging 5.6° at 10 rad/s: 0.13 m apart by 2.5 s, N 3.9 N off where 2.7 N was allowed).
   tolerance = function()
-    local k = sample(duration / 2)
-    return 0.01 * mass * g + 0.5 * math.abs(turning.normal[k + 1] - turning.normal[k - 1]) + 1e-3
+    local t = duration / 2
+    local k = sample(t)
+    local gap, gap_speed = start_drift(t)
+    local spin_up = theta0 * omega * omega * math.abs(sin(omega * t))
+    local turn_rate = theta0 * omega * math.abs(math.cos(omega * t))
+    return 0.01 * mass * g + 0.5 * math.abs(turning.normal[k + 1] - turning.normal[k - 1]) + late_share(k)
+           + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + 1e-3
   end }
 expect { "first slip", unit = "s",
   predicted = function()
