@@ -219,15 +219,49 @@ end
 -- its normal force's moment reaches: the surface's angular acceleration θ'' needs I·θ'' about
 -- the centre, and friction, e below it, adds −e·f. Past N·w/2 the block rocks onto an edge.
 local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
--- The first sample at which it would rock, once for each solution of the model.
+-- Whether the contact's moment falls short of turning the block with the surface at time_t,
+-- with that friction and normal force on it.
+local function must_rock(time_t, friction, normal)
+  local spin_up = -theta0 * omega * omega * sin(omega * time_t)
+  -- At μ = w/h (2, the sliders' end) a block that slips, or is held at μ·N, needs exactly
+  -- the most N·w/2 can give: balanced on its front edge, Box2D's single-precision solver
+  -- (a few parts in 10^7 a sum, over the step's dozens of sums) decides which way it goes,
+  -- so within a part in 10^6 of the edge no model can say either.
+  return math.abs(inertia * spin_up + centre_height * friction) > (1 - 1e-6) * 0.5 * block_width * normal
+end
+-- The first sample at which it would rock, once for each solution of the model; or, if it
+-- would at a breakaway between two samples, the sample nearest that.
 local rocks_for, rocks_from
 local function rocks_by(t)
   local last = sample(t)  -- first: it may solve further
   if rocks_for ~= horizon then
     rocks_for, rocks_from = horizon, nil
+    local breakaways = {}
+    for _, event in ipairs(turning.events) do
+      if event.kind == "breakaway" then breakaways[#breakaways + 1] = event.t end
+    end
+    local next_breakaway = 1
     for k = 1, #turning.slide do
       local time_k = (k - 1) * spacing
-      local spin_up = -theta0 * omega * omega * sin(omega * time_k)
+      -- A breakaway since the last sample: the friction there is all the limit, μ·N, the way
+      -- it held; at μ = w/h that alone needs N·w/2, and the surface's θ'' may add to it (μ = 2,
+      -- θ0 = 40°: the model broke away at 0.0061 s and would rock by the next sample, 0.0083 s;
+      -- the world's block rocked in its third step and slid only from the sixth).
+      while breakaways[next_breakaway] and breakaways[next_breakaway] <= time_k do
+        local at = breakaways[next_breakaway]
+        next_breakaway = next_breakaway + 1
+        if k > 1 and turning.contact[k - 1] ~= "flying" then
+          local share = (at - (k - 2) * spacing) / spacing
+          local normal = turning.normal[k - 1] + share * (turning.normal[k] - turning.normal[k - 1])
+          local way = turning.friction[k - 1] ~= 0 and turning.friction[k - 1] or turning.friction[k]
+          local limit = math.max(param.mu_s, param.mu_k) * math.max(normal, 0)
+          if way ~= 0 and must_rock(at, (way > 0 and 1 or -1) * limit, normal) then
+            rocks_from = floor(at / spacing + 0.5) + 1
+            break
+          end
+        end
+      end
+      if rocks_from then break end
       local friction = turning.friction[k]
       -- A block that must slip from the start is held through the world's first step (see
       -- "first slip" below): the friction then is all the drive along the surface, F = m·a·cos θ
@@ -236,12 +270,7 @@ local function rocks_by(t)
         local most = math.max(param.mu_s, param.mu_k) * turning.normal[1]
         friction = math.max(-most, math.min(most, -drive_along(0)))
       end
-      -- At μ = w/h (2, the sliders' end) a block that slips, or is held at μ·N, needs exactly
-      -- the most N·w/2 can give: balanced on its front edge, Box2D's single-precision solver
-      -- (a few parts in 10^7 a sum, over the step's dozens of sums) decides which way it goes,
-      -- so within a part in 10^6 of the edge no model can say either.
-      local needed = math.abs(inertia * spin_up + centre_height * friction)
-      if turning.contact[k] ~= "flying" and needed > (1 - 1e-6) * 0.5 * block_width * turning.normal[k] then
+      if turning.contact[k] ~= "flying" and must_rock(time_k, friction, turning.normal[k]) then
         rocks_from = k
         break
       end
