@@ -219,6 +219,9 @@ end
 -- its normal force's moment reaches: the surface's angular acceleration θ'' needs I·θ'' about
 -- the centre, and friction, e below it, adds −e·f. Past N·w/2 the block rocks onto an edge.
 local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
+-- A stuck contact asked for up to 2 % past μ·N may be held a step while the listener tells the
+-- solver's leftover from a real excess (its hold band).
+local hold_band = 0.02  -- the listener's stick_slip_hold_band (physics/friction_laws.h)
 -- Whether the contact's moment falls short of turning the block with the surface at time_t,
 -- with that friction and normal force on it.
 local function must_rock(time_t, friction, normal)
@@ -246,7 +249,9 @@ local function rocks_by(t)
       -- A breakaway since the last sample: the friction there is all the limit, μ·N, the way
       -- it held; at μ = w/h that alone needs N·w/2, and the surface's θ'' may add to it (μ = 2,
       -- θ0 = 40°: the model broke away at 0.0061 s and would rock by the next sample, 0.0083 s;
-      -- the world's block rocked in its third step and slid only from the sixth).
+      -- the world's block rocked in its third step and slid only from the sixth). And the world
+      -- holds its breakaway step with up to the hold band past μ·N, so from μ = (w/h)/1.02 it
+      -- may rock there (μs 1.998: the block turned 0.001° off the surface in that step).
       while breakaways[next_breakaway] and breakaways[next_breakaway] <= time_k do
         local at = breakaways[next_breakaway]
         next_breakaway = next_breakaway + 1
@@ -254,7 +259,7 @@ local function rocks_by(t)
           local share = (at - (k - 2) * spacing) / spacing
           local normal = turning.normal[k - 1] + share * (turning.normal[k] - turning.normal[k - 1])
           local way = turning.friction[k - 1] ~= 0 and turning.friction[k - 1] or turning.friction[k]
-          local limit = math.max(param.mu_s, param.mu_k) * math.max(normal, 0)
+          local limit = math.max(param.mu_s, param.mu_k) * (1 + hold_band) * math.max(normal, 0)
           if way ~= 0 and must_rock(at, (way > 0 and 1 or -1) * limit, normal) then
             rocks_from = floor(at / spacing + 0.5) + 1
             break
@@ -339,7 +344,6 @@ end
 -- held a step while the listener tells the solver's leftover from a real excess, and a start
 -- holds where the drive falls back under the limit by then (μk 1.65, θ0 19.45°, ω 10: 1.8 %
 -- over the model's limit a step in, under it the step after; the world held on till 0.95 s).
-local hold_band = 0.02  -- the listener's stick_slip_hold_band (physics/friction_laws.h)
 local function on_the_edge_at_the_start()
   if turning.contact[1] ~= "slipping" or #turning.normal < 2 then return false end
   local limit = math.max(param.mu_s, param.mu_k) * (1 + hold_band)
