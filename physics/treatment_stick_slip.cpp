@@ -181,9 +181,9 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   // inside the step, B was dragged to A's new speed at every reversal: by a·h = 0.125 m/s on a
   // plank shaken at 30 m/s², 40 times what mu_s·N gives in a step at mu_s 0.066; ΔK off by
   // 2.4 J in 5 s.)
+  // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
+  const double drive = r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
   if (start * r.slip_direction < 0.0) {
-    // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
-    const double drive = r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
     if (std::abs(other + drive) > limit) {
       r.state = ContactState::slipping;
       r.slip_direction = static_cast<float>(start > 0.0 ? 1.0 : -1.0);
@@ -195,10 +195,18 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   }
   const double moving = start - end;
   const double stopped = moving != 0.0 ? std::clamp(start / moving, 0.0, 1.0) : 0.0;  // share of the step
+  // Stopped inside the step, it is held if static friction can hold it against the other forces
+  // and the drive: a driven body's acceleration reaches the sliding only as a change of
+  // velocity between steps, so this step's own forces leave it out, and held against them alone
+  // it broke away where Coulomb's law holds it (a block on a plank swinging 26° and shaken at
+  // 5 m/s², mu_k 0: g·sin θ past mu_s·N, the plank's acceleration taking 85 % of it back; it
+  // slid on where it should have stuck for 0.2 s). Sliding back, the step's own forces move it
+  // in what is left of the step; the drive acts at the next step's start.
   double wanted = 0.0;  // B's sliding at the step's end by Coulomb's law: held
-  if (std::abs(other) > limit) {
-    const double way = other > 0.0 ? 1.0 : -1.0;
-    wanted = way * std::max(std::abs(other) - pair.mu_k * normal_force, 0.0) * (1.0 - stopped) * h / mass;
+  if (std::abs(other + drive) > limit) {
+    const double way = other + drive > 0.0 ? 1.0 : -1.0;
+    const double pushed = way * other;  // the step's own forces, the way it slides back
+    wanted = way * std::max(pushed - pair.mu_k * normal_force, 0.0) * (1.0 - stopped) * h / mass;
     r.state = ContactState::slipping;
     r.slip_direction = static_cast<float>(way);
   }
