@@ -5,7 +5,7 @@
 #   sudo apt install ./BUILD_DIR/frictionlab_VERSION_ARCH.deb
 # The build uses Debian's hardening flags (dpkg-buildflags) and installs under /usr. Set
 # -DFRICTIONLAB_HOMEPAGE=... and -DFRICTIONLAB_MAINTAINER=... as extra arguments to publish it
-# elsewhere (README, "Install as a package").
+# elsewhere (docs/install.md, "The Debian package").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,7 +30,7 @@ deb="$build_dir/frictionlab_${version}_$(dpkg --print-architecture).deb"
 test -f "$deb" || { echo "package: $deb was not made; see $build_dir/cpack.log" >&2; exit 1; }
 
 # The desktop entry and the metainfo as installed, checked by their validators; then the whole
-# package by lintian (errors fail; its info notes are explained in README).
+# package by lintian (errors fail; its info notes are explained in docs/install.md).
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
 dpkg-deb -x "$deb" "$root"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the whole benchmark and copies its charts into docs/charts/ for the README.
+# Runs the whole benchmark and copies its charts into docs/charts/ for docs/physics.md.
 #   scripts/readme_charts.sh
 # Look at the pictures before committing them.
 set -euo pipefail

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Takes the README's screenshots of the classroom window, in a real window on Xvfb (a virtual
-# X display, so no screen is needed), into docs/screenshots/.
+# Takes the screenshots of the classroom window shown in the README and docs/teachers.md, in a
+# real window on Xvfb (a virtual X display, so no screen is needed), into docs/screenshots/.
 #   scripts/readme_screenshots.sh
 # Look at the pictures before committing them.
 set -euo pipefail

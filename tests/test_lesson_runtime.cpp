@@ -1252,7 +1252,7 @@ TEST(LessonSandbox, RebuildsRunTheCompiledScriptWithTheTextsLines) {
   EXPECT_EQ(Lesson(compiled, {}, {}).title(), "changed");
 }
 
-// The guide's table of instants (lessons/README.md, 3.8), as a lesson's tolerance must allow
+// The guide's table of instants (lessons/reference.md, section 8), as a lesson's tolerance must allow
 // for them: a body falling from rest is ½·g·t·(t + h) below its start, half a step ahead of
 // ½·g·t²; the step in which a stuck contact breaks away reads μs·N and already slipping, the
 // next μk·N.

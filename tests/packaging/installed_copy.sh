@@ -31,6 +31,8 @@ for size in 16 24 32 48 64 128 256; do
   [[ $(basename "$icon" .png) == $(basename "$desktop" .desktop) ]] || fail "$icon is not named as the desktop entry's Icon"
 done
 gzip -t "$root/share/man/man1/frictionlab.1.gz" || fail "the manual page"
-test -f "$root/share/frictionlab/lessons/README.md" || fail "no students' guide"
+for guide in README.md reference.md cheatsheet.md; do
+  test -f "$root/share/frictionlab/lessons/$guide" || fail "no students' guide's $guide"
+done
 
 "$here/run_installed.sh" "$root/bin/frictionlab" "$work" "$build" "$source"

@@ -750,7 +750,7 @@ test('the Projector button fills the screen with the classroom, and leaving full
   await page.close();
 });
 
-// Figures for the README (printed, not asserted: this machine is shared): drawing time per
+// Figures for docs/physics.md (printed, not asserted: this machine is shared): drawing time per
 // frame while a lesson plays, at two sizes.
 test('frame time while playing, at 1280×720 and 1920×1080 (reported)', async () => {
   for (const [width, height] of [[1280, 720], [1920, 1080]]) {
