@@ -78,10 +78,7 @@ std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std
 }
 
 void Classroom::forget_interaction() {
-  control_errors_.clear();
-  pair_open_.clear();
-  parameters_opened_ = false;
-  sliding_.reset();
+  parameters_.forget();
   hand_held_ = false;
   view_adjust_ = {};
   held_view_.reset();
@@ -110,7 +107,19 @@ float Classroom::ui_scale(ImVec2 display) const {
   return std::max(0.5f, fit) * (window_.projector ? 1.35f : 1.0f);
 }
 
-bool Classroom::shown(const std::string& control_name) const { return lock_.empty() || lock_.count(control_name) > 0; }
+bool Classroom::shown(const std::string& control_name) const { return unlocked(lock_, control_name); }
+
+void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
+
+bool Classroom::run_played() const {
+  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
+  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
+}
+
+ParametersOnShow Classroom::parameters_on_show() const {
+  const lessons::Lesson& lesson = playback_->lesson();
+  return {lesson, lock_, mystery_, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+}
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
   const auto found = controls_.find(name);
@@ -163,8 +172,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
   style.view_adjust = view_adjust_;
   style.record = record;
-  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
-    parameters_panel(corner, size, folded);
+  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
+    parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
   };
   style.world_tools = [this](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                              float newtons_to_pixels,
@@ -186,11 +195,11 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
-  if (!run_played()) parameters_opened_ = false;
+  if (!run_played()) parameters_.opened = false;
   forget_outdated_predictions();
   predictions_style(style);
   ImGui::PushFont(fonts.body);
-  style.parameters_heights = parameters_heights();
+  style.parameters_heights = parameters_.heights(parameters_on_show());
   ImGui::PopFont();
   build_frame(playback_->lesson(), playback_->framing(), style, area);
 
@@ -211,8 +220,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
-  for (const auto& [name, text] : pending_values_) set_value(name, text);
-  pending_values_.clear();
+  for (const auto& [name, text] : parameters_.asked) set_value(name, text);
+  parameters_.asked.clear();
   after_keys();
 }
 
@@ -439,10 +448,10 @@ void Classroom::set_value(const std::string& name, const std::string& text) {
   try {
     const std::string before = parameter_text(playback_->lesson().parameter(name));
     playback_->set_parameter(name, text);
-    control_errors_.erase(name);
+    parameters_.errors.erase(name);
     keep_mystery(name, before);
   } catch (const InvalidInput& error) {
-    control_errors_[name] = error.what();
+    parameters_.errors[name] = error.what();
   }
 }
 

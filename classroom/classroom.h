@@ -25,6 +25,7 @@
 #include "classroom/keys.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_tab.h"
+#include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
 #include "classroom/stability_map_tab.h"
@@ -155,8 +156,8 @@ class Classroom {
   void predict_again();
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
-    const auto found = control_errors_.find(name);
-    return found == control_errors_.end() ? "" : found->second;
+    const auto found = parameters_.errors.find(name);
+    return found == parameters_.errors.end() ? "" : found->second;
   }
 
   // The force gauge's figures over its plot: "peak 39.4 N,  sliding 29.1 N", or "hand + spring:
@@ -191,7 +192,6 @@ class Classroom {
     bool words_below = false;
   };
   TransportShape transport_shape(float width) const;
-  void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
   // would take its pair away (a material chosen) is put back, with why beside its control.
   void keep_mystery(const std::string& name, const std::string& before);
@@ -203,34 +203,10 @@ class Classroom {
                                            std::optional<Mystery>& mystery) const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
-  // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
-  // (with its presets) comes before it. The panel draws them; its height is counted from them.
-  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
-  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
-  // folds one more pair the teacher has not opened, the last first, into its heading with its
-  // values.
-  struct ParameterRow {
-    const lessons::Parameter* parameter;
-    const lessons::Parameter* partner;  // the second coefficient on a row of two
-    bool pair_heading, folded, two_a_row;
-  };
-  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
-  std::vector<std::string> foldable_pairs(bool opened_too) const;
-  std::vector<ParameterRow> parameter_rows(std::size_t step) const;
-  std::vector<float> parameters_heights() const;  // at each step
-  // Once the class's predictions can be set beside a whole run (it has been played to its end),
-  // nobody slides values while comparing: the whole Parameters panel may fold into a heading,
-  // the last step of giving way, which a click opens again for the rest of this run.
-  bool parameters_may_fold_away() const;
   bool run_played() const;  // to the run's end, in the record
-  std::size_t parameters_folded_away_step() const;  // the step that folds it, when it may
-  void folded_parameters_panel(ImVec2 corner, ImVec2 size);
+  // The lesson as the Parameters panel shows it now.
+  ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
-  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
-  // value (none when value_x is reset_x) and its reset.
-  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
-                     float value_x, float reset_x);
-  void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);
   // The predictions' part of the frame: their contents and height in the theory panel, and
   // what they hide (classroom/classroom_predictions.cpp).
@@ -285,12 +261,8 @@ class Classroom {
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
-  std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
   ClassPredictions predictions_;  // a new lesson asks again
-  std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
-  bool parameters_opened_ = false;  // the teacher opened the Parameters panel folded for this run's comparison
-  std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
-  std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
+  ParametersPanel parameters_;
   std::optional<std::string> screenshot_request_;
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
