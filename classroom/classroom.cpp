@@ -149,7 +149,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = transport_shape(display.x).height;
+  const float transport_height = TransportBar::shape(transport_words(), display.x, s).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
   const float stopwatch_height = stopwatch_strip_height();
@@ -209,7 +209,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
            layout.world_size.x - 12.0f * s);
-  transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
+  transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
+                  transport_words(), s, window_.speed, controls_);
   help_panel();
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
@@ -471,6 +472,14 @@ std::string Classroom::script_words(const std::string& text) const {
     from = last_slash + 1;
   }
   return words + text.substr(from);
+}
+
+std::string Classroom::transport_words() const {
+  // Notices (the run is over, the file reloaded) and what was saved where, on one line.
+  std::string said = script_words(playback_->notice());
+  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
+  if (playback_->behind()) said = "running slower than asked  " + said;
+  return said;
 }
 
 std::string Classroom::running_script_error() const {

@@ -29,6 +29,7 @@
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
 #include "classroom/stability_map_tab.h"
+#include "classroom/transport_bar.h"
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
 #include "classroom_state/setup_file.h"
@@ -183,15 +184,8 @@ class Classroom {
   // and the line.
   float stopwatch_strip_height() const;
   void stopwatch_strip(ImVec2 corner, ImVec2 size);
-  void transport_bar(ImVec2 corner, ImVec2 size);
-  // The transport bar's words, and its height: one row, or two when the words do not fit
-  // beside the time bar.
+  // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
-  struct TransportShape {
-    float controls = 0.0f, bar = 0.0f, height = 0.0f;
-    bool words_below = false;
-  };
-  TransportShape transport_shape(float width) const;
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
   // would take its pair away (a material chosen) is put back, with why beside its control.
   void keep_mystery(const std::string& name, const std::string& before);
@@ -263,13 +257,13 @@ class Classroom {
   ControlPlaces controls_;
   ClassPredictions predictions_;  // a new lesson asks again
   ParametersPanel parameters_;
+  TransportBar transport_;
   std::optional<std::string> screenshot_request_;
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
   bool play_after_typing_ = false;        // ... and the run to play when its value is set
   bool close_menus_ = false;              // a key pressed while a menu was open
   bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
-  std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   std::optional<Mystery> mystery_;  // chosen once when a mystery begins

@@ -1,29 +1,21 @@
-// The classroom's transport bar along the bottom (the Parameters panel: classroom/parameters_panel.h).
+// The transport bar (classroom/transport_bar.h): play, step, reset, the speed and the time bar.
+#include "classroom/transport_bar.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "classroom/classroom.h"
 #include "draw/text_record.h"
 
 namespace frictionlab::ui {
 
-std::string Classroom::transport_words() const {
-  // Notices (the run is over, the file reloaded) and what was saved where, on one line.
-  std::string said = script_words(playback_->notice());
-  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
-  if (playback_->behind()) said = "running slower than asked  " + said;
-  return said;
-}
-
-Classroom::TransportShape Classroom::transport_shape(float width) const {
+TransportBar::Shape TransportBar::shape(const std::string& said, float width, float scale) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float s = fonts_->scale;
-  TransportShape shape;
+  const float s = scale;
+  Shape shape;
   // The controls before the time bar, and the time bar's own words at their longest.
   shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
   shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
-  const std::string said = transport_words();
   const float inside = width - 2.0f * style.WindowPadding.x;
   const float said_width = said.empty() ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + style.ItemSpacing.x;
   // The words beside the bar when they fit there, else on lines of their own under it.
@@ -33,68 +25,68 @@ Classroom::TransportShape Classroom::transport_shape(float width) const {
   return shape;
 }
 
-void Classroom::transport_bar(ImVec2 corner, ImVec2 size) {
-  const float s = fonts_->scale;
+void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said, float scale,
+                        double& speed_kept, ControlPlaces& controls) {
+  const float s = scale;
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("###transport", nullptr, flags)) {
-    const TransportShape shape = transport_shape(size.x);
+    const Shape shape = TransportBar::shape(said, size.x, scale);
     const float button = 80.0f * s;
     const auto noted_button = [&](const char* label, const char* name) {
       const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
-      remember(name);
+      remember_item(controls, name);
       note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
       return pressed;
     };
-    if (noted_button(playback_->playing() ? "Pause" : "Play", "play")) playback_->toggle();
+    if (noted_button(playback.playing() ? "Pause" : "Play", "play")) playback.toggle();
     ImGui::SameLine();
-    if (noted_button("Step", "step")) playback_->step_once();
+    if (noted_button("Step", "step")) playback.step_once();
     ImGui::SameLine();
-    if (noted_button("Reset", "reset")) playback_->reset();
+    if (noted_button("Reset", "reset")) playback.reset();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f * s);
-    float speed = static_cast<float>(playback_->speed());
+    float speed = static_cast<float>(playback.speed());
     if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
                            "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
       // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
       // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
       if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
-      playback_->set_speed(speed);
-      window_.speed = playback_->speed();
+      playback.set_speed(speed);
+      speed_kept = playback.speed();
     }
-    remember("speed");
+    remember_item(controls, "speed");
     {
       char shown[32];
       std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
       note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
     ImGui::SameLine();
-    const Scene& scene = playback_->lesson().scene();
-    const std::string said = transport_words();
-    const float said_width =
+    const Scene& scene = playback.lesson().scene();
+      const float said_width =
         said.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + ImGui::GetStyle().ItemSpacing.x;
     ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - said_width));
-    double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();
-    const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());
+    double t = scrubbing_to ? *scrubbing_to : scene.time();
+    const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
     char format[64];
-    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback_->recorded_until());
+    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback.recorded_until());
     // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
     // while: it waits until the bar is let go.
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) {
-      if (t >= scene.time() && !scrubbing_to_) {
-        playback_->scrub_to(t);
+      if (t >= scene.time() && !scrubbing_to) {
+        playback.scrub_to(t);
       } else {
-        scrubbing_to_ = t;
-        playback_->pause();
+        scrubbing_to = t;
+        playback.pause();
       }
     }
-    if (ImGui::IsItemDeactivated() && scrubbing_to_) {
-      playback_->scrub_to(*scrubbing_to_);
-      scrubbing_to_.reset();
+    if (ImGui::IsItemDeactivated() && scrubbing_to) {
+      playback.scrub_to(*scrubbing_to);
+      scrubbing_to.reset();
     }
-    remember("scrub");
+    remember_item(controls, "scrub");
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format, t);
