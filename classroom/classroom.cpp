@@ -79,10 +79,7 @@ std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std
 
 void Classroom::forget_interaction() {
   parameters_.forget();
-  hand_held_ = false;
-  view_adjust_ = {};
-  held_view_.reset();
-  panning_from_.reset();
+  hand_.forget();
   failed_script_.clear();
   tools_.stopwatch.reset();  // it timed a run of the lesson that closed
 }
@@ -157,7 +154,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height + stopwatch_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
-  hold_view(origin, area, s);
+  hand_.hold_view(*playback_, origin, area, s);
 
   FrameStyle style;
   style.theme = window_.theme;
@@ -170,7 +167,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     style.readings = &shown_readings_;
   }
   if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
-  style.view_adjust = view_adjust_;
+  style.view_adjust = hand_.view_adjust;
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
@@ -181,7 +178,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title();
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
-    style.show_extra_plot = hand_held_;
+    style.show_extra_plot = hand_.held;
   }
   style.hidden = hidden_values();
   style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
@@ -204,7 +201,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   build_frame(playback_->lesson(), playback_->framing(), style, area);
 
   ImGui::PushFont(fonts.body);
-  handle_mouse(origin, area, s);
+  hand_.handle_mouse(*playback_, origin, area, s, status_);
   const FrameLayout layout = FrameLayout::of(area, s, origin);
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
@@ -336,105 +333,7 @@ void Classroom::run_to(double t) {
 }
 
 bool Classroom::idle() const {
-  return !playback_->playing() && !cheapest_.measuring() && !hand_held_ && !panning_from_ && !screenshot_request_;
-}
-
-void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {
-  if (!held_view_) return;
-  if (!hand_held_ || playback_->lesson().scene().grabbed() == nullptr) {
-    view_adjust_.pan = held_view_->pan;
-    held_view_.reset();
-    return;
-  }
-  const std::vector<Camera> cameras =
-      ui::world_cameras(playback_->lesson(), playback_->framing(), size, scale, origin, view_adjust_);
-  if (drag_lane_ >= cameras.size()) return;
-  // The same world point under the same screen point: the mouse's place means what it meant.
-  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].to_world(held_view_->anchor);
-  if (shift.IsValid()) view_adjust_.pan += shift;
-}
-
-const Camera& Classroom::world_camera_at(ImVec2 point) const {
-  for (const Camera& camera : cameras_) {
-    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
-  }
-  return cameras_.front();
-}
-
-void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
-  ImGuiContext& context = *ImGui::GetCurrentContext();
-  const ImGuiIO& io = ImGui::GetIO();
-  lessons::Lesson& lesson = playback_->lesson();
-  Scene& scene = lesson.scene();
-  const FrameLayout layout = FrameLayout::of(size, scale, origin);
-  cameras_ = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
-  // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
-  // own body's height, so the same screen point is another world point in the next lane.
-  const bool dragging = (hand_held_ || panning_from_) && drag_lane_ < cameras_.size();
-  const Camera& camera = dragging ? cameras_[drag_lane_] : world_camera_at(io.MousePos);
-  const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
-  const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
-  const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
-                          world.Contains(io.MousePos) && !inset.Contains(io.MousePos);
-  if (over_world && io.MouseWheel != 0.0f) {
-    // Zoom about the point under the mouse: it stays where it is on the screen.
-    const b2Vec2 under = camera.to_world(io.MousePos);
-    view_adjust_.zoom = std::clamp(view_adjust_.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
-    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
-    const auto lane = static_cast<std::size_t>(&camera - cameras_.data());
-    const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
-    if (shift.IsValid()) view_adjust_.pan += shift;
-  }
-  // A double click on empty space (not on a body, which the first click took hold of).
-  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !hand_held_) {
-    view_adjust_ = {};
-    panning_from_.reset();
-    return;
-  }
-  if (scene.grabbed() == nullptr && over_world && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    drag_lane_ = static_cast<std::size_t>(&camera - cameras_.data());
-    const b2Vec2 point = camera.to_world(io.MousePos);
-    for (const auto& [name, body] : scene.bodies()) {
-      if (body->GetType() != b2_dynamicBody) continue;
-      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-        if (fixture->TestPoint(point)) {
-          playback_->grab(name, body->GetLocalPoint(point), point);
-          hand_held_ = true;
-          held_view_ = HeldView{camera.centre, camera.anchor, view_adjust_.pan};
-          if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
-          break;
-        }
-      }
-      if (hand_held_) break;
-    }
-    // Empty space: the drag pans the view, holding that point of the world under the mouse.
-    if (!hand_held_) panning_from_ = point;
-  }
-  if (panning_from_) {
-    if (!io.MouseDown[ImGuiMouseButton_Left]) {
-      panning_from_.reset();
-    } else {
-      const b2Vec2 shift = *panning_from_ - camera.to_world(io.MousePos);
-      if (shift.IsValid()) view_adjust_.pan += shift;  // a view squeezed to nothing has no scale to pan by
-    }
-  }
-  // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves
-  // nor lets go of it. A rebuild or a step back takes the user's hand away.
-  if (scene.grabbed() == nullptr) hand_held_ = false;
-  if (hand_held_) {
-    if (!io.MouseDown[ImGuiMouseButton_Left]) {
-      playback_->release();
-      hand_held_ = false;
-      // "Holding block: press Space..." is over once the hand lets go.
-      if (status_.rfind("Holding ", 0) == 0) status_.clear();
-      return;
-    }
-    const b2Vec2 target = camera.to_world(io.MousePos);
-    if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
-    // "press Space to play" is done with once it plays.
-    if (playback_->playing() && status_.rfind("Holding ", 0) == 0) status_.clear();
-  }
-  // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
+  return !playback_->playing() && !cheapest_.measuring() && !hand_.drags() && !screenshot_request_;
 }
 
 void Classroom::change_settings(const StepSettings& settings) {

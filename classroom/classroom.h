@@ -30,6 +30,7 @@
 #include "classroom/settings.h"
 #include "classroom/stability_map_tab.h"
 #include "classroom/transport_bar.h"
+#include "classroom/world_hand.h"
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
 #include "classroom_state/setup_file.h"
@@ -143,11 +144,11 @@ class Classroom {
   std::string lock_words() const;
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
   // bodies. The first one, or the one whose strip holds `point`.
-  const Camera& world_camera() const { return cameras_.front(); }
-  const Camera& world_camera_at(ImVec2 point) const;
+  const Camera& world_camera() const { return hand_.cameras.front(); }
+  const Camera& world_camera_at(ImVec2 point) const { return hand_.camera_at(point); }
   // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
   // (or opening another lesson) puts the view back.
-  const ViewAdjust& view_adjust() const { return view_adjust_; }
+  const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
   ClassPredictions& predictions() { return predictions_; }
@@ -170,7 +171,6 @@ class Classroom {
   // they leave for its end (ImGui's popups closed, Enter let go, the run played).
   void handle_keys();
   void after_keys();
-  void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
   void tools_menu();
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
@@ -236,34 +236,18 @@ class Classroom {
 
  private:
   const Fonts* fonts_ = nullptr;
-  std::vector<Camera> cameras_{Camera{}};
-  ViewAdjust view_adjust_;
-  std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
-  std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
-  // While the hand pulls, the view holds still: a view that follows the body would carry the
-  // world point under a still mouse along with it, and the hand would chase the body it pulls.
-  // The world point at the drag lane's anchor when the hand took hold, that anchor on the screen
-  // (a line of status under the transport bar moves it), and the pan before it (given back on
-  // letting go).
-  struct HeldView {
-    b2Vec2 centre;
-    ImVec2 anchor;
-    b2Vec2 pan;
-  };
-  std::optional<HeldView> held_view_;
-  void hold_view(ImVec2 origin, ImVec2 size, float scale);
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
   ClassPredictions predictions_;  // a new lesson asks again
   ParametersPanel parameters_;
   TransportBar transport_;
+  WorldHand hand_;
   std::optional<std::string> screenshot_request_;
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
   bool play_after_typing_ = false;        // ... and the run to play when its value is set
   bool close_menus_ = false;              // a key pressed while a menu was open
-  bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   std::optional<Mystery> mystery_;  // chosen once when a mystery begins

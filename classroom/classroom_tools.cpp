@@ -52,7 +52,7 @@ void Classroom::world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera&
   bool gauge_here = false;
   if (const b2Body* held = scene.grabbed()) {
     const ImVec2 at = camera.to_screen(held->GetWorldCenter());
-    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == drag_lane_;
+    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == hand_.drag_lane;
   }
   if (gauge_here && pass == WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
   const Theme& colours = theme(window_.theme);
