@@ -12,6 +12,7 @@
 #include <sstream>
 #include <utility>
 
+#include "classroom/help_panel.h"
 #include "classroom/text_boxes.h"
 #include "classroom_state/plain_words.h"
 #include "draw/frame.h"
@@ -208,7 +209,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
            layout.world_size.x - 12.0f * s);
   transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
                   transport_words(), s, window_.speed, controls_);
-  help_panel();
+  help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
   if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {

@@ -206,7 +206,6 @@ class Classroom {
   // what they hide (classroom/classroom_predictions.cpp).
   void predictions_style(FrameStyle& style);
   void forget_outdated_predictions();
-  void help_panel();
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);
   void try_failed_script(double wall_seconds);
