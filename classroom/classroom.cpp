@@ -150,8 +150,12 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   const float transport_height = TransportBar::shape(transport_words(), display.x, s).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
-  const float stopwatch_height = stopwatch_strip_height();
-  if (stopwatch_height > 0.0f) stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height));
+  // It reads the lesson's one clock, whatever the lanes.
+  const float stopwatch_height = MeasuringTools::stopwatch_strip_height(window_.tools.stopwatch, s);
+  if (stopwatch_height > 0.0f) {
+    tools_.draw_stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height),
+                                playback_->lesson().scene().time(), fonts);
+  }
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height + stopwatch_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));

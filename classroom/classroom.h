@@ -179,11 +179,6 @@ class Classroom {
                    float newtons_to_pixels, LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
-  // The stopwatch, when shown, on a line of its own over the title and its clock (it reads the
-  // lesson's one clock, whatever the lanes): its height in the current font (0 when not shown),
-  // and the line.
-  float stopwatch_strip_height() const;
-  void stopwatch_strip(ImVec2 corner, ImVec2 size);
   // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
