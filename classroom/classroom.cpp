@@ -12,6 +12,7 @@
 #include <sstream>
 #include <utility>
 
+#include "classroom/help_panel.h"
 #include "classroom/text_boxes.h"
 #include "classroom_state/plain_words.h"
 #include "draw/frame.h"
@@ -78,14 +79,8 @@ std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std
 }
 
 void Classroom::forget_interaction() {
-  control_errors_.clear();
-  pair_open_.clear();
-  parameters_opened_ = false;
-  sliding_.reset();
-  hand_held_ = false;
-  view_adjust_ = {};
-  held_view_.reset();
-  panning_from_.reset();
+  parameters_.forget();
+  hand_.forget();
   failed_script_.clear();
   tools_.stopwatch.reset();  // it timed a run of the lesson that closed
 }
@@ -110,7 +105,19 @@ float Classroom::ui_scale(ImVec2 display) const {
   return std::max(0.5f, fit) * (window_.projector ? 1.35f : 1.0f);
 }
 
-bool Classroom::shown(const std::string& control_name) const { return lock_.empty() || lock_.count(control_name) > 0; }
+bool Classroom::shown(const std::string& control_name) const { return unlocked(lock_, control_name); }
+
+void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
+
+bool Classroom::run_played() const {
+  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
+  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
+}
+
+ParametersOnShow Classroom::parameters_on_show() const {
+  const lessons::Lesson& lesson = playback_->lesson();
+  return {lesson, lock_, mystery_, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+}
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
   const auto found = controls_.find(name);
@@ -140,15 +147,19 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = transport_shape(display.x).height;
+  const float transport_height = TransportBar::shape(transport_words(), display.x, s).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
-  const float stopwatch_height = stopwatch_strip_height();
-  if (stopwatch_height > 0.0f) stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height));
+  // It reads the lesson's one clock, whatever the lanes.
+  const float stopwatch_height = MeasuringTools::stopwatch_strip_height(window_.tools.stopwatch, s);
+  if (stopwatch_height > 0.0f) {
+    tools_.draw_stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height),
+                                playback_->lesson().scene().time(), fonts);
+  }
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height + stopwatch_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
-  hold_view(origin, area, s);
+  hand_.hold_view(*playback_, origin, area, s);
 
   FrameStyle style;
   style.theme = window_.theme;
@@ -161,10 +172,10 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     style.readings = &shown_readings_;
   }
   if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
-  style.view_adjust = view_adjust_;
+  style.view_adjust = hand_.view_adjust;
   style.record = record;
-  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t folded) {
-    parameters_panel(corner, size, folded);
+  style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
+    parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
   };
   style.world_tools = [this](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                              float newtons_to_pixels,
@@ -172,7 +183,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title();
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
-    style.show_extra_plot = hand_held_;
+    style.show_extra_plot = hand_.held;
   }
   style.hidden = hidden_values();
   style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
@@ -186,22 +197,23 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
-  if (!run_played()) parameters_opened_ = false;
+  if (!run_played()) parameters_.opened = false;
   forget_outdated_predictions();
   predictions_style(style);
   ImGui::PushFont(fonts.body);
-  style.parameters_heights = parameters_heights();
+  style.parameters_heights = parameters_.heights(parameters_on_show());
   ImGui::PopFont();
   build_frame(playback_->lesson(), playback_->framing(), style, area);
 
   ImGui::PushFont(fonts.body);
-  handle_mouse(origin, area, s);
+  hand_.handle_mouse(*playback_, origin, area, s, status_);
   const FrameLayout layout = FrameLayout::of(area, s, origin);
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
            layout.world_size.x - 12.0f * s);
-  transport_bar(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height));
-  help_panel();
+  transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
+                  transport_words(), s, window_.speed, controls_);
+  help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
   if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
@@ -211,8 +223,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
-  for (const auto& [name, text] : pending_values_) set_value(name, text);
-  pending_values_.clear();
+  for (const auto& [name, text] : parameters_.asked) set_value(name, text);
+  parameters_.asked.clear();
   after_keys();
 }
 
@@ -326,105 +338,7 @@ void Classroom::run_to(double t) {
 }
 
 bool Classroom::idle() const {
-  return !playback_->playing() && !cheapest_.measuring() && !hand_held_ && !panning_from_ && !screenshot_request_;
-}
-
-void Classroom::hold_view(ImVec2 origin, ImVec2 size, float scale) {
-  if (!held_view_) return;
-  if (!hand_held_ || playback_->lesson().scene().grabbed() == nullptr) {
-    view_adjust_.pan = held_view_->pan;
-    held_view_.reset();
-    return;
-  }
-  const std::vector<Camera> cameras =
-      ui::world_cameras(playback_->lesson(), playback_->framing(), size, scale, origin, view_adjust_);
-  if (drag_lane_ >= cameras.size()) return;
-  // The same world point under the same screen point: the mouse's place means what it meant.
-  const b2Vec2 shift = held_view_->centre - cameras[drag_lane_].to_world(held_view_->anchor);
-  if (shift.IsValid()) view_adjust_.pan += shift;
-}
-
-const Camera& Classroom::world_camera_at(ImVec2 point) const {
-  for (const Camera& camera : cameras_) {
-    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
-  }
-  return cameras_.front();
-}
-
-void Classroom::handle_mouse(ImVec2 origin, ImVec2 size, float scale) {
-  ImGuiContext& context = *ImGui::GetCurrentContext();
-  const ImGuiIO& io = ImGui::GetIO();
-  lessons::Lesson& lesson = playback_->lesson();
-  Scene& scene = lesson.scene();
-  const FrameLayout layout = FrameLayout::of(size, scale, origin);
-  cameras_ = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
-  // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
-  // own body's height, so the same screen point is another world point in the next lane.
-  const bool dragging = (hand_held_ || panning_from_) && drag_lane_ < cameras_.size();
-  const Camera& camera = dragging ? cameras_[drag_lane_] : world_camera_at(io.MousePos);
-  const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
-  const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
-  const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
-                          world.Contains(io.MousePos) && !inset.Contains(io.MousePos);
-  if (over_world && io.MouseWheel != 0.0f) {
-    // Zoom about the point under the mouse: it stays where it is on the screen.
-    const b2Vec2 under = camera.to_world(io.MousePos);
-    view_adjust_.zoom = std::clamp(view_adjust_.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
-    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback_->framing(), size, scale, origin, view_adjust_);
-    const auto lane = static_cast<std::size_t>(&camera - cameras_.data());
-    const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
-    if (shift.IsValid()) view_adjust_.pan += shift;
-  }
-  // A double click on empty space (not on a body, which the first click took hold of).
-  if (over_world && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !hand_held_) {
-    view_adjust_ = {};
-    panning_from_.reset();
-    return;
-  }
-  if (scene.grabbed() == nullptr && over_world && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    drag_lane_ = static_cast<std::size_t>(&camera - cameras_.data());
-    const b2Vec2 point = camera.to_world(io.MousePos);
-    for (const auto& [name, body] : scene.bodies()) {
-      if (body->GetType() != b2_dynamicBody) continue;
-      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-        if (fixture->TestPoint(point)) {
-          playback_->grab(name, body->GetLocalPoint(point), point);
-          hand_held_ = true;
-          held_view_ = HeldView{camera.centre, camera.anchor, view_adjust_.pan};
-          if (!playback_->playing()) status_ = "Holding " + name + ": press Space to play, and the hand pulls it.";
-          break;
-        }
-      }
-      if (hand_held_) break;
-    }
-    // Empty space: the drag pans the view, holding that point of the world under the mouse.
-    if (!hand_held_) panning_from_ = point;
-  }
-  if (panning_from_) {
-    if (!io.MouseDown[ImGuiMouseButton_Left]) {
-      panning_from_.reset();
-    } else {
-      const b2Vec2 shift = *panning_from_ - camera.to_world(io.MousePos);
-      if (shift.IsValid()) view_adjust_.pan += shift;  // a view squeezed to nothing has no scale to pan by
-    }
-  }
-  // A hand the record puts back (replaying a drag) is the record's: the mouse neither moves
-  // nor lets go of it. A rebuild or a step back takes the user's hand away.
-  if (scene.grabbed() == nullptr) hand_held_ = false;
-  if (hand_held_) {
-    if (!io.MouseDown[ImGuiMouseButton_Left]) {
-      playback_->release();
-      hand_held_ = false;
-      // "Holding block: press Space..." is over once the hand lets go.
-      if (status_.rfind("Holding ", 0) == 0) status_.clear();
-      return;
-    }
-    const b2Vec2 target = camera.to_world(io.MousePos);
-    if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback_->move_grab(target);
-    // "press Space to play" is done with once it plays.
-    if (playback_->playing() && status_.rfind("Holding ", 0) == 0) status_.clear();
-  }
-  // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
+  return !playback_->playing() && !cheapest_.measuring() && !hand_.drags() && !screenshot_request_;
 }
 
 void Classroom::change_settings(const StepSettings& settings) {
@@ -439,10 +353,10 @@ void Classroom::set_value(const std::string& name, const std::string& text) {
   try {
     const std::string before = parameter_text(playback_->lesson().parameter(name));
     playback_->set_parameter(name, text);
-    control_errors_.erase(name);
+    parameters_.errors.erase(name);
     keep_mystery(name, before);
   } catch (const InvalidInput& error) {
-    control_errors_[name] = error.what();
+    parameters_.errors[name] = error.what();
   }
 }
 
@@ -462,6 +376,14 @@ std::string Classroom::script_words(const std::string& text) const {
     from = last_slash + 1;
   }
   return words + text.substr(from);
+}
+
+std::string Classroom::transport_words() const {
+  // Notices (the run is over, the file reloaded) and what was saved where, on one line.
+  std::string said = script_words(playback_->notice());
+  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
+  if (playback_->behind()) said = "running slower than asked  " + said;
+  return said;
 }
 
 std::string Classroom::running_script_error() const {

@@ -25,9 +25,12 @@
 #include "classroom/keys.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_tab.h"
+#include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
 #include "classroom/stability_map_tab.h"
+#include "classroom/transport_bar.h"
+#include "classroom/world_hand.h"
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
 #include "classroom_state/setup_file.h"
@@ -141,11 +144,11 @@ class Classroom {
   std::string lock_words() const;
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
   // bodies. The first one, or the one whose strip holds `point`.
-  const Camera& world_camera() const { return cameras_.front(); }
-  const Camera& world_camera_at(ImVec2 point) const;
+  const Camera& world_camera() const { return hand_.cameras.front(); }
+  const Camera& world_camera_at(ImVec2 point) const { return hand_.camera_at(point); }
   // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
   // (or opening another lesson) puts the view back.
-  const ViewAdjust& view_adjust() const { return view_adjust_; }
+  const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
   ClassPredictions& predictions() { return predictions_; }
@@ -155,8 +158,8 @@ class Classroom {
   void predict_again();
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
-    const auto found = control_errors_.find(name);
-    return found == control_errors_.end() ? "" : found->second;
+    const auto found = parameters_.errors.find(name);
+    return found == parameters_.errors.end() ? "" : found->second;
   }
 
   // The force gauge's figures over its plot: "peak 39.4 N,  sliding 29.1 N", or "hand + spring:
@@ -168,7 +171,6 @@ class Classroom {
   // they leave for its end (ImGui's popups closed, Enter let go, the run played).
   void handle_keys();
   void after_keys();
-  void handle_mouse(ImVec2 display_origin, ImVec2 size, float scale);
   void menu_bar();
   void tools_menu();
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
@@ -177,21 +179,8 @@ class Classroom {
                    float newtons_to_pixels, LabelPlacer& labels);
   void gauge_plot(ImVec2 corner, ImVec2 size);
   std::string gauge_plot_title() const;
-  // The stopwatch, when shown, on a line of its own over the title and its clock (it reads the
-  // lesson's one clock, whatever the lanes): its height in the current font (0 when not shown),
-  // and the line.
-  float stopwatch_strip_height() const;
-  void stopwatch_strip(ImVec2 corner, ImVec2 size);
-  void transport_bar(ImVec2 corner, ImVec2 size);
-  // The transport bar's words, and its height: one row, or two when the words do not fit
-  // beside the time bar.
+  // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
-  struct TransportShape {
-    float controls = 0.0f, bar = 0.0f, height = 0.0f;
-    bool words_below = false;
-  };
-  TransportShape transport_shape(float width) const;
-  void parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step);
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
   // would take its pair away (a material chosen) is put back, with why beside its control.
   void keep_mystery(const std::string& name, const std::string& before);
@@ -203,40 +192,15 @@ class Classroom {
                                            std::optional<Mystery>& mystery) const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
-  // The parameters panel's rows: each parameter shown, and whether a friction pair's heading
-  // (with its presets) comes before it. The panel draws them; its height is counted from them.
-  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
-  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
-  // folds one more pair the teacher has not opened, the last first, into its heading with its
-  // values.
-  struct ParameterRow {
-    const lessons::Parameter* parameter;
-    const lessons::Parameter* partner;  // the second coefficient on a row of two
-    bool pair_heading, folded, two_a_row;
-  };
-  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
-  std::vector<std::string> foldable_pairs(bool opened_too) const;
-  std::vector<ParameterRow> parameter_rows(std::size_t step) const;
-  std::vector<float> parameters_heights() const;  // at each step
-  // Once the class's predictions can be set beside a whole run (it has been played to its end),
-  // nobody slides values while comparing: the whole Parameters panel may fold into a heading,
-  // the last step of giving way, which a click opens again for the rest of this run.
-  bool parameters_may_fold_away() const;
   bool run_played() const;  // to the run's end, in the record
-  std::size_t parameters_folded_away_step() const;  // the step that folds it, when it may
-  void folded_parameters_panel(ImVec2 corner, ImVec2 size);
+  // The lesson as the Parameters panel shows it now.
+  ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
-  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
-  // value (none when value_x is reset_x) and its reset.
-  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
-                     float value_x, float reset_x);
-  void preset_row(const lessons::Parameter& mu_s);
   void messages(ImVec2 corner, float width);
   // The predictions' part of the frame: their contents and height in the theory panel, and
   // what they hide (classroom/classroom_predictions.cpp).
   void predictions_style(FrameStyle& style);
   void forget_outdated_predictions();
-  void help_panel();
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);
   void try_failed_script(double wall_seconds);
@@ -266,38 +230,18 @@ class Classroom {
 
  private:
   const Fonts* fonts_ = nullptr;
-  std::vector<Camera> cameras_{Camera{}};
-  ViewAdjust view_adjust_;
-  std::optional<b2Vec2> panning_from_;  // the world point a drag on empty space holds under the mouse
-  std::size_t drag_lane_ = 0;           // the lane (camera) the hand's or the pan's drag began in
-  // While the hand pulls, the view holds still: a view that follows the body would carry the
-  // world point under a still mouse along with it, and the hand would chase the body it pulls.
-  // The world point at the drag lane's anchor when the hand took hold, that anchor on the screen
-  // (a line of status under the transport bar moves it), and the pan before it (given back on
-  // letting go).
-  struct HeldView {
-    b2Vec2 centre;
-    ImVec2 anchor;
-    b2Vec2 pan;
-  };
-  std::optional<HeldView> held_view_;
-  void hold_view(ImVec2 origin, ImVec2 size, float scale);
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
-  std::map<std::string, std::string> control_errors_;  // a refused value, beside its control
   ClassPredictions predictions_;  // a new lesson asks again
-  std::map<std::string, bool> pair_open_;  // friction pairs the teacher opened (true) or folded (false)
-  bool parameters_opened_ = false;  // the teacher opened the Parameters panel folded for this run's comparison
-  std::optional<std::pair<std::string, double>> sliding_;  // a slider that rebuilds on release
-  std::vector<std::pair<std::string, std::string>> pending_values_;  // asked for during this frame
+  ParametersPanel parameters_;
+  TransportBar transport_;
+  WorldHand hand_;
   std::optional<std::string> screenshot_request_;
   std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
   std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
   bool play_after_typing_ = false;        // ... and the run to play when its value is set
   bool close_menus_ = false;              // a key pressed while a menu was open
-  bool hand_held_ = false;  // the user's mouse holds a body (not a drag the record replays)
-  std::optional<double> scrubbing_to_;  // the time bar dragged back: replayed when let go
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   std::optional<Mystery> mystery_;  // chosen once when a mystery begins

@@ -52,41 +52,12 @@ void Classroom::world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera&
   bool gauge_here = false;
   if (const b2Body* held = scene.grabbed()) {
     const ImVec2 at = camera.to_screen(held->GetWorldCenter());
-    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == drag_lane_;
+    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == hand_.drag_lane;
   }
   if (gauge_here && pass == WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
   const Theme& colours = theme(window_.theme);
   tools_.in_world(pass, draw, lesson, camera, lane, newtons_to_pixels, colours, *fonts_, labels);
   if (gauge_here && pass == WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
-}
-
-float Classroom::stopwatch_strip_height() const {
-  if (!window_.tools.stopwatch) return 0.0f;
-  // One line of the body's text, as large as the panels' (a class reads it from the back), with
-  // a little room above and below.
-  return ImGui::GetTextLineHeight() + 8.0f * fonts_->scale;
-}
-
-void Classroom::stopwatch_strip(ImVec2 corner, ImVec2 size) {
-  const double now = playback_->lesson().scene().time();
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 4.0f * fonts_->scale));
-  if (begin_panel("stopwatch", "", corner, size)) {
-    // Right-aligned, over the lesson's clock that it reads; the oldest laps give way first on a
-    // narrow screen, then the small font.
-    const float room = ImGui::GetContentRegionAvail().x;
-    std::string line;
-    for (std::size_t laps = 4; laps-- > 0;) {
-      line = tools_.stopwatch_line(now, laps);
-      if (ImGui::CalcTextSize(line.c_str()).x <= room) break;
-    }
-    const bool small = ImGui::CalcTextSize(line.c_str()).x > room;
-    if (small) ImGui::PushFont(fonts_->small);
-    ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(line.c_str()).x);
-    shown_text(line.c_str());
-    if (small) ImGui::PopFont();
-  }
-  end_panel();
-  ImGui::PopStyleVar();
 }
 
 std::string Classroom::gauge_plot_title() const {

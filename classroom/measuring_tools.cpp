@@ -6,6 +6,8 @@
 #include <limits>
 
 #include "draw/overlays.h"
+#include "draw/panels.h"
+#include "draw/text_record.h"
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
@@ -533,6 +535,34 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
       beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));
     }
   }
+}
+
+float MeasuringTools::stopwatch_strip_height(bool shown, float scale) {
+  if (!shown) return 0.0f;
+  // One line of the body's text, as large as the panels' (a class reads it from the back), with
+  // a little room above and below.
+  return ImGui::GetTextLineHeight() + 8.0f * scale;
+}
+
+void MeasuringTools::draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const Fonts& fonts) const {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 4.0f * fonts.scale));
+  if (begin_panel("stopwatch", "", corner, size)) {
+    // Right-aligned, over the lesson's clock that it reads; the oldest laps give way first on a
+    // narrow screen, then the small font.
+    const float room = ImGui::GetContentRegionAvail().x;
+    std::string line;
+    for (std::size_t laps = 4; laps-- > 0;) {
+      line = stopwatch_line(now, laps);
+      if (ImGui::CalcTextSize(line.c_str()).x <= room) break;
+    }
+    const bool small = ImGui::CalcTextSize(line.c_str()).x > room;
+    if (small) ImGui::PushFont(fonts.small);
+    ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(line.c_str()).x);
+    shown_text(line.c_str());
+    if (small) ImGui::PopFont();
+  }
+  end_panel();
+  ImGui::PopStyleVar();
 }
 
 }  // namespace frictionlab::ui

@@ -118,7 +118,7 @@ void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t f
 // The tools in one lane of the world view. avoid() tells the placer what they draw before any
 // label is placed; draw() draws them and places their labels. The body's tools go in the lane
 // whose strip holds it. The stopwatch is not in the world: it reads the lesson's one clock,
-// whatever the lanes, and the window shows it over the title beside that clock (stopwatch_line).
+// whatever the lanes, and is drawn over the title beside that clock (draw_stopwatch_strip).
 class MeasuringTools {
  public:
   ToolSettings on;  // the window's, copied in each frame
@@ -161,6 +161,11 @@ class MeasuringTools {
   std::string stopwatch_line(double now, std::size_t laps = 3) const {
     return on.stopwatch ? stopwatch.line(now, playing_, run_ended_, laps) : std::string();
   }
+  // That line on a strip of its own over the title and its clock, right-aligned: the strip's
+  // height in the current font when `shown` (the window's setting, which the Tools menu may have
+  // changed since `on` was copied; 0 when not shown), and the strip.
+  static float stopwatch_strip_height(bool shown, float scale);
+  void draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const Fonts& fonts) const;
 
  private:
   std::optional<b2Vec2> origin_;

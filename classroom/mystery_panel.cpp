@@ -19,8 +19,8 @@ std::string Classroom::make_mystery(const MysteryChoice& choice) {
     playback_->reset();
     mystery_ = std::move(next);
     mystery_tab_.begin();
-    control_errors_.erase(mystery_->mu_s_name());
-    control_errors_.erase(mystery_->mu_k_name());
+    parameters_.errors.erase(mystery_->mu_s_name());
+    parameters_.errors.erase(mystery_->mu_k_name());
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
@@ -36,7 +36,7 @@ void Classroom::keep_mystery(const std::string& name, const std::string& before)
     }
   } catch (const InvalidInput&) {
     playback_->set_parameter(name, before);
-    control_errors_[name] = "The mystery is " + mystery_->choice().pair + ": this " + name +
+    parameters_.errors[name] = "The mystery is " + mystery_->choice().pair + ": this " + name +
                             " would take that pair away. Open the lesson again to end the mystery first.";
     return;
   }

@@ -1,14 +1,15 @@
-// The classroom's controls: the parameters as sliders with a box for typed values and a reset,
-// material presets for a friction pair, and the transport bar along the bottom.
+// The Parameters panel (classroom/parameters_panel.h): the parameters as sliders with a box for
+// typed values and a reset, material presets for a friction pair, giving way to a short column.
 #define IMGUI_DEFINE_MATH_OPERATORS
+#include "classroom/parameters_panel.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 
-#include "classroom/classroom.h"
 #include "classroom/text_boxes.h"
-#include "draw/panels.h"
+#include "classroom_state/playback.h"
 #include "draw/text_record.h"
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
@@ -85,21 +86,21 @@ struct ControlColumns {
   }
 };
 
-std::vector<std::string> Classroom::foldable_pairs(bool opened_too) const {
+std::vector<std::string> ParametersPanel::foldable_pairs(const ParametersOnShow& on_show, bool opened_too) const {
   std::vector<std::string> pairs;
-  for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
+  for (const lessons::Parameter& parameter : on_show.lesson.parameters()) {
     const std::string pair = pair_of(parameter);
-    if (pair.empty() || !shown(parameter.name)) continue;
-    const auto choice = pair_open_.find(pair);
-    if (choice != pair_open_.end() && !(opened_too && choice->second)) continue;
+    if (pair.empty() || !unlocked(on_show.lock, parameter.name)) continue;
+    const auto choice = pair_open.find(pair);
+    if (choice != pair_open.end() && !(opened_too && choice->second)) continue;
     if (std::find(pairs.begin(), pairs.end(), pair) == pairs.end()) pairs.push_back(pair);
   }
   return pairs;
 }
 
-std::vector<Classroom::ParameterRow> Classroom::parameter_rows(std::size_t step) const {
+std::vector<ParametersPanel::Row> ParametersPanel::rows_at(const ParametersOnShow& on_show, std::size_t step) const {
   // Pairs the teacher opened still go two a row; only those left to the layout fold.
-  const std::vector<std::string> compact = foldable_pairs(true), foldable = foldable_pairs(false);
+  const std::vector<std::string> compact = foldable_pairs(on_show, true), foldable = foldable_pairs(on_show, false);
   const std::size_t two_a_row = std::min(step, compact.size());
   const std::size_t folded = step > compact.size() ? std::min(step - compact.size(), foldable.size()) : 0;
   // Whether a pair is among the last `count` of `pairs`.
@@ -107,18 +108,18 @@ std::vector<Classroom::ParameterRow> Classroom::parameter_rows(std::size_t step)
     const auto at = std::find(pairs.begin(), pairs.end(), pair);
     return at != pairs.end() && static_cast<std::size_t>(at - pairs.begin()) >= pairs.size() - count;
   };
-  std::vector<ParameterRow> rows;
+  std::vector<Row> rows;
   std::string last_pair;
-  for (const lessons::Parameter& parameter : playback_->lesson().parameters()) {
-    if (!shown(parameter.name)) continue;
+  for (const lessons::Parameter& parameter : on_show.lesson.parameters()) {
+    if (!unlocked(on_show.lock, parameter.name)) continue;
     const std::string pair = pair_of(parameter);
     const bool heading = !pair.empty() && pair != last_pair;
     if (heading) last_pair = pair;
-    ParameterRow row{&parameter, nullptr, heading, false, false};
+    Row row{&parameter, nullptr, heading, false, false};
     if (!pair.empty()) {
       // The teacher's own choice first; then the layout's step.
-      const auto choice = pair_open_.find(pair);
-      row.folded = choice != pair_open_.end() ? !choice->second : among_last(foldable, pair, folded);
+      const auto choice = pair_open.find(pair);
+      row.folded = choice != pair_open.end() ? !choice->second : among_last(foldable, pair, folded);
       row.two_a_row = !row.folded && among_last(compact, pair, two_a_row);
     }
     // A folded pair is its heading alone, its values on that line.
@@ -134,40 +135,39 @@ std::vector<Classroom::ParameterRow> Classroom::parameter_rows(std::size_t step)
   return rows;
 }
 
-std::vector<float> Classroom::parameters_heights() const {
+std::vector<float> ParametersPanel::heights(const ParametersOnShow& on_show) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   std::vector<float> heights;
-  for (std::size_t step = 0; step <= foldable_pairs(true).size() + foldable_pairs(false).size(); ++step) {
-    int rows = lock_.empty() ? 0 : 1;
-    for (const ParameterRow& row : parameter_rows(step)) {
+  for (std::size_t step = 0; step <= foldable_pairs(on_show, true).size() + foldable_pairs(on_show, false).size(); ++step) {
+    int rows = on_show.lock.empty() ? 0 : 1;
+    for (const Row& row : rows_at(on_show, step)) {
       rows += 1 + (row.pair_heading && !row.folded ? 1 : 0);
       for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
-        if (shown != nullptr && !row.folded && control_errors_.count(shown->name) > 0) rows += 2;
+        if (shown != nullptr && !row.folded && errors.count(shown->name) > 0) rows += 2;
       }
     }
     heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
                       static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing());
   }
   // Folded away: its heading alone, a line with the arrow that opens it.
-  if (parameters_may_fold_away()) heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y);
+  if (may_fold_away(on_show)) heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y);
   return heights;
 }
 
-bool Classroom::run_played() const {
-  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
-  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
+void ParametersPanel::forget() {
+  errors.clear();
+  pair_open.clear();
+  opened = false;
+  sliding.reset();
 }
 
-bool Classroom::parameters_may_fold_away() const {
-  const lessons::Lesson& lesson = playback_->lesson();
-  return window_.predictions && !lesson.predictions().empty() && !parameters_opened_ && run_played();
+bool ParametersPanel::may_fold_away(const ParametersOnShow& on_show) const { return on_show.comparing && !opened; }
+
+std::size_t ParametersPanel::folded_away_step(const ParametersOnShow& on_show) const {
+  return foldable_pairs(on_show, true).size() + foldable_pairs(on_show, false).size() + 1;
 }
 
-std::size_t Classroom::parameters_folded_away_step() const {
-  return foldable_pairs(true).size() + foldable_pairs(false).size() + 1;
-}
-
-void Classroom::folded_parameters_panel(ImVec2 corner, ImVec2 size) {
+void ParametersPanel::draw_folded_away(ImVec2 corner, ImVec2 size, const ParametersOnShow& on_show, ControlPlaces& controls) {
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -175,13 +175,13 @@ void Classroom::folded_parameters_panel(ImVec2 corner, ImVec2 size) {
                                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
   if (ImGui::Begin("###parameters", nullptr, flags)) {
     // As a friction pair folds: an arrow before the heading, the heading, and why it is folded.
-    if (ImGui::ArrowButton("##open parameters", ImGuiDir_Right)) parameters_opened_ = true;
-    remember("parameters open");
+    if (ImGui::ArrowButton("##open parameters", ImGuiDir_Right)) opened = true;
+    remember_item(controls, "parameters open");
     ImGui::SameLine();
     ImGui::AlignTextToFramePadding();
     shown_text("Parameters");
     // Why, when the line holds it: the arrow and the heading say enough alone.
-    const char* why = lock_.empty() ? "folded while comparing" : "chosen by the teacher, folded";
+    const char* why = on_show.lock.empty() ? "folded while comparing" : "chosen by the teacher, folded";
     ImGui::SameLine();
     if (ImGui::CalcTextSize(why).x <= ImGui::GetContentRegionAvail().x) {
       ImGui::TextDisabled("%s", why);
@@ -191,23 +191,22 @@ void Classroom::folded_parameters_panel(ImVec2 corner, ImVec2 size) {
   ImGui::End();
 }
 
-void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
-
-void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
-  if (parameters_may_fold_away() && step >= parameters_folded_away_step()) {
-    folded_parameters_panel(corner, size);
+void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
+                           const Theme& colours, ControlPlaces& controls) {
+  if (may_fold_away(on_show) && step >= folded_away_step(on_show)) {
+    draw_folded_away(corner, size, on_show, controls);
     return;
   }
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
-  const std::string title = lock_.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
+  const std::string title = on_show.lock.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
     note_title(title.substr(0, title.find("###")).c_str());
-    const std::vector<ParameterRow> rows = parameter_rows(step);
+    const std::vector<Row> shown_rows = rows_at(on_show, step);
     float widest_name = 0.0f, widest_letter = 0.0f;
-    for (const ParameterRow& row : rows) {
+    for (const Row& row : shown_rows) {
       if (row.folded) continue;
       for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
         if (shown == nullptr) continue;
@@ -217,22 +216,22 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
     }
     const float width = ImGui::GetContentRegionAvail().x;
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    const ControlColumns columns = ControlColumns::of(width, fonts_->scale, widest_name);
-    for (const ParameterRow& row : rows) {
+    const ControlColumns columns = ControlColumns::of(width, scale, widest_name);
+    for (const Row& row : shown_rows) {
       const lessons::Parameter& parameter = *row.parameter;
       if (row.pair_heading) {
         // The pair's heading, with an arrow that folds its sliders into the line or opens them.
         const std::string pair = pair_of(parameter);
         ImGui::PushID(pair.c_str());
-        if (ImGui::ArrowButton("##fold", row.folded ? ImGuiDir_Right : ImGuiDir_Down)) pair_open_[pair] = row.folded;
-        remember(pair + " fold");
+        if (ImGui::ArrowButton("##fold", row.folded ? ImGuiDir_Right : ImGuiDir_Down)) pair_open[pair] = row.folded;
+        remember_item(controls, pair + " fold");
         ImGui::PopID();
         ImGui::SameLine();
         ImGui::AlignTextToFramePadding();
         ImGui::TextDisabled("%s", pair.c_str());
         note_text(pair.c_str());
         if (row.folded) {
-          const std::string values = pair_values(playback_->lesson(), pair, hidden_values());
+          const std::string values = pair_values(on_show.lesson, pair, on_show.hidden);
           ImGui::SameLine();
           ImGui::TextUnformatted(values.c_str());
           note_text(values.c_str());
@@ -241,7 +240,7 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
         if (parameter.coefficient == "mu_s") {
           ImGui::SameLine();
           ImGui::SetNextItemWidth(-FLT_MIN);
-          preset_row(parameter);
+          preset_row(parameter, on_show, controls);
         }
       }
       if (row.two_a_row) {
@@ -256,25 +255,26 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
           const float reset = start + half - ImGui::GetFrameHeight();
           ImGui::PushID(shown->name.c_str());
           parameter_row(*shown, coefficient_letter(*shown), side == 0 ? 0.0f : start, start + widest_letter + spacing,
-                        reset, reset);
+                        reset, reset, on_show, controls);
           ImGui::PopID();
         }
       } else {
         ImGui::PushID(parameter.name.c_str());
-        parameter_row(parameter, control_label(parameter), 0.0f, columns.slider, columns.value, columns.reset);
+        parameter_row(parameter, control_label(parameter), 0.0f, columns.slider, columns.value, columns.reset, on_show,
+                      controls);
         ImGui::PopID();
       }
       for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
         if (shown == nullptr) continue;
-        if (const auto error = control_errors_.find(shown->name); error != control_errors_.end()) {
+        if (const auto error = errors.find(shown->name); error != errors.end()) {
           ImGui::PushTextWrapPos(0.0f);
-          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme(window_.theme).bad), "%s", error->second.c_str());
+          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", error->second.c_str());
           ImGui::PopTextWrapPos();
           note_text(error->second.c_str());
         }
       }
     }
-    if (!lock_.empty()) {
+    if (!on_show.lock.empty()) {
       const char* locked = "Only the controls the teacher chose are shown.";
       ImGui::TextDisabled("%s", locked);
       note_text(locked);
@@ -283,11 +283,11 @@ void Classroom::parameters_panel(ImVec2 corner, ImVec2 size, std::size_t step) {
   ImGui::End();
 }
 
-void Classroom::preset_row(const lessons::Parameter& mu_s) {
+void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls) {
   const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
   const std::string mu_k = prefix + "mu_k";
   // A mystery's pair takes no presets: choosing one would end the mystery without a reveal.
-  if (!shown(mu_k) || (mystery_ && mystery_->hides(mu_s.name))) {
+  if (!unlocked(on_show.lock, mu_k) || (on_show.mystery && on_show.mystery->hides(mu_s.name))) {
     ImGui::NewLine();
     return;
   }
@@ -304,21 +304,22 @@ void Classroom::preset_row(const lessons::Parameter& mu_s) {
     for (const Preset& preset : presets()) {
       if (ImGui::Selectable(preset.label.c_str())) {
         // mu_k first when it falls, so the pair never passes through mu_k > mu_s on the way.
-        const bool falling = preset.values.mu_k < playback_->lesson().parameter(mu_k).value;
+        const bool falling = preset.values.mu_k < on_show.lesson.parameter(mu_k).value;
         const std::pair<std::string, std::string> s_value{mu_s.name, exact_text(preset.values.mu_s)};
         const std::pair<std::string, std::string> k_value{mu_k, exact_text(preset.values.mu_k)};
-        pending_values_.push_back(falling ? k_value : s_value);
-        pending_values_.push_back(falling ? s_value : k_value);
+        asked.push_back(falling ? k_value : s_value);
+        asked.push_back(falling ? s_value : k_value);
       }
     }
     ImGui::EndCombo();
   }
-  remember(mu_s.name + " presets");
+  remember_item(controls, mu_s.name + " presets");
   ImGui::PopID();
 }
 
-void Classroom::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
-                            float value_x, float reset_x) {
+void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x,
+                                    float slider_x, float value_x, float reset_x, const ParametersOnShow& on_show,
+                                    ControlPlaces& controls) {
   const std::string& name = parameter.name;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   // The second control of a row goes on the same line, from its own start.
@@ -336,7 +337,7 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
                       parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
                       exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
   }
-  if (mystery_ && mystery_->hides(name)) {
+  if (on_show.mystery && on_show.mystery->hides(name)) {
     // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
     const char* hidden = value_x == reset_x ? "?" : hidden_value_text;
     ImGui::SameLine(slider_x);
@@ -354,16 +355,16 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     note_combo(chosen.c_str());
     if (open) {
       for (const std::string& choice : parameter.choices) {
-        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) pending_values_.push_back({name, choice});
-        remember(name + " choice " + choice);
+        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) asked.push_back({name, choice});
+        remember_item(controls, name + " choice " + choice);
       }
       ImGui::EndCombo();
     }
-    remember(name + " slider");
+    remember_item(controls, name + " slider");
   } else {
     ImGui::SetNextItemWidth(value_x - spacing - slider_x);
-    const bool sliding_this = sliding_ && sliding_->first == name;
-    double value = sliding_this ? sliding_->second : parameter.value;
+    const bool slidingthis = sliding && sliding->first == name;
+    double value = slidingthis ? sliding->second : parameter.value;
     // A unit is text, not format: a script's "%" is written "%%".
     std::string unit;
     for (const char c : parameter.unit) unit += c == '%' ? std::string("%%") : std::string(1, c);
@@ -372,7 +373,7 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
     const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
                                            format.c_str(), wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-    remember(name + " slider");
+    remember_item(controls, name + " slider");
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format.c_str(), value);
@@ -381,14 +382,14 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     if (moved) {
       // A value the scene is built from restarts the lesson: wait until the slider is let go.
       if (parameter.structural) {
-        sliding_ = {name, value};
+        sliding = {name, value};
       } else {
-        pending_values_.push_back({name, exact_text(value)});
+        asked.push_back({name, exact_text(value)});
       }
     }
-    if (ImGui::IsItemDeactivated() && sliding_ && sliding_->first == name) {
-      pending_values_.push_back({name, exact_text(sliding_->second)});
-      sliding_.reset();
+    if (ImGui::IsItemDeactivated() && sliding && sliding->first == name) {
+      asked.push_back({name, exact_text(sliding->second)});
+      sliding.reset();
     }
     if (value_x < reset_x) {
     ImGui::SameLine(value_x);
@@ -400,10 +401,10 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
     if (ImGui::InputText("##value", typed, sizeof typed,
                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
                              ImGuiInputTextFlags_CharsNoBlank)) {
-      pending_values_.push_back({name, typed});
+      asked.push_back({name, typed});
     }
     takes_a_number();
-    remember(name + " value");
+    remember_item(controls, name + " value");
     {
       const ImVec2 padding = ImGui::GetStyle().FramePadding;
       const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
@@ -418,116 +419,13 @@ void Classroom::parameter_row(const lessons::Parameter& parameter, const std::st
   if (ImGui::Button("\u21ba", ImVec2(ImGui::GetFrameHeight(), 0.0f))) {
     const std::string back = parameter.is_choice() ? parameter.choices[static_cast<std::size_t>(parameter.default_value)]
                                                    : exact_text(parameter.default_value);
-    pending_values_.push_back({name, back});
+    asked.push_back({name, back});
   }
   ImGui::EndDisabled();
-  remember(name + " reset");
+  remember_item(controls, name + " reset");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("Back to the script's value, %s", exact_text(parameter.default_value).c_str());
   }
-}
-
-std::string Classroom::transport_words() const {
-  // Notices (the run is over, the file reloaded) and what was saved where, on one line.
-  std::string said = script_words(playback_->notice());
-  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
-  if (playback_->behind()) said = "running slower than asked  " + said;
-  return said;
-}
-
-Classroom::TransportShape Classroom::transport_shape(float width) const {
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float s = fonts_->scale;
-  TransportShape shape;
-  // The controls before the time bar, and the time bar's own words at their longest.
-  shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
-  shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
-  const std::string said = transport_words();
-  const float inside = width - 2.0f * style.WindowPadding.x;
-  const float said_width = said.empty() ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + style.ItemSpacing.x;
-  // The words beside the bar when they fit there, else on lines of their own under it.
-  shape.words_below = shape.controls + shape.bar + said_width > inside;
-  const float words = shape.words_below ? ImGui::CalcTextSize(said.c_str(), nullptr, false, inside).y + style.ItemSpacing.y : 0.0f;
-  shape.height = ImGui::GetFrameHeight() + words + 2.0f * style.WindowPadding.y + 2.0f * s;
-  return shape;
-}
-
-void Classroom::transport_bar(ImVec2 corner, ImVec2 size) {
-  const float s = fonts_->scale;
-  ImGui::SetNextWindowPos(corner);
-  ImGui::SetNextWindowSize(size);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
-  if (ImGui::Begin("###transport", nullptr, flags)) {
-    const TransportShape shape = transport_shape(size.x);
-    const float button = 80.0f * s;
-    const auto noted_button = [&](const char* label, const char* name) {
-      const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
-      remember(name);
-      note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-      return pressed;
-    };
-    if (noted_button(playback_->playing() ? "Pause" : "Play", "play")) playback_->toggle();
-    ImGui::SameLine();
-    if (noted_button("Step", "step")) playback_->step_once();
-    ImGui::SameLine();
-    if (noted_button("Reset", "reset")) playback_->reset();
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(150.0f * s);
-    float speed = static_cast<float>(playback_->speed());
-    if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
-                           "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
-      // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
-      // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
-      if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
-      playback_->set_speed(speed);
-      window_.speed = playback_->speed();
-    }
-    remember("speed");
-    {
-      char shown[32];
-      std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
-      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-    }
-    ImGui::SameLine();
-    const Scene& scene = playback_->lesson().scene();
-    const std::string said = transport_words();
-    const float said_width =
-        said.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + ImGui::GetStyle().ItemSpacing.x;
-    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - said_width));
-    double t = scrubbing_to_ ? *scrubbing_to_ : scene.time();
-    const double start = 0.0, end = std::max(playback_->recorded_until(), scene.frame_step());
-    char format[64];
-    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback_->recorded_until());
-    // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
-    // while: it waits until the bar is let go.
-    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) {
-      if (t >= scene.time() && !scrubbing_to_) {
-        playback_->scrub_to(t);
-      } else {
-        scrubbing_to_ = t;
-        playback_->pause();
-      }
-    }
-    if (ImGui::IsItemDeactivated() && scrubbing_to_) {
-      playback_->scrub_to(*scrubbing_to_);
-      scrubbing_to_.reset();
-    }
-    remember("scrub");
-    {
-      char shown[96];
-      std::snprintf(shown, sizeof shown, format, t);
-      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-    }
-    if (!said.empty()) {
-      if (!shape.words_below) ImGui::SameLine();
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("%s", said.c_str());
-      ImGui::PopTextWrapPos();
-      note_text(said.c_str());
-    }
-  }
-  ImGui::End();
 }
 
 }  // namespace frictionlab::ui

@@ -1,0 +1,99 @@
+// The help panel (classroom/help_panel.h).
+#include "classroom/help_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "classroom/settings.h"
+
+namespace frictionlab::ui {
+
+void help_panel(bool& shown, float scale, bool browser, bool script_paths, const std::string& output_folder) {
+  if (!shown) return;
+  const float s = scale;
+  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                          ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Help (F1 shows and hides it)", &shown)) {
+    // Kept inside the window when the window shrinks under it (a page's editor opening beside
+    // the world, a smaller browser window): ImGui keeps only a corner of it in sight.
+    const ImVec2 display = ImGui::GetIO().DisplaySize, at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    const ImVec2 inside(std::clamp(at.x, 0.0f, std::max(0.0f, display.x - size.x)),
+                        std::clamp(at.y, 0.0f, std::max(0.0f, display.y - size.y)));
+    if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(inside);
+    static const char* const keys[][2] = {
+        {"Space", "play / pause; typing a number, ends the typing and plays"},
+        {"Esc", "closes a menu or a dialog (with a menu open, keys act too)"},
+        {". (period)", "one step of the lesson (1/hz s), paused"},
+        {", (comma)", "one step back (replays the record)"},
+        {"R", "reset to t = 0, keeping the values set"},
+        {"F5", "reload the script from its file (saving it does too)"},
+        {"Ctrl+S", "screenshot of the window (PNG)"},
+        {"Ctrl+E", "export the history (CSV)"},
+        {"P", "projector mode: larger text, thicker lines"},
+        {"D", "dark or light theme"},
+        {"T", "reveal the theory after the class's predictions"},
+        {"F11", "full screen"},
+        {"W", "start / stop the stopwatch (lesson time)"},
+        {"L", "the stopwatch's lap"},
+        {"\u2190 \u2192", "the plots' pages, when they are shown a page at a time"},
+        {"F1", "this help"},
+    };
+    // The keys' column as wide as its widest key, the words wrapped in what is left: at
+    // projector size the panel is narrower than its longest line (the trial saw "…and pla").
+    if (ImGui::BeginTable("keys", 2)) {
+      ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
+      for (const auto& row : keys) {
+        // On the page F5 runs the script as last applied again: the editor's Apply is how a
+        // change arrives, and no file is saved anywhere the student sees.
+        const char* what = browser && std::string(row[0]) == "F5"
+                               ? "run the lesson's script again from t = 0 (the editor's Apply runs your changes)"
+                               : row[1];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[0]);
+        ImGui::TableNextColumn();
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(what);
+        ImGui::PopTextWrapPos();
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(
+        "Mouse: drag a body to pull it with your hand through a force gauge (a spring scale): its reading in "
+        "newtons is drawn beside it and plotted under the world. Pull slowly along a level floor: the peak is "
+        "static friction (\u03bcs\u00b7m\u00b7g), the plateau while it slides kinetic friction (\u03bck\u00b7m\u00b7g); the "
+        "theory table marks the run hand-pulled. Let go while it moves to give it a push. The wheel zooms, a "
+        "drag on empty space pans, a double click there gives the lesson's view back. Drag a slider, or "
+        "type an exact value in the box beside it and press Enter (Ctrl+click a slider that has no box); the "
+        "round arrow resets it to the script's value. When the column is short a friction pair's sliders go two "
+        "a row or fold into their heading: the arrow before the pair's name opens or folds them. "
+        "Drag the time bar to go back through the run: it is replayed exactly, and playing on from there repeats it "
+        "until you change something. The Mystery menu draws a pair's \u03bcs and \u03bck from a seed and hides them "
+        "until revealed: the class measures them and types its answers in the Mystery tab.");
+    ImGui::TextUnformatted(
+        "Tools menu: a stopwatch on the lesson's clock (shown before the run, it starts with Play and stops when the "
+        "run pauses or ends; W starts and stops it, L takes a lap; slow motion does not fool it, and R or the time "
+        "bar takes it back with the run), distance marks along the floor or the slope from where the main body stood at t = 0, "
+        "the main body's speed, and its weight split along and across a slope (m\u00b7g\u00b7sin \u03b8, "
+        "m\u00b7g\u00b7cos \u03b8). They stay on for the next class.");
+    if (script_paths) {
+      ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder).lexically_normal().string() +
+                              ". Settings are kept in " + settings_folder() + ".")
+                                 .c_str());
+    } else {
+      // The web page: its files are the browser's, not folders anyone opens.
+      ImGui::TextUnformatted("Screenshots and exports arrive as downloads. Your lessons and these settings are kept in this "
+                             "browser.");
+    }
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,87 @@
+// The Parameters panel: each parameter the class may change as a slider with a box for a typed
+// value and a reset, a friction pair's rows under a heading with its material presets. When the
+// column is short it gives way in steps (pairs two a row, then folded into their headings, then
+// the whole panel folded while the class compares its predictions with a run).
+//
+// It keeps its own state (which pairs the teacher opened or folded, the slider held, the values
+// asked for and why one was refused) and draws itself, as each of Dear ImGui's demo windows
+// does: the classroom holds one, hands the frame its heights and draw(), and sets the values it
+// asked for once the frame is drawn (a rebuild replaces what the panel was reading).
+#pragma once
+
+#include <imgui.h>
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "classroom/control_places.h"
+#include "classroom_state/mystery.h"
+#include "draw/panels.h"
+#include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::ui {
+
+// Whether a control is shown under the teacher's lock (none: every control).
+inline bool unlocked(const std::set<std::string>& lock, const std::string& control_name) {
+  return lock.empty() || lock.count(control_name) > 0;
+}
+
+// The lesson as the panel shows it this frame.
+struct ParametersOnShow {
+  const lessons::Lesson& lesson;
+  const std::set<std::string>& lock;       // the controls the teacher chose; empty: all of them
+  const std::optional<Mystery>& mystery;   // its pair has no slider, box, reset or presets
+  HiddenValues hidden;                     // what the class must not see now
+  // The class's predictions can be set beside a whole run (it has been played to its end).
+  bool comparing = false;
+};
+
+struct ParametersPanel {
+  std::map<std::string, bool> pair_open;  // friction pairs the teacher opened (true) or folded (false)
+  bool opened = false;  // the teacher opened the panel folded for this run's comparison
+  std::optional<std::pair<std::string, double>> sliding;  // a slider that rebuilds on release
+  std::vector<std::pair<std::string, std::string>> asked;  // values asked for during this frame
+  std::map<std::string, std::string> errors;               // a refused value, beside its control
+
+  // Another lesson: nothing opened, folded, held or refused in the one before.
+  void forget();
+  // The panel's height at each step of giving way (FrameStyle::parameters_heights), in the current font.
+  std::vector<float> heights(const ParametersOnShow& on_show) const;
+  // The panel at `step` of giving way; `scale` is the fonts' scale.
+  void draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
+            const Theme& colours, ControlPlaces& controls);
+
+ private:
+  // The panel's rows: each parameter shown, and whether a friction pair's heading (with its
+  // presets) comes before it. The panel draws them; its height is counted from them.
+  // Friction pairs give way to a short column in steps: step k (up to the number of pairs the
+  // teacher has not folded) puts the last k pairs' coefficients two a row; each step beyond
+  // folds one more pair the teacher has not opened, the last first, into its heading with its
+  // values.
+  struct Row {
+    const lessons::Parameter* parameter;
+    const lessons::Parameter* partner;  // the second coefficient on a row of two
+    bool pair_heading, folded, two_a_row;
+  };
+  // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
+  std::vector<std::string> foldable_pairs(const ParametersOnShow& on_show, bool opened_too) const;
+  std::vector<Row> rows_at(const ParametersOnShow& on_show, std::size_t step) const;
+  // Once the class's predictions can be set beside a whole run, nobody slides values while
+  // comparing: the whole panel may fold into a heading, the last step of giving way, which a
+  // click opens again for the rest of this run.
+  bool may_fold_away(const ParametersOnShow& on_show) const;
+  std::size_t folded_away_step(const ParametersOnShow& on_show) const;  // the step that folds it, when it may
+  void draw_folded_away(ImVec2 corner, ImVec2 size, const ParametersOnShow& on_show, ControlPlaces& controls);
+  // One control: its label from `label_x` (0: the row's start), its slider, a box for a typed
+  // value (none when value_x is reset_x) and its reset.
+  void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
+                     float value_x, float reset_x, const ParametersOnShow& on_show, ControlPlaces& controls);
+  void preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls);
+};
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,106 @@
+// The transport bar (classroom/transport_bar.h): play, step, reset, the speed and the time bar.
+#include "classroom/transport_bar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "draw/text_record.h"
+
+namespace frictionlab::ui {
+
+TransportBar::Shape TransportBar::shape(const std::string& said, float width, float scale) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float s = scale;
+  Shape shape;
+  // The controls before the time bar, and the time bar's own words at their longest.
+  shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
+  shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
+  const float inside = width - 2.0f * style.WindowPadding.x;
+  const float said_width = said.empty() ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + style.ItemSpacing.x;
+  // The words beside the bar when they fit there, else on lines of their own under it.
+  shape.words_below = shape.controls + shape.bar + said_width > inside;
+  const float words = shape.words_below ? ImGui::CalcTextSize(said.c_str(), nullptr, false, inside).y + style.ItemSpacing.y : 0.0f;
+  shape.height = ImGui::GetFrameHeight() + words + 2.0f * style.WindowPadding.y + 2.0f * s;
+  return shape;
+}
+
+void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said, float scale,
+                        double& speed_kept, ControlPlaces& controls) {
+  const float s = scale;
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  if (ImGui::Begin("###transport", nullptr, flags)) {
+    const Shape shape = TransportBar::shape(said, size.x, scale);
+    const float button = 80.0f * s;
+    const auto noted_button = [&](const char* label, const char* name) {
+      const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
+      remember_item(controls, name);
+      note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      return pressed;
+    };
+    if (noted_button(playback.playing() ? "Pause" : "Play", "play")) playback.toggle();
+    ImGui::SameLine();
+    if (noted_button("Step", "step")) playback.step_once();
+    ImGui::SameLine();
+    if (noted_button("Reset", "reset")) playback.reset();
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150.0f * s);
+    float speed = static_cast<float>(playback.speed());
+    if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
+                           "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
+      // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
+      // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
+      if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
+      playback.set_speed(speed);
+      speed_kept = playback.speed();
+    }
+    remember_item(controls, "speed");
+    {
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
+      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    }
+    ImGui::SameLine();
+    const Scene& scene = playback.lesson().scene();
+      const float said_width =
+        said.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - said_width));
+    double t = scrubbing_to ? *scrubbing_to : scene.time();
+    const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
+    char format[64];
+    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback.recorded_until());
+    // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
+    // while: it waits until the bar is let go.
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) {
+      if (t >= scene.time() && !scrubbing_to) {
+        playback.scrub_to(t);
+      } else {
+        scrubbing_to = t;
+        playback.pause();
+      }
+    }
+    if (ImGui::IsItemDeactivated() && scrubbing_to) {
+      playback.scrub_to(*scrubbing_to);
+      scrubbing_to.reset();
+    }
+    remember_item(controls, "scrub");
+    {
+      char shown[96];
+      std::snprintf(shown, sizeof shown, format, t);
+      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    }
+    if (!said.empty()) {
+      if (!shape.words_below) ImGui::SameLine();
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("%s", said.c_str());
+      ImGui::PopTextWrapPos();
+      note_text(said.c_str());
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace frictionlab::ui
