@@ -9,7 +9,7 @@
 #include "classroom/text_boxes.h"
 #include "draw/panels.h"
 #include "draw/text_record.h"
-#include "lessons/runtime/lesson_benchmark.h"
+#include "bench/lesson_problem.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -14,7 +14,7 @@
 #include "classroom/control_places.h"
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 
 namespace frictionlab::ui {
 

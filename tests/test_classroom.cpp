@@ -19,7 +19,7 @@
 #include "draw/imgui_host.h"
 #include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
-#include "lessons/runtime/lesson_benchmark.h"
+#include "bench/lesson_problem.h"
 #include <backends/imgui_impl_opengl3.h>
 #include "classroom/classroom.h"
 #include "draw/overlays.h"

@@ -7,8 +7,8 @@
 
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
-#include "lessons/runtime/lesson_benchmark.h"
-#include "physics/recommend.h"
+#include "bench/lesson_problem.h"
+#include "bench/cheapest_setting.h"
 
 namespace frictionlab::lessons {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 #include "physics/run_check.h"
 #include "physics/stability.h"
 

@@ -1,5 +1,5 @@
 // Benchmark problems with exact answers, for speed against accuracy (the bench's own: a built-in
-// lesson is judged by its own script, lessons/runtime/lesson_benchmark.h), each runnable in Box2D with any setting and, where the
+// lesson is judged by its own script, bench/lesson_problem.h), each runnable in Box2D with any setting and, where the
 // problem is a block on a line, by the reduced 1-DOF models; every run judged by its error and
 // by how it failed (RunCheck).
 #pragma once

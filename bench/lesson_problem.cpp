@@ -1,4 +1,4 @@
-#include "lessons/runtime/lesson_benchmark.h"
+#include "bench/lesson_problem.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "app/table.h"
 #include "draw/chart.h"
 #include "draw/stability_chart.h"

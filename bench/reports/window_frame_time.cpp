@@ -9,13 +9,13 @@
 #include <chrono>
 #include <sstream>
 
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "app/table.h"
 #include "classroom/classroom.h"
 #include "draw/headless.h"
 #include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 
 namespace frictionlab {
 namespace {

@@ -1,6 +1,6 @@
 // The cheapest model that answers the question: the recommender measures the friction
 // treatments, step rates and sub-steps on any problem (a run function; a lesson's is built in
-// lessons/runtime/lesson_benchmark.h) by its error and CPU time per simulated second, to find
+// bench/lesson_problem.h) by its error and CPU time per simulated second, to find
 // the cheapest setting that meets a tolerance. One setting per call of run_next(), so a window can
 // measure between frames and show its progress.
 #pragma once
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/benchmark_problems.h"
+#include "bench/problems.h"
 
 namespace frictionlab {
 

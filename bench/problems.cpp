@@ -1,4 +1,4 @@
-#include "physics/benchmark_problems.h"
+#include "bench/problems.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,14 +13,14 @@
 
 #include "app/modes.h"
 #include "app/command_line.h"
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "app/options.h"
 #include "app/table.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
-#include "lessons/runtime/lesson_benchmark.h"
+#include "bench/lesson_problem.h"
 #include "physics/reduced_model.h"
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 #include "physics/stability.h"
 
 namespace frictionlab {

@@ -1,4 +1,4 @@
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 
 #include <unistd.h>
 
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "app/table.h"
 #include "draw/headless_render.h"
 #include "lessons/runtime/catalog.h"

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "physics/benchmark_problems.h"
+#include "bench/problems.h"
 
 namespace frictionlab::lessons {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "draw/chart.h"
 #include "draw/headless.h"
 #include "draw/headless_render.h"

@@ -10,10 +10,10 @@
 #include <cstring>
 #include <sstream>
 
-#include "app/bench.h"
+#include "bench/reports/reports.h"
 #include "app/table.h"
 #include "draw/chart.h"
-#include "physics/recommend.h"
+#include "bench/cheapest_setting.h"
 
 namespace frictionlab {
 namespace {
