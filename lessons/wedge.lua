@@ -403,32 +403,27 @@ local drifts, drifts_for = {}, nil
 local function start_drift(t)
   if drifts_for ~= horizon then drifts, drifts_for = {}, horizon end
   if drifts[t] then return drifts[t][1], drifts[t][2] end
-  -- What changes the gap's speed, in time order: the start and the stops.
-  local kicks = {}
-  if turning.contact[1] ~= "sticking" then kicks[1] = { t = 0, speed = start_speed() } end
+  -- The models' block first sticks at `stop` (none by t): from there the two stay apart, at rest.
+  local stop
   for _, event in ipairs(turning.events) do
     if event.t > t then break end
-    if event.kind == "stop" then kicks[#kicks + 1] = { t = event.t, stop = true } end
+    if event.kind == "stop" then
+      stop = event.t
+      break
+    end
   end
-  local gap, gap_speed, next_kick = 0, 0, 1
+  local moving = turning.contact[1] ~= "sticking" and not (stop and stop <= 0)
+  local gap, gap_speed = 0, moving and start_speed() or 0
   -- At most 2000 steps of it, whatever the world's rate (a tolerance is read often).
   local count = math.min(math.floor(t / h + 0.5), 2000)
   local dt = count > 0 and t / count or 0
-  local function kick_until(until_t)
-    while kicks[next_kick] and kicks[next_kick].t <= until_t do
-      local kick = kicks[next_kick]
-      if kick.stop then gap_speed = 0 else gap_speed = gap_speed + kick.speed end
-      next_kick = next_kick + 1
-    end
-  end
-  kick_until(0)
   for i = 1, count do
     local turn_rate = theta0 * omega * math.cos(omega * (i - 0.5) * dt)
     if gap_speed ~= 0 then gap_speed = gap_speed + turn_rate * turn_rate * gap * dt end
     gap = gap + gap_speed * dt
-    kick_until(i * dt)
+    if stop and stop <= i * dt then gap_speed = 0 end
   end
-  kick_until(t)
+  if stop then gap_speed = 0 end
   drifts[t] = { gap, gap_speed }
   return gap, gap_speed
 end
