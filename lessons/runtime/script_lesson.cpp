@@ -344,10 +344,13 @@ int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
     LessonBuild& build = build_of(state);
-    // The four coefficients (physics/materials.h), then the pair's own fields.
-    std::vector<const char*> known;
-    for (const PairCoefficient& coefficient : pair_coefficients) known.push_back(coefficient.name);
-    known.insert(known.end(), {"name", "sliders", "treatment", "epsilon", "like"});
+    // The fields that give the pair's values (the four coefficients, physics/materials.h, and
+    // its sliders' prefix and list), then its treatment's and a shared pair's.
+    std::vector<const char*> value_fields;
+    for (const PairCoefficient& coefficient : pair_coefficients) value_fields.push_back(coefficient.name);
+    value_fields.insert(value_fields.end(), {"name", "sliders"});
+    std::vector<const char*> known = value_fields;
+    known.insert(known.end(), {"treatment", "epsilon", "like"});
     Fields fields(state, 1, "pair", std::span<const char* const>(known));
     std::string names[2];
     for (int i = 0; i < 2; ++i) {
@@ -379,9 +382,7 @@ int pair(lua_State* state) {
     std::string like[2];
     if (fields.has("like")) {
       // Every value; a shared pair may still have a treatment of its own.
-      std::vector<const char*> values_given(known.begin(), known.begin() + std::ssize(pair_coefficients));
-      values_given.insert(values_given.end(), {"name", "sliders"});
-      for (const char* key : values_given) {
+      for (const char* key : value_fields) {
         if (fields.has(key)) {
           throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " + key);
         }
