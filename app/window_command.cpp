@@ -137,6 +137,12 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   if (options.projector) classroom_options.window.projector = true;
   // A prepared setup: read and checked against its lesson before the window opens.
   if (!options.setup.empty()) classroom_options = ui::setup_options(options.setup, classroom_options);
+  // A picture is no session: what came back from the last one is said to a person only.
+  if (options.screenshot.empty()) {
+    const std::string kept = ui::kept_from_last_session(classroom_options.window);
+    std::string& notice = classroom_options.opening_notice;
+    if (!kept.empty()) notice = notice.empty() ? kept : notice + " " + kept;
+  }
   ui::Classroom classroom(classroom_options);
 
   ui::WindowRun run;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "draw/image.h"
 #include "files/output_file.h"
@@ -50,15 +51,6 @@ WindowSettings load_settings(const std::string& path) {
       settings.predictions = value == "on";
     } else if (name == "full_screen" && (value == "on" || value == "off")) {
       settings.full_screen = value == "on";
-    } else if (bool* tool = name == "stopwatch"           ? &settings.tools.stopwatch
-                            : name == "distance_marks"    ? &settings.tools.distance_marks
-                            : name == "speed_readout"     ? &settings.tools.speed
-                            : name == "weight_components" ? &settings.tools.weight_components
-                                                          : nullptr;
-               tool != nullptr && (value == "on" || value == "off")) {
-      *tool = value == "on";
-    } else if (name == "speed" && numeric && x >= 0.1 && x <= 8.0) {
-      settings.speed = x;
     } else if (name == "width" && numeric && x >= 320 && x <= 16384) {
       settings.width = static_cast<int>(x);
     } else if (name == "height" && numeric && x >= 240 && x <= 16384) {
@@ -76,11 +68,6 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
        << "help = " << (settings.help ? "on" : "off") << "\n"
        << "predictions = " << (settings.predictions ? "on" : "off") << "\n"
        << "full_screen = " << (settings.full_screen ? "on" : "off") << "\n"
-       << "stopwatch = " << (settings.tools.stopwatch ? "on" : "off") << "\n"
-       << "distance_marks = " << (settings.tools.distance_marks ? "on" : "off") << "\n"
-       << "speed_readout = " << (settings.tools.speed ? "on" : "off") << "\n"
-       << "weight_components = " << (settings.tools.weight_components ? "on" : "off") << "\n"
-       << "speed = " << settings.speed << "\n"
        << "width = " << settings.width << "\n"
        << "height = " << settings.height << "\n";
   try {
@@ -90,6 +77,22 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
   } catch (const std::exception&) {
     return false;
   }
+}
+
+std::string kept_from_last_session(const WindowSettings& settings) {
+  const WindowSettings fresh;
+  std::vector<std::string> kept;
+  if (settings.theme != fresh.theme) kept.push_back(std::string(theme_name(settings.theme)) + " theme");
+  if (settings.projector != fresh.projector) kept.push_back(settings.projector ? "projector mode" : "projector mode off");
+  if (settings.full_screen != fresh.full_screen) kept.push_back(settings.full_screen ? "full screen" : "windowed");
+  if (settings.help != fresh.help) kept.push_back(settings.help ? "the help panel" : "the help panel closed");
+  if (settings.predictions != fresh.predictions) {
+    kept.push_back(settings.predictions ? "predictions asked" : "predictions not asked (View menu)");
+  }
+  if (kept.empty()) return "";
+  std::string words = "Kept from the last session: ";
+  for (std::size_t i = 0; i < kept.size(); ++i) words += (i == 0 ? "" : ", ") + kept[i];
+  return words + ". Speed ×1 and the tools off, as every session starts.";
 }
 
 }  // namespace frictionlab::ui

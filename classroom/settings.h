@@ -1,6 +1,11 @@
-// What the window remembers between runs: theme, projector mode, speed and whether the help
-// panel is open. A small "name = value" file beside ImGui's own imgui.ini, in
-// $XDG_CONFIG_HOME/frictionlab (or ~/.config/frictionlab).
+// What the window remembers between runs: how the room shows it (theme, projector mode, full
+// screen, window size) and how the teacher runs a class (help panel, predictions asked). A small
+// "name = value" file beside ImGui's own imgui.ini, in $XDG_CONFIG_HOME/frictionlab (or
+// ~/.config/frictionlab).
+//
+// The speed and the measuring tools are this session's only: a class that opened at ×8 with
+// yesterday's stopwatch rushed through its breakaway before anyone looked (issue 31). Each
+// session starts at ×1 with the tools off, and the status line says what did come back.
 #pragma once
 
 #include <string>
@@ -9,7 +14,7 @@
 
 namespace frictionlab::ui {
 
-// The measuring tools that are on (classroom/measuring_tools.h), kept for the next class.
+// The measuring tools that are on (classroom/measuring_tools.h), for this session only.
 struct ToolSettings {
   bool stopwatch = false;
   bool distance_marks = false;
@@ -22,11 +27,11 @@ struct WindowSettings {
   ThemeName theme = ThemeName::light;
   bool projector = false;
   bool help = true;  // a newcomer sees the shortcuts first
-  double speed = 1.0;
+  double speed = 1.0;                // this session only
   int width = 1280, height = 720;  // the window's size when it is not full screen
   bool full_screen = false;         // F11: a projector's whole screen, kept for the next class
   bool predictions = true;          // ask the class to predict before the theory shows (View menu)
-  ToolSettings tools;               // the Tools menu
+  ToolSettings tools;               // the Tools menu; this session only
 
   bool operator==(const WindowSettings&) const = default;
 };
@@ -37,7 +42,13 @@ std::string settings_folder();
 // Lines it does not understand, or values out of range, are skipped: a damaged file must not
 // keep the window from opening. A missing file gives the defaults.
 WindowSettings load_settings(const std::string& path);
+// Lines a file from an older FrictionLab holds for the speed and the tools are read past.
 // Whole or not at all (written beside it, then renamed). Returns false when it cannot be written.
 bool save_settings(const WindowSettings& settings, const std::string& path);
+
+// What a session opened with `settings` kept from the last one, for the status line: "Kept from
+// the last session: dark theme, projector mode." naming each setting that differs from a new
+// window's; "" when none does.
+std::string kept_from_last_session(const WindowSettings& settings);
 
 }  // namespace frictionlab::ui

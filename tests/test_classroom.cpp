@@ -1291,21 +1291,51 @@ TEST(Classroom, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   WindowSettings settings;
   settings.theme = ThemeName::dark;
   settings.projector = true;
-  settings.speed = 0.25;
   settings.width = 1920;
   settings.full_screen = true;  // a projector's whole screen, kept for the next class
-  settings.tools.stopwatch = true;  // the Tools menu's choices, each on its own
-  settings.tools.speed = true;
+  settings.help = false;
+  settings.predictions = false;
   ASSERT_TRUE(save_settings(settings, path));
   EXPECT_EQ(load_settings(path), settings);
-  settings.tools = ToolSettings{false, true, false, true};
-  ASSERT_TRUE(save_settings(settings, path));
-  EXPECT_EQ(load_settings(path), settings);
-  std::ofstream(path) << "theme = pink\nspeed = 99\nprojector = on\ngarbage\n";
+  std::ofstream(path) << "theme = pink\nwidth = 99999\nprojector = on\ngarbage\n";
   WindowSettings expected;
   expected.projector = true;
   EXPECT_EQ(load_settings(path), expected);
   std::filesystem::remove(path);
+}
+
+// Issue 31: a class opened at yesterday's ×8 with yesterday's tools rushed through its breakaway.
+// The speed and the tools belong to one session; the status line says what did come back.
+TEST(Classroom, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_session_" + std::to_string(::getpid()) + ".ini")).string();
+  WindowSettings yesterday;
+  yesterday.theme = ThemeName::dark;
+  yesterday.projector = true;
+  yesterday.speed = 8.0;
+  yesterday.tools = ToolSettings{true, true, true, true};
+  ASSERT_TRUE(save_settings(yesterday, path));
+  const WindowSettings today = load_settings(path);
+  EXPECT_EQ(today.speed, 1.0);
+  EXPECT_EQ(today.tools, ToolSettings{});
+  EXPECT_EQ(today.theme, ThemeName::dark);
+  EXPECT_TRUE(today.projector);
+  EXPECT_EQ(kept_from_last_session(today),
+            "Kept from the last session: dark theme, projector mode. Speed ×1 and the tools off, as every session starts.");
+  // A file an older FrictionLab wrote, with the speed and the tools in it.
+  std::ofstream(path) << "speed = 8\nstopwatch = on\ndistance_marks = on\nspeed_readout = on\nweight_components = on\n";
+  EXPECT_EQ(load_settings(path), WindowSettings{});
+  EXPECT_EQ(kept_from_last_session(load_settings(path)), "") << "nothing kept, nothing to say";
+  std::filesystem::remove(path);
+
+  // The window says it on its status line when it opens.
+  ClassroomOptions options;
+  options.lesson = lessons::resolve_lesson("push");
+  options.window = today;
+  options.opening_notice = kept_from_last_session(today);
+  Classroom classroom(options);
+  EXPECT_EQ(classroom.status(), options.opening_notice);
+  EXPECT_EQ(classroom.playback().speed(), 1.0);
+  EXPECT_FALSE(classroom.tools().on.stopwatch);
 }
 
 TEST(Classroom, VelocitiesTheScriptSetsAreReplayedExactlyByTheTimeBar) {

@@ -84,6 +84,9 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   const std::string folder = ui::settings_folder();
   const bool first_visit = folder.empty() || !std::filesystem::exists(folder + "/settings.ini");
   if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
+  // Full screen cannot be restored: a browser grants it only right after a key or a click.
+  options.window.full_screen = false;
+  const std::string kept = ui::kept_from_last_session(options.window);
   if (projector) options.window.projector = true;
   // The help panel a newcomer's first page opens with would cover what a link was sent for: a
   // lesson in projector mode is for a class in front of the screen, and a lesson or a setup is
@@ -93,8 +96,6 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
     help_to_save = options.window.help;
     options.window.help = false;
   }
-  // Full screen cannot be restored: a browser grants it only right after a key or a click.
-  options.window.full_screen = false;
   options.output_folder = web::downloads_folder;
   options.script_paths = false;
   options.browser = true;
@@ -111,6 +112,7 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
       problem = error.what();
     }
   }
+  if (!kept.empty()) options.opening_notice = options.opening_notice.empty() ? kept : options.opening_notice + " " + kept;
   return options;
 }
 
