@@ -53,7 +53,7 @@ Classroom::Classroom(ClassroomOptions options)
   }
   playback_->set_speed(window_.speed);
   // A lesson opens paused at t = 0, its first frame drawn: the class sees the setup, and
-  // predicts, before anything moves; Space plays. A stopwatch the last class left shown is armed
+  // predicts, before anything moves; Space plays. A stopwatch the options ask for is armed
   // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
   tools_.on = window_.tools;
   tools_.arm_stopwatch(0.0, false);
@@ -138,9 +138,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   // One setting of the cheapest-setting search a frame: the window stays live while it measures.
   cheapest_.measure_next();
   playback_->advance(wall_seconds);
-  const double watched = wall_seconds + std::exchange(waited_, 0.0);
-  playback_->watch_file(watched);
-  try_failed_script(watched);
+  watch_files(wall_seconds);
 
   tools_.on = window_.tools;
   tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
@@ -453,19 +451,27 @@ std::string Classroom::open(const std::string& name_or_path) {
   }
 }
 
-void Classroom::try_failed_script(double wall_seconds) {
-  if (failed_script_.empty()) return;
+bool Classroom::waited(double seconds) { return watch_files(seconds); }
+
+bool Classroom::watch_files(double wall_seconds) {
+  const bool reloaded = playback_->watch_file(wall_seconds);
+  return try_failed_script(wall_seconds) || reloaded;
+}
+
+bool Classroom::try_failed_script(double wall_seconds) {
+  if (failed_script_.empty()) return false;
   since_failed_check_ += wall_seconds;
-  if (since_failed_check_ < 0.25) return;
+  if (since_failed_check_ < 0.25) return false;
   since_failed_check_ = 0.0;
   const FileStamp stamp = file_stamp(failed_script_);
-  if (stamp == failed_stamp_) return;
+  if (stamp == failed_stamp_) return false;
   failed_stamp_ = stamp;
   const std::string script = failed_script_;
   if (std::string error = open(script); !error.empty()) {
     failed_script_ = script;
     failed_error_ = error;
   }
+  return true;
 }
 
 std::optional<std::string> Classroom::take_screenshot_request() {

@@ -85,7 +85,9 @@ class Classroom {
   // Time the window spent waiting for input while idle: no lesson time, but the file watchers'
   // clocks run on it, so a script saved while nobody touches the window is still seen (the
   // next frame, given no wall time, would never reach their quarter-second look).
-  void waited(double seconds) { waited_ += seconds; }
+  // The watchers look at once; true when what they found changes the picture (a script
+  // reloaded, gone or back, a failed script that now opens): only then need the host draw.
+  bool waited(double seconds);
   // What the status line says now (saved files, failures to save).
   const std::string& status() const { return status_; }
   // The measuring tools (Tools menu): which are on, and the stopwatch.
@@ -203,7 +205,10 @@ class Classroom {
   void forget_outdated_predictions();
   void set_value(const std::string& name, const std::string& text);
   void change_settings(const StepSettings& settings);
-  void try_failed_script(double wall_seconds);
+  // The script files' watchers, given the wall time since they last looked; true when what
+  // they found changes what the window shows.
+  bool watch_files(double wall_seconds);
+  bool try_failed_script(double wall_seconds);
   // A new file in the output folder named after the lesson's moment; never an existing one.
   std::string output_path(const std::string& stem, const std::string& extension) const;
   void request_screenshot();
@@ -254,7 +259,6 @@ class Classroom {
   // A script named on the command line that did not build: shown and watched until it does.
   std::string failed_script_, failed_error_;
   double since_failed_check_ = 0.0;
-  double waited_ = 0.0;  // see waited()
   int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
   FileStamp failed_stamp_;
 };

@@ -380,28 +380,32 @@ bool Playback::reload() {
   return true;
 }
 
-void Playback::watch_file(double wall_seconds) {
+bool Playback::watch_file(double wall_seconds) {
   since_file_check_ += wall_seconds;
-  if (since_file_check_ < file_check_period) return;
+  if (since_file_check_ < file_check_period) return false;
   since_file_check_ = 0.0;
   const auto stamp = file_stamp(lesson_->path());
   if (!stamp) {
     // Moved, deleted, or half-way through an editor's save: say so (unless a failed reload
     // already says more), keep the lesson running.
     if (script_error_.empty() || file_missing_) {
-      script_error_ = "cannot read " + lesson_->path() + " (moved or deleted?)";
+      const std::string said = "cannot read " + lesson_->path() + " (moved or deleted?)";
+      const bool news = script_error_ != said;
+      script_error_ = said;
       file_missing_ = true;
+      return news;
     }
-    return;
+    return false;
   }
   const bool was_missing = file_missing_;
   file_missing_ = false;
   if (stamp == file_stamp_) {
     if (was_missing) script_error_.clear();  // back as it was
-    return;
+    return was_missing;
   }
   file_stamp_ = stamp;
   reload();
+  return true;
 }
 
 }  // namespace frictionlab::ui

@@ -83,8 +83,9 @@ class Playback {
 
   // The script's file: call every frame with the wall time; it looks at the file a few times
   // a second and reloads it when it changed. A failed reload leaves the last good lesson
-  // running and its message in script_error().
-  void watch_file(double wall_seconds);
+  // running and its message in script_error(). True when what it found changes what the
+  // window shows (a reload, the file gone or back): a sleeping window then draws a frame.
+  bool watch_file(double wall_seconds);
   bool reload();  // now (F5); false with script_error() set on failure
   // The file as it is now is the one the lesson knows: whoever wrote it (the web page's
   // editor, which reloads it itself and puts the last good text back after a failed Apply)

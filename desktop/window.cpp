@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "classroom/frame_pacing.h"
 #include "classroom/key_taps.h"
 #include "desktop/glfw_keys.h"
 #include "draw/framebuffer.h"
@@ -72,14 +73,28 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   struct Listeners {
     Classroom* classroom;
     KeyTaps taps;
+    bool event = false;  // input, or the window shown again: the sleeping loop must draw
   } listeners{&classroom, KeyTaps(glfw_modifier_keys)};
   glfwSetWindowUserPointer(window.get(), &listeners);
+  static constexpr auto event_came = [](GLFWwindow* from) { static_cast<Listeners*>(glfwGetWindowUserPointer(from))->event = true; };
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
-    if (action != GLFW_PRESS) return;
     auto* to = static_cast<Listeners*>(glfwGetWindowUserPointer(from));
+    to->event = true;
+    if (action != GLFW_PRESS) return;
     to->taps.pressed(key);  // GLFW's key codes are ImGui's indices under its GLFW backend
     if (const std::optional<Key> named = classroom_key(key)) to->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
   });
+  // Every other kind of input wakes the loop too; ImGui's backend, installed next, calls these
+  // before its own (ImGui 1.86 reads the pointer's place itself each frame, so the move alone
+  // would never tell the loop).
+  glfwSetCursorPosCallback(window.get(), [](GLFWwindow* from, double, double) { event_came(from); });
+  glfwSetMouseButtonCallback(window.get(), [](GLFWwindow* from, int, int, int) { event_came(from); });
+  glfwSetScrollCallback(window.get(), [](GLFWwindow* from, double, double) { event_came(from); });
+  glfwSetCharCallback(window.get(), [](GLFWwindow* from, unsigned int) { event_came(from); });
+  glfwSetCursorEnterCallback(window.get(), [](GLFWwindow* from, int) { event_came(from); });
+  glfwSetWindowFocusCallback(window.get(), [](GLFWwindow* from, int) { event_came(from); });
+  glfwSetWindowRefreshCallback(window.get(), [](GLFWwindow* from) { event_came(from); });
+  glfwSetFramebufferSizeCallback(window.get(), [](GLFWwindow* from, int, int) { event_came(from); });
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
   struct GlfwInput {
     ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
@@ -91,24 +106,26 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   int windowed[4] = {area[0], area[1], area[2], area[3]};
   double last = glfwGetTime();
   WindowSettings saved = settings;
-  int settle_frames = 3;
+  FramePacing pacing;
   std::string shown_title = "FrictionLab";
   while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
-    // Paused and untouched, the picture cannot change: wait for input, waking four times a
-    // second so a saved script is still seen (a paused llvmpipe window drew at 97 % of a core).
-    // A few frames after any input let ImGui settle hover and focus before waiting again.
-    if (classroom.idle() && frames_left < 0 && settle_frames == 0) {
+    // Paused and untouched, the picture cannot change: sleep until input, waking four times a
+    // second so the watchers see a saved script; a frame only for input or what they found.
+    if (classroom.idle() && frames_left < 0 && pacing.may_sleep()) {
+      listeners.event = false;
       const double asleep_from = glfwGetTime();
       glfwWaitEventsTimeout(0.25);
       // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
       last = glfwGetTime();
-      classroom.waited(last - asleep_from);
-      // Woken by input: a few frames; by the clock (to look at the script file): one.
-      settle_frames = glfwGetTime() - asleep_from < 0.24 ? 3 : 1;
+      const bool found = classroom.waited(last - asleep_from);
+      if (listeners.event) {
+        pacing.input();
+      } else if (!pacing.draw_on_clock(found)) {
+        continue;
+      }
     } else {
       glfwPollEvents();
     }
-    settle_frames = classroom.idle() ? std::max(0, settle_frames - 1) : 3;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
     const double now = glfwGetTime();
@@ -139,6 +156,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     glClearColor(clear.x, clear.y, clear.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     host.end_frame();
+    pacing.drawn(classroom.idle());
     listeners.taps.release(ImGui::GetIO(), [&](int key) { return glfwGetKey(window.get(), key) == GLFW_PRESS; });
 
     std::optional<std::string> screenshot = classroom.take_screenshot_request();

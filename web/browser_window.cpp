@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "classroom/frame_pacing.h"
 #include "classroom_state/setup_file.h"
 #include "desktop/glfw_keys.h"
 #include "draw/framebuffer.h"
@@ -42,7 +43,7 @@ struct Page {
   ui::KeyTaps taps{ui::glfw_modifier_keys};
   Finger finger;
   double last = 0.0;
-  int settle_frames = 3;  // frames still to draw after the last input, for hover and focus
+  ui::FramePacing pacing;  // the desktop window's rule: no frame while nothing can change
   ImVec2 drawn_size;      // the display the last frame was laid out for
   float drawn_scale = 0.0f;
   bool looping = true;
@@ -76,7 +77,7 @@ void canvas_size(int& width, int& height) {
 // Input arrived: draw again, and a few frames after it for ImGui's hover and focus to settle.
 void wake() {
   if (page == nullptr) return;
-  page->settle_frames = 3;
+  page->pacing.input();
   if (!page->looping) {
     page->looping = true;
     page->last = seconds_now();  // time spent asleep is no time for the lesson to catch up on
@@ -177,7 +178,7 @@ void draw_frame() {
   // ImGui's windows take a few frames to find their sizes again (scrollbars come and go): a
   // page that slept after three frames showed stray scrollbars until the next input.
   if (display.x != p.drawn_size.x || display.y != p.drawn_size.y || scale != p.drawn_scale) {
-    p.settle_frames = std::max(p.settle_frames, 10);
+    p.pacing.settle(10);
     p.drawn_size = display;
     p.drawn_scale = scale;
   }
@@ -244,8 +245,8 @@ void draw_frame() {
 void frame_loop() {
   Page& p = *page;
   draw_frame();
-  p.settle_frames = p.classroom->idle() ? std::max(0, p.settle_frames - 1) : std::max(p.settle_frames, 3);
-  if (p.settle_frames == 0) {
+  p.pacing.drawn(p.classroom->idle());
+  if (p.pacing.may_sleep()) {
     p.looping = false;
     emscripten_pause_main_loop();
   }
