@@ -10,6 +10,7 @@
 
 #include "app/options.h"
 #include "classroom_state/mystery.h"
+#include "classroom_state/window_keys.h"
 #include "physics/materials.h"
 
 namespace frictionlab {
@@ -571,6 +572,18 @@ std::string usage_text(Program program) {
     std::vector<std::string> words = split_words(option.help_line());
     words.insert(words.begin(), "(" + commands + ")");
     text += line + wrapped(words, help_column, help_column, width, false) + "\n";
+  }
+  // The window's keys, from the list its help panel shows; node has no window.
+  if (!node) {
+    text += "Keys in the window:\n";
+    constexpr std::size_t key_column = 16;
+    for (const ui::WindowKey& key : ui::window_keys()) {
+      std::string line = "  " + std::string(key.key);
+      // Columns count characters: the arrows are three bytes each in UTF-8.
+      const std::size_t shown = line.size() - 2 * static_cast<std::size_t>(std::count(key.key.begin(), key.key.end(), '\xe2'));
+      line += std::string(key_column - std::min(key_column - 1, shown), ' ');
+      text += line + wrapped(split_words(std::string(key.does)), key_column, key_column, width, false) + "\n";
+    }
   }
   if (node) {
     text +=

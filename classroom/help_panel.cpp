@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "classroom/settings.h"
+#include "classroom_state/window_keys.h"
 
 namespace frictionlab::ui {
 
@@ -23,41 +24,19 @@ void help_panel(bool& shown, float scale, bool browser, bool script_paths, const
     const ImVec2 inside(std::clamp(at.x, 0.0f, std::max(0.0f, display.x - size.x)),
                         std::clamp(at.y, 0.0f, std::max(0.0f, display.y - size.y)));
     if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(inside);
-    static const char* const keys[][2] = {
-        {"Space", "play / pause; typing a number, ends the typing and plays"},
-        {"Esc", "closes a menu or a dialog (with a menu open, keys act too)"},
-        {". (period)", "one step of the lesson (1/hz s), paused"},
-        {", (comma)", "one step back (replays the record)"},
-        {"R", "reset to t = 0, keeping the values set"},
-        {"F5", "reload the script from its file (saving it does too)"},
-        {"Ctrl+S", "screenshot of the window (PNG)"},
-        {"Ctrl+E", "export the history (CSV)"},
-        {"P", "projector mode: larger text, thicker lines"},
-        {"D", "dark or light theme"},
-        {"T", "reveal the theory after the class's predictions"},
-        {"F11", "full screen"},
-        {"W", "start / stop the stopwatch (lesson time)"},
-        {"L", "the stopwatch's lap"},
-        {"\u2190 \u2192", "the plots' pages, when they are shown a page at a time"},
-        {"F1", "this help"},
-    };
     // The keys' column as wide as its widest key, the words wrapped in what is left: at
     // projector size the panel is narrower than its longest line (the trial saw "…and pla").
     if (ImGui::BeginTable("keys", 2)) {
       ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
-      for (const auto& row : keys) {
-        // On the page F5 runs the script as last applied again: the editor's Apply is how a
-        // change arrives, and no file is saved anywhere the student sees.
-        const char* what = browser && std::string(row[0]) == "F5"
-                               ? "run the lesson's script again from t = 0 (the editor's Apply runs your changes)"
-                               : row[1];
+      for (const WindowKey& row : window_keys()) {
+        const std::string_view what = browser && !row.on_the_page.empty() ? row.on_the_page : row.does;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[0]);
+        ImGui::TextUnformatted(row.key.data(), row.key.data() + row.key.size());
         ImGui::TableNextColumn();
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(what);
+        ImGui::TextUnformatted(what.data(), what.data() + what.size());
         ImGui::PopTextWrapPos();
       }
       ImGui::EndTable();

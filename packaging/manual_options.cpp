@@ -1,14 +1,39 @@
 // frictionlab_manual_options TEMPLATE PAGE: writes the manual page, TEMPLATE (frictionlab.1.in as
 // CMake configured it) with its @FRICTIONLAB_MAN_OPTIONS@ line replaced by the OPTIONS section
-// written from the options table (app/command_line.cpp). Run by the build, so that the page and
-// `frictionlab help`, written from the same table, cannot drift apart.
+// written from the options table (app/command_line.cpp), and its @FRICTIONLAB_MAN_KEYS@ line by
+// the window's keys (classroom_state/window_keys.h). Run by the build, so that the page,
+// `frictionlab help` and the window's help panel, written from the same lists, cannot drift apart.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "app/command_line.h"
+#include "classroom_state/window_keys.h"
+
+namespace {
+
+// A line of roff's text: a leading period or apostrophe would be read as a request.
+std::string roff_text(std::string_view words) {
+  std::string text;
+  if (!words.empty() && (words.front() == '.' || words.front() == '\'')) text = "\\&";
+  for (const char c : words) text += c == '\\' ? std::string("\\e") : c == '-' ? std::string("\\-") : std::string(1, c);
+  return text;
+}
+
+// The keys as a two-column tbl table, each row's words in a text block (T{ ... T}) so that long
+// ones wrap.
+std::string keys_table() {
+  std::string table = ".TS\nl lx.\n";
+  for (const frictionlab::ui::WindowKey& key : frictionlab::ui::window_keys()) {
+    table += roff_text(key.key) + "\tT{\n" + roff_text(key.does) + "\nT}\n";
+  }
+  return table + ".TE\n";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -26,6 +51,13 @@ int main(int argc, char** argv) {
     return 1;
   }
   page.replace(at, mark.size(), frictionlab::manual_options());
+  const std::string keys_mark = "@FRICTIONLAB_MAN_KEYS@\n";
+  const std::size_t keys_at = page.find(keys_mark);
+  if (keys_at == std::string::npos) {
+    std::cerr << "frictionlab_manual_options: " << argv[1] << " has no line " << keys_mark;
+    return 1;
+  }
+  page.replace(keys_at, keys_mark.size(), keys_table());
   // Whole or not at all: a page cut short would still be installed by the next build.
   const std::string partial = std::string(argv[2]) + ".partial";
   {
