@@ -1,6 +1,7 @@
 // Failed runs are named, not dropped: a run that chatters, sticks where the exact motion
 // slides, slides or creeps where it sticks, or stops being a number is marked as such, on
-// made-up velocity records and on real runs either side of the regularized law's boundary.
+// made-up velocity records. (Real runs either side of the regularized law's boundary, judged
+// so: tests/bench/test_problems.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,67 +101,6 @@ TEST(RunCheck, ABlockThatShouldStayPutCreepsOrSlides) {
   EXPECT_EQ(creep.failure(at_rest), "creeps");
   EXPECT_EQ(slide.failure(at_rest), "slides");
   EXPECT_EQ(still.failure(at_rest), "");  // 0.2 mm in 2 s: within a millimetre of its place
-}
-
-// The spring problem in Box2D with the regularized law: a step a fifth inside the boundary
-// 2·eps/(mu_s·g) does not chatter, a quarter past it does; Box2D's single coefficient stops
-// the block more often than Coulomb's (it touches rest each period of the spring); a large
-// epsilon creeps through the sticks and misses them.
-TEST(FailedRuns, TheSpringProblemNamesHowEachTreatmentFails) {
-  const BenchmarkProblem spring = spring_problem();
-  StepSettings settings;
-  settings.treatment = FrictionTreatment::regularized;
-  settings.threshold_speed = 0.01;
-  const double boundary = 2.0 * settings.threshold_speed / (0.6 * 9.81);
-  settings.hz = 1.0 / (0.8 * boundary);
-  EXPECT_NE(spring.run(settings).fails, "chatters") << settings.hz << " Hz";
-  settings.hz = 1.0 / (1.25 * boundary);
-  EXPECT_EQ(spring.run(settings).fails, "chatters") << settings.hz << " Hz";
-  // The same world step as 240 Hz, in two sub-steps a frame: a flip every sub-step shows as
-  // no flip at all in the frames, so the check watches every sub-step.
-  settings.hz = 120;
-  settings.substeps = 2;
-  EXPECT_EQ(spring.run(settings).fails, "chatters");
-  settings.substeps = 1;
-  settings.hz = 240.0;
-  settings.threshold_speed = 0.1;
-  EXPECT_EQ(spring.run(settings).fails, "misses stick-slip");
-  settings.treatment = FrictionTreatment::box2d;
-  EXPECT_EQ(spring.run(settings).fails, "spurious stick-slip");
-  settings.treatment = FrictionTreatment::stick_slip;
-  EXPECT_EQ(spring.run(settings).fails, "");
-}
-
-// A run that gets the number within the tolerance with the physics wrong does not meet it:
-// box2d is within 5 cm on the spring, by a block that stops every period of the spring.
-TEST(FailedRuns, AFailedRunNeverMeetsTheTolerance) {
-  StepSettings one_mu;
-  one_mu.treatment = FrictionTreatment::box2d;
-  one_mu.hz = 60;
-  const Trial trial = measure_setting(spring_problem(), one_mu, 1, 0.05);
-  EXPECT_LT(trial.error, 0.05);
-  EXPECT_EQ(trial.fails, "spurious stick-slip");
-  EXPECT_FALSE(trial.meets);
-}
-
-// The reduced models answer every problem that is a block on a line: RK4 between located
-// events to well under a micrometre, explicit Euler with the regularized law chattering once
-// the block has come to rest exactly when its step passes 2·eps/(mu_s·g).
-TEST(FailedRuns, ReducedModelsOnEveryLineProblem) {
-  int lines = 0;
-  for (const BenchmarkProblem& problem : benchmark_problems()) {
-    if (!problem.line) continue;
-    ++lines;
-    const Outcome located = run_reduced(*problem.line, ReducedMethod::located_events, 240.0, 0.01);
-    EXPECT_LT(located.error, 1e-6) << problem.name;
-    EXPECT_EQ(located.fails, "") << problem.name;
-  }
-  EXPECT_EQ(lines, 5);
-  const LineProblem slide = *benchmark_problems()[3].line;
-  ASSERT_GT(slide.block.pair.c, 0.0);
-  const double epsilon = 0.01, boundary = 2.0 * epsilon / (0.6 * 9.81);
-  EXPECT_EQ(run_reduced(slide, ReducedMethod::explicit_euler, 1.0 / (0.9 * boundary), epsilon).fails, "");
-  EXPECT_EQ(run_reduced(slide, ReducedMethod::explicit_euler, 1.0 / (1.1 * boundary), epsilon).fails, "chatters");
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 
 #include "draw/image.h"
 #include "draw/theme.h"
-#include "rendering.h"
+#include "tests/rendering.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -7,9 +7,9 @@
 #include <numbers>
 #include <string>
 
-#include "assertions.h"
-#include "lesson_scripts.h"
 #include "physics/scenarios.h"
+#include "tests/assertions.h"
+#include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {

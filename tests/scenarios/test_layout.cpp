@@ -18,7 +18,6 @@
 
 #include "classroom/classroom.h"
 #include "classroom/measuring_tools.h"
-#include "classroom_hands.h"
 #include "draw/frame.h"
 #include "draw/headless.h"
 #include "draw/headless_render.h"
@@ -27,7 +26,8 @@
 #include "draw/words.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/class_words.h"
-#include "rendering.h"
+#include "tests/classroom_hands.h"
+#include "tests/rendering.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -12,9 +12,9 @@
 #include <map>
 #include <sstream>
 
-#include "classroom_hands.h"
 #include "classroom_state/setup_file.h"
 #include "classroom_state/user_lessons.h"
+#include "tests/classroom_hands.h"
 
 namespace frictionlab::ui {
 namespace {

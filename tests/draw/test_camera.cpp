@@ -10,9 +10,9 @@
 
 #include "draw/frame.h"
 #include "draw/theme.h"
-#include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
-#include "rendering.h"
+#include "tests/lesson_scripts.h"
+#include "tests/rendering.h"
 
 namespace frictionlab::ui {
 namespace {

@@ -1,3 +1,5 @@
+// The scene: the step settings and the bodies, springs, forces and drivers it refuses, runs that
+// repeat bit for bit, the friction treatments by name, and the energy ledger it keeps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -5,30 +7,11 @@
 #include <memory>
 #include <vector>
 
+#include "physics/closed_forms.h"
 #include "physics/scenarios.h"
 #include "tests/assertions.h"
 
 using namespace frictionlab;
-
-// Box2D times every step for its profile with the system clock, 14 readings or more a step;
-// FrictionLab never reads the profile, and its timer (physics/box2d_timer.cpp) reads no clock,
-// in every program that links the physics library. Box2D's own, which counts microseconds, reads
-// more than 0 ms for some of 200 steps that take a few microseconds each. (This test names no
-// b2Timer itself, so it also checks that the library makes the program link the timer.)
-TEST(Box2DTimer, ReadsNoClockWhileAWorldSteps) {
-  b2World world({0.0f, -9.81f});
-  b2BodyDef definition;
-  definition.type = b2_dynamicBody;
-  b2PolygonShape box;
-  box.SetAsBox(0.1f, 0.1f);
-  world.CreateBody(&definition)->CreateFixture(&box, 1.0f);
-  float longest = 0.0f;
-  for (int i = 0; i < 200; ++i) {
-    world.Step(1.0f / 240.0f, 8, 3);
-    longest = std::max(longest, world.GetProfile().step);
-  }
-  EXPECT_EQ(longest, 0.0f);
-}
 
 TEST(StepSettings, RejectsOutOfRangeNamingTheSettingAndRange) {
   auto with = [](auto change) {
@@ -222,80 +205,39 @@ TEST(Treatments, NamesRoundTripAndUnknownNamesListTheAllowed) {
   expect_invalid([] { parse_treatment("sticky"); }, "sticky", "stick-slip, threshold, regularized, box2d");
 }
 
-// A block that has slid to rest on the ground, stuck by static friction with nothing but
-// gravity on it, is let sleep: Box2D stops solving it, it stays exactly where it stopped, and
-// its contact keeps reading the load it carries. (Without the scene's rest it stays awake.)
-TEST(SceneRest, ABlockThatHasSlidToRestSleepsWhereItStopped) {
-  Slide setup;  // 3 m/s, mu_k = 0.4: at rest after 0.76 s, 1.15 m on
-  auto scene = make_slide(setup, StepSettings{});
-  b2Body* block = scene->body("block");
-  while (scene->time() < 1.0) scene->step();
-  EXPECT_FALSE(block->IsAwake());
-  const double stopped = scene->probe("distance").history.back();
-  EXPECT_NEAR(stopped, 9.0 / (2.0 * 0.4 * standard_gravity), 0.01);
-  while (scene->time() < 2.0) scene->step();
-  EXPECT_EQ(scene->probe("distance").history.back(), stopped);
-  const ContactRecord* touch = scene->friction().find(block, scene->body("ground"));
-  ASSERT_NE(touch, nullptr);
-  EXPECT_NEAR(touch->normal_force, setup.block.mass * standard_gravity, 1e-3);
-  EXPECT_EQ(touch->state, ContactState::sticking);
+// The energy ledger: what went in (applied work), where it went (kinetic, potential,
+// spring) and what friction took, closing to within 1 % of the energy dissipated.
+TEST(EnergyLedger, ClosesForStickSlip) {
+  auto scene = make_spring_pull(SpringPull{}, StepSettings{});
+  for (int i = 0; i < 2400; ++i) scene->step();
+  const EnergyLedger& e = scene->ledger();
+  ASSERT_GT(e.dissipated(), 1.0) << "ten seconds of stick-slip dissipate joules";
+  EXPECT_LT(std::abs(e.residual()), 0.01 * e.dissipated()) << "residual " << e.residual() << " J";
+  EXPECT_GT(e.work_applied, 0.0) << "the hand does the work";
+  EXPECT_LE(e.work_friction, 0.0);
 }
 
-// Friction values changed under a resting block (a teacher's slider): wake() lets it go, and
-// it slides down the slope its new mu_s no longer holds it on.
-TEST(SceneRest, ABlockRestingOnASlopeSlidesOnceWokenWithLowerFriction) {
-  Incline setup;
-  setup.angle = 0.3;  // below atan 0.6
-  auto scene = make_incline(setup, StepSettings{});
-  b2Body* block = scene->body("block");
-  while (scene->time() < 0.5) scene->step();
-  ASSERT_FALSE(block->IsAwake());
-  const double held = scene->probe("distance").history.back();
-  EXPECT_LT(std::abs(held), 1e-4);
-  scene->pairs().set_pair("block", "ground", FrictionPair{0.1, 0.05, 0.0, 0.0});
-  scene->wake();
-  while (scene->time() < 1.0) scene->step();
-  // Sliding from rest for 0.5 s at g·(sin θ − mu_k·cos θ): 0.30 m.
-  const double a = standard_gravity * (std::sin(0.3) - 0.05 * std::cos(0.3));
-  EXPECT_NEAR(scene->probe("distance").history.back() - held, 0.5 * a * 0.25, 0.01);
+TEST(EnergyLedger, ClosesOnTheInclineAndFrictionWorkIsMuKNTimesDistance) {
+  Incline incline;
+  incline.angle = 40.0 * M_PI / 180.0;
+  auto scene = make_incline(incline, StepSettings{});
+  for (int i = 0; i < 720; ++i) scene->step();
+  const EnergyLedger& e = scene->ledger();
+  EXPECT_LT(std::abs(e.residual()), 0.01 * e.dissipated()) << "residual " << e.residual() << " J";
+  const double distance = scene->probe("distance").history.back();
+  const double expected = -incline.block.pair.mu_k * incline.block.mass * standard_gravity * std::cos(incline.angle) * distance;
+  EXPECT_NEAR(e.work_friction, expected, 0.01 * std::abs(expected));
+  EXPECT_NEAR(e.potential, -incline.block.mass * standard_gravity * std::sin(incline.angle) * distance,
+              0.001 * incline.block.mass * standard_gravity * distance);
 }
 
-// Only a block stuck under the stick-slip law with nothing else on it rests: a regularized
-// contact creeps (its friction is a force of the sliding speed, never a hold), and a pushed
-// block is held by what pushes it, which may change at any time.
-TEST(SceneRest, BlocksHeldByAForceOrCreepingUnderARegularizedLawStayAwake) {
-  StepSettings regularized;
-  regularized.treatment = FrictionTreatment::regularized;
-  Incline setup;
-  setup.angle = 0.3;
-  auto creeping = make_incline(setup, regularized);
-  auto pushed = make_slide(Slide{Block{}, 0.0}, StepSettings{});
-  b2Body* block = pushed->body("block");
-  pushed->add_applied_force({"push", block, {0, 0}, [](double) { return b2Vec2{1.0f, 0.0f}; }});  // below mu_s·N
-  for (int i = 0; i < 240; ++i) {
-    creeping->step();
-    pushed->step();
-  }
-  EXPECT_TRUE(creeping->body("block")->IsAwake());
-  EXPECT_GT(creeping->probe("distance").history.back(), 0.0);
-  EXPECT_TRUE(block->IsAwake());
-}
-
-// On a frictionless floor the listener may call a touch slipping however slowly the block goes;
-// still, a block at rest there is on level ground and stays: it rests too. On a frictionless
-// slope it never comes to rest.
-TEST(SceneRest, ABlockAtRestOnAFrictionlessFloorRestsButOneOnAFrictionlessSlopeSlides) {
-  Block frictionless;
-  frictionless.pair = FrictionPair{0.0, 0.0, 0.0, 0.0};
-  auto flat = make_slide(Slide{frictionless, 0.0}, StepSettings{});
-  Incline setup{frictionless, 0.3};
-  auto slope = make_incline(setup, StepSettings{});
-  for (int i = 0; i < 120; ++i) {
-    flat->step();
-    slope->step();
-  }
-  EXPECT_FALSE(flat->body("block")->IsAwake());
-  EXPECT_EQ(flat->probe("distance").history.back(), 0.0);
-  EXPECT_TRUE(slope->body("block")->IsAwake());
-  EXPECT_NEAR(slope->probe("distance").history.back(), 0.5 * standard_gravity * std::sin(0.3) * 0.25, 0.01);
+TEST(EnergyLedger, DampingWorkIsBookedSeparately) {
+  Slide slide;
+  slide.block.pair = {0.0, 0.0, 2.0, 0.0};
+  auto scene = make_slide(slide, StepSettings{});
+  for (int i = 0; i < 960; ++i) scene->step();
+  const EnergyLedger& e = scene->ledger();
+  EXPECT_NEAR(e.work_friction, 0.0, 1e-9) << "mu = 0: no dry friction";
+  EXPECT_NEAR(-e.work_damping, e.initial - e.kinetic, 1e-3) << "all the kinetic energy lost went to damping";
+  EXPECT_LT(std::abs(e.residual()), 0.01 * e.dissipated());
 }

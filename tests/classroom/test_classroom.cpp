@@ -12,14 +12,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "bench/lesson_problem.h"
 #include "classroom/key_taps.h"
-#include "classroom_hands.h"
 #include "classroom_state/plain_words.h"
 #include "draw/headless.h"
 #include "draw/imgui_host.h"
-#include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
-#include "bench/lesson_problem.h"
+#include "tests/classroom_hands.h"
+#include "tests/lesson_scripts.h"
 #include <backends/imgui_impl_opengl3.h>
 #include "classroom/classroom.h"
 #include "draw/overlays.h"

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 
-#include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
+#include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {

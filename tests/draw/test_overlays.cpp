@@ -1,14 +1,14 @@
 // The overlays say what the solver did: arrows are as long as the recorded forces, contacts
 // are marked with their recorded state, and the forces on a sticking block add up to zero.
-// These need no OpenGL; test_rendering checks the same things in the pixels.
+// These need no OpenGL; test_headless_render checks the same things in the pixels.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "draw/frame.h"
 #include "draw/overlays.h"
-#include "lesson_scripts.h"
-#include "rendering.h"
+#include "tests/lesson_scripts.h"
+#include "tests/rendering.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -51,7 +51,7 @@ TEST(Overlays, FrictionArrowIsTheRecordedFrictionWhileTheBlockSticks) {
   for (const ForceOnBody& force : forces) net += force.force;
   EXPECT_LT(net.Length(), 1e-4f);
 
-  // (test_rendering finds the arrow in the picture and measures its length there.)
+  // (test_headless_render finds the arrow in the picture and measures its length there.)
   const std::vector<ContactMark> marks = contact_marks(scene);
   ASSERT_EQ(marks.size(), 1u);
   EXPECT_EQ(marks[0].state, ContactState::sticking);

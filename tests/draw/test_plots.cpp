@@ -8,17 +8,17 @@
 #include <sstream>
 #include <string>
 
-#include "classroom_hands.h"
 #include "draw/chart.h"
 #include "draw/headless.h"
 #include "draw/imgui_host.h"
 #include "draw/panels.h"
 #include "draw/plots.h"
 #include "draw/words.h"
-#include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/class_words.h"
-#include "rendering.h"
+#include "tests/classroom_hands.h"
+#include "tests/lesson_scripts.h"
+#include "tests/rendering.h"
 
 namespace frictionlab::ui {
 namespace {

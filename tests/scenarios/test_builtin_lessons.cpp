@@ -14,9 +14,9 @@
 #include <sstream>
 #include <set>
 
-#include "lesson_scripts.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/closed_forms.h"
+#include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "lessons/runtime/lesson.h"
-#include "lesson_scripts.h"
+#include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "classroom_hands.h"
+#include "tests/classroom_hands.h"
 
 namespace frictionlab::ui {
 namespace {

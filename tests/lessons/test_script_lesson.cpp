@@ -9,8 +9,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "assertions.h"
-#include "lesson_scripts.h"
+#include "tests/assertions.h"
+#include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {
