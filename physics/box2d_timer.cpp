@@ -11,7 +11,7 @@
 // program's definition first). The profile then reads 0 ms for every part; the simulation
 // does not read the timer, so its results are unchanged. physics/CMakeLists.txt makes every
 // program that links frictionlab_physics link this file (nothing in FrictionLab calls it by
-// name, so the linker would otherwise leave it in the archive). test_scene checks that the
+// name, so the linker would otherwise leave it in the archive). test_box2d_timer checks that the
 // timer reads no clock.
 #include <box2d/b2_timer.h>
 

@@ -7,7 +7,8 @@
 set -u
 cd "$1" || exit 2
 docs=(README.md docs/*.md lessons/README.md lessons/reference.md lessons/cheatsheet.md
-      classroom/README.md classroom_state/README.md draw/README.md desktop/README.md physics/README.md bench/README.md)
+      classroom/README.md classroom_state/README.md draw/README.md desktop/README.md physics/README.md bench/README.md
+      tests/README.md)
 failed=0
 
 # The text of a file outside its ``` blocks.

@@ -15,8 +15,11 @@ target_compile_options(web_gtest PRIVATE -w)
 set(tests_folder "${PROJECT_SOURCE_DIR}/tests")
 set(web_test_link_options -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sTOTAL_STACK=4MB
                           -sWASM_ASYNC_COMPILATION=0)
-function(frictionlab_web_test name library)
-  add_executable(web_${name} "${tests_folder}/${name}.cpp")
+# FILE is a test file's path under tests/ without .cpp (tests/README.md maps them); the target
+# and the test are web_ and the file's name: physics/test_scene builds web_test_scene.
+function(frictionlab_web_test file library)
+  get_filename_component(name ${file} NAME)
+  add_executable(web_${name} "${tests_folder}/${file}.cpp")
   target_link_libraries(web_${name} PRIVATE ${library} frictionlab_flags web_gtest)
   target_link_options(web_${name} PRIVATE ${web_test_link_options})
   set_target_properties(web_${name} PROPERTIES SUFFIX ".js")
@@ -24,18 +27,21 @@ function(frictionlab_web_test name library)
   set_tests_properties(web_${name} PROPERTIES TIMEOUT 900)
 endfunction()
 
-foreach(name test_materials test_friction_laws test_closed_forms test_reduced_model test_wedge_model test_scene
-             test_box2d_friction test_stick_slip_convergence test_energy_ledger test_stability test_run_check
-             test_pair_treatment test_friction_listener_feet)
-  frictionlab_web_test(${name} frictionlab_physics)
+foreach(file physics/test_materials physics/test_friction_laws physics/test_closed_forms physics/test_reduced_model
+             physics/test_wedge_model physics/test_scene physics/test_scene_rest physics/test_box2d_timer
+             physics/test_friction_listener physics/test_treatment_stick_slip physics/test_stability physics/test_run_check
+             bench/test_problems bench/test_cheapest_setting)
+  frictionlab_web_test(${file} frictionlab_physics)
 endforeach()
-foreach(name test_lesson_runtime test_builtin_lessons test_world_functions test_lesson_benchmark test_predict
-             test_script_free_readings)
-  frictionlab_web_test(${name} frictionlab_lessons)
+foreach(file lessons/test_lesson lessons/test_sandbox scenarios/test_builtin_lessons lessons/test_script_world
+             bench/test_lesson_problem lessons/test_script_predict lessons/test_script_lesson)
+  frictionlab_web_test(${file} frictionlab_lessons)
 endforeach()
 target_link_libraries(web_test_stability PRIVATE frictionlab_bench)
 target_link_libraries(web_test_run_check PRIVATE frictionlab_bench)
-target_link_libraries(web_test_lesson_benchmark PRIVATE frictionlab_bench)
-frictionlab_web_test(test_lesson_errors frictionlab_lessons)
+target_link_libraries(web_test_problems PRIVATE frictionlab_bench)
+target_link_libraries(web_test_cheapest_setting PRIVATE frictionlab_bench)
+target_link_libraries(web_test_lesson_problem PRIVATE frictionlab_bench)
+frictionlab_web_test(scenarios/test_lesson_errors frictionlab_lessons)
 target_compile_definitions(web_test_lesson_errors PRIVATE FRICTIONLAB_BROKEN_LESSONS="${tests_folder}/broken_lessons")
-frictionlab_web_test(test_user_lessons frictionlab_classroom_state)
+frictionlab_web_test(classroom_state/test_user_lessons frictionlab_classroom_state)

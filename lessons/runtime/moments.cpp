@@ -117,7 +117,7 @@ void check_moments(LessonBuild& build, std::optional<double> duration) {
       }
     }
     // With other values the lesson may last longer (or less): that is checked where the moment
-    // is shown with them (tests/test_snapshots.cpp).
+    // is shown with them (tests/scenarios/test_snapshots.cpp).
     if (duration && moment.set.empty() && moment.at > *duration) {
       std::ostringstream message;
       message << where << "at = " << moment.at << " s is after the lesson's end, at " << *duration << " s";

@@ -1,0 +1,271 @@
+// The overlays say what the solver did: arrows are as long as the recorded forces, contacts
+// are marked with their recorded state, and the forces on a sticking block add up to zero.
+// These need no OpenGL; test_headless_render checks the same things in the pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "draw/frame.h"
+#include "draw/overlays.h"
+#include "tests/lesson_scripts.h"
+#include "tests/rendering.h"
+
+namespace frictionlab::ui {
+namespace {
+
+// The result points into `forces`: keep the vector (a temporary is refused).
+const ForceOnBody* find_force(std::vector<ForceOnBody>&&, ForceKind) = delete;
+const ForceOnBody* find_force(const std::vector<ForceOnBody>& forces, ForceKind kind) {
+  for (const ForceOnBody& force : forces) {
+    if (force.kind == kind) return &force;
+  }
+  return nullptr;
+}
+
+const ContactRecord& block_on_bench(const Scene& scene) {
+  const ContactRecord* record = scene.friction().find(scene.body("block"), scene.body("ground"));
+  if (record == nullptr) throw std::runtime_error("the block does not touch the bench");
+  return *record;
+}
+
+// Spring pull at 0.5 s: the spring pulls 2.5 N, well below mu_s·N = 4.4 N.
+TEST(Overlays, FrictionArrowIsTheRecordedFrictionWhileTheBlockSticks) {
+  LessonAt at("spring_pull", {}, 0.5);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  ASSERT_EQ(main_body(scene), block);
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::sticking);
+
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  const b2Vec2 recorded = record.friction_on(block);
+  EXPECT_NEAR(friction->force.x, recorded.x, 1e-6);
+  EXPECT_NEAR(friction->force.y, recorded.y, 1e-6);
+  EXPECT_GT(std::abs(recorded.x), 2.0);  // a real force, not a zero that matches anything
+
+  // Sticking: friction answers the pull exactly, so everything on the block adds up to zero
+  // (within float rounding of a 10 N weight).
+  b2Vec2 net{0.0f, 0.0f};
+  for (const ForceOnBody& force : forces) net += force.force;
+  EXPECT_LT(net.Length(), 1e-4f);
+
+  // (test_headless_render finds the arrow in the picture and measures its length there.)
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(marks[0].state, ContactState::sticking);
+}
+
+// Mid-slip, the arrow is kinetic friction: mu_k·N against the motion.
+TEST(Overlays, FrictionArrowIsKineticFrictionMidSlip) {
+  LessonAt at("spring_pull", {}, 1.2);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::slipping);
+  ASSERT_GT(block->GetLinearVelocity().x, 0.01f);
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  const double mu_k = at.lesson->parameter("mu_k").value;
+  const double weight = block->GetMass() * 9.81;
+  EXPECT_NEAR(friction->force.x, -mu_k * weight, 1e-3 * mu_k * weight);
+  const std::vector<ContactMark> marks = contact_marks(scene);
+  ASSERT_EQ(marks.size(), 1u);
+  EXPECT_EQ(marks[0].state, ContactState::slipping);
+  EXPECT_GT(marks[0].sliding_velocity * marks[0].tangent.x, 0.0);  // the block slides forward
+}
+
+// With a viscous term the drag has an arrow of its own, c times the sliding speed against the
+// motion, and the friction arrow stays the dry mu_k·N.
+TEST(Overlays, DragIsDrawnApartFromDryFriction) {
+  LessonAt at("spring_pull", {{"c", "2"}}, 1.2);
+  const Scene& scene = at.scene();
+  const b2Body* block = scene.body("block");
+  const ContactRecord& record = block_on_bench(scene);
+  ASSERT_EQ(record.state, ContactState::slipping);
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  const ForceOnBody* drag = find_force(forces, ForceKind::drag);
+  ASSERT_TRUE(friction && drag);
+  const double weight = block->GetMass() * 9.81;
+  EXPECT_NEAR(friction->force.x, -0.35 * weight, 1e-3 * weight);
+  const double speed = block->GetLinearVelocity().x;
+  ASSERT_GT(speed, 0.05);
+  // The drag was applied at the start of the step, the speed is read at its end: within 2 %.
+  EXPECT_NEAR(drag->force.x, -2.0 * speed, 0.02 * 2.0 * speed);
+  // Without c there is no drag arrow at all.
+  LessonAt dry("spring_pull", {}, 1.2);
+  const std::vector<ForceOnBody> dry_forces = forces_on(dry.scene(), dry.scene().body("block"));
+  EXPECT_EQ(find_force(dry_forces, ForceKind::drag), nullptr);
+}
+
+// A ground{} is drawn as ground and left out of the framing; a long incline is not ground.
+TEST(Overlays, OnlyAGroundIsTakenForGround) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "metal", mu_s = 0.3, mu_k = 0.2 }
+ground { material = "metal" }
+local slope = incline { "slope", material = "metal", angle = 10, length = 150 }
+box { "block", material = "wood", width = 0.4, height = 0.2, on = slope, at = 1, mass = 1 }
+)"));
+  lessons::Lesson lesson(script.path());
+  const Scene& scene = lesson.scene();
+  EXPECT_TRUE(lessons::is_ground(scene.body("ground")->GetFixtureList()));
+  EXPECT_FALSE(lessons::is_ground(scene.body("slope")->GetFixtureList()));
+  EXPECT_FALSE(lessons::is_ground(scene.body("block")->GetFixtureList()));
+  // The framing covers the 150 m slope (about 148 m along the ground) but not the 400 m ground.
+  const b2AABB bounds = lessons::lesson_bounds(scene);
+  EXPECT_GT(bounds.upperBound.x - bounds.lowerBound.x, 140.0f);
+  EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 160.0f);
+}
+
+// A floor of strips (edges with a slab under each, none wide alone) is ground as a whole: left
+// out of the framing, which then covers the box alone.
+TEST(Overlays, AFloorOfStripsIsGround) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+pair { "wood", "ice", mu_s = 0.1, mu_k = 0.05 }
+local floor = ground { "floor", strips = { { "wood", to = 1 }, { "ice", to = 4 }, { "wood" } } }
+box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0, mass = 1 }
+)"));
+  lessons::Lesson lesson(script.path());
+  const Scene& scene = lesson.scene();
+  for (const b2Fixture* f = scene.body("floor")->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+    EXPECT_TRUE(lessons::is_ground(f));
+  }
+  const b2AABB bounds = lessons::lesson_bounds(scene);
+  EXPECT_LT(bounds.upperBound.x - bounds.lowerBound.x, 0.5f);
+}
+
+// A box tipping over its front edge: the floor's push has moved to that edge, which is where
+// the normal arrow starts.
+TEST(Overlays, NormalForceActsAtTheFrontEdgeOfATippingBox) {
+  LessonAt at("tipping_box", {}, 2.2);
+  const Scene& scene = at.scene();
+  const b2Body* box = scene.body("box");
+  ASSERT_LT(box->GetAngle(), -0.01f);  // tipping clockwise
+  const std::vector<ForceOnBody> forces = forces_on(scene, box);
+  const ForceOnBody* normal = find_force(forces, ForceKind::normal);
+  ASSERT_NE(normal, nullptr);
+  const b2Vec2 front_edge = box->GetWorldPoint({0.25f, -0.5f});
+  EXPECT_NEAR(normal->point.x, front_edge.x, 0.02);
+  // Standing still, the floor holds it up at its middle.
+  LessonAt start("tipping_box", {}, 0.1);
+  const std::vector<ForceOnBody> at_rest = forces_on(start.scene(), start.scene().body("box"));
+  const ForceOnBody* resting = find_force(at_rest, ForceKind::normal);
+  ASSERT_NE(resting, nullptr);
+  EXPECT_NEAR(resting->point.x, start.scene().body("box")->GetWorldCenter().x, 0.02);
+}
+
+// Weight and normal force of a block on level ground lie along one line; they are drawn side
+// by side, each keeping its length and direction.
+TEST(Overlays, ArrowsAlongOneLineAreDrawnSideBySide) {
+  LessonAt at("spring_pull", {}, 0.5);
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const std::vector<ScreenArrow> arrows =
+      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, at.framing, display, 1.0f));
+  const ScreenArrow* weight = nullptr;
+  const ScreenArrow* normal = nullptr;
+  for (const ScreenArrow& arrow : arrows) {
+    if (arrow.force.kind == ForceKind::weight) weight = &arrow;
+    if (arrow.force.kind == ForceKind::normal) normal = &arrow;
+  }
+  ASSERT_TRUE(weight && normal);
+  EXPECT_GE(std::abs(weight->tail.x - normal->tail.x), 8.0f);
+  EXPECT_NEAR(weight->tip.x, weight->tail.x, 1e-3f);  // still vertical
+  EXPECT_NEAR(normal->tip.x, normal->tail.x, 1e-3f);
+}
+
+// A block on a table pulled by a hanging weight over a pulley: the rope's tension is on the
+// block's diagram, and its forces add up to mass times acceleration.
+TEST(Overlays, ARopeOverAPulleyPullsWithItsTensionAndTheForcesAddUpToMassTimesAcceleration) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "metal", mu_s = 0.3, mu_k = 0.2 }
+local table_top = box { "table", material = "metal", kind = "static", width = 6, height = 1, x = 0, y = -0.5 }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, x = 0, y = 0.1 + resting_gap, mass = 2 }
+local weight = box { "weight", material = "wood", width = 0.2, height = 0.2, x = 3.2, y = -1, mass = 1 }
+rope { "rope", from = block, over = { 3.2, block.y }, to = weight }
+)"));
+  lessons::Lesson lesson(script.path());
+  lessons::run_for(lesson, 0.5);
+  const Scene& scene = lesson.scene();
+  const b2Body* block = scene.body("block");
+  const std::vector<ForceOnBody> forces = forces_on(scene, block);
+  const ForceOnBody* rope = find_force(forces, ForceKind::tension);
+  ASSERT_NE(rope, nullptr);
+  // a = (m2 - mu_k·m1)·g / (m1 + m2) and the tension m1·a + mu_k·m1·g, within the step's error.
+  const double a = (1.0 - 0.2 * 2.0) * 9.81 / 3.0, tension = 2.0 * a + 0.2 * 2.0 * 9.81;
+  EXPECT_NEAR(rope->force.x, tension, 0.01 * tension);
+  b2Vec2 net{0.0f, 0.0f};
+  for (const ForceOnBody& force : forces) net += force.force;
+  EXPECT_NEAR(net.x, 2.0 * a, 0.02 * 2.0 * a);
+  EXPECT_NEAR(net.y, 0.0, 0.02);
+}
+
+TEST(Overlays, QuantitiesAreWrittenAsAClassroomWritesThem) {
+  EXPECT_EQ(format_quantity(4.4146, "N"), "4.41 N");
+  EXPECT_EQ(format_quantity(98.1, "N"), "98.1 N");
+  EXPECT_EQ(format_quantity(103.4, "N"), "103 N");
+  EXPECT_EQ(format_quantity(-0.0357, "N"), "\u22120.0357 N");
+  EXPECT_EQ(format_quantity(0.0, "J"), "0 J");
+  EXPECT_EQ(format_quantity(4.2e-8, "J"), "4.2\u00d710\u207b\u2078 J");
+  // A mantissa that rounds up to 10 moves the power on (push's error read "+10×10⁻⁴ N").
+  EXPECT_EQ(format_quantity(9.99e-4, "N"), "1\u00d710\u207b\u00b3 N");
+  EXPECT_EQ(format_quantity(-9.97e-5, "m"), "\u22121\u00d710\u207b\u2074 m");
+}
+
+// The slipping word says which way the upper body slides over the lower one, whichever of the
+// two Box2D made body A: on stacked_blocks once the top block slips, the top block goes back
+// over the bottom one while the pair goes forward over the floor.
+TEST(Overlays, TheSlippingWordGivesTheUpperBodysWayOverTheLowerOne) {
+  lessons::Lesson lesson(lessons::resolve_lesson("stacked_blocks"));
+  lesson.step_to(4.2);
+  const b2Body* top = lesson.scene().body("top");
+  const b2Body* floor = lesson.scene().body("floor");
+  int checked = 0;
+  for (const ContactMark& mark : contact_marks(lesson.scene())) {
+    if (mark.body_a == top || mark.body_b == top) {
+      EXPECT_EQ(contact_word(mark), "\u2190 slipping");
+      ++checked;
+    } else if (mark.body_a == floor || mark.body_b == floor) {
+      EXPECT_EQ(contact_word(mark), "slipping \u2192");
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2);
+}
+
+// A contact with no friction (mu_s = mu_k = 0) neither sticks nor slips: its word says so, at
+// rest or sliding, and only the sliding one is probed as slipping. The listener's own state
+// calls both "slipping", which is what was drawn: "slipping \u2192" under a box standing still.
+TEST(Overlays, AFrictionlessContactIsNeitherStickingNorSlipping) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "ice", "ice", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+box { "still", material = "ice", width = 0.4, height = 0.2, on = floor, at = -2 }
+box { "moving", material = "ice", width = 0.4, height = 0.2, on = floor, at = 2, velocity = { 1, 0 } }
+)"));
+  LessonAt at(script.path(), {}, 0.5);
+  const Scene& scene = at.scene();
+  int checked = 0;
+  for (const ContactMark& mark : contact_marks(scene)) {
+    EXPECT_EQ(contact_word(mark), "frictionless");
+    const ContactRecord* record = nullptr;
+    for (const ContactRecord& r : scene.friction().contacts()) {
+      if (r.body_a == mark.body_a && r.body_b == mark.body_b) record = &r;
+    }
+    ASSERT_NE(record, nullptr);
+    const bool moving = mark.body_a == scene.body("moving") || mark.body_b == scene.body("moving");
+    EXPECT_EQ(record->seen_slipping(), moving);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+  // With friction, the words are the states' as before.
+  LessonAt rough("push", {}, 0.5);
+  for (const ContactMark& mark : contact_marks(rough.scene())) EXPECT_EQ(contact_word(mark), "sticking");
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

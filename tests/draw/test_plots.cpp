@@ -1,0 +1,553 @@
+// Lesson plots laid out and drawn by the chart engine: theory curves sampled from the
+// script's functions (points on f(x), nil splitting a curve, jumps kept as jumps), the branch
+// that applies drawn bold, and the legend kept off the data.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "draw/chart.h"
+#include "draw/headless.h"
+#include "draw/imgui_host.h"
+#include "draw/panels.h"
+#include "draw/plots.h"
+#include "draw/words.h"
+#include "lessons/runtime/catalog.h"
+#include "lessons/runtime/class_words.h"
+#include "tests/classroom_hands.h"
+#include "tests/lesson_scripts.h"
+#include "tests/rendering.h"
+
+namespace frictionlab::ui {
+namespace {
+
+using lessons::Lesson;
+using lessons::ScriptFile;
+using lessons::with_heading;
+
+// Fonts for measuring text, as a frame has them at 1280 × 720.
+struct FontsForLayout {
+  HeadlessContext gl;
+  ImGuiHost host{nullptr};
+  const Fonts& fonts = host.prepare(1.0f, ThemeName::light);
+};
+
+FontsForLayout& measuring() {
+  static FontsForLayout fonts;
+  fonts.host.make_current();
+  return fonts;
+}
+
+const ImVec2 corner(10.0f, 20.0f), area(600.0f, 300.0f);
+
+// A ramp up to t = 1, nothing from 1 to 2, a constant after: two pieces, each on f(t).
+TEST(TheoryCurves, PointsLieOnTheFunctionAndANilSplitsTheCurve) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "height", unit = "m", function() return block.y end }
+plot { "ramp", kind = "time", y = { "height" },
+       theory = { { "ramp then flat", function(t) if t < 1 then return 2 * t elseif t > 2 then return 3 end end } } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const auto f = [](double t) { return t < 1 ? 2 * t : 3.0; };
+
+  // In the lesson's own numbers: every point on f, the first piece ending at t = 1, the
+  // second starting at t = 2 (bisected to a billionth of the range).
+  const lessons::TheorySamples& samples = lesson.theory_samples(0, 0.0, 4.0, 64);
+  ASSERT_EQ(samples.curves.size(), 1u);
+  ASSERT_EQ(samples.curves[0].size(), 2u) << "the nil between t = 1 and 2 must split the curve";
+  for (const auto& piece : samples.curves[0]) {
+    for (const lessons::TheoryPoint& p : piece) EXPECT_DOUBLE_EQ(p.y, f(p.x)) << "at t = " << p.x;
+  }
+  EXPECT_NEAR(samples.curves[0][0].back().x, 1.0, 1e-8);
+  EXPECT_NEAR(samples.curves[0][1].front().x, 2.0, 1e-8);
+  EXPECT_EQ(&lesson.theory_samples(0, 0.0, 4.0, 64), &samples) << "the same range must not sample again";
+
+  // On the screen: each polyline point within a pixel of f at its x.
+  const ChartLayout layout = layout_plot(lesson, 0, 10.0, corner, area, measuring().fonts);
+  ASSERT_EQ(layout.theory.size(), 1u);
+  ASSERT_EQ(layout.theory[0].size(), 2u);
+  std::size_t checked = 0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (const ImVec2& p : layout.theory[0][k]) {
+      // t read back from the pixel; each piece its own branch (t read back at the ramp's end
+      // may fall a hair past 1).
+      const double t = layout.x_low + (p.x - layout.low_left.x) / (layout.high_right.x - layout.low_left.x) * (layout.x_high - layout.x_low);
+      EXPECT_NEAR(p.y, layout.to_screen(t, k == 0 ? 2 * t : 3.0).y, 1.0) << "at t = " << t;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100u);
+}
+
+// A law of velocity with a jump at v = 0 and the static range there: the jump is vertical
+// (no slanted line between samples either side), and the vertical segment is drawn.
+TEST(TheoryCurves, AJumpStaysAJumpAndTwoNumbersDrawAVerticalSegment) {
+  ScriptFile script(with_heading(R"lua(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "v", unit = "m/s", function() return block.vx end }
+probe { "f", unit = "N", function() return 0 end }
+plot { "law", kind = "xy", x = "v", y = { "f" },
+       theory = { { "F(v)", function(v)
+         if v > 0 then return -3.4 - 0.5 * v elseif v < 0 then return 3.4 - 0.5 * v else return -4.4, 4.4 end
+       end } } }
+)lua"));
+  Lesson lesson(script.path());
+  const lessons::TheorySamples& samples = lesson.theory_samples(0, -1.0, 1.0, 33);
+  ASSERT_EQ(samples.curves[0].size(), 1u);
+  const auto& points = samples.curves[0][0];
+  bool reached_top = false, reached_bottom = false;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const double rise = std::abs(points[i].y - points[i - 1].y), run = points[i].x - points[i - 1].x;
+    EXPECT_GE(run, 0.0);
+    if (rise > 0.1) {
+      EXPECT_LT(run, 1e-8) << "a slanted jump between v = " << points[i - 1].x << " and " << points[i].x;
+    }
+    reached_top = reached_top || (points[i].x == 0.0 && points[i].y == 4.4);
+    reached_bottom = reached_bottom || (points[i].x == 0.0 && points[i].y == -4.4);
+  }
+  EXPECT_TRUE(reached_top && reached_bottom) << "the static range at v = 0 must be drawn";
+}
+
+// spring_pull's friction against the pull: the sticking branch bold while the block sticks,
+// the sliding one while it slides; each bold curve within a pixel of the law.
+TEST(TheoryCurves, SpringPullMarksTheBranchThatApplies) {
+  LessonAt at("spring_pull", {}, 0.5);  // the pull is 2.5 N, below μs·N = 4.41 N: stuck
+  const std::size_t plot = 1;
+  ASSERT_EQ(at.lesson->plots()[plot].title, "Friction against the pull");
+  ASSERT_EQ(at.lesson->plots()[plot].theory.size(), 2u);
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 0.0);
+  ChartLayout layout = layout_plot(*at.lesson, plot, 10.0, corner, area, measuring().fonts);
+  EXPECT_EQ(layout.active, 0) << "sticking";
+  while (at.scene().probe("slipping").history.back() == 0.0 && at.scene().time() < 3.0) at.lesson->step();
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 1.0) << "the block never broke away";
+  for (int i = 0; i < 10; ++i) at.lesson->step();  // well into the slide
+  ASSERT_EQ(at.scene().probe("slipping").history.back(), 1.0);
+  layout = layout_plot(*at.lesson, plot, 10.0, corner, area, measuring().fonts);
+  EXPECT_EQ(layout.active, 1) << "sliding";
+  // The sliding branch is −μk·N = −0.35 · 9.81 N at every pull.
+  for (const ImVec2& p : layout.theory[1].front()) EXPECT_NEAR(p.y, layout.to_screen(0.0, -0.35 * 9.81).y, 1.0);
+  const Chart chart = plot_chart(*at.lesson, plot, 10.0, theme(ThemeName::light));
+  EXPECT_TRUE(chart.message.empty()) << chart.message;
+}
+
+// Without active functions the branch nearest the latest point is the one that applies.
+TEST(TheoryCurves, NearestCurveIsTheOnePassingClosest) {
+  const std::vector<CurvePieces> curves = {{{ImVec2(0, 0), ImVec2(100, 100)}}, {{ImVec2(0, 50), ImVec2(100, 50)}}};
+  EXPECT_EQ(nearest_curve(curves, ImVec2(80, 78)), 0);
+  EXPECT_EQ(nearest_curve(curves, ImVec2(10, 48)), 1);
+  EXPECT_EQ(nearest_curve({}, ImVec2(10, 48)), -1);
+}
+
+// A curve that fails only further along than the load tries: the plot says where, the
+// lesson runs on, and the plot keeps its measured points.
+TEST(TheoryCurves, AScriptErrorInACurveIsWrittenInThePlotAndTheLessonRunsOn) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "height", unit = "m", function() return block.y end }
+plot { "late", kind = "time", y = { "height" }, theory = { { "law", function(t)
+  if t > 2 then return rate * t end return 0 end } } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const Chart chart = plot_chart(lesson, 0, 10.0, theme(ThemeName::light));
+  EXPECT_EQ(chart.message.rfind(script.path() + ":7: ", 0), 0u) << chart.message;
+  EXPECT_NE(chart.message.find("'rate' is not defined"), std::string::npos) << chart.message;
+  EXPECT_TRUE(chart.theory.empty());
+  EXPECT_EQ(chart.series.size(), 1u);
+  EXPECT_FALSE(lesson.failed());
+  lesson.step();
+  EXPECT_GT(lesson.scene().time(), 0.5);
+}
+
+bool covers(const ChartLayout& layout, ImVec2 p) {
+  return p.x >= layout.legend_min.x && p.x <= layout.legend_max.x && p.y >= layout.legend_min.y && p.y <= layout.legend_max.y;
+}
+
+// Every built-in lesson's plots, part way through: no measured point under the legend.
+TEST(PlotLegends, SitOnNoDataPointInAnyBuiltInLesson) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 2.0);
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const ChartLayout layout = layout_plot(*at.lesson, plot, at.lesson->duration(), corner, area, measuring().fonts);
+      ASSERT_FALSE(layout.points.empty());
+      for (const ImVec2& p : layout.points) {
+        EXPECT_FALSE(covers(layout, p)) << name << ", plot " << plot << ": the legend covers the point at " << p.x << ", " << p.y;
+      }
+    }
+  }
+}
+
+// A curve that fills the plot leaves no corner free: the legend goes above the data area.
+TEST(PlotLegends, GoAboveTheDataWhenNoCornerIsFree) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "wave", unit = "m", function() return math.sin(80 * time()) end }
+probe { "other", unit = "m", function() return math.cos(80 * time()) end }
+plot { "waves", kind = "time", y = { "wave", "other" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(lesson.duration());
+  const ChartLayout layout = layout_plot(lesson, 0, lesson.duration(), corner, area, measuring().fonts);
+  EXPECT_TRUE(layout.legend_outside);
+  EXPECT_LE(layout.legend_max.y, layout.high_right.y);
+  for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
+}
+
+// Five keys in a short plot, its data all on the left (early in a run): the free corner on the
+// right is too short for the legend, which used to run out of it over the x axis and its
+// labels. It goes above or beside the data instead, and covers no point.
+TEST(PlotLegends, ATallLegendDoesNotRunOutOfAFreeCorner) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+for i = 1, 5 do probe { "series_" .. i, unit = "m", function() return i * time() end } end
+plot { "many", kind = "time", y = { "series_1", "series_2", "series_3", "series_4", "series_5" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.3);
+  const ChartLayout layout = layout_plot(lesson, 0, 5.0, corner, ImVec2(420.0f, 130.0f), measuring().fonts);
+  ASSERT_TRUE(layout.drawable);
+  EXPECT_LE(layout.legend_max.y, layout.low_left.y) << "the legend runs out over the x axis";
+  for (const ImVec2& p : layout.points) EXPECT_FALSE(covers(layout, p));
+}
+
+// Finite values at the ends of what a double holds (±1.7e308): their span overflows, and the
+// plot used to come out blank. Every point lands in the data area, and the tick labels stay
+// short (1.5e+308, not 309 digits).
+TEST(PlotLegends, ValuesNearTheLargestDoubleAreDrawn) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "huge", unit = "m", function() return 1.7e308 * math.sin(20 * time()) end }
+plot { "huge", kind = "time", y = { "huge" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.5);
+  const ChartLayout layout = layout_plot(lesson, 0, lesson.duration(), corner, area, measuring().fonts);
+  ASSERT_GT(layout.points.size(), 100u);
+  for (const ImVec2& p : layout.points) {
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+    EXPECT_GE(p.y, layout.high_right.y - 1.0f);
+    EXPECT_LE(p.y, layout.low_left.y + 1.0f);
+  }
+  EXPECT_EQ(tick_text(1.5e308, 5e307), "1.5e+308");
+  EXPECT_EQ(tick_text(-2e12, 1e12), "\u22122e+12");
+  EXPECT_EQ(tick_text(250.0, 50.0), "250");
+}
+
+// The legend corner: the one free of points, the top left first.
+TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
+  const ImVec2 low(0, 0), high(200, 100), size(50, 20);
+  const LegendPlace empty = legend_corner(low, high, size, 5, {}, 2);
+  EXPECT_TRUE(empty.clear);
+  EXPECT_EQ(empty.min.x, 5.0f);
+  EXPECT_EQ(empty.min.y, 5.0f);
+  // Points along the top: a bottom corner.
+  const LegendPlace below = legend_corner(low, high, size, 5, {ImVec2(20, 10), ImVec2(180, 10)}, 2);
+  EXPECT_TRUE(below.clear);
+  EXPECT_EQ(below.min.y, 75.0f);
+  // A point in every corner: not clear.
+  EXPECT_FALSE(legend_corner(low, high, size, 5, {ImVec2(10, 10), ImVec2(190, 10), ImVec2(10, 90), ImVec2(190, 90)}, 2).clear);
+}
+
+// Projector text, 2.025 times the window's, on a context of its own made once.
+const Fonts& projector_fonts() {
+  static FontsForLayout* large = [] {
+    auto* fonts = new FontsForLayout;
+    fonts->host.prepare(2.025f, ThemeName::light);
+    return fonts;
+  }();
+  large->host.make_current();
+  return large->host.fonts();
+}
+
+// Projector text (2 times larger) in the plot the window gives terrain on a 1920 × 1080
+// projector: four series and the slipping band. Before, the legend's rows above the data left
+// it no height and the plot was drawn empty; the y labels were printed on top of each other.
+TEST(TheoryCurves, AManyKeyedPlotWithLargeTextKeepsItsDataAndSpacesItsLabels) {
+  const Fonts& fonts = projector_fonts();
+  LessonAt at("terrain", {}, 2.5);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(590.0f, 200.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  EXPECT_GT(layout.low_left.y - layout.high_right.y, 0.25f * 200.0f) << "the data area lost its height";
+  EXPECT_FALSE(layout.points.empty());
+  for (std::size_t i = 1; i < layout.y_ticks.size(); ++i) {
+    const float gap = layout.to_screen(0.0, layout.y_ticks[i - 1]).y - layout.to_screen(0.0, layout.y_ticks[i]).y;
+    EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "y labels " << layout.y_tick_labels[i - 1] << " and "
+                                                << layout.y_tick_labels[i] << " overlap";
+  }
+}
+
+// Projector text in a short plot (spring_pull's forces at the run's end, ±9 N): the y axis kept
+// one tick, "0", and could not be read. Its ends are labelled instead.
+TEST(TheoryCurves, AShortPlotWithLargeTextStillLabelsTwoValuesOnItsYAxis) {
+  const Fonts& fonts = projector_fonts();
+  LessonAt at("spring_pull", {}, 3.0);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(560.0f, 190.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  ASSERT_GE(layout.y_ticks.size(), 2u);
+  const float gap = layout.to_screen(0.0, layout.y_ticks.front()).y - layout.to_screen(0.0, layout.y_ticks.back()).y;
+  EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
+}
+
+// Round values, and zero, rather than the ends: pulley's rope and table forces (−4.4 to 4.8 N)
+// in a short projector plot read "−4.4" and "4.8" and nothing between (the trial), since steps
+// of 5 left only 0. Round values a little closer, 4 apart, fit: −4, 0, 4.
+TEST(TheoryCurves, AShortPlotsFewYLabelsAreRoundValuesWithZero) {
+  const Fonts& fonts = projector_fonts();
+  LessonAt at("pulley", {}, 0.6);
+  const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(1100.0f, 250.0f), fonts);
+  ASSERT_TRUE(layout.drawable);
+  ASSERT_GE(layout.y_ticks.size(), 2u);
+  EXPECT_NE(std::find(layout.y_ticks.begin(), layout.y_ticks.end(), 0.0), layout.y_ticks.end()) << "0 is labelled";
+  for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
+    EXPECT_EQ(layout.y_ticks[i], std::round(layout.y_ticks[i])) << layout.y_tick_labels[i] << " is no round value";
+    if (i > 0) {
+      const float gap = layout.to_screen(0.0, layout.y_ticks[i - 1]).y - layout.to_screen(0.0, layout.y_ticks[i]).y;
+      EXPECT_GE(gap, 1.3f * fonts.small->FontSize) << "the labels would overlap";
+    }
+  }
+}
+
+// A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
+// window's μs and μk, theta and omega their letters, a_x as aₓ.
+TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
+  EXPECT_EQ(lessons::class_words("friction_force"), "friction force");
+  EXPECT_EQ(lessons::class_words("slide_reduced"), "slide reduced");
+  EXPECT_EQ(lessons::class_words("mu_s"), "\u03bcs");
+  EXPECT_EQ(lessons::class_words("mu_k_top"), "\u03bck top");
+  EXPECT_EQ(lessons::class_words("six_feet_load_"), "six feet load");
+  EXPECT_EQ(lessons::class_words("__a__b"), "a b");
+  EXPECT_EQ(lessons::class_words("lubricated_mu"), "lubricated \u03bc");
+  EXPECT_EQ(lessons::class_words("mu_x"), "\u03bc x");
+  EXPECT_EQ(lessons::class_words("music_k"), "music k") << "mu only as a word of its own";
+  EXPECT_EQ(lessons::class_words("speed"), "speed");
+  // The Greek letters wedge's sliders spelt out, and a letter's index below the line.
+  EXPECT_EQ(lessons::class_words("theta0"), "\u03b80");
+  EXPECT_EQ(lessons::class_words("omega"), "\u03c9");
+  EXPECT_EQ(lessons::class_words("a_x"), "a\u2093");
+  EXPECT_EQ(lessons::class_words("a_x_omega"), "a\u2093 \u03c9");
+  EXPECT_EQ(lessons::class_words("large_epsilon_distance"), "large \u03b5 distance") << "where_methods_fail's probes";
+  EXPECT_EQ(lessons::class_words("thetas"), "thetas") << "the letter's name with only digits after it";
+  EXPECT_EQ(lessons::class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
+  EXPECT_EQ(lessons::class_words("x_top"), "x top") << "an index is one letter";
+  lessons::Parameter push_rate;
+  push_rate.name = "push_rate";
+  EXPECT_EQ(lessons::parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
+}
+
+// What reads as a program's name rather than the subject's words: two word characters joined by
+// an underscore ("W_a", "asphalt_box"), or a Greek letter's name spelt out as a word of its own
+// ("theta0", "omega"); "" when none. (A scan by hand: GCC 12 warns inside <regex> under the
+// sanitizers' build, where warnings are errors.)
+std::string identifier_in(const std::string& text) {
+  const auto word_character = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  for (std::size_t i = 1; i + 1 < text.size(); ++i) {
+    if (text[i] == '_' && word_character(text[i - 1]) && word_character(text[i + 1])) return text.substr(i - 1, 3);
+  }
+  std::string lower = text;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const std::string name : {"theta", "omega", "alpha", "epsilon"}) {
+    for (std::size_t at = lower.find(name); at != std::string::npos; at = lower.find(name, at + 1)) {
+      const std::size_t end = at + name.size();
+      if ((at == 0 || !letter(lower[at - 1])) && (end == lower.size() || !letter(lower[end]))) return text.substr(at, name.size());
+    }
+  }
+  return "";
+}
+
+// The trial: theory rows and legends named "W_a + W_g" and "asphalt_box: distance", sliders
+// named theta0 and omega. Every built-in lesson's names as the class reads them, in the window
+// (sliders, theory rows, the plot shown, tabs, at the run's end with the theory shown) and in
+// every plot of it (title, axes, legend: series, theory curves, shading), its predictions'
+// questions and its parameters' names and choices: none is a program's identifier. The menu
+// bar's path to the script is a file's name, not a name the lesson gives.
+TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
+  ASSERT_EQ(identifier_in("W_a + W_g"), "W_a");
+  ASSERT_NE(identifier_in("theta0"), "");
+  ASSERT_EQ(identifier_in("\u03b80 and \u03c9, a\u2093, asphalt box: distance"), "");
+  ASSERT_EQ(identifier_in("Omegas"), "") << "only the word itself";
+  int names = 0;
+  const auto check = [&](const std::string& lesson, const std::string& where, const std::string& text) {
+    ++names;
+    EXPECT_EQ(identifier_in(text), "") << lesson << ", " << where << ": \"" << text << "\"";
+  };
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options;
+    options.lesson = entry.name;
+    options.window.predictions = false;  // the theory table shown from the start
+    ClassroomHands hands(options);
+    lessons::Lesson& lesson = hands.lesson();
+    hands.classroom().playback().run_to(lesson.duration());
+    std::istringstream shown(hands.texts());
+    for (std::string line; std::getline(shown, line);) {
+      if (line.find(".lua") == std::string::npos) check(entry.name, "in the window", line);
+    }
+    for (std::size_t i = 0; i < lesson.plots().size(); ++i) {
+      const Chart chart = plot_chart(lesson, i, lesson.duration(), theme(ThemeName::light));
+      const std::string plot = "plot " + std::to_string(i + 1);
+      for (const std::string& text : {chart.title, chart.x_label, chart.y_label, chart.band_name}) check(entry.name, plot, text);
+      for (const ChartSeries& series : chart.series) check(entry.name, plot + "'s legend", series.name);
+      for (const ChartCurve& curve : chart.theory) check(entry.name, plot + "'s theory", curve.name);
+      for (const auto& [key, colour] : chart.colour_keys) check(entry.name, plot + "'s legend", key);
+    }
+    for (const lessons::ExpectationResult& row : lesson.expectations()) check(entry.name, "theory row", row.name);
+    for (const lessons::Prediction& prediction : lesson.predictions()) {
+      check(entry.name, "prediction", prediction.question);
+      for (const std::string& choice : prediction.choices) check(entry.name, "prediction's choice", choice);
+    }
+    for (const lessons::Parameter& parameter : lesson.parameters()) {
+      check(entry.name, "slider", lessons::parameter_title(parameter));
+      for (const std::string& choice : parameter.choices) check(entry.name, "slider's choice", choice);
+    }
+  }
+  EXPECT_GE(names, 1000);
+}
+
+// A script's path in the room the menu bar has: whole, else whole folders from its start and the
+// whole file name, else the file name with its middle left out; never wider than the room.
+TEST(ClassWords, APathIsShortenedInTheMiddleToFitNeverCut) {
+  FontsForLayout& fonts = measuring();
+  ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 720.0f);
+  fonts.host.begin_frame();  // the window's font, as the menu bar has it
+  const auto width = [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; };
+  const std::string path = "/home/ann/physics/week_7/file.lua";
+  EXPECT_EQ(path_that_fits(path, width(path)), path);
+  EXPECT_EQ(path_that_fits(path, width(path) - 1.0f), "/home/ann/physics/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("/home/ann/\u2026/file.lua") + 1.0f), "/home/ann/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("/\u2026/file.lua")), "/\u2026/file.lua");
+  EXPECT_EQ(path_that_fits(path, width("fil\u2026lua")), "fil\u2026lua");
+  EXPECT_EQ(path_that_fits(path, width("\u2026")), "\u2026");
+  EXPECT_EQ(path_that_fits(path, 0.0f), "");
+  for (float room = 0.0f; room < width(path) + 10.0f; room += 3.0f) {
+    EXPECT_LE(width(path_that_fits(path, room)), room) << "in " << room << " points";
+  }
+  ImGui::EndFrame();
+}
+
+// Every plot of every built-in lesson names its probes in words on its axes and in its legend:
+// no identifier with an underscore reaches the class (check_the_article's "friction_force",
+// wedge's "slide_reduced" did).
+TEST(PlotLegends, NameEveryBuiltInLessonsProbesInWords) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 1.0);
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const Chart chart = plot_chart(*at.lesson, plot, at.lesson->duration(), theme(ThemeName::light));
+      const std::string where = name + ", plot " + std::to_string(plot) + ": ";
+      EXPECT_EQ(chart.x_label.find('_'), std::string::npos) << where << chart.x_label;
+      EXPECT_EQ(chart.y_label.find('_'), std::string::npos) << where << chart.y_label;
+      for (const ChartSeries& series : chart.series) EXPECT_EQ(series.name.find('_'), std::string::npos) << where << series.name;
+    }
+  }
+}
+
+// A probe's label, when the script gives one, is what the plot calls it; the others in words.
+TEST(PlotLegends, AProbesLabelIsItsNameOnThePlot) {
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "friction_force", unit = "N", function() return 1 end }
+probe { "f_reduced", unit = "N", label = "the reduced model's friction", function() return 2 end }
+plot { "both", kind = "time", y = { "friction_force", "f_reduced" } }
+plot { "one", kind = "xy", x = "friction_force", y = { "f_reduced" } }
+)"));
+  Lesson lesson(script.path());
+  lesson.step_to(0.1);
+  const Chart both = plot_chart(lesson, 0, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(both.series.size(), 2u);
+  EXPECT_EQ(both.series[0].name, "friction force");
+  EXPECT_EQ(both.series[1].name, "the reduced model's friction");
+  const Chart one = plot_chart(lesson, 1, lesson.duration(), theme(ThemeName::light));
+  EXPECT_EQ(one.x_label, "friction force (N)");
+  EXPECT_EQ(one.y_label, "the reduced model's friction (N)");
+}
+
+// A time plot shades what its shade probe says (a contact's slipping), named by it; without one,
+// any contact's slipping. stacked_blocks: the pair breaks away from the floor at 8.83 N (1.77 s
+// at 5 N/s) and the top block slips on the bottom one at 19.1 N (3.83 s).
+TEST(PlotBands, AShadeProbeChoosesWhichSlipAPlotShades) {
+  Lesson lesson(lessons::resolve_lesson("stacked_blocks"));
+  lesson.step_to(lesson.duration());
+  const double h = lesson.scene().frame_step();
+  const double floor_slips = 0.3 * 3.0 * 9.81 / 5.0, top_slips = (0.45 + 0.2) * 3.0 * 9.81 / 5.0;
+  const Chart friction = plot_chart(lesson, 0, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(friction.bands.size(), 1u);
+  EXPECT_NEAR(friction.bands[0].first, floor_slips, 2.0 * h);
+  EXPECT_EQ(friction.band_name, "floor slipping");
+  const Chart acceleration = plot_chart(lesson, 1, lesson.duration(), theme(ThemeName::light));
+  ASSERT_EQ(acceleration.bands.size(), 1u);
+  EXPECT_NEAR(acceleration.bands[0].first, top_slips, 2.0 * h);
+  EXPECT_NEAR(acceleration.bands[0].second, lesson.scene().times().back(), 1e-12);
+  EXPECT_EQ(acceleration.band_name, "top slipping");
+
+  // Without shade: every stretch when any contact slipped.
+  ScriptFile script(with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }
+probe { "speed", unit = "m/s", read = { block, "vx" } }
+plot { "slide", kind = "time", y = { "speed" } }
+)"));
+  Lesson sliding(script.path());
+  sliding.step_to(0.1);
+  const Chart any = plot_chart(sliding, 0, 0.1, theme(ThemeName::light));
+  ASSERT_EQ(any.bands.size(), 1u);
+  EXPECT_EQ(any.band_name, "slipping");
+}
+
+// check_the_article draws Coulomb's law and the article's equation as written on one plot: each
+// in a dash pattern and colour of its own, on the plot and in the legend's key, in both themes.
+TEST(TheoryCurves, EachCurveOfAPlotHasALookOfItsOwnOnThePlotAndInItsLegend) {
+  FontsForLayout& fonts = measuring();
+  LessonAt at("check_the_article", {}, 2.0);
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours);
+    ASSERT_EQ(chart.theory.size(), 2u);
+    const ChartCurve &right = chart.theory[0], &as_written = chart.theory[1];
+    EXPECT_NE(right.colour, as_written.colour) << theme_name(name);
+    EXPECT_NE(right.dash, as_written.dash) << theme_name(name);
+    // Six curves, six looks.
+    for (std::size_t i = 0; i < 6; ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        ChartCurve a, b;
+        give_theory_look(a, colours, i);
+        give_theory_look(b, colours, j);
+        EXPECT_TRUE(a.colour != b.colour || a.dash != b.dash || a.gap != b.gap) << i << " and " << j;
+      }
+    }
+    // Drawn: the vertices in each theory key's swatch are in its curve's colour, in as many
+    // dashes as its pattern gives.
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(1280.0f, 720.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    fonts.host.begin_frame();
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ChartLayout layout = draw_chart(draw, corner, area, chart, colours, fonts.fonts);
+    ASSERT_GE(layout.legend_at.size(), 2u);
+    int swatch_vertices[2] = {0, 0};
+    for (std::size_t c = 0; c < 2; ++c) {
+      const ImVec2 key = layout.legend_at[layout.legend_at.size() - 2 + c];
+      const float text = fonts.fonts.small->FontSize;
+      for (const ImDrawVert& vertex : draw->VtxBuffer) {
+        if (vertex.pos.x < key.x - 1.0f || vertex.pos.x > key.x + 17.0f || vertex.pos.y < key.y || vertex.pos.y > key.y + text) continue;
+        if (vertex.col == chart.theory[c].colour) ++swatch_vertices[c];
+        EXPECT_NE(vertex.col, chart.theory[1 - c].colour) << theme_name(name) << ": key " << c << " drawn in the other's colour";
+      }
+    }
+    ImGui::EndFrame();
+    EXPECT_GT(swatch_vertices[0], 0) << theme_name(name);
+    EXPECT_GT(swatch_vertices[1], swatch_vertices[0]) << theme_name(name) << ": dots are more pieces than dashes";
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::ui

@@ -1,0 +1,263 @@
+// What the runtime works out itself each step, without a call into the script: a driven body's
+// path given as numbers (a motion), a position read in another body's axes (relative_to), a
+// probe that reads a list of samples a model worked out once, and a pair's coefficient given
+// as a schedule. Each is checked against the
+// formula it stands for and against the script function it replaces.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "tests/assertions.h"
+#include "tests/lesson_scripts.h"
+
+namespace frictionlab::lessons {
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180.0;
+
+double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
+
+// offset + speed·t + ½·acceleration·t² + swing·sin(omega·t + phase)
+double motion(double t, double offset, double speed, double acceleration, double swing, double omega, double phase) {
+  return offset + speed * t + 0.5 * acceleration * t * t + swing * std::sin(omega * t + phase);
+}
+
+const char* const plank_world = R"(
+local plank = box { "plank", material = "wood", kind = "kinematic", width = 2, height = 0.1, x = 0.3, y = 1.5 }
+)";
+
+TEST(ScriptFreeReadings, AMotionGivenAsNumbersIsTheDrivenBodysPath) {
+  ScriptFile script(with_heading(std::string(plank_world) + R"(
+drive { plank, position = { x = { offset = 0.3, speed = 0.2, acceleration = 0.4, swing = 0.1, omega = 3, phase = 0.5 },
+                            y = 1.5 },
+        angle = { swing = 10, omega = 2 } }
+)"));
+  Lesson lesson(script.path());
+  const double h = 1.0 / 240.0;
+  run_for(lesson, 1.0);
+  const double t = lesson.scene().time();
+  const b2Body* plank = lesson.scene().body("plank");
+  // Where the path says, to float precision: an offset of 0.3 and a swing of 0.1 at t = 0 are
+  // 0.3479 m, so the body was moved from where box{} put it.
+  EXPECT_NEAR(plank->GetPosition().x, motion(t, 0.3, 0.2, 0.4, 0.1, 3.0, 0.5), 2e-6);
+  EXPECT_NEAR(plank->GetPosition().y, 1.5, 1e-6);
+  EXPECT_NEAR(plank->GetAngle(), motion(t, 0.0, 0.0, 0.0, 10.0, 2.0, 0.0) * degrees, 2e-6);
+  // Its velocity over the step just taken is the path's change over it.
+  const double vx = (motion(t, 0.3, 0.2, 0.4, 0.1, 3.0, 0.5) - motion(t - h, 0.3, 0.2, 0.4, 0.1, 3.0, 0.5)) / h;
+  EXPECT_NEAR(plank->GetLinearVelocity().x, vx, 1e-4);
+  const double omega = (std::sin(2.0 * t) - std::sin(2.0 * (t - h))) * 10.0 * degrees / h;
+  EXPECT_NEAR(plank->GetAngularVelocity(), omega, 1e-4);
+}
+
+TEST(ScriptFreeReadings, AMotionMovesABodyAsTheSameFunctionOfTimeDoes) {
+  // A block carried on a shaken, tilting plank: the same path given as numbers and as a
+  // function must give the same run (the function is worked out in Lua, the motion in C++,
+  // both in doubles).
+  const std::string block = R"(
+pair { "wood", "wood", mu_s = 0.4, mu_k = 0.3 }
+local block = box { "block", material = "wood", width = 0.2, height = 0.1, on = plank, at = 0.2 }
+)";
+  ScriptFile as_numbers(with_heading(std::string(plank_world) + block + R"(
+drive { plank, position = { x = { offset = 0.3, swing = 0.05, omega = 12 }, y = { offset = 1.5, speed = 0.1 } },
+        angle = { speed = 3 } }
+)"));
+  ScriptFile as_function(with_heading(std::string(plank_world) + block + R"(
+drive { plank, position = function(t) return 0.3 + 0.05 * math.sin(12 * t), 1.5 + 0.1 * t end,
+        angle = function(t) return 3 * t end }
+)"));
+  Lesson numbers(as_numbers.path()), function(as_function.path());
+  run_for(numbers, 2.0);
+  run_for(function, 2.0);
+  const b2Body* a = numbers.scene().body("block");
+  const b2Body* b = function.scene().body("block");
+  EXPECT_NEAR(a->GetPosition().x, b->GetPosition().x, 1e-6);
+  EXPECT_NEAR(a->GetPosition().y, b->GetPosition().y, 1e-6);
+  EXPECT_NEAR(a->GetLinearVelocity().x, b->GetLinearVelocity().x, 1e-5);
+  // And it did move: shaken at 0.05·144 = 7.2 m/s², past μs·g, the block slips on the plank.
+  EXPECT_GT(std::abs(a->GetPosition().x - 0.5), 1e-3);
+}
+
+TEST(ScriptFreeReadings, AMotionsFieldsAreChecked) {
+  const auto refused = [](const std::string& drive) { return error_building(with_heading(std::string(plank_world) + drive)); };
+  EXPECT_NE(refused("drive { plank, position = { x = { swng = 1 } } }\n").find("drive 'plank': position: x"), std::string::npos);
+  EXPECT_NE(refused("drive { plank, position = { x = { swng = 1 } } }\n").find("swng"), std::string::npos);
+  EXPECT_NE(refused("drive { plank, angle = \"fast\" }\n").find("angle must be a number, or a motion"), std::string::npos);
+  EXPECT_NE(refused("drive { plank, position = { z = 1 } }\n").find("z"), std::string::npos);
+  EXPECT_NE(refused("drive { plank, position = 2 }\n").find("position must be a function(t) returning x, y, or { x"),
+            std::string::npos);
+  EXPECT_NE(refused("drive { plank, angle = { omega = 1e7 } }\n").find("omega"), std::string::npos);
+}
+
+TEST(ScriptFreeReadings, APositionRelativeToAnotherBodyIsInThatBodysAxes) {
+  // A post stands still while the plank moves right at 0.5 m/s and turns at 30°/s: in the
+  // plank's axes the post is where rotating (post − plank) back by the plank's angle puts it.
+  ScriptFile script(with_heading(std::string(plank_world) + R"(
+local post = box { "post", material = "wood", kind = "static", width = 0.1, height = 0.1, x = 1, y = 0.5 }
+drive { plank, position = { x = { offset = 0.3, speed = 0.5 }, y = 1.5 }, angle = { speed = 30 } }
+probe { "post_x", unit = "m", read = { post, "x", relative_to = plank } }
+probe { "post_y", unit = "m", read = { post, "y", relative_to = plank } }
+probe { "post_back", unit = "m", read = { post, "distance", along = { -1, 0 }, relative_to = plank } }
+probe { "post_back_lua", unit = "m", function()
+  local a = math.rad(30 * time())
+  local dx, dy = post.x - plank.x, post.y - plank.y
+  return -(dx * math.cos(a) + dy * math.sin(a)) + (1 - 0.3)
+end }
+)"));
+  Lesson lesson(script.path());
+  run_for(lesson, 1.0);
+  const double t = lesson.scene().time();
+  const double angle = 30.0 * t * degrees;
+  const double dx = 1.0 - (0.3 + 0.5 * t), dy = 0.5 - 1.5;
+  const double local_x = dx * std::cos(angle) + dy * std::sin(angle);
+  const double local_y = -dx * std::sin(angle) + dy * std::cos(angle);
+  EXPECT_NEAR(probe_now(lesson, "post_x"), local_x, 2e-6);
+  EXPECT_NEAR(probe_now(lesson, "post_y"), local_y, 2e-6);
+  // Moved back along the plank since the start, when the post was 0.7 m along it.
+  EXPECT_NEAR(probe_now(lesson, "post_back"), 0.7 - local_x, 2e-6);
+  EXPECT_NEAR(probe_now(lesson, "post_back"), probe_now(lesson, "post_back_lua"), 2e-6);
+}
+
+TEST(ScriptFreeReadings, RelativeToIsForPositionsOfBodies) {
+  const auto refused = [](const std::string& probe) {
+    return error_building(with_heading(std::string(plank_world) + "local post = box { \"post\", material = \"wood\", kind = "
+                                       "\"static\", width = 0.1, height = 0.1, x = 1, y = 0.5 }\n" + probe));
+  };
+  EXPECT_NE(refused("probe { \"v\", read = { post, \"vx\", relative_to = plank } }\n")
+                .find("relative_to is for a body's x, y and distance"),
+            std::string::npos);
+  EXPECT_NE(refused("probe { \"x\", read = { post, \"x\", relative_to = post } }\n").find("names the body read"),
+            std::string::npos);
+  EXPECT_NE(refused("probe { \"x\", read = { post, \"x\", relative_to = 3 } }\n").find("relative_to must be a body"),
+            std::string::npos);
+}
+
+// A list of samples 10·k at t = k·every, made longer each time it is asked for (to 1 s past
+// the time asked), up to `cap` entries; `asked` counts the calls.
+const char* const growing_list = R"(
+asked = 0
+local every = 0.1
+local function list_to(t, cap)
+  asked = asked + 1
+  local list = {}
+  for k = 1, math.min(math.floor((t + 1) / every) + 1, cap) do list[k] = 10 * (k - 1) end
+  return list
+end
+)";
+
+TEST(ScriptFreeReadings, SamplesAreReadAtTheProbesTimeStraightBetweenEntries) {
+  ScriptFile script(with_heading(std::string(growing_list) + R"(
+probe { "ramp", samples = function(t) return list_to(t, 1000) end, every = every }
+probe { "ramp_late", samples = function(t) return list_to(t, 1000) end, every = every, delay = 0.05 }
+probe { "held", samples = function(t) return list_to(t, 16) end, every = every }
+probe { "asked", function() return asked end }
+)"));
+  Lesson lesson(script.path());
+  for (const double until : {0.3, 1.7, 3.5}) {
+    lesson.step_to(until);
+    const double t = lesson.scene().time();
+    // 10 per 0.1 s: 100·t, between entries too.
+    EXPECT_NEAR(probe_now(lesson, "ramp"), 100.0 * t, 1e-9) << t;
+    EXPECT_NEAR(probe_now(lesson, "ramp_late"), 100.0 * (t - 0.05), 1e-9) << t;
+    // 16 entries reach 1.5 s: held at 150 from then on.
+    EXPECT_NEAR(probe_now(lesson, "held"), 100.0 * std::min(t, 1.5), 1e-9) << t;
+  }
+  // Asked again only when the run passed a list's end: each list reaches 1 s further, so the
+  // two ramps were asked about four times each in 3.5 s, the held one twice (its second list
+  // was no longer than its first, so it was not asked again).
+  EXPECT_LE(probe_now(lesson, "asked"), 12.0);
+  EXPECT_GE(probe_now(lesson, "asked"), 6.0);
+}
+
+TEST(ScriptFreeReadings, SamplesThatAreNotAListOfNumbersStopTheLessonSayingWhere) {
+  const auto stopped = [](const std::string& probe) {
+    ScriptFile script(with_heading(probe));
+    return error_of([&] {
+      Lesson lesson(script.path());
+      run_for(lesson, 0.5);
+    });
+  };
+  const std::string nothing = stopped("probe { \"p\", samples = function(t) return 5 end, every = 0.1 }\n");
+  EXPECT_NE(nothing.find(":2: probe 'p': samples must return a list of numbers"), std::string::npos) << nothing;
+  EXPECT_NE(nothing.find("returned the number 5"), std::string::npos) << nothing;
+  const std::string word = stopped("probe { \"p\", samples = function(t) return { 1, 2, \"three\", 4, 5, 6, 7 } end, "
+                                   "every = 0.1 }\n");
+  EXPECT_NE(word.find(":2: probe 'p': entry 3 of the samples is"), std::string::npos) << word;
+  EXPECT_NE(stopped("probe { \"p\", samples = function(t) return { 1 } end }\n").find("every"), std::string::npos);
+  EXPECT_NE(stopped("probe { \"p\", samples = function(t) return { 1 } end, every = 0 }\n").find("every"),
+            std::string::npos);
+  EXPECT_NE(stopped("probe { \"p\", samples = { 1, 2 }, every = 1 }\n").find("samples must be a function(t)"),
+            std::string::npos);
+  EXPECT_NE(stopped("probe { \"p\", every = 1, function() return 1 end }\n").find("every and delay go with samples"),
+            std::string::npos);
+  EXPECT_NE(stopped("probe { \"p\", samples = function(t) return { 1 } end, every = 1, function() return 1 end }\n")
+                .find("not two"),
+            std::string::npos);
+}
+
+// A block pulled across a floor oiled from 0.5 s to 1.2 s: its coefficients as schedules and as
+// the same functions of time give the same run, step for step, and the pair holds each value
+// from its time on (the last one given for a time counts).
+TEST(ScriptFreeReadings, ACoefficientsScheduleIsTheSameRunAsTheFunctionOfTime) {
+  const std::string world = R"(
+local floor = ground { "floor", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1 }
+force { "pull", on = block, force = { 3, 0 } }
+)";
+  ScriptFile as_schedule(with_heading(R"(
+pair { "wood", "wood", sliders = false, mu_s = { { 0, 0.5 }, { 0.5, 0.1 }, { 1.2, 0.5 } },
+       mu_k = { { 0, 0.45 }, { 0, 0.4 }, { 0.5, 0.08 }, { 1.2, 0.4 } } }
+)" + world));
+  ScriptFile as_function(with_heading(R"(
+local function oiled(t) return t >= 0.5 and t < 1.2 end
+pair { "wood", "wood", sliders = false, mu_s = function(t) return oiled(t) and 0.1 or 0.5 end,
+       mu_k = function(t) return oiled(t) and 0.08 or 0.4 end }
+)" + world));
+  Lesson scheduled(as_schedule.path()), called(as_function.path());
+  const auto coefficients = [](const Lesson& lesson) {
+    const FrictionPair& pair = lesson.scene().pairs().pair("wood", "wood");
+    return std::array<double, 2>{pair.mu_s, pair.mu_k};
+  };
+  EXPECT_EQ(coefficients(scheduled), (std::array<double, 2>{0.5, 0.4}));  // { 0, 0.4 } came last for t = 0
+  const double h = 1.0 / 240.0;
+  bool slid = false;
+  for (int k = 0; k < 480; ++k) {
+    scheduled.step();
+    called.step();
+    ASSERT_EQ(scheduled.scene().body("block")->GetPosition().x, called.scene().body("block")->GetPosition().x) << "step " << k;
+    ASSERT_EQ(coefficients(scheduled), coefficients(called)) << "step " << k;
+    // The values of the sub-step that starts at k·h.
+    const double started = k * h;
+    const bool oiled = started >= 0.5 - 1e-12 && started < 1.2 - 1e-12;
+    EXPECT_EQ(coefficients(scheduled), (oiled ? std::array<double, 2>{0.1, 0.08} : std::array<double, 2>{0.5, 0.4}))
+        << "at " << started << " s";
+    slid = slid || std::abs(scheduled.scene().body("block")->GetLinearVelocity().x) > 0.1f;
+  }
+  EXPECT_TRUE(slid) << "the pull of 3 N never moved the block on the oiled stretch";
+}
+
+TEST(ScriptFreeReadings, AScheduleThatIsNotOneSaysWhereAndWhy) {
+  const auto refused = [](const std::string& schedule) {
+    return error_building(with_heading("pair { \"wood\", \"wood\", sliders = false, mu_s = 0.5, mu_k = " + schedule + " }\n"));
+  };
+  const std::string late = refused("{ { 1, 0.4 } }");
+  EXPECT_NE(late.find(":2: pair wood/wood: mu_k: a schedule is a list of { time, value } pairs"), std::string::npos) << late;
+  EXPECT_NE(late.find("entry 1 starts at t = 1 s, not 0"), std::string::npos) << late;
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 2, 0.1 }, { 1, 0.4 } }").find("entry 3 goes back in time, to 1 s after 2 s"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1, 3 } }").find("mu_k: entry 2 of the schedule is 3; it must be in [0, 2]"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1 } }").find("entry 2 must be two numbers, { time, value }; it is a table"),
+            std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1, \"x\" } }").find("entry 2 must be two numbers, { time, value }; it is a pair that is not"),
+            std::string::npos);
+  EXPECT_NE(refused("{ 0, 0.4 }").find("entry 1 must be two numbers, { time, value }; it is the number 0"), std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 } }, sliders = { \"mu_k\" }").find("mu_k changes with time (a function or a schedule)"),
+            std::string::npos);
+  EXPECT_NE(refused("{}").find("1 to 10000 of them"), std::string::npos);
+  EXPECT_NE(refused("{ { 0, 0.4 }, { 1e6, 0.1 } }").find("past a day"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace frictionlab::lessons

@@ -1,0 +1,303 @@
+// The driven spring–block on Box2D against the exact event-driven solution: the stick-slip
+// treatment converges as the step halves; the velocity threshold and Box2D's single
+// coefficient stall, so the comparison is real.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "physics/scenarios.h"
+#include "physics/scene.h"
+
+using namespace frictionlab;
+
+namespace {
+const double duration = 10.0;
+const double rates[] = {60, 120, 240, 480, 960};
+
+std::map<double, double> errors_for(FrictionTreatment treatment) {
+  std::map<double, double> errors;
+  for (double hz : rates) {
+    StepSettings settings;
+    settings.hz = hz;
+    settings.treatment = treatment;
+    errors[hz] = spring_pull_max_error(SpringPull{}, settings, duration);
+  }
+  return errors;
+}
+}  // namespace
+
+TEST(StickSlipConvergence, ErrorShrinksAsTheStepHalves) {
+  const auto errors = errors_for(FrictionTreatment::stick_slip);
+  for (double hz : rates) RecordProperty("max_error_m_at_" + std::to_string(static_cast<int>(hz)) + "_hz", std::to_string(errors.at(hz)));
+  for (size_t i = 1; i < std::size(rates); ++i) {
+    EXPECT_LT(errors.at(rates[i]), errors.at(rates[i - 1]))
+        << rates[i] << " Hz should beat " << rates[i - 1] << " Hz";
+  }
+  EXPECT_LE(errors.at(240), 0.005) << "the issue's bound at 240 Hz, m";
+  EXPECT_LE(errors.at(240), 0.001) << "the goal at 240 Hz, m";
+  // Second order: the breakaway is placed inside its step and the start is leapfrog-true, so
+  // each halving should divide the error by about four. A first-order treatment (the
+  // breakaway left at a step boundary) divides it by about two and fails this.
+  const double order = std::log2(errors.at(60) / errors.at(960)) / 4.0;
+  RecordProperty("fitted_order", std::to_string(order));
+  EXPECT_GT(order, 1.7) << "fitted order of convergence from 60 to 960 Hz";
+}
+
+TEST(StickSlipConvergence, ThresholdSwitchStalls) {
+  const auto stick_slip = errors_for(FrictionTreatment::stick_slip);
+  const auto threshold = errors_for(FrictionTreatment::threshold);
+  EXPECT_GT(threshold.at(960), 0.5 * threshold.at(240)) << "halving the step twice barely helps";
+  EXPECT_GT(threshold.at(960), 5.0 * stick_slip.at(960));
+}
+
+TEST(StickSlipConvergence, SingleCoefficientStalls) {
+  const auto stick_slip = errors_for(FrictionTreatment::stick_slip);
+  const auto box2d = errors_for(FrictionTreatment::box2d);
+  EXPECT_GT(box2d.at(960), 0.5 * box2d.at(240));
+  EXPECT_GT(box2d.at(960), 5.0 * stick_slip.at(960));
+}
+
+// The whole range --hz accepts, up to 100 000 Hz. The breakaway is declared within a relative
+// 1e-5 of the limit, so at fine steps a block often breaks away in a step its friction still
+// held, with round-off for a velocity: its slip direction taken from that velocity's sign was
+// wrong half the time, and the next step read a reversal and stuck again (from 10 000 Hz the
+// re-stick force was 2.85 N against 2.45 N, and the period 0.81 s against 1.01 s). Every
+// reading stays within the lesson's tolerances. The position error no longer shrinks past
+// about 1 kHz: Box2D keeps positions in single precision, and at 100 kHz a step moves the block
+// about a micrometre, ten float spacings at 1 m, so rounding sets a floor (0.02 to 0.6 mm
+// measured from 960 to 100 000 Hz); it stays within the 1 mm goal at 240 Hz.
+TEST(StickSlipConvergence, StaysRightAcrossTheAcceptedStepRates) {
+  for (double hz : {9500.0, 10000.0, 30000.0, 100000.0}) {
+    StepSettings settings;
+    settings.hz = hz;
+    for (const Measurement& row : spring_pull_measurements(SpringPull{}, settings, duration)) {
+      EXPECT_LE(std::abs(row.measured - row.predicted), row.tolerance)
+          << row.name << " at " << hz << " Hz: predicted " << row.predicted << ", measured " << row.measured;
+      if (row.name == "stick-slip max position error") {
+        RecordProperty("max_error_m_at_" + std::to_string(static_cast<int>(hz)) + "_hz", std::to_string(row.measured));
+        EXPECT_LE(row.measured, 0.001) << hz << " Hz";
+      }
+    }
+  }
+}
+
+// Kinetic friction a tenth of static: after each slip the spring, pushing back, stops the block
+// at (2·mu_k - mu_s)·m·g, within the static limit, and it holds. The solver leaves kinetic
+// friction on to the end of the step in which the block stops, and the block moving back;
+// undoing that in the next step asked friction for more than mu_s·N, whatever the step, and
+// the block broke away backwards at once (re-stick -0.27 N for -0.78 N, period 0.54 s for
+// 0.99 s at 240 Hz, as wrong at any step). The stop is now finished as Coulomb's law says. (The
+// rates are fine enough for the breakaway to be within 1 % without the lesson's step term.)
+TEST(StickSlipConvergence, HoldsWhereTheSpringStopsItWithLittleKineticFriction) {
+  SpringPull setup;
+  setup.block.pair.mu_s = 0.1;
+  setup.block.pair.mu_k = 0.01;
+  for (double hz : {960.0, 3840.0}) {
+    StepSettings settings;
+    settings.hz = hz;
+    for (const Measurement& row : spring_pull_measurements(setup, settings, duration)) {
+      EXPECT_LE(std::abs(row.measured - row.predicted), row.tolerance)
+          << row.name << " at " << hz << " Hz: predicted " << row.predicted << ", measured " << row.measured;
+    }
+  }
+}
+
+// A block that touches the floor through several fixtures (a box on feet) under the stick-slip
+// treatment: being rigid it sticks or slides as a whole, so it must hold until the pull reaches
+// mu_s·m·g, not creep while it holds, and break away then, like a block on one face does.
+// The pull grows from zero at `rate` and acts at the height of the floor, as in the lesson
+// contact_area, so it cannot tip the block or shift its load between the feet.
+namespace {
+
+constexpr double g = 9.81;
+constexpr double mass = 1.0;
+constexpr double rate = 2.0;  // N/s, the lesson's default pull_rate
+constexpr float width = 0.4f, height = 0.08f, foot = 0.02f;
+
+struct PulledBlock {
+  std::unique_ptr<Scene> scene;
+  b2Body* block = nullptr;
+};
+
+// feet = 0: the same block lying on its own face, one fixture and one contact.
+PulledBlock make_block(int feet, double mu_s, double mu_k, double hz, double pull_rate = rate, double slope = 0.0) {
+  PairTable table;
+  table.add_material({"floor", 600.0, ""});
+  table.add_material({"block", 1.0, ""});
+  table.set_pair("block", "floor", {mu_s, mu_k, 0.0, 0.0});
+  table.set_pair("block", "block", {mu_s, mu_k, 0.0, 0.0});
+  StepSettings settings;
+  settings.hz = hz;
+  PulledBlock made;
+  // A slope is made by tilting gravity: downhill is -x.
+  const b2Vec2 gravity{static_cast<float>(-g * std::sin(slope)), static_cast<float>(-g * std::cos(slope))};
+  made.scene = std::make_unique<Scene>(std::move(table), settings, gravity);
+  Scene& scene = *made.scene;
+  scene.add_box("floor", b2_staticBody, "floor", {0.0f, -0.5f}, 20.0f, 1.0f);
+  const float lift = feet > 0 ? foot : 0.0f;
+  b2BodyDef definition;
+  definition.type = b2_dynamicBody;
+  definition.position = {0.0f, 0.5f * height + lift + resting_gap};
+  made.block = scene.add_body("block", definition);
+  b2PolygonShape body;
+  body.SetAsBox(0.5f * width, 0.5f * height);
+  scene.add_fixture(made.block, body, "block");
+  for (int i = 0; i < feet; ++i) {
+    const float x = -0.5f * width + 0.5f * foot + static_cast<float>(i) * (width - foot) / static_cast<float>(feet - 1);
+    b2PolygonShape shape;
+    shape.SetAsBox(0.5f * foot, 0.5f * foot, {x, -0.5f * height - 0.5f * foot}, 0.0f);
+    scene.add_fixture(made.block, shape, "block");
+  }
+  const double area = double{width} * height + feet * double{foot} * foot;
+  for (b2Fixture* part = made.block->GetFixtureList(); part != nullptr; part = part->GetNext()) {
+    part->SetDensity(static_cast<float>(mass / area));
+  }
+  made.block->ResetMassData();
+  // At the floor's height (the middle of the resting gap): no moment about the contact.
+  const b2Vec2 at{0.0f, -0.5f * height - lift - 0.5f * resting_gap};
+  scene.add_applied_force({"pull", made.block, at, [pull_rate](double t) { return b2Vec2{static_cast<float>(pull_rate * t), 0.0f}; }});
+  return made;
+}
+
+// How many of the block's contacts with the floor touch, and how many of those slip.
+struct Touches {
+  int touching = 0;
+  int slipping = 0;
+};
+Touches touches(const Scene& scene, const b2Body* block) {
+  Touches count;
+  for (const b2ContactEdge* edge = block->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (!edge->contact->IsTouching()) continue;
+    const ContactRecord* record = scene.friction().record(edge->contact);
+    if (record == nullptr) continue;
+    ++count.touching;
+    if (record->state == ContactState::slipping) ++count.slipping;
+  }
+  return count;
+}
+
+// What a pulled block did: the pull in the step that ended with it slipping, how far it moved
+// before, its speed at `until`, and how many steps ended with its feet disagreeing.
+struct PullRun {
+  double breakaway_pull = -1.0;  // N, rate·t at the start of that step (-1: it never slipped)
+  double crept = 0.0;            // m, the largest |x - x0| before that step
+  double final_speed = 0.0;      // m/s, at `until`
+  int split_steps = 0;           // steps that ended with some feet slipping and some stuck
+};
+
+// For a block made with the default pull rate.
+PullRun pull_until(PulledBlock& made, double until) {
+  Scene& scene = *made.scene;
+  const float x0 = made.block->GetPosition().x;
+  PullRun run;
+  while (scene.time() < until - 1e-9) {
+    const double pull = rate * scene.time();
+    scene.step();
+    const Touches now = touches(scene, made.block);
+    if (now.slipping > 0 && now.slipping < now.touching) ++run.split_steps;
+    if (run.breakaway_pull < 0.0) {
+      if (now.slipping > 0) {
+        run.breakaway_pull = pull;
+      } else {
+        run.crept = std::max(run.crept, static_cast<double>(std::abs(made.block->GetPosition().x - x0)));
+      }
+    }
+  }
+  run.final_speed = made.block->GetLinearVelocity().x;
+  return run;
+}
+
+std::string name_of(const testing::TestParamInfo<std::tuple<int, double>>& info) {
+  return std::to_string(std::get<0>(info.param)) + "_feet_at_" + std::to_string(static_cast<int>(std::get<1>(info.param))) +
+         "_hz";
+}
+
+}  // namespace
+
+// The closed form: a block pulled by r·t holds until r·t = mu_s·m·g and breaks away then, how
+// ever many feet it stands on. The first slipping step is the one whose pull (sampled at its
+// start) has passed the limit, so the measured pull lies within one step's growth r·h above
+// it (and a hair below, for the solver's 1e-5 breakaway tolerance). Before the group kept one
+// state, the six-footed block broke away at 7.2 N instead of 9.8 N (mu_s = 1, 240 Hz) after
+// creeping 0.25 mm.
+class FeetUnderAGrowingPull : public testing::TestWithParam<std::tuple<int, double>> {};
+
+TEST_P(FeetUnderAGrowingPull, HoldWithoutCreepingUntilMuSTimesTheWeightThenSlideLikeAFace) {
+  const auto [feet, hz] = GetParam();
+  const double h = 1.0 / hz;
+  for (double mu_s : {0.1, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0}) {  // 2 is the lessons' slider maximum
+    SCOPED_TRACE("mu_s = " + std::to_string(mu_s));
+    const double mu_k = 0.7 * mu_s;
+    const double limit = mu_s * mass * g;
+    const double until = limit / rate + 0.5;  // half a second of sliding
+    PulledBlock on_feet = make_block(feet, mu_s, mu_k, hz);
+    const PullRun run = pull_until(on_feet, until);
+    EXPECT_GE(run.breakaway_pull, limit * (1.0 - 1e-4));
+    EXPECT_LE(run.breakaway_pull, limit + rate * h);
+    // Held, it stays put to within a micrometre (one face: 1e-8 m).
+    EXPECT_LT(run.crept, 1e-6);
+    // One body, one state: every foot, loaded or not, says the same after every step.
+    EXPECT_EQ(run.split_steps, 0);
+    // Sliding, the feet give mu_k·m·g between them, as the face does: the same speed after
+    // half a second, to 0.1 % (about 0.6 m/s at mu_s = 1).
+    PulledBlock on_a_face = make_block(0, mu_s, mu_k, hz);
+    const PullRun face = pull_until(on_a_face, until);
+    EXPECT_NEAR(run.final_speed, face.final_speed, 1e-3 * face.final_speed);
+  }
+}
+
+// Launched and left to slide, a block on feet stops where kinetic friction stops it,
+// v0²/(2·mu_k·g), and stays there: the group re-sticks as one.
+TEST_P(FeetUnderAGrowingPull, LaunchedSlideToRestAtTheKineticDistance) {
+  const auto [feet, hz] = GetParam();
+  const double mu_s = 0.5, mu_k = 0.4, v0 = 1.0;
+  PulledBlock made = make_block(feet, mu_s, mu_k, hz, 0.0);
+  made.block->SetLinearVelocity({static_cast<float>(v0), 0.0f});
+  const float x0 = made.block->GetPosition().x;
+  int split_steps = 0;
+  Scene& scene = *made.scene;
+  while (scene.time() < 1.0) {
+    scene.step();
+    const Touches now = touches(scene, made.block);
+    if (now.slipping > 0 && now.slipping < now.touching) ++split_steps;
+  }
+  const double distance = v0 * v0 / (2.0 * mu_k * g);
+  EXPECT_NEAR(made.block->GetPosition().x - x0, distance, 1e-3 * distance);
+  EXPECT_EQ(touches(scene, made.block).slipping, 0);
+  EXPECT_EQ(split_steps, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rates, FeetUnderAGrowingPull,
+                         testing::Combine(testing::Values(3, 6), testing::Values(120.0, 240.0, 1000.0)), name_of);
+
+// On a slope the load along the floor is there from the first step. Below atan(mu_s) the block
+// on feet stays put; above it, it slides down at g·(sin θ - mu_k·cos θ), as one face does.
+TEST_P(FeetUnderAGrowingPull, OnASlopeHoldBelowTheStaticAngleAndSlideAtTheKineticRateAbove) {
+  const auto [feet, hz] = GetParam();
+  const double mu_s = 0.6, mu_k = 0.4;
+  const double below = std::atan(mu_s) - 0.05, above = std::atan(mu_s) + 0.05;  // 26° and 36°
+  PulledBlock held = make_block(feet, mu_s, mu_k, hz, 0.0, below);
+  const float x0 = held.block->GetPosition().x;
+  while (held.scene->time() < 2.0) held.scene->step();
+  EXPECT_LT(std::abs(held.block->GetPosition().x - x0), 1e-6f);
+  EXPECT_EQ(touches(*held.scene, held.block).slipping, 0);
+
+  PulledBlock slides = make_block(feet, mu_s, mu_k, hz, 0.0, above);
+  PulledBlock face = make_block(0, mu_s, mu_k, hz, 0.0, above);
+  while (slides.scene->time() < 1.0) {
+    slides.scene->step();
+    face.scene->step();
+  }
+  const double t = slides.scene->time();
+  const double a = g * (std::sin(above) - mu_k * std::cos(above));
+  // The breakaway correction reads the load as having grown during the first step, while here
+  // it was all there at t = 0, so kinetic friction is credited with up to half a step too
+  // little ((mu_s - mu_k)·g·cos θ·h/2 of speed; on one face as on feet).
+  EXPECT_NEAR(-slides.block->GetLinearVelocity().x, a * t, (mu_s - mu_k) * g * std::cos(above) * 0.5 / hz);
+  EXPECT_NEAR(slides.block->GetLinearVelocity().x, face.block->GetLinearVelocity().x, 1e-4 * a * t);
+}
