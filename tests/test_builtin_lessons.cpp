@@ -704,6 +704,33 @@ TEST(BuiltinLessons, FrictionProbesFollowOneSignConvention) {
       EXPECT_NEAR(value, reading.exact, 1e-3 * std::abs(reading.exact)) << reading.lesson << ' ' << reading.probe;
     }
   }
+  // The theory table's friction rows, theory and measurement alike, are signed the same way.
+  struct Row {
+    std::string lesson;
+    std::map<std::string, std::string> settings;
+    std::string starts;  // the row's name begins so
+    double sign;
+  };
+  const std::vector<Row> rows = {
+      {"push", {}, "friction at the end", -1},
+      {"pulley", {}, "friction on the block", -1},
+      {"check_the_article", {{"example", "advanced"}}, "peak kinetic friction", -1},
+      {"driven_wheel", {}, "friction while gripping", 1},
+      {"stacked_blocks", {}, "friction on the top block halfway", 1},
+  };
+  for (const Row& wanted : rows) {
+    Lesson lesson(resolve_lesson(wanted.lesson), wanted.settings);
+    run_for(lesson, lesson.duration());
+    bool found = false;
+    for (const ExpectationResult& row : lesson.expectations()) {
+      if (row.name.rfind(wanted.starts, 0) != 0) continue;
+      found = true;
+      ASSERT_TRUE(row.numeric && row.measured_yet) << row.name;
+      EXPECT_GT(wanted.sign * row.predicted, 1e-3) << wanted.lesson << ": " << row.name << " predicts " << row.predicted;
+      EXPECT_GT(wanted.sign * row.measured, 1e-3) << wanted.lesson << ": " << row.name << " measures " << row.measured;
+    }
+    EXPECT_TRUE(found) << wanted.lesson << " has no row " << wanted.starts;
+  }
   // Every friction probe (a force, in N) of every built-in lesson is in the list.
   for (const std::string& name : builtin_lessons()) {
     Lesson lesson(resolve_lesson(name));
