@@ -527,9 +527,9 @@ std::string Classroom::export_history() {
     csv += lessons::csv_row(scene, i, pulled ? std::optional<double>(gauge[next_sample].force) : std::nullopt);
   }
   const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
-  write_whole_file(path, csv.data(), csv.size());
   // The values that made the run, beside it, so a file found later says which run it is; a
-  // mystery's are "?". Only a settings file FrictionLab wrote is replaced there.
+  // mystery's are "?". Only a settings file FrictionLab wrote is replaced there, and one that is
+  // not is refused before the CSV is written, so no CSV is left without its settings.
   const HiddenValues hidden = hidden_values();
   const std::string settings = lessons::run_settings(lesson, [&](const std::string& name) { return hidden.hides(name); });
   OutputFile settings_file(lessons::settings_path_for(path), [](const std::string& existing) {
@@ -539,6 +539,7 @@ std::string Classroom::export_history() {
     return lessons::starts_frictionlab_settings(line);
   });
   settings_file.write(settings);
+  write_whole_file(path, csv.data(), csv.size());
   settings_file.commit();
   return path;
 }
