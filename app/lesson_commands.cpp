@@ -264,8 +264,8 @@ int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   std::set<std::string> hidden;
   if (mystery_choice) hidden = apply_mystery(lesson, *mystery_choice, options.overrides).hidden();
   std::optional<CsvLog> csv;
-  if (!options.csv.empty()) csv.emplace(options.csv, lesson, out);
-  // With --csv -, the rows are standard output's; the table goes to standard error.
+  if (!options.csv.empty()) csv.emplace(options.csv, lesson, out, std::cerr);
+  // With --csv -, the rows are standard output's; the run's settings and the table go to standard error.
   std::ostream& report = options.csv == "-" ? std::cerr : out;
   print_heading(lesson, report, hidden);
   // The lesson's own duration only when none is given: its function may not even be needed.

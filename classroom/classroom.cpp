@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -20,6 +22,7 @@
 #include "draw/text_record.h"
 #include "files/output_file.h"
 #include "lessons/runtime/catalog.h"
+#include "lessons/runtime/history_csv.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -517,41 +520,33 @@ void Classroom::save_history() {
 std::string Classroom::export_history() {
   const lessons::Lesson& lesson = playback_->lesson();
   const Scene& scene = lesson.scene();
-  std::ostringstream csv;
-  csv.precision(9);
-  // The values that made the run, so a file found later says which run it is; a mystery's are "?".
-  std::string settings = "# FrictionLab history of " + lesson.path() + ";";
-  const HiddenValues hidden = hidden_values();
-  for (const lessons::Parameter& parameter : lesson.parameters()) {
-    settings += " " + parameter.name + " = " + (hidden.hides(parameter.name) ? "?" : parameter.shown()) + ";";
-  }
-  std::replace(settings.begin(), settings.end(), ',', ';');  // one field: a spreadsheet shows the line in its first cell
-  csv << settings << '\n';
-  csv << "t";
-  for (const Probe& probe : scene.probes()) {
-    const std::string& unit = lesson.probe_unit(probe.name);
-    csv << ',' << probe.name << (unit.empty() ? "" : " (" + unit + ")");
-  }
-  // The mouse's hand: whether it pulled in the step that ended at the row's time, and what its
-  // force gauge read (empty where it did not pull).
-  csv << ",any_contact_slipping,hand_pulled,gauge (N)\n";
+  // The one format `frictionlab run --csv` writes too (lessons/runtime/history_csv.h), with the
+  // mouse's hand's columns filled in: whether it pulled in the step that ended at the row's
+  // time, and what its force gauge read.
+  std::string csv = lessons::csv_header(lesson);
   const std::vector<GaugeSample>& gauge = playback_->gauge().samples();
   std::size_t next_sample = 0;
   for (std::size_t i = 0; i < scene.times().size(); ++i) {
-    csv << scene.times()[i];
-    for (const Probe& probe : scene.probes()) csv << ',' << probe.history[i];
-    csv << ',' << static_cast<int>(scene.slipping()[i]);
     const long frame = static_cast<long>(i) + 1;  // row i is the end of the scene's frame i + 1
     while (next_sample < gauge.size() && gauge[next_sample].frame < frame) ++next_sample;
-    if (next_sample < gauge.size() && gauge[next_sample].frame == frame) {
-      csv << ",1," << gauge[next_sample].force << '\n';
-    } else {
-      csv << ",0,\n";
-    }
+    const bool pulled = next_sample < gauge.size() && gauge[next_sample].frame == frame;
+    csv += lessons::csv_row(scene, i, pulled ? std::optional<double>(gauge[next_sample].force) : std::nullopt);
   }
   const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
-  const std::string text = csv.str();
-  write_whole_file(path, text.data(), text.size());
+  // The values that made the run, beside it, so a file found later says which run it is; a
+  // mystery's are "?". Only a settings file FrictionLab wrote is replaced there, and one that is
+  // not is refused before the CSV is written, so no CSV is left without its settings.
+  const HiddenValues hidden = hidden_values();
+  const std::string settings = lessons::run_settings(lesson, [&](const std::string& name) { return hidden.hides(name); });
+  OutputFile settings_file(lessons::settings_path_for(path), [](const std::string& existing) {
+    std::ifstream file(existing, std::ios::binary);
+    std::string line;
+    std::getline(file, line);
+    return lessons::starts_frictionlab_settings(line);
+  });
+  settings_file.write(settings);
+  write_whole_file(path, csv.data(), csv.size());
+  settings_file.commit();
   return path;
 }
 

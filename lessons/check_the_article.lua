@@ -229,17 +229,17 @@ else
     -- 1 mm/s: the reading is the step's mean velocity.
     tolerance = 1e-3 }
   local least_friction = exact_over_swings("friction", function(k) return right.contact[k] == "slipping" end)
-  local peak_friction = -least_friction  -- friction points up the slope: the peak is the most negative
+  -- Friction points up the slope, the negative way (down the slope is positive, as for the
+  -- slide): its peak is the most negative value, and the article's 0.55 N up the slope is −0.55.
   local slipping = history("slipping")
-  local peak_row = claim("peak kinetic friction, two swings (article: ≈ 0.55 N)", 0.55, function() return peak_friction end,
-    function()
-      local least = recorded_over_swings("friction_force", function(i) return slipping[i] == 1 end)
-      return least and -least
-    end,
+  local peak_row = claim("peak kinetic friction, up the slope, two swings (article: ≈ 0.55 N)", -0.55,
+    function() return least_friction end,
+    function() return (recorded_over_swings("friction_force", function(i) return slipping[i] == 1 end)) end,
     -- A step's mean against the peak instant: μk times how much N changes in a step.
-    0.01 * peak_friction + chosen.mu_k * mass * g * theta0 * omega * h, "N")
+    0.01 * math.abs(least_friction) + chosen.mu_k * mass * g * theta0 * omega * h, "N")
   predict { peak_row, unit = "N",
-    question = "The article says the kinetic friction peaks at about 0.55 N on this 2 kg block. What is its peak?" }
+    question = "The article says the kinetic friction peaks at about 0.55 N up the slope on this 2 kg block. "
+      .. "What is its peak (down the slope is positive, so up it is a minus sign)?" }
   -- "If aₓ exceeds g tan θ₀ ... the block would lose contact": 3 m/s² exceeds g·tan 15° = 2.63,
   -- yet N = m(g cos θ − a sin θ) stays positive; it reaches 0 only past a = g·cot θ0 = 36.6.
   -- Over the two swings, as N repeats with the swing here.

@@ -36,7 +36,10 @@ local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 local touch = contact(block, slope)
 probe { "distance", unit = "m", read = { block, "distance", along = downhill } }  -- from where it started
 probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
-probe { "friction_force", unit = "N", read = { touch, "friction" } }  -- dry friction and drag
+-- The slope's friction on the block (dry and drag) along the lesson's positive direction, down
+-- the slope, as distance and speed: holding the block or braking its slide it points up the
+-- slope, so it reads negative (lessons/README.md, "Which way friction counts").
+probe { "friction_force", unit = "N", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
 plot { "Motion down the slope", y = { "distance", "speed" } }

@@ -121,9 +121,7 @@ predict { "the block", choices = { "slides", "stays put" },
 predict { "rope tension", unit = "N",
   question = "How hard does the rope pull on the block: the hanging weight's whole weight, or less?" }
 expect { "friction on the block", unit = "N",
-  predicted = function() return pulley_theory().friction end,
-  measured = function()
-    local f = at_the_end("friction_force")
-    return f and -f
-  end,
+  -- Signed as the probe is (to the right, towards the pulley, positive): theory's size, pointing back.
+  predicted = function() return -pulley_theory().friction end,
+  measured = function() return at_the_end("friction_force") end,
   tolerance = function() return 0.005 * pulley_theory().friction + 1e-3 end }

@@ -113,11 +113,11 @@ end
 
 -- Friction includes the drag c·v + b·v² when a slider sets them: the table's whole answer.
 expect { "friction at the end", unit = "N",
-  predicted = function() return out_of_reach() or push_theory(ending()).friction end,
+  -- Signed as the probe is (to the right positive): theory's size, pointing back.
+  predicted = function() return out_of_reach() or -push_theory(ending()).friction end,
   measured = function()
     if out_of_reach() then return out_of_reach() end
-    local f = at_the_end("friction_force")
-    return f and -f
+    return at_the_end("friction_force")
   end,
   -- 1 %, 1 mN, and the drag's two step terms: the contact reads the mean over the step just
   -- taken, half a step before the end, while the drag grows at f'(v)·v'; and it drags the

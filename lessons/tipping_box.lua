@@ -73,7 +73,9 @@ probe { "push", unit = "N", read = { push, "fx" } }
 probe { "tilt", unit = "°", read = { crate, "angle", scale = -1 } }
 -- Sliding is measured at the front bottom corner: it stays put while the box tips about it.
 probe { "slide", unit = "m", read = { crate, "distance", at = front_corner, along = { 1, 0 } } }
-probe { "friction_force", unit = "N", read = { touch, "friction" } }
+-- The floor's friction on the box along x, as in every lesson: pushed to the right, it points
+-- left, so it reads negative (lessons/README.md, "Which way friction counts").
+probe { "friction_force", unit = "N", read = { touch, "fx" } }
 -- The floor's push on the back and front edges: the box tips when the back one lets go.
 probe { "back_load", unit = "N", read = { touch, "load_left" } }
 probe { "front_load", unit = "N", read = { touch, "load_right" } }

@@ -2,8 +2,8 @@
 # Installs what FrictionLab needs from Debian 12's packages, then configures and builds it.
 #   scripts/setup.sh [BUILD_DIR] [extra CMake options...]
 # FRICTIONLAB_TARGET names one target to build instead of everything; FRICTIONLAB_TESTS=1 also
-# installs what the test suite needs (Xvfb, to open a real window where there is no display, and
-# the packaging tools); FRICTIONLAB_PACKAGING=1 installs the packaging tools alone;
+# installs what the test suite needs (Xvfb, to open a real window where there is no display,
+# LibreOffice Calc, to open a CSV as a class's spreadsheet does, and the packaging tools); FRICTIONLAB_PACKAGING=1 installs the packaging tools alone;
 # FRICTIONLAB_FUZZ=1 also installs Clang for the fuzzing targets.
 # Safe to run again: packages already present are not fetched, builds are incremental.
 set -euo pipefail
@@ -21,6 +21,9 @@ packages=(build-essential cmake pkg-config libbox2d-dev libgtest-dev liblua5.4-d
   # The classroom window: GLFW 3.3 on X11, its OpenGL through GLX (Mesa's libglx-mesa0).
   libglfw3-dev libglx-mesa0)
 if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(xvfb xauth); fi
+# The spreadsheet a class opens the CSV in: LibreOffice Calc, headless (soffice), for the test
+# that the header's units and the first number read right (cli_run_csv_opens_in_a_spreadsheet).
+if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(libreoffice-calc-nogui); fi
 # Building the .deb and checking it with Debian's tools (scripts/package.sh, and the tests that
 # install FrictionLab and build its package): dpkg-shlibdeps and file for CPack's Depends, the
 # validators, and unshare and mount (util-linux, mount) to run the installed copy with the

@@ -20,6 +20,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
+#include "lessons/runtime/history_csv.h"
 #include <backends/imgui_impl_opengl3.h>
 #include "classroom/classroom.h"
 #include "draw/overlays.h"
@@ -1127,12 +1128,13 @@ TEST(Classroom, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriti
   std::istringstream rows(csv);
   std::string header;
   std::getline(rows, header);
-  // The first line says which run it is (the lesson and its values); the columns' names follow.
-  EXPECT_EQ(header.rfind("# FrictionLab history of ", 0), 0u) << header;
-  EXPECT_NE(header.find("; angle = 35 \u00b0;"), std::string::npos) << header;
-  std::getline(rows, header);
-  EXPECT_EQ(header.rfind("t,", 0), 0u);
+  // The byte-order mark, then at once the columns' names with their units (the one format of
+  // lessons/runtime/history_csv.h); which run it is (the lesson and its values) is beside it.
+  EXPECT_EQ(header.rfind("\xEF\xBB\xBFt (s),distance (m),", 0), 0u) << header;
   EXPECT_NE(header.find(",any_contact_slipping"), std::string::npos);
+  const std::string settings = read_file(lessons::settings_path_for(said.substr(17)));
+  EXPECT_EQ(settings.rfind("FrictionLab run of ", 0), 0u) << settings;
+  EXPECT_NE(settings.find("\nangle = 35 \u00b0\n"), std::string::npos) << settings;
   long count = 0;
   for (std::string row; std::getline(rows, row);) ++count;
   EXPECT_EQ(count, driver.lesson().scene().frame());

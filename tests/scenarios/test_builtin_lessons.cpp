@@ -620,7 +620,9 @@ TEST(BuiltinLessons, WedgeFollowsTheArticlesReductionWhenTheSurfaceTurnsSlowly) 
 TEST(BuiltinLessons, CheckTheArticleFindsItsClaimsDoNotHold) {
   const double theta = 15.0 * std::acos(-1.0) / 180.0;
   const std::map<std::string, double> advanced{
-      {"peak kinetic friction", 0.25 * 2.0 * (9.81 * std::cos(theta) + 3.0 * std::sin(theta))},
+      // Up the slope, the negative way: every friction number is signed along the lesson's
+      // positive direction (down this slope), as FrictionProbesFollowOneSignConvention checks.
+      {"peak kinetic friction", -0.25 * 2.0 * (9.81 * std::cos(theta) + 3.0 * std::sin(theta))},
       {"least normal force", 2.0 * (9.81 * std::cos(theta) - 3.0 * std::sin(theta))}};
   for (const char* example : {"worked", "advanced"}) {
     Lesson lesson(resolve_lesson("check_the_article"), {{"example", example}});
@@ -645,6 +647,99 @@ TEST(BuiltinLessons, CheckTheArticleFindsItsClaimsDoNotHold) {
           EXPECT_NEAR(row.predicted, value, 1e-3) << row.name;
         }
       }
+    }
+  }
+}
+
+// One sign convention for friction in every lesson (lessons/README.md, "Which way friction
+// counts"): each friction probe reads the friction on the lesson's body as its component along
+// the lesson's positive direction, the one its distances and speeds are measured in (to the
+// right on a level floor, down the slope on a slope). So friction that holds a body back or
+// brakes its motion that way is negative, and friction that drives it (a driven wheel, the top
+// block on a pulled one) is positive. Each built-in lesson's friction probes, at a moment when
+// theory says which way friction points, read that sign; where a closed form gives the size
+// too, they read it. A lesson that adds a friction probe must join the list.
+TEST(BuiltinLessons, FrictionProbesFollowOneSignConvention) {
+  struct Reading {
+    std::string lesson;
+    std::map<std::string, std::string> settings;
+    std::string probe;
+    double sign;                  // which way theory says friction points there
+    double exact = std::nan("");  // its closed form, where there is one (N)
+    double at = 0;                // s; 0: at the end of the lesson's run
+  };
+  const double g = 9.81, pi = std::acos(-1.0);
+  const std::vector<Reading> readings = {
+      // Pushed, pulled, launched or tied to the right: friction points left, back.
+      {"push", {}, "friction_force", -1},
+      // Pushed low (0.2 m, below d/(2·mu_s) = 0.5 m), the 10 kg box slides: −mu_k·m·g, mu_k 0.4.
+      {"tipping_box", {{"push_height", "0.2"}}, "friction_force", -1, -0.4 * 10 * g},
+      {"spring_pull", {}, "friction_force", -1},
+      {"pulley", {}, "friction_force", -1},
+      {"lubricated", {}, "friction_force", -1},
+      {"contact_area", {}, "wide_friction", -1},
+      // Launched at 2 m/s, mu_k 0.3: still sliding at 0.2 s (the dry lane stops at 0.68 s).
+      {"friction_models", {}, "coulomb_friction", -1, std::nan(""), 0.2},
+      {"friction_models", {}, "engineering_friction", -1, std::nan(""), 0.2},
+      {"friction_models", {}, "quadratic_friction", -1, std::nan(""), 0.2},
+      // On a slope the positive way is down it: friction holding the 1 kg block (25°, under
+      // atan(mu_s 0.6) = 31°) is −m·g·sin θ; braking its slide (35°) −mu_k·m·g·cos θ, mu_k 0.4.
+      {"incline", {{"angle", "25"}}, "friction_force", -1, -g * std::sin(25 * pi / 180)},
+      {"incline", {{"angle", "35"}}, "friction_force", -1, -0.4 * g * std::cos(35 * pi / 180)},
+      {"check_the_article", {{"example", "advanced"}}, "friction_force", -1},
+      // Friction that drives: the road pushes the driven wheel forward, the bottom block pulls
+      // the top one forward; the floor holds the bottom block back.
+      {"driven_wheel", {}, "friction_force", 1},
+      {"stacked_blocks", {}, "friction_on_top", 1},
+      {"stacked_blocks", {}, "friction_on_bottom", -1},
+  };
+  for (const Reading& reading : readings) {
+    Lesson lesson(resolve_lesson(reading.lesson), reading.settings);
+    run_for(lesson, reading.at > 0 ? reading.at : lesson.duration());
+    const double value = lesson.scene().probe(reading.probe).history.back();
+    // More than a newton's thousandth the right way: a probe that reads 0 shows no sign.
+    EXPECT_GT(reading.sign * value, 1e-3) << reading.lesson << ' ' << reading.probe << " reads " << value;
+    if (!std::isnan(reading.exact)) {
+      // The solver's precision: statics and kinetic friction to well within 0.1 %.
+      EXPECT_NEAR(value, reading.exact, 1e-3 * std::abs(reading.exact)) << reading.lesson << ' ' << reading.probe;
+    }
+  }
+  // The theory table's friction rows, theory and measurement alike, are signed the same way.
+  struct Row {
+    std::string lesson;
+    std::map<std::string, std::string> settings;
+    std::string starts;  // the row's name begins so
+    double sign;
+  };
+  const std::vector<Row> rows = {
+      {"push", {}, "friction at the end", -1},
+      {"pulley", {}, "friction on the block", -1},
+      {"check_the_article", {{"example", "advanced"}}, "peak kinetic friction", -1},
+      {"driven_wheel", {}, "friction while gripping", 1},
+      {"stacked_blocks", {}, "friction on the top block halfway", 1},
+  };
+  for (const Row& wanted : rows) {
+    Lesson lesson(resolve_lesson(wanted.lesson), wanted.settings);
+    run_for(lesson, lesson.duration());
+    bool found = false;
+    for (const ExpectationResult& row : lesson.expectations()) {
+      if (row.name.rfind(wanted.starts, 0) != 0) continue;
+      found = true;
+      ASSERT_TRUE(row.numeric && row.measured_yet) << row.name;
+      EXPECT_GT(wanted.sign * row.predicted, 1e-3) << wanted.lesson << ": " << row.name << " predicts " << row.predicted;
+      EXPECT_GT(wanted.sign * row.measured, 1e-3) << wanted.lesson << ": " << row.name << " measures " << row.measured;
+    }
+    EXPECT_TRUE(found) << wanted.lesson << " has no row " << wanted.starts;
+  }
+  // Every friction probe (a force, in N) of every built-in lesson is in the list.
+  for (const std::string& name : builtin_lessons()) {
+    Lesson lesson(resolve_lesson(name));
+    for (const Probe& probe : lesson.scene().probes()) {
+      if (probe.name.find("friction") == std::string::npos || lesson.probe_unit(probe.name) != "N") continue;
+      const bool listed = std::any_of(readings.begin(), readings.end(), [&](const Reading& reading) {
+        return reading.lesson == name && reading.probe == probe.name;
+      });
+      EXPECT_TRUE(listed) << name << "'s probe " << probe.name << ": say which way its friction points, and check it here";
     }
   }
 }

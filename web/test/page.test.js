@@ -784,7 +784,7 @@ test('a screenshot (Ctrl+S) and the run\'s CSV (Ctrl+E) arrive as downloads', as
   const arrived = async () => {
     for (let i = 0; i < 100; ++i) {
       const names = fs.readdirSync(folder).filter((name) => !name.endsWith('.crdownload'));
-      if (names.length >= 2) return names.sort();
+      if (names.length >= 3) return names.sort();
       await new Promise((resolve) => setTimeout(resolve, 100));
     }
     return fs.readdirSync(folder).sort();
@@ -792,9 +792,12 @@ test('a screenshot (Ctrl+S) and the run\'s CSV (Ctrl+E) arrive as downloads', as
   const names = await arrived();
   const png = names.find((name) => /^frictionlab_incline.*\.png$/.test(name));
   const csv = names.find((name) => /^frictionlab_incline.*\.csv$/.test(name));
-  assert.ok(png && csv, 'downloads: ' + names.join(', '));
+  // The CSV's settings file comes beside it: which lesson and values made the run.
+  const settings = names.find((name) => /^frictionlab_incline.*_settings\.txt$/.test(name));
+  assert.ok(png && csv && settings, 'downloads: ' + names.join(', '));
   assert.equal(fs.readFileSync(path.join(folder, png)).subarray(1, 4).toString(), 'PNG');
-  assert.match(fs.readFileSync(path.join(folder, csv), 'utf8'), /incline/);
+  assert.match(fs.readFileSync(path.join(folder, csv), 'utf8'), /^\uFEFFt \(s\),distance \(m\),/);
+  assert.match(fs.readFileSync(path.join(folder, settings), 'utf8'), /^FrictionLab run of .*incline\.lua\n/);
   // What the status line says is where the browser put it, not a folder inside the page.
   assert.match(await call(page, 'frictionlab_status'), /Downloads\/frictionlab_incline/);
   await page.close();
