@@ -584,8 +584,8 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     const std::vector<ImU32>* colours = k < chart.segment_colours.size() && !chart.segment_colours[k].empty() ? &chart.segment_colours[k] : nullptr;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (indices[i] < series.labels.size()) {
-        draw->AddText(font, 0.85f * text, ImVec2(points[i].x + 4.0f * s, points[i].y - 0.9f * text), series.colour,
-                      series.labels[indices[i]].c_str());
+        draw->AddText(font, 0.85f * text, ImVec2(points[i].x + 4.0f * s, points[i].y - 0.9f * text),
+                      readable_ink(series.colour, theme.panel), series.labels[indices[i]].c_str());
       }
     }
     if (series.line && colours != nullptr) {

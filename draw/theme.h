@@ -35,6 +35,13 @@ struct Theme {
 };
 const Theme& theme(ThemeName name);
 
+// WCAG 2.1's contrast ratio of two opaque colours, 1 to 21.
+double contrast_ratio(ImU32 a, ImU32 b);
+// `ink` as text on `background`: itself where it reads 4.5:1 or more (WCAG 2.1 AA), else mixed
+// toward black (on a light background) or white (on a dark one) just far enough. A force's
+// value is written in its arrow's colour; vermilion friction on white read 4.3:1.
+ImU32 readable_ink(ImU32 ink, ImU32 background);
+
 // A material's fill colour: known materials by look (wood brown, ice pale blue), others from
 // a palette by the order they were declared in.
 ImU32 material_colour(const Theme& theme, const std::string& material, int index);

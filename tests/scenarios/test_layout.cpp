@@ -28,6 +28,7 @@
 #include "lessons/runtime/class_words.h"
 #include "tests/classroom_hands.h"
 #include "tests/rendering.h"
+#include "tests/text_contrast.h"
 
 namespace frictionlab::ui {
 namespace {
@@ -1161,6 +1162,74 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
   EXPECT_GE(springs_checked, 16);
   EXPECT_GE(numbers_shown, 100);
   EXPECT_GE(negative_numbers, 4);  // push's view shows the floor behind the block, incline's the slope above it
+}
+
+// Issue 31: "measured: 3.92 N", the number the class waits for, was #999 on white (2.85:1), and
+// the status line too. Every text the window draws, in projector mode at 1920 × 1080, in both
+// themes, before and after the reveal, with every measuring tool on and with the help panel
+// open, stands at least 4.5:1 (WCAG 2.1 AA) from what lies under it: the panel, a slider's
+// knob, a plot, a label's box, the world. Read from the draw data (tests/text_contrast.h),
+// glyph by glyph.
+TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
+  constexpr double wcag_aa = 4.5;
+  for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
+    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+      ClassroomOptions options;
+      options.lesson = name;
+      options.window.theme = theme_name;
+      options.window.projector = true;
+      ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+      const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(theme_name).background);
+      std::size_t glyphs_checked = 0;
+      const auto check = [&](const char* moment) {
+        hands.frame();
+        hands.frame();
+        FrameRecord record;
+        hands.frame(0.0, &record);
+        const std::vector<GlyphContrast> glyphs = glyph_contrasts(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts, clear);
+        glyphs_checked += glyphs.size();
+        // One message a text: its worst glyph.
+        std::map<std::string, GlyphContrast> worst;
+        for (const GlyphContrast& glyph : glyphs) {
+          if (glyph.ratio >= wcag_aa) continue;
+          std::string text = "(a text the record does not name)";
+          for (const ShownText& shown : record.texts) {
+            if (glyph.at.x >= shown.needed.x && glyph.at.x <= shown.needed.z && glyph.at.y >= shown.needed.y &&
+                glyph.at.y <= shown.needed.w) {
+              text = "'" + shown.text + "' in " + shown.panel;
+              break;
+            }
+          }
+          const auto found = worst.find(text);
+          if (found == worst.end() || glyph.ratio < found->second.ratio) worst[text] = glyph;
+        }
+        for (const auto& [text, glyph] : worst) {
+          const auto hex = [](const ImVec4& c) {
+            char out[8];
+            std::snprintf(out, sizeof out, "#%02x%02x%02x", static_cast<int>(std::lround(c.x * 255)),
+                          static_cast<int>(std::lround(c.y * 255)), static_cast<int>(std::lround(c.z * 255)));
+            return std::string(out);
+          };
+          char ratio[16];
+          std::snprintf(ratio, sizeof ratio, "%.2f", glyph.ratio);
+          ADD_FAILURE() << name << ", " << (theme_name == ThemeName::dark ? "dark" : "light") << ", " << moment << ": "
+                        << text << " at (" << glyph.at.x << ", " << glyph.at.y << ") is " << hex(glyph.text) << " on "
+                        << hex(glyph.background) << ", " << ratio << ":1";
+        }
+      };
+      check("at the start");
+      hands.key(Key::space);
+      for (int i = 0; i < 45; ++i) hands.frame(1.0 / 30.0);
+      hands.key(Key::space);
+      hands.key(Key::t);
+      check("after the reveal");
+      hands.classroom().window_settings().tools = ToolSettings{true, true, true, true};
+      check("with every tool on");
+      hands.key(Key::f1);
+      check("with the help panel open");
+      EXPECT_GT(glyphs_checked, 1000u) << name << ": the draw data's text was not found";
+    }
+  }
 }
 
 // An open menu hides what is under it: its background (every popup's) and the menu bar's are
