@@ -38,9 +38,10 @@ Classroom::Classroom(ClassroomOptions options)
       browser_(options.browser) {
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
-    playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
+    std::optional<Mystery> mystery;
+    playback_ = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     check_lock(playback_->lesson());
-    if (mystery_) mystery_tab_.begin();
+    mystery_.begin(std::move(mystery));
     predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
@@ -58,24 +59,6 @@ Classroom::Classroom(ClassroomOptions options)
   tools_.on = window_.tools;
   tools_.arm_stopwatch(0.0, false);
   if (!options.opening_notice.empty()) status_ = options.opening_notice;
-}
-
-std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
-                                                   const StepSettings& settings, const std::optional<MysteryChoice>& choice,
-                                                   std::optional<Mystery>& mystery) const {
-  auto playback = std::make_unique<Playback>(path, overrides, settings);
-  if (!choice) return playback;
-  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
-  Mystery drawn(*choice, playback->lesson());
-  for (const auto& [name, value] : drawn.settings()) {
-    if (overrides.count(name) > 0) {
-      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
-    }
-    overrides[name] = value;
-  }
-  playback = std::make_unique<Playback>(path, overrides, settings);
-  mystery = std::move(drawn);
-  return playback;
 }
 
 void Classroom::forget_interaction() {
@@ -116,7 +99,7 @@ bool Classroom::run_played() const {
 
 ParametersOnShow Classroom::parameters_on_show() const {
   const lessons::Lesson& lesson = playback_->lesson();
-  return {lesson, lock_, mystery_, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
 }
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
@@ -188,13 +171,13 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   style.hidden = hidden_values();
   style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
   style.more_tabs = [this, s] {
-    if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
+    if (mystery_.mystery) mystery_.tab.draw_tab(*mystery_.mystery, theory_hidden(), theme(window_.theme), controls_);
     if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
       change_settings(*use);
     }
     // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
     // (whose boundary would give μs away until the reveal anyway).
-    if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
+    if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
   if (!run_played()) parameters_.opened = false;
@@ -223,7 +206,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
-  for (const auto& [name, text] : parameters_.asked) set_value(name, text);
+  for (const auto& [name, value] : parameters_.asked) set_value(name, value);
   parameters_.asked.clear();
   after_keys();
 }
@@ -349,12 +332,16 @@ void Classroom::change_settings(const StepSettings& settings) {
   }
 }
 
-void Classroom::set_value(const std::string& name, const std::string& text) {
+void Classroom::set_value(const std::string& name, const lessons::GivenValue& value) {
   try {
-    const std::string before = parameter_text(playback_->lesson().parameter(name));
-    playback_->set_parameter(name, text);
+    const double before = playback_->lesson().parameter(name).value;
+    if (value.number) {
+      playback_->set_parameter(name, *value.number);
+    } else {
+      playback_->set_parameter(name, value.text);
+    }
     parameters_.errors.erase(name);
-    keep_mystery(name, before);
+    mystery_.keep(name, before, *playback_, parameters_);
   } catch (const InvalidInput& error) {
     parameters_.errors[name] = error.what();
   }
@@ -444,7 +431,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
-    mystery_.reset();  // it was a pair of the lesson that closed
+    mystery_.begin(std::nullopt);  // it was a pair of the lesson that closed
     predictions_ = {};
     forget_interaction();
     return "";
@@ -466,6 +453,10 @@ void Classroom::try_failed_script(double wall_seconds) {
     failed_script_ = script;
     failed_error_ = error;
   }
+}
+
+std::string Classroom::window_title() const {
+  return "FrictionLab: " + playback_->lesson().title() + mystery_.title_words();
 }
 
 std::optional<std::string> Classroom::take_screenshot_request() {

@@ -24,7 +24,7 @@
 #include "classroom/dialogs.h"
 #include "classroom/keys.h"
 #include "classroom/measuring_tools.h"
-#include "classroom/mystery_tab.h"
+#include "classroom/mystery_panel.h"
 #include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
@@ -107,15 +107,16 @@ class Classroom {
   std::string export_history();
 
   // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
-  const std::optional<Mystery>& mystery() const { return mystery_; }
+  // Its actions are the mystery panel's (classroom/mystery_panel.h); these forward to it.
+  const std::optional<Mystery>& mystery() const { return mystery_.mystery; }
   // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
   // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
-  std::string make_mystery(const MysteryChoice& choice);
-  void reveal_mystery();
+  std::string make_mystery(const MysteryChoice& choice) { return mystery_.make(choice, *playback_, parameters_); }
+  void reveal_mystery() { mystery_.reveal(); }
   // The class's answers, as typed in the Mystery tab.
-  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k);
+  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k) { mystery_.answer(mu_s, mu_k); }
   // What the class must not see now.
-  HiddenValues hidden_values() const;
+  HiddenValues hidden_values() const { return mystery_.hidden(); }
 
   // Opens a prepared setup (classroom_state/setup_file.h): its lesson with its values, lock and mystery, at
   // t = 0. On failure the running lesson keeps running and the message ("file:line: ...") is
@@ -181,15 +182,6 @@ class Classroom {
   std::string gauge_plot_title() const;
   // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
-  // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
-  // would take its pair away (a material chosen) is put back, with why beside its control.
-  void keep_mystery(const std::string& name, const std::string& before);
-  // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
-  // (then made in `mystery`). Throws as Playback does, and InvalidInput for a pair the lesson
-  // does not have or a value of the mystery's in `overrides`.
-  std::unique_ptr<Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
-                                           const StepSettings& settings, const std::optional<MysteryChoice>& choice,
-                                           std::optional<Mystery>& mystery) const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   bool run_played() const;  // to the run's end, in the record
@@ -201,7 +193,8 @@ class Classroom {
   // what they hide (classroom/classroom_predictions.cpp).
   void predictions_style(FrameStyle& style);
   void forget_outdated_predictions();
-  void set_value(const std::string& name, const std::string& text);
+  // A value the Parameters panel asked for: a number as it is, a typed text read by the lesson.
+  void set_value(const std::string& name, const lessons::GivenValue& value);
   void change_settings(const StepSettings& settings);
   void try_failed_script(double wall_seconds);
   // A new file in the output folder named after the lesson's moment; never an existing one.
@@ -244,8 +237,7 @@ class Classroom {
   bool close_menus_ = false;              // a key pressed while a menu was open
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
-  std::optional<Mystery> mystery_;  // chosen once when a mystery begins
-  MysteryTab mystery_tab_;
+  MysteryPanel mystery_;
   SetupDialog setup_dialog_;
   OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;

@@ -153,7 +153,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
-  if (std::optional<std::string> said = mystery_tab_.draw_menu(*this, controls_)) status_ = *said;
+  if (std::optional<std::string> said = mystery_.tab.draw_menu(*this, controls_)) status_ = *said;
   const bool view = ImGui::BeginMenu("View");
   remember("View menu");
   if (view) {

@@ -10,18 +10,17 @@ std::string Classroom::open_setup(const std::string& path) {
     base.window = window_;
     const ClassroomOptions options = setup_options(path, base);
     std::optional<Mystery> mystery;
-    auto next = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
+    auto next = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
     playback_ = std::move(next);
-    mystery_ = std::move(mystery);
     lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
     lock_from_ = options.lock_from;
     // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
     predictions_ = options.predictions;
     window_.predictions = options.window.predictions;
     forget_interaction();
-    if (mystery_) mystery_tab_.begin();
+    mystery_.begin(std::move(mystery));
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
@@ -34,11 +33,11 @@ PreparedSetup Classroom::current_setup(const std::string& path) const {
   setup.lesson = setup_lesson_name(lesson.path(), path);
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // A mystery is saved as its pair and seed: its values are drawn again when it opens.
-    if (mystery_ && (parameter.name == mystery_->mu_s_name() || parameter.name == mystery_->mu_k_name())) continue;
+    if (mystery_.holds(parameter.name)) continue;
     setup.values.push_back({parameter.name, parameter_text(parameter), 0});
   }
   setup.lock.assign(lock_.begin(), lock_.end());
-  if (mystery_) setup.mystery = mystery_->choice();
+  if (mystery()) setup.mystery = mystery()->choice();
   setup.settings = lesson.settings();
   setup.ask_predictions = window_.predictions;
   // In the lesson's order; a box the class typed in and emptied again is no answer.
