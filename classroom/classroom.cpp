@@ -12,6 +12,7 @@
 #include <sstream>
 #include <utility>
 
+#include "classroom/force_gauge.h"
 #include "classroom/help_panel.h"
 #include "classroom/text_boxes.h"
 #include "classroom_state/plain_words.h"
@@ -31,18 +32,18 @@ std::string lesson_name(const std::string& script_path) { return std::filesystem
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
       lock_(options.lock.begin(), options.lock.end()),
-      lock_from_(options.lock_from),
       overrides_(options.overrides),
       output_folder_(options.output_folder),
       script_paths_(options.script_paths),
       browser_(options.browser) {
+  setups_.lock_from = options.lock_from;
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     std::optional<Mystery> mystery;
     playback_ = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     check_lock(playback_->lesson());
     mystery_.begin(std::move(mystery));
-    predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
+    predictions_.predictions = options.predictions;  // a prepared setup's; another lesson in its place asks again
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
@@ -164,8 +165,10 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
                              float newtons_to_pixels,
                              LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
   if (!playback_->gauge().empty()) {
-    style.extra_plot_title = gauge_plot_title();
-    style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
+    style.extra_plot_title = gauge_plot_title(playback_->gauge(), playback_->lesson().scene().frame_step());
+    style.extra_plot = [this](ImVec2 corner, ImVec2 size) {
+      draw_gauge_plot(corner, size, playback_->gauge(), playback_->lesson().scene().frame_step(), theme(window_.theme), *fonts_);
+    };
     style.show_extra_plot = hand_.held;
   }
   style.hidden = hidden_values();
@@ -181,8 +184,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
   if (!run_played()) parameters_.opened = false;
-  forget_outdated_predictions();
-  predictions_style(style);
+  if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
+  predictions_.style(style, *playback_, window_.predictions, run_played(), theme(window_.theme), controls_,
+                     [this] { return hidden_values().theory(); });
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_.heights(parameters_on_show());
   ImGui::PopFont();
@@ -199,7 +203,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
-  if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
+  if (std::string said = setups_.dialog.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
     status_ = said;
   }
   ImGui::PopFont();
@@ -287,7 +291,7 @@ void Classroom::handle_keys() {
   if (hit(Key::f11, false)) full_screen_toggle_ = true;
   if (hit(Key::f1, false)) window_.help = !window_.help;
   if (hit(Key::p, false)) window_.projector = !window_.projector;
-  if (hit(Key::t, false) && theory_hidden()) predictions_.revealed = true;
+  if (hit(Key::t, false) && theory_hidden()) predictions_.predictions.revealed = true;
   const double now = playback_->lesson().scene().time();
   if (hit(Key::w, false)) {
     window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
@@ -432,7 +436,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
     mystery_.begin(std::nullopt);  // it was a pair of the lesson that closed
-    predictions_ = {};
+    predictions_.predictions = {};
     forget_interaction();
     return "";
   } catch (const InvalidInput& error) {

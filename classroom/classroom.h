@@ -28,6 +28,7 @@
 #include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
+#include "classroom/setup_panel.h"
 #include "classroom/stability_map_tab.h"
 #include "classroom/transport_bar.h"
 #include "classroom/world_hand.h"
@@ -152,7 +153,7 @@ class Classroom {
   const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
-  ClassPredictions& predictions() { return predictions_; }
+  ClassPredictions& predictions() { return predictions_.predictions; }
   bool theory_hidden() const;
   // A new round of predictions (the View menu): the answers cleared, the theory hidden again,
   // the run back at t = 0.
@@ -173,13 +174,9 @@ class Classroom {
   void handle_keys();
   void after_keys();
   void menu_bar();
-  void tools_menu();
-  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
-  // and the gauge's plot.
+  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
   void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                    float newtons_to_pixels, LabelPlacer& labels);
-  void gauge_plot(ImVec2 corner, ImVec2 size);
-  std::string gauge_plot_title() const;
   // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
@@ -189,10 +186,6 @@ class Classroom {
   ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void messages(ImVec2 corner, float width);
-  // The predictions' part of the frame: their contents and height in the theory panel, and
-  // what they hide (classroom/classroom_predictions.cpp).
-  void predictions_style(FrameStyle& style);
-  void forget_outdated_predictions();
   // A value the Parameters panel asked for: a number as it is, a typed text read by the lesson.
   void set_value(const std::string& name, const lessons::GivenValue& value);
   void change_settings(const StepSettings& settings);
@@ -207,7 +200,6 @@ class Classroom {
   WindowSettings window_;
   MeasuringTools tools_;
   std::set<std::string> lock_;
-  std::string lock_from_;  // the setup file the lock came from; "": the command line's --lock
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   bool script_paths_ = true;
@@ -226,7 +218,7 @@ class Classroom {
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
-  ClassPredictions predictions_;  // a new lesson asks again
+  PredictionPanel predictions_;
   ParametersPanel parameters_;
   TransportBar transport_;
   WorldHand hand_;
@@ -238,7 +230,7 @@ class Classroom {
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   MysteryPanel mystery_;
-  SetupDialog setup_dialog_;
+  SetupPanel setups_;
   OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;

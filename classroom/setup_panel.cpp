@@ -1,5 +1,7 @@
-// Prepared setups in the classroom: the window's state as a setup file (classroom_state/setup_file.h), saving
-// it, and opening one in place of the running lesson (the Lesson menu's dialog: classroom/dialogs.h).
+// Prepared setups in the classroom (classroom/setup_panel.h): the window's state as a setup file
+// (classroom_state/setup_file.h), saving it, and opening one in place of the running lesson.
+#include "classroom/setup_panel.h"
+
 #include "classroom/classroom.h"
 
 namespace frictionlab::ui {
@@ -15,9 +17,9 @@ std::string Classroom::open_setup(const std::string& path) {
     // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
     playback_ = std::move(next);
     lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
-    lock_from_ = options.lock_from;
+    setups_.lock_from = options.lock_from;
     // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
-    predictions_ = options.predictions;
+    predictions_.predictions = options.predictions;
     window_.predictions = options.window.predictions;
     forget_interaction();
     mystery_.begin(std::move(mystery));
@@ -27,45 +29,53 @@ std::string Classroom::open_setup(const std::string& path) {
   }
 }
 
-PreparedSetup Classroom::current_setup(const std::string& path) const {
-  const lessons::Lesson& lesson = playback_->lesson();
+PreparedSetup SetupPanel::of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                   const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions) {
   PreparedSetup setup;
   setup.lesson = setup_lesson_name(lesson.path(), path);
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // A mystery is saved as its pair and seed: its values are drawn again when it opens.
-    if (mystery_.holds(parameter.name)) continue;
+    if (mystery.holds(parameter.name)) continue;
     setup.values.push_back({parameter.name, parameter_text(parameter), 0});
   }
-  setup.lock.assign(lock_.begin(), lock_.end());
-  if (mystery()) setup.mystery = mystery()->choice();
+  setup.lock.assign(lock.begin(), lock.end());
+  if (mystery.mystery) setup.mystery = mystery.mystery->choice();
   setup.settings = lesson.settings();
-  setup.ask_predictions = window_.predictions;
+  setup.ask_predictions = ask_predictions;
   // In the lesson's order; a box the class typed in and emptied again is no answer.
   for (const lessons::Prediction& prediction : lesson.predictions()) {
-    const auto answer = predictions_.answers.find(prediction.expectation);
-    if (answer != predictions_.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
+    const auto answer = predictions.answers.find(prediction.expectation);
+    if (answer != predictions.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
   }
-  setup.revealed = predictions_.revealed;
+  setup.revealed = predictions.revealed;
   return setup;
 }
 
-std::string Classroom::save_setup(const std::string& path) {
+std::string SetupPanel::save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson) {
   try {
-    const PreparedSetup setup = current_setup(path);
     // What the window marks as no number is refused here too: the file would not open again.
     for (const PreparedSetup::Answer& answer : setup.answers) {
-      const std::string problem = prediction_problem(playback_->lesson(), answer.row, answer.text);
+      const std::string problem = prediction_problem(lesson, answer.row, answer.text);
       if (!problem.empty()) {
         throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
                            "; correct it or clear it in the theory panel, then save");
       }
     }
     write_setup(path, setup);
-    status_ = "Setup saved to " + path;
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
   }
+}
+
+PreparedSetup Classroom::current_setup(const std::string& path) const {
+  return SetupPanel::of_window(path, playback_->lesson(), lock_, mystery_, window_.predictions, predictions_.predictions);
+}
+
+std::string Classroom::save_setup(const std::string& path) {
+  std::string why = SetupPanel::save(path, current_setup(path), playback_->lesson());
+  if (why.empty()) status_ = "Setup saved to " + path;
+  return why;
 }
 
 }  // namespace frictionlab::ui
