@@ -14,6 +14,7 @@
 #include <sstream>
 #include <utility>
 
+#include "classroom/force_gauge.h"
 #include "classroom/help_panel.h"
 #include "classroom/text_boxes.h"
 #include "classroom_state/plain_words.h"
@@ -34,17 +35,18 @@ std::string lesson_name(const std::string& script_path) { return std::filesystem
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
       lock_(options.lock.begin(), options.lock.end()),
-      lock_from_(options.lock_from),
       overrides_(options.overrides),
       output_folder_(options.output_folder),
       script_paths_(options.script_paths),
       browser_(options.browser) {
+  setups_.lock_from = options.lock_from;
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
-    playback_ = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery_);
+    std::optional<Mystery> mystery;
+    playback_ = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     check_lock(playback_->lesson());
-    if (mystery_) mystery_tab_.begin();
-    predictions_ = options.predictions;  // a prepared setup's; another lesson in its place asks again
+    mystery_.begin(std::move(mystery));
+    predictions_.predictions = options.predictions;  // a prepared setup's; another lesson in its place asks again
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
@@ -61,24 +63,6 @@ Classroom::Classroom(ClassroomOptions options)
   tools_.on = window_.tools;
   tools_.arm_stopwatch(0.0, false);
   if (!options.opening_notice.empty()) status_ = options.opening_notice;
-}
-
-std::unique_ptr<Playback> Classroom::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
-                                                   const StepSettings& settings, const std::optional<MysteryChoice>& choice,
-                                                   std::optional<Mystery>& mystery) const {
-  auto playback = std::make_unique<Playback>(path, overrides, settings);
-  if (!choice) return playback;
-  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
-  Mystery drawn(*choice, playback->lesson());
-  for (const auto& [name, value] : drawn.settings()) {
-    if (overrides.count(name) > 0) {
-      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
-    }
-    overrides[name] = value;
-  }
-  playback = std::make_unique<Playback>(path, overrides, settings);
-  mystery = std::move(drawn);
-  return playback;
 }
 
 void Classroom::forget_interaction() {
@@ -119,7 +103,7 @@ bool Classroom::run_played() const {
 
 ParametersOnShow Classroom::parameters_on_show() const {
   const lessons::Lesson& lesson = playback_->lesson();
-  return {lesson, lock_, mystery_, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
 }
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
@@ -182,25 +166,28 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
                              float newtons_to_pixels,
                              LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
   if (!playback_->gauge().empty()) {
-    style.extra_plot_title = gauge_plot_title();
-    style.extra_plot = [this](ImVec2 corner, ImVec2 size) { gauge_plot(corner, size); };
+    style.extra_plot_title = gauge_plot_title(playback_->gauge(), playback_->lesson().scene().frame_step());
+    style.extra_plot = [this](ImVec2 corner, ImVec2 size) {
+      draw_gauge_plot(corner, size, playback_->gauge(), playback_->lesson().scene().frame_step(), theme(window_.theme), *fonts_);
+    };
     style.show_extra_plot = hand_.held;
   }
   style.hidden = hidden_values();
   style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
   style.more_tabs = [this, s] {
-    if (mystery_) mystery_tab_.draw_tab(*mystery_, theory_hidden(), theme(window_.theme), controls_);
+    if (mystery_.mystery) mystery_.tab.draw_tab(*mystery_.mystery, theory_hidden(), theme(window_.theme), controls_);
     if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
       change_settings(*use);
     }
     // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
     // (whose boundary would give μs away until the reveal anyway).
-    if (!mystery_) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
+    if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   // Opened by the teacher for one run's comparison: the next run folds it again.
   if (!run_played()) parameters_.opened = false;
-  forget_outdated_predictions();
-  predictions_style(style);
+  if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
+  predictions_.style(style, *playback_, window_.predictions, run_played(), theme(window_.theme), controls_,
+                     [this] { return hidden_values().theory(); });
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_.heights(parameters_on_show());
   ImGui::PopFont();
@@ -217,14 +204,14 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
-  if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
+  if (std::string said = setups_.dialog.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
     status_ = said;
   }
   ImGui::PopFont();
 
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
-  for (const auto& [name, text] : parameters_.asked) set_value(name, text);
+  for (const auto& [name, value] : parameters_.asked) set_value(name, value);
   parameters_.asked.clear();
   after_keys();
 }
@@ -305,7 +292,7 @@ void Classroom::handle_keys() {
   if (hit(Key::f11, false)) full_screen_toggle_ = true;
   if (hit(Key::f1, false)) window_.help = !window_.help;
   if (hit(Key::p, false)) window_.projector = !window_.projector;
-  if (hit(Key::t, false) && theory_hidden()) predictions_.revealed = true;
+  if (hit(Key::t, false) && theory_hidden()) predictions_.predictions.revealed = true;
   const double now = playback_->lesson().scene().time();
   if (hit(Key::w, false)) {
     window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
@@ -350,12 +337,16 @@ void Classroom::change_settings(const StepSettings& settings) {
   }
 }
 
-void Classroom::set_value(const std::string& name, const std::string& text) {
+void Classroom::set_value(const std::string& name, const lessons::GivenValue& value) {
   try {
-    const std::string before = parameter_text(playback_->lesson().parameter(name));
-    playback_->set_parameter(name, text);
+    const double before = playback_->lesson().parameter(name).value;
+    if (value.number) {
+      playback_->set_parameter(name, *value.number);
+    } else {
+      playback_->set_parameter(name, value.text);
+    }
     parameters_.errors.erase(name);
-    keep_mystery(name, before);
+    mystery_.keep(name, before, *playback_, parameters_);
   } catch (const InvalidInput& error) {
     parameters_.errors[name] = error.what();
   }
@@ -445,8 +436,8 @@ std::string Classroom::open(const std::string& name_or_path) {
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens.
     playback_ = std::move(next);
-    mystery_.reset();  // it was a pair of the lesson that closed
-    predictions_ = {};
+    mystery_.begin(std::nullopt);  // it was a pair of the lesson that closed
+    predictions_.predictions = {};
     forget_interaction();
     return "";
   } catch (const InvalidInput& error) {
@@ -475,6 +466,10 @@ bool Classroom::try_failed_script(double wall_seconds) {
     failed_error_ = error;
   }
   return true;
+}
+
+std::string Classroom::window_title() const {
+  return "FrictionLab: " + playback_->lesson().title() + mystery_.title_words();
 }
 
 std::optional<std::string> Classroom::take_screenshot_request() {

@@ -24,10 +24,11 @@
 #include "classroom/dialogs.h"
 #include "classroom/keys.h"
 #include "classroom/measuring_tools.h"
-#include "classroom/mystery_tab.h"
+#include "classroom/mystery_panel.h"
 #include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
+#include "classroom/setup_panel.h"
 #include "classroom/stability_map_tab.h"
 #include "classroom/transport_bar.h"
 #include "classroom/world_hand.h"
@@ -109,15 +110,16 @@ class Classroom {
   std::string export_history();
 
   // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
-  const std::optional<Mystery>& mystery() const { return mystery_; }
+  // Its actions are the mystery panel's (classroom/mystery_panel.h); these forward to it.
+  const std::optional<Mystery>& mystery() const { return mystery_.mystery; }
   // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
   // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
-  std::string make_mystery(const MysteryChoice& choice);
-  void reveal_mystery();
+  std::string make_mystery(const MysteryChoice& choice) { return mystery_.make(choice, *playback_, parameters_); }
+  void reveal_mystery() { mystery_.reveal(); }
   // The class's answers, as typed in the Mystery tab.
-  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k);
+  void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k) { mystery_.answer(mu_s, mu_k); }
   // What the class must not see now.
-  HiddenValues hidden_values() const;
+  HiddenValues hidden_values() const { return mystery_.hidden(); }
 
   // Opens a prepared setup (classroom_state/setup_file.h): its lesson with its values, lock and mystery, at
   // t = 0. On failure the running lesson keeps running and the message ("file:line: ...") is
@@ -153,7 +155,7 @@ class Classroom {
   const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
-  ClassPredictions& predictions() { return predictions_; }
+  ClassPredictions& predictions() { return predictions_.predictions; }
   bool theory_hidden() const;
   // A new round of predictions (the View menu): the answers cleared, the theory hidden again,
   // the run back at t = 0.
@@ -174,24 +176,11 @@ class Classroom {
   void handle_keys();
   void after_keys();
   void menu_bar();
-  void tools_menu();
-  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools),
-  // and the gauge's plot.
+  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
   void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                    float newtons_to_pixels, LabelPlacer& labels);
-  void gauge_plot(ImVec2 corner, ImVec2 size);
-  std::string gauge_plot_title() const;
   // The words beside the transport bar's time bar: the run's notices and the status line.
   std::string transport_words() const;
-  // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
-  // would take its pair away (a material chosen) is put back, with why beside its control.
-  void keep_mystery(const std::string& name, const std::string& before);
-  // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
-  // (then made in `mystery`). Throws as Playback does, and InvalidInput for a pair the lesson
-  // does not have or a value of the mystery's in `overrides`.
-  std::unique_ptr<Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
-                                           const StepSettings& settings, const std::optional<MysteryChoice>& choice,
-                                           std::optional<Mystery>& mystery) const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   bool run_played() const;  // to the run's end, in the record
@@ -199,11 +188,8 @@ class Classroom {
   ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void messages(ImVec2 corner, float width);
-  // The predictions' part of the frame: their contents and height in the theory panel, and
-  // what they hide (classroom/classroom_predictions.cpp).
-  void predictions_style(FrameStyle& style);
-  void forget_outdated_predictions();
-  void set_value(const std::string& name, const std::string& text);
+  // A value the Parameters panel asked for: a number as it is, a typed text read by the lesson.
+  void set_value(const std::string& name, const lessons::GivenValue& value);
   void change_settings(const StepSettings& settings);
   // The script files' watchers, given the wall time since they last looked; true when what
   // they found changes what the window shows.
@@ -219,7 +205,6 @@ class Classroom {
   WindowSettings window_;
   MeasuringTools tools_;
   std::set<std::string> lock_;
-  std::string lock_from_;  // the setup file the lock came from; "": the command line's --lock
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   std::string output_folder_;
   bool script_paths_ = true;
@@ -238,7 +223,7 @@ class Classroom {
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
-  ClassPredictions predictions_;  // a new lesson asks again
+  PredictionPanel predictions_;
   ParametersPanel parameters_;
   TransportBar transport_;
   WorldHand hand_;
@@ -249,9 +234,8 @@ class Classroom {
   bool close_menus_ = false;              // a key pressed while a menu was open
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
-  std::optional<Mystery> mystery_;  // chosen once when a mystery begins
-  MysteryTab mystery_tab_;
-  SetupDialog setup_dialog_;
+  MysteryPanel mystery_;
+  SetupPanel setups_;
   OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;

@@ -15,14 +15,14 @@ namespace frictionlab::ui {
 std::string Classroom::lock_words() const {
   if (lock_.empty()) return "";
   // Nothing in the window unlocks it: the class cannot undo what the teacher prepared.
-  if (!lock_from_.empty() && browser_) {
+  if (!setups_.lock_from.empty() && browser_) {
     // The page's setups come from a link or a file from the computer, copied where nobody looks.
     return "Locked by the prepared setup this page opened, for the class to stay on this lesson. To unlock: open the "
            "page's address without its #setup= part, or a setup file without its lock line.";
   }
-  if (!lock_from_.empty()) {
-    return "Locked by the setup " + std::filesystem::path(lock_from_).filename().string() +
-           ", for the class to stay on this lesson. To unlock: delete its lock line (in " + lock_from_ +
+  if (!setups_.lock_from.empty()) {
+    return "Locked by the setup " + std::filesystem::path(setups_.lock_from).filename().string() +
+           ", for the class to stay on this lesson. To unlock: delete its lock line (in " + setups_.lock_from +
            "), then quit and open the setup again.";
   }
   return "Locked by --lock on the command line, for the class to stay on this lesson. To unlock: quit and start "
@@ -93,9 +93,9 @@ void Classroom::menu_bar() {
       if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_script_.ask();
       remember("Open a script");
       // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
-      if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setup_dialog_.ask(SetupDialog::Kind::open);
+      if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setups_.dialog.ask(SetupDialog::Kind::open);
       remember("Open a setup");
-      if (ImGui::MenuItem("Save as a setup...")) setup_dialog_.ask(SetupDialog::Kind::save);
+      if (ImGui::MenuItem("Save as a setup...")) setups_.dialog.ask(SetupDialog::Kind::save);
       remember("Save as a setup");
       if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     }
@@ -153,7 +153,7 @@ void Classroom::menu_bar() {
     if (ImGui::MenuItem("Reset to t = 0", "R")) playback_->reset();
     ImGui::EndMenu();
   }
-  if (std::optional<std::string> said = mystery_tab_.draw_menu(*this, controls_)) status_ = *said;
+  if (std::optional<std::string> said = mystery_.tab.draw_menu(*this, controls_)) status_ = *said;
   const bool view = ImGui::BeginMenu("View");
   remember("View menu");
   if (view) {
@@ -166,16 +166,16 @@ void Classroom::menu_bar() {
     // Off: the theory shows from the start, as for a teacher who takes no predictions.
     ImGui::MenuItem("Ask for predictions first", nullptr, &window_.predictions);
     remember("Ask for predictions first");
-    if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.revealed = true;
+    if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden())) predictions_.predictions.revealed = true;
     // A second round: the teacher changed a value after the reveal, and the class predicts anew
     // (before, the theory stayed up and the old answers were judged against the new run).
-    const bool answered = predictions_.revealed || !predictions_.answers.empty();
+    const bool answered = predictions_.predictions.revealed || !predictions_.predictions.answers.empty();
     const bool asks = window_.predictions && !playback_->lesson().predictions().empty();
     if (ImGui::MenuItem("Predict again (new answers, theory hidden)", nullptr, false, asks && answered)) predict_again();
     remember("Predict again");
     ImGui::EndMenu();
   }
-  tools_menu();
+  tools_.draw_menu(window_.tools, playback_->lesson().scene().time(), playback_->playing(), controls_);
   // Which file is running, so a student knows which script to edit: as much of its path as
   // fits at the right of the bar, never cut (the whole of it under the pointer).
   // In screen points: the menu bar is laid out as a group, so SameLine's x would be off by

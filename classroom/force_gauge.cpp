@@ -6,6 +6,7 @@
 
 #include "classroom/measuring_tools.h"
 #include "draw/overlays.h"
+#include "draw/text_record.h"
 
 namespace frictionlab::ui {
 
@@ -155,6 +156,45 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   chart.y_low = 0.0;
   chart.y_high = std::max(1.0, 1.15 * highest);
   return chart;
+}
+
+std::string gauge_plot_title(const GaugeRecord& record, double frame_step) {
+  // The plot shows the pulls together when the lesson pulled the body too.
+  const std::optional<GaugeFigures> figures = record.figures(frame_step);
+  if (!figures || figures->lesson_pulls.empty()) return "Force gauge (N)";
+  return "Hand + " + figures->lesson_pulls + " (N)";
+}
+
+std::string gauge_figures(const GaugeRecord& record, double frame_step) {
+  const std::optional<GaugeFigures> figures = record.figures(frame_step);
+  if (!figures) return "";
+  // When the lesson pulled the body too, the figures are the pulls together, and say so.
+  std::string text = figures->lesson_pulls.empty() ? "" : "hand + " + figures->lesson_pulls + ": ";
+  // The peak is the breakaway's once it slid; before, the most it has held so far.
+  if (!figures->peak) {
+    text += "no peak (sliding when taken)";
+  } else {
+    text += (figures->broke_away ? "peak " : "held so far ") + format_quantity(*figures->peak, "N");
+  }
+  text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
+  return text;
+}
+
+void draw_gauge_plot(ImVec2 corner, ImVec2 size, const GaugeRecord& record, double frame_step, const Theme& theme,
+                     const Fonts& fonts) {
+  const std::string figures = gauge_figures(record, frame_step);
+  ImGui::SetCursorScreenPos(corner);
+  // On one line: in the small font when the body's does not fit.
+  const bool small = ImGui::CalcTextSize(figures.c_str()).x > size.x;
+  if (small) ImGui::PushFont(fonts.small);
+  ImGui::PushTextWrapPos(0.0f);
+  shown_text(figures.c_str());
+  ImGui::PopTextWrapPos();
+  if (small) ImGui::PopFont();
+  const float used = ImGui::GetCursorScreenPos().y - corner.y;
+  const Chart chart = gauge_chart(record, frame_step, theme);
+  draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),
+             chart, theme, fonts);
 }
 
 }  // namespace frictionlab::ui

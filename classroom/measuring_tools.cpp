@@ -150,6 +150,37 @@ void MeasuringTools::arm_stopwatch(double now, bool playing) {
   if (on.stopwatch && !playing && !stopwatch.used()) stopwatch.start_stop(now);
 }
 
+void MeasuringTools::draw_menu(ToolSettings& shown, double now, bool playing, ControlPlaces& controls) {
+  const bool open = ImGui::BeginMenu("Tools");
+  remember_item(controls, "Tools menu");
+  if (!open) return;
+  // Shown before the run, it is armed at once: the teacher's next key may well be Space.
+  if (ImGui::MenuItem("Stopwatch (lesson time)", nullptr, &shown.stopwatch)) {
+    on = shown;
+    arm_stopwatch(now, playing);
+  }
+  remember_item(controls, "tool stopwatch");
+  // Armed before the run, it has not started: the trial's menu offered to stop it, and a lap of 0 s.
+  const bool armed = stopwatch.armed(now);
+  if (ImGui::MenuItem(stopwatch.start_stop_words(now), "W")) {
+    shown.stopwatch = true;
+    stopwatch.start_stop(now);
+  }
+  remember_item(controls, "stopwatch start");
+  if (ImGui::MenuItem("Lap", "L", false, stopwatch.running() && !armed)) stopwatch.lap(now);
+  remember_item(controls, "stopwatch lap");
+  if (ImGui::MenuItem("Reset the stopwatch")) stopwatch.reset();
+  remember_item(controls, "stopwatch reset");
+  ImGui::Separator();
+  ImGui::MenuItem("Distance marks along the surface", nullptr, &shown.distance_marks);
+  remember_item(controls, "tool distance marks");
+  ImGui::MenuItem("Speed of the main body", nullptr, &shown.speed);
+  remember_item(controls, "tool speed");
+  ImGui::MenuItem("Weight along and across a slope", nullptr, &shown.weight_components);
+  remember_item(controls, "tool weight components");
+  ImGui::EndMenu();
+}
+
 namespace {
 
 // The distance marks' step: a nice length about 120 pixels long.

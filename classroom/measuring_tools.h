@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "classroom/control_places.h"
 #include "classroom/settings.h"
 #include "draw/camera.h"
 #include "draw/drawing.h"
@@ -132,6 +133,9 @@ class MeasuringTools {
   // The stopwatch shown (on.stopwatch) while the lesson is paused, and never used since its last
   // reset: armed at `now`, so that Play starts it.
   void arm_stopwatch(double now, bool playing);
+  // The Tools menu, in the menu bar being drawn: which tools are on (`shown`, the window's
+  // settings, kept between runs) and the stopwatch's keys, at lesson time `now`.
+  void draw_menu(ToolSettings& shown, double now, bool playing, ControlPlaces& controls);
   // `lane`: the lane's number, which with lanes named by their bodies says whose tools it shows.
   void avoid(const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, float newtons_to_pixels, float scale,
              LabelPlacer& labels) const;

@@ -1,71 +1,102 @@
-// The classroom's mystery surface: making a pair a mystery, keeping it through rebuilds, the
-// reveal and the class's answers (the menu and the tab that ask for them: classroom/mystery_tab.h).
-// What stays hidden until the reveal is decided by hidden_values(), which every panel reads.
-#include <algorithm>
+// The mystery's part of the window (classroom/mystery_panel.h): making a pair a mystery, keeping it
+// through rebuilds, the reveal and the class's answers (the menu and the tab that ask for them:
+// classroom/mystery_tab.h). What stays hidden until the reveal is decided by hidden(), which
+// every panel reads.
+#include "classroom/mystery_panel.h"
 
-#include "classroom/classroom.h"
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "draw/panels.h"
 
 namespace frictionlab::ui {
 
-std::string Classroom::make_mystery(const MysteryChoice& choice) {
+std::unique_ptr<Playback> MysteryPanel::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                                       const StepSettings& settings,
+                                                       const std::optional<MysteryChoice>& choice,
+                                                       std::optional<Mystery>& made) {
+  auto playback = std::make_unique<Playback>(path, overrides, settings);
+  if (!choice) return playback;
+  // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
+  Mystery drawn(*choice, playback->lesson());
+  for (const auto& [name, value] : drawn.settings()) {
+    if (overrides.count(name) > 0) {
+      throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
+    }
+    overrides[name] = value;
+  }
+  playback = std::make_unique<Playback>(path, overrides, settings);
+  made = std::move(drawn);
+  return playback;
+}
+
+void MysteryPanel::begin(std::optional<Mystery> opened) {
+  mystery = std::move(opened);
+  if (mystery) tab.begin();
+}
+
+std::string MysteryPanel::make(const MysteryChoice& choice, Playback& playback, ParametersPanel& parameters) {
   try {
-    Mystery next(choice, playback_->lesson());
+    Mystery next(choice, playback.lesson());
     // μk first when it falls, so the pair never passes through μk > μs on the way (as the presets).
-    std::vector<std::pair<std::string, std::string>> settings = next.settings();
-    if (next.values().mu_k < playback_->lesson().parameter(next.mu_k_name()).value) std::swap(settings[0], settings[1]);
-    for (const auto& [name, value] : settings) playback_->set_parameter(name, value);
+    std::vector<std::pair<std::string, double>> values = next.numbers();
+    if (next.values().mu_k < playback.lesson().parameter(next.mu_k_name()).value) std::swap(values[0], values[1]);
+    for (const auto& [name, value] : values) playback.set_parameter(name, value);
     // A fresh run with the new surface: nothing measured on the old one counts.
-    playback_->reset();
-    mystery_ = std::move(next);
-    mystery_tab_.begin();
-    parameters_.errors.erase(mystery_->mu_s_name());
-    parameters_.errors.erase(mystery_->mu_k_name());
+    playback.reset();
+    mystery = std::move(next);
+    tab.begin();
+    parameters.errors.erase(mystery->mu_s_name());
+    parameters.errors.erase(mystery->mu_k_name());
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
   }
 }
 
-void Classroom::keep_mystery(const std::string& name, const std::string& before) {
-  if (!mystery_) return;
-  const lessons::Lesson& lesson = playback_->lesson();
+void MysteryPanel::keep(const std::string& name, double before, Playback& playback, ParametersPanel& parameters) const {
+  if (!mystery) return;
+  const lessons::Lesson& lesson = playback.lesson();
   try {
-    if (mystery_parameters(lesson, mystery_->choice().pair) != std::make_pair(mystery_->mu_s_name(), mystery_->mu_k_name())) {
+    if (mystery_parameters(lesson, mystery->choice().pair) != std::make_pair(mystery->mu_s_name(), mystery->mu_k_name())) {
       throw InvalidInput("another pair");
     }
   } catch (const InvalidInput&) {
-    playback_->set_parameter(name, before);
-    parameters_.errors[name] = "The mystery is " + mystery_->choice().pair + ": this " + name +
-                            " would take that pair away. Open the lesson again to end the mystery first.";
+    playback.set_parameter(name, before);
+    parameters.errors[name] = "The mystery is " + mystery->choice().pair + ": this " + name +
+                              " would take that pair away. Open the lesson again to end the mystery first.";
     return;
   }
   // A rebuild reads the pair's values from the script again: the drawn ones are put back.
-  for (const auto& [coefficient, value] : mystery_->settings()) {
-    if (parameter_text(lesson.parameter(coefficient)) != value) playback_->set_parameter(coefficient, value);
+  for (const auto& [coefficient, value] : mystery->numbers()) {
+    if (lesson.parameter(coefficient).value != value) playback.set_parameter(coefficient, value);
   }
 }
 
-void Classroom::reveal_mystery() {
-  if (mystery_) mystery_->reveal();
+void MysteryPanel::reveal() {
+  if (mystery) mystery->reveal();
 }
 
-void Classroom::answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k) {
-  if (!mystery_) return;
-  mystery_->answer_mu_s = mu_s;
-  mystery_->answer_mu_k = mu_k;
+void MysteryPanel::answer(std::optional<double> mu_s, std::optional<double> mu_k) {
+  if (!mystery) return;
+  mystery->answer_mu_s = mu_s;
+  mystery->answer_mu_k = mu_k;
 }
 
-HiddenValues Classroom::hidden_values() const {
+HiddenValues MysteryPanel::hidden() const {
   HiddenValues hidden;
-  if (mystery_) hidden.parameters = mystery_->hidden();
+  if (mystery) hidden.parameters = mystery->hidden();
   return hidden;
 }
 
-std::string Classroom::window_title() const {
-  std::string title = "FrictionLab: " + playback_->lesson().title();
-  if (mystery_) title += mystery_->revealed() ? " (mystery revealed)" : " (a mystery surface)";
-  return title;
+bool MysteryPanel::holds(const std::string& parameter) const {
+  return mystery && (parameter == mystery->mu_s_name() || parameter == mystery->mu_k_name());
+}
+
+std::string MysteryPanel::title_words() const {
+  if (!mystery) return "";
+  return mystery->revealed() ? " (mystery revealed)" : " (a mystery surface)";
 }
 
 }  // namespace frictionlab::ui

@@ -10,13 +10,19 @@
 #include "draw/text_record.h"
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
+#include "physics/materials.h"
 #include "physics/validation.h"
 
 namespace frictionlab::ui {
 namespace {
 
-// The pair's two coefficients by their parameters' names, written as every other panel writes them.
-const char* const coefficients[2] = {"mu_s", "mu_k"};
+// The pair's two coefficients, as the pair table names them (physics/materials.h).
+const PairCoefficient* const coefficients[2] = {&static_coefficient, &kinetic_coefficient};
+
+// "μs and μk", as every other panel writes them.
+std::string both_letters() {
+  return lessons::class_words(static_coefficient.name) + " and " + lessons::class_words(kinetic_coefficient.name);
+}
 
 // The theory's tab in the tab bar being drawn, when it was drawn there this frame: a column too
 // short for the theory's own panel puts it first among the tabs (draw/frame.cpp names it
@@ -47,7 +53,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   const std::vector<std::string> pairs = mystery_pairs(classroom.playback().lesson());
   if (pairs.empty()) {
     const std::string none =
-        "This lesson has no friction pair whose " + lessons::class_words("mu_s") + " and " + lessons::class_words("mu_k") + " are sliders.";
+        "This lesson has no friction pair whose " + both_letters() + " are sliders.";
     ImGui::TextDisabled("%s", none.c_str());
   } else {
     // A new mystery changes a pair's values: under the teacher's lock the class cannot draw one
@@ -107,7 +113,7 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
   // the column shows four lines of a tab before it scrolls, and the reveal must be among them.
   // The pair's materials stay, but not their book values: a class that knows wood on wood's
   // would be misled (the trial's class was).
-  const std::string heading = "Measure " + lessons::class_words("mu_s") + " and " + lessons::class_words("mu_k") + " of the mystery " +
+  const std::string heading = "Measure " + both_letters() + " of the mystery " +
                               mystery.choice().pair +
                               " surface (its values drawn at random, not the book's):";
   shown_text(heading.c_str());
@@ -118,13 +124,13 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
   for (int k = 0; k < 2; ++k) {
     ImGui::PushID(k);
     ImGui::AlignTextToFramePadding();
-    shown_text(lessons::class_words(coefficients[k]).c_str());
+    shown_text(lessons::class_words(coefficients[k]->name).c_str());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(box);
     const bool entered = ImGui::InputText("##answer", answer_text[k], sizeof answer_text[k],
                                           ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_EnterReturnsTrue);
     takes_a_number();
-    remember_item(controls, std::string("mystery answer ") + coefficients[k]);
+    remember_item(controls, std::string("mystery answer ") + coefficients[k]->name);
     if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
       std::string why;
       const std::string typed = answer_text[k];

@@ -3,8 +3,9 @@
 // reveal and then judged beside the true values.
 //
 // It keeps its own state (the answers as typed, why one was refused, the seed) and draws
-// itself, as each of Dear ImGui's demo windows does: the classroom holds one, calls draw_menu()
-// in its menu bar and draw_tab() inside the books' tab bar.
+// itself, as each of Dear ImGui's demo windows does: the mystery panel (classroom/mystery_panel.h)
+// holds one beside the mystery; the classroom calls draw_menu() in its menu bar and draw_tab()
+// inside the books' tab bar.
 #pragma once
 
 #include <optional>

@@ -20,11 +20,9 @@ namespace {
 
 // "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
 std::string control_label(const lessons::Parameter& parameter) {
-  const std::string letter = lessons::class_words(parameter.coefficient);
-  if (parameter.coefficient == "mu_s") return letter + " static";
-  if (parameter.coefficient == "mu_k") return letter + " kinetic";
-  if (parameter.coefficient == "c") return letter + " viscous";
-  if (parameter.coefficient == "b") return letter + " quadratic";
+  if (const PairCoefficient* coefficient = pair_coefficient(parameter.coefficient)) {
+    return lessons::class_words(parameter.coefficient) + " " + coefficient->word;
+  }
   return lessons::class_words(parameter.name);
 }
 
@@ -237,7 +235,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
           note_text(values.c_str());
           continue;
         }
-        if (parameter.coefficient == "mu_s") {
+        if (parameter.coefficient == static_coefficient.name) {
           ImGui::SameLine();
           ImGui::SetNextItemWidth(-FLT_MIN);
           preset_row(parameter, on_show, controls);
@@ -284,8 +282,9 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
 }
 
 void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls) {
-  const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - 4);  // "" or "name."
-  const std::string mu_k = prefix + "mu_k";
+  // "" or "name.", before the coefficient's own name.
+  const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - mu_s.coefficient.size());
+  const std::string mu_k = prefix + kinetic_coefficient.name;
   // A mystery's pair takes no presets: choosing one would end the mystery without a reveal.
   if (!unlocked(on_show.lock, mu_k) || (on_show.mystery && on_show.mystery->hides(mu_s.name))) {
     ImGui::NewLine();
@@ -305,8 +304,8 @@ void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const Parameter
       if (ImGui::Selectable(preset.label.c_str())) {
         // mu_k first when it falls, so the pair never passes through mu_k > mu_s on the way.
         const bool falling = preset.values.mu_k < on_show.lesson.parameter(mu_k).value;
-        const std::pair<std::string, std::string> s_value{mu_s.name, exact_text(preset.values.mu_s)};
-        const std::pair<std::string, std::string> k_value{mu_k, exact_text(preset.values.mu_k)};
+        const std::pair<std::string, lessons::GivenValue> s_value{mu_s.name, {"", preset.values.mu_s}};
+        const std::pair<std::string, lessons::GivenValue> k_value{mu_k, {"", preset.values.mu_k}};
         asked.push_back(falling ? k_value : s_value);
         asked.push_back(falling ? s_value : k_value);
       }
@@ -354,8 +353,11 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     const bool open = ImGui::BeginCombo("##choice", chosen.c_str());
     note_combo(chosen.c_str());
     if (open) {
-      for (const std::string& choice : parameter.choices) {
-        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) asked.push_back({name, choice});
+      for (std::size_t place = 0; place < parameter.choices.size(); ++place) {
+        const std::string& choice = parameter.choices[place];
+        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) {
+          asked.push_back({name, {"", static_cast<double>(place)}});
+        }
         remember_item(controls, name + " choice " + choice);
       }
       ImGui::EndCombo();
@@ -384,11 +386,11 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
       if (parameter.structural) {
         sliding = {name, value};
       } else {
-        asked.push_back({name, exact_text(value)});
+        asked.push_back({name, {"", value}});
       }
     }
     if (ImGui::IsItemDeactivated() && sliding && sliding->first == name) {
-      asked.push_back({name, exact_text(sliding->second)});
+      asked.push_back({name, {"", sliding->second}});
       sliding.reset();
     }
     if (value_x < reset_x) {
@@ -401,7 +403,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     if (ImGui::InputText("##value", typed, sizeof typed,
                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
                              ImGuiInputTextFlags_CharsNoBlank)) {
-      asked.push_back({name, typed});
+      asked.push_back({name, {typed, std::nullopt}});
     }
     takes_a_number();
     remember_item(controls, name + " value");
@@ -417,9 +419,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   ImGui::SameLine(reset_x);
   ImGui::BeginDisabled(parameter.value == parameter.default_value);
   if (ImGui::Button("\u21ba", ImVec2(ImGui::GetFrameHeight(), 0.0f))) {
-    const std::string back = parameter.is_choice() ? parameter.choices[static_cast<std::size_t>(parameter.default_value)]
-                                                   : exact_text(parameter.default_value);
-    asked.push_back({name, back});
+    asked.push_back({name, {"", parameter.default_value}});  // a choice's place, as its value is
   }
   ImGui::EndDisabled();
   remember_item(controls, name + " reset");

@@ -45,7 +45,9 @@ struct ParametersPanel {
   std::map<std::string, bool> pair_open;  // friction pairs the teacher opened (true) or folded (false)
   bool opened = false;  // the teacher opened the panel folded for this run's comparison
   std::optional<std::pair<std::string, double>> sliding;  // a slider that rebuilds on release
-  std::vector<std::pair<std::string, std::string>> asked;  // values asked for during this frame
+  // Values asked for during this frame: a slider's, a preset's, a reset's, a choice's as numbers
+  // (never written out and read back), a typed one as its text.
+  std::vector<std::pair<std::string, lessons::GivenValue>> asked;
   std::map<std::string, std::string> errors;               // a refused value, beside its control
 
   // Another lesson: nothing opened, folded, held or refused in the one before.

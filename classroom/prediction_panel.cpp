@@ -368,4 +368,49 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
   return height;
 }
 
+std::string PredictionPanel::forget_outdated(const Playback& playback) {
+  if (playback.lesson().scene().frame() != 0) return "";
+  std::vector<std::string> outdated;
+  for (const auto& [row_name, answer] : predictions.answers) {
+    for (const lessons::ExpectationResult& row : playback.readings().expectations) {
+      if (row.name != row_name || row.failed) continue;
+      const std::string theory = row.numeric ? exact_text(row.predicted) : row.predicted_text;
+      const auto [seen, first] = predictions.theory_answered.emplace(row_name, theory);
+      if (!first && seen->second != theory) outdated.push_back(row_name);
+    }
+  }
+  for (const std::string& row_name : outdated) {
+    predictions.answers.erase(row_name);
+    predictions.theory_answered.erase(row_name);
+  }
+  // Rows no longer answered (a box emptied) are seen afresh when answered again.
+  std::erase_if(predictions.theory_answered, [&](const auto& seen) { return predictions.answers.count(seen.first) == 0; });
+  if (outdated.empty()) return "";
+  return "A value changed after the class predicted \"" + outdated.front() + "\"" + (outdated.size() > 1 ? " (and more)" : "") +
+         ": that prediction was for the old values, so it is cleared. " +
+         (predictions.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
+}
+
+void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool asking, bool comparing, const Theme& colours,
+                            ControlPlaces& controls, std::function<bool()> theory_withheld) {
+  const lessons::Lesson& lesson = playback.lesson();
+  // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
+  if (!asking || lesson.predictions().empty()) return;
+  style.theory_hidden = ui::theory_hidden(lesson, predictions, asking);
+  style.comparing = comparing;
+  style.predictions = [this, &playback, &colours, &controls, theory_withheld] {
+    // Answers are given before the run: once it has started they are what the class said.
+    const bool editable = !predictions.revealed && playback.lesson().scene().frame() == 0;
+    PredictionControls noted;
+    noted.remember = [&controls](const std::string& name) { remember_item(controls, name); };
+    noted.reveal = [this] { predictions.revealed = true; };
+    predictions_contents(playback.lesson(), playback.readings().expectations, predictions, editable, colours, noted,
+                         theory_withheld());
+  };
+  style.predictions_height = [this, &playback, theory_withheld](float width) {
+    return predictions_contents_height(playback.lesson(), playback.readings().expectations, predictions, width,
+                                       theory_withheld());
+  };
+}
+
 }  // namespace frictionlab::ui

@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "classroom/control_places.h"
 #include "classroom_state/class_predictions.h"
+#include "classroom_state/playback.h"
+#include "draw/frame.h"
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
@@ -47,5 +50,27 @@ void predictions_contents(const lessons::Lesson& lesson, const std::vector<lesso
 // The height predictions_contents takes at a width (the panel's inside), in the current font.
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                                   const ClassPredictions& predictions, float width, bool theory_withheld = false);
+
+// The predictions' part of the window: the class's answers for the lesson on screen (a new
+// lesson asks again) and what they hand the frame. It owns the answers, as each of Dear ImGui's
+// demo windows owns its state: the classroom holds one and asks it each frame.
+struct PredictionPanel {
+  ClassPredictions predictions;
+
+  // An answer is the class's for the values it was given at. At t = 0 (where answers are typed,
+  // and where a changed value or R brings a run), a row whose theory is not what it was when the
+  // class answered (the mass was changed, or anything else it depends on) loses its answer; a
+  // value the row does not depend on keeps it. Before the reveal the class is asked again; after
+  // it (a teacher exploring other values) the old answer would be judged against a theory it was
+  // never about, so it goes too, and View > Predict again asks anew with the theory hidden.
+  // Returns what the status line should say ("" when no answer went).
+  std::string forget_outdated(const Playback& playback);
+  // Its part of the frame: the contents and height in the theory panel, and what they hide.
+  // `asking`: the teacher asks for predictions (the View menu); `comparing`: the run was played
+  // to its end. `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
+  // theory, which stays hidden until the mystery is revealed.
+  void style(FrameStyle& style, const Playback& playback, bool asking, bool comparing, const Theme& colours,
+             ControlPlaces& controls, std::function<bool()> theory_withheld);
+};
 
 }  // namespace frictionlab::ui

@@ -1,5 +1,7 @@
-// Prepared setups in the classroom: the window's state as a setup file (classroom_state/setup_file.h), saving
-// it, and opening one in place of the running lesson (the Lesson menu's dialog: classroom/dialogs.h).
+// Prepared setups in the classroom (classroom/setup_panel.h): the window's state as a setup file
+// (classroom_state/setup_file.h), saving it, and opening one in place of the running lesson.
+#include "classroom/setup_panel.h"
+
 #include "classroom/classroom.h"
 
 namespace frictionlab::ui {
@@ -10,18 +12,56 @@ std::string Classroom::open_setup(const std::string& path) {
     base.window = window_;
     const ClassroomOptions options = setup_options(path, base);
     std::optional<Mystery> mystery;
-    auto next = build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
+    auto next = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
     playback_ = std::move(next);
-    mystery_ = std::move(mystery);
     lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
-    lock_from_ = options.lock_from;
+    setups_.lock_from = options.lock_from;
     // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
-    predictions_ = options.predictions;
+    predictions_.predictions = options.predictions;
     window_.predictions = options.window.predictions;
     forget_interaction();
-    if (mystery_) mystery_tab_.begin();
+    mystery_.begin(std::move(mystery));
+    return "";
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+PreparedSetup SetupPanel::of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                   const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions) {
+  PreparedSetup setup;
+  setup.lesson = setup_lesson_name(lesson.path(), path);
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    // A mystery is saved as its pair and seed: its values are drawn again when it opens.
+    if (mystery.holds(parameter.name)) continue;
+    setup.values.push_back({parameter.name, parameter_text(parameter), 0});
+  }
+  setup.lock.assign(lock.begin(), lock.end());
+  if (mystery.mystery) setup.mystery = mystery.mystery->choice();
+  setup.settings = lesson.settings();
+  setup.ask_predictions = ask_predictions;
+  // In the lesson's order; a box the class typed in and emptied again is no answer.
+  for (const lessons::Prediction& prediction : lesson.predictions()) {
+    const auto answer = predictions.answers.find(prediction.expectation);
+    if (answer != predictions.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
+  }
+  setup.revealed = predictions.revealed;
+  return setup;
+}
+
+std::string SetupPanel::save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson) {
+  try {
+    // What the window marks as no number is refused here too: the file would not open again.
+    for (const PreparedSetup::Answer& answer : setup.answers) {
+      const std::string problem = prediction_problem(lesson, answer.row, answer.text);
+      if (!problem.empty()) {
+        throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
+                           "; correct it or clear it in the theory panel, then save");
+      }
+    }
+    write_setup(path, setup);
     return "";
   } catch (const InvalidInput& error) {
     return error.what();
@@ -29,44 +69,13 @@ std::string Classroom::open_setup(const std::string& path) {
 }
 
 PreparedSetup Classroom::current_setup(const std::string& path) const {
-  const lessons::Lesson& lesson = playback_->lesson();
-  PreparedSetup setup;
-  setup.lesson = setup_lesson_name(lesson.path(), path);
-  for (const lessons::Parameter& parameter : lesson.parameters()) {
-    // A mystery is saved as its pair and seed: its values are drawn again when it opens.
-    if (mystery_ && (parameter.name == mystery_->mu_s_name() || parameter.name == mystery_->mu_k_name())) continue;
-    setup.values.push_back({parameter.name, parameter_text(parameter), 0});
-  }
-  setup.lock.assign(lock_.begin(), lock_.end());
-  if (mystery_) setup.mystery = mystery_->choice();
-  setup.settings = lesson.settings();
-  setup.ask_predictions = window_.predictions;
-  // In the lesson's order; a box the class typed in and emptied again is no answer.
-  for (const lessons::Prediction& prediction : lesson.predictions()) {
-    const auto answer = predictions_.answers.find(prediction.expectation);
-    if (answer != predictions_.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
-  }
-  setup.revealed = predictions_.revealed;
-  return setup;
+  return SetupPanel::of_window(path, playback_->lesson(), lock_, mystery_, window_.predictions, predictions_.predictions);
 }
 
 std::string Classroom::save_setup(const std::string& path) {
-  try {
-    const PreparedSetup setup = current_setup(path);
-    // What the window marks as no number is refused here too: the file would not open again.
-    for (const PreparedSetup::Answer& answer : setup.answers) {
-      const std::string problem = prediction_problem(playback_->lesson(), answer.row, answer.text);
-      if (!problem.empty()) {
-        throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
-                           "; correct it or clear it in the theory panel, then save");
-      }
-    }
-    write_setup(path, setup);
-    status_ = "Setup saved to " + path;
-    return "";
-  } catch (const InvalidInput& error) {
-    return error.what();
-  }
+  std::string why = SetupPanel::save(path, current_setup(path), playback_->lesson());
+  if (why.empty()) status_ = "Setup saved to " + path;
+  return why;
 }
 
 }  // namespace frictionlab::ui

@@ -68,6 +68,8 @@ class Mystery {
   const std::string& mu_k_name() const { return mu_k_name_; }
   // The values as --set would give them, to build the lesson with.
   std::vector<std::pair<std::string, std::string>> settings() const;
+  // The same as numbers, to set the running lesson's sliders with.
+  std::vector<std::pair<std::string, double>> numbers() const;
 
   bool revealed() const { return revealed_; }
   void reveal() { revealed_ = true; }

@@ -52,7 +52,7 @@ Playback::Playback(const std::string& path, std::map<std::string, std::string> o
 void Playback::after_rebuild() {
   framing_ = lessons::WorldFraming::of(*lesson_);
   initial_values_.clear();
-  for (const lessons::Parameter& parameter : lesson_->parameters()) initial_values_[parameter.name] = parameter_text(parameter);
+  for (const lessons::Parameter& parameter : lesson_->parameters()) initial_values_[parameter.name] = parameter.value;
   record_.clear();
   gauge_.clear();
   next_action_ = 0;
@@ -286,7 +286,7 @@ void Playback::scrub_to(double t) {
     // Replay from the start: the values the record began with, then every action at its frame.
     for (const lessons::Parameter& parameter : lesson_->parameters()) {
       const auto initial = initial_values_.find(parameter.name);
-      if (initial != initial_values_.end() && !parameter.structural && parameter_text(parameter) != initial->second) {
+      if (initial != initial_values_.end() && !parameter.structural && parameter.value != initial->second) {
         lesson_->set(parameter.name, initial->second);
       }
     }
@@ -327,7 +327,7 @@ void Playback::record(Action action) {
 void Playback::apply(const Action& action) {
   Scene& scene = lesson_->scene();
   switch (action.kind) {
-    case Action::Kind::set: lesson_->set(action.name, action.text); break;
+    case Action::Kind::set: lesson_->set(action.name, action.value); break;
     case Action::Kind::grab: scene.grab(scene.body(action.name), action.local_point, action.target); break;
     case Action::Kind::move: scene.move_grab(action.target); break;
     case Action::Kind::release: scene.release(); break;
@@ -335,13 +335,17 @@ void Playback::apply(const Action& action) {
 }
 
 void Playback::set_parameter(const std::string& name, const std::string& text) {
+  set_parameter(name, lessons::parse_parameter_value(lesson_->parameter(name), text));  // throws for an unknown name
+}
+
+void Playback::set_parameter(const std::string& name, double value) {
   const lessons::Parameter& parameter = lesson_->parameter(name);  // throws for an unknown name
   if (parameter.structural) {
-    lesson_->set(name, text);  // throws and changes nothing when refused
+    lesson_->set(name, value);  // throws and changes nothing when refused
     after_rebuild();
     return;
   }
-  record({Action::Kind::set, 0, name, text});
+  record({Action::Kind::set, 0, name, value});
   if (!blown_ && !lesson_->failed()) problem_.clear();
   refresh_readings();
 }
@@ -353,17 +357,17 @@ void Playback::set_settings(const StepSettings& settings) {
 }
 
 void Playback::grab(const std::string& body, b2Vec2 local_point, b2Vec2 target) {
-  record({Action::Kind::grab, 0, body, "", local_point, target});
+  record({Action::Kind::grab, 0, body, 0.0, local_point, target});
 }
 
 void Playback::move_grab(b2Vec2 target) {
   if (lesson_->scene().grabbed() == nullptr) return;
-  record({Action::Kind::move, 0, "", "", {0.0f, 0.0f}, target});
+  record({Action::Kind::move, 0, "", 0.0, {0.0f, 0.0f}, target});
 }
 
 void Playback::release() {
   if (lesson_->scene().grabbed() == nullptr) return;
-  record({Action::Kind::release, 0, "", "", {0.0f, 0.0f}, {0.0f, 0.0f}});
+  record({Action::Kind::release, 0, "", 0.0, {0.0f, 0.0f}, {0.0f, 0.0f}});
 }
 
 bool Playback::reload() {

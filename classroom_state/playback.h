@@ -70,6 +70,9 @@ class Playback {
   // Parameters and settings. Throw InvalidInput (the message says what and the range) and
   // change nothing when the value is refused. A structural value or a setting rebuilds the
   // scene from t = 0; the others change the running lesson and join the record.
+  // A number (a choice: its place in the list) reaches the lesson as it is (a slider's, a
+  // preset's, the mystery's); text (a typed value) is read first, as --set's is.
+  void set_parameter(const std::string& name, double value);
   void set_parameter(const std::string& name, const std::string& text);
   void set_settings(const StepSettings& settings);
 
@@ -106,7 +109,7 @@ class Playback {
     enum class Kind { set, grab, move, release } kind;
     long frame;        // applied just before this frame is stepped
     std::string name;  // parameter or body
-    std::string text;  // the parameter's value
+    double value = 0.0;  // the parameter's
     b2Vec2 local_point{0.0f, 0.0f}, target{0.0f, 0.0f};
   };
   void after_rebuild();
@@ -127,7 +130,7 @@ class Playback {
   std::unique_ptr<lessons::Lesson> lesson_;
   lessons::WorldFraming framing_;
   lessons::LessonReadings readings_;
-  std::map<std::string, std::string> initial_values_;  // the values the record starts from
+  std::map<std::string, double> initial_values_;  // the values the record starts from
   std::vector<Action> record_;
   long recorded_frames_ = 0;
   bool playing_ = false;

@@ -39,13 +39,20 @@ struct PairCoefficient {
   // 1e6 outruns any step.
   double largest;
   const char* meaning;  // "static friction coefficient", as a slider's tooltip says it
+  // The meaning in one word, after the coefficient's letter on its slider ("μs static"): the
+  // Parameters panel's names column is a third of the panel, too narrow for `meaning`.
+  const char* word;
 };
 inline constexpr PairCoefficient pair_coefficients[] = {
-    {"mu_s", "", &FrictionPair::mu_s, 2.0, 10.0, "static friction coefficient"},
-    {"mu_k", "", &FrictionPair::mu_k, 2.0, 10.0, "kinetic friction coefficient"},
-    {"c", "N·s/m", &FrictionPair::c, 1000.0, 1e6, "viscous drag coefficient"},
-    {"b", "N·s²/m²", &FrictionPair::b, 1000.0, 1e6, "quadratic drag coefficient"},
+    {"mu_s", "", &FrictionPair::mu_s, 2.0, 10.0, "static friction coefficient", "static"},
+    {"mu_k", "", &FrictionPair::mu_k, 2.0, 10.0, "kinetic friction coefficient", "kinetic"},
+    {"c", "N·s/m", &FrictionPair::c, 1000.0, 1e6, "viscous drag coefficient", "viscous"},
+    {"b", "N·s²/m²", &FrictionPair::b, 1000.0, 1e6, "quadratic drag coefficient", "quadratic"},
 };
+// The dry pair, μs and μk, which the window takes together (a pair's presets, a mystery, the
+// stability map's boundary): by the table's rows, so their names are spelt here alone.
+inline constexpr const PairCoefficient& static_coefficient = pair_coefficients[0];
+inline constexpr const PairCoefficient& kinetic_coefficient = pair_coefficients[1];
 // The coefficient of that name; nullptr when it is none of the four.
 const PairCoefficient* pair_coefficient(std::string_view name);
 // "mu_s, mu_k, c, b", for messages that list them.

@@ -64,14 +64,14 @@ struct PlotFunctions {
 };
 
 struct LessonBuild {
-  LessonBuild(std::string chunk_name, std::map<std::string, std::string> overrides, bool strict, StepSettings settings);
+  LessonBuild(std::string chunk_name, std::map<std::string, GivenValue> overrides, bool strict, StepSettings settings);
 
   Sandbox sandbox;
   std::string chunk_name;
   // The values set from outside (--set, sliders), this build's own copy: a build that fails
   // leaves the lesson's untouched. Not strict (a reload), a value that no longer fits is
   // dropped with a warning instead of failing the build.
-  std::map<std::string, std::string> overrides;
+  std::map<std::string, GivenValue> overrides;
   bool strict = true;
   StepSettings settings;
   std::unique_ptr<Scene> scene;
@@ -218,10 +218,6 @@ FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, cons
 // After the script: a pair that can rub but that no pair{} declared (its values came from the
 // presets) gets its coefficients as parameters too, so every lesson has its sliders.
 void declare_preset_pairs(LessonBuild& build);
-
-// Reads a parameter's value from text: a number within its range, or one of its choices.
-// Throws InvalidInput naming the parameter and the range or the choices.
-double parse_parameter_value(const Parameter& parameter, const std::string& text);
 
 // lesson{ moments = { ... } }, the value on the stack top: reads and checks each moment
 // (everything that can be checked before the parameters exist) into build.moments.

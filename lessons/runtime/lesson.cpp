@@ -39,7 +39,7 @@ void require_script_function(lua_State* state, int index, const std::string& wha
 
 LessonBuild& build_of(lua_State* state) { return *static_cast<LessonBuild*>(sandbox_of(state).owner()); }
 
-LessonBuild::LessonBuild(std::string chunk, std::map<std::string, std::string> given, bool strict_overrides,
+LessonBuild::LessonBuild(std::string chunk, std::map<std::string, GivenValue> given, bool strict_overrides,
                          StepSettings step)
     : chunk_name(std::move(chunk)), overrides(std::move(given)), strict(strict_overrides), settings(step),
       presets(preset_table()) {
@@ -196,8 +196,8 @@ Lesson::Lesson(std::string path, std::map<std::string, std::string> overrides, S
 
 Lesson::Lesson(const ScriptText& script, std::map<std::string, std::string> overrides, StepSettings settings)
     : path_(script.path), source_(script.source),
-      compiled_(script.compiled_from_ == script.source ? script.compiled_ : std::string()),
-      overrides_(std::move(overrides)), settings_(settings) {
+      compiled_(script.compiled_from_ == script.source ? script.compiled_ : std::string()), settings_(settings) {
+  for (auto& [name, text] : overrides) overrides_[name] = GivenValue{std::move(text), std::nullopt};
   validate(settings_);
   replace(build(source_, compiled_, true));
 }
@@ -453,11 +453,13 @@ std::vector<ExpectationResult> Lesson::expectations(std::exception_ptr& failure)
   return rows;
 }
 
-void Lesson::set(const std::string& name, const std::string& text) {
+void Lesson::set(const std::string& name, const std::string& text) { set(name, parse_parameter_value(parameter(name), text)); }
+
+void Lesson::set(const std::string& name, double number) {
   Parameter* found = current_->find_parameter(name);
   if (found == nullptr) parameter(name);  // throws, listing the parameters
   Parameter& changed = *found;
-  const double value = parse_parameter_value(changed, text);
+  const double value = check_parameter_value(changed, number);
   if (!changed.structural && !changed.coefficient.empty()) {
     // A coefficient the script reads only while running: the pair table changes under the
     // running lesson, as a teacher moving a slider expects.
@@ -473,11 +475,11 @@ void Lesson::set(const std::string& name, const std::string& text) {
     scene().wake();  // a block resting on static friction may slide with the new values
     changed.value = value;
     for (const auto& memory : current_->remembered) memory->filled = 0;  // functions may read param
-    overrides_[name] = text;
+    overrides_[name] = GivenValue{"", value};
     return;
   }
   const auto saved = overrides_;
-  overrides_[name] = text;
+  overrides_[name] = GivenValue{"", value};
   try {
     rebuild();
   } catch (...) {

@@ -38,6 +38,21 @@ struct Parameter {
   std::string shown() const;         // "0.6", "25 °", "plastic"
 };
 
+// A value for the parameter, checked: a number within its range, or a choice's place in its
+// list. Returns it; throws InvalidInput naming the parameter and the range or the choices.
+double check_parameter_value(const Parameter& parameter, double value);
+// The same read from text (--set, a typed value): a decimal number, or one of its choices by name.
+double parse_parameter_value(const Parameter& parameter, const std::string& text);
+
+// A value given from outside the script: the text --set gave, read when its parameter is
+// declared, or a number the window set (a slider's, a preset's, the mystery's), kept as the
+// double it was: never written out and read back.
+struct GivenValue {
+  std::string text;
+  std::optional<double> number;  // set: `text` is unused
+  std::string shown() const;     // the text, or the number as exact_text writes it
+};
+
 // A plot's kind: probes against time, or probes against another probe.
 enum class PlotKind { time, xy };
 
@@ -232,9 +247,12 @@ class Lesson {
   // whether it is active (the chart shows it in place of the curves); "" when none did.
   std::string theory_error() const;
 
-  // Sets a parameter from text ("0.45", "plastic"). Throws InvalidInput (naming the
-  // parameter and its range, or listing the parameters) and changes nothing when the value is
-  // wrong. A structural parameter rebuilds the scene from t = 0; the others apply at once.
+  // Sets a parameter to a number (a choice: its place in the list). Throws InvalidInput (naming
+  // the parameter and its range, or listing the parameters) and changes nothing when the value
+  // is wrong. A structural parameter rebuilds the scene from t = 0 with the number as it is;
+  // the others apply at once (a pair's coefficient goes straight into the pair table).
+  void set(const std::string& name, double value);
+  // The same from text ("0.45", "plastic"): a typed value, the command line's: read, then set.
   void set(const std::string& name, const std::string& value);
   // Runs the script again from disk (the file changed, or the student asked). Returns false on
   // failure, with the reason in last_error(), and the last good lesson keeps running.
@@ -261,7 +279,7 @@ class Lesson {
   std::string path_;
   std::string source_;    // the text of the last good build
   std::string compiled_;  // source_ compiled (Sandbox::compiled)
-  std::map<std::string, std::string> overrides_;
+  std::map<std::string, GivenValue> overrides_;  // --set's texts, then the numbers set
   StepSettings settings_;
   std::unique_ptr<LessonBuild> current_;
   bool failed_ = false;

@@ -27,13 +27,14 @@ void apply_override(LessonBuild& build, Parameter& parameter) {
   const auto found = build.overrides.find(parameter.name);
   if (found == build.overrides.end()) return;
   try {
-    parameter.value = parse_parameter_value(parameter, found->second);
+    const GivenValue& given = found->second;
+    parameter.value = given.number ? check_parameter_value(parameter, *given.number) : parse_parameter_value(parameter, given.text);
   } catch (const InvalidInput& error) {
     if (build.strict) {
       if (build.override_error.empty()) build.override_error = error.what();
     } else {
       // The script changed under a slider's value (a narrower range, a choice gone).
-      build.warnings.push_back(parameter.declared_at + ": " + parameter.name + " was set to " + found->second +
+      build.warnings.push_back(parameter.declared_at + ": " + parameter.name + " was set to " + found->second.shown() +
                                ", which no longer fits; it is back to " + parameter.shown());
       build.overrides.erase(found);
     }
@@ -874,6 +875,23 @@ int substep_length(lua_State* state) {
 
 }  // namespace
 
+double check_parameter_value(const Parameter& parameter, double value) {
+  if (parameter.is_choice()) {
+    // A choice's place in its list, as Parameter::value holds it.
+    const double last = static_cast<double>(parameter.choices.size() - 1);
+    if (!(value >= 0.0 && value <= last && value == std::floor(value))) {
+      std::string list;
+      for (const std::string& choice : parameter.choices) list += (list.empty() ? "" : ", ") + choice;
+      throw InvalidInput(parameter.name + " = " + validation::exact_text(value) + ": not the place of one of the choices " + list +
+                         " (0 to " + validation::exact_text(last) + ")");
+    }
+    return value;
+  }
+  const std::string unit = parameter.unit.empty() ? "" : " " + parameter.unit;
+  validation::require_in_range(parameter.name, value, parameter.min, parameter.max, false, unit.c_str());
+  return value;
+}
+
 double parse_parameter_value(const Parameter& parameter, const std::string& text) {
   if (parameter.is_choice()) {
     for (size_t i = 0; i < parameter.choices.size(); ++i) {
@@ -892,10 +910,10 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
     const bool comma = text.find(',') != std::string::npos;
     throw InvalidInput(parameter.name + "=" + text + ": not a number" + (comma ? "; write decimals with a point, as in 0.5" : ""));
   }
-  const std::string unit = parameter.unit.empty() ? "" : " " + parameter.unit;
-  validation::require_in_range(parameter.name, *value, parameter.min, parameter.max, false, unit.c_str());
-  return *value;
+  return check_parameter_value(parameter, *value);
 }
+
+std::string GivenValue::shown() const { return number ? validation::exact_text(*number) : text; }
 
 void register_lesson_api(lua_State* state) {
   const luaL_Reg functions[] = {{"lesson", lesson},       {"parameter", parameter}, {"material", material},

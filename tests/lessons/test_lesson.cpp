@@ -1013,6 +1013,34 @@ TEST(LessonParameters, DefaultsOverridesChoicesAndPresets) {
   EXPECT_NE(text.find("mass=2kg: not a number"), std::string::npos) << text;
 }
 
+// A number set (the window's sliders, presets and mystery set numbers) reaches the lesson as the
+// double it is, never written out and read back, through every rebuild. 1e-310 is a double (a
+// subnormal one) inside c's range [0, 1000], but its text is refused (strtod cannot read it
+// exactly): a number that went through text on its way would be refused too, or dropped with a
+// warning by the next rebuild.
+TEST(LessonParameters, ANumberIsSetAsTheDoubleItIsThroughRebuilds) {
+  ScriptFile script(parameter_script);
+  Lesson lesson(script.path());
+  const double tiny = 1e-310;
+  const std::string as_text = error_of([&] { lesson.set("c", "1e-310"); });
+  EXPECT_NE(as_text.find("c=1e-310: too close to 0 for a double to hold"), std::string::npos) << as_text;
+  lesson.set("c", tiny);
+  EXPECT_EQ(lesson.parameter("c").value, tiny);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "asphalt").c, tiny);
+  lesson.set("mass", 2.5);  // structural: the script runs again, with both numbers
+  EXPECT_EQ(lesson.parameter("c").value, tiny);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "asphalt").c, tiny);
+  EXPECT_TRUE(lesson.warnings().empty());
+  // A choice by its place in the list, as Parameter::value holds it; a place between two is none.
+  lesson.set("kind", 1.0);
+  EXPECT_EQ(lesson.parameter("kind").shown(), "rubber");
+  const std::string between = error_of([&] { lesson.set("kind", 0.5); });
+  EXPECT_NE(between.find("kind = 0.5: not the place of one of the choices wood, rubber (0 to 1)"), std::string::npos) << between;
+  // Out of range, as the text says it.
+  const std::string range = error_of([&] { lesson.set("mass", 50.0); });
+  EXPECT_NE(range.find("mass = 50 kg is outside the allowed range [0.1, 10]"), std::string::npos) << range;
+}
+
 TEST(LessonParameters, ACoefficientChangesTheRunningLessonAndAStructuralOneRebuildsIt) {
   ScriptFile script(parameter_script);
   Lesson lesson(script.path());
