@@ -455,6 +455,18 @@ std::vector<ExpectationResult> Lesson::expectations(std::exception_ptr& failure)
 
 void Lesson::set(const std::string& name, const std::string& text) { set(name, parse_parameter_value(parameter(name), text)); }
 
+namespace {
+
+// What a set value is kept as through rebuilds and reloads: a number as the double it is, a
+// choice as its name. A choice kept by its place picked another one silently after a student
+// added a choice before it and saved; by its name it stays, or is said to no longer fit.
+GivenValue kept_value(const Parameter& parameter, double value) {
+  if (parameter.is_choice()) return GivenValue{parameter.choices[static_cast<std::size_t>(value)], std::nullopt};
+  return GivenValue{"", value};
+}
+
+}  // namespace
+
 void Lesson::set(const std::string& name, double number) {
   Parameter* found = current_->find_parameter(name);
   if (found == nullptr) parameter(name);  // throws, listing the parameters
@@ -475,11 +487,11 @@ void Lesson::set(const std::string& name, double number) {
     scene().wake();  // a block resting on static friction may slide with the new values
     changed.value = value;
     for (const auto& memory : current_->remembered) memory->filled = 0;  // functions may read param
-    overrides_[name] = GivenValue{"", value};
+    overrides_[name] = kept_value(changed, value);
     return;
   }
   const auto saved = overrides_;
-  overrides_[name] = GivenValue{"", value};
+  overrides_[name] = kept_value(changed, value);
   try {
     rebuild();
   } catch (...) {

@@ -1041,6 +1041,31 @@ TEST(LessonParameters, ANumberIsSetAsTheDoubleItIsThroughRebuilds) {
   EXPECT_NE(range.find("mass = 50 kg is outside the allowed range [0.1, 10]"), std::string::npos) << range;
 }
 
+// A choice the window set is kept by its name, not its place: a student who put "ice" before
+// "rubber" in the list and saved had the lesson silently run on ice; with "rubber" gone it ran
+// on ice again, with no word. By name, the choice stays, or the warning says it no longer fits.
+TEST(LessonParameters, AChoiceSetByTheWindowIsKeptByItsNameWhenTheScriptsListChanges) {
+  ScriptFile script(parameter_script);
+  Lesson lesson(script.path());
+  lesson.set("kind", 1.0);  // the slider's place: rubber
+  ASSERT_EQ(lesson.parameter("kind").shown(), "rubber");
+  const std::string list = "choices = { \"wood\", \"rubber\" }";
+  const auto with_choices = [&](const std::string& choices) {
+    std::string text = parameter_script;
+    return text.replace(text.find(list), list.size(), choices);
+  };
+  script.rewrite(with_choices("choices = { \"wood\", \"ice\", \"rubber\" }"));
+  ASSERT_TRUE(lesson.reload()) << lesson.last_error();
+  EXPECT_EQ(lesson.parameter("kind").shown(), "rubber");
+  EXPECT_TRUE(lesson.warnings().empty());
+  script.rewrite(with_choices("choices = { \"wood\", \"ice\" }"));
+  ASSERT_TRUE(lesson.reload()) << lesson.last_error();
+  EXPECT_EQ(lesson.parameter("kind").shown(), "wood");
+  ASSERT_EQ(lesson.warnings().size(), 1u);
+  EXPECT_NE(lesson.warnings().front().find("kind was set to rubber, which no longer fits; it is back to wood"), std::string::npos)
+      << lesson.warnings().front();
+}
+
 TEST(LessonParameters, ACoefficientChangesTheRunningLessonAndAStructuralOneRebuildsIt) {
   ScriptFile script(parameter_script);
   Lesson lesson(script.path());
