@@ -128,6 +128,9 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   classroom_options.lock = options.lock;
   classroom_options.mystery = options.mystery.choice();
   classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  // What the settings file brought back, before the command line and a setup have their say:
+  // `--projector` on a new machine is no projector mode kept from the last session.
+  const std::string kept = ui::kept_from_last_session(classroom_options.window);
   // The help panel a newcomer's first window opens with is for a person at the window: a
   // picture taken where the window has no settings yet would show it over the lesson.
   if (!options.screenshot.empty() && (settings_path.empty() || !fs::exists(settings_path))) {
@@ -139,7 +142,6 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   if (!options.setup.empty()) classroom_options = ui::setup_options(options.setup, classroom_options);
   // A picture is no session: what came back from the last one is said to a person only.
   if (options.screenshot.empty()) {
-    const std::string kept = ui::kept_from_last_session(classroom_options.window);
     std::string& notice = classroom_options.opening_notice;
     if (!kept.empty()) notice = notice.empty() ? kept : notice + " " + kept;
   }
