@@ -1,28 +1,11 @@
 #include "app/csv_log.h"
 
 #include <filesystem>
-#include <fstream>
 
 #include "lessons/runtime/history_csv.h"
 #include "physics/validation.h"
 
 namespace frictionlab {
-namespace {
-
-std::string first_line(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::string line;
-  std::getline(file, line);
-  return line;
-}
-
-}  // namespace
-
-bool written_by_frictionlab(const std::string& path) { return lessons::starts_frictionlab_csv(first_line(path)); }
-
-bool settings_written_by_frictionlab(const std::string& path) {
-  return lessons::starts_frictionlab_settings(first_line(path));
-}
 
 CsvLog::CsvLog(const std::string& path, const lessons::Lesson& lesson, std::ostream& standard_output,
                std::ostream& standard_error)
@@ -34,13 +17,13 @@ CsvLog::CsvLog(const std::string& path, const lessons::Lesson& lesson, std::ostr
     throw InvalidInput("--csv " + path + ": that looks like a lesson script; give a .csv file so no script is overwritten");
   }
   try {
-    // The settings file is written once the CSV is in place (finish), but refused now, before
-    // the run, and after the CSV would be, so that a message names the CSV when both would:
-    // each opened and dropped at once, leaving no temporary file, then the CSV's kept open last
-    // (the interrupt handler removes one temporary file, the last opened).
-    { ui::OutputFile refused_now(path, written_by_frictionlab); }
-    { ui::OutputFile refused_now(lessons::settings_path_for(path), settings_written_by_frictionlab); }
-    file_ = std::make_unique<ui::OutputFile>(path, written_by_frictionlab);
+    // The settings file is written at the end, put in place just before the CSV (finish), but
+    // refused now, before the run, and after the CSV would be, so that a message names the CSV
+    // when both would: each opened and dropped at once, leaving no temporary file, then the
+    // CSV's kept open (the interrupt handler removes one temporary file, the last opened).
+    { ui::OutputFile refused_now(path, lessons::frictionlab_csv_file); }
+    { ui::OutputFile refused_now(lessons::settings_path_for(path), lessons::frictionlab_settings_file); }
+    file_ = std::make_unique<ui::OutputFile>(path, lessons::frictionlab_csv_file);
   } catch (const std::runtime_error& error) {
     std::string message = "--csv ";
     message += error.what();
@@ -70,10 +53,12 @@ void CsvLog::finish() {
     return;
   }
   try {
-    file_->commit();
-    ui::OutputFile settings(lessons::settings_path_for(path_), settings_written_by_frictionlab);
+    // The settings first, then the CSV: a settings file that cannot be written leaves the last
+    // run's CSV and its settings as they were, never a new CSV beside an old run's settings.
+    ui::OutputFile settings(lessons::settings_path_for(path_), lessons::frictionlab_settings_file);
     settings.write(settings_);
     settings.commit();
+    file_->commit();
   } catch (const std::runtime_error& error) {
     throw InvalidInput(std::string("--csv ") + error.what());
   }

@@ -37,9 +37,4 @@ class CsvLog {
   std::string settings_;
 };
 
-// Whether the file at `path` is a CSV this program wrote (it starts with the format's header),
-// or a settings file it wrote: only such files are replaced by a new run.
-bool written_by_frictionlab(const std::string& path);
-bool settings_written_by_frictionlab(const std::string& path);
-
 }  // namespace frictionlab

@@ -529,19 +529,16 @@ std::string Classroom::export_history() {
   }
   const std::string path = output_path("frictionlab_" + lesson_name(lesson.path()) + "_history", ".csv");
   // The values that made the run, beside it, so a file found later says which run it is; a
-  // mystery's are "?". Only a settings file FrictionLab wrote is replaced there, and one that is
-  // not is refused before the CSV is written, so no CSV is left without its settings.
+  // mystery's are "?". Only a settings file FrictionLab wrote is replaced there, and it is put
+  // in place before the CSV, so no CSV is ever left without its settings.
   const HiddenValues hidden = hidden_values();
   const std::string settings = lessons::run_settings(lesson, [&](const std::string& name) { return hidden.hides(name); });
-  OutputFile settings_file(lessons::settings_path_for(path), [](const std::string& existing) {
-    std::ifstream file(existing, std::ios::binary);
-    std::string line;
-    std::getline(file, line);
-    return lessons::starts_frictionlab_settings(line);
-  });
-  settings_file.write(settings);
+  {
+    OutputFile settings_file(lessons::settings_path_for(path), lessons::frictionlab_settings_file);
+    settings_file.write(settings);
+    settings_file.commit();
+  }
   write_whole_file(path, csv.data(), csv.size());
-  settings_file.commit();
   return path;
 }
 

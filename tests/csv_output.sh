@@ -54,6 +54,20 @@ test "$(ls -A "$d" | tr '\n' ' ')" = "run.csv run_settings.txt " || fail "someth
 test "$(wc -l < "$d/run.csv")" -eq 31 || fail "the second run did not replace the first"
 grep -qx 'angle = 35 °' "$d/run_settings.txt" || fail "the second run did not replace the settings: $(cat "$d/run_settings.txt")"
 
+# An earlier FrictionLab's file (its comment line first) is replaced too, so a teacher's script
+# that writes the same file every class works after an upgrade; the same header with a column a
+# student added at its end is the student's, and refused.
+printf '%s# FrictionLab run of incline.lua at 240 Hz\nt (s),x (m)\n0,0\n' "$bom" > "$d/earlier.csv"
+"$frictionlab" run incline --duration 0.1 --csv "$d/earlier.csv" >/dev/null 2>"$d/err" || fail "an earlier FrictionLab's CSV was refused: $(cat "$d/err")"
+sed -n 1p "$d/earlier.csv" | grep -q "^${bom}t (s),distance (m)," || fail "an earlier FrictionLab's CSV was not replaced"
+rm -f "$d/earlier.csv" "$d/earlier_settings.txt" "$d/err"
+noted="${bom}t (s),distance (m),speed (m/s),friction_force (N),normal_force (N),any_contact_slipping,hand_pulled,gauge (N),my notes"
+printf '%s\n0,0,0,0,0,0,0,,the block has not moved yet\n' "$noted" > "$d/noted.csv"
+"$frictionlab" run incline --duration 0.1 --csv "$d/noted.csv" >/dev/null 2>"$d/err"
+test $? -eq 2 || fail "--csv over a student's CSV with a column of their own did not exit 2"
+test "$(sed -n 1p "$d/noted.csv")" = "$noted" || fail "the student's CSV was changed"
+rm -f "$d/noted.csv" "$d/err"
+
 # A settings file FrictionLab did not write is refused with exit 2 before the run, and no CSV is written.
 echo "my own settings" > "$d/mine_settings.txt"
 "$frictionlab" run incline --duration 0.1 --csv "$d/mine.csv" >/dev/null 2>"$d/err"

@@ -1,5 +1,6 @@
 #include "lessons/runtime/history_csv.h"
 
+#include <fstream>
 #include <sstream>
 
 #include "physics/materials.h"
@@ -72,9 +73,36 @@ std::string settings_path_for(const std::string& csv_path) {
 }
 
 bool starts_frictionlab_csv(const std::string& first_line) {
-  return starts_with(first_line, std::string(csv_byte_order_mark) + csv_time_column + ",");
+  std::string line = first_line;
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+  if (starts_with(line, csv_byte_order_mark)) line.erase(0, sizeof csv_byte_order_mark - 1);
+  // FrictionLab's header from its first column to its last, as csv_header writes it: a file a
+  // student saved again with a column of their own at the end is theirs, not to be replaced.
+  const std::string last_columns = ",any_contact_slipping,hand_pulled,gauge (N)";
+  if (starts_with(line, std::string(csv_time_column) + ",") && line.size() >= last_columns.size() &&
+      line.compare(line.size() - last_columns.size(), last_columns.size(), last_columns) == 0) {
+    return true;
+  }
+  // An earlier FrictionLab's file opened with a comment line ("# FrictionLab run of …" from
+  // `run --csv`, "# FrictionLab history of …" from the window): a teacher's script that writes
+  // the same file every class goes on working after an upgrade.
+  return starts_with(line, "# FrictionLab run of ") || starts_with(line, "# FrictionLab history of ");
 }
 
 bool starts_frictionlab_settings(const std::string& first_line) { return starts_with(first_line, settings_first_words); }
+
+namespace {
+
+std::string first_line_of(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::string line;
+  std::getline(file, line);
+  return line;
+}
+
+}  // namespace
+
+bool frictionlab_csv_file(const std::string& path) { return starts_frictionlab_csv(first_line_of(path)); }
+bool frictionlab_settings_file(const std::string& path) { return starts_frictionlab_settings(first_line_of(path)); }
 
 }  // namespace frictionlab::lessons

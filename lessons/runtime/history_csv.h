@@ -20,8 +20,7 @@
 namespace frictionlab::lessons {
 
 inline constexpr char csv_byte_order_mark[] = "\xEF\xBB\xBF";
-// The first column's name, the header's start: a file that begins with the mark and this is
-// one FrictionLab wrote.
+// The first column's name, the header's start.
 inline constexpr char csv_time_column[] = "t (s)";
 // The settings file's first words.
 inline constexpr char settings_first_words[] = "FrictionLab run of ";
@@ -45,9 +44,14 @@ std::string run_settings(const Lesson& lesson, const std::function<bool(const st
 // "_settings.txt" added).
 std::string settings_path_for(const std::string& csv_path);
 
-// Whether `first_line` (as read, mark included) starts a CSV FrictionLab wrote, or a settings
+// Whether `first_line` (as read, mark included) starts a CSV FrictionLab wrote (its header,
+// from "t (s)" to "gauge (N)", or an earlier version's "# FrictionLab …" line), or a settings
 // file FrictionLab wrote: only such files are replaced by a new run.
 bool starts_frictionlab_csv(const std::string& first_line);
 bool starts_frictionlab_settings(const std::string& first_line);
+// The same for the file at `path`, read to its first line: what OutputFile asks before it
+// replaces a file (files/output_file.h).
+bool frictionlab_csv_file(const std::string& path);
+bool frictionlab_settings_file(const std::string& path);
 
 }  // namespace frictionlab::lessons
