@@ -40,9 +40,9 @@ struct WindowSettings {
 // keep them in (then nothing is kept).
 std::string settings_folder();
 // Lines it does not understand, or values out of range, are skipped: a damaged file must not
-// keep the window from opening. A missing file gives the defaults.
+// keep the window from opening; so are the speed and the tools an older FrictionLab kept there.
+// A missing file gives the defaults.
 WindowSettings load_settings(const std::string& path);
-// Lines a file from an older FrictionLab holds for the speed and the tools are read past.
 // Whole or not at all (written beside it, then renamed). Returns false when it cannot be written.
 bool save_settings(const WindowSettings& settings, const std::string& path);
 

@@ -28,7 +28,7 @@ struct TransportBar {
   };
   static Shape shape(const std::string& said, float width, float scale);
   // The bar, acting on `playback`; a speed set on its slider is kept in `speed_kept` too (the
-  // window's settings, for the next class).
+  // window's, for the next lesson opened in this session).
   void draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said, float scale, double& speed_kept,
             ControlPlaces& controls);
 };

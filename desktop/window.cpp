@@ -189,7 +189,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
       }
     }
     glfwSwapBuffers(window.get());
-    // A choice the teacher made (theme, projector, help, speed) is kept at once, so a window
+    // A choice the teacher made (theme, projector, help, full screen) is kept at once, so a window
     // that is killed rather than closed still remembers it.
     if (!run.settings_path.empty() && !(settings == saved)) {
       save_settings(settings, run.settings_path);

@@ -206,7 +206,8 @@ void draw_spring(ImDrawList* draw, ImVec2 from, ImVec2 to, const Theme& theme, f
 void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) {
   draw->AddCircleFilled(at, 7.0f * fonts.scale, theme.hand, 24);
   const ImVec2 word(at.x, at.y - 18.0f * fonts.scale);
-  draw_label(draw, fonts.small, word, theme.hand, 0, "hand");
+  // No box behind it: its ink reads 4.5:1 on the sky it is drawn over (draw/theme.h).
+  draw_label(draw, fonts.small, word, readable_ink(theme.hand, theme.sky), 0, "hand");
   const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, "hand");
   labels.avoid(ImVec4(word.x - 0.5f * size.x, word.y - 0.5f * size.y, word.x + 0.5f * size.x, at.y + 7.0f * fonts.scale));
 }

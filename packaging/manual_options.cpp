@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "app/command_line.h"
 #include "classroom_state/window_keys.h"
@@ -20,6 +21,12 @@ std::string roff_text(std::string_view words) {
   std::string text;
   if (!words.empty() && (words.front() == '.' || words.front() == '\'')) text = "\\&";
   for (const char c : words) text += c == '\\' ? std::string("\\e") : c == '-' ? std::string("\\-") : std::string(1, c);
+  // The arrows as roff's own glyphs: groff without preconv read their UTF-8 bytes as "â".
+  for (const auto& [arrow, glyph] : {std::pair<std::string, std::string>{"\u2190", "\\(<-"}, {"\u2192", "\\(->"}}) {
+    for (std::size_t at = text.find(arrow); at != std::string::npos; at = text.find(arrow, at + glyph.size())) {
+      text.replace(at, arrow.size(), glyph);
+    }
+  }
   return text;
 }
 

@@ -29,7 +29,7 @@ compare commands "$(echo "$help" | grep -oE '^ *(usage: )?frictionlab [a-z]+' | 
 # or more spaces), the page's table rows (KEY, a tab, T{), the rows of the guide's table headed
 # "| key | does |".
 help_keys=$(echo "$help" | sed -n '/^Keys in the window:/,/^Exit status/p' | grep '^  [^ ]' | sed -E 's/^  //; s/ {2,}.*//' | sort -u)
-page_keys=$(grep -v '^\.\\"' "$page" | sed -n '/^\.SH KEYS IN THE WINDOW/,/^\.TE/p' | grep -P '\tT\{$' | cut -f1 | sed 's/^\\&//; s/\\-/-/g' | sort -u)
+page_keys=$(grep -v '^\.\\"' "$page" | sed -n '/^\.SH KEYS IN THE WINDOW/,/^\.TE/p' | grep -P '\tT\{$' | cut -f1 | sed 's/^\\&//; s/\\-/-/g; s/\\(<-/←/g; s/\\(->/→/g' | sort -u)
 guide=$(dirname "$0")/../../docs/teachers.md
 guide_keys=$(awk '/^\| key \| does \|/ {t = 1; next} t && !/^\|/ {exit} t && !/^\|---/' "$guide" | cut -d'|' -f2 | sed -E 's/^ +//; s/ +$//' | sort -u)
 [[ -n $help_keys ]] || { echo "FAIL: frictionlab help lists no keys" >&2; fail=1; }

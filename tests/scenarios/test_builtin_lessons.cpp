@@ -700,8 +700,10 @@ TEST(BuiltinLessons, FrictionProbesFollowOneSignConvention) {
     // More than a newton's thousandth the right way: a probe that reads 0 shows no sign.
     EXPECT_GT(reading.sign * value, 1e-3) << reading.lesson << ' ' << reading.probe << " reads " << value;
     if (!std::isnan(reading.exact)) {
-      // The solver's precision: statics and kinetic friction to well within 0.1 %.
-      EXPECT_NEAR(value, reading.exact, 1e-3 * std::abs(reading.exact)) << reading.lesson << ' ' << reading.probe;
+      // Box2D's single precision: a block at rest or sliding steadily is solved exactly by its
+      // contact's block solver, up to float rounding (6e-8) over some tens of operations per
+      // contact and the probe's sum over its points; 1e-5 is that with a margin (seen: 3e-8).
+      EXPECT_NEAR(value, reading.exact, 1e-5 * std::abs(reading.exact)) << reading.lesson << ' ' << reading.probe;
     }
   }
   // The theory table's friction rows, theory and measurement alike, are signed the same way.

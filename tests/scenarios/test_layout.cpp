@@ -1166,8 +1166,8 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
 
 // Issue 31: "measured: 3.92 N", the number the class waits for, was #999 on white (2.85:1), and
 // the status line too. Every text the window draws, in projector mode at 1920 × 1080, in both
-// themes, before and after the reveal, with every measuring tool on and with the help panel
-// open, stands at least 4.5:1 (WCAG 2.1 AA) from what lies under it: the panel, a slider's
+// themes, before and after the reveal, with every measuring tool on, with the help panel open
+// and on each tab, stands at least 4.5:1 (WCAG 2.1 AA) from what lies under it: the panel, a slider's
 // knob, a plot, a label's box, the world. Read from the draw data (tests/text_contrast.h),
 // glyph by glyph.
 TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
@@ -1227,6 +1227,11 @@ TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
       check("with every tool on");
       hands.key(Key::f1);
       check("with the help panel open");
+      hands.key(Key::f1);
+      for (const char* tab : {"Energy###energy", "Model###model", "Cheapest###cheapest setting", "Stability###stability map"}) {
+        hands.click_text(tab);
+        check((std::string("on the tab ") + tab).c_str());
+      }
       EXPECT_GT(glyphs_checked, 1000u) << name << ": the draw data's text was not found";
     }
   }
