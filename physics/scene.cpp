@@ -118,7 +118,10 @@ bool Scene::can_touch(const std::string& material_a, const std::string& material
     if (use.id == a) use_a = &use;
     if (use.id == b) use_b = &use;
   }
-  return use_a != nullptr && use_b != nullptr && (use_a->on_dynamic || use_b->on_dynamic);
+  if (use_a == nullptr || use_b == nullptr || !(use_a->on_dynamic || use_b->on_dynamic)) return false;
+  // A material meets itself only on two bodies: one metal block on a wooden floor has no
+  // metal-on-metal contact, and its sliders would change nothing.
+  return a != b || use_a->bodies >= 2;
 }
 
 b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::string& material) {
@@ -132,6 +135,10 @@ b2Fixture* Scene::add_fixture(b2Body* body, const b2Shape& shape, const std::str
                           [id](const MaterialUse& in_use) { return in_use.id == id; });
   if (use == materials_in_use_.end()) use = materials_in_use_.insert(materials_in_use_.end(), {id, false});
   use->on_dynamic = use->on_dynamic || body->GetType() == b2_dynamicBody;
+  if (use->last_body != body) {
+    ++use->bodies;
+    use->last_body = body;
+  }
   return body->CreateFixture(&definition);
 }
 

@@ -147,7 +147,8 @@ class Scene {
                   float width, float height, float angle = 0.0f, float skin = b2_polygonRadius);
   b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
   // Whether bodies of these two materials are in the scene where they can rub: both in use,
-  // one of them on a dynamic body (Box2D makes no contact between two fixed ones).
+  // one of them on a dynamic body (Box2D makes no contact between two fixed ones), and a
+  // material with itself only on two bodies.
   bool can_touch(const std::string& material_a, const std::string& material_b) const;
   const std::vector<std::pair<std::string, b2Body*>>& bodies() const { return bodies_; }
 
@@ -325,6 +326,8 @@ class Scene {
   struct MaterialUse {
     int id;
     bool on_dynamic;  // some dynamic body is made of it
+    int bodies = 0;   // how many bodies have a shape of it
+    const b2Body* last_body = nullptr;  // the body its last shape was added to (a body's shapes come together)
   };
   std::vector<MaterialUse> materials_in_use_;
   std::unique_ptr<Grab> grab_;
