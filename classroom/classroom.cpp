@@ -158,6 +158,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   if (!script_paths_) style.script_words = [this](const std::string& text) { return script_words(text); };
   style.view_adjust = hand_.view_adjust;
+  style.plots_one_a_page = window_.projector;
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
@@ -183,10 +184,10 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     // (whose boundary would give μs away until the reveal anyway).
     if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
+  if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
   // Opened by the teacher for one run's comparison: the next run folds it again.
   if (!run_played()) parameters_.opened = false;
-  if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
-  predictions_.style(style, *playback_, window_.predictions, run_played(), theme(window_.theme), controls_,
+  predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
                      [this] { return hidden_values().theory(); });
   ImGui::PushFont(fonts.body);
   style.parameters_heights = parameters_.heights(parameters_on_show());
@@ -292,7 +293,16 @@ void Classroom::handle_keys() {
   if (hit(Key::f11, false)) full_screen_toggle_ = true;
   if (hit(Key::f1, false)) window_.help = !window_.help;
   if (hit(Key::p, false)) window_.projector = !window_.projector;
-  if (hit(Key::t, false) && theory_hidden()) predictions_.predictions.revealed = true;
+  if (hit(Key::t, false)) {
+    ClassPredictions& asked = predictions_.predictions;
+    if (theory_hidden()) {
+      asked.revealed = true;
+    } else if (asked.revealed && window_.predictions && !playback_->lesson().predictions().empty()) {
+      // T again hides the theory: a reveal by mistake (a click that landed on the button before
+      // the class answered) is undone with one key, the answers as they were.
+      asked.revealed = false;
+    }
+  }
   const double now = playback_->lesson().scene().time();
   if (hit(Key::w, false)) {
     window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use

@@ -183,8 +183,8 @@ class Classroom {
   std::string transport_words() const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
-  bool run_played() const;  // to the run's end, in the record
   // The lesson as the Parameters panel shows it now.
+  bool run_played() const;  // to the run's end, in the record
   ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void messages(ImVec2 corner, float width);

@@ -26,7 +26,7 @@ std::string both_letters() {
 
 // The theory's tab in the tab bar being drawn, when it was drawn there this frame: a column too
 // short for the theory's own panel puts it first among the tabs (draw/frame.cpp names it
-// "Predict###theory tab" until the reveal; a tab's id is made from what follows "###").
+// "Predict###theory tab" while the class predicts; a tab's id is made from what follows "###").
 ImGuiTabItem* theory_tab_beside() {
   ImGuiTabBar* bar = ImGui::GetCurrentContext()->CurrentTabBar;
   if (bar == nullptr) return nullptr;

@@ -391,13 +391,12 @@ std::string PredictionPanel::forget_outdated(const Playback& playback) {
          (predictions.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
 }
 
-void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool asking, bool comparing, const Theme& colours,
+void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool asking, const Theme& colours,
                             ControlPlaces& controls, std::function<bool()> theory_withheld) {
   const lessons::Lesson& lesson = playback.lesson();
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
   if (!asking || lesson.predictions().empty()) return;
   style.theory_hidden = ui::theory_hidden(lesson, predictions, asking);
-  style.comparing = comparing;
   style.predictions = [this, &playback, &colours, &controls, theory_withheld] {
     // Answers are given before the run: once it has started they are what the class said.
     const bool editable = !predictions.revealed && playback.lesson().scene().frame() == 0;
@@ -408,8 +407,14 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
                          theory_withheld());
   };
   style.predictions_height = [this, &playback, theory_withheld](float width) {
-    return predictions_contents_height(playback.lesson(), playback.readings().expectations, predictions, width,
-                                       theory_withheld());
+    // The taller of the panel before the reveal and after it: the column is planned once for
+    // both, so that nothing in it moves at the reveal (or when T hides the theory again).
+    ClassPredictions other = predictions;
+    other.revealed = !other.revealed;
+    const bool withheld = theory_withheld();
+    const auto& rows = playback.readings().expectations;
+    return std::max(predictions_contents_height(playback.lesson(), rows, predictions, width, withheld),
+                    predictions_contents_height(playback.lesson(), rows, other, width, withheld));
   };
 }
 

@@ -66,10 +66,9 @@ struct PredictionPanel {
   // Returns what the status line should say ("" when no answer went).
   std::string forget_outdated(const Playback& playback);
   // Its part of the frame: the contents and height in the theory panel, and what they hide.
-  // `asking`: the teacher asks for predictions (the View menu); `comparing`: the run was played
-  // to its end. `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
+  // `asking`: the teacher asks for predictions (the View menu). `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
   // theory, which stays hidden until the mystery is revealed.
-  void style(FrameStyle& style, const Playback& playback, bool asking, bool comparing, const Theme& colours,
+  void style(FrameStyle& style, const Playback& playback, bool asking, const Theme& colours,
              ControlPlaces& controls, std::function<bool()> theory_withheld);
 };
 

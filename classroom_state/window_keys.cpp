@@ -17,7 +17,7 @@ const std::vector<WindowKey>& window_keys() {
       {"Ctrl+E", "export the history (CSV)", ""},
       {"P", "projector mode: larger text, thicker lines", ""},
       {"D", "dark or light theme", ""},
-      {"T", "reveal the theory after the class's predictions", ""},
+      {"T", "reveal the theory after the class's predictions; T again hides it (a reveal by mistake)", ""},
       {"F11", "full screen", ""},
       {"W", "start / stop the stopwatch (lesson time)", ""},
       {"L", "the stopwatch's lap", ""},

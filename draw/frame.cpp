@@ -248,7 +248,9 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
     return true;
   };
   std::size_t per_row = most;
-  if (style.parameters_panel) {
+  if (style.plots_one_a_page) {
+    per_row = 1;
+  } else if (style.parameters_panel) {
     while (per_row > 1 && !all_have_room(per_row)) --per_row;
   }
   const bool paged = per_row < most;
@@ -270,7 +272,8 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
     if (pager) {
       open = begin_panel(id.c_str(), "", at, size);
       ImGuiStorage* state = ImGui::GetStateStorage();
-      const ImGuiID kept = ImGui::GetID("page");
+      // Kept per lesson: another lesson opens on its first page, not on the page the last was left at.
+      const ImGuiID kept = ImGui::GetID(("page of " + lesson.path()).c_str());
       page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
       if (style.turn_plot_pages != 0) {
         const long turned = static_cast<long>(page) + style.turn_plot_pages;
@@ -341,25 +344,22 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
   const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
   ColumnPlan column_plan = plan_column(lesson, style, display, table);
-  // The class's predictions are planned for whole (as the first tab, if need be). Before the
-  // reveal, while the class predicts, the friction pairs' sliders give way for them (a teacher
-  // typing the class's answer on a projector found the second question a scroll away, and the
-  // reveal button scrolled out of sight); after it they do so only while that folds no sliders,
-  // else they have the theory table's room and scroll (the reveal button comes first).
-  // Once the run has been played the class compares, and nobody slides values: the answers and
-  // the theory table under them have whatever gives way (the whole Parameters panel, in the
-  // window); what still does not fit of the table scrolls, the answers coming first.
+  // The class's predictions are planned for whole (as the first tab, if need be), at their
+  // tallest before the reveal or after it (predictions_height), and nothing else the class
+  // does moves them: not R, not the run's end, not the reveal. The friction pairs' sliders give
+  // way for them as far as that needs; the theory table, revealed under them, scrolls. (The
+  // column was planned anew as the run ended and at the reveal: after R on tipping_box the
+  // Parameters panel unfolded and pushed the reveal button under the teacher's pointer.)
   bool theory_scrolls = false;
   if (style.predictions_height) {
-    const float whole = style.predictions_height(inside) + (style.theory_hidden ? 0.0f : table);
-    const ColumnPlan roomy = plan_column(lesson, style, display, whole, style.comparing);
-    if (style.comparing) {
-      theory_scrolls = !roomy.theory_whole;
-      column_plan = roomy;
-    } else {
-      theory_scrolls = !style.theory_hidden && roomy.parameters_step > column_plan.parameters_step;
-      if (!theory_scrolls) column_plan = roomy;
-    }
+    // The table under the answers has its room too where that folds no more sliders.
+    const float answers = style.predictions_height(inside);
+    const ColumnPlan answers_plan = plan_column(lesson, style, display, answers, true);
+    const ColumnPlan with_table = plan_column(lesson, style, display, answers + table, true);
+    column_plan = with_table.parameters_step > answers_plan.parameters_step ? answers_plan : with_table;
+    // The answers alone, before the reveal, have the room planned for them: no scroll bar to
+    // take width from them.
+    theory_scrolls = !style.theory_hidden || !column_plan.theory_whole;
   }
   const FrameLayout layout = FrameLayout::of(display, s, style.origin);
 
@@ -482,7 +482,9 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     // Short names when the full ones would not fit side by side.
     const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
                                 "Model card###model"};
-    const char* const brief[] = {style.theory_hidden ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
+    // While the class predicts the tab is "Predict" before the reveal and after it (the answers
+    // come first in it either way): a name that changed at the reveal moved the tabs after it.
+    const char* const brief[] = {style.predictions ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
                                  "Model###model"};
     float full_width = 0.0f;
     for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;

@@ -79,15 +79,12 @@ struct FrameStyle {
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
   // The class's predictions (the window), drawn at the top of the theory panel; their height
-  // at the panel's inside width. With `theory_hidden` they take the theory table's place, and
+  // at the panel's inside width, the tallest they may be before the reveal or after it (the
+  // column is planned for that once, so that it does not move at the reveal). With `theory_hidden` they take the theory table's place, and
   // nothing that states a theory value is drawn: the table, the plots' theory curves.
   std::function<void()> predictions;
   std::function<float(float width)> predictions_height;
   bool theory_hidden = false;
-  // The run has been played: the class compares its answers with it, before the reveal and
-  // after. The answers are then planned whole whatever gives way for them (the window's last
-  // step of giving way folds the whole Parameters panel); the theory table under them may scroll.
-  bool comparing = false;
   // The window's own drawing in each lane of the world (the force gauge, the measuring tools),
   // called three times (WorldToolsPass): to tell the placer what it will draw, to draw what has
   // fixed labels before the lesson's labels are placed, and to draw the rest after the world.
@@ -101,6 +98,11 @@ struct FrameStyle {
   // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
   // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
   bool show_extra_plot = false;
+  // The plots one a page, each its row's full width (the window's projector mode): the lesson's
+  // key plot, its first, as large as the row allows and read from the back of the room, and
+  // the pages the same whatever the run, so that nothing moves as it goes on or at the reveal
+  // (how many plots fitted side by side was chosen anew each frame from their axes and legends).
+  bool plots_one_a_page = false;
   // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
   int turn_plot_pages = 0;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.

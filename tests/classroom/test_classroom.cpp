@@ -1432,7 +1432,11 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
   std::snprintf(close, sizeof close, "class: \u2212%s, %.0f %% below the measurement", format_quantity(-off, "N").c_str(),
                 100.0 * -off / breakaway.measured);
   EXPECT_TRUE(drawn(close)) << close;
-  // T hides nothing again; a lesson opened afresh asks again.
+  // T again hides the theory, the class's answers kept (a reveal by mistake undone, issue 31);
+  // T reveals it once more; a lesson opened afresh asks again.
+  driver.key(Key::t);
+  EXPECT_TRUE(driver.classroom().theory_hidden());
+  EXPECT_EQ(driver.classroom().predictions().answers["breakaway force"], "4");
   driver.key(Key::t);
   EXPECT_FALSE(driver.classroom().theory_hidden());
   EXPECT_EQ(driver.classroom().open("tipping_box"), "");

@@ -75,7 +75,8 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   if (GetParam() == Theory::predictions_revealed) {
     window.key_pressed(Key::t, false);  // the teacher reveals the theory: the mystery's stays hidden
     hands.frame();
-    hands.click_text("Theory###theory tab");  // where the class's predictions stand beside the theory
+    // Where the class's predictions stand beside the theory: "Predict" before the reveal and after.
+    hands.click_text("Predict###theory tab");
   }
   // The lesson runs with the drawn values...
   EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);

@@ -1409,5 +1409,143 @@ TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIs
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowTabsLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
+// Issue 31: the layout moved under the teacher's pointer. At the run's end the Parameters panel
+// folded away for the comparison and R unfolded it, pushing "Reveal the theory" under the pointer
+// (the theory was revealed before the class answered); a click aimed at a tab landed on a
+// slider. In projector mode at 1920 × 1080, light and dark, with the class's predictions asked,
+// every panel, every tab's name and the reveal button keep their places as the run plays, at the
+// reveal (mid-run), when T hides the theory again, and at R. (Not yet at the run's end: its
+// notice takes a line under the transport bar from the frame, and a column too short for the
+// answers beside the sliders folds the Parameters panel away while the class compares.)
+struct Placed {
+  std::map<std::string, ImVec4> panels;  // each ImGui window drawn, by its id: x0, y0, x1, y1
+  std::map<std::string, ImVec4> tabs;    // each tab's name in the column's tab bar
+  std::optional<ImRect> reveal;
+};
+
+Placed placed(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 display) {
+  FrameRecord record;
+  for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+  Placed found;
+  for (const ImGuiWindow* panel : ImGui::GetCurrentContext()->Windows) {
+    if (!panel->WasActive || (panel->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_ChildWindow)) != 0) {
+      continue;
+    }
+    const std::string name = panel->Name;
+    const std::size_t id = name.find("###");
+    found.panels[id == std::string::npos ? name : name.substr(id)] =
+        ImVec4(panel->Pos.x, panel->Pos.y, panel->Pos.x + panel->Size.x, panel->Pos.y + panel->Size.y);
+  }
+  const ImGuiWindow* books = ImGui::FindWindowByName("###books");
+  for (const ShownText& text : record.texts) {
+    // The tabs' names: the texts on the tab bar's line, at the books panel's top.
+    if (books == nullptr || text.panel.find("###books") == std::string::npos) continue;
+    if (text.needed.y < books->Pos.y + books->WindowPadding.y + ImGui::GetFrameHeight()) found.tabs[text.text] = text.needed;
+  }
+  found.reveal = window.control("reveal");
+  return found;
+}
+
+std::string rect_words(const ImVec4& r) {
+  char words[96];
+  std::snprintf(words, sizeof words, "(%.1f, %.1f)-(%.1f, %.1f)", r.x, r.y, r.z, r.w);
+  return words;
+}
+
+void expect_same_places(const Placed& before, const Placed& after, const std::string& where) {
+  for (const auto& [id, rect] : before.panels) {
+    const auto now = after.panels.find(id);
+    if (now == after.panels.end()) {
+      ADD_FAILURE() << where << ": the panel " << id << " is gone";
+      continue;
+    }
+    EXPECT_TRUE(rect.x == now->second.x && rect.y == now->second.y && rect.z == now->second.z && rect.w == now->second.w)
+        << where << ": the panel " << id << " moved from " << rect_words(rect) << " to "
+                      << rect_words(now->second);
+  }
+  for (const auto& [id, rect] : after.panels) {
+    EXPECT_TRUE(before.panels.count(id) > 0) << where << ": a panel " << id << " came";
+  }
+  for (const auto& [name, rect] : before.tabs) {
+    const auto now = after.tabs.find(name);
+    if (now == after.tabs.end()) {
+      ADD_FAILURE() << where << ": the tab " << name << " is gone";
+      continue;
+    }
+    EXPECT_TRUE(rect.x == now->second.x && rect.y == now->second.y && rect.z == now->second.z)
+        << where << ": the tab " << name << " moved from " << rect_words(rect) << " to " << rect_words(now->second);
+  }
+  if (before.reveal && after.reveal) {
+    EXPECT_TRUE(before.reveal->Min.x == after.reveal->Min.x && before.reveal->Min.y == after.reveal->Min.y &&
+                before.reveal->Max.x == after.reveal->Max.x && before.reveal->Max.y == after.reveal->Max.y)
+        << where << ": the reveal button moved";
+  }
+}
+
+TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesAsTheRunPlaysAtTheRevealAndR) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int tabs_seen = 0;
+  for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
+    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
+      options.window.predictions = true;
+      options.window.theme = theme;
+      Classroom window(options);
+      const std::string lesson = std::string(name) + (theme == ThemeName::dark ? ", dark" : "");
+      const Placed opened = placed(gl, host, window, display);
+      ASSERT_TRUE(window.theory_hidden()) << lesson;
+      ASSERT_TRUE(opened.reveal.has_value()) << lesson << ": no reveal button";
+      tabs_seen += static_cast<int>(opened.tabs.size());
+      window.playback().run_to(0.5 * window.playback().lesson().duration());
+      expect_same_places(opened, placed(gl, host, window, display), lesson + ", mid-run");
+      window.key_pressed(Key::t, false);
+      expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed");
+      ASSERT_FALSE(window.theory_hidden()) << lesson;
+      // A reveal by mistake is undone with T.
+      window.key_pressed(Key::t, false);
+      expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T");
+      EXPECT_TRUE(window.theory_hidden()) << lesson << ": T again does not hide the theory";
+      window.key_pressed(Key::r, false);
+      expect_same_places(opened, placed(gl, host, window, display), lesson + ", after R");
+    }
+  }
+  EXPECT_GT(tabs_seen, 0) << "no tab's name was found: the test checks no tab";
+}
+
+// Issue 31: in projector mode the lesson's key plot (its first) was small: tipping_box's second
+// plot had a third of its row, and which plots shared a row changed as the run went on (incline's
+// two went to a pager at the run's end). Now each plot has the row to itself, a page at a time,
+// at the run's start and end alike; and a lesson opens on its first plot, not on the page the
+// lesson before was left at.
+TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  ClassroomOptions options = class_window(lessons::resolve_lesson("tipping_box"), window_screens[2]);
+  Classroom window(options);
+  const auto shown_plots = [&] {
+    FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    return record.plots;
+  };
+  const float left = FrameLayout::of(ImVec2(1920.0f, 1.0f), window.ui_scale(display)).world_size.x;
+  for (const double t : {0.0, window.playback().lesson().duration()}) {
+    window.playback().run_to(t);
+    const std::vector<FrameRecord::Plot> plots = shown_plots();
+    ASSERT_EQ(plots.size(), 1u) << "at t = " << t << ": plots side by side";
+    EXPECT_EQ(plots.front().number, 0u) << "at t = " << t;
+    // The data's width: most of the row's (the rest is the axis' labels and the legend beside it).
+    EXPECT_GT(plots.front().layout.high_right.x - plots.front().layout.low_left.x, 0.6f * left) << "at t = " << t;
+  }
+  window.key_pressed(Key::right, false);
+  ASSERT_EQ(shown_plots().front().number, 1u) << "→ turns to the second plot";
+  ASSERT_EQ(window.open("incline"), "");
+  const std::vector<FrameRecord::Plot> opened = shown_plots();
+  ASSERT_EQ(opened.size(), 1u);
+  EXPECT_EQ(opened.front().number, 0u) << "incline opened on the page tipping_box was left at";
+}
+
 }  // namespace
 }  // namespace frictionlab::ui
