@@ -380,10 +380,18 @@ std::string Classroom::script_words(const std::string& text) const {
   return words + text.substr(from);
 }
 
+std::string Classroom::status() const {
+  if (status_moment_ && status_moment_->text == status_ &&
+      (status_moment_->frame != playback_->lesson().scene().frame() || status_moment_->theory_hidden != theory_hidden())) {
+    return "";
+  }
+  return status_;
+}
+
 std::string Classroom::transport_words() const {
   // Notices (the run is over, the file reloaded) and what was saved where, on one line.
   std::string said = script_words(playback_->notice());
-  if (!status_.empty()) said += (said.empty() ? "" : "  ") + script_words(status_);
+  if (const std::string now = status(); !now.empty()) said += (said.empty() ? "" : "  ") + script_words(now);
   if (playback_->behind()) said = "running slower than asked  " + said;
   return said;
 }

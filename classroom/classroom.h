@@ -89,8 +89,12 @@ class Classroom {
   // The watchers look at once; true when what they found changes the picture (a script
   // reloaded, gone or back, a failed script that now opens): only then need the host draw.
   bool waited(double seconds);
-  // What the status line says now (saved files, failures to save).
-  const std::string& status() const { return status_; }
+  // What the status line says now (saved files, failures to save). Words about the run's
+  // moment ("the run is back at t = 0, the theory hidden") go once the run has left it.
+  std::string status() const;
+  // The words beside the transport bar's time bar: the run's notices and the status line, of
+  // the present state only.
+  std::string transport_words() const;
   // The measuring tools (Tools menu): which are on, and the stopwatch.
   const MeasuringTools& tools() const { return tools_; }
   // A script named on the command line that does not build yet: its path, "" when none.
@@ -179,8 +183,6 @@ class Classroom {
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
   void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                    float newtons_to_pixels, LabelPlacer& labels);
-  // The words beside the transport bar's time bar: the run's notices and the status line.
-  std::string transport_words() const;
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
@@ -240,6 +242,15 @@ class Classroom {
   bool full_screen_toggle_ = false;
   bool quit_ = false;
   std::string status_;
+  // A status that tells of the run's moment (predict_again's), with the frame it was said at and
+  // whether the theory was then kept back: said only while both still hold (the trial read "the
+  // run is back at t = 0" at t = 2.49 s with the theory shown).
+  struct Moment {
+    std::string text;
+    long frame = 0;
+    bool theory_hidden = false;
+  };
+  std::optional<Moment> status_moment_;
   // A script named on the command line that did not build: shown and watched until it does.
   std::string failed_script_, failed_error_;
   double since_failed_check_ = 0.0;

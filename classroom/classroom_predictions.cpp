@@ -13,6 +13,7 @@ void Classroom::predict_again() {
   // Answers are typed before the run: it goes back to its start.
   playback_->reset();
   status_ = "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
+  status_moment_ = Moment{status_, playback_->lesson().scene().frame(), theory_hidden()};
 }
 
 }  // namespace frictionlab::ui

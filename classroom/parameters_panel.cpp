@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "classroom/knob_slider.h"
 #include "classroom/text_boxes.h"
 #include "classroom_state/playback.h"
 #include "draw/text_record.h"
@@ -373,9 +374,8 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     const std::string format = "%.3g" + (unit.empty() ? "" : " " + unit);
     // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
     const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
-    const bool moved = ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max,
-                                           format.c_str(), wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-    remember_item(controls, name + " slider");
+    const bool moved = knob_slider("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max, format.c_str(),
+                                   wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None, controls, name + " slider");
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format.c_str(), value);

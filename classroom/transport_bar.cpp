@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "classroom/knob_slider.h"
 #include "draw/text_record.h"
 
 namespace frictionlab::ui {
@@ -49,15 +50,15 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f * s);
     float speed = static_cast<float>(playback.speed());
-    if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::slowest), static_cast<float>(Playback::fastest),
-                           "speed \u00d7%.2g", ImGuiSliderFlags_Logarithmic)) {
+    const float slowest = static_cast<float>(Playback::slowest), fastest = static_cast<float>(Playback::fastest);
+    if (knob_slider("##speed", ImGuiDataType_Float, &speed, &slowest, &fastest, "speed \u00d7%.2g",
+                    ImGuiSliderFlags_Logarithmic, controls, "speed")) {
       // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
       // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
       if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
       playback.set_speed(speed);
       speed_kept = playback.speed();
     }
-    remember_item(controls, "speed");
     {
       char shown[32];
       std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
@@ -74,7 +75,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
     std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback.recorded_until());
     // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
     // while: it waits until the bar is let go.
-    if (ImGui::SliderScalar("##scrub", ImGuiDataType_Double, &t, &start, &end, format)) {
+    if (knob_slider("##scrub", ImGuiDataType_Double, &t, &start, &end, format, ImGuiSliderFlags_None, controls, "scrub")) {
       if (t >= scene.time() && !scrubbing_to) {
         playback.scrub_to(t);
       } else {
@@ -86,7 +87,6 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
       playback.scrub_to(*scrubbing_to);
       scrubbing_to.reset();
     }
-    remember_item(controls, "scrub");
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format, t);

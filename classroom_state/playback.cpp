@@ -63,6 +63,7 @@ void Playback::after_rebuild() {
   blown_ = false;
   problem_.clear();
   notice_.clear();
+  notice_frame_.reset();
   refresh_readings();
 }
 
@@ -200,6 +201,7 @@ void Playback::step_and_check() {
     run_over_ = true;
     pause();
     notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
+    notice_frame_ = frame();
   }
   // Played on, a pushed block leaves the floor's end and falls for ever, with plots running on
   // and nothing said: the trial's teacher saw push do it. Pause, once for each body, and say so.
@@ -208,6 +210,7 @@ void Playback::step_and_check() {
     pause();
     notice_ = "Paused: " + fallen + " has fallen off, past everything that could catch it (t = " +
               seconds_text(lesson_->scene().time()) + "). R starts again; Space plays on.";
+    notice_frame_ = frame();
   }
 }
 
@@ -381,6 +384,7 @@ bool Playback::reload() {
   script_error_.clear();
   after_rebuild();
   notice_ = "Reloaded " + lesson_->path() + ".";
+  notice_frame_.reset();
   return true;
 }
 

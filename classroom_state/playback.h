@@ -99,7 +99,9 @@ class Playback {
   // ran. Empty while neither happened; only a reset, a reload or a new value clears it.
   const std::string& problem() const { return problem_; }
   // Something worth saying that is not a fault: the lesson's run is over, the file was reloaded.
-  const std::string& notice() const { return notice_; }
+  // A notice about a moment of the run (it is over, a body fell) is said only while the run is
+  // at that moment: rewound from the end, "the run ends at 3.46 s" read as if it were still there.
+  std::string notice() const { return notice_frame_ && *notice_frame_ != frame() ? std::string() : notice_; }
 
   // Recomputes the readings now (after a change while paused, say).
   void refresh_readings();
@@ -149,6 +151,7 @@ class Playback {
   bool file_missing_ = false;  // script_error_ says the file is gone, not why a reload failed
   std::string problem_;
   std::string notice_;
+  std::optional<long> notice_frame_;  // the frame notice_ tells of, when it tells of one
   GaugeRecord gauge_;
 };
 

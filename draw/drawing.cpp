@@ -79,25 +79,30 @@ ImVec2 LabelPlacer::place(ImVec2 wanted, ImVec2 size, const std::string& text, b
   return at;
 }
 
-std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
-  const auto box_at = [&](ImVec2 c) { return box_around(c, size); };
+std::vector<ImVec2> LabelPlacer::candidates(ImVec2 wanted, ImVec2 size, int rings) const {
   // Inside the view, so a label near its edge is moved in rather than cut.
   const auto inside = [&](ImVec2 c) { return moved_inside(c, size); };
   wanted = inside(wanted);
   // Rings of places around the wanted one, nearest first: above and below (a line of text
   // apart), then to the sides, then the corners between. Candidates are moved inside the view
-  // first, so its edge is no obstacle here.
+  // first, so its edge is no obstacle here. Half steps, so a label fits a gap of one line and a half.
   const float step_y = size.y + 2.0f * pad, step_x = 0.5f * size.x + pad;
   const ImVec2 directions[8] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+  std::vector<ImVec2> places{wanted};
+  for (int ring = 1; ring <= rings; ++ring) {
+    const float reach = 0.5f * static_cast<float>(ring);
+    for (const ImVec2& d : directions) {
+      places.push_back(inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach)));
+    }
+  }
+  return places;
+}
+
+std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text, bool off_bodies) {
+  const std::vector<ImVec2> places = candidates(wanted, size, 30);
   const auto search = [&](bool keep_off_bodies) -> std::optional<ImVec2> {
-    if (clear(box_at(wanted), keep_off_bodies)) return wanted;
-    // Half steps, so a label fits a gap of one line and a half.
-    for (int ring = 1; ring <= 30; ++ring) {
-      const float reach = 0.5f * static_cast<float>(ring);
-      for (const ImVec2& d : directions) {
-        const ImVec2 candidate = inside(ImVec2(wanted.x + d.x * step_x * reach, wanted.y + d.y * step_y * reach));
-        if (clear(box_at(candidate), keep_off_bodies)) return candidate;
-      }
+    for (const ImVec2& place : places) {
+      if (clear(box_around(place, size), keep_off_bodies)) return place;
     }
     return std::nullopt;
   };
@@ -105,7 +110,26 @@ std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, con
   // on another label.
   std::optional<ImVec2> found = search(off_bodies);
   if (!found && off_bodies) found = search(false);
-  if (found) take(box_at(*found), text);
+  if (found) take(box_around(*found, size), text);
+  return found;
+}
+
+std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text) {
+  const std::vector<ImVec2> places = candidates(wanted, size, beside_rings);
+  const auto first_clear = [&](const std::vector<ImVec2>& list, bool off_bodies) -> std::optional<ImVec2> {
+    for (const ImVec2& place : list) {
+      if (clear(box_around(place, size), off_bodies)) return place;
+    }
+    return std::nullopt;
+  };
+  // Near the tip, off the moving bodies (a normal force's value was read as the body's); else
+  // near, on a body (the box is opaque and reads there).
+  std::optional<ImVec2> found = first_clear(places, true);
+  if (!found) found = first_clear(places, false);
+  // A thin lane of blocks side by side may have no free place near: the nearest free one further
+  // off, as the other labels search, rather than a value over a lane's name or another value.
+  if (!found) found = first_clear(candidates(wanted, size, 30), false);
+  if (found) take(box_around(*found, size), text);
   return found;
 }
 
@@ -146,17 +170,20 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
                 LabelPlacer& labels, const std::string& text) {
   const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
   draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
-  if (text.empty()) return;
+  if (text.empty()) {
+    labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text});
+    return;
+  }
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
   // Just beyond the tip, far enough along the arrow's line that the text clears the head.
   const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
-  // Off every moving body: a normal force's arrow points into the body it pushes (a wheel's
-  // from the road, a top block's from under it) and its value was drawn on that body; a
-  // spring's runs along the spring from the body it pulls and settled on its edge.
-  if (const std::optional<ImVec2> at = labels.place_if_free(add(arrow.tip, mul(unit, reach)), size, text, true)) {
-    draw_label(draw, font, *at, colour, theme.panel, text.c_str());
-  }
+  // By its own arrow (place_beside): off the moving bodies where that is as near (a normal
+  // force's arrow points into the body it pushes; a spring's runs along the spring).
+  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text);
+  if (at) draw_label(draw, font, *at, colour, theme.panel, text.c_str());
+  labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness},
+                      at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt, text});
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {
@@ -191,7 +218,7 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
   const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
-  if (const std::optional<ImVec2> at = labels.place_if_free(wanted, size, text, true)) {
+  if (const std::optional<ImVec2> at = labels.place_beside(wanted, size, text)) {
     draw_label(draw, font, *at, colour, background, text.c_str());
   }
 }

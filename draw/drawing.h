@@ -56,6 +56,29 @@ class LabelPlacer {
   // or a contact's word left out is better than one drawn over another label, where neither
   // can be read (a projector's thin lanes of blocks side by side).
   std::optional<ImVec2> place_if_free(ImVec2 wanted, ImVec2 size, const std::string& text = {}, bool off_bodies = false);
+  // A force's value, near its arrow where there is room: at `wanted` (just beyond the tip) or
+  // the nearest free place within `beside_rings` half steps of it, off the moving bodies if it
+  // can be, else on one (its box is opaque); where a thin lane leaves nothing free near, the
+  // nearest free place as place_if_free() finds it; nowhere (nullopt) only where nothing is free
+  // at all, a value over another label or a lane's name being read as neither. Issue 31: a value
+  // left out (tipping_box's friction on a projector) was read as no force, and one found many
+  // lines away (stacked_blocks' normal forces, a ladder's weight by its foot) as another arrow's.
+  std::optional<ImVec2> place_beside(ImVec2 wanted, ImVec2 size, const std::string& text = {});
+  static constexpr int beside_rings = 6;
+  // How far place_beside() moves a label's centre from `wanted` (in x and in y) where there is
+  // room near: the last ring's reach, for tests that check each value is by its arrow.
+  static ImVec2 beside_reach(ImVec2 size) {
+    const float rings = 0.5f * static_cast<float>(beside_rings);
+    return ImVec2(rings * (0.5f * size.x + pad), rings * (size.y + 2.0f * pad));
+  }
+  // A force's arrow and where its value went (nullopt: it has none), for the layout's tests.
+  struct ForceLabel {
+    DrawnSegment arrow;
+    std::optional<ImVec4> box;  // padding included
+    std::string text;
+  };
+  void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
+  const std::vector<ForceLabel>& force_labels() const { return force_labels_; }
   // A label's box at `centre`, padding included, as place() takes it.
   static ImVec4 box_around(ImVec2 centre, ImVec2 size);
   // Whether a label's box (padding included) would cover nothing known and stay in the view.
@@ -79,6 +102,9 @@ class LabelPlacer {
   bool clear(const ImVec4& box, bool off_bodies) const;  // covers nothing known
   static constexpr float pad = 2.0f;  // px kept clear around a label's text
   ImVec2 moved_inside(ImVec2 centre, ImVec2 size) const;  // a centre moved so the box stays in the view
+  // The places around `wanted` that the searches try, nearest first: `wanted` (moved inside the
+  // view), then `rings` rings of eight at half steps.
+  std::vector<ImVec2> candidates(ImVec2 wanted, ImVec2 size, int rings) const;
 
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
@@ -86,6 +112,7 @@ class LabelPlacer {
   std::vector<DrawnSegment> segments_;
   std::vector<ImVec4> marks_;
   std::vector<ImVec4> bodies_;
+  std::vector<ForceLabel> force_labels_;
 };
 
 // The passes of a lane's drawing that the window adds to the world (FrameStyle::world_tools),

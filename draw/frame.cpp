@@ -427,7 +427,7 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
       if (style.record != nullptr) {
         style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
                                        ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(),
-                                       labels.bodies()});
+                                       labels.bodies(), labels.force_labels()});
         style.record->inset = inset;
       }
       if (!lane_name.empty()) {
@@ -443,7 +443,8 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     for (const auto& [name, body] : lesson.scene().bodies()) {
       if (body == focus) focus_name = name;
     }
-    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, colours, fonts);
+    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, colours, fonts,
+                   style.record != nullptr ? &style.record->free_body : nullptr);
   }
   end_panel();
 

@@ -9,6 +9,7 @@
 #include "draw/camera.h"
 #include "draw/chart.h"
 #include "draw/drawing.h"
+#include "draw/free_body.h"
 #include "draw/panels.h"
 #include "draw/text_record.h"
 #include "draw/theme.h"
@@ -43,9 +44,11 @@ struct FrameRecord {
     ImVec4 shown{0.0f, 0.0f, 0.0f, 0.0f};  // what of the lane is not clipped away, x0, y0, x1, y1
     std::vector<std::string> texts;        // each label's text, in the order of `labels`
     std::vector<ImVec4> bodies;            // the moving bodies' boxes, which the tools' readings keep off
+    std::vector<LabelPlacer::ForceLabel> forces;  // each force's arrow and where its value went
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
+  FreeBodyRecord free_body;
   // Every piece of text the panels drew, with what of it could show.
   std::vector<ShownText> texts;
   // Where each of the lesson's plots in view put its data, curves and legend: its number, its layout.

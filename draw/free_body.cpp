@@ -1,6 +1,7 @@
 #include "draw/free_body.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "draw/drawing.h"
@@ -10,8 +11,24 @@
 
 namespace frictionlab::ui {
 
+double printed_net(const std::vector<b2Vec2>& forces) {
+  double x = 0.0, y = 0.0, step = 1.0;
+  bool any = false;
+  for (const b2Vec2& force : forces) {
+    const double length = force.Length();
+    if (length == 0.0) continue;
+    const PrintedNumber printed = printed_number(length);
+    x += printed.value * force.x / length;
+    y += printed.value * force.y / length;
+    step = any ? std::min(step, printed.step) : printed.step;
+    any = true;
+  }
+  if (!any) return 0.0;
+  return std::round(std::hypot(x, y) / step) * step;
+}
+
 void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
-                    ImVec2 size, const Theme& theme, const Fonts& fonts) {
+                    ImVec2 size, const Theme& theme, const Fonts& fonts, FreeBodyRecord* record) {
   const float s = fonts.scale;
   draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
   draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
@@ -43,7 +60,9 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   inset.centre = box.GetCenter();
   const b2Vec2 extent = box.upperBound - box.lowerBound;
   inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
-  inset.pixels_per_metre = std::min(0.32f * inset.size.x / std::max(extent.x, 1e-3f), 0.24f * inset.size.y / std::max(extent.y, 1e-3f));
+  // The body as large as leaves its arrows room: at a quarter of the height a tall crate on a
+  // projector's inset was 15 px across, under its own arrows.
+  inset.pixels_per_metre = std::min(0.4f * inset.size.x / std::max(extent.x, 1e-3f), 0.4f * inset.size.y / std::max(extent.y, 1e-3f));
   const std::vector<ForceOnBody> forces = forces_on(scene, body);
   float largest = 1e-6f;
   for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
@@ -84,7 +103,6 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   }
   // Labels between the title and the net force line, off every arrow.
   LabelPlacer labels(inset.origin, inset.size);
-  b2Vec2 net{0.0f, 0.0f};
   const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
   for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
   // A motor's torque on the body, round its centre of mass.
@@ -100,9 +118,19 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   for (const TorqueArc& arc : torques) {
     draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
   }
-  for (const ForceOnBody& force : forces) net += force.force;
+  // The forces drawn, as printed: a force too small for an arrow has no value to add.
+  std::vector<b2Vec2> drawn;
+  for (const ScreenArrow& arrow : arrows) drawn.push_back(arrow.force.force);
   draw->PopClipRect();
-  const std::string net_text = "net force: " + format_quantity(net.Length(), "N");
+  const std::string net_text = "net force: " + format_quantity(printed_net(drawn), "N");
+  if (record != nullptr) {
+    record->drawn = true;
+    record->forces = labels.force_labels();
+    record->directions = drawn;
+    record->labels = labels.labels();
+    record->bounds = labels.bounds();
+    record->net_text = net_text;
+  }
   draw->AddText(fonts.small, fonts.small->FontSize, footer_at, theme.faint_text, net_text.c_str());
   noted(net_text, footer_at);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace frictionlab::ui {
 
@@ -85,6 +86,28 @@ std::string format_quantity(double value, const char* unit) {
   std::string shown = text;
   if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
   return shown;
+}
+
+PrintedNumber printed_number(double value) {
+  const double magnitude = std::abs(value);
+  if (magnitude == 0.0) return {0.0, 1.0};
+  if (magnitude < 1e-3) {
+    // Two significant figures times a power of ten, as format_quantity() writes it.
+    int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    double mantissa = value / std::pow(10.0, exponent);
+    if (std::abs(mantissa) >= 9.95) {
+      mantissa /= 10.0;
+      ++exponent;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g", mantissa);
+    return {std::strtod(text, nullptr) * std::pow(10.0, exponent), std::pow(10.0, exponent - 1)};
+  }
+  const int decimals = magnitude >= 100.0 ? 0 : magnitude >= 10.0 ? 1 : magnitude >= 1.0 ? 2 : magnitude >= 0.1 ? 3
+                       : magnitude >= 0.01 ? 4 : 5;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return {std::strtod(text, nullptr), std::pow(10.0, -decimals)};
 }
 
 }  // namespace frictionlab::ui

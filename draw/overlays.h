@@ -35,5 +35,12 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
 // "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
 // ten) and the unit.
 std::string format_quantity(double value, const char* unit);
+// The number format_quantity() prints for `value`, as a number (4.42 for 4.4213), and the step
+// of its last digit (0.01): what a student adding printed values by hand adds.
+struct PrintedNumber {
+  double value = 0.0;
+  double step = 1.0;
+};
+PrintedNumber printed_number(double value);
 
 }  // namespace frictionlab::ui

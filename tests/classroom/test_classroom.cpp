@@ -1520,6 +1520,55 @@ TEST(Classroom, PredictAgainHidesTheTheoryForANewRoundOfAnswers) {
   EXPECT_EQ(driver.classroom().predictions().answers["tips or slides"], "tips");
 }
 
+// The status line says the present state only (issue 31, a teacher's trial): "…the run is back
+// at t = 0" was still read at t = 2.49 s with the theory shown, and "the lesson's run ends at
+// 3.46 s" after a rewind to 1.96 s. Each is said while it holds and gone once it does not: after
+// a rewind (the comma key, the time bar), a reset (R) and the reveal (T).
+TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
+  Driver driver("tipping_box");
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  const auto says = [&](const std::string& words) {
+    return driver.classroom().transport_words().find(words) != std::string::npos;
+  };
+  driver.click("prediction tips or slides: slides");
+  driver.key(Key::space);
+  driver.playback().run_to(driver.lesson().duration());
+  driver.frame();
+  EXPECT_TRUE(says("run ends at")) << driver.classroom().transport_words();
+  driver.key(Key::comma);  // a step back: no longer at the end
+  EXPECT_FALSE(says("run ends at")) << "rewound to t = " << driver.lesson().scene().time() << ": "
+                                    << driver.classroom().transport_words();
+  driver.playback().run_to(driver.lesson().duration());
+  driver.frame();
+  ASSERT_TRUE(says("run ends at"));
+  driver.playback().scrub_to(1.96);
+  driver.frame();
+  EXPECT_FALSE(says("run ends at")) << driver.classroom().transport_words();
+  driver.playback().run_to(driver.lesson().duration());
+  driver.frame();
+  ASSERT_TRUE(says("run ends at"));
+  driver.key(Key::r);
+  EXPECT_FALSE(says("run ends at")) << "reset: " << driver.classroom().transport_words();
+
+  driver.playback().run_to(driver.lesson().duration());
+  driver.key(Key::t);
+  ASSERT_FALSE(driver.classroom().theory_hidden());
+  driver.click("View menu");
+  driver.click("Predict again");
+  driver.frame();
+  EXPECT_TRUE(says("back at t = 0")) << "true when said: " << driver.classroom().transport_words();
+  driver.playback().run_to(2.49);
+  driver.frame();
+  EXPECT_FALSE(says("back at t = 0")) << "at t = 2.49 s: " << driver.classroom().transport_words();
+  driver.playback().reset();
+  driver.frame();
+  ASSERT_TRUE(driver.classroom().theory_hidden());
+  driver.key(Key::t);  // the reveal, back at t = 0: the theory is no longer hidden
+  ASSERT_FALSE(driver.classroom().theory_hidden());
+  EXPECT_FALSE(says("theory is hidden")) << "the theory shown: " << driver.classroom().transport_words();
+}
+
 // Space is how the window plays. Typed into a prediction's number (a teacher who typed the
 // class's answer and pressed Space to start, as the trial did), it ends the typing and plays,
 // and never becomes part of the number ("40 " read as "not a number" after the reveal).

@@ -1,0 +1,31 @@
+// A slider whose knob never covers its value: ImGui 1.86's SliderScalar writes the value across
+// the middle of its frame and moves the knob, a block as tall as the frame, under it, so a value
+// near the knob ("5 N/s", "speed ×1") lost a letter or two to it. Here the knob is a strip along
+// the frame's bottom edge, in the padding under the text, with the range up to it shaded.
+#pragma once
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <string>
+
+#include "classroom/control_places.h"
+
+namespace frictionlab::ui {
+
+// Where a knob slider put its parts, for tests: its frame, its knob and its value's text.
+struct KnobSliderShape {
+  ImRect frame, knob, text;
+};
+
+// As ImGui::SliderScalar: drag or click to set, arrow keys when focused, Ctrl+click to type. The frame is remembered under `name` and the knob under
+// `name` + " knob"; the frame is ImGui's last item afterwards (IsItemDeactivated and the like).
+bool knob_slider(const char* id, ImGuiDataType type, void* value, const void* min, const void* max, const char* format,
+                 ImGuiSliderFlags flags, ControlPlaces& controls, const std::string& name,
+                 KnobSliderShape* shape = nullptr);
+
+// Where the knob goes in `frame` for ImGui's grab box `grab` (its position along the frame), and
+// the value's text box for text `text_size` wide and high, centred as ImGui writes it.
+KnobSliderShape knob_slider_shape(const ImRect& frame, const ImRect& grab, ImVec2 text_size);
+
+}  // namespace frictionlab::ui
