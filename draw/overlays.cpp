@@ -57,33 +57,29 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
 }
 
 std::string format_quantity(double value, const char* unit) {
+  if (value == 0.0) return std::string("0 ") + unit;
+  // The digits printed_number() rounds to, written out: the rounding lives there alone, so the
+  // free-body inset's sum of printed forces is what a student adds up from these texts.
+  const PrintedNumber printed = printed_number(value);
+  const int last_digit = static_cast<int>(std::lround(std::log10(printed.step)));
   char text[64];
-  const double magnitude = std::abs(value);
-  if (magnitude == 0.0) return std::string("0 ") + unit;
-  if (magnitude < 1e-3) {
-    // 4.2×10⁻⁸ rather than 4.2e-08: the notation of the classroom.
-    int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
-    double mantissa = value / std::pow(10.0, exponent);
-    // 9.96×10⁻⁴ rounds to two digits as 10: written 1×10⁻³, not 10×10⁻⁴.
-    if (std::abs(mantissa) >= 9.95) {
-      mantissa /= 10.0;
-      ++exponent;
-    }
-    std::snprintf(text, sizeof text, "%.2g\u00d710", mantissa);
-    std::string shown = text;
+  std::string shown;
+  if (std::abs(value) < 1e-3) {
+    // 4.2×10⁻⁸ rather than 4.2e-08: the notation of the classroom; two figures, the last at
+    // `last_digit`.
+    const int exponent = last_digit + 1;
+    std::snprintf(text, sizeof text, "%.2g\u00d710", printed.value / std::pow(10.0, exponent));
+    shown = text;
     static const char* const superscript[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
                                               "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
     shown += "\u207b";
     for (char digit : std::to_string(-exponent)) shown += superscript[digit - '0'];
     shown = shown + " " + unit;
-    if (shown[0] == '-') shown.replace(0, 1, "\u2212");
-    return shown;
+  } else {
+    std::snprintf(text, sizeof text, "%.*f %s", -last_digit, printed.value, unit);
+    shown = text;
   }
-  const char* format = magnitude >= 100.0 ? "%.0f %s" : magnitude >= 10.0 ? "%.1f %s" : magnitude >= 1.0 ? "%.2f %s"
-                       : magnitude >= 0.1 ? "%.3f %s" : magnitude >= 0.01 ? "%.4f %s" : "%.5f %s";
-  std::snprintf(text, sizeof text, format, value, unit);
   // A minus sign, not a hyphen, in front of negative numbers.
-  std::string shown = text;
   if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
   return shown;
 }
@@ -92,7 +88,8 @@ PrintedNumber printed_number(double value) {
   const double magnitude = std::abs(value);
   if (magnitude == 0.0) return {0.0, 1.0};
   if (magnitude < 1e-3) {
-    // Two significant figures times a power of ten, as format_quantity() writes it.
+    // Two significant figures times a power of ten; 9.96×10⁻⁴ rounds to two digits as 10, so
+    // it is 1×10⁻³, not 10×10⁻⁴.
     int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
     double mantissa = value / std::pow(10.0, exponent);
     if (std::abs(mantissa) >= 9.95) {
