@@ -8,8 +8,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <utility>
 
 #include "classroom/classroom.h"
 #include "draw/headless.h"
@@ -32,6 +36,26 @@ inline void draw_window_frame(HeadlessContext& gl, ImGuiHost& host, Classroom& w
   host.begin_frame();
   window.frame(fonts, display, wall, record);
   ImGui::Render();
+}
+
+// A file's whole text (a saved setup, an export, a script), for tests that read what was written.
+inline std::string read_file(const std::string& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// A lesson with the theory table shown from the start (no predictions asked first; the force
+// gauge marks the table), in projector mode when asked: what the gauge and tools tests open.
+inline ClassroomOptions gauge_options(const std::string& lesson, std::map<std::string, std::string> overrides = {},
+                                      bool projector = false) {
+  ClassroomOptions options;
+  options.lesson = lesson;
+  options.overrides = std::move(overrides);
+  options.window.projector = projector;
+  options.window.predictions = false;
+  return options;
 }
 
 class ClassroomHands {

@@ -34,13 +34,6 @@ constexpr ModifierKeys test_modifier_keys{{341, 345}, {340, 344}, {342, 346}, {3
 
 using lessons::ScriptFile;
 
-std::string read_file(const std::string& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 // The classroom on a headless context, and a user's hands on its io.
 class Driver {
  public:
@@ -793,7 +786,6 @@ struct StudentCopy {
     for (int i = 0; i < 3; ++i) driver.frame(0.15);
   }
 };
-
 
 TEST(Classroom, SavingTheScriptReloadsTheLesson) {
   StudentCopy copy;

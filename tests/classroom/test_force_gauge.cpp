@@ -27,18 +27,6 @@ namespace {
 
 constexpr double g = 9.81;
 
-// The classroom with the theory table shown from the start (the gauge marks it), in projector
-// mode when asked, and a teacher's hands on it.
-ClassroomOptions gauge_options(const std::string& lesson, std::map<std::string, std::string> overrides = {},
-                               bool projector = false) {
-  ClassroomOptions options;
-  options.lesson = lesson;
-  options.overrides = std::move(overrides);
-  options.window.projector = projector;
-  options.window.predictions = false;
-  return options;
-}
-
 // push at its default mu (wood on wood, mu_s 0.4, mu_k 0.3), a 10 kg block, its own push at its
 // slowest (0.2 N/s, so that the hand does nearly all the pulling: 0.3 N by 1.5 s, 1 % of the
 // friction). Pulled by hand at a steady 0.1 m/s or so, slowly enough that the gauge's force grows

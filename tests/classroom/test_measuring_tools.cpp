@@ -26,18 +26,6 @@ namespace {
 
 constexpr double g = 9.81;
 
-// The classroom with the theory table shown from the start, in projector mode when asked, and a
-// teacher's hands on it (as tests/classroom/test_force_gauge.cpp opens it).
-ClassroomOptions gauge_options(const std::string& lesson, std::map<std::string, std::string> overrides = {},
-                               bool projector = false) {
-  ClassroomOptions options;
-  options.lesson = lesson;
-  options.overrides = std::move(overrides);
-  options.window.projector = projector;
-  options.window.predictions = false;
-  return options;
-}
-
 // The stopwatch reads the lesson's clock: at half speed a second of wall time is half a second
 // of lesson, and a pause stops nothing it reads but the lesson.
 TEST(MeasuringTools, TheStopwatchReadsLessonTimeNotTheWallClock) {

@@ -20,13 +20,6 @@
 namespace frictionlab::ui {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 // Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
 // "0.470"), not as part of a longer number ("10.47", "0.475").
 bool mentions(const std::string& text, double value) {

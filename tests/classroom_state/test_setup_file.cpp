@@ -21,13 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const std::string& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 // The message parse_setup gives `text`, "" when it reads it.
