@@ -457,7 +457,7 @@ namespace {
 // A body's acceleration along a direction, as a probe samples it after each frame: the change
 // of its speed between two samples over the time between their velocities. Box2D's velocity
 // after a (sub-)step is the one the step moved the body with, the middle of that step's time
-// (lessons/reference.md, section 8), so the velocity a sample reads belongs to t − h_sub/2. The first
+// (lessons/reference/reading.md, section 8), so the velocity a sample reads belongs to t − h_sub/2. The first
 // one's predecessor is the velocity the body was given at t = 0, or, for a body at rest then,
 // which the scene takes to have been held until then, its 0 at −h_sub/2 (Scene::start). The
 // reading is the acceleration at the middle of the two velocities' instants (t − h after the

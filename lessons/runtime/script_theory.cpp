@@ -6,7 +6,7 @@
 // (with unit, default and range, read and refused by theory_binding.cpp) and the answer made of
 // them. A function that needs more than that says is written out in script_theory_written.cpp
 // and named here with written_out. To add one: describe it here (or write it out there and name
-// it here), and give it a row in lessons/reference.md's table of theory.* functions, which
+// it here), and give it a row in lessons/reference/theory.md's table of theory.* functions, which
 // test_script_theory checks against this one.
 
 #include "lessons/runtime/theory_binding.h"

@@ -1202,7 +1202,7 @@ probe { "fragile", function() if time() > 0.1 then return nil end return 1 end }
   EXPECT_EQ(lesson.scene().time(), 0.0);
 }
 
-// The guide's table of instants (lessons/reference.md, section 8), as a lesson's tolerance must allow
+// The guide's table of instants (lessons/reference/reading.md, section 8), as a lesson's tolerance must allow
 // for them: a body falling from rest is ½·g·t·(t + h) below its start, half a step ahead of
 // ½·g·t²; the step in which a stuck contact breaks away reads μs·N and already slipping, the
 // next μk·N.

@@ -1,4 +1,4 @@
-// The guide's table of theory.* functions (lessons/reference.md, section 11) and the runtime's
+// The guide's table of theory.* functions (lessons/reference/theory.md, section 11) and the runtime's
 // one table of them (lessons/runtime/script_theory.cpp) name the same functions, and a
 // described function's every argument is named in its row.
 
@@ -17,8 +17,8 @@ namespace {
 
 // function name -> its row's arguments column, from rows "| `theory.NAME` | ARGUMENTS | ...".
 std::map<std::string, std::string> guide_rows() {
-  std::ifstream guide(std::string(FRICTIONLAB_SOURCE_DIR) + "/lessons/reference.md");
-  EXPECT_TRUE(guide) << "cannot read lessons/reference.md";
+  std::ifstream guide(std::string(FRICTIONLAB_SOURCE_DIR) + "/lessons/reference/theory.md");
+  EXPECT_TRUE(guide) << "cannot read lessons/reference/theory.md";
   std::map<std::string, std::string> rows;
   const std::string start = "| `theory.";
   for (std::string line; std::getline(guide, line);) {
@@ -36,11 +36,11 @@ TEST(TheoryGuide, EveryTheoryFunctionHasARowAndEveryRowAFunction) {
   std::set<std::string> bound;
   for (const TheoryFunction& function : theory_functions()) {
     bound.insert(function.name);
-    EXPECT_TRUE(rows.contains(function.name)) << "lessons/reference.md: the table of theory.* functions has no row for theory."
+    EXPECT_TRUE(rows.contains(function.name)) << "lessons/reference/theory.md: the table of theory.* functions has no row for theory."
                                               << function.name;
   }
   for (const auto& [name, arguments] : rows) {
-    EXPECT_TRUE(bound.contains(name)) << "lessons/reference.md lists theory." << name
+    EXPECT_TRUE(bound.contains(name)) << "lessons/reference/theory.md lists theory." << name
                                       << ", which script_theory.cpp's table does not have";
   }
   EXPECT_EQ(bound.size(), theory_functions().size()) << "a theory function is listed twice";
@@ -53,7 +53,7 @@ TEST(TheoryGuide, ADescribedFunctionsArgumentsAreAllInItsRow) {
     if (row == rows.end()) continue;  // the test above says so
     for (const TheoryArgument& argument : function.arguments) {
       EXPECT_NE(row->second.find(std::string("`") + argument.key + "`"), std::string::npos)
-          << "lessons/reference.md: theory." << function.name << "'s row does not name its argument `" << argument.key << "`";
+          << "lessons/reference/theory.md: theory." << function.name << "'s row does not name its argument `" << argument.key << "`";
     }
   }
 }

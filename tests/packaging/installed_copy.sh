@@ -31,8 +31,12 @@ for size in 16 24 32 48 64 128 256; do
   [[ $(basename "$icon" .png) == $(basename "$desktop" .desktop) ]] || fail "$icon is not named as the desktop entry's Icon"
 done
 gzip -t "$root/share/man/man1/frictionlab.1.gz" || fail "the manual page"
-for guide in README.md reference.md cheatsheet.md; do
+# The students' guide: every .md of the source's lessons/ (the reference's pages in reference/ too).
+guides=0
+while IFS= read -r guide; do
   test -f "$root/share/frictionlab/lessons/$guide" || fail "no students' guide's $guide"
-done
+  guides=$((guides + 1))
+done < <(cd "$source/lessons" && find . -path ./runtime -prune -o -name '*.md' -print | sed 's|^\./||')
+((guides >= 4)) || fail "found $guides pages of the students' guide in $source/lessons, not the guide, the cheat sheet and the reference"
 
 "$here/run_installed.sh" "$root/bin/frictionlab" "$work" "$build" "$source"
