@@ -281,7 +281,7 @@ const Usage usages[] = {
     {no_options, "--version", "the version", true},
 };
 
-// A usage form as the help writes it, in the parts a line may break between: "run", "LESSON",
+// A usage form as the help writes it (and the manual's synopsis), in the parts a line may break between: "run", "LESSON",
 // "[--hz N]", "[--at S --screenshot FILE.png]", "--out PATH". Throws std::logic_error for an
 // option the table does not give the command (option_for).
 std::vector<std::string> form_parts(const Usage& usage) {
@@ -399,6 +399,25 @@ std::string roff(std::string_view text) {
   }
   if (!out.empty() && (out[0] == '.' || out[0] == '\'')) out.insert(0, "\\&");
   return out;
+}
+
+// A word of a usage form as the manual's synopsis writes it: an option in bold with its hyphens
+// as \-, the rest as the tags write values (roff_value: LESSON in italics, a command or a word
+// typed as it stands in bold, signs such as | and ... in roman), its brackets in roman.
+std::string roff_form_word(std::string_view word) {
+  std::size_t open = 0, close = word.size();
+  while (open < close && word[open] == '[') ++open;
+  while (close > open && word[close - 1] == ']') --close;
+  const std::string_view core = word.substr(open, close - open);
+  std::string out(open, '[');
+  if (core.size() > 1 && core[0] == '-' && std::isalpha(static_cast<unsigned char>(core.back())) != 0) {
+    out += "\\fB";
+    for (const char c : core) out += c == '-' ? std::string("\\-") : std::string(1, c);
+    out += "\\fR";
+  } else {
+    out += roff_value(core);
+  }
+  return out.append(word.size() - close, ']');
 }
 
 std::string commands_of(const Option& option, bool node) {
@@ -598,6 +617,34 @@ std::string usage_text(Program program) {
         "program could not finish.\n"
         "The built-in lessons are in $FRICTIONLAB_LESSONS if set, else installed beside the program.\n"
         "More in the manual: man frictionlab\n";
+  }
+  return text;
+}
+
+std::string manual_synopsis() {
+  std::string text;
+  for (const Usage& usage : usages) {
+    std::vector<std::string> parts = form_parts(usage);
+    // A command's name goes into .SY with the program's, so that its form's lines wrap under
+    // its first operand; the window's forms and --version start with an operand or an option.
+    std::string name = "frictionlab";
+    const auto is_command = [](const std::string& part) {
+      return std::all_of(part.begin(), part.end(), [](char c) { return c >= 'a' && c <= 'z'; });
+    };
+    if (!parts.empty() && is_command(parts.front())) {
+      name = "\"frictionlab " + parts.front() + "\"";
+      parts.erase(parts.begin());
+    }
+    text += ".SY " + name + "\n";
+    std::string line;
+    for (const std::string& part : parts) {
+      if (!line.empty()) line += ' ';
+      // The words of one part joined by roff's unbreakable space: a line breaks between parts only.
+      const std::vector<std::string> words = split_words(part);
+      for (std::size_t i = 0; i < words.size(); ++i) line += (i == 0 ? "" : "\\ ") + roff_form_word(words[i]);
+    }
+    if (!line.empty()) text += line + "\n";
+    text += ".YS\n";
   }
   return text;
 }

@@ -1,7 +1,7 @@
 // The command line's options in one table: for each, the commands that take it, the kind of
 // value it takes and its allowed range, and its line of help. Every command (the window, list,
 // run, check, render, link, bench) reads its options through read_options(), and `frictionlab help` and the manual
-// page's OPTIONS are written from the table; so an option is added, renamed or given a new
+// page's SYNOPSIS and OPTIONS are written from the table; so an option is added, renamed or given a new
 // range in one place.
 #pragma once
 
@@ -111,6 +111,11 @@ std::string unknown_option_message(Command command, const std::string& option);
 // run, check, render, link, bench), each option under the first command that takes it, with its
 // manual paragraph (or its line of help). packaging/ writes it into frictionlab.1 at build time.
 std::string manual_options();
+// The manual page's SYNOPSIS, in roff: the usage forms `frictionlab help` writes (usage_text),
+// one .SY block each, so that an option added to a form, or to the table a form names it from,
+// is in the synopsis too. A bracketed group ("[--hz N]") is never broken across lines, as the
+// help never breaks one. packaging/ writes it into frictionlab.1 at build time.
+std::string manual_synopsis();
 
 // `frictionlab help`: the commands' usage and every option, from the table. The command line
 // built for node (web/) has list, run, check, demo and link only, and is run as

@@ -1,7 +1,8 @@
 // frictionlab_manual_options TEMPLATE PAGE: writes the manual page, TEMPLATE (frictionlab.1.in as
-// CMake configured it) with its @FRICTIONLAB_MAN_OPTIONS@ line replaced by the OPTIONS section
-// written from the options table (app/command_line.cpp), and its @FRICTIONLAB_MAN_KEYS@ line by
-// the window's keys (classroom_state/window_keys.h). Run by the build, so that the page,
+// CMake configured it) with its @FRICTIONLAB_MAN_SYNOPSIS@ line replaced by the SYNOPSIS written
+// from the usage's forms and its @FRICTIONLAB_MAN_OPTIONS@ line by the OPTIONS section written
+// from the options table (both app/command_line.cpp), and its @FRICTIONLAB_MAN_KEYS@ line by the
+// window's keys (classroom_state/window_keys.h). Run by the build, so that the page,
 // `frictionlab help` and the window's help panel, written from the same lists, cannot drift apart.
 #include <cstdio>
 #include <fstream>
@@ -50,21 +51,21 @@ int main(int argc, char** argv) {
   std::ifstream in(argv[1], std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
+  if (!in) {
+    std::cerr << "frictionlab_manual_options: cannot read " << argv[1] << '\n';
+    return 1;
+  }
   std::string page = text.str();
-  const std::string mark = "@FRICTIONLAB_MAN_OPTIONS@\n";
-  const std::size_t at = page.find(mark);
-  if (!in || at == std::string::npos) {
-    std::cerr << "frictionlab_manual_options: " << argv[1] << " has no line " << mark;
-    return 1;
+  for (const auto& [mark, section] : {std::pair<std::string, std::string>{"@FRICTIONLAB_MAN_SYNOPSIS@\n", frictionlab::manual_synopsis()},
+                                      {"@FRICTIONLAB_MAN_OPTIONS@\n", frictionlab::manual_options()},
+                                      {"@FRICTIONLAB_MAN_KEYS@\n", keys_table()}}) {
+    const std::size_t at = page.find(mark);
+    if (at == std::string::npos) {
+      std::cerr << "frictionlab_manual_options: " << argv[1] << " has no line " << mark;
+      return 1;
+    }
+    page.replace(at, mark.size(), section);
   }
-  page.replace(at, mark.size(), frictionlab::manual_options());
-  const std::string keys_mark = "@FRICTIONLAB_MAN_KEYS@\n";
-  const std::size_t keys_at = page.find(keys_mark);
-  if (keys_at == std::string::npos) {
-    std::cerr << "frictionlab_manual_options: " << argv[1] << " has no line " << keys_mark;
-    return 1;
-  }
-  page.replace(keys_at, keys_mark.size(), keys_table());
   // Whole or not at all: a page cut short would still be installed by the next build.
   const std::string partial = std::string(argv[2]) + ".partial";
   {

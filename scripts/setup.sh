@@ -26,10 +26,10 @@ if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(xvfb xauth); fi
 if [[ ${FRICTIONLAB_TESTS:-0} == 1 ]]; then packages+=(libreoffice-calc-nogui); fi
 # Building the .deb and checking it with Debian's tools (scripts/package.sh, and the tests that
 # install FrictionLab and build its package): dpkg-shlibdeps and file for CPack's Depends, the
-# validators, and unshare and mount (util-linux, mount) to run the installed copy with the
-# source and build folders out of reach.
+# validators, unshare and mount (util-linux, mount) to run the installed copy with the source
+# and build folders out of reach, and groff to set the manual page's synopsis for its test.
 if [[ ${FRICTIONLAB_TESTS:-0} == 1 || ${FRICTIONLAB_PACKAGING:-0} == 1 ]]; then
-  packages+=(dpkg-dev file lintian desktop-file-utils appstream util-linux mount gzip)
+  packages+=(dpkg-dev file lintian desktop-file-utils appstream util-linux mount gzip groff-base)
 fi
 
 # The libFuzzer targets (scripts/fuzz.sh, which the test command runs for a minute each): Clang

@@ -2,7 +2,7 @@
 // options through: each command's own parser reads every option the table gives it, and each
 // command refuses the others with its usual message; the numbers keep to the table's ranges;
 // the help names every option with its range; and the manual page the build wrote holds the
-// OPTIONS the table writes now.
+// SYNOPSIS and OPTIONS the usage and the table write now.
 #include "app/command_line.h"
 
 #include <gtest/gtest.h>
@@ -472,6 +472,47 @@ TEST(ManualPage, OptionsAreRoffFromTheTable) {
                               "\n.SS bench\n"}) {
     EXPECT_NE(options.find(section), std::string::npos) << section;
   }
+}
+
+// The synopsis is the usage's forms in roff: one .SY block a form, the command's name beside the
+// program's, options in bold, the words to replace in italics, and each bracketed group held
+// together by unbreakable spaces (\ ), so that a line breaks only where the help's may.
+TEST(ManualPage, SynopsisIsRoffOfTheUsagesForms) {
+  const std::string synopsis = manual_synopsis();
+  const std::vector<std::string> forms = usage_forms(usage_text(Program::desktop), "frictionlab");
+  std::size_t blocks = 0;
+  for (std::size_t at = synopsis.find(".SY "); at != std::string::npos; at = synopsis.find(".SY ", at + 1)) ++blocks;
+  EXPECT_EQ(blocks, forms.size()) << synopsis;
+  EXPECT_EQ(std::count(synopsis.begin(), synopsis.end(), '\n'),
+            static_cast<std::ptrdiff_t>(3 * forms.size() - 1))  // .SY, the form's line, .YS; demo has no line
+      << synopsis;
+  EXPECT_EQ(synopsis.rfind(".SY frictionlab\n[\\fILESSON\\fR] [\\fB\\-\\-lock\\fR\\ \\fINAME\\fR[,\\fINAME\\fR...]] ", 0), 0u)
+      << synopsis;
+  EXPECT_NE(synopsis.find("\n.SY \"frictionlab run\"\n\\fILESSON\\fR [\\fB\\-\\-duration\\fR\\ \\fIS\\fR] "), std::string::npos)
+      << synopsis;
+  EXPECT_NE(synopsis.find(" [\\fB\\-\\-mystery\\fR\\ \\fIMATERIAL\\fR/\\fIMATERIAL\\fR\\ \\fB\\-\\-seed\\fR\\ \\fIN\\fR]"),
+            std::string::npos)
+      << synopsis;
+  EXPECT_NE(synopsis.find(" [\\fB\\-\\-theme\\fR\\ \\fBlight\\fR|\\fBdark\\fR] "), std::string::npos) << synopsis;
+  EXPECT_NE(synopsis.find("\n.SY \"frictionlab demo\"\n.YS\n"), std::string::npos) << synopsis;
+  EXPECT_NE(synopsis.find("\n.SY \"frictionlab link\"\n\\fILINK\\fR | \\-\n.YS\n"), std::string::npos) << synopsis;
+  EXPECT_NE(synopsis.find("\n.SY \"frictionlab help\"\n| \\fB\\-\\-help\\fR | \\fB\\-h\\fR\n.YS\n"), std::string::npos)
+      << synopsis;
+  EXPECT_TRUE(synopsis.ends_with("\n.SY frictionlab\n\\fB\\-\\-version\\fR\n.YS\n")) << synopsis;
+  // A hyphen is \- throughout, never a bare one, which man may print as another character.
+  for (std::size_t at = synopsis.find('-'); at != std::string::npos; at = synopsis.find('-', at + 1)) {
+    EXPECT_EQ(synopsis[at - 1], '\\') << synopsis.substr(at - std::min<std::size_t>(at, 20), 40);
+  }
+}
+
+// The page the build wrote holds the SYNOPSIS the usage writes now.
+TEST(ManualPage, TheBuiltPageHasTheUsagesSynopsis) {
+  std::ifstream page(FRICTIONLAB_MAN_PAGE);
+  ASSERT_TRUE(page) << FRICTIONLAB_MAN_PAGE;
+  std::stringstream text;
+  text << page.rdbuf();
+  EXPECT_NE(text.str().find(".SH SYNOPSIS\n.nh\n.ad l\n" + manual_synopsis()), std::string::npos);
+  EXPECT_EQ(text.str().find("@FRICTIONLAB_MAN_SYNOPSIS@"), std::string::npos);
 }
 
 // The page the build wrote holds the OPTIONS the table writes now: a page from before a change

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tests/packaging/man_page_options.sh FRICTIONLAB MAN_PAGE
-# The manual page and `frictionlab help` give the same commands and the same options (each
-# --option and -h, in either direction), and the page's version is the program's. The window's
+# The manual page and `frictionlab help` give the same options (each --option and -h, in either
+# direction), the page's SYNOPSIS is help's usage form for form, and the page's version is the
+# program's. The window's
 # keys are the same in help, the manual page and the teachers' guide's table (the manual once
 # lacked T, W, L, the arrows and Esc).
 set -euo pipefail
@@ -21,9 +22,26 @@ compare() {  # what, from help, from the page [, what the page is]
 }
 options() { grep -oE -- '(^|[^a-zA-Z0-9-])--?[a-z][a-z-]*' | grep -oE -- '--?[a-z][a-z-]*' | sort -u; }
 compare options "$(echo "$help" | options)" "$(echo "$text" | options)"
-# Commands: "frictionlab WORD" in help's usage lines and in the page's synopsis (.B lines).
-compare commands "$(echo "$help" | grep -oE '^ *(usage: )?frictionlab [a-z]+' | awk '{print $NF}' | sort -u)" \
-  "$(echo "$text" | sed -n '/^\.SH SYNOPSIS/,/^\.SH DESCRIPTION/p' | grep -oE '^\.B frictionlab [a-z]+' | awk '{print $NF}' | sort -u)"
+# The synopsis: the usage's forms as help writes them, one a line ("frictionlab run LESSON
+# [--duration S] ..."), and the page's SYNOPSIS as groff sets it on lines too long to wrap, in
+# the same order and word for word. In help a form's words stop at a gap of two spaces, where
+# what it does begins, and lines indented to that column (44) hold only what it does.
+help_forms=$(echo "$help" | sed '/^Options, with the commands/,$d' | awk '
+  { sub(/^usage: /, "       ") }
+  match($0, /^ */) && RLENGTH >= 44 { next }
+  { line = $0; sub(/^ +/, "", line); sub(/  .*/, "", line) }
+  line ~ /^frictionlab( |$)/ { if (form != "") print form; form = line; next }
+  { form = form " " line }
+  END { if (form != "") print form }')
+page_forms=$(groff -man -Tascii -rLL=2000n -P-cbou "$page" 2> /dev/null | sed -n '/^SYNOPSIS/,/^DESCRIPTION/p' |
+  sed '1d; $d' | sed -E 's/^ +//; s/ +/ /g; s/ +$//' | grep -v '^$')
+[[ $(echo "$help_forms" | wc -l) -ge 14 ]] || { echo "FAIL: found $(echo "$help_forms" | wc -l) forms in frictionlab help's usage" >&2; fail=1; }
+if [[ $help_forms != "$page_forms" ]]; then
+  echo "FAIL: the manual page's SYNOPSIS is not frictionlab help's usage (< help, > the page):" >&2
+  diff <(echo "$help_forms") <(echo "$page_forms") >&2
+  fail=1
+fi
+echo "synopsis: $(echo "$help_forms" | wc -l) forms in frictionlab help, $(echo "$page_forms" | wc -l) in the manual page"
 
 # Keys: help's lines under "Keys in the window:" (the key is what stands before the gap of two
 # or more spaces), the page's table rows (KEY, a tab, T{), the rows of the guide's table headed
