@@ -39,7 +39,7 @@ Classroom::Classroom(ClassroomOptions options)
       output_folder_(options.output_folder),
       script_paths_(options.script_paths),
       browser_(options.browser) {
-  setups_.lock_from = options.lock_from;
+  setup_dialog_.lock_from = options.lock_from;
   const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     std::optional<Mystery> mystery;
@@ -205,7 +205,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
-  if (std::string said = setups_.dialog.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
+  if (std::string said = setup_dialog_.draw(*this, output_folder_, s, theme(window_.theme), controls_); !said.empty()) {
     status_ = said;
   }
   ImGui::PopFont();

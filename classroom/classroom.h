@@ -21,14 +21,14 @@
 #include "classroom/cheapest_setting_tab.h"
 #include "classroom/classroom_options.h"
 #include "classroom/control_places.h"
-#include "classroom/dialogs.h"
 #include "classroom/keys.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_panel.h"
+#include "classroom/open_script_dialog.h"
 #include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
 #include "classroom/settings.h"
-#include "classroom/setup_panel.h"
+#include "classroom/setup_dialog.h"
 #include "classroom/stability_map_tab.h"
 #include "classroom/transport_bar.h"
 #include "classroom/world_hand.h"
@@ -237,7 +237,7 @@ class Classroom {
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   MysteryPanel mystery_;
-  SetupPanel setups_;
+  SetupDialog setup_dialog_;
   OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;

@@ -15,14 +15,14 @@ namespace frictionlab::ui {
 std::string Classroom::lock_words() const {
   if (lock_.empty()) return "";
   // Nothing in the window unlocks it: the class cannot undo what the teacher prepared.
-  if (!setups_.lock_from.empty() && browser_) {
+  if (!setup_dialog_.lock_from.empty() && browser_) {
     // The page's setups come from a link or a file from the computer, copied where nobody looks.
     return "Locked by the prepared setup this page opened, for the class to stay on this lesson. To unlock: open the "
            "page's address without its #setup= part, or a setup file without its lock line.";
   }
-  if (!setups_.lock_from.empty()) {
-    return "Locked by the setup " + std::filesystem::path(setups_.lock_from).filename().string() +
-           ", for the class to stay on this lesson. To unlock: delete its lock line (in " + setups_.lock_from +
+  if (!setup_dialog_.lock_from.empty()) {
+    return "Locked by the setup " + std::filesystem::path(setup_dialog_.lock_from).filename().string() +
+           ", for the class to stay on this lesson. To unlock: delete its lock line (in " + setup_dialog_.lock_from +
            "), then quit and open the setup again.";
   }
   return "Locked by --lock on the command line, for the class to stay on this lesson. To unlock: quit and start "
@@ -93,9 +93,9 @@ void Classroom::menu_bar() {
       if (ImGui::MenuItem("Open a script...", nullptr, false, may_switch)) open_script_.ask();
       remember("Open a script");
       // A prepared setup (lesson, values, lock, mystery), saved before class and opened in it.
-      if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setups_.dialog.ask(SetupDialog::Kind::open);
+      if (ImGui::MenuItem("Open a setup...", nullptr, false, may_switch)) setup_dialog_.ask(SetupDialog::Kind::open);
       remember("Open a setup");
-      if (ImGui::MenuItem("Save as a setup...")) setups_.dialog.ask(SetupDialog::Kind::save);
+      if (ImGui::MenuItem("Save as a setup...")) setup_dialog_.ask(SetupDialog::Kind::save);
       remember("Save as a setup");
       if (ImGui::MenuItem("Reload the script", "F5")) playback_->reload();
     }

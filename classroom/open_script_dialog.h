@@ -1,0 +1,28 @@
+// The Lesson menu's dialog that opens a script by its path (the other, which opens or saves a
+// prepared setup, is classroom/setup_dialog.h).
+//
+// It keeps its own state (whether it was asked for, the path as typed, the last error) and draws
+// itself, as each of Dear ImGui's demo windows does: the menu asks for it, and the classroom
+// draws it after the frame's panels, acting through its public call open().
+#pragma once
+
+#include <string>
+
+#include "draw/theme.h"
+
+namespace frictionlab::ui {
+
+class Classroom;
+
+struct OpenScriptDialog {
+  bool asked = false;    // the menu asked for it this frame
+  bool refocus = false;  // a path that failed: back into the box next frame, to correct it
+  char path[512] = {};
+  std::string error;
+
+  void ask() { asked = true; }
+  // The dialog while it is open; `scale` is the fonts' scale.
+  void draw(Classroom& classroom, float scale, const Theme& colours);
+};
+
+}  // namespace frictionlab::ui

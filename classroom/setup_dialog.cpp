@@ -1,0 +1,146 @@
+// The setup dialog (classroom/setup_dialog.h): the window's state as a setup file
+// (classroom_state/setup_file.h), saving it, and opening one in place of the running lesson.
+#include "classroom/setup_dialog.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "classroom/classroom.h"
+#include "draw/text_record.h"
+
+namespace frictionlab::ui {
+
+std::string Classroom::open_setup(const std::string& path) {
+  try {
+    ClassroomOptions base;
+    base.window = window_;
+    const ClassroomOptions options = setup_options(path, base);
+    std::optional<Mystery> mystery;
+    auto next = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
+    next->set_speed(playback_->speed());
+    // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
+    playback_ = std::move(next);
+    lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
+    setup_dialog_.lock_from = options.lock_from;
+    // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
+    predictions_.predictions = options.predictions;
+    window_.predictions = options.window.predictions;
+    forget_interaction();
+    mystery_.begin(std::move(mystery));
+    return "";
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const Theme& colours,
+                              ControlPlaces& controls) {
+  const char* const titles[] = {"", "Open a setup", "Save as a setup"};
+  if (asked) {
+    ImGui::OpenPopup(titles[static_cast<int>(kind)]);
+    asked = false;
+    error.clear();
+    if (kind == Kind::save && path[0] == '\0') {
+      // A name to start from: the lesson's, in the folder screenshots go to.
+      const std::string suggested =
+          (std::filesystem::path(output_folder) / (lesson_name(classroom.playback().lesson().path()) + ".setup")).string();
+      std::snprintf(path, sizeof path, "%s", suggested.c_str());
+    }
+  }
+  if (kind == Kind::none) return "";
+  const float s = scale;
+  ImGui::SetNextWindowSize(ImVec2(640.0f * s, 0.0f), ImGuiCond_Appearing);
+  const char* title = titles[static_cast<int>(kind)];
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    kind = Kind::none;  // closed without its buttons (Escape): none is open any more
+    return "";
+  }
+  std::string said;
+  const bool saving = kind == Kind::save;
+  ImGui::TextUnformatted(saving ? "Save the lesson, its values, the lock, the mystery and the predictions to:"
+                                : "A setup file (path from the folder FrictionLab was started in, or from /):");
+  ImGui::SetNextItemWidth(560.0f * s);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  bool go = ImGui::InputText("##setup path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue);
+  remember_item(controls, "setup path");
+  if (ImGui::Button(saving ? "Save" : "Open")) go = true;
+  remember_item(controls, "setup go");
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel");
+  if (go) {
+    // "~/class.setup", as a shell would have it.
+    const char* home = std::getenv("HOME");
+    const std::string typed = path;
+    const std::string file = typed.rfind("~/", 0) == 0 && home != nullptr ? home + typed.substr(1) : typed;
+    error = saving ? classroom.save_setup(file) : classroom.open_setup(file);
+    if (error.empty()) {
+      if (!saving) said = "Opened the setup " + file;
+      kind = Kind::none;
+      ImGui::CloseCurrentPopup();
+    }
+  }
+  if (cancel) {
+    kind = Kind::none;
+    ImGui::CloseCurrentPopup();
+  }
+  if (!error.empty()) {
+    ImGui::PushTextWrapPos(560.0f * s);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", error.c_str());
+    note_text(error.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::EndPopup();
+  return said;
+}
+
+PreparedSetup SetupDialog::of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                    const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions) {
+  PreparedSetup setup;
+  setup.lesson = setup_lesson_name(lesson.path(), path);
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    // A mystery is saved as its pair and seed: its values are drawn again when it opens.
+    if (mystery.holds(parameter.name)) continue;
+    setup.values.push_back({parameter.name, parameter_text(parameter), 0});
+  }
+  setup.lock.assign(lock.begin(), lock.end());
+  if (mystery.mystery) setup.mystery = mystery.mystery->choice();
+  setup.settings = lesson.settings();
+  setup.ask_predictions = ask_predictions;
+  // In the lesson's order; a box the class typed in and emptied again is no answer.
+  for (const lessons::Prediction& prediction : lesson.predictions()) {
+    const auto answer = predictions.answers.find(prediction.expectation);
+    if (answer != predictions.answers.end() && !answer->second.empty()) setup.answers.push_back({prediction.expectation, answer->second, 0});
+  }
+  setup.revealed = predictions.revealed;
+  return setup;
+}
+
+std::string SetupDialog::save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson) {
+  try {
+    // What the window marks as no number is refused here too: the file would not open again.
+    for (const PreparedSetup::Answer& answer : setup.answers) {
+      const std::string problem = prediction_problem(lesson, answer.row, answer.text);
+      if (!problem.empty()) {
+        throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
+                           "; correct it or clear it in the theory panel, then save");
+      }
+    }
+    write_setup(path, setup);
+    return "";
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+PreparedSetup Classroom::current_setup(const std::string& path) const {
+  return SetupDialog::of_window(path, playback_->lesson(), lock_, mystery_, window_.predictions, predictions_.predictions);
+}
+
+std::string Classroom::save_setup(const std::string& path) {
+  std::string why = SetupDialog::save(path, current_setup(path), playback_->lesson());
+  if (why.empty()) status_ = "Setup saved to " + path;
+  return why;
+}
+
+}  // namespace frictionlab::ui

@@ -1,0 +1,50 @@
+// The Lesson menu's setup dialog (classroom_state/setup_file.h): it opens a prepared setup or
+// saves the window as one, remembers which setup the teacher's lock came from, and makes a setup
+// from the window's parts. It owns that state and draws itself, as each of Dear ImGui's demo
+// windows does: the menu asks for it, and the classroom draws it after the frame's panels.
+// Opening a setup replaces the lesson every panel reads, and a setup holds every panel's state,
+// so the classroom composes those (Classroom::open_setup, current_setup, save_setup in
+// setup_dialog.cpp) from what this gives.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "classroom/control_places.h"
+#include "classroom/mystery_panel.h"
+#include "classroom_state/class_predictions.h"
+#include "classroom_state/setup_file.h"
+#include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
+
+namespace frictionlab::ui {
+
+class Classroom;
+
+struct SetupDialog {
+  enum class Kind { none, open, save } kind = Kind::none;  // which one is open (or asked for)
+  bool asked = false;                                       // asked for this frame
+  char path[512] = {};
+  std::string error;
+  std::string lock_from;  // the setup file the lock came from; "": the command line's --lock
+
+  void ask(Kind which) {
+    kind = which;
+    asked = true;
+  }
+  // The dialog while it is open; a save's path is first suggested in `output_folder`. Returns
+  // what the status line should say ("" for nothing new).
+  std::string draw(Classroom& classroom, const std::string& output_folder, float scale, const Theme& colours,
+                   ControlPlaces& controls);
+
+  // The window as a setup saved at `path` would hold it: the lesson (named from there), every
+  // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether
+  // predictions are asked, the class's answers to the lesson's predict rows and the reveal.
+  static PreparedSetup of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                 const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions);
+  // Writes `setup` to `path` (never over a .lua script or a file that is not a setup FrictionLab
+  // wrote, nor with a typed prediction that is not a number). Returns "" or why not.
+  static std::string save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson);
+};
+
+}  // namespace frictionlab::ui
