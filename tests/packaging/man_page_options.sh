@@ -26,6 +26,7 @@ compare options "$(echo "$help" | options)" "$(echo "$text" | options)"
 # [--duration S] ..."), and the page's SYNOPSIS as groff sets it on lines too long to wrap, in
 # the same order and word for word. In help a form's words stop at a gap of two spaces, where
 # what it does begins, and lines indented to that column (44) hold only what it does.
+command -v groff > /dev/null || { echo "FAIL: groff (Debian's groff-base) sets the page's synopsis for this test; install it" >&2; exit 1; }
 help_forms=$(echo "$help" | sed '/^Options, with the commands/,$d' | awk '
   { sub(/^usage: /, "       ") }
   match($0, /^ */) && RLENGTH >= 44 { next }
