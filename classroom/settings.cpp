@@ -60,7 +60,7 @@ WindowSettings load_settings(const std::string& path) {
   return settings;
 }
 
-bool save_settings(const WindowSettings& settings, const std::string& path) {
+std::string kept_settings_text(const WindowSettings& settings) {
   std::ostringstream text;
   text << "# FrictionLab's window settings, written as they change.\n"
        << "theme = " << theme_name(settings.theme) << "\n"
@@ -70,8 +70,12 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
        << "full_screen = " << (settings.full_screen ? "on" : "off") << "\n"
        << "width = " << settings.width << "\n"
        << "height = " << settings.height << "\n";
+  return text.str();
+}
+
+bool save_settings(const WindowSettings& settings, const std::string& path) {
   try {
-    const std::string bytes = text.str();
+    const std::string bytes = kept_settings_text(settings);
     write_whole_file(path, bytes.data(), bytes.size());
     return true;
   } catch (const std::exception&) {

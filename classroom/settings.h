@@ -43,6 +43,10 @@ std::string settings_folder();
 // keep the window from opening; so are the speed and the tools an older FrictionLab kept there.
 // A missing file gives the defaults.
 WindowSettings load_settings(const std::string& path);
+// The file save_settings writes for `settings`: the part kept for the next session, the speed and
+// the tools left out. The windows compare it, not the whole settings, to know when to save: a
+// speed or a tool changed is not worth a write (on the web, a sync of the browser's storage).
+std::string kept_settings_text(const WindowSettings& settings);
 // Whole or not at all (written beside it, then renamed). Returns false when it cannot be written.
 bool save_settings(const WindowSettings& settings, const std::string& path);
 

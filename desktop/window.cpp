@@ -191,7 +191,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     glfwSwapBuffers(window.get());
     // A choice the teacher made (theme, projector, help, full screen) is kept at once, so a window
     // that is killed rather than closed still remembers it.
-    if (!run.settings_path.empty() && !(settings == saved)) {
+    if (!run.settings_path.empty() && kept_settings_text(settings) != kept_settings_text(saved)) {
       save_settings(settings, run.settings_path);
       saved = settings;
     }

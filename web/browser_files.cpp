@@ -2,7 +2,9 @@
 
 #include <emscripten.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -22,10 +24,15 @@ void offer_downloads() {
   for (fs::directory_iterator file(downloads_folder, error), end; !error && file != end; file.increment(error)) {
     if (file->is_regular_file(error)) files.push_back(file->path());
   }
-  for (const fs::path& file : files) {
-    EM_ASM({ frictionlabPage.download(UTF8ToString($0)); }, file.string().c_str());
-    fs::remove(file, error);
-  }
+  if (files.empty()) return;
+  // One key's files (a CSV and its settings) in name order: the CSV's name is the settings
+  // file's stem, so it comes first and is the one saved at once (page.html's downloadAll).
+  std::sort(files.begin(), files.end());
+  // One line each: the names are FrictionLab's own (lesson, time, extension), never a line break.
+  std::string paths;
+  for (const fs::path& file : files) paths += (paths.empty() ? "" : "\n") + file.string();
+  EM_ASM({ frictionlabPage.downloadAll(UTF8ToString($0).split('\n')); }, paths.c_str());
+  for (const fs::path& file : files) fs::remove(file, error);
 }
 
 }  // namespace frictionlab::web

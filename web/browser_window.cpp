@@ -233,7 +233,7 @@ void draw_frame() {
   if (settings.help) p.run.help_to_save.reset();  // shown: from now on the user's own choice
   ui::WindowSettings to_save = settings;
   if (p.run.help_to_save) to_save.help = *p.run.help_to_save;
-  if (!p.run.settings_path.empty() && !(to_save == p.saved)) {
+  if (!p.run.settings_path.empty() && ui::kept_settings_text(to_save) != ui::kept_settings_text(p.saved)) {
     ui::save_settings(to_save, p.run.settings_path);
     keep_home_folder();
     p.saved = to_save;

@@ -1316,6 +1316,35 @@ TEST(Classroom, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
 
 // Issue 31: a class opened at yesterday's ×8 with yesterday's tools rushed through its breakaway.
 // The speed and the tools belong to one session; the status line says what did come back.
+// The windows save when the kept part changes, judged by the text they would write: a speed or a
+// tool changed is this session's only and rewrote settings.ini each time (on the web, a sync of
+// the browser's storage too).
+TEST(Classroom, TheSpeedAndTheToolsChangeNothingThatIsKept) {
+  const WindowSettings before;
+  WindowSettings faster = before;
+  faster.speed = 8.0;
+  faster.tools = ToolSettings{true, true, true, true};
+  EXPECT_EQ(kept_settings_text(faster), kept_settings_text(before));
+  for (const auto& [what, change] : std::vector<std::pair<std::string, void (*)(WindowSettings&)>>{
+           {"theme", [](WindowSettings& s) { s.theme = ThemeName::dark; }},
+           {"projector", [](WindowSettings& s) { s.projector = true; }},
+           {"help", [](WindowSettings& s) { s.help = !s.help; }},
+           {"predictions", [](WindowSettings& s) { s.predictions = !s.predictions; }},
+           {"full screen", [](WindowSettings& s) { s.full_screen = true; }},
+           {"width", [](WindowSettings& s) { s.width += 1; }},
+           {"height", [](WindowSettings& s) { s.height += 1; }}}) {
+    WindowSettings changed = before;
+    change(changed);
+    EXPECT_NE(kept_settings_text(changed), kept_settings_text(before)) << what << " is kept, so its change is saved";
+    // What is written is what comes back.
+    const std::string path = (std::filesystem::temp_directory_path() /
+                              ("frictionlab_kept_" + std::to_string(::getpid()) + ".ini")).string();
+    ASSERT_TRUE(save_settings(changed, path));
+    EXPECT_EQ(kept_settings_text(load_settings(path)), kept_settings_text(changed)) << what;
+    std::filesystem::remove(path);
+  }
+}
+
 TEST(Classroom, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_session_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings yesterday;
