@@ -221,7 +221,7 @@ end
 local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
 -- A stuck contact asked for up to 2 % past μ·N may be held a step while the listener tells the
 -- solver's leftover from a real excess (its hold band).
-local hold_band = 0.02  -- the listener's stick_slip_hold_band (physics/friction_laws.h)
+local hold_band = stick_slip_hold_band  -- the listener's (physics/friction_laws.h)
 -- Whether the contact's moment falls short of turning the block with the surface at time_t,
 -- with that friction and normal force on it.
 local function must_rock(time_t, friction, normal)
