@@ -221,7 +221,7 @@ end
 local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
 -- A stuck contact asked for up to 2 % past μ·N may be held a step while the listener tells the
 -- solver's leftover from a real excess (its hold band).
-local hold_band = 0.02  -- the listener's stick_slip_hold_band (physics/friction_laws.h)
+local hold_band = stick_slip_hold_band  -- the listener's (physics/friction_laws.h)
 -- Whether the contact's moment falls short of turning the block with the surface at time_t,
 -- with that friction and normal force on it.
 local function must_rock(time_t, friction, normal)
@@ -590,6 +590,32 @@ local function speed_before(t)
   local now_at = value_at("slide", t)
   return back and now_at and (now_at - back) / h
 end
+-- What the world's start (start_speed(), about a step's worth of the drive off the models'
+-- block at rest) does to the kinetic energy by time t, worked out by the model with the turn
+-- started that fast: its speed until the first stop, and after it the place it stopped at,
+-- where the turn flings and presses the block otherwise. That second part start_drift leaves
+-- out: at a_x −26.69 m/s², θ0 24.13°, ω 9.184 rad/s the world stopped 3.8 mm short of the
+-- model's block, and over the rest of the first swing, pressed less as N fell to 4 N, it ended
+-- 0.059 J above the model's ΔK (0.029 at 480 Hz, 0.015 at 960: first order in the step, as the
+-- start is). Started either way, since start_speed knows the start's size and not its way:
+-- the two models end 0.092 J above and 0.151 J below there, and a frictionless block shaken on
+-- a plank swinging 2.5° (a_x 28.42, ω 10) ended above the model's ΔK where the one started
+-- against the drive ends below it. Solved only where the models' block slips from the start.
+local started, started_for = nil, nil
+local function start_energy(t)
+  if turning.contact[1] == "sticking" then return 0 end
+  local k = sample(t)
+  if started_for ~= k then
+    started_for, started = k, 0
+    for _, way in ipairs { 1, -1 } do
+      local kinetic = theory.wedge { mass = mass, theta0 = param.theta0, omega = omega, a_x = a_x, a_x_omega = a_x_omega,
+        mu_s = param.mu_s, mu_k = param.mu_k, duration = (k - 1) * spacing, step = spacing, rotation = true,
+        centre_height = centre_height, start = 0, start_speed = way * start_speed() }.kinetic[k]
+      started = math.max(started, math.abs(kinetic - turning.kinetic[k]))
+    end
+  end
+  return started
+end
 expect { "ΔK over the first swing", unit = "J",
   predicted = function()
     local k = sample(first_swing())
@@ -602,12 +628,9 @@ expect { "ΔK over the first swing", unit = "J",
     return speed and 0.5 * mass * speed * speed or nil
   end,
   -- 2 % and 1 mJ, and how much the kinetic energy changes in the step the speed is read over;
-  -- and where the world's start still carries the block off the models' speed (by a_x·h/2 at
-  -- first: see start_drift), the energy that difference makes at that speed.
+  -- and what the world's start does to it (start_energy).
   tolerance = function()
     local k = sample(first_swing())
-    local _, off = start_drift(first_swing())
-    local speed = math.sqrt(2 * math.max(turning.kinetic[k], 0) / mass)
     return 0.02 * turning.kinetic[k] + math.abs(turning.kinetic[k] - turning.kinetic[k - 1]) + 1e-3
-           + mass * (speed + 0.5 * off) * off
+           + start_energy(first_swing())
   end }

@@ -185,6 +185,11 @@ void FrictionListener::finish_step() {
     r.solving = false;
     settle(r);
   }
+  // After the loop: every contact's record has read its own impulses as the solver left them.
+  for (const b2Contact* contact : held_groups_) {
+    if (const ContactRecord* r = record(contact)) share_held_friction_by_load(*r);
+  }
+  held_groups_.clear();
 }
 
 void FrictionListener::settle(ContactRecord& r) {
@@ -238,6 +243,7 @@ void FrictionListener::settle(ContactRecord& r) {
     if (solved.group_normal_impulse <= 0.0) return;  // no load, no evidence either way
     rule.after_solve(r, pair, solved);
     share_group_state(contact, r);
+    if (r.state == ContactState::sticking) held_groups_.push_back(contact);
   } else {
     if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
     rule.after_solve(r, pair, solved);
@@ -296,6 +302,48 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
       member.band_steps = r.band_steps;
       member.band_excess = r.band_excess;
       member.band_impulse = r.band_impulse;
+    }
+    return true;
+  });
+}
+
+// A stuck group's points are given a coefficient no load share reaches (stick-slip's
+// group_hold_coefficient), so the solver holds the body wherever a rigid hold needs it. The
+// feet of a body in a row have the same tangential row in the solver (same direction, same
+// height below the centre), so how the friction is split between them changes nothing the body
+// does, and statics cannot decide it: the solver keeps whatever split its warm start gives,
+// step after step. Left so, friction piled up on a foot whose load had all but gone (17 N on a
+// foot carrying 0.002 N of a 9 kg block on six feet), and in the step its load reached 0 the
+// solver's clamp dropped it, faster than its passes could move it to the other feet: the body
+// was left sliding 6 mm/s, and taking that back the next step read as a breakaway at 166.8 N
+// where mu·N is 178.8 N. The next step starts from the split Coulomb's law gives a rigid body
+// on equal feet, each point's friction in proportion to its load: the same total impulse at
+// the same height (the same warm start for the body), and a foot that loses its load has
+// carried only its share of the friction. Only where every point's tangent is the group's (feet
+// on one flat surface); other groups keep the solver's split.
+void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
+  const b2Vec2 t = r.tangent();
+  double normal = 0.0, tangent = 0.0;
+  bool parallel = true;
+  visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
+    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float along = side * b2Dot(member.tangent(), t);
+    // Float tangents of one flat surface agree to round-off.
+    if (std::abs(std::abs(along) - 1.0f) > 1e-5f) parallel = false;
+    const b2Manifold* manifold = other->GetManifold();
+    for (int i = 0; i < manifold->pointCount; ++i) {
+      normal += manifold->points[i].normalImpulse;
+      tangent += along * manifold->points[i].tangentImpulse;
+    }
+    return parallel;
+  });
+  if (!parallel || !(normal > 0.0)) return;
+  visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
+    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float along = side * b2Dot(member.tangent(), t) > 0.0f ? 1.0f : -1.0f;
+    b2Manifold* manifold = const_cast<b2Contact*>(other)->GetManifold();
+    for (int i = 0; i < manifold->pointCount; ++i) {
+      manifold->points[i].tangentImpulse = static_cast<float>(along * tangent * manifold->points[i].normalImpulse / normal);
     }
     return true;
   });

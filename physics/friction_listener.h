@@ -202,6 +202,9 @@ class FrictionListener : public b2ContactListener {
   bool sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved);
   // The state the group's first contact was left in, given to the rest of the group.
   void share_group_state(const b2Contact* contact, const ContactRecord& r);
+  // A stuck group's friction impulse, left in its manifolds for the next step's warm start,
+  // shared between its points in proportion to their loads (see finish_step).
+  void share_held_friction_by_load(const ContactRecord& r);
   // A new contact takes its group's state from a sibling that has one already.
   void join_group(const b2Contact* contact, ContactRecord& r);
   ContactRecord* mutable_record(const b2Contact* contact) {
@@ -249,6 +252,9 @@ class FrictionListener : public b2ContactListener {
   mutable unsigned long drag_read_at_ = 0;
   // The contacts left a breakaway correction by the last step, in the order it found them.
   std::vector<b2Contact*> owing_;
+  // The first contacts of the groups the last step left stuck, whose friction is shared by load
+  // once every contact of the step is settled.
+  std::vector<b2Contact*> held_groups_;
   ContactWork work_;
   std::string error_;
 };

@@ -242,6 +242,7 @@ class Solver {
     result.samples.reserve(sample_count);
     double t = 0.0, work_landings = 0.0;
     Vector y;
+    y.v = drive_.start_speed;
     Phase phase = contact_phase(0.0, y);
     double window_start = phase.contact == WedgeContact::slip ? 0.0 : -1.0;
     result.samples.push_back(state_of(phase, 0.0, y, 0.0));
@@ -367,6 +368,7 @@ WedgeRun solve_wedge(const WedgeDrive& drive, WedgeLaw law, double t_end, double
   require_positive(where, "g", drive.g);
   require_non_negative(where, "centre_height", drive.centre_height);
   require_finite(where, "start", drive.start);
+  require_finite(where, "start_speed", drive.start_speed);
   require_non_negative(where, "t_end", t_end);
   require_positive(where, "sample_step", sample_step);
   require_positive(where, "max_step", max_step);

@@ -35,6 +35,10 @@ struct WedgeDrive {
   // plank does, and what a Box2D body on a driven plank should follow.
   bool rotation = false;
   double centre_height = 0, start = 0;
+  // m/s down the slope at t = 0, in the wedge's frame: 0 for the article's block at rest. A
+  // stepped world's block starts off the model's by about a_x·h/2 (it moves with the plank's
+  // first step), and a model started so tells what that start does later on.
+  double start_speed = 0;
 
   double angle(double t) const;                     // θ(t), rad; the surface rises towards +x
   double angular_velocity(double t) const;          // θ'(t)

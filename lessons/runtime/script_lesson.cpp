@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lessons/runtime/build.h"
+#include "physics/friction_laws.h"
 #include "physics/scenarios.h"
 #include "physics/validation.h"
 
@@ -929,6 +930,11 @@ void register_lesson_api(lua_State* state) {
   // Kept, as 0, for scripts written when they rested 15 mm apart.
   lua_pushnumber(state, 0.0);
   lua_setglobal(state, "resting_gap");
+  // The share past mu·N the stick-slip treatment lets the solver hold a stuck contact for a
+  // step (physics/friction_laws.h): a theory of the stepped world, such as the wedge's rocking
+  // test, must allow for it, and reads it here rather than keep a copy that could drift.
+  lua_pushnumber(state, stick_slip_hold_band);
+  lua_setglobal(state, "stick_slip_hold_band");
   // param: a read-only view of the parameters' current values.
   lua_newtable(state);
   lua_newtable(state);

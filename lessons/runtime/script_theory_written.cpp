@@ -449,11 +449,12 @@ int velocity_hack(lua_State* state) {
 // or "article" (the article's equation as written: friction opposes the driving force, always
 // sliding). rotation = true puts back the turning surface's terms the article leaves out, for a
 // block whose centre is centre_height above the surface line and starts `start` m up the slope
-// from the pivot.
+// from the pivot; start_speed (m/s, down the slope) starts it moving instead of at rest.
 int wedge(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.wedge", {"mass", "theta0", "omega", "a_x", "a_x_omega", "mu_s", "mu_k", "g",
-                                             "duration", "step", "law", "rotation", "centre_height", "start"});
+                                             "duration", "step", "law", "rotation", "centre_height", "start",
+                                             "start_speed"});
     WedgeDrive drive;
     drive.mass = fields.number_in("mass", "kg", 0.0, 1e6, true);
     drive.theta0 = fields.number_in("theta0", "°", -85.0, 85.0) * degrees;
@@ -466,6 +467,7 @@ int wedge(lua_State* state) {
     drive.rotation = fields.flag("rotation").value_or(false);
     drive.centre_height = fields.number_in("centre_height", "m", 0.0, 0.0, 100.0);
     drive.start = fields.number_in("start", "m", 0.0, -1000.0, 1000.0);
+    drive.start_speed = fields.number_in("start_speed", "m/s", 0.0, -1000.0, 1000.0);
     const double duration = fields.number_in("duration", "s", 0.0, 3600.0);
     const double step = fields.number_in("step", "s", 1e-6, 1.0);
     const std::string law_name = fields.text("law", "coulomb");

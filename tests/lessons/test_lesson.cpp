@@ -13,6 +13,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/model_card.h"
 #include "physics/closed_forms.h"
+#include "physics/friction_laws.h"
 #include "physics/scenarios.h"
 #include "tests/assertions.h"
 #include "tests/lesson_scripts.h"
@@ -929,6 +930,18 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   EXPECT_NEAR(r(8), disk_on_incline(30 * degrees, 1, 0.1, 0.5 * 0.01, 0.1, 0.08, g).acceleration, 1e-12);
   EXPECT_NEAR(r(9), disk_starts_rolling(2, 1, 0.1, 0.5 * 0.01, 0.3, g).time, 1e-12);
   EXPECT_NEAR(r(10), stacked_blocks(1, 2, {0.3, 0.2, 0, 0}, {0.4, 0.3, 0, 0}, 30, g).top_acceleration, 1e-12);
+}
+
+// A theory of the stepped world reads the listener's own hold band (wedge's rocking test), not
+// a copy of it: the script's constant is the C++ one, exactly, and a script cannot change it
+// for the next lesson (each lesson gets a fresh Lua state).
+TEST(LessonRuntime, TheStickSlipHoldBandIsTheListenersOwn) {
+  ScriptFile script(with_heading(R"(
+probe { "band", function() return stick_slip_hold_band end }
+)"));
+  Lesson lesson(script.path());
+  lesson.step();
+  EXPECT_EQ(probe_now(lesson, "band"), stick_slip_hold_band);
 }
 
 // With no friction at all (mu_s = mu_k = 0) nothing can carry a block along a plank that is

@@ -243,6 +243,33 @@ TEST(WedgeModel, AnEventOnASampleInstantIsRecordedOnce) {
   }
 }
 
+// A block started moving (start_speed) on a level, still plank slides to rest under kinetic
+// friction alone: v0²/(2·μk·g) in v0/(μk·g), either way, and stays there; and with the turn's
+// terms on a plank that does not turn, the same. This is what the wedge lesson's ΔK row runs to
+// see what the world's start does.
+TEST(WedgeModel, ABlockStartedMovingSlidesToRestAsKineticFrictionSays) {
+  for (const bool rotation : {false, true}) {
+    for (const double v0 : {0.8, -0.5}) {
+      WedgeDrive drive{2.0, 0.0, 0.0, 0.0, 0.0, 0.4, 0.25};
+      drive.rotation = rotation;
+      drive.start_speed = v0;
+      const double g = drive.g;
+      const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 1.0, 1e-3);
+      EXPECT_EQ(run.samples.front().speed, v0);
+      EXPECT_EQ(run.samples.front().contact, WedgeContact::slip);
+      const double stop = std::abs(v0) / (0.25 * g);
+      ASSERT_FALSE(run.events.empty());
+      EXPECT_EQ(run.events.front().kind, WedgeEventKind::stop);
+      // Events are located to 1e-13 s; RK4 is exact on a constant deceleration.
+      EXPECT_NEAR(run.events.front().t, stop, 1e-12);
+      EXPECT_NEAR(run.samples.back().slide, v0 * std::abs(v0) / (2 * 0.25 * g), 1e-12);
+      EXPECT_EQ(run.samples.back().speed, 0.0);
+      // The books: all the kinetic energy it started with went to friction.
+      EXPECT_NEAR(run.samples.back().work_friction, -0.5 * 2.0 * v0 * v0, 1e-12);
+    }
+  }
+}
+
 // The article's friction opposes F: with no F at all (a level, still surface) there is none,
 // and the block stays put.
 TEST(WedgeModel, ArticleLawWithoutADrivingForceLeavesTheBlockAlone) {
