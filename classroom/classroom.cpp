@@ -132,7 +132,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = TransportBar::shape(transport_words(), display.x, s).height;
+  // The transport bar's words have their place from the lesson's opening (the run's end notice's).
+  const std::string transport_room = playback_->run_end_notice();
+  const float transport_height = TransportBar::shape(transport_room, display.x, s, fonts.small).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
   // It reads the lesson's one clock, whatever the lanes.
@@ -201,7 +203,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
            layout.world_size.x - 12.0f * s);
   transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
-                  transport_words(), s, window_.speed, controls_);
+                  transport_words(), transport_room, s, fonts.small, window_.speed, controls_);
   help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));
