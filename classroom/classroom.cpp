@@ -96,14 +96,12 @@ bool Classroom::shown(const std::string& control_name) const { return unlocked(l
 
 void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
 
-bool Classroom::run_played() const {
-  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
-  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
-}
-
 ParametersOnShow Classroom::parameters_on_show() const {
   const lessons::Lesson& lesson = playback_->lesson();
-  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+  // Whether the class's answers may have the panel's room is the same from the lesson's opening
+  // to the run's end and after R: the trial's Parameters panel folded as the run ended and its
+  // tabs jumped up under the teacher's pointer.
+  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty()};
 }
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
@@ -187,8 +185,6 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
-  // Opened by the teacher for one run's comparison: the next run folds it again.
-  if (!run_played()) parameters_.opened = false;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
                      [this] { return hidden_values().theory(); });
   ImGui::PushFont(fonts.body);
