@@ -96,14 +96,12 @@ bool Classroom::shown(const std::string& control_name) const { return unlocked(l
 
 void Classroom::remember(const std::string& name) { remember_item(controls_, name); }
 
-bool Classroom::run_played() const {
-  // The record reaches the run's end (scrubbing back within it keeps it so; a reset or a rebuild does not).
-  return playback_->recorded_until() + 0.5 * playback_->lesson().scene().frame_step() >= playback_->readings().duration;
-}
-
 ParametersOnShow Classroom::parameters_on_show() const {
   const lessons::Lesson& lesson = playback_->lesson();
-  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty() && run_played()};
+  // Whether the class's answers may have the panel's room is the same from the lesson's opening
+  // to the run's end and after R: the trial's Parameters panel folded as the run ended and its
+  // tabs jumped up under the teacher's pointer.
+  return {lesson, lock_, mystery_.mystery, hidden_values(), window_.predictions && !lesson.predictions().empty()};
 }
 
 std::optional<ImRect> Classroom::control(const std::string& name) const {
@@ -132,7 +130,9 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PushFont(fonts.body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
-  const float transport_height = TransportBar::shape(transport_words(), display.x, s).height;
+  // The transport bar's words have their place from the lesson's opening (the run's end notice's).
+  const std::string transport_room = playback_->run_end_notice();
+  const float transport_height = TransportBar::shape(transport_room, display.x, s, fonts.small).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
   // It reads the lesson's one clock, whatever the lanes.
@@ -185,8 +185,6 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), hidden_values(), controls_);
   };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_ = said;
-  // Opened by the teacher for one run's comparison: the next run folds it again.
-  if (!run_played()) parameters_.opened = false;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
                      [this] { return hidden_values().theory(); });
   ImGui::PushFont(fonts.body);
@@ -201,7 +199,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
            layout.world_size.x - 12.0f * s);
   transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
-                  transport_words(), s, window_.speed, controls_);
+                  transport_words(), transport_room, s, fonts.small, window_.speed, controls_);
   help_panel(window_.help, s, browser_, script_paths_, output_folder_);
   stability_.draw_window(playback_->lesson(), hidden_values(), theme(window_.theme), fonts);
   open_script_.draw(*this, s, theme(window_.theme));

@@ -186,7 +186,6 @@ class Classroom {
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
-  bool run_played() const;  // to the run's end, in the record
   ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name);  // the last item's place, under `name`
   void messages(ImVec2 corner, float width);

@@ -160,7 +160,11 @@ void ParametersPanel::forget() {
   sliding.reset();
 }
 
-bool ParametersPanel::may_fold_away(const ParametersOnShow& on_show) const { return on_show.comparing && !opened; }
+bool ParametersPanel::may_fold_away(const ParametersOnShow& on_show) const {
+  // A pair the teacher opened is wanted in sight: the panel does not fold away around it.
+  const bool pair_opened = std::any_of(pair_open.begin(), pair_open.end(), [](const auto& choice) { return choice.second; });
+  return on_show.answers_asked && !opened && !pair_opened;
+}
 
 std::size_t ParametersPanel::folded_away_step(const ParametersOnShow& on_show) const {
   return foldable_pairs(on_show, true).size() + foldable_pairs(on_show, false).size() + 1;
@@ -180,7 +184,7 @@ void ParametersPanel::draw_folded_away(ImVec2 corner, ImVec2 size, const Paramet
     ImGui::AlignTextToFramePadding();
     shown_text("Parameters");
     // Why, when the line holds it: the arrow and the heading say enough alone.
-    const char* why = on_show.lock.empty() ? "folded while comparing" : "chosen by the teacher, folded";
+    const char* why = on_show.lock.empty() ? "folded for the class's answers" : "chosen by the teacher, folded";
     ImGui::SameLine();
     if (ImGui::CalcTextSize(why).x <= ImGui::GetContentRegionAvail().x) {
       ImGui::TextDisabled("%s", why);

@@ -1,7 +1,7 @@
 // The Parameters panel: each parameter the class may change as a slider with a box for a typed
 // value and a reset, a friction pair's rows under a heading with its material presets. When the
 // column is short it gives way in steps (pairs two a row, then folded into their headings, then
-// the whole panel folded while the class compares its predictions with a run).
+// the whole panel folded, when the class's answers need its room, from the lesson's opening on).
 //
 // It keeps its own state (which pairs the teacher opened or folded, the slider held, the values
 // asked for and why one was refused) and draws itself, as each of Dear ImGui's demo windows
@@ -37,13 +37,15 @@ struct ParametersOnShow {
   const std::set<std::string>& lock;       // the controls the teacher chose; empty: all of them
   const std::optional<Mystery>& mystery;   // its pair has no slider, box, reset or presets
   HiddenValues hidden;                     // what the class must not see now
-  // The class's predictions can be set beside a whole run (it has been played to its end).
-  bool comparing = false;
+  // The class's predictions are asked: their answers may take the panel's room. The same from
+  // the lesson's opening to the run's end and after R, so that the panel never folds because a
+  // run ended (the trial's tabs jumped up under the teacher's pointer as it did).
+  bool answers_asked = false;
 };
 
 struct ParametersPanel {
   std::map<std::string, bool> pair_open;  // friction pairs the teacher opened (true) or folded (false)
-  bool opened = false;  // the teacher opened the panel folded for this run's comparison
+  bool opened = false;  // the teacher opened the panel folded for the class's answers, for this lesson
   std::optional<std::pair<std::string, double>> sliding;  // a slider that rebuilds on release
   // Values asked for during this frame: a slider's, a preset's, a reset's, a choice's as numbers
   // (never written out and read back), a typed one as its text.
@@ -73,9 +75,9 @@ struct ParametersPanel {
   // The pairs shown that the teacher has not folded (opened_too) or neither opened nor folded.
   std::vector<std::string> foldable_pairs(const ParametersOnShow& on_show, bool opened_too) const;
   std::vector<Row> rows_at(const ParametersOnShow& on_show, std::size_t step) const;
-  // Once the class's predictions can be set beside a whole run, nobody slides values while
-  // comparing: the whole panel may fold into a heading, the last step of giving way, which a
-  // click opens again for the rest of this run.
+  // While the class's predictions are asked, the whole panel may fold into a heading, the last
+  // step of giving way (taken when the answers fit beside no other), which a click opens again
+  // for the rest of the lesson.
   bool may_fold_away(const ParametersOnShow& on_show) const;
   std::size_t folded_away_step(const ParametersOnShow& on_show) const;  // the step that folds it, when it may
   void draw_folded_away(ImVec2 corner, ImVec2 size, const ParametersOnShow& on_show, ControlPlaces& controls);

@@ -4,13 +4,38 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "classroom/knob_slider.h"
 #include "draw/text_record.h"
 
 namespace frictionlab::ui {
 
-TransportBar::Shape TransportBar::shape(const std::string& said, float width, float scale) {
+namespace {
+
+// `text` whole when it fits in `room` px, else its start and its end with "…" between (a saved
+// file's name is at its end), cut at characters, never inside one's UTF-8 bytes.
+std::string fitted(const std::string& text, float room) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= room) return text;
+  std::vector<std::size_t> starts;  // each character's first byte
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) starts.push_back(i);
+  }
+  starts.push_back(text.size());
+  const std::size_t characters = starts.size() - 1;
+  // The most characters kept, a little more of the start than of the end.
+  for (std::size_t kept = characters; kept-- > 0;) {
+    const std::size_t tail = kept / 3, head = kept - tail;
+    const std::string shorter = text.substr(0, starts[head]) + "\u2026" + text.substr(starts[characters - tail]);
+    if (ImGui::CalcTextSize(shorter.c_str()).x <= room) return shorter;
+  }
+  return "\u2026";
+}
+
+}  // namespace
+
+TransportBar::Shape TransportBar::shape(const std::string& room_for, float width, float scale, ImFont* words_font) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float s = scale;
   Shape shape;
@@ -18,23 +43,29 @@ TransportBar::Shape TransportBar::shape(const std::string& said, float width, fl
   shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
   shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
   const float inside = width - 2.0f * style.WindowPadding.x;
-  const float said_width = said.empty() ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + style.ItemSpacing.x;
-  // The words beside the bar when they fit there, else on lines of their own under it.
-  shape.words_below = shape.controls + shape.bar + said_width > inside;
-  const float words = shape.words_below ? ImGui::CalcTextSize(said.c_str(), nullptr, false, inside).y + style.ItemSpacing.y : 0.0f;
+  // A line of the small font: the words are the bar's asides, and each pixel of height the bar
+  // takes is the world's and the column's, from the lesson's opening.
+  ImGui::PushFont(words_font);
+  const float words_width = room_for.empty() ? 0.0f : ImGui::CalcTextSize(room_for.c_str()).x + style.ItemSpacing.x;
+  const float line = ImGui::GetTextLineHeight();
+  ImGui::PopFont();
+  // The words beside the bar when the lesson's own fit there, else on a line of their own under it.
+  shape.words_below = shape.controls + shape.bar + words_width > inside;
+  const float words = shape.words_below ? line + style.ItemSpacing.y : 0.0f;
   shape.height = ImGui::GetFrameHeight() + words + 2.0f * style.WindowPadding.y + 2.0f * s;
   return shape;
 }
 
-void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said, float scale,
-                        double& speed_kept, ControlPlaces& controls) {
+void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said,
+                        const std::string& room_for, float scale, ImFont* words_font, double& speed_kept,
+                        ControlPlaces& controls) {
   const float s = scale;
   ImGui::SetNextWindowPos(corner);
   ImGui::SetNextWindowSize(size);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("###transport", nullptr, flags)) {
-    const Shape shape = TransportBar::shape(said, size.x, scale);
+    const Shape shape = TransportBar::shape(room_for, size.x, scale, words_font);
     const float button = 80.0f * s;
     const auto noted_button = [&](const char* label, const char* name) {
       const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
@@ -66,9 +97,15 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
     }
     ImGui::SameLine();
     const Scene& scene = playback.lesson().scene();
-      const float said_width =
-        said.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(said.c_str()).x + ImGui::GetStyle().ItemSpacing.x;
-    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - said_width));
+    // The words on their one line: beside the bar (which keeps its own words' width), or under it.
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    ImGui::PushFont(words_font);
+    const std::string words =
+        fitted(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
+                                       : ImGui::GetContentRegionAvail().x - shape.bar - spacing);
+    const float words_width = words.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(words.c_str()).x + spacing;
+    ImGui::PopFont();
+    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - words_width));
     double t = scrubbing_to ? *scrubbing_to : scene.time();
     const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
     char format[64];
@@ -92,12 +129,16 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
       std::snprintf(shown, sizeof shown, format, t);
       note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
-    if (!said.empty()) {
-      if (!shape.words_below) ImGui::SameLine();
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("%s", said.c_str());
-      ImGui::PopTextWrapPos();
-      note_text(said.c_str());
+    if (!words.empty()) {
+      if (!shape.words_below) {
+        ImGui::SameLine();
+        ImGui::AlignTextToFramePadding();
+      }
+      ImGui::PushFont(words_font);
+      ImGui::TextDisabled("%s", words.c_str());
+      note_text(words.c_str());
+      ImGui::PopFont();
+      if (words != said && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", said.c_str());
     }
   }
   ImGui::End();

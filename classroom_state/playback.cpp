@@ -200,7 +200,7 @@ void Playback::step_and_check() {
   if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
     run_over_ = true;
     pause();
-    notice_ = "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
+    notice_ = run_end_notice();
     notice_frame_ = frame();
   }
   // Played on, a pushed block leaves the floor's end and falls for ever, with plots running on
@@ -212,6 +212,10 @@ void Playback::step_and_check() {
               seconds_text(lesson_->scene().time()) + "). R starts again; Space plays on.";
     notice_frame_ = frame();
   }
+}
+
+std::string Playback::run_end_notice() const {
+  return "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
 }
 
 bool Playback::at_run_end() const {

@@ -102,6 +102,9 @@ class Playback {
   // A notice about a moment of the run (it is over, a body fell) is said only while the run is
   // at that moment: rewound from the end, "the run ends at 3.46 s" read as if it were still there.
   std::string notice() const { return notice_frame_ && *notice_frame_ != frame() ? std::string() : notice_; }
+  // The notice the run's end gives, known before the run gets there: the transport bar keeps its
+  // room from the lesson's opening, so that it does not grow (and push the frame) as the run ends.
+  std::string run_end_notice() const;
 
   // Recomputes the readings now (after a change while paused, say).
   void refresh_readings();

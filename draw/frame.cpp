@@ -349,14 +349,14 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   // does moves them: not R, not the run's end, not the reveal. The friction pairs' sliders give
   // way for them as far as that needs; the theory table, revealed under them, scrolls. (The
   // column was planned anew as the run ended and at the reveal: after R on tipping_box the
-  // Parameters panel unfolded and pushed the reveal button under the teacher's pointer.)
+  // Parameters panel unfolded and pushed the reveal button under the teacher's pointer.) The
+  // answers' height is the same all through the run; the theory table's is not (its rows fill in
+  // as the run measures them), so the plan leaves it out: a plan with it folded the sliders
+  // when the run ended.
   bool theory_scrolls = false;
   if (style.predictions_height) {
-    // The table under the answers has its room too where that folds no more sliders.
     const float answers = style.predictions_height(inside);
-    const ColumnPlan answers_plan = plan_column(lesson, style, display, answers, true);
-    const ColumnPlan with_table = plan_column(lesson, style, display, answers + table, true);
-    column_plan = with_table.parameters_step > answers_plan.parameters_step ? answers_plan : with_table;
+    column_plan = plan_column(lesson, style, display, answers, true);
     // The answers alone, before the reveal, have the room planned for them: no scroll bar to
     // take width from them.
     theory_scrolls = !style.theory_hidden || !column_plan.theory_whole;

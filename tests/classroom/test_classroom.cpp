@@ -950,6 +950,12 @@ TEST(Classroom, InProjectorModeAPairsSlidersGoTwoARowAndCtrlClickTypesAValue) {
   // With its table measured, spring_pull's column holds its four controls, the pair's heading
   // and the theory tab only with the pair's four coefficients two a row. Where the table's rows
   // leave no room for them the layout folds the pair; the teacher opens it, and it goes two a row.
+  // (With the class's predictions asked, the whole panel is folded for their answers from the
+  // lesson's opening: the teacher opens it first.)
+  if (driver.classroom().control("parameters open")) {
+    driver.click("parameters open");
+    driver.frame();
+  }
   if (!driver.classroom().control("mu_s slider")) {
     driver.click("aluminium on wood fold");
     driver.frame();
@@ -1611,11 +1617,13 @@ TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
   EXPECT_EQ(read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
 }
 
-// Once the run has been played the class compares its answers with it, and nobody slides values:
-// on a projector the Parameters panel folds into its heading to leave the answers their room
-// (stacked_blocks' second answer was a scroll away). A click on its arrow opens it for the rest
-// of the run; the next run, and the sliders before it, are as they were.
-TEST(Classroom, TheParametersFoldIntoAHeadingWhileTheClassComparesAndOpenOnAClick) {
+// Issue 31: the Parameters panel folded into its heading as the run ended (to leave the class's
+// answers their room) and unfolded at R, moving the tabs under the teacher's pointer. Whether it
+// folds is decided as the lesson opens, for the answers at their tallest, and kept through the
+// run, its end and R; a click on its arrow opens it for the rest of the lesson. stacked_blocks in
+// projector mode has no room for both: folded from the opening.
+TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAndOpenOnAClick) {
+  {
   Driver driver("stacked_blocks");
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
@@ -1623,34 +1631,36 @@ TEST(Classroom, TheParametersFoldIntoAHeadingWhileTheClassComparesAndOpenOnAClic
   ASSERT_TRUE(driver.classroom().theory_hidden());
   const auto folded = [&] { return driver.classroom().control("parameters open").has_value(); };
   const auto slider = [&] { return driver.classroom().control("pull_rate slider").has_value(); };
-  EXPECT_FALSE(folded()) << "before the run the class predicts and the teacher may set values";
-  EXPECT_TRUE(slider());
-  driver.playback().run_to(0.5 * driver.lesson().duration());
-  driver.frame();
-  EXPECT_FALSE(folded()) << "mid-run the run has not been seen yet";
+  EXPECT_TRUE(folded()) << "the answers need the room from the lesson's opening";
+  EXPECT_FALSE(slider());
   driver.playback().run_to(driver.lesson().duration());
   driver.frame();
   driver.frame();
-  EXPECT_TRUE(folded());
-  EXPECT_FALSE(slider());
+  EXPECT_TRUE(folded()) << "the same at the run's end";
   driver.click("parameters open");
   driver.frame();
   EXPECT_FALSE(folded()) << "opened by the teacher";
   EXPECT_TRUE(slider());
   EXPECT_TRUE(driver.classroom().theory_hidden()) << "opening the sliders reveals nothing";
-  // Back to t = 0 and played again: folded again for the new comparison.
+  // Back to t = 0 and played again: as the teacher left it.
   driver.key(Key::r);
   EXPECT_FALSE(folded());
-  EXPECT_TRUE(slider());
   driver.playback().run_to(driver.lesson().duration());
   driver.frame();
   driver.frame();
-  EXPECT_TRUE(folded());
-  // A teacher who takes no predictions compares nothing: the sliders stay.
-  driver.classroom().window_settings().predictions = false;
-  driver.frame();
-  EXPECT_FALSE(folded());
+  EXPECT_FALSE(folded()) << "the run's end folded the panel the teacher opened";
   EXPECT_TRUE(slider());
+  }
+  // A lesson with room for both keeps its sliders, at the opening and at the run's end alike.
+  Driver incline("incline");
+  incline.classroom().window_settings().projector = true;
+  incline.set_display(ImVec2(1920.0f, 1080.0f));
+  incline.frame();
+  EXPECT_FALSE(incline.classroom().control("parameters open").has_value());
+  incline.playback().run_to(incline.lesson().duration());
+  incline.frame();
+  incline.frame();
+  EXPECT_FALSE(incline.classroom().control("parameters open").has_value()) << "incline's sliders folded as the run ended";
 }
 
 // A teacher who takes no predictions has the theory from the start.

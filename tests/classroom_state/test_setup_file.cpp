@@ -434,9 +434,9 @@ namespace {
 
 // A prepared setup with a mystery and predictions to take opens on what the class predicts. In
 // projector mode the predictions share the column's tab bar with the Mystery tab: the Predict
-// tab is the one shown, also when another tab was chosen before; at 1280 × 720 too, since the
-// column is planned for the answers at their tallest (revealed), so that it does not move at the
-// reveal. With no predictions taken the Mystery tab comes forward.
+// tab is the one shown, also when another tab was chosen before. At 1280 × 720 the answers at
+// their tallest (revealed) have a panel of their own over the tabs, the Mystery tab shown under it.
+// With no predictions taken the Mystery tab comes forward.
 TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
   ClassroomHands teacher(prepared());
   // Not in a window's folder: each window below has that folder's name, and takes it away when it closes.
@@ -459,8 +459,9 @@ TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
   };
   for (const Screen& screen : {Screen{"projector 1920x1080", ImVec2(1920.0f, 1080.0f), true, false},
                                // The column is planned for the answers at their tallest (after the
-                               // reveal), which puts them in the first tab here too (issue 31).
-                               Screen{"1280x720", ImVec2(1280.0f, 720.0f), false, false}}) {
+                               // reveal), without the theory table under them (issue 31): here they
+                               // have a panel of their own, and the Mystery tab shows beneath it.
+                               Screen{"1280x720", ImVec2(1280.0f, 720.0f), false, true}}) {
     ClassroomOptions options;
     options.lesson = "incline";
     options.window.projector = screen.projector;

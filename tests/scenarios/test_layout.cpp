@@ -1489,11 +1489,12 @@ INSTANTIATE_TEST_SUITE_P(Screens, WindowTabsLayout, ::testing::ValuesIn(window_s
 // Issue 31: the layout moved under the teacher's pointer. At the run's end the Parameters panel
 // folded away for the comparison and R unfolded it, pushing "Reveal the theory" under the pointer
 // (the theory was revealed before the class answered); a click aimed at a tab landed on a
-// slider. In projector mode at 1920 × 1080, light and dark, with the class's predictions asked,
-// every panel, every tab's name and the reveal button keep their places as the run plays, at the
-// reveal (mid-run), when T hides the theory again, and at R. (Not yet at the run's end: its
-// notice takes a line under the transport bar from the frame, and a column too short for the
-// answers beside the sliders folds the Parameters panel away while the class compares.)
+// slider; the run's end notice wrapped to a second line under the transport bar and pushed the
+// frame up. In projector mode at 1920 × 1080, light and dark, with the class's predictions asked,
+// every panel, every tab's name and the reveal button keep their places from the lesson's
+// opening as the run plays, at its end, at the reveal (mid-run and at the end), when T hides the
+// theory again, and at R; with the stopwatch on from the opening too. A stopwatch turned on
+// mid-run moves the frame once (its strip takes a line over the title), and nothing after that.
 struct Placed {
   std::map<std::string, ImVec4> panels;  // each ImGui window drawn, by its id: x0, y0, x1, y1
   std::map<std::string, ImVec4> tabs;    // each tab's name in the column's tab bar
@@ -1559,36 +1560,145 @@ void expect_same_places(const Placed& before, const Placed& after, const std::st
   }
 }
 
-TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesAsTheRunPlaysAtTheRevealAndR) {
+TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEndTheRevealAndR) {
   const ImVec2 display(1920.0f, 1080.0f);
   HeadlessContext gl;
   ImGuiHost host(nullptr);
-  int tabs_seen = 0;
+  int tabs_seen = 0, notices_seen = 0;
+  // The stopwatch: off, on from the lesson's opening, turned on mid-run.
+  enum class Stopwatch { off, from_the_opening, mid_run };
   for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
     for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
-      ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
-      options.window.predictions = true;
-      options.window.theme = theme;
-      Classroom window(options);
-      const std::string lesson = std::string(name) + (theme == ThemeName::dark ? ", dark" : "");
-      const Placed opened = placed(gl, host, window, display);
-      ASSERT_TRUE(window.theory_hidden()) << lesson;
-      ASSERT_TRUE(opened.reveal.has_value()) << lesson << ": no reveal button";
-      tabs_seen += static_cast<int>(opened.tabs.size());
-      window.playback().run_to(0.5 * window.playback().lesson().duration());
-      expect_same_places(opened, placed(gl, host, window, display), lesson + ", mid-run");
-      window.key_pressed(Key::t, false);
-      expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed");
-      ASSERT_FALSE(window.theory_hidden()) << lesson;
-      // A reveal by mistake is undone with T.
-      window.key_pressed(Key::t, false);
-      expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T");
-      EXPECT_TRUE(window.theory_hidden()) << lesson << ": T again does not hide the theory";
-      window.key_pressed(Key::r, false);
-      expect_same_places(opened, placed(gl, host, window, display), lesson + ", after R");
+      for (const Stopwatch stopwatch : {Stopwatch::off, Stopwatch::from_the_opening, Stopwatch::mid_run}) {
+        ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
+        options.window.predictions = true;
+        options.window.theme = theme;
+        options.window.tools.stopwatch = stopwatch == Stopwatch::from_the_opening;
+        Classroom window(options);
+        const std::string lesson = std::string(name) + (theme == ThemeName::dark ? ", dark" : "") +
+                                   (stopwatch == Stopwatch::from_the_opening ? ", stopwatch on from the opening"
+                                    : stopwatch == Stopwatch::mid_run        ? ", stopwatch turned on mid-run"
+                                                                             : "");
+        const double duration = window.playback().lesson().duration();
+        Placed opened = placed(gl, host, window, display);
+        ASSERT_TRUE(window.theory_hidden()) << lesson;
+        ASSERT_TRUE(opened.reveal.has_value()) << lesson << ": no reveal button";
+        tabs_seen += static_cast<int>(opened.tabs.size());
+        window.playback().run_to(0.5 * duration);
+        if (stopwatch == Stopwatch::mid_run) {
+          // The teacher turns a tool on: the frame may move, once; from then on nothing may.
+          window.key_pressed(Key::w, false);
+          opened = placed(gl, host, window, display);
+          ASSERT_TRUE(window.window_settings().tools.stopwatch) << lesson;
+        }
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", mid-run");
+        window.key_pressed(Key::t, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed mid-run");
+        ASSERT_FALSE(window.theory_hidden()) << lesson;
+        // A reveal by mistake is undone with T.
+        window.key_pressed(Key::t, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T");
+        EXPECT_TRUE(window.theory_hidden()) << lesson << ": T again does not hide the theory";
+        // Played to its end: the run's notice is said, and nothing moves for it.
+        window.playback().run_to(duration);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the run's end");
+        if (window.transport_words().find("run ends at") != std::string::npos) ++notices_seen;
+        window.key_pressed(Key::t, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed at the run's end");
+        ASSERT_FALSE(window.theory_hidden()) << lesson;
+        window.key_pressed(Key::t, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T at the run's end");
+        window.key_pressed(Key::r, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", after R");
+        window.playback().run_to(duration);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the end of the run after R");
+      }
     }
   }
   EXPECT_GT(tabs_seen, 0) << "no tab's name was found: the test checks no tab";
+  EXPECT_EQ(notices_seen, 4 * 2 * 3) << "the run's end notice was not said: the test checks no notice";
+}
+
+// Issue 31: at 1920 × 1080 in projector mode, with the class's predictions asked and the stopwatch
+// off and on: as the lesson opens, every question, the class's answer in its box and what was
+// measured; at the run's end with the theory revealed (the column's tallest state), each
+// prediction's row (its name, the class's answer and how close it came). Each whole and none a
+// scroll away, and every slider the Parameters panel shows whole on the screen in a panel that
+// does not scroll. (With the stopwatch on, tipping_box's and stacked_blocks' second question was a
+// scroll away at the opening.) Where the sliders and the answers cannot both have their room the
+// panel folds into its heading from the lesson's opening (StableLayout), never as the run ends.
+TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndRevealedAtTheRunsEndWithAndWithoutTheStopwatch) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int lessons_checked = 0, sliders_checked = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    for (const bool stopwatch : {false, true}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), window_screens[2]);
+      options.window.predictions = true;
+      options.window.tools.stopwatch = stopwatch;
+      Classroom window(options);
+      const std::vector<lessons::Prediction> predictions = window.playback().lesson().predictions();
+      if (predictions.empty()) break;
+      ++lessons_checked;
+      for (const lessons::Prediction& prediction : predictions) {
+        window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
+      }
+      for (const bool at_the_end : {false, true}) {
+        if (at_the_end) {
+          window.playback().run_to(window.playback().lesson().duration());
+          window.key_pressed(Key::t, false);
+        }
+        const std::string where = entry.name + (at_the_end ? " revealed at the run's end" : " as it opens") +
+                                  (stopwatch ? ", stopwatch on" : "");
+        FrameRecord record;
+        for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+        ASSERT_EQ(window.theory_hidden(), !at_the_end) << where;
+        const ImGuiWindow* parameters = ImGui::FindWindowByName("###parameters");
+        ASSERT_TRUE(parameters != nullptr && parameters->WasActive) << where;
+        EXPECT_EQ(parameters->ScrollMax.y, 0.0f) << where << ": the Parameters panel scrolls";
+        const ImRect panel(parameters->Pos, ImVec2(parameters->Pos.x + parameters->Size.x, parameters->Pos.y + parameters->Size.y));
+        for (const lessons::Parameter& parameter : window.playback().lesson().parameters()) {
+          const std::optional<ImRect> slider = window.control(parameter.name + " slider");
+          if (!slider) continue;  // in a folded pair's heading, or the panel folded
+          ++sliders_checked;
+          EXPECT_TRUE(panel.Contains(*slider) && ImRect(ImVec2(0.0f, 0.0f), display).Contains(*slider))
+              << where << ": " << parameter.name << "'s slider at (" << slider->Min.y << "–" << slider->Max.y
+              << ") is not whole in its panel (" << panel.Min.y << "–" << panel.Max.y << ")";
+        }
+        const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
+        std::size_t next = 0;
+        for (const lessons::Prediction& prediction : predictions) {
+          const std::string answer = window.predictions().answers[prediction.expectation];
+          std::vector<std::pair<std::string, bool>> wanted;  // the text, whether it is a prefix
+          if (!at_the_end) {
+            wanted = {{prediction.question, false}, {answer, false}, {"measured: ", true}};
+          } else {
+            const auto row = std::find_if(rows.begin(), rows.end(),
+                                          [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
+            ASSERT_NE(row, rows.end()) << where << ": no row " << prediction.expectation;
+            wanted = {{prediction.expectation, false},
+                      {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
+                      {closeness(prediction, answer, *row).words, false}};
+          }
+          for (const auto& [text, prefix] : wanted) {
+            const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
+            if (!found) {
+              ADD_FAILURE() << where << ": \"" << text << "\" is not drawn";
+              continue;
+            }
+            next = *found + 1;
+            const ShownText& shown = record.texts[*found];
+            EXPECT_TRUE(shown.whole() && shown.needed.w <= display.y)
+                << where << ": \"" << text << "\" needs " << text_of(shown.needed) << " but only " << text_of(shown.visible)
+                << " shows: a scroll away";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(lessons_checked, 8) << "too few lessons with predictions were checked";
+  EXPECT_GT(sliders_checked, 0) << "no slider was checked";
 }
 
 // Issue 31: in projector mode the lesson's key plot (its first) was small: tipping_box's second
@@ -1626,3 +1736,4 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
 
 }  // namespace
 }  // namespace frictionlab::ui
+
