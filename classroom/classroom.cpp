@@ -144,6 +144,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height + stopwatch_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
+  hand_.large_plots = window_.projector;
   hand_.hold_view(*playback_, origin, area, s);
 
   FrameStyle style;
@@ -194,7 +195,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
 
   ImGui::PushFont(fonts.body);
   hand_.handle_mouse(*playback_, origin, area, s, status_);
-  const FrameLayout layout = FrameLayout::of(area, s, origin);
+  const FrameLayout layout = FrameLayout::of(area, s, origin, window_.projector);
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
            layout.world_size.x - 12.0f * s);

@@ -272,8 +272,15 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
 
   const float line = text + 3.0f * s;
   if (chart.plain) {
+    if (chart.steady) label_width = std::max(label_width, width_of(font, chart.tick_room));
     layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
     layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
+    if (chart.steady) {
+      // The y label heads the legend's column and the x label ends the x ticks' line: the data
+      // has the two lines of text they took (a plot on a page of its own, made tall).
+      layout.low_left.y = corner.y + size.y - text - 5.0f * s;
+      layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
+    }
   } else {
     // The legend goes under the chart, in two columns, so it hides none of it.
     const std::size_t rows = chart.legend == Chart::Legend::under ? (keys.size() + 1) / 2 : 0;
@@ -329,7 +336,38 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   };
   place();
 
-  if (!chart.plain && chart.legend != Chart::Legend::inside) {
+  if (chart.plain && chart.steady && chart.legend == Chart::Legend::inside) {
+    // A column beside the data as wide as the widest key that may ever be in it, a key a line
+    // from the data's top: nothing the run or the reveal adds moves the data.
+    float widest = width_of(font, chart.y_label) - 22.0f * s;
+    for (const Key& key : keys) widest = std::max(widest, width_of(font, key.name));
+    for (const std::string& name : chart.legend_room) widest = std::max(widest, width_of(font, name));
+    if (widest > 0.0f) {
+      // At most 40 % of the width: longer keys (pulley's laws written out) wrap in it.
+      const float data_width = layout.high_right.x - layout.low_left.x;
+      const float column = std::min(widest + 22.0f * s + 10.0f * s, 0.4f * data_width);
+      layout.legend_wrap = column - 32.0f * s;
+      const float first_key = layout.high_right.y + (chart.y_label.empty() ? 0.0f : text + 6.0f * s);
+      layout.high_right.x -= column;
+      float y = first_key;
+      for (const Key& key : keys) {
+        layout.legend_at.push_back(ImVec2(layout.high_right.x + 10.0f * s, y));
+        y += font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, key.name.c_str()).y + 2.0f * s;
+      }
+      layout.legend_outside = true;
+      layout.y_label_at = ImVec2(layout.high_right.x + 10.0f * s, layout.high_right.y);
+      set_x_ticks(data_width - column);
+      place();
+      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
+      for (std::size_t i = 0; i < keys.size(); ++i) {
+        const ImVec2 at = layout.legend_at[i];
+        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+        const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
+        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + wrapped.x + 22.0f * s),
+                                   std::max(layout.legend_max.y, at.y + wrapped.y));
+      }
+    }
+  } else if (!chart.plain && chart.legend != Chart::Legend::inside) {
     const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
     layout.legend_min = ImVec2(corner.x + 12.0f * s, layout.low_left.y + 2.0f * text + 14.0f * s);
     layout.legend_max = ImVec2(corner.x + size.x - 12.0f * s, layout.legend_min.y + line * static_cast<float>((shown + 1) / 2));
@@ -449,14 +487,27 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       }
     }
   }
-  // Fewer y ticks where the data area is short for its text (large text in a small plot): the
-  // labels at least a line and a third apart, so none is printed on another.
   const float data_height = layout.low_left.y - layout.high_right.y;
   const auto spacing = [&](const std::vector<double>& ticks) {
     return ticks.size() < 2 ? INFINITY
                             : static_cast<float>((0.5 * ticks[1] - 0.5 * ticks[0]) / (0.5 * layout.y_high - 0.5 * layout.y_low)) *
                                   data_height;
   };
+  // The finest round step whose ticks keep the spacing asked for: a tall plot's levels read off
+  // its axis (1 N apart where 2 or 5 N were, at push's defaults on a projector).
+  if (chart.y_tick_spacing > 0.0f && !axes.y.log) {
+    for (int count = 2; count <= 40; ++count) {
+      const std::vector<Tick> finer = ticks_every(axes.y, count);
+      std::vector<double> values;
+      for (const Tick& tick : finer) values.push_back(tick.value);
+      if (values.size() >= 2 && spacing(values) < chart.y_tick_spacing * s) break;
+      layout.y_ticks = values;
+      layout.y_tick_labels.clear();
+      for (const Tick& tick : finer) layout.y_tick_labels.push_back(tick.label);
+    }
+  }
+  // Fewer y ticks where the data area is short for its text (large text in a small plot): the
+  // labels at least a line and a third apart, so none is printed on another.
   if (!axes.y.log && spacing(layout.y_ticks) < 1.35f * text) {
     for (int count = chart.y_tick_count - 1; count >= 1; --count) {
       const std::vector<Tick> fewer = ticks_every(axes.y, count);
@@ -494,6 +545,38 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       layout.y_ticks = {layout.y_low, layout.y_high};
       layout.y_tick_labels = {tick_text(layout.y_low, 0.1 * span), tick_text(layout.y_high, 0.1 * span)};
     }
+  }
+  // Each level's text at the data's right end, above its line, or under it when the line is
+  // near the top; none for a level off the axis.
+  for (std::size_t i = 0; i < chart.levels.size(); ++i) {
+    const ChartLevel& level = chart.levels[i];
+    if (!axes.y.shows(level.y)) continue;
+    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
+    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
+    const float w = width_of(font, level.text);
+    // At either end of the line, above it or under it: where it covers the fewest points and
+    // the fewest texts placed before it (the first of equals: right, above), in the data area.
+    ImVec4 best;
+    std::size_t fewest = static_cast<std::size_t>(-1);
+    for (const float left : {layout.high_right.x - w - 4.0f * s, layout.low_left.x + 4.0f * s}) {
+      for (const float top : {y - text - 2.0f * s, y + 2.0f * s}) {
+        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        const ImVec4 box(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f);
+        std::size_t met = 0;
+        for (const ImVec2& p : layout.points) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
+        for (const auto& curve : layout.theory) {
+          for (const auto& piece : curve) {
+            for (const ImVec2& p : piece) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
+          }
+        }
+        for (const ChartLayout::Level& other : layout.levels) {
+          met += 1000 * (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y);
+        }
+        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
+      }
+    }
+    if (fewest == static_cast<std::size_t>(-1)) continue;  // a data area shorter than a line
+    layout.levels.push_back({i, level.text, best, y});
   }
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
@@ -610,6 +693,14 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     const float x = layout.to_screen(chart.now_x, 1.0).x;
     draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), chart.now_colour, 1.5f * s);
   }
+  // The levels over the series: the values the class reads off the plot.
+  for (const ChartLayout::Level& placed : layout.levels) {
+    const ChartLevel& level = chart.levels[placed.index];
+    draw_dashed(draw, {ImVec2(low_left.x, placed.y), ImVec2(high_right.x, placed.y)}, level.colour, 1.5f * s, 9.0f * s, 5.0f * s);
+    draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * s, placed.at.w + 1.0f),
+                        (theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
+    draw->AddText(font, text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, theme.panel), level.text.c_str());
+  }
   if (!chart.message.empty()) {
     draw->AddText(font, text, ImVec2(low_left.x + 4.0f * s, high_right.y + 4.0f * s), theme.bad, chart.message.c_str(), nullptr,
                   width - 8.0f * s);
@@ -619,9 +710,12 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
   // Axes, tick labels and titles.
   draw->AddRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), theme.axis, 0.0f, 0, 1.0f);
   const float gap = (chart.plain ? 5.0f : 4.0f) * s;
+  // A steady chart's x label at the right end of the ticks' line, the ticks it would cover left out.
+  const float x_label_left = high_right.x - width_of(font, chart.x_label);
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
     const float x = at_axis_value(layout.x_ticks[i], layout.y_low).x;
     const std::string& label = layout.x_tick_labels[i];
+    if (chart.steady && !chart.x_label.empty() && x + 0.5f * width_of(font, label) + 8.0f * s > x_label_left) continue;
     draw->AddText(font, text, ImVec2(x - 0.5f * width_of(font, label), low_left.y + 3.0f * s), theme.text, label.c_str());
   }
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
@@ -629,11 +723,13 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     const std::string& label = layout.y_tick_labels[i];
     draw->AddText(font, text, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text, label.c_str());
   }
-  draw->AddText(font, text,
-                ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)), low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s),
-                chart.plain ? theme.faint_text : theme.text, chart.x_label.c_str());
-  const ImVec2 y_label_at = chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
-                                        : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
+  const ImVec2 x_label_at = chart.steady ? ImVec2(x_label_left, low_left.y + 3.0f * s)
+                                         : ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)),
+                                                  low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
+  draw->AddText(font, text, x_label_at, chart.plain ? theme.faint_text : theme.text, chart.x_label.c_str());
+  const ImVec2 y_label_at = chart.steady && std::isfinite(layout.y_label_at.x) ? layout.y_label_at
+                            : chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
+                                          : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
   draw->AddText(font, text, y_label_at, theme.faint_text, chart.y_label.c_str());
 
   if (chart.legend == Chart::Legend::under || (chart.legend == Chart::Legend::none && !chart.plain)) {
@@ -654,8 +750,9 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     for (std::size_t i = 0; i < keys.size() && i < layout.legend_at.size(); ++i) {
       const Key& key = keys[i];
       const ImVec2 at = layout.legend_at[i];
-      const float w = width_of(font, key.name);
-      draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + 22.0f * s + w + 2, at.y + text + 1),
+      const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, key.name.c_str());
+      const float w = wrapped.x;
+      draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + 22.0f * s + w + 2, at.y + wrapped.y + 1),
                           (theme.panel & 0x00FFFFFFu) | (200u << IM_COL32_A_SHIFT));
       const float middle = at.y + 0.5f * text;
       if (key.look == Key::Look::band) {
@@ -665,7 +762,7 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
       } else {
         draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle), key.colour, 3.0f * s);
       }
-      draw->AddText(font, text, ImVec2(at.x + 20.0f * s, at.y), theme.text, key.name.c_str());
+      draw->AddText(font, text, ImVec2(at.x + 20.0f * s, at.y), theme.text, key.name.c_str(), nullptr, layout.legend_wrap);
     }
   }
   return layout;

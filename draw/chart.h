@@ -57,6 +57,13 @@ struct ChartCurve {
 // one of their own.
 void give_theory_look(ChartCurve& curve, const Theme& theme, std::size_t index);
 
+// A level marked across the data area: a dashed line at y with its text beside it (μs·N = 3.92 N).
+struct ChartLevel {
+  std::string text;
+  double y = 0.0;
+  ImU32 colour = 0;
+};
+
 struct Chart {
   std::string title, x_label, y_label;
   bool log_x = false, log_y = false;
@@ -97,6 +104,20 @@ struct Chart {
   std::vector<ChartCurve> theory;
   int active_theory = -1;
   std::string message;  // drawn in the data area in the theme's `bad` colour (a script error)
+  // Levels across the data, drawn over the series (their values count for a y range that is
+  // not fixed).
+  std::vector<ChartLevel> levels;
+  // The data area the same whatever the data and whatever the legend holds (a plot on a page of
+  // its own, read from the back of a room): the inside legend goes in a column beside the data,
+  // as wide as the longest of its keys and of `legend_room` (names that may join it, such as
+  // theory curves not shown yet), and the y tick labels have room for `tick_room` whatever
+  // their values. Plain charts only.
+  bool steady = false;
+  std::vector<std::string> legend_room;
+  std::string tick_room = "\u22128888.88";
+  // The y ticks at least this many points of text scale 1 apart (0: as y_tick_count says):
+  // as many as the data area's height holds.
+  float y_tick_spacing = 0.0f;
 };
 
 // Where a chart's parts go on the screen, worked out before anything is drawn (and by tests).
@@ -118,6 +139,16 @@ struct ChartLayout {
   // the corner it covers least of.
   bool legend_on_data = false;
   bool drawable = false;        // room enough for a data area
+  ImVec2 y_label_at{NAN, NAN};  // a steady chart's y label, over its legend beside the data
+  float legend_wrap = 0.0f;     // a steady chart's keys wrap at this width (0: they do not)
+  // Each level's text, where it was written (x0, y0, x1, y1), and its line's y on the screen.
+  struct Level {
+    std::size_t index;  // in the chart's levels
+    std::string text;
+    ImVec4 at;
+    float y;
+  };
+  std::vector<Level> levels;
 
   ImVec2 to_screen(double x, double y) const;  // the chart's own numbers to screen points
 };

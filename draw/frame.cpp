@@ -16,7 +16,7 @@
 
 namespace frictionlab::ui {
 
-FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool large_plots) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   const float title_height = 70.0f * scale;
@@ -31,7 +31,11 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
   layout.world_corner = ImVec2(0.0f, title_height + gap);
   // The legend has a strip of its own under the world, so nothing in the world hides it.
   const float legend_height = 50.0f * scale;
-  layout.world_size = ImVec2(left_width, 0.57f * below - legend_height);
+  // With large plots (one a page) the world keeps 55 % of what is below the title: what its
+  // force labels, free-body inset and lanes need at projector text (less, and ForceLabels and
+  // the lanes' tools tests find labels pushed off their arrows); the plot's row has the rest,
+  // its key plot's data 225 px of a 1080-line projector (the chart's overheads shrink too).
+  layout.world_size = ImVec2(left_width, (large_plots ? 0.55f : 0.57f) * below - legend_height);
   layout.legend_corner = ImVec2(0.0f, layout.world_corner.y + layout.world_size.y);
   layout.legend_size = ImVec2(left_width, legend_height);
   // The free-body diagram takes at most a third of the world's width and 70 % of its height, so
@@ -51,8 +55,8 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
 }
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
-                                  float scale, ImVec2 origin, const ViewAdjust& adjust) {
-  const FrameLayout layout = FrameLayout::of(display, scale, origin);
+                                  float scale, ImVec2 origin, const ViewAdjust& adjust, bool large_plots) {
+  const FrameLayout layout = FrameLayout::of(display, scale, origin, large_plots);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
@@ -62,8 +66,9 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
   return world_cameras(lesson, framing, display, scale, origin).front();
 }
 
-float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale) {
-  const FrameLayout layout = FrameLayout::of(display, scale);
+float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                  bool large_plots) {
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), large_plots);
   // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
   // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
@@ -316,8 +321,16 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
         style.extra_plot(ImGui::GetCursorScreenPos(), area);
       } else {
         const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
-                                            area, colours, fonts, !style.theory_kept_back(), style.script_words);
-        if (style.record != nullptr) style.record->plots.push_back({i, drawn});
+                                            area, colours, fonts, !style.theory_kept_back(), style.script_words,
+                                            style.plots_one_a_page);
+        if (style.record != nullptr) {
+          style.record->plots.push_back({i, drawn});
+          // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
+          const ImVec4 data(drawn.low_left.x, drawn.high_right.y, drawn.high_right.x, drawn.low_left.y);
+          for (const ChartLayout::Level& level : drawn.levels) {
+            style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, data});
+          }
+        }
       }
     }
     end_panel();
@@ -361,7 +374,7 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     // take width from them.
     theory_scrolls = !style.theory_hidden || !column_plan.theory_whole;
   }
-  const FrameLayout layout = FrameLayout::of(display, s, style.origin);
+  const FrameLayout layout = FrameLayout::of(display, s, style.origin, style.plots_one_a_page);
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts);
 
@@ -370,8 +383,8 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   if (begin_panel("world", "", layout.world_corner, world_and_legend)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const std::vector<Camera> cameras =
-        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust);
-    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s);
+        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.plots_one_a_page);
+    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.plots_one_a_page);
     // With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
     std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
     for (const auto& [name, body] : lesson.scene().bodies()) {

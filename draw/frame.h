@@ -30,7 +30,9 @@ struct FrameLayout {
   ImVec2 column_corner, column_size;
   // The frame fills `size` from `origin` (the window keeps a menu bar above it and its
   // transport controls below).
-  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f));
+  // `large_plots` (the window's projector mode, its plots a page at a time): the plots' row
+  // takes more of the left side, so that the key plot's levels read from the back of a room.
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool large_plots = false);
 };
 
 // Where the frame put things in the world view, for tests of its layout: per lane, the
@@ -121,10 +123,12 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
 // The world view's cameras (one per lane) and arrow scale for this frame, as build_frame draws
 // them: the window finds bodies under the mouse with them, tests find the arrows.
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
-                                  float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {});
+                                  float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {},
+                                  bool large_plots = false);
 // The first (or only) of them.
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                     ImVec2 origin = ImVec2(0.0f, 0.0f));
-float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale);
+float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                  bool large_plots = false);
 
 }  // namespace frictionlab::ui

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "draw/overlays.h"
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
@@ -67,7 +68,7 @@ constexpr int theory_sample_count = 256;
 }  // namespace
 
 Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
-                 bool with_theory) {
+                 bool with_theory, bool steady) {
   const lessons::Plot& plot = lesson.plots().at(plot_index);
   const Scene& scene = lesson.scene();
   const bool over_time = plot.kind == lessons::PlotKind::time;
@@ -173,6 +174,31 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
       chart.message = error.what();  // the lesson itself runs on
     }
   }
+  // The levels, labelled with their values in the y probe's unit; theirs count for the y axis too.
+  if (with_theory && !plot.levels.empty() && chart.message.empty()) {
+    try {
+      const std::vector<double> values = lesson.plot_levels(plot_index);
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        if (!std::isfinite(values[k])) continue;  // nil: no such level now
+        std::string value = format_quantity(values[k], y_unit.c_str());
+        if (y_unit.empty()) value.pop_back();  // the space before a unit there is not
+        chart.levels.push_back({plot.levels[k].label + " = " + value, values[k],
+                                theme.theory[k % 2]});
+        theory_values.push_back(values[k]);
+      }
+    } catch (const lessons::ScriptError& error) {
+      chart.theory.clear();
+      chart.levels.clear();
+      theory_values.clear();
+      chart.message = error.what();
+    }
+  }
+  if (steady) {
+    chart.steady = true;
+    // Room beside the data for the theory's keys from the start, before the reveal shows them.
+    for (const lessons::TheoryCurve& curve : plot.theory) chart.legend_room.push_back(curve.label);
+    chart.y_tick_spacing = 22.0f;
+  }
   Range y_range = range_of(ys, count, true);
   if (!theory_values.empty()) {
     const Range theory_range = range_of({&theory_values}, theory_values.size(), true);
@@ -184,14 +210,14 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
 }
 
 ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
-                        const Fonts& fonts) {
-  return layout_chart(plot_chart(lesson, plot, time_span, theme(ThemeName::light)), corner, size, fonts);
+                        const Fonts& fonts, bool with_theory, bool steady) {
+  return layout_chart(plot_chart(lesson, plot, time_span, theme(ThemeName::light), with_theory, steady), corner, size, fonts);
 }
 
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
                       ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory,
-                      const std::function<std::string(const std::string&)>& script_words) {
-  Chart chart = plot_chart(lesson, plot, time_span, theme, with_theory);
+                      const std::function<std::string(const std::string&)>& script_words, bool steady) {
+  Chart chart = plot_chart(lesson, plot, time_span, theme, with_theory, steady);
   if (script_words && !chart.message.empty()) chart.message = script_words(chart.message);
   return draw_chart(draw, corner, size, chart, theme, fonts);
 }

@@ -22,16 +22,19 @@ namespace frictionlab::ui {
 // `time_span` is the time axis' length (the lesson's duration, or longer once the lesson has
 // run past it). Without `with_theory` the probes alone: the class has not seen the theory yet,
 // or a mystery's values would be read off the curves.
+// The plot's levels (levels = { ... }) are theory too: drawn with the curves, "label = value".
+// `steady`: a plot on a page of its own (projector mode), its data area kept the same whatever
+// the run and the reveal add, its y ticks as fine as its height reads.
 Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme,
-                 bool with_theory = true);
+                 bool with_theory = true, bool steady = false);
 
 // Where plot number `plot` of the lesson goes in the rectangle, for tests and the drawing.
 ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
-                        const Fonts& fonts);
+                        const Fonts& fonts, bool with_theory = true, bool steady = false);
 
 // Draws plot number `plot` of the lesson into the rectangle; where its parts went.
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
                       ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true,
-                      const std::function<std::string(const std::string&)>& script_words = {});
+                      const std::function<std::string(const std::string&)>& script_words = {}, bool steady = false);
 
 }  // namespace frictionlab::ui

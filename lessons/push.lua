@@ -43,7 +43,6 @@ probe { "friction_force", unit = "N", read = { touch, "fx" } }  -- negative: it 
 probe { "speed", unit = "m/s", read = { block, "vx" } }
 probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides
 
-plot { "Push and friction", kind = "time", y = { "push", "friction_force" } }
 -- Friction against the push, over the Coulomb law as the spring article stacks it: stuck,
 -- friction answers the push, f = −F, while F ≤ mu_s·N; sliding, it is −mu_k·N. The branch that
 -- applies now (the contact's state) is drawn bold. The push is the lesson's alone: while the
@@ -56,7 +55,15 @@ plot { "Friction against the lesson's push", kind = "xy", x = "push", y = { "fri
       active = function() return touch.slipping ~= 1 end },
     { "sliding: f = −μk·N", function(F) if F >= param.mu_k * N then return -param.mu_k * N end end,
       active = function() return touch.slipping == 1 end },
+  },
+  -- The two levels the class reads off the plot: the most static friction can answer, and what
+  -- it drops to once the block slides (negative, as friction is here: it pushes back).
+  levels = {
+    { "−μs·N", function() return -param.mu_s * N end },
+    { "−μk·N", function() return -param.mu_k * N end },
   } }
+-- The run over time, after the key plot above (the first page in projector mode).
+plot { "Push and friction", kind = "time", y = { "push", "friction_force" } }
 
 -- Reading the record ----------------------------------------------------------------------
 -- The block broke away in the first step that ends with the contact slipping; the push that

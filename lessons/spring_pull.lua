@@ -75,6 +75,12 @@ plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "fric
       active = function() return touch.slipping ~= 1 end },
     { "sliding: f = −μk·N", function(F) return -param.mu_k * N end,
       active = function() return touch.slipping == 1 end },
+  },
+  -- Where friction gives way as the spring pulls forward, and where it sits while sliding
+  -- (negative: it pulls the block back).
+  levels = {
+    { "−μs·N", function() return -param.mu_s * N end },
+    { "−μk·N", function() return -param.mu_k * N end },
   } }
 
 -- Reading the record ----------------------------------------------------------------------

@@ -55,12 +55,14 @@ struct RememberedValues {
 struct PlotFunctions {
   std::vector<int> curves;  // function(x) per curve
   std::vector<int> active;  // active = function() per curve, LUA_NOREF when not given
+  std::vector<int> levels;  // function() per level
   TheorySamples samples;
   int sample_count = 0;
   std::vector<double> sampled_with;  // the parameters' values when sampled
-  // The script error the last sampling, and the last asking which curve is active, raised
+  // The script error the last sampling, the last asking which curve is active, and the last
+  // reading of the levels raised
   // (a slider gave the curve's function a value it fails on); "" when they ran.
-  std::string samples_error, active_error;
+  std::string samples_error, active_error, levels_error;
 };
 
 struct LessonBuild {

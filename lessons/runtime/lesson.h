@@ -65,6 +65,14 @@ struct TheoryCurve {
   bool says_when_active = false;  // it has an active = function() ... end
 };
 
+// A level a plot marks across its data (a dashed line, labelled with its value): μs·N, the
+// most static friction can answer, and μk·N, what it drops to once the block slides. Theory,
+// shown with the theory curves. Its function takes no argument and gives y, or nil for none now.
+struct PlotLevel {
+  std::string label;
+  std::string declared_at;  // "path:line" of the function
+};
+
 struct Plot {
   std::string title;
   std::string declared_at;
@@ -76,6 +84,7 @@ struct Plot {
   std::vector<std::string> xs;
   const std::string& x_of(std::size_t k) const { return xs.empty() ? x : xs[k]; }
   std::vector<TheoryCurve> theory;
+  std::vector<PlotLevel> levels;
   // A time plot shades the stretches when a contact was slipping: any contact, or (shade =
   // "probe") the steps where that probe, a contact's "slipping" say, reads other than 0.
   std::string shade;
@@ -243,6 +252,9 @@ class Lesson {
   // For each curve of the plot: whether its active = function() says it applies now; -1 when
   // the curve does not say (the plot then takes the branch nearest the latest point).
   std::vector<int> theory_active(std::size_t plot);
+  // Each of the plot's levels at the parameters' values now: a number, or NaN where its
+  // function gave nil. A script error throws ScriptError placed at the level's function.
+  std::vector<double> plot_levels(std::size_t plot);
   // The script error a plot's theory curve raised the last time it was sampled or asked
   // whether it is active (the chart shows it in place of the curves); "" when none did.
   std::string theory_error() const;

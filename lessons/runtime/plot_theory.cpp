@@ -172,11 +172,67 @@ int ask_active(lua_State* state) {
   return 0;
 }
 
+struct LevelsJob {
+  std::size_t plot = 0;
+  std::vector<double>* out = nullptr;
+};
+
+int read_levels(lua_State* state) {
+  const auto* job = static_cast<const LevelsJob*>(lua_touserdata(state, 1));
+  LessonBuild& build = build_of(state);
+  const PlotFunctions& functions = build.plot_functions[job->plot];
+  job->out->assign(functions.levels.size(), NAN);
+  for (std::size_t level = 0; level < functions.levels.size(); ++level) {
+    lua_rawgeti(state, LUA_REGISTRYINDEX, functions.levels[level]);
+    lua_call(state, 0, 1);
+    const bool number = lua_type(state, -1) == LUA_TNUMBER && std::isfinite(lua_tonumber(state, -1));
+    if (!number && !lua_isnil(state, -1)) {
+      const Plot& declared = build.plots[job->plot];
+      const std::string message = declared.levels[level].declared_at + ": plot '" + declared.title + "': level '" +
+                                  declared.levels[level].label + "' gave " +
+                                  (lua_type(state, -1) == LUA_TNUMBER ? "a number that is not finite" : describe(state, -1)) +
+                                  "; it must give y (a number) or nil when there is no such level now";
+      lua_pushstring(state, message.c_str());
+      lua_error(state);
+    }
+    if (number) (*job->out)[level] = lua_tonumber(state, -1);
+    lua_pop(state, 1);
+  }
+  return 0;
+}
+
 }  // namespace
+
+std::vector<double> Lesson::plot_levels(std::size_t plot) {
+  LessonBuild& build = *current_;
+  PlotFunctions& functions = build.plot_functions.at(plot);
+  std::vector<double> levels;
+  if (functions.levels.empty()) return levels;
+  LevelsJob job{plot, &levels};
+  lua_State* state = build.sandbox.state();
+  lua_pushcfunction(state, read_levels);
+  lua_pushlightuserdata(state, &job);
+  try {
+    build.sandbox.call(1, 0);
+  } catch (const ScriptError& error) {
+    functions.levels_error = error.what();
+    throw;
+  }
+  functions.levels_error.clear();
+  return levels;
+}
 
 void try_theory_curves(LessonBuild& build) {
   lua_State* state = build.sandbox.state();
   for (std::size_t plot = 0; plot < build.plots.size(); ++plot) {
+    if (!build.plot_functions[plot].levels.empty()) {
+      // The levels too, so that a level that fails fails when the lesson loads.
+      std::vector<double> levels;
+      LevelsJob reading{plot, &levels};
+      lua_pushcfunction(state, read_levels);
+      lua_pushlightuserdata(state, &reading);
+      build.sandbox.call(1, 0);
+    }
     if (build.plot_functions[plot].curves.empty()) continue;
     TheorySamples samples;
     SamplingJob job{plot, 0.0, 1.0, 3, &samples};
@@ -195,6 +251,7 @@ std::string Lesson::theory_error() const {
   for (const PlotFunctions& functions : current_->plot_functions) {
     if (!functions.samples_error.empty()) return functions.samples_error;
     if (!functions.active_error.empty()) return functions.active_error;
+    if (!functions.levels_error.empty()) return functions.levels_error;
   }
   return "";
 }

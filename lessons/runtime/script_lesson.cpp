@@ -663,10 +663,65 @@ void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions
   lua_pop(state, 1);
 }
 
+// levels = { { "label", function() ... end }, ... }: the levels the plot marks across its data,
+// their functions kept in the registry beside the plot, in the build's plot_functions.
+void read_levels(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
+  const std::string example = "as in levels = { { \"−μs·N\", function() return -param.mu_s * N end } }";
+  fields.push("levels");
+  if (lua_isnil(state, -1)) {
+    lua_pop(state, 1);
+    return;
+  }
+  if (!lua_istable(state, -1) || lua_rawlen(state, -1) == 0) {
+    throw InvalidInput(fields.what() + ": levels must be a list of levels, " + example + "; got " + describe(state, -1));
+  }
+  const int list = lua_gettop(state);
+  for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, list)); ++i) {
+    const std::string which = fields.what() + ": level " + std::to_string(i);
+    lua_rawgeti(state, list, i);
+    const int entry = lua_gettop(state);
+    if (!lua_istable(state, entry)) {
+      throw InvalidInput(which + " must be { \"label\", function() return y end }; got " + describe(state, entry));
+    }
+    lua_rawgeti(state, entry, 1);
+    if (lua_type(state, -1) != LUA_TSTRING || lua_rawlen(state, -1) == 0) {
+      throw InvalidInput(which + " needs its label first (the plot writes it beside the line), " + example + "; got " +
+                         describe(state, -1));
+    }
+    PlotLevel level;
+    level.label = lua_tostring(state, -1);
+    lua_pop(state, 1);
+    const std::string named = fields.what() + ": level '" + level.label + "'";
+    // Only the label and the function: a misspelt field is said, not ignored.
+    lua_pushnil(state);
+    while (lua_next(state, entry) != 0) {
+      lua_pop(state, 1);
+      if (!(lua_isinteger(state, -1) && (lua_tointeger(state, -1) == 1 || lua_tointeger(state, -1) == 2))) {
+        const std::string key = lua_type(state, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(state, -1)) + "'" : describe(state, -1);
+        throw InvalidInput(named + ": unknown field " + key + "; a level is a label and a function");
+      }
+    }
+    lua_rawgeti(state, entry, 2);
+    if (!lua_isfunction(state, -1)) {
+      throw InvalidInput(named + " needs a function second, of no argument, giving the level's y (or nil for none now); got " +
+                         describe(state, -1));
+    }
+    require_script_function(state, -1, named);
+    lua_Debug debug;
+    lua_pushvalue(state, -1);
+    lua_getinfo(state, ">S", &debug);
+    level.declared_at = std::string(debug.source[0] == '@' ? debug.source + 1 : debug.source) + ":" + std::to_string(debug.linedefined);
+    functions.levels.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
+    declared.levels.push_back(std::move(level));
+    lua_settop(state, list);
+  }
+  lua_pop(state, 1);
+}
+
 int plot(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "plot");
-    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory", "shade"});
+    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory", "levels", "shade"});
     Plot declared;
     declared.title = fields.name();
     declared.declared_at = caller(state);
@@ -739,6 +794,7 @@ int plot(lua_State* state) {
     LessonBuild& build = build_of(state);
     PlotFunctions functions;
     read_theory(state, fields, declared, functions);
+    read_levels(state, fields, declared, functions);
     build.plots.push_back(std::move(declared));
     build.plot_functions.push_back(std::move(functions));
     return 0;

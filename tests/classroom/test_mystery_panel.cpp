@@ -149,7 +149,7 @@ TEST(MysteryWindow, NoTimeAxisTellsTheRunsLengthBeforeTheReveal) {
     hands.frame(0.0, &record);
     std::vector<double> ends;
     for (const FrameRecord::Plot& plot : record.plots) {
-      if (plot.number == 0) ends.push_back(plot.layout.x_high);  // "Push and friction", over time
+      if (plot.number == 1) ends.push_back(plot.layout.x_high);  // "Push and friction", over time
     }
     EXPECT_EQ(ends.size(), 1u);
     return ends;

@@ -1291,7 +1291,7 @@ TEST(LessonRuntime, ATheoryCurveFailingOnASlidersValueIsKeptUntilItDrawsAgain) {
                "function(F) if param.mu_s > 0.5 then error(\"the theory broke\") end if F <= param.mu_s * N then return -F end end");
   const ScriptFile script(text);
   Lesson lesson(script.path());
-  const std::size_t plot = 1;  // friction against the lesson's push
+  const std::size_t plot = 0;  // friction against the lesson's push
   ASSERT_EQ(lesson.plots().at(plot).title, "Friction against the lesson's push");
   lesson.theory_samples(plot, 0.0, 10.0, 50);
   EXPECT_EQ(lesson.theory_error(), "");

@@ -1734,6 +1734,100 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
   EXPECT_EQ(opened.front().number, 0u) << "incline opened on the page tipping_box was left at";
 }
 
+// Issue 31, item 2: on a 1920×1080 projector push's key plot had a data area of 115–140 px,
+// its ticks 2–5 N apart: the drop from μs·N to μk·N was 20 px. Now every lesson's first plot
+// (its key plot) has data at least a fifth of the screen high (225 px: the world above it keeps
+// what its labels need, which the ForceLabels and lanes tests check), and the same rectangle at
+// the run's start, in the middle of it and after the reveal: nothing the run or the reveal adds
+// (a legend's theory keys, wider tick labels, the levels) moves it. At the run's end the time
+// bar's notice takes a line from the whole frame; the reveal there moves nothing either.
+TEST(ProjectorPlots, TheKeyPlotIsAFifthOfTheScreenHighAndHoldsStillThroughTheRunAndTheReveal) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options = class_window(entry.path, window_screens[2]);
+    options.window.predictions = true;
+    const auto key_plot = [&](Classroom& window) {
+      FrameRecord record;
+      for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+      for (const FrameRecord::Plot& plot : record.plots) {
+        if (plot.number == 0) return ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
+      }
+      ADD_FAILURE() << entry.name << ": its first plot was not drawn";
+      return ImVec4();
+    };
+    const auto same = [&](const ImVec4& rect, const ImVec4& first, const char* when) {
+      EXPECT_TRUE(rect.x == first.x && rect.y == first.y && rect.z == first.z && rect.w == first.w)
+          << entry.name << " " << when << ": the data at (" << rect.x << ", " << rect.y << ")–(" << rect.z << ", " << rect.w
+          << "), before (" << first.x << ", " << first.y << ")–(" << first.z << ", " << first.w << ")";
+    };
+    Classroom window(options);
+    if (window.playback().lesson().plots().empty()) continue;
+    const double duration = window.playback().lesson().duration();
+    const ImVec4 start = key_plot(window);
+    EXPECT_GE(start.w - start.y, display.y / 5.0f) << entry.name << ": the key plot's data is short";
+    for (const double share : {0.25, 0.5, 0.75}) {
+      window.playback().run_to(share * duration);
+      same(key_plot(window), start, "as the run plays");
+    }
+    window.key_pressed(Key::t, false);  // the reveal (no change where nothing was kept back)
+    same(key_plot(window), start, "after the reveal");
+    EXPECT_FALSE(window.theory_hidden()) << entry.name;
+    // The reveal at the run's end, in a window of its own (T again would hide the theory).
+    Classroom ended(options);
+    ended.playback().run_to(duration);
+    const ImVec4 end = key_plot(ended);
+    ended.key_pressed(Key::t, false);
+    same(key_plot(ended), end, "after the reveal at the run's end");
+  }
+}
+
+// push's key plot, at its defaults (1 kg, μs 0.4, μk 0.3) in projector mode: y ticks a newton
+// apart, and the levels −μs·N = −3.92 N and −μk·N = −2.94 N labelled on it once the theory is
+// revealed, not before (they are theory, as its curves are).
+TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  ClassroomOptions options = class_window(lessons::resolve_lesson("push"), window_screens[2]);
+  options.window.predictions = true;
+  Classroom window(options);
+  struct Seen {
+    std::vector<double> ticks;
+    std::vector<std::string> levels;
+  };
+  const auto seen = [&] {
+    FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    Seen found;
+    for (const FrameRecord::Plot& plot : record.plots) {
+      if (plot.number == 0) found.ticks = plot.layout.y_ticks;
+    }
+    for (const ShownText& text : record.texts) {
+      if (text.text.find("\u03bcs\u00b7N") != std::string::npos || text.text.find("\u03bck\u00b7N") != std::string::npos) {
+        found.levels.push_back(text.text);
+      }
+    }
+    return found;
+  };
+  ASSERT_EQ(window.playback().lesson().plots().front().title, "Friction against the lesson's push");
+  ASSERT_TRUE(window.theory_hidden()) << "push asks for predictions first";
+  window.playback().run_to(window.playback().lesson().duration());
+  const Seen before = seen();
+  EXPECT_TRUE(before.levels.empty()) << "before the reveal: " << (before.levels.empty() ? "" : before.levels.front());
+  window.key_pressed(Key::t, false);
+  const Seen after = seen();
+  ASSERT_FALSE(window.theory_hidden());
+  for (const Seen* each : {&before, &after}) {
+    ASSERT_GE(each->ticks.size(), 4u);
+    for (std::size_t i = 1; i < each->ticks.size(); ++i) {
+      EXPECT_NEAR(each->ticks[i] - each->ticks[i - 1], 1.0, 1e-9) << (each == &before ? "before" : "after") << " the reveal";
+    }
+  }
+  const std::vector<std::string> expected{"\u2212\u03bcs\u00b7N = \u22123.92 N", "\u2212\u03bck\u00b7N = \u22122.94 N"};
+  EXPECT_EQ(after.levels, expected);
+}
+
 }  // namespace
 }  // namespace frictionlab::ui
-
