@@ -412,10 +412,20 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
     ClassPredictions other = predictions;
     other.revealed = !other.revealed;
     const bool withheld = theory_withheld();
+    const lessons::Lesson& on_show = playback.lesson();
+    const float font_size = ImGui::GetFontSize();
     const auto& rows = playback.readings().expectations;
-    return std::max(predictions_contents_height(playback.lesson(), rows, predictions, width, withheld),
-                    predictions_contents_height(playback.lesson(), rows, other, width, withheld));
+    const float height = std::max(predictions_contents_height(on_show, rows, predictions, width, withheld),
+                                  predictions_contents_height(on_show, rows, other, width, withheld));
+    if (planned && planned->lesson_path == on_show.path() && planned->questions == on_show.predictions().size() &&
+        planned->width == width && planned->font_size == font_size) {
+      planned->outgrown = height > planned->height;
+      return planned->height;
+    }
+    planned = PlannedHeight{on_show.path(), on_show.predictions().size(), width, font_size, height, false};
+    return height;
   };
+  style.predictions_outgrew = [this] { return planned && planned->outgrown; };
 }
 
 }  // namespace frictionlab::ui

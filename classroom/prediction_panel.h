@@ -56,6 +56,18 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
 // demo windows owns its state: the classroom holds one and asks it each frame.
 struct PredictionPanel {
   ClassPredictions predictions;
+  // The answers' height the column was planned for, kept from the lesson's opening: a slider's
+  // value changes what "measured:" says (stacked_blocks at its slowest pull: "runs off the floor
+  // first", a line longer), and a height worked out anew folded the Parameters panel under the
+  // teacher's pointer as the slider was let go. A taller text scrolls in its tab instead.
+  struct PlannedHeight {
+    std::string lesson_path;
+    std::size_t questions = 0;
+    float width = 0.0f, font_size = 0.0f;
+    float height = 0.0f;
+    bool outgrown = false;  // the answers need more than `height` now
+  };
+  std::optional<PlannedHeight> planned;
 
   // An answer is the class's for the values it was given at. At t = 0 (where answers are typed,
   // and where a changed value or R brings a run), a row whose theory is not what it was when the

@@ -39,9 +39,12 @@ TransportBar::Shape TransportBar::shape(const std::string& room_for, float width
   const ImGuiStyle& style = ImGui::GetStyle();
   const float s = scale;
   Shape shape;
-  // The controls before the time bar, and the time bar's own words at their longest.
+  // The controls before the time bar, and the time bar's own words for a run under 1000 s: a
+  // longer run's widen the bar and shorten the words beside it, where a bar kept for 0000.000 s
+  // left a projector's 1920 px no room for the run's end notice beside it (a line under it then
+  // took 40 px from the world and the plots).
   shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
-  shape.bar = ImGui::CalcTextSize("t = 0000.000 s of 0000.00 s recorded").x + 2.0f * style.FramePadding.x;
+  shape.bar = ImGui::CalcTextSize("t = 000.000 s of 000.00 s recorded").x + 2.0f * style.FramePadding.x;
   const float inside = width - 2.0f * style.WindowPadding.x;
   // A line of the small font: the words are the bar's asides, and each pixel of height the bar
   // takes is the world's and the column's, from the lesson's opening.

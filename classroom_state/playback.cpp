@@ -215,7 +215,7 @@ void Playback::step_and_check() {
 }
 
 std::string Playback::run_end_notice() const {
-  return "Paused: the lesson's run ends at " + seconds_text(readings_.duration) + ". Space plays on.";
+  return "The run ends here: Space plays on.";
 }
 
 bool Playback::at_run_end() const {

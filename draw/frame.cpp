@@ -371,8 +371,11 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     const float answers = style.predictions_height(inside);
     column_plan = plan_column(lesson, style, display, answers, true);
     // The answers alone, before the reveal, have the room planned for them: no scroll bar to
-    // take width from them.
-    theory_scrolls = !style.theory_hidden || !column_plan.theory_whole;
+    // take width from them. A value changed since the plan (a slider; the hand's pull, which
+    // writes "(hand-pulled)") may make them longer: they scroll then, rather than fold the
+    // Parameters panel under the teacher's pointer (PredictionPanel keeps the planned height).
+    theory_scrolls = !style.theory_hidden || !column_plan.theory_whole ||
+                     (style.predictions_outgrew && style.predictions_outgrew());
   }
   const FrameLayout layout = FrameLayout::of(display, s, style.origin, style.plots_one_a_page);
 

@@ -89,6 +89,9 @@ struct FrameStyle {
   // nothing that states a theory value is drawn: the table, the plots' theory curves.
   std::function<void()> predictions;
   std::function<float(float width)> predictions_height;
+  // Whether the answers have grown past the height planned for them (a value changed since the
+  // plan): they scroll then, in the room they were given.
+  std::function<bool()> predictions_outgrew;
   bool theory_hidden = false;
   // The window's own drawing in each lane of the world (the force gauge, the measuring tools),
   // called three times (WorldToolsPass): to tell the placer what it will draw, to draw what has

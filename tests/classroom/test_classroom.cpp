@@ -1562,21 +1562,21 @@ TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
   driver.key(Key::space);
   driver.playback().run_to(driver.lesson().duration());
   driver.frame();
-  EXPECT_TRUE(says("run ends at")) << driver.classroom().transport_words();
+  EXPECT_TRUE(says("run ends here")) << driver.classroom().transport_words();
   driver.key(Key::comma);  // a step back: no longer at the end
-  EXPECT_FALSE(says("run ends at")) << "rewound to t = " << driver.lesson().scene().time() << ": "
+  EXPECT_FALSE(says("run ends here")) << "rewound to t = " << driver.lesson().scene().time() << ": "
                                     << driver.classroom().transport_words();
   driver.playback().run_to(driver.lesson().duration());
   driver.frame();
-  ASSERT_TRUE(says("run ends at"));
+  ASSERT_TRUE(says("run ends here"));
   driver.playback().scrub_to(1.96);
   driver.frame();
-  EXPECT_FALSE(says("run ends at")) << driver.classroom().transport_words();
+  EXPECT_FALSE(says("run ends here")) << driver.classroom().transport_words();
   driver.playback().run_to(driver.lesson().duration());
   driver.frame();
-  ASSERT_TRUE(says("run ends at"));
+  ASSERT_TRUE(says("run ends here"));
   driver.key(Key::r);
-  EXPECT_FALSE(says("run ends at")) << "reset: " << driver.classroom().transport_words();
+  EXPECT_FALSE(says("run ends here")) << "reset: " << driver.classroom().transport_words();
 
   driver.playback().run_to(driver.lesson().duration());
   driver.key(Key::t);
@@ -1620,17 +1620,17 @@ TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
 // Issue 31: the Parameters panel folded into its heading as the run ended (to leave the class's
 // answers their room) and unfolded at R, moving the tabs under the teacher's pointer. Whether it
 // folds is decided as the lesson opens, for the answers at their tallest, and kept through the
-// run, its end and R; a click on its arrow opens it for the rest of the lesson. stacked_blocks in
+// run, its end and R; a click on its arrow opens it for the rest of the lesson. tipping_box in
 // projector mode has no room for both: folded from the opening.
 TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAndOpenOnAClick) {
   {
-  Driver driver("stacked_blocks");
+  Driver driver("tipping_box");
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
   ASSERT_TRUE(driver.classroom().theory_hidden());
   const auto folded = [&] { return driver.classroom().control("parameters open").has_value(); };
-  const auto slider = [&] { return driver.classroom().control("pull_rate slider").has_value(); };
+  const auto slider = [&] { return driver.classroom().control("push_height slider").has_value(); };
   EXPECT_TRUE(folded()) << "the answers need the room from the lesson's opening";
   EXPECT_FALSE(slider());
   driver.playback().run_to(driver.lesson().duration());
@@ -1661,6 +1661,30 @@ TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAnd
   incline.frame();
   incline.frame();
   EXPECT_FALSE(incline.classroom().control("parameters open").has_value()) << "incline's sliders folded as the run ended";
+}
+
+// A slider let go keeps the column as the lesson opened with: at stacked_blocks' slowest pull its
+// answers say "measured: runs off the floor first", a line longer, and a plan worked out anew
+// folded the Parameters panel, the slider and its tabs under the teacher's pointer.
+TEST(Classroom, ASliderLetGoKeepsTheColumnAsTheLessonOpened) {
+  Driver driver("stacked_blocks");
+  driver.classroom().window_settings().projector = true;
+  driver.set_display(ImVec2(1920.0f, 1080.0f));
+  driver.frame();
+  driver.frame();
+  ASSERT_TRUE(driver.classroom().control("pull_rate slider").has_value()) << "stacked_blocks opens with its sliders";
+  const ImRect slider = *driver.classroom().control("pull_rate slider");
+  for (const double pull_rate : {0.5, 20.0, 5.0}) {
+    driver.playback().set_parameter("pull_rate", pull_rate);
+    driver.frame();
+    driver.frame();
+    EXPECT_FALSE(driver.classroom().control("parameters open").has_value()) << "pull_rate " << pull_rate << ": folded";
+    const std::optional<ImRect> now = driver.classroom().control("pull_rate slider");
+    ASSERT_TRUE(now.has_value()) << "pull_rate " << pull_rate << ": the slider went";
+    EXPECT_TRUE(now->Min.x == slider.Min.x && now->Min.y == slider.Min.y && now->Max.x == slider.Max.x &&
+                now->Max.y == slider.Max.y)
+        << "pull_rate " << pull_rate << ": the slider moved";
+  }
 }
 
 // A teacher who takes no predictions has the theory from the start.

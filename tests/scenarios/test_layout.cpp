@@ -1602,7 +1602,7 @@ TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEn
         // Played to its end: the run's notice is said, and nothing moves for it.
         window.playback().run_to(duration);
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the run's end");
-        if (window.transport_words().find("run ends at") != std::string::npos) ++notices_seen;
+        if (window.transport_words().find("run ends here") != std::string::npos) ++notices_seen;
         window.key_pressed(Key::t, false);
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed at the run's end");
         ASSERT_FALSE(window.theory_hidden()) << lesson;
