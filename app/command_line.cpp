@@ -57,6 +57,8 @@ const Option table[] = {
      .help = "with --screenshot: the time in seconds, {range}, at which the window is saved", .example = "0.5"},
     {.name = "--screenshot", .commands = for_window, .value = "FILE.png", .kind = ValueKind::text,
      .help = "saves the window as a PNG file at the time --at gives, then closes it", .example = "window.png"},
+    {.name = "--reveal", .commands = for_window, .kind = ValueKind::none,
+     .help = "with --screenshot: the theory revealed, as T reveals it after the class's predictions, before the picture"},
     {.name = "--duration", .commands = for_run, .value = "S", .kind = ValueKind::number, .range = {0.0, 86400.0, true, " s"},
      .help = "how long to run, in seconds, {range} (the lesson's own duration when not given)", .example = "1.5"},
     {.name = "--csv", .commands = for_run, .value = "FILE", .kind = ValueKind::text,
@@ -164,7 +166,7 @@ struct Listing {
   std::string_view names;  // separated by spaces
 };
 const Listing listings[] = {
-    {for_window, "--lock --set --hz --substeps --friction --theme --projector --at --screenshot --mystery --seed --setup"},
+    {for_window, "--lock --set --hz --substeps --friction --theme --projector --at --screenshot --reveal --mystery --seed --setup"},
     {for_run, "--duration --hz --substeps --friction --set --csv --mystery --seed"},
     {for_check, "--set --hz --substeps --friction --random --seed"},
     {for_render, "--at --moment --size --theme --set --out --hz --substeps --friction --mystery --seed"},
@@ -250,11 +252,11 @@ constexpr Command no_options{};
 const Usage usages[] = {
     {for_window,
      "[LESSON] [--lock] [--set ...] [--hz] [--substeps] [--friction] [--theme] [--projector] [--at --screenshot] "
-     "[--mystery --seed]",
+     "[--reveal] [--mystery --seed]",
      "the classroom window on a lesson (the first one if none is named; a name from list, or a .lua file); "
      "without a display it draws the lesson to a PNG instead",
      false},
-    {for_window, "--setup [--theme] [--projector] [--at --screenshot]",
+    {for_window, "--setup [--theme] [--projector] [--at --screenshot] [--reveal]",
      "the window on a prepared setup (Lesson > Save as a setup): its lesson, values, lock, mystery and step settings",
      false},
     {for_list, "list [--tsv]", "the built-in lessons with their titles and moments", true},

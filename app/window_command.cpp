@@ -28,6 +28,7 @@ struct WindowOptions {
   bool projector = false;
   std::optional<double> at;
   std::string screenshot;
+  bool reveal = false;     // --reveal: the picture with the theory shown
   MysteryOptions mystery;  // --mystery PAIR --seed N
   std::string setup;       // --setup FILE: the lesson, values, lock and mystery from a prepared setup
 };
@@ -77,6 +78,8 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
         throw InvalidInput("--screenshot " + value + ": the folder " + path.parent_path().string() + " does not exist");
       }
       options.screenshot = value;
+    } else if (name == "--reveal") {
+      options.reveal = true;
     } else {
       bool stepped = false;
       try {
@@ -87,6 +90,10 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       if (!stepped) throw std::logic_error("the window does not read " + std::string(name) + ", which the options table gives it");
     }
   });
+  // The reveal is a teacher's key in a window; on the command line it is for a picture's sake.
+  if (options.reveal && options.screenshot.empty()) {
+    throw InvalidInput("--reveal shows the theory in a --screenshot picture; in the window, T reveals it: give --screenshot FILE.png, or leave --reveal out");
+  }
   options.mystery.choice();  // --mystery without --seed, or the other way round, refused before the window opens
   if (!options.setup.empty()) {
     // The setup holds these: given beside it, which one was meant is not for the program to guess.
@@ -146,6 +153,8 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     if (!kept.empty()) notice = notice.empty() ? kept : notice + " " + kept;
   }
   ui::Classroom classroom(classroom_options);
+  // T in the first frame, after the run to --at: the picture a class sees once it is revealed.
+  if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(ui::Key::t, false);
 
   ui::WindowRun run;
   run.at = options.at;
