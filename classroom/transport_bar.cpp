@@ -40,9 +40,9 @@ TransportBar::Shape TransportBar::shape(const std::string& room_for, float width
   const float s = scale;
   Shape shape;
   // The controls before the time bar, and the time bar's own words for a run under 1000 s: a
-  // longer run's widen the bar and shorten the words beside it, where a bar kept for 0000.000 s
-  // left a projector's 1920 px no room for the run's end notice beside it (a line under it then
-  // took 40 px from the world and the plots).
+  // bar kept for 0000.000 s left a projector's 1920 px no room for the run's end notice beside
+  // it (a line under it then took 40 px from the world and the plots). Past 1000 s, where the
+  // bar is at its narrowest (a projector), its readout is cut at the bar's ends.
   shape.controls = 3.0f * 80.0f * s + 150.0f * s + 4.0f * style.ItemSpacing.x;
   shape.bar = ImGui::CalcTextSize("t = 000.000 s of 000.00 s recorded").x + 2.0f * style.FramePadding.x;
   const float inside = width - 2.0f * style.WindowPadding.x;
@@ -100,15 +100,16 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
     }
     ImGui::SameLine();
     const Scene& scene = playback.lesson().scene();
-    // The words on their one line: beside the bar (which keeps its own words' width), or under it.
+    // The words on their one line: under the bar, or beside it in the room kept for the run's end
+    // notice from the lesson's opening, said or not, so that the bar keeps its width (it shrank
+    // as the notice came, its readout moving under the pointer). Longer words are cut to it.
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     ImGui::PushFont(words_font);
-    const std::string words =
-        fitted(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
-                                       : ImGui::GetContentRegionAvail().x - shape.bar - spacing);
-    const float words_width = words.empty() || shape.words_below ? 0.0f : ImGui::CalcTextSize(words.c_str()).x + spacing;
+    const float room = shape.words_below || room_for.empty() ? 0.0f : ImGui::CalcTextSize(room_for.c_str()).x + spacing;
+    const std::string words = fitted(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
+                                                             : std::max(room, ImGui::GetContentRegionAvail().x - shape.bar) - spacing);
     ImGui::PopFont();
-    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - words_width));
+    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - room));
     double t = scrubbing_to ? *scrubbing_to : scene.time();
     const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
     char format[64];

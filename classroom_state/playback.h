@@ -100,7 +100,8 @@ class Playback {
   const std::string& problem() const { return problem_; }
   // Something worth saying that is not a fault: the lesson's run is over, the file was reloaded.
   // A notice about a moment of the run (it is over, a body fell) is said only while the run is
-  // at that moment: rewound from the end, "the run ends at 3.46 s" read as if it were still there.
+  // at that moment: rewound from the end, "the run ends at 3.46 s" (as it was worded) read as if it
+  // were still there.
   std::string notice() const { return notice_frame_ && *notice_frame_ != frame() ? std::string() : notice_; }
   // The notice the run's end gives, known before the run gets there: the transport bar keeps its
   // room from the lesson's opening, so that it does not grow (and push the frame) as the run ends.

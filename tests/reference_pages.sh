@@ -46,8 +46,12 @@ done
 # The sections' numbers across the pages, in the order the index links the pages themselves
 # (the links with no #heading: its contents).
 order=$(grep -oE '\]\(reference/[a-z_]+\.md\)' "$index" | sed -E 's/^\]\(//; s/\)$//' | awk '!seen[$0]++')
+# Checked here, outside the $( ) below: a fail inside it would set `failed` in a subshell only.
+for name in $order; do
+  [[ -f lessons/$name ]] || fail "$index: a link to $name, which is not there"
+done
 numbers=$(for name in $order; do
-  [[ -f lessons/$name ]] || { fail "$index: a link to $name, which is not there"; continue; }
+  [[ -f lessons/$name ]] || continue
   prose "lessons/$name" | grep -oE '^## [0-9]+\.' | grep -oE '[0-9]+'
 done | tr '\n' ' ')
 count=$(echo $numbers | wc -w)

@@ -1499,6 +1499,7 @@ struct Placed {
   std::map<std::string, ImVec4> panels;  // each ImGui window drawn, by its id: x0, y0, x1, y1
   std::map<std::string, ImVec4> tabs;    // each tab's name in the column's tab bar
   std::optional<ImRect> reveal;
+  std::optional<ImRect> time_bar;  // the transport bar's scrub bar: it shrank as the run's end notice came
 };
 
 Placed placed(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 display) {
@@ -1521,6 +1522,7 @@ Placed placed(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 di
     if (text.needed.y < books->Pos.y + books->WindowPadding.y + ImGui::GetFrameHeight()) found.tabs[text.text] = text.needed;
   }
   found.reveal = window.control("reveal");
+  found.time_bar = window.control("scrub");
   return found;
 }
 
@@ -1552,6 +1554,14 @@ void expect_same_places(const Placed& before, const Placed& after, const std::st
     }
     EXPECT_TRUE(rect.x == now->second.x && rect.y == now->second.y && rect.z == now->second.z)
         << where << ": the tab " << name << " moved from " << rect_words(rect) << " to " << rect_words(now->second);
+  }
+  if (before.time_bar && after.time_bar) {
+    EXPECT_TRUE(before.time_bar->Min.x == after.time_bar->Min.x && before.time_bar->Max.x == after.time_bar->Max.x &&
+                before.time_bar->Min.y == after.time_bar->Min.y)
+        << where << ": the time bar went from x " << before.time_bar->Min.x << "–" << before.time_bar->Max.x << " to "
+        << after.time_bar->Min.x << "–" << after.time_bar->Max.x;
+  } else {
+    ADD_FAILURE() << where << ": no time bar was drawn";
   }
   if (before.reveal && after.reveal) {
     EXPECT_TRUE(before.reveal->Min.x == after.reveal->Min.x && before.reveal->Min.y == after.reveal->Min.y &&
@@ -1736,11 +1746,11 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
 
 // Issue 31, item 2: on a 1920×1080 projector push's key plot had a data area of 115–140 px,
 // its ticks 2–5 N apart: the drop from μs·N to μk·N was 20 px. Now every lesson's first plot
-// (its key plot) has data at least a fifth of the screen high (225 px: the world above it keeps
-// what its labels need, which the ForceLabels and lanes tests check), and the same rectangle at
-// the run's start, in the middle of it and after the reveal: nothing the run or the reveal adds
-// (a legend's theory keys, wider tick labels, the levels) moves it. At the run's end the time
-// bar's notice takes a line from the whole frame; the reveal there moves nothing either.
+// (its key plot) has data at least a fifth of the screen high (225 px: the world above it
+// keeps what its labels need, which the ForceLabels and lanes tests check; the issue asks a
+// third, which this layout does not reach), and the same rectangle at the run's start, in the
+// middle of it, at its end and after the reveal: nothing the run or the reveal adds (a legend's
+// theory keys, wider tick labels, the levels, the run's end notice) moves it.
 TEST(ProjectorPlots, TheKeyPlotIsAFifthOfTheScreenHighAndHoldsStillThroughTheRunAndTheReveal) {
   const ImVec2 display(1920.0f, 1080.0f);
   HeadlessContext gl;
@@ -1778,6 +1788,7 @@ TEST(ProjectorPlots, TheKeyPlotIsAFifthOfTheScreenHighAndHoldsStillThroughTheRun
     Classroom ended(options);
     ended.playback().run_to(duration);
     const ImVec4 end = key_plot(ended);
+    same(end, start, "at the run's end");
     ended.key_pressed(Key::t, false);
     same(key_plot(ended), end, "after the reveal at the run's end");
   }
