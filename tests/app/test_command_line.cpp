@@ -122,6 +122,7 @@ std::vector<std::string> whole_line(Command command, const Option& option) {
   if (option.kind != ValueKind::none) args.emplace_back(option.example);
   const auto add = [&](std::initializer_list<const char*> words) { args.insert(args.end(), words.begin(), words.end()); };
   if (option.name == "--mystery") add({"--seed", "42"});
+  if (option.name == "--reveal") add({"--screenshot", "window.png"});  // a picture's option only
   if (option.name == "--seed") {
     if (command == Command::check) {
       add({"--random", "3"});
@@ -239,7 +240,7 @@ TEST(OptionsTable, UnknownOptionMessagesAreAsBeforeTheTable) {
             "--set NAME=VALUE, --out PATH, --hz N, --substeps N, --friction T, --mystery MATERIAL/MATERIAL --seed N");
   EXPECT_EQ(unknown_option_message(Command::window, "--fullscreen"),
             "unknown option '--fullscreen'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, "
-            "--substeps N, --friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, "
+            "--substeps N, --friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, --reveal, "
             "--mystery MATERIAL/MATERIAL --seed N, --setup FILE (commands: list, run, check, render, demo, bench, help)");
 }
 
@@ -402,10 +403,10 @@ TEST(OptionsTable, TheUsageKeepsTheFormsItHad) {
   const std::vector<std::string> forms = usage_forms(usage_text(Program::desktop), "frictionlab");
   for (const char* form :
        {"frictionlab [LESSON] [--lock NAME[,NAME...]] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] "
-        "[--theme light|dark] [--projector] [--at S --screenshot FILE.png] [--mystery MATERIAL/MATERIAL --seed N] the "
-        "classroom window",
-        "frictionlab --setup FILE [--theme light|dark] [--projector] [--at S --screenshot FILE.png] the window on a "
-        "prepared setup",
+        "[--theme light|dark] [--projector] [--at S --screenshot FILE.png] [--reveal] [--mystery MATERIAL/MATERIAL --seed N] "
+        "the classroom window",
+        "frictionlab --setup FILE [--theme light|dark] [--projector] [--at S --screenshot FILE.png] [--reveal] the window "
+        "on a prepared setup",
         "frictionlab list [--tsv] the built-in lessons",
         "frictionlab run LESSON [--duration S] [--hz N] [--substeps N] [--friction T] [--set NAME=VALUE ...] "
         "[--csv FILE] [--mystery MATERIAL/MATERIAL --seed N] run a lesson",
