@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace frictionlab {
@@ -324,14 +325,23 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
 void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
   const b2Vec2 t = r.tangent();
   double normal = 0.0, tangent = 0.0;
+  // One flat surface: every point's tangent the group's, the same way (a body between a floor
+  // and a ceiling has its tangents opposite), and every point on one line across the normal (a
+  // body on two steps has its tangents alike at two heights): there the split changes no torque.
   bool parallel = true;
+  std::optional<b2Vec2> first_point;
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
     const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
     const float along = side * b2Dot(member.tangent(), t);
     // Float tangents of one flat surface agree to round-off.
-    if (std::abs(std::abs(along) - 1.0f) > 1e-5f) parallel = false;
+    if (std::abs(along - 1.0f) > 1e-5f) parallel = false;
     const b2Manifold* manifold = other->GetManifold();
+    b2WorldManifold world;
+    other->GetWorldManifold(&world);
     for (int i = 0; i < manifold->pointCount; ++i) {
+      if (!first_point) first_point = world.points[i];
+      // Box2D's points lie on the surface within its slop; off the line by more is another face.
+      if (std::abs(b2Dot(world.points[i] - *first_point, world.normal)) > 2.0f * b2_linearSlop) parallel = false;
       normal += manifold->points[i].normalImpulse;
       tangent += along * manifold->points[i].tangentImpulse;
     }
