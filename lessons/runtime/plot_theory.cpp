@@ -177,7 +177,7 @@ struct LevelsJob {
   std::vector<double>* out = nullptr;
 };
 
-int read_levels(lua_State* state) {
+int evaluate_levels(lua_State* state) {
   const auto* job = static_cast<const LevelsJob*>(lua_touserdata(state, 1));
   LessonBuild& build = build_of(state);
   const PlotFunctions& functions = build.plot_functions[job->plot];
@@ -210,7 +210,7 @@ std::vector<double> Lesson::plot_levels(std::size_t plot) {
   if (functions.levels.empty()) return levels;
   LevelsJob job{plot, &levels};
   lua_State* state = build.sandbox.state();
-  lua_pushcfunction(state, read_levels);
+  lua_pushcfunction(state, evaluate_levels);
   lua_pushlightuserdata(state, &job);
   try {
     build.sandbox.call(1, 0);
@@ -229,7 +229,7 @@ void try_theory_curves(LessonBuild& build) {
       // The levels too, so that a level that fails fails when the lesson loads.
       std::vector<double> levels;
       LevelsJob reading{plot, &levels};
-      lua_pushcfunction(state, read_levels);
+      lua_pushcfunction(state, evaluate_levels);
       lua_pushlightuserdata(state, &reading);
       build.sandbox.call(1, 0);
     }

@@ -665,7 +665,7 @@ void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions
 
 // levels = { { "label", function() ... end }, ... }: the levels the plot marks across its data,
 // their functions kept in the registry beside the plot, in the build's plot_functions.
-void read_levels(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
+void read_levels_field(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
   const std::string example = "as in levels = { { \"−μs·N\", function() return -param.mu_s * N end } }";
   fields.push("levels");
   if (lua_isnil(state, -1)) {
@@ -794,7 +794,7 @@ int plot(lua_State* state) {
     LessonBuild& build = build_of(state);
     PlotFunctions functions;
     read_theory(state, fields, declared, functions);
-    read_levels(state, fields, declared, functions);
+    read_levels_field(state, fields, declared, functions);
     build.plots.push_back(std::move(declared));
     build.plot_functions.push_back(std::move(functions));
     return 0;

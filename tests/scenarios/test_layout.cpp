@@ -696,6 +696,26 @@ std::optional<std::size_t> lower_panel_text(const FrameRecord& record, std::size
   return std::nullopt;
 }
 
+// The texts one of the class's predictions shows, in the order drawn, each with whether it is a
+// prefix: before the reveal its question, the answer and "measured: …"; revealed, its row's
+// name, the answer with its unit and how close it came. Empty (and a failure) when the lesson
+// has no row of the prediction's name.
+std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window, const lessons::Prediction& prediction,
+                                                       bool revealed, const std::string& where) {
+  const std::string answer = window.predictions().answers[prediction.expectation];
+  if (!revealed) return {{prediction.question, false}, {answer, false}, {"measured: ", true}};
+  const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
+  const auto row = std::find_if(rows.begin(), rows.end(),
+                                [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
+  if (row == rows.end()) {
+    ADD_FAILURE() << where << ": no row " << prediction.expectation;
+    return {};
+  }
+  return {{prediction.expectation, false},
+          {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
+          {closeness(prediction, answer, *row).words, false}};
+}
+
 // At the run's end a teacher reads what the run measured beside each of the class's answers,
 // reveals the theory, and sets class, theory and measurement side by side: every question (its
 // short name once revealed), the class's answer and its comparison (the measurement before the
@@ -737,25 +757,11 @@ TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
           EXPECT_LE(parameters->Pos.y + parameters->Size.y, below->Pos.y + 0.5f)
               << where << ": the Parameters panel reaches down over " << id;
         }
-        const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
         // Each prediction's texts in the order drawn: the first of each after the one before, so
         // that the theory table's row of the same name below is not taken for the class's.
         std::size_t next = 0;
         for (const lessons::Prediction& prediction : predictions) {
-          const std::string answer = window.predictions().answers[prediction.expectation];
-          std::vector<std::pair<std::string, bool>> wanted;  // the text, whether it is a prefix
-          if (!revealed) {
-            wanted = {{prediction.question, false}, {answer, false}, {"measured: ", true}};
-          } else {
-            const auto row = std::find_if(rows.begin(), rows.end(), [&](const lessons::ExpectationResult& r) {
-              return r.name == prediction.expectation;
-            });
-            ASSERT_NE(row, rows.end()) << where << ": no row " << prediction.expectation;
-            wanted = {{prediction.expectation, false},
-                      {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
-                      {closeness(prediction, answer, *row).words, false}};
-          }
-          for (const auto& [text, prefix] : wanted) {
+          for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             ++checked;
             if (!found) {
@@ -1676,22 +1682,9 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
               << where << ": " << parameter.name << "'s slider at (" << slider->Min.y << "–" << slider->Max.y
               << ") is not whole in its panel (" << panel.Min.y << "–" << panel.Max.y << ")";
         }
-        const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
         std::size_t next = 0;
         for (const lessons::Prediction& prediction : predictions) {
-          const std::string answer = window.predictions().answers[prediction.expectation];
-          std::vector<std::pair<std::string, bool>> wanted;  // the text, whether it is a prefix
-          if (!at_the_end) {
-            wanted = {{prediction.question, false}, {answer, false}, {"measured: ", true}};
-          } else {
-            const auto row = std::find_if(rows.begin(), rows.end(),
-                                          [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
-            ASSERT_NE(row, rows.end()) << where << ": no row " << prediction.expectation;
-            wanted = {{prediction.expectation, false},
-                      {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
-                      {closeness(prediction, answer, *row).words, false}};
-          }
-          for (const auto& [text, prefix] : wanted) {
+          for (const auto& [text, prefix] : answer_texts(window, prediction, at_the_end, where)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             if (!found) {
               ADD_FAILURE() << where << ": \"" << text << "\" is not drawn";
