@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <string>
 
 namespace frictionlab {
@@ -320,28 +319,25 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
 // where mu·N is 178.8 N. The next step starts from the split Coulomb's law gives a rigid body
 // on equal feet, each point's friction in proportion to its load: the same total impulse at
 // the same height (the same warm start for the body), and a foot that loses its load has
-// carried only its share of the friction. Only where every point's tangent is the group's (feet
-// on one flat surface); other groups keep the solver's split.
+// carried only its share of the friction. Where every point's tangent is the group's, the same
+// way: feet on one flat surface, or on two steps at two heights. On steps the split moves the
+// friction's moment, and that is what Coulomb's law asks: a point whose load goes carries no
+// friction. Left to the solver, friction stayed on a high step whose load was going (it may
+// hold 10^4 times the load there), and its moment held up a body the closed form tips: a body
+// on steps 0.5 m apart, pulled at 0.6 m, stood unturned at 1.5 times the pull that tips it
+// (BodyOnTwoSteps). A body between a floor and a ceiling (tangents opposite) keeps the
+// solver's split: no scene has shown what the share does there.
 void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
   const b2Vec2 t = r.tangent();
   double normal = 0.0, tangent = 0.0;
-  // One flat surface: every point's tangent the group's, the same way (a body between a floor
-  // and a ceiling has its tangents opposite), and every point on one line across the normal (a
-  // body on two steps has its tangents alike at two heights): there the split changes no torque.
   bool parallel = true;
-  std::optional<b2Vec2> first_point;
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
     const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
     const float along = side * b2Dot(member.tangent(), t);
-    // Float tangents of one flat surface agree to round-off.
+    // Float tangents of parallel surfaces agree to round-off.
     if (std::abs(along - 1.0f) > 1e-5f) parallel = false;
     const b2Manifold* manifold = other->GetManifold();
-    b2WorldManifold world;
-    other->GetWorldManifold(&world);
     for (int i = 0; i < manifold->pointCount; ++i) {
-      if (!first_point) first_point = world.points[i];
-      // Box2D's points lie on the surface within its slop; off the line by more is another face.
-      if (std::abs(b2Dot(world.points[i] - *first_point, world.normal)) > 2.0f * b2_linearSlop) parallel = false;
       normal += manifold->points[i].normalImpulse;
       tangent += along * manifold->points[i].tangentImpulse;
     }

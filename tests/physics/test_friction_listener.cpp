@@ -267,6 +267,78 @@ TEST(BlockOnFeet, BreaksAwayAtMuSTimesItsWholeWeightHoweverTheLoadIsShared) {
   }
 }
 
+// A body standing on two steps at two heights: a slab on the high step and a leg down to the
+// low one, one group of contacts whose tangents agree at two heights. Pulled sideways at its top
+// with a growing pull r·t, away from the riser, it tips about the leg's outer foot as soon as
+// the pull's moment there passes its weight's, F·y = m·g·(x_c − x_foot); friction
+// (μs·m·g, far more) cannot stop that, for as the slab's load on the high step goes, Coulomb's
+// law leaves it no friction either. Past the tipping pull the body turns about the foot with
+// I_foot·θ'' = r·(t − t_tip)·y, so it has turned θ by the pull F_tip + r·(6·I_foot·θ/(r·y))^(1/3).
+// Held up by friction the solver had left on the unloading high step, it stood unturned at
+// 1.5 times the tipping pull.
+namespace {
+
+b2Fixture* add_true_box(Scene& scene, b2Body* body, float left, float right, float bottom, float top, const std::string& material) {
+  b2PolygonShape shape;
+  shape.SetAsBox(0.5f * (right - left), 0.5f * (top - bottom), {0.5f * (left + right), 0.5f * (bottom + top)}, 0.0f);
+  shape.m_radius = true_skin;
+  return scene.add_fixture(body, shape, material);
+}
+
+}  // namespace
+
+TEST(BodyOnTwoSteps, TipsAboutItsLowFootWhenThePullsMomentPassesItsWeights) {
+  for (const double mu_s : {0.5, 1.0}) {
+    SCOPED_TRACE("mu_s = " + std::to_string(mu_s));
+    PairTable pairs;
+    pairs.add_material({"stairs", 600.0, ""});
+    pairs.add_material({"body", 500.0, ""});
+    pairs.set_pair("body", "stairs", {mu_s, 0.7 * mu_s, 0.0, 0.0});
+    pairs.set_pair("body", "body", {mu_s, 0.7 * mu_s, 0.0, 0.0});
+    Scene scene(std::move(pairs), at_240_hz);
+    const float rise = 0.5f;  // the high step's top; the low step's is at 0
+    b2BodyDef fixed;
+    fixed.type = b2_staticBody;
+    b2Body* stairs = scene.add_body("stairs", fixed);
+    add_true_box(scene, stairs, -2.0f, 0.0f, -0.5f, 0.0f, "stairs");
+    add_true_box(scene, stairs, 0.0f, 2.0f, -0.5f, rise, "stairs");
+    b2BodyDef moving;
+    moving.type = b2_dynamicBody;
+    b2Body* body = scene.add_body("body", moving);
+    add_true_box(scene, body, -0.3f, 0.3f, rise, rise + 0.1f, "body");  // the slab, on the high step
+    add_true_box(scene, body, -0.3f, -0.1f, 0.0f, rise, "body");        // the leg, on the low step
+    const double rate = 20.0;                                           // N/s
+    const float pull_height = rise + 0.1f;                              // the slab's top
+    scene.add_applied_force({"pull", body, body->GetLocalPoint({0.0f, pull_height}),
+                             [rate](double t) { return b2Vec2{static_cast<float>(-rate * t), 0.0f}; }});
+
+    const double m = body->GetMass();
+    const b2Vec2 centre = body->GetWorldCenter();
+    const b2Vec2 foot{-0.3f, 0.0f};  // the leg's outer corner, which it tips about
+    const double tipping_pull = m * standard_gravity * (centre.x - foot.x) / pull_height;
+    ASSERT_LT(tipping_pull, mu_s * m * standard_gravity) << "the scene must tip before it slides";
+    const double inertia_at_foot = body->GetInertia() - m * b2Dot(body->GetLocalCenter(), body->GetLocalCenter()) +
+                                   m * b2DistanceSquared(centre, foot);
+    const double turned = 1e-3;  // rad
+    const double turned_by = tipping_pull + rate * std::cbrt(6.0 * inertia_at_foot * turned / (rate * pull_height));
+
+    double still_to = 0.0, turned_at = -1.0;  // the pulls: the last with the body unturned, and at `turned`
+    while (turned_at < 0.0 && scene.time() < 1.5 * tipping_pull / rate) {
+      const double pull = rate * scene.time();
+      scene.step();
+      if (std::abs(body->GetAngle()) < 1e-6f) still_to = pull;
+      if (std::abs(body->GetAngle()) > turned) turned_at = pull;
+      ASSERT_EQ(scene.slipping().back(), 0) << "slid at a pull of " << pull << " N, under mu_s·m·g";
+    }
+    // Held below the tipping pull: the pull is sampled at the step's start, so the last still
+    // step's pull lies within one step's growth r·h below it.
+    EXPECT_GE(still_to, tipping_pull - rate * scene.frame_step());
+    // The turn's start lies within a step, and the velocity step puts the angle up to half a step
+    // behind the exact θ(t): a step and a half's growth of the pull.
+    EXPECT_NEAR(turned_at, turned_by, 1.5 * rate * scene.frame_step()) << "tipping pull " << tipping_pull << " N";
+  }
+}
+
 // Friction treatment per pair: one world holds a stick-slip block beside a regularized one
 // beside Box2D's own, each pair keeping its treatment whatever the run's is, and a pair with
 // none following the run's. The slope is made by tilting gravity, so every block sees the same
