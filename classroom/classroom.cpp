@@ -151,9 +151,12 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
       change_settings(*use);
     }
-    // Six tabs do not fit side by side in projector mode: the mystery's takes the map's place
-    // (whose boundary would give μs away until the reveal anyway).
-    if (!mystery_.mystery) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
+    // The map's boundary would give a mystery's μs away: until the reveal the Mystery tab takes
+    // the map's place. Revealed, the map comes back beside it, for the μs the class has just been
+    // told; but not in projector mode, where six tabs do not fit the column side by side and
+    // every tab would shrink and move at the reveal (nothing may move under the teacher's pointer).
+    const bool map_fits = !mystery_.mystery || (mystery_.mystery->revealed() && !window_.projector);
+    if (map_fits) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
   };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_.text = said;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,

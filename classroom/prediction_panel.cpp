@@ -417,12 +417,12 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
     const auto& rows = playback.readings().expectations;
     const float height = std::max(predictions_contents_height(on_show, rows, predictions, width, withheld),
                                   predictions_contents_height(on_show, rows, other, width, withheld));
-    if (planned && planned->lesson_path == on_show.path() && planned->questions == on_show.predictions().size() &&
-        planned->width == width && planned->font_size == font_size) {
+    if (planned && planned->lesson_path == on_show.path() && planned->script_loads == playback.script_loads() &&
+        planned->questions == on_show.predictions().size() && planned->width == width && planned->font_size == font_size) {
       planned->outgrown = height > planned->height;
       return planned->height;
     }
-    planned = PlannedHeight{on_show.path(), on_show.predictions().size(), width, font_size, height, false};
+    planned = PlannedHeight{on_show.path(), playback.script_loads(), on_show.predictions().size(), width, font_size, height, false};
     return height;
   };
   style.predictions_outgrew = [this] { return planned && planned->outgrown; };

@@ -60,8 +60,11 @@ struct PredictionPanel {
   // value changes what "measured:" says (stacked_blocks at its slowest pull: "runs off the floor
   // first", a line longer), and a height worked out anew folded the Parameters panel under the
   // teacher's pointer as the slider was let go. A taller text scrolls in its tab instead.
+  // A lesson opened, or its script read again (F5, the file watcher: its questions may read
+  // otherwise), is planned anew.
   struct PlannedHeight {
     std::string lesson_path;
+    long script_loads = 0;
     std::size_t questions = 0;
     float width = 0.0f, font_size = 0.0f;
     float height = 0.0f;
@@ -70,8 +73,11 @@ struct PredictionPanel {
   std::optional<PlannedHeight> planned;
 
   // A lesson opens (the command line's, another from the Lesson menu, a setup's): its answers (a
-  // setup's, or none).
-  void begin(ClassPredictions opened) { predictions = std::move(opened); }
+  // setup's, or none) and the column planned anew for its questions.
+  void begin(ClassPredictions opened) {
+    predictions = std::move(opened);
+    planned.reset();
+  }
   // Whether the theory is kept from the class now. `asking`: the teacher asks for predictions.
   bool theory_hidden(const lessons::Lesson& lesson, bool asking) const;
   // T: reveals the theory; T again hides it, the answers as they were (a reveal by mistake, a
