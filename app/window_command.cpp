@@ -169,7 +169,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   } catch (const ui::NoDisplay& error) {
     if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
     // A script that does not build has no picture to give: its mistake is the answer.
-    if (!classroom.failed_script().empty()) throw InvalidInput(classroom.failed_error());
+    if (!classroom.failed_script().path.empty()) throw InvalidInput(classroom.failed_script().error);
     // No window here (a server, CI, a remote shell): the same lesson as a picture instead.
     const double at = options.at ? *options.at : 0.5 * classroom.playback().readings().duration;
     const std::string& lesson = classroom_options.lesson;  // the setup's, with --setup

@@ -16,20 +16,25 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "classroom/cheapest_setting_tab.h"
 #include "classroom/classroom_options.h"
 #include "classroom/control_places.h"
+#include "classroom/exports.h"
 #include "classroom/keys.h"
+#include "classroom/lesson_lock.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_panel.h"
 #include "classroom/open_script_dialog.h"
 #include "classroom/parameters_panel.h"
 #include "classroom/prediction_panel.h"
+#include "classroom/script_messages.h"
 #include "classroom/settings.h"
 #include "classroom/setup_dialog.h"
 #include "classroom/stability_map_tab.h"
+#include "classroom/status_line.h"
 #include "classroom/transport_bar.h"
 #include "classroom/world_hand.h"
 #include "classroom_state/mystery.h"
@@ -41,9 +46,9 @@
 
 namespace frictionlab::ui {
 
-// A lesson's name as the lesson list gives it: its script's file name without ".lua".
-std::string lesson_name(const std::string& script_path);
-
+// The window composes its panels, tabs and dialogs (each a small struct that owns its state and
+// draws itself) and routes what they ask of each other: a value set, a lesson opened or
+// replaced, a key's meaning.
 class Classroom {
  public:
   // Opens the lesson; a script that fails to build opens the first built-in lesson instead,
@@ -67,14 +72,14 @@ class Classroom {
   // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
   // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
   // key state, so shortcuts come from here only.
-  void key_pressed(Key key, bool ctrl) { taps_.emplace_back(key, ctrl); }
+  void key_pressed(Key key, bool ctrl) { keys_.pressed(key, ctrl); }
 
   // Requests the host carries out after the frame is drawn, each taken once.
-  std::optional<std::string> take_screenshot_request();  // the path to save the window to
+  std::optional<std::string> take_screenshot_request() { return exports_.take_screenshot_request(); }  // the path to save the window to
   void screenshot_done(const std::string& path, const std::string& error);
-  bool take_full_screen_toggle();
+  bool take_full_screen_toggle() { return std::exchange(full_screen_toggle_, false); }
   // The page's file chooser, asked for from the Lesson menu (ClassroomOptions::browser).
-  bool take_open_file_request();
+  bool take_open_file_request() { return std::exchange(open_file_request_, false); }
   bool quit_requested() const { return quit_; }
   // Nothing moves until the user does something: paused, no search measuring between frames,
   // no hand held. The window then waits for input (a few times a second for the file watcher)
@@ -97,9 +102,8 @@ class Classroom {
   std::string transport_words() const;
   // The measuring tools (Tools menu): which are on, and the stopwatch.
   const MeasuringTools& tools() const { return tools_; }
-  // A script named on the command line that does not build yet: its path, "" when none.
-  const std::string& failed_script() const { return failed_script_; }
-  const std::string& failed_error() const { return failed_error_; }
+  // A script named on the command line that does not build yet: its path ("" when none) and why.
+  const FailedScript& failed_script() const { return failed_; }
   // The running lesson's script failed while it ran, not when it loaded: an expect row's
   // function (the theory table is then empty), an every-step function (the run stopped) or a
   // plot's theory curve (drawn only once the theory shows).
@@ -111,7 +115,7 @@ class Classroom {
   std::string open(const std::string& name_or_path);
   // Writes the record (time and every probe, one row per frame) as CSV into the output
   // folder; returns the path, or throws std::runtime_error.
-  std::string export_history();
+  std::string export_history() const { return exports_.export_history(*playback_, mystery_.hidden()); }
 
   // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
   // Its actions are the mystery panel's (classroom/mystery_panel.h); these forward to it.
@@ -122,8 +126,6 @@ class Classroom {
   void reveal_mystery() { mystery_.reveal(); }
   // The class's answers, as typed in the Mystery tab.
   void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k) { mystery_.answer(mu_s, mu_k); }
-  // What the class must not see now.
-  HiddenValues hidden_values() const { return mystery_.hidden(); }
 
   // Opens a prepared setup (classroom_state/setup_file.h): its lesson with its values, lock and mystery, at
   // t = 0. On failure the running lesson keeps running and the message ("file:line: ...") is
@@ -142,28 +144,23 @@ class Classroom {
   // Where the named control was drawn in the last frame ("mu_s slider", "mu_s value",
   // "mu_s reset", "play", "step", "reset", "speed", "scrub"...), for tests that click it.
   std::optional<ImRect> control(const std::string& name) const;
-  // The Cheapest setting tab's tolerance as typed, and whether a search was started.
-  double cheapest_tolerance() const { return cheapest_.tolerance; }
-  bool cheapest_started() const { return cheapest_.started(); }
-  // The Stability map tab's chart as last drawn: the map and this lesson's marks.
-  const Chart& stability_chart() const { return stability_.chart; }
-  bool shown(const std::string& control_name) const;  // --lock
+  // The Cheapest setting tab (its tolerance as typed, whether a search was started), and the
+  // Stability map tab (its chart as last drawn: the map and this lesson's marks).
+  const CheapestSettingTab& cheapest_setting_tab() const { return cheapest_; }
+  const StabilityMapTab& stability_map_tab() const { return stability_; }
+  bool shown(const std::string& control_name) const { return lock_.shown(control_name); }  // --lock
   // Why the Lesson menu's lessons are greyed, and how to unlock them; "" when nothing is locked.
-  std::string lock_words() const;
+  std::string lock_words() const { return lock_.words(browser_); }
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
-  // bodies. The first one, or the one whose strip holds `point`.
+  // bodies. The first one.
   const Camera& world_camera() const { return hand_.cameras.front(); }
-  const Camera& world_camera_at(ImVec2 point) const { return hand_.camera_at(point); }
   // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
   // (or opening another lesson) puts the view back.
   const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
   ClassPredictions& predictions() { return predictions_.predictions; }
-  bool theory_hidden() const;
-  // A new round of predictions (the View menu): the answers cleared, the theory hidden again,
-  // the run back at t = 0.
-  void predict_again();
+  bool theory_hidden() const { return predictions_.theory_hidden(playback_->lesson(), window_.predictions); }
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
     const auto found = parameters_.errors.find(name);
@@ -175,10 +172,8 @@ class Classroom {
   std::string gauge_figures() const;
 
  private:
-  // The keys the window layer reported since the last frame, at the frame's start; and what
-  // they leave for its end (ImGui's popups closed, Enter let go, the run played).
-  void handle_keys();
-  void after_keys();
+  // The frame's shortcuts (the keys routing left for the window), each given to what it drives.
+  void shortcuts(const Shortcuts& keys);
   void menu_bar();
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
   void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
@@ -187,28 +182,20 @@ class Classroom {
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
   ParametersOnShow parameters_on_show() const;
-  void remember(const std::string& name);  // the last item's place, under `name`
-  void messages(ImVec2 corner, float width);
+  void remember(const std::string& name) { remember_item(controls_, name); }  // the last item's place, under `name`
   // A value the Parameters panel asked for: a number as it is, a typed text read by the lesson.
   void set_value(const std::string& name, const lessons::GivenValue& value);
   void change_settings(const StepSettings& settings);
-  // The script files' watchers, given the wall time since they last looked; true when what
-  // they found changes what the window shows.
+  // The script files' watchers (the running lesson's, a failed one's), given the wall time since
+  // they last looked; true when what they found changes what the window shows.
   bool watch_files(double wall_seconds);
-  bool try_failed_script(double wall_seconds);
-  // A new file in the output folder named after the lesson's moment; never an existing one.
-  std::string output_path(const std::string& stem, const std::string& extension) const;
-  void request_screenshot();
-  void save_history();
-  void check_lock(const lessons::Lesson& lesson) const;  // throws InvalidInput naming the stranger
 
   std::unique_ptr<Playback> playback_;
   WindowSettings window_;
   MeasuringTools tools_;
-  std::set<std::string> lock_;
+  LessonLock lock_;
   std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
-  std::string output_folder_;
-  bool script_paths_ = true;
+  ScriptWords script_words_;
   bool browser_ = false;
   bool open_file_request_ = false;
   // The readings with their error in script_words, for the theory panel (script_paths off).
@@ -217,22 +204,19 @@ class Classroom {
  public:
   // A text as the class sees it: with script_paths off, every script's path in it ("path:line:
   // ...", "Reloaded path.") is its file's name alone.
-  std::string script_words(const std::string& text) const;
+  std::string script_words(const std::string& text) const { return script_words_(text); }
 
  private:
   const Fonts* fonts_ = nullptr;
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
+  KeyRouting keys_;
   PredictionPanel predictions_;
   ParametersPanel parameters_;
   TransportBar transport_;
   WorldHand hand_;
-  std::optional<std::string> screenshot_request_;
-  std::vector<std::pair<Key, bool>> taps_;  // keys reported since the last frame, with Ctrl
-  std::optional<bool> enter_for_typing_;  // Enter pressed for Space in a number box: whether it was down before
-  bool play_after_typing_ = false;        // ... and the run to play when its value is set
-  bool close_menus_ = false;              // a key pressed while a menu was open
+  Exports exports_;
   CheapestSettingTab cheapest_;
   StabilityMapTab stability_;
   MysteryPanel mystery_;
@@ -240,21 +224,9 @@ class Classroom {
   OpenScriptDialog open_script_;
   bool full_screen_toggle_ = false;
   bool quit_ = false;
-  std::string status_;
-  // A status that tells of the run's moment (predict_again's), with the frame it was said at and
-  // whether the theory was then kept back: said only while both still hold (the trial read "the
-  // run is back at t = 0" at t = 2.49 s with the theory shown).
-  struct Moment {
-    std::string text;
-    long frame = 0;
-    bool theory_hidden = false;
-  };
-  std::optional<Moment> status_moment_;
-  // A script named on the command line that did not build: shown and watched until it does.
-  std::string failed_script_, failed_error_;
-  double since_failed_check_ = 0.0;
+  StatusLine status_;
+  FailedScript failed_;
   int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
-  FileStamp failed_stamp_;
 };
 
 }  // namespace frictionlab::ui

@@ -417,15 +417,48 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
     const auto& rows = playback.readings().expectations;
     const float height = std::max(predictions_contents_height(on_show, rows, predictions, width, withheld),
                                   predictions_contents_height(on_show, rows, other, width, withheld));
-    if (planned && planned->lesson_path == on_show.path() && planned->questions == on_show.predictions().size() &&
-        planned->width == width && planned->font_size == font_size) {
+    if (planned && planned->lesson_path == on_show.path() && planned->script_loads == playback.script_loads() &&
+        planned->questions == on_show.predictions().size() && planned->width == width && planned->font_size == font_size) {
       planned->outgrown = height > planned->height;
       return planned->height;
     }
-    planned = PlannedHeight{on_show.path(), on_show.predictions().size(), width, font_size, height, false};
+    planned = PlannedHeight{on_show.path(), playback.script_loads(), on_show.predictions().size(), width, font_size, height, false};
     return height;
   };
   style.predictions_outgrew = [this] { return planned && planned->outgrown; };
+}
+
+bool PredictionPanel::theory_hidden(const lessons::Lesson& lesson, bool asking) const {
+  return ui::theory_hidden(lesson, predictions, asking);
+}
+
+void PredictionPanel::reveal_key(const lessons::Lesson& lesson, bool asking) {
+  if (theory_hidden(lesson, asking)) {
+    predictions.revealed = true;
+  } else if (predictions.revealed && asking && !lesson.predictions().empty()) {
+    predictions.revealed = false;
+  }
+}
+
+std::string PredictionPanel::predict_again(Playback& playback) {
+  predictions = {};
+  playback.reset();
+  return "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
+}
+
+std::optional<std::string> PredictionPanel::menu_items(bool& asking, Playback& playback, ControlPlaces& controls) {
+  // Off: the theory shows from the start, as for a teacher who takes no predictions.
+  ImGui::MenuItem("Ask for predictions first", nullptr, &asking);
+  remember_item(controls, "Ask for predictions first");
+  if (ImGui::MenuItem("Reveal the theory", "T", false, theory_hidden(playback.lesson(), asking))) predictions.revealed = true;
+  // A second round: the teacher changed a value after the reveal, and the class predicts anew
+  // (before, the theory stayed up and the old answers were judged against the new run).
+  const bool answered = predictions.revealed || !predictions.answers.empty();
+  const bool asks = asking && !playback.lesson().predictions().empty();
+  std::optional<std::string> said;
+  if (ImGui::MenuItem("Predict again (new answers, theory hidden)", nullptr, false, asks && answered)) said = predict_again(playback);
+  remember_item(controls, "Predict again");
+  return said;
 }
 
 }  // namespace frictionlab::ui

@@ -60,14 +60,35 @@ struct PredictionPanel {
   // value changes what "measured:" says (stacked_blocks at its slowest pull: "runs off the floor
   // first", a line longer), and a height worked out anew folded the Parameters panel under the
   // teacher's pointer as the slider was let go. A taller text scrolls in its tab instead.
+  // A lesson opened, or its script read again (F5, the file watcher: its questions may read
+  // otherwise), is planned anew.
   struct PlannedHeight {
     std::string lesson_path;
+    long script_loads = 0;
     std::size_t questions = 0;
     float width = 0.0f, font_size = 0.0f;
     float height = 0.0f;
     bool outgrown = false;  // the answers need more than `height` now
   };
   std::optional<PlannedHeight> planned;
+
+  // A lesson opens (the command line's, another from the Lesson menu, a setup's): its answers (a
+  // setup's, or none) and the column planned anew for its questions.
+  void begin(ClassPredictions opened) {
+    predictions = std::move(opened);
+    planned.reset();
+  }
+  // Whether the theory is kept from the class now. `asking`: the teacher asks for predictions.
+  bool theory_hidden(const lessons::Lesson& lesson, bool asking) const;
+  // T: reveals the theory; T again hides it, the answers as they were (a reveal by mistake, a
+  // click that landed on the button before the class answered, undone with one key).
+  void reveal_key(const lessons::Lesson& lesson, bool asking);
+  // View > Predict again: the answers cleared, the theory hidden, the run back at t = 0 (answers
+  // are typed before the run). Returns what the status line says of that moment.
+  std::string predict_again(Playback& playback);
+  // Its items in the View menu (ask for predictions first, reveal, predict again). Returns what
+  // the status line says of the moment when Predict again was chosen.
+  std::optional<std::string> menu_items(bool& asking, Playback& playback, ControlPlaces& controls);
 
   // An answer is the class's for the values it was given at. At t = 0 (where answers are typed,
   // and where a changed value or R brings a run), a row whose theory is not what it was when the

@@ -1,5 +1,6 @@
 // The setup dialog (classroom/setup_dialog.h): the window's state as a setup file
-// (classroom_state/setup_file.h), saving it, and opening one in place of the running lesson.
+// (classroom_state/setup_file.h) and saving it; the classroom opens one in place of the running
+// lesson (Classroom::open_setup).
 #include "classroom/setup_dialog.h"
 
 #include <cstdio>
@@ -10,29 +11,6 @@
 #include "draw/text_record.h"
 
 namespace frictionlab::ui {
-
-std::string Classroom::open_setup(const std::string& path) {
-  try {
-    ClassroomOptions base;
-    base.window = window_;
-    const ClassroomOptions options = setup_options(path, base);
-    std::optional<Mystery> mystery;
-    auto next = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
-    next->set_speed(playback_->speed());
-    // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
-    playback_ = std::move(next);
-    lock_ = std::set<std::string>(options.lock.begin(), options.lock.end());
-    setup_dialog_.lock_from = options.lock_from;
-    // The setup's predictions, never the last lesson's; asked or not as it says (else as before).
-    predictions_.predictions = options.predictions;
-    window_.predictions = options.window.predictions;
-    forget_interaction();
-    mystery_.begin(std::move(mystery));
-    return "";
-  } catch (const InvalidInput& error) {
-    return error.what();
-  }
-}
 
 std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const Theme& colours,
                               ControlPlaces& controls) {
@@ -131,16 +109,6 @@ std::string SetupDialog::save(const std::string& path, const PreparedSetup& setu
   } catch (const InvalidInput& error) {
     return error.what();
   }
-}
-
-PreparedSetup Classroom::current_setup(const std::string& path) const {
-  return SetupDialog::of_window(path, playback_->lesson(), lock_, mystery_, window_.predictions, predictions_.predictions);
-}
-
-std::string Classroom::save_setup(const std::string& path) {
-  std::string why = SetupDialog::save(path, current_setup(path), playback_->lesson());
-  if (why.empty()) status_ = "Setup saved to " + path;
-  return why;
 }
 
 }  // namespace frictionlab::ui

@@ -1,6 +1,6 @@
 // The Lesson menu's setup dialog (classroom_state/setup_file.h): it opens a prepared setup or
-// saves the window as one, remembers which setup the teacher's lock came from, and makes a setup
-// from the window's parts. It owns that state and draws itself, as each of Dear ImGui's demo
+// saves the window as one, and makes a setup from the window's parts (which setup the teacher's
+// lock came from is the lock's, classroom/lesson_lock.h). It owns that state and draws itself, as each of Dear ImGui's demo
 // windows does: the menu asks for it, and the classroom draws it after the frame's panels.
 // Opening a setup replaces the lesson every panel reads, and a setup holds every panel's state,
 // so the classroom composes those (Classroom::open_setup, current_setup, save_setup in
@@ -26,7 +26,6 @@ struct SetupDialog {
   bool asked = false;                                       // asked for this frame
   char path[512] = {};
   std::string error;
-  std::string lock_from;  // the setup file the lock came from; "": the command line's --lock
 
   void ask(Kind which) {
     kind = which;

@@ -386,6 +386,7 @@ bool Playback::reload() {
     return false;
   }
   script_error_.clear();
+  ++script_loads_;
   after_rebuild();
   notice_ = "Reloaded " + lesson_->path() + ".";
   notice_frame_.reset();

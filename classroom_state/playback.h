@@ -90,6 +90,10 @@ class Playback {
   // window shows (a reload, the file gone or back): a sleeping window then draws a frame.
   bool watch_file(double wall_seconds);
   bool reload();  // now (F5); false with script_error() set on failure
+  // How many times the script was read: 1 as the lesson opens, one more for each reload that
+  // built (F5, the file watcher, the page's Apply), after which what was planned for the
+  // script's words (the predictions' column) is planned anew.
+  long script_loads() const { return script_loads_; }
   // The file as it is now is the one the lesson knows: whoever wrote it (the web page's
   // editor, which reloads it itself and puts the last good text back after a failed Apply)
   // has already reloaded it, and the watcher must not run it again from t = 0 on its next look.
@@ -150,6 +154,7 @@ class Playback {
   double since_readings_ = 0.0;
   double since_file_check_ = 0.0;
   FileStamp file_stamp_;
+  long script_loads_ = 1;
   std::size_t next_action_ = 0;  // the first action of the record not yet applied
   std::string script_error_;
   bool file_missing_ = false;  // script_error_ says the file is gone, not why a reload failed

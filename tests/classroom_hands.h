@@ -1,6 +1,7 @@
 // The classroom window on an EGL context with no display, driven by a user's hands: frames
 // drawn with every text recorded, clicks, drags, keys and typing written to ImGui's io across
-// frames (Dear ImGui 1.86 has no event API). For the mystery, setup and force gauge tests.
+// frames (Dear ImGui 1.86 has no event API). For the mystery, setup and force gauge tests; a
+// teacher's prepared setup for the setup tests.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -56,6 +57,42 @@ inline ClassroomOptions gauge_options(const std::string& lesson, std::map<std::s
   options.window.projector = projector;
   options.window.predictions = false;
   return options;
+}
+
+// A teacher's preparation, as the setup tests save and open it: values, a lock, a mystery and
+// step settings of their own.
+inline ClassroomOptions prepared_setup_options() {
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  options.overrides = {{"mass", "1.5"}, {"k", "80"}, {"block", "plastic"}};
+  options.lock = {"mass", "k", "friction"};
+  options.mystery = MysteryChoice{"plastic/wood", 42};
+  options.settings.hz = 480.0;
+  options.settings.substeps = 2;
+  options.settings.treatment = FrictionTreatment::threshold;
+  return options;
+}
+
+// Everything prepared_setup_options holds, as the window has it now.
+inline void expect_prepared_setup(Classroom& window, const std::string& where) {
+  const lessons::Lesson& lesson = window.playback().lesson();
+  EXPECT_EQ(std::filesystem::path(lesson.path()).filename(), "spring_pull.lua") << where;
+  EXPECT_EQ(lesson.parameter("mass").value, 1.5) << where;
+  EXPECT_EQ(lesson.parameter("k").value, 80.0) << where;
+  EXPECT_EQ(lesson.parameter("block").shown(), "plastic") << where;
+  EXPECT_EQ(lesson.parameter("pull_speed").value, 0.1) << where << ": a value the teacher left is the script's";
+  EXPECT_TRUE(window.shown("mass") && window.shown("k") && window.shown("friction")) << where;
+  EXPECT_FALSE(window.shown("mu_s") || window.shown("pull_speed") || window.shown("hz")) << where << ": the lock";
+  ASSERT_TRUE(window.mystery().has_value()) << where;
+  EXPECT_EQ(window.mystery()->choice(), (MysteryChoice{"plastic/wood", 42})) << where;
+  EXPECT_FALSE(window.mystery()->revealed()) << where;
+  EXPECT_EQ(lesson.parameter("mu_s").value, mystery_values(42).mu_s) << where << ": drawn again from the seed";
+  EXPECT_EQ(lesson.parameter("mu_k").value, mystery_values(42).mu_k) << where;
+  EXPECT_EQ(lesson.settings().hz, 480.0) << where;
+  EXPECT_EQ(lesson.settings().substeps, 2) << where;
+  EXPECT_EQ(lesson.settings().treatment, FrictionTreatment::threshold) << where;
+  EXPECT_EQ(lesson.scene().frame(), 0) << where << ": it opens at t = 0";
+  EXPECT_FALSE(window.playback().playing()) << where;
 }
 
 class ClassroomHands {

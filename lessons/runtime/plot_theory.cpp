@@ -24,6 +24,13 @@ struct SamplingJob {
   TheorySamples* out = nullptr;
 };
 
+// Raises a script error with `message` from inside a function the sandbox called: it ends the
+// call with that message, as the script's own error() would.
+int raise_script_error(lua_State* state, const std::string& message) {
+  lua_pushstring(state, message.c_str());
+  return lua_error(state);
+}
+
 Sample evaluate(lua_State* state, LessonBuild& build, std::size_t plot, std::size_t curve, double x) {
   const int reference = build.plot_functions[plot].curves[curve];
   lua_rawgeti(state, LUA_REGISTRYINDEX, reference);
@@ -49,8 +56,7 @@ Sample evaluate(lua_State* state, LessonBuild& build, std::size_t plot, std::siz
                                 declared.theory[curve].label + "' gave " + problem + " at " +
                                 (declared.kind == PlotKind::time ? "t" : declared.x) + " = " + number_text(x) +
                                 "; it must give y (a number), two numbers (a vertical segment) or nil where it does not apply";
-    lua_pushstring(state, message.c_str());
-    lua_error(state);
+    raise_script_error(state, message);
   }
   return sample;
 }
@@ -145,6 +151,20 @@ int sample_plot(lua_State* state) {
   return 0;
 }
 
+// Calls each of a plot's functions kept in the registry (those set: not LUA_NOREF) with no
+// argument, and hands its one result, on the stack's top, to `take` with the function's place
+// in the list; `take` raises the script's error for a result that is no answer.
+template <typename Take>
+void call_each(lua_State* state, const std::vector<int>& functions, Take take) {
+  for (std::size_t place = 0; place < functions.size(); ++place) {
+    if (functions[place] == LUA_NOREF) continue;
+    lua_rawgeti(state, LUA_REGISTRYINDEX, functions[place]);
+    lua_call(state, 0, 1);
+    take(place);
+    lua_pop(state, 1);
+  }
+}
+
 struct ActiveJob {
   std::size_t plot = 0;
   std::vector<int>* out = nullptr;
@@ -153,22 +173,15 @@ struct ActiveJob {
 int ask_active(lua_State* state) {
   const auto* job = static_cast<const ActiveJob*>(lua_touserdata(state, 1));
   LessonBuild& build = build_of(state);
-  const PlotFunctions& functions = build.plot_functions[job->plot];
-  for (std::size_t curve = 0; curve < functions.active.size(); ++curve) {
-    if (functions.active[curve] == LUA_NOREF) continue;
-    lua_rawgeti(state, LUA_REGISTRYINDEX, functions.active[curve]);
-    lua_call(state, 0, 1);
+  call_each(state, build.plot_functions[job->plot].active, [&](std::size_t curve) {
     if (!lua_isboolean(state, -1)) {
       const Plot& declared = build.plots[job->plot];
-      const std::string message = declared.theory[curve].declared_at + ": plot '" + declared.title + "': theory curve '" +
-                                  declared.theory[curve].label + "': active gave " + describe(state, -1) +
-                                  "; it must give true (the branch applies now) or false";
-      lua_pushstring(state, message.c_str());
-      lua_error(state);
+      raise_script_error(state, declared.theory[curve].declared_at + ": plot '" + declared.title + "': theory curve '" +
+                                    declared.theory[curve].label + "': active gave " + describe(state, -1) +
+                                    "; it must give true (the branch applies now) or false");
     }
     (*job->out)[curve] = lua_toboolean(state, -1) ? 1 : 0;
-    lua_pop(state, 1);
-  }
+  });
   return 0;
 }
 
@@ -182,23 +195,34 @@ int evaluate_levels(lua_State* state) {
   LessonBuild& build = build_of(state);
   const PlotFunctions& functions = build.plot_functions[job->plot];
   job->out->assign(functions.levels.size(), NAN);
-  for (std::size_t level = 0; level < functions.levels.size(); ++level) {
-    lua_rawgeti(state, LUA_REGISTRYINDEX, functions.levels[level]);
-    lua_call(state, 0, 1);
+  call_each(state, functions.levels, [&](std::size_t level) {
     const bool number = lua_type(state, -1) == LUA_TNUMBER && std::isfinite(lua_tonumber(state, -1));
     if (!number && !lua_isnil(state, -1)) {
       const Plot& declared = build.plots[job->plot];
-      const std::string message = declared.levels[level].declared_at + ": plot '" + declared.title + "': level '" +
-                                  declared.levels[level].label + "' gave " +
-                                  (lua_type(state, -1) == LUA_TNUMBER ? "a number that is not finite" : describe(state, -1)) +
-                                  "; it must give y (a number) or nil when there is no such level now";
-      lua_pushstring(state, message.c_str());
-      lua_error(state);
+      raise_script_error(state, declared.levels[level].declared_at + ": plot '" + declared.title + "': level '" +
+                                    declared.levels[level].label + "' gave " +
+                                    (lua_type(state, -1) == LUA_TNUMBER ? "a number that is not finite" : describe(state, -1)) +
+                                    "; it must give y (a number) or nil when there is no such level now");
     }
     if (number) (*job->out)[level] = lua_tonumber(state, -1);
-    lua_pop(state, 1);
-  }
+  });
   return 0;
+}
+
+// Runs `function` in the sandbox with `job` as its one argument, in one budget. With `error`, a
+// script error it raises is kept there (Lesson::theory_error says it) before it is thrown on,
+// and a run without one clears it.
+void run_job(LessonBuild& build, lua_CFunction function, void* job, std::string* error = nullptr) {
+  lua_State* state = build.sandbox.state();
+  lua_pushcfunction(state, function);
+  lua_pushlightuserdata(state, job);
+  try {
+    build.sandbox.call(1, 0);
+  } catch (const ScriptError& raised) {
+    if (error != nullptr) *error = raised.what();
+    throw;
+  }
+  if (error != nullptr) error->clear();
 }
 
 }  // namespace
@@ -209,41 +233,25 @@ std::vector<double> Lesson::plot_levels(std::size_t plot) {
   std::vector<double> levels;
   if (functions.levels.empty()) return levels;
   LevelsJob job{plot, &levels};
-  lua_State* state = build.sandbox.state();
-  lua_pushcfunction(state, evaluate_levels);
-  lua_pushlightuserdata(state, &job);
-  try {
-    build.sandbox.call(1, 0);
-  } catch (const ScriptError& error) {
-    functions.levels_error = error.what();
-    throw;
-  }
-  functions.levels_error.clear();
+  run_job(build, evaluate_levels, &job, &functions.levels_error);
   return levels;
 }
 
 void try_theory_curves(LessonBuild& build) {
-  lua_State* state = build.sandbox.state();
   for (std::size_t plot = 0; plot < build.plots.size(); ++plot) {
     if (!build.plot_functions[plot].levels.empty()) {
       // The levels too, so that a level that fails fails when the lesson loads.
       std::vector<double> levels;
       LevelsJob reading{plot, &levels};
-      lua_pushcfunction(state, evaluate_levels);
-      lua_pushlightuserdata(state, &reading);
-      build.sandbox.call(1, 0);
+      run_job(build, evaluate_levels, &reading);
     }
     if (build.plot_functions[plot].curves.empty()) continue;
     TheorySamples samples;
     SamplingJob job{plot, 0.0, 1.0, 3, &samples};
-    lua_pushcfunction(state, sample_plot);
-    lua_pushlightuserdata(state, &job);
-    build.sandbox.call(1, 0);
+    run_job(build, sample_plot, &job);
     std::vector<int> active(build.plot_functions[plot].curves.size(), -1);
     ActiveJob asking{plot, &active};
-    lua_pushcfunction(state, ask_active);
-    lua_pushlightuserdata(state, &asking);
-    build.sandbox.call(1, 0);
+    run_job(build, ask_active, &asking);
   }
 }
 
@@ -273,15 +281,7 @@ const TheorySamples& Lesson::theory_samples(std::size_t plot, double x_low, doub
   fresh.x_high = x_high;
   if (!functions.curves.empty()) {
     SamplingJob job{plot, x_low, x_high, count, &fresh};
-    lua_State* state = build.sandbox.state();
-    lua_pushcfunction(state, sample_plot);
-    lua_pushlightuserdata(state, &job);
-    try {
-      build.sandbox.call(1, 0);  // one budget for the whole plot
-    } catch (const ScriptError& error) {
-      functions.samples_error = error.what();
-      throw;
-    }
+    run_job(build, sample_plot, &job, &functions.samples_error);  // one budget for the whole plot
   }
   functions.samples_error.clear();
   functions.samples = std::move(fresh);
@@ -296,17 +296,7 @@ std::vector<int> Lesson::theory_active(std::size_t plot) {
   std::vector<int> active(functions.curves.size(), -1);
   if (std::none_of(functions.active.begin(), functions.active.end(), [](int f) { return f != LUA_NOREF; })) return active;
   ActiveJob job{plot, &active};
-  lua_State* state = build.sandbox.state();
-  lua_pushcfunction(state, ask_active);
-  lua_pushlightuserdata(state, &job);
-  PlotFunctions& asked = build.plot_functions.at(plot);
-  try {
-    build.sandbox.call(1, 0);
-  } catch (const ScriptError& error) {
-    asked.active_error = error.what();
-    throw;
-  }
-  asked.active_error.clear();
+  run_job(build, ask_active, &job, &build.plot_functions.at(plot).active_error);
   return active;
 }
 

@@ -593,129 +593,128 @@ int probe(lua_State* state) {
   });
 }
 
-// theory = { { "label", function(x) ... end, active = function() ... end }, ... }: the
-// curves kept in the registry beside the plot, in the build's plot_functions.
-void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
-  const std::string example = "as in theory = { { \"sliding: f = \u2212\u03bck\u00b7N\", function(F) return -param.mu_k * N end } }";
-  fields.push("theory");
+// What a plot's list of labelled functions ({ "label", function ... end }, ...: theory's curves,
+// the levels) is called in its messages, and what else an entry may hold.
+struct LabelledList {
+  const char* field;           // "theory"
+  const char* entries;         // "curves": the field must be a list of them
+  const char* entry;           // "theory curve": entry 1, entry 'label'
+  std::string example;         // the whole field, as the guide writes it
+  std::string shape;           // an entry that is not a table: what one must be
+  std::string label_first;     // an entry without its label first: why it needs one, with an example
+  const char* also = nullptr;  // the one named field an entry may hold besides ("active"), or none
+  std::string holds;           // a misspelt field: what an entry holds
+  std::string function_words;  // no function second: of what it is, and what it gives
+};
+
+// One entry as read: its table on the stack (for the field `also`), its label, its name in
+// messages, where its function was written, and the function kept in the registry.
+struct LabelledFunction {
+  int entry = 0;
+  std::string label, named, declared_at;
+  int function = LUA_NOREF;
+};
+
+// Reads the field `words.field` of a plot{} as a list of labelled functions, handing each entry
+// to `each` in order; nil is no list. Refuses, in `words`' terms, anything else.
+void read_labelled_list(lua_State* state, Fields& fields, const LabelledList& words,
+                        const std::function<void(const LabelledFunction&)>& each) {
+  fields.push(words.field);
   if (lua_isnil(state, -1)) {
     lua_pop(state, 1);
     return;
   }
   if (!lua_istable(state, -1) || lua_rawlen(state, -1) == 0) {
-    throw InvalidInput(fields.what() + ": theory must be a list of curves, " + example + "; got " + describe(state, -1));
+    throw InvalidInput(fields.what() + ": " + words.field + " must be a list of " + words.entries + ", " + words.example +
+                       "; got " + describe(state, -1));
   }
   const int list = lua_gettop(state);
   for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, list)); ++i) {
-    const std::string which = fields.what() + ": theory curve " + std::to_string(i);
+    const std::string which = fields.what() + ": " + words.entry + " " + std::to_string(i);
     lua_rawgeti(state, list, i);
-    const int curve = lua_gettop(state);
-    if (!lua_istable(state, curve)) {
-      throw InvalidInput(which + " must be { \"label\", function(x) return y end }; got " + describe(state, curve));
-    }
-    lua_rawgeti(state, curve, 1);
+    LabelledFunction read;
+    read.entry = lua_gettop(state);
+    if (!lua_istable(state, read.entry)) throw InvalidInput(which + words.shape + "; got " + describe(state, read.entry));
+    lua_rawgeti(state, read.entry, 1);
     if (lua_type(state, -1) != LUA_TSTRING || lua_rawlen(state, -1) == 0) {
-      throw InvalidInput(which + " needs its label first (the legend names it), as in { \"sticking: f = \u2212F\", "
-                         "function(F) ... end }; got " + describe(state, -1));
+      throw InvalidInput(which + " needs its label first " + words.label_first + "; got " + describe(state, -1));
     }
-    TheoryCurve theory;
-    theory.label = lua_tostring(state, -1);
+    read.label = lua_tostring(state, -1);
     lua_pop(state, 1);
-    const std::string named = fields.what() + ": theory curve '" + theory.label + "'";
-    // Only the label, the function and active: a misspelt field is said, not ignored.
+    read.named = fields.what() + ": " + words.entry + " '" + read.label + "'";
+    // Only the label, the function and `also`: a misspelt field is said, not ignored.
     lua_pushnil(state);
-    while (lua_next(state, curve) != 0) {
+    while (lua_next(state, read.entry) != 0) {
       lua_pop(state, 1);
       const bool position = lua_isinteger(state, -1) && (lua_tointeger(state, -1) == 1 || lua_tointeger(state, -1) == 2);
-      const bool active = lua_type(state, -1) == LUA_TSTRING && std::string(lua_tostring(state, -1)) == "active";
-      if (!position && !active) {
+      const bool also = words.also != nullptr && lua_type(state, -1) == LUA_TSTRING && std::string(lua_tostring(state, -1)) == words.also;
+      if (!position && !also) {
         const std::string key = lua_type(state, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(state, -1)) + "'" : describe(state, -1);
-        throw InvalidInput(named + ": unknown field " + key + "; a curve is a label, a function and perhaps active = function() ... end");
+        throw InvalidInput(read.named + ": unknown field " + key + "; " + words.holds);
       }
     }
-    lua_rawgeti(state, curve, 2);
+    lua_rawgeti(state, read.entry, 2);
     if (!lua_isfunction(state, -1)) {
-      throw InvalidInput(named + " needs a function of " + (declared.kind == PlotKind::time ? "t" : "x (" + declared.x + ")") +
-                         " second, returning y or nil where it does not apply; got " + describe(state, -1));
+      throw InvalidInput(read.named + " needs a function " + words.function_words + "; got " + describe(state, -1));
     }
-    require_script_function(state, -1, named);
+    require_script_function(state, -1, read.named);
     lua_Debug debug;
     lua_pushvalue(state, -1);
     lua_getinfo(state, ">S", &debug);
-    theory.declared_at = std::string(debug.source[0] == '@' ? debug.source + 1 : debug.source) + ":" + std::to_string(debug.linedefined);
-    functions.curves.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
-    lua_getfield(state, curve, "active");
+    read.declared_at = std::string(debug.source[0] == '@' ? debug.source + 1 : debug.source) + ":" + std::to_string(debug.linedefined);
+    read.function = luaL_ref(state, LUA_REGISTRYINDEX);
+    each(read);
+    lua_settop(state, list);
+  }
+  lua_pop(state, 1);
+}
+
+// theory = { { "label", function(x) ... end, active = function() ... end }, ... }: the
+// curves kept in the registry beside the plot, in the build's plot_functions.
+void read_theory(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
+  LabelledList words{"theory", "curves", "theory curve",
+                     "as in theory = { { \"sliding: f = \u2212\u03bck\u00b7N\", function(F) return -param.mu_k * N end } }",
+                     " must be { \"label\", function(x) return y end }",
+                     "(the legend names it), as in { \"sticking: f = \u2212F\", function(F) ... end }", "active",
+                     "a curve is a label, a function and perhaps active = function() ... end",
+                     std::string("of ") + (declared.kind == PlotKind::time ? "t" : "x (" + declared.x + ")") +
+                         " second, returning y or nil where it does not apply"};
+  read_labelled_list(state, fields, words, [&](const LabelledFunction& read) {
+    TheoryCurve theory;
+    theory.label = read.label;
+    theory.declared_at = read.declared_at;
+    functions.curves.push_back(read.function);
+    lua_getfield(state, read.entry, "active");
     if (lua_isnil(state, -1)) {
       lua_pop(state, 1);
       functions.active.push_back(LUA_NOREF);
     } else {
       if (!lua_isfunction(state, -1)) {
-        throw InvalidInput(named + ": active must be a function saying whether this branch applies now, as in "
+        throw InvalidInput(read.named + ": active must be a function saying whether this branch applies now, as in "
                            "active = function() return touch.state == \"slipping\" end; got " + describe(state, -1));
       }
-      require_script_function(state, -1, named + ": active");
+      require_script_function(state, -1, read.named + ": active");
       functions.active.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
       theory.says_when_active = true;
     }
     declared.theory.push_back(std::move(theory));
-    lua_settop(state, list);
-  }
-  lua_pop(state, 1);
+  });
 }
 
 // levels = { { "label", function() ... end }, ... }: the levels the plot marks across its data,
 // their functions kept in the registry beside the plot, in the build's plot_functions.
 void read_levels_field(lua_State* state, Fields& fields, Plot& declared, PlotFunctions& functions) {
   const std::string example = "as in levels = { { \"−μs·N\", function() return -param.mu_s * N end } }";
-  fields.push("levels");
-  if (lua_isnil(state, -1)) {
-    lua_pop(state, 1);
-    return;
-  }
-  if (!lua_istable(state, -1) || lua_rawlen(state, -1) == 0) {
-    throw InvalidInput(fields.what() + ": levels must be a list of levels, " + example + "; got " + describe(state, -1));
-  }
-  const int list = lua_gettop(state);
-  for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(state, list)); ++i) {
-    const std::string which = fields.what() + ": level " + std::to_string(i);
-    lua_rawgeti(state, list, i);
-    const int entry = lua_gettop(state);
-    if (!lua_istable(state, entry)) {
-      throw InvalidInput(which + " must be { \"label\", function() return y end }; got " + describe(state, entry));
-    }
-    lua_rawgeti(state, entry, 1);
-    if (lua_type(state, -1) != LUA_TSTRING || lua_rawlen(state, -1) == 0) {
-      throw InvalidInput(which + " needs its label first (the plot writes it beside the line), " + example + "; got " +
-                         describe(state, -1));
-    }
+  LabelledList words{"levels", "levels", "level", example, " must be { \"label\", function() return y end }",
+                     "(the plot writes it beside the line), " + example, nullptr, "a level is a label and a function",
+                     "second, of no argument, giving the level's y (or nil for none now)"};
+  read_labelled_list(state, fields, words, [&](const LabelledFunction& read) {
     PlotLevel level;
-    level.label = lua_tostring(state, -1);
-    lua_pop(state, 1);
-    const std::string named = fields.what() + ": level '" + level.label + "'";
-    // Only the label and the function: a misspelt field is said, not ignored.
-    lua_pushnil(state);
-    while (lua_next(state, entry) != 0) {
-      lua_pop(state, 1);
-      if (!(lua_isinteger(state, -1) && (lua_tointeger(state, -1) == 1 || lua_tointeger(state, -1) == 2))) {
-        const std::string key = lua_type(state, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(state, -1)) + "'" : describe(state, -1);
-        throw InvalidInput(named + ": unknown field " + key + "; a level is a label and a function");
-      }
-    }
-    lua_rawgeti(state, entry, 2);
-    if (!lua_isfunction(state, -1)) {
-      throw InvalidInput(named + " needs a function second, of no argument, giving the level's y (or nil for none now); got " +
-                         describe(state, -1));
-    }
-    require_script_function(state, -1, named);
-    lua_Debug debug;
-    lua_pushvalue(state, -1);
-    lua_getinfo(state, ">S", &debug);
-    level.declared_at = std::string(debug.source[0] == '@' ? debug.source + 1 : debug.source) + ":" + std::to_string(debug.linedefined);
-    functions.levels.push_back(luaL_ref(state, LUA_REGISTRYINDEX));
+    level.label = read.label;
+    level.declared_at = read.declared_at;
+    functions.levels.push_back(read.function);
     declared.levels.push_back(std::move(level));
-    lua_settop(state, list);
-  }
-  lua_pop(state, 1);
+  });
 }
 
 int plot(lua_State* state) {

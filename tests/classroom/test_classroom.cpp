@@ -620,19 +620,19 @@ TEST(Classroom, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
     ScriptFile script(text);
     Driver driver(script.path());
     driver.frame();
-    ASSERT_EQ(driver.classroom().failed_script(), script.path()) << plain;
+    ASSERT_EQ(driver.classroom().failed_script().path, script.path()) << plain;
     FrameRecord record;
     driver.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
     // Lua's message from the script's name on: "NAME.lua:LINE: ...", its folders left out.
-    const std::string error = driver.classroom().failed_error();
+    const std::string error = driver.classroom().failed_script().error;
     const std::string luas_words = error.substr(error.find(".lua:"));
     bool luas = false, said = false;
     for (const ShownText& shown : record.texts) {
       luas = luas || shown.text.find(luas_words) != std::string::npos;
       said = said || shown.text.rfind("In plain words: " + plain, 0) == 0;
     }
-    EXPECT_TRUE(said) << "no plain words \"" << plain << "\" for " << driver.classroom().failed_error();
-    EXPECT_TRUE(luas) << "Lua's own message is gone: " << driver.classroom().failed_error();
+    EXPECT_TRUE(said) << "no plain words \"" << plain << "\" for " << driver.classroom().failed_script().error;
+    EXPECT_TRUE(luas) << "Lua's own message is gone: " << driver.classroom().failed_script().error;
     EXPECT_EQ(plain_words(error).rfind("In plain words: " + plain, 0), 0u);
   }
   EXPECT_EQ(plain_words("incline.lua:3: mass must be positive"), "");
@@ -659,8 +659,8 @@ TEST(Classroom, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed)
   ScriptFile script(replaced(good, "local angle = parameter {", "local angle = parameter"));
   Driver driver(script.path(), {"angle"}, {{"angle", "20"}});
   driver.frame();
-  EXPECT_EQ(driver.classroom().failed_script(), script.path());
-  EXPECT_EQ(driver.classroom().failed_error().rfind(script.path() + ":", 0), 0u) << driver.classroom().failed_error();
+  EXPECT_EQ(driver.classroom().failed_script().path, script.path());
+  EXPECT_EQ(driver.classroom().failed_script().error.rfind(script.path() + ":", 0), 0u) << driver.classroom().failed_script().error;
   EXPECT_NE(driver.lesson().path(), script.path());
   ASSERT_TRUE(driver.classroom().control("messages").has_value());
   script.rewrite(good);
@@ -1245,7 +1245,7 @@ TEST(Classroom, TheStabilityMapMarksTheLessonsThresholdsAtItsStep) {
   driver.frame();
   driver.click("Stability map tab");
   driver.frame();
-  const Chart& chart = driver.classroom().stability_chart();
+  const Chart& chart = driver.classroom().stability_map_tab().chart;
   ASSERT_FALSE(chart.cells.empty());
   ASSERT_FALSE(chart.series.empty());
   const ChartSeries& marks = chart.series.back();
@@ -1282,8 +1282,8 @@ TEST(Classroom, ANegativeToleranceMeasuresNothing) {
   driver.type("-1");
   driver.press(ImGuiKey_Enter);
   driver.click("measure");
-  EXPECT_EQ(driver.classroom().cheapest_tolerance(), -1.0);
-  EXPECT_FALSE(driver.classroom().cheapest_started());
+  EXPECT_EQ(driver.classroom().cheapest_setting_tab().tolerance, -1.0);
+  EXPECT_FALSE(driver.classroom().cheapest_setting_tab().started());
   driver.click("tolerance");
   driver.type("0.01");
   driver.press(ImGuiKey_Enter);

@@ -197,7 +197,7 @@ TEST(WindowKeys, SpaceInTheCheapestSettingsToleranceKeepsItAndPlays) {
   ASSERT_TRUE(typing(hands)) << "its text selected as it opens: what is typed replaces it";
   hands.type("0.25");
   press_space(hands);
-  EXPECT_EQ(hands.classroom().cheapest_tolerance(), 0.25);
+  EXPECT_EQ(hands.classroom().cheapest_setting_tab().tolerance, 0.25);
   EXPECT_TRUE(hands.classroom().playback().playing());
   EXPECT_FALSE(typing(hands));
 }

@@ -312,5 +312,50 @@ TEST(MysteryWindow, TheAnswersAndTheRevealAreInSightInProjectorMode) {
   EXPECT_NEAR(hands.lesson().scene().time(), 3.0, 1e-9) << "and nothing under it (the time bar) instead";
 }
 
+// The Stability map tab gives way to the Mystery tab while the mystery's μs is hidden (the map's
+// boundary would give it away) and comes back at the reveal, with the map for the μs the class
+// has just been told (issue 31: it stayed away), beside the others, which do not move. In
+// projector mode six tabs do not fit the column side by side: there the Mystery tab keeps its
+// place and the map stays away, rather than every tab shrinking and moving at the reveal. With
+// predictions asked first or not: every tab's name whole.
+TEST(MysteryWindow, TheStabilityMapTabComesBackAtTheRevealWhereItFits) {
+  const std::string pair = mystery_pairs(lessons::Lesson(lessons::resolve_lesson("incline"))).at(0);
+  struct Screen {
+    const char* name;
+    ImVec2 size;
+    bool projector;
+  };
+  for (const Screen& screen : {Screen{"window 1920x1080", ImVec2(1920.0f, 1080.0f), false},
+                               Screen{"window 1280x720", ImVec2(1280.0f, 720.0f), false},
+                               Screen{"projector 1920x1080", ImVec2(1920.0f, 1080.0f), true}}) {
+    for (const bool predictions : {false, true}) {
+      const std::string where = std::string(screen.name) + (predictions ? ", predictions asked" : "");
+      ClassroomOptions options = mystery_options("incline", pair, window_seed);
+      options.window.projector = screen.projector;
+      options.window.predictions = predictions;
+      ClassroomHands hands(options, screen.size);
+      hands.texts();
+      EXPECT_FALSE(hands.classroom().control("Stability map tab").has_value()) << where << ": the map would tell μs";
+      const ImRect mystery_tab = hands.control("Mystery tab");
+      hands.classroom().reveal_mystery();
+      hands.texts();
+      const ImRect revealed_tab = hands.control("Mystery tab");
+      EXPECT_EQ(revealed_tab.Min.x, mystery_tab.Min.x) << where << ": the Mystery tab moved at the reveal";
+      EXPECT_EQ(revealed_tab.Max.x, mystery_tab.Max.x) << where << ": the Mystery tab moved at the reveal";
+      EXPECT_EQ(hands.classroom().control("Stability map tab").has_value(), !screen.projector) << where;
+      if (!screen.projector) {
+        hands.click("Stability map tab");
+        EXPECT_FALSE(hands.classroom().stability_map_tab().chart.cells.empty()) << where << ": no map for the revealed μs";
+      }
+      FrameRecord record;
+      hands.frame(0.0, &record);
+      for (const ShownText& text : record.texts) {
+        if (text.text.find("###") == std::string::npos) continue;  // a tab's name, with its id
+        EXPECT_TRUE(text.whole_across()) << where << ": the tab " << text.text << " is cut";
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -1,4 +1,4 @@
-// Prepared setups: saved from the window and opened again (by the Lesson menu, by the API the
+// Prepared setups: saved from the window and opened again (in the window, by the API the
 // --setup option uses) with the lesson, values, lock, mystery, step settings and the class's
 // predictions as they were;
 // a broken file says file:line: and leaves the running lesson alone; saving never writes over a
@@ -33,43 +33,8 @@ std::string parse_error(const std::string& text) {
   }
 }
 
-// A teacher's preparation: values, a lock, a mystery and step settings of their own.
-ClassroomOptions prepared() {
-  ClassroomOptions options;
-  options.lesson = "spring_pull";
-  options.overrides = {{"mass", "1.5"}, {"k", "80"}, {"block", "plastic"}};
-  options.lock = {"mass", "k", "friction"};
-  options.mystery = MysteryChoice{"plastic/wood", 42};
-  options.settings.hz = 480.0;
-  options.settings.substeps = 2;
-  options.settings.treatment = FrictionTreatment::threshold;
-  return options;
-}
-
-// Everything a setup holds, as the window has it now.
-void expect_prepared(Classroom& window, const std::string& where) {
-  const lessons::Lesson& lesson = window.playback().lesson();
-  EXPECT_EQ(fs::path(lesson.path()).filename(), "spring_pull.lua") << where;
-  EXPECT_EQ(lesson.parameter("mass").value, 1.5) << where;
-  EXPECT_EQ(lesson.parameter("k").value, 80.0) << where;
-  EXPECT_EQ(lesson.parameter("block").shown(), "plastic") << where;
-  EXPECT_EQ(lesson.parameter("pull_speed").value, 0.1) << where << ": a value the teacher left is the script's";
-  EXPECT_TRUE(window.shown("mass") && window.shown("k") && window.shown("friction")) << where;
-  EXPECT_FALSE(window.shown("mu_s") || window.shown("pull_speed") || window.shown("hz")) << where << ": the lock";
-  ASSERT_TRUE(window.mystery().has_value()) << where;
-  EXPECT_EQ(window.mystery()->choice(), (MysteryChoice{"plastic/wood", 42})) << where;
-  EXPECT_FALSE(window.mystery()->revealed()) << where;
-  EXPECT_EQ(lesson.parameter("mu_s").value, mystery_values(42).mu_s) << where << ": drawn again from the seed";
-  EXPECT_EQ(lesson.parameter("mu_k").value, mystery_values(42).mu_k) << where;
-  EXPECT_EQ(lesson.settings().hz, 480.0) << where;
-  EXPECT_EQ(lesson.settings().substeps, 2) << where;
-  EXPECT_EQ(lesson.settings().treatment, FrictionTreatment::threshold) << where;
-  EXPECT_EQ(lesson.scene().frame(), 0) << where << ": it opens at t = 0";
-  EXPECT_FALSE(window.playback().playing()) << where;
-}
-
-TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasByTheMenuAndByTheCommandLinesPath) {
-  ClassroomHands teacher(prepared());
+TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasInTheWindowAndByTheCommandLinesPath) {
+  ClassroomHands teacher(prepared_setup_options());
   teacher.classroom().playback().run_to(1.0);
   teacher.classroom().reveal_mystery();  // revealed at home: the class still gets it hidden
   const std::string path = teacher.folder() + "/class.setup";
@@ -85,29 +50,24 @@ TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasByTheMenuAndByTheCommandLin
   EXPECT_EQ(text.find("mu_s ="), std::string::npos) << text;
   EXPECT_EQ(text.find("mu_k ="), std::string::npos) << text;
 
-  // In class: another lesson running, the setup opened from the Lesson menu.
+  // In class: another lesson running, the setup opened in its place (the Lesson menu's dialog
+  // does it so: tests/classroom/test_setup_dialog.cpp).
   ClassroomOptions plain;
   plain.lesson = "incline";
   ClassroomHands hands(plain);
-  hands.frame();
-  hands.click("Lesson menu");
-  hands.click("Open a setup");
-  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
-  hands.click("setup path");
-  hands.type(path);
-  hands.click("setup go");
-  expect_prepared(hands.classroom(), "opened from the menu");
+  ASSERT_EQ(hands.classroom().open_setup(path), "");
+  expect_prepared_setup(hands.classroom(), "opened in place of another lesson");
 
   // The --setup option's way: the options read and checked before the window is made.
   Classroom from_options(setup_options(path, ClassroomOptions{}));
-  expect_prepared(from_options, "opened by setup_options");
+  expect_prepared_setup(from_options, "opened by setup_options");
 }
 
 // A setup's lock greys the Lesson menu's lessons; the menu names the setup, and the line to
 // delete, as the reason (not --lock, which the teacher never typed), by --setup's way and the
 // menu's. A lesson opened from a setup without a lock is not locked.
 TEST(SetupFile, ItsLockIsNamedInTheLessonMenu) {
-  ClassroomHands teacher(prepared());
+  ClassroomHands teacher(prepared_setup_options());
   const std::string path = teacher.folder() + "/monday.setup";
   ASSERT_EQ(teacher.classroom().save_setup(path), "");
   Classroom opened(setup_options(path, ClassroomOptions{}));
@@ -128,27 +88,6 @@ TEST(SetupFile, ItsLockIsNamedInTheLessonMenu) {
   write_file(unlocked, "# FrictionLab setup\nlesson incline\n");
   ASSERT_EQ(hands.classroom().open_setup(unlocked), "") << "a locked window opens a setup by its API";
   EXPECT_EQ(hands.classroom().lock_words(), "");
-}
-
-TEST(SetupFile, SavedByTheMenuBesideTheScreenshotsUnderTheLessonsName) {
-  ClassroomOptions options;
-  options.lesson = "incline";
-  options.overrides = {{"angle", "31"}};
-  ClassroomHands hands(options);
-  hands.frame();
-  hands.click("Lesson menu");
-  hands.click("Save as a setup");
-  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
-  hands.click("setup go");
-  const std::string path = hands.folder() + "/incline.setup";
-  ASSERT_TRUE(fs::is_regular_file(path));
-  const PreparedSetup setup = read_setup(path);
-  EXPECT_EQ(setup.lesson, "incline");
-  const auto angle = std::find_if(setup.values.begin(), setup.values.end(), [](const PreparedSetup::Value& v) { return v.name == "angle"; });
-  ASSERT_NE(angle, setup.values.end());
-  EXPECT_EQ(angle->text, "31");
-  EXPECT_FALSE(setup.mystery.has_value());
-  EXPECT_TRUE(setup.lock.empty());
 }
 
 TEST(SetupFile, AStudentsScriptIsNamedFromTheSetupsFolderAndFoundFromAnywhere) {
@@ -221,7 +160,7 @@ TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
 }
 
 // The class's predictions, typed and picked in the theory panel, and the reveal: saved, then
-// opened by the menu into a window that had other answers, and by setup_options.
+// opened into a window that had other answers, and by setup_options.
 TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
   ClassroomOptions options;
   options.lesson = "incline";
@@ -251,13 +190,7 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
   other.window.predictions = false;
   ClassroomHands hands(other);
   hands.classroom().predictions().answers["tips or slides"] = "tips";
-  hands.frame();
-  hands.click("Lesson menu");
-  hands.click("Open a setup");
-  hands.frame();
-  hands.click("setup path");
-  hands.type(path);
-  hands.click("setup go");
+  ASSERT_EQ(hands.classroom().open_setup(path), "");
   const auto expect_predicted = [](Classroom& window, const std::string& where) {
     EXPECT_EQ(fs::path(window.playback().lesson().path()).filename(), "incline.lua") << where;
     EXPECT_EQ(window.predictions().answers,
@@ -267,7 +200,7 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
     EXPECT_TRUE(window.window_settings().predictions) << where << ": predictions on";
     EXPECT_FALSE(window.theory_hidden()) << where;
   };
-  expect_predicted(hands.classroom(), "opened from the menu");
+  expect_predicted(hands.classroom(), "opened in the window");
   ClassroomOptions plain;
   plain.window.predictions = false;
   Classroom from_options(setup_options(path, plain));
@@ -438,7 +371,7 @@ namespace {
 // their tallest (revealed) have a panel of their own over the tabs, the Mystery tab shown under it.
 // With no predictions taken the Mystery tab comes forward.
 TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
-  ClassroomHands teacher(prepared());
+  ClassroomHands teacher(prepared_setup_options());
   // Not in a window's folder: each window below has that folder's name, and takes it away when it closes.
   const fs::path folder = fs::temp_directory_path() / ("frictionlab_predict_first_" + std::to_string(::getpid()));
   fs::create_directories(folder);

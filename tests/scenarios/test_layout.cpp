@@ -1461,7 +1461,7 @@ TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIs
       tabs.click("Cheapest setting tab");
       tabs.check(where + ", Cheapest setting tab", "Runs this lesson at each setting");
       tabs.click("Stability map tab");
-      const bool has_map = !tabs.window().stability_chart().cells.empty();
+      const bool has_map = !tabs.window().stability_map_tab().chart.cells.empty();
       tabs.check(where + ", Stability map tab", has_map ? "the regularized law here" : "This lesson has no \u03bcs");
     }
     const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(lessons::resolve_lesson(entry.name)));

@@ -1,0 +1,83 @@
+// The Lesson menu's setup dialog (classroom/setup_dialog.h), driven by a teacher's mouse and
+// keys: a prepared setup opened from it in place of the running lesson, whole, and said in the
+// status line; a setup it cannot open said in the dialog, which stays open, the lesson running on;
+// a save suggested beside the screenshots under the lesson's name. What a setup file holds and
+// how it is read are tests/classroom_state/test_setup_file.cpp's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "classroom_state/setup_file.h"
+#include "tests/classroom_hands.h"
+
+namespace frictionlab::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The Lesson menu's "Open a setup...", the path typed and Open clicked.
+void open_from_the_menu(ClassroomHands& hands, const std::string& path) {
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Open a setup");
+  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+  hands.click("setup path");
+  hands.type(path);
+  hands.click("setup go");
+}
+
+TEST(SetupDialog, OpensASavedSetupInPlaceOfTheRunningLesson) {
+  ClassroomHands teacher(prepared_setup_options());
+  const std::string path = teacher.folder() + "/class.setup";
+  ASSERT_EQ(teacher.classroom().save_setup(path), "");
+
+  ClassroomOptions plain;
+  plain.lesson = "incline";
+  ClassroomHands hands(plain);
+  open_from_the_menu(hands, path);
+  expect_prepared_setup(hands.classroom(), "opened from the menu");
+  EXPECT_EQ(hands.classroom().status(), "Opened the setup " + path);
+  hands.frame();  // the controls of the frame after the click
+  EXPECT_FALSE(hands.classroom().control("setup go").has_value()) << "the dialog closed";
+}
+
+TEST(SetupDialog, ASetupItCannotOpenIsSaidInTheDialogAndTheLessonRunsOn) {
+  ClassroomOptions options;
+  options.lesson = "spring_pull";
+  ClassroomHands hands(options);
+  hands.classroom().playback().run_to(0.5);
+  const std::string absent = hands.folder() + "/absent.setup";
+  open_from_the_menu(hands, absent);
+  const std::string texts = hands.texts();
+  EXPECT_NE(texts.find("setup " + absent + ": no such file"), std::string::npos) << texts;
+  EXPECT_TRUE(hands.classroom().control("setup go").has_value()) << "the dialog stays open to correct the path";
+  EXPECT_EQ(fs::path(hands.lesson().path()).filename(), "spring_pull.lua");
+  EXPECT_NEAR(hands.lesson().scene().time(), 0.5, 1e-9);
+}
+
+TEST(SetupDialog, SavesBesideTheScreenshotsUnderTheLessonsName) {
+  ClassroomOptions options;
+  options.lesson = "incline";
+  options.overrides = {{"angle", "31"}};
+  ClassroomHands hands(options);
+  hands.frame();
+  hands.click("Lesson menu");
+  hands.click("Save as a setup");
+  hands.frame();  // a dialog sizes itself in the frame it appears, and is drawn where it goes in the next
+  hands.click("setup go");
+  const std::string path = hands.folder() + "/incline.setup";
+  ASSERT_TRUE(fs::is_regular_file(path));
+  EXPECT_EQ(hands.classroom().status(), "Setup saved to " + path);
+  const PreparedSetup setup = read_setup(path);
+  EXPECT_EQ(setup.lesson, "incline");
+  const auto angle = std::find_if(setup.values.begin(), setup.values.end(), [](const PreparedSetup::Value& v) { return v.name == "angle"; });
+  ASSERT_NE(angle, setup.values.end());
+  EXPECT_EQ(angle->text, "31");
+  EXPECT_FALSE(setup.mystery.has_value());
+  EXPECT_TRUE(setup.lock.empty());
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
