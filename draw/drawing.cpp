@@ -47,6 +47,40 @@ bool overlaps(const ImVec4& box, const DrawnSegment& segment) {
   return true;
 }
 
+float gap(const ImVec4& box, const DrawnSegment& segment) {
+  if (overlaps(box, DrawnSegment{segment.from, segment.to, 0.0f})) return 0.0f;
+  // Apart, the nearest points are a corner of the box and a point of the segment, or an end of
+  // the segment and a point of the box.
+  const auto to_box = [&](ImVec2 p) {
+    return std::hypot(std::max({box.x - p.x, 0.0f, p.x - box.z}), std::max({box.y - p.y, 0.0f, p.y - box.w}));
+  };
+  const ImVec2 along = sub(segment.to, segment.from);
+  const float span = along.x * along.x + along.y * along.y;
+  const auto to_segment = [&](ImVec2 p) {
+    const float f = span > 0.0f ? std::clamp(((p.x - segment.from.x) * along.x + (p.y - segment.from.y) * along.y) / span, 0.0f, 1.0f)
+                                : 0.0f;
+    return length(sub(p, add(segment.from, mul(along, f))));
+  };
+  float nearest = std::min(to_box(segment.from), to_box(segment.to));
+  for (const ImVec2 corner : {ImVec2(box.x, box.y), ImVec2(box.z, box.y), ImVec2(box.z, box.w), ImVec2(box.x, box.w)}) {
+    nearest = std::min(nearest, to_segment(corner));
+  }
+  return nearest;
+}
+
+bool LabelPlacer::beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const {
+  const ImVec4 box(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
+  // A pixel's margin each way, so that the box's corners rounded when drawn and recorded keep
+  // to the rule.
+  const float own_gap = gap(box, own);
+  if (own_gap > size.y - 1.0f) return false;
+  const auto same = [&](const DrawnSegment& other) {
+    return other.from.x == own.from.x && other.from.y == own.from.y && other.to.x == own.to.x && other.to.y == own.to.y;
+  };
+  return std::none_of(arrows_.begin(), arrows_.end(),
+                      [&](const DrawnSegment& other) { return !same(other) && gap(box, other) <= own_gap + 1.0f; });
+}
+
 bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
   const auto any = [&](const auto& list) {
     return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
@@ -114,7 +148,8 @@ std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, con
   return found;
 }
 
-std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text) {
+std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text,
+                                                const DrawnSegment* own) {
   const std::vector<ImVec2> places = candidates(wanted, size, beside_rings);
   const auto first_clear = [&](const std::vector<ImVec2>& list, bool off_bodies) -> std::optional<ImVec2> {
     for (const ImVec2& place : list) {
@@ -122,6 +157,40 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     }
     return std::nullopt;
   };
+  if (own != nullptr) {
+    // The places near the tip, then along each side of the shaft from the tip back and behind
+    // the tail, each clear of the arrow as wide as it is kept off (arrow()'s width, else its own).
+    std::vector<ImVec2> near = places;
+    const ImVec2 along = sub(own->to, own->from);
+    const float span = length(along);
+    if (span > 0.0f) {
+      float half_width = own->half_width;
+      for (const DrawnSegment& known : arrows_) {
+        if (known.from.x == own->from.x && known.from.y == own->from.y && known.to.x == own->to.x && known.to.y == own->to.y) {
+          half_width = std::max(half_width, known.half_width);
+        }
+      }
+      const ImVec2 unit = mul(along, 1.0f / span), across(-unit.y, unit.x);
+      const float half_across = 0.5f * (std::abs(across.x) * size.x + std::abs(across.y) * size.y) + pad + half_width + 1.0f;
+      const float half_along = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + pad + half_width + 1.0f;
+      for (const float f : {1.0f, 0.75f, 0.5f, 0.25f, 0.0f}) {
+        for (const float side : {1.0f, -1.0f}) {
+          near.push_back(moved_inside(add(add(own->from, mul(along, f)), mul(across, side * half_across)), size));
+        }
+      }
+      near.push_back(moved_inside(sub(own->from, mul(unit, half_along)), size));
+    }
+    std::vector<ImVec2> by_own;
+    for (const ImVec2& place : near) {
+      if (beside(place, size, *own)) by_own.push_back(place);
+    }
+    std::optional<ImVec2> found = first_clear(by_own, true);
+    if (!found) found = first_clear(by_own, false);
+    if (found) {
+      take(box_around(*found, size), text);
+      return found;
+    }
+  }
   // Near the tip, off the moving bodies (a normal force's value was read as the body's); else
   // near, on a body (the box is opaque and reads there).
   std::optional<ImVec2> found = first_clear(places, true);
@@ -180,7 +249,8 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
   // By its own arrow (place_beside): off the moving bodies where that is as near (a normal
   // force's arrow points into the body it pushes; a spring's runs along the spring).
-  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text);
+  const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
+  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own);
   if (at) draw_label(draw, font, *at, colour, theme.panel, text.c_str());
   labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness},
                       at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt, text});

@@ -35,6 +35,8 @@ struct DrawnSegment {
 };
 // Whether a box (x0, y0, x1, y1) and a thick segment share any point.
 bool overlaps(const ImVec4& box, const DrawnSegment& segment);
+// How far a box lies from a segment's centre line (0 where they meet), px.
+float gap(const ImVec4& box, const DrawnSegment& segment);
 inline bool overlaps(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
 
 // Keeps text labels off each other and off the arrows and marks drawn, and inside the view,
@@ -43,6 +45,12 @@ class LabelPlacer {
  public:
   LabelPlacer(ImVec2 corner, ImVec2 size) : low_(corner), high_(add(corner, size)) {}
   void avoid(const DrawnSegment& segment) { segments_.push_back(segment); }
+  // A force's arrow, as wide as labels keep off it: avoided, and known as an arrow, so that
+  // place_beside() puts each value nearer its own arrow than any other.
+  void arrow(const DrawnSegment& segment) {
+    avoid(segment);
+    arrows_.push_back(segment);
+  }
   void avoid(const ImVec4& box) { marks_.push_back(box); }
   // A moving body's box on screen. The lesson's own labels may lie on a body (a contact's word
   // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
@@ -63,7 +71,14 @@ class LabelPlacer {
   // at all, a value over another label or a lane's name being read as neither. Issue 31: a value
   // left out (tipping_box's friction on a projector) was read as no force, and one found many
   // lines away (stacked_blocks' normal forces, a ladder's weight by its foot) as another arrow's.
-  std::optional<ImVec2> place_beside(ImVec2 wanted, ImVec2 size, const std::string& text = {});
+  // With `own`, the value's own arrow (given to arrow()), a place beside it comes first: the
+  // text's box within one line of text (size.y) of the arrow's line and further from every
+  // other arrow than from it, near the tip, else along either side of the shaft or behind the
+  // tail (where a short arrow among others leaves its tip no room).
+  std::optional<ImVec2> place_beside(ImVec2 wanted, ImVec2 size, const std::string& text = {},
+                                     const DrawnSegment* own = nullptr);
+  // Whether a text's box centred at `centre` is beside `own` by place_beside()'s rule.
+  bool beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
   static constexpr int beside_rings = 6;
   // How far place_beside() moves a label's centre from `wanted` (in x and in y) where there is
   // room near: the last ring's reach, for tests that check each value is by its arrow.
@@ -110,6 +125,7 @@ class LabelPlacer {
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
   std::vector<std::string> texts_;
   std::vector<DrawnSegment> segments_;
+  std::vector<DrawnSegment> arrows_;  // the forces' arrows among segments_
   std::vector<ImVec4> marks_;
   std::vector<ImVec4> bodies_;
   std::vector<ForceLabel> force_labels_;

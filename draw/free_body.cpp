@@ -104,7 +104,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   // Labels between the title and the net force line, off every arrow.
   LabelPlacer labels(inset.origin, inset.size);
   const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
-  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
+  for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
   // A motor's torque on the body, round its centre of mass.
   std::vector<TorqueArc> torques;
   for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {

@@ -322,7 +322,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   const float thickness = 3.5f * fonts.scale;
-  for (const ScreenArrow& arrow : arrows) labels.avoid(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
+  for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
   const float mark_radius = 6.0f * fonts.scale;
   for (const ContactMark& mark : marks) {

@@ -968,6 +968,124 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
   EXPECT_GE(insets, 20);
 }
 
+// The distance from a label's box to an arrow's centre line, tail to tip (0 where they meet):
+// the nearest of the box's corners to the segment and of the segment's ends to the box, which is
+// exact for a segment that does not cross the box.
+float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
+  if (overlaps(box, DrawnSegment{arrow.from, arrow.to, 0.0f})) return 0.0f;
+  const auto point_to_box = [&](ImVec2 p) {
+    return std::hypot(std::max({box.x - p.x, 0.0f, p.x - box.z}), std::max({box.y - p.y, 0.0f, p.y - box.w}));
+  };
+  const auto point_to_segment = [&](ImVec2 p) {
+    const ImVec2 d = sub(arrow.to, arrow.from);
+    const float span = d.x * d.x + d.y * d.y;
+    const float f = span > 0.0f ? std::clamp(((p.x - arrow.from.x) * d.x + (p.y - arrow.from.y) * d.y) / span, 0.0f, 1.0f) : 0.0f;
+    return length(sub(p, add(arrow.from, mul(d, f))));
+  };
+  float nearest = std::min(point_to_box(arrow.from), point_to_box(arrow.to));
+  for (const ImVec2 corner : {ImVec2(box.x, box.y), ImVec2(box.z, box.y), ImVec2(box.z, box.w), ImVec2(box.x, box.w)}) {
+    nearest = std::min(nearest, point_to_segment(corner));
+  }
+  return nearest;
+}
+
+// "Beside its own arrow" as a measured rule, in one picture (a lane of the world, or the inset):
+// every value drawn, the gap between its box as drawn and its own arrow at most one line of its
+// text (the box's height without the placer's padding: a reader looks one line away, not
+// several), and every other arrow of the picture further from it than its own, so it cannot be
+// read as another's. Returns how many values it checked.
+//
+// Not yet for an arrow shorter than a line of its text: a friction of a few pixels starting where
+// a normal force starts (stacked_blocks' friction between the blocks, contact_area's feet) has
+// no place a line from it that is nearer it than the normal force; it needs a least drawn length
+// or a leader line, which issue 31 leaves open.
+int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where) {
+  int checked = 0;
+  for (std::size_t i = 0; i < forces.size(); ++i) {
+    const LabelPlacer::ForceLabel& force = forces[i];
+    if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
+    EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
+    if (!force.box) continue;
+    const ImVec4 box = drawn(*force.box);
+    const float line = box.w - box.y;
+    if (length(sub(force.arrow.to, force.arrow.from)) < line) continue;
+    ++checked;
+    const float own = box_to_arrow(box, force.arrow);
+    const auto arrow_text = [](const DrawnSegment& arrow) {
+      return text_of(ImVec4(arrow.from.x, arrow.from.y, arrow.to.x, arrow.to.y)) + " (tail–tip)";
+    };
+    EXPECT_LE(own, line) << where << ": " << force.text << " at " << text_of(box) << " is " << own
+                         << " px from its arrow " << arrow_text(force.arrow) << ", more than a line (" << line << " px)";
+    for (std::size_t j = 0; j < forces.size(); ++j) {
+      if (j == i) continue;
+      const float other = box_to_arrow(box, forces[j].arrow);
+      EXPECT_LT(own, other) << where << ": " << force.text << " at " << text_of(box) << " is " << own
+                            << " px from its arrow " << arrow_text(force.arrow) << " but " << other << " px from "
+                            << (forces[j].text.empty() ? std::string("another") : forces[j].text + "'s") << " arrow "
+                            << arrow_text(forces[j].arrow);
+    }
+  }
+  return checked;
+}
+
+// Every built-in lesson in the window at 1920 × 1080, in projector mode and not, light and dark,
+// at its opening (a fifth of a second in: no arrows before the first step), half way and at its
+// end: each force's value beside its own arrow by check_beside_own_arrow's rule, in the world and
+// in the free-body inset, with every rule of check_layout (issue 31, item 6: stacked_blocks' "29.4 N"
+// sat 150 px from its arrow, tipping_box's friction beside the push). Before LabelPlacer::place_beside
+// looked beside the arrow itself, 1566 checks failed here, in every lesson.
+//
+// Not yet in the pictures below, where arrows crowd more than the placer's places beside them
+// allow (issue 31, item 6, left open; each still fails the rule): the lanes of contact_area (both
+// modes) and where_methods_fail (projector), driven_wheel's wheel with its torque arc and the two
+// stacked blocks (projector), friction_models' lanes at normal size, the projector's inset of
+// spring_pull and terrain, and the inset of stacked_blocks and driven_wheel (3.43 N 22.6 px from
+// its arrow, 5.22 N 41 px, at normal size: the inset's edge or the torque's arc in the way).
+TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
+  const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
+    if (lesson == "contact_area") return true;
+    if (lesson == "where_methods_fail") return projector;
+    if (lesson == "stacked_blocks" || lesson == "driven_wheel") return projector || inset;
+    if (lesson == "friction_models") return !projector && !inset;
+    if (lesson == "spring_pull" || lesson == "terrain") return projector && inset;
+    return false;
+  };
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int worlds = 0, insets = 0;
+  for (const bool projector : {true, false}) {
+    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+      for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+        ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
+        options.window.theme = theme;
+        Classroom window(options);
+        draw_window_frame(gl, host, window, display);
+        const double end = window.playback().lesson().duration();
+        for (const double t : {0.2, 0.5 * end, end}) {
+          window.run_to(t);
+          draw_window_frame(gl, host, window, display);
+          FrameRecord record;
+          draw_window_frame(gl, host, window, display, 0.0, &record);
+          char when[48];
+          std::snprintf(when, sizeof when, " at %.2f s", t);
+          const std::string where = entry.name + when + (projector ? ", projector" : "") +
+                                    (theme == ThemeName::dark ? ", dark" : "");
+          check_layout(record, window.playback().lesson(), where);
+          if (!not_yet(entry.name, projector, false)) {
+            for (const FrameRecord::Lane& lane : record.lanes) worlds += check_beside_own_arrow(lane.forces, where + ", world");
+          }
+          if (!not_yet(entry.name, projector, true)) {
+            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(worlds, 300);
+  EXPECT_GE(insets, 200);
+}
+
 // The lessons with lanes or several bodies, in the window with every measuring tool on, as the
 // trial's teacher ran them (terrain at the run's end showed "stopwatch 99.00 s (paused)" written
 // across "asphalt box"), at the start, mid-run and run on past the end: the stopwatch is over the
