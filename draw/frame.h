@@ -30,9 +30,19 @@ struct FrameLayout {
   ImVec2 column_corner, column_size;
   // The frame fills `size` from `origin` (the window keeps a menu bar above it and its
   // transport controls below).
-  // `large_plots` (the window's projector mode, its plots a page at a time): the plots' row
-  // takes more of the left side, so that the key plot's levels read from the back of a room.
-  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool large_plots = false);
+  // `projector` (the window's projector mode, its plots a page at a time): the title is one
+  // line and the legend a column beside the plots' row, so that the row, under a world as tall
+  // as on a screen, is a third of the screen high or more and the key plot's levels read from
+  // the back of a room.
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool projector = false);
+  // The legend's column in projector mode, in points at text scale 1, until a lesson's names
+  // say how wide it is (legend_column_width in legend.h): "friction" after its arrow in 14 pt
+  // text, and its margins.
+  static constexpr float legend_column_width = 95.0f;
+  // The title's panel's padding above and below its one line on a projector, in points.
+  static constexpr float title_padding = 1.0f;
+  // The same with the legend's column `width` pixels wide (projector mode), the plots the rest.
+  FrameLayout with_legend_column(float width) const;
 };
 
 // Where the frame put things in the world view, for tests of its layout: per lane, the
