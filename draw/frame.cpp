@@ -84,8 +84,8 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
 }
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
-                                  float scale, ImVec2 origin, const ViewAdjust& adjust, bool large_plots) {
-  const FrameLayout layout = FrameLayout::of(display, scale, origin, large_plots);
+                                  float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
+  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
@@ -96,8 +96,8 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
 }
 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
-                  bool large_plots) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), large_plots);
+                  bool projector) {
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector);
   // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
   // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
@@ -127,7 +127,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.plots_one_a_page);
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector);
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
@@ -282,7 +282,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
     return true;
   };
   std::size_t per_row = most;
-  if (style.plots_one_a_page) {
+  if (style.projector) {
     per_row = 1;
   } else if (style.parameters_panel) {
     while (per_row > 1 && !all_have_room(per_row)) --per_row;
@@ -306,7 +306,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
     if (pager) {
       // On a projector the page's line and its panel's edges are kept thin: each point of
       // height they leave goes to the key plot's data.
-      if (style.plots_one_a_page) {
+      if (style.projector) {
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 2.0f * s));
         ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f * s));
         ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 1.0f * s));
@@ -358,7 +358,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       } else {
         const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
                                             area, colours, fonts, !style.theory_kept_back(), style.script_words,
-                                            style.plots_one_a_page);
+                                            style.projector);
         if (style.record != nullptr) {
           style.record->plots.push_back({i, drawn});
           // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
@@ -370,7 +370,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       }
     }
     end_panel();
-    if (pager && style.plots_one_a_page) ImGui::PopStyleVar(3);
+    if (pager && style.projector) ImGui::PopStyleVar(3);
   }
 }
 
@@ -415,24 +415,24 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
                      (style.predictions_outgrew && style.predictions_outgrew());
   }
   const FrameLayout layout =
-      style.plots_one_a_page
+      style.projector
           ? FrameLayout::of(display, s, style.origin, true).with_legend_column(legend_column_width(lesson.scene(), fonts))
           : FrameLayout::of(display, s, style.origin);
 
-  title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.plots_one_a_page, FrameLayout::title_padding * s);
+  title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.projector, FrameLayout::title_padding * s);
 
   // The world, drawn into a window of its own so the panels' windows stay on top of it.
   // The legend in a strip under the world, in the world's panel; on a projector in a panel of
   // its own beside the plots.
-  const bool legend_apart = style.plots_one_a_page;
+  const bool legend_apart = style.projector;
   const ImVec2 world_panel(layout.world_size.x, layout.world_size.y + (legend_apart ? 0.0f : layout.legend_size.y));
   std::optional<Camera> legend_camera;
   float legend_newtons_to_pixels = 1.0f;
   if (begin_panel("world", "", layout.world_corner, world_panel)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const std::vector<Camera> cameras =
-        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.plots_one_a_page);
-    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.plots_one_a_page);
+        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.projector);
+    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.projector);
     // With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
     std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
     for (const auto& [name, body] : lesson.scene().bodies()) {

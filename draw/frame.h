@@ -116,11 +116,12 @@ struct FrameStyle {
   // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
   // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
   bool show_extra_plot = false;
-  // The plots one a page, each its row's full width (the window's projector mode): the lesson's
-  // key plot, its first, as large as the row allows and read from the back of the room, and
-  // the pages the same whatever the run, so that nothing moves as it goes on or at the reveal
-  // (how many plots fitted side by side was chosen anew each frame from their axes and legends).
-  bool plots_one_a_page = false;
+  // The window's projector mode (FrameLayout::of's `projector`): the title one line, the legend
+  // beside the plots, and the plots one a page, each its row's full width: the lesson's key
+  // plot, its first, as large as the row allows and read from the back of the room, and the
+  // pages the same whatever the run, so that nothing moves as it goes on or at the reveal (how
+  // many plots fitted side by side was chosen anew each frame from their axes and legends).
+  bool projector = false;
   // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
   int turn_plot_pages = 0;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
@@ -137,11 +138,11 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
 // them: the window finds bodies under the mouse with them, tests find the arrows.
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {},
-                                  bool large_plots = false);
+                                  bool projector = false);
 // The first (or only) of them.
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                     ImVec2 origin = ImVec2(0.0f, 0.0f));
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
-                  bool large_plots = false);
+                  bool projector = false);
 
 }  // namespace frictionlab::ui
