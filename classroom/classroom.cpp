@@ -114,7 +114,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   ImGui::PopFont();
   const ImVec2 origin(0.0f, menu_height + stopwatch_height);
   const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
-  hand_.large_plots = window_.projector;
+  hand_.projector = window_.projector;
   hand_.hold_view(*playback_, origin, area, s);
 
   FrameStyle style;
@@ -129,7 +129,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   if (!script_words_.paths) style.script_words = script_words_;
   style.view_adjust = hand_.view_adjust;
-  style.plots_one_a_page = window_.projector;
+  style.projector = window_.projector;
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);

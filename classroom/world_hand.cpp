@@ -26,7 +26,7 @@ void WorldHand::hold_view(const Playback& playback, ImVec2 origin, ImVec2 size, 
     return;
   }
   const std::vector<Camera> lanes =
-      ui::world_cameras(playback.lesson(), playback.framing(), size, scale, origin, view_adjust, large_plots);
+      ui::world_cameras(playback.lesson(), playback.framing(), size, scale, origin, view_adjust, projector);
   if (drag_lane >= lanes.size()) return;
   // The same world point under the same screen point: the mouse's place means what it meant.
   const b2Vec2 shift = held_view->centre - lanes[drag_lane].to_world(held_view->anchor);
@@ -45,8 +45,8 @@ void WorldHand::handle_mouse(Playback& playback, ImVec2 origin, ImVec2 size, flo
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback.lesson();
   Scene& scene = lesson.scene();
-  const FrameLayout layout = FrameLayout::of(size, scale, origin, large_plots);
-  cameras = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, large_plots);
+  const FrameLayout layout = FrameLayout::of(size, scale, origin, projector);
+  cameras = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
   // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
   // own body's height, so the same screen point is another world point in the next lane.
   const bool dragging = (held || panning_from) && drag_lane < cameras.size();
@@ -59,7 +59,7 @@ void WorldHand::handle_mouse(Playback& playback, ImVec2 origin, ImVec2 size, flo
     // Zoom about the point under the mouse: it stays where it is on the screen.
     const b2Vec2 under = camera.to_world(io.MousePos);
     view_adjust.zoom = std::clamp(view_adjust.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
-    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, large_plots);
+    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
     const auto lane = static_cast<std::size_t>(&camera - cameras.data());
     const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
     if (shift.IsValid()) view_adjust.pan += shift;

@@ -25,7 +25,7 @@ struct WorldHand {
   // The world view's cameras in the last frame (one per lane): where the hand finds bodies.
   std::vector<Camera> cameras{Camera{}};
   ViewAdjust view_adjust;               // the wheel's zoom and the drag's pan
-  bool large_plots = false;             // the frame's layout (FrameLayout::of): projector mode's
+  bool projector = false;               // the frame's layout (FrameLayout::of): projector mode's
   std::optional<b2Vec2> panning_from;   // the world point a drag on empty space holds under the mouse
   std::size_t drag_lane = 0;            // the lane (camera) the hand's or the pan's drag began in
   bool held = false;  // the user's mouse holds a body (not a drag the record replays)

@@ -278,7 +278,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     if (chart.steady) {
       // The y label heads the legend's column and the x label ends the x ticks' line: the data
       // has the two lines of text they took (a plot on a page of its own, made tall).
-      layout.low_left.y = corner.y + size.y - text - 5.0f * s;
+      layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
       layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
     }
   } else {
@@ -337,34 +337,52 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   place();
 
   if (chart.plain && chart.steady && chart.legend == Chart::Legend::inside) {
-    // A column beside the data as wide as the widest key that may ever be in it, a key a line
-    // from the data's top: nothing the run or the reveal adds moves the data.
-    float widest = width_of(font, chart.y_label) - 22.0f * s;
-    for (const Key& key : keys) widest = std::max(widest, width_of(font, key.name));
-    for (const std::string& name : chart.legend_room) widest = std::max(widest, width_of(font, name));
-    if (widest > 0.0f) {
-      // At most 40 % of the width: longer keys (pulley's laws written out) wrap in it.
-      const float data_width = layout.high_right.x - layout.low_left.x;
-      const float column = std::min(widest + 22.0f * s + 10.0f * s, 0.4f * data_width);
-      layout.legend_wrap = column - 32.0f * s;
-      const float first_key = layout.high_right.y + (chart.y_label.empty() ? 0.0f : text + 6.0f * s);
-      layout.high_right.x -= column;
-      float y = first_key;
-      for (const Key& key : keys) {
-        layout.legend_at.push_back(ImVec2(layout.high_right.x + 10.0f * s, y));
-        y += font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, key.name.c_str()).y + 2.0f * s;
+    // A line above the data, the y label first and the keys after it in rows as wide as the
+    // chart (a column beside the data took up to 40 % of its width). The rows are laid out for
+    // every key that may ever be in them (`legend_room`: theory curves not shown before the
+    // reveal), each in its place from the start, the theory's last as keys_of gives them: what
+    // the run or the reveal adds moves neither a key nor the data.
+    std::vector<std::string> names;
+    for (const Key& key : keys) names.push_back(key.name);
+    for (const std::string& name : chart.legend_room) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    const float left = corner.x + 2.0f * s, right = corner.x + size.x - 8.0f * s;
+    // A key longer than a row (pulley's laws written out) wraps in it.
+    layout.legend_wrap = right - left - 32.0f * s;
+    const float top = corner.y;
+    float x = left + (chart.y_label.empty() ? 0.0f : width_of(font, chart.y_label) + 24.0f * s), y = top, row = text;
+    std::vector<ImVec2> at;
+    for (const std::string& name : names) {
+      const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, name.c_str());
+      const float w = wrapped.x + 32.0f * s;
+      if (x > left && x + w > right + 12.0f * s) {
+        x = left;
+        y += row + 1.0f * s;
+        row = text;
       }
+      at.push_back(ImVec2(x, y));
+      row = std::max(row, wrapped.y);
+      x += w;
+    }
+    if (!names.empty() || !chart.y_label.empty()) {
+      layout.y_label_at = ImVec2(left, top);
       layout.legend_outside = true;
-      layout.y_label_at = ImVec2(layout.high_right.x + 10.0f * s, layout.high_right.y);
-      set_x_ticks(data_width - column);
+      layout.legend_at.assign(at.begin(), at.begin() + static_cast<long>(keys.size()));
+      // The data under the rows, with room for half the top tick's label.
+      layout.high_right.y = y + row + 1.0f * s + 0.5f * text;
+      if (layout.low_left.y - layout.high_right.y < 20.0f) {
+        layout.drawable = false;
+        return layout;
+      }
       place();
       layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
       for (std::size_t i = 0; i < keys.size(); ++i) {
-        const ImVec2 at = layout.legend_at[i];
-        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+        const ImVec2 key_at = layout.legend_at[i];
+        layout.legend_min = ImVec2(std::min(layout.legend_min.x, key_at.x), std::min(layout.legend_min.y, key_at.y));
         const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
-        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + wrapped.x + 22.0f * s),
-                                   std::max(layout.legend_max.y, at.y + wrapped.y));
+        layout.legend_max = ImVec2(std::max(layout.legend_max.x, key_at.x + wrapped.x + 22.0f * s),
+                                   std::max(layout.legend_max.y, key_at.y + wrapped.y));
       }
     }
   } else if (!chart.plain && chart.legend != Chart::Legend::inside) {
@@ -613,9 +631,14 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     }
     return {};
   }
-  const ChartLayout layout = layout_chart(chart, corner, size, fonts);
+  ChartLayout layout = layout_chart(chart, corner, size, fonts);
   if (!layout.drawable) return layout;
   const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
+  const auto line_of = [&](ChartLayout::Line::Kind kind, ImVec2 from, ImVec2 to, ImU32 colour, float thickness) {
+    draw->AddLine(from, to, colour, thickness);
+    layout.lines.push_back({kind, from, to, colour});
+  };
+  using Kind = ChartLayout::Line::Kind;
   const float width = high_right.x - low_left.x;
   const ChartAxes axes = axes_of(chart);
   const auto at_axis_value = [&](double x, double y) {  // values already in axis space
@@ -643,11 +666,13 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
   // The zero lines of a plain chart are darker: forces are read against zero.
   for (const double tick : layout.x_ticks) {
     const float x = at_axis_value(tick, layout.y_low).x;
-    draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), chart.plain && tick == 0.0 ? theme.axis : theme.grid, 1.0f);
+    const bool zero = chart.plain && tick == 0.0;
+    line_of(zero ? Kind::axis : Kind::grid, ImVec2(x, high_right.y), ImVec2(x, low_left.y), zero ? theme.axis : theme.grid, 1.0f);
   }
   for (const double tick : layout.y_ticks) {
     const float y = at_axis_value(layout.x_low, tick).y;
-    draw->AddLine(ImVec2(low_left.x, y), ImVec2(high_right.x, y), chart.plain && tick == 0.0 ? theme.axis : theme.grid, 1.0f);
+    const bool zero = chart.plain && tick == 0.0;
+    line_of(zero ? Kind::axis : Kind::grid, ImVec2(low_left.x, y), ImVec2(high_right.x, y), zero ? theme.axis : theme.grid, 1.0f);
   }
   for (const auto& [x0, x1] : chart.bands) {
     const float left = layout.to_screen(x0, 1.0).x, right = layout.to_screen(x1, 1.0).x;
@@ -709,21 +734,40 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
 
   // Axes, tick labels and titles.
   draw->AddRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), theme.axis, 0.0f, 0, 1.0f);
+  for (const auto& [from, to] : {std::pair{low_left, ImVec2(high_right.x, low_left.y)}, std::pair{low_left, ImVec2(low_left.x, high_right.y)},
+                                 std::pair{high_right, ImVec2(high_right.x, low_left.y)}, std::pair{high_right, ImVec2(low_left.x, high_right.y)}}) {
+    layout.lines.push_back({Kind::axis, from, to, theme.axis});
+  }
   const float gap = (chart.plain ? 5.0f : 4.0f) * s;
+  if (chart.steady) {
+    // Tick marks outside the data in the axes' colour, between the edge and the tick labels:
+    // on a projector the faint grid (1.3:1 on the panel) fades, and the ticks are what the
+    // levels are read against (WCAG 2.1 1.4.11 asks 3:1 of them).
+    const float length = 4.0f * s, thickness = 1.5f * s;
+    for (const double tick : layout.y_ticks) {
+      const float y = at_axis_value(layout.x_low, tick).y;
+      line_of(Kind::tick, ImVec2(low_left.x - length, y), ImVec2(low_left.x, y), theme.axis, thickness);
+    }
+    for (const double tick : layout.x_ticks) {
+      const float x = at_axis_value(tick, layout.y_low).x;
+      line_of(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + length), theme.axis, thickness);
+    }
+  }
+  const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
   // A steady chart's x label at the right end of the ticks' line, the ticks it would cover left out.
   const float x_label_left = high_right.x - width_of(font, chart.x_label);
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
     const float x = at_axis_value(layout.x_ticks[i], layout.y_low).x;
     const std::string& label = layout.x_tick_labels[i];
     if (chart.steady && !chart.x_label.empty() && x + 0.5f * width_of(font, label) + 8.0f * s > x_label_left) continue;
-    draw->AddText(font, text, ImVec2(x - 0.5f * width_of(font, label), low_left.y + 3.0f * s), theme.text, label.c_str());
+    draw->AddText(font, text, ImVec2(x - 0.5f * width_of(font, label), low_left.y + x_labels_below), theme.text, label.c_str());
   }
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
     const float y = at_axis_value(layout.x_low, layout.y_ticks[i]).y;
     const std::string& label = layout.y_tick_labels[i];
     draw->AddText(font, text, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text, label.c_str());
   }
-  const ImVec2 x_label_at = chart.steady ? ImVec2(x_label_left, low_left.y + 3.0f * s)
+  const ImVec2 x_label_at = chart.steady ? ImVec2(x_label_left, low_left.y + x_labels_below)
                                          : ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)),
                                                   low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
   draw->AddText(font, text, x_label_at, chart.plain ? theme.faint_text : theme.text, chart.x_label.c_str());

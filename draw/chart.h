@@ -149,6 +149,17 @@ struct ChartLayout {
     float y;
   };
   std::vector<Level> levels;
+  // The lines draw_chart drew to read the data by, with their colours, for the contrast test:
+  // the data area's edges and the zero lines (axis), the tick marks outside the edges (tick:
+  // a steady chart's, which read 3:1 or more on the panel) and the grid across the data (grid:
+  // kept faint, so that it does not compete with the curves and levels; the ticks are the
+  // reading aid). Empty from layout_chart.
+  struct Line {
+    enum class Kind { axis, tick, grid } kind;
+    ImVec2 from, to;
+    ImU32 colour;
+  };
+  std::vector<Line> lines;
 
   ImVec2 to_screen(double x, double y) const;  // the chart's own numbers to screen points
 };

@@ -30,9 +30,19 @@ struct FrameLayout {
   ImVec2 column_corner, column_size;
   // The frame fills `size` from `origin` (the window keeps a menu bar above it and its
   // transport controls below).
-  // `large_plots` (the window's projector mode, its plots a page at a time): the plots' row
-  // takes more of the left side, so that the key plot's levels read from the back of a room.
-  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool large_plots = false);
+  // `projector` (the window's projector mode, its plots a page at a time): the title is one
+  // line and the legend a column beside the plots' row, so that the row, under a world as tall
+  // as on a screen, is a third of the screen high or more and the key plot's levels read from
+  // the back of a room.
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool projector = false);
+  // The legend's column in projector mode, in points at text scale 1, until a lesson's names
+  // say how wide it is (legend_column_width in legend.h): "friction" after its arrow in 14 pt
+  // text, and its margins.
+  static constexpr float legend_column_width = 95.0f;
+  // The title's panel's padding above and below its one line on a projector, in points.
+  static constexpr float title_padding = 1.0f;
+  // The same with the legend's column `width` pixels wide (projector mode), the plots the rest.
+  FrameLayout with_legend_column(float width) const;
 };
 
 // Where the frame put things in the world view, for tests of its layout: per lane, the
@@ -106,11 +116,12 @@ struct FrameStyle {
   // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
   // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
   bool show_extra_plot = false;
-  // The plots one a page, each its row's full width (the window's projector mode): the lesson's
-  // key plot, its first, as large as the row allows and read from the back of the room, and
-  // the pages the same whatever the run, so that nothing moves as it goes on or at the reveal
-  // (how many plots fitted side by side was chosen anew each frame from their axes and legends).
-  bool plots_one_a_page = false;
+  // The window's projector mode (FrameLayout::of's `projector`): the title one line, the legend
+  // beside the plots, and the plots one a page, each its row's full width: the lesson's key
+  // plot, its first, as large as the row allows and read from the back of the room, and the
+  // pages the same whatever the run, so that nothing moves as it goes on or at the reveal (how
+  // many plots fitted side by side was chosen anew each frame from their axes and legends).
+  bool projector = false;
   // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
   int turn_plot_pages = 0;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.
@@ -127,11 +138,11 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
 // them: the window finds bodies under the mouse with them, tests find the arrows.
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), const ViewAdjust& adjust = {},
-                                  bool large_plots = false);
+                                  bool projector = false);
 // The first (or only) of them.
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                     ImVec2 origin = ImVec2(0.0f, 0.0f));
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
-                  bool large_plots = false);
+                  bool projector = false);
 
 }  // namespace frictionlab::ui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,8 @@ std::string metres(float value) {
 // In the legend's strip, right: a bar of a round length in metres, its end at `bottom_right`,
 // its length written above it, or before it (`beside`) when the row above is taken.
 void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_right, const Theme& theme, const Fonts& fonts,
-                    bool beside) {
-  const float bar = nice_length(110.0f * fonts.scale / pixels_per_metre);
+                    bool beside, float length_in_metres = 0.0f) {
+  const float bar = length_in_metres > 0.0f ? length_in_metres : nice_length(110.0f * fonts.scale / pixels_per_metre);
   const float pixels = bar * pixels_per_metre;
   const ImVec2 end(bottom_right.x - 16.0f * fonts.scale, bottom_right.y - 12.0f * fonts.scale);
   const ImVec2 start(end.x - pixels, end.y);
@@ -98,6 +99,49 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   // written before it) when the arrows leave it no room. With large text in a narrow world the
   // contact states are then named by a word each, and then the chips close up, as far as the
   // row needs.
+  if (size.y > size.x) {
+    // A column (projector mode, beside the plots): an entry a line, the arrows with their
+    // scale, the contact states, the materials, and the scale bar under them. The lines close
+    // up (to 2 pt between) when there are more than its height holds at 6 pt.
+    const std::size_t forces = static_cast<std::size_t>(std::count(std::begin(present), std::end(present), true));
+    const std::size_t lines = forces + 1 + 2 + materials.size() + 2;  // the scale bar takes two
+    const float room = size.y - 8.0f * s;
+    const float step = std::max(font->FontSize + 2.0f * s, std::min(line, room / static_cast<float>(lines)));
+    ImVec2 at(left, corner.y + 6.0f * s);
+    for (int kind = 0; kind < force_kind_count; ++kind) {
+      if (!present[kind]) continue;
+      draw_arrow(draw, ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + 26.0f * s, at.y + 0.5f * font->FontSize),
+                 theme.force[kind], 3.0f * s);
+      text_at(ImVec2(at.x + 32.0f * s, at.y), std::string(force_kind_name(static_cast<ForceKind>(kind))));
+      at.y += step;
+    }
+    draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
+                  theme.text, 3.0f * s);
+    text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
+    at.y += step;
+    const float inside = right - 6.0f * s;
+    const bool short_states = true;  // the chips are named by a word each: the column stays narrow
+    const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
+      const ImVec2 centre(at.x + 7.0f * s, at.y + 0.5f * font->FontSize);
+      if (round) {
+        draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
+      } else {
+        draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
+        draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);
+      }
+      text_at(ImVec2(at.x + 20.0f * s, at.y), text);
+      at.y += step;
+    };
+    chip(theme.sticking, short_states ? "sticking" : "sticking contact", true);
+    chip(theme.slipping, short_states ? "slipping" : "slipping contact", true);
+    for (const auto& [colour, material] : materials) chip(colour, material, false);
+    // The bar from the column's left, its length written above it.
+    const float metre_bar = nice_length(std::min(110.0f * s, inside - left - 16.0f * s) / camera.pixels_per_metre);
+    const float bar_pixels = metre_bar * camera.pixels_per_metre;
+    draw_scale_bar(draw, camera.pixels_per_metre, ImVec2(left + bar_pixels + 16.0f * s, at.y + step + 12.0f * s), theme, fonts,
+                   false, metre_bar);
+    return;
+  }
   const float bar = nice_length(110.0f * s / camera.pixels_per_metre);
   const float bar_room = bar * camera.pixels_per_metre + 32.0f * s;
   const bool bar_below = arrows_end + bar_room > right;
@@ -148,6 +192,26 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   chip(theme.sticking, sticking, true);
   chip(theme.slipping, slipping, true);
   for (const auto& [colour, material] : materials) chip(colour, material, false);
+}
+
+float legend_column_width(const Scene& scene, const Fonts& fonts) {
+  ImFont* font = fonts.small;
+  const float s = fonts.scale;
+  const auto width_of = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  // Every kind of force, whether it acts yet or not, so that the column keeps its width as the
+  // run goes on; the arrows' scale at its longest (40 pt) with a four-digit value; the states'
+  // words and the materials' names after their marks.
+  float widest = 46.0f * s + width_of("= 1000 N");
+  for (int kind = 0; kind < force_kind_count; ++kind) {
+    widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
+  }
+  for (const char* state : {"sticking", "slipping"}) widest = std::max(widest, 20.0f * s + width_of(state));
+  for (const auto& [name, body] : scene.bodies()) {
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      widest = std::max(widest, 20.0f * s + width_of(lessons::class_words(material_name(scene, fixture))));
+    }
+  }
+  return 10.0f * s + widest + 12.0f * s;  // the margins: 10 pt before, 6 pt and the panel's edge after
 }
 
 }  // namespace frictionlab::ui

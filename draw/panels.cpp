@@ -40,27 +40,43 @@ bool begin_tab(const char* label, int flags) {
   return open;
 }
 
-void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts, bool one_line,
+                 float one_line_padding) {
+  if (one_line) ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, one_line_padding));
   if (begin_panel("title", "", corner, size)) {
     char clock[32];
     std::snprintf(clock, sizeof clock, "t = %.2f s", lesson.scene().time());
     ImGui::PushFont(fonts.title);
     const float clock_width = ImGui::CalcTextSize(clock).x;
     const float clock_x = ImGui::GetWindowContentRegionMax().x - clock_width;
+    const float room = clock_x - 12.0f * fonts.scale;
     // A long title stops short of the clock.
-    ImGui::PushTextWrapPos(clock_x - 12.0f * fonts.scale);
+    ImGui::PushTextWrapPos(room);
     shown_text(lesson.title().c_str());
     ImGui::PopTextWrapPos();
+    const ImVec2 title_end = ImGui::GetItemRectMax();
     const ImVec2 after_title = ImGui::GetCursorPos();
     ImGui::SetCursorPos(ImVec2(clock_x, ImGui::GetStyle().WindowPadding.y));
     shown_text(clock);
     ImGui::SetCursorPos(after_title);
     ImGui::PopFont();
-    ImGui::PushTextWrapPos(0.0f);
-    shown_text(lesson.question().c_str());
-    ImGui::PopTextWrapPos();
+    if (!one_line) {
+      ImGui::PushTextWrapPos(0.0f);
+      shown_text(lesson.question().c_str());
+      ImGui::PopTextWrapPos();
+    } else {
+      // One line (projector mode): the question after the title, on its baseline, where it
+      // fits before the clock; else the teacher asks it (the plots have the height).
+      const float gap = 16.0f * fonts.scale;
+      const float x = title_end.x - ImGui::GetWindowPos().x + gap;
+      if (x + ImGui::CalcTextSize(lesson.question().c_str()).x <= room) {
+        ImGui::SetCursorPos(ImVec2(x, ImGui::GetStyle().WindowPadding.y + fonts.title->Ascent - fonts.body->Ascent));
+        shown_text(lesson.question().c_str());
+      }
+    }
   }
   end_panel();
+  if (one_line) ImGui::PopStyleVar();
 }
 
 std::string pair_of(const lessons::Parameter& parameter) {

@@ -30,7 +30,10 @@ inline constexpr const char* hidden_value_text = "? (a mystery)";
 bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, bool scroll = false);
 void end_panel();
 
-void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+// `one_line` (projector mode): the question after the title where it fits, else left out, and
+// `one_line_padding` pixels above and below.
+void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, const Fonts& fonts, bool one_line = false,
+                 float one_line_padding = 0.0f);
 
 // The friction pair a parameter is a coefficient of ("aluminium on wood"), "" for any other.
 std::string pair_of(const lessons::Parameter& parameter);
