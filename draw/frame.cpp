@@ -127,10 +127,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  // Planned in the column a screen has under its two-line title, so that what folds (the
-  // Parameters panel, for the answers) is the same on a projector, whose column is taller by
-  // the title line it saves: that goes to the last panel, the answers and the books.
-  const FrameLayout base = FrameLayout::of(display, s, style.origin);
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector);
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
