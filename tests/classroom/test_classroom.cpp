@@ -1620,11 +1620,32 @@ TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
 // Issue 31: the Parameters panel folded into its heading as the run ended (to leave the class's
 // answers their room) and unfolded at R, moving the tabs under the teacher's pointer. Whether it
 // folds is decided as the lesson opens, for the answers at their tallest, and kept through the
-// run, its end and R; a click on its arrow opens it for the rest of the lesson. tipping_box in
-// projector mode has no room for both: folded from the opening.
+// run, its end and R; a click on its arrow opens it for the rest of the lesson. Every built-in
+// lesson has room for both at 1920×1080 in projector mode, so the lesson here is tipping_box
+// with its two questions in a teacher's longer words: no room for both, folded from the opening.
 TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAndOpenOnAClick) {
+  const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "fold_for_the_answers";
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path script = folder / "tipping_box_longer_questions.lua";
   {
-  Driver driver("tipping_box");
+    std::ifstream original(lessons::resolve_lesson("tipping_box"));
+    std::string text((std::istreambuf_iterator<char>(original)), std::istreambuf_iterator<char>());
+    const std::string longer =
+        " Think of a tall bookcase pushed along a carpet: talk it over with the person beside you, write"
+        " your answer down, and be ready to say why before the run starts.";
+    std::size_t asked = 0;
+    for (const std::string question : {"does the box tip over or slide along the floor?",
+                                       "when the box starts to tip or slide?"}) {
+      const std::size_t at = text.find(question);
+      if (at == std::string::npos) continue;
+      text.insert(at + question.size(), longer);
+      ++asked;
+    }
+    ASSERT_EQ(asked, 2u) << "tipping_box's questions were reworded: find its two questions anew";
+    std::ofstream(script) << text;
+  }
+  {
+  Driver driver(script.string());
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
@@ -1661,6 +1682,7 @@ TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAnd
   incline.frame();
   incline.frame();
   EXPECT_FALSE(incline.classroom().control("parameters open").has_value()) << "incline's sliders folded as the run ended";
+  std::filesystem::remove_all(folder);
 }
 
 // A slider let go keeps the column as the lesson opened with: at stacked_blocks' slowest pull its
