@@ -64,11 +64,18 @@ probe { "friction_force", unit = "N", read = { touch, "fx" } }
 probe { "block_speed", unit = "m/s", read = { block, "vx" } }
 probe { "slipping", read = { touch, "slipping" } }  -- 1 while the block slides, 0 while it sticks
 
-plot { "Forces on the block", kind = "time", y = { "spring_force", "friction_force" } }
+local N = mass * g  -- the bench holds the block up: it lies flat
+-- Where friction gives way as the spring pulls forward, and where it sits while sliding
+-- (negative: it pulls the block back). Both plots draw them: the first is the one a projector
+-- shows, and its friction curve climbs to the one and drops to the other at each slip.
+local friction_levels = {
+  { "−μs·N", function() return -param.mu_s * N end },
+  { "−μk·N", function() return -param.mu_k * N end },
+}
+plot { "Forces on the block", kind = "time", y = { "spring_force", "friction_force" }, levels = friction_levels }
 -- Friction against the pull, over the Coulomb law as the article stacks it: stuck, friction
 -- answers the pull, f = −F, as long as |F| ≤ μs·N; sliding, it is −μk·N whatever the pull.
 -- The branch that applies (the contact's state) is drawn bold.
-local N = mass * g  -- the bench holds the block up: it lies flat
 plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "friction_force" },
   theory = {
     { "sticking: f = −F, |F| ≤ μs·N", function(F) if math.abs(F) <= param.mu_s * N then return -F end end,
@@ -76,12 +83,7 @@ plot { "Friction against the pull", kind = "xy", x = "spring_force", y = { "fric
     { "sliding: f = −μk·N", function(F) return -param.mu_k * N end,
       active = function() return touch.slipping == 1 end },
   },
-  -- Where friction gives way as the spring pulls forward, and where it sits while sliding
-  -- (negative: it pulls the block back).
-  levels = {
-    { "−μs·N", function() return -param.mu_s * N end },
-    { "−μk·N", function() return -param.mu_k * N end },
-  } }
+  levels = friction_levels }
 
 -- Reading the record ----------------------------------------------------------------------
 -- Like the article's experiment: record, then read the graph. The contact changes state during
