@@ -11,6 +11,12 @@ float nice_length(float wanted) {
   return (fraction < 1.5f ? 1.0f : fraction < 3.5f ? 2.0f : fraction < 7.5f ? 5.0f : 10.0f) * power;
 }
 
+float nice_length_within(float most) {
+  const float power = std::pow(10.0f, std::floor(std::log10(most)));
+  const float fraction = most / power;
+  return (fraction < 2.0f ? 1.0f : fraction < 5.0f ? 2.0f : 5.0f) * power;
+}
+
 const std::string& material_name(const Scene& scene, const b2Fixture* fixture) {
   static const std::string none = "?";
   const int id = fixture_material(const_cast<b2Fixture*>(fixture));

@@ -23,8 +23,12 @@ inline ImVec2 sub(ImVec2 a, ImVec2 b) { return ImVec2(a.x - b.x, a.y - b.y); }
 inline ImVec2 mul(ImVec2 a, float s) { return ImVec2(a.x * s, a.y * s); }
 inline float length(ImVec2 a) { return std::hypot(a.x, a.y); }
 
-// 1, 2 or 5 times a power of ten: the nicest length near `wanted`.
+// 1, 2 or 5 times a power of ten: the nicest length near `wanted` (from 0.57 to 1.43 times it:
+// 3.5 rounds up to 5).
 float nice_length(float wanted);
+// The longest 1, 2 or 5 times a power of ten that is no longer than `most`: for a scale bar
+// that must fit its room, where a bar rounded up would be cut and read wrong.
+float nice_length_within(float most);
 const std::string& material_name(const Scene& scene, const b2Fixture* fixture);
 ImU32 fixture_colour(const Scene& scene, const b2Fixture* fixture, const Theme& theme);
 

@@ -72,7 +72,11 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   for (const auto& [name, body] : scene.bodies()) {
     for (const ForceOnBody& force : forces_on(scene, body)) present[static_cast<int>(force.kind)] = true;
   }
-  const float newtons = nice_length(40.0f * s / newtons_to_pixels);
+  // A column (projector mode, beside the plots) is taller than wide; a strip, wider than tall.
+  const bool column = size.y > size.x;
+  // The arrows' scale: a line about 40 pt long, of a nice number of newtons; in a column,
+  // rounded down, so that it never outgrows the width legend_column_width keeps for it.
+  const float newtons = column ? nice_length_within(40.0f * s / newtons_to_pixels) : nice_length(40.0f * s / newtons_to_pixels);
   char scale_text[48];
   std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));
   float arrows_end = left;
@@ -99,7 +103,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   // written before it) when the arrows leave it no room. With large text in a narrow world the
   // contact states are then named by a word each, and then the chips close up, as far as the
   // row needs.
-  if (size.y > size.x) {
+  if (column) {
     // A column (projector mode, beside the plots): an entry a line, the arrows with their
     // scale, the contact states, the materials, and the scale bar under them. The lines close
     // up (to 2 pt between) when there are more than its height holds at 6 pt.
@@ -135,8 +139,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     chip(theme.sticking, short_states ? "sticking" : "sticking contact", true);
     chip(theme.slipping, short_states ? "slipping" : "slipping contact", true);
     for (const auto& [colour, material] : materials) chip(colour, material, false);
-    // The bar from the column's left, its length written above it.
-    const float metre_bar = nice_length(std::min(110.0f * s, inside - left - 16.0f * s) / camera.pixels_per_metre);
+    // The bar from the column's left, its length written above it: rounded down, so that it
+    // fits the column whole (a bar rounded up ran past the column's edge, cut shorter than the
+    // length written above it).
+    const float metre_bar = nice_length_within(std::min(110.0f * s, inside - left - 16.0f * s) / camera.pixels_per_metre);
     const float bar_pixels = metre_bar * camera.pixels_per_metre;
     draw_scale_bar(draw, camera.pixels_per_metre, ImVec2(left + bar_pixels + 16.0f * s, at.y + step + 12.0f * s), theme, fonts,
                    false, metre_bar);
@@ -199,8 +205,8 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   const float s = fonts.scale;
   const auto width_of = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
   // Every kind of force, whether it acts yet or not, so that the column keeps its width as the
-  // run goes on; the arrows' scale at its longest (40 pt) with a four-digit value; the states'
-  // words and the materials' names after their marks.
+  // run goes on; the arrows' scale at its longest (40 pt: rounded down in a column) with a
+  // four-digit value; the states' words and the materials' names after their marks.
   float widest = 46.0f * s + width_of("= 1000 N");
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
