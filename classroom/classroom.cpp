@@ -155,8 +155,8 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     // the map's place. Revealed, the map comes back beside it, for the μs the class has just been
     // told; but not in projector mode, where six tabs do not fit the column side by side and
     // every tab would shrink and move at the reveal (nothing may move under the teacher's pointer).
-    const bool map_fits = !mystery_.mystery || (mystery_.mystery->revealed() && !window_.projector);
-    if (map_fits) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
+    const bool map_shown = !mystery_.mystery || (mystery_.mystery->revealed() && !window_.projector);
+    if (map_shown) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
   };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_.text = said;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,

@@ -4,7 +4,7 @@
 // windows does: the menu asks for it, and the classroom draws it after the frame's panels.
 // Opening a setup replaces the lesson every panel reads, and a setup holds every panel's state,
 // so the classroom composes those (Classroom::open_setup, current_setup, save_setup in
-// setup_dialog.cpp) from what this gives.
+// classroom.cpp, with its other openings) from what this gives.
 #pragma once
 
 #include <set>

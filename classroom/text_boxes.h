@@ -1,4 +1,4 @@
-// What the text box being typed in takes, as the window's keys treat it (Classroom::handle_keys):
+// What the text box being typed in takes, as the window's keys treat it (KeyRouting::route, classroom/keys.h):
 // in a box that takes a number, Space ends the typing as Enter does and plays; in a box of free
 // text (a file's name), Space is typed. ImGui 1.86 keeps no note of what a box takes, so the boxes
 // that take a number say so as they are drawn; a slider's typed value (Ctrl+click) is one by

@@ -32,7 +32,8 @@ struct FrameLayout {
   // transport controls below).
   // `projector` (the window's projector mode, its plots a page at a time): the title is one
   // line and the legend a column beside the plots' row, so that the row, under a world as tall
-  // as on a screen, is a third of the screen high or more and the key plot's levels read from
+  // as projector mode's was before (55 % of what is under a two-line title, less the legend's
+  // strip; a screen's world has 57 %), is a third of the screen high or more and the key plot's levels read from
   // the back of a room.
   static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool projector = false);
   // The legend's column in projector mode, in points at text scale 1, until a lesson's names

@@ -993,24 +993,36 @@ float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
 // every value drawn, the gap between its box as drawn and its own arrow at most one line of its
 // text (the box's height without the placer's padding: a reader looks one line away, not
 // several), and every other arrow of the picture further from it than its own, so it cannot be
-// read as another's. Returns how many values it checked.
+// read as another's. Returns how many values it checked; with a `broken` count, it counts the
+// values that break the rule there instead of failing (the pictures not yet held to it).
 //
 // Not yet for an arrow shorter than a line of its text: a friction of a few pixels starting where
 // a normal force starts (stacked_blocks' friction between the blocks, contact_area's feet) has
 // no place a line from it that is nearer it than the normal force; it needs a least drawn length
 // or a leader line, which issue 31 leaves open.
-int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where) {
+int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where,
+                           int* broken = nullptr) {
   int checked = 0;
   for (std::size_t i = 0; i < forces.size(); ++i) {
     const LabelPlacer::ForceLabel& force = forces[i];
     if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
-    EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
+    if (broken != nullptr) {
+      *broken += force.box.has_value() ? 0 : 1;
+    } else {
+      EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
+    }
     if (!force.box) continue;
     const ImVec4 box = drawn(*force.box);
     const float line = box.w - box.y;
     if (length(sub(force.arrow.to, force.arrow.from)) < line) continue;
     ++checked;
     const float own = box_to_arrow(box, force.arrow);
+    if (broken != nullptr) {
+      bool nearest = true;
+      for (std::size_t j = 0; j < forces.size(); ++j) nearest = nearest && (j == i || own < box_to_arrow(box, forces[j].arrow));
+      *broken += (own <= line && nearest) ? 0 : 1;
+      continue;
+    }
     const auto arrow_text = [](const DrawnSegment& arrow) {
       return text_of(ImVec4(arrow.from.x, arrow.from.y, arrow.to.x, arrow.to.y)) + " (tail–tip)";
     };
@@ -1036,16 +1048,18 @@ int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, c
 // looked beside the arrow itself, 1566 checks failed here, in every lesson.
 //
 // Not yet in the pictures below, where arrows crowd more than the placer's places beside them
-// allow (issue 31, item 6, left open; each still fails the rule): the lanes of contact_area (both
-// modes) and where_methods_fail (projector), driven_wheel's wheel with its torque arc and the two
-// stacked blocks (projector), friction_models' lanes at normal size, the projector's inset of
-// spring_pull and terrain, and the inset of stacked_blocks and driven_wheel (3.43 N 22.6 px from
-// its arrow, 5.22 N 41 px, at normal size: the inset's edge or the torque's arc in the way).
+// allow (issue 31, item 6, left open; each still fails the rule, and the test fails when one
+// comes to meet it, so the list only shrinks): the lanes of contact_area (both modes) and
+// where_methods_fail (projector), driven_wheel's wheel with its torque arc and the two stacked
+// blocks (projector), friction_models' lanes at normal size, the projector's inset of
+// spring_pull and terrain, and the inset of stacked_blocks and driven_wheel at normal size (3.43 N
+// 22.6 px from its arrow, 5.22 N 41 px: the inset's edge or the torque's arc in the way).
 TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
-    if (lesson == "contact_area") return true;
-    if (lesson == "where_methods_fail") return projector;
-    if (lesson == "stacked_blocks" || lesson == "driven_wheel") return projector || inset;
+    if (lesson == "contact_area") return !inset;
+    if (lesson == "where_methods_fail") return projector && !inset;
+    if (lesson == "stacked_blocks") return projector != inset;
+    if (lesson == "driven_wheel") return projector || inset;
     if (lesson == "friction_models") return !projector && !inset;
     if (lesson == "spring_pull" || lesson == "terrain") return projector && inset;
     return false;
@@ -1054,6 +1068,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   HeadlessContext gl;
   ImGuiHost host(nullptr);
   int worlds = 0, insets = 0;
+  // The pictures not yet held to the rule, and how many of their values break it: a picture
+  // that comes to meet the rule must leave the list, so that it is held to it from then on.
+  std::map<std::string, int> still_broken;
   for (const bool projector : {true, false}) {
     for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
       for (const lessons::CatalogEntry& entry : lessons::catalog()) {
@@ -1072,10 +1089,18 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
           const std::string where = entry.name + when + (projector ? ", projector" : "") +
                                     (theme == ThemeName::dark ? ", dark" : "");
           check_layout(record, window.playback().lesson(), where);
-          if (!not_yet(entry.name, projector, false)) {
-            for (const FrameRecord::Lane& lane : record.lanes) worlds += check_beside_own_arrow(lane.forces, where + ", world");
+          const std::string world_key = entry.name + (projector ? ", projector" : "") + ", world";
+          const std::string inset_key = entry.name + (projector ? ", projector" : "") + ", inset";
+          for (const FrameRecord::Lane& lane : record.lanes) {
+            if (not_yet(entry.name, projector, false)) {
+              check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
+            } else {
+              worlds += check_beside_own_arrow(lane.forces, where + ", world");
+            }
           }
-          if (!not_yet(entry.name, projector, true)) {
+          if (not_yet(entry.name, projector, true)) {
+            check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
+          } else {
             insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
           }
         }
@@ -1084,6 +1109,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   }
   EXPECT_GE(worlds, 300);
   EXPECT_GE(insets, 200);
+  for (const auto& [picture, broken] : still_broken) {
+    EXPECT_GT(broken, 0) << picture << " now meets the rule: take it off the not_yet list";
+  }
 }
 
 // The lessons with lanes or several bodies, in the window with every measuring tool on, as the
@@ -1887,7 +1915,8 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
     const std::vector<FrameRecord::Plot> plots = shown_plots();
     ASSERT_EQ(plots.size(), 1u) << "at t = " << t << ": plots side by side";
     EXPECT_EQ(plots.front().number, 0u) << "at t = " << t;
-    // The data's width: most of the row's (the rest is the axis' labels and the legend beside it).
+    // The data's width: most of the row's (the rest is the axis' tick labels and the world's
+    // legend column at the row's right; the plot's keys are in rows above the data).
     EXPECT_GT(plots.front().layout.high_right.x - plots.front().layout.low_left.x, 0.6f * left) << "at t = " << t;
   }
   window.key_pressed(Key::right, false);
@@ -1904,8 +1933,9 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
 // high (360 px), in both themes, with the stopwatch's strip over the frame and without it, and
 // the same rectangle at the run's start, in the middle of it, at its end and after the
 // reveal: nothing the run or the reveal adds (a legend's theory keys, wider tick labels, the
-// levels, the run's end notice) moves it. The world above it keeps its height (at least what it
-// had: ForceLabels and the lanes' tools need it).
+// levels, the run's end notice) moves it. The room came from the title and the legends, not
+// from the world (ForceLabels and the lanes' tools need its height, and fail where it is too
+// short); this test measures the plot only.
 TEST(ProjectorPlots, TheKeyPlotIsAThirdOfTheScreenHighAndHoldsStillThroughTheRunAndTheReveal) {
   const ImVec2 display(1920.0f, 1080.0f);
   HeadlessContext gl;
