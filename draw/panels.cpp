@@ -50,9 +50,22 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
     const float clock_width = ImGui::CalcTextSize(clock).x;
     const float clock_x = ImGui::GetWindowContentRegionMax().x - clock_width;
     const float room = clock_x - 12.0f * fonts.scale;
-    // A long title stops short of the clock.
+    // A long title stops short of the clock: wrapped onto the question's line on a screen; in
+    // one line (projector mode), whose panel has no second line, cut with "…" where it would
+    // wrap, so that what shows is whole and says it goes on.
+    std::string title = lesson.title();
+    if (one_line && ImGui::CalcTextSize(title.c_str()).x > room - ImGui::GetCursorPosX()) {
+      const float ellipsis = ImGui::CalcTextSize("…").x;
+      while (!title.empty() && ImGui::CalcTextSize(title.c_str()).x + ellipsis > room - ImGui::GetCursorPosX()) {
+        // Drop the last character whole: its UTF-8 continuation bytes and its first byte.
+        while (!title.empty() && (static_cast<unsigned char>(title.back()) & 0xC0u) == 0x80u) title.pop_back();
+        if (!title.empty()) title.pop_back();
+      }
+      while (!title.empty() && title.back() == ' ') title.pop_back();
+      title += "…";
+    }
     ImGui::PushTextWrapPos(room);
-    shown_text(lesson.title().c_str());
+    shown_text(title.c_str());
     ImGui::PopTextWrapPos();
     const ImVec2 title_end = ImGui::GetItemRectMax();
     const ImVec2 after_title = ImGui::GetCursorPos();

@@ -27,6 +27,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/class_words.h"
 #include "tests/classroom_hands.h"
+#include "tests/lesson_scripts.h"
 #include "tests/rendering.h"
 #include "tests/text_contrast.h"
 
@@ -1925,6 +1926,39 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
   const std::vector<FrameRecord::Plot> opened = shown_plots();
   ASSERT_EQ(opened.size(), 1u);
   EXPECT_EQ(opened.front().number, 0u) << "incline opened on the page tipping_box was left at";
+}
+
+// The projector's title is one line, its panel one line high: a student's long title wrapped
+// onto a second line that the panel cut in half. It is cut with "…" instead, whole in sight.
+TEST(ProjectorTitle, ALongTitleIsCutWithAnEllipsisOnItsOneLineAndShowsWhole) {
+  const std::string title =
+      "How friction between a heavy wooden crate and a rough concrete warehouse floor changes as the push grows";
+  const lessons::ScriptFile script("lesson { title = \"" + title + "\", question = \"does it slide?\" }\n" +
+                          "local floor = ground { \"floor\", material = \"wood\" }\n"
+                          "box { \"crate\", material = \"wood\", width = 0.4, height = 0.3, on = floor, at = 0, mass = 5 }\n");
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  for (const bool projector : {true, false}) {
+    Classroom window(class_window(script.path(), {"1920x1080", 1920, 1080, projector}));
+    ASSERT_EQ(window.failed_script().error, "");
+    draw_window_frame(gl, host, window, display);
+    FrameRecord record;
+    draw_window_frame(gl, host, window, display, 0.0, &record);
+    int title_lines = 0;
+    for (const ShownText& text : record.texts) {
+      if (text.panel.find("title") == std::string::npos || text.text.rfind("How friction", 0) != 0) continue;
+      ++title_lines;
+      EXPECT_TRUE(text.whole()) << (projector ? "projector: " : "screen: ") << "'" << text.text << "' is cut";
+      if (projector) {
+        EXPECT_LT(text.text.size(), title.size()) << "the title fits the projector's line whole: make it longer";
+        EXPECT_EQ(text.text.substr(text.text.size() - std::string("…").size()), "…") << text.text;
+      } else {
+        EXPECT_EQ(text.text, title) << "a screen wraps the title whole";
+      }
+    }
+    EXPECT_EQ(title_lines, 1) << (projector ? "projector" : "screen");
+  }
 }
 
 // Issue 31, item 2: on a 1920×1080 projector push's key plot had a data area of 115–140 px,
