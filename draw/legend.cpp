@@ -43,6 +43,17 @@ void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_righ
   draw_label(draw, fonts.small, label, theme.text, 0, length.c_str());
 }
 
+// A chip's mark at `centre`: a dot for a contact state, a swatch for a material, the same in
+// the strip and the column.
+void chip_mark(ImDrawList* draw, ImVec2 centre, ImU32 colour, bool round, const Theme& theme, float s) {
+  if (round) {
+    draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
+  } else {
+    draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
+    draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);
+  }
+}
+
 }  // namespace
 
 void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImVec2 corner, ImVec2 size,
@@ -126,13 +137,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     const float inside = right - 6.0f * s;
     const bool short_states = true;  // the chips are named by a word each: the column stays narrow
     const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
-      const ImVec2 centre(at.x + 7.0f * s, at.y + 0.5f * font->FontSize);
-      if (round) {
-        draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
-      } else {
-        draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
-        draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);
-      }
+      chip_mark(draw, ImVec2(at.x + 7.0f * s, at.y + 0.5f * font->FontSize), colour, round, theme, s);
       text_at(ImVec2(at.x + 20.0f * s, at.y), text);
       at.y += step;
     };
@@ -185,13 +190,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
 
   at = ImVec2(left, chips_y);
   const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
-    const ImVec2 centre(at.x + 7.0f * s, at.y + 0.5f * font->FontSize);
-    if (round) {
-      draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
-    } else {
-      draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
-      draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);
-    }
+    chip_mark(draw, ImVec2(at.x + 7.0f * s, at.y + 0.5f * font->FontSize), colour, round, theme, s);
     text_at(ImVec2(at.x + name_offset, at.y), text);
     at.x += advance + width_of(text);
   };
