@@ -1,0 +1,558 @@
+// The world's labels: every force's value beside its own arrow, in the world and in the
+// free-body inset; names, the slope's angle and the tools' readings off the bodies and each
+// other; every label inside what the world view shows.
+#include "tests/layout_checks.h"
+
+namespace frictionlab::ui {
+namespace {
+using namespace layout_checks;
+
+// The world's words for the class too: the legend's materials and the free-body diagram's
+// body in words (where_methods_fail's "soft_law_block" material, terrain's "asphalt_box").
+TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
+  HeadlessRenderer renderer(frame_width, frame_height);
+  const auto texts_of = [&](const std::string& lesson, double t) {
+    LessonAt at(lesson, {}, t);
+    FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    std::string all;
+    for (const ShownText& text : record.texts) all += text.text + "\n";
+    return all;
+  };
+  const std::string where_methods_fail = texts_of("where_methods_fail", 1.0);
+  EXPECT_NE(where_methods_fail.find("\nsoft law block\n"), std::string::npos) << where_methods_fail;
+  EXPECT_EQ(where_methods_fail.find("soft_law_block"), std::string::npos) << where_methods_fail;
+  const std::string terrain = texts_of("terrain", 1.0);
+  EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
+}
+
+// Before the first step no contact has been solved: the free-body inset of a block resting on a
+// floor showed its weight and no normal force, unbalanced. At t = 0 it draws the body with no
+// arrows and says when the forces come; after a step, the forces and the net force.
+TEST(FreeBodyInset, AtTheStartSaysTheForcesComeWithTheRunInsteadOfShowingTheWeightAlone) {
+  for (const auto& [width, height] : {std::pair(1280, 720), std::pair(1920, 1080)}) {
+    HeadlessRenderer renderer(width, height);
+    for (const char* lesson : {"push", "incline", "terrain"}) {
+      for (const double t : {0.0, 0.5}) {
+        LessonAt at(lesson, {}, t);
+        FrameRecord record;
+        renderer.render(*at.lesson, at.framing, &record);
+        std::string all;
+        for (const ShownText& text : record.texts) all += text.text + "\n";
+        const std::string where = std::string(lesson) + " at " + std::to_string(t) + " s, " + std::to_string(width);
+        const bool said = all.find("forces appear once the run starts\n") != std::string::npos ||
+                          all.find("forces appear once\nthe run starts\n") != std::string::npos;
+        EXPECT_EQ(said, t == 0.0) << where << ": " << all;
+        EXPECT_EQ(all.find("net force: ") != std::string::npos, t > 0.0) << where;
+      }
+    }
+  }
+}
+
+// Whether a label's box lies on a moving body as drawn: its polygons and its circles.
+bool on_body(const ImVec4& label, const b2Body* body, const Camera& camera) {
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() == b2Shape::e_polygon) {
+      const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      std::vector<ImVec2> polygon;
+      for (int k = 0; k < shape->m_count; ++k) polygon.push_back(camera.to_screen(body->GetWorldPoint(shape->m_vertices[k])));
+      if (overlaps_polygon(label, polygon)) return true;
+    } else if (fixture->GetType() == b2Shape::e_circle) {
+      const auto* shape = static_cast<const b2CircleShape*>(fixture->GetShape());
+      const ImVec2 centre = camera.to_screen(body->GetWorldPoint(shape->m_p));
+      const float radius = surface_radius(*shape) * camera.pixels_per_metre;  // as drawn
+      // The box's point nearest the centre.
+      const float x = std::clamp(centre.x, label.x, label.z), y = std::clamp(centre.y, label.y, label.w);
+      if (std::hypot(x - centre.x, y - centre.y) < radius) return true;
+    }
+  }
+  return false;
+}
+
+// The trial: a slope's angle drawn under the block, a driven plank's word under the block on
+// it, forces' values on the bodies their arrows push (a wheel's normal force on the wheel, the
+// top block's on the bottom block). In the lessons with slopes, driven bodies, wheels, stacks
+// and ropes, at the start and as they run, at 1280 × 720 and with projector text: the slope's
+// angle and the word "driven" are placed labels, and they lie on no moving body (only a
+// contact's word goes into the body under it, and a force's value where only that is beside its
+// arrow), nor on each other, nor on an arrow (with every other rule of check_layout).
+TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesAndEachOther) {
+  struct Expected {
+    const char* lesson;
+    bool slope_angle, driven;  // shown whenever its lane is: the slope's corner, the driven body
+  };
+  const Expected lessons_tried[] = {{"incline", true, false},        {"wedge", false, true},
+                                    {"check_the_article", false, false}, {"driven_wheel", false, false},
+                                    {"stacked_blocks", false, false}, {"pulley", false, false}};
+  const double times[] = {0.0, 0.5, 1.5, 3.0};
+  int checked = 0;
+  for (const Screen& screen : {screens[0], screens[3]}) {
+    HeadlessRenderer renderer(screen.width, screen.height, ThemeName::light, screen.scale);
+    for (const Expected& expected : lessons_tried) {
+      for (const double t : times) {
+        LessonAt at(expected.lesson, {}, t);
+        FrameRecord record;
+        renderer.render(*at.lesson, at.framing, &record);
+        char when[32];
+        std::snprintf(when, sizeof when, " at %.1f s, ", t);
+        const std::string where = expected.lesson + std::string(when) + screen.name;
+        check_layout(record, *at.lesson, where);
+        int angles = 0, driven = 0;
+        for (const FrameRecord::Lane& lane : record.lanes) {
+          ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
+          for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+            const std::string& text = lane.texts[i];
+            const bool angle = text.size() > 2 && text.compare(text.size() - 2, 2, "\u00b0") == 0;
+            angles += angle ? 1 : 0;
+            driven += text == "driven" ? 1 : 0;
+            ++checked;
+            if (text.find("sticking") != std::string::npos || text.find("slipping") != std::string::npos) continue;
+            // A force's value goes beside its arrow first (issue 31: kept off the bodies, stacked_blocks'
+            // normal forces went lines away from theirs); on a body, in its opaque box, where only
+            // that is near. ForceLabels.EveryForceWithAnArrowHasItsValueBesideIt checks where they go.
+            const auto ends = [&](const std::string& tail) {
+              return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+            };
+            if (ends(" N") || ends(" N\u00b7m") || ends(" in all")) continue;
+            const ImVec4 label = drawn(lane.labels[i]);
+            for (const auto& [name, body] : at.lesson->scene().bodies()) {
+              if (body->GetType() != b2_dynamicBody) continue;
+              EXPECT_FALSE(on_body(label, body, lane.camera))
+                  << where << ": \"" << text << "\" at " << text_of(label) << " lies on " << name;
+            }
+          }
+        }
+        EXPECT_TRUE(!expected.slope_angle || angles >= 1) << where << ": the slope's angle is not a placed label";
+        EXPECT_TRUE(!expected.driven || driven >= 1) << where << ": the word \"driven\" is not a placed label";
+      }
+    }
+  }
+  EXPECT_GE(checked, 150);
+}
+
+// Every force with an arrow has its value drawn, beside its own arrow, in the world and in the
+// free-body inset (issue 31, a teacher's trial in projector mode at 1920 × 1080): tipping_box at
+// 2.487 s with the distance marks on lost its friction's 2.59 N in both themes; stacked_blocks'
+// normal forces, driven_wheel's friction and a ladder's weight had theirs far from their arrows.
+// "Beside" is the label placer's own search (LabelPlacer::place_beside): the value's box starts
+// at most one and a half arrow widths past the tip (draw_force's reach), moved at most
+// beside_reach() in x and y, so its box lies within that of the arrow.
+TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const std::pair<std::string, double> runs[] = {{"tipping_box", 2.487},
+                                                 {"stacked_blocks", 2.487},
+                                                 {"stacked_blocks", 1.0},
+                                                 {"driven_wheel", 2.487},
+                                                 {"driven_wheel", 0.5},
+                                                 {std::string(FRICTIONLAB_STUDENT_TRIAL) + "/ladder.lua", 1.0},
+                                                 {std::string(FRICTIONLAB_STUDENT_TRIAL) + "/ladder.lua", 1.9}};
+  // The distance from a box to an arrow's line (0 when they meet).
+  const auto distance = [](const ImVec4& box, const DrawnSegment& arrow) {
+    float nearest = 1e9f;
+    for (int i = 0; i <= 200; ++i) {
+      const float f = static_cast<float>(i) / 200.0f;
+      const ImVec2 p(arrow.from.x + f * (arrow.to.x - arrow.from.x), arrow.from.y + f * (arrow.to.y - arrow.from.y));
+      const float dx = std::max({box.x - p.x, 0.0f, p.x - box.z}), dy = std::max({box.y - p.y, 0.0f, p.y - box.w});
+      nearest = std::min(nearest, std::hypot(dx, dy));
+    }
+    return nearest;
+  };
+  const auto check = [&](const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where) -> int {
+    int labelled = 0;
+    for (const LabelPlacer::ForceLabel& force : forces) {
+      if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
+      ++labelled;
+      EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
+      if (!force.box) continue;
+      const ImVec4& box = *force.box;
+      const ImVec2 size(box.z - box.x - 4.0f, box.w - box.y - 4.0f);  // the placer's 2 px of padding off
+      const ImVec2 reach = LabelPlacer::beside_reach(size);
+      const float thickness = 2.0f * force.arrow.half_width;
+      const float allowed = 1.5f * thickness + std::hypot(reach.x, reach.y) + 1.0f;
+      EXPECT_LE(distance(box, force.arrow), allowed)
+          << where << ": " << force.text << " at " << text_of(box) << " is far from its arrow from (" << force.arrow.from.x
+          << ", " << force.arrow.from.y << ") to (" << force.arrow.to.x << ", " << force.arrow.to.y << ")";
+    }
+    return labelled;
+  };
+  int worlds = 0, insets = 0;
+  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const auto& [lesson, t] : runs) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson(lesson), {"projector_1920x1080", 1920, 1080, true});
+      options.window.theme = theme;
+      options.window.tools.distance_marks = true;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      window.run_to(t);
+      draw_window_frame(gl, host, window, display);
+      FrameRecord record;
+      draw_window_frame(gl, host, window, display, 0.0, &record);
+      const std::string where = std::filesystem::path(lesson).stem().string() + " at " + std::to_string(t) + " s" +
+                                (theme == ThemeName::dark ? ", dark" : "");
+      for (const FrameRecord::Lane& lane : record.lanes) worlds += check(lane.forces, where + ", world");
+      ASSERT_TRUE(record.free_body.drawn) << where;
+      insets += check(record.free_body.forces, where + ", free-body inset");
+    }
+  }
+  EXPECT_GE(worlds, 40);
+  EXPECT_GE(insets, 20);
+}
+
+// The distance from a label's box to an arrow's centre line, tail to tip (0 where they meet):
+// the nearest of the box's corners to the segment and of the segment's ends to the box, which is
+// exact for a segment that does not cross the box.
+float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
+  if (overlaps(box, DrawnSegment{arrow.from, arrow.to, 0.0f})) return 0.0f;
+  const auto point_to_box = [&](ImVec2 p) {
+    return std::hypot(std::max({box.x - p.x, 0.0f, p.x - box.z}), std::max({box.y - p.y, 0.0f, p.y - box.w}));
+  };
+  const auto point_to_segment = [&](ImVec2 p) {
+    const ImVec2 d = sub(arrow.to, arrow.from);
+    const float span = d.x * d.x + d.y * d.y;
+    const float f = span > 0.0f ? std::clamp(((p.x - arrow.from.x) * d.x + (p.y - arrow.from.y) * d.y) / span, 0.0f, 1.0f) : 0.0f;
+    return length(sub(p, add(arrow.from, mul(d, f))));
+  };
+  float nearest = std::min(point_to_box(arrow.from), point_to_box(arrow.to));
+  for (const ImVec2 corner : {ImVec2(box.x, box.y), ImVec2(box.z, box.y), ImVec2(box.z, box.w), ImVec2(box.x, box.w)}) {
+    nearest = std::min(nearest, point_to_segment(corner));
+  }
+  return nearest;
+}
+
+// "Beside its own arrow" as a measured rule, in one picture (a lane of the world, or the inset):
+// every value drawn, the gap between its box as drawn and its own arrow at most one line of its
+// text (the box's height without the placer's padding: a reader looks one line away, not
+// several), and every other arrow of the picture further from it than its own, so it cannot be
+// read as another's. Returns how many values it checked; with a `broken` count, it counts the
+// values that break the rule there instead of failing (the pictures not yet held to it).
+//
+// Not yet for an arrow shorter than a line of its text: a friction of a few pixels starting where
+// a normal force starts (stacked_blocks' friction between the blocks, contact_area's feet) has
+// no place a line from it that is nearer it than the normal force; it needs a least drawn length
+// or a leader line, which issue 31 leaves open.
+int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where,
+                           int* broken = nullptr) {
+  int checked = 0;
+  for (std::size_t i = 0; i < forces.size(); ++i) {
+    const LabelPlacer::ForceLabel& force = forces[i];
+    if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
+    if (broken != nullptr) {
+      *broken += force.box.has_value() ? 0 : 1;
+    } else {
+      EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
+    }
+    if (!force.box) continue;
+    const ImVec4 box = drawn(*force.box);
+    const float line = box.w - box.y;
+    if (length(sub(force.arrow.to, force.arrow.from)) < line) continue;
+    ++checked;
+    const float own = box_to_arrow(box, force.arrow);
+    if (broken != nullptr) {
+      bool nearest = true;
+      for (std::size_t j = 0; j < forces.size(); ++j) nearest = nearest && (j == i || own < box_to_arrow(box, forces[j].arrow));
+      *broken += (own <= line && nearest) ? 0 : 1;
+      continue;
+    }
+    const auto arrow_text = [](const DrawnSegment& arrow) {
+      return text_of(ImVec4(arrow.from.x, arrow.from.y, arrow.to.x, arrow.to.y)) + " (tail–tip)";
+    };
+    EXPECT_LE(own, line) << where << ": " << force.text << " at " << text_of(box) << " is " << own
+                         << " px from its arrow " << arrow_text(force.arrow) << ", more than a line (" << line << " px)";
+    for (std::size_t j = 0; j < forces.size(); ++j) {
+      if (j == i) continue;
+      const float other = box_to_arrow(box, forces[j].arrow);
+      EXPECT_LT(own, other) << where << ": " << force.text << " at " << text_of(box) << " is " << own
+                            << " px from its arrow " << arrow_text(force.arrow) << " but " << other << " px from "
+                            << (forces[j].text.empty() ? std::string("another") : forces[j].text + "'s") << " arrow "
+                            << arrow_text(forces[j].arrow);
+    }
+  }
+  return checked;
+}
+
+// Every built-in lesson in the window at 1920 × 1080, in projector mode and not, light and dark,
+// at its opening (a fifth of a second in: no arrows before the first step), half way and at its
+// end: each force's value beside its own arrow by check_beside_own_arrow's rule, in the world and
+// in the free-body inset, with every rule of check_layout (issue 31, item 6: stacked_blocks' "29.4 N"
+// sat 150 px from its arrow, tipping_box's friction beside the push). Before LabelPlacer::place_beside
+// looked beside the arrow itself, 1566 checks failed here, in every lesson.
+//
+// Not yet in the pictures below, where arrows crowd more than the placer's places beside them
+// allow (issue 31, item 6, left open; each still fails the rule, and the test fails when one
+// comes to meet it, so the list only shrinks): the lanes of contact_area (both modes) and
+// where_methods_fail (projector), driven_wheel's wheel with its torque arc and the two stacked
+// blocks (projector), friction_models' lanes at normal size, the projector's inset of
+// spring_pull and terrain, and the inset of stacked_blocks and driven_wheel at normal size (3.43 N
+// 22.6 px from its arrow, 5.22 N 41 px: the inset's edge or the torque's arc in the way).
+TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
+  const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
+    if (lesson == "contact_area") return !inset;
+    if (lesson == "where_methods_fail") return projector && !inset;
+    if (lesson == "stacked_blocks") return projector != inset;
+    if (lesson == "driven_wheel") return projector || inset;
+    if (lesson == "friction_models") return !projector && !inset;
+    if (lesson == "spring_pull" || lesson == "terrain") return projector && inset;
+    return false;
+  };
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  int worlds = 0, insets = 0;
+  // The pictures not yet held to the rule, and how many of their values break it: a picture
+  // that comes to meet the rule must leave the list, so that it is held to it from then on.
+  std::map<std::string, int> still_broken;
+  for (const bool projector : {true, false}) {
+    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+      for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+        ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
+        options.window.theme = theme;
+        Classroom window(options);
+        draw_window_frame(gl, host, window, display);
+        const double end = window.playback().lesson().duration();
+        for (const double t : {0.2, 0.5 * end, end}) {
+          window.run_to(t);
+          draw_window_frame(gl, host, window, display);
+          FrameRecord record;
+          draw_window_frame(gl, host, window, display, 0.0, &record);
+          char when[48];
+          std::snprintf(when, sizeof when, " at %.2f s", t);
+          const std::string where = entry.name + when + (projector ? ", projector" : "") +
+                                    (theme == ThemeName::dark ? ", dark" : "");
+          check_layout(record, window.playback().lesson(), where);
+          const std::string world_key = entry.name + (projector ? ", projector" : "") + ", world";
+          const std::string inset_key = entry.name + (projector ? ", projector" : "") + ", inset";
+          for (const FrameRecord::Lane& lane : record.lanes) {
+            if (not_yet(entry.name, projector, false)) {
+              check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
+            } else {
+              worlds += check_beside_own_arrow(lane.forces, where + ", world");
+            }
+          }
+          if (not_yet(entry.name, projector, true)) {
+            check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
+          } else {
+            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(worlds, 300);
+  EXPECT_GE(insets, 200);
+  for (const auto& [picture, broken] : still_broken) {
+    EXPECT_GT(broken, 0) << picture << " now meets the rule: take it off the not_yet list";
+  }
+}
+
+// The speed readout of a body at the world view's left edge, with projector text: centred over
+// the body it would start left of the view; the placer moves it in, and used to stop at the
+// lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
+// first letter. Every label is inside the part of the lane that shows.
+TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const float scale = 1.35f * 1.5f;
+  const Fonts& fonts = host.prepare(scale, ThemeName::light);
+  const ImVec2 display(1920.0f, 944.0f);
+  for (const char* name : {"push", "incline"}) {
+    LessonAt at(name, {}, 0.5);
+    lessons::Lesson& lesson = *at.lesson;
+    MeasuringTools tools;
+    tools.on.speed = true;
+    tools.follow(lesson, false);
+    FrameRecord record;
+    FrameStyle style;
+    style.fonts = &fonts;
+    style.record = &record;
+    // The view panned so that the main body's centre is at its left edge.
+    const Camera before = world_camera(lesson, at.framing, display, scale);
+    const b2Body* body = measured_body(lesson);
+    ASSERT_NE(body, nullptr) << name;
+    const float offset = before.to_screen(body->GetWorldCenter()).x - before.origin.x;
+    style.view_adjust.pan = b2Vec2(offset / before.pixels_per_metre, 0.0f);
+    style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t /*lane*/,
+                            float newtons_to_pixels, LabelPlacer& labels) {
+      tools.in_world(pass, draw, lesson, camera, 0, newtons_to_pixels, theme(ThemeName::light), fonts, labels);
+    };
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = display;
+    io.DeltaTime = 1.0f / 60.0f;
+    host.begin_frame();
+    build_frame(lesson, at.framing, style, display);
+    ImGui::Render();
+    ASSERT_EQ(record.lanes.size(), 1u) << name;
+    const FrameRecord::Lane& lane = record.lanes.front();
+    const float body_x = lane.camera.to_screen(body->GetWorldCenter()).x;
+    ASSERT_NEAR(body_x, lane.camera.origin.x, 2.0f) << name << ": the body is not at the view's left edge";
+    EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
+    check_layout(record, lesson, std::string(name) + " panned to the left edge, speed readout on");
+  }
+}
+
+// The measuring tools' labels in the lessons a teacher tried them on, at 1280 × 720 and in
+// projector mode: the speed readout is never on the body it measures (it was drawn on
+// spring_pull's block); no label lies on a spring's coils (spring_pull's force label was drawn
+// on them); every distance mark's number is drawn at its tick unless an arrow, a contact mark, a
+// spring, a body or the view's edge is there, never given up to a label that could move (force
+// labels and the speed readout hid them); and behind the start the numbers are negative (they
+// had no minus sign; forward is rightwards, or downhill on a slope). With every other layout
+// rule of check_layout.
+TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOther) {
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  struct Size {
+    const char* name;
+    ImVec2 display;
+    float scale;
+  };
+  // The window's world frame in projector mode: under its menu bar, above its transport bar.
+  const Size sizes[] = {{"1280x720", ImVec2(1280.0f, 720.0f), frame_scale(1280, 720)},
+                        {"projector_1920x1080", ImVec2(1920.0f, 944.0f), 1.35f * frame_scale(1920, 1080)}};
+  struct Moment {
+    const char* lesson;
+    std::map<std::string, std::string> set;
+    double at;
+  };
+  const Moment moments[] = {{"spring_pull", {}, 0.0},  {"spring_pull", {}, 0.5}, {"spring_pull", {}, 1.2},
+                            {"spring_pull", {}, 2.5},  {"push", {}, 0.0},        {"push", {}, 1.0},
+                            {"push", {}, 2.0},         {"incline", {}, 0.0},     {"incline", {}, 0.3},
+                            {"incline", {}, 0.8},      {"incline", {{"angle", "25"}}, 0.5},
+                            // Two blocks, eight arrows and a ruler in a short projector view: the
+                            // stopwatch and the speed, placed last, found no room and covered the
+                            // forces' values and the block. (At t = 0 in projector text the speed
+                            // has no place off the blocks at all and goes on the bottom one.)
+                            {"stacked_blocks", {}, 2.0}, {"stacked_blocks", {}, 4.2}};
+  int numbers_shown = 0, negative_numbers = 0, springs_checked = 0;
+  for (const Size& size : sizes) {
+    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+      const Fonts& fonts = host.prepare(size.scale, theme_name);
+      for (const Moment& moment : moments) {
+        LessonAt at(moment.lesson, moment.set, 0.0);
+        lessons::Lesson& lesson = *at.lesson;
+        MeasuringTools tools;
+        tools.on = ToolSettings{true, true, true, true};
+        tools.follow(lesson, false);  // the start is taken at t = 0, as the window does
+        at.step_to(moment.at);
+        tools.follow(lesson, false);
+        FrameRecord record;
+        FrameStyle style;
+        style.theme = theme_name;
+        style.fonts = &fonts;
+        style.record = &record;
+        std::vector<std::optional<DistanceMarks>> marks;
+        style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t /*lane*/,
+                                float newtons_to_pixels, LabelPlacer& labels) {
+          // As the marks find the placer when they are drawn.
+          if (pass == WorldToolsPass::fixed_labels) marks.push_back(tools.distance_marks(lesson, camera, fonts, &labels));
+          tools.in_world(pass, draw, lesson, camera, 0, newtons_to_pixels, theme(theme_name), fonts, labels);
+        };
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = size.display;
+        io.DeltaTime = 1.0f / 60.0f;
+        host.begin_frame();
+        build_frame(lesson, at.framing, style, size.display);
+        ImGui::Render();
+        char when[32];
+        std::snprintf(when, sizeof when, " at %.1f s", moment.at);
+        std::string where = std::string(moment.lesson) + (moment.set.empty() ? "" : " at 25°") + when + ", " + size.name;
+        if (theme_name == ThemeName::dark) where += ", dark";
+        check_layout(record, lesson, where);
+        ASSERT_EQ(record.lanes.size(), 1u) << where;
+        ASSERT_EQ(marks.size(), 1u) << where;
+        const FrameRecord::Lane& lane = record.lanes.front();
+        ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
+        const Camera& camera = lane.camera;
+        const Scene& scene = lesson.scene();
+
+        // The speed readout, once, off the body it measures (its polygons as drawn).
+        const b2Body* body = measured_body(lesson);
+        ASSERT_NE(body, nullptr) << where;
+        const int readouts = readings_off(lane, body, where);
+        EXPECT_EQ(readouts, 1) << where;
+
+        // No label on a spring's coils: its line, and the coils' 7 px (times the text scale) either
+        // side of it.
+        for (const Spring& spring : scene.springs()) {
+          const ImVec2 from = camera.to_screen(spring.body->GetWorldPoint(spring.local_point));
+          const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)
+                                                          : scene.hand_position(spring));
+          const DrawnSegment coils{from, to, 7.0f * size.scale};
+          ++springs_checked;
+          for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+            EXPECT_FALSE(overlaps(drawn(lane.labels[i]), coils))
+                << where << ": the label \"" << lane.texts[i] << "\" at " << text_of(drawn(lane.labels[i]))
+                << " lies on the spring's coils";
+          }
+        }
+
+        // Each tick's number at its tick, or a fixed drawing in its place: never a label.
+        ASSERT_TRUE(marks.front().has_value()) << where << ": no distance marks";
+        const ImVec2 start = camera.to_screen(*tools.distance_origin());
+        const std::optional<Surface> surface = surface_under(scene, body);
+        ASSERT_TRUE(surface.has_value()) << where;
+        const bool downhill_left = surface->along.y > 0.01f;
+        // Where too few numbers find room, only every few ticks are numbered: how many, from the
+        // nearest two numbers shown. The ticks between are not numbered by rule, not for a label.
+        std::vector<double> shown_metres;
+        for (const DistanceMark& mark : marks.front()->ticks) {
+          if (std::find(lane.texts.begin(), lane.texts.end(), mark.text) != lane.texts.end()) shown_metres.push_back(mark.metres);
+        }
+        double nearest = marks.front()->step;
+        for (std::size_t i = 1; i < shown_metres.size(); ++i) {
+          nearest = i == 1 ? std::abs(shown_metres[1] - shown_metres[0]) : std::min(nearest, std::abs(shown_metres[i] - shown_metres[i - 1]));
+        }
+        const auto every = static_cast<std::size_t>(std::lround(nearest / marks.front()->step));
+        for (const DistanceMark& mark : marks.front()->ticks) {
+          if (!counted(mark, std::max<std::size_t>(every, 1), marks.front()->step)) continue;
+          const auto shown = std::find_if(lane.texts.begin(), lane.texts.end(), [&](const std::string& text) {
+            return text == mark.text;
+          });
+          if (shown != lane.texts.end()) {
+            const ImVec4& box = lane.labels[static_cast<std::size_t>(shown - lane.texts.begin())];
+            // Beyond its tick, or across the line from it.
+            const auto there = [&](const ImVec4& place) {
+              return std::abs(box.x - place.x) < 0.01f && std::abs(box.y - place.y) < 0.01f;
+            };
+            EXPECT_TRUE(there(mark.number_box) || there(mark.across_box)) << where << ": " << mark.text << " is not at its tick";
+            ++numbers_shown;
+            // Its sign says which side of the start it is on: forward is rightwards on a floor,
+            // downhill on a slope. (The start's own tick, a few pixels into a slope, says 0 m.)
+            if (mark.text == "0 m") continue;
+            const bool behind = downhill_left ? mark.foot.x > start.x + 1.0f : mark.foot.x < start.x - 1.0f;
+            EXPECT_EQ(mark.text.rfind("\u2212", 0) == 0, behind) << where << ": " << mark.text << " at x = " << mark.foot.x
+                                                                   << ", the start at x = " << start.x;
+            if (behind) ++negative_numbers;
+            continue;
+          }
+          const ImVec4& view = lane.shown;
+          const auto any = [&](const auto& list, const ImVec4& box) {
+            return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
+          };
+          // The speed's readout is placed before the numbers (a thin lane has room for it or them).
+          const auto under_speed = [&](const ImVec4& box) {
+            for (std::size_t i = 0; i < lane.labels.size(); ++i) {
+              if (lane.texts[i].find("v = ") != std::string::npos && overlaps(box, lane.labels[i])) return true;
+            }
+            return false;
+          };
+          const auto blocked = [&](const ImVec4& box) {
+            const bool cut = box.x < view.x || box.y < view.y || box.z > view.z || box.w > view.w;
+            return cut || under_speed(box) || any(lane.arrows, box) || any(lane.avoided, box) || any(lane.bodies, box);
+          };
+          const ImVec4& box = mark.number_box;
+          EXPECT_TRUE(blocked(mark.number_box) && blocked(mark.across_box))
+              << where << ": the number " << mark.text << " at " << text_of(box)
+              << " was left out where only labels were";
+        }
+      }
+    }
+  }
+  EXPECT_GE(springs_checked, 16);
+  EXPECT_GE(numbers_shown, 100);
+  EXPECT_GE(negative_numbers, 4);  // push's view shows the floor behind the block, incline's the slope above it
+}
+
+}  // namespace
+}  // namespace frictionlab::ui
