@@ -114,8 +114,10 @@ std::vector<bool> line_breaks(const std::vector<float>& widths, float width) {
   return breaks;
 }
 
-// Beside an empty answer once the run has measured the row: answers are typed at t = 0 (R).
-const char* const held_back_note = "measured: once the class answers (R, then answer)";
+// Beside an empty answer once the run has measured the row (answers are typed at t = 0: R).
+// No longer than a measurement ("measured: 3.92 N"), so it keeps the answer's line: a note of
+// two lines made the column taller than planned and folded the Parameters panel.
+const char* const held_back_note = "measured: hidden";
 
 // Beside the answer: what was typed is no number, or what the run has measured so far.
 std::string answer_note(const lessons::Prediction& prediction, const std::string& answer,

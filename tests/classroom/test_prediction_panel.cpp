@@ -110,7 +110,7 @@ TEST(PredictionPanel, TheMeasurementWaitsForTheClasssAnswer) {
     const std::size_t at = texts.find("measured: ");
     return at == std::string::npos ? std::string("(none)") : texts.substr(at, texts.find('\n', at) - at);
   };
-  EXPECT_EQ(note(), "measured: once the class answers (R, then answer)") << "the breakaway push given away";
+  EXPECT_EQ(note(), "measured: hidden") << "the breakaway push given away";
   hands.key(Key::r);
   hands.click("prediction breakaway push");
   hands.type("4");
