@@ -114,6 +114,11 @@ std::vector<bool> line_breaks(const std::vector<float>& widths, float width) {
   return breaks;
 }
 
+// Beside an empty answer once the run has measured the row (answers are typed at t = 0: R).
+// No longer than a measurement ("measured: 3.92 N"), so it keeps the answer's line: a note of
+// two lines made the column taller than planned and folded the Parameters panel.
+const char* const held_back_note = "measured: hidden";
+
 // Beside the answer: what was typed is no number, or what the run has measured so far.
 std::string answer_note(const lessons::Prediction& prediction, const std::string& answer,
                         const lessons::ExpectationResult* row, bool& fault) {
@@ -127,6 +132,10 @@ std::string answer_note(const lessons::Prediction& prediction, const std::string
     }
   }
   if (row != nullptr && row->failed) return "measured: ?";
+  // What the run measured is the answer the class is asked for: shown beside the class's own
+  // answer only (a teacher's trial: "measured: 3.92 N" appeared mid-run beside an empty box
+  // and gave the answer away). A row that is not measured yet, or says why not, gives nothing.
+  if (answer.empty() && row != nullptr && row->measured_yet) return held_back_note;
   return "measured: " + (row ? measured_shown(*row) : std::string("not yet"));
 }
 
@@ -360,10 +369,17 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
     bool fault = false;
     const std::string note =
         answer_note(prediction, answer_of(predictions, prediction), named_row(rows, prediction), fault);
-    const AnswerLayout layout = answer_layout(prediction, note, width);
-    // Each line of controls is a frame high; a note on a line of its own wraps.
-    height += frame * static_cast<float>(layout.lines() - (layout.breaks.back() ? 1 : 0));
-    if (layout.breaks.back()) height += wrapped_height(note, width);
+    // The taller of the note now and the one held back while the box is empty: the column is
+    // planned at t = 0, before the run measures anything, and the held-back note comes later.
+    float tallest = 0.0f;
+    for (const std::string& shown : {note, std::string(held_back_note)}) {
+      const AnswerLayout layout = answer_layout(prediction, shown, width);
+      // Each line of controls is a frame high; a note on a line of its own wraps.
+      float lines = frame * static_cast<float>(layout.lines() - (layout.breaks.back() ? 1 : 0));
+      if (layout.breaks.back()) lines += wrapped_height(shown, width);
+      tallest = std::max(tallest, lines);
+    }
+    height += tallest;
   }
   return height;
 }

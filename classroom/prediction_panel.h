@@ -40,7 +40,8 @@ struct PredictionControls {
 };
 
 // The panel's contents: before the reveal the questions with the class's answers (editable
-// while `editable`: at t = 0) and what the run has measured so far, and the reveal button;
+// while `editable`: at t = 0) and what the run has measured so far beside each answer given (an
+// empty answer's measurement is held back: it is the answer), and the reveal button;
 // after it, the class's answer, the theory and the measurement side by side. With
 // `theory_withheld` (a mystery pair's values are in it: classroom_state/mystery.h) the theory says "hidden"
 // even then, and the class is judged against the measurement alone.

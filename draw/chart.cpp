@@ -53,6 +53,8 @@ std::string tick_text(double value, double step) {
   const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
   std::snprintf(text, sizeof text, "%.*f", std::min(decimals, 6), value);
   std::string shown = text;
+  // A value that rounds to zero is zero, not "−0" or "−0.000" (a tick a rounding away from 0).
+  if (shown.find_first_not_of("-0.") == std::string::npos) shown.erase(0, shown[0] == '-' ? 1 : 0);
   if (!shown.empty() && shown[0] == '-') shown.replace(0, 1, "\u2212");
   return shown;
 }
@@ -721,7 +723,10 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
   // The levels over the series: the values the class reads off the plot.
   for (const ChartLayout::Level& placed : layout.levels) {
     const ChartLevel& level = chart.levels[placed.index];
-    draw_dashed(draw, {ImVec2(low_left.x, placed.y), ImVec2(high_right.x, placed.y)}, level.colour, 1.5f * s, 9.0f * s, 5.0f * s);
+    // Solid: every dash pattern is a theory curve's (a teacher's trial read push's dashed
+    // −μs·N level for its dashed "sticking: f = −F" key, both grey). Thin and labelled, it is no
+    // series either (those are 2 points and more, in the series' colours).
+    draw->AddLine(ImVec2(low_left.x, placed.y), ImVec2(high_right.x, placed.y), level.colour, 1.5f * s);
     draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * s, placed.at.w + 1.0f),
                         (theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
     draw->AddText(font, text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, theme.panel), level.text.c_str());

@@ -57,7 +57,8 @@ struct ChartCurve {
 // one of their own.
 void give_theory_look(ChartCurve& curve, const Theme& theme, std::size_t index);
 
-// A level marked across the data area: a dashed line at y with its text beside it (μs·N = 3.92 N).
+// A level marked across the data area: a thin solid line at y (the dash patterns are the theory
+// curves') with its text beside it (μs·N = 3.92 N).
 struct ChartLevel {
   std::string text;
   double y = 0.0;

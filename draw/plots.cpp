@@ -42,6 +42,28 @@ Range range_of(const std::vector<const std::vector<double>*>& series, std::size_
   return {low < 0.0 || !include_zero ? std::max(low - margin, -largest) : low, std::min(high + margin, largest)};
 }
 
+// The next of 1, 2, 5, 10, 20, ... times a power of ten at or above `size` (> 0), at most the
+// largest double.
+double round_bound(double size) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  const double power = std::pow(10.0, std::floor(std::log10(size)));
+  for (const double whole : {1.0, 2.0, 5.0, 10.0}) {
+    if (whole * power >= size) return std::min(whole * power, largest);
+  }
+  return largest;
+}
+
+// A range from the record alone (the theory kept back while the class predicts) widened to
+// round ends, as the time axis grows before the reveal: a range fitted to the data drawn so far
+// rescaled the plot every frame of the run (a teacher's trial: push's friction axis moved under
+// the class's eyes from 0 to −4.2 N). The data only add to it, so it only grows, and by a step of
+// 2 or 2.5 times at once: the scale holds still between, three steps a decade.
+Range round_ends(Range range) {
+  if (range.low < 0.0) range.low = -round_bound(-range.low);
+  if (range.high > 0.0) range.high = round_bound(range.high);
+  return range;
+}
+
 // A probe as the class reads it: the script's label for it, else its name in words.
 std::string probe_words(const lessons::Lesson& lesson, const std::string& probe) {
   const std::string& label = lesson.probe_label(probe);
@@ -96,7 +118,12 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   chart.y_label = plot.y.size() == 1 ? axis_title(lesson, plot.y.front()) : one_unit && !y_unit.empty() ? "(" + y_unit + ")" : "";
 
   // The x axis: the lesson's time span, or the data's range with zero in it.
-  const Range x_range = over_time ? Range{0.0, std::max(time_span, count ? times.back() : 0.0)} : range_of(xs, count, true);
+  // Before the reveal a range from the record alone, with round ends (round_ends); once the
+  // theory is shown its levels and curves hold the range from the opening (push's friction
+  // axis), and the ends fit what is drawn.
+  const auto grown = [&](Range range) { return with_theory ? range : round_ends(range); };
+  const Range x_range =
+      over_time ? Range{0.0, std::max(time_span, count ? times.back() : 0.0)} : grown(range_of(xs, count, true));
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
 
@@ -204,6 +231,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     const Range theory_range = range_of({&theory_values}, theory_values.size(), true);
     y_range = count == 0 ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
   }
+  y_range = grown(y_range);
   chart.fixed_y = true;
   chart.y_low = y_range.low, chart.y_high = y_range.high;
   return chart;

@@ -95,5 +95,30 @@ TEST(PredictionPanel, TheAnswersArePlannedAnewWhenASetupOpens) {
   EXPECT_TRUE(after.whole);
 }
 
+// Issue 31, a teacher's trial: "measured: 3.92 N" showed beside the empty answer box mid-run,
+// before the class had answered: it is the answer. Beside an empty box the measurement waits
+// for the class's answer (typed at t = 0: R); beside an answer it shows as the run measures it.
+TEST(PredictionPanel, TheMeasurementWaitsForTheClasssAnswer) {
+  ClassroomOptions options;  // predictions asked, as by default
+  options.lesson = "push";
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  hands.classroom().playback().run_to(3.0);  // theory's breakaway: 3.92 N at 1.96 s
+  ASSERT_TRUE(hands.classroom().theory_hidden());
+  const auto note = [&] {
+    const std::string texts = hands.texts();
+    const std::size_t at = texts.find("measured: ");
+    return at == std::string::npos ? std::string("(none)") : texts.substr(at, texts.find('\n', at) - at);
+  };
+  EXPECT_EQ(note(), "measured: hidden") << "the breakaway push given away";
+  hands.key(Key::r);
+  hands.click("prediction breakaway push");
+  hands.type("4");
+  hands.press_enter();
+  ASSERT_EQ(hands.classroom().predictions().answers["breakaway push"], "4");
+  hands.classroom().playback().run_to(3.0);
+  EXPECT_EQ(note().rfind("measured: 3.9", 0), 0u) << note();
+}
+
 }  // namespace
 }  // namespace frictionlab::ui

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -547,6 +548,106 @@ TEST(TheoryCurves, EachCurveOfAPlotHasALookOfItsOwnOnThePlotAndInItsLegend) {
     EXPECT_GT(swatch_vertices[0], 0) << theme_name(name);
     EXPECT_GT(swatch_vertices[1], swatch_vertices[0]) << theme_name(name) << ": dots are more pieces than dashes";
   }
+}
+
+// Whether an end of a range is 0 or 1, 2 or 5 times a power of ten, either way.
+bool round_end(double end) {
+  if (end == 0.0) return true;
+  const double power = std::pow(10.0, std::floor(std::log10(std::abs(end)) + 1e-12));
+  const double whole = std::abs(end) / power;
+  return std::abs(whole - std::round(whole)) < 1e-9 && (std::round(whole) == 1.0 || std::round(whole) == 2.0 ||
+                                                         std::round(whole) == 5.0 || std::round(whole) == 10.0);
+}
+
+// Issue 31, a teacher's trial: push's key plot rescaled every frame of the run, its friction
+// axis fitted to the record so far (−2.1 N at 1 s, −4.2 N at 2 s), the scale moving under the
+// class's eyes. Before the reveal (the record alone) its ranges, x and y, have round ends (1, 2,
+// 5 times a power of ten) that only grow, frame by frame at 60 Hz, and hold still while the
+// record stays within them: from 1 s to the run's end (friction from −2 N to −3.92 N and back
+// to −2.94 N, the push from 2 N to 6.92 N) each steps at most once (y's top, 0.2 to 0.5 N, as
+// its margin grows with the span; x, 5 to 10 N, at a push of 4.7 N). After the reveal the
+// levels −μs·N and −μk·N hold the friction axis from the opening: it never moves.
+TEST(PlotRanges, HaveRoundEndsAndOnlyGrowAsTheRunGoesOn) {
+  for (const bool with_theory : {false, true}) {
+    const char* shown = with_theory ? "after the reveal" : "before the reveal";
+    LessonAt at("push", {}, 0.0);
+    const double end = at.lesson->duration();
+    std::optional<Chart> last;
+    int y_steps = 0, x_steps = 0;
+    for (int frame = 1; frame <= static_cast<int>(end * 60.0); ++frame) {
+      at.step_to(frame / 60.0);
+      const Chart chart = plot_chart(*at.lesson, 0, end, theme(ThemeName::light), with_theory);
+      ASSERT_TRUE(chart.fixed_x && chart.fixed_y);
+      if (!with_theory) {
+        for (const double range_end : {chart.x_low, chart.x_high, chart.y_low, chart.y_high}) {
+          EXPECT_TRUE(round_end(range_end)) << shown << " at t = " << frame / 60.0 << ": range end " << range_end;
+        }
+      }
+      if (last) {
+        EXPECT_LE(chart.y_low, last->y_low) << shown << " at t = " << frame / 60.0;
+        EXPECT_GE(chart.y_high, last->y_high) << shown << " at t = " << frame / 60.0;
+        EXPECT_LE(chart.x_low, last->x_low) << shown << " at t = " << frame / 60.0;
+        EXPECT_GE(chart.x_high, last->x_high) << shown << " at t = " << frame / 60.0;
+        const bool y_moved = chart.y_low != last->y_low || chart.y_high != last->y_high;
+        // The breakaway step records −3.92400002 N against the level's −3.924 N: Box2D's float
+        // (2⁻²⁴ of it, 2e-7 N), no move a class can see. Past 1e-6 of the span is a move.
+        const double span = chart.y_high - chart.y_low;
+        EXPECT_FALSE(with_theory && (std::abs(chart.y_low - last->y_low) > 1e-6 * span ||
+                                     std::abs(chart.y_high - last->y_high) > 1e-6 * span))
+            << "at t = " << frame / 60.0 << ": the friction axis moved after the reveal";
+        if (frame > 60) {
+          y_steps += y_moved;
+          x_steps += chart.x_low != last->x_low || chart.x_high != last->x_high;
+        }
+      }
+      last = chart;
+    }
+    if (!with_theory) {
+      EXPECT_LE(y_steps, 1) << shown;
+      EXPECT_LE(x_steps, 1) << shown;
+      EXPECT_EQ(last->y_low, -5.0) << shown << ": friction reached −3.92 N";
+      EXPECT_EQ(last->x_high, 10.0) << shown << ": the push reached 6.92 N";
+    }
+  }
+}
+
+// Issue 31: a tick a rounding away from zero read "−0.0004"-like noise as "−0"; zero has no sign.
+TEST(PlotRanges, ATickThatRoundsToZeroIsWrittenWithoutASign) {
+  EXPECT_EQ(tick_text(-1e-5, 0.001), "0.000");
+  EXPECT_EQ(tick_text(-0.0, 1.0), "0");
+  EXPECT_EQ(tick_text(-0.4, 1.0), "0");
+  EXPECT_EQ(tick_text(-0.0004, 0.0002), "\u22120.0004") << "a value that does not round to zero keeps its sign";
+  EXPECT_EQ(tick_text(-2.0, 1.0), "\u22122");
+}
+
+// Issue 31, a teacher's trial: push's level −μs·N was drawn in dashes, grey, and read as its
+// dashed grey theory key "sticking: f = −F, F ≤ μs·N". Every dash pattern is a theory curve's;
+// a level is one solid line: along its row, its colour's vertices are those of one line, a
+// few, where a dashed line across the data (9 on, 5 off) gave four or more a dash, hundreds.
+TEST(PlotRanges, ALevelIsASolidLineNoTheoryCurveLooksLike) {
+  FontsForLayout& fonts = measuring();
+  LessonAt at("push", {}, 3.0);
+  const Theme& colours = theme(ThemeName::light);
+  const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours, true);
+  ASSERT_EQ(chart.levels.size(), 2u);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(1280.0f, 720.0f);
+  io.DeltaTime = 1.0f / 60.0f;
+  fonts.host.begin_frame();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const ChartLayout layout = draw_chart(draw, corner, area, chart, colours, fonts.fonts);
+  ASSERT_EQ(layout.levels.size(), 2u);
+  const ChartLayout::Level& level = layout.levels.front();  // −μs·N, below every curve but the sticking one's end
+  int on_row = 0;
+  for (const ImDrawVert& vertex : draw->VtxBuffer) {
+    if (std::abs(vertex.pos.y - level.y) > 2.0f || vertex.col != chart.levels[level.index].colour) continue;
+    if (vertex.pos.x >= level.at.x - 3.0f && vertex.pos.x <= level.at.z + 3.0f) continue;  // its text
+    ++on_row;
+  }
+  ImGui::EndFrame();
+  // One anti-aliased line is up to 8 vertices; the sticking curve crossing the row adds a dash or two.
+  EXPECT_LE(on_row, 24) << "the level is drawn in pieces";
+  EXPECT_GT(on_row, 0) << "the level is not drawn";
 }
 
 }  // namespace
