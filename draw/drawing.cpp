@@ -155,7 +155,8 @@ std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, con
 }
 
 std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text,
-                                                const DrawnSegment* own) {
+                                                const DrawnSegment* own, bool* with_leader) {
+  if (with_leader != nullptr) *with_leader = false;
   const std::vector<ImVec2> places = candidates(wanted, size, beside_rings);
   const auto first_clear = [&](const std::vector<ImVec2>& list, bool off_bodies) -> std::optional<ImVec2> {
     for (const ImVec2& place : list) {
@@ -192,6 +193,39 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     }
     std::optional<ImVec2> found = first_clear(by_own, true);
     if (!found) found = first_clear(by_own, false);
+    // Nowhere free beside it: the nearest free place from which a leader to the arrow
+    // (leader_line(), which draw_force() draws) crosses no label or mark, nor another arrow if
+    // it can; a leader over another value would join the wrong two.
+    const auto leader_clear = [&](ImVec2 place, bool across_arrows) {
+      const DrawnSegment leader = leader_line(box_around(place, size), *own);
+      const auto on = [&](const auto& list) {
+        return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(other, leader); });
+      };
+      const bool crosses_arrow = std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
+        const bool same = other.from.x == own->from.x && other.from.y == own->from.y && other.to.x == own->to.x &&
+                          other.to.y == own->to.y;
+        // Whether the two centre lines cross: each one's ends on either side of the other.
+        const auto side = [](ImVec2 a, ImVec2 b, ImVec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
+        const bool cross = side(leader.from, leader.to, other.from) * side(leader.from, leader.to, other.to) < 0.0f &&
+                           side(other.from, other.to, leader.from) * side(other.from, other.to, leader.to) < 0.0f;
+        return !same && cross;
+      });
+      return length(sub(leader.to, leader.from)) <= longest_leader(size) && !on(taken_) && !on(marks_) &&
+             (across_arrows || !crosses_arrow);
+    };
+    if (!found) {
+      const std::vector<ImVec2> further = candidates(wanted, size, 30);
+      for (const bool across_arrows : {false, true}) {
+        for (const ImVec2& place : further) {
+          if (clear(box_around(place, size), false) && leader_clear(place, across_arrows)) {
+            found = place;
+            if (with_leader != nullptr) *with_leader = true;
+            break;
+          }
+        }
+        if (found) break;
+      }
+    }
     if (found) {
       take(box_around(*found, size), text);
       return found;
@@ -236,6 +270,21 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
   draw->AddTriangleFilled(tip, add(base, mul(across, 0.45f * head)), sub(base, mul(across, 0.45f * head)), colour);
 }
 
+DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow) {
+  // From the arrow's point nearest the box's centre to the box's edge nearest that point: the
+  // shortest such line, so it crosses as little of the picture as it can.
+  const ImVec2 centre(0.5f * (box.x + box.z), 0.5f * (box.y + box.w));
+  const ImVec2 along = sub(arrow.to, arrow.from);
+  const float span = along.x * along.x + along.y * along.y;
+  const float f = span > 0.0f
+                      ? std::clamp(((centre.x - arrow.from.x) * along.x + (centre.y - arrow.from.y) * along.y) / span, 0.0f, 1.0f)
+                      : 0.0f;
+  const ImVec2 on_arrow = add(arrow.from, mul(along, f));
+  const ImVec2 on_box(std::clamp(on_arrow.x, box.x, box.z), std::clamp(on_arrow.y, box.y, box.w));
+  // Half as wide as the arrow's shaft, and at least a pixel, so it reads as a pointer, not a force.
+  return DrawnSegment{on_arrow, on_box, std::max(0.5f, 0.5f * arrow.half_width)};
+}
+
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels) {
   draw_force(draw, arrow, theme, font, thickness, labels, format_quantity(arrow.force.force.Length(), "N"));
@@ -246,7 +295,7 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
   draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
   if (text.empty()) {
-    labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text});
+    labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text, arrow.force.kind, std::nullopt});
     return;
   }
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
@@ -256,10 +305,21 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   // By its own arrow (place_beside): off the moving bodies where that is as near (a normal
   // force's arrow points into the body it pushes; a spring's runs along the spring).
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
-  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own);
+  bool with_leader = false;
+  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own, &with_leader);
+  std::optional<DrawnSegment> leader;
+  if (at && with_leader) {
+    // No free place within a line of the arrow and nearer it than any other (a friction of a few
+    // pixels where a normal force starts, a crowded stack): the value went to the nearest free
+    // place, and a thin line from the arrow to it says whose it is, as a textbook's figure does.
+    // Later labels keep off the line.
+    leader = leader_line(LabelPlacer::box_around(*at, size), own);
+    draw->AddLine(leader->from, leader->to, colour, 2.0f * leader->half_width);
+    labels.avoid(*leader);
+  }
   if (at) draw_label(draw, font, *at, colour, theme.panel, text.c_str());
-  labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness},
-                      at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt, text});
+  const std::optional<ImVec4> box = at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
+  labels.force_label({own, box, text, arrow.force.kind, leader});
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {

@@ -78,9 +78,15 @@ class LabelPlacer {
   // With `own`, the value's own arrow (given to arrow()), a place beside it comes first: the
   // text's box within one line of text (size.y) of the arrow's line and further from every
   // other arrow than from it, near the tip, else along either side of the shaft or behind the
-  // tail (where a short arrow among others leaves its tip no room).
+  // tail (where a short arrow among others leaves its tip no room). Where none of those is free
+  // (a friction of a few pixels where a normal force starts), the nearest free place joined to
+  // the arrow by a leader (leader_line()) no longer than longest_leader() that crosses no label
+  // or mark (nor another arrow, where it can), and `with_leader` says the value needs it drawn.
   std::optional<ImVec2> place_beside(ImVec2 wanted, ImVec2 size, const std::string& text = {},
-                                     const DrawnSegment* own = nullptr);
+                                     const DrawnSegment* own = nullptr, bool* with_leader = nullptr);
+  // A leader's longest: three lines of its text, so the eye follows it from value to arrow
+  // without meeting another value; a value further off stays where the general search puts it.
+  static float longest_leader(ImVec2 size) { return 3.0f * size.y; }
   // Whether a text's box centred at `centre` is beside `own` by place_beside()'s rule.
   bool beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
   static constexpr int beside_rings = 6;
@@ -95,6 +101,10 @@ class LabelPlacer {
     DrawnSegment arrow;
     std::optional<ImVec4> box;  // padding included
     std::string text;
+    ForceKind kind = ForceKind::applied;
+    // A thin line from a point of the arrow to the value's box, drawn where no free place is
+    // beside the arrow (beside()), so that the value is read as this arrow's and no other's.
+    std::optional<DrawnSegment> leader;
   };
   void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
   const std::vector<ForceLabel>& force_labels() const { return force_labels_; }
@@ -162,6 +172,9 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
 // A label with a background that keeps it readable over bodies and lines; `centre` is where
 // the middle of the text goes. No background when `background` is 0.
 void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU32 background, const char* text);
+// A force value's leader: from the arrow's point nearest the label's box (x0, y0, x1, y1) to the
+// box's edge, for a value that has no free place beside its arrow.
+DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
 void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness);
 // A force's arrow in its kind's colour, with its value in newtons just beyond the tip.
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,

@@ -320,11 +320,36 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
                                  std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
   }
+  const float mark_radius = 6.0f * fonts.scale;
+  // A friction acts at its contact's point, where the contact's dot is drawn: one shorter than
+  // the dot's radius (stacked_blocks' friction between the blocks, a few newtons) lay under the
+  // dot and was not seen. It starts at the dot's rim instead, along its own direction, with its
+  // length kept (the length is the force's measure, the dot says where it acts).
+  for (ScreenArrow& arrow : arrows) {
+    if (arrow.force.kind != ForceKind::friction) continue;
+    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
+    // Feet close together: past one dot's rim may be under the next, so on until under none
+    // (each move is forward along the arrow, so a dot is passed at most once).
+    for (std::size_t moves = 0; moves < marks.size(); ++moves) {
+      const auto under = std::find_if(marks.begin(), marks.end(), [&](const ContactMark& mark) {
+        return length(sub(arrow.tail, camera.to_screen(mark.point))) < mark_radius;
+      });
+      if (under == marks.end()) break;
+      const ImVec2 dot = camera.to_screen(under->point);
+      // To the rim along the arrow's line, and past the dot's 1.5 px outline.
+      const ImVec2 from_dot = sub(arrow.tail, dot);
+      const float along = from_dot.x * unit.x + from_dot.y * unit.y;
+      const float across_squared = std::max(0.0f, from_dot.x * from_dot.x + from_dot.y * from_dot.y - along * along);
+      const float to_rim = std::sqrt(std::max(0.0f, mark_radius * mark_radius - across_squared)) - along + 1.5f;
+      const ImVec2 shift = mul(unit, to_rim);
+      arrow.tail = add(arrow.tail, shift);
+      arrow.tip = add(arrow.tip, shift);
+    }
+  }
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   const float thickness = 3.5f * fonts.scale;
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
-  const float mark_radius = 6.0f * fonts.scale;
   for (const ContactMark& mark : marks) {
     const ImVec2 at = camera.to_screen(mark.point);
     labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));

@@ -54,7 +54,13 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, Cont
   const float scale = arrow_scale(*at.lesson, at.framing, display, 1.0f);
   const b2Body* block = at.scene().body("block");
   const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale);
-  const ScreenArrow& friction = arrow_of(arrows, ForceKind::friction);
+  ScreenArrow friction = arrow_of(arrows, ForceKind::friction);
+  // Drawn from the contact dot's rim (6 px at this scale, and its 1.5 px outline), not under
+  // the dot, its length kept: the tail at the contact point moves that far along the arrow.
+  const float along = 6.0f + 1.5f;
+  const ImVec2 unit((friction.tip.x - friction.tail.x) / friction.length(), (friction.tip.y - friction.tail.y) / friction.length());
+  friction.tail = ImVec2(friction.tail.x + unit.x * along, friction.tail.y + unit.y * along);
+  friction.tip = ImVec2(friction.tip.x + unit.x * along, friction.tip.y + unit.y * along);
   const Theme& colours = theme(ThemeName::light);
   const float recorded = static_cast<float>(std::abs(at.scene().friction().find(block, at.scene().body("ground"))->friction_force));
   // The tip's last pixels fade into the background: within 2 px. The contact point is on the
