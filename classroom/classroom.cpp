@@ -88,38 +88,56 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
     noting.emplace(&record->texts);
   }
   controls_.clear();
-  const float s = fonts.scale;
+  advance(wall_seconds);
+  // In the order they are drawn: the strips over the lesson's frame, the frame with the panels it
+  // holds, then what lies over it or under it; the values the panels asked for once all is drawn.
+  const WindowStrips strips = draw_top_strips(display);
+  hand_.projector = window_.projector;
+  hand_.hold_view(*playback_, strips.origin, strips.area, fonts.scale);
+  // Made before the lesson is read for its frame: it forgets the answers a changed value outdated.
+  const FrameStyle style = frame_style(strips.origin, record);
+  build_frame(playback_->lesson(), playback_->framing(), style, strips.area);
+  draw_around_frame(display, strips);
+  apply_asked_values();
+}
+
+void Classroom::advance(double wall_seconds) {
   shortcuts(keys_.route());
   // One setting of the cheapest-setting search a frame: the window stays live while it measures.
   cheapest_.measure_next();
   playback_->advance(wall_seconds);
   watch_files(wall_seconds);
-
   tools_.on = window_.tools;
   tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
-  ImGui::PushFont(fonts.body);
+}
+
+Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
+  const float s = fonts_->scale;
+  WindowStrips strips;
+  ImGui::PushFont(fonts_->body);
   menu_bar();
   const float menu_height = ImGui::GetFrameHeight();
   // The transport bar's words have their place from the lesson's opening (the run's end notice's).
-  const std::string transport_room = playback_->run_end_notice();
-  const float transport_height = TransportBar::shape(transport_room, display.x, s, fonts.small).height;
+  strips.transport_room = playback_->run_end_notice();
+  strips.transport_height = TransportBar::shape(strips.transport_room, display.x, s, fonts_->small).height;
   // The stopwatch over the title: in the world's first lane it was written across the lanes'
   // names and bodies (terrain's "asphalt box"), and squeezed out of thin lanes.
   // It reads the lesson's one clock, whatever the lanes.
   const float stopwatch_height = MeasuringTools::stopwatch_strip_height(window_.tools.stopwatch, s);
   if (stopwatch_height > 0.0f) {
     tools_.draw_stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height),
-                                playback_->lesson().scene().time(), fonts);
+                                playback_->lesson().scene().time(), *fonts_);
   }
   ImGui::PopFont();
-  const ImVec2 origin(0.0f, menu_height + stopwatch_height);
-  const ImVec2 area(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - transport_height));
-  hand_.projector = window_.projector;
-  hand_.hold_view(*playback_, origin, area, s);
+  strips.origin = ImVec2(0.0f, menu_height + stopwatch_height);
+  strips.area = ImVec2(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - strips.transport_height));
+  return strips;
+}
 
+FrameStyle Classroom::frame_style(ImVec2 origin, FrameRecord* record) {
   FrameStyle style;
   style.theme = window_.theme;
-  style.fonts = &fonts;
+  style.fonts = fonts_;
   style.origin = origin;
   style.readings = &playback_->readings();
   if (!script_words_.paths && !playback_->readings().error.empty()) {
@@ -146,42 +164,49 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   }
   style.hidden = mystery_.hidden();
   style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
-  style.more_tabs = [this, s] {
-    if (mystery_.mystery) mystery_.tab.draw_tab(*mystery_.mystery, theory_hidden(), theme(window_.theme), controls_);
-    if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), s, theme(window_.theme), controls_)) {
-      change_settings(*use);
-    }
-    // The map's boundary would give a mystery's μs away: until the reveal the Mystery tab takes
-    // the map's place. Revealed, the map comes back beside it, for the μs the class has just been
-    // told; but not in projector mode, where six tabs do not fit the column side by side and
-    // every tab would shrink and move at the reveal (nothing may move under the teacher's pointer).
-    const bool map_shown = !mystery_.mystery || (mystery_.mystery->revealed() && !window_.projector);
-    if (map_shown) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
-  };
+  style.more_tabs = [this] { draw_more_tabs(); };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_.text = said;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
                      [this] { return mystery_.hidden().theory(); });
-  ImGui::PushFont(fonts.body);
+  ImGui::PushFont(fonts_->body);
   style.parameters_heights = parameters_.heights(parameters_on_show());
   ImGui::PopFont();
-  build_frame(playback_->lesson(), playback_->framing(), style, area);
+  return style;
+}
 
-  ImGui::PushFont(fonts.body);
-  hand_.handle_mouse(*playback_, origin, area, s, status_.text);
-  const FrameLayout layout = FrameLayout::of(area, s, origin, window_.projector);
+void Classroom::draw_more_tabs() {
+  if (mystery_.mystery) mystery_.tab.draw_tab(*mystery_.mystery, theory_hidden(), theme(window_.theme), controls_);
+  if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), fonts_->scale, theme(window_.theme), controls_)) {
+    change_settings(*use);
+  }
+  // The map's boundary would give a mystery's μs away: until the reveal the Mystery tab takes
+  // the map's place. Revealed, the map comes back beside it, for the μs the class has just been
+  // told; but not in projector mode, where six tabs do not fit the column side by side and
+  // every tab would shrink and move at the reveal (nothing may move under the teacher's pointer).
+  const bool map_shown = !mystery_.mystery || (mystery_.mystery->revealed() && !window_.projector);
+  if (map_shown) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
+}
+
+void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
+  const float s = fonts_->scale;
+  ImGui::PushFont(fonts_->body);
+  hand_.handle_mouse(*playback_, strips.origin, strips.area, s, status_.text);
+  const FrameLayout layout = FrameLayout::of(strips.area, s, strips.origin, window_.projector);
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages_panel(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
                  layout.world_size.x - 12.0f * s, *playback_, failed_, browser_, script_words_, theme(window_.theme), controls_);
-  transport_.draw(ImVec2(0.0f, display.y - transport_height), ImVec2(display.x, transport_height), *playback_,
-                  transport_words(), transport_room, s, fonts.small, window_.speed, controls_);
+  transport_.draw(ImVec2(0.0f, display.y - strips.transport_height), ImVec2(display.x, strips.transport_height), *playback_,
+                  transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
   help_panel(window_.help, s, browser_, script_words_.paths, exports_.folder);
-  stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), fonts);
+  stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
   open_script_.draw(*this, s, theme(window_.theme));
   if (std::string said = setup_dialog_.draw(*this, exports_.folder, s, theme(window_.theme), controls_); !said.empty()) {
     status_.text = said;
   }
   ImGui::PopFont();
+}
 
+void Classroom::apply_asked_values() {
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
   for (const auto& [name, value] : parameters_.asked) set_value(name, value);

@@ -172,6 +172,26 @@ class Classroom {
   std::string gauge_figures() const;
 
  private:
+  // What frame() draws, in its order. The lesson's time and the files watched moved on, with the
+  // keys' shortcuts carried out and the tools following the lesson first.
+  void advance(double wall_seconds);
+  // The window's strips over and under the lesson's frame, and the room they leave it.
+  struct WindowStrips {
+    ImVec2 origin, area;            // the lesson's frame: its corner, under the menu bar and the stopwatch, and its size
+    float transport_height = 0.0f;  // the transport bar's, at the window's foot
+    std::string transport_room;     // the words the transport bar keeps room for (the run's end notice)
+  };
+  // The menu bar and the stopwatch's strip under it.
+  WindowStrips draw_top_strips(ImVec2 display);
+  // How the lesson's frame is drawn, with the panels and plots the window puts in it.
+  FrameStyle frame_style(ImVec2 origin, FrameRecord* record);
+  // The tabs the window adds beside the lesson's own (FrameStyle::more_tabs).
+  void draw_more_tabs();
+  // The mouse's hand, then the script's messages over the world's ground, the transport bar,
+  // the help panel and the windows and dialogs over the frame.
+  void draw_around_frame(ImVec2 display, const WindowStrips& strips);
+  // The values the panels asked for while drawn, set now that nothing reads the lesson.
+  void apply_asked_values();
   // The frame's shortcuts (the keys routing left for the window), each given to what it drives.
   void shortcuts(const Shortcuts& keys);
   void menu_bar();

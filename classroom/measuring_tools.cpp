@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "draw/overlays.h"
 #include "draw/panels.h"
@@ -12,88 +11,6 @@
 #include "lessons/runtime/class_words.h"
 
 namespace frictionlab::ui {
-
-namespace {
-
-constexpr double never = std::numeric_limits<double>::infinity();
-// Lesson times are whole frames of the fixed step; a rounding's worth apart is the same time.
-constexpr double same_time = 1e-9;
-
-}  // namespace
-
-bool Stopwatch::Span::on() const { return to == never; }
-
-void Stopwatch::start_stop(double now) {
-  used_ = true;
-  if (running()) {
-    spans_.back().to = now;
-    // Switched on and off at one moment (W twice while paused): it never counted anything.
-    if (spans_.back().to <= spans_.back().from + same_time) spans_.pop_back();
-  } else {
-    spans_.push_back({now, never});
-  }
-}
-
-void Stopwatch::lap(double now) {
-  if (!running() || armed(now)) return;  // armed, it has nothing to lap yet
-  used_ = true;
-  laps_.push_back({now, reading(now)});
-}
-
-void Stopwatch::reset() { *this = Stopwatch{}; }
-
-void Stopwatch::rewind(double now) {
-  // Spans begun after `now` had not begun then; one that held `now` was on then, and is on again.
-  while (!spans_.empty() && spans_.back().from > now + same_time) spans_.pop_back();
-  if (!spans_.empty() && spans_.back().to > now + same_time) spans_.back().to = never;
-  while (!laps_.empty() && laps_.back().at > now + same_time) laps_.pop_back();
-}
-
-double Stopwatch::reading(double now) const {
-  double counted = 0.0;
-  for (const Span& span : spans_) counted += std::max(0.0, std::min(span.to, now) - span.from);
-  return counted;
-}
-
-std::vector<double> Stopwatch::laps() const {
-  std::vector<double> readings;
-  for (const Lap& taken : laps_) readings.push_back(taken.reading);
-  return readings;
-}
-
-std::string Stopwatch::text(double now, bool playing, bool run_ended) const {
-  const double shown = reading(now);
-  // At the run's end the stopwatch stopped with the run; "paused" told the trial's class that
-  // someone had paused it.
-  const char* state = !running()              ? " (stopped)"
-                      : playing               ? ""
-                      : armed(now)            ? " (starts with Play)"
-                      : run_ended             ? " (stopped at the run's end)"
-                                              : " (paused)";
-  char line[64];
-  std::snprintf(line, sizeof line, "stopwatch %.2f s%s", shown, state);
-  std::string text = line;
-  // The last three laps, numbered as the class counts them.
-  const std::size_t first = laps_.size() > 3 ? laps_.size() - 3 : 0;
-  for (std::size_t i = first; i < laps_.size(); ++i) {
-    std::snprintf(line, sizeof line, "\nlap %zu: %.2f s", i + 1, laps_[i].reading);
-    text += line;
-  }
-  return text;
-}
-
-std::string Stopwatch::line(double now, bool playing, bool run_ended, std::size_t laps) const {
-  std::string shown = text(now, playing, run_ended);
-  // text() puts the last three laps on lines of their own; `laps` of them stay, each after a
-  // wide space.
-  std::size_t lines = static_cast<std::size_t>(std::count(shown.begin(), shown.end(), '\n'));
-  for (; lines > laps; --lines) {
-    const std::size_t first = shown.find('\n'), second = shown.find('\n', first + 1);
-    shown.erase(first, second == std::string::npos ? std::string::npos : second - first);
-  }
-  for (std::size_t at = shown.find('\n'); at != std::string::npos; at = shown.find('\n', at)) shown.replace(at, 1, "   ");
-  return shown;
-}
 
 const b2Body* measured_body(const lessons::Lesson& lesson) {
   const lessons::View& view = lesson.view();
@@ -183,9 +100,6 @@ void MeasuringTools::draw_menu(ToolSettings& shown, double now, bool playing, Co
 
 namespace {
 
-// The distance marks' step: a nice length about 120 pixels long.
-float mark_step(const Camera& camera, float scale) { return nice_length(120.0f * scale / camera.pixels_per_metre); }
-
 // Whether the body is drawn in this lane: with lanes named by their bodies, the lane of its
 // name (where its forces are drawn; a slope's lanes overlap, and where_methods_fail's block was
 // in three strips at once, its speed drawn twice), else the lane whose strip holds its centre.
@@ -200,56 +114,6 @@ bool in_lane(const lessons::Lesson& lesson, const Camera& camera, std::size_t la
   }
   const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
   return centre.y >= camera.origin.y && centre.y <= camera.origin.y + camera.size.y;
-}
-
-struct Ruler {
-  ImVec2 from, to;                   // the line, just inside the surface
-  std::vector<std::pair<ImVec2, double>> ticks;  // each tick's foot on the line and its distance, m
-  ImVec2 inward;                     // screen direction of the ticks: into the surface, or out of it
-  double step = 1.0;                 // m between ticks
-  float to_surface = 0.0f;           // px from the line back to the surface, against `inward`
-};
-
-// `step`: the ticks' spacing, m. `outside`: the line on the surface itself and its ticks out of
-// it, for a surface whose inside the view leaves no room under (a lane's thin strip of ground).
-std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& camera, float scale, float step,
-                           bool outside = false) {
-  // The view's corners projected on the surface's line give the span of it in sight.
-  const b2Vec2 corners[4] = {camera.to_world(camera.origin), camera.to_world(add(camera.origin, ImVec2(camera.size.x, 0.0f))),
-                             camera.to_world(add(camera.origin, camera.size)),
-                             camera.to_world(add(camera.origin, ImVec2(0.0f, camera.size.y)))};
-  // The line runs through where the body stood at t = 0, along the surface it stands on now.
-  const b2Vec2 base = origin + b2Dot(surface.point - origin, surface.normal) * surface.normal;
-  float low = 1e30f, high = -1e30f;
-  for (const b2Vec2& corner : corners) {
-    low = std::min(low, b2Dot(corner - base, surface.along));
-    high = std::max(high, b2Dot(corner - base, surface.along));
-  }
-  // No further than the surface goes (the foot and the top of a slope).
-  const float shift = b2Dot(surface.point - base, surface.along);
-  low = std::max(low, surface.low + shift);
-  high = std::min(high, surface.high + shift);
-  if (!(high > low) || (high - low) / step > 400.0f) return std::nullopt;
-  Ruler ruler;
-  ruler.step = static_cast<double>(step);
-  ruler.to_surface = outside ? 0.0f : 6.0f * scale;
-  const ImVec2 inward_world = camera.to_screen(base - surface.normal);
-  ImVec2 inward = sub(inward_world, camera.to_screen(base));
-  if (length(inward) < 1e-6f) return std::nullopt;
-  ruler.inward = mul(inward, outside ? -1.0f / length(inward) : 1.0f / length(inward));
-  const ImVec2 offset = mul(ruler.inward, outside ? 0.0f : 6.0f * scale);
-  ruler.from = add(camera.to_screen(base + low * surface.along), offset);
-  ruler.to = add(camera.to_screen(base + high * surface.along), offset);
-  // Counted in whole ticks: far from the start a float count would stop growing.
-  const double first = std::ceil(static_cast<double>(low) / step), last = std::floor(static_cast<double>(high) / step);
-  // Counted forward the way a body let go moves: rightwards along a level floor, downhill on a
-  // slope (as the lessons' distances are); behind the start the marks read negative.
-  const double forward = surface.along.y > std::sin(0.5f * b2_pi / 180.0f) ? -1.0 : 1.0;
-  for (double k = first; k <= last && k - first < 400.0; k += 1.0) {
-    const double metres = k * static_cast<double>(step);
-    ruler.ticks.push_back({add(camera.to_screen(base + static_cast<float>(metres) * surface.along), offset), forward * metres});
-  }
-  return ruler;
 }
 
 struct ComponentArrows {
@@ -319,47 +183,6 @@ void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, 
   }
 }
 
-namespace {
-
-// The marks' line and ticks, told to the placer as they are drawn.
-void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, float s, LabelPlacer& labels) {
-  draw->AddLine(marks.from, marks.to, theme.text, 1.5f * s);
-  labels.avoid(DrawnSegment{marks.from, marks.to, 1.5f * s});
-  for (const DistanceMark& mark : marks.ticks) {
-    const bool zero = std::abs(mark.metres) < 1e-9;
-    const ImVec2 end = add(mark.foot, mul(marks.inward, (zero ? 12.0f : 8.0f) * s));
-    draw->AddLine(mark.foot, end, theme.text, (zero ? 2.5f : 1.5f) * s);
-    labels.avoid(DrawnSegment{mark.foot, end, 1.0f * s});
-  }
-}
-
-// Each number just beyond its tick or not at all: moved away it would name another place.
-void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, const Fonts& fonts,
-                           LabelPlacer& labels) {
-  std::vector<const DistanceMark*> shown;
-  for (const DistanceMark& mark : marks.ticks) {
-    if (mark.numbered && labels.free(mark.number_box, true)) shown.push_back(&mark);
-  }
-  for (const DistanceMark* mark : shown) {
-    labels.take(mark->number_box, mark->text);
-    const ImVec2 centre(0.5f * (mark->number_box.x + mark->number_box.z), 0.5f * (mark->number_box.y + mark->number_box.w));
-    draw_label(draw, fonts.small, centre, theme.text, theme.panel, mark->text.c_str());
-  }
-  // Fewer than two numbers cannot give the scale: the ticks' spacing then says it, in the
-  // nearest free place to the middle of the line, on the numbers' side (it names no place).
-  if (shown.size() >= 2 || marks.ticks.size() < 2) return;
-  char spacing[48];
-  std::snprintf(spacing, sizeof spacing, "ticks %g m apart", marks.step);
-  const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, spacing);
-  const ImVec2 middle = mul(add(marks.from, marks.to), 0.5f);
-  const ImVec2 wanted = add(middle, mul(marks.inward, 15.0f * fonts.scale + 0.5f * size.y + 2.0f));
-  if (const std::optional<ImVec2> at = labels.place_if_free(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), spacing, true)) {
-    draw_label(draw, fonts.small, *at, theme.text, theme.panel, spacing);
-  }
-}
-
-}  // namespace
-
 void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
                               std::size_t lane, float newtons_to_pixels, const Theme& theme, const Fonts& fonts,
                               LabelPlacer& labels) const {
@@ -399,50 +222,6 @@ void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lesso
   }
 }
 
-namespace {
-
-// The marks of one ruler, each number's box at its tick (beyond its end).
-DistanceMarks numbered(const Ruler& line, const Fonts& fonts) {
-  const float s = fonts.scale;
-  DistanceMarks marks{line.from, line.to, line.inward, line.step, {}};
-  for (const auto& [foot, metres] : line.ticks) {
-    char number[32];
-    std::snprintf(number, sizeof number, "%g m", std::abs(metres) < 1e-9 ? 0.0 : metres);
-    std::string text = number;
-    if (text[0] == '-') text.replace(0, 1, "\u2212");  // a minus sign, not a hyphen
-    const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
-    // Clear of the start's tick too, which is longer (12 px) than the others: "0 m" was never shown.
-    const ImVec2 centre = add(foot, mul(line.inward, 15.0f * s + 0.5f * size.y + 2.0f));
-    // Across the line from its tick, just clear of the surface.
-    const ImVec2 across = sub(foot, mul(line.inward, line.to_surface + 4.0f * s + 0.5f * size.y + 2.0f));
-    // As the placer pads a label of the size the other readings give it.
-    const float half_x = 0.5f * (size.x + 6.0f) + 2.0f, half_y = 0.5f * (size.y + 2.0f) + 2.0f;
-    const auto box = [&](ImVec2 c) { return ImVec4(c.x - half_x, c.y - half_y, c.x + half_x, c.y + half_y); };
-    marks.ticks.push_back({foot, metres, text, box(centre), box(across), true});
-  }
-  return marks;
-}
-
-// A number that would stick out past the view's edge slides inside it while its tick stays
-// under it: it still names its place. Refused for one pixel out, a number of contact_area's
-// projector lane sent the marks to the floor's other side, onto the speed readout's only place.
-void keep_numbers_in(DistanceMarks& marks, const ImVec4& bounds) {
-  const auto slide = [&](ImVec4& box) {
-    const float out = box.x < bounds.x ? bounds.x - box.x : box.z > bounds.z ? bounds.z - box.z : 0.0f;
-    if (std::abs(out) >= 0.5f * (box.z - box.x)) return;  // its tick would no longer be under it
-    box.x += out, box.z += out;
-  };
-  for (DistanceMark& mark : marks.ticks) slide(mark.number_box), slide(mark.across_box);
-}
-
-}  // namespace
-
-// Whether a tick is one of every `every`-th, counted from the start (0 m is always one).
-bool counted(const DistanceMark& mark, std::size_t every, double step) {
-  const double k = std::round(std::abs(mark.metres) / step);
-  return std::fmod(k, static_cast<double>(every)) == 0.0;
-}
-
 std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesson& lesson, const Camera& camera,
                                                             const Fonts& fonts, const LabelPlacer* labels,
                                                             std::size_t lane) const {
@@ -450,51 +229,7 @@ std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesso
   if (!on.distance_marks || !origin_ || body == nullptr || !in_lane(lesson, camera, lane, body)) return std::nullopt;
   const std::optional<Surface> surface = surface_under(lesson.scene(), body);
   if (!surface) return std::nullopt;
-  const float s = fonts.scale, step = mark_step(camera, s);
-  const std::optional<Ruler> under = ruler(*surface, *origin_, camera, s, step);
-  if (!under) return std::nullopt;
-  DistanceMarks marks = numbered(*under, fonts);
-  if (labels == nullptr) return marks;
-  keep_numbers_in(marks, labels->bounds());
-  // Under the surface when two of the numbers find room there, or as many as over it; else over
-  // it: a lane's strip of ground is too thin to hold them (the trial's projector lanes showed none).
-  const auto free_numbers = [&](const DistanceMarks& side) {
-    return std::count_if(side.ticks.begin(), side.ticks.end(), [&](const DistanceMark& mark) { return labels->free(mark.number_box, true); });
-  };
-  const auto under_count = free_numbers(marks);
-  if (under_count >= 2) return marks;
-  const std::optional<Ruler> over = ruler(*surface, *origin_, camera, s, step, true);
-  if (!over) return marks;
-  DistanceMarks over_marks = numbered(*over, fonts);
-  keep_numbers_in(over_marks, labels->bounds());
-  return free_numbers(over_marks) > under_count ? over_marks : marks;
-}
-
-void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t fewest_every) {
-  // Every tick, else every 2nd, 5th or 10th: the first that gives at least two numbers room, so
-  // that the scale can be read (fewer numbers rather than none), else the one giving the most.
-  std::size_t best_every = std::max<std::size_t>(fewest_every, 1), best_count = 0;
-  for (const std::size_t every : {1u, 2u, 5u, 10u}) {
-    if (every < fewest_every) continue;
-    std::size_t count = 0;
-    std::vector<ImVec4> chosen;
-    for (const DistanceMark& mark : marks.ticks) {
-      if (!counted(mark, every, marks.step)) continue;
-      for (const ImVec4& box : {mark.number_box, mark.across_box}) {
-        const bool apart = std::none_of(chosen.begin(), chosen.end(), [&](const ImVec4& other) { return overlaps(box, other); });
-        if (!apart || !labels.free(box, true)) continue;
-        chosen.push_back(box), ++count;
-        break;
-      }
-    }
-    if (count > best_count) best_every = every, best_count = count;
-    if (count >= 2) break;
-  }
-  for (DistanceMark& mark : marks.ticks) {
-    mark.numbered = counted(mark, best_every, marks.step);
-    // Its number across the line where its own side has no room.
-    if (!labels.free(mark.number_box, true) && labels.free(mark.across_box, true)) std::swap(mark.number_box, mark.across_box);
-  }
+  return distance_marks_along(*surface, *origin_, camera, fonts, labels);
 }
 
 bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,

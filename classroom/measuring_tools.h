@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "classroom/control_places.h"
+#include "classroom/distance_marks.h"
 #include "classroom/settings.h"
+#include "classroom/stopwatch.h"
 #include "draw/camera.h"
 #include "draw/drawing.h"
 #include "draw/theme.h"
@@ -20,52 +22,6 @@
 #include "physics/scene_forces.h"
 
 namespace frictionlab::ui {
-
-// A stopwatch on the lesson's clock: it counts the lesson time that passes while it is on, so
-// slow motion, a pause or fast forward change nothing it reads. On while the lesson is paused, it
-// is armed: Play starts it, and a pause or the run's end stops what it reads. Its reading is kept
-// as the spans of lesson time it was on, so a step back in time (R, the time bar, a rebuild)
-// shows it as it was at that time, rather than clearing it: a stopwatch on from t = 0 reads 0
-// again after R, and is still armed for the next run.
-class Stopwatch {
- public:
-  // W: on from `now` (counting as soon as the lesson's time moves), or off.
-  void start_stop(double now);
-  void lap(double now);  // the reading now joins the laps (while on)
-  void reset();
-  // The lesson went back to `now`: the reading, whether it was on and the laps as they were then.
-  void rewind(double now);
-  double reading(double now) const;  // s of lesson time it was on, up to `now`
-  bool running() const { return !spans_.empty() && spans_.back().on(); }  // on: counting lesson time
-  // On but still at 0 s at `now`: it starts counting when the lesson's time moves (Play).
-  bool armed(double now) const { return running() && reading(now) == 0.0; }
-  // What W does now, in the Tools menu's words: armed, it has not started, so W disarms it.
-  const char* start_stop_words(double now) const {
-    return armed(now) ? "Disarm the stopwatch (it starts with Play)" : running() ? "Stop the stopwatch" : "Start the stopwatch";
-  }
-  // Started or lapped since the last reset (a stopwatch shown but never used is armed by the tools).
-  bool used() const { return used_; }
-  std::vector<double> laps() const;  // their readings, oldest first
-  // "stopwatch 1.23 s" (while the lesson plays), "... (starts with Play)", "... (paused)",
-  // "... (stopped at the run's end)" (on, when the lesson's run ended by itself: `run_ended`)
-  // or "... (stopped)" (switched off), with its last laps on lines below.
-  std::string text(double now, bool playing, bool run_ended = false) const;
-  // The same on one line, its laps after it ("stopwatch 1.23 s (paused)   lap 1: 0.62 s"), as
-  // the window shows it beside the lesson's clock; `laps`: at most this many of the last.
-  std::string line(double now, bool playing, bool run_ended = false, std::size_t laps = 3) const;
-
- private:
-  struct Span {
-    double from, to;  // lesson times; `to` infinite while on
-    bool on() const;
-  };
-  struct Lap {
-    double at, reading;  // the lesson time it was taken at, and what it read
-  };
-  std::vector<Span> spans_;
-  std::vector<Lap> laps_;
-  bool used_ = false;
-};
 
 // The body the tools measure: the one the view follows, else the lesson's first moving body
 // (the free-body diagram's). Null when nothing moves.
@@ -86,35 +42,6 @@ struct SlopeWeight {
   b2Vec2 downhill{0.0f, 0.0f}, into{0.0f, 0.0f};  // unit vectors
 };
 std::optional<SlopeWeight> slope_weight(const Scene& scene, const b2Body* body);
-
-// The distance marks in a lane: a line along the surface just inside it, from where the view
-// shows it to where it ends, a tick every nice length counted from where the measured body stood
-// at t = 0, and each tick's number just under it: counted forward rightwards along a level
-// floor and downhill on a slope, with a minus sign behind the start. Where the view has no room
-// under the surface for the numbers (a lane's thin strip of ground), the line lies on the
-// surface with its ticks and numbers over it; and where fewer than two numbers find room at their
-// ticks (nor across the line from them), only every 2nd, 5th or 10th tick is numbered, so
-// that the scale can be read.
-struct DistanceMark {
-  ImVec2 foot;        // the tick's foot on the line
-  double metres;      // from the start, forward (rightwards, or downhill) positive
-  std::string text;   // "0.4 m", "−0.2 m"
-  ImVec4 number_box;  // where its number goes, x0, y0, x1, y1, as the label placer pads a label
-  ImVec4 across_box;  // or across the line from its tick, where that side has no room
-  bool numbered;      // one of the ticks whose numbers are drawn (where they are free)
-};
-struct DistanceMarks {
-  ImVec2 from, to;  // the line
-  ImVec2 inward;    // screen direction of the ticks and the numbers: into the surface, or out of it
-  double step;      // m between ticks
-  std::vector<DistanceMark> ticks;
-};
-// Whether a tick is one of every `every`-th, counted from the start (0 m is always one).
-bool counted(const DistanceMark& mark, std::size_t every, double step);
-// Chooses the ticks whose numbers are drawn: every one, else every 2nd, 5th or 10th, the first
-// that gives at least two numbers room where `labels` has it free.
-// `fewest_every`: not every tick, but every 2nd at least (and so on).
-void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t fewest_every = 1);
 
 // The tools in one lane of the world view. avoid() tells the placer what they draw before any
 // label is placed; draw() draws them and places their labels. The body's tools go in the lane

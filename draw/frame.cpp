@@ -54,7 +54,7 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
     // entry, needs no more than it has.
     // Their panels' edges close up to the world's (1 pt apart, not 4).
     const float close = 1.0f * scale;
-    layout.legend_size = ImVec2(legend_column_width * scale, display.y - under_world - close);
+    layout.legend_size = ImVec2(legend_column_default_points * scale, display.y - under_world - close);
     layout.legend_corner = ImVec2(left_width - layout.legend_size.x, under_world + close);
     layout.plots_corner = ImVec2(0.0f, under_world + close);
     layout.plots_size = ImVec2(left_width - layout.legend_size.x - gap, display.y - layout.plots_corner.y);

@@ -37,9 +37,9 @@ struct FrameLayout {
   // the back of a room.
   static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool projector = false);
   // The legend's column in projector mode, in points at text scale 1, until a lesson's names
-  // say how wide it is (legend_column_width in legend.h): "friction" after its arrow in 14 pt
+  // say how wide it is (legend_column_width() in legend.h): "friction" after its arrow in 14 pt
   // text, and its margins.
-  static constexpr float legend_column_width = 95.0f;
+  static constexpr float legend_column_default_points = 95.0f;
   // The title's panel's padding above and below its one line on a projector, in points.
   static constexpr float title_padding = 1.0f;
   // The same with the legend's column `width` pixels wide (projector mode), the plots the rest.

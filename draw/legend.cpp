@@ -86,7 +86,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   // A column (projector mode, beside the plots) is taller than wide; a strip, wider than tall.
   const bool column = size.y > size.x;
   // The arrows' scale: a line about 40 pt long, of a nice number of newtons; in a column,
-  // rounded down, so that it never outgrows the width legend_column_width keeps for it.
+  // rounded down, so that it never outgrows the width legend_column_width() keeps for it.
   const float newtons = column ? nice_length_within(40.0f * s / newtons_to_pixels) : nice_length(40.0f * s / newtons_to_pixels);
   char scale_text[48];
   std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));

@@ -1,0 +1,63 @@
+// The distance marks, a measuring tool: a ruler along the surface the measured body stands on,
+// its ticks counted from where the body stood at t = 0, and their numbers placed where the view
+// has room. Which body, and in which lane, is MeasuringTools' to say; this is the ruler's
+// geometry, the choice of its numbered ticks, and its drawing through the lane's label placer.
+#pragma once
+
+#include <imgui.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "draw/camera.h"
+#include "draw/drawing.h"
+#include "draw/theme.h"
+#include "physics/scene_forces.h"
+
+namespace frictionlab::ui {
+
+// The distance marks in a lane: a line along the surface just inside it, from where the view
+// shows it to where it ends, a tick every nice length counted from where the measured body stood
+// at t = 0, and each tick's number just under it: counted forward rightwards along a level
+// floor and downhill on a slope, with a minus sign behind the start. Where the view has no room
+// under the surface for the numbers (a lane's thin strip of ground), the line lies on the
+// surface with its ticks and numbers over it; and where fewer than two numbers find room at their
+// ticks (nor across the line from them), only every 2nd, 5th or 10th tick is numbered, so
+// that the scale can be read.
+struct DistanceMark {
+  ImVec2 foot;        // the tick's foot on the line
+  double metres;      // from the start, forward (rightwards, or downhill) positive
+  std::string text;   // "0.4 m", "−0.2 m"
+  ImVec4 number_box;  // where its number goes, x0, y0, x1, y1, as the label placer pads a label
+  ImVec4 across_box;  // or across the line from its tick, where that side has no room
+  bool numbered;      // one of the ticks whose numbers are drawn (where they are free)
+};
+struct DistanceMarks {
+  ImVec2 from, to;  // the line
+  ImVec2 inward;    // screen direction of the ticks and the numbers: into the surface, or out of it
+  double step;      // m between ticks
+  std::vector<DistanceMark> ticks;
+};
+// Whether a tick is one of every `every`-th, counted from the start (0 m is always one).
+bool counted(const DistanceMark& mark, std::size_t every, double step);
+// Chooses the ticks whose numbers are drawn: every one, else every 2nd, 5th or 10th, the first
+// that gives at least two numbers room where `labels` has it free.
+// `fewest_every`: not every tick, but every 2nd at least (and so on).
+void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t fewest_every = 1);
+// The marks along `surface` in the view of `camera`, counted from `origin` (where the measured
+// body's centre of mass was at t = 0). With `labels`, the placer as the marks find it when drawn:
+// their side is chosen where the view has room for their numbers (every tick numbered;
+// number_marks chooses which). None where the view shows none of the surface.
+std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const Camera& camera,
+                                                  const Fonts& fonts, const LabelPlacer* labels);
+
+// The marks' line and ticks, told to the placer as they are drawn.
+void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, float s, LabelPlacer& labels);
+// Each numbered tick's number just beyond it where free, or not at all; where fewer than two
+// are drawn, the ticks' spacing in words.
+void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, const Fonts& fonts,
+                           LabelPlacer& labels);
+
+}  // namespace frictionlab::ui
