@@ -219,9 +219,10 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
     // Where the drive is what carries it on, the friction is more than the step's own forces and
     // the step ends sliding back a little: the drive's change of velocity at the next step's
     // start makes up for it, as the drive did all through the step in Coulomb's law. (Left at
-    // rest instead, as it was, the block ended 0.04 m off the exact slide of the shaken plank,
-    // where this gives 0.00004 m.) Without a drive
-    // the step's own forces alone are past mu_s·N >= mu_k·N, and the sliding back is theirs.
+    // rest instead, with the stop decided here already, the block ended 0.04 m off the exact
+    // slide of the shaken plank, where this gives 0.00004 m; with neither, 0.069 m.) Without a
+    // drive the step's own forces alone are past the limit, breakaway_coefficient·N >= mu_k·N,
+    // and the sliding back is theirs.
     wanted = way * (pushed - pair.mu_k * normal_force) * (1.0 - stopped) * h / mass;
     r.state = ContactState::slipping;
     r.slip_direction = static_cast<float>(way);

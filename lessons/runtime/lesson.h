@@ -65,7 +65,7 @@ struct TheoryCurve {
   bool says_when_active = false;  // it has an active = function() ... end
 };
 
-// A level a plot marks across its data (a dashed line, labelled with its value): μs·N, the
+// A level a plot marks across its data (a thin solid line, labelled with its value): μs·N, the
 // most static friction can answer, and μk·N, what it drops to once the block slides. Theory,
 // shown with the theory curves. Its function takes no argument and gives y, or nil for none now.
 struct PlotLevel {
