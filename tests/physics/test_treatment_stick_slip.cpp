@@ -313,7 +313,7 @@ namespace {
 // theta0 = 0): s'' = -a(t) - friction/m along the plank, stuck while |a| <= mu_s·g, which a
 // rigid block on a level plank that does not turn follows exactly. The sweep's failing wedge
 // setting: it ended 0.069 m off the model at 240 Hz.
-struct ShakenPlank {
+struct PlankShake {
   double mass = 0.4852, mu_s = 1.761, mu_k = 1.247;
   double a = -30.0, omega = 7.371;  // m/s², rad/s
 };
@@ -321,7 +321,7 @@ struct ShakenPlankRun {
   double gap = 0.0;        // m: the largest gap between the world's slide and the model's
   double tolerance = 0.0;  // m: see below
 };
-ShakenPlankRun shaken_plank(const ShakenPlank& shake, double hz, double run_time) {
+ShakenPlankRun shaken_plank(const PlankShake& shake, double hz, double run_time) {
   Block block;
   block.mass = shake.mass;
   block.pair = FrictionPair{shake.mu_s, shake.mu_k, 0.0, 0.0};
@@ -379,7 +379,7 @@ ShakenPlankRun shaken_plank(const ShakenPlank& shake, double hz, double run_time
 // the block ended 0.0697 m off at 240 Hz at its farthest (0.069 m at the end).
 TEST(ShakenPlank, SlideFollowsTheExactModelWithinWhatFindingEachEventWithinAStepAllows) {
   for (double hz : {240.0, 480.0, 960.0}) {
-    const ShakenPlankRun run = shaken_plank(ShakenPlank{}, hz, 5.0);
+    const ShakenPlankRun run = shaken_plank(PlankShake{}, hz, 5.0);
     EXPECT_LT(run.gap, run.tolerance) << hz << " Hz";
   }
 }
