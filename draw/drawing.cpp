@@ -4,6 +4,15 @@
 #include <optional>
 
 namespace frictionlab::ui {
+namespace {
+
+// The same arrow, as the placer knows it: an arrow is recorded once by its own width and again,
+// wider, where it is kept off (arrow()), with the same ends.
+bool same_ends(const DrawnSegment& a, const DrawnSegment& b) {
+  return a.from.x == b.from.x && a.from.y == b.from.y && a.to.x == b.to.x && a.to.y == b.to.y;
+}
+
+}  // namespace
 
 float nice_length(float wanted) {
   const float power = std::pow(10.0f, std::floor(std::log10(wanted)));
@@ -173,7 +182,7 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     if (span > 0.0f) {
       float half_width = own->half_width;
       for (const DrawnSegment& known : arrows_) {
-        if (known.from.x == own->from.x && known.from.y == own->from.y && known.to.x == own->to.x && known.to.y == own->to.y) {
+        if (same_ends(known, *own)) {
           half_width = std::max(half_width, known.half_width);
         }
       }
@@ -202,8 +211,7 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
         return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(other, leader); });
       };
       const bool crosses_arrow = std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
-        const bool same = other.from.x == own->from.x && other.from.y == own->from.y && other.to.x == own->to.x &&
-                          other.to.y == own->to.y;
+        const bool same = same_ends(other, *own);
         // Whether the two centre lines cross: each one's ends on either side of the other.
         const auto side = [](ImVec2 a, ImVec2 b, ImVec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
         const bool cross = side(leader.from, leader.to, other.from) * side(leader.from, leader.to, other.to) < 0.0f &&
