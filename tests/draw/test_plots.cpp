@@ -43,6 +43,16 @@ FontsForLayout& measuring() {
 
 const ImVec2 corner(10.0f, 20.0f), area(600.0f, 300.0f);
 
+// A new frame at 1280 × 720 and its background draw list, empty, for a chart drawn into it
+// whose vertices a test then reads.
+ImDrawList* fresh_draw_list(FontsForLayout& fonts) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(1280.0f, 720.0f);
+  io.DeltaTime = 1.0f / 60.0f;
+  fonts.host.begin_frame();
+  return ImGui::GetBackgroundDrawList();
+}
+
 // A ramp up to t = 1, nothing from 1 to 2, a constant after: two pieces, each on f(t).
 TEST(TheoryCurves, PointsLieOnTheFunctionAndANilSplitsTheCurve) {
   ScriptFile script(with_heading(R"(
@@ -527,11 +537,7 @@ TEST(TheoryCurves, EachCurveOfAPlotHasALookOfItsOwnOnThePlotAndInItsLegend) {
     }
     // Drawn: the vertices in each theory key's swatch are in its curve's colour, in as many
     // dashes as its pattern gives.
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1280.0f, 720.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    fonts.host.begin_frame();
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    ImDrawList* draw = fresh_draw_list(fonts);
     const ChartLayout layout = draw_chart(draw, corner, area, chart, colours, fonts.fonts);
     ASSERT_GE(layout.legend_at.size(), 2u);
     int swatch_vertices[2] = {0, 0};
@@ -630,11 +636,7 @@ TEST(PlotRanges, ALevelIsASolidLineNoTheoryCurveLooksLike) {
   const Theme& colours = theme(ThemeName::light);
   const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours, true);
   ASSERT_EQ(chart.levels.size(), 2u);
-  ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(1280.0f, 720.0f);
-  io.DeltaTime = 1.0f / 60.0f;
-  fonts.host.begin_frame();
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  ImDrawList* draw = fresh_draw_list(fonts);
   const ChartLayout layout = draw_chart(draw, corner, area, chart, colours, fonts.fonts);
   ASSERT_EQ(layout.levels.size(), 2u);
   const ChartLayout::Level& level = layout.levels.front();  // −μs·N, below every curve but the sticking one's end
