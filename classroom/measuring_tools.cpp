@@ -188,37 +188,40 @@ void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lesso
                               LabelPlacer& labels) const {
   switch (pass) {
     case WorldToolsPass::avoid: avoid(lesson, camera, lane, newtons_to_pixels, fonts.scale, labels); break;
-    case WorldToolsPass::fixed_labels: {
-      // The distance marks' line and ticks, on the side where their numbers find room; the speed,
-      // in its place or the nearest free one (smaller where its font has no room), keeping off
-      // the numbers if it can; then the numbers, on every tick or every few where they are free
-      // (a number names its place: there or nowhere), or the ticks' spacing where fewer than two
-      // are: all before the lesson's labels, which then keep off them (placed last, the readings
-      // had no room left and covered a lane's name, the forces' values or the body they read).
-      std::optional<DistanceMarks> marks = distance_marks(lesson, camera, fonts, &labels, lane);
-      bool speed_placed = false;
-      if (marks) {
-        draw_distance_lines(draw, *marks, theme, fonts.scale, labels);
-        // The speed off every number, else off every 2nd, 5th or 10th; else where it finds room.
-        for (const std::size_t every : {1u, 2u, 5u, 10u}) {
-          DistanceMarks kept = *marks;
-          number_marks(kept, labels, every);
-          LabelPlacer with_numbers = labels;
-          for (const DistanceMark& mark : kept.ticks) {
-            if (mark.numbered && with_numbers.free(mark.number_box, true)) with_numbers.take(mark.number_box, mark.text);
-          }
-          speed_placed = draw_readings(draw, lesson, camera, lane, theme, fonts, labels, &with_numbers);
-          if (speed_placed) break;
-        }
-      }
-      if (!speed_placed) draw_readings(draw, lesson, camera, lane, theme, fonts, labels);
-      if (marks) {
-        number_marks(*marks, labels);
-        draw_distance_numbers(draw, *marks, theme, fonts, labels);
-      }
-      break;
-    }
+    case WorldToolsPass::fixed_labels: place_fixed_labels(draw, lesson, camera, lane, theme, fonts, labels); break;
     case WorldToolsPass::draw: this->draw(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels); break;
+  }
+}
+
+void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                                        std::size_t lane, const Theme& theme, const Fonts& fonts,
+                                        LabelPlacer& labels) const {
+  // The distance marks' line and ticks, on the side where their numbers find room; the speed,
+  // in its place or the nearest free one (smaller where its font has no room), keeping off
+  // the numbers if it can; then the numbers, on every tick or every few where they are free
+  // (a number names its place: there or nowhere), or the ticks' spacing where fewer than two
+  // are: all before the lesson's labels, which then keep off them (placed last, the readings
+  // had no room left and covered a lane's name, the forces' values or the body they read).
+  std::optional<DistanceMarks> marks = distance_marks(lesson, camera, fonts, &labels, lane);
+  bool speed_placed = false;
+  if (marks) {
+    draw_distance_lines(draw, *marks, theme, fonts.scale, labels);
+    // The speed off every number, else off every 2nd, 5th or 10th; else where it finds room.
+    for (const std::size_t every : {1u, 2u, 5u, 10u}) {
+      DistanceMarks kept = *marks;
+      number_marks(kept, labels, every);
+      LabelPlacer with_numbers = labels;
+      for (const DistanceMark& mark : kept.ticks) {
+        if (mark.numbered && with_numbers.free(mark.number_box, true)) with_numbers.take(mark.number_box, mark.text);
+      }
+      speed_placed = draw_readings(draw, lesson, camera, lane, theme, fonts, labels, &with_numbers);
+      if (speed_placed) break;
+    }
+  }
+  if (!speed_placed) draw_readings(draw, lesson, camera, lane, theme, fonts, labels);
+  if (marks) {
+    number_marks(*marks, labels);
+    draw_distance_numbers(draw, *marks, theme, fonts, labels);
   }
 }
 

@@ -66,7 +66,7 @@ class MeasuringTools {
   // `lane`: the lane's number, which with lanes named by their bodies says whose tools it shows.
   void avoid(const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, float newtons_to_pixels, float scale,
              LabelPlacer& labels) const;
-  // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), draw_distance_marks()
+  // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), place_fixed_labels()
   // and draw() in turn.
   void in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
                 std::size_t lane, float newtons_to_pixels, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
@@ -99,6 +99,11 @@ class MeasuringTools {
   void draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const Fonts& fonts) const;
 
  private:
+  // The fixed_labels pass: the distance marks' lines, the speed and then the marks' numbers, all
+  // placed before the lesson's force values, which keep off them.
+  void place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, std::size_t lane,
+                          const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
+
   std::optional<b2Vec2> origin_;
   long last_frame_ = 0;  // the lesson's frame when last followed
   bool playing_ = false;    // the lesson, when last followed: what the stopwatch's text says
