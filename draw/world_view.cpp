@@ -67,7 +67,9 @@ void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShap
       const float angle = std::acos(std::clamp(b2Dot(level, slope) / (level.Length() * slope.Length()), -1.0f, 1.0f));
       if (angle < 0.5f * pi / 180.0f || angle > 89.5f * pi / 180.0f) continue;
       ImVec2 centre = camera.to_screen(corner);
-      const float radius = 46.0f * fonts.scale;
+      // A short view (a projector's world row, 1.9 times the fonts over a third of the height)
+      // gets a smaller arc rather than none: the angle is what the lesson is about.
+      const float radius = std::min(46.0f * fonts.scale, 0.2f * camera.size.y);
       // A view zoomed in on a block may have left the corner out: the angle is then marked where
       // the slope first comes into view, with a dashed level line to measure it from.
       const auto shown = [&](ImVec2 p) {
@@ -77,7 +79,7 @@ void mark_slope_angles(ImDrawList* draw, const b2Body* body, const b2PolygonShap
       };
       if (!shown(centre)) {
         // A lane's strip is too thin for a mark away from its block: the corner's mark or none.
-        if (camera.size.y < 4.0f * radius) continue;
+        if (radius < 24.0f * fonts.scale) continue;
         bool found = false;
         for (int k = 1; k <= 200 && !found; ++k) {
           const ImVec2 p = camera.to_screen(corner + (static_cast<float>(k) / 200.0f) * slope);

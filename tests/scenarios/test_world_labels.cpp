@@ -86,7 +86,7 @@ TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesA
                                     {"stacked_blocks", false, false}, {"pulley", false, false}};
   const double times[] = {0.0, 0.5, 1.5, 3.0};
   int checked = 0;
-  for (const Screen& screen : {screens[0], screens[3]}) {
+  for (const Screen& screen : {screens[0], screens[3], screens[4]}) {
     HeadlessRenderer renderer(screen.width, screen.height, ThemeName::light, screen.scale);
     for (const Expected& expected : lessons_tried) {
       for (const double t : times) {
