@@ -15,9 +15,13 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include <backends/imgui_impl_opengl3.h>
 
 #include "classroom/classroom.h"
 #include "draw/headless.h"
+#include "draw/image.h"
 #include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
 
@@ -103,20 +107,39 @@ class ClassroomHands {
     options.lesson = lessons::resolve_lesson(options.lesson);
     options.window.help = false;
     options.output_folder = folder_;
-    classroom_ = std::make_unique<Classroom>(options);
     std::filesystem::create_directories(folder_);
+    classroom_ = std::make_unique<Classroom>(options);
   }
+  // The lesson `lesson` (a built-in name or a path) under a teacher's `lock` (the controls left
+  // shown) with the command line's --set values `overrides`.
+  explicit ClassroomHands(const std::string& lesson, std::vector<std::string> lock = {},
+                          std::map<std::string, std::string> overrides = {})
+      : ClassroomHands(options_for(lesson, std::move(lock), std::move(overrides))) {}
   ~ClassroomHands() { std::filesystem::remove_all(folder_); }
   ClassroomHands(const ClassroomHands&) = delete;
   ClassroomHands& operator=(const ClassroomHands&) = delete;
 
   Classroom& classroom() { return *classroom_; }
+  Playback& playback() { return classroom_->playback(); }
   lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
   const std::string& folder() const { return folder_; }
 
   // One display frame, `wall` seconds after the last (the lesson plays that long when playing);
   // with `record`, every text it drew.
   void frame(double wall = 0.0, FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *classroom_, display_, wall, record); }
+  // The same at another display's size for this frame only ((0, 0): the hands' own display).
+  void frame(double wall, ImVec2 display, FrameRecord* record = nullptr) {
+    draw_window_frame(gl_, host_, *classroom_, display.x == 0.0f ? display_ : display, wall, record);
+  }
+  // The frame drawn at `display`: the pixels the window would show.
+  Image picture(ImVec2 display = ImVec2(1280.0f, 720.0f)) {
+    frame(0.0, display);
+    gl_.make_current();
+    const int width = static_cast<int>(display.x), height = static_cast<int>(display.y);
+    gl_.bind_framebuffer(width, height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return gl_.read_pixels();
+  }
   // Every text of a frame drawn after a few have let tables and tab bars settle, each on a line.
   std::string texts() {
     frame();
@@ -134,6 +157,7 @@ class ClassroomHands {
   }
   // Press and release on the named control, a frame for each, as a hand does.
   void click(const std::string& name) { click_at(control(name).GetCenter()); }
+  void click(ImVec2 at) { click_at(at); }
   // The same on a text the last frames drew (a tab's name): its middle.
   void click_text(const std::string& text) {
     frame();
@@ -163,9 +187,14 @@ class ClassroomHands {
     ImGui::GetIO().MouseDown[0] = down;
     frame();
   }
-  // A shortcut, as the window's layer passes it on.
-  void key(Key key) {
-    classroom_->key_pressed(key, false);
+  // A shortcut, as the window's layer passes it on (with Ctrl held: Ctrl+E), then a frame with
+  // every key let go.
+  void key(Key key, bool ctrl = false) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = ctrl;
+    classroom_->key_pressed(key, ctrl);
+    frame();
+    io.KeyCtrl = false;
     frame();
   }
   void set_display(ImVec2 display) { display_ = display; }
@@ -196,15 +225,26 @@ class ClassroomHands {
     for (const char c : text) ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
     frame();
   }
-  void press_enter() {
+  // A key ImGui itself reads (Enter in a text box), down for a frame and up for the next.
+  void press(ImGuiKey key) {
     ImGuiIO& io = ImGui::GetIO();
-    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = true;
+    io.KeysDown[io.KeyMap[key]] = true;
     frame();
-    io.KeysDown[io.KeyMap[ImGuiKey_Enter]] = false;
+    io.KeysDown[io.KeyMap[key]] = false;
     frame();
   }
+  void press_enter() { press(ImGuiKey_Enter); }
 
  private:
+  static ClassroomOptions options_for(const std::string& lesson, std::vector<std::string> lock,
+                                      std::map<std::string, std::string> overrides) {
+    ClassroomOptions options;
+    options.lesson = lesson;
+    options.lock = std::move(lock);
+    options.overrides = std::move(overrides);
+    return options;
+  }
+
   HeadlessContext gl_;
   ImGuiHost host_;
   ImVec2 display_;

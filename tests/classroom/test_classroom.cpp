@@ -34,98 +34,6 @@ constexpr ModifierKeys test_modifier_keys{{341, 345}, {340, 344}, {342, 346}, {3
 
 using lessons::ScriptFile;
 
-// The classroom on a headless context, and a user's hands on its io.
-class Driver {
- public:
-  explicit Driver(const std::string& lesson, std::vector<std::string> lock = {},
-                  std::map<std::string, std::string> overrides = {})
-      : host_(nullptr) {
-    ClassroomOptions options;
-    options.lesson = lessons::resolve_lesson(lesson);
-    options.lock = std::move(lock);
-    options.overrides = std::move(overrides);
-    options.window.help = false;
-    options.output_folder = folder_;
-    std::filesystem::create_directories(folder_);
-    classroom_ = std::make_unique<Classroom>(options);
-  }
-  ~Driver() { std::filesystem::remove_all(folder_); }
-
-  Classroom& classroom() { return *classroom_; }
-  Playback& playback() { return classroom_->playback(); }
-  lessons::Lesson& lesson() { return playback().lesson(); }
-  const std::string& folder() const { return folder_; }
-
-  // The display the hands' frames are drawn for.
-  void set_display(ImVec2 display) { display_ = display; }
-  // One display frame in which `wall` seconds of real time pass.
-  // With `record`, every text it drew (FrameRecord::texts).
-  void frame(double wall = 0.0, ImVec2 display = ImVec2(0.0f, 0.0f), FrameRecord* record = nullptr) {
-    if (display.x == 0.0f) display = display_;
-    draw_window_frame(gl_, host_, *classroom_, display, wall, record);
-  }
-  // The frame drawn: what the window would show.
-  Image picture(ImVec2 display = ImVec2(1280.0f, 720.0f)) {
-    frame(0.0, display);
-    gl_.make_current();
-    const int width = static_cast<int>(display.x), height = static_cast<int>(display.y);
-    gl_.bind_framebuffer(width, height);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    return gl_.read_pixels();
-  }
-  ImRect control(const std::string& name) {
-    const auto rect = classroom_->control(name);
-    EXPECT_TRUE(rect.has_value()) << "no control named '" << name << "' was drawn";
-    return rect.value_or(ImRect());
-  }
-  void move_mouse(ImVec2 to) {
-    ImGui::GetIO().MousePos = to;
-    frame();
-  }
-  void mouse_button(bool down) {
-    ImGui::GetIO().MouseDown[0] = down;
-    frame();
-  }
-  // Press and release at a point, a frame for each, as a hand does.
-  void click(ImVec2 at) {
-    move_mouse(at);
-    mouse_button(true);
-    mouse_button(false);
-  }
-  void click(const std::string& name) { click(control(name).GetCenter()); }
-  // A shortcut, as the window layer reports a key press.
-  void key(Key key, bool ctrl = false) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.KeyCtrl = ctrl;
-    classroom_->key_pressed(key, ctrl);
-    frame();
-    io.KeyCtrl = false;
-    frame();
-  }
-  // A key ImGui itself reads (Enter in a text box), down for a frame and up for the next.
-  void press(ImGuiKey key) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.KeysDown[io.KeyMap[key]] = true;
-    frame();
-    io.KeysDown[io.KeyMap[key]] = false;
-    frame();
-  }
-  void type(const std::string& text) {
-    for (char c : text) ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
-    frame();
-  }
-
- private:
-  HeadlessContext gl_;
-  ImGuiHost host_;
-  std::string folder_ = (std::filesystem::temp_directory_path() /
-                         ("frictionlab_classroom_" + std::to_string(::getpid()) + "_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
-                            .string();
-  std::unique_ptr<Classroom> classroom_;
-  ImVec2 display_{1280.0f, 720.0f};
-};
-
 double first_slip_time(const Scene& scene) {
   for (std::size_t i = 0; i < scene.slipping().size(); ++i) {
     if (scene.slipping()[i]) return scene.times()[i];
@@ -140,7 +48,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 TEST(Classroom, MovingTheStaticSliderChangesThePairTableAndWhenTheBlockBreaksAway) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   ASSERT_FALSE(driver.playback().playing());  // it opens paused
   // Half-way along the slider's range [0, 2] is mu_s = 1.
@@ -157,7 +65,7 @@ TEST(Classroom, MovingTheStaticSliderChangesThePairTableAndWhenTheBlockBreaksAwa
 }
 
 TEST(Classroom, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.click("mu_k value");
   driver.type("0.3125");
@@ -187,7 +95,7 @@ TEST(Classroom, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
 // reads io.KeysDown when a frame starts, and finds it up at both. The window's KeyTaps holds a
 // key pressed since the last frame down through the next one.
 TEST(Classroom, AnEnterTappedBetweenTwoFramesSetsTheTypedValue) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   ImGuiIO& io = ImGui::GetIO();
   const int enter = io.KeyMap[ImGuiKey_Enter];
@@ -236,7 +144,7 @@ TEST(Classroom, ATappedChordHoldsItsModifierForItsFrame) {
 // A lesson opens paused at t = 0, its first frame drawn, however much time passes: the class
 // looks at the setup and predicts first. Space plays. So does one picked from the menu.
 TEST(Classroom, ALessonOpensPausedAtTheStart) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame(0.5);
   driver.frame(0.5);
   EXPECT_FALSE(driver.playback().playing());
@@ -260,7 +168,7 @@ TEST(Classroom, ALessonOpensPausedAtTheStart) {
 // teacher unlocks them (nothing in the window does), at a screen's size and on a projector.
 TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
   for (const ImVec2 display : {ImVec2(1024.0f, 768.0f), ImVec2(1920.0f, 1080.0f)}) {
-    Driver driver("incline", {"mu_s", "mu_k"});
+    ClassroomHands driver("incline", {"mu_s", "mu_k"});
     driver.classroom().window_settings().projector = display.x > 1900.0f;
     driver.set_display(display);
     driver.frame();
@@ -275,7 +183,7 @@ TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
     EXPECT_TRUE(said->whole()) << display.x << ": \"" << said->text << "\" is cut";
   }
   // Unlocked, the menu has no such line.
-  Driver free("incline");
+  ClassroomHands free("incline");
   free.frame();
   EXPECT_EQ(free.classroom().lock_words(), "");
 }
@@ -286,7 +194,7 @@ TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
 TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
   for (const bool projector : {false, true}) {
     for (const std::string lesson : {"tipping_box", "check_the_article"}) {
-      Driver driver(lesson);
+      ClassroomHands driver(lesson);
       driver.classroom().window_settings().projector = projector;
       const ImVec2 display = projector ? ImVec2(1920.0f, 1080.0f) : ImVec2(1280.0f, 720.0f);
       driver.set_display(display);
@@ -329,7 +237,7 @@ TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
 }
 
 TEST(Classroom, PauseAndStepAdvanceExactlyOneStep) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   driver.key(Key::space);  // play
   driver.frame(0.5);
@@ -350,7 +258,7 @@ TEST(Classroom, PauseAndStepAdvanceExactlyOneStep) {
 }
 
 TEST(Classroom, AKeyTappedBetweenTwoFramesStillCounts) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   driver.playback().play();
   ASSERT_TRUE(driver.playback().playing());
@@ -366,7 +274,7 @@ TEST(Classroom, AKeyTappedBetweenTwoFramesStillCounts) {
 }
 
 TEST(Classroom, PlayingRunsAtTheChosenSpeedOnTheFixedStep) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.playback().play();
   driver.playback().set_speed(0.1);  // slow motion: a tenth of real time
@@ -380,7 +288,7 @@ TEST(Classroom, PlayingRunsAtTheChosenSpeedOnTheFixedStep) {
 
 // A logarithmic slider's pixels never land on ×1 exactly; near it, the slider gives ×1.
 TEST(Classroom, TheSpeedSliderComesBackToExactlyRealTime) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   const ImRect slider = driver.control("speed");
   // ×1 lies log(1/0.1)/log(8/0.1) = 52.5 % along: clicks a little either side of it give ×1.
@@ -393,7 +301,7 @@ TEST(Classroom, TheSpeedSliderComesBackToExactlyRealTime) {
 }
 
 TEST(Classroom, AHugeStepRateRunsSlowerThanAskedInsteadOfFreezing) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   StepSettings settings;
   settings.hz = 100000;
   settings.substeps = 1000;
@@ -406,7 +314,7 @@ TEST(Classroom, AHugeStepRateRunsSlowerThanAskedInsteadOfFreezing) {
 }
 
 TEST(Classroom, ChangingAValueMidRunSaysTheMeasurementsMixTwoRunsUntilReset) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.playback().run_to(1.2);
   EXPECT_EQ(driver.playback().readings().caveat, "");
@@ -422,7 +330,7 @@ TEST(Classroom, ChangingAValueMidRunSaysTheMeasurementsMixTwoRunsUntilReset) {
 }
 
 TEST(Classroom, ShortcutsAreOffWhileADialogIsOpen) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();  // it opens paused
   driver.click("Lesson menu");
   driver.click("Open a script");
@@ -442,7 +350,7 @@ TEST(Classroom, TheLessonMenuListsAndOpensTheStudentsOwnLessons) {
   std::filesystem::copy_file(lessons::resolve_lesson("incline"), own, std::filesystem::copy_options::overwrite_existing);
   ::setenv("XDG_DATA_HOME", data.c_str(), 1);
   {
-    Driver driver("spring_pull");
+    ClassroomHands driver("spring_pull");
     driver.frame();
     driver.click("Lesson menu");
     driver.frame();
@@ -479,7 +387,7 @@ expect { "last", predicted = function() return "stays" end, measured = function(
 
   // In the window, the theory table gives the failed row "?" under measured too, as the class's
   // table does (a student's trial found "?" in one and "not yet" in the other).
-  Driver driver(script.path());
+  ClassroomHands driver(script.path());
   driver.classroom().window_settings().predictions = false;
   driver.playback().run_to(0.1);
   driver.frame();
@@ -503,7 +411,7 @@ expect { "broken", unit = "N", predicted = function() return 2 end,
   measured = function() if time() > 0.05 then return nothing_here.value end end, tolerance = 0.1 }
 predict { "broken", unit = "N", question = "How hard?" }
 )"));
-  Driver driver(script.path());
+  ClassroomHands driver(script.path());
   driver.classroom().window_settings().predictions = true;
   driver.playback().run_to(0.1);
   ASSERT_TRUE(driver.classroom().theory_hidden());
@@ -519,7 +427,7 @@ predict { "broken", unit = "N", question = "How hard?" }
 }
 
 TEST(Classroom, ResetRestoresTheInitialState) {
-  Driver driver("tipping_box");
+  ClassroomHands driver("tipping_box");
   driver.frame();
   const b2Body* box = driver.lesson().scene().body("box");
   const b2Vec2 start = box->GetPosition();
@@ -536,7 +444,7 @@ TEST(Classroom, ResetRestoresTheInitialState) {
 }
 
 TEST(Classroom, GoingBackInTheRecordReplaysItExactlyWithTheChangesMadeOnTheWay) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.playback().run_to(1.0);
   driver.playback().set_parameter("mu_s", "0.6");  // a teacher's change, mid-run
@@ -560,18 +468,18 @@ TEST(Classroom, GoingBackInTheRecordReplaysItExactlyWithTheChangesMadeOnTheWay) 
 }
 
 TEST(Classroom, ARecordedDragIsReplayedNotCutByTheIdleMouse) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();  // it opens paused
   b2Body* block = driver.lesson().scene().body("block");
   const ImVec2 held = driver.classroom().world_camera().to_screen(block->GetPosition());
-  driver.move_mouse(held);
-  driver.mouse_button(true);
+  driver.mouse_at(held);
+  driver.button(true);
   driver.key(Key::space);
   for (int i = 1; i <= 30; ++i) {
     ImGui::GetIO().MousePos = ImVec2(held.x - 3.0f * static_cast<float>(i), held.y);
     driver.frame(1.0 / 60.0);
   }
-  driver.mouse_button(false);
+  driver.button(false);
   driver.playback().run_to(1.5);
   const b2Vec2 live = driver.lesson().scene().body("block")->GetPosition();
   const double recorded = driver.playback().recorded_until();
@@ -589,7 +497,7 @@ TEST(Classroom, ARecordedDragIsReplayedNotCutByTheIdleMouse) {
 }
 
 TEST(Classroom, AChangeAtTheEndOfAReplayedRecordKeepsTheChangesBeforeIt) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.playback().run_to(1.0);
   driver.playback().set_parameter("mu_s", "0.6");
@@ -618,7 +526,7 @@ TEST(Classroom, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
   };
   for (const auto& [text, plain] : mistakes) {
     ScriptFile script(text);
-    Driver driver(script.path());
+    ClassroomHands driver(script.path());
     driver.frame();
     ASSERT_EQ(driver.classroom().failed_script().path, script.path()) << plain;
     FrameRecord record;
@@ -657,7 +565,7 @@ TEST(Classroom, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
 TEST(Classroom, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed) {
   const std::string good = read_file(lessons::resolve_lesson("incline"));
   ScriptFile script(replaced(good, "local angle = parameter {", "local angle = parameter"));
-  Driver driver(script.path(), {"angle"}, {{"angle", "20"}});
+  ClassroomHands driver(script.path(), {"angle"}, {{"angle", "20"}});
   driver.frame();
   EXPECT_EQ(driver.classroom().failed_script().path, script.path());
   EXPECT_EQ(driver.classroom().failed_script().error.rfind(script.path() + ":", 0), 0u) << driver.classroom().failed_script().error;
@@ -673,13 +581,13 @@ TEST(Classroom, AScriptThatDoesNotBuildYetOpensWithItsSetValuesAndLockOnceFixed)
 }
 
 TEST(Classroom, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();  // it opens paused: take hold
   lessons::Lesson& lesson = driver.lesson();
   b2Body* block = lesson.scene().body("block");
   const ImVec2 held = driver.classroom().world_camera().to_screen(block->GetPosition());
-  driver.move_mouse(held);
-  driver.mouse_button(true);
+  driver.mouse_at(held);
+  driver.button(true);
   ASSERT_EQ(lesson.scene().grabbed(), block);
   driver.key(Key::space);  // play while holding
   const float start = block->GetPosition().x;
@@ -700,7 +608,7 @@ TEST(Classroom, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
   }
   EXPECT_LT(block->GetPosition().x - start, -0.05f);
   EXPECT_NEAR(friction_sliding, 0.35 * 9.81, 0.05 * 0.35 * 9.81);
-  driver.mouse_button(false);
+  driver.button(false);
   EXPECT_EQ(lesson.scene().grabbed(), nullptr);
   EXPECT_EQ(driver.classroom().status().rfind("Holding", 0), std::string::npos) << "the hand's message outlived the hand";
   // The hand's work is in the books: the residual stays small beside it.
@@ -710,13 +618,13 @@ TEST(Classroom, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
 // The wheel zooms about the point under the mouse, a drag on empty space pans the view with the
 // mouse, and a double click puts the lesson's own view back; the lesson does not notice.
 TEST(Classroom, TheWheelZoomsAndADragOnEmptySpacePans) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();  // paused: the view moves only because of the mouse
   const FrameLayout layout = FrameLayout::of(ImVec2(1280.0f, 720.0f), driver.classroom().ui_scale(ImVec2(1280.0f, 720.0f)),
                                              ImVec2(0.0f, ImGui::GetFrameHeight()));
   // Empty sky, high in the world view and left of the free-body diagram.
   const ImVec2 sky(layout.world_corner.x + 60.0f, layout.world_corner.y + 40.0f);
-  driver.move_mouse(sky);
+  driver.mouse_at(sky);
   const Camera before = driver.classroom().world_camera();
   const b2Vec2 under = before.to_world(sky);
   ImGui::GetIO().MouseWheel = 2.0f;
@@ -730,11 +638,11 @@ TEST(Classroom, TheWheelZoomsAndADragOnEmptySpacePans) {
   EXPECT_NEAR(still_under.y, under.y, 1e-4);
 
   // Drag 100 px right and 30 px down from empty space: the world moves with the mouse.
-  driver.mouse_button(true);
+  driver.button(true);
   EXPECT_EQ(driver.lesson().scene().grabbed(), nullptr);  // nothing was taken hold of
   ImGui::GetIO().MousePos = ImVec2(sky.x + 100.0f, sky.y + 30.0f);
   driver.frame();
-  driver.mouse_button(false);
+  driver.button(false);
   const Camera panned = driver.classroom().world_camera();
   const ImVec2 moved = panned.to_screen(under);
   EXPECT_NEAR(moved.x, sky.x + 100.0f, 0.5f);
@@ -745,8 +653,8 @@ TEST(Classroom, TheWheelZoomsAndADragOnEmptySpacePans) {
   ImGui::GetIO().MousePos = sky;
   driver.frame();
   for (int i = 0; i < 2; ++i) {
-    driver.mouse_button(true);
-    driver.mouse_button(false);
+    driver.button(true);
+    driver.button(false);
   }
   EXPECT_EQ(driver.classroom().view_adjust(), ViewAdjust{});
   EXPECT_FLOAT_EQ(driver.classroom().world_camera().pixels_per_metre, before.pixels_per_metre);
@@ -755,13 +663,13 @@ TEST(Classroom, TheWheelZoomsAndADragOnEmptySpacePans) {
 // With lanes, a drag stays in the lane it began in: each lane's camera sits on its own body's
 // height, so the next lane's camera would put the hand metres away (terrain's lanes are 4 m apart).
 TEST(Classroom, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
-  Driver driver("terrain");
+  ClassroomHands driver("terrain");
   driver.frame();
   const Camera lane = driver.classroom().world_camera();  // the first lane's, asphalt_box's
   const b2Body* box = driver.lesson().scene().body("asphalt_box");
   const ImVec2 held = lane.to_screen(box->GetWorldCenter());
-  driver.move_mouse(held);
-  driver.mouse_button(true);
+  driver.mouse_at(held);
+  driver.button(true);
   ASSERT_EQ(driver.lesson().scene().grabbed(), box);
   // 5 px into the lane below (whole pixels: ImGui rounds the mouse's position down).
   const ImVec2 below(std::floor(held.x), std::floor(lane.origin.y + lane.size.y) + 5.0f);
@@ -772,13 +680,13 @@ TEST(Classroom, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
   EXPECT_NEAR(target.x, meant.x, 1e-3);
   EXPECT_NEAR(target.y, meant.y, 1e-3);
   EXPECT_LT(std::abs(target.y - box->GetWorldCenter().y), 1.0f);
-  driver.mouse_button(false);
+  driver.button(false);
 }
 
 // A copy of a built-in lesson a student can edit, opened in the classroom.
 struct StudentCopy {
   ScriptFile script{read_file(lessons::resolve_lesson("incline"))};
-  Driver driver{script.path()};
+  ClassroomHands driver{script.path()};
   // Playing, as in a class: the running lesson must keep running whatever the student saves.
   StudentCopy() { driver.playback().play(); }
   // Time for the file watcher to look (it looks four times a second).
@@ -835,7 +743,7 @@ TEST(Classroom, APausedWindowSeesASavedScriptWhileNobodyTouchesIt) {
 // second of wall time later: a paused window passes none, and the trial's pulley showed its
 // tension "not yet" measured until the mouse moved.
 TEST(Classroom, TheRowsAreReadTheMomentTheRunPausesItself) {
-  Driver driver("pulley");
+  ClassroomHands driver("pulley");
   driver.key(Key::space);
   for (int i = 0; i < 600 && driver.playback().playing(); ++i) driver.frame(1.0 / 60.0);
   ASSERT_FALSE(driver.playback().playing());
@@ -900,7 +808,7 @@ TEST(Classroom, ALostFileIsSaidAndTheLessonKeepsRunning) {
 }
 
 TEST(Classroom, TheTeachersLockShowsOnlyTheNamedControls) {
-  Driver driver("spring_pull", {"mu_s", "mu_k"});
+  ClassroomHands driver("spring_pull", {"mu_s", "mu_k"});
   driver.frame();
   EXPECT_TRUE(driver.classroom().control("mu_s slider").has_value());
   EXPECT_TRUE(driver.classroom().control("mu_k value").has_value());
@@ -914,7 +822,7 @@ TEST(Classroom, TheTeachersLockShowsOnlyTheNamedControls) {
 }
 
 TEST(Classroom, APresetSetsBothCoefficientsOfThePair) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   const ImRect box = driver.control("mu_s presets");
   driver.click(box.GetCenter());
@@ -927,7 +835,7 @@ TEST(Classroom, APresetSetsBothCoefficientsOfThePair) {
 }
 
 TEST(Classroom, APairsArrowFoldsItsSlidersIntoItsHeadingAndOpensThemAgain) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   ASSERT_TRUE(driver.classroom().control("mu_s slider").has_value());
   driver.click("aluminium on wood fold");
@@ -942,7 +850,7 @@ TEST(Classroom, APairsArrowFoldsItsSlidersIntoItsHeadingAndOpensThemAgain) {
 }
 
 TEST(Classroom, InProjectorModeAPairsSlidersGoTwoARowAndCtrlClickTypesAValue) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.playback().run_to(2.5);
@@ -978,7 +886,7 @@ TEST(Classroom, InProjectorModeAPairsSlidersGoTwoARowAndCtrlClickTypesAValue) {
 TEST(Classroom, AUnitWithAPercentSignIsShownAsText) {
   // A student's unit with a % in it ("%s" would make a format read a string that is not there).
   ScriptFile script(replaced(read_file(lessons::resolve_lesson("push")), "unit = \"kg\"", "unit = \"%s\""));
-  Driver driver(script.path());
+  ClassroomHands driver(script.path());
   driver.frame();
   FrameRecord record;
   driver.frame(0.0, ImVec2(0.0f, 0.0f), &record);
@@ -989,7 +897,7 @@ TEST(Classroom, AUnitWithAPercentSignIsShownAsText) {
 
 TEST(Classroom, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {
   for (const std::string& name : lessons::builtin_lessons()) {
-    Driver driver(name);
+    ClassroomHands driver(name);
     driver.frame();
     const std::vector<lessons::Parameter> parameters = driver.lesson().parameters();
     for (const lessons::Parameter& parameter : parameters) {
@@ -1019,7 +927,7 @@ TEST(Classroom, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {
 TEST(Classroom, ARunawaySimulationPausesAndSaysSo) {
   // Nothing a lesson's values can reach blows up (the extremes test above), so the runaway is
   // made by hand: energy from nowhere, a kick no force in the books gave.
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.playback().play();
   driver.frame(0.5);
   driver.lesson().scene().body("block")->SetLinearVelocity(b2Vec2(1e6f, 0.0f));
@@ -1043,7 +951,7 @@ TEST(Classroom, ARunawaySimulationPausesAndSaysSo) {
 // Played on past its end, push's block leaves the table's end and falls for ever: the window
 // pauses once, says which body fell and when, and plays on if asked without saying it again.
 TEST(Classroom, ABodyThatFallsPastEverythingPausesTheRunOnceAndSaysSo) {
-  Driver driver("push");
+  ClassroomHands driver("push");
   Playback& playback = driver.playback();
   const auto play_until_paused = [&](int frames) {
     driver.key(Key::space);
@@ -1091,7 +999,7 @@ long drawn_pixels(const Image& image) {
 }
 
 TEST(Classroom, NewFontSizesAreDrawnAfterProjectorModeAndResizes) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   const long before = drawn_pixels(driver.picture());
   ASSERT_GT(before, 20000);
   driver.key(Key::p);
@@ -1105,7 +1013,7 @@ TEST(Classroom, NewFontSizesAreDrawnAfterProjectorModeAndResizes) {
 }
 
 TEST(Classroom, TinyAndOddWindowSizesDrawWithoutTrouble) {
-  Driver driver("tipping_box");
+  ClassroomHands driver("tipping_box");
   driver.playback().play();
   for (const ImVec2 size : {ImVec2(1.0f, 1.0f), ImVec2(200.0f, 900.0f), ImVec2(3840.0f, 400.0f), ImVec2(1280.0f, 720.0f)}) {
     driver.frame(0.05, size);
@@ -1115,7 +1023,7 @@ TEST(Classroom, TinyAndOddWindowSizesDrawWithoutTrouble) {
 }
 
 TEST(Classroom, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriting) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.playback().play();
   driver.frame(0.25);
   driver.key(Key::space);
@@ -1158,7 +1066,7 @@ TEST(Classroom, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriti
 }
 
 TEST(Classroom, TheSimulationMenuSwitchesTreatmentRateAndSubStepsAndTheTheoryTableShowsIt) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.frame();
   driver.playback().run_to(3.0);
   const auto breakaway = [&] { return driver.playback().readings().expectations.at(0); };
@@ -1167,7 +1075,7 @@ TEST(Classroom, TheSimulationMenuSwitchesTreatmentRateAndSubStepsAndTheTheoryTab
 
   const auto choose = [&](const std::string& item) {
     // Right after a choice ImGui may open the menu on hover alone; a click then would close it.
-    driver.move_mouse(driver.control("Simulation menu").GetCenter());
+    driver.mouse_at(driver.control("Simulation menu").GetCenter());
     if (!driver.classroom().control(item)) driver.click("Simulation menu");
     driver.click(item);
   };
@@ -1199,7 +1107,7 @@ every_step(function(t)
   end
 end)
 )"));
-  Driver driver(script.path());
+  ClassroomHands driver(script.path());
   driver.playback().play();
   for (int i = 0; i < 10 && driver.playback().problem().empty(); ++i) driver.frame(0.1);
   EXPECT_EQ(driver.playback().problem().rfind(script.path() + ":6:", 0), 0u) << driver.playback().problem();
@@ -1213,7 +1121,7 @@ end)
 // low slides, which one coefficient (Box2D's own) gets wrong, so the cheapest setting found
 // is not Box2D's and answers the lesson's table at that slider value.
 TEST(Classroom, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
-  Driver driver("tipping_box");
+  ClassroomHands driver("tipping_box");
   driver.playback().set_parameter("push_height", "0.3");
   driver.frame();
   driver.frame();  // a tab bar lays its tabs out in its first frame: the user sees them from the second
@@ -1240,7 +1148,7 @@ TEST(Classroom, TheCheapestSettingIsMeasuredBetweenFramesAndCanBeUsed) {
 // marks the lesson's two thresholds at its step: the small one on the chattering side, the
 // large one on the stable side, as the lesson's own table says.
 TEST(Classroom, TheStabilityMapMarksTheLessonsThresholdsAtItsStep) {
-  Driver driver("where_methods_fail");
+  ClassroomHands driver("where_methods_fail");
   driver.frame();
   driver.frame();
   driver.click("Stability map tab");
@@ -1274,7 +1182,7 @@ TEST(Classroom, TheStabilityMapMarksTheLessonsThresholdsAtItsStep) {
 // A tolerance that is not a positive number is refused (Measure stays off) rather than
 // quietly replaced by another one.
 TEST(Classroom, ANegativeToleranceMeasuresNothing) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   driver.frame();
   driver.click("Cheapest setting tab");
@@ -1295,7 +1203,7 @@ TEST(Classroom, ANegativeToleranceMeasuresNothing) {
 // F11 asks the window (once a press) to toggle full screen; the window keeps the result in its
 // settings (window_opens_full_screen_when_the_settings_say_so checks that under Xvfb).
 TEST(Classroom, F11TogglesFullScreen) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   driver.key(Key::f11);
   EXPECT_TRUE(driver.classroom().take_full_screen_toggle());
@@ -1397,7 +1305,7 @@ every_step(function(t)
   if frames <= 100 then block:scale_velocity(1 - param.cut) end
 end)
 )"));
-  Driver driver(script.path());
+  ClassroomHands driver(script.path());
   driver.frame();
   driver.playback().run_to(0.2);
   driver.playback().set_parameter("cut", "0.05");
@@ -1415,7 +1323,7 @@ end)
 // Predict first: the class's answer is typed before Play, fixed once the run starts, and set
 // beside the theory and the measurement once the teacher reveals them.
 TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasurement) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.set_display(ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
   driver.frame();
   ASSERT_TRUE(driver.classroom().theory_hidden());
@@ -1480,7 +1388,7 @@ TEST(Classroom, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasu
 // row's theory (the mass) clears that answer and says so; one that does not (how fast the push
 // grows, for the breakaway push) keeps it.
 TEST(Classroom, APredictionIsClearedWhenAValueItDependsOnChanges) {
-  Driver driver("push");
+  ClassroomHands driver("push");
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
   driver.click("prediction breakaway push");
@@ -1527,7 +1435,7 @@ TEST(Classroom, APredictionIsClearedWhenAValueItDependsOnChanges) {
 // t = 0, where the new answers are typed; before, the theory stayed up until another lesson
 // was opened, and the old answers were judged against the new run.
 TEST(Classroom, PredictAgainHidesTheTheoryForANewRoundOfAnswers) {
-  Driver driver("tipping_box");
+  ClassroomHands driver("tipping_box");
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
   driver.click("prediction tips or slides: slides");
@@ -1552,7 +1460,7 @@ TEST(Classroom, PredictAgainHidesTheTheoryForANewRoundOfAnswers) {
 // 3.46 s" after a rewind to 1.96 s. Each is said while it holds and gone once it does not: after
 // a rewind (the comma key, the time bar), a reset (R) and the reveal (T).
 TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
-  Driver driver("tipping_box");
+  ClassroomHands driver("tipping_box");
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
   const auto says = [&](const std::string& words) {
@@ -1600,7 +1508,7 @@ TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
 // class's answer and pressed Space to start, as the trial did), it ends the typing and plays,
 // and never becomes part of the number ("40 " read as "not a number" after the reveal).
 TEST(Classroom, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
-  Driver driver("spring_pull");
+  ClassroomHands driver("spring_pull");
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
   driver.click("prediction breakaway force");
@@ -1645,7 +1553,7 @@ TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAnd
     std::ofstream(script) << text;
   }
   {
-  Driver driver(script.string());
+  ClassroomHands driver(script.string());
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
@@ -1673,7 +1581,7 @@ TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAnd
   EXPECT_TRUE(slider());
   }
   // A lesson with room for both keeps its sliders, at the opening and at the run's end alike.
-  Driver incline("incline");
+  ClassroomHands incline("incline");
   incline.classroom().window_settings().projector = true;
   incline.set_display(ImVec2(1920.0f, 1080.0f));
   incline.frame();
@@ -1689,7 +1597,7 @@ TEST(Classroom, TheParametersFoldForTheAnswersFromTheOpeningNeverAsTheRunEndsAnd
 // answers say "measured: runs off the floor first", a line longer, and a plan worked out anew
 // folded the Parameters panel, the slider and its tabs under the teacher's pointer.
 TEST(Classroom, ASliderLetGoKeepsTheColumnAsTheLessonOpened) {
-  Driver driver("stacked_blocks");
+  ClassroomHands driver("stacked_blocks");
   driver.classroom().window_settings().projector = true;
   driver.set_display(ImVec2(1920.0f, 1080.0f));
   driver.frame();
@@ -1711,7 +1619,7 @@ TEST(Classroom, ASliderLetGoKeepsTheColumnAsTheLessonOpened) {
 
 // A teacher who takes no predictions has the theory from the start.
 TEST(Classroom, WithPredictionsOffTheTheoryShowsFromTheStart) {
-  Driver driver("incline");
+  ClassroomHands driver("incline");
   driver.frame();
   EXPECT_TRUE(driver.classroom().theory_hidden());
   driver.click("View menu");
@@ -1747,7 +1655,7 @@ TEST(Classroom, BeforeTheRevealNoPanelGivesTheTheoryAway) {
   };
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     SCOPED_TRACE(entry.name);
-    Driver driver(entry.name);
+    ClassroomHands driver(entry.name);
     driver.set_display(ImVec2(1920.0f, 1080.0f));
     FrameRecord record;
     driver.frame();
