@@ -34,6 +34,14 @@ class ScriptFile {
   std::string path_;
 };
 
+// `text` with its first `from` replaced by `to`: a script broken or changed in one place. A
+// `from` the text lacks fails the test (the script it was written for has changed).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
 // The opening every small test script shares.
 inline std::string with_heading(const std::string& body) {
   return "lesson { title = \"test\", question = \"does it work?\" }\n" + body;

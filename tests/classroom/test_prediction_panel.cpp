@@ -4,6 +4,7 @@
 // otherwise: the answers then have the room they need, with no scroll bar.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -118,6 +119,280 @@ TEST(PredictionPanel, TheMeasurementWaitsForTheClasssAnswer) {
   ASSERT_EQ(hands.classroom().predictions().answers["breakaway push"], "4");
   hands.classroom().playback().run_to(3.0);
   EXPECT_EQ(note().rfind("measured: 3.9", 0), 0u) << note();
+}
+
+// The class's predictions through a whole round: answered before Play, fixed once the run
+// starts, set beside theory and measurement at the reveal, cleared when a value they depend on
+// changes, asked again; and no panel giving the theory away before the reveal.
+using lessons::ScriptFile;
+
+// Asked of the class before the reveal, a failed row's note beside the answer box says "?" too,
+// as both tables do (a student's second trial found "measured: not yet" there).
+TEST(PredictionPanel, AFailedRowsNoteBesideTheClasssAnswerSaysItIsNotKnown) {
+  const lessons::ScriptFile script(lessons::with_heading(R"(
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }
+expect { "broken", unit = "N", predicted = function() return 2 end,
+  measured = function() if time() > 0.05 then return nothing_here.value end end, tolerance = 0.1 }
+predict { "broken", unit = "N", question = "How hard?" }
+)"));
+  ClassroomHands hands(script.path());
+  hands.classroom().window_settings().predictions = true;
+  hands.playback().run_to(0.1);
+  ASSERT_TRUE(hands.classroom().theory_hidden());
+  hands.frame();
+  FrameRecord record;
+  hands.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
+  bool unknown = false;
+  for (const ShownText& text : record.texts) {
+    EXPECT_NE(text.text, "measured: not yet") << "the failed row is said to be not measured yet";
+    unknown = unknown || text.text == "measured: ?";
+  }
+  EXPECT_TRUE(unknown) << "no \"measured: ?\" beside the class's answer";
+}
+
+// Predict first: the class's answer is typed before Play, fixed once the run starts, and set
+// beside the theory and the measurement once the teacher reveals them.
+TEST(PredictionPanel, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAndMeasurement) {
+  ClassroomHands hands("spring_pull");
+  hands.set_display(ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
+  hands.frame();
+  ASSERT_TRUE(hands.classroom().theory_hidden());
+  hands.click("prediction breakaway force");
+  hands.type("4");
+  hands.press(ImGuiKey_Enter);
+  EXPECT_EQ(hands.classroom().predictions().answers["breakaway force"], "4");
+  // The run: the answer is the class's, and stays as it was.
+  hands.key(Key::space);
+  hands.playback().run_to(hands.lesson().duration());
+  hands.key(Key::space);
+  hands.click("prediction breakaway force");
+  hands.type("9");
+  hands.press(ImGuiKey_Enter);
+  EXPECT_EQ(hands.classroom().predictions().answers["breakaway force"], "4");
+  EXPECT_TRUE(hands.classroom().theory_hidden()) << "the run alone reveals nothing";
+
+  hands.click("reveal");
+  EXPECT_FALSE(hands.classroom().theory_hidden());
+  FrameRecord record;
+  hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+  hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+  // Breakaway at mu_s·m·g = 0.45 × 1 kg × 9.81 m/s² = 4.41 N: the class's 4 N is 0.41 N below.
+  lessons::ExpectationResult breakaway;
+  for (const lessons::ExpectationResult& row : hands.playback().readings().expectations) {
+    if (row.name == "breakaway force") breakaway = row;
+  }
+  ASSERT_TRUE(breakaway.measured_yet);
+  EXPECT_NEAR(breakaway.predicted, 0.45 * 9.81, 1e-9);
+  const auto drawn = [&](const std::string& text) {
+    for (const ShownText& shown : record.texts) {
+      if (shown.text == text) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(drawn("4 N")) << "the class's answer with its unit";
+  EXPECT_TRUE(drawn(format_quantity(breakaway.predicted, "N")));
+  EXPECT_TRUE(drawn(format_quantity(breakaway.measured, "N")));
+  const double off = 4.0 - breakaway.measured;
+  char close[96];
+  std::snprintf(close, sizeof close, "class: \u2212%s, %.0f %% below the measurement", format_quantity(-off, "N").c_str(),
+                100.0 * -off / breakaway.measured);
+  EXPECT_TRUE(drawn(close)) << close;
+  // T again hides the theory, the class's answers kept (a reveal by mistake undone, issue 31);
+  // T reveals it once more; a lesson opened afresh asks again.
+  hands.key(Key::t);
+  EXPECT_TRUE(hands.classroom().theory_hidden());
+  EXPECT_EQ(hands.classroom().predictions().answers["breakaway force"], "4");
+  hands.key(Key::t);
+  EXPECT_FALSE(hands.classroom().theory_hidden());
+  EXPECT_EQ(hands.classroom().open("tipping_box"), "");
+  hands.frame();
+  EXPECT_TRUE(hands.classroom().theory_hidden());
+  EXPECT_TRUE(hands.classroom().predictions().answers.empty());
+  hands.click("prediction tips or slides: slides");
+  EXPECT_EQ(hands.classroom().predictions().answers["tips or slides"], "slides");
+  hands.key(Key::t);
+  EXPECT_FALSE(hands.classroom().theory_hidden());
+}
+
+// A prediction is for the values it was made at: a value changed before Play that changes the
+// row's theory (the mass) clears that answer and says so; one that does not (how fast the push
+// grows, for the breakaway push) keeps it.
+TEST(PredictionPanel, APredictionIsClearedWhenAValueItDependsOnChanges) {
+  ClassroomHands hands("push");
+  hands.set_display(ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  hands.click("prediction breakaway push");
+  hands.type("4");
+  hands.press(ImGuiKey_Enter);
+  hands.frame();
+  const std::map<std::string, std::string>& answers = hands.classroom().predictions().answers;
+  ASSERT_EQ(answers.count("breakaway push"), 1u);
+  ASSERT_EQ(answers.at("breakaway push"), "4");
+  // The breakaway push is mu_s·m·g, however fast the push grows.
+  hands.playback().set_parameter("push_rate", "5");
+  hands.frame();
+  hands.frame();
+  ASSERT_EQ(answers.count("breakaway push"), 1u) << "a value the theory does not use cleared it: " << hands.classroom().status();
+  hands.playback().set_parameter("mass", "2");
+  hands.frame();
+  hands.frame();
+  EXPECT_EQ(answers.count("breakaway push"), 0u) << "the prediction for 1 kg was kept at 2 kg";
+  EXPECT_NE(hands.classroom().status().find("breakaway push"), std::string::npos) << hands.classroom().status();
+  EXPECT_TRUE(hands.classroom().theory_hidden());
+
+  // After the run and the reveal too (a teacher's trial: a 1 kg answer of 5 N was shown "87 %
+  // below the theory" for 10 kg): the answer goes, and the status says how to ask anew.
+  hands.click("prediction breakaway push");
+  hands.type("19");
+  hands.press(ImGuiKey_Enter);
+  hands.frame();
+  ASSERT_EQ(answers.count("breakaway push"), 1u);
+  hands.playback().run_to(hands.lesson().duration());
+  hands.key(Key::t);
+  ASSERT_FALSE(hands.classroom().theory_hidden());
+  hands.frame();
+  ASSERT_EQ(answers.count("breakaway push"), 1u) << "the reveal cleared the answer: " << hands.classroom().status();
+  hands.playback().set_parameter("mass", "10");
+  hands.frame();
+  hands.frame();
+  EXPECT_EQ(answers.count("breakaway push"), 0u) << "the prediction for 2 kg was judged at 10 kg";
+  EXPECT_NE(hands.classroom().status().find("Predict again"), std::string::npos) << hands.classroom().status();
+  EXPECT_FALSE(hands.classroom().theory_hidden());
+}
+
+// A second round: after the reveal the teacher changes a value and asks the class again. The
+// View menu's "Predict again" hides the theory, clears the answers and takes the run back to
+// t = 0, where the new answers are typed; before, the theory stayed up until another lesson
+// was opened, and the old answers were judged against the new run.
+TEST(PredictionPanel, PredictAgainHidesTheTheoryForANewRoundOfAnswers) {
+  ClassroomHands hands("tipping_box");
+  hands.set_display(ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  hands.click("prediction tips or slides: slides");
+  hands.key(Key::space);
+  hands.playback().run_to(hands.lesson().duration());
+  hands.key(Key::t);
+  ASSERT_FALSE(hands.classroom().theory_hidden());
+  hands.playback().set_parameter("push_height", "0.3");
+  hands.click("View menu");
+  hands.click("Predict again");
+  hands.frame();
+  EXPECT_TRUE(hands.classroom().theory_hidden()) << "the theory is hidden for the new round";
+  EXPECT_TRUE(hands.classroom().predictions().answers.empty()) << "the old answers are gone";
+  EXPECT_EQ(hands.lesson().scene().frame(), 0) << "back at the start, where answers are typed";
+  EXPECT_EQ(hands.lesson().parameter("push_height").value, 0.3) << "the teacher's new value stays";
+  hands.click("prediction tips or slides: tips");
+  EXPECT_EQ(hands.classroom().predictions().answers["tips or slides"], "tips");
+}
+
+// Space is how the window plays. Typed into a prediction's number (a teacher who typed the
+// class's answer and pressed Space to start, as the trial did), it ends the typing and plays,
+// and never becomes part of the number ("40 " read as "not a number" after the reveal).
+TEST(PredictionPanel, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
+  ClassroomHands hands("spring_pull");
+  hands.set_display(ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  hands.click("prediction breakaway force");
+  hands.type("4");
+  ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the box is being typed in";
+  hands.classroom().key_pressed(Key::space, false);  // the key, as the window passes it on...
+  hands.type(" ");                                    // ...and the character it types
+  EXPECT_EQ(hands.classroom().predictions().answers["breakaway force"], "4");
+  EXPECT_TRUE(hands.playback().playing()) << "Space played the run";
+  hands.frame();
+  hands.frame();  // ImGui tells what the frame before asked for
+  EXPECT_FALSE(ImGui::GetIO().WantTextInput) << "the typing ended";
+  std::string why;
+  EXPECT_EQ(read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
+}
+
+// A teacher who takes no predictions has the theory from the start.
+TEST(PredictionPanel, WithPredictionsOffTheTheoryShowsFromTheStart) {
+  ClassroomHands hands("incline");
+  hands.frame();
+  EXPECT_TRUE(hands.classroom().theory_hidden());
+  hands.click("View menu");
+  hands.click("Ask for predictions first");
+  EXPECT_FALSE(hands.classroom().window_settings().predictions);
+  EXPECT_FALSE(hands.classroom().theory_hidden());
+}
+
+// The vertices a plot's window drew in the theory's colours: its curves and their legend keys.
+int theory_vertices(const Theme& colours, std::size_t plots) {
+  int count = 0;
+  for (std::size_t i = 0; i < plots; ++i) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(("###plot" + std::to_string(i)).c_str());
+    if (window == nullptr) continue;
+    for (const ImDrawVert& vertex : window->DrawList->VtxBuffer) {
+      for (const ImU32 theory : colours.theory) {
+        if ((vertex.col & 0x00ffffffu) == (theory & 0x00ffffffu) && (vertex.col >> 24) > 0) ++count;
+      }
+    }
+  }
+  return count;
+}
+
+// Before the reveal no panel states a theory value of the lesson, and no plot draws a theory
+// curve: every text the frame drew is searched for each row's theory as the table writes it
+// (a word only as one of the choices offered, as often as the choices name it). After the
+// reveal each predicted row's theory is drawn beside the class's answer.
+TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
+  const auto all = [](const FrameRecord& record, const std::string& text, bool whole) {
+    int count = 0;
+    for (const ShownText& shown : record.texts) count += whole ? shown.text == text : shown.text.find(text) != std::string::npos;
+    return count;
+  };
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    SCOPED_TRACE(entry.name);
+    ClassroomHands hands(entry.name);
+    hands.set_display(ImVec2(1920.0f, 1080.0f));
+    FrameRecord record;
+    hands.frame();
+    hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+    const std::vector<lessons::ExpectationResult> rows = hands.lesson().expectations();
+    const auto& predictions = hands.lesson().predictions();
+    ASSERT_FALSE(predictions.empty());
+    for (const lessons::ExpectationResult& row : rows) {
+      if (row.numeric) {
+        // A theory of exactly 0 (check_the_article's block ends at rest) reads "0 J", which the
+        // energy ledger's "0.0000 J" contains without giving anything away: it is looked for as
+        // a whole text, as a table cell would show it.
+        EXPECT_EQ(all(record, format_quantity(row.predicted, row.unit.c_str()), row.predicted == 0.0), 0)
+            << row.name << ": " << format_quantity(row.predicted, row.unit.c_str());
+        continue;
+      }
+      int offered = 0;
+      for (const lessons::Prediction& prediction : predictions) {
+        offered += static_cast<int>(std::count(prediction.choices.begin(), prediction.choices.end(), row.predicted_text));
+      }
+      EXPECT_EQ(all(record, row.predicted_text, true), offered) << row.name << ": " << row.predicted_text;
+    }
+    const Theme& colours = theme(ThemeName::light);
+    const std::size_t plots = hands.lesson().plots().size();
+    bool any_theory_curve = false;
+    for (const lessons::Plot& plot : hands.lesson().plots()) any_theory_curve = any_theory_curve || !plot.theory.empty();
+    EXPECT_EQ(theory_vertices(colours, plots), 0);
+
+    // Revealed, with an answer for each question: the theory beside the class's answer.
+    for (const lessons::Prediction& prediction : predictions) {
+      hands.classroom().predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices[0] : "1";
+    }
+    hands.classroom().predictions().revealed = true;
+    hands.frame();
+    hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
+    for (const lessons::Prediction& prediction : predictions) {
+      const auto row = std::find_if(rows.begin(), rows.end(),
+                                    [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
+      ASSERT_NE(row, rows.end());
+      const std::string theory = row->numeric ? format_quantity(row->predicted, row->unit.c_str()) : row->predicted_text;
+      EXPECT_GE(all(record, theory, true), 2) << prediction.expectation << ": in the class's table and the theory table";
+      EXPECT_GE(all(record, prediction.is_choice() ? prediction.choices[0] : "1 " + prediction.unit, true), 1);
+    }
+    if (any_theory_curve) {
+      EXPECT_GT(theory_vertices(colours, plots), 0);
+    }
+  }
 }
 
 }  // namespace
