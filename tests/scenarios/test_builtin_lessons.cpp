@@ -457,6 +457,16 @@ INSTANTIATE_TEST_SUITE_P(
                       // Met a step late the corner has sunk into the gap: the lever arm it is met at.
                       Case{"thrown_box", {{"spin", "3"}, {"throw_speed", "3"}}, ""},
                       Case{"thrown_box", {{"spin", "-0.5"}, {"mu_s", "1"}, {"mu_k", "1"}, {"throw_speed", "3"}}, ""},
+                      // Landing a hair off flat, the far end of the face is within reach already in
+                      // the step that first finds the corner (6 mm rise, 10 mm fall by then; 4.7
+                      // against 8.5 on its side): the world's step meets both ends at once, where one
+                      // corner's impact with the step's strong drag left -3.6 and -7.3 rad/s.
+                      Case{"thrown_box", {{"b", "344"}, {"c", "132.1"}, {"mass", "12.85"}, {"mu_k", "1.058"}, {"mu_s", "1.006"},
+                                          {"spin", "-0.03703"}, {"throw_speed", "7.113"}},
+                           "both corners of a face met in the same step"},
+                      Case{"thrown_box", {{"b", "361.5"}, {"c", "92.7"}, {"mass", "10.47"}, {"mu_k", "2"}, {"mu_s", "0"},
+                                          {"spin", "-3.946"}, {"throw_speed", "5.451"}},
+                           "both corners of a face met in the same step"},
                       // terrain: on slopes below and above every surface's sticking angle (ice's is
                       // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
                       // stickiest asphalt the sliders allow.
