@@ -23,6 +23,14 @@ inline double kinetic_energy(const b2Body* body) {
   return 0.5 * body->GetMass() * b2Dot(v, v) + 0.5 * central_inertia(body) * w * w;
 }
 
+// Whether a drive moves the body: a kinematic body, whose velocity the scene sets each step
+// from its path, whatever that velocity is now. The listener counts such a body's velocity
+// (and nothing else) as the drive, in the sliding's change between steps and in the work the
+// drivers do, and the stick-slip treatment decides a stop on it at once by Coulomb's law; at
+// rest, a driven body's drive terms are all 0 there, and that decision is Coulomb's law's on a
+// still surface too, so "with a velocity" needs no test of its own. One rule, here.
+inline bool is_driven(const b2Body* body) { return body->GetType() == b2_kinematicBody; }
+
 inline b2Vec2 point_velocity(const b2Body* body, const b2Vec2& world_point) {
   return body->GetLinearVelocityFromWorldPoint(world_point);
 }

@@ -139,8 +139,8 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   r.before_known = !r.fresh;
   r.driven_sliding_before = r.driven_sliding;
   r.driven_sliding = 0.0;
-  if (r.body_b->GetType() == b2_kinematicBody) r.driven_sliding += b2Dot(point_velocity(r.body_b, r.point), t);
-  if (r.body_a->GetType() == b2_kinematicBody) r.driven_sliding -= b2Dot(point_velocity(r.body_a, r.point), t);
+  if (is_driven(r.body_b)) r.driven_sliding += b2Dot(point_velocity(r.body_b, r.point), t);
+  if (is_driven(r.body_a)) r.driven_sliding -= b2Dot(point_velocity(r.body_a, r.point), t);
   r.fresh = false;
   r.solving = true;
 }
@@ -198,8 +198,8 @@ void FrictionListener::settle(ContactRecord& r) {
   const TreatmentRule& rule = rule_at(r.pair_index);
   const b2Vec2 n = r.normal;
   const b2Vec2 t = ContactRecord::tangent_of(n);
-  const bool a_driven = r.body_a->GetType() == b2_kinematicBody;
-  const bool b_driven = r.body_b->GetType() == b2_kinematicBody;
+  const bool a_driven = is_driven(r.body_a);
+  const bool b_driven = is_driven(r.body_b);
 
   double normal_impulse = 0.0;
   double tangent_impulse = 0.0;

@@ -299,7 +299,7 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // correction's (mu_s - mu_k)·N·span, nothing where mu_k >= mu_s (the held step's limit is
     // then mu_k·N already), and decided here those settings ended up to 0.038 m further off the
     // exact slide than held for the step (wedge, mu_k 1.6 against mu_s 0.34 and 1.33).
-    const bool driven = r.body_a->GetType() == b2_kinematicBody || r.body_b->GetType() == b2_kinematicBody;
+    const bool driven = is_driven(r.body_a) || is_driven(r.body_b);
     const bool stop_on_drive = held && driven && r.before_known && pair.mu_k < pair.mu_s;
     if ((reversed || stop_on_drive) && r.siblings == 0) restick_correction(r, pair, solved);
   }

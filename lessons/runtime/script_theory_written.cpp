@@ -379,6 +379,19 @@ int thrown_box(lua_State* state) {
     const double far_speed = -(impact.vy + impact.omega * far_x);  // downward, m/s
     const double far_root = far_speed + std::sqrt(far_speed * far_speed + 2.0 * g * rise);
     const double second_corner = !on_a_corner || landing.flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
+    // Before any impact, too: a stepped world finds contacts at a step's start, so it first
+    // meets the corner at the first step boundary after the landing, the corner sunk into the gap
+    // by its fall since, and it finds the far end in the same step if that end has fallen as far
+    // as its rise (then both ends take that step's impact together, and no single-corner impact
+    // describes it: a box landing 0.88° off flat at 4.1 m/s, 6 mm rise against a 10 mm fall,
+    // stopped turning in the world where one corner's impact with the step's drag leaves it at
+    // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
+    double far_above_reach = infinity;
+    if (on_a_corner && !landing.flat) {
+      const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
+      const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
+      far_above_reach = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
+    }
     // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
     // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
     // corner moves it; k_tn couples sliding to falling).
@@ -402,7 +415,7 @@ int thrown_box(lua_State* state) {
     // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
     // slows it, ever more slowly).
     const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
-    lua_createtable(state, 0, 14);
+    lua_createtable(state, 0, 15);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_angle", landing.angle / degrees);
     lua_pushstring(state, corner.c_str());
@@ -411,6 +424,7 @@ int thrown_box(lua_State* state) {
     set_number(state, "spin_after_a_step_late", late);
     set_number(state, "pivot_acceleration", pivot);
     set_number(state, "second_corner_after", second_corner);
+    set_number(state, "far_end_above_reach", far_above_reach);
     set_number(state, "solver_swing", swing);
     set_number(state, "vx_after", impact.vx);
     set_number(state, "vy_after", impact.vy);

@@ -260,6 +260,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // positions it was noisy by an ulp over h, and at 2000 Hz the block
                       // slipped more than it should (the slide ended 2.1 cm off).
                       Case{"wedge", {}, "", 2000},
+                      // A stuck stretch whose demand passes mu_s·N by under 0.04 % before it
+                      // would turn back: the model breaks away at 3.908 s, the world's block
+                      // (3 mm further along) peaks at 1.30971·N and holds on, and the slide ends
+                      // 0.25 m apart. No model can say which: the rows after it say so.
+                      Case{"wedge", {{"a_x", "-16.57"}, {"a_x_omega", "4.777"}, {"mass", "8.022"}, {"mu_k", "0.7755"},
+                                     {"mu_s", "1.31"}, {"omega", "3.428"}, {"theta0", "7.71"}},
+                           "grazes the static limit: no model"},
                       Case{"check_the_article", {}, ""}, Case{"check_the_article", {{"example", "advanced"}}, ""},
                       Case{"where_methods_fail", {}, "jitters"},
                       Case{"where_methods_fail", {{"small_epsilon", "0.02"}}, "settles"},
@@ -450,6 +457,16 @@ INSTANTIATE_TEST_SUITE_P(
                       // Met a step late the corner has sunk into the gap: the lever arm it is met at.
                       Case{"thrown_box", {{"spin", "3"}, {"throw_speed", "3"}}, ""},
                       Case{"thrown_box", {{"spin", "-0.5"}, {"mu_s", "1"}, {"mu_k", "1"}, {"throw_speed", "3"}}, ""},
+                      // Landing a hair off flat, the far end of the face is within reach already in
+                      // the step that first finds the corner (6 mm rise, 10 mm fall by then; 4.7
+                      // against 8.5 on its side): the world's step meets both ends at once, where one
+                      // corner's impact with the step's strong drag left -3.6 and -7.3 rad/s.
+                      Case{"thrown_box", {{"b", "344"}, {"c", "132.1"}, {"mass", "12.85"}, {"mu_k", "1.058"}, {"mu_s", "1.006"},
+                                          {"spin", "-0.03703"}, {"throw_speed", "7.113"}},
+                           "both corners of a face met in the same step"},
+                      Case{"thrown_box", {{"b", "361.5"}, {"c", "92.7"}, {"mass", "10.47"}, {"mu_k", "2"}, {"mu_s", "0"},
+                                          {"spin", "-3.946"}, {"throw_speed", "5.451"}},
+                           "both corners of a face met in the same step"},
                       // terrain: on slopes below and above every surface's sticking angle (ice's is
                       // 4.6°, grass's 24°, asphalt's 29°), thrown slow and fast, a heavy box, and the
                       // stickiest asphalt the sliders allow.
