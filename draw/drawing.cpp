@@ -12,7 +12,35 @@ bool same_ends(const DrawnSegment& a, const DrawnSegment& b) {
   return a.from.x == b.from.x && a.from.y == b.from.y && a.to.x == b.to.x && a.to.y == b.to.y;
 }
 
+// Whether two segments' centre lines cross: each one's ends on either side of the other.
+bool crosses(const DrawnSegment& a, const DrawnSegment& b) {
+  const auto side = [](ImVec2 from, ImVec2 to, ImVec2 p) { return (to.x - from.x) * (p.y - from.y) - (to.y - from.y) * (p.x - from.x); };
+  return side(a.from, a.to, b.from) * side(a.from, a.to, b.to) < 0.0f && side(b.from, b.to, a.from) * side(b.from, b.to, a.to) < 0.0f;
+}
+
+// How far along `a` from its start its centre line meets `b`'s, px (for lines that cross).
+float crossing_along(const DrawnSegment& a, const DrawnSegment& b) {
+  const ImVec2 d = sub(a.to, a.from), e = sub(b.to, b.from), w = sub(b.from, a.from);
+  const float denominator = d.x * e.y - d.y * e.x;
+  if (denominator == 0.0f) return 0.0f;
+  return (w.x * e.y - w.y * e.x) / denominator * length(d);
+}
+
 }  // namespace
+
+float gap(const DrawnSegment& a, const DrawnSegment& b) {
+  if (crosses(a, b)) return 0.0f;
+  // Apart, the nearest points are an end of one and a point of the other.
+  const auto to_segment = [](ImVec2 p, const DrawnSegment& s) {
+    const ImVec2 along = sub(s.to, s.from);
+    const float span = along.x * along.x + along.y * along.y;
+    const float f = span > 0.0f ? std::clamp(((p.x - s.from.x) * along.x + (p.y - s.from.y) * along.y) / span, 0.0f, 1.0f) : 0.0f;
+    return length(sub(p, add(s.from, mul(along, f))));
+  };
+  return std::min({to_segment(a.from, b), to_segment(a.to, b), to_segment(b.from, a), to_segment(b.to, a)});
+}
+
+bool meet(const DrawnSegment& a, const DrawnSegment& b) { return gap(a, b) < a.half_width + b.half_width; }
 
 float nice_length(float wanted) {
   const float power = std::pow(10.0f, std::floor(std::log10(wanted)));
@@ -164,7 +192,7 @@ std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, con
 }
 
 std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text,
-                                                const DrawnSegment* own, bool* with_leader) {
+                                                const DrawnSegment* own, bool* with_leader, const b2Body* own_body) {
   if (with_leader != nullptr) *with_leader = false;
   const std::vector<ImVec2> places = candidates(wanted, size, beside_rings);
   const auto first_clear = [&](const std::vector<ImVec2>& list, bool off_bodies) -> std::optional<ImVec2> {
@@ -203,35 +231,61 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     std::optional<ImVec2> found = first_clear(by_own, true);
     if (!found) found = first_clear(by_own, false);
     // Nowhere free beside it: the nearest free place from which a leader to the arrow
-    // (leader_line(), which draw_force() draws) crosses no label or mark, nor another arrow if
-    // it can; a leader over another value would join the wrong two.
-    const auto leader_clear = [&](ImVec2 place, bool across_arrows) {
+    // (leader_line(), which draw_force() draws) crosses no label, mark, line or other arrow: a
+    // leader over another value or arrow would join the wrong two.
+    const auto leader_clear = [&](ImVec2 place, bool across_lines) {
       const DrawnSegment leader = leader_line(box_around(place, size), *own);
-      const auto on = [&](const auto& list) {
-        return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(other, leader); });
+      const auto on = [&](const std::vector<ImVec4>& list) {
+        return std::any_of(list.begin(), list.end(), [&](const ImVec4& other) { return overlaps(other, leader); });
       };
+      // The lines drawn that are not arrows (a torque's arc, a spring, another value's leader, a
+      // tool's line): a leader that crosses one is read as joined to it. (Their kept-off width
+      // is for text: a leader may start within a spring's coils where its arrow does.)
+      const auto is_arrow = [&](const DrawnSegment& segment) {
+        return std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& arrow) { return same_ends(arrow, segment); });
+      };
+      const bool on_line = std::any_of(segments_.begin(), segments_.end(), [&](const DrawnSegment& other) {
+        return !is_arrow(other) && crosses(leader, other);
+      });
+      // Another arrow is avoided by its centre line: the leader starts on its own arrow, within
+      // the kept-off width of an arrow that starts where it does (a normal force and a friction
+      // at one contact), and a leader that crosses another arrow joins the value to both.
+      // Where the forces at one contact start together, another arrow may pass within half a
+      // line of the own arrow, and a leader that crosses it there leaves from where they meet.
       const bool crosses_arrow = std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
-        const bool same = same_ends(other, *own);
-        // Whether the two centre lines cross: each one's ends on either side of the other.
-        const auto side = [](ImVec2 a, ImVec2 b, ImVec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
-        const bool cross = side(leader.from, leader.to, other.from) * side(leader.from, leader.to, other.to) < 0.0f &&
-                           side(other.from, other.to, leader.from) * side(other.from, other.to, leader.to) < 0.0f;
-        return !same && cross;
+        return !same_ends(other, *own) && crosses(leader, other) &&
+               (!across_lines || crossing_along(leader, other) > 0.5f * size.y);
       });
       return length(sub(leader.to, leader.from)) <= longest_leader(size) && !on(taken_) && !on(marks_) &&
-             (across_arrows || !crosses_arrow);
+             (across_lines || !on_line) &&
+             !crosses_arrow;
     };
-    if (!found) {
-      const std::vector<ImVec2> further = candidates(wanted, size, 30);
-      for (const bool across_arrows : {false, true}) {
+    // Off every body but the force's own: a value moved away from its arrow lands on whatever
+    // is there, and on another body's face it reads as that body's (issue 31: a block's face in
+    // a stack).
+    const auto off_other_bodies = [&](const ImVec4& box) {
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const bool its_own = own_body != nullptr && body_owners_[k] == own_body;
+        if (!its_own && overlaps(box, bodies_[k])) return false;
+      }
+      return true;
+    };
+    // Across a line that is not an arrow, or across another arrow where they start together,
+    // only where nothing else is near (a wheel's friction inside its torque's arc, a friction
+    // beside a normal force): a value by its arrow reads better than one far off with no leader.
+    const std::vector<ImVec2> further = found ? std::vector<ImVec2>{} : candidates(wanted, size, 30);
+    // On another body last: a value on a block's face with a leader to its own arrow is still
+    // read as its arrow's, where one lines away with no leader is read as nobody's (a stack's
+    // friction between its blocks, hemmed in by the normal forces and weights).
+    for (const bool on_bodies : {false, true}) {
+      for (const bool across_lines : {false, true}) {
         for (const ImVec2& place : further) {
-          if (clear(box_around(place, size), false) && leader_clear(place, across_arrows)) {
+          const ImVec4 box = box_around(place, size);
+          if (!found && clear(box, false) && (on_bodies || off_other_bodies(box)) && leader_clear(place, across_lines)) {
             found = place;
             if (with_leader != nullptr) *with_leader = true;
-            break;
           }
         }
-        if (found) break;
       }
     }
     if (found) {
@@ -303,7 +357,8 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
   draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
   if (text.empty()) {
-    labels.force_label({DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text, arrow.force.kind, std::nullopt});
+    labels.force_label(
+        {DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body});
     return;
   }
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
@@ -314,7 +369,8 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   // force's arrow points into the body it pushes; a spring's runs along the spring).
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   bool with_leader = false;
-  const std::optional<ImVec2> at = labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own, &with_leader);
+  const std::optional<ImVec2> at =
+      labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own, &with_leader, arrow.force.body);
   std::optional<DrawnSegment> leader;
   if (at && with_leader) {
     // No free place within a line of the arrow and nearer it than any other (a friction of a few
@@ -327,7 +383,7 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   }
   if (at) draw_label(draw, font, *at, colour, theme.panel, text.c_str());
   const std::optional<ImVec4> box = at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
-  labels.force_label({own, box, text, arrow.force.kind, leader});
+  labels.force_label({own, box, text, arrow.force.kind, leader, arrow.force.body});
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {

@@ -41,6 +41,10 @@ struct DrawnSegment {
 bool overlaps(const ImVec4& box, const DrawnSegment& segment);
 // How far a box lies from a segment's centre line (0 where they meet), px.
 float gap(const ImVec4& box, const DrawnSegment& segment);
+// How far apart two segments' centre lines are (0 where they cross), px.
+float gap(const DrawnSegment& a, const DrawnSegment& b);
+// Whether two thick segments, as drawn, share any point.
+bool meet(const DrawnSegment& a, const DrawnSegment& b);
 inline bool overlaps(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
 
 // Keeps text labels off each other and off the arrows and marks drawn, and inside the view,
@@ -58,7 +62,11 @@ class LabelPlacer {
   void avoid(const ImVec4& box) { marks_.push_back(box); }
   // A moving body's box on screen. The lesson's own labels may lie on a body (a contact's word
   // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
-  void body(const ImVec4& box) { bodies_.push_back(box); }
+  // `who` is the body, so that a force's value may lie on its own body and on no other.
+  void body(const ImVec4& box, const b2Body* who = nullptr) {
+    bodies_.push_back(box);
+    body_owners_.push_back(who);
+  }
   // Where a label of this size goes: at `wanted` (its centre), or the nearest place around it
   // that covers no label, arrow or mark (nor body, with `off_bodies`, unless the bodies leave no
   // such place near); `wanted` itself when there is none near. `text` is kept with its box for
@@ -81,9 +89,13 @@ class LabelPlacer {
   // tail (where a short arrow among others leaves its tip no room). Where none of those is free
   // (a friction of a few pixels where a normal force starts), the nearest free place joined to
   // the arrow by a leader (leader_line()) no longer than longest_leader() that crosses no label
-  // or mark (nor another arrow, where it can), and `with_leader` says the value needs it drawn.
+  // or mark, and, where such a place is near, no drawn line, no other arrow (but within half a
+  // line of its start, where forces at one contact start together), the value's box off every
+  // body but `own_body`, the one the force acts on (on another block's face it reads as that
+  // block's); `with_leader` says the value needs the leader drawn.
   std::optional<ImVec2> place_beside(ImVec2 wanted, ImVec2 size, const std::string& text = {},
-                                     const DrawnSegment* own = nullptr, bool* with_leader = nullptr);
+                                     const DrawnSegment* own = nullptr, bool* with_leader = nullptr,
+                                     const b2Body* own_body = nullptr);
   // A leader's longest: three lines of its text, so the eye follows it from value to arrow
   // without meeting another value; a value further off stays where the general search puts it.
   static float longest_leader(ImVec2 size) { return 3.0f * size.y; }
@@ -105,6 +117,7 @@ class LabelPlacer {
     // A thin line from a point of the arrow to the value's box, drawn where no free place is
     // beside the arrow (beside()), so that the value is read as this arrow's and no other's.
     std::optional<DrawnSegment> leader;
+    const b2Body* body = nullptr;  // the body it acts on
   };
   void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
   const std::vector<ForceLabel>& force_labels() const { return force_labels_; }
@@ -142,6 +155,7 @@ class LabelPlacer {
   std::vector<DrawnSegment> arrows_;  // the forces' arrows among segments_
   std::vector<ImVec4> marks_;
   std::vector<ImVec4> bodies_;
+  std::vector<const b2Body*> body_owners_;  // each of bodies_' body, where told
   std::vector<ForceLabel> force_labels_;
 };
 

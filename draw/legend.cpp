@@ -47,7 +47,7 @@ void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_righ
 // the strip and the column.
 void chip_mark(ImDrawList* draw, ImVec2 centre, ImU32 colour, bool round, const Theme& theme, float s) {
   if (round) {
-    draw->AddCircleFilled(centre, 6.0f * s, colour, 16);
+    draw->AddCircleFilled(centre, contact_dot_radius * s, colour, 16);
   } else {
     draw->AddRectFilled(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), colour);
     draw->AddRect(ImVec2(centre.x - 7 * s, centre.y - 6 * s), ImVec2(centre.x + 7 * s, centre.y + 6 * s), theme.outline);

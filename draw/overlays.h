@@ -21,6 +21,11 @@ namespace frictionlab::ui {
 // `reference_pixels`.
 float pixels_per_newton(const Scene& scene, float reference_pixels);
 
+// A contact's dot's radius at text scale 1, px: the world's dots, the legend's chips that name
+// their states, and the friction arrows that start at a dot's rim and the labels that keep off
+// it all take this one, so a dot drawn larger never hides an arrow it was measured not to.
+constexpr float contact_dot_radius = 6.0f;
+
 // An arrow as drawn: tail and tip in pixels.
 struct ScreenArrow {
   ForceOnBody force;

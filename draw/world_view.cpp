@@ -250,7 +250,7 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   // A frictionless contact in neither state's colour: the outline's, as the bodies are drawn.
   const bool slipping = mark.state == ContactState::slipping;
   const ImU32 colour = mark.frictionless ? theme.outline : slipping ? theme.slipping : theme.sticking;
-  const float r = 6.0f * fonts.scale;
+  const float r = contact_dot_radius * fonts.scale;
   draw->AddCircleFilled(at, r, colour, 20);
   draw->AddCircle(at, r, theme.background, 20, 1.5f);
   if (!with_label) return;
@@ -324,7 +324,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
                                  std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
   }
-  const float mark_radius = 6.0f * fonts.scale;
+  const float mark_radius = contact_dot_radius * fonts.scale;
   // A friction acts at its contact's point, where the contact's dot is drawn: one shorter than
   // the dot's radius (stacked_blocks' friction between the blocks, a few newtons) lay under the
   // dot and was not seen. It starts at the dot's rim instead, along its own direction, with its
@@ -362,7 +362,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     if (body->GetType() != b2_dynamicBody) continue;
     const b2AABB box = lessons::body_box(body);
     const ImVec2 a = camera.to_screen(box.lowerBound), b = camera.to_screen(box.upperBound);
-    labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)));
+    labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)), body);
   }
   // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
   // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
