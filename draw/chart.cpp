@@ -162,28 +162,31 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
       line_of(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + length), theme.axis, thickness);
     }
   }
+  using TextKind = ChartLayout::AxisText::Kind;
+  const auto axis_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImU32 colour) {
+    draw->AddText(font, text, at, colour, words.c_str());
+    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(font, words), at.y + text)});
+  };
   const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
-  // A steady chart's x label at the right end of the ticks' line, the ticks it would cover left out.
-  const float x_label_left = high_right.x - width_of(font, chart.x_label);
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
     const float x = at_axis_value(layout.x_ticks[i], layout.y_low).x;
     const std::string& label = layout.x_tick_labels[i];
-    if (chart.steady && !chart.x_label.empty() && x + 0.5f * width_of(font, label) + 8.0f * s > x_label_left) continue;
-    draw->AddText(font, text, ImVec2(x - 0.5f * width_of(font, label), low_left.y + x_labels_below), theme.text, label.c_str());
+    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(font, label), low_left.y + x_labels_below), theme.text);
   }
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
     const float y = at_axis_value(layout.x_low, layout.y_ticks[i]).y;
     const std::string& label = layout.y_tick_labels[i];
-    draw->AddText(font, text, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text, label.c_str());
+    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text);
   }
-  const ImVec2 x_label_at = chart.steady ? ImVec2(x_label_left, low_left.y + x_labels_below)
-                                         : ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)),
-                                                  low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
-  draw->AddText(font, text, x_label_at, chart.plain ? theme.faint_text : theme.text, chart.x_label.c_str());
+  const ImVec2 x_label_at = chart.steady && std::isfinite(layout.x_label_at.x)
+                                ? layout.x_label_at
+                                : ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)),
+                                         low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
+  axis_text(TextKind::x_name, chart.x_label, x_label_at, chart.plain ? theme.faint_text : theme.text);
   const ImVec2 y_label_at = chart.steady && std::isfinite(layout.y_label_at.x) ? layout.y_label_at
                             : chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
                                           : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
-  draw->AddText(font, text, y_label_at, theme.faint_text, chart.y_label.c_str());
+  axis_text(TextKind::y_name, chart.y_label, y_label_at, theme.faint_text);
 
   draw_legend(draw, chart, keys, layout, size, theme, fonts);
   return layout;

@@ -11,6 +11,13 @@ namespace frictionlab::ui {
 
 using namespace chart_parts;
 
+namespace {
+
+// The widest x tick label a steady chart keeps room for beyond its data's right end.
+constexpr const char* x_tick_room = "\u22128888";
+
+}  // namespace
+
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
   const float s = fonts.scale;
   ImFont* font = fonts.small;
@@ -38,6 +45,15 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       // has the two lines of text they took (a plot on a page of its own, made tall).
       layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
       layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
+      if (!chart.x_label.empty()) {
+        // The x label beyond the data's right end, on the tick labels' line, where no tick label
+        // is: over the data's end it stood where the last tick's number goes (push's "10" under
+        // "push (N)"). The room is the same whatever the data (the plot holds still as the run
+        // widens its range): half a tick label as wide as "−8888" past the end, then the name.
+        const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
+        layout.high_right.x -= past_end + width_of(font, chart.x_label);
+        layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
+      }
     }
   } else {
     // The legend goes under the chart, in two columns, so it hides none of it.
