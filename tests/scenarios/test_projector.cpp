@@ -394,6 +394,56 @@ TEST(ProjectorPlots, TheXAxisNameStandsWhereNoTickLabelIsAndEveryTickHasItsNumbe
   }
 }
 
+// Issue 31: a lesson with no plots left an empty row, a third of the screen, under its world in
+// projector mode. The world takes the row: its panel reaches the frame's foot, as low as the
+// column's, with the legend in its strip; the same lesson with a plot keeps the row (its world
+// ends above the plot's panel).
+TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const std::string scene = lessons::with_heading(
+      "local floor = ground { material = \"wood\" }\n"
+      "local block = box { \"block\", material = \"wood\", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }\n");
+  struct Seen {
+    std::optional<ImVec4> world;
+    float foot = 0.0f;  // the lowest bottom edge of the column's panels, right of the world
+    std::size_t plots = 0;
+  };
+  const auto seen = [&](const std::string& script) {
+    const lessons::ScriptFile file(script);
+    Classroom window(class_window(file.path(), window_screens[2]));
+    FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    Seen found;
+    found.plots = record.plots.size();
+    std::vector<ImVec4> panels;
+    for (const ImGuiWindow* panel : ImGui::GetCurrentContext()->Windows) {
+      if (!panel->WasActive || (panel->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_ChildWindow)) != 0) {
+        continue;
+      }
+      const ImVec4 rect(panel->Pos.x, panel->Pos.y, panel->Pos.x + panel->Size.x, panel->Pos.y + panel->Size.y);
+      if (std::string(panel->Name) == "###world") found.world = rect;
+      panels.push_back(rect);
+    }
+    for (const ImVec4& rect : panels) {
+      if (found.world && rect.x >= found.world->z) found.foot = std::max(found.foot, rect.w);
+    }
+    return found;
+  };
+  const Seen without = seen(scene);
+  ASSERT_TRUE(without.world) << "no world panel";
+  EXPECT_EQ(without.plots, 0u);
+  // Half a pixel: ImGui rounds positions.
+  EXPECT_GE(without.world->w, without.foot - 0.5f) << "the world's panel ends at " << without.world->w
+                                                    << ", the frame's foot is at " << without.foot;
+  const Seen with = seen(scene + "probe { \"speed\", read = { block, \"speed\" } }\n"
+                                 "plot { \"Speed\", kind = \"time\", y = { \"speed\" } }\n");
+  ASSERT_TRUE(with.world);
+  EXPECT_EQ(with.plots, 1u);
+  EXPECT_LT(with.world->w, with.foot - display.y / 4.0f) << "the lesson with a plot lost its plots' row";
+}
+
 // push's key plot, at its defaults (1 kg, μs 0.4, μk 0.3) in projector mode: y ticks a newton
 // apart, and the levels −μs·N = −3.92 N and −μk·N = −2.94 N labelled on it once the theory is
 // revealed, not before (they are theory, as its curves are).
