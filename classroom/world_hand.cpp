@@ -45,7 +45,7 @@ void WorldHand::handle_mouse(Playback& playback, ImVec2 origin, ImVec2 size, flo
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback.lesson();
   Scene& scene = lesson.scene();
-  const FrameLayout layout = FrameLayout::of(size, scale, origin, projector);
+  const FrameLayout layout = FrameLayout::of(size, scale, origin, projector, !lesson.plots().empty());
   cameras = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
   // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
   // own body's height, so the same screen point is another world point in the next lane.

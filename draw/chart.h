@@ -141,6 +141,7 @@ struct ChartLayout {
   bool legend_on_data = false;
   bool drawable = false;        // room enough for a data area
   ImVec2 y_label_at{NAN, NAN};  // a steady chart's y label, over its legend beside the data
+  ImVec2 x_label_at{NAN, NAN};  // a steady chart's x label, beyond the data's right end
   float legend_wrap = 0.0f;     // a steady chart's keys wrap at this width (0: they do not)
   // Each level's text, where it was written (x0, y0, x1, y1), and its line's y on the screen.
   struct Level {
@@ -161,6 +162,14 @@ struct ChartLayout {
     ImU32 colour;
   };
   std::vector<Line> lines;
+  // The texts draw_chart wrote round the data (the tick labels, the axes' names), each with its
+  // box (x0, y0, x1, y1), for the layout tests. Empty from layout_chart.
+  struct AxisText {
+    enum class Kind { x_tick, y_tick, x_name, y_name } kind;
+    std::string text;
+    ImVec4 at;
+  };
+  std::vector<AxisText> axis_texts;
 
   ImVec2 to_screen(double x, double y) const;  // the chart's own numbers to screen points
 };

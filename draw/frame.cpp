@@ -16,7 +16,7 @@
 
 namespace frictionlab::ui {
 
-FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector) {
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   // The title's panel holds two lines (the title, the question under it) at a screen's text
@@ -47,8 +47,9 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
   // that with large text (projector mode) it does not cover the world it explains.
   layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.7f * layout.world_size.y));
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
+  if (projector && !plots) layout.world_size.y = display.y - layout.world_corner.y - legend_strip;
   const float under_world = layout.world_corner.y + layout.world_size.y;
-  if (projector) {
+  if (projector && plots) {
     // The plots' row right under the world, the legend a column at its right end: the row's
     // height is the key plot's (a third of the screen or more), and the legend, a line an
     // entry, needs no more than it has.
@@ -85,7 +86,7 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector);
+  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, !lesson.plots().empty());
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
@@ -97,7 +98,7 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector);
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, !lesson.plots().empty());
   // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
   // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
@@ -127,7 +128,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector);
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
@@ -255,7 +256,8 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
   const auto& plots = lesson.plots();
   // The window's extra plot (the force gauge) comes last.
   const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
-  if (plot_count == 0) return;
+  // No row for them: a projector's frame gives a lesson with no plots of its own the row.
+  if (plot_count == 0 || layout.plots_size.y <= 0.0f) return;
   const auto title_of = [&](std::size_t i) -> const std::string& {
     return i == plots.size() ? style.extra_plot_title : plots[i].title;
   };
@@ -415,16 +417,16 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
                      (style.predictions_outgrew && style.predictions_outgrew());
   }
   const FrameLayout layout =
-      style.projector
-          ? FrameLayout::of(display, s, style.origin, true).with_legend_column(legend_column_width(lesson.scene(), fonts))
-          : FrameLayout::of(display, s, style.origin);
+      !style.projector        ? FrameLayout::of(display, s, style.origin)
+      : lesson.plots().empty() ? FrameLayout::of(display, s, style.origin, true, false)
+                               : FrameLayout::of(display, s, style.origin, true).with_legend_column(legend_column_width(lesson.scene(), fonts));
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.projector, FrameLayout::title_padding * s);
 
   // The world, drawn into a window of its own so the panels' windows stay on top of it.
   // The legend in a strip under the world, in the world's panel; on a projector in a panel of
-  // its own beside the plots.
-  const bool legend_apart = style.projector;
+  // its own beside the plots (a lesson with no plots keeps it in the strip).
+  const bool legend_apart = style.projector && !lesson.plots().empty();
   const ImVec2 world_panel(layout.world_size.x, layout.world_size.y + (legend_apart ? 0.0f : layout.legend_size.y));
   std::optional<Camera> legend_camera;
   float legend_newtons_to_pixels = 1.0f;

@@ -240,9 +240,11 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
     const std::vector<FrameRecord::Plot> plots = shown_plots();
     ASSERT_EQ(plots.size(), 1u) << "at t = " << t << ": plots side by side";
     EXPECT_EQ(plots.front().number, 0u) << "at t = " << t;
-    // The data's width: most of the row's (the rest is the axis' tick labels and the world's
-    // legend column at the row's right; the plot's keys are in rows above the data).
-    EXPECT_GT(plots.front().layout.high_right.x - plots.front().layout.low_left.x, 0.6f * left) << "at t = " << t;
+    // The data's width: most of the row's (the rest is the y axis' tick labels, the x axis' name
+    // beyond the data's end and the world's legend column at the row's right; the plot's keys
+    // are in rows above the data). Two plots side by side would each have half the row less
+    // those, under 0.3 of it; one keeps more than 0.45.
+    EXPECT_GT(plots.front().layout.high_right.x - plots.front().layout.low_left.x, 0.45f * left) << "at t = " << t;
   }
   window.key_pressed(Key::right, false);
   ASSERT_EQ(shown_plots().front().number, 1u) << "→ turns to the second plot";
@@ -344,6 +346,102 @@ TEST(ProjectorPlots, TheKeyPlotIsAThirdOfTheScreenHighAndHoldsStillThroughTheRun
       }
     }
   }
+}
+
+// Issue 31: the x axis' name stood at the right end of the tick labels' line, over the data's
+// end, where the last tick's number goes (push's "10" under "push (N)": left out, so the axis
+// read 0 to 8). In projector mode at 1920 × 1080, every lesson's every plot page at the run's
+// end: each x tick has its number, and the axis' name overlaps no tick label and no other text
+// the frame drew. Boxes are the font's own text sizes, so the test holds to the pixel.
+TEST(ProjectorPlots, TheXAxisNameStandsWhereNoTickLabelIsAndEveryTickHasItsNumber) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  using TextKind = ChartLayout::AxisText::Kind;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options = class_window(entry.path, window_screens[2]);
+    Classroom window(options);
+    const std::size_t pages = window.playback().lesson().plots().size();
+    window.playback().run_to(window.playback().lesson().duration());
+    for (std::size_t page = 0; page < pages; ++page) {
+      if (page > 0) window.key_pressed(Key::right, false);
+      FrameRecord record;
+      for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+      for (const FrameRecord::Plot& plot : record.plots) {
+        const std::string where = entry.name + ", plot " + std::to_string(plot.number + 1);
+        const auto& texts = plot.layout.axis_texts;
+        const std::size_t x_numbers = static_cast<std::size_t>(
+            std::count_if(texts.begin(), texts.end(), [](const ChartLayout::AxisText& t) { return t.kind == TextKind::x_tick; }));
+        EXPECT_EQ(x_numbers, plot.layout.x_ticks.size()) << where << ": x ticks without their number";
+        for (const ChartLayout::AxisText& name : texts) {
+          if (name.kind != TextKind::x_name || name.text.empty()) continue;
+          EXPECT_LE(name.at.z, display.x) << where << ": \"" << name.text << "\" runs off the screen";
+          for (const ChartLayout::AxisText& other : texts) {
+            if (other.kind == TextKind::x_tick || other.kind == TextKind::y_tick) {
+              EXPECT_FALSE(overlaps(name.at, other.at))
+                  << where << ": \"" << name.text << "\" at " << rect_words(name.at) << " covers the tick label \"" << other.text
+                  << "\" at " << rect_words(other.at);
+            }
+          }
+          for (const ShownText& other : record.texts) {
+            EXPECT_FALSE(overlaps(name.at, other.needed))
+                << where << ": \"" << name.text << "\" at " << rect_words(name.at) << " covers \"" << other.text << "\" at "
+                << rect_words(other.needed);
+          }
+        }
+      }
+    }
+  }
+}
+
+// Issue 31: a lesson with no plots left an empty row, a third of the screen, under its world in
+// projector mode. The world takes the row: its panel reaches the frame's foot, as low as the
+// column's, with the legend in its strip; the same lesson with a plot keeps the row (its world
+// ends above the plot's panel).
+TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  HeadlessContext gl;
+  ImGuiHost host(nullptr);
+  const std::string scene = lessons::with_heading(
+      "local floor = ground { material = \"wood\" }\n"
+      "local block = box { \"block\", material = \"wood\", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }\n");
+  struct Seen {
+    std::optional<ImVec4> world;
+    float foot = 0.0f;  // the lowest bottom edge of the column's panels, right of the world
+    std::size_t plots = 0;
+  };
+  const auto seen = [&](const std::string& script) {
+    const lessons::ScriptFile file(script);
+    Classroom window(class_window(file.path(), window_screens[2]));
+    FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    Seen found;
+    found.plots = record.plots.size();
+    std::vector<ImVec4> panels;
+    for (const ImGuiWindow* panel : ImGui::GetCurrentContext()->Windows) {
+      if (!panel->WasActive || (panel->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_ChildWindow)) != 0) {
+        continue;
+      }
+      const ImVec4 rect(panel->Pos.x, panel->Pos.y, panel->Pos.x + panel->Size.x, panel->Pos.y + panel->Size.y);
+      if (std::string(panel->Name) == "###world") found.world = rect;
+      panels.push_back(rect);
+    }
+    for (const ImVec4& rect : panels) {
+      if (found.world && rect.x >= found.world->z) found.foot = std::max(found.foot, rect.w);
+    }
+    return found;
+  };
+  const Seen without = seen(scene);
+  ASSERT_TRUE(without.world) << "no world panel";
+  EXPECT_EQ(without.plots, 0u);
+  // Half a pixel: ImGui rounds positions.
+  EXPECT_GE(without.world->w, without.foot - 0.5f) << "the world's panel ends at " << without.world->w
+                                                    << ", the frame's foot is at " << without.foot;
+  const Seen with = seen(scene + "probe { \"speed\", read = { block, \"speed\" } }\n"
+                                 "plot { \"Speed\", kind = \"time\", y = { \"speed\" } }\n");
+  ASSERT_TRUE(with.world);
+  EXPECT_EQ(with.plots, 1u);
+  EXPECT_LT(with.world->w, with.foot - display.y / 4.0f) << "the lesson with a plot lost its plots' row";
 }
 
 // push's key plot, at its defaults (1 kg, μs 0.4, μk 0.3) in projector mode: y ticks a newton

@@ -1,0 +1,157 @@
+// Where a chart's parts land, worked out before anything is drawn (and by tests): the data
+// area, the points as drawn, the theory curves, the ticks, the legend's place (chart_legend.cpp)
+// and the levels' texts.
+#include <algorithm>
+#include <cmath>
+
+#include "draw/chart.h"
+#include "draw/chart_parts.h"
+
+namespace frictionlab::ui {
+
+using namespace chart_parts;
+
+namespace {
+
+// The widest x tick label a steady chart keeps room for beyond its data's right end.
+constexpr const char* x_tick_room = "\u22128888";
+
+}  // namespace
+
+ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+  const float s = fonts.scale;
+  ImFont* font = fonts.small;
+  const float text = font->FontSize;
+  ChartLayout layout;
+  const ChartAxes axes = axes_of(chart);
+  layout.log_x = axes.x.log, layout.log_y = axes.y.log;
+  layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
+  for (const Tick& tick : ticks_every(axes.y, chart.y_tick_count)) {
+    layout.y_ticks.push_back(tick.value);
+    layout.y_tick_labels.push_back(tick.label);
+  }
+  float label_width = 0.0f;
+  for (const std::string& label : layout.y_tick_labels) label_width = std::max(label_width, width_of(font, label));
+  const std::vector<Key> keys = keys_of(chart);
+  if (chart.legend == Chart::Legend::only) return layout;
+
+  const float line = text + 3.0f * s;
+  if (chart.plain) {
+    if (chart.steady) label_width = std::max(label_width, width_of(font, chart.tick_room));
+    layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
+    layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
+    if (chart.steady) {
+      // The y label heads the legend's column and the x label ends the x ticks' line: the data
+      // has the two lines of text they took (a plot on a page of its own, made tall).
+      layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
+      layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
+      if (!chart.x_label.empty()) {
+        // The x label beyond the data's right end, on the tick labels' line, where no tick label
+        // is: over the data's end it stood where the last tick's number goes (push's "10" under
+        // "push (N)"). The room is the same whatever the data (the plot holds still as the run
+        // widens its range): half a tick label as wide as "−8888" past the end, then the name.
+        const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
+        layout.high_right.x -= past_end + width_of(font, chart.x_label);
+        layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
+      }
+    }
+  } else {
+    // The legend goes under the chart, in two columns, so it hides none of it.
+    const std::size_t rows = chart.legend == Chart::Legend::under ? (keys.size() + 1) / 2 : 0;
+    const float legend_height =
+        line * static_cast<float>(rows + chart.notes.size()) + (rows == 0 ? 0.0f : 6.0f * s);
+    const float top = corner.y + fonts.body->FontSize + text + 16.0f * s;
+    layout.low_left = ImVec2(corner.x + label_width + 16.0f * s, corner.y + size.y - 2.0f * text - 14.0f * s - legend_height);
+    // Room on the right for the labels beside the last points (a step rate, say).
+    const bool labelled = std::any_of(chart.series.begin(), chart.series.end(), [](const ChartSeries& series) { return !series.labels.empty(); });
+    layout.high_right = ImVec2(corner.x + size.x - (labelled ? 60.0f : 10.0f) * s, top);
+  }
+  const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
+  layout.drawable = width >= 20.0f && height >= 20.0f;
+  if (!layout.drawable) return layout;
+  // As many x ticks as the data area's width holds, unless the chart says how many.
+  const auto set_x_ticks = [&](float data_width) {
+    const int count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(data_width / (70.0f * s)));
+    layout.x_ticks.clear(), layout.x_tick_labels.clear();
+    for (const Tick& tick : ticks_every(axes.x, count)) {
+      layout.x_ticks.push_back(tick.value);
+      layout.x_tick_labels.push_back(tick.label);
+    }
+  };
+  set_x_ticks(width);
+
+  // The points where they land; at most about two a pixel, the rest would be drawn over each other.
+  const auto place = [&] {
+    const float w = layout.high_right.x - layout.low_left.x;
+    layout.points.clear();
+    layout.series_points.assign(chart.series.size(), {});
+    layout.series_indices.assign(chart.series.size(), {});
+    for (std::size_t k = 0; k < chart.series.size(); ++k) {
+      const auto& points = chart.series[k].points;
+      const std::size_t stride = std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(std::max(1.0f, 2.0f * w)));
+      const auto add = [&](std::size_t i) {
+        const auto [x, y] = points[i];
+        if (!axes.x.shows(x) || !axes.y.shows(y)) return;
+        layout.series_points[k].push_back(layout.to_screen(x, y));
+        layout.series_indices[k].push_back(i);
+        layout.points.push_back(layout.series_points[k].back());
+      };
+      for (std::size_t i = 0; i < points.size(); i += stride) add(i);
+      if (!points.empty() && (points.size() - 1) % stride != 0) add(points.size() - 1);  // the latest point always
+    }
+    layout.theory.clear();
+    for (const ChartCurve& curve : chart.theory) {
+      layout.theory.emplace_back();
+      for (const auto& piece : curve.pieces) {
+        layout.theory.back().emplace_back();
+        for (const auto& [x, y] : piece) layout.theory.back().back().push_back(layout.to_screen(x, y));
+      }
+    }
+  };
+  place();
+
+  if (!place_legend(chart, keys, corner, size, fonts, layout, place, set_x_ticks)) return layout;
+  fit_y_ticks(chart, axes.y, text, s, layout);
+  // Each level's text at the data's right end, above its line, or under it when the line is
+  // near the top; none for a level off the axis.
+  for (std::size_t i = 0; i < chart.levels.size(); ++i) {
+    const ChartLevel& level = chart.levels[i];
+    if (!axes.y.shows(level.y)) continue;
+    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
+    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
+    const float w = width_of(font, level.text);
+    // At either end of the line, above it or under it: where it covers the fewest points and
+    // the fewest texts placed before it (the first of equals: right, above), in the data area.
+    ImVec4 best;
+    std::size_t fewest = static_cast<std::size_t>(-1);
+    for (const float left : {layout.high_right.x - w - 4.0f * s, layout.low_left.x + 4.0f * s}) {
+      for (const float top : {y - text - 2.0f * s, y + 2.0f * s}) {
+        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        const ImVec4 box(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f);
+        std::size_t met = 0;
+        for (const ImVec2& p : layout.points) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
+        for (const auto& curve : layout.theory) {
+          for (const auto& piece : curve) {
+            for (const ImVec2& p : piece) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
+          }
+        }
+        for (const ChartLayout::Level& other : layout.levels) {
+          met += 1000 * (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y);
+        }
+        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
+      }
+    }
+    if (fewest == static_cast<std::size_t>(-1)) continue;  // a data area shorter than a line
+    layout.levels.push_back({i, level.text, best, y});
+  }
+  layout.active = chart.active_theory;
+  if (layout.active == Chart::nearest) {
+    layout.active = -1;
+    if (!layout.series_points.empty() && !layout.series_points.front().empty()) {
+      layout.active = nearest_curve(layout.theory, layout.series_points.front().back());
+    }
+  }
+  return layout;
+}
+
+}  // namespace frictionlab::ui
