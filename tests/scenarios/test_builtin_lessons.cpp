@@ -360,6 +360,14 @@ INSTANTIATE_TEST_SUITE_P(
                       // Lifting 0.27 s before the top block would slip: the record shows it lift first.
                       Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "1.6"}},
                            "front lifts: no closed form"},
+                      // Lifting 0.18 s before a flat pair's top block would slip (μs 2, both
+                      // contacts frictionless once sliding): the world's front rises from 5.26 s as
+                      // theory says, and on the tilting face the top block slips at 5.50 s, when the
+                      // tilt is 0.47°. Seen lifting once the front edge is out of the floor's slop.
+                      Case{"stacked_blocks", {{"top_mass", "5"}, {"bottom_mass", "5.696"}, {"pull_rate", "38.62"},
+                                              {"top_on_bottom.mu_s", "2"}, {"top_on_bottom.mu_k", "0"},
+                                              {"bottom_on_floor.mu_s", "1.513"}, {"bottom_on_floor.mu_k", "0"}},
+                           "front lifts: no closed form"},
                       // A light bottom block pulled fast from under a slipping top one would rear up
                       // by itself: the run ends before its front lifts.
                       Case{"stacked_blocks", {{"top_mass", "0.2"}, {"bottom_mass", "1"}, {"pull_rate", "50"}, {"top_on_bottom.mu_s", "2"},
