@@ -6,6 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# The predict-first, tools and gauge shots click and type with xdotool.
+command -v xdotool >/dev/null || { echo "$0: needs xdotool (apt-get install xdotool)" >&2; exit 2; }
 FRICTIONLAB_TESTS=1 FRICTIONLAB_TARGET=frictionlab scripts/setup.sh build -DBUILD_TESTING=OFF
 mkdir -p docs/screenshots
 scratch=$(mktemp -d)
