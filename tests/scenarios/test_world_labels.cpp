@@ -151,8 +151,9 @@ float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
   return nearest;
 }
 
-// What a reader needs of a value's leader (LabelPlacer::place_beside's fallback), measured on
-// the picture, not taken from leader_line(): no longer than longest_leader() (three lines of the
+// What a reader needs of a value's leader (LabelPlacer::place_beside's fallback), measured from
+// the leader's recorded ends against every arrow and box the frame drew, rather than trusted to
+// the rules leader_line() keeps: no longer than longest_leader() (three lines of the
 // value's text, its box's height without the placer's padding), starting on the value's own
 // arrow and ending on its box (a pixel each way: the ends are floats on the padded box and the
 // arrow's line), and crossing no other value's box as drawn and no other arrow's centre line
