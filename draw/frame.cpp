@@ -63,7 +63,9 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
     layout.legend_corner = ImVec2(0.0f, under_world);
     layout.legend_size = ImVec2(left_width, legend_strip);
     layout.plots_corner = ImVec2(0.0f, layout.legend_corner.y + legend_strip + gap);
-    layout.plots_size = ImVec2(left_width, display.y - layout.plots_corner.y);
+    // None high where the world took the row (a projector's lesson with no plots) or the window
+    // is too short for one: draw_plots then draws none.
+    layout.plots_size = ImVec2(left_width, std::max(0.0f, display.y - layout.plots_corner.y));
   }
   layout.column_corner = ImVec2(left_width + gap, title_height + gap);
   layout.column_size = ImVec2(column_width, display.y - title_height - gap);
@@ -257,7 +259,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
   // The window's extra plot (the force gauge) comes last.
   const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
   // No row for them: a projector's frame gives a lesson with no plots of its own the row.
-  if (plot_count == 0 || layout.plots_size.y <= 0.0f) return;
+  if (plot_count == 0 || layout.plots_size.y == 0.0f) return;
   const auto title_of = [&](std::size_t i) -> const std::string& {
     return i == plots.size() ? style.extra_plot_title : plots[i].title;
   };
@@ -416,17 +418,16 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     theory_scrolls = !style.theory_hidden || !column_plan.theory_whole ||
                      (style.predictions_outgrew && style.predictions_outgrew());
   }
-  const FrameLayout layout =
-      !style.projector        ? FrameLayout::of(display, s, style.origin)
-      : lesson.plots().empty() ? FrameLayout::of(display, s, style.origin, true, false)
-                               : FrameLayout::of(display, s, style.origin, true).with_legend_column(legend_column_width(lesson.scene(), fonts));
+  // On a projector the legend is a column beside the plots' row, as wide as its names need; a
+  // lesson with no plots has no such row, and keeps the legend in its strip under the world.
+  const bool legend_apart = style.projector && !lesson.plots().empty();
+  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
+  if (legend_apart) layout = layout.with_legend_column(legend_column_width(lesson.scene(), fonts));
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.projector, FrameLayout::title_padding * s);
 
   // The world, drawn into a window of its own so the panels' windows stay on top of it.
-  // The legend in a strip under the world, in the world's panel; on a projector in a panel of
-  // its own beside the plots (a lesson with no plots keeps it in the strip).
-  const bool legend_apart = style.projector && !lesson.plots().empty();
+  // The legend in a strip under the world, in the world's panel, or apart (above).
   const ImVec2 world_panel(layout.world_size.x, layout.world_size.y + (legend_apart ? 0.0f : layout.legend_size.y));
   std::optional<Camera> legend_camera;
   float legend_newtons_to_pixels = 1.0f;
