@@ -42,24 +42,44 @@ for setup in '# FrictionLab setup\nlesson spring_pull\nset mass = 1.5\nlock mu_s
 done
 
 mkdir -p build-fuzz/findings build-fuzz/logs
-failed=0
-for target in "${targets[@]}"; do
-  corpus=build-fuzz/corpus/$target
+# One target a core at once: each libFuzzer run is one process on one core, so on two cores
+# the four minutes of fuzzing take two, with every target fuzzed as long as before.
+fuzz_one() {
+  local target=$1 corpus=build-fuzz/corpus/$1 log=build-fuzz/logs/$1.log dictionary=()
   mkdir -p "$corpus"
-  dictionary=()
   [ "$target" = fuzz_lesson_loader ] && dictionary=(-dict=fuzz/lesson.dict)
-  log=build-fuzz/logs/$target.log
-  echo "== $target for $seconds s"
   # -timeout: an input that takes longer than this is a hang; the fuzzing budgets end any script call in 0.5 s.
   # FRICTIONLAB_FUZZ_SEED fixes libFuzzer's random seed (the test command's runs repeat); unset, each run differs.
-  if ! ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" \
-       -seed="${FRICTIONLAB_FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=20 \
-       -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
-       "$corpus" "$seeds/$target" >"$log" 2>&1; then
+  ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" \
+    -seed="${FRICTIONLAB_FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=20 \
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
+    "$corpus" "$seeds/$target" >"$log" 2>&1
+}
+report_one() {
+  local target=$1 status=$2 log=build-fuzz/logs/$1.log
+  echo "== $target for $seconds s"
+  if [ "$status" -ne 0 ]; then
     failed=1
     echo "   FOUND a crash, leak or hang: see $log and build-fuzz/findings/"
   fi
   grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "$log" | sed 's/^/   /'
   grep -E '#[0-9]+.*(DONE|pulse|NEW|REDUCE).*cov:' "$log" | tail -1 | sed 's/^/   last: /'
+}
+at_once=$(nproc)
+failed=0
+pending=("${targets[@]}")
+while [ ${#pending[@]} -gt 0 ]; do
+  batch=("${pending[@]:0:at_once}")
+  pending=("${pending[@]:at_once}")
+  pids=()
+  for target in "${batch[@]}"; do
+    fuzz_one "$target" &
+    pids+=($!)
+  done
+  for i in "${!batch[@]}"; do
+    status=0
+    wait "${pids[$i]}" || status=$?
+    report_one "${batch[$i]}" "$status"
+  done
 done
 exit $failed
