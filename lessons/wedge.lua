@@ -299,8 +299,7 @@ end
 -- model, the drift comes within 2 % of the world's (the loss at 4.09 s against 4.01 s there;
 -- two to three steps early on a sliding block, where the Δθ·Δs term's sign was checked
 -- against the world: the other sign is 0.7 s off), so the model calls the contact lost with a
--- tenth of the overlap left.
-local linear_slop = 0.005
+-- tenth of the overlap left. (linear_slop: Box2D's b2_linearSlop, 5 mm, from the runtime.)
 local lost_for, lost_at
 local function contact_lost_by(t)
   local last = sample(t)  -- first: it may solve further
