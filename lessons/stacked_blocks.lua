@@ -238,9 +238,8 @@ local function first_slip(probe)
   end
 end
 -- The bottom block's tilt while both its edges touch the floor is at most one edge sunk by
--- Box2D's whole linear slop (5 mm, b2_linearSlop) and the other not at all: atan(5 mm / 0.8 m),
--- 0.36°. Past that its front edge has left the floor.
-local linear_slop = 0.005
+-- Box2D's whole linear slop (5 mm, b2_linearSlop: the runtime's linear_slop) and the other not
+-- at all: atan(5 mm / 0.8 m), 0.36°. Past that its front edge has left the floor.
 local flat_tilt_most = math.deg(math.atan(linear_slop / bottom_width))
 -- The measured side of a row the theory gives up on because the front lifts, read from the
 -- record at the run's end: the front lifted (the bottom block tilted past flat_tilt_most), and,

@@ -6,11 +6,13 @@
 -- m·Δv = J and I·Δω = r × J, with the corner either stopped within the impact (it grips, which
 -- needs |J_t| <= mu_k·J_n) or sliding through it (J_t = mu_k·J_n).
 
+-- The theory's step is the world's own: under --substeps the world finds the floor and applies
+-- its drag every sub-step, not every frame (the same at 1 sub-step).
 local function throw()
   return theory.thrown_box { width = 0.4, height = 0.3, mass = param.mass, throw_speed = param.throw_speed,
                              spin = param.spin, centre_height = 1, mu_k = param.mu_k, mu_s = param.mu_s,
                              c = param.c, b = param.b,
-                             step = step_length() }
+                             step = substep_length() }
 end
 
 lesson {

@@ -299,8 +299,7 @@ end
 -- model, the drift comes within 2 % of the world's (the loss at 4.09 s against 4.01 s there;
 -- two to three steps early on a sliding block, where the Δθ·Δs term's sign was checked
 -- against the world: the other sign is 0.7 s off), so the model calls the contact lost with a
--- tenth of the overlap left.
-local linear_slop = 0.005
+-- tenth of the overlap left. (linear_slop: Box2D's b2_linearSlop, 5 mm, from the runtime.)
 local lost_for, lost_at
 local function contact_lost_by(t)
   local last = sample(t)  -- first: it may solve further
@@ -436,50 +435,110 @@ end
 -- A stuck stretch whose demand only grazes the static limit: it comes within what the world's
 -- demand may sit off the model's of μ·N and turns back (the model holds on, the world may break
 -- away), or passes the limit by less than that before it would turn back (the model breaks
--- away, the world may hold on). Either way the run after it follows the grazing's outcome, and
--- no model can say which: μs 1.31, μk 0.7755, θ0 7.71°, ω 3.428, a_x −16.57 at 4.777 rad/s,
--- 8.022 kg: the model breaks away at 3.908 s with its demand under 0.04 % past μs·N (at μs
--- 1.3105 it holds on, and ends 0.25 m away); the world, stopped 3.1 mm further along, peaks at
--- 1.30971·N at 240 Hz (holds on: 0.985 m against 0.731 at the end), at 1.31003·N at 960 Hz
--- (breaks away). What the world's demand may sit off the model's, in N: stuck, a block δs
--- further along the turning surface (δs: where the world's block is, less the model's) is flung
--- along it by m·θ'²·δs more and pressed by m·θ''·δs more, which moves the limit by μ times that;
--- the turn's share of N arrives a step late (late_share), moving the limit by μ times it; and
--- the listener takes friction within 1e-5 of μ·N for friction at the limit (its breakaway
--- tolerance). Read from the world's record, so only as far as the run has gone.
-local grazing_for, grazing_scanned, grazing_at
+-- away, the world may hold on). Where the world then takes the other way, the run after it
+-- follows that outcome, and no model can say which it would be: μs 1.31, μk 0.7755, θ0 7.71°,
+-- ω 3.428, a_x −16.57 at 4.777 rad/s, 8.022 kg: the model breaks away at 3.908 s with its
+-- demand under 0.04 % past μs·N (at μs 1.3105 it holds on, and ends 0.25 m away); the world,
+-- stopped 3.1 mm further along, peaks at 1.30971·N at 240 Hz (holds on: 0.985 m against 0.731
+-- at the end), at 1.31003·N at 960 Hz (breaks away with the model, and the rows are checked).
+-- So a grazing is excused only where the world's record shows the other outcome near it; where
+-- the world goes the model's way the rows after it stay checked (at μs 1.3105 both hold on at
+-- 240 Hz, and the slide ends 0.0037 m off the model's). The record is read once the run has
+-- passed the grazing's reach: a grazing the run ends inside is left checked.
+-- What the world's demand may sit off the model's, in N, is bounded from what the rows
+-- predict, not from what the world did: stuck, a block δs further along the turning surface is
+-- flung along it by m·θ'²·δs more and pressed by m·θ''·δs more, which moves the limit by μ
+-- times that, and δs is at most the slide row's own bound there (start_drift's gap, 0.2 % of
+-- the path slid and 3 mm: a world further off fails that row anyway); the turn's share of N
+-- arrives a step late (late_share), moving the limit by μ times it; and the listener takes
+-- friction within 1e-5 of μ·N for friction at the limit (its breakaway tolerance). Past the
+-- limit the world may also hold a stuck contact up to the hold band past μ·N for a step
+-- while the listener tells the solver's leftover from a real excess, so a model that breaks
+-- away by less than that may see the world hold on; the band only makes the world hold, never
+-- slip, so a model that holds on is given none of it.
+local grazing_for, grazing_scanned, grazing_at, grazing_path
+-- The world's record from `from` to `to` (s): whether the block broke away there (a step
+-- recorded slipping after one recorded not), and whether it was recorded slipping at all.
+local function world_between(from, to)
+  local times, slipping = history("time"), history("slipping")
+  local low, high = 1, #times
+  while low < high do
+    local middle = (low + high) // 2
+    if times[middle] < from then low = middle + 1 else high = middle end
+  end
+  local broke, slipped = false, false
+  for i = low, #times do
+    if times[i] > to then break end
+    if slipping[i] == 1 then
+      slipped = true
+      if i > 1 and slipping[i - 1] == 0 then broke = true end
+    end
+  end
+  return broke, slipped
+end
 function grazes_by(t)
   local last = sample(t)  -- first: it may solve further
-  if grazing_for ~= horizon then grazing_for, grazing_scanned, grazing_at = horizon, 2, nil end
+  if grazing_for ~= horizon then grazing_for, grazing_scanned, grazing_at, grazing_path = horizon, 2, nil, 0 end
   local limit = math.max(param.mu_s, param.mu_k)
   local function stuck(k) return turning.contact[k] == "sticking" end
   local function margin(k) return limit * turning.normal[k] - math.abs(turning.friction[k]) end
-  local function allowed(k)
+  local function allowed(k, path)
     local time_k = (k - 1) * spacing
     local turn_rate = theta0 * omega * math.cos(omega * time_k)
     local spin_up = theta0 * omega * omega * math.abs(sin(omega * time_k))
-    local off = math.abs(value_at("slide", time_k) - turning.slide[k])
+    local off = start_drift(time_k) + 0.002 * path + 3e-3
     return off * mass * (turn_rate * turn_rate + limit * spin_up) + limit * late_share(k)
            + 1e-5 * limit * turning.normal[k]
   end
-  -- Up to the last sample the world has recorded and the one after it the model has.
-  local until_k = math.min(last, floor(time() / spacing + 0.5) + 1, #turning.slide - 1)
-  while not grazing_at and grazing_scanned < until_k do
+  -- The record says "slipping" up to three and a half steps after the demand passed the limit
+  -- (the first slip row says why): how far past the grazing the world's record is read.
+  local record_lag = 3.5 * h
+  while not grazing_at and grazing_scanned < math.min(last, #turning.slide - 1) do
     local k = grazing_scanned + 1
-    grazing_scanned = k
+    local path = grazing_path + math.abs(turning.slide[k] - turning.slide[k - 1])
+    -- Where the world's record must be read to tell which way it went: none, or from, to (s).
+    local from, to
     if stuck(k - 2) and stuck(k - 1) and stuck(k) then
       local falling = margin(k) - margin(k - 1)                    -- per sample
       local bending = margin(k) - 2 * margin(k - 1) + margin(k - 2)  -- per sample²
       if stuck(k + 1) then
-        -- The margin's least within the stretch: within reach, and it turns back.
-        if falling <= 0 and margin(k + 1) > margin(k) and margin(k) < allowed(k) then grazing_at = k end
+        -- The margin's least within the stretch: within reach, and it turns back. The world
+        -- may slip wherever the model's margin is within reach: the samples around k where it
+        -- is, and the crossings between them and the next.
+        local reach = falling <= 0 and margin(k + 1) > margin(k) and allowed(k, path)
+        if reach and margin(k) < reach then
+          local first, final = k, k
+          while first > 1 and stuck(first - 1) and margin(first - 1) < reach do first = first - 1 end
+          while final < #turning.slide and stuck(final + 1) and margin(final + 1) < reach do final = final + 1 end
+          from, to = (first - 2) * spacing, final * spacing + record_lag
+        end
       elseif turning.contact[k + 1] == "slipping" and bending > 0 then
         -- It broke away before sample k + 1: the margin carried on as it went (a parabola
-        -- through the last three stuck samples) would bottom out at `least` and turn back.
+        -- through the last three stuck samples, m_k + rate·x + bending·x²/2, x in samples
+        -- after k) would bottom out within reach, and the band, and turn back. The world's
+        -- block may break away wherever the model's margin is within reach of the limit: from
+        -- the stuck samples before k where it is, up to the parabola's later crossing of it.
         local rate = falling + 0.5 * bending
-        if rate < 0 and margin(k) - rate * rate / (2 * bending) > -allowed(k) then grazing_at = k end
+        if rate < 0 then
+          local reach = allowed(k, path)
+          local least = margin(k) - rate * rate / (2 * bending)
+          if least > -(reach + hold_band * limit * turning.normal[k]) then
+            local later = (-rate + math.sqrt(math.max(rate * rate - 2 * bending * (margin(k) - reach), 0))) / bending
+            local first = k
+            while first > 1 and stuck(first - 1) and margin(first - 1) < reach do first = first - 1 end
+            from, to = (first - 2) * spacing, (k - 1 + later) * spacing + record_lag
+          end
+        end
       end
     end
+    if from then
+      if time() < to then break end  -- the world has not got there yet: asked again later
+      local broke, slipped = world_between(from, to)
+      -- The other outcome: the model held on and the world broke away, or the model broke
+      -- away and the world was never seen slipping there.
+      if (stuck(k + 1) and broke) or (not stuck(k + 1) and not slipped) then grazing_at = k end
+    end
+    grazing_scanned, grazing_path = k, path
   end
   return grazing_at ~= nil and grazing_at <= last
 end

@@ -990,6 +990,15 @@ void register_lesson_api(lua_State* state) {
   // test, must allow for it, and reads it here rather than keep a copy that could drift.
   lua_pushnumber(state, stick_slip_hold_band);
   lua_setglobal(state, "stick_slip_hold_band");
+  // Box2D's linear slop (b2_linearSlop): how far two touching shapes may overlap before its
+  // position solver pushes them apart. A theory of the stepped world reads it here (wedge's
+  // contact lost to the turning surface's drift, stacked_blocks' tilt a contact's sink allows).
+  // Box2D keeps it as a float; the script reads the decimal it is written as, which the docs
+  // print, and which is Box2D's to the float's precision.
+  constexpr double linear_slop = 0.005;
+  static_assert(static_cast<float>(linear_slop) == b2_linearSlop, "linear_slop is Box2D's b2_linearSlop");
+  lua_pushnumber(state, linear_slop);
+  lua_setglobal(state, "linear_slop");
   // param: a read-only view of the parameters' current values.
   lua_newtable(state);
   lua_newtable(state);

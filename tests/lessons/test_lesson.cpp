@@ -944,6 +944,17 @@ probe { "band", function() return stick_slip_hold_band end }
   EXPECT_EQ(probe_now(lesson, "band"), stick_slip_hold_band);
 }
 
+// Box2D's linear slop likewise (wedge's lost contact, stacked_blocks' tilt): the script reads
+// the overlap Box2D's position solver allows, its b2_linearSlop, to the float's precision.
+TEST(LessonRuntime, TheLinearSlopIsBox2DsOwn) {
+  ScriptFile script(with_heading(R"(
+probe { "slop", function() return linear_slop end }
+)"));
+  Lesson lesson(script.path());
+  lesson.step();
+  EXPECT_EQ(static_cast<float>(probe_now(lesson, "slop")), b2_linearSlop);
+}
+
 // With no friction at all (mu_s = mu_k = 0) nothing can carry a block along a plank that is
 // shaken under it: the plank's velocity reverses between steps, and the contact slides on the
 // other way. Taken for a stop, that reversal had the listener zero the sliding, and the block

@@ -87,11 +87,11 @@ double script_global(const std::string& name) {
 }
 
 // The docs print the hold band (set from physics/friction_laws.h, not in a script) as 0.02, and
-// g and resting_gap likewise: each printed number must be the one a script reads, so that a
+// g, resting_gap and Box2D's linear slop likewise: each printed number must be the one a script reads, so that a
 // change in the C++ shows up here until the docs say it.
 TEST(TheoryGuide, TheConstantsPrintedAreTheValuesAScriptReads) {
   const std::map<std::string, std::string> printed = printed_constants();
-  for (const char* name : {"g", "resting_gap", "stick_slip_hold_band"}) {
+  for (const char* name : {"g", "resting_gap", "stick_slip_hold_band", "linear_slop"}) {
     const auto row = printed.find(name);
     if (row == printed.end()) {
       ADD_FAILURE() << "lessons/reference/theory.md, section 12: no row for `" << name << "`";

@@ -263,7 +263,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // A stuck stretch whose demand passes mu_s·N by under 0.04 % before it
                       // would turn back: the model breaks away at 3.908 s, the world's block
                       // (3 mm further along) peaks at 1.30971·N and holds on, and the slide ends
-                      // 0.25 m apart. No model can say which: the rows after it say so.
+                      // 0.25 m apart. No model can say which: where the world's record shows it
+                      // took the other way, as here, the rows after it say so (where it goes the
+                      // model's way they stay checked: cli_check_wedge_a_graze_the_world_*).
                       Case{"wedge", {{"a_x", "-16.57"}, {"a_x_omega", "4.777"}, {"mass", "8.022"}, {"mu_k", "0.7755"},
                                      {"mu_s", "1.31"}, {"omega", "3.428"}, {"theta0", "7.71"}},
                            "grazes the static limit: no model"},
