@@ -25,6 +25,8 @@ function(frictionlab_web_test file library)
   add_executable(web_${name} "${tests_folder}/${file}.cpp")
   target_link_libraries(web_${name} PRIVATE ${library} frictionlab_flags web_gtest)
   target_link_options(web_${name} PRIVATE ${web_test_link_options})
+  # The test file itself at -O1 too, as in the native release build (tests/CMakeLists.txt says why).
+  target_compile_options(web_${name} PRIVATE -O1)
   set_target_properties(web_${name} PROPERTIES SUFFIX ".js")
   add_test(NAME web_${name} COMMAND node $<TARGET_FILE:web_${name}>)
   set_tests_properties(web_${name} PROPERTIES TIMEOUT 900)
