@@ -58,11 +58,11 @@ std::string Exports::export_history(const Playback& playback, const HiddenValues
   // in place before the CSV, so no CSV is ever left without its settings.
   const std::string settings = lessons::run_settings(lesson, [&](const std::string& name) { return hidden.hides(name); });
   {
-    OutputFile settings_file(lessons::settings_path_for(path), lessons::frictionlab_settings_file);
+    files::OutputFile settings_file(lessons::settings_path_for(path), lessons::frictionlab_settings_file);
     settings_file.write(settings);
     settings_file.commit();
   }
-  write_whole_file(path, csv.data(), csv.size());
+  files::write_whole_file(path, csv.data(), csv.size());
   return path;
 }
 

@@ -417,7 +417,7 @@ void write_setup(const std::string& path, const PreparedSetup& setup) {
   }
   const std::string text = setup_text(setup);
   try {
-    OutputFile file(path, is_setup_file);
+    files::OutputFile file(path, is_setup_file);
     file.write(text);
     file.commit();
   } catch (const std::runtime_error& error) {
