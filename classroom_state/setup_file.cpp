@@ -16,7 +16,7 @@
 #include "lessons/runtime/catalog.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 namespace fs = std::filesystem;
@@ -514,4 +514,4 @@ std::string prediction_problem(const lessons::Lesson& lesson, const std::string&
   return "";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state
