@@ -91,7 +91,7 @@ const Option table[] = {
                "exit status is 1 if any does",
      .example = "3"},
     {.name = "--seed", .commands = for_check, .value = "S", .kind = ValueKind::whole_number,
-     .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
+     .range = {0.0, static_cast<double>(classroom_state::mystery_seed_max), false, ""},
      .help = "with --random: the seed of the draws, a whole number {range} (default {default}); the same seed draws "
              "the same settings on every machine",
      .default_value = static_cast<double>(default_random_seed),
@@ -104,7 +104,7 @@ const Option table[] = {
                "teacher reveals them; needs --seed",
      .example = "aluminium/wood", .held_by_setup = true},
     {.name = "--seed", .commands = for_window | for_run | for_render, .value = "N", .kind = ValueKind::whole_number,
-     .range = {0.0, static_cast<double>(ui::mystery_seed_max), false, ""},
+     .range = {0.0, static_cast<double>(classroom_state::mystery_seed_max), false, ""},
      .help = "the mystery's seed, a whole number {range}: the same seed draws the same values on every machine",
      .example = "42",
      .beside = Beside::together, .held_by_setup = true},
@@ -598,7 +598,7 @@ std::string usage_text(Program program) {
   if (!node) {
     text += "Keys in the window:\n";
     constexpr std::size_t key_column = 16;
-    for (const ui::WindowKey& key : ui::window_keys()) {
+    for (const classroom_state::WindowKey& key : classroom_state::window_keys()) {
       std::string line = "  " + std::string(key.key);
       // Columns count characters: the arrows are three bytes each in UTF-8.
       const std::size_t shown = line.size() - 2 * static_cast<std::size_t>(std::count(key.key.begin(), key.key.end(), '\xe2'));

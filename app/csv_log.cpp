@@ -21,9 +21,9 @@ CsvLog::CsvLog(const std::string& path, const lessons::Lesson& lesson, std::ostr
     // refused now, before the run, and after the CSV would be, so that a message names the CSV
     // when both would: each opened and dropped at once, leaving no temporary file, then the
     // CSV's kept open (the interrupt handler removes one temporary file, the last opened).
-    { ui::OutputFile refused_now(path, lessons::frictionlab_csv_file); }
-    { ui::OutputFile refused_now(lessons::settings_path_for(path), lessons::frictionlab_settings_file); }
-    file_ = std::make_unique<ui::OutputFile>(path, lessons::frictionlab_csv_file);
+    { files::OutputFile refused_now(path, lessons::frictionlab_csv_file); }
+    { files::OutputFile refused_now(lessons::settings_path_for(path), lessons::frictionlab_settings_file); }
+    file_ = std::make_unique<files::OutputFile>(path, lessons::frictionlab_csv_file);
   } catch (const std::runtime_error& error) {
     std::string message = "--csv ";
     message += error.what();
@@ -55,7 +55,7 @@ void CsvLog::finish() {
   try {
     // The settings first, then the CSV: a settings file that cannot be written leaves the last
     // run's CSV and its settings as they were, never a new CSV beside an old run's settings.
-    ui::OutputFile settings(lessons::settings_path_for(path_), lessons::frictionlab_settings_file);
+    files::OutputFile settings(lessons::settings_path_for(path_), lessons::frictionlab_settings_file);
     settings.write(settings_);
     settings.commit();
     file_->commit();

@@ -31,7 +31,7 @@ class CsvLog {
   void put(const std::string& text);
 
   std::string path_;
-  std::unique_ptr<ui::OutputFile> file_;  // null: standard output
+  std::unique_ptr<files::OutputFile> file_;  // null: standard output
   std::ostream& standard_output_;
   std::ostream& standard_error_;
   std::string settings_;

@@ -259,7 +259,7 @@ int run_list(const std::vector<std::string>& args, std::ostream& out) {
 
 int run_lesson(const std::vector<std::string>& args, std::ostream& out) {
   const RunOptions options = parse_run(args);
-  const std::optional<ui::MysteryChoice> mystery_choice = options.mystery.choice();
+  const std::optional<classroom_state::MysteryChoice> mystery_choice = options.mystery.choice();
   Lesson lesson(lessons::resolve_lesson(options.lesson), options.overrides, options.settings);
   std::set<std::string> hidden;
   if (mystery_choice) hidden = apply_mystery(lesson, *mystery_choice, options.overrides).hidden();
@@ -306,7 +306,7 @@ CheckOptions parse_check(const std::vector<std::string>& args) {
       }
       options.random_count = std::stoi(value);
     } else if (option.name == "--seed") {
-      options.seed = ui::parse_mystery_seed("check: --seed", value);
+      options.seed = classroom_state::parse_mystery_seed("check: --seed", value);
     } else if (step_option(option, value, options.settings)) {  // --hz, --substeps or --friction
       options.step_options.push_back(std::string(option.name));
       options.step_options.push_back(value);

@@ -30,25 +30,25 @@ int run_link(const std::vector<std::string>& args, std::ostream& out) {
     source = given.str();
     source.erase(0, source.find_first_not_of(" \t\r\n"));
     source.erase(source.find_last_not_of(" \t\r\n") + 1);
-    if (!ui::setup_text_from_link(source)) throw InvalidInput("link: the standard input holds no link (an address with #setup=...)");
+    if (!classroom_state::setup_text_from_link(source)) throw InvalidInput("link: the standard input holds no link (an address with #setup=...)");
   }
   // A link in: its setup's text out, checked as a setup file is. A lesson the link carries (a
   // student's own, from the page's Copy link) is kept among this user's lessons, as the page
   // keeps it, and the setup names it there.
-  if (ui::setup_text_from_link(source)) {
+  if (classroom_state::setup_text_from_link(source)) {
     if (!page.empty()) throw InvalidInput("link: --page goes with a setup file, not with a link");
     std::string kept;
-    const std::string text = *ui::received_setup_text(source, &kept);
-    ui::parse_setup(text, "setup link");
+    const std::string text = *classroom_state::received_setup_text(source, &kept);
+    classroom_state::parse_setup(text, "setup link");
     out << text;
     if (!text.empty() && text.back() != '\n') out << '\n';
     if (!kept.empty()) std::cerr << "link: the link's lesson is kept as " << kept << " (the window's Lesson > Your lessons)\n";
     return 0;
   }
   std::string left_out;
-  out << ui::setup_file_link(source, page, &left_out) << '\n';
+  out << classroom_state::setup_file_link(source, page, &left_out) << '\n';
   if (!left_out.empty()) {
-    std::cerr << "link: " << left_out << " is too long to go in a link (at most " << ui::largest_linked_script / 1024
+    std::cerr << "link: " << left_out << " is too long to go in a link (at most " << classroom_state::largest_linked_script / 1024
               << " KB as encoded); the link opens it only where that file is: hand out the .lua file with it\n";
   }
   return 0;

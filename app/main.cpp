@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   try {
     frictionlab::use_installed_lessons();
     // Ctrl-C while a CSV or PNG is being written leaves no temporary file behind.
-    frictionlab::ui::remove_partial_files_on_interrupt();
+    frictionlab::files::remove_partial_files_on_interrupt();
     const std::string command = args.empty() ? "" : args[0];
 #if defined(FRICTIONLAB_COMMAND_LINE_ONLY)
     if (command.empty()) {

@@ -51,24 +51,24 @@ bool MysteryOptions::take(const Option& option, const std::string& value) {
     }
     pair = value;
   } else if (option.name == "--seed") {
-    seed = ui::parse_mystery_seed(std::string(option.name), value);
+    seed = classroom_state::parse_mystery_seed(std::string(option.name), value);
   } else {
     return false;
   }
   return true;
 }
 
-std::optional<ui::MysteryChoice> MysteryOptions::choice() const {
-  const std::string range = "a whole number from 0 to " + std::to_string(ui::mystery_seed_max);
+std::optional<classroom_state::MysteryChoice> MysteryOptions::choice() const {
+  const std::string range = "a whole number from 0 to " + std::to_string(classroom_state::mystery_seed_max);
   if (pair.empty() && !seed) return std::nullopt;
   if (pair.empty()) throw InvalidInput("--seed draws a mystery pair's values: give --mystery MATERIAL/MATERIAL with it");
   if (!seed) throw InvalidInput("--mystery " + pair + " needs --seed N (" + range + "): the same seed draws the same values");
-  return ui::MysteryChoice{pair, *seed};
+  return classroom_state::MysteryChoice{pair, *seed};
 }
 
-ui::Mystery apply_mystery(lessons::Lesson& lesson, const ui::MysteryChoice& choice,
+classroom_state::Mystery apply_mystery(lessons::Lesson& lesson, const classroom_state::MysteryChoice& choice,
                           const std::map<std::string, std::string>& overrides) {
-  ui::Mystery mystery(choice, lesson);
+  classroom_state::Mystery mystery(choice, lesson);
   std::vector<std::pair<std::string, std::string>> settings = mystery.settings();
   for (const auto& [name, value] : settings) {
     if (overrides.count(name) > 0) {

@@ -33,12 +33,12 @@ struct MysteryOptions {
   // Takes --mystery or --seed; false if `option` is neither. Throws InvalidInput for a bad seed.
   bool take(const Option& option, const std::string& value);
   // The choice, or none when neither was given; throws InvalidInput when only one was.
-  std::optional<ui::MysteryChoice> choice() const;
+  std::optional<classroom_state::MysteryChoice> choice() const;
 };
 // Makes the lesson's pair a mystery: its coefficients set to the seed's values. Throws
 // InvalidInput naming --mystery when the lesson has no such pair, or --set when `overrides`
 // set one of its coefficients.
-ui::Mystery apply_mystery(lessons::Lesson& lesson, const ui::MysteryChoice& choice,
+classroom_state::Mystery apply_mystery(lessons::Lesson& lesson, const classroom_state::MysteryChoice& choice,
                           const std::map<std::string, std::string>& overrides);
 
 // Every probe keeps a value a step in memory: refuses, before any step, a run of `duration`

@@ -180,7 +180,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
   ui::HiddenValues hidden;
-  if (const std::optional<ui::MysteryChoice> mystery = options.mystery.choice()) {
+  if (const std::optional<classroom_state::MysteryChoice> mystery = options.mystery.choice()) {
     hidden.parameters = apply_mystery(lesson, *mystery, options.overrides).hidden();
   }
   // The record grows with every step up to the last time drawn, as in frictionlab run.

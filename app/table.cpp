@@ -82,10 +82,10 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
   namespace fs = std::filesystem;
   // Every file is written in full to its own temporary file first; a target that is not a
   // regular file (a folder, a device, a link) is refused before anything is replaced.
-  std::vector<std::unique_ptr<ui::OutputFile>> written;
+  std::vector<std::unique_ptr<files::OutputFile>> written;
   try {
     for (const auto& [path, text] : files) {
-      written.push_back(std::make_unique<ui::OutputFile>(path));
+      written.push_back(std::make_unique<files::OutputFile>(path));
       written.back()->write(text);
     }
   } catch (const std::runtime_error& error) {

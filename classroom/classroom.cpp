@@ -28,9 +28,9 @@ Classroom::Classroom(ClassroomOptions options)
       script_words_{options.script_paths},
       browser_(options.browser) {
   exports_.folder = options.output_folder;
-  const FileStamp stamp = file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
+  const classroom_state::FileStamp stamp = classroom_state::file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
-    std::optional<Mystery> mystery;
+    std::optional<classroom_state::Mystery> mystery;
     playback_ = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     lock_.check(playback_->lesson());
     mystery_.begin(std::move(mystery));
@@ -41,7 +41,7 @@ Classroom::Classroom(ClassroomOptions options)
     failed_.path = options.lesson;
     failed_.error = error.what();
     failed_.stamp = stamp;
-    playback_ = std::make_unique<Playback>(lessons::resolve_lesson(lessons::builtin_lessons().front()),
+    playback_ = std::make_unique<classroom_state::Playback>(lessons::resolve_lesson(lessons::builtin_lessons().front()),
                                            std::map<std::string, std::string>{}, options.settings);
   }
   playback_->set_speed(window_.speed);
@@ -301,7 +301,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     const std::string path = lessons::resolve_lesson(named);
     // The command line's --set values belong to the script it named.
     const bool named_script = path == failed_.path;
-    auto next = std::make_unique<Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
+    auto next = std::make_unique<classroom_state::Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
                                            playback_->lesson().settings());
     lock_.check(next->lesson());
     next->set_speed(playback_->speed());
@@ -321,7 +321,7 @@ std::string Classroom::open_setup(const std::string& path) {
     ClassroomOptions base;
     base.window = window_;
     const ClassroomOptions options = setup_options(path, base);
-    std::optional<Mystery> mystery;
+    std::optional<classroom_state::Mystery> mystery;
     auto next = MysteryPanel::build_playback(options.lesson, options.overrides, options.settings, options.mystery, mystery);
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens; the setup's lock in place of the one before.
@@ -338,7 +338,7 @@ std::string Classroom::open_setup(const std::string& path) {
   }
 }
 
-PreparedSetup Classroom::current_setup(const std::string& path) const {
+classroom_state::PreparedSetup Classroom::current_setup(const std::string& path) const {
   return SetupDialog::of_window(path, playback_->lesson(), lock_.names, mystery_, window_.predictions, predictions_.predictions);
 }
 

@@ -66,8 +66,8 @@ class Classroom {
   // With `record`, where the frame put things and every text it drew (the layout test).
   void frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record = nullptr);
 
-  Playback& playback() { return *playback_; }
-  const Playback& playback() const { return *playback_; }
+  classroom_state::Playback& playback() { return *playback_; }
+  const classroom_state::Playback& playback() const { return *playback_; }
 
   // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
   // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
@@ -119,10 +119,10 @@ class Classroom {
 
   // The mystery pair, if the teacher made one (--mystery, or the Mystery menu).
   // Its actions are the mystery panel's (classroom/mystery_panel.h); these forward to it.
-  const std::optional<Mystery>& mystery() const { return mystery_.mystery; }
+  const std::optional<classroom_state::Mystery>& mystery() const { return mystery_.mystery; }
   // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
   // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
-  std::string make_mystery(const MysteryChoice& choice) { return mystery_.make(choice, *playback_, parameters_); }
+  std::string make_mystery(const classroom_state::MysteryChoice& choice) { return mystery_.make(choice, *playback_, parameters_); }
   void reveal_mystery() { mystery_.reveal(); }
   // The class's answers, as typed in the Mystery tab.
   void answer_mystery(std::optional<double> mu_s, std::optional<double> mu_k) { mystery_.answer(mu_s, mu_k); }
@@ -134,7 +134,7 @@ class Classroom {
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
   // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether
   // predictions are asked, the class's answers to the lesson's predict rows and the reveal.
-  PreparedSetup current_setup(const std::string& path) const;
+  classroom_state::PreparedSetup current_setup(const std::string& path) const;
   // Writes current_setup to `path` (never over a .lua script or a file that is not a setup
   // FrictionLab wrote, nor with a typed prediction that is not a number). Returns "" or why not.
   std::string save_setup(const std::string& path);
@@ -159,7 +159,7 @@ class Classroom {
   const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
-  ClassPredictions& predictions() { return predictions_.predictions; }
+  classroom_state::ClassPredictions& predictions() { return predictions_.predictions; }
   bool theory_hidden() const { return predictions_.theory_hidden(playback_->lesson(), window_.predictions); }
   // The message beside a control whose value was refused; empty when there is none.
   std::string control_error(const std::string& name) const {
@@ -210,7 +210,7 @@ class Classroom {
   // they last looked; true when what they found changes what the window shows.
   bool watch_files(double wall_seconds);
 
-  std::unique_ptr<Playback> playback_;
+  std::unique_ptr<classroom_state::Playback> playback_;
   WindowSettings window_;
   MeasuringTools tools_;
   LessonLock lock_;

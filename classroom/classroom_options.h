@@ -24,8 +24,8 @@ struct ClassroomOptions {
   std::string lock_from;                            // the setup file that gave the lock; "": --lock
   WindowSettings window;                            // as remembered
   std::string output_folder = ".";                  // screenshots and history exports
-  std::optional<MysteryChoice> mystery;             // --mystery PAIR --seed N
-  ClassPredictions predictions;                     // the class's answers, from a prepared setup
+  std::optional<classroom_state::MysteryChoice> mystery;             // --mystery PAIR --seed N
+  classroom_state::ClassPredictions predictions;                     // the class's answers, from a prepared setup
   // Name scripts by their whole path (the desktop: the student finds the file there), or by
   // the file's name alone (the web page: its files live in the browser, not where anyone looks).
   bool script_paths = true;

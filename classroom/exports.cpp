@@ -29,7 +29,7 @@ std::string Exports::request_screenshot(const lessons::Lesson& lesson) {
   }
 }
 
-std::string Exports::save_history(const Playback& playback, const HiddenValues& hidden) const {
+std::string Exports::save_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const {
   try {
     return "History saved to " + export_history(playback, hidden);
   } catch (const std::exception& error) {
@@ -37,14 +37,14 @@ std::string Exports::save_history(const Playback& playback, const HiddenValues& 
   }
 }
 
-std::string Exports::export_history(const Playback& playback, const HiddenValues& hidden) const {
+std::string Exports::export_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const {
   const lessons::Lesson& lesson = playback.lesson();
   const Scene& scene = lesson.scene();
   // The one format `frictionlab run --csv` writes too (lessons/runtime/history_csv.h), with the
   // mouse's hand's columns filled in: whether it pulled in the step that ended at the row's
   // time, and what its force gauge read.
   std::string csv = lessons::csv_header(lesson);
-  const std::vector<GaugeSample>& gauge = playback.gauge().samples();
+  const std::vector<classroom_state::GaugeSample>& gauge = playback.gauge().samples();
   std::size_t next_sample = 0;
   for (std::size_t i = 0; i < scene.times().size(); ++i) {
     const long frame = static_cast<long>(i) + 1;  // row i is the end of the scene's frame i + 1
@@ -58,11 +58,11 @@ std::string Exports::export_history(const Playback& playback, const HiddenValues
   // in place before the CSV, so no CSV is ever left without its settings.
   const std::string settings = lessons::run_settings(lesson, [&](const std::string& name) { return hidden.hides(name); });
   {
-    OutputFile settings_file(lessons::settings_path_for(path), lessons::frictionlab_settings_file);
+    files::OutputFile settings_file(lessons::settings_path_for(path), lessons::frictionlab_settings_file);
     settings_file.write(settings);
     settings_file.commit();
   }
-  write_whole_file(path, csv.data(), csv.size());
+  files::write_whole_file(path, csv.data(), csv.size());
   return path;
 }
 

@@ -100,7 +100,7 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
   draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
 
-Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& theme) {
+Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme) {
   Chart chart;
   chart.title = "Force gauge";
   chart.plain = true;
@@ -111,7 +111,7 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   chart.y_label = "";  // the panel's title says it: "Force gauge (N)"
   // The latest stretch alone: a lesson that runs for minutes, or pulls long apart, would squeeze
   // a pull of a few seconds into a line.
-  const std::vector<GaugeSample>& samples = record.samples();
+  const std::vector<classroom_state::GaugeSample>& samples = record.samples();
   const std::size_t first = record.latest_stretch_start();
   // One line, as the figures over it are taken: the gauge's reading, or the hand's pull and the
   // lesson's together when the lesson pulled the body too (the scale in the world reads the
@@ -123,7 +123,7 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   reading.colour = theme.hand;
   double highest = 0.0, latest = 0.0;
   for (std::size_t i = first; i < samples.size(); ++i) {
-    const GaugeSample& sample = samples[i];
+    const classroom_state::GaugeSample& sample = samples[i];
     const double shown = lesson_pulled ? std::abs(sample.pull) : sample.force;
     reading.points.push_back({sample.t, shown});
     highest = std::max(highest, shown);
@@ -158,15 +158,15 @@ Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& the
   return chart;
 }
 
-std::string gauge_plot_title(const GaugeRecord& record, double frame_step) {
+std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double frame_step) {
   // The plot shows the pulls together when the lesson pulled the body too.
-  const std::optional<GaugeFigures> figures = record.figures(frame_step);
+  const std::optional<classroom_state::GaugeFigures> figures = record.figures(frame_step);
   if (!figures || figures->lesson_pulls.empty()) return "Force gauge (N)";
   return "Hand + " + figures->lesson_pulls + " (N)";
 }
 
-std::string gauge_figures(const GaugeRecord& record, double frame_step) {
-  const std::optional<GaugeFigures> figures = record.figures(frame_step);
+std::string gauge_figures(const classroom_state::GaugeRecord& record, double frame_step) {
+  const std::optional<classroom_state::GaugeFigures> figures = record.figures(frame_step);
   if (!figures) return "";
   // When the lesson pulled the body too, the figures are the pulls together, and say so.
   std::string text = figures->lesson_pulls.empty() ? "" : "hand + " + figures->lesson_pulls + ": ";
@@ -180,7 +180,7 @@ std::string gauge_figures(const GaugeRecord& record, double frame_step) {
   return text;
 }
 
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const GaugeRecord& record, double frame_step, const Theme& theme,
+void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme,
                      const Fonts& fonts) {
   const std::string figures = gauge_figures(record, frame_step);
   ImGui::SetCursorScreenPos(corner);

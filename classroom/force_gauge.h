@@ -46,16 +46,16 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
 // The gauge's reading against time over the latest stretch the hand pulled (from a little
 // before it took hold), the slips shaded; the hand's and the lesson's pull together instead when
 // the lesson pulled the body too, as the figures are taken.
-Chart gauge_chart(const GaugeRecord& record, double frame_step, const Theme& theme);
+Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme);
 
 // The plot's title: "Force gauge (N)", or "Hand + spring (N)" when the lesson pulled the body too.
-std::string gauge_plot_title(const GaugeRecord& record, double frame_step);
+std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double frame_step);
 // The figures over the plot: "peak 39.4 N,  sliding 29.1 N", or "hand + spring: peak ..." when
 // the lesson pulled the body too; "" before the hand pulls.
-std::string gauge_figures(const GaugeRecord& record, double frame_step);
+std::string gauge_figures(const classroom_state::GaugeRecord& record, double frame_step);
 // The plot under the world at `corner`, `size`: the latest stretch's figures over its chart, as a
 // class reads them off a sensor's screen.
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const GaugeRecord& record, double frame_step, const Theme& theme,
+void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme,
                      const Fonts& fonts);
 
 }  // namespace frictionlab::ui

@@ -29,7 +29,7 @@ void help_panel(bool& shown, float scale, bool browser, bool script_paths, const
     if (ImGui::BeginTable("keys", 2)) {
       ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
-      for (const WindowKey& row : window_keys()) {
+      for (const classroom_state::WindowKey& row : classroom_state::window_keys()) {
         const std::string_view what = browser && !row.on_the_page.empty() ? row.on_the_page : row.does;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();

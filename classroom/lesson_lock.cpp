@@ -10,7 +10,7 @@ namespace frictionlab::ui {
 void LessonLock::check(const lessons::Lesson& lesson) const {
   for (const std::string& name : names) {
     bool known = false;
-    for (const char* setting : lockable_settings) known = known || name == setting;
+    for (const char* setting : classroom_state::lockable_settings) known = known || name == setting;
     for (const lessons::Parameter& parameter : lesson.parameters()) known = known || name == parameter.name;
     if (!known) {
       std::string controls;

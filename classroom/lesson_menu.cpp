@@ -36,16 +36,16 @@ LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& l
     remember_item(controls, "lesson " + entry.name);
   }
   // The student's own folder, read each time the menu is drawn, so a copy saved there shows at once.
-  const std::vector<UserLesson> own = user_lessons();
+  const std::vector<classroom_state::UserLesson> own = classroom_state::user_lessons();
   if (!own.empty()) {
     ImGui::Separator();
     if (script_paths) {
-      ImGui::TextDisabled("Your lessons, in %s", user_lessons_folder().c_str());
+      ImGui::TextDisabled("Your lessons, in %s", classroom_state::user_lessons_folder().c_str());
     } else {
       ImGui::TextDisabled("Your lessons, kept in this browser");
     }
     // Titles, as the built-in lessons have them, with the file's name beside each.
-    for (const UserLesson& lesson : own) {
+    for (const classroom_state::UserLesson& lesson : own) {
       const bool current = lesson_path == lesson.path;
       const std::string file = lesson.name + ".lua";
       ImGui::PushID(lesson.path.c_str());  // two lessons may share a title (a copy received beside one's own)

@@ -12,33 +12,33 @@
 
 namespace frictionlab::ui {
 
-std::unique_ptr<Playback> MysteryPanel::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+std::unique_ptr<classroom_state::Playback> MysteryPanel::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
                                                        const StepSettings& settings,
-                                                       const std::optional<MysteryChoice>& choice,
-                                                       std::optional<Mystery>& made) {
-  auto playback = std::make_unique<Playback>(path, overrides, settings);
+                                                       const std::optional<classroom_state::MysteryChoice>& choice,
+                                                       std::optional<classroom_state::Mystery>& made) {
+  auto playback = std::make_unique<classroom_state::Playback>(path, overrides, settings);
   if (!choice) return playback;
   // The pair is found in the lesson as built, then the lesson is built again with the drawn values.
-  Mystery drawn(*choice, playback->lesson());
+  classroom_state::Mystery drawn(*choice, playback->lesson());
   for (const auto& [name, value] : drawn.settings()) {
     if (overrides.count(name) > 0) {
       throw InvalidInput("--set " + name + ": " + name + " is the mystery's (--mystery " + choice->pair + "); leave it out");
     }
     overrides[name] = value;
   }
-  playback = std::make_unique<Playback>(path, overrides, settings);
+  playback = std::make_unique<classroom_state::Playback>(path, overrides, settings);
   made = std::move(drawn);
   return playback;
 }
 
-void MysteryPanel::begin(std::optional<Mystery> opened) {
+void MysteryPanel::begin(std::optional<classroom_state::Mystery> opened) {
   mystery = std::move(opened);
   if (mystery) tab.begin();
 }
 
-std::string MysteryPanel::make(const MysteryChoice& choice, Playback& playback, ParametersPanel& parameters) {
+std::string MysteryPanel::make(const classroom_state::MysteryChoice& choice, classroom_state::Playback& playback, ParametersPanel& parameters) {
   try {
-    Mystery next(choice, playback.lesson());
+    classroom_state::Mystery next(choice, playback.lesson());
     // μk first when it falls, so the pair never passes through μk > μs on the way (as the presets).
     std::vector<std::pair<std::string, double>> values = next.numbers();
     if (next.values().mu_k < playback.lesson().parameter(next.mu_k_name()).value) std::swap(values[0], values[1]);
@@ -55,11 +55,11 @@ std::string MysteryPanel::make(const MysteryChoice& choice, Playback& playback, 
   }
 }
 
-void MysteryPanel::keep(const std::string& name, double before, Playback& playback, ParametersPanel& parameters) const {
+void MysteryPanel::keep(const std::string& name, double before, classroom_state::Playback& playback, ParametersPanel& parameters) const {
   if (!mystery) return;
   const lessons::Lesson& lesson = playback.lesson();
   try {
-    if (mystery_parameters(lesson, mystery->choice().pair) != std::make_pair(mystery->mu_s_name(), mystery->mu_k_name())) {
+    if (classroom_state::mystery_parameters(lesson, mystery->choice().pair) != std::make_pair(mystery->mu_s_name(), mystery->mu_k_name())) {
       throw InvalidInput("another pair");
     }
   } catch (const InvalidInput&) {

@@ -21,23 +21,23 @@
 namespace frictionlab::ui {
 
 struct MysteryPanel {
-  std::optional<Mystery> mystery;  // chosen once when a mystery begins
+  std::optional<classroom_state::Mystery> mystery;  // chosen once when a mystery begins
   MysteryTab tab;
 
   // The lesson at `path` with `overrides`, and with a mystery's values when `choice` names one
   // (then made in `made`). Throws as Playback does, and InvalidInput for a pair the lesson
   // does not have or a value of the mystery's in `overrides`.
-  static std::unique_ptr<Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
-                                                  const StepSettings& settings, const std::optional<MysteryChoice>& choice,
-                                                  std::optional<Mystery>& made);
+  static std::unique_ptr<classroom_state::Playback> build_playback(const std::string& path, std::map<std::string, std::string> overrides,
+                                                  const StepSettings& settings, const std::optional<classroom_state::MysteryChoice>& choice,
+                                                  std::optional<classroom_state::Mystery>& made);
   // The mystery a lesson opened with (the command line's, a setup's), or none: the tab asks anew.
-  void begin(std::optional<Mystery> opened);
+  void begin(std::optional<classroom_state::Mystery> opened);
   // Makes a pair of the running lesson a mystery: its μs and μk drawn from the seed, hidden
   // until revealed, the lesson back at t = 0. Returns "" or why not (the lesson keeps running).
-  std::string make(const MysteryChoice& choice, Playback& playback, ParametersPanel& parameters);
+  std::string make(const classroom_state::MysteryChoice& choice, classroom_state::Playback& playback, ParametersPanel& parameters);
   // After `name` was set (from `before`): a rebuild keeps the mystery's values, and a value that
   // would take its pair away (a material chosen) is put back, with why beside its control.
-  void keep(const std::string& name, double before, Playback& playback, ParametersPanel& parameters) const;
+  void keep(const std::string& name, double before, classroom_state::Playback& playback, ParametersPanel& parameters) const;
   void reveal();
   // The class's answers, as typed in the Mystery tab.
   void answer(std::optional<double> mu_s, std::optional<double> mu_k);

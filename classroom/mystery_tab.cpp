@@ -49,8 +49,8 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   remember_item(controls, "Mystery menu");
   if (!open) return std::nullopt;
   std::optional<std::string> said;
-  const std::optional<Mystery>& mystery = classroom.mystery();
-  const std::vector<std::string> pairs = mystery_pairs(classroom.playback().lesson());
+  const std::optional<classroom_state::Mystery>& mystery = classroom.mystery();
+  const std::vector<std::string> pairs = classroom_state::mystery_pairs(classroom.playback().lesson());
   if (pairs.empty()) {
     const std::string none =
         "This lesson has no friction pair whose " + both_letters() + " are sliders.";
@@ -75,7 +75,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
     ImGui::InputInt("##seed", &menu_seed);
     takes_a_number();
     remember_item(controls, "mystery seed");
-    menu_seed = std::clamp(menu_seed, 0, static_cast<int>(mystery_seed_max));
+    menu_seed = std::clamp(menu_seed, 0, static_cast<int>(classroom_state::mystery_seed_max));
     for (const std::string& pair : pairs) {
       const bool current = mystery && mystery->choice().pair == pair;
       const std::string label = "Make " + pair + " a mystery";
@@ -93,7 +93,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   return said;
 }
 
-void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls) {
+void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls) {
   ImGuiTabItemFlags flags = 0;
   if (select) {
     // The class predicts before it measures: while the predictions are asked and their tab is
@@ -147,9 +147,9 @@ void MysteryTab::draw_tab(Mystery& mystery, bool predicting, const Theme& colour
     // How far off, once revealed, with the true value beside it. Not before: a class told how
     // far off each guess is finds the hidden value in two guesses.
     std::string said = !answers[k]->has_value() ? "not yet"
-                       : mystery.revealed()     ? closeness_text(**answers[k], truths[k])
+                       : mystery.revealed()     ? classroom_state::closeness_text(**answers[k], truths[k])
                                                 : "kept for the reveal";
-    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + exact_text(truths[k]);
+    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + classroom_state::exact_text(truths[k]);
     if (!answer_error[k].empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
       shown_text(answer_error[k].c_str());

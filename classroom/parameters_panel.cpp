@@ -337,9 +337,9 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
-                      exact_text(parameter.min).c_str(), exact_text(parameter.max).c_str(),
+                      classroom_state::exact_text(parameter.min).c_str(), classroom_state::exact_text(parameter.max).c_str(),
                       parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
-                      exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
+                      classroom_state::exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
   }
   if (on_show.mystery && on_show.mystery->hides(name)) {
     // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
@@ -401,7 +401,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     ImGui::SameLine(value_x);
     ImGui::SetNextItemWidth(reset_x - spacing - value_x);
     char typed[64];
-    std::snprintf(typed, sizeof typed, "%s", parameter_text(parameter).c_str());
+    std::snprintf(typed, sizeof typed, "%s", classroom_state::parameter_text(parameter).c_str());
     // A number, read here (to say why "0,5" is refused): no blank joins it, and Space ends the
     // typing as Enter does and plays (classroom/text_boxes.h).
     if (ImGui::InputText("##value", typed, sizeof typed,
@@ -428,7 +428,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   ImGui::EndDisabled();
   remember_item(controls, name + " reset");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("Back to the script's value, %s", exact_text(parameter.default_value).c_str());
+    ImGui::SetTooltip("Back to the script's value, %s", classroom_state::exact_text(parameter.default_value).c_str());
   }
 }
 

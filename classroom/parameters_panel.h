@@ -35,7 +35,7 @@ inline bool unlocked(const std::set<std::string>& lock, const std::string& contr
 struct ParametersOnShow {
   const lessons::Lesson& lesson;
   const std::set<std::string>& lock;       // the controls the teacher chose; empty: all of them
-  const std::optional<Mystery>& mystery;   // its pair has no slider, box, reset or presets
+  const std::optional<classroom_state::Mystery>& mystery;   // its pair has no slider, box, reset or presets
   HiddenValues hidden;                     // what the class must not see now
   // The class's predictions are asked: their answers may take the panel's room. The same from
   // the lesson's opening to the run's end and after R, so that the panel never folds because a

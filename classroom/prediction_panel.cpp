@@ -32,7 +32,7 @@ const lessons::ExpectationResult* row_of(const std::vector<lessons::ExpectationR
   return row != nullptr && row->failed ? nullptr : row;
 }
 
-std::string answer_of(const ClassPredictions& predictions, const lessons::Prediction& prediction) {
+std::string answer_of(const classroom_state::ClassPredictions& predictions, const lessons::Prediction& prediction) {
   const auto found = predictions.answers.find(prediction.expectation);
   return found == predictions.answers.end() ? "" : found->second;
 }
@@ -126,7 +126,7 @@ std::string answer_note(const lessons::Prediction& prediction, const std::string
   fault = false;
   if (!prediction.is_choice() && !answer.empty()) {
     std::string why;
-    if (!read_answer(answer, why)) {
+    if (!classroom_state::read_answer(answer, why)) {
       fault = true;
       return why;
     }
@@ -154,7 +154,7 @@ AnswerLayout answer_layout(const lessons::Prediction& prediction, const std::str
 }
 
 void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                       ClassPredictions& predictions, bool editable, const Theme& theme,
+                       classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
                        const PredictionControls& controls) {
   // The button first: in a short column the questions scroll, and the reveal stays at hand.
   if (ImGui::Button(reveal_label) && controls.reveal) controls.reveal();
@@ -239,7 +239,7 @@ Closeness judged(const lessons::Prediction& prediction, const std::string& answe
 // The class's answer, the theory and the measurement of each predicted row side by side,
 // each row's name above its numbers and how close the class came below them.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                      const ClassPredictions& predictions, const Theme& theme, bool theory_withheld) {
+                      const classroom_state::ClassPredictions& predictions, const Theme& theme, bool theory_withheld) {
   const float table_width = ImGui::GetContentRegionAvail().x;
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
@@ -300,7 +300,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
     return {std::string(measured ? "class: \u2717 the run says " : "class: \u2717 the theory says ") + truth, false};
   }
   std::string why;
-  const std::optional<double> value = read_answer(answer, why);
+  const std::optional<double> value = classroom_state::read_answer(answer, why);
   if (!value) return {why, false};
   const double reference = measured ? row.measured : row.predicted;
   const double off = *value - reference;
@@ -323,7 +323,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
 }
 
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                          ClassPredictions& predictions, bool editable, const Theme& theme,
+                          classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
                           const PredictionControls& controls, bool theory_withheld) {
   if (predictions.revealed) {
     after_the_reveal(lesson, rows, predictions, theme, theory_withheld);
@@ -333,7 +333,7 @@ void predictions_contents(const lessons::Lesson& lesson, const std::vector<lesso
 }
 
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                                  const ClassPredictions& predictions, float width, bool theory_withheld) {
+                                  const classroom_state::ClassPredictions& predictions, float width, bool theory_withheld) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float frame = ImGui::GetFrameHeight() + style.ItemSpacing.y;
@@ -384,13 +384,13 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
   return height;
 }
 
-std::string PredictionPanel::forget_outdated(const Playback& playback) {
+std::string PredictionPanel::forget_outdated(const classroom_state::Playback& playback) {
   if (playback.lesson().scene().frame() != 0) return "";
   std::vector<std::string> outdated;
   for (const auto& [row_name, answer] : predictions.answers) {
     for (const lessons::ExpectationResult& row : playback.readings().expectations) {
       if (row.name != row_name || row.failed) continue;
-      const std::string theory = row.numeric ? exact_text(row.predicted) : row.predicted_text;
+      const std::string theory = row.numeric ? classroom_state::exact_text(row.predicted) : row.predicted_text;
       const auto [seen, first] = predictions.theory_answered.emplace(row_name, theory);
       if (!first && seen->second != theory) outdated.push_back(row_name);
     }
@@ -407,12 +407,12 @@ std::string PredictionPanel::forget_outdated(const Playback& playback) {
          (predictions.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
 }
 
-void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool asking, const Theme& colours,
+void PredictionPanel::style(FrameStyle& style, const classroom_state::Playback& playback, bool asking, const Theme& colours,
                             ControlPlaces& controls, std::function<bool()> theory_withheld) {
   const lessons::Lesson& lesson = playback.lesson();
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
   if (!asking || lesson.predictions().empty()) return;
-  style.theory_hidden = ui::theory_hidden(lesson, predictions, asking);
+  style.theory_hidden = classroom_state::theory_hidden(lesson, predictions, asking);
   style.predictions = [this, &playback, &colours, &controls, theory_withheld] {
     // Answers are given before the run: once it has started they are what the class said.
     const bool editable = !predictions.revealed && playback.lesson().scene().frame() == 0;
@@ -425,7 +425,7 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
   style.predictions_height = [this, &playback, theory_withheld](float width) {
     // The taller of the panel before the reveal and after it: the column is planned once for
     // both, so that nothing in it moves at the reveal (or when T hides the theory again).
-    ClassPredictions other = predictions;
+    classroom_state::ClassPredictions other = predictions;
     other.revealed = !other.revealed;
     const bool withheld = theory_withheld();
     const lessons::Lesson& on_show = playback.lesson();
@@ -445,7 +445,7 @@ void PredictionPanel::style(FrameStyle& style, const Playback& playback, bool as
 }
 
 bool PredictionPanel::theory_hidden(const lessons::Lesson& lesson, bool asking) const {
-  return ui::theory_hidden(lesson, predictions, asking);
+  return classroom_state::theory_hidden(lesson, predictions, asking);
 }
 
 void PredictionPanel::reveal_key(const lessons::Lesson& lesson, bool asking) {
@@ -456,13 +456,13 @@ void PredictionPanel::reveal_key(const lessons::Lesson& lesson, bool asking) {
   }
 }
 
-std::string PredictionPanel::predict_again(Playback& playback) {
+std::string PredictionPanel::predict_again(classroom_state::Playback& playback) {
   predictions = {};
   playback.reset();
   return "New predictions: the class's answers are cleared, the theory is hidden, and the run is back at t = 0.";
 }
 
-std::optional<std::string> PredictionPanel::menu_items(bool& asking, Playback& playback, ControlPlaces& controls) {
+std::optional<std::string> PredictionPanel::menu_items(bool& asking, classroom_state::Playback& playback, ControlPlaces& controls) {
   // Off: the theory shows from the start, as for a teacher who takes no predictions.
   ImGui::MenuItem("Ask for predictions first", nullptr, &asking);
   remember_item(controls, "Ask for predictions first");

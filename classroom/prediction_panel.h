@@ -46,17 +46,17 @@ struct PredictionControls {
 // `theory_withheld` (a mystery pair's values are in it: classroom_state/mystery.h) the theory says "hidden"
 // even then, and the class is judged against the measurement alone.
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                          ClassPredictions& predictions, bool editable, const Theme& theme,
+                          classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
                           const PredictionControls& controls, bool theory_withheld = false);
 // The height predictions_contents takes at a width (the panel's inside), in the current font.
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                                  const ClassPredictions& predictions, float width, bool theory_withheld = false);
+                                  const classroom_state::ClassPredictions& predictions, float width, bool theory_withheld = false);
 
 // The predictions' part of the window: the class's answers for the lesson on screen (a new
 // lesson asks again) and what they hand the frame. It owns the answers, as each of Dear ImGui's
 // demo windows owns its state: the classroom holds one and asks it each frame.
 struct PredictionPanel {
-  ClassPredictions predictions;
+  classroom_state::ClassPredictions predictions;
   // The answers' height the column was planned for, kept from the lesson's opening: a slider's
   // value changes what "measured:" says (stacked_blocks at its slowest pull: "runs off the floor
   // first", a line longer), and a height worked out anew folded the Parameters panel under the
@@ -75,7 +75,7 @@ struct PredictionPanel {
 
   // A lesson opens (the command line's, another from the Lesson menu, a setup's): its answers (a
   // setup's, or none) and the column planned anew for its questions.
-  void begin(ClassPredictions opened) {
+  void begin(classroom_state::ClassPredictions opened) {
     predictions = std::move(opened);
     planned.reset();
   }
@@ -86,10 +86,10 @@ struct PredictionPanel {
   void reveal_key(const lessons::Lesson& lesson, bool asking);
   // View > Predict again: the answers cleared, the theory hidden, the run back at t = 0 (answers
   // are typed before the run). Returns what the status line says of that moment.
-  std::string predict_again(Playback& playback);
+  std::string predict_again(classroom_state::Playback& playback);
   // Its items in the View menu (ask for predictions first, reveal, predict again). Returns what
   // the status line says of the moment when Predict again was chosen.
-  std::optional<std::string> menu_items(bool& asking, Playback& playback, ControlPlaces& controls);
+  std::optional<std::string> menu_items(bool& asking, classroom_state::Playback& playback, ControlPlaces& controls);
 
   // An answer is the class's for the values it was given at. At t = 0 (where answers are typed,
   // and where a changed value or R brings a run), a row whose theory is not what it was when the
@@ -98,11 +98,11 @@ struct PredictionPanel {
   // it (a teacher exploring other values) the old answer would be judged against a theory it was
   // never about, so it goes too, and View > Predict again asks anew with the theory hidden.
   // Returns what the status line should say ("" when no answer went).
-  std::string forget_outdated(const Playback& playback);
+  std::string forget_outdated(const classroom_state::Playback& playback);
   // Its part of the frame: the contents and height in the theory panel, and what they hide.
   // `asking`: the teacher asks for predictions (the View menu). `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
   // theory, which stays hidden until the mystery is revealed.
-  void style(FrameStyle& style, const Playback& playback, bool asking, const Theme& colours,
+  void style(FrameStyle& style, const classroom_state::Playback& playback, bool asking, const Theme& colours,
              ControlPlaces& controls, std::function<bool()> theory_withheld);
 };
 

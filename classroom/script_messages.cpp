@@ -37,19 +37,19 @@ bool FailedScript::changed(double wall_seconds) {
   since_check += wall_seconds;
   if (since_check < 0.25) return false;
   since_check = 0.0;
-  const FileStamp now = file_stamp(path);
+  const classroom_state::FileStamp now = classroom_state::file_stamp(path);
   if (now == stamp) return false;
   stamp = now;
   return true;
 }
 
-void messages_panel(ImVec2 corner, float width, const Playback& playback, const FailedScript& failed, bool browser,
+void messages_panel(ImVec2 corner, float width, const classroom_state::Playback& playback, const FailedScript& failed, bool browser,
                     const ScriptWords& words, const Theme& colours, ControlPlaces& controls) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
   // A script's mistake, and under it Lua's message in plain words when it is a common one.
   const auto mistake = [&](const std::string& message, const std::string& then) {
     lines.push_back({words(message) + then, true});
-    if (std::string plain = plain_words(message); !plain.empty()) lines.push_back({std::move(plain), false});
+    if (std::string plain = classroom_state::plain_words(message); !plain.empty()) lines.push_back({std::move(plain), false});
   };
   if (!failed.path.empty()) {
     mistake(failed.error, "  (showing " + lesson_name(playback.lesson().path()) + " until " + lesson_name(failed.path) + ".lua builds)");

@@ -26,7 +26,7 @@ struct ScriptWords {
 struct FailedScript {
   std::string path;  // "" when none
   std::string error;
-  FileStamp stamp;   // the file as it was when it last failed
+  classroom_state::FileStamp stamp;   // the file as it was when it last failed
   double since_check = 0.0;
 
   // The wall time since the last look: true when it is time to try the script again (its file
@@ -35,7 +35,7 @@ struct FailedScript {
 };
 
 // The messages panel in the world's lower left corner: nothing when all is well.
-void messages_panel(ImVec2 corner, float width, const Playback& playback, const FailedScript& failed, bool browser,
+void messages_panel(ImVec2 corner, float width, const classroom_state::Playback& playback, const FailedScript& failed, bool browser,
                     const ScriptWords& words, const Theme& colours, ControlPlaces& controls);
 
 }  // namespace frictionlab::ui

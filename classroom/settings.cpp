@@ -76,7 +76,7 @@ std::string kept_settings_text(const WindowSettings& settings) {
 bool save_settings(const WindowSettings& settings, const std::string& path) {
   try {
     const std::string bytes = kept_settings_text(settings);
-    write_whole_file(path, bytes.data(), bytes.size());
+    files::write_whole_file(path, bytes.data(), bytes.size());
     return true;
   } catch (const std::exception&) {
     return false;

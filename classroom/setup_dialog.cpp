@@ -72,14 +72,14 @@ std::string SetupDialog::draw(Classroom& classroom, const std::string& output_fo
   return said;
 }
 
-PreparedSetup SetupDialog::of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
-                                    const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions) {
-  PreparedSetup setup;
-  setup.lesson = setup_lesson_name(lesson.path(), path);
+classroom_state::PreparedSetup SetupDialog::of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                    const MysteryPanel& mystery, bool ask_predictions, const classroom_state::ClassPredictions& predictions) {
+  classroom_state::PreparedSetup setup;
+  setup.lesson = classroom_state::setup_lesson_name(lesson.path(), path);
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // A mystery is saved as its pair and seed: its values are drawn again when it opens.
     if (mystery.holds(parameter.name)) continue;
-    setup.values.push_back({parameter.name, parameter_text(parameter), 0});
+    setup.values.push_back({parameter.name, classroom_state::parameter_text(parameter), 0});
   }
   setup.lock.assign(lock.begin(), lock.end());
   if (mystery.mystery) setup.mystery = mystery.mystery->choice();
@@ -94,17 +94,17 @@ PreparedSetup SetupDialog::of_window(const std::string& path, const lessons::Les
   return setup;
 }
 
-std::string SetupDialog::save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson) {
+std::string SetupDialog::save(const std::string& path, const classroom_state::PreparedSetup& setup, const lessons::Lesson& lesson) {
   try {
     // What the window marks as no number is refused here too: the file would not open again.
-    for (const PreparedSetup::Answer& answer : setup.answers) {
-      const std::string problem = prediction_problem(lesson, answer.row, answer.text);
+    for (const classroom_state::PreparedSetup::Answer& answer : setup.answers) {
+      const std::string problem = classroom_state::prediction_problem(lesson, answer.row, answer.text);
       if (!problem.empty()) {
         throw InvalidInput(path + ": the class's prediction of " + answer.row + " is " + answer.text + ": " + problem +
                            "; correct it or clear it in the theory panel, then save");
       }
     }
-    write_setup(path, setup);
+    classroom_state::write_setup(path, setup);
     return "";
   } catch (const InvalidInput& error) {
     return error.what();

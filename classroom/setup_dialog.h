@@ -39,11 +39,11 @@ struct SetupDialog {
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
   // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether
   // predictions are asked, the class's answers to the lesson's predict rows and the reveal.
-  static PreparedSetup of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
-                                 const MysteryPanel& mystery, bool ask_predictions, const ClassPredictions& predictions);
+  static classroom_state::PreparedSetup of_window(const std::string& path, const lessons::Lesson& lesson, const std::set<std::string>& lock,
+                                 const MysteryPanel& mystery, bool ask_predictions, const classroom_state::ClassPredictions& predictions);
   // Writes `setup` to `path` (never over a .lua script or a file that is not a setup FrictionLab
   // wrote, nor with a typed prediction that is not a number). Returns "" or why not.
-  static std::string save(const std::string& path, const PreparedSetup& setup, const lessons::Lesson& lesson);
+  static std::string save(const std::string& path, const classroom_state::PreparedSetup& setup, const lessons::Lesson& lesson);
 };
 
 }  // namespace frictionlab::ui

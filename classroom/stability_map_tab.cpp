@@ -61,7 +61,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
     made_for = {mu_s, gravity};
     cells = stability_map(pair, gravity, Integrator::semi_implicit_euler, steps, epsilons);
   }
-  chart = stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + exact_text(mu_s) + slope,
+  chart = stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + classroom_state::exact_text(mu_s) + slope,
                                          cells, pair, gravity, Integrator::semi_implicit_euler, epsilons);
   ChartSeries marks{"this lesson's \u03b5 at its step", {}, IM_COL32(0, 90, 200, 255), false, Marker::dot, {}};
   for (const Threshold& threshold : thresholds) {
@@ -70,7 +70,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
     const double boundary = theoretical_boundary(pair, gravity, threshold.epsilon, Integrator::semi_implicit_euler);
     char line[200];
     std::snprintf(line, sizeof line, "%s %s m/s: %s at a %.3g ms step (boundary %.3g ms)", threshold.name.c_str(),
-                  exact_text(threshold.epsilon).c_str(), threshold.h > boundary ? "chatters" : "settles", threshold.h * 1e3,
+                  classroom_state::exact_text(threshold.epsilon).c_str(), threshold.h > boundary ? "chatters" : "settles", threshold.h * 1e3,
                   boundary * 1e3);
     words.push_back(line);
   }

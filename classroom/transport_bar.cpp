@@ -59,7 +59,7 @@ TransportBar::Shape TransportBar::shape(const std::string& room_for, float width
   return shape;
 }
 
-void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said,
+void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& playback, const std::string& said,
                         const std::string& room_for, float scale, ImFont* words_font, double& speed_kept,
                         ControlPlaces& controls) {
   const float s = scale;
@@ -84,7 +84,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, Playback& playback, const st
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f * s);
     float speed = static_cast<float>(playback.speed());
-    const float slowest = static_cast<float>(Playback::slowest), fastest = static_cast<float>(Playback::fastest);
+    const float slowest = static_cast<float>(classroom_state::Playback::slowest), fastest = static_cast<float>(classroom_state::Playback::fastest);
     if (knob_slider("##speed", ImGuiDataType_Float, &speed, &slowest, &fastest, "speed \u00d7%.2g",
                     ImGuiSliderFlags_Logarithmic, controls, "speed")) {
       // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives

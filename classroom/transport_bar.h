@@ -35,7 +35,7 @@ struct TransportBar {
   // The bar, acting on `playback`, with the words `said` in the place shape(room_for) made; a
   // speed set on its slider is kept in `speed_kept` too (the window's, for the next lesson
   // opened in this session).
-  void draw(ImVec2 corner, ImVec2 size, Playback& playback, const std::string& said, const std::string& room_for,
+  void draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& playback, const std::string& said, const std::string& room_for,
             float scale, ImFont* words_font, double& speed_kept, ControlPlaces& controls);
 };
 

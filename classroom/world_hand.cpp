@@ -18,7 +18,7 @@ void WorldHand::forget() {
   panning_from.reset();
 }
 
-void WorldHand::hold_view(const Playback& playback, ImVec2 origin, ImVec2 size, float scale) {
+void WorldHand::hold_view(const classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale) {
   if (!held_view) return;
   if (!held || playback.lesson().scene().grabbed() == nullptr) {
     view_adjust.pan = held_view->pan;
@@ -40,7 +40,7 @@ const Camera& WorldHand::camera_at(ImVec2 point) const {
   return cameras.front();
 }
 
-void WorldHand::handle_mouse(Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status) {
+void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status) {
   ImGuiContext& context = *ImGui::GetCurrentContext();
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback.lesson();

@@ -48,10 +48,10 @@ struct WorldHand {
   // The camera whose strip holds `point`, or the first one.
   const Camera& camera_at(ImVec2 point) const;
   // Before the frame is built in `size` at `origin`: the pan that keeps the held point still.
-  void hold_view(const Playback& playback, ImVec2 origin, ImVec2 size, float scale);
+  void hold_view(const classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale);
   // After it is built: the mouse's wheel, clicks and drags. The status line says what the hand
   // holds while the run is paused (`status`), and is cleared of it once it plays or lets go.
-  void handle_mouse(Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status);
+  void handle_mouse(classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status);
 };
 
 }  // namespace frictionlab::ui

@@ -4,7 +4,7 @@
 
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 bool theory_hidden(const lessons::Lesson& lesson, const ClassPredictions& predictions, bool asking) {
   return asking && !lesson.predictions().empty() && !predictions.revealed;
@@ -28,4 +28,4 @@ std::optional<double> read_answer(const std::string& as_typed, std::string& why)
   return std::nullopt;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -10,7 +10,7 @@
 
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // The class's answers for the lesson on screen, and whether the theory has been revealed.
 struct ClassPredictions {
@@ -34,4 +34,4 @@ inline constexpr double largest_answer = 1e6;
 // filled when it is not one.
 std::optional<double> read_answer(const std::string& typed, std::string& why);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 void GaugeRecord::after_step(const Scene& scene) {
   const b2Body* body = scene.grabbed();
@@ -119,4 +119,4 @@ std::string stretches_text(const std::vector<HandStretch>& stretches) {
   return text;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

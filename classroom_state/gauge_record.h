@@ -11,7 +11,7 @@
 
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // One frame the hand held a body through the gauge.
 struct GaugeSample {
@@ -81,4 +81,4 @@ class GaugeRecord {
 // "hand-pulled 0.50–2.30 s", stretches joined by commas; "" when there are none.
 std::string stretches_text(const std::vector<HandStretch>& stretches);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

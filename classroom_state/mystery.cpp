@@ -7,7 +7,7 @@
 #include "physics/materials.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 // A whole number from 0 to count − 1, each equally likely: the engine's 64 bits, with the
@@ -106,4 +106,4 @@ std::set<std::string> Mystery::hidden() const {
   return {mu_s_name_, mu_k_name_};
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -16,7 +16,7 @@
 
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // The range the coefficients are drawn from, in hundredths: μs from 0.20 to 0.90, and μk
 // from 0.50 to 0.90 of μs (rounded to a hundredth), so μk < μs always and both are values a
@@ -90,4 +90,4 @@ class Mystery {
   bool revealed_ = false;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -3,7 +3,7 @@
 #include <initializer_list>
 #include <optional>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 // What Lua names after "...a nil value" at `at`: " (KIND 'NAME')", KIND one of `kinds`. Read by
@@ -83,4 +83,4 @@ std::string plain_words(const std::string& lua_message) {
   return "";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

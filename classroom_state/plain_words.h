@@ -5,11 +5,11 @@
 
 #include <string>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // "In plain words: ..." for a message Lua gives often (a nil indexed, called, added, compared or
 // joined; a missing end or bracket; a line Lua cannot read; an unfinished string); "" for any
 // other message.
 std::string plain_words(const std::string& lua_message);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

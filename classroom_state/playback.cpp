@@ -9,7 +9,7 @@
 
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 FileStamp file_stamp(const std::string& path) {
   struct stat status {};
   if (stat(path.c_str(), &status) != 0) return std::nullopt;
@@ -421,4 +421,4 @@ bool Playback::watch_file(double wall_seconds) {
   return true;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -19,7 +19,7 @@
 #include "lessons/runtime/readings.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // A file's modification time (ns) and size, to notice that it was saved; nothing when it
 // cannot be read.
@@ -169,4 +169,4 @@ using validation::exact_text;
 // The value of a parameter as text that sets it again exactly: "0.45", "plastic".
 std::string parameter_text(const lessons::Parameter& parameter);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

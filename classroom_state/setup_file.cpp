@@ -16,7 +16,7 @@
 #include "lessons/runtime/catalog.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 namespace fs = std::filesystem;
@@ -417,7 +417,7 @@ void write_setup(const std::string& path, const PreparedSetup& setup) {
   }
   const std::string text = setup_text(setup);
   try {
-    OutputFile file(path, is_setup_file);
+    files::OutputFile file(path, is_setup_file);
     file.write(text);
     file.commit();
   } catch (const std::runtime_error& error) {
@@ -514,4 +514,4 @@ std::string prediction_problem(const lessons::Lesson& lesson, const std::string&
   return "";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

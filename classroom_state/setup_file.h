@@ -35,7 +35,7 @@
 #include "classroom_state/mystery.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // The names --lock takes besides a lesson's parameters.
 inline const char* const lockable_settings[] = {"hz", "substeps", "friction"};
@@ -124,4 +124,4 @@ void check_setup(const PreparedSetup& setup, const std::string& setup_path, less
 // why not, naming the lesson's predictions or the row's choices.
 std::string prediction_problem(const lessons::Lesson& lesson, const std::string& row, const std::string& answer);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

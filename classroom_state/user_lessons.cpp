@@ -14,7 +14,7 @@
 
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 namespace fs = std::filesystem;
 
@@ -158,4 +158,4 @@ std::vector<UserLesson> user_lessons() {
   return found;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 // The folder's path, whether or not it exists; empty when there is no home to find it in.
 std::string user_lessons_folder();
@@ -38,4 +38,4 @@ std::string keep_user_lesson(const std::string& name, const std::string& script)
 // That title read from a script's text; empty when it has none written as a plain string.
 std::string written_title(const std::string& script);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

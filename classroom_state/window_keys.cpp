@@ -1,6 +1,6 @@
 #include "classroom_state/window_keys.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 const std::vector<WindowKey>& window_keys() {
   static const std::vector<WindowKey> keys = {
@@ -27,4 +27,4 @@ const std::vector<WindowKey>& window_keys() {
   return keys;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 
 struct WindowKey {
   std::string_view key;          // as printed on the keyboard: "Space", "Ctrl+S", "← →"
@@ -18,4 +18,4 @@ struct WindowKey {
 // In the order the help panel lists them: playing, stepping and resetting first.
 const std::vector<WindowKey>& window_keys();
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -45,7 +45,7 @@ std::string unused_path(const std::string& folder, const std::string& stem, cons
 
 void write_png(const Image& image, const std::string& path) {
   const std::vector<std::uint8_t> encoded = encode_png(image);
-  write_whole_file(path, encoded.data(), encoded.size());
+  files::write_whole_file(path, encoded.data(), encoded.size());
 }
 
 Image read_png(const std::string& path) {

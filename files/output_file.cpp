@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::files {
 namespace {
 
 // The temporary file being written now, for the signal handler: a fixed buffer, since a
@@ -118,4 +118,4 @@ void remove_partial_files_on_interrupt() {
   std::signal(SIGTERM, on_interrupt);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::files

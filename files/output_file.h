@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-namespace frictionlab::ui {
+namespace frictionlab::files {
 
 class OutputFile {
  public:
@@ -43,4 +43,4 @@ void write_whole_file(const std::string& path, const void* data, std::size_t siz
 // removed before the program ends with the signal's usual status. Call once, early.
 void remove_partial_files_on_interrupt();
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::files

@@ -10,7 +10,7 @@
 
 namespace {
 
-bool same(const frictionlab::ui::PreparedSetup& a, const frictionlab::ui::PreparedSetup& b) {
+bool same(const frictionlab::classroom_state::PreparedSetup& a, const frictionlab::classroom_state::PreparedSetup& b) {
   if (a.lesson != b.lesson || a.lock != b.lock || a.mystery != b.mystery || a.values.size() != b.values.size()) return false;
   for (std::size_t i = 0; i < a.values.size(); ++i) {
     if (a.values[i].name != b.values[i].name || a.values[i].text != b.values[i].text) return false;
@@ -27,15 +27,15 @@ bool same(const frictionlab::ui::PreparedSetup& a, const frictionlab::ui::Prepar
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  frictionlab::ui::PreparedSetup setup;
+  frictionlab::classroom_state::PreparedSetup setup;
   try {
-    setup = frictionlab::ui::parse_setup(text, "fuzz.setup");
+    setup = frictionlab::classroom_state::parse_setup(text, "fuzz.setup");
   } catch (const frictionlab::InvalidInput& error) {
     if (std::string(error.what()).rfind("fuzz.setup", 0) != 0) std::abort();  // every message names the file
     return 0;
   }
   try {
-    if (!same(setup, frictionlab::ui::parse_setup(frictionlab::ui::setup_text(setup), "again.setup"))) std::abort();
+    if (!same(setup, frictionlab::classroom_state::parse_setup(frictionlab::classroom_state::setup_text(setup), "again.setup"))) std::abort();
   } catch (const frictionlab::InvalidInput&) {
     std::abort();  // what was read must be written so that it reads again
   }

@@ -35,7 +35,7 @@ std::string roff_text(std::string_view words) {
 // ones wrap.
 std::string keys_table() {
   std::string table = ".TS\nl lx.\n";
-  for (const frictionlab::ui::WindowKey& key : frictionlab::ui::window_keys()) {
+  for (const frictionlab::classroom_state::WindowKey& key : frictionlab::classroom_state::window_keys()) {
     table += roff_text(key.key) + "\tT{\n" + roff_text(key.does) + "\nT}\n";
   }
   return table + ".TE\n";

@@ -70,7 +70,7 @@ inline ClassroomOptions prepared_setup_options() {
   options.lesson = "spring_pull";
   options.overrides = {{"mass", "1.5"}, {"k", "80"}, {"block", "plastic"}};
   options.lock = {"mass", "k", "friction"};
-  options.mystery = MysteryChoice{"plastic/wood", 42};
+  options.mystery = classroom_state::MysteryChoice{"plastic/wood", 42};
   options.settings.hz = 480.0;
   options.settings.substeps = 2;
   options.settings.treatment = FrictionTreatment::threshold;
@@ -88,10 +88,10 @@ inline void expect_prepared_setup(Classroom& window, const std::string& where) {
   EXPECT_TRUE(window.shown("mass") && window.shown("k") && window.shown("friction")) << where;
   EXPECT_FALSE(window.shown("mu_s") || window.shown("pull_speed") || window.shown("hz")) << where << ": the lock";
   ASSERT_TRUE(window.mystery().has_value()) << where;
-  EXPECT_EQ(window.mystery()->choice(), (MysteryChoice{"plastic/wood", 42})) << where;
+  EXPECT_EQ(window.mystery()->choice(), (classroom_state::MysteryChoice{"plastic/wood", 42})) << where;
   EXPECT_FALSE(window.mystery()->revealed()) << where;
-  EXPECT_EQ(lesson.parameter("mu_s").value, mystery_values(42).mu_s) << where << ": drawn again from the seed";
-  EXPECT_EQ(lesson.parameter("mu_k").value, mystery_values(42).mu_k) << where;
+  EXPECT_EQ(lesson.parameter("mu_s").value, classroom_state::mystery_values(42).mu_s) << where << ": drawn again from the seed";
+  EXPECT_EQ(lesson.parameter("mu_k").value, classroom_state::mystery_values(42).mu_k) << where;
   EXPECT_EQ(lesson.settings().hz, 480.0) << where;
   EXPECT_EQ(lesson.settings().substeps, 2) << where;
   EXPECT_EQ(lesson.settings().treatment, FrictionTreatment::threshold) << where;
@@ -120,7 +120,7 @@ class ClassroomHands {
   ClassroomHands& operator=(const ClassroomHands&) = delete;
 
   Classroom& classroom() { return *classroom_; }
-  Playback& playback() { return classroom_->playback(); }
+  classroom_state::Playback& playback() { return classroom_->playback(); }
   lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
   const std::string& folder() const { return folder_; }
 

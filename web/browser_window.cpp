@@ -142,11 +142,11 @@ void tell_the_page(ui::Classroom& classroom) {
   // given by a teacher stays as it was until something is changed. A prediction that does not
   // read yet is left out: the setup would not open.
   if (!p.run.link_setup_path.empty()) {
-    ui::PreparedSetup setup = classroom.current_setup(p.run.link_setup_path);
-    std::erase_if(setup.answers, [&](const ui::PreparedSetup::Answer& answer) {
-      return !ui::prediction_problem(classroom.playback().lesson(), answer.row, answer.text).empty();
+    classroom_state::PreparedSetup setup = classroom.current_setup(p.run.link_setup_path);
+    std::erase_if(setup.answers, [&](const classroom_state::PreparedSetup::Answer& answer) {
+      return !classroom_state::prediction_problem(classroom.playback().lesson(), answer.row, answer.text).empty();
     });
-    std::string text = ui::setup_text(setup);
+    std::string text = classroom_state::setup_text(setup);
     if (!p.told_setup) {
       p.told_setup = std::move(text);
     } else if (text != *p.told_setup) {

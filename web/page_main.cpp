@@ -187,7 +187,7 @@ EMSCRIPTEN_KEEPALIVE void frictionlab_file_written() { classroom->playback().fil
 
 // The window as a prepared setup's text, for a link; its lesson named as the page finds it.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_setup_text() {
-  return hand_over(ui::setup_text(classroom->current_setup(link_setup)));
+  return hand_over(classroom_state::setup_text(classroom->current_setup(link_setup)));
 }
 
 // Opens a setup file's text (a link's), as Lesson > Open a setup does. Returns "" or the message.
@@ -241,7 +241,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_body_on_screen(const char* name) {
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_parameter(const char* name) {
   for (const lessons::Parameter& parameter : classroom->playback().lesson().parameters()) {
-    if (parameter.name == name) return hand_over(ui::parameter_text(parameter));
+    if (parameter.name == name) return hand_over(classroom_state::parameter_text(parameter));
   }
   return hand_over("");
 }
@@ -260,7 +260,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
 // Lua's message in plain words, for the page's editor and bar (classroom_state/plain_words.h).
-EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(ui::plain_words(message)); }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(classroom_state::plain_words(message)); }
 // An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
 // ("x0 y0 x1 y1 scroll font"), or "" when no such panel was drawn.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_panel(const char* name) {

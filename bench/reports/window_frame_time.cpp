@@ -51,7 +51,7 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
     options.window.help = false;
     ui::Classroom classroom(options);
     // The lesson alone, the same frames, for the physics' share.
-    ui::Playback physics_only(options.lesson, {}, {});
+    classroom_state::Playback physics_only(options.lesson, {}, {});
     physics_only.play();
     std::vector<double> physics, whole, draw;
     for (int f = 0; f < frames; ++f) {

@@ -173,7 +173,7 @@ TEST(Classroom, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {
           hands.key(Key::r);
           EXPECT_EQ(hands.playback().problem(), "");
         }
-        hands.playback().set_parameter(parameter.name, parameter_text(parameter));
+        hands.playback().set_parameter(parameter.name, classroom_state::parameter_text(parameter));
       }
     }
   }
@@ -207,7 +207,7 @@ TEST(Classroom, ARunawaySimulationPausesAndSaysSo) {
 // pauses once, says which body fell and when, and plays on if asked without saying it again.
 TEST(Classroom, ABodyThatFallsPastEverythingPausesTheRunOnceAndSaysSo) {
   ClassroomHands hands("push");
-  Playback& playback = hands.playback();
+  classroom_state::Playback& playback = hands.playback();
   const auto play_until_paused = [&](int frames) {
     hands.key(Key::space);
     for (int i = 0; i < frames && playback.playing(); ++i) hands.frame(0.25);
@@ -234,7 +234,7 @@ TEST(Classroom, ABodyThatFallsPastEverythingPausesTheRunOnceAndSaysSo) {
 // can hold them (the pulley's weight hangs below the table, above the floor).
 TEST(Classroom, NoBuiltinLessonsBodyFallsOffDuringItsRun) {
   for (const std::string& name : lessons::builtin_lessons()) {
-    Playback playback(lessons::resolve_lesson(name), {}, {});
+    classroom_state::Playback playback(lessons::resolve_lesson(name), {}, {});
     playback.run_to(playback.lesson().duration());
     EXPECT_EQ(playback.notice().find("fallen off"), std::string::npos) << name << ": " << playback.notice();
   }

@@ -47,9 +47,9 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   EXPECT_LT(hand_speed, 0.3);
 
   const Scene& scene = hands.lesson().scene();
-  const GaugeRecord& gauge = hands.classroom().playback().gauge();
+  const classroom_state::GaugeRecord& gauge = hands.classroom().playback().gauge();
   ASSERT_FALSE(gauge.empty());
-  const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
+  const std::optional<classroom_state::GaugeFigures> figures = gauge.figures(scene.frame_step());
   ASSERT_TRUE(figures.has_value());
   ASSERT_TRUE(figures->plateau.has_value()) << "it slid for less than 0.1 s after settling";
   // The lesson pushed too: the figures are the hand's pull and the push together, which is what
@@ -62,7 +62,7 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   // The gauge alone at the peak, as the class reads the scale: within 2 % of mu_s·m·g (the push
   // is under 0.5 %).
   const auto at_peak = std::find_if(gauge.samples().begin(), gauge.samples().end(),
-                                    [&](const GaugeSample& sample) { return sample.t == figures->peak_time; });
+                                    [&](const classroom_state::GaugeSample& sample) { return sample.t == figures->peak_time; });
   ASSERT_NE(at_peak, gauge.samples().end());
   EXPECT_NEAR(at_peak->force, mu_s * m * g, 0.02 * mu_s * m * g);
   // The plateau: the mean pull while it slid, from 0.4 s after the peak; the pull's swing has
@@ -72,7 +72,7 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
   EXPECT_NEAR(*figures->peak - *figures->plateau, (mu_s - mu_k) * m * g, 0.1 * (mu_s - mu_k) * m * g);
   // Back through the time bar and forward again: the run is replayed, and the gauge reads the
   // same, sample for sample.
-  const std::vector<GaugeSample> recorded = gauge.samples();
+  const std::vector<classroom_state::GaugeSample> recorded = gauge.samples();
   const double end = scene.time();
   hands.classroom().playback().scrub_to(0.5);
   EXPECT_LT(gauge.samples().size(), recorded.size());
@@ -109,13 +109,13 @@ TEST(ForceGauge, ThePeakIsTheBreakawaysNotALargerPullWhileItSlides) {
   EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + push: held so far ", 0), 0u)
       << hands.classroom().gauge_figures();
   move(1.0f, 100);  // until it has broken away
-  const GaugeRecord& gauge = hands.classroom().playback().gauge();
+  const classroom_state::GaugeRecord& gauge = hands.classroom().playback().gauge();
   const double frame_step = hands.lesson().scene().frame_step();
   ASSERT_TRUE(gauge.figures(frame_step)->broke_away) << "it slid within 2 s";
   move(8.0f, 30);  // then a hard yank
-  const std::optional<GaugeFigures> figures = gauge.figures(frame_step);
+  const std::optional<classroom_state::GaugeFigures> figures = gauge.figures(frame_step);
   double largest = 0.0;
-  for (const GaugeSample& sample : gauge.samples()) largest = std::max(largest, std::abs(sample.pull));
+  for (const classroom_state::GaugeSample& sample : gauge.samples()) largest = std::max(largest, std::abs(sample.pull));
   ASSERT_GT(largest, 1.2 * mu_s * m * g) << "the yank pulled harder than the breakaway";
   ASSERT_TRUE(figures->peak.has_value());
   EXPECT_NEAR(*figures->peak, mu_s * m * g, 0.01 * mu_s * m * g) << "the peak is the breakaway's";
@@ -133,8 +133,8 @@ TEST(ForceGauge, WhenTheLessonPullsTooTheFiguresAreThePullsTogether) {
   const double m = hands.lesson().parameter("mass").value;
   hands.pull_right("block", 0.0f, 0.0, 5.0);
   const Scene& scene = hands.lesson().scene();
-  const GaugeRecord& gauge = hands.classroom().playback().gauge();
-  const std::optional<GaugeFigures> figures = gauge.figures(scene.frame_step());
+  const classroom_state::GaugeRecord& gauge = hands.classroom().playback().gauge();
+  const std::optional<classroom_state::GaugeFigures> figures = gauge.figures(scene.frame_step());
   ASSERT_TRUE(figures.has_value());
   EXPECT_EQ(figures->lesson_pulls, "spring");
   std::printf("spring_pull held: peak %.4f N (mu_s·m·g %.4f N), plateau %.4f N over %.2f–%.2f s (mu_k·m·g %.4f N)\n",
@@ -217,12 +217,12 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
   ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   hands.pull_right("block", 1.0f, 1.0);
-  Playback& playback = hands.classroom().playback();
+  classroom_state::Playback& playback = hands.classroom().playback();
   playback.run_to(20.0);
   const double taken = playback.lesson().scene().time();
   hands.pull_right("block", 1.0f, 1.0);
   const double h = playback.lesson().scene().frame_step();
-  const GaugeRecord& gauge = playback.gauge();
+  const classroom_state::GaugeRecord& gauge = playback.gauge();
   ASSERT_EQ(gauge.stretches(h).size(), 2u);
   const double end = gauge.samples().back().t;
   const Chart chart = gauge_chart(gauge, h, theme(ThemeName::light));
@@ -235,7 +235,7 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
   // The lesson pushes too: the line is the hand's reading and the push together along the floor,
   // as the figures over it are taken.
   EXPECT_EQ(chart.series[0].name, "hand + push");
-  const GaugeSample& last = gauge.samples().back();
+  const classroom_state::GaugeSample& last = gauge.samples().back();
   EXPECT_NEAR(chart.series[0].points.back().second, last.force + 0.2 * (last.t - h), 1e-3);
   for (const auto& [from, to] : chart.bands) EXPECT_GE(from, taken - h);
 }
@@ -274,7 +274,7 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
 TEST(ForceGauge, TheRunsEndWaitsForAPullingHand) {
   ClassroomHands hands(gauge_options("push"));
   hands.frame();
-  Playback& playback = hands.classroom().playback();
+  classroom_state::Playback& playback = hands.classroom().playback();
   const double duration = playback.lesson().duration();
   const ImVec2 held = hands.take_hold_and_play("block");
   const int frames = static_cast<int>(std::lround((duration + 1.0) * 60.0));
@@ -318,10 +318,10 @@ TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
   ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   hands.pull_right("block", 1.0f, 2.0);
-  Playback& playback = hands.classroom().playback();
+  classroom_state::Playback& playback = hands.classroom().playback();
   playback.refresh_readings();
   const double h = hands.lesson().scene().frame_step();
-  const std::vector<HandStretch> stretches = playback.gauge().stretches(h);
+  const std::vector<classroom_state::HandStretch> stretches = playback.gauge().stretches(h);
   ASSERT_EQ(stretches.size(), 1u);
   EXPECT_NEAR(stretches[0].from, 0.0, 1e-9);
   EXPECT_NEAR(stretches[0].to, hands.lesson().scene().time(), 0.02);  // let go in the last display frame
@@ -433,7 +433,7 @@ TEST(ForceGauge, ABodyTheHandHoldsStillSticks) {
   const Scene& scene = hands.lesson().scene();
   ASSERT_EQ(scene.grabbed(), block);
   EXPECT_NEAR(scene.time(), 4.0, 0.01);
-  const std::optional<GaugeFigures> figures = hands.classroom().playback().gauge().figures(scene.frame_step());
+  const std::optional<classroom_state::GaugeFigures> figures = hands.classroom().playback().gauge().figures(scene.frame_step());
   ASSERT_TRUE(figures && figures->plateau) << "it slid while the hand pulled";
   // At rest, to float round-off: not a creep of 0.2 mm/s the speed tool shows as 0.000 m/s.
   EXPECT_LT(block->GetLinearVelocity().Length(), 1e-6f) << speed_reading(block);

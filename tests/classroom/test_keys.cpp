@@ -155,7 +155,7 @@ TEST(WindowKeys, SpaceInAParametersBoxSetsTheValueAndPlays) {
 // The Mystery tab's answers are numbers too.
 TEST(WindowKeys, SpaceInAMysteryAnswerKeepsItAndPlays) {
   ClassroomOptions options = lesson_options("spring_pull");
-  options.mystery = MysteryChoice{"aluminium/wood", 42};
+  options.mystery = classroom_state::MysteryChoice{"aluminium/wood", 42};
   ClassroomHands hands(options);
   hands.texts();
   hands.click_text("Mystery###mystery");
@@ -163,7 +163,7 @@ TEST(WindowKeys, SpaceInAMysteryAnswerKeepsItAndPlays) {
   hands.type("0.5");
   ASSERT_TRUE(typing(hands));
   press_space(hands);
-  const std::optional<Mystery>& mystery = hands.classroom().mystery();
+  const std::optional<classroom_state::Mystery>& mystery = hands.classroom().mystery();
   ASSERT_TRUE(mystery.has_value());
   ASSERT_TRUE(mystery->answer_mu_s.has_value()) << "the answer was kept";
   EXPECT_EQ(*mystery->answer_mu_s, 0.5);
@@ -339,7 +339,7 @@ TEST(Stopwatch, ShownFromTheSettingsItTimesTheRunFromTheStart) {
 // what it timed, it reads what it read then, is on again, and keeps the laps taken by then only.
 TEST(Stopwatch, TakenBackInTimeItReadsWhatItReadThen) {
   ClassroomHands hands(lesson_options("push"));
-  Playback& playback = hands.classroom().playback();
+  classroom_state::Playback& playback = hands.classroom().playback();
   const auto now = [&] { return hands.lesson().scene().time(); };  // R and the time bar rebuild the scene
   const Stopwatch& stopwatch = hands.classroom().tools().stopwatch;
   hands.frame();

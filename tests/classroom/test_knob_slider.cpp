@@ -37,7 +37,7 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
       options.window.theme = theme;
       ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
       hands.frame();
-      Playback& playback = hands.classroom().playback();
+      classroom_state::Playback& playback = hands.classroom().playback();
       // Played a while, so the time bar has a range to be at the start, middle and end of.
       playback.run_to(1.0);
       hands.frame();
@@ -58,7 +58,7 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
         ++checked;
       };
       const std::string in = std::string(lesson) + (theme == ThemeName::dark ? ", dark" : "");
-      for (const double speed : {Playback::slowest, 1.0, Playback::fastest}) {
+      for (const double speed : {classroom_state::Playback::slowest, 1.0, classroom_state::Playback::fastest}) {
         playback.set_speed(speed);
         check("speed", in + ", speed " + std::to_string(speed));
       }

@@ -23,7 +23,7 @@ namespace {
 // Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
 // "0.470"), not as part of a longer number ("10.47", "0.475").
 bool mentions(const std::string& text, double value) {
-  std::set<std::string> forms{exact_text(value)};
+  std::set<std::string> forms{classroom_state::exact_text(value)};
   for (const char* format : {"%.2f", "%.3f", "%g", "%.3g"}) {
     char shown[32];
     std::snprintf(shown, sizeof shown, format, value);
@@ -44,7 +44,7 @@ bool mentions(const std::string& text, double value) {
 ClassroomOptions mystery_options(const std::string& lesson, const std::string& pair, std::uint64_t seed) {
   ClassroomOptions options;
   options.lesson = lesson;
-  options.mystery = MysteryChoice{pair, seed};
+  options.mystery = classroom_state::MysteryChoice{pair, seed};
   return options;
 }
 
@@ -63,7 +63,7 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   options.window.predictions = GetParam() != Theory::table;
   // Tall enough for spring_pull's four rows of theory to keep their own panel beside the tabs.
   ClassroomHands hands(options, ImVec2(1280.0f, 800.0f));
-  const MysteryValues truth = mystery_values(window_seed);
+  const classroom_state::MysteryValues truth = classroom_state::mystery_values(window_seed);
   Classroom& window = hands.classroom();
   if (GetParam() == Theory::predictions_revealed) {
     window.key_pressed(Key::t, false);  // the teacher reveals the theory: the mystery's stays hidden
@@ -122,8 +122,8 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   EXPECT_TRUE(mentions(revealed, truth.mu_k)) << revealed;
   EXPECT_TRUE(window.control("mu_s slider").has_value()) << "the sliders come back";
   const std::string after = read_file(lessons::settings_path_for(window.export_history()));
-  EXPECT_NE(after.find("\nmu_s = " + exact_text(truth.mu_s) + "\n"), std::string::npos) << after;
-  EXPECT_NE(after.find("\nmu_k = " + exact_text(truth.mu_k) + "\n"), std::string::npos) << after;
+  EXPECT_NE(after.find("\nmu_s = " + classroom_state::exact_text(truth.mu_s) + "\n"), std::string::npos) << after;
+  EXPECT_NE(after.find("\nmu_k = " + classroom_state::exact_text(truth.mu_k) + "\n"), std::string::npos) << after;
   EXPECT_NE(window.window_title().find("revealed"), std::string::npos) << window.window_title();
 }
 
@@ -163,14 +163,14 @@ TEST(MysteryWindow, NoTimeAxisTellsTheRunsLengthBeforeTheReveal) {
 
 TEST(MysteryWindow, TypedAnswersAreJudgedAndABadOneSaysWhy) {
   ClassroomHands hands(mystery_options("spring_pull", "aluminium/wood", window_seed));
-  const MysteryValues truth = mystery_values(window_seed);
+  const classroom_state::MysteryValues truth = classroom_state::mystery_values(window_seed);
   hands.texts();
   // The class predicts first (the Predict tab is in front); then it measures, in the Mystery tab.
   hands.click_text("Mystery###mystery");
   hands.click("mystery answer mu_s");
   hands.type("0.5");
   hands.press_enter();
-  const std::optional<Mystery>& mystery = hands.classroom().mystery();
+  const std::optional<classroom_state::Mystery>& mystery = hands.classroom().mystery();
   ASSERT_TRUE(mystery->answer_mu_s.has_value());
   EXPECT_EQ(*mystery->answer_mu_s, 0.5);
   char expected[32];
@@ -202,7 +202,7 @@ TEST(MysteryWindow, TheMenuMakesAPairAMysteryAtTheStartOfAFreshRun) {
   EXPECT_NE(window.make_mystery({"slope/fish", 7}), "");
   EXPECT_FALSE(window.mystery().has_value()) << "a refused pair changes nothing";
   EXPECT_EQ(window.make_mystery({"slope/block", 7}), "");
-  const MysteryValues truth = mystery_values(7);
+  const classroom_state::MysteryValues truth = classroom_state::mystery_values(7);
   EXPECT_EQ(hands.lesson().parameter("mu_s").value, truth.mu_s);
   EXPECT_EQ(hands.lesson().parameter("mu_k").value, truth.mu_k);
   EXPECT_EQ(hands.lesson().scene().frame(), 0) << "a new surface starts a new run";
@@ -221,10 +221,10 @@ TEST(MysteryWindow, UnderALockTheMenuDrawsNoNewMysteryButStillReveals) {
   ClassroomOptions options;
   options.lesson = "incline";
   options.lock = {"angle", "mass"};
-  options.mystery = MysteryChoice{"slope/block", 42};
+  options.mystery = classroom_state::MysteryChoice{"slope/block", 42};
   ClassroomHands hands(options);
   Classroom& window = hands.classroom();
-  const MysteryValues truth = mystery_values(42);
+  const classroom_state::MysteryValues truth = classroom_state::mystery_values(42);
   hands.frame();
   hands.click("Mystery menu");
   hands.click("mystery block/slope");
@@ -257,7 +257,7 @@ namespace {
 TEST(MysteryWindow, ARebuildKeepsTheValuesAndThePairCannotBeChangedAway) {
   ClassroomOptions options = mystery_options("spring_pull", "aluminium/wood", window_seed);
   ClassroomHands hands(options);
-  const MysteryValues truth = mystery_values(window_seed);
+  const classroom_state::MysteryValues truth = classroom_state::mystery_values(window_seed);
   hands.texts();
   hands.click("block slider");
   hands.frame();
@@ -319,7 +319,7 @@ TEST(MysteryWindow, TheAnswersAndTheRevealAreInSightInProjectorMode) {
 // place and the map stays away, rather than every tab shrinking and moving at the reveal. With
 // predictions asked first or not: every tab's name whole.
 TEST(MysteryWindow, TheStabilityMapTabComesBackAtTheRevealWhereItFits) {
-  const std::string pair = mystery_pairs(lessons::Lesson(lessons::resolve_lesson("incline"))).at(0);
+  const std::string pair = classroom_state::mystery_pairs(lessons::Lesson(lessons::resolve_lesson("incline"))).at(0);
   struct Screen {
     const char* name;
     ImVec2 size;

@@ -304,7 +304,7 @@ TEST(PredictionPanel, SpaceTypedIntoAPredictionPlaysAndJoinsNoNumber) {
   hands.frame();  // ImGui tells what the frame before asked for
   EXPECT_FALSE(ImGui::GetIO().WantTextInput) << "the typing ended";
   std::string why;
-  EXPECT_EQ(read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
+  EXPECT_EQ(classroom_state::read_answer(" 40 ", why), std::optional<double>(40.0)) << why;
 }
 
 // A teacher who takes no predictions has the theory from the start.

@@ -70,9 +70,9 @@ TEST(SetupDialog, SavesBesideTheScreenshotsUnderTheLessonsName) {
   const std::string path = hands.folder() + "/incline.setup";
   ASSERT_TRUE(fs::is_regular_file(path));
   EXPECT_EQ(hands.classroom().status(), "Setup saved to " + path);
-  const PreparedSetup setup = read_setup(path);
+  const classroom_state::PreparedSetup setup = classroom_state::read_setup(path);
   EXPECT_EQ(setup.lesson, "incline");
-  const auto angle = std::find_if(setup.values.begin(), setup.values.end(), [](const PreparedSetup::Value& v) { return v.name == "angle"; });
+  const auto angle = std::find_if(setup.values.begin(), setup.values.end(), [](const classroom_state::PreparedSetup::Value& v) { return v.name == "angle"; });
   ASSERT_NE(angle, setup.values.end());
   EXPECT_EQ(angle->text, "31");
   EXPECT_FALSE(setup.mystery.has_value());

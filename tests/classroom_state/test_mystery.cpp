@@ -13,7 +13,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 TEST(MysteryDraw, TheEngineIsTheStandardsMersenneTwister) {
@@ -91,4 +91,4 @@ TEST(MysteryCloseness, AnAnswerIsJudgedInPercentOfTheTrueValue) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

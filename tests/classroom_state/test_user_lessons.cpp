@@ -10,7 +10,7 @@
 
 #include "classroom_state/user_lessons.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom_state {
 namespace {
 
 namespace fs = std::filesystem;
@@ -99,4 +99,4 @@ TEST(UserLessons, EachIsListedWithItsLessonsTitle) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom_state

@@ -458,10 +458,10 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
   int lessons_with_a_mystery = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
-    const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(options.lesson));
+    const std::vector<std::string> pairs = classroom_state::mystery_pairs(lessons::Lesson(options.lesson));
     if (pairs.empty()) continue;
     ++lessons_with_a_mystery;
-    options.mystery = MysteryChoice{pairs.front(), 1};
+    options.mystery = classroom_state::MysteryChoice{pairs.front(), 1};
     // No predictions asked: they would keep the Predict tab in front of the Mystery tab (the
     // tab opened by a click, with predictions asked: WindowTabsLayout).
     options.window.predictions = false;
@@ -766,11 +766,11 @@ TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIs
       const bool has_map = !tabs.window().stability_map_tab().chart.cells.empty();
       tabs.check(where + ", Stability map tab", has_map ? "the regularized law here" : "This lesson has no \u03bcs");
     }
-    const std::vector<std::string> pairs = mystery_pairs(lessons::Lesson(lessons::resolve_lesson(entry.name)));
+    const std::vector<std::string> pairs = classroom_state::mystery_pairs(lessons::Lesson(lessons::resolve_lesson(entry.name)));
     if (pairs.empty()) continue;
     ClassroomOptions options;
     options.lesson = entry.name;
-    options.mystery = MysteryChoice{pairs.front(), 1};
+    options.mystery = classroom_state::MysteryChoice{pairs.front(), 1};
     WindowTabs tabs(screen, options);
     tabs.window().answer_mystery(0.5, 0.25);
     tabs.click("Mystery tab");
