@@ -449,13 +449,13 @@ end
 -- predict, not from what the world did: stuck, a block δs further along the turning surface is
 -- flung along it by m·θ'²·δs more and pressed by m·θ''·δs more, which moves the limit by μ
 -- times that, and δs is at most the slide row's own bound there (start_drift's gap, 0.2 % of
--- the path slid and 3 mm: a world further off fails that row anyway); the turn's share of N
+-- the path slid and 3 mm, the row's bound so far); the turn's share of N
 -- arrives a step late (late_share), moving the limit by μ times it; and the listener takes
--- friction within 1e-5 of μ·N for friction at the limit (its breakaway tolerance). Past the
--- limit the world may also hold a stuck contact up to the hold band past μ·N for a step
--- while the listener tells the solver's leftover from a real excess, so a model that breaks
--- away by less than that may see the world hold on; the band only makes the world hold, never
--- slip, so a model that holds on is given none of it.
+-- friction within 1e-5 of μ·N for friction at the limit (its breakaway tolerance). The
+-- listener's hold band is no part of it: the band keeps a stuck contact past μ·N only for an
+-- excess that looks like the solver's leftover (the block sliding into the step) or that halves
+-- each step, and a smooth, lasting excess on a stuck block breaks away at once; allowing the
+-- band here would excuse a world that holds on 2 % past μ·N, which the rows exist to catch.
 local grazing_for, grazing_scanned, grazing_at, grazing_path
 -- The world's record from `from` to `to` (s): whether the block broke away there (a step
 -- recorded slipping after one recorded not), and whether it was recorded slipping at all.
@@ -478,7 +478,12 @@ local function world_between(from, to)
 end
 function grazes_by(t)
   local last = sample(t)  -- first: it may solve further
-  if grazing_for ~= horizon then grazing_for, grazing_scanned, grazing_at, grazing_path = horizon, 2, nil, 0 end
+  if grazing_for ~= horizon then
+    -- The scan starts at sample 3 (it needs two before it); the path counts from sample 1, as the
+    -- slide row's does.
+    local first_leg = #turning.slide >= 2 and math.abs(turning.slide[2] - turning.slide[1]) or 0
+    grazing_for, grazing_scanned, grazing_at, grazing_path = horizon, 2, nil, first_leg
+  end
   local limit = math.max(param.mu_s, param.mu_k)
   local function stuck(k) return turning.contact[k] == "sticking" end
   local function margin(k) return limit * turning.normal[k] - math.abs(turning.friction[k]) end
@@ -515,14 +520,14 @@ function grazes_by(t)
       elseif turning.contact[k + 1] == "slipping" and bending > 0 then
         -- It broke away before sample k + 1: the margin carried on as it went (a parabola
         -- through the last three stuck samples, m_k + rate·x + bending·x²/2, x in samples
-        -- after k) would bottom out within reach, and the band, and turn back. The world's
+        -- after k) would bottom out within reach and turn back. The world's
         -- block may break away wherever the model's margin is within reach of the limit: from
         -- the stuck samples before k where it is, up to the parabola's later crossing of it.
         local rate = falling + 0.5 * bending
         if rate < 0 then
           local reach = allowed(k, path)
           local least = margin(k) - rate * rate / (2 * bending)
-          if least > -(reach + hold_band * limit * turning.normal[k]) then
+          if least > -reach then
             local later = (-rate + math.sqrt(math.max(rate * rate - 2 * bending * (margin(k) - reach), 0))) / bending
             local first = k
             while first > 1 and stuck(first - 1) and margin(first - 1) < reach do first = first - 1 end
