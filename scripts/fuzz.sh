@@ -44,13 +44,15 @@ done
 mkdir -p build-fuzz/findings build-fuzz/logs
 # One target a core at once: each libFuzzer run is one process on one core, so on two cores
 # the four minutes of fuzzing take two, with every target fuzzed as long as before.
-fuzz_one() {
+fuzz_one() {  # only ever started with &
   local target=$1 corpus=build-fuzz/corpus/$1 log=build-fuzz/logs/$1.log dictionary=()
   mkdir -p "$corpus"
   [ "$target" = fuzz_lesson_loader ] && dictionary=(-dict=fuzz/lesson.dict)
   # -timeout: an input that takes longer than this is a hang; the fuzzing budgets end any script call in 0.5 s.
   # FRICTIONLAB_FUZZ_SEED fixes libFuzzer's random seed (the test command's runs repeat); unset, each run differs.
-  ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 "build-fuzz/fuzz/$target" "${dictionary[@]}" \
+  # exec: run in the background (its own subshell), the fuzzer takes the subshell's place, so the
+  # pid the script waits for and may stop is the fuzzer's own.
+  ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=64 exec "build-fuzz/fuzz/$target" "${dictionary[@]}" \
     -seed="${FRICTIONLAB_FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=20 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
     "$corpus" "$seeds/$target" >"$log" 2>&1
@@ -62,11 +64,15 @@ report_one() {
     failed=1
     echo "   FOUND a crash, leak or hang: see $log and build-fuzz/findings/"
   fi
-  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "$log" | sed 's/^/   /'
-  grep -E '#[0-9]+.*(DONE|pulse|NEW|REDUCE).*cov:' "$log" | tail -1 | sed 's/^/   last: /'
+  # A fuzzer that never started has no figures: say nothing more, and go on to the others.
+  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "$log" | sed 's/^/   /' || true
+  grep -E '#[0-9]+.*(DONE|pulse|NEW|REDUCE).*cov:' "$log" | tail -1 | sed 's/^/   last: /' || true
 }
 at_once=$(nproc)
 failed=0
+# Stopped early (Ctrl+C, or an error here), the script leaves no fuzzer of its own running.
+pids=()
+trap 'kill "${pids[@]}" 2>/dev/null || true' EXIT
 pending=("${targets[@]}")
 while [ ${#pending[@]} -gt 0 ]; do
   batch=("${pending[@]:0:at_once}")

@@ -29,7 +29,8 @@ part_done "the web version: build and tests"
 
 # -O1 -g1, not RelWithDebInfo's -O2 -g: the sanitizers' own advice is -O1 for speed, and line
 # tables are all a report's stack needs. Measured on two cores: the build took 16 minutes
-# with -O2 -g (tests/scenarios/test_builtin_lessons.cpp alone 95 s, 46 s with -O1 -g1).
+# with -O2 -g (tests/scenarios/test_builtin_lessons.cpp alone 95 s, 46 s with -O1 -g1). That is
+# the libraries' level; the test files themselves are -O0 there (tests/CMakeLists.txt says why).
 scripts/setup.sh build-sanitize -DFRICTIONLAB_WERROR=ON -DFRICTIONLAB_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
 part_done "the sanitizer build"

@@ -13,9 +13,10 @@ target_compile_definitions(web_gtest PUBLIC GTEST_HAS_PTHREAD=0)
 target_compile_options(web_gtest PRIVATE -w)
 
 set(tests_folder "${PROJECT_SOURCE_DIR}/tests")
-# -O1 at the link (after the build type's -O3, so it wins there): the objects are compiled with -O3
-# all the same, and the link's -O3 passes (wasm-opt) cost 17.5 s a test program against 1.7 s,
-# six minutes of two cores for 23 programs that run once.
+# -O1 at the link (after the build type's -O3, so it wins there): the libraries' objects are
+# compiled with -O3 all the same (the test files at -O1, below), and the link's -O3 passes
+# (wasm-opt) cost 17.5 s a test program against 1.7 s, six minutes of two cores for 23 programs
+# that run once.
 set(web_test_link_options -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sTOTAL_STACK=4MB
                           -sWASM_ASYNC_COMPILATION=0 -O1)
 # FILE is a test file's path under tests/ without .cpp (tests/README.md maps them); the target
