@@ -137,7 +137,16 @@ local function seen(speed_probe, epsilon)
   -- and then wanders there (c = 1000 N·s/m, b = 313.6 N·s²/m² at ε = 0.05 m/s: 0.051 m/s
   -- around the middle of the run, 0.025 at its end, from 0.0007 at the first step).
   local first = swing(1, math.min(2, n))
-  return (late > 1e-3 * epsilon and (late >= 0.5 * middle or late > first)) and "jitters" or "settles"
+  -- A swing that shrinks slowly may still be above half its middle's at the end: with the
+  -- step's factor near −1 it takes the whole run to halve (c = 1000 N·s/m, h·k = 1.014: −0.998
+  -- a step; 0.0016 m/s at first, 0.0010 mid-run and 0.0006 at the end). It settles all the
+  -- same if it never grew past its first steps', never left the law's linear branch (|v| < ε,
+  -- where a jitter's swing ends up) and still shrinks from the middle of the run to its end.
+  local fastest = 0
+  for i = 3, n do fastest = math.max(fastest, math.abs(speeds[i])) end
+  local shrinking = swing(3, n) <= first and fastest < epsilon and late < middle
+  if late <= 1e-3 * epsilon or shrinking then return "settles" end
+  return (late >= 0.5 * middle or late > first) and "jitters" or "settles"
 end
 
 -- A block that breaks away slides on under mu_k, c and b; with strong drag it can cover less
