@@ -119,8 +119,38 @@ local function predicted()
                                mu_s = math.max(param.mu_s, param.mu_k) }
 end
 
-expect { "tips or slides", predicted = function() return predicted().outcome end,
-         measured = function() return (first_outcome()) end }
+-- The record tells the step it happened in, and the push during that step, which grows by
+-- push_rate·h a step: up to that much off the exact push, and 0.5 % for the solver. And a step
+-- more where the box must tip within the push's first two steps: a fresh contact, its load
+-- moved from nothing to past tipping in one step, 0.7 % past it, still left the back edge 0.40 N
+-- of its 4.9 (a light narrow box at 141 N/s; at 1.3 to 60 N/s the first step past the tipping
+-- push is the one recorded).
+local function push_tolerance()
+  local steps = predicted().force < 2 * push_rate * step_length() and 2 or 1
+  return 0.005 * predicted().force + steps * push_rate * step_length()
+end
+-- Where the push that tips the box and the push that slides it lie within that of each other
+-- (h within as much of d/(2·mu_s)), the record cannot tell which came first: the step both
+-- happen in shows the two at once, and the solver's last parts in a thousand pick which it
+-- reports first (d = 2 m, h = 1.455 m, mu_s 0.6873: both at 6.742 N, the box slid in the step
+-- its back edge let go). Theory then says it is a tie; so does the record where the world's
+-- first outcome came at that push (within the same tolerance).
+local tie = "a tie: tips and slides within a step"
+local function is_tie()
+  local mu, force = math.max(param.mu_s, param.mu_k), predicted().force
+  if mu == 0 then return false end  -- frictionless: it slides at the first push
+  local ratio = width / (2 * push_height * mu)  -- the tipping push over the sliding push
+  local other = predicted().outcome == "tips" and force / ratio or force * ratio
+  return math.abs(other - force) <= push_tolerance()
+end
+
+expect { "tips or slides",
+  predicted = function() return is_tie() and tie or predicted().outcome end,
+  measured = function()
+    local outcome, push_then = first_outcome()
+    if outcome and is_tie() and math.abs(push_then - predicted().force) <= push_tolerance() then return tie end
+    return outcome
+  end }
 
 expect { "push when it happens", unit = "N",
   predicted = function() return predicted().force end,
@@ -128,16 +158,7 @@ expect { "push when it happens", unit = "N",
     local _, push_then = first_outcome()
     return push_then
   end,
-  -- The record tells the step it happened in, and the push during that step, which grows by
-  -- push_rate·h a step: up to that much off the exact push, and 0.5 % for the solver. And a
-  -- step more where the box must tip within the push's first two steps: a fresh contact, its
-  -- load moved from nothing to past tipping in one step, 0.7 % past it, still left the back
-  -- edge 0.40 N of its 4.9 (a light narrow box at 141 N/s; at 1.3 to 60 N/s the first step
-  -- past the tipping push is the one recorded).
-  tolerance = function()
-    local steps = predicted().force < 2 * push_rate * step_length() and 2 or 1
-    return 0.005 * predicted().force + steps * push_rate * step_length()
-  end }
+  tolerance = push_tolerance }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "tips or slides", choices = { "tips", "slides" },
