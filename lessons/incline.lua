@@ -42,7 +42,8 @@ probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
 probe { "friction_force", unit = "N", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
-plot { "Motion down the slope", y = { "distance", "speed" } }
+plot { "Distance down the slope", y = { "distance" } }
+plot { "Speed down the slope", y = { "speed" } }
 plot { "Forces from the slope", y = { "friction_force", "normal_force" } }
 
 -- Expectations ----------------------------------------------------------------------------

@@ -82,7 +82,8 @@ probe { "front_load", unit = "N", read = { touch, "load_right" } }
 probe { "slipping", read = { touch, "slipping" } }
 probe { "contact_points", read = { touch, "points" } }
 
-plot { "What the box does", y = { "tilt", "slide" } }
+plot { "How far the box tips", y = { "tilt" } }
+plot { "How far the box slides", y = { "slide" } }
 plot { "The floor's push on each edge", x = "push", y = { "back_load", "front_load" } }
 plot { "Friction against the push", x = "push", y = { "friction_force" } }
 

@@ -176,6 +176,26 @@ void LessonBuild::numbers_returned(int reference, int count, const std::string& 
 
 namespace {
 double duration_of(LessonBuild& build);
+
+// Every probe an axis lists in the same unit (the names are known by now).
+void require_one_unit(const Plot& plot, const std::vector<std::string>& names, const char* axis,
+                      const std::vector<ProbeInfo>& probes) {
+  const auto unit_of = [&](const std::string& name) {
+    for (const ProbeInfo& probe : probes) {
+      if (probe.name == name) return probe.unit;
+    }
+    return std::string();
+  };
+  for (const std::string& name : names) {
+    if (unit_of(name) == unit_of(names.front())) continue;
+    const auto shown = [&](const std::string& probe) {
+      const std::string unit = unit_of(probe);
+      return probe + (unit.empty() ? std::string(" (no unit)") : " (" + unit + ")");
+    };
+    throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': its " + axis + " probes " + shown(names.front()) +
+                      " and " + shown(name) + " differ in unit, and one axis has one scale; give each unit a plot of its own");
+  }
+}
 }  // namespace
 
 // Read in blocks, not through a stream buffer's characters: in WebAssembly a lesson's start
@@ -262,6 +282,10 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, std::strin
       throw ScriptError(plot.declared_at + ": plot '" + plot.title + "': no probe is named '" + name + "'; probes:" + listed +
                         ", and x may also be \"time\"");
     }
+    // One axis has one scale: a tilt in degrees beside a slide in metres (tipping_box's first
+    // plot once) drew the slide as a flat line at 0, and a class read it as "it never slides".
+    require_one_unit(plot, plot.y, "y", next->probes);
+    require_one_unit(plot, plot.xs, "x", next->probes);
   }
   try_theory_curves(*next);
   check_predictions(*next);

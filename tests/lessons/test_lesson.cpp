@@ -41,7 +41,8 @@ local floor = ground { material = "metal" }
 local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
 probe { "x", unit = "m", function() return block.x end }
 probe { "vx", unit = "m/s", function() return block.vx end }
-plot { "where", y = { "x", "vx" } }
+probe { "height", unit = "m", function() return block.y end }
+plot { "where", y = { "x", "height" } }
 plot { "phase", x = "x", y = "vx" }
 )");
   Lesson lesson(script.path());
@@ -50,7 +51,7 @@ plot { "phase", x = "x", y = "vx" }
   EXPECT_EQ(lesson.duration(), 2.5);
   ASSERT_EQ(lesson.plots().size(), 2u);
   EXPECT_EQ(lesson.plots()[0].x, "time");
-  EXPECT_EQ(lesson.plots()[0].y, (std::vector<std::string>{"x", "vx"}));
+  EXPECT_EQ(lesson.plots()[0].y, (std::vector<std::string>{"x", "height"}));
   EXPECT_EQ(lesson.plots()[1].x, "x");
   EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
 }
