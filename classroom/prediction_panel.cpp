@@ -236,14 +236,38 @@ Closeness judged(const lessons::Prediction& prediction, const std::string& answe
   return closeness(prediction, answer, row);
 }
 
-// The class's answer, the theory and the measurement of each predicted row side by side,
-// each row's name above its numbers and how close the class came below them.
+// Once the theory is shown, each predicted row's name over the class's answer and how close
+// it came; while a mystery keeps the theory, the class's answer, the theory (hidden) and the
+// measurement side by side, each row's name above them and how close the class came below.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                       const classroom_state::ClassPredictions& predictions, const Theme& theme, bool theory_withheld) {
   const float table_width = ImGui::GetContentRegionAvail().x;
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
                                 ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_NoClip;
+  if (!theory_withheld) {
+    if (!ImGui::BeginTable("class's answers", 1, flags)) return;
+    for (const lessons::Prediction& prediction : lesson.predictions()) {
+      const lessons::ExpectationResult* row = row_of(rows, prediction);
+      const std::string answer = answer_of(predictions, prediction);
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImGuiCol_TableHeaderBg));
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
+      shown_text(prediction.expectation.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const Closeness near = row ? judged(prediction, answer, *row, theory_withheld) : Closeness{"class: ?", false};
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
+      if (near.close) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
+      shown_text(answer_and_closeness(prediction, answer, near).c_str());
+      if (near.close) ImGui::PopStyleColor();
+      ImGui::PopTextWrapPos();
+    }
+    ImGui::EndTable();
+    return;
+  }
   if (!ImGui::BeginTable("class against theory", 3, flags)) return;
   ImGui::TableSetupColumn("class");
   ImGui::TableSetupColumn("theory");
@@ -286,6 +310,16 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
 }
 
 }  // namespace
+
+// The theory and the measurement are the theory table's, drawn right under the class's lines
+// (they were a second time in them, and the two tables pushed the last rows out of a
+// projector's column).
+std::string answer_and_closeness(const lessons::Prediction& prediction, const std::string& answer, const Closeness& near) {
+  if (answer.empty()) return near.words;
+  const std::string prefix = "class: ";
+  const std::string judged = near.words.rfind(prefix, 0) == 0 ? near.words.substr(prefix.size()) : near.words;
+  return prefix + answer_shown(prediction, answer) + " \u00b7 " + judged;
+}
 
 Closeness closeness(const lessons::Prediction& prediction, const std::string& answer,
                     const lessons::ExpectationResult& row) {
@@ -338,6 +372,19 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
   const float font = ImGui::GetFontSize();
   const float frame = ImGui::GetFrameHeight() + style.ItemSpacing.y;
   float height = 0.0f;
+  if (predictions.revealed && !theory_withheld) {
+    // As after_the_reveal lays it out with the theory shown: each row's name and the class's line.
+    const float row_padding = 2.0f * style.CellPadding.y;
+    const float across = width - 2.0f * style.CellPadding.x;
+    for (const lessons::Prediction& prediction : lesson.predictions()) {
+      height += ImGui::CalcTextSize(prediction.expectation.c_str(), nullptr, false, across).y + row_padding;
+      const lessons::ExpectationResult* row = row_of(rows, prediction);
+      const std::string answer = answer_of(predictions, prediction);
+      const Closeness near = row ? judged(prediction, answer, *row, theory_withheld) : Closeness{"class: ?", false};
+      height += ImGui::CalcTextSize(answer_and_closeness(prediction, answer, near).c_str(), nullptr, false, across).y + row_padding;
+    }
+    return height + style.ItemSpacing.y;
+  }
   if (predictions.revealed) {
     // As after_the_reveal lays it out: the headers, then each row's name, numbers and closeness.
     const float row_padding = 2.0f * style.CellPadding.y;

@@ -31,6 +31,9 @@ struct Closeness {
 };
 Closeness closeness(const lessons::Prediction& prediction, const std::string& answer,
                     const lessons::ExpectationResult& row);
+// Once the theory is shown, the class's line under a predicted row's name: its answer and how
+// close it came, "class: 3.5 N · −0.42 N, 11 % below the measurement" ("class: no prediction").
+std::string answer_and_closeness(const lessons::Prediction& prediction, const std::string& answer, const Closeness& near);
 
 // What the prediction panel reports for tests that click it: `remember(name)` after each
 // control ("prediction NAME" a number's box, "prediction NAME: WORD" a choice, "reveal").

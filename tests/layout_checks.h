@@ -210,8 +210,8 @@ inline std::optional<std::size_t> lower_panel_text(const FrameRecord& record, st
 
 // The texts one of the class's predictions shows, in the order drawn, each with whether it is a
 // prefix: before the reveal its question, the answer and "measured: …"; revealed, its row's
-// name, the answer with its unit and how close it came. Empty (and a failure) when the lesson
-// has no row of the prediction's name.
+// name and the class's line (the answer with its unit and how close it came). Empty (and a
+// failure) when the lesson has no row of the prediction's name.
 inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window, const lessons::Prediction& prediction,
                                                        bool revealed, const std::string& where) {
   const std::string answer = window.predictions().answers[prediction.expectation];
@@ -223,9 +223,7 @@ inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window,
     ADD_FAILURE() << where << ": no row " << prediction.expectation;
     return {};
   }
-  return {{prediction.expectation, false},
-          {prediction.is_choice() ? answer : answer + " " + prediction.unit, false},
-          {closeness(prediction, answer, *row).words, false}};
+  return {{prediction.expectation, false}, {answer_and_closeness(prediction, answer, closeness(prediction, answer, *row)), false}};
 }
 
 }  // namespace frictionlab::ui::layout_checks
