@@ -144,41 +144,75 @@ local function off_the_floor()
     return "runs off the floor first"
   end
 end
+-- The floor's breakaway as the stepped world takes it: the stick-slip treatment owes the pair
+-- the (mu_s − mu_k)·N·s kinetic friction would have taken off within the step it broke away
+-- in (s up to a step), and pays it at the next step's start as one impulse at the floor's
+-- height. Below the pair's centre of mass it turns the pair front up about its back edge (which
+-- the floor can only push up on): an angular impulse J·y about that edge, y the centre's height
+-- for the two blocks moving as one in that step (the top block held by its static friction, as
+-- the world holds it; a top block slipping within it takes less, so this is the most). Where
+-- the top block slips at once (the same step), theory's moment may still hold the front down
+-- by only a little: 0.58 N·m of 14.8 at 2.7 kg on 1.08 kg, both mu_s 2, and the world's front
+-- was kicked up at the slip and never came down (its load 0 from then on, the top block's
+-- friction 2 % short of mu_k·N as the pair pitched). The angular impulse, N·m·s:
+local function breakaway_kick()
+  local floor_mu_s, floor_mu_k = param["bottom_on_floor.mu_s"], param["bottom_on_floor.mu_k"]
+  local centre = (param.bottom_mass * bottom_centre + param.top_mass * top_centre) / (param.top_mass + param.bottom_mass)
+  return math.max(floor_mu_s - floor_mu_k, 0) * total_weight() * step_length() * centre
+end
+-- The pair's moment of inertia about its back edge, the top block `top_back_by` back from the
+-- middle, kg·m².
+local function inertia_about_back_edge(top_back_by)
+  local bottom = param.bottom_mass * ((bottom_width ^ 2 + bottom_height ^ 2) / 12 + (bottom_width / 2) ^ 2 + bottom_centre ^ 2)
+  local top = param.top_mass * ((top_width ^ 2 + top_height ^ 2) / 12 + (bottom_width / 2 - top_back_by) ^ 2 + top_centre ^ 2)
+  return bottom + top
+end
 -- After the top block slips: when it has slid slip_room back, or (first) when the bottom block
--- racing ahead would lift the front; and which of the two came first.
+-- racing ahead would lift the front; which of the two came first; and, where the top block
+-- slipped at once, whether the breakaway's kick still has the front up then: the front rises
+-- at kick / inertia and the moment's deficit (−tipping_moment) brings it down, stepped with it.
 local function slipping_from_scratch()
   local t, lag, lag_speed = slip_pull() / param.pull_rate, 0, 0
   local step = 1e-3
+  local kicked = not together_phase()
+  local pitch, pitch_speed = 0, kicked and breakaway_kick() / inertia_about_back_edge(0) or 0
   for _ = 1, 2000 do
     if lag >= slip_room then break end
-    if tipping_moment(top_acceleration_after(), bottom_acceleration(t), lag) >= 0 then return t, true end
+    local moment = tipping_moment(top_acceleration_after(), bottom_acceleration(t), lag)
+    if moment >= 0 then return t, true, kicked and pitch > 0 end
+    if pitch > 0 or pitch_speed > 0 then
+      pitch_speed = pitch_speed + moment / inertia_about_back_edge(lag) * step
+      pitch = pitch + pitch_speed * step
+    end
     lag_speed = lag_speed + (bottom_acceleration(t) - top_acceleration_after()) * step
     lag = lag + lag_speed * step
     t = t + step
   end
-  return t, false
+  return t, false, false
 end
 local slipping_known = {}  -- the last answer, and the values it was worked out for
 local function slipping_until()
   -- Asked many times over by the rows and the run's end: worked out again only when a value
-  -- changed (the pairs' sliders change the running lesson).
-  local values = string.format(string.rep("%.17g ", 7), param.top_mass, param.bottom_mass, param.pull_rate,
-    param["top_on_bottom.mu_s"], param["top_on_bottom.mu_k"], param["bottom_on_floor.mu_s"], param["bottom_on_floor.mu_k"])
-  if slipping_known.values == values then return slipping_known.t, slipping_known.lifts end
-  local t, lifts = slipping_from_scratch()
-  slipping_known = { values = values, t = t, lifts = lifts }
-  return t, lifts
+  -- changed (the pairs' sliders change the running lesson; the step sets the breakaway's kick).
+  local values = string.format(string.rep("%.17g ", 8), param.top_mass, param.bottom_mass, param.pull_rate,
+    param["top_on_bottom.mu_s"], param["top_on_bottom.mu_k"], param["bottom_on_floor.mu_s"], param["bottom_on_floor.mu_k"],
+    step_length())
+  if slipping_known.values == values then return slipping_known.t, slipping_known.lifts, slipping_known.kicked end
+  local t, lifts, kicked = slipping_from_scratch()
+  slipping_known = { values = values, t = t, lifts = lifts, kicked = kicked }
+  return t, lifts, kicked
 end
 -- When the front lifts while the theory still has something to show (nil: it does not). Moving
 -- as one on the floor; or right as the top block slips, before its slipping can be read (3
--- steps). A front that would lift later, while the top block slips, ends the run there, as it
--- starts to lift (at the first millisecond of the integration past the moment's zero).
+-- steps), or while the breakaway's kick still has it up. A front that would lift later, while
+-- the top block slips, ends the run there, as it starts to lift (at the first millisecond of
+-- the integration past the moment's zero).
 local function tips_at()
   if no_theory() or off_the_floor() then return nil end
   local together = tipping_time()
   if together then return together end
-  local t, lifts = slipping_until()
-  if lifts and t < slip_pull() / param.pull_rate + 3 * step_length() then return t end
+  local t, lifts, kicked = slipping_until()
+  if lifts and (kicked or t < slip_pull() / param.pull_rate + 3 * step_length()) then return t end
 end
 -- Which comes first while the pair moves as one, the front lifting or the top block slipping,
 -- can be told only if theory has them further apart than the world can place each: the slip

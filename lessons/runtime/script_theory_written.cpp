@@ -334,14 +334,21 @@ int thrown_box(lua_State* state) {
     // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
     // so the corner may sink past it into the floor before a step finds it: the point is then
     // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
-    const auto impact_on = [&](double rx, double ry, double late) {
+    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
+    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
+    // `face`: the step met the whole face (a flat landing), whose two-point contact takes the
+    // step's drag through the centre on the whole mass, not at the corner (b = 1000 N·s²/m² on
+    // 14.5 kg at 5.8 m/s: 2.2 m/s left, which mu_k 1.114 stops within the impact; the corner's
+    // drag, through its lever arm, left the box pitching over its front edge at -8.0 rad/s
+    // where the world's stopped turning).
+    const auto impact_on = [&](double rx, double ry, double late, bool face = false) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
       const double sunk = std::max((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0);
       const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
       // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
       // along the floor at that point feels.
-      double vx = speed, omega = spin;
-      if (step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
+      double vx = face ? flat_drag(speed) : speed, omega = spin;
+      if (!face && step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
         const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
         const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
         vx += impulse / mass;
@@ -373,8 +380,6 @@ int thrown_box(lua_State* state) {
       }
       return hit;
     };
-    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
-    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
     // Landing flat, the face's two ends share the impact: each end's fall is stopped (or, with
     // restitution e, turned back at e times its speed), and two ends that stop together stop
     // the box's fall and its spin together (fall and spin each turned back at e times), the
@@ -383,15 +388,33 @@ int thrown_box(lua_State* state) {
     // moment about the front end, or a spin too fast for the fall to stop), that end takes it
     // alone and the other lifts. A spinning box does not keep its spin through such a landing:
     // at spin 7.638 rad/s and mu_k 0.4, the world's box stops turning.
+    // Before any impact, too: a stepped world finds contacts at a step's start, so it first
+    // meets the corner at the first step boundary after the landing, the corner sunk into the gap
+    // by its fall since, and it finds the far end in the same step if that end has fallen as far
+    // as its rise (then both ends take that step's impact together, and no single-corner impact
+    // describes it: a box landing 0.88° off flat at 4.1 m/s, 6 mm rise against a 10 mm fall,
+    // stopped turning in the world where one corner's impact with the step's drag leaves it at
+    // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
+    double reach_gap = rise;
+    if (step > 0.0) {
+      const double first_met = std::ceil(landing.time / step) * step - landing.time;
+      const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
+      reach_gap = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
+    }
+    // A stepped world lands the box flat only where it meets the whole face in one step: a face
+    // under 1 mm off flat whose far end is still above reach then meets one corner first, and
+    // that corner's impact is what the first step shows (a 20 kg box at spin 19.5 rad/s, 0.15°
+    // off flat at 960 sub-steps a second: -9.78 rad/s, the face a sub-step later).
+    const bool lands_flat = landing.flat && (step <= 0.0 || reach_gap <= 0.0);
     std::string corner = "lands flat";
     theory::CornerImpact impact{};
     double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
-    if (landing.flat) {
+    if (lands_flat) {
       const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
       const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
       const double rear_x = landing_leads ? far_x : landing.corner_x;
       const double rear_y = landing_leads ? far_y : landing.corner_y;
-      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0), rear = impact_on(rear_x, rear_y, 0.0);
+      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0, true), rear = impact_on(rear_x, rear_y, 0.0, true);
       if (front.vy + front.omega * rear_x > 0.0) {
         impact = front;
         corner = "pitches over its front edge";
@@ -455,26 +478,15 @@ int thrown_box(lua_State* state) {
       hit.grips = stuck;
       return hit;
     };
-    if (on_a_corner && !landing.flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, 0.0);
+    if (on_a_corner && !lands_flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, 0.0);
     // The far end comes down too soon after the impact (falling at the impact's end speed, and
     // under gravity): within a step or two a stepped world meets both corners in one step, and
     // no single-corner impact describes what it shows.
     const double far_speed = -(impact.vy + impact.omega * far_x);  // downward, m/s
     const double far_root = far_speed + std::sqrt(far_speed * far_speed + 2.0 * g * rise);
-    const double second_corner = !on_a_corner || landing.flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
-    // Before any impact, too: a stepped world finds contacts at a step's start, so it first
-    // meets the corner at the first step boundary after the landing, the corner sunk into the gap
-    // by its fall since, and it finds the far end in the same step if that end has fallen as far
-    // as its rise (then both ends take that step's impact together, and no single-corner impact
-    // describes it: a box landing 0.88° off flat at 4.1 m/s, 6 mm rise against a 10 mm fall,
-    // stopped turning in the world where one corner's impact with the step's drag leaves it at
-    // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
-    double far_above_reach = infinity;
-    if (on_a_corner && !landing.flat) {
-      const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
-      const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
-      far_above_reach = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
-    }
+    const double second_corner = !on_a_corner || lands_flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
+    // (How far above reach the far end is when the corner is met: computed above.)
+    const double far_above_reach = on_a_corner && !lands_flat ? reach_gap : infinity;
     // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
     // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
     // corner moves it; k_tn couples sliding to falling).
@@ -489,7 +501,7 @@ int thrown_box(lua_State* state) {
     // A stepped world meets the floor up to a step after the exact landing, turned and falling
     // further: the spin that impact leaves (spin_after itself when step = 0 or it lands flat).
     const double late = !on_a_corner ? impact.omega
-                        : landing.flat ? impact.omega
+                        : lands_flat ? impact.omega
                                        : through_frame(impact_on(landing.corner_x, landing.corner_y, step),
                                                        landing.corner_x, landing.corner_y, step).omega;
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
