@@ -24,7 +24,7 @@ struct WindowOptions {
   std::vector<std::string> lock;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::optional<ui::ThemeName> theme;
+  std::optional<draw::ThemeName> theme;
   bool projector = false;
   std::optional<double> at;
   std::string screenshot;
@@ -65,7 +65,7 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       add_override(value, options.overrides);
     } else if (name == "--theme") {
       try {
-        options.theme = ui::parse_theme(value);
+        options.theme = draw::parse_theme(value);
       } catch (const InvalidInput& error) {
         throw InvalidInput("--theme " + value + ": " + error.what());
       }
@@ -175,7 +175,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     const std::string& lesson = classroom_options.lesson;  // the setup's, with --setup
     const std::string stem = fs::path(lesson).stem().string();
     const std::string picture =
-        ui::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
+        draw::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
     out << "frictionlab: " << error.what() << ", so no window; drawing " << stem << " at t = " << time_text(at)
         << " s to a PNG instead (frictionlab render draws any moment):\n";
     std::vector<std::string> render_args{lesson, "--at", time_text(at), "--out", picture};
@@ -186,7 +186,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     if (const auto& mystery = classroom_options.mystery) {
       render_args.insert(render_args.end(), {"--mystery", mystery->pair, "--seed", std::to_string(mystery->seed)});
     }
-    if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(ui::theme_name(*options.theme))});
+    if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(draw::theme_name(*options.theme))});
     return run_render(render_args, out);
   }
   return 0;

@@ -32,7 +32,7 @@ struct CheapestSettingTab {
   }
   // The tab, in the tab bar being drawn; `scale` is the fonts' scale. Returns the setting to
   // use when "Use it" was pressed.
-  std::optional<StepSettings> draw(const lessons::Lesson& lesson, float scale, const Theme& colours,
+  std::optional<StepSettings> draw(const lessons::Lesson& lesson, float scale, const draw::Theme& colours,
                                    ControlPlaces& controls);
 };
 

@@ -29,9 +29,9 @@ struct Exports {
   // Ctrl+E: writes the record (time and every probe, one row per frame, with the hand's force
   // gauge) as CSV, and the run's settings beside it, a mystery's values "?"; returns the path, or
   // throws std::runtime_error.
-  std::string export_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const;
+  std::string export_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const;
   // The same, said in the status line: where it went, or why not.
-  std::string save_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const;
+  std::string save_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const;
 
  private:
   std::optional<std::string> screenshot_request_;

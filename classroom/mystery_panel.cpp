@@ -84,8 +84,8 @@ void MysteryPanel::answer(std::optional<double> mu_s, std::optional<double> mu_k
   mystery->answer_mu_k = mu_k;
 }
 
-HiddenValues MysteryPanel::hidden() const {
-  HiddenValues hidden;
+draw::HiddenValues MysteryPanel::hidden() const {
+  draw::HiddenValues hidden;
   if (mystery) hidden.parameters = mystery->hidden();
   return hidden;
 }

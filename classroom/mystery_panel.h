@@ -42,7 +42,7 @@ struct MysteryPanel {
   // The class's answers, as typed in the Mystery tab.
   void answer(std::optional<double> mu_s, std::optional<double> mu_k);
   // What the class must not see now.
-  HiddenValues hidden() const;
+  draw::HiddenValues hidden() const;
   // Whether the parameter is one of the mystery's pair (a setup saves the pair and seed instead).
   bool holds(const std::string& parameter) const;
   // What the window's title adds: " (a mystery surface)", " (mystery revealed)" or "".

@@ -10,7 +10,7 @@
 
 namespace frictionlab::ui {
 
-void OpenScriptDialog::draw(Classroom& classroom, float scale, const Theme& colours) {
+void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme& colours) {
   if (asked) {
     ImGui::OpenPopup("Open a lesson script");
     asked = false;

@@ -22,7 +22,7 @@ struct OpenScriptDialog {
 
   void ask() { asked = true; }
   // The dialog while it is open; `scale` is the fonts' scale.
-  void draw(Classroom& classroom, float scale, const Theme& colours);
+  void draw(Classroom& classroom, float scale, const draw::Theme& colours);
 };
 
 }  // namespace frictionlab::ui

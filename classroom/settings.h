@@ -24,7 +24,7 @@ struct ToolSettings {
 };
 
 struct WindowSettings {
-  ThemeName theme = ThemeName::light;
+  draw::ThemeName theme = draw::ThemeName::light;
   bool projector = false;
   bool help = true;  // a newcomer sees the shortcuts first
   double speed = 1.0;                // this session only

@@ -67,7 +67,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   glfwMakeContextCurrent(window.get());
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
-  ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  draw::ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
   // Every key press reaches the classroom, and ImGui's widgets, even one let go before the next
   // frame; set before ImGui's backend, which calls it before its own.
   struct Listeners {
@@ -140,7 +140,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     last = now;
 
     host.make_current();
-    const Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+    const draw::Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
                                       settings.theme);
     ImGui_ImplGlfw_NewFrame();
     listeners.taps.hold(ImGui::GetIO());
@@ -165,7 +165,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
       glReadBuffer(GL_BACK);
       std::string error;
       try {
-        write_png(read_framebuffer(width, height), *screenshot);
+        write_png(draw::read_framebuffer(width, height), *screenshot);
       } catch (const std::exception& failure) {
         error = failure.what();
         if (frames_left == 0) throw;

@@ -39,7 +39,7 @@ struct Page {
   ui::Classroom* classroom = nullptr;
   PageRun run;
   GLFWwindow* window = nullptr;
-  std::unique_ptr<ui::ImGuiHost> host;
+  std::unique_ptr<draw::ImGuiHost> host;
   ui::KeyTaps taps{ui::glfw_modifier_keys};
   Finger finger;
   double last = 0.0;
@@ -135,7 +135,7 @@ void tell_the_page(ui::Classroom& classroom) {
   }
   if (const int theme = static_cast<int>(classroom.window_settings().theme); theme != p.told_theme) {
     p.told_theme = theme;
-    EM_ASM({ frictionlabPage.setTheme($0); }, classroom.window_settings().theme == ui::ThemeName::dark ? 1 : 0);
+    EM_ASM({ frictionlabPage.setTheme($0); }, classroom.window_settings().theme == draw::ThemeName::dark ? 1 : 0);
   }
   // Values typed and predictions made survive a reload: the page's address keeps the window as a
   // setup (what Copy link gives), once it differs from what the page opened with, so a link
@@ -182,7 +182,7 @@ void draw_frame() {
     p.drawn_size = display;
     p.drawn_scale = scale;
   }
-  const ui::Fonts& fonts = p.host->prepare(scale, classroom.window_settings().theme);
+  const draw::Fonts& fonts = p.host->prepare(scale, classroom.window_settings().theme);
   ImGui_ImplGlfw_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
   // The canvas's own pixels are the display: GLFW's pointer is in them already.
@@ -202,7 +202,7 @@ void draw_frame() {
   }
   tell_the_page(classroom);
   glViewport(0, 0, width, height);
-  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(ui::theme(classroom.window_settings().theme).background);
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(draw::theme(classroom.window_settings().theme).background);
   glClearColor(clear.x, clear.y, clear.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   p.host->end_frame();
@@ -213,7 +213,7 @@ void draw_frame() {
   if (std::optional<std::string> screenshot = classroom.take_screenshot_request()) {
     std::string error;
     try {
-      ui::write_png(ui::read_framebuffer(width, height), *screenshot);
+      draw::write_png(draw::read_framebuffer(width, height), *screenshot);
     } catch (const std::exception& failure) {
       error = failure.what();
     }
@@ -277,7 +277,7 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
   page->saved = classroom.window_settings();
   if (run.help_to_save) page->saved.help = *run.help_to_save;
   page->full_screen = false;
-  page->host = std::make_unique<ui::ImGuiHost>(nullptr);
+  page->host = std::make_unique<draw::ImGuiHost>(nullptr);
   glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || page == nullptr) return;
     page->taps.pressed(key);
