@@ -126,18 +126,18 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
                            : lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
   // The window's settings come from the settings folder; a screenshot run reads them (the
   // README's screenshot script gives each shot a folder of its own) but never writes them.
-  const std::string folder = ui::settings_folder();
+  const std::string folder = classroom::settings_folder();
   const std::string settings_path = folder.empty() ? "" : folder + "/settings.ini";
-  ui::ClassroomOptions classroom_options;
+  classroom::ClassroomOptions classroom_options;
   classroom_options.lesson = path;
   classroom_options.overrides = options.overrides;
   classroom_options.settings = options.settings;
   classroom_options.lock = options.lock;
   classroom_options.mystery = options.mystery.choice();
-  classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  classroom_options.window = settings_path.empty() ? classroom::WindowSettings{} : classroom::load_settings(settings_path);
   // What the settings file brought back, before the command line and a setup have their say:
   // `--projector` on a new machine is no projector mode kept from the last session.
-  const std::string kept = ui::kept_from_last_session(classroom_options.window);
+  const std::string kept = classroom::kept_from_last_session(classroom_options.window);
   // The help panel a newcomer's first window opens with is for a person at the window: a
   // picture taken where the window has no settings yet would show it over the lesson.
   if (!options.screenshot.empty() && (settings_path.empty() || !fs::exists(settings_path))) {
@@ -146,15 +146,15 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
   // A prepared setup: read and checked against its lesson before the window opens.
-  if (!options.setup.empty()) classroom_options = ui::setup_options(options.setup, classroom_options);
+  if (!options.setup.empty()) classroom_options = classroom::setup_options(options.setup, classroom_options);
   // A picture is no session: what came back from the last one is said to a person only.
   if (options.screenshot.empty()) {
     std::string& notice = classroom_options.opening_notice;
     if (!kept.empty()) notice = notice.empty() ? kept : notice + " " + kept;
   }
-  ui::Classroom classroom(classroom_options);
+  classroom::Classroom classroom(classroom_options);
   // T in the first frame, after the run to --at: the picture a class sees once it is revealed.
-  if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(ui::Key::t, false);
+  if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(classroom::Key::t, false);
 
   ui::WindowRun run;
   run.at = options.at;

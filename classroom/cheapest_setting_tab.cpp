@@ -11,7 +11,7 @@
 #include "draw/text_record.h"
 #include "bench/lesson_problem.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // A paragraph in `colour`, wrapped at the panel's edge (beside the last item when on its line).
@@ -106,4 +106,4 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   return use;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

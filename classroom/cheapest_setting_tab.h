@@ -16,7 +16,7 @@
 #include "lessons/runtime/lesson.h"
 #include "bench/cheapest_setting.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct CheapestSettingTab {
   std::unique_ptr<Recommender> search;  // for the lesson it was started on
@@ -36,4 +36,4 @@ struct CheapestSettingTab {
                                    ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

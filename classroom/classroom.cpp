@@ -19,7 +19,7 @@
 #include "draw/frame.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
@@ -370,4 +370,4 @@ void Classroom::screenshot_done(const std::string& path, const std::string& erro
   status_.text = error.empty() ? "Screenshot saved to " + path : "Could not save the screenshot: " + error;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

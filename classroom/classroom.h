@@ -44,7 +44,7 @@
 #include "draw/frame.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The window composes its panels, tabs and dialogs (each a small struct that owns its state and
 // draws itself) and routes what they ask of each other: a value set, a lesson opened or
@@ -249,4 +249,4 @@ class Classroom {
   int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

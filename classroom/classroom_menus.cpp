@@ -11,7 +11,7 @@
 #include "draw/text_record.h"
 #include "draw/words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void Classroom::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
@@ -73,4 +73,4 @@ void Classroom::menu_bar() {
   ImGui::EndMainMenuBar();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -8,7 +8,7 @@
 #include "draw/panels.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void Classroom::world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
                             float newtons_to_pixels, draw::LabelPlacer& labels) {
@@ -28,7 +28,7 @@ void Classroom::world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const d
 }
 
 std::string Classroom::gauge_figures() const {
-  return ui::gauge_figures(playback_->gauge(), playback_->lesson().scene().frame_step());
+  return classroom::gauge_figures(playback_->gauge(), playback_->lesson().scene().frame_step());
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -6,7 +6,7 @@
 
 #include "draw/overlays.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The screen-point arithmetic of draw/drawing.h, used throughout here.
 using draw::add;
@@ -197,4 +197,4 @@ void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const d
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -16,7 +16,7 @@
 #include "draw/theme.h"
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The distance marks in a lane: a line along the surface just inside it, from where the view
 // shows it to where it ends, a tick every nice length counted from where the measured body stood
@@ -60,4 +60,4 @@ void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const dra
 void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const draw::Theme& theme, const draw::Fonts& fonts,
                            draw::LabelPlacer& labels);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

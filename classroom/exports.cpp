@@ -10,7 +10,7 @@
 #include "files/output_file.h"
 #include "lessons/runtime/history_csv.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string lesson_name(const std::string& script_path) { return std::filesystem::path(script_path).stem().string(); }
 
@@ -66,4 +66,4 @@ std::string Exports::export_history(const classroom_state::Playback& playback, c
   return path;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -11,7 +11,7 @@
 #include "draw/panels.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".
 std::string lesson_name(const std::string& script_path);
@@ -37,4 +37,4 @@ struct Exports {
   std::optional<std::string> screenshot_request_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

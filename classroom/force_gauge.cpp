@@ -8,7 +8,7 @@
 #include "draw/overlays.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The screen-point arithmetic of draw/drawing.h, used throughout here.
 using draw::add;
@@ -203,4 +203,4 @@ void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRec
              chart, theme, fonts);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

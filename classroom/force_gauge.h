@@ -24,7 +24,7 @@
 #include "draw/theme.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Where the gauge lies on the screen: its hook on the body, the hand's end of the coil (where the
 // scale's spring ends), the case from `case_start` to the ring, and the ring the hand holds,
@@ -58,4 +58,4 @@ std::string gauge_figures(const classroom_state::GaugeRecord& record, double fra
 void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
                      const draw::Fonts& fonts);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 #include "draw/text_record.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& lock, bool browser, bool script_paths,
                              ControlPlaces& controls) {
@@ -83,4 +83,4 @@ LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& l
   return choice;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

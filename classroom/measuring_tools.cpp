@@ -10,7 +10,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 const b2Body* measured_body(const lessons::Lesson& lesson) {
   const lessons::View& view = lesson.view();
@@ -334,4 +334,4 @@ void MeasuringTools::draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now
   ImGui::PopStyleVar();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

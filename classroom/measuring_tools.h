@@ -21,7 +21,7 @@
 #include "lessons/runtime/lesson.h"
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The body the tools measure: the one the view follows, else the lesson's first moving body
 // (the free-body diagram's). Null when nothing moves.
@@ -110,4 +110,4 @@ class MeasuringTools {
   bool run_ended_ = false;  // paused at the run's end, when last followed
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

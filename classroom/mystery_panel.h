@@ -18,7 +18,7 @@
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct MysteryPanel {
   std::optional<classroom_state::Mystery> mystery;  // chosen once when a mystery begins
@@ -49,4 +49,4 @@ struct MysteryPanel {
   std::string title_words() const;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -13,7 +13,7 @@
 #include "physics/materials.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // The pair's two coefficients, as the pair table names them (physics/materials.h).
@@ -178,4 +178,4 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
   ImGui::EndTabItem();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -15,7 +15,7 @@
 #include "classroom_state/mystery.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -36,4 +36,4 @@ struct MysteryTab {
   std::optional<std::string> draw_menu(Classroom& classroom, ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -8,7 +8,7 @@
 
 #include "classroom/classroom.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme& colours) {
   if (asked) {
@@ -53,4 +53,4 @@ void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme
   ImGui::EndPopup();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

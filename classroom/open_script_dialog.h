@@ -10,7 +10,7 @@
 
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -25,4 +25,4 @@ struct OpenScriptDialog {
   void draw(Classroom& classroom, float scale, const draw::Theme& colours);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -16,7 +16,7 @@
 #include "lessons/runtime/class_words.h"
 #include "physics/materials.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
@@ -432,4 +432,4 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

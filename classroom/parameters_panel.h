@@ -24,7 +24,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Whether a control is shown under the teacher's lock (none: every control).
 inline bool unlocked(const std::set<std::string>& lock, const std::string& control_name) {
@@ -88,4 +88,4 @@ struct ParametersPanel {
   void preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

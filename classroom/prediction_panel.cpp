@@ -11,7 +11,7 @@
 #include "draw/text_record.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Room for a number and its sign, typed: a box wider than that only pushes the unit away.
@@ -477,4 +477,4 @@ std::optional<std::string> PredictionPanel::menu_items(bool& asking, classroom_s
   return said;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

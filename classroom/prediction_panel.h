@@ -19,7 +19,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // How close the class came, in words, against the measurement once there is one and the
 // theory before: "class: +0.12 N, 4 % above the measurement", "class: ✓ right", "class: ✗ the
@@ -106,4 +106,4 @@ struct PredictionPanel {
              ControlPlaces& controls, std::function<bool()> theory_withheld);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -12,7 +12,7 @@
 #include "classroom_state/plain_words.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string ScriptWords::operator()(const std::string& text) const {
   if (paths) return text;
@@ -81,4 +81,4 @@ void messages_panel(ImVec2 corner, float width, const classroom_state::Playback&
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -9,7 +9,7 @@
 #include "draw/image.h"
 #include "files/output_file.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string settings_folder() {
   std::filesystem::path folder;
@@ -99,4 +99,4 @@ std::string kept_from_last_session(const WindowSettings& settings) {
   return words + ". Speed ×1 and the tools off, as every session starts.";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -12,7 +12,7 @@
 
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The measuring tools that are on (classroom/measuring_tools.h), for this session only.
 struct ToolSettings {
@@ -55,4 +55,4 @@ bool save_settings(const WindowSettings& settings, const std::string& path);
 // window's; "" when none does.
 std::string kept_from_last_session(const WindowSettings& settings);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 #include "classroom/classroom.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const draw::Theme& colours,
                               ControlPlaces& controls) {
@@ -111,4 +111,4 @@ std::string SetupDialog::save(const std::string& path, const classroom_state::Pr
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

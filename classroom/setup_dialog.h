@@ -17,7 +17,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -46,4 +46,4 @@ struct SetupDialog {
   static std::string save(const std::string& path, const classroom_state::PreparedSetup& setup, const lessons::Lesson& lesson);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -11,7 +11,7 @@
 #include "physics/materials.h"
 #include "physics/scenarios.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 struct Threshold {
@@ -126,4 +126,4 @@ void StabilityMapTab::draw_window(const lessons::Lesson& lesson, const draw::Hid
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

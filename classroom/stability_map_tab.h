@@ -19,7 +19,7 @@
 #include "lessons/runtime/lesson.h"
 #include "physics/stability.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct StabilityMapTab {
   // The map for a mu_s and the g·cos θ of the slope, made once for each.
@@ -38,4 +38,4 @@ struct StabilityMapTab {
   void draw_window(const lessons::Lesson& lesson, const draw::HiddenValues& hidden, const draw::Theme& colours, const draw::Fonts& fonts);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 #include "classroom/knob_slider.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 namespace {
 
@@ -148,4 +148,4 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -9,7 +9,7 @@
 
 #include "draw/frame.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void WorldHand::forget() {
   held = false;
@@ -116,4 +116,4 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
   // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -19,7 +19,7 @@
 #include "classroom_state/playback.h"
 #include "draw/camera.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct WorldHand {
   // The world view's cameras in the last frame (one per lane): where the hand finds bodies.
@@ -54,4 +54,4 @@ struct WorldHand {
   void handle_mouse(classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -32,6 +32,6 @@ struct WindowRun {
 
 // Returns when the window is closed. Throws NoDisplay before anything is shown when it cannot
 // open, std::runtime_error if the screenshot asked for cannot be written.
-void run_window(Classroom& classroom, const WindowRun& run);
+void run_window(classroom::Classroom& classroom, const WindowRun& run);
 
 }  // namespace frictionlab::ui

@@ -25,7 +25,7 @@
 #include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // One display frame of `window` at `display` on a headless context, as the window layer draws
 // one: the fonts for its scale and theme, ImGui's frame, the window's, rendered. `wall` seconds
@@ -255,4 +255,4 @@ class ClassroomHands {
   std::unique_ptr<Classroom> classroom_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

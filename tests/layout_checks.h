@@ -31,7 +31,7 @@
 #include "tests/rendering.h"
 #include "tests/text_contrast.h"
 
-namespace frictionlab::ui::layout_checks {
+namespace frictionlab::classroom::layout_checks {
 
 
 struct Screen {
@@ -228,4 +228,4 @@ inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window,
           {closeness(prediction, answer, *row).words, false}};
 }
 
-}  // namespace frictionlab::ui::layout_checks
+}  // namespace frictionlab::classroom::layout_checks

@@ -46,10 +46,10 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
   for (const std::string& name : names) {
     draw::ImGuiHost host(nullptr);
     gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
-    ui::ClassroomOptions options;
+    classroom::ClassroomOptions options;
     options.lesson = lessons::resolve_lesson(name);
     options.window.help = false;
-    ui::Classroom classroom(options);
+    classroom::Classroom classroom(options);
     // The lesson alone, the same frames, for the physics' share.
     classroom_state::Playback physics_only(options.lesson, {}, {});
     physics_only.play();

@@ -22,7 +22,7 @@
 #include "physics/stability.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Under a teacher's lock the Lesson menu's lessons are greyed: the menu says why, and how the
@@ -486,4 +486,4 @@ TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -22,7 +22,7 @@
 #include "tests/lesson_scripts.h"
 #include "lessons/runtime/history_csv.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 constexpr double g = 9.81;
@@ -474,4 +474,4 @@ TEST(ForceGauge, AHandPulledMeasurementStaysWholeInTheClassTableOnAProjector) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

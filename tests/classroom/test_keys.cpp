@@ -12,7 +12,7 @@
 
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 namespace fs = std::filesystem;
@@ -440,4 +440,4 @@ TEST(WindowKeys, TheBrowsersLessonMenuOffersItsFileChooserAndNamesNoFolders) {
 
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

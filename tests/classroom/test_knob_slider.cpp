@@ -13,7 +13,7 @@
 #include "classroom_state/playback.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 bool overlap(const ImRect& a, const ImVec4& b) { return a.Min.x < b.z && b.x < a.Max.x && a.Min.y < b.w && b.y < a.Max.y; }
@@ -84,4 +84,4 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -17,7 +17,7 @@
 #include "lessons/runtime/lesson.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
@@ -247,9 +247,9 @@ TEST(MysteryWindow, APairTheLessonDoesNotHaveIsRefusedWithItsPairs) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // A value that rebuilds the lesson keeps the mystery's values; one that would take its pair away
@@ -285,9 +285,9 @@ TEST(MysteryWindow, ARebuildKeepsTheValuesAndThePairCannotBeChangedAway) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // In projector mode the column shows only the first lines of a tab before it scrolls: both
@@ -358,4 +358,4 @@ TEST(MysteryWindow, TheStabilityMapTabComesBackAtTheRevealWhereItFits) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

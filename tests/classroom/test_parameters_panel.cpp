@@ -13,7 +13,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 using lessons::replaced;
@@ -267,4 +267,4 @@ TEST(ParametersPanel, ASliderLetGoKeepsTheColumnAsTheLessonOpened) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -12,7 +12,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 const std::string breakaway_question = "The push grows steadily. How hard is it when the block starts to move?";
@@ -396,4 +396,4 @@ TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

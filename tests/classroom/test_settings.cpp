@@ -11,7 +11,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // F11 asks the window (once a press) to toggle full screen; the window keeps the result in its
@@ -106,4 +106,4 @@ TEST(Settings, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

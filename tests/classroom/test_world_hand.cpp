@@ -10,7 +10,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 TEST(WorldHand, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
@@ -117,4 +117,4 @@ TEST(WorldHand, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

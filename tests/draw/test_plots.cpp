@@ -393,10 +393,10 @@ TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
     EXPECT_EQ(identifier_in(text), "") << lesson << ", " << where << ": \"" << text << "\"";
   };
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    ui::ClassroomOptions options;
+    classroom::ClassroomOptions options;
     options.lesson = entry.name;
     options.window.predictions = false;  // the theory table shown from the start
-    ui::ClassroomHands hands(options);
+    classroom::ClassroomHands hands(options);
     lessons::Lesson& lesson = hands.lesson();
     hands.classroom().playback().run_to(lesson.duration());
     std::istringstream shown(hands.texts());

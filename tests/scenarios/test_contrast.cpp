@@ -2,7 +2,7 @@
 // and the key plot's axes and tick marks 3:1 from its panel.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -123,4 +123,4 @@ TEST(Contrast, TheKeyPlotsAxesAndTickMarksStandAtLeastThreeToOneFromItsPanel) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

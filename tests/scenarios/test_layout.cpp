@@ -5,7 +5,7 @@
 // world's labels, the contrast and projector mode have files of their own beside this one.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -795,4 +795,4 @@ TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIs
 INSTANTIATE_TEST_SUITE_P(Screens, WindowTabsLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -2,7 +2,7 @@
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -491,4 +491,4 @@ TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal)
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

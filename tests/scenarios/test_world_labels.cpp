@@ -3,7 +3,7 @@
 // other; every label inside what the world view shows.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The screen-point arithmetic of draw/drawing.h, used throughout here.
 using draw::add;
@@ -674,4 +674,4 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
