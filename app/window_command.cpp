@@ -156,7 +156,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   // T in the first frame, after the run to --at: the picture a class sees once it is revealed.
   if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(classroom::Key::t, false);
 
-  ui::WindowRun run;
+  desktop::WindowRun run;
   run.at = options.at;
   run.screenshot = options.screenshot;
   run.fill_screen = options.projector;
@@ -165,8 +165,8 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     run.imgui_ini = folder + "/imgui.ini";
   }
   try {
-    ui::run_window(classroom, run);
-  } catch (const ui::NoDisplay& error) {
+    desktop::run_window(classroom, run);
+  } catch (const desktop::NoDisplay& error) {
     if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
     // A script that does not build has no picture to give: its mistake is the answer.
     if (!classroom.failed_script().path.empty()) throw InvalidInput(classroom.failed_script().error);

@@ -11,7 +11,7 @@
 #include "classroom/key_taps.h"
 #include "classroom/keys.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 
 // GLFW's key codes for the keys the classroom answers: the one place they are named.
 inline std::optional<classroom::Key> classroom_key(int glfw_key) {
@@ -43,4 +43,4 @@ inline constexpr classroom::ModifierKeys glfw_modifier_keys{{GLFW_KEY_LEFT_CONTR
                                                  {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
                                                  {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}};
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

@@ -16,7 +16,7 @@
 #include "draw/image.h"
 #include "draw/imgui_host.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 namespace {
 
 std::string glfw_error;
@@ -211,4 +211,4 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

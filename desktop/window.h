@@ -9,7 +9,7 @@
 
 #include "classroom/classroom.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 
 // There is no display to open a window on (no X server or Wayland compositor reachable), or
 // it refused an OpenGL 3.3 context. The message says which.
@@ -34,4 +34,4 @@ struct WindowRun {
 // open, std::runtime_error if the screenshot asked for cannot be written.
 void run_window(classroom::Classroom& classroom, const WindowRun& run);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

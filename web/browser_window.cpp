@@ -40,7 +40,7 @@ struct Page {
   PageRun run;
   GLFWwindow* window = nullptr;
   std::unique_ptr<draw::ImGuiHost> host;
-  classroom::KeyTaps taps{ui::glfw_modifier_keys};
+  classroom::KeyTaps taps{desktop::glfw_modifier_keys};
   Finger finger;
   double last = 0.0;
   classroom::FramePacing pacing;  // the desktop window's rule: no frame while nothing can change
@@ -281,7 +281,7 @@ void run_page(classroom::Classroom& classroom, const PageRun& run) {
   glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || page == nullptr) return;
     page->taps.pressed(key);
-    if (const std::optional<classroom::Key> named = ui::classroom_key(key)) {
+    if (const std::optional<classroom::Key> named = desktop::classroom_key(key)) {
       page->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
     }
   });
