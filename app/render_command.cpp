@@ -23,7 +23,7 @@ struct RenderOptions {
   std::string lesson;
   std::vector<double> times;
   int width = 1280, height = 720;
-  ui::ThemeName theme = ui::ThemeName::light;
+  draw::ThemeName theme = draw::ThemeName::light;
   StepSettings settings;
   std::map<std::string, std::string> overrides;
   std::string out;
@@ -90,7 +90,7 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
     } else if (name == "--size") {
       parse_size(option, value, options.width, options.height);
     } else if (name == "--theme") {
-      options.theme = named(option.name, value, [&] { return ui::parse_theme(value); });
+      options.theme = named(option.name, value, [&] { return draw::parse_theme(value); });
       options.have_theme = true;
     } else if (name == "--set") {
       add_override(value, options.overrides);
@@ -167,7 +167,7 @@ void apply_moment(const std::string& path, RenderOptions& options) {
   }
   options.times = {moment->at};
   for (const auto& [name, value] : moment->set) options.overrides.emplace(name, value);
-  if (!options.have_theme) options.theme = moment->theme == "dark" ? ui::ThemeName::dark : ui::ThemeName::light;
+  if (!options.have_theme) options.theme = moment->theme == "dark" ? draw::ThemeName::dark : draw::ThemeName::light;
 }
 
 }  // namespace
@@ -179,7 +179,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
-  ui::HiddenValues hidden;
+  draw::HiddenValues hidden;
   if (const std::optional<classroom_state::MysteryChoice> mystery = options.mystery.choice()) {
     hidden.parameters = apply_mystery(lesson, *mystery, options.overrides).hidden();
   }
@@ -189,10 +189,10 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::vector<std::string> paths = output_paths(options, fs::path(path).stem().string());
   const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
 
-  std::unique_ptr<ui::HeadlessRenderer> renderer;
+  std::unique_ptr<draw::HeadlessRenderer> renderer;
   try {
-    renderer = std::make_unique<ui::HeadlessRenderer>(options.width, options.height, options.theme);
-  } catch (const ui::HeadlessUnavailable& error) {
+    renderer = std::make_unique<draw::HeadlessRenderer>(options.width, options.height, options.theme);
+  } catch (const draw::HeadlessUnavailable& error) {
     throw InvalidInput(std::string("render: ") + error.what());
   }
   renderer->hide(hidden);
@@ -201,7 +201,7 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   std::vector<std::pair<std::string, std::string>> files;
   for (std::size_t i = 0; i < options.times.size(); ++i) {
     lesson.step_to(options.times[i]);
-    const std::vector<std::uint8_t> png = ui::encode_png(renderer->render(lesson, framing));
+    const std::vector<std::uint8_t> png = draw::encode_png(renderer->render(lesson, framing));
     files.emplace_back(paths[i], std::string(png.begin(), png.end()));
   }
   const fs::path folder = paths.size() == 1 && paths[0] == options.out ? fs::path() : fs::path(options.out);

@@ -24,7 +24,7 @@ struct WindowOptions {
   std::vector<std::string> lock;
   std::map<std::string, std::string> overrides;
   StepSettings settings;
-  std::optional<ui::ThemeName> theme;
+  std::optional<draw::ThemeName> theme;
   bool projector = false;
   std::optional<double> at;
   std::string screenshot;
@@ -65,7 +65,7 @@ WindowOptions parse_window(const std::vector<std::string>& args) {
       add_override(value, options.overrides);
     } else if (name == "--theme") {
       try {
-        options.theme = ui::parse_theme(value);
+        options.theme = draw::parse_theme(value);
       } catch (const InvalidInput& error) {
         throw InvalidInput("--theme " + value + ": " + error.what());
       }
@@ -126,18 +126,18 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
                            : lessons::resolve_lesson(options.lesson.empty() ? lessons::builtin_lessons().front() : options.lesson);
   // The window's settings come from the settings folder; a screenshot run reads them (the
   // README's screenshot script gives each shot a folder of its own) but never writes them.
-  const std::string folder = ui::settings_folder();
+  const std::string folder = classroom::settings_folder();
   const std::string settings_path = folder.empty() ? "" : folder + "/settings.ini";
-  ui::ClassroomOptions classroom_options;
+  classroom::ClassroomOptions classroom_options;
   classroom_options.lesson = path;
   classroom_options.overrides = options.overrides;
   classroom_options.settings = options.settings;
   classroom_options.lock = options.lock;
   classroom_options.mystery = options.mystery.choice();
-  classroom_options.window = settings_path.empty() ? ui::WindowSettings{} : ui::load_settings(settings_path);
+  classroom_options.window = settings_path.empty() ? classroom::WindowSettings{} : classroom::load_settings(settings_path);
   // What the settings file brought back, before the command line and a setup have their say:
   // `--projector` on a new machine is no projector mode kept from the last session.
-  const std::string kept = ui::kept_from_last_session(classroom_options.window);
+  const std::string kept = classroom::kept_from_last_session(classroom_options.window);
   // The help panel a newcomer's first window opens with is for a person at the window: a
   // picture taken where the window has no settings yet would show it over the lesson.
   if (!options.screenshot.empty() && (settings_path.empty() || !fs::exists(settings_path))) {
@@ -146,17 +146,17 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
   // A prepared setup: read and checked against its lesson before the window opens.
-  if (!options.setup.empty()) classroom_options = ui::setup_options(options.setup, classroom_options);
+  if (!options.setup.empty()) classroom_options = classroom::setup_options(options.setup, classroom_options);
   // A picture is no session: what came back from the last one is said to a person only.
   if (options.screenshot.empty()) {
     std::string& notice = classroom_options.opening_notice;
     if (!kept.empty()) notice = notice.empty() ? kept : notice + " " + kept;
   }
-  ui::Classroom classroom(classroom_options);
+  classroom::Classroom classroom(classroom_options);
   // T in the first frame, after the run to --at: the picture a class sees once it is revealed.
-  if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(ui::Key::t, false);
+  if (options.reveal && classroom.theory_hidden()) classroom.key_pressed(classroom::Key::t, false);
 
-  ui::WindowRun run;
+  desktop::WindowRun run;
   run.at = options.at;
   run.screenshot = options.screenshot;
   run.fill_screen = options.projector;
@@ -165,8 +165,8 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     run.imgui_ini = folder + "/imgui.ini";
   }
   try {
-    ui::run_window(classroom, run);
-  } catch (const ui::NoDisplay& error) {
+    desktop::run_window(classroom, run);
+  } catch (const desktop::NoDisplay& error) {
     if (!options.screenshot.empty()) throw InvalidInput(std::string("--screenshot needs a display: ") + error.what());
     // A script that does not build has no picture to give: its mistake is the answer.
     if (!classroom.failed_script().path.empty()) throw InvalidInput(classroom.failed_script().error);
@@ -175,7 +175,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     const std::string& lesson = classroom_options.lesson;  // the setup's, with --setup
     const std::string stem = fs::path(lesson).stem().string();
     const std::string picture =
-        ui::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
+        draw::unused_path(fs::current_path().string(), "frictionlab_" + stem + "_t" + time_text(at), ".png");
     out << "frictionlab: " << error.what() << ", so no window; drawing " << stem << " at t = " << time_text(at)
         << " s to a PNG instead (frictionlab render draws any moment):\n";
     std::vector<std::string> render_args{lesson, "--at", time_text(at), "--out", picture};
@@ -186,7 +186,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     if (const auto& mystery = classroom_options.mystery) {
       render_args.insert(render_args.end(), {"--mystery", mystery->pair, "--seed", std::to_string(mystery->seed)});
     }
-    if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(ui::theme_name(*options.theme))});
+    if (options.theme) render_args.insert(render_args.end(), {"--theme", std::string(draw::theme_name(*options.theme))});
     return run_render(render_args, out);
   }
   return 0;

@@ -11,14 +11,14 @@
 #include "draw/text_record.h"
 #include "bench/lesson_problem.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // A paragraph in `colour`, wrapped at the panel's edge (beside the last item when on its line).
 void paragraph(const std::string& text, ImU32 colour) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   ImGui::PushTextWrapPos(0.0f);
-  shown_text(text.c_str());
+  draw::shown_text(text.c_str());
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
 }
@@ -34,9 +34,9 @@ float button_width(const char* label) { return ImGui::CalcTextSize(label).x + 2.
 
 }  // namespace
 
-std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& lesson, float scale, const Theme& colours,
+std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& lesson, float scale, const draw::Theme& colours,
                                                      ControlPlaces& controls) {
-  const bool open = begin_tab("Cheapest###cheapest setting");
+  const bool open = draw::begin_tab("Cheapest###cheapest setting");
   remember_item(controls, "Cheapest setting tab");
   if (!open) return std::nullopt;
   std::optional<StepSettings> use;
@@ -51,7 +51,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
                       "a word row that differs is wrong. Within 1: the lesson's own table passes; 0.1: ten times tighter.");
   }
   ImGui::AlignTextToFramePadding();
-  shown_text("within");
+  draw::shown_text("within");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f * scale);
   ImGui::InputDouble("##tolerance", &tolerance, 0.0, 0.0, "%g");
@@ -59,7 +59,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   remember_item(controls, "tolerance");
   beside_if_room(ImGui::CalcTextSize(unit.c_str()).x);
   ImGui::AlignTextToFramePadding();
-  shown_text(unit.c_str());
+  draw::shown_text(unit.c_str());
   // "1e999" reads as infinity and "-1" as less than nothing: neither is a tolerance.
   const bool valid = tolerance > 0.0 && std::isfinite(tolerance);
   const char* measure = "Measure";
@@ -80,7 +80,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   }
   ImGui::EndDisabled();
   remember_item(controls, "measure");
-  note_text_centred(measure, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+  draw::note_text_centred(measure, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
   if (!valid) paragraph("The tolerance must be a positive number (" + unit + ").", bad);
   if (!error.empty()) paragraph(error, bad);
   if (search && lesson_path == path) {
@@ -91,7 +91,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
       const char* use_it = "Use it";
       if (ImGui::Button(use_it)) use = best->settings;
       remember_item(controls, "use it");
-      note_text_centred(use_it, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      draw::note_text_centred(use_it, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
       ImGui::SameLine();
       std::snprintf(line, sizeof line, "Cheapest within %g %s: %s, error %.3g, %.3g ms CPU per simulated s.",
                     search->tolerance(), unit.c_str(), describe(best->settings).c_str(), best->error, best->cost * 1e3);
@@ -106,4 +106,4 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   return use;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

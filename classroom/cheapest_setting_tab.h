@@ -16,7 +16,7 @@
 #include "lessons/runtime/lesson.h"
 #include "bench/cheapest_setting.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct CheapestSettingTab {
   std::unique_ptr<Recommender> search;  // for the lesson it was started on
@@ -32,8 +32,8 @@ struct CheapestSettingTab {
   }
   // The tab, in the tab bar being drawn; `scale` is the fonts' scale. Returns the setting to
   // use when "Use it" was pressed.
-  std::optional<StepSettings> draw(const lessons::Lesson& lesson, float scale, const Theme& colours,
+  std::optional<StepSettings> draw(const lessons::Lesson& lesson, float scale, const draw::Theme& colours,
                                    ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

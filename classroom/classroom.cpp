@@ -19,7 +19,7 @@
 #include "draw/frame.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
@@ -61,7 +61,7 @@ void Classroom::forget_interaction() {
 }
 
 float Classroom::ui_scale(ImVec2 display) const {
-  const float fit = frame_scale(static_cast<int>(display.x), static_cast<int>(display.y));
+  const float fit = draw::frame_scale(static_cast<int>(display.x), static_cast<int>(display.y));
   // Projector mode: a third larger, text and lines alike, for the back of the room.
   return std::max(0.5f, fit) * (window_.projector ? 1.35f : 1.0f);
 }
@@ -80,11 +80,11 @@ std::optional<ImRect> Classroom::control(const std::string& name) const {
   return found->second;
 }
 
-void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record) {
+void Classroom::frame(const draw::Fonts& fonts, ImVec2 display, double wall_seconds, draw::FrameRecord* record) {
   fonts_ = &fonts;
-  std::optional<TextRecording> noting;
+  std::optional<draw::TextRecording> noting;
   if (record != nullptr) {
-    *record = FrameRecord{};
+    *record = draw::FrameRecord{};
     noting.emplace(&record->texts);
   }
   controls_.clear();
@@ -95,7 +95,7 @@ void Classroom::frame(const Fonts& fonts, ImVec2 display, double wall_seconds, F
   hand_.projector = window_.projector;
   hand_.hold_view(*playback_, strips.origin, strips.area, fonts.scale);
   // Made before the lesson is read for its frame: it forgets the answers a changed value outdated.
-  const FrameStyle style = frame_style(strips.origin, record);
+  const draw::FrameStyle style = frame_style(strips.origin, record);
   build_frame(playback_->lesson(), playback_->framing(), style, strips.area);
   draw_around_frame(display, strips);
   apply_asked_values();
@@ -134,8 +134,8 @@ Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
   return strips;
 }
 
-FrameStyle Classroom::frame_style(ImVec2 origin, FrameRecord* record) {
-  FrameStyle style;
+draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record) {
+  draw::FrameStyle style;
   style.theme = window_.theme;
   style.fonts = fonts_;
   style.origin = origin;
@@ -152,9 +152,9 @@ FrameStyle Classroom::frame_style(ImVec2 origin, FrameRecord* record) {
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
   };
-  style.world_tools = [this](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
+  style.world_tools = [this](draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
                              float newtons_to_pixels,
-                             LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
+                             draw::LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title(playback_->gauge(), playback_->lesson().scene().frame_step());
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) {
@@ -191,7 +191,7 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
   const float s = fonts_->scale;
   ImGui::PushFont(fonts_->body);
   hand_.handle_mouse(*playback_, strips.origin, strips.area, s, status_.text);
-  const FrameLayout layout = FrameLayout::of(strips.area, s, strips.origin, window_.projector, !playback_->lesson().plots().empty());
+  const draw::FrameLayout layout = draw::FrameLayout::of(strips.area, s, strips.origin, window_.projector, !playback_->lesson().plots().empty());
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages_panel(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
                  layout.world_size.x - 12.0f * s, *playback_, failed_, browser_, script_words_, theme(window_.theme), controls_);
@@ -241,7 +241,7 @@ void Classroom::shortcuts(const Shortcuts& keys) {
   // The plots' page buttons are drawn as ← and →: the keys turn the pages too.
   if (hit(Key::left, false)) --turn_plot_pages_;
   if (hit(Key::right, false)) ++turn_plot_pages_;
-  if (hit(Key::d, false)) window_.theme = window_.theme == ThemeName::dark ? ThemeName::light : ThemeName::dark;
+  if (hit(Key::d, false)) window_.theme = window_.theme == draw::ThemeName::dark ? draw::ThemeName::light : draw::ThemeName::dark;
 }
 
 void Classroom::run_to(double t) {
@@ -370,4 +370,4 @@ void Classroom::screenshot_done(const std::string& path, const std::string& erro
   status_.text = error.empty() ? "Screenshot saved to " + path : "Could not save the screenshot: " + error;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -44,7 +44,7 @@
 #include "draw/frame.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The window composes its panels, tabs and dialogs (each a small struct that owns its state and
 // draws itself) and routes what they ask of each other: a value set, a lesson opened or
@@ -64,7 +64,7 @@ class Classroom {
   // One display frame: the keys and mouse in ImGui's io, `wall_seconds` of real time passing,
   // then the whole window built.
   // With `record`, where the frame put things and every text it drew (the layout test).
-  void frame(const Fonts& fonts, ImVec2 display, double wall_seconds, FrameRecord* record = nullptr);
+  void frame(const draw::Fonts& fonts, ImVec2 display, double wall_seconds, draw::FrameRecord* record = nullptr);
 
   classroom_state::Playback& playback() { return *playback_; }
   const classroom_state::Playback& playback() const { return *playback_; }
@@ -153,10 +153,10 @@ class Classroom {
   std::string lock_words() const { return lock_.words(browser_); }
   // The world view's cameras in the last frame (one per lane): where the mouse's hand finds
   // bodies. The first one.
-  const Camera& world_camera() const { return hand_.cameras.front(); }
+  const draw::Camera& world_camera() const { return hand_.cameras.front(); }
   // The wheel's zoom and the drag's pan on the lesson's view; a double click on empty space
   // (or opening another lesson) puts the view back.
-  const ViewAdjust& view_adjust() const { return hand_.view_adjust; }
+  const draw::ViewAdjust& view_adjust() const { return hand_.view_adjust; }
   // The class's predictions for the lesson on screen (typed in the theory panel before Play),
   // and whether the theory is still kept from the class.
   classroom_state::ClassPredictions& predictions() { return predictions_.predictions; }
@@ -184,7 +184,7 @@ class Classroom {
   // The menu bar and the stopwatch's strip under it.
   WindowStrips draw_top_strips(ImVec2 display);
   // How the lesson's frame is drawn, with the panels and plots the window puts in it.
-  FrameStyle frame_style(ImVec2 origin, FrameRecord* record);
+  draw::FrameStyle frame_style(ImVec2 origin, draw::FrameRecord* record);
   // The tabs the window adds beside the lesson's own (FrameStyle::more_tabs).
   void draw_more_tabs();
   // The mouse's hand, then the script's messages over the world's ground, the transport bar,
@@ -196,8 +196,8 @@ class Classroom {
   void shortcuts(const Shortcuts& keys);
   void menu_bar();
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
-  void world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
-                   float newtons_to_pixels, LabelPlacer& labels);
+  void world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
+                   float newtons_to_pixels, draw::LabelPlacer& labels);
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
@@ -227,7 +227,7 @@ class Classroom {
   std::string script_words(const std::string& text) const { return script_words_(text); }
 
  private:
-  const Fonts* fonts_ = nullptr;
+  const draw::Fonts* fonts_ = nullptr;
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
@@ -249,4 +249,4 @@ class Classroom {
   int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

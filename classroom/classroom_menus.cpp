@@ -11,7 +11,7 @@
 #include "draw/text_record.h"
 #include "draw/words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void Classroom::menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
@@ -43,8 +43,8 @@ void Classroom::menu_bar() {
   const bool view = ImGui::BeginMenu("View");
   remember("View menu");
   if (view) {
-    bool dark = window_.theme == ThemeName::dark;
-    if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? ThemeName::dark : ThemeName::light;
+    bool dark = window_.theme == draw::ThemeName::dark;
+    if (ImGui::MenuItem("Dark theme", "D", &dark)) window_.theme = dark ? draw::ThemeName::dark : draw::ThemeName::light;
     ImGui::MenuItem("Projector mode", "P", &window_.projector);
     if (ImGui::MenuItem("Full screen", "F11")) full_screen_toggle_ = true;
     ImGui::MenuItem("Help", "F1", &window_.help);
@@ -62,15 +62,15 @@ void Classroom::menu_bar() {
   const std::string path = script_words(playback_->lesson().path());
   const float left = ImGui::GetCursorScreenPos().x + 20.0f;
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowWidth() - 16.0f;
-  const std::string shown = path_that_fits(path, right - left);
+  const std::string shown = draw::path_that_fits(path, right - left);
   if (!shown.empty()) {
     ImGui::SameLine();
     ImGui::SetCursorScreenPos(ImVec2(right - ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetCursorScreenPos().y));
     ImGui::TextDisabled("%s", shown.c_str());
-    note_text(shown.c_str());
+    draw::note_text(shown.c_str());
     if (shown != path && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
   }
   ImGui::EndMainMenuBar();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -5,7 +5,7 @@
 #include "classroom_state/setup_file.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 namespace fs = std::filesystem;
 
@@ -38,4 +38,4 @@ ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions b
   return base;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -14,7 +14,7 @@
 #include "classroom_state/setup_file.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct ClassroomOptions {
   std::string lesson;                               // the script's path
@@ -45,4 +45,4 @@ struct ClassroomOptions {
 // lessons (received_setup_text), and opening_notice says where.
 ClassroomOptions setup_options(const std::string& setup_path, ClassroomOptions base);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

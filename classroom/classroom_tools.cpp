@@ -8,10 +8,10 @@
 #include "draw/panels.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
-void Classroom::world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
-                            float newtons_to_pixels, LabelPlacer& labels) {
+void Classroom::world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
+                            float newtons_to_pixels, draw::LabelPlacer& labels) {
   const lessons::Lesson& lesson = playback_->lesson();
   const Scene& scene = lesson.scene();
   const float s = fonts_->scale;
@@ -21,14 +21,14 @@ void Classroom::world_tools(WorldToolsPass pass, ImDrawList* draw, const Camera&
     const ImVec2 at = camera.to_screen(held->GetWorldCenter());
     gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == hand_.drag_lane;
   }
-  if (gauge_here && pass == WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
-  const Theme& colours = theme(window_.theme);
+  if (gauge_here && pass == draw::WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
+  const draw::Theme& colours = theme(window_.theme);
   tools_.in_world(pass, draw, lesson, camera, lane, newtons_to_pixels, colours, *fonts_, labels);
-  if (gauge_here && pass == WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
+  if (gauge_here && pass == draw::WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
 }
 
 std::string Classroom::gauge_figures() const {
-  return ui::gauge_figures(playback_->gauge(), playback_->lesson().scene().frame_step());
+  return classroom::gauge_figures(playback_->gauge(), playback_->lesson().scene().frame_step());
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

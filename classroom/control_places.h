@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 using ControlPlaces = std::map<std::string, ImRect>;
 
@@ -18,4 +18,4 @@ inline void remember_item(ControlPlaces& places, const std::string& name) {
   places[name] = ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -6,12 +6,18 @@
 
 #include "draw/overlays.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
+
+// The screen-point arithmetic of draw/drawing.h, used throughout here.
+using draw::add;
+using draw::length;
+using draw::mul;
+using draw::sub;
 
 namespace {
 
 // The distance marks' step: a nice length about 120 pixels long.
-float mark_step(const Camera& camera, float scale) { return nice_length(120.0f * scale / camera.pixels_per_metre); }
+float mark_step(const draw::Camera& camera, float scale) { return draw::nice_length(120.0f * scale / camera.pixels_per_metre); }
 
 struct Ruler {
   ImVec2 from, to;                   // the line, just inside the surface
@@ -23,7 +29,7 @@ struct Ruler {
 
 // `step`: the ticks' spacing, m. `outside`: the line on the surface itself and its ticks out of
 // it, for a surface whose inside the view leaves no room under (a lane's thin strip of ground).
-std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& camera, float scale, float step,
+std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const draw::Camera& camera, float scale, float step,
                            bool outside = false) {
   // The view's corners projected on the surface's line give the span of it in sight.
   const b2Vec2 corners[4] = {camera.to_world(camera.origin), camera.to_world(add(camera.origin, ImVec2(camera.size.x, 0.0f))),
@@ -64,7 +70,7 @@ std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const Camera& 
 }
 
 // The marks of one ruler, each number's box at its tick (beyond its end).
-DistanceMarks numbered(const Ruler& line, const Fonts& fonts) {
+DistanceMarks numbered(const Ruler& line, const draw::Fonts& fonts) {
   const float s = fonts.scale;
   DistanceMarks marks{line.from, line.to, line.inward, line.step, {}};
   for (const auto& [foot, metres] : line.ticks) {
@@ -105,8 +111,8 @@ bool counted(const DistanceMark& mark, std::size_t every, double step) {
   return std::fmod(k, static_cast<double>(every)) == 0.0;
 }
 
-std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const Camera& camera,
-                                                  const Fonts& fonts, const LabelPlacer* labels) {
+std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const draw::Camera& camera,
+                                                  const draw::Fonts& fonts, const draw::LabelPlacer* labels) {
   const float s = fonts.scale, step = mark_step(camera, s);
   const std::optional<Ruler> under = ruler(surface, origin, camera, s, step);
   if (!under) return std::nullopt;
@@ -127,7 +133,7 @@ std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2
   return free_numbers(over_marks) > under_count ? over_marks : marks;
 }
 
-void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t fewest_every) {
+void number_marks(DistanceMarks& marks, const draw::LabelPlacer& labels, std::size_t fewest_every) {
   // Every tick, else every 2nd, 5th or 10th: the first that gives at least two numbers room, so
   // that the scale can be read (fewer numbers rather than none), else the one giving the most.
   std::size_t best_every = std::max<std::size_t>(fewest_every, 1), best_count = 0;
@@ -138,7 +144,7 @@ void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t f
     for (const DistanceMark& mark : marks.ticks) {
       if (!counted(mark, every, marks.step)) continue;
       for (const ImVec4& box : {mark.number_box, mark.across_box}) {
-        const bool apart = std::none_of(chosen.begin(), chosen.end(), [&](const ImVec4& other) { return overlaps(box, other); });
+        const bool apart = std::none_of(chosen.begin(), chosen.end(), [&](const ImVec4& other) { return draw::overlaps(box, other); });
         if (!apart || !labels.free(box, true)) continue;
         chosen.push_back(box), ++count;
         break;
@@ -155,20 +161,20 @@ void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t f
 }
 
 // The marks' line and ticks, told to the placer as they are drawn.
-void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, float s, LabelPlacer& labels) {
+void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const draw::Theme& theme, float s, draw::LabelPlacer& labels) {
   draw->AddLine(marks.from, marks.to, theme.text, 1.5f * s);
-  labels.avoid(DrawnSegment{marks.from, marks.to, 1.5f * s});
+  labels.avoid(draw::DrawnSegment{marks.from, marks.to, 1.5f * s});
   for (const DistanceMark& mark : marks.ticks) {
     const bool zero = std::abs(mark.metres) < 1e-9;
     const ImVec2 end = add(mark.foot, mul(marks.inward, (zero ? 12.0f : 8.0f) * s));
     draw->AddLine(mark.foot, end, theme.text, (zero ? 2.5f : 1.5f) * s);
-    labels.avoid(DrawnSegment{mark.foot, end, 1.0f * s});
+    labels.avoid(draw::DrawnSegment{mark.foot, end, 1.0f * s});
   }
 }
 
 // Each number just beyond its tick or not at all: moved away it would name another place.
-void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, const Fonts& fonts,
-                           LabelPlacer& labels) {
+void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const draw::Theme& theme, const draw::Fonts& fonts,
+                           draw::LabelPlacer& labels) {
   std::vector<const DistanceMark*> shown;
   for (const DistanceMark& mark : marks.ticks) {
     if (mark.numbered && labels.free(mark.number_box, true)) shown.push_back(&mark);
@@ -176,7 +182,7 @@ void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const T
   for (const DistanceMark* mark : shown) {
     labels.take(mark->number_box, mark->text);
     const ImVec2 centre(0.5f * (mark->number_box.x + mark->number_box.z), 0.5f * (mark->number_box.y + mark->number_box.w));
-    draw_label(draw, fonts.small, centre, theme.text, theme.panel, mark->text.c_str());
+    draw::draw_label(draw, fonts.small, centre, theme.text, theme.panel, mark->text.c_str());
   }
   // Fewer than two numbers cannot give the scale: the ticks' spacing then says it, in the
   // nearest free place to the middle of the line, on the numbers' side (it names no place).
@@ -187,8 +193,8 @@ void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const T
   const ImVec2 middle = mul(add(marks.from, marks.to), 0.5f);
   const ImVec2 wanted = add(middle, mul(marks.inward, 15.0f * fonts.scale + 0.5f * size.y + 2.0f));
   if (const std::optional<ImVec2> at = labels.place_if_free(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), spacing, true)) {
-    draw_label(draw, fonts.small, *at, theme.text, theme.panel, spacing);
+    draw::draw_label(draw, fonts.small, *at, theme.text, theme.panel, spacing);
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -16,7 +16,7 @@
 #include "draw/theme.h"
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The distance marks in a lane: a line along the surface just inside it, from where the view
 // shows it to where it ends, a tick every nice length counted from where the measured body stood
@@ -45,19 +45,19 @@ bool counted(const DistanceMark& mark, std::size_t every, double step);
 // Chooses the ticks whose numbers are drawn: every one, else every 2nd, 5th or 10th, the first
 // that gives at least two numbers room where `labels` has it free.
 // `fewest_every`: not every tick, but every 2nd at least (and so on).
-void number_marks(DistanceMarks& marks, const LabelPlacer& labels, std::size_t fewest_every = 1);
+void number_marks(DistanceMarks& marks, const draw::LabelPlacer& labels, std::size_t fewest_every = 1);
 // The marks along `surface` in the view of `camera`, counted from `origin` (where the measured
 // body's centre of mass was at t = 0). With `labels`, the placer as the marks find it when drawn:
 // their side is chosen where the view has room for their numbers (every tick numbered;
 // number_marks chooses which). None where the view shows none of the surface.
-std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const Camera& camera,
-                                                  const Fonts& fonts, const LabelPlacer* labels);
+std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const draw::Camera& camera,
+                                                  const draw::Fonts& fonts, const draw::LabelPlacer* labels);
 
 // The marks' line and ticks, told to the placer as they are drawn.
-void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, float s, LabelPlacer& labels);
+void draw_distance_lines(ImDrawList* draw, const DistanceMarks& marks, const draw::Theme& theme, float s, draw::LabelPlacer& labels);
 // Each numbered tick's number just beyond it where free, or not at all; where fewer than two
 // are drawn, the ticks' spacing in words.
-void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const Theme& theme, const Fonts& fonts,
-                           LabelPlacer& labels);
+void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const draw::Theme& theme, const draw::Fonts& fonts,
+                           draw::LabelPlacer& labels);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,14 +10,14 @@
 #include "files/output_file.h"
 #include "lessons/runtime/history_csv.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string lesson_name(const std::string& script_path) { return std::filesystem::path(script_path).stem().string(); }
 
 std::string Exports::output_path(const lessons::Lesson& lesson, const std::string& stem, const std::string& extension) const {
   char time[32];
   std::snprintf(time, sizeof time, "_t%.2f", lesson.scene().time());
-  return unused_path(folder, stem + time, extension);
+  return draw::unused_path(folder, stem + time, extension);
 }
 
 std::string Exports::request_screenshot(const lessons::Lesson& lesson) {
@@ -29,7 +29,7 @@ std::string Exports::request_screenshot(const lessons::Lesson& lesson) {
   }
 }
 
-std::string Exports::save_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const {
+std::string Exports::save_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const {
   try {
     return "History saved to " + export_history(playback, hidden);
   } catch (const std::exception& error) {
@@ -37,7 +37,7 @@ std::string Exports::save_history(const classroom_state::Playback& playback, con
   }
 }
 
-std::string Exports::export_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const {
+std::string Exports::export_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const {
   const lessons::Lesson& lesson = playback.lesson();
   const Scene& scene = lesson.scene();
   // The one format `frictionlab run --csv` writes too (lessons/runtime/history_csv.h), with the
@@ -66,4 +66,4 @@ std::string Exports::export_history(const classroom_state::Playback& playback, c
   return path;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -11,7 +11,7 @@
 #include "draw/panels.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // A lesson's name as the lesson list gives it: its script's file name without ".lua".
 std::string lesson_name(const std::string& script_path);
@@ -29,12 +29,12 @@ struct Exports {
   // Ctrl+E: writes the record (time and every probe, one row per frame, with the hand's force
   // gauge) as CSV, and the run's settings beside it, a mystery's values "?"; returns the path, or
   // throws std::runtime_error.
-  std::string export_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const;
+  std::string export_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const;
   // The same, said in the status line: where it went, or why not.
-  std::string save_history(const classroom_state::Playback& playback, const HiddenValues& hidden) const;
+  std::string save_history(const classroom_state::Playback& playback, const draw::HiddenValues& hidden) const;
 
  private:
   std::optional<std::string> screenshot_request_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -8,9 +8,15 @@
 #include "draw/overlays.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
-GaugeShape gauge_shape(const Scene& scene, const Camera& camera, float scale) {
+// The screen-point arithmetic of draw/drawing.h, used throughout here.
+using draw::add;
+using draw::length;
+using draw::mul;
+using draw::sub;
+
+GaugeShape gauge_shape(const Scene& scene, const draw::Camera& camera, float scale) {
   const b2Body* body = scene.grabbed();
   GaugeShape shape{};
   shape.hook = camera.to_screen(body->GetWorldPoint(scene.applied_forces().back().local_point));
@@ -38,22 +44,22 @@ GaugeShape gauge_shape(const Scene& scene, const Camera& camera, float scale) {
 namespace {
 
 std::string reading_text(const Scene& scene) {
-  return "gauge " + format_quantity(static_cast<double>(scene.forces_applied().back().Length()), "N");
+  return "gauge " + draw::format_quantity(static_cast<double>(scene.forces_applied().back().Length()), "N");
 }
 
 }  // namespace
 
-void avoid_gauge(const Scene& scene, const Camera& camera, float scale, LabelPlacer& labels) {
+void avoid_gauge(const Scene& scene, const draw::Camera& camera, float scale, draw::LabelPlacer& labels) {
   if (scene.grabbed() == nullptr || scene.applied_forces().empty()) return;
   const GaugeShape shape = gauge_shape(scene, camera, scale);
   // The scale's spring, from the point held to the hand's end of it, and the case with its ring.
-  labels.avoid(DrawnSegment{shape.hook, shape.hand, shape.half_width});
-  labels.avoid(DrawnSegment{shape.case_start, add(shape.ring, mul(shape.along, shape.ring_radius)),
+  labels.avoid(draw::DrawnSegment{shape.hook, shape.hand, shape.half_width});
+  labels.avoid(draw::DrawnSegment{shape.case_start, add(shape.ring, mul(shape.along, shape.ring_radius)),
                             shape.half_width + 2.0f * scale});
 }
 
-void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, const Theme& theme, const Fonts& fonts,
-                LabelPlacer& labels) {
+void draw_gauge(ImDrawList* draw, const Scene& scene, const draw::Camera& camera, const draw::Theme& theme, const draw::Fonts& fonts,
+                draw::LabelPlacer& labels) {
   if (scene.grabbed() == nullptr || scene.applied_forces().empty()) return;
   const float s = fonts.scale;
   const GaugeShape shape = gauge_shape(scene, camera, s);
@@ -97,14 +103,14 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, cons
                                                 0.5f * std::abs(up.x) * size.x));
   // Off the body it pulls, as the other tools' readings are: the hand holds the case over it.
   const ImVec2 at = labels.place(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true);
-  draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
+  draw::draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
 
-Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme) {
-  Chart chart;
+draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme) {
+  draw::Chart chart;
   chart.title = "Force gauge";
   chart.plain = true;
-  chart.legend = Chart::Legend::none;
+  chart.legend = draw::Chart::Legend::none;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
@@ -118,7 +124,7 @@ Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step,
   // hand's alone). No legend to cover it: the panel's title and figures say which.
   bool lesson_pulled = false;
   for (std::size_t i = first; i < samples.size(); ++i) lesson_pulled = lesson_pulled || samples[i].lesson_pulls;
-  ChartSeries reading;
+  draw::ChartSeries reading;
   reading.name = lesson_pulled ? "hand + " + record.lesson_pulls() : "gauge";
   reading.colour = theme.hand;
   double highest = 0.0, latest = 0.0;
@@ -174,27 +180,27 @@ std::string gauge_figures(const classroom_state::GaugeRecord& record, double fra
   if (!figures->peak) {
     text += "no peak (sliding when taken)";
   } else {
-    text += (figures->broke_away ? "peak " : "held so far ") + format_quantity(*figures->peak, "N");
+    text += (figures->broke_away ? "peak " : "held so far ") + draw::format_quantity(*figures->peak, "N");
   }
-  text += figures->plateau ? ",  sliding " + format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
+  text += figures->plateau ? ",  sliding " + draw::format_quantity(*figures->plateau, "N") : ",  sliding: not yet";
   return text;
 }
 
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme,
-                     const Fonts& fonts) {
+void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
+                     const draw::Fonts& fonts) {
   const std::string figures = gauge_figures(record, frame_step);
   ImGui::SetCursorScreenPos(corner);
   // On one line: in the small font when the body's does not fit.
   const bool small = ImGui::CalcTextSize(figures.c_str()).x > size.x;
   if (small) ImGui::PushFont(fonts.small);
   ImGui::PushTextWrapPos(0.0f);
-  shown_text(figures.c_str());
+  draw::shown_text(figures.c_str());
   ImGui::PopTextWrapPos();
   if (small) ImGui::PopFont();
   const float used = ImGui::GetCursorScreenPos().y - corner.y;
-  const Chart chart = gauge_chart(record, frame_step, theme);
+  const draw::Chart chart = gauge_chart(record, frame_step, theme);
   draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),
              chart, theme, fonts);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -24,7 +24,7 @@
 #include "draw/theme.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Where the gauge lies on the screen: its hook on the body, the hand's end of the coil (where the
 // scale's spring ends), the case from `case_start` to the ring, and the ring the hand holds,
@@ -34,19 +34,19 @@ struct GaugeShape {
   ImVec2 hook, hand, case_start, ring, along;
   float half_width, ring_radius;
 };
-GaugeShape gauge_shape(const Scene& scene, const Camera& camera, float scale);
+GaugeShape gauge_shape(const Scene& scene, const draw::Camera& camera, float scale);
 
 // The gauge in the world, between the point the hand holds and the pointer: its coil and case
 // given to the label placer first (before any label is placed), then drawn with its reading.
 // Nothing when no body is held.
-void avoid_gauge(const Scene& scene, const Camera& camera, float scale, LabelPlacer& labels);
-void draw_gauge(ImDrawList* draw, const Scene& scene, const Camera& camera, const Theme& theme, const Fonts& fonts,
-                LabelPlacer& labels);
+void avoid_gauge(const Scene& scene, const draw::Camera& camera, float scale, draw::LabelPlacer& labels);
+void draw_gauge(ImDrawList* draw, const Scene& scene, const draw::Camera& camera, const draw::Theme& theme, const draw::Fonts& fonts,
+                draw::LabelPlacer& labels);
 
 // The gauge's reading against time over the latest stretch the hand pulled (from a little
 // before it took hold), the slips shaded; the hand's and the lesson's pull together instead when
 // the lesson pulled the body too, as the figures are taken.
-Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme);
+draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme);
 
 // The plot's title: "Force gauge (N)", or "Hand + spring (N)" when the lesson pulled the body too.
 std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double frame_step);
@@ -55,7 +55,7 @@ std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double 
 std::string gauge_figures(const classroom_state::GaugeRecord& record, double frame_step);
 // The plot under the world at `corner`, `size`: the latest stretch's figures over its chart, as a
 // class reads them off a sensor's screen.
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const Theme& theme,
-                     const Fonts& fonts);
+void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
+                     const draw::Fonts& fonts);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

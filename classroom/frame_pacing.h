@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class FramePacing {
  public:
@@ -35,4 +35,4 @@ class FramePacing {
   int settle_frames_ = frames_after_input;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -9,7 +9,7 @@
 #include "classroom/settings.h"
 #include "classroom_state/window_keys.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void help_panel(bool& shown, float scale, bool browser, bool script_paths, const std::string& output_folder) {
   if (!shown) return;
@@ -75,4 +75,4 @@ void help_panel(bool& shown, float scale, bool browser, bool script_paths, const
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -6,10 +6,10 @@
 
 #include <string>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // `scale`: the fonts' scale. On the page (`browser`) F5 runs the script as last applied; with
 // `script_paths` the files are saved in `output_folder` (else they arrive as downloads).
 void help_panel(bool& shown, float scale, bool browser, bool script_paths, const std::string& output_folder);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

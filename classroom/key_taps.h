@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The modifier keys' indices in io.KeysDown, left and right: ImGui reads a chord's Ctrl from
 // io.KeyCtrl, which 1.86's backend works out only when a key event arrives, so a Ctrl tapped
@@ -63,4 +63,4 @@ class KeyTaps {
   std::vector<int> held_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

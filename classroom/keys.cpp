@@ -8,7 +8,7 @@
 
 #include "classroom/text_boxes.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // How many of ImGui's open popups are dialogs (modal, up to the topmost one); those above them
@@ -88,4 +88,4 @@ bool KeyRouting::finish() {
   return std::exchange(play_after_typing_, false);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 enum class Key { space, escape, period, comma, r, f1, f5, f11, p, d, s, e, t, w, l, left, right };
 
@@ -46,4 +46,4 @@ class KeyRouting {
   bool close_menus_ = false;              // a key pressed while a menu was open
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

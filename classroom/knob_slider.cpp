@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 KnobSliderShape knob_slider_shape(const ImRect& frame, const ImRect& grab, ImVec2 text_size) {
   KnobSliderShape shape;
@@ -78,4 +78,4 @@ bool knob_slider(const char* id_text, ImGuiDataType type, void* value, const voi
   return changed;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

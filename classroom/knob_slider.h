@@ -11,7 +11,7 @@
 
 #include "classroom/control_places.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Where a knob slider put its parts, for tests: its frame, its knob and its value's text.
 struct KnobSliderShape {
@@ -28,4 +28,4 @@ bool knob_slider(const char* id, ImGuiDataType type, void* value, const void* mi
 // the value's text box for text `text_size` wide and high, centred as ImGui writes it.
 KnobSliderShape knob_slider_shape(const ImRect& frame, const ImRect& grab, ImVec2 text_size);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

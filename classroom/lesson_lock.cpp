@@ -5,7 +5,7 @@
 
 #include "classroom_state/setup_file.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void LessonLock::check(const lessons::Lesson& lesson) const {
   for (const std::string& name : names) {
@@ -38,4 +38,4 @@ std::string LessonLock::words(bool browser) const {
          "FrictionLab without --lock.";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

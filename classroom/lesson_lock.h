@@ -9,7 +9,7 @@
 #include "classroom/parameters_panel.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct LessonLock {
   std::set<std::string> names;  // the controls shown; empty: all of them, nothing locked
@@ -25,4 +25,4 @@ struct LessonLock {
   std::string words(bool browser) const;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 #include "draw/text_record.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& lock, bool browser, bool script_paths,
                              ControlPlaces& controls) {
@@ -25,7 +25,7 @@ LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& l
     const std::string why = lock.words(browser);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
     ImGui::TextDisabled("%s", why.c_str());
-    note_text(why.c_str());
+    draw::note_text(why.c_str());
     ImGui::PopTextWrapPos();
     ImGui::Separator();
   }
@@ -83,4 +83,4 @@ LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& l
   return choice;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

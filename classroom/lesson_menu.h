@@ -11,7 +11,7 @@
 #include "classroom/control_places.h"
 #include "classroom/lesson_lock.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct LessonMenuChoice {
   std::optional<std::string> open;  // a built-in lesson's name, or the path of one of the student's own
@@ -26,4 +26,4 @@ struct LessonMenuChoice {
 LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& lock, bool browser, bool script_paths,
                              ControlPlaces& controls);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

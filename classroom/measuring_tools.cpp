@@ -10,7 +10,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 const b2Body* measured_body(const lessons::Lesson& lesson) {
   const lessons::View& view = lesson.view();
@@ -103,7 +103,7 @@ namespace {
 // Whether the body is drawn in this lane: with lanes named by their bodies, the lane of its
 // name (where its forces are drawn; a slope's lanes overlap, and where_methods_fail's block was
 // in three strips at once, its speed drawn twice), else the lane whose strip holds its centre.
-bool in_lane(const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, const b2Body* body) {
+bool in_lane(const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, const b2Body* body) {
   const lessons::View& view = lesson.view();
   if (view.kind == lessons::View::Kind::lanes) {
     for (std::size_t k = 0; k < view.bodies.size(); ++k) {
@@ -120,12 +120,12 @@ struct ComponentArrows {
   ImVec2 centre, along_tip, across_tip;
 };
 
-ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, const Camera& camera,
+ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, const draw::Camera& camera,
                                  float newtons_to_pixels) {
   const ImVec2 centre = camera.to_screen(body->GetWorldCenter());
   const auto tip = [&](b2Vec2 direction, double newtons) {
     const ImVec2 screen(direction.x, -direction.y);
-    return add(centre, mul(screen, static_cast<float>(newtons) * newtons_to_pixels));
+    return draw::add(centre, draw::mul(screen, static_cast<float>(newtons) * newtons_to_pixels));
   };
   return {centre, tip(weight.downhill, weight.along), tip(weight.into, weight.across)};
 }
@@ -133,14 +133,14 @@ ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, 
 // A tool's reading, its text placed by `anchor` (`in_sizes` of the text's own width and height
 // from it to the text's centre), or in the nearest free place: off every moving body, unless
 // the bodies leave no room near; none when nothing near is free.
-void draw_reading(ImDrawList* draw, LabelPlacer& labels, ImFont* font, ImVec2 anchor, ImVec2 in_sizes,
+void draw_reading(ImDrawList* draw, draw::LabelPlacer& labels, ImFont* font, ImVec2 anchor, ImVec2 in_sizes,
                   const std::string& text, ImU32 colour, ImU32 background) {
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 wanted(anchor.x + in_sizes.x * size.x, anchor.y + in_sizes.y * size.y);
   // Left out where nothing near is free: drawn over the lesson's labels (where_methods_fail's
   // thin projector lanes) neither could be read.
   if (const std::optional<ImVec2> at = labels.place_if_free(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true)) {
-    draw_label(draw, font, *at, colour, background, text.c_str());
+    draw::draw_label(draw, font, *at, colour, background, text.c_str());
   }
 }
 
@@ -167,8 +167,8 @@ std::string speed_reading(const b2Body* body) {
   return text;
 }
 
-void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-                           float scale, LabelPlacer& labels) const {
+void MeasuringTools::avoid(const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, float newtons_to_pixels,
+                           float scale, draw::LabelPlacer& labels) const {
   const Scene& scene = lesson.scene();
   const b2Body* body = measured_body(lesson);
   if (body == nullptr || !in_lane(lesson, camera, lane, body)) return;
@@ -177,25 +177,25 @@ void MeasuringTools::avoid(const lessons::Lesson& lesson, const Camera& camera, 
   if (on.weight_components) {
     if (const std::optional<SlopeWeight> weight = slope_weight(scene, body)) {
       const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
-      labels.avoid(DrawnSegment{arrows.centre, arrows.along_tip, 4.0f * scale});
-      labels.avoid(DrawnSegment{arrows.centre, arrows.across_tip, 4.0f * scale});
+      labels.avoid(draw::DrawnSegment{arrows.centre, arrows.along_tip, 4.0f * scale});
+      labels.avoid(draw::DrawnSegment{arrows.centre, arrows.across_tip, 4.0f * scale});
     }
   }
 }
 
-void MeasuringTools::in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
-                              std::size_t lane, float newtons_to_pixels, const Theme& theme, const Fonts& fonts,
-                              LabelPlacer& labels) const {
+void MeasuringTools::in_world(draw::WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
+                              std::size_t lane, float newtons_to_pixels, const draw::Theme& theme, const draw::Fonts& fonts,
+                              draw::LabelPlacer& labels) const {
   switch (pass) {
-    case WorldToolsPass::avoid: avoid(lesson, camera, lane, newtons_to_pixels, fonts.scale, labels); break;
-    case WorldToolsPass::fixed_labels: place_fixed_labels(draw, lesson, camera, lane, theme, fonts, labels); break;
-    case WorldToolsPass::draw: this->draw(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels); break;
+    case draw::WorldToolsPass::avoid: avoid(lesson, camera, lane, newtons_to_pixels, fonts.scale, labels); break;
+    case draw::WorldToolsPass::fixed_labels: place_fixed_labels(draw, lesson, camera, lane, theme, fonts, labels); break;
+    case draw::WorldToolsPass::draw: this->draw(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels); break;
   }
 }
 
-void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
-                                        std::size_t lane, const Theme& theme, const Fonts& fonts,
-                                        LabelPlacer& labels) const {
+void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
+                                        std::size_t lane, const draw::Theme& theme, const draw::Fonts& fonts,
+                                        draw::LabelPlacer& labels) const {
   // The distance marks' line and ticks, on the side where their numbers find room; the speed,
   // in its place or the nearest free one (smaller where its font has no room), keeping off
   // the numbers if it can; then the numbers, on every tick or every few where they are free
@@ -210,7 +210,7 @@ void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson&
     for (const std::size_t every : {1u, 2u, 5u, 10u}) {
       DistanceMarks kept = *marks;
       number_marks(kept, labels, every);
-      LabelPlacer with_numbers = labels;
+      draw::LabelPlacer with_numbers = labels;
       for (const DistanceMark& mark : kept.ticks) {
         if (mark.numbered && with_numbers.free(mark.number_box, true)) with_numbers.take(mark.number_box, mark.text);
       }
@@ -225,8 +225,8 @@ void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson&
   }
 }
 
-std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesson& lesson, const Camera& camera,
-                                                            const Fonts& fonts, const LabelPlacer* labels,
+std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesson& lesson, const draw::Camera& camera,
+                                                            const draw::Fonts& fonts, const draw::LabelPlacer* labels,
                                                             std::size_t lane) const {
   const b2Body* body = measured_body(lesson);
   if (!on.distance_marks || !origin_ || body == nullptr || !in_lane(lesson, camera, lane, body)) return std::nullopt;
@@ -235,9 +235,9 @@ std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesso
   return distance_marks_along(*surface, *origin_, camera, fonts, labels);
 }
 
-bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
-                                   std::size_t lane, const Theme& theme, const Fonts& fonts, LabelPlacer& labels,
-                                   const LabelPlacer* preferred) const {
+bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
+                                   std::size_t lane, const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels,
+                                   const draw::LabelPlacer* preferred) const {
   const float s = fonts.scale;
   const b2Body* body = measured_body(lesson);
   if (!on.speed || body == nullptr || !in_lane(lesson, camera, lane, body)) return true;
@@ -256,31 +256,31 @@ bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& less
   if (lane_names_it) tries.push_back({fonts.small, speed_reading(body)});
   const b2AABB box = lessons::body_box(body);
   const ImVec2 top = camera.to_screen(b2Vec2(body->GetWorldCenter().x, box.upperBound.y));
-  const LabelPlacer& against = preferred != nullptr ? *preferred : labels;
+  const draw::LabelPlacer& against = preferred != nullptr ? *preferred : labels;
   for (const Try& attempt : tries) {
     const ImVec2 size = attempt.font->CalcTextSizeA(attempt.font->FontSize, 1e6f, 0.0f, attempt.text.c_str());
     const ImVec2 wanted(top.x, top.y - 10.0f * s - 0.5f * size.y);
     const ImVec2 label(size.x + 6.0f, size.y + 2.0f);
-    LabelPlacer trial = against;
+    draw::LabelPlacer trial = against;
     const std::optional<ImVec2> at = trial.place_if_free(wanted, label, attempt.text, true);
     // Never on a body: it hid the block it read.
     const auto on_body = [&](ImVec2 centre) {
-      const ImVec4 taken = LabelPlacer::box_around(centre, label);
+      const ImVec4 taken = draw::LabelPlacer::box_around(centre, label);
       return std::any_of(against.bodies().begin(), against.bodies().end(),
-                         [&](const ImVec4& body_box) { return overlaps(taken, body_box); });
+                         [&](const ImVec4& body_box) { return draw::overlaps(taken, body_box); });
     };
     if (at && !on_body(*at)) {
-      labels.take(LabelPlacer::box_around(*at, label), attempt.text);
-      draw_label(draw, attempt.font, *at, theme.text, theme.panel, attempt.text.c_str());
+      labels.take(draw::LabelPlacer::box_around(*at, label), attempt.text);
+      draw::draw_label(draw, attempt.font, *at, theme.text, theme.panel, attempt.text.c_str());
       return true;
     }
   }
   return false;
 }
 
-void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, std::size_t lane,
+void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
                           float newtons_to_pixels,
-                          const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const {
+                          const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
   const b2Body* body = measured_body(lesson);
@@ -290,18 +290,18 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
       const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
       // The weight's own colour, paler: parts of it, not forces beside it.
       const ImU32 colour = (theme.force[static_cast<int>(ForceKind::weight)] & 0x00FFFFFFu) | (170u << IM_COL32_A_SHIFT);
-      draw_arrow(draw, arrows.centre, arrows.along_tip, colour, 2.0f * s);
-      draw_arrow(draw, arrows.centre, arrows.across_tip, colour, 2.0f * s);
+      draw::draw_arrow(draw, arrows.centre, arrows.along_tip, colour, 2.0f * s);
+      draw::draw_arrow(draw, arrows.centre, arrows.across_tip, colour, 2.0f * s);
       // Beyond each tip, along its arrow: 8 px past it, and half the text's size.
       const auto beyond = [&](ImVec2 tip, const std::string& text) {
-        ImVec2 direction = sub(tip, arrows.centre);
-        const float span = std::max(1e-3f, length(direction));
-        direction = mul(direction, 1.0f / span);
-        draw_reading(draw, labels, fonts.small, add(tip, mul(direction, 8.0f * s)), mul(direction, 0.5f), text,
+        ImVec2 direction = draw::sub(tip, arrows.centre);
+        const float span = std::max(1e-3f, draw::length(direction));
+        direction = draw::mul(direction, 1.0f / span);
+        draw_reading(draw, labels, fonts.small, draw::add(tip, draw::mul(direction, 8.0f * s)), draw::mul(direction, 0.5f), text,
                      theme.force[static_cast<int>(ForceKind::weight)], theme.panel);
       };
-      beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + format_quantity(weight->along, "N"));
-      beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + format_quantity(weight->across, "N"));
+      beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + draw::format_quantity(weight->along, "N"));
+      beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + draw::format_quantity(weight->across, "N"));
     }
   }
 }
@@ -313,9 +313,9 @@ float MeasuringTools::stopwatch_strip_height(bool shown, float scale) {
   return ImGui::GetTextLineHeight() + 8.0f * scale;
 }
 
-void MeasuringTools::draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const Fonts& fonts) const {
+void MeasuringTools::draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const draw::Fonts& fonts) const {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 4.0f * fonts.scale));
-  if (begin_panel("stopwatch", "", corner, size)) {
+  if (draw::begin_panel("stopwatch", "", corner, size)) {
     // Right-aligned, over the lesson's clock that it reads; the oldest laps give way first on a
     // narrow screen, then the small font.
     const float room = ImGui::GetContentRegionAvail().x;
@@ -327,11 +327,11 @@ void MeasuringTools::draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now
     const bool small = ImGui::CalcTextSize(line.c_str()).x > room;
     if (small) ImGui::PushFont(fonts.small);
     ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(line.c_str()).x);
-    shown_text(line.c_str());
+    draw::shown_text(line.c_str());
     if (small) ImGui::PopFont();
   }
-  end_panel();
+  draw::end_panel();
   ImGui::PopStyleVar();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -21,7 +21,7 @@
 #include "lessons/runtime/lesson.h"
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The body the tools measure: the one the view follows, else the lesson's first moving body
 // (the free-body diagram's). Null when nothing moves.
@@ -64,28 +64,28 @@ class MeasuringTools {
   // settings, kept between runs) and the stopwatch's keys, at lesson time `now`.
   void draw_menu(ToolSettings& shown, double now, bool playing, ControlPlaces& controls);
   // `lane`: the lane's number, which with lanes named by their bodies says whose tools it shows.
-  void avoid(const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, float newtons_to_pixels, float scale,
-             LabelPlacer& labels) const;
+  void avoid(const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, float newtons_to_pixels, float scale,
+             draw::LabelPlacer& labels) const;
   // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), place_fixed_labels()
   // and draw() in turn.
-  void in_world(WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
-                std::size_t lane, float newtons_to_pixels, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
+  void in_world(draw::WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
+                std::size_t lane, float newtons_to_pixels, const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
   // The distance marks, when on, and the measured body is in this lane (none otherwise). With
   // `labels`, the placer as the marks find it when drawn: their side is chosen where the view
   // has room for their numbers (every tick numbered; number_marks chooses which).
-  std::optional<DistanceMarks> distance_marks(const lessons::Lesson& lesson, const Camera& camera, const Fonts& fonts,
-                                              const LabelPlacer* labels = nullptr, std::size_t lane = 0) const;
+  std::optional<DistanceMarks> distance_marks(const lessons::Lesson& lesson, const draw::Camera& camera, const draw::Fonts& fonts,
+                                              const draw::LabelPlacer* labels = nullptr, std::size_t lane = 0) const;
   // The speed (above the body), there or in the nearest place free of what the placer knows,
   // or left out when none is near; called before the lesson's labels are placed
   // (WorldToolsPass::fixed_labels), which keep off it. With `preferred` (the placer with the
   // distance marks' numbers taken), only a place free there. Whether it was drawn (or is not
   // to be: off, or in another lane).
-  bool draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, std::size_t lane,
-                     const Theme& theme, const Fonts& fonts, LabelPlacer& labels,
-                     const LabelPlacer* preferred = nullptr) const;
+  bool draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
+                     const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels,
+                     const draw::LabelPlacer* preferred = nullptr) const;
   // The weight's components, whose labels keep off the bodies.
-  void draw(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, std::size_t lane, float newtons_to_pixels,
-            const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
+  void draw(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, float newtons_to_pixels,
+            const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
   std::optional<b2Vec2> distance_origin() const { return origin_; }
   // The stopwatch's line as the lesson was when last followed (playing, paused, at the run's
   // end); "" while it is not shown (on.stopwatch off).
@@ -96,13 +96,13 @@ class MeasuringTools {
   // height in the current font when `shown` (the window's setting, which the Tools menu may have
   // changed since `on` was copied; 0 when not shown), and the strip.
   static float stopwatch_strip_height(bool shown, float scale);
-  void draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const Fonts& fonts) const;
+  void draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const draw::Fonts& fonts) const;
 
  private:
   // The fixed_labels pass: the distance marks' lines, the speed and then the marks' numbers, all
   // placed before the lesson's force values, which keep off them.
-  void place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, std::size_t lane,
-                          const Theme& theme, const Fonts& fonts, LabelPlacer& labels) const;
+  void place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
+                          const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
 
   std::optional<b2Vec2> origin_;
   long last_frame_ = 0;  // the lesson's frame when last followed
@@ -110,4 +110,4 @@ class MeasuringTools {
   bool run_ended_ = false;  // paused at the run's end, when last followed
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 
 #include "draw/panels.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::unique_ptr<classroom_state::Playback> MysteryPanel::build_playback(const std::string& path, std::map<std::string, std::string> overrides,
                                                        const StepSettings& settings,
@@ -84,8 +84,8 @@ void MysteryPanel::answer(std::optional<double> mu_s, std::optional<double> mu_k
   mystery->answer_mu_k = mu_k;
 }
 
-HiddenValues MysteryPanel::hidden() const {
-  HiddenValues hidden;
+draw::HiddenValues MysteryPanel::hidden() const {
+  draw::HiddenValues hidden;
   if (mystery) hidden.parameters = mystery->hidden();
   return hidden;
 }
@@ -99,4 +99,4 @@ std::string MysteryPanel::title_words() const {
   return mystery->revealed() ? " (mystery revealed)" : " (a mystery surface)";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -18,7 +18,7 @@
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct MysteryPanel {
   std::optional<classroom_state::Mystery> mystery;  // chosen once when a mystery begins
@@ -42,11 +42,11 @@ struct MysteryPanel {
   // The class's answers, as typed in the Mystery tab.
   void answer(std::optional<double> mu_s, std::optional<double> mu_k);
   // What the class must not see now.
-  HiddenValues hidden() const;
+  draw::HiddenValues hidden() const;
   // Whether the parameter is one of the mystery's pair (a setup saves the pair and seed instead).
   bool holds(const std::string& parameter) const;
   // What the window's title adds: " (a mystery surface)", " (mystery revealed)" or "".
   std::string title_words() const;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

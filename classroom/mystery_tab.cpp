@@ -13,7 +13,7 @@
 #include "physics/materials.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // The pair's two coefficients, as the pair table names them (physics/materials.h).
@@ -63,7 +63,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
     if (!locked.empty()) {
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
       ImGui::TextDisabled("%s", locked.c_str());
-      note_text(locked.c_str());
+      draw::note_text(locked.c_str());
       ImGui::PopTextWrapPos();
       ImGui::Separator();
     }
@@ -93,7 +93,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
   return said;
 }
 
-void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls) {
+void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, const draw::Theme& colours, ControlPlaces& controls) {
   ImGuiTabItemFlags flags = 0;
   if (select) {
     // The class predicts before it measures: while the predictions are asked and their tab is
@@ -105,7 +105,7 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
     }
     select = false;
   }
-  const bool open = begin_tab("Mystery###mystery", flags);
+  const bool open = draw::begin_tab("Mystery###mystery", flags);
   remember_item(controls, "Mystery tab");
   if (!open) return;
   ImGui::PushTextWrapPos(0.0f);
@@ -116,7 +116,7 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
   const std::string heading = "Measure " + both_letters() + " of the mystery " +
                               mystery.choice().pair +
                               " surface (its values drawn at random, not the book's):";
-  shown_text(heading.c_str());
+  draw::shown_text(heading.c_str());
   const double truths[2] = {mystery.values().mu_s, mystery.values().mu_k};
   std::optional<double>* answers[2] = {&mystery.answer_mu_s, &mystery.answer_mu_k};
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -124,7 +124,7 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
   for (int k = 0; k < 2; ++k) {
     ImGui::PushID(k);
     ImGui::AlignTextToFramePadding();
-    shown_text(lessons::class_words(coefficients[k]->name).c_str());
+    draw::shown_text(lessons::class_words(coefficients[k]->name).c_str());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(box);
     const bool entered = ImGui::InputText("##answer", answer_text[k], sizeof answer_text[k],
@@ -152,13 +152,13 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
     if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + classroom_state::exact_text(truths[k]);
     if (!answer_error[k].empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
-      shown_text(answer_error[k].c_str());
+      draw::shown_text(answer_error[k].c_str());
       ImGui::PopStyleColor();
     } else if (answers[k]->has_value() || mystery.revealed()) {
-      shown_text(said.c_str());
+      draw::shown_text(said.c_str());
     } else {
       ImGui::TextDisabled("%s", said.c_str());
-      note_text(said.c_str());
+      draw::note_text(said.c_str());
     }
     ImGui::PopID();
   }
@@ -172,10 +172,10 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
     }
     if (ImGui::Button(reveal)) mystery.reveal();
     remember_item(controls, "mystery reveal");
-    note_text_centred(reveal, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    draw::note_text_centred(reveal, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
   }
   ImGui::PopTextWrapPos();
   ImGui::EndTabItem();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -15,7 +15,7 @@
 #include "classroom_state/mystery.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -30,10 +30,10 @@ struct MysteryTab {
   // The tab, in the tab bar being drawn: the answers go into `mystery`. `predicting`: the class's
   // predictions are asked and the theory kept back; a mystery just begun then leaves the
   // Predict tab in front when it shares this tab bar.
-  void draw_tab(classroom_state::Mystery& mystery, bool predicting, const Theme& colours, ControlPlaces& controls);
+  void draw_tab(classroom_state::Mystery& mystery, bool predicting, const draw::Theme& colours, ControlPlaces& controls);
   // The Mystery menu, acting on the classroom's lesson. Returns what the status line should say
   // when the teacher chose a pair ("" for a mystery made).
   std::optional<std::string> draw_menu(Classroom& classroom, ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

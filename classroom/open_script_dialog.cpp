@@ -8,9 +8,9 @@
 
 #include "classroom/classroom.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
-void OpenScriptDialog::draw(Classroom& classroom, float scale, const Theme& colours) {
+void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme& colours) {
   if (asked) {
     ImGui::OpenPopup("Open a lesson script");
     asked = false;
@@ -53,4 +53,4 @@ void OpenScriptDialog::draw(Classroom& classroom, float scale, const Theme& colo
   ImGui::EndPopup();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,7 +10,7 @@
 
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -22,7 +22,7 @@ struct OpenScriptDialog {
 
   void ask() { asked = true; }
   // The dialog while it is open; `scale` is the fonts' scale.
-  void draw(Classroom& classroom, float scale, const Theme& colours);
+  void draw(Classroom& classroom, float scale, const draw::Theme& colours);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

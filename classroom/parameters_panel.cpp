@@ -16,7 +16,7 @@
 #include "lessons/runtime/class_words.h"
 #include "physics/materials.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
@@ -61,7 +61,7 @@ std::string coefficient_letter(const lessons::Parameter& parameter) {
 void note_combo(const char* preview) {
   const ImVec2 padding = ImGui::GetStyle().FramePadding;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  note_text_in(preview, ImVec2(min.x + padding.x, min.y + padding.y),
+  draw::note_text_in(preview, ImVec2(min.x + padding.x, min.y + padding.y),
                ImRect(min, ImVec2(max.x - ImGui::GetFrameHeight(), max.y)));
 }
 
@@ -88,7 +88,7 @@ struct ControlColumns {
 std::vector<std::string> ParametersPanel::foldable_pairs(const ParametersOnShow& on_show, bool opened_too) const {
   std::vector<std::string> pairs;
   for (const lessons::Parameter& parameter : on_show.lesson.parameters()) {
-    const std::string pair = pair_of(parameter);
+    const std::string pair = draw::pair_of(parameter);
     if (pair.empty() || !unlocked(on_show.lock, parameter.name)) continue;
     const auto choice = pair_open.find(pair);
     if (choice != pair_open.end() && !(opened_too && choice->second)) continue;
@@ -111,7 +111,7 @@ std::vector<ParametersPanel::Row> ParametersPanel::rows_at(const ParametersOnSho
   std::string last_pair;
   for (const lessons::Parameter& parameter : on_show.lesson.parameters()) {
     if (!unlocked(on_show.lock, parameter.name)) continue;
-    const std::string pair = pair_of(parameter);
+    const std::string pair = draw::pair_of(parameter);
     const bool heading = !pair.empty() && pair != last_pair;
     if (heading) last_pair = pair;
     Row row{&parameter, nullptr, heading, false, false};
@@ -125,7 +125,7 @@ std::vector<ParametersPanel::Row> ParametersPanel::rows_at(const ParametersOnSho
     if (row.folded && !heading) continue;
     // The second of two coefficients shares the row of the first.
     if (row.two_a_row && !heading && !rows.empty() && rows.back().two_a_row && rows.back().partner == nullptr &&
-        pair_of(*rows.back().parameter) == pair) {
+        draw::pair_of(*rows.back().parameter) == pair) {
       rows.back().partner = &parameter;
       continue;
     }
@@ -182,20 +182,20 @@ void ParametersPanel::draw_folded_away(ImVec2 corner, ImVec2 size, const Paramet
     remember_item(controls, "parameters open");
     ImGui::SameLine();
     ImGui::AlignTextToFramePadding();
-    shown_text("Parameters");
+    draw::shown_text("Parameters");
     // Why, when the line holds it: the arrow and the heading say enough alone.
     const char* why = on_show.lock.empty() ? "folded for the class's answers" : "chosen by the teacher, folded";
     ImGui::SameLine();
     if (ImGui::CalcTextSize(why).x <= ImGui::GetContentRegionAvail().x) {
       ImGui::TextDisabled("%s", why);
-      note_text(why);
+      draw::note_text(why);
     }
   }
   ImGui::End();
 }
 
 void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
-                           const Theme& colours, ControlPlaces& controls) {
+                           const draw::Theme& colours, ControlPlaces& controls) {
   if (may_fold_away(on_show) && step >= folded_away_step(on_show)) {
     draw_folded_away(corner, size, on_show, controls);
     return;
@@ -206,7 +206,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
   const std::string title = on_show.lock.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
-    note_title(title.substr(0, title.find("###")).c_str());
+    draw::note_title(title.substr(0, title.find("###")).c_str());
     const std::vector<Row> shown_rows = rows_at(on_show, step);
     float widest_name = 0.0f, widest_letter = 0.0f;
     for (const Row& row : shown_rows) {
@@ -224,7 +224,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
       const lessons::Parameter& parameter = *row.parameter;
       if (row.pair_heading) {
         // The pair's heading, with an arrow that folds its sliders into the line or opens them.
-        const std::string pair = pair_of(parameter);
+        const std::string pair = draw::pair_of(parameter);
         ImGui::PushID(pair.c_str());
         if (ImGui::ArrowButton("##fold", row.folded ? ImGuiDir_Right : ImGuiDir_Down)) pair_open[pair] = row.folded;
         remember_item(controls, pair + " fold");
@@ -232,12 +232,12 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
         ImGui::SameLine();
         ImGui::AlignTextToFramePadding();
         ImGui::TextDisabled("%s", pair.c_str());
-        note_text(pair.c_str());
+        draw::note_text(pair.c_str());
         if (row.folded) {
           const std::string values = pair_values(on_show.lesson, pair, on_show.hidden);
           ImGui::SameLine();
           ImGui::TextUnformatted(values.c_str());
-          note_text(values.c_str());
+          draw::note_text(values.c_str());
           continue;
         }
         if (parameter.coefficient == static_coefficient.name) {
@@ -273,14 +273,14 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
           ImGui::PushTextWrapPos(0.0f);
           ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", error->second.c_str());
           ImGui::PopTextWrapPos();
-          note_text(error->second.c_str());
+          draw::note_text(error->second.c_str());
         }
       }
     }
     if (!on_show.lock.empty()) {
       const char* locked = "Only the controls the teacher chose are shown.";
       ImGui::TextDisabled("%s", locked);
-      note_text(locked);
+      draw::note_text(locked);
     }
   }
   ImGui::End();
@@ -333,7 +333,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   {
     // The slider starts at slider_x from the panel's edge: the name must end before it.
     const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    note_text_in(label.c_str(), min, ImRect(min, ImVec2(ImGui::GetWindowPos().x + slider_x, max.y)));
+    draw::note_text_in(label.c_str(), min, ImRect(min, ImVec2(ImGui::GetWindowPos().x + slider_x, max.y)));
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
@@ -343,10 +343,10 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   }
   if (on_show.mystery && on_show.mystery->hides(name)) {
     // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
-    const char* hidden = value_x == reset_x ? "?" : hidden_value_text;
+    const char* hidden = value_x == reset_x ? "?" : draw::hidden_value_text;
     ImGui::SameLine(slider_x);
     ImGui::TextDisabled("%s", hidden);
-    note_text(hidden);
+    draw::note_text(hidden);
     return;
   }
 
@@ -383,7 +383,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format.c_str(), value);
-      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
     if (moved) {
       // A value the scene is built from restarts the lesson: wait until the slider is let go.
@@ -414,7 +414,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     {
       const ImVec2 padding = ImGui::GetStyle().FramePadding;
       const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
+      draw::note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
     }
@@ -432,4 +432,4 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

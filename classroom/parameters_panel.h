@@ -24,7 +24,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Whether a control is shown under the teacher's lock (none: every control).
 inline bool unlocked(const std::set<std::string>& lock, const std::string& control_name) {
@@ -36,7 +36,7 @@ struct ParametersOnShow {
   const lessons::Lesson& lesson;
   const std::set<std::string>& lock;       // the controls the teacher chose; empty: all of them
   const std::optional<classroom_state::Mystery>& mystery;   // its pair has no slider, box, reset or presets
-  HiddenValues hidden;                     // what the class must not see now
+  draw::HiddenValues hidden;                     // what the class must not see now
   // The class's predictions are asked: their answers may take the panel's room. The same from
   // the lesson's opening to the run's end and after R, so that the panel never folds because a
   // run ended (the trial's tabs jumped up under the teacher's pointer as it did).
@@ -58,7 +58,7 @@ struct ParametersPanel {
   std::vector<float> heights(const ParametersOnShow& on_show) const;
   // The panel at `step` of giving way; `scale` is the fonts' scale.
   void draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
-            const Theme& colours, ControlPlaces& controls);
+            const draw::Theme& colours, ControlPlaces& controls);
 
  private:
   // The panel's rows: each parameter shown, and whether a friction pair's heading (with its
@@ -88,4 +88,4 @@ struct ParametersPanel {
   void preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -11,7 +11,7 @@
 #include "draw/text_record.h"
 #include "physics/validation.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Room for a number and its sign, typed: a box wider than that only pushes the unit away.
@@ -44,12 +44,12 @@ std::string answer_shown(const lessons::Prediction& prediction, const std::strin
 }
 
 std::string theory_shown(const lessons::ExpectationResult& row) {
-  return row.numeric ? format_quantity(row.predicted, row.unit.c_str()) : row.predicted_text;
+  return row.numeric ? draw::format_quantity(row.predicted, row.unit.c_str()) : row.predicted_text;
 }
 
 std::string measured_shown(const lessons::ExpectationResult& row) {
   if (!row.measured_yet) return row.measured_text == "not measured" ? "not yet" : row.measured_text;
-  const std::string shown = row.numeric ? format_quantity(row.measured, row.unit.c_str()) : row.measured_text;
+  const std::string shown = row.numeric ? draw::format_quantity(row.measured, row.unit.c_str()) : row.measured_text;
   // The mouse's hand pulled in this run: what it measured is not what the lesson asked about.
   return row.hand_pulled ? shown + " (hand-pulled)" : shown;
 }
@@ -71,7 +71,7 @@ void wrapped(const char* text, std::optional<ImU32> colour = std::nullopt, bool 
   if (colour) ImGui::PushStyleColor(ImGuiCol_Text, *colour);
   if (faint) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextUnformatted(text);
-  note_text(text);
+  draw::note_text(text);
   if (faint) ImGui::PopStyleColor();
   if (colour) ImGui::PopStyleColor();
   ImGui::PopTextWrapPos();
@@ -154,13 +154,13 @@ AnswerLayout answer_layout(const lessons::Prediction& prediction, const std::str
 }
 
 void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                       classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
+                       classroom_state::ClassPredictions& predictions, bool editable, const draw::Theme& theme,
                        const PredictionControls& controls) {
   // The button first: in a short column the questions scroll, and the reveal stays at hand.
   if (ImGui::Button(reveal_label) && controls.reveal) controls.reveal();
   if (controls.remember) controls.remember("reveal");
   const ImRect button(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-  note_text_centred(reveal_label, button);
+  draw::note_text_centred(reveal_label, button);
   const float width = ImGui::GetContentRegionAvail().x;
   if (intro_beside(width)) {
     ImGui::SameLine();
@@ -185,7 +185,7 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
         place();
         if (ImGui::RadioButton(word.c_str(), before == word)) predictions.answers[prediction.expectation] = word;
         const ImRect circle(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-        note_text_in(word.c_str(),
+        draw::note_text_in(word.c_str(),
                      ImVec2(circle.Min.x + ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x,
                             circle.Min.y + ImGui::GetStyle().FramePadding.y),
                      circle);
@@ -204,12 +204,12 @@ void before_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons:
       takes_a_number();
       if (controls.remember) controls.remember("prediction " + prediction.expectation);
       const ImRect box(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-      note_text_in(typed, ImVec2(box.Min.x + ImGui::GetStyle().FramePadding.x, box.Min.y + ImGui::GetStyle().FramePadding.y),
+      draw::note_text_in(typed, ImVec2(box.Min.x + ImGui::GetStyle().FramePadding.x, box.Min.y + ImGui::GetStyle().FramePadding.y),
                    box);
       if (!prediction.unit.empty()) {
         place();
         ImGui::AlignTextToFramePadding();
-        shown_text(prediction.unit.c_str());
+        draw::shown_text(prediction.unit.c_str());
       }
     }
     if (!editable) ImGui::EndDisabled();
@@ -240,7 +240,7 @@ Closeness judged(const lessons::Prediction& prediction, const std::string& answe
 // it came; while a mystery keeps the theory, the class's answer, the theory (hidden) and the
 // measurement side by side, each row's name above them and how close the class came below.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                      const classroom_state::ClassPredictions& predictions, const Theme& theme, bool theory_withheld) {
+                      const classroom_state::ClassPredictions& predictions, const draw::Theme& theme, bool theory_withheld) {
   const float table_width = ImGui::GetContentRegionAvail().x;
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
@@ -282,7 +282,7 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
       ImGui::TableNextColumn();
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
       if (colour) ImGui::PushStyleColor(ImGuiCol_Text, *colour);
-      shown_text(text.c_str());
+      draw::shown_text(text.c_str());
       if (colour) ImGui::PopStyleColor();
       ImGui::PopTextWrapPos();
     };
@@ -294,7 +294,7 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
     const auto cell = [](const std::string& text) {
       ImGui::TableNextColumn();
       ImGui::PushTextWrapPos(0.0f);
-      shown_text(text.c_str());
+      draw::shown_text(text.c_str());
       ImGui::PopTextWrapPos();
     };
     ImGui::TableNextRow();
@@ -338,7 +338,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
   if (!value) return {why, false};
   const double reference = measured ? row.measured : row.predicted;
   const double off = *value - reference;
-  std::string words = format_quantity(off, prediction.unit.c_str());
+  std::string words = draw::format_quantity(off, prediction.unit.c_str());
   if (words.rfind("-", 0) == 0) {
     words.replace(0, 1, "\u2212");
   } else if (off > 0.0) {
@@ -357,7 +357,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
 }
 
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                          classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
+                          classroom_state::ClassPredictions& predictions, bool editable, const draw::Theme& theme,
                           const PredictionControls& controls, bool theory_withheld) {
   if (predictions.revealed) {
     after_the_reveal(lesson, rows, predictions, theme, theory_withheld);
@@ -454,7 +454,7 @@ std::string PredictionPanel::forget_outdated(const classroom_state::Playback& pl
          (predictions.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
 }
 
-void PredictionPanel::style(FrameStyle& style, const classroom_state::Playback& playback, bool asking, const Theme& colours,
+void PredictionPanel::style(draw::FrameStyle& style, const classroom_state::Playback& playback, bool asking, const draw::Theme& colours,
                             ControlPlaces& controls, std::function<bool()> theory_withheld) {
   const lessons::Lesson& lesson = playback.lesson();
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
@@ -524,4 +524,4 @@ std::optional<std::string> PredictionPanel::menu_items(bool& asking, classroom_s
   return said;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -19,7 +19,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // How close the class came, in words, against the measurement once there is one and the
 // theory before: "class: +0.12 N, 4 % above the measurement", "class: ✓ right", "class: ✗ the
@@ -49,7 +49,7 @@ struct PredictionControls {
 // `theory_withheld` (a mystery pair's values are in it: classroom_state/mystery.h) the theory says "hidden"
 // even then, and the class is judged against the measurement alone.
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                          classroom_state::ClassPredictions& predictions, bool editable, const Theme& theme,
+                          classroom_state::ClassPredictions& predictions, bool editable, const draw::Theme& theme,
                           const PredictionControls& controls, bool theory_withheld = false);
 // The height predictions_contents takes at a width (the panel's inside), in the current font.
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
@@ -105,8 +105,8 @@ struct PredictionPanel {
   // Its part of the frame: the contents and height in the theory panel, and what they hide.
   // `asking`: the teacher asks for predictions (the View menu). `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
   // theory, which stays hidden until the mystery is revealed.
-  void style(FrameStyle& style, const classroom_state::Playback& playback, bool asking, const Theme& colours,
+  void style(draw::FrameStyle& style, const classroom_state::Playback& playback, bool asking, const draw::Theme& colours,
              ControlPlaces& controls, std::function<bool()> theory_withheld);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

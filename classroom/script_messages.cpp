@@ -12,7 +12,7 @@
 #include "classroom_state/plain_words.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string ScriptWords::operator()(const std::string& text) const {
   if (paths) return text;
@@ -44,7 +44,7 @@ bool FailedScript::changed(double wall_seconds) {
 }
 
 void messages_panel(ImVec2 corner, float width, const classroom_state::Playback& playback, const FailedScript& failed, bool browser,
-                    const ScriptWords& words, const Theme& colours, ControlPlaces& controls) {
+                    const ScriptWords& words, const draw::Theme& colours, ControlPlaces& controls) {
   std::vector<std::pair<std::string, bool>> lines;  // text, is it a fault
   // A script's mistake, and under it Lua's message in plain words when it is a common one.
   const auto mistake = [&](const std::string& message, const std::string& then) {
@@ -72,7 +72,7 @@ void messages_panel(ImVec2 corner, float width, const classroom_state::Playback&
     ImGui::PushTextWrapPos(0.0f);
     for (const auto& [text, fault] : lines) {
       ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));
-      shown_text(text.c_str());
+      draw::shown_text(text.c_str());
       ImGui::PopStyleColor();
     }
     ImGui::PopTextWrapPos();
@@ -81,4 +81,4 @@ void messages_panel(ImVec2 corner, float width, const classroom_state::Playback&
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

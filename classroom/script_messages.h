@@ -12,7 +12,7 @@
 #include "classroom_state/playback.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // A text as the class sees it: with `paths` off (the page), every script's path in it
 // ("path:line: ...", "Reloaded path.") is its file's name alone.
@@ -36,6 +36,6 @@ struct FailedScript {
 
 // The messages panel in the world's lower left corner: nothing when all is well.
 void messages_panel(ImVec2 corner, float width, const classroom_state::Playback& playback, const FailedScript& failed, bool browser,
-                    const ScriptWords& words, const Theme& colours, ControlPlaces& controls);
+                    const ScriptWords& words, const draw::Theme& colours, ControlPlaces& controls);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

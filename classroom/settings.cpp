@@ -9,7 +9,7 @@
 #include "draw/image.h"
 #include "files/output_file.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 std::string settings_folder() {
   std::filesystem::path folder;
@@ -42,7 +42,7 @@ WindowSettings load_settings(const std::string& path) {
     double x = 0.0;
     const bool numeric = static_cast<bool>(number >> x) && number.eof();
     if (name == "theme" && (value == "light" || value == "dark")) {
-      settings.theme = value == "dark" ? ThemeName::dark : ThemeName::light;
+      settings.theme = value == "dark" ? draw::ThemeName::dark : draw::ThemeName::light;
     } else if (name == "projector" && (value == "on" || value == "off")) {
       settings.projector = value == "on";
     } else if (name == "help" && (value == "on" || value == "off")) {
@@ -99,4 +99,4 @@ std::string kept_from_last_session(const WindowSettings& settings) {
   return words + ". Speed ×1 and the tools off, as every session starts.";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -12,7 +12,7 @@
 
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // The measuring tools that are on (classroom/measuring_tools.h), for this session only.
 struct ToolSettings {
@@ -24,7 +24,7 @@ struct ToolSettings {
 };
 
 struct WindowSettings {
-  ThemeName theme = ThemeName::light;
+  draw::ThemeName theme = draw::ThemeName::light;
   bool projector = false;
   bool help = true;  // a newcomer sees the shortcuts first
   double speed = 1.0;                // this session only
@@ -55,4 +55,4 @@ bool save_settings(const WindowSettings& settings, const std::string& path);
 // window's; "" when none does.
 std::string kept_from_last_session(const WindowSettings& settings);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -10,9 +10,9 @@
 #include "classroom/classroom.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
-std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const Theme& colours,
+std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const draw::Theme& colours,
                               ControlPlaces& controls) {
   const char* const titles[] = {"", "Open a setup", "Save as a setup"};
   if (asked) {
@@ -65,7 +65,7 @@ std::string SetupDialog::draw(Classroom& classroom, const std::string& output_fo
   if (!error.empty()) {
     ImGui::PushTextWrapPos(560.0f * s);
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", error.c_str());
-    note_text(error.c_str());
+    draw::note_text(error.c_str());
     ImGui::PopTextWrapPos();
   }
   ImGui::EndPopup();
@@ -111,4 +111,4 @@ std::string SetupDialog::save(const std::string& path, const classroom_state::Pr
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -17,7 +17,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 class Classroom;
 
@@ -33,7 +33,7 @@ struct SetupDialog {
   }
   // The dialog while it is open; a save's path is first suggested in `output_folder`. Returns
   // what the status line should say ("" for nothing new).
-  std::string draw(Classroom& classroom, const std::string& output_folder, float scale, const Theme& colours,
+  std::string draw(Classroom& classroom, const std::string& output_folder, float scale, const draw::Theme& colours,
                    ControlPlaces& controls);
 
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
@@ -46,4 +46,4 @@ struct SetupDialog {
   static std::string save(const std::string& path, const classroom_state::PreparedSetup& setup, const lessons::Lesson& lesson);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

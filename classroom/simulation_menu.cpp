@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 SimulationChoice simulation_menu(const StepSettings& settings, const LessonLock& lock, ControlPlaces& controls) {
   SimulationChoice choice;
@@ -52,4 +52,4 @@ SimulationChoice simulation_menu(const StepSettings& settings, const LessonLock&
   return choice;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -9,7 +9,7 @@
 #include "classroom/lesson_lock.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct SimulationChoice {
   std::optional<StepSettings> settings;  // other step settings chosen
@@ -19,4 +19,4 @@ struct SimulationChoice {
 // The menu in the menu bar being drawn, for a lesson stepping with `settings`.
 SimulationChoice simulation_menu(const StepSettings& settings, const LessonLock& lock, ControlPlaces& controls);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

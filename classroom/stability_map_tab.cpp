@@ -11,7 +11,7 @@
 #include "physics/materials.h"
 #include "physics/scenarios.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 struct Threshold {
@@ -21,7 +21,7 @@ struct Threshold {
 
 }  // namespace
 
-void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& hidden) {
+void StabilityMapTab::update(const lessons::Lesson& lesson, const draw::HiddenValues& hidden) {
   mu_s_hidden = false;
   double mu_s = NAN, gravity = standard_gravity;
   std::string slope;
@@ -32,7 +32,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
     if (parameter.coefficient == static_coefficient.name && std::isnan(mu_s)) {
       // A mystery's μs would be read off the map's boundary: no map until it is revealed.
       if (hidden.hides(parameter.name)) {
-        chart = Chart{};
+        chart = draw::Chart{};
         words.clear();
         mu_s_hidden = true;
         return;
@@ -51,7 +51,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
   }
   words.clear();
   if (!(mu_s > 0.0)) {
-    chart = Chart{};
+    chart = draw::Chart{};
     return;
   }
   const std::vector<double> steps = logarithmic_range(1e-4, 1e-1, 13), epsilons = logarithmic_range(1e-4, 1e-1, 10);
@@ -61,9 +61,9 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
     made_for = {mu_s, gravity};
     cells = stability_map(pair, gravity, Integrator::semi_implicit_euler, steps, epsilons);
   }
-  chart = stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + classroom_state::exact_text(mu_s) + slope,
+  chart = draw::stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + classroom_state::exact_text(mu_s) + slope,
                                          cells, pair, gravity, Integrator::semi_implicit_euler, epsilons);
-  ChartSeries marks{"this lesson's \u03b5 at its step", {}, IM_COL32(0, 90, 200, 255), false, Marker::dot, {}};
+  draw::ChartSeries marks{"this lesson's \u03b5 at its step", {}, IM_COL32(0, 90, 200, 255), false, draw::Marker::dot, {}};
   for (const Threshold& threshold : thresholds) {
     marks.points.push_back({threshold.epsilon, threshold.h});
     marks.labels.push_back(threshold.name);
@@ -74,12 +74,12 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const HiddenValues& 
                   boundary * 1e3);
     words.push_back(line);
   }
-  chart.series.push_back({"this lesson's step", {{1e-4, h}, {1e-1, h}}, IM_COL32(0, 90, 200, 255), true, Marker::none, {}});
+  chart.series.push_back({"this lesson's step", {{1e-4, h}, {1e-1, h}}, IM_COL32(0, 90, 200, 255), true, draw::Marker::none, {}});
   chart.series.push_back(marks);
 }
 
-void StabilityMapTab::draw_tab(const lessons::Lesson& lesson, const HiddenValues& hidden, ControlPlaces& controls) {
-  const bool open = begin_tab("Stability###stability map");
+void StabilityMapTab::draw_tab(const lessons::Lesson& lesson, const draw::HiddenValues& hidden, ControlPlaces& controls) {
+  const bool open = draw::begin_tab("Stability###stability map");
   remember_item(controls, "Stability map tab");
   if (!open) return;
   update(lesson, hidden);
@@ -89,12 +89,12 @@ void StabilityMapTab::draw_tab(const lessons::Lesson& lesson, const HiddenValues
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", none);
     ImGui::PopTextWrapPos();
-    note_text(none);
+    draw::note_text(none);
   } else {
     const char* button = window_open ? "Hide the map" : "Show the map";
     if (ImGui::Button(button)) window_open = !window_open;
     remember_item(controls, "stability map");
-    note_text_centred(button, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    draw::note_text_centred(button, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     // Beside the button when it fits: the projector's column is narrow for its large text.
     const char* what = "the regularized law here";
     if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(what).x <=
@@ -102,16 +102,16 @@ void StabilityMapTab::draw_tab(const lessons::Lesson& lesson, const HiddenValues
       ImGui::SameLine();
     }
     ImGui::TextDisabled("%s", what);
-    note_text(what);
+    draw::note_text(what);
     ImGui::PushTextWrapPos(0.0f);
-    for (const std::string& line : words) shown_text(line.c_str());
+    for (const std::string& line : words) draw::shown_text(line.c_str());
     ImGui::PopTextWrapPos();
   }
   ImGui::EndTabItem();
 }
 
-void StabilityMapTab::draw_window(const lessons::Lesson& lesson, const HiddenValues& hidden, const Theme& colours,
-                                  const Fonts& fonts) {
+void StabilityMapTab::draw_window(const lessons::Lesson& lesson, const draw::HiddenValues& hidden, const draw::Theme& colours,
+                                  const draw::Fonts& fonts) {
   if (!window_open) return;
   update(lesson, hidden);
   const float s = fonts.scale;
@@ -126,4 +126,4 @@ void StabilityMapTab::draw_window(const lessons::Lesson& lesson, const HiddenVal
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

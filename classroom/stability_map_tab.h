@@ -19,23 +19,23 @@
 #include "lessons/runtime/lesson.h"
 #include "physics/stability.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct StabilityMapTab {
   // The map for a mu_s and the g·cos θ of the slope, made once for each.
   std::vector<StabilityCell> cells;
   std::pair<double, double> made_for{-1.0, -1.0};
-  Chart chart;                     // as last drawn: the map and the lesson's marks
+  draw::Chart chart;                     // as last drawn: the map and the lesson's marks
   std::vector<std::string> words;  // each threshold's side of the boundary, in words
   bool mu_s_hidden = false;        // no map: the lesson's μs is a mystery's, and its boundary would give it away
   bool window_open = false;
 
   // The chart and words for the lesson as it stands; none for a hidden μs.
-  void update(const lessons::Lesson& lesson, const HiddenValues& hidden);
+  void update(const lessons::Lesson& lesson, const draw::HiddenValues& hidden);
   // The tab, in the tab bar being drawn.
-  void draw_tab(const lessons::Lesson& lesson, const HiddenValues& hidden, ControlPlaces& controls);
+  void draw_tab(const lessons::Lesson& lesson, const draw::HiddenValues& hidden, ControlPlaces& controls);
   // The map's own window, while it is open.
-  void draw_window(const lessons::Lesson& lesson, const HiddenValues& hidden, const Theme& colours, const Fonts& fonts);
+  void draw_window(const lessons::Lesson& lesson, const draw::HiddenValues& hidden, const draw::Theme& colours, const draw::Fonts& fonts);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct StatusLine {
   std::string text;  // what it says; whoever has news writes it here
@@ -33,4 +33,4 @@ struct StatusLine {
   std::optional<Moment> moment_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <limits>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 namespace {
 
@@ -88,4 +88,4 @@ std::string Stopwatch::line(double now, bool playing, bool run_ended, std::size_
   return shown;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // A stopwatch on the lesson's clock: it counts the lesson time that passes while it is on, so
 // slow motion, a pause or fast forward change nothing it reads. On while the lesson is paused, it
@@ -54,4 +54,4 @@ class Stopwatch {
   bool used_ = false;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

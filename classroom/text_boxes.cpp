@@ -3,7 +3,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Where the note is kept: in the box's own window's storage, under this key, the id of the box
@@ -28,4 +28,4 @@ Typing typing() {
   return static_cast<ImGuiID>(noted) == g.ActiveId ? Typing::number : Typing::text;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -5,7 +5,7 @@
 // nature.
 #pragma once
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // Right after a box that takes a number (or a widget that holds one, as InputInt's group).
 void takes_a_number();
@@ -14,4 +14,4 @@ enum class Typing { nothing, number, text };
 // At the start of a frame: what the box typed in during the last frame takes, if one is.
 Typing typing();
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

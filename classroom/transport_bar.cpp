@@ -10,7 +10,7 @@
 #include "classroom/knob_slider.h"
 #include "draw/text_record.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 namespace {
 
@@ -73,7 +73,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     const auto noted_button = [&](const char* label, const char* name) {
       const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
       remember_item(controls, name);
-      note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      draw::note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
       return pressed;
     };
     if (noted_button(playback.playing() ? "Pause" : "Play", "play")) playback.toggle();
@@ -96,7 +96,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     {
       char shown[32];
       std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
-      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
     ImGui::SameLine();
     const Scene& scene = playback.lesson().scene();
@@ -131,7 +131,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     {
       char shown[96];
       std::snprintf(shown, sizeof shown, format, t);
-      note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
     if (!words.empty()) {
       if (!shape.words_below) {
@@ -140,7 +140,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
       }
       ImGui::PushFont(words_font);
       ImGui::TextDisabled("%s", words.c_str());
-      note_text(words.c_str());
+      draw::note_text(words.c_str());
       ImGui::PopFont();
       if (words != said && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", said.c_str());
     }
@@ -148,4 +148,4 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
   ImGui::End();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

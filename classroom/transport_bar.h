@@ -19,7 +19,7 @@
 #include "classroom/control_places.h"
 #include "classroom_state/playback.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct TransportBar {
   std::optional<double> scrubbing_to;  // the time bar dragged back: replayed when let go
@@ -39,4 +39,4 @@ struct TransportBar {
             float scale, ImFont* words_font, double& speed_kept, ControlPlaces& controls);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -9,7 +9,7 @@
 
 #include "draw/frame.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 void WorldHand::forget() {
   held = false;
@@ -25,16 +25,16 @@ void WorldHand::hold_view(const classroom_state::Playback& playback, ImVec2 orig
     held_view.reset();
     return;
   }
-  const std::vector<Camera> lanes =
-      ui::world_cameras(playback.lesson(), playback.framing(), size, scale, origin, view_adjust, projector);
+  const std::vector<draw::Camera> lanes =
+      draw::world_cameras(playback.lesson(), playback.framing(), size, scale, origin, view_adjust, projector);
   if (drag_lane >= lanes.size()) return;
   // The same world point under the same screen point: the mouse's place means what it meant.
   const b2Vec2 shift = held_view->centre - lanes[drag_lane].to_world(held_view->anchor);
   if (shift.IsValid()) view_adjust.pan += shift;
 }
 
-const Camera& WorldHand::camera_at(ImVec2 point) const {
-  for (const Camera& camera : cameras) {
+const draw::Camera& WorldHand::camera_at(ImVec2 point) const {
+  for (const draw::Camera& camera : cameras) {
     if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
   }
   return cameras.front();
@@ -45,12 +45,12 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback.lesson();
   Scene& scene = lesson.scene();
-  const FrameLayout layout = FrameLayout::of(size, scale, origin, projector, !lesson.plots().empty());
-  cameras = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
+  const draw::FrameLayout layout = draw::FrameLayout::of(size, scale, origin, projector, !lesson.plots().empty());
+  cameras = draw::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
   // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
   // own body's height, so the same screen point is another world point in the next lane.
   const bool dragging = (held || panning_from) && drag_lane < cameras.size();
-  const Camera& camera = dragging ? cameras[drag_lane] : camera_at(io.MousePos);
+  const draw::Camera& camera = dragging ? cameras[drag_lane] : camera_at(io.MousePos);
   const ImRect world(layout.world_corner, layout.world_corner + layout.world_size);
   const ImRect inset(layout.inset_corner, layout.inset_corner + layout.inset_size);
   const bool over_world = context.HoveredWindow != nullptr && context.HoveredWindow == ImGui::FindWindowByName("###world") &&
@@ -59,7 +59,7 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
     // Zoom about the point under the mouse: it stays where it is on the screen.
     const b2Vec2 under = camera.to_world(io.MousePos);
     view_adjust.zoom = std::clamp(view_adjust.zoom * std::pow(1.2f, io.MouseWheel), 0.1f, 20.0f);
-    const std::vector<Camera> zoomed = ui::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
+    const std::vector<draw::Camera> zoomed = draw::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
     const auto lane = static_cast<std::size_t>(&camera - cameras.data());
     const b2Vec2 shift = under - zoomed[lane].to_world(io.MousePos);
     if (shift.IsValid()) view_adjust.pan += shift;
@@ -116,4 +116,4 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
   // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -19,12 +19,12 @@
 #include "classroom_state/playback.h"
 #include "draw/camera.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 struct WorldHand {
   // The world view's cameras in the last frame (one per lane): where the hand finds bodies.
-  std::vector<Camera> cameras{Camera{}};
-  ViewAdjust view_adjust;               // the wheel's zoom and the drag's pan
+  std::vector<draw::Camera> cameras{draw::Camera{}};
+  draw::ViewAdjust view_adjust;               // the wheel's zoom and the drag's pan
   bool projector = false;               // the frame's layout (FrameLayout::of): projector mode's
   std::optional<b2Vec2> panning_from;   // the world point a drag on empty space holds under the mouse
   std::size_t drag_lane = 0;            // the lane (camera) the hand's or the pan's drag began in
@@ -46,7 +46,7 @@ struct WorldHand {
   // Something moves with the mouse: a body held or the view panned.
   bool drags() const { return held || panning_from.has_value(); }
   // The camera whose strip holds `point`, or the first one.
-  const Camera& camera_at(ImVec2 point) const;
+  const draw::Camera& camera_at(ImVec2 point) const;
   // Before the frame is built in `size` at `origin`: the pan that keeps the held point still.
   void hold_view(const classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale);
   // After it is built: the mouse's wheel, clicks and drags. The status line says what the hand
@@ -54,4 +54,4 @@ struct WorldHand {
   void handle_mouse(classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status);
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

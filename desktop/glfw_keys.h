@@ -11,36 +11,36 @@
 #include "classroom/key_taps.h"
 #include "classroom/keys.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 
 // GLFW's key codes for the keys the classroom answers: the one place they are named.
-inline std::optional<Key> classroom_key(int glfw_key) {
+inline std::optional<classroom::Key> classroom_key(int glfw_key) {
   switch (glfw_key) {
-    case GLFW_KEY_SPACE: return Key::space;
-    case GLFW_KEY_ESCAPE: return Key::escape;
-    case GLFW_KEY_PERIOD: return Key::period;
-    case GLFW_KEY_COMMA: return Key::comma;
-    case GLFW_KEY_R: return Key::r;
-    case GLFW_KEY_F1: return Key::f1;
-    case GLFW_KEY_F5: return Key::f5;
-    case GLFW_KEY_F11: return Key::f11;
-    case GLFW_KEY_P: return Key::p;
-    case GLFW_KEY_D: return Key::d;
-    case GLFW_KEY_T: return Key::t;
-    case GLFW_KEY_S: return Key::s;
-    case GLFW_KEY_E: return Key::e;
-    case GLFW_KEY_W: return Key::w;
-    case GLFW_KEY_L: return Key::l;
-    case GLFW_KEY_LEFT: return Key::left;
-    case GLFW_KEY_RIGHT: return Key::right;
+    case GLFW_KEY_SPACE: return classroom::Key::space;
+    case GLFW_KEY_ESCAPE: return classroom::Key::escape;
+    case GLFW_KEY_PERIOD: return classroom::Key::period;
+    case GLFW_KEY_COMMA: return classroom::Key::comma;
+    case GLFW_KEY_R: return classroom::Key::r;
+    case GLFW_KEY_F1: return classroom::Key::f1;
+    case GLFW_KEY_F5: return classroom::Key::f5;
+    case GLFW_KEY_F11: return classroom::Key::f11;
+    case GLFW_KEY_P: return classroom::Key::p;
+    case GLFW_KEY_D: return classroom::Key::d;
+    case GLFW_KEY_T: return classroom::Key::t;
+    case GLFW_KEY_S: return classroom::Key::s;
+    case GLFW_KEY_E: return classroom::Key::e;
+    case GLFW_KEY_W: return classroom::Key::w;
+    case GLFW_KEY_L: return classroom::Key::l;
+    case GLFW_KEY_LEFT: return classroom::Key::left;
+    case GLFW_KEY_RIGHT: return classroom::Key::right;
     default: return std::nullopt;
   }
 }
 
 // The modifier keys' GLFW codes, which ImGui's GLFW backend uses as io.KeysDown indices.
-inline constexpr ModifierKeys glfw_modifier_keys{{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
+inline constexpr classroom::ModifierKeys glfw_modifier_keys{{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
                                                  {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT},
                                                  {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
                                                  {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}};
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

@@ -16,7 +16,7 @@
 #include "draw/image.h"
 #include "draw/imgui_host.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 namespace {
 
 std::string glfw_error;
@@ -38,9 +38,9 @@ struct WindowDeleter {
 
 }  // namespace
 
-void run_window(Classroom& classroom, const WindowRun& run) {
+void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   Glfw glfw;
-  WindowSettings& settings = classroom.window_settings();
+  classroom::WindowSettings& settings = classroom.window_settings();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -67,14 +67,14 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   glfwMakeContextCurrent(window.get());
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
 
-  ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  draw::ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
   // Every key press reaches the classroom, and ImGui's widgets, even one let go before the next
   // frame; set before ImGui's backend, which calls it before its own.
   struct Listeners {
-    Classroom* classroom;
-    KeyTaps taps;
+    classroom::Classroom* classroom;
+    classroom::KeyTaps taps;
     bool event = false;  // input, or the window shown again: the sleeping loop must draw
-  } listeners{&classroom, KeyTaps(glfw_modifier_keys)};
+  } listeners{&classroom, classroom::KeyTaps(glfw_modifier_keys)};
   glfwSetWindowUserPointer(window.get(), &listeners);
   static constexpr auto event_came = [](GLFWwindow* from) { static_cast<Listeners*>(glfwGetWindowUserPointer(from))->event = true; };
   glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
@@ -82,7 +82,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     to->event = true;
     if (action != GLFW_PRESS) return;
     to->taps.pressed(key);  // GLFW's key codes are ImGui's indices under its GLFW backend
-    if (const std::optional<Key> named = classroom_key(key)) to->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
+    if (const std::optional<classroom::Key> named = classroom_key(key)) to->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
   });
   // Every other kind of input wakes the loop too; ImGui's backend, installed next, calls these
   // before its own (ImGui 1.86 reads the pointer's place itself each frame, so the move alone
@@ -105,8 +105,8 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   bool full_screen = false;
   int windowed[4] = {area[0], area[1], area[2], area[3]};
   double last = glfwGetTime();
-  WindowSettings saved = settings;
-  FramePacing pacing;
+  classroom::WindowSettings saved = settings;
+  classroom::FramePacing pacing;
   std::string shown_title = "FrictionLab";
   while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
     // Paused and untouched, the picture cannot change: sleep until input, waking four times a
@@ -140,7 +140,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
     last = now;
 
     host.make_current();
-    const Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+    const draw::Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
                                       settings.theme);
     ImGui_ImplGlfw_NewFrame();
     listeners.taps.hold(ImGui::GetIO());
@@ -165,7 +165,7 @@ void run_window(Classroom& classroom, const WindowRun& run) {
       glReadBuffer(GL_BACK);
       std::string error;
       try {
-        write_png(read_framebuffer(width, height), *screenshot);
+        write_png(draw::read_framebuffer(width, height), *screenshot);
       } catch (const std::exception& failure) {
         error = failure.what();
         if (frames_left == 0) throw;
@@ -211,4 +211,4 @@ void run_window(Classroom& classroom, const WindowRun& run) {
   if (!run.settings_path.empty()) save_settings(settings, run.settings_path);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

@@ -9,7 +9,7 @@
 
 #include "classroom/classroom.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::desktop {
 
 // There is no display to open a window on (no X server or Wayland compositor reachable), or
 // it refused an OpenGL 3.3 context. The message says which.
@@ -32,6 +32,6 @@ struct WindowRun {
 
 // Returns when the window is closed. Throws NoDisplay before anything is shown when it cannot
 // open, std::runtime_error if the screenshot asked for cannot be written.
-void run_window(Classroom& classroom, const WindowRun& run);
+void run_window(classroom::Classroom& classroom, const WindowRun& run);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::desktop

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 using lessons::body_box;
 using lessons::lesson_bounds;
@@ -170,4 +170,4 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   return made;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

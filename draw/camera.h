@@ -12,7 +12,7 @@
 #include "lessons/runtime/lesson.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 struct Camera {
   ImVec2 origin{0.0f, 0.0f};  // top-left of the view, pixels
@@ -46,4 +46,4 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
                                     float free_width, float scale, const ViewAdjust& adjust = {});
 inline constexpr float min_body_pixels = 48.0f;
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -8,7 +8,7 @@
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 using namespace chart_parts;
 
@@ -241,4 +241,4 @@ void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colo
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

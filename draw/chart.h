@@ -15,7 +15,7 @@
 #include "draw/image.h"
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // Where `value` lies from `low` (0) to `high` (1), without overflow for any finite values.
 double share(double value, double low, double high);
@@ -204,4 +204,4 @@ int nearest_curve(const std::vector<CurvePieces>& curves, ImVec2 point);
 // A polyline drawn in dashes of `dash` pixels with `gap` between them.
 void draw_dashed(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 colour, float thickness, float dash, float gap);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

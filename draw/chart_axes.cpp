@@ -9,7 +9,7 @@
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // Where `value` lies from `low` (0) to `high` (1). In halves: values near ±1.7e308 are finite,
 // but their differences may not be.
@@ -255,4 +255,4 @@ ImVec2 ChartLayout::to_screen(double x, double y) const {
                 low_left.y - static_cast<float>(share(ay, y_low, y_high)) * (low_left.y - high_right.y));
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -7,7 +7,7 @@
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 using namespace chart_parts;
 
@@ -154,4 +154,4 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   return layout;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

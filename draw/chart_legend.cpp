@@ -8,7 +8,7 @@
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 namespace chart_parts {
 
@@ -320,4 +320,4 @@ LegendPlace legend_corner(ImVec2 area_min, ImVec2 area_max, ImVec2 legend_size, 
   return best;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -14,7 +14,7 @@
 
 #include "draw/chart.h"
 
-namespace frictionlab::ui::chart_parts {
+namespace frictionlab::draw::chart_parts {
 
 // The multiples of `step` from `low` to `high`, at most `most` of them: a step lost in the
 // rounding of large values must not loop for ever.
@@ -74,4 +74,4 @@ bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corne
 void draw_legend(ImDrawList* draw, const Chart& chart, const std::vector<Key>& keys, const ChartLayout& layout, ImVec2 size,
                  const Theme& theme, const Fonts& fonts);
 
-}  // namespace frictionlab::ui::chart_parts
+}  // namespace frictionlab::draw::chart_parts

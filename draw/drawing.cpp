@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // The same arrow, as the placer knows it: an arrow is recorded once by its own width and again,
@@ -432,4 +432,4 @@ void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& sh
 }
 
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -16,7 +16,7 @@
 #include "draw/theme.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 inline ImVec2 add(ImVec2 a, ImVec2 b) { return ImVec2(a.x + b.x, a.y + b.y); }
 inline ImVec2 sub(ImVec2 a, ImVec2 b) { return ImVec2(a.x - b.x, a.y - b.y); }
@@ -199,4 +199,4 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
                   ImU32 outline, float thickness);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -14,7 +14,7 @@
 #include "draw/world_view.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
   FrameLayout layout;
@@ -600,4 +600,4 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   ImGui::PopFont();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -16,7 +16,7 @@
 #include "lessons/runtime/lesson.h"
 #include "lessons/runtime/readings.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // Where each part of the frame goes, for a display of a given size: the world at the top
 // left with the plots below it, the panels in a column on the right. Large text (projector
@@ -150,4 +150,4 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector = false);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -6,7 +6,7 @@
 
 #include "draw/gl.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 Image read_framebuffer(int width, int height) {
   Image image(width, height);
@@ -25,4 +25,4 @@ Image read_framebuffer(int width, int height) {
   return image;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

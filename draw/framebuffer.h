@@ -4,10 +4,10 @@
 
 #include "draw/image.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // The bound framebuffer's pixels (a window's back buffer, or an offscreen one), top row first,
 // from the current GL context.
 Image read_framebuffer(int width, int height);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -9,7 +9,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 double printed_net(const std::vector<b2Vec2>& forces) {
   double x = 0.0, y = 0.0, step = 1.0;
@@ -135,4 +135,4 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   noted(net_text, footer_at);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

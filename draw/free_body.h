@@ -12,7 +12,7 @@
 #include "draw/theme.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // What the inset drew, for tests: each arrow with its value and where the value went, what its
 // label placer was told to keep off, and the net force's line.
@@ -34,4 +34,4 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
 // Rounded to the finest printed digit first, so weight and normal force printed alike cancel.
 double printed_net(const std::vector<b2Vec2>& forces);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -8,7 +8,7 @@
 #include "draw/framebuffer.h"
 #include "draw/gl.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // Every context shares the one surfaceless display, and eglTerminate ends them all: the
@@ -113,4 +113,4 @@ std::string HeadlessContext::renderer() const {
   return name != nullptr ? name : "unknown";
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

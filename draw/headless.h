@@ -7,7 +7,7 @@
 
 #include "draw/image.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // EGL or OpenGL could not start here; the message says which step failed.
 struct HeadlessUnavailable : std::runtime_error {
@@ -42,4 +42,4 @@ class HeadlessContext {
   int height_ = 0;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -9,7 +9,7 @@
 
 #include "draw/frame.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 HeadlessRenderer::HeadlessRenderer(int width, int height, ThemeName theme, float scale)
     : width_(width), height_(height), theme_(theme), gl_(std::make_unique<HeadlessContext>()) {
@@ -96,4 +96,4 @@ Image render_charts(const std::vector<Chart>& charts, int columns, int width, in
   return gl.read_pixels();
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -15,7 +15,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // Where the last render's time went, in wall-clock seconds (llvmpipe draws on several
 // threads). For the benchmark only: nothing drawn depends on it.
@@ -62,4 +62,4 @@ class HeadlessRenderer {
 // HeadlessUnavailable where EGL cannot start.
 Image render_charts(const std::vector<Chart>& charts, int columns, int width, int height);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -11,7 +11,7 @@
 
 #include "files/output_file.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
   if (image.width <= 0 || image.height <= 0) throw std::runtime_error("cannot encode an empty picture");
@@ -90,4 +90,4 @@ ImageComparison compare_images(const Image& actual, const Image& expected, int c
   return result;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // RGBA, 8 bits a channel, top row first.
 struct Image {
@@ -45,4 +45,4 @@ struct ImageComparison {
 };
 ImageComparison compare_images(const Image& actual, const Image& expected, int channel_tolerance);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 ImGuiHost::ImGuiHost(const char* ini_path) {
   IMGUI_CHECKVERSION();
@@ -70,4 +70,4 @@ void ImGuiHost::end_frame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -7,7 +7,7 @@
 
 #include "draw/theme.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 class ImGuiHost {
  public:
@@ -38,4 +38,4 @@ class ImGuiHost {
   float styled_scale_ = 0.0f;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

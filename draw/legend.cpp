@@ -11,7 +11,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 std::string metres(float value) {
@@ -219,4 +219,4 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   return 10.0f * s + widest + 12.0f * s;  // the margins: 10 pt before, 6 pt and the panel's edge after
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -8,7 +8,7 @@
 #include "draw/theme.h"
 #include "physics/scene.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // In a strip (wider than tall): two rows. In a column (taller than wide, projector mode,
 // beside the plots): an entry a line.
@@ -18,4 +18,4 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
 // The width a column legend needs for the scene, the same all through its run.
 float legend_column_width(const Scene& scene, const Fonts& fonts);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 float pixels_per_newton(const Scene& scene, float reference_pixels) {
   float heaviest = 0.0f;
@@ -107,4 +107,4 @@ PrintedNumber printed_number(double value) {
   return {std::strtod(text, nullptr), std::pow(10.0, -decimals)};
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

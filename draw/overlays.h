@@ -14,7 +14,7 @@
 #include "physics/scene.h"
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 
 // Newtons to pixels, the same for every frame of a lesson: the heaviest weight gets
@@ -48,4 +48,4 @@ struct PrintedNumber {
 };
 PrintedNumber printed_number(double value);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -12,7 +12,7 @@
 #include "lessons/runtime/class_words.h"
 #include "lessons/runtime/model_card.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 bool begin_panel(const char* id, const char* title, ImVec2 corner, ImVec2 size, bool scroll) {
   ImGui::SetNextWindowPos(corner);
@@ -594,4 +594,4 @@ float model_contents_height(const lessons::Lesson& lesson, float width) {
   return height;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -12,7 +12,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // What the class must not see yet: the parameters of a mystery pair (classroom_state/mystery.h), by name.
 // While any is hidden, so is the theory worked out from them (the theory table's predictions
@@ -73,4 +73,4 @@ void model_contents(const lessons::Lesson& lesson);
 // The height model_contents takes at a width (the panel's inside), in the current font.
 float model_contents_height(const lessons::Lesson& lesson, float width);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -8,7 +8,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 struct Range {
@@ -250,4 +250,4 @@ ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plo
   return draw_chart(draw, corner, size, chart, theme, fonts);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

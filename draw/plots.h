@@ -13,7 +13,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // Plot number `plot` of the lesson as a chart for the chart engine: the probes' record as
 // series (coloured by regime on an X–Y plot of one probe), the slip shaded on a time plot, the
@@ -37,4 +37,4 @@ ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plo
                       ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true,
                       const std::function<std::string(const std::string&)>& script_words = {}, bool steady = false);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

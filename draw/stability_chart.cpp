@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 Chart stability_map_chart(const std::string& title, const std::vector<StabilityCell>& cells, const FrictionPair& pair,
                           double gravity, Integrator integrator, const std::vector<double>& epsilons) {
@@ -24,4 +24,4 @@ Chart stability_map_chart(const std::string& title, const std::vector<StabilityC
   return map;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

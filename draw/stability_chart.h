@@ -10,9 +10,9 @@
 #include "draw/chart.h"
 #include "physics/stability.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 Chart stability_map_chart(const std::string& title, const std::vector<StabilityCell>& cells, const FrictionPair& pair,
                           double gravity, Integrator integrator, const std::vector<double>& epsilons);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 std::vector<ShownText>* active = nullptr;
@@ -78,4 +78,4 @@ void shown_text(const char* text) {
   note_text(text);
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 struct ShownText {
   std::string panel;  // the ImGui window it was drawn in
@@ -51,4 +51,4 @@ void note_title(const char* title);
 // ImGui::TextUnformatted, noted.
 void shown_text(const char* text);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -7,7 +7,7 @@
 
 #include "physics/materials.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 ThemeName parse_theme(std::string_view name) {
   if (name == "light") return ThemeName::light;
@@ -296,4 +296,4 @@ void apply_imgui_style(ThemeName name, float scale) {
   ImGui::GetStyle() = style;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -10,7 +10,7 @@
 
 #include "physics/scene_forces.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 enum class ThemeName { light, dark };
 // Throws InvalidInput listing the themes.
@@ -67,4 +67,4 @@ std::string font_path();
 // ImGui's own colours and spacing for the theme.
 void apply_imgui_style(ThemeName name, float scale);
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 namespace {
 
@@ -54,4 +54,4 @@ std::string path_that_fits(const std::string& path, float room) {
   return best;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

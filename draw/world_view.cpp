@@ -10,7 +10,7 @@
 
 #include "draw/drawing.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 constexpr float pi = 3.14159265358979f;
@@ -414,4 +414,4 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

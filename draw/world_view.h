@@ -13,7 +13,7 @@
 #include "draw/theme.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 // The world, the arrows on every dynamic body and the contact marks into `camera`'s view;
 // `labels` already knows what else covers the view (the free-body inset), and keeps labels off it.
@@ -26,4 +26,4 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
                 const std::vector<const b2Body*>* labelled = nullptr, const std::function<void()>& fixed_labels = {});
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -25,16 +25,16 @@
 #include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // One display frame of `window` at `display` on a headless context, as the window layer draws
 // one: the fonts for its scale and theme, ImGui's frame, the window's, rendered. `wall` seconds
 // of real time pass (the lesson plays that long when playing); with `record`, where the frame
 // put things and every text it drew.
-inline void draw_window_frame(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 display, double wall = 0.0,
-                              FrameRecord* record = nullptr) {
+inline void draw_window_frame(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& window, ImVec2 display, double wall = 0.0,
+                              draw::FrameRecord* record = nullptr) {
   gl.make_current();
-  const Fonts& fonts = host.prepare(window.ui_scale(display), window.window_settings().theme);
+  const draw::Fonts& fonts = host.prepare(window.ui_scale(display), window.window_settings().theme);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = display;
   io.DeltaTime = 1.0f / 60.0f;
@@ -126,13 +126,13 @@ class ClassroomHands {
 
   // One display frame, `wall` seconds after the last (the lesson plays that long when playing);
   // with `record`, every text it drew.
-  void frame(double wall = 0.0, FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *classroom_, display_, wall, record); }
+  void frame(double wall = 0.0, draw::FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *classroom_, display_, wall, record); }
   // The same at another display's size for this frame only ((0, 0): the hands' own display).
-  void frame(double wall, ImVec2 display, FrameRecord* record = nullptr) {
+  void frame(double wall, ImVec2 display, draw::FrameRecord* record = nullptr) {
     draw_window_frame(gl_, host_, *classroom_, display.x == 0.0f ? display_ : display, wall, record);
   }
   // The frame drawn at `display`: the pixels the window would show.
-  Image picture(ImVec2 display = ImVec2(1280.0f, 720.0f)) {
+  draw::Image picture(ImVec2 display = ImVec2(1280.0f, 720.0f)) {
     frame(0.0, display);
     gl_.make_current();
     const int width = static_cast<int>(display.x), height = static_cast<int>(display.y);
@@ -144,10 +144,10 @@ class ClassroomHands {
   std::string texts() {
     frame();
     frame();
-    FrameRecord record;
+    draw::FrameRecord record;
     frame(0.0, &record);
     std::string all;
-    for (const ShownText& text : record.texts) all += text.text + "\n";
+    for (const draw::ShownText& text : record.texts) all += text.text + "\n";
     return all;
   }
   ImRect control(const std::string& name) {
@@ -161,9 +161,9 @@ class ClassroomHands {
   // The same on a text the last frames drew (a tab's name): its middle.
   void click_text(const std::string& text) {
     frame();
-    FrameRecord record;
+    draw::FrameRecord record;
     frame(0.0, &record);
-    for (const ShownText& shown : record.texts) {
+    for (const draw::ShownText& shown : record.texts) {
       if (shown.text != text) continue;
       click_at(ImVec2(0.5f * (shown.needed.x + shown.needed.z), 0.5f * (shown.needed.y + shown.needed.w)));
       return;
@@ -245,8 +245,8 @@ class ClassroomHands {
     return options;
   }
 
-  HeadlessContext gl_;
-  ImGuiHost host_;
+  draw::HeadlessContext gl_;
+  draw::ImGuiHost host_;
   ImVec2 display_;
   std::string folder_ = (std::filesystem::temp_directory_path() /
                          ("frictionlab_hands_" + std::to_string(::getpid()) + "_" +
@@ -255,4 +255,4 @@ class ClassroomHands {
   std::unique_ptr<Classroom> classroom_;
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -31,7 +31,7 @@
 #include "tests/rendering.h"
 #include "tests/text_contrast.h"
 
-namespace frictionlab::ui::layout_checks {
+namespace frictionlab::classroom::layout_checks {
 
 
 struct Screen {
@@ -60,28 +60,28 @@ inline std::string text_of(const ImVec4& box) {
   return text;
 }
 
-inline void check_layout(const FrameRecord& record, const lessons::Lesson& lesson, const std::string& where) {
+inline void check_layout(const draw::FrameRecord& record, const lessons::Lesson& lesson, const std::string& where) {
   ASSERT_FALSE(record.lanes.empty()) << where;
-  for (const FrameRecord::Lane& lane : record.lanes) {
-    const Camera& camera = lane.camera;
+  for (const draw::FrameRecord::Lane& lane : record.lanes) {
+    const draw::Camera& camera = lane.camera;
     for (std::size_t i = 0; i < lane.labels.size(); ++i) {
       const ImVec4 label = drawn(lane.labels[i]);
       for (std::size_t j = i + 1; j < lane.labels.size(); ++j) {
         const auto said = [&](std::size_t k) { return k < lane.texts.size() ? " \"" + lane.texts[k] + "\"" : std::string(); };
-        EXPECT_FALSE(overlaps(label, drawn(lane.labels[j])))
+        EXPECT_FALSE(draw::overlaps(label, drawn(lane.labels[j])))
             << where << ": labels" << said(i) << " at " << text_of(label) << " and" << said(j) << " at "
             << text_of(drawn(lane.labels[j])) << " overlap";
       }
-      for (const DrawnSegment& arrow : lane.arrows) {
+      for (const draw::DrawnSegment& arrow : lane.arrows) {
         // The shaft as drawn (its head is wider, and the placer keeps clear of that too).
-        const DrawnSegment shaft{arrow.from, arrow.to, 0.25f * arrow.half_width};
+        const draw::DrawnSegment shaft{arrow.from, arrow.to, 0.25f * arrow.half_width};
         EXPECT_FALSE(overlaps(label, shaft)) << where << ": the label at " << text_of(label) << " lies on an arrow";
       }
-      EXPECT_FALSE(overlaps(label, record.inset)) << where << ": the label at " << text_of(label)
+      EXPECT_FALSE(draw::overlaps(label, record.inset)) << where << ": the label at " << text_of(label)
                                                   << " is under the free-body diagram";
       // Contact marks and lane titles (and the inset) were there before any label.
       for (const ImVec4& mark : lane.avoided) {
-        EXPECT_FALSE(overlaps(label, mark)) << where << ": the label at " << text_of(label) << " covers a mark at "
+        EXPECT_FALSE(draw::overlaps(label, mark)) << where << ": the label at " << text_of(label) << " covers a mark at "
                                             << text_of(mark);
       }
       // Inside what of the lane shows (its panel clips its edges), which is inside the lane.
@@ -96,7 +96,7 @@ inline void check_layout(const FrameRecord& record, const lessons::Lesson& lesso
   // No panel covers a moving body: none is under the free-body diagram in the lane it is in.
   for (const auto& [name, body] : lesson.scene().bodies()) {
     if (body->GetType() != b2_dynamicBody) continue;
-    for (const FrameRecord::Lane& lane : record.lanes) {
+    for (const draw::FrameRecord::Lane& lane : record.lanes) {
       const ImVec2 centre = lane.camera.to_screen(body->GetWorldCenter());
       const bool in_lane = centre.y >= lane.camera.origin.y && centre.y <= lane.camera.origin.y + lane.camera.size.y &&
                            centre.x >= lane.camera.origin.x && centre.x <= lane.camera.origin.x + lane.camera.size.x;
@@ -105,7 +105,7 @@ inline void check_layout(const FrameRecord& record, const lessons::Lesson& lesso
         const b2AABB& box = fixture->GetAABB(0);
         const ImVec2 a = lane.camera.to_screen(box.lowerBound), b = lane.camera.to_screen(box.upperBound);
         const ImVec4 on_screen(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y));
-        EXPECT_FALSE(overlaps(on_screen, record.inset)) << where << ": " << name << " is under the free-body diagram";
+        EXPECT_FALSE(draw::overlaps(on_screen, record.inset)) << where << ": " << name << " is under the free-body diagram";
       }
     }
   }
@@ -116,7 +116,7 @@ inline bool overlaps_polygon(const ImVec4& box, const std::vector<ImVec2>& polyg
   const ImVec2 corners[4] = {{box.x, box.y}, {box.z, box.y}, {box.z, box.w}, {box.x, box.w}};
   std::vector<ImVec2> axes = {{1.0f, 0.0f}, {0.0f, 1.0f}};
   for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const ImVec2 edge = sub(polygon[(i + 1) % polygon.size()], polygon[i]);
+    const ImVec2 edge = draw::sub(polygon[(i + 1) % polygon.size()], polygon[i]);
     axes.push_back(ImVec2(-edge.y, edge.x));
   }
   for (const ImVec2& axis : axes) {
@@ -137,7 +137,7 @@ inline bool overlaps_polygon(const ImVec4& box, const std::vector<ImVec2>& polyg
 
 // The tools' readings of a body ("v = ..." and the gauge's "gauge ..."), each off every polygon
 // of that body as drawn. Returns how many were found.
-inline int readings_off(const FrameRecord::Lane& lane, const b2Body* body, const std::string& where) {
+inline int readings_off(const draw::FrameRecord::Lane& lane, const b2Body* body, const std::string& where) {
   int found = 0;
   for (std::size_t i = 0; i < lane.labels.size(); ++i) {
     if (lane.texts[i].find("v = ") == std::string::npos && lane.texts[i].rfind("gauge ", 0) != 0) continue;
@@ -159,9 +159,9 @@ inline int readings_off(const FrameRecord::Lane& lane, const b2Body* body, const
 // folded friction pairs leave the theory table too little room), and the class's predictions
 // in the theory table's place: text there may be a scroll away above or below, never cut
 // across. The sliders never scroll.
-inline void check_texts(const FrameRecord& record, const std::string& where) {
+inline void check_texts(const draw::FrameRecord& record, const std::string& where) {
   EXPECT_FALSE(record.texts.empty()) << where << ": no text was recorded";
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     const std::string panel = text.panel.substr(text.panel.find("###") == std::string::npos ? 0 : text.panel.find("###") + 3);
     // So may the class's predictions, where they are longer than the theory table they stand in for.
     const bool scrolled = text.scrolls && (panel == "books" || panel == "theory");
@@ -196,10 +196,10 @@ inline std::string window_screen_name(const ::testing::TestParamInfo<WindowScree
 
 // The first text drawn in the column's lower panel (the theory panel, or the tab it shares)
 // from `from` on that reads `wanted` (or starts with it, `prefix`): its place in the record.
-inline std::optional<std::size_t> lower_panel_text(const FrameRecord& record, std::size_t from, const std::string& wanted,
+inline std::optional<std::size_t> lower_panel_text(const draw::FrameRecord& record, std::size_t from, const std::string& wanted,
                                             bool prefix = false) {
   for (std::size_t i = from; i < record.texts.size(); ++i) {
-    const ShownText& text = record.texts[i];
+    const draw::ShownText& text = record.texts[i];
     const std::size_t id = text.panel.find("###");
     const std::string panel = id == std::string::npos ? text.panel : text.panel.substr(id + 3);
     if (panel != "theory" && panel != "books") continue;
@@ -226,4 +226,4 @@ inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window,
   return {{prediction.expectation, false}, {answer_and_closeness(prediction, answer, closeness(prediction, answer, *row)), false}};
 }
 
-}  // namespace frictionlab::ui::layout_checks
+}  // namespace frictionlab::classroom::layout_checks

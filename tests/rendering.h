@@ -12,7 +12,7 @@
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 
 constexpr int frame_width = 1280, frame_height = 720;
 
@@ -31,4 +31,4 @@ struct LessonAt {
   const Scene& scene() const { return lesson->scene(); }
 };
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <vector>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 
 // WCAG 2.1's relative luminance of an sRGB colour.
 inline double relative_luminance(const ImVec4& colour) {
@@ -162,4 +162,4 @@ inline std::vector<GlyphContrast> glyph_contrasts(const ImDrawData& data, const 
   return glyphs;
 }
 
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

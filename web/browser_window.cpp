@@ -36,14 +36,14 @@ struct Finger {
 };
 
 struct Page {
-  ui::Classroom* classroom = nullptr;
+  classroom::Classroom* classroom = nullptr;
   PageRun run;
   GLFWwindow* window = nullptr;
-  std::unique_ptr<ui::ImGuiHost> host;
-  ui::KeyTaps taps{ui::glfw_modifier_keys};
+  std::unique_ptr<draw::ImGuiHost> host;
+  classroom::KeyTaps taps{desktop::glfw_modifier_keys};
   Finger finger;
   double last = 0.0;
-  ui::FramePacing pacing;  // the desktop window's rule: no frame while nothing can change
+  classroom::FramePacing pacing;  // the desktop window's rule: no frame while nothing can change
   ImVec2 drawn_size;      // the display the last frame was laid out for
   float drawn_scale = 0.0f;
   bool looping = true;
@@ -56,7 +56,7 @@ struct Page {
   int told_theme = -1;
   // The window as a setup's text, as the page's address last kept it (none until the first frame).
   std::optional<std::string> told_setup;
-  ui::WindowSettings saved;
+  classroom::WindowSettings saved;
   bool full_screen = false;
 };
 
@@ -123,7 +123,7 @@ void copy_to_clipboard(void*, const char* text) {
 const char* nothing_to_paste(void*) { return ""; }
 
 // The page's own controls follow the classroom: told when what they show changed, not every frame.
-void tell_the_page(ui::Classroom& classroom) {
+void tell_the_page(classroom::Classroom& classroom) {
   Page& p = *page;
   if (const std::string& lesson = classroom.playback().lesson().path(); lesson != p.told_lesson) {
     p.told_lesson = lesson;
@@ -135,7 +135,7 @@ void tell_the_page(ui::Classroom& classroom) {
   }
   if (const int theme = static_cast<int>(classroom.window_settings().theme); theme != p.told_theme) {
     p.told_theme = theme;
-    EM_ASM({ frictionlabPage.setTheme($0); }, classroom.window_settings().theme == ui::ThemeName::dark ? 1 : 0);
+    EM_ASM({ frictionlabPage.setTheme($0); }, classroom.window_settings().theme == draw::ThemeName::dark ? 1 : 0);
   }
   // Values typed and predictions made survive a reload: the page's address keeps the window as a
   // setup (what Copy link gives), once it differs from what the page opened with, so a link
@@ -161,7 +161,7 @@ void tell_the_page(ui::Classroom& classroom) {
 
 void draw_frame() {
   Page& p = *page;
-  ui::Classroom& classroom = *p.classroom;
+  classroom::Classroom& classroom = *p.classroom;
   const double now = seconds_now();
   const double wall = std::clamp(now - p.last, 0.0, 0.25);  // a hidden tab must not ask for minutes at once
   p.last = now;
@@ -182,7 +182,7 @@ void draw_frame() {
     p.drawn_size = display;
     p.drawn_scale = scale;
   }
-  const ui::Fonts& fonts = p.host->prepare(scale, classroom.window_settings().theme);
+  const draw::Fonts& fonts = p.host->prepare(scale, classroom.window_settings().theme);
   ImGui_ImplGlfw_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
   // The canvas's own pixels are the display: GLFW's pointer is in them already.
@@ -202,7 +202,7 @@ void draw_frame() {
   }
   tell_the_page(classroom);
   glViewport(0, 0, width, height);
-  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(ui::theme(classroom.window_settings().theme).background);
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(draw::theme(classroom.window_settings().theme).background);
   glClearColor(clear.x, clear.y, clear.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   p.host->end_frame();
@@ -213,7 +213,7 @@ void draw_frame() {
   if (std::optional<std::string> screenshot = classroom.take_screenshot_request()) {
     std::string error;
     try {
-      ui::write_png(ui::read_framebuffer(width, height), *screenshot);
+      draw::write_png(draw::read_framebuffer(width, height), *screenshot);
     } catch (const std::exception& failure) {
       error = failure.what();
     }
@@ -224,17 +224,17 @@ void draw_frame() {
   // Full screen is the browser's. A key asks for it here, in the frame after the key's event:
   // browsers allow it for a few seconds after a key or a click, and refuse it otherwise (then
   // fullscreenchange never comes and the wish is dropped, as the page's message says).
-  ui::WindowSettings& settings = classroom.window_settings();
+  classroom::WindowSettings& settings = classroom.window_settings();
   if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
   if (settings.full_screen != p.full_screen) {
     EM_ASM({ frictionlabPage.setFullScreen($0); }, settings.full_screen ? 1 : 0);
     p.full_screen = settings.full_screen;
   }
   if (settings.help) p.run.help_to_save.reset();  // shown: from now on the user's own choice
-  ui::WindowSettings to_save = settings;
+  classroom::WindowSettings to_save = settings;
   if (p.run.help_to_save) to_save.help = *p.run.help_to_save;
-  if (!p.run.settings_path.empty() && ui::kept_settings_text(to_save) != ui::kept_settings_text(p.saved)) {
-    ui::save_settings(to_save, p.run.settings_path);
+  if (!p.run.settings_path.empty() && classroom::kept_settings_text(to_save) != classroom::kept_settings_text(p.saved)) {
+    classroom::save_settings(to_save, p.run.settings_path);
     keep_home_folder();
     p.saved = to_save;
   }
@@ -257,7 +257,7 @@ void frame_loop() {
 long frames_drawn() { return page == nullptr ? 0 : page->drawn; }
 bool sleeping() { return page != nullptr && !page->looping; }
 
-void run_page(ui::Classroom& classroom, const PageRun& run) {
+void run_page(classroom::Classroom& classroom, const PageRun& run) {
   if (glfwInit() == GLFW_FALSE) throw std::runtime_error("the browser offers no canvas to draw on");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -277,11 +277,11 @@ void run_page(ui::Classroom& classroom, const PageRun& run) {
   page->saved = classroom.window_settings();
   if (run.help_to_save) page->saved.help = *run.help_to_save;
   page->full_screen = false;
-  page->host = std::make_unique<ui::ImGuiHost>(nullptr);
+  page->host = std::make_unique<draw::ImGuiHost>(nullptr);
   glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || page == nullptr) return;
     page->taps.pressed(key);
-    if (const std::optional<ui::Key> named = ui::classroom_key(key)) {
+    if (const std::optional<classroom::Key> named = desktop::classroom_key(key)) {
       page->classroom->key_pressed(*named, (mods & GLFW_MOD_CONTROL) != 0);
     }
   });

@@ -23,7 +23,7 @@ struct PageRun {
 
 // Starts the page's frame loop and returns to the browser (the loop runs from its events).
 // The classroom must outlive the page.
-void run_page(ui::Classroom& classroom, const PageRun& run);
+void run_page(classroom::Classroom& classroom, const PageRun& run);
 
 // The loop's counts, for the page's tests: frames drawn since the page opened.
 long frames_drawn();

@@ -34,7 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace frictionlab;
 
-std::unique_ptr<ui::Classroom> classroom;
+std::unique_ptr<classroom::Classroom> classroom;
 // Where page.html writes a link's (or a .setup file's) text before the program opens it.
 constexpr const char* link_setup = "/link/frictionlab.setup";
 std::string returned;  // the last text handed to JavaScript; lives until the next call
@@ -76,17 +76,17 @@ void run_to_link_time(double seconds) {
   classroom->run_to(std::min(seconds, classroom->playback().lesson().duration()));
 }
 
-ui::ClassroomOptions page_options(const PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
+classroom::ClassroomOptions page_options(const PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
   const std::string& lesson = given.lesson;
   const std::string& setup = given.setup;
   const bool projector = given.projector;
-  ui::ClassroomOptions options;
-  const std::string folder = ui::settings_folder();
+  classroom::ClassroomOptions options;
+  const std::string folder = classroom::settings_folder();
   const bool first_visit = folder.empty() || !std::filesystem::exists(folder + "/settings.ini");
-  if (!folder.empty()) options.window = ui::load_settings(folder + "/settings.ini");
+  if (!folder.empty()) options.window = classroom::load_settings(folder + "/settings.ini");
   // Full screen cannot be restored: a browser grants it only right after a key or a click.
   options.window.full_screen = false;
-  const std::string kept = ui::kept_from_last_session(options.window);
+  const std::string kept = classroom::kept_from_last_session(options.window);
   if (projector) options.window.projector = true;
   // The help panel a newcomer's first page opens with would cover what a link was sent for: a
   // lesson in projector mode is for a class in front of the screen, and a lesson or a setup is
@@ -107,7 +107,7 @@ ui::ClassroomOptions page_options(const PageArguments& given, std::string& probl
   }
   if (!setup.empty()) {
     try {
-      options = ui::setup_options(setup, options);
+      options = classroom::setup_options(setup, options);
     } catch (const InvalidInput& error) {
       problem = error.what();
     }
@@ -132,25 +132,25 @@ int main(int argc, char** argv) {
   std::string problem;
   const PageArguments given = page_arguments(std::vector<std::string>(argv + 1, argv + argc));
   std::optional<bool> help_to_save;
-  const ui::ClassroomOptions options = page_options(given, problem, help_to_save);
+  const classroom::ClassroomOptions options = page_options(given, problem, help_to_save);
   try {
-    classroom = std::make_unique<ui::Classroom>(options);
+    classroom = std::make_unique<classroom::Classroom>(options);
   } catch (const std::exception& failure) {
     problem = failure.what();
-    ui::ClassroomOptions plain;
+    classroom::ClassroomOptions plain;
     plain.window = options.window;
     plain.output_folder = options.output_folder;
     plain.script_paths = false;
     plain.browser = true;
     plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
-    classroom = std::make_unique<ui::Classroom>(plain);
+    classroom = std::make_unique<classroom::Classroom>(plain);
   }
   run_to_link_time(given.at);
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
   web::PageRun run;
   run.link_setup_path = link_setup;
   run.help_to_save = help_to_save;
-  if (const std::string folder = ui::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
+  if (const std::string folder = classroom::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
   try {
     web::run_page(*classroom, run);
   } catch (const std::exception& failure) {

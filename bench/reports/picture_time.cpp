@@ -20,9 +20,9 @@ std::string frame_speed(bool quick, std::ostream& out, const Progress& progress)
   const auto seconds_since = [](clock::time_point start) {
     return std::chrono::duration<double>(clock::now() - start).count();
   };
-  std::unique_ptr<ui::HeadlessRenderer> renderer;
+  std::unique_ptr<draw::HeadlessRenderer> renderer;
   try {
-    renderer = std::make_unique<ui::HeadlessRenderer>(1280, 720);
+    renderer = std::make_unique<draw::HeadlessRenderer>(1280, 720);
   } catch (const std::exception& error) {
     out << "\nFrames: not measured, " << error.what() << '\n';
     return "";
@@ -48,17 +48,17 @@ std::string frame_speed(bool quick, std::ostream& out, const Progress& progress)
       const auto step_start = clock::now();
       lesson.step();
       step.push_back(seconds_since(step_start));
-      const ui::Image image = renderer->render(lesson, framing);
-      const ui::FrameTimes& times = renderer->last_times();
+      const draw::Image image = renderer->render(lesson, framing);
+      const draw::FrameTimes& times = renderer->last_times();
       ui.push_back(times.ui);
       raster.push_back(times.raster);
       readback.push_back(times.readback);
       frame.push_back(step.back() + times.total());
       auto png_start = clock::now();
-      bytes = ui::encode_png(image).size();
+      bytes = draw::encode_png(image).size();
       encode.push_back(seconds_since(png_start));
       png_start = clock::now();
-      ui::write_png(image, scratch);
+      draw::write_png(image, scratch);
       write.push_back(seconds_since(png_start));
     }
     const auto ms = [](const std::vector<double>& values) { return median(values) * 1e3; };

@@ -28,17 +28,17 @@ struct AccuracyRun {
 std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double, double>> points);
 // Charts drawn headless as PNG bytes; empty where EGL cannot start, and then, given `out`, a
 // line there saying why `name` was not drawn.
-std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
+std::string charts_png(const std::vector<draw::Chart>& charts, int columns, int width, int height, const std::string& name,
                        std::ostream* out);
 // The crosses a work-precision chart marks runs with: failed (drawn where the run's error lies)
 // and wrong answers (no error to draw: along the top).
-std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks();
+std::pair<draw::ChartSeries, draw::ChartSeries> failure_marks();
 // A work-precision chart of runs: error against cost, a curve per method (in the order met,
 // its fitted order of convergence in the legend when `fit_orders`), points labelled by rate,
 // exact answers at 10⁻¹², failed runs crossed where they lie and wrong answers along the top,
 // and the Pareto front of the runs that did not fail. Given `orders`, each method's fitted
 // order is also put there.
-ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
+draw::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
                                bool fit_orders = true, std::vector<std::pair<std::string, double>>* orders = nullptr);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);

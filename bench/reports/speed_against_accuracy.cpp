@@ -100,7 +100,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   const std::vector<BenchmarkProblem> problems = benchmark_problems();
   std::ostringstream csv;
   csv << "problem,measure,unit,method,treatment,epsilon_m_per_s,hz,substeps,velocity_iterations,error,cpu_s_per_simulated_s,fails\n";
-  std::vector<ui::Chart> charts;
+  std::vector<draw::Chart> charts;
   // Fitted orders: a row per problem, a column per method (short names).
   std::vector<std::vector<std::string>> order_table{{"fitted order"}};
   for (const Method& method : all) order_table[0].push_back(short_method(method.name));
@@ -108,9 +108,9 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   std::vector<std::vector<std::string>> table{{"method at 240 Hz"}};
   for (const Method& method : all) table.push_back({method.name});
   for (const BenchmarkProblem& problem : problems) table[0].push_back(problem.label + " (" + problem.unit + ")");
-  ui::Chart legend;
+  draw::Chart legend;
   legend.title = "Every chart's methods";
-  legend.legend = ui::Chart::Legend::only;
+  legend.legend = draw::Chart::Legend::only;
   std::size_t done = 0;
   const std::size_t total = problems.size() * all.size() * rates.size();
   for (const BenchmarkProblem& problem : problems) {
@@ -143,7 +143,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
       table[m + 1].push_back(method.reduced && !problem.line ? "-" : at_240);
     }
     std::vector<std::pair<std::string, double>> orders;
-    ui::Chart chart = work_precision_chart(problem.name, "error (" + problem.unit + ")", runs, true, &orders);
+    draw::Chart chart = work_precision_chart(problem.name, "error (" + problem.unit + ")", runs, true, &orders);
     std::vector<std::string> order_row{problem.label};
     for (const Method& method : all) {
       const auto found = std::find_if(orders.begin(), orders.end(), [&](const auto& entry) { return entry.first == method.name; });
@@ -151,7 +151,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     }
     order_table.push_back(order_row);
     // One legend for all (the colours are the same in every chart), the fitted orders here.
-    chart.legend = ui::Chart::Legend::none;
+    chart.legend = draw::Chart::Legend::none;
     chart.notes.pop_back();
     std::string note = "fitted order:";
     for (const auto& [method, order] : orders) {
@@ -188,8 +188,8 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     knob_runs.push_back({"60 Hz, sub-steps", static_cast<double>(count), run.error, run.cost, run.fails});
   }
   // The legend: every method's colour, and the marks.
-  std::erase_if(legend.series, [](const ui::ChartSeries& series) { return series.marker == ui::Marker::cross; });
-  for (ui::ChartSeries& series : legend.series) {
+  std::erase_if(legend.series, [](const draw::ChartSeries& series) { return series.marker == draw::Marker::cross; });
+  for (draw::ChartSeries& series : legend.series) {
     const std::size_t cut = series.name.find(" (order");
     if (cut != std::string::npos) series.name.erase(cut);
     series.points.clear();
@@ -200,7 +200,7 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
   legend.notes = {"points labelled by step rate (Hz)", "exact answers (error 0) drawn at 10\u207b\u00b9\u00b2",
                   "fitted order: slope of log error against log step", "over the runs that did not fail"};
   charts.push_back(legend);
-  ui::Chart knobs = work_precision_chart("Spring, Box2D + stick-slip: iterations and sub-steps", "error (m)", knob_runs, false);
+  draw::Chart knobs = work_precision_chart("Spring, Box2D + stick-slip: iterations and sub-steps", "error (m)", knob_runs, false);
   knobs.series[0].colour = IM_COL32(0, 114, 178, 255);
   knobs.series[1].colour = IM_COL32(204, 121, 167, 255);
   knobs.notes = {"labels: velocity iterations at 240 Hz; sub-steps per 1/60 s frame"};

@@ -43,7 +43,7 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   const std::vector<double> epsilons = logarithmic_range(1e-4, 1e-1, quick ? 10 : 25);
   std::ostringstream csv;
   csv << "integrator,h_s,epsilon_m_per_s,behaviour,theoretical_boundary_h_s\n";
-  std::vector<ui::Chart> charts;
+  std::vector<draw::Chart> charts;
   std::vector<std::vector<std::string>> table{{"method", "epsilon", "boundary h, theory", "measured", "measured / theory"}};
   for (const Method& method : methods) {
     // The maps are most of the work: a third each.
@@ -53,9 +53,9 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
       csv << method.name << ',' << cell.h << ',' << cell.epsilon << ',' << behaviour_name(cell.behaviour) << ','
           << theoretical_boundary(wood_on_wood, g, cell.epsilon, method.integrator) << '\n';
     }
-    ui::Chart map = ui::stability_map_chart(std::string("Regularized friction, ") + method.name, cells, wood_on_wood, g,
+    draw::Chart map = draw::stability_map_chart(std::string("Regularized friction, ") + method.name, cells, wood_on_wood, g,
                                             method.integrator, epsilons);
-    ui::ChartSeries measured{"measured boundary", {}, measured_colour, false, ui::Marker::dot, {}};
+    draw::ChartSeries measured{"measured boundary", {}, measured_colour, false, draw::Marker::dot, {}};
     for (const double epsilon : {1e-3, 1e-2, 1e-1}) {
       const double expected = theoretical_boundary(wood_on_wood, g, epsilon, method.integrator);
       const double found = measured_boundary(wood_on_wood, g, epsilon, method.integrator);
@@ -70,14 +70,14 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
 
   // Creep on a 20° slope, where Coulomb's block sticks (tan 20° = 0.36 < 0.5).
   const double angle = 20.0 * M_PI / 180.0;
-  ui::Chart creep;
+  draw::Chart creep;
   creep.title = "Creep on a 20\u00b0 slope, \u03bcs 0.5: it should hold";
   creep.x_label = "threshold speed \u03b5 (m/s)";
   creep.y_label = "creep speed (m/s)";
   creep.log_x = creep.log_y = true;
-  ui::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries creep_measured{"measured, h = boundary/5", {}, measured_colour, false,
-                                 ui::Marker::dot, {}};
+  draw::ChartSeries creep_theory{"theory: \u03b5\u00b7tan\u03b8/\u03bcs", {}, theory_colour, true, draw::Marker::none, {}};
+  draw::ChartSeries creep_measured{"measured, h = boundary/5", {}, measured_colour, false,
+                                 draw::Marker::dot, {}};
   double worst_creep = 0.0;
   for (const double epsilon : logarithmic_range(1e-3, 0.3, quick ? 6 : 12)) {
     const double h = 0.2 * theoretical_boundary(wood_on_wood, g, epsilon, Integrator::semi_implicit_euler);
@@ -92,14 +92,14 @@ std::vector<std::pair<std::string, std::string>> stability_files(bool quick, con
   charts.push_back(creep);
 
   // The viscous term: what one step does to the velocity.
-  ui::Chart viscous;
+  draw::Chart viscous;
   viscous.title = "Viscous term: one step's factor on v";
   viscous.x_label = "h\u00b7c/m";
   viscous.y_label = "v after / v before";
-  ui::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, explicit_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, ui::Marker::none, {}};
-  ui::ChartSeries bound_low{"", {}, theory_colour, true, ui::Marker::none, {}};
+  draw::ChartSeries explicit_step{"explicit force: 1 \u2212 h\u00b7c/m", {}, explicit_colour, true, draw::Marker::none, {}};
+  draw::ChartSeries exact_step{"FrictionLab (exact): e^(\u2212h\u00b7c/m)", {}, measured_colour, true, draw::Marker::none, {}};
+  draw::ChartSeries bound_high{"|factor| = 1: stability", {}, theory_colour, true, draw::Marker::none, {}};
+  draw::ChartSeries bound_low{"", {}, theory_colour, true, draw::Marker::none, {}};
   for (double ratio = 0.0; ratio <= 3.0 + 1e-9; ratio += 0.05) {
     explicit_step.points.push_back({ratio, viscous_explicit(ratio, 1)[1]});
     exact_step.points.push_back({ratio, viscous_exact(ratio, 1)[1]});

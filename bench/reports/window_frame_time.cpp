@@ -28,9 +28,9 @@ double percentile(std::vector<double> values, double fraction) {
 }  // namespace
 
 std::string window_frame_speed(bool quick, std::ostream& out, const Progress& progress) {
-  std::unique_ptr<ui::HeadlessContext> gl;
+  std::unique_ptr<draw::HeadlessContext> gl;
   try {
-    gl = std::make_unique<ui::HeadlessContext>();
+    gl = std::make_unique<draw::HeadlessContext>();
   } catch (const std::exception& error) {
     out << "\nWindow frames: not measured, " << error.what() << '\n';
     return "";
@@ -44,12 +44,12 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
       {"lesson", "physics", "physics + UI", "95th percentile", "worst", "drawing (llvmpipe)"}};
   const std::vector<std::string> names = lessons::builtin_lessons();
   for (const std::string& name : names) {
-    ui::ImGuiHost host(nullptr);
+    draw::ImGuiHost host(nullptr);
     gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
-    ui::ClassroomOptions options;
+    classroom::ClassroomOptions options;
     options.lesson = lessons::resolve_lesson(name);
     options.window.help = false;
-    ui::Classroom classroom(options);
+    classroom::Classroom classroom(options);
     // The lesson alone, the same frames, for the physics' share.
     classroom_state::Playback physics_only(options.lesson, {}, {});
     physics_only.play();
@@ -63,7 +63,7 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
       physics_only.advance(1.0 / 60.0);
       physics.push_back(thread_cpu_seconds() - start);
 
-      const ui::Fonts& fonts = host.prepare(classroom.ui_scale(display), classroom.window_settings().theme);
+      const draw::Fonts& fonts = host.prepare(classroom.ui_scale(display), classroom.window_settings().theme);
       ImGuiIO& io = ImGui::GetIO();
       io.DisplaySize = display;
       io.DeltaTime = 1.0f / 60.0f;

@@ -55,12 +55,12 @@ double fitted_order(const std::vector<std::pair<double, double>>& step_and_error
 
 }  // namespace
 
-std::string charts_png(const std::vector<ui::Chart>& charts, int columns, int width, int height, const std::string& name,
+std::string charts_png(const std::vector<draw::Chart>& charts, int columns, int width, int height, const std::string& name,
                        std::ostream* out) {
   try {
-    const std::vector<std::uint8_t> png = ui::encode_png(ui::render_charts(charts, columns, width, height));
+    const std::vector<std::uint8_t> png = draw::encode_png(draw::render_charts(charts, columns, width, height));
     return std::string(png.begin(), png.end());
-  } catch (const ui::HeadlessUnavailable& error) {
+  } catch (const draw::HeadlessUnavailable& error) {
     if (out) *out << name << ": not drawn, " << error.what() << '\n';
     return "";
   }
@@ -75,14 +75,14 @@ std::vector<std::pair<double, double>> pareto_front(std::vector<std::pair<double
   return front;
 }
 
-std::pair<ui::ChartSeries, ui::ChartSeries> failure_marks() {
-  return {{"failed run (chatter, wrong stops, creep, slide)", {}, IM_COL32(200, 30, 30, 255), false, ui::Marker::cross, {}},
-          {"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, ui::Marker::cross, {}}};
+std::pair<draw::ChartSeries, draw::ChartSeries> failure_marks() {
+  return {{"failed run (chatter, wrong stops, creep, slide)", {}, IM_COL32(200, 30, 30, 255), false, draw::Marker::cross, {}},
+          {"wrong answer (no error to draw), along the top", {}, IM_COL32(120, 0, 0, 255), false, draw::Marker::cross, {}}};
 }
 
-ui::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
+draw::Chart work_precision_chart(const std::string& title, const std::string& y_label, const std::vector<AccuracyRun>& runs,
                                bool fit_orders, std::vector<std::pair<std::string, double>>* orders) {
-  ui::Chart chart;
+  draw::Chart chart;
   chart.title = title;
   chart.x_label = "CPU time per simulated second (s)";
   chart.y_label = y_label;
@@ -99,7 +99,7 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
   std::vector<std::pair<double, double>> sound;  // (cost, error) of the runs that did not fail
   int exact = 0;
   for (const std::string& method : order) {
-    ui::ChartSeries curve{method, {}, method_colour(method), true, ui::Marker::dot, {}};
+    draw::ChartSeries curve{method, {}, method_colour(method), true, draw::Marker::dot, {}};
     std::vector<std::pair<double, double>> converging;
     for (const AccuracyRun* run : by_method[method]) {
       if (!std::isfinite(run->error)) {
@@ -126,7 +126,7 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
     }
     chart.series.push_back(curve);
   }
-  chart.series.push_back({"Pareto front", pareto_front(sound), IM_COL32(20, 20, 20, 255), true, ui::Marker::none, {}});
+  chart.series.push_back({"Pareto front", pareto_front(sound), IM_COL32(20, 20, 20, 255), true, draw::Marker::none, {}});
   if (!failed.points.empty()) chart.series.push_back(failed);
   if (!wrong_costs.empty()) {
     // A wrong answer has no error to draw: it is crossed along the top, at its cost.
@@ -144,9 +144,9 @@ ui::Chart work_precision_chart(const std::string& title, const std::string& y_la
 }
 
 std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
-  ui::Chart work = work_precision_chart("Spring stick-slip: error against cost", "max position error over 10 s (m)", runs);
+  draw::Chart work = work_precision_chart("Spring stick-slip: error against cost", "max position error over 10 s (m)", runs);
   work.notes.back() = "points labelled by step rate (Hz); the exact event-driven solution is the reference (error 0)";
-  ui::Chart convergence;
+  draw::Chart convergence;
   convergence.title = "Convergence: error against step";
   convergence.x_label = "step h (s)";
   convergence.y_label = "max position error (m)";
@@ -159,7 +159,7 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs) {
     by_method[run.method].push_back(&run);
   }
   for (const std::string& method : order) {
-    ui::ChartSeries step_curve{"", {}, method_colour(method), true, ui::Marker::dot, {}};
+    draw::ChartSeries step_curve{"", {}, method_colour(method), true, draw::Marker::dot, {}};
     std::vector<std::pair<double, double>> converging;
     for (const AccuracyRun* run : by_method[method]) {
       step_curve.points.push_back({1.0 / run->hz, run->error});

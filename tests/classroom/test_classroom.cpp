@@ -22,7 +22,7 @@
 #include "physics/stability.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Under a teacher's lock the Lesson menu's lessons are greyed: the menu says why, and how the
@@ -34,9 +34,9 @@ TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
     hands.set_display(display);
     hands.frame();
     hands.click("Lesson menu");
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(0.0, display, &record);
-    const auto said = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) {
+    const auto said = std::find_if(record.texts.begin(), record.texts.end(), [](const draw::ShownText& text) {
       return text.text.rfind("Locked by --lock on the command line", 0) == 0;
     });
     ASSERT_NE(said, record.texts.end()) << display.x << ": the open menu says nothing of the lock";
@@ -63,7 +63,7 @@ TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
       hands.playback().run_to(hands.lesson().duration());
       hands.frame();
       hands.frame();
-      FrameRecord record;
+      draw::FrameRecord record;
       hands.frame(0.0, display, &record);
       const std::string where = lesson + (projector ? ", projector" : "");
       std::set<std::string> units;
@@ -73,7 +73,7 @@ TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
       ASSERT_FALSE(units.empty()) << where;
       bool heading = false;
       int errors = 0;
-      for (const ShownText& text : record.texts) {
+      for (const draw::ShownText& text : record.texts) {
         heading = heading || text.text == "error (" + *units.begin() + ")";
         // A check mark, or the words beside a claim's verdict (check_the_article: "model agrees").
         const bool marked = text.text.rfind("\u2713 ", 0) == 0 || text.text.rfind("\u2717 ", 0) == 0;
@@ -241,7 +241,7 @@ TEST(Classroom, NoBuiltinLessonsBodyFallsOffDuringItsRun) {
 }
 
 // Pixels that are not the background: text, lines, panels.
-long drawn_pixels(const Image& image) {
+long drawn_pixels(const draw::Image& image) {
   long count = 0;
   const std::uint8_t* corner = image.pixel(0, 0);
   for (int y = 0; y < image.height; ++y) {
@@ -389,15 +389,15 @@ TEST(Classroom, TheStabilityMapMarksTheLessonsThresholdsAtItsStep) {
   hands.frame();
   hands.click("Stability map tab");
   hands.frame();
-  const Chart& chart = hands.classroom().stability_map_tab().chart;
+  const draw::Chart& chart = hands.classroom().stability_map_tab().chart;
   ASSERT_FALSE(chart.cells.empty());
   ASSERT_FALSE(chart.series.empty());
-  const ChartSeries& marks = chart.series.back();
+  const draw::ChartSeries& marks = chart.series.back();
   ASSERT_EQ(marks.points.size(), 2u);
   auto nearest = [&](double epsilon, double h) {
-    const ChartCell* best = nullptr;
+    const draw::ChartCell* best = nullptr;
     double distance = INFINITY;
-    for (const ChartCell& cell : chart.cells) {
+    for (const draw::ChartCell& cell : chart.cells) {
       const double d = std::hypot(std::log(cell.x / epsilon), std::log(cell.y / h));
       if (d < distance) {
         distance = d;
@@ -486,4 +486,4 @@ TEST(Classroom, TheStatusLineSaysThePresentStateOnly) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

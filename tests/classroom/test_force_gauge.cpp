@@ -22,7 +22,7 @@
 #include "tests/lesson_scripts.h"
 #include "lessons/runtime/history_csv.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 constexpr double g = 9.81;
@@ -162,12 +162,12 @@ TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
   for (int i = 1; i <= 120; ++i) {
     // Two pixels a frame for a second, then still for a second.
     ImGui::GetIO().MousePos = ImVec2(held.x + 2.0f * static_cast<float>(std::min(i, 60)), held.y);
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(1.0 / 60.0, &record);
     if (i % 30 != 0) continue;
     ASSERT_EQ(record.lanes.size(), 1u);
     const Scene& scene = hands.lesson().scene();
-    const Camera& camera = record.lanes.front().camera;
+    const draw::Camera& camera = record.lanes.front().camera;
     const GaugeShape shape = gauge_shape(scene, camera, scale);
     const ImVec2 pointer = ImGui::GetIO().MousePos;
     EXPECT_NEAR(shape.ring.x, pointer.x, 0.5f) << "frame " << i;
@@ -189,10 +189,10 @@ TEST(ForceGauge, TheRingIsDrawnAtThePointer) {
 TEST(ForceGauge, WhileTheHandPullsThePlotPagesShowTheGauge) {
   ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true), ImVec2(1920.0f, 1080.0f));
   const auto gauge_plot_shown = [&] {
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(1.0 / 60.0, &record);
     bool paged = false, shown = false;
-    for (const ShownText& text : record.texts) {
+    for (const draw::ShownText& text : record.texts) {
       // The pager's line: the first plot's title and "  (page/pages)".
       paged = paged || (text.text.find("  (") != std::string::npos && text.text.find('/') != std::string::npos);
       shown = shown || text.text.rfind("Hand + push (N)", 0) == 0;
@@ -225,7 +225,7 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
   const classroom_state::GaugeRecord& gauge = playback.gauge();
   ASSERT_EQ(gauge.stretches(h).size(), 2u);
   const double end = gauge.samples().back().t;
-  const Chart chart = gauge_chart(gauge, h, theme(ThemeName::light));
+  const draw::Chart chart = gauge_chart(gauge, h, theme(draw::ThemeName::light));
   ASSERT_TRUE(chart.fixed_x);
   // From a tenth of the pull before the hand took hold to a twentieth after it let go.
   EXPECT_NEAR(chart.x_low, taken - 0.1 * (end - taken), 2.0 * h);
@@ -245,7 +245,7 @@ TEST(ForceGauge, ThePlotsTimeAxisCoversTheLatestPull) {
 // and the ring stay in sight (the trial's block went under it).
 TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
   ClassroomHands hands(gauge_options("push", {}, true), ImVec2(1920.0f, 1080.0f));
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, &record);
   const ImVec4 inset_at_first = record.inset;
   const b2Body* block = hands.lesson().scene().body("block");
@@ -259,7 +259,7 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
     hands.frame(1.0 / 60.0, &record);
   }
   const b2AABB box = lessons::body_box(block);
-  const Camera& camera = record.lanes.front().camera;
+  const draw::Camera& camera = record.lanes.front().camera;
   const ImVec2 top_right = camera.to_screen(box.upperBound), bottom_left = camera.to_screen(box.lowerBound);
   ASSERT_GT(top_right.x, inset_at_first.x) << "the block was dragged to where the inset was";
   ASSERT_LT(top_right.y, inset_at_first.w);
@@ -340,10 +340,10 @@ TEST(ForceGauge, TheTheoryTableMarksAHandPulledStretchAndCountsNoFailure) {
   EXPECT_NE(readings.caveat.find("in no prediction"), std::string::npos) << readings.caveat;
 
   // What the panel shows: the word, and no failure's cross anywhere.
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, &record);
   bool marked = false, caveat_shown = false;
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     marked = marked || text.text == "hand-pulled";
     caveat_shown = caveat_shown || text.text == readings.caveat;
     EXPECT_EQ(text.text.find("\u2717"), std::string::npos) << "a failure is shown: " << text.text;
@@ -464,10 +464,10 @@ TEST(ForceGauge, AHandPulledMeasurementStaysWholeInTheClassTableOnAProjector) {
   hands.classroom().predictions().revealed = true;
   hands.frame();
   hands.frame();
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, &record);
   int found = 0;
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     if (text.text.find("hand-pulled") == std::string::npos && text.text.find("hand pulled") == std::string::npos) continue;
     ++found;
     EXPECT_TRUE(text.whole_across()) << "\"" << text.text << "\" needs x " << text.needed.x << " to " << text.needed.z
@@ -477,4 +477,4 @@ TEST(ForceGauge, AHandPulledMeasurementStaysWholeInTheClassTableOnAProjector) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Issue 31: a paused window drew four frames a second (12 % of a core on llvmpipe) though
@@ -42,4 +42,4 @@ TEST(FramePacing, APausedWindowSleepsAndDrawsOnlyForInputOrAChangedFile) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

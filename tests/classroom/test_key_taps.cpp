@@ -9,7 +9,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // The modifier keys as the window layer gives them to KeyTaps (GLFW's key codes, ImGui's indices
@@ -67,4 +67,4 @@ TEST(KeyTaps, ATappedChordHoldsItsModifierForItsFrame) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

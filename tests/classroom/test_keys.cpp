@@ -12,7 +12,7 @@
 
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 namespace fs = std::filesystem;
@@ -287,10 +287,10 @@ TEST(Stopwatch, ShownBeforeTheRunItStartsWithPlayAndStopsWithTheRun) {
   char said[64];
   std::snprintf(said, sizeof said, "stopwatch %.2f s (stopped at the run's end)", now());
   const auto shown_text = [&] {
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(0.0, &record);
     // Over the title, beside the lesson's clock.
-    for (const ShownText& text : record.texts) {
+    for (const draw::ShownText& text : record.texts) {
       if (text.text.rfind("stopwatch ", 0) == 0) return text.text;
     }
     return std::string("no stopwatch drawn");
@@ -384,7 +384,7 @@ TEST(WindowKeys, TheArrowKeysTurnThePlotsPages) {
   options.window.projector = true;
   ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
   const auto first_plot = [&] {
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame();
     hands.frame(0.0, &record);
     return record.plots.empty() ? std::size_t{999} : record.plots.front().number;
@@ -440,4 +440,4 @@ TEST(WindowKeys, TheBrowsersLessonMenuOffersItsFileChooserAndNamesNoFolders) {
 
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

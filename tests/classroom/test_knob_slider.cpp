@@ -13,14 +13,14 @@
 #include "classroom_state/playback.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 bool overlap(const ImRect& a, const ImVec4& b) { return a.Min.x < b.z && b.x < a.Max.x && a.Min.y < b.w && b.y < a.Max.y; }
 
 // The value's text drawn in the slider's frame, from the frame's record of every text.
-const ShownText* value_in(const FrameRecord& record, const ImRect& frame) {
-  for (const ShownText& text : record.texts) {
+const draw::ShownText* value_in(const draw::FrameRecord& record, const ImRect& frame) {
+  for (const draw::ShownText& text : record.texts) {
     const float middle_x = 0.5f * (text.needed.x + text.needed.z), middle_y = 0.5f * (text.needed.y + text.needed.w);
     if (frame.Contains(ImVec2(middle_x, middle_y))) return &text;
   }
@@ -29,7 +29,7 @@ const ShownText* value_in(const FrameRecord& record, const ImRect& frame) {
 
 TEST(KnobSlider, TheKnobNeverCoversItsValue) {
   int checked = 0;
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const char* lesson : {"push", "stacked_blocks", "spring_pull"}) {
       ClassroomOptions options;
       options.lesson = lesson;
@@ -42,13 +42,13 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
       playback.run_to(1.0);
       hands.frame();
       const auto check = [&](const std::string& name, const std::string& where) {
-        FrameRecord record;
+        draw::FrameRecord record;
         hands.frame();
         hands.frame(0.0, &record);
         const ImRect frame = hands.control(name);
         const std::optional<ImRect> knob = hands.classroom().control(name + " knob");
         ASSERT_TRUE(knob.has_value()) << where << ": the slider " << name << " has no knob of its own";
-        const ShownText* value = value_in(record, frame);
+        const draw::ShownText* value = value_in(record, frame);
         ASSERT_NE(value, nullptr) << where << ": no value drawn in " << name;
         EXPECT_FALSE(overlap(*knob, value->needed))
             << where << ": the knob (" << knob->Min.x << ", " << knob->Min.y << ")–(" << knob->Max.x << ", " << knob->Max.y
@@ -57,7 +57,7 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
         EXPECT_GT(knob->GetHeight(), 0.0f) << where;
         ++checked;
       };
-      const std::string in = std::string(lesson) + (theme == ThemeName::dark ? ", dark" : "");
+      const std::string in = std::string(lesson) + (theme == draw::ThemeName::dark ? ", dark" : "");
       for (const double speed : {classroom_state::Playback::slowest, 1.0, classroom_state::Playback::fastest}) {
         playback.set_speed(speed);
         check("speed", in + ", speed " + std::to_string(speed));
@@ -84,4 +84,4 @@ TEST(KnobSlider, TheKnobNeverCoversItsValue) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

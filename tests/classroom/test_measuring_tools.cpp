@@ -21,7 +21,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 constexpr double g = 9.81;
@@ -183,4 +183,4 @@ TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

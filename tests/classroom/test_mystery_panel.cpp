@@ -17,7 +17,7 @@
 #include "lessons/runtime/lesson.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
@@ -87,8 +87,8 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
     window.playback().refresh_readings();
     for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
       if (!row.numeric) continue;
-      const std::string predicted = format_quantity(row.predicted, row.unit.c_str());
-      if (row.measured_yet && format_quantity(row.measured, row.unit.c_str()) == predicted) continue;
+      const std::string predicted = draw::format_quantity(row.predicted, row.unit.c_str());
+      if (row.measured_yet && draw::format_quantity(row.measured, row.unit.c_str()) == predicted) continue;
       EXPECT_EQ(texts.find(predicted), std::string::npos) << row.name << " " << predicted << " at t = " << t << ":\n" << texts;
     }
     if (GetParam() != Theory::predict_first) {
@@ -145,10 +145,10 @@ TEST(MysteryWindow, NoTimeAxisTellsTheRunsLengthBeforeTheReveal) {
     ClassroomHands hands(options);
     hands.classroom().playback().run_to(t);
     if (reveal) hands.classroom().reveal_mystery();
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(0.0, &record);
     std::vector<double> ends;
-    for (const FrameRecord::Plot& plot : record.plots) {
+    for (const draw::FrameRecord::Plot& plot : record.plots) {
       if (plot.number == 1) ends.push_back(plot.layout.x_high);  // "Push and friction", over time
     }
     EXPECT_EQ(ends.size(), 1u);
@@ -247,9 +247,9 @@ TEST(MysteryWindow, APairTheLessonDoesNotHaveIsRefusedWithItsPairs) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // A value that rebuilds the lesson keeps the mystery's values; one that would take its pair away
@@ -285,9 +285,9 @@ TEST(MysteryWindow, ARebuildKeepsTheValuesAndThePairCannotBeChangedAway) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // In projector mode the column shows only the first lines of a tab before it scrolls: both
@@ -347,9 +347,9 @@ TEST(MysteryWindow, TheStabilityMapTabComesBackAtTheRevealWhereItFits) {
         hands.click("Stability map tab");
         EXPECT_FALSE(hands.classroom().stability_map_tab().chart.cells.empty()) << where << ": no map for the revealed μs";
       }
-      FrameRecord record;
+      draw::FrameRecord record;
       hands.frame(0.0, &record);
-      for (const ShownText& text : record.texts) {
+      for (const draw::ShownText& text : record.texts) {
         if (text.text.find("###") == std::string::npos) continue;  // a tab's name, with its id
         EXPECT_TRUE(text.whole_across()) << where << ": the tab " << text.text << " is cut";
       }
@@ -358,4 +358,4 @@ TEST(MysteryWindow, TheStabilityMapTabComesBackAtTheRevealWhereItFits) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -13,7 +13,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 using lessons::replaced;
@@ -167,10 +167,10 @@ TEST(ParametersPanel, AUnitWithAPercentSignIsShownAsText) {
   ScriptFile script(replaced(read_file(lessons::resolve_lesson("push")), "unit = \"kg\"", "unit = \"%s\""));
   ClassroomHands hands(script.path());
   hands.frame();
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
   bool shown = false;
-  for (const ShownText& text : record.texts) shown = shown || text.text == "1 %s";
+  for (const draw::ShownText& text : record.texts) shown = shown || text.text == "1 %s";
   EXPECT_TRUE(shown) << "the mass slider should read 1 %s";
 }
 
@@ -267,4 +267,4 @@ TEST(ParametersPanel, ASliderLetGoKeepsTheColumnAsTheLessonOpened) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -12,7 +12,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 const std::string breakaway_question = "The push grows steadily. How hard is it when the block starts to move?";
@@ -44,14 +44,14 @@ struct AnswersShown {
 AnswersShown answers_shown(ClassroomHands& hands, const std::string& question_start) {
   hands.frame();
   hands.frame();
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, &record);
   AnswersShown shown;
   std::string panel;
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     if (text.text.rfind(question_start, 0) == 0) panel = text.panel;
   }
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     if (panel.empty() || text.panel != panel) continue;
     shown.asked = true;
     shown.scrolls = shown.scrolls || text.scrolls;
@@ -141,10 +141,10 @@ predict { "broken", unit = "N", question = "How hard?" }
   hands.playback().run_to(0.1);
   ASSERT_TRUE(hands.classroom().theory_hidden());
   hands.frame();
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
   bool unknown = false;
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     EXPECT_NE(text.text, "measured: not yet") << "the failed row is said to be not measured yet";
     unknown = unknown || text.text == "measured: ?";
   }
@@ -174,7 +174,7 @@ TEST(PredictionPanel, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAn
 
   hands.click("reveal");
   EXPECT_FALSE(hands.classroom().theory_hidden());
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
   hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
   // Breakaway at mu_s·m·g = 0.45 × 1 kg × 9.81 m/s² = 4.41 N: the class's 4 N is 0.41 N below.
@@ -185,18 +185,18 @@ TEST(PredictionPanel, TheClassPredictsBeforePlayAndTheRevealSetsItBesideTheoryAn
   ASSERT_TRUE(breakaway.measured_yet);
   EXPECT_NEAR(breakaway.predicted, 0.45 * 9.81, 1e-9);
   const auto drawn = [&](const std::string& text) {
-    for (const ShownText& shown : record.texts) {
+    for (const draw::ShownText& shown : record.texts) {
       if (shown.text == text) return true;
     }
     return false;
   };
-  EXPECT_TRUE(drawn(format_quantity(breakaway.predicted, "N")));
-  EXPECT_TRUE(drawn(format_quantity(breakaway.measured, "N")));
+  EXPECT_TRUE(drawn(draw::format_quantity(breakaway.predicted, "N")));
+  EXPECT_TRUE(drawn(draw::format_quantity(breakaway.measured, "N")));
   // The class's line: its answer with the unit, and how far off it was.
   const double off = 4.0 - breakaway.measured;
   char close[128];
   std::snprintf(close, sizeof close, "class: 4 N \u00b7 \u2212%s, %.0f %% below the measurement",
-                format_quantity(-off, "N").c_str(), 100.0 * -off / breakaway.measured);
+                draw::format_quantity(-off, "N").c_str(), 100.0 * -off / breakaway.measured);
   EXPECT_TRUE(drawn(close)) << close;
   // T again hides the theory, the class's answers kept (a reveal by mistake undone, issue 31);
   // T reveals it once more; a lesson opened afresh asks again.
@@ -319,7 +319,7 @@ TEST(PredictionPanel, WithPredictionsOffTheTheoryShowsFromTheStart) {
 }
 
 // The vertices a plot's window drew in the theory's colours: its curves and their legend keys.
-int theory_vertices(const Theme& colours, std::size_t plots) {
+int theory_vertices(const draw::Theme& colours, std::size_t plots) {
   int count = 0;
   for (std::size_t i = 0; i < plots; ++i) {
     const ImGuiWindow* window = ImGui::FindWindowByName(("###plot" + std::to_string(i)).c_str());
@@ -338,16 +338,16 @@ int theory_vertices(const Theme& colours, std::size_t plots) {
 // (a word only as one of the choices offered, as often as the choices name it). After the
 // reveal each predicted row's theory is drawn beside the class's answer.
 TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
-  const auto all = [](const FrameRecord& record, const std::string& text, bool whole) {
+  const auto all = [](const draw::FrameRecord& record, const std::string& text, bool whole) {
     int count = 0;
-    for (const ShownText& shown : record.texts) count += whole ? shown.text == text : shown.text.find(text) != std::string::npos;
+    for (const draw::ShownText& shown : record.texts) count += whole ? shown.text == text : shown.text.find(text) != std::string::npos;
     return count;
   };
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     SCOPED_TRACE(entry.name);
     ClassroomHands hands(entry.name);
     hands.set_display(ImVec2(1920.0f, 1080.0f));
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame();
     hands.frame(0.0, ImVec2(0.0f, 0.0f), &record);
     const std::vector<lessons::ExpectationResult> rows = hands.lesson().expectations();
@@ -358,8 +358,8 @@ TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
         // A theory of exactly 0 (check_the_article's block ends at rest) reads "0 J", which the
         // energy ledger's "0.0000 J" contains without giving anything away: it is looked for as
         // a whole text, as a table cell would show it.
-        EXPECT_EQ(all(record, format_quantity(row.predicted, row.unit.c_str()), row.predicted == 0.0), 0)
-            << row.name << ": " << format_quantity(row.predicted, row.unit.c_str());
+        EXPECT_EQ(all(record, draw::format_quantity(row.predicted, row.unit.c_str()), row.predicted == 0.0), 0)
+            << row.name << ": " << draw::format_quantity(row.predicted, row.unit.c_str());
         continue;
       }
       int offered = 0;
@@ -368,7 +368,7 @@ TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
       }
       EXPECT_EQ(all(record, row.predicted_text, true), offered) << row.name << ": " << row.predicted_text;
     }
-    const Theme& colours = theme(ThemeName::light);
+    const draw::Theme& colours = theme(draw::ThemeName::light);
     const std::size_t plots = hands.lesson().plots().size();
     bool any_theory_curve = false;
     for (const lessons::Plot& plot : hands.lesson().plots()) any_theory_curve = any_theory_curve || !plot.theory.empty();
@@ -385,12 +385,12 @@ TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
       const auto row = std::find_if(rows.begin(), rows.end(),
                                     [&](const lessons::ExpectationResult& r) { return r.name == prediction.expectation; });
       ASSERT_NE(row, rows.end());
-      const std::string theory = row->numeric ? format_quantity(row->predicted, row->unit.c_str()) : row->predicted_text;
+      const std::string theory = row->numeric ? draw::format_quantity(row->predicted, row->unit.c_str()) : row->predicted_text;
       // In the theory table only (the class's lines give the answer and how close it came, not
       // the theory a second time): once for each row whose theory reads the same (contact_area's
       // four blocks all break away at one pull).
       const auto shown_theory = [](const lessons::ExpectationResult& r) {
-        return r.numeric ? format_quantity(r.predicted, r.unit.c_str()) : r.predicted_text;
+        return r.numeric ? draw::format_quantity(r.predicted, r.unit.c_str()) : r.predicted_text;
       };
       const auto same = std::count_if(rows.begin(), rows.end(), [&](const lessons::ExpectationResult& r) { return shown_theory(r) == theory; });
       EXPECT_EQ(all(record, theory, true), static_cast<int>(same)) << prediction.expectation << ": in the theory table, and only there";
@@ -404,4 +404,4 @@ TEST(PredictionPanel, BeforeTheRevealNoPanelGivesTheTheoryAway) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -14,7 +14,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 using lessons::replaced;
@@ -51,9 +51,9 @@ expect { "last", predicted = function() return "stays" end, measured = function(
   hands.playback().run_to(0.1);
   hands.frame();
   hands.frame();
-  FrameRecord record;
+  draw::FrameRecord record;
   hands.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
-  const auto row = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) { return text.text == "broken"; });
+  const auto row = std::find_if(record.texts.begin(), record.texts.end(), [](const draw::ShownText& text) { return text.text == "broken"; });
   ASSERT_NE(row, record.texts.end()) << "the theory table drew no row \"broken\"";
   ASSERT_GE(std::distance(row, record.texts.end()), 3) << "the row has no cells";
   EXPECT_EQ(row[1].text, "?");
@@ -75,13 +75,13 @@ TEST(ScriptMessages, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
     ClassroomHands hands(script.path());
     hands.frame();
     ASSERT_EQ(hands.classroom().failed_script().path, script.path()) << plain;
-    FrameRecord record;
+    draw::FrameRecord record;
     hands.frame(0.0, ImVec2(1280.0f, 720.0f), &record);
     // Lua's message from the script's name on: "NAME.lua:LINE: ...", its folders left out.
     const std::string error = hands.classroom().failed_script().error;
     const std::string luas_words = error.substr(error.find(".lua:"));
     bool luas = false, said = false;
-    for (const ShownText& shown : record.texts) {
+    for (const draw::ShownText& shown : record.texts) {
       luas = luas || shown.text.find(luas_words) != std::string::npos;
       said = said || shown.text.rfind("In plain words: " + plain, 0) == 0;
     }
@@ -249,4 +249,4 @@ end)
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -11,7 +11,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 // F11 asks the window (once a press) to toggle full screen; the window keeps the result in its
@@ -27,7 +27,7 @@ TEST(Settings, F11TogglesFullScreen) {
 TEST(Settings, SettingsSurviveARoundTripAndADamagedFileGivesTheDefaults) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_settings_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings settings;
-  settings.theme = ThemeName::dark;
+  settings.theme = draw::ThemeName::dark;
   settings.projector = true;
   settings.width = 1920;
   settings.full_screen = true;  // a projector's whole screen, kept for the next class
@@ -54,7 +54,7 @@ TEST(Settings, TheSpeedAndTheToolsChangeNothingThatIsKept) {
   faster.tools = ToolSettings{true, true, true, true};
   EXPECT_EQ(kept_settings_text(faster), kept_settings_text(before));
   for (const auto& [what, change] : std::vector<std::pair<std::string, void (*)(WindowSettings&)>>{
-           {"theme", [](WindowSettings& s) { s.theme = ThemeName::dark; }},
+           {"theme", [](WindowSettings& s) { s.theme = draw::ThemeName::dark; }},
            {"projector", [](WindowSettings& s) { s.projector = true; }},
            {"help", [](WindowSettings& s) { s.help = !s.help; }},
            {"predictions", [](WindowSettings& s) { s.predictions = !s.predictions; }},
@@ -76,7 +76,7 @@ TEST(Settings, TheSpeedAndTheToolsChangeNothingThatIsKept) {
 TEST(Settings, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
   const std::string path = (std::filesystem::temp_directory_path() / ("frictionlab_session_" + std::to_string(::getpid()) + ".ini")).string();
   WindowSettings yesterday;
-  yesterday.theme = ThemeName::dark;
+  yesterday.theme = draw::ThemeName::dark;
   yesterday.projector = true;
   yesterday.speed = 8.0;
   yesterday.tools = ToolSettings{true, true, true, true};
@@ -84,7 +84,7 @@ TEST(Settings, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
   const WindowSettings today = load_settings(path);
   EXPECT_EQ(today.speed, 1.0);
   EXPECT_EQ(today.tools, ToolSettings{});
-  EXPECT_EQ(today.theme, ThemeName::dark);
+  EXPECT_EQ(today.theme, draw::ThemeName::dark);
   EXPECT_TRUE(today.projector);
   EXPECT_EQ(kept_from_last_session(today),
             "Kept from the last session: dark theme, projector mode. Speed ×1 and the tools off, as every session starts.");
@@ -106,4 +106,4 @@ TEST(Settings, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

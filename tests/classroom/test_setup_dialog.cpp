@@ -12,7 +12,7 @@
 #include "classroom_state/setup_file.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 namespace fs = std::filesystem;
@@ -80,4 +80,4 @@ TEST(SetupDialog, SavesBesideTheScreenshotsUnderTheLessonsName) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

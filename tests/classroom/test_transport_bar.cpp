@@ -11,7 +11,7 @@
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 using lessons::ScriptFile;
@@ -234,4 +234,4 @@ end)
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

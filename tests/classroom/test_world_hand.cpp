@@ -10,7 +10,7 @@
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 
 TEST(WorldHand, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
@@ -53,18 +53,18 @@ TEST(WorldHand, TheMouseDragsABodyAndTheFrictionArrowAnswers) {
 TEST(WorldHand, TheWheelZoomsAndADragOnEmptySpacePans) {
   ClassroomHands hands("spring_pull");
   hands.frame();  // paused: the view moves only because of the mouse
-  const FrameLayout layout = FrameLayout::of(ImVec2(1280.0f, 720.0f), hands.classroom().ui_scale(ImVec2(1280.0f, 720.0f)),
+  const draw::FrameLayout layout = draw::FrameLayout::of(ImVec2(1280.0f, 720.0f), hands.classroom().ui_scale(ImVec2(1280.0f, 720.0f)),
                                              ImVec2(0.0f, ImGui::GetFrameHeight()));
   // Empty sky, high in the world view and left of the free-body diagram.
   const ImVec2 sky(layout.world_corner.x + 60.0f, layout.world_corner.y + 40.0f);
   hands.mouse_at(sky);
-  const Camera before = hands.classroom().world_camera();
+  const draw::Camera before = hands.classroom().world_camera();
   const b2Vec2 under = before.to_world(sky);
   ImGui::GetIO().MouseWheel = 2.0f;
   hands.frame();
   ImGui::GetIO().MouseWheel = 0.0f;
   hands.frame();
-  const Camera zoomed = hands.classroom().world_camera();
+  const draw::Camera zoomed = hands.classroom().world_camera();
   EXPECT_NEAR(zoomed.pixels_per_metre, before.pixels_per_metre * 1.44f, 1e-3f * before.pixels_per_metre);
   const b2Vec2 still_under = zoomed.to_world(sky);
   EXPECT_NEAR(still_under.x, under.x, 1e-4);
@@ -76,7 +76,7 @@ TEST(WorldHand, TheWheelZoomsAndADragOnEmptySpacePans) {
   ImGui::GetIO().MousePos = ImVec2(sky.x + 100.0f, sky.y + 30.0f);
   hands.frame();
   hands.button(false);
-  const Camera panned = hands.classroom().world_camera();
+  const draw::Camera panned = hands.classroom().world_camera();
   const ImVec2 moved = panned.to_screen(under);
   EXPECT_NEAR(moved.x, sky.x + 100.0f, 0.5f);
   EXPECT_NEAR(moved.y, sky.y + 30.0f, 0.5f);
@@ -89,7 +89,7 @@ TEST(WorldHand, TheWheelZoomsAndADragOnEmptySpacePans) {
     hands.button(true);
     hands.button(false);
   }
-  EXPECT_EQ(hands.classroom().view_adjust(), ViewAdjust{});
+  EXPECT_EQ(hands.classroom().view_adjust(), draw::ViewAdjust{});
   EXPECT_FLOAT_EQ(hands.classroom().world_camera().pixels_per_metre, before.pixels_per_metre);
 }
 
@@ -98,7 +98,7 @@ TEST(WorldHand, TheWheelZoomsAndADragOnEmptySpacePans) {
 TEST(WorldHand, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
   ClassroomHands hands("terrain");
   hands.frame();
-  const Camera lane = hands.classroom().world_camera();  // the first lane's, asphalt_box's
+  const draw::Camera lane = hands.classroom().world_camera();  // the first lane's, asphalt_box's
   const b2Body* box = hands.lesson().scene().body("asphalt_box");
   const ImVec2 held = lane.to_screen(box->GetWorldCenter());
   hands.mouse_at(held);
@@ -117,4 +117,4 @@ TEST(WorldHand, AHandDraggedAcrossALaneBoundaryStaysInItsLane) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

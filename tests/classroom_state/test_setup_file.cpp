@@ -34,12 +34,12 @@ std::string parse_error(const std::string& text) {
 }
 
 TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasInTheWindowAndByTheCommandLinesPath) {
-  ui::ClassroomHands teacher(ui::prepared_setup_options());
+  classroom::ClassroomHands teacher(classroom::prepared_setup_options());
   teacher.classroom().playback().run_to(1.0);
   teacher.classroom().reveal_mystery();  // revealed at home: the class still gets it hidden
   const std::string path = teacher.folder() + "/class.setup";
   ASSERT_EQ(teacher.classroom().save_setup(path), "");
-  const std::string text = ui::read_file(path);
+  const std::string text = classroom::read_file(path);
   EXPECT_EQ(text.rfind("# FrictionLab setup\n", 0), 0u) << text;
   EXPECT_NE(text.find("\nlesson spring_pull\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nset mass = 1.5\n"), std::string::npos) << text;
@@ -52,14 +52,14 @@ TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasInTheWindowAndByTheCommandL
 
   // In class: another lesson running, the setup opened in its place (the Lesson menu's dialog
   // does it so: tests/classroom/test_setup_dialog.cpp).
-  ui::ClassroomOptions plain;
+  classroom::ClassroomOptions plain;
   plain.lesson = "incline";
-  ui::ClassroomHands hands(plain);
+  classroom::ClassroomHands hands(plain);
   ASSERT_EQ(hands.classroom().open_setup(path), "");
-  ui::expect_prepared_setup(hands.classroom(), "opened in place of another lesson");
+  classroom::expect_prepared_setup(hands.classroom(), "opened in place of another lesson");
 
   // The --setup option's way: the options read and checked before the window is made.
-  ui::Classroom from_options(ui::setup_options(path, ui::ClassroomOptions{}));
+  classroom::Classroom from_options(classroom::setup_options(path, classroom::ClassroomOptions{}));
   expect_prepared_setup(from_options, "opened by setup_options");
 }
 
@@ -67,17 +67,17 @@ TEST(SetupFile, SavedFromTheWindowItOpensAgainAsItWasInTheWindowAndByTheCommandL
 // delete, as the reason (not --lock, which the teacher never typed), by --setup's way and the
 // menu's. A lesson opened from a setup without a lock is not locked.
 TEST(SetupFile, ItsLockIsNamedInTheLessonMenu) {
-  ui::ClassroomHands teacher(ui::prepared_setup_options());
+  classroom::ClassroomHands teacher(classroom::prepared_setup_options());
   const std::string path = teacher.folder() + "/monday.setup";
   ASSERT_EQ(teacher.classroom().save_setup(path), "");
-  ui::Classroom opened(ui::setup_options(path, ui::ClassroomOptions{}));
+  classroom::Classroom opened(classroom::setup_options(path, classroom::ClassroomOptions{}));
   const std::string why = opened.lock_words();
   EXPECT_EQ(why.rfind("Locked by the setup monday.setup", 0), 0u) << why;
   EXPECT_NE(why.find("delete its lock line (in " + path + ")"), std::string::npos) << why;
 
-  ui::ClassroomOptions plain;
+  classroom::ClassroomOptions plain;
   plain.lesson = "incline";
-  ui::ClassroomHands hands(plain);
+  classroom::ClassroomHands hands(plain);
   EXPECT_EQ(hands.classroom().lock_words(), "");
   ASSERT_EQ(hands.classroom().open_setup(path), "");
   hands.frame();
@@ -91,19 +91,19 @@ TEST(SetupFile, ItsLockIsNamedInTheLessonMenu) {
 }
 
 TEST(SetupFile, AStudentsScriptIsNamedFromTheSetupsFolderAndFoundFromAnywhere) {
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "spring_pull";
-  ui::ClassroomHands scratch(options);
+  classroom::ClassroomHands scratch(options);
   const std::string folder = scratch.folder() + "/class";
   fs::create_directories(folder);
   fs::copy_file(lessons::resolve_lesson("spring_pull"), folder + "/my_pull.lua");
-  ui::ClassroomOptions own;
+  classroom::ClassroomOptions own;
   own.lesson = folder + "/my_pull.lua";
   own.overrides = {{"k", "120"}};
-  ui::ClassroomHands hands(own);
+  classroom::ClassroomHands hands(own);
   ASSERT_EQ(hands.classroom().save_setup(folder + "/my.setup"), "");
   EXPECT_EQ(read_setup(folder + "/my.setup").lesson, "my_pull.lua");
-  ui::ClassroomHands other(options);
+  classroom::ClassroomHands other(options);
   ASSERT_EQ(other.classroom().open_setup(folder + "/my.setup"), "");
   EXPECT_EQ(fs::path(other.lesson().path()).filename(), "my_pull.lua");
   EXPECT_EQ(other.lesson().parameter("k").value, 120.0);
@@ -136,9 +136,9 @@ TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
   EXPECT_EQ(twice.lock, (std::vector<std::string>{"x", "y"}));
 
   // Against the lesson: the value, the lock's name and the pair are checked where the file gives them.
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "spring_pull";
-  ui::ClassroomHands hands(options);
+  classroom::ClassroomHands hands(options);
   hands.classroom().playback().run_to(0.5);
   const auto opened = [&](const std::string& text) {
     write_file(hands.folder() + "/broken.setup", text);
@@ -162,9 +162,9 @@ TEST(SetupFile, ABrokenFileSaysWhichLineAndTheRunningLessonKeepsRunning) {
 // The class's predictions, typed and picked in the theory panel, and the reveal: saved, then
 // opened into a window that had other answers, and by setup_options.
 TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "incline";
-  ui::ClassroomHands teacher(options, ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
+  classroom::ClassroomHands teacher(options, ImVec2(1920.0f, 1080.0f));  // the questions whole, none a scroll away
   teacher.frame();
   teacher.frame();
   teacher.click("prediction mean acceleration down the slope");
@@ -178,20 +178,20 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
   ASSERT_FALSE(teacher.classroom().theory_hidden());
   const std::string path = teacher.folder() + "/predicted.setup";
   ASSERT_EQ(teacher.classroom().save_setup(path), "");
-  const std::string text = ui::read_file(path);
+  const std::string text = classroom::read_file(path);
   EXPECT_NE(text.find("\npredictions on\npredict sticks or slides = slides\npredict mean acceleration down the slope = 2.5\n"
                       "theory revealed\n"),
             std::string::npos)
       << text;
 
   // Another window: another lesson's answers, hidden theory, predictions not asked.
-  ui::ClassroomOptions other;
+  classroom::ClassroomOptions other;
   other.lesson = "tipping_box";
   other.window.predictions = false;
-  ui::ClassroomHands hands(other);
+  classroom::ClassroomHands hands(other);
   hands.classroom().predictions().answers["tips or slides"] = "tips";
   ASSERT_EQ(hands.classroom().open_setup(path), "");
-  const auto expect_predicted = [](ui::Classroom& window, const std::string& where) {
+  const auto expect_predicted = [](classroom::Classroom& window, const std::string& where) {
     EXPECT_EQ(fs::path(window.playback().lesson().path()).filename(), "incline.lua") << where;
     EXPECT_EQ(window.predictions().answers,
               (std::map<std::string, std::string>{{"mean acceleration down the slope", "2.5"}, {"sticks or slides", "slides"}}))
@@ -201,9 +201,9 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
     EXPECT_FALSE(window.theory_hidden()) << where;
   };
   expect_predicted(hands.classroom(), "opened in the window");
-  ui::ClassroomOptions plain;
+  classroom::ClassroomOptions plain;
   plain.window.predictions = false;
-  ui::Classroom from_options(ui::setup_options(path, plain));
+  classroom::Classroom from_options(classroom::setup_options(path, plain));
   expect_predicted(from_options, "opened by setup_options");
 
   // Not yet revealed, and a teacher who takes none: saved so, and opened so.
@@ -211,7 +211,7 @@ TEST(SetupFile, TheClassesPredictionsAndTheRevealAreSavedAndOpenAgain) {
   hands.classroom().window_settings().predictions = false;
   hands.classroom().predictions().answers.erase("sticks or slides");
   ASSERT_EQ(hands.classroom().save_setup(path), "");
-  const std::string quiet = ui::read_file(path);
+  const std::string quiet = classroom::read_file(path);
   EXPECT_NE(quiet.find("\npredictions off\npredict mean acceleration down the slope = 2.5\n"), std::string::npos) << quiet;
   EXPECT_EQ(quiet.find("theory"), std::string::npos) << quiet;
   EXPECT_EQ(quiet.find("sticks or slides"), std::string::npos) << quiet;
@@ -252,9 +252,9 @@ TEST(SetupFile, APredictionsRowNameMayHoldAnythingButALineBreak) {
   PreparedSetup odd;
   odd.lesson = "terrain";
   odd.answers = {{"ice box: then", "a = b", 0}};
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "terrain";
-  ui::ClassroomHands hands(options);
+  classroom::ClassroomHands hands(options);
   const std::string path = hands.folder() + "/odd.setup";
   try {
     write_setup(path, odd);
@@ -287,9 +287,9 @@ TEST(SetupFile, ABrokenPredictionSaysWhichLineAndTheRunningLessonKeepsRunning) {
             "class.setup:3: theory given twice (lines 2 and 3); say once whether the theory is shown");
 
   // Against the lesson, where the file gives each.
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "spring_pull";
-  ui::ClassroomHands hands(options);
+  classroom::ClassroomHands hands(options);
   hands.classroom().playback().run_to(0.5);
   hands.classroom().predictions().answers["breakaway force"] = "4";
   const auto opened = [&](const std::string& text) {
@@ -330,29 +330,29 @@ TEST(SetupFile, ABrokenPredictionSaysWhichLineAndTheRunningLessonKeepsRunning) {
 }
 
 TEST(SetupFile, SavingNeverWritesOverAScriptOrAnythingButASetupItWrote) {
-  ui::ClassroomOptions options;
+  classroom::ClassroomOptions options;
   options.lesson = "incline";
-  ui::ClassroomHands hands(options);
-  ui::Classroom& window = hands.classroom();
+  classroom::ClassroomHands hands(options);
+  classroom::Classroom& window = hands.classroom();
   const std::string folder = hands.folder();
   write_file(folder + "/lesson.lua", "-- a student's lesson\n");
   EXPECT_NE(window.save_setup(folder + "/lesson.lua").find("that looks like a lesson script"), std::string::npos);
-  EXPECT_EQ(ui::read_file(folder + "/lesson.lua"), "-- a student's lesson\n");
+  EXPECT_EQ(classroom::read_file(folder + "/lesson.lua"), "-- a student's lesson\n");
   write_file(folder + "/notes.setup", "my notes\n");
   EXPECT_NE(window.save_setup(folder + "/notes.setup").find("a file FrictionLab did not write is there"), std::string::npos);
-  EXPECT_EQ(ui::read_file(folder + "/notes.setup"), "my notes\n");
+  EXPECT_EQ(classroom::read_file(folder + "/notes.setup"), "my notes\n");
   ASSERT_EQ(::mkfifo((folder + "/pipe.setup").c_str(), 0600), 0);
   EXPECT_NE(window.save_setup(folder + "/pipe.setup").find("a FIFO (named pipe) is there"), std::string::npos);
   fs::create_directory(folder + "/folder.setup");
   EXPECT_NE(window.save_setup(folder + "/folder.setup").find("a folder is there"), std::string::npos);
   fs::create_symlink(folder + "/notes.setup", folder + "/link.setup");
   EXPECT_NE(window.save_setup(folder + "/link.setup").find("a symbolic link is there"), std::string::npos);
-  EXPECT_EQ(ui::read_file(folder + "/notes.setup"), "my notes\n");
+  EXPECT_EQ(classroom::read_file(folder + "/notes.setup"), "my notes\n");
   // A setup it wrote is replaced, whole.
   ASSERT_EQ(window.save_setup(folder + "/class.setup"), "");
   window.playback().set_parameter("angle", "33");
   ASSERT_EQ(window.save_setup(folder + "/class.setup"), "");
-  EXPECT_NE(ui::read_file(folder + "/class.setup").find("\nset angle = 33\n"), std::string::npos);
+  EXPECT_NE(classroom::read_file(folder + "/class.setup").find("\nset angle = 33\n"), std::string::npos);
   // No temporary file is left beside them.
   for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
     EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
@@ -371,7 +371,7 @@ namespace {
 // their tallest (revealed) have a panel of their own over the tabs, the Mystery tab shown under it.
 // With no predictions taken the Mystery tab comes forward.
 TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
-  ui::ClassroomHands teacher(ui::prepared_setup_options());
+  classroom::ClassroomHands teacher(classroom::prepared_setup_options());
   // Not in a window's folder: each window below has that folder's name, and takes it away when it closes.
   const fs::path folder = fs::temp_directory_path() / ("frictionlab_predict_first_" + std::to_string(::getpid()));
   fs::create_directories(folder);
@@ -395,10 +395,10 @@ TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
                                // reveal), without the theory table under them (issue 31): here they
                                // have a panel of their own, and the Mystery tab shows beneath it.
                                Screen{"1280x720", ImVec2(1280.0f, 720.0f), false, true}}) {
-    ui::ClassroomOptions options;
+    classroom::ClassroomOptions options;
     options.lesson = "incline";
     options.window.projector = screen.projector;
-    ui::ClassroomHands hands(options, screen.size);
+    classroom::ClassroomHands hands(options, screen.size);
     hands.frame();
     hands.frame();
     hands.click_text("Energy###energy");  // the tab the last class left open
@@ -407,9 +407,9 @@ TEST(SetupFile, ASetupWithPredictionsOpensOnWhatTheClassPredicts) {
     EXPECT_TRUE(hands.classroom().control(predicted).has_value()) << screen.name << ": " << predicted << " not shown in\n" << texts;
     EXPECT_EQ(texts.find(mystery_heading) != std::string::npos, screen.mystery_shown) << screen.name << ":\n" << texts;
     // By the command line's --setup too.
-    ui::ClassroomOptions base;
+    classroom::ClassroomOptions base;
     base.window.projector = screen.projector;
-    ui::ClassroomHands opened(setup_options(path, base), screen.size);
+    classroom::ClassroomHands opened(setup_options(path, base), screen.size);
     texts = opened.texts();
     EXPECT_TRUE(opened.classroom().control(predicted).has_value()) << screen.name << ", --setup:\n" << texts;
     EXPECT_EQ(texts.find(mystery_heading) != std::string::npos, screen.mystery_shown) << screen.name << ", --setup:\n" << texts;
@@ -455,8 +455,8 @@ TEST(SetupLink, HoldsTheWholeSetupAndOpensAsTheFileDoes) {
   EXPECT_EQ(from_link.values[0].text, "2.5");
   ASSERT_TRUE(from_link.mystery.has_value());
   EXPECT_EQ(from_link.mystery->seed, 42u);
-  ui::ClassroomOptions base;
-  const ui::ClassroomOptions options = ui::setup_options(link, base);
+  classroom::ClassroomOptions base;
+  const classroom::ClassroomOptions options = classroom::setup_options(link, base);
   EXPECT_EQ(options.overrides.at("mass"), "2.5");
   EXPECT_EQ(options.lock, (std::vector<std::string>{"mass", "mu_s"}));
 }
@@ -499,7 +499,7 @@ TEST(SetupLink, CarriesAStudentsOwnLessonAndKeepsItAsThePageDoes) {
   EXPECT_EQ(*received, "# FrictionLab setup\nlesson " + kept + "\nset mass = 3\n");
   std::ifstream file(kept, std::ios::binary);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()), script);
-  const ui::ClassroomOptions options = ui::setup_options(link, ui::ClassroomOptions{});
+  const classroom::ClassroomOptions options = classroom::setup_options(link, classroom::ClassroomOptions{});
   EXPECT_EQ(options.lesson, kept);
   EXPECT_EQ(options.overrides.at("mass"), "3");
   // The same link again: the same lesson, kept once. Another lesson of that name: beside it.

@@ -14,7 +14,7 @@
 #include "tests/lesson_scripts.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // Two blocks sliding apart on two floors 3 m apart, and a view{} line to try.
@@ -221,4 +221,4 @@ TEST(View, EveryLessonsMovingBodiesStayInThePictureAllThroughARun) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

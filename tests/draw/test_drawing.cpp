@@ -8,7 +8,7 @@
 
 #include "draw/drawing.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // 1, 2 or 5 times a power of ten, within a float's rounding.
@@ -132,4 +132,4 @@ TEST(Drawing, AValueWithALeaderLiesOnNoOtherBodyWhereAPlaceOffThemIsNear) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

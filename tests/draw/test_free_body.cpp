@@ -16,7 +16,7 @@
 #include "draw/overlays.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // "3.98 N" as 3.98; the inset's forces are printed in plain decimals.
@@ -82,4 +82,4 @@ TEST(FreeBody, TheInsetsNumbersAddUpAsPrinted) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -12,7 +12,7 @@
 #include "draw/overlays.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // One renderer for the suite's tests in this process: EGL starts once.
@@ -129,9 +129,9 @@ TEST(Rendering, TwoRenderersAtOnceDrawTheSamePicture) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // A chart's map cells land where their grid points are: a 2×2 map of two categories, read back
@@ -163,4 +163,4 @@ TEST(Charts, MapCellsAreDrawnWhereTheirGridPointsAre) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

@@ -10,7 +10,7 @@
 
 #include "draw/image.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,4 +68,4 @@ TEST(Images, PngRoundTripsAndAFailedWriteLeavesNothing) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

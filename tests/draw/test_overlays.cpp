@@ -10,7 +10,7 @@
 #include "tests/lesson_scripts.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 // The result points into `forces`: keep the vector (a temporary is refused).
@@ -268,4 +268,4 @@ box { "moving", material = "ice", width = 0.4, height = 0.2, on = floor, at = 2,
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

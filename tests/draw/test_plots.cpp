@@ -21,7 +21,7 @@
 #include "tests/lesson_scripts.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 using lessons::Lesson;
@@ -393,10 +393,10 @@ TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
     EXPECT_EQ(identifier_in(text), "") << lesson << ", " << where << ": \"" << text << "\"";
   };
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    ClassroomOptions options;
+    classroom::ClassroomOptions options;
     options.lesson = entry.name;
     options.window.predictions = false;  // the theory table shown from the start
-    ClassroomHands hands(options);
+    classroom::ClassroomHands hands(options);
     lessons::Lesson& lesson = hands.lesson();
     hands.classroom().playback().run_to(lesson.duration());
     std::istringstream shown(hands.texts());
@@ -653,4 +653,4 @@ TEST(PlotRanges, ALevelIsASolidLineNoTheoryCurveLooksLike) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

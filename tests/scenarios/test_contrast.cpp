@@ -2,7 +2,7 @@
 // and the key plot's axes and tick marks 3:1 from its panel.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -15,7 +15,7 @@ using namespace layout_checks;
 TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
   constexpr double wcag_aa = 4.5;
   for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
-    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme_name : {draw::ThemeName::light, draw::ThemeName::dark}) {
       ClassroomOptions options;
       options.lesson = name;
       options.window.theme = theme_name;
@@ -26,7 +26,7 @@ TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
       const auto check = [&](const char* moment) {
         hands.frame();
         hands.frame();
-        FrameRecord record;
+        draw::FrameRecord record;
         hands.frame(0.0, &record);
         const std::vector<GlyphContrast> glyphs = glyph_contrasts(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts, clear);
         glyphs_checked += glyphs.size();
@@ -35,7 +35,7 @@ TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
         for (const GlyphContrast& glyph : glyphs) {
           if (glyph.ratio >= wcag_aa) continue;
           std::string text = "(a text the record does not name)";
-          for (const ShownText& shown : record.texts) {
+          for (const draw::ShownText& shown : record.texts) {
             if (glyph.at.x >= shown.needed.x && glyph.at.x <= shown.needed.z && glyph.at.y >= shown.needed.y &&
                 glyph.at.y <= shown.needed.w) {
               text = "'" + shown.text + "' in " + shown.panel;
@@ -54,7 +54,7 @@ TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
           };
           char ratio[16];
           std::snprintf(ratio, sizeof ratio, "%.2f", glyph.ratio);
-          ADD_FAILURE() << name << ", " << (theme_name == ThemeName::dark ? "dark" : "light") << ", " << moment << ": "
+          ADD_FAILURE() << name << ", " << (theme_name == draw::ThemeName::dark ? "dark" : "light") << ", " << moment << ": "
                         << text << " at (" << glyph.at.x << ", " << glyph.at.y << ") is " << hex(glyph.text) << " on "
                         << hex(glyph.background) << ", " << ratio << ":1";
         }
@@ -89,29 +89,29 @@ TEST(Contrast, EveryTextStandsAtLeastFourAndAHalfToOneFromWhatLiesUnderIt) {
 TEST(Contrast, TheKeyPlotsAxesAndTickMarksStandAtLeastThreeToOneFromItsPanel) {
   constexpr double wcag_graphics = 3.0;
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int plots_checked = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme_name : {draw::ThemeName::light, draw::ThemeName::dark}) {
       ClassroomOptions options = class_window(entry.path, window_screens[2]);
       options.window.theme = theme_name;
       Classroom window(options);
       if (window.playback().lesson().plots().empty()) break;
       window.playback().run_to(window.playback().lesson().duration());
-      FrameRecord record;
+      draw::FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
-      const std::string where = entry.name + (theme_name == ThemeName::dark ? ", dark" : ", light");
+      const std::string where = entry.name + (theme_name == draw::ThemeName::dark ? ", dark" : ", light");
       const ImVec4 panel = theme(theme_name).imgui_window;  // the plot panel's background
-      for (const FrameRecord::Plot& plot : record.plots) {
+      for (const draw::FrameRecord::Plot& plot : record.plots) {
         if (plot.number != 0) continue;
         ++plots_checked;
         std::size_t ticks = 0;
-        for (const ChartLayout::Line& line : plot.layout.lines) {
-          if (line.kind == ChartLayout::Line::Kind::grid) continue;
-          ticks += line.kind == ChartLayout::Line::Kind::tick;
+        for (const draw::ChartLayout::Line& line : plot.layout.lines) {
+          if (line.kind == draw::ChartLayout::Line::Kind::grid) continue;
+          ticks += line.kind == draw::ChartLayout::Line::Kind::tick;
           const double ratio = contrast_ratio(ImGui::ColorConvertU32ToFloat4(line.colour), panel);
-          EXPECT_GE(ratio, wcag_graphics) << where << ": a " << (line.kind == ChartLayout::Line::Kind::tick ? "tick mark" : "axis")
+          EXPECT_GE(ratio, wcag_graphics) << where << ": a " << (line.kind == draw::ChartLayout::Line::Kind::tick ? "tick mark" : "axis")
                                           << " at (" << line.from.x << ", " << line.from.y << ") is " << ratio << ":1";
         }
         EXPECT_EQ(ticks, plot.layout.x_ticks.size() + plot.layout.y_ticks.size()) << where << ": ticks without a mark";
@@ -123,4 +123,4 @@ TEST(Contrast, TheKeyPlotsAxesAndTickMarksStandAtLeastThreeToOneFromItsPanel) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

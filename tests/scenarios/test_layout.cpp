@@ -5,7 +5,7 @@
 // world's labels, the contrast and projector mode have files of their own beside this one.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -13,19 +13,19 @@ class Layout : public ::testing::TestWithParam<Screen> {};
 
 TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
   const Screen& screen = GetParam();
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
-    HeadlessRenderer renderer(screen.width, screen.height, theme, screen.scale);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    draw::HeadlessRenderer renderer(screen.width, screen.height, theme, screen.scale);
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       for (const lessons::Moment& moment : entry.moments) {
-        LessonAt at(entry.name, moment.set, moment.at);
-        FrameRecord record;
+        draw::LessonAt at(entry.name, moment.set, moment.at);
+        draw::FrameRecord record;
         renderer.render(*at.lesson, at.framing, &record);
         std::string where = entry.name;
         where += " at ";
         where += moment.name;
         where += ", ";
         where += screen.name;
-        if (theme == ThemeName::dark) where += ", dark";
+        if (theme == draw::ThemeName::dark) where += ", dark";
         check_layout(record, *at.lesson, where);
         if (screen.text) check_texts(record, where);
       }
@@ -38,13 +38,13 @@ TEST_P(Layout, EveryLessonsLabelsKeepClearOfEachOtherTheArrowsAndTheInset) {
 // agrees"), never a bare ✓ a class reads as agreeing with "does not hold". Other lessons keep ✓.
 TEST(TheoryTable, AMarkBesideAClaimsVerdictSaysItChecksTheModel) {
   for (const auto& [width, height] : {std::pair(1280, 720), std::pair(1920, 1080)}) {
-    HeadlessRenderer renderer(width, height);
+    draw::HeadlessRenderer renderer(width, height);
     const auto texts_of = [&](const std::string& lesson, double t) {
-      LessonAt at(lesson, {}, t);
-      FrameRecord record;
+      draw::LessonAt at(lesson, {}, t);
+      draw::FrameRecord record;
       renderer.render(*at.lesson, at.framing, &record);
       std::vector<std::string> texts;
-      for (const ShownText& text : record.texts) texts.push_back(text.text);
+      for (const draw::ShownText& text : record.texts) texts.push_back(text.text);
       return texts;
     };
     const std::vector<std::string> article = texts_of("check_the_article", 5.0);
@@ -69,22 +69,22 @@ class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
 TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
       options.window.theme = theme;
       Classroom window(options);
       const auto check_at = [&](double t, const char* moment) {
         window.playback().run_to(t);
-        FrameRecord record;
+        draw::FrameRecord record;
         // A few frames for tables and tab bars to settle their sizes, as the window's screenshots wait.
         for (int frame = 0; frame < 3; ++frame) {
           draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
         }
         std::string where = entry.name + " " + moment + ", window " + screen.name;
-        if (theme == ThemeName::dark) where += ", dark";
+        if (theme == draw::ThemeName::dark) where += ", dark";
         check_texts(record, where);
       };
       const double duration = window.playback().lesson().duration();
@@ -108,22 +108,22 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
 TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const lessons::CatalogEntry& entry : lessons::catalog()) {
       ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
       options.window.theme = theme;
       Classroom window(options);
       window.playback().run_to(0.5 * window.playback().lesson().duration());
-      const auto frame = [&](FrameRecord* record) {
+      const auto frame = [&](draw::FrameRecord* record) {
         draw_window_frame(gl, host, window, display, 0.0, record);
       };
       for (const char* tab : {"###energy", "###model"}) {
-        FrameRecord before;
+        draw::FrameRecord before;
         frame(nullptr);
         frame(&before);
-        const auto named = std::find_if(before.texts.begin(), before.texts.end(), [&](const ShownText& text) {
+        const auto named = std::find_if(before.texts.begin(), before.texts.end(), [&](const draw::ShownText& text) {
           return text.text.find(tab) != std::string::npos;
         });
         ASSERT_NE(named, before.texts.end()) << entry.name << ": no tab " << tab;
@@ -137,13 +137,13 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
         frame(nullptr);
         io.MousePos = ImVec2(-1.0f, -1.0f);
         frame(nullptr);
-        FrameRecord record;
+        draw::FrameRecord record;
         frame(&record);
         std::string where = entry.name + " with the tab " + tab + " open, window " + screen.name;
-        if (theme == ThemeName::dark) where += ", dark";
+        if (theme == draw::ThemeName::dark) where += ", dark";
         // What only that tab shows: the ledger's residual, the model card's friction terms.
         const char* shows = std::string(tab) == "###energy" ? "residual " : "friction: ";
-        const bool open = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+        const bool open = std::any_of(record.texts.begin(), record.texts.end(), [&](const draw::ShownText& text) {
           return text.text.rfind(shows, 0) == 0;
         });
         EXPECT_TRUE(open) << where << ": the tab did not open";
@@ -155,7 +155,7 @@ TEST_P(WindowLayout, TheEnergyAndModelTabsTextIsWhole) {
 
 // Whether a plot's legend lies on any of its data: a measured point or the line to the next,
 // or a piece of a theory curve. Empty when none.
-std::string legend_on_data(const ChartLayout& plot) {
+std::string legend_on_data(const draw::ChartLayout& plot) {
   // The data are drawn clipped to the data area (a pixel more at the right and bottom): only
   // the legend's part inside it can cover them.
   const ImVec4 legend(std::max(plot.legend_min.x, plot.low_left.x), std::max(plot.legend_min.y, plot.high_right.y),
@@ -164,7 +164,7 @@ std::string legend_on_data(const ChartLayout& plot) {
   const auto crosses = [&](const std::vector<ImVec2>& line) {
     for (std::size_t i = 0; i < line.size(); ++i) {
       const ImVec2 to = i + 1 < line.size() ? line[i + 1] : line[i];
-      if (overlaps(legend, DrawnSegment{line[i], to, 1.0f})) return text_of(ImVec4(line[i].x, line[i].y, to.x, to.y));
+      if (overlaps(legend, draw::DrawnSegment{line[i], to, 1.0f})) return text_of(ImVec4(line[i].x, line[i].y, to.x, to.y));
     }
     return std::string();
   };
@@ -186,34 +186,34 @@ std::string legend_on_data(const ChartLayout& plot) {
 TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
     Classroom window(options);
     const double duration = window.playback().lesson().duration();
-    const auto frame = [&](FrameRecord* record) {
+    const auto frame = [&](draw::FrameRecord* record) {
       draw_window_frame(gl, host, window, display, 0.0, record);
     };
     const std::size_t plot_count = window.playback().lesson().plots().size();
     const auto check_at = [&](double t, const char* moment) {
       window.playback().run_to(t);
       const std::string where = entry.name + " " + moment + ", window " + screen.name;
-      FrameRecord record;
+      draw::FrameRecord record;
       frame(nullptr);
       frame(nullptr);
       frame(&record);
       // The plots in view, then those on each further page (turned by the → button, when there
       // are pages).
       std::vector<bool> seen(plot_count, false);
-      std::vector<FrameRecord::Plot> plots = record.plots;
-      const auto button = [](const FrameRecord& shown, const char* label) -> const ShownText* {
-        for (const ShownText& text : shown.texts) {
+      std::vector<draw::FrameRecord::Plot> plots = record.plots;
+      const auto button = [](const draw::FrameRecord& shown, const char* label) -> const draw::ShownText* {
+        for (const draw::ShownText& text : shown.texts) {
           if (text.text == label) return &text;
         }
         return nullptr;
       };
-      const auto click = [&](const ShownText& at) {
+      const auto click = [&](const draw::ShownText& at) {
         ImGuiIO& io = ImGui::GetIO();
         io.MousePos = ImVec2(0.5f * (at.needed.x + at.needed.z), 0.5f * (at.needed.y + at.needed.w));
         frame(nullptr);
@@ -225,14 +225,14 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
         io.MousePos = ImVec2(-1.0f, -1.0f);
         frame(nullptr);
       };
-      FrameRecord page = record;
+      draw::FrameRecord page = record;
       int pages = 1;
       std::size_t page_start = plots.empty() ? 0 : plots.front().number;
-      for (const ShownText* next = button(page, "\u2192"); next != nullptr && pages <= static_cast<int>(plot_count);
+      for (const draw::ShownText* next = button(page, "\u2192"); next != nullptr && pages <= static_cast<int>(plot_count);
            next = button(page, "\u2192")) {
-        const ShownText at = *next;
+        const draw::ShownText at = *next;
         click(at);
-        page = FrameRecord();
+        page = draw::FrameRecord();
         frame(&page);
         // The last page's → does nothing.
         if (page.plots.empty() || page.plots.front().number == page_start) break;
@@ -243,14 +243,14 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
       }
       // Back to the first page for the next moment.
       for (int back = 1; back < pages; ++back) {
-        const ShownText* previous = button(page, "\u2190");
+        const draw::ShownText* previous = button(page, "\u2190");
         ASSERT_NE(previous, nullptr) << where;
-        const ShownText at = *previous;
+        const draw::ShownText at = *previous;
         click(at);
-        page = FrameRecord();
+        page = draw::FrameRecord();
         frame(&page);
       }
-      for (const FrameRecord::Plot& plot : plots) {
+      for (const draw::FrameRecord::Plot& plot : plots) {
         ASSERT_LT(plot.number, plot_count) << where;
         seen[plot.number] = true;
         const std::string& title = window.playback().lesson().plots()[plot.number].title;
@@ -258,7 +258,7 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
         // Nor a sliver of data beside its legend: at least half its panel wide, less the panels'
         // padding (the incline's two plots side by side in projector mode drew their curves
         // 240 px wide of 575).
-        const float strip = FrameLayout::of(display, window.ui_scale(display)).plots_size.x;
+        const float strip = draw::FrameLayout::of(display, window.ui_scale(display)).plots_size.x;
         // (A plot alone across the strip has nothing to give way to.)
         const std::size_t side_by_side = std::min<std::size_t>(record.plots.size(), 3);
         const float panel = strip / static_cast<float>(side_by_side);
@@ -319,8 +319,8 @@ ColumnPanel column_panel(const char* id) {
 TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int scrolled = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     for (const bool predictions : {false, true}) {
@@ -361,8 +361,8 @@ TEST_P(WindowLayout, TheParametersLeaveTheirSpareRoomToTheTheoryWhenItScrolls) {
 TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
     options.window.predictions = true;
@@ -386,8 +386,8 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
 TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int checked = 0, out_of_sight = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
@@ -400,14 +400,14 @@ TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
       window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
     }
     window.playback().run_to(window.playback().lesson().duration());
-    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
       for (const bool revealed : {false, true}) {
         window.window_settings().theme = theme;
         window.predictions().revealed = revealed;
-        FrameRecord record;
+        draw::FrameRecord record;
         for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
         std::string where = entry.name + (revealed ? " revealed" : " before the reveal") + " at the run's end, window " +
-                            screen.name + (theme == ThemeName::dark ? ", dark" : "");
+                            screen.name + (theme == draw::ThemeName::dark ? ", dark" : "");
         ASSERT_EQ(window.theory_hidden(), !revealed) << where;
         // The column's panels one under the other: none over the answers.
         const ImGuiWindow* parameters = ImGui::FindWindowByName("###parameters");
@@ -431,7 +431,7 @@ TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
               continue;
             }
             next = *found + 1;
-            const ShownText& shown = record.texts[*found];
+            const draw::ShownText& shown = record.texts[*found];
             if (!shown.whole()) ++out_of_sight;
             EXPECT_TRUE(shown.whole()) << where << ": \"" << text << "\" needs " << text_of(shown.needed)
                                        << " but only " << text_of(shown.visible) << " shows: a scroll away";
@@ -453,8 +453,8 @@ class MysteryLayout : public ::testing::TestWithParam<WindowScreen> {};
 TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int lessons_with_a_mystery = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
@@ -469,7 +469,7 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
     window.answer_mystery(0.5, 0.25);
     for (const bool revealed : {false, true}) {
       if (revealed) window.reveal_mystery();
-      FrameRecord record;
+      draw::FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) {
         draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
       }
@@ -477,7 +477,7 @@ TEST_P(MysteryLayout, TheMysteryTabsTextIsWholeBeforeAndAfterTheReveal) {
                                 ", window " + screen.name;
       // Its answers' line: kept until the reveal, then how far off.
       const char* answered = revealed ? "% off" : "kept for the reveal";
-      const bool tab_shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+      const bool tab_shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const draw::ShownText& text) {
         return text.text.find(answered) != std::string::npos;
       });
       EXPECT_TRUE(tab_shown) << where << ": the Mystery tab is not showing";
@@ -496,16 +496,16 @@ INSTANTIATE_TEST_SUITE_P(Screens, MysteryLayout, ::testing::ValuesIn(window_scre
 TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const char* name : {"push", "incline", "spring_pull"}) {
       ClassroomOptions options = class_window(lessons::resolve_lesson(name), screen);
       if (std::string(name) == "incline") options.overrides = {{"angle", "25"}};
       options.window.theme = theme;
       options.window.tools = ToolSettings{true, true, true, true};
       Classroom window(options);
-      const auto frame = [&](double wall, FrameRecord* record) {
+      const auto frame = [&](double wall, draw::FrameRecord* record) {
         draw_window_frame(gl, host, window, display, wall, record);
       };
       frame(0.0, nullptr);
@@ -526,26 +526,26 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
         if (i == 45) window.key_pressed(Key::l, false);
       }
       ASSERT_NE(window.playback().lesson().scene().grabbed(), nullptr) << name;
-      FrameRecord record;
+      draw::FrameRecord record;
       frame(0.0, &record);
       std::string where = std::string(name) + " with the gauge and tools, window " + screen.name;
-      if (theme == ThemeName::dark) where += ", dark";
+      if (theme == draw::ThemeName::dark) where += ", dark";
       check_layout(record, window.playback().lesson(), where);
       check_texts(record, where);
       // The new rectangles are the layout's: the gauge's coil, from the point held to the hand's
       // end, is among what labels keep off; the stopwatch is over the title, whole (checked
       // above), not in the world.
       ASSERT_EQ(record.lanes.size(), 1u) << where;
-      const FrameRecord::Lane& lane = record.lanes.front();
+      const draw::FrameRecord::Lane& lane = record.lanes.front();
       const Scene& scene = window.playback().lesson().scene();
       const ImVec2 hook = lane.camera.to_screen(scene.grabbed()->GetWorldPoint(scene.applied_forces().back().local_point));
       const ImVec2 hand = lane.camera.to_screen(scene.grab_hand());
-      const bool coil = std::any_of(lane.arrows.begin(), lane.arrows.end(), [&](const DrawnSegment& segment) {
+      const bool coil = std::any_of(lane.arrows.begin(), lane.arrows.end(), [&](const draw::DrawnSegment& segment) {
         return std::abs(segment.from.x - hook.x) < 1.0f && std::abs(segment.from.y - hook.y) < 1.0f &&
                std::abs(segment.to.x - hand.x) < 1.0f && std::abs(segment.to.y - hand.y) < 1.0f;
       });
       EXPECT_TRUE(coil) << where << ": the gauge's coil is not in the layout";
-      const bool stopwatch = std::any_of(record.texts.begin(), record.texts.end(), [](const ShownText& text) {
+      const bool stopwatch = std::any_of(record.texts.begin(), record.texts.end(), [](const draw::ShownText& text) {
         return text.text.rfind("stopwatch ", 0) == 0 && text.text.find("lap 1: ") != std::string::npos;
       });
       EXPECT_TRUE(stopwatch) << where << ": no stopwatch with its lap over the title";
@@ -567,8 +567,8 @@ TEST_P(WindowLayout, TheForceGaugeAndTheMeasuringToolsKeepClear) {
 TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   const std::pair<const char*, double> runs[] = {{"terrain", 99.0},         {"contact_area", 1.0},
                                                  {"friction_models", 1.0}, {"thrown_box", 1.5},
                                                  {"where_methods_fail", 3.0}, {"stacked_blocks", 2.0}};
@@ -577,7 +577,7 @@ TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
       ClassroomOptions options = class_window(lessons::resolve_lesson(name), screen);
       options.window.tools = ToolSettings{true, true, true, true};
       Classroom window(options);
-      FrameRecord record;
+      draw::FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) {
         if (frame == 1) window.run_to(at);
         draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
@@ -587,7 +587,7 @@ TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
       const std::string where = std::string(name) + when + ", window " + screen.name;
       check_layout(record, window.playback().lesson(), where);
       check_texts(record, where);
-      const auto stopwatch = std::find_if(record.texts.begin(), record.texts.end(), [](const ShownText& text) {
+      const auto stopwatch = std::find_if(record.texts.begin(), record.texts.end(), [](const draw::ShownText& text) {
         return text.text.rfind("stopwatch ", 0) == 0;
       });
       ASSERT_NE(stopwatch, record.texts.end()) << where << ": no stopwatch in the window's panels";
@@ -599,7 +599,7 @@ TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
       const std::string named = lessons::class_words(std::find_if(lesson.scene().bodies().begin(), lesson.scene().bodies().end(),
                                                          [&](const auto& entry) { return entry.second == body; })->first) + ": v = ";
       int readouts = 0, numbers = 0;
-      for (const FrameRecord::Lane& lane : record.lanes) {
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
         for (const std::string& text : lane.texts) {
           EXPECT_NE(text.rfind("stopwatch", 0), 0u) << where << ": the stopwatch is in a lane";
           if (text.find("v = ") != std::string::npos) {
@@ -632,13 +632,13 @@ TEST_P(WindowLayout, TheMeasuringToolsAreReadableInTheLessonsWithLanes) {
 // opaque in both themes, at a screen's text size and in projector mode. ImGui's own popups are
 // 94 % (dark) and 98 % (light) opaque, and on a projector the title and panels showed through.
 TEST(Menus, AreOpaqueInBothThemes) {
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const float scale : {1.0f, 1.35f * 1.5f}) {
       host.prepare(scale, theme);
       const ImGuiStyle& style = ImGui::GetStyle();
-      const char* where = theme == ThemeName::dark ? "dark" : "light";
+      const char* where = theme == draw::ThemeName::dark ? "dark" : "light";
       EXPECT_EQ(style.Colors[ImGuiCol_PopupBg].w, 1.0f) << where << " at text scale " << scale;
       EXPECT_EQ(style.Colors[ImGuiCol_MenuBarBg].w, 1.0f) << where << " at text scale " << scale;
     }
@@ -657,18 +657,18 @@ TEST(Menus, TheMenuBarShowsAsMuchOfTheScriptsPathAsFitsAndCutsNone) {
   fs::create_directories(folder);
   const fs::path script = folder / "check_the_article.lua";
   fs::copy_file(lessons::resolve_lesson("check_the_article"), script, fs::copy_options::overwrite_existing);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   for (const WindowScreen& screen : window_screens) {
     for (const std::string& path : {script.string(), lessons::resolve_lesson("wedge")}) {
       ClassroomOptions options = class_window(path, screen);
       Classroom window(options);
       const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
-      FrameRecord record;
+      draw::FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
       const std::string name = fs::path(path).filename().string();
       int shown = 0;
-      for (const ShownText& text : record.texts) {
+      for (const draw::ShownText& text : record.texts) {
         if (text.text.size() < name.size() || text.text.compare(text.text.size() - name.size(), name.size(), name) != 0) continue;
         ++shown;
         const std::string where = std::string(screen.name) + ": \"" + text.text + "\"";
@@ -702,7 +702,7 @@ class WindowTabs {
     frame();
   }
   Classroom& window() { return *window_; }
-  void frame(FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *window_, display_, 0.0, record); }
+  void frame(draw::FrameRecord* record = nullptr) { draw_window_frame(gl_, host_, *window_, display_, 0.0, record); }
   void click(const std::string& control) {
     frame();
     const std::optional<ImRect> rect = window_->control(control);
@@ -728,14 +728,14 @@ class WindowTabs {
   // The frame after a few have let the tab bar settle, light and dark, each checked whole and
   // for `shows` (a text only that tab draws).
   void check(const std::string& where, const std::string& shows) {
-    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
       window_->window_settings().theme = theme;
       frame();
       frame();
-      FrameRecord record;
+      draw::FrameRecord record;
       frame(&record);
-      const std::string said = where + (theme == ThemeName::dark ? ", dark" : "");
-      const bool shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const ShownText& text) {
+      const std::string said = where + (theme == draw::ThemeName::dark ? ", dark" : "");
+      const bool shown = std::any_of(record.texts.begin(), record.texts.end(), [&](const draw::ShownText& text) {
         return text.text.find(shows) != std::string::npos;
       });
       EXPECT_TRUE(shown) << said << ": no \"" << shows << "\": the tab is not showing";
@@ -744,8 +744,8 @@ class WindowTabs {
   }
 
  private:
-  HeadlessContext gl_;
-  ImGuiHost host_{nullptr};
+  draw::HeadlessContext gl_;
+  draw::ImGuiHost host_{nullptr};
   ImVec2 display_;
   std::unique_ptr<Classroom> window_;
 };
@@ -795,4 +795,4 @@ TEST_P(WindowTabsLayout, TheCheapestStabilityAndMysteryTabsTextIsWholeWhenEachIs
 INSTANTIATE_TEST_SUITE_P(Screens, WindowTabsLayout, ::testing::ValuesIn(window_screens), window_screen_name);
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

@@ -2,7 +2,7 @@
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
 namespace {
 using namespace layout_checks;
 
@@ -22,8 +22,8 @@ struct Placed {
   std::optional<ImRect> time_bar;  // the transport bar's scrub bar: it shrank as the run's end notice came
 };
 
-Placed placed(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 display) {
-  FrameRecord record;
+Placed placed(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& window, ImVec2 display) {
+  draw::FrameRecord record;
   for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
   Placed found;
   for (const ImGuiWindow* panel : ImGui::GetCurrentContext()->Windows) {
@@ -36,7 +36,7 @@ Placed placed(HeadlessContext& gl, ImGuiHost& host, Classroom& window, ImVec2 di
         ImVec4(panel->Pos.x, panel->Pos.y, panel->Pos.x + panel->Size.x, panel->Pos.y + panel->Size.y);
   }
   const ImGuiWindow* books = ImGui::FindWindowByName("###books");
-  for (const ShownText& text : record.texts) {
+  for (const draw::ShownText& text : record.texts) {
     // The tabs' names: the texts on the tab bar's line, at the books panel's top.
     if (books == nullptr || text.panel.find("###books") == std::string::npos) continue;
     if (text.needed.y < books->Pos.y + books->WindowPadding.y + ImGui::GetFrameHeight()) found.tabs[text.text] = text.needed;
@@ -92,20 +92,20 @@ void expect_same_places(const Placed& before, const Placed& after, const std::st
 
 TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEndTheRevealAndR) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int tabs_seen = 0, notices_seen = 0;
   // The stopwatch: off, on from the lesson's opening, turned on mid-run.
   enum class Stopwatch { off, from_the_opening, mid_run };
   for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
-    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
       for (const Stopwatch stopwatch : {Stopwatch::off, Stopwatch::from_the_opening, Stopwatch::mid_run}) {
         ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
         options.window.predictions = true;
         options.window.theme = theme;
         options.window.tools.stopwatch = stopwatch == Stopwatch::from_the_opening;
         Classroom window(options);
-        const std::string lesson = std::string(name) + (theme == ThemeName::dark ? ", dark" : "") +
+        const std::string lesson = std::string(name) + (theme == draw::ThemeName::dark ? ", dark" : "") +
                                    (stopwatch == Stopwatch::from_the_opening ? ", stopwatch on from the opening"
                                     : stopwatch == Stopwatch::mid_run        ? ", stopwatch turned on mid-run"
                                                                              : "");
@@ -159,8 +159,8 @@ TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEn
 // panel folds into its heading from the lesson's opening (StableLayout), never as the run ends.
 TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndRevealedAtTheRunsEndWithAndWithoutTheStopwatch) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int lessons_checked = 0, sliders_checked = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     for (const bool stopwatch : {false, true}) {
@@ -181,7 +181,7 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
         }
         const std::string where = entry.name + (at_the_end ? " revealed at the run's end" : " as it opens") +
                                   (stopwatch ? ", stopwatch on" : "");
-        FrameRecord record;
+        draw::FrameRecord record;
         for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
         ASSERT_EQ(window.theory_hidden(), !at_the_end) << where;
         const ImGuiWindow* parameters = ImGui::FindWindowByName("###parameters");
@@ -205,7 +205,7 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
               continue;
             }
             next = *found + 1;
-            const ShownText& shown = record.texts[*found];
+            const draw::ShownText& shown = record.texts[*found];
             EXPECT_TRUE(shown.whole() && shown.needed.w <= display.y)
                 << where << ": \"" << text << "\" needs " << text_of(shown.needed) << " but only " << text_of(shown.visible)
                 << " shows: a scroll away";
@@ -225,19 +225,19 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
 // lesson before was left at.
 TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   ClassroomOptions options = class_window(lessons::resolve_lesson("tipping_box"), window_screens[2]);
   Classroom window(options);
   const auto shown_plots = [&] {
-    FrameRecord record;
+    draw::FrameRecord record;
     for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
     return record.plots;
   };
-  const float left = FrameLayout::of(ImVec2(1920.0f, 1.0f), window.ui_scale(display)).world_size.x;
+  const float left = draw::FrameLayout::of(ImVec2(1920.0f, 1.0f), window.ui_scale(display)).world_size.x;
   for (const double t : {0.0, window.playback().lesson().duration()}) {
     window.playback().run_to(t);
-    const std::vector<FrameRecord::Plot> plots = shown_plots();
+    const std::vector<draw::FrameRecord::Plot> plots = shown_plots();
     ASSERT_EQ(plots.size(), 1u) << "at t = " << t << ": plots side by side";
     EXPECT_EQ(plots.front().number, 0u) << "at t = " << t;
     // The data's width: most of the row's (the rest is the y axis' tick labels, the x axis' name
@@ -249,7 +249,7 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
   window.key_pressed(Key::right, false);
   ASSERT_EQ(shown_plots().front().number, 1u) << "→ turns to the second plot";
   ASSERT_EQ(window.open("incline"), "");
-  const std::vector<FrameRecord::Plot> opened = shown_plots();
+  const std::vector<draw::FrameRecord::Plot> opened = shown_plots();
   ASSERT_EQ(opened.size(), 1u);
   EXPECT_EQ(opened.front().number, 0u) << "incline opened on the page tipping_box was left at";
 }
@@ -263,16 +263,16 @@ TEST(ProjectorTitle, ALongTitleIsCutWithAnEllipsisOnItsOneLineAndShowsWhole) {
                           "local floor = ground { \"floor\", material = \"wood\" }\n"
                           "box { \"crate\", material = \"wood\", width = 0.4, height = 0.3, on = floor, at = 0, mass = 5 }\n");
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   for (const bool projector : {true, false}) {
     Classroom window(class_window(script.path(), {"1920x1080", 1920, 1080, projector}));
     ASSERT_EQ(window.failed_script().error, "");
     draw_window_frame(gl, host, window, display);
-    FrameRecord record;
+    draw::FrameRecord record;
     draw_window_frame(gl, host, window, display, 0.0, &record);
     int title_lines = 0;
-    for (const ShownText& text : record.texts) {
+    for (const draw::ShownText& text : record.texts) {
       if (text.panel.find("title") == std::string::npos || text.text.rfind("How friction", 0) != 0) continue;
       ++title_lines;
       EXPECT_TRUE(text.whole()) << (projector ? "projector: " : "screen: ") << "'" << text.text << "' is cut";
@@ -298,21 +298,21 @@ TEST(ProjectorTitle, ALongTitleIsCutWithAnEllipsisOnItsOneLineAndShowsWhole) {
 // short); this test measures the plot only.
 TEST(ProjectorPlots, TheKeyPlotIsAThirdOfTheScreenHighAndHoldsStillThroughTheRunAndTheReveal) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme_name : {draw::ThemeName::light, draw::ThemeName::dark}) {
       for (const bool stopwatch : {false, true}) {
         ClassroomOptions options = class_window(entry.path, window_screens[2]);
         options.window.predictions = true;
         options.window.theme = theme_name;
         options.window.tools.stopwatch = stopwatch;
-        const std::string where = entry.name + (theme_name == ThemeName::dark ? ", dark" : ", light") +
+        const std::string where = entry.name + (theme_name == draw::ThemeName::dark ? ", dark" : ", light") +
                                   (stopwatch ? ", stopwatch on" : "");
         const auto key_plot = [&](Classroom& window) {
-          FrameRecord record;
+          draw::FrameRecord record;
           for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
-          for (const FrameRecord::Plot& plot : record.plots) {
+          for (const draw::FrameRecord::Plot& plot : record.plots) {
             if (plot.number == 0) return ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
           }
           ADD_FAILURE() << where << ": its first plot was not drawn";
@@ -355,9 +355,9 @@ TEST(ProjectorPlots, TheKeyPlotIsAThirdOfTheScreenHighAndHoldsStillThroughTheRun
 // the frame drew. Boxes are the font's own text sizes, so the test holds to the pixel.
 TEST(ProjectorPlots, TheXAxisNameStandsWhereNoTickLabelIsAndEveryTickHasItsNumber) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
-  using TextKind = ChartLayout::AxisText::Kind;
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  using TextKind = draw::ChartLayout::AxisText::Kind;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(entry.path, window_screens[2]);
     Classroom window(options);
@@ -365,26 +365,26 @@ TEST(ProjectorPlots, TheXAxisNameStandsWhereNoTickLabelIsAndEveryTickHasItsNumbe
     window.playback().run_to(window.playback().lesson().duration());
     for (std::size_t page = 0; page < pages; ++page) {
       if (page > 0) window.key_pressed(Key::right, false);
-      FrameRecord record;
+      draw::FrameRecord record;
       for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
-      for (const FrameRecord::Plot& plot : record.plots) {
+      for (const draw::FrameRecord::Plot& plot : record.plots) {
         const std::string where = entry.name + ", plot " + std::to_string(plot.number + 1);
         const auto& texts = plot.layout.axis_texts;
         const std::size_t x_numbers = static_cast<std::size_t>(
-            std::count_if(texts.begin(), texts.end(), [](const ChartLayout::AxisText& t) { return t.kind == TextKind::x_tick; }));
+            std::count_if(texts.begin(), texts.end(), [](const draw::ChartLayout::AxisText& t) { return t.kind == TextKind::x_tick; }));
         EXPECT_EQ(x_numbers, plot.layout.x_ticks.size()) << where << ": x ticks without their number";
-        for (const ChartLayout::AxisText& name : texts) {
+        for (const draw::ChartLayout::AxisText& name : texts) {
           if (name.kind != TextKind::x_name || name.text.empty()) continue;
           EXPECT_LE(name.at.z, display.x) << where << ": \"" << name.text << "\" runs off the screen";
-          for (const ChartLayout::AxisText& other : texts) {
+          for (const draw::ChartLayout::AxisText& other : texts) {
             if (other.kind == TextKind::x_tick || other.kind == TextKind::y_tick) {
-              EXPECT_FALSE(overlaps(name.at, other.at))
+              EXPECT_FALSE(draw::overlaps(name.at, other.at))
                   << where << ": \"" << name.text << "\" at " << rect_words(name.at) << " covers the tick label \"" << other.text
                   << "\" at " << rect_words(other.at);
             }
           }
-          for (const ShownText& other : record.texts) {
-            EXPECT_FALSE(overlaps(name.at, other.needed))
+          for (const draw::ShownText& other : record.texts) {
+            EXPECT_FALSE(draw::overlaps(name.at, other.needed))
                 << where << ": \"" << name.text << "\" at " << rect_words(name.at) << " covers \"" << other.text << "\" at "
                 << rect_words(other.needed);
           }
@@ -400,8 +400,8 @@ TEST(ProjectorPlots, TheXAxisNameStandsWhereNoTickLabelIsAndEveryTickHasItsNumbe
 // ends above the plot's panel).
 TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   const std::string scene = lessons::with_heading(
       "local floor = ground { material = \"wood\" }\n"
       "local block = box { \"block\", material = \"wood\", width = 0.4, height = 0.2, on = floor, velocity = { 1, 0 } }\n");
@@ -413,7 +413,7 @@ TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
   const auto seen = [&](const std::string& script) {
     const lessons::ScriptFile file(script);
     Classroom window(class_window(file.path(), window_screens[2]));
-    FrameRecord record;
+    draw::FrameRecord record;
     for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
     Seen found;
     found.plots = record.plots.size();
@@ -449,8 +449,8 @@ TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
 // revealed, not before (they are theory, as its curves are).
 TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   ClassroomOptions options = class_window(lessons::resolve_lesson("push"), window_screens[2]);
   options.window.predictions = true;
   Classroom window(options);
@@ -459,13 +459,13 @@ TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal)
     std::vector<std::string> levels;
   };
   const auto seen = [&] {
-    FrameRecord record;
+    draw::FrameRecord record;
     for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
     Seen found;
-    for (const FrameRecord::Plot& plot : record.plots) {
+    for (const draw::FrameRecord::Plot& plot : record.plots) {
       if (plot.number == 0) found.ticks = plot.layout.y_ticks;
     }
-    for (const ShownText& text : record.texts) {
+    for (const draw::ShownText& text : record.texts) {
       if (text.text.find("\u03bcs\u00b7N") != std::string::npos || text.text.find("\u03bck\u00b7N") != std::string::npos) {
         found.levels.push_back(text.text);
       }
@@ -491,4 +491,4 @@ TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal)
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom

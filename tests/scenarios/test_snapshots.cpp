@@ -16,7 +16,7 @@
 #include "draw/theme.h"
 #include "tests/rendering.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::draw {
 namespace {
 
 namespace fs = std::filesystem;
@@ -121,4 +121,4 @@ TEST(Goldens, EachBelongsToAMomentOfALesson) {
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::draw

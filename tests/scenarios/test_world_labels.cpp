@@ -3,20 +3,26 @@
 // other; every label inside what the world view shows.
 #include "tests/layout_checks.h"
 
-namespace frictionlab::ui {
+namespace frictionlab::classroom {
+
+// The screen-point arithmetic of draw/drawing.h, used throughout here.
+using draw::add;
+using draw::length;
+using draw::mul;
+using draw::sub;
 namespace {
 using namespace layout_checks;
 
 // The world's words for the class too: the legend's materials and the free-body diagram's
 // body in words (where_methods_fail's "soft_law_block" material, terrain's "asphalt_box").
 TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
-  HeadlessRenderer renderer(frame_width, frame_height);
+  draw::HeadlessRenderer renderer(draw::frame_width, draw::frame_height);
   const auto texts_of = [&](const std::string& lesson, double t) {
-    LessonAt at(lesson, {}, t);
-    FrameRecord record;
+    draw::LessonAt at(lesson, {}, t);
+    draw::FrameRecord record;
     renderer.render(*at.lesson, at.framing, &record);
     std::string all;
-    for (const ShownText& text : record.texts) all += text.text + "\n";
+    for (const draw::ShownText& text : record.texts) all += text.text + "\n";
     return all;
   };
   const std::string where_methods_fail = texts_of("where_methods_fail", 1.0);
@@ -31,14 +37,14 @@ TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
 // arrows and says when the forces come; after a step, the forces and the net force.
 TEST(FreeBodyInset, AtTheStartSaysTheForcesComeWithTheRunInsteadOfShowingTheWeightAlone) {
   for (const auto& [width, height] : {std::pair(1280, 720), std::pair(1920, 1080)}) {
-    HeadlessRenderer renderer(width, height);
+    draw::HeadlessRenderer renderer(width, height);
     for (const char* lesson : {"push", "incline", "terrain"}) {
       for (const double t : {0.0, 0.5}) {
-        LessonAt at(lesson, {}, t);
-        FrameRecord record;
+        draw::LessonAt at(lesson, {}, t);
+        draw::FrameRecord record;
         renderer.render(*at.lesson, at.framing, &record);
         std::string all;
-        for (const ShownText& text : record.texts) all += text.text + "\n";
+        for (const draw::ShownText& text : record.texts) all += text.text + "\n";
         const std::string where = std::string(lesson) + " at " + std::to_string(t) + " s, " + std::to_string(width);
         const bool said = all.find("forces appear once the run starts\n") != std::string::npos ||
                           all.find("forces appear once\nthe run starts\n") != std::string::npos;
@@ -50,7 +56,7 @@ TEST(FreeBodyInset, AtTheStartSaysTheForcesComeWithTheRunInsteadOfShowingTheWeig
 }
 
 // Whether a label's box lies on a moving body as drawn: its polygons and its circles.
-bool on_body(const ImVec4& label, const b2Body* body, const Camera& camera) {
+bool on_body(const ImVec4& label, const b2Body* body, const draw::Camera& camera) {
   for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
     if (fixture->GetType() == b2Shape::e_polygon) {
       const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
@@ -87,18 +93,18 @@ TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesA
   const double times[] = {0.0, 0.5, 1.5, 3.0};
   int checked = 0;
   for (const Screen& screen : {screens[0], screens[3], screens[4]}) {
-    HeadlessRenderer renderer(screen.width, screen.height, ThemeName::light, screen.scale);
+    draw::HeadlessRenderer renderer(screen.width, screen.height, draw::ThemeName::light, screen.scale);
     for (const Expected& expected : lessons_tried) {
       for (const double t : times) {
-        LessonAt at(expected.lesson, {}, t);
-        FrameRecord record;
+        draw::LessonAt at(expected.lesson, {}, t);
+        draw::FrameRecord record;
         renderer.render(*at.lesson, at.framing, &record);
         char when[32];
         std::snprintf(when, sizeof when, " at %.1f s, ", t);
         const std::string where = expected.lesson + std::string(when) + screen.name;
         check_layout(record, *at.lesson, where);
         int angles = 0, driven = 0;
-        for (const FrameRecord::Lane& lane : record.lanes) {
+        for (const draw::FrameRecord::Lane& lane : record.lanes) {
           ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
           for (std::size_t i = 0; i < lane.labels.size(); ++i) {
             const std::string& text = lane.texts[i];
@@ -133,8 +139,8 @@ TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesA
 // The distance from a label's box to an arrow's centre line, tail to tip (0 where they meet):
 // the nearest of the box's corners to the segment and of the segment's ends to the box, which is
 // exact for a segment that does not cross the box.
-float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
-  if (overlaps(box, DrawnSegment{arrow.from, arrow.to, 0.0f})) return 0.0f;
+float box_to_arrow(const ImVec4& box, const draw::DrawnSegment& arrow) {
+  if (overlaps(box, draw::DrawnSegment{arrow.from, arrow.to, 0.0f})) return 0.0f;
   const auto point_to_box = [&](ImVec2 p) {
     return std::hypot(std::max({box.x - p.x, 0.0f, p.x - box.z}), std::max({box.y - p.y, 0.0f, p.y - box.w}));
   };
@@ -159,18 +165,18 @@ float box_to_arrow(const ImVec4& box, const DrawnSegment& arrow) {
 // arrow's line), and crossing no other value's box as drawn and no other arrow's centre line
 // (but within half a line of its start, where forces at one contact start together), each of
 // which would join the value to another force. Empty when it meets every rule.
-std::vector<std::string> leader_faults(const std::vector<LabelPlacer::ForceLabel>& forces, std::size_t index) {
+std::vector<std::string> leader_faults(const std::vector<draw::LabelPlacer::ForceLabel>& forces, std::size_t index) {
   std::vector<std::string> faults;
-  const LabelPlacer::ForceLabel& force = forces[index];
+  const draw::LabelPlacer::ForceLabel& force = forces[index];
   if (!force.leader || !force.box) return faults;
-  const DrawnSegment& leader = *force.leader;
+  const draw::DrawnSegment& leader = *force.leader;
   const ImVec4& padded = *force.box;
   const ImVec2 size(padded.z - padded.x - 4.0f, padded.w - padded.y - 4.0f);  // the placer's 2 px of padding off
   const std::string name = force.text + " at " + text_of(drawn(padded));
   const float span = length(sub(leader.to, leader.from));
-  if (span > LabelPlacer::longest_leader(size) + 1e-3f) {
+  if (span > draw::LabelPlacer::longest_leader(size) + 1e-3f) {
     faults.push_back(name + ": its leader is " + std::to_string(span) + " px, longer than three lines (" +
-                     std::to_string(LabelPlacer::longest_leader(size)) + " px)");
+                     std::to_string(draw::LabelPlacer::longest_leader(size)) + " px)");
   }
   const float from_arrow = box_to_arrow(ImVec4(leader.from.x, leader.from.y, leader.from.x, leader.from.y), force.arrow);
   const float to_box = std::hypot(std::max({padded.x - leader.to.x, 0.0f, leader.to.x - padded.z}),
@@ -180,12 +186,12 @@ std::vector<std::string> leader_faults(const std::vector<LabelPlacer::ForceLabel
   const auto side = [](ImVec2 a, ImVec2 b, ImVec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
   for (std::size_t j = 0; j < forces.size(); ++j) {
     if (j == index) continue;
-    const LabelPlacer::ForceLabel& other = forces[j];
+    const draw::LabelPlacer::ForceLabel& other = forces[j];
     const std::string whose = other.text.empty() ? std::string("another force's") : other.text + "'s";
-    if (other.box && overlaps(drawn(*other.box), DrawnSegment{leader.from, leader.to, 0.0f})) {
+    if (other.box && overlaps(drawn(*other.box), draw::DrawnSegment{leader.from, leader.to, 0.0f})) {
       faults.push_back(name + ": its leader crosses the value " + other.text + " at " + text_of(drawn(*other.box)));
     }
-    const DrawnSegment& arrow = other.arrow;
+    const draw::DrawnSegment& arrow = other.arrow;
     const bool crossing = side(leader.from, leader.to, arrow.from) * side(leader.from, leader.to, arrow.to) < 0.0f &&
                           side(arrow.from, arrow.to, leader.from) * side(arrow.from, arrow.to, leader.to) < 0.0f;
     if (!crossing) continue;
@@ -210,8 +216,8 @@ std::vector<std::string> leader_faults(const std::vector<LabelPlacer::ForceLabel
 // beside_reach() in x and y, so its box lies within that of the arrow.
 TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset) {
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   const std::pair<std::string, double> runs[] = {{"tipping_box", 2.487},
                                                  {"stacked_blocks", 2.487},
                                                  {"stacked_blocks", 1.0},
@@ -220,7 +226,7 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
                                                  {std::string(FRICTIONLAB_STUDENT_TRIAL) + "/ladder.lua", 1.0},
                                                  {std::string(FRICTIONLAB_STUDENT_TRIAL) + "/ladder.lua", 1.9}};
   // The distance from a box to an arrow's line (0 when they meet).
-  const auto distance = [](const ImVec4& box, const DrawnSegment& arrow) {
+  const auto distance = [](const ImVec4& box, const draw::DrawnSegment& arrow) {
     float nearest = 1e9f;
     for (int i = 0; i <= 200; ++i) {
       const float f = static_cast<float>(i) / 200.0f;
@@ -231,10 +237,10 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
     return nearest;
   };
   int leaders = 0;  // values joined to their arrows by a leader
-  const auto check = [&](const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where) -> int {
+  const auto check = [&](const std::vector<draw::LabelPlacer::ForceLabel>& forces, const std::string& where) -> int {
     int labelled = 0;
     for (std::size_t i = 0; i < forces.size(); ++i) {
-      const LabelPlacer::ForceLabel& force = forces[i];
+      const draw::LabelPlacer::ForceLabel& force = forces[i];
       if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
       ++labelled;
       EXPECT_TRUE(force.box.has_value()) << where << ": the value " << force.text << " is not drawn";
@@ -245,12 +251,12 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
         // No free place beside its arrow: joined to it by a leader, which must meet a reader's
         // rules (leader_faults), and then the value is at most the leader's longest off its arrow.
         for (const std::string& fault : leader_faults(forces, i)) ADD_FAILURE() << where << ": " << fault;
-        EXPECT_LE(distance(box, force.arrow), LabelPlacer::longest_leader(size) + 1.0f)
+        EXPECT_LE(distance(box, force.arrow), draw::LabelPlacer::longest_leader(size) + 1.0f)
             << where << ": " << force.text << " at " << text_of(box) << " is further from its arrow than its leader's longest";
         ++leaders;
         continue;
       }
-      const ImVec2 reach = LabelPlacer::beside_reach(size);
+      const ImVec2 reach = draw::LabelPlacer::beside_reach(size);
       const float thickness = 2.0f * force.arrow.half_width;
       const float allowed = 1.5f * thickness + std::hypot(reach.x, reach.y) + 1.0f;
       EXPECT_LE(distance(box, force.arrow), allowed)
@@ -260,7 +266,7 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
     return labelled;
   };
   int worlds = 0, insets = 0;
-  for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
     for (const auto& [lesson, t] : runs) {
       ClassroomOptions options = class_window(lessons::resolve_lesson(lesson), {"projector_1920x1080", 1920, 1080, true});
       options.window.theme = theme;
@@ -269,11 +275,11 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
       draw_window_frame(gl, host, window, display);
       window.run_to(t);
       draw_window_frame(gl, host, window, display);
-      FrameRecord record;
+      draw::FrameRecord record;
       draw_window_frame(gl, host, window, display, 0.0, &record);
       const std::string where = std::filesystem::path(lesson).stem().string() + " at " + std::to_string(t) + " s" +
-                                (theme == ThemeName::dark ? ", dark" : "");
-      for (const FrameRecord::Lane& lane : record.lanes) worlds += check(lane.forces, where + ", world");
+                                (theme == draw::ThemeName::dark ? ", dark" : "");
+      for (const draw::FrameRecord::Lane& lane : record.lanes) worlds += check(lane.forces, where + ", world");
       ASSERT_TRUE(record.free_body.drawn) << where;
       insets += check(record.free_body.forces, where + ", free-body inset");
     }
@@ -296,11 +302,11 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
 // push's applied force 110 px). Where no free place is beside its arrow (a friction of a few
 // pixels where a normal force starts), a value may stand further off with a leader: a thin line
 // that starts on its own arrow and ends on its box, which says whose it is as well.
-int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, const std::string& where,
+int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& forces, const std::string& where,
                            int* broken = nullptr) {
   int checked = 0;
   for (std::size_t i = 0; i < forces.size(); ++i) {
-    const LabelPlacer::ForceLabel& force = forces[i];
+    const draw::LabelPlacer::ForceLabel& force = forces[i];
     if (force.text.empty()) continue;  // a foot's share of a normal force labelled "in all" at the longest
     if (broken != nullptr) {
       *broken += force.box.has_value() ? 0 : 1;
@@ -327,7 +333,7 @@ int check_beside_own_arrow(const std::vector<LabelPlacer::ForceLabel>& forces, c
       *broken += (own <= line && nearest) ? 0 : 1;
       continue;
     }
-    const auto arrow_text = [](const DrawnSegment& arrow) {
+    const auto arrow_text = [](const draw::DrawnSegment& arrow) {
       return text_of(ImVec4(arrow.from.x, arrow.from.y, arrow.to.x, arrow.to.y)) + " (tail–tip)";
     };
     EXPECT_LE(own, line) << where << ": " << force.text << " at " << text_of(box) << " is " << own
@@ -368,14 +374,14 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
     return false;
   };
   const ImVec2 display(1920.0f, 1080.0f);
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   int worlds = 0, insets = 0;
   // The pictures not yet held to the rule, and how many of their values break it: a picture
   // that comes to meet the rule must leave the list, so that it is held to it from then on.
   std::map<std::string, int> still_broken;
   for (const bool projector : {true, false}) {
-    for (const ThemeName theme : {ThemeName::light, ThemeName::dark}) {
+    for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
       for (const lessons::CatalogEntry& entry : lessons::catalog()) {
         ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
         options.window.theme = theme;
@@ -385,16 +391,16 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
         for (const double t : {0.2, 0.5 * end, end}) {
           window.run_to(t);
           draw_window_frame(gl, host, window, display);
-          FrameRecord record;
+          draw::FrameRecord record;
           draw_window_frame(gl, host, window, display, 0.0, &record);
           char when[48];
           std::snprintf(when, sizeof when, " at %.2f s", t);
           const std::string where = entry.name + when + (projector ? ", projector" : "") +
-                                    (theme == ThemeName::dark ? ", dark" : "");
+                                    (theme == draw::ThemeName::dark ? ", dark" : "");
           check_layout(record, window.playback().lesson(), where);
           const std::string world_key = entry.name + (projector ? ", projector" : "") + ", world";
           const std::string inset_key = entry.name + (projector ? ", projector" : "") + ", inset";
-          for (const FrameRecord::Lane& lane : record.lanes) {
+          for (const draw::FrameRecord::Lane& lane : record.lanes) {
             if (not_yet(entry.name, projector, false)) {
               check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
             } else {
@@ -424,14 +430,14 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
 TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
   int frictions = 0;
   for (const Screen& screen : {screens[0], screens[3]}) {
-    HeadlessRenderer renderer(screen.width, screen.height, ThemeName::light, screen.scale);
+    draw::HeadlessRenderer renderer(screen.width, screen.height, draw::ThemeName::light, screen.scale);
     for (const char* lesson : {"stacked_blocks", "push", "tipping_box", "contact_area", "incline"}) {
       for (const double t : {0.5, 1.5, 3.0}) {
-        LessonAt at(lesson, {}, t);
-        FrameRecord record;
+        draw::LessonAt at(lesson, {}, t);
+        draw::FrameRecord record;
         renderer.render(*at.lesson, at.framing, &record);
         const std::string where = std::string(lesson) + " at " + std::to_string(t) + " s, " + screen.name;
-        for (const FrameRecord::Lane& lane : record.lanes) {
+        for (const draw::FrameRecord::Lane& lane : record.lanes) {
           std::vector<std::pair<ImVec2, float>> dots;  // centre, radius
           for (const ContactMark& mark : contact_marks(at.lesson->scene())) {
             const ImVec2 centre = lane.camera.to_screen(mark.point);
@@ -443,7 +449,7 @@ TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
               }
             }
           }
-          for (const LabelPlacer::ForceLabel& force : lane.forces) {
+          for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
             if (force.kind != ForceKind::friction) continue;
             ++frictions;
             for (const auto& [centre, radius] : dots) {
@@ -464,30 +470,30 @@ TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
 // lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
 // first letter. Every label is inside the part of the lane that shows.
 TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   const float scale = 1.35f * 1.5f;
-  const Fonts& fonts = host.prepare(scale, ThemeName::light);
+  const draw::Fonts& fonts = host.prepare(scale, draw::ThemeName::light);
   const ImVec2 display(1920.0f, 944.0f);
   for (const char* name : {"push", "incline"}) {
-    LessonAt at(name, {}, 0.5);
+    draw::LessonAt at(name, {}, 0.5);
     lessons::Lesson& lesson = *at.lesson;
     MeasuringTools tools;
     tools.on.speed = true;
     tools.follow(lesson, false);
-    FrameRecord record;
-    FrameStyle style;
+    draw::FrameRecord record;
+    draw::FrameStyle style;
     style.fonts = &fonts;
     style.record = &record;
     // The view panned so that the main body's centre is at its left edge.
-    const Camera before = world_camera(lesson, at.framing, display, scale);
+    const draw::Camera before = draw::world_camera(lesson, at.framing, display, scale);
     const b2Body* body = measured_body(lesson);
     ASSERT_NE(body, nullptr) << name;
     const float offset = before.to_screen(body->GetWorldCenter()).x - before.origin.x;
     style.view_adjust.pan = b2Vec2(offset / before.pixels_per_metre, 0.0f);
-    style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t /*lane*/,
-                            float newtons_to_pixels, LabelPlacer& labels) {
-      tools.in_world(pass, draw, lesson, camera, 0, newtons_to_pixels, theme(ThemeName::light), fonts, labels);
+    style.world_tools = [&](draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t /*lane*/,
+                            float newtons_to_pixels, draw::LabelPlacer& labels) {
+      tools.in_world(pass, draw, lesson, camera, 0, newtons_to_pixels, theme(draw::ThemeName::light), fonts, labels);
     };
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = display;
@@ -496,7 +502,7 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
     build_frame(lesson, at.framing, style, display);
     ImGui::Render();
     ASSERT_EQ(record.lanes.size(), 1u) << name;
-    const FrameRecord::Lane& lane = record.lanes.front();
+    const draw::FrameRecord::Lane& lane = record.lanes.front();
     const float body_x = lane.camera.to_screen(body->GetWorldCenter()).x;
     ASSERT_NEAR(body_x, lane.camera.origin.x, 2.0f) << name << ": the body is not at the view's left edge";
     EXPECT_GT(lane.shown.x, lane.camera.origin.x) << name << ": the world's panel clips nothing off its lane";
@@ -513,16 +519,16 @@ TEST(WorldLabels, StayInsideWhatTheWorldViewShowsAtItsEdge) {
 // had no minus sign; forward is rightwards, or downhill on a slope). With every other layout
 // rule of check_layout.
 TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOther) {
-  HeadlessContext gl;
-  ImGuiHost host(nullptr);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   struct Size {
     const char* name;
     ImVec2 display;
     float scale;
   };
   // The window's world frame in projector mode: under its menu bar, above its transport bar.
-  const Size sizes[] = {{"1280x720", ImVec2(1280.0f, 720.0f), frame_scale(1280, 720)},
-                        {"projector_1920x1080", ImVec2(1920.0f, 944.0f), 1.35f * frame_scale(1920, 1080)}};
+  const Size sizes[] = {{"1280x720", ImVec2(1280.0f, 720.0f), draw::frame_scale(1280, 720)},
+                        {"projector_1920x1080", ImVec2(1920.0f, 944.0f), 1.35f * draw::frame_scale(1920, 1080)}};
   struct Moment {
     const char* lesson;
     std::map<std::string, std::string> set;
@@ -539,26 +545,26 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
                             {"stacked_blocks", {}, 2.0}, {"stacked_blocks", {}, 4.2}};
   int numbers_shown = 0, negative_numbers = 0, springs_checked = 0;
   for (const Size& size : sizes) {
-    for (const ThemeName theme_name : {ThemeName::light, ThemeName::dark}) {
-      const Fonts& fonts = host.prepare(size.scale, theme_name);
+    for (const draw::ThemeName theme_name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+      const draw::Fonts& fonts = host.prepare(size.scale, theme_name);
       for (const Moment& moment : moments) {
-        LessonAt at(moment.lesson, moment.set, 0.0);
+        draw::LessonAt at(moment.lesson, moment.set, 0.0);
         lessons::Lesson& lesson = *at.lesson;
         MeasuringTools tools;
         tools.on = ToolSettings{true, true, true, true};
         tools.follow(lesson, false);  // the start is taken at t = 0, as the window does
         at.step_to(moment.at);
         tools.follow(lesson, false);
-        FrameRecord record;
-        FrameStyle style;
+        draw::FrameRecord record;
+        draw::FrameStyle style;
         style.theme = theme_name;
         style.fonts = &fonts;
         style.record = &record;
         std::vector<std::optional<DistanceMarks>> marks;
-        style.world_tools = [&](WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t /*lane*/,
-                                float newtons_to_pixels, LabelPlacer& labels) {
+        style.world_tools = [&](draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t /*lane*/,
+                                float newtons_to_pixels, draw::LabelPlacer& labels) {
           // As the marks find the placer when they are drawn.
-          if (pass == WorldToolsPass::fixed_labels) marks.push_back(tools.distance_marks(lesson, camera, fonts, &labels));
+          if (pass == draw::WorldToolsPass::fixed_labels) marks.push_back(tools.distance_marks(lesson, camera, fonts, &labels));
           tools.in_world(pass, draw, lesson, camera, 0, newtons_to_pixels, theme(theme_name), fonts, labels);
         };
         ImGuiIO& io = ImGui::GetIO();
@@ -570,13 +576,13 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
         char when[32];
         std::snprintf(when, sizeof when, " at %.1f s", moment.at);
         std::string where = std::string(moment.lesson) + (moment.set.empty() ? "" : " at 25°") + when + ", " + size.name;
-        if (theme_name == ThemeName::dark) where += ", dark";
+        if (theme_name == draw::ThemeName::dark) where += ", dark";
         check_layout(record, lesson, where);
         ASSERT_EQ(record.lanes.size(), 1u) << where;
         ASSERT_EQ(marks.size(), 1u) << where;
-        const FrameRecord::Lane& lane = record.lanes.front();
+        const draw::FrameRecord::Lane& lane = record.lanes.front();
         ASSERT_EQ(lane.texts.size(), lane.labels.size()) << where;
-        const Camera& camera = lane.camera;
+        const draw::Camera& camera = lane.camera;
         const Scene& scene = lesson.scene();
 
         // The speed readout, once, off the body it measures (its polygons as drawn).
@@ -591,7 +597,7 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
           const ImVec2 from = camera.to_screen(spring.body->GetWorldPoint(spring.local_point));
           const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)
                                                           : scene.hand_position(spring));
-          const DrawnSegment coils{from, to, 7.0f * size.scale};
+          const draw::DrawnSegment coils{from, to, 7.0f * size.scale};
           ++springs_checked;
           for (std::size_t i = 0; i < lane.labels.size(); ++i) {
             EXPECT_FALSE(overlaps(drawn(lane.labels[i]), coils))
@@ -641,12 +647,12 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
           }
           const ImVec4& view = lane.shown;
           const auto any = [&](const auto& list, const ImVec4& box) {
-            return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
+            return std::any_of(list.begin(), list.end(), [&](const auto& other) { return draw::overlaps(box, other); });
           };
           // The speed's readout is placed before the numbers (a thin lane has room for it or them).
           const auto under_speed = [&](const ImVec4& box) {
             for (std::size_t i = 0; i < lane.labels.size(); ++i) {
-              if (lane.texts[i].find("v = ") != std::string::npos && overlaps(box, lane.labels[i])) return true;
+              if (lane.texts[i].find("v = ") != std::string::npos && draw::overlaps(box, lane.labels[i])) return true;
             }
             return false;
           };
@@ -668,4 +674,4 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
 }
 
 }  // namespace
-}  // namespace frictionlab::ui
+}  // namespace frictionlab::classroom
