@@ -254,14 +254,14 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
       ImGui::TableNextColumn();
       ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImGuiCol_TableHeaderBg));
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
-      shown_text(prediction.expectation.c_str());
+      draw::shown_text(prediction.expectation.c_str());
       ImGui::PopTextWrapPos();
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       const Closeness near = row ? judged(prediction, answer, *row, theory_withheld) : Closeness{"class: ?", false};
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
       if (near.close) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
-      shown_text(answer_and_closeness(prediction, answer, near).c_str());
+      draw::shown_text(answer_and_closeness(prediction, answer, near).c_str());
       if (near.close) ImGui::PopStyleColor();
       ImGui::PopTextWrapPos();
     }
