@@ -34,7 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace frictionlab;
 
-std::unique_ptr<classroom::Classroom> classroom;
+std::unique_ptr<classroom::Classroom> page_classroom;
 // Where page.html writes a link's (or a .setup file's) text before the program opens it.
 constexpr const char* link_setup = "/link/frictionlab.setup";
 std::string returned;  // the last text handed to JavaScript; lives until the next call
@@ -73,7 +73,7 @@ PageArguments page_arguments(const std::vector<std::string>& args) {
 // draws again, so an hour of simulated time asked by a link would freeze the tab for as long.
 void run_to_link_time(double seconds) {
   if (!std::isfinite(seconds) || seconds <= 0.0) return;
-  classroom->run_to(std::min(seconds, classroom->playback().lesson().duration()));
+  page_classroom->run_to(std::min(seconds, page_classroom->playback().lesson().duration()));
 }
 
 classroom::ClassroomOptions page_options(const PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
   std::optional<bool> help_to_save;
   const classroom::ClassroomOptions options = page_options(given, problem, help_to_save);
   try {
-    classroom = std::make_unique<classroom::Classroom>(options);
+    page_classroom = std::make_unique<classroom::Classroom>(options);
   } catch (const std::exception& failure) {
     problem = failure.what();
     classroom::ClassroomOptions plain;
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     plain.script_paths = false;
     plain.browser = true;
     plain.lesson = lessons::resolve_lesson(lessons::builtin_lessons().front());
-    classroom = std::make_unique<classroom::Classroom>(plain);
+    page_classroom = std::make_unique<classroom::Classroom>(plain);
   }
   run_to_link_time(given.at);
   if (!problem.empty()) EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, problem.c_str());
@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
   run.help_to_save = help_to_save;
   if (const std::string folder = classroom::settings_folder(); !folder.empty()) run.settings_path = folder + "/settings.ini";
   try {
-    web::run_page(*classroom, run);
+    web::run_page(*page_classroom, run);
   } catch (const std::exception& failure) {
     EM_ASM({ frictionlabPage.say(UTF8ToString($0)); }, failure.what());
     return 2;
@@ -164,35 +164,35 @@ int main(int argc, char** argv) {
 extern "C" {
 
 // The running lesson's script (a built-in's under /lessons, or a student's own).
-EMSCRIPTEN_KEEPALIVE const char* frictionlab_lesson_path() { return hand_over(classroom->playback().lesson().path()); }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_lesson_path() { return hand_over(page_classroom->playback().lesson().path()); }
 
 // Opens a script (a student's, just written by the editor): the same file as the running
 // lesson reloads as F5 does. Returns "" or the script's message ("file:line: ..."); on a
 // mistake the last good lesson keeps running.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_open(const char* path) {
   std::string message;
-  if (classroom->playback().lesson().path() == path) {
-    if (!classroom->playback().reload()) message = classroom->playback().script_error();
+  if (page_classroom->playback().lesson().path() == path) {
+    if (!page_classroom->playback().reload()) message = page_classroom->playback().script_error();
   } else {
-    message = classroom->open(path);
+    message = page_classroom->open(path);
   }
   // The page wrote the file and ran it here: the watcher must not run it once more.
-  classroom->playback().file_written();
+  page_classroom->playback().file_written();
   frictionlab_wake();
   return hand_over(message);
 }
 
 // The page put the running script's last good text back after a failed Apply: not a change to run.
-EMSCRIPTEN_KEEPALIVE void frictionlab_file_written() { classroom->playback().file_written(); }
+EMSCRIPTEN_KEEPALIVE void frictionlab_file_written() { page_classroom->playback().file_written(); }
 
 // The window as a prepared setup's text, for a link; its lesson named as the page finds it.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_setup_text() {
-  return hand_over(classroom_state::setup_text(classroom->current_setup(link_setup)));
+  return hand_over(classroom_state::setup_text(page_classroom->current_setup(link_setup)));
 }
 
 // Opens a setup file's text (a link's), as Lesson > Open a setup does. Returns "" or the message.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_setup(const char* path) {
-  const std::string message = classroom->open_setup(path);
+  const std::string message = page_classroom->open_setup(path);
   frictionlab_wake();
   return hand_over(message);
 }
@@ -201,7 +201,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_setup(const char* path) {
 // it opens, with the script's own values, no predictions and the theory hidden, as loading the
 // page from the link would; not a reload that keeps the values of the lesson before.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_link_lesson(const char* name_or_path) {
-  const std::string message = classroom->open(name_or_path);
+  const std::string message = page_classroom->open(name_or_path);
   frictionlab_wake();
   return hand_over(message);
 }
@@ -214,10 +214,10 @@ EMSCRIPTEN_KEEPALIVE void frictionlab_run_to(double seconds) {
 
 // The page's Projector button: the larger text of projector mode, on or off.
 EMSCRIPTEN_KEEPALIVE void frictionlab_set_projector(int on) {
-  classroom->window_settings().projector = on != 0;
+  page_classroom->window_settings().projector = on != 0;
   frictionlab_wake();
 }
-EMSCRIPTEN_KEEPALIVE int frictionlab_projector() { return classroom->window_settings().projector ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int frictionlab_projector() { return page_classroom->window_settings().projector ? 1 : 0; }
 
 // Text pasted from the system clipboard, typed into whichever field has the keyboard.
 EMSCRIPTEN_KEEPALIVE void frictionlab_paste(const char* text) {
@@ -228,37 +228,37 @@ EMSCRIPTEN_KEEPALIVE void frictionlab_paste(const char* text) {
 // What the page shows, read by its tests (web/test/) and by nothing the user sees. Positions
 // are the canvas's own pixels; the test divides by the screen's pixel ratio.
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_control(const char* name) {
-  const std::optional<ImRect> rect = classroom->control(name);
+  const std::optional<ImRect> rect = page_classroom->control(name);
   if (!rect) return hand_over("");
   return hand_over(std::to_string(rect->Min.x) + " " + std::to_string(rect->Min.y) + " " + std::to_string(rect->Max.x) + " " +
                    std::to_string(rect->Max.y));
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_body_on_screen(const char* name) {
-  const b2Body* body = classroom->playback().lesson().scene().body(name);
+  const b2Body* body = page_classroom->playback().lesson().scene().body(name);
   if (body == nullptr) return hand_over("");
-  const ImVec2 at = classroom->world_camera().to_screen(body->GetWorldCenter());
+  const ImVec2 at = page_classroom->world_camera().to_screen(body->GetWorldCenter());
   return hand_over(std::to_string(at.x) + " " + std::to_string(at.y));
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_parameter(const char* name) {
-  for (const lessons::Parameter& parameter : classroom->playback().lesson().parameters()) {
+  for (const lessons::Parameter& parameter : page_classroom->playback().lesson().parameters()) {
     if (parameter.name == name) return hand_over(classroom_state::parameter_text(parameter));
   }
   return hand_over("");
 }
-EMSCRIPTEN_KEEPALIVE double frictionlab_time() { return classroom->playback().lesson().scene().time(); }
-EMSCRIPTEN_KEEPALIVE int frictionlab_playing() { return classroom->playback().playing() ? 1 : 0; }
-EMSCRIPTEN_KEEPALIVE int frictionlab_help_shown() { return classroom->window_settings().help ? 1 : 0; }
-EMSCRIPTEN_KEEPALIVE int frictionlab_theory_hidden() { return classroom->theory_hidden() ? 1 : 0; }
-EMSCRIPTEN_KEEPALIVE const char* frictionlab_gauge_figures() { return hand_over(classroom->gauge_figures()); }
+EMSCRIPTEN_KEEPALIVE double frictionlab_time() { return page_classroom->playback().lesson().scene().time(); }
+EMSCRIPTEN_KEEPALIVE int frictionlab_playing() { return page_classroom->playback().playing() ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int frictionlab_help_shown() { return page_classroom->window_settings().help ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int frictionlab_theory_hidden() { return page_classroom->theory_hidden() ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_gauge_figures() { return hand_over(page_classroom->gauge_figures()); }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_mystery_pair() {
-  return hand_over(classroom->mystery() ? classroom->mystery()->choice().pair : "");
+  return hand_over(page_classroom->mystery() ? page_classroom->mystery()->choice().pair : "");
 }
-EMSCRIPTEN_KEEPALIVE const char* frictionlab_status() { return hand_over(classroom->status()); }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_status() { return hand_over(page_classroom->status()); }
 // The status line's words as the transport bar shows them (script paths as file names).
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
-  return hand_over(classroom->script_words(classroom->playback().notice() + " " + classroom->status()));
+  return hand_over(page_classroom->script_words(page_classroom->playback().notice() + " " + page_classroom->status()));
 }
-EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(classroom->running_script_error()); }
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(page_classroom->running_script_error()); }
 // Lua's message in plain words, for the page's editor and bar (classroom_state/plain_words.h).
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(classroom_state::plain_words(message)); }
 // An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
