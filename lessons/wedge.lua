@@ -17,9 +17,12 @@
 -- listener weighs the shake too when it asks whether static friction holds it there
 -- (treatment_stick_slip.cpp; it used to drag the block to the plank's speed at every such
 -- reversal, 0.31 m off the exact 1.79 m at a_x = 30, a_x_omega = 5, ω = 0). Now the slide ends
--- 0.18 m off at 240 Hz (0.19 with --substeps 8), within the row's 0.35 m: 0.12 m of it is the
--- world's start (below), a_x·h/2 carried until the block first sticks at 1.85 s; the rest is not
--- explained yet. Where the solver stops the sliding inside a step and the drive carries the
+-- 0.20 m off at 240 Hz (0.19 with --substeps 8), within the row's 0.35 m, and halves with the
+-- step (0.098, 0.049, 0.025 m at 480, 960, 1920 Hz): 0.12 m of it is the world's start (below),
+-- a_x·h/2 carried until the block first sticks at 1.85 s; the rest is not explained yet. A
+-- reversal inside a step is placed within it with the drive spread over the step (0.028 m off
+-- at a_x = 14.62, a_x_omega = 10, μs 0.9692, μk 0.7089, ω = 0, where each reversal left the
+-- sliding up to μk·g·h off; 0.0032 m now, the start's). Where the solver stops the sliding inside a step and the drive carries the
 -- block past the stop, the listener decides it there, kinetic friction acting the new way for
 -- the rest of the step (it used to hold the block for a step at μs·N and read the breakaway's
 -- span from the last hold: a level plank shaken at −30 m/s², a_x_omega 7.371, μs 1.761,
@@ -436,14 +439,16 @@ end
 -- demand may sit off the model's of μ·N and turns back (the model holds on, the world may break
 -- away), or passes the limit by less than that before it would turn back (the model breaks
 -- away, the world may hold on). Where the world then takes the other way, the run after it
--- follows that outcome, and no model can say which it would be: μs 1.31, μk 0.7755, θ0 7.71°,
--- ω 3.428, a_x −16.57 at 4.777 rad/s, 8.022 kg: the model breaks away at 3.908 s with its
--- demand under 0.04 % past μs·N (at μs 1.3105 it holds on, and ends 0.25 m away); the world,
--- stopped 3.1 mm further along, peaks at 1.30971·N at 240 Hz (holds on: 0.985 m against 0.731
--- at the end), at 1.31003·N at 960 Hz (breaks away with the model, and the rows are checked).
--- So a grazing is excused only where the world's record shows the other outcome near it; where
--- the world goes the model's way the rows after it stay checked (at μs 1.3105 both hold on at
--- 240 Hz, and the slide ends 0.0037 m off the model's). The record is read once the run has
+-- follows that outcome, and no model can say which it would be: μs 1.3103, μk 0.7755, θ0 7.71°,
+-- ω 3.428, a_x −16.57 at 4.777 rad/s, 8.022 kg: the model breaks away at 3.914 s with its
+-- demand just past μs·N (at μs 1.3105 it holds on, and ends 0.24 m away); the world, stopped
+-- 1.9 mm short of the model's block and pressed a little less, asks at most 1.3032·N at 240 Hz
+-- and holds on (0.980 m against 0.743 at the end). (At μs 1.31 the world, stopped 3.1 mm
+-- further along, held on too until a reversal inside a step was placed within it; now it
+-- breaks away with the model, and the rows are checked: 0.739 m against 0.731.) So a grazing
+-- is excused only where the world's record shows the other outcome near it; where the world
+-- goes the model's way the rows after it stay checked (at μs 1.3105 both hold on at 240 Hz,
+-- and the slide ends 0.0016 m off the model's). The record is read once the run has
 -- passed the grazing's reach: a grazing the run ends inside is left checked.
 -- What the world's demand may sit off the model's, in N, is bounded from what the rows
 -- predict, not from what the world did: stuck, a block δs further along the turning surface is

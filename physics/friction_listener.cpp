@@ -137,10 +137,10 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   }
   contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
   r.before_known = !r.fresh;
-  r.driven_sliding_before = r.driven_sliding;
-  r.driven_sliding = 0.0;
-  if (is_driven(r.body_b)) r.driven_sliding += b2Dot(point_velocity(r.body_b, r.point), t);
-  if (is_driven(r.body_a)) r.driven_sliding -= b2Dot(point_velocity(r.body_a, r.point), t);
+  r.driven_velocity_before = r.driven_velocity;
+  r.driven_velocity.SetZero();
+  if (is_driven(r.body_b)) r.driven_velocity += point_velocity(r.body_b, r.point);
+  if (is_driven(r.body_a)) r.driven_velocity -= point_velocity(r.body_a, r.point);
   r.fresh = false;
   r.solving = true;
 }

@@ -155,6 +155,30 @@ void leave_band(ContactRecord& r) {
 // The other forces come from the step's own velocities: B's sliding at the start (PreSolve,
 // before the forces acted) and at the end, less the friction impulse. The impulse that makes
 // the step end as Coulomb's law would is owed to the body now, and the state follows the law.
+//
+// Box2D's velocities are those of the middle of a step (x_{n+1} = x_n + h·v_{n+1/2}, as in
+// breakaway_correction): a step's change of velocity is what the forces do from the middle of
+// the step before to the middle of this one, a span h long. The solver spreads the step's own
+// forces (gravity, springs, the push of the surface) over that span. A driven (kinematic)
+// body's change of velocity between the steps is the drive's over the same span, but the
+// sliding takes it all at once, before the solve, so the solver finds the stop as if the drive
+// had acted first. So Coulomb's law is followed here with the drive spread over the span like
+// the other forces: from B's sliding before the drive changed, slowed by kinetic friction and
+// by the forces and the drive together until it stops, then held if static friction can hold
+// it against them, or carried the other way by them against kinetic friction for the rest of
+// the span. Placing the stop inside the span leaves an error of order the step squared at each
+// one, as the breakaway's placing does. Taken all at once at the start, the drive stopped the
+// sliding too early, and after it the block was left with the step's kinetic friction and
+// none of the drive that carries it on (made up only by the next step's drive, whose own
+// kinetic friction then stopped it again): each reversal left the block's sliding off by up
+// to mu_k·g·h, which nothing took back while it slid, a first-order error (a level plank shaken
+// at 14.62 m/s², 10 rad/s, mu_s 0.9692, mu_k 0.7089: 0.35·mu_k·g·h a reversal on average,
+// the slide 0.026 m off the exact one after 5 s at 240 Hz, 0.005 at 960). Only the driven
+// body's own change counts as the drive: a breakaway correction, drag or a script's velocity
+// applied between the steps is B's sliding at the span's start, no force the contact must hold
+// against. (Taken for a stop held whatever the drive, B was dragged to A's new speed at every
+// reversal: by a·h = 0.125 m/s on a plank shaken at 30 m/s², 40 times what mu_s·N gives in a
+// step at mu_s 0.066; ΔK off by 2.4 J in 5 s.)
 void restick_correction(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   const double h = solved.step;
   const b2Vec2 t = r.tangent();
@@ -164,68 +188,43 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   start /= r.point_count;
   const double end = solved.sliding_end;
   const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, t);
+  if (!(mass > 0.0)) return;
   const double normal_force = solved.normal_impulse / h;
   const double other = (mass * (end - start) - solved.tangent_impulse) / h;  // N on B along t, but friction
+  // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
+  const double drive = r.before_known ? mass * b2Dot(r.driven_velocity - r.driven_velocity_before, t) / h : 0.0;
+  const double pushing = other + drive;            // N on B along t over the span, but friction
+  const double before = start - drive * h / mass;  // B's sliding at the span's start
   // Read from float velocities, `other` is good to a few parts in a million; at the limit
   // itself (a spring stopping a block with mu_k = 0 pushes back with exactly mu_s·N) it holds,
   // and were it a hair above, the next step's stuck solve would find that out.
   const double limit = breakaway_coefficient(pair) * normal_force * (1.0 + stop_tolerance);
-  // Sliding the new way already when the step began: the reversal came between steps, where a
-  // driven (kinematic) body's velocity is set, and the solver's kinetic friction has opposed
-  // the new sliding all through this step, as Coulomb's law has it for a block that slides on
-  // the other way. Whether static friction could have held it instead depends on the drive
-  // too: what the driven body's change of velocity between the steps did to the sliding counts
-  // among the other forces. Only the driven body's own change: a breakaway correction, drag or
-  // a script's velocity applied between the steps is no force the contact must hold against.
-  // Sliding on, nothing is owed; held, the step ends with B at rest on A. (Taken for a stop
-  // inside the step, B was dragged to A's new speed at every reversal: by a·h = 0.125 m/s on a
-  // plank shaken at 30 m/s², 40 times what mu_s·N gives in a step at mu_s 0.066; ΔK off by
-  // 2.4 J in 5 s.)
-  // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
-  const double drive = r.before_known ? mass * (r.driven_sliding - r.driven_sliding_before) / h : 0.0;
-  if (start * r.slip_direction < 0.0) {
-    if (std::abs(other + drive) > limit) {
-      r.state = ContactState::slipping;
-      r.slip_direction = static_cast<float>(start > 0.0 ? 1.0 : -1.0);
-      return;
-    }
-    r.breakaway_impulse = -mass * end;
-    r.breakaway_span = 0.0;
-    return;
-  }
-  // The share of the step the sliding lasted. Reversed by the step's own forces, the solver's
-  // kinetic friction acted all through it and the sliding fell evenly to the end's; stopped by
-  // the solver (it ends at rest, its friction short of mu_k·N), the sliding lasted as long as
-  // kinetic friction and those forces take to stop it.
-  const double moving = start - end;
-  double stopped = moving != 0.0 ? std::clamp(start / moving, 0.0, 1.0) : 0.0;
-  const double kinetic_step = pair.mu_k * normal_force * h / mass;  // m/s a step of it takes away
-  const double slowing = kinetic_step - r.slip_direction * other * h / mass;  // m/s in a step
-  if (sign(static_cast<float>(end)) != -r.slip_direction && slowing > 0.0) {
-    stopped = std::clamp(r.slip_direction * start / slowing, 0.0, 1.0);
-  }
-  // Stopped inside the step, it is held if static friction can hold it against the other forces
-  // and the drive: a driven body's acceleration reaches the sliding only as a change of
-  // velocity between steps, so this step's own forces leave it out, and held against them alone
-  // it broke away where Coulomb's law holds it (a block on a plank swinging 26° and shaken at
-  // 5 m/s², mu_k 0: g·sin θ past mu_s·N, the plank's acceleration taking 85 % of it back; it
-  // slid on where it should have stuck for 0.2 s). Sliding back, the step's own forces move it
-  // in what is left of the step; the drive acts at the next step's start.
-  double wanted = 0.0;  // B's sliding at the step's end by Coulomb's law: held
-  if (std::abs(other + drive) > limit) {
-    const double way = other + drive > 0.0 ? 1.0 : -1.0;
-    const double pushed = way * other;  // the step's own forces, the way it slides back
-    // Kinetic friction acts through the rest of the step, against the way the block now slides.
-    // Where the drive is what carries it on, the friction is more than the step's own forces and
-    // the step ends sliding back a little: the drive's change of velocity at the next step's
-    // start makes up for it, as the drive did all through the step in Coulomb's law. (Left at
-    // rest instead, with the stop decided here already, the block ended 0.04 m off the exact
-    // slide of the shaken plank, where this gives 0.00004 m; with neither, 0.069 m.) Without a
-    // drive the step's own forces alone are past the limit, breakaway_coefficient·N >= mu_k·N,
-    // and the sliding back is theirs.
-    wanted = way * (pushed - pair.mu_k * normal_force) * (1.0 - stopped) * h / mass;
+  const double way = r.slip_direction;
+  // m/s that kinetic friction and the pushing take from the sliding over the span while it
+  // slides on the old way.
+  const double slowing = (pair.mu_k * normal_force - way * pushing) * h / mass;
+  double wanted = 0.0;  // B's sliding at the step's end by Coulomb's law
+  if (way * before > 0.0 && (!(slowing > 0.0) || way * before >= slowing)) {
+    // No stop in the span by Coulomb's law, whatever the solver ended with (round-off at a stop
+    // at the span's very end, or a normal impulse that changed after friction was clamped
+    // against it): it slides on the old way.
+    wanted = before + (pushing - way * pair.mu_k * normal_force) * h / mass;
     r.state = ContactState::slipping;
-    r.slip_direction = static_cast<float>(way);
+  } else {
+    // The share of the span it slid on before it stopped (none, if it already slid the other
+    // way at the span's start).
+    const double stopped = slowing > 0.0 ? std::clamp(way * before / slowing, 0.0, 1.0) : 0.0;
+    if (std::abs(pushing) > limit) {
+      const double back = pushing > 0.0 ? 1.0 : -1.0;
+      wanted = (pushing - back * pair.mu_k * normal_force) * (1.0 - stopped) * h / mass;
+      r.state = ContactState::slipping;
+      r.slip_direction = static_cast<float>(back);
+    } else {
+      // Held: the friction holding it is the pushing, from which a later breakaway's crossing
+      // of the limit is placed (breakaway_correction).
+      r.state = ContactState::sticking;
+      r.held_force = std::abs(pushing);
+    }
   }
   r.breakaway_impulse = mass * (wanted - end);
   r.breakaway_span = 0.0;
