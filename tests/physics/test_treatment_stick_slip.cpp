@@ -319,17 +319,21 @@ struct PlankShake {
   double mass = 0.4852, mu_s = 1.761, mu_k = 1.247;
   double a = -30.0, omega = 7.371;  // m/s², rad/s
 };
+// A dry block of this mass and these coefficients resting on a plank, stepped at hz.
+Scene block_on_a_plank(double block_mass, double mu_s, double mu_k, double hz) {
+  Block block;
+  block.mass = block_mass;
+  block.pair = FrictionPair{mu_s, mu_k, 0.0, 0.0};
+  StepSettings settings;
+  settings.hz = hz;
+  return Scene(block_on_ground(block), settings);
+}
 struct ShakenPlankRun {
   double gap = 0.0;        // m: the largest gap between the world's slide and the model's
   double tolerance = 0.0;  // m: see below
 };
 ShakenPlankRun shaken_plank(const PlankShake& shake, double hz, double run_time) {
-  Block block;
-  block.mass = shake.mass;
-  block.pair = FrictionPair{shake.mu_s, shake.mu_k, 0.0, 0.0};
-  StepSettings settings;
-  settings.hz = hz;
-  Scene scene(block_on_ground(block), settings);
+  Scene scene = block_on_a_plank(shake.mass, shake.mu_s, shake.mu_k, hz);
   const double amplitude = shake.a / (shake.omega * shake.omega);
   auto plank_x = [&](double t) { return amplitude * (1.0 - std::cos(shake.omega * t)); };
   b2Body* plank = scene.add_box("plank", b2_kinematicBody, "ground", {0, -0.5f}, 20, 1);
@@ -478,12 +482,7 @@ struct ReversalErrors {
 // back for that much less time, (|a| - mu_k·g)/(|a| + mu_k·g) of δ. Between events the sliding
 // adds no error (a constant friction and the drive's exact change of velocity each step).
 ReversalErrors reversal_errors(const SineShake& shake, double hz, double run_time) {
-  Block block;
-  block.mass = shake.mass;
-  block.pair = FrictionPair{shake.mu_s, shake.mu_k, 0.0, 0.0};
-  StepSettings settings;
-  settings.hz = hz;
-  Scene scene(block_on_ground(block), settings);
+  Scene scene = block_on_a_plank(shake.mass, shake.mu_s, shake.mu_k, hz);
   // Centred on the origin over the run (the plank drifts at A/ω on average), where floats are
   // finest.
   const double x_start = -0.5 * (shake.a / shake.omega) * run_time;
