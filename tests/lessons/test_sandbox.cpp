@@ -3,9 +3,12 @@
 // loop or a runaway table ended with an error, not a hang (lessons/runtime/sandbox.h).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 
 #include "lessons/runtime/lesson.h"
+#include "lessons/runtime/sandbox.h"
 #include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
@@ -134,6 +137,29 @@ TEST(LessonSandbox, AnEndlessLoopWhileRunningStopsTheLessonNotTheProgram) {
   const std::string message = error_of([&] { run_for(lesson, 0.1); });
   EXPECT_NE(message.find(script.path() + ":2: the script ran for more than"), std::string::npos) << message;
   EXPECT_TRUE(lesson.failed());
+}
+
+// The time limit is on the processor time the script's thread spends, not on the wall clock: a
+// machine busy with other work (two test programs and a compiler on two cores) gives a loop less
+// of the processor, and must not stop a script before its instruction limit. A thread asleep
+// inside a C function stands in for that load: it is off the processor, as a starved one is.
+TEST(LessonSandbox, TheTimeLimitCountsTheScriptsProcessorTimeNotTheWallClock) {
+  SandboxLimits limits;
+  limits.instructions_per_call = 1'000'000'000'000;  // so that only the clock can stop the loop below
+  limits.seconds_per_call = 1.0;
+  Sandbox sandbox(limits);
+  lua_register(sandbox.state(), "doze", [](lua_State*) -> int {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    return 0;
+  });
+  // 1.2 s on the wall, a few milliseconds on the processor: 12 x 5 000 turns of an empty loop,
+  // each turn a few instructions, so the clock is looked at between the dozes.
+  sandbox.load("for i = 1, 12 do doze(); for j = 1, 5000 do end end\n", "dozing.lua");
+  EXPECT_NO_THROW(sandbox.call(0, 0));
+  // A loop that keeps the processor busy still stops at the limit, at its own line.
+  sandbox.load("local n = 0\nwhile true do n = n + 1 end\n", "spinning.lua");
+  const std::string message = error_of([&] { sandbox.call(0, 0); });
+  EXPECT_NE(message.find("spinning.lua:2: the script ran for more than 1 seconds"), std::string::npos) << message;
 }
 
 }  // namespace
