@@ -118,7 +118,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   for (const TorqueArc& arc : torques) {
     draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
   }
-  // The forces drawn, as printed: a force too small for an arrow has no value to add.
+  // The forces drawn, as printed: place_arrows leaves out only a force too small to show in them.
   std::vector<b2Vec2> drawn;
   for (const ScreenArrow& arrow : arrows) drawn.push_back(arrow.force.force);
   draw->PopClipRect();

@@ -20,12 +20,24 @@ float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - ta
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
                                       float pixels_per_newton) {
+  // Whether a force counts is a question of the printed values, not of pixels: one that shows in
+  // its body's numbers (at least half the last digit printed for the body's largest force) is
+  // drawn, however short its arrow would be at the picture's scale. A tipping box's last
+  // newton of friction under a 98 N weight was a pixel long and was left out, with its label, and
+  // the free-body diagram's net force then did not add up. One that does not show (the solver's
+  // round-off on a resting block) is left out.
+  float largest = 0.0f;
+  for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
+  const double smallest_shown = 0.5 * printed_number(largest).step;
   std::vector<ScreenArrow> arrows;
   for (const ForceOnBody& force : forces) {
+    const float size = force.force.Length();
+    if (size == 0.0f || size < smallest_shown) continue;
     const ImVec2 tail = camera.to_screen(force.point);
-    const ImVec2 tip(tail.x + force.force.x * pixels_per_newton, tail.y - force.force.y * pixels_per_newton);
-    ScreenArrow arrow{force, tail, tip};
-    if (arrow.length() >= 2.0f) arrows.push_back(arrow);
+    // Too short to see at the scale: as long as an arrowhead needs, its label giving its size.
+    const float drawn = std::max(size * pixels_per_newton, shortest_arrow_pixels);
+    const ImVec2 tip(tail.x + force.force.x / size * drawn, tail.y - force.force.y / size * drawn);
+    arrows.push_back(ScreenArrow{force, tail, tip});
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
   // force: each moves half a gap across, keeping its length and direction.

@@ -32,8 +32,12 @@ struct ScreenArrow {
   ImVec2 tail, tip;
   float length() const;
 };
-// Tails at the point of action; an arrow too short to see (under 2 px) is left out. Two
-// arrows of one body lying along one line (weight and normal force) are drawn side by side.
+// The shortest arrow drawn: one whose head can be seen.
+constexpr float shortest_arrow_pixels = 8.0f;
+// Tails at the point of action, lengths to scale; a force that shows in the printed values of
+// its body's forces but would be shorter than shortest_arrow_pixels is drawn that long, and one
+// too small to show in them is left out. Two arrows of one body lying along one line (weight and
+// normal force) are drawn side by side.
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
                                       float pixels_per_newton);
 

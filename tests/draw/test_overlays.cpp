@@ -3,6 +3,7 @@
 // These need no OpenGL; test_headless_render checks the same things in the pixels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "draw/frame.h"
@@ -176,6 +177,37 @@ TEST(Overlays, ArrowsAlongOneLineAreDrawnSideBySide) {
   EXPECT_GE(std::abs(weight->tail.x - normal->tail.x), 8.0f);
   EXPECT_NEAR(weight->tip.x, weight->tail.x, 1e-3f);  // still vertical
   EXPECT_NEAR(normal->tip.x, normal->tail.x, 1e-3f);
+}
+
+// tipping_box at 2.49 s: the box tips on its front edge, where the floor's friction has fallen
+// to under a newton beside a 98.1 N weight, a pixel at the picture's scale. It shows in the
+// printed values (the weight's last digit is 0.1 N), so it is drawn, long enough to see, along
+// its own direction; and the free-body diagram's net force adds it in. A force below half that
+// last digit is left out: it changes no number printed.
+TEST(Overlays, AForceThatShowsInTheNumbersIsDrawnHoweverShortItsArrow) {
+  LessonAt at("tipping_box", {}, 2.49);
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const float scale = arrow_scale(*at.lesson, at.framing, display, 1.0f);
+  const std::vector<ForceOnBody> forces = forces_on(at.scene(), at.scene().body("box"));
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  ASSERT_GT(friction->force.Length(), 0.05f);  // shows at the weight's 0.1 N digit
+  ASSERT_LT(friction->force.Length() * scale, shortest_arrow_pixels);  // too short at the scale
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, camera, scale);
+  const auto drawn = std::find_if(arrows.begin(), arrows.end(),
+                                  [](const ScreenArrow& arrow) { return arrow.force.kind == ForceKind::friction; });
+  ASSERT_NE(drawn, arrows.end());
+  EXPECT_NEAR(drawn->length(), shortest_arrow_pixels, 1e-3f);
+  // Along the force (screen y runs down).
+  const float along = (drawn->tip.x - drawn->tail.x) * friction->force.x - (drawn->tip.y - drawn->tail.y) * friction->force.y;
+  EXPECT_NEAR(along, drawn->length() * friction->force.Length(), 1e-3f * drawn->length() * friction->force.Length());
+
+  std::vector<ForceOnBody> with_round_off = forces;
+  ForceOnBody round_off = *friction;
+  round_off.force = b2Vec2(0.04f, 0.0f);  // under half of 0.1 N
+  with_round_off.push_back(round_off);
+  EXPECT_EQ(place_arrows(with_round_off, camera, scale).size(), arrows.size());
 }
 
 // A block on a table pulled by a hanging weight over a pulley: the rope's tension is on the
