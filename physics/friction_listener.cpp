@@ -299,6 +299,7 @@ void FrictionListener::share_group_state(const b2Contact* contact, const Contact
       // body (both flip), so it is copied as it is.
       member.slip_direction = r.slip_direction;
       member.held_force = r.held_force;
+      member.held_limit = r.held_limit;
       member.band_steps = r.band_steps;
       member.band_excess = r.band_excess;
       member.band_impulse = r.band_impulse;
@@ -361,6 +362,7 @@ void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
     r.state = member.state;
     r.slip_direction = member.slip_direction;
     r.held_force = member.held_force;
+    r.held_limit = member.held_limit;
     r.band_steps = member.band_steps;
     r.band_excess = member.band_excess;
     r.band_impulse = member.band_impulse;
@@ -460,6 +462,7 @@ void FrictionListener::forget_trial() {
     r.breakaway_impulse = 0.0;
     r.breakaway_span = 0.0;
     r.held_force = 0.0;
+    r.held_limit = -1.0;
     r.band_steps = 0;
     r.band_excess = 0.0;
     r.band_impulse = 0.0;

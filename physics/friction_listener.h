@@ -72,6 +72,10 @@ struct ContactRecord {
   int siblings = 0;
   bool unpaired = false;           // its materials have no pair values: switched off, reported
   double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
+  // N, mu_s·N in that step (negative: not known, as before any step). The breakaway is placed
+  // where the demand's margin over the limit crossed zero, and a limit that falls as N does
+  // moves that crossing as much as a demand that grows (see breakaway_correction).
+  double held_limit = -1.0;
   // A stuck contact whose friction went a hair past mu_s·N, within what the solver holds for a
   // step (see treatment_stick_slip.cpp): how many steps in a row, the last step's friction
   // above the limit (N), and the impulse held above the limit over them (N·s).

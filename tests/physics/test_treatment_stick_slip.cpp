@@ -306,6 +306,41 @@ TEST_P(FeetUnderAGrowingPull, OnASlopeHoldBelowTheStaticAngleAndSlideAtTheKineti
   EXPECT_NEAR(slides.block->GetLinearVelocity().x, face.block->GetLinearVelocity().x, 1e-4 * a * t);
 }
 
+// A block held by a steady pull P while a lift r·t takes its weight off: the demand stays P and
+// the limit, mu_s·(m·g − r·t), falls to it at t_b = (m·g − P/mu_s)/r. After it the block slides
+// under P − mu_k·(m·g − r·t), so from rest at t_b its speed is a_b·τ + mu_k·r·τ²/(2m),
+// τ = t − t_b, a_b = P·(1 − mu_k/mu_s)/m. Both forces act at the floor's height under the
+// centre (no moment), evaluated at each step's start, where Box2D's velocities are those of the
+// middles of the steps: the speed after a step is the exact one half a step earlier, for a force
+// linear in time. The margin (demand less limit) is linear in time too, so the listener's
+// placing of the crossing inside its step is exact and what is left is single precision and
+// the breakaway tolerance: friction within 1e-5 of mu_s·N is taken for the limit, which moves
+// the crossing by up to 1e-5·mu_s·N/(mu_s·r) and the speed by a_b times that; and each step's
+// float velocity rounds by up to 6e-8 of the speed. Placed by the demand alone (which does not
+// grow here), the crossing was put at the half step whatever it was: the speed was off by
+// 8.3e-3, 7.5e-4, 5.2e-4 and 5.2e-4 m/s at 240, 330, 480 and 960 Hz.
+TEST(StickSlipBreakaway, WhereTheLimitFallsUnderASteadyPullTheCrossingIsPlacedInsideTheStep) {
+  constexpr double mu_s = 0.8, mu_k = 0.3, pull = 4.0, lift_rate = 3.0;  // N, N/s
+  const double t_b = (mass * g - pull / mu_s) / lift_rate;
+  const double a_b = pull * (1.0 - mu_k / mu_s) / mass;
+  for (double hz : {240.0, 330.0, 480.0, 960.0}) {
+    SCOPED_TRACE(hz);
+    PulledBlock made = make_block(0, mu_s, mu_k, hz, 0.0);
+    const b2Vec2 at{0.0f, -0.5f * height - 0.5f * resting_gap};
+    made.scene->add_applied_force({"steady pull and lift", made.block, at, [](double t) {
+                                     return b2Vec2{static_cast<float>(pull), static_cast<float>(lift_rate * t)};
+                                   }});
+    const double until = t_b + 0.5;
+    while (made.scene->time() < until - 1e-9) made.scene->step();
+    const double h = 1.0 / hz;
+    const double tau = made.scene->time() - 0.5 * h - t_b;
+    const double exact = a_b * tau + mu_k * lift_rate * tau * tau / (2.0 * mass);
+    const double steps = made.scene->time() * hz;
+    const double tolerance = a_b * 1e-5 * mass * g / lift_rate + steps * 6e-8 * exact;
+    EXPECT_NEAR(made.block->GetLinearVelocity().x, exact, tolerance);
+  }
+}
+
 namespace {
 // A block on a level plank that a drive shakes sideways, x(t) = (a/ω²)·(1 − cos ω·t), hard
 // enough that static friction cannot hold it at most of its stops (|a| > mu_s·g): in the
