@@ -16,14 +16,17 @@
 
 namespace frictionlab::draw {
 
-FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
+namespace {
+
+// The frame's places; `plots`: the lesson has plots of its own, as FrameLayout::of asks it.
+FrameLayout laid_out(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   // The title's panel holds two lines (the title, the question under it) at a screen's text
   // size; on a projector one: 26 pt title text (load_fonts) and the panel's padding above and
   // below (title_padding, which title_panel keeps to).
   const float two_lines = 70.0f * scale;
-  const float title_height = projector ? (26.0f + 2.0f * title_padding) * scale : two_lines;
+  const float title_height = projector ? (26.0f + 2.0f * FrameLayout::title_padding) * scale : two_lines;
   // A slider row and a theory row need a width that grows with the text: at a screen's own
   // text size a third of the screen holds them, at projector size (the screen's text size
   // times 1.35) 39 % of it does; the world keeps the rest, room for its labels.
@@ -49,13 +52,14 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
   if (projector && !plots) layout.world_size.y = display.y - layout.world_corner.y - legend_strip;
   const float under_world = layout.world_corner.y + layout.world_size.y;
-  if (projector && plots) {
+  layout.legend_beside_plots = projector && plots;
+  if (layout.legend_beside_plots) {
     // The plots' row right under the world, the legend a column at its right end: the row's
     // height is the key plot's (a third of the screen or more), and the legend, a line an
     // entry, needs no more than it has.
     // Their panels' edges close up to the world's (1 pt apart, not 4).
     const float close = 1.0f * scale;
-    layout.legend_size = ImVec2(legend_column_default_points * scale, display.y - under_world - close);
+    layout.legend_size = ImVec2(FrameLayout::legend_column_default_points * scale, display.y - under_world - close);
     layout.legend_corner = ImVec2(left_width - layout.legend_size.x, under_world + close);
     layout.plots_corner = ImVec2(0.0f, under_world + close);
     layout.plots_size = ImVec2(left_width - layout.legend_size.x - gap, display.y - layout.plots_corner.y);
@@ -77,6 +81,16 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
   return layout;
 }
 
+}  // namespace
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, const lessons::Lesson& lesson) {
+  return laid_out(display, scale, origin, projector, !lesson.plots().empty());
+}
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
+  return laid_out(display, scale, origin, false, true);
+}
+
 FrameLayout FrameLayout::with_legend_column(float width) const {
   FrameLayout layout = *this;
   const float right = legend_corner.x + legend_size.x;
@@ -88,7 +102,7 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, !lesson.plots().empty());
+  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, lesson);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
@@ -100,7 +114,7 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, !lesson.plots().empty());
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
   // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
   // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
@@ -130,7 +144,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, lesson);
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
@@ -420,8 +434,8 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   }
   // On a projector the legend is a column beside the plots' row, as wide as its names need; a
   // lesson with no plots has no such row, and keeps the legend in its strip under the world.
-  const bool legend_apart = style.projector && !lesson.plots().empty();
-  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
+  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, lesson);
+  const bool legend_apart = layout.legend_beside_plots;
   if (legend_apart) layout = layout.with_legend_column(legend_column_width(lesson.scene(), fonts));
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.projector, FrameLayout::title_padding * s);
