@@ -52,6 +52,20 @@ std::vector<ImVec2> wrap_keys(const std::vector<Key>& keys, float left, float ri
   return at;
 }
 
+// The box round an inside legend's keys, each from its place to the end of its name as
+// draw_legend writes it (wrapped at the layout's width where it has one; a name holds no line
+// break, so one that does not wrap is a line of text high).
+void bound_keys(ChartLayout& layout, const std::vector<Key>& keys, ImFont* font, float s) {
+  const float text = font->FontSize;
+  layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const ImVec2 at = layout.legend_at[i];
+    const ImVec2 name = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
+    layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+    layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + name.x + 22.0f * s), std::max(layout.legend_max.y, at.y + name.y));
+  }
+}
+
 }  // namespace
 
 bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, const Fonts& fonts,
@@ -100,14 +114,7 @@ bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corne
         return false;
       }
       place();
-      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
-      for (std::size_t i = 0; i < keys.size(); ++i) {
-        const ImVec2 key_at = layout.legend_at[i];
-        layout.legend_min = ImVec2(std::min(layout.legend_min.x, key_at.x), std::min(layout.legend_min.y, key_at.y));
-        const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
-        layout.legend_max = ImVec2(std::max(layout.legend_max.x, key_at.x + wrapped.x + 22.0f * s),
-                                   std::max(layout.legend_max.y, key_at.y + wrapped.y));
-      }
+      bound_keys(layout, keys, font, s);
     }
   } else if (!chart.plain && chart.legend != Chart::Legend::inside) {
     const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
@@ -220,13 +227,7 @@ bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corne
         }
         place();
       }
-      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
-      for (std::size_t i = 0; i < keys.size(); ++i) {
-        const ImVec2 at = layout.legend_at[i];
-        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
-        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + width_of(font, keys[i].name) + 22.0f * s),
-                                   std::max(layout.legend_max.y, at.y + text));
-      }
+      bound_keys(layout, keys, font, s);
     }
   }
   return true;
