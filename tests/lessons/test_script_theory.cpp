@@ -131,6 +131,8 @@ struct EngineConstant {
   bool float_precision;  // the engine keeps it as a float: compared as one
 };
 
+void PrintTo(const EngineConstant& constant, std::ostream* out) { *out << constant.name; }
+
 class ScriptConstants : public ::testing::TestWithParam<EngineConstant> {};
 
 TEST_P(ScriptConstants, AreTheEnginesOwn) {
