@@ -66,6 +66,18 @@ void bound_keys(ChartLayout& layout, const std::vector<Key>& keys, ImFont* font,
   }
 }
 
+// The data area from `top` down, under rows of keys: none, and the chart not drawn, when that
+// leaves the data less than 20 px; else the data are placed in it.
+bool data_from(float top, ChartLayout& layout, const std::function<void()>& place) {
+  layout.high_right.y = top;
+  if (layout.low_left.y - layout.high_right.y < 20.0f) {
+    layout.drawable = false;
+    return false;
+  }
+  place();
+  return true;
+}
+
 // The keys a line each, from `top_left` down.
 void keys_down_from(ChartLayout& layout, std::size_t count, ImVec2 top_left, float key_height) {
   float y = top_left.y;
@@ -109,12 +121,7 @@ bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 
   layout.legend_outside = true;
   layout.legend_at.assign(at.begin(), at.begin() + static_cast<long>(keys.size()));
   // The data under the rows, with room for half the top tick's label.
-  layout.high_right.y = y + row + 1.0f * s + 0.5f * text;
-  if (layout.low_left.y - layout.high_right.y < 20.0f) {
-    layout.drawable = false;
-    return false;
-  }
-  place();
+  if (!data_from(y + row + 1.0f * s + 0.5f * text, layout, place)) return false;
   bound_keys(layout, keys, font, s);
   return true;
 }
@@ -216,12 +223,7 @@ bool place_off_data(const Chart& chart, const std::vector<Key>& keys, ImVec2 cor
     place_beside_data(keys, font, s, legend_size, rows, row_height, least_covered, layout, place, set_x_ticks);
   } else {
     layout.legend_at = rows;
-    layout.high_right.y = rows.back().y + row_height + 4.0f * s;
-    if (layout.low_left.y - layout.high_right.y < 20.0f) {
-      layout.drawable = false;
-      return false;
-    }
-    place();
+    if (!data_from(rows.back().y + row_height + 4.0f * s, layout, place)) return false;
   }
   bound_keys(layout, keys, font, s);
   return true;
