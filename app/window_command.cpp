@@ -13,6 +13,7 @@
 #include "desktop/window.h"
 #include "draw/image.h"
 #include "lessons/runtime/catalog.h"
+#include "physics/validation.h"
 
 namespace frictionlab {
 namespace {
@@ -181,7 +182,7 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
     std::vector<std::string> render_args{lesson, "--at", time_text(at), "--out", picture};
     for (const auto& [name, value] : classroom_options.overrides) render_args.insert(render_args.end(), {"--set", name + "=" + value});
     const StepSettings& settings = classroom_options.settings;
-    render_args.insert(render_args.end(), {"--hz", classroom_state::exact_text(settings.hz), "--substeps", std::to_string(settings.substeps),
+    render_args.insert(render_args.end(), {"--hz", validation::exact_text(settings.hz), "--substeps", std::to_string(settings.substeps),
                                            "--friction", std::string(treatment_name(settings.treatment))});
     if (const auto& mystery = classroom_options.mystery) {
       render_args.insert(render_args.end(), {"--mystery", mystery->pair, "--seed", std::to_string(mystery->seed)});

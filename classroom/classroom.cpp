@@ -191,7 +191,7 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
   const float s = fonts_->scale;
   ImGui::PushFont(fonts_->body);
   hand_.handle_mouse(*playback_, strips.origin, strips.area, s, status_.text);
-  const draw::FrameLayout layout = draw::FrameLayout::of(strips.area, s, strips.origin, window_.projector, !playback_->lesson().plots().empty());
+  const draw::FrameLayout layout = draw::FrameLayout::of(strips.area, s, strips.origin, window_.projector, playback_->lesson());
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages_panel(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
                  layout.world_size.x - 12.0f * s, *playback_, failed_, browser_, script_words_, theme(window_.theme), controls_);

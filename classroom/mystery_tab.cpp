@@ -149,7 +149,7 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
     std::string said = !answers[k]->has_value() ? "not yet"
                        : mystery.revealed()     ? classroom_state::closeness_text(**answers[k], truths[k])
                                                 : "kept for the reveal";
-    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + classroom_state::exact_text(truths[k]);
+    if (mystery.revealed()) said += (answers[k]->has_value() ? ", true " : ", true value ") + validation::exact_text(truths[k]);
     if (!answer_error[k].empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colours.bad);
       draw::shown_text(answer_error[k].c_str());

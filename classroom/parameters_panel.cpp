@@ -15,6 +15,7 @@
 #include "draw/words.h"
 #include "lessons/runtime/class_words.h"
 #include "physics/materials.h"
+#include "physics/validation.h"
 
 namespace frictionlab::classroom {
 namespace {
@@ -337,9 +338,9 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
-                      classroom_state::exact_text(parameter.min).c_str(), classroom_state::exact_text(parameter.max).c_str(),
+                      validation::exact_text(parameter.min).c_str(), validation::exact_text(parameter.max).c_str(),
                       parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
-                      classroom_state::exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
+                      validation::exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
   }
   if (on_show.mystery && on_show.mystery->hides(name)) {
     // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
@@ -428,7 +429,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
   ImGui::EndDisabled();
   remember_item(controls, name + " reset");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("Back to the script's value, %s", classroom_state::exact_text(parameter.default_value).c_str());
+    ImGui::SetTooltip("Back to the script's value, %s", validation::exact_text(parameter.default_value).c_str());
   }
 }
 

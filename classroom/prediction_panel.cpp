@@ -437,7 +437,7 @@ std::string PredictionPanel::forget_outdated(const classroom_state::Playback& pl
   for (const auto& [row_name, answer] : predictions.answers) {
     for (const lessons::ExpectationResult& row : playback.readings().expectations) {
       if (row.name != row_name || row.failed) continue;
-      const std::string theory = row.numeric ? classroom_state::exact_text(row.predicted) : row.predicted_text;
+      const std::string theory = row.numeric ? validation::exact_text(row.predicted) : row.predicted_text;
       const auto [seen, first] = predictions.theory_answered.emplace(row_name, theory);
       if (!first && seen->second != theory) outdated.push_back(row_name);
     }

@@ -10,6 +10,7 @@
 #include "draw/text_record.h"
 #include "physics/materials.h"
 #include "physics/scenarios.h"
+#include "physics/validation.h"
 
 namespace frictionlab::classroom {
 namespace {
@@ -61,7 +62,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const draw::HiddenVa
     made_for = {mu_s, gravity};
     cells = stability_map(pair, gravity, Integrator::semi_implicit_euler, steps, epsilons);
   }
-  chart = draw::stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + classroom_state::exact_text(mu_s) + slope,
+  chart = draw::stability_map_chart("Regularized friction, semi-implicit Euler (Box2D's), \u03bcs " + validation::exact_text(mu_s) + slope,
                                          cells, pair, gravity, Integrator::semi_implicit_euler, epsilons);
   draw::ChartSeries marks{"this lesson's \u03b5 at its step", {}, IM_COL32(0, 90, 200, 255), false, draw::Marker::dot, {}};
   for (const Threshold& threshold : thresholds) {
@@ -70,7 +71,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const draw::HiddenVa
     const double boundary = theoretical_boundary(pair, gravity, threshold.epsilon, Integrator::semi_implicit_euler);
     char line[200];
     std::snprintf(line, sizeof line, "%s %s m/s: %s at a %.3g ms step (boundary %.3g ms)", threshold.name.c_str(),
-                  classroom_state::exact_text(threshold.epsilon).c_str(), threshold.h > boundary ? "chatters" : "settles", threshold.h * 1e3,
+                  validation::exact_text(threshold.epsilon).c_str(), threshold.h > boundary ? "chatters" : "settles", threshold.h * 1e3,
                   boundary * 1e3);
     words.push_back(line);
   }

@@ -45,7 +45,7 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
   const ImGuiIO& io = ImGui::GetIO();
   lessons::Lesson& lesson = playback.lesson();
   Scene& scene = lesson.scene();
-  const draw::FrameLayout layout = draw::FrameLayout::of(size, scale, origin, projector, !lesson.plots().empty());
+  const draw::FrameLayout layout = draw::FrameLayout::of(size, scale, origin, projector, lesson);
   cameras = draw::world_cameras(lesson, playback.framing(), size, scale, origin, view_adjust, projector);
   // The lane a drag began in keeps it until the button is let go: each lane's camera sits on its
   // own body's height, so the same screen point is another world point in the next lane.

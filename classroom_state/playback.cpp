@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "lessons/runtime/class_words.h"
+#include "physics/validation.h"
 
 namespace frictionlab::classroom_state {
 FileStamp file_stamp(const std::string& path) {
@@ -39,7 +40,7 @@ constexpr long most_world_steps_per_display_frame = 5000;
 
 std::string parameter_text(const lessons::Parameter& parameter) {
   if (parameter.is_choice()) return parameter.choices[static_cast<std::size_t>(parameter.value)];
-  return exact_text(parameter.value);
+  return validation::exact_text(parameter.value);
 }
 
 Playback::Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings)

@@ -17,7 +17,6 @@
 #include "lessons/runtime/framing.h"
 #include "lessons/runtime/lesson.h"
 #include "lessons/runtime/readings.h"
-#include "physics/validation.h"
 
 namespace frictionlab::classroom_state {
 
@@ -164,8 +163,6 @@ class Playback {
   GaugeRecord gauge_;
 };
 
-// A number as the shortest text that reads back as the same double (physics/validation.h).
-using validation::exact_text;
 // The value of a parameter as text that sets it again exactly: "0.45", "plastic".
 std::string parameter_text(const lessons::Parameter& parameter);
 

@@ -52,182 +52,221 @@ std::vector<ImVec2> wrap_keys(const std::vector<Key>& keys, float left, float ri
   return at;
 }
 
+// The box round an inside legend's keys, each from its place to the end of its name as
+// draw_legend writes it (wrapped at the layout's width where it has one; a name holds no line
+// break, so one that does not wrap is a line of text high).
+void bound_keys(ChartLayout& layout, const std::vector<Key>& keys, ImFont* font, float s) {
+  const float text = font->FontSize;
+  layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const ImVec2 at = layout.legend_at[i];
+    const ImVec2 name = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
+    layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
+    layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + name.x + 22.0f * s), std::max(layout.legend_max.y, at.y + name.y));
+  }
+}
+
+// The data area from `top` down, under rows of keys: none, and the chart not drawn, when that
+// leaves the data less than 20 px; else the data are placed in it.
+bool data_from(float top, ChartLayout& layout, const std::function<void()>& place) {
+  layout.high_right.y = top;
+  if (layout.low_left.y - layout.high_right.y < 20.0f) {
+    layout.drawable = false;
+    return false;
+  }
+  place();
+  return true;
+}
+
+// The keys a line each, from `top_left` down.
+void keys_down_from(ChartLayout& layout, std::size_t count, ImVec2 top_left, float key_height) {
+  float y = top_left.y;
+  for (std::size_t i = 0; i < count; ++i, y += key_height) layout.legend_at.push_back(ImVec2(top_left.x, y));
+}
+
+// A plain, steady chart's legend: a line above the data, the y label first and the keys after
+// it in rows as wide as the chart (a column beside the data took up to 40 % of its width). The
+// rows are laid out for every key that may ever be in them (`legend_room`: theory curves not
+// shown before the reveal), each in its place from the start, the theory's last as keys_of
+// gives them: what the run or the reveal adds moves neither a key nor the data. False when the
+// data keep no height under the rows.
+bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, ImFont* font, float s,
+                       ChartLayout& layout, const std::function<void()>& place) {
+  const float text = font->FontSize;
+  std::vector<std::string> names;
+  for (const Key& key : keys) names.push_back(key.name);
+  for (const std::string& name : chart.legend_room) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  const float left = corner.x + 2.0f * s, right = corner.x + size.x - 8.0f * s;
+  // A key longer than a row (pulley's laws written out) wraps in it.
+  layout.legend_wrap = right - left - 32.0f * s;
+  const float top = corner.y;
+  float x = left + (chart.y_label.empty() ? 0.0f : width_of(font, chart.y_label) + 24.0f * s), y = top, row = text;
+  std::vector<ImVec2> at;
+  for (const std::string& name : names) {
+    const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, name.c_str());
+    const float w = wrapped.x + 32.0f * s;
+    if (x > left && x + w > right + 12.0f * s) {
+      x = left;
+      y += row + 1.0f * s;
+      row = text;
+    }
+    at.push_back(ImVec2(x, y));
+    row = std::max(row, wrapped.y);
+    x += w;
+  }
+  if (names.empty() && chart.y_label.empty()) return true;
+  layout.y_label_at = ImVec2(left, top);
+  layout.legend_outside = true;
+  layout.legend_at.assign(at.begin(), at.begin() + static_cast<long>(keys.size()));
+  // The data under the rows, with room for half the top tick's label.
+  if (!data_from(y + row + 1.0f * s + 0.5f * text, layout, place)) return false;
+  bound_keys(layout, keys, font, s);
+  return true;
+}
+
+// Under a chart that is not plain, where draw_legend writes its keys two a row (none for a
+// chart with no legend) and its notes after them.
+void place_under(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, ImFont* font, float s,
+                 ChartLayout& layout) {
+  const float text = font->FontSize;
+  const float line = text + 3.0f * s;
+  const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
+  layout.legend_min = ImVec2(corner.x + 12.0f * s, layout.low_left.y + 2.0f * text + 14.0f * s);
+  layout.legend_max = ImVec2(corner.x + size.x - 12.0f * s, layout.legend_min.y + line * static_cast<float>((shown + 1) / 2));
+}
+
+// A legend too tall for one column beside the data, in two or more: each column's width, as
+// few columns as `data_height` allows, or none when the data would keep less than 30 % of
+// `full_width`.
+std::vector<float> column_widths(const std::vector<Key>& keys, ImFont* font, float s, float full_width, float data_height) {
+  const float key_height = font->FontSize + 2.0f * s;
+  for (std::size_t columns = 2; columns <= keys.size(); ++columns) {
+    const std::size_t per_column = (keys.size() + columns - 1) / columns;
+    if (static_cast<float>(per_column) * key_height > data_height) continue;
+    std::vector<float> widths((keys.size() + per_column - 1) / per_column, 0.0f);
+    float total = 0.0f;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      widths[i / per_column] = std::max(widths[i / per_column], width_of(font, keys[i].name) + 24.0f * s);
+    }
+    for (const float w : widths) total += w + 8.0f * s;
+    if (full_width - total >= 0.3f * full_width) return widths;
+    break;  // more columns are wider still
+  }
+  return {};
+}
+
+// Rows above the data would leave it little height (large text in a small plot, as on a
+// projector). Beside it, on the right, a key a line, if the data keeps at least half the width;
+// else the rows above all the same while the data keeps 30 px of height (a short plot beats one
+// with its data under the keys); else beside it in columns; else, rather than the plot losing
+// its data, in the corner it covers least of.
+void place_beside_data(const std::vector<Key>& keys, ImFont* font, float s, ImVec2 legend_size, const std::vector<ImVec2>& rows,
+                       float row_height, const LegendPlace& least_covered, ChartLayout& layout,
+                       const std::function<void()>& place, const std::function<void(float)>& set_x_ticks) {
+  const float key_height = font->FontSize + 2.0f * s;
+  const float column = legend_size.x + 8.0f * s;
+  const float data_width = layout.high_right.x - layout.low_left.x;
+  const float rows_height = rows.back().y - rows.front().y + row_height + 4.0f * s;
+  if (data_width - column >= 0.5f * data_width && legend_size.y <= layout.low_left.y - layout.high_right.y) {
+    layout.high_right.x -= column;
+    keys_down_from(layout, keys.size(), ImVec2(layout.high_right.x + 8.0f * s, layout.high_right.y), key_height);
+    set_x_ticks(data_width - column);  // fewer for the narrower data
+    place();
+  } else if (layout.low_left.y - (layout.high_right.y + rows_height) >= 30.0f * s) {
+    layout.legend_at = rows;
+    layout.high_right.y = rows.back().y + row_height + 4.0f * s;
+    place();
+  } else if (const std::vector<float> widths = column_widths(keys, font, s, data_width, layout.low_left.y - layout.high_right.y);
+             !widths.empty()) {
+    // Beside the data in columns, as few as its height allows, keys in order down each.
+    const std::size_t per_column = (keys.size() + widths.size() - 1) / widths.size();
+    float total = 0.0f;
+    for (const float w : widths) total += w + 8.0f * s;
+    layout.high_right.x -= total;
+    float x = layout.high_right.x + 8.0f * s;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (i > 0 && i % per_column == 0) x += widths[i / per_column - 1] + 8.0f * s;
+      layout.legend_at.push_back(ImVec2(x, layout.high_right.y + static_cast<float>(i % per_column) * key_height));
+    }
+    set_x_ticks(data_width - total);
+    place();
+  } else {
+    layout.legend_outside = false;
+    layout.legend_on_data = true;
+    layout.legend_min = least_covered.min, layout.legend_max = least_covered.max;
+    keys_down_from(layout, keys.size(), least_covered.min, key_height);
+  }
+}
+
+// No corner is free of the data: the legend goes above the data area, in one row beside the y
+// label when it fits there, else in as many rows as it needs under the label, the data area
+// giving up their height (or beside the data, place_beside_data, when that leaves it too
+// little). False when the data keep no height under the rows.
+bool place_off_data(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImFont* font, float s, ImVec2 legend_size,
+                    float row_width, const LegendPlace& least_covered, ChartLayout& layout, const std::function<void()>& place,
+                    const std::function<void(float)>& set_x_ticks) {
+  const float text = font->FontSize;
+  layout.legend_outside = true;
+  const float row_height = text + 4.0f * s;
+  const float room = layout.high_right.x - corner.x - width_of(font, chart.y_label) - 12.0f * s;
+  if (row_width <= room) {
+    float x = layout.high_right.x - row_width;
+    for (const Key& key : keys) {
+      layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
+      x += width_of(font, key.name) + 32.0f * s;
+    }
+  } else if (const std::vector<ImVec2> rows = wrap_keys(keys, layout.low_left.x, layout.high_right.x,
+                                                        layout.high_right.y - 4.0f * s, row_height, font, s);
+             rows.back().y - rows.front().y + row_height > 0.45f * (layout.low_left.y - layout.high_right.y)) {
+    place_beside_data(keys, font, s, legend_size, rows, row_height, least_covered, layout, place, set_x_ticks);
+  } else {
+    layout.legend_at = rows;
+    if (!data_from(rows.back().y + row_height + 4.0f * s, layout, place)) return false;
+  }
+  bound_keys(layout, keys, font, s);
+  return true;
+}
+
+// An inside legend: in a corner of the data area clear of the data, a key a line, when it fits
+// there; else off the data (place_off_data). False when the data keep no height.
+bool place_inside(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImFont* font, float s, ChartLayout& layout,
+                  const std::function<void()>& place, const std::function<void(float)>& set_x_ticks) {
+  const float text = font->FontSize;
+  float legend_width = 0.0f, row_width = 0.0f;
+  for (const Key& key : keys) {
+    legend_width = std::max(legend_width, width_of(font, key.name));
+    row_width += width_of(font, key.name) + 32.0f * s;
+  }
+  const ImVec2 legend_size(legend_width + 24.0f * s, static_cast<float>(keys.size()) * (text + 2.0f * s));
+  std::vector<ImVec2> avoid = layout.points;
+  for (const auto& curve : layout.theory) {
+    for (const auto& piece : curve) avoid.insert(avoid.end(), piece.begin(), piece.end());
+  }
+  const LegendPlace inside = legend_corner(ImVec2(layout.low_left.x, layout.high_right.y), ImVec2(layout.high_right.x, layout.low_left.y),
+                                           legend_size, 5.0f * s, avoid, 3.0f * s);
+  // A corner clear of the data holds the legend only if the legend fits in the data area:
+  // a tall one would run out over the axis and its labels.
+  const bool fits = legend_size.y + 10.0f * s <= layout.low_left.y - layout.high_right.y &&
+                    legend_size.x + 10.0f * s <= layout.high_right.x - layout.low_left.x;
+  if (!inside.clear || !fits) return place_off_data(chart, keys, corner, font, s, legend_size, row_width, inside, layout, place, set_x_ticks);
+  layout.legend_min = inside.min, layout.legend_max = inside.max;
+  keys_down_from(layout, keys.size(), inside.min, text + 2.0f * s);
+  return true;
+}
+
 }  // namespace
 
 bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, const Fonts& fonts,
                   ChartLayout& layout, const std::function<void()>& place, const std::function<void(float)>& set_x_ticks) {
-  const float s = fonts.scale;
-  ImFont* font = fonts.small;
-  const float text = font->FontSize;
-  const float line = text + 3.0f * s;
   if (chart.plain && chart.steady && chart.legend == Chart::Legend::inside) {
-    // A line above the data, the y label first and the keys after it in rows as wide as the
-    // chart (a column beside the data took up to 40 % of its width). The rows are laid out for
-    // every key that may ever be in them (`legend_room`: theory curves not shown before the
-    // reveal), each in its place from the start, the theory's last as keys_of gives them: what
-    // the run or the reveal adds moves neither a key nor the data.
-    std::vector<std::string> names;
-    for (const Key& key : keys) names.push_back(key.name);
-    for (const std::string& name : chart.legend_room) {
-      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-    }
-    const float left = corner.x + 2.0f * s, right = corner.x + size.x - 8.0f * s;
-    // A key longer than a row (pulley's laws written out) wraps in it.
-    layout.legend_wrap = right - left - 32.0f * s;
-    const float top = corner.y;
-    float x = left + (chart.y_label.empty() ? 0.0f : width_of(font, chart.y_label) + 24.0f * s), y = top, row = text;
-    std::vector<ImVec2> at;
-    for (const std::string& name : names) {
-      const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, name.c_str());
-      const float w = wrapped.x + 32.0f * s;
-      if (x > left && x + w > right + 12.0f * s) {
-        x = left;
-        y += row + 1.0f * s;
-        row = text;
-      }
-      at.push_back(ImVec2(x, y));
-      row = std::max(row, wrapped.y);
-      x += w;
-    }
-    if (!names.empty() || !chart.y_label.empty()) {
-      layout.y_label_at = ImVec2(left, top);
-      layout.legend_outside = true;
-      layout.legend_at.assign(at.begin(), at.begin() + static_cast<long>(keys.size()));
-      // The data under the rows, with room for half the top tick's label.
-      layout.high_right.y = y + row + 1.0f * s + 0.5f * text;
-      if (layout.low_left.y - layout.high_right.y < 20.0f) {
-        layout.drawable = false;
-        return false;
-      }
-      place();
-      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
-      for (std::size_t i = 0; i < keys.size(); ++i) {
-        const ImVec2 key_at = layout.legend_at[i];
-        layout.legend_min = ImVec2(std::min(layout.legend_min.x, key_at.x), std::min(layout.legend_min.y, key_at.y));
-        const ImVec2 wrapped = font->CalcTextSizeA(text, INFINITY, layout.legend_wrap, keys[i].name.c_str());
-        layout.legend_max = ImVec2(std::max(layout.legend_max.x, key_at.x + wrapped.x + 22.0f * s),
-                                   std::max(layout.legend_max.y, key_at.y + wrapped.y));
-      }
-    }
-  } else if (!chart.plain && chart.legend != Chart::Legend::inside) {
-    const std::size_t shown = chart.legend == Chart::Legend::under ? keys.size() : 0;
-    layout.legend_min = ImVec2(corner.x + 12.0f * s, layout.low_left.y + 2.0f * text + 14.0f * s);
-    layout.legend_max = ImVec2(corner.x + size.x - 12.0f * s, layout.legend_min.y + line * static_cast<float>((shown + 1) / 2));
+    return place_steady_rows(chart, keys, corner, size, fonts.small, fonts.scale, layout, place);
+  }
+  if (!chart.plain && chart.legend != Chart::Legend::inside) {
+    place_under(chart, keys, corner, size, fonts.small, fonts.scale, layout);
   } else if (chart.legend == Chart::Legend::inside && !keys.empty()) {
-    float legend_width = 0.0f, row_width = 0.0f;
-    for (const Key& key : keys) {
-      legend_width = std::max(legend_width, width_of(font, key.name));
-      row_width += width_of(font, key.name) + 32.0f * s;
-    }
-    const ImVec2 legend_size(legend_width + 24.0f * s, static_cast<float>(keys.size()) * (text + 2.0f * s));
-    std::vector<ImVec2> avoid = layout.points;
-    for (const auto& curve : layout.theory) {
-      for (const auto& piece : curve) avoid.insert(avoid.end(), piece.begin(), piece.end());
-    }
-    const LegendPlace inside = legend_corner(ImVec2(layout.low_left.x, layout.high_right.y), ImVec2(layout.high_right.x, layout.low_left.y),
-                                             legend_size, 5.0f * s, avoid, 3.0f * s);
-    // In the chosen corner, a key a line.
-    const auto in_corner = [&] {
-      layout.legend_min = inside.min, layout.legend_max = inside.max;
-      float y = inside.min.y;
-      for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) layout.legend_at.push_back(ImVec2(inside.min.x, y));
-    };
-    // A corner clear of the data holds the legend only if the legend fits in the data area:
-    // a tall one would run out over the axis and its labels.
-    const bool fits = legend_size.y + 10.0f * s <= layout.low_left.y - layout.high_right.y &&
-                      legend_size.x + 10.0f * s <= layout.high_right.x - layout.low_left.x;
-    if (inside.clear && fits) {
-      in_corner();
-    } else {
-      // No corner is free of the data: the legend goes above the data area, in one row beside
-      // the y label when it fits there, else in as many rows as it needs under the label,
-      // the data area giving up their height.
-      layout.legend_outside = true;
-      const float row_height = text + 4.0f * s;
-      const float room = layout.high_right.x - corner.x - width_of(font, chart.y_label) - 12.0f * s;
-      if (row_width <= room) {
-        float x = layout.high_right.x - row_width;
-        for (const Key& key : keys) {
-          layout.legend_at.push_back(ImVec2(x, layout.high_right.y - text - 6.0f * s));
-          x += width_of(font, key.name) + 32.0f * s;
-        }
-      } else if (const std::vector<ImVec2> rows = wrap_keys(keys, layout.low_left.x, layout.high_right.x,
-                                                            layout.high_right.y - 4.0f * s, row_height, font, s);
-                 rows.back().y - rows.front().y + row_height > 0.45f * (layout.low_left.y - layout.high_right.y)) {
-        // Rows above the data would leave it little height (large text in a small plot, as on
-        // a projector). Beside it, on the right, a key a line, if the data keeps at least half
-        // the width; else the rows above all the same while the data keeps 30 px of height
-        // (a short plot beats one with its data under the keys); else, rather than the plot
-        // losing its data, in the corner it covers least of.
-        const float column = legend_size.x + 8.0f * s;
-        const float data_width = layout.high_right.x - layout.low_left.x;
-        // A legend too tall for one column beside the data, in two or more: each column's
-        // width, or none when the data would keep less than 30 % of the width.
-        const auto beside_columns = [&](float full_width, float data_height) {
-          const float key_height = text + 2.0f * s;
-          for (std::size_t columns = 2; columns <= keys.size(); ++columns) {
-            const std::size_t per_column = (keys.size() + columns - 1) / columns;
-            if (static_cast<float>(per_column) * key_height > data_height) continue;
-            std::vector<float> widths((keys.size() + per_column - 1) / per_column, 0.0f);
-            float total = 0.0f;
-            for (std::size_t i = 0; i < keys.size(); ++i) {
-              widths[i / per_column] = std::max(widths[i / per_column], width_of(font, keys[i].name) + 24.0f * s);
-            }
-            for (const float w : widths) total += w + 8.0f * s;
-            if (full_width - total >= 0.3f * full_width) return widths;
-            break;  // more columns are wider still
-          }
-          return std::vector<float>();
-        };
-        const float rows_height = rows.back().y - rows.front().y + row_height + 4.0f * s;
-        if (data_width - column >= 0.5f * data_width && legend_size.y <= layout.low_left.y - layout.high_right.y) {
-          layout.high_right.x -= column;
-          float y = layout.high_right.y;
-          for (std::size_t i = 0; i < keys.size(); ++i, y += text + 2.0f * s) {
-            layout.legend_at.push_back(ImVec2(layout.high_right.x + 8.0f * s, y));
-          }
-          set_x_ticks(data_width - column);  // fewer for the narrower data
-          place();
-        } else if (layout.low_left.y - (layout.high_right.y + rows_height) >= 30.0f * s) {
-          layout.legend_at = rows;
-          layout.high_right.y = rows.back().y + row_height + 4.0f * s;
-          place();
-        } else if (const std::vector<float> widths = beside_columns(data_width, layout.low_left.y - layout.high_right.y);
-                   !widths.empty()) {
-          // Beside the data in columns, as few as its height allows, keys in order down each.
-          const std::size_t per_column = (keys.size() + widths.size() - 1) / widths.size();
-          float total = 0.0f;
-          for (const float w : widths) total += w + 8.0f * s;
-          layout.high_right.x -= total;
-          float x = layout.high_right.x + 8.0f * s;
-          for (std::size_t i = 0; i < keys.size(); ++i) {
-            if (i > 0 && i % per_column == 0) x += widths[i / per_column - 1] + 8.0f * s;
-            layout.legend_at.push_back(ImVec2(x, layout.high_right.y + static_cast<float>(i % per_column) * (text + 2.0f * s)));
-          }
-          set_x_ticks(data_width - total);
-          place();
-        } else {
-          layout.legend_outside = false;
-          layout.legend_on_data = true;
-          in_corner();
-        }
-      } else {
-        layout.legend_at = rows;
-        layout.high_right.y = rows.back().y + row_height + 4.0f * s;
-        if (layout.low_left.y - layout.high_right.y < 20.0f) {
-          layout.drawable = false;
-          return false;
-        }
-        place();
-      }
-      layout.legend_min = ImVec2(INFINITY, INFINITY), layout.legend_max = ImVec2(-INFINITY, -INFINITY);
-      for (std::size_t i = 0; i < keys.size(); ++i) {
-        const ImVec2 at = layout.legend_at[i];
-        layout.legend_min = ImVec2(std::min(layout.legend_min.x, at.x), std::min(layout.legend_min.y, at.y));
-        layout.legend_max = ImVec2(std::max(layout.legend_max.x, at.x + width_of(font, keys[i].name) + 22.0f * s),
-                                   std::max(layout.legend_max.y, at.y + text));
-      }
-    }
+    return place_inside(chart, keys, corner, fonts.small, fonts.scale, layout, place, set_x_ticks);
   }
   return true;
 }

@@ -16,14 +16,17 @@
 
 namespace frictionlab::draw {
 
-FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
+namespace {
+
+// The frame's places; `plots`: the lesson has plots of its own, as FrameLayout::of asks it.
+FrameLayout laid_out(ImVec2 display, float scale, ImVec2 origin, bool projector, bool plots) {
   FrameLayout layout;
   const float gap = 4.0f * scale;
   // The title's panel holds two lines (the title, the question under it) at a screen's text
   // size; on a projector one: 26 pt title text (load_fonts) and the panel's padding above and
   // below (title_padding, which title_panel keeps to).
   const float two_lines = 70.0f * scale;
-  const float title_height = projector ? (26.0f + 2.0f * title_padding) * scale : two_lines;
+  const float title_height = projector ? (26.0f + 2.0f * FrameLayout::title_padding) * scale : two_lines;
   // A slider row and a theory row need a width that grows with the text: at a screen's own
   // text size a third of the screen holds them, at projector size (the screen's text size
   // times 1.35) 39 % of it does; the world keeps the rest, room for its labels.
@@ -49,13 +52,14 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
   if (projector && !plots) layout.world_size.y = display.y - layout.world_corner.y - legend_strip;
   const float under_world = layout.world_corner.y + layout.world_size.y;
-  if (projector && plots) {
+  layout.legend_beside_plots = projector && plots;
+  if (layout.legend_beside_plots) {
     // The plots' row right under the world, the legend a column at its right end: the row's
     // height is the key plot's (a third of the screen or more), and the legend, a line an
     // entry, needs no more than it has.
     // Their panels' edges close up to the world's (1 pt apart, not 4).
     const float close = 1.0f * scale;
-    layout.legend_size = ImVec2(legend_column_default_points * scale, display.y - under_world - close);
+    layout.legend_size = ImVec2(FrameLayout::legend_column_default_points * scale, display.y - under_world - close);
     layout.legend_corner = ImVec2(left_width - layout.legend_size.x, under_world + close);
     layout.plots_corner = ImVec2(0.0f, under_world + close);
     layout.plots_size = ImVec2(left_width - layout.legend_size.x - gap, display.y - layout.plots_corner.y);
@@ -77,6 +81,16 @@ FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool pro
   return layout;
 }
 
+}  // namespace
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin, bool projector, const lessons::Lesson& lesson) {
+  return laid_out(display, scale, origin, projector, !lesson.plots().empty());
+}
+
+FrameLayout FrameLayout::of(ImVec2 display, float scale, ImVec2 origin) {
+  return laid_out(display, scale, origin, false, true);
+}
+
 FrameLayout FrameLayout::with_legend_column(float width) const {
   FrameLayout layout = *this;
   const float right = legend_corner.x + legend_size.x;
@@ -88,7 +102,7 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, !lesson.plots().empty());
+  const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, lesson);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust);
 }
@@ -100,7 +114,7 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, !lesson.plots().empty());
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
   // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
   // lanes): long enough to read, short enough to stay in the picture.
   const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
@@ -130,7 +144,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, lesson);
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
@@ -378,11 +392,254 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
   }
 }
 
+// The column's plan for this frame, and whether its theory panel scrolls. The class's
+// predictions are planned for whole (as the first tab, if need be), at their tallest before the
+// reveal or after it (predictions_height), and nothing else the class does moves them: not R,
+// not the run's end, not the reveal. The friction pairs' sliders give way for them as far as
+// that needs; the theory table, revealed under them, scrolls. (The column was planned anew as
+// the run ended and at the reveal: after R on tipping_box the Parameters panel unfolded and
+// pushed the reveal button under the teacher's pointer.) The answers' height is the same all
+// through the run; the theory table's is not (its rows fill in as the run measures them), so the
+// plan leaves it out: a plan with it folded the sliders when the run ended.
+struct ColumnChoice {
+  ColumnPlan plan;
+  bool theory_scrolls = false;
+};
+
+ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display,
+                           const lessons::LessonReadings& readings) {
+  const float s = style.fonts->scale;
+  const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
+  const float table = theory_contents_height(readings.expectations, inside, readings.error, readings.caveat, style.hidden.theory());
+  ColumnChoice choice{plan_column(lesson, style, display, table)};
+  if (style.predictions_height) {
+    const float answers = style.predictions_height(inside);
+    choice.plan = plan_column(lesson, style, display, answers, true);
+    // The answers alone, before the reveal, have the room planned for them: no scroll bar to
+    // take width from them. A value changed since the plan (a slider; the hand's pull, which
+    // writes "(hand-pulled)") may make them longer: they scroll then, rather than fold the
+    // Parameters panel under the teacher's pointer (PredictionPanel keeps the planned height).
+    choice.theory_scrolls = !style.theory_hidden || !choice.plan.theory_whole ||
+                            (style.predictions_outgrew && style.predictions_outgrew());
+  }
+  return choice;
+}
+
+// With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
+std::vector<std::vector<const b2Body*>> bodies_by_lane(const Scene& scene, const std::vector<Camera>& cameras) {
+  std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    std::size_t nearest = 0;
+    for (std::size_t lane = 1; lane < cameras.size(); ++lane) {
+      const float y = body->GetWorldCenter().y;
+      if (std::abs(y - cameras[lane].centre.y) < std::abs(y - cameras[nearest].centre.y)) nearest = lane;
+    }
+    lane_bodies[nearest].push_back(body);
+  }
+  return lane_bodies;
+}
+
+// The free-body inset sits over the world's top right, where the framing leaves no body; a
+// body the mouse's hand drags there (the view holds still while it pulls) would go under it,
+// gauge and all: the inset then takes the top left instead.
+ImVec2 inset_corner_clear_of_the_hand(const Scene& scene, const b2Body* focus, const FrameLayout& layout, const Camera& camera,
+                                      float s) {
+  ImVec2 inset_corner = layout.inset_corner;
+  if (focus != nullptr && scene.grabbed() == focus) {
+    const b2AABB box = lessons::body_box(focus);
+    const ImVec2 high_right = camera.to_screen(box.upperBound);  // screen y grows downwards: its top
+    if (high_right.x > inset_corner.x && high_right.y < inset_corner.y + layout.inset_size.y) {
+      inset_corner.x = layout.world_corner.x + 6.0f * s;
+    }
+  }
+  return inset_corner;
+}
+
+// Each lane named (by its body, or the title the lesson gave it) in its corner; one view, no name.
+std::string lane_name(const lessons::WorldFraming& framing, std::size_t lanes, std::size_t lane) {
+  if (lanes < 2) return "";
+  return lane < framing.view.titles.size() ? framing.view.titles[lane] : lessons::class_words(framing.view.bodies[lane]);
+}
+
+// One lane of the world: its bodies, forces and the tools over them, its labels kept off the
+// inset and each other, its name, and what it placed noted for the layout test.
+void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style,
+               const std::vector<Camera>& cameras, std::size_t lane, const std::vector<const b2Body*>* bodies, ImVec4 inset,
+               float newtons_to_pixels) {
+  const Fonts& fonts = *style.fonts;
+  const Theme& colours = theme(style.theme);
+  const float s = fonts.scale;
+  const Camera& camera = cameras[lane];
+  const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
+  draw->PushClipRect(camera.origin, lane_end, true);
+  // Labels stay in what of the lane shows: the world's panel clips half its padding off
+  // each edge (10 px with projector text), and a label placed only inside the lane lost its
+  // first letter there (the speed readout of a body at the view's left edge).
+  const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
+  LabelPlacer labels(shown_min, sub(shown_max, shown_min));
+  labels.avoid(inset);
+  const std::string name = lane_name(framing, cameras.size(), lane);
+  const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, name.c_str());
+  const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
+  if (!name.empty()) {
+    labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
+                        name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
+  }
+  const auto tools = [&](WorldToolsPass pass) {
+    if (style.world_tools) style.world_tools(pass, draw, camera, lane, newtons_to_pixels, labels);
+  };
+  tools(WorldToolsPass::avoid);
+  draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels, bodies, [&] { tools(WorldToolsPass::fixed_labels); });
+  tools(WorldToolsPass::draw);
+  if (style.record != nullptr) {
+    style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
+                                   ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(), labels.bodies(),
+                                   labels.force_labels()});
+    style.record->inset = inset;
+  }
+  if (!name.empty()) {
+    draw_label(draw, fonts.small, name_at, colours.text, colours.panel, name.c_str());
+    // Parted from the lane above by a line.
+    if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
+  }
+  draw->PopClipRect();
+}
+
+// What the world's panel leaves a legend drawn apart from it: the camera and arrow scale the
+// legend's samples are drawn at.
+struct LegendScale {
+  Camera camera;
+  float newtons_to_pixels = 1.0f;
+};
+
+// The world, drawn into a window of its own so the panels' windows stay on top of it: its lanes,
+// the legend in a strip under it (unless `legend_apart`) and the free-body inset over it.
+std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style,
+                                       ImVec2 display, const FrameLayout& layout, bool legend_apart) {
+  const Fonts& fonts = *style.fonts;
+  const float s = fonts.scale;
+  std::optional<LegendScale> legend;
+  const ImVec2 panel(layout.world_size.x, layout.world_size.y + (legend_apart ? 0.0f : layout.legend_size.y));
+  if (begin_panel("world", "", layout.world_corner, panel)) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const std::vector<Camera> cameras =
+        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.projector);
+    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.projector);
+    const std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), cameras);
+    const b2Body* focus = main_body(lesson.scene());
+    const ImVec2 inset_corner = inset_corner_clear_of_the_hand(lesson.scene(), focus, layout, cameras.front(), s);
+    const ImVec4 inset(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x, inset_corner.y + layout.inset_size.y);
+    for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
+      draw_lane(draw, lesson, framing, style, cameras, lane, cameras.size() > 1 ? &lane_bodies[lane] : nullptr, inset,
+                newtons_to_pixels);
+    }
+    legend = LegendScale{cameras.front(), newtons_to_pixels};
+    if (!legend_apart) {
+      draw_legend(draw, lesson.scene(), legend->camera, layout.legend_corner, layout.legend_size, theme(style.theme), fonts,
+                  newtons_to_pixels);
+    }
+    std::string focus_name;
+    for (const auto& [name, body] : lesson.scene().bodies()) {
+      if (body == focus) focus_name = name;
+    }
+    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, theme(style.theme), fonts,
+                   style.record != nullptr ? &style.record->free_body : nullptr);
+  }
+  end_panel();
+  return legend;
+}
+
+// The theory's part of the column: the class's predictions first; before the reveal they stand
+// in for the theory.
+void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadings& readings) {
+  if (style.predictions) style.predictions();
+  if (!style.theory_hidden) {
+    theory_contents(readings.expectations, theme(style.theme), readings.error, readings.caveat, style.hidden.theory());
+  }
+}
+
+// The ledger and the model card as tabs of one panel from `at` to the column's foot (with the
+// theory as the first tab when the plan put it there).
+void books_tabs(lessons::Lesson& lesson, const FrameStyle& style, const lessons::LessonReadings& readings, const ColumnPlan& plan,
+                ImVec2 at, ImVec2 size) {
+  // Short names when the full ones would not fit side by side.
+  const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
+                              "Model card###model"};
+  // While the class predicts the tab is "Predict" before the reveal and after it (the answers
+  // come first in it either way): a name that changed at the reveal moved the tabs after it.
+  const char* const brief[] = {style.predictions ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
+                               "Model###model"};
+  float full_width = 0.0f;
+  for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * size.x;
+  const char* const* names = short_names ? brief : full;
+  // With the theory table the tabs are another bar, which opens on its first tab: the theory
+  // shows as it joins them (a column that just became short), and whatever tab was chosen
+  // comes back with the room. A picture, which nobody clicks, shows each bar's first tab.
+  if (begin_panel("books", "", at, size, plan.books_scroll) &&
+      ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
+    if (plan.theory_in_tabs && begin_tab(names[0])) {
+      predictions_and_theory(style, readings);
+      ImGui::EndTabItem();
+    }
+    if (begin_tab(names[1])) {
+      if (short_names) {
+        ImGui::TextDisabled("since t = 0");
+        note_text("since t = 0");
+      }
+      energy_contents(lesson.scene(), theme(style.theme));
+      ImGui::EndTabItem();
+    }
+    if (begin_tab(names[2])) {
+      model_contents(lesson);
+      ImGui::EndTabItem();
+    }
+    if (style.more_tabs) style.more_tabs();
+    ImGui::EndTabBar();
+  }
+  end_panel();
+}
+
+// The column: parameters, theory against simulation, energy, model, as the plan shares it.
+void column_panels(lessons::Lesson& lesson, const FrameStyle& style, const lessons::LessonReadings& readings,
+                   const FrameLayout& layout, const ColumnChoice& column) {
+  const ColumnPlan& plan = column.plan;
+  const Theme& colours = theme(style.theme);
+  const float gap = 4.0f * style.fonts->scale;
+  ImVec2 at = layout.column_corner;
+  const float width = layout.column_size.x;
+  if (style.parameters_panel) {
+    style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
+  } else {
+    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
+  }
+  at.y += plan.parameters + gap;
+  if (!plan.theory_in_tabs && !style.predictions) {
+    theory_panel(readings.expectations, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat,
+                 style.hidden.theory());
+    at.y += plan.theory + gap;
+  } else if (!plan.theory_in_tabs) {
+    if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
+                    ImVec2(width, plan.theory), column.theory_scrolls)) {
+      predictions_and_theory(style, readings);
+    }
+    end_panel();
+    at.y += plan.theory + gap;
+  }
+  if (plan.books_tabbed) {
+    books_tabs(lesson, style, readings, plan, at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y));
+  } else {
+    energy_panel(lesson.scene(), at, ImVec2(width, plan.energy), colours);
+    at.y += plan.energy + gap;
+    model_panel(lesson, at, ImVec2(width, plan.model));
+  }
+}
+
 }  // namespace
 
 void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style, ImVec2 display) {
   const Fonts& fonts = *style.fonts;
-  const Theme& colours = theme(style.theme);
   const float s = fonts.scale;
   // Every text the panels draw is noted for the layout test.
   std::optional<TextRecording> noting;
@@ -394,209 +651,27 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     own.expectations = lesson.expectations();
   }
   const lessons::LessonReadings& readings = style.readings ? *style.readings : own;
-  const std::vector<lessons::ExpectationResult>& rows = readings.expectations;
-  const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
-  const float table = theory_contents_height(rows, inside, readings.error, readings.caveat, style.hidden.theory());
-  ColumnPlan column_plan = plan_column(lesson, style, display, table);
-  // The class's predictions are planned for whole (as the first tab, if need be), at their
-  // tallest before the reveal or after it (predictions_height), and nothing else the class
-  // does moves them: not R, not the run's end, not the reveal. The friction pairs' sliders give
-  // way for them as far as that needs; the theory table, revealed under them, scrolls. (The
-  // column was planned anew as the run ended and at the reveal: after R on tipping_box the
-  // Parameters panel unfolded and pushed the reveal button under the teacher's pointer.) The
-  // answers' height is the same all through the run; the theory table's is not (its rows fill in
-  // as the run measures them), so the plan leaves it out: a plan with it folded the sliders
-  // when the run ended.
-  bool theory_scrolls = false;
-  if (style.predictions_height) {
-    const float answers = style.predictions_height(inside);
-    column_plan = plan_column(lesson, style, display, answers, true);
-    // The answers alone, before the reveal, have the room planned for them: no scroll bar to
-    // take width from them. A value changed since the plan (a slider; the hand's pull, which
-    // writes "(hand-pulled)") may make them longer: they scroll then, rather than fold the
-    // Parameters panel under the teacher's pointer (PredictionPanel keeps the planned height).
-    theory_scrolls = !style.theory_hidden || !column_plan.theory_whole ||
-                     (style.predictions_outgrew && style.predictions_outgrew());
-  }
+  const ColumnChoice column = choose_column(lesson, style, display, readings);
   // On a projector the legend is a column beside the plots' row, as wide as its names need; a
   // lesson with no plots has no such row, and keeps the legend in its strip under the world.
-  const bool legend_apart = style.projector && !lesson.plots().empty();
-  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, !lesson.plots().empty());
+  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, lesson);
+  const bool legend_apart = layout.legend_beside_plots;
   if (legend_apart) layout = layout.with_legend_column(legend_column_width(lesson.scene(), fonts));
 
   title_panel(lesson, layout.title_corner, layout.title_size, fonts, style.projector, FrameLayout::title_padding * s);
-
-  // The world, drawn into a window of its own so the panels' windows stay on top of it.
-  // The legend in a strip under the world, in the world's panel, or apart (above).
-  const ImVec2 world_panel(layout.world_size.x, layout.world_size.y + (legend_apart ? 0.0f : layout.legend_size.y));
-  std::optional<Camera> legend_camera;
-  float legend_newtons_to_pixels = 1.0f;
-  if (begin_panel("world", "", layout.world_corner, world_panel)) {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    const std::vector<Camera> cameras =
-        world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.projector);
-    const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.projector);
-    // With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
-    std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
-    for (const auto& [name, body] : lesson.scene().bodies()) {
-      if (body->GetType() != b2_dynamicBody) continue;
-      std::size_t nearest = 0;
-      for (std::size_t lane = 1; lane < cameras.size(); ++lane) {
-        const float y = body->GetWorldCenter().y;
-        if (std::abs(y - cameras[lane].centre.y) < std::abs(y - cameras[nearest].centre.y)) nearest = lane;
-      }
-      lane_bodies[nearest].push_back(body);
-    }
-    // The free-body inset sits over the world's top right, where the framing leaves no body; a
-    // body the mouse's hand drags there (the view holds still while it pulls) would go under it,
-    // gauge and all: the inset then takes the top left instead.
-    const b2Body* focus = main_body(lesson.scene());
-    ImVec2 inset_corner = layout.inset_corner;
-    if (focus != nullptr && lesson.scene().grabbed() == focus) {
-      const b2AABB box = lessons::body_box(focus);
-      const ImVec2 high_right = cameras.front().to_screen(box.upperBound);  // screen y grows downwards: its top
-      if (high_right.x > inset_corner.x && high_right.y < inset_corner.y + layout.inset_size.y) {
-        inset_corner.x = layout.world_corner.x + 6.0f * s;
-      }
-    }
-    for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
-      const Camera& camera = cameras[lane];
-      const ImVec2 lane_end(camera.origin.x + camera.size.x, camera.origin.y + camera.size.y);
-      draw->PushClipRect(camera.origin, lane_end, true);
-      // Labels stay in what of the lane shows: the world's panel clips half its padding off
-      // each edge (10 px with projector text), and a label placed only inside the lane lost its
-      // first letter there (the speed readout of a body at the view's left edge).
-      const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
-      LabelPlacer labels(shown_min, sub(shown_max, shown_min));
-      const ImVec4 inset(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x,
-                         inset_corner.y + layout.inset_size.y);
-      labels.avoid(inset);
-      // Each lane named (by its body, or the title the lesson gave it) in its corner.
-      const std::string lane_name = cameras.size() < 2                  ? ""
-                                    : lane < framing.view.titles.size() ? framing.view.titles[lane]
-                                                                        : lessons::class_words(framing.view.bodies[lane]);
-      const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lane_name.c_str());
-      const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
-      if (!lane_name.empty()) {
-        labels.avoid(ImVec4(name_at.x - 0.5f * name_size.x - 3.0f, name_at.y - 0.5f * name_size.y - 1.0f,
-                            name_at.x + 0.5f * name_size.x + 3.0f, name_at.y + 0.5f * name_size.y + 1.0f));
-      }
-      const auto tools = [&](WorldToolsPass pass) {
-        if (style.world_tools) style.world_tools(pass, draw, camera, lane, newtons_to_pixels, labels);
-      };
-      tools(WorldToolsPass::avoid);
-      draw_world(draw, lesson, camera, colours, fonts, newtons_to_pixels, labels,
-                 cameras.size() > 1 ? &lane_bodies[lane] : nullptr, [&] { tools(WorldToolsPass::fixed_labels); });
-      tools(WorldToolsPass::draw);
-      if (style.record != nullptr) {
-        style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
-                                       ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(),
-                                       labels.bodies(), labels.force_labels()});
-        style.record->inset = inset;
-      }
-      if (!lane_name.empty()) {
-        draw_label(draw, fonts.small, name_at, colours.text, colours.panel, lane_name.c_str());
-        // Parted from the lane above by a line.
-        if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
-      }
-      draw->PopClipRect();
-    }
-    legend_camera = cameras.front();
-    legend_newtons_to_pixels = newtons_to_pixels;
-    if (!legend_apart) {
-      draw_legend(draw, lesson.scene(), *legend_camera, layout.legend_corner, layout.legend_size, colours, fonts,
-                  newtons_to_pixels);
-    }
-    std::string focus_name;
-    for (const auto& [name, body] : lesson.scene().bodies()) {
-      if (body == focus) focus_name = name;
-    }
-    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, colours, fonts,
-                   style.record != nullptr ? &style.record->free_body : nullptr);
-  }
-  end_panel();
-  if (legend_apart && legend_camera) {
+  // The legend in a strip under the world, in the world's panel, or apart.
+  const std::optional<LegendScale> legend = world_panel(lesson, framing, style, display, layout, legend_apart);
+  if (legend_apart && legend) {
     if (begin_panel("legend", "", layout.legend_corner, layout.legend_size)) {
-      draw_legend(ImGui::GetWindowDrawList(), lesson.scene(), *legend_camera, layout.legend_corner, layout.legend_size,
-                  colours, fonts, legend_newtons_to_pixels);
+      draw_legend(ImGui::GetWindowDrawList(), lesson.scene(), legend->camera, layout.legend_corner, layout.legend_size,
+                  theme(style.theme), fonts, legend->newtons_to_pixels);
     }
     end_panel();
   }
-
   const double now = lesson.scene().time();
   draw_plots(lesson, style, layout,
-             style.theory_kept_back() ? time_axis_before_reveal(now) : std::max(readings.duration, now), colours);
-
-  // The column: parameters, theory against simulation, energy, model.
-  const ColumnPlan& plan = column_plan;
-  const float gap = 4.0f * s;
-  ImVec2 at = layout.column_corner;
-  const float width = layout.column_size.x;
-  if (style.parameters_panel) {
-    style.parameters_panel(at, ImVec2(width, plan.parameters), plan.parameters_step);
-  } else {
-    parameters_panel(lesson, at, ImVec2(width, plan.parameters), plan.parameters_step, style.hidden);
-  }
-  at.y += plan.parameters + gap;
-  // The class's predictions come first; before the reveal they stand in for the theory.
-  const auto theory_part = [&] {
-    if (style.predictions) style.predictions();
-    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
-  };
-  if (!plan.theory_in_tabs && !style.predictions) {
-    theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());
-    at.y += plan.theory + gap;
-  } else if (!plan.theory_in_tabs) {
-    if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
-                    ImVec2(width, plan.theory), theory_scrolls)) {
-      theory_part();
-    }
-    end_panel();
-    at.y += plan.theory + gap;
-  }
-  if (plan.books_tabbed) {
-    // Short names when the full ones would not fit side by side.
-    const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
-                                "Model card###model"};
-    // While the class predicts the tab is "Predict" before the reveal and after it (the answers
-    // come first in it either way): a name that changed at the reveal moved the tabs after it.
-    const char* const brief[] = {style.predictions ? "Predict###theory tab" : "Theory###theory tab", "Energy###energy",
-                                 "Model###model"};
-    float full_width = 0.0f;
-    for (const char* name : full) full_width += ImGui::CalcTextSize(name, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
-    const bool short_names = plan.theory_in_tabs || style.more_tabs || full_width > 0.9f * width;
-    const char* const* names = short_names ? brief : full;
-    // With the theory table the tabs are another bar, which opens on its first tab: the theory
-    // shows as it joins them (a column that just became short), and whatever tab was chosen
-    // comes back with the room. A picture, which nobody clicks, shows each bar's first tab.
-    if (begin_panel("books", "", at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y), plan.books_scroll) &&
-        ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
-      if (plan.theory_in_tabs && begin_tab(names[0])) {
-        theory_part();
-        ImGui::EndTabItem();
-      }
-      if (begin_tab(names[1])) {
-        if (short_names) {
-          ImGui::TextDisabled("since t = 0");
-          note_text("since t = 0");
-        }
-        energy_contents(lesson.scene(), colours);
-        ImGui::EndTabItem();
-      }
-      if (begin_tab(names[2])) {
-        model_contents(lesson);
-        ImGui::EndTabItem();
-      }
-      if (style.more_tabs) style.more_tabs();
-      ImGui::EndTabBar();
-    }
-    end_panel();
-  } else {
-    energy_panel(lesson.scene(), at, ImVec2(width, plan.energy), colours);
-    at.y += plan.energy + gap;
-    model_panel(lesson, at, ImVec2(width, plan.model));
-  }
-
+             style.theory_kept_back() ? time_axis_before_reveal(now) : std::max(readings.duration, now), theme(style.theme));
+  column_panels(lesson, style, readings, layout, column);
   ImGui::PopFont();
 }
 

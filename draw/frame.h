@@ -35,11 +35,17 @@ struct FrameLayout {
   // as projector mode's was before (55 % of what is under a two-line title, less the legend's
   // strip; a screen's world has 57 %), is a third of the screen high or more and the key plot's levels read from
   // the back of a room.
-  // `plots`: the lesson has plots of its own. A projector's frame for a lesson with none gives
-  // their row to the world, and the legend goes back to its strip under the world (a column
-  // beside an empty row left a third of the screen blank).
-  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f), bool projector = false,
-                        bool plots = true);
+  // `lesson`: whether it has plots of its own, which the layout asks of it here and nowhere
+  // else. A projector's frame for a lesson with none gives their row to the world, and the
+  // legend goes back to its strip under the world (a column beside an empty row left a third of
+  // the screen blank).
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin, bool projector, const lessons::Lesson& lesson);
+  // A screen's frame (not a projector's), which is the same for every lesson: the tests'
+  // places, and the column's width.
+  static FrameLayout of(ImVec2 size, float scale, ImVec2 origin = ImVec2(0.0f, 0.0f));
+  // The legend is a column beside the plots' row (projector mode, a lesson with plots), not a
+  // strip under the world.
+  bool legend_beside_plots = false;
   // The legend's column in projector mode, in points at text scale 1, until a lesson's names
   // say how wide it is (legend_column_width() in legend.h): "friction" after its arrow in 14 pt
   // text, and its margins.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -20,7 +21,8 @@ class ScriptFile {
  public:
   explicit ScriptFile(const std::string& text) {
     static int count = 0;
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(test.begin(), test.end(), '/', '_');  // a parameterized test's name holds its parameter after a '/'
     path_ = (std::filesystem::temp_directory_path() /
              ("frictionlab_" + test + "_" + std::to_string(::getpid()) + "_" + std::to_string(++count) + ".lua"))
                 .string();

@@ -40,9 +40,12 @@ foreach(file physics/test_materials physics/test_friction_laws physics/test_clos
   frictionlab_web_test(${file} frictionlab_physics)
 endforeach()
 foreach(file lessons/test_lesson lessons/test_sandbox scenarios/test_builtin_lessons lessons/test_script_world
-             bench/test_lesson_problem lessons/test_script_predict lessons/test_script_lesson)
+             bench/test_lesson_problem lessons/test_script_predict lessons/test_script_lesson lessons/test_handles
+             lessons/test_script_theory)
   frictionlab_web_test(${file} frictionlab_lessons)
 endforeach()
+# The guide's table of theory.* functions against the runtime's, read from the source tree.
+target_compile_definitions(web_test_script_theory PRIVATE FRICTIONLAB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_link_libraries(web_test_stability PRIVATE frictionlab_bench)
 target_link_libraries(web_test_run_check PRIVATE frictionlab_bench)
 target_link_libraries(web_test_problems PRIVATE frictionlab_bench)

@@ -15,6 +15,7 @@
 #include "draw/overlays.h"
 #include "lessons/runtime/history_csv.h"
 #include "lessons/runtime/lesson.h"
+#include "physics/validation.h"
 #include "tests/classroom_hands.h"
 
 namespace frictionlab::classroom {
@@ -23,7 +24,7 @@ namespace {
 // Whether `text` shows `value` as a number in any of the ways a panel writes one ("0.47",
 // "0.470"), not as part of a longer number ("10.47", "0.475").
 bool mentions(const std::string& text, double value) {
-  std::set<std::string> forms{classroom_state::exact_text(value)};
+  std::set<std::string> forms{validation::exact_text(value)};
   for (const char* format : {"%.2f", "%.3f", "%g", "%.3g"}) {
     char shown[32];
     std::snprintf(shown, sizeof shown, format, value);
@@ -122,8 +123,8 @@ TEST_P(MysteryHidden, NoHiddenValueIsShownWrittenOrInTheTitleUntilTheReveal) {
   EXPECT_TRUE(mentions(revealed, truth.mu_k)) << revealed;
   EXPECT_TRUE(window.control("mu_s slider").has_value()) << "the sliders come back";
   const std::string after = read_file(lessons::settings_path_for(window.export_history()));
-  EXPECT_NE(after.find("\nmu_s = " + classroom_state::exact_text(truth.mu_s) + "\n"), std::string::npos) << after;
-  EXPECT_NE(after.find("\nmu_k = " + classroom_state::exact_text(truth.mu_k) + "\n"), std::string::npos) << after;
+  EXPECT_NE(after.find("\nmu_s = " + validation::exact_text(truth.mu_s) + "\n"), std::string::npos) << after;
+  EXPECT_NE(after.find("\nmu_k = " + validation::exact_text(truth.mu_k) + "\n"), std::string::npos) << after;
   EXPECT_NE(window.window_title().find("revealed"), std::string::npos) << window.window_title();
 }
 

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "classroom_state/mystery.h"
-#include "classroom_state/playback.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
+#include "physics/validation.h"
 
 namespace frictionlab::classroom_state {
 namespace {
@@ -45,8 +45,8 @@ TEST(MysteryDraw, TheSameSeedGivesTheSameValuesAndOthersOtherValues) {
   EXPECT_EQ(first.mu_k, again.mu_k);
   // Fixed here so that another machine or standard library drawing anything else fails: the
   // values follow from the standard's engine and this file's arithmetic alone.
-  EXPECT_EQ(exact_text(first.mu_s), "0.58");
-  EXPECT_EQ(exact_text(first.mu_k), "0.49");
+  EXPECT_EQ(validation::exact_text(first.mu_s), "0.58");
+  EXPECT_EQ(validation::exact_text(first.mu_k), "0.49");
   // Neighbouring seeds are not neighbouring values: of 100 seeds, nearly all draw a pair of their own.
   std::set<std::pair<double, double>> drawn;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) drawn.insert({mystery_values(seed).mu_s, mystery_values(seed).mu_k});

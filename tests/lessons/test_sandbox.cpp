@@ -1,6 +1,7 @@
 // The sandbox a lesson script runs in: nothing outside the script reachable, pairs() in the same
 // order on every run, binary chunks and load errors refused with the file's name, and an endless
-// loop or a runaway table ended with an error, not a hang (lessons/runtime/sandbox.h).
+// loop or a runaway table ended with an error, not a hang (lessons/runtime/sandbox.h); Lua's
+// messages about arithmetic on a string said in words.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -160,6 +161,25 @@ TEST(LessonSandbox, TheTimeLimitCountsTheScriptsProcessorTimeNotTheWallClock) {
   sandbox.load("local n = 0\nwhile true do n = n + 1 end\n", "spinning.lua");
   const std::string message = error_of([&] { sandbox.call(0, 0); });
   EXPECT_NE(message.find("spinning.lua:2: the script ran for more than 1 seconds"), std::string::npos) << message;
+}
+
+// Lua names arithmetic on a string by its metamethod ("attempt to mul a 'number' with a
+// 'string'"). The message says the operation in words, and says what a string may do only where
+// a string is at fault: "2" + nil is the nil's, and a number with nil keeps Lua's own message.
+TEST(LessonSandbox, ArithmeticOnAStringIsSaidInWordsAndBlamesTheRightSide) {
+  const auto message = [](const std::string& line) {
+    const std::string text = error_building(with_heading(line + "\n"));
+    return text.substr(text.find(": ", text.find(".lua:")) + 2);
+  };
+  EXPECT_EQ(message("local half = \"0.4 m\" / 2"),
+            "cannot divide a string and a number: a string (text in quotes) takes part in arithmetic only if it reads as "
+            "a number, as \"2.5\" does");
+  EXPECT_EQ(message("local wrong = -\"fast\""),
+            "cannot negate a string: a string (text in quotes) takes part in arithmetic only if it reads as a number, as "
+            "\"2.5\" does");
+  EXPECT_EQ(message("local missing = \"2\" + nil"), "cannot add a string and a nil");
+  EXPECT_EQ(message("local flag = true * \"1\""), "cannot multiply a boolean and a string");
+  EXPECT_EQ(message("local missing = 3 + nil"), "attempt to perform arithmetic on a nil value");
 }
 
 }  // namespace

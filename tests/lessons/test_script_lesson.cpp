@@ -1,20 +1,27 @@
-// What the runtime works out itself each step, without a call into the script: a driven body's
-// path given as numbers (a motion), a position read in another body's axes (relative_to), a
-// probe that reads a list of samples a model worked out once, and a pair's coefficient given
-// as a schedule. Each is checked against the
-// formula it stands for and against the script function it replaces.
+// The lesson part of the script API (lessons/runtime/script_lesson.cpp). What the runtime works
+// out itself each step, without a call into the script: a driven body's path given as numbers
+// (a motion), a position read in another body's axes (relative_to), a probe that reads a list
+// of samples a model worked out once, and a pair's coefficient given as a schedule, each checked
+// against the formula it stands for and against the script function it replaces. And what a
+// script declares: a pair's sliders (or none), its coefficients as functions of time, the
+// presets' pairs; the record read back (history, value_at), every_step, and expectations in
+// numbers and words.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 #include <numbers>
 
+#include "lessons/runtime/model_card.h"
+#include "physics/closed_forms.h"
+#include "physics/scenarios.h"
 #include "tests/assertions.h"
 #include "tests/lesson_scripts.h"
 
 namespace frictionlab::lessons {
 namespace {
 
+constexpr double g = standard_gravity;
 constexpr double degrees = std::numbers::pi / 180.0;
 
 double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
@@ -257,6 +264,275 @@ TEST(ScriptFreeReadings, AScheduleThatIsNotOneSaysWhereAndWhy) {
             std::string::npos);
   EXPECT_NE(refused("{}").find("1 to 10000 of them"), std::string::npos);
   EXPECT_NE(refused("{ { 0, 0.4 }, { 1e6, 0.1 } }").find("past a day"), std::string::npos);
+}
+
+TEST(LessonFunctions, APairsSlidersListMakesOnlyThoseAndTheOthersKeepTheScriptsValues) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, sliders = { "mu_s", "mu_k" } }
+local floor = ground { "floor", material = "ice" }
+box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_s"));
+  EXPECT_NO_THROW(lesson.parameter("ice.mu_k"));
+  EXPECT_THROW(lesson.parameter("ice.c"), InvalidInput);
+  EXPECT_THROW(lesson.parameter("ice.b"), InvalidInput);
+  lesson.set("ice.mu_k", "0.07");  // live: the pair keeps its c
+  const FrictionPair& pair = lesson.scene().pairs().pair("wood", "ice");
+  EXPECT_EQ(pair.mu_k, 0.07);
+  EXPECT_EQ(pair.c, 2.0);
+  const ScriptFile wrong(with_heading("pair { \"wood\", \"ice\", mu_s = 0.1, mu_k = 0.05, sliders = { \"mu\" } }\n"));
+  EXPECT_NE(error_of([&] { Lesson broken(wrong.path()); }).find("sliders lists coefficients from mu_s, mu_k, c, b"),
+            std::string::npos);
+}
+
+// A pair's sliders are made from the pair's table (physics/materials.h): each has the table's
+// name, unit, range and meaning, and a value set live reaches that coefficient of the pair alone.
+TEST(LessonFunctions, APairsSlidersAreTheTablesCoefficientsAndEachSetsItsOwnValue) {
+  ScriptFile script(with_heading(R"(
+pair { "wood", "ice", name = "ice", mu_s = 0.1, mu_k = 0.05, c = 2, b = 3 }
+local floor = ground { "floor", material = "ice" }
+box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 }
+)"));
+  Lesson lesson(script.path());
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    const Parameter& slider = lesson.parameter(std::string("ice.") + coefficient.name);
+    EXPECT_EQ(slider.coefficient, coefficient.name);
+    EXPECT_EQ(slider.unit, coefficient.unit);
+    EXPECT_EQ(slider.min, 0.0);
+    EXPECT_EQ(slider.max, coefficient.lesson_largest);
+    EXPECT_EQ(slider.text.rfind(coefficient.meaning, 0), 0u) << slider.text;
+    const FrictionPair before = lesson.scene().pairs().pair("wood", "ice");
+    lesson.set(slider.name, "0.0625");
+    const FrictionPair after = lesson.scene().pairs().pair("wood", "ice");
+    for (const PairCoefficient& other : pair_coefficients) {
+      EXPECT_EQ(after.*other.value, &other == &coefficient ? 0.0625 : before.*other.value)
+          << "setting " << coefficient.name << ", " << other.name;
+    }
+  }
+}
+
+// One parameter handed to several pairs with sliders = false: the pairs make no sliders of
+// their own, keep the values handed to them (a block on each floor slides v0²/(2·mu_k·g), and
+// the drag lane less far), the model card still sees every term, and moving the shared slider
+// rebuilds both lanes with the new value.
+TEST(LessonFunctions, PairsWithoutSlidersTakeTheScriptsValues) {
+  ScriptFile script(with_heading(R"(
+local mu_k = parameter { "mu_k", 0.3, min = 0.05, max = 1 }
+material { "block", density = 500 }
+material { "lane_a", density = 500 }
+material { "lane_b", density = 500 }
+pair { "block", "lane_a", mu_s = 0.5, mu_k = mu_k, sliders = false }
+pair { "block", "lane_b", mu_s = 0.5, mu_k = mu_k, c = 2, sliders = false }
+pair { "block", "block", mu_s = 0.5, mu_k = mu_k, sliders = false }
+local a = ground { "a", material = "lane_a", y = 0.5, thickness = 0.2 }
+local b = ground { "b", material = "lane_b", y = 0, thickness = 0.2 }
+local on_a = box { "on_a", material = "block", width = 0.2, height = 0.1, on = a, at = 0, mass = 1, velocity = { 2, 0 } }
+local on_b = box { "on_b", material = "block", width = 0.2, height = 0.1, on = b, at = 0, mass = 1, velocity = { 2, 0 } }
+probe { "a_speed", unit = "m/s", read = { on_a, "vx" } }
+probe { "b_speed", unit = "m/s", read = { on_b, "vx" } }
+probe { "a_friction", unit = "N", read = { contact(on_a, a), "fx" } }
+probe { "b_friction", unit = "N", read = { contact(on_b, b), "fx" } }
+plot { "friction against speed", kind = "xy", x = { "a_speed", "b_speed" }, y = { "a_friction", "b_friction" } }
+)"));
+  Lesson lesson(script.path());
+  std::vector<std::string> names;
+  for (const Parameter& parameter : lesson.parameters()) names.push_back(parameter.name);
+  EXPECT_EQ(names, std::vector<std::string>{"mu_k"});
+  const ModelCard card = model_card(lesson);
+  EXPECT_TRUE(card.dry);
+  EXPECT_TRUE(card.viscous);
+  EXPECT_FALSE(card.quadratic);
+  ASSERT_EQ(lesson.plots().size(), 1u);
+  EXPECT_EQ(lesson.plots()[0].x_of(0), "a_speed");
+  EXPECT_EQ(lesson.plots()[0].x_of(1), "b_speed");
+
+  const auto distances = [&lesson] {
+    const b2Vec2 start_a = lesson.scene().body("on_a")->GetPosition(), start_b = lesson.scene().body("on_b")->GetPosition();
+    run_for(lesson, 2.0);
+    return std::pair{lesson.scene().body("on_a")->GetPosition().x - start_a.x,
+                     lesson.scene().body("on_b")->GetPosition().x - start_b.x};
+  };
+  const auto [slid_a, slid_b] = distances();
+  EXPECT_RELATIVE(slid_a, theory::slide_to_rest(2.0, 1.0, {0.5, 0.3, 0, 0}, g).distance, 0.01);
+  EXPECT_RELATIVE(slid_b, theory::slide_to_rest(2.0, 1.0, {0.5, 0.3, 2, 0}, g).distance, 0.01);
+  lesson.set("mu_k", "0.6");
+  const auto [again_a, again_b] = distances();
+  EXPECT_RELATIVE(again_a, theory::slide_to_rest(2.0, 1.0, {0.5, 0.6, 0, 0}, g).distance, 0.01);
+  EXPECT_RELATIVE(again_b, theory::slide_to_rest(2.0, 1.0, {0.5, 0.6, 2, 0}, g).distance, 0.01);
+}
+
+TEST(LessonFunctions, APairsCoefficientsMayBeFunctionsOfTime) {
+  // A 1 kg block pulled by 3 N on a table whose mu_s and mu_k drop from 0.5/0.45 to 0.15/0.1
+  // at t = 1 s: held until then (long enough for the scene to put it to rest), it must wake
+  // and slide at (3 − 0.1·g) m/s² from the first step that starts at 1 s, with no slider for
+  // the coefficients that are functions (c and b keep theirs).
+  ScriptFile script(with_heading(R"(
+pair { "wood", "wood", mu_s = function(t) if t < 1 then return 0.5 end return 0.15 end,
+                       mu_k = function(t) if t < 1 then return 0.45 end return 0.1 end }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = floor, at = 0, mass = 1 }
+force { "pull", on = block, force = { 3, 0 } }
+probe { "a", unit = "m/s²", read = { block, "acceleration", along = { 1, 0 } } }
+probe { "v", unit = "m/s", read = { block, "vx" } }
+)"));
+  Lesson lesson(script.path());
+  EXPECT_THROW(lesson.parameter("mu_s"), std::exception);
+  EXPECT_THROW(lesson.parameter("mu_k"), std::exception);
+  EXPECT_NO_THROW(lesson.parameter("c"));
+  run_for(lesson, 1.0);
+  EXPECT_EQ(probe_now(lesson, "v"), 0.0);
+  run_for(lesson, 0.5);
+  EXPECT_NEAR(probe_now(lesson, "a"), 3.0 - 0.1 * g, 1e-3);
+  // The first step from t = 1 s on slides: 0.5 s of it, less nothing.
+  EXPECT_NEAR(probe_now(lesson, "v"), 0.5 * (3.0 - 0.1 * g), 2e-3);
+
+  // A block held on a 20° slope by gravity alone is put to rest by the scene; when the slope
+  // is oiled at t = 1 s it must wake and slide at g·(sin θ − mu_k·cos θ).
+  ScriptFile slope(with_heading(R"(
+pair { "wood", "wood", mu_s = function(t) if t < 1 then return 0.5 end return 0.1 end,
+                       mu_k = function(t) if t < 1 then return 0.45 end return 0.05 end }
+local ramp = incline { "ramp", material = "wood", angle = 20, length = 4 }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = ramp, at = 3, mass = 1 }
+probe { "down", unit = "m/s²", read = { block, "acceleration", along = { -math.cos(math.rad(20)), -math.sin(math.rad(20)) } } }
+)"));
+  Lesson oiled_slope(slope.path());
+  run_for(oiled_slope, 1.5);
+  const double angle = 20.0 * std::numbers::pi / 180.0;
+  EXPECT_NEAR(probe_now(oiled_slope, "down"), g * (std::sin(angle) - 0.05 * std::cos(angle)), 2e-3);
+
+  // Out of range at some time: the message is placed at the function and says when.
+  ScriptFile bad(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5,
+  mu_k = function(t) return 0.3 + t end }
+local floor = ground { material = "wood" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.1, on = floor, at = 0, mass = 1 }
+)"));
+  const std::string message = error_of([&] {
+    Lesson broken(bad.path());
+    run_for(broken, 2.0);
+  });
+  EXPECT_NE(message.find(":4: pair wood/wood: mu_k returned 2.00"), std::string::npos) << message;
+  EXPECT_NE(message.find("it must be in [0, 2]"), std::string::npos) << message;
+
+  // A function of time has no slider to list.
+  ScriptFile listed(with_heading(R"(
+pair { "wood", "wood", mu_s = 0.5, mu_k = function(t) return 0.3 end, sliders = { "mu_k" } }
+)"));
+  const std::string refused = error_of([&] { Lesson broken(listed.path()); });
+  EXPECT_NE(refused.find(":3: pair wood/wood: mu_k changes with time (a function or a schedule), which no slider can set"), std::string::npos)
+      << refused;
+}
+
+TEST(LessonFunctions, HistoryAndValueAtReadTheRecord) {
+  ScriptFile script(with_heading(R"(
+probe { "twice_t", unit = "s", function() return 2 * time() end }
+expect { "steps recorded", predicted = 48, tolerance = 0, measured = function() return #history("time") end }
+expect { "value at 0.1 s", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.1) end }
+expect { "nearest step", predicted = 0.2, tolerance = 1e-9, measured = function() return value_at("twice_t", 0.101) end }
+expect { "not yet", predicted = "nothing", measured = function() return value_at("twice_t", 5) == nil and "nothing" or "something" end }
+-- Read while the run goes on, the record's columns have the same length and hold every step
+-- before this one (this step's values join them when every_step is done).
+local consistent = true
+every_step(function(t)
+  local times, twice = history("time"), history("twice_t")
+  local before = t - step_length()
+  consistent = consistent and #times == #twice and times[#times + 1] == nil and value_at("time", t) == nil
+  if #times > 0 then
+    consistent = consistent and math.abs(times[#times] - before) < 1e-12 and math.abs(twice[#twice] - 2 * before) < 1e-12
+                 and value_at("time", before) == times[#times]
+  end
+end)
+expect { "record while running", predicted = true, measured = function() return consistent end }
+expect { "ipairs", predicted = 48, tolerance = 0, measured = function()
+  local count = 0
+  for _ in ipairs(history("twice_t")) do count = count + 1 end
+  return count
+end }
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{240.0});
+  run_for(lesson, 0.2);
+  for (const ExpectationResult& row : lesson.expectations()) EXPECT_TRUE(row.passes) << row.name;
+}
+
+TEST(LessonFunctions, EveryStepRunsOncePerFrameWithTheTime) {
+  ScriptFile script(with_heading(R"(
+local calls, last = 0, -1
+every_step(function(t) calls = calls + 1; last = t end)
+probe { "calls", function() return calls end }
+expect { "calls", predicted = 0, measured = function() return calls end, tolerance = 0 }
+expect { "time matches", predicted = true, measured = function() return math.abs(last - time()) < 1e-12 end }
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{120.0});
+  run_for(lesson, 0.5);
+  const std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_EQ(rows[0].measured, 60.0);
+  EXPECT_FALSE(rows[0].passes);  // predicted 0 on purpose: a failing row reads as failing
+  EXPECT_TRUE(rows[1].passes);
+  EXPECT_EQ(rows[1].measured_text, "true");
+  // Probes sample after the step, before every_step: the count they saw lags by one.
+  EXPECT_EQ(lesson.scene().probe("calls").history.back(), 59.0);
+  EXPECT_EQ(lesson.scene().probe("calls").history.size(), 60u);
+}
+
+TEST(LessonFunctions, ExpectationsTellNumbersWordsAndNotYetMeasured) {
+  ScriptFile script(with_heading(R"(
+local seen
+every_step(function(t) if t > 0.2 then seen = "slides" end end)
+expect { "outcome", predicted = "slides", measured = function() return seen end }
+expect { "number", unit = "N", predicted = function() return 10 end, measured = 10.4, tolerance = function() return 0.5 end }
+expect { "tight", unit = "N", predicted = 10, measured = 10.4, tolerance = 0.3 }
+)"));
+  Lesson lesson(script.path());
+  std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_FALSE(rows[0].measured_yet);
+  EXPECT_EQ(rows[0].measured_text, "not measured");
+  EXPECT_FALSE(rows[0].passes);
+  run_for(lesson, 0.5);
+  rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].passes);
+  EXPECT_FALSE(rows[0].numeric);
+  EXPECT_TRUE(rows[1].passes);
+  EXPECT_NEAR(rows[1].error(), 0.4, 1e-12);
+  EXPECT_EQ(rows[1].unit, "N");
+  EXPECT_FALSE(rows[2].passes);
+}
+
+TEST(LessonFunctions, AWordFromMeasuredInANumberRowIsNotMeasuredYetAndSaysWhy) {
+  ScriptFile script(with_heading(R"(
+expect { "distance", unit = "m", predicted = 0.5, tolerance = 0.01,
+  measured = function() if time() < 0.2 then return "still sliding" end return 0.5 end }
+)"));
+  Lesson lesson(script.path());
+  std::vector<ExpectationResult> rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].numeric);
+  EXPECT_FALSE(rows[0].measured_yet);
+  EXPECT_EQ(rows[0].measured_text, "still sliding");
+  EXPECT_FALSE(rows[0].passes);
+  run_for(lesson, 0.5);
+  rows = lesson.expectations();
+  EXPECT_TRUE(rows[0].measured_yet);
+  EXPECT_TRUE(rows[0].passes);
+}
+
+// A lesson that takes a pair's values from the presets still has its sliders: every pair that
+// can rub gets its coefficients as parameters, and setting them changes the running scene.
+TEST(LessonFunctions, PresetPairsGetTheirCoefficientsAsParameters) {
+  ScriptFile script(with_heading(R"(ground { material = "ice" }
+box { "crate", material = "wood", width = 0.5, height = 0.5, x = 0, y = 0.25 }
+)"));
+  Lesson lesson(script.path(), {{"mu_k", "0.03"}});
+  // wood on ice, from the presets, is the lesson's only pair: its coefficients get plain names.
+  EXPECT_EQ(lesson.parameter("mu_s").value, 0.08);
+  EXPECT_EQ(lesson.parameter("mu_k").value, 0.03);  // --set applies
+  EXPECT_EQ(lesson.parameter("mu_s").material_a + "/" + lesson.parameter("mu_s").material_b, "ice/wood");  // in the order the scene met them
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_k, 0.03);
+  EXPECT_FALSE(lesson.parameter("mu_s").structural);
+  lesson.set("mu_s", "0.1");
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_s, 0.1);
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_k, 0.03);
+  lesson.reset();  // the values set stay
+  EXPECT_EQ(lesson.scene().pairs().pair("wood", "ice").mu_s, 0.1);
 }
 
 }  // namespace
