@@ -408,9 +408,20 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   // as the run measures them), so the plan leaves it out: a plan with it folded the sliders
   // when the run ended.
   bool theory_scrolls = false;
+  bool class_lines_in_table = true;
   if (style.predictions_height) {
-    const float answers = style.predictions_height(inside);
-    column_plan = plan_column(lesson, style, display, answers, true);
+    const FrameStyle::AnswersHeight answers = style.predictions_height(inside);
+    // The theory table revealed under the class's lines at the run's end, whole, where the
+    // friction pairs can give way for it (issue 31: push's last row was a scroll away); it is
+    // planned at its tallest, which no value the run measures changes. Where even that leaves
+    // too little room (or would fold the sliders away), the answers alone are planned for and
+    // the revealed table scrolls.
+    const float revealed_table = theory_contents_tallest_height(rows, inside);
+    column_plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
+    if (!column_plan.theory_whole || column_plan.parameters_step > style.parameters_step_for_the_theory) {
+      class_lines_in_table = false;
+      column_plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed_above), true);
+    }
     // The answers alone, before the reveal, have the room planned for them: no scroll bar to
     // take width from them. A value changed since the plan (a slider; the hand's pull, which
     // writes "(hand-pulled)") may make them longer: they scroll then, rather than fold the
@@ -540,8 +551,11 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   at.y += plan.parameters + gap;
   // The class's predictions come first; before the reveal they stand in for the theory.
   const auto theory_part = [&] {
-    if (style.predictions) style.predictions();
-    if (!style.theory_hidden) theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory());
+    if (style.predictions) style.predictions(class_lines_in_table);
+    if (!style.theory_hidden) {
+      theory_contents(rows, colours, readings.error, readings.caveat, style.hidden.theory(),
+                      class_lines_in_table ? style.theory_notes : RowNotes{});
+    }
   };
   if (!plan.theory_in_tabs && !style.predictions) {
     theory_panel(rows, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat, style.hidden.theory());

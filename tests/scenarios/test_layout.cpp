@@ -93,7 +93,8 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
       check_at(0.5 * duration, "mid-run");
       // The run's end says so in the transport bar.
       check_at(duration, "at the end");
-      // The theory revealed beside the class's answers (the class's table, then the theory table).
+      // The theory revealed beside the class's answers (each class's line under its row of the theory
+      // table, or the class's lines above the table where it cannot be whole).
       for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
         window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
       }
