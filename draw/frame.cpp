@@ -411,14 +411,17 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   bool class_lines_in_table = true;
   if (style.predictions_height) {
     const FrameStyle::AnswersHeight answers = style.predictions_height(inside);
-    // The theory table revealed under the class's lines at the run's end, whole, where the
-    // friction pairs can give way for it (issue 31: push's last row was a scroll away); it is
-    // planned at its tallest, which no value the run measures changes. Where even that leaves
-    // too little room (or would fold the sliders away), the answers alone are planned for and
-    // the revealed table scrolls.
-    const float revealed_table = theory_contents_tallest_height(rows, inside);
-    column_plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
-    if (!column_plan.theory_whole || column_plan.parameters_step > style.parameters_step_for_the_theory) {
+    // In projector mode, the theory table revealed under the class's lines at the run's end,
+    // whole, where the friction pairs can give way for it (issue 31: push's last row was a
+    // scroll away); it is planned at its tallest, which no value the run measures changes. Where
+    // even that leaves too little room (or would fold the sliders away), the answers alone are
+    // planned for and the revealed table scrolls. A screen's column keeps the plan it had (its
+    // theory table has a panel of its own beside the tabs, a mystery's tab under it).
+    if (style.projector) {
+      const float revealed_table = theory_contents_tallest_height(rows, inside);
+      column_plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
+    }
+    if (!style.projector || !column_plan.theory_whole || column_plan.parameters_step > style.parameters_step_for_the_theory) {
       class_lines_in_table = false;
       column_plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed_above), true);
     }
