@@ -447,7 +447,7 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
   for (const std::string* text : {&error, &caveat}) {
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
-  // Whatever the run measures, so that no value changes the plan (a slider's or the run's): each
+  // Whatever values the run and the sliders give, so that none changes the plan: each
   // number as wide as three figures with a sign ("−88.8 N"), each word as the theory says it, the
   // error at the wider of its two forms ("−0.00888", "−8.8×10⁻¹⁰"), each error on as many lines
   // as theory_cells then breaks it into, and each name the taller of its two places: on lines of

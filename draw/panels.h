@@ -74,9 +74,10 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                              const std::string& error = "", const std::string& caveat = "",
                              bool predictions_hidden = false);
-// The most theory_contents can take at a width whatever the run measures (its numbers' widths
-// change as their rows fill in): planned for from a lesson's opening, the revealed table needs
-// no more room at the run's end.
+// The most theory_contents takes at a width once the run has measured every row, with numbers
+// of up to three figures and a sign and words as the theory says them (its numbers' widths change
+// as their rows fill in): planned for from a lesson's opening, the revealed table needs no more
+// room at the run's end unless a measurement is longer than that (a failed row's other word).
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                                      const std::string& error = "", const std::string& caveat = "",
                                      bool predictions_hidden = false);
