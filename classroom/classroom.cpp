@@ -170,6 +170,7 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
                      [this] { return mystery_.hidden().theory(); });
   ImGui::PushFont(fonts_->body);
   style.parameters_heights = parameters_.heights(parameters_on_show());
+  style.parameters_step_for_the_theory = parameters_.last_step_with_sliders(parameters_on_show());
   ImGui::PopFont();
   return style;
 }

@@ -56,6 +56,11 @@ struct ParametersPanel {
   void forget();
   // The panel's height at each step of giving way (FrameStyle::parameters_heights), in the current font.
   std::vector<float> heights(const ParametersOnShow& on_show) const;
+  // The last step that leaves sliders in sight (every pair folded into its heading), before the
+  // whole panel folds away (FrameStyle::parameters_step_for_the_theory).
+  std::size_t last_step_with_sliders(const ParametersOnShow& on_show) const {
+    return foldable_pairs(on_show, true).size() + foldable_pairs(on_show, false).size();
+  }
   // The panel at `step` of giving way; `scale` is the fonts' scale.
   void draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
             const draw::Theme& colours, ControlPlaces& controls);

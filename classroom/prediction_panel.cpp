@@ -236,15 +236,43 @@ Closeness judged(const lessons::Prediction& prediction, const std::string& answe
   return closeness(prediction, answer, row);
 }
 
-// Once the theory is shown, each predicted row's name over the class's answer and how close
-// it came; while a mystery keeps the theory, the class's answer, the theory (hidden) and the
+// The class's line at its longest whatever the class answers and the run measures: a number of
+// three figures with a sign, twice the measurement's size off it ("class: −88.8 N · −178 N, 200 %
+// below the measurement"), or the longest word judged wrong against the longest other.
+std::string longest_class_line(const lessons::Prediction& prediction, const lessons::ExpectationResult* row) {
+  if (row == nullptr) return "class: ?";
+  lessons::ExpectationResult ended = *row;
+  ended.measured_yet = true;
+  ended.hand_pulled = false;
+  if (!prediction.is_choice()) {
+    ended.measured = 88.8;
+    return answer_and_closeness(prediction, "-88.8", closeness(prediction, "-88.8", ended));
+  }
+  std::string answer, truth;
+  for (const std::string& word : prediction.choices) {
+    if (word.size() > answer.size()) answer = word;
+  }
+  for (const std::string& word : prediction.choices) {
+    if (word != answer && word.size() > truth.size()) truth = word;
+  }
+  ended.measured_text = truth;
+  return answer_and_closeness(prediction, answer, closeness(prediction, answer, ended));
+}
+
+// Once the theory is shown, nothing: the class's lines are the theory table's notes
+// (class_notes). While a mystery keeps the theory, the class's answer, the theory (hidden) and the
 // measurement side by side, each row's name above them and how close the class came below.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                      const classroom_state::ClassPredictions& predictions, const draw::Theme& theme, bool theory_withheld) {
+                      const classroom_state::ClassPredictions& predictions, const draw::Theme& theme, bool theory_withheld,
+                      bool lines_in_table) {
   const float table_width = ImGui::GetContentRegionAvail().x;
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
                                 ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_NoClip;
+  // With the theory shown the class's lines are the theory table's notes (class_notes), or,
+  // where the table cannot be whole in the column, each under its row's name above the table,
+  // all in sight before the table's rows that scroll.
+  if (!theory_withheld && lines_in_table) return;
   if (!theory_withheld) {
     if (!ImGui::BeginTable("class's answers", 1, flags)) return;
     for (const lessons::Prediction& prediction : lesson.predictions()) {
@@ -311,6 +339,18 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
 
 }  // namespace
 
+draw::RowNotes class_notes(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
+                           const classroom_state::ClassPredictions& predictions) {
+  draw::RowNotes notes;
+  for (const lessons::Prediction& prediction : lesson.predictions()) {
+    const lessons::ExpectationResult* row = row_of(rows, prediction);
+    const std::string answer = answer_of(predictions, prediction);
+    const Closeness near = row ? judged(prediction, answer, *row, false) : Closeness{"class: ?", false};
+    notes[prediction.expectation] = {answer_and_closeness(prediction, answer, near), near.close};
+  }
+  return notes;
+}
+
 // The theory and the measurement are the theory table's, drawn right under the class's lines
 // (they were a second time in them, and the two tables pushed the last rows out of a
 // projector's column).
@@ -358,22 +398,23 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
 
 void predictions_contents(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                           classroom_state::ClassPredictions& predictions, bool editable, const draw::Theme& theme,
-                          const PredictionControls& controls, bool theory_withheld) {
+                          const PredictionControls& controls, bool theory_withheld, bool lines_in_table) {
   if (predictions.revealed) {
-    after_the_reveal(lesson, rows, predictions, theme, theory_withheld);
+    after_the_reveal(lesson, rows, predictions, theme, theory_withheld, lines_in_table);
   } else {
     before_the_reveal(lesson, rows, predictions, editable, theme, controls);
   }
 }
 
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                                  const classroom_state::ClassPredictions& predictions, float width, bool theory_withheld) {
+                                  const classroom_state::ClassPredictions& predictions, float width, bool theory_withheld,
+                                  bool lines_in_table) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float frame = ImGui::GetFrameHeight() + style.ItemSpacing.y;
   float height = 0.0f;
-  if (predictions.revealed && !theory_withheld) {
-    // As after_the_reveal lays it out with the theory shown: each row's name and the class's line.
+  if (predictions.revealed && !theory_withheld && !lines_in_table) {
+    // As after_the_reveal lays it out above the table: each row's name and the class's line.
     const float row_padding = 2.0f * style.CellPadding.y;
     const float across = width - 2.0f * style.CellPadding.x;
     for (const lessons::Prediction& prediction : lesson.predictions()) {
@@ -384,6 +425,24 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
       height += ImGui::CalcTextSize(answer_and_closeness(prediction, answer, near).c_str(), nullptr, false, across).y + row_padding;
     }
     return height + style.ItemSpacing.y;
+  }
+  if (predictions.revealed && !theory_withheld) {
+    // The class's lines under their rows of the theory table, across it, each as it is or as
+    // long as an answer typed later may make it: the column is planned as the lesson opens,
+    // before the class answers.
+    const float row_padding = 2.0f * style.CellPadding.y;
+    const float across = width - 2.0f * style.CellPadding.x;
+    for (const lessons::Prediction& prediction : lesson.predictions()) {
+      const lessons::ExpectationResult* row = row_of(rows, prediction);
+      const std::string answer = answer_of(predictions, prediction);
+      const Closeness near = row ? judged(prediction, answer, *row, theory_withheld) : Closeness{"class: ?", false};
+      float line = 0.0f;
+      for (const std::string& text : {answer_and_closeness(prediction, answer, near), longest_class_line(prediction, row)}) {
+        line = std::max(line, ImGui::CalcTextSize(text.c_str(), nullptr, false, across).y + row_padding);
+      }
+      height += line;
+    }
+    return height;
   }
   if (predictions.revealed) {
     // As after_the_reveal lays it out: the headers, then each row's name, numbers and closeness.
@@ -460,29 +519,33 @@ void PredictionPanel::style(draw::FrameStyle& style, const classroom_state::Play
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
   if (!asking || lesson.predictions().empty()) return;
   style.theory_hidden = classroom_state::theory_hidden(lesson, predictions, asking);
-  style.predictions = [this, &playback, &colours, &controls, theory_withheld] {
+  if (predictions.revealed && !theory_withheld()) style.theory_notes = class_notes(lesson, playback.readings().expectations, predictions);
+  style.predictions = [this, &playback, &colours, &controls, theory_withheld](bool lines_in_table) {
     // Answers are given before the run: once it has started they are what the class said.
     const bool editable = !predictions.revealed && playback.lesson().scene().frame() == 0;
     PredictionControls noted;
     noted.remember = [&controls](const std::string& name) { remember_item(controls, name); };
     noted.reveal = [this] { predictions.revealed = true; };
     predictions_contents(playback.lesson(), playback.readings().expectations, predictions, editable, colours, noted,
-                         theory_withheld());
+                         theory_withheld(), lines_in_table);
   };
   style.predictions_height = [this, &playback, theory_withheld](float width) {
-    // The taller of the panel before the reveal and after it: the column is planned once for
-    // both, so that nothing in it moves at the reveal (or when T hides the theory again).
-    classroom_state::ClassPredictions other = predictions;
-    other.revealed = !other.revealed;
+    // The panel before the reveal and after it: the column is planned once for both, so that
+    // nothing in it moves at the reveal (or when T hides the theory again).
+    classroom_state::ClassPredictions asked = predictions, revealed = predictions;
+    asked.revealed = false;
+    revealed.revealed = true;
     const bool withheld = theory_withheld();
     const lessons::Lesson& on_show = playback.lesson();
     const float font_size = ImGui::GetFontSize();
     const auto& rows = playback.readings().expectations;
-    const float height = std::max(predictions_contents_height(on_show, rows, predictions, width, withheld),
-                                  predictions_contents_height(on_show, rows, other, width, withheld));
+    const draw::FrameStyle::AnswersHeight height{predictions_contents_height(on_show, rows, asked, width, withheld),
+                                                 predictions_contents_height(on_show, rows, revealed, width, withheld),
+                                                 predictions_contents_height(on_show, rows, revealed, width, withheld, false)};
     if (planned && planned->lesson_path == on_show.path() && planned->script_loads == playback.script_loads() &&
         planned->questions == on_show.predictions().size() && planned->width == width && planned->font_size == font_size) {
-      planned->outgrown = height > planned->height;
+      planned->outgrown = height.asked > planned->height.asked || height.revealed > planned->height.revealed ||
+                          height.revealed_above > planned->height.revealed_above;
       return planned->height;
     }
     planned = PlannedHeight{on_show.path(), playback.script_loads(), on_show.predictions().size(), width, font_size, height, false};

@@ -404,6 +404,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
 struct ColumnChoice {
   ColumnPlan plan;
   bool theory_scrolls = false;
+  bool class_lines_in_table = true;  // each class's line under its row of the revealed theory table
 };
 
 ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display,
@@ -413,8 +414,22 @@ ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& styl
   const float table = theory_contents_height(readings.expectations, inside, readings.error, readings.caveat, style.hidden.theory());
   ColumnChoice choice{plan_column(lesson, style, display, table)};
   if (style.predictions_height) {
-    const float answers = style.predictions_height(inside);
-    choice.plan = plan_column(lesson, style, display, answers, true);
+    const FrameStyle::AnswersHeight answers = style.predictions_height(inside);
+    // In projector mode, the theory table revealed under the class's lines at the run's end,
+    // whole, where the friction pairs can give way for it (issue 31: push's last row was a
+    // scroll away); it is planned at its tallest, which no value the run measures changes. Where
+    // even that leaves too little room (or would fold the sliders away), the answers alone are
+    // planned for and the revealed table scrolls. A screen's column keeps the plan it had (its
+    // theory table has a panel of its own beside the tabs, a mystery's tab under it).
+    if (style.projector) {
+      const float revealed_table = theory_contents_tallest_height(readings.expectations, inside);
+      choice.plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
+    }
+    if (!style.projector || !choice.plan.theory_whole ||
+        choice.plan.parameters_step > style.parameters_step_for_the_theory) {
+      choice.class_lines_in_table = false;
+      choice.plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed_above), true);
+    }
     // The answers alone, before the reveal, have the room planned for them: no scroll bar to
     // take width from them. A value changed since the plan (a slider; the hand's pull, which
     // writes "(hand-pulled)") may make them longer: they scroll then, rather than fold the
@@ -552,17 +567,19 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
 
 // The theory's part of the column: the class's predictions first; before the reveal they stand
 // in for the theory.
-void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadings& readings) {
-  if (style.predictions) style.predictions();
+void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadings& readings, bool class_lines_in_table) {
+  if (style.predictions) style.predictions(class_lines_in_table);
   if (!style.theory_hidden) {
-    theory_contents(readings.expectations, theme(style.theme), readings.error, readings.caveat, style.hidden.theory());
+    theory_contents(readings.expectations, theme(style.theme), readings.error, readings.caveat, style.hidden.theory(),
+                    class_lines_in_table ? style.theory_notes : RowNotes{});
   }
 }
 
 // The ledger and the model card as tabs of one panel from `at` to the column's foot (with the
 // theory as the first tab when the plan put it there).
-void books_tabs(lessons::Lesson& lesson, const FrameStyle& style, const lessons::LessonReadings& readings, const ColumnPlan& plan,
+void books_tabs(lessons::Lesson& lesson, const FrameStyle& style, const lessons::LessonReadings& readings, const ColumnChoice& column,
                 ImVec2 at, ImVec2 size) {
+  const ColumnPlan& plan = column.plan;
   // Short names when the full ones would not fit side by side.
   const char* const full[] = {"Theory against simulation###theory tab", "Energy ledger (since t = 0)###energy",
                               "Model card###model"};
@@ -580,7 +597,7 @@ void books_tabs(lessons::Lesson& lesson, const FrameStyle& style, const lessons:
   if (begin_panel("books", "", at, size, plan.books_scroll) &&
       ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
     if (plan.theory_in_tabs && begin_tab(names[0])) {
-      predictions_and_theory(style, readings);
+      predictions_and_theory(style, readings, column.class_lines_in_table);
       ImGui::EndTabItem();
     }
     if (begin_tab(names[1])) {
@@ -622,13 +639,13 @@ void column_panels(lessons::Lesson& lesson, const FrameStyle& style, const lesso
   } else if (!plan.theory_in_tabs) {
     if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
                     ImVec2(width, plan.theory), column.theory_scrolls)) {
-      predictions_and_theory(style, readings);
+      predictions_and_theory(style, readings, column.class_lines_in_table);
     }
     end_panel();
     at.y += plan.theory + gap;
   }
   if (plan.books_tabbed) {
-    books_tabs(lesson, style, readings, plan, at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y));
+    books_tabs(lesson, style, readings, column, at, ImVec2(width, layout.column_corner.y + layout.column_size.y - at.y));
   } else {
     energy_panel(lesson.scene(), at, ImVec2(width, plan.energy), colours);
     at.y += plan.energy + gap;

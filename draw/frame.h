@@ -98,18 +98,33 @@ struct FrameStyle {
   // one panel, to leave the sliders room.
   std::function<void(ImVec2 corner, ImVec2 size, std::size_t step)> parameters_panel;
   std::vector<float> parameters_heights;
+  // How far the parameters may give way for the theory table revealed under the class's
+  // predictions (predictions_height): every step that leaves sliders in sight, not the whole
+  // panel folded away (a class's sliders gone for a table read at the run's end).
+  std::size_t parameters_step_for_the_theory = static_cast<std::size_t>(-1);
   // The window's wheel zoom and drag pan.
   ViewAdjust view_adjust;
   // Filled with the world view's layout when not null.
   FrameRecord* record = nullptr;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
-  // The class's predictions (the window), drawn at the top of the theory panel; their height
-  // at the panel's inside width, the tallest they may be before the reveal or after it (the
-  // column is planned for that once, so that it does not move at the reveal). With `theory_hidden` they take the theory table's place, and
+  // The class's predictions (the window), drawn at the top of the theory panel; their heights
+  // at the panel's inside width before the reveal and after it (the column is planned for the
+  // taller once, with the revealed theory table under the class's lines where the column has
+  // the room, so that it does not move at the reveal). With `theory_hidden` they take the theory table's place, and
   // nothing that states a theory value is drawn: the table, the plots' theory curves.
-  std::function<void()> predictions;
-  std::function<float(float width)> predictions_height;
+  // `lines_in_table`: the class's lines go under their rows in the theory table (theory_notes),
+  // where the column holds it whole; else above it, each under its row's name, in sight.
+  std::function<void(bool lines_in_table)> predictions;
+  struct AnswersHeight {
+    float asked = 0.0f;     // before the reveal: the questions and the class's answers
+    float revealed = 0.0f;  // after it: the class's lines under the theory table's rows (theory_notes)
+    float revealed_above = 0.0f;  // after it, the class's lines under their rows' names above the table
+  };
+  std::function<AnswersHeight(float width)> predictions_height;
+  // Once revealed, the class's line under each predicted row of the theory table (its name is
+  // the row's: the class's rows no longer come a second time above the table).
+  RowNotes theory_notes;
   // Whether the answers have grown past the height planned for them (a value changed since the
   // plan): they scroll then, in the room they were given.
   std::function<bool()> predictions_outgrew;

@@ -317,7 +317,7 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
 }
 
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
-                     const std::string& caveat, bool predictions_hidden) {
+                     const std::string& caveat, bool predictions_hidden, const RowNotes& notes) {
   {
     ImGui::PushTextWrapPos(0.0f);
     if (!error.empty()) {
@@ -343,8 +343,9 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
     const bool names_above = table.names_above(table_width);
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
-    // A name above its numbers spans the row: the cells must not clip it.
-    if (ImGui::BeginTable("rows", names_above ? 3 : 4, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
+    // A name above its numbers, or a note under them, spans the row: the cells must not clip it.
+    const bool spanning = names_above || !notes.empty();
+    if (ImGui::BeginTable("rows", names_above ? 3 : 4, spanning ? flags | ImGuiTableFlags_NoClip : flags)) {
       // The numbers keep their width; a long name wraps.
       if (names_above) {
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
@@ -358,8 +359,21 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         ImGui::TableSetupColumn(table.error_heading.c_str());
       }
       noted_headers(names_above ? 3 : 4);
+      // The note of the row before, once its cells are drawn.
+      const auto note_under = [&](std::size_t i) {
+        const auto note = notes.find(rows[i].name);
+        if (note == notes.end()) return;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
+        if (note->second.good) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
+        shown_text(note->second.text.c_str());
+        if (note->second.good) ImGui::PopStyleColor();
+        ImGui::PopTextWrapPos();
+      };
       for (std::size_t i = 0; i < rows.size(); ++i) {
         const TheoryCells::Cells& cell = cells[i];
+        if (i > 0) note_under(i - 1);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (names_above) {
@@ -393,6 +407,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         }
         note_text(cell.error.c_str());
       }
+      note_under(rows.size() - 1);
       ImGui::EndTable();
     }
   }
@@ -418,6 +433,48 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
     const float name = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, name_width).y;
     const float numbers = static_cast<float>(table.cells[i].error_lines) * font;
     height += above ? name + numbers + 2.0f * row_padding : std::max(name, numbers) + row_padding;
+  }
+  return height + style.ItemSpacing.y;
+}
+
+float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
+                                     const std::string& error, const std::string& caveat, bool predictions_hidden) {
+  if (rows.empty()) return theory_contents_height(rows, width, error, caveat, predictions_hidden);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  const float row_padding = 2.0f * style.CellPadding.y;
+  float height = 0.0f;
+  for (const std::string* text : {&error, &caveat}) {
+    if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
+  }
+  // Whatever values the run and the sliders give, so that none changes the plan: each
+  // number as wide as three figures with a sign ("−88.8 N"), each word as the theory says it, the
+  // error at the wider of its two forms ("−0.00888", "−8.8×10⁻¹⁰"), each error on as many lines
+  // as theory_cells then breaks it into, and each name the taller of its two places: on lines of
+  // its own across the row, or beside the numbers in the least room theory_contents leaves it
+  // there (names_above: 9 m's).
+  const float padding = 2.0f * style.CellPadding.x;
+  const float least_beside = std::max(1.0f, 9.0f * ImGui::CalcTextSize("m").x - padding);
+  std::vector<int> error_lines(rows.size(), 1);
+  for (const double off : {-0.00888, -8.8e-10}) {
+    std::vector<lessons::ExpectationResult> ended = rows;
+    for (lessons::ExpectationResult& row : ended) {
+      if (row.failed) continue;
+      row.measured_yet = true;
+      row.hand_pulled = false;
+      row.predicted = -88.8;
+      row.measured = row.predicted + off;
+      row.measured_text = row.predicted_text;
+    }
+    const TheoryCells table = theory_cells(ended, predictions_hidden, width);
+    for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
+  }
+  height += font + row_padding;  // the headers
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const float numbers = static_cast<float>(error_lines[i]) * font;
+    const float above = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, width - padding).y + numbers + 2.0f * row_padding;
+    const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, least_beside).y, numbers) + row_padding;
+    height += std::max(above, beside);
   }
   return height + style.ItemSpacing.y;
 }

@@ -93,7 +93,8 @@ TEST_P(WindowLayout, EveryLessonsTextIsWholeAtTheStartMidRunAtTheEndAndRevealed)
       check_at(0.5 * duration, "mid-run");
       // The run's end says so in the transport bar.
       check_at(duration, "at the end");
-      // The theory revealed beside the class's answers (the class's table, then the theory table).
+      // The theory revealed beside the class's answers (each class's line under its row of the theory
+      // table, or the class's lines above the table where it cannot be whole).
       for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
         window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
       }
@@ -418,10 +419,12 @@ TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
           EXPECT_LE(parameters->Pos.y + parameters->Size.y, below->Pos.y + 0.5f)
               << where << ": the Parameters panel reaches down over " << id;
         }
-        // Each prediction's texts in the order drawn: the first of each after the one before, so
-        // that the theory table's row of the same name below is not taken for the class's.
-        std::size_t next = 0;
+        // Each prediction's texts in the order drawn, its first the first of that name: the
+        // class's row above the theory table where the class's lines stand apart, else the theory
+        // table's own row, the class's line under it (in the table's order of rows, which need not
+        // be the questions').
         for (const lessons::Prediction& prediction : predictions) {
+          std::size_t next = 0;
           for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             ++checked;

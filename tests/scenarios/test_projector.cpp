@@ -196,8 +196,10 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
               << where << ": " << parameter.name << "'s slider at (" << slider->Min.y << "–" << slider->Max.y
               << ") is not whole in its panel (" << panel.Min.y << "–" << panel.Max.y << ")";
         }
-        std::size_t next = 0;
         for (const lessons::Prediction& prediction : predictions) {
+          // Each prediction's texts in their order; revealed, the class's lines come in the
+          // theory table's order of rows, which need not be the questions'.
+          std::size_t next = 0;
           for (const auto& [text, prefix] : answer_texts(window, prediction, at_the_end, where)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             if (!found) {
@@ -216,6 +218,77 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
   }
   EXPECT_GE(lessons_checked, 8) << "too few lessons with predictions were checked";
   EXPECT_GT(sliders_checked, 0) << "no slider was checked";
+}
+
+// Issue 31: at the run's end in projector mode push's revealed theory table scrolled, its last
+// row ("speed at the end") cut, under the class's rows of two lines each (each row's name a
+// second time). Now each class's line stands under its row of the theory table, and the column
+// is planned from the lesson's opening for the table at its tallest, the friction pairs folding
+// for it where they must (never the whole Parameters panel). For these lessons,
+// with the class's answers given or not, with the stopwatch and without, at the run's end before
+// the reveal and after it: every text the Predict tab draws (each question and answer; each
+// class's line and theory row) whole and in sight, and the tab does not scroll. Lessons with
+// more or longer rows (check_the_article's seven claims, terrain's eight rows) cannot hold their
+// table at projector text in the column: theirs scrolls, after the class's lines.
+TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrNot) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const char* name : {"push", "pulley", "incline", "tipping_box", "where_methods_fail"}) {
+    for (const bool stopwatch : {false, true}) {
+      for (const bool answered : {false, true}) {
+        ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
+        options.window.predictions = true;
+        options.window.tools.stopwatch = stopwatch;
+        Classroom window(options);
+        const std::vector<lessons::Prediction> predictions = window.playback().lesson().predictions();
+        ASSERT_FALSE(predictions.empty()) << name;
+        if (answered) {
+          for (const lessons::Prediction& prediction : predictions) {
+            window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
+          }
+        }
+        window.playback().run_to(window.playback().lesson().duration());
+        for (const bool revealed : {false, true}) {
+          if (revealed) window.key_pressed(Key::t, false);
+          const std::string where = std::string(name) + (revealed ? " revealed" : " not revealed") + " at the run's end" +
+                                    (answered ? ", answered" : "") + (stopwatch ? ", stopwatch on" : "");
+          draw::FrameRecord record;
+          for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+          ASSERT_EQ(window.theory_hidden(), !revealed) << where;
+          const ImGuiWindow* books = ImGui::FindWindowByName("###books");
+          ASSERT_TRUE(books != nullptr && books->WasActive) << where;
+          EXPECT_EQ(books->ScrollMax.y, 0.0f) << where << ": the Predict tab scrolls";
+          // What must be drawn: the class's texts, each prediction's in its order, and once
+          // revealed every theory row's name.
+          for (const lessons::Prediction& prediction : predictions) {
+            std::size_t next = 0;
+            for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where)) {
+              if (text.empty()) continue;  // an empty answer's box: no text in it
+              const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
+              if (!found) {
+                ADD_FAILURE() << where << ": \"" << text << "\" is not drawn";
+                continue;
+              }
+              next = *found + 1;
+            }
+          }
+          if (revealed) {
+            for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
+              EXPECT_TRUE(lower_panel_text(record, 0, row.name)) << where << ": the theory row \"" << row.name << "\" is not drawn";
+            }
+          }
+          // And every text the tab drew (the rows' numbers too) whole, none a scroll away.
+          for (const draw::ShownText& text : record.texts) {
+            if (text.panel.find("###books") == std::string::npos) continue;
+            EXPECT_TRUE(text.whole() && text.needed.w <= display.y)
+                << where << ": \"" << text.text << "\" needs " << text_of(text.needed) << " but only " << text_of(text.visible)
+                << " shows";
+          }
+        }
+      }
+    }
+  }
 }
 
 // Issue 31: in projector mode the lesson's key plot (its first) was small: tipping_box's second
