@@ -5,35 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <vector>
 
 #include "classroom/knob_slider.h"
 #include "draw/text_record.h"
+#include "draw/words.h"
 
 namespace frictionlab::classroom {
-
-namespace {
-
-// `text` whole when it fits in `room` px, else its start and its end with "…" between (a saved
-// file's name is at its end), cut at characters, never inside one's UTF-8 bytes.
-std::string fitted(const std::string& text, float room) {
-  if (ImGui::CalcTextSize(text.c_str()).x <= room) return text;
-  std::vector<std::size_t> starts;  // each character's first byte
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) starts.push_back(i);
-  }
-  starts.push_back(text.size());
-  const std::size_t characters = starts.size() - 1;
-  // The most characters kept, a little more of the start than of the end.
-  for (std::size_t kept = characters; kept-- > 0;) {
-    const std::size_t tail = kept / 3, head = kept - tail;
-    const std::string shorter = text.substr(0, starts[head]) + "\u2026" + text.substr(starts[characters - tail]);
-    if (ImGui::CalcTextSize(shorter.c_str()).x <= room) return shorter;
-  }
-  return "\u2026";
-}
-
-}  // namespace
 
 TransportBar::Shape TransportBar::shape(const std::string& room_for, float width, float scale, ImFont* words_font) {
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -106,7 +83,7 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     ImGui::PushFont(words_font);
     const float room = shape.words_below || room_for.empty() ? 0.0f : ImGui::CalcTextSize(room_for.c_str()).x + spacing;
-    const std::string words = fitted(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
+    const std::string words = draw::words_that_fit(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
                                                              : std::max(room, ImGui::GetContentRegionAvail().x - shape.bar) - spacing);
     ImGui::PopFont();
     ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - room));

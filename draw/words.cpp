@@ -24,6 +24,25 @@ std::vector<std::size_t> character_starts(const std::string& text) {
 
 float width_of(const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; }
 
+// `text`'s start and end with "…" between, as many characters as fit: one in `parts` of them from
+// the end, the rest from the start.
+std::string characters_that_fit(const std::string& text, float room, std::size_t parts) {
+  const std::vector<std::size_t> starts = character_starts(text);
+  const std::size_t characters = starts.size() - 1;
+  for (std::size_t kept = characters; kept-- > 0;) {
+    const std::size_t tail = kept / parts, head = kept - tail;
+    const std::string shown = text.substr(0, starts[head]) + "\u2026" + text.substr(starts[characters - tail]);
+    if (width_of(shown) <= room) return shown;
+  }
+  return width_of("\u2026") <= room ? "\u2026" : "";
+}
+
+std::string joined(const std::vector<std::string>& words, std::size_t from, std::size_t to) {
+  std::string line;
+  for (std::size_t i = from; i < to; ++i) line += (i == from ? "" : " ") + words[i];
+  return line;
+}
+
 }  // namespace
 
 std::string path_that_fits(const std::string& path, float room) {
@@ -42,16 +61,40 @@ std::string path_that_fits(const std::string& path, float room) {
     return folder.substr(0, fits) + tail;
   }
   // The name alone is too wide: its start and end, as many characters of each as fit.
-  const std::vector<std::size_t> starts = character_starts(name);
-  const std::size_t characters = starts.size() - 1;
-  std::string best = width_of(ellipsis) <= room ? ellipsis : "";
-  for (std::size_t kept = 1; kept < characters; ++kept) {
-    const std::size_t head = (kept + 1) / 2, tail_count = kept - head;
-    const std::string shown = name.substr(0, starts[head]) + ellipsis + name.substr(starts[characters - tail_count]);
-    if (width_of(shown) > room) break;
-    best = shown;
+  return characters_that_fit(name, room, 2);
+}
+
+std::string words_that_fit(const std::string& line, float room) {
+  if (width_of(line) <= room) return line;
+  std::vector<std::string> words;
+  for (std::size_t start = 0; start <= line.size();) {
+    const std::size_t space = std::min(line.find(' ', start), line.size());
+    if (space > start) words.push_back(line.substr(start, space - start));
+    start = space + 1;
   }
-  return best;
+  const std::size_t count = words.size();
+  if (count < 2) return characters_that_fit(line, room, 3);
+  const std::string gap = " \u2026 ";
+  // A path at the end: the first words that leave it room, the path fitted to what is left.
+  // Words go before the file's name is cut.
+  if (count > 1 && words.back().find('/') != std::string::npos) {
+    const std::string name = std::filesystem::path(words.back()).filename().string();
+    for (const bool whole_name : {true, false}) {
+      for (std::size_t head = count - 1; head > 0; --head) {
+        const std::string start = joined(words, 0, head) + (head == count - 1 ? " " : gap);
+        const std::string path = path_that_fits(words.back(), room - width_of(start));
+        const bool name_kept = path.size() >= name.size() && path.compare(path.size() - name.size(), name.size(), name) == 0;
+        if (!path.empty() && (name_kept || !whole_name)) return start + path;
+      }
+    }
+  }
+  // The most words kept, about two of the start for one of the end (the end says what to do next).
+  for (std::size_t kept = count - 1; kept > 0; --kept) {
+    const std::size_t tail = kept / 3, head = kept - tail;
+    const std::string shown = joined(words, 0, head) + (tail == 0 ? " \u2026" : gap + joined(words, count - tail, count));
+    if (width_of(shown) <= room) return shown;
+  }
+  return characters_that_fit(line, room, 3);
 }
 
 }  // namespace frictionlab::draw

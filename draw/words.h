@@ -12,4 +12,11 @@ namespace frictionlab::draw {
 // file name with "…" in its middle ("check_t…article.lua"); "" when not even "…" fits.
 std::string path_that_fits(const std::string& path, float room);
 
+// A line of words (the status line: a notice, what was saved where) as it fits in `room` points
+// of the current ImGui font: the whole line; else its first words and its last with " … "
+// between, cut between words, never inside one (the trial read "Kept from the last sessio…sion
+// start"); a path at its end is kept whole as far as it fits (path_that_fits), since the file's
+// name is the news. Only a first word wider than the room is cut inside, at characters.
+std::string words_that_fit(const std::string& line, float room);
+
 }  // namespace frictionlab::draw

@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# The predict-first, tools and gauge shots click and type with xdotool.
+# The tools and gauge shots drag and press keys with xdotool.
 command -v xdotool >/dev/null || { echo "$0: needs xdotool (apt-get install xdotool)" >&2; exit 2; }
 FRICTIONLAB_TESTS=1 FRICTIONLAB_TARGET=frictionlab scripts/setup.sh build -DBUILD_TESTING=OFF
 mkdir -p docs/screenshots
@@ -36,40 +36,19 @@ shot window_mystery "help = off\npredictions = off\nprojector = on\nwidth = 1920
 sed 's/^local angle = parameter/local angle = parameter {/' lessons/incline.lua > "$scratch/my_incline.lua"
 shot window_script_error "help = off\npredictions = off\n" "$scratch/my_incline.lua" --at 1
 
-# Predict, then reveal (projector mode, 1920 × 1080): the window driven by hand on Xvfb with
-# xdotool, as a teacher would: pick "slides", type 50 in the number's box, play the run to its
-# end, press T. (The window folds the friction pair itself to leave the questions room.) The
-# points clicked are where the window puts those controls at this size; look at both pictures.
-predict_shots() {
-  local home="$scratch/predict" display=:57
-  mkdir -p "$home/frictionlab" "$home/out"
-  printf 'help = off\nprojector = on\nwidth = 1920\nheight = 1080\n' > "$home/frictionlab/settings.ini"
-  Xvfb $display -screen 0 1920x1080x24 >/dev/null 2>&1 &
-  local xvfb=$!
-  sleep 2
-  (cd "$home/out" && DISPLAY=$display XDG_CONFIG_HOME="$home" "$OLDPWD/build/app/frictionlab" tipping_box) &
-  local app=$!
-  sleep 4
-  local window
-  window=$(DISPLAY=$display xdotool search --name . | head -1)
-  x() { DISPLAY=$display xdotool "$@"; sleep 0.7; }
-  x mousemove 1336 841 click 1          # the box slides
-  x mousemove 1305 969 click 1          # the number's box
-  x type --delay 100 50
-  x mousemove 1800 560 click 1          # done typing
-  x mousemove 1900 120
-  x key --window "$window" ctrl+s
-  x key --window "$window" space
-  sleep 5                               # the run ends at 2.49 s and pauses
-  x key --window "$window" t
-  x key --window "$window" ctrl+s
-  sleep 2
-  kill $app $xvfb
-  cp "$home/out/frictionlab_tipping_box_t0.00.png" docs/screenshots/window_predict.png
-  cp "$home/out/frictionlab_tipping_box_t2.49.png" docs/screenshots/window_reveal.png
-  echo docs/screenshots/window_predict.png docs/screenshots/window_reveal.png
-}
-predict_shots
+# Predict, then reveal (projector mode, 1920 × 1080): the class's answers ("slides", 50 N) come
+# from a prepared setup, as a teacher would have them typed, so no click has to land on a control
+# whose place changes with the layout. The first picture is the run's end with the theory kept
+# back, the second the same moment revealed (T).
+cat > "$scratch/predict.setup" <<'SETUP'
+# FrictionLab setup
+lesson tipping_box
+predictions on
+predict tips or slides = slides
+predict push when it happens = 50
+SETUP
+shot window_predict "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.49
+shot window_reveal "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.49 --reveal
 
 # The force gauge and the measuring tools, in projector mode at 1920 × 1080, driven by a hand on
 # the real window (xdotool on the same Xvfb display). The window saves them itself (Ctrl+S) into
