@@ -165,6 +165,12 @@ class FrictionListener : public b2ContactListener {
     const std::size_t index = index_of(contact);
     return index < records_.size() && records_[index].contact == contact ? &records_[index] : nullptr;
   }
+  // The scene put a body of this contact to rest (it sleeps, its velocity zero): Box2D solves a
+  // sleeping contact no more, so finish_step() would leave its last sliding speed standing for
+  // as long as it sleeps; resting, it slides no more.
+  void came_to_rest(const b2Contact* contact) {
+    if (ContactRecord* r = mutable_record(contact)) r->sliding_velocity = 0.0;
+  }
   // The first error met during the last step (empty if none), cleared by reading it.
   std::string take_error();
   // The record for the contact between two bodies, if they touch.

@@ -65,6 +65,7 @@ void Scene::rest_resting_bodies() {
     rest.angle = body->GetAngle();
     if (rest.frames >= rest_frames) {
       body->SetAwake(false);
+      for (const b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next) listener_.came_to_rest(edge->contact);
       rest.frames = 0;
     }
   }
