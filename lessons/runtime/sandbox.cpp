@@ -318,9 +318,12 @@ void Sandbox::count_instructions(lua_State* state, lua_Debug*) {
     const std::chrono::nanoseconds spent = processor_time() - sandbox.processor_time_at_start_;
     if (spent >= limit) {
       luaL_where(state, 0);
-      lua_pushfstring(state, "the script ran for more than %d seconds without finishing (an endless loop, or a string "
+      // "5 seconds", "1 second", "0.5 seconds" (the fuzzers' limit).
+      std::ostringstream limit_words;
+      limit_words << sandbox.limits_.seconds_per_call << (sandbox.limits_.seconds_per_call == 1.0 ? " second" : " seconds");
+      lua_pushfstring(state, "the script ran for more than %s without finishing (an endless loop, or a string "
                       "grown one piece at a time?)",
-                      static_cast<int>(sandbox.limits_.seconds_per_call));
+                      limit_words.str().c_str());
       lua_concat(state, 2);
       lua_error(state);
     }

@@ -163,7 +163,7 @@ TEST(LessonSandbox, TheTimeLimitCountsTheScriptsProcessorTimeNotTheWallClock) {
   // A loop that keeps the processor busy still stops at the limit, at its own line.
   sandbox.load("local n = 0\nwhile true do n = n + 1 end\n", "spinning.lua");
   const std::string message = error_of([&] { sandbox.call(0, 0); });
-  EXPECT_NE(message.find("spinning.lua:2: the script ran for more than 1 seconds"), std::string::npos) << message;
+  EXPECT_NE(message.find("spinning.lua:2: the script ran for more than 1 second without"), std::string::npos) << message;
 }
 #endif
 
