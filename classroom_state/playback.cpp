@@ -98,6 +98,12 @@ void Playback::refresh_readings() {
     if (!failure) readings_.expectations.clear();
     readings_.error = error.what();
   }
+  // Played on past the lesson's end, the rows are those the run ended with (Lesson::expectations).
+  if (lesson_->rows_kept_from_end()) {
+    const std::string kept = "Played on past the run's end at " + seconds_text(readings_.duration) +
+                             ": the table keeps the rows the run ended with. R runs it again.";
+    readings_.caveat = readings_.caveat.empty() ? kept : kept + " " + readings_.caveat;
+  }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that
   // know nothing of it, and the class is told why, and when.
   const std::vector<HandStretch> stretches = gauge_.stretches(lesson_->scene().frame_step());

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <exception>
 #include <functional>
 #include <initializer_list>
 #include <limits>
@@ -98,6 +99,17 @@ struct LessonBuild {
   std::vector<PlotFunctions> plot_functions;  // beside plots, one for one
   std::vector<ProbeInfo> probes;
   std::vector<Expectation> expectations;
+  // The rows as they stood when the run reached the lesson's end (Lesson::step takes them
+  // there): a run played on past its end keeps them, since a row such as "time slipping in
+  // 5 s" read on a record gone on to 100 s said 54 s (check_the_article). Forgotten with a
+  // value changed live; a rebuild starts without them.
+  struct RowsAtEnd {
+    std::vector<ExpectationResult> rows;
+    std::exception_ptr failure;
+    long frame = 0;
+  };
+  std::optional<RowsAtEnd> rows_at_end;
+  std::optional<double> end_time;  // the lesson's duration, read once for the check each step
   std::vector<Prediction> predictions;
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function

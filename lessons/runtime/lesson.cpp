@@ -395,6 +395,29 @@ void Lesson::step() {
     last_error_ = path_ + ": " + error.what();
     throw ScriptError(last_error_);
   }
+  keep_rows_at_end();
+}
+
+void Lesson::keep_rows_at_end() {
+  LessonBuild& build = *current_;
+  if (build.rows_at_end) return;
+  try {
+    if (!build.end_time) build.end_time = duration_of(build);
+  } catch (const InvalidInput&) {
+    return;  // a duration function that fails is said where the duration is read
+  }
+  // The step that reaches the end (as step_to(duration) would stop there), and only that one:
+  // rows forgotten with a value changed past the end are not taken again on a record gone on.
+  const double h = scene().frame_step(), t = scene().time();
+  if (t + 0.5 * h < *build.end_time || t - 0.5 * h >= *build.end_time) return;
+  LessonBuild::RowsAtEnd end;
+  try {
+    end.rows = rows_now(end.failure);
+  } catch (const InvalidInput&) {
+    return;  // an error outside every row: said as ever where the rows are read
+  }
+  end.frame = scene().frame();
+  build.rows_at_end = std::move(end);
 }
 
 std::vector<ExpectationResult> Lesson::expectations() {
@@ -404,7 +427,19 @@ std::vector<ExpectationResult> Lesson::expectations() {
   return rows;
 }
 
+bool Lesson::rows_kept_from_end() const {
+  return current_->rows_at_end && scene().frame() > current_->rows_at_end->frame;
+}
+
 std::vector<ExpectationResult> Lesson::expectations(std::exception_ptr& failure) {
+  if (const auto& end = current_->rows_at_end; end && scene().frame() >= end->frame) {
+    failure = end->failure;
+    return end->rows;
+  }
+  return rows_now(failure);
+}
+
+std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
   failure = nullptr;
   LessonBuild& build = *current_;
   lua_State* state = build.sandbox.state();
@@ -511,6 +546,8 @@ void Lesson::set(const std::string& name, double number) {
     scene().wake();  // a block resting on static friction may slide with the new values
     changed.value = value;
     for (const auto& memory : current_->remembered) memory->filled = 0;  // functions may read param
+    current_->rows_at_end.reset();
+    current_->end_time.reset();
     overrides_[name] = kept_value(changed, value);
     return;
   }

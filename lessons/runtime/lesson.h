@@ -239,12 +239,15 @@ class Lesson {
   bool failed() const { return failed_; }
   // Whole steps until the scene's time is the step nearest `t` (never before the present).
   void step_to(double t);
-  // The expectations as they stand now. Throws the error of the first row whose function fails.
+  // The expectations as they stand now; past the lesson's end (a run played on), as they stood
+  // at its end. Throws the error of the first row whose function fails.
   std::vector<ExpectationResult> expectations();
   // The same, row by row: a row whose function fails is given marked `failed`, the other rows
   // as they stand, and the first row's error is kept in `failure` (the window says it once
   // and shows "?" for that row alone).
   std::vector<ExpectationResult> expectations(std::exception_ptr& failure);
+  // Whether the run is past the lesson's end, so that expectations() gives the rows kept from it.
+  bool rows_kept_from_end() const;
   // The theory curves of plot `plot` sampled at `count` points across [x_low, x_high] (more
   // where a branch ends or jumps). Kept and given again until the range, the count or a
   // parameter changes. A script error throws ScriptError placed at the curve's function.
@@ -287,6 +290,10 @@ class Lesson {
   std::unique_ptr<LessonBuild> build(const std::string& source, std::string& compiled, bool strict);
   void replace(std::unique_ptr<LessonBuild> next);
   void rebuild();  // from the same text, after a value or setting changed
+  // The rows as they stand now, whatever the time.
+  std::vector<ExpectationResult> rows_now(std::exception_ptr& failure);
+  // After a step: the rows taken as the run reaches the lesson's end (LessonBuild::rows_at_end).
+  void keep_rows_at_end();
 
   std::string path_;
   std::string source_;    // the text of the last good build

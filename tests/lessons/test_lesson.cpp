@@ -45,6 +45,41 @@ plot { "phase", x = "x", y = "vx" }
   EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
 }
 
+// A run played on past the lesson's end (the window's Space after "the run ends here") keeps
+// the rows it ended with: a row measured over the record ("time slipping in 5 s") read on a
+// record gone on to 100 s said 54 s where the run's 5 s gave 3.4 s (check_the_article). A value
+// changed live past the end forgets them (the rows are read as they stand again, and the window
+// says the value changed); a rebuild starts afresh.
+TEST(LessonRuntime, RowsArePastTheEndAsTheRunEndedWith) {
+  ScriptFile script(R"(
+lesson { title = "Counting", question = "How many steps?", duration = 0.5 }
+pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
+local floor = ground { material = "metal" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+probe { "x", unit = "m", function() return block.x end }
+expect { "steps recorded", predicted = function() return 0.5 * 240 end, measured = function() return #history("x") end,
+         tolerance = 0 }
+)");
+  Lesson lesson(script.path());
+  const auto steps_recorded = [&] { return lesson.expectations().at(0).measured; };
+  lesson.step_to(0.25);
+  EXPECT_EQ(steps_recorded(), 60.0) << "before the end, the rows as they stand";
+  EXPECT_FALSE(lesson.rows_kept_from_end());
+  lesson.step_to(lesson.duration());
+  EXPECT_EQ(steps_recorded(), 120.0);
+  EXPECT_FALSE(lesson.rows_kept_from_end()) << "at the end itself";
+  lesson.step_to(2.0);
+  EXPECT_EQ(lesson.scene().probe("x").history.size(), 480u);
+  EXPECT_EQ(steps_recorded(), 120.0) << "played on to 2 s";
+  EXPECT_TRUE(lesson.rows_kept_from_end());
+  lesson.set("mu_k", 0.3);
+  EXPECT_EQ(steps_recorded(), 480.0) << "a value changed live past the end";
+  EXPECT_FALSE(lesson.rows_kept_from_end());
+  lesson.reset();
+  lesson.step_to(1.0);
+  EXPECT_EQ(steps_recorded(), 120.0) << "a rebuild takes them again at its end";
+}
+
 // lesson{ velocity_iterations = N }: a scene whose contacts settle in fewer passes says so, and
 // its world steps with N passes, as if they had been the settings, through every rebuild. A
 // tower of three boxes dropped on the floor lands differently with 1 pass than with 8.
