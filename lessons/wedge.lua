@@ -239,6 +239,7 @@ local inertia = mass * (block_width ^ 2 + block_height ^ 2) / 12
 local hold_band = stick_slip_hold_band  -- the listener's (physics/friction_laws.h)
 -- Whether the contact's moment falls short of turning the block with the surface at time_t,
 -- with that friction and normal force on it.
+local start_speed, start_drift, drift_step  -- the world's start off the models' block (below)
 local function must_rock(time_t, friction, normal)
   local spin_up = -theta0 * omega * omega * sin(omega * time_t)
   -- At μ = w/h (2, the sliders' end) a block that slips, or is held at μ·N, needs exactly
@@ -258,9 +259,33 @@ local function rocks_by(t)
     for _, event in ipairs(turning.events) do
       if event.kind == "breakaway" then breakaways[#breakaways + 1] = event.t end
     end
+    -- Whether the model's N falls on from sample k into a lift-off: that approach is the
+    -- lift-off's, whose row allows for the start's press and for the edge.
+    local function into_lift_off(k)
+      local j = k + 1
+      while j <= #turning.normal and turning.contact[j] ~= "flying" and turning.normal[j] < turning.normal[j - 1] do
+        j = j + 1
+      end
+      return j <= #turning.normal and turning.contact[j] == "flying"
+    end
     local next_breakaway = 1
+    -- The world's block runs δs off the models' from its start (start_drift), and there the turn
+    -- presses it by m·(θ''·δs + 2θ'·δs') less or more: where N is small, less may be too little
+    -- to turn it with the surface. Frictionless, shaken at −21.96 m/s² on a plank swinging 8.3°
+    -- at 10 rad/s (0.1 kg), the world's block was 0.27 m off by 2.45 s, pressed 0.2 N less, and
+    -- rocked (N 0.011 N, the model's 0.22, which needs 0.056 to turn it); at 960 and 3840 Hz,
+    -- closer, it did not. Followed here a sample at a time, at the world's step.
+    local gap, gap_speed = 0, turning.contact[1] ~= "sticking" and start_speed() or 0
+    local parts = math.max(1, floor(spacing / h + 0.5))
     for k = 1, #turning.slide do
       local time_k = (k - 1) * spacing
+      if k > 1 then
+        for i = 1, parts do
+          gap, gap_speed = drift_step(gap, gap_speed, time_k - spacing + (i - 0.5) * spacing / parts, spacing / parts)
+        end
+      end
+      local press = mass * (theta0 * omega * omega * math.abs(sin(omega * time_k)) * math.abs(gap)
+                            + 2 * theta0 * omega * math.abs(math.cos(omega * time_k)) * math.abs(gap_speed))
       -- A breakaway since the last sample: the friction there is all the limit, μ·N, the way
       -- it held; at μ = w/h that alone needs N·w/2, and the surface's θ'' may add to it (μ = 2,
       -- θ0 = 40°: the model broke away at 0.0061 s and would rock by the next sample, 0.0083 s;
@@ -290,7 +315,8 @@ local function rocks_by(t)
         local most = math.max(param.mu_s, param.mu_k) * turning.normal[1]
         friction = math.max(-most, math.min(most, -drive_along(0)))
       end
-      if turning.contact[k] ~= "flying" and must_rock(time_k, friction, turning.normal[k]) then
+      if turning.contact[k] ~= "flying" and (must_rock(time_k, friction, turning.normal[k])
+          or (press > 0 and must_rock(time_k, friction, turning.normal[k] - press) and not into_lift_off(k))) then
         rocks_from = k
         break
       end
@@ -407,7 +433,7 @@ end
 -- velocity, so the block keeps (μ − μk)·(N/m)·(h/2 − late) more along the drive than the
 -- model's (level plank shaken at 13.87 m/s², μk 0: +0.0171 m/s at μs 1.2, −0.0035 at μs 0.3,
 -- as the world's).
-local function start_speed()
+function start_speed()
   local limit = math.max(param.mu_s, param.mu_k)
   local normal = turning.normal[1]
   local demand = math.abs(drive_along(h))
@@ -416,8 +442,27 @@ local function start_speed()
   local held_back = (limit - param.mu_k) * normal / mass * (0.5 * h - late)
   return math.abs(math.abs(a_x) * 0.5 * h + held_back)
 end
+-- One step dt long, at time_i, of the gap between the world's block and the model's and its
+-- speed (start_drift says how it moves).
+function drift_step(gap, gap_speed, time_i, dt)
+  local k = math.min(floor(time_i / spacing + 0.5) + 1, #turning.contact)
+  local state = turning.contact[k]
+  if state == "sticking" then
+    gap_speed = 0
+  elseif gap ~= 0 or gap_speed ~= 0 then
+    local turn_rate = theta0 * omega * math.cos(omega * time_i)
+    local spin_up = -theta0 * omega * omega * sin(omega * time_i)
+    local pull = turn_rate * turn_rate * gap
+    if state == "slipping" then
+      local way = turning.speed[k] < 0 and -1 or 1
+      pull = pull + way * param.mu_k * (spin_up * gap + 2 * turn_rate * gap_speed)
+    end
+    gap_speed = gap_speed + pull * dt
+  end
+  return gap + gap_speed * dt, gap_speed
+end
 local drifts, drifts_for = {}, nil
-local function start_drift(t)
+function start_drift(t)
   if drifts_for ~= horizon then drifts, drifts_for = {}, horizon end
   if drifts[t] then return drifts[t][1], drifts[t][2] end
   local moving = turning.contact[1] ~= "sticking"
@@ -434,24 +479,7 @@ local function start_drift(t)
   -- At most 2000 steps of it, whatever the world's rate (a tolerance is read often).
   local count = math.min(math.floor(t / h + 0.5), 2000)
   local dt = count > 0 and t / count or 0
-  for i = 1, count do
-    local time_i = (i - 0.5) * dt
-    local k = math.min(floor(time_i / spacing + 0.5) + 1, #turning.contact)
-    local state = turning.contact[k]
-    if state == "sticking" then
-      gap_speed = 0
-    elseif gap ~= 0 or gap_speed ~= 0 then
-      local turn_rate = theta0 * omega * math.cos(omega * time_i)
-      local spin_up = -theta0 * omega * omega * sin(omega * time_i)
-      local pull = turn_rate * turn_rate * gap
-      if state == "slipping" then
-        local way = turning.speed[k] < 0 and -1 or 1
-        pull = pull + way * param.mu_k * (spin_up * gap + 2 * turn_rate * gap_speed)
-      end
-      gap_speed = gap_speed + pull * dt
-    end
-    gap = gap + gap_speed * dt
-  end
+  for i = 1, count do gap, gap_speed = drift_step(gap, gap_speed, (i - 0.5) * dt, dt) end
   drifts[t] = { math.abs(gap), math.abs(gap_speed) }
   return drifts[t][1], drifts[t][2]
 end
