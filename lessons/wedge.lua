@@ -18,8 +18,8 @@
 -- (treatment_stick_slip.cpp; it used to drag the block to the plank's speed at every such
 -- reversal, 0.31 m off the exact 1.79 m at a_x = 30, a_x_omega = 5, ω = 0). Now the slide ends
 -- 0.20 m off at 240 Hz (0.19 with --substeps 8), within the row's 0.35 m, and halves with the
--- step (0.098, 0.049, 0.025 m at 480, 960, 1920 Hz): 0.12 m of it is the world's start (below),
--- a_x·h/2 carried until the block first sticks at 1.85 s; the rest is not explained yet. A
+-- step (0.098, 0.049, 0.025 m at 480, 960, 1920 Hz): 0.11 m of it is the world's start (below),
+-- (a_x − μk·g)·h/2 carried until the block first sticks at 1.85 s; the rest is not explained yet. A
 -- reversal inside a step is placed within it with the drive spread over the step (0.028 m off
 -- at a_x = 14.62, a_x_omega = 10, μs 0.9692, μk 0.7089, ω = 0, where each reversal left the
 -- sliding up to μk·g·h off; 0.0032 m now, the start's). Where the solver stops the sliding inside a step and the drive carries the
