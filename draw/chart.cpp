@@ -12,50 +12,56 @@ namespace frictionlab::draw {
 
 using namespace chart_parts;
 
-ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
-                       const Fonts& fonts) {
+namespace {
+
+using Kind = ChartLayout::Line::Kind;
+
+// What each part of a chart's drawing needs: where it draws, the chart, the layout it draws by
+// (and notes its lines and texts in, for the tests), and the look.
+struct Painter {
+  ImDrawList* draw;
+  const Chart& chart;
+  ChartLayout& layout;
+  const Theme& theme;
+  const Fonts& fonts;
+  float s = fonts.scale;
+  ImFont* font = fonts.small;
+  float text = font->FontSize;
+
+  // Values already in axis space (log10 of the value on a log axis) to the screen.
+  ImVec2 at_axis_value(double x, double y) const {
+    return ImVec2(layout.low_left.x + static_cast<float>(share(x, layout.x_low, layout.x_high)) * (layout.high_right.x - layout.low_left.x),
+                  layout.low_left.y - static_cast<float>(share(y, layout.y_low, layout.y_high)) * (layout.low_left.y - layout.high_right.y));
+  }
+  void line(Kind kind, ImVec2 from, ImVec2 to, ImU32 colour, float thickness) {
+    draw->AddLine(from, to, colour, thickness);
+    layout.lines.push_back({kind, from, to, colour});
+  }
+};
+
+// A chart that is only a legend: its keys in one column, then its notes.
+void draw_legend_only(ImDrawList* draw, ImVec2 corner, const Chart& chart, const Theme& theme, const Fonts& fonts) {
   const float s = fonts.scale;
   ImFont* font = fonts.small;
   const float text = font->FontSize;
-  if (!chart.plain) {
-    draw->AddRectFilled(corner, ImVec2(corner.x + size.x, corner.y + size.y), theme.panel);
-    draw->AddText(fonts.body, fonts.body->FontSize, ImVec2(corner.x + 8.0f * s, corner.y + 4.0f * s), theme.text,
-                  chart.title.c_str());
-  }
-  const std::vector<Key> keys = keys_of(chart);
   const float line = text + 3.0f * s;
-  if (chart.legend == Chart::Legend::only) {
-    float y = corner.y + fonts.body->FontSize + text + 16.0f * s;
-    for (const Key& key : keys) {
-      draw->AddRectFilled(ImVec2(corner.x + 12.0f * s, y + 2.0f * s), ImVec2(corner.x + 24.0f * s, y + text - 2.0f * s), key.colour);
-      draw->AddText(font, text, ImVec2(corner.x + 30.0f * s, y), theme.text, key.name.c_str());
-      y += line;
-    }
-    for (const std::string& note : chart.notes) {
-      draw->AddText(font, text, ImVec2(corner.x + 12.0f * s, y + 6.0f * s), theme.faint_text, note.c_str());
-      y += line;
-    }
-    return {};
+  float y = corner.y + fonts.body->FontSize + text + 16.0f * s;
+  for (const Key& key : keys_of(chart)) {
+    draw->AddRectFilled(ImVec2(corner.x + 12.0f * s, y + 2.0f * s), ImVec2(corner.x + 24.0f * s, y + text - 2.0f * s), key.colour);
+    draw->AddText(font, text, ImVec2(corner.x + 30.0f * s, y), theme.text, key.name.c_str());
+    y += line;
   }
-  ChartLayout layout = layout_chart(chart, corner, size, fonts);
-  if (!layout.drawable) return layout;
-  const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
-  const auto line_of = [&](ChartLayout::Line::Kind kind, ImVec2 from, ImVec2 to, ImU32 colour, float thickness) {
-    draw->AddLine(from, to, colour, thickness);
-    layout.lines.push_back({kind, from, to, colour});
-  };
-  using Kind = ChartLayout::Line::Kind;
-  const float width = high_right.x - low_left.x;
-  const ChartAxes axes = axes_of(chart);
-  const auto at_axis_value = [&](double x, double y) {  // values already in axis space
-    return ImVec2(low_left.x + static_cast<float>(share(x, layout.x_low, layout.x_high)) * width,
-                  low_left.y - static_cast<float>(share(y, layout.y_low, layout.y_high)) * (low_left.y - high_right.y));
-  };
+  for (const std::string& note : chart.notes) {
+    draw->AddText(font, text, ImVec2(corner.x + 12.0f * s, y + 6.0f * s), theme.faint_text, note.c_str());
+    y += line;
+  }
+}
 
-  draw->PushClipRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x + 1.0f, low_left.y + 1.0f), true);
-  for (const ChartCell& cell : chart.cells) {
+// A map's cells, each filling the space half-way to its neighbours.
+void draw_map(const Painter& p, const ChartAxes& axes) {
+  for (const ChartCell& cell : p.chart.cells) {
     if (!axes.x.shows(cell.x) || !axes.y.shows(cell.y) || cell.category < 0 ||
-        cell.category >= static_cast<int>(chart.categories.size())) {
+        cell.category >= static_cast<int>(p.chart.categories.size())) {
       continue;
     }
     const double x = axes.x.map(cell.x), y = axes.y.map(cell.y);
@@ -67,86 +73,113 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     };
     const auto [x0, x1] = edge(axes.x_edges, x);
     const auto [y0, y1] = edge(axes.y_edges, y);
-    draw->AddRectFilled(at_axis_value(x0, y1), at_axis_value(x1, y0), chart.categories[static_cast<std::size_t>(cell.category)].second);
+    p.draw->AddRectFilled(p.at_axis_value(x0, y1), p.at_axis_value(x1, y0),
+                          p.chart.categories[static_cast<std::size_t>(cell.category)].second);
   }
-  // The zero lines of a plain chart are darker: forces are read against zero.
+}
+
+// The grid at the ticks. The zero lines of a plain chart are darker: forces are read against zero.
+void draw_grid(Painter& p) {
+  const ChartLayout& layout = p.layout;
   for (const double tick : layout.x_ticks) {
-    const float x = at_axis_value(tick, layout.y_low).x;
-    const bool zero = chart.plain && tick == 0.0;
-    line_of(zero ? Kind::axis : Kind::grid, ImVec2(x, high_right.y), ImVec2(x, low_left.y), zero ? theme.axis : theme.grid, 1.0f);
+    const float x = p.at_axis_value(tick, layout.y_low).x;
+    const bool zero = p.chart.plain && tick == 0.0;
+    p.line(zero ? Kind::axis : Kind::grid, ImVec2(x, layout.high_right.y), ImVec2(x, layout.low_left.y),
+           zero ? p.theme.axis : p.theme.grid, 1.0f);
   }
   for (const double tick : layout.y_ticks) {
-    const float y = at_axis_value(layout.x_low, tick).y;
-    const bool zero = chart.plain && tick == 0.0;
-    line_of(zero ? Kind::axis : Kind::grid, ImVec2(low_left.x, y), ImVec2(high_right.x, y), zero ? theme.axis : theme.grid, 1.0f);
+    const float y = p.at_axis_value(layout.x_low, tick).y;
+    const bool zero = p.chart.plain && tick == 0.0;
+    p.line(zero ? Kind::axis : Kind::grid, ImVec2(layout.low_left.x, y), ImVec2(layout.high_right.x, y),
+           zero ? p.theme.axis : p.theme.grid, 1.0f);
   }
-  for (const auto& [x0, x1] : chart.bands) {
-    const float left = layout.to_screen(x0, 1.0).x, right = layout.to_screen(x1, 1.0).x;
-    draw->AddRectFilled(ImVec2(left, high_right.y), ImVec2(std::max(right, left + 1.0f), low_left.y), chart.band_colour);
+}
+
+// The shaded spans of x, across the data's height.
+void draw_bands(const Painter& p) {
+  for (const auto& [x0, x1] : p.chart.bands) {
+    const float left = p.layout.to_screen(x0, 1.0).x, right = p.layout.to_screen(x1, 1.0).x;
+    p.draw->AddRectFilled(ImVec2(left, p.layout.high_right.y), ImVec2(std::max(right, left + 1.0f), p.layout.low_left.y),
+                          p.chart.band_colour);
   }
-  // The theory under the measurements, each curve in its own pattern: the branch that applies
-  // now bold.
-  for (std::size_t c = 0; c < layout.theory.size(); ++c) {
-    const ChartCurve& curve = chart.theory[c];
-    const float thickness = (static_cast<int>(c) == layout.active ? 3.5f : 1.8f) * s;
-    for (const std::vector<ImVec2>& piece : layout.theory[c]) draw_dashed(draw, piece, curve.colour, thickness, curve.dash * s, curve.gap * s);
+}
+
+// The theory under the measurements, each curve in its own pattern: the branch that applies
+// now bold.
+void draw_theory_curves(const Painter& p) {
+  for (std::size_t c = 0; c < p.layout.theory.size(); ++c) {
+    const ChartCurve& curve = p.chart.theory[c];
+    const float thickness = (static_cast<int>(c) == p.layout.active ? 3.5f : 1.8f) * p.s;
+    for (const std::vector<ImVec2>& piece : p.layout.theory[c]) {
+      draw_dashed(p.draw, piece, curve.colour, thickness, curve.dash * p.s, curve.gap * p.s);
+    }
   }
+}
+
+// Each series: the labels beside its points, its line (each segment in its regime's colour,
+// where it has them), its markers, and the present's dot on its last point.
+void draw_series(const Painter& p) {
+  const Chart& chart = p.chart;
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& series = chart.series[k];
-    const std::vector<ImVec2>& points = layout.series_points[k];
-    const std::vector<std::size_t>& indices = layout.series_indices[k];
+    const std::vector<ImVec2>& points = p.layout.series_points[k];
+    const std::vector<std::size_t>& indices = p.layout.series_indices[k];
     const std::vector<ImU32>* colours = k < chart.segment_colours.size() && !chart.segment_colours[k].empty() ? &chart.segment_colours[k] : nullptr;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (indices[i] < series.labels.size()) {
-        draw->AddText(font, 0.85f * text, ImVec2(points[i].x + 4.0f * s, points[i].y - 0.9f * text),
-                      readable_ink(series.colour, theme.panel), series.labels[indices[i]].c_str());
+        p.draw->AddText(p.font, 0.85f * p.text, ImVec2(points[i].x + 4.0f * p.s, points[i].y - 0.9f * p.text),
+                        readable_ink(series.colour, p.theme.panel), series.labels[indices[i]].c_str());
       }
     }
     if (series.line && colours != nullptr) {
       for (std::size_t i = 1; i < points.size(); ++i) {
         const ImU32 colour = indices[i] < colours->size() ? (*colours)[indices[i]] : series.colour;
-        draw->AddLine(points[i - 1], points[i], colour, 2.5f * s);
+        p.draw->AddLine(points[i - 1], points[i], colour, 2.5f * p.s);
       }
     } else if (series.line && points.size() > 1) {
-      draw->AddPolyline(points.data(), static_cast<int>(points.size()), series.colour, ImDrawFlags_None, 2.0f * s);
+      p.draw->AddPolyline(points.data(), static_cast<int>(points.size()), series.colour, ImDrawFlags_None, 2.0f * p.s);
     }
-    for (const ImVec2& p : points) {
-      const float r = 3.5f * s;
-      if (series.marker == Marker::dot) draw->AddCircleFilled(p, r, series.colour);
+    for (const ImVec2& at : points) {
+      const float r = 3.5f * p.s;
+      if (series.marker == Marker::dot) p.draw->AddCircleFilled(at, r, series.colour);
       if (series.marker == Marker::cross) {
-        draw->AddLine(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), series.colour, 2.0f * s);
-        draw->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), series.colour, 2.0f * s);
+        p.draw->AddLine(ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r), series.colour, 2.0f * p.s);
+        p.draw->AddLine(ImVec2(at.x - r, at.y + r), ImVec2(at.x + r, at.y - r), series.colour, 2.0f * p.s);
       }
     }
-    if (chart.mark_now && !points.empty()) draw->AddCircleFilled(points.back(), 4.0f * s, chart.now_colour, 12);
+    if (chart.mark_now && !points.empty()) p.draw->AddCircleFilled(points.back(), 4.0f * p.s, chart.now_colour, 12);
   }
   if (chart.mark_now && std::isfinite(chart.now_x)) {
-    const float x = layout.to_screen(chart.now_x, 1.0).x;
-    draw->AddLine(ImVec2(x, high_right.y), ImVec2(x, low_left.y), chart.now_colour, 1.5f * s);
+    const float x = p.layout.to_screen(chart.now_x, 1.0).x;
+    p.draw->AddLine(ImVec2(x, p.layout.high_right.y), ImVec2(x, p.layout.low_left.y), chart.now_colour, 1.5f * p.s);
   }
-  // The levels over the series: the values the class reads off the plot.
-  for (const ChartLayout::Level& placed : layout.levels) {
-    const ChartLevel& level = chart.levels[placed.index];
+}
+
+// The levels over the series: the values the class reads off the plot.
+void draw_levels(const Painter& p) {
+  for (const ChartLayout::Level& placed : p.layout.levels) {
+    const ChartLevel& level = p.chart.levels[placed.index];
     // Solid: every dash pattern is a theory curve's (a teacher's trial read push's dashed
     // −μs·N level for its dashed "sticking: f = −F" key, both grey). Thin and labelled, it is no
     // series either (those are 2 points and more, in the series' colours).
-    draw->AddLine(ImVec2(low_left.x, placed.y), ImVec2(high_right.x, placed.y), level.colour, 1.5f * s);
-    draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * s, placed.at.w + 1.0f),
-                        (theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
-    draw->AddText(font, text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, theme.panel), level.text.c_str());
+    p.draw->AddLine(ImVec2(p.layout.low_left.x, placed.y), ImVec2(p.layout.high_right.x, placed.y), level.colour, 1.5f * p.s);
+    p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
+                          (p.theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
+    p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
   }
-  if (!chart.message.empty()) {
-    draw->AddText(font, text, ImVec2(low_left.x + 4.0f * s, high_right.y + 4.0f * s), theme.bad, chart.message.c_str(), nullptr,
-                  width - 8.0f * s);
-  }
-  draw->PopClipRect();
+}
 
-  // Axes, tick labels and titles.
-  draw->AddRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), theme.axis, 0.0f, 0, 1.0f);
+// The data area's edges, a steady chart's tick marks, the tick labels and the axes' names.
+void draw_axes(Painter& p, ImVec2 corner) {
+  const Chart& chart = p.chart;
+  ChartLayout& layout = p.layout;
+  const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
+  p.draw->AddRect(ImVec2(low_left.x, high_right.y), ImVec2(high_right.x, low_left.y), p.theme.axis, 0.0f, 0, 1.0f);
   for (const auto& [from, to] : {std::pair{low_left, ImVec2(high_right.x, low_left.y)}, std::pair{low_left, ImVec2(low_left.x, high_right.y)},
                                  std::pair{high_right, ImVec2(high_right.x, low_left.y)}, std::pair{high_right, ImVec2(low_left.x, high_right.y)}}) {
-    layout.lines.push_back({Kind::axis, from, to, theme.axis});
+    layout.lines.push_back({Kind::axis, from, to, p.theme.axis});
   }
+  const float s = p.s, text = p.text;
   const float gap = (chart.plain ? 5.0f : 4.0f) * s;
   if (chart.steady) {
     // Tick marks outside the data in the axes' colour, between the edge and the tick labels:
@@ -154,41 +187,74 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
     // levels are read against (WCAG 2.1 1.4.11 asks 3:1 of them).
     const float length = 4.0f * s, thickness = 1.5f * s;
     for (const double tick : layout.y_ticks) {
-      const float y = at_axis_value(layout.x_low, tick).y;
-      line_of(Kind::tick, ImVec2(low_left.x - length, y), ImVec2(low_left.x, y), theme.axis, thickness);
+      const float y = p.at_axis_value(layout.x_low, tick).y;
+      p.line(Kind::tick, ImVec2(low_left.x - length, y), ImVec2(low_left.x, y), p.theme.axis, thickness);
     }
     for (const double tick : layout.x_ticks) {
-      const float x = at_axis_value(tick, layout.y_low).x;
-      line_of(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + length), theme.axis, thickness);
+      const float x = p.at_axis_value(tick, layout.y_low).x;
+      p.line(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + length), p.theme.axis, thickness);
     }
   }
   using TextKind = ChartLayout::AxisText::Kind;
   const auto axis_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImU32 colour) {
-    draw->AddText(font, text, at, colour, words.c_str());
-    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(font, words), at.y + text)});
+    p.draw->AddText(p.font, text, at, colour, words.c_str());
+    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(p.font, words), at.y + text)});
   };
   const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
-    const float x = at_axis_value(layout.x_ticks[i], layout.y_low).x;
+    const float x = p.at_axis_value(layout.x_ticks[i], layout.y_low).x;
     const std::string& label = layout.x_tick_labels[i];
-    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(font, label), low_left.y + x_labels_below), theme.text);
+    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(p.font, label), low_left.y + x_labels_below), p.theme.text);
   }
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
-    const float y = at_axis_value(layout.x_low, layout.y_ticks[i]).y;
+    const float y = p.at_axis_value(layout.x_low, layout.y_ticks[i]).y;
     const std::string& label = layout.y_tick_labels[i];
-    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(font, label) - gap, y - 0.5f * text), theme.text);
+    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(p.font, label) - gap, y - 0.5f * text), p.theme.text);
   }
+  const float width = high_right.x - low_left.x;
   const ImVec2 x_label_at = chart.steady && std::isfinite(layout.x_label_at.x)
                                 ? layout.x_label_at
-                                : ImVec2(low_left.x + 0.5f * (width - width_of(font, chart.x_label)),
+                                : ImVec2(low_left.x + 0.5f * (width - width_of(p.font, chart.x_label)),
                                          low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
-  axis_text(TextKind::x_name, chart.x_label, x_label_at, chart.plain ? theme.faint_text : theme.text);
+  axis_text(TextKind::x_name, chart.x_label, x_label_at, chart.plain ? p.theme.faint_text : p.theme.text);
   const ImVec2 y_label_at = chart.steady && std::isfinite(layout.y_label_at.x) ? layout.y_label_at
                             : chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
                                           : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
-  axis_text(TextKind::y_name, chart.y_label, y_label_at, theme.faint_text);
+  axis_text(TextKind::y_name, chart.y_label, y_label_at, p.theme.faint_text);
+}
 
-  draw_legend(draw, chart, keys, layout, size, theme, fonts);
+}  // namespace
+
+ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
+                       const Fonts& fonts) {
+  const float s = fonts.scale;
+  if (!chart.plain) {
+    draw->AddRectFilled(corner, ImVec2(corner.x + size.x, corner.y + size.y), theme.panel);
+    draw->AddText(fonts.body, fonts.body->FontSize, ImVec2(corner.x + 8.0f * s, corner.y + 4.0f * s), theme.text,
+                  chart.title.c_str());
+  }
+  if (chart.legend == Chart::Legend::only) {
+    draw_legend_only(draw, corner, chart, theme, fonts);
+    return {};
+  }
+  ChartLayout layout = layout_chart(chart, corner, size, fonts);
+  if (!layout.drawable) return layout;
+  Painter painter{draw, chart, layout, theme, fonts};
+  // What lies in the data area, clipped to it, from the bottom layer up.
+  draw->PushClipRect(ImVec2(layout.low_left.x, layout.high_right.y), ImVec2(layout.high_right.x + 1.0f, layout.low_left.y + 1.0f), true);
+  draw_map(painter, axes_of(chart));
+  draw_grid(painter);
+  draw_bands(painter);
+  draw_theory_curves(painter);
+  draw_series(painter);
+  draw_levels(painter);
+  if (!chart.message.empty()) {
+    draw->AddText(painter.font, painter.text, ImVec2(layout.low_left.x + 4.0f * s, layout.high_right.y + 4.0f * s), theme.bad,
+                  chart.message.c_str(), nullptr, layout.high_right.x - layout.low_left.x - 8.0f * s);
+  }
+  draw->PopClipRect();
+  draw_axes(painter, corner);
+  draw_legend(draw, chart, keys_of(chart), layout, size, theme, fonts);
   return layout;
 }
 

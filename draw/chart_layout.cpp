@@ -16,6 +16,12 @@ namespace {
 // The widest x tick label a steady chart keeps room for beyond its data's right end.
 constexpr const char* x_tick_room = "\u22128888";
 
+float widest_label(const std::vector<std::string>& labels, ImFont* font) {
+  float widest = 0.0f;
+  for (const std::string& label : labels) widest = std::max(widest, width_of(font, label));
+  return widest;
+}
+
 }  // namespace
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
@@ -37,7 +43,6 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
 
   const float line = text + 3.0f * s;
   if (chart.plain) {
-    if (chart.steady) label_width = std::max(label_width, width_of(font, chart.tick_room));
     layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
     layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
     if (chart.steady) {
@@ -55,6 +60,15 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
       }
     }
+    // The tick column as wide as the labels the data area's height leads to (fit_y_ticks): the
+    // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). A steady chart keeps
+    // room for `tick_room` too, so that it holds still as the run widens its range.
+    ChartLayout trial = layout;
+    fit_y_ticks(chart, axes.y, text, s, trial);
+    float widest = widest_label(trial.y_tick_labels, font);
+    if (chart.steady) widest = std::max(widest, width_of(font, chart.tick_room));
+    layout.low_left.x += widest - label_width;
+    label_width = widest;
   } else {
     // The legend goes under the chart, in two columns, so it hides none of it.
     const std::size_t rows = chart.legend == Chart::Legend::under ? (keys.size() + 1) / 2 : 0;
@@ -112,6 +126,17 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
 
   if (!place_legend(chart, keys, corner, size, fonts, layout, place, set_x_ticks)) return layout;
   fit_y_ticks(chart, axes.y, text, s, layout);
+  // A steady chart's legend rows above the data may have left it another height, and other
+  // ticks: the column takes their width (its legend is off the data, so nothing else moves).
+  if (chart.plain && chart.steady && widest_label(layout.y_tick_labels, font) > label_width) {
+    layout.low_left.x += widest_label(layout.y_tick_labels, font) - label_width;
+    if (layout.high_right.x - layout.low_left.x < 20.0f) {
+      layout.drawable = false;
+      return layout;
+    }
+    set_x_ticks(layout.high_right.x - layout.low_left.x);
+    place();
+  }
   // Each level's text at the data's right end, above its line, or under it when the line is
   // near the top; none for a level off the axis.
   for (std::size_t i = 0; i < chart.levels.size(); ++i) {

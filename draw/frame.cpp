@@ -244,6 +244,10 @@ ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
   return ImVec2(inside_width, size.y - 2.0f * imgui.WindowPadding.y - top);
 }
 
+// The least width of a plot's data, as a share of its panel's, before the window shows fewer
+// plots side by side (a page at a time): the rest is for its axis labels and a legend beside it.
+constexpr float min_data_share = 0.5f;
+
 // The plots under the world: up to three side by side, more on a second row. In the window,
 // when that leaves a plot's legend no room off its data (large text: three plots across a
 // projector put 3–5-key legends over the data), fewer go side by side, a page at a time; the
@@ -251,44 +255,34 @@ ImVec2 chart_area(const std::string& title, ImVec2 size, bool pager) {
 // bar. The choice counts every key a plot can have (its theory curves, shown or not yet), so
 // the pages stay as the run goes on and at the reveal. A picture, which nobody clicks, keeps
 // every plot in view.
-// Before the reveal the time axis must not tell how long the run is: a lesson runs until what it
-// teaches has been seen, so push's axis, drawn before Play, gave a mystery's μs away (it runs a
-// while past the breakaway at μs·m·g), and any lesson's axis says roughly when things happen.
-// The axis grows with the run instead, to the next of 1, 2, 5, 10, 20, ... s.
-double time_axis_before_reveal(double now) {
-  double span = 1.0;
-  for (int i = 0; span < now && i < 60; ++i) span *= (i % 3 == 1) ? 2.5 : 2.0;
-  return span;
-}
+// The plots a frame draws: the lesson's, then the window's extra plot (the force gauge).
+struct FramePlots {
+  const lessons::Lesson& lesson;
+  const FrameStyle& style;
+  std::size_t count() const { return lesson.plots().size() + (style.extra_plot ? 1 : 0); }
+  const std::string& title(std::size_t i) const {
+    return i == lesson.plots().size() ? style.extra_plot_title : lesson.plots()[i].title;
+  }
+};
 
-// The least width of a plot's data, as a share of its panel's, before the window shows fewer
-// plots side by side (a page at a time): the rest is for its axis labels and a legend beside it.
-constexpr float min_data_share = 0.5f;
-
-void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
-                const Theme& colours) {
+// How many plots go side by side: on a projector one, the key plot its row's full width; in the
+// window up to three, fewer while a lesson plot's legend has no room off its data at that many
+// (a page of one row when that is fewer than all of them), or leaves the data a sliver.
+std::size_t plots_per_row(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
+                          const Theme& colours) {
+  const FramePlots plots{lesson, style};
   const Fonts& fonts = *style.fonts;
   const float s = fonts.scale;
-  const auto& plots = lesson.plots();
-  // The window's extra plot (the force gauge) comes last.
-  const std::size_t plot_count = plots.size() + (style.extra_plot ? 1 : 0);
-  // No row for them: a projector's frame gives a lesson with no plots of its own the row.
-  if (plot_count == 0 || layout.plots_size.y == 0.0f) return;
-  const auto title_of = [&](std::size_t i) -> const std::string& {
-    return i == plots.size() ? style.extra_plot_title : plots[i].title;
-  };
   const float gap = 4.0f * s;
-  const std::size_t most = std::min<std::size_t>(plot_count, 3);
-  // Each lesson plot's legend has room at `per_row` plots side by side (a page of one row when
-  // that is fewer than all of them).
+  const std::size_t most = std::min<std::size_t>(plots.count(), 3);
   const auto all_have_room = [&](std::size_t per_row) {
     const bool paged = per_row < most;
-    const std::size_t rows = paged ? 1 : (plot_count + per_row - 1) / per_row;
+    const std::size_t rows = paged ? 1 : (plots.count() + per_row - 1) / per_row;
     const ImVec2 size(layout.plots_size.x / static_cast<float>(per_row) - (per_row > 1 ? gap : 0.0f),
                       layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
-    for (std::size_t i = 0; i < plots.size(); ++i) {
+    for (std::size_t i = 0; i < lesson.plots().size(); ++i) {
       // A little less than the panel will hold, so that rounding does not tip the choice.
-      const ImVec2 area = chart_area(title_of(i), size, paged && i % per_row == 0);
+      const ImVec2 area = chart_area(plots.title(i), size, paged && i % per_row == 0);
       const Chart chart = plot_chart(lesson, i, time_span, colours, true);
       const ImVec2 room(area.x - 4.0f * s, area.y - 4.0f * s);
       if (!legend_has_room(chart, room, fonts)) return false;
@@ -305,7 +299,65 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
   } else if (style.parameters_panel) {
     while (per_row > 1 && !all_have_room(per_row)) --per_row;
   }
-  const bool paged = per_row < most;
+  return per_row;
+}
+
+// The pager's ← and → at the head of the first plot's panel, and the page it shows: kept per
+// lesson (another lesson opens on its first page, not on the page the last was left at),
+// turned by the keys or the buttons, the extra plot's page while the hand pulls.
+std::size_t turn_plot_pages(const lessons::Lesson& lesson, const FrameStyle& style, std::size_t page_count) {
+  ImGuiStorage* state = ImGui::GetStateStorage();
+  const ImGuiID kept = ImGui::GetID(("page of " + lesson.path()).c_str());
+  std::size_t page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
+  if (style.turn_plot_pages != 0) {
+    const long turned = static_cast<long>(page) + style.turn_plot_pages;
+    page = static_cast<std::size_t>(std::clamp<long>(turned, 0, static_cast<long>(page_count) - 1));
+  }
+  if (style.show_extra_plot && style.extra_plot) page = page_count - 1;  // the extra plot is the last
+  const auto turn = [&](const char* label, bool enabled, std::size_t to) {
+    ImGui::BeginDisabled(!enabled);
+    if (ImGui::Button(label)) page = to;
+    note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+  };
+  turn("\u2190", page > 0, page > 0 ? page - 1 : 0);
+  turn("\u2192", page + 1 < page_count, page + 1);
+  state->SetInt(kept, static_cast<int>(page));
+  return page;
+}
+
+// Plot number `i` in its open panel, under its title (or the pager's line): the extra plot, or
+// the lesson's, whose parts and levels' texts are noted for the tests.
+void plot_in_panel(lessons::Lesson& lesson, const FrameStyle& style, std::size_t i, double time_span, const Theme& colours) {
+  const ImVec2 area = ImGui::GetContentRegionAvail();
+  if (i == lesson.plots().size()) {
+    style.extra_plot(ImGui::GetCursorScreenPos(), area);
+    return;
+  }
+  const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area,
+                                      colours, *style.fonts, !style.theory_kept_back(), style.script_words, style.projector,
+                                      style.hidden.theory());
+  if (style.record != nullptr) {
+    style.record->plots.push_back({i, drawn});
+    // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
+    const ImVec4 data(drawn.low_left.x, drawn.high_right.y, drawn.high_right.x, drawn.low_left.y);
+    for (const ChartLayout::Level& level : drawn.levels) {
+      style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, data});
+    }
+  }
+}
+
+void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLayout& layout, double time_span,
+                const Theme& colours) {
+  const FramePlots plots{lesson, style};
+  const float s = style.fonts->scale;
+  const std::size_t plot_count = plots.count();
+  // No row for them: a projector's frame gives a lesson with no plots of its own the row.
+  if (plot_count == 0 || layout.plots_size.y == 0.0f) return;
+  const float gap = 4.0f * s;
+  const std::size_t per_row = plots_per_row(lesson, style, layout, time_span, colours);
+  const bool paged = per_row < std::min<std::size_t>(plot_count, 3);
   const std::size_t page_count = paged ? (plot_count + per_row - 1) / per_row : 1;
   const std::size_t rows_of_plots = paged ? 1 : (plot_count + per_row - 1) / per_row;
   const float width = layout.plots_size.x / static_cast<float>(per_row);
@@ -330,62 +382,26 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
         ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 1.0f * s));
       }
       open = begin_panel(id.c_str(), "", at, size);
-      ImGuiStorage* state = ImGui::GetStateStorage();
-      // Kept per lesson: another lesson opens on its first page, not on the page the last was left at.
-      const ImGuiID kept = ImGui::GetID(("page of " + lesson.path()).c_str());
-      page = std::min<std::size_t>(static_cast<std::size_t>(std::max(0, state->GetInt(kept, 0))), page_count - 1);
-      if (style.turn_plot_pages != 0) {
-        const long turned = static_cast<long>(page) + style.turn_plot_pages;
-        page = static_cast<std::size_t>(std::clamp<long>(turned, 0, static_cast<long>(page_count) - 1));
-      }
-      if (style.show_extra_plot && style.extra_plot) page = page_count - 1;  // the extra plot is the last
-      const auto turn = [&](const char* label, bool enabled, std::size_t to) {
-        ImGui::BeginDisabled(!enabled);
-        if (ImGui::Button(label)) page = to;
-        note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-        ImGui::EndDisabled();
-        ImGui::SameLine();
-      };
-      turn("\u2190", page > 0, page > 0 ? page - 1 : 0);
-      turn("\u2192", page + 1 < page_count, page + 1);
-      state->SetInt(kept, static_cast<int>(page));
+      page = turn_plot_pages(lesson, style, page_count);
       i = page * per_row;
     } else {
       i = page * per_row + k;
       if (i >= plot_count) break;
     }
-    const std::string& title = title_of(i);
+    const std::string& title = plots.title(i);
     const bool inside = !pager && title_inside(title, size);
     if (!pager) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
     if (open) {
-      if (pager) {
-        // The title on the buttons' line, as a title bar would have it, with the page's number.
-        ImGui::AlignTextToFramePadding();
-        const std::string line = pager_line(title, page, page_count);
+      if (pager || inside) {
+        // The title on the buttons' line, as a title bar would have it, with the page's number;
+        // or wrapped inside the panel, longer than its bar.
+        if (pager) ImGui::AlignTextToFramePadding();
+        const std::string line = pager ? pager_line(title, page, page_count) : title;
         ImGui::PushTextWrapPos(0.0f);
         shown_text(line.c_str());
         ImGui::PopTextWrapPos();
-      } else if (inside) {
-        ImGui::PushTextWrapPos(0.0f);
-        shown_text(title.c_str());
-        ImGui::PopTextWrapPos();
       }
-      const ImVec2 area = ImGui::GetContentRegionAvail();
-      if (i == plots.size()) {
-        style.extra_plot(ImGui::GetCursorScreenPos(), area);
-      } else {
-        const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(),
-                                            area, colours, fonts, !style.theory_kept_back(), style.script_words,
-                                            style.projector);
-        if (style.record != nullptr) {
-          style.record->plots.push_back({i, drawn});
-          // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
-          const ImVec4 data(drawn.low_left.x, drawn.high_right.y, drawn.high_right.x, drawn.low_left.y);
-          for (const ChartLayout::Level& level : drawn.levels) {
-            style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, data});
-          }
-        }
-      }
+      plot_in_panel(lesson, style, i, time_span, colours);
     }
     end_panel();
     if (pager && style.projector) ImGui::PopStyleVar(3);
@@ -686,8 +702,7 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
     end_panel();
   }
   const double now = lesson.scene().time();
-  draw_plots(lesson, style, layout,
-             style.theory_kept_back() ? time_axis_before_reveal(now) : std::max(readings.duration, now), theme(style.theme));
+  draw_plots(lesson, style, layout, time_axis_span(readings.duration, now, style.hidden.theory()), theme(style.theme));
   column_panels(lesson, style, readings, layout, column);
   ImGui::PopFont();
 }

@@ -15,10 +15,10 @@ struct Range {
   double low = 0.0, high = 1.0;
 };
 
-// Data range with the zero line in it (forces are read against zero) and a margin.
-Range range_of(const std::vector<const std::vector<double>*>& series, std::size_t count, bool include_zero) {
+// What the values reach, with the zero line in it (forces are read against zero).
+Range extent_of(const std::vector<const std::vector<double>*>& series, std::size_t count) {
   if (count == 0) return {};  // nothing recorded yet: 0 to 1
-  double low = include_zero ? 0.0 : 1e300, high = include_zero ? 0.0 : -1e300;
+  double low = 0.0, high = 0.0;
   for (const auto* values : series) {
     for (std::size_t i = 0; i < count && i < values->size(); ++i) {
       if (!std::isfinite((*values)[i])) continue;
@@ -26,20 +26,15 @@ Range range_of(const std::vector<const std::vector<double>*>& series, std::size_
       high = std::max(high, (*values)[i]);
     }
   }
-  if (low > high) return {};
   // Rounding noise (a resting block's speed of 1e-9 m/s) is not drawn as a signal: the axis
-  // spans at least a thousandth of a unit, or a millionth of the values' size.
-  const double least = std::max(1e-3, 1e-6 * std::max(std::abs(low), std::abs(high)));
-  // Spans in halves: values near ±1.7e308 are finite, but their span is not.
+  // reaches at least a thousandth of a unit from zero, or a millionth of the values' size.
+  // (Spans in halves: values near ±1.7e308 are finite, but their span is not.)
+  const double least = std::max(1e-3, 1e-6 * std::max(-low, high));
   if (0.5 * high - 0.5 * low < 0.5 * least) {
-    const double middle = 0.5 * low + 0.5 * high;
-    low = std::min(low, middle - 0.5 * least);
-    high = std::max(high, middle + 0.5 * least);
-    if (include_zero && low < 0.0 && middle >= 0.0 && std::abs(middle) < least) low = std::min(low, 0.0);
+    if (high >= -low) high = low + least;
+    else low = high - least;
   }
-  const double margin = 0.12 * (0.5 * high - 0.5 * low);  // 6 % of the span
-  constexpr double largest = std::numeric_limits<double>::max();
-  return {low < 0.0 || !include_zero ? std::max(low - margin, -largest) : low, std::min(high + margin, largest)};
+  return {low, high};
 }
 
 // The next of 1, 2, 5, 10, 20, ... times a power of ten at or above `size` (> 0), at most the
@@ -53,15 +48,20 @@ double round_bound(double size) {
   return largest;
 }
 
-// A range from the record alone (the theory kept back while the class predicts) widened to
-// round ends, as the time axis grows before the reveal: a range fitted to the data drawn so far
-// rescaled the plot every frame of the run (a teacher's trial: push's friction axis moved under
-// the class's eyes from 0 to −4.2 N). The data only add to it, so it only grows, and by a step of
-// 2 or 2.5 times at once: the scale holds still between, three steps a decade.
+// An axis' ends: each side of zero the next of 1, 2, 5 × 10ⁿ beyond what the values reach and a
+// margin of 3 % of it (so no curve runs along the frame's line). Before and after the reveal
+// alike (issue 31: push's x axis read 0–10 N before it, 0–6.3 N after), and from the theory's
+// values too, shown or not (push's friction axis reads −5 to 0 N from the opening): the steps of
+// 2 or 2.5 times tell a class no more of a level it is to predict than which of them it is in,
+// and the record only adds to the range, so the scale holds still between its steps, three a
+// decade. The margin is each side's own: a span's (6 % of 9.4 N) took spring_pull's ±4.7 N to
+// −5 and 10 N.
 Range round_ends(Range range) {
-  if (range.low < 0.0) range.low = -round_bound(-range.low);
-  if (range.high > 0.0) range.high = round_bound(range.high);
-  return range;
+  constexpr double margin = 1.03;
+  constexpr double largest = std::numeric_limits<double>::max();
+  // Values near ±1.7e308 are finite, but 1.03 times them is not: their end is the largest double.
+  const auto side = [&](double reach) { return reach > largest / margin ? largest : round_bound(reach * margin); };
+  return {range.low < 0.0 ? -side(-range.low) : 0.0, range.high > 0.0 ? side(range.high) : 0.0};
 }
 
 // A probe as the class reads it: the script's label for it, else its name in words.
@@ -87,151 +87,233 @@ std::pair<double, double> sampling_range(double low, double high) {
 
 constexpr int theory_sample_count = 256;
 
-}  // namespace
+// What one plot of the lesson reads: its record's x and y values, probe by probe.
+struct PlotRecord {
+  const lessons::Plot& plot;
+  bool over_time;
+  std::vector<const std::vector<double>*> xs, ys;
+  std::size_t count;
+};
 
-Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
-                 bool with_theory, bool steady) {
+PlotRecord record_of(lessons::Lesson& lesson, std::size_t plot_index) {
   const lessons::Plot& plot = lesson.plots().at(plot_index);
   const Scene& scene = lesson.scene();
-  const bool over_time = plot.kind == lessons::PlotKind::time;
-  const std::vector<double>& times = scene.times();
-  std::vector<const std::vector<double>*> xs, ys;
+  PlotRecord record{plot, plot.kind == lessons::PlotKind::time, {}, {}, scene.times().size()};
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
-    xs.push_back(over_time ? &times : &scene.probe(plot.x_of(k)).history);
-    ys.push_back(&scene.probe(plot.y[k]).history);
+    record.xs.push_back(record.over_time ? &scene.times() : &scene.probe(plot.x_of(k)).history);
+    record.ys.push_back(&scene.probe(plot.y[k]).history);
   }
-  const std::size_t count = times.size();
+  return record;
+}
+
+bool one_y_unit(const lessons::Lesson& lesson, const lessons::Plot& plot) {
+  return std::all_of(plot.y.begin(), plot.y.end(),
+                     [&](const std::string& name) { return lesson.probe_unit(name) == lesson.probe_unit(plot.y.front()); });
+}
+
+// The axes' names: several x probes share their unit, not their name, and so do several y
+// probes of one unit.
+void name_axes(Chart& chart, const lessons::Lesson& lesson, const lessons::Plot& plot) {
+  chart.x_label = plot.xs.size() > 1 && !lesson.probe_unit(plot.x).empty() ? "(" + lesson.probe_unit(plot.x) + ")"
+                                                                            : axis_title(lesson, plot.x);
+  const std::string& y_unit = lesson.probe_unit(plot.y.front());
+  chart.y_label = plot.y.size() == 1                      ? axis_title(lesson, plot.y.front())
+                  : one_y_unit(lesson, plot) && !y_unit.empty() ? "(" + y_unit + ")"
+                                                                : "";
+}
+
+// The record: one series a probe. An X–Y plot of one probe is coloured by regime instead.
+void add_record(Chart& chart, const lessons::Lesson& lesson, const PlotRecord& record, const Theme& theme) {
+  const lessons::Plot& plot = record.plot;
+  const bool one_unit = one_y_unit(lesson, plot);
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    ChartSeries series;
+    const std::string& unit = lesson.probe_unit(plot.y[k]);
+    if (plot.y.size() > 1 || record.over_time) {
+      series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
+    }
+    series.colour = theme.series[k % 4];
+    series.points.reserve(record.count);
+    for (std::size_t i = 0; i < record.count; ++i) series.points.push_back({(*record.xs[k])[i], (*record.ys[k])[i]});
+    chart.series.push_back(std::move(series));
+  }
+  const std::vector<unsigned char>& slipping = lesson.scene().slipping();
+  if (!record.over_time && plot.y.size() == 1) {
+    std::vector<ImU32> colours(record.count);
+    for (std::size_t i = 0; i < record.count; ++i) colours[i] = i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
+    chart.segment_colours.push_back(std::move(colours));
+    chart.colour_keys = {{"sticking", theme.sticking}, {"slipping", theme.slipping}};
+  }
+  chart.mark_now = true;
+  chart.now_colour = theme.now_marker;
+  if (record.over_time && record.count > 0) chart.now_x = lesson.scene().times().back();
+}
+
+// The slip regime shaded behind a time plot's curves, from the frame before it began: any
+// contact's, or the steps where the plot's own shade probe reads other than 0.
+void add_slip_bands(Chart& chart, const lessons::Lesson& lesson, const PlotRecord& record, const Theme& theme) {
+  const Scene& scene = lesson.scene();
+  const std::vector<double>& times = scene.times();
   const std::vector<unsigned char>& slipping = scene.slipping();
+  const std::string& shade_probe = record.plot.shade;
+  const std::vector<double>* shade = shade_probe.empty() ? nullptr : &scene.probe(shade_probe).history;
+  const std::size_t shaded = shade ? shade->size() : slipping.size();
+  // A shade probe that reads no number (NaN) shades nothing there.
+  const auto on = [&](std::size_t i) { return shade ? std::isfinite((*shade)[i]) && (*shade)[i] != 0.0 : slipping[i] != 0; };
+  for (std::size_t i = 0; i < record.count && i < shaded;) {
+    if (!on(i)) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j + 1 < record.count && j + 1 < shaded && on(j + 1)) ++j;
+    chart.bands.push_back({i > 0 ? times[i - 1] : 0.0, times[j]});
+    i = j + 1;
+  }
+  chart.band_colour = theme.slip_band;
+  chart.band_name = shade ? probe_words(lesson, shade_probe) : "slipping";
+}
+
+// The theory curves across the x range, each in its look, and which applies now. Returns the
+// values they take in the range, which count for the y axis, so a law is seen before the run
+// gets there.
+std::vector<double> add_theory_curves(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range,
+                                      const Theme& theme) {
+  const lessons::Plot& plot = lesson.plots().at(plot_index);
+  std::vector<double> values;
+  const auto [low, high] = sampling_range(x_range.low, x_range.high);
+  const lessons::TheorySamples& samples = lesson.theory_samples(plot_index, low, high, theory_sample_count);
+  const std::vector<int> says_active = lesson.theory_active(plot_index);
+  for (std::size_t c = 0; c < samples.curves.size(); ++c) {
+    ChartCurve curve;
+    curve.name = plot.theory[c].label;
+    give_theory_look(curve, theme, c);
+    for (const auto& piece : samples.curves[c]) {
+      curve.pieces.emplace_back();
+      for (const lessons::TheoryPoint& p : piece) {
+        curve.pieces.back().push_back({p.x, p.y});
+        if (p.x >= x_range.low && p.x <= x_range.high) values.push_back(p.y);
+      }
+    }
+    chart.theory.push_back(std::move(curve));
+  }
+  // The branch that applies now: the one that says so, else the one nearest the latest point.
+  const bool any_says = std::any_of(says_active.begin(), says_active.end(), [](int a) { return a >= 0; });
+  chart.active_theory = any_says ? -1 : Chart::nearest;
+  for (std::size_t c = 0; c < says_active.size(); ++c) {
+    if (says_active[c] == 1 && chart.active_theory < 0) chart.active_theory = static_cast<int>(c);
+  }
+  return values;
+}
+
+// The plot's levels, labelled "label = value" in the y probe's unit; their values, which count
+// for the y axis too.
+std::vector<double> add_levels(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, const Theme& theme) {
+  const lessons::Plot& plot = lesson.plots().at(plot_index);
+  const std::string& y_unit = lesson.probe_unit(plot.y.front());
+  std::vector<double> values;
+  const std::vector<double> levels = lesson.plot_levels(plot_index);
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    if (!std::isfinite(levels[k])) continue;  // nil: no such level now
+    std::string value = format_quantity(levels[k], y_unit.c_str());
+    if (y_unit.empty()) value.pop_back();  // the space before a unit there is not
+    chart.levels.push_back({plot.levels[k].label + " = " + value, levels[k], theme.theory[k % 2]});
+    values.push_back(levels[k]);
+  }
+  return values;
+}
+
+// The theory's curves and levels (a script error in one becomes the chart's message, and the
+// lesson itself runs on); the values they take, for the y axis.
+std::vector<double> add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range,
+                               const Theme& theme) {
+  const lessons::Plot& plot = lesson.plots().at(plot_index);
+  std::vector<double> values;
+  try {
+    if (!plot.theory.empty()) values = add_theory_curves(chart, lesson, plot_index, x_range, theme);
+    if (!plot.levels.empty()) {
+      const std::vector<double> levels = add_levels(chart, lesson, plot_index, theme);
+      values.insert(values.end(), levels.begin(), levels.end());
+    }
+  } catch (const lessons::ScriptError& error) {
+    chart.theory.clear();
+    chart.levels.clear();
+    chart.active_theory = -1;
+    values.clear();
+    chart.message = error.what();
+  }
+  return values;
+}
+
+}  // namespace
+
+double time_axis_span(double duration, double now, bool secret) {
+  if (secret) {
+    double span = 1.0;
+    for (int i = 0; span < now && i < 60; ++i) span *= (i % 3 == 1) ? 2.5 : 2.0;
+    return span;
+  }
+  const double reach = std::max(duration, now);
+  if (!(reach > 0.0) || !std::isfinite(reach)) return 1.0;
+  // The power of ten as a divisor below 1 (0.3 s is 3 / 10, where 3 × 0.1 is 0.30000000000000004).
+  const int exponent = static_cast<int>(std::floor(std::log10(reach)));
+  const double power = std::pow(10.0, std::abs(exponent));
+  for (const double whole : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0}) {
+    const double end = exponent < 0 ? whole / power : whole * power;
+    // (Within a rounding of the end: a duration of 2.5 s is no more than 2.5.)
+    if (end >= reach * (1.0 - 1e-12)) return end;
+  }
+  return reach;
+}
+
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
+                 bool with_theory, bool steady, bool secret) {
+  const PlotRecord record = record_of(lesson, plot_index);
+  const std::vector<double>& times = lesson.scene().times();
 
   Chart chart;
-  chart.title = plot.title;
+  chart.title = record.plot.title;
   chart.plain = true;
   chart.legend = Chart::Legend::inside;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
-  // Several x probes share their unit, not their name.
-  chart.x_label = plot.xs.size() > 1 && !lesson.probe_unit(plot.x).empty() ? "(" + lesson.probe_unit(plot.x) + ")"
-                                                                            : axis_title(lesson, plot.x);
-  const std::string& y_unit = lesson.probe_unit(plot.y.front());
-  bool one_unit = true;
-  for (const std::string& name : plot.y) one_unit = one_unit && lesson.probe_unit(name) == y_unit;
-  chart.y_label = plot.y.size() == 1 ? axis_title(lesson, plot.y.front()) : one_unit && !y_unit.empty() ? "(" + y_unit + ")" : "";
+  // The y ticks as fine as the data area's height reads, a line and a half of text apart: the
+  // levels read off the axis (1 N steps at push's defaults, where 2 or 5 N were).
+  chart.y_tick_spacing = 21.0f;  // 1.5 times the small text's 14 pt
+  name_axes(chart, lesson, record.plot);
 
-  // The x axis: the lesson's time span, or the data's range with zero in it.
-  // Before the reveal a range from the record alone, with round ends (round_ends); once the
-  // theory is shown its levels and curves hold the range from the opening (push's friction
-  // axis), and the ends fit what is drawn.
-  const auto grown = [&](Range range) { return with_theory ? range : round_ends(range); };
-  const Range x_range =
-      over_time ? Range{0.0, std::max(time_span, count ? times.back() : 0.0)} : grown(range_of(xs, count, true));
+  // The x axis: the time span (fixed by the lesson's duration from the opening), or what the
+  // record reaches, with round ends.
+  const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
+                                         : record.count == 0 ? Range{}  // nothing recorded yet: 0 to 1
+                                                             : round_ends(extent_of(record.xs, record.count));
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
 
-  // The record: one series a probe. An X–Y plot of one probe is coloured by regime instead.
-  const bool regimes = !over_time && plot.y.size() == 1;
-  for (std::size_t k = 0; k < plot.y.size(); ++k) {
-    ChartSeries series;
-    const std::string& unit = lesson.probe_unit(plot.y[k]);
-    if (plot.y.size() > 1 || over_time) series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
-    series.colour = theme.series[k % 4];
-    series.points.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) series.points.push_back({(*xs[k])[i], (*ys[k])[i]});
-    chart.series.push_back(std::move(series));
-  }
-  if (regimes) {
-    std::vector<ImU32> colours(count);
-    for (std::size_t i = 0; i < count; ++i) colours[i] = i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
-    chart.segment_colours.push_back(std::move(colours));
-    chart.colour_keys = {{"sticking", theme.sticking}, {"slipping", theme.slipping}};
-  }
-  if (over_time) {
-    // The slip regime shaded behind the curves, from the frame before it began: any contact's,
-    // or the steps where the plot's own shade probe reads other than 0.
-    const std::vector<double>* shade = plot.shade.empty() ? nullptr : &scene.probe(plot.shade).history;
-    const std::size_t shaded = shade ? shade->size() : slipping.size();
-    // A shade probe that reads no number (NaN) shades nothing there.
-    const auto on = [&](std::size_t i) { return shade ? std::isfinite((*shade)[i]) && (*shade)[i] != 0.0 : slipping[i] != 0; };
-    for (std::size_t i = 0; i < count && i < shaded;) {
-      if (!on(i)) {
-        ++i;
-        continue;
-      }
-      std::size_t j = i;
-      while (j + 1 < count && j + 1 < shaded && on(j + 1)) ++j;
-      chart.bands.push_back({i > 0 ? times[i - 1] : 0.0, times[j]});
-      i = j + 1;
-    }
-    chart.band_colour = theme.slip_band;
-    chart.band_name = shade ? probe_words(lesson, plot.shade) : "slipping";
-  }
-  chart.mark_now = true;
-  chart.now_colour = theme.now_marker;
-  if (over_time && count > 0) chart.now_x = times.back();
-
-  // The theory across the x range; its values count for the y axis, so a law is seen before
-  // the run gets there.
-  std::vector<double> theory_values;
-  if (with_theory && !plot.theory.empty()) {
-    try {
-      const auto [low, high] = sampling_range(x_range.low, x_range.high);
-      const lessons::TheorySamples& samples = lesson.theory_samples(plot_index, low, high, theory_sample_count);
-      const std::vector<int> says_active = lesson.theory_active(plot_index);
-      for (std::size_t c = 0; c < samples.curves.size(); ++c) {
-        ChartCurve curve;
-        curve.name = plot.theory[c].label;
-        give_theory_look(curve, theme, c);
-        for (const auto& piece : samples.curves[c]) {
-          curve.pieces.emplace_back();
-          for (const lessons::TheoryPoint& p : piece) {
-            curve.pieces.back().push_back({p.x, p.y});
-            if (p.x >= x_range.low && p.x <= x_range.high) theory_values.push_back(p.y);
-          }
-        }
-        chart.theory.push_back(std::move(curve));
-      }
-      // The branch that applies now: the one that says so, else the one nearest the latest point.
-      const bool any_says = std::any_of(says_active.begin(), says_active.end(), [](int a) { return a >= 0; });
-      chart.active_theory = any_says ? -1 : Chart::nearest;
-      for (std::size_t c = 0; c < says_active.size(); ++c) {
-        if (says_active[c] == 1 && chart.active_theory < 0) chart.active_theory = static_cast<int>(c);
-      }
-    } catch (const lessons::ScriptError& error) {
-      chart.theory.clear();
-      theory_values.clear();
-      chart.message = error.what();  // the lesson itself runs on
-    }
-  }
-  // The levels, labelled with their values in the y probe's unit; theirs count for the y axis too.
-  if (with_theory && !plot.levels.empty() && chart.message.empty()) {
-    try {
-      const std::vector<double> values = lesson.plot_levels(plot_index);
-      for (std::size_t k = 0; k < values.size(); ++k) {
-        if (!std::isfinite(values[k])) continue;  // nil: no such level now
-        std::string value = format_quantity(values[k], y_unit.c_str());
-        if (y_unit.empty()) value.pop_back();  // the space before a unit there is not
-        chart.levels.push_back({plot.levels[k].label + " = " + value, values[k],
-                                theme.theory[k % 2]});
-        theory_values.push_back(values[k]);
-      }
-    } catch (const lessons::ScriptError& error) {
-      chart.theory.clear();
-      chart.levels.clear();
-      theory_values.clear();
-      chart.message = error.what();
-    }
+  add_record(chart, lesson, record, theme);
+  if (record.over_time) add_slip_bands(chart, lesson, record, theme);
+  // The theory is worked out whether it is shown or not, so that the y axis is the same before
+  // and after the reveal (round_ends); kept back, it is not drawn, nor its error said. A
+  // mystery's theory counts for nothing until its reveal.
+  std::vector<double> theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
+  if (secret) theory_values.clear();
+  if (!with_theory) {
+    chart.theory.clear();
+    chart.levels.clear();
+    chart.active_theory = -1;
+    chart.message.clear();
   }
   if (steady) {
     chart.steady = true;
     // Room beside the data for the theory's keys from the start, before the reveal shows them.
-    for (const lessons::TheoryCurve& curve : plot.theory) chart.legend_room.push_back(curve.label);
-    chart.y_tick_spacing = 22.0f;
+    for (const lessons::TheoryCurve& curve : record.plot.theory) chart.legend_room.push_back(curve.label);
   }
-  Range y_range = range_of(ys, count, true);
+  Range y_range = extent_of(record.ys, record.count);
+  const Range theory_range = extent_of({&theory_values}, theory_values.size());
   if (!theory_values.empty()) {
-    const Range theory_range = range_of({&theory_values}, theory_values.size(), true);
-    y_range = count == 0 ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
+    y_range = record.count == 0 ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
   }
-  y_range = grown(y_range);
+  if (record.count > 0 || !theory_values.empty()) y_range = round_ends(y_range);
   chart.fixed_y = true;
   chart.y_low = y_range.low, chart.y_high = y_range.high;
   return chart;
@@ -244,8 +326,8 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
 
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
                       ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory,
-                      const std::function<std::string(const std::string&)>& script_words, bool steady) {
-  Chart chart = plot_chart(lesson, plot, time_span, theme, with_theory, steady);
+                      const std::function<std::string(const std::string&)>& script_words, bool steady, bool secret) {
+  Chart chart = plot_chart(lesson, plot, time_span, theme, with_theory, steady, secret);
   if (script_words && !chart.message.empty()) chart.message = script_words(chart.message);
   return draw_chart(draw, corner, size, chart, theme, fonts);
 }

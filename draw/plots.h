@@ -15,18 +15,30 @@
 
 namespace frictionlab::draw {
 
+// A time axis' length, from the opening: the lesson's duration (or the time reached, once the run
+// has gone past it) up to the next of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10ⁿ s, before the reveal
+// and after it alike. Its end, a tick, says the duration to within a quarter; the parameters it
+// comes from are on the sliders. With `secret` (a mystery's values hidden) it must say nothing of
+// them: a lesson runs until what it teaches has been seen, and push's axis, drawn before Play,
+// gave a mystery's μs away (it runs a while past the breakaway at μs·m·g). It grows with the run
+// instead, to the next of 1, 2, 5, 10, 20, ... s, until the mystery's reveal.
+double time_axis_span(double duration, double now, bool secret = false);
+
 // Plot number `plot` of the lesson as a chart for the chart engine: the probes' record as
 // series (coloured by regime on an X–Y plot of one probe), the slip shaded on a time plot, the
 // present marked, and the theory curves sampled across the x range (kept between frames while
 // the range and parameters stay; a script error in one becomes the chart's message).
-// `time_span` is the time axis' length (the lesson's duration, or longer once the lesson has
-// run past it). Without `with_theory` the probes alone: the class has not seen the theory yet,
-// or a mystery's values would be read off the curves.
-// The plot's levels (levels = { ... }) are theory too: drawn with the curves, "label = value".
+// `time_span` is the time axis' length (time_axis_span). Without `with_theory` the probes
+// alone: the class has not seen the theory yet, or a mystery's values would be read off the
+// curves. The plot's levels (levels = { ... }) are theory too: drawn with the curves,
+// "label = value". The axes are the same with the theory and without it: each side of zero
+// ends at the next of 1, 2, 5 × 10ⁿ past the record and the theory's values, so the plot keeps
+// its scale at the reveal. The y ticks are as fine as the data area's height reads.
 // `steady`: a plot on a page of its own (projector mode), its data area kept the same whatever
-// the run and the reveal add, its y ticks as fine as its height reads.
+// the run and the reveal add. `secret`: a mystery's values are hidden, and the theory worked out
+// from them counts for no axis until its reveal (the record alone sets them).
 Chart plot_chart(lessons::Lesson& lesson, std::size_t plot, double time_span, const Theme& theme,
-                 bool with_theory = true, bool steady = false);
+                 bool with_theory = true, bool steady = false, bool secret = false);
 
 // Where plot number `plot` of the lesson goes in the rectangle, for tests and the drawing.
 ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner, ImVec2 size,
@@ -35,6 +47,7 @@ ChartLayout layout_plot(lessons::Lesson& lesson, std::size_t plot, double time_s
 // Draws plot number `plot` of the lesson into the rectangle; where its parts went.
 ChartLayout draw_plot(ImDrawList* draw, lessons::Lesson& lesson, std::size_t plot, double time_span, ImVec2 corner,
                       ImVec2 size, const Theme& theme, const Fonts& fonts, bool with_theory = true,
-                      const std::function<std::string(const std::string&)>& script_words = {}, bool steady = false);
+                      const std::function<std::string(const std::string&)>& script_words = {}, bool steady = false,
+                      bool secret = false);
 
 }  // namespace frictionlab::draw
