@@ -310,7 +310,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
-    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
+    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels, fonts.scale)) {
       arrows.push_back(arrow);
     }
   }
