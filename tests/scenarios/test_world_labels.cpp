@@ -429,6 +429,52 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   }
 }
 
+// A contact's word ("sticking", "← slipping") by its dot, on a floor and on slopes as steep as
+// 60°: its box as drawn within one line of its text (the box's height) of the dot's rim, at a
+// screen's and a projector's text size. Issue 31: on incline at 60° in projector mode the word
+// sat 120 px below its dot, half its width along the slope away (the wanted place went along the
+// surface by half the box's width, which on a steep slope is mostly down). The dot's radius is
+// contact_dot_radius times the text scale, its box as the lane avoids it.
+TEST(ContactWords, EachStateWordIsWithinALineOfItsDot) {
+  int checked = 0;
+  for (const Screen& screen : {screens[0], screens[3]}) {
+    draw::HeadlessRenderer renderer(screen.width, screen.height, draw::ThemeName::light, screen.scale);
+    for (const char* angle : {"25", "35", "45", "60"}) {
+      for (const double t : {0.3, 0.6}) {
+        draw::LessonAt at("incline", {{"angle", angle}}, t);
+        draw::FrameRecord record;
+        renderer.render(*at.lesson, at.framing, &record);
+        const std::string where = std::string("incline at ") + angle + "° at " + std::to_string(t) + " s, " + screen.name;
+        for (const draw::FrameRecord::Lane& lane : record.lanes) {
+          for (std::size_t i = 0; i < lane.texts.size(); ++i) {
+            const std::string& text = lane.texts[i];
+            if (text.find("sticking") == std::string::npos && text.find("slipping") == std::string::npos) continue;
+            const ImVec4 box = drawn(lane.labels[i]);
+            float nearest = 1e9f, radius = 0.0f;
+            for (const ContactMark& mark : contact_marks(at.lesson->scene())) {
+              const ImVec2 centre = lane.camera.to_screen(mark.point);
+              const float dx = std::max({box.x - centre.x, 0.0f, centre.x - box.z});
+              const float dy = std::max({box.y - centre.y, 0.0f, centre.y - box.w});
+              for (const ImVec4& dot : lane.avoided) {
+                if (std::abs(0.5f * (dot.x + dot.z) - centre.x) < 0.01f && std::abs(0.5f * (dot.y + dot.w) - centre.y) < 0.01f &&
+                    std::hypot(dx, dy) < nearest) {
+                  nearest = std::hypot(dx, dy);
+                  radius = 0.5f * (dot.z - dot.x);
+                }
+              }
+            }
+            ASSERT_LT(nearest, 1e9f) << where << ": no dot for \"" << text << "\"";
+            EXPECT_LE(nearest - radius, box.w - box.y)
+                << where << ": \"" << text << "\" at " << text_of(box) << " is " << nearest - radius << " px from its dot's rim";
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 16);
+}
+
 // A friction acts where its contact's dot is drawn: stacked_blocks' friction between the blocks
 // (3 N, a few pixels long) was drawn under the dot, unseen, in the trial. Each friction arrow
 // starts outside every contact dot of its lane (the dot's box, as the lane avoids it, gives its
