@@ -50,6 +50,9 @@ FrameLayout laid_out(ImVec2 display, float scale, ImVec2 origin, bool projector,
   // that with large text (projector mode) it does not cover the world it explains.
   layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.7f * layout.world_size.y));
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
+  // Left out where it cannot be read (a projector's text in a world of a screen's height): the
+  // world's own arrows show the same forces, and the world keeps the width.
+  if (!free_body_readable(layout.inset_size, scale)) layout.inset_size = ImVec2(0.0f, 0.0f);
   if (projector && !plots) layout.world_size.y = display.y - layout.world_corner.y - legend_strip;
   const float under_world = layout.world_corner.y + layout.world_size.y;
   layout.legend_beside_plots = projector && plots;
@@ -509,7 +512,7 @@ void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::W
   // first letter there (the speed readout of a body at the view's left edge).
   const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
   LabelPlacer labels(shown_min, sub(shown_max, shown_min));
-  labels.avoid(inset);
+  if (inset.z > inset.x) labels.avoid(inset);
   const std::string name = lane_name(framing, cameras.size(), lane);
   const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, name.c_str());
   const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
@@ -560,7 +563,10 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
     const std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), cameras);
     const b2Body* focus = main_body(lesson.scene());
     const ImVec2 inset_corner = inset_corner_clear_of_the_hand(lesson.scene(), focus, layout, cameras.front(), s);
-    const ImVec4 inset(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x, inset_corner.y + layout.inset_size.y);
+    const bool inset_shown = layout.inset_size.x > 0.0f;
+    const ImVec4 inset = inset_shown ? ImVec4(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x,
+                                              inset_corner.y + layout.inset_size.y)
+                                     : ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
     for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
       draw_lane(draw, lesson, framing, style, cameras, lane, cameras.size() > 1 ? &lane_bodies[lane] : nullptr, inset,
                 newtons_to_pixels);
@@ -574,8 +580,10 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
     for (const auto& [name, body] : lesson.scene().bodies()) {
       if (body == focus) focus_name = name;
     }
-    draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, theme(style.theme), fonts,
-                   style.record != nullptr ? &style.record->free_body : nullptr);
+    if (inset_shown) {
+      draw_free_body(draw, lesson.scene(), focus, focus_name, inset_corner, layout.inset_size, theme(style.theme), fonts,
+                     style.record != nullptr ? &style.record->free_body : nullptr);
+    }
   }
   end_panel();
   return legend;

@@ -27,6 +27,26 @@ double printed_net(const std::vector<b2Vec2>& forces) {
   return std::round(std::hypot(x, y) / step) * step;
 }
 
+namespace {
+// The diagram's area inside an inset of `size`: below its title, above its net force line.
+ImVec2 diagram_size(ImVec2 size, float text, float scale) {
+  const float header = text + 10.0f * scale, footer = text + 8.0f * scale;
+  return ImVec2(size.x, size.y - header - footer);
+}
+}  // namespace
+
+float free_body_reach(ImVec2 size, float text, float scale) {
+  const ImVec2 area = diagram_size(size, text, scale);
+  // The longest arrow, with its label beyond its tip, stays inside the diagram's area.
+  const float label_room = text + 8.0f * scale;
+  return std::max(0.32f * std::min(area.x, area.y), std::min(0.36f * std::min(area.x, area.y), 0.5f * area.y - label_room));
+}
+
+bool free_body_readable(ImVec2 size, float scale) {
+  const float text = small_text_points * scale;
+  return free_body_reach(size, text, scale) >= 3.0f * text;
+}
+
 void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
                     ImVec2 size, const Theme& theme, const Fonts& fonts, FreeBodyRecord* record) {
   const float s = fonts.scale;
@@ -56,7 +76,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   const float header = fonts.small->FontSize + 10.0f * s, footer = fonts.small->FontSize + 8.0f * s;
   Camera inset;
   inset.origin = ImVec2(corner.x, corner.y + header);
-  inset.size = ImVec2(size.x, size.y - header - footer);
+  inset.size = diagram_size(size, fonts.small->FontSize, s);
   inset.centre = box.GetCenter();
   const b2Vec2 extent = box.upperBound - box.lowerBound;
   inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
@@ -66,11 +86,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   const std::vector<ForceOnBody> forces = forces_on(scene, body);
   float largest = 1e-6f;
   for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
-  // The longest arrow, with its label beyond its tip, stays inside the diagram's area.
-  const float label_room = fonts.small->FontSize + 8.0f * s;
-  const float reach = std::max(0.32f * std::min(inset.size.x, inset.size.y),
-                               std::min(0.36f * std::min(inset.size.x, inset.size.y), 0.5f * inset.size.y - label_room));
-  const float newtons_to_pixels = reach / largest;
+  const float newtons_to_pixels = free_body_reach(size, fonts.small->FontSize, s) / largest;
 
   draw->PushClipRect(corner, add(corner, size), true);
   for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
@@ -103,7 +119,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   }
   // Labels between the title and the net force line, off every arrow.
   LabelPlacer labels(inset.origin, inset.size);
-  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels);
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels, s);
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
   // A motor's torque on the body, round its centre of mass.
   std::vector<TorqueArc> torques;

@@ -25,6 +25,19 @@ struct FreeBodyRecord {
   std::string net_text;            // "net force: 3.98 N"
 };
 
+// The inset's longest arrow, px, in an inset of `size` whose small text is `text` px high at
+// text scale `scale`: as long as leaves its value room beyond its tip inside the diagram's area.
+float free_body_reach(ImVec2 size, float text, float scale);
+// Whether an inset of `size` can be read at text scale `scale`: its longest arrow at least three
+// lines of its values' text long, so that a force half the largest (a push and its friction,
+// weight and a slope's normal force) still has an arrow longer than its value is high. A
+// screen's inset has 3.9 lines at every size (55 px at 14 px text at 1280 × 720); a projector's
+// text (1.35 times) in a world of the same height gave 2.4 (67 px at 28 px text at 1920 × 1080:
+// arrows of 15-50 px, a crate of 15 px, unread from the room in issue 31's trial). The frame
+// leaves out an inset that cannot be read (FrameLayout::inset_size 0): the world's own arrows,
+// at projector size, show the same forces.
+bool free_body_readable(ImVec2 size, float scale);
+
 void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
                     ImVec2 size, const Theme& theme, const Fonts& fonts, FreeBodyRecord* record = nullptr);
 

@@ -32,14 +32,16 @@ struct ScreenArrow {
   ImVec2 tail, tip;
   float length() const;
 };
-// The shortest arrow drawn: one whose head can be seen.
-constexpr float shortest_arrow_pixels = 8.0f;
+// The shortest arrow drawn at text scale `scale`: one whose head can be seen. It grows with the
+// text, as the arrows' thickness and heads do (3.5 px times the scale in the world): at a
+// projector's scale (2.0 at 1920 × 1080) 8 px was shorter than the head drawn on it.
+inline float shortest_arrow_pixels(float scale) { return 8.0f * scale; }
 // Tails at the point of action, lengths to scale; a force that shows in the printed values of
-// its body's forces but would be shorter than shortest_arrow_pixels is drawn that long, and one
-// too small to show in them is left out. Two arrows of one body lying along one line (weight and
-// normal force) are drawn side by side.
+// its body's forces but would be shorter than shortest_arrow_pixels(scale) is drawn that long,
+// and one too small to show in them is left out. Two arrows of one body lying along one line
+// (weight and normal force) are drawn side by side, their gap growing with the text as well.
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton);
+                                      float pixels_per_newton, float scale);
 
 // "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
 // ten) and the unit.

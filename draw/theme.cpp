@@ -234,7 +234,7 @@ Fonts load_fonts(float scale, ImVector<ImWchar>& ranges) {
   fonts.scale = scale;
   fonts.body = io.Fonts->AddFontFromFileTTF(path.c_str(), 17.0f * scale, &config, ranges.Data);
   fonts.title = io.Fonts->AddFontFromFileTTF(path.c_str(), 26.0f * scale, &config, ranges.Data);
-  fonts.small = io.Fonts->AddFontFromFileTTF(path.c_str(), 14.0f * scale, &config, ranges.Data);
+  fonts.small = io.Fonts->AddFontFromFileTTF(path.c_str(), small_text_points * scale, &config, ranges.Data);
   if (fonts.body == nullptr || fonts.title == nullptr || fonts.small == nullptr) {
     throw std::runtime_error(path + " could not be read as a TrueType font");
   }

@@ -50,6 +50,10 @@ ImU32 material_colour(const Theme& theme, const std::string& material, int index
 // when the frame is narrower than 16:9 (a 1024×768 projector).
 float frame_scale(int width, int height);
 
+// The small text's size at scale 1, pt (the legend's, the free-body inset's, a lane's name):
+// what the layout measures the inset's arrows against before any font is loaded.
+constexpr float small_text_points = 14.0f;
+
 struct Fonts {
   ImFont* body = nullptr;
   ImFont* title = nullptr;

@@ -261,11 +261,32 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
   const b2Vec2 into = -upper_side(mark) * b2Cross(1.0f, mark.tangent);
   const float side = mark.friction_force > 0.0 ? -1.0f : 1.0f;
   const b2Vec2 along = side * mark.tangent;
-  const float reach = 0.5f * size.x + 10.0f * fonts.scale, depth = 0.5f * size.y + 8.0f * fonts.scale;
-  const ImVec2 wanted(at.x + along.x * reach + into.x * depth, at.y - along.y * reach - into.y * depth);
-  if (const std::optional<ImVec2> placed = labels.place_if_free(wanted, size, text)) {
-    draw_label(draw, fonts.small, *placed, colour, theme.panel, text.c_str());
+  // The word's box by the dot, its nearest corner (or edge) 10 px across and 8 px down from it
+  // at text scale 1: the way to go (along and into, on the screen) scaled so that its larger part
+  // is one box's half and the gap. On a floor that is the box beside the dot and under the
+  // surface; on a slope the box keeps as close. (Half the box's width along a 60° slope put
+  // "← slipping" 120 px from its dot on a projector, issue 31.)
+  const auto by_dot = [&](b2Vec2 sideways) {
+    ImVec2 way(sideways.x + into.x, -sideways.y - into.y);
+    const float larger = std::max(std::abs(way.x), std::abs(way.y));
+    way = larger > 0.0f ? mul(way, 1.0f / larger) : ImVec2(0.0f, 1.0f);
+    return ImVec2(at.x + way.x * (0.5f * size.x + 10.0f * fonts.scale), at.y + way.y * (0.5f * size.y + 8.0f * fonts.scale));
+  };
+  // Where that is taken (a slope's weight arrow passes just by the dot), the places by the dot
+  // under the surface round to the friction arrow's side, before the search around the first,
+  // which went a line and a half away on incline at 35°.
+  std::optional<ImVec2> placed;
+  for (int step = 0; step <= 8; ++step) {
+    const float turn = 1.0f - 0.25f * static_cast<float>(step);  // in quarters, from the side away from friction
+    const ImVec2 place = by_dot(turn * along);
+    if (labels.free(LabelPlacer::box_around(place, size), false)) {
+      labels.take(LabelPlacer::box_around(place, size), text);
+      placed = place;
+      break;
+    }
   }
+  if (!placed) placed = labels.place_if_free(by_dot(along), size, text);
+  if (placed) draw_label(draw, fonts.small, *placed, colour, theme.panel, text.c_str());
 }
 
 }  // namespace
@@ -310,7 +331,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
-    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels)) {
+    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels, fonts.scale)) {
       arrows.push_back(arrow);
     }
   }

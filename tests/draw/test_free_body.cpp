@@ -39,11 +39,12 @@ TEST(FreeBody, ThePrintedNetIsTheSumOfTheForcesAsPrinted) {
   EXPECT_EQ(printed_net({}), 0.0);
 }
 
-// The inset as drawn, in the lessons with a few forces on one body, at many moments, with
-// projector text: each force's value as printed, along its arrow, sums to the printed net force
-// within half of the net's last printed digit.
+// The inset as drawn, in the lessons with a few forces on one body, at many moments, at
+// 1920 × 1080 (a projector's text leaves the inset out: FreeBody.LeftOutWhereItsArrowsCannotBeRead):
+// each force's value as printed, along its arrow, sums to the printed net force within half of
+// the net's last printed digit.
 TEST(FreeBody, TheInsetsNumbersAddUpAsPrinted) {
-  HeadlessRenderer renderer(1920, 1080, ThemeName::light, 1.35f * 1.5f);
+  HeadlessRenderer renderer(1920, 1080, ThemeName::light, 1.5f);
   int checked = 0;
   for (const char* name : {"push", "incline", "tipping_box", "stacked_blocks", "spring_pull", "driven_wheel"}) {
     LessonAt at(name, {}, 0.0);
@@ -79,6 +80,47 @@ TEST(FreeBody, TheInsetsNumbersAddUpAsPrinted) {
     }
   }
   EXPECT_GE(checked, 200);
+}
+
+// Issue 31: on a projector at 1920 × 1080 the inset's arrows were 15-50 px under 28 px values,
+// its crate 15 px, unread from the room. An inset is drawn where its longest arrow is three lines
+// of its values' text or more (free_body_readable), which every screen's layout gives (3.9 lines,
+// the same at every size since the inset and the text scale alike) and a projector's text, in a
+// world no taller, does not (2.4): there the frame leaves the inset out, and the world's arrows,
+// at projector size, are the diagram. Left out means no box, no title, nothing kept off by the
+// world's labels, and the world's view as wide as the panel.
+TEST(FreeBody, LeftOutWhereItsArrowsCannotBeRead) {
+  LessonAt at("tipping_box", {}, 1.0);
+  struct Case {
+    int width, height;
+    float scale;
+    bool projector, shown;
+  };
+  const Case cases[] = {{1280, 720, 1.0f, false, true},          {1920, 1080, 1.5f, false, true},
+                        {1024, 768, 0.8f, false, true},          {1920, 1080, 1.35f * 1.5f, true, false},
+                        {1280, 720, 1.35f, true, false},         {1920, 1080, 1.35f * 1.5f, false, false}};
+  for (const Case& c : cases) {
+    const std::string where = std::to_string(c.width) + "x" + std::to_string(c.height) + " at text scale " +
+                              std::to_string(c.scale) + (c.projector ? ", projector" : "");
+    const FrameLayout layout = FrameLayout::of(ImVec2(static_cast<float>(c.width), static_cast<float>(c.height)), c.scale,
+                                               ImVec2(0.0f, 0.0f), c.projector, *at.lesson);
+    EXPECT_EQ(layout.inset_size.x > 0.0f && layout.inset_size.y > 0.0f, c.shown) << where;
+    if (c.shown) {
+      const float text = small_text_points * c.scale;
+      EXPECT_GE(free_body_reach(layout.inset_size, text, c.scale), 3.0f * text) << where;
+    }
+    // The headless frame is a screen's layout (the window's projector layout is
+    // ForceLabels.EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther's).
+    if (c.projector) continue;
+    HeadlessRenderer renderer(c.width, c.height, ThemeName::light, c.scale);
+    FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    EXPECT_EQ(record.free_body.drawn, c.shown) << where;
+    bool titled = false;
+    for (const ShownText& text : record.texts) titled = titled || text.text.rfind("Free-body diagram", 0) == 0;
+    EXPECT_EQ(titled, c.shown) << where;
+    EXPECT_EQ(record.inset.z > record.inset.x, c.shown) << where;
+  }
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, Cont
   const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
   const float scale = arrow_scale(*at.lesson, at.framing, display, 1.0f);
   const b2Body* block = at.scene().body("block");
-  const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale);
+  const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale, 1.0f);
   ScreenArrow friction = arrow_of(arrows, ForceKind::friction);
   // Drawn from the contact dot's rim (6 px at this scale, and its 1.5 px outline), not under
   // the dot, its length kept: the tail at the contact point moves that far along the arrow.

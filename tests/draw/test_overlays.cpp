@@ -166,7 +166,7 @@ TEST(Overlays, ArrowsAlongOneLineAreDrawnSideBySide) {
   const ImVec2 display(frame_width, frame_height);
   const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
   const std::vector<ScreenArrow> arrows =
-      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, at.framing, display, 1.0f));
+      place_arrows(forces_on(at.scene(), at.scene().body("block")), camera, arrow_scale(*at.lesson, at.framing, display, 1.0f), 1.0f);
   const ScreenArrow* weight = nullptr;
   const ScreenArrow* normal = nullptr;
   for (const ScreenArrow& arrow : arrows) {
@@ -193,12 +193,12 @@ TEST(Overlays, AForceThatShowsInTheNumbersIsDrawnHoweverShortItsArrow) {
   const ForceOnBody* friction = find_force(forces, ForceKind::friction);
   ASSERT_NE(friction, nullptr);
   ASSERT_GT(friction->force.Length(), 0.05f);  // shows at the weight's 0.1 N digit
-  ASSERT_LT(friction->force.Length() * scale, shortest_arrow_pixels);  // too short at the scale
-  const std::vector<ScreenArrow> arrows = place_arrows(forces, camera, scale);
+  ASSERT_LT(friction->force.Length() * scale, shortest_arrow_pixels(1.0f));  // too short at the scale
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, camera, scale, 1.0f);
   const auto drawn = std::find_if(arrows.begin(), arrows.end(),
                                   [](const ScreenArrow& arrow) { return arrow.force.kind == ForceKind::friction; });
   ASSERT_NE(drawn, arrows.end());
-  EXPECT_NEAR(drawn->length(), shortest_arrow_pixels, 1e-3f);
+  EXPECT_NEAR(drawn->length(), shortest_arrow_pixels(1.0f), 1e-3f);
   // Along the force (screen y runs down).
   const float along = (drawn->tip.x - drawn->tail.x) * friction->force.x - (drawn->tip.y - drawn->tail.y) * friction->force.y;
   EXPECT_NEAR(along, drawn->length() * friction->force.Length(), 1e-3f * drawn->length() * friction->force.Length());
@@ -207,7 +207,48 @@ TEST(Overlays, AForceThatShowsInTheNumbersIsDrawnHoweverShortItsArrow) {
   ForceOnBody round_off = *friction;
   round_off.force = b2Vec2(0.04f, 0.0f);  // under half of 0.1 N
   with_round_off.push_back(round_off);
-  EXPECT_EQ(place_arrows(with_round_off, camera, scale).size(), arrows.size());
+  EXPECT_EQ(place_arrows(with_round_off, camera, scale, 1.0f).size(), arrows.size());
+}
+
+// With a projector's text (scale 1.35 × 1.5 at 1920 × 1080) the arrows are drawn 3.5 px times
+// the scale thick and their heads four thicknesses long: the shortest arrow and the gap between
+// weight and normal force grow with it (issue 31: an 8 px arrow was shorter than its head). The
+// same tipping_box friction at the same arrow scale is drawn shortest_arrow_pixels(scale) long,
+// 8 px times the scale exactly (a max of two floats), and weight and normal force along one line
+// move 9 px times the scale further apart (each moves half the gap: exact to float rounding).
+TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
+  const float scale = 1.35f * 1.5f;
+  LessonAt at("tipping_box", {}, 2.49);
+  const ImVec2 display(frame_width, frame_height);
+  const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
+  const float newtons_to_pixels = arrow_scale(*at.lesson, at.framing, display, 1.0f);
+  const std::vector<ForceOnBody> forces = forces_on(at.scene(), at.scene().body("box"));
+  const ForceOnBody* friction = find_force(forces, ForceKind::friction);
+  ASSERT_NE(friction, nullptr);
+  ASSERT_LT(friction->force.Length() * newtons_to_pixels, 8.0f);  // short at either scale
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, camera, newtons_to_pixels, scale);
+  const auto drawn = std::find_if(arrows.begin(), arrows.end(),
+                                  [](const ScreenArrow& arrow) { return arrow.force.kind == ForceKind::friction; });
+  ASSERT_NE(drawn, arrows.end());
+  EXPECT_NEAR(drawn->length(), 8.0f * scale, 1e-3f);
+  EXPECT_FLOAT_EQ(shortest_arrow_pixels(scale), 8.0f * scale);
+
+  LessonAt level("spring_pull", {}, 0.5);
+  const Camera level_camera = world_camera(*level.lesson, level.framing, display, 1.0f);
+  const std::vector<ScreenArrow> side_by_side = place_arrows(forces_on(level.scene(), level.scene().body("block")), level_camera,
+                                                             arrow_scale(*level.lesson, level.framing, display, 1.0f), scale);
+  const ScreenArrow* weight = nullptr;
+  const ScreenArrow* normal = nullptr;
+  for (const ScreenArrow& arrow : side_by_side) {
+    if (arrow.force.kind == ForceKind::weight) weight = &arrow;
+    if (arrow.force.kind == ForceKind::normal) normal = &arrow;
+  }
+  ASSERT_TRUE(weight && normal);
+  // The normal force acts where the floor's pressure centres, a few pixels off the weight's line:
+  // each moves half the gap away from the other, so they end the gap further apart than they act.
+  const float apart = std::abs(level_camera.to_screen(weight->force.point).x - level_camera.to_screen(normal->force.point).x);
+  ASSERT_LT(apart, 9.0f * scale);  // near enough to be moved
+  EXPECT_NEAR(std::abs(weight->tail.x - normal->tail.x), apart + 9.0f * scale, 1e-3f);
 }
 
 // A block on a table pulled by a hanging weight over a pulley: the rope's tension is on the
