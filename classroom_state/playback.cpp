@@ -99,9 +99,13 @@ void Playback::refresh_readings() {
     readings_.error = error.what();
   }
   // Played on past the lesson's end, the rows are those the run ended with (Lesson::expectations).
-  if (lesson_->rows_kept_from_end()) {
-    const std::string kept = "Played on past the run's end at " + seconds_text(readings_.duration) +
-                             ": the table keeps the rows the run ended with. R runs it again.";
+  if (const std::optional<double> end = lesson_->rows_kept_from_end()) {
+    // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
+    std::ostringstream when;
+    when.precision(6);
+    when << *end;
+    const std::string kept = "t is past the run's end at " + when.str() +
+                             " s: the table keeps the rows the run ended with. R runs it again.";
     readings_.caveat = readings_.caveat.empty() ? kept : kept + " " + readings_.caveat;
   }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that

@@ -427,8 +427,10 @@ std::vector<ExpectationResult> Lesson::expectations() {
   return rows;
 }
 
-bool Lesson::rows_kept_from_end() const {
-  return current_->rows_at_end && scene().frame() > current_->rows_at_end->frame;
+std::optional<double> Lesson::rows_kept_from_end() const {
+  const auto& end = current_->rows_at_end;
+  if (!end || scene().frame() <= end->frame) return std::nullopt;
+  return static_cast<double>(end->frame) * scene().frame_step();
 }
 
 std::vector<ExpectationResult> Lesson::expectations(std::exception_ptr& failure) {

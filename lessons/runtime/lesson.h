@@ -246,8 +246,10 @@ class Lesson {
   // as they stand, and the first row's error is kept in `failure` (the window says it once
   // and shows "?" for that row alone).
   std::vector<ExpectationResult> expectations(std::exception_ptr& failure);
-  // Whether the run is past the lesson's end, so that expectations() gives the rows kept from it.
-  bool rows_kept_from_end() const;
+  // When the run is past the lesson's end, so that expectations() gives the rows kept from it:
+  // the time of the step that reached the end (the step nearest the lesson's duration, which a
+  // time such as --at 2.49 may pass by a step); nullopt before it and at it.
+  std::optional<double> rows_kept_from_end() const;
   // The theory curves of plot `plot` sampled at `count` points across [x_low, x_high] (more
   // where a branch ends or jumps). Kept and given again until the range, the count or a
   // parameter changes. A script error throws ScriptError placed at the curve's function.

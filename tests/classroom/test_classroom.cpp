@@ -436,6 +436,30 @@ TEST(Classroom, ANegativeToleranceMeasuresNothing) {
   EXPECT_TRUE(hands.classroom().control("use it").has_value());
 }
 
+// Played on past the run's end (Space after "the run ends here", or --at past it), the table
+// keeps the rows the run ended with and says so, with the end step's own time.
+TEST(Classroom, PastTheRunsEndTheTableSaysItKeepsTheRowsTheRunEndedWith) {
+  ClassroomHands hands("push");
+  hands.frame();
+  hands.playback().run_to(hands.lesson().duration());
+  hands.frame();
+  EXPECT_EQ(hands.playback().readings().caveat, "") << "at the end itself";
+  hands.playback().run_to(hands.lesson().duration() + 1.0);
+  hands.frame();
+  const std::string& said = hands.playback().readings().caveat;
+  const std::string start = "t is past the run's end at ";
+  ASSERT_EQ(said.rfind(start, 0), 0u) << said;
+  EXPECT_NE(said.find(" s: the table keeps the rows the run ended with"), std::string::npos) << said;
+  // The end's time is the step's that reached the duration: a whole number of steps, within half
+  // a step of it (push's 3.46 s duration is worked out from its values).
+  const double h = hands.lesson().scene().frame_step(), end = std::stod(said.substr(start.size()));
+  EXPECT_NEAR(end / h, std::round(end / h), 1e-3) << said;
+  EXPECT_LE(std::abs(end - hands.lesson().duration()), 0.5 * h + 1e-9) << said;
+  hands.key(Key::r);
+  hands.frame();
+  EXPECT_EQ(hands.playback().readings().caveat, "") << "after R";
+}
+
 // The status line says the present state only (issue 31, a teacher's trial): "…the run is back
 // at t = 0" was still read at t = 2.49 s with the theory shown, and "the lesson's run ends at
 // 3.46 s" after a rewind to 1.96 s. Each is said while it holds and gone once it does not: after
