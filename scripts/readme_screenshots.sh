@@ -38,7 +38,7 @@ shot window_script_error "help = off\npredictions = off\n" "$scratch/my_incline.
 
 # Predict, then reveal (projector mode, 1920 × 1080): the class's answers ("slides", 50 N) come
 # from a prepared setup, as a teacher would have them typed, so no click has to land on a control
-# whose place changes with the layout. The first picture is the run's end with the theory kept
+# whose place changes with the layout. The first picture is the run's end (its last step, 2.4875 s) with the theory kept
 # back, the second the same moment revealed (T).
 cat > "$scratch/predict.setup" <<'SETUP'
 # FrictionLab setup
@@ -47,8 +47,8 @@ predictions on
 predict tips or slides = slides
 predict push when it happens = 50
 SETUP
-shot window_predict "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.49
-shot window_reveal "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.49 --reveal
+shot window_predict "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.4875
+shot window_reveal "help = off\nprojector = on\nwidth = 1920\nheight = 1080\n" --setup "$scratch/predict.setup" --at 2.4875 --reveal
 
 # The force gauge and the measuring tools, in projector mode at 1920 × 1080, driven by a hand on
 # the real window (xdotool on the same Xvfb display). The window saves them itself (Ctrl+S) into
