@@ -90,23 +90,29 @@ int spring_stick_slip(lua_State* state) {
       const Trajectory run = b == 0.0 ? solve_exact(block, duration) : solve_event_rk4(block, duration, h);
       int breakaways = 0, resticks = 0;
       double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
+      // How long the block stays stuck after a stop before it breaks away again: a stepped world
+      // cannot show a stick much shorter than its step (a lesson says so rather than compare).
+      double shortest_stick = std::numeric_limits<double>::infinity(), stopped_at = std::numeric_limits<double>::quiet_NaN();
       for (const Event& event : run.events()) {
         const double force = applied_force(block, event.t, event.x);
         const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
         if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
+        if (event.kind == EventKind::breakaway && !std::isnan(stopped_at)) shortest_stick = std::min(shortest_stick, event.t - stopped_at);
+        stopped_at = event.kind == EventKind::stop ? event.t : std::numeric_limits<double>::quiet_NaN();
         if (breaks) {
           if (breakaways == 0) first = event.t, first_force = force;
           last = event.t;
           ++breakaways, breakaway_sum += force;
         }
       }
-      lua_createtable(state, 0, 6);
+      lua_createtable(state, 0, 7);
       set_number(state, "breakaways", breakaways);
       set_number(state, "resticks", resticks);
       if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
       if (breakaways > 0) set_number(state, "first_breakaway_force", first_force);
       if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
       if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
+      if (std::isfinite(shortest_stick)) set_number(state, "shortest_stick", shortest_stick);
       lua_setfield(state, -2, "run");
     }
     return 1;

@@ -175,6 +175,7 @@ r[8] = theory.disk_on_incline { angle = 30, mass = 1, radius = 0.1, mu_s = 0.1, 
 r[9] = theory.disk_starts_rolling { v0 = 2, mass = 1, radius = 0.1, mu_k = 0.3 }.time
 r[10] = theory.stacked_blocks { top_mass = 1, bottom_mass = 2, push = 30,
           between = { mu_s = 0.3, mu_k = 0.2 }, ground = { mu_s = 0.4, mu_k = 0.3 } }.top_acceleration
+r[11] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.6, mu_k = 0.4, duration = 5 }.run.shortest_stick
 for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
 )"));
   Lesson lesson(script.path());
@@ -191,6 +192,9 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   EXPECT_NEAR(r(8), disk_on_incline(30 * degrees, 1, 0.1, 0.5 * 0.01, 0.1, 0.08, g).acceleration, 1e-12);
   EXPECT_NEAR(r(9), disk_starts_rolling(2, 1, 0.1, 0.5 * 0.01, 0.3, g).time, 1e-12);
   EXPECT_NEAR(r(10), stacked_blocks(1, 2, {0.3, 0.2, 0, 0}, {0.4, 0.3, 0, 0}, 30, g).top_acceleration, 1e-12);
+  // The run's events are the closed form's phases joined where each ends, found to 1e-13 s: every
+  // stick lasts the cycle's 2(μs − μk)·m·g/(k·v), 0.785 s (5 s hold three of them).
+  EXPECT_NEAR(r(11), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).stick_duration, 1e-9);
 }
 
 // A slider may reach values a closed form has no answer for: theory.* then answers in words
