@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "classroom/knob_slider.h"
 #include "draw/text_record.h"
@@ -83,8 +84,10 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     ImGui::PushFont(words_font);
     const float room = shape.words_below || room_for.empty() ? 0.0f : ImGui::CalcTextSize(room_for.c_str()).x + spacing;
-    const std::string words = draw::words_that_fit(said, shape.words_below ? size.x - 2.0f * ImGui::GetStyle().WindowPadding.x
-                                                             : std::max(room, ImGui::GetContentRegionAvail().x - shape.bar) - spacing);
+    // Beside the bar, as many lines of the small font as the bar's whole height holds, up to two
+    // (in projector mode one line of 470 px cut every longer notice in its middle); under it, one.
+    const float line = ImGui::GetTextLineHeight();
+    const int most_lines = shape.words_below ? 1 : std::clamp(static_cast<int>((size.y - 2.0f * s) / line), 1, 2);
     ImGui::PopFont();
     ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - room));
     double t = scrubbing_to ? *scrubbing_to : scene.time();
@@ -110,16 +113,44 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
       std::snprintf(shown, sizeof shown, format, t);
       draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
     }
-    if (!words.empty()) {
-      if (!shape.words_below) {
-        ImGui::SameLine();
-        ImGui::AlignTextToFramePadding();
-      }
+    // The words in what the time bar leaves of the line (its own under it).
+    if (!shape.words_below) ImGui::SameLine();
+    ImGui::PushFont(words_font);
+    const std::vector<std::string> lines = draw::lines_that_fit(said, ImGui::GetContentRegionAvail().x, most_lines);
+    ImGui::PopFont();
+    if (!lines.empty()) {
       ImGui::PushFont(words_font);
-      ImGui::TextDisabled("%s", words.c_str());
-      draw::note_text(words.c_str());
+      float widest = 0.0f;
+      for (const std::string& words : lines) widest = std::max(widest, ImGui::CalcTextSize(words.c_str()).x);
+      const ImVec2 extent(widest, static_cast<float>(lines.size()) * line);
+      ImVec2 first;
+      if (shape.words_below) {
+        first = ImGui::GetCursorScreenPos();
+        ImGui::Dummy(extent);
+      } else {
+        // Centred in the bar's height: drawn, not laid out as items, so that two lines may use
+        // the bar's padding without making it scroll.
+        first = ImVec2(ImGui::GetCursorScreenPos().x, corner.y + 0.5f * (size.y - extent.y));
+      }
+      ImDrawList* drawing = ImGui::GetWindowDrawList();
+      const ImU32 colour = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        const ImVec2 at(first.x, first.y + static_cast<float>(i) * line);
+        drawing->AddText(at, colour, lines[i].c_str());
+        draw::note_text_in(lines[i].c_str(), at, ImRect(corner, ImVec2(corner.x + size.x, corner.y + size.y)));
+      }
       ImGui::PopFont();
-      if (words != said && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", said.c_str());
+      std::string shown;
+      for (const std::string& words : lines) shown += (shown.empty() ? "" : " ") + words;
+      if (shown != said && ImGui::IsWindowHovered() &&
+          ImGui::IsMouseHoveringRect(first, ImVec2(first.x + extent.x, first.y + extent.y))) {
+        // Wrapped at half the screen: one line of a long notice ran past both of its edges.
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 0.5f * ImGui::GetIO().DisplaySize.x);
+        ImGui::TextUnformatted(said.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
     }
   }
   ImGui::End();

@@ -219,8 +219,9 @@ void Playback::step_and_check() {
   if (std::string fallen = newly_fallen(); !fallen.empty()) {
     fallen_.push_back(fallen);
     pause();
-    notice_ = "Paused: " + fallen + " has fallen off, past everything that could catch it (t = " +
-              seconds_text(lesson_->scene().time()) + "). R starts again; Space plays on.";
+    // Short enough for the status line's two lines on a projector (about 74 characters).
+    notice_ = "Paused: " + fallen + " has fallen off (t = " + seconds_text(lesson_->scene().time()) +
+              "). R starts again; Space plays on.";
     notice_frame_ = frame();
   }
 }

@@ -43,6 +43,16 @@ std::string joined(const std::vector<std::string>& words, std::size_t from, std:
   return line;
 }
 
+std::vector<std::string> words_of(const std::string& line) {
+  std::vector<std::string> words;
+  for (std::size_t start = 0; start <= line.size();) {
+    const std::size_t space = std::min(line.find(' ', start), line.size());
+    if (space > start) words.push_back(line.substr(start, space - start));
+    start = space + 1;
+  }
+  return words;
+}
+
 }  // namespace
 
 std::string path_that_fits(const std::string& path, float room) {
@@ -66,12 +76,7 @@ std::string path_that_fits(const std::string& path, float room) {
 
 std::string words_that_fit(const std::string& line, float room) {
   if (width_of(line) <= room) return line;
-  std::vector<std::string> words;
-  for (std::size_t start = 0; start <= line.size();) {
-    const std::size_t space = std::min(line.find(' ', start), line.size());
-    if (space > start) words.push_back(line.substr(start, space - start));
-    start = space + 1;
-  }
+  const std::vector<std::string> words = words_of(line);
   const std::size_t count = words.size();
   if (count < 2) return characters_that_fit(line, room, 3);
   const std::string gap = " \u2026 ";
@@ -95,6 +100,25 @@ std::string words_that_fit(const std::string& line, float room) {
     if (width_of(shown) <= room) return shown;
   }
   return characters_that_fit(line, room, 3);
+}
+
+std::vector<std::string> lines_that_fit(const std::string& line, float room, int most_lines) {
+  std::vector<std::string> lines;
+  const std::vector<std::string> words = words_of(line);
+  std::size_t next = 0;
+  while (next < words.size() && static_cast<int>(lines.size()) < most_lines) {
+    // The last line, or a word too wide for a line of its own: the rest, cut to fit.
+    const bool last = static_cast<int>(lines.size()) + 1 == most_lines;
+    if (last || width_of(words[next]) > room) {
+      lines.push_back(words_that_fit(joined(words, next, words.size()), room));
+      break;
+    }
+    std::size_t end = next + 1;
+    while (end < words.size() && width_of(joined(words, next, end + 1)) <= room) ++end;
+    lines.push_back(joined(words, next, end));
+    next = end;
+  }
+  return lines;
 }
 
 }  // namespace frictionlab::draw

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace frictionlab::draw {
 
@@ -18,5 +19,11 @@ std::string path_that_fits(const std::string& path, float room);
 // start"); a path at its end is kept whole as far as it fits (path_that_fits), since the file's
 // name is the news. Only a first word wider than the room is cut inside, at characters.
 std::string words_that_fit(const std::string& line, float room);
+
+// The same line on at most `most_lines` lines of `room` points each (the status line beside the
+// time bar, where a projector leaves 470 px of a 1920 px screen: on one line the trial read
+// "Kept from the last … session starts."): broken between words, as many as fit on each line;
+// the last line takes what is left as words_that_fit cuts it. No lines for an empty line.
+std::vector<std::string> lines_that_fit(const std::string& line, float room, int most_lines);
 
 }  // namespace frictionlab::draw

@@ -87,7 +87,7 @@ TEST(Settings, ANewSessionStartsAtOneTimesWithTheToolsOffAndSaysWhatWasKept) {
   EXPECT_EQ(today.theme, draw::ThemeName::dark);
   EXPECT_TRUE(today.projector);
   EXPECT_EQ(kept_from_last_session(today),
-            "Kept from the last session: dark theme, projector mode. Speed ×1 and the tools off, as every session starts.");
+            "As last time: dark theme, projector mode.");
   // A file an older FrictionLab wrote, with the speed and the tools in it.
   std::ofstream(path) << "speed = 8\nstopwatch = on\ndistance_marks = on\nspeed_readout = on\nweight_components = on\n";
   EXPECT_EQ(load_settings(path), WindowSettings{});

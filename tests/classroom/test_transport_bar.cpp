@@ -9,12 +9,16 @@
 #include "draw/imgui_host.h"
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
+#include "tests/layout_checks.h"
 #include "tests/lesson_scripts.h"
 
 namespace frictionlab::classroom {
 namespace {
 
 using lessons::ScriptFile;
+using layout_checks::class_window;
+using layout_checks::text_of;
+using layout_checks::window_screens;
 
 // A lesson opens paused at t = 0, its first frame drawn, however much time passes: the class
 // looks at the setup and predicts first. Space plays. So does one picked from the menu.
@@ -37,6 +41,45 @@ TEST(TransportBar, ALessonOpensPausedAtTheStart) {
   EXPECT_NE(hands.lesson().path().find("spring_pull"), std::string::npos);
   EXPECT_FALSE(hands.playback().playing());
   EXPECT_EQ(hands.lesson().scene().frame(), 0);
+}
+
+// Issue 31, a teacher's trial: in projector mode the status line beside the time bar has about
+// 470 px of the 1920, and every longer notice was cut in its middle ("Kept from the last …
+// session starts."). It takes the two lines the bar's height holds in the small font: at a
+// projector's 1920 × 1080 the session's notice is read whole, on lines inside the bar.
+TEST(TransportBar, AProjectorsStatusLineIsReadWholeOnTwoLinesInsideTheBar) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  ClassroomOptions options = class_window(lessons::resolve_lesson("push"), window_screens[2]);
+  // The trial's teacher's settings, in the dark theme: more kept than a new machine has.
+  WindowSettings yesterday;
+  yesterday.theme = draw::ThemeName::dark;
+  yesterday.projector = true;
+  yesterday.help = false;
+  yesterday.predictions = true;
+  options.opening_notice = kept_from_last_session(yesterday);
+  Classroom window(options);
+  draw::FrameRecord record;
+  for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+  ASSERT_EQ(window.transport_words(), options.opening_notice);
+  std::string read;
+  std::vector<draw::ShownText> lines;
+  for (const draw::ShownText& text : record.texts) {
+    if (text.panel.find("###transport") == std::string::npos || (text.text.find("As last time") == std::string::npos && read.empty())) continue;
+    read += (read.empty() ? "" : " ") + text.text;
+    lines.push_back(text);
+  }
+  EXPECT_EQ(read, options.opening_notice) << "the notice is cut";
+  EXPECT_EQ(lines.size(), 2u) << "a projector's notice this long takes two lines";
+  const ImGuiWindow* bar = ImGui::FindWindowByName("###transport");
+  ASSERT_TRUE(bar != nullptr);
+  for (const draw::ShownText& line : lines) {
+    EXPECT_TRUE(line.whole()) << "\"" << line.text << "\" is cut: needs " << text_of(line.needed) << ", shows " << text_of(line.visible);
+    EXPECT_GE(line.needed.y, bar->Pos.y) << "\"" << line.text << "\" starts above the bar";
+    EXPECT_LE(line.needed.w, bar->Pos.y + bar->Size.y) << "\"" << line.text << "\" ends below the bar";
+  }
+  EXPECT_EQ(bar->ScrollMax.y, 0.0f) << "the bar scrolls";
 }
 
 TEST(TransportBar, PauseAndStepAdvanceExactlyOneStep) {
