@@ -647,7 +647,7 @@ end
 --   demand_uncertainty, takes δs as the slide row's whole bound, its 0.2 % of the path and 3 mm
 --   too, which are the slide's own leeway and not where the block stopped: 5.0 ms at 240 Hz.)
 -- - The world's margin from step to step: N alternates between two levels from one step to
---   the next, 0.3 % of it apart at 3840 Hz and over 2 % at 7680 Hz (the world's N 0.13, 0.22
+--   the next, 0.5 % of it apart at 3840 Hz and over 2 % at 7680 Hz (the world's N 0.13, 0.22
 --   and 1.3 N from the model's, standard deviation, at 1920, 3840 and 7680 Hz; nothing in the
 --   model's forces moves so), and the listener holds a stuck contact up to its hold band past
 --   μs·N while the excess looks like the solver's leftover, which on a driven plank it always
