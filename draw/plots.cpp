@@ -1,8 +1,11 @@
 #include "draw/plots.h"
 
+#include <box2d/b2_common.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "draw/overlays.h"
 #include "draw/words.h"
@@ -62,6 +65,33 @@ Range round_ends(Range range) {
   // Values near ±1.7e308 are finite, but 1.03 times them is not: their end is the largest double.
   const auto side = [&](double reach) { return reach > largest / margin ? largest : round_bound(reach * margin); };
   return {range.low < 0.0 ? -side(-range.low) : 0.0, range.high > 0.0 ? side(range.high) : 0.0};
+}
+
+// The narrowest span an axis of a length or an angle shows: Box2D's own tolerances, within which
+// the world's lengths and turns are its solver's, not the lesson's (contacts may overlap by
+// b2_linearSlop, 5 mm; b2_angularSlop, 2°, is its angle's). Fitted to the record alone, a box
+// that had not tipped drew its tilt's solver noise, −0.0015°, on an axis from −0.002 to 0 (a
+// teacher's trial). 0: no floor (a force, a speed: the solver gives them exactly enough).
+double resolution_of(const std::string& unit) {
+  const double slop = b2_linearSlop, turn = b2_angularSlop;
+  if (unit == "m") return slop;
+  if (unit == "cm") return 100.0 * slop;
+  if (unit == "mm") return 1000.0 * slop;
+  if (unit == "\u00b0") return turn * 180.0 / std::numbers::pi;
+  if (unit == "rad") return turn;
+  return 0.0;
+}
+
+// `range` at least `span` wide, widened away from zero on the side its values lie (a tilt of
+// −0.0015° reads on −2° to 0°).
+Range at_least(Range range, double span) {
+  if (!(span > 0.0) || range.high - range.low >= span) return range;
+  if (range.high > -range.low) {
+    range.high = std::max(range.high, range.low + span);
+  } else {
+    range.low = std::min(range.low, range.high - span);
+  }
+  return range;
 }
 
 // A probe as the class reads it: the script's label for it, else its name in words.
@@ -286,7 +316,8 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // record reaches, with round ends.
   const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
                                          : record.count == 0 ? Range{}  // nothing recorded yet: 0 to 1
-                                                             : round_ends(extent_of(record.xs, record.count));
+                                                             : round_ends(at_least(extent_of(record.xs, record.count),
+                                                                                   resolution_of(lesson.probe_unit(record.plot.x))));
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
 
@@ -313,7 +344,9 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   if (!theory_values.empty()) {
     y_range = record.count == 0 ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
   }
-  if (record.count > 0 || !theory_values.empty()) y_range = round_ends(y_range);
+  if (record.count > 0 || !theory_values.empty()) {
+    y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))));
+  }
   chart.fixed_y = true;
   chart.y_low = y_range.low, chart.y_high = y_range.high;
   return chart;
