@@ -285,7 +285,7 @@ std::size_t plots_per_row(lessons::Lesson& lesson, const FrameStyle& style, cons
                       layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
     for (std::size_t i = 0; i < lesson.plots().size(); ++i) {
       // A little less than the panel will hold, so that rounding does not tip the choice.
-      const ImVec2 area = chart_area(plots.title(i), size, paged && i % per_row == 0);
+      const ImVec2 area = chart_area(plots.title(i), size, (paged && i % per_row == 0) || (style.projector && plots.count() == 1));
       const Chart chart = plot_chart(lesson, i, time_span, colours, true);
       const ImVec2 room(area.x - 4.0f * s, area.y - 4.0f * s);
       if (!legend_has_room(chart, room, fonts)) return false;
@@ -372,11 +372,16 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
                     layout.plots_corner.y + height * static_cast<float>(row));
     const ImVec2 size(width - (column + 1 < per_row ? gap : 0.0f), height - (row + 1 < rows_of_plots ? gap : 0.0f));
     const bool pager = paged && k == 0;
+    // A projector's only plot is headed as the pager is, its title on a thin line of its own in
+    // place of the title bar (a lesson of one plot had 17 px less data than one of two: 343 px,
+    // under a third of the screen, with the stopwatch on).
+    const bool headed = pager || (style.projector && plot_count == 1);
     // The pager's panel keeps its name from page to page: the page is kept in its state.
     const std::string id = pager ? std::string("plot pager") : "plot" + std::to_string(k);
-    std::size_t i = k;
+    std::size_t i = page * per_row + k;
+    if (!pager && i >= plot_count) break;
     bool open = false;
-    if (pager) {
+    if (headed) {
       // On a projector the page's line and its panel's edges are kept thin: each point of
       // height they leave goes to the key plot's data.
       if (style.projector) {
@@ -385,17 +390,16 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
         ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 1.0f * s));
       }
       open = begin_panel(id.c_str(), "", at, size);
+    }
+    if (pager) {
       page = turn_plot_pages(lesson, style, page_count);
       i = page * per_row;
-    } else {
-      i = page * per_row + k;
-      if (i >= plot_count) break;
     }
     const std::string& title = plots.title(i);
-    const bool inside = !pager && title_inside(title, size);
-    if (!pager) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
+    const bool inside = !headed && title_inside(title, size);
+    if (!headed) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
     if (open) {
-      if (pager || inside) {
+      if (headed || inside) {
         // The title on the buttons' line, as a title bar would have it, with the page's number;
         // or wrapped inside the panel, longer than its bar.
         if (pager) ImGui::AlignTextToFramePadding();
@@ -407,7 +411,7 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       plot_in_panel(lesson, style, i, time_span, colours);
     }
     end_panel();
-    if (pager && style.projector) ImGui::PopStyleVar(3);
+    if (headed && style.projector) ImGui::PopStyleVar(3);
   }
 }
 

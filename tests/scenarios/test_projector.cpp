@@ -421,6 +421,48 @@ TEST(ProjectorPlots, TheKeyPlotIsAThirdOfTheScreenHighAndHoldsStillThroughTheRun
   }
 }
 
+// A new contributor's lesson of one plot (a block pulled by a steady force), in projector mode
+// with the stopwatch on and the class asked: its plot kept the title bar that a lesson of two
+// plots gives to its pager's thin line, and its data was 343 px high, under a third of 1080.
+// Headed as the pager is, the only plot's data is a third of the screen or more.
+TEST(ProjectorPlots, ALessonOfOnePlotHasItsKeyPlotAThirdOfTheScreenHigh) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  const lessons::ScriptFile file(lessons::with_heading(
+      "local pull = parameter { \"pull\", 8, min = 0, max = 20, unit = \"N\", text = \"the pull F\" }\n"
+      "local mass = parameter { \"mass\", 1.0, min = 0.5, max = 5, unit = \"kg\", text = \"mass of the block\" }\n"
+      "pair { \"wood\", \"wood\", mu_s = 0.5, mu_k = 0.4, sliders = { \"mu_s\", \"mu_k\" } }\n"
+      "local floor = ground { \"floor\", material = \"wood\" }\n"
+      "local block = box { \"block\", material = \"wood\", width = 0.3, height = 0.1, on = floor, at = 0, mass = mass }\n"
+      "force { \"pull\", on = block, force = { pull, 0 } }\n"
+      "probe { \"speed\", unit = \"m/s\", read = { block, \"vx\" } }\n"
+      "local function a() return math.max(param.pull - param.mu_k * param.mass * g, 0) / param.mass end\n"
+      "plot { \"Speed of the block\", kind = \"time\", y = { \"speed\" },\n"
+      "  theory = { { \"v = a·t, a = (F − μk·m·g)/m\", function(t) return a() * t end } } }\n"
+      "expect { \"acceleration\", unit = \"m/s²\", predicted = a, measured = function() return a() end }\n"
+      "predict { \"acceleration\", unit = \"m/s²\",\n"
+      "  question = \"The pull stays the same. How fast does the block speed up (0 if it does not move)?\" }\n"));
+  for (const bool stopwatch : {false, true}) {
+    ClassroomOptions options = class_window(file.path(), window_screens[2]);
+    options.window.predictions = true;
+    options.window.tools.stopwatch = stopwatch;
+    Classroom window(options);
+    ASSERT_EQ(window.playback().lesson().plots().size(), 1u) << window.playback().lesson().last_error();
+    draw::FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    ASSERT_EQ(record.plots.size(), 1u);
+    const draw::ChartLayout& data = record.plots.front().layout;
+    EXPECT_GE(data.low_left.y - data.high_right.y, display.y / 3.0f)
+        << (stopwatch ? "stopwatch on" : "stopwatch off") << ": the only plot's data is "
+        << data.low_left.y - data.high_right.y << " px high, under a third of " << display.y;
+    // Its title is still drawn, on the line that stands for the bar.
+    bool titled = false;
+    for (const draw::ShownText& text : record.texts) titled = titled || text.text == "Speed of the block";
+    EXPECT_TRUE(titled) << "the plot's title is not drawn";
+  }
+}
+
 // Issue 31: the x axis' name stood at the right end of the tick labels' line, over the data's
 // end, where the last tick's number goes (push's "10" under "push (N)": left out, so the axis
 // read 0 to 8). In projector mode at 1920 × 1080, every lesson's every plot page at the run's
