@@ -205,10 +205,9 @@ void Playback::step_and_check() {
                ". Press R to reset; a smaller step (higher step rate, more sub-steps) or gentler values may hold.";
     return;
   }
-  const double h = lesson_->scene().frame_step();
   // The end of the lesson's run waits for a hand that is pulling: a teacher mid-pull, the class
   // watching the gauge, had the run pause under the mouse.
-  if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
+  if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->reached(readings_.duration)) {
     run_over_ = true;
     pause();
     notice_ = run_end_notice();
@@ -230,10 +229,8 @@ std::string Playback::run_end_notice() const {
 }
 
 bool Playback::at_run_end() const {
-  const double h = lesson_->scene().frame_step();
   // At the end itself: a step back (",") or the time bar leaves the run's end behind.
-  const double t = lesson_->scene().time();
-  return !playing_ && run_over_ && t + 0.5 * h >= readings_.duration && t < readings_.duration + 0.5 * h;
+  return !playing_ && run_over_ && lesson_->first_to_reach(readings_.duration);
 }
 
 std::string Playback::newly_fallen() const {
