@@ -20,9 +20,11 @@ FileStamp file_stamp(const std::string& path) {
 
 namespace {
 
-std::string seconds_text(double t) {
+// A time as the window says it, "2.49 s": to `digits` significant digits (3 for a moment
+// read off the run; 6 names a step's own time, t = 2.4875 s, to the step).
+std::string seconds_text(double t, int digits = 3) {
   std::ostringstream text;
-  text.precision(3);
+  text.precision(digits);
   text << t << " s";
   return text.str();
 }
@@ -101,11 +103,8 @@ void Playback::refresh_readings() {
   // Played on past the lesson's end, the rows are those the run ended with (Lesson::expectations).
   if (const std::optional<double> end = lesson_->rows_kept_from_end()) {
     // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
-    std::ostringstream when;
-    when.precision(6);
-    when << *end;
-    const std::string kept = "t is past the run's end at " + when.str() +
-                             " s: the table keeps the rows the run ended with. R runs it again.";
+    const std::string kept = "t is past the run's end at " + seconds_text(*end, 6) +
+                             ": the table keeps the rows the run ended with. R runs it again.";
     readings_.caveat = readings_.caveat.empty() ? kept : kept + " " + readings_.caveat;
   }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that
