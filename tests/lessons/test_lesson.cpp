@@ -23,18 +23,23 @@ namespace {
 
 double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
 
-TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
-  ScriptFile script(R"(
-lesson { title = "Sliding", question = "How far?", duration = 2.5 }
+// A script of a wooden `block`, 0.4 m × 0.2 m, resting on a metal `floor` (mu_s 0.5, mu_k 0.4):
+// its own lesson{} line first, then the block, then `rest` (probes, plots, rows).
+std::string wood_block_on_metal(const std::string& lesson_line, const std::string& rest = "\n") {
+  return "\n" + lesson_line + R"(
 pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
 local floor = ground { material = "metal" }
-local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor })" + rest;
+}
+
+TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Sliding", question = "How far?", duration = 2.5 })", R"(
 probe { "x", unit = "m", function() return block.x end }
 probe { "vx", unit = "m/s", function() return block.vx end }
 probe { "height", unit = "m", function() return block.y end }
 plot { "where", y = { "x", "height" } }
 plot { "phase", x = "x", y = "vx" }
-)");
+)"));
   Lesson lesson(script.path());
   EXPECT_EQ(lesson.title(), "Sliding");
   EXPECT_EQ(lesson.question(), "How far?");
@@ -58,12 +63,7 @@ TEST(LessonRuntime, AStepReachesATimeFromHalfAStepBeforeIt) {
   EXPECT_TRUE(Lesson::step_reaches(std::nextafter(half_a_step_before, 2.0), h, t)) << "just past";
   EXPECT_TRUE(Lesson::step_reaches(t + 3.0 * h, h, t)) << "steps later";
 
-  ScriptFile script(R"(
-lesson { title = "Counting", question = "How many steps?", duration = 0.5 }
-pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
-local floor = ground { material = "metal" }
-local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
-)");
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Counting", question = "How many steps?", duration = 0.5 })"));
   Lesson lesson(script.path());
   const double end = lesson.duration(), step = lesson.scene().frame_step();
   lesson.step_to(end - step);
@@ -84,15 +84,11 @@ local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = 
 // changed live past the end forgets them (the rows are read as they stand again, and the window
 // says the value changed); a rebuild starts afresh.
 TEST(LessonRuntime, RowsArePastTheEndAsTheRunEndedWith) {
-  ScriptFile script(R"(
-lesson { title = "Counting", question = "How many steps?", duration = 0.5 }
-pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
-local floor = ground { material = "metal" }
-local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Counting", question = "How many steps?", duration = 0.5 })", R"(
 probe { "x", unit = "m", function() return block.x end }
 expect { "steps recorded", predicted = function() return 0.5 * 240 end, measured = function() return #history("x") end,
          tolerance = 0 }
-)");
+)"));
   Lesson lesson(script.path());
   const auto steps_recorded = [&] { return lesson.expectations().at(0).measured; };
   lesson.step_to(0.25);
