@@ -20,9 +20,11 @@ FileStamp file_stamp(const std::string& path) {
 
 namespace {
 
-std::string seconds_text(double t) {
+// A time as the window says it, "2.49 s": to `digits` significant digits (3 for a moment
+// read off the run; 6 names a step's own time, t = 2.4875 s, to the step).
+std::string seconds_text(double t, int digits = 3) {
   std::ostringstream text;
-  text.precision(3);
+  text.precision(digits);
   text << t << " s";
   return text.str();
 }
@@ -101,11 +103,8 @@ void Playback::refresh_readings() {
   // Played on past the lesson's end, the rows are those the run ended with (Lesson::expectations).
   if (const std::optional<double> end = lesson_->rows_kept_from_end()) {
     // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
-    std::ostringstream when;
-    when.precision(6);
-    when << *end;
-    const std::string kept = "t is past the run's end at " + when.str() +
-                             " s: the table keeps the rows the run ended with. R runs it again.";
+    const std::string kept = "t is past the run's end at " + seconds_text(*end, 6) +
+                             ": the table keeps the rows the run ended with. R runs it again.";
     readings_.caveat = readings_.caveat.empty() ? kept : kept + " " + readings_.caveat;
   }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that
@@ -205,10 +204,9 @@ void Playback::step_and_check() {
                ". Press R to reset; a smaller step (higher step rate, more sub-steps) or gentler values may hold.";
     return;
   }
-  const double h = lesson_->scene().frame_step();
   // The end of the lesson's run waits for a hand that is pulling: a teacher mid-pull, the class
   // watching the gauge, had the run pause under the mouse.
-  if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->scene().time() + 0.5 * h >= readings_.duration) {
+  if (!run_over_ && lesson_->scene().grabbed() == nullptr && lesson_->reached(readings_.duration)) {
     run_over_ = true;
     pause();
     notice_ = run_end_notice();
@@ -231,10 +229,8 @@ std::string Playback::run_end_notice() const {
 }
 
 bool Playback::at_run_end() const {
-  const double h = lesson_->scene().frame_step();
   // At the end itself: a step back (",") or the time bar leaves the run's end behind.
-  const double t = lesson_->scene().time();
-  return !playing_ && run_over_ && t + 0.5 * h >= readings_.duration && t < readings_.duration + 0.5 * h;
+  return !playing_ && run_over_ && lesson_->first_to_reach(readings_.duration);
 }
 
 std::string Playback::newly_fallen() const {

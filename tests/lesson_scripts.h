@@ -49,6 +49,18 @@ inline std::string with_heading(const std::string& body) {
   return "lesson { title = \"test\", question = \"does it work?\" }\n" + body;
 }
 
+// `body` on a frictionless floor of ice, `floor`, with pucks (material "puck", 100 kg/m³)
+// sliding on it and on each other without friction: for forces, springs and readings held to
+// closed forms that friction would only blur.
+inline std::string on_frictionless_ice(const std::string& body) {
+  return with_heading(R"(
+material { "puck", density = 100 }
+pair { "puck", "ice", mu_s = 0, mu_k = 0 }
+pair { "puck", "puck", mu_s = 0, mu_k = 0 }
+local floor = ground { material = "ice" }
+)" + body);
+}
+
 inline void run_for(Lesson& lesson, double seconds) { lesson.step_to(lesson.scene().time() + seconds); }
 
 // The message of the InvalidInput (or ScriptError) `call` throws; fails the test when none.

@@ -1,4 +1,5 @@
-// Helpers for tests that draw lessons: a built-in lesson stepped to a moment, and its picture.
+// Helpers for tests that draw lessons: a built-in lesson stepped to a moment, and its picture;
+// the window's fonts for measuring text.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,7 +9,10 @@
 #include <string>
 
 #include "draw/camera.h"
+#include "draw/headless.h"
 #include "draw/headless_render.h"
+#include "draw/imgui_host.h"
+#include "draw/theme.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 
@@ -30,5 +34,19 @@ struct LessonAt {
   void step_to(double t) { lesson->step_to(t); }
   const Scene& scene() const { return lesson->scene(); }
 };
+
+// Fonts for measuring text, as a frame has them at 1280 × 720; one for the test program, made
+// current for the caller.
+struct FontsForLayout {
+  HeadlessContext gl;
+  ImGuiHost host{nullptr};
+  const Fonts& fonts = host.prepare(1.0f, ThemeName::light);
+};
+
+inline FontsForLayout& measuring() {
+  static FontsForLayout fonts;
+  fonts.host.make_current();
+  return fonts;
+}
 
 }  // namespace frictionlab::draw

@@ -378,7 +378,14 @@ const std::string& Lesson::probe_label(const std::string& probe) const {
 }
 
 void Lesson::step_to(double t) {
-  while (scene().time() + 0.5 * scene().frame_step() < t) step();
+  while (!reached(t)) step();
+}
+
+bool Lesson::reached(double t) const { return step_reaches(scene().time(), scene().frame_step(), t); }
+
+bool Lesson::first_to_reach(double t) const {
+  const double h = scene().frame_step();
+  return reached(t) && !step_reaches(scene().time() - h, h, t);
 }
 
 void Lesson::step() {
@@ -408,8 +415,7 @@ void Lesson::keep_rows_at_end() {
   }
   // The step that reaches the end (as step_to(duration) would stop there), and only that one:
   // rows forgotten with a value changed past the end are not taken again on a record gone on.
-  const double h = scene().frame_step(), t = scene().time();
-  if (t + 0.5 * h < *build.end_time || t - 0.5 * h >= *build.end_time) return;
+  if (!first_to_reach(*build.end_time)) return;
   LessonBuild::RowsAtEnd end;
   try {
     end.rows = rows_now(end.failure);

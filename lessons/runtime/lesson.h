@@ -239,6 +239,15 @@ class Lesson {
   bool failed() const { return failed_; }
   // Whole steps until the scene's time is the step nearest `t` (never before the present).
   void step_to(double t);
+  // Whether a step at time `now`, of `h` seconds, has reached the time `t`: it is the step
+  // nearest `t` (the earlier of two as near) or a later one. The one line drawn by step_to,
+  // the end of the window's run and the rows kept at the lesson's end.
+  static bool step_reaches(double now, double h, double t) { return now + 0.5 * h >= t; }
+  // The same for the scene's step now.
+  bool reached(double t) const;
+  // Whether the scene's step now is the first to reach `t` (the one before it did not): the
+  // step that ends a run of duration `t`, and only that one.
+  bool first_to_reach(double t) const;
   // The expectations as they stand now; past the lesson's end (a run played on), as they stood
   // at its end. Throws the error of the first row whose function fails.
   std::vector<ExpectationResult> expectations();

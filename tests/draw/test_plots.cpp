@@ -18,7 +18,6 @@
 #include "draw/imgui_host.h"
 #include "draw/panels.h"
 #include "draw/plots.h"
-#include "draw/words.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/class_words.h"
 #include "tests/classroom_hands.h"
@@ -31,19 +30,6 @@ namespace {
 using lessons::Lesson;
 using lessons::ScriptFile;
 using lessons::with_heading;
-
-// Fonts for measuring text, as a frame has them at 1280 × 720.
-struct FontsForLayout {
-  HeadlessContext gl;
-  ImGuiHost host{nullptr};
-  const Fonts& fonts = host.prepare(1.0f, ThemeName::light);
-};
-
-FontsForLayout& measuring() {
-  static FontsForLayout fonts;
-  fonts.host.make_current();
-  return fonts;
-}
 
 const ImVec2 corner(10.0f, 20.0f), area(600.0f, 300.0f);
 
@@ -333,33 +319,6 @@ TEST(TheoryCurves, AShortPlotsFewYLabelsAreRoundValuesWithZero) {
   }
 }
 
-// A script's names as the class reads them: underscores become spaces, mu_s and mu_k the
-// window's μs and μk, theta and omega their letters, a_x as aₓ.
-TEST(ClassWords, UnderscoresBecomeSpacesAndMuTheGreekLetter) {
-  EXPECT_EQ(lessons::class_words("friction_force"), "friction force");
-  EXPECT_EQ(lessons::class_words("slide_reduced"), "slide reduced");
-  EXPECT_EQ(lessons::class_words("mu_s"), "\u03bcs");
-  EXPECT_EQ(lessons::class_words("mu_k_top"), "\u03bck top");
-  EXPECT_EQ(lessons::class_words("six_feet_load_"), "six feet load");
-  EXPECT_EQ(lessons::class_words("__a__b"), "a b");
-  EXPECT_EQ(lessons::class_words("lubricated_mu"), "lubricated \u03bc");
-  EXPECT_EQ(lessons::class_words("mu_x"), "\u03bc x");
-  EXPECT_EQ(lessons::class_words("music_k"), "music k") << "mu only as a word of its own";
-  EXPECT_EQ(lessons::class_words("speed"), "speed");
-  // The Greek letters wedge's sliders spelt out, and a letter's index below the line.
-  EXPECT_EQ(lessons::class_words("theta0"), "\u03b80");
-  EXPECT_EQ(lessons::class_words("omega"), "\u03c9");
-  EXPECT_EQ(lessons::class_words("a_x"), "a\u2093");
-  EXPECT_EQ(lessons::class_words("a_x_omega"), "a\u2093 \u03c9");
-  EXPECT_EQ(lessons::class_words("large_epsilon_distance"), "large \u03b5 distance") << "where_methods_fail's probes";
-  EXPECT_EQ(lessons::class_words("thetas"), "thetas") << "the letter's name with only digits after it";
-  EXPECT_EQ(lessons::class_words("a_b"), "a b") << "no subscript b in Unicode: the letters as words";
-  EXPECT_EQ(lessons::class_words("x_top"), "x top") << "an index is one letter";
-  lessons::Parameter push_rate;
-  push_rate.name = "push_rate";
-  EXPECT_EQ(lessons::parameter_title(push_rate), "push rate") << "the values' table and the messages name it so";
-}
-
 // What reads as a program's name rather than the subject's words: two word characters joined by
 // an underscore ("W_a", "asphalt_box"), or a Greek letter's name spelt out as a word of its own
 // ("theta0", "omega"); "" when none. (A scan by hand: GCC 12 warns inside <regex> under the
@@ -387,7 +346,7 @@ std::string identifier_in(const std::string& text) {
 // every plot of it (title, axes, legend: series, theory curves, shading), its predictions'
 // questions and its parameters' names and choices: none is a program's identifier. The menu
 // bar's path to the script is a file's name, not a name the lesson gives.
-TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
+TEST(NamesInWords, EveryLessonsNamesReachTheClassInWords) {
   ASSERT_EQ(identifier_in("W_a + W_g"), "W_a");
   ASSERT_NE(identifier_in("theta0"), "");
   ASSERT_EQ(identifier_in("\u03b80 and \u03c9, a\u2093, asphalt box: distance"), "");
@@ -427,67 +386,6 @@ TEST(ClassWords, EveryLessonsNamesReachTheClassInWords) {
     }
   }
   EXPECT_GE(names, 1000);
-}
-
-// A script's path in the room the menu bar has: whole, else whole folders from its start and the
-// whole file name, else the file name with its middle left out; never wider than the room.
-TEST(ClassWords, APathIsShortenedInTheMiddleToFitNeverCut) {
-  FontsForLayout& fonts = measuring();
-  ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 720.0f);
-  fonts.host.begin_frame();  // the window's font, as the menu bar has it
-  const auto width = [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; };
-  const std::string path = "/home/ann/physics/week_7/file.lua";
-  EXPECT_EQ(path_that_fits(path, width(path)), path);
-  EXPECT_EQ(path_that_fits(path, width(path) - 1.0f), "/home/ann/physics/\u2026/file.lua");
-  EXPECT_EQ(path_that_fits(path, width("/home/ann/\u2026/file.lua") + 1.0f), "/home/ann/\u2026/file.lua");
-  EXPECT_EQ(path_that_fits(path, width("/\u2026/file.lua")), "/\u2026/file.lua");
-  EXPECT_EQ(path_that_fits(path, width("fil\u2026lua")), "fil\u2026lua");
-  EXPECT_EQ(path_that_fits(path, width("\u2026")), "\u2026");
-  EXPECT_EQ(path_that_fits(path, 0.0f), "");
-  for (float room = 0.0f; room < width(path) + 10.0f; room += 3.0f) {
-    EXPECT_LE(width(path_that_fits(path, room)), room) << "in " << room << " points";
-  }
-  ImGui::EndFrame();
-}
-
-// The status line's words in the room beside the time bar: whole, else cut between words with
-// " … " (the trial read "Kept from the last sessio…sion start" and "The run ends here: Spac…"),
-// a saved file's path at the end kept as far as it fits; never wider than the room.
-TEST(ClassWords, AStatusLineIsCutBetweenWordsNeverInsideOne) {
-  FontsForLayout& fonts = measuring();
-  ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 720.0f);
-  fonts.host.begin_frame();
-  const auto width = [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; };
-  const std::string line =
-      "Kept from the last session: dark theme, projector mode. Speed \u00d71 and the tools off, as every session starts.  "
-      "The run ends here: Space plays on.";
-  EXPECT_EQ(words_that_fit(line, width(line)), line);
-  std::istringstream split(line);
-  std::vector<std::string> words;
-  for (std::string word; split >> word;) words.push_back(word);
-  int shortened = 0;
-  for (float room = width("Kept \u2026"); room < width(line); room += 7.0f) {
-    const std::string shown = words_that_fit(line, room);
-    EXPECT_LE(width(shown), room) << "in " << room << " points: " << shown;
-    // Every piece of what is shown is one of the line's words, or the "…" where words were left out.
-    std::istringstream pieces(shown);
-    for (std::string piece; pieces >> piece;) {
-      EXPECT_TRUE(piece == "\u2026" || std::find(words.begin(), words.end(), piece) != words.end())
-          << "in " << room << " points, \"" << piece << "\" is a cut word: " << shown;
-    }
-    EXPECT_EQ(shown.rfind("Kept ", 0), 0u) << shown;
-    shortened += shown != line;
-  }
-  EXPECT_GT(shortened, 10);
-  // A saved file's name is the news: kept whole, its folders shortened first.
-  const std::string saved = "History saved to /home/ann/physics/week_7/tipping_box_history.csv";
-  EXPECT_EQ(words_that_fit(saved, width("History saved to /home/ann/\u2026/tipping_box_history.csv")),
-            "History saved to /home/ann/\u2026/tipping_box_history.csv");
-  EXPECT_EQ(words_that_fit(saved, width("History \u2026 /\u2026/tipping_box_history.csv")), "History \u2026 /\u2026/tipping_box_history.csv");
-  // A single word wider than the room: cut at characters (one in three from its end), as nothing
-  // else fits.
-  EXPECT_EQ(words_that_fit("Unbreakable", width("Unbrea\u2026le")), "Unbrea\u2026le");
-  ImGui::EndFrame();
 }
 
 // Every plot of every built-in lesson names its probes in words on its axes and in its legend:

@@ -106,12 +106,7 @@ TEST(Readings, AnAccelerationReadingIsTheChangeOfSpeedAlongADirection) {
   // freely: every sample, the first included, reads the constant acceleration (2 m/s² along x,
   // g along −y and 0 across it), and a spring's block reads −(k/m)·x at the sample before, to
   // O(h²). In Lua the field needs a probe's direction, as distance and speed do.
-  ScriptFile script(with_heading(R"(
-material { "puck", density = 100 }
-pair { "puck", "ice", mu_s = 0, mu_k = 0 }
-pair { "puck", "puck", mu_s = 0, mu_k = 0 }
-local floor = ground { material = "ice" }
-local puck = box { "puck", material = "puck", width = 0.2, height = 0.1, on = floor, at = 1, mass = 1, velocity = { 1, 0 } }
+  ScriptFile script(on_frictionless_ice(R"(local puck = box { "puck", material = "puck", width = 0.2, height = 0.1, on = floor, at = 1, mass = 1, velocity = { 1, 0 } }
 force { "push", on = puck, force = { 2, 0 } }
 local ball = circle { "ball", material = "puck", radius = 0.1, x = -3, y = 50 }
 local bob = box { "bob", material = "puck", width = 0.2, height = 0.1, on = floor, at = -10, mass = 2 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -22,18 +23,23 @@ namespace {
 
 double probe_now(const Lesson& lesson, const std::string& name) { return lesson.scene().probe(name).history.back(); }
 
-TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
-  ScriptFile script(R"(
-lesson { title = "Sliding", question = "How far?", duration = 2.5 }
+// A script of a wooden `block`, 0.4 m × 0.2 m, resting on a metal `floor` (mu_s 0.5, mu_k 0.4):
+// its own lesson{} line first, then the block, then `rest` (probes, plots, rows).
+std::string wood_block_on_metal(const std::string& lesson_line, const std::string& rest = "\n") {
+  return "\n" + lesson_line + R"(
 pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
 local floor = ground { material = "metal" }
-local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor })" + rest;
+}
+
+TEST(LessonRuntime, TitleQuestionDurationAndPlotsAreRead) {
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Sliding", question = "How far?", duration = 2.5 })", R"(
 probe { "x", unit = "m", function() return block.x end }
 probe { "vx", unit = "m/s", function() return block.vx end }
 probe { "height", unit = "m", function() return block.y end }
 plot { "where", y = { "x", "height" } }
 plot { "phase", x = "x", y = "vx" }
-)");
+)"));
   Lesson lesson(script.path());
   EXPECT_EQ(lesson.title(), "Sliding");
   EXPECT_EQ(lesson.question(), "How far?");
@@ -45,21 +51,44 @@ plot { "phase", x = "x", y = "vx" }
   EXPECT_EQ(lesson.probe_unit("vx"), "m/s");
 }
 
+// The one line step_to, the window's run end and the rows kept at the end draw: a step reaches a
+// time from half a step before it on (so the earlier of two steps as near is the one), and the
+// first step to reach the duration is the one that ends the run.
+TEST(LessonRuntime, AStepReachesATimeFromHalfAStepBeforeIt) {
+  // h = 0.25 s and t = 1 s are exact in binary, and so is t - h/2 = 0.875 s: the boundary is
+  // tested exactly, one representable number either side of it.
+  const double h = 0.25, t = 1.0, half_a_step_before = t - 0.5 * h;
+  EXPECT_FALSE(Lesson::step_reaches(std::nextafter(half_a_step_before, 0.0), h, t)) << "just below";
+  EXPECT_TRUE(Lesson::step_reaches(half_a_step_before, h, t)) << "at: the earlier of two steps as near";
+  EXPECT_TRUE(Lesson::step_reaches(std::nextafter(half_a_step_before, 2.0), h, t)) << "just past";
+  EXPECT_TRUE(Lesson::step_reaches(t + 3.0 * h, h, t)) << "steps later";
+
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Counting", question = "How many steps?", duration = 0.5 })"));
+  Lesson lesson(script.path());
+  const double end = lesson.duration(), step = lesson.scene().frame_step();
+  lesson.step_to(end - step);
+  EXPECT_EQ(lesson.scene().frame(), 119) << "0.5 s at 240 steps a second is the 120th step";
+  EXPECT_FALSE(lesson.reached(end));
+  EXPECT_FALSE(lesson.first_to_reach(end));
+  lesson.step();
+  EXPECT_TRUE(lesson.reached(end));
+  EXPECT_TRUE(lesson.first_to_reach(end)) << "the step that ends the run";
+  lesson.step();
+  EXPECT_TRUE(lesson.reached(end));
+  EXPECT_FALSE(lesson.first_to_reach(end)) << "a step past the end";
+}
+
 // A run played on past the lesson's end (the window's Space after "the run ends here") keeps
 // the rows it ended with: a row measured over the record ("time slipping in 5 s") read on a
 // record gone on to 100 s said 54 s where the run's 5 s gave 3.4 s (check_the_article). A value
 // changed live past the end forgets them (the rows are read as they stand again, and the window
 // says the value changed); a rebuild starts afresh.
 TEST(LessonRuntime, RowsArePastTheEndAsTheRunEndedWith) {
-  ScriptFile script(R"(
-lesson { title = "Counting", question = "How many steps?", duration = 0.5 }
-pair { "wood", "metal", mu_s = 0.5, mu_k = 0.4 }
-local floor = ground { material = "metal" }
-local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+  ScriptFile script(wood_block_on_metal(R"(lesson { title = "Counting", question = "How many steps?", duration = 0.5 })", R"(
 probe { "x", unit = "m", function() return block.x end }
 expect { "steps recorded", predicted = function() return 0.5 * 240 end, measured = function() return #history("x") end,
          tolerance = 0 }
-)");
+)"));
   Lesson lesson(script.path());
   const auto steps_recorded = [&] { return lesson.expectations().at(0).measured; };
   lesson.step_to(0.25);

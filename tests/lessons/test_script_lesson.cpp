@@ -475,44 +475,52 @@ expect { "time matches", predicted = true, measured = function() return math.abs
   EXPECT_EQ(lesson.scene().probe("calls").history.size(), 60u);
 }
 
+// A script's rows as its lesson gives them at the start, and after half a second of its run
+// (past the 0.2 s at which the rows below are measured).
+struct RowsThen {
+  std::vector<ExpectationResult> at_start, half_a_second_on;
+};
+RowsThen rows_at_start_and_half_a_second_on(const std::string& rows) {
+  ScriptFile script(with_heading(rows));
+  Lesson lesson(script.path());
+  RowsThen then;
+  then.at_start = lesson.expectations();
+  run_for(lesson, 0.5);
+  then.half_a_second_on = lesson.expectations();
+  return then;
+}
+
 TEST(LessonFunctions, ExpectationsTellNumbersWordsAndNotYetMeasured) {
-  ScriptFile script(with_heading(R"(
+  const RowsThen rows = rows_at_start_and_half_a_second_on(R"(
 local seen
 every_step(function(t) if t > 0.2 then seen = "slides" end end)
 expect { "outcome", predicted = "slides", measured = function() return seen end }
 expect { "number", unit = "N", predicted = function() return 10 end, measured = 10.4, tolerance = function() return 0.5 end }
 expect { "tight", unit = "N", predicted = 10, measured = 10.4, tolerance = 0.3 }
-)"));
-  Lesson lesson(script.path());
-  std::vector<ExpectationResult> rows = lesson.expectations();
-  EXPECT_FALSE(rows[0].measured_yet);
-  EXPECT_EQ(rows[0].measured_text, "not measured");
-  EXPECT_FALSE(rows[0].passes);
-  run_for(lesson, 0.5);
-  rows = lesson.expectations();
-  EXPECT_TRUE(rows[0].passes);
-  EXPECT_FALSE(rows[0].numeric);
-  EXPECT_TRUE(rows[1].passes);
-  EXPECT_NEAR(rows[1].error(), 0.4, 1e-12);
-  EXPECT_EQ(rows[1].unit, "N");
-  EXPECT_FALSE(rows[2].passes);
+)");
+  EXPECT_FALSE(rows.at_start[0].measured_yet);
+  EXPECT_EQ(rows.at_start[0].measured_text, "not measured");
+  EXPECT_FALSE(rows.at_start[0].passes);
+  const std::vector<ExpectationResult>& later = rows.half_a_second_on;
+  EXPECT_TRUE(later[0].passes);
+  EXPECT_FALSE(later[0].numeric);
+  EXPECT_TRUE(later[1].passes);
+  EXPECT_NEAR(later[1].error(), 0.4, 1e-12);
+  EXPECT_EQ(later[1].unit, "N");
+  EXPECT_FALSE(later[2].passes);
 }
 
 TEST(LessonFunctions, AWordFromMeasuredInANumberRowIsNotMeasuredYetAndSaysWhy) {
-  ScriptFile script(with_heading(R"(
+  const RowsThen rows = rows_at_start_and_half_a_second_on(R"(
 expect { "distance", unit = "m", predicted = 0.5, tolerance = 0.01,
   measured = function() if time() < 0.2 then return "still sliding" end return 0.5 end }
-)"));
-  Lesson lesson(script.path());
-  std::vector<ExpectationResult> rows = lesson.expectations();
-  EXPECT_TRUE(rows[0].numeric);
-  EXPECT_FALSE(rows[0].measured_yet);
-  EXPECT_EQ(rows[0].measured_text, "still sliding");
-  EXPECT_FALSE(rows[0].passes);
-  run_for(lesson, 0.5);
-  rows = lesson.expectations();
-  EXPECT_TRUE(rows[0].measured_yet);
-  EXPECT_TRUE(rows[0].passes);
+)");
+  EXPECT_TRUE(rows.at_start[0].numeric);
+  EXPECT_FALSE(rows.at_start[0].measured_yet);
+  EXPECT_EQ(rows.at_start[0].measured_text, "still sliding");
+  EXPECT_FALSE(rows.at_start[0].passes);
+  EXPECT_TRUE(rows.half_a_second_on[0].measured_yet);
+  EXPECT_TRUE(rows.half_a_second_on[0].passes);
 }
 
 // A lesson that takes a pair's values from the presets still has its sliders: every pair that

@@ -417,12 +417,7 @@ TEST(WorldFunctions, AFloorOfStripsRefusesStripsOutOfOrder) {
 }
 
 TEST(WorldFunctions, ForcesConstantAndFunctionsOfTimeAccelerateAFrictionlessBlock) {
-  ScriptFile script(with_heading(R"(
-material { "puck", density = 100 }
-pair { "puck", "ice", mu_s = 0, mu_k = 0 }
-pair { "puck", "puck", mu_s = 0, mu_k = 0 }
-local floor = ground { material = "ice" }
-local steady = box { "steady", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 2 }
+  ScriptFile script(on_frictionless_ice(R"(local steady = box { "steady", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 2 }
 local ramped = box { "ramped", material = "puck", width = 0.2, height = 0.1, on = floor, at = 5, mass = 1 }
 local grown = box { "grown", material = "puck", width = 0.2, height = 0.1, on = floor, at = 10, mass = 1 }
 local push = force { "push", on = steady, force = { 3, 0 } }
@@ -473,12 +468,7 @@ force { "pull", on = block, )" + fields + R"( }
 TEST(WorldFunctions, SpringBetweenTwoBlocksOscillatesAtItsNaturalFrequency) {
   // Two 1 kg blocks on ice joined by k = 50 N/m, stretched 0.1 m: the stretch swings as
   // 0.1·cos(ωt) with ω = sqrt(k / (m/2)) = 10 rad/s, so it is −0.1 m half a period later.
-  ScriptFile script(with_heading(R"(
-material { "puck", density = 100 }
-pair { "puck", "ice", mu_s = 0, mu_k = 0 }
-pair { "puck", "puck", mu_s = 0, mu_k = 0 }
-local floor = ground { material = "ice" }
-local left = box { "left", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 1 }
+  ScriptFile script(on_frictionless_ice(R"(local left = box { "left", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0, mass = 1 }
 local right = box { "right", material = "puck", width = 0.2, height = 0.1, on = floor, at = 0.6, mass = 1 }
 local link = spring { "link", from = left, to = right, k = 50, rest_length = 0.5 }
 probe { "stretch", unit = "m", function() return link.length - 0.5 end }
