@@ -76,5 +76,45 @@ TEST(WordsThatFit, AStatusLineIsCutBetweenWordsNeverInsideOne) {
   ImGui::EndFrame();
 }
 
+// The status line on the lines the bar's height holds: each line as many of the words as fit,
+// broken between words, none wider than the room; the words all there, in order, where they fit
+// on the lines; the last line cut as words_that_fit cuts where they do not.
+TEST(LinesThatFit, ALineIsBrokenBetweenWordsOntoAtMostTheLinesGiven) {
+  FontsForLayout& fonts = measuring();
+  ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 720.0f);
+  fonts.host.begin_frame();
+  const auto width = [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; };
+  const auto joined = [](const std::vector<std::string>& lines) {
+    std::string all;
+    for (const std::string& line : lines) all += (all.empty() ? "" : " ") + line;
+    return all;
+  };
+  const std::string notice = "As last time: dark theme, projector mode, no help, predictions.";
+  EXPECT_EQ(lines_that_fit(notice, width(notice), 2), std::vector<std::string>{notice}) << "it fits on one line";
+  EXPECT_TRUE(lines_that_fit("", 100.0f, 2).empty());
+  // Room for the longer of two halves: the first line as many words as fit, the second the rest.
+  const std::string first = "As last time: dark theme, projector", second = "mode, no help, predictions.";
+  EXPECT_EQ(lines_that_fit(notice, std::max(width(first), width(second)) + 1.0f, 2), (std::vector<std::string>{first, second}));
+  EXPECT_EQ(lines_that_fit(notice, width(first), 1).size(), 1u) << "one line given, one line";
+  int broken = 0;
+  for (float room = width("predictions."); room < width(notice); room += 5.0f) {
+    const std::vector<std::string> lines = lines_that_fit(notice, room, 2);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_LE(lines.size(), 2u) << "in " << room << " points";
+    for (const std::string& line : lines) EXPECT_LE(width(line), room) << "in " << room << " points: " << line;
+    // The first line takes as many words as fit: the next word would not.
+    if (lines.size() == 2 && joined(lines) == notice) {
+      const std::string next = notice.substr(lines[0].size() + 1, notice.find(' ', lines[0].size() + 1) - lines[0].size() - 1);
+      EXPECT_GT(width(lines[0] + " " + next), room) << "in " << room << " points, \"" << next << "\" fitted on the first line";
+      ++broken;
+    }
+    if (joined(lines) != notice) {
+      EXPECT_NE(lines.back().find("\u2026"), std::string::npos) << "in " << room << " points, cut without saying so";
+    }
+  }
+  EXPECT_GT(broken, 3);
+  ImGui::EndFrame();
+}
+
 }  // namespace
 }  // namespace frictionlab::draw
