@@ -352,38 +352,47 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
   draw_force(draw, arrow, theme, font, thickness, labels, format_quantity(arrow.force.force.Length(), "N"));
 }
 
-void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
-                LabelPlacer& labels, const std::string& text) {
-  const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
-  draw_arrow(draw, arrow.tail, arrow.tip, colour, thickness);
+PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
+                              const std::string& text) {
+  PlacedForce placed{arrow, text, ImVec2(0.0f, 0.0f), std::nullopt, std::nullopt, false};
+  const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   if (text.empty()) {
-    labels.force_label(
-        {DrawnSegment{arrow.tail, arrow.tip, 0.5f * thickness}, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body});
-    return;
+    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body});
+    placed.beside = true;  // nothing to read
+    return placed;
   }
-  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+  placed.size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
   // Just beyond the tip, far enough along the arrow's line that the text clears the head.
-  const float reach = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + 1.5f * thickness;
+  const float reach = 0.5f * (std::abs(unit.x) * placed.size.x + std::abs(unit.y) * placed.size.y) + 1.5f * thickness;
   // By its own arrow (place_beside): off the moving bodies where that is as near (a normal
   // force's arrow points into the body it pushes; a spring's runs along the spring).
-  const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   bool with_leader = false;
-  const std::optional<ImVec2> at =
-      labels.place_beside(add(arrow.tip, mul(unit, reach)), size, text, &own, &with_leader, arrow.force.body);
-  std::optional<DrawnSegment> leader;
-  if (at && with_leader) {
+  placed.at = labels.place_beside(add(arrow.tip, mul(unit, reach)), placed.size, text, &own, &with_leader, arrow.force.body);
+  if (placed.at && with_leader) {
     // No free place within a line of the arrow and nearer it than any other (a friction of a few
     // pixels where a normal force starts, a crowded stack): the value went to the nearest free
     // place, and a thin line from the arrow to it says whose it is, as a textbook's figure does.
     // Later labels keep off the line.
-    leader = leader_line(LabelPlacer::box_around(*at, size), own);
-    draw->AddLine(leader->from, leader->to, colour, 2.0f * leader->half_width);
-    labels.avoid(*leader);
+    placed.leader = leader_line(LabelPlacer::box_around(*placed.at, placed.size), own);
+    labels.avoid(*placed.leader);
   }
-  if (at) draw_label(draw, font, *at, colour, theme.panel, text.c_str());
-  const std::optional<ImVec4> box = at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
-  labels.force_label({own, box, text, arrow.force.kind, leader, arrow.force.body});
+  placed.beside = placed.at && (with_leader || labels.beside(*placed.at, placed.size, own));
+  const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
+  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body});
+  return placed;
+}
+
+void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness) {
+  const ImU32 colour = theme.force[static_cast<int>(placed.arrow.force.kind)];
+  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness);
+  if (placed.leader) draw->AddLine(placed.leader->from, placed.leader->to, colour, 2.0f * placed.leader->half_width);
+  if (placed.at) draw_label(draw, font, *placed.at, colour, theme.panel, placed.text.c_str());
+}
+
+void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
+                LabelPlacer& labels, const std::string& text) {
+  draw_placed_force(draw, place_force_label(arrow, font, thickness, labels, text), theme, font, thickness);
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {

@@ -196,6 +196,20 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
 // The same with its own label text ("9.81 N in all"); no label when `text` is empty.
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels, const std::string& text);
+// draw_force() in its two halves, so that a picture's values can be placed in trial orders on
+// copies of the placer before one is drawn (draw_world): where the value goes (told to the
+// placer, with its leader), then the arrow, the leader and the value drawn where they went.
+struct PlacedForce {
+  ScreenArrow arrow;
+  std::string text;
+  ImVec2 size;                          // the text's, px
+  std::optional<ImVec2> at;             // the value's centre; none where nothing was free
+  std::optional<DrawnSegment> leader;   // joining it to its arrow, where it is not beside it
+  bool beside = false;                  // by its own arrow (LabelPlacer::beside()) or joined by a leader; or no text
+};
+PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
+                              const std::string& text);
+void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness);
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
                   ImU32 outline, float thickness);
 

@@ -410,12 +410,11 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
   // longest (each foot's own value is a probe away). One label per foot crowds the picture.
+  std::vector<std::string> texts(arrows.size());
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     const ForceOnBody& force = arrows[i].force;
-    if (force.kind != ForceKind::normal) {
-      draw_force(draw, arrows[i], theme, fonts.body, thickness, labels);
-      continue;
-    }
+    texts[i] = format_quantity(force.force.Length(), "N");
+    if (force.kind != ForceKind::normal) continue;
     int count = 0;
     b2Vec2 sum{0.0f, 0.0f};
     std::size_t longest = i;
@@ -429,10 +428,49 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
       sum += arrows[j].force.force;
       if (arrows[j].length() > arrows[longest].length()) longest = j;
     }
-    std::string text = format_quantity(force.force.Length(), "N");
-    if (count > 1) text = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
-    draw_force(draw, arrows[i], theme, fonts.body, thickness, labels, text);
+    if (count > 1) texts[i] = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
   }
+  // The values placed in an order on a copy of the placer; where some found no place beside
+  // their own arrows (nor one joined by a leader), again with those first, for they have the
+  // fewest places (a short friction where a normal force starts), and the others after. Tried
+  // from the arrows' order and from the shortest arrow's first, the order that leaves the fewest
+  // values away from their arrows is drawn (the arrows' own order where they tie). (Issue 31: in
+  // a projector's thin lanes the values placed early took the only places by a short arrow.)
+  const auto place_all = [&](const std::vector<std::size_t>& order, LabelPlacer& placer) {
+    std::vector<PlacedForce> placed(arrows.size());
+    for (const std::size_t i : order) placed[i] = place_force_label(arrows[i], fonts.body, thickness, placer, texts[i]);
+    return placed;
+  };
+  const auto away = [](const std::vector<PlacedForce>& placed) {
+    return static_cast<int>(std::count_if(placed.begin(), placed.end(), [](const PlacedForce& p) { return !p.beside; }));
+  };
+  std::vector<std::size_t> in_order(arrows.size());
+  for (std::size_t i = 0; i < in_order.size(); ++i) in_order[i] = i;
+  std::vector<std::size_t> shortest_first = in_order;
+  std::stable_sort(shortest_first.begin(), shortest_first.end(),
+                   [&](std::size_t a, std::size_t b) { return arrows[a].length() < arrows[b].length(); });
+  LabelPlacer best_placer = labels;
+  std::vector<PlacedForce> best = place_all(in_order, best_placer);
+  for (std::vector<std::size_t> order : {in_order, shortest_first}) {
+    if (away(best) == 0) break;
+    LabelPlacer start_placer = labels;
+    std::vector<PlacedForce> start = place_all(order, start_placer);
+    for (int round = 0; round < 4 && away(start) > 0; ++round) {
+      // The values away from their arrows in this order, first, in that order.
+      std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !start[i].beside; });
+      LabelPlacer placer = labels;
+      std::vector<PlacedForce> placed = place_all(order, placer);
+      if (away(placed) >= away(start)) break;
+      start = std::move(placed);
+      start_placer = std::move(placer);
+    }
+    if (away(start) < away(best)) {
+      best = std::move(start);
+      best_placer = std::move(start_placer);
+    }
+  }
+  labels = std::move(best_placer);
+  for (const PlacedForce& placed : best) draw_placed_force(draw, placed, theme, fonts.body, thickness);
 }
 
 }  // namespace frictionlab::draw
