@@ -50,7 +50,12 @@ Classroom::Classroom(ClassroomOptions options)
   // now, at t = 0: a window opened at a later time (--at) has it read the run up to there.
   tools_.on = window_.tools;
   tools_.arm_stopwatch(0.0, false);
-  if (!options.opening_notice.empty()) status_.text = options.opening_notice;
+  // What the window opened with (a session's kept settings, a link's lesson) is news of the
+  // opening: said until the run leaves it, so that it never crowds out what is said later (the
+  // notice past the run's end was cut behind it on a projector's two lines).
+  if (!options.opening_notice.empty()) {
+    status_.say_of_moment(options.opening_notice, playback_->lesson().scene().frame(), theory_hidden());
+  }
 }
 
 void Classroom::forget_interaction() {
@@ -283,6 +288,7 @@ std::string Classroom::status() const { return status_.now(playback_->lesson().s
 std::string Classroom::transport_words() const {
   // Notices (the run is over, the file reloaded) and what was saved where, on one line.
   std::string said = script_words(playback_->notice());
+  if (const std::string past = playback_->past_end_words(); !past.empty()) said += (said.empty() ? "" : "  ") + past;
   if (const std::string now = status(); !now.empty()) said += (said.empty() ? "" : "  ") + script_words(now);
   if (playback_->behind()) said = "running slower than asked  " + said;
   return said;

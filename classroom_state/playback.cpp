@@ -100,13 +100,6 @@ void Playback::refresh_readings() {
     if (!failure) readings_.expectations.clear();
     readings_.error = error.what();
   }
-  // Played on past the lesson's end, the rows are those the run ended with (Lesson::expectations).
-  if (const std::optional<double> end = lesson_->rows_kept_from_end()) {
-    // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
-    const std::string kept = "t is past the run's end at " + seconds_text(*end, 6) +
-                             ": the table keeps the rows the run ended with. R runs it again.";
-    readings_.caveat = readings_.caveat.empty() ? kept : kept + " " + readings_.caveat;
-  }
   // The mouse's hand pulled during the run: the rows are not judged against predictions that
   // know nothing of it, and the class is told why, and when.
   const std::vector<HandStretch> stretches = gauge_.stretches(lesson_->scene().frame_step());
@@ -222,6 +215,13 @@ void Playback::step_and_check() {
               "). R starts again; Space plays on.";
     notice_frame_ = frame();
   }
+}
+
+std::string Playback::past_end_words() const {
+  const std::optional<double> end = lesson_->rows_kept_from_end();
+  if (!end) return "";
+  // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
+  return "Past the run's end at " + seconds_text(*end, 6) + ": the table keeps its rows. R restarts.";
 }
 
 std::string Playback::run_end_notice() const {

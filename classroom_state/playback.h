@@ -106,6 +106,10 @@ class Playback {
   // at that moment: rewound from the end, "the run ends at 3.46 s" (as it was worded) read as if it
   // were still there.
   std::string notice() const { return notice_frame_ && *notice_frame_ != frame() ? std::string() : notice_; }
+  // Played on past the lesson's end, the theory table keeps the rows the run ended with; said on
+  // the status line with the end step's own time ("" before the end). (Said above the table, its
+  // three lines pushed push's last row out of sight: the column moved under the class's eyes.)
+  std::string past_end_words() const;
   // The notice the run's end gives, known before the run gets there: the transport bar keeps its
   // room from the lesson's opening, so that it does not grow (and push the frame) as the run ends.
   std::string run_end_notice() const;

@@ -80,6 +80,19 @@ TEST(TransportBar, AProjectorsStatusLineIsReadWholeOnTwoLinesInsideTheBar) {
     EXPECT_LE(line.needed.w, bar->Pos.y + bar->Size.y) << "\"" << line.text << "\" ends below the bar";
   }
   EXPECT_EQ(bar->ScrollMax.y, 0.0f) << "the bar scrolls";
+  // Played on past the run's end, the status line's own notice is read whole too.
+  window.playback().run_to(window.playback().lesson().duration() + 1.0);
+  draw::FrameRecord past;
+  for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &past : nullptr);
+  const std::string said = window.playback().past_end_words();
+  ASSERT_FALSE(said.empty());
+  std::string read_past;
+  for (const draw::ShownText& text : past.texts) {
+    if (text.panel.find("###transport") == std::string::npos || (text.text.find("Past") == std::string::npos && read_past.empty())) continue;
+    read_past += (read_past.empty() ? "" : " ") + text.text;
+    EXPECT_TRUE(text.whole()) << "\"" << text.text << "\" is cut";
+  }
+  EXPECT_EQ(read_past, said) << "the notice past the run's end is cut";
 }
 
 TEST(TransportBar, PauseAndStepAdvanceExactlyOneStep) {
