@@ -82,15 +82,12 @@ double resolution_of(const std::string& unit) {
   return 0.0;
 }
 
-// `range` at least `span` wide, widened away from zero on the side its values lie (a tilt of
-// −0.0015° reads on −2° to 0°).
+// `range` at least `span` wide, widened upwards: values that narrow are noise about zero, whose
+// sign says nothing of where the quantity goes (tipping_box's tilt read −0.0015° before the box
+// tipped forwards; widened downwards its axis read −5° to 0° and then had to turn over).
 Range at_least(Range range, double span) {
   if (!(span > 0.0) || range.high - range.low >= span) return range;
-  if (range.high > -range.low) {
-    range.high = std::max(range.high, range.low + span);
-  } else {
-    range.low = std::min(range.low, range.high - span);
-  }
+  range.high = std::max(range.high, range.low + span);
   return range;
 }
 

@@ -573,6 +573,23 @@ TEST(PlotRanges, AreTheSameBeforeAndAfterTheRevealAndATimeAxisAllThroughTheRun) 
   }
 }
 
+// A teacher's trial: before tipping_box's box tipped, its tilt read −0.0015° of solver noise,
+// and the axis, fitted to it, read −0.002° to 0°; incline's distance read 0 to 0.002 m on a block
+// that sticks. An axis of a length or an angle is at least Box2D's own tolerance wide (2°, 5 mm),
+// widened upwards: the tilt's axis reaches past 2° (to 5°, its round end) and not below −0.01°.
+TEST(PlotRanges, AnAngleOrALengthIsNeverDrawnNarrowerThanTheWorldsTolerance) {
+  LessonAt at("tipping_box", {}, 1.5);
+  const Chart tilt = plot_chart(*at.lesson, 0, 2.5, theme(ThemeName::light), false);
+  ASSERT_EQ(at.lesson->probe_unit(at.lesson->plots()[0].y.front()), "\u00b0");
+  EXPECT_GE(tilt.y_high - tilt.y_low, 2.0) << "the tilt's axis " << tilt.y_low << " to " << tilt.y_high;
+  EXPECT_GE(tilt.y_high, 2.0) << "widened upwards";
+  EXPECT_GE(tilt.y_low, -0.01) << "not widened downwards";
+  LessonAt stuck("incline", {{"angle", "25"}}, 1.0);
+  const Chart distance = plot_chart(*stuck.lesson, 0, 1.0, theme(ThemeName::light), false);
+  ASSERT_EQ(stuck.lesson->probe_unit(stuck.lesson->plots()[0].y.front()), "m");
+  EXPECT_GE(distance.y_high - distance.y_low, 0.005) << "the distance's axis " << distance.y_low << " to " << distance.y_high;
+}
+
 // A time axis ends at a round time at or past the lesson's duration, 1, 1.5, 2, 2.5, 3, 4, 5, 6
 // or 8 times a power of ten: tipping_box's 2.5 s, push's 3.46 s to 4 s. While a mystery's values
 // are hidden it says nothing of them, growing with the run (1, 2, 5, 10 s) whatever the duration.
