@@ -117,9 +117,8 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     if (!shape.words_below) ImGui::SameLine();
     ImGui::PushFont(words_font);
     const std::vector<std::string> lines = draw::lines_that_fit(said, ImGui::GetContentRegionAvail().x, most_lines);
-    ImGui::PopFont();
+    bool cut_and_hovered = false;
     if (!lines.empty()) {
-      ImGui::PushFont(words_font);
       float widest = 0.0f;
       for (const std::string& words : lines) widest = std::max(widest, ImGui::CalcTextSize(words.c_str()).x);
       const ImVec2 extent(widest, static_cast<float>(lines.size()) * line);
@@ -139,18 +138,23 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
         drawing->AddText(at, colour, lines[i].c_str());
         draw::note_text_in(lines[i].c_str(), at, ImRect(corner, ImVec2(corner.x + size.x, corner.y + size.y)));
       }
-      ImGui::PopFont();
-      std::string shown;
+      // Cut or not, told word by word: the lines join their words with one space where the
+      // notices were joined with two.
+      std::string shown, whole;
       for (const std::string& words : lines) shown += (shown.empty() ? "" : " ") + words;
-      if (shown != said && ImGui::IsWindowHovered() &&
-          ImGui::IsMouseHoveringRect(first, ImVec2(first.x + extent.x, first.y + extent.y))) {
-        // Wrapped at half the screen: one line of a long notice ran past both of its edges.
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 0.5f * ImGui::GetIO().DisplaySize.x);
-        ImGui::TextUnformatted(said.c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-      }
+      for (const std::string& words : draw::lines_that_fit(said, INFINITY, 1)) whole += words;
+      cut_and_hovered = shown != whole && ImGui::IsWindowHovered() &&
+                        ImGui::IsMouseHoveringRect(first, ImVec2(first.x + extent.x, first.y + extent.y));
+    }
+    ImGui::PopFont();
+    if (cut_and_hovered) {
+      // In the window's own font, wrapped at half the screen: one line of a long notice ran past
+      // both of its edges.
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 0.5f * ImGui::GetIO().DisplaySize.x);
+      ImGui::TextUnformatted(said.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
     }
   }
   ImGui::End();
