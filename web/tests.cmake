@@ -41,7 +41,7 @@ foreach(file physics/test_materials physics/test_friction_laws physics/test_clos
 endforeach()
 foreach(file lessons/test_lesson lessons/test_sandbox scenarios/test_builtin_lessons lessons/test_script_world
              bench/test_lesson_problem lessons/test_script_predict lessons/test_script_lesson lessons/test_handles
-             lessons/test_script_theory)
+             lessons/test_script_theory lessons/test_class_words)
   frictionlab_web_test(${file} frictionlab_lessons)
 endforeach()
 # The guide's table of theory.* functions against the runtime's, read from the source tree.
