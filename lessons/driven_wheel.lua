@@ -85,7 +85,7 @@ local function first_slip_torque()
     end
   end
 end
-local function at_the_end(probe) return time() >= 2 - 0.5 * step_length() and value_at(probe, 2) or nil end
+local function at_the_end(probe) return reached(2) and value_at(probe, 2) or nil end
 -- ∫ ramp(t) dt from a to b: the torque's time integral in units of the full torque.
 local function ramp_integral(a, b)
   local function up_to(t) if t <= 1 then return t * t / 2 end return 0.5 + (t - 1) end
@@ -113,7 +113,7 @@ expect { "traction limit", unit = "N·m",
     if not spin_start() then
       if first_slip_torque() then return "passed" end
       -- Not reached only once the run is over (before Play: not yet).
-      return time() >= 2 - 0.5 * step_length() and "not reached" or nil
+      return reached(2) and "not reached" or nil
     end
     return first_slip_torque()
   end,
@@ -150,7 +150,7 @@ expect { "spin-up at the end", unit = "rad/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).angular_acceleration end,
   measured = function()
     if too_fast() then return too_fast() end
-    if time() < 2 - 0.5 * step_length() then return nil end
+    if not reached(2) then return nil end
     local spins = history("spin")
     if #spins < 2 then return nil end
     return (spins[#spins] - spins[#spins - 1]) / step_length()

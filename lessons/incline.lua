@@ -105,7 +105,7 @@ end
 expect { "mean acceleration down the slope", unit = "m/s²",
   predicted = predicted_acceleration,
   measured = function()
-    if time() < late_time - 0.5 * step_length() then return nil end
+    if not reached(late_time) then return nil end
     return (value_at("speed", late_time) - value_at("speed", early_time)) / (late_time - early_time)
   end,
   tolerance = function() return math.max(0.01 * math.abs(predicted_acceleration()), 0.01) end }

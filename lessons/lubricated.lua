@@ -159,7 +159,7 @@ for _, stretch in ipairs(stretches) do
 end
 
 local function at_the_end(probe)
-  return time() >= run_length() - 0.5 * step_length() and value_at(probe, run_length()) or nil
+  return reached(run_length()) and value_at(probe, run_length()) or nil
 end
 -- 1 % and 1 mm/s or 1 mm: with theory given the instants the run switches at, what is left
 -- is the breakaway within a step (the listener's correction makes it second order).

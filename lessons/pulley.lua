@@ -87,7 +87,7 @@ plot { "Speed of the block", kind = "time", y = { "speed" },
 
 -- Reading the record ----------------------------------------------------------------------
 local function at_the_end(probe)
-  return time() >= run_length() - 0.5 * step_length() and value_at(probe, run_length()) or nil
+  return reached(run_length()) and value_at(probe, run_length()) or nil
 end
 local function ever_slipped()
   for _, slipping in ipairs(history("slipping")) do
@@ -102,7 +102,7 @@ expect { "the block",
   -- Slid as soon as it slips; stayed put only once the run is over (before Play: not yet).
   measured = function()
     if ever_slipped() then return "slides" end
-    return time() >= run_length() - 0.5 * step_length() and "stays put" or nil
+    return reached(run_length()) and "stays put" or nil
   end }
 expect { "acceleration", unit = "m/s²",
   predicted = function() return pulley_theory().acceleration end,

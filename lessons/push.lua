@@ -78,7 +78,7 @@ end
 -- The end of the run at the sliders' values, where the last two rows are read.
 local function ending() return push_theory(0).breakaway_time + 1.5 end
 local function at_the_end(probe)
-  return time() >= ending() - 0.5 * step_length() and value_at(probe, ending()) or nil
+  return reached(ending()) and value_at(probe, ending()) or nil
 end
 
 -- Expectations ----------------------------------------------------------------------------

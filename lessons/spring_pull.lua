@@ -150,7 +150,7 @@ local function at_the_limit()
   return no_cycle() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief() or nil
 end
 local weight = mass * g
-local function run_over() return time() >= run_length() - 0.5 * step_length() end
+local function run_over() return reached(run_length()) end
 local never_sticks = "never sticks again in the run"
 local no_second = "no second breakaway in the run"
 

@@ -328,7 +328,7 @@ local flat_tilt_most = math.deg(math.atan(linear_slop / bottom_width))
 -- 5.55 kg, both mu_s 2, 50 N/s, the front lifts at 403 N as theory says while the tilt is
 -- still under flat_tilt_most (0.30°) when the top block slips, 12 N later.
 local function lifted_seen()
-  if time() < ending() - 0.5 * step_length() then return nil end
+  if not reached(ending()) then return nil end
   if close_race_from() then return too_close_words end
   local times, loads, slipping = history("time"), history("front_load"), history("top_slipping")
   local lifted, slipped
@@ -354,7 +354,7 @@ end
 -- front lifted sooner than that is read at the end, and its rows say it.
 local function reading_time()
   local e = ending()
-  if time() < e - 0.5 * step_length() or tips_at() then return e end
+  if not reached(e) or tips_at() then return e end
   local t, lifts, _, soonest = slipping_until()
   if not lifts or math.abs(t - e) > 0.5 * step_length() then return e end
   local times, loads = history("time"), history("front_load")
@@ -369,7 +369,7 @@ local function reading_time()
   return e
 end
 local function at_the_end(probe)
-  return time() >= ending() - 0.5 * step_length() and value_at(probe, reading_time()) or nil
+  return reached(ending()) and value_at(probe, reading_time()) or nil
 end
 
 -- Expectations ----------------------------------------------------------------------------
@@ -430,7 +430,7 @@ expect { "top block's acceleration, slipping", unit = "m/s²",
   -- there. The tilt counted is the world's, but never more than one edge sunk by the whole
   -- slop allows (flat_tilt_most, 0.36°): a world that tilts further is wrong, not excused.
   tolerance = function()
-    local tilt = time() >= ending() - 0.5 * step_length() and value_at("tilt", reading_time()) or 0
+    local tilt = reached(ending()) and value_at("tilt", reading_time()) or 0
     return 0.01 * top_acceleration_after() + 1e-3 + g * math.sin(math.rad(math.min(math.abs(tilt), flat_tilt_most)))
   end }
 -- Read where the rows about the end read (reading_time), where the pull was rate·(t − h).

@@ -403,7 +403,7 @@ local function no_model(t)
   if grazes_by(t) then return "grazes the static limit: no model" end
 end
 local function recorded(name, t)
-  return time() >= t - 0.5 * step_length() and value_at(name, t) or nil
+  return reached(t) and value_at(name, t) or nil
 end
 local function first_event(run, kind)
   for _, event in ipairs(run.events) do

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lessons/runtime/build.h"
+#include "lessons/runtime/lesson.h"
 #include "physics/friction_laws.h"
 #include "physics/scenarios.h"
 #include "physics/validation.h"
@@ -921,6 +922,21 @@ int step_length(lua_State* state) {
   return 1;
 }
 
+// reached(t): whether the run has got to time t, the step nearest t (the earlier of two as near)
+// taken or a later one. The same rule as the window's end of a run and the rows kept at the
+// lesson's end (Lesson::step_reaches), so a row read "at the end" is read in the step the run
+// ends with, whatever the step rate: time() >= t would wait a step more when t falls between
+// two steps, and time() >= t - step_length() would read one step early.
+int reached(lua_State* state) {
+  return guarded(state, [&] {
+    const double t = luaL_checknumber(state, 1);
+    if (!std::isfinite(t)) throw InvalidInput("reached: the time must be a finite number of seconds");
+    const Scene& scene = *build_of(state).scene;
+    lua_pushboolean(state, Lesson::step_reaches(scene.time(), scene.frame_step(), t));
+    return 1;
+  });
+}
+
 // The length of one world step: the frame's over the run's sub-steps. Functions of time (a
 // pair's coefficients) are asked at the start of each.
 int substep_length(lua_State* state) {
@@ -975,7 +991,7 @@ void register_lesson_api(lua_State* state) {
   const luaL_Reg functions[] = {{"lesson", lesson},       {"parameter", parameter}, {"material", material},
                                 {"pair", pair},           {"probe", probe},         {"plot", plot},
                                 {"expect", expect},       {"every_step", every_step}, {"time", time_now},
-                                {"step_length", step_length}, {"substep_length", substep_length}, {"history", history}, {"value_at", value_at}, {nullptr, nullptr}};
+                                {"step_length", step_length}, {"reached", reached}, {"substep_length", substep_length}, {"history", history}, {"value_at", value_at}, {nullptr, nullptr}};
   lua_pushglobaltable(state);
   luaL_setfuncs(state, functions, 0);
   lua_pop(state, 1);

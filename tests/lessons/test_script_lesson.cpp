@@ -455,6 +455,47 @@ end }
   for (const ExpectationResult& row : lesson.expectations()) EXPECT_TRUE(row.passes) << row.name;
 }
 
+// reached(t) is the window's rule for a run's end (Lesson::step_reaches): the step nearest t, or
+// a later one. At 100 Hz, 0.1049 s is first reached by the step at 0.10 s and 0.1051 s by the
+// step at 0.11 s; time() >= t would wait for 0.11 s for both.
+TEST(LessonFunctions, ReachedIsTrueFromTheStepNearestATime) {
+  ScriptFile script(with_heading(R"(
+local first = {}
+local times = { 0.1049, 0.1051, 0.3 }
+every_step(function(t)
+  for i, when in ipairs(times) do
+    if first[i] == nil and reached(when) then first[i] = t end
+  end
+end)
+for i, when in ipairs(times) do
+  expect { "first to reach " .. when, unit = "s", tolerance = 0, measured = function() return first[i] or "never" end,
+           predicted = 0 }
+end
+)"));
+  Lesson lesson(script.path(), {}, StepSettings{100.0});
+  run_for(lesson, 0.5);
+  const std::vector<ExpectationResult> rows = lesson.expectations();
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_NEAR(rows[0].measured, 0.10, 1e-12);
+  EXPECT_NEAR(rows[1].measured, 0.11, 1e-12);
+  EXPECT_NEAR(rows[2].measured, 0.30, 1e-12);
+  // As the lesson itself says it, at every step of the run.
+  Lesson again(script.path(), {}, StepSettings{100.0});
+  for (int i = 0; i < 20; ++i) {
+    again.step();
+    EXPECT_EQ(again.reached(0.1049), again.scene().time() > 0.0999) << again.scene().time();
+  }
+}
+
+TEST(LessonFunctions, ReachedAsksForAFiniteTime) {
+  ScriptFile script(with_heading(R"(
+expect { "never", predicted = true, measured = function() return reached(0 / 0) end }
+)"));
+  Lesson lesson(script.path());
+  const std::string refused = error_of([&] { lesson.expectations(); });
+  EXPECT_NE(refused.find(":3: reached: the time must be a finite number of seconds"), std::string::npos) << refused;
+}
+
 TEST(LessonFunctions, EveryStepRunsOncePerFrameWithTheTime) {
   ScriptFile script(with_heading(R"(
 local calls, last = 0, -1
