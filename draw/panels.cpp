@@ -109,9 +109,8 @@ std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, 
   std::string line;
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // Drag coefficients at 0 are off: not worth a place on a folded line.
-    if (pair_of(parameter) != pair || (parameter.value == 0.0 && (parameter.coefficient == "c" || parameter.coefficient == "b"))) {
-      continue;
-    }
+    const PairCoefficient* coefficient = pair_coefficient(parameter.coefficient);
+    if (pair_of(parameter) != pair || (parameter.value == 0.0 && coefficient != nullptr && coefficient->drag)) continue;
     const std::string letter = lessons::class_words(parameter.coefficient);
     // Without units: the sliders, one arrow away, have them.
     char value[32];

@@ -25,10 +25,7 @@ void require_slope_angle(const char* where, double angle) {
 }
 
 void require_pair(const char* where, const FrictionPair& pair) {
-  require_non_negative(where, "mu_s", pair.mu_s);
-  require_non_negative(where, "mu_k", pair.mu_k);
-  require_non_negative(where, "c", pair.c);
-  require_non_negative(where, "b", pair.b);
+  for (const PairCoefficient& coefficient : pair_coefficients) require_non_negative(where, coefficient.name, pair.*coefficient.value);
 }
 
 // Stick and slip only make sense together when sliding is no harder than starting to slide.

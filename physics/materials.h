@@ -42,12 +42,14 @@ struct PairCoefficient {
   // The meaning in one word, after the coefficient's letter on its slider ("μs static"): the
   // Parameters panel's names column is a third of the panel, too narrow for `meaning`.
   const char* word;
+  // A drag coefficient, off at 0 (a pair's folded line leaves it out then); dry friction's are not.
+  bool drag;
 };
 inline constexpr PairCoefficient pair_coefficients[] = {
-    {"mu_s", "", &FrictionPair::mu_s, 2.0, 10.0, "static friction coefficient", "static"},
-    {"mu_k", "", &FrictionPair::mu_k, 2.0, 10.0, "kinetic friction coefficient", "kinetic"},
-    {"c", "N·s/m", &FrictionPair::c, 1000.0, 1e6, "viscous drag coefficient", "viscous"},
-    {"b", "N·s²/m²", &FrictionPair::b, 1000.0, 1e6, "quadratic drag coefficient", "quadratic"},
+    {"mu_s", "", &FrictionPair::mu_s, 2.0, 10.0, "static friction coefficient", "static", false},
+    {"mu_k", "", &FrictionPair::mu_k, 2.0, 10.0, "kinetic friction coefficient", "kinetic", false},
+    {"c", "N·s/m", &FrictionPair::c, 1000.0, 1e6, "viscous drag coefficient", "viscous", true},
+    {"b", "N·s²/m²", &FrictionPair::b, 1000.0, 1e6, "quadratic drag coefficient", "quadratic", true},
 };
 // The dry pair, μs and μk, which the window takes together (a pair's presets, a mystery, the
 // stability map's boundary): by the table's rows, so their names are spelt here alone.

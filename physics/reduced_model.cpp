@@ -27,10 +27,9 @@ constexpr double max_steps = 1e9;
 void require_block(const char* where, const OneDofBlock& block) {
   require_positive(where, "mass", block.mass);
   require_non_negative(where, "normal_force", block.normal_force);
-  require_non_negative(where, "mu_s", block.pair.mu_s);
-  require_non_negative(where, "mu_k", block.pair.mu_k);
-  require_non_negative(where, "c", block.pair.c);
-  require_non_negative(where, "b", block.pair.b);
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    require_non_negative(where, coefficient.name, block.pair.*coefficient.value);
+  }
   require_finite(where, "constant_force", block.constant_force);
   require_non_negative(where, "spring_k", block.spring_k);
   require_finite(where, "anchor_start", block.anchor_start);

@@ -362,8 +362,13 @@ WedgeRun solve_wedge(const WedgeDrive& drive, WedgeLaw law, double t_end, double
   require_non_negative(where, "omega", drive.omega);
   require_finite(where, "a_x", drive.a_x);
   require_non_negative(where, "a_x_omega", drive.a_x_omega);
-  for (const auto& [name, mu] : {std::pair{"mu_s", drive.mu_s}, std::pair{"mu_k", drive.mu_k}}) {
-    if (!in_range(mu, 0.0, 10.0, false)) reject(where, name, "0 to 10", mu);
+  for (const auto& [coefficient, mu] : {std::pair{&static_coefficient, drive.mu_s}, std::pair{&kinetic_coefficient, drive.mu_k}}) {
+    // The physics' own limit, as check_pair holds every pair to.
+    if (!in_range(mu, 0.0, coefficient->largest, false)) {
+      std::ostringstream range;
+      range << "0 to " << coefficient->largest;
+      reject(where, coefficient->name, range.str(), mu);
+    }
   }
   require_positive(where, "g", drive.g);
   require_non_negative(where, "centre_height", drive.centre_height);

@@ -407,9 +407,10 @@ int pair(lua_State* state) {
     FrictionPair values;
     if (!like[0].empty()) {
       // Values come from the other pair, now and at every slider change: no sliders here.
-    } else if (fields.has("mu_s") || fields.has("mu_k")) {
-      if (!fields.has("mu_s") || !fields.has("mu_k")) {
-        throw InvalidInput("pair " + label + ": give both mu_s and mu_k, or neither for the preset values");
+    } else if (fields.has(static_coefficient.name) || fields.has(kinetic_coefficient.name)) {
+      if (!fields.has(static_coefficient.name) || !fields.has(kinetic_coefficient.name)) {
+        throw InvalidInput("pair " + label + ": give both " + static_coefficient.name + " and " + kinetic_coefficient.name +
+                           ", or neither for the preset values");
       }
     } else {
       const int a = build.presets.find_material(names[0]), b = build.presets.find_material(names[1]);

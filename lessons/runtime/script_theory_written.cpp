@@ -189,7 +189,9 @@ int regularized_run(lua_State* state) {
     block.mass = 1.0;
     block.normal_force = g * std::cos(angle);
     block.constant_force = g * std::sin(angle);
-    block.pair = {fields.number_in("mu_s", "", 0.0, 2.0, true), fields.number_in("mu_k", "", 0.0, 2.0), 0.0, 0.0};
+    // A lesson's range of μ, as its sliders have it.
+    block.pair = {fields.number_in(static_coefficient.name, "", 0.0, static_coefficient.lesson_largest, true),
+                  fields.number_in(kinetic_coefficient.name, "", 0.0, kinetic_coefficient.lesson_largest), 0.0, 0.0};
     const double epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
     const std::vector<Sample> samples = integrate_regularized(block, duration, step, epsilon, integrator);
     lua_createtable(state, 0, 2);
@@ -577,8 +579,9 @@ int wedge(lua_State* state) {
     drive.omega = fields.number_in("omega", "rad/s", 0.0, 0.0, 1000.0);
     drive.a_x = fields.number_in("a_x", "m/s²", 0.0, -1e4, 1e4);
     drive.a_x_omega = fields.number_in("a_x_omega", "rad/s", 0.0, 0.0, 1000.0);
-    drive.mu_k = fields.number_in("mu_k", "", 0.0, 10.0);
-    drive.mu_s = fields.number_in("mu_s", "", drive.mu_k, 0.0, 10.0);
+    // The physics' own limit (check_wedge's), not a lesson's: a student's drive may exceed 2.
+    drive.mu_k = fields.number_in(kinetic_coefficient.name, "", 0.0, kinetic_coefficient.largest);
+    drive.mu_s = fields.number_in(static_coefficient.name, "", drive.mu_k, 0.0, static_coefficient.largest);
     drive.g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
     drive.rotation = fields.flag("rotation").value_or(false);
     drive.centre_height = fields.number_in("centre_height", "m", 0.0, 0.0, 100.0);
