@@ -160,7 +160,7 @@ end
 -- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, or too brief to see) so are
 -- the breakaways after them: that row then reads the first breakaway alone, from both sides.
 local function at_the_limit()
-  return no_cycle() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stops_at_the_edge() or stick_too_brief() or nil
+  return no_cycle() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief() or stops_at_the_edge() or nil
 end
 local function run_over() return reached(run_length()) end
 local never_sticks = "never sticks again in the run"
