@@ -1,6 +1,7 @@
 #include "draw/world_view.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -291,6 +292,11 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
 
 }  // namespace
 
+ForceLabelTimes& force_label_times() {
+  thread_local ForceLabelTimes times;
+  return times;
+}
+
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
                 const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
@@ -449,27 +455,42 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   std::vector<std::size_t> shortest_first = in_order;
   std::stable_sort(shortest_first.begin(), shortest_first.end(),
                    [&](std::size_t a, std::size_t b) { return arrows[a].length() < arrows[b].length(); });
+  // Rounds of placing again, with the values that `placed` left away from their arrows first,
+  // while each leaves fewer away than the last, whose values and placer then replace `placed`'s.
+  const auto place_again = [&](std::vector<std::size_t> order, std::vector<PlacedForce>& placed, LabelPlacer& placer) {
+    for (int round = 0; round < 4 && away(placed) > 0; ++round) {
+      std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !placed[i].beside; });
+      LabelPlacer again_placer = labels;
+      std::vector<PlacedForce> again = place_all(order, again_placer);
+      if (away(again) >= away(placed)) break;
+      placed = std::move(again);
+      placer = std::move(again_placer);
+    }
+  };
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start_time = clock::now();
   LabelPlacer best_placer = labels;
   std::vector<PlacedForce> best = place_all(in_order, best_placer);
-  for (std::vector<std::size_t> order : {in_order, shortest_first}) {
-    if (away(best) == 0) break;
-    LabelPlacer start_placer = labels;
-    std::vector<PlacedForce> start = place_all(order, start_placer);
-    for (int round = 0; round < 4 && away(start) > 0; ++round) {
-      // The values away from their arrows in this order, first, in that order.
-      std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !start[i].beside; });
+  const clock::time_point retries_time = clock::now();
+  ForceLabelTimes& times = force_label_times();
+  ++times.views;
+  if (away(best) > 0) {
+    ++times.retried;
+    // The arrows' order's rounds start from its placing, `best`, rather than placing it again.
+    place_again(in_order, best, best_placer);
+    if (away(best) > 0) {
       LabelPlacer placer = labels;
-      std::vector<PlacedForce> placed = place_all(order, placer);
-      if (away(placed) >= away(start)) break;
-      start = std::move(placed);
-      start_placer = std::move(placer);
-    }
-    if (away(start) < away(best)) {
-      best = std::move(start);
-      best_placer = std::move(start_placer);
+      std::vector<PlacedForce> placed = place_all(shortest_first, placer);
+      place_again(shortest_first, placed, placer);
+      if (away(placed) < away(best)) {
+        best = std::move(placed);
+        best_placer = std::move(placer);
+      }
     }
   }
   labels = std::move(best_placer);
+  times.arrows_order += std::chrono::duration<double>(retries_time - start_time).count();
+  times.retries += std::chrono::duration<double>(clock::now() - retries_time).count();
   for (const PlacedForce& placed : best) draw_placed_force(draw, placed, theme, fonts.body, thickness);
 }
 

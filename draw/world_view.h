@@ -26,4 +26,16 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
                 const std::vector<const b2Body*>* labelled = nullptr, const std::function<void()>& fixed_labels = {});
 
+// What placing the forces' values took in draw_world on this thread, summed until the caller
+// sets it back to {}, for the benchmark only (nothing drawn depends on it), in wall-clock
+// seconds: the values placed in the arrows' order, which alone would be drawn with no retries,
+// and the retries where that order left some away from their arrows.
+struct ForceLabelTimes {
+  double arrows_order = 0.0;
+  double retries = 0.0;
+  int views = 0;    // draw_world's calls: one a lane
+  int retried = 0;  // of them, those whose arrows' order left a value away
+};
+ForceLabelTimes& force_label_times();
+
 }  // namespace frictionlab::draw

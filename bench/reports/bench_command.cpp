@@ -325,7 +325,9 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
   finish();
   const std::string frames = frame_speed(quick, part, bar.stage("frames drawn headless", 0.22));
   finish();
-  const std::string window_frames = window_frame_speed(quick, part, bar.stage("the window's frames", 0.50));
+  const std::string window_frames = window_frame_speed(quick, part, bar.stage("the window's frames", 0.42));
+  finish();
+  const std::string force_labels = force_label_speed(quick, part, bar.stage("the forces' values", 0.08));
   finish();
   const auto stability = stability_files(quick, directory, part, bar.stage("stability maps", 0.01));
   finish();
@@ -336,12 +338,14 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
                                                          {directory + "/lesson_speed.csv", speed}};
   if (!frames.empty()) files.emplace_back(directory + "/frame_speed.csv", frames);
   if (!window_frames.empty()) files.emplace_back(directory + "/window_frame.csv", window_frames);
+  if (!force_labels.empty()) files.emplace_back(directory + "/force_labels.csv", force_labels);
   files.insert(files.end(), stability.begin(), stability.end());
   files.insert(files.end(), problems.begin(), problems.end());
   if (!work_precision.empty()) files.emplace_back(directory + "/work_precision.png", work_precision);
   write_files_atomically(files);
   out << "\nwrote listener_cost.csv, stick_slip_accuracy.csv, lesson_speed.csv" << (frames.empty() ? "" : ", frame_speed.csv")
-      << (window_frames.empty() ? "" : ", window_frame.csv") << ", stability_map.csv"
+      << (window_frames.empty() ? "" : ", window_frame.csv") << (force_labels.empty() ? "" : ", force_labels.csv")
+      << ", stability_map.csv"
       << (stability.size() > 1 ? ", stability.png" : "") << (work_precision.empty() ? "" : ", work_precision.png")
       << ", work_precision.csv" << (problems.size() > 1 ? ", problems.png" : "")
       << " in " << directory << "\n";

@@ -46,6 +46,9 @@ std::string work_precision_png(const std::vector<AccuracyRun>& runs);
 std::string frame_speed(bool quick, std::ostream& out, const Progress& progress);
 // The window_frame.csv text (CPU time per display frame of the window), or empty where EGL cannot start.
 std::string window_frame_speed(bool quick, std::ostream& out, const Progress& progress);
+// The force_labels.csv text (what placing the forces' values takes in a projector's window frame,
+// with and without draw_world's retries), or empty where EGL cannot start.
+std::string force_label_speed(bool quick, std::ostream& out, const Progress& progress);
 // work_precision.csv (every problem × treatment × rate, and the spring's iterations and
 // sub-steps) and problems.png (a work-precision chart per problem), as (path, bytes).
 std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory,

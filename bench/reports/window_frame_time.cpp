@@ -14,6 +14,7 @@
 #include "classroom/classroom.h"
 #include "draw/headless.h"
 #include "draw/imgui_host.h"
+#include "draw/world_view.h"
 #include "lessons/runtime/catalog.h"
 #include "bench/cheapest_setting.h"
 
@@ -88,6 +89,70 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
   out << "\nOne display frame of the window, 1280x720 at 60 frames a second, the lesson playing at 1x (thread CPU "
          "time, median of "
       << frames << " frames; target 4 ms)\n";
+  print_table(out, table);
+  return csv.str();
+}
+
+std::string force_label_speed(bool quick, std::ostream& out, const Progress& progress) {
+  std::unique_ptr<draw::HeadlessContext> gl;
+  try {
+    gl = std::make_unique<draw::HeadlessContext>();
+  } catch (const std::exception& error) {
+    out << "\nForce labels: not measured, " << error.what() << '\n';
+    return "";
+  }
+  // A projector's screen: its thin lanes and large text leave the values fewest places, and
+  // send draw_world to its retries most.
+  const ImVec2 display(1920.0f, 1080.0f);
+  const int frames = quick ? 60 : 600;
+  std::ostringstream csv;
+  csv << "lesson,width,height,projector,frames,frames_retried,arrows_order_us_median,retries_us_median,"
+         "with_retries_us_median,with_retries_us_max,frame_ui_cpu_ms_median\n";
+  std::vector<std::vector<std::string>> table{
+      {"lesson", "arrows' order", "retries", "with retries", "worst", "frames retried", "whole frame (UI)"}};
+  const std::vector<std::string> names = lessons::builtin_lessons();
+  for (const std::string& name : names) {
+    draw::ImGuiHost host(nullptr);
+    gl->bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
+    classroom::ClassroomOptions options;
+    options.lesson = lessons::resolve_lesson(name);
+    options.window.help = false;
+    options.window.projector = true;
+    classroom::Classroom classroom(options);
+    std::vector<double> first, retries, both, whole;
+    int retried = 0;
+    for (int f = 0; f < frames; ++f) {
+      progress((static_cast<double>(&name - names.data()) + static_cast<double>(f) / frames) / static_cast<double>(names.size()));
+      if (!classroom.playback().playing()) classroom.playback().play();
+      const draw::Fonts& fonts = host.prepare(classroom.ui_scale(display), classroom.window_settings().theme);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = display;
+      io.DeltaTime = 1.0f / 60.0f;
+      draw::force_label_times() = {};
+      const double start = thread_cpu_seconds();
+      host.begin_frame();
+      classroom.frame(fonts, display, 1.0 / 60.0);
+      ImGui::Render();
+      whole.push_back(thread_cpu_seconds() - start);
+      const draw::ForceLabelTimes& times = draw::force_label_times();
+      first.push_back(times.arrows_order);
+      retries.push_back(times.retries);
+      both.push_back(times.arrows_order + times.retries);
+      if (times.retried > 0) ++retried;
+    }
+    const auto us = [](double seconds) { return seconds * 1e6; };
+    csv << name << ',' << display.x << ',' << display.y << ",1," << frames << ',' << retried << ',' << us(median(first))
+        << ',' << us(median(retries)) << ',' << us(median(both)) << ',' << us(percentile(both, 1.0)) << ','
+        << median(whole) * 1e3 << '\n';
+    const auto shown = [&](double seconds) { return format_number(us(seconds), 3) + " us"; };
+    table.push_back({name, shown(median(first)), shown(median(retries)), shown(median(both)), shown(percentile(both, 1.0)),
+                     std::to_string(retried) + " of " + std::to_string(frames),
+                     format_number(median(whole) * 1e3, 3) + " ms"});
+  }
+  out << "\nPlacing the forces' values in one display frame of the window, 1920x1080 in projector mode, the lesson "
+         "playing at 1x: in the arrows' order (what is drawn with no retries) and the retries where that order left a "
+         "value away from its arrow (wall clock, median of "
+      << frames << " frames; the whole frame's UI in thread CPU time)\n";
   print_table(out, table);
   return csv.str();
 }
