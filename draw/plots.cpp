@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "draw/overlays.h"
 #include "draw/words.h"
@@ -114,6 +115,9 @@ std::pair<double, double> sampling_range(double low, double high) {
 
 constexpr int theory_sample_count = 256;
 
+// The key of an X–Y plot's frames with no contact touching.
+constexpr const char* no_contact_key = "no contact";
+
 // What one plot of the lesson reads: its record's x and y values, probe by probe.
 struct PlotRecord {
   const lessons::Plot& plot;
@@ -149,27 +153,74 @@ void name_axes(Chart& chart, const lessons::Lesson& lesson, const lessons::Plot&
                                                                 : "";
 }
 
+// Each y probe's colour: a force of a known kind (its read = { ... } says: a contact's friction,
+// a normal force, an applied force, a spring, a rope) in its arrows' colour in the world, so
+// that a class matches a curve to its arrow (issue 31: the world drew friction vermilion and
+// spring_pull's plot drew it blue); the first probe of a kind takes it, and the others (a
+// second friction, a speed) the series colours in turn that no probe of the plot has yet, so
+// that two curves of one plot never share one.
+std::vector<ImU32> series_colours(const lessons::Lesson& lesson, const lessons::Plot& plot, const Theme& theme) {
+  std::vector<ImU32> colours(plot.y.size(), 0);
+  std::vector<bool> given(plot.y.size(), false);
+  const auto taken = [&](ImU32 colour) {
+    for (std::size_t k = 0; k < colours.size(); ++k) {
+      if (given[k] && colours[k] == colour) return true;
+    }
+    return false;
+  };
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
+    if (!kind) continue;
+    const ImU32 colour = theme.force[static_cast<int>(*kind)];
+    if (taken(colour)) continue;
+    colours[k] = colour;
+    given[k] = true;
+  }
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    if (given[k]) continue;
+    // More curves than series colours: they repeat, as they did before (none of the lessons
+    // plots more than four).
+    std::size_t tried = 0;
+    while (tried < 4 && taken(theme.series[next % 4])) ++next, ++tried;
+    colours[k] = theme.series[next % 4];
+    given[k] = true;
+    ++next;
+  }
+  return colours;
+}
+
 // The record: one series a probe. An X–Y plot of one probe is coloured by regime instead.
 void add_record(Chart& chart, const lessons::Lesson& lesson, const PlotRecord& record, const Theme& theme) {
   const lessons::Plot& plot = record.plot;
   const bool one_unit = one_y_unit(lesson, plot);
+  const std::vector<ImU32> series_colour = series_colours(lesson, plot, theme);
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     ChartSeries series;
     const std::string& unit = lesson.probe_unit(plot.y[k]);
     if (plot.y.size() > 1 || record.over_time) {
       series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
     }
-    series.colour = theme.series[k % 4];
+    series.colour = series_colour[k];
     series.points.reserve(record.count);
     for (std::size_t i = 0; i < record.count; ++i) series.points.push_back({(*record.xs[k])[i], (*record.ys[k])[i]});
     chart.series.push_back(std::move(series));
   }
   const std::vector<unsigned char>& slipping = lesson.scene().slipping();
+  const std::vector<unsigned char>& touching = lesson.scene().touching();
   if (!record.over_time && plot.y.size() == 1) {
+    // A frame with nothing touching is neither: push's block in the air read as sticking.
     std::vector<ImU32> colours(record.count);
-    for (std::size_t i = 0; i < record.count; ++i) colours[i] = i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
+    bool in_the_air = false;
+    for (std::size_t i = 0; i < record.count; ++i) {
+      const bool touches = i >= touching.size() || touching[i];
+      in_the_air = in_the_air || !touches;
+      colours[i] = !touches ? theme.no_contact : i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
+    }
     chart.segment_colours.push_back(std::move(colours));
     chart.colour_keys = {{"sticking", theme.sticking}, {"slipping", theme.slipping}};
+    // Keyed once it has happened; a steady plot keeps its key's room from the start.
+    if (in_the_air) chart.colour_keys.push_back({no_contact_key, theme.no_contact});
   }
   chart.mark_now = true;
   chart.now_colour = theme.now_marker;
@@ -334,6 +385,9 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   if (steady) {
     chart.steady = true;
     // Room beside the data for the theory's keys from the start, before the reveal shows them.
+    // An X–Y plot coloured by regime keys its three regimes first, "no contact" once it has
+    // happened, in a place of its own from the start.
+    if (!chart.segment_colours.empty()) chart.legend_room = {"sticking", "slipping", no_contact_key};
     for (const lessons::TheoryCurve& curve : record.plot.theory) chart.legend_room.push_back(curve.label);
   }
   Range y_range = extent_of(record.ys, record.count);
