@@ -510,38 +510,69 @@ bool round_end(double end) {
 
 // Issue 31, a teacher's trial: push's key plot rescaled every frame of the run, its friction
 // axis fitted to the record so far (−2.1 N at 1 s, −4.2 N at 2 s), the scale moving under the
-// class's eyes. Its ranges, x and y, have round ends (1, 2, 5 times a power of ten) that only
-// grow, frame by frame at 60 Hz, and hold still while the record stays within them: the push
-// from 1 s to the run's end (2 N to 6.92 N) steps once, 5 to 10 N, at a push of 4.85 N (its
-// margin takes it past 5). The levels −μs·N and −μk·N hold the friction axis at −5 N from the
-// opening, before the reveal and after it: it never moves.
-TEST(PlotRanges, HaveRoundEndsAndOnlyGrowAsTheRunGoesOn) {
+// class's eyes; then, with round ends that only grew, stacked_blocks' friction axis still
+// stepped 1, 2, 5, 10, 20, 50 N through its run, the last at 3.9 s of 4.2 s. A plot's axes are
+// what a run of the lesson to its end at the values it has reaches (and the theory), with round
+// ends, from the opening: in every built-in lesson, every plot's ranges at a fifth of the run,
+// two fifths, ... and at its end are those of t = 0, before the reveal and after it; push's,
+// frame by frame at 60 Hz, are 0–10 N by −5–0 N. While a mystery's values are hidden a run to
+// the end would tell them: there the record alone sets the axes, and they grow (push's x once
+// past 1 s, 5 to 10 N at a push of 4.85 N).
+TEST(PlotRanges, AreFixedFromTheOpeningForTheWholeRun) {
   for (const bool with_theory : {false, true}) {
     const char* shown = with_theory ? "after the reveal" : "before the reveal";
     LessonAt at("push", {}, 0.0);
     const double end = at.lesson->duration();
-    std::optional<Chart> last;
-    int x_steps = 0;
     for (int frame = 0; frame <= static_cast<int>(end * 60.0); ++frame) {
       at.step_to(frame / 60.0);
       const Chart chart = plot_chart(*at.lesson, 0, end, theme(ThemeName::light), with_theory);
       ASSERT_TRUE(chart.fixed_x && chart.fixed_y);
-      for (const double range_end : {chart.x_low, chart.x_high, chart.y_low, chart.y_high}) {
-        EXPECT_TRUE(round_end(range_end)) << shown << " at t = " << frame / 60.0 << ": range end " << range_end;
-      }
+      EXPECT_EQ(chart.x_low, 0.0) << shown << " at t = " << frame / 60.0;
+      EXPECT_EQ(chart.x_high, 10.0) << shown << " at t = " << frame / 60.0 << ": the push reaches 6.92 N";
       EXPECT_EQ(chart.y_low, -5.0) << shown << " at t = " << frame / 60.0 << ": the friction axis moved";
       EXPECT_EQ(chart.y_high, 0.0) << shown << " at t = " << frame / 60.0 << ": the friction axis moved";
-      if (frame == 0) continue;  // nothing recorded yet: the push's axis 0 to 1 N
-      if (last) {
-        EXPECT_LE(chart.x_low, last->x_low) << shown << " at t = " << frame / 60.0;
-        EXPECT_GE(chart.x_high, last->x_high) << shown << " at t = " << frame / 60.0;
-        if (frame > 60) x_steps += chart.x_low != last->x_low || chart.x_high != last->x_high;
-      }
-      last = chart;
     }
-    EXPECT_EQ(x_steps, 1) << shown;
-    EXPECT_EQ(last->x_high, 10.0) << shown << ": the push reached 6.92 N";
   }
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 0.0);
+    const double duration = at.lesson->duration();
+    std::vector<Chart> opening;
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      opening.push_back(plot_chart(*at.lesson, plot, time_axis_span(duration, 0.0), theme(ThemeName::light), false, true));
+    }
+    for (int fifth = 1; fifth <= 5; ++fifth) {
+      at.step_to(duration * fifth / 5.0);
+      for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+        const std::string where = name + ", plot " + std::to_string(plot) + " at " + std::to_string(at.scene().time()) + " s";
+        const Chart now = plot_chart(*at.lesson, plot, time_axis_span(duration, at.scene().time()), theme(ThemeName::light), true, true);
+        for (const double range_end : {now.x_low, now.x_high, now.y_low, now.y_high}) {
+          if (at.lesson->plots()[plot].kind == lessons::PlotKind::time && (range_end == now.x_high)) continue;
+          EXPECT_TRUE(round_end(range_end)) << where << ": range end " << range_end;
+        }
+        EXPECT_EQ(now.x_low, opening[plot].x_low) << where;
+        EXPECT_EQ(now.x_high, opening[plot].x_high) << where;
+        EXPECT_EQ(now.y_low, opening[plot].y_low) << where;
+        EXPECT_EQ(now.y_high, opening[plot].y_high) << where;
+      }
+    }
+  }
+  LessonAt stacked("stacked_blocks", {}, 0.0);
+  EXPECT_EQ(plot_chart(*stacked.lesson, 0, 5.0, theme(ThemeName::light)).y_high, 50.0) << "the pull reaches 21 N";
+  // A hidden mystery: the record alone.
+  LessonAt hidden("push", {}, 0.0);
+  const double end = hidden.lesson->duration();
+  double last_x = 0.0;
+  int x_steps = 0;
+  for (int frame = 60; frame <= static_cast<int>(end * 60.0); ++frame) {
+    hidden.step_to(frame / 60.0);
+    const Chart chart = plot_chart(*hidden.lesson, 0, end, theme(ThemeName::light), false, false, true);
+    EXPECT_TRUE(round_end(chart.x_high));
+    EXPECT_GE(chart.x_high, last_x) << "at t = " << frame / 60.0;
+    if (frame > 60 && chart.x_high != last_x) ++x_steps;
+    last_x = chart.x_high;
+  }
+  EXPECT_EQ(x_steps, 1);
+  EXPECT_EQ(last_x, 10.0);
 }
 
 // Issue 31, a teacher's trial in projector mode: the plots rescaled at the reveal (push's x axis
@@ -811,6 +842,44 @@ TEST(PlotColours, AFrameWithNoContactIsNeitherStickingNorSlipping) {
   LessonAt stays("push", {}, 3.0);
   for (const auto& key : plot_chart(*stays.lesson, 0, stays.lesson->duration(), theme(ThemeName::light)).colour_keys) {
     EXPECT_NE(key.first, "no contact");
+  }
+}
+
+// Issue 31: a plot on a page of its own (projector mode) reserved the width of "−8888.88" for
+// its y tick labels whatever they were; push's key plot reads −5 to 0 N. The column is as wide
+// as the widest label drawn in it (with the 10 pt before the axis), the same before the reveal
+// and after it (the axes do not move), and the data area has the rest: wider than it was by
+// the difference. Every built-in lesson's plots at the run's end on a projector: each label fits
+// its column.
+TEST(PlotTicks, APlotOnAPageOfItsOwnReservesTheWidthOfItsWidestLabel) {
+  const Fonts& fonts = projector_fonts();
+  ImFont* font = fonts.small;
+  const auto width_of_text = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  const ImVec2 size(1100.0f, 520.0f);
+  LessonAt push("push", {}, 3.0);
+  const ChartLayout hidden = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, size, fonts, false, true);
+  const ChartLayout shown = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, size, fonts, true, true);
+  ASSERT_TRUE(hidden.drawable && shown.drawable);
+  EXPECT_EQ(hidden.low_left.x, shown.low_left.x) << "the data area moved at the reveal";
+  EXPECT_EQ(hidden.high_right.x, shown.high_right.x) << "the data area moved at the reveal";
+  float widest = 0.0f;
+  for (const std::string& label : shown.y_tick_labels) widest = std::max(widest, width_of_text(label));
+  const float column = shown.low_left.x - corner.x - 10.0f * fonts.scale;
+  EXPECT_NEAR(column, widest, 0.5f) << "push's key plot: its labels run from " << shown.y_tick_labels.front() << " to "
+                                    << shown.y_tick_labels.back();
+  const float reserved_before = width_of_text("\u22128888.88");
+  EXPECT_LT(column, reserved_before - 20.0f * fonts.scale) << "the data area has not had its width back";
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 0.0);
+    at.step_to(at.lesson->duration());
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const ChartLayout layout = layout_plot(*at.lesson, plot, at.lesson->duration(), corner, size, fonts, true, true);
+      if (!layout.drawable) continue;
+      for (const std::string& label : layout.y_tick_labels) {
+        EXPECT_LE(width_of_text(label), layout.low_left.x - corner.x - 10.0f * fonts.scale + 0.01f)
+            << name << ", plot " << plot << ": \"" << label << "\" wider than its column";
+      }
+    }
   }
 }
 
