@@ -111,11 +111,11 @@ struct Chart {
   // The data area the same whatever the data and whatever the legend holds (a plot on a page of
   // its own, read from the back of a room): the inside legend goes in a column beside the data,
   // as wide as the longest of its keys and of `legend_room` (names that may join it, such as
-  // theory curves not shown yet), and the y tick labels have room for `tick_room` whatever
-  // their values. Plain charts only.
+  // theory curves not shown yet), and the y tick labels have the room of the widest of them,
+  // which holds still as the axes do (a lesson plot's are fixed, the same at the reveal). Plain
+  // charts only.
   bool steady = false;
   std::vector<std::string> legend_room;
-  std::string tick_room = "\u22128888.88";
   // The y ticks at least this many points of text scale 1 apart (0: as y_tick_count says):
   // as many as the data area's height holds.
   float y_tick_spacing = 0.0f;

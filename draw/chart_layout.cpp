@@ -61,12 +61,13 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       }
     }
     // The tick column as wide as the labels the data area's height leads to (fit_y_ticks): the
-    // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). A steady chart keeps
-    // room for `tick_room` too, so that it holds still as the run widens its range.
+    // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). No more: a steady
+    // chart kept the room of "−8888.88" whatever its ticks, and push's key plot on a projector
+    // gave a tenth of its width to blank space beside "−5"; its axes hold still (plot_chart), so
+    // its labels do too.
     ChartLayout trial = layout;
     fit_y_ticks(chart, axes.y, text, s, trial);
-    float widest = widest_label(trial.y_tick_labels, font);
-    if (chart.steady) widest = std::max(widest, width_of(font, chart.tick_room));
+    const float widest = widest_label(trial.y_tick_labels, font);
     layout.low_left.x += widest - label_width;
     label_width = widest;
   } else {
@@ -127,8 +128,10 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   if (!place_legend(chart, keys, corner, size, fonts, layout, place, set_x_ticks)) return layout;
   fit_y_ticks(chart, axes.y, text, s, layout);
   // A steady chart's legend rows above the data may have left it another height, and other
-  // ticks: the column takes their width (its legend is off the data, so nothing else moves).
-  if (chart.plain && chart.steady && widest_label(layout.y_tick_labels, font) > label_width) {
+  // ticks: the column takes their width, narrower too (push's key plot on a projector was
+  // measured with ticks every 0.5 N, "−4.5", and draws them every 1 N, "−5"), its legend being
+  // off the data, so nothing else moves.
+  if (chart.plain && chart.steady && widest_label(layout.y_tick_labels, font) != label_width) {
     layout.low_left.x += widest_label(layout.y_tick_labels, font) - label_width;
     if (layout.high_right.x - layout.low_left.x < 20.0f) {
       layout.drawable = false;

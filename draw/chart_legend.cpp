@@ -94,7 +94,15 @@ bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 
                        ChartLayout& layout, const std::function<void()>& place) {
   const float text = font->FontSize;
   std::vector<std::string> names;
-  for (const Key& key : keys) names.push_back(key.name);
+  // A room that names every key shown is the legend's whole order: a key that joins in the
+  // middle of it (an X–Y plot's "no contact", keyed once the block has left the floor, before
+  // the theory's keys) takes its own place and moves no other.
+  const bool whole_order = !chart.legend_room.empty() && std::all_of(keys.begin(), keys.end(), [&](const Key& key) {
+    return std::find(chart.legend_room.begin(), chart.legend_room.end(), key.name) != chart.legend_room.end();
+  });
+  if (!whole_order) {
+    for (const Key& key : keys) names.push_back(key.name);
+  }
   for (const std::string& name : chart.legend_room) {
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
@@ -119,7 +127,10 @@ bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 
   if (names.empty() && chart.y_label.empty()) return true;
   layout.y_label_at = ImVec2(left, top);
   layout.legend_outside = true;
-  layout.legend_at.assign(at.begin(), at.begin() + static_cast<long>(keys.size()));
+  layout.legend_at.clear();
+  for (const Key& key : keys) {
+    layout.legend_at.push_back(at[static_cast<std::size_t>(std::find(names.begin(), names.end(), key.name) - names.begin())]);
+  }
   // The data under the rows, with room for half the top tick's label.
   if (!data_from(y + row + 1.0f * s + 0.5f * text, layout, place)) return false;
   bound_keys(layout, keys, font, s);

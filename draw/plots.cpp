@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <optional>
 
 #include "draw/overlays.h"
 #include "draw/words.h"
@@ -18,9 +21,8 @@ struct Range {
   double low = 0.0, high = 1.0;
 };
 
-// What the values reach, with the zero line in it (forces are read against zero).
-Range extent_of(const std::vector<const std::vector<double>*>& series, std::size_t count) {
-  if (count == 0) return {};  // nothing recorded yet: 0 to 1
+// What the values reach, with the zero line in it (forces are read against zero), noise and all.
+Range reach_of(const std::vector<const std::vector<double>*>& series, std::size_t count) {
   double low = 0.0, high = 0.0;
   for (const auto* values : series) {
     for (std::size_t i = 0; i < count && i < values->size(); ++i) {
@@ -29,6 +31,12 @@ Range extent_of(const std::vector<const std::vector<double>*>& series, std::size
       high = std::max(high, (*values)[i]);
     }
   }
+  return {low, high};
+}
+
+// A reach as an axis shows it: rounding noise is not drawn as a signal.
+Range beyond_noise(Range reach) {
+  double low = reach.low, high = reach.high;
   // Rounding noise (a resting block's speed of 1e-9 m/s) is not drawn as a signal: the axis
   // reaches at least a thousandth of a unit from zero, or a millionth of the values' size.
   // (Spans in halves: values near ±1.7e308 are finite, but their span is not.)
@@ -38,6 +46,11 @@ Range extent_of(const std::vector<const std::vector<double>*>& series, std::size
     else low = high - least;
   }
   return {low, high};
+}
+
+Range extent_of(const std::vector<const std::vector<double>*>& series, std::size_t count) {
+  if (count == 0) return {};  // nothing recorded yet: 0 to 1
+  return beyond_noise(reach_of(series, count));
 }
 
 // The next of 1, 2, 5, 10, 20, ... times a power of ten at or above `size` (> 0), at most the
@@ -56,8 +69,7 @@ double round_bound(double size) {
 // alike (issue 31: push's x axis read 0–10 N before it, 0–6.3 N after), and from the theory's
 // values too, shown or not (push's friction axis reads −5 to 0 N from the opening): the steps of
 // 2 or 2.5 times tell a class no more of a level it is to predict than which of them it is in,
-// and the record only adds to the range, so the scale holds still between its steps, three a
-// decade. The margin is each side's own: a span's (6 % of 9.4 N) took spring_pull's ±4.7 N to
+// and the range is the whole run's from the opening (planned_reach), so the scale holds still. The margin is each side's own: a span's (6 % of 9.4 N) took spring_pull's ±4.7 N to
 // −5 and 10 N.
 Range round_ends(Range range) {
   constexpr double margin = 1.03;
@@ -114,6 +126,9 @@ std::pair<double, double> sampling_range(double low, double high) {
 
 constexpr int theory_sample_count = 256;
 
+// The key of an X–Y plot's frames with no contact touching.
+constexpr const char* no_contact_key = "no contact";
+
 // What one plot of the lesson reads: its record's x and y values, probe by probe.
 struct PlotRecord {
   const lessons::Plot& plot;
@@ -133,6 +148,84 @@ PlotRecord record_of(lessons::Lesson& lesson, std::size_t plot_index) {
   return record;
 }
 
+// What each plot's record reaches over a whole run of the lesson from t = 0 to its end, at the
+// values it has now: the axes' ends from the opening, so that no plot rescales as the run goes
+// past a round end (stacked_blocks' friction axis stepped 1, 2, 5, 10, 20, 50 N through its run,
+// the last at 3.9 s of 4.2 s; its accelerations 5 to 10 m/s² there). Worked out on a copy of the
+// lesson, once for each script text, setting and set of values (a slider moved runs it again).
+struct PlannedReach {
+  std::vector<Range> x, y;  // plot by plot; x for an X–Y plot only
+};
+
+std::string values_key(const lessons::Lesson& lesson) {
+  const lessons::ScriptText text = lesson.script();
+  std::string key = text.path + '\n' + text.source + '\n';
+  char number[64];
+  const StepSettings& settings = lesson.settings();
+  std::snprintf(number, sizeof number, "%.17g %d %d %d %d %.17g\n", settings.hz, settings.substeps, settings.velocity_iterations,
+                settings.position_iterations, static_cast<int>(settings.treatment), settings.threshold_speed);
+  key += number;
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    std::snprintf(number, sizeof number, "=%.17g\n", parameter.value);
+    key += parameter.name + number;
+  }
+  return key;
+}
+
+// The most world steps a rehearsal takes: 47 447 for push at 10 kg pushed at 0.2 N/s, 0.19 s
+// here; a run longer than that (a step rate of 100 000 Hz, a thousand sub-steps) is not run
+// ahead, lest the window freeze on a slider's move, and its axes follow its record.
+constexpr double rehearsal_steps = 60000.0;
+
+std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
+  const StepSettings& settings = lesson.settings();
+  if (!(lesson.duration() * settings.hz * settings.substeps <= rehearsal_steps)) return std::nullopt;
+  std::map<std::string, std::string> values;
+  char number[64];
+  for (const lessons::Parameter& parameter : lesson.parameters()) {
+    if (parameter.is_choice()) {
+      values[parameter.name] = parameter.choices.at(static_cast<std::size_t>(parameter.value));
+    } else {
+      std::snprintf(number, sizeof number, "%.17g", parameter.value);
+      values[parameter.name] = number;
+    }
+  }
+  try {
+    lessons::Lesson copy(lesson.script(), values, lesson.settings());
+    copy.step_to(copy.duration());
+    PlannedReach reach;
+    const Scene& scene = copy.scene();
+    const std::size_t count = scene.times().size();
+    for (const lessons::Plot& plot : copy.plots()) {
+      std::vector<const std::vector<double>*> xs, ys;
+      for (std::size_t k = 0; k < plot.y.size(); ++k) {
+        if (plot.kind != lessons::PlotKind::time) xs.push_back(&scene.probe(plot.x_of(k)).history);
+        ys.push_back(&scene.probe(plot.y[k]).history);
+      }
+      reach.x.push_back(xs.empty() ? Range{} : reach_of(xs, count));
+      reach.y.push_back(reach_of(ys, count));
+    }
+    return reach;
+  } catch (const std::exception&) {
+    return std::nullopt;  // the lesson itself says what went wrong; its axes follow its record
+  }
+}
+
+// The reach of the lesson's plots, from the last few rehearsals kept (the window draws a plot
+// every frame, and each plot asks).
+const PlannedReach* planned_reach(const lessons::Lesson& lesson) {
+  static std::vector<std::pair<std::string, std::optional<PlannedReach>>> kept;
+  const std::string key = values_key(lesson);
+  for (const auto& [known, reach] : kept) {
+    if (known == key) return reach ? &*reach : nullptr;
+  }
+  if (kept.size() >= 8) kept.erase(kept.begin());
+  kept.emplace_back(key, rehearse(lesson));
+  return kept.back().second ? &*kept.back().second : nullptr;
+}
+
+Range joined(Range a, Range b) { return {std::min(a.low, b.low), std::max(a.high, b.high)}; }
+
 bool one_y_unit(const lessons::Lesson& lesson, const lessons::Plot& plot) {
   return std::all_of(plot.y.begin(), plot.y.end(),
                      [&](const std::string& name) { return lesson.probe_unit(name) == lesson.probe_unit(plot.y.front()); });
@@ -149,27 +242,74 @@ void name_axes(Chart& chart, const lessons::Lesson& lesson, const lessons::Plot&
                                                                 : "";
 }
 
+// Each y probe's colour: a force of a known kind (its read = { ... } says: a contact's friction,
+// a normal force, an applied force, a spring, a rope) in its arrows' colour in the world, so
+// that a class matches a curve to its arrow (issue 31: the world drew friction vermilion and
+// spring_pull's plot drew it blue); the first probe of a kind takes it, and the others (a
+// second friction, a speed) the series colours in turn that no probe of the plot has yet, so
+// that two curves of one plot never share one.
+std::vector<ImU32> series_colours(const lessons::Lesson& lesson, const lessons::Plot& plot, const Theme& theme) {
+  std::vector<ImU32> colours(plot.y.size(), 0);
+  std::vector<bool> given(plot.y.size(), false);
+  const auto taken = [&](ImU32 colour) {
+    for (std::size_t k = 0; k < colours.size(); ++k) {
+      if (given[k] && colours[k] == colour) return true;
+    }
+    return false;
+  };
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
+    if (!kind) continue;
+    const ImU32 colour = theme.force[static_cast<int>(*kind)];
+    if (taken(colour)) continue;
+    colours[k] = colour;
+    given[k] = true;
+  }
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    if (given[k]) continue;
+    // More curves than series colours: they repeat, as they did before (none of the lessons
+    // plots more than four).
+    std::size_t tried = 0;
+    while (tried < 4 && taken(theme.series[next % 4])) ++next, ++tried;
+    colours[k] = theme.series[next % 4];
+    given[k] = true;
+    ++next;
+  }
+  return colours;
+}
+
 // The record: one series a probe. An X–Y plot of one probe is coloured by regime instead.
 void add_record(Chart& chart, const lessons::Lesson& lesson, const PlotRecord& record, const Theme& theme) {
   const lessons::Plot& plot = record.plot;
   const bool one_unit = one_y_unit(lesson, plot);
+  const std::vector<ImU32> series_colour = series_colours(lesson, plot, theme);
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     ChartSeries series;
     const std::string& unit = lesson.probe_unit(plot.y[k]);
     if (plot.y.size() > 1 || record.over_time) {
       series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
     }
-    series.colour = theme.series[k % 4];
+    series.colour = series_colour[k];
     series.points.reserve(record.count);
     for (std::size_t i = 0; i < record.count; ++i) series.points.push_back({(*record.xs[k])[i], (*record.ys[k])[i]});
     chart.series.push_back(std::move(series));
   }
   const std::vector<unsigned char>& slipping = lesson.scene().slipping();
+  const std::vector<unsigned char>& touching = lesson.scene().touching();
   if (!record.over_time && plot.y.size() == 1) {
+    // A frame with nothing touching is neither: push's block in the air read as sticking.
     std::vector<ImU32> colours(record.count);
-    for (std::size_t i = 0; i < record.count; ++i) colours[i] = i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
+    bool in_the_air = false;
+    for (std::size_t i = 0; i < record.count; ++i) {
+      const bool touches = i >= touching.size() || touching[i];
+      in_the_air = in_the_air || !touches;
+      colours[i] = !touches ? theme.no_contact : i < slipping.size() && slipping[i] ? theme.slipping : theme.sticking;
+    }
     chart.segment_colours.push_back(std::move(colours));
     chart.colour_keys = {{"sticking", theme.sticking}, {"slipping", theme.slipping}};
+    // Keyed once it has happened; a steady plot keeps its key's room from the start.
+    if (in_the_air) chart.colour_keys.push_back({no_contact_key, theme.no_contact});
   }
   chart.mark_now = true;
   chart.now_colour = theme.now_marker;
@@ -311,9 +451,18 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
 
   // The x axis: the time span (fixed by the lesson's duration from the opening), or what the
   // record reaches, with round ends.
+  // A mystery's values are hidden: a run to the end would tell them (push's breakaway on its x
+  // axis), so its axes follow the record alone until the reveal.
+  const PlannedReach* planned = secret ? nullptr : planned_reach(lesson);
+  const bool planned_here = planned != nullptr && plot_index < planned->y.size();
+  // (The noise floor on the whole: a partial record's noise, widened alone, took contact_area's
+  // speeds to −0.002 m/s early in the run and −1e-7 at its end.)
+  const Range x_reach = planned_here && !record.over_time
+                            ? beyond_noise(joined(reach_of(record.xs, record.count), planned->x[plot_index]))
+                            : extent_of(record.xs, record.count);
   const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
-                                         : record.count == 0 ? Range{}  // nothing recorded yet: 0 to 1
-                                                             : round_ends(at_least(extent_of(record.xs, record.count),
+                                         : record.count == 0 && !planned_here ? Range{}  // nothing recorded yet: 0 to 1
+                                                             : round_ends(at_least(x_reach,
                                                                                    resolution_of(lesson.probe_unit(record.plot.x))));
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
@@ -334,14 +483,19 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   if (steady) {
     chart.steady = true;
     // Room beside the data for the theory's keys from the start, before the reveal shows them.
+    // An X–Y plot coloured by regime keys its three regimes first, "no contact" once it has
+    // happened, in a place of its own from the start.
+    if (!chart.segment_colours.empty()) chart.legend_room = {"sticking", "slipping", no_contact_key};
     for (const lessons::TheoryCurve& curve : record.plot.theory) chart.legend_room.push_back(curve.label);
   }
-  Range y_range = extent_of(record.ys, record.count);
+  Range y_range = planned_here ? beyond_noise(joined(reach_of(record.ys, record.count), planned->y[plot_index]))
+                               : extent_of(record.ys, record.count);
+  const bool reached = record.count > 0 || planned_here;
   const Range theory_range = extent_of({&theory_values}, theory_values.size());
   if (!theory_values.empty()) {
-    y_range = record.count == 0 ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
+    y_range = !reached ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
   }
-  if (record.count > 0 || !theory_values.empty()) {
+  if (reached || !theory_values.empty()) {
     y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))));
   }
   chart.fixed_y = true;

@@ -31,9 +31,10 @@ double time_axis_span(double duration, double now, bool secret = false);
 // `time_span` is the time axis' length (time_axis_span). Without `with_theory` the probes
 // alone: the class has not seen the theory yet, or a mystery's values would be read off the
 // curves. The plot's levels (levels = { ... }) are theory too: drawn with the curves,
-// "label = value". The axes are the same with the theory and without it: each side of zero
-// ends at the next of 1, 2, 5 × 10ⁿ past the record and the theory's values, so the plot keeps
-// its scale at the reveal. The y ticks are as fine as the data area's height reads.
+// "label = value". The axes are the same with the theory and without it, and from the opening
+// to the run's end: each side of zero ends at the next of 1, 2, 5 × 10ⁿ past what a run of the
+// lesson to its end at its present values records (worked out once on a copy), the record and
+// the theory's values, so the plot keeps its scale as the run goes on and at the reveal. The y ticks are as fine as the data area's height reads.
 // `steady`: a plot on a page of its own (projector mode), its data area kept the same whatever
 // the run and the reveal add. `secret`: a mystery's values are hidden, and the theory worked out
 // from them counts for no axis until its reveal (the record alone sets them).

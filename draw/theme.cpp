@@ -65,6 +65,9 @@ Theme make_light() {
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
   t.slip_band = IM_COL32(240, 120, 190, 60);
+  // Indigo: off the states' teal and magenta and the theory's grey and ochre (an X–Y plot's
+  // other curves), 7.4:1 on white.
+  t.no_contact = IM_COL32(80, 60, 200, 255);
   t.now_marker = IM_COL32(20, 20, 24, 255);
   t.series[0] = IM_COL32(0, 100, 210, 255);
   t.series[1] = IM_COL32(220, 70, 0, 255);
@@ -109,6 +112,7 @@ Theme make_dark() {
   t.sticking = IM_COL32(40, 200, 210, 255);
   t.slipping = IM_COL32(255, 90, 180, 255);
   t.slip_band = IM_COL32(255, 90, 180, 45);
+  t.no_contact = IM_COL32(160, 150, 255, 255);  // periwinkle, 6:1 on the panel
   t.now_marker = IM_COL32(236, 236, 236, 255);
   t.series[0] = IM_COL32(90, 170, 255, 255);
   t.series[1] = IM_COL32(255, 130, 60, 255);

@@ -27,6 +27,8 @@ struct Theme {
   ImU32 sky, ground_edge, outline, driven_outline, spring, rope, hand;
   ImU32 force[force_kind_count];
   ImU32 sticking, slipping, slip_band, now_marker;
+  // A frame with no contact touching (every body in the air): neither sticking nor slipping.
+  ImU32 no_contact;
   ImU32 series[4];
   // Laws drawn beside the measurements (plots' theory curves): a plot's curves take them in turn.
   ImU32 theory[2];

@@ -590,11 +590,15 @@ void Scene::step() {
   if (before_probes_) before_probes_();
   for (Probe& probe : probes_) probe.history.push_back(probe.measure());
   times_.push_back(time_);
-  bool any_slipping = false;
+  bool any_slipping = false, any_touching = false;
   for (const ContactRecord& record : listener_.contacts()) {
     any_slipping = any_slipping || (record.point_count > 0 && record.seen_slipping());
+    // Where the shapes are now, as the probes read a contact: a block that has just left the
+    // floor reads no contact in the very step it leaves (its friction reads 0 there).
+    any_touching = any_touching || (record.point_count > 0 && touching_now(record.contact));
   }
   slipping_.push_back(any_slipping ? 1 : 0);
+  touching_record_.push_back(any_touching ? 1 : 0);
 }
 
 void Scene::advance(double t, float h, double t_end, bool move) {

@@ -186,6 +186,10 @@ class Scene {
   // One entry a frame, beside times(): 1 if some touching contact was slipping at the end of
   // that frame, else 0. Plots shade the slip regime with it.
   const std::vector<unsigned char>& slipping() const { return slipping_; }
+  // One entry a frame, beside times(): 1 if some contact was touching at the end of that frame,
+  // else 0 (every body in the air: a block thrown or lifted). Neither sticking nor slipping,
+  // the plots colour such a frame as a regime of its own.
+  const std::vector<unsigned char>& touching() const { return touching_record_; }
   const Probe& probe(const std::string& name) const;
 
   // Forces now, for probes and arrows: a spring's pull on its body, an applied force.
@@ -323,6 +327,7 @@ class Scene {
   std::function<void(double)> before_substep_;
   std::vector<double> times_;
   std::vector<unsigned char> slipping_;
+  std::vector<unsigned char> touching_record_;
   struct MaterialUse {
     int id;
     bool on_dynamic;  // some dynamic body is made of it

@@ -30,6 +30,9 @@ struct ProbeInfo {
   std::string what;    // "probe 'name'", made once for error messages
   double value = 0.0;  // measured after the latest frame
   std::string label;   // probe{ label = ... }: what plots call it; "" leaves it to the window
+  // The kind of force it reads, where its read = { ... } says (a contact's friction or normal
+  // force, an applied force, a spring, a rope): plots draw it in the arrows' colour.
+  std::optional<ForceKind> force;
 };
 
 // Each part is a Lua value kept in the registry: a constant or a function to call.
@@ -254,8 +257,11 @@ void register_predict_api(lua_State* state);
 void check_predictions(LessonBuild& build);
 
 // A number read from a handle without Lua, for probe{ read = { handle, "field" } }. The
-// table is at `index`; throws InvalidInput naming `what` and the handle's fields.
-std::function<double()> reading(lua_State* state, int index, const std::string& what);
+// table is at `index`; throws InvalidInput naming `what` and the handle's fields. `force`, when
+// given, is set to the kind of force the field is (nothing where it is no force: a speed, a
+// contact's slipping or points, a force's torque).
+std::function<double()> reading(lua_State* state, int index, const std::string& what,
+                                std::optional<ForceKind>* force = nullptr);
 
 
 }  // namespace frictionlab::lessons

@@ -482,9 +482,32 @@ std::function<double()> acceleration_reading(const Scene& scene, const Handle& h
   };
 }
 
+// The kind of force a handle's field is, if it is one.
+std::optional<ForceKind> force_kind_of(HandleType type, Field field) {
+  switch (type) {
+    case force_type:
+      if (field == Field::fx || field == Field::fy) return ForceKind::applied;
+      return std::nullopt;  // a torque
+    case spring_type:
+      if (field == Field::force_x || field == Field::force_y || field == Field::tension) return ForceKind::spring;
+      return std::nullopt;  // a length
+    case rope_type: return ForceKind::tension;
+    case contact_type:
+      switch (field) {
+        case Field::friction: case Field::fx: case Field::fy: return ForceKind::friction;
+        case Field::normal: case Field::nx: case Field::ny: case Field::load1: case Field::load2:
+        case Field::load_left: case Field::load_right: return ForceKind::normal;
+        case Field::drag: case Field::drag_x: case Field::drag_y: return ForceKind::drag;
+        default: return std::nullopt;  // a sliding speed, a state, a count of points
+      }
+    case body_type: break;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
-std::function<double()> reading(lua_State* state, int index, const std::string& what) {
+std::function<double()> reading(lua_State* state, int index, const std::string& what, std::optional<ForceKind>* force) {
   index = lua_absindex(state, index);
   const std::string expected = what + ": read must name a handle and one of its numbers, as in read = { block, \"vx\" }";
   if (!lua_istable(state, index)) throw InvalidInput(expected + "; got " + describe(state, index));
@@ -529,6 +552,7 @@ std::function<double()> reading(lua_State* state, int index, const std::string& 
     if (handle->frame != nullptr) handle->start = handle->frame->GetLocalPoint(handle->start);
   }
   handle->scale = options.number("scale", "", 1.0);
+  if (force) *force = force_kind_of(handle->type, *field);
   const Scene* scene = build_of(state).scene.get();
   if (*field == Field::acceleration) return acceleration_reading(*scene, *handle);
   return [scene, h = *handle, f = *field] { return h.scale * read_field(*scene, h, f); };

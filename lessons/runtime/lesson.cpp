@@ -377,6 +377,13 @@ const std::string& Lesson::probe_label(const std::string& probe) const {
   throw InvalidInput("no probe '" + probe + "' in " + path_);
 }
 
+std::optional<ForceKind> Lesson::probe_force(const std::string& probe) const {
+  for (const ProbeInfo& info : current_->probes) {
+    if (info.name == probe) return info.force;
+  }
+  throw InvalidInput("no probe '" + probe + "' in " + path_);
+}
+
 void Lesson::step_to(double t) {
   while (!reached(t)) step();
 }

@@ -13,6 +13,7 @@
 
 #include "lessons/runtime/sandbox.h"
 #include "physics/scene.h"
+#include "physics/scene_forces.h"
 
 namespace frictionlab::lessons {
 
@@ -232,6 +233,11 @@ class Lesson {
   // What the script calls the probe for the class (probe{ label = ... }), "" when it gives no
   // label (the window then says its name in words).
   const std::string& probe_label(const std::string& probe) const;
+  // The kind of force a probe reads, where its read = { handle, "field" } tells (a contact's
+  // fx, fy or friction is friction; its normal, nx, ny or loads the normal force; a force's fx
+  // or fy an applied force; a spring's, a rope's pull); nothing for a probe computed by a
+  // function or sampled, whose kind no reading says, nor for what is no force.
+  std::optional<ForceKind> probe_force(const std::string& probe) const;
 
   // One frame: the scene's step, then the script's every-step functions. A script error stops
   // the lesson (failed() is true until a rebuild) and is thrown as ScriptError.

@@ -569,14 +569,15 @@ int probe(lua_State* state) {
       const double every = fields.number_in("every", "s", 0.0, 1e6, true);
       const double delay = fields.number_in("delay", "s", 0.0, 0.0, 1e6);
       build.scene->add_probe(name, sampled_reading(build, reference, every, delay, fields.what()));
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, std::nullopt});
       return 0;
     }
     if (fields.has("read")) {
       fields.push("read");
-      build.scene->add_probe(name, reading(state, -1, fields.what()));
+      std::optional<ForceKind> force;
+      build.scene->add_probe(name, reading(state, -1, fields.what(), &force));
       lua_pop(state, 1);
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, force});
       return 0;
     }
     lua_rawgeti(state, 1, 2);
@@ -589,7 +590,7 @@ int probe(lua_State* state) {
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
     build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
-    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label});
+    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label, std::nullopt});
     build.lua_probes = true;
     return 0;
   });

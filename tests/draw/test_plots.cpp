@@ -510,38 +510,69 @@ bool round_end(double end) {
 
 // Issue 31, a teacher's trial: push's key plot rescaled every frame of the run, its friction
 // axis fitted to the record so far (−2.1 N at 1 s, −4.2 N at 2 s), the scale moving under the
-// class's eyes. Its ranges, x and y, have round ends (1, 2, 5 times a power of ten) that only
-// grow, frame by frame at 60 Hz, and hold still while the record stays within them: the push
-// from 1 s to the run's end (2 N to 6.92 N) steps once, 5 to 10 N, at a push of 4.85 N (its
-// margin takes it past 5). The levels −μs·N and −μk·N hold the friction axis at −5 N from the
-// opening, before the reveal and after it: it never moves.
-TEST(PlotRanges, HaveRoundEndsAndOnlyGrowAsTheRunGoesOn) {
+// class's eyes; then, with round ends that only grew, stacked_blocks' friction axis still
+// stepped 1, 2, 5, 10, 20, 50 N through its run, the last at 3.9 s of 4.2 s. A plot's axes are
+// what a run of the lesson to its end at the values it has reaches (and the theory), with round
+// ends, from the opening: in every built-in lesson, every plot's ranges at a fifth of the run,
+// two fifths, ... and at its end are those of t = 0, before the reveal and after it; push's,
+// frame by frame at 60 Hz, are 0–10 N by −5–0 N. While a mystery's values are hidden a run to
+// the end would tell them: there the record alone sets the axes, and they grow (push's x once
+// past 1 s, 5 to 10 N at a push of 4.85 N).
+TEST(PlotRanges, AreFixedFromTheOpeningForTheWholeRun) {
   for (const bool with_theory : {false, true}) {
     const char* shown = with_theory ? "after the reveal" : "before the reveal";
     LessonAt at("push", {}, 0.0);
     const double end = at.lesson->duration();
-    std::optional<Chart> last;
-    int x_steps = 0;
     for (int frame = 0; frame <= static_cast<int>(end * 60.0); ++frame) {
       at.step_to(frame / 60.0);
       const Chart chart = plot_chart(*at.lesson, 0, end, theme(ThemeName::light), with_theory);
       ASSERT_TRUE(chart.fixed_x && chart.fixed_y);
-      for (const double range_end : {chart.x_low, chart.x_high, chart.y_low, chart.y_high}) {
-        EXPECT_TRUE(round_end(range_end)) << shown << " at t = " << frame / 60.0 << ": range end " << range_end;
-      }
+      EXPECT_EQ(chart.x_low, 0.0) << shown << " at t = " << frame / 60.0;
+      EXPECT_EQ(chart.x_high, 10.0) << shown << " at t = " << frame / 60.0 << ": the push reaches 6.92 N";
       EXPECT_EQ(chart.y_low, -5.0) << shown << " at t = " << frame / 60.0 << ": the friction axis moved";
       EXPECT_EQ(chart.y_high, 0.0) << shown << " at t = " << frame / 60.0 << ": the friction axis moved";
-      if (frame == 0) continue;  // nothing recorded yet: the push's axis 0 to 1 N
-      if (last) {
-        EXPECT_LE(chart.x_low, last->x_low) << shown << " at t = " << frame / 60.0;
-        EXPECT_GE(chart.x_high, last->x_high) << shown << " at t = " << frame / 60.0;
-        if (frame > 60) x_steps += chart.x_low != last->x_low || chart.x_high != last->x_high;
-      }
-      last = chart;
     }
-    EXPECT_EQ(x_steps, 1) << shown;
-    EXPECT_EQ(last->x_high, 10.0) << shown << ": the push reached 6.92 N";
   }
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 0.0);
+    const double duration = at.lesson->duration();
+    std::vector<Chart> opening;
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      opening.push_back(plot_chart(*at.lesson, plot, time_axis_span(duration, 0.0), theme(ThemeName::light), false, true));
+    }
+    for (int fifth = 1; fifth <= 5; ++fifth) {
+      at.step_to(duration * fifth / 5.0);
+      for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+        const std::string where = name + ", plot " + std::to_string(plot) + " at " + std::to_string(at.scene().time()) + " s";
+        const Chart now = plot_chart(*at.lesson, plot, time_axis_span(duration, at.scene().time()), theme(ThemeName::light), true, true);
+        for (const double range_end : {now.x_low, now.x_high, now.y_low, now.y_high}) {
+          if (at.lesson->plots()[plot].kind == lessons::PlotKind::time && (range_end == now.x_high)) continue;
+          EXPECT_TRUE(round_end(range_end)) << where << ": range end " << range_end;
+        }
+        EXPECT_EQ(now.x_low, opening[plot].x_low) << where;
+        EXPECT_EQ(now.x_high, opening[plot].x_high) << where;
+        EXPECT_EQ(now.y_low, opening[plot].y_low) << where;
+        EXPECT_EQ(now.y_high, opening[plot].y_high) << where;
+      }
+    }
+  }
+  LessonAt stacked("stacked_blocks", {}, 0.0);
+  EXPECT_EQ(plot_chart(*stacked.lesson, 0, 5.0, theme(ThemeName::light)).y_high, 50.0) << "the pull reaches 21 N";
+  // A hidden mystery: the record alone.
+  LessonAt hidden("push", {}, 0.0);
+  const double end = hidden.lesson->duration();
+  double last_x = 0.0;
+  int x_steps = 0;
+  for (int frame = 60; frame <= static_cast<int>(end * 60.0); ++frame) {
+    hidden.step_to(frame / 60.0);
+    const Chart chart = plot_chart(*hidden.lesson, 0, end, theme(ThemeName::light), false, false, true);
+    EXPECT_TRUE(round_end(chart.x_high));
+    EXPECT_GE(chart.x_high, last_x) << "at t = " << frame / 60.0;
+    if (frame > 60 && chart.x_high != last_x) ++x_steps;
+    last_x = chart.x_high;
+  }
+  EXPECT_EQ(x_steps, 1);
+  EXPECT_EQ(last_x, 10.0);
 }
 
 // Issue 31, a teacher's trial in projector mode: the plots rescaled at the reveal (push's x axis
@@ -719,6 +750,137 @@ TEST(PlotRanges, ALevelIsASolidLineNoTheoryCurveLooksLike) {
   // One anti-aliased line is up to 8 vertices; the sticking curve crossing the row adds a dash or two.
   EXPECT_LE(on_row, 24) << "the level is drawn in pieces";
   EXPECT_GT(on_row, 0) << "the level is not drawn";
+}
+
+
+// Issue 31, a teacher's trial: a force's curve was drawn in another colour than its arrow in the
+// world (spring_pull's friction blue on the plot, vermilion as an arrow). A probe whose read =
+// { ... } is a force of a known kind takes that kind's arrow colour, in both themes; a second
+// probe of the same kind, and any other, a colour of its own: no two curves of a plot share one.
+TEST(PlotColours, AForceReadFromTheWorldIsDrawnInItsArrowsColour) {
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    const auto force = [&](ForceKind kind) { return colours.force[static_cast<int>(kind)]; };
+    LessonAt spring("spring_pull", {}, 1.0);
+    ASSERT_EQ(spring.lesson->plots()[0].y, (std::vector<std::string>{"spring_force", "friction_force"}));
+    const Chart forces = plot_chart(*spring.lesson, 0, spring.lesson->duration(), colours);
+    EXPECT_EQ(forces.series[0].colour, force(ForceKind::spring)) << "spring_pull's spring";
+    EXPECT_EQ(forces.series[1].colour, force(ForceKind::friction)) << "spring_pull's friction";
+    LessonAt pulley("pulley", {}, 1.0);
+    ASSERT_EQ(pulley.lesson->plots()[0].y, (std::vector<std::string>{"tension", "friction_force"}));
+    const Chart rope = plot_chart(*pulley.lesson, 0, pulley.lesson->duration(), colours);
+    EXPECT_EQ(rope.series[0].colour, force(ForceKind::tension)) << "pulley's rope";
+    EXPECT_EQ(rope.series[1].colour, force(ForceKind::friction)) << "pulley's friction";
+    LessonAt stacked("stacked_blocks", {}, 1.0);
+    const Chart each = plot_chart(*stacked.lesson, 0, stacked.lesson->duration(), colours);
+    ASSERT_EQ(each.series.size(), 3u);
+    EXPECT_EQ(each.series[0].colour, force(ForceKind::applied)) << "stacked_blocks' pull";
+    EXPECT_EQ(each.series[1].colour, force(ForceKind::friction)) << "the friction on the top block";
+    EXPECT_NE(each.series[2].colour, each.series[0].colour) << "the friction on the bottom block";
+    EXPECT_NE(each.series[2].colour, each.series[1].colour) << "the friction on the bottom block";
+    LessonAt wedge("wedge", {}, 0.5);
+    ASSERT_EQ(wedge.lesson->plots()[1].y.front(), "normal_force");
+    EXPECT_EQ(plot_chart(*wedge.lesson, 1, wedge.lesson->duration(), colours).series[0].colour, force(ForceKind::normal));
+  }
+  // A probe computed by the script says nothing of what it is: incline's friction along the slope.
+  LessonAt incline("incline", {}, 0.0);
+  EXPECT_FALSE(incline.lesson->probe_force("friction_force").has_value());
+  EXPECT_EQ(incline.lesson->probe_force("normal_force"), ForceKind::normal);
+  EXPECT_FALSE(incline.lesson->probe_force("speed").has_value());
+  for (const std::string& lesson : lessons::builtin_lessons()) {
+    LessonAt at(lesson, {}, 0.0);
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+        const Chart chart = plot_chart(*at.lesson, plot, at.lesson->duration(), theme(name));
+        for (std::size_t a = 0; a < chart.series.size(); ++a) {
+          for (std::size_t b = a + 1; b < chart.series.size(); ++b) {
+            EXPECT_NE(chart.series[a].colour, chart.series[b].colour) << lesson << ", plot " << plot << ": series " << a << " and " << b;
+          }
+        }
+      }
+    }
+  }
+}
+
+// Issue 31, a teacher's trial: push's friction trace was drawn "sticking" while the block was in
+// the air. At 0.1 kg pushed at 50 N/s the block leaves the table at 1.35 s (shot off its end):
+// every frame with no contact touching is coloured and keyed as its own regime, "no contact", in
+// a colour that reads 3:1 or more on the plot's panel (WCAG 2.1's for graphics) in both themes
+// and is neither sticking's nor slipping's; the other frames as their contact's state.
+TEST(PlotColours, AFrameWithNoContactIsNeitherStickingNorSlipping) {
+  LessonAt at("push", {{"mass", "0.1"}, {"push_rate", "50"}}, 0.0);
+  at.step_to(at.lesson->duration());
+  const Scene& scene = at.scene();
+  ASSERT_EQ(scene.touching().size(), scene.times().size());
+  std::size_t in_the_air = 0;
+  for (std::size_t i = 0; i < scene.touching().size(); ++i) {
+    if (scene.touching()[i]) continue;
+    ++in_the_air;
+    EXPECT_EQ(scene.probe("friction_force").history[i], 0.0) << "at " << scene.times()[i] << " s: friction with no contact";
+  }
+  ASSERT_GT(in_the_air, 10u) << "the block stays on the table: the test needs another setting";
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    EXPECT_GE(contrast_ratio(colours.no_contact, colours.panel), 3.0) << theme_name(name);
+    EXPECT_GE(contrast_ratio(colours.no_contact, colours.background), 3.0) << theme_name(name);
+    EXPECT_NE(colours.no_contact, colours.sticking);
+    EXPECT_NE(colours.no_contact, colours.slipping);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours);
+    ASSERT_EQ(chart.segment_colours.size(), 1u);
+    const std::vector<ImU32>& segments = chart.segment_colours.front();
+    ASSERT_EQ(segments.size(), scene.times().size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const ImU32 expected = !scene.touching()[i] ? colours.no_contact : scene.slipping()[i] ? colours.slipping : colours.sticking;
+      EXPECT_EQ(segments[i], expected) << theme_name(name) << " at " << scene.times()[i] << " s";
+    }
+    const auto keyed = std::find_if(chart.colour_keys.begin(), chart.colour_keys.end(),
+                                    [](const auto& key) { return key.first == "no contact"; });
+    ASSERT_NE(keyed, chart.colour_keys.end()) << theme_name(name);
+    EXPECT_EQ(keyed->second, colours.no_contact);
+  }
+  // On the table all along, the key is not there.
+  LessonAt stays("push", {}, 3.0);
+  for (const auto& key : plot_chart(*stays.lesson, 0, stays.lesson->duration(), theme(ThemeName::light)).colour_keys) {
+    EXPECT_NE(key.first, "no contact");
+  }
+}
+
+// Issue 31: a plot on a page of its own (projector mode) reserved the width of "−8888.88" for
+// its y tick labels whatever they were; push's key plot reads −5 to 0 N. The column is as wide
+// as the widest label drawn in it (with the 10 pt before the axis), the same before the reveal
+// and after it (the axes do not move), and the data area has the rest: wider than it was by
+// the difference. Every built-in lesson's plots at the run's end on a projector: each label fits
+// its column.
+TEST(PlotTicks, APlotOnAPageOfItsOwnReservesTheWidthOfItsWidestLabel) {
+  const Fonts& fonts = projector_fonts();
+  ImFont* font = fonts.small;
+  const auto width_of_text = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  const ImVec2 size(1100.0f, 520.0f);
+  LessonAt push("push", {}, 3.0);
+  const ChartLayout hidden = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, size, fonts, false, true);
+  const ChartLayout shown = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, size, fonts, true, true);
+  ASSERT_TRUE(hidden.drawable && shown.drawable);
+  EXPECT_EQ(hidden.low_left.x, shown.low_left.x) << "the data area moved at the reveal";
+  EXPECT_EQ(hidden.high_right.x, shown.high_right.x) << "the data area moved at the reveal";
+  float widest = 0.0f;
+  for (const std::string& label : shown.y_tick_labels) widest = std::max(widest, width_of_text(label));
+  const float column = shown.low_left.x - corner.x - 10.0f * fonts.scale;
+  EXPECT_NEAR(column, widest, 0.5f) << "push's key plot: its labels run from " << shown.y_tick_labels.front() << " to "
+                                    << shown.y_tick_labels.back();
+  const float reserved_before = width_of_text("\u22128888.88");
+  EXPECT_LT(column, reserved_before - 20.0f * fonts.scale) << "the data area has not had its width back";
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 0.0);
+    at.step_to(at.lesson->duration());
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      const ChartLayout layout = layout_plot(*at.lesson, plot, at.lesson->duration(), corner, size, fonts, true, true);
+      if (!layout.drawable) continue;
+      for (const std::string& label : layout.y_tick_labels) {
+        EXPECT_LE(width_of_text(label), layout.low_left.x - corner.x - 10.0f * fonts.scale + 0.01f)
+            << name << ", plot " << plot << ": \"" << label << "\" wider than its column";
+      }
+    }
+  }
 }
 
 }  // namespace
