@@ -221,7 +221,9 @@ std::string Playback::past_end_words() const {
   const std::optional<double> end = lesson_->rows_kept_from_end();
   if (!end) return "";
   // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
-  return "Past the run's end at " + seconds_text(*end, 6) + ": the table keeps its rows. R restarts.";
+  // Two lines beside a projector's time bar hold it whole; with "R restarts." after it the
+  // middle was cut ("the table keeps its … R restarts."); the bar's Reset button, which R presses, is beside it.
+  return "Past the run's end at " + seconds_text(*end, 6) + ": the table keeps its rows.";
 }
 
 std::string Playback::run_end_notice() const {
