@@ -220,10 +220,14 @@ void Playback::step_and_check() {
 std::string Playback::past_end_words() const {
   const std::optional<double> end = lesson_->rows_kept_from_end();
   if (!end) return "";
-  // The end step's own time, to the step (t = 2.49 s shown is past tipping_box's 2.4875 s).
+  // The end step's own time to the millisecond, as the time bar reads ("t = 2.488 s"), not as
+  // the title rounds it: t = 2.49 s shown is past tipping_box's end at 2.4875 s. (Six figures,
+  // 5.44167 s beside a bar at 5.450 s, read as noise to a teacher.)
   // Two lines beside a projector's time bar hold it whole; with "R restarts." after it the
   // middle was cut ("the table keeps its … R restarts."); the bar's Reset button, which R presses, is beside it.
-  return "Past the run's end at " + seconds_text(*end, 6) + ": the table keeps its rows.";
+  char when[32];
+  std::snprintf(when, sizeof when, "%.3f s", *end);
+  return std::string("Past the run's end at ") + when + ": the table keeps its rows.";
 }
 
 std::string Playback::run_end_notice() const {

@@ -455,11 +455,13 @@ TEST(Classroom, PastTheRunsEndTheStatusLineSaysTheTableKeepsTheRowsTheRunEndedWi
   const std::string start = "Past the run's end at ";
   ASSERT_EQ(said.rfind(start, 0), 0u) << said;
   EXPECT_NE(said.find(" s: the table keeps its rows."), std::string::npos) << said;
-  // The end's time is the step's that reached the duration: a whole number of steps, within half
-  // a step of it (push's 3.46 s duration is worked out from its values).
+  // The end's time is the step's that reached the duration, to the millisecond as the time bar
+  // reads: a whole number of steps, within half a step of it (push's 3.46 s duration is worked
+  // out from its values), each to within the half millisecond of its rounding.
   const double h = hands.lesson().scene().frame_step(), end = std::stod(said.substr(start.size()));
-  EXPECT_NEAR(end / h, std::round(end / h), 1e-3) << said;
-  EXPECT_LE(std::abs(end - hands.lesson().duration()), 0.5 * h + 1e-9) << said;
+  EXPECT_EQ(said.substr(start.size()).find(" s:"), 5u) << "three decimals, as the bar: " << said;
+  EXPECT_LE(std::abs(end - std::round(end / h) * h), 0.0005 + 1e-12) << said;
+  EXPECT_LE(std::abs(end - hands.lesson().duration()), 0.5 * h + 0.0005 + 1e-12) << said;
   hands.key(Key::r);
   hands.frame();
   EXPECT_EQ(hands.playback().past_end_words(), "") << "after R";
