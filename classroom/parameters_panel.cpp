@@ -402,7 +402,7 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     ImGui::SameLine(value_x);
     ImGui::SetNextItemWidth(reset_x - spacing - value_x);
     char typed[64];
-    std::snprintf(typed, sizeof typed, "%s", classroom_state::parameter_text(parameter).c_str());
+    std::snprintf(typed, sizeof typed, "%s", lessons::parameter_text(parameter).c_str());
     // A number, read here (to say why "0,5" is refused): no blank joins it, and Space ends the
     // typing as Enter does and plays (classroom/text_boxes.h).
     if (ImGui::InputText("##value", typed, sizeof typed,

@@ -79,7 +79,7 @@ classroom_state::PreparedSetup SetupDialog::of_window(const std::string& path, c
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // A mystery is saved as its pair and seed: its values are drawn again when it opens.
     if (mystery.holds(parameter.name)) continue;
-    setup.values.push_back({parameter.name, classroom_state::parameter_text(parameter), 0});
+    setup.values.push_back({parameter.name, lessons::parameter_text(parameter), 0});
   }
   setup.lock.assign(lock.begin(), lock.end());
   if (mystery.mystery) setup.mystery = mystery.mystery->choice();

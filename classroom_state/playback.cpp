@@ -40,11 +40,6 @@ constexpr long most_world_steps_per_display_frame = 5000;
 
 }  // namespace
 
-std::string parameter_text(const lessons::Parameter& parameter) {
-  if (parameter.is_choice()) return parameter.choices[static_cast<std::size_t>(parameter.value)];
-  return validation::exact_text(parameter.value);
-}
-
 Playback::Playback(const std::string& path, std::map<std::string, std::string> overrides, StepSettings settings)
     : file_stamp_(file_stamp(path)) {
   // The stamp is taken before the file is read: a save made while it builds is seen next time.

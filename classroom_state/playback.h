@@ -167,7 +167,4 @@ class Playback {
   GaugeRecord gauge_;
 };
 
-// The value of a parameter as text that sets it again exactly: "0.45", "plastic".
-std::string parameter_text(const lessons::Parameter& parameter);
-
 }  // namespace frictionlab::classroom_state

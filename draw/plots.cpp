@@ -181,15 +181,7 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
   const StepSettings& settings = lesson.settings();
   if (!(lesson.duration() * settings.hz * settings.substeps <= rehearsal_steps)) return std::nullopt;
   std::map<std::string, std::string> values;
-  char number[64];
-  for (const lessons::Parameter& parameter : lesson.parameters()) {
-    if (parameter.is_choice()) {
-      values[parameter.name] = parameter.choices.at(static_cast<std::size_t>(parameter.value));
-    } else {
-      std::snprintf(number, sizeof number, "%.17g", parameter.value);
-      values[parameter.name] = number;
-    }
-  }
+  for (const lessons::Parameter& parameter : lesson.parameters()) values[parameter.name] = lessons::parameter_text(parameter);
   try {
     lessons::Lesson copy(lesson.script(), values, lesson.settings());
     copy.step_to(copy.duration());

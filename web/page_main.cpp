@@ -241,7 +241,7 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_body_on_screen(const char* name) {
 }
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_parameter(const char* name) {
   for (const lessons::Parameter& parameter : page_classroom->playback().lesson().parameters()) {
-    if (parameter.name == name) return hand_over(classroom_state::parameter_text(parameter));
+    if (parameter.name == name) return hand_over(lessons::parameter_text(parameter));
   }
   return hand_over("");
 }

@@ -44,6 +44,8 @@ struct Parameter {
 double check_parameter_value(const Parameter& parameter, double value);
 // The same read from text (--set, a typed value): a decimal number, or one of its choices by name.
 double parse_parameter_value(const Parameter& parameter, const std::string& text);
+// The value of a parameter as text that sets it again exactly: "0.45", "plastic".
+std::string parameter_text(const Parameter& parameter);
 
 // A value given from outside the script: the text --set gave, read when its parameter is
 // declared, or a number the window set (a slider's, a preset's, the mystery's), kept as the

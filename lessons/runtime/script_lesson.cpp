@@ -987,6 +987,11 @@ double parse_parameter_value(const Parameter& parameter, const std::string& text
   return check_parameter_value(parameter, *value);
 }
 
+std::string parameter_text(const Parameter& parameter) {
+  if (parameter.is_choice()) return parameter.choices[static_cast<std::size_t>(parameter.value)];
+  return validation::exact_text(parameter.value);
+}
+
 std::string GivenValue::shown() const { return number ? validation::exact_text(*number) : text; }
 
 void register_lesson_api(lua_State* state) {

@@ -173,7 +173,7 @@ TEST(Classroom, ExtremeValuesNeverCrashAndABlowUpPausesUntilReset) {
           hands.key(Key::r);
           EXPECT_EQ(hands.playback().problem(), "");
         }
-        hands.playback().set_parameter(parameter.name, classroom_state::parameter_text(parameter));
+        hands.playback().set_parameter(parameter.name, lessons::parameter_text(parameter));
       }
     }
   }
