@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <sstream>
 
 #include "bench/reports/reports.h"
@@ -26,16 +27,22 @@ double percentile(std::vector<double> values, double fraction) {
   return values[static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1))];
 }
 
+// A headless OpenGL context for a report, or none where the machine has none: the report then
+// says so under its title and measures nothing.
+std::unique_ptr<draw::HeadlessContext> headless_context(std::ostream& out, const char* report) {
+  try {
+    return std::make_unique<draw::HeadlessContext>();
+  } catch (const std::exception& error) {
+    out << "\n" << report << ": not measured, " << error.what() << '\n';
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 std::string window_frame_speed(bool quick, std::ostream& out, const Progress& progress) {
-  std::unique_ptr<draw::HeadlessContext> gl;
-  try {
-    gl = std::make_unique<draw::HeadlessContext>();
-  } catch (const std::exception& error) {
-    out << "\nWindow frames: not measured, " << error.what() << '\n';
-    return "";
-  }
+  const std::unique_ptr<draw::HeadlessContext> gl = headless_context(out, "Window frames");
+  if (!gl) return "";
   const ImVec2 display(1280.0f, 720.0f);
   const int frames = quick ? 60 : 600;  // ten seconds at 60 frames a second
   std::ostringstream csv;
@@ -94,13 +101,8 @@ std::string window_frame_speed(bool quick, std::ostream& out, const Progress& pr
 }
 
 std::string force_label_speed(bool quick, std::ostream& out, const Progress& progress) {
-  std::unique_ptr<draw::HeadlessContext> gl;
-  try {
-    gl = std::make_unique<draw::HeadlessContext>();
-  } catch (const std::exception& error) {
-    out << "\nForce labels: not measured, " << error.what() << '\n';
-    return "";
-  }
+  const std::unique_ptr<draw::HeadlessContext> gl = headless_context(out, "Force labels");
+  if (!gl) return "";
   // A projector's screen: its thin lanes and large text leave the values fewest places, and
   // send draw_world to its retries most.
   const ImVec2 display(1920.0f, 1080.0f);
