@@ -80,7 +80,9 @@ end
 expect { "landing time", unit = "s",
   predicted = function() return throw().landing_time end,
   measured = function() local i = first_impact() return i and history("time")[i - 1] end,
-  tolerance = function() return step_length() end }
+  -- A step (met at the first step boundary after it), and the world's single-precision
+  -- rounding of where the corner is, which may put a landing just before a boundary after it.
+  tolerance = function() return step_length() + throw().landing_rounding end }
 
 -- Whether theory has the corner grip or slide (or the box land flat), throw().corner says; the
 -- spin it leaves is what the class can see. Where no single impact describes the first step on
@@ -108,16 +110,37 @@ expect { "spin just after the impact", unit = "rad/s",
     local i = first_impact()
     return i and (no_single_impact() or history("box_spin")[i])
   end,
-  -- 5 %, and two step terms. The world meets the floor up to a step after the exact landing,
-  -- the box turned by up to spin·h, falling g·h faster and sunk into the gap, and the impact's
-  -- lever arm with it: what that does is theory's own answer for an impact a step late (at
-  -- 240 Hz 0.5 rad/s at the default spin, 1.1 at −20 rad/s and 1.2 at +3, where the corner
-  -- meets the floor at a glancing angle). And the spin is read at the end of the impact's step,
-  -- after up to a step of turning about the corner under gravity: pivot_acceleration·h.
+  -- What the world leaves undone or rounds, beside an impact it meets at its own step:
+  -- * Box2D's solver settles the impact in turns (friction, then the normal impulse, 8 times),
+  --   which a gripping corner's friction, waiting on a normal impulse still growing, may not
+  --   finish: theory's own answer for those turns (solver_shortfall; 0.89 rad/s at 14.9 rad/s,
+  --   mu_k 1.28).
+  -- * Single precision: every step to the landing rounds the positions, the angle and the speeds
+  --   by up to 2^-24 of themselves, so the world's corner may be landing_rounding's time ahead of
+  --   theory's or behind it: theory's own answer there (rounding_spread). And the arithmetic
+  --   itself: each step to the landing, and each of the impact's 8 turns (about ten operations
+  --   on the same speeds), rounds the box's speeds by up to 2^-24 of their size, the spins and
+  --   the fall and throw speeds over the half-diagonal (1.5e-5 rad/s seen at 21 rad/s).
+  -- * A landing within rounding of a step boundary may be met a step later: theory's answer
+  --   then (up to 4.6 rad/s at a glancing corner).
+  -- * A flat landing's face is solved by Box2D's block solver for its two points, and under
+  --   --substeps the frame's sub-steps after the impact's are stepped with the solver's impulses
+  --   carried over: this theory follows neither turn by turn. For those, 5 % of the change and
+  --   0.05 rad/s (the largest seen in 8 000 settings: 7.5 % of 3.4 rad/s), with a frame of
+  --   turning about the corner or edge: not derived, and said so.
   tolerance = function()
-    local t = throw()
-    return 0.05 * math.abs(t.spin_after - spin) + 0.05 + math.abs(t.spin_after_a_step_late - t.spin_after)
-           + t.pivot_acceleration * step_length()
+    local t, h = throw(), substep_length()
+    local met = math.ceil(t.landing_time / h) * h - t.landing_time
+    -- (Under --substeps where in its sub-step the corner was met also shapes the frame's later
+    -- sub-steps, so a sub-stepped run always allows for a meeting a step late.)
+    local may_be_late = met <= t.landing_rounding or h < step_length()
+    local late = may_be_late and math.abs(t.spin_after_a_step_late - t.spin_after) or 0
+    local speeds = math.abs(spin) + math.abs(t.spin_after) + (throw_speed + 9.81 * t.landing_time) / 0.25
+    local arithmetic = (t.landing_time / h + 10 * 8) * 2 ^ -24 * speeds
+    local followed = t.solver_shortfall + t.rounding_spread + arithmetic + late
+    local single_corner = t.corner == "grips" or t.corner == "slides"
+    if single_corner and h == step_length() then return followed end
+    return followed + 0.05 * math.abs(t.spin_after - spin) + 0.05 + t.pivot_acceleration * step_length()
   end }
 
 -- With no kinetic friction it never stops; with very little it stops after the run has ended.

@@ -554,6 +554,37 @@ CornerImpact corner_impact(double mass, double inertia, double rx, double ry, do
   return impact;
 }
 
+CornerImpact solver_corner_impact(double mass, double inertia, double rx, double ry, double vx, double vy,
+                                  double omega, double mu, double restitution, int iterations) {
+  const char* where = "solver_corner_impact";
+  require_positive(where, "mass", mass);
+  require_positive(where, "inertia", inertia);
+  require_non_negative(where, "mu", mu);
+  if (!(restitution >= 0.0 && restitution <= 1.0)) reject(where, "restitution", "in [0, 1]", restitution);
+  if (iterations < 1) reject(where, "iterations", "at least 1", iterations);
+  const double k_tt = 1.0 / mass + ry * ry / inertia, k_nn = 1.0 / mass + rx * rx / inertia;
+  // The normal's target: bounce back at e times the speed it comes in with, as corner_impact has it.
+  const double bounce = restitution * std::min(vy + omega * rx, 0.0);
+  double jt = 0.0, jn = 0.0;
+  const auto apply = [&](double dt, double dn) {
+    vx += dt / mass;
+    vy += dn / mass;
+    omega += (rx * dn - ry * dt) / inertia;
+  };
+  for (int turn = 0; turn < iterations; ++turn) {
+    // Non-penetration matters more than friction, so Box2D solves friction first, within the
+    // normal impulse of the turn before.
+    const double limit = mu * jn;
+    const double wanted_t = std::clamp(jt - (vx - omega * ry) / k_tt, -limit, limit);
+    apply(wanted_t - jt, 0.0);
+    jt = wanted_t;
+    const double wanted_n = std::max(jn - (vy + omega * rx + bounce) / k_nn, 0.0);
+    apply(0.0, wanted_n - jn);
+    jn = wanted_n;
+  }
+  return {std::abs(jt) < mu * jn, jn, jt, vx, vy, omega};
+}
+
 SlopeLaunch slope_launch(double v0, double angle, double mu_s, double mu_k, double g) {
   const char* where = "slope_launch";
   require_non_negative(where, "v0", v0);

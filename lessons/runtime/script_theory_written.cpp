@@ -349,9 +349,13 @@ int thrown_box(lua_State* state) {
     // 14.5 kg at 5.8 m/s: 2.2 m/s left, which mu_k 1.114 stops within the impact; the corner's
     // drag, through its lever arm, left the box pitching over its front edge at -8.0 rad/s
     // where the world's stopped turning).
-    const auto impact_on = [&](double rx, double ry, double late, bool face = false) {
+    // `turns`: 0 for the impact itself, or the turns of Box2D's solver, for what those leave.
+    const auto impact_on = [&](double rx, double ry, double late, bool face = false, int turns = 0) {
       const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
-      const double sunk = std::max((g * landing.time - spin * rx) * late + 0.5 * g * late * late, 0.0);
+      // The corner's fall since the landing: the centre's, and the turning's, taken whole (its
+      // curvature, omega²·|ry|·late²/2, is 0.4 mm at -17 rad/s a step late, and 0.2 mm of the
+      // point's height decides whether drag stops a corner there).
+      const double sunk = std::max(g * landing.time * late + 0.5 * g * late * late + ry - (s * rx + c * ry), 0.0);
       const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
       // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
       // along the floor at that point feels.
@@ -370,10 +374,14 @@ int thrown_box(lua_State* state) {
       if (step > 0.0 && std::abs(vx - omega * py) <= stick_slip_birth_sliding_speed) {
         mu = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
       }
-      const double vy = -g * (landing.time + late);
+      // The world's flight starts with half a step's gravity (its positions the exact parabola's at
+      // step boundaries, its speeds half a step behind), and the step adds a whole step's before
+      // its impact is solved: the box falls half a step's gravity faster than at the meeting.
+      const double vy = -g * (landing.time + late + 0.5 * step);
       // Drag strong enough to turn the corner up off the floor leaves the normal impulse
       // nothing to stop: the step's drag is then the whole of the impact.
       if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
+      if (turns > 0) return theory::solver_corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution, turns);
       const theory::CornerImpact hit = theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution);
       // A corner that arrives sliding one way and leaves sliding the other (the normal impulse
       // turning the box back) stopped within the impact. The stick-slip treatment finds that at
@@ -404,8 +412,24 @@ int thrown_box(lua_State* state) {
     // stopped turning in the world where one corner's impact with the step's drag leaves it at
     // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
     double reach_gap = rise;
+    // The world's flight starts with half a step's gravity, so its positions at step boundaries are
+    // the exact parabola's: it meets the corner this long after the exact landing (0 unstepped).
+    const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
+    // Box2D keeps positions and speeds in single precision: each step rounds the centre's height,
+    // the angle (the corner moves r times its rounding) and the fall speed by up to 2^-24 of
+    // themselves, so n steps to the landing can move the corner by about n·2^-24·(height + r·|angle| + g·t²/3)
+    // (the speeds' roundings, summed over the steps' moves, give the last term). The
+    // corner's fall crosses that in the time below: a landing that close before a step boundary
+    // may be met a step later (1.2 µs before one, met a step late, at 8 m/s and 2.99 rad/s).
+    double landing_rounding = 0.0;
     if (step > 0.0) {
-      const double first_met = std::ceil(landing.time / step) * step - landing.time;
+      const double fall_speed = g * landing.time - spin * landing.corner_x;  // the corner's, downward
+      const double steps = std::ceil(landing.time / step), reach = 0.5 * std::hypot(width, height);
+      const double drift = steps * std::ldexp(1.0, -24) *
+                           (centre_height + reach * std::abs(landing.angle) + g * landing.time * landing.time / 3.0);
+      landing_rounding = fall_speed > 0.0 ? drift / fall_speed : infinity;
+    }
+    if (step > 0.0) {
       const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
       reach_gap = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
     }
@@ -415,6 +439,12 @@ int thrown_box(lua_State* state) {
     // off flat at 960 sub-steps a second: -9.78 rad/s, the face a sub-step later).
     const bool lands_flat = landing.flat && (step <= 0.0 || reach_gap <= 0.0);
     std::string corner = "lands flat";
+    // How far Box2D's solver, in its turns, leaves the corner's spin from the impact's (rad/s): the
+    // world's impact step ends there, and only the frame's later sub-steps settle it further.
+    double solver_shortfall = 0.0;
+    // How far the spin after moves if the world's single-precision corner is landing_rounding's
+    // time ahead of or behind theory's (rad/s).
+    double rounding_spread = 0.0;
     theory::CornerImpact impact{};
     double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
     if (lands_flat) {
@@ -422,7 +452,7 @@ int thrown_box(lua_State* state) {
       const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
       const double rear_x = landing_leads ? far_x : landing.corner_x;
       const double rear_y = landing_leads ? far_y : landing.corner_y;
-      const theory::CornerImpact front = impact_on(front_x, front_y, 0.0, true), rear = impact_on(rear_x, rear_y, 0.0, true);
+      const theory::CornerImpact front = impact_on(front_x, front_y, first_met, true), rear = impact_on(rear_x, rear_y, first_met, true);
       if (front.vy + front.omega * rear_x > 0.0) {
         impact = front;
         corner = "pitches over its front edge";
@@ -436,7 +466,14 @@ int thrown_box(lua_State* state) {
         impact.omega = -restitution * spin;
       }
     } else {
-      impact = impact_on(landing.corner_x, landing.corner_y, 0.0);
+      impact = impact_on(landing.corner_x, landing.corner_y, first_met);
+      solver_shortfall = std::abs(
+          impact_on(landing.corner_x, landing.corner_y, first_met, false, build_of(state).scene->settings().velocity_iterations).omega -
+          impact.omega);
+      // The world's corner may be where theory's is a rounding's time sooner or later.
+      for (const double off : {-landing_rounding, landing_rounding}) {
+        rounding_spread = std::max(rounding_spread, std::abs(impact_on(landing.corner_x, landing.corner_y, first_met + off).omega - impact.omega));
+      }
       corner = impact.grips ? "grips" : "slides";
     }
     const bool on_a_corner = corner != "lands flat";
@@ -486,7 +523,7 @@ int thrown_box(lua_State* state) {
       hit.grips = stuck;
       return hit;
     };
-    if (on_a_corner && !lands_flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, 0.0);
+    if (on_a_corner && !lands_flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, first_met);
     // The far end comes down too soon after the impact (falling at the impact's end speed, and
     // under gravity): within a step or two a stepped world meets both corners in one step, and
     // no single-corner impact describes what it shows.
@@ -506,12 +543,13 @@ int thrown_box(lua_State* state) {
       // inertia about the corner: how fast the spin changes there, rad/s².
       pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
     }
-    // A stepped world meets the floor up to a step after the exact landing, turned and falling
-    // further: the spin that impact leaves (spin_after itself when step = 0 or it lands flat).
+    // A world whose rounding puts the landing just past a step boundary meets the corner a step
+    // after theory's meeting, turned and falling further: the spin that impact leaves (spin_after
+    // itself when step = 0 or it lands flat).
     const double late = !on_a_corner ? impact.omega
                         : lands_flat ? impact.omega
-                                       : through_frame(impact_on(landing.corner_x, landing.corner_y, step),
-                                                       landing.corner_x, landing.corner_y, step).omega;
+                                       : through_frame(impact_on(landing.corner_x, landing.corner_y, first_met + step),
+                                                       landing.corner_x, landing.corner_y, first_met + step).omega;
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
     const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
@@ -519,13 +557,16 @@ int thrown_box(lua_State* state) {
     // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
     // slows it, ever more slowly).
     const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
-    lua_createtable(state, 0, 15);
+    lua_createtable(state, 0, 18);
     set_number(state, "landing_time", landing.time);
+    set_number(state, "landing_rounding", landing_rounding);
     set_number(state, "landing_angle", landing.angle / degrees);
     lua_pushstring(state, corner.c_str());
     lua_setfield(state, -2, "corner");
     set_number(state, "spin_after", impact.omega);
     set_number(state, "spin_after_a_step_late", late);
+    set_number(state, "solver_shortfall", solver_shortfall);
+    set_number(state, "rounding_spread", rounding_spread);
     set_number(state, "pivot_acceleration", pivot);
     set_number(state, "second_corner_after", second_corner);
     set_number(state, "far_end_above_reach", far_above_reach);
@@ -610,7 +651,7 @@ int wedge(lua_State* state) {
     const auto number_list = [&](const char* key, double WedgeState::*field) {
       list(key, [&](const WedgeState& sample) { lua_pushnumber(state, sample.*field); });
     };
-    lua_createtable(state, 0, 16);
+    lua_createtable(state, 0, 18);
     number_list("slide", &WedgeState::slide);
     number_list("speed", &WedgeState::speed);
     number_list("height", &WedgeState::height);
