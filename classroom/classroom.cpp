@@ -189,7 +189,9 @@ void Classroom::menu_bar() {
   const SimulationChoice simulation = simulation_menu(playback_->lesson().settings(), lock_, controls_);
   if (simulation.settings) change_settings(*simulation.settings);
   if (simulation.reset) playback_->reset();
-  if (std::optional<std::string> said = mystery_.tab.draw_menu(*this, controls_)) status_.text = *said;
+  const MysteryMenuChoice mystery = mystery_.tab.draw_menu(playback_->lesson(), mystery_.mystery, lock_words(), controls_);
+  if (mystery.make) status_.text = make_mystery(*mystery.make);
+  if (mystery.reveal) reveal_mystery();
   const ViewMenuChoice view = view_menu(window_, controls_, [this] {
     if (std::optional<std::string> said = predictions_.menu_items(window_.predictions, *playback_, controls_)) {
       status_.say_of_moment(*said, playback_->lesson().scene().frame(), theory_hidden());
@@ -273,8 +275,11 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
   help_panel(window_.help, s, browser_, script_words_.paths, exports_.folder);
   stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
-  open_script_.draw(*this, s, theme(window_.theme));
-  if (std::string said = setup_dialog_.draw(*this, exports_.folder, s, theme(window_.theme), controls_); !said.empty()) {
+  open_script_.draw([this](const std::string& path) { return open(path); }, s, theme(window_.theme));
+  const SetupFiles setups{[this](const std::string& path) { return open_setup(path); },
+                          [this](const std::string& path) { return save_setup(path); }};
+  if (std::string said = setup_dialog_.draw(playback_->lesson().path(), exports_.folder, setups, s, theme(window_.theme), controls_);
+      !said.empty()) {
     status_.text = said;
   }
   ImGui::PopFont();
