@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "physics/reduced_model.h"
-#include "physics/run_check.h"
+#include "bench/run_check.h"
 #include "physics/scene.h"
 
 namespace frictionlab {

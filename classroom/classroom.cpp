@@ -16,6 +16,9 @@
 
 #include "classroom/force_gauge.h"
 #include "classroom/help_panel.h"
+#include "classroom/lesson_menu.h"
+#include "classroom/simulation_menu.h"
+#include "classroom/view_menu.h"
 #include "draw/frame.h"
 #include "lessons/runtime/catalog.h"
 
@@ -180,6 +183,73 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   return style;
 }
 
+void Classroom::menu_bar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  carry_out(lesson_menu(playback_->lesson().path(), lock_, browser_, script_words_.paths, controls_));
+  const SimulationChoice simulation = simulation_menu(playback_->lesson().settings(), lock_, controls_);
+  if (simulation.settings) change_settings(*simulation.settings);
+  if (simulation.reset) playback_->reset();
+  const MysteryMenuChoice mystery = mystery_.tab.draw_menu(playback_->lesson(), mystery_.mystery, lock_words(), controls_);
+  if (mystery.make) status_.text = make_mystery(*mystery.make);
+  if (mystery.reveal) reveal_mystery();
+  const ViewMenuChoice view = view_menu(window_, controls_, [this] {
+    if (std::optional<std::string> said = predictions_.menu_items(window_.predictions, *playback_, controls_)) {
+      status_.say_of_moment(*said, playback_->lesson().scene().frame(), theory_hidden());
+    }
+  });
+  if (view.theme) window_.theme = *view.theme;
+  if (view.projector) window_.projector = !window_.projector;
+  if (view.help) window_.help = !window_.help;
+  if (view.full_screen) full_screen_toggle_ = true;
+  tools_.draw_menu(window_.tools, playback_->lesson().scene().time(), playback_->playing(), controls_);
+  running_script_path(script_words(playback_->lesson().path()));
+  ImGui::EndMainMenuBar();
+}
+
+void Classroom::carry_out(const LessonMenuChoice& lesson) {
+  if (lesson.open) status_.text = open(*lesson.open);
+  if (lesson.open_file) open_file_request_ = true;
+  if (lesson.open_script) open_script_.ask();
+  if (lesson.open_setup) setup_dialog_.ask(SetupDialog::Kind::open);
+  if (lesson.save_setup && !browser_) setup_dialog_.ask(SetupDialog::Kind::save);
+  if (lesson.save_setup && browser_) {
+    // The page's download: save_setup says where it went ("Setup saved to Downloads/..."), or why not.
+    try {
+      const std::string path = exports_.output_path(playback_->lesson(), lesson_name(playback_->lesson().path()), ".setup");
+      if (std::string why = save_setup(path); !why.empty()) status_.text = why;
+    } catch (const std::exception& error) {
+      status_.text = std::string("Could not save the setup: ") + error.what();
+    }
+  }
+  if (lesson.reload) playback_->reload();
+  if (lesson.screenshot) {
+    if (std::string why = exports_.request_screenshot(playback_->lesson()); !why.empty()) status_.text = why;
+  }
+  if (lesson.export_history) status_.text = exports_.save_history(*playback_, mystery_.hidden());
+  if (lesson.quit) quit_ = true;
+}
+
+void Classroom::world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
+                            float newtons_to_pixels, draw::LabelPlacer& labels) {
+  const lessons::Lesson& lesson = playback_->lesson();
+  const Scene& scene = lesson.scene();
+  const float s = fonts_->scale;
+  // The gauge in the lane its body is drawn in: the one whose strip holds the point held.
+  bool gauge_here = false;
+  if (const b2Body* held = scene.grabbed()) {
+    const ImVec2 at = camera.to_screen(held->GetWorldCenter());
+    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == hand_.drag_lane;
+  }
+  if (gauge_here && pass == draw::WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
+  const draw::Theme& colours = theme(window_.theme);
+  tools_.in_world(pass, draw, lesson, camera, lane, newtons_to_pixels, colours, *fonts_, labels);
+  if (gauge_here && pass == draw::WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
+}
+
+std::string Classroom::gauge_figures() const {
+  return classroom::gauge_figures(playback_->gauge(), playback_->lesson().scene().frame_step());
+}
+
 void Classroom::draw_more_tabs() {
   if (mystery_.mystery) mystery_.tab.draw_tab(*mystery_.mystery, theory_hidden(), theme(window_.theme), controls_);
   if (const std::optional<StepSettings> use = cheapest_.draw(playback_->lesson(), fonts_->scale, theme(window_.theme), controls_)) {
@@ -205,8 +275,11 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
   help_panel(window_.help, s, browser_, script_words_.paths, exports_.folder);
   stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
-  open_script_.draw(*this, s, theme(window_.theme));
-  if (std::string said = setup_dialog_.draw(*this, exports_.folder, s, theme(window_.theme), controls_); !said.empty()) {
+  open_script_.draw([this](const std::string& path) { return open(path); }, s, theme(window_.theme));
+  const SetupFiles setups{[this](const std::string& path) { return open_setup(path); },
+                          [this](const std::string& path) { return save_setup(path); }};
+  if (std::string said = setup_dialog_.draw(playback_->lesson().path(), exports_.folder, setups, s, theme(window_.theme), controls_);
+      !said.empty()) {
     status_.text = said;
   }
   ImGui::PopFont();

@@ -24,6 +24,7 @@
 #include "classroom/control_places.h"
 #include "classroom/exports.h"
 #include "classroom/keys.h"
+#include "classroom/lesson_menu.h"
 #include "classroom/lesson_lock.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_panel.h"
@@ -194,7 +195,11 @@ class Classroom {
   void apply_asked_values();
   // The frame's shortcuts (the keys routing left for the window), each given to what it drives.
   void shortcuts(const Shortcuts& keys);
+  // The menu bar: the Lesson, Simulation, Mystery, View and Tools menus, each drawn by its own
+  // part, with what they chose carried out, and the running script's path at its right.
   void menu_bar();
+  // What the Lesson menu chose: a lesson or setup opened, a dialog asked for, a file saved.
+  void carry_out(const LessonMenuChoice& lesson);
   // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
   void world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
                    float newtons_to_pixels, draw::LabelPlacer& labels);

@@ -8,6 +8,7 @@
 #include "classroom/exports.h"
 #include "classroom_state/user_lessons.h"
 #include "draw/text_record.h"
+#include "draw/words.h"
 #include "lessons/runtime/catalog.h"
 
 namespace frictionlab::classroom {
@@ -81,6 +82,20 @@ LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& l
   }
   ImGui::EndMenu();
   return choice;
+}
+
+void running_script_path(const std::string& path) {
+  // In screen points: the menu bar is laid out as a group, so SameLine's x would be off by the
+  // window's padding.
+  const float left = ImGui::GetCursorScreenPos().x + 20.0f;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowWidth() - 16.0f;
+  const std::string shown = draw::path_that_fits(path, right - left);
+  if (shown.empty()) return;
+  ImGui::SameLine();
+  ImGui::SetCursorScreenPos(ImVec2(right - ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetCursorScreenPos().y));
+  ImGui::TextDisabled("%s", shown.c_str());
+  draw::note_text(shown.c_str());
+  if (shown != path && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
 }
 
 }  // namespace frictionlab::classroom

@@ -26,4 +26,9 @@ struct LessonMenuChoice {
 LessonMenuChoice lesson_menu(const std::string& lesson_path, const LessonLock& lock, bool browser, bool script_paths,
                              ControlPlaces& controls);
 
+// Which file is running, so a student knows which script to edit: `path` (as the class sees it)
+// at the right of the menu bar being drawn, as much of it as fits, never cut (the whole of it
+// under the pointer). Drawn after the bar's last menu.
+void running_script_path(const std::string& path);
+
 }  // namespace frictionlab::classroom

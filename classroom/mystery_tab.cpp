@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "classroom/classroom.h"
 #include "classroom/text_boxes.h"
 #include "draw/panels.h"
 #include "draw/text_record.h"
@@ -44,13 +43,13 @@ void MysteryTab::begin() {
   select = true;
 }
 
-std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPlaces& controls) {
+MysteryMenuChoice MysteryTab::draw_menu(const lessons::Lesson& lesson, const std::optional<classroom_state::Mystery>& mystery,
+                                        const std::string& lock_words, ControlPlaces& controls) {
+  MysteryMenuChoice choice;
   const bool open = ImGui::BeginMenu("Mystery");
   remember_item(controls, "Mystery menu");
-  if (!open) return std::nullopt;
-  std::optional<std::string> said;
-  const std::optional<classroom_state::Mystery>& mystery = classroom.mystery();
-  const std::vector<std::string> pairs = classroom_state::mystery_pairs(classroom.playback().lesson());
+  if (!open) return choice;
+  const std::vector<std::string> pairs = classroom_state::mystery_pairs(lesson);
   if (pairs.empty()) {
     const std::string none =
         "This lesson has no friction pair whose " + both_letters() + " are sliders.";
@@ -59,7 +58,7 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
     // A new mystery changes a pair's values: under the teacher's lock the class cannot draw one
     // (the trial's locked setup still let a student replace its mystery). The reveal stays the
     // teacher's, as T's reveal of the theory does.
-    const std::string locked = classroom.lock_words();
+    const std::string& locked = lock_words;
     if (!locked.empty()) {
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
       ImGui::TextDisabled("%s", locked.c_str());
@@ -80,17 +79,17 @@ std::optional<std::string> MysteryTab::draw_menu(Classroom& classroom, ControlPl
       const bool current = mystery && mystery->choice().pair == pair;
       const std::string label = "Make " + pair + " a mystery";
       if (ImGui::MenuItem(label.c_str(), nullptr, current)) {
-        said = classroom.make_mystery({pair, static_cast<std::uint64_t>(menu_seed)});
+        choice.make = classroom_state::MysteryChoice{pair, static_cast<std::uint64_t>(menu_seed)};
       }
       remember_item(controls, "mystery " + pair);
     }
     ImGui::EndDisabled();
     ImGui::Separator();
-    if (ImGui::MenuItem("Reveal the true values", nullptr, false, mystery && !mystery->revealed())) classroom.reveal_mystery();
+    if (ImGui::MenuItem("Reveal the true values", nullptr, false, mystery && !mystery->revealed())) choice.reveal = true;
     remember_item(controls, "mystery reveal menu");
   }
   ImGui::EndMenu();
-  return said;
+  return choice;
 }
 
 void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, const draw::Theme& colours, ControlPlaces& controls) {

@@ -4,20 +4,26 @@
 //
 // It keeps its own state (the answers as typed, why one was refused, the seed) and draws
 // itself, as each of Dear ImGui's demo windows does: the mystery panel (classroom/mystery_panel.h)
-// holds one beside the mystery; the classroom calls draw_menu() in its menu bar and draw_tab()
-// inside the books' tab bar.
+// holds one beside the mystery; the classroom calls draw_menu() in its menu bar, and carries out
+// what it chose, and draw_tab() inside the books' tab bar.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "classroom/control_places.h"
 #include "classroom_state/mystery.h"
 #include "draw/theme.h"
+#include "lessons/runtime/lesson.h"
 
 namespace frictionlab::classroom {
 
-class Classroom;
+// What the Mystery menu chose: a pair made a mystery (with the seed typed there), or the reveal.
+struct MysteryMenuChoice {
+  std::optional<classroom_state::MysteryChoice> make;
+  bool reveal = false;
+};
 
 struct MysteryTab {
   char answer_text[2][32] = {};  // μs, μk as typed
@@ -31,9 +37,11 @@ struct MysteryTab {
   // predictions are asked and the theory kept back; a mystery just begun then leaves the
   // Predict tab in front when it shares this tab bar.
   void draw_tab(classroom_state::Mystery& mystery, bool predicting, const draw::Theme& colours, ControlPlaces& controls);
-  // The Mystery menu, acting on the classroom's lesson. Returns what the status line should say
-  // when the teacher chose a pair ("" for a mystery made).
-  std::optional<std::string> draw_menu(Classroom& classroom, ControlPlaces& controls);
+  // The Mystery menu in the menu bar being drawn, for `lesson` (its pairs whose μs and μk are
+  // sliders) with `mystery` made or not. `lock_words`: why the teacher's lock keeps the class
+  // from drawing a new one ("" when nothing is locked).
+  MysteryMenuChoice draw_menu(const lessons::Lesson& lesson, const std::optional<classroom_state::Mystery>& mystery,
+                              const std::string& lock_words, ControlPlaces& controls);
 };
 
 }  // namespace frictionlab::classroom

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <vector>
 
-#include "classroom/classroom.h"
+#include <imgui.h>
 
 namespace frictionlab::classroom {
 
-void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme& colours) {
+void OpenScriptDialog::draw(const std::function<std::string(const std::string& path)>& open, float scale, const draw::Theme& colours) {
   if (asked) {
     ImGui::OpenPopup("Open a lesson script");
     asked = false;
@@ -41,7 +41,7 @@ void OpenScriptDialog::draw(Classroom& classroom, float scale, const draw::Theme
   ImGui::SameLine();
   if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
   if (go) {
-    error = classroom.open(path);
+    error = open(path);
     if (error.empty()) ImGui::CloseCurrentPopup();
     else refocus = true;  // back into the path next frame, to correct it
   }

@@ -3,16 +3,15 @@
 //
 // It keeps its own state (whether it was asked for, the path as typed, the last error) and draws
 // itself, as each of Dear ImGui's demo windows does: the menu asks for it, and the classroom
-// draws it after the frame's panels, acting through its public call open().
+// draws it after the frame's panels, handing it what opens a lesson (Classroom::open).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "draw/theme.h"
 
 namespace frictionlab::classroom {
-
-class Classroom;
 
 struct OpenScriptDialog {
   bool asked = false;    // the menu asked for it this frame
@@ -21,8 +20,9 @@ struct OpenScriptDialog {
   std::string error;
 
   void ask() { asked = true; }
-  // The dialog while it is open; `scale` is the fonts' scale.
-  void draw(Classroom& classroom, float scale, const draw::Theme& colours);
+  // The dialog while it is open; `scale` is the fonts' scale. `open` opens the script at the path
+  // chosen, returning "" or why not (shown in the dialog, which stays open to correct the path).
+  void draw(const std::function<std::string(const std::string& path)>& open, float scale, const draw::Theme& colours);
 };
 
 }  // namespace frictionlab::classroom

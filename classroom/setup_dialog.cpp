@@ -7,13 +7,13 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "classroom/classroom.h"
+#include "classroom/exports.h"
 #include "draw/text_record.h"
 
 namespace frictionlab::classroom {
 
-std::string SetupDialog::draw(Classroom& classroom, const std::string& output_folder, float scale, const draw::Theme& colours,
-                              ControlPlaces& controls) {
+std::string SetupDialog::draw(const std::string& lesson_path, const std::string& output_folder, const SetupFiles& files, float scale,
+                              const draw::Theme& colours, ControlPlaces& controls) {
   const char* const titles[] = {"", "Open a setup", "Save as a setup"};
   if (asked) {
     ImGui::OpenPopup(titles[static_cast<int>(kind)]);
@@ -22,7 +22,7 @@ std::string SetupDialog::draw(Classroom& classroom, const std::string& output_fo
     if (kind == Kind::save && path[0] == '\0') {
       // A name to start from: the lesson's, in the folder screenshots go to.
       const std::string suggested =
-          (std::filesystem::path(output_folder) / (lesson_name(classroom.playback().lesson().path()) + ".setup")).string();
+          (std::filesystem::path(output_folder) / (lesson_name(lesson_path) + ".setup")).string();
       std::snprintf(path, sizeof path, "%s", suggested.c_str());
     }
   }
@@ -51,7 +51,7 @@ std::string SetupDialog::draw(Classroom& classroom, const std::string& output_fo
     const char* home = std::getenv("HOME");
     const std::string typed = path;
     const std::string file = typed.rfind("~/", 0) == 0 && home != nullptr ? home + typed.substr(1) : typed;
-    error = saving ? classroom.save_setup(file) : classroom.open_setup(file);
+    error = saving ? files.save(file) : files.open(file);
     if (error.empty()) {
       if (!saving) said = "Opened the setup " + file;
       kind = Kind::none;

@@ -7,6 +7,7 @@
 // classroom.cpp, with its other openings) from what this gives.
 #pragma once
 
+#include <functional>
 #include <set>
 #include <string>
 
@@ -19,7 +20,12 @@
 
 namespace frictionlab::classroom {
 
-class Classroom;
+// What the dialog does with the path typed, each returning "" or why not (shown in the dialog,
+// which stays open to correct the path): the classroom's, since a setup opened replaces the
+// lesson every panel reads, and one saved holds every panel's state.
+struct SetupFiles {
+  std::function<std::string(const std::string& path)> open, save;
+};
 
 struct SetupDialog {
   enum class Kind { none, open, save } kind = Kind::none;  // which one is open (or asked for)
@@ -31,10 +37,11 @@ struct SetupDialog {
     kind = which;
     asked = true;
   }
-  // The dialog while it is open; a save's path is first suggested in `output_folder`. Returns
-  // what the status line should say ("" for nothing new).
-  std::string draw(Classroom& classroom, const std::string& output_folder, float scale, const draw::Theme& colours,
-                   ControlPlaces& controls);
+  // The dialog while it is open, with the lesson at `lesson_path` running; a save's path is first
+  // suggested in `output_folder` under the lesson's name. Returns what the status line should say
+  // ("" for nothing new).
+  std::string draw(const std::string& lesson_path, const std::string& output_folder, const SetupFiles& files, float scale,
+                   const draw::Theme& colours, ControlPlaces& controls);
 
   // The window as a setup saved at `path` would hold it: the lesson (named from there), every
   // value but a mystery's, the lock, the mystery's pair and seed, the step settings, whether

@@ -204,16 +204,27 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
 }
 
 // The reach of the lesson's plots, from the last few rehearsals kept (the window draws a plot
-// every frame, and each plot asks).
+// every frame, and each plot asks). The lesson's revision finds the last answer again at the
+// cost of comparing two numbers: values_key holds the whole script's text, and building it for
+// every plot of every frame cost more than drawing the plot. Only a new revision builds the key,
+// which finds a rehearsal of the same text, values and settings (a slider moved back, the lesson
+// opened again) among those kept.
 const PlannedReach* planned_reach(const lessons::Lesson& lesson) {
   static std::vector<std::pair<std::string, std::optional<PlannedReach>>> kept;
+  static std::uint64_t last_revision = 0;  // 0: no lesson has it
+  static const PlannedReach* last_reach = nullptr;
+  if (lesson.revision() == last_revision) return last_reach;
   const std::string key = values_key(lesson);
-  for (const auto& [known, reach] : kept) {
-    if (known == key) return reach ? &*reach : nullptr;
+  auto known = std::find_if(kept.begin(), kept.end(), [&](const auto& entry) { return entry.first == key; });
+  if (known == kept.end()) {
+    if (kept.size() >= 8) kept.erase(kept.begin());
+    kept.emplace_back(key, rehearse(lesson));
+    known = std::prev(kept.end());
   }
-  if (kept.size() >= 8) kept.erase(kept.begin());
-  kept.emplace_back(key, rehearse(lesson));
-  return kept.back().second ? &*kept.back().second : nullptr;
+  const std::optional<PlannedReach>& reach = known->second;
+  last_revision = lesson.revision();
+  last_reach = reach ? &*reach : nullptr;
+  return last_reach;
 }
 
 Range joined(Range a, Range b) { return {std::min(a.low, b.low), std::max(a.high, b.high)}; }

@@ -28,6 +28,7 @@
 #include "physics/validation.h"
 #include "web/browser_files.h"
 #include "web/browser_window.h"
+#include "web/page_arguments.h"
 
 namespace {
 
@@ -44,31 +45,6 @@ const char* hand_over(std::string text) {
   return returned.c_str();
 }
 
-// The page's arguments, from its link: [LESSON] [--setup FILE] [--projector] [--at S].
-struct PageArguments {
-  std::string lesson, setup;
-  bool projector = false;
-  double at = 0.0;  // play the lesson on to this time, paused there (a picture's moment)
-};
-
-PageArguments page_arguments(const std::vector<std::string>& args) {
-  PageArguments given;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--projector") {
-      given.projector = true;
-    } else if (args[i] == "--setup" && i + 1 < args.size()) {
-      given.setup = args[++i];
-    } else if (args[i] == "--at" && i + 1 < args.size()) {
-      // A link's word, not a command line: a time that does not read is no time.
-      const double at = std::strtod(args[++i].c_str(), nullptr);
-      given.at = std::isfinite(at) ? std::clamp(at, 0.0, 3600.0) : 0.0;
-    } else {
-      given.lesson = args[i];
-    }
-  }
-  return given;
-}
-
 // A link's `at`: played to, at most to the end of the lesson's own run. Computed before the page
 // draws again, so an hour of simulated time asked by a link would freeze the tab for as long.
 void run_to_link_time(double seconds) {
@@ -76,7 +52,7 @@ void run_to_link_time(double seconds) {
   page_classroom->run_to(std::min(seconds, page_classroom->playback().lesson().duration()));
 }
 
-classroom::ClassroomOptions page_options(const PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
+classroom::ClassroomOptions page_options(const web::PageArguments& given, std::string& problem, std::optional<bool>& help_to_save) {
   const std::string& lesson = given.lesson;
   const std::string& setup = given.setup;
   const bool projector = given.projector;
@@ -129,10 +105,12 @@ int main(int argc, char** argv) {
   std::error_code error;
   fs::current_path("/", error);
   fs::create_directories(web::downloads_folder, error);
+  const web::PageArguments given = web::page_arguments(std::vector<std::string>(argv + 1, argv + argc));
   std::string problem;
-  const PageArguments given = page_arguments(std::vector<std::string>(argv + 1, argv + argc));
   std::optional<bool> help_to_save;
   const classroom::ClassroomOptions options = page_options(given, problem, help_to_save);
+  // A link's word refused (an --at out of range), said before what opening the rest found.
+  if (!given.problem.empty()) problem = problem.empty() ? given.problem : given.problem + " " + problem;
   try {
     page_classroom = std::make_unique<classroom::Classroom>(options);
   } catch (const std::exception& failure) {
@@ -206,10 +184,14 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_open_link_lesson(const char* name_o
   return hand_over(message);
 }
 
-// A link's `at`: the run played to that time, as when the page opens from the link.
-EMSCRIPTEN_KEEPALIVE void frictionlab_run_to(double seconds) {
-  run_to_link_time(seconds);
+// A followed link's `at`, as the link's word: the run played to that time, as when the page opens
+// from the link, read as the page's arguments are (the window's --at). Returns why it was
+// refused, or "".
+EMSCRIPTEN_KEEPALIVE const char* frictionlab_run_to(const char* at) {
+  const web::PageArguments given = web::page_arguments({"--at", at});
+  run_to_link_time(given.at);
   frictionlab_wake();
+  return hand_over(given.problem);
 }
 
 // The page's Projector button: the larger text of projector mode, on or off.

@@ -35,7 +35,7 @@ endfunction()
 
 foreach(file physics/test_materials physics/test_friction_laws physics/test_closed_forms physics/test_reduced_model
              physics/test_wedge_model physics/test_scene physics/test_scene_rest physics/test_box2d_timer
-             physics/test_friction_listener physics/test_treatment_stick_slip physics/test_stability physics/test_run_check
+             physics/test_friction_listener physics/test_treatment_stick_slip physics/test_stability bench/test_run_check
              bench/test_problems bench/test_cheapest_setting)
   frictionlab_web_test(${file} frictionlab_physics)
 endforeach()

@@ -42,6 +42,14 @@ draw::Chart work_precision_chart(const std::string& title, const std::string& y_
                                bool fit_orders = true, std::vector<std::pair<std::string, double>>* orders = nullptr);
 // The work-precision and convergence charts of those runs as PNG bytes; empty where EGL cannot start.
 std::string work_precision_png(const std::vector<AccuracyRun>& runs);
+// The listener_cost.csv text: CPU ms per step of piles of boxes with the pair-table listener and
+// with Box2D's own mixer; its table printed to `out`.
+std::string listener_cost(bool quick, std::ostream& out);
+// The stick_slip_accuracy.csv text: each treatment and reduced model at each rate on the spring's
+// stick-slip problem, its error against the exact solution and its cost; the runs also into `runs`.
+std::string stick_slip_accuracy(bool quick, std::ostream& out, std::vector<AccuracyRun>& runs);
+// The lesson_speed.csv text: each built-in lesson's speed headless at 240 Hz and its script's share.
+std::string lesson_speed(bool quick, std::ostream& out);
 // The frame_speed.csv text, or empty (with the reason printed) where EGL cannot start.
 std::string frame_speed(bool quick, std::ostream& out, const Progress& progress);
 // The window_frame.csv text (CPU time per display frame of the window), or empty where EGL cannot start.

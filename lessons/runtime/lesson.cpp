@@ -1,5 +1,6 @@
 #include "lessons/runtime/lesson.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -220,6 +221,14 @@ Lesson::Lesson(const ScriptText& script, std::map<std::string, std::string> over
   for (auto& [name, text] : overrides) overrides_[name] = GivenValue{std::move(text), std::nullopt};
   validate(settings_);
   replace(build(source_, compiled_, true));
+  revise();
+}
+
+void Lesson::revise() {
+  // Counted over every lesson of the program, so that two lessons never share one: a cache keyed
+  // by it cannot take one lesson's values for another's.
+  static std::atomic<std::uint64_t> last{0};
+  revision_ = ++last;
 }
 
 Lesson::~Lesson() = default;
@@ -564,6 +573,7 @@ void Lesson::set(const std::string& name, double number) {
     current_->rows_at_end.reset();
     current_->end_time.reset();
     overrides_[name] = kept_value(changed, value);
+    revise();
     return;
   }
   const auto saved = overrides_;
@@ -574,6 +584,7 @@ void Lesson::set(const std::string& name, double number) {
     overrides_ = saved;
     throw;
   }
+  revise();
 }
 
 bool Lesson::reload() {
@@ -583,6 +594,7 @@ bool Lesson::reload() {
     replace(build(source, compiled, false));
     source_ = std::move(source);
     compiled_ = std::move(compiled);
+    revise();
     return true;
   } catch (const InvalidInput& error) {
     last_error_ = error.what();
@@ -604,6 +616,7 @@ void Lesson::set_settings(const StepSettings& settings) {
     settings_ = saved;
     throw;
   }
+  revise();
 }
 
 }  // namespace frictionlab::lessons

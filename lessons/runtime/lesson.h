@@ -4,6 +4,7 @@
 // fails leaves the last good lesson running and says why.
 #pragma once
 
+#include <cstdint>
 #include <exception>
 #include <map>
 #include <memory>
@@ -219,6 +220,11 @@ class Lesson {
   // The settings the lesson was given. The scene's own (scene().settings()) are those in force:
   // a lesson may ask for fewer solver passes (lesson{ velocity_iterations = 4 }).
   const StepSettings& settings() const { return settings_; }
+  // A number for what a whole run of the lesson depends on: its script's text, its values and
+  // its step settings. A new one each time one of them changes (not at a step or a reset), and
+  // no two lessons ever share one: what is worked out from those (the plots' planned axes) is
+  // known again by it, without reading the script's text.
+  std::uint64_t revision() const { return revision_; }
 
   // The scene, parameters, plots and ropes belong to the current build: set() on a structural
   // parameter, reload() and reset() replace it, so do not keep references across those calls.
@@ -319,6 +325,9 @@ class Lesson {
   std::string compiled_;  // source_ compiled (Sandbox::compiled)
   std::map<std::string, GivenValue> overrides_;  // --set's texts, then the numbers set
   StepSettings settings_;
+  std::uint64_t revision_ = 0;  // revision()
+  // A revision no lesson has had: the text, a value or the settings changed.
+  void revise();
   std::unique_ptr<LessonBuild> current_;
   bool failed_ = false;
   std::string last_error_;

@@ -575,6 +575,40 @@ TEST(PlotRanges, AreFixedFromTheOpeningForTheWholeRun) {
   EXPECT_EQ(last_x, 10.0);
 }
 
+// A value changed is planned for: the axes fixed from the opening are those of a whole run at the
+// values the lesson has now, so a slider moved re-plans them (the planned reach is found again by
+// the lesson's revision, lessons::Lesson::revision). push's plot, asked of one lesson frame after
+// frame as the window asks, after a structural value (the mass: the scene rebuilt), a pair's
+// coefficient (μs: set straight into the pair table, nothing rebuilt), the step settings and
+// both put back, against the same plot of a lesson opened at those values.
+TEST(PlotRanges, AChangedValuePlansTheAxesAgain) {
+  const auto axes = [](lessons::Lesson& lesson) {
+    const Chart chart = plot_chart(lesson, 0, lesson.duration(), theme(ThemeName::light), false);
+    return std::vector<double>{chart.x_low, chart.x_high, chart.y_low, chart.y_high};
+  };
+  // What a lesson opened at each set of values plans, first: each opening has a revision of its own.
+  StepSettings fine;
+  fine.hz = 480;
+  LessonAt at_defaults("push", {}, 0.0), heavier("push", {{"mass", "3"}}, 0.0), stickier("push", {{"mass", "3"}, {"mu_s", "0.8"}}, 0.0);
+  lessons::Lesson finer(lessons::resolve_lesson("push"), {{"mass", "3"}, {"mu_s", "0.8"}}, fine);
+  const std::vector<double> expected[] = {axes(*at_defaults.lesson), axes(*heavier.lesson), axes(*stickier.lesson), axes(finer)};
+  ASSERT_NE(expected[0], expected[1]) << "a block three times as heavy breaks away at three times the push";
+  ASSERT_NE(expected[1], expected[2]) << "twice the μs: twice the breakaway push";
+
+  LessonAt at("push", {}, 0.0);
+  EXPECT_EQ(axes(*at.lesson), expected[0]);
+  at.lesson->set("mass", 3.0);
+  EXPECT_EQ(axes(*at.lesson), expected[1]) << "the mass changed";
+  at.lesson->set("mu_s", 0.8);
+  EXPECT_EQ(axes(*at.lesson), expected[2]) << "μs changed, nothing rebuilt";
+  at.lesson->set_settings(fine);
+  EXPECT_EQ(axes(*at.lesson), expected[3]) << "the step rate changed";
+  at.lesson->set_settings(StepSettings{});
+  at.lesson->set("mu_s", 0.4);
+  at.lesson->set("mass", 1.0);
+  EXPECT_EQ(axes(*at.lesson), expected[0]) << "all put back";
+}
+
 // Issue 31, a teacher's trial in projector mode: the plots rescaled at the reveal (push's x axis
 // 0–10 N before it, 0–6.3 N after; tipping_box's time axis 0–5 s before, 0–2.5 s after). In
 // every built-in lesson, every plot's axes are the same before the reveal and after it, at the

@@ -339,6 +339,34 @@ TEST(LessonReload, ValuesOfParametersThatAreGoneAreForgotten) {
   EXPECT_EQ(lesson.parameter("width").value, 0.75);
 }
 
+// The revision names what a whole run depends on (what the plots' planned axes are kept by): a
+// new one for a value set, the script read again or other step settings, the same through steps
+// and a reset, and never one another lesson has had.
+TEST(LessonRevision, ChangesWithTheTextTheValuesAndTheSettingsOnly) {
+  ScriptFile script(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 2 }\n"));
+  Lesson lesson(script.path());
+  const Lesson other(script.path());
+  EXPECT_NE(lesson.revision(), other.revision()) << "two lessons of one script";
+  std::uint64_t before = lesson.revision();
+  lesson.step_to(0.1);
+  lesson.reset();
+  EXPECT_EQ(lesson.revision(), before) << "a run and a reset change nothing it depends on";
+  lesson.set("mass", "1.5");
+  EXPECT_NE(lesson.revision(), before) << "a value set";
+  before = lesson.revision();
+  EXPECT_THROW(lesson.set("mass", "5"), InvalidInput);
+  EXPECT_EQ(lesson.revision(), before) << "a value refused changes nothing";
+  StepSettings settings;
+  settings.hz = 120;
+  lesson.set_settings(settings);
+  EXPECT_NE(lesson.revision(), before) << "other step settings";
+  before = lesson.revision();
+  script.rewrite(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 2 }\nlocal x = 1\n"));
+  ASSERT_TRUE(lesson.reload()) << lesson.last_error();
+  EXPECT_NE(lesson.revision(), before) << "the script read again";
+  EXPECT_NE(lesson.revision(), other.revision());
+}
+
 TEST(LessonReload, AFailedReloadKeepsTheSliderValuesAndANarrowerRangeDropsThem) {
   ScriptFile script(with_heading("local m = parameter { \"mass\", 1, min = 0.5, max = 10 }\n"));
   Lesson lesson(script.path(), {{"mass", "5"}});

@@ -580,6 +580,13 @@ test('a link followed in an open page opens its lesson fresh, in projector mode,
   await page.waitForFunction(() => Module._frictionlab_time() > 0, { timeout: 20000 });
   await settled(page);
   assert.ok(Math.abs((await number(page, 'frictionlab_time')) - 1) < 0.01, 'at=3000 did not stop at the end of incline\'s 1 s run');
+  // A time the window's command line refuses is refused in its words (app/command_line.cpp's
+  // table), and the lesson opens at t = 0.
+  await page.evaluate(() => { location.hash = '#lesson=push&at=5000'; });
+  await page.waitForFunction(() => /push\.lua$/.test(Module.ccall('frictionlab_lesson_path', 'string', [], [])), { timeout: 10000 });
+  await settled(page);
+  assert.equal(await page.$eval('#message', (message) => message.textContent), '--at = 5000 s is outside the allowed range [0, 3600]');
+  assert.equal(await number(page, 'frictionlab_time'), 0);
   assert.deepEqual(page.problems, []);
   await page.close();
 });

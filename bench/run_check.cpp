@@ -1,4 +1,4 @@
-#include "physics/run_check.h"
+#include "bench/run_check.h"
 
 #include <algorithm>
 #include <cmath>

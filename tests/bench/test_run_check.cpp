@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "bench/cheapest_setting.h"
-#include "physics/run_check.h"
+#include "bench/run_check.h"
 #include "physics/stability.h"
 
 namespace frictionlab {
