@@ -164,6 +164,9 @@ PlotRecord record_of(lessons::Lesson& lesson, std::size_t plot_index) {
 // lesson, once for each script text, setting and set of values (a slider moved runs it again).
 struct PlannedReach {
   std::vector<Range> x, y;  // plot by plot; x for an X–Y plot only
+  // Plot by plot, each series' points over the whole run, a (NaN, NaN) after each: where the
+  // levels' texts must not go (Chart::planned_points).
+  std::vector<std::vector<std::pair<double, double>>> points;
 };
 
 std::string values_key(const lessons::Lesson& lesson) {
@@ -199,12 +202,17 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
     const std::size_t count = scene.times().size();
     for (const lessons::Plot& plot : copy.plots()) {
       std::vector<const std::vector<double>*> xs, ys;
+      std::vector<std::pair<double, double>> points;
       for (std::size_t k = 0; k < plot.y.size(); ++k) {
-        if (plot.kind != lessons::PlotKind::time) xs.push_back(&scene.probe(plot.x_of(k)).history);
+        const std::vector<double>& x = plot.kind != lessons::PlotKind::time ? scene.probe(plot.x_of(k)).history : scene.times();
+        if (plot.kind != lessons::PlotKind::time) xs.push_back(&x);
         ys.push_back(&scene.probe(plot.y[k]).history);
+        for (std::size_t i = 0; i < count && i < x.size() && i < ys.back()->size(); ++i) points.emplace_back(x[i], (*ys.back())[i]);
+        points.emplace_back(NAN, NAN);
       }
       reach.x.push_back(xs.empty() ? Range{} : reach_of(xs, count));
       reach.y.push_back(reach_of(ys, count));
+      reach.points.push_back(std::move(points));
     }
     return reach;
   } catch (const std::exception&) {
@@ -468,6 +476,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
                                                                           planned_here);
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
+  if (planned_here) chart.planned_points = planned->points[plot_index];
 
   add_record(chart, lesson, record, theme);
   if (record.over_time) add_slip_bands(chart, lesson, record, theme);
