@@ -614,14 +614,15 @@ TEST(PlotRanges, AreTheSameBeforeAndAfterTheRevealAndATimeAxisAllThroughTheRun) 
 // widened upwards: the tilt's axis reaches past 2° (to 5°, its round end) and not below −0.01°.
 TEST(PlotRanges, AnAngleOrALengthIsNeverDrawnNarrowerThanTheWorldsTolerance) {
   LessonAt at("tipping_box", {}, 1.5);
-  const Chart tilt = plot_chart(*at.lesson, 0, 2.5, theme(ThemeName::light), false);
-  ASSERT_EQ(at.lesson->probe_unit(at.lesson->plots()[0].y.front()), "\u00b0");
+  // The tilt's plot is the second, after the key plot of friction against the push.
+  const Chart tilt = plot_chart(*at.lesson, 1, 2.5, theme(ThemeName::light), false);
+  ASSERT_EQ(at.lesson->probe_unit(at.lesson->plots()[1].y.front()), "\u00b0");
   EXPECT_GE(tilt.y_high - tilt.y_low, 2.0) << "the tilt's axis " << tilt.y_low << " to " << tilt.y_high;
   EXPECT_GE(tilt.y_high, 2.0) << "widened upwards";
   EXPECT_GE(tilt.y_low, -0.01) << "not widened downwards";
   LessonAt stuck("incline", {{"angle", "25"}}, 1.0);
-  const Chart distance = plot_chart(*stuck.lesson, 0, 1.0, theme(ThemeName::light), false);
-  ASSERT_EQ(stuck.lesson->probe_unit(stuck.lesson->plots()[0].y.front()), "m");
+  const Chart distance = plot_chart(*stuck.lesson, 1, 1.0, theme(ThemeName::light), false);  // after the forces
+  ASSERT_EQ(stuck.lesson->probe_unit(stuck.lesson->plots()[1].y.front()), "m");
   EXPECT_GE(distance.y_high - distance.y_low, 0.005) << "the distance's axis " << distance.y_low << " to " << distance.y_high;
 }
 
