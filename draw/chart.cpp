@@ -182,7 +182,7 @@ void draw_level_lines(const Painter& p) {
 // The levels' texts placed `beneath` the series (or not), each on a box of the panel's colour.
 void draw_level_texts(const Painter& p, bool beneath) {
   for (const ChartLayout::Level& placed : p.layout.levels) {
-    if (placed.beneath != beneath) continue;
+    if (placed.beneath != beneath || placed.text.empty()) continue;
     const ChartLevel& level = p.chart.levels[placed.index];
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
                           (p.theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));

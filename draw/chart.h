@@ -152,7 +152,7 @@ struct ChartLayout {
   // Each level's text, where it was written (x0, y0, x1, y1), and its line's y on the screen.
   struct Level {
     std::size_t index;  // in the chart's levels
-    std::string text;
+    std::string text;  // empty: its line alone, with no room for its text
     ImVec4 at;
     float y;
     // No place by its line is clear of the data, the run's to come and the theory's curves

@@ -57,7 +57,8 @@ bool line_meets(const std::vector<ImVec2>& points, const ImVec4& box, float reac
 // series as drawn, the rest of the run as planned: Chart::planned_points), no theory curve and no
 // text placed before it: at the line's right end, then its left end, then anywhere along it,
 // above the line before under it. Where no such place is, where it crosses the fewest pieces of
-// the data's lines, drawn under the series (ChartLayout::Level::beneath). None for a level off
+// the data's lines, drawn under the series (ChartLayout::Level::beneath), where it meets no
+// text placed before it (else none: the line alone). None for a level off
 // the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
 // spring_pull's the last second and a half of its record: a teacher's trial.)
 void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
@@ -111,6 +112,10 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
       return true;
     };
     const float right_end = layout.high_right.x - w - 4.0f * s, left_end = layout.low_left.x + 4.0f * s;
+    if (right_end < left_end) {  // wider than the data area (a small picture's plot): its line alone
+      layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
+      continue;
+    }
     std::vector<float> lefts{right_end, left_end};
     for (float left = right_end - 6.0f * s; left > left_end; left -= 6.0f * s) lefts.push_back(left);
     const float tops[2] = {y - text - off_line, y + off_line};
@@ -153,7 +158,12 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
         if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
       }
     }
-    if (fewest == static_cast<std::size_t>(-1)) continue;  // a data area shorter than a line
+    // None where the data area is too short for it beside the texts placed before it (a small
+    // picture's plot): its line alone, rather than two texts over each other.
+    if (fewest >= 1000) {
+      layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
+      continue;
+    }
     layout.levels.push_back({i, level.text, best, y, true});
   }
 }
