@@ -184,8 +184,11 @@ void draw_level_texts(const Painter& p, bool beneath) {
   for (const ChartLayout::Level& placed : p.layout.levels) {
     if (placed.beneath != beneath || placed.text.empty()) continue;
     const ChartLevel& level = p.chart.levels[placed.index];
+    // Opaque: the text is read against the panel's colour it was chosen for (readable_ink),
+    // not a slip band or a grid line showing through (incline's ochre text on its pink band
+    // read 4.36:1).
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
-                          (p.theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
+                          p.theme.panel);
     p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
   }
 }
