@@ -1,7 +1,7 @@
 // Drawing a chart where layout_chart (chart_layout.cpp) put its parts: the map, the grid and the
-// zero lines, the shaded spans, the theory curves in their dash patterns, the series, the
-// present, the levels, the axes with their tick labels and names, then the legend
-// (chart_legend.cpp).
+// zero lines, the shaded spans, the levels' lines, the series, the theory curves in their dash
+// patterns, the levels' texts, the present, the axes with their tick labels and names, then the
+// legend (chart_legend.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -104,13 +104,18 @@ void draw_bands(const Painter& p) {
   }
 }
 
-// The theory under the measurements, each curve in its own pattern: the branch that applies
-// now bold.
+// The theory over the measurements, each curve in its own pattern, the branch that applies now
+// bold: each dash on a dash a point wider in the panel's colour, so that a curve lying on the
+// data or on a level still shows, and the data shows in its gaps. (Drawn under them, push's
+// dashed "sticking: f = −F" vanished under the measured line it agrees with, and its dotted
+// "sliding" line on the −μk·N level: a teacher's trial.)
 void draw_theory_curves(const Painter& p) {
+  const ImU32 edge = p.theme.panel;
   for (std::size_t c = 0; c < p.layout.theory.size(); ++c) {
     const ChartCurve& curve = p.chart.theory[c];
     const float thickness = (static_cast<int>(c) == p.layout.active ? 3.5f : 1.8f) * p.s;
     for (const std::vector<ImVec2>& piece : p.layout.theory[c]) {
+      draw_dashed(p.draw, piece, edge, thickness + 2.0f * p.s, curve.dash * p.s, curve.gap * p.s);
       draw_dashed(p.draw, piece, curve.colour, thickness, curve.dash * p.s, curve.gap * p.s);
     }
   }
@@ -147,7 +152,6 @@ void draw_series(const Painter& p) {
         p.draw->AddLine(ImVec2(at.x - r, at.y + r), ImVec2(at.x + r, at.y - r), series.colour, 2.0f * p.s);
       }
     }
-    if (chart.mark_now && !points.empty()) p.draw->AddCircleFilled(points.back(), 4.0f * p.s, chart.now_colour, 12);
   }
   if (chart.mark_now && std::isfinite(chart.now_x)) {
     const float x = p.layout.to_screen(chart.now_x, 1.0).x;
@@ -155,16 +159,36 @@ void draw_series(const Painter& p) {
   }
 }
 
-// The levels over the series: the values the class reads off the plot.
-void draw_levels(const Painter& p) {
+// The present's dot on each series' last point, over everything in the data area: what the
+// class watches.
+void draw_present(const Painter& p) {
+  if (!p.chart.mark_now) return;
+  for (const std::vector<ImVec2>& points : p.layout.series_points) {
+    if (!points.empty()) p.draw->AddCircleFilled(points.back(), 4.0f * p.s, p.chart.now_colour, 12);
+  }
+}
+
+// The levels' lines, under the series: the values the class reads off the plot.
+void draw_level_lines(const Painter& p) {
   for (const ChartLayout::Level& placed : p.layout.levels) {
     const ChartLevel& level = p.chart.levels[placed.index];
     // Solid: every dash pattern is a theory curve's (a teacher's trial read push's dashed
     // −μs·N level for its dashed "sticking: f = −F" key, both grey). Thin and labelled, it is no
     // series either (those are 2 points and more, in the series' colours).
     p.draw->AddLine(ImVec2(p.layout.low_left.x, placed.y), ImVec2(p.layout.high_right.x, placed.y), level.colour, 1.5f * p.s);
+  }
+}
+
+// The levels' texts placed `beneath` the series (or not), each on a box of the panel's colour.
+void draw_level_texts(const Painter& p, bool beneath) {
+  for (const ChartLayout::Level& placed : p.layout.levels) {
+    if (placed.beneath != beneath || placed.text.empty()) continue;
+    const ChartLevel& level = p.chart.levels[placed.index];
+    // Opaque: the text is read against the panel's colour it was chosen for (readable_ink),
+    // not a slip band or a grid line showing through (incline's ochre text on its pink band
+    // read 4.36:1).
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
-                          (p.theme.panel & 0x00FFFFFFu) | (220u << IM_COL32_A_SHIFT));
+                          p.theme.panel);
     p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
   }
 }
@@ -245,9 +269,14 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
   draw_map(painter, axes_of(chart));
   draw_grid(painter);
   draw_bands(painter);
-  draw_theory_curves(painter);
+  // The levels' lines and the texts that found no place off the data under the series; the
+  // theory over them; the other texts, off the data, and the present's dots on top.
+  draw_level_lines(painter);
+  draw_level_texts(painter, true);
   draw_series(painter);
-  draw_levels(painter);
+  draw_theory_curves(painter);
+  draw_level_texts(painter, false);
+  draw_present(painter);
   if (!chart.message.empty()) {
     draw->AddText(painter.font, painter.text, ImVec2(layout.low_left.x + 4.0f * s, layout.high_right.y + 4.0f * s), theme.bad,
                   chart.message.c_str(), nullptr, layout.high_right.x - layout.low_left.x - 8.0f * s);

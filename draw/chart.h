@@ -99,15 +99,21 @@ struct Chart {
   bool mark_now = false;
   double now_x = NAN;
   ImU32 now_colour = 0;
-  // Theory curves, each drawn in its own look under the series, the `active` one bold
+  // Theory curves, each drawn in its own look over the series, each dash edged in the panel's
+  // colour so that it shows where it lies on the data or on a level, the `active` one bold
   // (`nearest`: the one passing nearest the first series' last point).
   static constexpr int nearest = -2;
   std::vector<ChartCurve> theory;
   int active_theory = -1;
   std::string message;  // drawn in the data area in the theme's `bad` colour (a script error)
-  // Levels across the data, drawn over the series (their values count for a y range that is
-  // not fixed).
+  // Levels across the data (their values count for a y range that is not fixed): the lines
+  // under the series, each text where no point of the series comes (`planned_points` too), else
+  // under the series, the data drawn over it.
   std::vector<ChartLevel> levels;
+  // Points the series will reach later in the run (a lesson plot's rehearsal of the whole run,
+  // plots.cpp): the levels' texts keep off them from the opening, so that none moves or covers
+  // the latest data as the run goes on. In the chart's own numbers.
+  std::vector<std::pair<double, double>> planned_points;
   // The data area the same whatever the data and whatever the legend holds (a plot on a page of
   // its own, read from the back of a room): the inside legend goes in a column beside the data,
   // as wide as the longest of its keys and of `legend_room` (names that may join it, such as
@@ -146,9 +152,13 @@ struct ChartLayout {
   // Each level's text, where it was written (x0, y0, x1, y1), and its line's y on the screen.
   struct Level {
     std::size_t index;  // in the chart's levels
-    std::string text;
+    std::string text;  // empty: its line alone, with no room for its text
     ImVec4 at;
     float y;
+    // No place by its line is clear of the data, the run's to come and the theory's curves
+    // (spring_pull's sawtooth crosses both its levels all along): the text is drawn under the
+    // series, which stay in sight over it.
+    bool beneath = false;
   };
   std::vector<Level> levels;
   // The lines draw_chart drew to read the data by, with their colours, for the contrast test:

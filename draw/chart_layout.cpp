@@ -3,6 +3,7 @@
 // and the levels' texts.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
@@ -20,6 +21,151 @@ float widest_label(const std::vector<std::string>& labels, ImFont* font) {
   float widest = 0.0f;
   for (const std::string& label : labels) widest = std::max(widest, width_of(font, label));
   return widest;
+}
+
+
+// Whether the segment from a to b comes within `reach` of the box (x0, y0, x1, y1): the box
+// widened by `reach` clips the segment (Liang–Barsky).
+bool segment_meets(ImVec2 a, ImVec2 b, const ImVec4& box, float reach) {
+  const float x0 = box.x - reach, y0 = box.y - reach, x1 = box.z + reach, y1 = box.w + reach;
+  float t0 = 0.0f, t1 = 1.0f;
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0f) {
+      if (q[i] < 0.0f) return false;
+      continue;
+    }
+    const float t = q[i] / p[i];
+    if (p[i] < 0.0f) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Whether a polyline (one point alone too) comes within `reach` of the box.
+bool line_meets(const std::vector<ImVec2>& points, const ImVec4& box, float reach) {
+  if (points.size() == 1) return segment_meets(points[0], points[0], box, reach);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (segment_meets(points[i - 1], points[i], box, reach)) return true;
+  }
+  return false;
+}
+
+// Each level's text by its line, inside the data area, where it meets no line of the data (the
+// series as drawn, the rest of the run as planned: Chart::planned_points), no theory curve and no
+// text placed before it: at the line's right end, then its left end, then anywhere along it,
+// above the line before under it. Where no such place is, where it crosses the fewest pieces of
+// the data's lines, drawn under the series (ChartLayout::Level::beneath), where it meets no
+// text placed before it (else none: the line alone). None for a level off
+// the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
+// spring_pull's the last second and a half of its record: a teacher's trial.)
+void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
+                       ChartLayout& layout) {
+  // The series' lines are 2.5 points thick at most, the theory's 3.5 (draw_series,
+  // draw_theory_curves): a text keeps a pixel clear of their edges; and it stands 3 points and
+  // a pixel off its own line, clear of a series drawn along the level (push's slide at −μk·N).
+  const float series_reach = 1.25f * s + 1.0f, theory_reach = 1.75f * s + 1.0f, off_line = 3.0f * s + 1.0f;
+  // The run's lines to come, on the screen, at most about two points a pixel as place() keeps.
+  std::vector<std::vector<ImVec2>> planned;
+  const float width = layout.high_right.x - layout.low_left.x;
+  if (!chart.planned_points.empty()) {
+    const std::size_t stride = std::max<std::size_t>(1, chart.planned_points.size() / static_cast<std::size_t>(std::max(1.0f, 8.0f * width)));
+    planned.emplace_back();
+    for (std::size_t i = 0; i < chart.planned_points.size(); i += stride) {
+      const auto [x, y] = chart.planned_points[i];
+      // A point not shown parts the line (a new series begins with one: NaN between them).
+      if (!x_axis.shows(x) || !y_axis.shows(y)) {
+        if (!planned.back().empty()) planned.emplace_back();
+        continue;
+      }
+      planned.back().push_back(layout.to_screen(x, y));
+    }
+  }
+  for (std::size_t i = 0; i < chart.levels.size(); ++i) {
+    const ChartLevel& level = chart.levels[i];
+    if (!y_axis.shows(level.y)) continue;
+    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
+    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
+    const float w = width_of(font, level.text);
+    const auto box_at = [&](float left, float top) { return ImVec4(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f); };
+    const auto meets_texts = [&](const ImVec4& box) {
+      for (const ChartLayout::Level& other : layout.levels) {
+        if (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y) return true;
+      }
+      return false;
+    };
+    const auto clear = [&](const ImVec4& box) {
+      if (meets_texts(box)) return false;
+      for (const std::vector<ImVec2>& line : layout.series_points) {
+        if (line_meets(line, box, series_reach)) return false;
+      }
+      for (const std::vector<ImVec2>& line : planned) {
+        if (line_meets(line, box, series_reach)) return false;
+      }
+      for (const auto& curve : layout.theory) {
+        for (const auto& piece : curve) {
+          if (line_meets(piece, box, theory_reach)) return false;
+        }
+      }
+      return true;
+    };
+    const float right_end = layout.high_right.x - w - 4.0f * s, left_end = layout.low_left.x + 4.0f * s;
+    if (right_end < left_end) {  // wider than the data area (a small picture's plot): its line alone
+      layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
+      continue;
+    }
+    std::vector<float> lefts{right_end, left_end};
+    for (float left = right_end - 6.0f * s; left > left_end; left -= 6.0f * s) lefts.push_back(left);
+    const float tops[2] = {y - text - off_line, y + off_line};
+    std::optional<ImVec4> found;
+    for (const float left : lefts) {
+      for (const float top : tops) {
+        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        if (clear(box_at(left, top))) {
+          found = ImVec4(left, top, left + w, top + text);
+          break;
+        }
+      }
+      if (found) break;
+    }
+    if (found) {
+      layout.levels.push_back({i, level.text, *found, y, false});
+      continue;
+    }
+    // Where it meets the fewest pieces of the data's lines (the record's and the run's to come,
+    // counted once each) and no text placed before it (the first of equals in the order above),
+    // under the data.
+    const auto pieces_met = [&](const std::vector<ImVec2>& line, const ImVec4& box) {
+      std::size_t met = 0;
+      bool in = false;
+      for (std::size_t k = 0; k < line.size(); ++k) {
+        const bool meets = segment_meets(line[k], line[k + 1 < line.size() ? k + 1 : k], box, series_reach);
+        met += meets && !in;
+        in = meets;
+      }
+      return met;
+    };
+    ImVec4 best;
+    std::size_t fewest = static_cast<std::size_t>(-1);
+    for (const float left : lefts) {
+      for (const float top : tops) {
+        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        const ImVec4 box = box_at(left, top);
+        std::size_t met = 1000 * meets_texts(box);
+        for (const auto& line : planned.empty() ? layout.series_points : planned) met += pieces_met(line, box);
+        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
+      }
+    }
+    // None where the data area is too short for it beside the texts placed before it (a small
+    // picture's plot): its line alone, rather than two texts over each other.
+    if (fewest >= 1000) {
+      layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
+      continue;
+    }
+    layout.levels.push_back({i, level.text, best, y, true});
+  }
 }
 
 }  // namespace
@@ -140,38 +286,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     set_x_ticks(layout.high_right.x - layout.low_left.x);
     place();
   }
-  // Each level's text at the data's right end, above its line, or under it when the line is
-  // near the top; none for a level off the axis.
-  for (std::size_t i = 0; i < chart.levels.size(); ++i) {
-    const ChartLevel& level = chart.levels[i];
-    if (!axes.y.shows(level.y)) continue;
-    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
-    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
-    const float w = width_of(font, level.text);
-    // At either end of the line, above it or under it: where it covers the fewest points and
-    // the fewest texts placed before it (the first of equals: right, above), in the data area.
-    ImVec4 best;
-    std::size_t fewest = static_cast<std::size_t>(-1);
-    for (const float left : {layout.high_right.x - w - 4.0f * s, layout.low_left.x + 4.0f * s}) {
-      for (const float top : {y - text - 2.0f * s, y + 2.0f * s}) {
-        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
-        const ImVec4 box(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f);
-        std::size_t met = 0;
-        for (const ImVec2& p : layout.points) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
-        for (const auto& curve : layout.theory) {
-          for (const auto& piece : curve) {
-            for (const ImVec2& p : piece) met += p.x >= box.x && p.x <= box.z && p.y >= box.y && p.y <= box.w;
-          }
-        }
-        for (const ChartLayout::Level& other : layout.levels) {
-          met += 1000 * (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y);
-        }
-        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
-      }
-    }
-    if (fewest == static_cast<std::size_t>(-1)) continue;  // a data area shorter than a line
-    layout.levels.push_back({i, level.text, best, y});
-  }
+  place_level_texts(chart, axes.x, axes.y, text, s, font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
     layout.active = -1;

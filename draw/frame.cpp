@@ -346,6 +346,7 @@ void plot_in_panel(lessons::Lesson& lesson, const FrameStyle& style, std::size_t
     // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
     const ImVec4 data(drawn.low_left.x, drawn.high_right.y, drawn.high_right.x, drawn.low_left.y);
     for (const ChartLayout::Level& level : drawn.levels) {
+      if (level.text.empty()) continue;  // its line alone
       style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, data});
     }
   }

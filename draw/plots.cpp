@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <span>
 
 #include "draw/overlays.h"
 #include "draw/words.h"
@@ -54,28 +55,36 @@ Range extent_of(const std::vector<const std::vector<double>*>& series, std::size
 }
 
 // The next of 1, 2, 5, 10, 20, ... times a power of ten at or above `size` (> 0), at most the
-// largest double.
-double round_bound(double size) {
+// largest double; `fine`: the next of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, ... times one, each
+// a whole number of ticks of 0.5, 1 or 2 times that power (round_ends says when).
+double round_bound(double size, bool fine) {
   constexpr double largest = std::numeric_limits<double>::max();
   const double power = std::pow(10.0, std::floor(std::log10(size)));
-  for (const double whole : {1.0, 2.0, 5.0, 10.0}) {
-    if (whole * power >= size) return std::min(whole * power, largest);
+  static constexpr double coarse_steps[] = {1.0, 2.0, 5.0, 10.0};
+  static constexpr double fine_steps[] = {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0};
+  for (const double whole : fine ? std::span<const double>(fine_steps) : std::span<const double>(coarse_steps)) {
+    // (Within a rounding of the end: 3 × 10 is no more than 30.)
+    if (whole * power >= size * (1.0 - 1e-12)) return std::min(whole * power, largest);
   }
   return largest;
 }
 
-// An axis' ends: each side of zero the next of 1, 2, 5 × 10ⁿ beyond what the values reach and a
-// margin of 3 % of it (so no curve runs along the frame's line). Before and after the reveal
-// alike (issue 31: push's x axis read 0–10 N before it, 0–6.3 N after), and from the theory's
-// values too, shown or not (push's friction axis reads −5 to 0 N from the opening): the steps of
-// 2 or 2.5 times tell a class no more of a level it is to predict than which of them it is in,
-// and the range is the whole run's from the opening (planned_reach), so the scale holds still. The margin is each side's own: a span's (6 % of 9.4 N) took spring_pull's ±4.7 N to
-// −5 and 10 N.
-Range round_ends(Range range) {
+// An axis' ends: each side of zero a round value beyond what the values reach and a margin of 3 %
+// of it (so no curve runs along the frame's line). Before and after the reveal alike (issue 31:
+// push's x axis read 0–10 N before it, 0–6.3 N after), and from the theory's values too, shown
+// or not (push's friction axis reads −5 to 0 N from the opening). `fixed`: the range is the
+// whole run's from the opening (planned_reach), so the scale holds still, and its ends are the
+// finer round values (fine in round_bound): with only 1, 2 and 5 times a power of ten,
+// stacked_blocks' pull of 21 N had an axis to 50 N, its data in the lower 45 % of the plot (a
+// teacher's trial); now 25 N. An axis that grows with the record (a mystery's, whose run ahead
+// would tell its values) keeps to 1, 2 and 5: it steps fewer times, and each step tells a class
+// less of where the values are. The margin is each side's own: a span's (6 % of 9.4 N) took
+// spring_pull's ±4.7 N to −5 and 10 N.
+Range round_ends(Range range, bool fixed) {
   constexpr double margin = 1.03;
   constexpr double largest = std::numeric_limits<double>::max();
   // Values near ±1.7e308 are finite, but 1.03 times them is not: their end is the largest double.
-  const auto side = [&](double reach) { return reach > largest / margin ? largest : round_bound(reach * margin); };
+  const auto side = [&](double reach) { return reach > largest / margin ? largest : round_bound(reach * margin, fixed); };
   return {range.low < 0.0 ? -side(-range.low) : 0.0, range.high > 0.0 ? side(range.high) : 0.0};
 }
 
@@ -155,6 +164,9 @@ PlotRecord record_of(lessons::Lesson& lesson, std::size_t plot_index) {
 // lesson, once for each script text, setting and set of values (a slider moved runs it again).
 struct PlannedReach {
   std::vector<Range> x, y;  // plot by plot; x for an X–Y plot only
+  // Plot by plot, each series' points over the whole run, a (NaN, NaN) after each: where the
+  // levels' texts must not go (Chart::planned_points).
+  std::vector<std::vector<std::pair<double, double>>> points;
 };
 
 std::string values_key(const lessons::Lesson& lesson) {
@@ -190,12 +202,17 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
     const std::size_t count = scene.times().size();
     for (const lessons::Plot& plot : copy.plots()) {
       std::vector<const std::vector<double>*> xs, ys;
+      std::vector<std::pair<double, double>> points;
       for (std::size_t k = 0; k < plot.y.size(); ++k) {
-        if (plot.kind != lessons::PlotKind::time) xs.push_back(&scene.probe(plot.x_of(k)).history);
+        const std::vector<double>& x = plot.kind != lessons::PlotKind::time ? scene.probe(plot.x_of(k)).history : scene.times();
+        if (plot.kind != lessons::PlotKind::time) xs.push_back(&x);
         ys.push_back(&scene.probe(plot.y[k]).history);
+        for (std::size_t i = 0; i < count && i < x.size() && i < ys.back()->size(); ++i) points.emplace_back(x[i], (*ys.back())[i]);
+        points.emplace_back(NAN, NAN);
       }
       reach.x.push_back(xs.empty() ? Range{} : reach_of(xs, count));
       reach.y.push_back(reach_of(ys, count));
+      reach.points.push_back(std::move(points));
     }
     return reach;
   } catch (const std::exception&) {
@@ -466,9 +483,11 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
                                          : record.count == 0 && !planned_here ? Range{}  // nothing recorded yet: 0 to 1
                                                              : round_ends(at_least(x_reach,
-                                                                                   resolution_of(lesson.probe_unit(record.plot.x))));
+                                                                                   resolution_of(lesson.probe_unit(record.plot.x))),
+                                                                          planned_here);
   chart.fixed_x = true;
   chart.x_low = x_range.low, chart.x_high = x_range.high;
+  if (planned_here) chart.planned_points = planned->points[plot_index];
 
   add_record(chart, lesson, record, theme);
   if (record.over_time) add_slip_bands(chart, lesson, record, theme);
@@ -499,7 +518,8 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     y_range = !reached ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
   }
   if (reached || !theory_values.empty()) {
-    y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))));
+    y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))),
+                         planned_here);
   }
   chart.fixed_y = true;
   chart.y_low = y_range.low, chart.y_high = y_range.high;

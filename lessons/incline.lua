@@ -42,9 +42,17 @@ probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
 probe { "friction_force", unit = "N", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
+-- The key plot first (the first page in projector mode): the block stays put while the friction
+-- holding it, m·g·sin θ up the slope, is within the most static friction gives, max(mu_s, mu_k)·N
+-- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); the two levels are those
+-- (negative, up the slope, as friction is here).
+plot { "Forces from the slope", y = { "friction_force", "normal_force" },
+  levels = {
+    { "−μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
+    { "holding it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
+  } }
 plot { "Distance down the slope", y = { "distance" } }
 plot { "Speed down the slope", y = { "speed" } }
-plot { "Forces from the slope", y = { "friction_force", "normal_force" } }
 
 -- Expectations ----------------------------------------------------------------------------
 -- With mu_k above mu_s (the slider allows it), a block that breaks away is stopped at once by

@@ -82,10 +82,19 @@ probe { "front_load", unit = "N", read = { touch, "load_right" } }
 probe { "slipping", read = { touch, "slipping" } }
 probe { "contact_points", read = { touch, "points" } }
 
+-- The key plot first (the first page in projector mode): friction answers the push until the box
+-- tips or slides, whichever push comes first, and its two levels are those pushes (negative, as
+-- friction is here). The box slides at the most static friction gives, max(mu_s, mu_k)·N as the
+-- solver's rule has it (see predicted() below); it tips when the push's moment about the front
+-- edge, F·h, passes the weight's, m·g·d/2.
+plot { "Friction against the push", x = "push", y = { "friction_force" },
+  levels = {
+    { "slides: −μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g end },
+    { "tips: −m·g·d/(2h)", function() return -param.mass * g * param.width / (2 * param.push_height) end },
+  } }
 plot { "How far the box tips", y = { "tilt" } }
 plot { "How far the box slides", y = { "slide" } }
 plot { "The floor's push on each edge", x = "push", y = { "back_load", "front_load" } }
-plot { "Friction against the push", x = "push", y = { "friction_force" } }
 
 -- Reading the record ----------------------------------------------------------------------
 -- The first thing to happen: it slides when the contact starts slipping; it tips when the back

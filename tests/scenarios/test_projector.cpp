@@ -1,5 +1,6 @@
 // Projector mode at 1920 × 1080: nothing moves under the teacher's pointer, every slider,
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
+#include "draw/overlays.h"
 #include "tests/layout_checks.h"
 
 namespace frictionlab::classroom {
@@ -325,6 +326,56 @@ TEST(ProjectorPlots, OneAPageTheRowsFullWidthAndALessonOpensOnItsFirst) {
   const std::vector<draw::FrameRecord::Plot> opened = shown_plots();
   ASSERT_EQ(opened.size(), 1u);
   EXPECT_EQ(opened.front().number, 0u) << "incline opened on the page tipping_box was left at";
+}
+
+// Issue 31, a teacher's trial: tipping_box opened on its tilt over time and incline on its
+// distance, neither showing the lesson's key number (the push that tips the box, the slope past
+// which the block slides). Each opens, in projector mode, on its key plot (its first), which,
+// revealed at the run's end, labels the key levels: tipping_box's tipping push m·g·d/(2h) (the
+// theory row "push when it happens") and the push it would slide at, max(μs, μk)·N; incline's
+// friction that holding the block needs, m·g·sin θ, and the most static friction gives,
+// max(μs, μk)·m·g·cos θ (negative, as friction is in both: it pushes back).
+TEST(ProjectorPlots, TippingBoxAndInclineOpenOnAKeyPlotThatLabelsTheirKeyLevels) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  const double g = 9.81;
+  struct Case {
+    const char* lesson;
+    std::vector<double> levels;
+  };
+  const double pi = std::acos(-1.0);
+  // At the lessons' defaults: a 10 kg box 0.5 m wide pushed 0.7 m up, μs 0.5, μk 0.4; a 1 kg
+  // block on a 35° slope, μs 0.6, μk 0.4.
+  for (const Case& each : {Case{"tipping_box", {-10.0 * g * 0.5 / (2.0 * 0.7), -0.5 * 10.0 * g}},
+                           Case{"incline", {-1.0 * g * std::sin(35.0 * pi / 180.0), -0.6 * 1.0 * g * std::cos(35.0 * pi / 180.0)}}}) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson(each.lesson), window_screens[2]);
+    options.window.predictions = true;
+    Classroom window(options);
+    window.playback().run_to(window.playback().lesson().duration());
+    window.key_pressed(Key::t, false);
+    draw::FrameRecord record;
+    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    ASSERT_FALSE(window.theory_hidden()) << each.lesson;
+    ASSERT_EQ(record.plots.size(), 1u) << each.lesson;
+    EXPECT_EQ(record.plots.front().number, 0u) << each.lesson << " opened on another plot than its first";
+    for (const double level : each.levels) {
+      const std::string value = "= " + draw::format_quantity(level, "N");
+      bool labelled = false;
+      for (const draw::ChartLayout::Level& drawn : record.plots.front().layout.levels) {
+        labelled = labelled || drawn.text.find(value) != std::string::npos;
+      }
+      EXPECT_TRUE(labelled) << each.lesson << ": no level \"" << value << "\" on its key plot";
+    }
+    if (std::string(each.lesson) == "tipping_box") {
+      // The tipping push is the theory row's.
+      for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
+        if (row.name == "push when it happens") {
+          EXPECT_NEAR(row.predicted, -each.levels.front(), 1e-9);
+        }
+      }
+    }
+  }
 }
 
 // The projector's title is one line, its panel one line high: a student's long title wrapped
