@@ -124,6 +124,13 @@ bool LabelPlacer::beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) co
                       [&](const DrawnSegment& other) { return !same(other) && gap(box, other) <= own_gap + 1.0f; });
 }
 
+bool LabelPlacer::nearest_to_own(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const {
+  const ImVec4 box(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
+  const float own_gap = gap(box, own);
+  return std::none_of(arrows_.begin(), arrows_.end(),
+                      [&](const DrawnSegment& other) { return !same_ends(other, own) && gap(box, other) <= own_gap; });
+}
+
 bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
   const auto any = [&](const auto& list) {
     return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
@@ -277,13 +284,20 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     // On another body last: a value on a block's face with a leader to its own arrow is still
     // read as its arrow's, where one lines away with no leader is read as nobody's (a stack's
     // friction between its blocks, hemmed in by the normal forces and weights).
-    for (const bool on_bodies : {false, true}) {
-      for (const bool across_lines : {false, true}) {
-        for (const ImVec2& place : further) {
-          const ImVec4 box = box_around(place, size);
-          if (!found && clear(box, false) && (on_bodies || off_other_bodies(box)) && leader_clear(place, across_lines)) {
-            found = place;
-            if (with_leader != nullptr) *with_leader = true;
+    // And first where no other arrow is nearer the value than its own: a value with a leader
+    // beside another arrow is read as that one's (issue 31: stacked_blocks' pressing force, 9.81 N,
+    // sat by the bottom block's weight, 27 px from it and 43 px from its own arrow).
+    for (const bool nearest_first : {true, false}) {
+      for (const bool on_bodies : {false, true}) {
+        for (const bool across_lines : {false, true}) {
+          for (const ImVec2& place : further) {
+            if (found) break;
+            const ImVec4 box = box_around(place, size);
+            if (clear(box, false) && (on_bodies || off_other_bodies(box)) && (!nearest_first || nearest_to_own(place, size, *own)) &&
+                leader_clear(place, across_lines)) {
+              found = place;
+              if (with_leader != nullptr) *with_leader = true;
+            }
           }
         }
       }
@@ -377,7 +391,10 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
     placed.leader = leader_line(LabelPlacer::box_around(*placed.at, placed.size), own);
     labels.avoid(*placed.leader);
   }
-  placed.beside = placed.at && (with_leader || labels.beside(*placed.at, placed.size, own));
+  // A value with a leader counts as by its arrow where no other arrow is nearer it: one by
+  // another arrow is away, and draw_world places it again first.
+  placed.beside = placed.at && (with_leader ? labels.nearest_to_own(*placed.at, placed.size, own)
+                                            : labels.beside(*placed.at, placed.size, own));
   const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
   labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body});
   return placed;

@@ -101,6 +101,9 @@ class LabelPlacer {
   static float longest_leader(ImVec2 size) { return 3.0f * size.y; }
   // Whether a text's box centred at `centre` is beside `own` by place_beside()'s rule.
   bool beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
+  // Whether no other arrow known is as near a text's box centred at `centre` as `own` is: a
+  // value joined to its arrow by a leader is still read as the nearest arrow's first.
+  bool nearest_to_own(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
   static constexpr int beside_rings = 6;
   // How far place_beside() moves a label's centre from `wanted` (in x and in y) where there is
   // room near: the last ring's reach, for tests that check each value is by its arrow.

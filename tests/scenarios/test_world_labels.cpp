@@ -305,9 +305,10 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
 // Short arrows too (issue 31: tipping_box's friction label sat 170 px from its short arrow,
 // push's applied force 110 px). Where no free place is beside its arrow (a friction of a few
 // pixels where a normal force starts), a value may stand further off with a leader: a thin line
-// that starts on its own arrow and ends on its box, which says whose it is as well.
+// that starts on its own arrow and ends on its box, which says whose it is as well; it too is
+// nearer its own arrow than any other.
 int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& forces, const std::string& where,
-                           int* broken = nullptr) {
+                           int* broken = nullptr, int* nearer_another = nullptr) {
   int checked = 0;
   for (std::size_t i = 0; i < forces.size(); ++i) {
     const draw::LabelPlacer::ForceLabel& force = forces[i];
@@ -321,8 +322,22 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
     const ImVec4 box = drawn(*force.box);
     const float line = box.w - box.y;
     ++checked;
+    const float own = box_to_arrow(box, force.arrow);
     if (force.leader) {
-      const std::vector<std::string> faults = leader_faults(forces, i);
+      std::vector<std::string> faults = leader_faults(forces, i);
+      // Its leader says whose it is, but a value nearer another arrow than its own is read as
+      // that one's first (issue 31: stacked_blocks' pressing force, 9.81 N, by the bottom block's
+      // weight, 27 px from it and 43 px from its own arrow, in projector mode).
+      for (std::size_t j = 0; j < forces.size(); ++j) {
+        if (j == i || box_to_arrow(box, forces[j].arrow) > own) continue;
+        if (nearer_another != nullptr) {
+          ++*nearer_another;
+          continue;
+        }
+        faults.push_back(force.text + " at " + text_of(box) + " is " + std::to_string(own) + " px from its own arrow but " +
+                         std::to_string(box_to_arrow(box, forces[j].arrow)) + " px from " +
+                         (forces[j].text.empty() ? std::string("another") : forces[j].text + "'s") + " arrow");
+      }
       if (broken != nullptr) {
         *broken += faults.empty() ? 0 : 1;
       } else {
@@ -330,7 +345,6 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
       }
       continue;
     }
-    const float own = box_to_arrow(box, force.arrow);
     if (broken != nullptr) {
       bool nearest = true;
       for (std::size_t j = 0; j < forces.size(); ++j) nearest = nearest && (j == i || own < box_to_arrow(box, forces[j].arrow));
@@ -370,6 +384,14 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
 // first (tipping_box's friction of a few pixels, 24.7 N at 1.24 s, had been 96 px off), and
 // friction_models on a screen when it tried the shortest arrow's value first too (its drags'
 // values, 2.07 N and 0.856 N at 0.2 s, had been 96 and 108 px off).
+//
+// A value with a leader is also nearer its own arrow than any other (issue 31: stacked_blocks'
+// pressing force, 9.81 N, sat by the bottom block's weight). driven_wheel in projector mode came
+// to meet that when LabelPlacer::place_beside looked for such a place first and draw_world placed
+// again, first, a value by another arrow; not yet, and held to still break it as above:
+// stacked_blocks' world (both modes: its 9.81 N values by the friction between the blocks, no
+// free place nearer their own arrows within a leader's reach), friction_models' and terrain's
+// worlds and wedge's inset on a screen.
 TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
     if (lesson == "contact_area") return !inset;
@@ -377,6 +399,13 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
     if (lesson == "friction_models") return projector && !inset;
     return false;
   };
+  const auto nearer_another_not_yet = [](const std::string& lesson, bool projector, bool inset) {
+    if (lesson == "stacked_blocks") return !inset;
+    if (lesson == "friction_models" || lesson == "terrain") return !projector && !inset;
+    if (lesson == "wedge") return !projector && inset;
+    return false;
+  };
+  std::map<std::string, int> still_nearer_another;
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
@@ -407,6 +436,8 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
           for (const draw::FrameRecord::Lane& lane : record.lanes) {
             if (not_yet(entry.name, projector, false)) {
               check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
+            } else if (nearer_another_not_yet(entry.name, projector, false)) {
+              worlds += check_beside_own_arrow(lane.forces, where + ", world", nullptr, &still_nearer_another[world_key]);
             } else {
               worlds += check_beside_own_arrow(lane.forces, where + ", world");
             }
@@ -415,6 +446,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
           EXPECT_FALSE(projector && record.free_body.drawn) << where << ": the free-body inset is drawn on a projector";
           if (not_yet(entry.name, projector, true)) {
             check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
+          } else if (nearer_another_not_yet(entry.name, projector, true)) {
+            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset", nullptr,
+                                             &still_nearer_another[inset_key]);
           } else {
             insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
           }
@@ -426,6 +460,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   EXPECT_GE(insets, 200);
   for (const auto& [picture, broken] : still_broken) {
     EXPECT_GT(broken, 0) << picture << " now meets the rule: take it off the not_yet list";
+  }
+  for (const auto& [picture, broken] : still_nearer_another) {
+    EXPECT_GT(broken, 0) << picture << " now has every value nearer its own arrow: take it off nearer_another_not_yet";
   }
 }
 
