@@ -640,6 +640,75 @@ TEST(ForceArrows, NoArrowOnAProjectorCrossesAnothersShaft) {
   EXPECT_GE(pairs, 300);
 }
 
+// Every force's arrow stands out from whatever it is drawn over, in both themes: against every
+// material's fill (the known looks and the palette's six), the sky and the background, either
+// the arrow's own colour differs from it 3:1 or more (WCAG 2.1's non-text contrast), or its
+// outline (Theme::arrow_halo, drawn round every arrow) differs from the arrow 3:1 or more, so the
+// arrow's edge is seen whatever lies beyond. Issue 31: the dark theme's normal force on
+// aluminium was 1.09:1, its weight 1.58:1, with nothing between them.
+TEST(ForceArrows, StandOutFromEveryBodyTheSkyAndTheBackgroundInBothThemes) {
+  const char* const materials[] = {"wood",     "aluminium", "metal", "plastic", "rubber", "ice",
+                                   "concrete", "stone",     "asphalt", "grass"};
+  int pairs = 0, outlined = 0;
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    const draw::Theme& colours = draw::theme(name);
+    std::vector<std::pair<std::string, ImU32>> under = {{"sky", colours.sky}, {"background", colours.background}};
+    for (const char* material : materials) under.emplace_back(material, draw::material_colour(colours, material, 0));
+    for (int slot = 0; slot < 6; ++slot) {
+      under.emplace_back("palette " + std::to_string(slot), draw::material_colour(colours, "unnamed", slot));
+    }
+    for (int kind = 0; kind < draw::force_kind_count; ++kind) {
+      const ImU32 arrow = colours.force[kind];
+      for (const auto& [what, fill] : under) {
+        ++pairs;
+        if (draw::contrast_ratio(arrow, fill) >= 3.0) continue;
+        ++outlined;
+        EXPECT_GE(colours.arrow_halo == 0 ? 1.0 : draw::contrast_ratio(arrow, colours.arrow_halo), 3.0)
+            << draw::theme_name(name) << ": the " << draw::force_kind_name(static_cast<ForceKind>(kind)) << " arrow on "
+            << what << " is " << draw::contrast_ratio(arrow, fill) << ":1, and its outline does not set it apart";
+      }
+    }
+  }
+  EXPECT_EQ(pairs, 2 * draw::force_kind_count * 18);
+  EXPECT_GE(outlined, 10);  // the outline is what sets many apart: the test is not empty
+}
+
+// And it is drawn: in spring_pull's dark-theme picture (an aluminium block) in projector mode,
+// across the normal force's shaft where it lies over the block, the pixels just past each side
+// of the shaft are the outline's colour, not the block's.
+TEST(ForceArrows, TheOutlineIsDrawnRoundTheShaft) {
+  const Screen& screen = screens[3];
+  for (const draw::ThemeName name : {draw::ThemeName::dark, draw::ThemeName::light}) {
+    draw::HeadlessRenderer renderer(screen.width, screen.height, name, screen.scale);
+    const draw::Theme& colours = draw::theme(name);
+    draw::LessonAt at("spring_pull", {}, 1.0);
+    draw::FrameRecord record;
+    const draw::Image image = renderer.render(*at.lesson, at.framing, &record);
+    int checked = 0;
+    for (const draw::FrameRecord::Lane& lane : record.lanes) {
+      for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+        if (force.kind != ForceKind::normal) continue;
+        const draw::DrawnSegment& shaft = force.arrow;
+        const ImVec2 unit = mul(sub(shaft.to, shaft.from), 1.0f / length(sub(shaft.to, shaft.from)));
+        const ImVec2 across(-unit.y, unit.x);
+        // A point a quarter along, over the block; half the shaft and half the outline out.
+        const ImVec2 middle = add(shaft.from, mul(sub(shaft.to, shaft.from), 0.25f));
+        const float out = shaft.half_width + 0.5f * draw::arrow_halo_width(2.0f * shaft.half_width);
+        for (const float side : {1.0f, -1.0f}) {
+          const ImVec2 p = add(middle, mul(across, side * out));
+          const std::uint8_t* pixel = image.pixel(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)));
+          const ImU32 seen = IM_COL32(pixel[0], pixel[1], pixel[2], 255);
+          EXPECT_GE(draw::contrast_ratio(seen, colours.force[static_cast<int>(ForceKind::normal)]), 3.0)
+              << draw::theme_name(name) << ": beside the normal force's shaft at (" << p.x << ", " << p.y << ") the pixel ("
+              << int(pixel[0]) << ", " << int(pixel[1]) << ", " << int(pixel[2]) << ") does not set the arrow apart";
+          ++checked;
+        }
+      }
+    }
+    EXPECT_EQ(checked, 2) << draw::theme_name(name);
+  }
+}
+
 // The speed readout of a body at the world view's left edge, with projector text: centred over
 // the body it would start left of the view; the placer moves it in, and used to stop at the
 // lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
