@@ -124,6 +124,13 @@ bool LabelPlacer::beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) co
                       [&](const DrawnSegment& other) { return !same(other) && gap(box, other) <= own_gap + 1.0f; });
 }
 
+bool LabelPlacer::nearest_to_own(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const {
+  const ImVec4 box(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
+  const float own_gap = gap(box, own);
+  return std::none_of(arrows_.begin(), arrows_.end(),
+                      [&](const DrawnSegment& other) { return !same_ends(other, own) && gap(box, other) <= own_gap; });
+}
+
 bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
   const auto any = [&](const auto& list) {
     return std::any_of(list.begin(), list.end(), [&](const auto& other) { return overlaps(box, other); });
@@ -277,13 +284,20 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     // On another body last: a value on a block's face with a leader to its own arrow is still
     // read as its arrow's, where one lines away with no leader is read as nobody's (a stack's
     // friction between its blocks, hemmed in by the normal forces and weights).
+    // And, at each of those, first where no other arrow is nearer the value than its own: a value with a leader
+    // beside another arrow is read as that one's (issue 31: stacked_blocks' pressing force, 9.81 N,
+    // sat by the bottom block's weight, 27 px from it and 43 px from its own arrow).
     for (const bool on_bodies : {false, true}) {
       for (const bool across_lines : {false, true}) {
-        for (const ImVec2& place : further) {
-          const ImVec4 box = box_around(place, size);
-          if (!found && clear(box, false) && (on_bodies || off_other_bodies(box)) && leader_clear(place, across_lines)) {
-            found = place;
-            if (with_leader != nullptr) *with_leader = true;
+        for (const bool nearest_first : {true, false}) {
+          for (const ImVec2& place : further) {
+            if (found) break;
+            const ImVec4 box = box_around(place, size);
+            if (clear(box, false) && (on_bodies || off_other_bodies(box)) && (!nearest_first || nearest_to_own(place, size, *own)) &&
+                leader_clear(place, across_lines)) {
+              found = place;
+              if (with_leader != nullptr) *with_leader = true;
+            }
           }
         }
       }
@@ -319,7 +333,7 @@ void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU
   draw->AddText(font, font->FontSize, corner, colour, text);
 }
 
-void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness) {
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo) {
   const ImVec2 along = sub(tip, tail);
   const float span = length(along);
   if (span < 1e-3f) return;
@@ -327,9 +341,22 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
   const ImVec2 across(-unit.y, unit.x);
   const float head = std::min(4.0f * thickness, 0.6f * span);
   const ImVec2 base = sub(tip, mul(unit, head));
+  const ImVec2 left = add(base, mul(across, 0.45f * head)), right = sub(base, mul(across, 0.45f * head));
+  if (halo != 0) {
+    // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
+    // grown about its incentre, which moves each edge out by the same width.
+    const float width = arrow_halo_width(thickness);
+    const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
+    const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
+    const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
+    const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
+    const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
+    draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+    draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
+  }
   // The shaft runs on under the head, so no seam of anti-aliased edges shows between them.
   draw->AddLine(tail, add(base, mul(unit, 0.3f * head)), colour, thickness);
-  draw->AddTriangleFilled(tip, add(base, mul(across, 0.45f * head)), sub(base, mul(across, 0.45f * head)), colour);
+  draw->AddTriangleFilled(tip, left, right, colour);
 }
 
 DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow) {
@@ -377,7 +404,10 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
     placed.leader = leader_line(LabelPlacer::box_around(*placed.at, placed.size), own);
     labels.avoid(*placed.leader);
   }
-  placed.beside = placed.at && (with_leader || labels.beside(*placed.at, placed.size, own));
+  // A value with a leader counts as by its arrow where no other arrow is nearer it: one by
+  // another arrow is away, and draw_world places it again first.
+  placed.beside = placed.at && (with_leader ? labels.nearest_to_own(*placed.at, placed.size, own)
+                                            : labels.beside(*placed.at, placed.size, own));
   const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
   labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body});
   return placed;
@@ -385,7 +415,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
 
 void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness) {
   const ImU32 colour = theme.force[static_cast<int>(placed.arrow.force.kind)];
-  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness);
+  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness, theme.arrow_halo);
   if (placed.leader) draw->AddLine(placed.leader->from, placed.leader->to, colour, 2.0f * placed.leader->half_width);
   if (placed.at) draw_label(draw, font, *placed.at, colour, theme.panel, placed.text.c_str());
 }

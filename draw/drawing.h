@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -101,6 +102,9 @@ class LabelPlacer {
   static float longest_leader(ImVec2 size) { return 3.0f * size.y; }
   // Whether a text's box centred at `centre` is beside `own` by place_beside()'s rule.
   bool beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
+  // Whether no other arrow known is as near a text's box centred at `centre` as `own` is: a
+  // value joined to its arrow by a leader is still read as the nearest arrow's first.
+  bool nearest_to_own(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const;
   static constexpr int beside_rings = 6;
   // How far place_beside() moves a label's centre from `wanted` (in x and in y) where there is
   // room near: the last ring's reach, for tests that check each value is by its arrow.
@@ -189,7 +193,12 @@ void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU
 // A force value's leader: from the arrow's point nearest the label's box (x0, y0, x1, y1) to the
 // box's edge, for a value that has no free place beside its arrow.
 DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
-void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness);
+// With `halo` (not 0), outlined in it first, arrow_halo_width(thickness) wide: a force's arrow
+// drawn over a body of about its own lightness is still seen (Theme::arrow_halo).
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0);
+// A third of the arrow's thickness and at least a pixel and a half: a line a back row sees
+// round the shaft (2.3 px on a projector's 7 px arrows).
+inline float arrow_halo_width(float thickness) { return std::max(1.5f, thickness / 3.0f); }
 // A force's arrow in its kind's colour, with its value in newtons just beyond the tip.
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels);

@@ -90,11 +90,15 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   const float newtons = column ? nice_length_within(40.0f * s / newtons_to_pixels) : nice_length(40.0f * s / newtons_to_pixels);
   char scale_text[48];
   std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));
+  // Where the scale stops being linear, said beside it: the world draws a force smaller than this
+  // as long as a back row can read (legible_arrow_pixels), its value giving its size.
+  const std::string lengthened = "under " + format_quantity(not_to_scale_below(newtons_to_pixels, s), "N") + ":";
+  const std::string not_to_scale = "not to scale";
   float arrows_end = left;
   for (int kind = 0; kind < force_kind_count; ++kind) {
     if (present[kind]) arrows_end += 40.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))) + 10.0f * s;
   }
-  arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text);
+  arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s + width_of(lengthened + " " + not_to_scale);
   std::vector<std::pair<ImU32, std::string>> materials;
   for (const auto& [name, body] : scene.bodies()) {
     for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
@@ -119,7 +123,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     // scale, the contact states, the materials, and the scale bar under them. The lines close
     // up (to 2 pt between) when there are more than its height holds at 6 pt.
     const std::size_t forces = static_cast<std::size_t>(std::count(std::begin(present), std::end(present), true));
-    const std::size_t lines = forces + 1 + 2 + materials.size() + 2;  // the scale bar takes two
+    const std::size_t lines = forces + 3 + 2 + materials.size() + 2;  // the arrows' scale takes three, the metres' bar two
     const float room = size.y - 8.0f * s;
     const float step = std::max(font->FontSize + 2.0f * s, std::min(line, room / static_cast<float>(lines)));
     ImVec2 at(left, corner.y + 6.0f * s);
@@ -133,6 +137,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
                   theme.text, 3.0f * s);
     text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
+    at.y += step;
+    text_at(at, lengthened);
+    at.y += step;
+    text_at(at, not_to_scale);
     at.y += step;
     const float inside = right - 6.0f * s;
     const bool short_states = true;  // the chips are named by a word each: the column stays narrow
@@ -187,6 +195,8 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
                 theme.text, 3.0f * s);
   text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
+  text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s, at.y),
+          lengthened + " " + not_to_scale);
 
   at = ImVec2(left, chips_y);
   const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
@@ -206,7 +216,7 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   // Every kind of force, whether it acts yet or not, so that the column keeps its width as the
   // run goes on; the arrows' scale at its longest (40 pt: rounded down in a column) with a
   // four-digit value; the states' words and the materials' names after their marks.
-  float widest = 46.0f * s + width_of("= 1000 N");
+  float widest = std::max(46.0f * s + width_of("= 1000 N"), width_of("under 1000 N:"));
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
   }

@@ -19,7 +19,7 @@ float pixels_per_newton(const Scene& scene, float reference_pixels) {
 float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale) {
+                                      float pixels_per_newton, float scale, float shortest) {
   // Whether a force counts is a question of the printed values, not of pixels: one that shows in
   // its body's numbers (at least half the last digit printed for the body's largest force) is
   // drawn, however short its arrow would be at the picture's scale. A tipping box's last
@@ -35,7 +35,7 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
     if (size == 0.0f || size < smallest_shown) continue;
     const ImVec2 tail = camera.to_screen(force.point);
     // Too short to see at the scale: as long as an arrowhead needs, its label giving its size.
-    const float drawn = std::max(size * pixels_per_newton, shortest_arrow_pixels(scale));
+    const float drawn = std::max({size * pixels_per_newton, shortest_arrow_pixels(scale), shortest});
     const ImVec2 tip(tail.x + force.force.x / size * drawn, tail.y - force.force.y / size * drawn);
     arrows.push_back(ScreenArrow{force, tail, tip});
   }

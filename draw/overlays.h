@@ -36,12 +36,26 @@ struct ScreenArrow {
 // text, as the arrows' thickness and heads do (3.5 px times the scale in the world): at a
 // projector's scale (2.0 at 1920 × 1080) 8 px was shorter than the head drawn on it.
 inline float shortest_arrow_pixels(float scale) { return 8.0f * scale; }
+// The world's arrows' thickness at text scale `scale` (3.5 px at scale 1), which their heads,
+// four thicknesses long, the gaps between them and the room kept round them follow.
+inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
+// The shortest force arrow the world draws, to be read from a classroom's back row: its head
+// (four thicknesses, draw_arrow's) and a shaft as long, 28 px at text scale 1 and 57 px on a
+// projector (2.0). One force scale per lesson, set by its heaviest weight, drew tipping_box's
+// 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31). A force
+// shorter than that at the scale is drawn this long, as a textbook draws an arrow "not to
+// scale" with its value beside it; the legend says from which force on (not_to_scale_below).
+inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thickness(scale); }
+// The force under which the world's arrows are lengthened to legible_arrow_pixels(scale).
+inline float not_to_scale_below(float newtons_to_pixels, float scale) {
+  return legible_arrow_pixels(scale) / newtons_to_pixels;
+}
 // Tails at the point of action, lengths to scale; a force that shows in the printed values of
-// its body's forces but would be shorter than shortest_arrow_pixels(scale) is drawn that long,
-// and one too small to show in them is left out. Two arrows of one body lying along one line
+// its body's forces but would be shorter than `shortest` pixels (at least
+// shortest_arrow_pixels(scale)) is drawn that long, and one too small to show in them is left out. Two arrows of one body lying along one line
 // (weight and normal force) are drawn side by side, their gap growing with the text as well.
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale);
+                                      float pixels_per_newton, float scale, float shortest = 0.0f);
 
 // "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
 // ten) and the unit.

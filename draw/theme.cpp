@@ -61,6 +61,7 @@ Theme make_light() {
   t.force[4] = IM_COL32(60, 60, 60, 255);     // weight: dark grey
   t.force[5] = IM_COL32(140, 90, 30, 255);    // rope: brown
   t.force[6] = IM_COL32(110, 130, 0, 255);    // drag (c, b): olive
+  t.arrow_halo = IM_COL32(255, 255, 255, 255);
   // Contact states have colours no arrow has, so a mark never reads as a force.
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
@@ -109,6 +110,7 @@ Theme make_dark() {
   t.force[4] = IM_COL32(200, 200, 200, 255);
   t.force[5] = IM_COL32(210, 160, 100, 255);
   t.force[6] = IM_COL32(190, 210, 60, 255);
+  t.arrow_halo = IM_COL32(16, 16, 20, 255);
   t.sticking = IM_COL32(40, 200, 210, 255);
   t.slipping = IM_COL32(255, 90, 180, 255);
   t.slip_band = IM_COL32(255, 90, 180, 45);

@@ -26,6 +26,11 @@ struct Theme {
   ImU32 background, panel, text, faint_text, grid, axis;
   ImU32 sky, ground_edge, outline, driven_outline, spring, rope, hand;
   ImU32 force[force_kind_count];
+  // The outline round every force's arrow in the world and the free-body inset: 3:1 or more
+  // against every force's colour (WCAG 2.1's non-text contrast), so an arrow stands out from
+  // a body of its own lightness (issue 31: the dark theme's normal force on aluminium, 1.09:1;
+  // the light theme's weight on rubber, 1.1:1). White in the light theme, near black in the dark.
+  ImU32 arrow_halo;
   ImU32 sticking, slipping, slip_band, now_marker;
   // A frame with no contact touching (every body in the air): neither sticking nor slipping.
   ImU32 no_contact;

@@ -337,7 +337,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
-    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels, fonts.scale)) {
+    // None shorter than a back row can read: the legend says under which force they are not to scale.
+    for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels, fonts.scale,
+                                                 legible_arrow_pixels(fonts.scale))) {
       arrows.push_back(arrow);
     }
   }
@@ -377,8 +379,39 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
       arrow.tip = add(arrow.tip, shift);
     }
   }
+  const float thickness = world_arrow_thickness(fonts.scale);
+  // Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
+  // block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
+  // crossed the normal force's (issue 31). The shorter slides forward along its own line of
+  // action until it starts a thickness past the longer's shaft: a force slid along its line has
+  // the same moment about every point, so what the picture says of turning is kept (tipping_box's
+  // friction stays on the floor's line), and it then starts where the longer passes, as a
+  // textbook draws friction from where the weight meets the floor. Crossings within half a
+  // thickness of the shorter's tail are forces starting together, and stay.
+  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
+  for (std::size_t round = 0; round < arrows.size(); ++round) {
+    bool moved = false;
+    for (ScreenArrow& shorter : arrows) {
+      for (const ScreenArrow& longer : arrows) {
+        if (&shorter == &longer || longer.length() <= shorter.length()) continue;
+        const ImVec2 d = sub(shorter.tip, shorter.tail), e = sub(longer.tip, longer.tail), w = sub(longer.tail, shorter.tail);
+        const float denominator = cross2(d, e);
+        if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;  // parallel: side by side already
+        const float on_shorter = cross2(w, e) / denominator, on_longer = cross2(w, d) / denominator;
+        if (on_shorter <= 0.0f || on_shorter >= 1.0f || on_longer <= 0.0f || on_longer >= 1.0f) continue;
+        // The longer shaft's width measured along the shorter's line.
+        const float sine = std::abs(denominator) / (length(d) * length(e));
+        const float to_crossing = on_shorter * length(d);
+        if (to_crossing <= 0.5f * thickness / sine) continue;
+        const ImVec2 shift = mul(d, (to_crossing + thickness / sine) / length(d));
+        shorter.tail = add(shorter.tail, shift);
+        shorter.tip = add(shorter.tip, shift);
+        moved = true;
+      }
+    }
+    if (!moved) break;
+  }
   // Every arrow and mark is known before any label is placed, so no label lands on one.
-  const float thickness = 3.5f * fonts.scale;
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
   for (const ContactMark& mark : marks) {

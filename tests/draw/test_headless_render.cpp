@@ -27,13 +27,6 @@ int distance(const std::uint8_t* pixel, ImU32 colour) {
   return std::max({std::abs(pixel[0] - r), std::abs(pixel[1] - g), std::abs(pixel[2] - b)});
 }
 
-const ScreenArrow& arrow_of(const std::vector<ScreenArrow>& arrows, ForceKind kind) {
-  for (const ScreenArrow& arrow : arrows) {
-    if (arrow.force.kind == kind) return arrow;
-  }
-  throw std::runtime_error("no such arrow");
-}
-
 // Walks from the tail along the arrow while the pixels are the arrow's colour: the drawn
 // length, which must be the recorded force times the scale.
 float drawn_length(const Image& image, const ScreenArrow& arrow, ImU32 colour) {
@@ -48,26 +41,31 @@ float drawn_length(const Image& image, const ScreenArrow& arrow, ImU32 colour) {
   return reached;
 }
 
-void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, ContactState state) {
+void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, const FrameRecord& record, ContactState state) {
   const ImVec2 display(frame_width, frame_height);
   const Camera camera = world_camera(*at.lesson, at.framing, display, 1.0f);
   const float scale = arrow_scale(*at.lesson, at.framing, display, 1.0f);
   const b2Body* block = at.scene().body("block");
-  const std::vector<ScreenArrow> arrows = place_arrows(forces_on(at.scene(), block), camera, scale, 1.0f);
-  ScreenArrow friction = arrow_of(arrows, ForceKind::friction);
-  // Drawn from the contact dot's rim (6 px at this scale, and its 1.5 px outline), not under
-  // the dot, its length kept: the tail at the contact point moves that far along the arrow.
-  const float along = 6.0f + 1.5f;
-  const ImVec2 unit((friction.tip.x - friction.tail.x) / friction.length(), (friction.tip.y - friction.tail.y) / friction.length());
-  friction.tail = ImVec2(friction.tail.x + unit.x * along, friction.tail.y + unit.y * along);
-  friction.tip = ImVec2(friction.tip.x + unit.x * along, friction.tip.y + unit.y * along);
+  // Where the frame drew it: from the contact dot's rim, and slid along its line past the
+  // weight's shaft where that crosses it (draw_world); its length is what is measured here.
+  ASSERT_EQ(record.lanes.size(), 1u);
+  std::optional<ScreenArrow> drawn;
+  for (const LabelPlacer::ForceLabel& force : record.lanes.front().forces) {
+    if (force.kind == ForceKind::friction && force.body == block) {
+      drawn = ScreenArrow{ForceOnBody{}, force.arrow.from, force.arrow.to};
+    }
+  }
+  ASSERT_TRUE(drawn.has_value()) << "no friction arrow drawn";
+  const ScreenArrow& friction = *drawn;
   const Theme& colours = theme(ThemeName::light);
   const float recorded = static_cast<float>(std::abs(at.scene().friction().find(block, at.scene().body("ground"))->friction_force));
   // The tip's last pixels fade into the background: within 2 px. The contact point is on the
   // floor's surface, so the arrow runs along the ground's 2.5 px edge line, and its tip's last
   // pixels fade into that dark line instead: up to half its width more.
-  EXPECT_NEAR(drawn_length(image, friction, colours.force[static_cast<int>(ForceKind::friction)]), recorded * scale,
-              2.0f + 0.5f * 2.5f);
+  // As long as the force at the arrows' scale, or as long as a back row can read where that is
+  // shorter (legible_arrow_pixels: the legend says "not to scale" under that force).
+  EXPECT_NEAR(drawn_length(image, friction, colours.force[static_cast<int>(ForceKind::friction)]),
+              std::max(recorded * scale, legible_arrow_pixels(1.0f)), 2.0f + 0.5f * 2.5f);
 
   // The contact's mark, just below the friction arrow's shaft at the contact point.
   const std::vector<ContactMark> marks = contact_marks(at.scene());
@@ -94,14 +92,16 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, Cont
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {
   LessonAt at("spring_pull", {}, 0.5);
-  const Image image = renderer().render(*at.lesson, at.framing);
-  expect_friction_arrow_and_mark(at, image, ContactState::sticking);
+  FrameRecord record;
+  const Image image = renderer().render(*at.lesson, at.framing, &record);
+  expect_friction_arrow_and_mark(at, image, record, ContactState::sticking);
 }
 
 TEST(Rendering, MidSlipTheArrowIsKineticFrictionAndTheContactIsMarkedSlipping) {
   LessonAt at("spring_pull", {}, 1.2);
-  const Image image = renderer().render(*at.lesson, at.framing);
-  expect_friction_arrow_and_mark(at, image, ContactState::slipping);
+  FrameRecord record;
+  const Image image = renderer().render(*at.lesson, at.framing, &record);
+  expect_friction_arrow_and_mark(at, image, record, ContactState::slipping);
 }
 
 TEST(Rendering, TheSameMomentGivesTheSamePictureWhateverWasDrawnBefore) {

@@ -305,9 +305,10 @@ TEST(ForceLabels, EveryForceWithAnArrowHasItsValueBesideItInTheWorldAndTheInset)
 // Short arrows too (issue 31: tipping_box's friction label sat 170 px from its short arrow,
 // push's applied force 110 px). Where no free place is beside its arrow (a friction of a few
 // pixels where a normal force starts), a value may stand further off with a leader: a thin line
-// that starts on its own arrow and ends on its box, which says whose it is as well.
+// that starts on its own arrow and ends on its box, which says whose it is as well; it too is
+// nearer its own arrow than any other.
 int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& forces, const std::string& where,
-                           int* broken = nullptr) {
+                           int* broken = nullptr, int* nearer_another = nullptr) {
   int checked = 0;
   for (std::size_t i = 0; i < forces.size(); ++i) {
     const draw::LabelPlacer::ForceLabel& force = forces[i];
@@ -321,8 +322,22 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
     const ImVec4 box = drawn(*force.box);
     const float line = box.w - box.y;
     ++checked;
+    const float own = box_to_arrow(box, force.arrow);
     if (force.leader) {
-      const std::vector<std::string> faults = leader_faults(forces, i);
+      std::vector<std::string> faults = leader_faults(forces, i);
+      // Its leader says whose it is, but a value nearer another arrow than its own is read as
+      // that one's first (issue 31: stacked_blocks' pressing force, 9.81 N, by the bottom block's
+      // weight, 27 px from it and 43 px from its own arrow, in projector mode).
+      for (std::size_t j = 0; j < forces.size(); ++j) {
+        if (j == i || box_to_arrow(box, forces[j].arrow) > own) continue;
+        if (nearer_another != nullptr) {
+          ++*nearer_another;
+          continue;
+        }
+        faults.push_back(force.text + " at " + text_of(box) + " is " + std::to_string(own) + " px from its own arrow but " +
+                         std::to_string(box_to_arrow(box, forces[j].arrow)) + " px from " +
+                         (forces[j].text.empty() ? std::string("another") : forces[j].text + "'s") + " arrow");
+      }
       if (broken != nullptr) {
         *broken += faults.empty() ? 0 : 1;
       } else {
@@ -330,7 +345,6 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
       }
       continue;
     }
-    const float own = box_to_arrow(box, force.arrow);
     if (broken != nullptr) {
       bool nearest = true;
       for (std::size_t j = 0; j < forces.size(); ++j) nearest = nearest && (j == i || own < box_to_arrow(box, forces[j].arrow));
@@ -370,6 +384,14 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
 // first (tipping_box's friction of a few pixels, 24.7 N at 1.24 s, had been 96 px off), and
 // friction_models on a screen when it tried the shortest arrow's value first too (its drags'
 // values, 2.07 N and 0.856 N at 0.2 s, had been 96 and 108 px off).
+//
+// A value with a leader is also nearer its own arrow than any other (issue 31: stacked_blocks'
+// pressing force, 9.81 N, sat by the bottom block's weight). driven_wheel in projector mode came
+// to meet that when LabelPlacer::place_beside looked for such a place first and draw_world placed
+// again, first, a value by another arrow; not yet, and held to still break it as above:
+// stacked_blocks' world (both modes: its 9.81 N values by the friction between the blocks, no
+// free place nearer their own arrows within a leader's reach), friction_models' and terrain's
+// worlds and wedge's inset on a screen.
 TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
     if (lesson == "contact_area") return !inset;
@@ -377,6 +399,13 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
     if (lesson == "friction_models") return projector && !inset;
     return false;
   };
+  const auto nearer_another_not_yet = [](const std::string& lesson, bool projector, bool inset) {
+    if (lesson == "stacked_blocks") return !inset;
+    if (lesson == "friction_models" || lesson == "terrain") return !projector && !inset;
+    if (lesson == "wedge") return !projector && inset;
+    return false;
+  };
+  std::map<std::string, int> still_nearer_another;
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
@@ -407,6 +436,8 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
           for (const draw::FrameRecord::Lane& lane : record.lanes) {
             if (not_yet(entry.name, projector, false)) {
               check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
+            } else if (nearer_another_not_yet(entry.name, projector, false)) {
+              worlds += check_beside_own_arrow(lane.forces, where + ", world", nullptr, &still_nearer_another[world_key]);
             } else {
               worlds += check_beside_own_arrow(lane.forces, where + ", world");
             }
@@ -415,6 +446,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
           EXPECT_FALSE(projector && record.free_body.drawn) << where << ": the free-body inset is drawn on a projector";
           if (not_yet(entry.name, projector, true)) {
             check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
+          } else if (nearer_another_not_yet(entry.name, projector, true)) {
+            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset", nullptr,
+                                             &still_nearer_another[inset_key]);
           } else {
             insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
           }
@@ -426,6 +460,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   EXPECT_GE(insets, 200);
   for (const auto& [picture, broken] : still_broken) {
     EXPECT_GT(broken, 0) << picture << " now meets the rule: take it off the not_yet list";
+  }
+  for (const auto& [picture, broken] : still_nearer_another) {
+    EXPECT_GT(broken, 0) << picture << " now has every value nearer its own arrow: take it off nearer_another_not_yet";
   }
 }
 
@@ -515,6 +552,161 @@ TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
     }
   }
   EXPECT_GE(frictions, 20);
+}
+
+// Every force arrow of every built-in lesson at its defaults, in the window in projector mode at
+// 1920 × 1080, at its opening, half way and at its end, can be read from a classroom's back row:
+// at least as long as its head and a shaft as long as the head. draw_arrow's head is four of the
+// arrow's thicknesses (the recorded arrow's half width is half of one), so the shortest is eight
+// thicknesses. Issue 31: with one scale set by the heaviest weight, tipping_box's 19.9 N push was
+// a 15 px stub and push's friction 18 to 30 px, shorter than or barely as long as a head (28 px).
+TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  int checked = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
+    draw_window_frame(gl, host, window, display);
+    const double end = window.playback().lesson().duration();
+    for (const double t : {0.2, 0.5 * end, end}) {
+      window.run_to(t);
+      draw_window_frame(gl, host, window, display);
+      draw::FrameRecord record;
+      draw_window_frame(gl, host, window, display, 0.0, &record);
+      char when[48];
+      std::snprintf(when, sizeof when, " at %.2f s", t);
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+          const float thickness = 2.0f * force.arrow.half_width;
+          const float drawn = length(sub(force.arrow.to, force.arrow.from));
+          // The floats of a tail moved to a dot's rim: a hundredth of a pixel.
+          EXPECT_GE(drawn, 8.0f * thickness - 0.01f)
+              << entry.name << when << ": the " << draw::force_kind_name(force.kind) << " " << force.text << " is drawn " << drawn
+              << " px long, shorter than its head and a shaft as long (" << 8.0f * thickness << " px)";
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 200);
+}
+
+// No arrow's shaft crosses another's: push's friction, from a contact right of the block's
+// middle, crossed the shaft of the weight, which reaches past the floor, and its push crossed the
+// normal force's (issue 31, a teacher's trial on a projector). Every built-in lesson at its
+// defaults in the window in projector mode at 1920 × 1080, light, at its opening, half way and
+// at its end: two arrows' centre lines of one lane cross only within a thickness of a tail (forces
+// that start together at one contact, as friction and normal force do).
+TEST(ForceArrows, NoArrowOnAProjectorCrossesAnothersShaft) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  const auto cross = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
+  int pairs = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
+    draw_window_frame(gl, host, window, display);
+    const double end = window.playback().lesson().duration();
+    for (const double t : {0.2, 0.5 * end, end}) {
+      window.run_to(t);
+      draw_window_frame(gl, host, window, display);
+      draw::FrameRecord record;
+      draw_window_frame(gl, host, window, display, 0.0, &record);
+      char when[48];
+      std::snprintf(when, sizeof when, " at %.2f s", t);
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        for (std::size_t i = 0; i < lane.forces.size(); ++i) {
+          for (std::size_t j = i + 1; j < lane.forces.size(); ++j) {
+            const draw::DrawnSegment& p = lane.forces[i].arrow;
+            const draw::DrawnSegment& q = lane.forces[j].arrow;
+            ++pairs;
+            const ImVec2 d = sub(p.to, p.from), e = sub(q.to, q.from), w = sub(q.from, p.from);
+            const float denominator = cross(d, e);
+            if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;
+            const float on_p = cross(w, e) / denominator, on_q = cross(w, d) / denominator;
+            if (on_p <= 0.0f || on_p >= 1.0f || on_q <= 0.0f || on_q >= 1.0f) continue;
+            const float thickness = 2.0f * std::max(p.half_width, q.half_width);
+            const float from_tails = std::min(on_p * length(d), on_q * length(e));
+            EXPECT_LE(from_tails, thickness)
+                << entry.name << when << ": the " << draw::force_kind_name(lane.forces[i].kind) << " " << lane.forces[i].text
+                << " and the " << draw::force_kind_name(lane.forces[j].kind) << " " << lane.forces[j].text << " cross "
+                << on_p * length(d) << " and " << on_q * length(e) << " px from their tails";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(pairs, 300);
+}
+
+// Every force's arrow stands out from whatever it is drawn over, in both themes: against every
+// material's fill (the known looks and the palette's six), the sky and the background, either
+// the arrow's own colour differs from it 3:1 or more (WCAG 2.1's non-text contrast), or its
+// outline (Theme::arrow_halo, drawn round every arrow) differs from the arrow 3:1 or more, so the
+// arrow's edge is seen whatever lies beyond. Issue 31: the dark theme's normal force on
+// aluminium was 1.09:1, its weight 1.58:1, with nothing between them.
+TEST(ForceArrows, StandOutFromEveryBodyTheSkyAndTheBackgroundInBothThemes) {
+  const char* const materials[] = {"wood",     "aluminium", "metal", "plastic", "rubber", "ice",
+                                   "concrete", "stone",     "asphalt", "grass"};
+  int pairs = 0, outlined = 0;
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    const draw::Theme& colours = draw::theme(name);
+    std::vector<std::pair<std::string, ImU32>> under = {{"sky", colours.sky}, {"background", colours.background}};
+    for (const char* material : materials) under.emplace_back(material, draw::material_colour(colours, material, 0));
+    for (int slot = 0; slot < 6; ++slot) {
+      under.emplace_back("palette " + std::to_string(slot), draw::material_colour(colours, "unnamed", slot));
+    }
+    for (int kind = 0; kind < draw::force_kind_count; ++kind) {
+      const ImU32 arrow = colours.force[kind];
+      for (const auto& [what, fill] : under) {
+        ++pairs;
+        if (draw::contrast_ratio(arrow, fill) >= 3.0) continue;
+        ++outlined;
+        EXPECT_GE(colours.arrow_halo == 0 ? 1.0 : draw::contrast_ratio(arrow, colours.arrow_halo), 3.0)
+            << draw::theme_name(name) << ": the " << draw::force_kind_name(static_cast<ForceKind>(kind)) << " arrow on "
+            << what << " is " << draw::contrast_ratio(arrow, fill) << ":1, and its outline does not set it apart";
+      }
+    }
+  }
+  EXPECT_EQ(pairs, 2 * draw::force_kind_count * 18);
+  EXPECT_GE(outlined, 10);  // the outline is what sets many apart: the test is not empty
+}
+
+// And it is drawn: in spring_pull's dark-theme picture (an aluminium block) in projector mode,
+// across the normal force's shaft where it lies over the block, the pixels just past each side
+// of the shaft are the outline's colour, not the block's.
+TEST(ForceArrows, TheOutlineIsDrawnRoundTheShaft) {
+  const Screen& screen = screens[3];
+  for (const draw::ThemeName name : {draw::ThemeName::dark, draw::ThemeName::light}) {
+    draw::HeadlessRenderer renderer(screen.width, screen.height, name, screen.scale);
+    const draw::Theme& colours = draw::theme(name);
+    draw::LessonAt at("spring_pull", {}, 1.0);
+    draw::FrameRecord record;
+    const draw::Image image = renderer.render(*at.lesson, at.framing, &record);
+    int checked = 0;
+    for (const draw::FrameRecord::Lane& lane : record.lanes) {
+      for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+        if (force.kind != ForceKind::normal) continue;
+        const draw::DrawnSegment& shaft = force.arrow;
+        const ImVec2 unit = mul(sub(shaft.to, shaft.from), 1.0f / length(sub(shaft.to, shaft.from)));
+        const ImVec2 across(-unit.y, unit.x);
+        // A point a quarter along, over the block; half the shaft and half the outline out.
+        const ImVec2 middle = add(shaft.from, mul(sub(shaft.to, shaft.from), 0.25f));
+        const float out = shaft.half_width + 0.5f * draw::arrow_halo_width(2.0f * shaft.half_width);
+        for (const float side : {1.0f, -1.0f}) {
+          const ImVec2 p = add(middle, mul(across, side * out));
+          const std::uint8_t* pixel = image.pixel(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)));
+          const ImU32 seen = IM_COL32(pixel[0], pixel[1], pixel[2], 255);
+          EXPECT_GE(draw::contrast_ratio(seen, colours.force[static_cast<int>(ForceKind::normal)]), 3.0)
+              << draw::theme_name(name) << ": beside the normal force's shaft at (" << p.x << ", " << p.y << ") the pixel ("
+              << int(pixel[0]) << ", " << int(pixel[1]) << ", " << int(pixel[2]) << ") does not set the arrow apart";
+          ++checked;
+        }
+      }
+    }
+    EXPECT_EQ(checked, 2) << draw::theme_name(name);
+  }
 }
 
 // The speed readout of a body at the world view's left edge, with projector text: centred over
