@@ -34,8 +34,9 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
     const float size = force.force.Length();
     if (size == 0.0f || size < smallest_shown) continue;
     const ImVec2 tail = camera.to_screen(force.point);
-    // Too short to see at the scale: as long as an arrowhead needs, its label giving its size.
-    const float drawn = std::max({size * pixels_per_newton, shortest_arrow_pixels(scale), shortest});
+    // Too short to see at the scale: as long as an arrowhead needs, its label giving its size;
+    // with a legible length asked for, lengthened in order.
+    const float drawn = std::max(drawn_arrow_pixels(size, pixels_per_newton, shortest), shortest_arrow_pixels(scale));
     const ImVec2 tip(tail.x + force.force.x / size * drawn, tail.y - force.force.y / size * drawn);
     arrows.push_back(ScreenArrow{force, tail, tip});
   }

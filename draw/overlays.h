@@ -42,13 +42,20 @@ inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
 // The shortest force arrow the world draws, to be read from a classroom's back row: its head
 // (four thicknesses, draw_arrow's) and a shaft as long, 28 px at text scale 1 and 57 px on a
 // projector (2.0). One force scale per lesson, set by its heaviest weight, drew tipping_box's
-// 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31). A force
-// shorter than that at the scale is drawn this long, as a textbook draws an arrow "not to
-// scale" with its value beside it; the legend says from which force on (not_to_scale_below).
+// 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31).
 inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thickness(scale); }
-// The force under which the world's arrows are lengthened to legible_arrow_pixels(scale).
+// How long a force's arrow is drawn, px: to scale where that is twice `legible` or more; below,
+// lengthened but in order, `legible` and half its length at the scale, which meets the scale at
+// twice `legible`. Every smaller force then has a shorter arrow, as a textbook's "not to scale"
+// sketch keeps them: drawn simply as long as `legible`, push's 2.94 N friction and 4.99 N push
+// came out 56 and 54 px, the friction the longer (a teacher's trial, issue 31). 0: to scale.
+inline float drawn_arrow_pixels(float newtons, float pixels_per_newton, float legible) {
+  const float to_scale = newtons * pixels_per_newton;
+  return to_scale >= 2.0f * legible ? to_scale : legible + 0.5f * to_scale;
+}
+// The force under which the world's arrows are lengthened (drawn_arrow_pixels), which the legend says.
 inline float not_to_scale_below(float newtons_to_pixels, float scale) {
-  return legible_arrow_pixels(scale) / newtons_to_pixels;
+  return 2.0f * legible_arrow_pixels(scale) / newtons_to_pixels;
 }
 // Tails at the point of action, lengths to scale; a force that shows in the printed values of
 // its body's forces but would be shorter than `shortest` pixels (at least

@@ -62,10 +62,10 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
   // The tip's last pixels fade into the background: within 2 px. The contact point is on the
   // floor's surface, so the arrow runs along the ground's 2.5 px edge line, and its tip's last
   // pixels fade into that dark line instead: up to half its width more.
-  // As long as the force at the arrows' scale, or as long as a back row can read where that is
-  // shorter (legible_arrow_pixels: the legend says "not to scale" under that force).
+  // As long as the force at the arrows' scale, or lengthened in order where that is short of what
+  // a back row can read (drawn_arrow_pixels: the legend says "not to scale" under that force).
   EXPECT_NEAR(drawn_length(image, friction, colours.force[static_cast<int>(ForceKind::friction)]),
-              std::max(recorded * scale, legible_arrow_pixels(1.0f)), 2.0f + 0.5f * 2.5f);
+              drawn_arrow_pixels(recorded, scale, legible_arrow_pixels(1.0f)), 2.0f + 0.5f * 2.5f);
 
   // The contact's mark, just below the friction arrow's shaft at the contact point.
   const std::vector<ContactMark> marks = contact_marks(at.scene());

@@ -1,6 +1,9 @@
 // The world's labels: every force's value beside its own arrow, in the world and in the
 // free-body inset; names, the slope's angle and the tools' readings off the bodies and each
 // other; every label inside what the world view shows.
+#include <cstdlib>
+#include <functional>
+
 #include "tests/layout_checks.h"
 
 namespace frictionlab::classroom {
@@ -554,17 +557,13 @@ TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
   EXPECT_GE(frictions, 20);
 }
 
-// Every force arrow of every built-in lesson at its defaults, in the window in projector mode at
-// 1920 × 1080, at its opening, half way and at its end, can be read from a classroom's back row:
-// at least as long as its head and a shaft as long as the head. draw_arrow's head is four of the
-// arrow's thicknesses (the recorded arrow's half width is half of one), so the shortest is eight
-// thicknesses. Issue 31: with one scale set by the heaviest weight, tipping_box's 19.9 N push was
-// a 15 px stub and push's friction 18 to 30 px, shorter than or barely as long as a head (28 px).
-TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
+// Every built-in lesson at its defaults in the window in projector mode at 1920 × 1080, light,
+// at its opening, half way and at its end: each lane's drawn forces, with where they were drawn
+// (" at 1.73 s" after the lesson's name).
+void each_projector_lane(const std::function<void(const std::string& where, const draw::FrameRecord::Lane& lane)>& check) {
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
-  int checked = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
     draw_window_frame(gl, host, window, display);
@@ -576,20 +575,61 @@ TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
       draw_window_frame(gl, host, window, display, 0.0, &record);
       char when[48];
       std::snprintf(when, sizeof when, " at %.2f s", t);
-      for (const draw::FrameRecord::Lane& lane : record.lanes) {
-        for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
-          const float thickness = 2.0f * force.arrow.half_width;
-          const float drawn = length(sub(force.arrow.to, force.arrow.from));
-          // The floats of a tail moved to a dot's rim: a hundredth of a pixel.
-          EXPECT_GE(drawn, 8.0f * thickness - 0.01f)
-              << entry.name << when << ": the " << draw::force_kind_name(force.kind) << " " << force.text << " is drawn " << drawn
-              << " px long, shorter than its head and a shaft as long (" << 8.0f * thickness << " px)";
-          ++checked;
-        }
-      }
+      for (const draw::FrameRecord::Lane& lane : record.lanes) check(entry.name + when, lane);
     }
   }
+}
+
+// Every force arrow of every built-in lesson at its defaults, in the window in projector mode at
+// 1920 × 1080, at its opening, half way and at its end, can be read from a classroom's back row:
+// at least as long as its head and a shaft as long as the head. draw_arrow's head is four of the
+// arrow's thicknesses (the recorded arrow's half width is half of one), so the shortest is eight
+// thicknesses. Issue 31: with one scale set by the heaviest weight, tipping_box's 19.9 N push was
+// a 15 px stub and push's friction 18 to 30 px, shorter than or barely as long as a head (28 px).
+TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
+  int checked = 0;
+  each_projector_lane([&](const std::string& where, const draw::FrameRecord::Lane& lane) {
+    for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+      const float thickness = 2.0f * force.arrow.half_width;
+      const float drawn = length(sub(force.arrow.to, force.arrow.from));
+      // The floats of a tail moved to a dot's rim: a hundredth of a pixel.
+      EXPECT_GE(drawn, 8.0f * thickness - 0.01f)
+          << where << ": the " << draw::force_kind_name(force.kind) << " " << force.text << " is drawn " << drawn
+          << " px long, shorter than its head and a shaft as long (" << 8.0f * thickness << " px)";
+      ++checked;
+    }
+  });
   EXPECT_GE(checked, 200);
+}
+
+// A smaller force never has the longer arrow, lengthened or not: push's 2.94 N friction and
+// 4.99 N push, both drawn simply as long as a back row can read, came out 56 and 54 px, the
+// friction the longer, against the lesson's own question (a teacher's trial, issue 31). Forces
+// are read from their printed values (three figures); two within 10 % of each other are not
+// compared, nor a foot's share of a force summed over feet. The shorter must be shorter by more
+// than the floats' rounding of a tail moved to a dot's rim (a hundredth of a pixel).
+TEST(ForceArrows, ASmallerForceNeverHasTheLongerArrow) {
+  int compared = 0;
+  each_projector_lane([&](const std::string& where, const draw::FrameRecord::Lane& lane) {
+    for (const draw::LabelPlacer::ForceLabel& smaller : lane.forces) {
+      for (const draw::LabelPlacer::ForceLabel& larger : lane.forces) {
+        // A value for one arrow: not a foot's unlabelled share, nor a sum over feet ("9.81 N in all").
+        const auto alone = [](const std::string& text) { return !text.empty() && text.find("in all") == std::string::npos; };
+        if (!alone(smaller.text) || !alone(larger.text)) continue;
+        const double small_value = std::strtod(smaller.text.c_str(), nullptr);
+        const double large_value = std::strtod(larger.text.c_str(), nullptr);
+        if (!(small_value < 0.9 * large_value)) continue;
+        const float small_drawn = length(sub(smaller.arrow.to, smaller.arrow.from));
+        const float large_drawn = length(sub(larger.arrow.to, larger.arrow.from));
+        EXPECT_LT(small_drawn, large_drawn - 0.01f)
+            << where << ": the " << draw::force_kind_name(smaller.kind) << " " << smaller.text << " is drawn " << small_drawn
+            << " px, longer than the " << draw::force_kind_name(larger.kind) << " " << larger.text << " at " << large_drawn
+            << " px";
+        ++compared;
+      }
+    }
+  });
+  EXPECT_GE(compared, 200);
 }
 
 // No arrow's shaft crosses another's: push's friction, from a contact right of the block's
@@ -599,44 +639,28 @@ TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
 // at its end: two arrows' centre lines of one lane cross only within a thickness of a tail (forces
 // that start together at one contact, as friction and normal force do).
 TEST(ForceArrows, NoArrowOnAProjectorCrossesAnothersShaft) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
   const auto cross = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
   int pairs = 0;
-  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
-    draw_window_frame(gl, host, window, display);
-    const double end = window.playback().lesson().duration();
-    for (const double t : {0.2, 0.5 * end, end}) {
-      window.run_to(t);
-      draw_window_frame(gl, host, window, display);
-      draw::FrameRecord record;
-      draw_window_frame(gl, host, window, display, 0.0, &record);
-      char when[48];
-      std::snprintf(when, sizeof when, " at %.2f s", t);
-      for (const draw::FrameRecord::Lane& lane : record.lanes) {
-        for (std::size_t i = 0; i < lane.forces.size(); ++i) {
-          for (std::size_t j = i + 1; j < lane.forces.size(); ++j) {
-            const draw::DrawnSegment& p = lane.forces[i].arrow;
-            const draw::DrawnSegment& q = lane.forces[j].arrow;
-            ++pairs;
-            const ImVec2 d = sub(p.to, p.from), e = sub(q.to, q.from), w = sub(q.from, p.from);
-            const float denominator = cross(d, e);
-            if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;
-            const float on_p = cross(w, e) / denominator, on_q = cross(w, d) / denominator;
-            if (on_p <= 0.0f || on_p >= 1.0f || on_q <= 0.0f || on_q >= 1.0f) continue;
-            const float thickness = 2.0f * std::max(p.half_width, q.half_width);
-            const float from_tails = std::min(on_p * length(d), on_q * length(e));
-            EXPECT_LE(from_tails, thickness)
-                << entry.name << when << ": the " << draw::force_kind_name(lane.forces[i].kind) << " " << lane.forces[i].text
-                << " and the " << draw::force_kind_name(lane.forces[j].kind) << " " << lane.forces[j].text << " cross "
-                << on_p * length(d) << " and " << on_q * length(e) << " px from their tails";
-          }
-        }
+  each_projector_lane([&](const std::string& where, const draw::FrameRecord::Lane& lane) {
+    for (std::size_t i = 0; i < lane.forces.size(); ++i) {
+      for (std::size_t j = i + 1; j < lane.forces.size(); ++j) {
+        const draw::DrawnSegment& p = lane.forces[i].arrow;
+        const draw::DrawnSegment& q = lane.forces[j].arrow;
+        ++pairs;
+        const ImVec2 d = sub(p.to, p.from), e = sub(q.to, q.from), w = sub(q.from, p.from);
+        const float denominator = cross(d, e);
+        if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;
+        const float on_p = cross(w, e) / denominator, on_q = cross(w, d) / denominator;
+        if (on_p <= 0.0f || on_p >= 1.0f || on_q <= 0.0f || on_q >= 1.0f) continue;
+        const float thickness = 2.0f * std::max(p.half_width, q.half_width);
+        const float from_tails = std::min(on_p * length(d), on_q * length(e));
+        EXPECT_LE(from_tails, thickness)
+            << where << ": the " << draw::force_kind_name(lane.forces[i].kind) << " " << lane.forces[i].text << " and the "
+            << draw::force_kind_name(lane.forces[j].kind) << " " << lane.forces[j].text << " cross " << on_p * length(d)
+            << " and " << on_q * length(e) << " px from their tails";
       }
     }
-  }
+  });
   EXPECT_GE(pairs, 300);
 }
 
