@@ -48,14 +48,17 @@ inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thick
 // lengthened but in order, `legible` and half its length at the scale, which meets the scale at
 // twice `legible`. Every smaller force then has a shorter arrow, as a textbook's "not to scale"
 // sketch keeps them: drawn simply as long as `legible`, push's 2.94 N friction and 4.99 N push
-// came out 56 and 54 px, the friction the longer (a teacher's trial, issue 31). 0: to scale.
+// came out 56 and 54 px, the friction the longer (a teacher's trial, issue 31); now 70 and 79.
+// (A quarter, not a half, left them 5 px apart, and crowded stacked_blocks on a projector no
+// less.) 0: to scale.
+constexpr float lengthened_share = 0.5f;
 inline float drawn_arrow_pixels(float newtons, float pixels_per_newton, float legible) {
   const float to_scale = newtons * pixels_per_newton;
-  return to_scale >= 2.0f * legible ? to_scale : legible + 0.5f * to_scale;
+  return to_scale * (1.0f - lengthened_share) >= legible ? to_scale : legible + lengthened_share * to_scale;
 }
 // The force under which the world's arrows are lengthened (drawn_arrow_pixels), which the legend says.
 inline float not_to_scale_below(float newtons_to_pixels, float scale) {
-  return 2.0f * legible_arrow_pixels(scale) / newtons_to_pixels;
+  return legible_arrow_pixels(scale) / (1.0f - lengthened_share) / newtons_to_pixels;
 }
 // Tails at the point of action, lengths to scale; a force that shows in the printed values of
 // its body's forces but would be shorter than `shortest` pixels (at least

@@ -280,7 +280,18 @@ std::vector<ImU32> series_colours(const lessons::Lesson& lesson, const lessons::
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
     if (!kind) continue;
-    const ImU32 colour = theme.force[static_cast<int>(*kind)];
+    ImU32 colour = theme.force[static_cast<int>(*kind)];
+    // A second force of one kind (stacked_blocks' two frictions) takes a redder shade of its
+    // kind's colour, half way to a crimson: still nearer friction's vermilion than any other
+    // force's colour, told apart by the legend. (Darkened toward the text instead, it came
+    // nearer the rope's brown than friction's own colour.)
+    if (taken(colour)) {
+      const ImU32 crimson = theme.name == ThemeName::light ? IM_COL32(190, 0, 40, 255) : IM_COL32(255, 80, 110, 255);
+      const ImVec4 from = ImGui::ColorConvertU32ToFloat4(colour), to = ImGui::ColorConvertU32ToFloat4(crimson);
+      constexpr float toward = 0.5f;
+      colour = ImGui::ColorConvertFloat4ToU32(ImVec4(from.x + toward * (to.x - from.x), from.y + toward * (to.y - from.y),
+                                                     from.z + toward * (to.z - from.z), from.w));
+    }
     if (taken(colour)) continue;
     colours[k] = colour;
     given[k] = true;

@@ -17,19 +17,6 @@ ThemeName parse_theme(std::string_view name) {
 
 std::string_view theme_name(ThemeName theme) { return theme == ThemeName::light ? "light" : "dark"; }
 
-std::string_view force_kind_name(ForceKind kind) {
-  switch (kind) {
-    case ForceKind::applied: return "applied";
-    case ForceKind::spring: return "spring";
-    case ForceKind::friction: return "friction";
-    case ForceKind::normal: return "normal";
-    case ForceKind::weight: return "weight";
-    case ForceKind::tension: return "rope";
-    case ForceKind::drag: return "drag";
-  }
-  return "force";
-}
-
 namespace {
 
 ImVec4 rgb(int r, int g, int b) {

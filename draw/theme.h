@@ -18,8 +18,8 @@ ThemeName parse_theme(std::string_view name);
 std::string_view theme_name(ThemeName theme);
 
 // Each kind of force (physics/scene_forces.h) has its own colour, the same in every picture.
-constexpr int force_kind_count = 7;
-std::string_view force_kind_name(ForceKind kind);
+using frictionlab::force_kind_count;
+using frictionlab::force_kind_name;
 
 struct Theme {
   ThemeName name;

@@ -39,7 +39,7 @@ probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
 -- The slope's friction on the block (dry and drag) along the lesson's positive direction, down
 -- the slope, as distance and speed: holding the block or braking its slide it points up the
 -- slope, so it reads negative (lessons/README.md, "Which way friction counts").
-probe { "friction_force", unit = "N", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
+probe { "friction_force", unit = "N", force = "friction", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
 -- The key plot first (the first page in projector mode): the block stays put while the friction

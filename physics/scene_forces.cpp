@@ -5,6 +5,20 @@
 
 namespace frictionlab {
 
+std::string_view force_kind_name(ForceKind kind) {
+  switch (kind) {
+    case ForceKind::applied: return "applied";
+    case ForceKind::spring: return "spring";
+    case ForceKind::friction: return "friction";
+    case ForceKind::normal: return "normal";
+    case ForceKind::weight: return "weight";
+    case ForceKind::tension: return "rope";
+    case ForceKind::drag: return "drag";
+  }
+  return "force";
+}
+
+
 const b2Body* main_body(const Scene& scene) {
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() == b2_dynamicBody) return body;

@@ -8,6 +8,7 @@
 #include <box2d/box2d.h>
 
 #include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ namespace frictionlab {
 
 // The kinds of force the class is shown.
 enum class ForceKind { applied, spring, friction, normal, weight, tension, drag };
+constexpr int force_kind_count = 7;
+// The word the legend gives each kind ("rope" for a tension), and a script's probe{ force = ... }.
+std::string_view force_kind_name(ForceKind kind);
 
 struct ForceOnBody {
   ForceKind kind;

@@ -31,7 +31,8 @@ struct ProbeInfo {
   double value = 0.0;  // measured after the latest frame
   std::string label;   // probe{ label = ... }: what plots call it; "" leaves it to the window
   // The kind of force it reads, where its read = { ... } says (a contact's friction or normal
-  // force, an applied force, a spring, a rope): plots draw it in the arrows' colour.
+  // force, an applied force, a spring, a rope), or its probe{ force = "friction" } states for a
+  // function: plots draw it in the arrows' colour.
   std::optional<ForceKind> force;
 };
 

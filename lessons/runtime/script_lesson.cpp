@@ -543,11 +543,24 @@ int probe(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "probe");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay", "label"});
+    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay", "label", "force"});
     const std::string name = fields.name();
     if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
     const std::string unit = fields.text("unit", "");
     const std::string label = fields.text("label", "");
+    // force = "friction": the kind of force a probe the runtime cannot see into (a function, a
+    // sampled model) measures, so that plots draw it in that force's arrows' colour.
+    std::optional<ForceKind> stated_force;
+    if (fields.has("force")) {
+      const std::string word = fields.text("force", "");
+      std::string allowed;
+      for (int kind = 0; kind < force_kind_count; ++kind) {
+        const std::string_view kind_word = force_kind_name(static_cast<ForceKind>(kind));
+        if (word == kind_word) stated_force = static_cast<ForceKind>(kind);
+        allowed += (kind == 0 ? "" : ", ") + std::string(kind_word);
+      }
+      if (!stated_force) throw InvalidInput(fields.what() + ": force = \"" + word + "\" is no kind of force; give one of " + allowed);
+    }
     const size_t index = build.probes.size();
     lua_rawgeti(state, 1, 2);
     const bool has_function = !lua_isnil(state, -1);
@@ -569,10 +582,11 @@ int probe(lua_State* state) {
       const double every = fields.number_in("every", "s", 0.0, 1e6, true);
       const double delay = fields.number_in("delay", "s", 0.0, 0.0, 1e6);
       build.scene->add_probe(name, sampled_reading(build, reference, every, delay, fields.what()));
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, std::nullopt});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, stated_force});
       return 0;
     }
     if (fields.has("read")) {
+      if (stated_force) throw InvalidInput(fields.what() + ": a read = { ... } probe's force is known from what it reads; leave force out");
       fields.push("read");
       std::optional<ForceKind> force;
       build.scene->add_probe(name, reading(state, -1, fields.what(), &force));
@@ -590,7 +604,7 @@ int probe(lua_State* state) {
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
     build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
-    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label, std::nullopt});
+    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label, stated_force});
     build.lua_probes = true;
     return 0;
   });

@@ -1014,13 +1014,26 @@ TEST(PlotColours, AForceReadFromTheWorldIsDrawnInItsArrowsColour) {
     EXPECT_EQ(each.series[1].colour, force(ForceKind::friction)) << "the friction on the top block";
     EXPECT_NE(each.series[2].colour, each.series[0].colour) << "the friction on the bottom block";
     EXPECT_NE(each.series[2].colour, each.series[1].colour) << "the friction on the bottom block";
+    // The second friction in a shade of friction's colour, nearer it than any other kind's: the
+    // teacher's trial found it green, the spring's.
+    const auto distance = [](ImU32 a, ImU32 b) {
+      const ImVec4 p = ImGui::ColorConvertU32ToFloat4(a), q = ImGui::ColorConvertU32ToFloat4(b);
+      return std::hypot(p.x - q.x, p.y - q.y, p.z - q.z);
+    };
+    for (int kind = 0; kind < force_kind_count; ++kind) {
+      if (static_cast<ForceKind>(kind) == ForceKind::friction) continue;
+      EXPECT_LT(distance(each.series[2].colour, force(ForceKind::friction)), distance(each.series[2].colour, colours.force[kind]))
+          << "the friction on the bottom block, against the " << force_kind_name(static_cast<ForceKind>(kind)) << "'s colour, "
+          << theme_name(name);
+    }
     LessonAt wedge("wedge", {}, 0.5);
     ASSERT_EQ(wedge.lesson->plots()[1].y.front(), "normal_force");
     EXPECT_EQ(plot_chart(*wedge.lesson, 1, wedge.lesson->duration(), colours).series[0].colour, force(ForceKind::normal));
   }
-  // A probe computed by the script says nothing of what it is: incline's friction along the slope.
+  // A probe computed by the script is what its probe{ force = ... } says: incline's friction along
+  // the slope (blue, the applied force's colour, in the teacher's trial), and nothing otherwise.
   LessonAt incline("incline", {}, 0.0);
-  EXPECT_FALSE(incline.lesson->probe_force("friction_force").has_value());
+  EXPECT_EQ(incline.lesson->probe_force("friction_force"), ForceKind::friction);
   EXPECT_EQ(incline.lesson->probe_force("normal_force"), ForceKind::normal);
   EXPECT_FALSE(incline.lesson->probe_force("speed").has_value());
   for (const std::string& lesson : lessons::builtin_lessons()) {

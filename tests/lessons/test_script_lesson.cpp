@@ -203,6 +203,27 @@ TEST(ScriptFreeReadings, SamplesThatAreNotAListOfNumbersStopTheLessonSayingWhere
             std::string::npos);
 }
 
+// A function's probe may say what kind of force it measures, in the legend's words, for plots to
+// draw it in that force's colour; any other word is refused with the words allowed, and a read =
+// { ... } probe, whose kind the runtime knows, may not say one.
+TEST(ScriptFreeReadings, AProbesForceIsAKindTheLegendNames) {
+  ScriptFile stated(with_heading("probe { \"along\", unit = \"N\", force = \"friction\", function() return 1 end }\n"));
+  const Lesson lesson(stated.path());
+  EXPECT_EQ(lesson.probe_force("along"), ForceKind::friction);
+  const auto stopped = [](const std::string& probe) {
+    ScriptFile script(with_heading(probe));
+    return error_of([&] { Lesson refused(script.path()); });
+  };
+  const std::string misspelt = stopped("probe { \"p\", force = \"frction\", function() return 1 end }\n");
+  EXPECT_NE(misspelt.find(":2: probe 'p': force = \"frction\" is no kind of force; give one of applied, spring, friction, "
+                          "normal, weight, rope, drag"),
+            std::string::npos)
+      << misspelt;
+  const std::string read =
+      stopped("local floor = ground { \"floor\", material = \"wood\" }\nprobe { \"p\", force = \"normal\", read = { floor, \"x\" } }\n");
+  EXPECT_NE(read.find("force is known from what it reads"), std::string::npos) << read;
+}
+
 // A block pulled across a floor oiled from 0.5 s to 1.2 s: its coefficients as schedules and as
 // the same functions of time give the same run, step for step, and the pair holds each value
 // from its time on (the last one given for a time counts).
