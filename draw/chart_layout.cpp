@@ -73,14 +73,16 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
   if (!chart.planned_points.empty()) {
     const std::size_t stride = std::max<std::size_t>(1, chart.planned_points.size() / static_cast<std::size_t>(std::max(1.0f, 8.0f * width)));
     planned.emplace_back();
-    for (std::size_t i = 0; i < chart.planned_points.size(); i += stride) {
+    for (std::size_t i = 0; i < chart.planned_points.size(); ++i) {
       const auto [x, y] = chart.planned_points[i];
-      // A point not shown parts the line (a new series begins with one: NaN between them).
+      // A point not shown parts the line (a new series begins with one: NaN between them), so
+      // every one is looked at, the thinning taking only every stride-th of those shown: a
+      // parting skipped would join one series' end to the next one's start.
       if (!x_axis.shows(x) || !y_axis.shows(y)) {
         if (!planned.back().empty()) planned.emplace_back();
         continue;
       }
-      planned.back().push_back(layout.to_screen(x, y));
+      if (i % stride == 0) planned.back().push_back(layout.to_screen(x, y));
     }
   }
   for (std::size_t i = 0; i < chart.levels.size(); ++i) {

@@ -40,7 +40,7 @@ inline float shortest_arrow_pixels(float scale) { return 8.0f * scale; }
 // four thicknesses long, the gaps between them and the room kept round them follow.
 inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
 // The shortest force arrow the world draws, to be read from a classroom's back row: its head
-// (four thicknesses, draw_arrow's) and a shaft as long, 28 px at text scale 1 and 57 px on a
+// (four thicknesses, draw_arrow's) and a shaft as long, 28 px at text scale 1 and 56 px on a
 // projector (2.0). One force scale per lesson, set by its heaviest weight, drew tipping_box's
 // 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31).
 inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thickness(scale); }

@@ -55,8 +55,8 @@ Range extent_of(const std::vector<const std::vector<double>*>& series, std::size
 }
 
 // The next of 1, 2, 5, 10, 20, ... times a power of ten at or above `size` (> 0), at most the
-// largest double; `fine`: the next of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, ... times one, each
-// a whole number of ticks of 0.5, 1 or 2 times that power (round_ends says when).
+// largest double; `fine`: the next of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, ... times one (the
+// axis' ends then need not fall on a tick; round_ends says which the axis takes).
 double round_bound(double size, bool fine) {
   constexpr double largest = std::numeric_limits<double>::max();
   const double power = std::pow(10.0, std::floor(std::log10(size)));
@@ -234,8 +234,10 @@ const PlannedReach* planned_reach(const lessons::Lesson& lesson) {
   const std::string key = values_key(lesson);
   auto known = std::find_if(kept.begin(), kept.end(), [&](const auto& entry) { return entry.first == key; });
   if (known == kept.end()) {
+    // Rehearsed before the oldest is let go, so that nothing kept moves until its answer is in.
+    std::optional<PlannedReach> rehearsed = rehearse(lesson);
     if (kept.size() >= 8) kept.erase(kept.begin());
-    kept.emplace_back(key, rehearse(lesson));
+    kept.emplace_back(key, std::move(rehearsed));
     known = std::prev(kept.end());
   }
   const std::optional<PlannedReach>& reach = known->second;

@@ -470,8 +470,10 @@ int thrown_box(lua_State* state) {
       solver_shortfall = std::abs(
           impact_on(landing.corner_x, landing.corner_y, first_met, false, build_of(state).scene->settings().velocity_iterations).omega -
           impact.omega);
-      // The world's corner may be where theory's is a rounding's time sooner or later.
+      // The world's corner may be where theory's is a rounding's time sooner or later (a grazing
+      // corner that does not fall into the floor has no such time: nothing to weigh).
       for (const double off : {-landing_rounding, landing_rounding}) {
+        if (!std::isfinite(off)) break;
         rounding_spread = std::max(rounding_spread, std::abs(impact_on(landing.corner_x, landing.corner_y, first_met + off).omega - impact.omega));
       }
       corner = impact.grips ? "grips" : "slides";
@@ -544,12 +546,15 @@ int thrown_box(lua_State* state) {
       pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
     }
     // A world whose rounding puts the landing just past a step boundary meets the corner a step
-    // after theory's meeting, turned and falling further: the spin that impact leaves (spin_after
-    // itself when step = 0 or it lands flat).
-    const double late = !on_a_corner ? impact.omega
-                        : lands_flat ? impact.omega
-                                       : through_frame(impact_on(landing.corner_x, landing.corner_y, first_met + step),
-                                                       landing.corner_x, landing.corner_y, first_met + step).omega;
+    // after theory's meeting, turned and falling further, and one that puts it just before a
+    // boundary, a step sooner: the spin those impacts leave (spin_after itself when step = 0 or it
+    // lands flat).
+    const auto met_at = [&](double late_by) {
+      return !on_a_corner || lands_flat ? impact.omega
+                                        : through_frame(impact_on(landing.corner_x, landing.corner_y, late_by),
+                                                        landing.corner_x, landing.corner_y, late_by).omega;
+    };
+    const double late = met_at(first_met + step), early = met_at(first_met - step);
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
     const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
@@ -557,7 +562,7 @@ int thrown_box(lua_State* state) {
     // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
     // slows it, ever more slowly).
     const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
-    lua_createtable(state, 0, 18);
+    lua_createtable(state, 0, 19);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_rounding", landing_rounding);
     set_number(state, "landing_angle", landing.angle / degrees);
@@ -565,6 +570,7 @@ int thrown_box(lua_State* state) {
     lua_setfield(state, -2, "corner");
     set_number(state, "spin_after", impact.omega);
     set_number(state, "spin_after_a_step_late", late);
+    set_number(state, "spin_after_a_step_early", early);
     set_number(state, "solver_shortfall", solver_shortfall);
     set_number(state, "rounding_spread", rounding_spread);
     set_number(state, "pivot_acceleration", pivot);
@@ -651,7 +657,7 @@ int wedge(lua_State* state) {
     const auto number_list = [&](const char* key, double WedgeState::*field) {
       list(key, [&](const WedgeState& sample) { lua_pushnumber(state, sample.*field); });
     };
-    lua_createtable(state, 0, 18);
+    lua_createtable(state, 0, 16);
     number_list("slide", &WedgeState::slide);
     number_list("speed", &WedgeState::speed);
     number_list("height", &WedgeState::height);

@@ -678,8 +678,9 @@ TEST(PlotRanges, ATimeAxisEndsAtARoundTimePastTheDurationOrGrowsWhileAMysteryIsH
 }
 
 // Issue 31: spring_pull's forces, within ±4.7 N, drew on an axis from −5 to 10 N (a margin of
-// 6 % of the 9.4 N span took the top past 5). Each side of zero ends at the next of 1, 2, 5
-// times a power of ten past what the record and the theory reach, with a margin of 3 % of it.
+// 6 % of the 9.4 N span took the top past 5). Each side of zero ends at the next of 1, 1.5, 2,
+// 2.5, 3, 4, 5, 6, 8 times a power of ten past what the record and the theory reach, with a
+// margin of 3 % of it.
 TEST(PlotRanges, EachSideOfZeroEndsAtTheNextRoundValuePastTheData) {
   LessonAt at("spring_pull", {}, 3.0);
   for (const bool with_theory : {false, true}) {
