@@ -371,6 +371,33 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
   return checked;
 }
 
+// Every built-in lesson at its defaults in the window at 1920 × 1080, in projector mode or not, in
+// a theme, at its opening, half way and at its end: the frame's record, with the lesson's name,
+// when (" at 1.73 s") and the lesson.
+void each_lesson_frame(bool projector, draw::ThemeName theme,
+                       const std::function<void(const std::string& lesson, const std::string& when,
+                                                const draw::FrameRecord& record, const lessons::Lesson& at)>& check) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
+    options.window.theme = theme;
+    Classroom window(options);
+    draw_window_frame(gl, host, window, display);
+    const double end = window.playback().lesson().duration();
+    for (const double t : {0.2, 0.5 * end, end}) {
+      window.run_to(t);
+      draw_window_frame(gl, host, window, display);
+      draw::FrameRecord record;
+      draw_window_frame(gl, host, window, display, 0.0, &record);
+      char when[48];
+      std::snprintf(when, sizeof when, " at %.2f s", t);
+      check(entry.name, when, record, window.playback().lesson());
+    }
+  }
+}
+
 // Every built-in lesson in the window at 1920 × 1080, in projector mode and not, light and dark,
 // at its opening (a fifth of a second in: no arrows before the first step), half way and at its
 // end: each force's value beside its own arrow by check_beside_own_arrow's rule, in the world and
@@ -417,54 +444,39 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
     return false;
   };
   std::map<std::string, int> still_nearer_another;
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
   int worlds = 0, insets = 0;
   // The pictures not yet held to the rule, and how many of their values break it: a picture
   // that comes to meet the rule must leave the list, so that it is held to it from then on.
   std::map<std::string, int> still_broken;
   for (const bool projector : {true, false}) {
     for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
-      for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-        ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
-        options.window.theme = theme;
-        Classroom window(options);
-        draw_window_frame(gl, host, window, display);
-        const double end = window.playback().lesson().duration();
-        for (const double t : {0.2, 0.5 * end, end}) {
-          window.run_to(t);
-          draw_window_frame(gl, host, window, display);
-          draw::FrameRecord record;
-          draw_window_frame(gl, host, window, display, 0.0, &record);
-          char when[48];
-          std::snprintf(when, sizeof when, " at %.2f s", t);
-          const std::string where = entry.name + when + (projector ? ", projector" : "") +
-                                    (theme == draw::ThemeName::dark ? ", dark" : "");
-          check_layout(record, window.playback().lesson(), where);
-          const std::string world_key = entry.name + (projector ? ", projector" : "") + ", world";
-          const std::string inset_key = entry.name + (projector ? ", projector" : "") + ", inset";
-          for (const draw::FrameRecord::Lane& lane : record.lanes) {
-            if (not_yet(entry.name, projector, false)) {
-              check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
-            } else if (nearer_another_not_yet(entry.name, projector, false)) {
-              worlds += check_beside_own_arrow(lane.forces, where + ", world", nullptr, &still_nearer_another[world_key]);
-            } else {
-              worlds += check_beside_own_arrow(lane.forces, where + ", world");
-            }
-          }
-          // A projector's inset cannot be read, and is left out (FreeBody.LeftOutWhereItsArrowsCannotBeRead).
-          EXPECT_FALSE(projector && record.free_body.drawn) << where << ": the free-body inset is drawn on a projector";
-          if (not_yet(entry.name, projector, true)) {
-            check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
-          } else if (nearer_another_not_yet(entry.name, projector, true)) {
-            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset", nullptr,
-                                             &still_nearer_another[inset_key]);
+      each_lesson_frame(projector, theme, [&](const std::string& lesson, const std::string& when,
+                                              const draw::FrameRecord& record, const lessons::Lesson& at) {
+        const std::string where =
+            lesson + when + (projector ? ", projector" : "") + (theme == draw::ThemeName::dark ? ", dark" : "");
+        check_layout(record, at, where);
+        const std::string world_key = lesson + (projector ? ", projector" : "") + ", world";
+        const std::string inset_key = lesson + (projector ? ", projector" : "") + ", inset";
+        for (const draw::FrameRecord::Lane& lane : record.lanes) {
+          if (not_yet(lesson, projector, false)) {
+            check_beside_own_arrow(lane.forces, where, &still_broken[world_key]);
+          } else if (nearer_another_not_yet(lesson, projector, false)) {
+            worlds += check_beside_own_arrow(lane.forces, where + ", world", nullptr, &still_nearer_another[world_key]);
           } else {
-            insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
+            worlds += check_beside_own_arrow(lane.forces, where + ", world");
           }
         }
-      }
+        // A projector's inset cannot be read, and is left out (FreeBody.LeftOutWhereItsArrowsCannotBeRead).
+        EXPECT_FALSE(projector && record.free_body.drawn) << where << ": the free-body inset is drawn on a projector";
+        if (not_yet(lesson, projector, true)) {
+          check_beside_own_arrow(record.free_body.forces, where, &still_broken[inset_key]);
+        } else if (nearer_another_not_yet(lesson, projector, true)) {
+          insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset", nullptr,
+                                           &still_nearer_another[inset_key]);
+        } else {
+          insets += check_beside_own_arrow(record.free_body.forces, where + ", free-body inset");
+        }
+      });
     }
   }
   EXPECT_GE(worlds, 300);
@@ -569,23 +581,10 @@ TEST(ForceArrows, FrictionStartsOutsideTheContactDots) {
 // at its opening, half way and at its end: each lane's drawn forces, with where they were drawn
 // (" at 1.73 s" after the lesson's name).
 void each_projector_lane(const std::function<void(const std::string& where, const draw::FrameRecord::Lane& lane)>& check) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
-  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
-    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
-    draw_window_frame(gl, host, window, display);
-    const double end = window.playback().lesson().duration();
-    for (const double t : {0.2, 0.5 * end, end}) {
-      window.run_to(t);
-      draw_window_frame(gl, host, window, display);
-      draw::FrameRecord record;
-      draw_window_frame(gl, host, window, display, 0.0, &record);
-      char when[48];
-      std::snprintf(when, sizeof when, " at %.2f s", t);
-      for (const draw::FrameRecord::Lane& lane : record.lanes) check(entry.name + when, lane);
-    }
-  }
+  each_lesson_frame(true, draw::ThemeName::light,
+                    [&](const std::string& lesson, const std::string& when, const draw::FrameRecord& record, const lessons::Lesson&) {
+                      for (const draw::FrameRecord::Lane& lane : record.lanes) check(lesson + when, lane);
+                    });
 }
 
 // Every force arrow of every built-in lesson at its defaults, in the window in projector mode at
