@@ -93,7 +93,15 @@ int spring_stick_slip(lua_State* state) {
       // How long the block stays stuck after a stop before it breaks away again: a stepped world
       // cannot show a stick much shorter than its step (a lesson says so rather than compare).
       double shortest_stick = std::numeric_limits<double>::infinity(), stopped_at = std::numeric_limits<double>::quiet_NaN();
+      // And the longest it moves without stopping (a reversal does not stop it): every step of
+      // a slip rounds the world's single-precision position, so a lesson's tolerance counts them.
+      double longest_slip = 0.0, moving_since = std::numeric_limits<double>::quiet_NaN();
       for (const Event& event : run.events()) {
+        if (event.kind == EventKind::breakaway && std::isnan(moving_since)) moving_since = event.t;
+        if (event.kind == EventKind::stop && !std::isnan(moving_since)) {
+          longest_slip = std::max(longest_slip, event.t - moving_since);
+          moving_since = std::numeric_limits<double>::quiet_NaN();
+        }
         const double force = applied_force(block, event.t, event.x);
         const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
         if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
@@ -105,7 +113,8 @@ int spring_stick_slip(lua_State* state) {
           ++breakaways, breakaway_sum += force;
         }
       }
-      lua_createtable(state, 0, 7);
+      if (!std::isnan(moving_since)) longest_slip = std::max(longest_slip, duration - moving_since);
+      lua_createtable(state, 0, 8);
       set_number(state, "breakaways", breakaways);
       set_number(state, "resticks", resticks);
       if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
@@ -113,6 +122,7 @@ int spring_stick_slip(lua_State* state) {
       if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
       if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
       if (std::isfinite(shortest_stick)) set_number(state, "shortest_stick", shortest_stick);
+      set_number(state, "longest_slip", longest_slip);
       lua_setfield(state, -2, "run");
     }
     return 1;

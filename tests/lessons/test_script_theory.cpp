@@ -176,6 +176,7 @@ r[9] = theory.disk_starts_rolling { v0 = 2, mass = 1, radius = 0.1, mu_k = 0.3 }
 r[10] = theory.stacked_blocks { top_mass = 1, bottom_mass = 2, push = 30,
           between = { mu_s = 0.3, mu_k = 0.2 }, ground = { mu_s = 0.4, mu_k = 0.3 } }.top_acceleration
 r[11] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.6, mu_k = 0.4, duration = 5 }.run.shortest_stick
+r[12] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.6, mu_k = 0.4, duration = 5 }.run.longest_slip
 for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
 )"));
   Lesson lesson(script.path());
@@ -195,6 +196,8 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   // The run's events are the closed form's phases joined where each ends, found to 1e-13 s: every
   // stick lasts the cycle's 2(μs − μk)·m·g/(k·v), 0.785 s (5 s hold three of them).
   EXPECT_NEAR(r(11), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).stick_duration, 1e-9);
+  // And every slip lasts the cycle's slip_duration, 0.228 s (5 s hold four, the last ending at 4.45 s).
+  EXPECT_NEAR(r(12), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).slip_duration, 1e-9);
 }
 
 // A slider may reach values a closed form has no answer for: theory.* then answers in words
