@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "classroom/knob_slider.h"
 #include "classroom/text_boxes.h"
@@ -22,8 +23,8 @@ namespace {
 
 // "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
 std::string control_label(const lessons::Parameter& parameter) {
-  if (const PairCoefficient* coefficient = pair_coefficient(parameter.coefficient)) {
-    return lessons::class_words(parameter.coefficient) + " " + coefficient->word;
+  if (const PairCoefficient* coefficient = parameter.coefficient) {
+    return lessons::class_words(coefficient->name) + " " + coefficient->word;
   }
   return lessons::class_words(parameter.name);
 }
@@ -55,7 +56,7 @@ const std::vector<Preset>& presets() {
 
 // A pair's coefficient by its letter alone, for two sliders a row.
 std::string coefficient_letter(const lessons::Parameter& parameter) {
-  return lessons::class_words(parameter.coefficient.empty() ? parameter.name : parameter.coefficient);
+  return lessons::class_words(parameter.coefficient == nullptr ? parameter.name : parameter.coefficient->name);
 }
 
 // A combo box's shown choice, left in its frame before the arrow button.
@@ -241,7 +242,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
           draw::note_text(values.c_str());
           continue;
         }
-        if (parameter.coefficient == static_coefficient.name) {
+        if (parameter.coefficient == &static_coefficient) {
           ImGui::SameLine();
           ImGui::SetNextItemWidth(-FLT_MIN);
           preset_row(parameter, on_show, controls);
@@ -289,7 +290,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
 
 void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls) {
   // "" or "name.", before the coefficient's own name.
-  const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - mu_s.coefficient.size());
+  const std::string prefix = mu_s.name.substr(0, mu_s.name.size() - std::strlen(mu_s.coefficient->name));
   const std::string mu_k = prefix + kinetic_coefficient.name;
   // A mystery's pair takes no presets: choosing one would end the mystery without a reveal.
   if (!unlocked(on_show.lock, mu_k) || (on_show.mystery && on_show.mystery->hides(mu_s.name))) {

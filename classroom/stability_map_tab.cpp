@@ -30,7 +30,7 @@ void StabilityMapTab::update(const lessons::Lesson& lesson, const draw::HiddenVa
   const StepSettings& settings = lesson.settings();
   const double h = 1.0 / settings.hz;  // the regularized law's step in a lesson: one a frame
   for (const lessons::Parameter& parameter : lesson.parameters()) {
-    if (parameter.coefficient == static_coefficient.name && std::isnan(mu_s)) {
+    if (parameter.coefficient == &static_coefficient && std::isnan(mu_s)) {
       // A mystery's μs would be read off the map's boundary: no map until it is revealed.
       if (hidden.hides(parameter.name)) {
         chart = draw::Chart{};

@@ -47,9 +47,9 @@ std::uint64_t parse_mystery_seed(const std::string& option, const std::string& t
 std::vector<std::string> mystery_pairs(const lessons::Lesson& lesson) {
   std::vector<std::string> pairs;
   for (const lessons::Parameter& mu_s : lesson.parameters()) {
-    if (mu_s.coefficient != static_coefficient.name) continue;
+    if (mu_s.coefficient != &static_coefficient) continue;
     for (const lessons::Parameter& mu_k : lesson.parameters()) {
-      if (mu_k.coefficient == kinetic_coefficient.name && mu_k.material_a == mu_s.material_a && mu_k.material_b == mu_s.material_b) {
+      if (mu_k.coefficient == &kinetic_coefficient && mu_k.material_a == mu_s.material_a && mu_k.material_b == mu_s.material_b) {
         pairs.push_back(pair_name(mu_s));
         break;
       }
@@ -61,11 +61,11 @@ std::vector<std::string> mystery_pairs(const lessons::Lesson& lesson) {
 std::pair<std::string, std::string> mystery_parameters(const lessons::Lesson& lesson, const std::string& pair,
                                                        const std::string& option) {
   for (const lessons::Parameter& mu_s : lesson.parameters()) {
-    if (mu_s.coefficient != static_coefficient.name) continue;
+    if (mu_s.coefficient != &static_coefficient) continue;
     const std::string name = pair_name(mu_s), reversed = mu_s.material_b + "/" + mu_s.material_a;
     if (pair != name && pair != reversed) continue;
     for (const lessons::Parameter& mu_k : lesson.parameters()) {
-      if (mu_k.coefficient == kinetic_coefficient.name && mu_k.material_a == mu_s.material_a && mu_k.material_b == mu_s.material_b) {
+      if (mu_k.coefficient == &kinetic_coefficient && mu_k.material_a == mu_s.material_a && mu_k.material_b == mu_s.material_b) {
         return {mu_s.name, mu_k.name};
       }
     }

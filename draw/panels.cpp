@@ -93,7 +93,7 @@ void title_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size, cons
 }
 
 std::string pair_of(const lessons::Parameter& parameter) {
-  return parameter.coefficient.empty() ? "" : parameter.material_a + " on " + parameter.material_b;
+  return parameter.coefficient == nullptr ? "" : parameter.material_a + " on " + parameter.material_b;
 }
 
 std::vector<std::string> parameter_pairs(const lessons::Lesson& lesson) {
@@ -109,9 +109,9 @@ std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, 
   std::string line;
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // Drag coefficients at 0 are off: not worth a place on a folded line.
-    const PairCoefficient* coefficient = pair_coefficient(parameter.coefficient);
-    if (pair_of(parameter) != pair || (parameter.value == 0.0 && coefficient != nullptr && coefficient->drag)) continue;
-    const std::string letter = lessons::class_words(parameter.coefficient);
+    const PairCoefficient* coefficient = parameter.coefficient;
+    if (pair_of(parameter) != pair || (parameter.value == 0.0 && coefficient->drag)) continue;
+    const std::string letter = lessons::class_words(coefficient->name);
     // Without units: the sliders, one arrow away, have them.
     char value[32];
     std::snprintf(value, sizeof value, "%g", parameter.value);

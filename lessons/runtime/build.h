@@ -228,11 +228,11 @@ void require_top_level(lua_State* state, const std::string& what);
 void require_script_function(lua_State* state, int index, const std::string& what);
 
 // Declares a pair's μs, μk, c and b as parameters (named with `prefix`), applying --set values,
-// and returns the values the pair table gets. `only`, when not empty, names the coefficients
-// that get parameters; the others keep `values`.
+// and returns the values the pair table gets. `only`, when not empty, holds the coefficients'
+// rows (physics/materials.h) that get parameters; the others keep `values`.
 FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
                                   const std::string& prefix, const std::string& declared_at,
-                                  const std::set<std::string>& only = {});
+                                  const std::set<const PairCoefficient*>& only = {});
 // After the script: a pair that can rub but that no pair{} declared (its values came from the
 // presets) gets its coefficients as parameters too, so every lesson has its sliders.
 void declare_preset_pairs(LessonBuild& build);

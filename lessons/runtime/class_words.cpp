@@ -75,8 +75,8 @@ std::string class_words(std::string_view name) {
 }
 
 std::string parameter_title(const Parameter& parameter) {
-  if (parameter.coefficient.empty()) return class_words(parameter.name);
-  return class_words(parameter.coefficient) + "  " + parameter.material_a + " / " + parameter.material_b;
+  if (parameter.coefficient == nullptr) return class_words(parameter.name);
+  return class_words(parameter.coefficient->name) + "  " + parameter.material_a + " / " + parameter.material_b;
 }
 
 }  // namespace frictionlab::lessons

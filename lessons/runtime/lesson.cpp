@@ -555,16 +555,14 @@ void Lesson::set(const std::string& name, double number) {
   if (found == nullptr) parameter(name);  // throws, listing the parameters
   Parameter& changed = *found;
   const double value = check_parameter_value(changed, number);
-  if (!changed.structural && !changed.coefficient.empty()) {
+  if (!changed.structural && changed.coefficient != nullptr) {
     // A coefficient the script reads only while running: the pair table changes under the
     // running lesson, as a teacher moving a slider expects.
     // From the pair as it is: a coefficient with no slider of its own keeps the script's value.
     FrictionPair values = scene().pairs().pair(changed.material_a, changed.material_b);
     for (const Parameter& sibling : current_->parameters) {
       if (sibling.material_a != changed.material_a || sibling.material_b != changed.material_b) continue;
-      if (const PairCoefficient* coefficient = pair_coefficient(sibling.coefficient)) {
-        values.*coefficient->value = &sibling == &changed ? value : sibling.value;
-      }
+      if (sibling.coefficient != nullptr) values.*sibling.coefficient->value = &sibling == &changed ? value : sibling.value;
     }
     scene().pairs().set_pair(changed.material_a, changed.material_b, values);
     scene().wake();  // a block resting on static friction may slide with the new values

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lessons/runtime/sandbox.h"
+#include "physics/materials.h"
 #include "physics/scene.h"
 #include "physics/scene_forces.h"
 
@@ -28,8 +29,10 @@ struct Parameter {
   double min = 0.0;
   double max = 0.0;
   std::vector<std::string> choices;  // not empty: value is the index of the chosen one
-  // A material pair's coefficient (mu_s, mu_k, c or b) and the pair it belongs to.
-  std::string coefficient;
+  // A material pair's coefficient, its row of the pair's table (mu_s, mu_k, c or b), and the
+  // pair it belongs to; nullptr for a parameter that is no pair's coefficient. A row, not its
+  // name: a slider's value reaches the pair by the row's member, with no name compared.
+  const PairCoefficient* coefficient = nullptr;
   std::string material_a, material_b;
   // Read while the scene was built, so changing it rebuilds the scene from t = 0. The others
   // (coefficients the script only reads later, in its functions) change the running lesson.

@@ -210,18 +210,17 @@ int material(lua_State* state) {
 
 FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, const std::string& b, FrictionPair values,
                                   const std::string& prefix, const std::string& declared_at,
-                                  const std::set<std::string>& only) {
+                                  const std::set<const PairCoefficient*>& only) {
   for (const PairCoefficient& coefficient : pair_coefficients) {
-    const std::string key(coefficient.name);
-    if (!only.empty() && only.count(key) == 0) continue;  // the script keeps this one
+    if (!only.empty() && only.count(&coefficient) == 0) continue;  // the script keeps this one
     Parameter declared;
-    declared.name = prefix + key;
+    declared.name = prefix + coefficient.name;
     declared.unit = coefficient.unit;
     declared.text = std::string(coefficient.meaning) + ", " + a + " on " + b;
     declared.value = declared.default_value = values.*coefficient.value;
     declared.min = 0.0;
     declared.max = coefficient.lesson_largest;
-    declared.coefficient = key;
+    declared.coefficient = &coefficient;
     declared.material_a = a;
     declared.material_b = b;
     declared.declared_at = declared_at;
@@ -234,7 +233,7 @@ FrictionPair declare_coefficients(LessonBuild& build, const std::string& a, cons
 void declare_preset_pairs(LessonBuild& build) {
   PairTable& table = build.scene->pairs();
   bool first_pair = true;
-  for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
+  for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient == nullptr;
   for (int a = 0; a < table.material_count(); ++a) {
     for (int b = a; b < table.material_count(); ++b) {
       const std::string& name_a = table.material(a).name;
@@ -420,7 +419,7 @@ int pair(lua_State* state) {
       values = build.presets.pair(a, b);
     }
     bool first_pair = true;
-    for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient.empty();
+    for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient == nullptr;
     const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
     // The same range as its slider, so the default a script gives can also be set back. A
     // coefficient given as a function of time (a surface oiled now and then) is asked at the
@@ -481,7 +480,7 @@ int pair(lua_State* state) {
     // one slider must drive several pairs), so the pair makes no parameters. A list of
     // coefficients makes sliders for those only (terrain's surfaces offer mu_s and mu_k, not
     // the c and b its theory leaves out); the others keep the script's values.
-    std::set<std::string> only;
+    std::set<const PairCoefficient*> only;
     bool with_sliders = true;
     if (fields.has("sliders")) {
       fields.push("sliders");
@@ -492,17 +491,18 @@ int pair(lua_State* state) {
           const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
           const std::string word = key ? key : describe(state, -1);
           lua_pop(state, 1);
-          if (key == nullptr || pair_coefficient(word) == nullptr) {
+          const PairCoefficient* listed = key == nullptr ? nullptr : pair_coefficient(word);
+          if (listed == nullptr) {
             lua_pop(state, 1);
             throw InvalidInput("pair " + label + ": sliders lists coefficients from " + pair_coefficient_names() +
                                ", as in sliders = { \"mu_s\", \"mu_k\" }; got " + word);
           }
-          only.insert(word);
+          only.insert(listed);
         }
         lua_pop(state, 1);
         if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
         for (const TimedCoefficient& coefficient : timed) {
-          if (only.count(coefficient.which->name) > 0) {
+          if (only.count(coefficient.which) > 0) {
             throw InvalidInput("pair " + label + ": " + coefficient.which->name +
                                " changes with time (a function or a schedule), which no slider can set; leave it out of sliders");
           }
@@ -515,9 +515,9 @@ int pair(lua_State* state) {
     if (with_sliders && !timed.empty()) {
       // Sliders for the coefficients that are numbers only.
       if (only.empty()) {
-        for (const PairCoefficient& coefficient : pair_coefficients) only.insert(coefficient.name);
+        for (const PairCoefficient& coefficient : pair_coefficients) only.insert(&coefficient);
       }
-      for (const TimedCoefficient& coefficient : timed) only.erase(coefficient.which->name);
+      for (const TimedCoefficient& coefficient : timed) only.erase(coefficient.which);
       with_sliders = !only.empty();
       if (!with_sliders) {
         if (fields.has("name")) throw InvalidInput("pair " + label + ": name prefixes its sliders' names; with every coefficient changing with time it has none");

@@ -15,12 +15,26 @@
 namespace frictionlab::lessons {
 namespace {
 
-// mu_s may be left out where only sliding matters (it then equals mu_k). Units as the pair's
-// table gives them (physics/materials.h).
+// A pair's arguments by the names and units of the pair's table (physics/materials.h).
+// μs and μk where a call cannot do without them.
+const TheoryArgument static_mu = needed(static_coefficient.name, static_coefficient.unit);
+const TheoryArgument kinetic_mu = needed(kinetic_coefficient.name, kinetic_coefficient.unit);
+// The drag coefficients, c and b: off unless given.
+const std::vector<TheoryArgument> drag_pair = [] {
+  std::vector<TheoryArgument> arguments;
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    if (coefficient.drag) arguments.push_back(defaulted(coefficient.name, coefficient.unit, 0.0));
+  }
+  return arguments;
+}();
+// mu_s may be left out where only sliding matters (it then equals mu_k).
 // (Listed mu_s first, as the calls' messages list them; reading it reads mu_k first.)
-const char* unit_of(const char* coefficient) { return pair_coefficient(coefficient)->unit; }
-const std::vector<TheoryArgument> sliding_pair = {same_as("mu_s", unit_of("mu_s"), "mu_k"), needed("mu_k", unit_of("mu_k")),
-                                                  defaulted("c", unit_of("c"), 0.0), defaulted("b", unit_of("b"), 0.0)};
+const std::vector<TheoryArgument> sliding_pair = [] {
+  std::vector<TheoryArgument> arguments = {
+      same_as(static_coefficient.name, static_coefficient.unit, kinetic_coefficient.name), kinetic_mu};
+  arguments.insert(arguments.end(), drag_pair.begin(), drag_pair.end());
+  return arguments;
+}();
 
 // A disk's or wheel's moment of inertia, unless given: a uniform disk's, ½ m r².
 double uniform_disk(TheoryValues& values) { return 0.5 * values["mass"] * values["radius"] * values["radius"]; }
@@ -43,15 +57,15 @@ FrictionPair pair_of(TheoryValues& values) {
 std::vector<TheoryFunction> make_table() {
   using Entries = std::vector<TheoryEntry>;
   return {
-      described("sticking_angle", {needed("mu_s", "")},
+      described("sticking_angle", {static_mu},
                 [](TheoryValues& v) -> TheoryAnswer { return theory::sticking_angle(v["mu_s"]) / degrees; }),
-      described("incline_acceleration", {slope_angle(), needed("mu_k", ""), gravity()},
+      described("incline_acceleration", {slope_angle(), kinetic_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   return theory::incline_sliding_acceleration(v["angle"], v["mu_k"], v["g"]);
                 }),
       described("incline_motion",
-                {slope_angle(), needed("mu_k", ""), defaulted("c", "N·s/m", 0.0), defaulted("b", "N·s²/m²", 0.0),
-                 needed("mass", "kg"), needed("t", "s"), gravity(), defaulted_in("step", "s", 0.0, 0.0, 1.0)},
+                joined({slope_angle(), kinetic_mu}, drag_pair,
+                       {needed("mass", "kg"), needed("t", "s"), gravity(), defaulted_in("step", "s", 0.0, 0.0, 1.0)}),
                 [](TheoryValues& v) -> TheoryAnswer {
                   const double angle = v["angle"], mu_k = v["mu_k"], c = v["c"], b = v["b"], mass = v["mass"];
                   const double g = v["g"], t = v["t"], step = v["step"];
@@ -62,10 +76,10 @@ std::vector<TheoryFunction> make_table() {
                   return Entries{{"speed", theory::incline_speed(angle, mu_k, c, b, mass, g, t)},
                                  {"distance", theory::incline_distance(angle, mu_k, c, b, mass, g, t)}};
                 }),
-      described("tip_height", {needed("width", "m"), needed("mu_s", "")},
+      described("tip_height", {needed("width", "m"), static_mu},
                 [](TheoryValues& v) -> TheoryAnswer { return theory::tip_height(v["width"], v["mu_s"]); }),
       described("push_outcome",
-                {needed("mass", "kg"), needed("width", "m"), needed("push_height", "m"), needed("mu_s", ""), gravity()},
+                {needed("mass", "kg"), needed("width", "m"), needed("push_height", "m"), static_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::PushOutcome outcome =
                       theory::push_outcome(v["mass"] * v["g"], v["width"], v["push_height"], v["mu_s"]);
@@ -79,7 +93,7 @@ std::vector<TheoryFunction> make_table() {
                 }),
       described("disk_on_incline",
                 {slope_angle(), needed("mass", "kg"), needed("radius", "m"), computed("inertia", "kg·m²", uniform_disk),
-                 needed("mu_s", ""), needed("mu_k", ""), gravity()},
+                 static_mu, kinetic_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::DiskOnIncline disk = theory::disk_on_incline(
                       v["angle"], v["mass"], v["radius"], v["inertia"], v["mu_s"], v["mu_k"], v["g"]);
@@ -90,7 +104,7 @@ std::vector<TheoryFunction> make_table() {
                 }),
       described("disk_starts_rolling",
                 {needed("v0", "m/s"), needed("mass", "kg"), needed("radius", "m"),
-                 computed("inertia", "kg·m²", uniform_disk), needed("mu_k", ""), gravity()},
+                 computed("inertia", "kg·m²", uniform_disk), kinetic_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::RollStart start =
                       theory::disk_starts_rolling(v["v0"], v["mass"], v["radius"], v["inertia"], v["mu_k"], v["g"]);
@@ -98,7 +112,7 @@ std::vector<TheoryFunction> make_table() {
                 }),
       written_out("stacked_blocks", theory_written::stacked_blocks),
       described("connected_masses",
-                {needed("block_mass", "kg"), needed("hanging_mass", "kg"), needed("mu_s", ""), needed("mu_k", ""),
+                {needed("block_mass", "kg"), needed("hanging_mass", "kg"), static_mu, kinetic_mu,
                  gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::ConnectedMasses pulled =
@@ -111,7 +125,7 @@ std::vector<TheoryFunction> make_table() {
                 }),
       described("driven_wheel",
                 {needed("mass", "kg"), needed("radius", "m"), computed("inertia", "kg·m²", uniform_disk),
-                 needed("torque", "N·m"), needed("mu_s", ""), needed("mu_k", ""), gravity()},
+                 needed("torque", "N·m"), static_mu, kinetic_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::DrivenWheel wheel = theory::driven_wheel(v["mass"], v["radius"], v["inertia"], v["torque"],
                                                                          v["mu_s"], v["mu_k"], v["g"]);
@@ -137,7 +151,7 @@ std::vector<TheoryFunction> make_table() {
                 }),
       written_out("thrown_box", theory_written::thrown_box),
       described("slope_launch",
-                {needed("v0", "m/s"), slope_angle(), needed("mu_s", ""), needed("mu_k", ""), gravity()},
+                {needed("v0", "m/s"), slope_angle(), static_mu, kinetic_mu, gravity()},
                 [](TheoryValues& v) -> TheoryAnswer {
                   const theory::SlopeLaunch launch = theory::slope_launch(v["v0"], v["angle"], v["mu_s"], v["mu_k"], v["g"]);
                   return Entries{{"distance", launch.distance},

@@ -5,9 +5,11 @@
 // these too.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <string>
 
 #include "lessons/runtime/theory_binding.h"
@@ -20,15 +22,34 @@
 namespace frictionlab::lessons {
 namespace {
 
+// A pair's fields are read by the names and in the units of the pair's table
+// (physics/materials.h), which scripts, sliders and the physics share.
+
+// The dry pair as given, with the table's drag coefficients (c, b), each off when left out.
+FrictionPair with_drag(Fields& fields, double mu_s, double mu_k) {
+  FrictionPair pair{mu_s, mu_k, 0.0, 0.0};
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    if (coefficient.drag) pair.*coefficient.value = fields.number(coefficient.name, coefficient.unit, 0.0);
+  }
+  return pair;
+}
+
 // mu_s may be left out where only sliding matters (it then equals mu_k).
 FrictionPair pair_from(Fields& fields) {
-  const double mu_k = fields.number("mu_k", "");
-  return {fields.number("mu_s", "", mu_k), mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+  const double mu_k = fields.number(kinetic_coefficient.name, kinetic_coefficient.unit);
+  return with_drag(fields, fields.number(static_coefficient.name, static_coefficient.unit, mu_k), mu_k);
 }
+
+// The table's names, the only fields a nested pair has.
+constexpr auto coefficient_names = [] {
+  std::array<const char*, std::size(pair_coefficients)> names{};
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = pair_coefficients[i].name;
+  return names;
+}();
 
 FrictionPair nested_pair(lua_State* state, Fields& outer, const char* key) {
   outer.push(key);
-  Fields fields(state, -1, outer.what() + ": " + key, {"mu_s", "mu_k", "c", "b"});
+  Fields fields(state, -1, outer.what() + ": " + key, std::span<const char* const>(coefficient_names));
   const FrictionPair pair = pair_from(fields);
   lua_pop(state, 1);
   return pair;
@@ -45,7 +66,8 @@ int spring_stick_slip(lua_State* state) {
     const double mass = fields.number("mass", "kg"), k = fields.number("k", "N/m");
     const double pull_speed = fields.number("pull_speed", "m/s"), mu_s = fields.number("mu_s", "");
     const double mu_k = fields.number("mu_k", ""), g = fields.number("g", "m/s²", standard_gravity);
-    const double c = fields.number("c", "N·s/m", 0.0), b = fields.number("b", "N·s²/m²", 0.0);
+    const FrictionPair read = with_drag(fields, mu_s, mu_k);
+    const double c = read.c, b = read.b;
     const double duration = fields.number_in("duration", "s", 0.0, 0.0, 86400.0);
     lua_createtable(state, 0, 8);
     // The closed form's cycle, where it has one (no drag, mu_k <= mu_s).
@@ -235,7 +257,7 @@ int regularized_creep(lua_State* state) {
     const double mu_s = fields.number("mu_s", ""), epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
     const double h = fields.number_in("step", "s", 0.0, 0.0, 1.0), mass = fields.number("mass", "kg", 1.0);
     const double g = fields.number_in("g", "m/s²", standard_gravity, 0.0, 1000.0, true);
-    const FrictionPair drag{0.0, 0.0, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    const FrictionPair drag = with_drag(fields, 0.0, 0.0);
     if (mu_s <= std::tan(angle)) {  // an answer in words, not a refusal
       lua_createtable(state, 0, 1);
       lua_pushstring(state, "no creep: μs ≤ tan θ, the law's linear branch cannot hold the slope");
@@ -314,7 +336,7 @@ int thrown_box(lua_State* state) {
     // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
     // speed the box brings into the step it lands in, before that step's impact is solved
     // (a contact born in a step has its drag at once). The same once here.
-    const FrictionPair drag{mu_k, mu_k, fields.number("c", "N·s/m", 0.0), fields.number("b", "N·s²/m²", 0.0)};
+    const FrictionPair drag = with_drag(fields, mu_k, mu_k);
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
     const double inertia = mass * (width * width + height * height) / 12.0;

@@ -318,7 +318,7 @@ box { "block", material = "wood", width = 0.2, height = 0.1, on = floor, at = 0 
   Lesson lesson(script.path());
   for (const PairCoefficient& coefficient : pair_coefficients) {
     const Parameter& slider = lesson.parameter(std::string("ice.") + coefficient.name);
-    EXPECT_EQ(slider.coefficient, coefficient.name);
+    EXPECT_EQ(slider.coefficient, &coefficient);
     EXPECT_EQ(slider.unit, coefficient.unit);
     EXPECT_EQ(slider.min, 0.0);
     EXPECT_EQ(slider.max, coefficient.lesson_largest);

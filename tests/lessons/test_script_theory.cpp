@@ -200,6 +200,32 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   EXPECT_NEAR(r(12), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).slip_duration, 1e-9);
 }
 
+// A theory call reads a pair's fields as the pair's table has them (physics/materials.h): a
+// pair given inside the call (stacked_blocks' between) without mu_s slides and holds at mu_k,
+// and the drag coefficients reach the functions that run a model (regularized_creep's creep
+// against its closed form, spring_stick_slip's cycle, which drag takes away).
+TEST(TheoryFunctions, APairsFieldsAreReadAsThePairsTableHasThem) {
+  ScriptFile script(with_heading(R"(
+local r = {}
+r[1] = theory.stacked_blocks { top_mass = 1, bottom_mass = 2, push = 30,
+         between = { mu_k = 0.2 }, ground = { mu_s = 0.4, mu_k = 0.3 } }.max_push_together
+r[2] = theory.regularized_creep { angle = 20, mu_s = 0.5, epsilon = 0.05, c = 3, mass = 2 }.speed
+r[3] = theory.spring_stick_slip { mass = 1, k = 50, pull_speed = 0.1, mu_s = 0.6, mu_k = 0.4,
+         b = 0.5 }.no_closed_form and 1 or 0
+for i = 1, 3 do probe { "r" .. i, function() return r[i] end } end
+)"));
+  Lesson lesson(script.path());
+  lesson.step();
+  auto r = [&](int i) { return numbered_probe_now(lesson, i); };
+  // Together up to (μs between + μk ground)·(m1 + m2)·g, with μs between = μk between = 0.2.
+  EXPECT_NEAR(r(1), (0.2 + 0.3) * 3.0 * g, 1e-12);
+  // The creep without a step: c·v/m = g·sin θ − (μs·g·cos θ/ε)·v, so
+  // v = g·sin θ/(μs·g·cos θ/ε + c/m); the runtime bisects it to 1e-15·ε.
+  const double angle = 20 * degrees;
+  EXPECT_NEAR(r(2), g * std::sin(angle) / (0.5 * g * std::cos(angle) / 0.05 + 3.0 / 2.0), 1e-12);
+  EXPECT_EQ(r(3), 1.0);
+}
+
 // A slider may reach values a closed form has no answer for: theory.* then answers in words
 // (or by the contacts' own rule) instead of raising an error that stops the lesson.
 TEST(TheoryFunctions, TheoryAnswersEveryValueASliderAllows) {

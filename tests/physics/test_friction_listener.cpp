@@ -452,30 +452,3 @@ TEST(PairTreatment, ARegularizedPairWithoutEpsilonUsesTheRunsThresholdSpeed) {
   Scene scene(std::move(table), settings);
   EXPECT_EQ(scene.friction().epsilon_of(0, 1), 0.03);
 }
-
-TEST(PairTreatment, BadTreatmentsAndEpsilonsAreRefusedAndLeaveThePairAsItWas) {
-  PairTable table;
-  table.add_material({"a", 1.0, ""});
-  table.add_material({"b", 1.0, ""});
-  auto message = [&](auto&& call) {
-    try {
-      call();
-    } catch (const InvalidInput& error) {
-      return std::string(error.what());
-    }
-    return std::string("(accepted)");
-  };
-  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::regularized, 0.05); }),
-            "pair a–b: set its friction values before its treatment");
-  table.set_pair("a", "b", {mu_s, mu_k, 0.0, 0.0});
-  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::box2d, 0.05); }),
-            "pair a–b: epsilon is for the threshold and regularized treatments, not box2d");
-  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::threshold, -1.0); }),
-            "pair a–b: epsilon = -1 m/s is outside the allowed range (0, 100]");
-  EXPECT_EQ(message([&] { parse_treatment("coulomb"); }),
-            "unknown friction treatment 'coulomb'; allowed: stick-slip, threshold, regularized, box2d");
-  EXPECT_FALSE(table.treatment(0, 1).own);
-  table.set_treatment("b", "a", FrictionTreatment::threshold, 0.2);
-  EXPECT_TRUE(table.treatment(0, 1).own);
-  EXPECT_EQ(table.treatment(0, 1).epsilon, 0.2);
-}

@@ -115,3 +115,40 @@ TEST(Presets, AluminiumNeedsMoreForceThanPlasticBothWays) {
   EXPECT_LT(table.pair("rubber", "ice").mu_s, table.pair("rubber", "grass").mu_s);
   EXPECT_LT(table.pair("rubber", "grass").mu_s, table.pair("rubber", "asphalt").mu_s);
 }
+
+// The friction treatments by name, and a pair's own treatment refused (and the pair left as it
+// was) until its values are set, with an epsilon for a treatment that has none, or out of range.
+TEST(Treatments, NamesRoundTripAndUnknownNamesListTheAllowed) {
+  for (FrictionTreatment t : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
+                              FrictionTreatment::regularized, FrictionTreatment::box2d}) {
+    EXPECT_EQ(parse_treatment(treatment_name(t)), t);
+  }
+  expect_invalid([] { parse_treatment("sticky"); }, "sticky", "stick-slip, threshold, regularized, box2d");
+}
+
+TEST(PairTreatment, BadTreatmentsAndEpsilonsAreRefusedAndLeaveThePairAsItWas) {
+  PairTable table;
+  table.add_material({"a", 1.0, ""});
+  table.add_material({"b", 1.0, ""});
+  auto message = [&](auto&& call) {
+    try {
+      call();
+    } catch (const InvalidInput& error) {
+      return std::string(error.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::regularized, 0.05); }),
+            "pair a–b: set its friction values before its treatment");
+  table.set_pair("a", "b", {0.6, 0.3, 0.0, 0.0});
+  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::box2d, 0.05); }),
+            "pair a–b: epsilon is for the threshold and regularized treatments, not box2d");
+  EXPECT_EQ(message([&] { table.set_treatment("a", "b", FrictionTreatment::threshold, -1.0); }),
+            "pair a–b: epsilon = -1 m/s is outside the allowed range (0, 100]");
+  EXPECT_EQ(message([&] { parse_treatment("coulomb"); }),
+            "unknown friction treatment 'coulomb'; allowed: stick-slip, threshold, regularized, box2d");
+  EXPECT_FALSE(table.treatment(0, 1).own);
+  table.set_treatment("b", "a", FrictionTreatment::threshold, 0.2);
+  EXPECT_TRUE(table.treatment(0, 1).own);
+  EXPECT_EQ(table.treatment(0, 1).epsilon, 0.2);
+}

@@ -1,5 +1,5 @@
 // The scene: the step settings and the bodies, springs, forces and drivers it refuses, runs that
-// repeat bit for bit, the friction treatments by name, and the energy ledger it keeps.
+// repeat bit for bit, and the energy ledger it keeps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -195,14 +195,6 @@ TEST(Scene, APileIsRepeatableWhereverTheHeapPutsItsContacts) {
   const std::vector<float> second = run();
   ASSERT_EQ(first.size(), second.size());
   for (size_t i = 0; i < first.size(); ++i) ASSERT_EQ(first[i], second[i]) << "value " << i;
-}
-
-TEST(Treatments, NamesRoundTripAndUnknownNamesListTheAllowed) {
-  for (FrictionTreatment t : {FrictionTreatment::stick_slip, FrictionTreatment::threshold,
-                              FrictionTreatment::regularized, FrictionTreatment::box2d}) {
-    EXPECT_EQ(parse_treatment(treatment_name(t)), t);
-  }
-  expect_invalid([] { parse_treatment("sticky"); }, "sticky", "stick-slip, threshold, regularized, box2d");
 }
 
 // The energy ledger: what went in (applied work), where it went (kinetic, potential,

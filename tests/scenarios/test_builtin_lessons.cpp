@@ -160,9 +160,9 @@ TEST_P(ListedLesson, RunsAtBothEndsOfEveryControl) {
       settings.push_back({{parameter.name, text(parameter.min)}});
       settings.push_back({{parameter.name, text(parameter.max)}});
     }
-    if (parameter.coefficient != "mu_s") continue;
+    if (parameter.coefficient != &static_coefficient) continue;
     for (const Parameter& kinetic : defaults.parameters()) {
-      if (kinetic.coefficient != "mu_k" || kinetic.material_a != parameter.material_a ||
+      if (kinetic.coefficient != &kinetic_coefficient || kinetic.material_a != parameter.material_a ||
           kinetic.material_b != parameter.material_b) {
         continue;
       }
