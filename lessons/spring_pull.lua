@@ -171,8 +171,22 @@ local function stops_at_the_edge()
 end
 -- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, or too brief to see) so are
 -- the breakaways after them: that row then reads the first breakaway alone, from both sides.
+-- A slide that dips close to a stop without stopping (a strong drag damping the swing while
+-- the hand walks on): the world's speed may be off the model's by ωh/2 of the slide's speed
+-- (the term h·ω²·x·v by which Box2D's steps keep a swing's energy), and where the dip comes
+-- nearer a stop than that, the world's block may stop there and stick, or not. At 375 N/m,
+-- 4.23 kg, μs 2, μk 1.88, b 420: the model's block dips to 1.2 mm/s, within 1.3; the world's
+-- stuck at 77.8 N.
+local function grazes_a_stop()
+  local nearest = run().nearest_stop
+  local off = math.sqrt(k / mass) * step_length() / 2 * run().fastest_slide
+  if nearest and nearest < off then
+    return string.format("slows to %.2g m/s: within a step's error of stopping", nearest)
+  end
+end
 local function at_the_limit()
-  return no_cycle() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief() or stops_at_the_edge() or nil
+  return no_cycle() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief() or stops_at_the_edge()
+    or grazes_a_stop() or nil
 end
 local function run_over() return reached(run_length()) end
 
@@ -198,10 +212,17 @@ local function rounding()
   local farthest = rest_length + pull_speed * run_length()
   return k * 2 ^ -24 * farthest * ((run().longest_slip or 0) / step_length() + 3)
 end
+-- * Drag (c, b): Box2D takes each step's drag off the speed before the spring's impulse is added,
+--   an O(h) error in the slide that is not bounded here: with drag the rows keep the 2 % of
+--   μs·m·g they allowed before, not derived (293 N·s²/m², 430 N/m, 2.28 kg, μs 2: the re-stick
+--   came 0.24 N off, against 0.18 N from the terms above).
+local function drag_allowance()
+  return (param.c > 0 or param.b > 0) and 0.02 * param.mu_s * weight or 0
+end
 -- The re-stick: the slip starts up to a step's pull late, and the block stops somewhere inside
 -- a step and is held from its end while the hand pulls on (two steps' pull); the swing's turn,
--- met at a step; rounding.
-local function restick_allowance() return 2 * pull_in_a_step() + swing_in_a_step() + rounding() end
+-- met at a step; rounding; and drag's share.
+local function restick_allowance() return 2 * pull_in_a_step() + swing_in_a_step() + rounding() + drag_allowance() end
 local never_sticks = "never sticks again in the run"
 local no_second = "no second breakaway in the run"
 

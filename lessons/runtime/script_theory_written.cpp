@@ -136,7 +136,22 @@ int spring_stick_slip(lua_State* state) {
         }
       }
       if (!std::isnan(moving_since)) longest_slip = std::max(longest_slip, duration - moving_since);
-      lua_createtable(state, 0, 8);
+      // The fastest the block slides, and how near a slide comes to a stop without stopping: the
+      // slowest it goes at a dip inside a slide (not at its ends, where it starts from or comes
+      // to rest). A world whose speed is off by more than that may stop there and stick.
+      double fastest_slide = 0.0, nearest_stop = std::numeric_limits<double>::infinity();
+      for (const Phase& phase : run.phases()) {
+        if (phase.kind == PhaseKind::stick) continue;
+        constexpr int samples = 400;
+        double before = 0.0, now = std::abs(phase.state(phase.t_start).v);
+        for (int i = 1; i <= samples; ++i) {
+          const double next = std::abs(phase.state(phase.t_start + (phase.t_end - phase.t_start) * i / samples).v);
+          fastest_slide = std::max(fastest_slide, next);
+          if (i >= 2 && now <= before && now < next) nearest_stop = std::min(nearest_stop, now);
+          before = now, now = next;
+        }
+      }
+      lua_createtable(state, 0, 10);
       set_number(state, "breakaways", breakaways);
       set_number(state, "resticks", resticks);
       if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
@@ -145,6 +160,8 @@ int spring_stick_slip(lua_State* state) {
       if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
       if (std::isfinite(shortest_stick)) set_number(state, "shortest_stick", shortest_stick);
       set_number(state, "longest_slip", longest_slip);
+      set_number(state, "fastest_slide", fastest_slide);
+      if (std::isfinite(nearest_stop)) set_number(state, "nearest_stop", nearest_stop);
       lua_setfield(state, -2, "run");
     }
     return 1;

@@ -196,7 +196,7 @@ for i = 1, #r do probe { "r" .. i, function() return r[i] end } end
   // The run's events are the closed form's phases joined where each ends, found to 1e-13 s: every
   // stick lasts the cycle's 2(μs − μk)·m·g/(k·v), 0.785 s (5 s hold three of them).
   EXPECT_NEAR(r(11), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).stick_duration, 1e-9);
-  // And every slip lasts the cycle's slip_duration, 0.228 s (5 s hold four, the last ending at 4.45 s).
+  // And every slip lasts the cycle's slip_duration, 0.542 s (5 s hold three, the last ending at 4.37 s).
   EXPECT_NEAR(r(12), spring_stick_slip(1, 50, 0.1, 0.6, 0.4, g).slip_duration, 1e-9);
 }
 
