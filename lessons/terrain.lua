@@ -197,10 +197,33 @@ expect { "hack box: distance", unit = "m",
   -- The closed form is exact for the frames the scene runs (leapfrog start and sub-steps too):
   -- only single-precision positions are left, 1e-6 m here.
   tolerance = function() return 1e-4 * hack_distance() + 1e-5 end }
+-- The speed the record ends with. Each frame maps the speed to keep·(v − g·sin θ·h), whose
+-- fixed point is the drift speed; what is left of the launch shrinks by keep a frame, from the
+-- velocity the scene starts the leapfrog with, half a sub-step before t = 0. The row predicts
+-- the drift, which the class is asked for, and allows what is left (a run 3 s long at 15°:
+-- 5.4e-4 m/s, keep^720 of the launch).
+local function hack_frames() return math.floor(run_length() / step_length() + 0.5) end
+local function hack_start() return launch_speed + g * math.sin(math.rad(slope)) * substep_length() / 2 end
+local function hack_end_speed()
+  local drift = hack().drift_speed
+  return drift + (hack_start() - drift) * keep ^ hack_frames()
+end
 expect { "hack box: speed at the end (drifts down a slope)", unit = "m/s",
   predicted = function() return hack().drift_speed end,
   measured = function() return over() and value_at("hack_box_speed", time()) or nil end,
-  tolerance = function() return 0.01 * math.abs(hack().drift_speed) + 1e-3 end }
+  -- What is left of the launch at the run's end, and then (issue 29: derived, not 1 % + 1
+  -- mm/s) single precision: the frames are the discrete process itself. Each sub-step rounds the velocity by 2^-24 of it in gravity's
+  -- integration and in the smooth lane's normal (warm start and 8 iterations), 10 operations,
+  -- and each frame's cut once more; each frame's cut shrinks what earlier ones left by keep,
+  -- so all of it adds to at most 1/(1 − keep) frames' worth. And keep itself is a float: the
+  -- drift moves by 2^-24 of it over 1 − keep, the launch's remainder by frames·2^-24 of it.
+  tolerance = function()
+    local substeps = math.floor(step_length() / substep_length() + 0.5)
+    local drift, left = math.abs(hack().drift_speed), math.abs(hack_end_speed() - hack().drift_speed)
+    local fastest = math.max(math.abs(hack_start()), drift) + g * step_length()
+    return left + (10 * substeps + 1) * 2 ^ -24 * fastest / (1 - keep)
+           + 2 ^ -24 * drift / (1 - keep) + hack_frames() * 2 ^ -24 * left
+  end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "ice box: then", choices = { "stays", "slides back" },
