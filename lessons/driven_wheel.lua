@@ -128,11 +128,10 @@ end
 --   velocity over the last step, over h) are exact, the torque full and constant by then. The
 --   slip shows at the end of the step it began in, and the row reads the torque that step
 --   applied: the first past the limit, so up to one step's growth of the torque, torque·h,
---   above it (with --substeps the frame's torque is its first sub-step's, up to a frame's
---   growth below the sub-step that slipped). With --substeps the torque is asked every
---   sub-step, and the frame's friction is their mean: up to a frame's growth of the torque,
---   torque·h, later than theory's instant, and that growth's share of the friction (0.5 kg,
---   r 0.32 m, 9.86 N·m, mu_s 1.3, 2 sub-steps: 3.164 N read, 3.122 N at the frame's torque).
+--   above it. With --substeps the torque is asked every sub-step: the frame's recorded torque
+--   is its first sub-step's, up to a frame's growth below the one that slipped, and the
+--   frame's friction is the sub-steps' mean, up to that growth's share of the friction past
+--   theory's (0.5 kg, r 0.32 m, 9.86 N·m, mu_s 1.3, 2 sub-steps: 3.164 N read, 3.122 N theory).
 -- * The solver: none. A disc's contact normal runs through its centre, so the friction and the
 --   normal constraints do not couple: gripping, the one friction constraint stops the contact
 --   point in one turn; spinning, it is clamped at mu_k times the normal impulse, the weight.

@@ -119,10 +119,10 @@ local function out_of_reach(t)
 end
 local function word(t) return on_threshold() or out_of_reach(t) end
 
--- The instant the rows read at the end belong to: value_at's sample, the step nearest the run's length
--- (the later of two as near), up to half a step from it. Theory is read there too: at 38.81 N
--- on the dry table with mu_k 0 and the oil gone at 0.3067 s, theory at 2.3067 s was 0.065 m/s
--- short of the world read at 2.3083 s.
+-- The instant the rows read at the end belong to: value_at's sample, the step nearest the
+-- run's length (the later of two as near), up to half a step from it. Theory is read there
+-- too: at 38.81 N on the dry table with mu_k 0 and the oil gone at 0.3067 s, theory at
+-- 2.3067 s was 0.065 m/s short of the world read at 2.3083 s.
 local function end_sample()
   local h = step_length()
   return math.floor(run_length() / h + 0.5) * h
@@ -152,9 +152,10 @@ end
 --   the two contact points' friction in the warm start and in each of 8 iterations (19), with
 --   the mass and pull rounded once, of the speed and of the step's change, over h. Speed and
 --   distance keep every step's rounding: sliding at the clamp, the velocity is rounded by the
---   integration and the warm start (3 a step; the iterations leave a friction at its clamp as it
---   is), each step's position by 2^-24 of the block's distance from where it started (the world's
---   origin), and the speed's rounding carried on moves the distance by up to its sum over the run.
+--   integration and the warm start (3 a step, of the speed; the iterations leave a friction at
+--   its clamp as it is, and all 19 round no more than the step's change), each step's position
+--   by 2^-24 of the block's distance from where it started (the world's origin), and the
+--   speed's rounding carried on moves the distance by up to its sum over the run.
 -- With --substeps all of this is per sub-step, h = substep_length(), and theory's instants are
 -- on sub-steps too.
 local function allowed()
