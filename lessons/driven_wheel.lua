@@ -106,10 +106,66 @@ local function too_fast()
   if spin_at_end() > 0.8 * (math.pi / 2) / step_length() then return "too fast for Box2D" end
 end
 
+-- Half way to the limit (or at 0.5 s), the wheel grips: the road pushes it forward with m·a.
+-- On a step, so that the sample read there is the one meant.
+local function gripping_time()
+  local h = step_length()
+  return math.max(1, math.floor(math.min(0.5, (spin_start() or 2) / 2) / h + 0.5)) * h
+end
+-- The axle's speed at the end of the run, from theory: rolling, ω·r; spinning from t_s, its
+-- speed then plus mu_k·g over the rest of the run.
+local function speed_at_end()
+  local per_torque = 1 / (1.5 * param.mass * param.radius ^ 2)
+  local start = spin_start()
+  if not start then return per_torque * param.torque * ramp_integral(0, 2) * param.radius end
+  return per_torque * param.torque * ramp_integral(0, start) * param.radius + param.mu_k * g * (2 - start)
+end
+
+-- What the rows allow (issue 29: derived, not a flat share).
+-- * The step. The motor's torque is asked at the start of each step and held through it, and
+--   the contact reads the step's mean: the gripping friction is m·a of the torque asked a step
+--   before its reading, as theory is asked, and the accelerations at the end (the change of the
+--   velocity over the last step, over h) are exact, the torque full and constant by then. The
+--   slip shows at the end of the step it began in, and the row reads the torque that step
+--   applied: the first past the limit, so up to one step's growth of the torque, torque·h,
+--   above it. With --substeps the torque is asked every sub-step: the frame's recorded torque
+--   is its first sub-step's, up to a frame's growth below the one that slipped, and the
+--   frame's friction is the sub-steps' mean, up to that growth's share of the friction past
+--   theory's (0.5 kg, r 0.32 m, 9.86 N·m, mu_s 1.3, 2 sub-steps: 3.164 N read, 3.122 N theory).
+-- * The solver: none. A disc's contact normal runs through its centre, so the friction and the
+--   normal constraints do not couple: gripping, the one friction constraint stops the contact
+--   point in one turn; spinning, it is clamped at mu_k times the normal impulse, the weight.
+-- * Single precision (floats, 2^-24 of the magnitudes involved per operation; theory is
+--   double). In a step the wheel's velocity and spin are changed by the integration, the
+--   contact point's warm start and 8 iterations of friction and normal, 18 operations, with the
+--   mass, radius and torque rounded once each: 21. A rate read as the change over the last
+--   step keeps only that step's: 21·2^-24 of the speed (or spin) and of its change, over h. The
+--   gripping friction is an impulse over h that stops the contact point, whose speed is the
+--   difference of the axle's and the rim's: the mass times that for each, and 21·2^-24 of the
+--   forces of the step (the friction and the weight). The slip's decision compares the friction
+--   with mu_s·N to as many operations: that share of the limit.
+local operations = 21
+local function allowed()
+  local h = step_length()
+  local function rate_rounding(value, rate) return operations * 2 ^ -24 * (math.abs(value) / h + math.abs(rate)) end
+  local grip_speed = wheel_theory(param.torque * ramp(gripping_time() - h)).acceleration * gripping_time()
+  return {
+    limit = param.torque * h + operations * 2 ^ -24 * limit(),
+    friction = param.mass * 2 * rate_rounding(grip_speed, wheel_theory(param.torque).acceleration)
+               + operations * 2 ^ -24 * (param.mass * g + wheel_theory(param.torque).friction)
+               + (substep_length() < h and wheel_theory(param.torque * h).friction or 0),
+    acceleration = rate_rounding(speed_at_end(), wheel_theory(param.torque).acceleration),
+    spin_up = rate_rounding(spin_at_end(), wheel_theory(param.torque).angular_acceleration),
+  }
+end
+
 -- Expectations ----------------------------------------------------------------------------
 expect { "traction limit", unit = "N·m",
-  predicted = function() return spin_start() and limit() or "not reached" end,
+  predicted = function() return too_fast() or spin_start() and limit() or "not reached" end,
   measured = function()
+    -- A spin Box2D cannot reach ends rolling too: the rim slips where the cap holds it back
+    -- (8.6 kg, r 0.1 m, 20 N·m, mu_s 2 at 60 Hz: "passed" where theory's wheel never slips).
+    if too_fast() then return too_fast() end
     if not spin_start() then
       if first_slip_torque() then return "passed" end
       -- Not reached only once the run is over (before Play: not yet).
@@ -117,14 +173,7 @@ expect { "traction limit", unit = "N·m",
     end
     return first_slip_torque()
   end,
-  -- The torque grows by full·h a step, and the slip shows at the end of the step it began in.
-  tolerance = function() return 0.01 * limit() + param.torque * step_length() end }
--- Half way to the limit (or at 0.5 s), the wheel grips: the road pushes it forward with m·a.
--- On a step, so that the sample read there is the one meant.
-local function gripping_time()
-  local h = step_length()
-  return math.max(1, math.floor(math.min(0.5, (spin_start() or 2) / 2) / h + 0.5)) * h
-end
+  tolerance = function() return allowed().limit end }
 -- The contact reads the step just taken, which the torque asked at its start drove.
 local function short_grip()
   if gripping_time() < 4 * step_length() then return "grips too briefly" end
@@ -137,7 +186,7 @@ expect { "friction while gripping, forward", unit = "N",
     if short_grip() then return short_grip() end
     return time() >= gripping_time() and value_at("friction_force", gripping_time()) or nil
   end,
-  tolerance = function() return 0.01 * wheel_theory(param.torque).friction + 1e-3 end }
+  tolerance = function() return allowed().friction end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "friction while gripping, forward", unit = "N",
@@ -145,7 +194,7 @@ predict { "friction while gripping, forward", unit = "N",
 expect { "acceleration at the end", unit = "m/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).acceleration end,
   measured = function() return too_fast() or at_the_end("acceleration") end,
-  tolerance = function() return 0.01 * wheel_theory(param.torque).acceleration + 1e-3 end }
+  tolerance = function() return allowed().acceleration end }
 expect { "spin-up at the end", unit = "rad/s²",
   predicted = function() return too_fast() or wheel_theory(param.torque).angular_acceleration end,
   measured = function()
@@ -155,4 +204,4 @@ expect { "spin-up at the end", unit = "rad/s²",
     if #spins < 2 then return nil end
     return (spins[#spins] - spins[#spins - 1]) / step_length()
   end,
-  tolerance = function() return 0.01 * wheel_theory(param.torque).angular_acceleration + 1e-2 end }
+  tolerance = function() return allowed().spin_up end }

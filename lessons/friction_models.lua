@@ -113,7 +113,7 @@ for _, lane in ipairs { { "coulomb", 0, 0 }, { "engineering", c, 0 }, { "quadrat
   expect { model .. ": stopping distance", unit = "m",
     predicted = function() return too_coarse(drag_c, drag_b) or rest(drag_c, drag_b).distance end,
     measured = function() return too_coarse(drag_c, drag_b) or stop(model).distance end,
-    -- 1 %, and on a drag lane the step's term. The drag is taken off before each step and dry
+    -- On a drag lane the step's term: the drag is taken off before each step and dry
     -- friction after it, so the speed that dry friction's impulse removes escapes that step's
     -- drag: over a step it takes off mu_k·g·h where the exact motion takes mu_k·g·(1 − e^(−Γh))/Γ,
     -- as if mu_k were q = Γh/(1 − e^(−Γh)) ≈ 1 + Γh/2 times larger. Γ = (c + 2b·v)/m is the
@@ -126,11 +126,23 @@ for _, lane in ipairs { { "coulomb", 0, 0 }, { "engineering", c, 0 }, { "quadrat
     -- in its last step (1.7e-4 m at mu_k = 2, 240 Hz), which only a slide of a few steps shows.
     -- Past Γh = 1 the slide is over in a few steps and the term outgrows the distance: the row
     -- then says so instead of comparing.
+    -- No solver term: friction is clamped at mu_k times the normal impulse, the block's weight
+    -- on a level floor. And single precision (floats, 2^-24 of the magnitudes per operation;
+    -- theory is double), in place of the 1 % this row had (issue 29): each step rounds the
+    -- block's position by 2^-24 of its distance from where it started (the world's x = 0), and
+    -- its speed in the drag's exact step and the two contact points' warm start (the iterations
+    -- leave a friction at its clamp as it is), 3 operations of 2^-24 of the speed, carried on:
+    -- the distance by up to their sum over the slide, n·t/2 times a step's. The step's terms
+    -- above are first order in Γh; what they leave is of the next, (Γh)² of the slide (at c =
+    -- 12.4 N·s/m, 0.95 kg: 0.0011 m short, where the first-order terms allowed 0.0011 m).
     tolerance = function()
       local distance = rest(drag_c, drag_b).distance
       local start = launch_rate(drag_c, drag_b) * step_length() ^ 2 * launch_speed / 4
       local last = mu_k * g * step_length() ^ 2 / 2
-      return 0.01 * distance + (distance - harder(drag_c, drag_b).distance) + start + last
+      local steps = math.ceil(rest(drag_c, drag_b).time / substep_length())
+      local rounding = steps * 2 ^ -24 * distance + 3 * 2 ^ -24 * launch_speed * steps * rest(drag_c, drag_b).time / 2
+      local second_order = (launch_rate(drag_c, drag_b) * step_length()) ^ 2 * distance
+      return (distance - harder(drag_c, drag_b).distance) + start + last + second_order + rounding
     end }
   expect { model .. ": stopping time", unit = "s",
     predicted = function() return too_coarse(drag_c, drag_b) or rest(drag_c, drag_b).time end,

@@ -110,13 +110,58 @@ local function predicted_acceleration()
   return (exact(late_time).speed - exact(early_time).speed) / (late_time - early_time)
 end
 
+-- What the mean acceleration allows (issue 29: derived, not max(1 %, 0.01 m/s²)). Both speeds
+-- are read on steps (0.25 s and 1 s are whole steps at any whole rate of 4 Hz or more), as the
+-- velocity each step moved the block with:
+-- * The step. With no drag the stepped block's speed is theory's at every step (a constant
+--   acceleration), and the mean acceleration needs no step term. Drag is taken off each step by
+--   its exact solution before gravity and friction act, so the stepped speed departs from the
+--   continuous one: by the stepped law's own mean acceleration against theory's
+--   (theory.incline_motion with step = substep_length(), as the world steps it; at 60 Hz with
+--   c = 5 N·s/m, 0.0115 m/s² of the 0.18).
+-- * The breakaway from rest: its step is held at mu_s·N and the next gives back what kinetic
+--   friction would have left, known to a step: the speed may be off by up to the first step's
+--   change, g·(sin θ − mu_k·cos θ)·h, and the friction held past mu_k·N, (mu_s − mu_k)·g·cos θ·h.
+--   (At 35°, mu_s 0.6, mu_k 0.4 the world's speed stays 0.57·h m/s short, at 60 and 240 Hz.)
+--   The same offset in both speeds cancels in their difference; drag shrinks it between them,
+--   by 1 − e^(−Γ·0.75 s) of it at most, Γ = (c + 2b·v)/m the drag's rate at the fastest, under
+--   Γ·0.75 s: a term only where c or b is not 0.
+-- * The solver: none. Sliding, friction is clamped at mu_k times the normal impulse, which the
+--   normal's block solve makes the block's m·g·cos θ (friction, along the slope, does not move
+--   it across); held, the stuck contact takes back each step all but round-off of what
+--   gravity gave it.
+-- * Single precision (floats, 2^-24 of the magnitudes per operation; theory is double). A
+--   sliding block's velocity components are rounded each step by gravity's integration, the
+--   drag and the two contact points' warm start (the iterations leave a friction at its clamp
+--   as it is): 4 operations on each of 2 components, kept from step to step, so each speed read
+--   is off by up to 8·2^-24 of the speed per step before it. A held block's velocity is what
+--   one step's 27 operations (integration, warm start, 8 iterations of two friction points and
+--   the normal) leave of g·h.
+local function allowed()
+  if not breaks_away() then return 2 * 27 * 2 ^ -24 * g * substep_length() / (late_time - early_time) end
+  local h, span = substep_length(), late_time - early_time
+  local stepped = function(t)
+    return theory.incline_motion { angle = angle, mu_k = param.mu_k, c = param.c, b = param.b, mass = mass,
+                                   t = t, step = h }.speed
+  end
+  local step = math.abs((stepped(late_time) - stepped(early_time)) / span - predicted_acceleration())
+  local theta = math.rad(angle)
+  local dragged = param.c > 0 or param.b > 0
+  local rate = (param.c + 2 * param.b * exact(late_time).speed) / mass
+  local breakaway = dragged and (g * math.max(0, math.sin(theta) - param.mu_k * math.cos(theta))
+                                 + (math.max(param.mu_s, param.mu_k) - param.mu_k) * g * math.cos(theta))
+                                * h * math.min(1, rate * span) / span or 0
+  local rounding = 8 * 2 ^ -24 * (late_time / h * exact(late_time).speed + early_time / h * exact(early_time).speed) / span
+  return step + breakaway + rounding
+end
+
 expect { "mean acceleration down the slope", unit = "m/s²",
   predicted = predicted_acceleration,
   measured = function()
     if not reached(late_time) then return nil end
     return (value_at("speed", late_time) - value_at("speed", early_time)) / (late_time - early_time)
   end,
-  tolerance = function() return math.max(0.01 * math.abs(predicted_acceleration()), 0.01) end }
+  tolerance = allowed }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "sticks or slides", choices = { "sticks", "slides" },

@@ -119,6 +119,69 @@ local function out_of_reach(t)
 end
 local function word(t) return on_threshold() or out_of_reach(t) end
 
+-- The instant the rows read at the end belong to: value_at's sample, the step nearest the
+-- run's length (the later of two as near), up to half a step from it. Theory is read there
+-- too: at 38.81 N on the dry table with mu_k 0 and the oil gone at 0.3067 s, theory at
+-- 2.3067 s was 0.065 m/s short of the world read at 2.3083 s.
+local function end_sample()
+  local h = step_length()
+  return math.floor(run_length() / h + 0.5) * h
+end
+-- What the rows allow (issue 29: derived, not a flat share). Theory is given the instants the
+-- world's coefficients change (on_a_step), so between them both have the same constant
+-- acceleration, and the world's velocity at every step's end is theory's. What is left:
+-- * The step. Box2D moves the block each step with the velocity it has at the step's end, so
+--   where the velocity is theory's at every step boundary and straight between them, the
+--   world's distance is the trapezoid sum of theory's plus h·(v(t) − v(0))/2: half a step
+--   ahead (v(0) = 0, and stretches start on steps). A stop falls inside a step, which the
+--   world ends at rest: it then covers up to d·h²/2 less or more than the exact slide's last
+--   part, d the deceleration there (friction_models' `last`).
+-- * A breakaway on the dry table: its step is held (at up to mu_s·N) and the next gives back
+--   the speed mu_k would have left since the limit was crossed, which the treatment finds by
+--   interpolating the margin between two steps. Where the limit jumps (at t = 0, or the oil
+--   gone under a block stopped on it) the crossing is only known to a step: the speed may be
+--   off by up to that step's change, (pull − mu_k·m·g)/m·h, and the friction held past mu_k·N,
+--   (mu_s − mu_k)·g·h, from then on; the distance by that times the time since (and the held
+--   step). (mu_s 0 under mu_k 0.55, pull 10.9 N, the oil gone at 3.45 s: 0.023 m/s, a step's
+--   change.) On the oil mu_s = mu_k, and a block breaks away there with no held excess.
+-- * The solver: none. On a level table friction does not move the block across it, so each
+--   iteration's normal impulse is the block's weight and the friction at its clamp is mu_k·m·g.
+-- * Single precision (floats, 2^-24 of the magnitudes involved per operation; theory is
+--   double). A reading of the acceleration differences two velocities a step apart: only that
+--   step's operations on the velocity along the table are left in it, the pull's integration,
+--   the two contact points' friction in the warm start and in each of 8 iterations (19), with
+--   the mass and pull rounded once, of the speed and of the step's change, over h. Speed and
+--   distance keep every step's rounding: sliding at the clamp, the velocity is rounded by the
+--   integration and the warm start (3 a step, of the speed; the iterations leave a friction at
+--   its clamp as it is, and all 19 round no more than the step's change), each step's position
+--   by 2^-24 of the block's distance from where it started (the world's origin), and the
+--   speed's rounding carried on moves the distance by up to its sum over the run.
+-- With --substeps all of this is per sub-step, h = substep_length(), and theory's instants are
+-- on sub-steps too.
+local function allowed()
+  local h, t_end = substep_length(), end_sample()
+  local steps = math.floor(t_end / h + 0.5)
+  -- The speed is straight between the stretches' ends, so its largest is at one of them; the
+  -- pull never turns the block back, so its farthest is at the end.
+  local fastest, far = 0, slide(t_end).distance
+  for _, t in ipairs { oil_from, oil_gone, t_end } do fastest = math.max(fastest, slide(math.min(t, t_end)).speed) end
+  local dry_limit = math.max(param.mu_s, param.mu_k)
+  local breakaway = param.pull > dry_limit * mass * g
+                    and ((param.pull - param.mu_k * mass * g) / mass + (dry_limit - param.mu_k) * g) * h or 0
+  local slowing = math.max(0, param.mu_k * mass * g - param.pull, param.lubricated_mu * mass * g - param.pull) / mass
+  local change = (param.pull + dry_limit * mass * g + param.lubricated_mu * mass * g) / mass * h
+  local speed_rounding = steps * 2 ^ -24 * (3 * fastest + 19 * change)
+  local at_end = slide(t_end)
+  return {
+    -- Over a frame of sub-steps each sub-step's rounding is left: over the frame's length, as
+    -- one sub-step's over h.
+    acceleration = function(t) return 21 * 2 ^ -24 * (slide(t).speed + change) / h end,
+    speed = breakaway + speed_rounding,
+    distance = h * at_end.speed / 2 + slowing * h * h / 2 + breakaway * (t_end + h)
+               + steps * 2 ^ -24 * far + speed_rounding * t_end / 2,
+  }
+end
+
 -- Each stretch's start and end: dry again ends where the block stops, if it does (read over the
 -- whole run, the middle of a slide that stops a second before the end is the stop itself:
 -- 2.16 m/s² read where theory's 2.26 held until then).
@@ -166,22 +229,20 @@ for _, stretch in ipairs(stretches) do
       if unread() then return unread() end
       return time() >= middle() and value_at("acceleration", middle()) or nil
     end,
-    tolerance = function() return 0.01 * math.abs(slide(middle()).acceleration) + 1e-3 end }
+    tolerance = function() return allowed().acceleration(middle()) end }
 end
 
 local function at_the_end(probe)
   return reached(run_length()) and value_at(probe, run_length()) or nil
 end
--- 1 % and 1 mm/s or 1 mm: with theory given the instants the run switches at, what is left
--- is the breakaway within a step (the listener's correction makes it second order).
 expect { "speed at the end", unit = "m/s",
-  predicted = function() return word(run_length()) or slide(run_length()).speed end,
+  predicted = function() return word(run_length()) or slide(end_sample()).speed end,
   measured = function() return word(run_length()) or at_the_end("speed") end,
-  tolerance = function() return 0.01 * slide(run_length()).speed + 1e-3 end }
+  tolerance = function() return allowed().speed end }
 expect { "distance at the end", unit = "m",
-  predicted = function() return word(run_length()) or slide(run_length()).distance end,
+  predicted = function() return word(run_length()) or slide(end_sample()).distance end,
   measured = function() return word(run_length()) or at_the_end("distance") end,
-  tolerance = function() return 0.01 * slide(run_length()).distance + 1e-3 end }
+  tolerance = function() return allowed().distance end }
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "acceleration, oiled", unit = "m/s²",
