@@ -141,6 +141,8 @@ void draw_series(const Painter& p) {
         const ImU32 colour = indices[i] < colours->size() ? (*colours)[indices[i]] : series.colour;
         p.draw->AddLine(points[i - 1], points[i], colour, 2.5f * p.s);
       }
+    } else if (series.line && points.size() > 1 && series.dash > 0.0f) {
+      draw_dashed(p.draw, points, series.colour, 2.5f * p.s, series.dash * p.s, series.gap * p.s);
     } else if (series.line && points.size() > 1) {
       p.draw->AddPolyline(points.data(), static_cast<int>(points.size()), series.colour, ImDrawFlags_None, 2.0f * p.s);
     }
@@ -182,7 +184,7 @@ void draw_level_lines(const Painter& p) {
 // The levels' texts placed `beneath` the series (or not), each on a box of the panel's colour.
 void draw_level_texts(const Painter& p, bool beneath) {
   for (const ChartLayout::Level& placed : p.layout.levels) {
-    if (placed.beneath != beneath || placed.text.empty()) continue;
+    if (placed.beneath != beneath || placed.beside || placed.text.empty()) continue;
     const ChartLevel& level = p.chart.levels[placed.index];
     // Opaque: the text is read against the panel's colour it was chosen for (readable_ink),
     // not a slip band or a grid line showing through (incline's ochre text on its pink band
@@ -190,6 +192,21 @@ void draw_level_texts(const Painter& p, bool beneath) {
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
                           p.theme.panel);
     p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
+  }
+}
+
+// The levels' texts in the column beside the data, each led to from its line's end by a line
+// of its colour, on a box of the panel's colour.
+void draw_level_texts_beside(const Painter& p) {
+  for (const ChartLayout::Level& placed : p.layout.levels) {
+    if (!placed.beside || placed.text.empty()) continue;
+    const ChartLevel& level = p.chart.levels[placed.index];
+    const float middle = 0.5f * (placed.at.y + placed.at.w);
+    p.draw->AddLine(ImVec2(p.layout.high_right.x, placed.y), ImVec2(placed.at.x - 3.0f * p.s, middle), level.colour, 1.5f * p.s);
+    p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
+                          p.theme.panel);
+    p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel),
+                    level_text_in_column(level.text).c_str());
   }
 }
 
@@ -214,9 +231,18 @@ void draw_axes(Painter& p, ImVec2 corner) {
       const float y = p.at_axis_value(layout.x_low, tick).y;
       p.line(Kind::tick, ImVec2(low_left.x - length, y), ImVec2(low_left.x, y), p.theme.axis, thickness);
     }
+    // The marks between them, shorter and thinner, as a ruler's.
+    for (const double tick : layout.y_minor_ticks) {
+      const float y = p.at_axis_value(layout.x_low, tick).y;
+      p.line(Kind::tick, ImVec2(low_left.x - 0.6f * length, y), ImVec2(low_left.x, y), p.theme.axis, 0.7f * thickness);
+    }
     for (const double tick : layout.x_ticks) {
       const float x = p.at_axis_value(tick, layout.y_low).x;
       p.line(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + length), p.theme.axis, thickness);
+    }
+    for (const double tick : layout.x_minor_ticks) {
+      const float x = p.at_axis_value(tick, layout.y_low).x;
+      p.line(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + 0.6f * length), p.theme.axis, 0.7f * thickness);
     }
   }
   using TextKind = ChartLayout::AxisText::Kind;
@@ -282,6 +308,7 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
                   chart.message.c_str(), nullptr, layout.high_right.x - layout.low_left.x - 8.0f * s);
   }
   draw->PopClipRect();
+  draw_level_texts_beside(painter);
   draw_axes(painter, corner);
   draw_legend(draw, chart, keys_of(chart), layout, size, theme, fonts);
   return layout;

@@ -34,6 +34,9 @@ struct ChartSeries {
   bool line = true;
   Marker marker = Marker::none;
   std::vector<std::string> labels;  // beside each point, when given (a step rate, say)
+  // A line drawn in dashes of `dash` points with `gap` between them (0: solid), here and in the
+  // legend: a plot with more curves than colours tells the later ones apart so.
+  float dash = 0.0f, gap = 0.0f;
 };
 
 // One cell of a map: the point of a grid it stands for, and the category that colours it.
@@ -114,6 +117,13 @@ struct Chart {
   // plots.cpp): the levels' texts keep off them from the opening, so that none moves or covers
   // the latest data as the run goes on. In the chart's own numbers.
   std::vector<std::pair<double, double>> planned_points;
+  // A steady chart's levels' texts go in a column beside the data's right end, as a textbook
+  // labels a line at its end, where no data of any run passes (spring_pull's sawtooth crossed
+  // both its texts all along: struck through by the data, a teacher's trial). The column is as
+  // wide as the widest of these (the texts the theory will show, before the reveal too, so
+  // that the reveal moves nothing); empty, or wider than a third of the chart: the texts go by
+  // their lines in the data area, as place_level_texts says.
+  std::vector<std::string> level_room;
   // The data area the same whatever the data and whatever the legend holds (a plot on a page of
   // its own, read from the back of a room): the inside legend goes in a column beside the data,
   // as wide as the longest of its keys and of `legend_room` (names that may join it, such as
@@ -133,6 +143,11 @@ struct ChartLayout {
   bool log_x = false, log_y = false;
   double x_low = 0.0, x_high = 1.0, y_low = 0.0, y_high = 1.0;  // axis space: log10 of the value on a log axis
   std::vector<double> x_ticks, y_ticks;  // axis space
+  // A steady chart's unlabelled marks between its ticks (axis space), as a ruler's: the key
+  // values read off to a tenth of the axis or finer where the labels, kept apart, tick coarser
+  // (a teacher's trial: on a projector tipping_box's push axis was labelled every 20 N of 60,
+  // spring_pull's forces every 2 N of 10).
+  std::vector<double> x_minor_ticks, y_minor_ticks;
   std::vector<std::string> x_tick_labels, y_tick_labels;
   std::vector<ImVec2> points;  // every series' points as drawn (at most about two a pixel)
   std::vector<std::vector<ImVec2>> series_points;        // the same, series by series
@@ -159,6 +174,11 @@ struct ChartLayout {
     // (spring_pull's sawtooth crosses both its levels all along): the text is drawn under the
     // series, which stay in sight over it.
     bool beneath = false;
+    // In the column beside the data (Chart::level_room), in two lines (level_text_in_column): a
+    // short line leads from its line's end to the text's middle, which may be moved up or down
+    // off its line to keep clear of another level's text (incline's −μs·N and holding levels,
+    // 0.8 N apart at its defaults).
+    bool beside = false;
   };
   std::vector<Level> levels;
   // The lines draw_chart drew to read the data by, with their colours, for the contrast test:
@@ -185,6 +205,9 @@ struct ChartLayout {
 };
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts);
+// A level's text as written in the column beside the data: its label over its value
+// ("−μs·N" over "= −3.92 N"), so that the column stays narrow.
+std::string level_text_in_column(const std::string& text);
 // Draws the chart and returns where its parts went.
 ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
                        const Fonts& fonts);

@@ -185,6 +185,26 @@ std::vector<Tick> ticks_every(const Axis& axis, int count) {
   return ticks;
 }
 
+std::vector<double> minor_ticks(const std::vector<double>& ticks, double low, double high, float pixels_per_unit, float s) {
+  std::vector<double> marks;
+  if (ticks.size() < 2 || !(high > low) || !(pixels_per_unit > 0.0f)) return marks;
+  const double step = ticks[1] - ticks[0];
+  const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const long whole = std::lround(step / power);
+  for (const int parts : {5, 4, 2}) {
+    // A part that is no round step (a fifth of 2, a quarter of 1 or 5) is passed over.
+    if ((whole == 2 && parts == 5) || (whole != 2 && parts == 4)) continue;
+    const double minor = step / parts;
+    if (static_cast<float>(minor) * pixels_per_unit < 4.0f * s) continue;
+    for (const double value : multiples_of(minor, low, high, 400)) {
+      // Not where a labelled tick is.
+      if (std::abs(std::remainder(value, step)) > 1e-6 * step) marks.push_back(value);
+    }
+    break;
+  }
+  return marks;
+}
+
 void fit_y_ticks(const Chart& chart, const Axis& y_axis, float text, float s, ChartLayout& layout) {
   const float data_height = layout.low_left.y - layout.high_right.y;
   const auto spacing = [&](const std::vector<double>& ticks) {
@@ -244,6 +264,11 @@ void fit_y_ticks(const Chart& chart, const Axis& y_axis, float text, float s, Ch
       layout.y_ticks = {layout.y_low, layout.y_high};
       layout.y_tick_labels = {tick_text(layout.y_low, 0.1 * span), tick_text(layout.y_high, 0.1 * span)};
     }
+  }
+  layout.y_minor_ticks.clear();
+  if (chart.plain && chart.steady && !y_axis.log) {
+    layout.y_minor_ticks = minor_ticks(layout.y_ticks, layout.y_low, layout.y_high,
+                                       (layout.low_left.y - layout.high_right.y) / static_cast<float>(layout.y_high - layout.y_low), s);
   }
 }
 

@@ -61,6 +61,80 @@ bool line_meets(const std::vector<ImVec2>& points, const ImVec4& box, float reac
 // text placed before it (else none: the line alone). None for a level off
 // the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
 // spring_pull's the last second and a half of its record: a teacher's trial.)
+// How far a level's text stands past its line's end in the column beside the data: the short
+// line that leads to it.
+constexpr float level_lead = 10.0f;
+
+}  // namespace
+
+std::string level_text_in_column(const std::string& text) {
+  const std::size_t equals = text.rfind(" = ");
+  return equals == std::string::npos ? text : text.substr(0, equals) + "\n" + text.substr(equals + 1);
+}
+
+namespace {
+
+// A text's width and height as drawn, its lines one under the other.
+ImVec2 size_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()); }
+
+// The width of the column beside a steady chart's data that its levels' texts take
+// (Chart::level_room), each in two lines, its label over its value (level_text_in_column): 0
+// where there is none, or where it would take more than a third of the chart's width (a small
+// picture's plot: the texts go by their lines).
+float level_column(const Chart& chart, ImFont* font, float s, float chart_width) {
+  if (!chart.plain || !chart.steady) return 0.0f;
+  float widest = 0.0f;
+  for (const std::string& room : chart.level_room) widest = std::max(widest, size_of(font, level_text_in_column(room)).x);
+  if (widest == 0.0f) return 0.0f;
+  for (const ChartLevel& level : chart.levels) widest = std::max(widest, size_of(font, level_text_in_column(level.text)).x);
+  const float column = level_lead * s + widest;
+  return column <= chart_width / 3.0f ? column : 0.0f;
+}
+
+// Each level's text in the column beside the data, its middle at its line's height where the
+// texts before it leave room, else moved the least up or down to keep a gap between them, all
+// within the data's height (half a line above its top, where the top tick's label has room;
+// down to 2 points under its bottom, above the x label). A text that finds no room (more
+// levels than the data's height holds) leaves its line alone.
+void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, ImFont* font, ChartLayout& layout) {
+  struct Wanted {
+    std::size_t index;
+    float y;
+    ImVec2 size;
+  };
+  std::vector<Wanted> wanted;
+  for (std::size_t i = 0; i < chart.levels.size(); ++i) {
+    if (!y_axis.shows(chart.levels[i].y)) continue;
+    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, chart.levels[i].y).y;
+    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
+    wanted.push_back({i, y, size_of(font, level_text_in_column(chart.levels[i].text))});
+  }
+  std::stable_sort(wanted.begin(), wanted.end(), [](const Wanted& a, const Wanted& b) { return a.y < b.y; });
+  // Each text's box is drawn a pixel above and below it (draw_level_texts): two more apart.
+  const float gap = 2.0f * s + 2.0f;
+  const float highest = layout.high_right.y - 0.5f * font->FontSize, lowest_bottom = layout.low_left.y + 2.0f * s;
+  std::vector<float> tops;
+  for (const Wanted& level : wanted) {
+    tops.push_back(std::clamp(level.y - 0.5f * level.size.y, highest, std::max(highest, lowest_bottom - level.size.y)));
+  }
+  for (std::size_t k = 1; k < tops.size(); ++k) tops[k] = std::max(tops[k], tops[k - 1] + wanted[k - 1].size.y + gap);
+  if (!tops.empty()) tops.back() = std::min(tops.back(), std::max(highest, lowest_bottom - wanted.back().size.y));
+  for (std::size_t k = tops.size(); k-- > 1;) tops[k - 1] = std::min(tops[k - 1], tops[k] - wanted[k - 1].size.y - gap);
+  const float left = layout.high_right.x + level_lead * s;
+  std::vector<ChartLayout::Level> placed;
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    // Pushed above the top by the texts under it: no room for this one.
+    if (tops[k] < highest - 0.5f) {
+      placed.push_back({wanted[k].index, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), wanted[k].y, false, false});
+      continue;
+    }
+    placed.push_back({wanted[k].index, chart.levels[wanted[k].index].text,
+                      ImVec4(left, tops[k], left + wanted[k].size.x, tops[k] + wanted[k].size.y), wanted[k].y, false, true});
+  }
+  std::sort(placed.begin(), placed.end(), [](const ChartLayout::Level& a, const ChartLayout::Level& b) { return a.index < b.index; });
+  layout.levels.insert(layout.levels.end(), placed.begin(), placed.end());
+}
+
 void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
                        ChartLayout& layout) {
   // The series' lines are 2.5 points thick at most, the theory's 3.5 (draw_series,
@@ -190,6 +264,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   if (chart.legend == Chart::Legend::only) return layout;
 
   const float line = text + 3.0f * s;
+  float levels_beside = 0.0f;  // the column beside the data the levels' texts take, if any
   if (chart.plain) {
     layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
     layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
@@ -198,15 +273,16 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       // has the two lines of text they took (a plot on a page of its own, made tall).
       layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
       layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
-      if (!chart.x_label.empty()) {
-        // The x label beyond the data's right end, on the tick labels' line, where no tick label
-        // is: over the data's end it stood where the last tick's number goes (push's "10" under
-        // "push (N)"). The room is the same whatever the data (the plot holds still as the run
-        // widens its range): half a tick label as wide as "−8888" past the end, then the name.
-        const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
-        layout.high_right.x -= past_end + width_of(font, chart.x_label);
-        layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
-      }
+      // The x label beyond the data's right end, on the tick labels' line, where no tick label
+      // is: over the data's end it stood where the last tick's number goes (push's "10" under
+      // "push (N)"). The room is the same whatever the data (the plot holds still as the run
+      // widens its range): half a tick label as wide as "−8888" past the end, then the name.
+      // The levels' texts share that room, above it, beside the data (level_column).
+      const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
+      const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(font, chart.x_label);
+      levels_beside = level_column(chart, font, s, size.x);
+      layout.high_right.x -= std::max(x_label_room, levels_beside);
+      if (!chart.x_label.empty()) layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
     }
     // The tick column as wide as the labels the data area's height leads to (fit_y_ticks): the
     // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). No more: a steady
@@ -288,7 +364,12 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     set_x_ticks(layout.high_right.x - layout.low_left.x);
     place();
   }
-  place_level_texts(chart, axes.x, axes.y, text, s, font, layout);
+  if (chart.plain && chart.steady && !axes.x.log) {
+    layout.x_minor_ticks = minor_ticks(layout.x_ticks, layout.x_low, layout.x_high,
+                                       (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
+  }
+  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, font, layout);
+  else place_level_texts(chart, axes.x, axes.y, text, s, font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
     layout.active = -1;

@@ -23,7 +23,7 @@ std::vector<Key> keys_of(const Chart& chart) {
   }
   for (const auto& [name, colour] : chart.colour_keys) keys.push_back({name, colour, Key::Look::line});
   for (const ChartSeries& series : chart.series) {
-    if (!series.name.empty()) keys.push_back({series.name, series.colour, Key::Look::line});
+    if (!series.name.empty()) keys.push_back({series.name, series.colour, Key::Look::line, series.dash, series.gap});
   }
   if (!chart.band_name.empty()) keys.push_back({chart.band_name, chart.band_colour, Key::Look::band});
   for (const ChartCurve& curve : chart.theory) keys.push_back({curve.name, curve.colour, Key::Look::theory, curve.dash, curve.gap});
@@ -315,6 +315,11 @@ void draw_legend(ImDrawList* draw, const Chart& chart, const std::vector<Key>& k
         draw->AddRectFilled(ImVec2(at.x, at.y + 2), ImVec2(at.x + 16.0f * s, at.y + text - 2), key.colour);
       } else if (key.look == Key::Look::theory) {
         draw_dashed(draw, {ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle)}, key.colour, 2.0f * s, key.dash * s, key.gap * s);
+      } else if (key.dash > 0.0f) {
+        // A dashed series' swatch: one dash, a gap and the start of the next, shortened to fit
+        // the swatch's 16 points so that the gap shows.
+        const float dash = std::min(key.dash, 9.0f), gap = std::min(key.gap, 4.0f);
+        draw_dashed(draw, {ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle)}, key.colour, 3.0f * s, dash * s, gap * s);
       } else {
         draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + 16.0f * s, middle), key.colour, 3.0f * s);
       }

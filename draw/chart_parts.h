@@ -52,11 +52,18 @@ struct Key {
   std::string name;
   ImU32 colour;
   enum class Look { line, band, theory } look;
-  float dash = 0.0f, gap = 0.0f;  // a theory curve's pattern
+  float dash = 0.0f, gap = 0.0f;  // a theory curve's pattern, or a dashed series' (0: solid)
 };
 std::vector<Key> keys_of(const Chart& chart);
 
 float width_of(ImFont* font, const std::string& text);
+
+// The marks between a steady chart's labelled ticks (`ticks`, 2 or more, a round step apart) on
+// an axis from `low` to `high` (`pixels_per_unit` along it), as a ruler's: the finest of a
+// fifth, a quarter or a half of their step that is still a round step (1 N marks between 5 N
+// ticks, 5 N between 20) and leaves the marks 4 points apart or more (a ruler's millimetres, a
+// projector's 8 px); none where no such step fits.
+std::vector<double> minor_ticks(const std::vector<double>& ticks, double low, double high, float pixels_per_unit, float s);
 
 // The y ticks fitted to the data area's height, once it is known: as fine as
 // `chart.y_tick_spacing` allows, and never closer than a line and a third of text.

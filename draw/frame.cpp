@@ -338,16 +338,19 @@ void plot_in_panel(lessons::Lesson& lesson, const FrameStyle& style, std::size_t
     style.extra_plot(ImGui::GetCursorScreenPos(), area);
     return;
   }
-  const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, ImGui::GetCursorScreenPos(), area,
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  const ChartLayout drawn = draw_plot(ImGui::GetWindowDrawList(), lesson, i, time_span, corner, area,
                                       colours, *style.fonts, !style.theory_kept_back(), style.script_words, style.projector,
                                       style.hidden.theory());
   if (style.record != nullptr) {
     style.record->plots.push_back({i, drawn});
-    // The levels' texts, drawn on the data (not by ImGui's text calls), with the rest.
+    // The levels' texts, drawn on the data or in the column beside it (not by ImGui's text
+    // calls), with the rest: each shown within the data area, or the plot's, where it went.
     const ImVec4 data(drawn.low_left.x, drawn.high_right.y, drawn.high_right.x, drawn.low_left.y);
+    const ImVec4 plot(corner.x, corner.y, corner.x + area.x, corner.y + area.y);
     for (const ChartLayout::Level& level : drawn.levels) {
       if (level.text.empty()) continue;  // its line alone
-      style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, data});
+      style.record->texts.push_back({ImGui::GetCurrentWindow()->Name, level.text, level.at, level.beside ? plot : data});
     }
   }
 }

@@ -12,6 +12,16 @@
 #include "lessons/runtime/class_words.h"
 
 namespace frictionlab::draw {
+
+namespace {
+
+// The words arrow_scale_words puts together.
+constexpr const char* all_arrows = "all arrows";
+constexpr const char* drawn_longer = "drawn longer";
+constexpr const char* to_scale = "to scale";
+
+}  // namespace
+
 namespace {
 
 std::string metres(float value) {
@@ -91,9 +101,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   char scale_text[48];
   std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));
   // Where the scale stops being linear, said beside it: the world draws a force smaller than this
-  // as long as a back row can read (legible_arrow_pixels), its value giving its size.
-  const std::string lengthened = "under " + format_quantity(not_to_scale_below(newtons_to_pixels, s), "N") + ":";
-  const std::string not_to_scale = "not to scale";
+  // longer than to scale (legible_arrow_pixels), its value giving its size.
+  const ArrowScaleWords words = arrow_scale_words(scene, newtons_to_pixels, s);
+  const std::string& lengthened = words.first;
+  const std::string& not_to_scale = words.second;
   float arrows_end = left;
   for (int kind = 0; kind < force_kind_count; ++kind) {
     if (present[kind]) arrows_end += 40.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))) + 10.0f * s;
@@ -209,6 +220,20 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   for (const auto& [colour, material] : materials) chip(colour, material, false);
 }
 
+ArrowScaleWords arrow_scale_words(const Scene& scene, float newtons_to_pixels, float scale) {
+  const float below = not_to_scale_below(newtons_to_pixels, scale);
+  bool under = false, over = false;
+  for (const auto& [name, body] : scene.bodies()) {
+    for (const ForceOnBody& force : forces_on(scene, body)) {
+      const float size = force.force.Length();
+      if (size == 0.0f) continue;  // no arrow
+      (size < below ? under : over) = true;
+    }
+  }
+  if (under && over) return {"under " + format_quantity(below, "N") + ":", drawn_longer};
+  return {all_arrows, under ? drawn_longer : to_scale};
+}
+
 float legend_column_width(const Scene& scene, const Fonts& fonts) {
   ImFont* font = fonts.small;
   const float s = fonts.scale;
@@ -217,6 +242,7 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   // run goes on; the arrows' scale at its longest (40 pt: rounded down in a column) with a
   // four-digit value; the states' words and the materials' names after their marks.
   float widest = std::max(46.0f * s + width_of("= 1000 N"), width_of("under 1000 N:"));
+  for (const char* words : {all_arrows, drawn_longer, to_scale}) widest = std::max(widest, width_of(words));
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
   }

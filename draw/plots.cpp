@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <list>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -220,30 +221,46 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
   }
 }
 
+// How many times planned_reach looked a lesson's reach up by its text and values (tests).
+std::size_t reach_lookups = 0;
+
 // The reach of the lesson's plots, from the last few rehearsals kept (the window draws a plot
-// every frame, and each plot asks). The lesson's revision finds the last answer again at the
-// cost of comparing two numbers: values_key holds the whole script's text, and building it for
-// every plot of every frame cost more than drawing the plot. Only a new revision builds the key,
-// which finds a rehearsal of the same text, values and settings (a slider moved back, the lesson
-// opened again) among those kept.
+// every frame, and each plot asks). A lesson's revision finds its answer again at the cost of
+// comparing two numbers: values_key holds the whole script's text, and building it for every
+// plot of every frame cost more than drawing the plot. Only a revision not seen lately builds
+// the key, which finds a rehearsal of the same text, values and settings (a slider moved back,
+// the lesson opened again) among those kept. Revisions are never reused (Lesson::revision), so
+// several lessons' answers are kept side by side: two lessons drawing their plots in turn (the
+// web page's, the tests') each find their own, where one slot had them build the key every time.
 const PlannedReach* planned_reach(const lessons::Lesson& lesson) {
-  static std::vector<std::pair<std::string, std::optional<PlannedReach>>> kept;
-  static std::uint64_t last_revision = 0;  // 0: no lesson has it
-  static const PlannedReach* last_reach = nullptr;
-  if (lesson.revision() == last_revision) return last_reach;
+  struct Kept {
+    std::string key;
+    std::optional<PlannedReach> reach;
+  };
+  // A list: the answers handed out stay where they are while others come and go.
+  static std::list<Kept> kept;
+  static std::vector<std::pair<std::uint64_t, const Kept*>> by_revision;  // the latest last
+  constexpr std::size_t most_kept = 8, most_revisions = 16;
+  const auto answer = [](const Kept& entry) { return entry.reach ? &*entry.reach : nullptr; };
+  const auto seen = std::find_if(by_revision.begin(), by_revision.end(), [&](const auto& entry) { return entry.first == lesson.revision(); });
+  if (seen != by_revision.end()) return answer(*seen->second);
+  ++reach_lookups;
   const std::string key = values_key(lesson);
-  auto known = std::find_if(kept.begin(), kept.end(), [&](const auto& entry) { return entry.first == key; });
+  auto known = std::find_if(kept.begin(), kept.end(), [&](const Kept& entry) { return entry.key == key; });
   if (known == kept.end()) {
     // Rehearsed before the oldest is let go, so that nothing kept moves until its answer is in.
     std::optional<PlannedReach> rehearsed = rehearse(lesson);
-    if (kept.size() >= 8) kept.erase(kept.begin());
-    kept.emplace_back(key, std::move(rehearsed));
+    if (kept.size() >= most_kept) {
+      const Kept* oldest = &kept.front();
+      std::erase_if(by_revision, [&](const auto& entry) { return entry.second == oldest; });
+      kept.pop_front();
+    }
+    kept.push_back({key, std::move(rehearsed)});
     known = std::prev(kept.end());
   }
-  const std::optional<PlannedReach>& reach = known->second;
-  last_revision = lesson.revision();
-  last_reach = reach ? &*reach : nullptr;
-  return last_reach;
+  if (by_revision.size() >= most_revisions) by_revision.erase(by_revision.begin());
+  by_revision.emplace_back(lesson.revision(), &*known);
+  return answer(*known);
 }
 
 Range joined(Range a, Range b) { return {std::min(a.low, b.low), std::max(a.high, b.high)}; }
@@ -264,66 +281,77 @@ void name_axes(Chart& chart, const lessons::Lesson& lesson, const lessons::Plot&
                                                                 : "";
 }
 
-// Each y probe's colour: a force of a known kind (its read = { ... } says: a contact's friction,
+// A series' look: its colour, and its dash pattern (0: a solid line).
+struct SeriesLook {
+  ImU32 colour = 0;
+  float dash = 0.0f, gap = 0.0f;
+  bool operator==(const SeriesLook&) const = default;
+};
+
+// The dashes of a series drawn dashed: longer than every theory curve's pattern (6/4, 2/3 and
+// 11/4 points, give_theory_look) and on a thicker line in a series' colour, so that it is read
+// as a measured curve.
+constexpr float series_dash = 16.0f, series_gap = 6.0f;
+
+// Each y probe's look: a force of a known kind (its read = { ... } says: a contact's friction,
 // a normal force, an applied force, a spring, a rope) in its arrows' colour in the world, so
 // that a class matches a curve to its arrow (issue 31: the world drew friction vermilion and
-// spring_pull's plot drew it blue); the first probe of a kind takes it, and the others (a
-// second friction, a speed) the series colours in turn that no probe of the plot has yet, so
-// that two curves of one plot never share one.
-std::vector<ImU32> series_colours(const lessons::Lesson& lesson, const lessons::Plot& plot, const Theme& theme) {
-  std::vector<ImU32> colours(plot.y.size(), 0);
+// spring_pull's plot drew it blue); the first probe of a kind takes it, a second its shade
+// (Theme::second_force), a third and fourth the two dashed, so that a force's curve never
+// takes another kind's colour (friction_models' third friction was the applied force's blue).
+// The others (a speed) take the series colours in turn that no probe of the plot has yet,
+// solid, then dashed: no two curves of one plot share a look.
+std::vector<SeriesLook> series_looks(const lessons::Lesson& lesson, const lessons::Plot& plot, const Theme& theme) {
+  std::vector<SeriesLook> looks(plot.y.size());
   std::vector<bool> given(plot.y.size(), false);
-  const auto taken = [&](ImU32 colour) {
-    for (std::size_t k = 0; k < colours.size(); ++k) {
-      if (given[k] && colours[k] == colour) return true;
+  const auto taken = [&](const SeriesLook& look) {
+    for (std::size_t k = 0; k < looks.size(); ++k) {
+      if (given[k] && looks[k] == look) return true;
     }
     return false;
   };
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
     if (!kind) continue;
-    ImU32 colour = theme.force[static_cast<int>(*kind)];
-    // A second force of one kind (stacked_blocks' two frictions) takes a redder shade of its
-    // kind's colour, half way to a crimson: still nearer friction's vermilion than any other
-    // force's colour, told apart by the legend. (Darkened toward the text instead, it came
-    // nearer the rope's brown than friction's own colour.)
-    if (taken(colour)) {
-      const ImU32 crimson = theme.name == ThemeName::light ? IM_COL32(190, 0, 40, 255) : IM_COL32(255, 80, 110, 255);
-      const ImVec4 from = ImGui::ColorConvertU32ToFloat4(colour), to = ImGui::ColorConvertU32ToFloat4(crimson);
-      constexpr float toward = 0.5f;
-      colour = ImGui::ColorConvertFloat4ToU32(ImVec4(from.x + toward * (to.x - from.x), from.y + toward * (to.y - from.y),
-                                                     from.z + toward * (to.z - from.z), from.w));
+    const ImU32 own = theme.force[static_cast<int>(*kind)], shade = theme.second_force[static_cast<int>(*kind)];
+    for (const SeriesLook& look : {SeriesLook{own}, SeriesLook{shade}, SeriesLook{own, series_dash, series_gap},
+                                   SeriesLook{shade, series_dash, series_gap}}) {
+      if (taken(look)) continue;
+      looks[k] = look;
+      given[k] = true;
+      break;
     }
-    if (taken(colour)) continue;
-    colours[k] = colour;
-    given[k] = true;
+  }
+  std::vector<SeriesLook> others;
+  for (const bool dashed : {false, true}) {
+    for (const ImU32 colour : theme.series) others.push_back(dashed ? SeriesLook{colour, series_dash, series_gap} : SeriesLook{colour});
   }
   std::size_t next = 0;
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     if (given[k]) continue;
-    // More curves than series colours: they repeat, as they did before (none of the lessons
-    // plots more than four).
+    // More curves than looks: they repeat (none of the lessons plots more than four).
     std::size_t tried = 0;
-    while (tried < 4 && taken(theme.series[next % 4])) ++next, ++tried;
-    colours[k] = theme.series[next % 4];
+    while (tried < others.size() && taken(others[next % others.size()])) ++next, ++tried;
+    looks[k] = others[next % others.size()];
     given[k] = true;
     ++next;
   }
-  return colours;
+  return looks;
 }
 
 // The record: one series a probe. An X–Y plot of one probe is coloured by regime instead.
 void add_record(Chart& chart, const lessons::Lesson& lesson, const PlotRecord& record, const Theme& theme) {
   const lessons::Plot& plot = record.plot;
   const bool one_unit = one_y_unit(lesson, plot);
-  const std::vector<ImU32> series_colour = series_colours(lesson, plot, theme);
+  const std::vector<SeriesLook> looks = series_looks(lesson, plot, theme);
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
     ChartSeries series;
     const std::string& unit = lesson.probe_unit(plot.y[k]);
     if (plot.y.size() > 1 || record.over_time) {
       series.name = probe_words(lesson, plot.y[k]) + (!one_unit && !unit.empty() ? " (" + unit + ")" : "");
     }
-    series.colour = series_colour[k];
+    series.colour = looks[k].colour;
+    series.dash = looks[k].dash, series.gap = looks[k].gap;
     series.points.reserve(record.count);
     for (std::size_t i = 0; i < record.count; ++i) series.points.push_back({(*record.xs[k])[i], (*record.ys[k])[i]});
     chart.series.push_back(std::move(series));
@@ -447,6 +475,8 @@ std::vector<double> add_theory(Chart& chart, lessons::Lesson& lesson, std::size_
 
 }  // namespace
 
+std::size_t planned_reach_lookups() { return reach_lookups; }
+
 double time_axis_span(double duration, double now, bool secret) {
   if (secret) {
     double span = 1.0;
@@ -509,6 +539,10 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // mystery's theory counts for nothing until its reveal.
   std::vector<double> theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
   if (secret) theory_values.clear();
+  // A plot on a page of its own keeps its levels' texts' room beside its data from the opening,
+  // shown or not, so that the reveal moves nothing (Chart::level_room).
+  std::vector<std::string> level_texts;
+  for (const ChartLevel& level : chart.levels) level_texts.push_back(level.text);
   if (!with_theory) {
     chart.theory.clear();
     chart.levels.clear();
@@ -517,6 +551,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   }
   if (steady) {
     chart.steady = true;
+    chart.level_room = std::move(level_texts);
     // Room beside the data for the theory's keys from the start, before the reveal shows them.
     // An X–Y plot coloured by regime keys its three regimes first, "no contact" once it has
     // happened, in a place of its own from the start.

@@ -24,6 +24,11 @@ namespace frictionlab::draw {
 // instead, to the next of 1, 2, 5, 10, 20, ... s, until the mystery's reveal.
 double time_axis_span(double duration, double now, bool secret = false);
 
+// How many times the plots have looked for a lesson's run ahead (what fixes their axes) by its
+// script's text, values and settings, having not seen its revision lately: the cost the lesson's
+// revision saves, for the tests.
+std::size_t planned_reach_lookups();
+
 // Plot number `plot` of the lesson as a chart for the chart engine: the probes' record as
 // series (coloured by regime on an X–Y plot of one probe), the slip shaded on a time plot, the
 // present marked, and the theory curves sampled across the x range (kept between frames while

@@ -23,6 +23,17 @@ ImVec4 rgb(int r, int g, int b) {
   return ImVec4(static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f, 1.0f);
 }
 
+// Each kind's colour taken half way to `crimson`: Theme::second_force.
+void mix_second_forces(Theme& t, ImU32 crimson) {
+  const ImVec4 to = ImGui::ColorConvertU32ToFloat4(crimson);
+  constexpr float toward = 0.5f;
+  for (int kind = 0; kind < force_kind_count; ++kind) {
+    const ImVec4 from = ImGui::ColorConvertU32ToFloat4(t.force[kind]);
+    t.second_force[kind] = ImGui::ColorConvertFloat4ToU32(
+        ImVec4(from.x + toward * (to.x - from.x), from.y + toward * (to.y - from.y), from.z + toward * (to.z - from.z), from.w));
+  }
+}
+
 // Force colours are told apart by people with the common colour-vision deficiencies too:
 // blue, green, vermilion, purple and dark grey differ in lightness as well as hue.
 Theme make_light() {
@@ -49,6 +60,7 @@ Theme make_light() {
   t.force[5] = IM_COL32(140, 90, 30, 255);    // rope: brown
   t.force[6] = IM_COL32(110, 130, 0, 255);    // drag (c, b): olive
   t.arrow_halo = IM_COL32(255, 255, 255, 255);
+  mix_second_forces(t, IM_COL32(190, 0, 40, 255));
   // Contact states have colours no arrow has, so a mark never reads as a force.
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
@@ -98,6 +110,7 @@ Theme make_dark() {
   t.force[5] = IM_COL32(210, 160, 100, 255);
   t.force[6] = IM_COL32(190, 210, 60, 255);
   t.arrow_halo = IM_COL32(16, 16, 20, 255);
+  mix_second_forces(t, IM_COL32(255, 80, 110, 255));
   t.sticking = IM_COL32(40, 200, 210, 255);
   t.slipping = IM_COL32(255, 90, 180, 255);
   t.slip_band = IM_COL32(255, 90, 180, 45);

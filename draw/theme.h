@@ -26,6 +26,11 @@ struct Theme {
   ImU32 background, panel, text, faint_text, grid, axis;
   ImU32 sky, ground_edge, outline, driven_outline, spring, rope, hand;
   ImU32 force[force_kind_count];
+  // A second force of one kind on one plot (stacked_blocks' two frictions): its kind's colour
+  // taken half way to a crimson, still nearer friction's vermilion than any other kind's colour,
+  // told apart by the legend. (Darkened toward the text instead, it came nearer the rope's brown
+  // than friction's own colour.)
+  ImU32 second_force[force_kind_count];
   // The outline round every force's arrow in the world and the free-body inset: 3:1 or more
   // against every force's colour (WCAG 2.1's non-text contrast), so an arrow stands out from
   // a body of its own lightness (issue 31: the dark theme's normal force on aluminium, 1.09:1;

@@ -46,9 +46,12 @@ probe { "normal_force", unit = "N", read = { touch, "normal" } }
 -- holding it, m·g·sin θ up the slope, is within the most static friction gives, max(mu_s, mu_k)·N
 -- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); the two levels are those
 -- (negative, up the slope, as friction is here).
+-- The μs·N level says the lesson's key number, the critical angle θc (tan θc = max(mu_s, mu_k)),
+-- read here while building, so that a coefficient moved builds the lesson again with it.
+local critical = string.format("%.2f°", math.deg(math.atan(math.max(param.mu_s, param.mu_k))))
 plot { "Forces from the slope", y = { "friction_force", "normal_force" },
   levels = {
-    { "−μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
+    { "−μs·N, θc = " .. critical, function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
     { "holding it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
   } }
 plot { "Distance down the slope", y = { "distance" } }

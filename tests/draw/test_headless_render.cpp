@@ -9,6 +9,7 @@
 #include "draw/chart.h"
 #include "draw/frame.h"
 #include "draw/image.h"
+#include "draw/legend.h"
 #include "draw/overlays.h"
 #include "tests/rendering.h"
 
@@ -88,6 +89,38 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
     }
   }
   EXPECT_LE(best, 8) << "the contact is not marked as " << (state == ContactState::sticking ? "sticking" : "slipping");
+}
+
+// Issue 31: the legend said "under 12.4 N: not to scale" on push in projector mode, whose every
+// force (its 9.81 N weight the largest) is under 12.4 N: every arrow was lengthened, and the
+// words left a class asking which were to scale. Said now for what the picture holds: every
+// force under the force where lengthening starts, "all arrows drawn longer"; some under it,
+// "under X N: drawn longer"; none, "all arrows to scale". On push at 3 s, at arrow scales
+// chosen round its forces, and at the projector's own.
+TEST(Legend, SaysWhichArrowsAreDrawnLongerThanToScale) {
+  LessonAt at("push", {}, 3.0);
+  float smallest = INFINITY, largest = 0.0f;
+  for (const auto& [name, body] : at.scene().bodies()) {
+    for (const ForceOnBody& force : forces_on(at.scene(), body)) {
+      if (force.force.Length() == 0.0f) continue;
+      smallest = std::min(smallest, force.force.Length());
+      largest = std::max(largest, force.force.Length());
+    }
+  }
+  ASSERT_LT(smallest, largest);
+  const float scale = 2.0f;
+  // The arrow scale (px per N) at which lengthening starts at `newtons`.
+  const auto starting_at = [&](float newtons) { return legible_arrow_pixels(scale) / (1.0f - lengthened_share) / newtons; };
+  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(2.0f * largest), scale), ArrowScaleWords("all arrows", "drawn longer"));
+  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(0.5f * smallest), scale), ArrowScaleWords("all arrows", "to scale"));
+  const float between = 0.5f * (smallest + largest);
+  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(between), scale),
+            ArrowScaleWords("under " + format_quantity(not_to_scale_below(starting_at(between), scale), "N") + ":", "drawn longer"));
+  // The projector's text scale: the frame's, a third larger (Classroom::ui_scale).
+  const float projector_scale = 1.35f * frame_scale(1920, 1080);
+  const float projector = arrow_scale(*at.lesson, at.framing, ImVec2(1920.0f, 1080.0f), projector_scale, true);
+  ASSERT_GT(not_to_scale_below(projector, projector_scale), largest) << "push's forces on a projector are not all lengthened";
+  EXPECT_EQ(arrow_scale_words(at.scene(), projector, projector_scale), ArrowScaleWords("all arrows", "drawn longer"));
 }
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {

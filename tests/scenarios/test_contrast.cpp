@@ -114,7 +114,10 @@ TEST(Contrast, TheKeyPlotsAxesAndTickMarksStandAtLeastThreeToOneFromItsPanel) {
           EXPECT_GE(ratio, wcag_graphics) << where << ": a " << (line.kind == draw::ChartLayout::Line::Kind::tick ? "tick mark" : "axis")
                                           << " at (" << line.from.x << ", " << line.from.y << ") is " << ratio << ":1";
         }
-        EXPECT_EQ(ticks, plot.layout.x_ticks.size() + plot.layout.y_ticks.size()) << where << ": ticks without a mark";
+        // Every tick has its mark, and so has every unlabelled mark between them (a ruler's).
+        EXPECT_EQ(ticks, plot.layout.x_ticks.size() + plot.layout.y_ticks.size() + plot.layout.x_minor_ticks.size() +
+                             plot.layout.y_minor_ticks.size())
+            << where << ": ticks without a mark";
         EXPECT_GE(plot.layout.y_ticks.size(), 2u) << where;
       }
     }
