@@ -428,6 +428,12 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
 // pushed the reveal button under the teacher's pointer.) The answers' height is the same all
 // through the run; the theory table's is not (its rows fill in as the run measures them), so the
 // plan leaves it out: a plan with it folded the sliders when the run ended.
+// A projector's theory table leaves out the error column: each measured value has its verdict
+// beside it (TheoryColumns in panels.h).
+TheoryColumns theory_columns(const FrameStyle& style) {
+  return style.projector ? TheoryColumns::verdicts : TheoryColumns::errors;
+}
+
 struct ColumnChoice {
   ColumnPlan plan;
   bool theory_scrolls = false;
@@ -438,7 +444,8 @@ ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& styl
                            const lessons::LessonReadings& readings) {
   const float s = style.fonts->scale;
   const float inside = FrameLayout::of(display, s, style.origin).column_size.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
-  const float table = theory_contents_height(readings.expectations, inside, readings.error, readings.caveat, style.hidden.theory());
+  const float table = theory_contents_height(readings.expectations, inside, readings.error, readings.caveat,
+                                             style.hidden.theory(), theory_columns(style));
   ColumnChoice choice{plan_column(lesson, style, display, table)};
   if (style.predictions_height) {
     const FrameStyle::AnswersHeight answers = style.predictions_height(inside);
@@ -449,7 +456,8 @@ ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& styl
     // planned for and the revealed table scrolls. A screen's column keeps the plan it had (its
     // theory table has a panel of its own beside the tabs, a mystery's tab under it).
     if (style.projector) {
-      const float revealed_table = theory_contents_tallest_height(readings.expectations, inside);
+      const float revealed_table =
+          theory_contents_tallest_height(readings.expectations, inside, "", "", false, theory_columns(style));
       choice.plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
     }
     if (!style.projector || !choice.plan.theory_whole ||
@@ -603,7 +611,8 @@ void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadin
   if (style.predictions) style.predictions(class_lines_in_table);
   if (!style.theory_hidden) {
     theory_contents(readings.expectations, theme(style.theme), readings.error, readings.caveat, style.hidden.theory(),
-                    class_lines_in_table ? style.theory_notes : RowNotes{});
+                    class_lines_in_table ? style.theory_notes : RowNotes{},
+                    theory_columns(style));
   }
 }
 
@@ -666,7 +675,7 @@ void column_panels(lessons::Lesson& lesson, const FrameStyle& style, const lesso
   at.y += plan.parameters + gap;
   if (!plan.theory_in_tabs && !style.predictions) {
     theory_panel(readings.expectations, at, ImVec2(width, plan.theory), colours, readings.error, readings.caveat,
-                 style.hidden.theory());
+                 style.hidden.theory(), theory_columns(style));
     at.y += plan.theory + gap;
   } else if (!plan.theory_in_tabs) {
     if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,

@@ -194,13 +194,17 @@ std::string with_unit(double value, const std::string& unit) {
 struct TheoryCells {
   struct Cells {
     std::string theory, measured, error;
+    std::string verdict;  // without the error column: the mark after the measured value ("\u2713")
     bool measured_yet, passes, hand_pulled;
     int error_lines = 1;  // 2: the error's unit under its number
   };
   std::vector<Cells> cells;
   std::string error_heading;  // "error", or "error (N)" when every numeric row is in newtons
+  bool error_column = true;
   float widest[3];
-  float numbers() const { return widest[0] + widest[1] + widest[2] + 6.0f * ImGui::GetStyle().CellPadding.x; }
+  float numbers() const {
+    return widest[0] + widest[1] + widest[2] + (error_column ? 6.0f : 4.0f) * ImGui::GetStyle().CellPadding.x;
+  }
   // Beside the numbers, a name needs room for a word or two; with large text in a narrow
   // column there is none, and each name goes on a line of its own above its numbers.
   bool names_above(float table_width) const { return table_width - numbers() < 9.0f * ImGui::CalcTextSize("m").x; }
@@ -247,19 +251,22 @@ void noted_headers(int columns) {
 }
 
 // The table's cells for a table `width` wide.
-TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden, float width) {
+// Without the error column (TheoryColumns::verdicts) each measured value has its verdict after it.
+TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden, float width,
+                         TheoryColumns columns) {
   // The error's unit: once in the heading when every row has it (the cells stay narrow and the
   // names keep their room), else in each cell, after the number, or under it in a cell that
   // would not fit across the table with it beside (projector text).
   const std::string unit_for_all = shared_unit(rows);
-  TheoryCells table{{}, unit_for_all.empty() ? "error" : "error (" + unit_for_all + ")", {}};
+  const bool error_column = columns == TheoryColumns::errors;
+  TheoryCells table{{}, unit_for_all.empty() ? "error" : "error (" + unit_for_all + ")", error_column, {}};
   float* widest = table.widest;
   widest[0] = ImGui::CalcTextSize("theory").x;
   widest[1] = ImGui::CalcTextSize("measured").x;
-  widest[2] = ImGui::CalcTextSize(table.error_heading.c_str()).x;
+  widest[2] = error_column ? ImGui::CalcTextSize(table.error_heading.c_str()).x : 0.0f;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
-                            row.measured_yet, row.passes, row.hand_pulled && !row.passes};
+                            "", row.measured_yet, row.passes, row.hand_pulled && !row.passes};
     if (predictions_hidden) cell.theory = "hidden";
     // Its function failed (the message above the table says how): nothing of it is known.
     if (row.failed) {
@@ -280,11 +287,21 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
       }
       // Not a failure: the hand's pull is in no prediction (the caveat above says when it pulled).
       if (row.hand_pulled && !row.passes) cell.error = "hand-pulled";
+      if (!error_column && !cell.error.empty()) {
+        // The verdict alone: the mark, or the words a claim's row or the hand's pull has.
+        cell.verdict = cell.hand_pulled ? cell.error : pass_mark(row);
+        if (cell.verdict.back() == ' ') cell.verdict.pop_back();
+        cell.error.clear();
+      }
     }
     widest[0] = std::max(widest[0], ImGui::CalcTextSize(cell.theory.c_str()).x);
-    widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x);
+    widest[1] = std::max(widest[1], ImGui::CalcTextSize(cell.measured.c_str()).x +
+                                        (cell.verdict.empty() ? 0.0f
+                                                              : ImGui::GetStyle().ItemSpacing.x +
+                                                                    ImGui::CalcTextSize(cell.verdict.c_str()).x));
     table.cells.push_back(std::move(cell));
   }
+  if (!error_column) return table;
   const float room = width - widest[0] - widest[1] - 6.0f * ImGui::GetStyle().CellPadding.x;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     TheoryCells::Cells& cell = table.cells[i];
@@ -308,15 +325,15 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
 }  // namespace
 
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
-                  const std::string& error, const std::string& caveat, bool predictions_hidden) {
+                  const std::string& error, const std::string& caveat, bool predictions_hidden, TheoryColumns columns) {
   if (begin_panel("theory", "Theory against simulation", corner, size)) {
-    theory_contents(rows, theme, error, caveat, predictions_hidden);
+    theory_contents(rows, theme, error, caveat, predictions_hidden, {}, columns);
   }
   end_panel();
 }
 
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
-                     const std::string& caveat, bool predictions_hidden, const RowNotes& notes) {
+                     const std::string& caveat, bool predictions_hidden, const RowNotes& notes, TheoryColumns columns) {
   {
     ImGui::PushTextWrapPos(0.0f);
     if (!error.empty()) {
@@ -336,28 +353,33 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       return;
     }
     const float table_width = ImGui::GetContentRegionAvail().x;
-    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width);
+    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns);
     const std::vector<TheoryCells::Cells>& cells = table.cells;
+    const int numbers = table.error_column ? 3 : 2;
     const float* widest = table.widest;
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
     const bool names_above = table.names_above(table_width);
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
     // A name above its numbers, or a note under them, spans the row: the cells must not clip it.
     const bool spanning = names_above || !notes.empty();
-    if (ImGui::BeginTable("rows", names_above ? 3 : 4, spanning ? flags | ImGuiTableFlags_NoClip : flags)) {
+    if (ImGui::BeginTable("rows", names_above ? numbers : numbers + 1, spanning ? flags | ImGuiTableFlags_NoClip : flags)) {
       // The numbers keep their width; a long name wraps.
       if (names_above) {
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
         ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
-        ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
-        ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
+        if (table.error_column) {
+          ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
+          ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
+        } else {
+          ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthStretch);
+        }
       } else {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("theory");
         ImGui::TableSetupColumn("measured");
-        ImGui::TableSetupColumn(table.error_heading.c_str());
+        if (table.error_column) ImGui::TableSetupColumn(table.error_heading.c_str());
       }
-      noted_headers(names_above ? 3 : 4);
+      noted_headers(names_above ? numbers : numbers + 1);
       // The note of the row before, once its cells are drawn.
       const auto note_under = [&](std::size_t i) {
         const auto note = notes.find(rows[i].name);
@@ -397,6 +419,16 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
           continue;
         }
         shown_text(cell.measured.c_str());
+        if (!cell.verdict.empty()) {
+          ImGui::SameLine();
+          if (cell.hand_pulled) {
+            ImGui::TextDisabled("%s", cell.verdict.c_str());
+          } else {
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.verdict.c_str());
+          }
+          note_text(cell.verdict.c_str());
+        }
+        if (!table.error_column) continue;
         ImGui::TableNextColumn();
         if (cell.error.empty()) continue;
         if (cell.hand_pulled) {
@@ -413,7 +445,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
 }
 
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width, const std::string& error,
-                             const std::string& caveat, bool predictions_hidden) {
+                             const std::string& caveat, bool predictions_hidden, TheoryColumns columns) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float row_padding = 2.0f * style.CellPadding.y;  // above and below a row's text
@@ -422,7 +454,7 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
   if (rows.empty()) return height + font + style.ItemSpacing.y;
-  const TheoryCells table = theory_cells(rows, predictions_hidden, width);
+  const TheoryCells table = theory_cells(rows, predictions_hidden, width, columns);
   const bool above = table.names_above(width);
   const float padding = 2.0f * style.CellPadding.x;
   // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.
@@ -437,8 +469,9 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
 }
 
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
-                                     const std::string& error, const std::string& caveat, bool predictions_hidden) {
-  if (rows.empty()) return theory_contents_height(rows, width, error, caveat, predictions_hidden);
+                                     const std::string& error, const std::string& caveat, bool predictions_hidden,
+                                     TheoryColumns columns) {
+  if (rows.empty()) return theory_contents_height(rows, width, error, caveat, predictions_hidden, columns);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const float row_padding = 2.0f * style.CellPadding.y;
@@ -454,26 +487,38 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
   // there (names_above: 9 m's).
   const float padding = 2.0f * style.CellPadding.x;
   const float least_beside = std::max(1.0f, 9.0f * ImGui::CalcTextSize("m").x - padding);
+  // Without the error column each measured value has its verdict beside it, one line: the names
+  // go beside the numbers in what the widest of them leave (each row passing and failing, whose
+  // marks differ in width), or above them where that is under 9 m's.
+  const bool verdicts = columns == TheoryColumns::verdicts;
   std::vector<int> error_lines(rows.size(), 1);
+  float least_verdicts_beside = width;
+  bool verdicts_above = false;
   for (const double off : {-0.00888, -8.8e-10}) {
-    std::vector<lessons::ExpectationResult> ended = rows;
-    for (lessons::ExpectationResult& row : ended) {
-      if (row.failed) continue;
-      row.measured_yet = true;
-      row.hand_pulled = false;
-      row.predicted = -88.8;
-      row.measured = row.predicted + off;
-      row.measured_text = row.predicted_text;
+    for (const bool passes : {true, false}) {
+      std::vector<lessons::ExpectationResult> ended = rows;
+      for (lessons::ExpectationResult& row : ended) {
+        if (row.failed) continue;
+        row.measured_yet = true;
+        row.hand_pulled = false;
+        row.passes = passes;
+        row.predicted = -88.8;
+        row.measured = row.predicted + off;
+        row.measured_text = row.predicted_text;
+      }
+      const TheoryCells table = theory_cells(ended, predictions_hidden, width, columns);
+      for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
+      verdicts_above = verdicts_above || table.names_above(width);
+      least_verdicts_beside = std::min(least_verdicts_beside, std::max(1.0f, width - table.numbers() - padding));
     }
-    const TheoryCells table = theory_cells(ended, predictions_hidden, width);
-    for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
   }
   height += font + row_padding;  // the headers
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const float numbers = static_cast<float>(error_lines[i]) * font;
     const float above = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, width - padding).y + numbers + 2.0f * row_padding;
-    const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, least_beside).y, numbers) + row_padding;
-    height += std::max(above, beside);
+    const float beside_room = verdicts ? least_verdicts_beside : least_beside;
+    const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, beside_room).y, numbers) + row_padding;
+    height += verdicts && !verdicts_above ? beside : std::max(above, beside);
   }
   return height + style.ItemSpacing.y;
 }

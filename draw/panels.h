@@ -56,31 +56,37 @@ float parameters_panel_height(const lessons::Lesson& lesson, float width, std::s
 // error columns say "hidden" (a mystery's values would be read off them).
 // A line of words under a row's numbers, across the table: the class's answer to that row and
 // how close it came (classroom/prediction_panel.h), by the row's name. `good`: in the theme's good colour.
+// The theory table's columns: theory, measured and the error (a screen's); or theory and
+// measured, each measured value followed by its verdict (\u2713, \u2717), which a projector's text
+// needs: the error's column pushed each row's name onto a line of its own, and its unit under
+// its number, so a row took four lines (stacked_blocks' five rows did not fit under its sliders).
+enum class TheoryColumns { errors, verdicts };
 struct RowNote {
   std::string text;
   bool good = false;
 };
 using RowNotes = std::map<std::string, RowNote>;
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
-                  const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false);
+                  const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false,
+                  TheoryColumns columns = TheoryColumns::errors);
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
 // What the theory, energy and model panels hold, for a window that shows them as tabs of one panel.
 // `notes`: a line under the numbers of each row they name.
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme,
                      const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false,
-                     const RowNotes& notes = {});
+                     const RowNotes& notes = {}, TheoryColumns columns = TheoryColumns::errors);
 // The height theory_contents takes at a width (the panel's inside), in the current font.
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                              const std::string& error = "", const std::string& caveat = "",
-                             bool predictions_hidden = false);
+                             bool predictions_hidden = false, TheoryColumns columns = TheoryColumns::errors);
 // The most theory_contents takes at a width once the run has measured every row, with numbers
 // of up to three figures and a sign and words as the theory says them (its numbers' widths change
 // as their rows fill in): planned for from a lesson's opening, the revealed table needs no more
 // room at the run's end unless a measurement is longer than that (a failed row's other word).
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                                      const std::string& error = "", const std::string& caveat = "",
-                                     bool predictions_hidden = false);
+                                     bool predictions_hidden = false, TheoryColumns columns = TheoryColumns::errors);
 // A tab of a panel's tab bar (ImGui::BeginTabItem), its name noted for the layout test.
 bool begin_tab(const char* label, int flags = 0);  // ImGuiTabItemFlags
 void energy_contents(const Scene& scene, const Theme& theme);

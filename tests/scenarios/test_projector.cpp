@@ -1,5 +1,9 @@
 // Projector mode at 1920 × 1080: nothing moves under the teacher's pointer, every slider,
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
+#include <map>
+#include <set>
+#include <string>
+
 #include "draw/overlays.h"
 #include "tests/layout_checks.h"
 
@@ -225,17 +229,39 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
 // row ("speed at the end") cut, under the class's rows of two lines each (each row's name a
 // second time). Now each class's line stands under its row of the theory table, and the column
 // is planned from the lesson's opening for the table at its tallest, the friction pairs folding
-// for it where they must (never the whole Parameters panel). For these lessons,
-// with the class's answers given or not, with the stopwatch and without, at the run's end before
-// the reveal and after it: every text the Predict tab draws (each question and answer; each
-// class's line and theory row) whole and in sight, and the tab does not scroll. Lessons with
-// more or longer rows (check_the_article's seven claims, terrain's eight rows) cannot hold their
-// table at projector text in the column: theirs scrolls, after the class's lines.
+// for it where they must (never the whole Parameters panel). For every built-in lesson with
+// predictions, with the class's answers given or not, with the stopwatch and without, at the
+// run's end before the reveal and after it: every text the Predict tab draws (each question and
+// answer; each class's line and theory row) whole and in sight, and the tab does not scroll.
+//
+// A projector's table leaves out the error column, each measured value followed by its verdict
+// (TheoryColumns::verdicts): driven_wheel's and spring_pull's tables (with the stopwatch on) came
+// to fit then; they scrolled with the error column, whose unit went under its number.
+//
+// Not yet: lessons whose revealed table, at projector text, needs more of the column than the
+// sliders leave it (the table's rows take two lines each at least, their names being longer
+// than the column leaves beside the numbers): stacked_blocks (its five rows and the class's
+// lines about 690 px against the 480 px left under its sliders with both pairs folded), and
+// check_the_article, contact_area, friction_models, lubricated, terrain and wedge. Theirs
+// scrolls, after the class's lines; each must still break the rule, so the list only shrinks.
 TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrNot) {
+  const std::set<std::string> not_yet = {"stacked_blocks", "check_the_article", "contact_area", "friction_models",
+                                         "lubricated",     "terrain",           "wedge"};
+  std::map<std::string, int> still_broken;
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
-  for (const char* name : {"push", "pulley", "incline", "tipping_box", "where_methods_fail"}) {
+  int lessons_checked = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    const std::string& name = entry.name;
+    // A lesson on the list: what breaks the rule is counted, not failed.
+    const auto broken = [&](bool holds) {
+      if (not_yet.count(name) > 0) {
+        still_broken[name] += holds ? 0 : 1;
+        return ::testing::AssertionSuccess();
+      }
+      return holds ? ::testing::AssertionSuccess() : ::testing::AssertionFailure();
+    };
     for (const bool stopwatch : {false, true}) {
       for (const bool answered : {false, true}) {
         ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
@@ -243,7 +269,8 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
         options.window.tools.stopwatch = stopwatch;
         Classroom window(options);
         const std::vector<lessons::Prediction> predictions = window.playback().lesson().predictions();
-        ASSERT_FALSE(predictions.empty()) << name;
+        if (predictions.empty()) break;
+        if (!stopwatch && !answered) ++lessons_checked;
         if (answered) {
           for (const lessons::Prediction& prediction : predictions) {
             window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "-12.5";
@@ -252,14 +279,14 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
         window.playback().run_to(window.playback().lesson().duration());
         for (const bool revealed : {false, true}) {
           if (revealed) window.key_pressed(Key::t, false);
-          const std::string where = std::string(name) + (revealed ? " revealed" : " not revealed") + " at the run's end" +
+          const std::string where = name + (revealed ? " revealed" : " not revealed") + " at the run's end" +
                                     (answered ? ", answered" : "") + (stopwatch ? ", stopwatch on" : "");
           draw::FrameRecord record;
           for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
           ASSERT_EQ(window.theory_hidden(), !revealed) << where;
           const ImGuiWindow* books = ImGui::FindWindowByName("###books");
           ASSERT_TRUE(books != nullptr && books->WasActive) << where;
-          EXPECT_EQ(books->ScrollMax.y, 0.0f) << where << ": the Predict tab scrolls";
+          EXPECT_TRUE(broken(books->ScrollMax.y == 0.0f)) << where << ": the Predict tab scrolls";
           // What must be drawn: the class's texts, each prediction's in its order, and once
           // revealed every theory row's name.
           for (const lessons::Prediction& prediction : predictions) {
@@ -268,7 +295,7 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
               if (text.empty()) continue;  // an empty answer's box: no text in it
               const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
               if (!found) {
-                ADD_FAILURE() << where << ": \"" << text << "\" is not drawn";
+                EXPECT_TRUE(broken(false)) << where << ": \"" << text << "\" is not drawn";
                 continue;
               }
               next = *found + 1;
@@ -276,19 +303,24 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
           }
           if (revealed) {
             for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
-              EXPECT_TRUE(lower_panel_text(record, 0, row.name)) << where << ": the theory row \"" << row.name << "\" is not drawn";
+              EXPECT_TRUE(broken(lower_panel_text(record, 0, row.name).has_value()))
+                  << where << ": the theory row \"" << row.name << "\" is not drawn";
             }
           }
-          // And every text the tab drew (the rows' numbers too) whole, none a scroll away.
+          // And every text the tab drew (the rows' numbers and verdicts too) whole, none a scroll away.
           for (const draw::ShownText& text : record.texts) {
             if (text.panel.find("###books") == std::string::npos) continue;
-            EXPECT_TRUE(text.whole() && text.needed.w <= display.y)
+            EXPECT_TRUE(broken(text.whole() && text.needed.w <= display.y))
                 << where << ": \"" << text.text << "\" needs " << text_of(text.needed) << " but only " << text_of(text.visible)
                 << " shows";
           }
         }
       }
     }
+  }
+  EXPECT_GE(lessons_checked, 15) << "too few lessons with predictions were checked";
+  for (const std::string& lesson : not_yet) {
+    EXPECT_GT(still_broken[lesson], 0) << lesson << " now shows its whole table: take it off the not_yet list";
   }
 }
 
