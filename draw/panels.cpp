@@ -110,7 +110,7 @@ std::string pair_values(const lessons::Lesson& lesson, const std::string& pair, 
   for (const lessons::Parameter& parameter : lesson.parameters()) {
     // Drag coefficients at 0 are off: not worth a place on a folded line.
     const PairCoefficient* coefficient = parameter.coefficient;
-    if (pair_of(parameter) != pair || (parameter.value == 0.0 && coefficient->drag)) continue;
+    if (coefficient == nullptr || pair_of(parameter) != pair || (parameter.value == 0.0 && coefficient->drag)) continue;
     const std::string letter = lessons::class_words(coefficient->name);
     // Without units: the sliders, one arrow away, have them.
     char value[32];

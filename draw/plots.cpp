@@ -518,10 +518,21 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // axis), so its axes follow the record alone until the reveal.
   const PlannedReach* planned = secret ? nullptr : planned_reach(lesson);
   const bool planned_here = planned != nullptr && plot_index < planned->y.size();
+  // Past the run's end the window plays on, and the axes stay the run's (teachers.md: no plot
+  // rescales as the run goes on): what follows the run (tipping_box's box falling over onto a
+  // −1900 N impact, push's push growing to 25 N) would squash the run into a sliver. It runs
+  // on past the data area's edge, clipped there. The run's record ends at its first step at or
+  // after its duration.
+  std::size_t reach_count = record.count;
+  if (planned_here) {
+    const double end = lesson.duration() * (1.0 - 1e-12);
+    const auto first_past = std::lower_bound(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(std::min(record.count, times.size())), end);
+    reach_count = std::min(record.count, static_cast<std::size_t>(first_past - times.begin()) + 1);
+  }
   // (The noise floor on the whole: a partial record's noise, widened alone, took contact_area's
   // speeds to −0.002 m/s early in the run and −1e-7 at its end.)
   const Range x_reach = planned_here && !record.over_time
-                            ? beyond_noise(joined(reach_of(record.xs, record.count), planned->x[plot_index]))
+                            ? beyond_noise(joined(reach_of(record.xs, reach_count), planned->x[plot_index]))
                             : extent_of(record.xs, record.count);
   const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
                                          : record.count == 0 && !planned_here ? Range{}  // nothing recorded yet: 0 to 1
@@ -558,7 +569,7 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     if (!chart.segment_colours.empty()) chart.legend_room = {"sticking", "slipping", no_contact_key};
     for (const lessons::TheoryCurve& curve : record.plot.theory) chart.legend_room.push_back(curve.label);
   }
-  Range y_range = planned_here ? beyond_noise(joined(reach_of(record.ys, record.count), planned->y[plot_index]))
+  Range y_range = planned_here ? beyond_noise(joined(reach_of(record.ys, reach_count), planned->y[plot_index]))
                                : extent_of(record.ys, record.count);
   const bool reached = record.count > 0 || planned_here;
   const Range theory_range = extent_of({&theory_values}, theory_values.size());

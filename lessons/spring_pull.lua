@@ -169,17 +169,16 @@ local function stops_at_the_edge()
     return string.format("stops %.2g N inside μs·N: under a step's pull", param.mu_s * weight - math.abs(restick))
   end
 end
--- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, or too brief to see) so are
--- the breakaways after them: that row then reads the first breakaway alone, from both sides.
 -- A slide that dips close to a stop without stopping (a strong drag damping the swing while
 -- the hand walks on): the world's speed may be off the model's by ωh/2 of the slide's speed
--- (the term h·ω²·x·v by which Box2D's steps keep a swing's energy), and where the dip comes
--- nearer a stop than that, the world's block may stop there and stick, or not. At 375 N/m,
--- 4.23 kg, μs 2, μk 1.88, b 420: the model's block dips to 1.2 mm/s, within 1.3; the world's
--- stuck at 77.8 N.
+-- (the term h·ω²·x·v by which Box2D's steps keep a swing's energy), and by a step's drag on it,
+-- Γ·h, Γ = (c + 2b·v)/m (each step takes the drag off the speed before the spring's impulse is
+-- added), h the world's step. Where the dip comes nearer a stop than that, the world's block
+-- may stop there and stick, or not. At 375 N/m, 4.23 kg, μs 2, μk 1.88, b 420: the model's
+-- block dips to 0.36 mm/s, where the world's may be 7.9 mm/s off; the world's stuck at 77.8 N.
 local function grazes_a_stop()
-  local nearest = run().nearest_stop
-  local off = math.sqrt(k / mass) * step_length() / 2 * run().fastest_slide
+  local nearest, fastest, h = run().nearest_stop, run().fastest_slide, substep_length()
+  local off = (math.sqrt(k / mass) * h / 2 + (param.c + 2 * param.b * fastest) / mass * h) * fastest
   if nearest and nearest < off then
     return string.format("slows to %.2g m/s: within a step's error of stopping", nearest)
   end
@@ -190,16 +189,21 @@ end
 -- every 0.12 s where the model's crept on). The cycle's rows say so; at 240 Hz the sliders'
 -- stiffest spring on the lightest block is at 0.29.
 local function swing_too_fast()
-  local omega_h = math.sqrt(k / mass) * step_length()
+  local omega_h = math.sqrt(k / mass) * substep_length()
   if omega_h > 1 then return string.format("the spring swings too fast for the step: ω·h = %.3g", omega_h) end
 end
+-- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, too brief to see, in a
+-- dip, or the swing too fast) so are the breakaways after them: that row then reads the first
+-- breakaway alone, from both sides.
 local function at_the_limit()
   return no_cycle() or swing_too_fast() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief()
     or stops_at_the_edge() or grazes_a_stop() or nil
 end
 local function run_over() return reached(run_length()) end
 
--- What the world's steps may move each reading by (h = step_length()), for the rows' tolerances:
+-- What the world's steps may move each reading by, for the rows' tolerances (h the frame's step,
+-- step_length(), where the record is read; the world's own step, substep_length(), where the
+-- world moves the block):
 -- * The pull grows by k·v·h in a step, and a slip is seen at the end of the step it begins in:
 --   the breakaway's recorded pull lies within k·v·h of μs·N, and the slip after it starts with
 --   up to that much more force than the model's.
@@ -208,18 +212,18 @@ local function pull_in_a_step() return k * pull_speed * step_length() end
 --   from the breakaway force to the re-stick force). The world's block stops at the end of the
 --   step in which it would turn back, at most a·h² of travel (a ≤ ω²·A/k) from where the model's
 --   stops, k·a·h² = (ωh)²·A in force; and Box2D's symplectic Euler keeps not the energy but one
---   that differs from it by the term h·ω²·x·v, which at a step that close to the turn moves the
---   turning point by up to (ωh)²·A/2 more.
+--   that differs from it by h·ω²·x·v, which moves the swing's far end, seen at a step, by about
+--   (ωh)²·A/8 more: allowed here as (ωh)²·A/2, on the safe side. h is the world's step.
 local function swing_in_a_step()
   local swing = run().breakaway_force and run().restick_force and (run().breakaway_force - run().restick_force) / 2 or 0
-  return 1.5 * (k / mass) * step_length() ^ 2 * math.abs(swing)
+  return 1.5 * (k / mass) * substep_length() ^ 2 * math.abs(swing)
 end
 -- * Single precision: the block's position is a float, rounded by up to 2^-24 of itself each
 --   step it moves (the longest slip's steps), and the force reads it, the hand's and their
 --   distance, three more roundings; at most the rest length plus the hand's walk from the start.
 local function rounding()
   local farthest = rest_length + pull_speed * run_length()
-  return k * 2 ^ -24 * farthest * ((run().longest_slip or 0) / step_length() + 3)
+  return k * 2 ^ -24 * farthest * ((run().longest_slip or 0) / substep_length() + 3)
 end
 -- * Drag (c, b): Box2D takes each step's drag off the speed before the spring's impulse is added,
 --   an O(h) error in the slide that is not bounded here: with drag the rows keep the 2 % of

@@ -210,7 +210,9 @@ local function hack_end_speed()
 end
 expect { "hack box: speed at the end (drifts down a slope)", unit = "m/s",
   predicted = function() return hack().drift_speed end,
-  measured = function() return over() and value_at("hack_box_speed", time()) or nil end,
+  -- Read at the run's end, which the allowance is for: earlier, more of the launch is left (at
+  -- 2.5 s on 15°, 2.3 mm/s, where the end's allowance is 0.7).
+  measured = function() return reached(run_length()) and value_at("hack_box_speed", run_length()) or nil end,
   -- What is left of the launch at the run's end, and then (issue 29: derived, not 1 % + 1
   -- mm/s) single precision: the frames are the discrete process itself. Each sub-step rounds the velocity by 2^-24 of it in gravity's
   -- integration and in the smooth lane's normal (warm start and 8 iterations), 10 operations,

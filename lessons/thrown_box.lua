@@ -168,7 +168,7 @@ expect { "locked box: distance to rest", unit = "m",
   -- step rounds the position by up to 2^-24 of itself. (It was 1 % of the distance and v·h; in
   -- 2 400 random settings none came off by more than 2.5·v·h.)
   tolerance = function()
-    local steps = throw().locked_stop_time / step_length()
+    local steps = throw().locked_stop_time / substep_length()  -- the world's steps
     return 2.5 * throw_speed * step_length() + steps * 2 ^ -24 * throw().locked_distance
   end }
 

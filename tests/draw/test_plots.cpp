@@ -579,6 +579,35 @@ TEST(PlotRanges, AreFixedFromTheOpeningForTheWholeRun) {
   EXPECT_EQ(last_x, 10.0);
 }
 
+// Past the run's end the window plays on, and a plot keeps the run's axes (a teacher's trial):
+// tipping_box's box, tipped over, lands with a −1900 N impact that took the friction axis from
+// −60 to −2000 N, and push's push grew its x axis from 8 N to 25 N by 11 s. Every built-in
+// lesson's every plot, a second and three seconds past its end, against its ranges at the end
+// (a time axis's end goes on with the time).
+TEST(PlotRanges, StayTheRunsPastItsEnd) {
+  for (const std::string& name : lessons::builtin_lessons()) {
+    LessonAt at(name, {}, 0.0);
+    const double duration = at.lesson->duration();
+    at.step_to(duration);
+    std::vector<Chart> at_the_end;
+    for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+      at_the_end.push_back(plot_chart(*at.lesson, plot, time_axis_span(duration, at.scene().time()), theme(ThemeName::light), true, true));
+    }
+    for (const double past : {1.0, 3.0}) {
+      at.step_to(duration + past);
+      for (std::size_t plot = 0; plot < at.lesson->plots().size(); ++plot) {
+        const std::string where = name + ", plot " + std::to_string(plot) + " at " + std::to_string(at.scene().time()) + " s";
+        const Chart now = plot_chart(*at.lesson, plot, time_axis_span(duration, at.scene().time()), theme(ThemeName::light), true, true);
+        EXPECT_EQ(now.y_low, at_the_end[plot].y_low) << where;
+        EXPECT_EQ(now.y_high, at_the_end[plot].y_high) << where;
+        if (at.lesson->plots()[plot].kind == lessons::PlotKind::time) continue;
+        EXPECT_EQ(now.x_low, at_the_end[plot].x_low) << where;
+        EXPECT_EQ(now.x_high, at_the_end[plot].x_high) << where;
+      }
+    }
+  }
+}
+
 // A value changed is planned for: the axes fixed from the opening are those of a whole run at the
 // values the lesson has now, so a slider moved re-plans them (the planned reach is found again by
 // the lesson's revision, lessons::Lesson::revision). push's plot, asked of one lesson frame after

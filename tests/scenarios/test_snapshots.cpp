@@ -111,6 +111,23 @@ TEST_P(LessonMoments, AreDeclaredWithOneReadmeFrame) {
 INSTANTIATE_TEST_SUITE_P(Lessons, LessonMoments, ::testing::ValuesIn(every_lesson()),
                          [](const ::testing::TestParamInfo<std::string>& name) { return name.param; });
 
+// A moment is a picture for a class: its theory table shows no row the lesson fails. A row
+// read "at the end" before the end has no answer yet (terrain's hack box at 2.5 s on 15° was
+// read early, with more of its launch left than the end's allowance, and showed ✗).
+TEST(LessonMomentsTables, ShowNoFailingRow) {
+  for (const LessonMoment& moment : every_moment()) {
+    ASSERT_TRUE(moment.broken.empty()) << moment.broken;
+    LessonAt at(moment.lesson, moment.moment.set, moment.moment.at);
+    for (const lessons::ExpectationResult& row : at.lesson->expectations()) {
+      EXPECT_FALSE(row.failed) << moment.name() << ": " << row.name << " raised an error";
+      EXPECT_TRUE(!row.measured_yet || row.passes || row.hand_pulled)
+          << moment.name() << ": " << row.name << " fails at " << moment.moment.at << " s (predicted "
+          << (row.numeric ? std::to_string(row.predicted) : row.predicted_text) << ", measured "
+          << (row.numeric ? std::to_string(row.measured) : row.measured_text) << ")";
+    }
+  }
+}
+
 TEST(Goldens, EachBelongsToAMomentOfALesson) {
   std::set<std::string> taken;
   for (const LessonMoment& moment : every_moment()) taken.insert(moment.name() + ".png");
