@@ -137,14 +137,14 @@ end
 --   point in one turn; spinning, it is clamped at mu_k times the normal impulse, the weight.
 -- * Single precision (floats, 2^-24 of the magnitudes involved per operation; theory is
 --   double). In a step the wheel's velocity and spin are changed by the integration, the
---   contact point's warm start and 8 iterations of friction and normal, 18 operations, with the
---   mass, radius and torque rounded once each: 21. A rate read as the change over the last
---   step keeps only that step's: 21·2^-24 of the speed (or spin) and of its change, over h. The
---   gripping friction is an impulse over h that stops the contact point, whose speed is the
---   difference of the axle's and the rim's: the mass times that for each, and 21·2^-24 of the
---   forces of the step (the friction and the weight). The slip's decision compares the friction
---   with mu_s·N to as many operations: that share of the limit.
-local operations = 21
+--   contact point's warm start and 8 iterations of friction and normal, 19 operations (1 + 9·k,
+--   k = 2), with the mass, radius and torque rounded once each: 22. A rate read as the change
+--   over the last step keeps only that step's: 22·2^-24 of the speed (or spin) and of its
+--   change, over h. The gripping friction is an impulse over h that stops the contact point,
+--   whose speed is the difference of the axle's and the rim's: the mass times that for each,
+--   and 22·2^-24 of the forces of the step (the friction and the weight). The slip's decision
+--   compares the friction with mu_s·N to as many operations: that share of the limit.
+local operations = 22
 local function allowed()
   local h = step_length()
   local function rate_rounding(value, rate) return operations * 2 ^ -24 * (math.abs(value) / h + math.abs(rate)) end

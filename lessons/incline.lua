@@ -143,11 +143,11 @@ end
 --   drag and the two contact points' warm start (the iterations leave a friction at its clamp
 --   as it is): 4 operations on each of 2 components, kept from step to step, so each speed read
 --   is off by up to 8·2^-24 of the speed per step before it. A held block's velocity is what
---   one step's 27 operations (integration, warm start, 8 iterations of two friction points and
---   the normal) leave of g·h.
+--   one step's 28 operations (1 + 9·k, k = 3: integration, and the warm start and 8 iterations
+--   of two friction points and the normal) leave of g·h.
 local function allowed()
   local early = early_sample()
-  if not breaks_away() then return 2 * 27 * 2 ^ -24 * g * substep_length() / (late_time - early) end
+  if not breaks_away() then return 2 * 28 * 2 ^ -24 * g * substep_length() / (late_time - early) end
   local h, span = substep_length(), late_time - early
   local stepped = function(t)
     return theory.incline_motion { angle = angle, mu_k = param.mu_k, c = param.c, b = param.b, mass = mass,
