@@ -143,64 +143,7 @@ local function run()
   end
   return cached_run
 end
--- A stick the world cannot show: the model's block stuck for less than two of the world's steps
--- between a stop and the next breakaway (μs and μk close, a stiff spring, a fast hand: 2.7 ms at
--- μs 2, μk 1.991, 427 N/m, 0.146 m/s). The world's block stops at the end of the step the model's
--- stops in, up to a step late, and breaks away at the end of the step the pull passes μs·N in:
--- a stick shorter than those two steps may fall between them. At 240 Hz it was never seen at
--- 2.7-3.9 ms, seen at 4.2 and 4.5, missed at 4.8 (the stop's place in its step), seen at 5.1 ms
--- and longer; at 480 Hz the 2.7 ms stick was seen.
-local function stick_too_brief()
-  local shortest = run().shortest_stick
-  if shortest and shortest < 2 * step_length() then
-    return string.format("sticks %.2g ms: under two steps", 1000 * shortest)
-  end
-end
 local weight = mass * g
--- A stop at the static limit's edge: the model's block stops with the spring's force closer to
--- μs·N than the pull grows in a step (k·v·h). The world's block stops up to a step later than
--- the model's, the hand pulling on meanwhile, so whether it is held there or slides on is
--- undecided. At μk 0.0026, μs 0.18, 327 N/m, 0.418 kg, 0.02 m/s the model's block stops
--- 0.021 N inside μs·N, where a step at 240 Hz adds 0.027 N: the world's slid on and stuck at
--- −0.147 N; from 480 Hz on (0.014 N a step) it stuck at −0.718 N, the model's −0.717.
-local function stops_at_the_edge()
-  local restick = run().restick_force
-  if restick and param.mu_s * weight - math.abs(restick) < k * pull_speed * step_length() then
-    return string.format("stops %.2g N inside μs·N: under a step's pull", param.mu_s * weight - math.abs(restick))
-  end
-end
--- A slide that dips close to a stop without stopping (a strong drag damping the swing while
--- the hand walks on): the world's speed may be off the model's by ωh/2 of the slide's speed
--- (the term h·ω²·x·v by which Box2D's steps keep a swing's energy), and by a step's drag on it,
--- Γ·h, Γ = (c + 2b·v)/m (each step takes the drag off the speed before the spring's impulse is
--- added), h the world's step. Where the dip comes nearer a stop than that, the world's block
--- may stop there and stick, or not. At 375 N/m, 4.23 kg, μs 2, μk 1.88, b 420: the model's
--- block dips to 0.36 mm/s, where the world's may be 7.9 mm/s off; the world's stuck at 77.8 N.
-local function grazes_a_stop()
-  local nearest, fastest, h = run().nearest_stop, run().fastest_slide, substep_length()
-  local off = (math.sqrt(k / mass) * h / 2 + (param.c + 2 * param.b * fastest) / mass * h) * fastest
-  if nearest and nearest < off then
-    return string.format("slows to %.2g m/s: within a step's error of stopping", nearest)
-  end
-end
--- A swing faster than the step: the allowances above are first terms in ω·h, and past ω·h = 1
--- Box2D's steps (stable up to 2) no longer follow the swing (60 Hz, 500 N/m on 0.1 kg, ω·h
--- 1.18: a period of 1.57 s where the model's is 0.40; with a strong drag the world's block stuck
--- every 0.12 s where the model's crept on). The cycle's rows say so; at 240 Hz the sliders'
--- stiffest spring on the lightest block is at 0.29.
-local function swing_too_fast()
-  local omega_h = math.sqrt(k / mass) * substep_length()
-  if omega_h > 1 then return string.format("the spring swings too fast for the step: ω·h = %.3g", omega_h) end
-end
--- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, too brief to see, in a
--- dip, or the swing too fast) so are the breakaways after them: that row then reads the first
--- breakaway alone, from both sides.
-local function at_the_limit()
-  return no_cycle() or swing_too_fast() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief()
-    or stops_at_the_edge() or grazes_a_stop() or nil
-end
-local function run_over() return reached(run_length()) end
-
 -- What the world's steps may move each reading by, for the rows' tolerances (h the frame's step,
 -- step_length(), where the record is read; the world's own step, substep_length(), where the
 -- world moves the block):
@@ -236,6 +179,65 @@ end
 -- a step and is held from its end while the hand pulls on (two steps' pull); the swing's turn,
 -- met at a step; rounding; and drag's share.
 local function restick_allowance() return 2 * pull_in_a_step() + swing_in_a_step() + rounding() + drag_allowance() end
+-- A stick the world cannot show: the model's block stuck for less than two of the world's steps
+-- between a stop and the next breakaway (μs and μk close, a stiff spring, a fast hand: 2.7 ms at
+-- μs 2, μk 1.991, 427 N/m, 0.146 m/s). The world's block stops at the end of the step the model's
+-- stops in, up to a step late, and breaks away at the end of the step the pull passes μs·N in:
+-- a stick shorter than those two steps may fall between them. At 240 Hz it was never seen at
+-- 2.7-3.9 ms, seen at 4.2 and 4.5, missed at 4.8 (the stop's place in its step), seen at 5.1 ms
+-- and longer; at 480 Hz the 2.7 ms stick was seen.
+local function stick_too_brief()
+  local shortest = run().shortest_stick
+  if shortest and shortest < 2 * step_length() then
+    return string.format("sticks %.2g ms: under two steps", 1000 * shortest)
+  end
+end
+-- A stop at the static limit's edge: the model's block stops with the spring's force closer to
+-- μs·N than the world's re-stick may be off it (restick_allowance: the pull in a step, the
+-- swing's turn met at a step, ...), so whether the world's is held there or slides back on is
+-- undecided (500 N/m, 0.1 kg, μs 1.83, μk 0.034: the model's stops 0.067 N inside μs·N, the
+-- world's, 0.31 N off it, slid back and stuck at −1.07 N). At μk 0.0026, μs 0.18, 327 N/m,
+-- 0.418 kg, 0.02 m/s the model's block stops 0.021 N inside μs·N, where the world's may be
+-- 0.07 N off at 240 Hz: the world's slid on and stuck at −0.147 N; from 480 Hz on it stuck at
+-- −0.718 N, the model's −0.717 (at 960 Hz, 0.015 N off at most, the rows compare).
+local function stops_at_the_edge()
+  local restick = run().restick_force
+  if restick and param.mu_s * weight - math.abs(restick) < restick_allowance() then
+    return string.format("stops %.2g N inside μs·N: within the step's error", param.mu_s * weight - math.abs(restick))
+  end
+end
+-- A slide that dips close to a stop without stopping (a strong drag damping the swing while
+-- the hand walks on): the world's speed may be off the model's by ωh/2 of the slide's speed
+-- (the term h·ω²·x·v by which Box2D's steps keep a swing's energy), and by a step's drag on it,
+-- Γ·h, Γ = (c + 2b·v)/m (each step takes the drag off the speed before the spring's impulse is
+-- added), h the world's step. Where the dip comes nearer a stop than that, the world's block
+-- may stop there and stick, or not. At 375 N/m, 4.23 kg, μs 2, μk 1.88, b 420: the model's
+-- block dips to 0.36 mm/s, where the world's may be 7.9 mm/s off; the world's stuck at 77.8 N.
+local function grazes_a_stop()
+  local nearest, fastest, h = run().nearest_stop, run().fastest_slide, substep_length()
+  local off = (math.sqrt(k / mass) * h / 2 + (param.c + 2 * param.b * fastest) / mass * h) * fastest
+  if nearest and nearest < off then
+    return string.format("slows to %.2g m/s: within a step's error of stopping", nearest)
+  end
+end
+-- A swing faster than the step: the allowances above are first terms in ω·h, and past ω·h = 1
+-- Box2D's steps (stable up to 2) no longer follow the swing (60 Hz, 500 N/m on 0.1 kg, ω·h
+-- 1.18: a period of 1.57 s where the model's is 0.40; with a strong drag the world's block stuck
+-- every 0.12 s where the model's crept on). The cycle's rows say so; at 240 Hz the sliders'
+-- stiffest spring on the lightest block is at 0.29.
+local function swing_too_fast()
+  local omega_h = math.sqrt(k / mass) * substep_length()
+  if omega_h > 1 then return string.format("the spring swings too fast for the step: ω·h = %.3g", omega_h) end
+end
+-- Where the re-sticks are undecided (mu_k = 0, at the limit's edge, too brief to see, in a
+-- dip, or the swing too fast) so are the breakaways after them: that row then reads the first
+-- breakaway alone, from both sides.
+local function at_the_limit()
+  return no_cycle() or swing_too_fast() or (param.mu_k == 0 and "μk = 0: stops at the static limit") or stick_too_brief()
+    or stops_at_the_edge() or grazes_a_stop() or nil
+end
+local function run_over() return reached(run_length()) end
+
 local never_sticks = "never sticks again in the run"
 local no_second = "no second breakaway in the run"
 
