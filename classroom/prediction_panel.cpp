@@ -236,31 +236,19 @@ Closeness judged(const lessons::Prediction& prediction, const std::string& answe
   return closeness(prediction, answer, row);
 }
 
-// The class's line at its longest whatever the class answers and the run measures: a number of
-// three figures with a sign, twice the measurement's size off it ("class: −88.8 N · −178 N, 200 %
-// below the measurement"), or the longest word judged wrong against the longest other.
-std::string longest_class_line(const lessons::Prediction& prediction, const lessons::ExpectationResult* row) {
-  if (row == nullptr) return "class: ?";
-  lessons::ExpectationResult ended = *row;
-  ended.measured_yet = true;
-  ended.hand_pulled = false;
-  if (!prediction.is_choice()) {
-    ended.measured = 88.8;
-    return answer_and_closeness(prediction, "-88.8", closeness(prediction, "-88.8", ended));
-  }
-  std::string answer, truth;
+// The class's answer at its widest whatever the class answers: a number of three figures with
+// a sign as typed ("-88.8 N"), or the longest word.
+std::string widest_answer(const lessons::Prediction& prediction) {
+  if (!prediction.is_choice()) return answer_shown(prediction, "-88.8");
+  std::string widest;
   for (const std::string& word : prediction.choices) {
-    if (word.size() > answer.size()) answer = word;
+    if (word.size() > widest.size()) widest = word;
   }
-  for (const std::string& word : prediction.choices) {
-    if (word != answer && word.size() > truth.size()) truth = word;
-  }
-  ended.measured_text = truth;
-  return answer_and_closeness(prediction, answer, closeness(prediction, answer, ended));
+  return widest;
 }
 
-// Once the theory is shown, nothing: the class's lines are the theory table's notes
-// (class_notes). While a mystery keeps the theory, the class's answer, the theory (hidden) and the
+// Once the theory is shown, nothing: the class's answers are a column of the theory table
+// (class_answers). While a mystery keeps the theory, the class's answer, the theory (hidden) and the
 // measurement side by side, each row's name above them and how close the class came below.
 void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                       const classroom_state::ClassPredictions& predictions, const draw::Theme& theme, bool theory_withheld,
@@ -269,7 +257,7 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
   const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame |
                                 ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_NoClip;
-  // With the theory shown the class's lines are the theory table's notes (class_notes), or,
+  // With the theory shown the class's answers are a column of the theory table (class_answers), or,
   // where the table cannot be whole in the column, each under its row's name above the table,
   // all in sight before the table's rows that scroll.
   if (!theory_withheld && lines_in_table) return;
@@ -339,16 +327,16 @@ void after_the_reveal(const lessons::Lesson& lesson, const std::vector<lessons::
 
 }  // namespace
 
-draw::RowNotes class_notes(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                           const classroom_state::ClassPredictions& predictions) {
-  draw::RowNotes notes;
+draw::ClassAnswers class_answers(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
+                                 const classroom_state::ClassPredictions& predictions) {
+  draw::ClassAnswers answers;
   for (const lessons::Prediction& prediction : lesson.predictions()) {
     const lessons::ExpectationResult* row = row_of(rows, prediction);
     const std::string answer = answer_of(predictions, prediction);
-    const Closeness near = row ? judged(prediction, answer, *row, false) : Closeness{"class: ?", false};
-    notes[prediction.expectation] = {answer_and_closeness(prediction, answer, near), near.close};
+    const bool close = row != nullptr && judged(prediction, answer, *row, false).close;
+    answers[prediction.expectation] = {answer_shown(prediction, answer), close, widest_answer(prediction)};
   }
-  return notes;
+  return answers;
 }
 
 // The theory and the measurement are the theory table's, drawn right under the class's lines
@@ -426,24 +414,8 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
     }
     return height + style.ItemSpacing.y;
   }
-  if (predictions.revealed && !theory_withheld) {
-    // The class's lines under their rows of the theory table, across it, each as it is or as
-    // long as an answer typed later may make it: the column is planned as the lesson opens,
-    // before the class answers.
-    const float row_padding = 2.0f * style.CellPadding.y;
-    const float across = width - 2.0f * style.CellPadding.x;
-    for (const lessons::Prediction& prediction : lesson.predictions()) {
-      const lessons::ExpectationResult* row = row_of(rows, prediction);
-      const std::string answer = answer_of(predictions, prediction);
-      const Closeness near = row ? judged(prediction, answer, *row, theory_withheld) : Closeness{"class: ?", false};
-      float line = 0.0f;
-      for (const std::string& text : {answer_and_closeness(prediction, answer, near), longest_class_line(prediction, row)}) {
-        line = std::max(line, ImGui::CalcTextSize(text.c_str(), nullptr, false, across).y + row_padding);
-      }
-      height += line;
-    }
-    return height;
-  }
+  // In the theory table (lines_in_table), nothing above it.
+  if (predictions.revealed && !theory_withheld) return 0.0f;
   if (predictions.revealed) {
     // As after_the_reveal lays it out: the headers, then each row's name, numbers and closeness.
     const float row_padding = 2.0f * style.CellPadding.y;
@@ -519,7 +491,8 @@ void PredictionPanel::style(draw::FrameStyle& style, const classroom_state::Play
   // A teacher who takes no predictions, or a lesson that asks for none, has the theory table as it was.
   if (!asking || lesson.predictions().empty()) return;
   style.theory_hidden = classroom_state::theory_hidden(lesson, predictions, asking);
-  if (predictions.revealed && !theory_withheld()) style.theory_notes = class_notes(lesson, playback.readings().expectations, predictions);
+  // Before the reveal too: the column is planned for the table they will be in (it is drawn only once revealed).
+  if (!theory_withheld()) style.class_answers = class_answers(lesson, playback.readings().expectations, predictions);
   style.predictions = [this, &playback, &colours, &controls, theory_withheld](bool lines_in_table) {
     // Answers are given before the run: once it has started they are what the class said.
     const bool editable = !predictions.revealed && playback.lesson().scene().frame() == 0;
@@ -540,12 +513,10 @@ void PredictionPanel::style(draw::FrameStyle& style, const classroom_state::Play
     const float font_size = ImGui::GetFontSize();
     const auto& rows = playback.readings().expectations;
     const draw::FrameStyle::AnswersHeight height{predictions_contents_height(on_show, rows, asked, width, withheld),
-                                                 predictions_contents_height(on_show, rows, revealed, width, withheld),
                                                  predictions_contents_height(on_show, rows, revealed, width, withheld, false)};
     if (planned && planned->lesson_path == on_show.path() && planned->script_loads == playback.script_loads() &&
         planned->questions == on_show.predictions().size() && planned->width == width && planned->font_size == font_size) {
-      planned->outgrown = height.asked > planned->height.asked || height.revealed > planned->height.revealed ||
-                          height.revealed_above > planned->height.revealed_above;
+      planned->outgrown = height.asked > planned->height.asked || height.revealed_above > planned->height.revealed_above;
       return planned->height;
     }
     planned = PlannedHeight{on_show.path(), playback.script_loads(), on_show.predictions().size(), width, font_size, height, false};

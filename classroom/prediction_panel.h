@@ -35,13 +35,13 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
 // close it came, "class: 3.5 N · −0.42 N, 11 % below the measurement" ("class: no prediction").
 std::string answer_and_closeness(const lessons::Prediction& prediction, const std::string& answer, const Closeness& near);
 
-// Once the theory is shown, the class's line under each predicted row of the theory table
-// (FrameStyle::theory_notes), by the row's name: "class: 3.5 N · −0.42 N, 11 % below the
-// measurement" in the good colour where close. The row's name is the theory table's: the
-// class's rows came a second time above it, two lines each, and pushed its last rows out of a
-// projector's column (issue 31).
-draw::RowNotes class_notes(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
-                           const classroom_state::ClassPredictions& predictions);
+// The class's answer to each predicted row, for its column of a projector's theory table
+// (FrameStyle::class_answers), by the row's name: "3.5 N" in the good colour where close, "—"
+// unanswered. The row's name is the theory table's: the class's rows came a second time above
+// it, two lines each, and pushed its last rows out of a projector's column (issue 31); a line of
+// words under each row still took two lines at projector text.
+draw::ClassAnswers class_answers(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
+                                 const classroom_state::ClassPredictions& predictions);
 
 // What the prediction panel reports for tests that click it: `remember(name)` after each
 // control ("prediction NAME" a number's box, "prediction NAME: WORD" a choice, "reveal").
@@ -53,7 +53,7 @@ struct PredictionControls {
 // The panel's contents: before the reveal the questions with the class's answers (editable
 // while `editable`: at t = 0) and what the run has measured so far beside each answer given (an
 // empty answer's measurement is held back: it is the answer), and the reveal button;
-// after it nothing while `lines_in_table` (the class's lines are class_notes, under their rows of
+// after it nothing while `lines_in_table` (the class's answers are class_answers, a column of
 // the theory table), else each predicted row's name and the class's line above the table; with `theory_withheld` (a mystery pair's values are in it: classroom_state/mystery.h):
 // the class's answer, the theory ("hidden") and the measurement side by side, the class judged
 // against the measurement alone.
@@ -61,8 +61,7 @@ void predictions_contents(const lessons::Lesson& lesson, const std::vector<lesso
                           classroom_state::ClassPredictions& predictions, bool editable, const draw::Theme& theme,
                           const PredictionControls& controls, bool theory_withheld = false, bool lines_in_table = true);
 // The height predictions_contents takes at a width (the panel's inside), in the current font;
-// revealed with the theory shown, the class's lines under the theory table's rows, each at the
-// longest an answer may make it.
+// revealed with the theory shown and `lines_in_table`, nothing (their column is the table's).
 float predictions_contents_height(const lessons::Lesson& lesson, const std::vector<lessons::ExpectationResult>& rows,
                                   const classroom_state::ClassPredictions& predictions, float width, bool theory_withheld = false,
                                   bool lines_in_table = true);

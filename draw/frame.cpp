@@ -437,7 +437,7 @@ TheoryColumns theory_columns(const FrameStyle& style) {
 struct ColumnChoice {
   ColumnPlan plan;
   bool theory_scrolls = false;
-  bool class_lines_in_table = true;  // each class's line under its row of the revealed theory table
+  bool class_answers_in_table = true;  // the class's answers a column of the revealed theory table
 };
 
 ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display,
@@ -449,20 +449,20 @@ ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& styl
   ColumnChoice choice{plan_column(lesson, style, display, table)};
   if (style.predictions_height) {
     const FrameStyle::AnswersHeight answers = style.predictions_height(inside);
-    // In projector mode, the theory table revealed under the class's lines at the run's end,
-    // whole, where the friction pairs can give way for it (issue 31: push's last row was a
-    // scroll away); it is planned at its tallest, which no value the run measures changes. Where
+    // In projector mode, the theory table revealed with the class's answers in a column of
+    // their own at the run's end, whole, where the friction pairs can give way for it (issue 31:
+    // push's last row was a scroll away); it is planned at its tallest, which no value the run measures changes. Where
     // even that leaves too little room (or would fold the sliders away), the answers alone are
     // planned for and the revealed table scrolls. A screen's column keeps the plan it had (its
     // theory table has a panel of its own beside the tabs, a mystery's tab under it).
     if (style.projector) {
       const float revealed_table =
-          theory_contents_tallest_height(readings.expectations, inside, "", "", false, theory_columns(style));
-      choice.plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed + revealed_table), true);
+          theory_contents_tallest_height(readings.expectations, inside, "", "", false, theory_columns(style), style.class_answers);
+      choice.plan = plan_column(lesson, style, display, std::max(answers.asked, revealed_table), true);
     }
     if (!style.projector || !choice.plan.theory_whole ||
         choice.plan.parameters_step > style.parameters_step_for_the_theory) {
-      choice.class_lines_in_table = false;
+      choice.class_answers_in_table = false;
       choice.plan = plan_column(lesson, style, display, std::max(answers.asked, answers.revealed_above), true);
     }
     // The answers alone, before the reveal, have the room planned for them: no scroll bar to
@@ -607,11 +607,11 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
 
 // The theory's part of the column: the class's predictions first; before the reveal they stand
 // in for the theory.
-void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadings& readings, bool class_lines_in_table) {
-  if (style.predictions) style.predictions(class_lines_in_table);
+void predictions_and_theory(const FrameStyle& style, const lessons::LessonReadings& readings, bool class_answers_in_table) {
+  if (style.predictions) style.predictions(class_answers_in_table);
   if (!style.theory_hidden) {
     theory_contents(readings.expectations, theme(style.theme), readings.error, readings.caveat, style.hidden.theory(),
-                    class_lines_in_table ? style.theory_notes : RowNotes{},
+                    class_answers_in_table ? style.class_answers : ClassAnswers{},
                     theory_columns(style));
   }
 }
@@ -638,7 +638,7 @@ void books_tabs(lessons::Lesson& lesson, const FrameStyle& style, const lessons:
   if (begin_panel("books", "", at, size, plan.books_scroll) &&
       ImGui::BeginTabBar(plan.theory_in_tabs ? "books with theory" : "books")) {
     if (plan.theory_in_tabs && begin_tab(names[0])) {
-      predictions_and_theory(style, readings, column.class_lines_in_table);
+      predictions_and_theory(style, readings, column.class_answers_in_table);
       ImGui::EndTabItem();
     }
     if (begin_tab(names[1])) {
@@ -680,7 +680,7 @@ void column_panels(lessons::Lesson& lesson, const FrameStyle& style, const lesso
   } else if (!plan.theory_in_tabs) {
     if (begin_panel("theory", style.theory_hidden ? "Predict, then watch" : "Theory against simulation", at,
                     ImVec2(width, plan.theory), column.theory_scrolls)) {
-      predictions_and_theory(style, readings, column.class_lines_in_table);
+      predictions_and_theory(style, readings, column.class_answers_in_table);
     }
     end_panel();
     at.y += plan.theory + gap;

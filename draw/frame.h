@@ -110,21 +110,22 @@ struct FrameStyle {
   std::function<void()> more_tabs;
   // The class's predictions (the window), drawn at the top of the theory panel; their heights
   // at the panel's inside width before the reveal and after it (the column is planned for the
-  // taller once, with the revealed theory table under the class's lines where the column has
-  // the room, so that it does not move at the reveal). With `theory_hidden` they take the theory table's place, and
+  // taller once, with the revealed theory table and the class's answers in it where the column
+  // has the room, so that it does not move at the reveal). With `theory_hidden` they take the theory table's place, and
   // nothing that states a theory value is drawn: the table, the plots' theory curves.
-  // `lines_in_table`: the class's lines go under their rows in the theory table (theory_notes),
-  // where the column holds it whole; else above it, each under its row's name, in sight.
+  // `lines_in_table`: the class's answers are a column of the theory table (class_answers), where
+  // the column holds it whole (projector mode); else their lines go above it, each under its
+  // row's name, in sight.
   std::function<void(bool lines_in_table)> predictions;
   struct AnswersHeight {
     float asked = 0.0f;     // before the reveal: the questions and the class's answers
-    float revealed = 0.0f;  // after it: the class's lines under the theory table's rows (theory_notes)
     float revealed_above = 0.0f;  // after it, the class's lines under their rows' names above the table
   };
   std::function<AnswersHeight(float width)> predictions_height;
-  // Once revealed, the class's line under each predicted row of the theory table (its name is
-  // the row's: the class's rows no longer come a second time above the table).
-  RowNotes theory_notes;
+  // The class's answers, by the predicted rows' names, for their column of a projector's theory
+  // table (the rows' names are the table's: the class's rows no longer come a second time above
+  // it). Given before the reveal too, at the widest each may read, for the column's plan.
+  ClassAnswers class_answers;
   // Whether the answers have grown past the height planned for them (a value changed since the
   // plan): they scroll then, in the room they were given.
   std::function<bool()> predictions_outgrew;

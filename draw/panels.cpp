@@ -194,6 +194,8 @@ std::string with_unit(double value, const std::string& unit) {
 struct TheoryCells {
   struct Cells {
     std::string theory, measured, error;
+    std::string answer;  // the class's (its column: TheoryColumns::verdicts with the answers), "" for a row not predicted
+    bool answer_close = false;
     std::string verdict;  // without the error column: the mark after the measured value ("\u2713")
     bool measured_yet, passes, hand_pulled;
     int error_lines = 1;  // 2: the error's unit under its number
@@ -201,9 +203,10 @@ struct TheoryCells {
   std::vector<Cells> cells;
   std::string error_heading;  // "error", or "error (N)" when every numeric row is in newtons
   bool error_column = true;
-  float widest[3];
+  bool class_column = false;  // the class's answers between the theory and the measurement
+  float widest[3];            // theory, measured, and the error or the class's answers
   float numbers() const {
-    return widest[0] + widest[1] + widest[2] + (error_column ? 6.0f : 4.0f) * ImGui::GetStyle().CellPadding.x;
+    return widest[0] + widest[1] + widest[2] + (error_column || class_column ? 6.0f : 4.0f) * ImGui::GetStyle().CellPadding.x;
   }
   // Beside the numbers, a name needs room for a word or two; with large text in a narrow
   // column there is none, and each name goes on a line of its own above its numbers.
@@ -251,22 +254,33 @@ void noted_headers(int columns) {
 }
 
 // The table's cells for a table `width` wide.
-// Without the error column (TheoryColumns::verdicts) each measured value has its verdict after it.
+// Without the error column (TheoryColumns::verdicts) each measured value has its verdict after it,
+// and the class's answers, where given, have a column of their own, as wide as the widest each may read.
 TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden, float width,
-                         TheoryColumns columns) {
+                         TheoryColumns columns, const ClassAnswers& answers = {}) {
   // The error's unit: once in the heading when every row has it (the cells stay narrow and the
   // names keep their room), else in each cell, after the number, or under it in a cell that
   // would not fit across the table with it beside (projector text).
   const std::string unit_for_all = shared_unit(rows);
   const bool error_column = columns == TheoryColumns::errors;
-  TheoryCells table{{}, unit_for_all.empty() ? "error" : "error (" + unit_for_all + ")", error_column, {}};
+  TheoryCells table{{}, unit_for_all.empty() ? "error" : "error (" + unit_for_all + ")", error_column,
+                    !error_column && !answers.empty(), {}};
   float* widest = table.widest;
   widest[0] = ImGui::CalcTextSize("theory").x;
   widest[1] = ImGui::CalcTextSize("measured").x;
-  widest[2] = error_column ? ImGui::CalcTextSize(table.error_heading.c_str()).x : 0.0f;
+  widest[2] = error_column ? ImGui::CalcTextSize(table.error_heading.c_str()).x
+              : table.class_column ? ImGui::CalcTextSize("class").x
+                                   : 0.0f;
   for (const lessons::ExpectationResult& row : rows) {
     TheoryCells::Cells cell{row.numeric ? with_unit(row.predicted, row.unit) : row.predicted_text, "not yet", "",
-                            "", row.measured_yet, row.passes, row.hand_pulled && !row.passes};
+                            "", false, "", row.measured_yet, row.passes, row.hand_pulled && !row.passes};
+    if (const auto answer = answers.find(row.name); table.class_column && answer != answers.end()) {
+      cell.answer = answer->second.answer;
+      cell.answer_close = answer->second.close;
+      for (const std::string* text : {&answer->second.answer, &answer->second.widest}) {
+        widest[2] = std::max(widest[2], ImGui::CalcTextSize(text->c_str()).x);
+      }
+    }
     if (predictions_hidden) cell.theory = "hidden";
     // Its function failed (the message above the table says how): nothing of it is known.
     if (row.failed) {
@@ -333,7 +347,7 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
 }
 
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
-                     const std::string& caveat, bool predictions_hidden, const RowNotes& notes, TheoryColumns columns) {
+                     const std::string& caveat, bool predictions_hidden, const ClassAnswers& answers, TheoryColumns columns) {
   {
     ImGui::PushTextWrapPos(0.0f);
     if (!error.empty()) {
@@ -353,20 +367,20 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       return;
     }
     const float table_width = ImGui::GetContentRegionAvail().x;
-    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns);
+    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns, answers);
     const std::vector<TheoryCells::Cells>& cells = table.cells;
-    const int numbers = table.error_column ? 3 : 2;
+    const int numbers = table.error_column || table.class_column ? 3 : 2;
     const float* widest = table.widest;
     const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
     const bool names_above = table.names_above(table_width);
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
-    // A name above its numbers, or a note under them, spans the row: the cells must not clip it.
-    const bool spanning = names_above || !notes.empty();
-    if (ImGui::BeginTable("rows", names_above ? numbers : numbers + 1, spanning ? flags | ImGuiTableFlags_NoClip : flags)) {
+    // A name above its numbers spans the row: the cells must not clip it.
+    if (ImGui::BeginTable("rows", names_above ? numbers : numbers + 1, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
       // The numbers keep their width; a long name wraps.
       if (names_above) {
         // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
         ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
+        if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
         if (table.error_column) {
           ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
           ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
@@ -376,25 +390,13 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
       } else {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("theory");
+        if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
         ImGui::TableSetupColumn("measured");
         if (table.error_column) ImGui::TableSetupColumn(table.error_heading.c_str());
       }
       noted_headers(names_above ? numbers : numbers + 1);
-      // The note of the row before, once its cells are drawn.
-      const auto note_under = [&](std::size_t i) {
-        const auto note = notes.find(rows[i].name);
-        if (note == notes.end()) return;
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
-        if (note->second.good) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
-        shown_text(note->second.text.c_str());
-        if (note->second.good) ImGui::PopStyleColor();
-        ImGui::PopTextWrapPos();
-      };
       for (std::size_t i = 0; i < rows.size(); ++i) {
         const TheoryCells::Cells& cell = cells[i];
-        if (i > 0) note_under(i - 1);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (names_above) {
@@ -411,6 +413,12 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         }
         shown_text(cell.theory.c_str());
         ImGui::TableNextColumn();
+        if (table.class_column) {
+          if (cell.answer_close) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
+          if (!cell.answer.empty()) shown_text(cell.answer.c_str());
+          if (cell.answer_close) ImGui::PopStyleColor();
+          ImGui::TableNextColumn();
+        }
         if (!cell.measured_yet) {
           // "not yet", or a failed row's "?" (as the class's table beside it shows it).
           ImGui::TextDisabled("%s", cell.measured.c_str());
@@ -438,7 +446,6 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
         }
         note_text(cell.error.c_str());
       }
-      note_under(rows.size() - 1);
       ImGui::EndTable();
     }
   }
@@ -470,7 +477,7 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
 
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                                      const std::string& error, const std::string& caveat, bool predictions_hidden,
-                                     TheoryColumns columns) {
+                                     TheoryColumns columns, const ClassAnswers& answers) {
   if (rows.empty()) return theory_contents_height(rows, width, error, caveat, predictions_hidden, columns);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
@@ -493,7 +500,7 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
   const bool verdicts = columns == TheoryColumns::verdicts;
   std::vector<int> error_lines(rows.size(), 1);
   float least_verdicts_beside = width;
-  bool verdicts_above = false;
+  bool verdicts_above = false, verdicts_beside = false;
   for (const double off : {-0.00888, -8.8e-10}) {
     for (const bool passes : {true, false}) {
       std::vector<lessons::ExpectationResult> ended = rows;
@@ -506,10 +513,16 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
         row.measured = row.predicted + off;
         row.measured_text = row.predicted_text;
       }
-      const TheoryCells table = theory_cells(ended, predictions_hidden, width, columns);
+      const TheoryCells table = theory_cells(ended, predictions_hidden, width, columns, answers);
       for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
-      verdicts_above = verdicts_above || table.names_above(width);
-      least_verdicts_beside = std::min(least_verdicts_beside, std::max(1.0f, width - table.numbers() - padding));
+      // The room beside the numbers only where the names go beside them: where they go above,
+      // what the numbers leave (under 9 m's, down to none with the class's column) holds no name.
+      if (table.names_above(width)) {
+        verdicts_above = true;
+      } else {
+        verdicts_beside = true;
+        least_verdicts_beside = std::min(least_verdicts_beside, std::max(1.0f, width - table.numbers() - padding));
+      }
     }
   }
   height += font + row_padding;  // the headers
@@ -518,7 +531,11 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
     const float above = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, width - padding).y + numbers + 2.0f * row_padding;
     const float beside_room = verdicts ? least_verdicts_beside : least_beside;
     const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, beside_room).y, numbers) + row_padding;
-    height += verdicts && !verdicts_above ? beside : std::max(above, beside);
+    if (!verdicts || (verdicts_above && verdicts_beside)) {
+      height += std::max(above, beside);
+    } else {
+      height += verdicts_above ? above : beside;
+    }
   }
   return height + style.ItemSpacing.y;
 }

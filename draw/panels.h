@@ -54,28 +54,35 @@ float parameters_panel_height(const lessons::Lesson& lesson, float width, std::s
 // `error`: the script could not work the table out (shown instead of it); `caveat`: why the
 // rows should not be trusted yet (shown above them); `predictions_hidden`: the predicted and
 // error columns say "hidden" (a mystery's values would be read off them).
-// A line of words under a row's numbers, across the table: the class's answer to that row and
-// how close it came (classroom/prediction_panel.h), by the row's name. `good`: in the theme's good colour.
 // The theory table's columns: theory, measured and the error (a screen's); or theory and
 // measured, each measured value followed by its verdict (\u2713, \u2717), which a projector's text
 // needs: the error's column pushed each row's name onto a line of its own, and its unit under
 // its number, so a row took four lines (stacked_blocks' five rows did not fit under its sliders).
 enum class TheoryColumns { errors, verdicts };
-struct RowNote {
-  std::string text;
-  bool good = false;
+// The class's answer to a predicted row, in a column of its own between the theory and the
+// measurement (a projector's table, TheoryColumns::verdicts; classroom/prediction_panel.h):
+// `answer` as the class gave it ("1.5 N", "tips", "\u2014" unanswered), in the good colour where
+// `close` (within 10 % of the measurement, or the same word). `widest`: the widest it may read
+// whatever the class answers later ("\u221288.8 N", the longest word), so that the table, planned
+// from the lesson's opening, keeps its columns at the reveal. A line of words under each row
+// ("class: 1.5 N \u00b7 \u22121.19 N, 44 % below the measurement") took two lines at projector text
+// where the column takes none (stacked_blocks' two answers: four lines of its table).
+struct ClassAnswer {
+  std::string answer;
+  bool close = false;
+  std::string widest;
 };
-using RowNotes = std::map<std::string, RowNote>;
+using ClassAnswers = std::map<std::string, ClassAnswer>;  // by the theory row's name
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
                   const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false,
                   TheoryColumns columns = TheoryColumns::errors);
 void energy_panel(const Scene& scene, ImVec2 corner, ImVec2 size, const Theme& theme);
 void model_panel(const lessons::Lesson& lesson, ImVec2 corner, ImVec2 size);
 // What the theory, energy and model panels hold, for a window that shows them as tabs of one panel.
-// `notes`: a line under the numbers of each row they name.
+// `answers`: the class's, a column of their own where `columns` is TheoryColumns::verdicts.
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme,
                      const std::string& error = "", const std::string& caveat = "", bool predictions_hidden = false,
-                     const RowNotes& notes = {}, TheoryColumns columns = TheoryColumns::errors);
+                     const ClassAnswers& answers = {}, TheoryColumns columns = TheoryColumns::errors);
 // The height theory_contents takes at a width (the panel's inside), in the current font.
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                              const std::string& error = "", const std::string& caveat = "",
@@ -84,9 +91,11 @@ float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows
 // of up to three figures and a sign and words as the theory says them (its numbers' widths change
 // as their rows fill in): planned for from a lesson's opening, the revealed table needs no more
 // room at the run's end unless a measurement is longer than that (a failed row's other word).
+// With `answers` (TheoryColumns::verdicts), their column at the widest each may read.
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
                                      const std::string& error = "", const std::string& caveat = "",
-                                     bool predictions_hidden = false, TheoryColumns columns = TheoryColumns::errors);
+                                     bool predictions_hidden = false, TheoryColumns columns = TheoryColumns::errors,
+                                     const ClassAnswers& answers = {});
 // A tab of a panel's tab bar (ImGui::BeginTabItem), its name noted for the layout test.
 bool begin_tab(const char* label, int flags = 0);  // ImGuiTabItemFlags
 void energy_contents(const Scene& scene, const Theme& theme);

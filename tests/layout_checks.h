@@ -210,10 +210,13 @@ inline std::optional<std::size_t> lower_panel_text(const draw::FrameRecord& reco
 
 // The texts one of the class's predictions shows, in the order drawn, each with whether it is a
 // prefix: before the reveal its question, the answer and "measured: …"; revealed, its row's
-// name and the class's line (the answer with its unit and how close it came). Empty (and a
+// name and the class's answer in its column of the theory table ("-12.5 N", "—" unanswered), or,
+// where the frame found the table too tall for the column and the record shows the class's lines
+// above it, the class's line (the answer with its unit and how close it came). Empty (and a
 // failure) when the lesson has no row of the prediction's name.
 inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window, const lessons::Prediction& prediction,
-                                                       bool revealed, const std::string& where) {
+                                                       bool revealed, const std::string& where,
+                                                       const draw::FrameRecord& record) {
   const std::string answer = window.predictions().answers[prediction.expectation];
   if (!revealed) return {{prediction.question, false}, {answer, false}, {"measured: ", true}};
   const std::vector<lessons::ExpectationResult>& rows = window.playback().readings().expectations;
@@ -223,7 +226,11 @@ inline std::vector<std::pair<std::string, bool>> answer_texts(Classroom& window,
     ADD_FAILURE() << where << ": no row " << prediction.expectation;
     return {};
   }
-  return {{prediction.expectation, false}, {answer_and_closeness(prediction, answer, closeness(prediction, answer, *row)), false}};
+  if (lower_panel_text(record, 0, "class: ", true)) {
+    return {{prediction.expectation, false}, {answer_and_closeness(prediction, answer, closeness(prediction, answer, *row)), false}};
+  }
+  return {{prediction.expectation, false},
+          {class_answers(window.playback().lesson(), rows, window.predictions()).at(prediction.expectation).answer, false}};
 }
 
 }  // namespace frictionlab::classroom::layout_checks

@@ -421,11 +421,11 @@ TEST_P(WindowLayout, EveryAnswerIsInSightAtTheRunsEnd) {
         }
         // Each prediction's texts in the order drawn, its first the first of that name: the
         // class's row above the theory table where the class's lines stand apart, else the theory
-        // table's own row, the class's line under it (in the table's order of rows, which need not
-        // be the questions').
+        // table's own row, the class's answer in its column (in the table's order of rows, which
+        // need not be the questions').
         for (const lessons::Prediction& prediction : predictions) {
           std::size_t next = 0;
-          for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where)) {
+          for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where, record)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             ++checked;
             if (!found) {

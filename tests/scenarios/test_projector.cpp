@@ -205,7 +205,7 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
           // Each prediction's texts in their order; revealed, the class's lines come in the
           // theory table's order of rows, which need not be the questions'.
           std::size_t next = 0;
-          for (const auto& [text, prefix] : answer_texts(window, prediction, at_the_end, where)) {
+          for (const auto& [text, prefix] : answer_texts(window, prediction, at_the_end, where, record)) {
             const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
             if (!found) {
               ADD_FAILURE() << where << ": \"" << text << "\" is not drawn";
@@ -227,26 +227,30 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
 
 // Issue 31: at the run's end in projector mode push's revealed theory table scrolled, its last
 // row ("speed at the end") cut, under the class's rows of two lines each (each row's name a
-// second time). Now each class's line stands under its row of the theory table, and the column
+// second time). Now each class's answer stands in its row of the theory table, in a column of
+// its own (a line of words under the row took two lines at projector text), and the column
 // is planned from the lesson's opening for the table at its tallest, the friction pairs folding
 // for it where they must (never the whole Parameters panel). For every built-in lesson with
 // predictions, with the class's answers given or not, with the stopwatch and without, at the
 // run's end before the reveal and after it: every text the Predict tab draws (each question and
-// answer; each class's line and theory row) whole and in sight, and the tab does not scroll.
+// answer; each class's answer and theory row) whole and in sight, and the tab does not scroll.
 //
 // A projector's table leaves out the error column, each measured value followed by its verdict
 // (TheoryColumns::verdicts): driven_wheel's and spring_pull's tables (with the stopwatch on) came
 // to fit then; they scrolled with the error column, whose unit went under its number.
 //
+// stacked_blocks' table came to fit with the class's answers in a column (its two class's lines
+// took four lines of the table), but for the stopwatch's strip, which takes the last of it.
+//
 // Not yet: lessons whose revealed table, at projector text, needs more of the column than the
 // sliders leave it (the table's rows take two lines each at least, their names being longer
-// than the column leaves beside the numbers): stacked_blocks (its five rows and the class's
-// lines about 690 px against the 480 px left under its sliders with both pairs folded), and
+// than the column leaves beside the numbers): stacked_blocks with the stopwatch on, and
 // check_the_article, contact_area, friction_models, lubricated, terrain and wedge. Theirs
-// scrolls, after the class's lines; each must still break the rule, so the list only shrinks.
+// scrolls, after the class's lines; each must still break the rule, so the lists only shrink.
 TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrNot) {
-  const std::set<std::string> not_yet = {"stacked_blocks", "check_the_article", "contact_area", "friction_models",
-                                         "lubricated",     "terrain",           "wedge"};
+  const std::set<std::string> not_yet = {"check_the_article", "contact_area", "friction_models", "lubricated", "terrain",
+                                         "wedge"};
+  const std::set<std::string> not_yet_with_the_stopwatch = {"stacked_blocks"};
   std::map<std::string, int> still_broken;
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
@@ -254,15 +258,17 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
   int lessons_checked = 0;
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     const std::string& name = entry.name;
-    // A lesson on the list: what breaks the rule is counted, not failed.
+    // A lesson on the list (with the stopwatch on, on its list): what breaks the rule is counted, not failed.
+    bool stopwatch_on = false;
     const auto broken = [&](bool holds) {
-      if (not_yet.count(name) > 0) {
+      if (not_yet.count(name) > 0 || (stopwatch_on && not_yet_with_the_stopwatch.count(name) > 0)) {
         still_broken[name] += holds ? 0 : 1;
         return ::testing::AssertionSuccess();
       }
       return holds ? ::testing::AssertionSuccess() : ::testing::AssertionFailure();
     };
     for (const bool stopwatch : {false, true}) {
+      stopwatch_on = stopwatch;
       for (const bool answered : {false, true}) {
         ClassroomOptions options = class_window(lessons::resolve_lesson(name), window_screens[2]);
         options.window.predictions = true;
@@ -291,7 +297,7 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
           // revealed every theory row's name.
           for (const lessons::Prediction& prediction : predictions) {
             std::size_t next = 0;
-            for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where)) {
+            for (const auto& [text, prefix] : answer_texts(window, prediction, revealed, where, record)) {
               if (text.empty()) continue;  // an empty answer's box: no text in it
               const std::optional<std::size_t> found = lower_panel_text(record, next, text, prefix);
               if (!found) {
@@ -321,6 +327,9 @@ TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrN
   EXPECT_GE(lessons_checked, 15) << "too few lessons with predictions were checked";
   for (const std::string& lesson : not_yet) {
     EXPECT_GT(still_broken[lesson], 0) << lesson << " now shows its whole table: take it off the not_yet list";
+  }
+  for (const std::string& lesson : not_yet_with_the_stopwatch) {
+    EXPECT_GT(still_broken[lesson], 0) << lesson << " now shows its whole table with the stopwatch on: take it off the list";
   }
 }
 
