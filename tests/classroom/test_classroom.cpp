@@ -49,6 +49,21 @@ TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
   EXPECT_EQ(free.classroom().lock_words(), "");
 }
 
+// The frame a class sees at the run's end with the theory revealed, on a screen (1280 × 720) or a
+// projector (1920 × 1080): what both theory-table tests below read.
+draw::FrameRecord revealed_at_the_end(ClassroomHands& hands, bool projector) {
+  hands.classroom().window_settings().projector = projector;
+  const ImVec2 display = projector ? ImVec2(1920.0f, 1080.0f) : ImVec2(1280.0f, 720.0f);
+  hands.set_display(display);
+  hands.classroom().predictions().revealed = true;
+  hands.playback().run_to(hands.lesson().duration());
+  hands.frame();
+  hands.frame();
+  draw::FrameRecord record;
+  hands.frame(0.0, display, &record);
+  return record;
+}
+
 // The theory table's error column has a unit: in its heading when every row shares it
 // (tipping_box's force: "error (N)"), else in each cell (check_the_article's seconds, metres,
 // joules and newtons), after the number. A projector's table has no error column
@@ -56,15 +71,8 @@ TEST(Classroom, ALockedLessonMenuSaysWhyItsLessonsAreGreyed) {
 TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
   for (const std::string lesson : {"tipping_box", "check_the_article"}) {
     ClassroomHands hands(lesson);
-    hands.classroom().window_settings().projector = false;
-    const ImVec2 display(1280.0f, 720.0f);  // the screen's table: a projector's has no error column
-    hands.set_display(display);
-    hands.classroom().predictions().revealed = true;
-    hands.playback().run_to(hands.lesson().duration());
-    hands.frame();
-    hands.frame();
-    draw::FrameRecord record;
-    hands.frame(0.0, display, &record);
+    // The screen's table: a projector's has no error column.
+    const draw::FrameRecord record = revealed_at_the_end(hands, false);
     const std::string& where = lesson;
     std::set<std::string> units;
     for (const lessons::ExpectationResult& row : hands.lesson().expectations()) {
@@ -104,15 +112,7 @@ TEST(Classroom, TheTheoryTablesErrorsHaveTheirUnit) {
 TEST(Classroom, AProjectorsTheoryTableHasAVerdictAfterEachMeasuredValueAndNoErrorColumn) {
   for (const std::string lesson : {"tipping_box", "check_the_article"}) {
     ClassroomHands hands(lesson);
-    hands.classroom().window_settings().projector = true;
-    const ImVec2 display(1920.0f, 1080.0f);
-    hands.set_display(display);
-    hands.classroom().predictions().revealed = true;
-    hands.playback().run_to(hands.lesson().duration());
-    hands.frame();
-    hands.frame();
-    draw::FrameRecord record;
-    hands.frame(0.0, display, &record);
+    const draw::FrameRecord record = revealed_at_the_end(hands, true);
     int verdicts = 0;
     for (std::size_t i = 0; i < record.texts.size(); ++i) {
       const draw::ShownText& text = record.texts[i];
