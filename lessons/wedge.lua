@@ -807,21 +807,17 @@ expect { "slide at the end", unit = "m",
 -- above the surface: the world's N is less by that much (a block held at the pivot on a plank
 -- swinging 25.3° at 10 rad/s, 10 kg: N 0.95 N under the model's at 2.56 s at 240 Hz, 0.47 at
 -- 480, in step with θ'², and 0.17 N off with this term). The overlap's model follows the
--- world's raise only so far: the N it leaves measured 0.6 to 1.25 times this term (0.1 kg held
--- at the pivot on a plank swinging 22.67° at 10 rad/s: the term 0.0046 N at 2.5 s, 0.0017 N
--- left, halving with the step), so the row allows half of it besides: a measured share, not a
--- derived one.
+-- world's raise only so far: the world's shortfall measured 0.6 to 1.25 times this term (0.1 kg
+-- held at the pivot on a plank swinging 22.67° at 10 rad/s: the term 0.0046 N at 2.5 s, 0.0017 N
+-- apart from the shortfall, halving with the step). It halves with the step, a stepped world's
+-- error rather than physics: the row allows it (1.25 times, a measured share, not a derived
+-- one) and the theory stays the model's.
 local function raised_by(t)
   contact_lost_by(t)
   return raised[math.min(sample(t), #raised)] or 0
 end
 expect { "normal force halfway", unit = "N",
-  predicted = function()
-    local t = duration / 2
-    if no_model(t) then return no_model(t) end
-    local turn_rate = theta0 * omega * math.cos(omega * (t - 0.5 * h))
-    return mid_step(true, "normal", t) - mass * turn_rate * turn_rate * raised_by(t)
-  end,
+  predicted = function() return no_model(duration / 2) or mid_step(true, "normal", duration / 2) end,
   measured = function() return no_model(duration / 2) or recorded("normal_force", duration / 2) end,
   -- Read where the world reads it (the model's mid-step, as the reading is the step's mean), the
   -- rest is named here:
@@ -842,7 +838,9 @@ expect { "normal force halfway", unit = "N",
   --   rate, which is not explained yet (the 1 % of the weight below covers it there).
   -- - Single precision: the normal impulse keeps that step's roundings of the block's velocity,
   --   (1 + 9·k)·2^-24 of it over h, k = 4 constraints (two points, normal and friction), times m.
-  -- - The raise's share the overlap's model misses (raised_by above): half the raise's term.
+  -- - The raise (raised_by above): the world's N falls short of the model's by 0.6 to 1.25
+  --   times m·θ'²·(raise), halving with the step: a stepped world's error, so allowed here, not
+  --   taken off the theory, at the largest share measured (1.25: measured, not derived).
   -- - And 1 % of the weight, the flat allowance this row had, kept for what none of the above
   --   bounds: on the article's own example the world's N at 2.5 s is 0.017, 0.0065 and 0.0061 N
   --   over the model's at 240, 480 and 960 Hz, then 0.011 N under it at 2000 Hz and 0.049 N under
@@ -868,7 +866,7 @@ expect { "normal force halfway", unit = "N",
     local rounding = (1 + 9 * 4) * 2 ^ -24 * mass * block_speed / substep_length()
     local raise = mass * turn_rate * turn_rate * raised_by(t)
     return article_change + late_share(k) + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + rounding
-           + 0.5 * raise + 0.01 * mass * g
+           + 1.25 * raise + 0.01 * mass * g
   end }
 expect { "first slip", unit = "s",
   predicted = function()
