@@ -115,12 +115,16 @@ end
 --   that step. The row reads the pull recorded the frame before, the one the frame's first
 --   sub-step applied: within a frame's growth, pull_rate·step_length(), either way.
 -- * The listener: it takes friction within 1e-5 of mu_s·N for friction at the limit (its
---   breakaway tolerance), so a step asking that much more is still held. Its hold band does
---   not hold a growing pull: it keeps an excess only where the block slid into the step the
---   way the excess pushes and the step took most of that away, or where the excess dies away
---   step by step, and a steady pull's grows (`check --random 80`, seeds 1 to 25: no face
---   block broke away later than the step's growth allows; the light narrow block pulled fast
---   that issue 29 names, 0.153 N late against 0.165).
+--   breakaway tolerance), so a step asking that much more is still held. And its hold band
+--   may keep a contact just past mu_s·N one step more, while it tells the solver's leftover
+--   from a real excess (a growing pull's excess grows, so never two): one more step's growth.
+--   At one step a frame no face block used it (`check --random 80`, seeds 1 to 25; the light
+--   narrow block pulled fast that issue 29 names broke away 0.153 N late, under one step's
+--   0.165), but with --substeps 2 they do: 10 kg, mu 2, 50 N/s, the narrow block 0.26 N late
+--   where a frame's growth is 0.21. Not explained yet: with --substeps 2 a breakaway may come
+--   several sub-steps later than even two steps' growth (narrow, 3.1 kg, mu_k 2, mu_s 1.24,
+--   15.7 N/s: 0.74 N late; three feet, mu_s 0, mu_k 1.88, 27.56 N/s: 1.7 N, which main's 1 %
+--   missed too).
 -- * The solver: none. A block held still on a level bench, pulled at the bench's height,
 --   needs a normal impulse of its weight and a friction impulse of the pull, which the
 --   stuck solve gives (a block on feet gets a coefficient no share of the load reaches, and
@@ -153,7 +157,7 @@ for _, block in ipairs { { "wide", "wide" }, { "narrow", "narrow" }, { "three_fe
     measured = function() return breakaway(name) end,
     tolerance = function()
       local limit = pull_theory(0).breakaway_push
-      return pull_rate * step_length() + (breakaway_tolerance + rounding(name) + feet_split[name]) * limit
+      return 2 * pull_rate * step_length() + (breakaway_tolerance + rounding(name) + feet_split[name]) * limit
              + 2 ^ -24 * (limit + pull_rate * step_length())  -- the pull read is a float
     end }
 end
@@ -162,8 +166,8 @@ end
 -- them, not the weight the rows above assume), is max(mu_s, mu_k) whatever the mass. The
 -- breakaway step's friction is shown at the limit itself (the listener hands back what the
 -- solver held past it); a step before it may have held up to the breakaway tolerance past
--- it, with each side's rounding. No step term: the pull's growth moves when the limit is
--- reached, not the ratio there.
+-- it, with each side's rounding; and a step the hold band keeps past it shows what it held, up
+-- to a step's growth of the pull past mu_s·N (with --substeps 2, 4.8e-5 of mu_s over it).
 expect { "wide: most friction ÷ normal force",
   predicted = function() return math.max(param.mu_s, param.mu_k) end,
   measured = function()
@@ -174,7 +178,9 @@ expect { "wide: most friction ÷ normal force",
       if slipping[i] == 1 then return most end
     end
   end,
-  tolerance = function() return (breakaway_tolerance + rounding("wide")) * math.max(param.mu_s, param.mu_k) end }
+  tolerance = function()
+    return (breakaway_tolerance + rounding("wide")) * math.max(param.mu_s, param.mu_k) + pull_rate * step_length() / (mass * g)
+  end }
 -- The article gives each of three peaks N/3 and each of six N/6. For a rigid block on three or
 -- more feet in a row, statics cannot say how the load is shared: two equations (forces up and
 -- down, moments) for three or more unknowns. Real feet share it by how much each deflects, and
