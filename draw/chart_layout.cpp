@@ -248,9 +248,12 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
   const float s = fonts.scale;
-  ImFont* font = fonts.small;
+  // The ticks' labels and the levels' texts in the numbers' font: all that `font` measures
+  // below, but the x axis' name (the small text's, as the y axis' name and the legend).
+  ImFont* font = number_font(chart, fonts);
   const float text = font->FontSize;
   ChartLayout layout;
+  layout.level_font = font;
   const ChartAxes axes = axes_of(chart);
   layout.log_x = axes.x.log, layout.log_y = axes.y.log;
   layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
@@ -279,10 +282,17 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       // widens its range): half a tick label as wide as "−8888" past the end, then the name.
       // The levels' texts share that room, above it, beside the data (level_column).
       const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
-      const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(font, chart.x_label);
+      const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(fonts.small, chart.x_label);
       levels_beside = level_column(chart, font, s, size.x);
+      if (levels_beside == 0.0f && font != fonts.small) {
+        levels_beside = level_column(chart, fonts.small, s, size.x);
+        if (levels_beside > 0.0f) layout.level_font = fonts.small;
+      }
       layout.high_right.x -= std::max(x_label_room, levels_beside);
-      if (!chart.x_label.empty()) layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
+      // (Its smaller text centred on the tick labels' line.)
+      if (!chart.x_label.empty()) {
+        layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s + 0.5f * (text - fonts.small->FontSize));
+      }
     }
     // The tick column as wide as the labels the data area's height leads to (fit_y_ticks): the
     // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). No more: a steady
@@ -368,8 +378,8 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     layout.x_minor_ticks = minor_ticks(layout.x_ticks, layout.x_low, layout.x_high,
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
-  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, font, layout);
-  else place_level_texts(chart, axes.x, axes.y, text, s, font, layout);
+  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout);
+  else place_level_texts(chart, axes.x, axes.y, layout.level_font->FontSize, s, layout.level_font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
     layout.active = -1;
