@@ -253,7 +253,7 @@ void draw_axes(Painter& p, ImVec2 corner) {
   using TextKind = ChartLayout::AxisText::Kind;
   const auto axis_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImU32 colour) {
     // The ticks' labels in the numbers' font, the axes' names in the small text's.
-    const bool number = kind == TextKind::x_tick || kind == TextKind::y_tick;
+    const bool number = kind == TextKind::y_tick;  // the x ticks' labels in the small text (chart_layout.cpp)
     ImFont* font = number ? p.numbers : p.font;
     const float size = font->FontSize;
     p.draw->AddText(font, size, at, colour, words.c_str());
@@ -263,7 +263,7 @@ void draw_axes(Painter& p, ImVec2 corner) {
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
     const float x = p.at_axis_value(layout.x_ticks[i], layout.y_low).x;
     const std::string& label = layout.x_tick_labels[i];
-    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(p.numbers, label), low_left.y + x_labels_below), p.theme.text);
+    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(p.font, label), low_left.y + x_labels_below), p.theme.text);
   }
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
     const float y = p.at_axis_value(layout.x_low, layout.y_ticks[i]).y;

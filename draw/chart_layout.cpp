@@ -274,14 +274,16 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     if (chart.steady) {
       // The y label heads the legend's column and the x label ends the x ticks' line: the data
       // has the two lines of text they took (a plot on a page of its own, made tall).
-      layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
+      // The tick marks' 4 pt, then the x labels, in the small text: the y labels are the ones the
+      // levels are read against, and the key plot keeps a third of a projector's height.
+      layout.low_left.y = corner.y + size.y - fonts.small->FontSize - 4.0f * s;
       layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
       // The x label beyond the data's right end, on the tick labels' line, where no tick label
       // is: over the data's end it stood where the last tick's number goes (push's "10" under
       // "push (N)"). The room is the same whatever the data (the plot holds still as the run
       // widens its range): half a tick label as wide as "−8888" past the end, then the name.
       // The levels' texts share that room, above it, beside the data (level_column).
-      const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
+      const float past_end = 0.5f * width_of(fonts.small, x_tick_room) + 6.0f * s;
       const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(fonts.small, chart.x_label);
       levels_beside = level_column(chart, font, s, size.x);
       if (levels_beside == 0.0f && font != fonts.small) {
@@ -289,10 +291,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
         if (levels_beside > 0.0f) layout.level_font = fonts.small;
       }
       layout.high_right.x -= std::max(x_label_room, levels_beside);
-      // (Its smaller text centred on the tick labels' line.)
-      if (!chart.x_label.empty()) {
-        layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s + 0.5f * (text - fonts.small->FontSize));
-      }
+      if (!chart.x_label.empty()) layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
     }
     // The tick column as wide as the labels the data area's height leads to (fit_y_ticks): the
     // first ticks' labels may be narrower ("−5" where "−4.5" is drawn). No more: a steady

@@ -58,7 +58,7 @@ std::vector<Key> keys_of(const Chart& chart);
 
 float width_of(ImFont* font, const std::string& text);
 
-// The font of a chart's numbers, its tick labels and its levels' texts: on a plot on a page of
+// The font of a chart's numbers, its y tick labels and its levels' texts: on a plot on a page of
 // its own (Chart::steady, a projector's key plot) the body text's, which the back row reads the
 // levels against (issue 31: the small text's digits were 18 px high on a 1080-line projector);
 // elsewhere, and for every other text (the legend, the axes' names), the small text's. Levels'
