@@ -345,8 +345,17 @@ probe { "front_load", unit = "N", read = { on_floor, "load_right" } }
 
 -- Each plot shades the slip it is about: the floor's, where the pair breaks away and the friction
 -- on the bottom block drops to kinetic; the top block's, where it stops keeping up.
+-- The key plot's two levels are the top block's (N its load), as push's are its block's: the most its static
+-- friction can give to keep up (forward, so positive here), where the class sees it break away,
+-- and the kinetic friction it drops to once it slips. The top block's load is its weight (the
+-- pair stays flat until it slips, or the run ends half a second after its front lifts).
+local function top_load() return param.top_mass * g end
 plot { "Friction on each block", kind = "time", y = { "pull", "friction_on_top", "friction_on_bottom" },
-  shade = "floor_slipping" }
+  shade = "floor_slipping",
+  levels = {
+    { "μs·N (top)", function() return param["top_on_bottom.mu_s"] * top_load() end },
+    { "μk·N (top)", function() return param["top_on_bottom.mu_k"] * top_load() end },
+  } }
 plot { "Acceleration of each block", kind = "time", y = { "top_acceleration", "bottom_acceleration" }, shade = "top_slipping",
   theory = { { "top slipping: μk·g", function(t)
     if not no_theory() and t * param.pull_rate >= slip_pull() and not tipped_by(t) then return top_acceleration_after() end
