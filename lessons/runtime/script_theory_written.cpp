@@ -348,6 +348,28 @@ FarEnd far_end_of(const theory::BoxLanding& landing, double width, double height
   return far;
 }
 
+// How far above reach the lowest corner but the landing one is `late` s after the landing (0 or
+// less: within reach), the box's pose followed exactly: its centre on the parabola, its angle
+// turned by spin·late. The far end's first-order fall is not enough at coarse steps: at 9 Hz the
+// corner is met 54 ms after the landing, the box turned 0.33 rad since, and the far corner,
+// first-order 2 cm above reach, was 1 cm into the floor (both corners met in that step: the spin
+// stopped in the world, -21.3 rad/s predicted).
+double far_end_gap(const theory::BoxLanding& landing, double width, double height, double spin, double g, double late) {
+  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+  const double turned = landing.angle + spin * late;
+  const double c_late = std::cos(turned), s_late = std::sin(turned);
+  const double drop = g * landing.time * late + 0.5 * g * late * late;  // thrown level: falling g·t at the landing
+  double gap = std::numeric_limits<double>::infinity();
+  for (const double sx : {-0.5, 0.5}) {
+    for (const double sy : {-0.5, 0.5}) {
+      const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
+      if (std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12) continue;
+      gap = std::min(gap, sx * width * s_late + sy * height * c_late - landing.corner_y - drop);
+    }
+  }
+  return gap;
+}
+
 // The sub-steps of the impact's frame left after the sub-step that met the corner (0 without
 // sub-steps). That sub-step starts at the first sub-step boundary after the landing (the
 // late impact below, a bound on where in it the corner was met, is met in the same one); the
@@ -620,10 +642,7 @@ int thrown_box(lua_State* state) {
     // the exact parabola's: it meets the corner this long after the exact landing (0 unstepped).
     const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
     const double landing_rounding = landing_rounding_time(landing, width, height, centre_height, spin, g, step);
-    if (step > 0.0) {
-      const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
-      reach_gap = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
-    }
+    if (step > 0.0) reach_gap = far_end_gap(landing, width, height, spin, g, first_met);
     // A stepped world lands the box flat only where it meets the whole face in one step: a face
     // under 1 mm off flat whose far end is still above reach then meets one corner first, and
     // that corner's impact is what the first step shows (a 20 kg box at spin 19.5 rad/s, 0.15°
