@@ -326,6 +326,16 @@ double duration_of(LessonBuild& build) {
   return seconds;
 }
 
+// A row's number on the stack's top that is infinite or NaN would print as "inf" and fail as if
+// the world were wrong; it is the script's mistake (a division by zero at these values), said
+// where the row is declared (`side`: "…: expect 'name': predicted"), with what to give instead.
+void refuse_non_finite(lua_State* state, const std::string& side, const char* instead) {
+  if (std::isfinite(lua_tonumber(state, -1))) return;
+  const std::string got = describe(state, -1);
+  lua_pop(state, 1);
+  throw ScriptError(side + " gave " + got + "; " + instead);
+}
+
 }  // namespace
 
 std::optional<double> Lesson::order() const { return current_->order; }
@@ -477,13 +487,9 @@ std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
       const std::string where = expectation.declared_at + ": expect '" + expectation.name + "': ";
       build.push_value(expectation.predicted);
       row.numeric = lua_type(state, -1) == LUA_TNUMBER;
-      // An infinite or NaN row would print as "inf" and fail as if the world were wrong; it is the
-      // script's mistake (a division by zero at these values), said where the row is declared.
-      if (row.numeric && !std::isfinite(lua_tonumber(state, -1))) {
-        const std::string got = describe(state, -1);
-        lua_pop(state, 1);
-        throw ScriptError(where + "predicted gave " + got + "; where theory has no number at these values, say why in "
-                          "words, as in predicted = \"never slides\"");
+      if (row.numeric) {
+        refuse_non_finite(state, where + "predicted",
+                          "where theory has no number at these values, say why in words, as in predicted = \"never slides\"");
       }
       if (row.numeric) {
         row.predicted = lua_tonumber(state, -1);
@@ -501,12 +507,8 @@ std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
       if (!row.measured_yet) {
         row.measured_text = "not measured";
       } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
-        if (!std::isfinite(lua_tonumber(state, -1))) {
-          const std::string got = describe(state, -1);
-          lua_pop(state, 1);
-          throw ScriptError(where + "measured gave " + got + "; a reading must be a finite number, or a word saying why "
-                            "there is none, as in \"still sliding\"");
-        }
+        refuse_non_finite(state, where + "measured",
+                          "a reading must be a finite number, or a word saying why there is none, as in \"still sliding\"");
         row.measured = lua_tonumber(state, -1);
       } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
         // A word where a number is due says why there is no number yet ("still sliding"): the
