@@ -244,30 +244,17 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
   }
 }
 
-}  // namespace
-
-ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+// The data area inside the chart's corner and size (layout.low_left, layout.high_right), before
+// the legend has its say: a plain chart's tick column as wide as its labels, a steady one's
+// x label and level texts beside the data; other charts' legend under them. Returns the width of
+// the level texts' column beside the data (0: none); `label_width` becomes the tick column's.
+float frame_data_area(const Chart& chart, const ChartAxes& axes, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size,
+                      const Fonts& fonts, float& label_width, ChartLayout& layout) {
   const float s = fonts.scale;
-  // The ticks' labels and the levels' texts in the numbers' font: all that `font` measures
-  // below, but the x axis' name (the small text's, as the y axis' name and the legend).
-  ImFont* font = number_font(chart, fonts);
+  ImFont* font = layout.level_font;
   const float text = font->FontSize;
-  ChartLayout layout;
-  layout.level_font = font;
-  const ChartAxes axes = axes_of(chart);
-  layout.log_x = axes.x.log, layout.log_y = axes.y.log;
-  layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
-  for (const Tick& tick : ticks_every(axes.y, chart.y_tick_count)) {
-    layout.y_ticks.push_back(tick.value);
-    layout.y_tick_labels.push_back(tick.label);
-  }
-  float label_width = 0.0f;
-  for (const std::string& label : layout.y_tick_labels) label_width = std::max(label_width, width_of(font, label));
-  const std::vector<Key> keys = keys_of(chart);
-  if (chart.legend == Chart::Legend::only) return layout;
-
   const float line = text + 3.0f * s;
-  float levels_beside = 0.0f;  // the column beside the data the levels' texts take, if any
+  float levels_beside = 0.0f;
   if (chart.plain) {
     layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
     layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
@@ -314,51 +301,81 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     const bool labelled = std::any_of(chart.series.begin(), chart.series.end(), [](const ChartSeries& series) { return !series.labels.empty(); });
     layout.high_right = ImVec2(corner.x + size.x - (labelled ? 60.0f : 10.0f) * s, top);
   }
+  return levels_beside;
+}
+
+// As many x ticks as the data area's width holds, unless the chart says how many.
+void set_x_ticks(const Chart& chart, const Axis& x_axis, float data_width, float s, ChartLayout& layout) {
+  const int count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(data_width / (70.0f * s)));
+  layout.x_ticks.clear(), layout.x_tick_labels.clear();
+  for (const Tick& tick : ticks_every(x_axis, count)) {
+    layout.x_ticks.push_back(tick.value);
+    layout.x_tick_labels.push_back(tick.label);
+  }
+}
+
+// The points where they land in the data area; at most about two a pixel, the rest would be
+// drawn over each other. The theory's curves likewise, whole.
+void place_points(const Chart& chart, const ChartAxes& axes, ChartLayout& layout) {
+  const float w = layout.high_right.x - layout.low_left.x;
+  layout.points.clear();
+  layout.series_points.assign(chart.series.size(), {});
+  layout.series_indices.assign(chart.series.size(), {});
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const auto& points = chart.series[k].points;
+    const std::size_t stride = std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(std::max(1.0f, 2.0f * w)));
+    const auto add = [&](std::size_t i) {
+      const auto [x, y] = points[i];
+      if (!axes.x.shows(x) || !axes.y.shows(y)) return;
+      layout.series_points[k].push_back(layout.to_screen(x, y));
+      layout.series_indices[k].push_back(i);
+      layout.points.push_back(layout.series_points[k].back());
+    };
+    for (std::size_t i = 0; i < points.size(); i += stride) add(i);
+    if (!points.empty() && (points.size() - 1) % stride != 0) add(points.size() - 1);  // the latest point always
+  }
+  layout.theory.clear();
+  for (const ChartCurve& curve : chart.theory) {
+    layout.theory.emplace_back();
+    for (const auto& piece : curve.pieces) {
+      layout.theory.back().emplace_back();
+      for (const auto& [x, y] : piece) layout.theory.back().back().push_back(layout.to_screen(x, y));
+    }
+  }
+}
+
+}  // namespace
+
+ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
+  const float s = fonts.scale;
+  // The ticks' labels and the levels' texts in the numbers' font: all that `font` measures
+  // below, but the x axis' name (the small text's, as the y axis' name and the legend).
+  ImFont* font = number_font(chart, fonts);
+  const float text = font->FontSize;
+  ChartLayout layout;
+  layout.level_font = font;
+  const ChartAxes axes = axes_of(chart);
+  layout.log_x = axes.x.log, layout.log_y = axes.y.log;
+  layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
+  for (const Tick& tick : ticks_every(axes.y, chart.y_tick_count)) {
+    layout.y_ticks.push_back(tick.value);
+    layout.y_tick_labels.push_back(tick.label);
+  }
+  float label_width = 0.0f;
+  for (const std::string& label : layout.y_tick_labels) label_width = std::max(label_width, width_of(font, label));
+  const std::vector<Key> keys = keys_of(chart);
+  if (chart.legend == Chart::Legend::only) return layout;
+
+  const float levels_beside = frame_data_area(chart, axes, keys, corner, size, fonts, label_width, layout);
   const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
   layout.drawable = width >= 20.0f && height >= 20.0f;
   if (!layout.drawable) return layout;
-  // As many x ticks as the data area's width holds, unless the chart says how many.
-  const auto set_x_ticks = [&](float data_width) {
-    const int count = chart.x_tick_count > 0 ? chart.x_tick_count : std::max(2, static_cast<int>(data_width / (70.0f * s)));
-    layout.x_ticks.clear(), layout.x_tick_labels.clear();
-    for (const Tick& tick : ticks_every(axes.x, count)) {
-      layout.x_ticks.push_back(tick.value);
-      layout.x_tick_labels.push_back(tick.label);
-    }
-  };
-  set_x_ticks(width);
-
-  // The points where they land; at most about two a pixel, the rest would be drawn over each other.
-  const auto place = [&] {
-    const float w = layout.high_right.x - layout.low_left.x;
-    layout.points.clear();
-    layout.series_points.assign(chart.series.size(), {});
-    layout.series_indices.assign(chart.series.size(), {});
-    for (std::size_t k = 0; k < chart.series.size(); ++k) {
-      const auto& points = chart.series[k].points;
-      const std::size_t stride = std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(std::max(1.0f, 2.0f * w)));
-      const auto add = [&](std::size_t i) {
-        const auto [x, y] = points[i];
-        if (!axes.x.shows(x) || !axes.y.shows(y)) return;
-        layout.series_points[k].push_back(layout.to_screen(x, y));
-        layout.series_indices[k].push_back(i);
-        layout.points.push_back(layout.series_points[k].back());
-      };
-      for (std::size_t i = 0; i < points.size(); i += stride) add(i);
-      if (!points.empty() && (points.size() - 1) % stride != 0) add(points.size() - 1);  // the latest point always
-    }
-    layout.theory.clear();
-    for (const ChartCurve& curve : chart.theory) {
-      layout.theory.emplace_back();
-      for (const auto& piece : curve.pieces) {
-        layout.theory.back().emplace_back();
-        for (const auto& [x, y] : piece) layout.theory.back().back().push_back(layout.to_screen(x, y));
-      }
-    }
-  };
+  const auto choose_x_ticks = [&](float data_width) { set_x_ticks(chart, axes.x, data_width, s, layout); };
+  const auto place = [&] { place_points(chart, axes, layout); };
+  choose_x_ticks(width);
   place();
 
-  if (!place_legend(chart, keys, corner, size, fonts, layout, place, set_x_ticks)) return layout;
+  if (!place_legend(chart, keys, corner, size, fonts, layout, place, choose_x_ticks)) return layout;
   fit_y_ticks(chart, axes.y, text, s, layout);
   // A steady chart's legend rows above the data may have left it another height, and other
   // ticks: the column takes their width, narrower too (push's key plot on a projector was
@@ -370,7 +387,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
       layout.drawable = false;
       return layout;
     }
-    set_x_ticks(layout.high_right.x - layout.low_left.x);
+    choose_x_ticks(layout.high_right.x - layout.low_left.x);
     place();
   }
   if (chart.plain && chart.steady && !axes.x.log) {
