@@ -263,6 +263,23 @@ void Classroom::draw_more_tabs() {
   if (map_shown) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
 }
 
+namespace {
+
+// Where the help panel first opens: in the column, under the sliders (over the tabs, which ask
+// nothing of a newcomer before the first run), at least a third of the column high (a lesson
+// whose sliders fill more gives up the lowest ones), the column's whole width.
+ImVec4 help_room(const draw::FrameLayout& layout) {
+  const float bottom = layout.column_corner.y + layout.column_size.y;
+  float top = layout.column_corner.y;
+  if (const ImGuiWindow* sliders = ImGui::FindWindowByName("###parameters"); sliders != nullptr && sliders->Active) {
+    top = sliders->Pos.y + sliders->Size.y;
+  }
+  top = std::min(top, bottom - layout.column_size.y / 3.0f);
+  return ImVec4(layout.column_corner.x, top, layout.column_corner.x + layout.column_size.x, bottom);
+}
+
+}  // namespace
+
 void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
   const float s = fonts_->scale;
   ImGui::PushFont(fonts_->body);
@@ -273,7 +290,7 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
                  layout.world_size.x - 12.0f * s, *playback_, failed_, browser_, script_words_, theme(window_.theme), controls_);
   transport_.draw(ImVec2(0.0f, display.y - strips.transport_height), ImVec2(display.x, strips.transport_height), *playback_,
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
-  help_panel(window_.help, s, browser_, script_words_.paths, exports_.folder);
+  help_panel(window_.help, browser_, script_words_.paths, exports_.folder, help_room(layout));
   stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
   open_script_.draw([this](const std::string& path) { return open(path); }, s, theme(window_.theme));
   const SetupFiles setups{[this](const std::string& path) { return open_setup(path); },

@@ -11,12 +11,15 @@
 
 namespace frictionlab::classroom {
 
-void help_panel(bool& shown, float scale, bool browser, bool script_paths, const std::string& output_folder) {
+void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder,
+                const ImVec4& opens_over) {
   if (!shown) return;
-  const float s = scale;
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-                          ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(520.0f * s, 0.0f), ImGuiCond_FirstUseEver);
+  // In the middle of the window it hid the spring, the block and half the sliders of the first
+  // lesson a newcomer sees (a trial of the web page). Its keys and words scroll in its room.
+  ImGui::SetNextWindowPos(ImVec2(opens_over.x, opens_over.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(opens_over.z - opens_over.x, opens_over.w - opens_over.y), ImGuiCond_FirstUseEver);
+  // Opaque: the panels' own background lets the tabs' words under it show through its margin.
+  ImGui::SetNextWindowBgAlpha(1.0f);
   if (ImGui::Begin("Help (F1 shows and hides it)", &shown)) {
     // Kept inside the window when the window shrinks under it (a page's editor opening beside
     // the world, a smaller browser window): ImGui keeps only a corner of it in sight.

@@ -4,12 +4,18 @@
 // next class), which its close button clears; nothing else of it outlives the frame.
 #pragma once
 
+#include <imgui.h>
+
 #include <string>
 
 namespace frictionlab::classroom {
 
-// `scale`: the fonts' scale. On the page (`browser`) F5 runs the script as last applied; with
+// On the page (`browser`) F5 runs the script as last applied; with
 // `script_paths` the files are saved in `output_folder` (else they arrive as downloads).
-void help_panel(bool& shown, float scale, bool browser, bool script_paths, const std::string& output_folder);
+// `opens_over`: where it first opens (x0, y0, x1, y1): the room the classroom gives it, under the
+// sliders, so that a newcomer's first window shows the world, the question and the sliders
+// beside it. Moved or resized, it stays where the user put it.
+void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder,
+                const ImVec4& opens_over);
 
 }  // namespace frictionlab::classroom

@@ -378,6 +378,47 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
   }
 }
 
+// The help panel a newcomer's first window opens with (F1) stood in the middle of the window,
+// over the spring, the block and half the sliders of the first lesson (a trial of the web
+// page). It opens in the column under the sliders, over the tabs, which ask nothing before the
+// first run: clear of the world, the title and the plots; clear of the sliders too unless they
+// fill more than two thirds of the column, when it keeps a third of it and covers the lowest.
+TEST_P(WindowLayout, TheHelpPanelOpensUnderTheSlidersClearOfTheWorld) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  draw::HeadlessContext gl;
+  int over_sliders = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    // A host of its own: ImGui keeps a window's first place for the life of its context.
+    draw::ImGuiHost host(nullptr);
+    ClassroomOptions options = class_window(lessons::resolve_lesson(entry.name), screen);
+    options.window.help = true;
+    Classroom window(options);
+    for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, nullptr);
+    const std::string where = entry.name + ", window " + screen.name;
+    const ImGuiWindow* help = ImGui::FindWindowByName("Help (F1 shows and hides it)");
+    ASSERT_TRUE(help != nullptr && help->WasActive) << where;
+    const ImRect help_rect = help->Rect();
+    EXPECT_GE(help_rect.Min.x, 0.0f) << where;
+    EXPECT_LE(help_rect.Max.x, display.x + 0.5f) << where;
+    EXPECT_LE(help_rect.Max.y, display.y + 0.5f) << where;
+    for (const char* id : {"###world", "###title", "###plot0", "###plot1", "###legend"}) {
+      const ImGuiWindow* under = ImGui::FindWindowByName(id);
+      if (under == nullptr || !under->WasActive) continue;
+      EXPECT_FALSE(help_rect.Overlaps(under->Rect())) << where << ": the help panel opens over " << id;
+    }
+    const ImGuiWindow* sliders = ImGui::FindWindowByName("###parameters");
+    ASSERT_TRUE(sliders != nullptr && sliders->WasActive) << where;
+    EXPECT_GE(help_rect.Min.x, sliders->Pos.x - 0.5f) << where << ": the help panel opens left of the column";
+    if (help_rect.Min.y < sliders->Pos.y + sliders->Size.y - 0.5f) {
+      ++over_sliders;
+      // Only where the sliders take more than two thirds of the column: the help keeps a third.
+      EXPECT_GT(sliders->Size.y, 2.0f * help_rect.GetHeight() - 1.0f) << where << ": the help panel opens over the sliders";
+    }
+  }
+  std::printf("help panels opening over the lowest sliders at %s: %d\n", screen.name, over_sliders);
+}
+
 // At the run's end a teacher reads what the run measured beside each of the class's answers,
 // reveals the theory, and sets class, theory and measurement side by side: every question (its
 // short name once revealed), the class's answer and its comparison (the measurement before the
