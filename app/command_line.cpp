@@ -67,7 +67,9 @@ const Option table[] = {
                "a `.lua` file is refused so that no script is overwritten)",
      .example = "run.csv"},
     {.name = "--at", .commands = for_render, .value = "S[,S...]", .kind = ValueKind::numbers, .range = {0.0, 3600.0, false, " s"},
-     .help = "the times to draw, in seconds, each {range}, at most 100 of them", .example = "0.5,2",
+     .help = "the times to draw, in seconds, each {range}, at most 100 of them; without --at or --moment, halfway "
+             "through the run (as the window draws without a display)",
+     .example = "0.5,2",
      .twice_hint = " (several times go in one --at, as in --at 1,2)"},
     {.name = "--moment", .commands = for_render, .value = "NAME", .kind = ValueKind::text,
      .help = "instead of --at: one of the lesson's teaching moments (see list), with its time, values and theme",
@@ -148,7 +150,7 @@ struct Refusals {
   const char* give_it_once;   // after "given twice"
 };
 const Refusals refusals[] = {
-    {for_window, "", "the window's options", " (commands: list, run, check, render, demo, bench, help)", ""},
+    {for_window, "", "the window's options", " (commands: list, run, check, render, demo, bench, link, help, --version)", ""},
     {for_run, "run: ", "options", "", "; give it once"},
     {for_check, "check: ", "options", "", "; give it once"},
     {for_render, "render: ", "options", "", "; give it once"},
@@ -264,7 +266,7 @@ const Usage usages[] = {
      "run a lesson without a window and print its table of theory against simulation", true},
     {for_check, "check [LESSON ...] [--set ...] [--hz] [--substeps] [--friction] [--random [--seed]]",
      "run lessons (every built-in one if none is named) and check their expectations; exit 1 if any fails", true},
-    {for_render, "render LESSON --at [--size] [--theme] [--set ...] [--hz] [--substeps] [--friction] [--mystery --seed] --out",
+    {for_render, "render LESSON [--at] [--size] [--theme] [--set ...] [--hz] [--substeps] [--friction] [--mystery --seed] --out",
      "draw the lesson at each time to PNG files, with no display", false},
     {for_render, "render LESSON --moment [--size] --out", "draw one of the lesson's moments (its time, values and theme)",
      false},

@@ -55,7 +55,7 @@ int run_demo(std::ostream& out) {
   const int failed = print_measurements(out, rows);
   const double degrees = 180.0 / M_PI;
   const Block& b = block;
-  out << "\nerror = measured - predicted, in the row's unit; a row passes when |error| <= tolerance.\n"
+  out << "\nerror = measured - theory, in the row's unit; a row passes when |error| <= tolerance.\n"
       << "\nThe situations (g = " << standard_gravity << " m/s²):\n"
       << "  spring pull    a " << b.mass << " kg block, " << b.width << " m × " << b.height << " m, mu_s " << b.pair.mu_s
       << ", mu_k " << b.pair.mu_k << ", on flat ground, pulled by a " << spring.stiffness << " N/m spring whose far end moves at "

@@ -81,7 +81,7 @@ int run_and_report(Lesson& lesson, double duration, CsvLog* csv, std::ostream& o
   if (csv) csv->header(lesson, hidden);
   run_for(lesson, duration, csv);
   for (const std::string& warning : lesson.warnings()) out << "warning: " << warning << '\n';
-  std::vector<std::vector<std::string>> table{{"expectation", "unit", "predicted", "measured", "error", "tolerance", "pass"}};
+  std::vector<std::vector<std::string>> table{{"expectation", "unit", "theory", "measured", "error", "tolerance", "pass"}};
   int failed = 0;
   const bool theory_hidden = !hidden.empty();
   for (const lessons::ExpectationResult& row : lesson.expectations()) {
@@ -202,12 +202,12 @@ int check_random_settings(const std::string& name, const std::map<std::string, s
       for (const lessons::ExpectationResult& row : lesson.expectations()) {
         if (row.passes) continue;
         if (row.numeric && row.measured_yet) {
-          missed.push_back(row.name + ": predicted " + format_number(row.predicted) + ", measured " +
+          missed.push_back(row.name + ": theory " + format_number(row.predicted) + ", measured " +
                            format_number(row.measured) + ", error " + format_number(row.error(), 2) + ", tolerance " +
                            format_number(row.tolerance, 2) + (row.unit.empty() ? "" : " " + row.unit));
         } else {
           const std::string predicted = row.numeric ? format_number(row.predicted) : row.predicted_text;
-          missed.push_back(row.name + ": predicted " + predicted + ", measured " + row.measured_text);
+          missed.push_back(row.name + ": theory " + predicted + ", measured " + row.measured_text);
         }
       }
     } catch (const InvalidInput& error) {

@@ -106,10 +106,6 @@ RenderOptions parse_render(const std::vector<std::string>& args) {
   if (have_times && !options.moment.empty()) {
     throw InvalidInput("render: give --at or --moment, not both (a moment has its own time)");
   }
-  if (!have_times && options.moment.empty()) {
-    throw InvalidInput("render: --at S[,S...] is required: the times to draw, in seconds (or --moment NAME, one of the "
-                       "lesson's moments)");
-  }
   if (options.out.empty()) throw InvalidInput("render: --out PATH is required: a .png file, or a folder for several times");
   options.mystery.choice();  // --mystery without --seed, or the other way round, refused before any work
   return options;
@@ -179,6 +175,9 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
+  // Neither --at nor --moment: halfway through the run, where most lessons have their event
+  // behind them and their motion still on, the picture the window draws without a display.
+  if (options.times.empty()) options.times = {0.5 * lesson.duration()};
   draw::HiddenValues hidden;
   if (const std::optional<classroom_state::MysteryChoice> mystery = options.mystery.choice()) {
     hidden.parameters = apply_mystery(lesson, *mystery, options.overrides).hidden();

@@ -53,7 +53,7 @@ void print_table(std::ostream& out, const std::vector<std::vector<std::string>>&
 }
 
 int print_measurements(std::ostream& out, const std::vector<Measurement>& rows) {
-  std::vector<std::vector<std::string>> table{{"quantity", "unit", "predicted", "measured", "error", "tolerance", "pass"}};
+  std::vector<std::vector<std::string>> table{{"quantity", "unit", "theory", "measured", "error", "tolerance", "pass"}};
   int failed = 0;
   for (const Measurement& m : rows) {
     table.push_back({m.name, m.unit, format_number(m.predicted), format_number(m.measured), format_number(m.error(), 2),

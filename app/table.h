@@ -9,7 +9,7 @@
 
 namespace frictionlab {
 
-// Prints predicted, measured, error, tolerance and pass for each row; returns how many failed.
+// Prints theory, measured, error, tolerance and pass for each row; returns how many failed.
 int print_measurements(std::ostream& out, const std::vector<Measurement>& rows);
 
 // A simple aligned table: the first row is the header.

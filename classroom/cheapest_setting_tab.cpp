@@ -46,7 +46,7 @@ std::optional<StepSettings> CheapestSettingTab::draw(const lessons::Lesson& less
   paragraph("Runs this lesson at each setting, judged by its table (?)", disabled);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Every friction treatment at 30 to 1920 Hz with 1, 2 or 4 sub-steps, each a fresh run of this\n"
-                      "lesson's script with its sliders as they are now. Error: the largest |measured - predicted| over\n"
+                      "lesson's script with its sliders as they are now. Error: the largest |measured - theory| over\n"
                       "the table's rows, each in its tolerance at the default setting (stick-slip, 240 Hz, 1 sub-step);\n"
                       "a word row that differs is wrong. Within 1: the lesson's own table passes; 0.1: ten times tighter.");
   }

@@ -288,7 +288,22 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
 void Classroom::apply_asked_values() {
   // Values asked for while the panels were drawn: applied now, since a rebuild replaces what
   // the panels were reading.
-  for (const auto& [name, value] : parameters_.asked) set_value(name, value);
+  // Each goes to the playback as it came: a number as the number, a typed text for the lesson to
+  // read. A refusal is said beside its control; a value taken lets the mystery keep its pair.
+  for (const auto& [name, value] : parameters_.asked) {
+    try {
+      const double before = playback_->lesson().parameter(name).value;
+      if (value.number) {
+        playback_->set_parameter(name, *value.number);
+      } else {
+        playback_->set_parameter(name, value.text);
+      }
+      parameters_.errors.erase(name);
+      mystery_.keep(name, before, *playback_, parameters_);
+    } catch (const InvalidInput& error) {
+      parameters_.errors[name] = error.what();
+    }
+  }
   parameters_.asked.clear();
   // The Space that ended the typing plays once the value it kept has been set (a rebuild first).
   if (keys_.finish()) playback_->toggle();
@@ -338,21 +353,6 @@ void Classroom::change_settings(const StepSettings& settings) {
     playback_->set_settings(settings);
   } catch (const InvalidInput& error) {
     status_.text = error.what();
-  }
-}
-
-void Classroom::set_value(const std::string& name, const lessons::GivenValue& value) {
-  try {
-    const double before = playback_->lesson().parameter(name).value;
-    if (value.number) {
-      playback_->set_parameter(name, *value.number);
-    } else {
-      playback_->set_parameter(name, value.text);
-    }
-    parameters_.errors.erase(name);
-    mystery_.keep(name, before, *playback_, parameters_);
-  } catch (const InvalidInput& error) {
-    parameters_.errors[name] = error.what();
   }
 }
 

@@ -208,8 +208,6 @@ class Classroom {
   // The lesson as the Parameters panel shows it now.
   ParametersOnShow parameters_on_show() const;
   void remember(const std::string& name) { remember_item(controls_, name); }  // the last item's place, under `name`
-  // A value the Parameters panel asked for: a number as it is, a typed text read by the lesson.
-  void set_value(const std::string& name, const lessons::GivenValue& value);
   void change_settings(const StepSettings& settings);
   // The script files' watchers (the running lesson's, a failed one's), given the wall time since
   // they last looked; true when what they found changes what the window shows.

@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -36,16 +37,19 @@ struct WindowDeleter {
   void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
 };
 
-}  // namespace
+using WindowPointer = std::unique_ptr<GLFWwindow, WindowDeleter>;
 
-void run_window(classroom::Classroom& classroom, const WindowRun& run) {
-  Glfw glfw;
-  classroom::WindowSettings& settings = classroom.window_settings();
+// A place and size on the screen: x, y, width, height.
+using ScreenArea = std::array<int, 4>;
+
+// The window opened with an OpenGL 3.3 context made current: at the settings' size, or over the
+// primary monitor's work area for a projector (`fill_screen`). `area` is where it was asked for.
+WindowPointer open_window(const classroom::WindowSettings& settings, bool fill_screen, ScreenArea& area) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  int area[4] = {0, 0, settings.width, settings.height};  // x, y, width, height
-  GLFWmonitor* const screen = run.fill_screen ? glfwGetPrimaryMonitor() : nullptr;
+  area = {0, 0, settings.width, settings.height};
+  GLFWmonitor* const screen = fill_screen ? glfwGetPrimaryMonitor() : nullptr;
   if (screen != nullptr) {
     int x = 0, y = 0, width = 0, height = 0;
     glfwGetMonitorWorkarea(screen, &x, &y, &width, &height);
@@ -56,7 +60,7 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
       area[3] = height;
     }
   }
-  std::unique_ptr<GLFWwindow, WindowDeleter> window(glfwCreateWindow(area[2], area[3], "FrictionLab", nullptr, nullptr));
+  WindowPointer window(glfwCreateWindow(area[2], area[3], "FrictionLab", nullptr, nullptr));
   if (!window) throw NoDisplay("the display would not open an OpenGL 3.3 window (" + glfw_error + ")");
   if (screen != nullptr) {
     // The work area's size is the window's inside; a window manager adds its title bar, and
@@ -66,18 +70,23 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   }
   glfwMakeContextCurrent(window.get());
   glfwSwapInterval(1);  // paced by the display: 60 frames a second on most projectors
+  return window;
+}
 
-  draw::ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
-  // Every key press reaches the classroom, and ImGui's widgets, even one let go before the next
-  // frame; set before ImGui's backend, which calls it before its own.
-  struct Listeners {
-    classroom::Classroom* classroom;
-    classroom::KeyTaps taps;
-    bool event = false;  // input, or the window shown again: the sleeping loop must draw
-  } listeners{&classroom, classroom::KeyTaps(glfw_modifier_keys)};
-  glfwSetWindowUserPointer(window.get(), &listeners);
-  static constexpr auto event_came = [](GLFWwindow* from) { static_cast<Listeners*>(glfwGetWindowUserPointer(from))->event = true; };
-  glfwSetKeyCallback(window.get(), [](GLFWwindow* from, int key, int, int action, int mods) {
+// What the window's callbacks reach: every key press reaches the classroom, and ImGui's
+// widgets, even one let go before the next frame.
+struct Listeners {
+  classroom::Classroom* classroom;
+  classroom::KeyTaps taps;
+  bool event = false;  // input, or the window shown again: the sleeping loop must draw
+};
+
+void event_came(GLFWwindow* from) { static_cast<Listeners*>(glfwGetWindowUserPointer(from))->event = true; }
+
+// Set before ImGui's backend, which calls these before its own.
+void listen(GLFWwindow* window, Listeners& listeners) {
+  glfwSetWindowUserPointer(window, &listeners);
+  glfwSetKeyCallback(window, [](GLFWwindow* from, int key, int, int action, int mods) {
     auto* to = static_cast<Listeners*>(glfwGetWindowUserPointer(from));
     to->event = true;
     if (action != GLFW_PRESS) return;
@@ -87,14 +96,49 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   // Every other kind of input wakes the loop too; ImGui's backend, installed next, calls these
   // before its own (ImGui 1.86 reads the pointer's place itself each frame, so the move alone
   // would never tell the loop).
-  glfwSetCursorPosCallback(window.get(), [](GLFWwindow* from, double, double) { event_came(from); });
-  glfwSetMouseButtonCallback(window.get(), [](GLFWwindow* from, int, int, int) { event_came(from); });
-  glfwSetScrollCallback(window.get(), [](GLFWwindow* from, double, double) { event_came(from); });
-  glfwSetCharCallback(window.get(), [](GLFWwindow* from, unsigned int) { event_came(from); });
-  glfwSetCursorEnterCallback(window.get(), [](GLFWwindow* from, int) { event_came(from); });
-  glfwSetWindowFocusCallback(window.get(), [](GLFWwindow* from, int) { event_came(from); });
-  glfwSetWindowRefreshCallback(window.get(), [](GLFWwindow* from) { event_came(from); });
-  glfwSetFramebufferSizeCallback(window.get(), [](GLFWwindow* from, int, int) { event_came(from); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* from, double, double) { event_came(from); });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* from, int, int, int) { event_came(from); });
+  glfwSetScrollCallback(window, [](GLFWwindow* from, double, double) { event_came(from); });
+  glfwSetCharCallback(window, [](GLFWwindow* from, unsigned int) { event_came(from); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* from, int) { event_came(from); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* from, int) { event_came(from); });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow* from) { event_came(from); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* from, int, int) { event_came(from); });
+}
+
+// Full screen on the primary monitor and back to the windowed place and size it left.
+struct FullScreen {
+  bool on = false;
+  ScreenArea windowed{};
+
+  // Wanted full screen with no monitor to fill (yet): the wish is kept, and tried each frame.
+  void follow(GLFWwindow* window, bool wanted) {
+    if (wanted == on) return;
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!on && mode != nullptr) {
+      glfwGetWindowPos(window, &windowed[0], &windowed[1]);
+      glfwGetWindowSize(window, &windowed[2], &windowed[3]);
+      glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+      on = true;
+    } else if (on) {
+      glfwSetWindowMonitor(window, nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
+      on = false;
+    }
+  }
+};
+
+}  // namespace
+
+void run_window(classroom::Classroom& classroom, const WindowRun& run) {
+  Glfw glfw;
+  classroom::WindowSettings& settings = classroom.window_settings();
+  ScreenArea area{};
+  const WindowPointer window = open_window(settings, run.fill_screen, area);
+
+  draw::ImGuiHost host(run.imgui_ini.empty() ? nullptr : run.imgui_ini.c_str());
+  Listeners listeners{&classroom, classroom::KeyTaps(glfw_modifier_keys)};
+  listen(window.get(), listeners);
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
   struct GlfwInput {
     ~GlfwInput() { ImGui_ImplGlfw_Shutdown(); }
@@ -102,8 +146,7 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
 
   if (run.at) classroom.run_to(*run.at);
   int frames_left = run.screenshot.empty() ? -1 : 4;  // a few frames for panels and tables to settle
-  bool full_screen = false;
-  int windowed[4] = {area[0], area[1], area[2], area[3]};
+  FullScreen full_screen{false, area};
   double last = glfwGetTime();
   classroom::WindowSettings saved = settings;
   classroom::FramePacing pacing;
@@ -174,20 +217,7 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
       if (frames_left == 0) break;
     }
     if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
-    // Wanted full screen with no monitor to fill (yet): the wish is kept, and tried each frame.
-    if (settings.full_screen != full_screen) {
-      GLFWmonitor* monitor = glfwGetPrimaryMonitor();
-      const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
-      if (!full_screen && mode != nullptr) {
-        glfwGetWindowPos(window.get(), &windowed[0], &windowed[1]);
-        glfwGetWindowSize(window.get(), &windowed[2], &windowed[3]);
-        glfwSetWindowMonitor(window.get(), monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
-        full_screen = true;
-      } else if (full_screen) {
-        glfwSetWindowMonitor(window.get(), nullptr, windowed[0], windowed[1], windowed[2], windowed[3], 0);
-        full_screen = false;
-      }
-    }
+    full_screen.follow(window.get(), settings.full_screen);
     glfwSwapBuffers(window.get());
     // A choice the teacher made (theme, projector, help, full screen) is kept at once, so a window
     // that is killed rather than closed still remembers it.
@@ -201,9 +231,9 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   // A window opened over the whole screen for a projector keeps the size read at the start: the
   // screen's would open the next plain window as large, its title bar past the screen's edge.
   if (!run.fill_screen) {
-    if (full_screen) {
-      settings.width = windowed[2];
-      settings.height = windowed[3];
+    if (full_screen.on) {
+      settings.width = full_screen.windowed[2];
+      settings.height = full_screen.windowed[3];
     } else {
       glfwGetWindowSize(window.get(), &settings.width, &settings.height);
     }

@@ -27,6 +27,9 @@ struct Painter {
   float s = fonts.scale;
   ImFont* font = fonts.small;
   float text = font->FontSize;
+  // The ticks' labels and the levels' texts (number_font).
+  ImFont* numbers = number_font(chart, fonts);
+  float number_text = numbers->FontSize;
 
   // Values already in axis space (log10 of the value on a log axis) to the screen.
   ImVec2 at_axis_value(double x, double y) const {
@@ -191,7 +194,8 @@ void draw_level_texts(const Painter& p, bool beneath) {
     // read 4.36:1).
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
                           p.theme.panel);
-    p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
+    ImFont* font = p.layout.level_font != nullptr ? p.layout.level_font : p.numbers;
+    p.draw->AddText(font, font->FontSize, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel), level.text.c_str());
   }
 }
 
@@ -205,7 +209,8 @@ void draw_level_texts_beside(const Painter& p) {
     p.draw->AddLine(ImVec2(p.layout.high_right.x, placed.y), ImVec2(placed.at.x - 3.0f * p.s, middle), level.colour, 1.5f * p.s);
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
                           p.theme.panel);
-    p.draw->AddText(p.font, p.text, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel),
+    ImFont* font = p.layout.level_font != nullptr ? p.layout.level_font : p.numbers;
+    p.draw->AddText(font, font->FontSize, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel),
                     level_text_in_column(level.text).c_str());
   }
 }
@@ -247,8 +252,12 @@ void draw_axes(Painter& p, ImVec2 corner) {
   }
   using TextKind = ChartLayout::AxisText::Kind;
   const auto axis_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImU32 colour) {
-    p.draw->AddText(p.font, text, at, colour, words.c_str());
-    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(p.font, words), at.y + text)});
+    // The ticks' labels in the numbers' font, the axes' names in the small text's.
+    const bool number = kind == TextKind::y_tick;  // the x ticks' labels in the small text (chart_layout.cpp)
+    ImFont* font = number ? p.numbers : p.font;
+    const float size = font->FontSize;
+    p.draw->AddText(font, size, at, colour, words.c_str());
+    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(font, words), at.y + size)});
   };
   const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
   for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
@@ -259,7 +268,7 @@ void draw_axes(Painter& p, ImVec2 corner) {
   for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
     const float y = p.at_axis_value(layout.x_low, layout.y_ticks[i]).y;
     const std::string& label = layout.y_tick_labels[i];
-    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(p.font, label) - gap, y - 0.5f * text), p.theme.text);
+    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(p.numbers, label) - gap, y - 0.5f * p.number_text), p.theme.text);
   }
   const float width = high_right.x - low_left.x;
   const ImVec2 x_label_at = chart.steady && std::isfinite(layout.x_label_at.x)

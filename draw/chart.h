@@ -149,6 +149,10 @@ struct ChartLayout {
   // spring_pull's forces every 2 N of 10).
   std::vector<double> x_minor_ticks, y_minor_ticks;
   std::vector<std::string> x_tick_labels, y_tick_labels;
+  // The font the levels' texts are written in: the numbers' (chart_parts.h's number_font), but
+  // the small text's on a steady chart whose column beside the data would take more than a
+  // third of its width in it (incline's "θc = 30.96°: −μs·N" on a projector), where they fit.
+  ImFont* level_font = nullptr;
   std::vector<ImVec2> points;  // every series' points as drawn (at most about two a pixel)
   std::vector<std::vector<ImVec2>> series_points;        // the same, series by series
   std::vector<std::vector<std::size_t>> series_indices;  // which of the series' points each is

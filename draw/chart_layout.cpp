@@ -248,9 +248,12 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts) {
   const float s = fonts.scale;
-  ImFont* font = fonts.small;
+  // The ticks' labels and the levels' texts in the numbers' font: all that `font` measures
+  // below, but the x axis' name (the small text's, as the y axis' name and the legend).
+  ImFont* font = number_font(chart, fonts);
   const float text = font->FontSize;
   ChartLayout layout;
+  layout.level_font = font;
   const ChartAxes axes = axes_of(chart);
   layout.log_x = axes.x.log, layout.log_y = axes.y.log;
   layout.x_low = axes.x.low, layout.x_high = axes.x.high, layout.y_low = axes.y.low, layout.y_high = axes.y.high;
@@ -271,16 +274,22 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     if (chart.steady) {
       // The y label heads the legend's column and the x label ends the x ticks' line: the data
       // has the two lines of text they took (a plot on a page of its own, made tall).
-      layout.low_left.y = corner.y + size.y - text - 4.0f * s;  // the tick marks' 4 pt, then the labels
+      // The tick marks' 4 pt, then the x labels, in the small text: the y labels are the ones the
+      // levels are read against, and the key plot keeps a third of a projector's height.
+      layout.low_left.y = corner.y + size.y - fonts.small->FontSize - 4.0f * s;
       layout.high_right.y = corner.y + 0.5f * text + 1.0f * s;  // room for half the top tick's label
       // The x label beyond the data's right end, on the tick labels' line, where no tick label
       // is: over the data's end it stood where the last tick's number goes (push's "10" under
       // "push (N)"). The room is the same whatever the data (the plot holds still as the run
       // widens its range): half a tick label as wide as "−8888" past the end, then the name.
       // The levels' texts share that room, above it, beside the data (level_column).
-      const float past_end = 0.5f * width_of(font, x_tick_room) + 6.0f * s;
-      const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(font, chart.x_label);
+      const float past_end = 0.5f * width_of(fonts.small, x_tick_room) + 6.0f * s;
+      const float x_label_room = chart.x_label.empty() ? 0.0f : past_end + width_of(fonts.small, chart.x_label);
       levels_beside = level_column(chart, font, s, size.x);
+      if (levels_beside == 0.0f && font != fonts.small) {
+        levels_beside = level_column(chart, fonts.small, s, size.x);
+        if (levels_beside > 0.0f) layout.level_font = fonts.small;
+      }
       layout.high_right.x -= std::max(x_label_room, levels_beside);
       if (!chart.x_label.empty()) layout.x_label_at = ImVec2(layout.high_right.x + past_end, layout.low_left.y + 4.0f * s);
     }
@@ -368,8 +377,8 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     layout.x_minor_ticks = minor_ticks(layout.x_ticks, layout.x_low, layout.x_high,
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
-  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, font, layout);
-  else place_level_texts(chart, axes.x, axes.y, text, s, font, layout);
+  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout);
+  else place_level_texts(chart, axes.x, axes.y, layout.level_font->FontSize, s, layout.level_font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
     layout.active = -1;

@@ -32,6 +32,8 @@ std::vector<Key> keys_of(const Chart& chart) {
 
 float width_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; }
 
+ImFont* number_font(const Chart& chart, const Fonts& fonts) { return chart.plain && chart.steady ? fonts.body : fonts.small; }
+
 namespace {
 
 // Where each key goes when the legend runs in rows from `left` to `right`, starting at `top`:
@@ -91,7 +93,7 @@ void keys_down_from(ChartLayout& layout, std::size_t count, ImVec2 top_left, flo
 // gives them: what the run or the reveal adds moves neither a key nor the data. False when the
 // data keep no height under the rows.
 bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, ImFont* font, float s,
-                       ChartLayout& layout, const std::function<void()>& place) {
+                       float number_text, ChartLayout& layout, const std::function<void()>& place) {
   const float text = font->FontSize;
   std::vector<std::string> names;
   // A room that names every key shown is the legend's whole order: a key that joins in the
@@ -131,8 +133,8 @@ bool place_steady_rows(const Chart& chart, const std::vector<Key>& keys, ImVec2 
   for (const Key& key : keys) {
     layout.legend_at.push_back(at[static_cast<std::size_t>(std::find(names.begin(), names.end(), key.name) - names.begin())]);
   }
-  // The data under the rows, with room for half the top tick's label.
-  if (!data_from(y + row + 1.0f * s + 0.5f * text, layout, place)) return false;
+  // The data under the rows, with room for half the top tick's label (in the numbers' font).
+  if (!data_from(y + row + 1.0f * s + 0.5f * number_text, layout, place)) return false;
   bound_keys(layout, keys, font, s);
   return true;
 }
@@ -272,7 +274,7 @@ bool place_inside(const Chart& chart, const std::vector<Key>& keys, ImVec2 corne
 bool place_legend(const Chart& chart, const std::vector<Key>& keys, ImVec2 corner, ImVec2 size, const Fonts& fonts,
                   ChartLayout& layout, const std::function<void()>& place, const std::function<void(float)>& set_x_ticks) {
   if (chart.plain && chart.steady && chart.legend == Chart::Legend::inside) {
-    return place_steady_rows(chart, keys, corner, size, fonts.small, fonts.scale, layout, place);
+    return place_steady_rows(chart, keys, corner, size, fonts.small, fonts.scale, number_font(chart, fonts)->FontSize, layout, place);
   }
   if (!chart.plain && chart.legend != Chart::Legend::inside) {
     place_under(chart, keys, corner, size, fonts.small, fonts.scale, layout);

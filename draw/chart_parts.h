@@ -58,6 +58,13 @@ std::vector<Key> keys_of(const Chart& chart);
 
 float width_of(ImFont* font, const std::string& text);
 
+// The font of a chart's numbers, its y tick labels and its levels' texts: on a plot on a page of
+// its own (Chart::steady, a projector's key plot) the body text's, which the back row reads the
+// levels against (issue 31: the small text's digits were 18 px high on a 1080-line projector);
+// elsewhere, and for every other text (the legend, the axes' names), the small text's. Levels'
+// texts too wide for their column in it keep the small text's (ChartLayout::level_font).
+ImFont* number_font(const Chart& chart, const Fonts& fonts);
+
 // The marks between a steady chart's labelled ticks (`ticks`, 2 or more, a round step apart) on
 // an axis from `low` to `high` (`pixels_per_unit` along it), as a ruler's: the finest of a
 // fifth, a quarter or a half of their step that is still a round step (1 N marks between 5 N

@@ -297,8 +297,10 @@ constexpr float series_dash = 16.0f, series_gap = 6.0f;
 // a normal force, an applied force, a spring, a rope) in its arrows' colour in the world, so
 // that a class matches a curve to its arrow (issue 31: the world drew friction vermilion and
 // spring_pull's plot drew it blue); the first probe of a kind takes it, a second its shade
-// (Theme::second_force), a third and fourth the two dashed, so that a force's curve never
-// takes another kind's colour (friction_models' third friction was the applied force's blue).
+// (Theme::second_force) dashed, told apart by its pattern where a projector washes the two
+// colours toward one (stacked_blocks' two frictions, issue 31), a third the kind's colour
+// dashed and a fourth the shade solid, so that a force's curve never takes another kind's
+// colour (friction_models' third friction was the applied force's blue).
 // The others (a speed) take the series colours in turn that no probe of the plot has yet,
 // solid, then dashed: no two curves of one plot share a look.
 std::vector<SeriesLook> series_looks(const lessons::Lesson& lesson, const lessons::Plot& plot, const Theme& theme) {
@@ -314,8 +316,8 @@ std::vector<SeriesLook> series_looks(const lessons::Lesson& lesson, const lesson
     const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
     if (!kind) continue;
     const ImU32 own = theme.force[static_cast<int>(*kind)], shade = theme.second_force[static_cast<int>(*kind)];
-    for (const SeriesLook& look : {SeriesLook{own}, SeriesLook{shade}, SeriesLook{own, series_dash, series_gap},
-                                   SeriesLook{shade, series_dash, series_gap}}) {
+    for (const SeriesLook& look : {SeriesLook{own}, SeriesLook{shade, series_dash, series_gap},
+                                   SeriesLook{own, series_dash, series_gap}, SeriesLook{shade}}) {
       if (taken(look)) continue;
       looks[k] = look;
       given[k] = true;
@@ -451,6 +453,24 @@ std::vector<double> add_levels(Chart& chart, lessons::Lesson& lesson, std::size_
   return values;
 }
 
+// The room a hidden level's text takes: its label beside each form its value may print in
+// (format_quantity's three figures, from 0.001 to 9999, negative: "−0.00888" to "−8888"), so
+// that the widest of them, not the value, sets the column. (Under 0.001 a value prints as a
+// power of ten; no level of a lesson comes near it.)
+std::vector<std::string> hidden_level_room(const lessons::Lesson& lesson, std::size_t plot_index) {
+  const lessons::Plot& plot = lesson.plots().at(plot_index);
+  const std::string& y_unit = lesson.probe_unit(plot.y.front());
+  std::vector<std::string> room;
+  for (const lessons::PlotLevel& level : plot.levels) {
+    for (const double widest : {-0.00888, -0.0888, -0.888, -8.88, -88.8, -888.0, -8888.0}) {
+      std::string value = format_quantity(widest, y_unit.c_str());
+      if (y_unit.empty()) value.pop_back();
+      room.push_back(level.label + " = " + value);
+    }
+  }
+  return room;
+}
+
 // The theory's curves and levels (a script error in one becomes the chart's message, and the
 // lesson itself runs on); the values they take, for the y axis.
 std::vector<double> add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range,
@@ -507,9 +527,10 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   chart.legend = Chart::Legend::inside;
   chart.y_tick_count = 4;
   chart.x_tick_count = 0;
-  // The y ticks as fine as the data area's height reads, a line and a half of text apart: the
-  // levels read off the axis (1 N steps at push's defaults, where 2 or 5 N were).
-  chart.y_tick_spacing = 21.0f;  // 1.5 times the small text's 14 pt
+  // The y ticks as fine as the data area's height reads, a line and a half of their labels' text
+  // apart (the body text's on a page of its own, number_font): the levels read off the axis (1 N
+  // steps at push's defaults, where 2 or 5 N were).
+  chart.y_tick_spacing = 1.5f * (steady ? body_text_points : small_text_points);
   name_axes(chart, lesson, record.plot);
 
   // The x axis: the time span (fixed by the lesson's duration from the opening), or what the
@@ -551,9 +572,16 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   std::vector<double> theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
   if (secret) theory_values.clear();
   // A plot on a page of its own keeps its levels' texts' room beside its data from the opening,
-  // shown or not, so that the reveal moves nothing (Chart::level_room).
+  // shown or not, so that the reveal moves nothing (Chart::level_room). A mystery's levels are
+  // worked out from its hidden values: their texts' widths would tell them (incline's θc, push's
+  // μs·N) and move the column as a slider moved them, so the room is every declared level's
+  // label beside the widest value text it could have, whatever its value.
   std::vector<std::string> level_texts;
-  for (const ChartLevel& level : chart.levels) level_texts.push_back(level.text);
+  if (secret) {
+    level_texts = hidden_level_room(lesson, plot_index);
+  } else {
+    for (const ChartLevel& level : chart.levels) level_texts.push_back(level.text);
+  }
   if (!with_theory) {
     chart.theory.clear();
     chart.levels.clear();

@@ -61,6 +61,12 @@ Theme make_light() {
   t.force[6] = IM_COL32(110, 130, 0, 255);    // drag (c, b): olive
   t.arrow_halo = IM_COL32(255, 255, 255, 255);
   mix_second_forces(t, IM_COL32(190, 0, 40, 255));
+  // Friction is the kind lessons plot twice (stacked_blocks' two surfaces, friction_models):
+  // half way to the crimson, (205, 35, 20), was 15 apart from vermilion in CIELAB (ΔE76) and
+  // 1.28:1 in lightness, one colour on a projector (issue 31). A deep crimson, 37 apart and
+  // 1.8:1 darker, still nearer vermilion than any other kind's colour or a contact state's
+  // (slipping's magenta 39, rope's brown 47; in RGB too), 7.7:1 on the panel.
+  t.second_force[2] = IM_COL32(170, 0, 40, 255);
   // Contact states have colours no arrow has, so a mark never reads as a force.
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
@@ -111,6 +117,10 @@ Theme make_dark() {
   t.force[6] = IM_COL32(190, 210, 60, 255);
   t.arrow_halo = IM_COL32(16, 16, 20, 255);
   mix_second_forces(t, IM_COL32(255, 80, 110, 255));
+  // Friction's shade, as in the light theme: (255, 105, 85) was 22 apart from the orange; a
+  // rose red 40 apart, nearer the orange than any other colour of a force or a state (slipping's
+  // pink 45), 4.5:1 on the panel.
+  t.second_force[2] = IM_COL32(255, 65, 90, 255);
   t.sticking = IM_COL32(40, 200, 210, 255);
   t.slipping = IM_COL32(255, 90, 180, 255);
   t.slip_band = IM_COL32(255, 90, 180, 45);
@@ -238,7 +248,7 @@ Fonts load_fonts(float scale, ImVector<ImWchar>& ranges) {
   config.OversampleV = 1;
   Fonts fonts;
   fonts.scale = scale;
-  fonts.body = io.Fonts->AddFontFromFileTTF(path.c_str(), 17.0f * scale, &config, ranges.Data);
+  fonts.body = io.Fonts->AddFontFromFileTTF(path.c_str(), body_text_points * scale, &config, ranges.Data);
   fonts.title = io.Fonts->AddFontFromFileTTF(path.c_str(), 26.0f * scale, &config, ranges.Data);
   fonts.small = io.Fonts->AddFontFromFileTTF(path.c_str(), small_text_points * scale, &config, ranges.Data);
   if (fonts.body == nullptr || fonts.title == nullptr || fonts.small == nullptr) {

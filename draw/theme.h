@@ -65,6 +65,8 @@ float frame_scale(int width, int height);
 // The small text's size at scale 1, pt (the legend's, the free-body inset's, a lane's name):
 // what the layout measures the inset's arrows against before any font is loaded.
 constexpr float small_text_points = 14.0f;
+// The body text's (a panel's words; a projector's key plot's numbers: number_font in chart_parts.h).
+constexpr float body_text_points = 17.0f;
 
 struct Fonts {
   ImFont* body = nullptr;

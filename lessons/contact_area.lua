@@ -108,6 +108,46 @@ local function held_load(probe)
 end
 
 -- Expectations ----------------------------------------------------------------------------
+-- What the rows allow (issue 29: derived, not 1 % of the breakaway or the weight):
+-- * The step. The pull is asked at the start of each step (each sub-step with --substeps) and
+--   held through it, growing by pull_rate·h from one to the next: the first step whose pull is
+--   past the static limit is up to a step's growth past it, and the slip shows at the end of
+--   that step. The row reads the pull recorded the frame before, the one the frame's first
+--   sub-step applied: within a frame's growth, pull_rate·step_length(), either way.
+-- * The listener: it takes friction within 1e-5 of mu_s·N for friction at the limit (its
+--   breakaway tolerance), so a step asking that much more is still held. And its hold band
+--   may keep a contact just past mu_s·N one step more, while it tells the solver's leftover
+--   from a real excess (a growing pull's excess grows, so never two): one more step's growth.
+--   At one step a frame no face block used it (`check --random 80`, seeds 1 to 25; the light
+--   narrow block pulled fast that issue 29 names broke away 0.153 N late, under one step's
+--   0.165), but with --substeps 2 they do: 10 kg, mu 2, 50 N/s, the narrow block 0.26 N late
+--   where a frame's growth is 0.21. Not explained yet: with --substeps 2 a breakaway may come
+--   several sub-steps later than even two steps' growth (narrow, 3.1 kg, mu_k 2, mu_s 1.24,
+--   15.7 N/s: 0.74 N late; three feet, mu_s 0, mu_k 1.88, 27.56 N/s: 1.7 N, which main's 1 %
+--   missed too).
+-- * The solver: none. A block held still on a level bench, pulled at the bench's height,
+--   needs a normal impulse of its weight and a friction impulse of the pull, which the
+--   stuck solve gives (a block on feet gets a coefficient no share of the load reaches, and
+--   the group's cone is judged from the totals); mu_s·N is the listener's comparison, not a
+--   solver clamp. c and b act only on sliding.
+-- * Single precision (floats, 2^-24 of the magnitudes per operation; theory is double): the
+--   friction held and the normal force are impulses over h, which keep one step's rounding of
+--   the body's velocity, 1 + 9·k operations for k constraints (gravity's integration, and the
+--   warm start and 8 iterations of each: a face's two friction points and the normal's block
+--   solve, k = 3, and three of them a foot), of the velocity each changes, the step's g·h,
+--   times the mass over h: (1 + 9·k)·2^-24 of the force, on each side of the comparison; the
+--   pull, the mass and g are rounded once each, and the pull read is a float too. (With mu_s
+--   = mu_k = 0 the first step's pull is 0 and moves nothing, the second's moves it: the row
+--   reads rate·h, the step's whole growth.)
+-- * Not derived yet: a block on feet is judged from its feet's total normal impulse, which
+--   carries the solver's split between the feet and moves from step to step (up to 2.9e-4 of
+--   the limit seen: six feet, 4.1 kg, mu_k 2, pulled at 0.2 N/s, broke away 0.023 N early;
+--   the listener's comment measured 3.7e-5 on three feet). The feet rows keep the 1 % they
+--   had for it, and only they.
+local constraints = { wide = 3, narrow = 3, three_feet = 3 * 3, six_feet = 3 * 6 }
+local feet_split = { wide = 0, narrow = 0, three_feet = 0.01, six_feet = 0.01 }
+local function rounding(name) return (2 * (1 + 9 * constraints[name]) + 3) * 2 ^ -24 end
+local breakaway_tolerance = 1e-5  -- the listener's (physics/treatment_stick_slip.cpp)
 -- Each block by its body's name, and its row by the name in words.
 for _, block in ipairs { { "wide", "wide" }, { "narrow", "narrow" }, { "three_feet", "three feet" },
                          { "six_feet", "six feet" } } do
@@ -115,15 +155,19 @@ for _, block in ipairs { { "wide", "wide" }, { "narrow", "narrow" }, { "three_fe
   expect { block[2] .. ": breakaway pull", unit = "N",
     predicted = function() return pull_theory(0).breakaway_push end,
     measured = function() return breakaway(name) end,
-    -- The pull grows by rate·h in a step, and the slip shows at the end of the step it began in;
-    -- and a contact just past mu_s·N may be held one step more while the listener tells the
-    -- solver's leftover from a real excess (a growing pull's excess grows, so never two):
-    -- the narrow block, light and pulled fast, shows it.
-    tolerance = function() return 0.01 * pull_theory(0).breakaway_push + 2 * pull_rate * step_length() end }
+    tolerance = function()
+      local limit = pull_theory(0).breakaway_push
+      return 2 * pull_rate * step_length() + (breakaway_tolerance + rounding(name) + feet_split[name]) * limit
+             + 2 ^ -24 * (limit + pull_rate * step_length())  -- the pull read is a float
+    end }
 end
 -- Friction is proportional to the normal force: the most the bench's friction on the wide
 -- block reached, over the normal force the bench pressed it with (both as the solver found
--- them, not the weight the rows above assume), is max(mu_s, mu_k) whatever the mass.
+-- them, not the weight the rows above assume), is max(mu_s, mu_k) whatever the mass. The
+-- breakaway step's friction is shown at the limit itself (the listener hands back what the
+-- solver held past it); a step before it may have held up to the breakaway tolerance past
+-- it, with each side's rounding; and a step the hold band keeps past it shows what it held, up
+-- to a step's growth of the pull past mu_s·N (with --substeps 2, 4.8e-5 of mu_s over it).
 expect { "wide: most friction ÷ normal force",
   predicted = function() return math.max(param.mu_s, param.mu_k) end,
   measured = function()
@@ -134,8 +178,9 @@ expect { "wide: most friction ÷ normal force",
       if slipping[i] == 1 then return most end
     end
   end,
-  -- The pull grows by rate·h in a step: the last step that holds may be that far below mu_s·N.
-  tolerance = function() return 0.01 * math.max(param.mu_s, param.mu_k) + pull_rate * step_length() / (mass * g) end }
+  tolerance = function()
+    return (breakaway_tolerance + rounding("wide")) * math.max(param.mu_s, param.mu_k) + pull_rate * step_length() / (mass * g)
+  end }
 -- The article gives each of three peaks N/3 and each of six N/6. For a rigid block on three or
 -- more feet in a row, statics cannot say how the load is shared: two equations (forces up and
 -- down, moments) for three or more unknowns. Real feet share it by how much each deflects, and

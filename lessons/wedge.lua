@@ -337,13 +337,15 @@ end
 -- two to three steps early on a sliding block, where the Δθ·Δs term's sign was checked
 -- against the world: the other sign is 0.7 s off), so the model calls the contact lost with a
 -- tenth of the overlap left. (linear_slop: Box2D's b2_linearSlop, 5 mm, from the runtime.)
-local lost_for, lost_at
-local function contact_lost_by(t)
-  local last = sample(t)  -- first: it may solve further
+-- How far the drift has raised the block's centre off the surface by each sample (linear_slop
+-- less the overlap left), kept as a list for the normal force's row.
+local lost_for, lost_at, raised
+local function follow_the_drift()
   if lost_for ~= horizon then
-    lost_for, lost_at = horizon, nil
+    lost_for, lost_at, raised = horizon, nil, { 0 }
     local overlap, steps_per_sample = linear_slop, spacing / h
     for k = 2, #turning.slide do
+      raised[k] = linear_slop - overlap
       if turning.contact[k] == "flying" then
         overlap = linear_slop
       else
@@ -357,7 +359,16 @@ local function contact_lost_by(t)
       end
     end
   end
+end
+local function contact_lost_by(t)
+  local last = sample(t)  -- first: it may solve further
+  follow_the_drift()
   return lost_at ~= nil and lost_at <= last
+end
+-- The raise at sample k, from the drift worked out for the model's whole solution.
+local function raised_at(k)
+  follow_the_drift()
+  return raised[math.min(k, #raised)] or 0
 end
 -- The turn's share of the normal force in the model with the turn: what it has beyond the
 -- article's m·(g·cos θ − a·sin θ), which does not depend on where the block is.
@@ -457,22 +468,47 @@ function start_speed()
 end
 -- One step dt long, at time_i, of the gap between the world's block and the model's and its
 -- speed (start_drift says how it moves).
+-- Sliding, the world's kinetic friction also presses with the turn's share of N a step late
+-- (late_share): μk·(how much that share changes in a world step) less or more than the model's,
+-- m·δs'' = σ·μk·(share's rate)·h, which sets the two apart on every slide, even where both start
+-- stuck. Left out, μs 0 under μk 0.8462 on a plank swinging 36.82° at 7.228 rad/s (5.084 kg,
+-- a_x 0.3985 at 6.863 rad/s): the block slides to and fro from 0.12 s, each slide's Coriolis
+-- push 2m·θ'·s' changing by up to 17 N, and the world's block slides up to 0.022 m/s faster by
+-- the sixth (0.011 at 480 Hz): 0.69 N off the model's N at 2.5 s (0.36 at 480 Hz, 0.18 at 960),
+-- where the row allowed 0.60 and counted no gap at all (both start stuck). Followed here with
+-- the turn's drift below, the gap matches the world's over the first slide and stop (0.66 mm
+-- against 0.46, then 0.88 against 0.65 after the stop's drift) but grows less from slide to
+-- slide than the world's (0.8 mm against 2.0 by 2.3 s; its speed 0.010 m/s at 2.5 s against
+-- 0.020): each of the world's slides turns the gap it starts with round a little more than
+-- the linearised model does, which is not explained yet.
+local function share_rate(k)
+  if k < 2 or turning.contact[k] == "flying" or turning.contact[k - 1] == "flying" then return 0 end
+  return (turn_share(k) - turn_share(k - 1)) / spacing
+end
 function drift_step(gap, gap_speed, time_i, dt)
   local k = math.min(floor(time_i / spacing + 0.5) + 1, #turning.contact)
   local state = turning.contact[k]
   if state == "sticking" then
     gap_speed = 0
-  elseif gap ~= 0 or gap_speed ~= 0 then
+  else
     local turn_rate = theta0 * omega * math.cos(omega * time_i)
     local spin_up = -theta0 * omega * omega * sin(omega * time_i)
-    local pull = turn_rate * turn_rate * gap
+    -- (the drift's raise δe of the centre: the turn's Euler push along the surface, −θ''·δe,
+    -- and its fling off it, m·θ'²·δe less N)
+    local lift = raised_at(k)
+    local pull = turn_rate * turn_rate * gap - spin_up * lift
     if state == "slipping" then
       local way = turning.speed[k] < 0 and -1 or 1
-      pull = pull + way * param.mu_k * (spin_up * gap + 2 * turn_rate * gap_speed)
+      pull = pull + way * param.mu_k * (spin_up * gap + 2 * turn_rate * gap_speed + turn_rate * turn_rate * lift
+                                        + share_rate(k) * substep_length() / mass)
     end
     gap_speed = gap_speed + pull * dt
   end
-  return gap + gap_speed * dt, gap_speed
+  -- And the turn's drift (see "slide at the end"): each world step moves the block along a
+  -- chord while the plank turns under it, s·(θ'·h)²/2 further out, stuck or sliding.
+  local turn_rate = theta0 * omega * math.cos(omega * time_i)
+  local drift = turning.slide[k] * turn_rate * turn_rate * 0.5 * substep_length()
+  return gap + (gap_speed + drift) * dt, gap_speed
 end
 local drifts, drifts_for = {}, nil
 function start_drift(t)
@@ -753,39 +789,84 @@ expect { "slide at the end", unit = "m",
   -- And the turn's drift: Box2D moves the block a step along its velocity, a straight line,
   -- while the plank turns under it by θ'·h, so seen from the plank the block ends each step
   -- s·(θ'·h)²/2 further out from the pivot than it was, stuck or sliding: s·θ'²·h/2 a second,
-  -- which no force in the step answers (the contact only pushes back along the normal). Its
-  -- sum over the run, at the world's step (its sub-step, where it takes several): shaken at a
-  -- steady 4 m/s² on a plank swinging 33.7° at 5 rad/s the block stays near 0.3 m out, and the
-  -- world's slide ends 0.014 m past the model's at 240 Hz, 0.0067 at 480, 0.0032 at 960.
+  -- which no force in the step answers (the contact only pushes back along the normal). Shaken
+  -- at a steady 4 m/s² on a plank swinging 33.7° at 5 rad/s the block stays near 0.3 m out, and
+  -- the world's slide ends 0.014 m past the model's at 240 Hz, 0.0067 at 480, 0.0032 at 960.
+  -- start_drift follows it (drift_step), at the world's sub-step, with the gap's other sources,
+  -- rather than adding up its size apart: 0.020 m allowed there at 240 Hz, 0.012 at 480.
+  -- (The 0.2 % of the path and the 3 mm are this row's flat allowances from before; not yet
+  -- replaced by named terms.)
   tolerance = function()
-    local path, drift = 0, 0
+    local path = 0
     local last = sample(duration)
-    for k = 2, last do
-      path = path + math.abs(turning.slide[k] - turning.slide[k - 1])
-      local turn_rate = theta0 * omega * math.cos(omega * (k - 1) * spacing)
-      drift = drift + math.abs(turning.slide[k]) * turn_rate * turn_rate * spacing
-    end
-    return 0.002 * path + 3e-3 + start_drift(duration) + 0.5 * substep_length() * drift
-           + (breakaways_shifted(duration))
+    for k = 2, last do path = path + math.abs(turning.slide[k] - turning.slide[k - 1]) end
+    return 0.002 * path + 3e-3 + start_drift(duration) + (breakaways_shifted(duration))
   end }
+-- The drift (contact_lost_by) raises the block's centre off the surface by up to the slop, and
+-- the turn then flings it by m·θ'²·(that) more than the model's block, whose centre stays e
+-- above the surface: the world's N is less by that much (a block held at the pivot on a plank
+-- swinging 25.3° at 10 rad/s, 10 kg: N 0.95 N under the model's at 2.56 s at 240 Hz, 0.47 at
+-- 480, in step with θ'², and 0.17 N off with this term). The overlap's model follows the
+-- world's raise only so far: the world's shortfall measured 0.6 to 1.25 times this term (0.1 kg
+-- held at the pivot on a plank swinging 22.67° at 10 rad/s: the term 0.0046 N at 2.5 s, 0.0017 N
+-- apart from the shortfall, halving with the step). It halves with the step, a stepped world's
+-- error rather than physics: the row allows it (1.25 times, a measured share, not a derived
+-- one) and the theory stays the model's.
+local function raised_by(t)
+  contact_lost_by(t)
+  return raised[math.min(sample(t), #raised)] or 0
+end
 expect { "normal force halfway", unit = "N",
   predicted = function() return no_model(duration / 2) or mid_step(true, "normal", duration / 2) end,
   measured = function() return no_model(duration / 2) or recorded("normal_force", duration / 2) end,
-  -- 1 % of the weight, and how much the force changes in a step there: Box2D's reading is a
-  -- step's mean, and where the surface turns fast (N falls by over 1 N a step in the article's
-  -- first example) a part of a step is most of the difference (the turn's share of N arriving
-  -- a step late is within that change: late_share is not added again). And where the world's
-  -- start carried the block apart from the model's (start_drift: δs off, δs' faster), the turn presses it
-  -- differently there, by m·(θ''·δs + 2θ'·δs') (frictionless, shaken at 17 m/s² on a plank
-  -- swinging 5.6° at 10 rad/s: 0.13 m apart by 2.5 s, N 3.9 N off where 2.7 N was allowed).
+  -- Read where the world reads it (the model's mid-step, as the reading is the step's mean), the
+  -- rest is named here:
+  -- - The instants inside the step: Box2D solves a step's contact along the normal the step
+  --   began with, and the plank's change of velocity is over the step's start, so the article's
+  --   part m·(g·cos θ − a·sin θ) is the model's half a (sub)step before the middle; the turn's
+  --   share (late_share) comes from the velocity carried through the step before, a whole step
+  --   late. Bounded by a whole step's change of each: half a step for the article's part fell
+  --   short on the random sweep (errors up to 1.25 times that bound, all halving with the step),
+  --   where more than the step's first normal moves it (the plank's velocity, changed once a
+  --   step, and the block's own carried velocity); a whole step covers them.
+  -- - Where the world's block runs apart from the model's (start_drift: δs off, δs' faster),
+  --   the turn presses it differently there, by m·(θ''·δs + 2θ'·δs') (frictionless, shaken at
+  --   17 m/s² on a plank swinging 5.6° at 10 rad/s: 0.13 m apart by 2.5 s, N 3.9 N off).
+  --   start_drift follows the gap itself well there (0.0498 m against the world's 0.0502 at
+  --   2.5 s, frictionless, shaken at −8.2 m/s² on a plank swinging 3.2° at 10 rad/s), but the
+  --   world's N sits 1.4 to 2.3 times this press off the model's over the run, at the swing's
+  --   rate, which is not explained yet (the 1 % of the weight below covers it there).
+  -- - Single precision: the normal impulse keeps that step's roundings of the block's velocity,
+  --   (1 + 9·k)·2^-24 of it over h, k = 4 constraints (two points, normal and friction), times m.
+  -- - The raise (raised_by above): the world's N falls short of the model's by 0.6 to 1.25
+  --   times m·θ'²·(raise), halving with the step: a stepped world's error, so allowed here, not
+  --   taken off the theory, at the largest share measured (1.25: measured, not derived).
+  -- - And 1 % of the weight, the flat allowance this row had, kept for what none of the above
+  --   bounds: on the article's own example the world's N at 2.5 s is 0.017, 0.0065 and 0.0061 N
+  --   over the model's at 240, 480 and 960 Hz, then 0.011 N under it at 2000 Hz and 0.049 N under
+  --   at 3840 Hz, growing as the step shrinks (the listener's hold band moving where the block
+  --   breaks away, as breakaways_shifted tells, is the likely cause; not followed yet). Without
+  --   it the named terms alone passed 2079 of the 2080 random settings of seeds 1 to 25 and 8001
+  --   at 240 Hz (the one left, a light block held at the pivot, is the raise's half above), but
+  --   not the article's example at 2000 Hz.
+  -- The solver is no term: the two points' normal impulses are solved together, exactly, each
+  -- iteration (Box2D's block solver), and the errors measured halve with the step.
   tolerance = function()
     local t = duration / 2
-    local k = sample(t)
+    local k = math.max(sample(t), 2)
     local gap, gap_speed = start_drift(t)
     local spin_up = theta0 * omega * omega * math.abs(sin(omega * t))
     local turn_rate = theta0 * omega * math.abs(math.cos(omega * t))
-    return 0.01 * mass * g + 0.5 * math.abs(turning.normal[k + 1] - turning.normal[k - 1])
-           + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + 1e-3
+    local steps = h / spacing
+    local article_change = math.abs((turning.normal[k] - turn_share(k)) - (turning.normal[k - 1] - turn_share(k - 1)))
+                           * steps
+    local pivot_speed = a_x_omega == 0 and math.abs(a_x) * t or math.abs(a_x * sin(a_x_omega * t) / a_x_omega)
+    local block_speed = g * substep_length() + pivot_speed + turn_rate * (math.abs(turning.slide[k]) + centre_height)
+                        + math.abs(turning.speed[k])
+    local rounding = (1 + 9 * 4) * 2 ^ -24 * mass * block_speed / substep_length()
+    local raise = mass * turn_rate * turn_rate * raised_by(t)
+    return article_change + late_share(k) + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + rounding
+           + 1.25 * raise + 0.01 * mass * g
   end }
 expect { "first slip", unit = "s",
   predicted = function()

@@ -23,6 +23,7 @@ struct StepSettings {
   int position_iterations = 3;   // [0, 1000]
   FrictionTreatment treatment = FrictionTreatment::stick_slip;
   double threshold_speed = 0.01; // epsilon of the threshold and regularized treatments, m/s
+  bool operator==(const StepSettings&) const = default;
 };
 // Throws InvalidInput naming the setting and its allowed range.
 void validate(const StepSettings& settings);

@@ -89,6 +89,59 @@ std::string cell(const Outcome& outcome) {
   return format_number(outcome.error, 2) + (letter.empty() ? "" : " " + letter);
 }
 
+// The fitted orders under a problem's chart, in lines of at most about 72 characters.
+void note_fitted_orders(draw::Chart& chart, const std::vector<std::pair<std::string, double>>& orders) {
+  std::string note = "fitted order:";
+  for (const auto& [method, order] : orders) {
+    char part[120];
+    std::snprintf(part, sizeof part, " %s %.1f%s", short_method(method).c_str(), order, &order == &orders.back().second ? "" : ",");
+    if (note.size() + std::strlen(part) > 72) {
+      chart.notes.push_back(note);
+      note = " ";
+    }
+    note += part;
+  }
+  if (!orders.empty()) chart.notes.push_back(note);
+}
+
+// The spring problem at 240 Hz with the stick-slip treatment: the solver's velocity
+// iterations, and sub-steps at 60 Hz; each run written to the CSV as measured.
+std::vector<AccuracyRun> spring_knob_runs(bool quick, int repeats, std::ostream& csv) {
+  std::vector<AccuracyRun> knob_runs;
+  const BenchmarkProblem spring = spring_problem();
+  for (const int count : quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}) {
+    StepSettings settings;
+    settings.velocity_iterations = count;
+    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,240,1," << count << ',' << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    knob_runs.push_back({"240 Hz, velocity iterations", static_cast<double>(count), run.error, run.cost, run.fails});
+  }
+  for (const int count : quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 4, 8, 16}) {
+    StepSettings settings;
+    settings.hz = 60;
+    settings.substeps = count;
+    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
+    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,60," << count << ",8," << run.error << ',' << run.cost << ',' << run.fails << '\n';
+    knob_runs.push_back({"60 Hz, sub-steps", static_cast<double>(count), run.error, run.cost, run.fails});
+  }
+  return knob_runs;
+}
+
+// The legend chart from a problem chart's series: every method's colour, and the marks.
+void finish_methods_legend(draw::Chart& legend) {
+  std::erase_if(legend.series, [](const draw::ChartSeries& series) { return series.marker == draw::Marker::cross; });
+  for (draw::ChartSeries& series : legend.series) {
+    const std::size_t cut = series.name.find(" (order");
+    if (cut != std::string::npos) series.name.erase(cut);
+    series.points.clear();
+  }
+  const auto [failed, wrong] = failure_marks();
+  legend.series.push_back(failed);
+  legend.series.push_back(wrong);
+  legend.notes = {"points labelled by step rate (Hz)", "exact answers (error 0) drawn at 10\u207b\u00b9\u00b2",
+                  "fitted order: slope of log error against log step", "over the runs that did not fail"};
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const std::string& directory, std::ostream& out,
@@ -153,52 +206,13 @@ std::vector<std::pair<std::string, std::string>> problem_files(bool quick, const
     // One legend for all (the colours are the same in every chart), the fitted orders here.
     chart.legend = draw::Chart::Legend::none;
     chart.notes.pop_back();
-    std::string note = "fitted order:";
-    for (const auto& [method, order] : orders) {
-      char part[120];
-      std::snprintf(part, sizeof part, " %s %.1f%s", short_method(method).c_str(), order, &order == &orders.back().second ? "" : ",");
-      if (note.size() + std::strlen(part) > 72) {
-        chart.notes.push_back(note);
-        note = " ";
-      }
-      note += part;
-    }
-    if (!orders.empty()) chart.notes.push_back(note);
+    note_fitted_orders(chart, orders);
     charts.push_back(chart);
     if (legend.series.empty()) legend.series = chart.series;
   }
 
-  // The spring problem at 240 Hz with the stick-slip treatment: the solver's velocity
-  // iterations, and sub-steps at 60 Hz.
-  std::vector<AccuracyRun> knob_runs;
-  const BenchmarkProblem spring = spring_problem();
-  for (const int count : quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}) {
-    StepSettings settings;
-    settings.velocity_iterations = count;
-    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,240,1," << count << ',' << run.error << ',' << run.cost << ',' << run.fails << '\n';
-    knob_runs.push_back({"240 Hz, velocity iterations", static_cast<double>(count), run.error, run.cost, run.fails});
-  }
-  for (const int count : quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 4, 8, 16}) {
-    StepSettings settings;
-    settings.hz = 60;
-    settings.substeps = count;
-    const Trial run = measure_setting(spring, settings, repeats, INFINITY);
-    csv << quoted(spring.name) << ',' << quoted(spring.question) << ",m,\"Box2D + stick-slip\",stick-slip,,60," << count << ",8," << run.error << ',' << run.cost << ',' << run.fails << '\n';
-    knob_runs.push_back({"60 Hz, sub-steps", static_cast<double>(count), run.error, run.cost, run.fails});
-  }
-  // The legend: every method's colour, and the marks.
-  std::erase_if(legend.series, [](const draw::ChartSeries& series) { return series.marker == draw::Marker::cross; });
-  for (draw::ChartSeries& series : legend.series) {
-    const std::size_t cut = series.name.find(" (order");
-    if (cut != std::string::npos) series.name.erase(cut);
-    series.points.clear();
-  }
-  const auto [failed, wrong] = failure_marks();
-  legend.series.push_back(failed);
-  legend.series.push_back(wrong);
-  legend.notes = {"points labelled by step rate (Hz)", "exact answers (error 0) drawn at 10\u207b\u00b9\u00b2",
-                  "fitted order: slope of log error against log step", "over the runs that did not fail"};
+  const std::vector<AccuracyRun> knob_runs = spring_knob_runs(quick, repeats, csv);
+  finish_methods_legend(legend);
   charts.push_back(legend);
   draw::Chart knobs = work_precision_chart("Spring, Box2D + stick-slip: iterations and sub-steps", "error (m)", knob_runs, false);
   knobs.series[0].colour = IM_COL32(0, 114, 178, 255);

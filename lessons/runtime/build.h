@@ -81,6 +81,10 @@ struct LessonBuild {
   std::map<std::string, GivenValue> overrides;
   bool strict = true;
   StepSettings settings;
+  // Nothing set from outside and the default step: the settings a script's author ran it at,
+  // where its own promises (a moment before the end, a typed answer for a typed prediction) are
+  // checked. A coarser step may rightly turn a row's theory into words ("jitters at this step").
+  bool at_the_defaults() const { return overrides.empty() && settings == StepSettings{}; }
   std::unique_ptr<Scene> scene;
   PairTable presets;
   // Pairs a script gave fixed values with pair{ ..., sliders = false }: declared, with no

@@ -269,7 +269,7 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, std::strin
   }
   // At the defaults a moment must come before the end; with other values the lesson may be
   // shorter, and a moment past its end is simply not reached.
-  check_moments(*next, next->overrides.empty() && !next->moments.empty() ? std::optional(duration_of(*next)) : std::nullopt);
+  check_moments(*next, next->at_the_defaults() && !next->moments.empty() ? std::optional(duration_of(*next)) : std::nullopt);
   for (const Plot& plot : next->plots) {
     std::vector<std::string> names = plot.y;
     if (plot.x != "time") names.push_back(plot.x);
@@ -477,6 +477,14 @@ std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
       const std::string where = expectation.declared_at + ": expect '" + expectation.name + "': ";
       build.push_value(expectation.predicted);
       row.numeric = lua_type(state, -1) == LUA_TNUMBER;
+      // An infinite or NaN row would print as "inf" and fail as if the world were wrong; it is the
+      // script's mistake (a division by zero at these values), said where the row is declared.
+      if (row.numeric && !std::isfinite(lua_tonumber(state, -1))) {
+        const std::string got = describe(state, -1);
+        lua_pop(state, 1);
+        throw ScriptError(where + "predicted gave " + got + "; where theory has no number at these values, say why in "
+                          "words, as in predicted = \"never slides\"");
+      }
       if (row.numeric) {
         row.predicted = lua_tonumber(state, -1);
       } else if (lua_type(state, -1) == LUA_TSTRING || lua_type(state, -1) == LUA_TBOOLEAN) {
@@ -493,6 +501,12 @@ std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
       if (!row.measured_yet) {
         row.measured_text = "not measured";
       } else if (row.numeric && lua_type(state, -1) == LUA_TNUMBER) {
+        if (!std::isfinite(lua_tonumber(state, -1))) {
+          const std::string got = describe(state, -1);
+          lua_pop(state, 1);
+          throw ScriptError(where + "measured gave " + got + "; a reading must be a finite number, or a word saying why "
+                            "there is none, as in \"still sliding\"");
+        }
         row.measured = lua_tonumber(state, -1);
       } else if (row.numeric && lua_type(state, -1) == LUA_TSTRING) {
         // A word where a number is due says why there is no number yet ("still sliding"): the
@@ -511,7 +525,7 @@ std::vector<ExpectationResult> Lesson::rows_now(std::exception_ptr& failure) {
       lua_pop(state, 1);
       if (row.numeric) {
         build.push_value(expectation.tolerance);
-        if (lua_type(state, -1) != LUA_TNUMBER || !(lua_tonumber(state, -1) >= 0.0)) {
+        if (lua_type(state, -1) != LUA_TNUMBER || !(lua_tonumber(state, -1) >= 0.0) || std::isinf(lua_tonumber(state, -1))) {
           const std::string got = describe(state, -1);
           lua_pop(state, 1);
           throw ScriptError(where + "a number needs a tolerance >= 0 in its unit, as in tolerance = 0.05; got " + got);

@@ -1,9 +1,11 @@
 // The lesson part of the script API: what the lesson is and asks, its parameters, materials
 // and pairs, probes, plots, expectations and every-step functions.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <set>
 #include <span>
@@ -342,6 +344,166 @@ void follow_in_time(LessonBuild& build, const std::string& a, const std::string&
   scene->set_before_substep(build.before_substep);
 }
 
+// The two materials a pair names first, refused when the lesson has that pair already (with
+// sliders or fixed, either way round).
+std::array<std::string, 2> pair_materials(lua_State* state, const LessonBuild& build) {
+  std::array<std::string, 2> names;
+  for (int i = 0; i < 2; ++i) {
+    lua_rawgeti(state, 1, i + 1);
+    if (lua_type(state, -1) != LUA_TSTRING) {
+      throw InvalidInput("pair names its two materials first, as in pair{ \"aluminium\", \"wood\", mu_s = 0.45, "
+                         "mu_k = 0.35 }; got " + describe(state, -1));
+    }
+    names[i] = lua_tostring(state, -1);
+    lua_pop(state, 1);
+  }
+  const std::string label = names[0] + "/" + names[1];
+  for (const Parameter& declared : build.parameters) {
+    const bool same = (declared.material_a == names[0] && declared.material_b == names[1]) ||
+                      (declared.material_a == names[1] && declared.material_b == names[0]);
+    if (same) throw InvalidInput("pair " + label + " is given twice (first at " + declared.declared_at + ")");
+  }
+  for (const auto& [fixed_a, fixed_b] : build.fixed_pairs) {
+    if ((fixed_a == names[0] && fixed_b == names[1]) || (fixed_a == names[1] && fixed_b == names[0])) {
+      throw InvalidInput("pair " + label + " is given twice");
+    }
+  }
+  return names;
+}
+
+// like = { "a", "b" }: the pair whose values this one shares (none given: two empty names).
+std::array<std::string, 2> shared_pair_named(lua_State* state, Fields& fields, const std::vector<const char*>& value_fields,
+                                             const std::string& label) {
+  std::array<std::string, 2> like;
+  if (fields.has("like")) {
+    // Every value; a shared pair may still have a treatment of its own.
+    for (const char* key : value_fields) {
+      if (fields.has(key)) {
+        throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " + key);
+      }
+    }
+    fields.push("like");
+    for (int i = 0; i < 2; ++i) {
+      if (lua_istable(state, -1)) lua_rawgeti(state, -1, i + 1); else lua_pushnil(state);
+      const bool named = lua_type(state, -1) == LUA_TSTRING;
+      if (named) like[i] = lua_tostring(state, -1);
+      lua_pop(state, 1);
+      if (!named) {
+        lua_pop(state, 1);
+        throw InvalidInput("pair " + label + ": like names the pair whose values this one takes, as in "
+                           "like = { \"block\", \"slope\" }");
+      }
+    }
+    lua_pop(state, 1);
+  }
+  return like;
+}
+
+// The pair's coefficients read into `values` (left as they are where the script gives none),
+// each in the same range as its slider, so the default a script gives can also be set back. A
+// coefficient given as a function of time (a surface oiled now and then) is asked at the
+// start of every sub-step instead, and has no slider: those are returned.
+std::vector<TimedCoefficient> read_coefficients(lua_State* state, LessonBuild& build, Fields& fields, const std::string& label,
+                                                FrictionPair& values) {
+  std::vector<TimedCoefficient> timed;
+  for (const PairCoefficient& coefficient : pair_coefficients) {
+    const char* key = coefficient.name;
+    double& slot = values.*coefficient.value;
+    if (fields.push_function(key)) {  // (like = with any coefficient is refused before)
+      const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
+      const std::string what = "pair " + label + ": " + key + " (t -> a number)";
+      timed.push_back({&coefficient, function_of_time(build, reference, 1, what), build.defined_at(reference)});
+      slot = timed_value(timed.back(), label, 0.0);
+      continue;
+    }
+    fields.push(key);
+    if (lua_istable(state, -1)) {
+      auto steps = read_schedule(state, -1, "pair " + label + ": " + key, coefficient.lesson_largest);
+      lua_pop(state, 1);
+      const auto at = [steps = std::move(steps)](double t) {
+        std::size_t k = steps.size() - 1;
+        while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
+        return std::array<double, 2>{steps[k][1], 0.0};
+      };
+      timed.push_back({&coefficient, at, caller(state)});
+      slot = timed_value(timed.back(), label, 0.0);
+      continue;
+    }
+    lua_pop(state, 1);
+    slot = fields.number_in(key, coefficient.unit, slot, 0.0, coefficient.lesson_largest);
+  }
+  return timed;
+}
+
+// A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
+// Its epsilon is no slider of its own: a lesson that varies it passes one of its parameters.
+struct PairTreatmentAsked {
+  std::optional<FrictionTreatment> treatment;
+  std::optional<double> epsilon;
+};
+
+PairTreatmentAsked pair_treatment(Fields& fields, const std::string& label) {
+  PairTreatmentAsked asked;
+  if (fields.has("treatment")) {
+    const std::string name = fields.text("treatment", "");
+    try {
+      asked.treatment = parse_treatment(name);
+    } catch (const InvalidInput& error) {
+      throw InvalidInput("pair " + label + ": " + error.what());
+    }
+    if (fields.has("epsilon")) {
+      if (!uses_epsilon(*asked.treatment)) {
+        throw InvalidInput("pair " + label + ": epsilon is for the threshold and regularized treatments, not " + name);
+      }
+      asked.epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
+    }
+  } else if (fields.has("epsilon")) {
+    throw InvalidInput("pair " + label + ": epsilon needs treatment = \"threshold\" or \"regularized\"");
+  }
+  return asked;
+}
+
+// sliders = false: the script fixes the values itself (from parameters of its own, say, when
+// one slider must drive several pairs), so the pair makes no parameters. A list of
+// coefficients makes sliders for those only (terrain's surfaces offer mu_s and mu_k, not
+// the c and b its theory leaves out); the others keep the script's values.
+// Whether the pair makes sliders, and for which coefficients in `only` (empty: all).
+bool wants_sliders(lua_State* state, Fields& fields, const std::string& label, const std::vector<TimedCoefficient>& timed,
+                   std::set<const PairCoefficient*>& only) {
+  bool with_sliders = true;
+  if (fields.has("sliders")) {
+    fields.push("sliders");
+    if (lua_istable(state, -1)) {
+      const lua_Integer count = luaL_len(state, -1);
+      for (lua_Integer i = 1; i <= count; ++i) {
+        lua_rawgeti(state, -1, i);
+        const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
+        const std::string word = key ? key : describe(state, -1);
+        lua_pop(state, 1);
+        const PairCoefficient* listed = key == nullptr ? nullptr : pair_coefficient(word);
+        if (listed == nullptr) {
+          lua_pop(state, 1);
+          throw InvalidInput("pair " + label + ": sliders lists coefficients from " + pair_coefficient_names() +
+                             ", as in sliders = { \"mu_s\", \"mu_k\" }; got " + word);
+        }
+        only.insert(listed);
+      }
+      lua_pop(state, 1);
+      if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
+      for (const TimedCoefficient& coefficient : timed) {
+        if (only.count(coefficient.which) > 0) {
+          throw InvalidInput("pair " + label + ": " + coefficient.which->name +
+                             " changes with time (a function or a schedule), which no slider can set; leave it out of sliders");
+        }
+      }
+    } else {
+      lua_pop(state, 1);
+      with_sliders = fields.flag("sliders").value_or(true);
+    }
+  }
+  return with_sliders;
+}
+
 int pair(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "pair");
@@ -354,55 +516,15 @@ int pair(lua_State* state) {
     std::vector<const char*> known = value_fields;
     known.insert(known.end(), {"treatment", "epsilon", "like"});
     Fields fields(state, 1, "pair", std::span<const char* const>(known));
-    std::string names[2];
-    for (int i = 0; i < 2; ++i) {
-      lua_rawgeti(state, 1, i + 1);
-      if (lua_type(state, -1) != LUA_TSTRING) {
-        throw InvalidInput("pair names its two materials first, as in pair{ \"aluminium\", \"wood\", mu_s = 0.45, "
-                           "mu_k = 0.35 }; got " + describe(state, -1));
-      }
-      names[i] = lua_tostring(state, -1);
-      lua_pop(state, 1);
-    }
+    const std::array<std::string, 2> names = pair_materials(state, build);
     const std::string label = names[0] + "/" + names[1];
-    for (const Parameter& declared : build.parameters) {
-      const bool same = (declared.material_a == names[0] && declared.material_b == names[1]) ||
-                        (declared.material_a == names[1] && declared.material_b == names[0]);
-      if (same) throw InvalidInput("pair " + label + " is given twice (first at " + declared.declared_at + ")");
-    }
-    for (const auto& [fixed_a, fixed_b] : build.fixed_pairs) {
-      if ((fixed_a == names[0] && fixed_b == names[1]) || (fixed_a == names[1] && fixed_b == names[0])) {
-        throw InvalidInput("pair " + label + " is given twice");
-      }
-    }
     for (const std::string& name : names) build.use_material(name);
     {
       PairTable& table = build.scene->pairs();
       const int a = table.find_material(names[0]), b = table.find_material(names[1]);
       if (a >= 0 && b >= 0 && table.is_shared(a, b)) throw InvalidInput("pair " + label + " is given twice");
     }
-    std::string like[2];
-    if (fields.has("like")) {
-      // Every value; a shared pair may still have a treatment of its own.
-      for (const char* key : value_fields) {
-        if (fields.has(key)) {
-          throw InvalidInput("pair " + label + ": like = takes every value from the other pair; give no " + key);
-        }
-      }
-      fields.push("like");
-      for (int i = 0; i < 2; ++i) {
-        if (lua_istable(state, -1)) lua_rawgeti(state, -1, i + 1); else lua_pushnil(state);
-        const bool named = lua_type(state, -1) == LUA_TSTRING;
-        if (named) like[i] = lua_tostring(state, -1);
-        lua_pop(state, 1);
-        if (!named) {
-          lua_pop(state, 1);
-          throw InvalidInput("pair " + label + ": like names the pair whose values this one takes, as in "
-                             "like = { \"block\", \"slope\" }");
-        }
-      }
-      lua_pop(state, 1);
-    }
+    const std::array<std::string, 2> like = shared_pair_named(state, fields, value_fields, label);
     FrictionPair values;
     if (!like[0].empty()) {
       // Values come from the other pair, now and at every slider change: no sliders here.
@@ -421,97 +543,15 @@ int pair(lua_State* state) {
     bool first_pair = true;
     for (const Parameter& p : build.parameters) first_pair = first_pair && p.coefficient == nullptr;
     const std::string prefix = fields.has("name") ? fields.text("name", "") + "." : first_pair ? "" : names[0] + "_" + names[1] + ".";
-    // The same range as its slider, so the default a script gives can also be set back. A
-    // coefficient given as a function of time (a surface oiled now and then) is asked at the
-    // start of every sub-step instead, and has no slider.
-    std::vector<TimedCoefficient> timed;
-    for (const PairCoefficient& coefficient : pair_coefficients) {
-      const char* key = coefficient.name;
-      double& slot = values.*coefficient.value;
-      if (fields.push_function(key)) {  // (like = with any coefficient is refused above)
-        const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
-        const std::string what = "pair " + label + ": " + key + " (t -> a number)";
-        timed.push_back({&coefficient, function_of_time(build, reference, 1, what), build.defined_at(reference)});
-        slot = timed_value(timed.back(), label, 0.0);
-        continue;
-      }
-      fields.push(key);
-      if (lua_istable(state, -1)) {
-        auto steps = read_schedule(state, -1, "pair " + label + ": " + key, coefficient.lesson_largest);
-        lua_pop(state, 1);
-        const auto at = [steps = std::move(steps)](double t) {
-          std::size_t k = steps.size() - 1;
-          while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
-          return std::array<double, 2>{steps[k][1], 0.0};
-        };
-        timed.push_back({&coefficient, at, caller(state)});
-        slot = timed_value(timed.back(), label, 0.0);
-        continue;
-      }
-      lua_pop(state, 1);
-      slot = fields.number_in(key, coefficient.unit, slot, 0.0, coefficient.lesson_largest);
-    }
-    // A pair's own treatment (the run's --friction and Simulation menu then leave it alone).
-    // Its epsilon is no slider of its own: a lesson that varies it passes one of its parameters.
-    std::optional<FrictionTreatment> treatment;
-    std::optional<double> epsilon;
-    if (fields.has("treatment")) {
-      const std::string name = fields.text("treatment", "");
-      try {
-        treatment = parse_treatment(name);
-      } catch (const InvalidInput& error) {
-        throw InvalidInput("pair " + label + ": " + error.what());
-      }
-      if (fields.has("epsilon")) {
-        if (!uses_epsilon(*treatment)) {
-          throw InvalidInput("pair " + label + ": epsilon is for the threshold and regularized treatments, not " + name);
-        }
-        epsilon = fields.number_in("epsilon", "m/s", 0.0, 100.0, true);
-      }
-    } else if (fields.has("epsilon")) {
-      throw InvalidInput("pair " + label + ": epsilon needs treatment = \"threshold\" or \"regularized\"");
-    }
+    std::vector<TimedCoefficient> timed = read_coefficients(state, build, fields, label, values);
+    const auto [treatment, epsilon] = pair_treatment(fields, label);
     if (!like[0].empty()) {
       build.scene->pairs().share_pair(names[0], names[1], like[0], like[1]);
       if (treatment) build.scene->pairs().set_treatment(names[0], names[1], *treatment, epsilon);
       return 0;
     }
-    // sliders = false: the script fixes the values itself (from parameters of its own, say, when
-    // one slider must drive several pairs), so the pair makes no parameters. A list of
-    // coefficients makes sliders for those only (terrain's surfaces offer mu_s and mu_k, not
-    // the c and b its theory leaves out); the others keep the script's values.
     std::set<const PairCoefficient*> only;
-    bool with_sliders = true;
-    if (fields.has("sliders")) {
-      fields.push("sliders");
-      if (lua_istable(state, -1)) {
-        const lua_Integer count = luaL_len(state, -1);
-        for (lua_Integer i = 1; i <= count; ++i) {
-          lua_rawgeti(state, -1, i);
-          const char* key = lua_type(state, -1) == LUA_TSTRING ? lua_tostring(state, -1) : nullptr;
-          const std::string word = key ? key : describe(state, -1);
-          lua_pop(state, 1);
-          const PairCoefficient* listed = key == nullptr ? nullptr : pair_coefficient(word);
-          if (listed == nullptr) {
-            lua_pop(state, 1);
-            throw InvalidInput("pair " + label + ": sliders lists coefficients from " + pair_coefficient_names() +
-                               ", as in sliders = { \"mu_s\", \"mu_k\" }; got " + word);
-          }
-          only.insert(listed);
-        }
-        lua_pop(state, 1);
-        if (only.empty()) throw InvalidInput("pair " + label + ": sliders = {} makes no sliders; write sliders = false");
-        for (const TimedCoefficient& coefficient : timed) {
-          if (only.count(coefficient.which) > 0) {
-            throw InvalidInput("pair " + label + ": " + coefficient.which->name +
-                               " changes with time (a function or a schedule), which no slider can set; leave it out of sliders");
-          }
-        }
-      } else {
-        lua_pop(state, 1);
-        with_sliders = fields.flag("sliders").value_or(true);
-      }
-    }
+    bool with_sliders = wants_sliders(state, fields, label, timed, only);
     if (with_sliders && !timed.empty()) {
       // Sliders for the coefficients that are numbers only.
       if (only.empty()) {

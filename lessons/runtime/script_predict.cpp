@@ -101,9 +101,10 @@ int predict(lua_State* state) {
 }  // namespace
 
 void check_predictions(LessonBuild& build) {
-  // With other values (--set, a slider) a row may rightly answer otherwise: "not reached",
-  // "on the threshold: either". At the defaults it must answer what its prediction asks.
-  if (!build.overrides.empty()) return;
+  // With other values (--set, a slider, a coarser step) a row may rightly answer otherwise: "not
+  // reached", "on the threshold: either", "jitters at this step". At the defaults it must answer
+  // what its prediction asks.
+  if (!build.at_the_defaults()) return;
   lua_State* state = build.sandbox.state();
   for (const Prediction& prediction : build.predictions) {
     const Expectation& row = *find_expectation(build, prediction.expectation);
@@ -115,14 +116,15 @@ void check_predictions(LessonBuild& build) {
     lua_pop(state, 1);
     const std::string where = prediction.declared_at + ": predict '" + prediction.expectation + "': ";
     if (!prediction.is_choice() && type != LUA_TNUMBER) {
-      throw ScriptError(where + "the class types a number, but at the lesson's defaults its row's theory gives " + got +
-                        "; give choices = { ... } for a row answered in words");
+      throw ScriptError(where + "the class types a number, but at the lesson's defaults its row's theory (" +
+                        row.declared_at + ") gives " + got + "; give choices = { ... } for a row answered in words");
     }
     if (prediction.is_choice() &&
         (type != LUA_TSTRING ||
          std::find(prediction.choices.begin(), prediction.choices.end(), word) ==
              prediction.choices.end())) {
-      throw ScriptError(where + "at the lesson's defaults its row's theory gives " + got + ", which is not one of the choices " +
+      throw ScriptError(where + "at the lesson's defaults its row's theory (" + row.declared_at + ") gives " + got +
+                        ", which is not one of the choices " +
                         listed(prediction.choices) + "; the class must be able to pick the answer");
     }
   }

@@ -326,6 +326,253 @@ int regularized_creep(lua_State* state) {
   });
 }
 
+namespace {
+
+// The face the thrown box lands on, beyond its landing corner: the far end of that face (the
+// second-lowest corner), how much higher that end is, and where it is from the centre.
+struct FarEnd {
+  double rise = std::numeric_limits<double>::infinity();
+  double x = 0.0, y = 0.0;
+};
+
+FarEnd far_end_of(const theory::BoxLanding& landing, double width, double height) {
+  FarEnd far;
+  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+  for (const double sx : {-0.5, 0.5}) {
+    for (const double sy : {-0.5, 0.5}) {
+      const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
+      const bool landing_corner = std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12;
+      if (!landing_corner && y - landing.corner_y < far.rise) far.rise = y - landing.corner_y, far.x = x, far.y = y;
+    }
+  }
+  return far;
+}
+
+// The sub-steps of the impact's frame left after the sub-step that met the corner (0 without
+// sub-steps). That sub-step starts at the first sub-step boundary after the landing (the
+// late impact below, a bound on where in it the corner was met, is met in the same one); the
+// frame ends at the next frame boundary after it ends. Rounded to whole sub-steps: the
+// boundaries are multiples of the sub-step, read in floating point.
+int substeps_left_in_frame(double landing_time, double step, double substeps) {
+  if (step <= 0.0) return 0;
+  const double frame = step * substeps;
+  const double met_end = std::ceil(landing_time / step - 1e-9) * step + step;
+  const double frame_end = std::ceil(met_end / frame - 1e-9) * frame;
+  return std::max(static_cast<int>(std::lround((frame_end - met_end) / step)), 0);
+}
+
+// Box2D keeps positions and speeds in single precision: each step rounds the centre's height,
+// the angle (the corner moves r times its rounding) and the fall speed by up to 2^-24 of
+// themselves, so n steps to the landing can move the corner by about n·2^-24·(height + r·|angle| + g·t²/3)
+// (the speeds' roundings, summed over the steps' moves, give the last term). The
+// corner's fall crosses that in the time returned: a landing that close before a step boundary
+// may be met a step later (1.2 µs before one, met a step late, at 8 m/s and 2.99 rad/s).
+double landing_rounding_time(const theory::BoxLanding& landing, double width, double height, double centre_height,
+                             double spin, double g, double step) {
+  if (step <= 0.0) return 0.0;
+  const double fall_speed = g * landing.time - spin * landing.corner_x;  // the corner's, downward
+  const double steps = std::ceil(landing.time / step), reach = 0.5 * std::hypot(width, height);
+  const double drift = steps * std::ldexp(1.0, -24) *
+                       (centre_height + reach * std::abs(landing.angle) + g * landing.time * landing.time / 3.0);
+  return fall_speed > 0.0 ? drift / fall_speed : std::numeric_limits<double>::infinity();
+}
+
+// The box's first impact on the floor, and which corner took it.
+struct FirstImpact {
+  theory::CornerImpact impact{};
+  std::string corner = "lands flat";  // or "pitches over its front/rear edge", "grips", "slides"
+  double hit_x = 0.0, hit_y = 0.0;    // the corner that takes the impact, from the centre
+  // How far Box2D's solver, in its turns, leaves the corner's spin from the impact's (rad/s): the
+  // world's impact step ends there, and only the frame's later sub-steps settle it further.
+  double solver_shortfall = 0.0;
+  // How far the spin after moves if the world's single-precision corner is landing_rounding's
+  // time ahead of or behind theory's (rad/s).
+  double rounding_spread = 0.0;
+};
+
+// The thrown box as theory.thrown_box reads it, and the impacts of its corners on the floor in
+// a world stepped as the run steps (step 0: an instant's impact, unstepped).
+struct ThrownBox {
+  double width, height, mass, speed, spin, centre_height, mu_k, mu_s, restitution, g, clearance, step;
+  FrictionPair drag;  // the floor's viscous and quadratic drag (c, b), with mu_k
+  theory::BoxLanding landing;
+  double inertia;
+  int remaining;  // substeps_left_in_frame
+
+  // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
+  double flat_drag(double vx) const { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; }
+
+  // An impact on one corner (rx, ry from the centre, world axes), `late` s after the landing,
+  // its lever arm turned with the box. The contact point is where the two skins meet, half the
+  // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
+  // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
+  // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
+  // middle of what is left of the gap, where the point is, has risen by half that. A script's
+  // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
+  // so the corner may sink past it into the floor before a step finds it: the point is then
+  // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
+  // `face`: the step met the whole face (a flat landing), whose two-point contact takes the
+  // step's drag through the centre on the whole mass, not at the corner (b = 1000 N·s²/m² on
+  // 14.5 kg at 5.8 m/s: 2.2 m/s left, which mu_k 1.114 stops within the impact; the corner's
+  // drag, through its lever arm, left the box pitching over its front edge at -8.0 rad/s
+  // where the world's stopped turning).
+  // `turns`: 0 for the impact itself, or the turns of Box2D's solver, for what those leave.
+  theory::CornerImpact impact_on(double rx, double ry, double late, bool face = false, int turns = 0) const;
+
+  // Under sub-steps the world records the spin at the end of the frame, not of the sub-step
+  // that met the corner: the frame's remaining sub-steps act on the box first, each applying
+  // the corner's drag (c·v + b·v², on the sliding speed it brings in) and then the contact's
+  // impulse that stops the corner's fall again, with friction up to mu_k (mu_s if the corner
+  // gripped) times that impulse. At c = 949 N·s/m on a 20 kg box they take the spin from
+  // 3.9 to 1.6 rad/s in three 1/960 s sub-steps. Stepped here as the world steps them: drag,
+  // gravity, contact, the lever arm turned with the box. For a box met on a corner only.
+  theory::CornerImpact through_frame(theory::CornerImpact hit, double rx, double ry, double late) const;
+
+  // Landing flat, met `first_met` s after the landing (`far`: the face's other end), the face's
+  // two ends share the impact: each end's fall is stopped (or, with restitution e, turned back
+  // at e times its speed), and two ends that stop together stop the box's fall and its spin
+  // together (fall and spin each turned back at e times), the ends' loads shifting to hold
+  // friction's moment and the spin's. That holds while both loads are pushes: where one end
+  // alone, taking the impact, leaves the other rising (friction's moment about the front end,
+  // or a spin too fast for the fall to stop), that end takes it alone and the other lifts. A
+  // spinning box does not keep its spin through such a landing: at spin 7.638 rad/s and mu_k
+  // 0.4, the world's box stops turning.
+  FirstImpact on_its_face(const FarEnd& far, double first_met) const;
+  // Landing on its lowest corner, met `first_met` s after the landing; with what Box2D's solver
+  // in `solver_turns` turns, and a landing `landing_rounding` s sooner or later, would change.
+  FirstImpact on_its_corner(double first_met, double landing_rounding, int solver_turns) const;
+};
+
+FirstImpact ThrownBox::on_its_face(const FarEnd& far, double first_met) const {
+  FirstImpact first;
+  const double far_x = far.x, far_y = far.y;
+  const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
+  const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
+  const double rear_x = landing_leads ? far_x : landing.corner_x;
+  const double rear_y = landing_leads ? far_y : landing.corner_y;
+  const theory::CornerImpact front = impact_on(front_x, front_y, first_met, true), rear = impact_on(rear_x, rear_y, first_met, true);
+  first.hit_x = landing.corner_x, first.hit_y = landing.corner_y;
+  if (front.vy + front.omega * rear_x > 0.0) {
+    first.impact = front;
+    first.corner = "pitches over its front edge";
+    first.hit_x = front_x, first.hit_y = front_y;
+  } else if (rear.vy + rear.omega * front_x > 0.0) {
+    first.impact = rear;
+    first.corner = "pitches over its rear edge";
+    first.hit_x = rear_x, first.hit_y = rear_y;
+  } else {
+    first.impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
+    first.impact.omega = -restitution * spin;
+  }
+  return first;
+}
+
+FirstImpact ThrownBox::on_its_corner(double first_met, double landing_rounding, int solver_turns) const {
+  FirstImpact first;
+  first.hit_x = landing.corner_x, first.hit_y = landing.corner_y;
+  first.impact = impact_on(landing.corner_x, landing.corner_y, first_met);
+  first.solver_shortfall =
+      std::abs(impact_on(landing.corner_x, landing.corner_y, first_met, false, solver_turns).omega - first.impact.omega);
+  // The world's corner may be where theory's is a rounding's time sooner or later (a grazing
+  // corner that does not fall into the floor has no such time: nothing to weigh).
+  for (const double off : {-landing_rounding, landing_rounding}) {
+    if (!std::isfinite(off)) break;
+    first.rounding_spread = std::max(first.rounding_spread,
+                                     std::abs(impact_on(landing.corner_x, landing.corner_y, first_met + off).omega - first.impact.omega));
+  }
+  first.corner = first.impact.grips ? "grips" : "slides";
+  return first;
+}
+
+theory::CornerImpact ThrownBox::impact_on(double rx, double ry, double late, bool face, int turns) const {
+  const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
+  // The corner's fall since the landing: the centre's, and the turning's, taken whole (its
+  // curvature, omega²·|ry|·late²/2, is 0.4 mm at -17 rad/s a step late, and 0.2 mm of the
+  // point's height decides whether drag stops a corner there).
+  const double sunk = std::max(g * landing.time * late + 0.5 * g * late * late + ry - (s * rx + c * ry), 0.0);
+  const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
+  // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
+  // along the floor at that point feels.
+  double vx = face ? flat_drag(speed) : speed, omega = spin;
+  if (!face && step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
+    const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
+    const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
+    vx += impulse / mass;
+    omega -= py * impulse / inertia;
+  }
+  // A stepped world's corner born barely sliding (drag may have stopped it) starts stuck
+  // and is held in that step's impact up to static friction, a little over: at c = 300
+  // N·s/m on a 0.52 kg box the corner came in at 0.6 mm/s and left spinning at -6.16 rad/s,
+  // where sliding under mu_k = 0 leaves it at -13.6.
+  double mu = mu_k;
+  if (step > 0.0 && std::abs(vx - omega * py) <= stick_slip_birth_sliding_speed) {
+    mu = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
+  }
+  // The world's flight starts with half a step's gravity (its positions the exact parabola's at
+  // step boundaries, its speeds half a step behind), and the step adds a whole step's before
+  // its impact is solved: the box falls half a step's gravity faster than at the meeting.
+  const double vy = -g * (landing.time + late + 0.5 * step);
+  // Drag strong enough to turn the corner up off the floor leaves the normal impulse
+  // nothing to stop: the step's drag is then the whole of the impact.
+  if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
+  if (turns > 0) return theory::solver_corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution, turns);
+  const theory::CornerImpact hit = theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution);
+  // A corner that arrives sliding one way and leaves sliding the other (the normal impulse
+  // turning the box back) stopped within the impact. The stick-slip treatment finds that at
+  // the step's end and owes the box the impulse that makes the step end as Coulomb's law
+  // would, static friction holding the corner: paid at the next sub-step's start, so seen
+  // at the frame's end only when a sub-step of the frame is left (at c = 446 N·s/m, mu_k 0,
+  // mu_s 0.8: spin 4.6 rad/s after the impact's sub-step, -0.9 after the next).
+  const double arriving = vx - omega * py;
+  if (remaining > 0 && mu == mu_k && !hit.grips && arriving * (hit.vx - hit.omega * py) < 0.0) {
+    return theory::corner_impact(mass, inertia, px, py, vx, vy, omega,
+                                 std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band), restitution);
+  }
+  return hit;
+}
+
+theory::CornerImpact ThrownBox::through_frame(theory::CornerImpact hit, double rx, double ry, double late) const {
+  if (step <= 0.0) return hit;
+  // Static friction as the stick-slip treatment lets a stuck contact hold it, a little over.
+  const double held = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
+  bool stuck = hit.grips;
+  double turned = spin * late;
+  for (int k = 0; k < remaining; ++k) {
+    turned += hit.omega * step;
+    const double c = std::cos(turned), s = std::sin(turned);
+    const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * clearance;
+    if (drag.c > 0.0 || drag.b > 0.0) {
+      const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = hit.vx - hit.omega * py;
+      const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
+      hit.vx += impulse / mass;
+      hit.omega -= py * impulse / inertia;
+    }
+    hit.vy -= g * step;
+    // A corner moving up has left the floor: nothing stops it within the frame.
+    if (hit.vy + hit.omega * px >= 0.0) continue;
+    // A sliding corner whose sliding the contact's own impulse turns back (through the
+    // turning the normal impulse gives the box) stopped within the sub-step: the world
+    // sticks it again there and static friction holds it (at c = 446 N·s/m, mu_k 0, the
+    // spin went from 4.6 to -0.9 rad/s in that sub-step, where sliding on would leave it
+    // at 3.7). A stuck corner that static friction cannot hold breaks away and slides.
+    const double sliding = hit.vx - hit.omega * py;
+    theory::CornerImpact next =
+        theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, stuck ? held : mu_k, 0.0);
+    if (!stuck && sliding * (next.vx - next.omega * py) < 0.0) {
+      next = theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, held, 0.0);
+      stuck = next.grips;
+    } else if (stuck && !next.grips) {
+      next = theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, mu_k, 0.0);
+      stuck = false;
+    }
+    hit = next;
+  }
+  hit.grips = stuck;
+  return hit;
+}
+
+}  // namespace
+
 // The thrown box and its rotation-locked twin: the landing of the lowest corner, the impact on
 // it, and how far the locked box (thrown level, landing flat) goes before it stops.
 int thrown_box(lua_State* state) {
@@ -357,103 +604,11 @@ int thrown_box(lua_State* state) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
     const double inertia = mass * (width * width + height * height) / 12.0;
-    // The face the box lands on: the landing corner and the far end of that face (the
-    // second-lowest corner), how much higher that end is, and where it is from the centre.
-    double rise = infinity, far_x = 0.0, far_y = 0.0;
-    {
-      const double c = std::cos(landing.angle), s = std::sin(landing.angle);
-      for (const double sx : {-0.5, 0.5}) {
-        for (const double sy : {-0.5, 0.5}) {
-          const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
-          const bool landing_corner = std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12;
-          if (!landing_corner && y - landing.corner_y < rise) rise = y - landing.corner_y, far_x = x, far_y = y;
-        }
-      }
-    }
-    // The sub-steps of the impact's frame left after the sub-step that met the corner (0 without
-    // sub-steps). That sub-step starts at the first sub-step boundary after the landing (the
-    // late impact below, a bound on where in it the corner was met, is met in the same one); the
-    // frame ends at the next frame boundary after it ends. Rounded to whole sub-steps: the
-    // boundaries are multiples of the sub-step, read in floating point.
-    int remaining = 0;
-    if (step > 0.0) {
-      const double frame = step * substeps;
-      const double met_end = std::ceil(landing.time / step - 1e-9) * step + step;
-      const double frame_end = std::ceil(met_end / frame - 1e-9) * frame;
-      remaining = std::max(static_cast<int>(std::lround((frame_end - met_end) / step)), 0);
-    }
-    // An impact on one corner (rx, ry from the centre, world axes), `late` s after the landing,
-    // its lever arm turned with the box. The contact point is where the two skins meet, half the
-    // clearance below the core's corner (Box2D puts it in the middle of the gap): a skin's lever
-    // arm, which changes the spin after by up to 0.5 rad/s (at spin −1 rad/s: 4.77, not 5.27).
-    // Met `late` s after the landing, the corner has sunk into the gap by its fall since, and the
-    // middle of what is left of the gap, where the point is, has risen by half that. A script's
-    // gap (two 2.5 mm skins) is less than a step's fall at landing (16 mm at 3.8 m/s and 240 Hz),
-    // so the corner may sink past it into the floor before a step finds it: the point is then
-    // in the middle of the overlap, as far below the floor as the corner is below the gap's end.
-    // Landing flat, the face's drag goes through the centre (as Box2D's face contacts take it).
-    const auto flat_drag = [&](double vx) { return step > 0.0 ? damped_velocity(vx, mass, step, drag) : vx; };
-    // `face`: the step met the whole face (a flat landing), whose two-point contact takes the
-    // step's drag through the centre on the whole mass, not at the corner (b = 1000 N·s²/m² on
-    // 14.5 kg at 5.8 m/s: 2.2 m/s left, which mu_k 1.114 stops within the impact; the corner's
-    // drag, through its lever arm, left the box pitching over its front edge at -8.0 rad/s
-    // where the world's stopped turning).
-    // `turns`: 0 for the impact itself, or the turns of Box2D's solver, for what those leave.
-    const auto impact_on = [&](double rx, double ry, double late, bool face = false, int turns = 0) {
-      const double turn = spin * late, c = std::cos(turn), s = std::sin(turn);
-      // The corner's fall since the landing: the centre's, and the turning's, taken whole (its
-      // curvature, omega²·|ry|·late²/2, is 0.4 mm at -17 rad/s a step late, and 0.2 mm of the
-      // point's height decides whether drag stops a corner there).
-      const double sunk = std::max(g * landing.time * late + 0.5 * g * late * late + ry - (s * rx + c * ry), 0.0);
-      const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * (clearance - sunk);
-      // The step's drag on the point's sliding speed vx − ω·py, through the mass an impulse
-      // along the floor at that point feels.
-      double vx = face ? flat_drag(speed) : speed, omega = spin;
-      if (!face && step > 0.0 && (drag.c > 0.0 || drag.b > 0.0)) {
-        const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = vx - omega * py;
-        const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
-        vx += impulse / mass;
-        omega -= py * impulse / inertia;
-      }
-      // A stepped world's corner born barely sliding (drag may have stopped it) starts stuck
-      // and is held in that step's impact up to static friction, a little over: at c = 300
-      // N·s/m on a 0.52 kg box the corner came in at 0.6 mm/s and left spinning at -6.16 rad/s,
-      // where sliding under mu_k = 0 leaves it at -13.6.
-      double mu = mu_k;
-      if (step > 0.0 && std::abs(vx - omega * py) <= stick_slip_birth_sliding_speed) {
-        mu = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
-      }
-      // The world's flight starts with half a step's gravity (its positions the exact parabola's at
-      // step boundaries, its speeds half a step behind), and the step adds a whole step's before
-      // its impact is solved: the box falls half a step's gravity faster than at the meeting.
-      const double vy = -g * (landing.time + late + 0.5 * step);
-      // Drag strong enough to turn the corner up off the floor leaves the normal impulse
-      // nothing to stop: the step's drag is then the whole of the impact.
-      if (vy + omega * px >= 0.0) return theory::CornerImpact{false, 0.0, 0.0, vx, vy, omega};
-      if (turns > 0) return theory::solver_corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution, turns);
-      const theory::CornerImpact hit = theory::corner_impact(mass, inertia, px, py, vx, vy, omega, mu, restitution);
-      // A corner that arrives sliding one way and leaves sliding the other (the normal impulse
-      // turning the box back) stopped within the impact. The stick-slip treatment finds that at
-      // the step's end and owes the box the impulse that makes the step end as Coulomb's law
-      // would, static friction holding the corner: paid at the next sub-step's start, so seen
-      // at the frame's end only when a sub-step of the frame is left (at c = 446 N·s/m, mu_k 0,
-      // mu_s 0.8: spin 4.6 rad/s after the impact's sub-step, -0.9 after the next).
-      const double arriving = vx - omega * py;
-      if (remaining > 0 && mu == mu_k && !hit.grips && arriving * (hit.vx - hit.omega * py) < 0.0) {
-        return theory::corner_impact(mass, inertia, px, py, vx, vy, omega,
-                                     std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band), restitution);
-      }
-      return hit;
-    };
-    // Landing flat, the face's two ends share the impact: each end's fall is stopped (or, with
-    // restitution e, turned back at e times its speed), and two ends that stop together stop
-    // the box's fall and its spin together (fall and spin each turned back at e times), the
-    // ends' loads shifting to hold friction's moment and the spin's. That holds while both
-    // loads are pushes: where one end alone, taking the impact, leaves the other rising (friction's
-    // moment about the front end, or a spin too fast for the fall to stop), that end takes it
-    // alone and the other lifts. A spinning box does not keep its spin through such a landing:
-    // at spin 7.638 rad/s and mu_k 0.4, the world's box stops turning.
-    // Before any impact, too: a stepped world finds contacts at a step's start, so it first
+    const ThrownBox box{width, height, mass, speed, spin, centre_height, mu_k, mu_s, restitution, g, clearance, step,
+                        drag, landing, inertia, substeps_left_in_frame(landing.time, step, substeps)};
+    const FarEnd far = far_end_of(landing, width, height);
+    const double rise = far.rise, far_x = far.x;
+    // Before any impact, a stepped world finds contacts at a step's start, so it first
     // meets the corner at the first step boundary after the landing, the corner sunk into the gap
     // by its fall since, and it finds the far end in the same step if that end has fallen as far
     // as its rise (then both ends take that step's impact together, and no single-corner impact
@@ -464,20 +619,7 @@ int thrown_box(lua_State* state) {
     // The world's flight starts with half a step's gravity, so its positions at step boundaries are
     // the exact parabola's: it meets the corner this long after the exact landing (0 unstepped).
     const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
-    // Box2D keeps positions and speeds in single precision: each step rounds the centre's height,
-    // the angle (the corner moves r times its rounding) and the fall speed by up to 2^-24 of
-    // themselves, so n steps to the landing can move the corner by about n·2^-24·(height + r·|angle| + g·t²/3)
-    // (the speeds' roundings, summed over the steps' moves, give the last term). The
-    // corner's fall crosses that in the time below: a landing that close before a step boundary
-    // may be met a step later (1.2 µs before one, met a step late, at 8 m/s and 2.99 rad/s).
-    double landing_rounding = 0.0;
-    if (step > 0.0) {
-      const double fall_speed = g * landing.time - spin * landing.corner_x;  // the corner's, downward
-      const double steps = std::ceil(landing.time / step), reach = 0.5 * std::hypot(width, height);
-      const double drift = steps * std::ldexp(1.0, -24) *
-                           (centre_height + reach * std::abs(landing.angle) + g * landing.time * landing.time / 3.0);
-      landing_rounding = fall_speed > 0.0 ? drift / fall_speed : infinity;
-    }
+    const double landing_rounding = landing_rounding_time(landing, width, height, centre_height, spin, g, step);
     if (step > 0.0) {
       const double far_fall_speed = g * landing.time - spin * far_x;  // downward, m/s
       reach_gap = rise - (far_fall_speed * first_met + 0.5 * g * first_met * first_met);
@@ -487,94 +629,14 @@ int thrown_box(lua_State* state) {
     // that corner's impact is what the first step shows (a 20 kg box at spin 19.5 rad/s, 0.15°
     // off flat at 960 sub-steps a second: -9.78 rad/s, the face a sub-step later).
     const bool lands_flat = landing.flat && (step <= 0.0 || reach_gap <= 0.0);
-    std::string corner = "lands flat";
-    // How far Box2D's solver, in its turns, leaves the corner's spin from the impact's (rad/s): the
-    // world's impact step ends there, and only the frame's later sub-steps settle it further.
-    double solver_shortfall = 0.0;
-    // How far the spin after moves if the world's single-precision corner is landing_rounding's
-    // time ahead of or behind theory's (rad/s).
-    double rounding_spread = 0.0;
-    theory::CornerImpact impact{};
-    double hit_x = landing.corner_x, hit_y = landing.corner_y;  // the corner that takes the impact
-    if (lands_flat) {
-      const bool landing_leads = (landing.corner_x - far_x) * speed >= 0.0;
-      const double front_x = landing_leads ? landing.corner_x : far_x, front_y = landing_leads ? landing.corner_y : far_y;
-      const double rear_x = landing_leads ? far_x : landing.corner_x;
-      const double rear_y = landing_leads ? far_y : landing.corner_y;
-      const theory::CornerImpact front = impact_on(front_x, front_y, first_met, true), rear = impact_on(rear_x, rear_y, first_met, true);
-      if (front.vy + front.omega * rear_x > 0.0) {
-        impact = front;
-        corner = "pitches over its front edge";
-        hit_x = front_x, hit_y = front_y;
-      } else if (rear.vy + rear.omega * front_x > 0.0) {
-        impact = rear;
-        corner = "pitches over its rear edge";
-        hit_x = rear_x, hit_y = rear_y;
-      } else {
-        impact = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * landing.time, spin, mu_k, restitution);
-        impact.omega = -restitution * spin;
-      }
-    } else {
-      impact = impact_on(landing.corner_x, landing.corner_y, first_met);
-      solver_shortfall = std::abs(
-          impact_on(landing.corner_x, landing.corner_y, first_met, false, build_of(state).scene->settings().velocity_iterations).omega -
-          impact.omega);
-      // The world's corner may be where theory's is a rounding's time sooner or later (a grazing
-      // corner that does not fall into the floor has no such time: nothing to weigh).
-      for (const double off : {-landing_rounding, landing_rounding}) {
-        if (!std::isfinite(off)) break;
-        rounding_spread = std::max(rounding_spread, std::abs(impact_on(landing.corner_x, landing.corner_y, first_met + off).omega - impact.omega));
-      }
-      corner = impact.grips ? "grips" : "slides";
-    }
+    const FirstImpact first =
+        lands_flat ? box.on_its_face(far, first_met)
+                   : box.on_its_corner(first_met, landing_rounding, build_of(state).scene->settings().velocity_iterations);
+    theory::CornerImpact impact = first.impact;
+    const std::string& corner = first.corner;
+    const double hit_x = first.hit_x, hit_y = first.hit_y;
     const bool on_a_corner = corner != "lands flat";
-    // Under sub-steps the world records the spin at the end of the frame, not of the sub-step
-    // that met the corner: the frame's remaining sub-steps act on the box first, each applying
-    // the corner's drag (c·v + b·v², on the sliding speed it brings in) and then the contact's
-    // impulse that stops the corner's fall again, with friction up to mu_k (mu_s if the corner
-    // gripped) times that impulse. At c = 949 N·s/m on a 20 kg box they take the spin from
-    // 3.9 to 1.6 rad/s in three 1/960 s sub-steps. Stepped here as the world steps them: drag,
-    // gravity, contact, the lever arm turned with the box.
-    const auto through_frame = [&](theory::CornerImpact hit, double rx, double ry, double late) {
-      if (step <= 0.0 || !on_a_corner) return hit;
-      // Static friction as the stick-slip treatment lets a stuck contact hold it, a little over.
-      const double held = std::max(mu_s, mu_k) * (1.0 + stick_slip_hold_band);
-      bool stuck = hit.grips;
-      double turned = spin * late;
-      for (int k = 0; k < remaining; ++k) {
-        turned += hit.omega * step;
-        const double c = std::cos(turned), s = std::sin(turned);
-        const double px = c * rx - s * ry, py = s * rx + c * ry - 0.5 * clearance;
-        if (drag.c > 0.0 || drag.b > 0.0) {
-          const double felt = 1.0 / (1.0 / mass + py * py / inertia), sliding = hit.vx - hit.omega * py;
-          const double impulse = felt * (damped_velocity(sliding, felt, step, drag) - sliding);
-          hit.vx += impulse / mass;
-          hit.omega -= py * impulse / inertia;
-        }
-        hit.vy -= g * step;
-        // A corner moving up has left the floor: nothing stops it within the frame.
-        if (hit.vy + hit.omega * px >= 0.0) continue;
-        // A sliding corner whose sliding the contact's own impulse turns back (through the
-        // turning the normal impulse gives the box) stopped within the sub-step: the world
-        // sticks it again there and static friction holds it (at c = 446 N·s/m, mu_k 0, the
-        // spin went from 4.6 to -0.9 rad/s in that sub-step, where sliding on would leave it
-        // at 3.7). A stuck corner that static friction cannot hold breaks away and slides.
-        const double sliding = hit.vx - hit.omega * py;
-        theory::CornerImpact next =
-            theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, stuck ? held : mu_k, 0.0);
-        if (!stuck && sliding * (next.vx - next.omega * py) < 0.0) {
-          next = theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, held, 0.0);
-          stuck = next.grips;
-        } else if (stuck && !next.grips) {
-          next = theory::corner_impact(mass, inertia, px, py, hit.vx, hit.vy, hit.omega, mu_k, 0.0);
-          stuck = false;
-        }
-        hit = next;
-      }
-      hit.grips = stuck;
-      return hit;
-    };
-    if (on_a_corner && !lands_flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, first_met);
+    if (on_a_corner && !lands_flat) impact = box.through_frame(impact, landing.corner_x, landing.corner_y, first_met);
     // The far end comes down too soon after the impact (falling at the impact's end speed, and
     // under gravity): within a step or two a stepped world meets both corners in one step, and
     // no single-corner impact describes what it shows.
@@ -600,13 +662,13 @@ int thrown_box(lua_State* state) {
     // lands flat).
     const auto met_at = [&](double late_by) {
       return !on_a_corner || lands_flat ? impact.omega
-                                        : through_frame(impact_on(landing.corner_x, landing.corner_y, late_by),
+                                        : box.through_frame(box.impact_on(landing.corner_x, landing.corner_y, late_by),
                                                         landing.corner_x, landing.corner_y, late_by).omega;
     };
     const double late = met_at(first_met + step), early = met_at(first_met - step);
     // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
     const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
-    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, flat_drag(speed), -g * flat.time, 0.0,
+    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, box.flat_drag(speed), -g * flat.time, 0.0,
                                                              mu_k, restitution);
     // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
     // slows it, ever more slowly).
@@ -620,8 +682,8 @@ int thrown_box(lua_State* state) {
     set_number(state, "spin_after", impact.omega);
     set_number(state, "spin_after_a_step_late", late);
     set_number(state, "spin_after_a_step_early", early);
-    set_number(state, "solver_shortfall", solver_shortfall);
-    set_number(state, "rounding_spread", rounding_spread);
+    set_number(state, "solver_shortfall", first.solver_shortfall);
+    set_number(state, "rounding_spread", first.rounding_spread);
     set_number(state, "pivot_acceleration", pivot);
     set_number(state, "second_corner_after", second_corner);
     set_number(state, "far_end_above_reach", far_above_reach);

@@ -241,7 +241,7 @@ TEST(OptionsTable, UnknownOptionMessagesAreAsBeforeTheTable) {
   EXPECT_EQ(unknown_option_message(Command::window, "--fullscreen"),
             "unknown option '--fullscreen'; the window's options: --lock NAME[,NAME...], --set NAME=VALUE, --hz N, "
             "--substeps N, --friction T, --theme light|dark, --projector, --at S, --screenshot FILE.png, --reveal, "
-            "--mystery MATERIAL/MATERIAL --seed N, --setup FILE (commands: list, run, check, render, demo, bench, help)");
+            "--mystery MATERIAL/MATERIAL --seed N, --setup FILE (commands: list, run, check, render, demo, bench, link, help, --version)");
 }
 
 // list, link and bench read their options through the table too, and refuse an unknown one
@@ -412,7 +412,7 @@ TEST(OptionsTable, TheUsageKeepsTheFormsItHad) {
         "[--csv FILE] [--mystery MATERIAL/MATERIAL --seed N] run a lesson",
         "frictionlab check [LESSON ...] [--set NAME=VALUE ...] [--hz N] [--substeps N] [--friction T] "
         "[--random N [--seed S]] run lessons",
-        "frictionlab render LESSON --at S[,S...] [--size WxH] [--theme light|dark] [--set NAME=VALUE ...] [--hz N] "
+        "frictionlab render LESSON [--at S[,S...]] [--size WxH] [--theme light|dark] [--set NAME=VALUE ...] [--hz N] "
         "[--substeps N] [--friction T] [--mystery MATERIAL/MATERIAL --seed N] --out PATH draw the lesson at each time",
         "frictionlab render LESSON --moment NAME [--size WxH] --out PATH draw one of the lesson's moments",
         "frictionlab link FILE.setup [--page ADDRESS] a setup file as a link",

@@ -1,4 +1,4 @@
--- expect: 7: predict 'moves or stays': the class types a number, but at the lesson's defaults its row's theory gives "stays"; give choices = { ... } for a row answered in words
+-- expect: 7: predict_number_for_a_word.lua:6) gives "stays"; give choices = { ... } for a row answered in words
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }

@@ -1,4 +1,4 @@
--- expect: 7: predict 'moves or stays': at the lesson's defaults its row's theory gives "stays", which is not one of the choices "moves", "stay"; the class must be able to pick the answer
+-- expect: 7: predict_theory_not_a_choice.lua:6) gives "stays", which is not one of the choices "moves", "stay"; the class must be able to pick the answer
 lesson { title = "Broken", question = "What goes wrong?" }
 local floor = ground { material = "wood" }
 local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor, at = 0 }

@@ -18,10 +18,12 @@
 #include "draw/headless.h"
 #include "draw/headless_render.h"
 #include "draw/imgui_host.h"
+#include "draw/overlays.h"
 #include "draw/panels.h"
 #include "draw/plots.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/class_words.h"
+#include "physics/scenarios.h"
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 #include "tests/rendering.h"
@@ -263,15 +265,16 @@ TEST(PlotLegends, CornerFreeOfPointsIsChosen) {
 }
 
 // Projector text, 2.025 times the window's, on a context of its own made once.
-const Fonts& projector_fonts() {
+FontsForLayout& projector_measuring() {
   static FontsForLayout* large = [] {
     auto* fonts = new FontsForLayout;
     fonts->host.prepare(2.025f, ThemeName::light);
     return fonts;
   }();
   large->host.make_current();
-  return large->host.fonts();
+  return *large;
 }
+const Fonts& projector_fonts() { return projector_measuring().host.fonts(); }
 
 // Projector text (2 times larger) in the plot the window gives terrain on a 1920 × 1080
 // projector: four series and the slipping band. Before, the legend's rows above the data left
@@ -815,7 +818,7 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
   const Fonts& f = projector_fonts();
   const ImVec2 size(1100.0f, 520.0f);
   int levels_seen = 0;
-  for (const char* name : {"push", "spring_pull", "incline", "tipping_box"}) {
+  for (const char* name : {"push", "spring_pull", "incline", "tipping_box", "stacked_blocks"}) {
     LessonAt at(name, {}, 0.0);
     const double end = at.lesson->duration();
     std::vector<ImVec4> first;
@@ -859,7 +862,54 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
       }
     }
   }
-  EXPECT_EQ(levels_seen, 4 * 2 * 12);
+  EXPECT_EQ(levels_seen, 5 * 2 * 12);
+}
+
+// Issue 31, a teacher's trial: stacked_blocks' key plot ("Friction on each block") marked no
+// level, where push's marks −μs·N and −μk·N: the class had nothing to read the top block's
+// breakaway against. It marks the top block's "μs·N (top)" and "μk·N (top)", N its weight (the pair
+// flat on the floor), forward (positive, as its friction is plotted), and follows the sliders.
+TEST(PlotLevels, StackedBlocksKeyPlotMarksTheTopBlocksFrictionLimits) {
+  struct Setting {
+    const char *top_mass, *mu_s, *mu_k;
+    double mass, static_mu, kinetic_mu;
+  };
+  for (const Setting& c : {Setting{"1", "0.45", "0.35", 1.0, 0.45, 0.35}, Setting{"2", "0.6", "0.3", 2.0, 0.6, 0.3}}) {
+    LessonAt at("stacked_blocks", {{"top_mass", c.top_mass}, {"top_on_bottom.mu_s", c.mu_s}, {"top_on_bottom.mu_k", c.mu_k}}, 0.0);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), theme(ThemeName::light), true, true);
+    const std::string where = std::string("top mass ") + c.top_mass + " kg, \u03bcs " + c.mu_s + ", \u03bck " + c.mu_k;
+    ASSERT_EQ(chart.levels.size(), 2u) << where;
+    const double weight = c.mass * standard_gravity;
+    EXPECT_NEAR(chart.levels[0].y, c.static_mu * weight, 1e-12) << where;
+    EXPECT_NEAR(chart.levels[1].y, c.kinetic_mu * weight, 1e-12) << where;
+    EXPECT_EQ(chart.levels[0].text, "\u03bcs\u00b7N (top) = " + format_quantity(c.static_mu * weight, "N")) << where;
+    EXPECT_EQ(chart.levels[1].text, "\u03bck\u00b7N (top) = " + format_quantity(c.kinetic_mu * weight, "N")) << where;
+  }
+}
+
+// Issue 31: under a mystery the key plot's levels are worked out from the hidden values, and the
+// column beside the data took the width of their texts: push's "−0.392 N" at 0.1 kg, wider than
+// "−3.92 N" at 1 kg, told the class which. Hidden, the column's room (and so the data's right
+// edge on a projector) is the same whatever the hidden values; shown, it is each value's own.
+TEST(PlotLevels, UnderAMysteryTheColumnIsAsWideWhateverTheHiddenValues) {
+  const Fonts& f = projector_fonts();
+  const ImVec2 size(1100.0f, 520.0f);
+  std::vector<std::vector<std::string>> rooms;
+  std::vector<float> right_edges;
+  std::vector<std::vector<std::string>> shown_rooms;
+  for (const char* mass : {"0.1", "1"}) {
+    LessonAt at("push", {{"mass", mass}}, 0.0);
+    at.step_to(1.0);
+    const Chart hidden = plot_chart(*at.lesson, 0, at.lesson->duration(), theme(ThemeName::light), false, true, true);
+    rooms.push_back(hidden.level_room);
+    right_edges.push_back(layout_chart(hidden, corner, size, f).high_right.x);
+    shown_rooms.push_back(plot_chart(*at.lesson, 0, at.lesson->duration(), theme(ThemeName::light), false, true, false).level_room);
+  }
+  ASSERT_FALSE(rooms[0].empty());
+  EXPECT_EQ(rooms[0], rooms[1]) << "the hidden levels' room follows their values";
+  EXPECT_EQ(right_edges[0], right_edges[1]) << "the data's right edge follows the hidden values";
+  // The test can tell: shown, the two masses' texts differ.
+  EXPECT_NE(shown_rooms[0], shown_rooms[1]);
 }
 
 // Issue 31, a teacher's trial: incline's key number, its critical angle (tan θc = μs: 30.96° at
@@ -983,7 +1033,8 @@ TEST(TheoryCurves, ACurveLyingOnTheDataIsSeenOverIt) {
 }
 
 // Issue 31: the levels are read off the axis, so its ticks are the finest round step (1, 2, 5 ×
-// 10ⁿ) that keeps them a line and a half of text (21 pt) apart: 1 N steps at push's defaults in
+// 10ⁿ) that keeps them a line and a half of their labels' text apart (21 pt in the window, 25.5
+// on a projector, whose tick labels are in the body text): 1 N steps at push's defaults in
 // projector mode, and in every built-in lesson's plots in the window and on a projector the next
 // finer round step would put them closer than that (the mystery's plot ticked every 5 N).
 TEST(PlotTicks, AreTheFinestRoundStepAtALineAndAHalfApart) {
@@ -1006,9 +1057,11 @@ TEST(PlotTicks, AreTheFinestRoundStepAtALineAndAHalfApart) {
         const double step = layout.y_ticks[1] - layout.y_ticks[0];
         const float height = layout.low_left.y - layout.high_right.y;
         const double pixels_per_unit = height / (layout.y_high - layout.y_low);
-        EXPECT_GE(step * pixels_per_unit, 21.0f * fonts.scale - 0.01f) << where << ": ticks " << step << " apart";
-        EXPECT_LT(finer(step) * pixels_per_unit, 21.0f * fonts.scale) << where << ": ticks " << step << " apart, "
-                                                                       << finer(step) << " would read";
+        // A line and a half of the tick labels' text: the body text's on a projector (number_font).
+        const float spacing = 1.5f * (projector ? body_text_points : small_text_points) * fonts.scale;
+        EXPECT_GE(step * pixels_per_unit, spacing - 0.01f) << where << ": ticks " << step << " apart";
+        EXPECT_LT(finer(step) * pixels_per_unit, spacing) << where << ": ticks " << step << " apart, "
+                                                          << finer(step) << " would read";
       }
     }
   }
@@ -1064,7 +1117,55 @@ TEST(PlotTicks, AKeyPlotOnAProjectorIsMarkedToATenthOfItsAxes) {
       EXPECT_GE(finest / span * each.pixels, 4.0f * fonts.scale - 0.01f) << where << ": marks too close";
     }
     const double y_step = layout.y_ticks[1] - layout.y_ticks[0];
-    EXPECT_GE(y_step / (layout.y_high - layout.y_low) * height, 1.35f * fonts.small->FontSize) << name << ": y labels overlap";
+    EXPECT_GE(y_step / (layout.y_high - layout.y_low) * height, 1.35f * fonts.body->FontSize) << name << ": y labels overlap";
+  }
+}
+
+// Issue 31, a teacher's trial: on a projector the key plot's tick digits were the small text's
+// (14 pt, 18 px high at 1080 lines) and read less well from the back than the panels' words. A
+// key plot on a page of its own writes its y ticks' labels (what its levels are read against) in
+// the body text, as its levels' texts: push's and stacked_blocks' at a projector's text and a key
+// plot's size, at the run's end, every y tick label is as high as the body text, and no tick label, axis name or level's text (their
+// boxes as drawn) lies on another.
+TEST(PlotTicks, AProjectorsKeyPlotWritesItsNumbersInTheBodyText) {
+  FontsForLayout& fonts = projector_measuring();
+  const Fonts& f = fonts.fonts;
+  const ImVec2 size(1100.0f, 520.0f);
+  for (const char* name : {"push", "stacked_blocks"}) {
+    LessonAt at(name, {}, 0.0);
+    at.step_to(at.lesson->duration());
+    ImDrawList* draw = fresh_draw_list(fonts);
+    const ChartLayout layout = draw_plot(draw, *at.lesson, 0, at.lesson->duration(), corner, size, theme(ThemeName::light), f,
+                                         true, {}, true);
+    ImGui::EndFrame();
+    ASSERT_TRUE(layout.drawable) << name;
+    std::vector<std::pair<std::string, ImVec4>> boxes;
+    int ticks = 0;
+    for (const ChartLayout::AxisText& label : layout.axis_texts) {
+      using Kind = ChartLayout::AxisText::Kind;
+      if (label.kind == Kind::y_tick) {
+        ++ticks;
+        EXPECT_NEAR(label.at.w - label.at.y, f.body->FontSize, 0.01f) << name << ": tick \"" << label.text << "\"";
+      }
+      if (!label.text.empty()) boxes.push_back({label.text, label.at});
+    }
+    EXPECT_GE(ticks, 5) << name;
+    int levels = 0;
+    for (const ChartLayout::Level& level : layout.levels) {
+      if (level.text.empty()) continue;
+      ++levels;
+      // Two lines of the body text: the label over the value.
+      EXPECT_NEAR(level.at.w - level.at.y, 2.0f * f.body->FontSize, 0.01f) << name << ": \"" << level.text << "\"";
+      boxes.push_back({level.text, ImVec4(level.at.x - 2.0f * f.scale, level.at.y - 1.0f, level.at.z + 2.0f * f.scale, level.at.w + 1.0f)});
+    }
+    EXPECT_EQ(levels, 2) << name;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        const ImVec4 &a = boxes[i].second, &b = boxes[j].second;
+        const bool apart = a.z <= b.x || b.z <= a.x || a.w <= b.y || b.w <= a.y;
+        EXPECT_TRUE(apart) << name << ": \"" << boxes[i].first << "\" lies on \"" << boxes[j].first << "\"";
+      }
+    }
   }
 }
 
@@ -1227,7 +1328,7 @@ TEST(PlotColours, AForceReadFromTheWorldIsDrawnInItsArrowsColour) {
   EXPECT_GT(dashed_seen, 0) << "no plot has more curves than colours: the dashes are not tested";
 }
 
-// friction_models' three frictions: friction's colour, its shade, then friction's colour in
+// friction_models' three frictions: friction's colour, its shade dashed, then friction's colour in
 // dashes longer than any theory curve's pattern (so that it is read as measured, not as a law).
 TEST(PlotColours, AThirdForceOfAKindIsDashedInItsColour) {
   LessonAt at("friction_models", {}, 0.0);
@@ -1239,11 +1340,57 @@ TEST(PlotColours, AThirdForceOfAKindIsDashedInItsColour) {
     EXPECT_EQ(chart.series[0].colour, colours.force[friction]);
     EXPECT_EQ(chart.series[0].dash, 0.0f);
     EXPECT_EQ(chart.series[1].colour, colours.second_force[friction]);
-    EXPECT_EQ(chart.series[1].dash, 0.0f);
+    EXPECT_GT(chart.series[1].dash, 0.0f);
     EXPECT_EQ(chart.series[2].colour, colours.force[friction]);
     ASSERT_FALSE(chart.theory.empty());
     for (const ChartCurve& curve : chart.theory) {
       EXPECT_GT(chart.series[2].dash, curve.dash) << curve.name;
+    }
+  }
+}
+
+// CIE 1976 L*a*b* of an sRGB colour (D65 white), for colour differences (ΔE76: the distance).
+std::array<double, 3> lab_of(ImU32 colour) {
+  const auto linear = [](unsigned channel) {
+    const double c = channel / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const double r = linear(colour & 0xff), g = linear((colour >> 8) & 0xff), b = linear((colour >> 16) & 0xff);
+  const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047, y = 0.2126 * r + 0.7152 * g + 0.0722 * b,
+               z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+  const auto f = [](double t) { return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16.0) / 116.0; };
+  return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
+}
+double colour_difference(ImU32 a, ImU32 b) {
+  const std::array<double, 3> p = lab_of(a), q = lab_of(b);
+  return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+}
+
+// Issue 31, a teacher's trial: stacked_blocks' two frictions (the top block's, the floor's on the
+// bottom block) were one colour on a projector: vermilion and its shade half way to a crimson,
+// 15 apart in CIELAB (ΔE76; 22 in the dark theme). In both themes the second is dashed, so that
+// its pattern tells it where the projector's colours do not, and its colour is at least twice as
+// far from friction's as the shade a projector lost (30), still nearer friction's colour than
+// any other force's or a contact state's, so the class reads it as a friction.
+TEST(PlotColours, StackedBlocksTwoFrictionsAreToldApart) {
+  LessonAt at("stacked_blocks", {}, 0.0);
+  const int friction = static_cast<int>(ForceKind::friction);
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours, true, true);
+    ASSERT_EQ(chart.series.size(), 3u);
+    const ChartSeries &top = chart.series[1], &bottom = chart.series[2];
+    EXPECT_EQ(top.colour, colours.force[friction]) << theme_name(name);
+    EXPECT_EQ(top.dash, 0.0f) << theme_name(name);
+    EXPECT_EQ(bottom.colour, colours.second_force[friction]) << theme_name(name);
+    EXPECT_GT(bottom.dash, 0.0f) << theme_name(name) << ": the floor's friction is drawn as the top block's";
+    const double apart = colour_difference(top.colour, bottom.colour);
+    EXPECT_GE(apart, 30.0) << theme_name(name) << ": the two frictions' colours";
+    std::vector<ImU32> others(std::begin(colours.force), std::end(colours.force));
+    others.erase(others.begin() + friction);
+    for (const ImU32 state : {colours.sticking, colours.slipping, colours.no_contact}) others.push_back(state);
+    for (const ImU32 other : others) {
+      EXPECT_GT(colour_difference(other, bottom.colour), apart) << theme_name(name) << ": the shade is nearer another colour";
     }
   }
 }
@@ -1299,8 +1446,9 @@ TEST(PlotColours, AFrameWithNoContactIsNeitherStickingNorSlipping) {
 // its column.
 TEST(PlotTicks, APlotOnAPageOfItsOwnReservesTheWidthOfItsWidestLabel) {
   const Fonts& fonts = projector_fonts();
-  ImFont* font = fonts.small;
-  const auto width_of_text = [&](const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  // The tick labels' font on a page of its own: the body text's (number_font).
+  const auto width_in = [](ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()).x; };
+  const auto width_of_text = [&](const std::string& text) { return width_in(fonts.body, text); };
   const ImVec2 size(1100.0f, 520.0f);
   LessonAt push("push", {}, 3.0);
   const ChartLayout hidden = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, size, fonts, false, true);
@@ -1313,7 +1461,7 @@ TEST(PlotTicks, APlotOnAPageOfItsOwnReservesTheWidthOfItsWidestLabel) {
   const float column = shown.low_left.x - corner.x - 10.0f * fonts.scale;
   EXPECT_NEAR(column, widest, 0.5f) << "push's key plot: its labels run from " << shown.y_tick_labels.front() << " to "
                                     << shown.y_tick_labels.back();
-  const float reserved_before = width_of_text("\u22128888.88");
+  const float reserved_before = width_in(fonts.small, "\u22128888.88");  // in the small text it was written in
   EXPECT_LT(column, reserved_before - 20.0f * fonts.scale) << "the data area has not had its width back";
   for (const std::string& name : lessons::builtin_lessons()) {
     LessonAt at(name, {}, 0.0);

@@ -63,7 +63,7 @@ TEST(Predict, OnlyTheDefaultsMustGiveAnAnswerTheClassCanPick) {
     Lesson lesson(wrong.path());
     ADD_FAILURE() << "the defaults' answer 'stays' is not among the choices, and the lesson built";
   } catch (const ScriptError& error) {
-    EXPECT_NE(std::string(error.what()).find("theory gives \"stays\", which is not one of the choices \"moves\", \"tips\""),
+    EXPECT_NE(std::string(error.what()).find(") gives \"stays\", which is not one of the choices \"moves\", \"tips\""),
               std::string::npos)
         << error.what();
   }
