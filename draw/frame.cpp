@@ -104,11 +104,42 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
   return layout;
 }
 
+float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                         bool projector) {
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
+  // The run's largest force (run_force_for_scale) is 0.4 of the view's height (of a lane's, with
+  // lanes): as long as the view holds, a weight from the middle of a body down past the floor
+  // and a normal force up from it, so that as few forces as may be fall under the length a back
+  // row reads (legible_arrow_pixels), drawn broken. A quarter of the view, as before, left every
+  // arrow of push under it on a projector (issue 31).
+  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
+  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
+  return std::clamp(0.4f * height, 30.0f * scale, 150.0f * scale);
+}
+
+float longest_arrow_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                           bool projector) {
+  return std::max(scale_force_pixels(lesson, framing, display, scale, projector), legible_arrow_pixels(scale));
+}
+
+namespace {
+
+// A force's value's box as the placer keeps it clear, px high: a line of the body text and its padding.
+float value_line_pixels(float scale) {
+  const ImVec4 box = LabelPlacer::box_around(ImVec2(0.0f, 0.0f), ImVec2(0.0f, body_text_points * scale));
+  return box.w - box.y;
+}
+
+}  // namespace
+
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
   const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, lesson);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
-                         layout.world_size.x - layout.inset_size.x, scale, adjust);
+                         layout.world_size.x - layout.inset_size.x, scale, adjust,
+                         ArrowRoom{longest_arrow_pixels(lesson, framing, display, scale, projector),
+                                   arrow_scale(lesson, framing, display, scale, projector), legible_arrow_pixels(scale),
+                                   value_line_pixels(scale)});
 }
 
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
@@ -170,15 +201,8 @@ std::optional<float> kept_run_force(const lessons::Lesson& lesson) {
 
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
-  // The run's largest force (run_force_for_scale) is 0.4 of the view's height (of a lane's, with
-  // lanes): as long as the view holds, a weight from the middle of a body down past the floor
-  // and a normal force up from it, so that as few forces as may be fall under the length a back
-  // row reads (legible_arrow_pixels), drawn broken. A quarter of the view, as before, left every
-  // arrow of push under it on a projector (issue 31).
-  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
-  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
-  const float longest = std::clamp(0.4f * height, 30.0f * scale, 150.0f * scale);
+  // The run's largest force (run_force_for_scale) is drawn scale_force_pixels long.
+  const float longest = scale_force_pixels(lesson, framing, display, scale, projector);
   if (const std::optional<float> force = kept_run_force(lesson)) return longest / *force;
   return pixels_per_newton(lesson.scene(), longest);
 }
