@@ -42,6 +42,48 @@ void keep_within(Camera& camera, const b2AABB& bounds, const b2AABB& moving, flo
                                   below, above);
 }
 
+// What a body's arrows reach, m, up and down, at `pixels_per_metre`: a normal force up from its
+// foot as long as the longest arrow drawn at most, its weight down from its centre (past the
+// floor it stands on) as drawn, and its value's line beyond that tip. Its own box at least.
+struct Reach {
+  float low, high;
+};
+Reach arrow_reach(const b2Body* body, const ArrowRoom& arrows, float pixels_per_metre) {
+  const b2AABB box = body_box(body);
+  const float down = arrows.weight_pixels(body) + arrows.value_line;
+  return {std::min(box.lowerBound.y, body->GetWorldCenter().y - down / pixels_per_metre),
+          std::max(box.upperBound.y, box.lowerBound.y + arrows.longest / pixels_per_metre)};
+}
+// Every moving body's arrow_reach, together; none (low above high) where nothing moves.
+Reach moving_reach(const Scene& scene, const ArrowRoom& arrows, float pixels_per_metre) {
+  Reach all{1e30f, -1e30f};
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const Reach one = arrow_reach(body, arrows, pixels_per_metre);
+    all = {std::min(all.low, one.low), std::max(all.high, one.high)};
+  }
+  return all;
+}
+
+// Moves the camera up or down as little as shows `reach` between `edge` pixels of the lane's top
+// and bottom; one taller than that is centred, into the edges; one taller than the lane is left
+// where the framing put it (terrain's four lanes on a projector: moving would only trade the
+// weight's tip for the normal force's, and take its values' places beside them).
+void show_reach(Camera& camera, Reach reach, float edge) {
+  if (!(reach.low <= reach.high)) return;
+  const float metres = 1.0f / camera.pixels_per_metre;
+  if (reach.high - reach.low > camera.size.y * metres) return;
+  const float above = (camera.anchor.y - camera.origin.y - edge) * metres;            // seen above the centre
+  const float below = (camera.origin.y + camera.size.y - camera.anchor.y - edge) * metres;  // and below it
+  if (reach.high - reach.low > above + below) {
+    camera.centre.y = 0.5f * (reach.low + reach.high) - 0.5f * (above - below);
+  } else if (reach.high > camera.centre.y + above) {
+    camera.centre.y = reach.high - above;
+  } else if (reach.low < camera.centre.y - below) {
+    camera.centre.y = reach.low + below;
+  }
+}
+
 // Room around the lesson for the arrows and their labels.
 constexpr float room = 1.45f;
 // Pixels (at text scale 1) kept between a lane's floor and the lane's foot, and above a body.
@@ -50,7 +92,7 @@ constexpr float lane_ground_edge = 6.0f;
 }  // namespace
 
 std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
-                                    float free_width, float scale, const ViewAdjust& adjust) {
+                                    float free_width, float scale, const ViewAdjust& adjust, const ArrowRoom& arrows) {
   const lessons::View& view = framing.view;
   const b2Vec2 extent = framing.extent;
   const float tallest_body = framing.tallest_body, moving_span = framing.moving_span, smallest_body = framing.smallest_body;
@@ -68,9 +110,29 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   const float strip_height = size.y / static_cast<float>(strips);
   const float fit = std::min(free_width / (room * extent.x), size.y / (room * extent.y));
   float pixels_per_metre = fit;
+  // Pixels kept between what must show and a lane's top or bottom: the world's panel clips half
+  // its padding off its edges.
+  const float edge = lane_ground_edge * scale;
   if (kind == Kind::window) {
     const b2Vec2 span = view.high - view.low;
     pixels_per_metre = std::min(free_width / span.x, size.y / span.y);
+    // The window the script fixed, and the moving bodies' normal forces at the longest arrow's
+    // drawn length up from their feet (pulley's 9.81 N, 0.4 of the view's height up from the
+    // block's foot, ran out of its top): the arrows' pixels do not shrink with the world, so the
+    // metres from the window's foot to a body's foot and the arrow's pixels share the view's
+    // height, (metres)·ppm + (pixels) <= height. Weights point down into the floor the window
+    // stands on, and are left to it: paired with a normal force above they shrank a window
+    // of two floors to a tenth.
+    if (arrows.longest > 0.0f) {
+      const float height_left = size.y - 2.0f * edge;
+      for (const auto& [name, body] : scene.bodies()) {
+        if (body->GetType() != b2_dynamicBody) continue;
+        const float foot = body_box(body).lowerBound.y;
+        if (foot > view.low.y && height_left > arrows.longest) {
+          pixels_per_metre = std::min(pixels_per_metre, (height_left - arrows.longest) / (foot - view.low.y));
+        }
+      }
+    }
   } else if (view.width > 0.0) {
     pixels_per_metre = free_width / static_cast<float>(view.width);
   }
@@ -152,9 +214,9 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       // Not so high that the floor under the body drops out of the lane's foot, while the
       // body's top stays in it: the lane stays still and the body falls to its floor.
       if (i < lane_ground.size() && std::isfinite(lane_ground[i])) {
-        const float metres = 1.0f / camera.pixels_per_metre, edge = lane_ground_edge * scale * metres;
-        const float floor_in_view = lane_ground[i] + (1.0f - down) * strip_height * metres - edge;
-        const float top_in_view = body_box(bodies[i]).upperBound.y + edge - down * strip_height * metres;
+        const float metres = 1.0f / camera.pixels_per_metre, edge_metres = edge * metres;
+        const float floor_in_view = lane_ground[i] + (1.0f - down) * strip_height * metres - edge_metres;
+        const float top_in_view = body_box(bodies[i]).upperBound.y + edge_metres - down * strip_height * metres;
         camera.centre.y = std::max(std::min(camera.centre.y, floor_in_view), top_in_view);
       }
       // Once the lanes' bodies have spread wider than the view, one window would lose some of
@@ -164,6 +226,23 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       }
     }
     if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson, moving, free_width);
+    // The arrows in the picture, at their drawn length (ArrowRoom): the view moves up or down as
+    // little as shows them (a lane, its own body's), and a window the script fixed grew above to
+    // hold them; centred on it, all of it is still in view.
+    // Not yet in lanes: a lane stays on its body's height (and still while it falls to its
+    // floor), and a weight may reach past the lane's foot (friction_models on a projector).
+    if (arrows.longest > 0.0f && kind != Kind::lanes) {
+      Reach reach = moving_reach(scene, arrows, camera.pixels_per_metre);
+      if (kind == Kind::window) {
+        // The window's corners, and the normal forces up from the feet it grew to hold.
+        reach = {view.low.y, view.high.y};
+        for (const auto& [name, body] : scene.bodies()) {
+          if (body->GetType() != b2_dynamicBody) continue;
+          reach.high = std::max(reach.high, body_box(body).lowerBound.y + arrows.longest / camera.pixels_per_metre);
+        }
+      }
+      show_reach(camera, reach, edge);
+    }
     camera.centre += adjust.pan;
     made.push_back(camera);
   }

@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "lessons/runtime/framing.h"
@@ -41,9 +42,21 @@ struct ViewAdjust {
 // The cameras on the view rectangle as the lesson's view asks (one per lane; one otherwise),
 // with room for arrows, centred on the part of the view left free (`free_width` from its
 // left edge). `scale` is the frame's text scale: no moving body is drawn with its longer side
-// under min_body_pixels × scale, except in a window the lesson fixed.
+// under min_body_pixels × scale, except in a window the lesson fixed. With `arrows`, the view
+// keeps the world's arrows in sight at their drawn length: a window the lesson fixed grows to
+// hold them, other views move up or down.
+struct ArrowRoom {
+  float longest = 0.0f;            // px, the longest arrow drawn (a normal force, up from a foot); 0: no room kept
+  float pixels_per_newton = 0.0f;  // the arrows' scale: a body's weight is drawn m·g times it...
+  float legible = 0.0f;            // px, ...or this long where that is shorter
+  float value_line = 0.0f;         // px, a value's line beyond a weight's tip (under the floor, where nothing else is)
+  float weight_pixels(const b2Body* body) const {
+    const float weight = body->GetMass() * body->GetWorld()->GetGravity().Length();
+    return std::max(weight * pixels_per_newton, legible);
+  }
+};
 std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
-                                    float free_width, float scale, const ViewAdjust& adjust = {});
+                                    float free_width, float scale, const ViewAdjust& adjust = {}, const ArrowRoom& arrows = {});
 inline constexpr float min_body_pixels = 48.0f;
 
 }  // namespace frictionlab::draw

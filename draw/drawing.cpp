@@ -1,6 +1,7 @@
 #include "draw/drawing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace frictionlab::draw {
@@ -333,7 +334,7 @@ void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU
   draw->AddText(font, font->FontSize, corner, colour, text);
 }
 
-void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo) {
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo, bool broken) {
   const ImVec2 along = sub(tip, tail);
   const float span = length(along);
   if (span < 1e-3f) return;
@@ -342,6 +343,18 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
   const float head = std::min(4.0f * thickness, 0.6f * span);
   const ImVec2 base = sub(tip, mul(unit, head));
   const ImVec2 left = add(base, mul(across, 0.45f * head)), right = sub(base, mul(across, 0.45f * head));
+  // A broken shaft's dashes from the tail, the last one running on under the head: gaps of
+  // broken_gap, at least one, and the dashes as long as fills the shaft whole from tail to head.
+  const auto for_each_dash = [&](const auto& dash_from_to) {
+    const float shaft = span - head, gap = broken_gap(thickness);
+    const int gaps = std::max(1, static_cast<int>(std::lround((shaft - broken_dash(thickness)) / (broken_dash(thickness) + gap))));
+    const float dash = std::max(0.0f, (shaft - static_cast<float>(gaps) * gap) / static_cast<float>(gaps + 1));
+    for (int i = 0; i <= gaps; ++i) {
+      const float from = static_cast<float>(i) * (dash + gap);
+      const float to = i == gaps ? shaft + 0.3f * head : from + dash;
+      dash_from_to(add(tail, mul(unit, from)), add(tail, mul(unit, to)));
+    }
+  };
   if (halo != 0) {
     // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
     // grown about its incentre, which moves each edge out by the same width.
@@ -351,11 +364,19 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
     const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
     const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
     const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
-    draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+    if (broken) {
+      for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(sub(from, mul(unit, width)), add(to, mul(unit, width)), halo, thickness + 2.0f * width); });
+    } else {
+      draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+    }
     draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
   }
-  // The shaft runs on under the head, so no seam of anti-aliased edges shows between them.
-  draw->AddLine(tail, add(base, mul(unit, 0.3f * head)), colour, thickness);
+  if (broken) {
+    for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(from, to, colour, thickness); });
+  } else {
+    // The shaft runs on under the head, so no seam of anti-aliased edges shows between them.
+    draw->AddLine(tail, add(base, mul(unit, 0.3f * head)), colour, thickness);
+  }
   draw->AddTriangleFilled(tip, left, right, colour);
 }
 
@@ -415,7 +436,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
 
 void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness) {
   const ImU32 colour = theme.force[static_cast<int>(placed.arrow.force.kind)];
-  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness, theme.arrow_halo);
+  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness, theme.arrow_halo, !placed.arrow.to_scale);
   if (placed.leader) draw->AddLine(placed.leader->from, placed.leader->to, colour, 2.0f * placed.leader->half_width);
   if (placed.at) draw_label(draw, font, *placed.at, colour, theme.panel, placed.text.c_str());
 }

@@ -194,8 +194,15 @@ void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU
 // box's edge, for a value that has no free place beside its arrow.
 DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
 // With `halo` (not 0), outlined in it first, arrow_halo_width(thickness) wide: a force's arrow
-// drawn over a body of about its own lightness is still seen (Theme::arrow_halo).
-void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0);
+// drawn over a body of about its own lightness is still seen (Theme::arrow_halo). `broken`: the
+// shaft in dashes, for an arrow drawn longer than to scale (ScreenArrow::to_scale).
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0,
+                bool broken = false);
+// A broken shaft's dashes and gaps, px, for arrows `thickness` thick: dashes about a thickness
+// long and gaps of one, so that the shortest arrow the world draws (legible_arrow_pixels: a
+// head and a shaft as long, four thicknesses) still shows two gaps, 7 px each on a projector.
+inline float broken_dash(float thickness) { return thickness; }
+inline float broken_gap(float thickness) { return thickness; }
 // A third of the arrow's thickness and at least a pixel and a half: a line a back row sees
 // round the shaft (2.3 px on a projector's 7 px arrows).
 inline float arrow_halo_width(float thickness) { return std::max(1.5f, thickness / 3.0f); }

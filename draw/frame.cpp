@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "draw/free_body.h"
@@ -103,11 +104,42 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
   return layout;
 }
 
+float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                         bool projector) {
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
+  // The run's largest force (run_force_for_scale) is 0.4 of the view's height (of a lane's, with
+  // lanes): as long as the view holds, a weight from the middle of a body down past the floor
+  // and a normal force up from it, so that as few forces as may be fall under the length a back
+  // row reads (legible_arrow_pixels), drawn broken. A quarter of the view, as before, left every
+  // arrow of push under it on a projector (issue 31).
+  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
+  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
+  return std::clamp(0.4f * height, 30.0f * scale, 150.0f * scale);
+}
+
+float longest_arrow_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                           bool projector) {
+  return std::max(scale_force_pixels(lesson, framing, display, scale, projector), legible_arrow_pixels(scale));
+}
+
+namespace {
+
+// A force's value's box as the placer keeps it clear, px high: a line of the body text and its padding.
+float value_line_pixels(float scale) {
+  const ImVec4 box = LabelPlacer::box_around(ImVec2(0.0f, 0.0f), ImVec2(0.0f, body_text_points * scale));
+  return box.w - box.y;
+}
+
+}  // namespace
+
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
   const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, lesson);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
-                         layout.world_size.x - layout.inset_size.x, scale, adjust);
+                         layout.world_size.x - layout.inset_size.x, scale, adjust,
+                         ArrowRoom{longest_arrow_pixels(lesson, framing, display, scale, projector),
+                                   arrow_scale(lesson, framing, display, scale, projector), legible_arrow_pixels(scale),
+                                   value_line_pixels(scale)});
 }
 
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
@@ -115,15 +147,64 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
   return world_cameras(lesson, framing, display, scale, origin).front();
 }
 
+namespace {
+
+// The force the arrows' scale is chosen for: the largest force on a moving body in nine frames
+// of ten of a whole run of the lesson (a copy of it, at its present values, from t = 0 to its
+// end), or nothing where the run is too long to rehearse (as the plots', draw/plots.cpp) or
+// fails. Not its heaviest weight alone: stacked_blocks' floor carries both blocks, a pull or a
+// spring may pull harder than a weight. Not the run's very largest: a box tipped over lands with
+// a blow of a few frames many times its weight, which would shrink every other arrow.
+std::optional<float> run_force_for_scale(const lessons::Lesson& lesson) {
+  const StepSettings& settings = lesson.settings();
+  constexpr double most_steps = 60000.0;
+  if (!(lesson.duration() * settings.hz * settings.substeps <= most_steps)) return std::nullopt;
+  std::map<std::string, std::string> values;
+  for (const lessons::Parameter& parameter : lesson.parameters()) values[parameter.name] = lessons::parameter_text(parameter);
+  try {
+    lessons::Lesson copy(lesson.script(), values, lesson.settings());
+    std::vector<float> largest;
+    while (!copy.reached(copy.duration()) && !copy.failed()) {
+      copy.step();
+      float frame = 0.0f;
+      for (const auto& [name, body] : copy.scene().bodies()) {
+        if (body->GetType() != b2_dynamicBody) continue;
+        for (const ForceOnBody& force : forces_on(copy.scene(), body)) frame = std::max(frame, force.force.Length());
+      }
+      largest.push_back(frame);
+    }
+    if (largest.empty()) return std::nullopt;
+    const auto ninth = largest.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(largest.size() - 1));
+    std::nth_element(largest.begin(), ninth, largest.end());
+    if (!(*ninth > 0.0f)) return std::nullopt;
+    return *ninth;
+  } catch (const std::exception&) {
+    return std::nullopt;  // the lesson itself says what went wrong; its heaviest weight sets the scale
+  }
+}
+
+// run_force_for_scale, kept by lesson revision (one number for a script's text, values and
+// settings, never reused): the frame asks for the scale every frame, and a rehearsal is a run.
+std::optional<float> kept_run_force(const lessons::Lesson& lesson) {
+  static std::vector<std::pair<std::uint64_t, std::optional<float>>> kept;  // the latest last
+  constexpr std::size_t most_kept = 16;
+  for (const auto& [revision, force] : kept) {
+    if (revision == lesson.revision()) return force;
+  }
+  std::optional<float> force = run_force_for_scale(lesson);
+  if (kept.size() >= most_kept) kept.erase(kept.begin());
+  kept.emplace_back(lesson.revision(), force);
+  return force;
+}
+
+}  // namespace
+
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
-  // The heaviest body's weight is about a quarter of the view's height (0.4 of a lane's, with
-  // lanes): long enough to read, short enough to stay in the picture.
-  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
-  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
-  // A lane holds one body's arrows only, so they may take more of its height.
-  return pixels_per_newton(lesson.scene(), std::clamp((lanes ? 0.4f : 0.26f) * height, 30.0f * scale, 150.0f * scale));
+  // The run's largest force (run_force_for_scale) is drawn scale_force_pixels long.
+  const float longest = scale_force_pixels(lesson, framing, display, scale, projector);
+  if (const std::optional<float> force = kept_run_force(lesson)) return longest / *force;
+  return pixels_per_newton(lesson.scene(), longest);
 }
 
 namespace {

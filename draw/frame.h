@@ -171,5 +171,13 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
                     ImVec2 origin = ImVec2(0.0f, 0.0f));
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector = false);
+// The length the arrow of the force arrow_scale is chosen for is drawn, px: 0.4 of the view's
+// height (of a lane's), within 30 and 150 pixels at text scale 1.
+float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                         bool projector = false);
+// The longest arrow the world is framed to hold, px: that, or the legible length
+// (legible_arrow_pixels) where that is longer, as every arrow is at least.
+float longest_arrow_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                           bool projector = false);
 
 }  // namespace frictionlab::draw

@@ -17,7 +17,9 @@ namespace {
 
 // The words arrow_scale_words puts together.
 constexpr const char* all_arrows = "all arrows";
-constexpr const char* drawn_longer = "drawn longer";
+// The lengthened arrows' shafts are broken (draw_arrow): the words say so, so that the class
+// can tell them from the picture alone.
+constexpr const char* drawn_longer = "longer, dashed";
 constexpr const char* to_scale = "to scale";
 
 }  // namespace

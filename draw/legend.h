@@ -21,7 +21,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
 // What the legend says of the arrows' lengths beside their scale, as two lines (a column's; a
 // strip joins them): the world draws a force under not_to_scale_below longer than to scale
 // (drawn_arrow_pixels in overlays.h). Where the picture has forces under it and others not,
-// "under 12.4 N:" "drawn longer"; where every force is under it, "all arrows" "drawn longer";
+// "under 12.4 N:" "longer, dashed"; where every force is under it, "all arrows" "longer, dashed";
 // where none is, "all arrows" "to scale". ("under 12.4 N: not to scale" read oddly on push,
 // whose every force, its 9.81 N weight the largest, is under 12.4 N: issue 31.)
 using ArrowScaleWords = std::pair<std::string, std::string>;

@@ -16,6 +16,28 @@ float pixels_per_newton(const Scene& scene, float reference_pixels) {
   return reference_pixels / std::max(heaviest, 1e-3f);
 }
 
+namespace {
+
+// Whether an applied force acts on its body's outline and points into the body: a push on a
+// face. Tested a millimetre either side of its point along its direction (the lessons' bodies
+// are centimetres across and more): outside before it, inside after. A force at the centre of
+// mass (push's) is inside on both sides, a pull on a face (stacked_blocks') the other way round.
+bool pushes_on_face(const ForceOnBody& force) {
+  if (force.kind != ForceKind::applied || force.body == nullptr) return false;
+  const float size = force.force.Length();
+  if (size == 0.0f) return false;
+  const b2Vec2 step = (1e-3f / size) * force.force;
+  const auto inside = [&](b2Vec2 point) {
+    for (const b2Fixture* fixture = force.body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (fixture->TestPoint(point)) return true;
+    }
+    return false;
+  };
+  return !inside(force.point - step) && inside(force.point + step);
+}
+
+}  // namespace
+
 float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
@@ -33,12 +55,18 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
   for (const ForceOnBody& force : forces) {
     const float size = force.force.Length();
     if (size == 0.0f || size < smallest_shown) continue;
-    const ImVec2 tail = camera.to_screen(force.point);
+    const ImVec2 at = camera.to_screen(force.point);
     // Too short to see at the scale: as long as an arrowhead needs, its label giving its size;
     // with a legible length asked for, lengthened in order.
     const float drawn = std::max(drawn_arrow_pixels(size, pixels_per_newton, shortest), shortest_arrow_pixels(scale));
-    const ImVec2 tip(tail.x + force.force.x / size * drawn, tail.y - force.force.y / size * drawn);
-    arrows.push_back(ScreenArrow{force, tail, tip});
+    const ImVec2 reach(force.force.x / size * drawn, -force.force.y / size * drawn);
+    // A push on a body's face ends there, its tail outside: drawn from the face, it lay inside
+    // the body (tipping_box pushed low, issue 31), as though the box were pulled from within.
+    const bool onto_face = pushes_on_face(force);
+    const ImVec2 tail = onto_face ? ImVec2(at.x - reach.x, at.y - reach.y) : at;
+    const ImVec2 tip = onto_face ? at : ImVec2(at.x + reach.x, at.y + reach.y);
+    // Half a pixel: the float rounding of a to-scale length, not a lengthening anyone can see.
+    arrows.push_back(ScreenArrow{force, tail, tip, drawn - size * pixels_per_newton < 0.5f});
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
   // force: each moves half a gap across, keeping its length and direction. The gap grows with the

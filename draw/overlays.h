@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,11 @@ constexpr float contact_dot_radius = 6.0f;
 struct ScreenArrow {
   ForceOnBody force;
   ImVec2 tail, tip;
+  // False where the arrow is drawn longer than the force at the picture's scale: it is then
+  // drawn with a broken shaft (draw_arrow's `broken`), so that a class reading lengths does not
+  // take it for to scale (issue 31: push's lengthened 2.94 N friction and 4.99 N push looked
+  // nearly alike, and a class reads the picture, not the legend).
+  bool to_scale = true;
   float length() const;
 };
 // The shortest arrow drawn at text scale `scale`: one whose head can be seen. It grows with the
@@ -44,23 +50,22 @@ inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
 // projector (2.0). One force scale per lesson, set by its heaviest weight, drew tipping_box's
 // 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31).
 inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thickness(scale); }
-// How long a force's arrow is drawn, px: to scale where that is twice `legible` or more; below,
-// lengthened but in order, `legible` and half its length at the scale, which meets the scale at
-// twice `legible`. Every smaller force then has a shorter arrow, as a textbook's "not to scale"
-// sketch keeps them: drawn simply as long as `legible`, push's 2.94 N friction and 4.99 N push
-// came out 56 and 54 px, the friction the longer (a teacher's trial, issue 31); now 70 and 79.
-// (A quarter, not a half, left them 5 px apart, and crowded stacked_blocks on a projector no
-// less.) 0: to scale.
-constexpr float lengthened_share = 0.5f;
+// How long a force's arrow is drawn, px: to scale where that is `legible` or more, else
+// `legible`, its shaft broken (ScreenArrow::to_scale) and its value beside it. Lengthening every
+// arrow under twice `legible` in order (`legible` and half its length at the scale) kept the
+// order but not one ratio: push's 2.94 N friction and 4.99 N push came out 70 and 79 px on a
+// projector, all its arrows "drawn longer", and a class reads the picture, not the legend (a
+// teacher's trial, issue 31). Now an arrow is to scale, or drawn broken at the shortest length a
+// back row reads: no smaller force has a longer arrow, and none lengthened looks to scale.
 inline float drawn_arrow_pixels(float newtons, float pixels_per_newton, float legible) {
-  const float to_scale = newtons * pixels_per_newton;
-  return to_scale * (1.0f - lengthened_share) >= legible ? to_scale : legible + lengthened_share * to_scale;
+  return std::max(newtons * pixels_per_newton, legible);
 }
 // The force under which the world's arrows are lengthened (drawn_arrow_pixels), which the legend says.
 inline float not_to_scale_below(float newtons_to_pixels, float scale) {
-  return legible_arrow_pixels(scale) / (1.0f - lengthened_share) / newtons_to_pixels;
+  return legible_arrow_pixels(scale) / newtons_to_pixels;
 }
-// Tails at the point of action, lengths to scale; a force that shows in the printed values of
+// Tails at the point of action (but a push on a face, whose tip is there: the body is pushed,
+// not pulled from inside), lengths to scale; a force that shows in the printed values of
 // its body's forces but would be shorter than `shortest` pixels (at least
 // shortest_arrow_pixels(scale)) is drawn that long, and one too small to show in them is left out. Two arrows of one body lying along one line
 // (weight and normal force) are drawn side by side, their gap growing with the text as well.

@@ -94,8 +94,8 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
 // Issue 31: the legend said "under 12.4 N: not to scale" on push in projector mode, whose every
 // force (its 9.81 N weight the largest) is under 12.4 N: every arrow was lengthened, and the
 // words left a class asking which were to scale. Said now for what the picture holds: every
-// force under the force where lengthening starts, "all arrows drawn longer"; some under it,
-// "under X N: drawn longer"; none, "all arrows to scale". On push at 3 s, at arrow scales
+// force under the force where lengthening starts, "all arrows longer, dashed"; some under it,
+// "under X N: longer, dashed"; none, "all arrows to scale". On push at 3 s, at arrow scales
 // chosen round its forces, and at the projector's own.
 TEST(Legend, SaysWhichArrowsAreDrawnLongerThanToScale) {
   LessonAt at("push", {}, 3.0);
@@ -110,17 +110,22 @@ TEST(Legend, SaysWhichArrowsAreDrawnLongerThanToScale) {
   ASSERT_LT(smallest, largest);
   const float scale = 2.0f;
   // The arrow scale (px per N) at which lengthening starts at `newtons`.
-  const auto starting_at = [&](float newtons) { return legible_arrow_pixels(scale) / (1.0f - lengthened_share) / newtons; };
-  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(2.0f * largest), scale), ArrowScaleWords("all arrows", "drawn longer"));
+  const auto starting_at = [&](float newtons) { return legible_arrow_pixels(scale) / newtons; };
+  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(2.0f * largest), scale), ArrowScaleWords("all arrows", "longer, dashed"));
   EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(0.5f * smallest), scale), ArrowScaleWords("all arrows", "to scale"));
   const float between = 0.5f * (smallest + largest);
   EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(between), scale),
-            ArrowScaleWords("under " + format_quantity(not_to_scale_below(starting_at(between), scale), "N") + ":", "drawn longer"));
+            ArrowScaleWords("under " + format_quantity(not_to_scale_below(starting_at(between), scale), "N") + ":", "longer, dashed"));
   // The projector's text scale: the frame's, a third larger (Classroom::ui_scale).
   const float projector_scale = 1.35f * frame_scale(1920, 1080);
   const float projector = arrow_scale(*at.lesson, at.framing, ImVec2(1920.0f, 1080.0f), projector_scale, true);
-  ASSERT_GT(not_to_scale_below(projector, projector_scale), largest) << "push's forces on a projector are not all lengthened";
-  EXPECT_EQ(arrow_scale_words(at.scene(), projector, projector_scale), ArrowScaleWords("all arrows", "drawn longer"));
+  // The lesson's own scale (from its run's largest force) leaves only its smaller forces under
+  // the legible length on a projector: the friction, not the weight.
+  const float below = not_to_scale_below(projector, projector_scale);
+  ASSERT_GT(below, smallest);
+  ASSERT_LT(below, largest);
+  EXPECT_EQ(arrow_scale_words(at.scene(), projector, projector_scale),
+            ArrowScaleWords("under " + format_quantity(below, "N") + ":", "longer, dashed"));
 }
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {

@@ -613,8 +613,10 @@ TEST(ForceArrows, EveryArrowOnAProjectorIsAHeadAndAShaftAsLongAtLeast) {
 // 4.99 N push, both drawn simply as long as a back row can read, came out 56 and 54 px, the
 // friction the longer, against the lesson's own question (a teacher's trial, issue 31). Forces
 // are read from their printed values (three figures); two within 10 % of each other are not
-// compared, nor a foot's share of a force summed over feet. The shorter must be shorter by more
-// than the floats' rounding of a tail moved to a dot's rim (a hundredth of a pixel).
+// compared, nor a foot's share of a force summed over feet. The smaller's arrow is no longer than
+// the larger's, to the floats' rounding of a tail moved to a dot's rim (a hundredth of a pixel):
+// two forces both under the legible length are both drawn that long, broken (drawn_arrow_pixels),
+// and tie; lengthening them "in order" kept every ratio false (issue 31).
 TEST(ForceArrows, ASmallerForceNeverHasTheLongerArrow) {
   int compared = 0;
   each_projector_lane([&](const std::string& where, const draw::FrameRecord::Lane& lane) {
@@ -628,7 +630,7 @@ TEST(ForceArrows, ASmallerForceNeverHasTheLongerArrow) {
         if (!(small_value < 0.9 * large_value)) continue;
         const float small_drawn = length(sub(smaller.arrow.to, smaller.arrow.from));
         const float large_drawn = length(sub(larger.arrow.to, larger.arrow.from));
-        EXPECT_LT(small_drawn, large_drawn - 0.01f)
+        EXPECT_LE(small_drawn, large_drawn + 0.01f)
             << where << ": the " << draw::force_kind_name(smaller.kind) << " " << smaller.text << " is drawn " << small_drawn
             << " px, longer than the " << draw::force_kind_name(larger.kind) << " " << larger.text << " at " << large_drawn
             << " px";
@@ -669,6 +671,48 @@ TEST(ForceArrows, NoArrowOnAProjectorCrossesAnothersShaft) {
     }
   });
   EXPECT_GE(pairs, 300);
+}
+
+// Every arrow's tip is in the picture: pulley's 9.81 N normal force ran out of the view's top
+// once the arrows' scale came from the lesson's run (its largest force 0.4 of the view's height)
+// while the camera kept room above the bodies as a share of the view, not of the arrows' drawn
+// lengths. Every built-in lesson at its defaults in the window at 1920 × 1080, in projector mode
+// and not, at its opening, half way and at its end: each arrow's tip inside what of its lane
+// shows (the lane's clip), to the floats' rounding (a hundredth of a pixel).
+//
+// Not yet: the lessons in lanes (contact_area, friction_models, terrain, thrown_box,
+// where_methods_fail), whose lanes keep to their bodies' heights: a weight at least the legible
+// 57 px down from a body's centre reaches past a lane's foot (terrain's four lanes on a projector
+// are 86 px high: a normal force and a weight of 57 px each need about 100). Their tips out are
+// counted, and the test fails once none is, so that they are held to it from then on.
+TEST(ForceArrows, EveryArrowsTipIsInsideTheWorldView) {
+  int checked = 0, not_yet_out = 0;
+  for (const bool projector : {true, false}) {
+    each_lesson_frame(projector, draw::ThemeName::light,
+                      [&](const std::string& lesson, const std::string& when, const draw::FrameRecord& record,
+                          const lessons::Lesson&) {
+                        for (const draw::FrameRecord::Lane& lane : record.lanes) {
+                          for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+                            const ImVec2 tip = force.arrow.to;
+                            const float slack = 0.01f;
+                            const bool inside = tip.x >= lane.shown.x - slack && tip.x <= lane.shown.z + slack &&
+                                                tip.y >= lane.shown.y - slack && tip.y <= lane.shown.w + slack;
+                            if (record.lanes.size() > 1) {
+                              not_yet_out += inside ? 0 : 1;
+                              continue;
+                            }
+                            EXPECT_TRUE(inside)
+                                << lesson << when << (projector ? ", projector" : "") << ": the "
+                                << draw::force_kind_name(force.kind) << " " << force.text << "'s tip (" << tip.x << ", "
+                                << tip.y << ") is outside the view (" << lane.shown.x << ", " << lane.shown.y << ") to ("
+                                << lane.shown.z << ", " << lane.shown.w << ")";
+                            ++checked;
+                          }
+                        }
+                      });
+  }
+  EXPECT_GE(checked, 250);
+  EXPECT_GT(not_yet_out, 0) << "the lanes' arrows are now all in view: hold them to the rule";
 }
 
 // Every force's arrow stands out from whatever it is drawn over, in both themes: against every
