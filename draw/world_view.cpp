@@ -292,6 +292,160 @@ void draw_contact_mark(ImDrawList* draw, const ContactMark& mark, const Camera& 
 
 }  // namespace
 
+namespace {
+
+// A friction acts at its contact's point, where the contact's dot is drawn: one shorter than
+// the dot's radius (stacked_blocks' friction between the blocks, a few newtons) lay under the
+// dot and was not seen. It starts at the dot's rim instead, along its own direction, with its
+// length kept (the length is the force's measure, the dot says where it acts).
+void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std::vector<ContactMark>& marks,
+                                     const Camera& camera, float mark_radius) {
+  for (ScreenArrow& arrow : arrows) {
+    if (arrow.force.kind != ForceKind::friction) continue;
+    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
+    // Feet close together: past one dot's rim may be under the next, so on until under none
+    // (each move is forward along the arrow, so a dot is passed at most once).
+    for (std::size_t moves = 0; moves < marks.size(); ++moves) {
+      const auto under = std::find_if(marks.begin(), marks.end(), [&](const ContactMark& mark) {
+        return length(sub(arrow.tail, camera.to_screen(mark.point))) < mark_radius;
+      });
+      if (under == marks.end()) break;
+      const ImVec2 dot = camera.to_screen(under->point);
+      // To the rim along the arrow's line, and past the dot's 1.5 px outline.
+      const ImVec2 from_dot = sub(arrow.tail, dot);
+      const float along = from_dot.x * unit.x + from_dot.y * unit.y;
+      const float across_squared = std::max(0.0f, from_dot.x * from_dot.x + from_dot.y * from_dot.y - along * along);
+      const float to_rim = std::sqrt(std::max(0.0f, mark_radius * mark_radius - across_squared)) - along + 1.5f;
+      const ImVec2 shift = mul(unit, to_rim);
+      arrow.tail = add(arrow.tail, shift);
+      arrow.tip = add(arrow.tip, shift);
+    }
+  }
+}
+
+// Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
+// block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
+// crossed the normal force's (issue 31). The shorter slides forward along its own line of
+// action until it starts a thickness past the longer's shaft: a force slid along its line has
+// the same moment about every point, so what the picture says of turning is kept (tipping_box's
+// friction stays on the floor's line), and it then starts where the longer passes, as a
+// textbook draws friction from where the weight meets the floor. Crossings within half a
+// thickness of the shorter's tail are forces starting together, and stay.
+void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
+  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
+  for (std::size_t round = 0; round < arrows.size(); ++round) {
+    bool moved = false;
+    for (ScreenArrow& shorter : arrows) {
+      for (const ScreenArrow& longer : arrows) {
+        if (&shorter == &longer || longer.length() <= shorter.length()) continue;
+        const ImVec2 d = sub(shorter.tip, shorter.tail), e = sub(longer.tip, longer.tail), w = sub(longer.tail, shorter.tail);
+        const float denominator = cross2(d, e);
+        if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;  // parallel: side by side already
+        const float on_shorter = cross2(w, e) / denominator, on_longer = cross2(w, d) / denominator;
+        if (on_shorter <= 0.0f || on_shorter >= 1.0f || on_longer <= 0.0f || on_longer >= 1.0f) continue;
+        // The longer shaft's width measured along the shorter's line.
+        const float sine = std::abs(denominator) / (length(d) * length(e));
+        const float to_crossing = on_shorter * length(d);
+        if (to_crossing <= 0.5f * thickness / sine) continue;
+        const ImVec2 shift = mul(d, (to_crossing + thickness / sine) / length(d));
+        shorter.tail = add(shorter.tail, shift);
+        shorter.tip = add(shorter.tip, shift);
+        moved = true;
+      }
+    }
+    if (!moved) break;
+  }
+}
+
+// A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
+// longest (each foot's own value is a probe away). One label per foot crowds the picture.
+std::vector<std::string> force_value_texts(const std::vector<ScreenArrow>& arrows) {
+  std::vector<std::string> texts(arrows.size());
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    const ForceOnBody& force = arrows[i].force;
+    texts[i] = format_quantity(force.force.Length(), "N");
+    if (force.kind != ForceKind::normal) continue;
+    int count = 0;
+    b2Vec2 sum{0.0f, 0.0f};
+    std::size_t longest = i;
+    for (std::size_t j = 0; j < arrows.size(); ++j) {
+      // The same two bodies: a body's feet on one floor, not a block's floor and the block on it.
+      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body ||
+          arrows[j].force.other != force.other) {
+        continue;
+      }
+      ++count;
+      sum += arrows[j].force.force;
+      if (arrows[j].length() > arrows[longest].length()) longest = j;
+    }
+    if (count > 1) texts[i] = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
+  }
+  return texts;
+}
+
+// The values placed in an order on a copy of the placer; where some found no place beside
+// their own arrows (nor one joined by a leader), again with those first, for they have the
+// fewest places (a short friction where a normal force starts), and the others after. Tried
+// from the arrows' order and from the shortest arrow's first, the order that leaves the fewest
+// values away from their arrows is drawn (the arrows' own order where they tie). (Issue 31: in
+// a projector's thin lanes the values placed early took the only places by a short arrow.)
+// Draws them, and returns `labels` with them placed.
+LabelPlacer place_force_values(const std::vector<ScreenArrow>& arrows, const std::vector<std::string>& texts, const Fonts& fonts,
+                               float thickness, const LabelPlacer& labels, ImDrawList* draw, const Theme& theme) {
+  const auto place_all = [&](const std::vector<std::size_t>& order, LabelPlacer& placer) {
+    std::vector<PlacedForce> placed(arrows.size());
+    for (const std::size_t i : order) placed[i] = place_force_label(arrows[i], fonts.body, thickness, placer, texts[i]);
+    return placed;
+  };
+  const auto away = [](const std::vector<PlacedForce>& placed) {
+    return static_cast<int>(std::count_if(placed.begin(), placed.end(), [](const PlacedForce& p) { return !p.beside; }));
+  };
+  std::vector<std::size_t> in_order(arrows.size());
+  for (std::size_t i = 0; i < in_order.size(); ++i) in_order[i] = i;
+  std::vector<std::size_t> shortest_first = in_order;
+  std::stable_sort(shortest_first.begin(), shortest_first.end(),
+                   [&](std::size_t a, std::size_t b) { return arrows[a].length() < arrows[b].length(); });
+  // Rounds of placing again, with the values that `placed` left away from their arrows first,
+  // while each leaves fewer away than the last, whose values and placer then replace `placed`'s.
+  const auto place_again = [&](std::vector<std::size_t> order, std::vector<PlacedForce>& placed, LabelPlacer& placer) {
+    for (int round = 0; round < 4 && away(placed) > 0; ++round) {
+      std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !placed[i].beside; });
+      LabelPlacer again_placer = labels;
+      std::vector<PlacedForce> again = place_all(order, again_placer);
+      if (away(again) >= away(placed)) break;
+      placed = std::move(again);
+      placer = std::move(again_placer);
+    }
+  };
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start_time = clock::now();
+  LabelPlacer best_placer = labels;
+  std::vector<PlacedForce> best = place_all(in_order, best_placer);
+  const clock::time_point retries_time = clock::now();
+  ForceLabelTimes& times = force_label_times();
+  ++times.views;
+  if (away(best) > 0) {
+    ++times.retried;
+    // The arrows' order's rounds start from its placing, `best`, rather than placing it again.
+    place_again(in_order, best, best_placer);
+    if (away(best) > 0) {
+      LabelPlacer placer = labels;
+      std::vector<PlacedForce> placed = place_all(shortest_first, placer);
+      place_again(shortest_first, placed, placer);
+      if (away(placed) < away(best)) {
+        best = std::move(placed);
+        best_placer = std::move(placer);
+      }
+    }
+  }
+  times.arrows_order += std::chrono::duration<double>(retries_time - start_time).count();
+  times.retries += std::chrono::duration<double>(clock::now() - retries_time).count();
+  for (const PlacedForce& placed : best) draw_placed_force(draw, placed, theme, fonts.body, thickness);
+  return best_placer;
+}
+
+}  // namespace
+
 ForceLabelTimes& force_label_times() {
   thread_local ForceLabelTimes times;
   return times;
@@ -354,63 +508,9 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
                                  std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
   }
   const float mark_radius = contact_dot_radius * fonts.scale;
-  // A friction acts at its contact's point, where the contact's dot is drawn: one shorter than
-  // the dot's radius (stacked_blocks' friction between the blocks, a few newtons) lay under the
-  // dot and was not seen. It starts at the dot's rim instead, along its own direction, with its
-  // length kept (the length is the force's measure, the dot says where it acts).
-  for (ScreenArrow& arrow : arrows) {
-    if (arrow.force.kind != ForceKind::friction) continue;
-    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
-    // Feet close together: past one dot's rim may be under the next, so on until under none
-    // (each move is forward along the arrow, so a dot is passed at most once).
-    for (std::size_t moves = 0; moves < marks.size(); ++moves) {
-      const auto under = std::find_if(marks.begin(), marks.end(), [&](const ContactMark& mark) {
-        return length(sub(arrow.tail, camera.to_screen(mark.point))) < mark_radius;
-      });
-      if (under == marks.end()) break;
-      const ImVec2 dot = camera.to_screen(under->point);
-      // To the rim along the arrow's line, and past the dot's 1.5 px outline.
-      const ImVec2 from_dot = sub(arrow.tail, dot);
-      const float along = from_dot.x * unit.x + from_dot.y * unit.y;
-      const float across_squared = std::max(0.0f, from_dot.x * from_dot.x + from_dot.y * from_dot.y - along * along);
-      const float to_rim = std::sqrt(std::max(0.0f, mark_radius * mark_radius - across_squared)) - along + 1.5f;
-      const ImVec2 shift = mul(unit, to_rim);
-      arrow.tail = add(arrow.tail, shift);
-      arrow.tip = add(arrow.tip, shift);
-    }
-  }
+  start_frictions_past_their_dots(arrows, marks, camera, mark_radius);
   const float thickness = world_arrow_thickness(fonts.scale);
-  // Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
-  // block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
-  // crossed the normal force's (issue 31). The shorter slides forward along its own line of
-  // action until it starts a thickness past the longer's shaft: a force slid along its line has
-  // the same moment about every point, so what the picture says of turning is kept (tipping_box's
-  // friction stays on the floor's line), and it then starts where the longer passes, as a
-  // textbook draws friction from where the weight meets the floor. Crossings within half a
-  // thickness of the shorter's tail are forces starting together, and stay.
-  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
-  for (std::size_t round = 0; round < arrows.size(); ++round) {
-    bool moved = false;
-    for (ScreenArrow& shorter : arrows) {
-      for (const ScreenArrow& longer : arrows) {
-        if (&shorter == &longer || longer.length() <= shorter.length()) continue;
-        const ImVec2 d = sub(shorter.tip, shorter.tail), e = sub(longer.tip, longer.tail), w = sub(longer.tail, shorter.tail);
-        const float denominator = cross2(d, e);
-        if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;  // parallel: side by side already
-        const float on_shorter = cross2(w, e) / denominator, on_longer = cross2(w, d) / denominator;
-        if (on_shorter <= 0.0f || on_shorter >= 1.0f || on_longer <= 0.0f || on_longer >= 1.0f) continue;
-        // The longer shaft's width measured along the shorter's line.
-        const float sine = std::abs(denominator) / (length(d) * length(e));
-        const float to_crossing = on_shorter * length(d);
-        if (to_crossing <= 0.5f * thickness / sine) continue;
-        const ImVec2 shift = mul(d, (to_crossing + thickness / sine) / length(d));
-        shorter.tail = add(shorter.tail, shift);
-        shorter.tip = add(shorter.tip, shift);
-        moved = true;
-      }
-    }
-    if (!moved) break;
-  }
+  uncross_arrows(arrows, thickness);
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
@@ -447,84 +547,8 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   for (const TorqueArc& arc : torques) {
     draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.body, theme.panel, thickness, labels);
   }
-  // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
-  // longest (each foot's own value is a probe away). One label per foot crowds the picture.
-  std::vector<std::string> texts(arrows.size());
-  for (std::size_t i = 0; i < arrows.size(); ++i) {
-    const ForceOnBody& force = arrows[i].force;
-    texts[i] = format_quantity(force.force.Length(), "N");
-    if (force.kind != ForceKind::normal) continue;
-    int count = 0;
-    b2Vec2 sum{0.0f, 0.0f};
-    std::size_t longest = i;
-    for (std::size_t j = 0; j < arrows.size(); ++j) {
-      // The same two bodies: a body's feet on one floor, not a block's floor and the block on it.
-      if (arrows[j].force.kind != ForceKind::normal || arrows[j].force.body != force.body ||
-          arrows[j].force.other != force.other) {
-        continue;
-      }
-      ++count;
-      sum += arrows[j].force.force;
-      if (arrows[j].length() > arrows[longest].length()) longest = j;
-    }
-    if (count > 1) texts[i] = i == longest ? format_quantity(sum.Length(), "N") + " in all" : "";
-  }
-  // The values placed in an order on a copy of the placer; where some found no place beside
-  // their own arrows (nor one joined by a leader), again with those first, for they have the
-  // fewest places (a short friction where a normal force starts), and the others after. Tried
-  // from the arrows' order and from the shortest arrow's first, the order that leaves the fewest
-  // values away from their arrows is drawn (the arrows' own order where they tie). (Issue 31: in
-  // a projector's thin lanes the values placed early took the only places by a short arrow.)
-  const auto place_all = [&](const std::vector<std::size_t>& order, LabelPlacer& placer) {
-    std::vector<PlacedForce> placed(arrows.size());
-    for (const std::size_t i : order) placed[i] = place_force_label(arrows[i], fonts.body, thickness, placer, texts[i]);
-    return placed;
-  };
-  const auto away = [](const std::vector<PlacedForce>& placed) {
-    return static_cast<int>(std::count_if(placed.begin(), placed.end(), [](const PlacedForce& p) { return !p.beside; }));
-  };
-  std::vector<std::size_t> in_order(arrows.size());
-  for (std::size_t i = 0; i < in_order.size(); ++i) in_order[i] = i;
-  std::vector<std::size_t> shortest_first = in_order;
-  std::stable_sort(shortest_first.begin(), shortest_first.end(),
-                   [&](std::size_t a, std::size_t b) { return arrows[a].length() < arrows[b].length(); });
-  // Rounds of placing again, with the values that `placed` left away from their arrows first,
-  // while each leaves fewer away than the last, whose values and placer then replace `placed`'s.
-  const auto place_again = [&](std::vector<std::size_t> order, std::vector<PlacedForce>& placed, LabelPlacer& placer) {
-    for (int round = 0; round < 4 && away(placed) > 0; ++round) {
-      std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !placed[i].beside; });
-      LabelPlacer again_placer = labels;
-      std::vector<PlacedForce> again = place_all(order, again_placer);
-      if (away(again) >= away(placed)) break;
-      placed = std::move(again);
-      placer = std::move(again_placer);
-    }
-  };
-  using clock = std::chrono::steady_clock;
-  const clock::time_point start_time = clock::now();
-  LabelPlacer best_placer = labels;
-  std::vector<PlacedForce> best = place_all(in_order, best_placer);
-  const clock::time_point retries_time = clock::now();
-  ForceLabelTimes& times = force_label_times();
-  ++times.views;
-  if (away(best) > 0) {
-    ++times.retried;
-    // The arrows' order's rounds start from its placing, `best`, rather than placing it again.
-    place_again(in_order, best, best_placer);
-    if (away(best) > 0) {
-      LabelPlacer placer = labels;
-      std::vector<PlacedForce> placed = place_all(shortest_first, placer);
-      place_again(shortest_first, placed, placer);
-      if (away(placed) < away(best)) {
-        best = std::move(placed);
-        best_placer = std::move(placer);
-      }
-    }
-  }
-  labels = std::move(best_placer);
-  times.arrows_order += std::chrono::duration<double>(retries_time - start_time).count();
-  times.retries += std::chrono::duration<double>(clock::now() - retries_time).count();
-  for (const PlacedForce& placed : best) draw_placed_force(draw, placed, theme, fonts.body, thickness);
+  const std::vector<std::string> texts = force_value_texts(arrows);
+  labels = place_force_values(arrows, texts, fonts, thickness, labels, draw, theme);
 }
 
 }  // namespace frictionlab::draw
