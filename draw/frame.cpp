@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <optional>
 
 #include "draw/free_body.h"
@@ -147,63 +146,12 @@ Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& 
   return world_cameras(lesson, framing, display, scale, origin).front();
 }
 
-namespace {
-
-// The force the arrows' scale is chosen for: the largest force on a moving body in nine frames
-// of ten of a whole run of the lesson (a copy of it, at its present values, from t = 0 to its
-// end), or nothing where the run is too long to rehearse (as the plots', draw/plots.cpp) or
-// fails. Not its heaviest weight alone: stacked_blocks' floor carries both blocks, a pull or a
-// spring may pull harder than a weight. Not the run's very largest: a box tipped over lands with
-// a blow of a few frames many times its weight, which would shrink every other arrow.
-std::optional<float> run_force_for_scale(const lessons::Lesson& lesson) {
-  const StepSettings& settings = lesson.settings();
-  constexpr double most_steps = 60000.0;
-  if (!(lesson.duration() * settings.hz * settings.substeps <= most_steps)) return std::nullopt;
-  std::map<std::string, std::string> values;
-  for (const lessons::Parameter& parameter : lesson.parameters()) values[parameter.name] = lessons::parameter_text(parameter);
-  try {
-    lessons::Lesson copy(lesson.script(), values, lesson.settings());
-    std::vector<float> largest;
-    while (!copy.reached(copy.duration()) && !copy.failed()) {
-      copy.step();
-      float frame = 0.0f;
-      for (const auto& [name, body] : copy.scene().bodies()) {
-        if (body->GetType() != b2_dynamicBody) continue;
-        for (const ForceOnBody& force : forces_on(copy.scene(), body)) frame = std::max(frame, force.force.Length());
-      }
-      largest.push_back(frame);
-    }
-    if (largest.empty()) return std::nullopt;
-    const auto ninth = largest.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(largest.size() - 1));
-    std::nth_element(largest.begin(), ninth, largest.end());
-    if (!(*ninth > 0.0f)) return std::nullopt;
-    return *ninth;
-  } catch (const std::exception&) {
-    return std::nullopt;  // the lesson itself says what went wrong; its heaviest weight sets the scale
-  }
-}
-
-// run_force_for_scale, kept by lesson revision (one number for a script's text, values and
-// settings, never reused): the frame asks for the scale every frame, and a rehearsal is a run.
-std::optional<float> kept_run_force(const lessons::Lesson& lesson) {
-  static std::vector<std::pair<std::uint64_t, std::optional<float>>> kept;  // the latest last
-  constexpr std::size_t most_kept = 16;
-  for (const auto& [revision, force] : kept) {
-    if (revision == lesson.revision()) return force;
-  }
-  std::optional<float> force = run_force_for_scale(lesson);
-  if (kept.size() >= most_kept) kept.erase(kept.begin());
-  kept.emplace_back(lesson.revision(), force);
-  return force;
-}
-
-}  // namespace
-
 float arrow_scale(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                   bool projector) {
-  // The run's largest force (run_force_for_scale) is drawn scale_force_pixels long.
+  // The run's largest force (run_force_for_scale, from the plots' run ahead) is drawn
+  // scale_force_pixels long; without a run ahead, the heaviest weight.
   const float longest = scale_force_pixels(lesson, framing, display, scale, projector);
-  if (const std::optional<float> force = kept_run_force(lesson)) return longest / *force;
+  if (const std::optional<float> force = run_force_for_scale(lesson)) return longest / *force;
   return pixels_per_newton(lesson.scene(), longest);
 }
 

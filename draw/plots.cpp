@@ -168,6 +168,8 @@ struct PlannedReach {
   // Plot by plot, each series' points over the whole run, a (NaN, NaN) after each: where the
   // levels' texts must not go (Chart::planned_points).
   std::vector<std::vector<std::pair<double, double>>> points;
+  // The force the arrows are scaled for (run_force_for_scale).
+  std::optional<float> force_for_scale;
 };
 
 std::string values_key(const lessons::Lesson& lesson) {
@@ -197,8 +199,23 @@ std::optional<PlannedReach> rehearse(const lessons::Lesson& lesson) {
   for (const lessons::Parameter& parameter : lesson.parameters()) values[parameter.name] = lessons::parameter_text(parameter);
   try {
     lessons::Lesson copy(lesson.script(), values, lesson.settings());
-    copy.step_to(copy.duration());
+    // Frame by frame, as step_to would: the largest force on a moving body in each.
+    std::vector<float> largest;
+    while (!copy.reached(copy.duration())) {
+      copy.step();
+      float frame = 0.0f;
+      for (const auto& [name, body] : copy.scene().bodies()) {
+        if (body->GetType() != b2_dynamicBody) continue;
+        for (const ForceOnBody& force : forces_on(copy.scene(), body)) frame = std::max(frame, force.force.Length());
+      }
+      largest.push_back(frame);
+    }
     PlannedReach reach;
+    if (!largest.empty()) {
+      const auto ninth = largest.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(largest.size() - 1));
+      std::nth_element(largest.begin(), ninth, largest.end());
+      if (*ninth > 0.0f) reach.force_for_scale = *ninth;
+    }
     const Scene& scene = copy.scene();
     const std::size_t count = scene.times().size();
     for (const lessons::Plot& plot : copy.plots()) {
@@ -262,6 +279,15 @@ const PlannedReach* planned_reach(const lessons::Lesson& lesson) {
   by_revision.emplace_back(lesson.revision(), &*known);
   return answer(*known);
 }
+
+}  // namespace
+
+std::optional<float> run_force_for_scale(const lessons::Lesson& lesson) {
+  const PlannedReach* reach = planned_reach(lesson);
+  return reach != nullptr ? reach->force_for_scale : std::nullopt;
+}
+
+namespace {
 
 Range joined(Range a, Range b) { return {std::min(a.low, b.low), std::max(a.high, b.high)}; }
 

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,14 @@ double time_axis_span(double duration, double now, bool secret = false);
 // script's text, values and settings, having not seen its revision lately: the cost the lesson's
 // revision saves, for the tests.
 std::size_t planned_reach_lookups();
+
+// The force the world's arrows are scaled for (arrow_scale, draw/frame.h), from the same run
+// ahead: the largest force on a moving body in nine frames of ten of the run (not its heaviest
+// weight alone: stacked_blocks' floor carries both blocks, a pull or a spring may pull harder;
+// not the run's very largest: a box tipped over lands with a blow of a few frames many times its
+// weight, which would shrink every other arrow). Nothing where the run is too long to run ahead,
+// fails, or has no force.
+std::optional<float> run_force_for_scale(const lessons::Lesson& lesson);
 
 // Plot number `plot` of the lesson as a chart for the chart engine: the probes' record as
 // series (coloured by regime on an X–Y plot of one probe), the slip shaded on a time plot, the
