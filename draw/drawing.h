@@ -198,11 +198,12 @@ DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
 // shaft in dashes, for an arrow drawn longer than to scale (ScreenArrow::to_scale).
 void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0,
                 bool broken = false);
-// A broken shaft's dashes and gaps, px, for arrows `thickness` thick: dashes about a thickness
-// long and gaps of one, so that the shortest arrow the world draws (legible_arrow_pixels: a
-// head and a shaft as long, four thicknesses) still shows two gaps, 7 px each on a projector.
-inline float broken_dash(float thickness) { return thickness; }
-inline float broken_gap(float thickness) { return thickness; }
+// A broken shaft's dashes and gaps, px, for arrows `thickness` thick: half a thickness each, so
+// that the shortest arrow the world draws (legible_arrow_pixels: four thicknesses, of which the
+// head takes 0.6) still shows a gap between two dashes, 3.5 px each on a projector. Dashes a
+// thickness long left that shaft one 2 px dash and a gap (the trial after issue 31's first).
+inline float broken_dash(float thickness) { return 0.5f * thickness; }
+inline float broken_gap(float thickness) { return 0.5f * thickness; }
 // A third of the arrow's thickness and at least a pixel and a half: a line a back row sees
 // round the shaft (2.3 px on a projector's 7 px arrows).
 inline float arrow_halo_width(float thickness) { return std::max(1.5f, thickness / 3.0f); }

@@ -45,11 +45,15 @@ inline float shortest_arrow_pixels(float scale) { return 8.0f * scale; }
 // The world's arrows' thickness at text scale `scale` (3.5 px at scale 1), which their heads,
 // four thicknesses long, the gaps between them and the room kept round them follow.
 inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
-// The shortest force arrow the world draws, to be read from a classroom's back row: its head
-// (four thicknesses, draw_arrow's) and a shaft as long, 28 px at text scale 1 and 56 px on a
-// projector (2.0). One force scale per lesson, set by its heaviest weight, drew tipping_box's
-// 19.9 N push 15 px long on a projector and push's friction under 30 px (issue 31).
-inline float legible_arrow_pixels(float scale) { return 8.0f * world_arrow_thickness(scale); }
+// The shortest force arrow the world draws, to be read from a classroom's back row: four
+// thicknesses, a head (draw_arrow's, shortened to 0.6 of the arrow) and a shaft of two thirds of
+// it, 14 px at text scale 1 and 28 px on a projector (2.0). One force scale per lesson, set by
+// its heaviest weight, drew tipping_box's 19.9 N push 15 px long on a projector (issue 31). Eight
+// thicknesses (56 px) lengthened spring_pull's 3.43 N friction to the length of its 4.64 N
+// spring force, and pulley's and push's smaller forces likewise: a class comparing lengths read
+// them as equal (the trial after). At four, those forces are to scale, and what is lengthened is
+// small beside the forces it is seen with.
+inline float legible_arrow_pixels(float scale) { return 4.0f * world_arrow_thickness(scale); }
 // How long a force's arrow is drawn, px: to scale where that is `legible` or more, else
 // `legible`, its shaft broken (ScreenArrow::to_scale) and its value beside it. Lengthening every
 // arrow under twice `legible` in order (`legible` and half its length at the scale) kept the
