@@ -18,9 +18,15 @@ void help_panel(bool& shown, bool browser, bool script_paths, const std::string&
   // lesson a newcomer sees (a trial of the web page). Its keys and words scroll in its room.
   ImGui::SetNextWindowPos(ImVec2(opens_over.x, opens_over.y), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(opens_over.z - opens_over.x, opens_over.w - opens_over.y), ImGuiCond_FirstUseEver);
-  // Opaque: the panels' own background lets the tabs' words under it show through its margin.
+  // Opaque, and square-cornered: a rounded window's title bar and body are each filled with an
+  // anti-aliased fringe, and where the two fringes meet, one row of pixels is only partly
+  // covered. Over the tabs it stands on, their words showed through that row as a band of
+  // glyphs under the title (a projector trial). Square rectangles are filled edge to edge.
   ImGui::SetNextWindowBgAlpha(1.0f);
-  if (ImGui::Begin("Help (F1 shows and hides it)", &shown)) {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+  const bool open = ImGui::Begin("Help (F1 shows and hides it)", &shown);
+  ImGui::PopStyleVar();
+  if (open) {
     // Kept inside the window when the window shrinks under it (a page's editor opening beside
     // the world, a smaller browser window): ImGui keeps only a corner of it in sight.
     const ImVec2 display = ImGui::GetIO().DisplaySize, at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();

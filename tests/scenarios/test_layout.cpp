@@ -419,6 +419,49 @@ TEST_P(WindowLayout, TheHelpPanelOpensUnderTheSlidersClearOfTheWorld) {
   std::printf("help panels opening over the lowest sliders at %s: %d\n", screen.name, over_sliders);
 }
 
+// A projector trial saw a band of glyphs under the help panel's title: one row of pixels where the
+// rounded title bar's anti-aliased lower edge met the body's upper edge, each covering it only in
+// part, let the tabs under the panel show through. Across the panel's width (its border and
+// scroll bar left out), the rows round that seam are each one colour: title bar, body, or one
+// blend of the two, never the words of what lies under them.
+TEST_P(WindowLayout, NothingUnderTheHelpPanelShowsThroughBelowItsTitle) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  draw::HeadlessContext gl;
+  for (const char* lesson : {"push", "tipping_box"}) {
+    draw::ImGuiHost host(nullptr);
+    ClassroomOptions options = class_window(lessons::resolve_lesson(lesson), screen);
+    options.window.help = true;
+    options.window.predictions = true;
+    Classroom window(options);
+    for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, nullptr);
+    gl.make_current();
+    gl.bind_framebuffer(screen.width, screen.height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const draw::Image picture = gl.read_pixels();
+    const ImGuiWindow* help = ImGui::FindWindowByName("Help (F1 shows and hides it)");
+    ASSERT_TRUE(help != nullptr && help->WasActive) << lesson;
+    const int seam = static_cast<int>(std::floor(help->Pos.y + help->TitleBarHeight()));
+    const int left = static_cast<int>(std::ceil(help->Pos.x)) + 3;
+    const int right = static_cast<int>(std::floor(help->Pos.x + help->Size.x - help->ScrollbarSizes.x)) - 3;
+    ASSERT_GT(right - left, 100) << lesson;
+    for (int y = seam - 1; y <= seam + 1; ++y) {
+      int differing = 0;
+      for (int x = left; x < right; ++x) {
+        for (int channel = 0; channel < 3; ++channel) {
+          if (std::abs(picture.pixel(x, y)[channel] - picture.pixel(left, y)[channel]) > 2) {
+            ++differing;
+            break;
+          }
+        }
+      }
+      EXPECT_EQ(differing, 0) << lesson << ", window " << screen.name << ": " << differing << " pixels of row " << y
+                              << " (the help's title bar ends at " << help->Pos.y + help->TitleBarHeight()
+                              << ") differ from its first: what lies under the panel shows through";
+    }
+  }
+}
+
 // At the run's end a teacher reads what the run measured beside each of the class's answers,
 // reveals the theory, and sets class, theory and measurement side by side: every question (its
 // short name once revealed), the class's answer and its comparison (the measurement before the
