@@ -37,6 +37,102 @@ TransportBar::Shape TransportBar::shape(const std::string& room_for, float width
   return shape;
 }
 
+namespace {
+
+// Play (Pause while playing), Step, Reset and the speed slider, each noted where it is drawn.
+void buttons_and_speed(classroom_state::Playback& playback, float s, double& speed_kept, ControlPlaces& controls) {
+  const float button = 80.0f * s;
+  const auto noted_button = [&](const char* label, const char* name) {
+    const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
+    remember_item(controls, name);
+    draw::note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+    return pressed;
+  };
+  if (noted_button(playback.playing() ? "Pause" : "Play", "play")) playback.toggle();
+  ImGui::SameLine();
+  if (noted_button("Step", "step")) playback.step_once();
+  ImGui::SameLine();
+  if (noted_button("Reset", "reset")) playback.reset();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(150.0f * s);
+  float speed = static_cast<float>(playback.speed());
+  const float slowest = static_cast<float>(classroom_state::Playback::slowest), fastest = static_cast<float>(classroom_state::Playback::fastest);
+  if (knob_slider("##speed", ImGuiDataType_Float, &speed, &slowest, &fastest, "speed \u00d7%.2g",
+                  ImGuiSliderFlags_Logarithmic, controls, "speed")) {
+    // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
+    // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
+    if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
+    playback.set_speed(speed);
+    speed_kept = playback.speed();
+  }
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
+  draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+}
+
+// The window's words (`said`), up to `most_lines` lines of the current font in what the time bar
+// leaves of its line, or on the line under it (`below`). True where they are cut and the pointer
+// is over them: the caller shows them whole.
+bool notice_lines(const std::string& said, bool below, int most_lines, ImVec2 corner, ImVec2 size) {
+  const float line = ImGui::GetTextLineHeight();
+  const std::vector<std::string> lines = draw::lines_that_fit(said, ImGui::GetContentRegionAvail().x, most_lines);
+  if (lines.empty()) return false;
+  float widest = 0.0f;
+  for (const std::string& words : lines) widest = std::max(widest, ImGui::CalcTextSize(words.c_str()).x);
+  const ImVec2 extent(widest, static_cast<float>(lines.size()) * line);
+  ImVec2 first;
+  if (below) {
+    first = ImGui::GetCursorScreenPos();
+    ImGui::Dummy(extent);
+  } else {
+    // Centred in the bar's height: drawn, not laid out as items, so that two lines may use
+    // the bar's padding without making it scroll.
+    first = ImVec2(ImGui::GetCursorScreenPos().x, corner.y + 0.5f * (size.y - extent.y));
+  }
+  ImDrawList* drawing = ImGui::GetWindowDrawList();
+  const ImU32 colour = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const ImVec2 at(first.x, first.y + static_cast<float>(i) * line);
+    drawing->AddText(at, colour, lines[i].c_str());
+    draw::note_text_in(lines[i].c_str(), at, ImRect(corner, ImVec2(corner.x + size.x, corner.y + size.y)));
+  }
+  // Cut or not, told word by word: the lines join their words with one space where the
+  // notices were joined with two.
+  std::string shown, whole;
+  for (const std::string& words : lines) shown += (shown.empty() ? "" : " ") + words;
+  for (const std::string& words : draw::lines_that_fit(said, INFINITY, 1)) whole += words;
+  return shown != whole && ImGui::IsWindowHovered() &&
+         ImGui::IsMouseHoveringRect(first, ImVec2(first.x + extent.x, first.y + extent.y));
+}
+
+}  // namespace
+
+void TransportBar::time_bar(classroom_state::Playback& playback, float width, ControlPlaces& controls) {
+  const Scene& scene = playback.lesson().scene();
+  ImGui::SetNextItemWidth(width);
+  double t = scrubbing_to ? *scrubbing_to : scene.time();
+  const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
+  char format[64];
+  std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback.recorded_until());
+  // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
+  // while: it waits until the bar is let go.
+  if (knob_slider("##scrub", ImGuiDataType_Double, &t, &start, &end, format, ImGuiSliderFlags_None, controls, "scrub")) {
+    if (t >= scene.time() && !scrubbing_to) {
+      playback.scrub_to(t);
+    } else {
+      scrubbing_to = t;
+      playback.pause();
+    }
+  }
+  if (ImGui::IsItemDeactivated() && scrubbing_to) {
+    playback.scrub_to(*scrubbing_to);
+    scrubbing_to.reset();
+  }
+  char shown[96];
+  std::snprintf(shown, sizeof shown, format, t);
+  draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+}
+
 void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& playback, const std::string& said,
                         const std::string& room_for, float scale, ImFont* words_font, double& speed_kept,
                         ControlPlaces& controls) {
@@ -47,37 +143,8 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("###transport", nullptr, flags)) {
     const Shape shape = TransportBar::shape(room_for, size.x, scale, words_font);
-    const float button = 80.0f * s;
-    const auto noted_button = [&](const char* label, const char* name) {
-      const bool pressed = ImGui::Button(label, ImVec2(button, 0.0f));
-      remember_item(controls, name);
-      draw::note_text_centred(label, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-      return pressed;
-    };
-    if (noted_button(playback.playing() ? "Pause" : "Play", "play")) playback.toggle();
+    buttons_and_speed(playback, s, speed_kept, controls);
     ImGui::SameLine();
-    if (noted_button("Step", "step")) playback.step_once();
-    ImGui::SameLine();
-    if (noted_button("Reset", "reset")) playback.reset();
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(150.0f * s);
-    float speed = static_cast<float>(playback.speed());
-    const float slowest = static_cast<float>(classroom_state::Playback::slowest), fastest = static_cast<float>(classroom_state::Playback::fastest);
-    if (knob_slider("##speed", ImGuiDataType_Float, &speed, &slowest, &fastest, "speed \u00d7%.2g",
-                    ImGuiSliderFlags_Logarithmic, controls, "speed")) {
-      // Real time is a speed a teacher comes back to: near ×1 (within 10 %) the slider gives
-      // exactly ×1, which a logarithmic slider's pixels otherwise seldom land on.
-      if (std::abs(std::log(speed)) < 0.1f) speed = 1.0f;
-      playback.set_speed(speed);
-      speed_kept = playback.speed();
-    }
-    {
-      char shown[32];
-      std::snprintf(shown, sizeof shown, "speed \u00d7%.2g", static_cast<double>(speed));
-      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-    }
-    ImGui::SameLine();
-    const Scene& scene = playback.lesson().scene();
     // The words on their one line: under the bar, or beside it in the room kept for the run's end
     // notice from the lesson's opening, said or not, so that the bar keeps its width (it shrank
     // as the notice came, its readout moving under the pointer). Longer words are cut to it.
@@ -89,63 +156,11 @@ void TransportBar::draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& p
     const float line = ImGui::GetTextLineHeight();
     const int most_lines = shape.words_below ? 1 : std::clamp(static_cast<int>((size.y - 2.0f * s) / line), 1, 2);
     ImGui::PopFont();
-    ImGui::SetNextItemWidth(std::max(shape.bar, ImGui::GetContentRegionAvail().x - room));
-    double t = scrubbing_to ? *scrubbing_to : scene.time();
-    const double start = 0.0, end = std::max(playback.recorded_until(), scene.frame_step());
-    char format[64];
-    std::snprintf(format, sizeof format, "t = %%.3f s of %.2f s recorded", playback.recorded_until());
-    // Forward is a few steps a frame; back is a replay from t = 0, which on a long run takes a
-    // while: it waits until the bar is let go.
-    if (knob_slider("##scrub", ImGuiDataType_Double, &t, &start, &end, format, ImGuiSliderFlags_None, controls, "scrub")) {
-      if (t >= scene.time() && !scrubbing_to) {
-        playback.scrub_to(t);
-      } else {
-        scrubbing_to = t;
-        playback.pause();
-      }
-    }
-    if (ImGui::IsItemDeactivated() && scrubbing_to) {
-      playback.scrub_to(*scrubbing_to);
-      scrubbing_to.reset();
-    }
-    {
-      char shown[96];
-      std::snprintf(shown, sizeof shown, format, t);
-      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-    }
+    time_bar(playback, std::max(shape.bar, ImGui::GetContentRegionAvail().x - room), controls);
     // The words in what the time bar leaves of the line (its own under it).
     if (!shape.words_below) ImGui::SameLine();
     ImGui::PushFont(words_font);
-    const std::vector<std::string> lines = draw::lines_that_fit(said, ImGui::GetContentRegionAvail().x, most_lines);
-    bool cut_and_hovered = false;
-    if (!lines.empty()) {
-      float widest = 0.0f;
-      for (const std::string& words : lines) widest = std::max(widest, ImGui::CalcTextSize(words.c_str()).x);
-      const ImVec2 extent(widest, static_cast<float>(lines.size()) * line);
-      ImVec2 first;
-      if (shape.words_below) {
-        first = ImGui::GetCursorScreenPos();
-        ImGui::Dummy(extent);
-      } else {
-        // Centred in the bar's height: drawn, not laid out as items, so that two lines may use
-        // the bar's padding without making it scroll.
-        first = ImVec2(ImGui::GetCursorScreenPos().x, corner.y + 0.5f * (size.y - extent.y));
-      }
-      ImDrawList* drawing = ImGui::GetWindowDrawList();
-      const ImU32 colour = ImGui::GetColorU32(ImGuiCol_TextDisabled);
-      for (std::size_t i = 0; i < lines.size(); ++i) {
-        const ImVec2 at(first.x, first.y + static_cast<float>(i) * line);
-        drawing->AddText(at, colour, lines[i].c_str());
-        draw::note_text_in(lines[i].c_str(), at, ImRect(corner, ImVec2(corner.x + size.x, corner.y + size.y)));
-      }
-      // Cut or not, told word by word: the lines join their words with one space where the
-      // notices were joined with two.
-      std::string shown, whole;
-      for (const std::string& words : lines) shown += (shown.empty() ? "" : " ") + words;
-      for (const std::string& words : draw::lines_that_fit(said, INFINITY, 1)) whole += words;
-      cut_and_hovered = shown != whole && ImGui::IsWindowHovered() &&
-                        ImGui::IsMouseHoveringRect(first, ImVec2(first.x + extent.x, first.y + extent.y));
-    }
+    const bool cut_and_hovered = notice_lines(said, shape.words_below, most_lines, corner, size);
     ImGui::PopFont();
     if (cut_and_hovered) {
       // In the window's own font, wrapped at half the screen: one line of a long notice ran past

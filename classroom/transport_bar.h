@@ -37,6 +37,11 @@ struct TransportBar {
   // opened in this session).
   void draw(ImVec2 corner, ImVec2 size, classroom_state::Playback& playback, const std::string& said, const std::string& room_for,
             float scale, ImFont* words_font, double& speed_kept, ControlPlaces& controls);
+
+ private:
+  // The time bar through the recorded run, `width` wide: dragged forward it plays on to the
+  // time; dragged back it waits until let go, then replays from t = 0 (scrubbing_to).
+  void time_bar(classroom_state::Playback& playback, float width, ControlPlaces& controls);
 };
 
 }  // namespace frictionlab::classroom
