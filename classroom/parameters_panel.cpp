@@ -323,27 +323,111 @@ void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const Parameter
   ImGui::PopID();
 }
 
-void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x,
-                                    float slider_x, float value_x, float reset_x, const ParametersOnShow& on_show,
-                                    ControlPlaces& controls) {
-  const std::string& name = parameter.name;
-  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+namespace {
+
+// A control's name, from `label_x` (0: the row's start), ending before its slider at `slider_x`
+// from the panel's edge; hovered, the parameter's words, name, range and where the script sets it.
+void name_label(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x) {
   // The second control of a row goes on the same line, from its own start.
   if (label_x > 0.0f) ImGui::SameLine(label_x);
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(label.c_str());
-  {
-    // The slider starts at slider_x from the panel's edge: the name must end before it.
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    draw::note_text_in(label.c_str(), min, ImRect(min, ImVec2(ImGui::GetWindowPos().x + slider_x, max.y)));
-  }
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  draw::note_text_in(label.c_str(), min, ImRect(min, ImVec2(ImGui::GetWindowPos().x + slider_x, max.y)));
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), name.c_str(),
+    ImGui::SetTooltip("%s (%s)\nfrom %s to %s%s; the script gives %s\n%s", parameter.text.c_str(), parameter.name.c_str(),
                       validation::exact_text(parameter.min).c_str(), validation::exact_text(parameter.max).c_str(),
                       parameter.unit.empty() ? "" : (" " + parameter.unit).c_str(),
                       validation::exact_text(parameter.default_value).c_str(), parameter.declared_at.c_str());
   }
-  if (on_show.mystery && on_show.mystery->hides(name)) {
+}
+
+}  // namespace
+
+void ParametersPanel::choice_list(const lessons::Parameter& parameter, ControlPlaces& controls) {
+  const std::string& chosen = parameter.choices[static_cast<std::size_t>(parameter.value)];
+  const bool open = ImGui::BeginCombo("##choice", chosen.c_str());
+  note_combo(chosen.c_str());
+  if (open) {
+    for (std::size_t place = 0; place < parameter.choices.size(); ++place) {
+      const std::string& choice = parameter.choices[place];
+      if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) {
+        asked.push_back({parameter.name, {"", static_cast<double>(place)}});
+      }
+      remember_item(controls, parameter.name + " choice " + choice);
+    }
+    ImGui::EndCombo();
+  }
+  remember_item(controls, parameter.name + " slider");
+}
+
+void ParametersPanel::value_slider(const lessons::Parameter& parameter, ControlPlaces& controls) {
+  const std::string& name = parameter.name;
+  const bool sliding_this = sliding && sliding->first == name;
+  double value = sliding_this ? sliding->second : parameter.value;
+  // A unit is text, not format: a script's "%" is written "%%".
+  std::string unit;
+  for (const char c : parameter.unit) unit += c == '%' ? std::string("%%") : std::string(1, c);
+  const std::string format = "%.3g" + (unit.empty() ? "" : " " + unit);
+  // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
+  const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
+  const bool moved = knob_slider("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max, format.c_str(),
+                                 wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None, controls, name + " slider");
+  {
+    char shown[96];
+    std::snprintf(shown, sizeof shown, format.c_str(), value);
+    draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
+  }
+  if (moved) {
+    // A value the scene is built from restarts the lesson: wait until the slider is let go.
+    if (parameter.structural) {
+      sliding = {name, value};
+    } else {
+      asked.push_back({name, {"", value}});
+    }
+  }
+  if (ImGui::IsItemDeactivated() && sliding && sliding->first == name) {
+    asked.push_back({name, {"", sliding->second}});
+    sliding.reset();
+  }
+}
+
+void ParametersPanel::typed_value(const lessons::Parameter& parameter, ControlPlaces& controls) {
+  char typed[64];
+  std::snprintf(typed, sizeof typed, "%s", lessons::parameter_text(parameter).c_str());
+  // A number, read here (to say why "0,5" is refused): no blank joins it, and Space ends the
+  // typing as Enter does and plays (classroom/text_boxes.h).
+  if (ImGui::InputText("##value", typed, sizeof typed,
+                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
+                           ImGuiInputTextFlags_CharsNoBlank)) {
+    asked.push_back({parameter.name, {typed, std::nullopt}});
+  }
+  takes_a_number();
+  remember_item(controls, parameter.name + " value");
+  const ImVec2 padding = ImGui::GetStyle().FramePadding;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  draw::note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
+}
+
+void ParametersPanel::reset_button(const lessons::Parameter& parameter, ControlPlaces& controls) {
+  ImGui::BeginDisabled(parameter.value == parameter.default_value);
+  if (ImGui::Button("\u21ba", ImVec2(ImGui::GetFrameHeight(), 0.0f))) {
+    asked.push_back({parameter.name, {"", parameter.default_value}});  // a choice's place, as its value is
+  }
+  ImGui::EndDisabled();
+  remember_item(controls, parameter.name + " reset");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Back to the script's value, %s", validation::exact_text(parameter.default_value).c_str());
+  }
+}
+
+void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x,
+                                    float slider_x, float value_x, float reset_x, const ParametersOnShow& on_show,
+                                    ControlPlaces& controls) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  name_label(parameter, label, label_x, slider_x);
+  if (on_show.mystery && on_show.mystery->hides(parameter.name)) {
     // No slider, box or reset: the value is for the class to measure. A row of two has room for "?" only.
     const char* hidden = value_x == reset_x ? "?" : draw::hidden_value_text;
     ImGui::SameLine(slider_x);
@@ -351,87 +435,22 @@ void ParametersPanel::parameter_row(const lessons::Parameter& parameter, const s
     draw::note_text(hidden);
     return;
   }
-
   ImGui::SameLine(slider_x);
   if (parameter.is_choice()) {
     // A choice has no number to type: its list takes the box's place too.
     ImGui::SetNextItemWidth(reset_x - spacing - slider_x);
-    const std::string& chosen = parameter.choices[static_cast<std::size_t>(parameter.value)];
-    const bool open = ImGui::BeginCombo("##choice", chosen.c_str());
-    note_combo(chosen.c_str());
-    if (open) {
-      for (std::size_t place = 0; place < parameter.choices.size(); ++place) {
-        const std::string& choice = parameter.choices[place];
-        if (ImGui::Selectable(choice.c_str(), choice == chosen) && choice != chosen) {
-          asked.push_back({name, {"", static_cast<double>(place)}});
-        }
-        remember_item(controls, name + " choice " + choice);
-      }
-      ImGui::EndCombo();
-    }
-    remember_item(controls, name + " slider");
+    choice_list(parameter, controls);
   } else {
     ImGui::SetNextItemWidth(value_x - spacing - slider_x);
-    const bool slidingthis = sliding && sliding->first == name;
-    double value = slidingthis ? sliding->second : parameter.value;
-    // A unit is text, not format: a script's "%" is written "%%".
-    std::string unit;
-    for (const char c : parameter.unit) unit += c == '%' ? std::string("%%") : std::string(1, c);
-    const std::string format = "%.3g" + (unit.empty() ? "" : " " + unit);
-    // A wide range (0 to 1000 N·s/m) is easier to set on a logarithmic scale.
-    const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
-    const bool moved = knob_slider("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max, format.c_str(),
-                                   wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None, controls, name + " slider");
-    {
-      char shown[96];
-      std::snprintf(shown, sizeof shown, format.c_str(), value);
-      draw::note_text_centred(shown, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax()));
-    }
-    if (moved) {
-      // A value the scene is built from restarts the lesson: wait until the slider is let go.
-      if (parameter.structural) {
-        sliding = {name, value};
-      } else {
-        asked.push_back({name, {"", value}});
-      }
-    }
-    if (ImGui::IsItemDeactivated() && sliding && sliding->first == name) {
-      asked.push_back({name, {"", sliding->second}});
-      sliding.reset();
-    }
+    value_slider(parameter, controls);
     if (value_x < reset_x) {
-    ImGui::SameLine(value_x);
-    ImGui::SetNextItemWidth(reset_x - spacing - value_x);
-    char typed[64];
-    std::snprintf(typed, sizeof typed, "%s", lessons::parameter_text(parameter).c_str());
-    // A number, read here (to say why "0,5" is refused): no blank joins it, and Space ends the
-    // typing as Enter does and plays (classroom/text_boxes.h).
-    if (ImGui::InputText("##value", typed, sizeof typed,
-                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
-                             ImGuiInputTextFlags_CharsNoBlank)) {
-      asked.push_back({name, {typed, std::nullopt}});
-    }
-    takes_a_number();
-    remember_item(controls, name + " value");
-    {
-      const ImVec2 padding = ImGui::GetStyle().FramePadding;
-      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      draw::note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
+      ImGui::SameLine(value_x);
+      ImGui::SetNextItemWidth(reset_x - spacing - value_x);
+      typed_value(parameter, controls);
     }
   }
-
   ImGui::SameLine(reset_x);
-  ImGui::BeginDisabled(parameter.value == parameter.default_value);
-  if (ImGui::Button("\u21ba", ImVec2(ImGui::GetFrameHeight(), 0.0f))) {
-    asked.push_back({name, {"", parameter.default_value}});  // a choice's place, as its value is
-  }
-  ImGui::EndDisabled();
-  remember_item(controls, name + " reset");
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("Back to the script's value, %s", validation::exact_text(parameter.default_value).c_str());
-  }
+  reset_button(parameter, controls);
 }
 
 }  // namespace frictionlab::classroom

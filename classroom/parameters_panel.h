@@ -90,6 +90,12 @@ struct ParametersPanel {
   // value (none when value_x is reset_x) and its reset.
   void parameter_row(const lessons::Parameter& parameter, const std::string& label, float label_x, float slider_x,
                      float value_x, float reset_x, const ParametersOnShow& on_show, ControlPlaces& controls);
+  // parameter_row's parts, each at the place and width set before it: a choice's list, a
+  // number's slider (a structural one asks once let go), the box for a typed value, the reset.
+  void choice_list(const lessons::Parameter& parameter, ControlPlaces& controls);
+  void value_slider(const lessons::Parameter& parameter, ControlPlaces& controls);
+  void typed_value(const lessons::Parameter& parameter, ControlPlaces& controls);
+  void reset_button(const lessons::Parameter& parameter, ControlPlaces& controls);
   void preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls);
 };
 
