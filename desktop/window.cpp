@@ -128,6 +128,69 @@ struct FullScreen {
   }
 };
 
+// Paused and untouched, the picture cannot change: sleeps until input, waking four times a second
+// so the watchers see a saved script. True where this turn draws a frame: for input or for what
+// the watchers found. `last` is the wall clock's, moved past the sleep.
+bool slept_until_something_came(classroom::Classroom& classroom, Listeners& listeners, classroom::FramePacing& pacing,
+                                double& last) {
+  listeners.event = false;
+  const double asleep_from = glfwGetTime();
+  glfwWaitEventsTimeout(0.25);
+  // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
+  last = glfwGetTime();
+  const bool found = classroom.waited(last - asleep_from);
+  if (listeners.event) {
+    pacing.input();
+    return true;
+  }
+  return pacing.draw_on_clock(found);
+}
+
+// One frame of the classroom, `wall` seconds after the last, into the window's `width` × `height`
+// pixels; its title follows the lesson's (`shown_title`, what it shows now).
+void draw_frame(classroom::Classroom& classroom, draw::ImGuiHost& host, Listeners& listeners, classroom::FramePacing& pacing,
+                GLFWwindow* window, int width, int height, double wall, std::string& shown_title) {
+  const classroom::WindowSettings& settings = classroom.window_settings();
+  host.make_current();
+  const draw::Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
+                                          settings.theme);
+  ImGui_ImplGlfw_NewFrame();
+  listeners.taps.hold(ImGui::GetIO());
+  host.begin_frame();
+  classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
+  // The lesson's title, and whether a surface is a mystery (never its values).
+  if (std::string title = classroom.window_title(); title != shown_title) {
+    glfwSetWindowTitle(window, title.c_str());
+    shown_title = std::move(title);
+  }
+  glViewport(0, 0, width, height);
+  const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
+  glClearColor(clear.x, clear.y, clear.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  host.end_frame();
+  pacing.drawn(classroom.idle());
+  listeners.taps.release(ImGui::GetIO(), [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; });
+}
+
+// The frame just drawn written to PNG where one was asked for: by the classroom (Ctrl+S; a
+// failure is told in the window), or by the command line's --screenshot once `frames_left`
+// frames are drawn (a failure ends the run). True when that last one is written: the run is over.
+bool took_screenshot(classroom::Classroom& classroom, const WindowRun& run, int& frames_left, int width, int height) {
+  std::optional<std::string> screenshot = classroom.take_screenshot_request();
+  if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
+  if (!screenshot) return false;
+  glReadBuffer(GL_BACK);
+  std::string error;
+  try {
+    write_png(draw::read_framebuffer(width, height), *screenshot);
+  } catch (const std::exception& failure) {
+    error = failure.what();
+    if (frames_left == 0) throw;
+  }
+  classroom.screenshot_done(*screenshot, error);
+  return frames_left == 0;
+}
+
 }  // namespace
 
 void run_window(classroom::Classroom& classroom, const WindowRun& run) {
@@ -152,20 +215,8 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
   classroom::FramePacing pacing;
   std::string shown_title = "FrictionLab";
   while (!glfwWindowShouldClose(window.get()) && !classroom.quit_requested()) {
-    // Paused and untouched, the picture cannot change: sleep until input, waking four times a
-    // second so the watchers see a saved script; a frame only for input or what they found.
     if (classroom.idle() && frames_left < 0 && pacing.may_sleep()) {
-      listeners.event = false;
-      const double asleep_from = glfwGetTime();
-      glfwWaitEventsTimeout(0.25);
-      // Paused time is no time to catch up on: Space pressed now starts from the frame shown.
-      last = glfwGetTime();
-      const bool found = classroom.waited(last - asleep_from);
-      if (listeners.event) {
-        pacing.input();
-      } else if (!pacing.draw_on_clock(found)) {
-        continue;
-      }
+      if (!slept_until_something_came(classroom, listeners, pacing, last)) continue;
     } else {
       glfwPollEvents();
     }
@@ -181,41 +232,8 @@ void run_window(classroom::Classroom& classroom, const WindowRun& run) {
     // A stall (a debugger, a suspended laptop) must not ask the lesson for minutes at once.
     const double wall = run.screenshot.empty() ? std::clamp(now - last, 0.0, 0.25) : 0.0;
     last = now;
-
-    host.make_current();
-    const draw::Fonts& fonts = host.prepare(classroom.ui_scale(ImVec2(static_cast<float>(width), static_cast<float>(height))),
-                                      settings.theme);
-    ImGui_ImplGlfw_NewFrame();
-    listeners.taps.hold(ImGui::GetIO());
-    host.begin_frame();
-    classroom.frame(fonts, ImGui::GetIO().DisplaySize, wall);
-    // The lesson's title, and whether a surface is a mystery (never its values).
-    if (std::string title = classroom.window_title(); title != shown_title) {
-      glfwSetWindowTitle(window.get(), title.c_str());
-      shown_title = std::move(title);
-    }
-    glViewport(0, 0, width, height);
-    const ImVec4 clear = ImGui::ColorConvertU32ToFloat4(theme(settings.theme).background);
-    glClearColor(clear.x, clear.y, clear.z, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    host.end_frame();
-    pacing.drawn(classroom.idle());
-    listeners.taps.release(ImGui::GetIO(), [&](int key) { return glfwGetKey(window.get(), key) == GLFW_PRESS; });
-
-    std::optional<std::string> screenshot = classroom.take_screenshot_request();
-    if (frames_left > 0 && --frames_left == 0) screenshot = run.screenshot;
-    if (screenshot) {
-      glReadBuffer(GL_BACK);
-      std::string error;
-      try {
-        write_png(draw::read_framebuffer(width, height), *screenshot);
-      } catch (const std::exception& failure) {
-        error = failure.what();
-        if (frames_left == 0) throw;
-      }
-      classroom.screenshot_done(*screenshot, error);
-      if (frames_left == 0) break;
-    }
+    draw_frame(classroom, host, listeners, pacing, window.get(), width, height, wall, shown_title);
+    if (took_screenshot(classroom, run, frames_left, width, height)) break;
     if (classroom.take_full_screen_toggle()) settings.full_screen = !settings.full_screen;
     full_screen.follow(window.get(), settings.full_screen);
     glfwSwapBuffers(window.get());
