@@ -103,6 +103,84 @@ bool is_setup_file(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// "set NAME = VALUE": each parameter once.
+void read_set_line(PreparedSetup& setup, const At& at, const std::string& rest) {
+  const std::size_t equals = rest.find('=');
+  const std::string name = trimmed(rest.substr(0, equals));
+  const std::string value = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
+  if (equals == std::string::npos || name.empty() || value.empty()) at.fail("set " + rest + ": write it as set NAME = VALUE, as in set mass = 1.5");
+  for (const PreparedSetup::Value& given : setup.values) {
+    if (given.name == name) {
+      at.fail("set " + name + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
+              "); give each parameter once");
+    }
+  }
+  setup.values.push_back({name, value, at.line});
+}
+
+// "lock NAME, NAME, ...": one line, names between commas.
+void read_lock_line(PreparedSetup& setup, const At& at, const std::string& rest) {
+  once(setup.lock_line, at, "lock", "list every control on one lock line");
+  std::stringstream names(rest);
+  std::string name;
+  while (std::getline(names, name, ',')) {
+    name = trimmed(name);
+    if (name.empty()) at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
+    setup.lock.push_back(name);
+  }
+  if (rest.back() == ',') at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
+}
+
+// "mystery MATERIAL/MATERIAL seed N": one pair.
+void read_mystery_line(PreparedSetup& setup, const At& at, const std::string& rest) {
+  once(setup.mystery_line, at, "mystery", "a setup has one mystery pair");
+  std::istringstream parts(rest);
+  std::string pair, seed_word, seed, more;
+  parts >> pair >> seed_word >> seed;
+  if (pair.find('/') == std::string::npos || seed_word != "seed" || seed.empty() || (parts >> more)) {
+    at.fail("mystery " + rest + ": write it as mystery MATERIAL/MATERIAL seed N, as in mystery aluminium/wood seed 42");
+  }
+  try {
+    setup.mystery = MysteryChoice{pair, parse_mystery_seed("seed", seed)};
+  } catch (const InvalidInput& error) {
+    at.fail(error.what());
+  }
+}
+
+// "predict ROW = ANSWER": each row once.
+void read_predict_line(PreparedSetup& setup, const At& at, const std::string& rest) {
+  // At the last '=': a row's name may hold one ("μk = tan θ"); a number or a choice word does not.
+  const std::size_t equals = rest.rfind('=');
+  const std::string row = trimmed(rest.substr(0, equals));
+  const std::string answer = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
+  if (equals == std::string::npos || row.empty() || answer.empty()) {
+    at.fail("predict " + rest + ": write it as predict ROW = ANSWER, as in predict breakaway force = 4.5");
+  }
+  for (const PreparedSetup::Answer& given : setup.answers) {
+    if (given.row == row) {
+      at.fail("predict " + row + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
+              "); give each prediction once");
+    }
+  }
+  setup.answers.push_back({row, answer, at.line});
+}
+
+// A line's first word, refused unless it is one a setup has.
+std::string line_word(const std::string& line, const At& at) {
+  const std::string word = line.substr(0, line.find_first_of(" \t\r"));
+  if (std::find_if(std::begin(line_words), std::end(line_words), [&](const char* known) { return word == known; }) ==
+      std::end(line_words)) {
+    std::string words;
+    for (const char* known : line_words) words += (words.empty() ? "" : ", ") + std::string(known);
+    at.fail("'" + word + "' is not a line a setup has; its lines: " + words);
+  }
+  return word;
+}
+
+}  // namespace
+
 PreparedSetup parse_setup(const std::string& text, const std::string& path) {
   PreparedSetup setup;
   int hz_line = 0, substeps_line = 0, friction_line = 0, predictions_line = 0, theory_line = 0;
@@ -113,72 +191,23 @@ PreparedSetup parse_setup(const std::string& text, const std::string& path) {
     const std::string line = trimmed(raw);
     if (line.empty() || line[0] == '#') continue;
     const At at{path, number_of_line};
-    const std::size_t space = line.find_first_of(" \t\r");
-    const std::string word = line.substr(0, space);
-    const std::string rest = space == std::string::npos ? "" : trimmed(line.substr(space));
-    if (std::find_if(std::begin(line_words), std::end(line_words), [&](const char* known) { return word == known; }) ==
-        std::end(line_words)) {
-      std::string words;
-      for (const char* known : line_words) words += (words.empty() ? "" : ", ") + std::string(known);
-      at.fail("'" + word + "' is not a line a setup has; its lines: " + words);
-    }
+    const std::string word = line_word(line, at);
+    const std::string rest = word.size() == line.size() ? "" : trimmed(line.substr(word.size()));
     if (rest.empty()) at.fail(word + " needs what it sets, as in: " + example_of(word));
     if (word == "lesson") {
       once(setup.lesson_line, at, "lesson", "a setup opens one lesson");
       setup.lesson = rest;
     } else if (word == "set") {
-      const std::size_t equals = rest.find('=');
-      const std::string name = trimmed(rest.substr(0, equals));
-      const std::string value = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
-      if (equals == std::string::npos || name.empty() || value.empty()) at.fail("set " + rest + ": write it as set NAME = VALUE, as in set mass = 1.5");
-      for (const PreparedSetup::Value& given : setup.values) {
-        if (given.name == name) {
-          at.fail("set " + name + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
-                  "); give each parameter once");
-        }
-      }
-      setup.values.push_back({name, value, at.line});
+      read_set_line(setup, at, rest);
     } else if (word == "lock") {
-      once(setup.lock_line, at, "lock", "list every control on one lock line");
-      std::stringstream names(rest);
-      std::string name;
-      while (std::getline(names, name, ',')) {
-        name = trimmed(name);
-        if (name.empty()) at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
-        setup.lock.push_back(name);
-      }
-      if (rest.back() == ',') at.fail("lock " + rest + ": give names separated by commas, as in lock mu_s, mu_k");
+      read_lock_line(setup, at, rest);
     } else if (word == "mystery") {
-      once(setup.mystery_line, at, "mystery", "a setup has one mystery pair");
-      std::istringstream parts(rest);
-      std::string pair, seed_word, seed, more;
-      parts >> pair >> seed_word >> seed;
-      if (pair.find('/') == std::string::npos || seed_word != "seed" || seed.empty() || (parts >> more)) {
-        at.fail("mystery " + rest + ": write it as mystery MATERIAL/MATERIAL seed N, as in mystery aluminium/wood seed 42");
-      }
-      try {
-        setup.mystery = MysteryChoice{pair, parse_mystery_seed("seed", seed)};
-      } catch (const InvalidInput& error) {
-        at.fail(error.what());
-      }
+      read_mystery_line(setup, at, rest);
     } else if (word == "hz") {
       once(hz_line, at, "hz", "give the step rate once");
       setup.settings.hz = number(at, "hz", rest, 1.0, 100000.0, " steps per second");
     } else if (word == "predict") {
-      // At the last '=': a row's name may hold one ("μk = tan θ"); a number or a choice word does not.
-      const std::size_t equals = rest.rfind('=');
-      const std::string row = trimmed(rest.substr(0, equals));
-      const std::string answer = equals == std::string::npos ? "" : trimmed(rest.substr(equals + 1));
-      if (equals == std::string::npos || row.empty() || answer.empty()) {
-        at.fail("predict " + rest + ": write it as predict ROW = ANSWER, as in predict breakaway force = 4.5");
-      }
-      for (const PreparedSetup::Answer& given : setup.answers) {
-        if (given.row == row) {
-          at.fail("predict " + row + " given twice (lines " + std::to_string(given.line) + " and " + std::to_string(at.line) +
-                  "); give each prediction once");
-        }
-      }
-      setup.answers.push_back({row, answer, at.line});
+      read_predict_line(setup, at, rest);
     } else if (word == "predictions") {
       once(predictions_line, at, "predictions", "say once whether the class is asked");
       if (rest != "on" && rest != "off") {
