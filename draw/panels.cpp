@@ -346,108 +346,119 @@ void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 co
   end_panel();
 }
 
+namespace {
+
+// The theory table's columns: numbers only where each row's name stands above them
+// (`names_above`), else a name column first; the class's answers and the error where shown.
+void setup_theory_columns(const TheoryCells& table, bool names_above) {
+  const float* widest = table.widest;
+  if (names_above) {
+    // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
+    ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
+    if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
+    if (table.error_column) {
+      ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
+      ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
+    } else {
+      ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthStretch);
+    }
+  } else {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("theory");
+    if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
+    ImGui::TableSetupColumn("measured");
+    if (table.error_column) ImGui::TableSetupColumn(table.error_heading.c_str());
+  }
+}
+
+// A verdict or an error in its colour: grey for a hand's pull (no theory to judge it by), else
+// good or bad.
+void judged_text(const std::string& text, const TheoryCells::Cells& cell, const Theme& theme) {
+  if (cell.hand_pulled) {
+    ImGui::TextDisabled("%s", text.c_str());
+  } else {
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", text.c_str());
+  }
+  note_text(text.c_str());
+}
+
+// One expectation's row (two, its name above, where `names_above`): its name, theory, the
+// class's answer, what was measured with its verdict, and the error.
+void theory_row(const std::string& name, const TheoryCells::Cells& cell, const TheoryCells& table, const Theme& theme,
+                bool names_above, float table_width) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  if (names_above) {
+    // The name across the whole row: drawn from the first cell, wrapped at the table's edge.
+    const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
+    shown_text(name.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+  } else {
+    ImGui::TextWrapped("%s", name.c_str());
+    note_text(name.c_str());
+    ImGui::TableNextColumn();
+  }
+  shown_text(cell.theory.c_str());
+  ImGui::TableNextColumn();
+  if (table.class_column) {
+    if (cell.answer_close) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
+    if (!cell.answer.empty()) shown_text(cell.answer.c_str());
+    if (cell.answer_close) ImGui::PopStyleColor();
+    ImGui::TableNextColumn();
+  }
+  if (!cell.measured_yet) {
+    // "not yet", or a failed row's "?" (as the class's table beside it shows it).
+    ImGui::TextDisabled("%s", cell.measured.c_str());
+    note_text(cell.measured.c_str());
+    ImGui::TableNextColumn();
+    return;
+  }
+  shown_text(cell.measured.c_str());
+  if (!cell.verdict.empty()) {
+    ImGui::SameLine();
+    judged_text(cell.verdict, cell, theme);
+  }
+  if (!table.error_column) return;
+  ImGui::TableNextColumn();
+  if (!cell.error.empty()) judged_text(cell.error, cell, theme);
+}
+
+}  // namespace
+
 void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const Theme& theme, const std::string& error,
                      const std::string& caveat, bool predictions_hidden, const ClassAnswers& answers, TheoryColumns columns) {
-  {
-    ImGui::PushTextWrapPos(0.0f);
-    if (!error.empty()) {
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme.bad), "%s", error.c_str());
-      note_text(error.c_str());
-    }
-    if (!caveat.empty()) {
-      ImGui::TextDisabled("%s", caveat.c_str());
-      note_text(caveat.c_str());
-    }
-    ImGui::PopTextWrapPos();
-    if (rows.empty() && !error.empty()) return;
-    if (rows.empty()) {
-      const char* none = "This lesson states no expectations (expect{} in its script).";
-      ImGui::TextDisabled("%s", none);
-      note_text(none);
-      return;
-    }
-    const float table_width = ImGui::GetContentRegionAvail().x;
-    const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns, answers);
-    const std::vector<TheoryCells::Cells>& cells = table.cells;
-    const int numbers = table.error_column || table.class_column ? 3 : 2;
-    const float* widest = table.widest;
-    const float padding = 2.0f * ImGui::GetStyle().CellPadding.x;
-    const bool names_above = table.names_above(table_width);
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
-    // A name above its numbers spans the row: the cells must not clip it.
-    if (ImGui::BeginTable("rows", names_above ? numbers : numbers + 1, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
-      // The numbers keep their width; a long name wraps.
-      if (names_above) {
-        // Widths from the numbers alone: the names, drawn in the first cell, must not widen it.
-        ImGui::TableSetupColumn("theory", ImGuiTableColumnFlags_WidthFixed, widest[0]);
-        if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
-        if (table.error_column) {
-          ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthFixed, widest[1]);
-          ImGui::TableSetupColumn(table.error_heading.c_str(), ImGuiTableColumnFlags_WidthStretch);
-        } else {
-          ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthStretch);
-        }
-      } else {
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("theory");
-        if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
-        ImGui::TableSetupColumn("measured");
-        if (table.error_column) ImGui::TableSetupColumn(table.error_heading.c_str());
-      }
-      noted_headers(names_above ? numbers : numbers + 1);
-      for (std::size_t i = 0; i < rows.size(); ++i) {
-        const TheoryCells::Cells& cell = cells[i];
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        if (names_above) {
-          // The name across the whole row: drawn from the first cell, wrapped at the table's edge.
-          ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + table_width - padding);
-          shown_text(rows[i].name.c_str());
-          ImGui::PopTextWrapPos();
-          ImGui::TableNextRow();
-          ImGui::TableNextColumn();
-        } else {
-          ImGui::TextWrapped("%s", rows[i].name.c_str());
-          note_text(rows[i].name.c_str());
-          ImGui::TableNextColumn();
-        }
-        shown_text(cell.theory.c_str());
-        ImGui::TableNextColumn();
-        if (table.class_column) {
-          if (cell.answer_close) ImGui::PushStyleColor(ImGuiCol_Text, theme.good);
-          if (!cell.answer.empty()) shown_text(cell.answer.c_str());
-          if (cell.answer_close) ImGui::PopStyleColor();
-          ImGui::TableNextColumn();
-        }
-        if (!cell.measured_yet) {
-          // "not yet", or a failed row's "?" (as the class's table beside it shows it).
-          ImGui::TextDisabled("%s", cell.measured.c_str());
-          note_text(cell.measured.c_str());
-          ImGui::TableNextColumn();
-          continue;
-        }
-        shown_text(cell.measured.c_str());
-        if (!cell.verdict.empty()) {
-          ImGui::SameLine();
-          if (cell.hand_pulled) {
-            ImGui::TextDisabled("%s", cell.verdict.c_str());
-          } else {
-            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.verdict.c_str());
-          }
-          note_text(cell.verdict.c_str());
-        }
-        if (!table.error_column) continue;
-        ImGui::TableNextColumn();
-        if (cell.error.empty()) continue;
-        if (cell.hand_pulled) {
-          ImGui::TextDisabled("%s", cell.error.c_str());
-        } else {
-          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(cell.passes ? theme.good : theme.bad), "%s", cell.error.c_str());
-        }
-        note_text(cell.error.c_str());
-      }
-      ImGui::EndTable();
-    }
+  ImGui::PushTextWrapPos(0.0f);
+  if (!error.empty()) {
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme.bad), "%s", error.c_str());
+    note_text(error.c_str());
+  }
+  if (!caveat.empty()) {
+    ImGui::TextDisabled("%s", caveat.c_str());
+    note_text(caveat.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  if (rows.empty() && !error.empty()) return;
+  if (rows.empty()) {
+    const char* none = "This lesson states no expectations (expect{} in its script).";
+    ImGui::TextDisabled("%s", none);
+    note_text(none);
+    return;
+  }
+  const float table_width = ImGui::GetContentRegionAvail().x;
+  const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns, answers);
+  const int numbers = table.error_column || table.class_column ? 3 : 2;
+  const bool names_above = table.names_above(table_width);
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
+  // A name above its numbers spans the row: the cells must not clip it.
+  if (ImGui::BeginTable("rows", names_above ? numbers : numbers + 1, names_above ? flags | ImGuiTableFlags_NoClip : flags)) {
+    // The numbers keep their width; a long name wraps.
+    setup_theory_columns(table, names_above);
+    noted_headers(names_above ? numbers : numbers + 1);
+    for (std::size_t i = 0; i < rows.size(); ++i) theory_row(rows[i].name, table.cells[i], table, theme, names_above, table_width);
+    ImGui::EndTable();
   }
 }
 
