@@ -149,6 +149,11 @@ local function seen(speed_probe, epsilon)
   for i = 3, n do fastest = math.max(fastest, math.abs(speeds[i])) end
   local shrinking = swing(3, n) <= first and fastest < epsilon and late < middle
   if late <= 1e-3 * epsilon or shrinking then return "settles" end
+  -- On the law's linear branch a settling swing shrinks at every step; one still growing from
+  -- two steps back to the last is no settling, however much larger it was mid-run (drag b
+  -- bounds a swing past the boundary, which may shrink a while and grow again: b = 375 N·s²/m²,
+  -- ε = 0.18 m/s at 60 Hz, 0.12 m/s off the creep mid-run, 0.022 at the end and growing).
+  if n >= 3 and math.abs(speeds[n] - steady) > math.abs(speeds[n - 2] - steady) then return "jitters" end
   return (late >= 0.5 * middle or late > first) and "jitters" or "settles"
 end
 
