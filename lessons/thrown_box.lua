@@ -107,13 +107,13 @@ local function no_single_impact()
   if faster_than_a_quarter_turn_a_step(spin) then return faster_than_a_quarter_turn_a_step(spin) end
   if t.corner == "lands flat" then return nil end
   if t.far_end_above_reach <= 0 then return "both corners of a face met in the same step" end
+  if faster_than_a_quarter_turn_a_step(t.spin_after) then return faster_than_a_quarter_turn_a_step(t.spin_after) end
   if t.second_corner_after < 2 * step_length() then
     return string.format("both corners of a face land within two steps (%.1f ms apart)", 1000 * t.second_corner_after)
   end
   if t.solver_swing > 0.5 then
     return string.format("too much friction for the solver to settle: mu_k·|k_tn|/k_nn = %.2f > 0.5", t.solver_swing)
   end
-  return faster_than_a_quarter_turn_a_step(t.spin_after)
 end
 expect { "spin just after the impact", unit = "rad/s",
   predicted = function() return no_single_impact() or throw().spin_after end,
