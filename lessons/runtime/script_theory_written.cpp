@@ -348,6 +348,27 @@ FarEnd far_end_of(const theory::BoxLanding& landing, double width, double height
   return far;
 }
 
+// The ends of the two faces through the landing corner, from the centre at the landing pose
+// (the far end is the lower of them).
+std::array<FarEnd, 2> neighbours_of(const theory::BoxLanding& landing, double width, double height) {
+  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+  const auto corner = [&](double sx, double sy) {
+    FarEnd end;
+    end.x = sx * width * c - sy * height * s, end.y = sx * width * s + sy * height * c;
+    end.rise = end.y - landing.corner_y;
+    return end;
+  };
+  for (const double sx : {-0.5, 0.5}) {
+    for (const double sy : {-0.5, 0.5}) {
+      const FarEnd here = corner(sx, sy);
+      if (std::abs(here.x - landing.corner_x) < 1e-12 && std::abs(here.y - landing.corner_y) < 1e-12) {
+        return {corner(-sx, sy), corner(sx, -sy)};
+      }
+    }
+  }
+  return {FarEnd{}, FarEnd{}};  // (no corner is the landing one: nothing comes down after it)
+}
+
 // How far above reach the lowest corner but the landing one is `late` s after the landing (0 or
 // less: within reach), the box's pose followed exactly: its centre on the parabola, its angle
 // turned by spin·late. The far end's first-order fall is not enough at coarse steps: at 9 Hz the
@@ -629,7 +650,7 @@ int thrown_box(lua_State* state) {
     const ThrownBox box{width, height, mass, speed, spin, centre_height, mu_k, mu_s, restitution, g, clearance, step,
                         drag, landing, inertia, substeps_left_in_frame(landing.time, step, substeps)};
     const FarEnd far = far_end_of(landing, width, height);
-    const double rise = far.rise, far_x = far.x;
+    const double rise = far.rise;
     // Before any impact, a stepped world finds contacts at a step's start, so it first
     // meets the corner at the first step boundary after the landing, the corner sunk into the gap
     // by its fall since, and it finds the far end in the same step if that end has fallen as far
@@ -659,9 +680,19 @@ int thrown_box(lua_State* state) {
     // The far end comes down too soon after the impact (falling at the impact's end speed, and
     // under gravity): within a step or two a stepped world meets both corners in one step, and
     // no single-corner impact describes what it shows.
-    const double far_speed = -(impact.vy + impact.omega * far_x);  // downward, m/s
-    const double far_root = far_speed + std::sqrt(far_speed * far_speed + 2.0 * g * rise);
-    const double second_corner = !on_a_corner || lands_flat ? infinity : far_root > 0.0 ? 2.0 * rise / far_root : infinity;
+    // Either face through the corner may come down: the far end's, or, where the impact turns
+    // the box the other way, the other face's end, higher at the landing but brought down by the
+    // spin (12 Hz with 2 sub-steps: the box 46° over, the far end lifted by -15.9 rad/s, the
+    // other end met a sub-step after the impact, and the world's spin was -3.49 at the frame's
+    // end).
+    double second_corner = infinity;
+    if (on_a_corner && !lands_flat) {
+      for (const FarEnd& end : neighbours_of(landing, width, height)) {
+        const double end_speed = -(impact.vy + impact.omega * end.x);  // downward, m/s
+        const double end_root = end_speed + std::sqrt(end_speed * end_speed + 2.0 * g * std::max(end.rise, 0.0));
+        if (end_root > 0.0) second_corner = std::min(second_corner, 2.0 * std::max(end.rise, 0.0) / end_root);
+      }
+    }
     // (How far above reach the far end is when the corner is met: computed above.)
     const double far_above_reach = on_a_corner && !lands_flat ? reach_gap : infinity;
     // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
