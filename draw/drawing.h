@@ -184,6 +184,8 @@ struct TorqueArc {
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
 // Keeps labels off the arc: its chords, `width` wide, for the label placer.
 void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width);
+// The arc and its head, no value: the world's torques and the legend's key to them.
+void draw_torque_arrow(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, float thickness);
 void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
                  LabelPlacer& labels);
 

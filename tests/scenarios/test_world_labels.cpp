@@ -35,6 +35,38 @@ TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
   EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
 }
 
+// A teacher's trial (issue 31): driven_wheel's motor torque is a curved arrow in the applied
+// forces' colour, and the legend had no key to it: the class did not know what it was. Where a
+// torque acts, the legend keys it, "torque", in the strip (a screen's frame) and in the column (a
+// projector's window); where none acts (push), it does not.
+TEST(WorldLabels, TheLegendKeysATorquesCurvedArrow) {
+  const auto keyed = [](const std::vector<draw::ShownText>& texts) {
+    // The legend's own panel, or the world's whose strip it is (the torque's slider says "torque" too).
+    return std::any_of(texts.begin(), texts.end(), [](const draw::ShownText& text) {
+      return text.text == "torque" && (text.panel.ends_with("###legend") || text.panel.ends_with("###world"));
+    });
+  };
+  draw::HeadlessRenderer renderer(draw::frame_width, draw::frame_height);
+  for (const char* lesson : {"driven_wheel", "push"}) {
+    draw::LessonAt at(lesson, {}, 1.0);
+    draw::FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    EXPECT_EQ(keyed(record.texts), std::string(lesson) == "driven_wheel") << lesson << " in a frame";
+  }
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    if (entry.name != "driven_wheel" && entry.name != "push") continue;
+    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
+    window.run_to(1.0);
+    draw_window_frame(gl, host, window, display);
+    draw::FrameRecord record;
+    draw_window_frame(gl, host, window, display, 0.0, &record);
+    EXPECT_EQ(keyed(record.texts), entry.name == "driven_wheel") << entry.name << " on a projector";
+  }
+}
+
 // Before the first step no contact has been solved: the free-body inset of a block resting on a
 // floor showed its weight and no normal force, unbalanced. At t = 0 it draws the body with no
 // arrows and says when the forces come; after a step, the forces and the net force.
