@@ -70,8 +70,8 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
   // force: each moves half a gap across, keeping its length and direction. The gap grows with the
-  // arrows' thickness (3.5 px times the scale): 9 px apart, a projector's 7 px arrows touched.
-  const float gap = 9.0f * scale;
+  // arrows' thickness (3.5 px times the scale) and clears a head beside a shaft (side_by_side_gap).
+  const float gap = side_by_side_gap(scale);
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     for (std::size_t j = i + 1; j < arrows.size(); ++j) {
       ScreenArrow& p = arrows[i];
