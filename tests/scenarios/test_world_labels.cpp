@@ -67,6 +67,57 @@ TEST(WorldLabels, TheLegendKeysATorquesCurvedArrow) {
   }
 }
 
+// A teacher's projector trial (issue 31): incline's view, framed round the block to keep it
+// min_body_pixels long, cut off the slope's foot and the angle's mark, with the tools on too.
+// The lesson's view is now the whole slope: on a projector at 1920 x 1080, at the default 35 deg,
+// at 10 deg and at 60 deg, tools off and all on (distance marks, speed, stopwatch), at the run's
+// start and end, every corner of the slope is inside what the world shows, and so is the angle's
+// label.
+TEST(WorldLabels, InclinesWholeSlopeAndItsAngleAreInViewOnAProjector) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const char* angle : {"35", "10", "60"}) {
+    for (const bool tools : {false, true}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+      options.overrides["angle"] = angle;
+      options.window.tools.distance_marks = options.window.tools.speed = options.window.tools.stopwatch = tools;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      for (const double t : {0.2, 1.0}) {
+        window.run_to(t);
+        draw_window_frame(gl, host, window, display);
+        draw::FrameRecord record;
+        draw_window_frame(gl, host, window, display, 0.0, &record);
+        const std::string where = std::string(angle) + " deg at " + std::to_string(t) + " s" + (tools ? ", tools on" : "");
+        ASSERT_EQ(record.lanes.size(), 1u) << where;
+        const draw::FrameRecord::Lane& lane = record.lanes.front();
+        const auto inside = [&](ImVec2 p) {
+          return p.x >= lane.shown.x - 0.5f && p.x <= lane.shown.z + 0.5f && p.y >= lane.shown.y - 0.5f && p.y <= lane.shown.w + 0.5f;
+        };
+        const b2Body* slope = window.playback().lesson().scene().body("slope");
+        ASSERT_NE(slope, nullptr);
+        for (const b2Fixture* fixture = slope->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+          ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon);
+          const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+          for (int k = 0; k < shape->m_count; ++k) {
+            const ImVec2 corner = lane.camera.to_screen(slope->GetWorldPoint(shape->m_vertices[k]));
+            EXPECT_TRUE(inside(corner)) << where << ": the slope's corner at (" << corner.x << ", " << corner.y
+                                        << ") px, the world shows " << lane.shown.x << " to " << lane.shown.z << " by "
+                                        << lane.shown.y << " to " << lane.shown.w;
+          }
+        }
+        bool angle_shown = false;
+        for (std::size_t i = 0; i < lane.texts.size(); ++i) {
+          if (lane.texts[i] != std::string(angle) + "\u00b0") continue;
+          angle_shown = inside(ImVec2(lane.labels[i].x, lane.labels[i].y)) && inside(ImVec2(lane.labels[i].z, lane.labels[i].w));
+        }
+        EXPECT_TRUE(angle_shown) << where << ": the angle's label";
+      }
+    }
+  }
+}
+
 // Before the first step no contact has been solved: the free-body inset of a block resting on a
 // floor showed its weight and no normal force, unbalanced. At t = 0 it draws the body with no
 // arrows and says when the forces come; after a step, the forces and the net force.
