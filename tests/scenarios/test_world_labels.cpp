@@ -118,6 +118,34 @@ TEST(WorldLabels, InclinesWholeSlopeAndItsAngleAreInViewOnAProjector) {
   }
 }
 
+// A teacher's trial (issue 31): pulley's wheel hung over empty space, nothing holding it. It is
+// now held by an arm from the nearest fixed body, the table's corner, to its axle: half way
+// along the line from the corner to the axle, the picture is the outline's ink, not the sky.
+TEST(WorldLabels, APulleyIsHeldByAnArmFromTheTable) {
+  draw::HeadlessRenderer renderer(draw::frame_width, draw::frame_height);
+  draw::LessonAt at("pulley", {}, 0.5);
+  draw::FrameRecord record;
+  const draw::Image image = renderer.render(*at.lesson, at.framing, &record);
+  ASSERT_EQ(at.scene().ropes().size(), 1u);
+  const Rope& rope = at.scene().ropes().front();
+  const b2Vec2 axle = 0.5f * (rope.pulley_a + rope.pulley_b);
+  const b2AABB table = lessons::body_box(at.scene().body("table"));
+  const b2Vec2 corner(table.upperBound.x, table.upperBound.y);
+  ASSERT_GT(axle.x, corner.x) << "the pulley is past the table's edge";
+  const draw::Camera& camera = record.lanes.front().camera;
+  const ImVec2 half_way = camera.to_screen(0.5f * (corner + axle));
+  const std::uint8_t* pixel = image.pixel(static_cast<int>(half_way.x), static_cast<int>(half_way.y));
+  const draw::Theme& theme = draw::theme(draw::ThemeName::light);
+  const ImVec4 outline = ImGui::ColorConvertU32ToFloat4(theme.outline), sky = ImGui::ColorConvertU32ToFloat4(theme.sky);
+  const auto near = [&](const ImVec4& colour) {
+    return std::abs(pixel[0] - 255.0f * colour.x) < 24.0f && std::abs(pixel[1] - 255.0f * colour.y) < 24.0f &&
+           std::abs(pixel[2] - 255.0f * colour.z) < 24.0f;
+  };
+  EXPECT_TRUE(near(outline)) << "at (" << half_way.x << ", " << half_way.y << ") px: " << int(pixel[0]) << ", " << int(pixel[1])
+                             << ", " << int(pixel[2]);
+  EXPECT_FALSE(near(sky));
+}
+
 // Before the first step no contact has been solved: the free-body inset of a block resting on a
 // floor showed its weight and no normal force, unbalanced. At t = 0 it draws the body with no
 // arrows and says when the forces come; after a step, the forces and the net force.
