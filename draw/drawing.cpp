@@ -463,8 +463,7 @@ void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width) {
   for (std::size_t k = 1; k < arc.points.size(); ++k) labels.avoid(DrawnSegment{arc.points[k - 1], arc.points[k], width});
 }
 
-void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
-                 LabelPlacer& labels) {
+void draw_torque_arrow(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, float thickness) {
   draw->AddPolyline(arc.points.data(), static_cast<int>(arc.points.size()), colour, ImDrawFlags_None, thickness);
   // The head, along the arc's last chord.
   const ImVec2 tip = arc.points.back();
@@ -474,6 +473,11 @@ void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* f
   const float head = 3.0f * thickness;
   draw->AddTriangleFilled(add(tip, mul(along, head)), add(tip, mul(across, 0.6f * head)), sub(tip, mul(across, 0.6f * head)),
                           colour);
+}
+
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 LabelPlacer& labels) {
+  draw_torque_arrow(draw, arc, colour, thickness);
   const std::string text = format_quantity(std::abs(arc.torque), "N·m");
   const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);

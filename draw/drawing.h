@@ -184,6 +184,8 @@ struct TorqueArc {
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
 // Keeps labels off the arc: its chords, `width` wide, for the label placer.
 void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width);
+// The arc and its head, no value: the world's torques and the legend's key to them.
+void draw_torque_arrow(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, float thickness);
 void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
                  LabelPlacer& labels);
 
@@ -204,9 +206,6 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
 // thickness long left that shaft one 2 px dash and a gap (the trial after issue 31's first).
 inline float broken_dash(float thickness) { return 0.5f * thickness; }
 inline float broken_gap(float thickness) { return 0.5f * thickness; }
-// A third of the arrow's thickness and at least a pixel and a half: a line a back row sees
-// round the shaft (2.3 px on a projector's 7 px arrows).
-inline float arrow_halo_width(float thickness) { return std::max(1.5f, thickness / 3.0f); }
 // A force's arrow in its kind's colour, with its value in newtons just beyond the tip.
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels);

@@ -21,6 +21,8 @@ constexpr const char* all_arrows = "all arrows";
 // can tell them from the picture alone.
 constexpr const char* drawn_longer = "longer, dashed";
 constexpr const char* to_scale = "to scale";
+// The key to a torque's curved arrow.
+constexpr const char* torque_word = "torque";
 
 }  // namespace
 
@@ -95,6 +97,18 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   for (const auto& [name, body] : scene.bodies()) {
     for (const ForceOnBody& force : forces_on(scene, body)) present[static_cast<int>(force.kind)] = true;
   }
+  // A torque is drawn as a curved arrow in the applied forces' colour (driven_wheel's motor):
+  // keyed as such, or a class does not know what the curved arrow is (a teacher's trial).
+  const bool torque = std::any_of(scene.torques_applied().begin(), scene.torques_applied().end(),
+                                  [](double applied) { return applied != 0.0; });
+  const ImU32 torque_colour = theme.force[static_cast<int>(ForceKind::applied)];
+  // Its key: a small arc where the straight arrows' keys start, its word where theirs go.
+  const auto torque_key = [&](ImVec2 at) {
+    const float radius = 0.38f * font->FontSize;
+    draw_torque_arrow(draw, torque_arc(ImVec2(at.x + 13.0f * s, at.y + 0.5f * font->FontSize), radius, 1.0), torque_colour,
+                      2.0f * s);
+    text_at(ImVec2(at.x + 32.0f * s, at.y), torque_word);
+  };
   // A column (projector mode, beside the plots) is taller than wide; a strip, wider than tall.
   const bool column = size.y > size.x;
   // The arrows' scale: a line about 40 pt long, of a nice number of newtons; in a column,
@@ -111,6 +125,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   for (int kind = 0; kind < force_kind_count; ++kind) {
     if (present[kind]) arrows_end += 40.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))) + 10.0f * s;
   }
+  if (torque) arrows_end += 40.0f * s + width_of(torque_word) + 10.0f * s;
   arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s + width_of(lengthened + " " + not_to_scale);
   std::vector<std::pair<ImU32, std::string>> materials;
   for (const auto& [name, body] : scene.bodies()) {
@@ -136,7 +151,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     // scale, the contact states, the materials, and the scale bar under them. The lines close
     // up (to 2 pt between) when there are more than its height holds at 6 pt.
     const std::size_t forces = static_cast<std::size_t>(std::count(std::begin(present), std::end(present), true));
-    const std::size_t lines = forces + 3 + 2 + materials.size() + 2;  // the arrows' scale takes three, the metres' bar two
+    const std::size_t lines = forces + (torque ? 1 : 0) + 3 + 2 + materials.size() + 2;  // the arrows' scale takes three, the metres' bar two
     const float room = size.y - 8.0f * s;
     const float step = std::max(font->FontSize + 2.0f * s, std::min(line, room / static_cast<float>(lines)));
     ImVec2 at(left, corner.y + 6.0f * s);
@@ -145,6 +160,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
       draw_arrow(draw, ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + 26.0f * s, at.y + 0.5f * font->FontSize),
                  theme.force[kind], 3.0f * s);
       text_at(ImVec2(at.x + 32.0f * s, at.y), std::string(force_kind_name(static_cast<ForceKind>(kind))));
+      at.y += step;
+    }
+    if (torque) {
+      torque_key(at);
       at.y += step;
     }
     draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
@@ -205,6 +224,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     text_at(ImVec2(at.x + 32.0f * s, at.y), name);
     at.x += 40.0f * s + width_of(name) + 10.0f * s;
   }
+  if (torque) {
+    torque_key(at);
+    at.x += 40.0f * s + width_of(torque_word) + 10.0f * s;
+  }
   draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
                 theme.text, 3.0f * s);
   text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
@@ -248,6 +271,7 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
   }
+  widest = std::max(widest, 32.0f * s + width_of(torque_word));
   for (const char* state : {"sticking", "slipping"}) widest = std::max(widest, 20.0f * s + width_of(state));
   for (const auto& [name, body] : scene.bodies()) {
     for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {

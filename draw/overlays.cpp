@@ -41,7 +41,7 @@ bool pushes_on_face(const ForceOnBody& force) {
 float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale, float shortest) {
+                                      float pixels_per_newton, float scale, float shortest, float gap) {
   // Whether a force counts is a question of the printed values, not of pixels: one that shows in
   // its body's numbers (at least half the last digit printed for the body's largest force) is
   // drawn, however short its arrow would be at the picture's scale. A tipping box's last
@@ -70,8 +70,8 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
   // force: each moves half a gap across, keeping its length and direction. The gap grows with the
-  // arrows' thickness (3.5 px times the scale): 9 px apart, a projector's 7 px arrows touched.
-  const float gap = 9.0f * scale;
+  // arrows' thickness (3.5 px times the scale) and clears a head beside a shaft (side_by_side_gap).
+  if (gap <= 0.0f) gap = side_by_side_gap(world_arrow_thickness(scale));
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     for (std::size_t j = i + 1; j < arrows.size(); ++j) {
       ScreenArrow& p = arrows[i];

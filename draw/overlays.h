@@ -45,6 +45,18 @@ inline float shortest_arrow_pixels(float scale) { return 8.0f * scale; }
 // The world's arrows' thickness at text scale `scale` (3.5 px at scale 1), which their heads,
 // four thicknesses long, the gaps between them and the room kept round them follow.
 inline float world_arrow_thickness(float scale) { return 3.5f * scale; }
+// The outline round a force's arrow past its shaft's sides and its head's edges (draw_arrow's
+// halo), px: a third of the arrow's thickness and at least a pixel and a half, a line a back
+// row sees round the shaft (2.3 px on a projector's 7 px arrows).
+inline float arrow_halo_width(float thickness) { return std::max(1.5f, thickness / 3.0f); }
+// How far apart two arrows `thickness` px thick along one line (weight and normal force) are
+// drawn, centre line to centre line, px: one's head (draw_arrow's, 0.45 of four thicknesses each side) beside the
+// other's shaft (half a thickness), each in its halo (arrow_halo_width), and a halo's width of
+// the background between them. 9 px times the scale put driven_wheel's normal force's head on
+// its weight's shaft on a projector (a teacher's trial, issue 31): 18 px where 23 are needed.
+inline float side_by_side_gap(float thickness) {
+  return 0.45f * 4.0f * thickness + 0.5f * thickness + 3.0f * arrow_halo_width(thickness);
+}
 // The shortest force arrow the world draws, to be read from a classroom's back row: four
 // thicknesses, a head (draw_arrow's, shortened to 0.6 of the arrow) and a shaft of two thirds of
 // it, 14 px at text scale 1 and 28 px on a projector (2.0). One force scale per lesson, set by
@@ -73,8 +85,9 @@ inline float not_to_scale_below(float newtons_to_pixels, float scale) {
 // its body's forces but would be shorter than `shortest` pixels (at least
 // shortest_arrow_pixels(scale)) is drawn that long, and one too small to show in them is left out. Two arrows of one body lying along one line
 // (weight and normal force) are drawn side by side, their gap growing with the text as well.
+// `gap`: how far apart two along one line go, px; 0: the world's, side_by_side_gap of its arrows.
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale, float shortest = 0.0f);
+                                      float pixels_per_newton, float scale, float shortest = 0.0f, float gap = 0.0f);
 
 // "4.42 N", "98.1 N", "0.0120 N", "4.2×10⁻⁸ J": three significant figures (two in powers of
 // ten) and the unit.

@@ -497,26 +497,38 @@ std::vector<std::string> hidden_level_room(const lessons::Lesson& lesson, std::s
   return room;
 }
 
+// The values the theory's curves and the plot's levels take, apart: a level counts for the y
+// axis only where the run comes near it (level_in_reach).
+struct TheoryValues {
+  std::vector<double> curves, levels;
+};
+
 // The theory's curves and levels (a script error in one becomes the chart's message, and the
 // lesson itself runs on); the values they take, for the y axis.
-std::vector<double> add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range,
-                               const Theme& theme) {
+TheoryValues add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range, const Theme& theme) {
   const lessons::Plot& plot = lesson.plots().at(plot_index);
-  std::vector<double> values;
+  TheoryValues values;
   try {
-    if (!plot.theory.empty()) values = add_theory_curves(chart, lesson, plot_index, x_range, theme);
-    if (!plot.levels.empty()) {
-      const std::vector<double> levels = add_levels(chart, lesson, plot_index, theme);
-      values.insert(values.end(), levels.begin(), levels.end());
-    }
+    if (!plot.theory.empty()) values.curves = add_theory_curves(chart, lesson, plot_index, x_range, theme);
+    if (!plot.levels.empty()) values.levels = add_levels(chart, lesson, plot_index, theme);
   } catch (const lessons::ScriptError& error) {
     chart.theory.clear();
     chart.levels.clear();
     chart.active_theory = -1;
-    values.clear();
+    values = {};
     chart.message = error.what();
   }
   return values;
+}
+
+// Whether a level lies near enough what the run and the theory's curves reach (`reach`, zero in
+// it) for the y axis to run out to it: within half the reach's span beyond either end. A level
+// further off is a threshold the run never comes near (tipping_box pushed 0.2 m up slides at
+// 49 N, and its tipping push of 123 N took the friction axis to -140 N, the run's data in the
+// top third; a teacher's trial): it is left off the axis, and the theory table still gives it.
+bool level_in_reach(double level, Range reach) {
+  const double slack = 0.5 * (reach.high - reach.low);
+  return level >= reach.low - slack && level <= reach.high + slack;
 }
 
 }  // namespace
@@ -595,8 +607,8 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // The theory is worked out whether it is shown or not, so that the y axis is the same before
   // and after the reveal (round_ends); kept back, it is not drawn, nor its error said. A
   // mystery's theory counts for nothing until its reveal.
-  std::vector<double> theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
-  if (secret) theory_values.clear();
+  TheoryValues theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
+  if (secret) theory_values = {};
   // A plot on a page of its own keeps its levels' texts' room beside its data from the opening,
   // shown or not, so that the reveal moves nothing (Chart::level_room). A mystery's levels are
   // worked out from its hidden values: their texts' widths would tell them (incline's θc, push's
@@ -626,11 +638,22 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   Range y_range = planned_here ? beyond_noise(joined(reach_of(record.ys, reach_count), planned->y[plot_index]))
                                : extent_of(record.ys, record.count);
   const bool reached = record.count > 0 || planned_here;
-  const Range theory_range = extent_of({&theory_values}, theory_values.size());
-  if (!theory_values.empty()) {
-    y_range = !reached ? theory_range : Range{std::min(y_range.low, theory_range.low), std::max(y_range.high, theory_range.high)};
+  if (!theory_values.curves.empty()) {
+    const Range curves = extent_of({&theory_values.curves}, theory_values.curves.size());
+    y_range = !reached ? curves : joined(y_range, curves);
   }
-  if (reached || !theory_values.empty()) {
+  // Levels near what the run and the curves reach (all of them where nothing is reached yet).
+  const bool reach_known = reached || !theory_values.curves.empty();
+  const Range reach = joined(y_range, Range{0.0, 0.0});
+  std::vector<double> levels_shown;
+  for (const double level : theory_values.levels) {
+    if (!reach_known || level_in_reach(level, reach)) levels_shown.push_back(level);
+  }
+  if (!levels_shown.empty()) {
+    const Range levels = extent_of({&levels_shown}, levels_shown.size());
+    y_range = !reach_known ? levels : joined(y_range, levels);
+  }
+  if (reached || !theory_values.curves.empty() || !theory_values.levels.empty()) {
     y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))),
                          planned_here);
   }

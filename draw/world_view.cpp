@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -217,8 +219,31 @@ void draw_hand(ImDrawList* draw, ImVec2 at, const Theme& theme, const Fonts& fon
   labels.avoid(ImVec4(word.x - 0.5f * size.x, word.y - 0.5f * size.y, word.x + 0.5f * size.x, at.y + 7.0f * fonts.scale));
 }
 
+std::optional<b2Vec2> pulley_holder(const Scene& scene, b2Vec2 axle) {
+  std::optional<b2Vec2> nearest;
+  float nearest_distance = std::numeric_limits<float>::max();
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_staticBody) continue;
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (fixture->GetType() != b2Shape::e_polygon) continue;
+      const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      // The nearest point of each edge to the axle.
+      for (int k = 0; k < shape->m_count; ++k) {
+        const b2Vec2 from = body->GetWorldPoint(shape->m_vertices[k]);
+        const b2Vec2 to = body->GetWorldPoint(shape->m_vertices[(k + 1) % shape->m_count]);
+        const b2Vec2 edge = to - from;
+        const float along = std::clamp(b2Dot(axle - from, edge) / std::max(edge.LengthSquared(), 1e-12f), 0.0f, 1.0f);
+        const b2Vec2 point = from + along * edge;
+        const float distance = (point - axle).Length();
+        if (distance < nearest_distance) nearest_distance = distance, nearest = point;
+      }
+    }
+  }
+  return nearest;
+}
+
 void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
-                float scale) {
+                float scale, LabelPlacer& labels) {
   for (const Rope& rope : lesson.scene().ropes()) {
     const ImVec2 a = camera.to_screen(rope.end_a()), b = camera.to_screen(rope.end_b());
     const ImVec2 ga = camera.to_screen(rope.pulley_a), gb = camera.to_screen(rope.pulley_b);
@@ -239,7 +264,15 @@ void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     stretch(b, gb, !sag_a);
     const ImVec2 middle = mul(add(ga, gb), 0.5f);
     const float radius = std::max(0.5f * length(sub(gb, ga)), 8.0f * scale);
+    // What holds the pulley: an arm from the nearest fixed body (pulley's table corner) to its
+    // axle, under the wheel. Without it the wheel hung over empty space (a teacher's trial).
+    if (const std::optional<b2Vec2> held = pulley_holder(lesson.scene(), 0.5f * (rope.pulley_a + rope.pulley_b))) {
+      draw->AddLine(camera.to_screen(*held), middle, theme.outline, 5.0f * scale);
+      labels.avoid(DrawnSegment{camera.to_screen(*held), middle, 5.0f * scale});
+    }
     draw->AddCircle(middle, radius, theme.outline, 32, 2.0f * scale);
+    // The wheel and its arm are seen whole: no value goes over them.
+    labels.avoid(ImVec4(middle.x - radius, middle.y - radius, middle.x + radius, middle.y + radius));
     draw->AddCircleFilled(middle, 3.0f * scale, theme.outline, 12);
   }
 }
@@ -460,7 +493,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() == b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
   }
-  draw_ropes(draw, lesson, camera, theme, fonts.scale);
+  draw_ropes(draw, lesson, camera, theme, fonts.scale, labels);
   for (const Spring& spring : scene.springs()) {
     const ImVec2 from = camera.to_screen(spring.body->GetWorldPoint(spring.local_point));
     const ImVec2 to = camera.to_screen(spring.other ? spring.other->GetWorldPoint(spring.other_local_point)

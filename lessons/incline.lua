@@ -25,12 +25,19 @@ pair { "block", "slope", mu_s = 0.6, mu_k = 0.4, c = 0 }
 
 -- World -----------------------------------------------------------------------------------
 ground { material = "slope" }
-local slope = incline { "slope", material = "slope", angle = angle, length = 6 }
+local slope_length = 6
+local slope = incline { "slope", material = "slope", angle = angle, length = slope_length }
 -- 5.5 m up: even at 60° with no friction it stays on the slope for the whole second.
 local block = box { "block", material = "block", width = 0.4, height = 0.2, on = slope, at = 5.5, mass = mass }
 
 -- Downhill is back along the slope towards its foot.
 local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
+
+-- The whole slope, from its foot with the angle's mark and label to its top, at any angle: the
+-- framing of every body zoomed in on the block (to keep it min_body_pixels long) and cut the
+-- foot and the angle off (a teacher's projector trial, issue 31). Room left of the foot for the
+-- angle's label and above the top for the block's normal force and its value.
+view { window = { -0.6, -0.15, slope_length * downhill[1] * -1 + 0.3, slope_length * downhill[2] * -1 + 0.3 } }
 
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(block, slope)

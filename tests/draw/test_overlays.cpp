@@ -216,7 +216,7 @@ TEST(Overlays, AForceThatShowsInTheNumbersIsDrawnHoweverShortItsArrow) {
 // weight and normal force grow with it (issue 31: an 8 px arrow was shorter than its head). The
 // same tipping_box friction at the same arrow scale is drawn shortest_arrow_pixels(scale) long,
 // 8 px times the scale exactly (a max of two floats), and weight and normal force along one line
-// move 9 px times the scale further apart (each moves half the gap: exact to float rounding).
+// move side_by_side_gap further apart (each moves half the gap: exact to float rounding).
 TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   const float scale = 1.35f * 1.5f;
   LessonAt at("tipping_box", {}, 2.49);
@@ -248,8 +248,8 @@ TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   // The normal force acts where the floor's pressure centres, a few pixels off the weight's line:
   // each moves half the gap away from the other, so they end the gap further apart than they act.
   const float apart = std::abs(level_camera.to_screen(weight->force.point).x - level_camera.to_screen(normal->force.point).x);
-  ASSERT_LT(apart, 9.0f * scale);  // near enough to be moved
-  EXPECT_NEAR(std::abs(weight->tail.x - normal->tail.x), apart + 9.0f * scale, 1e-3f);
+  ASSERT_LT(apart, side_by_side_gap(world_arrow_thickness(scale)));  // near enough to be moved
+  EXPECT_NEAR(std::abs(weight->tail.x - normal->tail.x), apart + side_by_side_gap(world_arrow_thickness(scale)), 1e-3f);
 }
 
 // The projector's world at 1920 × 1080: its camera, its arrow scale and its text scale (the
@@ -266,6 +266,38 @@ struct ProjectorWorld {
     return place_arrows(forces_on(scene, body), camera, newtons_to_pixels, scale, legible_arrow_pixels(scale));
   }
 };
+
+// A teacher's trial (issue 31): driven_wheel's weight and normal force, side by side on a
+// projector, touched: the normal force's head lay on the weight's shaft. Drawn as draw_arrow
+// draws them (a head 0.45 of min(4 thicknesses, 0.6 of the arrow) each side of its line, a
+// shaft half a thickness, each outlined arrow_halo_width past its edges), the background shows
+// between the one's head and the other's shaft at least a halo's width, at the run's start, in
+// its middle and at its end.
+TEST(Overlays, WeightAndNormalForceSideBySideLeaveTheBackgroundBetweenAHeadAndAShaft) {
+  for (const double t : {0.2, 1.0, 2.0}) {
+    LessonAt at("driven_wheel", {}, t);
+    const ProjectorWorld world(at);
+    const std::vector<ScreenArrow> arrows = world.arrows(at.scene(), at.scene().body("wheel"));
+    const ScreenArrow* weight = nullptr;
+    const ScreenArrow* normal = nullptr;
+    for (const ScreenArrow& arrow : arrows) {
+      if (arrow.force.kind == ForceKind::weight) weight = &arrow;
+      if (arrow.force.kind == ForceKind::normal) normal = &arrow;
+    }
+    ASSERT_TRUE(weight && normal) << t << " s";
+    const float thickness = world_arrow_thickness(world.scale), halo = std::max(1.5f, thickness / 3.0f);
+    // Along one line, overlapping: the normal force up from the road, the weight down from the axle.
+    ASSERT_LT(std::abs(weight->tip.x - weight->tail.x), 0.01f * weight->length());
+    ASSERT_LT(std::max(weight->tail.y, weight->tip.y) > std::min(normal->tail.y, normal->tip.y) ? 0.0f : 1.0f, 0.5f);
+    const float apart = std::abs(weight->tail.x - normal->tail.x);
+    for (const ScreenArrow* arrow : {weight, normal}) {
+      const float head_half = 0.45f * std::min(4.0f * thickness, 0.6f * arrow->length());
+      const float between = apart - (head_half + halo) - (0.5f * thickness + halo);
+      EXPECT_GE(between, halo) << t << " s: the " << force_kind_name(arrow->force.kind) << "'s head " << between
+                               << " px from the other's shaft, centre lines " << apart << " px apart";
+    }
+  }
+}
 
 // Issue 31: a teacher read push's lengthened 2.94 N friction and 4.99 N push as nearly alike;
 // every arrow under twice the legible length was lengthened "in order", none with a ratio kept.

@@ -692,6 +692,41 @@ TEST(PlotRanges, AnAngleOrALengthIsNeverDrawnNarrowerThanTheWorldsTolerance) {
   EXPECT_GE(distance.y_high - distance.y_low, 0.005) << "the distance's axis " << distance.y_low << " to " << distance.y_high;
 }
 
+// Issue 31, a teacher's trial: tipping_box pushed 0.2 m up slides at μs·m·g = 49 N, and its key
+// plot's friction axis ran to −140 N, out to the tipping push's level m·g·d/(2h) = 123 N that
+// the run never comes near: the run's data sat in the top third. A level counts for the axis
+// only within half the run's reach beyond it, so the data's lowest point is below half of the
+// axis's lower end (the round end past it, 3 % on, is at most 1.5 × 1.03 of it and no more than
+// the next fine round value: here −60 N for −49 N), and the sliding level the run reaches is
+// still on the axis. At the defaults (0.7 m: it tips at 35 N) both levels are within reach and
+// on the axis, as before.
+TEST(PlotRanges, ALevelTheRunNeverNearsDoesNotStretchTheAxis) {
+  const auto lowest_point = [](const Chart& chart) {
+    double lowest = 0.0;
+    for (const ChartSeries& series : chart.series) {
+      for (const auto& point : series.points) lowest = std::min(lowest, point.second);
+    }
+    return lowest;
+  };
+  LessonAt low("tipping_box", {{"push_height", "0.2"}}, 0.0);
+  low.step_to(low.lesson->duration());
+  const Chart pushed_low = plot_chart(*low.lesson, 0, low.lesson->duration(), theme(ThemeName::light), true, true);
+  const double slides = -0.5 * 10.0 * 9.81, tips = -10.0 * 9.81 * 0.5 / (2.0 * 0.2);
+  const double reached = lowest_point(pushed_low);
+  EXPECT_NEAR(reached, slides, 0.05 * -slides) << "the run breaks away near μs·m·g";
+  EXPECT_LE(pushed_low.y_low, slides) << "the sliding level is on the axis";
+  EXPECT_GT(pushed_low.y_low, tips) << "the tipping level, " << tips << " N, stretched the axis";
+  EXPECT_LT(reached, 0.5 * pushed_low.y_low) << "the data reaches " << reached << " N of an axis from " << pushed_low.y_low;
+
+  LessonAt high("tipping_box", {}, 0.0);
+  high.step_to(high.lesson->duration());
+  const Chart pushed_high = plot_chart(*high.lesson, 0, high.lesson->duration(), theme(ThemeName::light), true, true);
+  ASSERT_EQ(pushed_high.levels.size(), 2u);
+  for (const ChartLevel& level : pushed_high.levels) {
+    EXPECT_GE(level.y, pushed_high.y_low) << level.text << " off an axis from " << pushed_high.y_low;
+  }
+}
+
 // A time axis ends at a round time at or past the lesson's duration, 1, 1.5, 2, 2.5, 3, 4, 5, 6
 // or 8 times a power of ten: tipping_box's 2.5 s, push's 3.46 s to 4 s. While a mystery's values
 // are hidden it says nothing of them, growing with the run (1, 2, 5, 10 s) whatever the duration.

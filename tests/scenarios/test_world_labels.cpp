@@ -35,6 +35,117 @@ TEST(WorldLabels, NameMaterialsAndBodiesInWords) {
   EXPECT_NE(terrain.find("Free-body diagram: asphalt box\n"), std::string::npos) << terrain;
 }
 
+// A teacher's trial (issue 31): driven_wheel's motor torque is a curved arrow in the applied
+// forces' colour, and the legend had no key to it: the class did not know what it was. Where a
+// torque acts, the legend keys it, "torque", in the strip (a screen's frame) and in the column (a
+// projector's window); where none acts (push), it does not.
+TEST(WorldLabels, TheLegendKeysATorquesCurvedArrow) {
+  const auto keyed = [](const std::vector<draw::ShownText>& texts) {
+    // The legend's own panel, or the world's whose strip it is (the torque's slider says "torque" too).
+    return std::any_of(texts.begin(), texts.end(), [](const draw::ShownText& text) {
+      return text.text == "torque" && (text.panel.ends_with("###legend") || text.panel.ends_with("###world"));
+    });
+  };
+  draw::HeadlessRenderer renderer(draw::frame_width, draw::frame_height);
+  for (const char* lesson : {"driven_wheel", "push"}) {
+    draw::LessonAt at(lesson, {}, 1.0);
+    draw::FrameRecord record;
+    renderer.render(*at.lesson, at.framing, &record);
+    EXPECT_EQ(keyed(record.texts), std::string(lesson) == "driven_wheel") << lesson << " in a frame";
+  }
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    if (entry.name != "driven_wheel" && entry.name != "push") continue;
+    Classroom window(class_window(entry.path, {"1920x1080", 1920, 1080, true}));
+    window.run_to(1.0);
+    draw_window_frame(gl, host, window, display);
+    draw::FrameRecord record;
+    draw_window_frame(gl, host, window, display, 0.0, &record);
+    EXPECT_EQ(keyed(record.texts), entry.name == "driven_wheel") << entry.name << " on a projector";
+  }
+}
+
+// A teacher's projector trial (issue 31): incline's view, framed round the block to keep it
+// min_body_pixels long, cut off the slope's foot and the angle's mark, with the tools on too.
+// The lesson's view is now the whole slope: on a projector at 1920 x 1080, at the default 35 deg,
+// at 10 deg and at 60 deg, tools off and all on (distance marks, speed, stopwatch), at the run's
+// start and end, every corner of the slope is inside what the world shows, and so is the angle's
+// label.
+TEST(WorldLabels, InclinesWholeSlopeAndItsAngleAreInViewOnAProjector) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const char* angle : {"35", "10", "60"}) {
+    for (const bool tools : {false, true}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+      options.overrides["angle"] = angle;
+      options.window.tools.distance_marks = options.window.tools.speed = options.window.tools.stopwatch = tools;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      for (const double t : {0.2, 1.0}) {
+        window.run_to(t);
+        draw_window_frame(gl, host, window, display);
+        draw::FrameRecord record;
+        draw_window_frame(gl, host, window, display, 0.0, &record);
+        const std::string where = std::string(angle) + " deg at " + std::to_string(t) + " s" + (tools ? ", tools on" : "");
+        ASSERT_EQ(record.lanes.size(), 1u) << where;
+        const draw::FrameRecord::Lane& lane = record.lanes.front();
+        const auto inside = [&](ImVec2 p) {
+          return p.x >= lane.shown.x - 0.5f && p.x <= lane.shown.z + 0.5f && p.y >= lane.shown.y - 0.5f && p.y <= lane.shown.w + 0.5f;
+        };
+        const b2Body* slope = window.playback().lesson().scene().body("slope");
+        ASSERT_NE(slope, nullptr);
+        for (const b2Fixture* fixture = slope->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+          ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon);
+          const auto* shape = static_cast<const b2PolygonShape*>(fixture->GetShape());
+          for (int k = 0; k < shape->m_count; ++k) {
+            const ImVec2 corner = lane.camera.to_screen(slope->GetWorldPoint(shape->m_vertices[k]));
+            EXPECT_TRUE(inside(corner)) << where << ": the slope's corner at (" << corner.x << ", " << corner.y
+                                        << ") px, the world shows " << lane.shown.x << " to " << lane.shown.z << " by "
+                                        << lane.shown.y << " to " << lane.shown.w;
+          }
+        }
+        bool angle_shown = false;
+        for (std::size_t i = 0; i < lane.texts.size(); ++i) {
+          if (lane.texts[i] != std::string(angle) + "\u00b0") continue;
+          angle_shown = inside(ImVec2(lane.labels[i].x, lane.labels[i].y)) && inside(ImVec2(lane.labels[i].z, lane.labels[i].w));
+        }
+        EXPECT_TRUE(angle_shown) << where << ": the angle's label";
+      }
+    }
+  }
+}
+
+// A teacher's trial (issue 31): pulley's wheel hung over empty space, nothing holding it. It is
+// now held by an arm from the nearest fixed body, the table's corner, to its axle: half way
+// along the line from the corner to the axle, the picture is the outline's ink, not the sky.
+TEST(WorldLabels, APulleyIsHeldByAnArmFromTheTable) {
+  draw::HeadlessRenderer renderer(draw::frame_width, draw::frame_height);
+  draw::LessonAt at("pulley", {}, 0.5);
+  draw::FrameRecord record;
+  const draw::Image image = renderer.render(*at.lesson, at.framing, &record);
+  ASSERT_EQ(at.scene().ropes().size(), 1u);
+  const Rope& rope = at.scene().ropes().front();
+  const b2Vec2 axle = 0.5f * (rope.pulley_a + rope.pulley_b);
+  const b2AABB table = lessons::body_box(at.scene().body("table"));
+  const b2Vec2 corner(table.upperBound.x, table.upperBound.y);
+  ASSERT_GT(axle.x, corner.x) << "the pulley is past the table's edge";
+  const draw::Camera& camera = record.lanes.front().camera;
+  const ImVec2 half_way = camera.to_screen(0.5f * (corner + axle));
+  const std::uint8_t* pixel = image.pixel(static_cast<int>(half_way.x), static_cast<int>(half_way.y));
+  const draw::Theme& theme = draw::theme(draw::ThemeName::light);
+  const ImVec4 outline = ImGui::ColorConvertU32ToFloat4(theme.outline), sky = ImGui::ColorConvertU32ToFloat4(theme.sky);
+  const auto near = [&](const ImVec4& colour) {
+    return std::abs(pixel[0] - 255.0f * colour.x) < 24.0f && std::abs(pixel[1] - 255.0f * colour.y) < 24.0f &&
+           std::abs(pixel[2] - 255.0f * colour.z) < 24.0f;
+  };
+  EXPECT_TRUE(near(outline)) << "at (" << half_way.x << ", " << half_way.y << ") px: " << int(pixel[0]) << ", " << int(pixel[1])
+                             << ", " << int(pixel[2]);
+  EXPECT_FALSE(near(sky));
+}
+
 // Before the first step no contact has been solved: the free-body inset of a block resting on a
 // floor showed its weight and no normal force, unbalanced. At t = 0 it draws the body with no
 // arrows and says when the forces come; after a step, the forces and the net force.
