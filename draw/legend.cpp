@@ -109,6 +109,8 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
                       2.0f * s);
     text_at(ImVec2(at.x + 32.0f * s, at.y), torque_word);
   };
+  // A key's room in a row: its arrow (or arc) and the gap to its word, the word, a gap after.
+  const auto key_width = [&](const std::string& word) { return 40.0f * s + width_of(word) + 10.0f * s; };
   // A column (projector mode, beside the plots) is taller than wide; a strip, wider than tall.
   const bool column = size.y > size.x;
   // The arrows' scale: a line about 40 pt long, of a nice number of newtons; in a column,
@@ -123,9 +125,9 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   const std::string& not_to_scale = words.second;
   float arrows_end = left;
   for (int kind = 0; kind < force_kind_count; ++kind) {
-    if (present[kind]) arrows_end += 40.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))) + 10.0f * s;
+    if (present[kind]) arrows_end += key_width(std::string(force_kind_name(static_cast<ForceKind>(kind))));
   }
-  if (torque) arrows_end += 40.0f * s + width_of(torque_word) + 10.0f * s;
+  if (torque) arrows_end += key_width(torque_word);
   arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s + width_of(lengthened + " " + not_to_scale);
   std::vector<std::pair<ImU32, std::string>> materials;
   for (const auto& [name, body] : scene.bodies()) {
@@ -222,11 +224,11 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
                colour, 3.0f * s);
     const std::string name(force_kind_name(static_cast<ForceKind>(kind)));
     text_at(ImVec2(at.x + 32.0f * s, at.y), name);
-    at.x += 40.0f * s + width_of(name) + 10.0f * s;
+    at.x += key_width(name);
   }
   if (torque) {
     torque_key(at);
-    at.x += 40.0f * s + width_of(torque_word) + 10.0f * s;
+    at.x += key_width(torque_word);
   }
   draw->AddLine(ImVec2(at.x, at.y + 0.5f * font->FontSize), ImVec2(at.x + newtons * newtons_to_pixels, at.y + 0.5f * font->FontSize),
                 theme.text, 3.0f * s);

@@ -37,7 +37,8 @@ local downhill = { -math.cos(math.rad(angle)), -math.sin(math.rad(angle)) }
 -- framing of every body zoomed in on the block (to keep it min_body_pixels long) and cut the
 -- foot and the angle off (a teacher's projector trial, issue 31). Room left of the foot for the
 -- angle's label and above the top for the block's normal force and its value.
-view { window = { -0.6, -0.15, slope_length * downhill[1] * -1 + 0.3, slope_length * downhill[2] * -1 + 0.3 } }
+view { window = { -0.6, -0.15, slope_length * math.cos(math.rad(angle)) + 0.3,
+                  slope_length * math.sin(math.rad(angle)) + 0.3 } }
 
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(block, slope)

@@ -104,10 +104,12 @@ end
 -- most 0.5; or the spin, thrown or left by the impact, is more than a quarter turn a step.
 local function no_single_impact()
   local t = throw()
-  if faster_than_a_quarter_turn_a_step(spin) then return faster_than_a_quarter_turn_a_step(spin) end
+  local too_fast = faster_than_a_quarter_turn_a_step(spin)
+  if too_fast then return too_fast end
   if t.corner == "lands flat" then return nil end
   if t.far_end_above_reach <= 0 then return "both corners of a face met in the same step" end
-  if faster_than_a_quarter_turn_a_step(t.spin_after) then return faster_than_a_quarter_turn_a_step(t.spin_after) end
+  too_fast = faster_than_a_quarter_turn_a_step(t.spin_after)
+  if too_fast then return too_fast end
   if t.second_corner_after < 2 * step_length() then
     return string.format("both corners of a face land within two steps (%.1f ms apart)", 1000 * t.second_corner_after)
   end

@@ -123,6 +123,10 @@ local function readable()
   end
   return #touches
 end
+
+-- The world's sub-steps in one of its frames (1 without sub-steps).
+local function substeps_a_frame() return math.floor(step_length() / substep_length() + 0.5) end
+
 -- Under sub-steps a frame ends on every other one (with two), and a swing that flips at every
 -- step, a cycle of two, shows the same speed at every frame's end: the record looks settled (at
 -- -0.0090 m/s, sub-steps of +0.0232 between). The distance the frame covered tells it: each
@@ -137,7 +141,7 @@ end
 local function hidden_swing(speeds, distances, n)
   if substep_length() == step_length() or n < 3 then return false end
   local function off(i) return math.abs((distances[i] - distances[i - 1]) / step_length() - speeds[i]) end
-  local substeps = math.floor(step_length() / substep_length() + 0.5)
+  local substeps = substeps_a_frame()
   local unread = (substeps + 2) * 2 ^ -24 * 8 / step_length()
   -- (Set against the most around the middle of the run: over a frame or two a slowly dying
   -- cycle shrinks by less than the rounding, 0.4 % in two frames at 720 sub-steps a second.)
@@ -218,7 +222,7 @@ expect { "large ε: creep speed", unit = "m/s",
   tolerance = function()
     if not has_theory() or not creep(large).settles then return 0 end
     local c = creep(large)
-    local steps = readable() * math.floor(step_length() / substep_length() + 0.5) - 1  -- the world's steps
+    local steps = readable() * substeps_a_frame() - 1  -- the world's steps
     return (0.01 + math.abs(c.amplification) ^ steps) * c.speed
   end }
 

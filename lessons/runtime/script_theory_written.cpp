@@ -335,14 +335,28 @@ struct FarEnd {
   double x = 0.0, y = 0.0;
 };
 
+// The corner at (sx, sy) of the box's own frame (each ±0.5), from the centre at the landing
+// pose, and how much higher it is than the landing corner.
+FarEnd corner_at(const theory::BoxLanding& landing, double width, double height, double sx, double sy) {
+  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
+  FarEnd corner;
+  corner.x = sx * width * c - sy * height * s, corner.y = sx * width * s + sy * height * c;
+  corner.rise = corner.y - landing.corner_y;
+  return corner;
+}
+
+bool is_landing_corner(const theory::BoxLanding& landing, const FarEnd& corner) {
+  return std::abs(corner.x - landing.corner_x) < 1e-12 && std::abs(corner.y - landing.corner_y) < 1e-12;
+}
+
+// The lowest corner but the landing one (where no corner matches the landing one, the lowest
+// of all four: a flat landing's far end).
 FarEnd far_end_of(const theory::BoxLanding& landing, double width, double height) {
   FarEnd far;
-  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
   for (const double sx : {-0.5, 0.5}) {
     for (const double sy : {-0.5, 0.5}) {
-      const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
-      const bool landing_corner = std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12;
-      if (!landing_corner && y - landing.corner_y < far.rise) far.rise = y - landing.corner_y, far.x = x, far.y = y;
+      const FarEnd here = corner_at(landing, width, height, sx, sy);
+      if (!is_landing_corner(landing, here) && here.rise < far.rise) far = here;
     }
   }
   return far;
@@ -351,18 +365,10 @@ FarEnd far_end_of(const theory::BoxLanding& landing, double width, double height
 // The ends of the two faces through the landing corner, from the centre at the landing pose
 // (the far end is the lower of them).
 std::array<FarEnd, 2> neighbours_of(const theory::BoxLanding& landing, double width, double height) {
-  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
-  const auto corner = [&](double sx, double sy) {
-    FarEnd end;
-    end.x = sx * width * c - sy * height * s, end.y = sx * width * s + sy * height * c;
-    end.rise = end.y - landing.corner_y;
-    return end;
-  };
   for (const double sx : {-0.5, 0.5}) {
     for (const double sy : {-0.5, 0.5}) {
-      const FarEnd here = corner(sx, sy);
-      if (std::abs(here.x - landing.corner_x) < 1e-12 && std::abs(here.y - landing.corner_y) < 1e-12) {
-        return {corner(-sx, sy), corner(sx, -sy)};
+      if (is_landing_corner(landing, corner_at(landing, width, height, sx, sy))) {
+        return {corner_at(landing, width, height, -sx, sy), corner_at(landing, width, height, sx, -sy)};
       }
     }
   }
@@ -376,15 +382,13 @@ std::array<FarEnd, 2> neighbours_of(const theory::BoxLanding& landing, double wi
 // first-order 2 cm above reach, was 1 cm into the floor (both corners met in that step: the spin
 // stopped in the world, -21.3 rad/s predicted).
 double far_end_gap(const theory::BoxLanding& landing, double width, double height, double spin, double g, double late) {
-  const double c = std::cos(landing.angle), s = std::sin(landing.angle);
   const double turned = landing.angle + spin * late;
   const double c_late = std::cos(turned), s_late = std::sin(turned);
   const double drop = g * landing.time * late + 0.5 * g * late * late;  // thrown level: falling g·t at the landing
   double gap = std::numeric_limits<double>::infinity();
   for (const double sx : {-0.5, 0.5}) {
     for (const double sy : {-0.5, 0.5}) {
-      const double x = sx * width * c - sy * height * s, y = sx * width * s + sy * height * c;
-      if (std::abs(x - landing.corner_x) < 1e-12 && std::abs(y - landing.corner_y) < 1e-12) continue;
+      if (is_landing_corner(landing, corner_at(landing, width, height, sx, sy))) continue;
       gap = std::min(gap, sx * width * s_late + sy * height * c_late - landing.corner_y - drop);
     }
   }
