@@ -10,11 +10,15 @@
 
 namespace frictionlab::classroom {
 
+// The least room the panel opens in, in points at text scale 1: its title and about six rows
+// of keys, the rest a scroll away.
+inline constexpr float help_least_height_points = 180.0f;
+
 // On the page (`browser`) F5 runs the script as last applied; with
 // `script_paths` the files are saved in `output_folder` (else they arrive as downloads).
-// `opens_over`: where it first opens (x0, y0, x1, y1): the room the classroom gives it, under the
-// sliders, so that a newcomer's first window shows the world, the question and the sliders
-// beside it. Moved or resized, it stays where the user put it.
+// `opens_over`: where it first opens (x0, y0, x1, y1): the room the classroom gives it, over the
+// plots (empty before the first run), so that a newcomer's first window shows the world, the
+// sliders and the class's questions beside it. Moved or resized, it stays where the user put it.
 void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder,
                 const ImVec4& opens_over);
 
