@@ -69,7 +69,7 @@ void help_panel(bool& shown, bool browser, bool script_paths, const std::string&
         "run pauses or ends; W starts and stops it, L takes a lap; slow motion does not fool it, and R or the time "
         "bar takes it back with the run), distance marks along the floor or the slope from where the main body stood at t = 0, "
         "the main body's speed, and its weight split along and across a slope (m\u00b7g\u00b7sin \u03b8, "
-        "m\u00b7g\u00b7cos \u03b8). They stay on for the next class.");
+        "m\u00b7g\u00b7cos \u03b8). They are this session's only: the next one opens with them off.");
     if (script_paths) {
       ImGui::TextUnformatted(("Files are saved in " + std::filesystem::absolute(output_folder).lexically_normal().string() +
                               ". Settings are kept in " + settings_folder() + ".")
