@@ -89,30 +89,25 @@ constexpr float room = 1.45f;
 // Pixels (at text scale 1) kept between a lane's floor and the lane's foot, and above a body.
 constexpr float lane_ground_edge = 6.0f;
 
-}  // namespace
+// The world's scale, pixels a metre, for the view's kind (one for every lane); and whether it
+// had to zoom in past the fit to keep the smallest body readable (then the view frames what
+// moves, not everything).
+struct FramingScale {
+  float pixels_per_metre = 1.0f;
+  bool zoomed_in = false;
+};
 
-std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
-                                    float free_width, float scale, const ViewAdjust& adjust, const ArrowRoom& arrows) {
+FramingScale framing_scale(const lessons::WorldFraming& framing, const Scene& scene, lessons::View::Kind kind,
+                           const b2AABB& moving, ImVec2 size, float free_width, float strip_height, float edge, float scale,
+                           const ArrowRoom& arrows) {
+  using Kind = lessons::View::Kind;
   const lessons::View& view = framing.view;
   const b2Vec2 extent = framing.extent;
   const float tallest_body = framing.tallest_body, moving_span = framing.moving_span, smallest_body = framing.smallest_body;
   const std::vector<float>& lane_ground = framing.lane_ground;
   const std::vector<float>& lane_top = framing.lane_top;
-  using Kind = lessons::View::Kind;
-  // A window squeezed to nothing still gets a camera with a positive, finite scale.
-  free_width = std::max(free_width, 1.0f);
-  size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
-  const std::vector<const b2Body*> bodies = view_bodies(scene, view);
-  // What moves now, worked out once: the framing, the centre and each lane read it.
-  const b2AABB moving = moving_bounds(scene);
-  const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
-  const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
-  const float strip_height = size.y / static_cast<float>(strips);
   const float fit = std::min(free_width / (room * extent.x), size.y / (room * extent.y));
   float pixels_per_metre = fit;
-  // Pixels kept between what must show and a lane's top or bottom: the world's panel clips half
-  // its padding off its edges.
-  const float edge = lane_ground_edge * scale;
   if (kind == Kind::window) {
     const b2Vec2 span = view.high - view.low;
     pixels_per_metre = std::min(free_width / span.x, size.y / span.y);
@@ -175,7 +170,13 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   const bool zoomed_in = kind != Kind::window && pixels_per_metre < readable;
   if (kind != Kind::window) pixels_per_metre = std::max(pixels_per_metre, readable);
   if (!std::isfinite(pixels_per_metre) || pixels_per_metre <= 0.0f) pixels_per_metre = 1.0f;
+  return {pixels_per_metre, zoomed_in};
+}
 
+// Where the view is centred (a lane's height is its own body's: framing_cameras).
+b2Vec2 framing_centre(lessons::View::Kind kind, bool zoomed_in, const lessons::View& view, const Scene& scene,
+                      const std::vector<const b2Body*>& bodies, const b2AABB& moving) {
+  using Kind = lessons::View::Kind;
   b2Vec2 centre{0.0f, 0.0f};
   switch (kind) {
     case Kind::whole:
@@ -194,6 +195,33 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       centre.x = moving.GetCenter().x;
       break;
   }
+  return centre;
+}
+
+}  // namespace
+
+std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
+                                    float free_width, float scale, const ViewAdjust& adjust, const ArrowRoom& arrows) {
+  const lessons::View& view = framing.view;
+  const std::vector<float>& lane_ground = framing.lane_ground;
+  using Kind = lessons::View::Kind;
+  // A window squeezed to nothing still gets a camera with a positive, finite scale.
+  free_width = std::max(free_width, 1.0f);
+  size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
+  const std::vector<const b2Body*> bodies = view_bodies(scene, view);
+  // What moves now, worked out once: the framing, the centre and each lane read it.
+  const b2AABB moving = moving_bounds(scene);
+  const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
+  const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
+  const float strip_height = size.y / static_cast<float>(strips);
+  // Pixels kept between what must show and a lane's top or bottom: the world's panel clips half
+  // its padding off its edges.
+  const float edge = lane_ground_edge * scale;
+  const FramingScale framed =
+      framing_scale(framing, scene, kind, moving, size, free_width, strip_height, edge, scale, arrows);
+  const float pixels_per_metre = framed.pixels_per_metre;
+  const bool zoomed_in = framed.zoomed_in;
+  const b2Vec2 centre = framing_centre(kind, zoomed_in, view, scene, bodies, moving);
 
   const b2AABB lesson = kind == Kind::whole && zoomed_in ? lesson_bounds(scene) : b2AABB{};
   std::vector<Camera> made;
