@@ -618,6 +618,58 @@ theory::CornerImpact ThrownBox::through_frame(theory::CornerImpact hit, double r
   return hit;
 }
 
+// How soon after the impact a second corner comes down (falling at the impact's end speed, and
+// under gravity), s: within a step or two a stepped world meets both corners in one step, and
+// no single-corner impact describes what it shows.
+// Either face through the corner may come down: the far end's, or, where the impact turns
+// the box the other way, the other face's end, higher at the landing but brought down by the
+// spin (12 Hz with 2 sub-steps: the box 46° over, the far end lifted by -15.9 rad/s, the
+// other end met a sub-step after the impact, and the world's spin was -3.49 at the frame's
+// end).
+double second_corner_after(const theory::BoxLanding& landing, double width, double height,
+                           const theory::CornerImpact& impact, double g) {
+  double soonest = std::numeric_limits<double>::infinity();
+  for (const FarEnd& end : neighbours_of(landing, width, height)) {
+    const double end_speed = -(impact.vy + impact.omega * end.x);  // downward, m/s
+    const double end_root = end_speed + std::sqrt(end_speed * end_speed + 2.0 * g * std::max(end.rise, 0.0));
+    if (end_root > 0.0) soonest = std::min(soonest, 2.0 * std::max(end.rise, 0.0) / end_root);
+  }
+  return soonest;
+}
+
+// The box turning on the corner it hit, at (rx, ry) from its centre.
+struct CornerTurn {
+  // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
+  // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
+  // corner moves it; k_tn couples sliding to falling). 0 where the corner grips.
+  double swing = 0.0;
+  // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
+  // inertia about the corner: how fast the spin changes there, rad/s².
+  double pivot = 0.0;
+};
+
+CornerTurn corner_turn(double mass, double inertia, double mu_k, double g, double rx, double ry, bool grips) {
+  CornerTurn turn;
+  if (!grips) turn.swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
+  turn.pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
+  return turn;
+}
+
+// The rotation-locked twin, thrown level: it lands flat, with no lever arm, so only its sliding
+// and its fall are stopped; then it slides to rest under mu_k, c and b (never, with no dry
+// friction: drag alone only slows it, ever more slowly).
+struct LockedBox {
+  double landing_time = 0.0, speed_after_landing = 0.0, distance = 0.0, stop_time = 0.0;
+};
+
+LockedBox locked_box(const ThrownBox& box) {
+  const theory::BoxLanding flat = theory::box_landing(box.width, box.height, box.centre_height, 0.0, 0.0, box.g, box.clearance);
+  const theory::CornerImpact lands = theory::corner_impact(box.mass, box.inertia, 0.0, 0.0, box.flat_drag(box.speed),
+                                                           -box.g * flat.time, 0.0, box.mu_k, box.restitution);
+  const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, box.mass, box.drag, box.g);
+  return {flat.time, lands.vx, box.speed * flat.time + slide.distance, flat.time + slide.time};
+}
+
 }  // namespace
 
 // The thrown box and its rotation-locked twin: the landing of the lowest corner, the impact on
@@ -681,35 +733,12 @@ int thrown_box(lua_State* state) {
     const double hit_x = first.hit_x, hit_y = first.hit_y;
     const bool on_a_corner = corner != "lands flat";
     if (on_a_corner && !lands_flat) impact = box.through_frame(impact, landing.corner_x, landing.corner_y, first_met);
-    // The far end comes down too soon after the impact (falling at the impact's end speed, and
-    // under gravity): within a step or two a stepped world meets both corners in one step, and
-    // no single-corner impact describes what it shows.
-    // Either face through the corner may come down: the far end's, or, where the impact turns
-    // the box the other way, the other face's end, higher at the landing but brought down by the
-    // spin (12 Hz with 2 sub-steps: the box 46° over, the far end lifted by -15.9 rad/s, the
-    // other end met a sub-step after the impact, and the world's spin was -3.49 at the frame's
-    // end).
-    double second_corner = infinity;
-    if (on_a_corner && !lands_flat) {
-      for (const FarEnd& end : neighbours_of(landing, width, height)) {
-        const double end_speed = -(impact.vy + impact.omega * end.x);  // downward, m/s
-        const double end_root = end_speed + std::sqrt(end_speed * end_speed + 2.0 * g * std::max(end.rise, 0.0));
-        if (end_root > 0.0) second_corner = std::min(second_corner, 2.0 * std::max(end.rise, 0.0) / end_root);
-      }
-    }
+    const double second_corner =
+        on_a_corner && !lands_flat ? second_corner_after(landing, width, height, impact, g) : infinity;
     // (How far above reach the far end is when the corner is met: computed above.)
     const double far_above_reach = on_a_corner && !lands_flat ? reach_gap : infinity;
-    // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
-    // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
-    // corner moves it; k_tn couples sliding to falling).
-    double swing = 0.0, pivot = 0.0;
-    if (on_a_corner) {
-      const double rx = hit_x, ry = hit_y - 0.5 * clearance;
-      if (!impact.grips) swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
-      // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
-      // inertia about the corner: how fast the spin changes there, rad/s².
-      pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
-    }
+    const CornerTurn turn = on_a_corner ? corner_turn(mass, inertia, mu_k, g, hit_x, hit_y - 0.5 * clearance, impact.grips)
+                                        : CornerTurn{};
     // A world whose rounding puts the landing just past a step boundary meets the corner a step
     // after theory's meeting, turned and falling further, and one that puts it just before a
     // boundary, a step sooner: the spin those impacts leave (spin_after itself when step = 0 or it
@@ -720,13 +749,7 @@ int thrown_box(lua_State* state) {
                                                         landing.corner_x, landing.corner_y, late_by).omega;
     };
     const double late = met_at(first_met + step), early = met_at(first_met - step);
-    // The locked box lands flat: no lever arm, so only its sliding and its fall are stopped.
-    const theory::BoxLanding flat = theory::box_landing(width, height, centre_height, 0.0, 0.0, g, clearance);
-    const theory::CornerImpact lands = theory::corner_impact(mass, inertia, 0.0, 0.0, box.flat_drag(speed), -g * flat.time, 0.0,
-                                                             mu_k, restitution);
-    // Then it slides to rest under mu_k, c and b (never, with no dry friction: drag alone only
-    // slows it, ever more slowly).
-    const theory::SlideToRest slide = theory::slide_to_rest(lands.vx, mass, drag, g);
+    const LockedBox locked = locked_box(box);
     lua_createtable(state, 0, 19);
     set_number(state, "landing_time", landing.time);
     set_number(state, "landing_rounding", landing_rounding);
@@ -738,16 +761,16 @@ int thrown_box(lua_State* state) {
     set_number(state, "spin_after_a_step_early", early);
     set_number(state, "solver_shortfall", first.solver_shortfall);
     set_number(state, "rounding_spread", first.rounding_spread);
-    set_number(state, "pivot_acceleration", pivot);
+    set_number(state, "pivot_acceleration", turn.pivot);
     set_number(state, "second_corner_after", second_corner);
     set_number(state, "far_end_above_reach", far_above_reach);
-    set_number(state, "solver_swing", swing);
+    set_number(state, "solver_swing", turn.swing);
     set_number(state, "vx_after", impact.vx);
     set_number(state, "vy_after", impact.vy);
-    set_number(state, "locked_landing_time", flat.time);
-    set_number(state, "locked_speed_after_landing", lands.vx);
-    set_number(state, "locked_distance", speed * flat.time + slide.distance);
-    set_number(state, "locked_stop_time", flat.time + slide.time);
+    set_number(state, "locked_landing_time", locked.landing_time);
+    set_number(state, "locked_speed_after_landing", locked.speed_after_landing);
+    set_number(state, "locked_distance", locked.distance);
+    set_number(state, "locked_stop_time", locked.stop_time);
     return 1;
   });
 }
