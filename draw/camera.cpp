@@ -221,7 +221,17 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       framing_scale(framing, scene, kind, moving, size, free_width, strip_height, edge, scale, arrows);
   const float pixels_per_metre = framed.pixels_per_metre;
   const bool zoomed_in = framed.zoomed_in;
-  const b2Vec2 centre = framing_centre(kind, zoomed_in, view, scene, bodies, moving);
+  b2Vec2 centre = framing_centre(kind, zoomed_in, view, scene, bodies, moving);
+  if (kind == Kind::whole) {
+    // Not following what moves: a view that followed the block kept it still on the screen, and
+    // only the floor's hatching showed that it moved (a teacher's projector trial). The view
+    // stands still from where it framed the lesson at t = 0, and moves by a page when the
+    // lesson has moved half a page. A page is as far as the lesson can move from the view's
+    // centre with all of it still in view: it is at most 1/room of the view wide.
+    const float page = free_width / pixels_per_metre * (1.0f - 1.0f / room);
+    const float start = (zoomed_in ? framing.moving_centre : framing.lesson_centre).x;
+    centre.x = start + page * std::round((centre.x - start) / page);
+  }
 
   const b2AABB lesson = kind == Kind::whole && zoomed_in ? lesson_bounds(scene) : b2AABB{};
   std::vector<Camera> made;

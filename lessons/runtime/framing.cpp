@@ -144,6 +144,8 @@ WorldFraming WorldFraming::of(const Lesson& lesson) {
   }
   const b2AABB moving = moving_bounds(scene);
   framing.moving_span = moving.upperBound.x - moving.lowerBound.x;
+  framing.lesson_centre = box.GetCenter();
+  framing.moving_centre = moving.GetCenter();
   if (framing.view.kind == View::Kind::lanes) {
     for (const b2Body* body : view_bodies(scene, framing.view)) {
       // Only a body clear of its floor: one standing on it (on a slope, its lowest corner under

@@ -37,6 +37,9 @@ struct WorldFraming {
   float smallest_body = 0.0f;    // m, the longer side of the smallest moving body at t = 0
   float tallest_body = 0.0f;     // m, the height of the tallest moving body at t = 0 (lanes' scale)
   float moving_span = 0.0f;      // m, how wide what moves spread at t = 0 (lanes' scale)
+  // m, the centres of lesson_bounds and of moving_bounds at t = 0: a whole-lesson view stands
+  // still from there while the lesson moves across it, and turns a page when it nears an edge.
+  b2Vec2 lesson_centre{0.0f, 0.0f}, moving_centre{0.0f, 0.0f};
   // Per lane, at t = 0: the height of the fixed surface straight under its body's centre
   // (within ground_reach of its foot; NaN: none), and of the body's top. A body that starts in
   // the air (a thrown box) is framed with the floor it will land on.

@@ -57,6 +57,42 @@ TEST(View, FollowKeepsTheBodyAtTheSamePlaceOnTheScreen) {
   EXPECT_NEAR(camera.pixels_per_metre * 2.0f, layout.world_size.x - layout.inset_size.x, 1e-2);
 }
 
+// A view of the whole lesson does not follow what moves: following kept spring_pull's block
+// still on the screen, and only the floor's hatching showed that it moved (a teacher's projector
+// trial). It stands still while the block slides less than half a page, and then moves by whole
+// pages, the block in view all the while.
+TEST(View, AWholeLessonsViewStandsStillWhileTheBlockSlidesAcrossIt) {
+  lessons::ScriptFile script(lessons::with_heading(R"(
+pair { "wood", "wood", mu_s = 0.3, mu_k = 0.2 }
+local floor = ground { "floor", material = "wood" }
+local block = box { "block", material = "wood", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1, velocity = { 2, 0 } }
+)"));
+  lessons::Lesson lesson(script.path());
+  const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
+  const Camera first = cameras_of(lesson, framing).front();
+  const b2Body* block = lesson.scene().body("block");
+  const float start = block->GetWorldCenter().x;
+  // Three steps: about 3 cm, a tenth of the block, well under half a page of the 0.3 m block's
+  // view (a page is the view's width less the 1/1.45 of it the lesson fills: 13 cm).
+  lesson.step_to(3.0 / 240.0);
+  ASSERT_GT(block->GetWorldCenter().x - start, 0.02f);
+  const Camera early = cameras_of(lesson, framing).front();
+  EXPECT_FLOAT_EQ(early.centre.x, first.centre.x) << "the view followed the block";
+  EXPECT_NEAR(early.to_screen(block->GetWorldCenter()).x - first.to_screen(b2Vec2(start, 0.0f)).x,
+              (block->GetWorldCenter().x - start) * first.pixels_per_metre, 1e-2);
+  // It slides about 1 m (v²/(2·μk·g)) before it stops: several pages, in view at every step.
+  int pages_turned = 0;
+  float centre = first.centre.x;
+  for (int step = 4; step <= 240; ++step) {
+    lesson.step_to(step / 240.0);
+    const Camera camera = cameras_of(lesson, framing).front();
+    EXPECT_TRUE(inside(camera, camera.to_screen(block->GetWorldCenter()))) << "at step " << step;
+    if (camera.centre.x != centre) ++pages_turned, centre = camera.centre.x;
+  }
+  EXPECT_GE(pages_turned, 3);
+  EXPECT_GT(block->GetWorldCenter().x - start, 0.9f);
+}
+
 TEST(View, AWindowShowsItsCornersAndFillsOneSide) {
   lessons::ScriptFile script(two_blocks(R"(view { window = { -1, -0.5, 5, 3.5 } })"));
   lessons::Lesson lesson(script.path());
