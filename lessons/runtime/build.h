@@ -117,7 +117,7 @@ struct LessonBuild {
     long frame = 0;
   };
   std::optional<RowsAtEnd> rows_at_end;
-  std::optional<double> end_time;  // the lesson's duration, read once for the check each step
+  std::optional<double> end_time;  // the lesson's duration, read once (until a live value changes it)
   std::vector<Prediction> predictions;
   std::vector<int> every_step;
   bool lua_probes = false;  // some probe is a Lua function

@@ -260,6 +260,36 @@ TEST(LessonParameters, ACoefficientChangesTheRunningLessonAndAStructuralOneRebui
   EXPECT_EQ(lesson.parameter("mu_s").value, 0.35);
 }
 
+// A duration function is the sliders' (lesson.md): it is called once, not at each read, and
+// again after a slider read inside it moves. tipping_box's integrates the tipping in 1 ms steps,
+// and a rehearsal that called it at every one of 8 400 steps took 13 s at its lowest push rate.
+TEST(LessonParameters, ADurationFunctionIsReadOnceUntilAValueChanges) {
+  ScriptFile script(R"(
+local calls = 0
+lesson { title = "counted", question = "?", duration = function() calls = calls + 1; return 1 + param.mu_s end }
+pair { "wood", "asphalt" }
+local floor = ground { material = "asphalt" }
+local block = box { "block", material = "wood", width = 0.4, height = 0.2, on = floor }
+expect { "duration calls", predicted = 0, tolerance = 1e9, measured = function() return calls end }
+)");
+  Lesson lesson(script.path());
+  const auto calls = [&] {
+    for (const ExpectationResult& row : lesson.expectations()) {
+      if (row.name == "duration calls") return row.measured;
+    }
+    return -1.0;
+  };
+  const double before = calls();
+  for (int i = 0; i < 100; ++i) EXPECT_DOUBLE_EQ(lesson.duration(), 1.55);  // the wood–asphalt preset's mu_s
+  run_for(lesson, 0.5);
+  EXPECT_LE(calls() - before, 1.0);
+  lesson.set("mu_s", "0.7");
+  EXPECT_DOUBLE_EQ(lesson.duration(), 1.7);
+  const double after = calls();
+  for (int i = 0; i < 100; ++i) lesson.duration();
+  EXPECT_EQ(calls(), after);
+}
+
 // A block at rest on a slope with nothing but gravity on it is let sleep (Scene's rest); a
 // slider lowering mu_s below tan θ must still set it sliding in the running lesson.
 TEST(LessonParameters, ACoefficientChangeWakesABlockRestingOnStaticFriction) {
