@@ -338,7 +338,18 @@ std::vector<SeriesLook> series_looks(const lessons::Lesson& lesson, const lesson
     }
     return false;
   };
+  // A probe drawn like a material (probe{ like = ... }): its colour as a line that stands out on
+  // the plot; a second like the same material dashed.
   for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    const std::string& material = lesson.probe_like(plot.y[k]);
+    if (material.empty()) continue;
+    const ImU32 colour =
+        line_like(material_colour(theme, material, lesson.scene().pairs().find_material(material)), theme.panel);
+    looks[k] = taken(SeriesLook{colour}) ? SeriesLook{colour, series_dash, series_gap} : SeriesLook{colour};
+    given[k] = true;
+  }
+  for (std::size_t k = 0; k < plot.y.size(); ++k) {
+    if (given[k]) continue;
     const std::optional<ForceKind> kind = lesson.probe_force(plot.y[k]);
     if (!kind) continue;
     const ImU32 own = theme.force[static_cast<int>(*kind)], shade = theme.second_force[static_cast<int>(*kind)];

@@ -183,6 +183,31 @@ ImU32 readable_ink(ImU32 ink, ImU32 background) {
   return toward;
 }
 
+ImU32 line_like(ImU32 fill, ImU32 background) {
+  constexpr double wcag_non_text = 3.0;
+  const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(fill);
+  float hue = 0.0f, saturation = 0.0f, value = 0.0f;
+  ImGui::ColorConvertRGBtoHSV(colour.x, colour.y, colour.z, hue, saturation, value);
+  // A pale fill's hue made strong (ice's pale blue a blue): darkened as it was, three pale
+  // fills all came out grey. A grey (asphalt) stays grey.
+  if (saturation >= 0.15f) saturation = std::max(saturation, 0.7f);
+  const bool darken = relative_luminance(background) > 0.18;
+  for (int step = 0; step < 40; ++step) {
+    float red = 0.0f, green = 0.0f, blue = 0.0f;
+    ImGui::ColorConvertHSVtoRGB(hue, saturation, value, red, green, blue);
+    const ImU32 line = ImGui::ColorConvertFloat4ToU32(ImVec4(red, green, blue, 1.0f));
+    if (contrast_ratio(line, background) >= wcag_non_text) return line;
+    if (darken) {
+      value *= 0.93f;
+    } else if (value < 1.0f) {
+      value = std::min(1.0f, value + 0.05f);
+    } else {
+      saturation *= 0.9f;  // as bright as it goes: paler
+    }
+  }
+  return readable_ink(fill, background);
+}
+
 ImU32 material_colour(const Theme& theme, const std::string& material, int index) {
   const bool dark = theme.name == ThemeName::dark;
   struct Look {

@@ -54,6 +54,11 @@ double contrast_ratio(ImU32 a, ImU32 b);
 // value is written in its arrow's colour; vermilion friction on white read 4.3:1.
 ImU32 readable_ink(ImU32 ink, ImU32 background);
 
+// A material's fill as a plot's line (probe{ like = ... }): its hue, made strong where it has
+// one, dark enough (light enough, on a dark theme) to stand 3:1 from `background`, WCAG 2.1's
+// contrast for what is not text.
+ImU32 line_like(ImU32 fill, ImU32 background);
+
 // A material's fill colour: known materials by look (wood brown, ice pale blue), others from
 // a palette by the order they were declared in.
 ImU32 material_colour(const Theme& theme, const std::string& material, int index);

@@ -90,8 +90,9 @@ for i, surface in ipairs { "asphalt", "grass", "ice", "smooth" } do
   boxes[i] = box { name, material = "wood", width = 0.5, height = 0.2, on = placed.on, at = placed.at,
                    x = placed.x, y = placed.y, angle = placed.angle, mass = mass,
                    velocity = { launch_speed * up[1], launch_speed * up[2] } }
-  probe { name .. "_distance", unit = "m", read = { boxes[i], "distance", along = up } }
-  probe { name .. "_speed", unit = "m/s", read = { boxes[i], "speed", along = up } }
+  -- Each box's curves in its lane's surface's colour, so that the class matches them to the lanes.
+  probe { name .. "_distance", unit = "m", like = surface, read = { boxes[i], "distance", along = up } }
+  probe { name .. "_speed", unit = "m/s", like = surface, read = { boxes[i], "speed", along = up } }
 end
 local hack_box = boxes[4]
 -- A strip per surface, each on its box, all with one scale: where each stops compares across.

@@ -34,6 +34,9 @@ struct ProbeInfo {
   // force, an applied force, a spring, a rope), or its probe{ force = "friction" } states for a
   // function: plots draw it in the arrows' colour.
   std::optional<ForceKind> force;
+  // probe{ like = "grass" }: a material of the lesson whose colour plots draw it in (terrain's
+  // distances, each in its lane's surface's colour); "" for the plot's own colours.
+  std::string like;
 };
 
 // Each part is a Lua value kept in the registry: a constant or a function to call.

@@ -409,6 +409,13 @@ std::optional<ForceKind> Lesson::probe_force(const std::string& probe) const {
   throw InvalidInput("no probe '" + probe + "' in " + path_);
 }
 
+const std::string& Lesson::probe_like(const std::string& probe) const {
+  for (const ProbeInfo& info : current_->probes) {
+    if (info.name == probe) return info.like;
+  }
+  throw InvalidInput("no probe '" + probe + "' in " + path_);
+}
+
 void Lesson::step_to(double t) {
   while (!reached(t)) step();
 }

@@ -249,6 +249,8 @@ class Lesson {
   // or fy an applied force; a spring's, a rope's pull); nothing for a probe computed by a
   // function or sampled, whose kind no reading says, nor for what is no force.
   std::optional<ForceKind> probe_force(const std::string& probe) const;
+  // The material a probe is drawn like (probe{ like = ... }), "" for none.
+  const std::string& probe_like(const std::string& probe) const;
 
   // One frame: the scene's step, then the script's every-step functions. A script error stops
   // the lesson (failed() is true until a rebuild) and is thrown as ScriptError.

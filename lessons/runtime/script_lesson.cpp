@@ -583,7 +583,7 @@ int probe(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "probe");
     LessonBuild& build = build_of(state);
-    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay", "label", "force"});
+    Fields fields(state, 1, "probe", {"unit", "read", "samples", "every", "delay", "label", "force", "like"});
     const std::string name = fields.name();
     if (name == "time" || name == "t") throw InvalidInput(fields.what() + ": the name is taken by the time itself");
     const std::string unit = fields.text("unit", "");
@@ -600,6 +600,18 @@ int probe(lua_State* state) {
         allowed += (kind == 0 ? "" : ", ") + std::string(kind_word);
       }
       if (!stated_force) throw InvalidInput(fields.what() + ": force = \"" + word + "\" is no kind of force; give one of " + allowed);
+    }
+    // like = "grass": drawn in a material's colour, a curve the class matches to a surface.
+    const std::string like = fields.text("like", "");
+    if (fields.has("like") && build.scene->pairs().find_material(like) < 0) {
+      std::string known;
+      const PairTable& table = build.scene->pairs();
+      for (int id = 0; id < table.material_count(); ++id) known += (id == 0 ? "" : ", ") + table.material(id).name;
+      throw InvalidInput(fields.what() + ": like = \"" + like + "\" is no material of this lesson (yet); its materials: " +
+                         (known.empty() ? "none" : known));
+    }
+    if (fields.has("like") && stated_force) {
+      throw InvalidInput(fields.what() + ": a force is drawn in its arrows' colour; give force or like, not both");
     }
     const size_t index = build.probes.size();
     lua_rawgeti(state, 1, 2);
@@ -622,7 +634,7 @@ int probe(lua_State* state) {
       const double every = fields.number_in("every", "s", 0.0, 1e6, true);
       const double delay = fields.number_in("delay", "s", 0.0, 0.0, 1e6);
       build.scene->add_probe(name, sampled_reading(build, reference, every, delay, fields.what()));
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, stated_force});
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, stated_force, like});
       return 0;
     }
     if (fields.has("read")) {
@@ -631,7 +643,10 @@ int probe(lua_State* state) {
       std::optional<ForceKind> force;
       build.scene->add_probe(name, reading(state, -1, fields.what(), &force));
       lua_pop(state, 1);
-      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, force});
+      if (force && !like.empty()) {
+        throw InvalidInput(fields.what() + ": a force is drawn in its arrows' colour; leave like out");
+      }
+      build.probes.push_back({name, unit, LUA_NOREF, "", 0.0, label, force, like});
       return 0;
     }
     lua_rawgeti(state, 1, 2);
@@ -644,7 +659,7 @@ int probe(lua_State* state) {
     const int reference = luaL_ref(state, LUA_REGISTRYINDEX);
     LessonBuild* owner = &build;
     build.scene->add_probe(name, [owner, index] { return owner->probes[index].value; });
-    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label, stated_force});
+    build.probes.push_back({name, unit, reference, "probe '" + name + "'", 0.0, label, stated_force, like});
     build.lua_probes = true;
     return 0;
   });

@@ -1363,6 +1363,32 @@ TEST(PlotColours, AForceReadFromTheWorldIsDrawnInItsArrowsColour) {
   EXPECT_GT(dashed_seen, 0) << "no plot has more curves than colours: the dashes are not tested";
 }
 
+// terrain's curves in the colours of their lanes' surfaces (probe{ like = ... }): the teacher's
+// trial read the grass box's orange curve against a green lane. Each is its material's hue, a
+// line that stands 3:1 from the plot (WCAG 2.1's non-text contrast), and no two alike.
+TEST(PlotColours, AProbeLikeAMaterialIsDrawnInThatMaterialsColour) {
+  LessonAt at("terrain", {}, 0.0);
+  for (const ThemeName name : {ThemeName::light, ThemeName::dark}) {
+    const Theme& colours = theme(name);
+    const Chart chart = plot_chart(*at.lesson, 0, at.lesson->duration(), colours);
+    const char* const surfaces[] = {"asphalt", "grass", "ice", "smooth"};
+    ASSERT_EQ(chart.series.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::string where = std::string(surfaces[k]) + ", " + std::string(theme_name(name));
+      EXPECT_EQ(at.lesson->probe_like(at.lesson->plots()[0].y[k]), surfaces[k]) << where;
+      const ImU32 fill = material_colour(colours, surfaces[k], at.scene().pairs().find_material(surfaces[k]));
+      EXPECT_EQ(chart.series[k].colour, line_like(fill, colours.panel)) << where;
+      EXPECT_GE(contrast_ratio(chart.series[k].colour, colours.panel), 3.0) << where;
+      // The hue kept: the line's strongest channel is the fill's (grass green, ice blue).
+      const ImVec4 a = ImGui::ColorConvertU32ToFloat4(fill), b = ImGui::ColorConvertU32ToFloat4(chart.series[k].colour);
+      const auto strongest = [](const ImVec4& c) { return c.x >= c.y && c.x >= c.z ? 0 : c.y >= c.z ? 1 : 2; };
+      if (std::max({a.x, a.y, a.z}) - std::min({a.x, a.y, a.z}) > 0.1f) {
+        EXPECT_EQ(strongest(a), strongest(b)) << where;
+      }
+    }
+  }
+}
+
 // friction_models' three frictions: friction's colour, its shade dashed, then friction's colour in
 // dashes longer than any theory curve's pattern (so that it is read as measured, not as a law).
 TEST(PlotColours, AThirdForceOfAKindIsDashedInItsColour) {
