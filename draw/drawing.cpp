@@ -405,7 +405,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   PlacedForce placed{arrow, text, ImVec2(0.0f, 0.0f), std::nullopt, std::nullopt, false};
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   if (text.empty()) {
-    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body});
+    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body, !arrow.to_scale});
     placed.beside = true;  // nothing to read
     return placed;
   }
@@ -430,7 +430,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   placed.beside = placed.at && (with_leader ? labels.nearest_to_own(*placed.at, placed.size, own)
                                             : labels.beside(*placed.at, placed.size, own));
   const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
-  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body});
+  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body, !arrow.to_scale});
   return placed;
 }
 

@@ -122,6 +122,9 @@ class LabelPlacer {
     // beside the arrow (beside()), so that the value is read as this arrow's and no other's.
     std::optional<DrawnSegment> leader;
     const b2Body* body = nullptr;  // the body it acts on
+    // Drawn longer than to scale, its shaft broken (ScreenArrow::to_scale false), as the legend
+    // says of the forces under its number.
+    bool broken = false;
   };
   void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
   const std::vector<ForceLabel>& force_labels() const { return force_labels_; }

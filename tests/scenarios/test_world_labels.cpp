@@ -699,10 +699,10 @@ void each_projector_lane(const std::function<void(const std::string& where, cons
 }
 
 // One lesson in the window in projector mode at 1920 × 1080, light, with `set` (as --set), run to
-// each of `times`: the first lane's record at each, with where (" at 2.20 s").
-void projector_lane_at(const std::string& lesson, const std::map<std::string, std::string>& set, std::vector<double> times,
-                       const std::function<void(const std::string& where, const draw::FrameRecord::Lane& lane,
-                                                const lessons::Lesson& at)>& check) {
+// each of `times`: the frame's record at each, with where (" at 2.20 s").
+void projector_frames_at(const std::string& lesson, const std::map<std::string, std::string>& set, std::vector<double> times,
+                         const std::function<void(const std::string& where, const draw::FrameRecord& record,
+                                                  const lessons::Lesson& at)>& check) {
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
@@ -719,9 +719,19 @@ void projector_lane_at(const std::string& lesson, const std::map<std::string, st
     std::snprintf(when, sizeof when, " at %.2f s", t);
     std::string where = lesson + when;
     for (const auto& [name, value] : set) where += ", " + name + " = " + value;
-    ASSERT_FALSE(record.lanes.empty()) << where;
-    check(where, record.lanes.front(), window.playback().lesson());
+    check(where, record, window.playback().lesson());
   }
+}
+
+// The same, the first lane's record.
+void projector_lane_at(const std::string& lesson, const std::map<std::string, std::string>& set, std::vector<double> times,
+                       const std::function<void(const std::string& where, const draw::FrameRecord::Lane& lane,
+                                                const lessons::Lesson& at)>& check) {
+  projector_frames_at(lesson, set, std::move(times),
+                      [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson& at) {
+                        ASSERT_FALSE(record.lanes.empty()) << where;
+                        check(where, record.lanes.front(), at);
+                      });
 }
 
 // Checks one lane: each friction's arrow starts at its contact's dot's rim (within the 1.5 px
@@ -788,6 +798,52 @@ TEST(ForceArrows, AFrictionStartsAtItsContactWithNoOtherArrowOverItsStart) {
     for (const draw::FrameRecord::Lane& lane : record.lanes) checked += check_friction_starts_at_its_contact(lesson + when, lane, at);
   });
   EXPECT_GE(checked, 40);
+}
+
+// The legend's number is where the world's arrows turn to dashes, and it holds all through the
+// run (a teacher's trial on a projector, issue 31). Push at 0.5 to 1 s drew its 1.99 N push and
+// friction solid, 27.9 px (the drawing counted a length within half a pixel of the legible 28 px
+// as to scale), under a legend saying "under 2.02 N: longer, dashed"; and the legend's words
+// changed as the run played ("all arrows to scale" by 3 s). Push, spring_pull and tipping_box in
+// the window in projector mode at 1920 × 1080 from 0.2 s to their ends: the legend says
+// "under X N:" at every moment, the same X, and each arrow is drawn broken exactly where its
+// printed value is under X (a value within a unit of its last printed digit of X is not judged:
+// both are rounded to three figures).
+TEST(ForceArrows, TheLegendsNumberIsWhereArrowsTurnToDashesAllThroughTheRun) {
+  int judged = 0, broken = 0;
+  for (const char* lesson : {"push", "spring_pull", "tipping_box"}) {
+    std::vector<double> times = {0.2, 0.5, 0.6, 0.75, 0.9, 1.0, 1.5, 2.0, 2.5};
+    const double end = draw::LessonAt(lesson, {}, 0.0).lesson->duration();
+    for (double t = 3.0; t <= end + 1e-9; t += 1.0) times.push_back(t);
+    std::string said;
+    projector_frames_at(lesson, {}, times, [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson&) {
+      std::string under;
+      for (const draw::ShownText& text : record.texts) {
+        if (text.text.rfind("under ", 0) == 0) under = text.text;
+        EXPECT_EQ(text.text.find("to scale"), std::string::npos) << where << ": the legend says \"" << text.text << "\"";
+      }
+      ASSERT_FALSE(under.empty()) << where << ": the legend does not say under which force arrows are drawn longer";
+      if (said.empty()) said = under;
+      EXPECT_EQ(under, said) << where << ": the legend's words changed during the run";
+      const double below = std::strtod(under.c_str() + 6, nullptr);
+      const double step = draw::printed_number(below).step;
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+          if (force.text.empty() || force.text.find("in all") != std::string::npos) continue;
+          const double value = std::strtod(force.text.c_str(), nullptr);
+          if (std::abs(value - below) <= step + draw::printed_number(value).step) continue;
+          EXPECT_EQ(force.broken, value < below)
+              << where << ": the " << draw::force_kind_name(force.kind) << " " << force.text << " is drawn "
+              << (force.broken ? "dashed" : "solid") << ", " << length(sub(force.arrow.to, force.arrow.from)) << " px, under \""
+              << under << "\"";
+          ++judged;
+          broken += force.broken ? 1 : 0;
+        }
+      }
+    });
+  }
+  EXPECT_GE(judged, 80);
+  EXPECT_GE(broken, 4);  // some are drawn dashed: the test is not empty
 }
 
 // Every force arrow of every built-in lesson at its defaults, in the window in projector mode at
