@@ -36,6 +36,12 @@ struct ScreenArrow {
   // take it for to scale (issue 31: push's lengthened 2.94 N friction and 4.99 N push looked
   // nearly alike, and a class reads the picture, not the legend).
   bool to_scale = true;
+  // Whether it lies over a fill it does not stand out from (under 3:1 against its colour,
+  // mark_arrows_over_their_like in world_view.cpp): it is then drawn on a plate of its outline's
+  // colour (draw_arrow's `plate`), as a value lies on its box. driven_wheel's dark grey weight on
+  // its dark rubber wheel showed only its thin outline, read as an empty arrow (a teacher's trial,
+  // issue 31); an outline a shaft wide each side read the same, a white arrow with a dark core.
+  bool over_its_like = false;
   float length() const;
 };
 // The shortest arrow drawn at text scale `scale`: one whose head can be seen. It grows with the

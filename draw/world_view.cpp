@@ -431,6 +431,49 @@ void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
   }
 }
 
+// Marks each arrow that lies over a fill it does not stand out from: a body, a ground's slab or
+// the sky under 3:1 against its colour (WCAG 2.1's non-text contrast), tested every half
+// thickness along its shaft and just past its outline either side. Its thin outline alone showed driven_wheel's dark grey weight on
+// the dark rubber wheel as an empty arrow (a teacher's trial, issue 31); such an arrow is drawn
+// on a plate (draw_arrow's `plate`). For every arrow and fill, not for one lesson.
+void mark_arrows_over_their_like(std::vector<ScreenArrow>& arrows, const Scene& scene, const Camera& camera,
+                                 const Theme& theme, float thickness) {
+  for (ScreenArrow& arrow : arrows) {
+    const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
+    const auto like = [&](ImU32 fill) { return contrast_ratio(colour, fill) < 3.0; };
+    const int samples = std::max(2, static_cast<int>(arrow.length() / (0.5f * thickness)));
+    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
+    // Along its centre line and just past its outline each side: a friction along a floor's
+    // surface lies half over the floor.
+    const ImVec2 beside = mul(ImVec2(-unit.y, unit.x), 0.5f * thickness + arrow_halo_width(thickness) + 1.0f);
+    for (int k = 0; k <= 3 * samples + 2 && !arrow.over_its_like; ++k) {
+      const ImVec2 on_line = add(arrow.tail, mul(sub(arrow.tip, arrow.tail), static_cast<float>(k / 3) / static_cast<float>(samples)));
+      const ImVec2 at = k % 3 == 0 ? on_line : k % 3 == 1 ? add(on_line, beside) : sub(on_line, beside);
+      const b2Vec2 point = camera.to_world(at);
+      // What is drawn there: the topmost fixture's fill (moving bodies are drawn over fixed ones),
+      // else the sky.
+      std::optional<ImU32> fill;
+      for (const b2Body* body = scene.world().GetBodyList(); body != nullptr; body = body->GetNext()) {
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+          bool inside = false;
+          if (lessons::is_ground(fixture)) {
+            // A ground's slab is drawn as its box, its top the surface (draw_ground); a strip's edge draws none.
+            if (fixture->GetType() == b2Shape::e_edge) continue;
+            const b2AABB& box = fixture->GetAABB(0);
+            const float skin = fixture->GetShape()->m_radius;
+            inside = point.x >= box.lowerBound.x && point.x <= box.upperBound.x && point.y >= box.lowerBound.y + skin &&
+                     point.y <= box.upperBound.y - skin;
+          } else {
+            inside = fixture->TestPoint(point);
+          }
+          if (inside && (!fill || body->GetType() == b2_dynamicBody)) fill = fixture_colour(scene, fixture, theme);
+        }
+      }
+      arrow.over_its_like = like(fill.value_or(theme.sky));
+    }
+  }
+}
+
 // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
 // longest (each foot's own value is a probe away). One label per foot crowds the picture.
 std::vector<std::string> force_value_texts(const std::vector<ScreenArrow>& arrows) {
@@ -585,6 +628,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   start_frictions_past_their_dots(arrows, marks, camera, mark_radius);
   const float thickness = world_arrow_thickness(fonts.scale);
   uncross_arrows(arrows, thickness);
+  mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);

@@ -1043,6 +1043,58 @@ TEST(ForceArrows, TheOutlineIsDrawnRoundTheShaft) {
   }
 }
 
+// Every arrow stands out from a surround as wide as its shaft, whatever it lies over: driven_wheel's
+// dark grey weight on its dark rubber wheel showed only its thin white outline at 1 s on a
+// projector, read as an empty arrow (a teacher's trial, issue 31). Across each force's shaft at
+// its middle, every pixel from the shaft's edge to a thickness beyond it, on both sides, differs
+// from the arrow's colour 3:1 or more (WCAG 2.1's non-text contrast): the arrow's outline, its
+// plate where it lies over a fill like its colour, or the fill itself where that stands apart.
+// Lessons whose arrows lie over bodies, floors and slopes, in both themes, at projector size.
+TEST(ForceArrows, EachStandsOutFromASurroundAsWideAsItsShaft) {
+  const Screen& screen = screens[3];
+  int checked = 0;
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    draw::HeadlessRenderer renderer(screen.width, screen.height, name, screen.scale);
+    const draw::Theme& colours = draw::theme(name);
+    for (const auto& [lesson, t] : {std::pair{"driven_wheel", 1.0}, std::pair{"spring_pull", 1.0}, std::pair{"push", 2.5},
+                                    std::pair{"tipping_box", 2.2}, std::pair{"incline", 1.0}}) {
+      draw::LessonAt at(lesson, {}, t);
+      draw::FrameRecord record;
+      const draw::Image image = renderer.render(*at.lesson, at.framing, &record);
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+          // A leader to its value leaves the shaft in the arrow's own colour.
+          if (force.leader) continue;
+          const draw::DrawnSegment& shaft = force.arrow;
+          const ImU32 colour = colours.force[static_cast<int>(force.kind)];
+          const float span = length(sub(shaft.to, shaft.from));
+          const ImVec2 unit = mul(sub(shaft.to, shaft.from), 1.0f / span), across(-unit.y, unit.x);
+          // The middle of the shaft's part before the head (draw_arrow's: four thicknesses, at most 0.6 of the arrow).
+          const float thickness = 2.0f * shaft.half_width;
+          const float head = std::min(4.0f * thickness, 0.6f * span);
+          const ImVec2 middle = add(shaft.from, mul(unit, 0.5f * (span - head)));
+          // A broken shaft's dash or gap there: the surround is judged beside it all the same.
+          double worst = 1e9;
+          ImVec2 where(0.0f, 0.0f);
+          for (const float side : {1.0f, -1.0f}) {
+            for (float out = shaft.half_width + 1.0f; out <= shaft.half_width + thickness; out += 1.0f) {
+              const ImVec2 p = add(middle, mul(across, side * out));
+              const std::uint8_t* pixel = image.pixel(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)));
+              const double ratio = draw::contrast_ratio(IM_COL32(pixel[0], pixel[1], pixel[2], 255), colour);
+              if (ratio < worst) worst = ratio, where = p;
+            }
+          }
+          EXPECT_GE(worst, 3.0) << lesson << " at " << t << " s, " << draw::theme_name(name) << ": beside the "
+                                << draw::force_kind_name(force.kind) << " " << force.text << "'s shaft at (" << where.x << ", "
+                                << where.y << ") the picture is " << worst << ":1 against the arrow";
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 30);
+}
+
 // The speed readout of a body at the world view's left edge, with projector text: centred over
 // the body it would start left of the view; the placer moves it in, and used to stop at the
 // lane's edge, where the world's panel clips 10 px (half its padding) and the readout lost its
