@@ -334,7 +334,8 @@ void draw_label(ImDrawList* draw, ImFont* font, ImVec2 centre, ImU32 colour, ImU
   draw->AddText(font, font->FontSize, corner, colour, text);
 }
 
-void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo, bool broken) {
+void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo, bool broken,
+                bool plate) {
   const ImVec2 along = sub(tip, tail);
   const float span = length(along);
   if (span < 1e-3f) return;
@@ -359,6 +360,12 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
     // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
     // grown about its incentre, which moves each edge out by the same width.
     const float width = arrow_halo_width(thickness);
+    if (plate) {
+      // A strip the head's width and the outline's past it each side, and past the tail and the tip.
+      const ImVec2 side = mul(across, 0.45f * head + width), back = mul(unit, width);
+      const ImVec2 from = sub(tail, back), to = add(tip, back);
+      draw->AddQuadFilled(add(from, side), add(to, side), sub(to, side), sub(from, side), halo);
+    }
     const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
     const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
     const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
@@ -405,7 +412,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   PlacedForce placed{arrow, text, ImVec2(0.0f, 0.0f), std::nullopt, std::nullopt, false};
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   if (text.empty()) {
-    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body});
+    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body, !arrow.to_scale});
     placed.beside = true;  // nothing to read
     return placed;
   }
@@ -430,13 +437,14 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   placed.beside = placed.at && (with_leader ? labels.nearest_to_own(*placed.at, placed.size, own)
                                             : labels.beside(*placed.at, placed.size, own));
   const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
-  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body});
+  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body, !arrow.to_scale});
   return placed;
 }
 
 void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness) {
   const ImU32 colour = theme.force[static_cast<int>(placed.arrow.force.kind)];
-  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness, theme.arrow_halo, !placed.arrow.to_scale);
+  draw_arrow(draw, placed.arrow.tail, placed.arrow.tip, colour, thickness, theme.arrow_halo, !placed.arrow.to_scale,
+             placed.arrow.over_its_like);
   if (placed.leader) draw->AddLine(placed.leader->from, placed.leader->to, colour, 2.0f * placed.leader->half_width);
   if (placed.at) draw_label(draw, font, *placed.at, colour, theme.panel, placed.text.c_str());
 }

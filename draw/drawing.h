@@ -122,6 +122,9 @@ class LabelPlacer {
     // beside the arrow (beside()), so that the value is read as this arrow's and no other's.
     std::optional<DrawnSegment> leader;
     const b2Body* body = nullptr;  // the body it acts on
+    // Drawn longer than to scale, its shaft broken (ScreenArrow::to_scale false), as the legend
+    // says of the forces under its number.
+    bool broken = false;
   };
   void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
   const std::vector<ForceLabel>& force_labels() const { return force_labels_; }
@@ -198,8 +201,10 @@ DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
 // With `halo` (not 0), outlined in it first, arrow_halo_width(thickness) wide: a force's arrow
 // drawn over a body of about its own lightness is still seen (Theme::arrow_halo). `broken`: the
 // shaft in dashes, for an arrow drawn longer than to scale (ScreenArrow::to_scale).
+// `plate`: on a plate of the halo's colour as well, a strip as wide as the head and its outline
+// from the tail to the tip, as a value's text lies on its box (ScreenArrow::over_its_like).
 void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0,
-                bool broken = false);
+                bool broken = false, bool plate = false);
 // A broken shaft's dashes and gaps, px, for arrows `thickness` thick: half a thickness each, so
 // that the shortest arrow the world draws (legible_arrow_pixels: four thicknesses, of which the
 // head takes 0.6) still shows a gap between two dashes, 3.5 px each on a projector. Dashes a

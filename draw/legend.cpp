@@ -15,12 +15,9 @@ namespace frictionlab::draw {
 
 namespace {
 
-// The words arrow_scale_words puts together.
-constexpr const char* all_arrows = "all arrows";
 // The lengthened arrows' shafts are broken (draw_arrow): the words say so, so that the class
 // can tell them from the picture alone.
-constexpr const char* drawn_longer = "longer, dashed";
-constexpr const char* to_scale = "to scale";
+constexpr const char* longer_dashed = "longer, dashed";
 // The key to a torque's curved arrow.
 constexpr const char* torque_word = "torque";
 
@@ -120,7 +117,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   std::snprintf(scale_text, sizeof scale_text, "= %g N", static_cast<double>(newtons));
   // Where the scale stops being linear, said beside it: the world draws a force smaller than this
   // longer than to scale (legible_arrow_pixels), its value giving its size.
-  const ArrowScaleWords words = arrow_scale_words(scene, newtons_to_pixels, s);
+  const ArrowScaleWords words = arrow_scale_words(newtons_to_pixels, s);
   const std::string& lengthened = words.first;
   const std::string& not_to_scale = words.second;
   float arrows_end = left;
@@ -247,18 +244,8 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   for (const auto& [colour, material] : materials) chip(colour, material, false);
 }
 
-ArrowScaleWords arrow_scale_words(const Scene& scene, float newtons_to_pixels, float scale) {
-  const float below = not_to_scale_below(newtons_to_pixels, scale);
-  bool under = false, over = false;
-  for (const auto& [name, body] : scene.bodies()) {
-    for (const ForceOnBody& force : forces_on(scene, body)) {
-      const float size = force.force.Length();
-      if (size == 0.0f) continue;  // no arrow
-      (size < below ? under : over) = true;
-    }
-  }
-  if (under && over) return {"under " + format_quantity(below, "N") + ":", drawn_longer};
-  return {all_arrows, under ? drawn_longer : to_scale};
+ArrowScaleWords arrow_scale_words(float newtons_to_pixels, float scale) {
+  return {"under " + format_quantity(not_to_scale_below(newtons_to_pixels, scale), "N") + ":", longer_dashed};
 }
 
 float legend_column_width(const Scene& scene, const Fonts& fonts) {
@@ -269,7 +256,7 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   // run goes on; the arrows' scale at its longest (40 pt: rounded down in a column) with a
   // four-digit value; the states' words and the materials' names after their marks.
   float widest = std::max(46.0f * s + width_of("= 1000 N"), width_of("under 1000 N:"));
-  for (const char* words : {all_arrows, drawn_longer, to_scale}) widest = std::max(widest, width_of(words));
+  widest = std::max(widest, width_of(longer_dashed));
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
   }

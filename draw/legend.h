@@ -19,13 +19,15 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
                  const Theme& theme, const Fonts& fonts, float newtons_to_pixels);
 
 // What the legend says of the arrows' lengths beside their scale, as two lines (a column's; a
-// strip joins them): the world draws a force under not_to_scale_below longer than to scale
-// (drawn_arrow_pixels in overlays.h). Where the picture has forces under it and others not,
-// "under 12.4 N:" "longer, dashed"; where every force is under it, "all arrows" "longer, dashed";
-// where none is, "all arrows" "to scale". ("under 12.4 N: not to scale" read oddly on push,
-// whose every force, its 9.81 N weight the largest, is under 12.4 N: issue 31.)
+// strip joins them): "under 2.02 N:" "longer, dashed", the force under which the world draws an
+// arrow longer than to scale, broken (not_to_scale_below, drawn_longer in overlays.h). It
+// depends on the lesson's arrow scale alone, the same all through a run, so the legend does not
+// change under the class's eyes: it said "all arrows to scale" or "under 2.02 N: ..." by the
+// forces of the moment, and push's changed from one to the other as it played (a teacher's
+// trial, issue 31). Every lesson's forces may come under it (a friction grows from nothing
+// under a push that grows; a body comes to rest), and where none does the words are still true.
 using ArrowScaleWords = std::pair<std::string, std::string>;
-ArrowScaleWords arrow_scale_words(const Scene& scene, float newtons_to_pixels, float scale);
+ArrowScaleWords arrow_scale_words(float newtons_to_pixels, float scale);
 
 // The width a column legend needs for the scene, the same all through its run.
 float legend_column_width(const Scene& scene, const Fonts& fonts);

@@ -58,15 +58,15 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
     const ImVec2 at = camera.to_screen(force.point);
     // Too short to see at the scale: as long as an arrowhead needs, its label giving its size;
     // with a legible length asked for, lengthened in order.
-    const float drawn = std::max(drawn_arrow_pixels(size, pixels_per_newton, shortest), shortest_arrow_pixels(scale));
+    const float legible = std::max(shortest, shortest_arrow_pixels(scale));
+    const float drawn = drawn_arrow_pixels(size, pixels_per_newton, legible);
     const ImVec2 reach(force.force.x / size * drawn, -force.force.y / size * drawn);
     // A push on a body's face ends there, its tail outside: drawn from the face, it lay inside
     // the body (tipping_box pushed low, issue 31), as though the box were pulled from within.
     const bool onto_face = pushes_on_face(force);
     const ImVec2 tail = onto_face ? ImVec2(at.x - reach.x, at.y - reach.y) : at;
     const ImVec2 tip = onto_face ? at : ImVec2(at.x + reach.x, at.y + reach.y);
-    // Half a pixel: the float rounding of a to-scale length, not a lengthening anyone can see.
-    arrows.push_back(ScreenArrow{force, tail, tip, drawn - size * pixels_per_newton < 0.5f});
+    arrows.push_back(ScreenArrow{force, tail, tip, !drawn_longer(size, pixels_per_newton, legible)});
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
   // force: each moves half a gap across, keeping its length and direction. The gap grows with the

@@ -36,6 +36,12 @@ struct ScreenArrow {
   // take it for to scale (issue 31: push's lengthened 2.94 N friction and 4.99 N push looked
   // nearly alike, and a class reads the picture, not the legend).
   bool to_scale = true;
+  // Whether it lies over a fill it does not stand out from (under 3:1 against its colour,
+  // mark_arrows_over_their_like in world_view.cpp): it is then drawn on a plate of its outline's
+  // colour (draw_arrow's `plate`), as a value lies on its box. driven_wheel's dark grey weight on
+  // its dark rubber wheel showed only its thin outline, read as an empty arrow (a teacher's trial,
+  // issue 31); an outline a shaft wide each side read the same, a white arrow with a dark core.
+  bool over_its_like = false;
   float length() const;
 };
 // The shortest arrow drawn at text scale `scale`: one whose head can be seen. It grows with the
@@ -66,19 +72,30 @@ inline float side_by_side_gap(float thickness) {
 // them as equal (the trial after). At four, those forces are to scale, and what is lengthened is
 // small beside the forces it is seen with.
 inline float legible_arrow_pixels(float scale) { return 4.0f * world_arrow_thickness(scale); }
-// How long a force's arrow is drawn, px: to scale where that is `legible` or more, else
-// `legible`, its shaft broken (ScreenArrow::to_scale) and its value beside it. Lengthening every
-// arrow under twice `legible` in order (`legible` and half its length at the scale) kept the
-// order but not one ratio: push's 2.94 N friction and 4.99 N push came out 70 and 79 px on a
-// projector, all its arrows "drawn longer", and a class reads the picture, not the legend (a
-// teacher's trial, issue 31). Now an arrow is to scale, or drawn broken at the shortest length a
-// back row reads: no smaller force has a longer arrow, and none lengthened looks to scale.
+// The force under which an arrow is drawn longer than to scale, at `pixels_per_newton` with its
+// shortest length `legible` px: the one number both the world's drawing (drawn_longer, in
+// place_arrows) and the legend (not_to_scale_below, arrow_scale_words) decide by. The drawing
+// once counted a length within half a pixel of `legible` as to scale while the legend compared
+// newtons: push's 1.99 N arrows were drawn solid, 27.9 px, under a legend saying "under 2.02 N:
+// longer, dashed" (a teacher's trial, issue 31).
+inline float lengthened_below(float pixels_per_newton, float legible) { return legible / pixels_per_newton; }
+// Whether a force of `newtons` is drawn longer than to scale, `legible` px and broken.
+inline bool drawn_longer(float newtons, float pixels_per_newton, float legible) {
+  return newtons < lengthened_below(pixels_per_newton, legible);
+}
+// How long a force's arrow is drawn, px: to scale where it is not drawn_longer, else `legible`,
+// its shaft broken (ScreenArrow::to_scale) and its value beside it. Lengthening every arrow
+// under twice `legible` in order (`legible` and half its length at the scale) kept the order but
+// not one ratio: push's 2.94 N friction and 4.99 N push came out 70 and 79 px on a projector, all
+// its arrows "drawn longer", and a class reads the picture, not the legend (a teacher's trial,
+// issue 31). Now an arrow is to scale, or drawn broken at the shortest length a back row reads:
+// no smaller force has a longer arrow, and none lengthened looks to scale.
 inline float drawn_arrow_pixels(float newtons, float pixels_per_newton, float legible) {
-  return std::max(newtons * pixels_per_newton, legible);
+  return drawn_longer(newtons, pixels_per_newton, legible) ? legible : newtons * pixels_per_newton;
 }
 // The force under which the world's arrows are lengthened (drawn_arrow_pixels), which the legend says.
 inline float not_to_scale_below(float newtons_to_pixels, float scale) {
-  return legible_arrow_pixels(scale) / newtons_to_pixels;
+  return lengthened_below(newtons_to_pixels, legible_arrow_pixels(scale));
 }
 // Tails at the point of action (but a push on a face, whose tip is there: the body is pushed,
 // not pulled from inside), lengths to scale; a force that shows in the printed values of

@@ -358,19 +358,62 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
 
 // Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
 // block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
-// crossed the normal force's (issue 31). The shorter slides forward along its own line of
-// action until it starts a thickness past the longer's shaft: a force slid along its line has
-// the same moment about every point, so what the picture says of turning is kept (tipping_box's
-// friction stays on the floor's line), and it then starts where the longer passes, as a
-// textbook draws friction from where the weight meets the floor. Crossings within half a
-// thickness of the shorter's tail are forces starting together, and stay.
+// crossed the normal force's (issue 31). A contact's forces (friction, normal force) stay at
+// their contact, where its dot is: the class reads where a force acts off where it starts.
+// Sliding the shorter of two past the longer slid tipping_box's friction from the corner it
+// stands on to the middle of its bottom, past the weight (a teacher's trial, issue 31). So where
+// a contact's force meets another, the other moves, along its own line of action (which keeps
+// its moment about every point): a weight back up its line until its head stops short of the
+// contact's arrow, halo to halo (a weight acts on the whole body: any point of its line is as
+// true as its centre of mass, and above the floor it stays over its body), any other force
+// forward past it, as push's push past its normal force (back, it met the weight). A weight's head, four thicknesses wide, that
+// only comes down on a friction's tail (tipping_box pushed low at 1 s) counts as meeting it.
+// Where neither or both are a contact's, the shorter slides forward until it starts a thickness
+// past the longer's shaft, as before. Crossings within half a thickness of the shorter's tail
+// are forces starting together, and stay.
 void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
   const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
+  const auto at_contact = [](const ScreenArrow& arrow) {
+    return arrow.force.kind == ForceKind::friction || arrow.force.kind == ForceKind::normal;
+  };
+  const float halo = arrow_halo_width(thickness);
+  const auto slide = [](ScreenArrow& arrow, float by) {
+    const ImVec2 shift = mul(sub(arrow.tip, arrow.tail), by / arrow.length());
+    arrow.tail = add(arrow.tail, shift);
+    arrow.tip = add(arrow.tip, shift);
+  };
+  // Moves `mover` off `contact`'s arrow, a contact's force that stays; whether it moved.
+  const auto off_the_contact = [&](ScreenArrow& mover, const ScreenArrow& contact) {
+    const ImVec2 d = sub(mover.tip, mover.tail), e = sub(contact.tip, contact.tail), w = sub(contact.tail, mover.tail);
+    const float denominator = cross2(d, e);
+    if (std::abs(denominator) < 1e-6f * length(d) * length(e)) return false;  // parallel: side by side already
+    const float sine = std::abs(denominator) / (length(d) * length(e));
+    // Where the mover's line meets the contact's, px from the mover's tail and from the contact's tail.
+    const float on_mover = cross2(w, e) / denominator * length(d), on_contact = cross2(w, d) / denominator * length(e);
+    // The mover's head (draw_arrow's: 0.45 of it each side) and both halos, measured along the
+    // contact's line; its tip stops half the contact's thickness and both halos short of its line.
+    const float head = std::min(4.0f * thickness, 0.6f * length(d));
+    const float reach = (0.45f * head + 2.0f * halo) / sine;
+    const float short_of = (0.5f * thickness + 2.0f * halo) / sine;
+    if (on_contact <= -reach || on_contact >= length(e) + reach) return false;
+    // A hundredth of a pixel: the floats of a move already made.
+    const float back = length(d) - (on_mover - short_of);
+    if (on_mover <= 0.5f * thickness / sine || back <= 0.01f) return false;
+    const float forward = on_mover + thickness / sine;
+    slide(mover, mover.force.kind == ForceKind::weight ? -back : forward);
+    return true;
+  };
   for (std::size_t round = 0; round < arrows.size(); ++round) {
     bool moved = false;
     for (ScreenArrow& shorter : arrows) {
-      for (const ScreenArrow& longer : arrows) {
-        if (&shorter == &longer || longer.length() <= shorter.length()) continue;
+      for (ScreenArrow& other : arrows) {
+        if (&shorter == &other) continue;
+        if (at_contact(other) && !at_contact(shorter)) {
+          moved = off_the_contact(shorter, other) || moved;
+          continue;
+        }
+        if (at_contact(shorter) != at_contact(other) || other.length() <= shorter.length()) continue;
+        const ScreenArrow& longer = other;
         const ImVec2 d = sub(shorter.tip, shorter.tail), e = sub(longer.tip, longer.tail), w = sub(longer.tail, shorter.tail);
         const float denominator = cross2(d, e);
         if (std::abs(denominator) < 1e-6f * length(d) * length(e)) continue;  // parallel: side by side already
@@ -380,13 +423,54 @@ void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
         const float sine = std::abs(denominator) / (length(d) * length(e));
         const float to_crossing = on_shorter * length(d);
         if (to_crossing <= 0.5f * thickness / sine) continue;
-        const ImVec2 shift = mul(d, (to_crossing + thickness / sine) / length(d));
-        shorter.tail = add(shorter.tail, shift);
-        shorter.tip = add(shorter.tip, shift);
+        slide(shorter, to_crossing + thickness / sine);
         moved = true;
       }
     }
     if (!moved) break;
+  }
+}
+
+// Marks each arrow that lies over a fill it does not stand out from: a body, a ground's slab or
+// the sky under 3:1 against its colour (WCAG 2.1's non-text contrast), tested every half
+// thickness along its shaft and just past its outline either side. Its thin outline alone showed driven_wheel's dark grey weight on
+// the dark rubber wheel as an empty arrow (a teacher's trial, issue 31); such an arrow is drawn
+// on a plate (draw_arrow's `plate`). For every arrow and fill, not for one lesson.
+void mark_arrows_over_their_like(std::vector<ScreenArrow>& arrows, const Scene& scene, const Camera& camera,
+                                 const Theme& theme, float thickness) {
+  for (ScreenArrow& arrow : arrows) {
+    const ImU32 colour = theme.force[static_cast<int>(arrow.force.kind)];
+    const auto like = [&](ImU32 fill) { return contrast_ratio(colour, fill) < 3.0; };
+    const int samples = std::max(2, static_cast<int>(arrow.length() / (0.5f * thickness)));
+    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length());
+    // Along its centre line and just past its outline each side: a friction along a floor's
+    // surface lies half over the floor.
+    const ImVec2 beside = mul(ImVec2(-unit.y, unit.x), 0.5f * thickness + arrow_halo_width(thickness) + 1.0f);
+    for (int k = 0; k <= 3 * samples + 2 && !arrow.over_its_like; ++k) {
+      const ImVec2 on_line = add(arrow.tail, mul(sub(arrow.tip, arrow.tail), static_cast<float>(k / 3) / static_cast<float>(samples)));
+      const ImVec2 at = k % 3 == 0 ? on_line : k % 3 == 1 ? add(on_line, beside) : sub(on_line, beside);
+      const b2Vec2 point = camera.to_world(at);
+      // What is drawn there: the topmost fixture's fill (moving bodies are drawn over fixed ones),
+      // else the sky.
+      std::optional<ImU32> fill;
+      for (const b2Body* body = scene.world().GetBodyList(); body != nullptr; body = body->GetNext()) {
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+          bool inside = false;
+          if (lessons::is_ground(fixture)) {
+            // A ground's slab is drawn as its box, its top the surface (draw_ground); a strip's edge draws none.
+            if (fixture->GetType() == b2Shape::e_edge) continue;
+            const b2AABB& box = fixture->GetAABB(0);
+            const float skin = fixture->GetShape()->m_radius;
+            inside = point.x >= box.lowerBound.x && point.x <= box.upperBound.x && point.y >= box.lowerBound.y + skin &&
+                     point.y <= box.upperBound.y - skin;
+          } else {
+            inside = fixture->TestPoint(point);
+          }
+          if (inside && (!fill || body->GetType() == b2_dynamicBody)) fill = fixture_colour(scene, fixture, theme);
+        }
+      }
+      arrow.over_its_like = like(fill.value_or(theme.sky));
+    }
   }
 }
 
@@ -544,6 +628,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   start_frictions_past_their_dots(arrows, marks, camera, mark_radius);
   const float thickness = world_arrow_thickness(fonts.scale);
   uncross_arrows(arrows, thickness);
+  mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);

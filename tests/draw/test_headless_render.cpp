@@ -93,37 +93,27 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
 
 // Issue 31: the legend said "under 12.4 N: not to scale" on push in projector mode, whose every
 // force (its 9.81 N weight the largest) is under 12.4 N: every arrow was lengthened, and the
-// words left a class asking which were to scale. Said now for what the picture holds: every
-// force under the force where lengthening starts, "all arrows longer, dashed"; some under it,
-// "under X N: longer, dashed"; none, "all arrows to scale". On push at 3 s, at arrow scales
-// chosen round its forces, and at the projector's own.
-TEST(Legend, SaysWhichArrowsAreDrawnLongerThanToScale) {
+// words left a class asking which were to scale. The next trial found its words changing as the
+// run played ("all arrows to scale" once its friction and push had grown past the number). Said
+// now from the arrow scale alone: "under X N:" "longer, dashed", X the force whose arrow at that
+// scale is the legible length, at arrow scales round push's forces and at the projector's own,
+// where X is the force drawn_longer turns at.
+TEST(Legend, SaysUnderWhichForceArrowsAreDrawnLongerFromTheScaleAlone) {
   LessonAt at("push", {}, 3.0);
-  float smallest = INFINITY, largest = 0.0f;
-  for (const auto& [name, body] : at.scene().bodies()) {
-    for (const ForceOnBody& force : forces_on(at.scene(), body)) {
-      if (force.force.Length() == 0.0f) continue;
-      smallest = std::min(smallest, force.force.Length());
-      largest = std::max(largest, force.force.Length());
-    }
-  }
-  ASSERT_LT(smallest, largest);
   const float scale = 2.0f;
-  // The arrow scale (px per N) at which lengthening starts at `newtons`.
-  const auto starting_at = [&](float newtons) { return legible_arrow_pixels(scale) / newtons; };
-  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(2.0f * largest), scale), ArrowScaleWords("all arrows", "longer, dashed"));
-  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(0.5f * smallest), scale), ArrowScaleWords("all arrows", "to scale"));
-  const float between = 0.5f * (smallest + largest);
-  EXPECT_EQ(arrow_scale_words(at.scene(), starting_at(between), scale),
-            ArrowScaleWords("under " + format_quantity(not_to_scale_below(starting_at(between), scale), "N") + ":", "longer, dashed"));
+  for (const float newtons : {0.5f, 2.94f, 9.81f, 20.0f}) {
+    // The arrow scale (px per N) at which lengthening starts at `newtons`.
+    const float pixels_per_newton = legible_arrow_pixels(scale) / newtons;
+    EXPECT_EQ(arrow_scale_words(pixels_per_newton, scale), ArrowScaleWords("under " + format_quantity(newtons, "N") + ":", "longer, dashed"));
+  }
   // The projector's text scale: the frame's, a third larger (Classroom::ui_scale).
   const float projector_scale = 1.35f * frame_scale(1920, 1080);
   const float projector = arrow_scale(*at.lesson, at.framing, ImVec2(1920.0f, 1080.0f), projector_scale, true);
-  // The lesson's own scale (from its run's largest force) leaves none of push's forces under the
-  // legible length on a projector: the 2.94 N friction is to scale beside the 9.81 N weight.
   const float below = not_to_scale_below(projector, projector_scale);
-  ASSERT_LT(below, smallest);
-  EXPECT_EQ(arrow_scale_words(at.scene(), projector, projector_scale), ArrowScaleWords("all arrows", "to scale"));
+  const float legible = legible_arrow_pixels(projector_scale);
+  EXPECT_TRUE(drawn_longer(std::nextafter(below, 0.0f), projector, legible));
+  EXPECT_FALSE(drawn_longer(below, projector, legible));
+  EXPECT_EQ(arrow_scale_words(projector, projector_scale).first, "under " + format_quantity(below, "N") + ":");
 }
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {
