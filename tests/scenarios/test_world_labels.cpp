@@ -482,6 +482,23 @@ int check_beside_own_arrow(const std::vector<draw::LabelPlacer::ForceLabel>& for
   return checked;
 }
 
+// The window run to `t` and drawn twice (the second frame sees the first's layout), the second's
+// record.
+draw::FrameRecord recorded_at(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& window, ImVec2 display, double t) {
+  window.run_to(t);
+  draw_window_frame(gl, host, window, display);
+  draw::FrameRecord record;
+  draw_window_frame(gl, host, window, display, 0.0, &record);
+  return record;
+}
+
+// " at 1.73 s", for a failure's message.
+std::string said_at(double t) {
+  char when[48];
+  std::snprintf(when, sizeof when, " at %.2f s", t);
+  return when;
+}
+
 // Every built-in lesson at its defaults in the window at 1920 × 1080, in projector mode or not, in
 // a theme, at its opening, half way and at its end: the frame's record, with the lesson's name,
 // when (" at 1.73 s") and the lesson.
@@ -498,13 +515,8 @@ void each_lesson_frame(bool projector, draw::ThemeName theme,
     draw_window_frame(gl, host, window, display);
     const double end = window.playback().lesson().duration();
     for (const double t : {0.2, 0.5 * end, end}) {
-      window.run_to(t);
-      draw_window_frame(gl, host, window, display);
-      draw::FrameRecord record;
-      draw_window_frame(gl, host, window, display, 0.0, &record);
-      char when[48];
-      std::snprintf(when, sizeof when, " at %.2f s", t);
-      check(entry.name, when, record, window.playback().lesson());
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+      check(entry.name, said_at(t), record, window.playback().lesson());
     }
   }
 }
@@ -711,13 +723,8 @@ void projector_frames_at(const std::string& lesson, const std::map<std::string, 
   Classroom window(options);
   draw_window_frame(gl, host, window, display);
   for (const double t : times) {
-    window.run_to(t);
-    draw_window_frame(gl, host, window, display);
-    draw::FrameRecord record;
-    draw_window_frame(gl, host, window, display, 0.0, &record);
-    char when[48];
-    std::snprintf(when, sizeof when, " at %.2f s", t);
-    std::string where = lesson + when;
+    const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+    std::string where = lesson + said_at(t);
     for (const auto& [name, value] : set) where += ", " + name + " = " + value;
     check(where, record, window.playback().lesson());
   }
