@@ -58,6 +58,15 @@ const PairCoefficient* pair_coefficient(std::string_view name) {
   return nullptr;
 }
 
+std::string PairTable::material_names() const {
+  std::string names;
+  for (const Material& material : materials_) {
+    if (!names.empty()) names += ", ";
+    names += material.name;
+  }
+  return names;
+}
+
 std::string pair_coefficient_names() {
   std::string names;
   for (const PairCoefficient& coefficient : pair_coefficients) {

@@ -108,6 +108,8 @@ class PairTable {
   int find_material(std::string_view name) const;
   const Material& material(int id) const { return materials_.at(id); }
   int material_count() const { return static_cast<int>(materials_.size()); }
+  // The materials' names in the order they were added, ", " between (for messages).
+  std::string material_names() const;
 
   // Sets the pair in both orders. Throws InvalidInput (see check_pair) and leaves the table
   // unchanged when the values are invalid; returns the warnings otherwise.

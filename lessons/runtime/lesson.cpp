@@ -73,12 +73,7 @@ void LessonBuild::use_material(const std::string& name) {
   const int preset = presets.find_material(name);
   if (table.find_material(name) >= 0) return;
   if (preset < 0) {
-    std::string known;
-    for (int id = 0; id < table.material_count(); ++id) known += (known.empty() ? "" : ", ") + table.material(id).name;
-    std::string presets_named;
-    for (int id = 0; id < presets.material_count(); ++id) {
-      presets_named += (presets_named.empty() ? "" : ", ") + presets.material(id).name;
-    }
+    const std::string known = table.material_names(), presets_named = presets.material_names();
     throw InvalidInput("unknown material '" + name + "'; declare it first with material{ \"" + name +
                        "\", density = ... }, or use a preset: " + presets_named +
                        (known.empty() ? "" : "; declared here: " + known));
@@ -388,32 +383,32 @@ const Parameter& Lesson::parameter(const std::string& name) const {
   throw InvalidInput("no parameter '" + name + "' in " + path_ + "; its parameters: " + current_->parameter_names());
 }
 
-const std::string& Lesson::probe_unit(const std::string& probe) const {
-  for (const ProbeInfo& info : current_->probes) {
-    if (info.name == probe) return info.unit;
+namespace {
+
+// What the script declared of a probe, by its name.
+const ProbeInfo& probe_named(const LessonBuild& build, const std::string& probe, const std::string& path) {
+  for (const ProbeInfo& info : build.probes) {
+    if (info.name == probe) return info;
   }
-  throw InvalidInput("no probe '" + probe + "' in " + path_);
+  throw InvalidInput("no probe '" + probe + "' in " + path);
+}
+
+}  // namespace
+
+const std::string& Lesson::probe_unit(const std::string& probe) const {
+  return probe_named(*current_, probe, path_).unit;
 }
 
 const std::string& Lesson::probe_label(const std::string& probe) const {
-  for (const ProbeInfo& info : current_->probes) {
-    if (info.name == probe) return info.label;
-  }
-  throw InvalidInput("no probe '" + probe + "' in " + path_);
+  return probe_named(*current_, probe, path_).label;
 }
 
 std::optional<ForceKind> Lesson::probe_force(const std::string& probe) const {
-  for (const ProbeInfo& info : current_->probes) {
-    if (info.name == probe) return info.force;
-  }
-  throw InvalidInput("no probe '" + probe + "' in " + path_);
+  return probe_named(*current_, probe, path_).force;
 }
 
 const std::string& Lesson::probe_like(const std::string& probe) const {
-  for (const ProbeInfo& info : current_->probes) {
-    if (info.name == probe) return info.like;
-  }
-  throw InvalidInput("no probe '" + probe + "' in " + path_);
+  return probe_named(*current_, probe, path_).like;
 }
 
 void Lesson::step_to(double t) {
@@ -447,14 +442,15 @@ void Lesson::step() {
 void Lesson::keep_rows_at_end() {
   LessonBuild& build = *current_;
   if (build.rows_at_end) return;
+  double end_time = 0.0;
   try {
-    if (!build.end_time) build.end_time = duration_of(build);
+    end_time = duration();
   } catch (const InvalidInput&) {
     return;  // a duration function that fails is said where the duration is read
   }
   // The step that reaches the end (as step_to(duration) would stop there), and only that one:
   // rows forgotten with a value changed past the end are not taken again on a record gone on.
-  if (!first_to_reach(*build.end_time)) return;
+  if (!first_to_reach(end_time)) return;
   LessonBuild::RowsAtEnd end;
   try {
     end.rows = rows_now(end.failure);

@@ -604,9 +604,7 @@ int probe(lua_State* state) {
     // like = "grass": drawn in a material's colour, a curve the class matches to a surface.
     const std::string like = fields.text("like", "");
     if (fields.has("like") && build.scene->pairs().find_material(like) < 0) {
-      std::string known;
-      const PairTable& table = build.scene->pairs();
-      for (int id = 0; id < table.material_count(); ++id) known += (id == 0 ? "" : ", ") + table.material(id).name;
+      const std::string known = build.scene->pairs().material_names();
       throw InvalidInput(fields.what() + ": like = \"" + like + "\" is no material of this lesson (yet); its materials: " +
                          (known.empty() ? "none" : known));
     }
