@@ -55,6 +55,92 @@ FrictionPair nested_pair(lua_State* state, Fields& outer, const char* key) {
   return pair;
 }
 
+// spring_stick_slip's run, read as a lesson reads its record (see spring_stick_slip).
+struct SpringRunReading {
+  int breakaways = 0, resticks = 0;
+  double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
+  // How long the block stays stuck after a stop before it breaks away again: a stepped world
+  // cannot show a stick much shorter than its step (a lesson says so rather than compare).
+  double shortest_stick = std::numeric_limits<double>::infinity();
+  // And the longest it moves without stopping (a reversal does not stop it): every step of
+  // a slip rounds the world's single-precision position, so a lesson's tolerance counts them.
+  double longest_slip = 0.0;
+  // The fastest the block slides, and how near a slide comes to a stop without stopping: the
+  // slowest it goes at a dip inside a slide (not at its ends, where it starts from or comes
+  // to rest). A world whose speed is off by more than that may stop there and stick.
+  double fastest_slide = 0.0, nearest_stop = std::numeric_limits<double>::infinity();
+};
+
+// RK4's step: 200 a swing of the spring, and short against the drag's own time m/(c + 2b·v)
+// (RK4 is stable only while h·(c + 2b·v)/m < 2.78), v at most the hand's speed and the
+// lurch's, max(mu_s, mu_k)·g/ω.
+double spring_run_step(const OneDofBlock& block, double g, double duration) {
+  const double mass = block.mass, k = block.spring_k, c = block.pair.c, b = block.pair.b;
+  const double mu = std::max(block.pair.mu_s, block.pair.mu_k);
+  const double swing = 2.0 * std::numbers::pi * std::sqrt(mass / k);
+  // (The lurch is slower still where the drag at that speed would outpull the spring's
+  // largest pull, max(mu_s, mu_k)·m·g plus what it takes to stop.)
+  const double largest = 2.0 * mu * mass * g;
+  double fastest = mu * g * swing / (2.0 * std::numbers::pi);
+  if (b > 0.0) fastest = std::min(fastest, std::sqrt(largest / b));
+  if (c > 0.0) fastest = std::min(fastest, largest / c);
+  fastest += block.pull_speed;
+  return std::min({1e-3, swing / 200.0, duration / 16.0, 0.5 * mass / (c + 2.0 * b * fastest)});
+}
+
+SpringRunReading read_spring_run(const OneDofBlock& block, const Trajectory& run, double duration) {
+  SpringRunReading reading;
+  double stopped_at = std::numeric_limits<double>::quiet_NaN(), moving_since = stopped_at;
+  for (const Event& event : run.events()) {
+    if (event.kind == EventKind::breakaway && std::isnan(moving_since)) moving_since = event.t;
+    if (event.kind == EventKind::stop && !std::isnan(moving_since)) {
+      reading.longest_slip = std::max(reading.longest_slip, event.t - moving_since);
+      moving_since = std::numeric_limits<double>::quiet_NaN();
+    }
+    const double force = applied_force(block, event.t, event.x);
+    const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
+    if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++reading.resticks, reading.restick_sum += force;
+    if (event.kind == EventKind::breakaway && !std::isnan(stopped_at)) {
+      reading.shortest_stick = std::min(reading.shortest_stick, event.t - stopped_at);
+    }
+    stopped_at = event.kind == EventKind::stop ? event.t : std::numeric_limits<double>::quiet_NaN();
+    if (breaks) {
+      if (reading.breakaways == 0) reading.first = event.t, reading.first_force = force;
+      reading.last = event.t;
+      ++reading.breakaways, reading.breakaway_sum += force;
+    }
+  }
+  if (!std::isnan(moving_since)) reading.longest_slip = std::max(reading.longest_slip, duration - moving_since);
+  for (const Phase& phase : run.phases()) {
+    if (phase.kind == PhaseKind::stick) continue;
+    constexpr int samples = 400;
+    double before = 0.0, now = std::abs(phase.state(phase.t_start).v);
+    for (int i = 1; i <= samples; ++i) {
+      const double next = std::abs(phase.state(phase.t_start + (phase.t_end - phase.t_start) * i / samples).v);
+      reading.fastest_slide = std::max(reading.fastest_slide, next);
+      if (i >= 2 && now <= before && now < next) reading.nearest_stop = std::min(reading.nearest_stop, now);
+      before = now, now = next;
+    }
+  }
+  return reading;
+}
+
+// The reading as the table `run` on the table at the top of the stack.
+void push_spring_run(lua_State* state, const SpringRunReading& reading) {
+  lua_createtable(state, 0, 10);
+  set_number(state, "breakaways", reading.breakaways);
+  set_number(state, "resticks", reading.resticks);
+  if (reading.breakaways > 0) set_number(state, "breakaway_force", reading.breakaway_sum / reading.breakaways);
+  if (reading.breakaways > 0) set_number(state, "first_breakaway_force", reading.first_force);
+  if (reading.resticks > 0) set_number(state, "restick_force", reading.restick_sum / reading.resticks);
+  if (reading.breakaways > 1) set_number(state, "period", (reading.last - reading.first) / (reading.breakaways - 1));
+  if (std::isfinite(reading.shortest_stick)) set_number(state, "shortest_stick", reading.shortest_stick);
+  set_number(state, "longest_slip", reading.longest_slip);
+  set_number(state, "fastest_slide", reading.fastest_slide);
+  if (std::isfinite(reading.nearest_stop)) set_number(state, "nearest_stop", reading.nearest_stop);
+  lua_setfield(state, -2, "run");
+}
+
 }  // namespace
 
 namespace theory_written {
@@ -96,73 +182,10 @@ int spring_stick_slip(lua_State* state) {
       block.pair = {mu_s, mu_k, c, b};
       block.spring_k = k;
       block.pull_speed = pull_speed;
-      // RK4's step: 200 a swing of the spring, and short against the drag's own time m/(c + 2b·v)
-      // (RK4 is stable only while h·(c + 2b·v)/m < 2.78), v at most the hand's speed and the
-      // lurch's, max(mu_s, mu_k)·g/ω.
-      const double swing = 2.0 * std::numbers::pi * std::sqrt(mass / k);
-      // (The lurch is slower still where the drag at that speed would outpull the spring's
-      // largest pull, max(mu_s, mu_k)·m·g plus what it takes to stop.)
-      const double largest = 2.0 * std::max(mu_s, mu_k) * mass * g;
-      double fastest = std::max(mu_s, mu_k) * g * swing / (2.0 * std::numbers::pi);
-      if (b > 0.0) fastest = std::min(fastest, std::sqrt(largest / b));
-      if (c > 0.0) fastest = std::min(fastest, largest / c);
-      fastest += pull_speed;
-      const double h = std::min({1e-3, swing / 200.0, duration / 16.0, 0.5 * mass / (c + 2.0 * b * fastest)});
+      const double h = spring_run_step(block, g, duration);
       if (b != 0.0 && duration / h > 2e7) throw InvalidInput("theory.spring_stick_slip: duration is over 20 million model steps");
       const Trajectory run = b == 0.0 ? solve_exact(block, duration) : solve_event_rk4(block, duration, h);
-      int breakaways = 0, resticks = 0;
-      double breakaway_sum = 0.0, restick_sum = 0.0, first = 0.0, last = 0.0, first_force = 0.0;
-      // How long the block stays stuck after a stop before it breaks away again: a stepped world
-      // cannot show a stick much shorter than its step (a lesson says so rather than compare).
-      double shortest_stick = std::numeric_limits<double>::infinity(), stopped_at = std::numeric_limits<double>::quiet_NaN();
-      // And the longest it moves without stopping (a reversal does not stop it): every step of
-      // a slip rounds the world's single-precision position, so a lesson's tolerance counts them.
-      double longest_slip = 0.0, moving_since = std::numeric_limits<double>::quiet_NaN();
-      for (const Event& event : run.events()) {
-        if (event.kind == EventKind::breakaway && std::isnan(moving_since)) moving_since = event.t;
-        if (event.kind == EventKind::stop && !std::isnan(moving_since)) {
-          longest_slip = std::max(longest_slip, event.t - moving_since);
-          moving_since = std::numeric_limits<double>::quiet_NaN();
-        }
-        const double force = applied_force(block, event.t, event.x);
-        const bool breaks = event.kind == EventKind::breakaway || event.kind == EventKind::reversal;
-        if (event.kind == EventKind::stop || event.kind == EventKind::reversal) ++resticks, restick_sum += force;
-        if (event.kind == EventKind::breakaway && !std::isnan(stopped_at)) shortest_stick = std::min(shortest_stick, event.t - stopped_at);
-        stopped_at = event.kind == EventKind::stop ? event.t : std::numeric_limits<double>::quiet_NaN();
-        if (breaks) {
-          if (breakaways == 0) first = event.t, first_force = force;
-          last = event.t;
-          ++breakaways, breakaway_sum += force;
-        }
-      }
-      if (!std::isnan(moving_since)) longest_slip = std::max(longest_slip, duration - moving_since);
-      // The fastest the block slides, and how near a slide comes to a stop without stopping: the
-      // slowest it goes at a dip inside a slide (not at its ends, where it starts from or comes
-      // to rest). A world whose speed is off by more than that may stop there and stick.
-      double fastest_slide = 0.0, nearest_stop = std::numeric_limits<double>::infinity();
-      for (const Phase& phase : run.phases()) {
-        if (phase.kind == PhaseKind::stick) continue;
-        constexpr int samples = 400;
-        double before = 0.0, now = std::abs(phase.state(phase.t_start).v);
-        for (int i = 1; i <= samples; ++i) {
-          const double next = std::abs(phase.state(phase.t_start + (phase.t_end - phase.t_start) * i / samples).v);
-          fastest_slide = std::max(fastest_slide, next);
-          if (i >= 2 && now <= before && now < next) nearest_stop = std::min(nearest_stop, now);
-          before = now, now = next;
-        }
-      }
-      lua_createtable(state, 0, 10);
-      set_number(state, "breakaways", breakaways);
-      set_number(state, "resticks", resticks);
-      if (breakaways > 0) set_number(state, "breakaway_force", breakaway_sum / breakaways);
-      if (breakaways > 0) set_number(state, "first_breakaway_force", first_force);
-      if (resticks > 0) set_number(state, "restick_force", restick_sum / resticks);
-      if (breakaways > 1) set_number(state, "period", (last - first) / (breakaways - 1));
-      if (std::isfinite(shortest_stick)) set_number(state, "shortest_stick", shortest_stick);
-      set_number(state, "longest_slip", longest_slip);
-      set_number(state, "fastest_slide", fastest_slide);
-      if (std::isfinite(nearest_stop)) set_number(state, "nearest_stop", nearest_stop);
-      lua_setfield(state, -2, "run");
+      push_spring_run(state, read_spring_run(block, run, duration));
     }
     return 1;
   });
