@@ -193,10 +193,8 @@ void FrictionListener::finish_step() {
   held_groups_.clear();
 }
 
-void FrictionListener::settle(ContactRecord& r) {
-  b2Contact* contact = r.identity.contact;
-  const b2Manifold* solved_manifold = contact->GetManifold();
-  const TreatmentRule& rule = rule_at(r.identity.pair_index);
+SolvedContact FrictionListener::read_solve(ContactRecord& r, const TreatmentRule& rule) {
+  const b2Manifold* solved_manifold = r.identity.contact->GetManifold();
   const b2Vec2 n = r.solver.normal;
   const b2Vec2 t = ContactRecord::tangent_of(n);
   const bool a_driven = is_driven(r.identity.body_a);
@@ -232,9 +230,14 @@ void FrictionListener::settle(ContactRecord& r) {
   r.solver.step = step_;
   work_.friction += r.listener.explicit_impulse * sliding_end;
   r.listener.explicit_impulse = 0.0;
+  return SolvedContact{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse, sliding_end};
+}
 
+void FrictionListener::settle(ContactRecord& r) {
+  b2Contact* contact = r.identity.contact;
+  const TreatmentRule& rule = rule_at(r.identity.pair_index);
+  SolvedContact solved = read_solve(r, rule);
   const FrictionPair& pair = pairs_.pair_at(r.identity.pair_index);
-  SolvedContact solved{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse, sliding_end};
   if (r.listener.siblings > 0 && rule.judges_groups) {
     // A body standing on several feet touches the floor through several contacts. Being rigid,
     // it sticks or slides as a whole: its feet share one static limit, mu_s times their total
@@ -247,7 +250,7 @@ void FrictionListener::settle(ContactRecord& r) {
     share_group_state(contact, r);
     if (r.friction.state == ContactState::sticking) held_groups_.push_back(contact);
   } else {
-    if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
+    if (solved.normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
     rule.after_solve(r, pair, solved);
   }
   if (r.breakaway.impulse != 0.0) owing_.push_back(contact);
@@ -399,6 +402,26 @@ bool FrictionListener::drag_due() const {
   return pairs_have_drag_;
 }
 
+namespace {
+
+// A body touching the other through several contacts (a block on feet, one contact a foot)
+// slides as one body, as it sticks as one (settle): the pair's drag, c·v + b·v·|v|, is the
+// body's, shared between its contacts, not each contact's whole. Each foot taking the whole
+// had a block on three feet dragged by 3·c (c 5 N·s/m, 1 kg, 2 N/s: sliding at a third of
+// the face's speed, 0.34 m/s against 0.94 after 4 s, and on six feet a sixth). Each
+// contact's share is exact for c (the shares' decays multiply to the whole's) and
+// first-order for b.
+FrictionPair drag_share(const FrictionPair& pair, int siblings) {
+  FrictionPair drag = pair;
+  if (siblings > 0) {
+    drag.c /= siblings + 1;
+    drag.b /= siblings + 1;
+  }
+  return drag;
+}
+
+}  // namespace
+
 void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r) {
   if (r.identity.unpaired) return;
   const float h = step_;
@@ -431,19 +454,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
     return;
   }
   const double v = sliding_speed(r.identity.body_a, r.identity.body_b, face, p, t);
-
-  // A body touching the other through several contacts (a block on feet, one contact a foot)
-  // slides as one body, as it sticks as one (settle): the pair's drag, c·v + b·v·|v|, is the
-  // body's, shared between its contacts, not each contact's whole. Each foot taking the whole
-  // had a block on three feet dragged by 3·c (c 5 N·s/m, 1 kg, 2 N/s: sliding at a third of
-  // the face's speed, 0.34 m/s against 0.94 after 4 s, and on six feet a sixth). Each
-  // contact's share is exact for c (the shares' decays multiply to the whole's) and
-  // first-order for b.
-  FrictionPair drag = pair;
-  if (r.listener.siblings > 0) {
-    drag.c /= r.listener.siblings + 1;
-    drag.b /= r.listener.siblings + 1;
-  }
+  const FrictionPair drag = drag_share(pair, r.listener.siblings);
   // Implicit in the velocity: stable and sign-preserving at any h·c/m.
   const double damping_impulse = mass * (damped_velocity(v, mass, h, drag) - v);
   double dry_impulse = 0.0;

@@ -289,6 +289,9 @@ class FrictionListener : public b2ContactListener {
   }
   // The figures of one contact the solver solved in the last step (see finish_step).
   void settle(ContactRecord& r);
+  // What the solver did at r's points in the last step: its forces and sliding into the record,
+  // the work into the ledger, and the totals the treatment judges the contact by.
+  SolvedContact read_solve(ContactRecord& r, const TreatmentRule& rule);
   // The contact's world manifold now, as b2Contact::GetWorldManifold gives it.
   static void world_manifold(const b2Contact* contact, const ContactRecord& r, b2WorldManifold* world);
   // Whether some contact may owe a drag or regularized force before the coming step, so that
