@@ -34,27 +34,27 @@ double FrictionListener::epsilon_of(int material_a, int material_b) const {
 
 void FrictionListener::BeginContact(b2Contact* contact) {
   ContactRecord record;
-  record.contact = contact;
-  record.body_a = contact->GetFixtureA()->GetBody();
-  record.body_b = contact->GetFixtureB()->GetBody();
-  record.material_a = fixture_material(contact->GetFixtureA());
-  record.material_b = fixture_material(contact->GetFixtureB());
-  record.radius_a = contact->GetFixtureA()->GetShape()->m_radius;
-  record.radius_b = contact->GetFixtureB()->GetShape()->m_radius;
-  if (!pairs_.has_pair(record.material_a, record.material_b)) {
+  record.identity.contact = contact;
+  record.identity.body_a = contact->GetFixtureA()->GetBody();
+  record.identity.body_b = contact->GetFixtureB()->GetBody();
+  record.identity.material_a = fixture_material(contact->GetFixtureA());
+  record.identity.material_b = fixture_material(contact->GetFixtureB());
+  record.identity.radius_a = contact->GetFixtureA()->GetShape()->m_radius;
+  record.identity.radius_b = contact->GetFixtureB()->GetShape()->m_radius;
+  if (!pairs_.has_pair(record.identity.material_a, record.identity.material_b)) {
     // Throwing here would unwind through Box2D and leave the world locked; the contact is
     // switched off instead and the scene reports the error once the step is over.
-    record.unpaired = true;
+    record.identity.unpaired = true;
     if (error_.empty()) {
       auto name = [&](int id) { return id >= 0 && id < pairs_.material_count() ? pairs_.material(id).name : "(no material)"; };
-      error_ = "no friction values for the pair " + name(record.material_a) + "–" + name(record.material_b) +
-               " that just touched; give every fixture a material whose pairs are set";
+      error_ = "no friction values for the pair " + name(record.identity.material_a) + "–" +
+               name(record.identity.material_b) + " that just touched; give every fixture a material whose pairs are set";
     }
   } else {
-    record.pair_index = pairs_.pair_index(record.material_a, record.material_b);
+    record.identity.pair_index = pairs_.pair_index(record.identity.material_a, record.identity.material_b);
   }
   if (ContactRecord* known = mutable_record(contact)) {
-    record.siblings = known->siblings;  // counted when it began
+    record.listener.siblings = known->listener.siblings;  // counted when it began
     *known = record;
     return;
   }
@@ -62,7 +62,7 @@ void FrictionListener::BeginContact(b2Contact* contact) {
   // beyond what a lesson steps.
   if (records_.size() >= (std::size_t{1} << 24)) {
     if (error_.empty()) error_ = "more than 16777216 contacts at once: the friction listener cannot track them";
-    record.unpaired = true;
+    record.identity.unpaired = true;
   }
   records_.push_back(record);
   place(records_.back(), records_.size() - 1);
@@ -71,8 +71,8 @@ void FrictionListener::BeginContact(b2Contact* contact) {
   ContactRecord& added = records_.back();
   visit_group(added, [&](const b2Contact* other, ContactRecord& member) {
     if (other != contact) {
-      ++member.siblings;
-      ++added.siblings;
+      ++member.listener.siblings;
+      ++added.listener.siblings;
     }
     return true;
   });
@@ -87,9 +87,9 @@ std::string FrictionListener::take_error() {
 void FrictionListener::EndContact(b2Contact* contact) {
   const ContactRecord* ended = record(contact);
   if (ended == nullptr) return;
-  if (ended->siblings > 0) {
+  if (ended->listener.siblings > 0) {
     visit_group(*ended, [&](const b2Contact* other, ContactRecord& member) {
-      if (other != contact) --member.siblings;
+      if (other != contact) --member.listener.siblings;
       return true;
     });
   }
@@ -105,44 +105,45 @@ void FrictionListener::PreSolve(b2Contact* contact, const b2Manifold*) {
   ContactRecord* found = mutable_record(contact);
   if (found == nullptr) return;
   ContactRecord& r = *found;
-  if (r.unpaired) {
+  if (r.identity.unpaired) {
     contact->SetEnabled(false);
     return;
   }
-  const FrictionPair& pair = pairs_.pair_at(r.pair_index);
-  r.frictionless = pair.mu_s == 0.0 && pair.mu_k == 0.0;
+  const FrictionPair& pair = pairs_.pair_at(r.identity.pair_index);
+  r.solver.frictionless = pair.mu_s == 0.0 && pair.mu_k == 0.0;
   // A contact born in this step missed apply_contact_forces: its drag starts now, before the
   // solve, so a block landing on a viscous film is not let off for a step.
-  if (r.fresh) apply_velocity_terms(contact, r);
-  const TreatmentRule& rule = rule_at(r.pair_index);
+  if (r.listener.fresh) apply_velocity_terms(contact, r);
+  const TreatmentRule& rule = rule_at(r.identity.pair_index);
   // A foot that touches down while its body's other feet already touch joins their state.
-  if (r.fresh && r.siblings > 0 && rule.judges_groups) join_group(contact, r);
+  if (r.listener.fresh && r.listener.siblings > 0 && rule.judges_groups) join_group(contact, r);
 
   b2WorldManifold manifold;
   world_manifold(contact, r, &manifold);
-  r.point_count = contact->GetManifold()->pointCount;
-  r.normal = manifold.normal;
-  const b2Vec2 t = ContactRecord::tangent_of(r.normal);
+  r.solver.point_count = contact->GetManifold()->pointCount;
+  r.solver.normal = manifold.normal;
+  const b2Vec2 t = ContactRecord::tangent_of(r.solver.normal);
   float sliding = 0.0f;
-  r.point.SetZero();
-  for (int i = 0; i < r.point_count; ++i) {
-    r.world_points[i] = manifold.points[i];
-    r.start_velocity[i] = point_velocity(r.body_b, manifold.points[i]) - point_velocity(r.body_a, manifold.points[i]);
-    sliding += b2Dot(r.start_velocity[i], t);
-    r.point += manifold.points[i];
+  r.solver.point.SetZero();
+  for (int i = 0; i < r.solver.point_count; ++i) {
+    r.solver.world_points[i] = manifold.points[i];
+    r.solver.start_velocity[i] =
+        point_velocity(r.identity.body_b, manifold.points[i]) - point_velocity(r.identity.body_a, manifold.points[i]);
+    sliding += b2Dot(r.solver.start_velocity[i], t);
+    r.solver.point += manifold.points[i];
   }
-  if (r.point_count > 0) {
-    sliding /= static_cast<float>(r.point_count);
-    r.point *= 1.0f / static_cast<float>(r.point_count);
+  if (r.solver.point_count > 0) {
+    sliding /= static_cast<float>(r.solver.point_count);
+    r.solver.point *= 1.0f / static_cast<float>(r.solver.point_count);
   }
-  contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.pair_index)));
-  r.before_known = !r.fresh;
-  r.driven_velocity_before = r.driven_velocity;
-  r.driven_velocity.SetZero();
-  if (is_driven(r.body_b)) r.driven_velocity += point_velocity(r.body_b, r.point);
-  if (is_driven(r.body_a)) r.driven_velocity -= point_velocity(r.body_a, r.point);
-  r.fresh = false;
-  r.solving = true;
+  contact->SetFriction(rule.solver_coefficient(r, pair, sliding, epsilon_at(r.identity.pair_index)));
+  r.drive.before_known = !r.listener.fresh;
+  r.drive.velocity_before = r.drive.velocity;
+  r.drive.velocity.SetZero();
+  if (is_driven(r.identity.body_b)) r.drive.velocity += point_velocity(r.identity.body_b, r.solver.point);
+  if (is_driven(r.identity.body_a)) r.drive.velocity -= point_velocity(r.identity.body_a, r.solver.point);
+  r.listener.fresh = false;
+  r.listener.solving = true;
 }
 
 void FrictionListener::world_manifold(const b2Contact* contact, const ContactRecord& r, b2WorldManifold* world) {
@@ -159,10 +160,10 @@ void FrictionListener::world_manifold(const b2Contact* contact, const ContactRec
   const bool face_a = m->type == b2Manifold::e_faceA;
   // The face's body, whose frame holds the normal and the plane, and the other, whose frame
   // holds the clipped points.
-  const b2Transform& face = (face_a ? r.body_a : r.body_b)->GetTransform();
-  const b2Transform& other = (face_a ? r.body_b : r.body_a)->GetTransform();
-  const float face_radius = face_a ? r.radius_a : r.radius_b;
-  const float other_radius = face_a ? r.radius_b : r.radius_a;
+  const b2Transform& face = (face_a ? r.identity.body_a : r.identity.body_b)->GetTransform();
+  const b2Transform& other = (face_a ? r.identity.body_b : r.identity.body_a)->GetTransform();
+  const float face_radius = face_a ? r.identity.radius_a : r.identity.radius_b;
+  const float other_radius = face_a ? r.identity.radius_b : r.identity.radius_a;
   const b2Vec2 normal = b2Mul(face.q, m->localNormal);
   const b2Vec2 plane = b2Mul(face, m->localPoint);
   for (int i = 0; i < m->pointCount; ++i) {
@@ -181,8 +182,8 @@ void FrictionListener::finish_step() {
   // solver stored them. The physics is the same; only the ledger's sums are added up in
   // another order.
   for (ContactRecord& r : records_) {
-    if (!r.solving) continue;
-    r.solving = false;
+    if (!r.listener.solving) continue;
+    r.listener.solving = false;
     settle(r);
   }
   // After the loop: every contact's record has read its own impulses as the solver left them.
@@ -192,23 +193,22 @@ void FrictionListener::finish_step() {
   held_groups_.clear();
 }
 
-void FrictionListener::settle(ContactRecord& r) {
-  b2Contact* contact = r.contact;
-  const b2Manifold* solved_manifold = contact->GetManifold();
-  const TreatmentRule& rule = rule_at(r.pair_index);
-  const b2Vec2 n = r.normal;
+SolvedContact FrictionListener::read_solve(ContactRecord& r, const TreatmentRule& rule) {
+  const b2Manifold* solved_manifold = r.identity.contact->GetManifold();
+  const b2Vec2 n = r.solver.normal;
   const b2Vec2 t = ContactRecord::tangent_of(n);
-  const bool a_driven = is_driven(r.body_a);
-  const bool b_driven = is_driven(r.body_b);
+  const bool a_driven = is_driven(r.identity.body_a);
+  const bool b_driven = is_driven(r.identity.body_b);
 
   double normal_impulse = 0.0;
   double tangent_impulse = 0.0;
   float sliding_end = 0.0f;
-  const int count = std::min(r.point_count, solved_manifold->pointCount);
+  const int count = std::min(r.solver.point_count, solved_manifold->pointCount);
   for (int i = 0; i < count; ++i) {
-    const b2Vec2 p = r.world_points[i];
-    const b2Vec2 end_velocity = solved_point_velocity(r.body_b, p, step_) - solved_point_velocity(r.body_a, p, step_);
-    const b2Vec2 mean_velocity = 0.5f * (r.start_velocity[i] + end_velocity);
+    const b2Vec2 p = r.solver.world_points[i];
+    const b2Vec2 end_velocity =
+        solved_point_velocity(r.identity.body_b, p, step_) - solved_point_velocity(r.identity.body_a, p, step_);
+    const b2Vec2 mean_velocity = 0.5f * (r.solver.start_velocity[i] + end_velocity);
     const float jn = solved_manifold->points[i].normalImpulse;
     const float jt = solved_manifold->points[i].tangentImpulse;
     // An impulse changes kinetic energy by itself times the mean of the velocities before
@@ -216,24 +216,29 @@ void FrictionListener::settle(ContactRecord& r) {
     work_.friction += jt * b2Dot(mean_velocity, t);
     work_.impacts += jn * b2Dot(mean_velocity, n);
     const b2Vec2 on_b = jn * n + jt * t;
-    if (a_driven) work_.drivers += b2Dot(on_b, solved_point_velocity(r.body_a, p, step_));
-    if (b_driven) work_.drivers -= b2Dot(on_b, solved_point_velocity(r.body_b, p, step_));
-    r.point_normal_force[i] = jn / step_;
+    if (a_driven) work_.drivers += b2Dot(on_b, solved_point_velocity(r.identity.body_a, p, step_));
+    if (b_driven) work_.drivers -= b2Dot(on_b, solved_point_velocity(r.identity.body_b, p, step_));
+    r.solver.point_normal_force[i] = jn / step_;
     normal_impulse += jn;
     tangent_impulse += jt;
     sliding_end += b2Dot(end_velocity, t);
   }
   if (count > 0) sliding_end /= static_cast<float>(count);
-  r.normal_force = normal_impulse / step_;
-  if (rule.explicit_dry_force == nullptr) r.friction_force = tangent_impulse / step_;
-  r.sliding_velocity = sliding_end;
-  r.step = step_;
-  work_.friction += r.explicit_impulse * sliding_end;
-  r.explicit_impulse = 0.0;
+  r.solver.normal_force = normal_impulse / step_;
+  if (rule.explicit_dry_force == nullptr) r.solver.friction_force = tangent_impulse / step_;
+  r.solver.sliding_velocity = sliding_end;
+  r.solver.step = step_;
+  work_.friction += r.listener.explicit_impulse * sliding_end;
+  r.listener.explicit_impulse = 0.0;
+  return SolvedContact{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse, sliding_end};
+}
 
-  const FrictionPair& pair = pairs_.pair_at(r.pair_index);
-  SolvedContact solved{normal_impulse, tangent_impulse, sliding_end, step_, normal_impulse, tangent_impulse, sliding_end};
-  if (r.siblings > 0 && rule.judges_groups) {
+void FrictionListener::settle(ContactRecord& r) {
+  b2Contact* contact = r.identity.contact;
+  const TreatmentRule& rule = rule_at(r.identity.pair_index);
+  SolvedContact solved = read_solve(r, rule);
+  const FrictionPair& pair = pairs_.pair_at(r.identity.pair_index);
+  if (r.listener.siblings > 0 && rule.judges_groups) {
     // A body standing on several feet touches the floor through several contacts. Being rigid,
     // it sticks or slides as a whole: its feet share one static limit, mu_s times their total
     // load, however the load happens to be split between them (which statics cannot decide for
@@ -243,12 +248,12 @@ void FrictionListener::settle(ContactRecord& r) {
     if (solved.group_normal_impulse <= 0.0) return;  // no load, no evidence either way
     rule.after_solve(r, pair, solved);
     share_group_state(contact, r);
-    if (r.state == ContactState::sticking) held_groups_.push_back(contact);
+    if (r.friction.state == ContactState::sticking) held_groups_.push_back(contact);
   } else {
-    if (normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
+    if (solved.normal_impulse <= 0.0) return;  // no load, no evidence either way: keep the state
     rule.after_solve(r, pair, solved);
   }
-  if (r.breakaway_impulse != 0.0) owing_.push_back(contact);
+  if (r.breakaway.impulse != 0.0) owing_.push_back(contact);
 }
 
 bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& r, SolvedContact* solved) {
@@ -265,13 +270,14 @@ bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& 
     // the same sign convention (on the body that is this contact's B). The member's points and
     // normal are those its PreSolve saw in this step, as the solver did.
     const b2Manifold* manifold = other->GetManifold();
-    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float side = member.identity.body_b == r.identity.body_b ? 1.0f : -1.0f;
     const float along = side * b2Dot(member.tangent(), t);
-    const int count = std::min(member.point_count, manifold->pointCount);
+    const int count = std::min(member.solver.point_count, manifold->pointCount);
     for (int i = 0; i < count; ++i) {
       const double jn = manifold->points[i].normalImpulse;
-      const b2Vec2 p = member.world_points[i];
-      const float v = b2Dot(solved_point_velocity(r.body_b, p, step_) - solved_point_velocity(r.body_a, p, step_), t);
+      const b2Vec2 p = member.solver.world_points[i];
+      const float v =
+          b2Dot(solved_point_velocity(r.identity.body_b, p, step_) - solved_point_velocity(r.identity.body_a, p, step_), t);
       normal += jn;
       tangent += along * manifold->points[i].tangentImpulse;
       weighted_sliding += jn * v;
@@ -293,17 +299,9 @@ bool FrictionListener::sum_group(const b2Contact* contact, const ContactRecord& 
 
 void FrictionListener::share_group_state(const b2Contact* contact, const ContactRecord& r) {
   visit_group(r, [&](const b2Contact* other, ContactRecord& member) {
-    if (other != contact) {
-      member.state = r.state;
-      // The sign of B's sliding relative to A along the tangent is the same seen from either
-      // body (both flip), so it is copied as it is.
-      member.slip_direction = r.slip_direction;
-      member.held_force = r.held_force;
-      member.held_limit = r.held_limit;
-      member.band_steps = r.band_steps;
-      member.band_excess = r.band_excess;
-      member.band_impulse = r.band_impulse;
-    }
+    // The sign of B's sliding relative to A along the tangent is the same seen from either body
+    // (both flip), so the state is copied as it is.
+    if (other != contact) member.friction = r.friction;
     return true;
   });
 }
@@ -333,7 +331,7 @@ void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
   double normal = 0.0, tangent = 0.0;
   bool parallel = true;
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
-    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float side = member.identity.body_b == r.identity.body_b ? 1.0f : -1.0f;
     const float along = side * b2Dot(member.tangent(), t);
     // Float tangents of parallel surfaces agree to round-off.
     if (std::abs(along - 1.0f) > 1e-5f) parallel = false;
@@ -346,7 +344,7 @@ void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
   });
   if (!parallel || !(normal > 0.0)) return;
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
-    const float side = member.body_b == r.body_b ? 1.0f : -1.0f;
+    const float side = member.identity.body_b == r.identity.body_b ? 1.0f : -1.0f;
     const float along = side * b2Dot(member.tangent(), t) > 0.0f ? 1.0f : -1.0f;
     b2Manifold* manifold = const_cast<b2Contact*>(other)->GetManifold();
     for (int i = 0; i < manifold->pointCount; ++i) {
@@ -358,15 +356,9 @@ void FrictionListener::share_held_friction_by_load(const ContactRecord& r) {
 
 void FrictionListener::join_group(const b2Contact* contact, ContactRecord& r) {
   visit_group(r, [&](const b2Contact* other, const ContactRecord& member) {
-    if (other == contact || member.fresh) return true;
-    r.state = member.state;
-    r.slip_direction = member.slip_direction;
-    r.held_force = member.held_force;
-    r.held_limit = member.held_limit;
-    r.band_steps = member.band_steps;
-    r.band_excess = member.band_excess;
-    r.band_impulse = member.band_impulse;
-    r.fresh = false;  // its state is the group's, not one judged from its own speed
+    if (other == contact || member.listener.fresh) return true;
+    r.friction = member.friction;
+    r.listener.fresh = false;  // its state is the group's, not one judged from its own speed
     return false;
   });
 }
@@ -390,7 +382,7 @@ void FrictionListener::apply_contact_forces(b2World& world, float h) {
   for (b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext()) {
     if (!contact->IsTouching()) continue;
     ContactRecord* found = mutable_record(contact);
-    if (found != nullptr && !found->fresh) apply_velocity_terms(contact, *found);
+    if (found != nullptr && !found->listener.fresh) apply_velocity_terms(contact, *found);
   }
 }
 
@@ -410,13 +402,33 @@ bool FrictionListener::drag_due() const {
   return pairs_have_drag_;
 }
 
+namespace {
+
+// A body touching the other through several contacts (a block on feet, one contact a foot)
+// slides as one body, as it sticks as one (settle): the pair's drag, c·v + b·v·|v|, is the
+// body's, shared between its contacts, not each contact's whole. Each foot taking the whole
+// had a block on three feet dragged by 3·c (c 5 N·s/m, 1 kg, 2 N/s: sliding at a third of
+// the face's speed, 0.34 m/s against 0.94 after 4 s, and on six feet a sixth). Each
+// contact's share is exact for c (the shares' decays multiply to the whole's) and
+// first-order for b.
+FrictionPair drag_share(const FrictionPair& pair, int siblings) {
+  FrictionPair drag = pair;
+  if (siblings > 0) {
+    drag.c /= siblings + 1;
+    drag.b /= siblings + 1;
+  }
+  return drag;
+}
+
+}  // namespace
+
 void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r) {
-  if (r.unpaired) return;
+  if (r.identity.unpaired) return;
   const float h = step_;
-  const FrictionPair& pair = pairs_.pair_at(r.pair_index);
-  const TreatmentRule& rule = rule_at(r.pair_index);
-  r.damping_force = 0.0;
-  if (r.breakaway_impulse != 0.0) apply_breakaway(contact, r);
+  const FrictionPair& pair = pairs_.pair_at(r.identity.pair_index);
+  const TreatmentRule& rule = rule_at(r.identity.pair_index);
+  r.solver.damping_force = 0.0;
+  if (r.breakaway.impulse != 0.0) apply_breakaway(contact, r);
   const bool explicit_dry = rule.explicit_dry_force != nullptr;
   if (!explicit_dry && pair.c == 0.0 && pair.b == 0.0) return;
 
@@ -429,7 +441,7 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   p *= 1.0f / static_cast<float>(count);
   const b2Vec2 t = ContactRecord::tangent_of(manifold.normal);
   const bool face = count == 2;
-  const float mass = contact_mass(r.body_a, r.body_b, face, p, t);
+  const float mass = contact_mass(r.identity.body_a, r.identity.body_b, face, p, t);
   if (mass <= 0.0f) return;
   // A contact stick-slip holds stuck does not slide: what its points still move along it is the
   // solver's leftover (a box under a steadily growing push creeps at a steady 2e-4 m/s while
@@ -437,56 +449,45 @@ void FrictionListener::apply_velocity_terms(b2Contact* contact, ContactRecord& r
   // tall box it held the box back from tipping: with c 979.8 on a 1 kg box, 1.185 m by 2 m,
   // pushed at 1.212 m, 0.044 N at its centre kept 0.011 N of 9.8 N on its back edge in the
   // step past the exact tipping push, and the box tipped a step late.
-  if (rule.treatment == FrictionTreatment::stick_slip && !r.fresh && r.state == ContactState::sticking && !explicit_dry) return;
-  const double v = sliding_speed(r.body_a, r.body_b, face, p, t);
-
-  // A body touching the other through several contacts (a block on feet, one contact a foot)
-  // slides as one body, as it sticks as one (settle): the pair's drag, c·v + b·v·|v|, is the
-  // body's, shared between its contacts, not each contact's whole. Each foot taking the whole
-  // had a block on three feet dragged by 3·c (c 5 N·s/m, 1 kg, 2 N/s: sliding at a third of
-  // the face's speed, 0.34 m/s against 0.94 after 4 s, and on six feet a sixth). Each
-  // contact's share is exact for c (the shares' decays multiply to the whole's) and
-  // first-order for b.
-  FrictionPair drag = pair;
-  if (r.siblings > 0) {
-    drag.c /= r.siblings + 1;
-    drag.b /= r.siblings + 1;
+  if (rule.treatment == FrictionTreatment::stick_slip && !r.listener.fresh && r.friction.state == ContactState::sticking &&
+      !explicit_dry) {
+    return;
   }
+  const double v = sliding_speed(r.identity.body_a, r.identity.body_b, face, p, t);
+  const FrictionPair drag = drag_share(pair, r.listener.siblings);
   // Implicit in the velocity: stable and sign-preserving at any h·c/m.
   const double damping_impulse = mass * (damped_velocity(v, mass, h, drag) - v);
   double dry_impulse = 0.0;
   if (explicit_dry) {
-    dry_impulse = h * rule.explicit_dry_force(v, r.normal_force, pair, epsilon_at(r.pair_index));
+    dry_impulse = h * rule.explicit_dry_force(v, r.solver.normal_force, pair, epsilon_at(r.identity.pair_index));
   }
   const double total = damping_impulse + dry_impulse;
   if (total == 0.0) return;
-  apply_tangential_impulse(r.body_a, r.body_b, p, t, static_cast<float>(total), face);
+  apply_tangential_impulse(r.identity.body_a, r.identity.body_b, p, t, static_cast<float>(total), face);
   const double mean_velocity = v + 0.5 * total / mass;
   work_.damping += damping_impulse * mean_velocity;
   // The dry force acts like gravity does in Box2D's semi-implicit step (v' = v + h·F/m, then
   // x' = x + h·v'), so its work is counted as gravity's is, on the step's new velocity v':
   // counted on the impulse's own mean velocity it would leave m·(h·F/m)²/2 a step unexplained
   // in the ledger, a third of a creeping block's budget.
-  r.explicit_impulse = dry_impulse;
-  r.damping_force = damping_impulse / h;
+  r.listener.explicit_impulse = dry_impulse;
+  r.solver.damping_force = damping_impulse / h;
   // Cleared at the next step even if the drag has been switched off by then.
-  drag_pending_ = drag_pending_ || r.damping_force != 0.0;
-  if (explicit_dry) r.friction_force = dry_impulse / h;
+  drag_pending_ = drag_pending_ || r.solver.damping_force != 0.0;
+  if (explicit_dry) r.solver.friction_force = dry_impulse / h;
 }
 
 void FrictionListener::forget_trial() {
   for (ContactRecord& r : records_) {
-    r.fresh = true;
-    r.state = ContactState::sticking;
-    r.breakaway_impulse = 0.0;
-    r.breakaway_span = 0.0;
-    r.held_force = 0.0;
-    r.held_limit = -1.0;
-    r.band_steps = 0;
-    r.band_excess = 0.0;
-    r.band_impulse = 0.0;
-    r.explicit_impulse = 0.0;
-    r.solving = false;
+    // All as before its first step, but the way it last slipped, which a trial has never
+    // reset (only a slip reads it), and the count of its siblings, which still touch.
+    const float way = r.friction.slip_direction;
+    const int siblings = r.listener.siblings;
+    r.friction = FrictionState{};
+    r.friction.slip_direction = way;
+    r.breakaway = OwedCorrection{};
+    r.listener = ListenerNotes{};
+    r.listener.siblings = siblings;
   }
   owing_.clear();
   work_ = ContactWork{};

@@ -21,9 +21,9 @@ inline int fixture_material(b2Fixture* fixture) {
   return static_cast<int>(fixture->GetUserData().pointer) - 1;
 }
 
-// What the solver did at one contact in the last step, so arrows, plots and the energy ledger
-// show the solver's numbers rather than the formula's.
-struct ContactRecord {
+// Which contact a record is and between what: set when the contact begins, and the same for
+// as long as it lasts.
+struct ContactIdentity {
   b2Contact* contact = nullptr;
   b2Body* body_a = nullptr;
   b2Body* body_b = nullptr;
@@ -32,8 +32,13 @@ struct ContactRecord {
   float radius_a = 0.0f;           // the fixtures' shapes' skins (b2Shape::m_radius), m
   float radius_b = 0.0f;
   int pair_index = -1;             // the pair's place in the table (PairTable::pair_at)
-  ContactState state = ContactState::sticking;
-  float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
+  bool unpaired = false;           // its materials have no pair values: switched off, reported
+};
+
+// What the listener read of the contact around the last solve: where and how it touched when
+// the solve began (PreSolve), and the forces and sliding the solver left (finish_step). This is
+// what arrows, plots and the energy ledger show, the solver's numbers rather than the formula's.
+struct SolverReadout {
   // Its pair has no dry friction (mu_s = mu_k = 0, a smooth wall; drag c or b may still act,
   // and it holds nothing either): nothing can hold it, so it neither sticks nor slips in the
   // lesson's sense; it only slides along or does not (see seen_slipping). Set from the pair
@@ -42,54 +47,93 @@ struct ContactRecord {
   int point_count = 0;
   b2Vec2 point{0.0f, 0.0f};        // world, mean of the manifold points
   b2Vec2 normal{0.0f, 1.0f};       // world, from A to B
+  // Per manifold point, at the start of the solve: the solver's lever arms and velocities.
+  b2Vec2 world_points[b2_maxManifoldPoints];
+  b2Vec2 start_velocity[b2_maxManifoldPoints];  // B's point velocity minus A's
   double normal_force = 0.0;       // N, on B
   double friction_force = 0.0;     // N, on B along the tangent (normal rotated -90°)
   double damping_force = 0.0;      // N, viscous + quadratic, on B along the tangent
   double sliding_velocity = 0.0;   // m/s, B relative to A along the tangent, end of step
-  bool before_known = false;      // the contact was solved in the step before too
-  // m/s, the driven (kinematic) bodies' share of the contact's relative velocity at the start
-  // of this step and of the step before (B's point velocity less A's, counting only a driven
-  // body's): its change along this step's tangent is what the drive alone did to the sliding
-  // between steps, apart from corrections, drag and scripts that also change the bodies'
-  // velocities there. Kept as vectors: on a turning plank the tangent turns by θ'·h between the
-  // steps, and the plank's velocity read along the old tangent and then the new one changes by
-  // its velocity across the surface times θ'·h, which B's own velocity changes by too, so that
-  // the sliding does not (the contact keeps them together across the surface). Taken for the
-  // drive, it let a block the exact model holds slide on from a stop (a plank swinging 33.7° at
-  // 5 rad/s and carried at 16 m/s by then: the slide ended 0.020 m off, 0.018 allowed; 0.014
-  // without it).
-  b2Vec2 driven_velocity{0.0f, 0.0f};
-  b2Vec2 driven_velocity_before{0.0f, 0.0f};
   double point_normal_force[b2_maxManifoldPoints] = {0.0, 0.0};  // N, how the load is shared
-  // Per manifold point, at the start of the solve: the solver's lever arms and velocities.
-  b2Vec2 world_points[b2_maxManifoldPoints];
-  b2Vec2 start_velocity[b2_maxManifoldPoints];  // B's point velocity minus A's
+  float step = 1.0f / 240.0f;      // s, the step the contact was last solved with
+};
+
+// What a drive did to the sliding between the step before and this one, read at each
+// PreSolve. Only a driven (kinematic) body's velocity counts (is_driven).
+struct DriveBetweenSteps {
+  bool before_known = false;       // the contact was solved in the step before too
+  // m/s, the driven bodies' share of the contact's relative velocity at the start of this step
+  // and of the step before (B's point velocity less A's, counting only a driven body's): its
+  // change along this step's tangent is what the drive alone did to the sliding between steps,
+  // apart from corrections, drag and scripts that also change the bodies' velocities there.
+  // Kept as vectors: on a turning plank the tangent turns by θ'·h between the steps, and the
+  // plank's velocity read along the old tangent and then the new one changes by its velocity
+  // across the surface times θ'·h, which B's own velocity changes by too, so that the sliding
+  // does not (the contact keeps them together across the surface). Taken for the drive, it let
+  // a block the exact model holds slide on from a stop (a plank swinging 33.7° at 5 rad/s and
+  // carried at 16 m/s by then: the slide ended 0.020 m off, 0.018 allowed; 0.014 without it).
+  b2Vec2 velocity{0.0f, 0.0f};
+  b2Vec2 velocity_before{0.0f, 0.0f};
+};
+
+// A stuck contact whose friction went a hair past mu_s·N, within what the solver holds for a
+// step (see treatment_stick_slip.cpp): how many steps in a row, the last step's friction above
+// the limit (N), and the impulse held above the limit over them (N·s).
+struct HoldBand {
+  int steps = 0;
+  double excess = 0.0;
+  double impulse = 0.0;
+};
+
+// Whether the contact sticks or slips, and what the treatment carries from one step to the
+// next to decide it again. A group of contacts between the same two bodies (a body on feet)
+// sticks or slips as one, so every contact of the group holds the same copy of all of it
+// (FrictionListener::share_group_state, join_group): whatever a treatment keeps of the group's
+// state goes here, and a contact's own goes elsewhere.
+struct FrictionState {
+  ContactState state = ContactState::sticking;
+  float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
+  double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
+  // N, mu_s·N in that step (negative: not known, as before any step). The breakaway is placed
+  // where the demand's margin over the limit crossed zero, and a limit that falls as N does
+  // moves that crossing as much as a demand that grows (see breakaway_correction).
+  double held_limit = -1.0;
+  HoldBand band;
+};
+
+// The correction a breakaway or re-stick owes the bodies, paid before the next step.
+struct OwedCorrection {
+  double impulse = 0.0;            // N·s along the tangent on B, owed since the last breakaway
+  // s, how long the kinetic friction that impulse stands for has been acting: it was owed at
+  // that rate, and a stuck neighbour must have carried its share as fast. 0 for a re-stick's
+  // correction, which is a change of B's velocity rather than friction over a time.
+  double span = 0.0;
+};
+
+// The listener's own notes on the contact, from one call to the next.
+struct ListenerNotes {
   bool fresh = true;               // not yet seen by PreSolve: its first state comes from its speed
   bool solving = false;            // seen by PreSolve in this step, not yet by finish_step
   // How many other touching contacts join the same two bodies through the same pair of
   // materials (a body on feet has one contact a foot). Such a group sticks or slips as one:
   // under stick-slip its state is decided once a step for all of them (see settle).
   int siblings = 0;
-  bool unpaired = false;           // its materials have no pair values: switched off, reported
-  double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
-  // N, mu_s·N in that step (negative: not known, as before any step). The breakaway is placed
-  // where the demand's margin over the limit crossed zero, and a limit that falls as N does
-  // moves that crossing as much as a demand that grows (see breakaway_correction).
-  double held_limit = -1.0;
-  // A stuck contact whose friction went a hair past mu_s·N, within what the solver holds for a
-  // step (see treatment_stick_slip.cpp): how many steps in a row, the last step's friction
-  // above the limit (N), and the impulse held above the limit over them (N·s).
-  int band_steps = 0;
-  double band_excess = 0.0;
-  double band_impulse = 0.0;
-  double breakaway_impulse = 0.0;  // N·s along the tangent on B, owed since the last breakaway
-  // s, how long the kinetic friction that impulse stands for has been acting: it was owed at
-  // that rate, and a stuck neighbour must have carried its share as fast. 0 for a re-stick's
-  // correction, which is a change of B's velocity rather than friction over a time.
-  double breakaway_span = 0.0;
   // N·s, the explicit dry impulse applied before this step (regularized), whose work is counted
   // once the step's velocity is known.
   double explicit_impulse = 0.0;
+};
+
+// One contact as the listener keeps it, in the parts that change at different moments: who
+// touches (once), what the solve read (every step), what the drive did between steps, whether
+// it sticks or slips (the treatment's, shared by a group), the correction it owes, and the
+// listener's notes.
+struct ContactRecord {
+  ContactIdentity identity;
+  SolverReadout solver;
+  DriveBetweenSteps drive;
+  FrictionState friction;
+  OwedCorrection breakaway;
+  ListenerNotes listener;
 
   // Whether a student reads it as slipping (the probe `slipping`, the plots' shading): its
   // state; or, frictionless, whether the bodies slide along each other at all. The listener's
@@ -105,23 +149,26 @@ struct ContactRecord {
   // the end of the step it began in. (A box thrown into a smooth wall creeps on along the
   // floor at 8e-7 m/s, the solver pushing it into the wall: it slides, slowly, and reads so.)
   static constexpr double frictionless_sliding_speed_at_240_hz = 1e-7;  // m/s
-  float step = 1.0f / 240.0f;  // s, the step the contact was last solved with
   double frictionless_sliding_speed() const {
-    const double steps_of_240_hz = 240.0 * step;
+    const double steps_of_240_hz = 240.0 * solver.step;
     return frictionless_sliding_speed_at_240_hz * steps_of_240_hz * steps_of_240_hz;
   }
   bool seen_slipping() const {
-    if (frictionless) return std::abs(sliding_velocity) > frictionless_sliding_speed();
-    return state == ContactState::slipping;
+    if (solver.frictionless) return std::abs(solver.sliding_velocity) > frictionless_sliding_speed();
+    return friction.state == ContactState::slipping;
   }
 
   // Box2D's friction direction for a contact normal: the normal turned by -90°.
   static b2Vec2 tangent_of(const b2Vec2& n) { return b2Cross(n, 1.0f); }
-  b2Vec2 tangent() const { return tangent_of(normal); }
+  b2Vec2 tangent() const { return tangent_of(solver.normal); }
   // The forces on `body`, which must be one of the two in contact (N, world axes).
-  b2Vec2 friction_on(const b2Body* body) const { return side(body) * static_cast<float>(friction_force) * tangent(); }
-  b2Vec2 normal_on(const b2Body* body) const { return side(body) * static_cast<float>(normal_force) * normal; }
-  float side(const b2Body* body) const { return body == body_b ? 1.0f : -1.0f; }
+  b2Vec2 friction_on(const b2Body* body) const {
+    return side(body) * static_cast<float>(solver.friction_force) * tangent();
+  }
+  b2Vec2 normal_on(const b2Body* body) const {
+    return side(body) * static_cast<float>(solver.normal_force) * solver.normal;
+  }
+  float side(const b2Body* body) const { return body == identity.body_b ? 1.0f : -1.0f; }
 };
 
 // Work done in one step, split the way the energy ledger reports it (joules).
@@ -163,13 +210,13 @@ class FrictionListener : public b2ContactListener {
   // The record of one of the world's contacts (null if the listener has none).
   const ContactRecord* record(const b2Contact* contact) const {
     const std::size_t index = index_of(contact);
-    return index < records_.size() && records_[index].contact == contact ? &records_[index] : nullptr;
+    return index < records_.size() && records_[index].identity.contact == contact ? &records_[index] : nullptr;
   }
   // The scene put a body of this contact to rest (it sleeps, its velocity zero): Box2D solves a
   // sleeping contact no more, so finish_step() would leave its last sliding speed standing for
   // as long as it sleeps; resting, it slides no more.
   void came_to_rest(const b2Contact* contact) {
-    if (ContactRecord* r = mutable_record(contact)) r->sliding_velocity = 0.0;
+    if (ContactRecord* r = mutable_record(contact)) r->solver.sliding_velocity = 0.0;
   }
   // The first error met during the last step (empty if none), cleared by reading it.
   std::string take_error();
@@ -204,13 +251,14 @@ class FrictionListener : public b2ContactListener {
   // contact on it (quadratic in a pile's base), so the moving body's is walked.
   template <class Visit>
   void visit_group(const ContactRecord& r, Visit visit) {
-    if (r.unpaired) return;
-    b2Body* walked = r.body_b->GetType() == b2_staticBody ? r.body_a : r.body_b;
-    const b2Body* partner = walked == r.body_b ? r.body_a : r.body_b;
+    if (r.identity.unpaired) return;
+    b2Body* walked = r.identity.body_b->GetType() == b2_staticBody ? r.identity.body_a : r.identity.body_b;
+    const b2Body* partner = walked == r.identity.body_b ? r.identity.body_a : r.identity.body_b;
     for (b2ContactEdge* edge = walked->GetContactList(); edge != nullptr; edge = edge->next) {
       if (edge->other != partner) continue;
       ContactRecord* member = mutable_record(edge->contact);
-      if (member == nullptr || member->unpaired || member->pair_index != r.pair_index) continue;
+      if (member == nullptr || member->identity.unpaired) continue;
+      if (member->identity.pair_index != r.identity.pair_index) continue;
       if (!visit(static_cast<const b2Contact*>(edge->contact), *member)) return;
     }
   }
@@ -232,15 +280,18 @@ class FrictionListener : public b2ContactListener {
   // index is kept in the contact's restitution threshold instead: Box2D reads that only to
   // decide whether a contact bounces, and FrictionLab's fixtures have no restitution, so the
   // threshold changes nothing. A contact that never began (its threshold is Box2D's 1 m/s)
-  // fails the check in record(), whose records_[index].contact must be the contact itself.
+  // fails the check in record(), whose records_[index].identity.contact must be the contact itself.
   static std::size_t index_of(const b2Contact* contact) {
     return static_cast<std::size_t>(contact->GetRestitutionThreshold());
   }
   void place(ContactRecord& record, std::size_t index) {
-    record.contact->SetRestitutionThreshold(static_cast<float>(index));
+    record.identity.contact->SetRestitutionThreshold(static_cast<float>(index));
   }
   // The figures of one contact the solver solved in the last step (see finish_step).
   void settle(ContactRecord& r);
+  // What the solver did at r's points in the last step: its forces and sliding into the record,
+  // the work into the ledger, and the totals the treatment judges the contact by.
+  SolvedContact read_solve(ContactRecord& r, const TreatmentRule& rule);
   // The contact's world manifold now, as b2Contact::GetWorldManifold gives it.
   static void world_manifold(const b2Contact* contact, const ContactRecord& r, b2WorldManifold* world);
   // Whether some contact may owe a drag or regularized force before the coming step, so that

@@ -48,15 +48,16 @@ void FrictionListener::share_with_stuck(const b2Contact* broken, b2Body* body, c
   // Whether `link` can carry `carried` (N·s on `to`) over span within its static limit.
   auto carries = [&](const ContactRecord& link, const b2Body* to, const b2Vec2& carried) {
     const double added = link.side(to) * b2Dot(carried, link.tangent());
-    const double limit = breakaway_coefficient(pairs_.pair_at(link.pair_index)) * link.normal_force;
-    return std::abs(link.friction_force + added / span) <= limit;
+    const double limit = breakaway_coefficient(pairs_.pair_at(link.identity.pair_index)) * link.solver.normal_force;
+    return std::abs(link.solver.friction_force + added / span) <= limit;
   };
   for (std::size_t i = 0; i < members.size() && members.size() < most_sharing; ++i) {
     for (b2ContactEdge* edge = members[i].body->GetContactList(); edge != nullptr; edge = edge->next) {
       if (edge->contact == broken || !edge->contact->IsTouching()) continue;
       const ContactRecord* link = record(edge->contact);
-      if (link == nullptr || link->unpaired || link->fresh || link->state != ContactState::sticking ||
-          link->normal_force <= 0.0 || rule_at(link->pair_index).treatment != FrictionTreatment::stick_slip) {
+      if (link == nullptr || link->identity.unpaired || link->listener.fresh ||
+          link->friction.state != ContactState::sticking || link->solver.normal_force <= 0.0 ||
+          rule_at(link->identity.pair_index).treatment != FrictionTreatment::stick_slip) {
         continue;
       }
       if (std::abs(b2Dot(link->tangent(), along)) < parallel_links * along.Length()) continue;
@@ -106,26 +107,26 @@ void FrictionListener::share_with_stuck(const b2Contact* broken, b2Body* body, c
 void FrictionListener::apply_breakaway(b2Contact* contact, ContactRecord& r) {
   const b2Vec2 t = r.tangent();
   // A group's correction is its body's, through the centres like a face's.
-  const bool face = r.point_count == 2 || r.siblings > 0;
-  const double owed = r.breakaway_impulse;
-  const double span = r.breakaway_span;
-  r.breakaway_impulse = 0.0;
-  r.breakaway_span = 0.0;
+  const bool face = r.solver.point_count == 2 || r.listener.siblings > 0;
+  const double owed = r.breakaway.impulse;
+  const double span = r.breakaway.span;
+  r.breakaway.impulse = 0.0;
+  r.breakaway.span = 0.0;
   const b2Vec2 push = static_cast<float>(owed) * t;  // on B; A takes -push
   std::vector<Share> shares;
   bool alone = true;  // each side's share is all its own
   if (span > 0.0) {
-    for (b2Body* side : {r.body_b, r.body_a}) {
+    for (b2Body* side : {r.identity.body_b, r.identity.body_a}) {
       if (side->GetType() != b2_dynamicBody) continue;
       const std::size_t first = shares.size();
-      share_with_stuck(contact, side, side == r.body_b ? push : -push, span, &shares);
+      share_with_stuck(contact, side, side == r.identity.body_b ? push : -push, span, &shares);
       alone = alone && shares.size() == first + 1;
     }
   }
   if (alone) {
-    const double mass = contact_mass(r.body_a, r.body_b, face, r.point, t);
-    const double v = sliding_speed(r.body_a, r.body_b, face, r.point, t);
-    apply_tangential_impulse(r.body_a, r.body_b, r.point, t, static_cast<float>(owed), face);
+    const double mass = contact_mass(r.identity.body_a, r.identity.body_b, face, r.solver.point, t);
+    const double v = sliding_speed(r.identity.body_a, r.identity.body_b, face, r.solver.point, t);
+    apply_tangential_impulse(r.identity.body_a, r.identity.body_b, r.solver.point, t, static_cast<float>(owed), face);
     if (mass > 0.0) work_.friction += owed * (v + 0.5 * owed / mass);
     return;
   }
@@ -134,10 +135,10 @@ void FrictionListener::apply_breakaway(b2Contact* contact, ContactRecord& r) {
   double before = 0.0, after = 0.0;
   for (const Share& s : shares) before += kinetic_energy(s.body);
   for (const Share& s : shares) {
-    if (face || (s.body != r.body_a && s.body != r.body_b)) {
+    if (face || (s.body != r.identity.body_a && s.body != r.identity.body_b)) {
       s.body->ApplyLinearImpulseToCenter(s.push, true);
     } else {
-      s.body->ApplyLinearImpulse(s.push, r.point, true);
+      s.body->ApplyLinearImpulse(s.push, r.solver.point, true);
     }
   }
   for (const Share& s : shares) after += kinetic_energy(s.body);

@@ -141,7 +141,7 @@ StickSlipObservation observe_spring_pull(const SpringPull& setup, const StepSett
   run(*scene, duration, [&] {
     seen.max_error = std::max(seen.max_error, std::abs((block->GetPosition().x - start) - exact.position(scene->time())));
     const ContactRecord* contact = scene->friction().find(block, ground);
-    const ContactState now = contact ? contact->state : last;
+    const ContactState now = contact ? contact->friction.state : last;
     // The state changed during the step just taken; the spring force of that step is the
     // one that was acting when it did.
     const double force = spring_force.size() >= 2 ? spring_force[spring_force.size() - 2] : 0.0;
@@ -237,7 +237,7 @@ PulledBlock pull_block(const Block& block, const StepSettings& settings) {
     if (contact == nullptr) return false;
     const double pull = rate * (scene->time() - scene->frame_step());  // what acted in this frame
     if (std::isnan(result.breakaway_force)) {
-      if (contact->state == ContactState::slipping) {
+      if (contact->friction.state == ContactState::slipping) {
         result.breakaway_force = pull;
         start_speed = body->GetLinearVelocity().x;
       }
@@ -290,17 +290,18 @@ PushResult run_pushed_box(const PushedBox& setup, const StepSettings& settings, 
     // The push applied during the step just taken (it is set at the step's start).
     const double push = setup.push_rate * (scene->time() - scene->frame_step());
     const ContactRecord* contact = scene->friction().find(box, ground);
-    if (contact != nullptr && contact->state == ContactState::slipping) {
+    if (contact != nullptr && contact->friction.state == ContactState::slipping) {
       result.tipped = false;
       result.force = push;
       return true;
     }
     // Tipping starts when the back edge stops carrying any of the weight: where its load,
     // falling in a straight line with the push, reaches zero between two steps.
-    const double back = contact == nullptr || contact->point_count < 2
+    const double back = contact == nullptr || contact->solver.point_count < 2
                             ? 0.0
-                            : std::min(contact->point_normal_force[0], contact->point_normal_force[1]);
-    const double total = contact == nullptr ? 0.0 : contact->point_normal_force[0] + contact->point_normal_force[1];
+                            : std::min(contact->solver.point_normal_force[0], contact->solver.point_normal_force[1]);
+    const double total =
+        contact == nullptr ? 0.0 : contact->solver.point_normal_force[0] + contact->solver.point_normal_force[1];
     if (back > 1e-9 * total) {
       back_before = back;
       return false;

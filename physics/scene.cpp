@@ -444,7 +444,7 @@ bool Scene::touching_now(b2Contact* contact) const {
   // solved in it, so its record's normal force is this step's.)
   if (contact->IsTouching()) {
     const ContactRecord* record = listener_.record(contact);
-    if (record != nullptr && record->normal_force > 0.0) return true;
+    if (record != nullptr && record->solver.normal_force > 0.0) return true;
   }
   if (touching_checked_at_ != world_steps_) {
     touching_before_.swap(touching_);
@@ -592,10 +592,10 @@ void Scene::step() {
   times_.push_back(time_);
   bool any_slipping = false, any_touching = false;
   for (const ContactRecord& record : listener_.contacts()) {
-    any_slipping = any_slipping || (record.point_count > 0 && record.seen_slipping());
+    any_slipping = any_slipping || (record.solver.point_count > 0 && record.seen_slipping());
     // Where the shapes are now, as the probes read a contact: a block that has just left the
     // floor reads no contact in the very step it leaves (its friction reads 0 there).
-    any_touching = any_touching || (record.point_count > 0 && touching_now(record.contact));
+    any_touching = any_touching || (record.solver.point_count > 0 && touching_now(record.identity.contact));
   }
   slipping_.push_back(any_slipping ? 1 : 0);
   touching_record_.push_back(any_touching ? 1 : 0);

@@ -32,14 +32,14 @@ namespace {
 b2Vec2 centre_of_load(const ContactRecord& record) {
   double total = 0.0;
   b2Vec2 sum{0.0f, 0.0f};
-  for (int i = 0; i < record.point_count && i < b2_maxManifoldPoints; ++i) {
-    total += record.point_normal_force[i];
-    sum += static_cast<float>(record.point_normal_force[i]) * record.world_points[i];
+  for (int i = 0; i < record.solver.point_count && i < b2_maxManifoldPoints; ++i) {
+    total += record.solver.point_normal_force[i];
+    sum += static_cast<float>(record.solver.point_normal_force[i]) * record.solver.world_points[i];
   }
-  return total > 1e-9 ? (1.0f / static_cast<float>(total)) * sum : record.point;
+  return total > 1e-9 ? (1.0f / static_cast<float>(total)) * sum : record.solver.point;
 }
 
-bool touching(const ContactRecord& record) { return record.point_count > 0 && !record.unpaired; }
+bool touching(const ContactRecord& record) { return record.solver.point_count > 0 && !record.identity.unpaired; }
 
 }  // namespace
 
@@ -64,7 +64,7 @@ std::vector<ForceOnBody> forces_on(const Scene& scene, const b2Body* body) {
     const b2Vec2 point = centre_of_load(record);
     const b2Body* other = a == body ? b : a;
     forces.push_back({ForceKind::normal, body, point, record.normal_on(body), other});
-    const b2Vec2 drag = record.side(body) * static_cast<float>(record.damping_force) * record.tangent();
+    const b2Vec2 drag = record.side(body) * static_cast<float>(record.solver.damping_force) * record.tangent();
     // Friction (and drag) from one other body is drawn as one arrow, their sum, at the centre of
     // the load: a block on six feet has six normal forces to show but one friction force to
     // read. Each foot's normal force keeps its own arrow.
@@ -128,9 +128,10 @@ std::vector<ContactMark> contact_marks(const Scene& scene) {
     const ContactRecord* found = scene.friction().record(contact);
     if (found == nullptr || !touching(*found)) continue;
     const ContactRecord& record = *found;
-    if (record.body_a->GetType() != b2_dynamicBody && record.body_b->GetType() != b2_dynamicBody) continue;
-    marks.push_back({record.body_a, record.body_b, centre_of_load(record), record.tangent(), record.state,
-                     record.frictionless, record.sliding_velocity, record.friction_force});
+    const ContactIdentity& between = record.identity;
+    if (between.body_a->GetType() != b2_dynamicBody && between.body_b->GetType() != b2_dynamicBody) continue;
+    marks.push_back({between.body_a, between.body_b, centre_of_load(record), record.tangent(), record.friction.state,
+                     record.solver.frictionless, record.solver.sliding_velocity, record.solver.friction_force});
   }
   return marks;
 }

@@ -41,15 +41,16 @@ bool Scene::at_rest(const b2Body* body, std::size_t index) const {
     if (!edge->contact->IsTouching()) continue;
     if (edge->other->GetType() != b2_staticBody) return false;
     const ContactRecord* record = listener_.record(edge->contact);
-    if (record == nullptr || record->unpaired || record->point_count == 0 ||
-        listener_.treatment_of(record->material_a, record->material_b) != FrictionTreatment::stick_slip) {
+    if (record == nullptr || record->identity.unpaired || record->solver.point_count == 0 ||
+        listener_.treatment_of(record->identity.material_a, record->identity.material_b) !=
+            FrictionTreatment::stick_slip) {
       return false;
     }
     // A frictionless touch holds nothing along itself, and the listener may call it slipping
     // however slowly the body moves; at rest on it, the body is on level ground and stays.
-    const FrictionPair& pair = pairs_.pair_at(record->pair_index);
+    const FrictionPair& pair = pairs_.pair_at(record->identity.pair_index);
     const bool frictionless = pair.mu_s == 0.0 && pair.mu_k == 0.0 && pair.c == 0.0 && pair.b == 0.0;
-    if (record->state != ContactState::sticking && !frictionless) return false;
+    if (record->friction.state != ContactState::sticking && !frictionless) return false;
     touching = true;
   }
   return touching;

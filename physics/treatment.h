@@ -38,7 +38,7 @@ struct SolvedContact {
 struct TreatmentRule {
   FrictionTreatment treatment;
   // Before the solve: the coefficient Box2D's solver clamps the tangential impulse with, given
-  // the mean sliding speed at the start of the step; may set the record's state. record.fresh is
+  // the mean sliding speed at the start of the step; may set the record's state. record.listener.fresh is
   // true at the contact's first solve. epsilon is the threshold speed, m/s.
   float (*solver_coefficient)(ContactRecord& record, const FrictionPair& pair, float sliding, double epsilon);
   // After the solve: the contact's state for the next step, from the impulses it took.

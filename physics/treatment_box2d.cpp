@@ -14,7 +14,7 @@ float solver_coefficient(ContactRecord&, const FrictionPair& pair, float, double
 
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   const double reached = std::abs(solved.tangent_impulse) / solved.normal_impulse;
-  r.state = reached >= pair.mu_k * (1.0 - stop_tolerance) ? ContactState::slipping : ContactState::sticking;
+  r.friction.state = reached >= pair.mu_k * (1.0 - stop_tolerance) ? ContactState::slipping : ContactState::sticking;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace frictionlab {
 namespace {
 
 float solver_coefficient(ContactRecord& r, const FrictionPair&, float sliding, double epsilon) {
-  r.state = std::abs(sliding) < epsilon ? ContactState::sticking : ContactState::slipping;
+  r.friction.state = std::abs(sliding) < epsilon ? ContactState::sticking : ContactState::slipping;
   return 0.0f;
 }
 

@@ -69,12 +69,13 @@ constexpr double dying_away = 0.5;
 constexpr float group_hold_coefficient = 1e4f;
 
 float solver_coefficient(ContactRecord& r, const FrictionPair& pair, float sliding, double) {
-  if (r.fresh && std::abs(sliding) > birth_sliding_speed) {
-    r.state = ContactState::slipping;
-    r.slip_direction = sign(sliding);
+  if (r.listener.fresh && std::abs(sliding) > birth_sliding_speed) {
+    r.friction.state = ContactState::slipping;
+    r.friction.slip_direction = sign(sliding);
   }
-  if (r.state == ContactState::slipping) return static_cast<float>(pair.mu_k);
-  return r.siblings > 0 ? group_hold_coefficient : static_cast<float>(breakaway_coefficient(pair) * (1.0 + hold_band));
+  if (r.friction.state == ContactState::slipping) return static_cast<float>(pair.mu_k);
+  return r.listener.siblings > 0 ? group_hold_coefficient
+                                 : static_cast<float>(breakaway_coefficient(pair) * (1.0 + hold_band));
 }
 
 // What a stuck contact (or group) did in a step, along its tangent: the friction it held and
@@ -96,8 +97,9 @@ StuckStep stuck_step(const ContactRecord& r, const FrictionPair& pair, const Sol
   step.limit = breakaway_coefficient(pair) * step.normal_force;
   step.held = std::abs(solved.group_tangent_impulse) / step.h;
   // A group's feet keep the body level, as a face does; a lone contact's own mass applies.
-  step.mass = r.siblings > 0 ? translational_mass(r.body_a, r.body_b)
-                             : contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
+  step.mass = r.listener.siblings > 0
+                  ? translational_mass(r.identity.body_a, r.identity.body_b)
+                  : contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, r.tangent());
   step.demanded = step.held + step.mass * std::abs(solved.group_sliding_end) / step.h;
   step.way = sign(static_cast<float>(step.mass * solved.group_sliding_end - solved.group_tangent_impulse));
   return step;
@@ -109,10 +111,10 @@ bool looks_like_leftover(const ContactRecord& r, const StuckStep& step, double p
   // A group's sliding at the start is known only at each foot, where the body's turning adds
   // round-off as large as such a leftover (5e-8 m/s on a block on three feet at 1000 Hz, a
   // twentieth of the excess): groups break away past the tolerance, as they did.
-  if (r.siblings > 0 || r.point_count == 0) return false;
+  if (r.listener.siblings > 0 || r.solver.point_count == 0) return false;
   double start = 0.0;  // B's sliding when the step began, along the tangent
-  for (int i = 0; i < r.point_count; ++i) start += b2Dot(r.start_velocity[i], r.tangent());
-  start /= r.point_count;
+  for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], r.tangent());
+  start /= r.solver.point_count;
   const double along = step.way * start;
   return along > 0.0 && std::abs(solved.group_sliding_end) <= leftover_taken * along &&
          step.mass * along >= leftover_share * past * step.h;
@@ -133,27 +135,28 @@ bool looks_like_leftover(const ContactRecord& r, const StuckStep& step, double p
 // owed is what the solver held past the limit (in this step and any it held within the band)
 // and (mu_s - mu_k)·N·s. Without it the breakaway is a step late on average and the error is
 // first order; with it the spring lesson converges at second order. s goes into the record
-// (breakaway_span): the listener shares the impulse with bodies stuck to B or A at that rate.
+// (breakaway.span): the listener shares the impulse with bodies stuck to B or A at that rate.
 double breakaway_correction(ContactRecord& r, const FrictionPair& pair, const StuckStep& step) {
-  const double span = (r.band_steps + 1) * step.h;  // since the friction was last within the limit
+  const double span = (r.friction.band.steps + 1) * step.h;  // since the friction was last within the limit
   const double excess = std::max(step.demanded - step.limit, 0.0);
   // The limit then: this step's if none is known (the same limit for both ends), and for a group.
   // A group's total normal impulse carries the solver's split between its feet, which moves
   // from step to step (3.7e-5 of N on a block on three feet, mu_s 2, 120 Hz: the limit moved by
   // 4 % of a step's growth of the pull, the crossing by a tenth of a step, and the block slid
   // 0.15 % faster than on its face). A lone contact's N is the solver's one answer.
-  const double limit_then = r.held_limit >= 0.0 && r.siblings == 0 ? r.held_limit : step.limit;
-  const double growth = ((step.demanded - step.limit) - (r.held_force - limit_then)) / span;
+  const double limit_then =
+      r.friction.held_limit >= 0.0 && r.listener.siblings == 0 ? r.friction.held_limit : step.limit;
+  const double growth = ((step.demanded - step.limit) - (r.friction.held_force - limit_then)) / span;
   const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, span) : 0.5 * step.h;
-  const double held_past = r.band_impulse + std::max(step.held - step.limit, 0.0) * step.h;
-  r.breakaway_span = late + 0.5 * step.h;
-  return held_past + (breakaway_coefficient(pair) - pair.mu_k) * step.normal_force * r.breakaway_span;
+  const double held_past = r.friction.band.impulse + std::max(step.held - step.limit, 0.0) * step.h;
+  r.breakaway.span = late + 0.5 * step.h;
+  return held_past + (breakaway_coefficient(pair) - pair.mu_k) * step.normal_force * r.breakaway.span;
 }
 
 void leave_band(ContactRecord& r) {
-  r.band_steps = 0;
-  r.band_excess = 0.0;
-  r.band_impulse = 0.0;
+  r.friction.band.steps = 0;
+  r.friction.band.excess = 0.0;
+  r.friction.band.impulse = 0.0;
 }
 
 // A slipping contact whose sliding reversed inside the step stopped somewhere in it, and from
@@ -193,24 +196,24 @@ void leave_band(ContactRecord& r) {
 void restick_correction(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   const double h = solved.step;
   const b2Vec2 t = r.tangent();
-  if (r.point_count == 0 || h <= 0.0) return;
+  if (r.solver.point_count == 0 || h <= 0.0) return;
   double start = 0.0;
-  for (int i = 0; i < r.point_count; ++i) start += b2Dot(r.start_velocity[i], t);
-  start /= r.point_count;
+  for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], t);
+  start /= r.solver.point_count;
   const double end = solved.sliding_end;
-  const double mass = contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, t);
+  const double mass = contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, t);
   if (!(mass > 0.0)) return;
   const double normal_force = solved.normal_impulse / h;
   const double other = (mass * (end - start) - solved.tangent_impulse) / h;  // N on B along t, but friction
   // 0 unless a body is driven: the listener counts only a driven body's velocity in them.
-  const double drive = r.before_known ? mass * b2Dot(r.driven_velocity - r.driven_velocity_before, t) / h : 0.0;
+  const double drive = r.drive.before_known ? mass * b2Dot(r.drive.velocity - r.drive.velocity_before, t) / h : 0.0;
   const double pushing = other + drive;            // N on B along t over the span, but friction
   const double before = start - drive * h / mass;  // B's sliding at the span's start
   // Read from float velocities, `other` is good to a few parts in a million; at the limit
   // itself (a spring stopping a block with mu_k = 0 pushes back with exactly mu_s·N) it holds,
   // and were it a hair above, the next step's stuck solve would find that out.
   const double limit = breakaway_coefficient(pair) * normal_force * (1.0 + stop_tolerance);
-  const double way = r.slip_direction;
+  const double way = r.friction.slip_direction;
   // m/s that kinetic friction and the pushing take from the sliding over the span while it
   // slides on the old way.
   const double slowing = (pair.mu_k * normal_force - way * pushing) * h / mass;
@@ -220,7 +223,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
     // at the span's very end, or a normal impulse that changed after friction was clamped
     // against it): it slides on the old way.
     wanted = before + (pushing - way * pair.mu_k * normal_force) * h / mass;
-    r.state = ContactState::slipping;
+    r.friction.state = ContactState::slipping;
   } else {
     // The share of the span it slid on before it stopped (none, if it already slid the other
     // way at the span's start).
@@ -228,18 +231,18 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
     if (std::abs(pushing) > limit) {
       const double back = pushing > 0.0 ? 1.0 : -1.0;
       wanted = (pushing - back * pair.mu_k * normal_force) * (1.0 - stopped) * h / mass;
-      r.state = ContactState::slipping;
-      r.slip_direction = static_cast<float>(back);
+      r.friction.state = ContactState::slipping;
+      r.friction.slip_direction = static_cast<float>(back);
     } else {
       // Held: the friction holding it is the pushing, from which a later breakaway's crossing
       // of the limit is placed (breakaway_correction).
-      r.state = ContactState::sticking;
-      r.held_force = std::abs(pushing);
-      r.held_limit = breakaway_coefficient(pair) * normal_force;
+      r.friction.state = ContactState::sticking;
+      r.friction.held_force = std::abs(pushing);
+      r.friction.held_limit = breakaway_coefficient(pair) * normal_force;
     }
   }
-  r.breakaway_impulse = mass * (wanted - end);
-  r.breakaway_span = 0.0;
+  r.breakaway.impulse = mass * (wanted - end);
+  r.breakaway.span = 0.0;
 }
 
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
@@ -247,7 +250,7 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
   // they reached together decides, once for the group (see FrictionListener::settle). For a
   // contact alone the group's figures are its own.
   const double reached = std::abs(solved.group_tangent_impulse) / solved.group_normal_impulse;
-  if (r.state == ContactState::sticking) {
+  if (r.friction.state == ContactState::sticking) {
     const StuckStep step = stuck_step(r, pair, solved);
     // Without friction to hold it (mu_s = mu_k = 0) a contact slips, as it always did. Within
     // mu_s·N it stays stuck if the solver held it: if what holding takes, with what the contact
@@ -257,37 +260,40 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // it and slid back at up to 0.09 m/s while read as stuck, never seen to slip.
     if (step.limit > 0.0 && step.held <= step.limit * (1.0 + breakaway_tolerance) &&
         step.demanded <= step.limit * (1.0 + hold_band)) {
-      r.held_force = step.held;
-      r.held_limit = step.limit;
+      r.friction.held_force = step.held;
+      r.friction.held_limit = step.limit;
       leave_band(r);
       return;
     }
     const double past = step.held - step.limit;
     const bool within_band = step.demanded <= step.limit * (1.0 + hold_band);
-    const bool watched = r.band_steps > 0 ? past < dying_away * r.band_excess : looks_like_leftover(r, step, past, solved);
+    const bool watched = r.friction.band.steps > 0 ? past < dying_away * r.friction.band.excess
+                                                   : looks_like_leftover(r, step, past, solved);
     if (within_band && watched) {
-      ++r.band_steps;
-      r.band_excess = past;
-      r.band_impulse += past * step.h;
+      ++r.friction.band.steps;
+      r.friction.band.excess = past;
+      r.friction.band.impulse += past * step.h;
       return;
     }
     // B goes the way it would have gone without the friction. Its sliding velocity alone will
     // not do: a contact that held at the limit ends its step with round-off of either sign for
     // a velocity, and slipping the wrong way, the next step saw a reversal and stuck again.
-    r.state = ContactState::slipping;
-    r.slip_direction = step.way;
-    r.breakaway_impulse = r.slip_direction * breakaway_correction(r, pair, step);
+    r.friction.state = ContactState::slipping;
+    r.friction.slip_direction = step.way;
+    r.breakaway.impulse = r.friction.slip_direction * breakaway_correction(r, pair, step);
     leave_band(r);
     // What the step held past the limit is handed back with the correction: the step's
     // friction, as the arrows and plots show it, is the limit.
-    if (r.siblings == 0 && step.held > step.limit) r.friction_force *= step.limit / step.held;
+    if (r.listener.siblings == 0 && step.held > step.limit) r.solver.friction_force *= step.limit / step.held;
   } else {
     // With no friction at all nothing stops the sliding, so a reversal is the other body's doing
     // (a driven plank's velocity changes between steps) and the contact slides on, the new way.
     // Taken for a stop, its correction set the sliding to zero: a frictionless block on a shaken
     // plank was dragged along at the plank's speed at every reversal.
     if (breakaway_coefficient(pair) == 0.0) {
-      if (solved.group_sliding_end != 0.0) r.slip_direction = static_cast<float>(sign(solved.group_sliding_end));
+      if (solved.group_sliding_end != 0.0) {
+        r.friction.slip_direction = static_cast<float>(sign(solved.group_sliding_end));
+      }
       return;
     }
     // Friction short of mu_k·N is the solver's evidence that it held the contact, which then
@@ -297,8 +303,10 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // passes: 0.4 % short on a pair sliding at 2.3 m/s, taken for held, stuck, broken away the
     // next step with a correction for the time it "held", and so every other step: 4 m/s² more
     // than its forces give).
-    const double mass = r.siblings > 0 ? translational_mass(r.body_a, r.body_b)
-                                       : contact_mass(r.body_a, r.body_b, r.point_count == 2, r.point, r.tangent());
+    const double mass =
+        r.listener.siblings > 0
+            ? translational_mass(r.identity.body_a, r.identity.body_b)
+            : contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, r.tangent());
     const bool at_rest = mass > 0.0 && std::abs(solved.group_sliding_end) <= pair.mu_k * solved.group_normal_impulse / mass;
     // Friction falls short of mu_k·N while a contact slides too: the normal impulses move after
     // friction was clamped against them, most in the first step after a breakaway, warm-started
@@ -312,12 +320,12 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // more than the speed below which a contact counts as not sliding
     // (stick_slip_birth_sliding_speed), was not held.
     double start = 0.0;
-    for (int i = 0; i < r.point_count; ++i) start += b2Dot(r.start_velocity[i], r.tangent());
-    if (r.point_count > 0) start /= r.point_count;
-    const bool sped_up = r.slip_direction * (solved.group_sliding_end - start) > birth_sliding_speed;
+    for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], r.tangent());
+    if (r.solver.point_count > 0) start /= r.solver.point_count;
+    const bool sped_up = r.friction.slip_direction * (solved.group_sliding_end - start) > birth_sliding_speed;
     const bool held = reached < pair.mu_k * (1.0 - stop_tolerance) && at_rest && !sped_up;
-    const bool reversed = sign(solved.group_sliding_end) == -r.slip_direction;
-    if (held || reversed) r.state = ContactState::sticking;
+    const bool reversed = sign(solved.group_sliding_end) == -r.friction.slip_direction;
+    if (held || reversed) r.friction.state = ContactState::sticking;
     // Stopped by the solver on a driven body, the drive may carry it on the other way at once,
     // which the drive's change of velocity at the next step's start shows the stuck solve only
     // then: held for that step at mu_s·N, it broke away with a correction for a span read from
@@ -326,9 +334,9 @@ void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact
     // correction's (mu_s - mu_k)·N·span, nothing where mu_k >= mu_s (the held step's limit is
     // then mu_k·N already), and decided here those settings ended up to 0.038 m further off the
     // exact slide than held for the step (wedge, mu_k 1.6 against mu_s 0.34 and 1.33).
-    const bool driven = is_driven(r.body_a) || is_driven(r.body_b);
-    const bool stop_on_drive = held && driven && r.before_known && pair.mu_k < pair.mu_s;
-    if ((reversed || stop_on_drive) && r.siblings == 0) restick_correction(r, pair, solved);
+    const bool driven = is_driven(r.identity.body_a) || is_driven(r.identity.body_b);
+    const bool stop_on_drive = held && driven && r.drive.before_known && pair.mu_k < pair.mu_s;
+    if ((reversed || stop_on_drive) && r.listener.siblings == 0) restick_correction(r, pair, solved);
   }
 }
 

@@ -10,7 +10,7 @@ namespace {
 
 float solver_coefficient(ContactRecord& r, const FrictionPair& pair, float sliding, double epsilon) {
   const bool slow = std::abs(sliding) < epsilon;
-  r.state = slow ? ContactState::sticking : ContactState::slipping;
+  r.friction.state = slow ? ContactState::sticking : ContactState::slipping;
   return static_cast<float>(slow ? pair.mu_s : pair.mu_k);
 }
 

@@ -202,7 +202,7 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
   const b2Body* a = handle.contact.a;
   const ContactRecord* record = find_record(scene, handle.contact);
   if (record == nullptr) return 0.0;
-  const b2Vec2 drag = record->side(a) * static_cast<float>(record->damping_force) * record->tangent();
+  const b2Vec2 drag = record->side(a) * static_cast<float>(record->solver.damping_force) * record->tangent();
   // Friction here is all the surface does along itself: the dry part and the drag.
   const b2Vec2 friction = record->friction_on(a) + drag;
   const b2Vec2 normal = record->normal_on(a);
@@ -216,20 +216,20 @@ double read_field(const Scene& scene, const Handle& handle, Field field) {
     case Field::drag: return drag.Length();
     case Field::drag_x: return drag.x;
     case Field::drag_y: return drag.y;
-    case Field::sliding_speed: return std::abs(record->sliding_velocity);
-    case Field::points: return record->point_count;
+    case Field::sliding_speed: return std::abs(record->solver.sliding_velocity);
+    case Field::points: return record->solver.point_count;
     case Field::slipping: return record->seen_slipping() ? 1.0 : 0.0;
-    case Field::load1: return record->point_normal_force[0];
-    case Field::load2: return record->point_normal_force[1];
+    case Field::load1: return record->solver.point_normal_force[0];
+    case Field::load2: return record->solver.point_normal_force[1];
     case Field::load_left:
     case Field::load_right: {
       // With one point, it is on the side of body a's centre it lies on.
-      const float middle = record->point_count == 2 ? 0.5f * (record->world_points[0].x + record->world_points[1].x)
-                                                    : a->GetPosition().x;
+      const b2Vec2* points = record->solver.world_points;
+      const float middle = record->solver.point_count == 2 ? 0.5f * (points[0].x + points[1].x) : a->GetPosition().x;
       double load = 0.0;
-      for (int i = 0; i < record->point_count; ++i) {
-        const bool left = record->world_points[i].x < middle;
-        if (left == (field == Field::load_left)) load += record->point_normal_force[i];
+      for (int i = 0; i < record->solver.point_count; ++i) {
+        const bool left = record->solver.world_points[i].x < middle;
+        if (left == (field == Field::load_left)) load += record->solver.point_normal_force[i];
       }
       return load;
     }
@@ -352,8 +352,8 @@ int handle_index(lua_State* state) {
     if (std::strcmp(key, "state") == 0 && handle->type == contact_type) {  // asked every step: first
       const ContactRecord* record = find_record(scene, handle->contact);
       lua_pushstring(state, record == nullptr             ? "none"
-                            : record->frictionless       ? "frictionless"
-                            : record->state == ContactState::sticking ? "sticking"
+                            : record->solver.frictionless       ? "frictionless"
+                            : record->friction.state == ContactState::sticking ? "sticking"
                                                                       : "slipping");
     } else if (std::strcmp(key, "scale_velocity") == 0 && handle->type == body_type) {  // every step in terrain
       lua_pushcfunction(state, scale_velocity);

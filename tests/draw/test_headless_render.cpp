@@ -59,7 +59,8 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
   ASSERT_TRUE(drawn.has_value()) << "no friction arrow drawn";
   const ScreenArrow& friction = *drawn;
   const Theme& colours = theme(ThemeName::light);
-  const float recorded = static_cast<float>(std::abs(at.scene().friction().find(block, at.scene().body("ground"))->friction_force));
+  const ContactRecord* touch = at.scene().friction().find(block, at.scene().body("ground"));
+  const float recorded = static_cast<float>(std::abs(touch->solver.friction_force));
   // The tip's last pixels fade into the background: within 2 px. The contact point is on the
   // floor's surface, so the arrow runs along the ground's 2.5 px edge line, and its tip's last
   // pixels fade into that dark line instead: up to half its width more.

@@ -37,7 +37,7 @@ TEST(Overlays, FrictionArrowIsTheRecordedFrictionWhileTheBlockSticks) {
   const b2Body* block = scene.body("block");
   ASSERT_EQ(main_body(scene), block);
   const ContactRecord& record = block_on_bench(scene);
-  ASSERT_EQ(record.state, ContactState::sticking);
+  ASSERT_EQ(record.friction.state, ContactState::sticking);
 
   const std::vector<ForceOnBody> forces = forces_on(scene, block);
   const ForceOnBody* friction = find_force(forces, ForceKind::friction);
@@ -65,7 +65,7 @@ TEST(Overlays, FrictionArrowIsKineticFrictionMidSlip) {
   const Scene& scene = at.scene();
   const b2Body* block = scene.body("block");
   const ContactRecord& record = block_on_bench(scene);
-  ASSERT_EQ(record.state, ContactState::slipping);
+  ASSERT_EQ(record.friction.state, ContactState::slipping);
   ASSERT_GT(block->GetLinearVelocity().x, 0.01f);
   const std::vector<ForceOnBody> forces = forces_on(scene, block);
   const ForceOnBody* friction = find_force(forces, ForceKind::friction);
@@ -86,7 +86,7 @@ TEST(Overlays, DragIsDrawnApartFromDryFriction) {
   const Scene& scene = at.scene();
   const b2Body* block = scene.body("block");
   const ContactRecord& record = block_on_bench(scene);
-  ASSERT_EQ(record.state, ContactState::slipping);
+  ASSERT_EQ(record.friction.state, ContactState::slipping);
   const std::vector<ForceOnBody> forces = forces_on(scene, block);
   const ForceOnBody* friction = find_force(forces, ForceKind::friction);
   const ForceOnBody* drag = find_force(forces, ForceKind::drag);
@@ -486,7 +486,7 @@ box { "moving", material = "ice", width = 0.4, height = 0.2, on = floor, at = 2,
     EXPECT_EQ(contact_word(mark), "frictionless");
     const ContactRecord* record = nullptr;
     for (const ContactRecord& r : scene.friction().contacts()) {
-      if (r.body_a == mark.body_a && r.body_b == mark.body_b) record = &r;
+      if (r.identity.body_a == mark.body_a && r.identity.body_b == mark.body_b) record = &r;
     }
     ASSERT_NE(record, nullptr);
     const bool moving = mark.body_a == scene.body("moving") || mark.body_b == scene.body("moving");

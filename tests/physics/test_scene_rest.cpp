@@ -24,8 +24,8 @@ TEST(SceneRest, ABlockThatHasSlidToRestSleepsWhereItStopped) {
   EXPECT_EQ(scene->probe("distance").history.back(), stopped);
   const ContactRecord* touch = scene->friction().find(block, scene->body("ground"));
   ASSERT_NE(touch, nullptr);
-  EXPECT_NEAR(touch->normal_force, setup.block.mass * standard_gravity, 1e-3);
-  EXPECT_EQ(touch->state, ContactState::sticking);
+  EXPECT_NEAR(touch->solver.normal_force, setup.block.mass * standard_gravity, 1e-3);
+  EXPECT_EQ(touch->friction.state, ContactState::sticking);
 }
 
 // Friction values changed under a resting block (a teacher's slider): wake() lets it go, and
@@ -108,6 +108,6 @@ TEST(SceneRest, AFrictionlessTouchOfABlockPutToRestNoLongerSlips) {
   for (int i = 0; i < 24; ++i) scene->step();
   const ContactRecord* touch = scene->friction().find(block, scene->body("ground"));
   ASSERT_NE(touch, nullptr);
-  EXPECT_FALSE(touch->seen_slipping()) << "sliding at " << touch->sliding_velocity << " m/s while asleep";
+  EXPECT_FALSE(touch->seen_slipping()) << "sliding at " << touch->solver.sliding_velocity << " m/s while asleep";
   EXPECT_EQ(scene->slipping().back(), 0);
 }

@@ -180,7 +180,7 @@ Touches touches(const Scene& scene, const b2Body* block) {
     const ContactRecord* record = scene.friction().record(edge->contact);
     if (record == nullptr) continue;
     ++count.touching;
-    if (record->state == ContactState::slipping) ++count.slipping;
+    if (record->friction.state == ContactState::slipping) ++count.slipping;
   }
   return count;
 }
