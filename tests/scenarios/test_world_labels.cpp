@@ -817,7 +817,8 @@ TEST(ForceArrows, AFrictionStartsAtItsContactWithNoOtherArrowOverItsStart) {
 // as to scale), under a legend saying "under 2.02 N: longer, dashed"; and the legend's words
 // changed as the run played ("all arrows to scale" by 3 s). Push, spring_pull and tipping_box in
 // the window in projector mode at 1920 × 1080 from 0.2 s to their ends: the legend says
-// "under X N:" at every moment, the same X, and each arrow is drawn broken exactly where its
+// "dashed: too small" "to draw to scale" "(under X N)" at every moment (a teacher found "under
+// X N: longer, dashed" cryptic), the same X, and each arrow is drawn broken exactly where its
 // printed value is under X (a value within a unit of its last printed digit of X is not judged:
 // both are rounded to three figures).
 TEST(ForceArrows, TheLegendsNumberIsWhereArrowsTurnToDashesAllThroughTheRun) {
@@ -829,14 +830,18 @@ TEST(ForceArrows, TheLegendsNumberIsWhereArrowsTurnToDashesAllThroughTheRun) {
     std::string said;
     projector_frames_at(lesson, {}, times, [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson&) {
       std::string under;
+      bool dashed = false, to_scale = false;
       for (const draw::ShownText& text : record.texts) {
-        if (text.text.rfind("under ", 0) == 0) under = text.text;
-        EXPECT_EQ(text.text.find("to scale"), std::string::npos) << where << ": the legend says \"" << text.text << "\"";
+        if (text.text.rfind("(under ", 0) == 0) under = text.text;
+        dashed = dashed || text.text == "dashed: too small";
+        to_scale = to_scale || text.text == "to draw to scale";
+        EXPECT_EQ(text.text.find("all arrows"), std::string::npos) << where << ": the legend says \"" << text.text << "\"";
       }
+      EXPECT_TRUE(dashed && to_scale) << where << ": the legend does not say that a dashed arrow is too small to draw to scale";
       ASSERT_FALSE(under.empty()) << where << ": the legend does not say under which force arrows are drawn longer";
       if (said.empty()) said = under;
       EXPECT_EQ(under, said) << where << ": the legend's words changed during the run";
-      const double below = std::strtod(under.c_str() + 6, nullptr);
+      const double below = std::strtod(under.c_str() + 7, nullptr);
       const double step = draw::printed_number(below).step;
       for (const draw::FrameRecord::Lane& lane : record.lanes) {
         for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
