@@ -41,7 +41,8 @@ bool pushes_on_face(const ForceOnBody& force) {
 float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale, float shortest, float gap) {
+                                      float pixels_per_newton, float scale, float shortest, float gap,
+                                      bool weight_at_its_centre) {
   // Whether a force counts is a question of the printed values, not of pixels: one that shows in
   // its body's numbers (at least half the last digit printed for the body's largest force) is
   // drawn, however short its arrow would be at the picture's scale. A tipping box's last
@@ -92,8 +93,8 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
       // A weight stays at its body's centre of mass and the other goes the whole gap across:
       // each moving half a gap, a weight beside each of a body's six feet's normal forces went
       // 58 px across, off contact_area's block (issue 31).
-      const bool p_stays = p.force.kind == ForceKind::weight && q.force.kind != ForceKind::weight;
-      const bool q_stays = q.force.kind == ForceKind::weight && p.force.kind != ForceKind::weight;
+      const bool p_stays = weight_at_its_centre && p.force.kind == ForceKind::weight && q.force.kind != ForceKind::weight;
+      const bool q_stays = weight_at_its_centre && q.force.kind == ForceKind::weight && p.force.kind != ForceKind::weight;
       const float p_share = p_stays ? 0.0f : q_stays ? 1.0f : 0.5f;
       const ImVec2 across(-uy * side * gap, ux * side * gap);
       p.tail = ImVec2(p.tail.x - p_share * across.x, p.tail.y - p_share * across.y);
