@@ -84,6 +84,16 @@ void show_reach(Camera& camera, Reach reach, float edge) {
   }
 }
 
+// The highest foot of a moving body, m: now or at t = 0 (WorldFraming::highest_foot), whichever
+// is higher; -inf where none moves.
+float highest_foot(const lessons::WorldFraming& framing, const Scene& scene) {
+  float foot = std::isnan(framing.highest_foot) ? -1e30f : framing.highest_foot;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() == b2_dynamicBody) foot = std::max(foot, body_box(body).lowerBound.y);
+  }
+  return foot;
+}
+
 // Room around the lesson for the arrows and their labels.
 constexpr float room = 1.45f;
 // Pixels (at text scale 1) kept between a lane's floor and the lane's foot, and above a body.
@@ -118,14 +128,14 @@ FramingScale framing_scale(const lessons::WorldFraming& framing, const Scene& sc
     // height, (metres)·ppm + (pixels) <= height. Weights point down into the floor the window
     // stands on, and are left to it: paired with a normal force above they shrank a window
     // of two floors to a tenth.
+    // The highest foot is the highest at t = 0 or now, whichever is higher: growing from the feet
+    // of the moment, incline's window zoomed in as its block slid down (a projector trial, issue
+    // 31); a body that climbs past where it started still has its arrows in sight.
     if (arrows.longest > 0.0f) {
       const float height_left = size.y - 2.0f * edge;
-      for (const auto& [name, body] : scene.bodies()) {
-        if (body->GetType() != b2_dynamicBody) continue;
-        const float foot = body_box(body).lowerBound.y;
-        if (foot > view.low.y && height_left > arrows.longest) {
-          pixels_per_metre = std::min(pixels_per_metre, (height_left - arrows.longest) / (foot - view.low.y));
-        }
+      const float foot = highest_foot(framing, scene);
+      if (foot > view.low.y && height_left > arrows.longest) {
+        pixels_per_metre = std::min(pixels_per_metre, (height_left - arrows.longest) / (foot - view.low.y));
       }
     }
   } else if (view.width > 0.0) {
@@ -273,11 +283,11 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       Reach reach = moving_reach(scene, arrows, camera.pixels_per_metre);
       if (kind == Kind::window) {
         // The window's corners, and the normal forces up from the feet it grew to hold.
+        // From the highest foot of the run's start or now, as the window grew: the view does
+        // not move up and down as a block slides.
         reach = {view.low.y, view.high.y};
-        for (const auto& [name, body] : scene.bodies()) {
-          if (body->GetType() != b2_dynamicBody) continue;
-          reach.high = std::max(reach.high, body_box(body).lowerBound.y + arrows.longest / camera.pixels_per_metre);
-        }
+        const float foot = highest_foot(framing, scene);
+        if (foot > -1e29f) reach.high = std::max(reach.high, foot + arrows.longest / camera.pixels_per_metre);
       }
       show_reach(camera, reach, edge);
     }

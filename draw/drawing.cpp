@@ -408,11 +408,11 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
 }
 
 PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
-                              const std::string& text) {
+                              const std::string& text, std::size_t drawn) {
   PlacedForce placed{arrow, text, ImVec2(0.0f, 0.0f), std::nullopt, std::nullopt, false};
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   if (text.empty()) {
-    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body, !arrow.to_scale});
+    labels.force_label({own, std::nullopt, text, arrow.force.kind, std::nullopt, arrow.force.body, !arrow.to_scale, drawn});
     placed.beside = true;  // nothing to read
     return placed;
   }
@@ -437,7 +437,7 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   placed.beside = placed.at && (with_leader ? labels.nearest_to_own(*placed.at, placed.size, own)
                                             : labels.beside(*placed.at, placed.size, own));
   const std::optional<ImVec4> box = placed.at ? std::optional<ImVec4>(labels.labels().back()) : std::nullopt;
-  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body, !arrow.to_scale});
+  labels.force_label({own, box, text, arrow.force.kind, placed.leader, arrow.force.body, !arrow.to_scale, drawn});
   return placed;
 }
 
@@ -451,7 +451,9 @@ void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme&
 
 void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, ImFont* font, float thickness,
                 LabelPlacer& labels, const std::string& text) {
-  draw_placed_force(draw, place_force_label(arrow, font, thickness, labels, text), theme, font, thickness);
+  // Each drawn as soon as placed: its place in the drawing is the number placed before it.
+  draw_placed_force(draw, place_force_label(arrow, font, thickness, labels, text, labels.force_labels().size()), theme,
+                    font, thickness);
 }
 
 TorqueArc torque_arc(ImVec2 centre, float radius, double torque) {

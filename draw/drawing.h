@@ -125,6 +125,9 @@ class LabelPlacer {
     // Drawn longer than to scale, its shaft broken (ScreenArrow::to_scale false), as the legend
     // says of the forces under its number.
     bool broken = false;
+    // Its place in the order the arrows are drawn, 0 first: a later arrow lies over an earlier
+    // where they meet (a contact's forces over a weight, draw_world).
+    std::size_t drawn = 0;
   };
   void force_label(const ForceLabel& label) { force_labels_.push_back(label); }
   const std::vector<ForceLabel>& force_labels() const { return force_labels_; }
@@ -228,8 +231,9 @@ struct PlacedForce {
   std::optional<DrawnSegment> leader;   // joining it to its arrow, where it is not beside it
   bool beside = false;                  // by its own arrow (LabelPlacer::beside()) or joined by a leader; or no text
 };
+// `drawn`: the arrow's place in the order the picture's arrows are drawn (ForceLabel::drawn).
 PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
-                              const std::string& text);
+                              const std::string& text, std::size_t drawn);
 void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness);
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
                   ImU32 outline, float thickness);

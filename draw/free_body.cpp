@@ -123,7 +123,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   // grew (side_by_side_gap): the inset is drawn only where it is read from near (not on a
   // projector: free_body_readable), its arrows thinner, and its values are placed in that room
   // (a wider gap left tipping_box's 1.48 N friction 46 px from its arrow at 2.49 s).
-  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels, s, 0.0f, 9.0f * s);
+  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels, s, 0.0f, 9.0f * s, false);
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
   // A motor's torque on the body, round its centre of mass.
   std::vector<TorqueArc> torques;

@@ -15,9 +15,12 @@ namespace frictionlab::draw {
 
 namespace {
 
-// The lengthened arrows' shafts are broken (draw_arrow): the words say so, so that the class
-// can tell them from the picture alone.
-constexpr const char* longer_dashed = "longer, dashed";
+// The lengthened arrows' shafts are broken (draw_arrow): the words say so, and why, in a
+// teacher's words, so that the class can tell them from the picture alone. "under 2.02 N:
+// longer, dashed" was cryptic to a teacher (a projector trial, issue 31); the force it turns at
+// follows, in brackets, for who wants the number.
+constexpr const char* dashed_words = "dashed: too small";
+constexpr const char* to_scale_words = "to draw to scale";
 // The key to a torque's curved arrow.
 constexpr const char* torque_word = "torque";
 
@@ -118,14 +121,24 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
   // Where the scale stops being linear, said beside it: the world draws a force smaller than this
   // longer than to scale (legible_arrow_pixels), its value giving its size.
   const ArrowScaleWords words = arrow_scale_words(newtons_to_pixels, s);
-  const std::string& lengthened = words.first;
-  const std::string& not_to_scale = words.second;
+  // A strip joins the lines, and leaves the number out where the row would not hold it beside
+  // every kind of force's key (whether it acts yet or not, so that the words stay the same all
+  // through the run): "dashed: too small to draw to scale (under 1.83 N)" ran past a 1024 px
+  // screen's world.
+  float every_key = left + key_width(torque_word);
+  for (int kind = 0; kind < force_kind_count; ++kind) {
+    every_key += key_width(std::string(force_kind_name(static_cast<ForceKind>(kind))));
+  }
+  const float scale_room = newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s;
+  const std::string without_number = words[0] + " " + words[1];
+  const std::string with_number = without_number + " " + words[2];
+  const std::string joined = every_key + scale_room + width_of(with_number) <= right ? with_number : without_number;
   float arrows_end = left;
   for (int kind = 0; kind < force_kind_count; ++kind) {
     if (present[kind]) arrows_end += key_width(std::string(force_kind_name(static_cast<ForceKind>(kind))));
   }
   if (torque) arrows_end += key_width(torque_word);
-  arrows_end += newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s + width_of(lengthened + " " + not_to_scale);
+  arrows_end += scale_room + width_of(joined);
   std::vector<std::pair<ImU32, std::string>> materials;
   for (const auto& [name, body] : scene.bodies()) {
     for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
@@ -150,7 +163,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
     // scale, the contact states, the materials, and the scale bar under them. The lines close
     // up (to 2 pt between) when there are more than its height holds at 6 pt.
     const std::size_t forces = static_cast<std::size_t>(std::count(std::begin(present), std::end(present), true));
-    const std::size_t lines = forces + (torque ? 1 : 0) + 3 + 2 + materials.size() + 2;  // the arrows' scale takes three, the metres' bar two
+    const std::size_t lines = forces + (torque ? 1 : 0) + 4 + 2 + materials.size() + 2;  // the arrows' scale takes four, the metres' bar two
     const float room = size.y - 8.0f * s;
     const float step = std::max(font->FontSize + 2.0f * s, std::min(line, room / static_cast<float>(lines)));
     ImVec2 at(left, corner.y + 6.0f * s);
@@ -169,10 +182,10 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
                   theme.text, 3.0f * s);
     text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
     at.y += step;
-    text_at(at, lengthened);
-    at.y += step;
-    text_at(at, not_to_scale);
-    at.y += step;
+    for (const std::string& words_line : words) {
+      text_at(at, words_line);
+      at.y += step;
+    }
     const float inside = right - 6.0f * s;
     const bool short_states = true;  // the chips are named by a word each: the column stays narrow
     const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
@@ -231,7 +244,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
                 theme.text, 3.0f * s);
   text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s, at.y), scale_text);
   text_at(ImVec2(at.x + newtons * newtons_to_pixels + 6.0f * s + width_of(scale_text) + 8.0f * s, at.y),
-          lengthened + " " + not_to_scale);
+          joined);
 
   at = ImVec2(left, chips_y);
   const auto chip = [&](ImU32 colour, const std::string& text, bool round) {
@@ -245,7 +258,7 @@ void draw_legend(ImDrawList* draw, const Scene& scene, const Camera& camera, ImV
 }
 
 ArrowScaleWords arrow_scale_words(float newtons_to_pixels, float scale) {
-  return {"under " + format_quantity(not_to_scale_below(newtons_to_pixels, scale), "N") + ":", longer_dashed};
+  return {dashed_words, to_scale_words, "(under " + format_quantity(not_to_scale_below(newtons_to_pixels, scale), "N") + ")"};
 }
 
 float legend_column_width(const Scene& scene, const Fonts& fonts) {
@@ -255,8 +268,8 @@ float legend_column_width(const Scene& scene, const Fonts& fonts) {
   // Every kind of force, whether it acts yet or not, so that the column keeps its width as the
   // run goes on; the arrows' scale at its longest (40 pt: rounded down in a column) with a
   // four-digit value; the states' words and the materials' names after their marks.
-  float widest = std::max(46.0f * s + width_of("= 1000 N"), width_of("under 1000 N:"));
-  widest = std::max(widest, width_of(longer_dashed));
+  float widest = std::max(46.0f * s + width_of("= 1000 N"), width_of("(under 1000 N)"));
+  widest = std::max({widest, width_of(dashed_words), width_of(to_scale_words)});
   for (int kind = 0; kind < force_kind_count; ++kind) {
     widest = std::max(widest, 32.0f * s + width_of(std::string(force_kind_name(static_cast<ForceKind>(kind)))));
   }

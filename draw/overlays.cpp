@@ -41,7 +41,8 @@ bool pushes_on_face(const ForceOnBody& force) {
 float ScreenArrow::length() const { return std::hypot(tip.x - tail.x, tip.y - tail.y); }
 
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
-                                      float pixels_per_newton, float scale, float shortest, float gap) {
+                                      float pixels_per_newton, float scale, float shortest, float gap,
+                                      bool weight_at_its_centre) {
   // Whether a force counts is a question of the printed values, not of pixels: one that shows in
   // its body's numbers (at least half the last digit printed for the body's largest force) is
   // drawn, however short its arrow would be at the picture's scale. A tipping box's last
@@ -69,7 +70,8 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
     arrows.push_back(ScreenArrow{force, tail, tip, !drawn_longer(size, pixels_per_newton, legible)});
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
-  // force: each moves half a gap across, keeping its length and direction. The gap grows with the
+  // force: each moves half a gap across, keeping its length and direction, but a weight, which
+  // stays at its centre of mass while the other moves the whole gap. The gap grows with the
   // arrows' thickness (3.5 px times the scale) and clears a head beside a shaft (side_by_side_gap).
   if (gap <= 0.0f) gap = side_by_side_gap(world_arrow_thickness(scale));
   for (std::size_t i = 0; i < arrows.size(); ++i) {
@@ -88,11 +90,17 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
       const float q1 = (q.tip.x - p.tail.x) * ux + (q.tip.y - p.tail.y) * uy;
       if (std::max(q0, q1) <= 0.0f || std::min(q0, q1) >= pl) continue;
       const float side = offset >= 0.0f ? 1.0f : -1.0f;
-      const ImVec2 shift(-uy * side * 0.5f * gap, ux * side * 0.5f * gap);
-      p.tail = ImVec2(p.tail.x - shift.x, p.tail.y - shift.y);
-      p.tip = ImVec2(p.tip.x - shift.x, p.tip.y - shift.y);
-      q.tail = ImVec2(q.tail.x + shift.x, q.tail.y + shift.y);
-      q.tip = ImVec2(q.tip.x + shift.x, q.tip.y + shift.y);
+      // A weight stays at its body's centre of mass and the other goes the whole gap across:
+      // each moving half a gap, a weight beside each of a body's six feet's normal forces went
+      // 58 px across, off contact_area's block (issue 31).
+      const bool p_stays = weight_at_its_centre && p.force.kind == ForceKind::weight && q.force.kind != ForceKind::weight;
+      const bool q_stays = weight_at_its_centre && q.force.kind == ForceKind::weight && p.force.kind != ForceKind::weight;
+      const float p_share = p_stays ? 0.0f : q_stays ? 1.0f : 0.5f;
+      const ImVec2 across(-uy * side * gap, ux * side * gap);
+      p.tail = ImVec2(p.tail.x - p_share * across.x, p.tail.y - p_share * across.y);
+      p.tip = ImVec2(p.tip.x - p_share * across.x, p.tip.y - p_share * across.y);
+      q.tail = ImVec2(q.tail.x + (1.0f - p_share) * across.x, q.tail.y + (1.0f - p_share) * across.y);
+      q.tip = ImVec2(q.tip.x + (1.0f - p_share) * across.x, q.tip.y + (1.0f - p_share) * across.y);
     }
   }
   return arrows;

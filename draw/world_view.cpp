@@ -358,49 +358,50 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
 
 // Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
 // block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
-// crossed the normal force's (issue 31). A contact's forces (friction, normal force) stay at
-// their contact, where its dot is: the class reads where a force acts off where it starts.
-// Sliding the shorter of two past the longer slid tipping_box's friction from the corner it
-// stands on to the middle of its bottom, past the weight (a teacher's trial, issue 31). So where
-// a contact's force meets another, the other moves, along its own line of action (which keeps
-// its moment about every point): a weight back up its line until its head stops short of the
-// contact's arrow, halo to halo (a weight acts on the whole body: any point of its line is as
-// true as its centre of mass, and above the floor it stays over its body), any other force
-// forward past it, as push's push past its normal force (back, it met the weight). A weight's head, four thicknesses wide, that
-// only comes down on a friction's tail (tipping_box pushed low at 1 s) counts as meeting it.
-// Where neither or both are a contact's, the shorter slides forward until it starts a thickness
-// past the longer's shaft, as before. Crossings within half a thickness of the shorter's tail
-// are forces starting together, and stay.
+// crossed the normal force's (issue 31). Two kinds of force never move along their lines here:
+// a contact's forces (friction, normal force) stay at their contact, where its dot is, for the
+// class reads where a force acts off where it starts (sliding tipping_box's friction past the
+// weight drew it from the middle of its bottom while the box stood on its corner); and a weight
+// stays at its body's centre of mass, as a textbook draws it (sliding it back up its line until
+// it cleared a contact's arrow started push's weight 50 px above its block, read as a push from
+// above: a teacher's trial, issue 31). Where a weight meets a contact's force, neither moves: the
+// contact's forces are drawn after every other (draw_world), over the weight, so the friction is
+// seen whole from its dot and the weight passes beneath it, as in a textbook's figure. Any other
+// force that meets a contact's force or a weight slides forward along its own line (which keeps
+// its moment about every point) past it, as push's push past its normal force. Of two other forces, or of
+// two of contacts (stacked_blocks' friction and normal forces between and under its blocks),
+// the shorter slides forward until it starts a thickness past the longer's shaft.
+// Crossings within half a thickness of the mover's tail are forces starting together, and stay.
 void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
   const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
   const auto at_contact = [](const ScreenArrow& arrow) {
     return arrow.force.kind == ForceKind::friction || arrow.force.kind == ForceKind::normal;
   };
+  const auto weight = [](const ScreenArrow& arrow) { return arrow.force.kind == ForceKind::weight; };
+  const auto stays = [&](const ScreenArrow& arrow) { return at_contact(arrow) || weight(arrow); };
   const float halo = arrow_halo_width(thickness);
   const auto slide = [](ScreenArrow& arrow, float by) {
     const ImVec2 shift = mul(sub(arrow.tip, arrow.tail), by / arrow.length());
     arrow.tail = add(arrow.tail, shift);
     arrow.tip = add(arrow.tip, shift);
   };
-  // Moves `mover` off `contact`'s arrow, a contact's force that stays; whether it moved.
-  const auto off_the_contact = [&](ScreenArrow& mover, const ScreenArrow& contact) {
-    const ImVec2 d = sub(mover.tip, mover.tail), e = sub(contact.tip, contact.tail), w = sub(contact.tail, mover.tail);
+  // Moves `mover` forward off `fixed`'s arrow, which stays; whether it moved. Its head (draw_arrow's:
+  // 0.45 of it each side) and both halos are measured along the fixed arrow's line: a head that
+  // only comes down on the fixed arrow's tail counts as meeting it.
+  const auto off_the_fixed = [&](ScreenArrow& mover, const ScreenArrow& fixed) {
+    const ImVec2 d = sub(mover.tip, mover.tail), e = sub(fixed.tip, fixed.tail), w = sub(fixed.tail, mover.tail);
     const float denominator = cross2(d, e);
     if (std::abs(denominator) < 1e-6f * length(d) * length(e)) return false;  // parallel: side by side already
     const float sine = std::abs(denominator) / (length(d) * length(e));
-    // Where the mover's line meets the contact's, px from the mover's tail and from the contact's tail.
-    const float on_mover = cross2(w, e) / denominator * length(d), on_contact = cross2(w, d) / denominator * length(e);
-    // The mover's head (draw_arrow's: 0.45 of it each side) and both halos, measured along the
-    // contact's line; its tip stops half the contact's thickness and both halos short of its line.
+    // Where the mover's line meets the fixed one's, px from the mover's tail and from the fixed one's tail.
+    const float on_mover = cross2(w, e) / denominator * length(d), on_fixed = cross2(w, d) / denominator * length(e);
     const float head = std::min(4.0f * thickness, 0.6f * length(d));
     const float reach = (0.45f * head + 2.0f * halo) / sine;
+    // Its tip stops half the fixed arrow's thickness and both halos short of the fixed one's line.
     const float short_of = (0.5f * thickness + 2.0f * halo) / sine;
-    if (on_contact <= -reach || on_contact >= length(e) + reach) return false;
-    // A hundredth of a pixel: the floats of a move already made.
-    const float back = length(d) - (on_mover - short_of);
-    if (on_mover <= 0.5f * thickness / sine || back <= 0.01f) return false;
-    const float forward = on_mover + thickness / sine;
-    slide(mover, mover.force.kind == ForceKind::weight ? -back : forward);
+    if (on_fixed <= -reach || on_fixed >= length(e) + reach) return false;
+    if (on_mover <= 0.5f * thickness / sine || on_mover >= length(d) + short_of) return false;
+    slide(mover, on_mover + thickness / sine);
     return true;
   };
   for (std::size_t round = 0; round < arrows.size(); ++round) {
@@ -408,11 +409,15 @@ void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
     for (ScreenArrow& shorter : arrows) {
       for (ScreenArrow& other : arrows) {
         if (&shorter == &other) continue;
-        if (at_contact(other) && !at_contact(shorter)) {
-          moved = off_the_contact(shorter, other) || moved;
+        if (stays(other) && !stays(shorter)) {
+          moved = off_the_fixed(shorter, other) || moved;
           continue;
         }
-        if (at_contact(shorter) != at_contact(other) || other.length() <= shorter.length()) continue;
+        // A weight never moves, nor does a contact's force for one: it is drawn over the weight.
+        if (weight(shorter) || weight(other) || at_contact(shorter) != at_contact(other) ||
+            other.length() <= shorter.length()) {
+          continue;
+        }
         const ScreenArrow& longer = other;
         const ImVec2 d = sub(shorter.tip, shorter.tail), e = sub(longer.tip, longer.tail), w = sub(longer.tail, shorter.tail);
         const float denominator = cross2(d, e);
@@ -511,7 +516,7 @@ LabelPlacer place_force_values(const std::vector<ScreenArrow>& arrows, const std
                                float thickness, const LabelPlacer& labels, ImDrawList* draw, const Theme& theme) {
   const auto place_all = [&](const std::vector<std::size_t>& order, LabelPlacer& placer) {
     std::vector<PlacedForce> placed(arrows.size());
-    for (const std::size_t i : order) placed[i] = place_force_label(arrows[i], fonts.body, thickness, placer, texts[i]);
+    for (const std::size_t i : order) placed[i] = place_force_label(arrows[i], fonts.body, thickness, placer, texts[i], i);
     return placed;
   };
   const auto away = [](const std::vector<PlacedForce>& placed) {
@@ -628,6 +633,12 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   start_frictions_past_their_dots(arrows, marks, camera, mark_radius);
   const float thickness = world_arrow_thickness(fonts.scale);
   uncross_arrows(arrows, thickness);
+  // A contact's forces are drawn last, over every other: a weight from its centre of mass that
+  // passes under a friction's start (push's, spring_pull's) is covered there, and the friction is
+  // seen whole from its dot (uncross_arrows moves neither).
+  std::stable_partition(arrows.begin(), arrows.end(), [](const ScreenArrow& arrow) {
+    return arrow.force.kind != ForceKind::friction && arrow.force.kind != ForceKind::normal;
+  });
   mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
   // Every arrow and mark is known before any label is placed, so no label lands on one.
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});

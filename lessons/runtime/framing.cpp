@@ -140,7 +140,10 @@ WorldFraming WorldFraming::of(const Lesson& lesson) {
                           std::max(box.upperBound.y - box.lowerBound.y, 0.3f)};
   framing.smallest_body = smallest_moving_body(scene);
   for (const auto& [name, body] : scene.bodies()) {
-    if (body->GetType() == b2_dynamicBody) framing.tallest_body = std::max(framing.tallest_body, body_size(body).y);
+    if (body->GetType() != b2_dynamicBody) continue;
+    framing.tallest_body = std::max(framing.tallest_body, body_size(body).y);
+    const float foot = body_box(body).lowerBound.y;
+    if (!(foot <= framing.highest_foot)) framing.highest_foot = foot;
   }
   const b2AABB moving = moving_bounds(scene);
   framing.moving_span = moving.upperBound.x - moving.lowerBound.x;

@@ -5,6 +5,7 @@
 
 #include <box2d/box2d.h>
 
+#include <cmath>
 #include <vector>
 
 #include "lessons/runtime/lesson.h"
@@ -44,6 +45,10 @@ struct WorldFraming {
   // (within ground_reach of its foot; NaN: none), and of the body's top. A body that starts in
   // the air (a thrown box) is framed with the floor it will land on.
   std::vector<float> lane_ground, lane_top;
+  // m, the highest foot of a moving body at t = 0 (its box's bottom; NaN: none moves). A window
+  // the lesson fixed grows from it to hold the normal forces above the feet, so that its scale
+  // does not change as a block slides down (incline's 2 m bar was 93 px at 0.6 s, 133 px at 1.5 s).
+  float highest_foot = std::nanf("");
   static constexpr float ground_reach = 5.0f;  // × the tallest moving body
   // Frames the lesson as it is now: this is meant to be called at t = 0.
   static WorldFraming of(const Lesson& lesson);

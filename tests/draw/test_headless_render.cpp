@@ -96,16 +96,18 @@ void expect_friction_arrow_and_mark(const LessonAt& at, const Image& image, cons
 // force (its 9.81 N weight the largest) is under 12.4 N: every arrow was lengthened, and the
 // words left a class asking which were to scale. The next trial found its words changing as the
 // run played ("all arrows to scale" once its friction and push had grown past the number). Said
-// now from the arrow scale alone: "under X N:" "longer, dashed", X the force whose arrow at that
-// scale is the legible length, at arrow scales round push's forces and at the projector's own,
-// where X is the force drawn_longer turns at.
+// now from the arrow scale alone: "dashed: too small" "to draw to scale" "(under X N)" (a
+// teacher found "under X N: longer, dashed" cryptic), X the force whose arrow at that scale is
+// the legible length, at arrow scales round push's forces and at the projector's own, where X is
+// the force drawn_longer turns at.
 TEST(Legend, SaysUnderWhichForceArrowsAreDrawnLongerFromTheScaleAlone) {
   LessonAt at("push", {}, 3.0);
   const float scale = 2.0f;
   for (const float newtons : {0.5f, 2.94f, 9.81f, 20.0f}) {
     // The arrow scale (px per N) at which lengthening starts at `newtons`.
     const float pixels_per_newton = legible_arrow_pixels(scale) / newtons;
-    EXPECT_EQ(arrow_scale_words(pixels_per_newton, scale), ArrowScaleWords("under " + format_quantity(newtons, "N") + ":", "longer, dashed"));
+    EXPECT_EQ(arrow_scale_words(pixels_per_newton, scale),
+              ArrowScaleWords({"dashed: too small", "to draw to scale", "(under " + format_quantity(newtons, "N") + ")"}));
   }
   // The projector's text scale: the frame's, a third larger (Classroom::ui_scale).
   const float projector_scale = 1.35f * frame_scale(1920, 1080);
@@ -114,7 +116,7 @@ TEST(Legend, SaysUnderWhichForceArrowsAreDrawnLongerFromTheScaleAlone) {
   const float legible = legible_arrow_pixels(projector_scale);
   EXPECT_TRUE(drawn_longer(std::nextafter(below, 0.0f), projector, legible));
   EXPECT_FALSE(drawn_longer(below, projector, legible));
-  EXPECT_EQ(arrow_scale_words(projector, projector_scale).first, "under " + format_quantity(below, "N") + ":");
+  EXPECT_EQ(arrow_scale_words(projector, projector_scale)[2], "(under " + format_quantity(below, "N") + ")");
 }
 
 TEST(Rendering, TheFrictionArrowIsDrawnAsLongAsTheRecordedForceAndTheStickingContactIsMarked) {

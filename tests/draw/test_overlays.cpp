@@ -246,7 +246,8 @@ TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   }
   ASSERT_TRUE(weight && normal);
   // The normal force acts where the floor's pressure centres, a few pixels off the weight's line:
-  // each moves half the gap away from the other, so they end the gap further apart than they act.
+  // the normal force moves the gap away from the weight, which stays at the centre of mass, so
+  // they end the gap further apart than they act.
   const float apart = std::abs(level_camera.to_screen(weight->force.point).x - level_camera.to_screen(normal->force.point).x);
   ASSERT_LT(apart, side_by_side_gap(world_arrow_thickness(scale)));  // near enough to be moved
   EXPECT_NEAR(std::abs(weight->tail.x - normal->tail.x), apart + side_by_side_gap(world_arrow_thickness(scale)), 1e-3f);
