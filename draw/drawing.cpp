@@ -199,6 +199,106 @@ std::optional<ImVec2> LabelPlacer::place_if_free(ImVec2 wanted, ImVec2 size, con
   return found;
 }
 
+std::vector<ImVec2> LabelPlacer::places_by_arrow(const std::vector<ImVec2>& places, ImVec2 size,
+                                                 const DrawnSegment& own) const {
+  // The places near the tip, then along each side of the shaft from the tip back and behind
+  // the tail, each clear of the arrow as wide as it is kept off (arrow()'s width, else its own).
+  std::vector<ImVec2> near = places;
+  const ImVec2 along = sub(own.to, own.from);
+  const float span = length(along);
+  if (span > 0.0f) {
+    float half_width = own.half_width;
+    for (const DrawnSegment& known : arrows_) {
+      if (same_ends(known, own)) {
+        half_width = std::max(half_width, known.half_width);
+      }
+    }
+    const ImVec2 unit = mul(along, 1.0f / span), across(-unit.y, unit.x);
+    const float half_across = 0.5f * (std::abs(across.x) * size.x + std::abs(across.y) * size.y) + pad + half_width + 1.0f;
+    const float half_along = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + pad + half_width + 1.0f;
+    for (const float f : {1.0f, 0.75f, 0.5f, 0.25f, 0.0f}) {
+      for (const float side : {1.0f, -1.0f}) {
+        near.push_back(moved_inside(add(add(own.from, mul(along, f)), mul(across, side * half_across)), size));
+      }
+    }
+    near.push_back(moved_inside(sub(own.from, mul(unit, half_along)), size));
+  }
+  std::vector<ImVec2> by_own;
+  for (const ImVec2& place : near) {
+    if (beside(place, size, own)) by_own.push_back(place);
+  }
+  return by_own;
+}
+
+// A leader (leader_line(), which draw_force() draws) that crosses no label, mark, line or other
+// arrow: a leader over another value or arrow would join the wrong two.
+bool LabelPlacer::leader_clear(ImVec2 place, ImVec2 size, const DrawnSegment& own, bool across_lines) const {
+  const DrawnSegment leader = leader_line(box_around(place, size), own);
+  const auto on = [&](const std::vector<ImVec4>& list) {
+    return std::any_of(list.begin(), list.end(), [&](const ImVec4& other) { return overlaps(other, leader); });
+  };
+  // The lines drawn that are not arrows (a torque's arc, a spring, another value's leader, a
+  // tool's line): a leader that crosses one is read as joined to it. (Their kept-off width
+  // is for text: a leader may start within a spring's coils where its arrow does.)
+  const auto is_arrow = [&](const DrawnSegment& segment) {
+    return std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& arrow) { return same_ends(arrow, segment); });
+  };
+  const bool on_line = std::any_of(segments_.begin(), segments_.end(), [&](const DrawnSegment& other) {
+    return !is_arrow(other) && crosses(leader, other);
+  });
+  // Another arrow is avoided by its centre line: the leader starts on its own arrow, within
+  // the kept-off width of an arrow that starts where it does (a normal force and a friction
+  // at one contact), and a leader that crosses another arrow joins the value to both.
+  // Where the forces at one contact start together, another arrow may pass within half a
+  // line of the own arrow, and a leader that crosses it there leaves from where they meet.
+  const bool crosses_arrow = std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
+    return !same_ends(other, own) && crosses(leader, other) &&
+           (!across_lines || crossing_along(leader, other) > 0.5f * size.y);
+  });
+  return length(sub(leader.to, leader.from)) <= longest_leader(size) && !on(taken_) && !on(marks_) &&
+         (across_lines || !on_line) &&
+         !crosses_arrow;
+}
+
+// Off every body but the force's own: a value moved away from its arrow lands on whatever is
+// there, and on another body's face it reads as that body's (issue 31: a block's face in a
+// stack).
+bool LabelPlacer::off_other_bodies(const ImVec4& box, const b2Body* own_body) const {
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const bool its_own = own_body != nullptr && body_owners_[k] == own_body;
+    if (!its_own && overlaps(box, bodies_[k])) return false;
+  }
+  return true;
+}
+
+std::optional<ImVec2> LabelPlacer::place_with_leader(ImVec2 wanted, ImVec2 size, const DrawnSegment& own,
+                                                     const b2Body* own_body) const {
+  // Across a line that is not an arrow, or across another arrow where they start together,
+  // only where nothing else is near (a wheel's friction inside its torque's arc, a friction
+  // beside a normal force): a value by its arrow reads better than one far off with no leader.
+  const std::vector<ImVec2> further = candidates(wanted, size, 30);
+  // On another body last: a value on a block's face with a leader to its own arrow is still
+  // read as its arrow's, where one lines away with no leader is read as nobody's (a stack's
+  // friction between its blocks, hemmed in by the normal forces and weights).
+  // And, at each of those, first where no other arrow is nearer the value than its own: a value with a leader
+  // beside another arrow is read as that one's (issue 31: stacked_blocks' pressing force, 9.81 N,
+  // sat by the bottom block's weight, 27 px from it and 43 px from its own arrow).
+  for (const bool on_bodies : {false, true}) {
+    for (const bool across_lines : {false, true}) {
+      for (const bool nearest_first : {true, false}) {
+        for (const ImVec2& place : further) {
+          const ImVec4 box = box_around(place, size);
+          if (clear(box, false) && (on_bodies || off_other_bodies(box, own_body)) &&
+              (!nearest_first || nearest_to_own(place, size, own)) && leader_clear(place, size, own, across_lines)) {
+            return place;
+          }
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text,
                                                 const DrawnSegment* own, bool* with_leader, const b2Body* own_body) {
   if (with_leader != nullptr) *with_leader = false;
@@ -210,98 +310,14 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     return std::nullopt;
   };
   if (own != nullptr) {
-    // The places near the tip, then along each side of the shaft from the tip back and behind
-    // the tail, each clear of the arrow as wide as it is kept off (arrow()'s width, else its own).
-    std::vector<ImVec2> near = places;
-    const ImVec2 along = sub(own->to, own->from);
-    const float span = length(along);
-    if (span > 0.0f) {
-      float half_width = own->half_width;
-      for (const DrawnSegment& known : arrows_) {
-        if (same_ends(known, *own)) {
-          half_width = std::max(half_width, known.half_width);
-        }
-      }
-      const ImVec2 unit = mul(along, 1.0f / span), across(-unit.y, unit.x);
-      const float half_across = 0.5f * (std::abs(across.x) * size.x + std::abs(across.y) * size.y) + pad + half_width + 1.0f;
-      const float half_along = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + pad + half_width + 1.0f;
-      for (const float f : {1.0f, 0.75f, 0.5f, 0.25f, 0.0f}) {
-        for (const float side : {1.0f, -1.0f}) {
-          near.push_back(moved_inside(add(add(own->from, mul(along, f)), mul(across, side * half_across)), size));
-        }
-      }
-      near.push_back(moved_inside(sub(own->from, mul(unit, half_along)), size));
-    }
-    std::vector<ImVec2> by_own;
-    for (const ImVec2& place : near) {
-      if (beside(place, size, *own)) by_own.push_back(place);
-    }
+    const std::vector<ImVec2> by_own = places_by_arrow(places, size, *own);
     std::optional<ImVec2> found = first_clear(by_own, true);
     if (!found) found = first_clear(by_own, false);
-    // Nowhere free beside it: the nearest free place from which a leader to the arrow
-    // (leader_line(), which draw_force() draws) crosses no label, mark, line or other arrow: a
-    // leader over another value or arrow would join the wrong two.
-    const auto leader_clear = [&](ImVec2 place, bool across_lines) {
-      const DrawnSegment leader = leader_line(box_around(place, size), *own);
-      const auto on = [&](const std::vector<ImVec4>& list) {
-        return std::any_of(list.begin(), list.end(), [&](const ImVec4& other) { return overlaps(other, leader); });
-      };
-      // The lines drawn that are not arrows (a torque's arc, a spring, another value's leader, a
-      // tool's line): a leader that crosses one is read as joined to it. (Their kept-off width
-      // is for text: a leader may start within a spring's coils where its arrow does.)
-      const auto is_arrow = [&](const DrawnSegment& segment) {
-        return std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& arrow) { return same_ends(arrow, segment); });
-      };
-      const bool on_line = std::any_of(segments_.begin(), segments_.end(), [&](const DrawnSegment& other) {
-        return !is_arrow(other) && crosses(leader, other);
-      });
-      // Another arrow is avoided by its centre line: the leader starts on its own arrow, within
-      // the kept-off width of an arrow that starts where it does (a normal force and a friction
-      // at one contact), and a leader that crosses another arrow joins the value to both.
-      // Where the forces at one contact start together, another arrow may pass within half a
-      // line of the own arrow, and a leader that crosses it there leaves from where they meet.
-      const bool crosses_arrow = std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
-        return !same_ends(other, *own) && crosses(leader, other) &&
-               (!across_lines || crossing_along(leader, other) > 0.5f * size.y);
-      });
-      return length(sub(leader.to, leader.from)) <= longest_leader(size) && !on(taken_) && !on(marks_) &&
-             (across_lines || !on_line) &&
-             !crosses_arrow;
-    };
-    // Off every body but the force's own: a value moved away from its arrow lands on whatever
-    // is there, and on another body's face it reads as that body's (issue 31: a block's face in
-    // a stack).
-    const auto off_other_bodies = [&](const ImVec4& box) {
-      for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        const bool its_own = own_body != nullptr && body_owners_[k] == own_body;
-        if (!its_own && overlaps(box, bodies_[k])) return false;
-      }
-      return true;
-    };
-    // Across a line that is not an arrow, or across another arrow where they start together,
-    // only where nothing else is near (a wheel's friction inside its torque's arc, a friction
-    // beside a normal force): a value by its arrow reads better than one far off with no leader.
-    const std::vector<ImVec2> further = found ? std::vector<ImVec2>{} : candidates(wanted, size, 30);
-    // On another body last: a value on a block's face with a leader to its own arrow is still
-    // read as its arrow's, where one lines away with no leader is read as nobody's (a stack's
-    // friction between its blocks, hemmed in by the normal forces and weights).
-    // And, at each of those, first where no other arrow is nearer the value than its own: a value with a leader
-    // beside another arrow is read as that one's (issue 31: stacked_blocks' pressing force, 9.81 N,
-    // sat by the bottom block's weight, 27 px from it and 43 px from its own arrow).
-    for (const bool on_bodies : {false, true}) {
-      for (const bool across_lines : {false, true}) {
-        for (const bool nearest_first : {true, false}) {
-          for (const ImVec2& place : further) {
-            if (found) break;
-            const ImVec4 box = box_around(place, size);
-            if (clear(box, false) && (on_bodies || off_other_bodies(box)) && (!nearest_first || nearest_to_own(place, size, *own)) &&
-                leader_clear(place, across_lines)) {
-              found = place;
-              if (with_leader != nullptr) *with_leader = true;
-            }
-          }
-        }
-      }
+    // Nowhere free beside it: the nearest free place from which a leader to the arrow crosses
+    // nothing it would join the value to.
+    if (!found) {
+      found = place_with_leader(wanted, size, *own, own_body);
+      if (found && with_leader != nullptr) *with_leader = true;
     }
     if (found) {
       take(box_around(*found, size), text);

@@ -157,6 +157,15 @@ class LabelPlacer {
   // The places around `wanted` that the searches try, nearest first: `wanted` (moved inside the
   // view), then `rings` rings of eight at half steps.
   std::vector<ImVec2> candidates(ImVec2 wanted, ImVec2 size, int rings) const;
+  // place_beside()'s parts for a value with its own arrow: the places beside it (near the tip,
+  // along each side of the shaft, behind the tail); whether a leader from `place` to the arrow
+  // crosses nothing it would join the value to; whether a box is off every body but `own_body`;
+  // and the nearest place with such a leader, where none is free beside the arrow.
+  std::vector<ImVec2> places_by_arrow(const std::vector<ImVec2>& places, ImVec2 size, const DrawnSegment& own) const;
+  bool leader_clear(ImVec2 place, ImVec2 size, const DrawnSegment& own, bool across_lines) const;
+  bool off_other_bodies(const ImVec4& box, const b2Body* own_body) const;
+  std::optional<ImVec2> place_with_leader(ImVec2 wanted, ImVec2 size, const DrawnSegment& own,
+                                          const b2Body* own_body) const;
 
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1
