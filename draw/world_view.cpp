@@ -573,9 +573,13 @@ ForceLabelTimes& force_label_times() {
   return times;
 }
 
-void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
-                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
-                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
+namespace {
+
+// The world's things, sky first: the fixed bodies, ropes and springs (a hand at a spring's free
+// end), then the moving bodies over them. The labels that name places on them are handed back,
+// to be placed once every arrow and mark is known.
+std::vector<PlaceLabel> draw_scenery(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera,
+                                     const Theme& theme, const Fonts& fonts, LabelPlacer& labels) {
   const Scene& scene = lesson.scene();
   draw->AddRectFilled(camera.origin, add(camera.origin, camera.size), theme.sky);
   std::vector<PlaceLabel> place_labels;
@@ -595,8 +599,20 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_staticBody) draw_body(draw, scene, body, camera, theme, fonts, place_labels);
   }
-  // Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped)
-  // but their labels would otherwise be pushed into the lane by the label placer.
+  return place_labels;
+}
+
+// What a view shows of the forces: the contact marks, the force arrows and the torques' arcs.
+struct ForcesInView {
+  std::vector<ContactMark> marks;
+  std::vector<ScreenArrow> arrows;
+  std::vector<TorqueArc> torques;
+};
+
+// Marks and arrows only for what is in this view: a lane's neighbours are drawn (clipped) but
+// their labels would otherwise be pushed into the lane by the label placer.
+ForcesInView forces_in_view(const Scene& scene, const Camera& camera, const Fonts& fonts, float newtons_to_pixels,
+                            const std::vector<const b2Body*>* labelled) {
   const auto ours = [&](const b2Body* body) {
     return labelled == nullptr || std::find(labelled->begin(), labelled->end(), body) != labelled->end();
   };
@@ -605,45 +621,38 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     return at.x >= camera.origin.x && at.x <= camera.origin.x + camera.size.x && at.y >= camera.origin.y &&
            at.y <= camera.origin.y + camera.size.y;
   };
-  std::vector<ContactMark> marks;
+  ForcesInView shown;
   for (const ContactMark& mark : contact_marks(scene)) {
     const b2Body* moving = mark.body_b->GetType() == b2_dynamicBody ? mark.body_b : mark.body_a;
-    if (in_view(mark.point) && ours(moving)) marks.push_back(mark);
+    if (in_view(mark.point) && ours(moving)) shown.marks.push_back(mark);
   }
-  std::vector<ScreenArrow> arrows;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
     // None shorter than a back row can read: the legend says under which force they are not to scale.
     for (const ScreenArrow& arrow : place_arrows(forces_on(scene, body), camera, newtons_to_pixels, fonts.scale,
                                                  legible_arrow_pixels(fonts.scale))) {
-      arrows.push_back(arrow);
+      shown.arrows.push_back(arrow);
     }
   }
-  std::vector<TorqueArc> torques;
   for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
     const b2Body* body = scene.applied_forces()[i].body;
     const double torque = scene.torques_applied()[i];
     if (torque == 0.0 || !in_view(body->GetWorldCenter()) || !ours(body)) continue;
     const b2AABB box = lessons::body_box(body);
     const float half = 0.5f * std::min(box.upperBound.x - box.lowerBound.x, box.upperBound.y - box.lowerBound.y);
-    torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
-                                 std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
+    shown.torques.push_back(torque_arc(camera.to_screen(body->GetWorldCenter()),
+                                       std::max(0.55f * half * camera.pixels_per_metre, 14.0f * fonts.scale), torque));
   }
-  const float mark_radius = contact_dot_radius * fonts.scale;
-  start_frictions_past_their_dots(arrows, marks, camera, mark_radius);
-  const float thickness = world_arrow_thickness(fonts.scale);
-  uncross_arrows(arrows, thickness);
-  // A contact's forces are drawn last, over every other: a weight from its centre of mass that
-  // passes under a friction's start (push's, spring_pull's) is covered there, and the friction is
-  // seen whole from its dot (uncross_arrows moves neither).
-  std::stable_partition(arrows.begin(), arrows.end(), [](const ScreenArrow& arrow) {
-    return arrow.force.kind != ForceKind::friction && arrow.force.kind != ForceKind::normal;
-  });
-  mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
-  // Every arrow and mark is known before any label is placed, so no label lands on one.
-  for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
-  for (const TorqueArc& arc : torques) avoid_arc(labels, arc, 2.0f * thickness);
-  for (const ContactMark& mark : marks) {
+  return shown;
+}
+
+// Every arrow, arc, mark and moving body is known to the placer before any label is placed, so
+// no label lands on one.
+void tell_the_placer(LabelPlacer& labels, const ForcesInView& shown, const Scene& scene, const Camera& camera,
+                     float thickness, float mark_radius) {
+  for (const ScreenArrow& arrow : shown.arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
+  for (const TorqueArc& arc : shown.torques) avoid_arc(labels, arc, 2.0f * thickness);
+  for (const ContactMark& mark : shown.marks) {
     const ImVec2 at = camera.to_screen(mark.point);
     labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
   }
@@ -653,6 +662,29 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     const ImVec2 a = camera.to_screen(box.lowerBound), b = camera.to_screen(box.upperBound);
     labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)), body);
   }
+}
+
+}  // namespace
+
+void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
+                const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
+                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
+  const Scene& scene = lesson.scene();
+  const std::vector<PlaceLabel> place_labels = draw_scenery(draw, lesson, camera, theme, fonts, labels);
+  ForcesInView shown = forces_in_view(scene, camera, fonts, newtons_to_pixels, labelled);
+  std::vector<ScreenArrow>& arrows = shown.arrows;
+  const float mark_radius = contact_dot_radius * fonts.scale;
+  start_frictions_past_their_dots(arrows, shown.marks, camera, mark_radius);
+  const float thickness = world_arrow_thickness(fonts.scale);
+  uncross_arrows(arrows, thickness);
+  // A contact's forces are drawn last, over every other: a weight from its centre of mass that
+  // passes under a friction's start (push's, spring_pull's) is covered there, and the friction is
+  // seen whole from its dot (uncross_arrows moves neither).
+  std::stable_partition(arrows.begin(), arrows.end(), [](const ScreenArrow& arrow) {
+    return arrow.force.kind != ForceKind::friction && arrow.force.kind != ForceKind::normal;
+  });
+  mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
+  tell_the_placer(labels, shown, scene, camera, thickness, mark_radius);
   // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
   // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
   if (fixed_labels) fixed_labels();
@@ -666,14 +698,14 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
   std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool, bool>> said;
-  for (const ContactMark& mark : marks) {
+  for (const ContactMark& mark : shown.marks) {
     const bool rightward = mark.sliding_velocity >= 0.0;
     const auto key = std::make_tuple(mark.body_a, mark.body_b, mark.state, mark.frictionless, rightward);
     const bool first = std::find(said.begin(), said.end(), key) == said.end();
     if (first) said.push_back(key);
     draw_contact_mark(draw, mark, camera, theme, fonts, labels, first);
   }
-  for (const TorqueArc& arc : torques) {
+  for (const TorqueArc& arc : shown.torques) {
     draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.body, theme.panel, thickness, labels);
   }
   const std::vector<std::string> texts = force_value_texts(arrows);
