@@ -47,48 +47,38 @@ bool free_body_readable(ImVec2 size, float scale) {
   return free_body_reach(size, text, scale) >= 3.0f * text;
 }
 
-void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
-                    ImVec2 size, const Theme& theme, const Fonts& fonts, FreeBodyRecord* record) {
-  const float s = fonts.scale;
-  draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
-  draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
-  // Shortened when the inset is narrow (large text): the name must show.
-  const std::string body_name = lessons::class_words(name);
-  std::string title = "Free-body diagram: " + body_name;
-  if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
-    title = body_name + ", forces";
-  }
-  const ImRect whole(corner, add(corner, size));
-  // Its texts noted for the layout test, in the inset's font.
-  const auto noted = [&](const std::string& text, ImVec2 at) {
-    ImGui::PushFont(fonts.small);
-    note_text_in(text.c_str(), at, whole);
-    ImGui::PopFont();
-  };
-  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
-  noted(title, ImVec2(corner.x + 8 * s, corner.y + 5 * s));
-  if (body == nullptr) return;
+namespace {
 
-  // The body alone, at its own zoom, upright as it is now.
+// A text of the inset noted for the layout test, in the inset's font.
+void note_inset_text(const std::string& text, ImVec2 at, const ImRect& whole, const Fonts& fonts) {
+  ImGui::PushFont(fonts.small);
+  note_text_in(text.c_str(), at, whole);
+  ImGui::PopFont();
+}
+
+// The body alone, at its own zoom, upright as it is now: the inset's camera, and the body's
+// extent in metres.
+Camera inset_camera(const b2Body* body, ImVec2 corner, ImVec2 size, const Fonts& fonts, b2Vec2& extent) {
+  const float s = fonts.scale;
   b2AABB box;
   box.lowerBound = box.upperBound = body->GetWorldCenter();
   for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) box.Combine(f->GetAABB(0));
-  const float header = fonts.small->FontSize + 10.0f * s, footer = fonts.small->FontSize + 8.0f * s;
+  const float header = fonts.small->FontSize + 10.0f * s;
   Camera inset;
   inset.origin = ImVec2(corner.x, corner.y + header);
   inset.size = diagram_size(size, fonts.small->FontSize, s);
   inset.centre = box.GetCenter();
-  const b2Vec2 extent = box.upperBound - box.lowerBound;
+  extent = box.upperBound - box.lowerBound;
   inset.anchor = ImVec2(inset.origin.x + 0.5f * inset.size.x, inset.origin.y + 0.5f * inset.size.y);
   // The body as large as leaves its arrows room: at a quarter of the height a tall crate on a
   // projector's inset was 15 px across, under its own arrows.
   inset.pixels_per_metre = std::min(0.4f * inset.size.x / std::max(extent.x, 1e-3f), 0.4f * inset.size.y / std::max(extent.y, 1e-3f));
-  const std::vector<ForceOnBody> forces = forces_on(scene, body);
-  float largest = 1e-6f;
-  for (const ForceOnBody& force : forces) largest = std::max(largest, force.force.Length());
-  const float newtons_to_pixels = free_body_reach(size, fonts.small->FontSize, s) / largest;
+  return inset;
+}
 
-  draw->PushClipRect(corner, add(corner, size), true);
+// The body's shapes in their materials' colours, and a dot at its centre of mass.
+void draw_inset_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const Camera& inset, const Theme& theme,
+                     float s) {
   for (const b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
     const ImU32 fill = fixture_colour(scene, f, theme);
     if (f->GetType() == b2Shape::e_polygon) {
@@ -99,33 +89,37 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     }
   }
   draw->AddCircleFilled(inset.to_screen(body->GetWorldCenter()), 3.0f * s, theme.outline, 12);
-  const ImVec2 footer_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
-  if (scene.frame() == 0) {
-    // Before the first step the solver has not yet said what the contacts push with: the weight
-    // alone, on a block resting on a floor, showed the class unbalanced forces. No arrows until
-    // the run starts, and words that say so, on as many lines as the inset's width needs.
-    draw->PopClipRect();
-    std::vector<std::string> lines = {"forces appear once the run starts"};
-    if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lines.front().c_str()).x > size.x - 16.0f * s) {
-      lines = {"forces appear once", "the run starts"};
-    }
-    const float line_height = fonts.small->FontSize;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      const ImVec2 at(footer_at.x, footer_at.y - static_cast<float>(lines.size() - 1 - i) * line_height);
-      draw->AddText(fonts.small, fonts.small->FontSize, at, theme.faint_text, lines[i].c_str());
-      noted(lines[i], at);
-    }
-    return;
+}
+
+// Before the first step the solver has not yet said what the contacts push with: the weight
+// alone, on a block resting on a floor, showed the class unbalanced forces. No arrows until the
+// run starts, and words that say so, on as many lines as the inset's width needs.
+void say_forces_come_with_the_run(ImDrawList* draw, ImVec2 footer_at, ImVec2 size, const ImRect& whole,
+                                  const Theme& theme, const Fonts& fonts) {
+  std::vector<std::string> lines = {"forces appear once the run starts"};
+  if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, lines.front().c_str()).x > size.x - 16.0f * fonts.scale) {
+    lines = {"forces appear once", "the run starts"};
   }
-  // Labels between the title and the net force line, off every arrow.
-  LabelPlacer labels(inset.origin, inset.size);
+  const float line_height = fonts.small->FontSize;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const ImVec2 at(footer_at.x, footer_at.y - static_cast<float>(lines.size() - 1 - i) * line_height);
+    draw->AddText(fonts.small, fonts.small->FontSize, at, theme.faint_text, lines[i].c_str());
+    note_inset_text(lines[i], at, whole, fonts);
+  }
+}
+
+// The forces' arrows with their values, and a motor's torque round the centre of mass; the
+// forces drawn, as printed (place_arrows leaves out only a force too small to show in them).
+std::vector<b2Vec2> draw_inset_forces(ImDrawList* draw, const Scene& scene, const b2Body* body, const Camera& inset,
+                                      b2Vec2 extent, float newtons_to_pixels, const Theme& theme, const Fonts& fonts,
+                                      LabelPlacer& labels) {
+  const float s = fonts.scale;
   // Weight and normal force side by side 9 px times the scale apart, as before the world's gap
   // grew (side_by_side_gap): the inset is drawn only where it is read from near (not on a
   // projector: free_body_readable), its arrows thinner, and its values are placed in that room
   // (a wider gap left tipping_box's 1.48 N friction 46 px from its arrow at 2.49 s).
-  const std::vector<ScreenArrow> arrows = place_arrows(forces, inset, newtons_to_pixels, s, 0.0f, 9.0f * s, false);
+  const std::vector<ScreenArrow> arrows = place_arrows(forces_on(scene, body), inset, newtons_to_pixels, s, 0.0f, 9.0f * s, false);
   for (const ScreenArrow& arrow : arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 6.0f * s});
-  // A motor's torque on the body, round its centre of mass.
   std::vector<TorqueArc> torques;
   for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
     if (scene.applied_forces()[i].body != body || scene.torques_applied()[i] == 0.0) continue;
@@ -138,9 +132,47 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
   for (const TorqueArc& arc : torques) {
     draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
   }
-  // The forces drawn, as printed: place_arrows leaves out only a force too small to show in them.
   std::vector<b2Vec2> drawn;
   for (const ScreenArrow& arrow : arrows) drawn.push_back(arrow.force.force);
+  return drawn;
+}
+
+}  // namespace
+
+void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, const std::string& name, ImVec2 corner,
+                    ImVec2 size, const Theme& theme, const Fonts& fonts, FreeBodyRecord* record) {
+  const float s = fonts.scale;
+  draw->AddRectFilled(corner, add(corner, size), theme.panel, 4.0f);
+  draw->AddRect(corner, add(corner, size), theme.axis, 4.0f, 0, 1.0f);
+  // Shortened when the inset is narrow (large text): the name must show.
+  const std::string body_name = lessons::class_words(name);
+  std::string title = "Free-body diagram: " + body_name;
+  if (fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, title.c_str()).x > size.x - 16.0f * s) {
+    title = body_name + ", forces";
+  }
+  const ImRect whole(corner, add(corner, size));
+  draw->AddText(fonts.small, fonts.small->FontSize, ImVec2(corner.x + 8 * s, corner.y + 5 * s), theme.text, title.c_str());
+  note_inset_text(title, ImVec2(corner.x + 8 * s, corner.y + 5 * s), whole, fonts);
+  if (body == nullptr) return;
+
+  b2Vec2 extent;
+  const Camera inset = inset_camera(body, corner, size, fonts, extent);
+  float largest = 1e-6f;
+  for (const ForceOnBody& force : forces_on(scene, body)) largest = std::max(largest, force.force.Length());
+  const float newtons_to_pixels = free_body_reach(size, fonts.small->FontSize, s) / largest;
+
+  draw->PushClipRect(corner, add(corner, size), true);
+  draw_inset_body(draw, scene, body, inset, theme, s);
+  const float footer = fonts.small->FontSize + 8.0f * s;
+  const ImVec2 footer_at(corner.x + 8 * s, corner.y + size.y - footer + 2 * s);
+  if (scene.frame() == 0) {
+    draw->PopClipRect();
+    say_forces_come_with_the_run(draw, footer_at, size, whole, theme, fonts);
+    return;
+  }
+  // Labels between the title and the net force line, off every arrow.
+  LabelPlacer labels(inset.origin, inset.size);
+  const std::vector<b2Vec2> drawn = draw_inset_forces(draw, scene, body, inset, extent, newtons_to_pixels, theme, fonts, labels);
   draw->PopClipRect();
   const std::string net_text = "net force: " + format_quantity(printed_net(drawn), "N");
   if (record != nullptr) {
@@ -152,7 +184,7 @@ void draw_free_body(ImDrawList* draw, const Scene& scene, const b2Body* body, co
     record->net_text = net_text;
   }
   draw->AddText(fonts.small, fonts.small->FontSize, footer_at, theme.faint_text, net_text.c_str());
-  noted(net_text, footer_at);
+  note_inset_text(net_text, footer_at, whole, fonts);
 }
 
 }  // namespace frictionlab::draw
