@@ -135,13 +135,9 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
   layout.levels.insert(layout.levels.end(), placed.begin(), placed.end());
 }
 
-void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
-                       ChartLayout& layout) {
-  // The series' lines are 2.5 points thick at most, the theory's 3.5 (draw_series,
-  // draw_theory_curves): a text keeps a pixel clear of their edges; and it stands 3 points and
-  // a pixel off its own line, clear of a series drawn along the level (push's slide at −μk·N).
-  const float series_reach = 1.25f * s + 1.0f, theory_reach = 1.75f * s + 1.0f, off_line = 3.0f * s + 1.0f;
-  // The run's lines to come, on the screen, at most about two points a pixel as place() keeps.
+// The run's lines to come, on the screen, at most about two points a pixel as place() keeps.
+std::vector<std::vector<ImVec2>> planned_lines(const Chart& chart, const Axis& x_axis, const Axis& y_axis,
+                                               const ChartLayout& layout) {
   std::vector<std::vector<ImVec2>> planned;
   const float width = layout.high_right.x - layout.low_left.x;
   if (!chart.planned_points.empty()) {
@@ -159,6 +155,79 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
       if (i % stride == 0) planned.back().push_back(layout.to_screen(x, y));
     }
   }
+  return planned;
+}
+
+// What a level's text keeps off in the data area: the texts placed before it, the record's
+// lines, the run's to come and the theory's curves. The series' lines are 2.5 points thick at
+// most, the theory's 3.5 (draw_series, draw_theory_curves): a text keeps a pixel clear of their
+// edges.
+struct LevelTextRoom {
+  const ChartLayout& layout;
+  const std::vector<std::vector<ImVec2>>& planned;
+  float series_reach, theory_reach;
+
+  bool meets_texts(const ImVec4& box) const {
+    for (const ChartLayout::Level& other : layout.levels) {
+      if (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y) return true;
+    }
+    return false;
+  }
+  bool clear(const ImVec4& box) const {
+    if (meets_texts(box)) return false;
+    for (const std::vector<ImVec2>& line : layout.series_points) {
+      if (line_meets(line, box, series_reach)) return false;
+    }
+    for (const std::vector<ImVec2>& line : planned) {
+      if (line_meets(line, box, series_reach)) return false;
+    }
+    for (const auto& curve : layout.theory) {
+      for (const auto& piece : curve) {
+        if (line_meets(piece, box, theory_reach)) return false;
+      }
+    }
+    return true;
+  }
+  // How many pieces of a line a box meets, each counted once.
+  std::size_t pieces_met(const std::vector<ImVec2>& line, const ImVec4& box) const {
+    std::size_t met = 0;
+    bool in = false;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      const bool meets = segment_meets(line[k], line[k + 1 < line.size() ? k + 1 : k], box, series_reach);
+      met += meets && !in;
+      in = meets;
+    }
+    return met;
+  }
+  // Where it meets the fewest pieces of the data's lines (the record's and the run's to come,
+  // counted once each) and no text placed before it (the first of equals in the order given),
+  // under the data; nullopt where every place meets a text.
+  template <typename BoxAt>
+  std::optional<ImVec4> least_crossed(const std::vector<float>& lefts, const float (&tops)[2], float w, float text,
+                                      const BoxAt& box_at) const {
+    ImVec4 best;
+    std::size_t fewest = static_cast<std::size_t>(-1);
+    for (const float left : lefts) {
+      for (const float top : tops) {
+        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        const ImVec4 box = box_at(left, top);
+        std::size_t met = 1000 * meets_texts(box);
+        for (const auto& line : planned.empty() ? layout.series_points : planned) met += pieces_met(line, box);
+        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
+      }
+    }
+    if (fewest >= 1000) return std::nullopt;
+    return best;
+  }
+};
+
+void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
+                       ChartLayout& layout) {
+  // A text stands 3 points and a pixel off its own line, clear of a series drawn along the level
+  // (push's slide at −μk·N).
+  const float off_line = 3.0f * s + 1.0f;
+  const std::vector<std::vector<ImVec2>> planned = planned_lines(chart, x_axis, y_axis, layout);
+  const LevelTextRoom room{layout, planned, 1.25f * s + 1.0f, 1.75f * s + 1.0f};
   for (std::size_t i = 0; i < chart.levels.size(); ++i) {
     const ChartLevel& level = chart.levels[i];
     if (!y_axis.shows(level.y)) continue;
@@ -166,27 +235,6 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
     if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
     const float w = width_of(font, level.text);
     const auto box_at = [&](float left, float top) { return ImVec4(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f); };
-    const auto meets_texts = [&](const ImVec4& box) {
-      for (const ChartLayout::Level& other : layout.levels) {
-        if (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y) return true;
-      }
-      return false;
-    };
-    const auto clear = [&](const ImVec4& box) {
-      if (meets_texts(box)) return false;
-      for (const std::vector<ImVec2>& line : layout.series_points) {
-        if (line_meets(line, box, series_reach)) return false;
-      }
-      for (const std::vector<ImVec2>& line : planned) {
-        if (line_meets(line, box, series_reach)) return false;
-      }
-      for (const auto& curve : layout.theory) {
-        for (const auto& piece : curve) {
-          if (line_meets(piece, box, theory_reach)) return false;
-        }
-      }
-      return true;
-    };
     const float right_end = layout.high_right.x - w - 4.0f * s, left_end = layout.low_left.x + 4.0f * s;
     if (right_end < left_end) {  // wider than the data area (a small picture's plot): its line alone
       layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
@@ -199,7 +247,7 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
     for (const float left : lefts) {
       for (const float top : tops) {
         if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
-        if (clear(box_at(left, top))) {
+        if (room.clear(box_at(left, top))) {
           found = ImVec4(left, top, left + w, top + text);
           break;
         }
@@ -210,37 +258,14 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
       layout.levels.push_back({i, level.text, *found, y, false});
       continue;
     }
-    // Where it meets the fewest pieces of the data's lines (the record's and the run's to come,
-    // counted once each) and no text placed before it (the first of equals in the order above),
-    // under the data.
-    const auto pieces_met = [&](const std::vector<ImVec2>& line, const ImVec4& box) {
-      std::size_t met = 0;
-      bool in = false;
-      for (std::size_t k = 0; k < line.size(); ++k) {
-        const bool meets = segment_meets(line[k], line[k + 1 < line.size() ? k + 1 : k], box, series_reach);
-        met += meets && !in;
-        in = meets;
-      }
-      return met;
-    };
-    ImVec4 best;
-    std::size_t fewest = static_cast<std::size_t>(-1);
-    for (const float left : lefts) {
-      for (const float top : tops) {
-        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
-        const ImVec4 box = box_at(left, top);
-        std::size_t met = 1000 * meets_texts(box);
-        for (const auto& line : planned.empty() ? layout.series_points : planned) met += pieces_met(line, box);
-        if (met < fewest) fewest = met, best = ImVec4(left, top, left + w, top + text);
-      }
-    }
     // None where the data area is too short for it beside the texts placed before it (a small
     // picture's plot): its line alone, rather than two texts over each other.
-    if (fewest >= 1000) {
+    const std::optional<ImVec4> least = room.least_crossed(lefts, tops, w, text, box_at);
+    if (!least) {
       layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
       continue;
     }
-    layout.levels.push_back({i, level.text, best, y, true});
+    layout.levels.push_back({i, level.text, *least, y, true});
   }
 }
 
