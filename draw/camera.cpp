@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace frictionlab::draw {
 
@@ -85,9 +86,9 @@ void show_reach(Camera& camera, Reach reach, float edge) {
 }
 
 // The highest foot of a moving body, m: now or at t = 0 (WorldFraming::highest_foot), whichever
-// is higher; -inf where none moves.
+// is higher; -infinity where none moves.
 float highest_foot(const lessons::WorldFraming& framing, const Scene& scene) {
-  float foot = std::isnan(framing.highest_foot) ? -1e30f : framing.highest_foot;
+  float foot = std::isnan(framing.highest_foot) ? -std::numeric_limits<float>::infinity() : framing.highest_foot;
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() == b2_dynamicBody) foot = std::max(foot, body_box(body).lowerBound.y);
   }
@@ -287,7 +288,7 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
         // not move up and down as a block slides.
         reach = {view.low.y, view.high.y};
         const float foot = highest_foot(framing, scene);
-        if (foot > -1e29f) reach.high = std::max(reach.high, foot + arrows.longest / camera.pixels_per_metre);
+        if (std::isfinite(foot)) reach.high = std::max(reach.high, foot + arrows.longest / camera.pixels_per_metre);
       }
       show_reach(camera, reach, edge);
     }

@@ -157,9 +157,13 @@ local function pull_in_a_step() return k * pull_speed * step_length() end
 --   stops, k·a·h² = (ωh)²·A in force; and Box2D's symplectic Euler keeps not the energy but one
 --   that differs from it by h·ω²·x·v, which moves the swing's far end, seen at a step, by about
 --   (ωh)²·A/8 more: allowed here as (ωh)²·A/2, on the safe side. h is the world's step.
+-- The swing's amplitude A in force, N (0 before a re-stick is known).
+local function swing_force()
+  local cycle = run()
+  return cycle.breakaway_force and cycle.restick_force and math.abs(cycle.breakaway_force - cycle.restick_force) / 2 or 0
+end
 local function swing_in_a_step()
-  local swing = run().breakaway_force and run().restick_force and (run().breakaway_force - run().restick_force) / 2 or 0
-  return 1.5 * (k / mass) * substep_length() ^ 2 * math.abs(swing)
+  return 1.5 * (k / mass) * substep_length() ^ 2 * swing_force()
 end
 -- * Single precision: the block's position is a float, rounded by up to 2^-24 of itself each
 --   step it moves (the longest slip's steps), and the force reads it, the hand's and their
@@ -181,7 +185,7 @@ end
 --   1.8 N at 240 Hz. It replaces a flat 2 % of μs·m·g, which was not derived.)
 local function drag_allowance()
   if param.c == 0 and param.b == 0 then return 0 end
-  local swing = run().breakaway_force and run().restick_force and math.abs(run().breakaway_force - run().restick_force) / 2 or 0
+  local swing = swing_force()
   local omega = math.sqrt(k / mass)
   local drag_rate = (param.c + 2 * param.b * (pull_speed + omega * swing / k)) / mass
   return substep_length() * omega * swing * math.min(drag_rate * (run().longest_slip or 0) / 2, 1)

@@ -143,7 +143,7 @@ WorldFraming WorldFraming::of(const Lesson& lesson) {
     if (body->GetType() != b2_dynamicBody) continue;
     framing.tallest_body = std::max(framing.tallest_body, body_size(body).y);
     const float foot = body_box(body).lowerBound.y;
-    if (!(foot <= framing.highest_foot)) framing.highest_foot = foot;
+    if (std::isnan(framing.highest_foot) || foot > framing.highest_foot) framing.highest_foot = foot;
   }
   const b2AABB moving = moving_bounds(scene);
   framing.moving_span = moving.upperBound.x - moving.lowerBound.x;
