@@ -514,6 +514,13 @@ struct TheoryValues {
   std::vector<double> curves, levels;
 };
 
+// The chart without the theory's curves and levels (kept back, or in error).
+void clear_theory(Chart& chart) {
+  chart.theory.clear();
+  chart.levels.clear();
+  chart.active_theory = -1;
+}
+
 // The theory's curves and levels (a script error in one becomes the chart's message, and the
 // lesson itself runs on); the values they take, for the y axis.
 TheoryValues add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_index, Range x_range, const Theme& theme) {
@@ -523,9 +530,7 @@ TheoryValues add_theory(Chart& chart, lessons::Lesson& lesson, std::size_t plot_
     if (!plot.theory.empty()) values.curves = add_theory_curves(chart, lesson, plot_index, x_range, theme);
     if (!plot.levels.empty()) values.levels = add_levels(chart, lesson, plot_index, theme);
   } catch (const lessons::ScriptError& error) {
-    chart.theory.clear();
-    chart.levels.clear();
-    chart.active_theory = -1;
+    clear_theory(chart);
     values = {};
     chart.message = error.what();
   }
@@ -565,13 +570,12 @@ double time_axis_span(double duration, double now, bool secret) {
   return reach;
 }
 
-Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
-                 bool with_theory, bool steady, bool secret) {
-  const PlotRecord record = record_of(lesson, plot_index);
-  const std::vector<double>& times = lesson.scene().times();
+namespace {
 
+// A chart of the plot before anything is plotted in it: its title, its axes' names and ticks.
+Chart empty_chart(const lessons::Lesson& lesson, const lessons::Plot& plot, bool steady) {
   Chart chart;
-  chart.title = record.plot.title;
+  chart.title = plot.title;
   chart.plain = true;
   chart.legend = Chart::Legend::inside;
   chart.y_tick_count = 4;
@@ -580,10 +584,20 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
   // apart (the body text's on a page of its own, number_font): the levels read off the axis (1 N
   // steps at push's defaults, where 2 or 5 N were).
   chart.y_tick_spacing = 1.5f * (steady ? body_text_points : small_text_points);
-  name_axes(chart, lesson, record.plot);
+  name_axes(chart, lesson, plot);
+  return chart;
+}
 
-  // The x axis: the time span (fixed by the lesson's duration from the opening), or what the
-  // record reaches, with round ends.
+// What the axes reach for besides the record: the run's plan, and how much of the record is the
+// run's.
+struct RunReach {
+  const PlannedReach* planned;  // none for a mystery before its reveal
+  bool planned_here;            // the plan covers this plot
+  std::size_t reach_count;      // the record's steps that are the run's
+};
+
+RunReach run_reach(lessons::Lesson& lesson, const PlotRecord& record, std::size_t plot_index, bool secret) {
+  const std::vector<double>& times = lesson.scene().times();
   // A mystery's values are hidden: a run to the end would tell them (push's breakaway on its x
   // axis), so its axes follow the record alone until the reveal.
   const PlannedReach* planned = secret ? nullptr : planned_reach(lesson);
@@ -599,53 +613,59 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     const auto first_past = std::lower_bound(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(std::min(record.count, times.size())), end);
     reach_count = std::min(record.count, static_cast<std::size_t>(first_past - times.begin()) + 1);
   }
+  return {planned, planned_here, reach_count};
+}
+
+// The x axis: the time span (fixed by the lesson's duration from the opening), or what the
+// record reaches, with round ends.
+Range x_axis_range(const lessons::Lesson& lesson, const PlotRecord& record, const RunReach& run, std::size_t plot_index,
+                   double time_span) {
+  const auto& [planned, planned_here, reach_count] = run;
+  const std::vector<double>& times = lesson.scene().times();
   // (The noise floor on the whole: a partial record's noise, widened alone, took contact_area's
   // speeds to −0.002 m/s early in the run and −1e-7 at its end.)
   const Range x_reach = planned_here && !record.over_time
                             ? beyond_noise(joined(reach_of(record.xs, reach_count), planned->x[plot_index]))
                             : extent_of(record.xs, record.count);
-  const Range x_range = record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
-                                         : record.count == 0 && !planned_here ? Range{}  // nothing recorded yet: 0 to 1
-                                                             : round_ends(at_least(x_reach,
-                                                                                   resolution_of(lesson.probe_unit(record.plot.x))),
-                                                                          planned_here);
-  chart.fixed_x = true;
-  chart.x_low = x_range.low, chart.x_high = x_range.high;
-  if (planned_here) chart.planned_points = planned->points[plot_index];
+  return record.over_time ? Range{0.0, std::max(time_span, record.count ? times.back() : 0.0)}
+                          : record.count == 0 && !planned_here ? Range{}  // nothing recorded yet: 0 to 1
+                                              : round_ends(at_least(x_reach,
+                                                                    resolution_of(lesson.probe_unit(record.plot.x))),
+                                                           planned_here);
+}
 
-  add_record(chart, lesson, record, theme);
-  if (record.over_time) add_slip_bands(chart, lesson, record, theme);
-  // The theory is worked out whether it is shown or not, so that the y axis is the same before
-  // and after the reveal (round_ends); kept back, it is not drawn, nor its error said. A
-  // mystery's theory counts for nothing until its reveal.
-  TheoryValues theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
-  if (secret) theory_values = {};
-  // A plot on a page of its own keeps its levels' texts' room beside its data from the opening,
-  // shown or not, so that the reveal moves nothing (Chart::level_room). A mystery's levels are
-  // worked out from its hidden values: their texts' widths would tell them (incline's θc, push's
-  // μs·N) and move the column as a slider moved them, so the room is every declared level's
-  // label beside the widest value text it could have, whatever its value.
+// A plot on a page of its own keeps its levels' texts' room beside its data from the opening,
+// shown or not, so that the reveal moves nothing (Chart::level_room). A mystery's levels are
+// worked out from its hidden values: their texts' widths would tell them (incline's θc, push's
+// μs·N) and move the column as a slider moved them, so the room is every declared level's
+// label beside the widest value text it could have, whatever its value.
+std::vector<std::string> level_texts_room(const Chart& chart, const lessons::Lesson& lesson, std::size_t plot_index,
+                                          bool secret) {
   std::vector<std::string> level_texts;
   if (secret) {
     level_texts = hidden_level_room(lesson, plot_index);
   } else {
     for (const ChartLevel& level : chart.levels) level_texts.push_back(level.text);
   }
-  if (!with_theory) {
-    chart.theory.clear();
-    chart.levels.clear();
-    chart.active_theory = -1;
-    chart.message.clear();
-  }
-  if (steady) {
-    chart.steady = true;
-    chart.level_room = std::move(level_texts);
-    // Room beside the data for the theory's keys from the start, before the reveal shows them.
-    // An X–Y plot coloured by regime keys its three regimes first, "no contact" once it has
-    // happened, in a place of its own from the start.
-    if (!chart.segment_colours.empty()) chart.legend_room = {"sticking", "slipping", no_contact_key};
-    for (const lessons::TheoryCurve& curve : record.plot.theory) chart.legend_room.push_back(curve.label);
-  }
+  return level_texts;
+}
+
+// A plot on a page of its own holds still as the run goes on and the theory is revealed.
+void keep_room_from_the_start(Chart& chart, const lessons::Plot& plot, std::vector<std::string> level_texts) {
+  chart.steady = true;
+  chart.level_room = std::move(level_texts);
+  // Room beside the data for the theory's keys from the start, before the reveal shows them.
+  // An X–Y plot coloured by regime keys its three regimes first, "no contact" once it has
+  // happened, in a place of its own from the start.
+  if (!chart.segment_colours.empty()) chart.legend_room = {"sticking", "slipping", no_contact_key};
+  for (const lessons::TheoryCurve& curve : plot.theory) chart.legend_room.push_back(curve.label);
+}
+
+// The y axis: what the run and the theory's curves reach, and the levels near that, with round
+// ends.
+Range y_axis_range(const lessons::Lesson& lesson, const PlotRecord& record, const RunReach& run, std::size_t plot_index,
+                   const TheoryValues& theory_values) {
+  const auto& [planned, planned_here, reach_count] = run;
   Range y_range = planned_here ? beyond_noise(joined(reach_of(record.ys, reach_count), planned->y[plot_index]))
                                : extent_of(record.ys, record.count);
   const bool reached = record.count > 0 || planned_here;
@@ -668,6 +688,35 @@ Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_sp
     y_range = round_ends(at_least(y_range, resolution_of(record.plot.y.empty() ? std::string() : lesson.probe_unit(record.plot.y.front()))),
                          planned_here);
   }
+  return y_range;
+}
+
+}  // namespace
+
+Chart plot_chart(lessons::Lesson& lesson, std::size_t plot_index, double time_span, const Theme& theme,
+                 bool with_theory, bool steady, bool secret) {
+  const PlotRecord record = record_of(lesson, plot_index);
+  Chart chart = empty_chart(lesson, record.plot, steady);
+  const RunReach run = run_reach(lesson, record, plot_index, secret);
+  const Range x_range = x_axis_range(lesson, record, run, plot_index, time_span);
+  chart.fixed_x = true;
+  chart.x_low = x_range.low, chart.x_high = x_range.high;
+  if (run.planned_here) chart.planned_points = run.planned->points[plot_index];
+
+  add_record(chart, lesson, record, theme);
+  if (record.over_time) add_slip_bands(chart, lesson, record, theme);
+  // The theory is worked out whether it is shown or not, so that the y axis is the same before
+  // and after the reveal (round_ends); kept back, it is not drawn, nor its error said. A
+  // mystery's theory counts for nothing until its reveal.
+  TheoryValues theory_values = add_theory(chart, lesson, plot_index, x_range, theme);
+  if (secret) theory_values = {};
+  std::vector<std::string> level_texts = level_texts_room(chart, lesson, plot_index, secret);
+  if (!with_theory) {
+    clear_theory(chart);
+    chart.message.clear();
+  }
+  if (steady) keep_room_from_the_start(chart, record.plot, std::move(level_texts));
+  const Range y_range = y_axis_range(lesson, record, run, plot_index, theory_values);
   chart.fixed_y = true;
   chart.y_low = y_range.low, chart.y_high = y_range.high;
   return chart;

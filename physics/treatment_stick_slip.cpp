@@ -78,6 +78,23 @@ float solver_coefficient(ContactRecord& r, const FrictionPair& pair, float slidi
                                  : static_cast<float>(breakaway_coefficient(pair) * (1.0 + hold_band));
 }
 
+// B's sliding along the tangent when the step began (PreSolve's velocities, before the forces
+// acted), the mean over the contact's points; 0 with none.
+double sliding_at_start(const ContactRecord& r) {
+  double start = 0.0;
+  for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], r.tangent());
+  if (r.solver.point_count > 0) start /= r.solver.point_count;
+  return start;
+}
+
+// The mass the contact's tangential motion feels: a group's feet keep the body level, as a face
+// does; a lone contact's own mass applies.
+double tangential_mass(const ContactRecord& r) {
+  return r.listener.siblings > 0
+             ? translational_mass(r.identity.body_a, r.identity.body_b)
+             : contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, r.tangent());
+}
+
 // What a stuck contact (or group) did in a step, along its tangent: the friction it held and
 // the friction holding it would have taken, which is more when the solver let it move.
 struct StuckStep {
@@ -96,10 +113,7 @@ StuckStep stuck_step(const ContactRecord& r, const FrictionPair& pair, const Sol
   step.normal_force = solved.group_normal_impulse / step.h;
   step.limit = breakaway_coefficient(pair) * step.normal_force;
   step.held = std::abs(solved.group_tangent_impulse) / step.h;
-  // A group's feet keep the body level, as a face does; a lone contact's own mass applies.
-  step.mass = r.listener.siblings > 0
-                  ? translational_mass(r.identity.body_a, r.identity.body_b)
-                  : contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, r.tangent());
+  step.mass = tangential_mass(r);
   step.demanded = step.held + step.mass * std::abs(solved.group_sliding_end) / step.h;
   step.way = sign(static_cast<float>(step.mass * solved.group_sliding_end - solved.group_tangent_impulse));
   return step;
@@ -112,9 +126,7 @@ bool looks_like_leftover(const ContactRecord& r, const StuckStep& step, double p
   // round-off as large as such a leftover (5e-8 m/s on a block on three feet at 1000 Hz, a
   // twentieth of the excess): groups break away past the tolerance, as they did.
   if (r.listener.siblings > 0 || r.solver.point_count == 0) return false;
-  double start = 0.0;  // B's sliding when the step began, along the tangent
-  for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], r.tangent());
-  start /= r.solver.point_count;
+  const double start = sliding_at_start(r);
   const double along = step.way * start;
   return along > 0.0 && std::abs(solved.group_sliding_end) <= leftover_taken * along &&
          step.mass * along >= leftover_share * past * step.h;
@@ -197,9 +209,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   const double h = solved.step;
   const b2Vec2 t = r.tangent();
   if (r.solver.point_count == 0 || h <= 0.0) return;
-  double start = 0.0;
-  for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], t);
-  start /= r.solver.point_count;
+  const double start = sliding_at_start(r);
   const double end = solved.sliding_end;
   const double mass = contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, t);
   if (!(mass > 0.0)) return;
@@ -245,98 +255,111 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   r.breakaway.span = 0.0;
 }
 
+// A stuck contact (or group) after the solve: held within mu_s·N, watched within the band, or
+// broken away with the impulse it is owed.
+void after_stuck_step(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
+  const StuckStep step = stuck_step(r, pair, solved);
+  // Without friction to hold it (mu_s = mu_k = 0) a contact slips, as it always did. Within
+  // mu_s·N it stays stuck if the solver held it: if what holding takes, with what the contact
+  // still slides at the step's end, is within the band the solver may hold. Friction short of
+  // mu_s·N on a contact that slides on is the solver's clamp, not a hold: a top block on a
+  // light bottom one that breaks away from the floor, tilting it, was clamped 1.5 % short of
+  // it and slid back at up to 0.09 m/s while read as stuck, never seen to slip.
+  if (step.limit > 0.0 && step.held <= step.limit * (1.0 + breakaway_tolerance) &&
+      step.demanded <= step.limit * (1.0 + hold_band)) {
+    r.friction.held_force = step.held;
+    r.friction.held_limit = step.limit;
+    leave_band(r);
+    return;
+  }
+  const double past = step.held - step.limit;
+  const bool within_band = step.demanded <= step.limit * (1.0 + hold_band);
+  const bool watched = r.friction.band.steps > 0 ? past < dying_away * r.friction.band.excess
+                                                 : looks_like_leftover(r, step, past, solved);
+  if (within_band && watched) {
+    ++r.friction.band.steps;
+    r.friction.band.excess = past;
+    r.friction.band.impulse += past * step.h;
+    return;
+  }
+  // B goes the way it would have gone without the friction. Its sliding velocity alone will
+  // not do: a contact that held at the limit ends its step with round-off of either sign for
+  // a velocity, and slipping the wrong way, the next step saw a reversal and stuck again.
+  r.friction.state = ContactState::slipping;
+  r.friction.slip_direction = step.way;
+  r.breakaway.impulse = r.friction.slip_direction * breakaway_correction(r, pair, step);
+  leave_band(r);
+  // What the step held past the limit is handed back with the correction: the step's
+  // friction, as the arrows and plots show it, is the limit.
+  if (r.listener.siblings == 0 && step.held > step.limit) r.solver.friction_force *= step.limit / step.held;
+}
+
+// Whether the solver held a slipping contact (or group) in this step, friction having reached
+// `reached` times N.
+// Friction short of mu_k·N is the solver's evidence that it held the contact, which then
+// ends the step (all but) at rest. Still sliding faster than a step of kinetic friction
+// could stop it, mu_k·N·h/m, it was not held: its friction fell short because the normal
+// impulse grew after friction had been clamped against it (a rocking block, 4 solver
+// passes: 0.4 % short on a pair sliding at 2.3 m/s, taken for held, stuck, broken away the
+// next step with a correction for the time it "held", and so every other step: 4 m/s² more
+// than its forces give).
+bool held_by_the_solver(const ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved, double reached) {
+  const double mass = tangential_mass(r);
+  const bool at_rest = mass > 0.0 && std::abs(solved.group_sliding_end) <= pair.mu_k * solved.group_normal_impulse / mass;
+  // Friction falls short of mu_k·N while a contact slides too: the normal impulses move after
+  // friction was clamped against them, most in the first step after a breakaway, warm-started
+  // from the stuck step's. With mu_k above mu_s the body breaks away at mu_k·N and, just past
+  // it, slides off from rest slowly enough to look held: six feet, 1.71 kg, mu_s 0, mu_k 1.84,
+  // c 778 N·s/m, b 606 N·s²/m², 50 N/s, 480 Hz: friction short of it, the block speeding up
+  // from rest to 9.5 mm/s in the step, taken for held, broken away again the next step, and
+  // so for 8 steps, its breakaway read at 2 sub-steps of 240 Hz (the held steps' ends) 1.9 N
+  // late; a box, mu_s 0.67, mu_k 1.57, c 449, b 567, 200 N/s: 8 % short, 2.1 N late. A held
+  // body does not speed up: one that ends its step sliding faster its way than it began, by
+  // more than the speed below which a contact counts as not sliding
+  // (stick_slip_birth_sliding_speed), was not held.
+  const double start = sliding_at_start(r);
+  const bool sped_up = r.friction.slip_direction * (solved.group_sliding_end - start) > birth_sliding_speed;
+  return reached < pair.mu_k * (1.0 - stop_tolerance) && at_rest && !sped_up;
+}
+
+// A slipping contact (or group) after the solve: it slides on, or it stopped (held by the
+// solver, or its sliding reversed) and sticks, with Coulomb's law deciding a lone contact's stop.
+void after_slipping_step(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved, double reached) {
+  // With no friction at all nothing stops the sliding, so a reversal is the other body's doing
+  // (a driven plank's velocity changes between steps) and the contact slides on, the new way.
+  // Taken for a stop, its correction set the sliding to zero: a frictionless block on a shaken
+  // plank was dragged along at the plank's speed at every reversal.
+  if (breakaway_coefficient(pair) == 0.0) {
+    if (solved.group_sliding_end != 0.0) {
+      r.friction.slip_direction = static_cast<float>(sign(solved.group_sliding_end));
+    }
+    return;
+  }
+  const bool held = held_by_the_solver(r, pair, solved, reached);
+  const bool reversed = sign(solved.group_sliding_end) == -r.friction.slip_direction;
+  if (held || reversed) r.friction.state = ContactState::sticking;
+  // Stopped by the solver on a driven body, the drive may carry it on the other way at once,
+  // which the drive's change of velocity at the next step's start shows the stuck solve only
+  // then: held for that step at mu_s·N, it broke away with a correction for a span read from
+  // the last hold, however long ago (0.02 m/s off at such stops on the shaken plank). Coulomb's
+  // law decides it here, as at a reversal. Only where mu_s > mu_k: the stale span costs the
+  // correction's (mu_s - mu_k)·N·span, nothing where mu_k >= mu_s (the held step's limit is
+  // then mu_k·N already), and decided here those settings ended up to 0.038 m further off the
+  // exact slide than held for the step (wedge, mu_k 1.6 against mu_s 0.34 and 1.33).
+  const bool driven = is_driven(r.identity.body_a) || is_driven(r.identity.body_b);
+  const bool stop_on_drive = held && driven && r.drive.before_known && pair.mu_k < pair.mu_s;
+  if ((reversed || stop_on_drive) && r.listener.siblings == 0) restick_correction(r, pair, solved);
+}
+
 void after_solve(ContactRecord& r, const FrictionPair& pair, const SolvedContact& solved) {
   // A rigid body sticks or slips as a whole on all its contacts with the other body, so what
   // they reached together decides, once for the group (see FrictionListener::settle). For a
   // contact alone the group's figures are its own.
   const double reached = std::abs(solved.group_tangent_impulse) / solved.group_normal_impulse;
   if (r.friction.state == ContactState::sticking) {
-    const StuckStep step = stuck_step(r, pair, solved);
-    // Without friction to hold it (mu_s = mu_k = 0) a contact slips, as it always did. Within
-    // mu_s·N it stays stuck if the solver held it: if what holding takes, with what the contact
-    // still slides at the step's end, is within the band the solver may hold. Friction short of
-    // mu_s·N on a contact that slides on is the solver's clamp, not a hold: a top block on a
-    // light bottom one that breaks away from the floor, tilting it, was clamped 1.5 % short of
-    // it and slid back at up to 0.09 m/s while read as stuck, never seen to slip.
-    if (step.limit > 0.0 && step.held <= step.limit * (1.0 + breakaway_tolerance) &&
-        step.demanded <= step.limit * (1.0 + hold_band)) {
-      r.friction.held_force = step.held;
-      r.friction.held_limit = step.limit;
-      leave_band(r);
-      return;
-    }
-    const double past = step.held - step.limit;
-    const bool within_band = step.demanded <= step.limit * (1.0 + hold_band);
-    const bool watched = r.friction.band.steps > 0 ? past < dying_away * r.friction.band.excess
-                                                   : looks_like_leftover(r, step, past, solved);
-    if (within_band && watched) {
-      ++r.friction.band.steps;
-      r.friction.band.excess = past;
-      r.friction.band.impulse += past * step.h;
-      return;
-    }
-    // B goes the way it would have gone without the friction. Its sliding velocity alone will
-    // not do: a contact that held at the limit ends its step with round-off of either sign for
-    // a velocity, and slipping the wrong way, the next step saw a reversal and stuck again.
-    r.friction.state = ContactState::slipping;
-    r.friction.slip_direction = step.way;
-    r.breakaway.impulse = r.friction.slip_direction * breakaway_correction(r, pair, step);
-    leave_band(r);
-    // What the step held past the limit is handed back with the correction: the step's
-    // friction, as the arrows and plots show it, is the limit.
-    if (r.listener.siblings == 0 && step.held > step.limit) r.solver.friction_force *= step.limit / step.held;
+    after_stuck_step(r, pair, solved);
   } else {
-    // With no friction at all nothing stops the sliding, so a reversal is the other body's doing
-    // (a driven plank's velocity changes between steps) and the contact slides on, the new way.
-    // Taken for a stop, its correction set the sliding to zero: a frictionless block on a shaken
-    // plank was dragged along at the plank's speed at every reversal.
-    if (breakaway_coefficient(pair) == 0.0) {
-      if (solved.group_sliding_end != 0.0) {
-        r.friction.slip_direction = static_cast<float>(sign(solved.group_sliding_end));
-      }
-      return;
-    }
-    // Friction short of mu_k·N is the solver's evidence that it held the contact, which then
-    // ends the step (all but) at rest. Still sliding faster than a step of kinetic friction
-    // could stop it, mu_k·N·h/m, it was not held: its friction fell short because the normal
-    // impulse grew after friction had been clamped against it (a rocking block, 4 solver
-    // passes: 0.4 % short on a pair sliding at 2.3 m/s, taken for held, stuck, broken away the
-    // next step with a correction for the time it "held", and so every other step: 4 m/s² more
-    // than its forces give).
-    const double mass =
-        r.listener.siblings > 0
-            ? translational_mass(r.identity.body_a, r.identity.body_b)
-            : contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, r.tangent());
-    const bool at_rest = mass > 0.0 && std::abs(solved.group_sliding_end) <= pair.mu_k * solved.group_normal_impulse / mass;
-    // Friction falls short of mu_k·N while a contact slides too: the normal impulses move after
-    // friction was clamped against them, most in the first step after a breakaway, warm-started
-    // from the stuck step's. With mu_k above mu_s the body breaks away at mu_k·N and, just past
-    // it, slides off from rest slowly enough to look held: six feet, 1.71 kg, mu_s 0, mu_k 1.84,
-    // c 778 N·s/m, b 606 N·s²/m², 50 N/s, 480 Hz: friction short of it, the block speeding up
-    // from rest to 9.5 mm/s in the step, taken for held, broken away again the next step, and
-    // so for 8 steps, its breakaway read at 2 sub-steps of 240 Hz (the held steps' ends) 1.9 N
-    // late; a box, mu_s 0.67, mu_k 1.57, c 449, b 567, 200 N/s: 8 % short, 2.1 N late. A held
-    // body does not speed up: one that ends its step sliding faster its way than it began, by
-    // more than the speed below which a contact counts as not sliding
-    // (stick_slip_birth_sliding_speed), was not held.
-    double start = 0.0;
-    for (int i = 0; i < r.solver.point_count; ++i) start += b2Dot(r.solver.start_velocity[i], r.tangent());
-    if (r.solver.point_count > 0) start /= r.solver.point_count;
-    const bool sped_up = r.friction.slip_direction * (solved.group_sliding_end - start) > birth_sliding_speed;
-    const bool held = reached < pair.mu_k * (1.0 - stop_tolerance) && at_rest && !sped_up;
-    const bool reversed = sign(solved.group_sliding_end) == -r.friction.slip_direction;
-    if (held || reversed) r.friction.state = ContactState::sticking;
-    // Stopped by the solver on a driven body, the drive may carry it on the other way at once,
-    // which the drive's change of velocity at the next step's start shows the stuck solve only
-    // then: held for that step at mu_s·N, it broke away with a correction for a span read from
-    // the last hold, however long ago (0.02 m/s off at such stops on the shaken plank). Coulomb's
-    // law decides it here, as at a reversal. Only where mu_s > mu_k: the stale span costs the
-    // correction's (mu_s - mu_k)·N·span, nothing where mu_k >= mu_s (the held step's limit is
-    // then mu_k·N already), and decided here those settings ended up to 0.038 m further off the
-    // exact slide than held for the step (wedge, mu_k 1.6 against mu_s 0.34 and 1.33).
-    const bool driven = is_driven(r.identity.body_a) || is_driven(r.identity.body_b);
-    const bool stop_on_drive = held && driven && r.drive.before_known && pair.mu_k < pair.mu_s;
-    if ((reversed || stop_on_drive) && r.listener.siblings == 0) restick_correction(r, pair, solved);
+    after_slipping_step(r, pair, solved, reached);
   }
 }
 

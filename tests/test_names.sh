@@ -33,4 +33,17 @@ while IFS= read -r file; do
     failed=1
   fi
 done < <(find tests -mindepth 2 -name 'test_*.cpp' | sort)
+
+# The other way round: every unit of the code (a .cpp outside tests/ and fuzz/, and outside any
+# build folder) has a test file of its name or is named in the map, in backquotes, as `X` or
+# `FOLDER/X`, beside what tests it.
+while IFS= read -r code; do
+  code=${code#./}              # physics/validation.cpp
+  unit=$(basename "$code" .cpp)
+  [[ -n $(find tests -mindepth 2 -name "test_$unit.cpp" -print -quit) ]] && continue
+  grep -qF -e "\`$unit\`" -e "\`${code%.cpp}\`" "$map" && continue
+  echo "$code: no test file tests/FOLDER/test_$unit.cpp, and $map does not name it; write one, or say in $map what tests it (as \`$unit\`)" >&2
+  failed=1
+done < <(find . -type d \( -name .git -o -name tests -o -name fuzz -o -name CMakeFiles -o -name 'build*' \) -prune \
+              -o -name '*.cpp' -print | sort)
 exit $failed

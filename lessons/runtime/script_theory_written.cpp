@@ -431,6 +431,16 @@ int substeps_left_in_frame(double landing_time, double step, double substeps) {
   return std::max(static_cast<int>(std::lround((frame_end - met_end) / step)), 0);
 }
 
+// The frame's sub-steps, as the run takes them unless the script says otherwise: a whole number
+// from 1 to 1000.
+double substeps_field(lua_State* state, Fields& fields) {
+  const double substeps = fields.number_in("substeps", "", build_of(state).scene->settings().substeps, 1.0, 1000.0);
+  if (substeps != std::floor(substeps)) {
+    throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
+  }
+  return substeps;
+}
+
 // Box2D keeps positions and speeds in single precision: each step rounds the centre's height,
 // the angle (the corner moves r times its rounding) and the fall speed by up to 2^-24 of
 // themselves, so n steps to the landing can move the corner by about n·2^-24·(height + r·|angle| + g·t²/3)
@@ -458,6 +468,36 @@ struct FirstImpact {
   // How far the spin after moves if the world's single-precision corner is landing_rounding's
   // time ahead of or behind theory's (rad/s).
   double rounding_spread = 0.0;
+};
+
+// The box turning on the corner it hit, at (rx, ry) from its centre.
+struct CornerTurn {
+  // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
+  // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
+  // corner moves it; k_tn couples sliding to falling). 0 where the corner grips.
+  double swing = 0.0;
+  // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
+  // inertia about the corner: how fast the spin changes there, rad/s².
+  double pivot = 0.0;
+};
+
+CornerTurn corner_turn(double mass, double inertia, double mu_k, double g, double rx, double ry, bool grips) {
+  CornerTurn turn;
+  if (!grips) turn.swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
+  turn.pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
+  return turn;
+}
+
+// What a run shows of the thrown box's landing: its first impact (on a corner, carried through
+// the frame's remaining sub-steps) and how a stepped world may differ from it.
+struct ShownImpact {
+  FirstImpact first;
+  theory::CornerImpact impact;           // the speeds and spin after it, at the frame's end
+  double landing_rounding = 0.0;         // s, landing_rounding_time
+  double second_corner = 0.0;            // s, second_corner_after (infinity: none)
+  double far_above_reach = 0.0;          // m, the far end when the corner is met (infinity: none)
+  CornerTurn turn;                       // the box turning on the corner it hit
+  double spin_a_step_late = 0.0, spin_a_step_early = 0.0;  // rad/s, met a step after or before
 };
 
 // The thrown box as theory.thrown_box reads it, and the impacts of its corners on the floor in
@@ -511,6 +551,9 @@ struct ThrownBox {
   // Landing on its lowest corner, met `first_met` s after the landing; with what Box2D's solver
   // in `solver_turns` turns, and a landing `landing_rounding` s sooner or later, would change.
   FirstImpact on_its_corner(double first_met, double landing_rounding, int solver_turns) const;
+  // The first impact as a world stepped as the run steps meets it, whose solver takes
+  // `solver_turns` turns.
+  ShownImpact shown_impact(int solver_turns) const;
 };
 
 FirstImpact ThrownBox::on_its_face(const FarEnd& far, double first_met) const {
@@ -665,22 +708,51 @@ double second_corner_after(const theory::BoxLanding& landing, double width, doub
   return soonest;
 }
 
-// The box turning on the corner it hit, at (rx, ry) from its centre.
-struct CornerTurn {
-  // Box2D's solver takes friction and the normal impulse in turns (Gauss–Seidel). On a sliding
-  // corner each turn leaves mu_k·|k_tn|/k_nn of the last one's error (k: how an impulse at the
-  // corner moves it; k_tn couples sliding to falling). 0 where the corner grips.
-  double swing = 0.0;
-  // After the impact the box turns about that corner, gravity's moment m·g·r_x against the
-  // inertia about the corner: how fast the spin changes there, rad/s².
-  double pivot = 0.0;
-};
-
-CornerTurn corner_turn(double mass, double inertia, double mu_k, double g, double rx, double ry, bool grips) {
-  CornerTurn turn;
-  if (!grips) turn.swing = mu_k * std::abs(rx * ry / inertia) / (1.0 / mass + rx * rx / inertia);
-  turn.pivot = mass * g * std::abs(rx) / (inertia + mass * (rx * rx + ry * ry));
-  return turn;
+ShownImpact ThrownBox::shown_impact(int solver_turns) const {
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const FarEnd far = far_end_of(landing, width, height);
+  const double rise = far.rise;
+  // Before any impact, a stepped world finds contacts at a step's start, so it first
+  // meets the corner at the first step boundary after the landing, the corner sunk into the gap
+  // by its fall since, and it finds the far end in the same step if that end has fallen as far
+  // as its rise (then both ends take that step's impact together, and no single-corner impact
+  // describes it: a box landing 0.88° off flat at 4.1 m/s, 6 mm rise against a 10 mm fall,
+  // stopped turning in the world where one corner's impact with the step's drag leaves it at
+  // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
+  double reach_gap = rise;
+  // The world's flight starts with half a step's gravity, so its positions at step boundaries are
+  // the exact parabola's: it meets the corner this long after the exact landing (0 unstepped).
+  const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
+  const double landing_rounding = landing_rounding_time(landing, width, height, centre_height, spin, g, step);
+  if (step > 0.0) reach_gap = far_end_gap(landing, width, height, spin, g, first_met);
+  // A stepped world lands the box flat only where it meets the whole face in one step: a face
+  // under 1 mm off flat whose far end is still above reach then meets one corner first, and
+  // that corner's impact is what the first step shows (a 20 kg box at spin 19.5 rad/s, 0.15°
+  // off flat at 960 sub-steps a second: -9.78 rad/s, the face a sub-step later).
+  const bool lands_flat = landing.flat && (step <= 0.0 || reach_gap <= 0.0);
+  const FirstImpact first = lands_flat ? on_its_face(far, first_met) : on_its_corner(first_met, landing_rounding, solver_turns);
+  theory::CornerImpact impact = first.impact;
+  const std::string& corner = first.corner;
+  const double hit_x = first.hit_x, hit_y = first.hit_y;
+  const bool on_a_corner = corner != "lands flat";
+  if (on_a_corner && !lands_flat) impact = through_frame(impact, landing.corner_x, landing.corner_y, first_met);
+  const double second_corner =
+      on_a_corner && !lands_flat ? second_corner_after(landing, width, height, impact, g) : infinity;
+  // (How far above reach the far end is when the corner is met: computed above.)
+  const double far_above_reach = on_a_corner && !lands_flat ? reach_gap : infinity;
+  const CornerTurn turn = on_a_corner ? corner_turn(mass, inertia, mu_k, g, hit_x, hit_y - 0.5 * clearance, impact.grips)
+                                      : CornerTurn{};
+  // A world whose rounding puts the landing just past a step boundary meets the corner a step
+  // after theory's meeting, turned and falling further, and one that puts it just before a
+  // boundary, a step sooner: the spin those impacts leave (spin_after itself when step = 0 or it
+  // lands flat).
+  const auto met_at = [&](double late_by) {
+    return !on_a_corner || lands_flat ? impact.omega
+                                      : through_frame(impact_on(landing.corner_x, landing.corner_y, late_by),
+                                                      landing.corner_x, landing.corner_y, late_by).omega;
+  };
+  const double late = met_at(first_met + step), early = met_at(first_met - step);
+  return {first, impact, landing_rounding, second_corner, far_above_reach, turn, late, early};
 }
 
 // The rotation-locked twin, thrown level: it lands flat, with no lever arm, so only its sliding
@@ -698,6 +770,31 @@ LockedBox locked_box(const ThrownBox& box) {
   return {flat.time, lands.vx, box.speed * flat.time + slide.distance, flat.time + slide.time};
 }
 
+// The thrown box as a script gives it (theory.thrown_box's fields).
+ThrownBox thrown_box_from(lua_State* state, Fields& fields) {
+  const double width = fields.number("width", "m"), height = fields.number("height", "m");
+  const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
+  const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
+  const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
+  const double mu_s = fields.number("mu_s", "", mu_k);
+  const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
+  // Box2D's polygons touch when they are two skins apart: a script's, true_skin each.
+  const double clearance = fields.number("clearance", "m", 2.0 * true_skin);
+  const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
+  // The sub-steps in a frame (the world records the box at the frame's end), as the run takes
+  // them unless the script says otherwise.
+  const double substeps = substeps_field(state, fields);
+  // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
+  // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
+  // speed the box brings into the step it lands in, before that step's impact is solved
+  // (a contact born in a step has its drag at once). The same once here.
+  const FrictionPair drag = with_drag(fields, mu_k, mu_k);
+  const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
+  const double inertia = mass * (width * width + height * height) / 12.0;
+  return ThrownBox{width, height, mass, speed, spin, centre_height, mu_k, mu_s, restitution, g, clearance, step,
+                   drag, landing, inertia, substeps_left_in_frame(landing.time, step, substeps)};
+}
+
 }  // namespace
 
 // The thrown box and its rotation-locked twin: the landing of the lowest corner, the impact on
@@ -707,94 +804,26 @@ int thrown_box(lua_State* state) {
     Fields fields(state, 1, "theory.thrown_box", {"width", "height", "mass", "throw_speed", "spin", "angle",
                                                   "centre_height", "mu_k", "mu_s", "c", "b", "restitution", "g",
                                                   "clearance", "step", "substeps"});
-    const double width = fields.number("width", "m"), height = fields.number("height", "m");
-    const double mass = fields.number("mass", "kg"), speed = fields.number("throw_speed", "m/s");
-    const double spin = fields.number("spin", "rad/s", 0.0), angle = fields.number("angle", "°", 0.0) * degrees;
-    const double centre_height = fields.number("centre_height", "m"), mu_k = fields.number("mu_k", "");
-    const double mu_s = fields.number("mu_s", "", mu_k);
-    const double restitution = fields.number("restitution", "", 0.0), g = fields.number("g", "m/s²", standard_gravity);
-    // Box2D's polygons touch when they are two skins apart: a script's, true_skin each.
-    const double clearance = fields.number("clearance", "m", 2.0 * true_skin);
-    const double step = fields.number_in("step", "s", 0.0, 0.0, 1.0);
-    // The sub-steps in a frame (the world records the box at the frame's end), as the run takes
-    // them unless the script says otherwise.
-    const double substeps =
-        fields.number_in("substeps", "", build_of(state).scene->settings().substeps, 1.0, 1000.0);
-    if (substeps != std::floor(substeps)) {
-      throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
-    }
-    // Viscous and quadratic drag on the floor: no impulse of their own in an instant's impact,
-    // but a stepped world (step > 0) applies them once, for the whole step, on the sliding
-    // speed the box brings into the step it lands in, before that step's impact is solved
-    // (a contact born in a step has its drag at once). The same once here.
-    const FrictionPair drag = with_drag(fields, mu_k, mu_k);
-    constexpr double infinity = std::numeric_limits<double>::infinity();
-    const theory::BoxLanding landing = theory::box_landing(width, height, centre_height, angle, spin, g, clearance);
-    const double inertia = mass * (width * width + height * height) / 12.0;
-    const ThrownBox box{width, height, mass, speed, spin, centre_height, mu_k, mu_s, restitution, g, clearance, step,
-                        drag, landing, inertia, substeps_left_in_frame(landing.time, step, substeps)};
-    const FarEnd far = far_end_of(landing, width, height);
-    const double rise = far.rise;
-    // Before any impact, a stepped world finds contacts at a step's start, so it first
-    // meets the corner at the first step boundary after the landing, the corner sunk into the gap
-    // by its fall since, and it finds the far end in the same step if that end has fallen as far
-    // as its rise (then both ends take that step's impact together, and no single-corner impact
-    // describes it: a box landing 0.88° off flat at 4.1 m/s, 6 mm rise against a 10 mm fall,
-    // stopped turning in the world where one corner's impact with the step's drag leaves it at
-    // -3.6 rad/s). How far above reach the far end still is then, m (0 or less: met at once).
-    double reach_gap = rise;
-    // The world's flight starts with half a step's gravity, so its positions at step boundaries are
-    // the exact parabola's: it meets the corner this long after the exact landing (0 unstepped).
-    const double first_met = step > 0.0 ? std::ceil(landing.time / step) * step - landing.time : 0.0;
-    const double landing_rounding = landing_rounding_time(landing, width, height, centre_height, spin, g, step);
-    if (step > 0.0) reach_gap = far_end_gap(landing, width, height, spin, g, first_met);
-    // A stepped world lands the box flat only where it meets the whole face in one step: a face
-    // under 1 mm off flat whose far end is still above reach then meets one corner first, and
-    // that corner's impact is what the first step shows (a 20 kg box at spin 19.5 rad/s, 0.15°
-    // off flat at 960 sub-steps a second: -9.78 rad/s, the face a sub-step later).
-    const bool lands_flat = landing.flat && (step <= 0.0 || reach_gap <= 0.0);
-    const FirstImpact first =
-        lands_flat ? box.on_its_face(far, first_met)
-                   : box.on_its_corner(first_met, landing_rounding, build_of(state).scene->settings().velocity_iterations);
-    theory::CornerImpact impact = first.impact;
-    const std::string& corner = first.corner;
-    const double hit_x = first.hit_x, hit_y = first.hit_y;
-    const bool on_a_corner = corner != "lands flat";
-    if (on_a_corner && !lands_flat) impact = box.through_frame(impact, landing.corner_x, landing.corner_y, first_met);
-    const double second_corner =
-        on_a_corner && !lands_flat ? second_corner_after(landing, width, height, impact, g) : infinity;
-    // (How far above reach the far end is when the corner is met: computed above.)
-    const double far_above_reach = on_a_corner && !lands_flat ? reach_gap : infinity;
-    const CornerTurn turn = on_a_corner ? corner_turn(mass, inertia, mu_k, g, hit_x, hit_y - 0.5 * clearance, impact.grips)
-                                        : CornerTurn{};
-    // A world whose rounding puts the landing just past a step boundary meets the corner a step
-    // after theory's meeting, turned and falling further, and one that puts it just before a
-    // boundary, a step sooner: the spin those impacts leave (spin_after itself when step = 0 or it
-    // lands flat).
-    const auto met_at = [&](double late_by) {
-      return !on_a_corner || lands_flat ? impact.omega
-                                        : box.through_frame(box.impact_on(landing.corner_x, landing.corner_y, late_by),
-                                                        landing.corner_x, landing.corner_y, late_by).omega;
-    };
-    const double late = met_at(first_met + step), early = met_at(first_met - step);
+    const ThrownBox box = thrown_box_from(state, fields);
+    const ShownImpact shown = box.shown_impact(build_of(state).scene->settings().velocity_iterations);
     const LockedBox locked = locked_box(box);
     lua_createtable(state, 0, 19);
-    set_number(state, "landing_time", landing.time);
-    set_number(state, "landing_rounding", landing_rounding);
-    set_number(state, "landing_angle", landing.angle / degrees);
-    lua_pushstring(state, corner.c_str());
+    set_number(state, "landing_time", box.landing.time);
+    set_number(state, "landing_rounding", shown.landing_rounding);
+    set_number(state, "landing_angle", box.landing.angle / degrees);
+    lua_pushstring(state, shown.first.corner.c_str());
     lua_setfield(state, -2, "corner");
-    set_number(state, "spin_after", impact.omega);
-    set_number(state, "spin_after_a_step_late", late);
-    set_number(state, "spin_after_a_step_early", early);
-    set_number(state, "solver_shortfall", first.solver_shortfall);
-    set_number(state, "rounding_spread", first.rounding_spread);
-    set_number(state, "pivot_acceleration", turn.pivot);
-    set_number(state, "second_corner_after", second_corner);
-    set_number(state, "far_end_above_reach", far_above_reach);
-    set_number(state, "solver_swing", turn.swing);
-    set_number(state, "vx_after", impact.vx);
-    set_number(state, "vy_after", impact.vy);
+    set_number(state, "spin_after", shown.impact.omega);
+    set_number(state, "spin_after_a_step_late", shown.spin_a_step_late);
+    set_number(state, "spin_after_a_step_early", shown.spin_a_step_early);
+    set_number(state, "solver_shortfall", shown.first.solver_shortfall);
+    set_number(state, "rounding_spread", shown.first.rounding_spread);
+    set_number(state, "pivot_acceleration", shown.turn.pivot);
+    set_number(state, "second_corner_after", shown.second_corner);
+    set_number(state, "far_end_above_reach", shown.far_above_reach);
+    set_number(state, "solver_swing", shown.turn.swing);
+    set_number(state, "vx_after", shown.impact.vx);
+    set_number(state, "vy_after", shown.impact.vy);
     set_number(state, "locked_landing_time", locked.landing_time);
     set_number(state, "locked_speed_after_landing", locked.speed_after_landing);
     set_number(state, "locked_distance", locked.distance);
@@ -806,12 +835,7 @@ int thrown_box(lua_State* state) {
 int velocity_hack(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.velocity_hack", {"v0", "keep", "step", "angle", "g", "substeps"});
-    // The frame's sub-steps, as the run takes them unless the script says otherwise.
-    const double run_substeps = build_of(state).scene->settings().substeps;
-    const double substeps = fields.number_in("substeps", "", run_substeps, 1.0, 1000.0);
-    if (substeps != std::floor(substeps)) {
-      throw InvalidInput(fields.what() + ": substeps must be a whole number, got " + std::to_string(substeps));
-    }
+    const double substeps = substeps_field(state, fields);
     const theory::VelocityHack hack = theory::velocity_hack(
         fields.number("v0", "m/s"), fields.number("keep", ""), fields.number("step", "s"),
         fields.number_in("angle", "°", 0.0, 0.0, 90.0) * degrees, fields.number("g", "m/s²", standard_gravity),
