@@ -873,6 +873,18 @@ expect { "normal force halfway", unit = "N",
     return article_change + late_share(k) + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + rounding
            + 1.25 * raise + 0.01 * mass * g
   end }
+-- How much later than the model's breakaway at t the world's may come (the first slip row says
+-- why): three and a half steps, and the time the gap between the demand and the limit takes to
+-- close by μ times the late share of N, at the rate it closed in the model's last steps before.
+local function breakaway_lag(t)
+  if t == 0 then return 3.5 * step_length() end
+  local k = sample(t)
+  if k < 3 then return 3.5 * step_length() + h end
+  local limit = math.max(param.mu_s, param.mu_k)
+  local function gap(i) return limit * turning.normal[i] - math.abs(turning.friction[i]) end
+  local closing = math.abs(gap(k - 2) - gap(k - 1)) / spacing
+  return 3.5 * step_length() + (closing > 0 and limit * late_share(k) / closing or 0)
+end
 expect { "first slip", unit = "s",
   predicted = function()
     local t = (turning.contact[1] == "slipping" and 0) or first_event(turning, "breakaway")
@@ -896,13 +908,7 @@ expect { "first slip", unit = "s",
   -- closed in the model's last steps before the breakaway.
   tolerance = function()
     local t = (turning.contact[1] == "slipping" and 0) or first_event(turning, "breakaway")
-    if not t or t == 0 then return 3.5 * step_length() end
-    local k = sample(t)
-    if k < 3 then return 3.5 * step_length() + h end
-    local limit = math.max(param.mu_s, param.mu_k)
-    local function gap(i) return limit * turning.normal[i] - math.abs(turning.friction[i]) end
-    local closing = math.abs(gap(k - 2) - gap(k - 1)) / spacing
-    return 3.5 * step_length() + (closing > 0 and limit * late_share(k) / closing or 0)
+    return breakaway_lag(t or 0)
   end }
 -- The model lifts the block off when its N reaches 0, turning with the surface to the last. But
 -- the surface's angular acceleration θ'' needs I·θ'' of the contact's moment, and N·w/2 goes to
@@ -1029,6 +1035,23 @@ local function start_energy(t)
   end
   return started
 end
+-- Where the model's block broke away less than the world's lag before t (breakaway_lag), the
+-- world's may still be held there, and where it stopped less than a step before, the world's
+-- may still slide (a stop is found inside a step): the kinetic energy the model's block gained
+-- or lost since, which the world's then has not. (Read 2.5 steps after the model's breakaway
+-- at 120 Hz, a level plank shaken at 20.44 m/s²: the model's 0.235 J, the world's block still
+-- held, where the row allowed 0.16.)
+local function held_or_sliding_on(t)
+  local k, most = sample(t), 0
+  for _, event in ipairs(turning.events) do
+    local lag = (event.kind == "breakaway" and event.t > 0 and breakaway_lag(event.t))
+                or (event.kind == "stop" and step_length()) or nil
+    if lag and event.t <= t and event.t > t - lag then
+      most = math.max(most, math.abs(turning.kinetic[k] - turning.kinetic[sample(event.t)]))
+    end
+  end
+  return most
+end
 expect { "ΔK over the first swing", unit = "J",
   predicted = function()
     local k = sample(first_swing())
@@ -1041,9 +1064,10 @@ expect { "ΔK over the first swing", unit = "J",
     return speed and 0.5 * mass * speed * speed or nil
   end,
   -- 2 % and 1 mJ, and how much the kinetic energy changes in the step the speed is read over;
-  -- and what the world's start does to it (start_energy).
+  -- what the world's start does to it (start_energy); and a breakaway or stop of the model's
+  -- just before the reading (held_or_sliding_on).
   tolerance = function()
     local k = sample(first_swing())
     return 0.02 * turning.kinetic[k] + math.abs(turning.kinetic[k] - turning.kinetic[k - 1]) + 1e-3
-           + start_energy(first_swing())
+           + start_energy(first_swing()) + held_or_sliding_on(first_swing())
   end }
