@@ -559,7 +559,8 @@ end
 -- times that, and δs is at most the slide row's own bound there (start_drift's gap, 0.2 % of
 -- the path slid and 3 mm, the row's bound so far); the turn's share of N
 -- arrives a step late (late_share), moving the limit by μ times it; and the listener takes
--- friction within 1e-5 of μ·N for friction at the limit (its breakaway tolerance). The
+-- friction within 1e-5 of μ·N for friction at the limit (its breakaway tolerance); and the
+-- impulses round the demand and the limit (impulse_rounding, times 1 + μ). The
 -- listener's hold band is no part of it: the band keeps a stuck contact past μ·N only for an
 -- excess that looks like the solver's leftover (the block sliding into the step) or that halves
 -- each step, and a smooth, lasting excess on a stuck block breaks away at once; allowing the
@@ -605,7 +606,7 @@ local function demand_uncertainty(k, path, limit)
   local spin_up = theta0 * omega * omega * math.abs(sin(omega * time_k))
   local off = start_drift(time_k) + 0.002 * path + 3e-3
   return off * mass * (turn_rate * turn_rate + limit * spin_up) + limit * late_share(k)
-         + 1e-5 * limit * turning.normal[k]
+         + 1e-5 * limit * turning.normal[k] + (1 + limit) * impulse_rounding(k)
 end
 function grazes_by(t)
   local last = sample(t)  -- first: it may solve further
@@ -744,7 +745,7 @@ function breakaways_shifted(t)
         local turn_rate = theta0 * omega * math.cos(omega * time_j)
         local spin_up = theta0 * omega * omega * math.abs(sin(omega * time_j))
         local off = start_drift(time_j) * mass * (turn_rate * turn_rate + limit * spin_up)
-                    + limit * late_share(j) + 1e-5 * limit * turning.normal[j]
+                    + limit * late_share(j) + 1e-5 * limit * turning.normal[j] + (1 + limit) * impulse_rounding(j)
         local parting = math.max(limit - param.mu_k, 0) * turning.normal[j] / mass
         local stop = j + 1
         while stop < last and not stuck(stop) do stop = stop + 1 end
