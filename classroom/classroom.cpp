@@ -10,15 +10,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <utility>
 
 #include "classroom/force_gauge.h"
 #include "classroom/help_panel.h"
-#include "classroom/lesson_menu.h"
-#include "classroom/simulation_menu.h"
-#include "classroom/view_menu.h"
+#include "classroom/menu_bar.h"
+#include "classroom/world_tools.h"
 #include "draw/frame.h"
 #include "lessons/runtime/catalog.h"
 
@@ -27,10 +27,10 @@ namespace frictionlab::classroom {
 Classroom::Classroom(ClassroomOptions options)
     : window_(options.window),
       lock_{std::set<std::string>(options.lock.begin(), options.lock.end()), options.lock_from},
-      overrides_(options.overrides),
       script_words_{options.script_paths},
       browser_(options.browser) {
   exports_.folder = options.output_folder;
+  watch_.overrides = options.overrides;
   const classroom_state::FileStamp stamp = classroom_state::file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {
     std::optional<classroom_state::Mystery> mystery;
@@ -41,9 +41,9 @@ Classroom::Classroom(ClassroomOptions options)
   } catch (const lessons::ScriptError& error) {
     // A student's broken script: show why beside a working lesson, and open it once it builds,
     // with the --set values and the lock it was opened with.
-    failed_.path = options.lesson;
-    failed_.error = error.what();
-    failed_.stamp = stamp;
+    watch_.failed.path = options.lesson;
+    watch_.failed.error = error.what();
+    watch_.failed.stamp = stamp;
     playback_ = std::make_unique<classroom_state::Playback>(lessons::resolve_lesson(lessons::builtin_lessons().front()),
                                            std::map<std::string, std::string>{}, options.settings);
   }
@@ -64,7 +64,7 @@ Classroom::Classroom(ClassroomOptions options)
 void Classroom::forget_interaction() {
   parameters_.forget();
   hand_.forget();
-  failed_.path.clear();
+  watch_.failed.path.clear();
   tools_.stopwatch.reset();  // it timed a run of the lesson that closed
 }
 
@@ -110,11 +110,11 @@ void Classroom::frame(const draw::Fonts& fonts, ImVec2 display, double wall_seco
 }
 
 void Classroom::advance(double wall_seconds) {
-  shortcuts(keys_.route());
+  carry_out(shortcut_keys_.route(window_.theme));
   // One setting of the cheapest-setting search a frame: the window stays live while it measures.
   cheapest_.measure_next();
   playback_->advance(wall_seconds);
-  watch_files(wall_seconds);
+  watch_.look(*playback_, wall_seconds, [this](const std::string& path) { return open(path); });
   tools_.on = window_.tools;
   tools_.follow(playback_->lesson(), playback_->playing(), playback_->at_run_end());
 }
@@ -123,7 +123,8 @@ Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
   const float s = fonts_->scale;
   WindowStrips strips;
   ImGui::PushFont(fonts_->body);
-  menu_bar();
+  MenuBar{playback_, window_, lock_, browser_, script_words_, mystery_, predictions_, tools_, controls_}.draw(
+      [this](const WindowChoice& chosen) { carry_out(chosen); });
   const float menu_height = ImGui::GetFrameHeight();
   // The transport bar's words have their place from the lesson's opening (the run's end notice's).
   strips.transport_room = playback_->run_end_notice();
@@ -160,9 +161,7 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
   };
-  style.world_tools = [this](draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
-                             float newtons_to_pixels,
-                             draw::LabelPlacer& labels) { world_tools(pass, draw, camera, lane, newtons_to_pixels, labels); };
+  style.world_tools = WorldTools{*playback_, tools_, hand_, theme(window_.theme), *fonts_};
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title(playback_->gauge(), playback_->lesson().scene().frame_step());
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) {
@@ -171,7 +170,7 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
     style.show_extra_plot = hand_.held;
   }
   style.hidden = mystery_.hidden();
-  style.turn_plot_pages = std::exchange(turn_plot_pages_, 0);
+  style.turn_plot_pages = shortcut_keys_.take_plot_pages();
   style.more_tabs = [this] { draw_more_tabs(); };
   if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_.text = said;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
@@ -183,32 +182,10 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   return style;
 }
 
-void Classroom::menu_bar() {
-  if (!ImGui::BeginMainMenuBar()) return;
-  carry_out(lesson_menu(playback_->lesson().path(), lock_, browser_, script_words_.paths, controls_));
-  const SimulationChoice simulation = simulation_menu(playback_->lesson().settings(), lock_, controls_);
-  if (simulation.settings) change_settings(*simulation.settings);
-  if (simulation.reset) playback_->reset();
-  const MysteryMenuChoice mystery = mystery_.tab.draw_menu(playback_->lesson(), mystery_.mystery, lock_words(), controls_);
-  if (mystery.make) status_.text = make_mystery(*mystery.make);
-  if (mystery.reveal) reveal_mystery();
-  const ViewMenuChoice view = view_menu(window_, controls_, [this] {
-    if (std::optional<std::string> said = predictions_.menu_items(window_.predictions, *playback_, controls_)) {
-      status_.say_of_moment(*said, playback_->lesson().scene().frame(), theory_hidden());
-    }
-  });
-  if (view.theme) window_.theme = *view.theme;
-  if (view.projector) window_.projector = !window_.projector;
-  if (view.help) window_.help = !window_.help;
-  if (view.full_screen) full_screen_toggle_ = true;
-  tools_.draw_menu(window_.tools, playback_->lesson().scene().time(), playback_->playing(), controls_);
-  running_script_path(script_words(playback_->lesson().path()));
-  ImGui::EndMainMenuBar();
-}
-
-void Classroom::carry_out(const LessonMenuChoice& lesson) {
+void Classroom::carry_out(const WindowChoice& chosen) {
+  const LessonMenuChoice& lesson = chosen.lesson;
   if (lesson.open) status_.text = open(*lesson.open);
-  if (lesson.open_file) open_file_request_ = true;
+  if (lesson.open_file) host_.open_file = true;
   if (lesson.open_script) open_script_.ask();
   if (lesson.open_setup) setup_dialog_.ask(SetupDialog::Kind::open);
   if (lesson.save_setup && !browser_) setup_dialog_.ask(SetupDialog::Kind::save);
@@ -221,29 +198,33 @@ void Classroom::carry_out(const LessonMenuChoice& lesson) {
       status_.text = std::string("Could not save the setup: ") + error.what();
     }
   }
-  if (lesson.reload) playback_->reload();
+  // From here in the order the keys' shortcuts have always been carried out in, several keys
+  // of one frame at once (a menu chooses one item a frame).
   if (lesson.screenshot) {
     if (std::string why = exports_.request_screenshot(playback_->lesson()); !why.empty()) status_.text = why;
   }
   if (lesson.export_history) status_.text = exports_.save_history(*playback_, mystery_.hidden());
-  if (lesson.quit) quit_ = true;
-}
-
-void Classroom::world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
-                            float newtons_to_pixels, draw::LabelPlacer& labels) {
-  const lessons::Lesson& lesson = playback_->lesson();
-  const Scene& scene = lesson.scene();
-  const float s = fonts_->scale;
-  // The gauge in the lane its body is drawn in: the one whose strip holds the point held.
-  bool gauge_here = false;
-  if (const b2Body* held = scene.grabbed()) {
-    const ImVec2 at = camera.to_screen(held->GetWorldCenter());
-    gauge_here = (at.y >= camera.origin.y && at.y <= camera.origin.y + camera.size.y) || lane == hand_.drag_lane;
+  if (chosen.play_pause) playback_->toggle();
+  if (chosen.step) playback_->step_once();
+  if (chosen.step_back) playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
+  if (chosen.simulation.settings) change_settings(*chosen.simulation.settings);
+  if (chosen.simulation.reset) playback_->reset();
+  if (lesson.reload) playback_->reload();
+  if (chosen.view.full_screen) host_.full_screen_toggle = true;
+  if (chosen.view.help) window_.help = !window_.help;
+  if (chosen.view.projector) window_.projector = !window_.projector;
+  if (chosen.reveal) predictions_.reveal_key(playback_->lesson(), window_.predictions);
+  const double now = playback_->lesson().scene().time();
+  if (chosen.stopwatch_start_stop) {
+    window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
+    tools_.stopwatch.start_stop(now);
   }
-  if (gauge_here && pass == draw::WorldToolsPass::avoid) avoid_gauge(scene, camera, s, labels);
-  const draw::Theme& colours = theme(window_.theme);
-  tools_.in_world(pass, draw, lesson, camera, lane, newtons_to_pixels, colours, *fonts_, labels);
-  if (gauge_here && pass == draw::WorldToolsPass::draw) draw_gauge(draw, scene, camera, colours, *fonts_, labels);
+  if (chosen.stopwatch_lap) tools_.stopwatch.lap(now);
+  if (chosen.view.theme) window_.theme = *chosen.view.theme;
+  if (chosen.mystery.make) status_.text = make_mystery(*chosen.mystery.make);
+  if (chosen.mystery.reveal) reveal_mystery();
+  if (chosen.said) status_.say_of_moment(*chosen.said, playback_->lesson().scene().frame(), theory_hidden());
+  if (lesson.quit) host_.quit = true;
 }
 
 std::string Classroom::gauge_figures() const {
@@ -296,7 +277,7 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
   const draw::FrameLayout layout = draw::FrameLayout::of(strips.area, s, strips.origin, window_.projector, playback_->lesson());
   // Over the ground, under the bodies: a lesson's bodies mostly stand on it.
   messages_panel(ImVec2(layout.world_corner.x + 6.0f * s, layout.world_corner.y + layout.world_size.y - 6.0f * s),
-                 layout.world_size.x - 12.0f * s, *playback_, failed_, browser_, script_words_, theme(window_.theme), controls_);
+                 layout.world_size.x - 12.0f * s, *playback_, watch_.failed, browser_, script_words_, theme(window_.theme), controls_);
   transport_.draw(ImVec2(0.0f, display.y - strips.transport_height), ImVec2(display.x, strips.transport_height), *playback_,
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
   help_panel(window_.help, browser_, script_words_.paths, exports_.folder, help_room(layout, s));
@@ -332,36 +313,7 @@ void Classroom::apply_asked_values() {
   }
   parameters_.asked.clear();
   // The Space that ended the typing plays once the value it kept has been set (a rebuild first).
-  if (keys_.finish()) playback_->toggle();
-}
-
-void Classroom::shortcuts(const Shortcuts& keys) {
-  const auto hit = [&](Key key, bool ctrl) { return keys.hit(key, ctrl); };
-  if (hit(Key::s, true)) {
-    if (std::string why = exports_.request_screenshot(playback_->lesson()); !why.empty()) status_.text = why;
-  }
-  if (hit(Key::e, true)) status_.text = exports_.save_history(*playback_, mystery_.hidden());
-  if (hit(Key::space, false)) playback_->toggle();
-  if (hit(Key::period, false)) playback_->step_once();
-  if (hit(Key::comma, false)) {
-    playback_->scrub_to(playback_->lesson().scene().time() - playback_->lesson().scene().frame_step());
-  }
-  if (hit(Key::r, false)) playback_->reset();
-  if (hit(Key::f5, false)) playback_->reload();
-  if (hit(Key::f11, false)) full_screen_toggle_ = true;
-  if (hit(Key::f1, false)) window_.help = !window_.help;
-  if (hit(Key::p, false)) window_.projector = !window_.projector;
-  if (hit(Key::t, false)) predictions_.reveal_key(playback_->lesson(), window_.predictions);
-  const double now = playback_->lesson().scene().time();
-  if (hit(Key::w, false)) {
-    window_.tools.stopwatch = true;  // a stopwatch started unseen would be no use
-    tools_.stopwatch.start_stop(now);
-  }
-  if (hit(Key::l, false)) tools_.stopwatch.lap(now);
-  // The plots' page buttons are drawn as ← and →: the keys turn the pages too.
-  if (hit(Key::left, false)) --turn_plot_pages_;
-  if (hit(Key::right, false)) ++turn_plot_pages_;
-  if (hit(Key::d, false)) window_.theme = window_.theme == draw::ThemeName::dark ? draw::ThemeName::light : draw::ThemeName::dark;
+  if (shortcut_keys_.finish()) playback_->toggle();
 }
 
 void Classroom::run_to(double t) {
@@ -406,9 +358,7 @@ std::string Classroom::open(const std::string& name_or_path) {
     const std::string named = name_or_path.rfind("~/", 0) == 0 && home != nullptr ? home + name_or_path.substr(1) : name_or_path;
     const std::string path = lessons::resolve_lesson(named);
     // The command line's --set values belong to the script it named.
-    const bool named_script = path == failed_.path;
-    auto next = std::make_unique<classroom_state::Playback>(path, named_script ? overrides_ : std::map<std::string, std::string>{},
-                                           playback_->lesson().settings());
+    auto next = std::make_unique<classroom_state::Playback>(path, watch_.overrides_for(path), playback_->lesson().settings());
     lock_.check(next->lesson());
     next->set_speed(playback_->speed());
     // Paused at t = 0, as a lesson opens.
@@ -454,18 +404,8 @@ std::string Classroom::save_setup(const std::string& path) {
   return why;
 }
 
-bool Classroom::waited(double seconds) { return watch_files(seconds); }
-
-bool Classroom::watch_files(double wall_seconds) {
-  const bool reloaded = playback_->watch_file(wall_seconds);
-  if (!failed_.changed(wall_seconds)) return reloaded;
-  // The script named on the command line, saved again: opened if it builds now.
-  const FailedScript failed = failed_;
-  if (std::string error = open(failed.path); !error.empty()) {
-    failed_ = failed;
-    failed_.error = error;
-  }
-  return true;
+bool Classroom::waited(double seconds) {
+  return watch_.look(*playback_, seconds, [this](const std::string& path) { return open(path); });
 }
 
 std::string Classroom::window_title() const {

@@ -11,20 +11,19 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "classroom/cheapest_setting_tab.h"
 #include "classroom/classroom_options.h"
 #include "classroom/control_places.h"
 #include "classroom/exports.h"
+#include "classroom/host_requests.h"
 #include "classroom/keys.h"
-#include "classroom/lesson_menu.h"
+#include "classroom/lesson_file_watch.h"
 #include "classroom/lesson_lock.h"
 #include "classroom/measuring_tools.h"
 #include "classroom/mystery_panel.h"
@@ -34,9 +33,11 @@
 #include "classroom/script_messages.h"
 #include "classroom/settings.h"
 #include "classroom/setup_dialog.h"
+#include "classroom/shortcut_keys.h"
 #include "classroom/stability_map_tab.h"
 #include "classroom/status_line.h"
 #include "classroom/transport_bar.h"
+#include "classroom/window_choice.h"
 #include "classroom/world_hand.h"
 #include "classroom_state/mystery.h"
 #include "classroom_state/playback.h"
@@ -73,15 +74,15 @@ class Classroom {
   // A key pressed, as the window layer reports it (each press once): a tap pressed and let go
   // between two frames (a slow machine, a quick finger) never shows in ImGui 1.86's per-frame
   // key state, so shortcuts come from here only.
-  void key_pressed(Key key, bool ctrl) { keys_.pressed(key, ctrl); }
+  void key_pressed(Key key, bool ctrl) { shortcut_keys_.pressed(key, ctrl); }
 
   // Requests the host carries out after the frame is drawn, each taken once.
   std::optional<std::string> take_screenshot_request() { return exports_.take_screenshot_request(); }  // the path to save the window to
   void screenshot_done(const std::string& path, const std::string& error);
-  bool take_full_screen_toggle() { return std::exchange(full_screen_toggle_, false); }
+  bool take_full_screen_toggle() { return host_.take_full_screen_toggle(); }
   // The page's file chooser, asked for from the Lesson menu (ClassroomOptions::browser).
-  bool take_open_file_request() { return std::exchange(open_file_request_, false); }
-  bool quit_requested() const { return quit_; }
+  bool take_open_file_request() { return host_.take_open_file(); }
+  bool quit_requested() const { return host_.quit; }
   // Nothing moves until the user does something: paused, no search measuring between frames,
   // no hand held. The window then waits for input (a few times a second for the file watcher)
   // instead of drawing the same frame sixty times a second.
@@ -104,7 +105,7 @@ class Classroom {
   // The measuring tools (Tools menu): which are on, and the stopwatch.
   const MeasuringTools& tools() const { return tools_; }
   // A script named on the command line that does not build yet: its path ("" when none) and why.
-  const FailedScript& failed_script() const { return failed_; }
+  const FailedScript& failed_script() const { return watch_.failed; }
   // The running lesson's script failed while it ran, not when it loaded: an expect row's
   // function (the theory table is then empty), an every-step function (the run stopped) or a
   // plot's theory curve (drawn only once the theory shows).
@@ -193,34 +194,22 @@ class Classroom {
   void draw_around_frame(ImVec2 display, const WindowStrips& strips);
   // The values the panels asked for while drawn, set now that nothing reads the lesson.
   void apply_asked_values();
-  // The frame's shortcuts (the keys routing left for the window), each given to what it drives.
-  void shortcuts(const Shortcuts& keys);
-  // The menu bar: the Lesson, Simulation, Mystery, View and Tools menus, each drawn by its own
-  // part, with what they chose carried out, and the running script's path at its right.
-  void menu_bar();
-  // What the Lesson menu chose: a lesson or setup opened, a dialog asked for, a file saved.
-  void carry_out(const LessonMenuChoice& lesson);
-  // The force gauge and the measuring tools in a lane of the world (FrameStyle::world_tools).
-  void world_tools(draw::WorldToolsPass pass, ImDrawList* draw, const draw::Camera& camera, std::size_t lane,
-                   float newtons_to_pixels, draw::LabelPlacer& labels);
+  // What the menu bar's menus or the keys' shortcuts chose, each given to what it drives: a
+  // lesson or setup opened, a dialog asked for, a file saved, the run moved, the view changed.
+  void carry_out(const WindowChoice& chosen);
   // Forgets what the hands and boxes were doing in the lesson that is being replaced.
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
   ParametersOnShow parameters_on_show() const;
-  void remember(const std::string& name) { remember_item(controls_, name); }  // the last item's place, under `name`
   void change_settings(const StepSettings& settings);
-  // The script files' watchers (the running lesson's, a failed one's), given the wall time since
-  // they last looked; true when what they found changes what the window shows.
-  bool watch_files(double wall_seconds);
 
   std::unique_ptr<classroom_state::Playback> playback_;
   WindowSettings window_;
   MeasuringTools tools_;
   LessonLock lock_;
-  std::map<std::string, std::string> overrides_;  // --set, for the script the command line named
   ScriptWords script_words_;
   bool browser_ = false;
-  bool open_file_request_ = false;
+  HostRequests host_;
   // The readings with their error in script_words, for the theory panel (script_paths off).
   lessons::LessonReadings shown_readings_;
 
@@ -234,7 +223,7 @@ class Classroom {
 
   // Interaction state only: what is being dragged, typed or asked for.
   ControlPlaces controls_;
-  KeyRouting keys_;
+  ShortcutKeys shortcut_keys_;
   PredictionPanel predictions_;
   ParametersPanel parameters_;
   TransportBar transport_;
@@ -245,11 +234,8 @@ class Classroom {
   MysteryPanel mystery_;
   SetupDialog setup_dialog_;
   OpenScriptDialog open_script_;
-  bool full_screen_toggle_ = false;
-  bool quit_ = false;
   StatusLine status_;
-  FailedScript failed_;
-  int turn_plot_pages_ = 0;  // the ← and → keys pressed since the last frame, for the plots' pages
+  LessonFileWatch watch_;  // the running lesson's script and the command line's that failed
 };
 
 }  // namespace frictionlab::classroom

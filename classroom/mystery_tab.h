@@ -4,8 +4,8 @@
 //
 // It keeps its own state (the answers as typed, why one was refused, the seed) and draws
 // itself, as each of Dear ImGui's demo windows does: the mystery panel (classroom/mystery_panel.h)
-// holds one beside the mystery; the classroom calls draw_menu() in its menu bar, and carries out
-// what it chose, and draw_tab() inside the books' tab bar.
+// holds one beside the mystery; the menu bar (classroom/menu_bar.h) calls draw_menu(), the
+// classroom carries out what it chose, and calls draw_tab() inside the books' tab bar.
 #pragma once
 
 #include <optional>
