@@ -15,6 +15,9 @@
 namespace frictionlab::classroom {
 namespace {
 
+// What an answer's line says for a value out of range.
+constexpr const char* answer_refused = "type a number from 0 to 2, as 0.45";
+
 // The pair's two coefficients, as the pair table names them (physics/materials.h).
 const PairCoefficient* const coefficients[2] = {&static_coefficient, &kinetic_coefficient};
 
@@ -120,6 +123,7 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
   std::optional<double>* answers[2] = {&mystery.answer_mu_s, &mystery.answer_mu_k};
   const ImGuiStyle& style = ImGui::GetStyle();
   const float box = ImGui::CalcTextSize("0.0000").x + 2.0f * style.FramePadding.x;
+  float answer_box_end = 0.0f;  // the μk box's right edge: what the reveal's place is measured from
   for (int k = 0; k < 2; ++k) {
     ImGui::PushID(k);
     ImGui::AlignTextToFramePadding();
@@ -130,13 +134,14 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
                                           ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_EnterReturnsTrue);
     takes_a_number();
     remember_item(controls, std::string("mystery answer ") + coefficients[k]->name);
+    answer_box_end = ImGui::GetItemRectMax().x;
     if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
       std::string why;
       const std::string typed = answer_text[k];
       const std::optional<double> value = typed.empty() ? std::nullopt : validation::parse_decimal(typed, why);
       answer_error[k].clear();
       if (!typed.empty() && !(value && *value >= 0.0 && *value <= 2.0)) {
-        answer_error[k] = "type a number from 0 to 2, as 0.45";
+        answer_error[k] = answer_refused;
         answers[k]->reset();
       } else {
         *answers[k] = value;
@@ -162,10 +167,16 @@ void MysteryTab::draw_tab(classroom_state::Mystery& mystery, bool predicting, co
     ImGui::PopID();
   }
   if (!mystery.revealed()) {
-    // At the end of the μk line when it has room.
+    // At the end of the μk line when it has room, past the widest word that line can show, so
+    // that it keeps its place while answers are typed: placed after the word shown, it moved
+    // right as "not yet" became "kept for the reveal", and a teacher's click landed on the text.
     const char* reveal = "Reveal";
     const float button = ImGui::CalcTextSize(reveal).x + 2.0f * style.FramePadding.x;
-    const float after = ImGui::GetItemRectMax().x + 2.0f * style.ItemSpacing.x;
+    float widest = 0.0f;
+    for (const char* word : {"not yet", "kept for the reveal", answer_refused}) {
+      widest = std::max(widest, ImGui::CalcTextSize(word).x);
+    }
+    const float after = answer_box_end + style.ItemSpacing.x + widest + 2.0f * style.ItemSpacing.x;
     if (after + button <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
       ImGui::SameLine(after - ImGui::GetWindowPos().x);
     }

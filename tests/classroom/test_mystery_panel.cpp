@@ -313,6 +313,42 @@ TEST(MysteryWindow, TheAnswersAndTheRevealAreInSightInProjectorMode) {
   EXPECT_NEAR(hands.lesson().scene().time(), 3.0, 1e-9) << "and nothing under it (the time bar) instead";
 }
 
+// The reveal keeps its place while the class's answers are typed, a wrong one refused, and
+// corrected: it stood after the μk line's word, and moved right as "not yet" became "kept for
+// the reveal", so a teacher's click aimed at it landed on the text (the projector trial).
+TEST(MysteryWindow, TheRevealKeepsItsPlaceWhileAnswersAreTyped) {
+  for (const bool projector : {false, true}) {
+    ClassroomOptions options = mystery_options("push", classroom_state::mystery_pairs(lessons::Lesson(lessons::resolve_lesson("push"))).at(0), window_seed);
+    options.window.projector = projector;
+    ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+    hands.texts();
+    hands.click_text("Mystery###mystery");
+    const std::optional<ImRect> first = hands.classroom().control("mystery reveal");
+    ASSERT_TRUE(first.has_value()) << "projector " << projector;
+    const auto same_place = [&](const char* after) {
+      hands.texts();
+      const std::optional<ImRect> now = hands.classroom().control("mystery reveal");
+      ASSERT_TRUE(now.has_value()) << after;
+      EXPECT_EQ(now->Min.x, first->Min.x) << after << ", projector " << projector;
+      EXPECT_EQ(now->Min.y, first->Min.y) << after << ", projector " << projector;
+    };
+    hands.click("mystery answer mu_k");
+    hands.type("7");
+    hands.press_enter();
+    same_place("a μk of 7 refused");
+    hands.click("mystery answer mu_k");
+    hands.press(ImGuiKey_Backspace);  // the 7
+    hands.type("0.3");
+    hands.press_enter();
+    ASSERT_EQ(hands.classroom().mystery()->answer_mu_k, 0.3);
+    same_place("μk answered");
+    hands.click("mystery answer mu_s");
+    hands.type("0.5");
+    hands.press_enter();
+    same_place("both answered");
+  }
+}
+
 // The Stability map tab gives way to the Mystery tab while the mystery's μs is hidden (the map's
 // boundary would give it away) and comes back at the reveal, with the map for the μs the class
 // has just been told (issue 31: it stayed away), beside the others, which do not move. In
