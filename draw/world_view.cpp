@@ -646,10 +646,37 @@ ForcesInView forces_in_view(const Scene& scene, const Camera& camera, const Font
   return shown;
 }
 
+// Whether a moving body is thinner, on the screen, than a contact's dot is wide (its shapes'
+// least extent along its own axes under the dot's diameter at text scale `scale`): incline's
+// block on a projector, 23 by 12 px, lay whole under its 24 px dot, the arrows that start on it
+// and the plates they lie on, and the class saw no block (issue 31). Such a body is drawn again
+// over its marks and arrows (draw_world), and no label lies on it.
+bool thinner_than_its_dot(const b2Body* body, const Camera& camera, float scale) {
+  if (body->GetType() != b2_dynamicBody) return false;
+  b2Vec2 low(std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
+  b2Vec2 high = -low;
+  const auto reach = [&](b2Vec2 point, float radius) {
+    low = b2Min(low, point - b2Vec2(radius, radius));
+    high = b2Max(high, point + b2Vec2(radius, radius));
+  };
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() == b2Shape::e_circle) {
+      const auto* circle = static_cast<const b2CircleShape*>(fixture->GetShape());
+      reach(circle->m_p, circle->m_radius);
+    } else if (fixture->GetType() == b2Shape::e_polygon) {
+      const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      for (int k = 0; k < polygon->m_count; ++k) reach(polygon->m_vertices[k], 0.0f);
+    }
+  }
+  if (!(high.x >= low.x)) return false;  // no shape that has a size
+  const float least = std::min(high.x - low.x, high.y - low.y) * camera.pixels_per_metre;
+  return least < 2.0f * contact_dot_radius * scale;
+}
+
 // Every arrow, arc, mark and moving body is known to the placer before any label is placed, so
 // no label lands on one.
 void tell_the_placer(LabelPlacer& labels, const ForcesInView& shown, const Scene& scene, const Camera& camera,
-                     float thickness, float mark_radius) {
+                     float thickness, float mark_radius, float fonts_scale) {
   for (const ScreenArrow& arrow : shown.arrows) labels.arrow(DrawnSegment{arrow.tail, arrow.tip, 2.0f * thickness});
   for (const TorqueArc& arc : shown.torques) avoid_arc(labels, arc, 2.0f * thickness);
   for (const ContactMark& mark : shown.marks) {
@@ -660,7 +687,47 @@ void tell_the_placer(LabelPlacer& labels, const ForcesInView& shown, const Scene
     if (body->GetType() != b2_dynamicBody) continue;
     const b2AABB box = lessons::body_box(body);
     const ImVec2 a = camera.to_screen(box.lowerBound), b = camera.to_screen(box.upperBound);
-    labels.body(ImVec4(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)), body);
+    const ImVec4 on_screen(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y));
+    labels.body(on_screen, body);
+    // Drawn over every label too (draw_world): none may lie on it, not even its own value. Its
+    // edges are kept off, not its box: a tilted block's box reaches over the slope beside it,
+    // where its contact's word goes (ContactWords); a label too small to hold the body whole
+    // that lies on it crosses an edge.
+    if (thinner_than_its_dot(body, camera, fonts_scale)) {
+      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+        if (fixture->GetType() == b2Shape::e_circle) {
+          // A wheel's box is its own size, whatever it turns.
+          const auto& circle = *static_cast<const b2CircleShape*>(fixture->GetShape());
+          const ImVec2 centre = camera.to_screen(body->GetWorldPoint(circle.m_p));
+          const float r = circle.m_radius * camera.pixels_per_metre;
+          labels.avoid(ImVec4(centre.x - r, centre.y - r, centre.x + r, centre.y + r));
+        }
+        if (fixture->GetType() != b2Shape::e_polygon) continue;
+        const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
+        for (int k = 0; k < shape.m_count; ++k) {
+          labels.avoid(DrawnSegment{camera.to_screen(body->GetWorldPoint(shape.m_vertices[k])),
+                                    camera.to_screen(body->GetWorldPoint(shape.m_vertices[(k + 1) % shape.m_count])),
+                                    0.75f * fonts_scale});
+        }
+      }
+    }
+  }
+}
+
+// A body thinner than its dot, over its marks and arrows, which start where the class sees it
+// (thinner_than_its_dot); the labels its first drawing asked for are placed already. Its
+// contacts' dots first, over the arrows (the weight's shaft through the dot, the friction's
+// plate by it hid all but a sliver of incline's), so the half of each dot under the surface
+// still says the contact's state.
+void draw_thin_bodies_over_their_forces(ImDrawList* draw, const Scene& scene, const std::vector<ContactMark>& marks,
+                                        const Camera& camera, const Theme& theme, const Fonts& fonts, LabelPlacer& labels) {
+  const auto thin = [&](const b2Body* body) { return thinner_than_its_dot(body, camera, fonts.scale); };
+  for (const ContactMark& mark : marks) {
+    if (thin(mark.body_a) || thin(mark.body_b)) draw_contact_mark(draw, mark, camera, theme, fonts, labels, false);
+  }
+  std::vector<PlaceLabel> placed_already;
+  for (const auto& [name, body] : scene.bodies()) {
+    if (thin(body)) draw_body(draw, scene, body, camera, theme, fonts, placed_already);
   }
 }
 
@@ -684,7 +751,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     return arrow.force.kind != ForceKind::friction && arrow.force.kind != ForceKind::normal;
   });
   mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
-  tell_the_placer(labels, shown, scene, camera, thickness, mark_radius);
+  tell_the_placer(labels, shown, scene, camera, thickness, mark_radius, fonts.scale);
   // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
   // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
   if (fixed_labels) fixed_labels();
@@ -710,6 +777,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   const std::vector<std::string> texts = force_value_texts(arrows);
   labels = place_force_values(arrows, texts, fonts, thickness, labels, draw, theme);
+  draw_thin_bodies_over_their_forces(draw, scene, shown.marks, camera, theme, fonts, labels);
 }
 
 }  // namespace frictionlab::draw

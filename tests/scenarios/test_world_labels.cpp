@@ -1020,6 +1020,78 @@ TEST(ForceArrows, AWeightStartsWithinItsBody) {
   EXPECT_GE(checked, 50);
 }
 
+// Issue 31: incline's block on a projector at its defaults (0.4 by 0.2 m, 23 by 12 px in the
+// window's world) lay whole under its contact's 24 px dot, the normal force and weight that start
+// on it and the friction's plate: the class saw arrows and no block (2 % of its inside in its
+// material's colour at 1 s, light). A body thinner than its dot is drawn over them. Read from the
+// window's pixels in projector mode at 1920 × 1080, both themes, as it sits and as it slides: the
+// block's inside, a margin of its outline's width and a pixel of smoothing in from its edges,
+// shows its material's fill at 90 % of the points sampled or more (the rest: its corners' smoothing).
+// Its contact's dot is drawn again over the arrows, before the block, so its half in the slope
+// says the contact's state (the dark theme's was hidden whole under the arrows' outlines).
+TEST(WorldView, InclinesSmallBlockIsSeenOverItsDotAndArrowsOnAProjector) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    for (const char* angle : {"25", "35"}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+      options.window.theme = name;
+      options.overrides["angle"] = angle;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, 1.0);
+      gl.make_current();
+      gl.bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      const draw::Image picture = gl.read_pixels();
+      const std::string where = std::string("incline at ") + angle + "°, " + (name == draw::ThemeName::dark ? "dark" : "light");
+      ASSERT_EQ(record.lanes.size(), 1u) << where;
+      const draw::Camera& camera = record.lanes.front().camera;
+      const lessons::Lesson& lesson = window.playback().lesson();
+      const b2Body* block = lesson.scene().body("block");
+      ASSERT_NE(block, nullptr);
+      const b2Fixture* fixture = block->GetFixtureList();
+      ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon) << where;
+      const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
+      b2Vec2 low = shape.m_vertices[0], high = low;
+      for (int k = 1; k < shape.m_count; ++k) low = b2Min(low, shape.m_vertices[k]), high = b2Max(high, shape.m_vertices[k]);
+      // The outline (1.5 px times the text scale) and a pixel of smoothing, in metres.
+      const float margin = (1.5f * host.fonts().scale + 1.0f) / camera.pixels_per_metre;
+      const ImU32 fill = draw::fixture_colour(lesson.scene(), fixture, draw::theme(name));
+      const int fill_rgb[3] = {static_cast<int>(fill >> IM_COL32_R_SHIFT & 0xFF), static_cast<int>(fill >> IM_COL32_G_SHIFT & 0xFF),
+                               static_cast<int>(fill >> IM_COL32_B_SHIFT & 0xFF)};
+      int sampled = 0, seen = 0;
+      constexpr int steps = 20;
+      for (int i = 0; i <= steps; ++i) {
+        for (int j = 0; j <= steps; ++j) {
+          const b2Vec2 local(low.x + margin + (high.x - low.x - 2.0f * margin) * static_cast<float>(i) / steps,
+                             low.y + margin + (high.y - low.y - 2.0f * margin) * static_cast<float>(j) / steps);
+          const ImVec2 at = camera.to_screen(block->GetWorldPoint(local));
+          const std::uint8_t* pixel = picture.pixel(static_cast<int>(at.x), static_cast<int>(at.y));
+          ++sampled;
+          seen += std::max({std::abs(pixel[0] - fill_rgb[0]), std::abs(pixel[1] - fill_rgb[1]), std::abs(pixel[2] - fill_rgb[2])}) <= 8;
+        }
+      }
+      EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the block show its fill";
+      // And its contact's dot, over the weight's shaft and the friction's plate that hid it in the
+      // dark theme: the half under the surface shows its state's colour half a radius into the slope.
+      const std::vector<ContactMark> marks = contact_marks(lesson.scene());
+      ASSERT_EQ(marks.size(), 1u) << where;
+      const b2Vec2 into = -upper_side(marks[0]) * b2Cross(1.0f, marks[0].tangent);
+      const float half_radius = 0.5f * draw::contact_dot_radius * host.fonts().scale;
+      const ImVec2 dot = add(camera.to_screen(marks[0].point), ImVec2(into.x * half_radius, -into.y * half_radius));
+      const draw::Theme& colours = draw::theme(name);
+      const ImU32 state = marks[0].state == ContactState::slipping ? colours.slipping : colours.sticking;
+      const std::uint8_t* pixel = picture.pixel(static_cast<int>(std::lround(dot.x)), static_cast<int>(std::lround(dot.y)));
+      EXPECT_LE(std::max({std::abs(pixel[0] - static_cast<int>(state >> IM_COL32_R_SHIFT & 0xFF)),
+                          std::abs(pixel[1] - static_cast<int>(state >> IM_COL32_G_SHIFT & 0xFF)),
+                          std::abs(pixel[2] - static_cast<int>(state >> IM_COL32_B_SHIFT & 0xFF))}), 8)
+          << where << ": the contact's dot does not show at (" << dot.x << ", " << dot.y << ")";
+    }
+  }
+}
+
 // The view does not zoom during a run (a teacher's projector trial, issue 31): incline's window
 // grew from its block's foot of the moment to hold the normal force above it, and its 2 m scale
 // bar was 93 px at 0.6 s and 133 px at 1.5 s as the block slid down. Every built-in lesson at
