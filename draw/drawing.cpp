@@ -501,16 +501,19 @@ void draw_torque_arrow(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, flo
                           colour);
 }
 
-void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
-                 LabelPlacer& labels) {
-  draw_torque_arrow(draw, arc, colour, thickness);
-  const std::string text = format_quantity(std::abs(arc.torque), "N·m");
-  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
+PlacedTorque place_torque_value(const TorqueArc& arc, ImFont* font, float thickness, LabelPlacer& labels) {
+  PlacedTorque placed{format_quantity(std::abs(arc.torque), "N·m"), std::nullopt};
+  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, placed.text.c_str());
   const ImVec2 outward = mul(sub(arc.points.front(), arc.centre), 1.0f / arc.radius);
   const ImVec2 wanted = add(arc.points.front(), mul(outward, 0.5f * size.x + 2.0f * thickness));
-  if (const std::optional<ImVec2> at = labels.place_beside(wanted, size, text)) {
-    draw_label(draw, font, *at, colour, background, text.c_str());
-  }
+  placed.at = labels.place_beside(wanted, size, placed.text);
+  return placed;
+}
+
+void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
+                 const PlacedTorque& placed) {
+  draw_torque_arrow(draw, arc, colour, thickness);
+  if (placed.at) draw_label(draw, font, *placed.at, colour, background, placed.text.c_str());
 }
 
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera,

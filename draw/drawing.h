@@ -201,8 +201,15 @@ TorqueArc torque_arc(ImVec2 centre, float radius, double torque);
 void avoid_arc(LabelPlacer& labels, const TorqueArc& arc, float width);
 // The arc and its head, no value: the world's torques and the legend's key to them.
 void draw_torque_arrow(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, float thickness);
+// A torque's value beside its arc's start, placed (nowhere where nothing is free), to be drawn.
+struct PlacedTorque {
+  std::string text;
+  std::optional<ImVec2> at;
+};
+PlacedTorque place_torque_value(const TorqueArc& arc, ImFont* font, float thickness, LabelPlacer& labels);
+// The arc, its head and its value where place_torque_value put it.
 void draw_torque(ImDrawList* draw, const TorqueArc& arc, ImU32 colour, ImFont* font, ImU32 background, float thickness,
-                 LabelPlacer& labels);
+                 const PlacedTorque& placed);
 
 // A label with a background that keeps it readable over bodies and lines; `centre` is where
 // the middle of the text goes. No background when `background` is 0.

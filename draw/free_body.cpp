@@ -130,7 +130,8 @@ std::vector<b2Vec2> draw_inset_forces(ImDrawList* draw, const Scene& scene, cons
   }
   for (const ScreenArrow& arrow : arrows) draw_force(draw, arrow, theme, fonts.small, 3.0f * s, labels);
   for (const TorqueArc& arc : torques) {
-    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s, labels);
+    draw_torque(draw, arc, theme.force[static_cast<int>(ForceKind::applied)], fonts.small, theme.panel, 2.0f * s,
+                place_torque_value(arc, fonts.small, 2.0f * s, labels));
   }
   std::vector<b2Vec2> drawn;
   for (const ScreenArrow& arrow : arrows) drawn.push_back(arrow.force.force);
