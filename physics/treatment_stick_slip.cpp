@@ -211,7 +211,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   if (r.solver.point_count == 0 || h <= 0.0) return;
   const double start = sliding_at_start(r);
   const double end = solved.sliding_end;
-  const double mass = contact_mass(r.identity.body_a, r.identity.body_b, r.solver.point_count == 2, r.solver.point, t);
+  const double mass = tangential_mass(r);
   if (!(mass > 0.0)) return;
   const double normal_force = solved.normal_impulse / h;
   const double other = (mass * (end - start) - solved.tangent_impulse) / h;  // N on B along t, but friction
@@ -230,7 +230,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
   // what one span's pushing gives from rest: a block on a shaken plank, back from a 0.5 mm hop
   // at 0.64 m/s, was left sliding at 0.11 m/s (wedge, a_x -27.59 at 10 rad/s, mu_k 0.045: the
   // slide 0.38 m off the exact one at the end, at 240 and 480 Hz alike).
-  const double way = r.friction.slip_direction * before < 0.0 ? (before > 0.0 ? 1.0 : -1.0) : r.friction.slip_direction;
+  const double way = r.friction.slip_direction * before < 0.0 ? sign(before) : r.friction.slip_direction;
   // m/s that kinetic friction and the pushing take from the sliding over the span while it
   // slides on the old way.
   const double slowing = (pair.mu_k * normal_force - way * pushing) * h / mass;
@@ -247,7 +247,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
     // start).
     const double stopped = slowing > 0.0 ? std::clamp(way * before / slowing, 0.0, 1.0) : 0.0;
     if (std::abs(pushing) > limit) {
-      const double back = pushing > 0.0 ? 1.0 : -1.0;
+      const double back = sign(pushing);
       wanted = (pushing - back * pair.mu_k * normal_force) * (1.0 - stopped) * h / mass;
       r.friction.state = ContactState::slipping;
       r.friction.slip_direction = static_cast<float>(back);
