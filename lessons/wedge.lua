@@ -598,14 +598,14 @@ local function impulse_rounding(k)
                       + math.abs(turning.speed[k])
   return (1 + 9 * 4) * 2 ^ -24 * mass * block_speed / substep_length()
 end
--- What the world's demand on a stuck block may sit off the model's at sample k (N), after a
--- path slid of `path` (m), with `limit` the static coefficient (see above).
-local function demand_uncertainty(k, path, limit)
+-- What the world's demand on a stuck block may sit off the model's at sample k (N), where the
+-- world's block may stand `gap` (m) off the model's along the plank, with `limit` the static
+-- coefficient (see above): the turn presses it by m·θ''·gap and flings it by m·θ'²·gap.
+local function demand_uncertainty(k, gap, limit)
   local time_k = (k - 1) * spacing
   local turn_rate = theta0 * omega * math.cos(omega * time_k)
   local spin_up = theta0 * omega * omega * math.abs(sin(omega * time_k))
-  local off = start_drift(time_k) + 0.002 * path + 3e-3
-  return off * mass * (turn_rate * turn_rate + limit * spin_up) + limit * late_share(k)
+  return gap * mass * (turn_rate * turn_rate + limit * spin_up) + limit * late_share(k)
          + 1e-5 * limit * turning.normal[k] + (1 + limit) * impulse_rounding(k)
 end
 function grazes_by(t)
@@ -619,7 +619,10 @@ function grazes_by(t)
   local limit = math.max(param.mu_s, param.mu_k)
   local function stuck(k) return turning.contact[k] == "sticking" end
   local function margin(k) return limit * turning.normal[k] - math.abs(turning.friction[k]) end
-  local function allowed(k, path) return demand_uncertainty(k, path, limit) end
+  -- The block's place is as sure as the slide row's: the start's drift, 0.2 % of the path and 3 mm.
+  local function allowed(k, path)
+    return demand_uncertainty(k, start_drift((k - 1) * spacing) + 0.002 * path + 3e-3, limit)
+  end
   -- The record says "slipping" up to three and a half steps after the demand passed the limit
   -- (the first slip row says why): how far past the grazing the world's record is read.
   local record_lag = 3.5 * h
@@ -699,7 +702,7 @@ end
 --   presses it by m·θ''·δs and flings it by m·θ'²·δs otherwise; and the turn's share of N reaches
 --   it a step late (late_share), with the listener's 1e-5 of μ·N. That is the allowance below:
 --   4.5 ms at 240 Hz, 0.58 at 1920, halving with the step. (The grazing's bound,
---   demand_uncertainty, takes δs as the slide row's whole bound, its 0.2 % of the path and 3 mm
+--   grazes_by, takes δs as the slide row's whole bound, its 0.2 % of the path and 3 mm
 --   too, which are the slide's own leeway and not where the block stopped: 5.0 ms at 240 Hz.)
 -- - The world's margin from step to step: N alternates between two levels from one step to
 --   the next, 0.5 % of it apart at 3840 Hz and over 2 % at 7680 Hz (the world's N 0.13, 0.22
@@ -741,11 +744,7 @@ function breakaways_shifted(t)
     if event.kind == "breakaway" and event.t > 0 and j < last and j > 2 and stuck(j) and stuck(j - 1) then
       local closing = (margin(j - 1) - margin(j)) / spacing
       if closing > 0 then
-        local time_j = (j - 1) * spacing
-        local turn_rate = theta0 * omega * math.cos(omega * time_j)
-        local spin_up = theta0 * omega * omega * math.abs(sin(omega * time_j))
-        local off = start_drift(time_j) * mass * (turn_rate * turn_rate + limit * spin_up)
-                    + limit * late_share(j) + 1e-5 * limit * turning.normal[j] + (1 + limit) * impulse_rounding(j)
+        local off = demand_uncertainty(j, start_drift((j - 1) * spacing), limit)
         local parting = math.max(limit - param.mu_k, 0) * turning.normal[j] / mass
         local stop = j + 1
         while stop < last and not stuck(stop) do stop = stop + 1 end
