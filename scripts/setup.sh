@@ -32,7 +32,7 @@ if [[ ${FRICTIONLAB_TESTS:-0} == 1 || ${FRICTIONLAB_PACKAGING:-0} == 1 ]]; then
   packages+=(dpkg-dev file lintian desktop-file-utils appstream util-linux mount gzip groff-base)
 fi
 
-# The libFuzzer targets (scripts/fuzz.sh, which the test command runs for a minute each): Clang
+# The libFuzzer targets (scripts/fuzz.sh, which the test command runs for half a minute each): Clang
 # and its sanitizer and fuzzer runtimes.
 if [[ ${FRICTIONLAB_FUZZ:-0} == 1 ]]; then packages+=(clang libclang-rt-14-dev); fi
 
