@@ -222,6 +222,20 @@ std::vector<ImVec2> LabelPlacer::places_by_arrow(const std::vector<ImVec2>& plac
       }
     }
     near.push_back(moved_inside(sub(own.from, mul(unit, half_along)), size));
+    // Then along each side in steps of a quarter line, from the box's far end level with the
+    // tip's beyond it back to its far end level with the tail behind it: a short arrow among
+    // others (a top block's weight in a stack, between its normal force and the pressing force
+    // below; that pressing force, between the weight's tip and the lower block's weight) has
+    // no room at the places above, but a gap a few pixels off them is beside it and nearer it
+    // than any other arrow. (Issue 31: stacked_blocks' 9.81 N weight and pressing force on a
+    // projector stood 38–74 px off with leaders, nearer other arrows.)
+    const float box_along = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + pad;
+    const float step = 0.25f * size.y;
+    for (float s = span + box_along; s >= -box_along; s -= step) {
+      for (const float side : {1.0f, -1.0f}) {
+        near.push_back(moved_inside(add(add(own.from, mul(unit, s)), mul(across, side * half_across)), size));
+      }
+    }
   }
   std::vector<ImVec2> by_own;
   for (const ImVec2& place : near) {
@@ -312,13 +326,19 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
   if (own != nullptr) {
     const std::vector<ImVec2> by_own = places_by_arrow(places, size, *own);
     std::optional<ImVec2> found = first_clear(by_own, true);
-    if (!found) found = first_clear(by_own, false);
+    // Else on its own body, off the others: beside its arrow on another block's face it reads
+    // as that block's (issue 31), as a value with a leader does (place_with_leader).
+    for (std::size_t k = 0; k < by_own.size() && !found; ++k) {
+      const ImVec4 box = box_around(by_own[k], size);
+      if (clear(box, false) && off_other_bodies(box, own_body)) found = by_own[k];
+    }
     // Nowhere free beside it: the nearest free place from which a leader to the arrow crosses
-    // nothing it would join the value to.
+    // nothing it would join the value to; else beside it on another body.
     if (!found) {
       found = place_with_leader(wanted, size, *own, own_body);
       if (found && with_leader != nullptr) *with_leader = true;
     }
+    if (!found) found = first_clear(by_own, false);
     if (found) {
       take(box_around(*found, size), text);
       return found;

@@ -543,12 +543,17 @@ void each_lesson_frame(bool projector, draw::ThemeName theme,
 // pressing force, 9.81 N, sat by the bottom block's weight). driven_wheel in projector mode came
 // to meet that when LabelPlacer::place_beside looked for such a place first and draw_world placed
 // again, first, a value by another arrow; not yet, and held to still break it as above:
-// stacked_blocks' world (both modes: its 9.81 N values by the friction between the blocks, no
+// stacked_blocks' world on a screen (its 9.81 N values by the friction between the blocks, no
 // free place nearer their own arrows within a leader's reach), friction_models' world and wedge's
 // inset on a screen. terrain's world on a screen came to meet it when a weight that met a
 // contact's arrow came to slide back up its line rather than the contact's force past it, and
 // left it again when the weight came to start at its centre of mass always (a textbook's weight
-// outweighs a value 0.4 px nearer a friction's arrow than its own).
+// outweighs a value 0.4 px nearer a friction's arrow than its own). stacked_blocks' world in
+// projector mode came to meet it, and terrain's on a screen again, when LabelPlacer::places_by_arrow
+// came to slide a value along each side of its arrow in quarter lines, past the tail and the tip
+// (the top block's 9.81 N weight, 38–53 px off with a leader, found the free side of its tail),
+// and draw_world to place the values before each contact's word by its dot in turn (the
+// pressing force, 9.81 N at 2.12 s, 74 px off, took the gap "sticking" held by its tip).
 //
 // stacked_blocks' world in projector mode, and friction_models' on a screen, went back onto the
 // first list when arrows under twice the legible length came to be lengthened in order
@@ -566,12 +571,8 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
     return false;
   };
   const auto nearer_another_not_yet = [](const std::string& lesson, bool projector, bool inset) {
-    if (lesson == "stacked_blocks") return !inset;
+    if (lesson == "stacked_blocks") return !projector && !inset;
     if (lesson == "wedge") return !projector && inset;
-    // Back on the list when a weight came to start at its body's centre of mass always (rather
-    // than slide up its line off a contact's arrow): on a screen at 0.2 s terrain's 9.81 N
-    // weights' values sit 21.3 px from their own arrows and 20.9 px from a friction's.
-    if (lesson == "terrain") return !projector && !inset;
     return false;
   };
   std::map<std::string, int> still_nearer_another;
@@ -656,6 +657,40 @@ TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProject
     EXPECT_EQ(words, 2) << where;
   }
   EXPECT_EQ(frictions, 2 * 3);
+}
+
+// stacked_blocks at 0.2 s and 2.12 s in the window at 1920 × 1080 in projector mode, both
+// themes: every value within a line of its own arrow and nearer it than any other (a value with a
+// leader, nearer its own arrow than any other), and both contacts' words drawn. Issue 31: the top
+// block's 9.81 N weight stood 53 px (0.2 s) and 38 px (2.12 s) from its arrow with a leader,
+// nearer the normal forces, for no place by its middle or tip was free; at 2.12 s the pressing
+// force on the lower block, 9.81 N, stood 74 px off, 21 px from the lower block's weight, for
+// "sticking" held the one gap by its tip.
+TEST(ForceLabels, StackedBlocksWeightsAndPressingForceStandBesideTheirArrowsOnAProjector) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  int values = 0;
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), {"1920x1080", 1920, 1080, true});
+    options.window.theme = theme;
+    Classroom window(options);
+    draw_window_frame(gl, host, window, display);
+    for (const double t : {0.2, 2.12}) {
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+      const std::string where = "stacked_blocks" + said_at(t) + (theme == draw::ThemeName::dark ? ", dark" : "");
+      int words = 0;
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        for (const std::string& text : lane.texts) {
+          words += text.find("sticking") != std::string::npos || text.find("slipping") != std::string::npos ? 1 : 0;
+        }
+        values += check_beside_own_arrow(lane.forces, where);
+      }
+      EXPECT_EQ(words, 2) << where << ": a contact's word is not drawn";
+    }
+  }
+  // Seven forces at 0.2 s (the frictions between the blocks are nought), nine at 2.12 s.
+  EXPECT_EQ(values, 2 * (7 + 9));
 }
 
 // A contact's word ("sticking", "← slipping") by its dot, on a floor and on slopes as steep as
