@@ -393,26 +393,39 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
     }
   };
   if (halo != 0) {
-    // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
-    // grown about its incentre, which moves each edge out by the same width.
-    const float width = arrow_halo_width(thickness);
     if (plate) {
-      // A strip the head's width and the outline's past it each side, and past the tail and the tip.
-      const ImVec2 side = mul(across, 0.45f * head + width), back = mul(unit, width);
-      const ImVec2 from = sub(tail, back), to = add(tip, back);
-      draw->AddQuadFilled(add(from, side), add(to, side), sub(to, side), sub(from, side), halo);
-    }
-    const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
-    const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
-    const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
-    const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
-    const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
-    if (broken) {
-      for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(sub(from, mul(unit, width)), add(to, mul(unit, width)), halo, thickness + 2.0f * width); });
+      // On a plate: the arrow's shape grown a thickness and a pixel all round, the surround an
+      // arrow over a fill like its colour needs (ForceArrows.EachStandsOutFromASurroundAsWideAsItsShaft),
+      // with round corners (a grown triangle's mitred tip would reach 2.5 widths past the arrow's),
+      // whole under a broken shaft's gaps: an outline of the arrow, not the strip as wide as its
+      // head from tail to tip that the dark theme drew as black bars beside terrain's weights on
+      // a projector (issue 31).
+      const float width = thickness + 1.0f;
+      const ImVec2 head_base = add(base, mul(unit, 0.3f * head));
+      draw->AddLine(tail, head_base, halo, thickness + 2.0f * width);
+      draw->AddCircleFilled(tail, 0.5f * thickness + width, halo, 16);
+      draw->AddTriangleFilled(tip, left, right, halo);
+      const ImVec2 corners[3] = {tip, left, right};
+      for (int k = 0; k < 3; ++k) {
+        draw->AddLine(corners[k], corners[(k + 1) % 3], halo, 2.0f * width);
+        draw->AddCircleFilled(corners[k], width, halo, 16);
+      }
     } else {
-      draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+      // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
+      // grown about its incentre, which moves each edge out by the same width.
+      const float width = arrow_halo_width(thickness);
+      const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
+      const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
+      const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
+      const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
+      const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
+      if (broken) {
+        for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(sub(from, mul(unit, width)), add(to, mul(unit, width)), halo, thickness + 2.0f * width); });
+      } else {
+        draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+      }
+      draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
     }
-    draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
   }
   if (broken) {
     for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(from, to, colour, thickness); });
