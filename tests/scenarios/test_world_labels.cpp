@@ -3,6 +3,7 @@
 // other; every label inside what the world view shows.
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <map>
 
 #include "tests/layout_checks.h"
@@ -621,6 +622,26 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   }
 }
 
+// stacked_blocks in the window at 1920 × 1080 in projector mode, light and dark, at each of
+// `times` (the run's end for one past it): each frame's record, with where (" at 2.12 s, dark").
+void stacked_blocks_on_a_projector(const std::vector<double>& times,
+                                   const std::function<void(const std::string& where, const draw::FrameRecord& record)>& check) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), {"1920x1080", 1920, 1080, true});
+    options.window.theme = theme;
+    Classroom window(options);
+    draw_window_frame(gl, host, window, display);
+    for (const double wanted : times) {
+      const double t = std::min(wanted, window.playback().lesson().duration());
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+      check("stacked_blocks" + said_at(t) + (theme == draw::ThemeName::dark ? ", dark" : ""), record);
+    }
+  }
+}
+
 // stacked_blocks at its end (4.23 s) in the window at 1920 × 1080 in projector mode, both themes:
 // each friction's value within a line of its own arrow and nearer it than any other, and each
 // contact's word drawn. Issue 31: the friction on the bottom block, 3.43 N, stood 127 px from its
@@ -628,18 +649,9 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
 // block's weight label, where a value needs 39 px); a picture whose values find no place beside
 // their arrows is placed again with the values first and the words after.
 TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProjector) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
   int frictions = 0;
-  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
-    ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), {"1920x1080", 1920, 1080, true});
-    options.window.theme = theme;
-    Classroom window(options);
-    draw_window_frame(gl, host, window, display);
-    const double end = window.playback().lesson().duration();
-    const draw::FrameRecord record = recorded_at(gl, host, window, display, end);
-    const std::string where = "stacked_blocks" + said_at(end) + (theme == draw::ThemeName::dark ? ", dark" : "");
+  stacked_blocks_on_a_projector({std::numeric_limits<double>::infinity()}, [&](const std::string& where,
+                                                                              const draw::FrameRecord& record) {
     int words = 0;
     for (const draw::FrameRecord::Lane& lane : record.lanes) {
       for (const std::string& text : lane.texts) words += text.find("slipping") != std::string::npos ? 1 : 0;
@@ -655,7 +667,7 @@ TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProject
     }
     // Both contacts slip at the end: the floor's and the blocks'.
     EXPECT_EQ(words, 2) << where;
-  }
+  });
   EXPECT_EQ(frictions, 2 * 3);
 }
 
@@ -667,28 +679,17 @@ TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProject
 // force on the lower block, 9.81 N, stood 74 px off, 21 px from the lower block's weight, for
 // "sticking" held the one gap by its tip.
 TEST(ForceLabels, StackedBlocksWeightsAndPressingForceStandBesideTheirArrowsOnAProjector) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
   int values = 0;
-  for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {
-    ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), {"1920x1080", 1920, 1080, true});
-    options.window.theme = theme;
-    Classroom window(options);
-    draw_window_frame(gl, host, window, display);
-    for (const double t : {0.2, 2.12}) {
-      const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
-      const std::string where = "stacked_blocks" + said_at(t) + (theme == draw::ThemeName::dark ? ", dark" : "");
-      int words = 0;
-      for (const draw::FrameRecord::Lane& lane : record.lanes) {
-        for (const std::string& text : lane.texts) {
-          words += text.find("sticking") != std::string::npos || text.find("slipping") != std::string::npos ? 1 : 0;
-        }
-        values += check_beside_own_arrow(lane.forces, where);
+  stacked_blocks_on_a_projector({0.2, 2.12}, [&](const std::string& where, const draw::FrameRecord& record) {
+    int words = 0;
+    for (const draw::FrameRecord::Lane& lane : record.lanes) {
+      for (const std::string& text : lane.texts) {
+        words += text.find("sticking") != std::string::npos || text.find("slipping") != std::string::npos ? 1 : 0;
       }
-      EXPECT_EQ(words, 2) << where << ": a contact's word is not drawn";
+      values += check_beside_own_arrow(lane.forces, where);
     }
-  }
+    EXPECT_EQ(words, 2) << where << ": a contact's word is not drawn";
+  });
   // Seven forces at 0.2 s (the frictions between the blocks are nought), nine at 2.12 s.
   EXPECT_EQ(values, 2 * (7 + 9));
 }
