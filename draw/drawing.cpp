@@ -222,6 +222,20 @@ std::vector<ImVec2> LabelPlacer::places_by_arrow(const std::vector<ImVec2>& plac
       }
     }
     near.push_back(moved_inside(sub(own.from, mul(unit, half_along)), size));
+    // Then along each side in steps of a quarter line, from the box's far end level with the
+    // tip's beyond it back to its far end level with the tail behind it: a short arrow among
+    // others (a top block's weight in a stack, between its normal force and the pressing force
+    // below; that pressing force, between the weight's tip and the lower block's weight) has
+    // no room at the places above, but a gap a few pixels off them is beside it and nearer it
+    // than any other arrow. (Issue 31: stacked_blocks' 9.81 N weight and pressing force on a
+    // projector stood 38–74 px off with leaders, nearer other arrows.)
+    const float box_along = 0.5f * (std::abs(unit.x) * size.x + std::abs(unit.y) * size.y) + pad;
+    const float step = 0.25f * size.y;
+    for (float s = span + box_along; s >= -box_along; s -= step) {
+      for (const float side : {1.0f, -1.0f}) {
+        near.push_back(moved_inside(add(add(own.from, mul(unit, s)), mul(across, side * half_across)), size));
+      }
+    }
   }
   std::vector<ImVec2> by_own;
   for (const ImVec2& place : near) {
@@ -312,13 +326,19 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
   if (own != nullptr) {
     const std::vector<ImVec2> by_own = places_by_arrow(places, size, *own);
     std::optional<ImVec2> found = first_clear(by_own, true);
-    if (!found) found = first_clear(by_own, false);
+    // Else on its own body, off the others: beside its arrow on another block's face it reads
+    // as that block's (issue 31), as a value with a leader does (place_with_leader).
+    for (std::size_t k = 0; k < by_own.size() && !found; ++k) {
+      const ImVec4 box = box_around(by_own[k], size);
+      if (clear(box, false) && off_other_bodies(box, own_body)) found = by_own[k];
+    }
     // Nowhere free beside it: the nearest free place from which a leader to the arrow crosses
-    // nothing it would join the value to.
+    // nothing it would join the value to; else beside it on another body.
     if (!found) {
       found = place_with_leader(wanted, size, *own, own_body);
       if (found && with_leader != nullptr) *with_leader = true;
     }
+    if (!found) found = first_clear(by_own, false);
     if (found) {
       take(box_around(*found, size), text);
       return found;
@@ -373,26 +393,39 @@ void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float t
     }
   };
   if (halo != 0) {
-    // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
-    // grown about its incentre, which moves each edge out by the same width.
-    const float width = arrow_halo_width(thickness);
     if (plate) {
-      // A strip the head's width and the outline's past it each side, and past the tail and the tip.
-      const ImVec2 side = mul(across, 0.45f * head + width), back = mul(unit, width);
-      const ImVec2 from = sub(tail, back), to = add(tip, back);
-      draw->AddQuadFilled(add(from, side), add(to, side), sub(to, side), sub(from, side), halo);
-    }
-    const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
-    const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
-    const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
-    const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
-    const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
-    if (broken) {
-      for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(sub(from, mul(unit, width)), add(to, mul(unit, width)), halo, thickness + 2.0f * width); });
+      // On a plate: the arrow's shape grown a thickness and a pixel all round, the surround an
+      // arrow over a fill like its colour needs (ForceArrows.EachStandsOutFromASurroundAsWideAsItsShaft),
+      // with round corners (a grown triangle's mitred tip would reach 2.5 widths past the arrow's),
+      // whole under a broken shaft's gaps: an outline of the arrow, not the strip as wide as its
+      // head from tail to tip that the dark theme drew as black bars beside terrain's weights on
+      // a projector (issue 31).
+      const float width = thickness + 1.0f;
+      const ImVec2 head_base = add(base, mul(unit, 0.3f * head));
+      draw->AddLine(tail, head_base, halo, thickness + 2.0f * width);
+      draw->AddCircleFilled(tail, 0.5f * thickness + width, halo, 16);
+      draw->AddTriangleFilled(tip, left, right, halo);
+      const ImVec2 corners[3] = {tip, left, right};
+      for (int k = 0; k < 3; ++k) {
+        draw->AddLine(corners[k], corners[(k + 1) % 3], halo, 2.0f * width);
+        draw->AddCircleFilled(corners[k], width, halo, 16);
+      }
     } else {
-      draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+      // The outline first, arrow_halo_width() past the shaft's sides and the head's edges: the head
+      // grown about its incentre, which moves each edge out by the same width.
+      const float width = arrow_halo_width(thickness);
+      const float a = length(sub(left, right)), b = length(sub(tip, right)), c = length(sub(tip, left));
+      const ImVec2 incentre = mul(add(add(mul(tip, a), mul(left, b)), mul(right, c)), 1.0f / (a + b + c));
+      const float area = 0.5f * std::abs((left.x - tip.x) * (right.y - tip.y) - (left.y - tip.y) * (right.x - tip.x));
+      const float grow = 1.0f + width / std::max(2.0f * area / (a + b + c), 1e-3f);
+      const auto grown = [&](ImVec2 p) { return add(incentre, mul(sub(p, incentre), grow)); };
+      if (broken) {
+        for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(sub(from, mul(unit, width)), add(to, mul(unit, width)), halo, thickness + 2.0f * width); });
+      } else {
+        draw->AddLine(sub(tail, mul(unit, width)), add(base, mul(unit, 0.3f * head)), halo, thickness + 2.0f * width);
+      }
+      draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
     }
-    draw->AddTriangleFilled(grown(tip), grown(left), grown(right), halo);
   }
   if (broken) {
     for_each_dash([&](ImVec2 from, ImVec2 to) { draw->AddLine(from, to, colour, thickness); });

@@ -220,8 +220,8 @@ DrawnSegment leader_line(const ImVec4& box, const DrawnSegment& arrow);
 // With `halo` (not 0), outlined in it first, arrow_halo_width(thickness) wide: a force's arrow
 // drawn over a body of about its own lightness is still seen (Theme::arrow_halo). `broken`: the
 // shaft in dashes, for an arrow drawn longer than to scale (ScreenArrow::to_scale).
-// `plate`: on a plate of the halo's colour as well, a strip as wide as the head and its outline
-// from the tail to the tip, as a value's text lies on its box (ScreenArrow::over_its_like).
+// `plate`: its outline in the halo's colour a thickness and a pixel wide, whole under a broken
+// shaft, a plate of the arrow's own shape (ScreenArrow::over_its_like).
 void draw_arrow(ImDrawList* draw, ImVec2 tail, ImVec2 tip, ImU32 colour, float thickness, ImU32 halo = 0,
                 bool broken = false, bool plate = false);
 // A broken shaft's dashes and gaps, px, for arrows `thickness` thick: half a thickness each, so

@@ -833,29 +833,45 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   // friction on the bottom block, 3.43 N at 4.23 s in projector mode, stood 127 px from its
   // arrow, for "← slipping", itself not within a line of its dot, had taken the only place
   // beside the arrow.)
-  if (values.away > 0) {
+  //
+  // Where that still leaves a value away, the same with one of those words placed after the
+  // values too, each in turn (stacked_blocks' pressing force, 9.81 N at 2.12 s on a projector,
+  // stood 74 px off with a leader, nearer the lower block's weight: "sticking", by its dot,
+  // held the one gap beside the force's tip). A value beside another's arrow is misread; a word
+  // a little off its dot is still read as its contact's by its colour. The arrangement drawn
+  // leaves the fewest values away, then the most words by their dots, every word still drawn;
+  // one that takes a word from its dot must bring a value to its arrow.
+  const auto near_dots = [](const std::vector<PlacedWord>& placed) {
+    return std::count_if(placed.begin(), placed.end(), [](const PlacedWord& word) { return word.near_dot; });
+  };
+  const auto drawn = [](const std::vector<PlacedWord>& placed) {
+    return std::count_if(placed.begin(), placed.end(), [](const PlacedWord& word) { return word.at.has_value(); });
+  };
+  const std::vector<PlacedWord> words_first = words;
+  const auto arrange_values_first = [&](std::size_t word_after) {
     LabelPlacer values_placer = labels;
     std::vector<PlacedWord> words_again(worded.size());
+    const auto kept = [&](std::size_t k) { return words_first[k].near_dot && k != word_after; };
     for (std::size_t k = 0; k < worded.size(); ++k) {
-      if (words[k].near_dot) words_again[k] = place_contact_word(*worded[k], camera, fonts, values_placer, &words[k]);
+      if (kept(k)) words_again[k] = place_contact_word(*worded[k], camera, fonts, values_placer, &words_first[k]);
     }
     std::vector<PlacedTorque> torques_again = place_torques(values_placer);
     PlacedValues values_again = place_force_values(arrows, texts, fonts, thickness, values_placer);
     for (std::size_t k = 0; k < worded.size(); ++k) {
-      if (!words[k].near_dot) words_again[k] = place_contact_word(*worded[k], camera, fonts, values_again.labels);
+      if (!kept(k)) words_again[k] = place_contact_word(*worded[k], camera, fonts, values_again.labels);
     }
-    const auto near_dots = [](const std::vector<PlacedWord>& placed) {
-      return std::count_if(placed.begin(), placed.end(), [](const PlacedWord& word) { return word.near_dot; });
-    };
-    const auto drawn = [](const std::vector<PlacedWord>& placed) {
-      return std::count_if(placed.begin(), placed.end(), [](const PlacedWord& word) { return word.at.has_value(); });
-    };
-    if (values_again.away < values.away && near_dots(words_again) >= near_dots(words) &&
-        drawn(words_again) >= drawn(words)) {
+    const bool better = values_again.away < values.away ||
+                        (values_again.away == values.away && near_dots(words_again) > near_dots(words));
+    if (better && drawn(words_again) >= drawn(words_first)) {
       words = std::move(words_again);
       torques = std::move(torques_again);
       values = std::move(values_again);
     }
+  };
+  // Every word by its dot kept (word_after past the last), then each of them in turn after the values.
+  if (values.away > 0) arrange_values_first(worded.size());
+  for (std::size_t k = 0; k < worded.size() && values.away > 0; ++k) {
+    if (words_first[k].near_dot) arrange_values_first(k);
   }
   for (const ContactMark& mark : shown.marks) draw_contact_dot(draw, mark, camera, theme, fonts.scale);
   for (const PlacedWord& word : words) draw_contact_word(draw, word, theme, fonts);
