@@ -166,10 +166,16 @@ std::string speed_text(const Scene& scene, const b2Body* body) {
 }
 
 std::string speed_reading(const b2Body* body) {
-  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read: a resting
-  // block's 1e-9 m/s of rounding is 0.000.
+  const double speed = static_cast<double>(body->GetLinearVelocity().Length());
+  // A body at rest moves by float round-off only, a few nm/s (ForceGauge.ABodyTheHandHoldsStillSticks
+  // holds it under 1 µm/s): 0.
+  if (speed < 1e-6) return "v = 0 m/s";
+  // Below 0.1 m/s in mm/s, to three figures: to the millimetre a second, a block the gauge let
+  // slip on to its re-stick at 0.46 mm/s read "v = 0.000 m/s" beside "slipping →" (issue 31).
+  if (speed < 0.1) return "v = " + draw::format_quantity(1000.0 * speed, "mm/s");
+  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read.
   char text[48];
-  std::snprintf(text, sizeof text, "v = %.3f m/s", static_cast<double>(body->GetLinearVelocity().Length()));
+  std::snprintf(text, sizeof text, "v = %.3f m/s", speed);
   return text;
 }
 

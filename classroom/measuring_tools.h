@@ -27,7 +27,8 @@ namespace frictionlab::classroom {
 // (the free-body diagram's). Null when nothing moves.
 const b2Body* measured_body(const lessons::Lesson& lesson);
 
-// What the speed tool shows beside a body: its centre of mass's speed, "v = 0.092 m/s".
+// What the speed tool shows beside a body: its centre of mass's speed, "v = 1.250 m/s", below
+// 0.1 m/s in mm/s to three figures ("v = 92.0 mm/s", "v = 0.464 mm/s"), and "v = 0 m/s" at rest.
 std::string speed_reading(const b2Body* body);
 // The same saying whose speed it is when the lesson has several moving bodies (lanes, a
 // stack): "hack box: v = 0.420 m/s", the body named in the class's words.
