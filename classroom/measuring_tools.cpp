@@ -130,18 +130,24 @@ ComponentArrows component_arrows(const SlopeWeight& weight, const b2Body* body, 
   return {centre, tip(weight.downhill, weight.along), tip(weight.into, weight.across)};
 }
 
-// A tool's reading, its text placed by `anchor` (`in_sizes` of the text's own width and height
-// from it to the text's centre), or in the nearest free place: off every moving body, unless
-// the bodies leave no room near; none when nothing near is free.
-void draw_reading(ImDrawList* draw, draw::LabelPlacer& labels, ImFont* font, ImVec2 anchor, ImVec2 in_sizes,
-                  const std::string& text, ImU32 colour, ImU32 background) {
-  const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str());
-  const ImVec2 wanted(anchor.x + in_sizes.x * size.x, anchor.y + in_sizes.y * size.y);
-  // Left out where nothing near is free: drawn over the lesson's labels (where_methods_fail's
-  // thin projector lanes) neither could be read.
-  if (const std::optional<ImVec2> at = labels.place_if_free(wanted, ImVec2(size.x + 6.0f, size.y + 2.0f), text, true)) {
-    draw::draw_label(draw, font, *at, colour, background, text.c_str());
+// The places hugging an arrow's tip where a value's box of `size` may stand, `gap` px clear of
+// it: level with the tip on either side, over and under it, and at its four corners, those
+// furthest along the arrow first. A long value on a short arrow ("m·g·sin θ = 5.63 N" on 60 px)
+// wanted beyond the tip along the arrow's line lay across the slope's face, and the placer's
+// rings round that place, half the text's width apart, missed the room beside the tip.
+std::vector<ImVec2> hugging_the_tip(ImVec2 tail, ImVec2 tip, ImVec2 size, float gap) {
+  const float dx = 0.5f * size.x + gap, dy = 0.5f * size.y + gap;
+  std::vector<ImVec2> places;
+  for (const ImVec2 offset : {ImVec2(-dx, 0.0f), ImVec2(dx, 0.0f), ImVec2(0.0f, -dy), ImVec2(0.0f, dy), ImVec2(-dx, -dy),
+                              ImVec2(dx, -dy), ImVec2(-dx, dy), ImVec2(dx, dy)}) {
+    places.push_back(draw::add(tip, offset));
   }
+  const ImVec2 along = draw::sub(tip, tail);
+  std::stable_sort(places.begin(), places.end(), [&](ImVec2 a, ImVec2 b) {
+    const auto ahead = [&](ImVec2 p) { return (p.x - tip.x) * along.x + (p.y - tip.y) * along.y; };
+    return ahead(a) > ahead(b);
+  });
+  return places;
 }
 
 }  // namespace
@@ -160,10 +166,16 @@ std::string speed_text(const Scene& scene, const b2Body* body) {
 }
 
 std::string speed_reading(const b2Body* body) {
-  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read: a resting
-  // block's 1e-9 m/s of rounding is 0.000.
+  const double speed = static_cast<double>(body->GetLinearVelocity().Length());
+  // A body at rest moves by float round-off only, a few nm/s (ForceGauge.ABodyTheHandHoldsStillSticks
+  // holds it under 1 µm/s): 0.
+  if (speed < 1e-6) return "v = 0 m/s";
+  // Below 0.1 m/s in mm/s, to three figures: to the millimetre a second, a block the gauge let
+  // slip on to its re-stick at 0.46 mm/s read "v = 0.000 m/s" beside "slipping →" (issue 31).
+  if (speed < 0.1) return "v = " + draw::format_quantity(1000.0 * speed, "mm/s");
+  // To the millimetre a second, as a class's stopwatch-and-ruler speed is read.
   char text[48];
-  std::snprintf(text, sizeof text, "v = %.3f m/s", static_cast<double>(body->GetLinearVelocity().Length()));
+  std::snprintf(text, sizeof text, "v = %.3f m/s", speed);
   return text;
 }
 
@@ -177,8 +189,9 @@ void MeasuringTools::avoid(const lessons::Lesson& lesson, const draw::Camera& ca
   if (on.weight_components) {
     if (const std::optional<SlopeWeight> weight = slope_weight(scene, body)) {
       const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
-      labels.avoid(draw::DrawnSegment{arrows.centre, arrows.along_tip, 4.0f * scale});
-      labels.avoid(draw::DrawnSegment{arrows.centre, arrows.across_tip, 4.0f * scale});
+      // Known as arrows: each value placed is then nearer its own arrow than any of these.
+      labels.arrow(draw::DrawnSegment{arrows.centre, arrows.along_tip, 4.0f * scale});
+      labels.arrow(draw::DrawnSegment{arrows.centre, arrows.across_tip, 4.0f * scale});
     }
   }
 }
@@ -188,14 +201,16 @@ void MeasuringTools::in_world(draw::WorldToolsPass pass, ImDrawList* draw, const
                               draw::LabelPlacer& labels) const {
   switch (pass) {
     case draw::WorldToolsPass::avoid: avoid(lesson, camera, lane, newtons_to_pixels, fonts.scale, labels); break;
-    case draw::WorldToolsPass::fixed_labels: place_fixed_labels(draw, lesson, camera, lane, theme, fonts, labels); break;
-    case draw::WorldToolsPass::draw: this->draw(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels); break;
+    case draw::WorldToolsPass::fixed_labels:
+      place_fixed_labels(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels);
+      break;
+    case draw::WorldToolsPass::draw: break;  // nothing of theirs is left to the end
   }
 }
 
 void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
-                                        std::size_t lane, const draw::Theme& theme, const draw::Fonts& fonts,
-                                        draw::LabelPlacer& labels) const {
+                                        std::size_t lane, float newtons_to_pixels, const draw::Theme& theme,
+                                        const draw::Fonts& fonts, draw::LabelPlacer& labels) const {
   // The distance marks' line and ticks, on the side where their numbers find room; the speed,
   // in its place or the nearest free one (smaller where its font has no room), keeping off
   // the numbers if it can; then the numbers, on every tick or every few where they are free
@@ -204,8 +219,11 @@ void MeasuringTools::place_fixed_labels(ImDrawList* draw, const lessons::Lesson&
   // had no room left and covered a lane's name, the forces' values or the body they read).
   std::optional<DistanceMarks> marks = distance_marks(lesson, camera, fonts, &labels, lane);
   bool speed_placed = false;
+  if (marks) draw_distance_lines(draw, *marks, theme, fonts.scale, labels);
+  // The weight's parts next, their values beside their arrows before any other label takes the
+  // room there (placed last, "ticks 5 m apart" had taken it and m·g·sin θ went 168 px off).
+  draw_weight_components(draw, lesson, camera, lane, newtons_to_pixels, theme, fonts, labels);
   if (marks) {
-    draw_distance_lines(draw, *marks, theme, fonts.scale, labels);
     // The speed off every number, else off every 2nd, 5th or 10th; else where it finds room.
     for (const std::size_t every : {1u, 2u, 5u, 10u}) {
       DistanceMarks kept = *marks;
@@ -278,9 +296,9 @@ bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& less
   return false;
 }
 
-void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
-                          float newtons_to_pixels,
-                          const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const {
+void MeasuringTools::draw_weight_components(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
+                                            std::size_t lane, float newtons_to_pixels, const draw::Theme& theme,
+                                            const draw::Fonts& fonts, draw::LabelPlacer& labels) const {
   const float s = fonts.scale;
   const Scene& scene = lesson.scene();
   const b2Body* body = measured_body(lesson);
@@ -290,18 +308,39 @@ void MeasuringTools::draw(ImDrawList* draw, const lessons::Lesson& lesson, const
       const ComponentArrows arrows = component_arrows(*weight, body, camera, newtons_to_pixels);
       // The weight's own colour, paler: parts of it, not forces beside it.
       const ImU32 colour = (theme.force[static_cast<int>(ForceKind::weight)] & 0x00FFFFFFu) | (170u << IM_COL32_A_SHIFT);
-      draw::draw_arrow(draw, arrows.centre, arrows.along_tip, colour, 2.0f * s);
-      draw::draw_arrow(draw, arrows.centre, arrows.across_tip, colour, 2.0f * s);
-      // Beyond each tip, along its arrow: 8 px past it, and half the text's size.
-      const auto beyond = [&](ImVec2 tip, const std::string& text) {
-        ImVec2 direction = draw::sub(tip, arrows.centre);
-        const float span = std::max(1e-3f, draw::length(direction));
-        direction = draw::mul(direction, 1.0f / span);
-        draw_reading(draw, labels, fonts.small, draw::add(tip, draw::mul(direction, 8.0f * s)), draw::mul(direction, 0.5f), text,
-                     theme.force[static_cast<int>(ForceKind::weight)], theme.panel);
+      // Each value beside its own arrow, as the lesson's forces' values are (place_force_label):
+      // by its tip, else along its shaft, else joined to it by a leader, and told to the placer
+      // as a force's value, nearer its own arrow than any other. Placed where it was free, up to
+      // fifteen lines off, a projector showed m·g·sin θ 181 px from its arrow (issue 31).
+      const auto beside = [&](ImVec2 tip, b2Vec2 way, double newtons, const std::string& text) {
+        const ForceOnBody part{ForceKind::weight, body, body->GetWorldCenter(), static_cast<float>(newtons) * way, nullptr};
+        const draw::DrawnSegment own{arrows.centre, tip, 1.0f * s};
+        const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
+        // Of the free places beside it, the one furthest from the other arrows' tips, by which the
+        // lesson's values are placed later: by the nearest, the incline's m·g·cos θ took the place
+        // beside the weight's tip and sent 9.81 N 200 px off.
+        std::optional<ImVec2> wanted;
+        float clearest = -1.0f;
+        for (const ImVec2 place : hugging_the_tip(arrows.centre, tip, size, 6.0f * s)) {
+          const ImVec4 box = draw::LabelPlacer::box_around(place, size);
+          if (!labels.free(box, true) || !labels.beside(place, size, own)) continue;
+          float clearance = 1e9f;
+          for (const draw::DrawnSegment& other : labels.arrows()) {
+            if (draw::length(draw::sub(other.to, tip)) < 0.5f) continue;  // its own
+            clearance = std::min(clearance, draw::gap(box, draw::DrawnSegment{other.to, other.to, 0.0f}));
+          }
+          if (clearance > clearest) wanted = place, clearest = clearance;
+        }
+        const draw::PlacedForce placed = draw::place_force_label(draw::ScreenArrow{part, arrows.centre, tip}, fonts.small, 2.0f * s,
+                                                                 labels, text, labels.force_labels().size(), wanted);
+        draw::draw_arrow(draw, arrows.centre, tip, colour, 2.0f * s);
+        const ImU32 ink = theme.force[static_cast<int>(ForceKind::weight)];
+        if (placed.leader) draw->AddLine(placed.leader->from, placed.leader->to, ink, 2.0f * placed.leader->half_width);
+        if (placed.at) draw::draw_label(draw, fonts.small, *placed.at, ink, theme.panel, text.c_str());
       };
-      beyond(arrows.along_tip, "m\u00b7g\u00b7sin \u03b8 = " + draw::format_quantity(weight->along, "N"));
-      beyond(arrows.across_tip, "m\u00b7g\u00b7cos \u03b8 = " + draw::format_quantity(weight->across, "N"));
+      beside(arrows.along_tip, weight->downhill, weight->along, "m\u00b7g\u00b7sin \u03b8 = " + draw::format_quantity(weight->along, "N"));
+      beside(arrows.across_tip, weight->into, weight->across,
+             "m\u00b7g\u00b7cos \u03b8 = " + draw::format_quantity(weight->across, "N"));
     }
   }
 }

@@ -27,7 +27,8 @@ namespace frictionlab::classroom {
 // (the free-body diagram's). Null when nothing moves.
 const b2Body* measured_body(const lessons::Lesson& lesson);
 
-// What the speed tool shows beside a body: its centre of mass's speed, "v = 0.092 m/s".
+// What the speed tool shows beside a body: its centre of mass's speed, "v = 1.250 m/s", below
+// 0.1 m/s in mm/s to three figures ("v = 92.0 mm/s", "v = 0.464 mm/s"), and "v = 0 m/s" at rest.
 std::string speed_reading(const b2Body* body);
 // The same saying whose speed it is when the lesson has several moving bodies (lanes, a
 // stack): "hack box: v = 0.420 m/s", the body named in the class's words.
@@ -66,8 +67,8 @@ class MeasuringTools {
   // `lane`: the lane's number, which with lanes named by their bodies says whose tools it shows.
   void avoid(const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, float newtons_to_pixels, float scale,
              draw::LabelPlacer& labels) const;
-  // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), place_fixed_labels()
-  // and draw() in turn.
+  // Its part in each pass of a lane's drawing (WorldToolsPass): avoid(), then
+  // place_fixed_labels(); the last pass has nothing of theirs.
   void in_world(draw::WorldToolsPass pass, ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,
                 std::size_t lane, float newtons_to_pixels, const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
   // The distance marks, when on, and the measured body is in this lane (none otherwise). With
@@ -83,9 +84,6 @@ class MeasuringTools {
   bool draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
                      const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels,
                      const draw::LabelPlacer* preferred = nullptr) const;
-  // The weight's components, whose labels keep off the bodies.
-  void draw(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane, float newtons_to_pixels,
-            const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
   std::optional<b2Vec2> distance_origin() const { return origin_; }
   // The stopwatch's line as the lesson was when last followed (playing, paused, at the run's
   // end); "" while it is not shown (on.stopwatch off).
@@ -99,10 +97,17 @@ class MeasuringTools {
   void draw_stopwatch_strip(ImVec2 corner, ImVec2 size, double now, const draw::Fonts& fonts) const;
 
  private:
-  // The fixed_labels pass: the distance marks' lines, the speed and then the marks' numbers, all
-  // placed before the lesson's force values, which keep off them.
+  // The fixed_labels pass: the distance marks' lines, the weight's components, the speed and then
+  // the marks' numbers, all placed before the lesson's force values, which keep off them.
   void place_fixed_labels(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
-                          const draw::Theme& theme, const draw::Fonts& fonts, draw::LabelPlacer& labels) const;
+                          float newtons_to_pixels, const draw::Theme& theme, const draw::Fonts& fonts,
+                          draw::LabelPlacer& labels) const;
+  // The weight's components on a slope (on.weight_components): their arrows drawn, each value
+  // beside its own arrow as a force's is (draw::place_force_label), told to the placer as forces'
+  // values so that every later value keeps nearer its own arrow than these.
+  void draw_weight_components(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera, std::size_t lane,
+                              float newtons_to_pixels, const draw::Theme& theme, const draw::Fonts& fonts,
+                              draw::LabelPlacer& labels) const;
 
   std::optional<b2Vec2> origin_;
   long last_frame_ = 0;  // the lesson's frame when last followed

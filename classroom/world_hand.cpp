@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "draw/frame.h"
+#include "lessons/runtime/framing.h"
 
 namespace frictionlab::classroom {
 
@@ -17,6 +19,50 @@ void WorldHand::forget() {
   held_view.reset();
   panning_from.reset();
 }
+
+namespace {
+
+// What the status line says while the hand is stopped at the view's edge.
+const std::string stopped_at_the_edge = "The hand stops at the edge of the view, to keep what it pulls in sight.";
+
+// The pointer's place as the hand's target, moved in where the body it pulls would leave the view
+// (`stopped` then): the view holds still while the hand pulls, and a drag on past the world's
+// edge, over the panels, pulled push's block out of the picture (a teacher's projector trial,
+// issue 31). The body reaches past the point held by its box's far corners, as far on the screen
+// as it does now; a margin of 12 px times the text scale keeps it clear of the world panel's
+// clipped edge (10 px in projector text).
+ImVec2 kept_in_sight(ImVec2 pointer, const draw::Camera& camera, const Scene& scene, float scale, bool* stopped) {
+  const b2Body* body = scene.grabbed();
+  if (body == nullptr || scene.applied_forces().empty()) return pointer;
+  const ImVec2 hook = camera.to_screen(body->GetWorldPoint(scene.applied_forces().back().local_point));
+  const b2AABB box = lessons::body_box(body);
+  const ImVec2 low = camera.to_screen(box.lowerBound), high = camera.to_screen(box.upperBound);
+  const float margin = 12.0f * scale;
+  const ImVec2 from(camera.origin.x + margin + (hook.x - low.x), camera.origin.y + margin + (hook.y - high.y));
+  const ImVec2 to(camera.origin.x + camera.size.x - margin - (high.x - hook.x), camera.origin.y + camera.size.y - margin - (low.y - hook.y));
+  ImVec2 kept = pointer;
+  // On an axis where the body is wider than the view, there is no place to keep it whole: left be.
+  if (from.x <= to.x) kept.x = std::clamp(pointer.x, from.x, to.x);
+  if (from.y <= to.y) kept.y = std::clamp(pointer.y, from.y, to.y);
+  *stopped = kept.x != pointer.x || kept.y != pointer.y;
+  return kept;
+}
+
+// How far the body's box on the screen runs out of the view kept `margin` px inside its edges:
+// px, rightwards and downwards (0 where it is inside; where it is wider than the view, by its
+// left or top edge).
+ImVec2 out_of_sight(const draw::Camera& camera, const b2Body* body, float margin) {
+  const b2AABB box = lessons::body_box(body);
+  const ImVec2 low = camera.to_screen(box.lowerBound), high = camera.to_screen(box.upperBound);  // screen y grows down
+  const auto over = [](float near, float far, float from, float to) {
+    if (near < from) return near - from;
+    return far > to ? far - to : 0.0f;
+  };
+  return ImVec2(over(low.x, high.x, camera.origin.x + margin, camera.origin.x + camera.size.x - margin),
+                over(high.y, low.y, camera.origin.y + margin, camera.origin.y + camera.size.y - margin));
+}
+
+}  // namespace
 
 void WorldHand::hold_view(const classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale) {
   if (!held_view) return;
@@ -31,7 +77,21 @@ void WorldHand::hold_view(const classroom_state::Playback& playback, ImVec2 orig
   // The same world point under the same screen point: the mouse's place means what it meant.
   const b2Vec2 shift = held_view->centre - lanes[drag_lane].to_world(held_view->anchor);
   if (shift.IsValid()) view_adjust.pan += shift;
+  // A body driven on past the hand stopped at the view's edge (push's own push grows while the
+  // hand holds it there) would still leave the picture: the view follows it just enough to keep
+  // it in sight, and holds still there.
+  const b2Body* body = playback.lesson().scene().grabbed();
+  const std::vector<draw::Camera> still =
+      draw::world_cameras(playback.lesson(), playback.framing(), size, scale, origin, view_adjust, projector);
+  const float ppm = still[drag_lane].pixels_per_metre;
+  const ImVec2 out = out_of_sight(still[drag_lane], body, 12.0f * scale);
+  if ((out.x != 0.0f || out.y != 0.0f) && ppm > 0.0f) {
+    const b2Vec2 follow(out.x / ppm, -out.y / ppm);
+    view_adjust.pan += follow;
+    held_view->centre += follow;
+  }
 }
+
 
 const draw::Camera& WorldHand::camera_at(ImVec2 point) const {
   for (const draw::Camera& camera : cameras) {
@@ -104,14 +164,20 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
     if (!io.MouseDown[ImGuiMouseButton_Left]) {
       playback.release();
       held = false;
-      // "Holding block: press Space..." is over once the hand lets go.
-      if (status.rfind("Holding ", 0) == 0) status.clear();
+      // "Holding block: press Space..." is over once the hand lets go, and so is the edge's stop.
+      if (status.rfind("Holding ", 0) == 0 || status == stopped_at_the_edge) status.clear();
       return;
     }
-    const b2Vec2 target = camera.to_world(io.MousePos);
+    bool stopped = false;
+    const b2Vec2 target = camera.to_world(kept_in_sight(io.MousePos, camera, scene, scale, &stopped));
     if (target.x != scene.grab_target().x || target.y != scene.grab_target().y) playback.move_grab(target);
     // "press Space to play" is done with once it plays.
     if (playback.playing() && status.rfind("Holding ", 0) == 0) status.clear();
+    if (stopped) {
+      status = stopped_at_the_edge;
+    } else if (status == stopped_at_the_edge) {
+      status.clear();
+    }
   }
   // The hand is drawn as the force gauge it pulls through, with the world (world_tools).
 }

@@ -457,7 +457,7 @@ void draw_force(ImDrawList* draw, const ScreenArrow& arrow, const Theme& theme, 
 }
 
 PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
-                              const std::string& text, std::size_t drawn) {
+                              const std::string& text, std::size_t drawn, std::optional<ImVec2> wanted) {
   PlacedForce placed{arrow, text, ImVec2(0.0f, 0.0f), std::nullopt, std::nullopt, false};
   const DrawnSegment own{arrow.tail, arrow.tip, 0.5f * thickness};
   if (text.empty()) {
@@ -472,7 +472,8 @@ PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thic
   // By its own arrow (place_beside): off the moving bodies where that is as near (a normal
   // force's arrow points into the body it pushes; a spring's runs along the spring).
   bool with_leader = false;
-  placed.at = labels.place_beside(add(arrow.tip, mul(unit, reach)), placed.size, text, &own, &with_leader, arrow.force.body);
+  placed.at = labels.place_beside(wanted.value_or(add(arrow.tip, mul(unit, reach))), placed.size, text, &own, &with_leader,
+                                  arrow.force.body);
   if (placed.at && with_leader) {
     // No free place within a line of the arrow and nearer it than any other (a friction of a few
     // pixels where a normal force starts, a crowded stack): the value went to the nearest free

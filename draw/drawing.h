@@ -146,6 +146,7 @@ class LabelPlacer {
   const std::vector<ImVec4>& labels() const { return taken_; }  // x0, y0, x1, y1, padding included
   const std::vector<std::string>& texts() const { return texts_; }  // each label's text
   const std::vector<DrawnSegment>& segments() const { return segments_; }
+  const std::vector<DrawnSegment>& arrows() const { return arrows_; }  // the forces' arrows among segments()
   const std::vector<ImVec4>& marks() const { return marks_; }
   const std::vector<ImVec4>& bodies() const { return bodies_; }
   ImVec4 bounds() const { return ImVec4(low_.x, low_.y, high_.x, high_.y); }
@@ -248,8 +249,10 @@ struct PlacedForce {
   bool beside = false;                  // by its own arrow (LabelPlacer::beside()) or joined by a leader; or no text
 };
 // `drawn`: the arrow's place in the order the picture's arrows are drawn (ForceLabel::drawn).
+// `wanted`: the value's centre sought first, where the caller knows a better place than just
+// beyond the tip along the arrow's line (a measuring tool's long value on a short arrow).
 PlacedForce place_force_label(const ScreenArrow& arrow, ImFont* font, float thickness, LabelPlacer& labels,
-                              const std::string& text, std::size_t drawn);
+                              const std::string& text, std::size_t drawn, std::optional<ImVec2> wanted = std::nullopt);
 void draw_placed_force(ImDrawList* draw, const PlacedForce& placed, const Theme& theme, ImFont* font, float thickness);
 void draw_polygon(ImDrawList* draw, const b2Body* body, const b2PolygonShape& shape, const Camera& camera, ImU32 fill,
                   ImU32 outline, float thickness);

@@ -237,8 +237,17 @@ std::optional<Surface> surface_under(const Scene& scene, const b2Body* body) {
   if (body == nullptr) return std::nullopt;
   // A body given a velocity at t = 0 (thrown, launched) stands on nothing yet.
   if (scene.frame() == 0) {
-    return body->GetLinearVelocity().Length() == 0.0f && body->GetAngularVelocity() == 0.0f ? set_down_on(body)
-                                                                                              : std::nullopt;
+    if (body->GetLinearVelocity().Length() != 0.0f || body->GetAngularVelocity() != 0.0f) return std::nullopt;
+    std::optional<Surface> surface = set_down_on(body);
+    // Set down on a fixed body's face, it reaches no further than that body does, as after the
+    // first step: unbounded, the incline's distance marks ran the view's width along the slope's
+    // line, past its top into the sky and past its foot into the ground (issue 31).
+    for (const b2Body* other = scene.world().GetBodyList(); surface && other != nullptr; other = other->GetNext()) {
+      if (other->GetType() != b2_staticBody || !along_a_face(other, surface->point, surface->along)) continue;
+      reach_of(other, &*surface);
+      break;
+    }
+    return surface;
   }
   for (const ContactMark& mark : contact_marks(scene)) {
     const b2Body* other = mark.body_a == body ? mark.body_b : mark.body_b == body ? mark.body_a : nullptr;

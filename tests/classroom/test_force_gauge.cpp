@@ -269,6 +269,52 @@ TEST(ForceGauge, ABodyDraggedUnderTheFreeBodyInsetStaysInSight) {
   hands.button(false);
 }
 
+// The body the hand pulls stays in sight. push in projector mode at 1920 × 1080: its block
+// taken hold of at its centre and pulled to the right at 12 px a frame for 2.5 s, the mouse
+// running on over the panels beside the world to the screen's edge, and held there for a second.
+// In every frame the block's box on the screen, and the gauge's ring, lie inside what the world
+// view shows; once the hand is stopped at the view's edge the status line says so, and it says
+// it no more once the hand lets go. Issue 31: the view holds still while the hand pulls (so that
+// the mouse's place keeps its meaning), and a teacher's drag pulled the block out of the picture.
+TEST(ForceGauge, TheBodyTheHandPullsStaysInSight) {
+  ClassroomHands hands(gauge_options("push", {}, true), ImVec2(1920.0f, 1080.0f));
+  draw::FrameRecord record;
+  hands.frame(0.0, &record);
+  const b2Body* block = hands.lesson().scene().body("block");
+  const ImVec2 held = hands.take_hold_and_play("block");
+  bool stopped_said = false;
+  float furthest_mouse = held.x;
+  const auto check = [&](const std::string& when) {
+    ASSERT_EQ(record.lanes.size(), 1u);
+    const ImVec4& shown = record.lanes.front().shown;
+    const draw::Camera& camera = record.lanes.front().camera;
+    const b2AABB box = lessons::body_box(block);
+    const ImVec2 low = camera.to_screen(box.lowerBound), high = camera.to_screen(box.upperBound);
+    EXPECT_TRUE(low.x >= shown.x && high.x <= shown.z && high.y >= shown.y && low.y <= shown.w)
+        << when << ": the block spans x " << low.x << " to " << high.x << ", y " << high.y << " to " << low.y
+        << "; the view shows x " << shown.x << " to " << shown.z << ", y " << shown.y << " to " << shown.w;
+    const ImVec2 ring = camera.to_screen(hands.lesson().scene().grab_target());
+    EXPECT_TRUE(ring.x >= shown.x && ring.x <= shown.z && ring.y >= shown.y && ring.y <= shown.w)
+        << when << ": the gauge's ring at " << ring.x << ", " << ring.y << " is out of the view";
+    stopped_said = stopped_said || hands.classroom().status().find("edge of the view") != std::string::npos;
+  };
+  for (int i = 1; i <= 150; ++i) {
+    furthest_mouse = std::min(held.x + 12.0f * static_cast<float>(i), 1919.0f);
+    ImGui::GetIO().MousePos = ImVec2(furthest_mouse, held.y);
+    hands.frame(1.0 / 60.0, &record);
+    check("pulled for " + std::to_string(i) + " frames");
+  }
+  for (int i = 0; i < 60; ++i) {
+    hands.frame(1.0 / 60.0, &record);
+    check("held at the screen's edge for " + std::to_string(i) + " frames");
+  }
+  ASSERT_GT(furthest_mouse, record.lanes.front().shown.z) << "the mouse went past the view's right edge";
+  ASSERT_EQ(hands.lesson().scene().grabbed(), block) << "the hand still holds the block";
+  EXPECT_TRUE(stopped_said) << "the status line never said the hand stopped at the view's edge: " << hands.classroom().status();
+  hands.button(false);
+  EXPECT_EQ(hands.classroom().status().find("edge of the view"), std::string::npos) << hands.classroom().status();
+}
+
 // The lesson's run ends (and pauses) at its duration, but not under a hand that is pulling: the
 // trial's teacher had push pause mid-pull. Let go past the end, it pauses then.
 TEST(ForceGauge, TheRunsEndWaitsForAPullingHand) {
