@@ -62,6 +62,28 @@ TEST(TheoryTable, AMarkBesideAClaimsVerdictSaysItChecksTheModel) {
   }
 }
 
+// A held block's measured acceleration is the step's float rounding (pulley held at μs 0.7
+// measures −4.6×10⁻⁸ m/s², under ε·g, what a step resolves: lessons::motion_resolution): the
+// picture's table shows it as 0, not as a power of ten.
+TEST(TheoryTable, AHeldBlocksAccelerationUnderWhatTheStepResolvesIsShownAsZero) {
+  draw::HeadlessRenderer renderer(1280, 720);
+  draw::LessonAt at("pulley", {{"mu_s", "0.7"}}, 3.0);
+  const std::vector<lessons::ExpectationResult> rows = at.lesson->expectations();
+  const auto row = std::find_if(rows.begin(), rows.end(), [](const lessons::ExpectationResult& r) { return r.name == "acceleration"; });
+  ASSERT_NE(row, rows.end());
+  ASSERT_TRUE(row->measured_yet && row->measured != 0.0) << "the held block measured no rounding: the test tests nothing";
+  draw::FrameRecord record;
+  renderer.render(*at.lesson, at.framing, &record);
+  int zeros = 0;
+  for (const draw::ShownText& text : record.texts) {
+    if (text.text.find("m/s") != std::string::npos) {
+      EXPECT_EQ(text.text.find("\u00d710\u207b"), std::string::npos) << "\"" << text.text << "\" in " << text.panel;
+    }
+    if (text.text == "0 m/s\u00b2") ++zeros;
+  }
+  EXPECT_GE(zeros, 2) << "theory and measured, both 0 m/s²";
+}
+
 INSTANTIATE_TEST_SUITE_P(Screens, Layout, ::testing::ValuesIn(screens), screen_name);
 
 class WindowLayout : public ::testing::TestWithParam<WindowScreen> {};
