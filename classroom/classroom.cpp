@@ -137,9 +137,12 @@ Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
     tools_.draw_stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height),
                                 playback_->lesson().scene().time(), *fonts_);
   }
+  // The help's strip over the transport bar, in the body's text that the panel is drawn in.
+  strips.help_height = help_strip_height(window_.help);
   ImGui::PopFont();
   strips.origin = ImVec2(0.0f, menu_height + stopwatch_height);
-  strips.area = ImVec2(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - strips.transport_height));
+  strips.area = ImVec2(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - strips.help_height -
+                                                     strips.transport_height));
   return strips;
 }
 
@@ -244,32 +247,6 @@ void Classroom::draw_more_tabs() {
   if (map_shown) stability_.draw_tab(playback_->lesson(), mystery_.hidden(), controls_);
 }
 
-namespace {
-
-// Where the help panel first opens: over the plots' row (and the legend's column beside it on a
-// projector), which shows nothing before the first run. The column keeps the sliders and the
-// class's questions in sight: a first window's help stood over the Predict tab, its question and
-// its Reveal button (a teacher's projector trial). Where the plots' row is too low to read a
-// few keys in (a lesson with no plots, whose world takes the row), in the column under the
-// sliders instead, at least a third of the column high (a lesson whose sliders fill more gives
-// up the lowest ones), the column's whole width.
-ImVec4 help_room(const draw::FrameLayout& layout, float scale) {
-  const float bottom = layout.column_corner.y + layout.column_size.y;
-  if (layout.plots_size.y >= help_least_height_points * scale) {
-    const float right = layout.legend_beside_plots ? layout.legend_corner.x + layout.legend_size.x
-                                                   : layout.plots_corner.x + layout.plots_size.x;
-    return ImVec4(layout.plots_corner.x, layout.plots_corner.y, right, layout.plots_corner.y + layout.plots_size.y);
-  }
-  float top = layout.column_corner.y;
-  if (const ImGuiWindow* sliders = ImGui::FindWindowByName("###parameters"); sliders != nullptr && sliders->Active) {
-    top = sliders->Pos.y + sliders->Size.y;
-  }
-  top = std::min(top, bottom - layout.column_size.y / 3.0f);
-  return ImVec4(layout.column_corner.x, top, layout.column_corner.x + layout.column_size.x, bottom);
-}
-
-}  // namespace
-
 void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
   const float s = fonts_->scale;
   ImGui::PushFont(fonts_->body);
@@ -280,7 +257,8 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
                  layout.world_size.x - 12.0f * s, *playback_, watch_.failed, browser_, script_words_, theme(window_.theme), controls_);
   transport_.draw(ImVec2(0.0f, display.y - strips.transport_height), ImVec2(display.x, strips.transport_height), *playback_,
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
-  help_panel(window_.help, browser_, script_words_.paths, exports_.folder, help_room(layout, s));
+  help_panel(window_.help, browser_, script_words_.paths, exports_.folder, ImVec2(0.0f, strips.origin.y + strips.area.y),
+             ImVec2(display.x, strips.help_height));
   stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
   open_script_.draw([this](const std::string& path) { return open(path); }, s, theme(window_.theme));
   const SetupFiles setups{[this](const std::string& path) { return open_setup(path); },

@@ -11,36 +11,46 @@
 
 namespace frictionlab::classroom {
 
-void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder,
-                const ImVec4& opens_over) {
+float help_strip_height(bool shown) {
+  if (!shown) return 0.0f;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float title_bar = ImGui::GetFontSize() + 2.0f * style.FramePadding.y;
+  // A row of the keys' table: a line and the cells' padding above and below it.
+  const float row = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y;
+  return title_bar + 3.0f * row + 2.0f * style.WindowPadding.y;
+}
+
+void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder, ImVec2 corner,
+                ImVec2 size) {
   if (!shown) return;
-  // In the middle of the window it hid the spring, the block and half the sliders of the first
-  // lesson a newcomer sees (a trial of the web page). Its keys and words scroll in its room.
-  ImGui::SetNextWindowPos(ImVec2(opens_over.x, opens_over.y), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(opens_over.z - opens_over.x, opens_over.w - opens_over.y), ImGuiCond_FirstUseEver);
+  // Docked: it keeps its strip, which the lesson's frame was laid out above. Its keys and words
+  // scroll in it.
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(size);
   // Opaque, and square-cornered: a rounded window's title bar and body are each filled with an
   // anti-aliased fringe, and where the two fringes meet, one row of pixels is only partly
   // covered. Over the tabs it stands on, their words showed through that row as a band of
   // glyphs under the title (a projector trial). Square rectangles are filled edge to edge.
   ImGui::SetNextWindowBgAlpha(1.0f);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
-  const bool open = ImGui::Begin("Help (F1 shows and hides it)", &shown);
+  const bool open = ImGui::Begin("Help (F1 shows and hides it)", &shown,
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                     ImGuiWindowFlags_NoSavedSettings);
   ImGui::PopStyleVar();
   if (open) {
-    // Kept inside the window when the window shrinks under it (a page's editor opening beside
-    // the world, a smaller browser window): ImGui keeps only a corner of it in sight.
-    const ImVec2 display = ImGui::GetIO().DisplaySize, at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    const ImVec2 inside(std::clamp(at.x, 0.0f, std::max(0.0f, display.x - size.x)),
-                        std::clamp(at.y, 0.0f, std::max(0.0f, display.y - size.y)));
-    if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(inside);
-    // The keys' column as wide as its widest key, the words wrapped in what is left: at
-    // projector size the panel is narrower than its longest line (the trial saw "…and pla").
-    if (ImGui::BeginTable("keys", 2)) {
-      ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
-      ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
+    // The keys in pairs of columns across the strip's width (a key, then what it does), as many
+    // pairs as leave each key's words about 28 letters' width, in the list's order a row at a
+    // time: its three lines show the first keys, playing, stepping and resetting.
+    const int pairs = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / (28.0f * ImGui::GetFontSize())), 1, 3);
+    // The keys' columns as wide as their widest key, the words wrapped in what is left: at
+    // projector size a column is narrower than its longest line (the trial saw "…and pla").
+    if (ImGui::BeginTable("keys", 2 * pairs)) {
+      for (int pair = 0; pair < pairs; ++pair) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
+      }
       for (const classroom_state::WindowKey& row : classroom_state::window_keys()) {
         const std::string_view what = browser && !row.on_the_page.empty() ? row.on_the_page : row.does;
-        ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row.key.data(), row.key.data() + row.key.size());
         ImGui::TableNextColumn();

@@ -10,16 +10,18 @@
 
 namespace frictionlab::classroom {
 
-// The least room the panel opens in, in points at text scale 1: its title and about six rows
-// of keys, the rest a scroll away.
-inline constexpr float help_least_height_points = 180.0f;
+// The height of the strip the panel is docked in, in pixels with the current font (0 when it is
+// not shown): its title bar and three rows of keys, the rest a scroll away. The classroom lays
+// the lesson's frame out above the strip, so the panel covers nothing of it. Over the plots'
+// row it hid the key plot once the run began, and the prediction boxes where the column took it
+// (two teacher trials on a projector); no part of a lesson's frame is spare at 1920x1080 in
+// projector mode or at 1280x720.
+float help_strip_height(bool shown);
 
 // On the page (`browser`) F5 runs the script as last applied; with
 // `script_paths` the files are saved in `output_folder` (else they arrive as downloads).
-// `opens_over`: where it first opens (x0, y0, x1, y1): the room the classroom gives it, over the
-// plots (empty before the first run), so that a newcomer's first window shows the world, the
-// sliders and the class's questions beside it. Moved or resized, it stays where the user put it.
-void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder,
-                const ImVec4& opens_over);
+// `corner`, `size`: its strip, the window's width under the lesson's frame, help_strip_height high.
+void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder, ImVec2 corner,
+                ImVec2 size);
 
 }  // namespace frictionlab::classroom

@@ -90,6 +90,7 @@ void Playback::refresh_readings() {
   try {
     readings_.duration = lesson_->duration();
     readings_.expectations = lesson_->expectations(failure);
+    lessons::zero_unresolved_motion(readings_.expectations, *lesson_);
     if (failure) std::rethrow_exception(failure);
   } catch (const InvalidInput& error) {
     if (!failure) readings_.expectations.clear();

@@ -736,6 +736,7 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   if (style.readings == nullptr) {
     own.duration = lesson.duration();
     own.expectations = lesson.expectations();
+    lessons::zero_unresolved_motion(own.expectations, lesson);
   }
   const lessons::LessonReadings& readings = style.readings ? *style.readings : own;
   const ColumnChoice column = choose_column(lesson, style, display, readings);

@@ -806,6 +806,6 @@ expect { "bottom block's acceleration at the end", unit = "m/s²",
 
 -- Predictions: the class says what it expects before Play; theory stays hidden until revealed.
 predict { "friction on the top block halfway, forward", unit = "N",
-  question = "Halfway through the time the two slide together, how hard does friction push the top block forward (a minus sign for backward)?" }
+  question = "Halfway through sliding together, friction on the top block, forward (− if back)?" }
 predict { "the top block starts to slip at a pull of", unit = "N",
   question = "How hard is the pull when the top block stops keeping up?" }

@@ -39,7 +39,7 @@ lesson {
     return math.max(starts + time_to_tip(starts, math.rad(20)), shown)
   end,
   order = 30,
-  -- Pushed below d/(2·mu_s) = 0.5 m it slides upright; above, it tips about its front edge.
+  -- Pushed below width/(2·mu_s) = 0.5 m it slides upright; above, it tips about its front edge.
   moments = {
     { "pushed_low", at = 3, set = { push_height = 0.2 },
       shows = function() return value_at("slipping", time()) == 1 and math.abs(value_at("tilt", time())) < 0.5 end },
@@ -91,11 +91,13 @@ probe { "contact_points", read = { touch, "points" } }
 -- tips or slides, whichever push comes first, and its two levels are those pushes (negative, as
 -- friction is here). The box slides at the most static friction gives, max(mu_s, mu_k)·N as the
 -- solver's rule has it (see predicted() below); it tips when the push's moment about the front
--- edge, F·h, passes the weight's, m·g·d/2.
+-- edge, F·h, passes the weight's, m·g·d/2. The level says it in the sliders' words, "width" and
+-- "push height": a class read an h beside the slider "height", which is the box's. On two lines,
+-- so that it keeps to the column beside a projector's key plot as "−m·g·d/(2h)" did.
 plot { "Friction against the push", x = "push", y = { "friction_force" },
   levels = {
     { "slides: −μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g end },
-    { "tips: −m·g·d/(2h)", function() return -param.mass * g * param.width / (2 * param.push_height) end },
+    { "tips: −m·g·width\n/(2·push height)", function() return -param.mass * g * param.width / (2 * param.push_height) end },
   } }
 plot { "How far the box tips", y = { "tilt" } }
 plot { "How far the box slides", y = { "slide" } }

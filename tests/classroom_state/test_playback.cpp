@@ -4,6 +4,8 @@
 // in the running window is tested with the window: tests/classroom/test_script_messages.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "classroom_state/playback.h"
@@ -14,6 +16,49 @@ namespace {
 
 // push at its defaults, 240 Hz: the block breaks away at 3.92 N, 1.96 s, and the run ends 1.5 s later.
 std::string push_lesson() { return lessons::resolve_lesson("push"); }
+
+// A held block's measured acceleration is the rounding of the step's float numbers, and the
+// window printed it (1.1×10⁻⁹ m/s² in a teacher's trial). What one world step h resolves under
+// gravity g: a speed of ε·g·h, an acceleration of ε·g (ε = 2⁻²³, a float's). The rows read below
+// it are 0 as the window shows them; the lesson's own measurement is not 0 (else this tests
+// nothing), and a motion the step resolves is shown as measured.
+TEST(Playback, AMeasuredSpeedOrAccelerationUnderWhatTheStepResolvesReadsZero) {
+  const double epsilon = std::ldexp(1.0, -23), g = 9.81, h = 1.0 / 240.0;
+  const lessons::MotionResolution resolution = lessons::motion_resolution(h, g);
+  EXPECT_NEAR(resolution.speed, epsilon * g * h, 1e-6 * epsilon * g * h);
+  EXPECT_NEAR(resolution.acceleration, epsilon * g, 1e-6 * epsilon * g);
+  struct Case {
+    const char* lesson;
+    std::map<std::string, std::string> set;
+    const char* row;
+    bool held;
+  };
+  const Case cases[] = {{"incline", {{"angle", "15"}, {"mass", "5"}}, "mean acceleration down the slope", true},
+                        {"pulley", {{"mu_s", "0.7"}}, "acceleration", true},
+                        {"incline", {}, "mean acceleration down the slope", false},
+                        {"push", {}, "speed at the end", false}};
+  for (const Case& c : cases) {
+    Playback playback(lessons::resolve_lesson(c.lesson), c.set, {});
+    playback.run_to(playback.lesson().duration());
+    playback.refresh_readings();
+    const auto row_in = [&](const std::vector<lessons::ExpectationResult>& rows) {
+      const auto row = std::find_if(rows.begin(), rows.end(), [&](const lessons::ExpectationResult& r) { return r.name == c.row; });
+      EXPECT_NE(row, rows.end()) << c.lesson << ": no row " << c.row;
+      return row == rows.end() ? lessons::ExpectationResult{} : *row;
+    };
+    const lessons::ExpectationResult measured = row_in(playback.lesson().expectations());
+    const lessons::ExpectationResult shown = row_in(playback.readings().expectations);
+    ASSERT_TRUE(measured.measured_yet && shown.measured_yet) << c.lesson;
+    if (c.held) {
+      EXPECT_NE(measured.measured, 0.0) << c.lesson << ": the held block measured no rounding: the case tests nothing";
+      EXPECT_LT(std::abs(measured.measured), epsilon * g) << c.lesson;
+      EXPECT_EQ(shown.measured, 0.0) << c.lesson << ": " << measured.measured << " " << measured.unit << " is shown";
+    } else {
+      EXPECT_GT(std::abs(measured.measured), 1.0) << c.lesson;
+      EXPECT_EQ(shown.measured, measured.measured) << c.lesson;
+    }
+  }
+}
 
 TEST(Playback, RealTimeRunsWholeFramesOfTheLessonAtItsSpeed) {
   Playback playback(push_lesson(), {}, {});

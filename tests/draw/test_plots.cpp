@@ -948,19 +948,26 @@ TEST(PlotLevels, UnderAMysteryTheColumnIsAsWideWhateverTheHiddenValues) {
 }
 
 // Issue 31, a teacher's trial: incline's key number, its critical angle (tan θc = μs: 30.96° at
-// its defaults), was shown nowhere on its key plot. Its −μs·N level says it, written in full
-// beside the data on a projector, and follows the coefficient: 34.99° at μs 0.7.
-TEST(PlotLevels, InclinesKeyPlotSaysItsCriticalAngle) {
+// its defaults), was shown nowhere on its key plot; then a level said it glued to the friction's
+// ("θc = 30.96°: −μs·N = −4.82 N", the next trial). The key plot's title says it, following the
+// coefficient (34.99° at μs 0.7), and each level's text says one force: no θc, one "=".
+TEST(PlotLevels, InclinesKeyPlotSaysItsCriticalAngleInItsTitleAndEachLevelOneForce) {
   for (const auto& [mu_s, angle] : {std::pair{"0.6", "30.96\u00b0"}, std::pair{"0.7", "34.99\u00b0"}}) {
     LessonAt at("incline", {{"mu_s", mu_s}}, 0.0);
     at.step_to(at.lesson->duration());
+    EXPECT_NE(at.lesson->plots().front().title.find(std::string("\u03b8c = ") + angle), std::string::npos)
+        << "incline at \u03bcs " << mu_s << ": the key plot's title \"" << at.lesson->plots().front().title
+        << "\" does not say \u03b8c = " << angle;
     const ChartLayout layout = layout_plot(*at.lesson, 0, at.lesson->duration(), corner, ImVec2(900.0f, 540.0f), projector_fonts(),
                                            true, true);
-    bool said = false;
+    int levels = 0;
     for (const ChartLayout::Level& level : layout.levels) {
-      said = said || (level.beside && level.text.find(std::string("\u03b8c = ") + angle) != std::string::npos);
+      if (level.text.empty()) continue;
+      ++levels;
+      EXPECT_EQ(level.text.find("\u03b8c"), std::string::npos) << "\"" << level.text << "\" says the angle too";
+      EXPECT_EQ(std::count(level.text.begin(), level.text.end(), '='), 1) << "\"" << level.text << "\" says two things";
     }
-    EXPECT_TRUE(said) << "incline at \u03bcs " << mu_s << ": no level says \u03b8c = " << angle;
+    EXPECT_EQ(levels, 2) << "incline at \u03bcs " << mu_s;
   }
 }
 

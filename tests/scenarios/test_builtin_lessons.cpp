@@ -8,6 +8,7 @@
 #include <map>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include <set>
 
 #include "lessons/runtime/catalog.h"
+#include "lessons/runtime/class_words.h"
 #include "physics/closed_forms.h"
 #include "tests/lesson_scripts.h"
 
@@ -76,6 +78,40 @@ TEST(DrivenWheel, SaysTheTractionLimitIsNotReachedOnlyOnceTheRunIsOver) {
 // below, far outside the row's "the same" band (2 % of 3.92 N, the push's growth in a step and
 // 1 mN: about 0.12 N), so "smaller" from the second step of the slide to the end. Not before the
 // breakaway (theory's 1.96 s at 2 N/s).
+// A class read tipping_box's tipping level, "−m·g·d/(2h)", beside a slider named "height", the
+// box's, while the h was the push's height (issue 31). The level's formula says its lengths in the
+// sliders' own words ("width", "push height"), and no lone letter stands for a length.
+TEST(TippingBox, TheTippingLevelSaysItsLengthsInTheSlidersWords) {
+  Lesson lesson(resolve_lesson("tipping_box"));
+  std::vector<std::string> slider_words;
+  for (const Parameter& parameter : lesson.parameters()) slider_words.push_back(class_words(parameter.name));
+  ASSERT_NE(std::find(slider_words.begin(), slider_words.end(), "push height"), slider_words.end());
+  ASSERT_NE(std::find(slider_words.begin(), slider_words.end(), "width"), slider_words.end());
+  int tipping = 0;
+  for (const Plot& plot : lesson.plots()) {
+    for (const PlotLevel& level : plot.levels) {
+      if (level.label.rfind("tips", 0) != 0) continue;
+      ++tipping;
+      EXPECT_NE(level.label.find("width"), std::string::npos) << level.label;
+      EXPECT_NE(level.label.find("push height"), std::string::npos) << level.label;
+      // Its words: the runs of Latin letters. One letter is a symbol: only the mass's m, g and
+      // N, none of them a length.
+      std::string word;
+      for (const char c : level.label + " ") {
+        if (std::isalpha(static_cast<unsigned char>(c))) {
+          word += c;
+          continue;
+        }
+        if (word.size() == 1) {
+          EXPECT_NE(std::string("mgN").find(word), std::string::npos) << level.label << ": " << word;
+        }
+        word.clear();
+      }
+    }
+  }
+  EXPECT_EQ(tipping, 1) << "tipping_box has no tipping level: the test tests nothing";
+}
+
 TEST(Push, SaysSlidingVsBreakawayOnceTheBlockSlides) {
   Lesson lesson(resolve_lesson("push"));
   const auto compared_row = [&] {

@@ -247,6 +247,34 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
 // than the column leaves beside the numbers): stacked_blocks with the stopwatch on, and
 // check_the_article, contact_area, friction_models, lubricated, terrain and wedge. Theirs
 // scrolls, after the class's lines; each must still break the rule, so the lists only shrink.
+// stacked_blocks' first question ran to three lines in projector mode ("Halfway through the time
+// the two slide together, how hard does friction push the top block forward (a minus sign for
+// backward)?", a teacher's trial): the class reads a question of one or two lines at a glance.
+// Each question's text as drawn before the reveal is at most two of its panel's lines high (a
+// line: the one-line "measured: …" beside its answer).
+TEST(ProjectorColumn, StackedBlocksQuestionsFitTwoLines) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), window_screens[2]);
+  options.window.predictions = true;
+  Classroom window(options);
+  draw::FrameRecord record;
+  for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+  const std::optional<std::size_t> measured = lower_panel_text(record, 0, "measured: ", true);
+  ASSERT_TRUE(measured.has_value());
+  const float line = record.texts[*measured].needed.w - record.texts[*measured].needed.y;
+  int questions = 0;
+  for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
+    const std::optional<std::size_t> asked = lower_panel_text(record, 0, prediction.question);
+    ASSERT_TRUE(asked.has_value()) << prediction.question;
+    ++questions;
+    const float height = record.texts[*asked].needed.w - record.texts[*asked].needed.y;
+    EXPECT_LE(height, 2.0f * line + 0.5f) << "\"" << prediction.question << "\" takes " << height / line << " lines";
+  }
+  EXPECT_EQ(questions, 2);
+}
+
 TEST(ProjectorColumn, EveryTheoryRowAndClassLineIsInSightAtTheRunsEndRevealedOrNot) {
   const std::set<std::string> not_yet = {"check_the_article", "contact_area", "friction_models", "lubricated", "terrain",
                                          "wedge"};
