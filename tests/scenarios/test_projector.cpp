@@ -247,20 +247,38 @@ TEST(ProjectorColumn, EverySliderQuestionAndAnswerIsInSightAtTheOpeningAndReveal
 // than the column leaves beside the numbers): stacked_blocks with the stopwatch on, and
 // check_the_article, contact_area, friction_models, lubricated, terrain and wedge. Theirs
 // scrolls, after the class's lines; each must still break the rule, so the lists only shrink.
+// A lesson in the window at 1920 × 1080 in projector mode, predicting first, with the context
+// and host that draw it.
+struct PredictingProjector {
+  const ImVec2 display{1920.0f, 1080.0f};
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host{nullptr};
+  Classroom window;
+  explicit PredictingProjector(const std::string& lesson) : window(predicting(lesson)) {}
+  static ClassroomOptions predicting(const std::string& lesson) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson(lesson), window_screens[2]);
+    options.window.predictions = true;
+    return options;
+  }
+  // The record of the window's frame after `frames` drawn at t = 0.
+  draw::FrameRecord frame_after(int frames) {
+    draw::FrameRecord record;
+    for (int frame = 0; frame < frames; ++frame) {
+      draw_window_frame(gl, host, window, display, 0.0, frame == frames - 1 ? &record : nullptr);
+    }
+    return record;
+  }
+};
+
 // stacked_blocks' first question ran to three lines in projector mode ("Halfway through the time
 // the two slide together, how hard does friction push the top block forward (a minus sign for
 // backward)?", a teacher's trial): the class reads a question of one or two lines at a glance.
 // Each question's text as drawn before the reveal is at most two of its panel's lines high (a
 // line: the one-line "measured: …" beside its answer).
 TEST(ProjectorColumn, StackedBlocksQuestionsFitTwoLines) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
-  ClassroomOptions options = class_window(lessons::resolve_lesson("stacked_blocks"), window_screens[2]);
-  options.window.predictions = true;
-  Classroom window(options);
-  draw::FrameRecord record;
-  for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+  PredictingProjector projector("stacked_blocks");
+  Classroom& window = projector.window;
+  const draw::FrameRecord record = projector.frame_after(4);
   const std::optional<std::size_t> measured = lower_panel_text(record, 0, "measured: ", true);
   ASSERT_TRUE(measured.has_value());
   const float line = record.texts[*measured].needed.w - record.texts[*measured].needed.y;
@@ -684,19 +702,14 @@ TEST(ProjectorPlots, ALessonWithNoPlotsGivesTheirRowToTheWorld) {
 // apart, and the levels −μs·N = −3.92 N and −μk·N = −2.94 N labelled on it once the theory is
 // revealed, not before (they are theory, as its curves are).
 TEST(ProjectorPlots, PushsKeyPlotReadsInNewtonsAndLabelsItsLevelsAfterTheReveal) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
-  ClassroomOptions options = class_window(lessons::resolve_lesson("push"), window_screens[2]);
-  options.window.predictions = true;
-  Classroom window(options);
+  PredictingProjector projector("push");
+  Classroom& window = projector.window;
   struct Seen {
     std::vector<double> ticks;
     std::vector<std::string> levels;
   };
   const auto seen = [&] {
-    draw::FrameRecord record;
-    for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+    const draw::FrameRecord record = projector.frame_after(3);
     Seen found;
     for (const draw::FrameRecord::Plot& plot : record.plots) {
       if (plot.number == 0) found.ticks = plot.layout.y_ticks;
