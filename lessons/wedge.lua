@@ -933,9 +933,28 @@ local function raised_by(t)
   contact_lost_by(t)
   return raised[math.min(sample(t), #raised)] or 0
 end
+-- A landing at the reading: the model's block lands plastically, its impulse taken in an
+-- instant, where the world's meets the surface in a step and is pushed out of it over the next,
+-- so its N in those steps holds the landing's impulse over h (a 0.1 kg block on a plank
+-- swinging 40° at 0.63 rad/s, shaken at 30 m/s²: the model lands 3 ms before the halfway
+-- reading; the world's N reads 40 N there and 70 N the step after at 240 Hz, 80 and 137 N at
+-- 480 Hz, against the model's 1.1 and 2.2 N). With the world's landing up to three steps either
+-- side of the model's (the lift-off row's steps), a reading from five steps after a landing of
+-- the model's to three before it may hold the impact, and the row says so.
+local function landing_at_the_reading(t)
+  for _, event in ipairs(turning.events) do
+    if event.kind == "landing" and event.t > t - 5 * step_length() and event.t < t + 3 * step_length() then
+      return "a landing's impact"
+    end
+  end
+end
 expect { "normal force halfway", unit = "N",
-  predicted = function() return no_model(duration / 2) or mid_step(true, "normal", duration / 2) end,
-  measured = function() return no_model(duration / 2) or recorded("normal_force", duration / 2) end,
+  predicted = function()
+    return no_model(duration / 2) or landing_at_the_reading(duration / 2) or mid_step(true, "normal", duration / 2)
+  end,
+  measured = function()
+    return no_model(duration / 2) or landing_at_the_reading(duration / 2) or recorded("normal_force", duration / 2)
+  end,
   -- Read where the world reads it (the model's mid-step, as the reading is the step's mean), the
   -- rest is named here:
   -- - The instants inside the step: Box2D solves a step's contact along the normal the step
