@@ -243,14 +243,17 @@ EMSCRIPTEN_KEEPALIVE const char* frictionlab_status_words() {
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_running_error() { return hand_over(page_classroom->running_script_error()); }
 // Lua's message in plain words, for the page's editor and bar (classroom_state/plain_words.h).
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_plain_words(const char* message) { return hand_over(classroom_state::plain_words(message)); }
-// An ImGui panel by its name: its corners, how far it is scrolled down and its font's height
-// ("x0 y0 x1 y1 scroll font"), or "" when no such panel was drawn.
+// An ImGui panel by its name: its corners, how far it is scrolled down, its font's height and the
+// height inside it that its content scrolls in ("x0 y0 x1 y1 scroll font inner"), or "" when no
+// such panel was drawn. (A wheel's notch scrolls a panel five lines, or two thirds of that height
+// where it is less: ImGui's step.)
 EMSCRIPTEN_KEEPALIVE const char* frictionlab_panel(const char* name) {
   const ImGuiWindow* panel = ImGui::FindWindowByName(name);
   if (panel == nullptr || !panel->WasActive) return hand_over("");
   return hand_over(std::to_string(panel->Pos.x) + " " + std::to_string(panel->Pos.y) + " " +
                    std::to_string(panel->Pos.x + panel->Size.x) + " " + std::to_string(panel->Pos.y + panel->Size.y) + " " +
-                   std::to_string(panel->Scroll.y) + " " + std::to_string(panel->CalcFontSize()));
+                   std::to_string(panel->Scroll.y) + " " + std::to_string(panel->CalcFontSize()) + " " +
+                   std::to_string(panel->InnerRect.GetHeight()));
 }
 
 }  // extern "C"
