@@ -183,8 +183,10 @@ TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
 }
 
 // The speed tool and the contact's word say the same of the block the force gauge pulls: push's
-// 10 kg block (its own push at its slowest, 0.2 N/s) pulled by hand at 0.25 to 2 px a frame for
-// 3 s and held still for 1 s. In every frame where its contact with the floor is "slipping",
+// 10 kg block (its own push at its slowest, 0.2 N/s) pulled by hand at 0.25 and at 2 px a frame
+// for 3 s and held still for 1 s (the slow pull gives the creeping slips, 3 frames under 0.5 mm/s;
+// the fast one most of the 280 slipping frames; 0.5 and 1 px a frame, tried too, added no slow
+// frame, and doubled the test's 67 s under the sanitizers). In every frame where its contact with the floor is "slipping",
 // the speed shown beside it is not zero and reads the block's speed to two figures at least
 // (mm/s below 0.1 m/s), but in the one frame at a turn of its state, where the body has not
 // moved yet; where it sticks, the speed shown is that of a body at rest. Issue 31: a
@@ -192,7 +194,7 @@ TEST(MeasuringTools, DistanceMarksCountFromWhereTheBodyStoodAtTheStart) {
 // second printed to the millimetre a second.
 TEST(MeasuringTools, TheSpeedShownAgreesWithTheContactsWord) {
   int slipping = 0, slow = 0;
-  for (const float pixels_per_frame : {0.25f, 0.5f, 1.0f, 2.0f}) {
+  for (const float pixels_per_frame : {0.25f, 2.0f}) {
     ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
     hands.frame();
     const b2Body* block = hands.lesson().scene().body("block");
