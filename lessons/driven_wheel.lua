@@ -143,15 +143,26 @@ end
 --   change, over h. The gripping friction is an impulse over h that stops the contact point,
 --   whose speed is the difference of the axle's and the rim's: the mass times that for each,
 --   and 22·2^-24 of the forces of the step (the friction and the weight). The slip's decision
---   compares the friction with mu_s·N to as many operations: that share of the limit.
+--   compares the friction with mu_s·N to as many operations: that share of the limit, and the
+--   friction it compares carries the contact point's rounding as the gripping friction does,
+--   at the speed the wheel has reached by then. Its torque's worth is that friction times
+--   (I + m·r²)/(m·r) = 1.5·r, the torque per newton of friction while gripping. (0.5 kg, r
+--   0.423 m, 6.915 N·m, mu_s 0.724, at 7.6 m/s: 1.5e-3 N·m; the world slipped a step after the
+--   first past the limit, which that step had passed by 2.7e-5 N·m, over the 7.6e-6 N·m the
+--   decision's own share allowed.)
 local operations = 22
 local function allowed()
   local h = step_length()
   local function rate_rounding(value, rate) return operations * 2 ^ -24 * (math.abs(value) / h + math.abs(rate)) end
+  -- The gripping friction's rounding, rolling at `speed` with acceleration `rate`.
+  local function grip_rounding(speed, rate) return param.mass * 2 * rate_rounding(speed, rate) end
   local grip_speed = wheel_theory(param.torque * ramp(gripping_time() - h)).acceleration * gripping_time()
+  local start = spin_start()
+  local speed_at_start = start and wheel_theory(param.torque).acceleration * ramp_integral(0, start) or 0
+  local at_the_limit = start and grip_rounding(speed_at_start, wheel_theory(limit()).acceleration) * 1.5 * param.radius or 0
   return {
-    limit = param.torque * h + operations * 2 ^ -24 * limit(),
-    friction = param.mass * 2 * rate_rounding(grip_speed, wheel_theory(param.torque).acceleration)
+    limit = param.torque * h + operations * 2 ^ -24 * limit() + at_the_limit,
+    friction = grip_rounding(grip_speed, wheel_theory(param.torque).acceleration)
                + operations * 2 ^ -24 * (param.mass * g + wheel_theory(param.torque).friction)
                + (substep_length() < h and wheel_theory(param.torque * h).friction or 0),
     acceleration = rate_rounding(speed_at_end(), wheel_theory(param.torque).acceleration),
