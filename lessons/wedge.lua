@@ -71,6 +71,8 @@ pair { "wood", "wood", mu_s = 0.25, mu_k = 0.18, sliders = { "mu_s", "mu_k" } }
 -- they are copied once here. The plots' theory curves call the functions below for every point
 -- they draw, and a local is cheaper to read than param.NAME or math.sin, which go through tables.
 local sin, floor = math.sin, math.floor
+-- The way a signed quantity points along the surface: −1 or 1 (0 counts as forward).
+local function direction_of(x) return x < 0 and -1 or 1 end
 local theta0, omega = math.rad(param.theta0), param.omega
 local a_x, a_x_omega = param.a_x, param.a_x_omega
 local function theta(t) return theta0 * sin(omega * t) end
@@ -304,7 +306,7 @@ local function rocks_by(t)
           local normal = turning.normal[k - 1] + share * (turning.normal[k] - turning.normal[k - 1])
           local way = turning.friction[k - 1] ~= 0 and turning.friction[k - 1] or turning.friction[k]
           local limit = math.max(param.mu_s, param.mu_k) * (1 + hold_band) * math.max(normal, 0)
-          if way ~= 0 and must_rock(at, (way > 0 and 1 or -1) * limit, normal) then
+          if way ~= 0 and must_rock(at, direction_of(way) * limit, normal) then
             rocks_from = floor(at / spacing + 0.5) + 1
             break
           end
@@ -507,7 +509,7 @@ function drift_step(gap, gap_speed, time_i, dt)
     local lift = raised_at(k)
     local pull = turn_rate * turn_rate * gap - spin_up * lift
     if state == "slipping" then
-      local way = turning.speed[k] < 0 and -1 or 1
+      local way = direction_of(turning.speed[k])
       pull = pull + way * param.mu_k * (spin_up * gap + 2 * turn_rate * gap_speed + turn_rate * turn_rate * lift
                                         + share_rate(k) * substep_length() / mass)
     end
@@ -823,7 +825,6 @@ end
 -- out. So the slide row takes the larger of this and start_drift with breakaways_shifted. Not
 -- followed into a flight. A list over the model's samples, kept for each solution.
 local stepped_for, stepped_slides, stepped_speeds = nil, nil, nil
-local function direction_of(x) return x < 0 and -1 or 1 end
 local function stepped_slide(k)
   if stepped_for ~= horizon then
     stepped_for, stepped_slides, stepped_speeds = horizon, { 0 }, { 0 }
