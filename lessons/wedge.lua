@@ -130,7 +130,7 @@ local spacing = h * math.max(1, math.ceil((duration + 0.1) / (29999 * h)))
 local function model(turning, horizon)
   return theory.wedge { mass = mass, theta0 = param.theta0, omega = omega, a_x = a_x, a_x_omega = a_x_omega,
     mu_s = param.mu_s, mu_k = param.mu_k, duration = horizon, step = spacing, rotation = turning,
-    centre_height = centre_height, start = 0 }
+    centre_height = centre_height, start = 0, world_step = turning and substep_length() or nil }
 end
 -- Solved to a little past the lesson's end, and again twice as far whenever a longer run (the
 -- window running on, or --duration) gets there: the same steps give the same answers. At most
@@ -799,17 +799,11 @@ local function slow_breakaway_by(t)
   slow[t] = false
 end
 
--- The same equations stepped as the world steps them. Box2D changes the plank's velocity once a
--- (sub)step, at its start, so the drive comes as a kick of a(t)·h there (and none in the first
--- step, where the plank moves at the block's own velocity); it decides friction once a step,
--- against the N the step starts with (its Coriolis part from the velocity the block brings into the
--- step); a block that would turn round inside a step stops there, held if static friction can hold
--- it, else sliding back for the rest of the step (the listener's restick correction); a stuck
--- block's breakaway step is held, and the listener pays kinetic friction's due at the next step's
--- start: what was held past μ·N, and (μ − μk)·N for late + h/2, late found from the margin's growth
--- since the step before (breakaway_correction, physics/treatment_stick_slip.cpp); and it moves the
--- block through each step at the step's end velocity. Where the model's block sticks, this one is
--- held too, and it breaks away where the model's does: how far a breakaway's timing moves the slide
+-- The same equations stepped as the world steps them (theory.wedge's stepped_slide and
+-- stepped_speed, given the world's step: physics/wedge_model.h's step_as_the_world says how): the
+-- plank's kick once a step, friction decided once a step, a turn inside a step stopped there, a
+-- breakaway step held and paid back as the listener does, the block moved at the step's end
+-- velocity; following the model's stick and slip, so how far a breakaway's timing moves the slide
 -- is breakaways_shifted's. Stepped so, the reduced equations with the turn end off their exact
 -- solution by a first-order error of the world's sign, halving with the step as the world's does.
 -- On a level plank shaken at 26.49 m/s² (3.254 rad/s) while swinging 2.055° at 6.55 rad/s, 10 kg,
@@ -823,64 +817,8 @@ end
 -- stepped equations', which is not explained yet (the block's own turn and its two contact points
 -- are not in them). start_drift has the turn's drift and the late share of N, which this leaves
 -- out. So the slide row takes the larger of this and start_drift with breakaways_shifted. Not
--- followed into a flight. A list over the model's samples, kept for each solution.
-local stepped_for, stepped_slides, stepped_speeds = nil, nil, nil
-local function stepped_slide(k)
-  if stepped_for ~= horizon then
-    stepped_for, stepped_slides, stepped_speeds = horizon, { 0 }, { 0 }
-    local step = substep_length()
-    local steps_a_sample = math.max(1, floor(spacing / step + 0.5))
-    local limit = math.max(param.mu_s, param.mu_k)
-    local slide, speed, n = 0, 0, 0
-    local held_margin = nil  -- the demand less the limit in the step last held (N), if it was
-    for j = 2, #turning.slide do
-      if turning.contact[j] == "flying" or turning.contact[j - 1] == "flying" then break end
-      for _ = 1, steps_a_sample do
-        local t = n * step
-        local angle = theta(t)
-        local turn_rate = theta0 * omega * math.cos(omega * t)
-        local spin_up = -theta0 * omega * omega * sin(omega * t)
-        -- The turning frame's pulls on the block's centre, as theory.wedge has them (ρ = −slide
-        -- up the slope from the pivot, the centre half the block's height above the surface).
-        local turn_along = -(spin_up * centre_height - turn_rate * turn_rate * slide)
-        local turn_across = spin_up * slide + turn_rate * turn_rate * centre_height
-        local pivot_push = n == 0 and 0 or pivot_acceleration(t) * math.cos(angle)
-        local drive = mass * (g * sin(angle) + pivot_push + turn_along)
-        local normal = math.max(0, mass * (g * math.cos(angle) - pivot_acceleration(t) * sin(angle) - turn_across
-                                           - 2 * turn_rate * speed))
-        local margin = math.abs(drive) - limit * normal
-        if turning.contact[j] == "sticking" then
-          speed, held_margin = 0, margin
-        elseif speed == 0 then
-          if margin <= 0 then
-            held_margin = margin  -- held at the start of a slip, as the world's block may be
-          else
-            local late = 0.5 * step  -- the listener's guess where it knows no step before
-            if held_margin and margin > held_margin then late = math.min(step, step * margin / (margin - held_margin)) end
-            speed = direction_of(drive) * (margin * step + (limit - param.mu_k) * normal * (late + 0.5 * step)) / mass
-            held_margin = nil
-          end
-        else
-          local way = direction_of(speed)
-          local after = speed + step * (drive - way * param.mu_k * normal) / mass
-          if after * way < 0 then
-            if margin <= 0 then
-              after, held_margin = 0, margin
-            else
-              local left = 1 - math.abs(speed) / math.abs(speed - after)  -- the share of the step after the stop
-              after = step * (drive - direction_of(drive) * param.mu_k * normal) / mass * left
-            end
-          end
-          speed = after
-          slide = slide + step * speed
-        end
-        n = n + 1
-      end
-      stepped_slides[j], stepped_speeds[j] = slide, speed
-    end
-  end
-  return stepped_slides[k], stepped_speeds[k]
-end
+-- followed into a flight (the lists end there: nil).
+local function stepped_slide(k) return turning.stepped_slide[k], turning.stepped_speed[k] end
 -- How far the stepped equations end off the exact ones at t (m), and how much faster (m/s); 0
 -- past a flight.
 local function stepping_gap(t)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "physics/validation.h"
@@ -383,6 +384,66 @@ WedgeRun solve_wedge(const WedgeDrive& drive, WedgeLaw law, double t_end, double
     reject(where, "sample_step", range.str(), sample_step);
   }
   return Solver(drive, law).run(t_end, sample_step, max_step);
+}
+
+WedgeStepped step_as_the_world(const WedgeDrive& drive, const WedgeRun& run, double world_step) {
+  validation::require_positive("the wedge stepped as the world", "world_step", world_step);
+  const Solver solver(drive, WedgeLaw::coulomb);
+  const double h = world_step, m = drive.mass, mu_k = drive.mu_k;
+  const double limit = std::max(drive.mu_s, drive.mu_k);
+  const long steps_a_sample = std::max(1L, std::lround(run.sample_step / h));
+  WedgeStepped stepped;
+  if (run.samples.empty()) return stepped;
+  stepped.slide.push_back(0.0);
+  stepped.speed.push_back(0.0);
+  Vector y;  // the slide and its speed; in contact, so no height
+  long n = 0;
+  std::optional<double> held_margin;  // the demand past the limit in the step last held (N), if it was
+  for (std::size_t j = 1; j < run.samples.size(); ++j) {
+    if (run.samples[j].contact == WedgeContact::flight || run.samples[j - 1].contact == WedgeContact::flight) break;
+    for (long i = 0; i < steps_a_sample; ++i, ++n) {
+      const double t = static_cast<double>(n) * h;
+      const Solver::Forces f = solver.forces(t, y);
+      // No kick of the plank's in the first step: it moves at the block's own velocity.
+      const double drive_along = n == 0 ? f.driving - m * f.drive.acceleration * f.drive.cos_theta : f.driving;
+      const double normal = std::max(0.0, f.pressing);
+      const double margin = std::abs(drive_along) - limit * normal;
+      if (run.samples[j].contact == WedgeContact::stick) {
+        y.v = 0.0;
+        held_margin = margin;
+      } else if (y.v == 0.0) {
+        if (margin <= 0.0) {
+          held_margin = margin;  // held at the start of a slip, as the world's block may be
+        } else {
+          // The breakaway step is held; the listener pays what it held past the limit, and
+          // (μ − μk)·N for late + h/2, late from the margin's growth since the step before (its
+          // guess of half a step where it knows none).
+          double late = 0.5 * h;
+          if (held_margin && margin > *held_margin) late = std::min(h, h * margin / (margin - *held_margin));
+          y.v = sign_of(drive_along) * (margin * h + (limit - mu_k) * normal * (late + 0.5 * h)) / m;
+          held_margin.reset();
+        }
+      } else {
+        const double way = sign_of(y.v);
+        double after = y.v + h * (drive_along - way * mu_k * normal) / m;
+        if (after * way < 0.0) {
+          if (margin <= 0.0) {
+            after = 0.0;
+            held_margin = margin;
+          } else {
+            // Stopped inside the step and sliding back for the share of it left.
+            const double left = 1.0 - std::abs(y.v) / std::abs(y.v - after);
+            after = h * (drive_along - sign_of(drive_along) * mu_k * normal) / m * left;
+          }
+        }
+        y.v = after;
+        y.s += h * y.v;
+      }
+    }
+    stepped.slide.push_back(y.s);
+    stepped.speed.push_back(y.v);
+  }
+  return stepped;
 }
 
 }  // namespace frictionlab

@@ -100,6 +100,24 @@ struct WedgeRun {
 WedgeRun solve_wedge(const WedgeDrive& drive, WedgeLaw law, double t_end, double sample_step,
                      double max_step = 1e-3);
 
+// The same equations stepped as a Box2D world and FrictionLab's listener step them, every
+// `world_step`, following `run`'s stick and slip (so a breakaway comes where the model's does):
+// the plank's velocity changes once a step, at its start, so the drive comes as a kick of
+// a(t)·h there (none in the first step, where the plank moves at the block's own velocity);
+// friction is decided once a step against the N the step starts with (its Coriolis part from
+// the velocity the block brings in); a block that would turn round inside a step stops there,
+// held if static friction can hold it, else sliding back for the rest of the step (the
+// listener's restick correction); a breakaway step is held, and kinetic friction's due is paid
+// at the next step's start: what was held past μ·N, and (μ − μk)·N for late + h/2, late from the
+// margin's growth since the step before (physics/treatment_stick_slip.cpp's
+// breakaway_correction); and the block moves through each step at the step's end velocity. The
+// slide and speed at each of `run`'s samples, up to its first flight (the lists end there).
+// Their gap off `run`'s exact ones is the stepping's own first-order error.
+struct WedgeStepped {
+  std::vector<double> slide, speed;
+};
+WedgeStepped step_as_the_world(const WedgeDrive& drive, const WedgeRun& run, double world_step);
+
 // The kinetic energy of a state, J.
 double kinetic_energy(const WedgeDrive& drive, const WedgeState& state);
 

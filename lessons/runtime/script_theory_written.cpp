@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -854,12 +855,14 @@ int velocity_hack(lua_State* state) {
 // or "article" (the article's equation as written: friction opposes the driving force, always
 // sliding). rotation = true puts back the turning surface's terms the article leaves out, for a
 // block whose centre is centre_height above the surface line and starts `start` m up the slope
-// from the pivot; start_speed (m/s, down the slope) starts it moving instead of at rest.
+// from the pivot; start_speed (m/s, down the slope) starts it moving instead of at rest. With
+// world_step (s), also stepped_slide and stepped_speed: the same equations stepped as a Box2D
+// world with the listener steps them at that step (step_as_the_world), up to the first flight.
 int wedge(lua_State* state) {
   return guarded(state, [&] {
     Fields fields(state, 1, "theory.wedge", {"mass", "theta0", "omega", "a_x", "a_x_omega", "mu_s", "mu_k", "g",
                                              "duration", "step", "law", "rotation", "centre_height", "start",
-                                             "start_speed"});
+                                             "start_speed", "world_step"});
     WedgeDrive drive;
     drive.mass = fields.number_in("mass", "kg", 0.0, 1e6, true);
     drive.theta0 = fields.number_in("theta0", "°", -85.0, 85.0) * degrees;
@@ -886,6 +889,12 @@ int wedge(lua_State* state) {
       throw InvalidInput("theory.wedge: duration / step is over 100000 samples; take a longer step or a shorter run");
     }
     const WedgeRun run = solve_wedge(drive, law, duration, step);
+    // Given the world's step, the same equations stepped as the world steps them (the lists
+    // end at the first flight).
+    const std::optional<WedgeStepped> stepped =
+        fields.has("world_step")
+            ? std::optional<WedgeStepped>(step_as_the_world(drive, run, fields.number_in("world_step", "s", 0.0, 1.0, true)))
+            : std::nullopt;
     const auto list = [&](const char* key, auto of) {
       lua_createtable(state, static_cast<int>(run.samples.size()), 0);
       for (std::size_t i = 0; i < run.samples.size(); ++i) {
@@ -936,6 +945,16 @@ int wedge(lua_State* state) {
       lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
     }
     lua_setfield(state, -2, "slip_windows");
+    if (stepped) {
+      for (const auto& [key, values] : {std::pair{"stepped_slide", &stepped->slide}, std::pair{"stepped_speed", &stepped->speed}}) {
+        lua_createtable(state, static_cast<int>(values->size()), 0);
+        for (std::size_t i = 0; i < values->size(); ++i) {
+          lua_pushnumber(state, (*values)[i]);
+          lua_rawseti(state, -2, static_cast<lua_Integer>(i + 1));
+        }
+        lua_setfield(state, -2, key);
+      }
+    }
     set_number(state, "step", step);
     return 1;
   });

@@ -277,6 +277,48 @@ TEST(WedgeModel, ArticleLawWithoutADrivingForceLeavesTheBlockAlone) {
   for (const WedgeState& state : run.samples) EXPECT_EQ(state.slide, 0.0);
 }
 
+// The reduced equations stepped as a Box2D world with the listener steps them, on a level plank
+// shaken at a constant 5 m/s² (μs 0.3, μk 0.2, so it slips from the start): the first step
+// asks nothing (the plank moves at the block's velocity), so it is held with the margin −μs·m·g;
+// the second breaks away, and is paid (a − μs·g)·h and (μs − μk)·g·(late + h/2), late =
+// h·(a − μs·g)/a from the margin's growth; from then on A = a − μk·g a step. So after N steps
+// the speed is A·t less 2·h·A and plus that payment, exactly; the slide (at each step's end
+// speed) is first order off ½·A·t², halving with the step.
+TEST(WedgeModel, SteppedAsTheWorldTheBreakawayIsPaidAndTheSlideIsFirstOrder) {
+  const double a = 5.0, mu_s = 0.3, mu_k = 0.2;
+  const WedgeDrive drive{1.0, 0.0, 0.0, a, 0.0, mu_s, mu_k};
+  const double g = drive.g, big_a = a - mu_k * g;
+  double gaps[2];
+  for (const int rate : {240, 480}) {
+    const double h = 1.0 / rate;
+    const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 1.0, h);
+    ASSERT_EQ(run.samples[1].contact, WedgeContact::slip);
+    const WedgeStepped stepped = step_as_the_world(drive, run, h);
+    ASSERT_EQ(stepped.speed.size(), run.samples.size());
+    const double late = h * (a - mu_s * g) / a;
+    const double paid = (a - mu_s * g) * h + (mu_s - mu_k) * g * (late + 0.5 * h);
+    const std::size_t last = run.samples.size() - 1;
+    const double t = static_cast<double>(last) * h;
+    // Sums of a few hundred steps of doubles: 1e-12 m/s.
+    EXPECT_NEAR(stepped.speed[last], big_a * t - 2.0 * h * big_a + paid, 1e-12) << rate << " Hz";
+    EXPECT_EQ(stepped.speed[1], 0.0) << "the first step is held";
+    gaps[rate == 240 ? 0 : 1] = stepped.slide[last] - 0.5 * big_a * t * t;
+  }
+  // First order: the gap halves with the step (to 5 %: the next order's share at these steps).
+  EXPECT_NEAR(gaps[0] / gaps[1], 2.0, 0.1) << gaps[0] << " m at 240 Hz, " << gaps[1] << " m at 480 Hz";
+}
+
+// The stepped lists end where the model's block first leaves the surface.
+TEST(WedgeModel, SteppedAsTheWorldEndsAtTheFirstFlight) {
+  const WedgeDrive drive{1.0, 30 * degree, 2.0, 25.0, 3.0, 0.5, 0.4};
+  const double h = 1.0 / 240;
+  const WedgeRun run = solve_wedge(drive, WedgeLaw::coulomb, 5.0, h);
+  std::size_t first_flight = 0;
+  while (first_flight < run.samples.size() && run.samples[first_flight].contact != WedgeContact::flight) ++first_flight;
+  ASSERT_LT(first_flight, run.samples.size()) << "no flight to end at";
+  EXPECT_EQ(step_as_the_world(drive, run, h).slide.size(), first_flight);
+}
+
 TEST(WedgeModel, RefusesBadParameters) {
   WedgeDrive drive = example_two();
   drive.mass = 0;
