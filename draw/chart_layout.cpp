@@ -7,6 +7,7 @@
 
 #include "draw/chart.h"
 #include "draw/chart_parts.h"
+#include "draw/drawing.h"
 
 namespace frictionlab::draw {
 
@@ -167,11 +168,14 @@ struct LevelTextRoom {
   const std::vector<std::vector<ImVec2>>& planned;
   float series_reach, theory_reach;
 
+  // The legend's keys count as a text: tipping_box's "slides" level at 1280 × 720 was written
+  // under the legend in the data's corner, its value hidden by "slipping".
   bool meets_texts(const ImVec4& box) const {
     for (const ChartLayout::Level& other : layout.levels) {
-      if (other.at.x < box.z && other.at.z > box.x && other.at.y < box.w && other.at.w > box.y) return true;
+      if (overlaps(other.at, box)) return true;
     }
-    return false;
+    const ImVec4 legend(layout.legend_min.x, layout.legend_min.y, layout.legend_max.x, layout.legend_max.y);
+    return !layout.legend_at.empty() && overlaps(legend, box);
   }
   bool clear(const ImVec4& box) const {
     if (meets_texts(box)) return false;
@@ -221,8 +225,7 @@ struct LevelTextRoom {
   }
 };
 
-void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float text, float s, ImFont* font,
-                       ChartLayout& layout) {
+void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float s, ImFont* font, ChartLayout& layout) {
   // A text stands 3 points and a pixel off its own line, clear of a series drawn along the level
   // (push's slide at −μk·N).
   const float off_line = 3.0f * s + 1.0f;
@@ -233,8 +236,12 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
     if (!y_axis.shows(level.y)) continue;
     const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
     if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
-    const float w = width_of(font, level.text);
-    const auto box_at = [&](float left, float top) { return ImVec4(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + text + 1.0f); };
+    // As high as its lines: tipping_box's tipping level is written on two ("tips: −m·g·width"
+    // over "/(2·push height) = …"), and placed a line high its second ran over the legend and the
+    // "slides" level's text at 1280 × 720.
+    const ImVec2 size = size_of(font, level.text);
+    const float w = size.x, high = size.y;
+    const auto box_at = [&](float left, float top) { return ImVec4(left - 3.0f * s, top - 1.0f, left + w + 3.0f * s, top + high + 1.0f); };
     const float right_end = layout.high_right.x - w - 4.0f * s, left_end = layout.low_left.x + 4.0f * s;
     if (right_end < left_end) {  // wider than the data area (a small picture's plot): its line alone
       layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
@@ -242,13 +249,13 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
     }
     std::vector<float> lefts{right_end, left_end};
     for (float left = right_end - 6.0f * s; left > left_end; left -= 6.0f * s) lefts.push_back(left);
-    const float tops[2] = {y - text - off_line, y + off_line};
+    const float tops[2] = {y - high - off_line, y + off_line};
     std::optional<ImVec4> found;
     for (const float left : lefts) {
       for (const float top : tops) {
-        if (top < layout.high_right.y || top + text > layout.low_left.y) continue;
+        if (top < layout.high_right.y || top + high > layout.low_left.y) continue;
         if (room.clear(box_at(left, top))) {
-          found = ImVec4(left, top, left + w, top + text);
+          found = ImVec4(left, top, left + w, top + high);
           break;
         }
       }
@@ -260,7 +267,7 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
     }
     // None where the data area is too short for it beside the texts placed before it (a small
     // picture's plot): its line alone, rather than two texts over each other.
-    const std::optional<ImVec4> least = room.least_crossed(lefts, tops, w, text, box_at);
+    const std::optional<ImVec4> least = room.least_crossed(lefts, tops, w, high, box_at);
     if (!least) {
       layout.levels.push_back({i, "", ImVec4(0.0f, 0.0f, 0.0f, 0.0f), y, true});
       continue;
@@ -420,7 +427,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
   if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout);
-  else place_level_texts(chart, axes.x, axes.y, layout.level_font->FontSize, s, layout.level_font, layout);
+  else place_level_texts(chart, axes.x, axes.y, s, layout.level_font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {
     layout.active = -1;

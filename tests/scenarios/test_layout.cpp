@@ -202,12 +202,15 @@ std::string legend_on_data(const draw::ChartLayout& plot) {
   return "";
 }
 
-// Every plot's legend off its data, in the window as the class sees it: through the run, before
-// and after the theory is revealed (its curves add keys). With projector text three plots
-// across the screen put 3–5-key legends over the data (wedge, check_the_article, tipping_box,
-// push's friction against the pull after the reveal).
-TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
-  const WindowScreen& screen = GetParam();
+// Every plot of every lesson in the window on `screen` as the class sees it: through the run (at
+// a quarter, half, three quarters and its end, and a fifth of it past the end, where a window
+// still records: tipping_box's box lies tipped, its "no contact" keyed) and after the theory is
+// revealed (its curves add keys; at half, the end and past it), on every page of plots (turned by the → button). `check` has each
+// plot, the lesson's plot titles, where it was seen, and how many plots share its first page's
+// row; every plot is on some page and every page's texts are whole.
+void each_window_plot(const WindowScreen& screen,
+                      const std::function<void(const draw::FrameRecord::Plot& plot, const std::string& title,
+                                               const std::string& where, std::size_t side_by_side)>& check) {
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
@@ -276,34 +279,13 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
       for (const draw::FrameRecord::Plot& plot : plots) {
         ASSERT_LT(plot.number, plot_count) << where;
         seen[plot.number] = true;
-        const std::string& title = window.playback().lesson().plots()[plot.number].title;
-        EXPECT_TRUE(plot.layout.drawable) << where << ": \"" << title << "\" has no data area";
-        // Nor a sliver of data beside its legend: at least half its panel wide, less the panels'
-        // padding (the incline's two plots side by side in projector mode drew their curves
-        // 240 px wide of 575).
-        const float strip = draw::FrameLayout::of(display, window.ui_scale(display)).plots_size.x;
-        // (A plot alone across the strip has nothing to give way to.)
-        const std::size_t side_by_side = std::min<std::size_t>(record.plots.size(), 3);
-        const float panel = strip / static_cast<float>(side_by_side);
-        if (side_by_side > 1) {
-          EXPECT_GE(plot.layout.high_right.x - plot.layout.low_left.x, 0.45f * panel)
-            << where << ": \"" << title << "\" draws its data " << plot.layout.high_right.x - plot.layout.low_left.x
-            << " px wide in a panel " << panel << " px wide";
-        }
-        const std::string covered = legend_on_data(plot.layout);
-        EXPECT_TRUE(covered.empty()) << where << ": the legend of \"" << title << "\" at "
-                                     << text_of(ImVec4(plot.layout.legend_min.x, plot.layout.legend_min.y,
-                                                       plot.layout.legend_max.x, plot.layout.legend_max.y))
-                                     << (plot.layout.legend_outside ? " (outside)" : "")
-                                     << (plot.layout.legend_on_data ? " (no room)" : "") << " lies on " << covered
-                                     << "; data area " << text_of(ImVec4(plot.layout.low_left.x, plot.layout.high_right.y,
-                                                                         plot.layout.high_right.x, plot.layout.low_left.y));
+        check(plot, window.playback().lesson().plots()[plot.number].title, where, record.plots.size());
       }
       for (std::size_t i = 0; i < plot_count; ++i) {
         EXPECT_TRUE(seen[i]) << where << ": \"" << window.playback().lesson().plots()[i].title << "\" is on no page";
       }
     };
-    for (const double share : {0.25, 0.5, 0.75, 1.0}) {
+    for (const double share : {0.25, 0.5, 0.75, 1.0, 1.2}) {
       char moment[32];
       std::snprintf(moment, sizeof moment, "at %.0f %% of the run", 100.0 * share);
       check_at(share * duration, moment);
@@ -312,12 +294,84 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
       window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
     }
     window.predictions().revealed = true;
-    for (const double share : {0.5, 1.0}) {
+    for (const double share : {0.5, 1.0, 1.2}) {
       char moment[48];
       std::snprintf(moment, sizeof moment, "revealed, at %.0f %% of the run", 100.0 * share);
       check_at(share * duration, moment);
     }
   }
+}
+
+// Every plot's legend off its data, in the window as the class sees it: through the run, before
+// and after the theory is revealed (its curves add keys). With projector text three plots
+// across the screen put 3–5-key legends over the data (wedge, check_the_article, tipping_box,
+// push's friction against the pull after the reveal).
+TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsData) {
+  const WindowScreen& screen = GetParam();
+  const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+  const float strip = [&] {
+    Classroom window(class_window(lessons::resolve_lesson("push"), screen));
+    return draw::FrameLayout::of(display, window.ui_scale(display)).plots_size.x;
+  }();
+  each_window_plot(screen, [&](const draw::FrameRecord::Plot& plot, const std::string& title, const std::string& where,
+                               std::size_t shown_together) {
+    EXPECT_TRUE(plot.layout.drawable) << where << ": \"" << title << "\" has no data area";
+    // Nor a sliver of data beside its legend: at least half its panel wide, less the panels'
+    // padding (the incline's two plots side by side in projector mode drew their curves
+    // 240 px wide of 575).
+    // (A plot alone across the strip has nothing to give way to.)
+    const std::size_t side_by_side = std::min<std::size_t>(shown_together, 3);
+    const float panel = strip / static_cast<float>(side_by_side);
+    if (side_by_side > 1) {
+      EXPECT_GE(plot.layout.high_right.x - plot.layout.low_left.x, 0.45f * panel)
+          << where << ": \"" << title << "\" draws its data " << plot.layout.high_right.x - plot.layout.low_left.x
+          << " px wide in a panel " << panel << " px wide";
+    }
+    const std::string covered = legend_on_data(plot.layout);
+    EXPECT_TRUE(covered.empty()) << where << ": the legend of \"" << title << "\" at "
+                                 << text_of(ImVec4(plot.layout.legend_min.x, plot.layout.legend_min.y,
+                                                   plot.layout.legend_max.x, plot.layout.legend_max.y))
+                                 << (plot.layout.legend_outside ? " (outside)" : "")
+                                 << (plot.layout.legend_on_data ? " (no room)" : "") << " lies on " << covered
+                                 << "; data area " << text_of(ImVec4(plot.layout.low_left.x, plot.layout.high_right.y,
+                                                                     plot.layout.high_right.x, plot.layout.low_left.y));
+  });
+}
+
+// Every level's text clear of its plot's legend and of the other levels' texts, in the window as
+// the class sees it, through the run and after the reveal, every lesson's plots at each window
+// size. Each text's box is measured here from what is drawn (its lines in the level font: the
+// column's "label" over "= value", level_text_in_column, or the text as written by its line),
+// not taken from the layout: tipping_box's tipping level, written on two lines ("tips:
+// −m·g·width" over "/(2·push height) = …"), was placed as if one line high at 1280 × 720 and its
+// second line ran over the legend's keys and the "slides" level's text.
+TEST_P(WindowLayout, EveryLevelsTextKeepsClearOfTheLegendAndOfTheOtherLevels) {
+  int texts = 0;
+  each_window_plot(GetParam(), [&](const draw::FrameRecord::Plot& plot, const std::string& title, const std::string& where,
+                                   std::size_t) {
+    const draw::ChartLayout& layout = plot.layout;
+    const ImVec4 legend(layout.legend_min.x, layout.legend_min.y, layout.legend_max.x, layout.legend_max.y);
+    std::vector<std::pair<std::string, ImVec4>> written;
+    for (const draw::ChartLayout::Level& level : layout.levels) {
+      if (level.text.empty()) continue;
+      ASSERT_NE(layout.level_font, nullptr) << where;
+      const std::string lines = level.beside ? draw::level_text_in_column(level.text) : level.text;
+      const ImVec2 size = layout.level_font->CalcTextSizeA(layout.level_font->FontSize, 1e6f, 0.0f, lines.c_str());
+      const ImVec4 box(level.at.x, level.at.y, level.at.x + size.x, level.at.y + size.y);
+      EXPECT_FALSE(layout.legend_at.size() > 0 && draw::overlaps(box, legend))
+          << where << ": \"" << title << "\"'s level \"" << level.text << "\" at " << text_of(box)
+          << " lies on the legend at " << text_of(legend);
+      for (const auto& [other, other_box] : written) {
+        EXPECT_FALSE(draw::overlaps(box, other_box)) << where << ": \"" << title << "\"'s level \"" << level.text << "\" at "
+                                                     << text_of(box) << " lies on \"" << other << "\" at " << text_of(other_box);
+      }
+      written.emplace_back(level.text, box);
+      ++texts;
+    }
+  });
+  // Not a test of nothing: push's key plot at least labels its −μs·N and −μk·N levels at the
+  // three moments after the reveal.
+  EXPECT_GE(texts, 6);
 }
 
 // How much of a panel of the column is left empty under what it drew, and whether it scrolls.
