@@ -103,7 +103,8 @@ void Classroom::frame(const draw::Fonts& fonts, ImVec2 display, double wall_seco
   hand_.projector = window_.projector;
   hand_.hold_view(*playback_, strips.origin, strips.area, fonts.scale);
   // Made before the lesson is read for its frame: it forgets the answers a changed value outdated.
-  const draw::FrameStyle style = frame_style(strips.origin, record);
+  draw::FrameStyle style = frame_style(strips.origin, record);
+  style.column_foot = strips.help_height;
   build_frame(playback_->lesson(), playback_->framing(), style, strips.area);
   draw_around_frame(display, strips);
   apply_asked_values();
@@ -137,12 +138,15 @@ Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
     tools_.draw_stopwatch_strip(ImVec2(0.0f, menu_height), ImVec2(display.x, stopwatch_height),
                                 playback_->lesson().scene().time(), *fonts_);
   }
-  // The help's strip over the transport bar, in the body's text that the panel is drawn in.
+  // The help's strip over the transport bar, in the body's text that the panel is drawn in. It
+  // takes its height from the column's foot, not from the whole frame: a frame laid out above it
+  // shrank the world and the plots the class watches (a world on a projector, 336 px high, to
+  // 235: stacked_blocks' labels crowded off their arrows and the legend's scale bar was cut),
+  // and they changed size as F1 was pressed. The column is the teacher's, who is reading the help.
   strips.help_height = help_strip_height(window_.help);
   ImGui::PopFont();
   strips.origin = ImVec2(0.0f, menu_height + stopwatch_height);
-  strips.area = ImVec2(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - strips.help_height -
-                                                     strips.transport_height));
+  strips.area = ImVec2(display.x, std::max(1.0f, display.y - menu_height - stopwatch_height - strips.transport_height));
   return strips;
 }
 
@@ -257,8 +261,10 @@ void Classroom::draw_around_frame(ImVec2 display, const WindowStrips& strips) {
                  layout.world_size.x - 12.0f * s, *playback_, watch_.failed, browser_, script_words_, theme(window_.theme), controls_);
   transport_.draw(ImVec2(0.0f, display.y - strips.transport_height), ImVec2(display.x, strips.transport_height), *playback_,
                   transport_words(), strips.transport_room, s, fonts_->small, window_.speed, controls_);
-  help_panel(window_.help, browser_, script_words_.paths, exports_.folder, ImVec2(0.0f, strips.origin.y + strips.area.y),
-             ImVec2(display.x, strips.help_height));
+  // Under the column, as wide as it, at the frame's foot (FrameStyle::column_foot).
+  help_panel(window_.help, browser_, script_words_.paths, exports_.folder,
+             ImVec2(layout.column_corner.x, strips.origin.y + strips.area.y - strips.help_height),
+             ImVec2(display.x - layout.column_corner.x, strips.help_height));
   stability_.draw_window(playback_->lesson(), mystery_.hidden(), theme(window_.theme), *fonts_);
   open_script_.draw([this](const std::string& path) { return open(path); }, s, theme(window_.theme));
   const SetupFiles setups{[this](const std::string& path) { return open_setup(path); },

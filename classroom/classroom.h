@@ -180,7 +180,7 @@ class Classroom {
   // The window's strips over and under the lesson's frame, and the room they leave it.
   struct WindowStrips {
     ImVec2 origin, area;            // the lesson's frame: its corner, under the menu bar and the stopwatch, and its size
-    float help_height = 0.0f;       // the help panel's strip, under the frame (0 while it is closed)
+    float help_height = 0.0f;       // the help panel's strip, at the frame's foot under its column (0 while it is closed)
     float transport_height = 0.0f;  // the transport bar's, at the window's foot
     std::string transport_room;     // the words the transport bar keeps room for (the run's end notice)
   };

@@ -11,16 +11,17 @@
 namespace frictionlab::classroom {
 
 // The height of the strip the panel is docked in, in pixels with the current font (0 when it is
-// not shown): its title bar and three rows of keys, the rest a scroll away. The classroom lays
-// the lesson's frame out above the strip, so the panel covers nothing of it. Over the plots'
-// row it hid the key plot once the run began, and the prediction boxes where the column took it
-// (two teacher trials on a projector); no part of a lesson's frame is spare at 1920x1080 in
-// projector mode or at 1280x720.
+// not shown): its title bar and three rows of keys, the rest a scroll away. The classroom
+// shortens the column by the strip and docks the panel under it, so the panel covers nothing of
+// the frame and the world and plots keep their size. Over the plots' row it hid the key plot
+// once the run began, and the prediction boxes where the column took it (two teacher trials on a
+// projector); under the whole frame it shrank the world (issue 31): no part of a lesson's frame
+// is spare at 1920x1080 in projector mode or at 1280x720.
 float help_strip_height(bool shown);
 
 // On the page (`browser`) F5 runs the script as last applied; with
 // `script_paths` the files are saved in `output_folder` (else they arrive as downloads).
-// `corner`, `size`: its strip, the window's width under the lesson's frame, help_strip_height high.
+// `corner`, `size`: its strip, the column's width under the column, help_strip_height high.
 void help_panel(bool& shown, bool browser, bool script_paths, const std::string& output_folder, ImVec2 corner,
                 ImVec2 size);
 

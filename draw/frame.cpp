@@ -103,6 +103,12 @@ FrameLayout FrameLayout::with_legend_column(float width) const {
   return layout;
 }
 
+FrameLayout FrameLayout::with_column_foot(float foot) const {
+  FrameLayout layout = *this;
+  layout.column_size.y = std::max(0.0f, column_size.y - foot);
+  return layout;
+}
+
 float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
                          bool projector) {
   const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
@@ -176,7 +182,7 @@ struct ColumnPlan {
 ColumnPlan plan_column(const lessons::Lesson& lesson, const FrameStyle& style, ImVec2 display, float theory_contents,
                        bool whole_theory = false) {
   const float s = style.fonts->scale;
-  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, lesson);
+  const FrameLayout base = FrameLayout::of(display, s, style.origin, style.projector, lesson).with_column_foot(style.column_foot);
   const ImGuiStyle& imgui = ImGui::GetStyle();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar = ImGui::GetFrameHeight();  // a title bar, or a tab bar
@@ -742,7 +748,7 @@ void build_frame(lessons::Lesson& lesson, const lessons::WorldFraming& framing, 
   const ColumnChoice column = choose_column(lesson, style, display, readings);
   // On a projector the legend is a column beside the plots' row, as wide as its names need; a
   // lesson with no plots has no such row, and keeps the legend in its strip under the world.
-  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, lesson);
+  FrameLayout layout = FrameLayout::of(display, s, style.origin, style.projector, lesson).with_column_foot(style.column_foot);
   const bool legend_apart = layout.legend_beside_plots;
   if (legend_apart) layout = layout.with_legend_column(legend_column_width(lesson.scene(), fonts));
 

@@ -54,6 +54,9 @@ struct FrameLayout {
   static constexpr float title_padding = 1.0f;
   // The same with the legend's column `width` pixels wide (projector mode), the plots the rest.
   FrameLayout with_legend_column(float width) const;
+  // The same with the column's foot `foot` pixels higher (the window's help strip under it):
+  // the world, its legend and the plots keep their places.
+  FrameLayout with_column_foot(float foot) const;
 };
 
 // Where the frame put things in the world view, for tests of its layout: per lane, the
@@ -106,6 +109,10 @@ struct FrameStyle {
   ViewAdjust view_adjust;
   // Filled with the world view's layout when not null.
   FrameRecord* record = nullptr;
+  // Pixels under the column kept for the window's help strip (FrameLayout::with_column_foot):
+  // the help takes its room from the teacher's column, never from the world and plots the class
+  // watches, which stay as they were when F1 opens it.
+  float column_foot = 0.0f;
   // More tabs beside the energy ledger and the model card, in the window (BeginTabItem each).
   std::function<void()> more_tabs;
   // The class's predictions (the window), drawn at the top of the theory panel; their heights

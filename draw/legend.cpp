@@ -55,6 +55,17 @@ void draw_scale_bar(ImDrawList* draw, float pixels_per_metre, ImVec2 bottom_righ
   const ImVec2 label = beside ? ImVec2(start.x - 8.0f * fonts.scale - 0.5f * width, end.y - 0.5f * tick)
                               : ImVec2(0.5f * (start.x + end.x), end.y - 14.0f * fonts.scale);
   draw_label(draw, fonts.small, label, theme.text, 0, length.c_str());
+  // Noted for the layout test against what of its panel shows (the clip rectangle) less what of
+  // the bar and its ticks reaches below the words (a column's bar is under them): the words are
+  // whole only where the bar is too. A projector's legend column, shortened, cut the bar under
+  // "20 cm" (issue 31, with the help open).
+  const float words_foot = label.y + 0.5f * fonts.small->FontSize;
+  const float bar_foot = end.y + std::max(1.0f, fonts.scale);  // the ticks' ends, the bar's lower edge
+  const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
+  const ImRect room(shown_min, ImVec2(shown_max.x, shown_max.y - std::max(0.0f, bar_foot - words_foot)));
+  ImGui::PushFont(fonts.small);
+  note_text_in(length.c_str(), ImVec2(std::round(label.x - 0.5f * width), std::round(words_foot - fonts.small->FontSize)), room);
+  ImGui::PopFont();
 }
 
 // A chip's mark at `centre`: a dot for a contact state, a swatch for a material, the same in

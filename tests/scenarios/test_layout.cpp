@@ -455,10 +455,11 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
 // over the spring, the block and half the sliders of the first lesson (a trial of the web page);
 // then under the sliders, over the Predict tab, its question and its Reveal button (a teacher's
 // projector trial); then over the plots' row, which hid the key plot once the run began (issue
-// 31's trial at 1920x1080 in projector mode). It is docked in a strip of its own under the
-// lesson's frame, over the transport bar: at the run's end, the key plot drawn, it overlaps no
-// other panel, and every question of the class and its answer's box are in sight (the column
-// does not scroll them away in the shorter frame).
+// 31's trial at 1920x1080 in projector mode); then under the whole frame, which shrank the world
+// (ForceLabels.EveryValueStandsBesideItsArrowAndTheScaleBarIsWholeWithTheHelpOpenOnAProjector).
+// It is docked in a strip of its own at the foot of the column, over the transport bar: at the
+// run's end, the key plot drawn, it overlaps no other panel, and every question of the class and
+// its answer's box are in sight (the column does not scroll them away, shorter by the strip).
 TEST_P(WindowLayout, TheHelpPanelIsDockedUnderTheFrameAndCoversNoPanelNorPushesAQuestionOutOfSight) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));

@@ -504,16 +504,18 @@ std::string said_at(double t) {
 
 // Every built-in lesson at its defaults in the window at 1920 × 1080, in projector mode or not, in
 // a theme, at its opening, half way and at its end: the frame's record, with the lesson's name,
-// when (" at 1.73 s") and the lesson.
+// when (" at 1.73 s") and the lesson. `help`: with the help panel open (F1).
 void each_lesson_frame(bool projector, draw::ThemeName theme,
                        const std::function<void(const std::string& lesson, const std::string& when,
-                                                const draw::FrameRecord& record, const lessons::Lesson& at)>& check) {
+                                                const draw::FrameRecord& record, const lessons::Lesson& at)>& check,
+                       bool help = false) {
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
   for (const lessons::CatalogEntry& entry : lessons::catalog()) {
     ClassroomOptions options = class_window(entry.path, {"1920x1080", 1920, 1080, projector});
     options.window.theme = theme;
+    options.window.help = help;
     Classroom window(options);
     draw_window_frame(gl, host, window, display);
     const double end = window.playback().lesson().duration();
@@ -565,18 +567,21 @@ void each_lesson_frame(bool projector, draw::ThemeName theme,
 // smaller force drawn longer than a larger one misleads a class more than a value 85 px off.
 // It left that list again when draw_world came to place a picture's values before the contacts'
 // words that stood away from their dots (ForceLabels.StackedBlocksFrictionsStandBesideTheir...).
+// The pictures the test below does not yet hold to check_beside_own_arrow's rule, and those it
+// holds to it but for a value's being nearer another arrow than its own (a leader's).
+bool not_yet(const std::string& lesson, bool projector, bool inset) {
+  if (lesson == "contact_area") return !inset;
+  if (lesson == "where_methods_fail") return projector && !inset;
+  if (lesson == "friction_models") return !inset;
+  return false;
+}
+bool nearer_another_not_yet(const std::string& lesson, bool projector, bool inset) {
+  if (lesson == "stacked_blocks") return !projector && !inset;
+  if (lesson == "wedge") return !projector && inset;
+  return false;
+}
+
 TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
-  const auto not_yet = [](const std::string& lesson, bool projector, bool inset) {
-    if (lesson == "contact_area") return !inset;
-    if (lesson == "where_methods_fail") return projector && !inset;
-    if (lesson == "friction_models") return !inset;
-    return false;
-  };
-  const auto nearer_another_not_yet = [](const std::string& lesson, bool projector, bool inset) {
-    if (lesson == "stacked_blocks") return !projector && !inset;
-    if (lesson == "wedge") return !projector && inset;
-    return false;
-  };
   std::map<std::string, int> still_nearer_another;
   int worlds = 0, insets = 0;
   // The pictures not yet held to the rule, and how many of their values break it: a picture
@@ -621,6 +626,37 @@ TEST(ForceLabels, EachValueIsWithinALineOfItsOwnArrowAndNearerItThanAnyOther) {
   for (const auto& [picture, broken] : still_nearer_another) {
     EXPECT_GT(broken, 0) << picture << " now has every value nearer its own arrow: take it off nearer_another_not_yet";
   }
+}
+
+// With the help open on a projector the frame above the help's strip shrank, and the world and
+// the plots' row with it: stacked_blocks' force labels crowded and its legend's scale bar was
+// cut under "20 cm" (issue 31). The test above's rules in the window on a projector with the help
+// open, each lesson at its opening, half way and at its end (its values beside their own arrows,
+// with its pictures not yet held to that left out as there, and check_layout's: clear of each
+// other, the arrows and the inset), and the world's and the legend's words whole, the scale bar's
+// length among them (noted only where the bar under it is whole too). Light only: the labels are
+// placed alike in both themes, and under ASan + UBSan this runs eight times slower.
+TEST(ForceLabels, EveryValueStandsBesideItsArrowAndTheScaleBarIsWholeWithTheHelpOpenOnAProjector) {
+  int values = 0, scale_bars = 0;
+  each_lesson_frame(true, draw::ThemeName::light, [&](const std::string& lesson, const std::string& when,
+                                                       const draw::FrameRecord& record, const lessons::Lesson& at) {
+    const std::string where = lesson + when + ", projector, with the help open";
+    const ImGuiWindow* help = ImGui::FindWindowByName("Help (F1 shows and hides it)");
+    ASSERT_TRUE(help != nullptr && help->Active) << where;
+    check_layout(record, at, where);
+    for (const draw::FrameRecord::Lane& lane : record.lanes) {
+      if (!not_yet(lesson, true, false)) values += check_beside_own_arrow(lane.forces, where + ", world");
+    }
+    draw::FrameRecord world_texts = record;
+    std::erase_if(world_texts.texts, [](const draw::ShownText& text) {
+      return !text.panel.ends_with("###legend") && !text.panel.ends_with("###world");
+    });
+    for (const draw::ShownText& text : world_texts.texts) scale_bars += text.text.ends_with(" cm") || text.text.ends_with(" m");
+    check_texts(world_texts, where);
+  }, true);
+  EXPECT_GE(values, 100);
+  // Every frame has its bar: 15 lessons at three moments.
+  EXPECT_EQ(scale_bars, static_cast<int>(lessons::catalog().size()) * 3);
 }
 
 // stacked_blocks in the window at 1920 × 1080 in projector mode, light and dark, at each of
