@@ -460,7 +460,7 @@ TEST_P(WindowLayout, EveryPredictionIsInSightBeforeTheReveal) {
 // It is docked in a strip of its own at the foot of the column, over the transport bar: at the
 // run's end, the key plot drawn, it overlaps no other panel, and every question of the class and
 // its answer's box are in sight (the column does not scroll them away, shorter by the strip).
-TEST_P(WindowLayout, TheHelpPanelIsDockedUnderTheFrameAndCoversNoPanelNorPushesAQuestionOutOfSight) {
+TEST_P(WindowLayout, TheHelpPanelIsDockedUnderTheColumnAndCoversNoPanelNorPushesAQuestionOutOfSight) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
   draw::HeadlessContext gl;
