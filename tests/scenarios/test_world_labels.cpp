@@ -884,6 +884,47 @@ TEST(ToolLabels, TheDistanceMarksRunOnlyAlongTheSlope) {
   EXPECT_EQ(rulers, 6);
 }
 
+// The distance marks are a ruler the slide can be read against: a teacher's projector trial
+// (issue 31) read "ticks 5 m apart" under incline's block, one tick in view, for a slide of
+// 1.2 m. On a projector at 1920 × 1080, at 35° (the defaults) and at 60°, at the run's end: the
+// slide, from the closed form d = ½·g·(sin θ − μk·cos θ)·t² at t = 1 s (1.21 m at 35°, 3.27 m at
+// 60°), spans two of the ticks' steps at least (three ticks or more along it), the ticks no
+// closer on the screen than least_tick_spacing(); and two numbers or more are drawn at their
+// ticks, no "ticks … apart" in their place.
+TEST(ToolLabels, TheDistanceMarksReadTheSlideInStepsOfAFractionOfIt) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const char* angle : {"35", "60"}) {
+    ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+    options.window.tools = ToolSettings{false, true, false, false};
+    options.overrides = {{"angle", angle}};
+    Classroom window(options);
+    draw_window_frame(gl, host, window, display);
+    const lessons::Lesson& lesson = window.playback().lesson();
+    const double t = lesson.duration();
+    const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+    const std::string where = std::string("incline at ") + angle + "°" + said_at(t);
+    const draw::Fonts& fonts = host.prepare(window.ui_scale(display), window.window_settings().theme);
+    ASSERT_EQ(record.lanes.size(), 1u) << where;
+    const draw::Camera& camera = record.lanes.front().camera;
+    const std::optional<DistanceMarks> marks = window.tools().distance_marks(lesson, camera, fonts);
+    ASSERT_TRUE(marks.has_value()) << where;
+    const double theta = std::stod(angle) * M_PI / 180.0, g = 9.81, mu_k = 0.4;
+    const double slide = 0.5 * g * (std::sin(theta) - mu_k * std::cos(theta)) * t * t;
+    EXPECT_NEAR(lesson.scene().probe("distance").history.back(), slide, 0.02 * slide) << where << ": the slide is not the closed form's";
+    EXPECT_GE(slide / marks->step, 2.0) << where << ": a slide of " << slide << " m over ticks " << marks->step << " m apart";
+    EXPECT_GE(marks->step * camera.pixels_per_metre, least_tick_spacing(fonts.scale) - 1e-3)
+        << where << ": ticks " << marks->step * camera.pixels_per_metre << " px apart";
+    int numbers = 0;
+    for (const std::string& text : record.lanes.front().texts) {
+      EXPECT_EQ(text.find(" apart"), std::string::npos) << where << ": \"" << text << "\"";
+      numbers += text.size() > 2 && text.ends_with(" m") && (std::isdigit(static_cast<unsigned char>(text[0])) || text.rfind("\u2212", 0) == 0);
+    }
+    EXPECT_GE(numbers, 2) << where << ": the ruler's numbers";
+  }
+}
+
 // A contact's word ("sticking", "← slipping") by its dot, on a floor and on slopes as steep as
 // 60°: its box as drawn within one line of its text (the box's height) of the dot's rim, at a
 // screen's and a projector's text size. Issue 31: on incline at 60° in projector mode the word
@@ -1781,7 +1822,8 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
         for (std::size_t i = 1; i < shown_metres.size(); ++i) {
           nearest = i == 1 ? std::abs(shown_metres[1] - shown_metres[0]) : std::min(nearest, std::abs(shown_metres[i] - shown_metres[i - 1]));
         }
-        const auto every = static_cast<std::size_t>(std::lround(nearest / marks.front()->step));
+        // And never closer than the ruler's least spacing of its numbers (DistanceMarks::least_every).
+        const auto every = std::max(static_cast<std::size_t>(std::lround(nearest / marks.front()->step)), marks.front()->least_every);
         for (const DistanceMark& mark : marks.front()->ticks) {
           if (!counted(mark, std::max<std::size_t>(every, 1), marks.front()->step)) continue;
           const auto shown = std::find_if(lane.texts.begin(), lane.texts.end(), [&](const std::string& text) {
@@ -1808,10 +1850,12 @@ TEST(WorldLabels, TheMeasuringToolsReadingsKeepOffTheBodiesTheSpringsAndEachOthe
           const auto any = [&](const auto& list, const ImVec4& box) {
             return std::any_of(list.begin(), list.end(), [&](const auto& other) { return draw::overlaps(box, other); });
           };
-          // The speed's readout is placed before the numbers (a thin lane has room for it or them).
+          // The speed's readout is placed before the numbers (a thin lane has room for it or them),
+          // and so are the weight's parts' values, beside their arrows (MeasuringTools::place_fixed_labels).
           const auto under_speed = [&](const ImVec4& box) {
             for (std::size_t i = 0; i < lane.labels.size(); ++i) {
-              if (lane.texts[i].find("v = ") != std::string::npos && draw::overlaps(box, lane.labels[i])) return true;
+              const bool before = lane.texts[i].find("v = ") != std::string::npos || lane.texts[i].rfind("m\u00b7g\u00b7", 0) == 0;
+              if (before && draw::overlaps(box, lane.labels[i])) return true;
             }
             return false;
           };
