@@ -466,6 +466,79 @@ TEST(ProjectorPlots, TippingBoxAndInclineOpenOnAKeyPlotThatLabelsTheirKeyLevels)
   }
 }
 
+// Issue 31's trial: incline's key plot was titled "Forces from the slope, θc = 30.96°" from the
+// opening, the answer to the question the class was about to predict. The angle is the plot's
+// answer now, and joins its title at the reveal; the data under the title stays where it was
+// (the title's room is kept for the answer from the opening). On a projector, where the title is
+// the pager's line, and in a window of 1024 × 768, where plots stand side by side; and a student's
+// lesson whose answer is long enough to wrap the title onto more lines at both.
+TEST(ProjectorPlots, APlotsAnswerJoinsItsTitleAtTheRevealAndTheDataStaysPut) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  const lessons::ScriptFile long_answer(lessons::with_heading(
+      "local pull = parameter { \"pull\", 8, min = 0, max = 20, unit = \"N\", text = \"the pull F\" }\n"
+      "pair { \"wood\", \"wood\", mu_s = 0.5, mu_k = 0.4 }\n"
+      "local floor = ground { \"floor\", material = \"wood\" }\n"
+      "local block = box { \"block\", material = \"wood\", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1 }\n"
+      "force { \"pull\", on = block, force = { pull, 0 } }\n"
+      "probe { \"speed\", unit = \"m/s\", read = { block, \"vx\" } }\n"
+      "probe { \"x\", unit = \"m\", read = { block, \"x\" } }\n"
+      "local function a() return math.max(param.pull - 0.4 * g, 0) end\n"
+      "plot { \"Speed\", y = { \"speed\" }, answer = string.format(\"a = (F − μk·m·g)/m = %.2f m/s², \" ..\n"
+      "  \"steady for as long as the pull lasts, once the block has broken away\", a()) }\n"
+      "plot { \"Place\", y = { \"x\" } }\n"
+      "plot { \"Speed again\", y = { \"speed\" } }\n"
+      "expect { \"acceleration\", unit = \"m/s²\", predicted = a, measured = function() return a() end }\n"
+      "predict { \"acceleration\", unit = \"m/s²\", question = \"How fast does the block speed up?\" }\n"));
+  struct Case {
+    std::string lesson, title, answered;  // its path, its key plot's title, and with the answer
+  };
+  for (const Case& each : {Case{lessons::resolve_lesson("incline"), "Forces from the slope", "Forces from the slope, \u03b8c = 30.96\u00b0"},
+                           Case{long_answer.path(), "Speed", "Speed, a = (F \u2212 \u03bck\u00b7m\u00b7g)/m = 4.08 m/s\u00b2"}}) {
+    for (const WindowScreen& screen : {window_screens[1], window_screens[2]}) {
+      const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+      const std::string where = each.title + ", " + screen.name;
+      ClassroomOptions options = class_window(each.lesson, screen);
+      options.window.predictions = true;
+      Classroom window(options);
+      ASSERT_EQ(window.playback().lesson().plots().size(), 3u) << window.playback().lesson().last_error();
+      window.playback().run_to(0.5 * window.playback().lesson().duration());
+      // The key plot's title as drawn (on one line or wrapped), and its data's corners.
+      const auto key_plot = [&](ImVec4& data, float& height) {
+        draw::FrameRecord record;
+        for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+        for (const draw::FrameRecord::Plot& plot : record.plots) {
+          if (plot.number == 0) data = ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
+        }
+        std::string title;
+        for (const draw::ShownText& text : record.texts) {
+          if (text.text.rfind(each.title, 0) != 0 || text.text.rfind("Speed again", 0) == 0) continue;
+          title = text.text;
+          height = text.needed.w - text.needed.y;
+        }
+        return title;
+      };
+      ImVec4 before, after;
+      float height_before = 0.0f, height_after = 0.0f;
+      const std::string kept_back = key_plot(before, height_before);
+      ASSERT_TRUE(window.theory_hidden()) << where;
+      EXPECT_FALSE(kept_back.empty()) << where << ": no key plot title";
+      EXPECT_EQ(kept_back.find(each.answered), std::string::npos) << where << ": \"" << kept_back << "\" before the reveal";
+      window.key_pressed(Key::t, false);  // read as the next frame begins
+      const std::string revealed = key_plot(after, height_after);
+      ASSERT_FALSE(window.theory_hidden()) << where;
+      EXPECT_EQ(revealed.rfind(each.answered, 0), 0u) << where << ": \"" << revealed << "\" after the reveal";
+      EXPECT_EQ(rect_words(after), rect_words(before))
+          << where << ": the key plot's data moved at the reveal, from " << rect_words(before) << " (its title "
+          << height_before << " px high, then " << height_after << ")";
+      // A line more at least: the answer wrapped the title, and the room kept for it was needed.
+      if (each.title == "Speed") {
+        EXPECT_GT(height_after, 1.5f * height_before) << where << ": the long answer did not wrap the title";
+      }
+    }
+  }
+}
+
 // The projector's title is one line, its panel one line high: a student's long title wrapped
 // onto a second line that the panel cut in half. It is cut with "…" instead, whole in sight.
 TEST(ProjectorTitle, ALongTitleIsCutWithAnEllipsisOnItsOneLineAndShowsWhole) {
