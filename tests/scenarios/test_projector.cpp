@@ -1,7 +1,9 @@
 // Projector mode at 1920 × 1080: nothing moves under the teacher's pointer, every slider,
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
+#include <algorithm>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "draw/overlays.h"
@@ -230,6 +232,80 @@ TEST(StableLayout, EveryTheoryRowKeepsItsPlaceFromTheOpeningThroughTheRunItsEndA
     rows_compared += expect_same_rows(opened, reset, entry.name + ", after R");
   }
   EXPECT_GE(rows_compared, 3 * 15) << "too few theory rows were compared";
+}
+
+// Issue 31: a value typed out of range (a mass of 5000 kg, then Enter) was refused with its
+// message under its row, which made the Parameters panel two lines taller: pulley's Predict
+// tab came 105 px down (projector, 1920 × 1080; push's 52 px at 1280 × 720), and where the
+// column was short the friction pairs had to fold for it. Now the message stands in a panel of its own over the rows under the box, and
+// nothing moves: every panel, tab, the reveal button and every slider keep their places. The
+// message is what the lesson said (the value and the allowed range), whole on the screen, its
+// top within a line under the box, across the Parameters panel; the next click (on the panel's
+// title) takes it away, and still nothing moves.
+TEST(StableLayout, ARefusedValueIsSaidUnderItsBoxAndMovesNothing) {
+  struct Case {
+    const char* lesson;
+    const char* parameter;
+    WindowScreen screen;
+  };
+  for (const Case& each : {Case{"pulley", "block_mass", window_screens[2]}, Case{"push", "mass", window_screens[0]}}) {
+    const ImVec2 display(static_cast<float>(each.screen.width), static_cast<float>(each.screen.height));
+    ClassroomHands hands(class_window(lessons::resolve_lesson(each.lesson), each.screen), display);
+    const std::string where = std::string(each.lesson) + ", " + each.screen.name;
+    const lessons::Parameter& parameter = hands.lesson().parameter(each.parameter);
+    const double value = parameter.value;
+    std::ostringstream range;  // as the lesson words it (physics/validation.cpp)
+    range << "is outside the allowed range [" << parameter.min << ", " << parameter.max << "]";
+    const auto seen = [&](draw::FrameRecord& record) {
+      for (int frame = 0; frame < 3; ++frame) hands.frame();
+      hands.frame(0.0, &record);
+      Placed found = placed_in(hands.classroom(), record);
+      found.panels.erase("###refused");  // the message's own, checked by what it says and where
+      for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+        if (const std::optional<ImRect> slider = hands.classroom().control(each_parameter.name + " slider")) {
+          found.panels["slider " + each_parameter.name] = ImVec4(slider->Min.x, slider->Min.y, slider->Max.x, slider->Max.y);
+        }
+      }
+      return found;
+    };
+    const auto message = [](const draw::FrameRecord& record) -> std::optional<draw::ShownText> {
+      for (const draw::ShownText& text : record.texts) {
+        if (text.panel.find("###refused") != std::string::npos) return text;
+      }
+      return std::nullopt;
+    };
+    draw::FrameRecord record;
+    const Placed before = seen(record);
+    ASSERT_FALSE(message(record).has_value()) << where;
+    const ImRect box = hands.control(std::string(each.parameter) + " value");
+    hands.click(each.parameter + std::string(" value"));
+    hands.type("5000");
+    hands.press_enter();
+    const std::string said = hands.classroom().control_error(each.parameter);
+    EXPECT_EQ(parameter.value, value) << where << ": the value was taken";
+    EXPECT_NE(said.find("5000"), std::string::npos) << where << ": " << said;
+    EXPECT_NE(said.find(range.str()), std::string::npos) << where << ": " << said;
+    draw::FrameRecord refused;
+    expect_same_places(before, seen(refused), where + ", a value refused");
+    const std::optional<draw::ShownText> shown = message(refused);
+    ASSERT_TRUE(shown.has_value()) << where << ": the refusal is not said";
+    std::string words = shown->text;
+    std::replace(words.begin(), words.end(), '\n', ' ');
+    EXPECT_EQ(words, said) << where;
+    EXPECT_TRUE(shown->whole() && shown->needed.w <= display.y) << where << ": the message needs " << text_of(shown->needed)
+                                                                << " but only " << text_of(shown->visible) << " shows";
+    EXPECT_GE(shown->needed.y, box.Max.y) << where << ": the message is over its box";
+    EXPECT_LE(shown->needed.y, box.Max.y + ImGui::GetFrameHeightWithSpacing()) << where << ": the message is not under its box";
+    const ImVec4& panel = before.panels.at("###parameters");
+    EXPECT_TRUE(shown->needed.x >= panel.x && shown->needed.z <= panel.z)
+        << where << ": the message at " << text_of(shown->needed) << " is not across the Parameters panel, " << text_of(panel);
+    // The next click, wherever it lands, ends it: here on the panel's title, which does nothing.
+    hands.click(ImVec2(panel.x + 0.5f * (panel.z - panel.x), panel.y + 0.5f * ImGui::GetFrameHeight()));
+    draw::FrameRecord clicked;
+    expect_same_places(before, seen(clicked), where + ", the message gone");
+    EXPECT_FALSE(message(clicked).has_value()) << where << ": the message stayed after a click";
+    EXPECT_EQ(parameter.value, value) << where;
+  }
 }
 
 // Issue 31: at 1920 × 1080 in projector mode, with the class's predictions asked and the stopwatch
