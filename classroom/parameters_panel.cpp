@@ -197,8 +197,8 @@ void ParametersPanel::draw_folded_away(ImVec2 corner, ImVec2 size, const Paramet
 void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
                            const draw::Theme& colours, ControlPlaces& controls) {
   // A refusal is said until the teacher's next click, wherever it lands (the box again to type
-  // anew, the reset, a slider under the message): they have read it, and it no longer covers
-  // the rows under it. A value taken ends it too (Classroom::apply_asked_values).
+  // anew, the reset, the message itself): they have read it, and it no longer covers the rows
+  // under it. A value taken ends it too (Classroom::apply_asked_values).
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)) errors.clear();
   if (may_fold_away(on_show) && step >= folded_away_step(on_show)) {
     draw_folded_away(corner, size, on_show, controls);
@@ -301,7 +301,8 @@ void ParametersPanel::say_refusals(ImVec2 corner, float width, const draw::Theme
   if (errors.empty()) return;
   // Over the panel's rows, as wide as the panel, as high as the words wrapped in it: nothing
   // gives way for it (issue 31: the message under its row folded the friction pairs and moved
-  // the Predict tab 105 px down), and clicks pass through it to the rows it covers.
+  // the Predict tab 105 px down). A click on it only ends it: passed through, the click a
+  // teacher gives the message to dismiss it set the slider under it (a knob takes a click).
   const ImGuiStyle& style = ImGui::GetStyle();
   // Broken between words: ImGui's wrapping broke the range "[0.1, 5]" after its point.
   std::vector<std::string> said;
@@ -318,7 +319,7 @@ void ParametersPanel::say_refusals(ImVec2 corner, float width, const draw::Theme
   ImGui::SetNextWindowSize(ImVec2(width, height));
   ImGui::PushStyleColor(ImGuiCol_Border, colours.bad);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, std::max(1.0f, std::round(0.1f * ImGui::GetFontSize())));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoNav |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoMove;
   if (ImGui::Begin("###refused", nullptr, flags)) {

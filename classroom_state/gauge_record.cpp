@@ -107,8 +107,10 @@ std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
     sum += pull(sample);
     ++count;
   }
-  // A tenth of a second of sliding at least, or there is no plateau to speak of yet.
-  if (count > 0 && figures.plateau_to - figures.plateau_from >= 0.1 - 0.5 * frame_step) {
+  // A tenth of a second of steady sliding at least, or there is no plateau to speak of yet: its
+  // steps counted, not the time from the first to the last (two steady steps of a swing a tenth
+  // of a second apart are no plateau).
+  if (count > 0 && static_cast<double>(count) * frame_step >= 0.1 - 0.5 * frame_step) {
     figures.plateau = sum / static_cast<double>(count);
   }
   return figures;

@@ -38,7 +38,7 @@ std::string frame_speed(bool quick, std::ostream& out, const Progress& progress)
     lessons::Lesson lesson(lessons::resolve_lesson(name));
     const lessons::WorldFraming framing = lessons::WorldFraming::of(lesson);
     // Frames spread over the lesson, so plots with long records are timed too.
-    // --quick: two, the first frame and one mid-run, which shows the report works.
+    // --quick: two, at half the run and at its end, which shows the report works.
     const int frames = quick ? 2 : 40;
     const long steps_between = static_cast<long>(lesson.duration() * lesson.settings().hz / frames);
     std::vector<double> step, ui, raster, readback, frame, encode, write;

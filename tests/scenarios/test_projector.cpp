@@ -20,7 +20,7 @@ using namespace layout_checks;
 // frame up. In projector mode at 1920 × 1080, light and dark, with the class's predictions asked,
 // every panel, every tab's name and the reveal button keep their places from the lesson's
 // opening as the run plays, at its end, at the reveal (mid-run and at the end), when T hides the
-// theory again, and at R (the theory shown, then hidden); with the stopwatch on from the opening
+// theory again, and at R (pressed with the theory shown, which T then hides); with the stopwatch on from the opening
 // too. A stopwatch turned on mid-run moves the frame once (its strip takes a line over the
 // title), and nothing after that. The theory's rows, revealed mid-run, keep their places at the
 // run's end and at R: each of push's and incline's rows not yet measured was followed by an
@@ -240,8 +240,8 @@ TEST(StableLayout, EveryTheoryRowKeepsItsPlaceFromTheOpeningThroughTheRunItsEndA
 // column was short the friction pairs had to fold for it. Now the message stands in a panel of its own over the rows under the box, and
 // nothing moves: every panel, tab, the reveal button and every slider keep their places. The
 // message is what the lesson said (the value and the allowed range), whole on the screen, its
-// top within a line under the box, across the Parameters panel; the next click (on the panel's
-// title) takes it away, and still nothing moves.
+// top within a line under the box, across the Parameters panel; the next click (on the message,
+// over another row's slider) takes it away, sets nothing, and still nothing moves.
 TEST(StableLayout, ARefusedValueIsSaidUnderItsBoxAndMovesNothing) {
   struct Case {
     const char* lesson;
@@ -299,12 +299,28 @@ TEST(StableLayout, ARefusedValueIsSaidUnderItsBoxAndMovesNothing) {
     const ImVec4& panel = before.panels.at("###parameters");
     EXPECT_TRUE(shown->needed.x >= panel.x && shown->needed.z <= panel.z)
         << where << ": the message at " << text_of(shown->needed) << " is not across the Parameters panel, " << text_of(panel);
-    // The next click, wherever it lands, ends it: here on the panel's title, which does nothing.
-    hands.click(ImVec2(panel.x + 0.5f * (panel.z - panel.x), panel.y + 0.5f * ImGui::GetFrameHeight()));
+    // The next click, wherever it lands, ends it: here on the message itself, where a teacher
+    // clicks to dismiss it, over a slider of a row under the box. The click ends the message
+    // and sets nothing (let through, it set that slider: a knob takes a click).
+    std::optional<ImVec2> over_a_slider;
+    std::map<std::string, double> values;
+    for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+      values[each_parameter.name] = each_parameter.value;
+      const std::optional<ImRect> slider = hands.classroom().control(each_parameter.name + " slider");
+      if (over_a_slider || !slider || each_parameter.name == each.parameter) continue;
+      const ImRect both(ImMax(slider->Min, ImVec2(shown->needed.x, shown->needed.y)),
+                        ImMin(slider->Max, ImVec2(shown->needed.z, shown->needed.w)));
+      if (both.Min.x < both.Max.x && both.Min.y < both.Max.y) over_a_slider = both.GetCenter();
+    }
+    ASSERT_TRUE(over_a_slider.has_value()) << where << ": the message covers no slider, so the click shows nothing";
+    hands.click(*over_a_slider);
     draw::FrameRecord clicked;
     expect_same_places(before, seen(clicked), where + ", the message gone");
     EXPECT_FALSE(message(clicked).has_value()) << where << ": the message stayed after a click";
-    EXPECT_EQ(parameter.value, value) << where;
+    for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+      EXPECT_EQ(each_parameter.value, values[each_parameter.name])
+          << where << ": the click on the message set " << each_parameter.name;
+    }
   }
 }
 
@@ -661,9 +677,13 @@ TEST(ProjectorPlots, APlotsAnswerJoinsItsTitleAtTheRevealAndTheDataStaysPut) {
       const auto key_plot = [&](ImVec4& data, float& height) {
         draw::FrameRecord record;
         for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+        bool drawn = false;
         for (const draw::FrameRecord::Plot& plot : record.plots) {
-          if (plot.number == 0) data = ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
+          if (plot.number != 0) continue;
+          data = ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
+          drawn = true;
         }
+        EXPECT_TRUE(drawn) << where << ": the key plot is not drawn";
         std::string title;
         for (const draw::ShownText& text : record.texts) {
           if (text.text.rfind(each.title, 0) != 0 || text.text.rfind("Speed again", 0) == 0) continue;
