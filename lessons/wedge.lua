@@ -282,9 +282,10 @@ local function rocks_by(t)
     -- sample before k to the edge letting go, cannot turn the block by the tilt that counts as
     -- tumbling. Read at the samples alone it was "rocks" wherever a sample fell between the rock
     -- and the lift-off: at θ0 38.42°, ω 10 rad/s, 0.1 kg, frictionless (3.3 ms between them), at
-    -- 480 Hz and up but not at 240, where the row was checked against an edge that let go 12 ms
-    -- before the world's. (A lift-off whose edge never lets go in the model's flight only
-    -- grazes, and its row says so: there only the start's press is the lift-off's, as before.)
+    -- 480 Hz and up but not at 240, where the row was checked against an edge that let go 21 ms
+    -- before the world's (0.0334 s against 0.0542). (A lift-off whose edge never lets go in the
+    -- model's flight, or pulls away by less than the row's uncertainty, only grazes (only_grazes),
+    -- and its row says so: there only the start's press is the lift-off's, as before.)
     -- (Friction's moment against the model's N: a block pressed less has less friction too.)
     local function the_lift_offs_pivot(k, friction, pressed_less)
       local flight = into_lift_off(k)
@@ -1021,8 +1022,9 @@ expect { "first slip", unit = "s",
 -- (±e·μ: friction's moment at the edge, if it slides), so F falls as N does, slowed by |θ''|
 -- growing, and the edge lets go where N = −m·(w/2)·|θ''| at the θ'' of that moment, whatever the
 -- friction. Taken with N falling on at its rate before the lift-off and θ'' held at the
--- lift-off's, that came 12 ms early at θ0 = 38.42°, ω = 10 rad/s, 0.1 kg, frictionless (0.0334 s
--- against the world's 0.0542 at 240 Hz): over the 20 ms pivot |θ''| grew by half, and F fell at
+-- lift-off's, that came 21 ms early at θ0 = 38.42°, ω = 10 rad/s, 0.1 kg, frictionless (0.0334 s
+-- against the world's 0.0542 at 240 Hz): from the model's lift-off to the edge's (0.0243 to
+-- 0.0412 s) |θ''| = θ0·ω²·|sin ω·t| grew by two thirds, and F fell at
 -- 4.1 N/s, the world's edge's push at 4.4, where N fell at 26.5. Now the first crossing of
 -- N + m·(w/2)·|θ''| through 0 over the model's flight, between two samples, is the lift-off:
 -- 0.0412 s there, and the world's 0.0542, 0.0479, 0.0438, 0.0427 s at 240, 480, 960, 1920 Hz,
