@@ -3,6 +3,8 @@
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "classroom/parameters_panel.h"
 
+#include <imgui_internal.h>
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -141,12 +143,8 @@ std::vector<float> ParametersPanel::heights(const ParametersOnShow& on_show) con
   std::vector<float> heights;
   for (std::size_t step = 0; step <= foldable_pairs(on_show, true).size() + foldable_pairs(on_show, false).size(); ++step) {
     int rows = on_show.lock.empty() ? 0 : 1;
-    for (const Row& row : rows_at(on_show, step)) {
-      rows += 1 + (row.pair_heading && !row.folded ? 1 : 0);
-      for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
-        if (shown != nullptr && !row.folded && errors.count(shown->name) > 0) rows += 2;
-      }
-    }
+    // A refused value's message takes no row: it is said over the rows (say_refusals).
+    for (const Row& row : rows_at(on_show, step)) rows += 1 + (row.pair_heading && !row.folded ? 1 : 0);
     heights.push_back(ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
                       static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing());
   }
@@ -198,8 +196,13 @@ void ParametersPanel::draw_folded_away(ImVec2 corner, ImVec2 size, const Paramet
 
 void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const ParametersOnShow& on_show, float scale,
                            const draw::Theme& colours, ControlPlaces& controls) {
+  // A refusal is said until the teacher's next click, wherever it lands (the box again to type
+  // anew, the reset, the message itself): they have read it, and it no longer covers the rows
+  // under it. A value taken ends it too (Classroom::apply_asked_values).
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)) errors.clear();
   if (may_fold_away(on_show) && step >= folded_away_step(on_show)) {
     draw_folded_away(corner, size, on_show, controls);
+    say_refusals(ImVec2(corner.x, corner.y + size.y), size.x, colours);
     return;
   }
   ImGui::SetNextWindowPos(corner);
@@ -207,8 +210,13 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
   const std::string title = on_show.lock.empty() ? "Parameters###parameters" : "Parameters (chosen by the teacher)###parameters";
+  // Under the row of the first value refused; under the panel's title when that row is not
+  // shown (folded into its pair's heading, or under the teacher's lock).
+  std::optional<float> refused_row_foot;
+  float title_foot = corner.y;
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
     draw::note_title(title.substr(0, title.find("###")).c_str());
+    title_foot = ImGui::GetWindowPos().y + ImGui::GetCurrentWindowRead()->TitleBarHeight();
     const std::vector<Row> shown_rows = rows_at(on_show, step);
     float widest_name = 0.0f, widest_letter = 0.0f;
     for (const Row& row : shown_rows) {
@@ -240,6 +248,12 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
           ImGui::SameLine();
           ImGui::TextUnformatted(values.c_str());
           draw::note_text(values.c_str());
+          // A coefficient of the folded pair refused (a mystery's): said under its heading.
+          for (const lessons::Parameter& coefficient : on_show.lesson.parameters()) {
+            if (!refused_row_foot && draw::pair_of(coefficient) == pair && errors.count(coefficient.name) > 0) {
+              refused_row_foot = ImGui::GetItemRectMax().y;
+            }
+          }
           continue;
         }
         if (parameter.coefficient == &static_coefficient) {
@@ -270,13 +284,7 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
         ImGui::PopID();
       }
       for (const lessons::Parameter* shown : {row.parameter, row.partner}) {
-        if (shown == nullptr) continue;
-        if (const auto error = errors.find(shown->name); error != errors.end()) {
-          ImGui::PushTextWrapPos(0.0f);
-          ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", error->second.c_str());
-          ImGui::PopTextWrapPos();
-          draw::note_text(error->second.c_str());
-        }
+        if (shown != nullptr && !refused_row_foot && errors.count(shown->name) > 0) refused_row_foot = ImGui::GetItemRectMax().y;
       }
     }
     if (!on_show.lock.empty()) {
@@ -286,6 +294,45 @@ void ParametersPanel::draw(ImVec2 corner, ImVec2 size, std::size_t step, const P
     }
   }
   ImGui::End();
+  say_refusals(ImVec2(corner.x, refused_row_foot.value_or(title_foot)), size.x, colours);
+}
+
+void ParametersPanel::say_refusals(ImVec2 corner, float width, const draw::Theme& colours) const {
+  if (errors.empty()) return;
+  // Over the panel's rows, as wide as the panel, as high as the words wrapped in it: nothing
+  // gives way for it (issue 31: the message under its row folded the friction pairs and moved
+  // the Predict tab 105 px down). A click on it only ends it: passed through, the click a
+  // teacher gives the message to dismiss it set the slider under it (a knob takes a click).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // Broken between words: ImGui's wrapping broke the range "[0.1, 5]" after its point.
+  std::vector<std::string> said;
+  for (const auto& [name, error] : errors) {
+    std::string lines;
+    for (const std::string& line : draw::lines_that_fit(error, width - 2.0f * style.WindowPadding.x, 8)) {
+      lines += (lines.empty() ? "" : "\n") + line;
+    }
+    said.push_back(std::move(lines));
+  }
+  float height = 2.0f * style.WindowPadding.y - style.ItemSpacing.y;
+  for (const std::string& lines : said) height += ImGui::CalcTextSize(lines.c_str()).y + style.ItemSpacing.y;
+  ImGui::SetNextWindowPos(corner);
+  ImGui::SetNextWindowSize(ImVec2(width, height));
+  ImGui::PushStyleColor(ImGuiCol_Border, colours.bad);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, std::max(1.0f, std::round(0.1f * ImGui::GetFontSize())));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoMove;
+  if (ImGui::Begin("###refused", nullptr, flags)) {
+    // Over the panels drawn after the Parameters panel too (the tabs under it).
+    ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+    for (const std::string& lines : said) {
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colours.bad), "%s", lines.c_str());
+      draw::note_text(lines.c_str());
+    }
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+  ImGui::PopStyleColor();
 }
 
 void ParametersPanel::preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls) {
@@ -407,7 +454,8 @@ void ParametersPanel::typed_value(const lessons::Parameter& parameter, ControlPl
   const ImVec2 padding = ImGui::GetStyle().FramePadding;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   draw::note_text_in(typed, ImVec2(min.x + padding.x, min.y + padding.y), ImRect(min, max));
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Type an exact value and press Enter");
+  // Not over a refusal's message, which stands under the box the pointer is still on.
+  if (ImGui::IsItemHovered() && errors.empty()) ImGui::SetTooltip("Type an exact value and press Enter");
 }
 
 void ParametersPanel::reset_button(const lessons::Parameter& parameter, ControlPlaces& controls) {

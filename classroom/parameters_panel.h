@@ -50,7 +50,9 @@ struct ParametersPanel {
   // Values asked for during this frame: a slider's, a preset's, a reset's, a choice's as numbers
   // (never written out and read back), a typed one as its text.
   std::vector<std::pair<std::string, lessons::GivenValue>> asked;
-  std::map<std::string, std::string> errors;               // a refused value, beside its control
+  // A refused value's message, by the parameter's name: said under its row, over the rows below,
+  // until the teacher's next click or a value taken.
+  std::map<std::string, std::string> errors;
 
   // Another lesson: nothing opened, folded, held or refused in the one before.
   void forget();
@@ -97,6 +99,9 @@ struct ParametersPanel {
   void typed_value(const lessons::Parameter& parameter, ControlPlaces& controls);
   void reset_button(const lessons::Parameter& parameter, ControlPlaces& controls);
   void preset_row(const lessons::Parameter& mu_s, const ParametersOnShow& on_show, ControlPlaces& controls);
+  // The refused values' messages in a panel of their own from `corner` (its top left) down, over
+  // whatever is there: no panel gives way for them.
+  void say_refusals(ImVec2 corner, float width, const draw::Theme& colours) const;
 };
 
 }  // namespace frictionlab::classroom

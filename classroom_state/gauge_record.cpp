@@ -39,8 +39,11 @@ void GaugeRecord::after_step(const Scene& scene) {
   if (const std::optional<Surface> surface = surface_under(scene, body)) along = surface->along;
   const float size = along.Normalize();
   const double pull = size > 0.0f ? static_cast<double>(b2Dot(total, along)) : static_cast<double>(total.Length());
+  const b2Vec2 velocity = body->GetLinearVelocity();
+  const double momentum = static_cast<double>(body->GetMass()) *
+                          (size > 0.0f ? static_cast<double>(b2Dot(velocity, along)) : static_cast<double>(velocity.Length()));
   samples_.push_back({scene.frame(), scene.time(), static_cast<double>(hand.Length()), pull, lesson_pulls,
-                      !scene.slipping().empty() && scene.slipping().back() != 0});
+                      !scene.slipping().empty() && scene.slipping().back() != 0, momentum});
 }
 
 std::vector<HandStretch> GaugeRecord::stretches(double frame_step) const {
@@ -94,16 +97,20 @@ std::optional<GaugeFigures> GaugeRecord::figures(double frame_step) const {
   const double slid_from = figures.peak ? figures.peak_time : samples_[first].t;
   double sum = 0.0;
   long count = 0;
-  for (std::size_t i = first; i < samples_.size(); ++i) {
+  for (std::size_t i = first + 1; i < samples_.size(); ++i) {
     const GaugeSample& sample = samples_[i];
     if (sample.t < slid_from + settle_time - 0.5 * frame_step || !sample.slipping) continue;
+    const double net_force = (sample.momentum - samples_[i - 1].momentum) / frame_step;
+    if (std::abs(net_force) > steady_share * pull(sample)) continue;
     if (count == 0) figures.plateau_from = sample.t;
     figures.plateau_to = sample.t;
     sum += pull(sample);
     ++count;
   }
-  // A tenth of a second of sliding at least, or there is no plateau to speak of yet.
-  if (count > 0 && figures.plateau_to - figures.plateau_from >= 0.1 - 0.5 * frame_step) {
+  // A tenth of a second of steady sliding at least, or there is no plateau to speak of yet: its
+  // steps counted, not the time from the first to the last (two steady steps of a swing a tenth
+  // of a second apart are no plateau).
+  if (count > 0 && static_cast<double>(count) * frame_step >= 0.1 - 0.5 * frame_step) {
     figures.plateau = sum / static_cast<double>(count);
   }
   return figures;

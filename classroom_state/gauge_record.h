@@ -23,6 +23,9 @@ struct GaugeSample {
   double pull = 0.0;
   bool lesson_pulls = false;  // the lesson pulled the held body too in this step
   bool slipping = false;    // a contact was slipping at the end of the step
+  // kg·m/s, the body's momentum along the pull's direction at the end of the step: from one step
+  // to the next, the net force, which tells steady sliding from a body coasting to a stop.
+  double momentum = 0.0;
 };
 
 // A stretch of the run the hand pulled: from the start of its first step to the end of its last.
@@ -32,8 +35,11 @@ struct HandStretch {
 
 // What the latest stretch shows: the peak, the largest pull while the body held, up to the step
 // it broke away in (static friction's limit; none when it was sliding when taken), and the mean
-// pull while the body slid once the pull had settled after the breakaway (none until it has slid
-// that long). A pull after the breakaway is no peak: the trial's pulley gave "peak 10.5 N" for
+// pull while the body slid steadily once the pull had settled after the breakaway (none until it
+// has slid that long). Steadily: the net force on it, its momentum's change a step, within
+// steady_share of the pull, so that the pull is friction's within that share. A hand that stops
+// lets the body coast to a stop through the gauge's spring, reading less than friction all the
+// while; a teacher's trial read a plateau 33 % under μk·m·g, those steps counted. A pull after the breakaway is no peak: the trial's pulley gave "peak 10.5 N" for
 // the jolt of its weight landing, and the incline a peak in mid-slide, where the hand sped up.
 // The pull is the gauge's reading, or with the lesson's own pulls added when the lesson pulled
 // the body too.
@@ -53,6 +59,8 @@ class GaugeRecord {
   // Time after the peak the pull is given to settle before the plateau is averaged: four of
   // the gauge's time constants at its 1.5 Hz, in which its swing dies to a tenth.
   static constexpr double settle_time = 0.4;  // s
+  // The most net force, as a share of the pull, a step of the plateau may have.
+  static constexpr double steady_share = 0.05;
 
   // After each frame of the lesson: a sample when the hand holds a body.
   void after_step(const Scene& scene);

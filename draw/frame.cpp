@@ -298,8 +298,15 @@ struct FramePlots {
   const lessons::Lesson& lesson;
   const FrameStyle& style;
   std::size_t count() const { return lesson.plots().size() + (style.extra_plot ? 1 : 0); }
-  const std::string& title(std::size_t i) const {
-    return i == lesson.plots().size() ? style.extra_plot_title : lesson.plots()[i].title;
+  // The title as shown: a plot's answer ("θc = 30.96°") joins it once the theory is shown.
+  std::string title(std::size_t i) const { return titled(i, !style.theory_kept_back()); }
+  // The title at its longest, with the answer: the room its panel keeps from the opening, so
+  // that the reveal moves nothing.
+  std::string title_room(std::size_t i) const { return titled(i, true); }
+  std::string titled(std::size_t i, bool with_answer) const {
+    if (i == lesson.plots().size()) return style.extra_plot_title;
+    const lessons::Plot& plot = lesson.plots()[i];
+    return with_answer && !plot.answer.empty() ? plot.title + ", " + plot.answer : plot.title;
   }
 };
 
@@ -320,7 +327,8 @@ std::size_t plots_per_row(lessons::Lesson& lesson, const FrameStyle& style, cons
                       layout.plots_size.y / static_cast<float>(rows) - (rows > 1 ? gap : 0.0f));
     for (std::size_t i = 0; i < lesson.plots().size(); ++i) {
       // A little less than the panel will hold, so that rounding does not tip the choice.
-      const ImVec2 area = chart_area(plots.title(i), size, (paged && i % per_row == 0) || (style.projector && plots.count() == 1));
+      const ImVec2 area =
+          chart_area(plots.title_room(i), size, (paged && i % per_row == 0) || (style.projector && plots.count() == 1));
       const Chart chart = plot_chart(lesson, i, time_span, colours, true);
       const ImVec2 room(area.x - 4.0f * s, area.y - 4.0f * s);
       if (!legend_has_room(chart, room, fonts)) return false;
@@ -434,17 +442,35 @@ void draw_plots(lessons::Lesson& lesson, const FrameStyle& style, const FrameLay
       page = turn_plot_pages(lesson, style, page_count);
       i = page * per_row;
     }
-    const std::string& title = plots.title(i);
-    const bool inside = !headed && title_inside(title, size);
+    const std::string title = plots.title(i);
+    const std::string room = plots.title_room(i);
+    const bool inside = !headed && title_inside(room, size);
     if (!headed) open = begin_panel(id.c_str(), inside ? "" : title.c_str(), at, size);
     if (open) {
       if (headed || inside) {
         // The title on the buttons' line, as a title bar would have it, with the page's number;
-        // or wrapped inside the panel, longer than its bar.
+        // or wrapped inside the panel, longer than its bar. As many lines as the title with its
+        // answer takes, shown or not, so that the plot under it stays put at the reveal.
         if (pager) ImGui::AlignTextToFramePadding();
         const std::string line = pager ? pager_line(title, page, page_count) : title;
+        const std::string longest = pager ? pager_line(room, page, page_count) : room;
         ImGui::PushTextWrapPos(0.0f);
-        shown_text(line.c_str());
+        if (line == longest) {
+          shown_text(line.c_str());
+        } else {
+          // The title with its answer laid out unseen, then the title as shown drawn in its
+          // place: the panel keeps the answer's lines from the opening. (Moving the cursor down
+          // by the lines' difference left the data 0.2–1.8 px off, as ImGui rounds positions.)
+          const float wrap_width = ImGui::GetContentRegionAvail().x;
+          ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.0f, 0.0f, 0.0f));
+          ImGui::TextUnformatted(longest.c_str());
+          ImGui::PopStyleColor();
+          const ImVec2 from = ImGui::GetItemRectMin();
+          ImGui::GetWindowDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(), from, ImGui::GetColorU32(ImGuiCol_Text),
+                                              line.c_str(), nullptr, wrap_width);
+          const ImVec2 extent = ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap_width);
+          note_text_at(line.c_str(), ImRect(from, ImVec2(from.x + extent.x, from.y + extent.y)));
+        }
         ImGui::PopTextWrapPos();
       }
       plot_in_panel(lesson, style, i, time_span, colours);

@@ -205,6 +205,7 @@ struct TheoryCells {
   bool error_column = true;
   bool class_column = false;  // the class's answers between the theory and the measurement
   float widest[3];            // theory, measured, and the error or the class's answers
+  bool planned = false;       // each number's column exactly widest[]: the plan's widths (planned_cells)
   float numbers() const {
     return widest[0] + widest[1] + widest[2] + (error_column || class_column ? 6.0f : 4.0f) * ImGui::GetStyle().CellPadding.x;
   }
@@ -336,6 +337,96 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
   return table;
 }
 
+// The rows as a run may end them, whatever values it and the sliders give, so that none changes
+// the plan: each number as wide as three figures with a sign ("−88.8 N"), each word as the theory
+// says it, the error at the wider of its two forms ("−0.00888", "−8.8×10⁻¹⁰"), each row passing
+// and failing (their marks differ in width).
+std::vector<std::vector<lessons::ExpectationResult>> ended_runs(const std::vector<lessons::ExpectationResult>& rows) {
+  std::vector<std::vector<lessons::ExpectationResult>> runs;
+  for (const double off : {-0.00888, -8.8e-10}) {
+    for (const bool passes : {true, false}) {
+      std::vector<lessons::ExpectationResult> ended = rows;
+      for (lessons::ExpectationResult& row : ended) {
+        if (row.failed) continue;
+        row.measured_yet = true;
+        row.hand_pulled = false;
+        row.passes = passes;
+        row.predicted = -88.8;
+        row.measured = row.predicted + off;
+        row.measured_text = row.predicted_text;
+      }
+      runs.push_back(std::move(ended));
+    }
+  }
+  return runs;
+}
+
+// The rows at the run's end with each measured just as its theory says, passing and failing: a
+// measurement of what its theory predicts is of the same size, and as wide written.
+std::vector<std::vector<lessons::ExpectationResult>> measured_as_the_theory(const std::vector<lessons::ExpectationResult>& rows) {
+  std::vector<std::vector<lessons::ExpectationResult>> runs;
+  for (const bool passes : {true, false}) {
+    std::vector<lessons::ExpectationResult> ended = rows;
+    for (lessons::ExpectationResult& row : ended) {
+      if (row.failed) continue;
+      row.measured_yet = true;
+      row.hand_pulled = false;
+      row.passes = passes;
+      row.measured = row.predicted;
+      row.measured_text = row.predicted_text;
+    }
+    runs.push_back(std::move(ended));
+  }
+  return runs;
+}
+
+// A projector's table (TheoryColumns::verdicts) is planned at its tallest from the lesson's
+// opening (theory_contents_tallest_height), its columns as wide as any run's values make them
+// (ended_runs): it is drawn at those widths, so that no column narrows or widens as the run fills
+// its rows in or as R takes them back to "not yet", no name wraps anew, and no row moves under
+// the teacher's pointer (issue 31: at the run's end stacked_blocks' last row came 106 px down,
+// names above it wrapped anew beside measurements wider than "not yet"; R put it back). `with_the_values`:
+// the columns drawn are wider where this lesson's values need it, its theory's as they are and
+// each measured value as wide as its theory (wedge's "\u22120.0636 m \u2713", wider than "\u221288.8 m \u2713"); the
+// plan is the placeholders' alone, which no slider changes, so that the column's plan holds while
+// the teacher drags one. A measurement wider still (another order of magnitude than its theory's)
+// widens its column as it comes.
+TheoryCells planned_cells(const std::vector<lessons::ExpectationResult>& rows, bool predictions_hidden, float width,
+                          TheoryColumns columns, const ClassAnswers& answers, bool with_the_values = true) {
+  TheoryCells table = theory_cells(rows, predictions_hidden, width, columns, answers);
+  if (columns != TheoryColumns::verdicts) return table;
+  table.planned = true;
+  std::vector<std::vector<lessons::ExpectationResult>> runs = ended_runs(rows);
+  if (with_the_values) {
+    for (std::vector<lessons::ExpectationResult>& run : measured_as_the_theory(rows)) runs.push_back(std::move(run));
+  } else {
+    std::fill(std::begin(table.widest), std::end(table.widest), 0.0f);
+  }
+  for (const std::vector<lessons::ExpectationResult>& ended : runs) {
+    const TheoryCells run = theory_cells(ended, predictions_hidden, width, columns, answers);
+    for (int column = 0; column < 3; ++column) table.widest[column] = std::max(table.widest[column], run.widest[column]);
+  }
+  return table;
+}
+
+// The height of `table`'s rows and headers (theory_contents draws them) at a width, in the current font.
+float rows_height(const std::vector<lessons::ExpectationResult>& rows, const TheoryCells& table, float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  const float row_padding = 2.0f * style.CellPadding.y;  // above and below a row's text
+  const bool above = table.names_above(width);
+  const float padding = 2.0f * style.CellPadding.x;
+  // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.
+  const float name_width = above ? width - padding : std::max(1.0f, width - table.numbers() - padding);
+  float height = font + row_padding;  // the headers
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const float name = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, name_width).y;
+    const float numbers = static_cast<float>(table.cells[i].error_lines) * font;
+    height += above ? name + numbers + 2.0f * row_padding : std::max(name, numbers) + row_padding;
+  }
+  return height;
+}
+
 }  // namespace
 
 void theory_panel(const std::vector<lessons::ExpectationResult>& rows, ImVec2 corner, ImVec2 size, const Theme& theme,
@@ -363,10 +454,13 @@ void setup_theory_columns(const TheoryCells& table, bool names_above) {
       ImGui::TableSetupColumn("measured", ImGuiTableColumnFlags_WidthStretch);
     }
   } else {
+    // The numbers' columns fit what they hold, or (planned) the widest the run may give them,
+    // and the names take the rest.
+    const ImGuiTableColumnFlags fixed = table.planned ? ImGuiTableColumnFlags_WidthFixed : ImGuiTableColumnFlags_None;
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("theory");
+    ImGui::TableSetupColumn("theory", fixed, table.planned ? widest[0] : 0.0f);
     if (table.class_column) ImGui::TableSetupColumn("class", ImGuiTableColumnFlags_WidthFixed, widest[2]);
-    ImGui::TableSetupColumn("measured");
+    ImGui::TableSetupColumn("measured", fixed, table.planned ? widest[1] : 0.0f);
     if (table.error_column) ImGui::TableSetupColumn(table.error_heading.c_str());
   }
 }
@@ -413,7 +507,7 @@ void theory_row(const std::string& name, const TheoryCells::Cells& cell, const T
     // "not yet", or a failed row's "?" (as the class's table beside it shows it).
     ImGui::TextDisabled("%s", cell.measured.c_str());
     note_text(cell.measured.c_str());
-    ImGui::TableNextColumn();
+    if (table.error_column) ImGui::TableNextColumn();
     return;
   }
   shown_text(cell.measured.c_str());
@@ -448,7 +542,7 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
     return;
   }
   const float table_width = ImGui::GetContentRegionAvail().x;
-  const TheoryCells table = theory_cells(rows, predictions_hidden, table_width, columns, answers);
+  const TheoryCells table = planned_cells(rows, predictions_hidden, table_width, columns, answers);
   const int numbers = table.error_column || table.class_column ? 3 : 2;
   const bool names_above = table.names_above(table_width);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH;
@@ -465,25 +559,13 @@ void theory_contents(const std::vector<lessons::ExpectationResult>& rows, const 
 float theory_contents_height(const std::vector<lessons::ExpectationResult>& rows, float width, const std::string& error,
                              const std::string& caveat, bool predictions_hidden, TheoryColumns columns) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float font = ImGui::GetFontSize();
-  const float row_padding = 2.0f * style.CellPadding.y;  // above and below a row's text
   float height = 0.0f;
   for (const std::string* text : {&error, &caveat}) {
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
-  if (rows.empty()) return height + font + style.ItemSpacing.y;
-  const TheoryCells table = theory_cells(rows, predictions_hidden, width, columns);
-  const bool above = table.names_above(width);
-  const float padding = 2.0f * style.CellPadding.x;
-  // The names wrap as theory_contents wraps them: across the row, or in what the numbers leave.
-  const float name_width = above ? width - padding : std::max(1.0f, width - table.numbers() - padding);
-  height += font + row_padding;  // the headers
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const float name = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, name_width).y;
-    const float numbers = static_cast<float>(table.cells[i].error_lines) * font;
-    height += above ? name + numbers + 2.0f * row_padding : std::max(name, numbers) + row_padding;
-  }
-  return height + style.ItemSpacing.y;
+  if (rows.empty()) return height + ImGui::GetFontSize() + style.ItemSpacing.y;
+  const TheoryCells table = planned_cells(rows, predictions_hidden, width, columns, {});
+  return height + rows_height(rows, table, width) + style.ItemSpacing.y;
 }
 
 float theory_contents_tallest_height(const std::vector<lessons::ExpectationResult>& rows, float width,
@@ -497,56 +579,29 @@ float theory_contents_tallest_height(const std::vector<lessons::ExpectationResul
   for (const std::string* text : {&error, &caveat}) {
     if (!text->empty()) height += ImGui::CalcTextSize(text->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   }
-  // Whatever values the run and the sliders give, so that none changes the plan: each
-  // number as wide as three figures with a sign ("−88.8 N"), each word as the theory says it, the
-  // error at the wider of its two forms ("−0.00888", "−8.8×10⁻¹⁰"), each error on as many lines
-  // as theory_cells then breaks it into, and each name the taller of its two places: on lines of
+  // Without the error column the table is drawn at the plan's widths (planned_cells): its height
+  // is theirs, whatever the run has measured yet.
+  if (columns == TheoryColumns::verdicts) {
+    const TheoryCells table = planned_cells(rows, predictions_hidden, width, columns, answers, false);
+    return height + rows_height(rows, table, width) + style.ItemSpacing.y;
+  }
+  // With it, whatever values the run gives (ended_runs), each error on as many lines as
+  // theory_cells then breaks it into, and each name the taller of its two places: on lines of
   // its own across the row, or beside the numbers in the least room theory_contents leaves it
   // there (names_above: 9 m's).
   const float padding = 2.0f * style.CellPadding.x;
   const float least_beside = std::max(1.0f, 9.0f * ImGui::CalcTextSize("m").x - padding);
-  // Without the error column each measured value has its verdict beside it, one line: the names
-  // go beside the numbers in what the widest of them leave (each row passing and failing, whose
-  // marks differ in width), or above them where that is under 9 m's.
-  const bool verdicts = columns == TheoryColumns::verdicts;
   std::vector<int> error_lines(rows.size(), 1);
-  float least_verdicts_beside = width;
-  bool verdicts_above = false, verdicts_beside = false;
-  for (const double off : {-0.00888, -8.8e-10}) {
-    for (const bool passes : {true, false}) {
-      std::vector<lessons::ExpectationResult> ended = rows;
-      for (lessons::ExpectationResult& row : ended) {
-        if (row.failed) continue;
-        row.measured_yet = true;
-        row.hand_pulled = false;
-        row.passes = passes;
-        row.predicted = -88.8;
-        row.measured = row.predicted + off;
-        row.measured_text = row.predicted_text;
-      }
-      const TheoryCells table = theory_cells(ended, predictions_hidden, width, columns, answers);
-      for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
-      // The room beside the numbers only where the names go beside them: where they go above,
-      // what the numbers leave (under 9 m's, down to none with the class's column) holds no name.
-      if (table.names_above(width)) {
-        verdicts_above = true;
-      } else {
-        verdicts_beside = true;
-        least_verdicts_beside = std::min(least_verdicts_beside, std::max(1.0f, width - table.numbers() - padding));
-      }
-    }
+  for (const std::vector<lessons::ExpectationResult>& ended : ended_runs(rows)) {
+    const TheoryCells table = theory_cells(ended, predictions_hidden, width, columns, answers);
+    for (std::size_t i = 0; i < rows.size(); ++i) error_lines[i] = std::max(error_lines[i], table.cells[i].error_lines);
   }
   height += font + row_padding;  // the headers
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const float numbers = static_cast<float>(error_lines[i]) * font;
     const float above = ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, width - padding).y + numbers + 2.0f * row_padding;
-    const float beside_room = verdicts ? least_verdicts_beside : least_beside;
-    const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, beside_room).y, numbers) + row_padding;
-    if (!verdicts || (verdicts_above && verdicts_beside)) {
-      height += std::max(above, beside);
-    } else {
-      height += verdicts_above ? above : beside;
-    }
+    const float beside = std::max(ImGui::CalcTextSize(rows[i].name.c_str(), nullptr, false, least_beside).y, numbers) + row_padding;
+    height += std::max(above, beside);
   }
   return height + style.ItemSpacing.y;
 }

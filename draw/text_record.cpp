@@ -38,11 +38,11 @@ TextRecording::~TextRecording() { active = previous_; }
 
 bool recording_text() { return active != nullptr; }
 
-void note_text(const char* text) {
+void note_text(const char* text) { note_text_at(text, ImRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax())); }
+
+void note_text_at(const char* text, const ImRect& item) {
   if (active == nullptr) return;
-  const ImRect item(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-  const ImGuiWindow* window = ImGui::GetCurrentWindowRead();
-  add(text, item, seen_area(window->Rect()));
+  add(text, item, seen_area(ImGui::GetCurrentWindowRead()->Rect()));
 }
 
 void note_text_in(const char* text, ImVec2 start, const ImRect& frame) {

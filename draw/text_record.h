@@ -46,6 +46,9 @@ void note_text(const char* text);
 void note_text_in(const char* text, ImVec2 start, const ImRect& frame);
 // The same, centred in `frame` as sliders and buttons draw it.
 void note_text_centred(const char* text, const ImRect& frame);
+// `text` drawn by the draw list into `item` (wrapped as it needed): its rect against the clip
+// rectangle in force, as note_text has it.
+void note_text_at(const char* text, const ImRect& item);
 // The current panel's title, in its title bar.
 void note_title(const char* title);
 // ImGui::TextUnformatted, noted.

@@ -54,12 +54,13 @@ probe { "normal_force", unit = "N", read = { touch, "normal" } }
 -- holding it, m·g·sin θ up the slope, is within the most static friction gives, max(mu_s, mu_k)·N
 -- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); the two levels are those
 -- (negative, up the slope, as friction is here).
--- The plot's title says the lesson's key number, the critical angle θc (tan θc = max(mu_s, mu_k)),
--- read here while building, so that a coefficient moved builds the lesson again with it; each
--- level says its force alone ("θc = 30.96°: −μs·N = −4.82 N" glued two facts in one label: a
--- teacher's trial).
+-- The plot's answer is the lesson's key number, the critical angle θc (tan θc = max(mu_s, mu_k)),
+-- read here while building, so that a coefficient moved builds the lesson again with it. The
+-- window adds it to the title once the theory is shown: in the title from the start, it told
+-- the class the answer before they predicted (a teacher's trial). Each level says its force
+-- alone ("θc = 30.96°: −μs·N = −4.82 N" glued two facts in one label).
 local critical = string.format("%.2f°", math.deg(math.atan(math.max(param.mu_s, param.mu_k))))
-plot { "Forces from the slope, θc = " .. critical, y = { "friction_force", "normal_force" },
+plot { "Forces from the slope", answer = "θc = " .. critical, y = { "friction_force", "normal_force" },
   levels = {
     { "−μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
     { "holding it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },

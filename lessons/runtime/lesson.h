@@ -82,6 +82,9 @@ struct PlotLevel {
 
 struct Plot {
   std::string title;
+  // The plot's answer to the lesson's question ("θc = 30.96°"): the window adds it to the title
+  // once the theory is shown, and keeps the title without it while the class predicts.
+  std::string answer;
   std::string declared_at;
   PlotKind kind = PlotKind::time;
   std::string x;  // "time" on a time plot; the first of `xs` when each y has its own x

@@ -790,9 +790,10 @@ void read_levels_field(lua_State* state, Fields& fields, Plot& declared, PlotFun
 int plot(lua_State* state) {
   return guarded(state, [&] {
     require_building(state, "plot");
-    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory", "levels", "shade"});
+    Fields fields(state, 1, "plot", {"kind", "x", "y", "theory", "levels", "shade", "answer"});
     Plot declared;
     declared.title = fields.name();
+    declared.answer = fields.text("answer", "");
     declared.declared_at = caller(state);
     // Without a kind the old form still reads as before: no x, a time series; an x, y against it.
     const std::string kind = fields.text("kind", fields.has("x") ? "xy" : "time");

@@ -63,8 +63,9 @@ TEST(ParametersPanel, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
   EXPECT_NE(hands.classroom().control_error("mu_k").find("outside the allowed range [0, 2]"), std::string::npos)
       << hands.classroom().control_error("mu_k");
 
-  // The reset button puts the script's value back, and the message goes with the mistake.
-  hands.frame();  // the message made room for itself: the user sees where the button went
+  // The reset button puts the script's value back, and the message goes with the mistake (it
+  // stands over the rows under the box, and moves nothing: StableLayout in test_projector).
+  hands.frame();
   hands.click("mu_k reset");
   EXPECT_EQ(hands.lesson().parameter("mu_k").value, 0.35);
   EXPECT_EQ(hands.classroom().control_error("mu_k"), "");

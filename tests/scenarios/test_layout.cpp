@@ -205,7 +205,8 @@ std::string legend_on_data(const draw::ChartLayout& plot) {
 // Every plot of every lesson in the window on `screen` as the class sees it: through the run (at
 // a quarter, half and its end, and a fifth of it past the end, where a window
 // still records: tipping_box's box lies tipped, its "no contact" keyed) and after the theory is
-// revealed (its curves add keys; at half, the end and past it), on every page of plots (turned by the → button). `check` has each
+// revealed (its curves add keys; at half and past the end), on every page of plots (turned by the
+// pager's buttons, then its keys). `check` has each
 // plot, the lesson's plot titles, where it was seen, and how many plots share its first page's
 // row; every plot is on some page and every page's texts are whole.
 void each_window_plot(const WindowScreen& screen,
@@ -222,17 +223,22 @@ void each_window_plot(const WindowScreen& screen,
       draw_window_frame(gl, host, window, display, 0.0, record);
     };
     const std::size_t plot_count = window.playback().lesson().plots().size();
-    const auto check_at = [&](double t, const char* moment) {
+    // The pages are walked forward at one moment and back at the next, from the page the last
+    // walk ended on: no frames go to turning back.
+    bool forward = true;
+    const auto check_at = [&](double t, const char* moment, bool by_button) {
       window.playback().run_to(t);
       const std::string where = entry.name + " " + moment + ", window " + screen.name;
       draw::FrameRecord record;
       frame(nullptr);
       frame(nullptr);
       frame(&record);
-      // The plots in view, then those on each further page (turned by the → button, when there
+      // The plots in view, then those on each further page (turned by the pager, when there
       // are pages).
       std::vector<bool> seen(plot_count, false);
       std::vector<draw::FrameRecord::Plot> plots = record.plots;
+      // Side by side: as many as a full page holds (a last page may hold fewer).
+      std::size_t side_by_side = record.plots.size();
       const auto button = [](const draw::FrameRecord& shown, const char* label) -> const draw::ShownText* {
         for (const draw::ShownText& text : shown.texts) {
           if (text.text == label) return &text;
@@ -251,35 +257,35 @@ void each_window_plot(const WindowScreen& screen,
         io.MousePos = ImVec2(-1.0f, -1.0f);
         frame(nullptr);
       };
+      const char* arrow = forward ? "\u2192" : "\u2190";
       draw::FrameRecord page = record;
       int pages = 1;
       std::size_t page_start = plots.empty() ? 0 : plots.front().number;
-      for (const draw::ShownText* next = button(page, "\u2192"); next != nullptr && pages <= static_cast<int>(plot_count);
-           next = button(page, "\u2192")) {
-        const draw::ShownText at = *next;
-        click(at);
+      for (const draw::ShownText* next = button(page, arrow); next != nullptr && pages <= static_cast<int>(plot_count);
+           next = button(page, arrow)) {
+        // By the arrow's button at the run's first moment (so that the buttons turn every
+        // lesson's pages), by its key after: one frame, where a click takes four.
+        if (by_button) {
+          const draw::ShownText at = *next;
+          click(at);
+        } else {
+          window.key_pressed(forward ? Key::right : Key::left, false);
+        }
         page = draw::FrameRecord();
         frame(&page);
-        // The last page's → does nothing.
+        // The last page's arrow does nothing.
         if (page.plots.empty() || page.plots.front().number == page_start) break;
         page_start = page.plots.front().number;
         ++pages;
         check_texts(page, where + ", plot page " + std::to_string(pages));
         plots.insert(plots.end(), page.plots.begin(), page.plots.end());
+        side_by_side = std::max(side_by_side, page.plots.size());
       }
-      // Back to the first page for the next moment.
-      for (int back = 1; back < pages; ++back) {
-        const draw::ShownText* previous = button(page, "\u2190");
-        ASSERT_NE(previous, nullptr) << where;
-        const draw::ShownText at = *previous;
-        click(at);
-        page = draw::FrameRecord();
-        frame(&page);
-      }
+      if (pages > 1) forward = !forward;
       for (const draw::FrameRecord::Plot& plot : plots) {
         ASSERT_LT(plot.number, plot_count) << where;
         seen[plot.number] = true;
-        check(plot, window.playback().lesson().plots()[plot.number].title, where, record.plots.size());
+        check(plot, window.playback().lesson().plots()[plot.number].title, where, side_by_side);
       }
       for (std::size_t i = 0; i < plot_count; ++i) {
         EXPECT_TRUE(seen[i]) << where << ": \"" << window.playback().lesson().plots()[i].title << "\" is on no page";
@@ -288,16 +294,22 @@ void each_window_plot(const WindowScreen& screen,
     for (const double share : {0.25, 0.5, 1.0, 1.2}) {
       char moment[32];
       std::snprintf(moment, sizeof moment, "at %.0f %% of the run", 100.0 * share);
-      check_at(share * duration, moment);
+      check_at(share * duration, moment, share == 0.25);
     }
     for (const lessons::Prediction& prediction : window.playback().lesson().predictions()) {
       window.predictions().answers[prediction.expectation] = prediction.is_choice() ? prediction.choices.back() : "1";
     }
     window.predictions().revealed = true;
-    for (const double share : {0.5, 1.0, 1.2}) {
+    // Back to half the run, replayed from its record: run_to only steps forward, and this moment
+    // was once drawn at 120 % under its "50 %" name. The end itself is left to the moments before
+    // the reveal (the reveal's keys are the same at the end as a fifth past it).
+    window.playback().scrub_to(0.5 * duration);
+    ASSERT_NEAR(window.playback().lesson().scene().time(), 0.5 * duration, window.playback().lesson().scene().frame_step())
+        << entry.name;
+    for (const double share : {0.5, 1.2}) {
       char moment[48];
       std::snprintf(moment, sizeof moment, "revealed, at %.0f %% of the run", 100.0 * share);
-      check_at(share * duration, moment);
+      check_at(share * duration, moment, false);
     }
   }
 }

@@ -1,7 +1,9 @@
 // Projector mode at 1920 × 1080: nothing moves under the teacher's pointer, every slider,
 // question and answer in sight, the key plot a third of the screen high, the title on one line.
+#include <algorithm>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "draw/overlays.h"
@@ -18,18 +20,22 @@ using namespace layout_checks;
 // frame up. In projector mode at 1920 × 1080, light and dark, with the class's predictions asked,
 // every panel, every tab's name and the reveal button keep their places from the lesson's
 // opening as the run plays, at its end, at the reveal (mid-run and at the end), when T hides the
-// theory again, and at R; with the stopwatch on from the opening too. A stopwatch turned on
-// mid-run moves the frame once (its strip takes a line over the title), and nothing after that.
+// theory again, and at R (pressed with the theory shown, which T then hides); with the stopwatch on from the opening
+// too. A stopwatch turned on mid-run moves the frame once (its strip takes a line over the
+// title), and nothing after that. The theory's rows, revealed mid-run, keep their places at the
+// run's end and at R: each of push's and incline's rows not yet measured was followed by an
+// empty row of ImGui's 4 px high (the cell after the table's last column began one), so the rows
+// under them rose by 4, 8 and 12 px as the run measured them and came down again at R.
 struct Placed {
   std::map<std::string, ImVec4> panels;  // each ImGui window drawn, by its id: x0, y0, x1, y1
   std::map<std::string, ImVec4> tabs;    // each tab's name in the column's tab bar
   std::optional<ImRect> reveal;
   std::optional<ImRect> time_bar;  // the transport bar's scrub bar: it shrank as the run's end notice came
+  std::map<std::string, ImVec4> rows;  // each theory row's name as drawn, while the theory shows
 };
 
-Placed placed(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& window, ImVec2 display) {
-  draw::FrameRecord record;
-  for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+// What the last frame drawn (its record) put where.
+Placed placed_in(Classroom& window, const draw::FrameRecord& record) {
   Placed found;
   for (const ImGuiWindow* panel : ImGui::GetCurrentContext()->Windows) {
     if (!panel->WasActive || (panel->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_ChildWindow)) != 0) {
@@ -48,7 +54,18 @@ Placed placed(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& windo
   }
   found.reveal = window.control("reveal");
   found.time_bar = window.control("scrub");
+  if (!window.theory_hidden()) {
+    for (const lessons::ExpectationResult& row : window.playback().readings().expectations) {
+      if (const std::optional<std::size_t> name = lower_panel_text(record, 0, row.name)) found.rows[row.name] = record.texts[*name].needed;
+    }
+  }
   return found;
+}
+
+Placed placed(draw::HeadlessContext& gl, draw::ImGuiHost& host, Classroom& window, ImVec2 display) {
+  draw::FrameRecord record;
+  for (int frame = 0; frame < 4; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 3 ? &record : nullptr);
+  return placed_in(window, record);
 }
 
 std::string rect_words(const ImVec4& r) {
@@ -95,11 +112,29 @@ void expect_same_places(const Placed& before, const Placed& after, const std::st
   }
 }
 
+// Every theory row's name where it was (its box: a name wrapped anew is another box), the
+// theory shown both times. Returns how many rows were compared.
+int expect_same_rows(const Placed& before, const Placed& after, const std::string& where) {
+  EXPECT_FALSE(before.rows.empty()) << where << ": no theory row was drawn before";
+  int compared = 0;
+  for (const auto& [name, rect] : before.rows) {
+    const auto now = after.rows.find(name);
+    if (now == after.rows.end()) {
+      ADD_FAILURE() << where << ": the theory row \"" << name << "\" is gone";
+      continue;
+    }
+    ++compared;
+    EXPECT_TRUE(rect.x == now->second.x && rect.y == now->second.y && rect.z == now->second.z && rect.w == now->second.w)
+        << where << ": the theory row \"" << name << "\" moved from " << rect_words(rect) << " to " << rect_words(now->second);
+  }
+  return compared;
+}
+
 TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEndTheRevealAndR) {
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
-  int tabs_seen = 0, notices_seen = 0;
+  int tabs_seen = 0, notices_seen = 0, rows_compared = 0;
   // The stopwatch: off, on from the lesson's opening, turned on mid-run.
   enum class Stopwatch { off, from_the_opening, mid_run };
   for (const char* name : {"push", "tipping_box", "incline", "stacked_blocks"}) {
@@ -128,7 +163,9 @@ TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEn
         }
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", mid-run");
         window.key_pressed(Key::t, false);
-        expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed mid-run");
+        // The theory's rows as first revealed, some measured and some not yet: where they stay.
+        const Placed revealed = placed(gl, host, window, display);
+        expect_same_places(opened, revealed, lesson + ", revealed mid-run");
         ASSERT_FALSE(window.theory_hidden()) << lesson;
         // A reveal by mistake is undone with T.
         window.key_pressed(Key::t, false);
@@ -139,19 +176,152 @@ TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEn
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the run's end");
         if (window.transport_words().find("run ends here") != std::string::npos) ++notices_seen;
         window.key_pressed(Key::t, false);
-        expect_same_places(opened, placed(gl, host, window, display), lesson + ", revealed at the run's end");
+        const Placed revealed_at_the_end = placed(gl, host, window, display);
+        expect_same_places(opened, revealed_at_the_end, lesson + ", revealed at the run's end");
+        rows_compared += expect_same_rows(revealed, revealed_at_the_end, lesson + ", revealed at the run's end");
         ASSERT_FALSE(window.theory_hidden()) << lesson;
-        window.key_pressed(Key::t, false);
-        expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T at the run's end");
+        // R with the theory shown: its rows go back to "not yet".
         window.key_pressed(Key::r, false);
-        expect_same_places(opened, placed(gl, host, window, display), lesson + ", after R");
+        const Placed reset = placed(gl, host, window, display);
+        expect_same_places(opened, reset, lesson + ", revealed, after R");
+        rows_compared += expect_same_rows(revealed, reset, lesson + ", revealed, after R");
+        window.key_pressed(Key::t, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden again by T after R");
+        EXPECT_TRUE(window.theory_hidden()) << lesson;
         window.playback().run_to(duration);
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the end of the run after R");
       }
     }
   }
+  EXPECT_GT(rows_compared, 0) << "no theory row was compared";
   EXPECT_GT(tabs_seen, 0) << "no tab's name was found: the test checks no tab";
   EXPECT_EQ(notices_seen, 4 * 2 * 3) << "the run's end notice was not said: the test checks no notice";
+}
+
+// Issue 31: with the theory shown, push's lower theory rows moved by 4, 8 and 12 px as they were
+// measured and back at R (a row not yet measured was followed by an empty one of ImGui's, 4 px
+// high), and as rows filled in, names wrapped anew beside measurements wider than "not yet"
+// (wedge's and lubricated's rows came 18 to 26 px down, stacked_blocks' last 106 px); the
+// column's plan followed the table's height as it changed, and stacked_blocks' tabs came 52 px
+// down at the run's end.
+// In projector mode at 1920 × 1080, every built-in lesson with the theory shown from its opening
+// (a teacher who takes no predictions): every panel, every tab's name and every theory row's name
+// in its place at the opening (each row "not yet"), mid-run, at the run's end and after R.
+TEST(StableLayout, EveryTheoryRowKeepsItsPlaceFromTheOpeningThroughTheRunItsEndAndR) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  int rows_compared = 0;
+  for (const lessons::CatalogEntry& entry : lessons::catalog()) {
+    ClassroomOptions options = class_window(entry.path, window_screens[2]);
+    options.window.predictions = false;
+    Classroom window(options);
+    const double duration = window.playback().lesson().duration();
+    const Placed opened = placed(gl, host, window, display);
+    ASSERT_FALSE(window.theory_hidden()) << entry.name;
+    for (const double share : {0.5, 1.0}) {
+      window.playback().run_to(share * duration);
+      const Placed now = placed(gl, host, window, display);
+      const std::string where = entry.name + (share < 1.0 ? ", mid-run" : ", at the run's end");
+      expect_same_places(opened, now, where);
+      rows_compared += expect_same_rows(opened, now, where);
+    }
+    window.key_pressed(Key::r, false);
+    const Placed reset = placed(gl, host, window, display);
+    expect_same_places(opened, reset, entry.name + ", after R");
+    rows_compared += expect_same_rows(opened, reset, entry.name + ", after R");
+  }
+  EXPECT_GE(rows_compared, 3 * 15) << "too few theory rows were compared";
+}
+
+// Issue 31: a value typed out of range (a mass of 5000 kg, then Enter) was refused with its
+// message under its row, which made the Parameters panel two lines taller: pulley's Predict
+// tab came 105 px down (projector, 1920 × 1080; push's 52 px at 1280 × 720), and where the
+// column was short the friction pairs had to fold for it. Now the message stands in a panel of its own over the rows under the box, and
+// nothing moves: every panel, tab, the reveal button and every slider keep their places. The
+// message is what the lesson said (the value and the allowed range), whole on the screen, its
+// top within a line under the box, across the Parameters panel; the next click (on the message,
+// over another row's slider) takes it away, sets nothing, and still nothing moves.
+TEST(StableLayout, ARefusedValueIsSaidUnderItsBoxAndMovesNothing) {
+  struct Case {
+    const char* lesson;
+    const char* parameter;
+    WindowScreen screen;
+  };
+  for (const Case& each : {Case{"pulley", "block_mass", window_screens[2]}, Case{"push", "mass", window_screens[0]}}) {
+    const ImVec2 display(static_cast<float>(each.screen.width), static_cast<float>(each.screen.height));
+    ClassroomHands hands(class_window(lessons::resolve_lesson(each.lesson), each.screen), display);
+    const std::string where = std::string(each.lesson) + ", " + each.screen.name;
+    const lessons::Parameter& parameter = hands.lesson().parameter(each.parameter);
+    const double value = parameter.value;
+    std::ostringstream range;  // as the lesson words it (physics/validation.cpp)
+    range << "is outside the allowed range [" << parameter.min << ", " << parameter.max << "]";
+    const auto seen = [&](draw::FrameRecord& record) {
+      for (int frame = 0; frame < 3; ++frame) hands.frame();
+      hands.frame(0.0, &record);
+      Placed found = placed_in(hands.classroom(), record);
+      found.panels.erase("###refused");  // the message's own, checked by what it says and where
+      for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+        if (const std::optional<ImRect> slider = hands.classroom().control(each_parameter.name + " slider")) {
+          found.panels["slider " + each_parameter.name] = ImVec4(slider->Min.x, slider->Min.y, slider->Max.x, slider->Max.y);
+        }
+      }
+      return found;
+    };
+    const auto message = [](const draw::FrameRecord& record) -> std::optional<draw::ShownText> {
+      for (const draw::ShownText& text : record.texts) {
+        if (text.panel.find("###refused") != std::string::npos) return text;
+      }
+      return std::nullopt;
+    };
+    draw::FrameRecord record;
+    const Placed before = seen(record);
+    ASSERT_FALSE(message(record).has_value()) << where;
+    const ImRect box = hands.control(std::string(each.parameter) + " value");
+    hands.click(each.parameter + std::string(" value"));
+    hands.type("5000");
+    hands.press_enter();
+    const std::string said = hands.classroom().control_error(each.parameter);
+    EXPECT_EQ(parameter.value, value) << where << ": the value was taken";
+    EXPECT_NE(said.find("5000"), std::string::npos) << where << ": " << said;
+    EXPECT_NE(said.find(range.str()), std::string::npos) << where << ": " << said;
+    draw::FrameRecord refused;
+    expect_same_places(before, seen(refused), where + ", a value refused");
+    const std::optional<draw::ShownText> shown = message(refused);
+    ASSERT_TRUE(shown.has_value()) << where << ": the refusal is not said";
+    std::string words = shown->text;
+    std::replace(words.begin(), words.end(), '\n', ' ');
+    EXPECT_EQ(words, said) << where;
+    EXPECT_TRUE(shown->whole() && shown->needed.w <= display.y) << where << ": the message needs " << text_of(shown->needed)
+                                                                << " but only " << text_of(shown->visible) << " shows";
+    EXPECT_GE(shown->needed.y, box.Max.y) << where << ": the message is over its box";
+    EXPECT_LE(shown->needed.y, box.Max.y + ImGui::GetFrameHeightWithSpacing()) << where << ": the message is not under its box";
+    const ImVec4& panel = before.panels.at("###parameters");
+    EXPECT_TRUE(shown->needed.x >= panel.x && shown->needed.z <= panel.z)
+        << where << ": the message at " << text_of(shown->needed) << " is not across the Parameters panel, " << text_of(panel);
+    // The next click, wherever it lands, ends it: here on the message itself, where a teacher
+    // clicks to dismiss it, over a slider of a row under the box. The click ends the message
+    // and sets nothing (let through, it set that slider: a knob takes a click).
+    std::optional<ImVec2> over_a_slider;
+    std::map<std::string, double> values;
+    for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+      values[each_parameter.name] = each_parameter.value;
+      const std::optional<ImRect> slider = hands.classroom().control(each_parameter.name + " slider");
+      if (over_a_slider || !slider || each_parameter.name == each.parameter) continue;
+      const ImRect both(ImMax(slider->Min, ImVec2(shown->needed.x, shown->needed.y)),
+                        ImMin(slider->Max, ImVec2(shown->needed.z, shown->needed.w)));
+      if (both.Min.x < both.Max.x && both.Min.y < both.Max.y) over_a_slider = both.GetCenter();
+    }
+    ASSERT_TRUE(over_a_slider.has_value()) << where << ": the message covers no slider, so the click shows nothing";
+    hands.click(*over_a_slider);
+    draw::FrameRecord clicked;
+    expect_same_places(before, seen(clicked), where + ", the message gone");
+    EXPECT_FALSE(message(clicked).has_value()) << where << ": the message stayed after a click";
+    for (const lessons::Parameter& each_parameter : hands.lesson().parameters()) {
+      EXPECT_EQ(each_parameter.value, values[each_parameter.name])
+          << where << ": the click on the message set " << each_parameter.name;
+    }
+  }
 }
 
 // Issue 31: at 1920 × 1080 in projector mode, with the class's predictions asked and the stopwatch
@@ -461,6 +631,83 @@ TEST(ProjectorPlots, TippingBoxAndInclineOpenOnAKeyPlotThatLabelsTheirKeyLevels)
         if (row.name == "push when it happens") {
           EXPECT_NEAR(row.predicted, -each.levels.front(), 1e-9);
         }
+      }
+    }
+  }
+}
+
+// Issue 31's trial: incline's key plot was titled "Forces from the slope, θc = 30.96°" from the
+// opening, the answer to the question the class was about to predict. The angle is the plot's
+// answer now, and joins its title at the reveal; the data under the title stays where it was
+// (the title's room is kept for the answer from the opening). On a projector, where the title is
+// the pager's line, and in a window of 1024 × 768, where plots stand side by side; and a student's
+// lesson whose answer is long enough to wrap the title onto more lines at both.
+TEST(ProjectorPlots, APlotsAnswerJoinsItsTitleAtTheRevealAndTheDataStaysPut) {
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  const lessons::ScriptFile long_answer(lessons::with_heading(
+      "local pull = parameter { \"pull\", 8, min = 0, max = 20, unit = \"N\", text = \"the pull F\" }\n"
+      "pair { \"wood\", \"wood\", mu_s = 0.5, mu_k = 0.4 }\n"
+      "local floor = ground { \"floor\", material = \"wood\" }\n"
+      "local block = box { \"block\", material = \"wood\", width = 0.3, height = 0.1, on = floor, at = 0, mass = 1 }\n"
+      "force { \"pull\", on = block, force = { pull, 0 } }\n"
+      "probe { \"speed\", unit = \"m/s\", read = { block, \"vx\" } }\n"
+      "probe { \"x\", unit = \"m\", read = { block, \"x\" } }\n"
+      "local function a() return math.max(param.pull - 0.4 * g, 0) end\n"
+      "plot { \"Speed\", y = { \"speed\" }, answer = string.format(\"a = (F − μk·m·g)/m = %.2f m/s², \" ..\n"
+      "  \"steady for as long as the pull lasts, once the block has broken away\", a()) }\n"
+      "plot { \"Place\", y = { \"x\" } }\n"
+      "plot { \"Speed again\", y = { \"speed\" } }\n"
+      "expect { \"acceleration\", unit = \"m/s²\", predicted = a, measured = function() return a() end }\n"
+      "predict { \"acceleration\", unit = \"m/s²\", question = \"How fast does the block speed up?\" }\n"));
+  struct Case {
+    std::string lesson, title, answered;  // its path, its key plot's title, and with the answer
+  };
+  for (const Case& each : {Case{lessons::resolve_lesson("incline"), "Forces from the slope", "Forces from the slope, \u03b8c = 30.96\u00b0"},
+                           Case{long_answer.path(), "Speed", "Speed, a = (F \u2212 \u03bck\u00b7m\u00b7g)/m = 4.08 m/s\u00b2"}}) {
+    for (const WindowScreen& screen : {window_screens[1], window_screens[2]}) {
+      const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
+      const std::string where = each.title + ", " + screen.name;
+      ClassroomOptions options = class_window(each.lesson, screen);
+      options.window.predictions = true;
+      Classroom window(options);
+      ASSERT_EQ(window.playback().lesson().plots().size(), 3u) << window.playback().lesson().last_error();
+      window.playback().run_to(0.5 * window.playback().lesson().duration());
+      // The key plot's title as drawn (on one line or wrapped), and its data's corners.
+      const auto key_plot = [&](ImVec4& data, float& height) {
+        draw::FrameRecord record;
+        for (int frame = 0; frame < 3; ++frame) draw_window_frame(gl, host, window, display, 0.0, frame == 2 ? &record : nullptr);
+        bool drawn = false;
+        for (const draw::FrameRecord::Plot& plot : record.plots) {
+          if (plot.number != 0) continue;
+          data = ImVec4(plot.layout.low_left.x, plot.layout.high_right.y, plot.layout.high_right.x, plot.layout.low_left.y);
+          drawn = true;
+        }
+        EXPECT_TRUE(drawn) << where << ": the key plot is not drawn";
+        std::string title;
+        for (const draw::ShownText& text : record.texts) {
+          if (text.text.rfind(each.title, 0) != 0 || text.text.rfind("Speed again", 0) == 0) continue;
+          title = text.text;
+          height = text.needed.w - text.needed.y;
+        }
+        return title;
+      };
+      ImVec4 before, after;
+      float height_before = 0.0f, height_after = 0.0f;
+      const std::string kept_back = key_plot(before, height_before);
+      ASSERT_TRUE(window.theory_hidden()) << where;
+      EXPECT_FALSE(kept_back.empty()) << where << ": no key plot title";
+      EXPECT_EQ(kept_back.find(each.answered), std::string::npos) << where << ": \"" << kept_back << "\" before the reveal";
+      window.key_pressed(Key::t, false);  // read as the next frame begins
+      const std::string revealed = key_plot(after, height_after);
+      ASSERT_FALSE(window.theory_hidden()) << where;
+      EXPECT_EQ(revealed.rfind(each.answered, 0), 0u) << where << ": \"" << revealed << "\" after the reveal";
+      EXPECT_EQ(rect_words(after), rect_words(before))
+          << where << ": the key plot's data moved at the reveal, from " << rect_words(before) << " (its title "
+          << height_before << " px high, then " << height_after << ")";
+      // A line more at least: the answer wrapped the title, and the room kept for it was needed.
+      if (each.title == "Speed") {
+        EXPECT_GT(height_after, 1.5f * height_before) << where << ": the long answer did not wrap the title";
       }
     }
   }
