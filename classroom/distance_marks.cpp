@@ -16,8 +16,45 @@ using draw::sub;
 
 namespace {
 
-// The distance marks' step: a nice length about 120 pixels long.
-float mark_step(const draw::Camera& camera, float scale) { return draw::nice_length(120.0f * scale / camera.pixels_per_metre); }
+// The least nice length (1, 2 or 5 times a power of ten) no shorter than `least`.
+float nice_length_at_least(float least) {
+  const float power = std::pow(10.0f, std::floor(std::log10(least)));
+  const float fraction = least / power;
+  return (fraction <= 1.0f ? 1.0f : fraction <= 2.0f ? 2.0f : fraction <= 5.0f ? 5.0f : 10.0f) * power;
+}
+
+}  // namespace
+
+float distance_mark_step(float pixels_per_metre, float scale, float body_length) {
+  // A nice length about 120 points long, the ruler's own size on the screen; but no longer than
+  // half the body measured, so that the slide is read against ticks a fraction of the body's own
+  // length apart: a projector's incline (its 0.4 m block on a slope 58 px a metre) had a tick
+  // every 5 m, one in view, for a slide of 1.2 m, and the class read nothing off it (issue 31).
+  float step = draw::nice_length(120.0f * scale / pixels_per_metre);
+  if (body_length > 0.0f && step > 0.5f * body_length) step = draw::nice_length_within(0.5f * body_length);
+  // And no closer than least_tick_spacing().
+  return std::max(step, nice_length_at_least(least_tick_spacing(scale) / pixels_per_metre));
+}
+
+float length_along(const b2Body* body, b2Vec2 along) {
+  float low = 1e30f, high = -1e30f;
+  const auto reach = [&](b2Vec2 point, float radius) {
+    const float at = b2Dot(point, along);
+    low = std::min(low, at - radius), high = std::max(high, at + radius);
+  };
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->GetType() == b2Shape::e_circle) {
+      const auto* circle = static_cast<const b2CircleShape*>(fixture->GetShape());
+      reach(body->GetWorldPoint(circle->m_p), circle->m_radius);
+    } else if (fixture->GetType() == b2Shape::e_polygon) {
+      const auto* polygon = static_cast<const b2PolygonShape*>(fixture->GetShape());
+      for (int k = 0; k < polygon->m_count; ++k) reach(body->GetWorldPoint(polygon->m_vertices[k]), 0.0f);
+    }
+  }
+  return high > low ? high - low : 0.0f;
+}
+
+namespace {
 
 struct Ruler {
   ImVec2 from, to;                   // the line, just inside the surface
@@ -72,17 +109,27 @@ std::optional<Ruler> ruler(const Surface& surface, b2Vec2 origin, const draw::Ca
 // The marks of one ruler, each number's box at its tick (beyond its end).
 DistanceMarks numbered(const Ruler& line, const draw::Fonts& fonts) {
   const float s = fonts.scale;
-  DistanceMarks marks{line.from, line.to, line.inward, line.step, {}};
+  DistanceMarks marks{line.from, line.to, line.inward, line.step, {}, 1};
+  // Numbers least_number_spacing() apart at least: every 1, 2, 5, … ticks (DistanceMarks::least_every).
+  const float pixels_per_step = line.ticks.size() >= 2 ? length(sub(line.ticks[1].first, line.ticks[0].first)) : 0.0f;
+  for (const std::size_t every : {1u, 2u, 5u, 10u, 20u, 50u}) {
+    marks.least_every = every;
+    if (pixels_per_step <= 0.0f || static_cast<float>(every) * pixels_per_step >= least_number_spacing(s) - 0.01f) break;
+  }
   for (const auto& [foot, metres] : line.ticks) {
     char number[32];
     std::snprintf(number, sizeof number, "%g m", std::abs(metres) < 1e-9 ? 0.0 : metres);
     std::string text = number;
     if (text[0] == '-') text.replace(0, 1, "\u2212");  // a minus sign, not a hyphen
     const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
+    // How far the text's box reaches along the ticks' direction from its middle: half its height
+    // under a floor, half its width and more under a steep slope's face (at 60° the box, moved
+    // half its height off the line, lay over the ticks, and no number was shown).
+    const float reach = std::abs(line.inward.x) * (0.5f * size.x + 2.0f) + std::abs(line.inward.y) * (0.5f * size.y + 2.0f);
     // Clear of the start's tick too, which is longer (12 px) than the others: "0 m" was never shown.
-    const ImVec2 centre = add(foot, mul(line.inward, 15.0f * s + 0.5f * size.y + 2.0f));
+    const ImVec2 centre = add(foot, mul(line.inward, 15.0f * s + reach));
     // Across the line from its tick, just clear of the surface.
-    const ImVec2 across = sub(foot, mul(line.inward, line.to_surface + 4.0f * s + 0.5f * size.y + 2.0f));
+    const ImVec2 across = sub(foot, mul(line.inward, line.to_surface + 4.0f * s + reach));
     // As the placer pads a label of the size the other readings give it.
     const float half_x = 0.5f * (size.x + 6.0f) + 2.0f, half_y = 0.5f * (size.y + 2.0f) + 2.0f;
     const auto box = [&](ImVec2 c) { return ImVec4(c.x - half_x, c.y - half_y, c.x + half_x, c.y + half_y); };
@@ -111,9 +158,10 @@ bool counted(const DistanceMark& mark, std::size_t every, double step) {
   return std::fmod(k, static_cast<double>(every)) == 0.0;
 }
 
-std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, const draw::Camera& camera,
-                                                  const draw::Fonts& fonts, const draw::LabelPlacer* labels) {
-  const float s = fonts.scale, step = mark_step(camera, s);
+std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2 origin, float body_length,
+                                                  const draw::Camera& camera, const draw::Fonts& fonts,
+                                                  const draw::LabelPlacer* labels) {
+  const float s = fonts.scale, step = distance_mark_step(camera.pixels_per_metre, s, body_length);
   const std::optional<Ruler> under = ruler(surface, origin, camera, s, step);
   if (!under) return std::nullopt;
   DistanceMarks marks = numbered(*under, fonts);
@@ -133,25 +181,41 @@ std::optional<DistanceMarks> distance_marks_along(const Surface& surface, b2Vec2
   return free_numbers(over_marks) > under_count ? over_marks : marks;
 }
 
+namespace {
+
+// Two numbers' boxes, as drawn (without the placer's padding), share a point.
+bool numbers_meet(const ImVec4& a, const ImVec4& b) {
+  return draw::overlaps(ImVec4(a.x + 2.0f, a.y + 2.0f, a.z - 2.0f, a.w - 2.0f), ImVec4(b.x + 2.0f, b.y + 2.0f, b.z - 2.0f, b.w - 2.0f));
+}
+
+}  // namespace
+
 void number_marks(DistanceMarks& marks, const draw::LabelPlacer& labels, std::size_t fewest_every) {
-  // Every tick, else every 2nd, 5th or 10th: the first that gives at least two numbers room, so
-  // that the scale can be read (fewer numbers rather than none), else the one giving the most.
-  std::size_t best_every = std::max<std::size_t>(fewest_every, 1), best_count = 0;
-  for (const std::size_t every : {1u, 2u, 5u, 10u}) {
+  // Every marks.least_every-th tick, else every 2nd, 5th, 10th, 20th or 50th: the first whose
+  // numbers, each at its tick where that is free (else across the line), lie clear of each other
+  // and are two at least, so that the scale can be read (fewer numbers rather than none), else
+  // the one giving the most. Ticks a fraction of the body's length apart (distance_mark_step)
+  // are closer than their numbers are wide.
+  fewest_every = std::max({fewest_every, marks.least_every, std::size_t{1}});
+  std::size_t best_every = fewest_every, best_count = 0;
+  for (const std::size_t every : {1u, 2u, 5u, 10u, 20u, 50u}) {
     if (every < fewest_every) continue;
-    std::size_t count = 0;
     std::vector<ImVec4> chosen;
     for (const DistanceMark& mark : marks.ticks) {
       if (!counted(mark, every, marks.step)) continue;
       for (const ImVec4& box : {mark.number_box, mark.across_box}) {
-        const bool apart = std::none_of(chosen.begin(), chosen.end(), [&](const ImVec4& other) { return draw::overlaps(box, other); });
-        if (!apart || !labels.free(box, true)) continue;
-        chosen.push_back(box), ++count;
+        if (!labels.free(box, true)) continue;
+        chosen.push_back(box);
         break;
       }
     }
-    if (count > best_count) best_every = every, best_count = count;
-    if (count >= 2) break;
+    bool apart = true;
+    for (std::size_t i = 0; i < chosen.size() && apart; ++i) {
+      for (std::size_t j = i + 1; j < chosen.size() && apart; ++j) apart = !numbers_meet(chosen[i], chosen[j]);
+    }
+    if (!apart) continue;
+    if (chosen.size() > best_count) best_every = every, best_count = chosen.size();
+    if (chosen.size() >= 2) break;
   }
   for (DistanceMark& mark : marks.ticks) {
     mark.numbered = counted(mark, best_every, marks.step);
@@ -177,7 +241,10 @@ void draw_distance_numbers(ImDrawList* draw, const DistanceMarks& marks, const d
                            draw::LabelPlacer& labels) {
   std::vector<const DistanceMark*> shown;
   for (const DistanceMark& mark : marks.ticks) {
-    if (mark.numbered && labels.free(mark.number_box, true)) shown.push_back(&mark);
+    const bool clear_of_shown = std::none_of(shown.begin(), shown.end(), [&](const DistanceMark* other) {
+      return numbers_meet(mark.number_box, other->number_box);
+    });
+    if (mark.numbered && labels.free(mark.number_box, true) && clear_of_shown) shown.push_back(&mark);
   }
   for (const DistanceMark* mark : shown) {
     labels.take(mark->number_box, mark->text);

@@ -250,7 +250,7 @@ std::optional<DistanceMarks> MeasuringTools::distance_marks(const lessons::Lesso
   if (!on.distance_marks || !origin_ || body == nullptr || !in_lane(lesson, camera, lane, body)) return std::nullopt;
   const std::optional<Surface> surface = surface_under(lesson.scene(), body);
   if (!surface) return std::nullopt;
-  return distance_marks_along(*surface, *origin_, camera, fonts, labels);
+  return distance_marks_along(*surface, *origin_, length_along(body, surface->along), camera, fonts, labels);
 }
 
 bool MeasuringTools::draw_readings(ImDrawList* draw, const lessons::Lesson& lesson, const draw::Camera& camera,

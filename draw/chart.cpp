@@ -216,7 +216,7 @@ void draw_level_texts_beside(const Painter& p) {
 }
 
 // The data area's edges, a steady chart's tick marks, the tick labels and the axes' names.
-void draw_axes(Painter& p, ImVec2 corner) {
+void draw_axes(Painter& p) {
   const Chart& chart = p.chart;
   ChartLayout& layout = p.layout;
   const ImVec2 low_left = layout.low_left, high_right = layout.high_right;
@@ -225,8 +225,7 @@ void draw_axes(Painter& p, ImVec2 corner) {
                                  std::pair{high_right, ImVec2(high_right.x, low_left.y)}, std::pair{high_right, ImVec2(low_left.x, high_right.y)}}) {
     layout.lines.push_back({Kind::axis, from, to, p.theme.axis});
   }
-  const float s = p.s, text = p.text;
-  const float gap = (chart.plain ? 5.0f : 4.0f) * s;
+  const float s = p.s;
   if (chart.steady) {
     // Tick marks outside the data in the axes' colour, between the edge and the tick labels:
     // on a projector the faint grid (1.3:1 on the panel) fades, and the ticks are what the
@@ -250,36 +249,16 @@ void draw_axes(Painter& p, ImVec2 corner) {
       p.line(Kind::tick, ImVec2(x, low_left.y), ImVec2(x, low_left.y + 0.6f * length), p.theme.axis, 0.7f * thickness);
     }
   }
+  // The tick labels and the axes' names where layout_chart put them (place_axis_texts): the
+  // ticks' labels in the numbers' font, the axes' names in the small text's.
   using TextKind = ChartLayout::AxisText::Kind;
-  const auto axis_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImU32 colour) {
-    // The ticks' labels in the numbers' font, the axes' names in the small text's.
-    const bool number = kind == TextKind::y_tick;  // the x ticks' labels in the small text (chart_layout.cpp)
-    ImFont* font = number ? p.numbers : p.font;
-    const float size = font->FontSize;
-    p.draw->AddText(font, size, at, colour, words.c_str());
-    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(font, words), at.y + size)});
-  };
-  const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
-  for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
-    const float x = p.at_axis_value(layout.x_ticks[i], layout.y_low).x;
-    const std::string& label = layout.x_tick_labels[i];
-    axis_text(TextKind::x_tick, label, ImVec2(x - 0.5f * width_of(p.font, label), low_left.y + x_labels_below), p.theme.text);
+  for (const ChartLayout::AxisText& label : layout.axis_texts) {
+    ImFont* font = label.kind == TextKind::y_tick ? p.numbers : p.font;
+    const ImU32 colour = label.kind == TextKind::y_name                       ? p.theme.faint_text
+                         : label.kind == TextKind::x_name && chart.plain ? p.theme.faint_text
+                                                                         : p.theme.text;
+    p.draw->AddText(font, font->FontSize, ImVec2(label.at.x, label.at.y), colour, label.text.c_str());
   }
-  for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
-    const float y = p.at_axis_value(layout.x_low, layout.y_ticks[i]).y;
-    const std::string& label = layout.y_tick_labels[i];
-    axis_text(TextKind::y_tick, label, ImVec2(low_left.x - width_of(p.numbers, label) - gap, y - 0.5f * p.number_text), p.theme.text);
-  }
-  const float width = high_right.x - low_left.x;
-  const ImVec2 x_label_at = chart.steady && std::isfinite(layout.x_label_at.x)
-                                ? layout.x_label_at
-                                : ImVec2(low_left.x + 0.5f * (width - width_of(p.font, chart.x_label)),
-                                         low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
-  axis_text(TextKind::x_name, chart.x_label, x_label_at, chart.plain ? p.theme.faint_text : p.theme.text);
-  const ImVec2 y_label_at = chart.steady && std::isfinite(layout.y_label_at.x) ? layout.y_label_at
-                            : chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
-                                          : ImVec2(corner.x + 8.0f * s, high_right.y - text - 4.0f * s);
-  axis_text(TextKind::y_name, chart.y_label, y_label_at, p.theme.faint_text);
 }
 
 }  // namespace
@@ -318,7 +297,7 @@ ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart
   }
   draw->PopClipRect();
   draw_level_texts_beside(painter);
-  draw_axes(painter, corner);
+  draw_axes(painter);
   draw_legend(draw, chart, keys_of(chart), layout, size, theme, fonts);
   return layout;
 }

@@ -197,7 +197,7 @@ struct ChartLayout {
   };
   std::vector<Line> lines;
   // The texts draw_chart wrote round the data (the tick labels, the axes' names), each with its
-  // box (x0, y0, x1, y1), for the layout tests. Empty from layout_chart.
+  // box (x0, y0, x1, y1): placed by layout_chart, before the levels' texts, which keep clear of them.
   struct AxisText {
     enum class Kind { x_tick, y_tick, x_name, y_name } kind;
     std::string text;

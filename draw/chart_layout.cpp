@@ -59,12 +59,22 @@ bool line_meets(const std::vector<ImVec2>& points, const ImVec4& box, float reac
 // text placed before it: at the line's right end, then its left end, then anywhere along it,
 // above the line before under it. Where no such place is, where it crosses the fewest pieces of
 // the data's lines, drawn under the series (ChartLayout::Level::beneath), where it meets no
-// text placed before it (else none: the line alone). None for a level off
+// text placed before it (else none: the line alone). Always level_clearance() off every level's
+// line, its own too, and off the axes' texts. None for a level off
 // the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
 // spring_pull's the last second and a half of its record: a teacher's trial.)
 // How far a level's text stands past its line's end in the column beside the data: the short
 // line that leads to it.
 constexpr float level_lead = 10.0f;
+
+// How far a level's text keeps clear of every level's line and of the axes' texts, its box as
+// drawn (a pixel above and below the text) to the line's edge or the other text's: a third of a
+// line of the level's font. A text 2 px off its line was read as lying on it (the README's
+// incline at 1280 × 720), and a projector's column put "= −5.63 N" 3 px over "time (s)" (issue 31).
+float level_clearance(ImFont* font) { return font->FontSize / 3.0f; }
+
+// The levels' lines are 1.5 points thick (draw_level_lines).
+float level_line_half(float s) { return 0.75f * s; }
 
 }  // namespace
 
@@ -95,8 +105,9 @@ float level_column(const Chart& chart, ImFont* font, float s, float chart_width)
 // Each level's text in the column beside the data, its middle at its line's height where the
 // texts before it leave room, else moved the least up or down to keep a gap between them, all
 // within the data's height (half a line above its top, where the top tick's label has room;
-// down to 2 points under its bottom, above the x label). A text that finds no room (more
-// levels than the data's height holds) leaves its line alone.
+// down to 2 points under its bottom) and level_clearance() clear of the axes' texts beside the
+// column (the x axis' name under it). A text that finds no room (more levels than the data's
+// height holds) leaves its line alone.
 void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, ImFont* font, ChartLayout& layout) {
   struct Wanted {
     std::size_t index;
@@ -113,7 +124,21 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
   std::stable_sort(wanted.begin(), wanted.end(), [](const Wanted& a, const Wanted& b) { return a.y < b.y; });
   // Each text's box is drawn a pixel above and below it (draw_level_texts): two more apart.
   const float gap = 2.0f * s + 2.0f;
-  const float highest = layout.high_right.y - 0.5f * font->FontSize, lowest_bottom = layout.low_left.y + 2.0f * s;
+  float highest = layout.high_right.y - 0.5f * font->FontSize, lowest_bottom = layout.low_left.y + 2.0f * s;
+  // Clear of the axes' texts beside the column (the x axis' name under it, the last x tick's
+  // label by its left edge), by level_clearance() from each text's box as drawn.
+  const float left = layout.high_right.x + level_lead * s;
+  float widest = 0.0f;
+  for (const Wanted& level : wanted) widest = std::max(widest, level.size.x);
+  const float clearance = level_clearance(font), middle = 0.5f * (layout.high_right.y + layout.low_left.y);
+  for (const ChartLayout::AxisText& text : layout.axis_texts) {
+    if (text.text.empty() || text.at.z <= left - 2.0f * s - clearance || text.at.x >= left + widest + 2.0f * s + clearance) continue;
+    if (0.5f * (text.at.y + text.at.w) > middle) {
+      lowest_bottom = std::min(lowest_bottom, text.at.y - clearance - 1.0f);
+    } else {
+      highest = std::max(highest, text.at.w + clearance + 1.0f);
+    }
+  }
   std::vector<float> tops;
   for (const Wanted& level : wanted) {
     tops.push_back(std::clamp(level.y - 0.5f * level.size.y, highest, std::max(highest, lowest_bottom - level.size.y)));
@@ -121,7 +146,6 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
   for (std::size_t k = 1; k < tops.size(); ++k) tops[k] = std::max(tops[k], tops[k - 1] + wanted[k - 1].size.y + gap);
   if (!tops.empty()) tops.back() = std::min(tops.back(), std::max(highest, lowest_bottom - wanted.back().size.y));
   for (std::size_t k = tops.size(); k-- > 1;) tops[k - 1] = std::min(tops[k - 1], tops[k] - wanted[k - 1].size.y - gap);
-  const float left = layout.high_right.x + level_lead * s;
   std::vector<ChartLayout::Level> placed;
   for (std::size_t k = 0; k < wanted.size(); ++k) {
     // Pushed above the top by the texts under it: no room for this one.
@@ -134,6 +158,47 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
   }
   std::sort(placed.begin(), placed.end(), [](const ChartLayout::Level& a, const ChartLayout::Level& b) { return a.index < b.index; });
   layout.levels.insert(layout.levels.end(), placed.begin(), placed.end());
+}
+
+// The tick labels and the axes' names, where draw_chart writes them (draw_axes), known before the
+// levels' texts are placed so that those keep clear of them: the x ticks' labels under their
+// tick marks in the small text, the y ticks' beside theirs in the numbers' font, the x axis'
+// name under the data's middle (a steady chart's beyond its right end, on the ticks' line), the
+// y axis' over the tick column (a steady chart's heading its legend's rows).
+void place_axis_texts(const Chart& chart, ImVec2 corner, const Fonts& fonts, ChartLayout& layout) {
+  using TextKind = ChartLayout::AxisText::Kind;
+  const float s = fonts.scale;
+  ImFont* small = fonts.small;
+  ImFont* numbers = number_font(chart, fonts);
+  const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
+  const auto x_at = [&](double tick) { return layout.low_left.x + static_cast<float>(share(tick, layout.x_low, layout.x_high)) * width; };
+  const auto y_at = [&](double tick) { return layout.low_left.y - static_cast<float>(share(tick, layout.y_low, layout.y_high)) * height; };
+  const auto add_text = [&](TextKind kind, const std::string& words, ImVec2 at, ImFont* font) {
+    layout.axis_texts.push_back({kind, words, ImVec4(at.x, at.y, at.x + width_of(font, words), at.y + font->FontSize)});
+  };
+  layout.axis_texts.clear();
+  const float gap = (chart.plain ? 5.0f : 4.0f) * s;
+  const float x_labels_below = (chart.steady ? 4.0f : 3.0f) * s;  // under the tick marks
+  for (std::size_t i = 0; i < layout.x_ticks.size(); ++i) {
+    const std::string& label = layout.x_tick_labels[i];
+    add_text(TextKind::x_tick, label, ImVec2(x_at(layout.x_ticks[i]) - 0.5f * width_of(small, label), layout.low_left.y + x_labels_below),
+             small);
+  }
+  for (std::size_t i = 0; i < layout.y_ticks.size(); ++i) {
+    const std::string& label = layout.y_tick_labels[i];
+    add_text(TextKind::y_tick, label,
+             ImVec2(layout.low_left.x - width_of(numbers, label) - gap, y_at(layout.y_ticks[i]) - 0.5f * numbers->FontSize), numbers);
+  }
+  const float text = small->FontSize;
+  const ImVec2 x_label_at = chart.steady && std::isfinite(layout.x_label_at.x)
+                                ? layout.x_label_at
+                                : ImVec2(layout.low_left.x + 0.5f * (width - width_of(small, chart.x_label)),
+                                         layout.low_left.y + text + (chart.plain ? 5.0f : 6.0f) * s);
+  add_text(TextKind::x_name, chart.x_label, x_label_at, small);
+  const ImVec2 y_label_at = chart.steady && std::isfinite(layout.y_label_at.x) ? layout.y_label_at
+                            : chart.plain ? ImVec2(corner.x + 2.0f * s, corner.y + 2.0f * s)
+                                          : ImVec2(corner.x + 8.0f * s, layout.high_right.y - text - 4.0f * s);
+  add_text(TextKind::y_name, chart.y_label, y_label_at, small);
 }
 
 // The run's lines to come, on the screen, at most about two points a pixel as place() keeps.
@@ -167,12 +232,25 @@ struct LevelTextRoom {
   const ChartLayout& layout;
   const std::vector<std::vector<ImVec2>>& planned;
   float series_reach, theory_reach;
+  const std::vector<float>& level_lines;  // every level's line's y on the screen
+  float line_half, clearance;             // level_line_half(), level_clearance()
 
   // The legend's keys count as a text: tipping_box's "slides" level at 1280 × 720 was written
-  // under the legend in the data's corner, its value hidden by "slipping".
+  // under the legend in the data's corner, its value hidden by "slipping". So do the levels'
+  // lines and the axes' texts, which a text keeps level_clearance() off: a text on another
+  // level's line, or touching its own, is read as lying on it. `box` is the text's as drawn
+  // in height (a pixel above and below it).
   bool meets_texts(const ImVec4& box) const {
     for (const ChartLayout::Level& other : layout.levels) {
       if (overlaps(other.at, box)) return true;
+    }
+    // (A hundredth of a pixel for the floats of a text placed just that far off its line.)
+    for (const float y : level_lines) {
+      if (box.y - clearance < y + line_half - 0.01f && box.w + clearance > y - line_half + 0.01f) return true;
+    }
+    const ImVec4 wide(box.x - clearance, box.y - clearance, box.z + clearance, box.w + clearance);
+    for (const ChartLayout::AxisText& text : layout.axis_texts) {
+      if (!text.text.empty() && overlaps(wide, text.at)) return true;
     }
     const ImVec4 legend(layout.legend_min.x, layout.legend_min.y, layout.legend_max.x, layout.legend_max.y);
     return !layout.legend_at.empty() && overlaps(legend, box);
@@ -226,16 +304,26 @@ struct LevelTextRoom {
 };
 
 void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axis, float s, ImFont* font, ChartLayout& layout) {
-  // A text stands 3 points and a pixel off its own line, clear of a series drawn along the level
+  const auto line_y = [&](const ChartLevel& level) {
+    return layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
+  };
+  const auto in_data = [&](float y) { return y >= layout.high_right.y - 0.5f && y <= layout.low_left.y + 0.5f; };
+  std::vector<float> level_lines;
+  for (const ChartLevel& level : chart.levels) {
+    if (y_axis.shows(level.y) && in_data(line_y(level))) level_lines.push_back(line_y(level));
+  }
+  // A text's box as drawn stands level_clearance() off its own line's edge (its pixel above and
+  // below the text, and half the line's width), clear of a series drawn along the level too
   // (push's slide at −μk·N).
-  const float off_line = 3.0f * s + 1.0f;
+  const float clearance = level_clearance(font), line_half = level_line_half(s);
+  const float off_line = line_half + clearance + 1.0f;
   const std::vector<std::vector<ImVec2>> planned = planned_lines(chart, x_axis, y_axis, layout);
-  const LevelTextRoom room{layout, planned, 1.25f * s + 1.0f, 1.75f * s + 1.0f};
+  const LevelTextRoom room{layout, planned, 1.25f * s + 1.0f, 1.75f * s + 1.0f, level_lines, line_half, clearance};
   for (std::size_t i = 0; i < chart.levels.size(); ++i) {
     const ChartLevel& level = chart.levels[i];
     if (!y_axis.shows(level.y)) continue;
-    const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, level.y).y;
-    if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
+    const float y = line_y(level);
+    if (!in_data(y)) continue;
     // As high as its lines: tipping_box's tipping level is written on two ("tips: −m·g·width"
     // over "/(2·push height) = …"), and placed a line high its second ran over the legend and the
     // "slides" level's text at 1280 × 720.
@@ -426,6 +514,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
     layout.x_minor_ticks = minor_ticks(layout.x_ticks, layout.x_low, layout.x_high,
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
+  place_axis_texts(chart, corner, fonts, layout);
   if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout);
   else place_level_texts(chart, axes.x, axes.y, s, layout.level_font, layout);
   layout.active = chart.active_theory;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace frictionlab::draw {
@@ -139,6 +140,20 @@ bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
   return !any(taken_) && !any(marks_) && !any(segments_) && !(off_bodies && any(bodies_));
 }
 
+bool LabelPlacer::off_outlines(const ImVec4& box) const {
+  return std::none_of(bodies_.begin(), bodies_.end(), [&](const ImVec4& body) {
+    const bool inside = box.x >= body.x && box.z <= body.z && box.y >= body.y && box.w <= body.w;
+    return overlaps(box, body) && !inside;
+  });
+}
+
+bool LabelPlacer::apart(const ImVec4& box) const {
+  // The boxes' padding counts towards the gap: their texts stand half a line and 4 px apart.
+  const float gap = 0.5f * (box.w - box.y - 2.0f * pad);
+  const ImVec4 wide(box.x - gap, box.y - gap, box.z + gap, box.w + gap);
+  return std::none_of(taken_.begin(), taken_.end(), [&](const ImVec4& other) { return overlaps(wide, other); });
+}
+
 bool LabelPlacer::free(const ImVec4& box, bool off_bodies) const {
   const bool inside = box.x >= low_.x && box.y >= low_.y && box.z <= high_.x && box.w <= high_.y;
   return inside && clear(box, off_bodies);
@@ -257,8 +272,9 @@ bool LabelPlacer::leader_clear(ImVec2 place, ImVec2 size, const DrawnSegment& ow
   const auto is_arrow = [&](const DrawnSegment& segment) {
     return std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& arrow) { return same_ends(arrow, segment); });
   };
+  // A leader that runs by a line's end within its own width meets it as one across it does.
   const bool on_line = std::any_of(segments_.begin(), segments_.end(), [&](const DrawnSegment& other) {
-    return !is_arrow(other) && crosses(leader, other);
+    return !is_arrow(other) && gap(leader, other) < leader.half_width;
   });
   // Another arrow is avoided by its centre line: the leader starts on its own arrow, within
   // the kept-off width of an arrow that starts where it does (a normal force and a friction
@@ -286,7 +302,38 @@ bool LabelPlacer::off_other_bodies(const ImVec4& box, const b2Body* own_body) co
 }
 
 std::optional<ImVec2> LabelPlacer::place_with_leader(ImVec2 wanted, ImVec2 size, const DrawnSegment& own,
-                                                     const b2Body* own_body) const {
+                                                     const b2Body* own_body, bool off_outlines_only) const {
+  // The nearest place to the arrow, of a grid of places half a line apart round it as far as a
+  // leader reaches, from which a leader crosses no line nor arrow, where no other arrow is nearer
+  // the value, off every body but its own (or on one, with `on_bodies`), off the bodies' outlines
+  // where asked; apart from the other labels first (apart()), where such a place is. (The rings
+  // round `wanted` run along eight rays only, and missed stacked_blocks' top block's weight's
+  // place over the block: its value lay across the block's edge instead.)
+  const auto on_grid = [&](bool need_off_outlines, bool on_bodies) -> std::optional<ImVec2> {
+    const float step = 0.5f * size.y, reach_x = longest_leader(size) + 0.5f * size.x, reach_y = longest_leader(size) + 0.5f * size.y;
+    const ImVec2 low(std::min(own.from.x, own.to.x) - reach_x, std::min(own.from.y, own.to.y) - reach_y);
+    const ImVec2 high(std::max(own.from.x, own.to.x) + reach_x, std::max(own.from.y, own.to.y) + reach_y);
+    std::optional<ImVec2> nearest;
+    float nearest_gap = std::numeric_limits<float>::max();
+    bool nearest_apart = false;
+    for (float y = low.y; y <= high.y; y += step) {
+      for (float x = low.x; x <= high.x; x += step) {
+        // Moved inside the view, as candidates() moves them: the room by its edge counts too.
+        const ImVec2 place = moved_inside(ImVec2(x, y), size);
+        const ImVec4 box = box_around(place, size);
+        const float own_gap = gap(box, own);
+        const bool is_apart = apart(box);
+        if ((nearest_apart && !is_apart) || (own_gap >= nearest_gap && is_apart == nearest_apart) || !clear(box, false) ||
+            (!on_bodies && !off_other_bodies(box, own_body)) || (need_off_outlines && !off_outlines(box)) ||
+            !nearest_to_own(place, size, own) || !leader_clear(place, size, own, false)) {
+          continue;
+        }
+        nearest_gap = own_gap, nearest = place, nearest_apart = is_apart;
+      }
+    }
+    return nearest;
+  };
+  if (off_outlines_only) return on_grid(true, false);
   // Across a line that is not an arrow, or across another arrow where they start together,
   // only where nothing else is near (a wheel's friction inside its torque's arc, a friction
   // beside a normal force): a value by its arrow reads better than one far off with no leader.
@@ -310,7 +357,9 @@ std::optional<ImVec2> LabelPlacer::place_with_leader(ImVec2 wanted, ImVec2 size,
       }
     }
   }
-  return std::nullopt;
+  // None along the rays: the grid's, off the other bodies, else on one.
+  if (const std::optional<ImVec2> found = on_grid(false, false)) return found;
+  return on_grid(false, true);
 }
 
 std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, const std::string& text,
@@ -325,7 +374,26 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
   };
   if (own != nullptr) {
     const std::vector<ImVec2> by_own = places_by_arrow(places, size, *own);
-    std::optional<ImVec2> found = first_clear(by_own, true);
+    // Beside it off the bodies' outlines first, apart from the other labels too where it can be
+    // (off_outlines(), apart()): off the bodies, else on its own body whole. Else off the
+    // outlines with a leader: a value across a body's edge crowds the picture more than a short
+    // line to it.
+    std::optional<ImVec2> found;
+    for (const bool apart_too : {true, false}) {
+      for (const bool off_bodies : {true, false}) {
+        for (std::size_t k = 0; k < by_own.size() && !found; ++k) {
+          const ImVec4 box = box_around(by_own[k], size);
+          if (clear(box, off_bodies) && off_other_bodies(box, own_body) && off_outlines(box) && (!apart_too || apart(box))) {
+            found = by_own[k];
+          }
+        }
+      }
+    }
+    if (!found) {
+      found = place_with_leader(wanted, size, *own, own_body, true);
+      if (found && with_leader != nullptr) *with_leader = true;
+    }
+    if (!found) found = first_clear(by_own, true);
     // Else on its own body, off the others: beside its arrow on another block's face it reads
     // as that block's (issue 31), as a value with a leader does (place_with_leader).
     for (std::size_t k = 0; k < by_own.size() && !found; ++k) {

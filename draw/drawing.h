@@ -135,6 +135,13 @@ class LabelPlacer {
   static ImVec4 box_around(ImVec2 centre, ImVec2 size);
   // Whether a label's box (padding included) would cover nothing known and stay in the view.
   bool free(const ImVec4& box, bool off_bodies) const;
+  // Whether a label's box (padding included) lies wholly on or wholly off each moving body,
+  // across none's outline; and whether it stands clear of the labels placed by half its text's
+  // height at least. A label beside what it names stands so where it can (issue 31:
+  // stacked_blocks' values a few pixels apart round its top block, one across the top block's
+  // edge, read as crowded); a force's value across a body's outline, with a short leader instead.
+  bool off_outlines(const ImVec4& box) const;
+  bool apart(const ImVec4& box) const;
   // Takes a box found free() as it is: a label that names a place (a distance mark's number)
   // goes there or nowhere.
   void take(const ImVec4& box, const std::string& text) {
@@ -165,8 +172,10 @@ class LabelPlacer {
   std::vector<ImVec2> places_by_arrow(const std::vector<ImVec2>& places, ImVec2 size, const DrawnSegment& own) const;
   bool leader_clear(ImVec2 place, ImVec2 size, const DrawnSegment& own, bool across_lines) const;
   bool off_other_bodies(const ImVec4& box, const b2Body* own_body) const;
+  // `off_outlines_only`: only a place off_outlines() from which a leader crosses no line, the
+  // nearest to the arrow; none where there is none.
   std::optional<ImVec2> place_with_leader(ImVec2 wanted, ImVec2 size, const DrawnSegment& own,
-                                          const b2Body* own_body) const;
+                                          const b2Body* own_body, bool off_outlines_only = false) const;
 
   ImVec2 low_, high_;          // the view labels must stay in
   std::vector<ImVec4> taken_;  // x0, y0, x1, y1

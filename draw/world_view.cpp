@@ -339,13 +339,49 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
       return word;
     }
   }
-  word.at = labels.place_if_free(by_dot(along), size, text);
-  if (word.at) {
-    const ImVec4 box = LabelPlacer::box_around(*word.at, size);
+  // How far a box centred at `centre` lies from the dot's rim.
+  const float rim = contact_dot_radius * fonts.scale;
+  const auto off_rim = [&](ImVec2 centre) {
+    // The text's box, as the class sees it, without the placer's padding.
+    const ImVec4 box(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
     const float dx = std::max({box.x - at.x, 0.0f, at.x - box.z});
     const float dy = std::max({box.y - at.y, 0.0f, at.y - box.w});
-    word.near_dot = std::hypot(dx, dy) - contact_dot_radius * fonts.scale <= size.y;
+    return std::hypot(dx, dy) - rim;
+  };
+  // Those taken too (a stack's contact, hemmed in by the forces at it and their values): every
+  // free place within a line of the dot's rim under the surface, an eighth of a line apart round
+  // it, the nearest to the first place. The search round the first place alone put
+  // stacked_blocks' "← slipping" in the middle of the lower block, 150 px from its dot, where a
+  // place by the dot's other side was free (issue 31).
+  const ImVec2 first = by_dot(along);
+  // An eighth of a line apart: at a screen's text a quarter (3.5 px) missed the one place by
+  // stacked_blocks' dot, 1.5 px wide between two arrows' margins.
+  const float eighth = 0.125f * size.y;
+  const float reach_x = 0.5f * size.x + rim + size.y, reach_y = 0.5f * size.y + rim + size.y;
+  const ImVec2 into_screen(into.x, -into.y);
+  std::optional<ImVec2> nearest;
+  float nearest_score = std::numeric_limits<float>::max();
+  for (float dy = -reach_y; dy <= reach_y; dy += eighth) {
+    for (float dx = -reach_x; dx <= reach_x; dx += eighth) {
+      const ImVec2 place(at.x + dx, at.y + dy);
+      // Under the surface only: a box over the upper body's face is read as that body's (terrain's
+      // "slipping →" over its box's corner).
+      const bool under = dx * into_screen.x + dy * into_screen.y > 0.0f;
+      if (!under || off_rim(place) > size.y || !labels.free(LabelPlacer::box_around(place, size), false)) continue;
+      // Off the bodies' outlines and apart from the other labels before not.
+      const ImVec4 box = LabelPlacer::box_around(place, size);
+      const float score = (labels.off_outlines(box) ? 0.0f : 2e6f) + (labels.apart(box) ? 0.0f : 1e6f) + length(sub(place, first));
+      if (score < nearest_score) nearest_score = score, nearest = place;
+    }
   }
+  if (nearest) {
+    labels.take(LabelPlacer::box_around(*nearest, size), text);
+    word.at = nearest;
+    word.near_dot = true;
+    return word;
+  }
+  word.at = labels.place_if_free(first, size, text);
+  if (word.at) word.near_dot = off_rim(*word.at) <= size.y;
   return word;
 }
 

@@ -847,8 +847,8 @@ bool line_in_box(const std::vector<ImVec2>& line, const ImVec4& box, float reach
 // lessons' defaults, for every lesson whose key plot has levels, every level's text is written,
 // wholly right of the data area (so that no line of the record, of the run to come, of the
 // theory nor any level's line passes through it), within the plot, on no other level's text,
-// its middle on its own line's height where no other text is in the way, and where it was at
-// the opening.
+// clear of the axes' texts by a quarter of a line, its middle on its own line's height where no
+// other text is in the way, and where it was at the opening.
 TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
   const Fonts& f = projector_fonts();
   const ImVec2 size(1100.0f, 520.0f);
@@ -863,6 +863,7 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
       const ChartLayout layout = layout_chart(chart, corner, size, f);
       const std::string where = std::string(name) + " at " + std::to_string(at.scene().time()) + " s";
       ASSERT_TRUE(layout.drawable) << where;
+      ASSERT_FALSE(layout.axis_texts.empty()) << where << ": the layout placed no axis text to keep clear of";
       ASSERT_EQ(layout.levels.size(), 2u) << where;
       for (std::size_t i = 0; i < layout.levels.size(); ++i) {
         const ChartLayout::Level& level = layout.levels[i];
@@ -881,6 +882,14 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
         for (std::size_t j = 0; j < i; ++j) {
           const ChartLayout::Level& other = layout.levels[j];
           EXPECT_TRUE(box.w <= other.at.y || box.y >= other.at.w) << what << " is written on \"" << other.text << "\"";
+        }
+        // A quarter of a line of its text or more from every tick label and axis name (issue 31:
+        // incline's "= −5.63 N" 3 px over "time (s)").
+        const float quarter = 0.25f * layout.level_font->FontSize;
+        for (const ChartLayout::AxisText& axis : layout.axis_texts) {
+          if (axis.text.empty()) continue;
+          const float apart = std::max({axis.at.x - box.z, box.x - axis.at.z, axis.at.y - box.w, box.y - axis.at.w});
+          EXPECT_GE(apart, quarter) << what << " is " << apart << " px from the axis' \"" << axis.text << "\"";
         }
         if (moment == 1) first.push_back(level.at);
         else EXPECT_TRUE(level.at.x == first[i].x && level.at.y == first[i].y) << what << " moved";
@@ -974,47 +983,54 @@ TEST(PlotLevels, InclinesKeyPlotAnswersWithItsCriticalAngleAndEachLevelSaysOneFo
   }
 }
 
-// In the window (plots side by side, no column beside the data) a level's text goes by its
-// line where no line of the data, the run's to come too, passes; spring_pull's sawtooth crosses
-// both its levels all along, so there its texts are drawn under the series, which stay in sight
-// over them: the draw list shows the series' vertices after the text's.
+// In the window (plots side by side, no column beside the data, each a third of the row) a level's text goes by its
+// line where no line of the data, the run's to come too, passes; where none is, it is drawn
+// under the series, which stay in sight over it: the draw list shows the series' vertices after
+// the text's. spring_pull's sawtooth crosses both its levels all along; incline's −μs·N text,
+// held a third of a line off its own line and the holding level's under it, has only the
+// friction's record and run to come above it.
 TEST(PlotLevels, InTheWindowATextTheDataCrossesIsDrawnUnderIt) {
   FontsForLayout& fonts = measuring();
   const Fonts& f = fonts.fonts;
   const float s = f.scale;
-  LessonAt at("spring_pull", {}, 0.0);
-  const double end = at.lesson->duration();
+  // A third of a 1280 × 720 frame's plots' row, as each of the window's three plots has.
+  const FrameLayout frame = FrameLayout::of(ImVec2(1280.0f, 720.0f), f.scale);
+  const ImVec2 window_plot(frame.plots_size.x / 3.0f, frame.plots_size.y);
   int beneath_seen = 0;
-  for (int moment = 1; moment <= 12; ++moment) {
-    at.step_to(end * moment / 12.0);
-    const Chart chart = plot_chart(*at.lesson, 0, time_axis_span(end, at.scene().time()), theme(ThemeName::light), true);
-    ImDrawList* draw = fresh_draw_list(fonts);
-    const ChartLayout layout = draw_chart(draw, corner, area, chart, theme(ThemeName::light), f);
-    ImGui::EndFrame();
-    const std::string where = "spring_pull at " + std::to_string(at.scene().time()) + " s";
-    ASSERT_EQ(layout.levels.size(), 2u) << where;
-    for (const ChartLayout::Level& level : layout.levels) {
-      EXPECT_FALSE(level.beside) << where;
-      if (level.text.empty()) continue;
-      const ImVec4 box(level.at.x - 2.0f * s, level.at.y - 1.0f, level.at.z + 2.0f * s, level.at.w + 1.0f);
-      bool covers = false;
-      for (const std::vector<ImVec2>& line : layout.series_points) covers = covers || line_in_box(line, box, 1.25f * s);
-      if (!covers) continue;
-      EXPECT_TRUE(level.beneath) << where << ": \"" << level.text << "\" covers the data";
-      ++beneath_seen;
-      const ImU32 ink = readable_ink(chart.levels[level.index].colour, theme(ThemeName::light).panel);
-      const ImU32 friction = theme(ThemeName::light).force[static_cast<int>(ForceKind::friction)];
-      int last_ink = -1, first_series = -1;
-      for (int v = 0; v < draw->VtxBuffer.Size; ++v) {
-        const ImU32 colour = draw->VtxBuffer[v].col | IM_COL32_A_MASK;
-        if (colour == (ink | IM_COL32_A_MASK) && (draw->VtxBuffer[v].col >> IM_COL32_A_SHIFT) > 0) last_ink = v;
-        if (colour == (friction | IM_COL32_A_MASK) && first_series < 0) first_series = v;
+  for (const char* name : {"spring_pull", "incline"}) {
+    LessonAt at(name, {}, 0.0);
+    const double end = at.lesson->duration();
+    for (int moment = 1; moment <= 12; ++moment) {
+      at.step_to(end * moment / 12.0);
+      const Chart chart = plot_chart(*at.lesson, 0, time_axis_span(end, at.scene().time()), theme(ThemeName::light), true);
+      ImDrawList* draw = fresh_draw_list(fonts);
+      const ChartLayout layout = draw_chart(draw, corner, window_plot, chart, theme(ThemeName::light), f);
+      ImGui::EndFrame();
+      const std::string where = std::string(name) + " at " + std::to_string(at.scene().time()) + " s";
+      ASSERT_EQ(layout.levels.size(), 2u) << where;
+      for (const ChartLayout::Level& level : layout.levels) {
+        EXPECT_FALSE(level.beside) << where;
+        if (level.text.empty()) continue;
+        const ImVec4 box(level.at.x - 2.0f * s, level.at.y - 1.0f, level.at.z + 2.0f * s, level.at.w + 1.0f);
+        bool covers = false;
+        for (const std::vector<ImVec2>& line : layout.series_points) covers = covers || line_in_box(line, box, 1.25f * s);
+        if (!covers) continue;
+        EXPECT_TRUE(level.beneath) << where << ": \"" << level.text << "\" covers the data";
+        ++beneath_seen;
+        const ImU32 ink = readable_ink(chart.levels[level.index].colour, theme(ThemeName::light).panel);
+        const ImU32 friction = theme(ThemeName::light).force[static_cast<int>(ForceKind::friction)];
+        int last_ink = -1, first_series = -1;
+        for (int v = 0; v < draw->VtxBuffer.Size; ++v) {
+          const ImU32 colour = draw->VtxBuffer[v].col | IM_COL32_A_MASK;
+          if (colour == (ink | IM_COL32_A_MASK) && (draw->VtxBuffer[v].col >> IM_COL32_A_SHIFT) > 0) last_ink = v;
+          if (colour == (friction | IM_COL32_A_MASK) && first_series < 0) first_series = v;
+        }
+        ASSERT_GE(first_series, 0) << where;
+        EXPECT_LT(last_ink, first_series) << where << ": \"" << level.text << "\" is drawn over the series";
       }
-      ASSERT_GE(first_series, 0) << where;
-      EXPECT_LT(last_ink, first_series) << where << ": \"" << level.text << "\" is drawn over the series";
     }
   }
-  EXPECT_GT(beneath_seen, 0) << "spring_pull's levels found places off its data: the test checks no text drawn beneath";
+  EXPECT_GT(beneath_seen, 0) << "every level's text found a place off the data: the test checks no text drawn beneath";
 }
 
 // Issue 31, a teacher's trial: push's dashed theory line "sticking: f = −F" lay under the

@@ -325,10 +325,14 @@ void each_window_plot(const WindowScreen& screen,
 // column's "label" over "= value", level_text_in_column, or the text as written by its line),
 // not taken from the layout: tipping_box's tipping level, written on two lines ("tips:
 // −m·g·width" over "/(2·push height) = …"), was placed as if one line high at 1280 × 720 and its
-// second line ran over the legend's keys and the "slides" level's text.
-// (One walk for both: each walk of every lesson's plot pages is a minute of window frames
+// second line ran over the legend's keys and the "slides" level's text. And clear of the axes'
+// texts and of the levels' lines by a quarter of a line of its text at least (issue 31: after
+// the reveal on a projector incline's "holding it: −m·g·sin θ = −5.63 N" stood 3 px over
+// "time (s)", and at 1280 × 720 its "−μs·N = −4.82 N" 3 px off the middle of its own line, read
+// as lying on it).
+// (One walk for all: each walk of every lesson's plot pages is a minute of window frames
 // under the sanitizers.)
-TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsDataAndEveryLevelsTextOffTheLegendAndTheOtherLevels) {
+TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsDataAndEveryLevelsTextOffTheLegendTheOtherLevelsTheLinesAndTheAxes) {
   const WindowScreen& screen = GetParam();
   const ImVec2 display(static_cast<float>(screen.width), static_cast<float>(screen.height));
   const float strip = [&] {
@@ -373,6 +377,27 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsDataAndEveryLevelsTextOffTheLege
       for (const auto& [other, other_box] : written) {
         EXPECT_FALSE(draw::overlaps(box, other_box)) << where << ": \"" << title << "\"'s level \"" << level.text << "\" at "
                                                      << text_of(box) << " lies on \"" << other << "\" at " << text_of(other_box);
+      }
+      // Clear of the axes' texts and of the levels' lines: its box as drawn (a pixel above and
+      // below the text) a quarter of a line of its text or more from every tick label and axis
+      // name, and, by its line in the data area, from every level's line's middle, its own too.
+      const float quarter = 0.25f * layout.level_font->FontSize;
+      const ImVec4 as_drawn(box.x, box.y - 1.0f, box.z, box.w + 1.0f);
+      for (const draw::ChartLayout::AxisText& axis : layout.axis_texts) {
+        if (axis.text.empty()) continue;
+        const float apart = std::max({axis.at.x - as_drawn.z, as_drawn.x - axis.at.z, axis.at.y - as_drawn.w, as_drawn.y - axis.at.w});
+        EXPECT_GE(apart, quarter) << where << ": \"" << title << "\"'s level \"" << level.text << "\" at " << text_of(as_drawn)
+                                  << " is " << apart << " px from the axis' \"" << axis.text << "\" at " << text_of(axis.at)
+                                  << ", under a quarter of a line (" << quarter << " px)";
+      }
+      if (!level.beside) {
+        for (const draw::ChartLayout::Level& line : layout.levels) {
+          const float apart = std::max(line.y - as_drawn.w, as_drawn.y - line.y);
+          EXPECT_GE(apart, quarter) << where << ": \"" << title << "\"'s level \"" << level.text << "\" at " << text_of(as_drawn)
+                                    << " is " << apart << " px from the middle of "
+                                    << (&line == &level ? std::string("its own line") : "the line of \"" + line.text + "\"")
+                                    << " at y = " << line.y << ", under a quarter of a line (" << quarter << " px)";
+        }
       }
       written.emplace_back(level.text, box);
       ++texts;
