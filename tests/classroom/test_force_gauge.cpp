@@ -87,6 +87,22 @@ TEST(ForceGauge, AHandPullShowsStaticFrictionAsThePeakAndKineticAsThePlateau) {
               figures->plateau_to, mu_k * m * g, hand_speed);
 }
 
+// The mouse's hand on push's block, taken hold of at its centre with the lesson playing, moved
+// to the right a number of pixels each display frame (60 a second) for a number of frames.
+struct HandOnTheBlock {
+  explicit HandOnTheBlock(ClassroomHands& taking) : hands(taking), held(taking.take_hold_and_play("block")), x(held.x) {}
+  void move(float pixels_per_frame, int frames) {
+    for (int i = 0; i < frames; ++i) {
+      x += pixels_per_frame;
+      ImGui::GetIO().MousePos = ImVec2(x, held.y);
+      hands.frame(1.0 / 60.0);
+    }
+  }
+  ClassroomHands& hands;
+  ImVec2 held;
+  float x;
+};
+
 // The peak is the breakaway's: pulled slowly until the block slides, then three times faster,
 // the gauge reads more than it did at the breakaway (the hand drags it harder through the
 // gauge's spring), and that later, larger pull is no peak. The trial's incline said "peak 11.4
@@ -95,15 +111,8 @@ TEST(ForceGauge, ThePeakIsTheBreakawaysNotALargerPullWhileItSlides) {
   ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   const double m = 10.0, mu_s = 0.4;
-  const ImVec2 held = hands.take_hold_and_play("block");
-  float x = held.x;
-  const auto move = [&](float pixels_per_frame, int frames) {
-    for (int i = 0; i < frames; ++i) {
-      x += pixels_per_frame;
-      ImGui::GetIO().MousePos = ImVec2(x, held.y);
-      hands.frame(1.0 / 60.0);
-    }
-  };
+  HandOnTheBlock hand(hands);
+  const auto move = [&](float pixels_per_frame, int frames) { hand.move(pixels_per_frame, frames); };
   move(1.0f, 20);  // slowly: still held
   EXPECT_EQ(hands.classroom().gauge_figures().rfind("hand + push: held so far ", 0), 0u)
       << hands.classroom().gauge_figures();
@@ -124,22 +133,14 @@ TEST(ForceGauge, ThePeakIsTheBreakawaysNotALargerPullWhileItSlides) {
 // Issue 31's trial: pulled along, then held still, the block coasts on through the gauge's spring
 // to a stop, the reading under friction all the while (and past the hand, the spring pushing);
 // those steps counted, the "sliding" figure read 33 % under μk·m·g on the mystery surface (and
-// 46 % under it here). Only
-// steps of steady sliding count now: each with a net force (its momentum's change) within 5 % of
+// 46 % under it here). Only steps of steady sliding count now: each with a net force (its momentum's change) within 5 % of
 // the pull, so that the pull is friction's within 5 %, and their mean too.
 TEST(ForceGauge, AHandThatStopsLetsTheBodyCoastAndTheSlidingFigureIsTheSteadySlidesOnly) {
   ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}));
   hands.frame();
   const double m = 10.0, mu_k = 0.3;
-  const ImVec2 held = hands.take_hold_and_play("block");
-  float x = held.x;
-  const auto move = [&](float pixels_per_frame, int frames) {
-    for (int i = 0; i < frames; ++i) {
-      x += pixels_per_frame;
-      ImGui::GetIO().MousePos = ImVec2(x, held.y);
-      hands.frame(1.0 / 60.0);
-    }
-  };
+  HandOnTheBlock hand(hands);
+  const auto move = [&](float pixels_per_frame, int frames) { hand.move(pixels_per_frame, frames); };
   move(10.0f, 40);  // yanked along at about 1 m/s for two thirds of a second
   move(0.0f, 120);  // then held still for two seconds
   const classroom_state::GaugeRecord& gauge = hands.classroom().playback().gauge();
