@@ -337,6 +337,22 @@ TheoryCells theory_cells(const std::vector<lessons::ExpectationResult>& rows, bo
   return table;
 }
 
+// `rows` as a run ends them: each measured, passing or failing, with the values `measure` gives it,
+// and written as its theory is.
+template <typename Measure>
+std::vector<lessons::ExpectationResult> ended_run(std::vector<lessons::ExpectationResult> rows, bool passes,
+                                                  const Measure& measure) {
+  for (lessons::ExpectationResult& row : rows) {
+    if (row.failed) continue;
+    row.measured_yet = true;
+    row.hand_pulled = false;
+    row.passes = passes;
+    measure(row);
+    row.measured_text = row.predicted_text;
+  }
+  return rows;
+}
+
 // The rows as a run may end them, whatever values it and the sliders give, so that none changes
 // the plan: each number as wide as three figures with a sign ("−88.8 N"), each word as the theory
 // says it, the error at the wider of its two forms ("−0.00888", "−8.8×10⁻¹⁰"), each row passing
@@ -345,17 +361,10 @@ std::vector<std::vector<lessons::ExpectationResult>> ended_runs(const std::vecto
   std::vector<std::vector<lessons::ExpectationResult>> runs;
   for (const double off : {-0.00888, -8.8e-10}) {
     for (const bool passes : {true, false}) {
-      std::vector<lessons::ExpectationResult> ended = rows;
-      for (lessons::ExpectationResult& row : ended) {
-        if (row.failed) continue;
-        row.measured_yet = true;
-        row.hand_pulled = false;
-        row.passes = passes;
+      runs.push_back(ended_run(rows, passes, [off](lessons::ExpectationResult& row) {
         row.predicted = -88.8;
         row.measured = row.predicted + off;
-        row.measured_text = row.predicted_text;
-      }
-      runs.push_back(std::move(ended));
+      }));
     }
   }
   return runs;
@@ -366,16 +375,7 @@ std::vector<std::vector<lessons::ExpectationResult>> ended_runs(const std::vecto
 std::vector<std::vector<lessons::ExpectationResult>> measured_as_the_theory(const std::vector<lessons::ExpectationResult>& rows) {
   std::vector<std::vector<lessons::ExpectationResult>> runs;
   for (const bool passes : {true, false}) {
-    std::vector<lessons::ExpectationResult> ended = rows;
-    for (lessons::ExpectationResult& row : ended) {
-      if (row.failed) continue;
-      row.measured_yet = true;
-      row.hand_pulled = false;
-      row.passes = passes;
-      row.measured = row.predicted;
-      row.measured_text = row.predicted_text;
-    }
-    runs.push_back(std::move(ended));
+    runs.push_back(ended_run(rows, passes, [](lessons::ExpectationResult& row) { row.measured = row.predicted; }));
   }
   return runs;
 }
