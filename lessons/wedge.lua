@@ -432,12 +432,17 @@ end
 -- held a step while the listener tells the solver's leftover from a real excess, and a start
 -- holds where the drive falls back under the limit by then (μk 1.65, θ0 19.45°, ω 10: 1.8 %
 -- over the model's limit a step in, under it the step after; the world held on till 0.95 s).
+-- How far over the limit the drive is at t = 0 does not count: the world's first step asks
+-- nothing of the contact (the block starts with the plank's velocities over it), so a step in
+-- is the first the world can slip at. On a plank swinging 40° at 6.45 rad/s, shaken at
+-- −1 m/s² (μs 0.0987, μk 0, 5.99 kg), the drive is 1.4 % past the model's limit at t = 0 and
+-- falls 24 % in a step as the slope turns against it: the model's block slips at once, the
+-- world's held on till 0.0375 s, where the sliding model's drive came back past the limit.
 local function on_the_edge_at_the_start()
   if turning.contact[1] ~= "slipping" or #turning.normal < 2 then return false end
   local limit = math.max(param.mu_s, param.mu_k) * (1 + hold_band)
   local next_k = math.min(math.floor(h / spacing + 0.5) + 1, #turning.normal)
-  return math.abs(drive_at_the_pivot(0)) <= limit * (turning.normal[1] + late_share(1))
-         and math.abs(drive_at_the_pivot((next_k - 1) * spacing)) <= limit * turning.normal[next_k]
+  return math.abs(drive_at_the_pivot((next_k - 1) * spacing)) <= limit * turning.normal[next_k]
 end
 local breakaways_shifted  -- what a breakaway's timing moves the slide by (below, by the rows)
 local grazes_by  -- a stuck stretch that only grazes the static limit (below, after start_drift)
@@ -826,6 +831,49 @@ local function slow_breakaway_by(t)
   slow[t] = false
 end
 
+-- A stop of the model's that the world's block slid through without a stuck step: the model's
+-- block stays put while the world's slides on, and nothing after it has a model (slow_breakaway_by
+-- finds this where the model breaks away again before t; this, where it is still stuck, or broke
+-- away after t). Looked for where the model holds the block for the record's lag (3.5 steps, the
+-- first slip row says why) or longer, in the world's record within that lag of the stop. (μs 1.8, μk
+-- 0.061, a plank swinging 12.7° at 4.3 rad/s, shaken at 15.7 m/s², 6.26 kg: the model stops
+-- at 1.927 s and holds, asked for 91 % of μs·N; at 240 Hz the world's block turned round in
+-- that step and slid on, 1 m further up the plank by 2.5 s and pressed 25 N harder there. At
+-- 480 Hz and 960 Hz it stops with the model and the rows agree.)
+local flew_where_the_model_grazed_by  -- a grazing lift-off the world's block flew at (below, by the lift-off's row)
+local through_for, through = nil, {}
+local function slid_through_a_stop_by(t)
+  if through_for ~= horizon then through_for, through = horizon, {} end
+  if through[t] ~= nil then return through[t] or nil end
+  local record_lag = 3.5 * h
+  local times, slipping = history("time"), history("slipping")
+  for _, event in ipairs(turning.events) do
+    if event.kind == "stop" and event.t <= t then
+      local after = floor(event.t / spacing) + 2  -- the first sample after the stop
+      local held_to = after
+      while held_to <= #turning.contact and turning.contact[held_to] == "sticking" do held_to = held_to + 1 end
+      local held_until = math.min((held_to - 1) * spacing, t)
+      if held_until - event.t >= record_lag then
+        local to = event.t + record_lag
+        if time() < to then return nil end
+        local held = false
+        for i = 1, #times do
+          if times[i] > to then break end
+          if times[i] >= event.t - record_lag and slipping[i] == 0 then
+            held = true
+            break
+          end
+        end
+        if not held then
+          through[t] = "slid through a stop: no model"
+          return through[t]
+        end
+      end
+    end
+  end
+  through[t] = false
+end
+
 -- The same equations stepped as the world steps them (theory.wedge's stepped_slide and
 -- stepped_speed, given the world's step: physics/wedge_model.h's step_as_the_world says how): the
 -- plank's kick once a step, friction decided once a step, a turn inside a step stopped there, a
@@ -855,12 +903,31 @@ local function stepping_gap(t)
   return math.abs(stepped - turning.slide[k]), math.abs(stepped_speed - turning.speed[k])
 end
 
+-- How far the landings before t put the world's slide off the model's, m: each one's change of
+-- the model's sliding speed (from the sample before it to the one after) times a step.
+local function landings_shifted(t)
+  local total = 0
+  for _, event in ipairs(turning.events) do
+    local j = floor(event.t / spacing) + 1  -- the last sample at or before it
+    if event.kind == "landing" and event.t <= t and j + 1 <= #turning.speed then
+      total = total + math.abs(turning.speed[j + 1] - turning.speed[j]) * step_length()
+    end
+  end
+  return total
+end
+
 -- Expectations ----------------------------------------------------------------------------
 -- Against the model with the turn, which is the reduced equations plus exactly the terms a
 -- rigid block on a turning plank feels; Box2D steps at 240 Hz with its own contact solver.
 expect { "slide at the end", unit = "m",
-  predicted = function() return no_model(duration) or slow_breakaway_by(duration) or turning.slide[sample(duration)] end,
-  measured = function() return no_model(duration) or slow_breakaway_by(duration) or recorded("slide", duration) end,
+  predicted = function()
+    return no_model(duration) or slow_breakaway_by(duration) or slid_through_a_stop_by(duration)
+           or flew_where_the_model_grazed_by(duration) or turning.slide[sample(duration)]
+  end,
+  measured = function()
+    return no_model(duration) or slow_breakaway_by(duration) or slid_through_a_stop_by(duration)
+           or flew_where_the_model_grazed_by(duration) or recorded("slide", duration)
+  end,
   -- 0.2 % of the way it slid (back and forth) and 3 mm: each slip's start and stop is found
   -- within a step. And the start: the world's block starts with the plank's velocity over its
   -- first step, a_x·h/2 along the plank, where the models start it at rest (the plank's speed at
@@ -877,13 +944,21 @@ expect { "slide at the end", unit = "m",
   -- Or, if larger, the stepping's own first-order error through the slide's reversals, stops
   -- and breakaways (stepping_gap): two estimates of the world's gap, each leaving out a part
   -- the other has.
+  -- And each landing: the model's block lands in an instant, its sliding changed at once by the
+  -- landing's friction impulse; the world's meets the surface inside a step and takes that
+  -- impulse at its end, up to a step later, so its slide runs on off the model's by the change
+  -- times the step (landings_shifted). The stepped equations are not followed into a flight,
+  -- so after one only this names the stepping's part. (Shaken at 21 m/s² on a plank swinging
+  -- 40° at 0.46 rad/s, μk 1.9, 9.8 kg, five flights: the world's slide ended 0.024 m short of
+  -- the model's at 240 Hz, 0.009 m at 960, where 0.023 m was allowed without it.)
   -- (The 0.2 % of the path and the 3 mm are this row's flat allowances from before; not yet
   -- replaced by named terms.)
   tolerance = function()
     local path = 0
     local last = sample(duration)
     for k = 2, last do path = path + math.abs(turning.slide[k] - turning.slide[k - 1]) end
-    return 0.002 * path + 3e-3 + math.max(start_drift(duration) + (breakaways_shifted(duration)), (stepping_gap(duration)))
+    return 0.002 * path + 3e-3 + landings_shifted(duration)
+           + math.max(start_drift(duration) + (breakaways_shifted(duration)), (stepping_gap(duration)))
   end }
 -- The drift (contact_lost_by) raises the block's centre off the surface by up to the slop, and
 -- the turn then flings it by m·θ'²·(that) more than the model's block, whose centre stays e
@@ -916,10 +991,12 @@ local function landing_at_the_reading(t)
 end
 expect { "normal force halfway", unit = "N",
   predicted = function()
-    return no_model(duration / 2) or landing_at_the_reading(duration / 2) or mid_step(true, "normal", duration / 2)
+    return no_model(duration / 2) or slid_through_a_stop_by(duration / 2) or flew_where_the_model_grazed_by(duration / 2)
+           or landing_at_the_reading(duration / 2) or mid_step(true, "normal", duration / 2)
   end,
   measured = function()
-    return no_model(duration / 2) or landing_at_the_reading(duration / 2) or recorded("normal_force", duration / 2)
+    return no_model(duration / 2) or slid_through_a_stop_by(duration / 2) or flew_where_the_model_grazed_by(duration / 2)
+           or landing_at_the_reading(duration / 2) or recorded("normal_force", duration / 2)
   end,
   -- Read where the world reads it (the model's mid-step, as the reading is the step's mean), the
   -- rest is named here:
@@ -1176,16 +1253,54 @@ local function only_grazes(t, k)
   end
   return true
 end
+-- A world's block that tumbled on its way to the lift-off: the pivot the row follows tilts the
+-- block less than the tilt that counts as tumbling before its edge lets go, but sliding with
+-- kinetic friction near μ = w/h, friction's moment about the edge all but cancels what holds
+-- the block flat on it, and the world's block tipped over instead (0.1 kg, μk 1.865, a plank
+-- swinging 40° at 6.8 rad/s: the model's edge let go at 1.026 s; the world's block was 3° off
+-- the plank by 1.054 s and 34° when its N first read 0, at 1.163 s, at every step from 240 to
+-- 1920 Hz). Read from the world's record, as a tumble is (tumbled), three steps before its N
+-- first read 0, where the reading says it left.
+local function tumbled_on_the_way_up()
+  local seen = first_recorded("normal_force", function(v) return v == 0 end)
+  if seen and tumbled(seen - 3 * step_length()) then return "tumbled: no model" end
+end
+-- A lift-off that only grazes before t, where the world's block flew: the model's block rises
+-- by a hair and lands; the world's N read 0 within the lift-off row's reading (three steps) of
+-- that flight, so it flew for a step or more and landed with an impact the model's did not
+-- have, and where its block then slides nothing after it has a model. (Shaken at −30 m/s² on a
+-- plank swinging 10.6° at 3 rad/s, μk 0.0038, 10 kg: the model's block grazed a lift-off at
+-- 3.60 s; the world's flew from 3.6 to 3.7 s and ended 1.3 m further along, 0.62 m allowed.)
+-- Where the world's stayed down too, the rows after it are checked.
+function flew_where_the_model_grazed_by(t)
+  local lifted, k = lift_off()
+  if not lifted or lifted > t or not only_grazes(lifted, k) then return nil end
+  local landed = duration
+  for _, event in ipairs(turning.events) do
+    if event.kind == "landing" and event.t > lifted then
+      landed = event.t
+      break
+    end
+  end
+  local lag = 3 * step_length()
+  local times, normals = history("time"), history("normal_force")
+  for i = 1, #times do
+    if times[i] > landed + lag then break end
+    if times[i] >= lifted - lag and normals[i] == 0 then return "flew where the model grazed: no model" end
+  end
+end
+-- Why the row has no model, the same words on both sides, in one order; nil where it has one.
+local function no_lift_off_model(t, k)
+  return no_model(t or duration) or tumbled_on_the_way_up() or (t and only_grazes(t, k) and "grazes: no model") or nil
+end
 expect { "first lift-off", unit = "s",
   predicted = function()
     local t, k, _, edge_leaves = lift_off()
-    if t and not no_model(t) and only_grazes(t, k) then return "grazes: no model" end
-    return no_model(t or duration) or edge_leaves or "never"
+    return no_lift_off_model(t, k) or edge_leaves or "never"
   end,
   measured = function()
     local t, k = lift_off()
-    if no_model(t or duration) then return no_model(t or duration) end
-    if t and only_grazes(t, k) then return "grazes: no model" end
+    if no_lift_off_model(t, k) then return no_lift_off_model(t, k) end
     local seen = first_recorded("normal_force", function(v) return v == 0 end)
     if seen and not t then return "lifts off" end  -- where the model says it never does
     if seen or time() >= duration then return seen or "never" end
@@ -1287,11 +1402,14 @@ end
 expect { "ΔK over the first swing", unit = "J",
   predicted = function()
     local k = sample(first_swing())
-    return no_model(first_swing()) or turning.work_gravity[k] + turning.work_pseudo[k] + turning.work_friction[k]
-      + turning.work_rotation[k] + turning.work_landings[k]
+    return no_model(first_swing()) or slid_through_a_stop_by(first_swing()) or flew_where_the_model_grazed_by(first_swing())
+      or turning.work_gravity[k] + turning.work_pseudo[k] + turning.work_friction[k] + turning.work_rotation[k]
+      + turning.work_landings[k]
   end,
   measured = function()
     if no_model(first_swing()) then return no_model(first_swing()) end
+    local why_none = slid_through_a_stop_by(first_swing()) or flew_where_the_model_grazed_by(first_swing())
+    if why_none then return why_none end
     local speed = time() >= first_swing() - 0.5 * h and speed_before(first_swing())
     return speed and 0.5 * mass * speed * speed or nil
   end,
