@@ -11,6 +11,7 @@
 #include "classroom/exports.h"
 #include "classroom_state/plain_words.h"
 #include "draw/text_record.h"
+#include "draw/words.h"
 
 namespace frictionlab::classroom {
 
@@ -70,9 +71,12 @@ void messages_panel(ImVec2 corner, float width, const classroom_state::Playback&
                                  ImGuiWindowFlags_NoMove;
   if (ImGui::Begin("###messages", nullptr, flags)) {
     ImGui::PushTextWrapPos(0.0f);
+    // Broken between words here, so that ImGui's wrapping, which also breaks after a full
+    // stop, never splits the script's name ("my_incline." and "lua").
+    const float room = ImGui::GetContentRegionAvail().x - 1.0f;
     for (const auto& [text, fault] : lines) {
       ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));
-      draw::shown_text(text.c_str());
+      draw::shown_text(draw::broken_at_spaces(text, room).c_str());
       ImGui::PopStyleColor();
     }
     ImGui::PopTextWrapPos();

@@ -121,4 +121,23 @@ std::vector<std::string> lines_that_fit(const std::string& line, float room, int
   return lines;
 }
 
+std::string broken_at_spaces(std::string text, float room) {
+  std::size_t line_start = 0, last_space = std::string::npos;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] == '\n') {
+      line_start = i + 1;
+      last_space = std::string::npos;
+      continue;
+    }
+    if (i < text.size() && text[i] != ' ') continue;
+    // A word ends at i: where the line up to it is too wide, it goes after the last space.
+    if (last_space != std::string::npos && width_of(text.substr(line_start, i - line_start)) > room) {
+      text[last_space] = '\n';
+      line_start = last_space + 1;
+    }
+    if (i < text.size()) last_space = i;
+  }
+  return text;
+}
+
 }  // namespace frictionlab::draw

@@ -26,4 +26,11 @@ std::string words_that_fit(const std::string& line, float room);
 // the last line takes what is left as words_that_fit cuts it. No lines for an empty line.
 std::vector<std::string> lines_that_fit(const std::string& line, float room, int most_lines);
 
+// `text` whole, with a line break in place of a space wherever the line would grow wider than
+// `room` points of the current ImGui font: broken between words only, nothing cut. ImGui's own
+// wrapping also breaks after a full stop, which split a script's name in its message
+// ("my_incline." and "lua builds" on two lines). A word wider than the room keeps a line of
+// its own, and ImGui wraps that.
+std::string broken_at_spaces(std::string text, float room);
+
 }  // namespace frictionlab::draw

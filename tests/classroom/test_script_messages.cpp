@@ -1,6 +1,7 @@
 // A student's script in the window: its mistakes said in plain words with Lua's own, a save
 // reloading the lesson, a broken save or a lost file keeping the last good lesson running.
 #include <gtest/gtest.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -81,10 +82,27 @@ TEST(ScriptMessages, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
     const std::string error = hands.classroom().failed_script().error;
     const std::string luas_words = error.substr(error.find(".lua:"));
     bool luas = false, said = false;
+    // The panel breaks its lines between words itself (a line break for a space), each line no
+    // wider than the panel, so that ImGui's wrapping, which also breaks after a full stop, never
+    // splits the script's name ("my_incline." and "lua" on two lines).
+    const ImGuiWindow* panel = ImGui::FindWindowByName("###messages");
+    ASSERT_NE(panel, nullptr) << plain;
+    int lines = 0;
     for (const draw::ShownText& shown : record.texts) {
-      luas = luas || shown.text.find(luas_words) != std::string::npos;
-      said = said || shown.text.rfind("In plain words: " + plain, 0) == 0;
+      if (shown.panel.find("###messages") == std::string::npos) continue;
+      std::string drawn = shown.text;
+      for (std::size_t start = 0; start <= drawn.size(); ++lines) {
+        const std::size_t end = std::min(drawn.find('\n', start), drawn.size());
+        const std::string line = drawn.substr(start, end - start);
+        EXPECT_LE(ImGui::CalcTextSize(line.c_str()).x, panel->WorkRect.GetWidth())
+            << "\"" << line << "\" is wider than the message's panel: ImGui would wrap it where it likes";
+        start = end + 1;
+      }
+      std::replace(drawn.begin(), drawn.end(), '\n', ' ');
+      luas = luas || drawn.find(luas_words) != std::string::npos;
+      said = said || drawn.rfind("In plain words: " + plain, 0) == 0;
     }
+    EXPECT_GT(lines, 2) << "the message was not drawn on lines of its own";
     EXPECT_TRUE(said) << "no plain words \"" << plain << "\" for " << hands.classroom().failed_script().error;
     EXPECT_TRUE(luas) << "Lua's own message is gone: " << hands.classroom().failed_script().error;
     EXPECT_EQ(classroom_state::plain_words(error).rfind("In plain words: " + plain, 0), 0u);
