@@ -400,6 +400,29 @@ local function first_slip(probe)
     end
   end
 end
+-- The floor's breakaway step, as the world takes it: the listener holds the step the pair breaks
+-- away in at μs·N and pays the floor's (μs − μk)·N of the rest of that step (up to the whole step)
+-- back as one impulse at the next step's start (breakaway_impulse, below), which the top block
+-- must follow within that step. Its friction is then asked for m_top·(μs − μk)·g, the pair's
+-- jump from the breakaway, and up to as much again: where its static friction holds the first
+-- but not twice it, whether the world's top block keeps up with the pair's start depends on
+-- where in its step the breakaway falls, and no model of the blocks says which (μs 1.777 and μk
+-- 0.877 on the floor, μs 0.911 between them, 5 kg on 1 kg: the model's top block holds by 1 %,
+-- the world's slipped at the breakaway). So where the world's record shows the top block
+-- slipping within three steps of the pair's start (the held step, the pay-back's, and a step of
+-- the record's reading: 2.0 steps after it at 20 N/s, μs 2 on a floor of μs 1.98, μk 0.005),
+-- in that band, the rows say so; where it kept up, they are checked.
+local function jerked_at_the_breakaway()
+  if no_theory() then return nil end
+  local _, floor = pairs_now()
+  local jump = math.max(floor.mu_s - floor.mu_k, 0)
+  local holds = param["top_on_bottom.mu_s"]
+  if not (holds >= jump and holds < 2 * jump) then return nil end
+  local pair, top = first_slip("floor_slipping"), first_slip("top_slipping")
+  if pair and top and top <= pair + 3 * param.pull_rate * step_length() then
+    return "the breakaway's step decides: no model"
+  end
+end
 -- The bottom block's tilt while both its edges touch the floor is at most one edge sunk by
 -- Box2D's whole linear slop (5 mm, b2_linearSlop: the runtime's linear_slop) and the other not
 -- at all: atan(5 mm / 0.8 m), 0.36°. Past that its front edge has left the floor.
@@ -573,10 +596,11 @@ expect { "the pair starts to slide at a pull of", unit = "N",
   tolerance = function() return slip_allowed().start end }
 expect { "the top block starts to slip at a pull of", unit = "N",
   predicted = function()
-    return no_theory() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate) or slip_after_the_end()
-           or slip_pull()
+    return no_theory() or jerked_at_the_breakaway() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate)
+           or slip_after_the_end() or slip_pull()
   end,
   measured = function()
+    if jerked_at_the_breakaway() then return jerked_at_the_breakaway() end
     if tipped_by(slip_pull() / param.pull_rate) then return lifted_seen() end
     return no_theory() or off_the_floor() or slip_after_the_end() or first_slip("top_slipping")
   end,
@@ -716,6 +740,7 @@ local function coarse(t, block) return breakaway_in_frame(t) or too_fast(t, bloc
 expect { "friction on the top block halfway, forward", unit = "N",
   predicted = function()
     if no_theory() then return no_theory() end
+    if jerked_at_the_breakaway() then return jerked_at_the_breakaway() end
     if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
     if tipped_by(halfway()) then return tipped_by(halfway()) end
@@ -725,6 +750,7 @@ expect { "friction on the top block halfway, forward", unit = "N",
   end,
   measured = function()
     if no_theory() then return no_theory() end
+    if jerked_at_the_breakaway() then return jerked_at_the_breakaway() end
     if not together_phase() then return "slips at once" end
     if off_the_floor() then return off_the_floor() end
     if tipped_by(halfway()) then return lifted_seen() end
@@ -743,12 +769,13 @@ expect { "friction on the top block halfway, forward", unit = "N",
   end }
 expect { "top block's acceleration, slipping", unit = "m/s²",
   predicted = function()
-    return no_theory() or off_the_floor() or tipped_by(ending()) or coarse(reading_sample(), "top")
+    return no_theory() or jerked_at_the_breakaway() or off_the_floor() or tipped_by(ending()) or coarse(reading_sample(), "top")
            or top_acceleration_after()
   end,
   measured = function()
     if tipped_by(ending()) then return lifted_seen() end
-    return no_theory() or off_the_floor() or coarse(reading_sample(), "top") or at_the_end("top_acceleration")
+    return no_theory() or jerked_at_the_breakaway() or off_the_floor() or coarse(reading_sample(), "top")
+           or at_the_end("top_acceleration")
   end,
   -- Single precision and the tilt (above): the floor's load shifting to the back edge tips the
   -- pair by a hair (0.02° at top 2.9 kg on 1.2 kg, mu 2 on both, a smooth top), down which the
@@ -776,12 +803,14 @@ expect { "top block's acceleration, slipping", unit = "m/s²",
 -- on average (reading_instant).
 expect { "bottom block's acceleration at the end", unit = "m/s²",
   predicted = function()
-    return no_theory() or off_the_floor() or tipped_by(ending()) or coarse(reading_sample(), "bottom")
+    return no_theory() or jerked_at_the_breakaway() or off_the_floor() or tipped_by(ending())
+           or coarse(reading_sample(), "bottom")
            or bottom_acceleration(reading_instant(reading_sample()))
   end,
   measured = function()
     if tipped_by(ending()) then return lifted_seen() end
-    return no_theory() or off_the_floor() or coarse(reading_sample(), "bottom") or at_the_end("bottom_acceleration")
+    return no_theory() or jerked_at_the_breakaway() or off_the_floor() or coarse(reading_sample(), "bottom")
+           or at_the_end("bottom_acceleration")
   end,
   -- Single precision and the tilt's reaction (above): the top block's normal, square to the
   -- leaning face, pushes the bottom block along by m_top·g·sin(tilt) (a smooth 2.9 kg top on
