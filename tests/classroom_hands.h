@@ -106,8 +106,7 @@ class ClassroomHands {
       : host_(nullptr), display_(display) {
     options.lesson = lessons::resolve_lesson(options.lesson);
     options.window.help = false;
-    options.output_folder = folder_;
-    std::filesystem::create_directories(folder_);
+    options.output_folder = folder_.path;
     classroom_ = std::make_unique<Classroom>(options);
   }
   // The lesson `lesson` (a built-in name or a path) under a teacher's `lock` (the controls left
@@ -115,14 +114,13 @@ class ClassroomHands {
   explicit ClassroomHands(const std::string& lesson, std::vector<std::string> lock = {},
                           std::map<std::string, std::string> overrides = {})
       : ClassroomHands(options_for(lesson, std::move(lock), std::move(overrides))) {}
-  ~ClassroomHands() { std::filesystem::remove_all(folder_); }
   ClassroomHands(const ClassroomHands&) = delete;
   ClassroomHands& operator=(const ClassroomHands&) = delete;
 
   Classroom& classroom() { return *classroom_; }
   classroom_state::Playback& playback() { return classroom_->playback(); }
   lessons::Lesson& lesson() { return classroom_->playback().lesson(); }
-  const std::string& folder() const { return folder_; }
+  const std::string& folder() const { return folder_.path; }
 
   // One display frame, `wall` seconds after the last (the lesson plays that long when playing);
   // with `record`, every text it drew.
@@ -248,10 +246,20 @@ class ClassroomHands {
   draw::HeadlessContext gl_;
   draw::ImGuiHost host_;
   ImVec2 display_;
-  std::string folder_ = (std::filesystem::temp_directory_path() /
-                         ("frictionlab_hands_" + std::to_string(::getpid()) + "_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name()))
-                            .string();
+  // The test's own output folder, made first and removed last: after the window is gone, and
+  // also when the window's constructor throws (a refused mystery pair left its folder in the
+  // temporary folder at every run of the suite, the hands' destructor never having run).
+  struct OutputFolder {
+    std::string path = (std::filesystem::temp_directory_path() /
+                        ("frictionlab_hands_" + std::to_string(::getpid()) + "_" +
+                         ::testing::UnitTest::GetInstance()->current_test_info()->name()))
+                           .string();
+    OutputFolder() { std::filesystem::create_directories(path); }
+    ~OutputFolder() { std::filesystem::remove_all(path); }
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+  };
+  OutputFolder folder_;
   std::unique_ptr<Classroom> classroom_;
 };
 
