@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -248,12 +249,16 @@ class ClassroomHands {
   ImVec2 display_;
   // The test's own output folder, made first and removed last: after the window is gone, and
   // also when the window's constructor throws (a refused mystery pair left its folder in the
-  // temporary folder at every run of the suite, the hands' destructor never having run).
+  // temporary folder at every run of the suite, the hands' destructor never having run). One
+  // folder, not two: a parameterized test's name holds its parameter after a '/', and
+  // "…UntilReset/push" made a folder in a folder, of which only the inner one was removed.
   struct OutputFolder {
-    std::string path = (std::filesystem::temp_directory_path() /
-                        ("frictionlab_hands_" + std::to_string(::getpid()) + "_" +
-                         ::testing::UnitTest::GetInstance()->current_test_info()->name()))
-                           .string();
+    static std::string own_name() {
+      std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+      std::replace(test.begin(), test.end(), '/', '_');
+      return "frictionlab_hands_" + std::to_string(::getpid()) + "_" + test;
+    }
+    std::string path = (std::filesystem::temp_directory_path() / own_name()).string();
     OutputFolder() { std::filesystem::create_directories(path); }
     ~OutputFolder() { std::filesystem::remove_all(path); }
     OutputFolder(const OutputFolder&) = delete;
