@@ -154,7 +154,13 @@ end
 local function seen(speed_probe, epsilon, distance_probe)
   local n = readable()
   local speeds = history(speed_probe)
-  if speeds[n] > epsilon then return "jitters" end
+  -- A block that settles does so on the law's linear branch, where the creep is: its last two
+  -- speeds are both under ε, as the theory's own `settles` asks of its steps. A cycle of two
+  -- steps bounded by drag and ε can be steady and still leave that branch every other step
+  -- (c 507 N·s/m, b 813 N·s²/m², ε 0.0133 m/s at 7.4°, 240 Hz: −0.0153 and +0.0034 m/s for
+  -- ever, after a swing of 0.064 m/s mid-run that made its end look like a settling; at ε
+  -- 0.02 m/s on 18.2°, c 434, b 294: −0.0217 and +0.0093 m/s).
+  if math.abs(speeds[n]) > epsilon or (n >= 2 and math.abs(speeds[n - 1]) > epsilon) then return "jitters" end
   if hidden_swing(speeds, history(distance_probe), n) then return "jitters" end
   local steady = creep(epsilon).speed
   local function swing(from, to)
