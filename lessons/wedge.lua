@@ -1294,8 +1294,14 @@ function flew_where_the_model_grazed_by(t)
   end
 end
 -- Why the row has no model, the same words on both sides, in one order; nil where it has one.
+-- A stop of the model's that the world's block slid through parts the two for good, as for the
+-- other rows (shaken at 30 m/s² on a plank swinging 9.6° at 3 rad/s, μs 1.93, μk 0: at 240 Hz
+-- the world's block was 0.34 m behind the model's by 0.5 s and its N never fell under 7 N,
+-- where the model's block lifted off at 1.517 s; at 480 Hz it held at the stop and lifted off
+-- at 1.521 s).
 local function no_lift_off_model(t, k)
-  return no_model(t or duration) or tumbled_on_the_way_up() or (t and only_grazes(t, k) and "grazes: no model") or nil
+  return no_model(t or duration) or slid_through_a_stop_by(t or duration) or tumbled_on_the_way_up()
+         or (t and only_grazes(t, k) and "grazes: no model") or nil
 end
 expect { "first lift-off", unit = "s",
   predicted = function()
