@@ -190,6 +190,12 @@ TEST(StableLayout, PanelsTabsAndTheRevealButtonKeepTheirPlacesThroughTheRunItsEn
         EXPECT_TRUE(window.theory_hidden()) << lesson;
         window.playback().run_to(duration);
         expect_same_places(opened, placed(gl, host, window, display), lesson + ", at the end of the run after R");
+        // R with the theory hidden, as the trial's teacher pressed it on tipping_box before the
+        // class had answered: the reveal button stays under the pointer it was under.
+        ASSERT_TRUE(window.theory_hidden()) << lesson;
+        window.key_pressed(Key::r, false);
+        expect_same_places(opened, placed(gl, host, window, display), lesson + ", hidden, after R at the run's end");
+        EXPECT_TRUE(window.theory_hidden()) << lesson << ": R revealed the theory";
       }
     }
   }
