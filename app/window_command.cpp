@@ -139,11 +139,9 @@ int run_window_mode(const std::vector<std::string>& args, std::ostream& out) {
   // What the settings file brought back, before the command line and a setup have their say:
   // `--projector` on a new machine is no projector mode kept from the last session.
   const std::string kept = classroom::kept_from_last_session(classroom_options.window);
-  // The help panel a newcomer's first window opens with is for a person at the window: a
-  // picture taken where the window has no settings yet would show it over the lesson.
-  if (!options.screenshot.empty() && (settings_path.empty() || !fs::exists(settings_path))) {
-    classroom_options.window.help = false;
-  }
+  classroom_options.window.help =
+      classroom::opens_with_help(classroom_options.window.help, settings_path.empty() || !fs::exists(settings_path),
+                                 options.projector, !options.screenshot.empty());
   if (options.theme) classroom_options.window.theme = *options.theme;
   if (options.projector) classroom_options.window.projector = true;
   // A prepared setup: read and checked against its lesson before the window opens.

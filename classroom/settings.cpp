@@ -83,6 +83,11 @@ bool save_settings(const WindowSettings& settings, const std::string& path) {
   }
 }
 
+bool opens_with_help(bool kept, bool first_window, bool projector, bool picture) {
+  if (first_window && (projector || picture)) return false;
+  return kept;
+}
+
 std::string kept_from_last_session(const WindowSettings& settings) {
   const WindowSettings fresh;
   std::vector<std::string> kept;

@@ -50,6 +50,14 @@ std::string kept_settings_text(const WindowSettings& settings);
 // Whole or not at all (written beside it, then renamed). Returns false when it cannot be written.
 bool save_settings(const WindowSettings& settings, const std::string& path);
 
+// Whether the help panel opens, where `kept` is what the settings file says (true for a first
+// window, which has none: `first_window`). A newcomer's first window shows the shortcuts to the
+// person at it; the first in projector mode is for a class in front of the screen, where the
+// panel took the room the Parameters needed (a teacher's trial: tipping_box opened with its
+// sliders folded and the help's last line cut), and a picture is for no one at the window. F1
+// shows it either way, and the choice is kept as always.
+bool opens_with_help(bool kept, bool first_window, bool projector, bool picture);
+
 // What a session opened with `settings` kept from the last one, for the status line: "Kept from
 // the last session: dark theme, projector mode." naming each setting that differs from a new
 // window's; "" when none does.

@@ -175,6 +175,29 @@ TEST(ParametersPanel, AUnitWithAPercentSignIsShownAsText) {
   EXPECT_TRUE(shown) << "the mass slider should read 1 %s";
 }
 
+// A teacher's trial: a first window in projector mode opened tipping_box with the help panel,
+// whose strip took the room the sliders needed (the panel folded for the class's answers, so no
+// push height, width or μs in sight while the class was asked whether the box tips), and the
+// help's last line cut. The first window in projector mode is for the class: no help panel.
+TEST(ParametersPanel, AFirstWindowInProjectorModeOpensWithoutTheHelpAndWithTippingBoxsSlidersInSight) {
+  EXPECT_FALSE(opens_with_help(true, /*first_window=*/true, /*projector=*/true, /*picture=*/false));
+  EXPECT_FALSE(opens_with_help(true, true, false, /*picture=*/true));
+  EXPECT_TRUE(opens_with_help(true, true, false, false)) << "a newcomer at a window sees the shortcuts";
+  EXPECT_TRUE(opens_with_help(true, false, true, false)) << "the teacher's own choice, kept, comes back";
+  EXPECT_FALSE(opens_with_help(false, false, false, false));
+  const auto opened_with_help = [](bool help) {
+    ClassroomHands hands("tipping_box");
+    hands.classroom().window_settings().projector = true;
+    hands.classroom().window_settings().help = help;
+    hands.set_display(ImVec2(1920.0f, 1080.0f));
+    hands.frame();
+    return hands.classroom().control("parameters open").has_value();
+  };
+  EXPECT_FALSE(opened_with_help(opens_with_help(true, true, true, false))) << "tipping_box's sliders folded";
+  // (What the trial saw: with the help's strip, the answers need the sliders' room.)
+  EXPECT_TRUE(opened_with_help(true)) << "the help's strip leaves room for both: the first test shows nothing";
+}
+
 // Issue 31: the Parameters panel folded into its heading as the run ended (to leave the class's
 // answers their room) and unfolded at R, moving the tabs under the teacher's pointer. Whether it
 // folds is decided as the lesson opens, for the answers at their tallest, and kept through the
