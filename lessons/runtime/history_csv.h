@@ -27,8 +27,9 @@ inline constexpr char settings_first_words[] = "FrictionLab run of ";
 
 // The mark and the header line, '\n' included: "t (s)", each probe as "name (unit)" ("name"
 // alone where it has no unit), then any_contact_slipping (1 or 0), hand_pulled (1 or 0) and
-// "gauge (N)" (the force the window's force gauge read, empty where the hand did not pull; a
-// command-line run has no hand, so 0 and empty throughout).
+// "gauge (N)" (the size of the force the window's force gauge read, as its dial does, never
+// negative; empty where the hand did not pull; a command-line run has no hand, so 0 and empty
+// throughout).
 std::string csv_header(const Lesson& lesson);
 
 // Row `frame` of the scene's record (Scene::times() and each probe's history), '\n' included,
