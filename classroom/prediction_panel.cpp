@@ -118,6 +118,7 @@ std::vector<bool> line_breaks(const std::vector<float>& widths, float width) {
 // No longer than a measurement ("measured: 3.92 N"), so it keeps the answer's line: a note of
 // two lines made the column taller than planned and folded the Parameters panel.
 const char* const held_back_note = "measured: hidden";
+const char* const hand_pulled_note = "measured: hand-pulled";
 
 // Beside the answer: what was typed is no number, or what the run has measured so far.
 std::string answer_note(const lessons::Prediction& prediction, const std::string& answer,
@@ -136,6 +137,12 @@ std::string answer_note(const lessons::Prediction& prediction, const std::string
   // answer only (a teacher's trial: "measured: 3.92 N" appeared mid-run beside an empty box
   // and gave the answer away). A row that is not measured yet, or says why not, gives nothing.
   if (answer.empty() && row != nullptr && row->measured_yet) return held_back_note;
+  // The hand pulled in this run: what the row measured answers another question than the one
+  // the class was asked (a teacher's trial: "measured: larger (hand-pulled)" beside "smaller",
+  // on a block whose friction fell from a 5.70 N peak to 4.81 N, and the breakaway's
+  // "measured: 2.68 N (hand-pulled)" wrapped onto a line of its own). The word alone, about as
+  // long as a measurement; the theory table, once revealed, shows the figures beside it.
+  if (row != nullptr && row->hand_pulled && row->measured_yet) return hand_pulled_note;
   return "measured: " + (row ? measured_shown(*row) : std::string("not yet"));
 }
 

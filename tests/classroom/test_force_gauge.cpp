@@ -499,6 +499,33 @@ TEST(ForceGauge, ABodyTheHandHoldsStillSticks) {
   EXPECT_NEAR(std::abs(marks.front().friction_force), pull, 1e-3 * pull);
 }
 
+// A teacher's trial: the class answered both of push's questions, the block was pulled by the
+// mouse, and the class's lines read "measured: 2.68 N (hand-pulled)" and "measured: larger
+// (hand-pulled)", the opposite of what the hand's gauge showed. Before the reveal each line
+// says only that the hand pulled, and stays on its answer's line.
+TEST(ForceGauge, AClassLineAfterAHandPullSaysTheHandPulledAndNoMeasurement) {
+  ClassroomOptions options = gauge_options("push", {}, true);
+  options.window.predictions = true;
+  ClassroomHands hands(options, ImVec2(1920.0f, 1080.0f));
+  hands.classroom().predictions().answers["breakaway push"] = "5.5";
+  hands.classroom().predictions().answers["sliding vs breakaway"] = "smaller";
+  hands.frame();
+  hands.pull_right("block", 1.0f, 3.0);
+  hands.playback().run_to(hands.lesson().duration());
+  hands.frame();
+  draw::FrameRecord record;
+  hands.frame(0.0, &record);
+  ASSERT_TRUE(hands.classroom().theory_hidden());
+  int notes = 0;
+  for (const draw::ShownText& text : record.texts) {
+    if (text.text.rfind("measured:", 0) != 0) continue;
+    ++notes;
+    EXPECT_EQ(text.text, "measured: hand-pulled");
+    EXPECT_TRUE(text.whole_across()) << text.text;
+  }
+  EXPECT_EQ(notes, 2) << "each answered question has its line";
+}
+
 // A teacher's trial, projector mode at 1920×1080: the class predicted push's breakaway, the block
 // was pulled by the mouse and the theory revealed; "0.602 N (hand-pulled)" ran past the class
 // table's right edge, with no way to scroll sideways. Each cell wraps in its column now; since
