@@ -73,6 +73,8 @@ void messages_panel(ImVec2 corner, float width, const classroom_state::Playback&
     ImGui::PushTextWrapPos(0.0f);
     // Broken between words here, so that ImGui's wrapping, which also breaks after a full
     // stop, never splits the script's name ("my_incline." and "lua").
+    // (A pixel short of the region: ImGui wraps a line whose width reaches the wrap position,
+    // not only one past it.)
     const float room = ImGui::GetContentRegionAvail().x - 1.0f;
     for (const auto& [text, fault] : lines) {
       ImGui::PushStyleColor(ImGuiCol_Text, fault ? colours.bad : ImGui::GetColorU32(ImGuiCol_Text));

@@ -74,7 +74,8 @@ plot { "Speed of the axle and of the tyre's rim", kind = "time", y = { "speed", 
 -- Reading the record ----------------------------------------------------------------------
 -- With no friction at all (mu_s = mu_k = 0) nothing holds the contact, so it neither sticks nor
 -- slips: it reads "slipping" only while the tyre slides on the road faster than the contact's
--- threshold; a slip counts once the rim runs ahead of the axle at all, whatever the flag says
+-- threshold; a slip counts once the rim's speed parts from the axle's at all (ahead, under a
+-- motor; either way, the comparison does not care), whatever the flag says
 -- (10 kg on a 0.1 m wheel at 0.001 N·m: the rim 3.5×10⁻⁸ m/s ahead after the second step, the
 -- flag a step later, and the torque read a step of the ramp late).
 local function first_slip_torque()

@@ -247,11 +247,13 @@ class ClassroomHands {
   draw::HeadlessContext gl_;
   draw::ImGuiHost host_;
   ImVec2 display_;
-  // The test's own output folder, made first and removed last: after the window is gone, and
+  // The test's own output folder, made before the window and removed after it is gone, and
   // also when the window's constructor throws (a refused mystery pair left its folder in the
   // temporary folder at every run of the suite, the hands' destructor never having run). One
   // folder, not two: a parameterized test's name holds its parameter after a '/', and
   // "…UntilReset/push" made a folder in a folder, of which only the inner one was removed.
+  // Two hands in one test share it (a teacher's window saves a setup that the other opens); the
+  // first to go, at the test's end, removes it for both.
   struct OutputFolder {
     static std::string own_name() {
       std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();

@@ -88,9 +88,11 @@ TEST(ScriptMessages, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
     const ImGuiWindow* panel = ImGui::FindWindowByName("###messages");
     ASSERT_NE(panel, nullptr) << plain;
     int lines = 0;
+    bool broken = false;
     for (const draw::ShownText& shown : record.texts) {
       if (shown.panel.find("###messages") == std::string::npos) continue;
       std::string drawn = shown.text;
+      broken = broken || (drawn.find(".lua:") != std::string::npos && drawn.find('\n') != std::string::npos);
       for (std::size_t start = 0; start <= drawn.size(); ++lines) {
         const std::size_t end = std::min(drawn.find('\n', start), drawn.size());
         const std::string line = drawn.substr(start, end - start);
@@ -103,6 +105,8 @@ TEST(ScriptMessages, AScriptsMistakeComesWithPlainWordsBesideLuasOwn) {
       said = said || drawn.rfind("In plain words: " + plain, 0) == 0;
     }
     EXPECT_GT(lines, 2) << "the message was not drawn on lines of its own";
+    // (Three lines come from three messages too: Lua's own must be broken by the panel.)
+    EXPECT_TRUE(broken) << "Lua's message was drawn on one line, for ImGui to wrap where it likes";
     EXPECT_TRUE(said) << "no plain words \"" << plain << "\" for " << hands.classroom().failed_script().error;
     EXPECT_TRUE(luas) << "Lua's own message is gone: " << hands.classroom().failed_script().error;
     EXPECT_EQ(classroom_state::plain_words(error).rfind("In plain words: " + plain, 0), 0u);
