@@ -441,8 +441,11 @@ end
 local function on_the_edge_at_the_start()
   if turning.contact[1] ~= "slipping" or #turning.normal < 2 then return false end
   local limit = math.max(param.mu_s, param.mu_k) * (1 + hold_band)
-  local next_k = math.min(math.floor(h / spacing + 0.5) + 1, #turning.normal)
-  return math.abs(drive_at_the_pivot((next_k - 1) * spacing)) <= limit * turning.normal[next_k]
+  -- The world's first step is a sub-step under --substeps, shorter than the models' samples:
+  -- N there from the first two, along the line between them.
+  local at = substep_length()
+  local normal = turning.normal[1] + (turning.normal[2] - turning.normal[1]) * at / spacing
+  return math.abs(drive_at_the_pivot(at)) <= limit * normal
 end
 local breakaways_shifted  -- what a breakaway's timing moves the slide by (below, by the rows)
 local grazes_by  -- a stuck stretch that only grazes the static limit (below, after start_drift)
