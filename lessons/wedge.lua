@@ -76,6 +76,14 @@ local function direction_of(x) return x < 0 and -1 or 1 end
 local theta0, omega = math.rad(param.theta0), param.omega
 local a_x, a_x_omega = param.a_x, param.a_x_omega
 local function theta(t) return theta0 * sin(omega * t) end
+-- How much harder or softer the turning surface presses a block that stands `gap` (m) off
+-- another along it at t and moves `gap_speed` (m/s) faster: m·(|θ''|·δs + 2·|θ'|·δs'), the
+-- turn's push across the surface on the offset and the Coriolis push on the speed (N).
+local function turn_press(t, gap, gap_speed)
+  local spin_up = theta0 * omega * omega * math.abs(sin(omega * t))
+  local turn_rate = theta0 * omega * math.abs(math.cos(omega * t))
+  return mass * (spin_up * math.abs(gap) + 2 * turn_rate * math.abs(gap_speed))
+end
 -- The pivot starts at rest at x = 0: x'' = a_x·cos(ω_a·t).
 local function wedge_x(t)
   if a_x_omega == 0 then return 0.5 * a_x * t * t end
@@ -314,8 +322,7 @@ local function rocks_by(t)
           gap, gap_speed = drift_step(gap, gap_speed, time_k - spacing + (i - 0.5) * spacing / parts, spacing / parts)
         end
       end
-      local press = mass * (theta0 * omega * omega * math.abs(sin(omega * time_k)) * math.abs(gap)
-                            + 2 * theta0 * omega * math.abs(math.cos(omega * time_k)) * math.abs(gap_speed))
+      local press = turn_press(time_k, gap, gap_speed)
       -- A breakaway since the last sample: the friction there is all the limit, μ·N, the way
       -- it held; at μ = w/h that alone needs N·w/2, and the surface's θ'' may add to it (μ = 2,
       -- θ0 = 40°: the model broke away at 0.0061 s and would rock by the next sample, 0.0083 s;
@@ -1069,14 +1076,13 @@ expect { "normal force halfway", unit = "N",
     local drift_gap, drift_speed = start_drift(t)
     local stepped_gap, stepped_speed = stepping_gap(t)
     local gap, gap_speed = drift_gap + stepped_gap, drift_speed + stepped_speed
-    local spin_up = theta0 * omega * omega * math.abs(sin(omega * t))
     local turn_rate = theta0 * omega * math.abs(math.cos(omega * t))
     local steps = h / spacing
     local article_change = math.abs((turning.normal[k] - turn_share(k)) - (turning.normal[k - 1] - turn_share(k - 1)))
                            * steps
     local rounding = impulse_rounding(k)
     local raise = mass * turn_rate * turn_rate * raised_by(t)
-    return article_change + late_share(k) + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + rounding
+    return article_change + late_share(k) + turn_press(t, gap, gap_speed) + rounding
            + 1.25 * raise + 0.01 * mass * g
   end }
 -- How far from the model's breakaway at t the world's may come (the first slip row says why):
@@ -1171,10 +1177,8 @@ end
 -- |θ''| is 2.2 rad/s²: 5.2 N of press, against the 1.75 N allowed. The model's block lifted off
 -- there; the world's N came down to 0.06 N and went back up.)
 local function lift_off_uncertainty(t, k)
-  local turn_rate = math.abs(theta0 * omega * math.cos(omega * t))
-  local spin_up = theta0 * omega * omega * math.abs(sin(omega * t))
   local gap, gap_speed = start_drift(t)
-  return 0.02 * mass * g + mass * (spin_up * gap + 2 * turn_rate * gap_speed) + late_share(k)
+  return 0.02 * mass * g + turn_press(t, gap, gap_speed) + late_share(k)
 end
 -- The most |sin x| for x from a to b.
 local function most_abs_sin(a, b)
@@ -1336,7 +1340,8 @@ expect { "first lift-off", unit = "s",
   end,
   measured = function()
     local t, k = lift_off()
-    if no_lift_off_model(t, k) then return no_lift_off_model(t, k) end
+    local why_none = no_lift_off_model(t, k)
+    if why_none then return why_none end
     local seen = first_recorded("normal_force", function(v) return v == 0 end)
     if seen and not t then return "lifts off" end  -- where the model says it never does
     if seen or time() >= duration then return seen or "never" end
