@@ -29,7 +29,15 @@ Classroom::Classroom(ClassroomOptions options)
       lock_{std::set<std::string>(options.lock.begin(), options.lock.end()), options.lock_from},
       script_words_{options.script_paths},
       browser_(options.browser) {
+  // A whole path on a computer: the status line's "History saved to ./frictionlab_…csv" told a
+  // teacher who started the window from a menu nothing of where it went (a teacher's trial).
+  // The page's downloads keep their one name, "Downloads", which is what the browser shows.
   exports_.folder = options.output_folder;
+  if (!browser_) {
+    std::error_code error;
+    const std::filesystem::path whole = std::filesystem::weakly_canonical(std::filesystem::absolute(options.output_folder), error);
+    if (!error) exports_.folder = whole.string();
+  }
   watch_.overrides = options.overrides;
   const classroom_state::FileStamp stamp = classroom_state::file_stamp(options.lesson);  // before it is read: a save meanwhile is seen
   try {

@@ -107,7 +107,9 @@ class ClassroomHands {
       : host_(nullptr), display_(display) {
     options.lesson = lessons::resolve_lesson(options.lesson);
     options.window.help = false;
-    options.output_folder = folder_.path;
+    // Given as a path relative to the working folder, as the desktop window's own "." is: what
+    // the window tells a teacher of its files is then the whole path it made of it.
+    options.output_folder = std::filesystem::relative(folder_.path).string();
     classroom_ = std::make_unique<Classroom>(options);
   }
   // The lesson `lesson` (a built-in name or a path) under a teacher's `lock` (the controls left

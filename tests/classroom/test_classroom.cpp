@@ -339,6 +339,8 @@ TEST(Classroom, CtrlEExportsTheHistoryAndCtrlSAsksForAScreenshotWithoutOverwriti
   hands.key(Key::e, true);
   const std::string said = hands.classroom().status();
   ASSERT_EQ(said.rfind("History saved to ", 0), 0u) << said;
+  // The whole path, which a teacher who started the window from a menu can find.
+  EXPECT_TRUE(std::filesystem::path(said.substr(17)).is_absolute()) << said;
   const std::string csv = read_file(said.substr(17));
   std::istringstream rows(csv);
   std::string header;
