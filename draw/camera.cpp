@@ -68,8 +68,8 @@ Reach moving_reach(const Scene& scene, const ArrowRoom& arrows, float pixels_per
 
 // Moves the camera up or down as little as shows `reach` between `edge` pixels of the lane's top
 // and bottom; one taller than that is centred, into the edges; one taller than the lane is left
-// where the framing put it (terrain's four lanes on a projector: moving would only trade the
-// weight's tip for the normal force's, and take its values' places beside them).
+// where the framing put it (moving would only trade the weight's tip for the normal force's, and
+// take its values' places beside them; lanes that thin stand side by side instead, lane_grid).
 void show_reach(Camera& camera, Reach reach, float edge) {
   if (!(reach.low <= reach.high)) return;
   const float metres = 1.0f / camera.pixels_per_metre;
@@ -376,9 +376,13 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   for (std::size_t i = 0; i < strips; ++i) {
     Camera camera;
     const std::size_t column = i % columns, row = i / columns;
-    const float lane_free = column_free_width(size.x, free_width, columns, column);
-    camera.origin = ImVec2(origin.x + column_width * static_cast<float>(column), origin.y + strip_height * static_cast<float>(row));
-    camera.size = ImVec2(column_width, strip_height);
+    // A last row with fewer lanes shares the whole width among them (three lanes: two above, one
+    // below as wide as both), rather than leave a cell empty.
+    const std::size_t in_row = std::min(columns, strips - row * columns);
+    const float width = size.x / static_cast<float>(in_row);
+    const float lane_free = column_free_width(size.x, free_width, in_row, column);
+    camera.origin = ImVec2(origin.x + width * static_cast<float>(column), origin.y + strip_height * static_cast<float>(row));
+    camera.size = ImVec2(width, strip_height);
     camera.pixels_per_metre = pixels_per_metre * adjust.zoom;
     // A little below the middle: forces drawn above bodies need more room than the ground.
     // A window the script fixed is centred exactly, so all of it is in view.
