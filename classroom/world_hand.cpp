@@ -93,11 +93,23 @@ void WorldHand::hold_view(const classroom_state::Playback& playback, ImVec2 orig
 }
 
 
+// The lane under the point: lanes stand in a column, or side by side in rows (draw::lane_grid).
 const draw::Camera& WorldHand::camera_at(ImVec2 point) const {
   for (const draw::Camera& camera : cameras) {
-    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y) return camera;
+    if (point.y >= camera.origin.y && point.y < camera.origin.y + camera.size.y && point.x >= camera.origin.x &&
+        point.x < camera.origin.x + camera.size.x) {
+      return camera;
+    }
   }
-  return cameras.front();
+  // Left or right of every lane (the world panel's edges): the nearest lane across, in that row.
+  const draw::Camera* nearest = nullptr;
+  float distance = 0.0f;
+  for (const draw::Camera& camera : cameras) {
+    if (point.y < camera.origin.y || point.y >= camera.origin.y + camera.size.y) continue;
+    const float across = std::max({camera.origin.x - point.x, point.x - (camera.origin.x + camera.size.x), 0.0f});
+    if (nearest == nullptr || across < distance) nearest = &camera, distance = across;
+  }
+  return nearest != nullptr ? *nearest : cameras.front();
 }
 
 void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin, ImVec2 size, float scale, std::string& status) {

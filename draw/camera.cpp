@@ -68,8 +68,8 @@ Reach moving_reach(const Scene& scene, const ArrowRoom& arrows, float pixels_per
 
 // Moves the camera up or down as little as shows `reach` between `edge` pixels of the lane's top
 // and bottom; one taller than that is centred, into the edges; one taller than the lane is left
-// where the framing put it (terrain's four lanes on a projector: moving would only trade the
-// weight's tip for the normal force's, and take its values' places beside them).
+// where the framing put it (moving would only trade the weight's tip for the normal force's, and
+// take its values' places beside them; lanes that thin stand side by side instead, lane_grid).
 void show_reach(Camera& camera, Reach reach, float edge) {
   if (!(reach.low <= reach.high)) return;
   const float metres = 1.0f / camera.pixels_per_metre;
@@ -83,6 +83,88 @@ void show_reach(Camera& camera, Reach reach, float edge) {
   } else if (reach.low < camera.centre.y - below) {
     camera.centre.y = reach.low + below;
   }
+}
+
+// Whether a body touches anything (it may then have a normal force drawn up from its foot).
+bool touching(const b2Body* body) {
+  for (const b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (edge->contact->IsTouching()) return true;
+  }
+  return false;
+}
+
+// A lane's arrows in its picture: the reach of the moving bodies drawn in it (those nearest its
+// own body's height, as the frame's bodies_by_lane shares them out), their values' lines too
+// where the lane has room for them, else the arrows' tips alone, which lane_grid made room for.
+// Before, a lane stayed on its body's height and a weight ran past its foot (terrain's four
+// lanes on a projector, friction_models', contact_area's at 1920 × 1080).
+void show_lane_reach(Camera& camera, const Scene& scene, const std::vector<const b2Body*>& lane_bodies, std::size_t lane,
+                     const ArrowRoom& arrows, float edge, float clipped_top, float clipped_bottom) {
+  ArrowRoom tips = arrows;
+  tips.value_line = 0.0f;
+  Reach with{1e30f, -1e30f}, without{1e30f, -1e30f};
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    if (nearest_lane(body, lane_bodies) != lane) continue;
+    Reach one = arrow_reach(body, arrows, camera.pixels_per_metre), two = arrow_reach(body, tips, camera.pixels_per_metre);
+    if (!touching(body)) {
+      // In the air: no normal force above it (the thrown box's lane stays still while it falls).
+      one.high = two.high = body_box(body).upperBound.y;
+    }
+    with = {std::min(with.low, one.low), std::max(with.high, one.high)};
+    without = {std::min(without.low, two.low), std::max(without.high, two.high)};
+  }
+  if (!(without.low <= without.high)) return;
+  // A lane whose arrows' tips already show stays where the framing put it, on its body's height
+  // (a window's lanes, whose weights end a few pixels over their feet); what shows of it is all of
+  // it, less what the world's panel clips off its edges (`clipped_top`, `clipped_bottom`).
+  const float top = camera.to_screen({0.0f, without.high}).y, bottom = camera.to_screen({0.0f, without.low}).y;
+  const float slack = 0.01f;  // a weight of 0.4 of the lane's height ends on its foot, to the floats' rounding
+  if (top >= camera.origin.y + clipped_top - slack && bottom <= camera.origin.y + camera.size.y - clipped_bottom + slack) return;
+  const bool values_fit = (with.high - with.low) * camera.pixels_per_metre <= camera.size.y - 2.0f * edge;
+  show_reach(camera, values_fit ? with : without, edge);
+}
+
+// Half the shorter side of a body's own box, m, taken in its own frame so that it does not
+// change as the body turns: at least this much of it lies between its foot and its centre.
+float half_shorter_side(const b2Body* body) {
+  const b2Transform own(b2Vec2(0.0f, 0.0f), b2Rot(0.0f));
+  b2AABB box{};
+  bool any = false;
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    for (int child = 0; child < fixture->GetShape()->GetChildCount(); ++child) {
+      b2AABB one;
+      fixture->GetShape()->ComputeAABB(&one, own, child);
+      if (any) {
+        box.Combine(one);
+      } else {
+        box = one;
+        any = true;
+      }
+    }
+  }
+  if (!any) return 0.0f;
+  const b2Vec2 side = box.upperBound - box.lowerBound;
+  return 0.5f * std::min(side.x, side.y);
+}
+
+// Whether every moving body's arrows fit in `room` px of a lane's height at `pixels_per_metre`:
+// its normal force up from its foot (or its top, if that is higher), its weight down from its
+// centre (ArrowRoom::weight_pixels), their values' lines left to go beside them.
+bool arrows_fit(const Scene& scene, const ArrowRoom& arrows, float pixels_per_metre, float room) {
+  for (const auto& [name, body] : scene.bodies()) {
+    if (body->GetType() != b2_dynamicBody) continue;
+    const float half = half_shorter_side(body) * pixels_per_metre;
+    if (std::max(arrows.longest - half, half) + arrows.weight_pixels(body) > room) return false;
+  }
+  return true;
+}
+
+// The free width of a column of lanes, px: the view's `free_width` from its left edge is free
+// (the free-body inset covers the rest), and each column keeps what of it is in the column.
+float column_free_width(float width, float free_width, std::size_t columns, std::size_t column) {
+  const float column_width = width / static_cast<float>(columns);
+  return std::clamp(free_width - column_width * static_cast<float>(column), 1.0f, column_width);
 }
 
 // The highest foot of a moving body, m: now or at t = 0 (WorldFraming::highest_foot), whichever
@@ -211,8 +293,47 @@ b2Vec2 framing_centre(lessons::View::Kind kind, bool zoomed_in, const lessons::V
 
 }  // namespace
 
+std::size_t nearest_lane(const b2Body* body, const std::vector<const b2Body*>& lane_bodies) {
+  const float y = body->GetWorldCenter().y;
+  std::size_t nearest = 0;
+  for (std::size_t lane = 1; lane < lane_bodies.size(); ++lane) {
+    if (std::abs(y - lane_bodies[lane]->GetWorldCenter().y) < std::abs(y - lane_bodies[nearest]->GetWorldCenter().y)) {
+      nearest = lane;
+    }
+  }
+  return nearest;
+}
+
+LaneGrid lane_grid(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 size, float free_width, float scale,
+                   const std::function<ArrowRoom(float lane_height)>& arrows_at) {
+  using Kind = lessons::View::Kind;
+  const std::size_t lanes = framing.view.bodies.size();
+  if (framing.view.kind != Kind::lanes) return {1, 1};
+  if (lanes < 2 || !arrows_at || view_bodies(scene, framing.view).empty()) return {1, std::max<std::size_t>(lanes, 1)};
+  free_width = std::max(free_width, 1.0f);
+  size = ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f));
+  const float edge = lane_ground_edge * scale;
+  const b2AABB moving = moving_bounds(scene);
+  std::size_t rows_before = 0;
+  for (std::size_t columns = 1; columns <= lanes; ++columns) {
+    const std::size_t rows = (lanes + columns - 1) / columns;
+    if (rows == rows_before) continue;  // another column, and the lanes no taller
+    rows_before = rows;
+    const float height = size.y / static_cast<float>(rows);
+    const ArrowRoom arrows = arrows_at(height);
+    const float column_free = column_free_width(size.x, free_width, columns, columns - 1);
+    const float pixels_per_metre =
+        framing_scale(framing, scene, Kind::lanes, moving, ImVec2(size.x / static_cast<float>(columns), size.y), column_free,
+                      height, edge, scale, arrows)
+            .pixels_per_metre;
+    if (arrows_fit(scene, arrows, pixels_per_metre, height - 2.0f * edge)) return {columns, rows};
+  }
+  return {1, lanes};
+}
+
 std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
-                                    float free_width, float scale, const ViewAdjust& adjust, const ArrowRoom& arrows) {
+                                    float free_width, float scale, const ViewAdjust& adjust, const ArrowRoom& arrows,
+                                    std::size_t lane_columns, bool foot_clipped) {
   const lessons::View& view = framing.view;
   const std::vector<float>& lane_ground = framing.lane_ground;
   using Kind = lessons::View::Kind;
@@ -224,12 +345,18 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   const b2AABB moving = moving_bounds(scene);
   const Kind kind = bodies.empty() && view.kind != Kind::window ? Kind::whole : view.kind;
   const std::size_t strips = kind == Kind::lanes ? bodies.size() : 1;
-  const float strip_height = size.y / static_cast<float>(strips);
+  // The lanes in a grid (lane_grid): `columns` side by side, in reading order.
+  const std::size_t columns = kind == Kind::lanes ? std::clamp<std::size_t>(lane_columns, 1, strips) : 1;
+  const std::size_t rows = (strips + columns - 1) / columns;
+  const float strip_height = size.y / static_cast<float>(rows);
+  const float column_width = size.x / static_cast<float>(columns);
   // Pixels kept between what must show and a lane's top or bottom: the world's panel clips half
   // its padding off its edges.
   const float edge = lane_ground_edge * scale;
+  // One scale for every lane, as the narrowest column's free width allows.
   const FramingScale framed =
-      framing_scale(framing, scene, kind, moving, size, free_width, strip_height, edge, scale, arrows);
+      framing_scale(framing, scene, kind, moving, ImVec2(column_width, size.y),
+                    column_free_width(size.x, free_width, columns, columns - 1), strip_height, edge, scale, arrows);
   const float pixels_per_metre = framed.pixels_per_metre;
   const bool zoomed_in = framed.zoomed_in;
   b2Vec2 centre = framing_centre(kind, zoomed_in, view, scene, bodies, moving);
@@ -248,13 +375,19 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
   std::vector<Camera> made;
   for (std::size_t i = 0; i < strips; ++i) {
     Camera camera;
-    camera.origin = ImVec2(origin.x, origin.y + strip_height * static_cast<float>(i));
-    camera.size = ImVec2(size.x, strip_height);
+    const std::size_t column = i % columns, row = i / columns;
+    // A last row with fewer lanes shares the whole width among them (three lanes: two above, one
+    // below as wide as both), rather than leave a cell empty.
+    const std::size_t in_row = std::min(columns, strips - row * columns);
+    const float width = size.x / static_cast<float>(in_row);
+    const float lane_free = column_free_width(size.x, free_width, in_row, column);
+    camera.origin = ImVec2(origin.x + width * static_cast<float>(column), origin.y + strip_height * static_cast<float>(row));
+    camera.size = ImVec2(width, strip_height);
     camera.pixels_per_metre = pixels_per_metre * adjust.zoom;
     // A little below the middle: forces drawn above bodies need more room than the ground.
     // A window the script fixed is centred exactly, so all of it is in view.
     const float down = kind == Kind::window ? 0.5f : strips > 1 ? 0.6f : 0.56f;
-    camera.anchor = ImVec2(origin.x + 0.5f * free_width, camera.origin.y + down * strip_height);
+    camera.anchor = ImVec2(camera.origin.x + 0.5f * lane_free, camera.origin.y + down * strip_height);
 
     camera.centre = centre;
     // Each lane on its own body's height.
@@ -270,16 +403,20 @@ std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const 
       }
       // Once the lanes' bodies have spread wider than the view, one window would lose some of
       // them: each lane then follows its own body (the ground's hatching still shows who moved).
-      if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * free_width) {
+      if ((moving.upperBound.x - moving.lowerBound.x) * camera.pixels_per_metre > 0.9f * lane_free) {
         camera.centre.x = bodies[i]->GetWorldCenter().x;
+      }
+      // Its arrows in the lane, the camera moved up or down as little as shows them.
+      // (The world's panel clips the view's top, and its foot where no legend is under it.)
+      if (arrows.longest > 0.0f) {
+        show_lane_reach(camera, scene, bodies, i, arrows, edge, row == 0 ? edge : 0.0f,
+                        row + 1 == rows && foot_clipped ? edge : 0.0f);
       }
     }
     if (kind == Kind::whole && zoomed_in) keep_within(camera, lesson, moving, free_width);
     // The arrows in the picture, at their drawn length (ArrowRoom): the view moves up or down as
     // little as shows them (a lane, its own body's), and a window the script fixed grew above to
-    // hold them; centred on it, all of it is still in view.
-    // Not yet in lanes: a lane stays on its body's height (and still while it falls to its
-    // floor), and a weight may reach past the lane's foot (friction_models on a projector).
+    // hold them; centred on it, all of it is still in view. (A lane's were shown above.)
     if (arrows.longest > 0.0f && kind != Kind::lanes) {
       Reach reach = moving_reach(scene, arrows, camera.pixels_per_metre);
       if (kind == Kind::window) {

@@ -7,6 +7,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "lessons/runtime/framing.h"
@@ -55,8 +57,30 @@ struct ArrowRoom {
     return std::max(weight * pixels_per_newton, legible);
   }
 };
+// How a lesson's lanes stand in the view: one column of strips, or, where a strip would be too
+// thin for its bodies' arrows, `columns` side by side in `rows`, the lanes in reading order
+// (left to right, then down). Terrain's four strips on a projector were 85 px high, where a
+// normal force and a weight of 61 px each, up from a box's foot and down from its centre, need
+// about 110: its lanes stand two by two there.
+struct LaneGrid {
+  std::size_t columns = 1, rows = 1;
+};
+// The fewest columns whose lanes hold every moving body's arrows (a normal force up from its
+// foot, its weight down from its centre, each as `arrows_at` the lane's height draws them) between
+// the lane's edges; one column where none does, or where the view has no lanes. Decided from
+// the bodies' sizes and weights, not where they are, so the grid stays as the run goes on.
+LaneGrid lane_grid(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 size, float free_width, float scale,
+                   const std::function<ArrowRoom(float lane_height)>& arrows_at);
+// The lane a moving body's forces are drawn in: the one whose own body (`lane_bodies`, the
+// view's, in its order) is nearest its height. Not the nearest camera: a lane's camera moves up
+// or down to show its arrows, and where_methods_fail's lanes, 0.4 m apart on one slope, then
+// drew a block's forces in the lane above.
+std::size_t nearest_lane(const b2Body* body, const std::vector<const b2Body*>& lane_bodies);
+// `lane_columns`: lane_grid's columns. `foot_clipped`: the world's panel ends at the view's foot
+// (no legend under it), and clips its padding's half off it, as off its top.
 std::vector<Camera> framing_cameras(const lessons::WorldFraming& framing, const Scene& scene, ImVec2 origin, ImVec2 size,
-                                    float free_width, float scale, const ViewAdjust& adjust = {}, const ArrowRoom& arrows = {});
+                                    float free_width, float scale, const ViewAdjust& adjust = {}, const ArrowRoom& arrows = {},
+                                    std::size_t lane_columns = 1, bool foot_clipped = true);
 inline constexpr float min_body_pixels = 48.0f;
 
 }  // namespace frictionlab::draw

@@ -109,25 +109,15 @@ FrameLayout FrameLayout::with_column_foot(float foot) const {
   return layout;
 }
 
-float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
-                         bool projector) {
-  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
-  // The run's largest force (run_force_for_scale) is 0.4 of the view's height (of a lane's, with
-  // lanes): as long as the view holds, a weight from the middle of a body down past the floor
-  // and a normal force up from it, so that as few forces as may be fall under the length a back
-  // row reads (legible_arrow_pixels), drawn broken. A quarter of the view, as before, left every
-  // arrow of push under it on a projector (issue 31).
-  const bool lanes = framing.view.kind == lessons::View::Kind::lanes;
-  const float height = layout.world_size.y / (lanes ? static_cast<float>(framing.view.bodies.size()) : 1.0f);
-  return std::clamp(0.4f * height, 30.0f * scale, 150.0f * scale);
-}
-
-float longest_arrow_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
-                           bool projector) {
-  return std::max(scale_force_pixels(lesson, framing, display, scale, projector), legible_arrow_pixels(scale));
-}
-
 namespace {
+
+// The length the arrow of the run's largest force is drawn in a view (a lane) `height` px high.
+// The run's largest force (run_force_for_scale) is 0.4 of the view's height (of a lane's, with
+// lanes): as long as the view holds, a weight from the middle of a body down past the floor
+// and a normal force up from it, so that as few forces as may be fall under the length a back
+// row reads (legible_arrow_pixels), drawn broken. A quarter of the view, as before, left every
+// arrow of push under it on a projector (issue 31).
+float force_pixels_at(float height, float scale) { return std::clamp(0.4f * height, 30.0f * scale, 150.0f * scale); }
 
 // A force's value's box as the placer keeps it clear, px high: a line of the body text and its padding.
 float value_line_pixels(float scale) {
@@ -135,16 +125,51 @@ float value_line_pixels(float scale) {
   return box.w - box.y;
 }
 
+// The arrows as drawn in a view (a lane) `height` px high (ArrowRoom): the run's largest force
+// force_pixels_at long (without a run ahead, the heaviest weight), none shorter than legible.
+ArrowRoom arrow_room_at(const lessons::Lesson& lesson, float height, float scale) {
+  const float longest = force_pixels_at(height, scale);
+  const std::optional<float> force = run_force_for_scale(lesson);
+  const float per_newton = force ? longest / *force : pixels_per_newton(lesson.scene(), longest);
+  return ArrowRoom{std::max(longest, legible_arrow_pixels(scale)), per_newton, legible_arrow_pixels(scale),
+                   value_line_pixels(scale)};
+}
+
+// How the lesson's lanes stand in the world view (lane_grid): one column of strips where they
+// hold their arrows, as in a window or the web page; side by side where a strip would be too
+// thin for them (terrain's four lanes on a projector).
+LaneGrid lanes_grid(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameLayout& layout, float scale) {
+  return lane_grid(framing, lesson.scene(), layout.world_size, layout.world_size.x - layout.inset_size.x, scale,
+                   [&](float height) { return arrow_room_at(lesson, height, scale); });
+}
+
+// The height of one lane (of the view, without lanes), px.
+float lane_height(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameLayout& layout, float scale) {
+  if (framing.view.kind != lessons::View::Kind::lanes) return layout.world_size.y;
+  return layout.world_size.y / static_cast<float>(lanes_grid(lesson, framing, layout, scale).rows);
+}
+
 }  // namespace
+
+float scale_force_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                         bool projector) {
+  const FrameLayout layout = FrameLayout::of(display, scale, ImVec2(0.0f, 0.0f), projector, lesson);
+  return force_pixels_at(lane_height(lesson, framing, layout, scale), scale);
+}
+
+float longest_arrow_pixels(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
+                           bool projector) {
+  return std::max(scale_force_pixels(lesson, framing, display, scale, projector), legible_arrow_pixels(scale));
+}
 
 std::vector<Camera> world_cameras(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display,
                                   float scale, ImVec2 origin, const ViewAdjust& adjust, bool projector) {
   const FrameLayout layout = FrameLayout::of(display, scale, origin, projector, lesson);
+  const LaneGrid grid = lanes_grid(lesson, framing, layout, scale);
   return framing_cameras(framing, lesson.scene(), layout.world_corner, layout.world_size,
                          layout.world_size.x - layout.inset_size.x, scale, adjust,
-                         ArrowRoom{longest_arrow_pixels(lesson, framing, display, scale, projector),
-                                   arrow_scale(lesson, framing, display, scale, projector), legible_arrow_pixels(scale),
-                                   value_line_pixels(scale)});
+                         arrow_room_at(lesson, layout.world_size.y / static_cast<float>(grid.rows), scale), grid.columns,
+                         layout.legend_beside_plots);
 }
 
 Camera world_camera(const lessons::Lesson& lesson, const lessons::WorldFraming& framing, ImVec2 display, float scale,
@@ -536,17 +561,24 @@ ColumnChoice choose_column(const lessons::Lesson& lesson, const FrameStyle& styl
   return choice;
 }
 
-// With lanes, each moving body's forces are drawn in one lane: the one nearest its height.
-std::vector<std::vector<const b2Body*>> bodies_by_lane(const Scene& scene, const std::vector<Camera>& cameras) {
+// With lanes, each moving body's forces are drawn in one lane: the one whose own body is nearest
+// its height (nearest_lane, as the lane's camera made room for its arrows).
+std::vector<std::vector<const b2Body*>> bodies_by_lane(const Scene& scene, const lessons::WorldFraming& framing,
+                                                       const std::vector<Camera>& cameras) {
   std::vector<std::vector<const b2Body*>> lane_bodies(cameras.size());
+  const std::vector<const b2Body*> own = lessons::view_bodies(scene, framing.view);
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody) continue;
-    std::size_t nearest = 0;
-    for (std::size_t lane = 1; lane < cameras.size(); ++lane) {
-      const float y = body->GetWorldCenter().y;
-      if (std::abs(y - cameras[lane].centre.y) < std::abs(y - cameras[nearest].centre.y)) nearest = lane;
+    std::size_t lane = 0;
+    if (own.size() == cameras.size()) {
+      lane = nearest_lane(body, own);
+    } else {
+      for (std::size_t k = 1; k < cameras.size(); ++k) {
+        const float y = body->GetWorldCenter().y;
+        if (std::abs(y - cameras[k].centre.y) < std::abs(y - cameras[lane].centre.y)) lane = k;
+      }
     }
-    lane_bodies[nearest].push_back(body);
+    lane_bodies[lane].push_back(body);
   }
   return lane_bodies;
 }
@@ -611,8 +643,11 @@ void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::W
   }
   if (!name.empty()) {
     draw_label(draw, fonts.small, name_at, colours.text, colours.panel, name.c_str());
-    // Parted from the lane above by a line.
-    if (lane > 0) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
+    // Parted from the lane above by a line, and from the lane to its left where lanes stand
+    // side by side (lane_grid).
+    const Camera& first = cameras.front();
+    if (camera.origin.y > first.origin.y + 0.5f) draw->AddLine(camera.origin, ImVec2(lane_end.x, camera.origin.y), colours.outline, 2.0f * s);
+    if (camera.origin.x > first.origin.x + 0.5f) draw->AddLine(camera.origin, ImVec2(camera.origin.x, lane_end.y), colours.outline, 2.0f * s);
   }
   draw->PopClipRect();
 }
@@ -637,7 +672,7 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
     const std::vector<Camera> cameras =
         world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.projector);
     const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.projector);
-    const std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), cameras);
+    const std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), framing, cameras);
     const b2Body* focus = main_body(lesson.scene());
     const ImVec2 inset_corner = inset_corner_clear_of_the_hand(lesson.scene(), focus, layout, cameras.front(), s);
     const bool inset_shown = layout.inset_size.x > 0.0f;
