@@ -300,7 +300,7 @@ void Classroom::apply_asked_values() {
       parameters_.errors.erase(name);
       mystery_.keep(name, before, *playback_, parameters_);
     } catch (const InvalidInput& error) {
-      parameters_.errors[name] = error.what();
+      parameters_.errors[name] = refusal_in_class_words(playback_->lesson().parameter(name), error.what());
     }
   }
   parameters_.asked.clear();

@@ -21,15 +21,21 @@
 #include "physics/validation.h"
 
 namespace frictionlab::classroom {
-namespace {
 
-// "μs static" for a pair's coefficient, the parameter's own name in words otherwise.
 std::string control_label(const lessons::Parameter& parameter) {
   if (const PairCoefficient* coefficient = parameter.coefficient) {
     return lessons::class_words(coefficient->name) + " " + coefficient->word;
   }
   return lessons::class_words(parameter.name);
 }
+
+std::string refusal_in_class_words(const lessons::Parameter& parameter, const std::string& error) {
+  const std::string script_words = parameter.name + " = ";
+  if (error.rfind(script_words, 0) != 0) return error;
+  return control_label(parameter) + " = " + error.substr(script_words.size());
+}
+
+namespace {
 
 struct Preset {
   std::string label;

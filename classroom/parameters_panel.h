@@ -31,6 +31,14 @@ inline bool unlocked(const std::set<std::string>& lock, const std::string& contr
   return lock.empty() || lock.count(control_name) > 0;
 }
 
+// A control's name as its row says it: "μs static" for a pair's coefficient, the parameter's
+// own name in words otherwise ("push height" for push_height).
+std::string control_label(const lessons::Parameter& parameter);
+
+// What a refused value's message says, with the control named as its row names it: the lesson's
+// "push_height = 5 m is outside…" read to a class whose slider says "push height".
+std::string refusal_in_class_words(const lessons::Parameter& parameter, const std::string& error);
+
 // The lesson as the panel shows it this frame.
 struct ParametersOnShow {
   const lessons::Lesson& lesson;

@@ -62,6 +62,8 @@ TEST(ParametersPanel, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
   EXPECT_EQ(hands.lesson().parameter("mu_k").value, 0.3125);
   EXPECT_NE(hands.classroom().control_error("mu_k").find("outside the allowed range [0, 2]"), std::string::npos)
       << hands.classroom().control_error("mu_k");
+  // Named as its row names it (a teacher's trial read the script's "push_height" there).
+  EXPECT_EQ(hands.classroom().control_error("mu_k").rfind("\u03bck kinetic = 3 ", 0), 0u) << hands.classroom().control_error("mu_k");
 
   // The reset button puts the script's value back, and the message goes with the mistake (it
   // stands over the rows under the box, and moves nothing: StableLayout in test_projector).
