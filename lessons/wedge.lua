@@ -1387,10 +1387,11 @@ predict { "slide at the end", unit = "m",
   question = "After 5 s, how far down the slope is the block from where it started (up: negative)?" }
 
 -- The block's speed in the surface's frame over the step that ends at t, from the slide and the
--- lift recorded at either end of it: in contact the slide's alone, in a flight the lift's too
--- (the models' kinetic energy is ½·m·(slide rate² + height rate²); at a_x 30 m/s², θ0 40°,
+-- lift recorded at either end of it, both always: in a flight the lift's rate is the block's
+-- rise, in contact the drift off the surface that the world's block does make (contact_lost_by).
+-- The models' kinetic energy is ½·m·(slide rate² + height rate²); at a_x 30 m/s², θ0 40°,
 -- ω 0.1977 rad/s the block was in its fourth flight at 5 s, and the slide's speed alone read
--- 194.6 J of the 205.4 J the model's block had).
+-- 194.6 J of the 205.4 J the model's block had.
 local function speed_before(t)
   local back, now_at = value_at("slide", t - h), value_at("slide", t)
   local lift_back, lift_now = value_at("lift", t - h), value_at("lift", t)
