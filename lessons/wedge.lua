@@ -134,6 +134,10 @@ view { follow = block, width = 3.2 }
 -- The models are sampled every world step (every few steps at rates past 6000 Hz, where the
 -- lesson's 5 s would take more than 30 000 samples; a probe then reads the nearest sample).
 local h = step_length()
+-- How late the record may say "slipping" after the demand passed the limit: three and a half
+-- steps (the first slip row says why). The rows that read the world's record for a breakaway
+-- or a stop read it that far either side.
+local record_lag = 3.5 * h
 local spacing = h * math.max(1, math.ceil((duration + 0.1) / (29999 * h)))
 local function model(turning, horizon)
   return theory.wedge { mass = mass, theta0 = param.theta0, omega = omega, a_x = a_x, a_x_omega = a_x_omega,
@@ -694,9 +698,7 @@ function grazes_by(t)
   local function allowed(k, path)
     return demand_uncertainty(k, start_drift((k - 1) * spacing) + 0.002 * path + 3e-3, limit)
   end
-  -- The record says "slipping" up to three and a half steps after the demand passed the limit
-  -- (the first slip row says why): how far past the grazing the world's record is read.
-  local record_lag = 3.5 * h
+  -- (The world's record is read record_lag past the grazing.)
   while not grazing_at and grazing_scanned < math.min(last, #turning.slide - 1) do
     local k = grazing_scanned + 1
     local path = grazing_path + math.abs(turning.slide[k] - turning.slide[k - 1])
@@ -838,7 +840,6 @@ local function slow_breakaway_by(t)
   local _, breakaways = breakaways_shifted(t)  -- first: it may solve further
   if slow_for ~= horizon then slow_for, slow = horizon, {} end
   if slow[t] ~= nil then return slow[t] or nil end
-  local record_lag = 3.5 * h
   local times, slipping = history("time"), history("slipping")
   for _, b in ipairs(breakaways) do
     local to = b.at + b.late + record_lag
@@ -878,7 +879,6 @@ local through_for, through = nil, {}
 local function slid_through_a_stop_by(t)
   if through_for ~= horizon then through_for, through = horizon, {} end
   if through[t] ~= nil then return through[t] or nil end
-  local record_lag = 3.5 * h
   local times, slipping = history("time"), history("slipping")
   for _, event in ipairs(turning.events) do
     if event.kind == "stop" and event.t <= t then
@@ -1092,14 +1092,14 @@ expect { "normal force halfway", unit = "N",
 -- steady 14.19 m/s², 25.8 m/s by the breakaway at 1.82 s, the gap closing at 1.69 N/s: the
 -- world broke away 3.1 ms before the model at 1920 Hz, 1.8 ms allowed without it.)
 local function breakaway_lag(t)
-  if t == 0 then return 3.5 * step_length() end
+  if t == 0 then return record_lag end
   local k = sample(t)
-  if k < 3 then return 3.5 * step_length() + h end
+  if k < 3 then return record_lag + h end
   local limit = math.max(param.mu_s, param.mu_k)
   local function gap(i) return limit * turning.normal[i] - math.abs(turning.friction[i]) end
   local closing = math.abs(gap(k - 2) - gap(k - 1)) / spacing
   local off = limit * late_share(k) + (1 + limit) * impulse_rounding(k)
-  return 3.5 * step_length() + (closing > 0 and off / closing or 0)
+  return record_lag + (closing > 0 and off / closing or 0)
 end
 expect { "first slip", unit = "s",
   predicted = function()
