@@ -668,7 +668,8 @@ end
 -- (0.1 kg shaken at 2.37 m/s² at 10 rad/s on a plank swinging 6.1° at 0.21 rad/s: the model's
 -- demand passes μs·N by 1.3e-4 N for a few milliseconds at 3.139 s and it breaks away; at
 -- 240 Hz the world's held, and broke away a shake later, at 3.75 s; at 480 Hz it broke away
--- with the model. This term there: 1.6e-4 N at 240 Hz, 4e-5 at 480.)
+-- with the model. This term there: 8.7e-5 N at 240 Hz, two thirds of the excess; the rest of
+-- that setting is held_through's, below.)
 local function peak_between_steps(bending)
   local step = substep_length() / spacing  -- the world's step in samples
   return math.abs(bending) * (1 / 8 + 1 / 12) * step * step
@@ -677,7 +678,7 @@ end
 -- listener's hold band, may be held through: the listener keeps a stuck contact whose excess
 -- looks like the solver's leftover, within the band, and keeps it while the excess dies away
 -- from step to step, as a brief peak's does. So the world may hold where the model broke away
--- (the shaken block above: 1.3e-4 N past μs·N, 0.1 % of it, for 1.6 steps at 240 Hz).
+-- (the shaken block above: 1.3e-4 N past μs·N, 0.04 % of it, for 1.6 steps at 240 Hz).
 local function held_through(least, bending, limit_force)
   if least >= 0 or bending <= 0 or -least > hold_band * limit_force then return false end
   local over_for = 2 * math.sqrt(-2 * least / bending) * spacing  -- s, the margin under 0
