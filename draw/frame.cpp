@@ -569,15 +569,8 @@ std::vector<std::vector<const b2Body*>> bodies_by_lane(const Scene& scene, const
   const std::vector<const b2Body*> own = lessons::view_bodies(scene, framing.view);
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody) continue;
-    std::size_t lane = 0;
-    if (own.size() == cameras.size()) {
-      lane = nearest_lane(body, own);
-    } else {
-      for (std::size_t k = 1; k < cameras.size(); ++k) {
-        const float y = body->GetWorldCenter().y;
-        if (std::abs(y - cameras[k].centre.y) < std::abs(y - cameras[lane].centre.y)) lane = k;
-      }
-    }
+    // (A view without lanes has one camera, and every body is drawn in it.)
+    const std::size_t lane = own.size() == cameras.size() ? nearest_lane(body, own) : 0;
     lane_bodies[lane].push_back(body);
   }
   return lane_bodies;
