@@ -938,13 +938,14 @@ local function stepping_gap(t)
 end
 
 -- How far the landings before t put the world's slide off the model's, m: each one's change of
--- the model's sliding speed (from the sample before it to the one after) times a step.
+-- the model's sliding speed (from the sample before it to the one after) times a world step (the
+-- world meets the surface within its own step, a sub-step under --substeps, not the frame's).
 local function landings_shifted(t)
   local total = 0
   for _, event in ipairs(turning.events) do
     local j = floor(event.t / spacing) + 1  -- the last sample at or before it
     if event.kind == "landing" and event.t <= t and j + 1 <= #turning.speed then
-      total = total + math.abs(turning.speed[j + 1] - turning.speed[j]) * step_length()
+      total = total + math.abs(turning.speed[j + 1] - turning.speed[j]) * substep_length()
     end
   end
   return total
@@ -964,7 +965,7 @@ local function landings_speed_shifted(t)
     local j = floor(event.t / spacing) + 1  -- the last sample at or before it
     if event.kind == "landing" and event.t <= t and j >= 3 then
       local away = (turning.height[j] - 2 * turning.height[j - 1] + turning.height[j - 2]) / (spacing * spacing)
-      total = total + param.mu_k * math.abs(away) * step_length()
+      total = total + param.mu_k * math.abs(away) * substep_length()
     end
   end
   return total
