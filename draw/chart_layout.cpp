@@ -57,11 +57,11 @@ bool line_meets(const std::vector<ImVec2>& points, const ImVec4& box, float reac
 // Each level's text by its line, inside the data area, where it meets no line of the data (the
 // series as drawn, the rest of the run as planned: Chart::planned_points), no theory curve and no
 // text placed before it: at the line's right end, then its left end, then anywhere along it,
-// above the line before under it. Where no such place is, where it crosses the fewest pieces of
-// the data's lines, drawn under the series (ChartLayout::Level::beneath), where it meets no
-// text placed before it (else none: the line alone). Always level_clearance() off every level's
-// line, its own too, and off the axes' texts. None for a level off
-// the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
+// above the line before under it; then on its line, which its box breaks. Where no such place
+// is, where it crosses the fewest pieces of the data's lines, drawn under the series
+// (ChartLayout::Level::beneath), where it meets no text placed before it (else none: the line
+// alone). Always level_clearance() off every other level's line and off the axes' texts, and off
+// its own unless written on it. None for a level off the axis. (At the right end over the data, push's −μk·N text hid the present's dot and
 // spring_pull's the last second and a half of its record: a teacher's trial.)
 // How far a level's text stands past its line's end in the column beside the data: the short
 // line that leads to it.
@@ -348,6 +348,28 @@ void place_level_texts(const Chart& chart, const Axis& x_axis, const Axis& y_axi
         }
       }
       if (found) break;
+    }
+    if (found) {
+      layout.levels.push_back({i, level.text, *found, y, false});
+      continue;
+    }
+    // No room above or below its line (levels closer than a text and its clearances, or one near
+    // the axis' end: spring_pull's −μs·N at 1280 × 720, 22 px under −μk·N and 14 over the axis):
+    // on its own line, which its box breaks, as a map writes a contour's height, clear of the
+    // other levels' lines, the data and the texts. (Beside its line with no room it was left out.)
+    std::vector<float> other_lines;
+    for (const float line : level_lines) {
+      if (std::abs(line - y) > 0.01f) other_lines.push_back(line);
+    }
+    const LevelTextRoom on_line{layout, planned, room.series_reach, room.theory_reach, other_lines, line_half, clearance};
+    const float on_top = y - 0.5f * high;
+    if (on_top >= layout.high_right.y && on_top + high <= layout.low_left.y) {
+      for (const float left : lefts) {
+        if (on_line.clear(box_at(left, on_top))) {
+          found = ImVec4(left, on_top, left + w, on_top + high);
+          break;
+        }
+      }
     }
     if (found) {
       layout.levels.push_back({i, level.text, *found, y, false});

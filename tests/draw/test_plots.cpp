@@ -1033,6 +1033,43 @@ TEST(PlotLevels, InTheWindowATextTheDataCrossesIsDrawnUnderIt) {
   EXPECT_GT(beneath_seen, 0) << "every level's text found a place off the data: the test checks no text drawn beneath";
 }
 
+// Issue 31, a teacher's trial: spring_pull's "Friction against the pull" in the 1280 × 720
+// window left its −μs·N line with no text, 0.98 N under −μk·N's with 0.59 N to the axis: no
+// room above or below it for a text kept clear of both lines. A text with no room beside its line
+// is written on it, the line broken by its box: then no level is left unnamed, and each text
+// stays clear of every other level's line.
+TEST(PlotLevels, ALevelWithNoRoomBesideItsLineIsNamedOnIt) {
+  FontsForLayout& fonts = measuring();
+  const Fonts& f = fonts.fonts;
+  // The window's plot panel under its title: about 405 × 220 px at 1280 × 720 (the picture's
+  // panels, taller, had room); every height around it.
+  LessonAt at("spring_pull", {}, 0.0);
+  const double end = at.lesson->duration();
+  int on_its_line = 0;
+  for (int moment = 1; moment <= 12; ++moment) {
+    const ImVec2 window_plot(405.0f, 190.0f + 6.0f * static_cast<float>(moment));
+    at.step_to(end * moment / 12.0);
+    const Chart chart = plot_chart(*at.lesson, 1, time_axis_span(end, at.scene().time()), theme(ThemeName::light), true);
+    ImDrawList* draw = fresh_draw_list(fonts);
+    const ChartLayout layout = draw_chart(draw, corner, window_plot, chart, theme(ThemeName::light), f);
+    ImGui::EndFrame();
+    const std::string where = "spring_pull at " + std::to_string(at.scene().time()) + " s, " +
+                              std::to_string(static_cast<int>(window_plot.y)) + " px high";
+    ASSERT_EQ(layout.levels.size(), 2u) << where;
+    for (const ChartLayout::Level& level : layout.levels) {
+      EXPECT_FALSE(level.text.empty()) << where << ": level " << chart.levels[level.index].text << " has no text";
+      if (level.text.empty()) continue;
+      on_its_line += level.at.y < level.y && level.at.w > level.y;
+      for (const ChartLayout::Level& other : layout.levels) {
+        if (other.index == level.index) continue;
+        EXPECT_TRUE(level.at.w + 1.0f < other.y || level.at.y - 1.0f > other.y)
+            << where << ": \"" << level.text << "\" lies on the line of " << chart.levels[other.index].text;
+      }
+    }
+  }
+  EXPECT_GT(on_its_line, 0) << "every text found room beside its line: the test checks no text on one";
+}
+
 // Issue 31, a teacher's trial: push's dashed theory line "sticking: f = −F" lay under the
 // measured line it agrees with, and the dotted "sliding: f = −μk·N" under the measured slide on
 // the −μk·N level: neither was seen. Drawn over the data, each dash on a dash of the panel's
