@@ -421,8 +421,14 @@ std::vector<TimedCoefficient> read_coefficients(lua_State* state, LessonBuild& b
       auto steps = read_schedule(state, -1, "pair " + label + ": " + key, coefficient.lesson_largest);
       lua_pop(state, 1);
       const auto at = [steps = std::move(steps)](double t) {
+        // The last entry whose time has come. A step starting at an entry's time, up to the
+        // rounding of the step's start (frame · step, in doubles), counts as at it: 7.4 s at
+        // 240 Hz starts step 1776, at 1776/240 = 7.3999999999999995 s, where the entry waited a
+        // step more and lubricated's oil stayed a step past the instant its theory was given
+        // (the block stopped 4.9 ms later, 3.9 mm further).
+        const double come = t + 1e-12 * std::max(1.0, std::abs(t));
         std::size_t k = steps.size() - 1;
-        while (k > 0 && steps[k][0] > t) --k;  // the last entry whose time has come
+        while (k > 0 && steps[k][0] > come) --k;
         return std::array<double, 2>{steps[k][1], 0.0};
       };
       timed.push_back({&coefficient, at, caller(state)});
