@@ -182,22 +182,27 @@ local function allowed()
   }
 end
 
+-- When a block sliding at `from` stops on a surface of kinetic coefficient `mu` that slows it
+-- (nil if it does not).
+local function stops_on(from, mu)
+  local state = slide(from)
+  local a = (param.pull - mu * mass * g) / mass
+  if state.speed > 0 and a < 0 then return from + state.speed / -a end
+end
 -- Each stretch's start and end: dry again ends where the block stops, if it does (read over the
 -- whole run, the middle of a slide that stops a second before the end is the stop itself:
 -- 2.16 m/s² read where theory's 2.26 held until then).
 local function stops_dry_again()
-  local after = slide(oil_gone)
-  local a = (param.pull - param.mu_k * mass * g) / mass
-  if after.speed > 0 and a < 0 then return math.min(oil_gone + after.speed / -a, run_length()) end
+  local stop = stops_on(oil_gone, param.mu_k)
+  if stop then return math.min(stop, run_length()) end
 end
 -- And the oiled stretch where the block stops on the oil, slowed by an oil that grips more than
 -- the pull (an oil of mu 1.144 under 4.23 N, the block at 7.2 m/s as the oil came at 7.93 s:
 -- stopped at 8.96 s, 0.006 s before the whole stretch's middle, where the step read held the
 -- stop and gave −2.03 m/s² against −6.99).
 local function stops_oiled()
-  local before = slide(oil_from)
-  local a = (param.pull - param.lubricated_mu * mass * g) / mass
-  if before.speed > 0 and a < 0 and oil_from + before.speed / -a < oil_gone then return oil_from + before.speed / -a end
+  local stop = stops_on(oil_from, param.lubricated_mu)
+  if stop and stop < oil_gone then return stop end
 end
 local stretches = {
   { "dry, before the oil", function() return 0, oil_from end },

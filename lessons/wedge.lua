@@ -1138,7 +1138,8 @@ expect { "first slip", unit = "s",
   measured = function()
     local t = (turning.contact[1] == "slipping" and 0) or first_event(turning, "breakaway")
     if no_model(t or duration) then return no_model(t or duration) end
-    if too_near_the_end(t, breakaway_lag(t or 0)) then return too_near_the_end(t, breakaway_lag(t or 0)) end
+    local too_near = too_near_the_end(t, breakaway_lag(t or 0))
+    if too_near then return too_near end
     local seen = first_recorded("slipping", function(v) return v == 1 end)
     if seen and not t then return "slips" end  -- where the model says it never does
     if seen or time() >= duration then return seen or "never" end
