@@ -17,6 +17,22 @@ namespace {
 // Room for a number and its sign, typed: a box wider than that only pushes the unit away.
 constexpr int answer_length = 16;
 
+// Whether a row's word offers the class's choice: the word itself, or one of the words a row
+// near the line between two of them gives ("smaller or the same": push's friction within the
+// measurement's reach of its breakaway, where either may come).
+bool offered_by(const std::string& truth, const std::string& choice) {
+  if (truth == choice) return true;
+  const std::string joint = " or ";
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t at = truth.find(joint, from);
+    const std::string part = truth.substr(from, at == std::string::npos ? std::string::npos : at - from);
+    if (part == choice) return true;
+    if (at == std::string::npos) return false;
+    from = at + joint.size();
+  }
+}
+
 // The row the prediction is about, failed or not; nullptr when the lesson has none of that name.
 const lessons::ExpectationResult* named_row(const std::vector<lessons::ExpectationResult>& rows,
                                             const lessons::Prediction& prediction) {
@@ -365,7 +381,7 @@ Closeness closeness(const lessons::Prediction& prediction, const std::string& an
   const char* against = measured ? "the measurement" : row.hand_pulled ? "the theory (the hand pulled this run)" : "the theory";
   if (prediction.is_choice() || !row.numeric) {
     const std::string truth = measured ? row.measured_text : row.predicted_text;
-    if (prediction.is_choice() && answer == truth) return {"class: \u2713 right", true};
+    if (prediction.is_choice() && offered_by(truth, answer)) return {"class: \u2713 right", true};
     return {std::string(measured ? "class: \u2717 the run says " : "class: \u2717 the theory says ") + truth, false};
   }
   std::string why;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "classroom/prediction_panel.h"
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
 
@@ -62,6 +63,28 @@ AnswersShown answers_shown(ClassroomHands& hands, const std::string& question_st
 
 // F5 after the student lengthened a question: planned for the question as it now reads. (Before,
 // the column kept the height planned for the short question, and the answers scrolled.)
+// Near the line between two words a row says both (push's "smaller or the same": the world's
+// breakaway and friction within their tolerances of a difference that either word may take): a
+// class that chose either is right; the third word is not, and a plain word takes itself alone.
+TEST(PredictionPanel, AChoiceOneOfTheTwoWordsOfARowNearTheirLineIsRight) {
+  lessons::Prediction sliding{"sliding vs breakaway", "Smaller, the same or larger?", "", {"smaller", "the same", "larger"},
+                              "push.lua:1"};
+  lessons::ExpectationResult row;
+  row.name = "sliding vs breakaway";
+  row.numeric = false;
+  row.predicted_text = "smaller or the same";
+  row.measured_text = "smaller or the same";
+  row.measured_yet = true;
+  EXPECT_TRUE(closeness(sliding, "smaller", row).close);
+  EXPECT_TRUE(closeness(sliding, "the same", row).close);
+  const Closeness larger = closeness(sliding, "larger", row);
+  EXPECT_FALSE(larger.close);
+  EXPECT_NE(larger.words.find("the run says smaller or the same"), std::string::npos) << larger.words;
+  row.measured_text = "the same";
+  EXPECT_TRUE(closeness(sliding, "the same", row).close);
+  EXPECT_FALSE(closeness(sliding, "smaller", row).close);
+}
+
 TEST(PredictionPanel, TheAnswersArePlannedAnewWhenTheScriptIsReloaded) {
   const lessons::ScriptFile script(push_script(false));
   ClassroomOptions options;  // predictions asked, as by default
