@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "draw/close_up.h"
 #include "draw/free_body.h"
 #include "draw/legend.h"
 #include "draw/overlays.h"
@@ -669,12 +670,29 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
     const b2Body* focus = main_body(lesson.scene());
     const ImVec2 inset_corner = inset_corner_clear_of_the_hand(lesson.scene(), focus, layout, cameras.front(), s);
     const bool inset_shown = layout.inset_size.x > 0.0f;
+    // Where the free-body inset cannot be read (a projector), a close-up of a body the lesson's
+    // fixed window draws too small, over the same world: the lanes' labels keep off either.
+    const std::optional<CloseUp> close_up =
+        inset_shown || cameras.size() != 1
+            ? std::nullopt
+            : close_up_place(lesson, focus, cameras.front(), layout.world_corner, layout.world_size, s,
+                             fonts.small->FontSize);
     const ImVec4 inset = inset_shown ? ImVec4(inset_corner.x, inset_corner.y, inset_corner.x + layout.inset_size.x,
                                               inset_corner.y + layout.inset_size.y)
-                                     : ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
+                                     : close_up ? close_up->place : ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
     for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
       draw_lane(draw, lesson, framing, style, cameras, lane, cameras.size() > 1 ? &lane_bodies[lane] : nullptr, inset,
                 newtons_to_pixels);
+    }
+    if (close_up) {
+      LabelPlacer labels(ImVec2(close_up->place.x, close_up->place.y),
+                         ImVec2(close_up->place.z - close_up->place.x, close_up->place.w - close_up->place.y));
+      draw_close_up(draw, lesson, focus, *close_up, cameras.front(), theme(style.theme), fonts, labels);
+      if (style.record != nullptr) {
+        style.record->close_ups.push_back({close_up_camera(*close_up, focus, cameras.front()), labels.labels(),
+                                           labels.segments(), labels.marks(), close_up->place, labels.texts(),
+                                           labels.bodies(), labels.force_labels()});
+      }
     }
     legend = LegendScale{cameras.front(), newtons_to_pixels};
     if (!legend_apart) {

@@ -74,6 +74,9 @@ struct FrameRecord {
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
+  // The main body's close-up over the world (draw/close_up.h), where one is drawn: its camera,
+  // its place as `shown`, and what it placed.
+  std::vector<Lane> close_ups;
   FreeBodyRecord free_body;
   // Every piece of text the panels drew, with what of it could show.
   std::vector<ShownText> texts;

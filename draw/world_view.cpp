@@ -808,10 +808,14 @@ void draw_thin_bodies_over_their_forces(ImDrawList* draw, const Scene& scene, co
 
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
-                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels) {
+                const std::vector<const b2Body*>* labelled, const std::function<void()>& fixed_labels, WorldArrows drawn_arrows) {
   const Scene& scene = lesson.scene();
   const std::vector<PlaceLabel> place_labels = draw_scenery(draw, lesson, camera, theme, fonts, labels);
   ForcesInView shown = forces_in_view(scene, camera, fonts, newtons_to_pixels, labelled);
+  if (drawn_arrows == WorldArrows::none) {
+    shown.arrows.clear();
+    shown.torques.clear();
+  }
   std::vector<ScreenArrow>& arrows = shown.arrows;
   const float mark_radius = contact_dot_radius * fonts.scale;
   start_frictions_past_their_dots(arrows, shown.marks, camera, mark_radius);

@@ -22,9 +22,13 @@ namespace frictionlab::draw {
 // not repeat its forces there. `fixed_labels`, when given, is called once every arrow, mark,
 // spring and body is known to `labels` and before any label is placed: labels that cannot move
 // (a distance mark's number) take their places then.
+// `arrows`: none draws the contact marks and words alone (a close-up, whose forces the world's
+// view already shows at the legend's scale).
+enum class WorldArrows { drawn, none };
 void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& camera, const Theme& theme,
                 const Fonts& fonts, float newtons_to_pixels, LabelPlacer& labels,
-                const std::vector<const b2Body*>* labelled = nullptr, const std::function<void()>& fixed_labels = {});
+                const std::vector<const b2Body*>* labelled = nullptr, const std::function<void()>& fixed_labels = {},
+                WorldArrows arrows = WorldArrows::drawn);
 
 // What placing the forces' values took in draw_world on this thread, summed until the caller
 // sets it back to {}, for the benchmark only (nothing drawn depends on it), in wall-clock

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "draw/close_up.h"
 #include "tests/layout_checks.h"
 
 namespace frictionlab::classroom {
@@ -1407,6 +1408,33 @@ TEST(ForceArrows, AWeightStartsWithinItsBody) {
   EXPECT_GE(checked, 50);
 }
 
+// How many of 21 × 21 points inside a box-shaped body, seen through `camera`, show `fill` (to 8
+// in each channel), and of how many: a margin of its outline's width (1.5 px times the text
+// scale) and a pixel of smoothing in from its edges, and none within `dot_radius` of `dot`.
+std::pair<int, int> fill_seen(const draw::Image& picture, const draw::Camera& camera, const b2Body* body, ImU32 fill,
+                              float text_scale, std::optional<ImVec2> dot = std::nullopt, float dot_radius = 0.0f) {
+  const auto& shape = *static_cast<const b2PolygonShape*>(body->GetFixtureList()->GetShape());
+  b2Vec2 low = shape.m_vertices[0], high = low;
+  for (int k = 1; k < shape.m_count; ++k) low = b2Min(low, shape.m_vertices[k]), high = b2Max(high, shape.m_vertices[k]);
+  const float margin = (1.5f * text_scale + 1.0f) / camera.pixels_per_metre;
+  const int fill_rgb[3] = {static_cast<int>(fill >> IM_COL32_R_SHIFT & 0xFF), static_cast<int>(fill >> IM_COL32_G_SHIFT & 0xFF),
+                           static_cast<int>(fill >> IM_COL32_B_SHIFT & 0xFF)};
+  int sampled = 0, seen = 0;
+  constexpr int steps = 20;
+  for (int i = 0; i <= steps; ++i) {
+    for (int j = 0; j <= steps; ++j) {
+      const b2Vec2 local(low.x + margin + (high.x - low.x - 2.0f * margin) * static_cast<float>(i) / steps,
+                         low.y + margin + (high.y - low.y - 2.0f * margin) * static_cast<float>(j) / steps);
+      const ImVec2 at = camera.to_screen(body->GetWorldPoint(local));
+      if (dot && std::hypot(at.x - dot->x, at.y - dot->y) <= dot_radius) continue;
+      const std::uint8_t* pixel = picture.pixel(static_cast<int>(at.x), static_cast<int>(at.y));
+      ++sampled;
+      seen += std::max({std::abs(pixel[0] - fill_rgb[0]), std::abs(pixel[1] - fill_rgb[1]), std::abs(pixel[2] - fill_rgb[2])}) <= 8;
+    }
+  }
+  return {seen, sampled};
+}
+
 // Issue 31: incline's block on a projector at its defaults (0.4 by 0.2 m, 23 by 12 px in the
 // window's world) lay whole under its contact's 24 px dot, the normal force and weight that start
 // on it and the friction's plate: the class saw arrows and no block (2 % of its inside in its
@@ -1440,26 +1468,8 @@ TEST(WorldView, InclinesSmallBlockIsSeenOverItsDotAndArrowsOnAProjector) {
       ASSERT_NE(block, nullptr);
       const b2Fixture* fixture = block->GetFixtureList();
       ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon) << where;
-      const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
-      b2Vec2 low = shape.m_vertices[0], high = low;
-      for (int k = 1; k < shape.m_count; ++k) low = b2Min(low, shape.m_vertices[k]), high = b2Max(high, shape.m_vertices[k]);
-      // The outline (1.5 px times the text scale) and a pixel of smoothing, in metres.
-      const float margin = (1.5f * host.fonts().scale + 1.0f) / camera.pixels_per_metre;
       const ImU32 fill = draw::fixture_colour(lesson.scene(), fixture, draw::theme(name));
-      const int fill_rgb[3] = {static_cast<int>(fill >> IM_COL32_R_SHIFT & 0xFF), static_cast<int>(fill >> IM_COL32_G_SHIFT & 0xFF),
-                               static_cast<int>(fill >> IM_COL32_B_SHIFT & 0xFF)};
-      int sampled = 0, seen = 0;
-      constexpr int steps = 20;
-      for (int i = 0; i <= steps; ++i) {
-        for (int j = 0; j <= steps; ++j) {
-          const b2Vec2 local(low.x + margin + (high.x - low.x - 2.0f * margin) * static_cast<float>(i) / steps,
-                             low.y + margin + (high.y - low.y - 2.0f * margin) * static_cast<float>(j) / steps);
-          const ImVec2 at = camera.to_screen(block->GetWorldPoint(local));
-          const std::uint8_t* pixel = picture.pixel(static_cast<int>(at.x), static_cast<int>(at.y));
-          ++sampled;
-          seen += std::max({std::abs(pixel[0] - fill_rgb[0]), std::abs(pixel[1] - fill_rgb[1]), std::abs(pixel[2] - fill_rgb[2])}) <= 8;
-        }
-      }
+      const auto [seen, sampled] = fill_seen(picture, camera, block, fill, host.fonts().scale);
       EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the block show its fill";
       // And its contact's dot, over the weight's shaft and the friction's plate that hid it in the
       // dark theme: the half under the surface shows its state's colour half a radius into the slope.
@@ -1477,6 +1487,85 @@ TEST(WorldView, InclinesSmallBlockIsSeenOverItsDotAndArrowsOnAProjector) {
           << where << ": the contact's dot does not show at (" << dot.x << ", " << dot.y << ")";
     }
   }
+}
+
+// Issue 31: incline's window holds the whole slope, foot and angle mark, and its 0.4 m block is
+// 23 px long on a projector, too small to see from the back row. Where the free-body inset
+// cannot be read (a projector), a close-up of the block stands over a corner of the world that
+// the slope leaves clear: at 2°, 35° and 60°, both themes, at 0.5 s, the block in it is at least
+// min_body_pixels long (at the text scale), as every framed view keeps it, shows its fill at 90 %
+// of the points sampled inside it off its contact's dot, lies whole inside the close-up, and the
+// close-up covers none of the slope; no label
+// of the world's lies on it. In the 1280 × 720 window the free-body inset shows the block, and
+// no close-up is drawn.
+TEST(WorldView, InclinesBlockHasAReadableCloseUpOnAProjector) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    for (const char* angle : {"2", "35", "60"}) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+      options.window.theme = name;
+      options.overrides["angle"] = angle;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, 0.5);
+      gl.make_current();
+      gl.bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      const draw::Image picture = gl.read_pixels();
+      const std::string where = std::string("incline at ") + angle + "°, " + (name == draw::ThemeName::dark ? "dark" : "light");
+      const lessons::Lesson& lesson = window.playback().lesson();
+      const b2Body* block = lesson.scene().body("block");
+      ASSERT_NE(block, nullptr);
+      ASSERT_EQ(record.lanes.size(), 1u) << where;
+      const float scale = host.fonts().scale;
+      const float in_the_world = draw::own_length(block) * record.lanes.front().camera.pixels_per_metre;
+      if (in_the_world >= draw::min_body_pixels * scale) {
+        // A gentle slope's window is as wide as it is long: the block is readable there.
+        EXPECT_TRUE(record.close_ups.empty()) << where << ": a close-up of a block " << in_the_world << " px long";
+        continue;
+      }
+      ASSERT_EQ(record.close_ups.size(), 1u) << where << ": the block is " << in_the_world << " px long and has no close-up";
+      const draw::FrameRecord::Lane& close_up = record.close_ups.front();
+      const ImVec4 place = close_up.shown;
+      EXPECT_GE(draw::own_length(block) * close_up.camera.pixels_per_metre, draw::min_body_pixels * scale) << where;
+      const std::vector<ContactMark> marks = contact_marks(lesson.scene());
+      ASSERT_EQ(marks.size(), 1u) << where;
+      // The dot's outline and a pixel of smoothing past its radius.
+      const float dot_radius = draw::contact_dot_radius * scale + 1.5f + 1.0f;
+      const auto [seen, sampled] =
+          fill_seen(picture, close_up.camera, block, draw::fixture_colour(lesson.scene(), block->GetFixtureList(), draw::theme(name)),
+                    scale, close_up.camera.to_screen(marks[0].point), dot_radius);
+      EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the close-up's block show its fill";
+      const b2AABB box = lessons::body_box(block);
+      for (const b2Vec2 corner : {box.lowerBound, box.upperBound}) {
+        const ImVec2 at = close_up.camera.to_screen(corner);
+        EXPECT_TRUE(at.x > place.x && at.x < place.z && at.y > place.y && at.y < place.w) << where << ": the block leaves its close-up";
+      }
+      const b2Body* slope = lesson.scene().body("slope");
+      ASSERT_NE(slope, nullptr);
+      const draw::Camera& world = record.lanes.front().camera;
+      for (int i = 0; i <= 12; ++i) {
+        for (int j = 0; j <= 8; ++j) {
+          const ImVec2 at(place.x + (place.z - place.x) * static_cast<float>(i) / 12.0f, place.y + (place.w - place.y) * static_cast<float>(j) / 8.0f);
+          EXPECT_FALSE(slope->GetFixtureList()->TestPoint(world.to_world(at))) << where << ": the close-up covers the slope at (" << at.x << ", " << at.y << ")";
+        }
+      }
+      for (const ImVec4& label : record.lanes.front().labels) {
+        EXPECT_FALSE(label.x < place.z && label.z > place.x && label.y < place.w && label.w > place.y)
+            << where << ": a world's label at (" << label.x << ", " << label.y << ") lies on the close-up";
+      }
+    }
+  }
+  // The window at a screen's size: the free-body inset is there, and no close-up.
+  const ImVec2 screen(1280.0f, 720.0f);
+  ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1280x720", 1280, 720, false});
+  Classroom window(options);
+  draw_window_frame(gl, host, window, screen);
+  const draw::FrameRecord record = recorded_at(gl, host, window, screen, 0.5);
+  EXPECT_TRUE(record.close_ups.empty());
+  EXPECT_GT(record.inset.z, record.inset.x);
 }
 
 // The view does not zoom during a run (a teacher's projector trial, issue 31): incline's window
