@@ -1435,6 +1435,33 @@ std::pair<int, int> fill_seen(const draw::Image& picture, const draw::Camera& ca
   return {seen, sampled};
 }
 
+// incline in the window at 1920 × 1080 in projector mode at each of `angles`, both themes, drawn
+// to `t`: its record and its picture, for `check`.
+void incline_on_a_projector(
+    const std::vector<const char*>& angles, double t,
+    const std::function<void(const std::string& where, draw::ThemeName theme, Classroom& window, const draw::FrameRecord& record,
+                             const draw::Image& picture, const draw::ImGuiHost& host)>& check) {
+  const ImVec2 display(1920.0f, 1080.0f);
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
+  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
+    for (const char* angle : angles) {
+      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
+      options.window.theme = name;
+      options.overrides["angle"] = angle;
+      Classroom window(options);
+      draw_window_frame(gl, host, window, display);
+      const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
+      gl.make_current();
+      gl.bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      const draw::Image picture = gl.read_pixels();
+      check(std::string("incline at ") + angle + "°, " + (name == draw::ThemeName::dark ? "dark" : "light"), name, window, record,
+            picture, host);
+    }
+  }
+}
+
 // Issue 31: incline's block on a projector at its defaults (0.4 by 0.2 m, 23 by 12 px in the
 // window's world) lay whole under its contact's 24 px dot, the normal force and weight that start
 // on it and the friction's plate: the class saw arrows and no block (2 % of its inside in its
@@ -1445,48 +1472,33 @@ std::pair<int, int> fill_seen(const draw::Image& picture, const draw::Camera& ca
 // Its contact's dot is drawn again over the arrows, before the block, so its half in the slope
 // says the contact's state (the dark theme's was hidden whole under the arrows' outlines).
 TEST(WorldView, InclinesSmallBlockIsSeenOverItsDotAndArrowsOnAProjector) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
-  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
-    for (const char* angle : {"25", "35"}) {
-      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
-      options.window.theme = name;
-      options.overrides["angle"] = angle;
-      Classroom window(options);
-      draw_window_frame(gl, host, window, display);
-      const draw::FrameRecord record = recorded_at(gl, host, window, display, 1.0);
-      gl.make_current();
-      gl.bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      const draw::Image picture = gl.read_pixels();
-      const std::string where = std::string("incline at ") + angle + "°, " + (name == draw::ThemeName::dark ? "dark" : "light");
-      ASSERT_EQ(record.lanes.size(), 1u) << where;
-      const draw::Camera& camera = record.lanes.front().camera;
-      const lessons::Lesson& lesson = window.playback().lesson();
-      const b2Body* block = lesson.scene().body("block");
-      ASSERT_NE(block, nullptr);
-      const b2Fixture* fixture = block->GetFixtureList();
-      ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon) << where;
-      const ImU32 fill = draw::fixture_colour(lesson.scene(), fixture, draw::theme(name));
-      const auto [seen, sampled] = fill_seen(picture, camera, block, fill, host.fonts().scale);
-      EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the block show its fill";
-      // And its contact's dot, over the weight's shaft and the friction's plate that hid it in the
-      // dark theme: the half under the surface shows its state's colour half a radius into the slope.
-      const std::vector<ContactMark> marks = contact_marks(lesson.scene());
-      ASSERT_EQ(marks.size(), 1u) << where;
-      const b2Vec2 into = -upper_side(marks[0]) * b2Cross(1.0f, marks[0].tangent);
-      const float half_radius = 0.5f * draw::contact_dot_radius * host.fonts().scale;
-      const ImVec2 dot = add(camera.to_screen(marks[0].point), ImVec2(into.x * half_radius, -into.y * half_radius));
-      const draw::Theme& colours = draw::theme(name);
-      const ImU32 state = marks[0].state == ContactState::slipping ? colours.slipping : colours.sticking;
-      const std::uint8_t* pixel = picture.pixel(static_cast<int>(std::lround(dot.x)), static_cast<int>(std::lround(dot.y)));
-      EXPECT_LE(std::max({std::abs(pixel[0] - static_cast<int>(state >> IM_COL32_R_SHIFT & 0xFF)),
-                          std::abs(pixel[1] - static_cast<int>(state >> IM_COL32_G_SHIFT & 0xFF)),
-                          std::abs(pixel[2] - static_cast<int>(state >> IM_COL32_B_SHIFT & 0xFF))}), 8)
-          << where << ": the contact's dot does not show at (" << dot.x << ", " << dot.y << ")";
-    }
-  }
+  incline_on_a_projector({"25", "35"}, 1.0, [](const std::string& where, draw::ThemeName name, Classroom& window,
+                                               const draw::FrameRecord& record, const draw::Image& picture, const draw::ImGuiHost& host) {
+    ASSERT_EQ(record.lanes.size(), 1u) << where;
+    const draw::Camera& camera = record.lanes.front().camera;
+    const lessons::Lesson& lesson = window.playback().lesson();
+    const b2Body* block = lesson.scene().body("block");
+    ASSERT_NE(block, nullptr);
+    const b2Fixture* fixture = block->GetFixtureList();
+    ASSERT_EQ(fixture->GetType(), b2Shape::e_polygon) << where;
+    const ImU32 fill = draw::fixture_colour(lesson.scene(), fixture, draw::theme(name));
+    const auto [seen, sampled] = fill_seen(picture, camera, block, fill, host.fonts().scale);
+    EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the block show its fill";
+    // And its contact's dot, over the weight's shaft and the friction's plate that hid it in the
+    // dark theme: the half under the surface shows its state's colour half a radius into the slope.
+    const std::vector<ContactMark> marks = contact_marks(lesson.scene());
+    ASSERT_EQ(marks.size(), 1u) << where;
+    const b2Vec2 into = -upper_side(marks[0]) * b2Cross(1.0f, marks[0].tangent);
+    const float half_radius = 0.5f * draw::contact_dot_radius * host.fonts().scale;
+    const ImVec2 dot = add(camera.to_screen(marks[0].point), ImVec2(into.x * half_radius, -into.y * half_radius));
+    const draw::Theme& colours = draw::theme(name);
+    const ImU32 state = marks[0].state == ContactState::slipping ? colours.slipping : colours.sticking;
+    const std::uint8_t* pixel = picture.pixel(static_cast<int>(std::lround(dot.x)), static_cast<int>(std::lround(dot.y)));
+    EXPECT_LE(std::max({std::abs(pixel[0] - static_cast<int>(state >> IM_COL32_R_SHIFT & 0xFF)),
+                        std::abs(pixel[1] - static_cast<int>(state >> IM_COL32_G_SHIFT & 0xFF)),
+                        std::abs(pixel[2] - static_cast<int>(state >> IM_COL32_B_SHIFT & 0xFF))}), 8)
+        << where << ": the contact's dot does not show at (" << dot.x << ", " << dot.y << ")";
+  });
 }
 
 // Issue 31: incline's window holds the whole slope, foot and angle mark, and its 0.4 m block is
@@ -1495,69 +1507,56 @@ TEST(WorldView, InclinesSmallBlockIsSeenOverItsDotAndArrowsOnAProjector) {
 // the slope leaves clear: at 2°, 35° and 60°, both themes, at 0.5 s, the block in it is at least
 // min_body_pixels long (at the text scale), as every framed view keeps it, shows its fill at 90 %
 // of the points sampled inside it off its contact's dot, lies whole inside the close-up, and the
-// close-up covers none of the slope; no label
-// of the world's lies on it. In the 1280 × 720 window the free-body inset shows the block, and
+// close-up covers none of the slope; no label of the world's lies on it. In the 1280 × 720 window the free-body inset shows the block, and
 // no close-up is drawn.
 TEST(WorldView, InclinesBlockHasAReadableCloseUpOnAProjector) {
-  const ImVec2 display(1920.0f, 1080.0f);
-  draw::HeadlessContext gl;
-  draw::ImGuiHost host(nullptr);
-  for (const draw::ThemeName name : {draw::ThemeName::light, draw::ThemeName::dark}) {
-    for (const char* angle : {"2", "35", "60"}) {
-      ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1920x1080", 1920, 1080, true});
-      options.window.theme = name;
-      options.overrides["angle"] = angle;
-      Classroom window(options);
-      draw_window_frame(gl, host, window, display);
-      const draw::FrameRecord record = recorded_at(gl, host, window, display, 0.5);
-      gl.make_current();
-      gl.bind_framebuffer(static_cast<int>(display.x), static_cast<int>(display.y));
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      const draw::Image picture = gl.read_pixels();
-      const std::string where = std::string("incline at ") + angle + "°, " + (name == draw::ThemeName::dark ? "dark" : "light");
-      const lessons::Lesson& lesson = window.playback().lesson();
-      const b2Body* block = lesson.scene().body("block");
-      ASSERT_NE(block, nullptr);
-      ASSERT_EQ(record.lanes.size(), 1u) << where;
-      const float scale = host.fonts().scale;
-      const float in_the_world = draw::own_length(block) * record.lanes.front().camera.pixels_per_metre;
-      if (in_the_world >= draw::min_body_pixels * scale) {
-        // A gentle slope's window is as wide as it is long: the block is readable there.
-        EXPECT_TRUE(record.close_ups.empty()) << where << ": a close-up of a block " << in_the_world << " px long";
-        continue;
-      }
-      ASSERT_EQ(record.close_ups.size(), 1u) << where << ": the block is " << in_the_world << " px long and has no close-up";
-      const draw::FrameRecord::Lane& close_up = record.close_ups.front();
-      const ImVec4 place = close_up.shown;
-      EXPECT_GE(draw::own_length(block) * close_up.camera.pixels_per_metre, draw::min_body_pixels * scale) << where;
-      const std::vector<ContactMark> marks = contact_marks(lesson.scene());
-      ASSERT_EQ(marks.size(), 1u) << where;
-      // The dot's outline and a pixel of smoothing past its radius.
-      const float dot_radius = draw::contact_dot_radius * scale + 1.5f + 1.0f;
-      const auto [seen, sampled] =
-          fill_seen(picture, close_up.camera, block, draw::fixture_colour(lesson.scene(), block->GetFixtureList(), draw::theme(name)),
-                    scale, close_up.camera.to_screen(marks[0].point), dot_radius);
-      EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the close-up's block show its fill";
-      const b2AABB box = lessons::body_box(block);
-      for (const b2Vec2 corner : {box.lowerBound, box.upperBound}) {
-        const ImVec2 at = close_up.camera.to_screen(corner);
-        EXPECT_TRUE(at.x > place.x && at.x < place.z && at.y > place.y && at.y < place.w) << where << ": the block leaves its close-up";
-      }
-      const b2Body* slope = lesson.scene().body("slope");
-      ASSERT_NE(slope, nullptr);
-      const draw::Camera& world = record.lanes.front().camera;
-      for (int i = 0; i <= 12; ++i) {
-        for (int j = 0; j <= 8; ++j) {
-          const ImVec2 at(place.x + (place.z - place.x) * static_cast<float>(i) / 12.0f, place.y + (place.w - place.y) * static_cast<float>(j) / 8.0f);
-          EXPECT_FALSE(slope->GetFixtureList()->TestPoint(world.to_world(at))) << where << ": the close-up covers the slope at (" << at.x << ", " << at.y << ")";
-        }
-      }
-      for (const ImVec4& label : record.lanes.front().labels) {
-        EXPECT_FALSE(label.x < place.z && label.z > place.x && label.y < place.w && label.w > place.y)
-            << where << ": a world's label at (" << label.x << ", " << label.y << ") lies on the close-up";
+  incline_on_a_projector({"2", "35", "60"}, 0.5, [](const std::string& where, draw::ThemeName name, Classroom& window,
+                                                    const draw::FrameRecord& record, const draw::Image& picture,
+                                                    const draw::ImGuiHost& host) {
+    const lessons::Lesson& lesson = window.playback().lesson();
+    const b2Body* block = lesson.scene().body("block");
+    ASSERT_NE(block, nullptr);
+    ASSERT_EQ(record.lanes.size(), 1u) << where;
+    const float scale = host.fonts().scale;
+    const float in_the_world = draw::own_length(block) * record.lanes.front().camera.pixels_per_metre;
+    if (in_the_world >= draw::min_body_pixels * scale) {
+      // A gentle slope's window is as wide as it is long: the block is readable there.
+      EXPECT_TRUE(record.close_ups.empty()) << where << ": a close-up of a block " << in_the_world << " px long";
+      return;
+    }
+    ASSERT_EQ(record.close_ups.size(), 1u) << where << ": the block is " << in_the_world << " px long and has no close-up";
+    const draw::FrameRecord::Lane& close_up = record.close_ups.front();
+    const ImVec4 place = close_up.shown;
+    EXPECT_GE(draw::own_length(block) * close_up.camera.pixels_per_metre, draw::min_body_pixels * scale) << where;
+    const std::vector<ContactMark> marks = contact_marks(lesson.scene());
+    ASSERT_EQ(marks.size(), 1u) << where;
+    // The dot's outline and a pixel of smoothing past its radius.
+    const float dot_radius = draw::contact_dot_radius * scale + 1.5f + 1.0f;
+    const auto [seen, sampled] =
+        fill_seen(picture, close_up.camera, block, draw::fixture_colour(lesson.scene(), block->GetFixtureList(), draw::theme(name)),
+                  scale, close_up.camera.to_screen(marks[0].point), dot_radius);
+    EXPECT_GE(seen, 0.9 * sampled) << where << ": " << seen << " of " << sampled << " points inside the close-up's block show its fill";
+    const b2AABB box = lessons::body_box(block);
+    for (const b2Vec2 corner : {box.lowerBound, box.upperBound}) {
+      const ImVec2 at = close_up.camera.to_screen(corner);
+      EXPECT_TRUE(at.x > place.x && at.x < place.z && at.y > place.y && at.y < place.w) << where << ": the block leaves its close-up";
+    }
+    const b2Body* slope = lesson.scene().body("slope");
+    ASSERT_NE(slope, nullptr);
+    const draw::Camera& world = record.lanes.front().camera;
+    for (int i = 0; i <= 12; ++i) {
+      for (int j = 0; j <= 8; ++j) {
+        const ImVec2 at(place.x + (place.z - place.x) * static_cast<float>(i) / 12.0f, place.y + (place.w - place.y) * static_cast<float>(j) / 8.0f);
+        EXPECT_FALSE(slope->GetFixtureList()->TestPoint(world.to_world(at))) << where << ": the close-up covers the slope at (" << at.x << ", " << at.y << ")";
       }
     }
-  }
+    for (const ImVec4& label : record.lanes.front().labels) {
+      EXPECT_FALSE(label.x < place.z && label.z > place.x && label.y < place.w && label.w > place.y)
+          << where << ": a world's label at (" << label.x << ", " << label.y << ") lies on the close-up";
+    }
+  });
+  draw::HeadlessContext gl;
+  draw::ImGuiHost host(nullptr);
   // The window at a screen's size: the free-body inset is there, and no close-up.
   const ImVec2 screen(1280.0f, 720.0f);
   ClassroomOptions options = class_window(lessons::resolve_lesson("incline"), {"1280x720", 1280, 720, false});
