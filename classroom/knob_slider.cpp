@@ -1,6 +1,9 @@
 #include "classroom/knob_slider.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace frictionlab::classroom {
 
@@ -19,6 +22,25 @@ KnobSliderShape knob_slider_shape(const ImRect& frame, const ImRect& grab, ImVec
   const float top = std::min(shape.text.Max.y + 1.0f, frame.Max.y - 1.0f);
   shape.knob = ImRect(ImVec2(middle - 0.5f * width, top), ImVec2(middle + 0.5f * width, frame.Max.y));
   return shape;
+}
+
+double round_slider_value(double value, double min, double max, float travel, bool logarithmic) {
+  if (!(travel > 0.0f) || !(max > min)) return value;
+  const double per_pixel = logarithmic ? (min > 0.0 ? std::abs(value) * std::log(max / min) / travel : 0.0) : (max - min) / travel;
+  if (!(per_pixel > 0.0) || !std::isfinite(per_pixel)) return value;
+  const double power = std::pow(10.0, std::floor(std::log10(per_pixel)));
+  double step = 10.0 * power;
+  for (const double times : {1.0, 2.0, 5.0}) {
+    if (times * power >= per_pixel) {
+      step = times * power;
+      break;
+    }
+  }
+  // Written with twelve figures and read back: 23 steps of 0.05 is 1.1500000000000001, which
+  // the typed value's box would show whole.
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", std::round(value / step) * step);
+  return std::clamp(std::strtod(text, nullptr), min, max);
 }
 
 bool knob_slider(const char* id_text, ImGuiDataType type, void* value, const void* min, const void* max, const char* format,

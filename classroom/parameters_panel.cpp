@@ -426,6 +426,7 @@ void ParametersPanel::value_slider(const lessons::Parameter& parameter, ControlP
   const bool wide = parameter.max > 10.0 && parameter.max >= 100.0 * std::max(parameter.min, 1e-9);
   const bool moved = knob_slider("##slider", ImGuiDataType_Double, &value, &parameter.min, &parameter.max, format.c_str(),
                                  wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None, controls, name + " slider");
+  if (moved) value = round_slider_value(value, parameter.min, parameter.max, ImGui::GetItemRectSize().x, wide);
   {
     char shown[96];
     std::snprintf(shown, sizeof shown, format.c_str(), value);

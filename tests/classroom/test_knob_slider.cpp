@@ -27,6 +27,25 @@ const draw::ShownText* value_in(const draw::FrameRecord& record, const ImRect& f
   return nullptr;
 }
 
+// A drag lands on round values: the mass slider, 0.1 to 10 kg over 250 px (0.0396 kg a pixel),
+// on steps of 0.05 kg, so 0.98 kg is 1 kg and 2.47 kg 2.45; never past its ends; a logarithmic
+// slider's step follows the value.
+TEST(KnobSlider, ADragLandsOnTheRoundestStepAPixelAllows) {
+  EXPECT_DOUBLE_EQ(round_slider_value(0.98, 0.1, 10.0, 250.0f, false), 1.0);
+  EXPECT_DOUBLE_EQ(round_slider_value(2.47, 0.1, 10.0, 250.0f, false), 2.45);
+  EXPECT_DOUBLE_EQ(round_slider_value(1.1499, 0.1, 10.0, 250.0f, false), 1.15);
+  EXPECT_DOUBLE_EQ(round_slider_value(0.1, 0.1, 10.0, 250.0f, false), 0.1);
+  EXPECT_DOUBLE_EQ(round_slider_value(9.99, 0.1, 10.0, 250.0f, false), 10.0);
+  // A pull rate of 0.5 to 50 N/s over 250 px: 0.198 N/s a pixel, steps of 0.2.
+  EXPECT_DOUBLE_EQ(round_slider_value(5.07, 0.5, 50.0, 250.0f, false), 5.0);
+  // Logarithmic, 1 to 1000 over 250 px: a pixel is 2.8 % of the value; at 400, 11 a pixel, steps of 20.
+  EXPECT_DOUBLE_EQ(round_slider_value(407.0, 1.0, 1000.0, 250.0f, true), 400.0);
+  EXPECT_DOUBLE_EQ(round_slider_value(2.07, 1.0, 1000.0, 250.0f, true), 2.1);
+  // Nothing to round on: no travel, or a range of one value.
+  EXPECT_DOUBLE_EQ(round_slider_value(0.98, 0.1, 10.0, 0.0f, false), 0.98);
+  EXPECT_DOUBLE_EQ(round_slider_value(3.0, 3.0, 3.0, 250.0f, false), 3.0);
+}
+
 TEST(KnobSlider, TheKnobNeverCoversItsValue) {
   int checked = 0;
   for (const draw::ThemeName theme : {draw::ThemeName::light, draw::ThemeName::dark}) {

@@ -2,6 +2,8 @@
 // a pair folded into its heading, the teacher's lock, and the column kept still as the run goes.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 
@@ -41,6 +43,25 @@ TEST(ParametersPanel, MovingTheStaticSliderChangesThePairTableAndWhenTheBlockBre
   hands.playback().run_to(2.5);
   const double breakaway = mu_s * 1.0 * 9.81 / (50.0 * 0.1);
   EXPECT_NEAR(first_slip_time(hands.lesson().scene()), breakaway, 2.0 / 240.0 + 1e-9);
+}
+
+// A teacher's trial could not set push's mass to 1 kg by dragging (0.1 to 10 kg, a few hundredths
+// a pixel, 0.98 then 1.02): a click anywhere along the slider sets a round value, one of two
+// decimals at most, here at eleven places from end to end, and the lesson is built with it.
+TEST(ParametersPanel, TheMassSliderSetsRoundValues) {
+  ClassroomHands hands("push");
+  hands.frame();
+  for (int place = 0; place <= 10; ++place) {
+    const ImRect slider = hands.control("mass slider");
+    hands.click(ImVec2(slider.Min.x + 2.0f + (slider.GetWidth() - 4.0f) * static_cast<float>(place) / 10.0f + 0.37f,
+                       slider.GetCenter().y));
+    hands.frame();
+    const double mass = hands.lesson().parameter("mass").value;
+    EXPECT_EQ(std::round(mass * 100.0) / 100.0, mass) << "at place " << place << " of 10";
+    const b2Body* block = hands.lesson().scene().body("block");
+    ASSERT_NE(block, nullptr);
+    EXPECT_NEAR(block->GetMass(), mass, 1e-5 * mass) << "at place " << place << " of 10";
+  }
 }
 
 TEST(ParametersPanel, ATypedValueIsSetExactlyAndARefusedOneSaysWhy) {
