@@ -644,6 +644,22 @@ local function too_fast(t, block)
   if speed * substep_length() >= 2 then return "faster than Box2D's 2 m a step" end
 end
 
+-- A front the floor's breakaway kicks up and that stays up until it lifts for good (slipping_
+-- until's `kicked`): from the kick's step on the pair pitches, and the top block's load is no
+-- longer its weight (2.41 kg on 1 kg, floor mu_s 1.997 and mu_k 0, top mu_s 2, 32.43 N/s: the
+-- front up from the step after the breakaway, the top block's load from 23.6 N to 28.7 N, and
+-- the top block held on 0.14 s past theory's flat slip, 3 ms after the breakaway). Where the
+-- world can show the top block's slip no sooner than that step (its row's allowance past
+-- theory's slip reaches the kick, paid a world step after the crossing), its slip has no flat
+-- closed form either, and the row says so.
+local function kicked_up_before_the_slip()
+  if no_theory() or off_the_floor() then return nil end
+  local _, lifts, kicked = slipping_until()
+  if not (lifts and kicked) then return nil end
+  local kick = start_pull() / param.pull_rate + substep_length()
+  if (slip_pull() + slip_allowed().top) / param.pull_rate >= kick then return tipped_words end
+end
+
 -- Expectations ----------------------------------------------------------------------------
 local top_operations, bottom_operations, rate_rounding  -- the roundings of a rate (below)
 expect { "the pair starts to slide at a pull of", unit = "N",
@@ -652,11 +668,11 @@ expect { "the pair starts to slide at a pull of", unit = "N",
   tolerance = function() return slip_allowed().start end }
 expect { "the top block starts to slip at a pull of", unit = "N",
   predicted = function()
-    return no_theory() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate) or slip_after_the_end()
-           or jerked_at_the_breakaway() or slip_pull()
+    return no_theory() or off_the_floor() or tipped_by(slip_pull() / param.pull_rate) or kicked_up_before_the_slip()
+           or slip_after_the_end() or jerked_at_the_breakaway() or slip_pull()
   end,
   measured = function()
-    if tipped_by(slip_pull() / param.pull_rate) then return lifted_seen() end
+    if tipped_by(slip_pull() / param.pull_rate) or kicked_up_before_the_slip() then return lifted_seen() end
     return no_theory() or off_the_floor() or slip_after_the_end() or jerked_at_the_breakaway() or first_slip("top_slipping")
   end,
   -- And what holding the top block took as the treatment reads it, the friction held and what it
