@@ -401,9 +401,10 @@ local function follow_the_drift()
         -- is pushed out): falling at v, up to v·h, not the slop (a landing at 0.26 m/s, 1.1 mm
         -- at 240 Hz: the world's block, 10 kg on a plank swinging 11.5° at 5 rad/s, shaken at
         -- −30 m/s², lost its contact 0.26 s later, where the slop would have lasted 0.8 s).
-        -- The deepest it may be; the drift is then followed from there.
+        -- The deepest it may be (a world step's fall: a sub-step's under --substeps); the
+        -- drift is then followed from there.
         local falling = k > 2 and (turning.height[k - 1] - turning.height[k]) / spacing or 0
-        overlap = math.min(linear_slop, math.max(falling, 0) * h)
+        overlap = math.min(linear_slop, math.max(falling, 0) * substep_length())
       else
         local turn = theta((k - 1) * spacing) - theta((k - 2) * spacing)
         local slid = turning.slide[k] - turning.slide[k - 1]
@@ -1081,11 +1082,11 @@ end
 -- And a reading inside a flight of the model's where the world's block may be down already. The
 -- world's block rests up to the skins' overlap (linear_slop) into the surface, so it is down
 -- again where its lowest point comes back within that of its resting place; and in flight it
--- keeps the spin it left with, so it lands on a corner (corner_drop). (Shaken at 14.89 m/s² on a plank swinging 40° at 0.75 rad/s, 5.27 kg,
--- μk 1.71: the model's block flew 5.6 mm high from 2.24 s to past the halfway reading; the
--- world's, turned 0.7° from the plank, was down on its back corner from 2.47 s, its N 5.9 N at
--- 2.5 s, at 240, 480 and 960 Hz alike.) Only while that point comes nearer: a block leaving
--- the surface starts within the overlap too.
+-- keeps the spin it left with, so it lands on a corner (corner_drop). (Shaken at 14.89 m/s²
+-- on a plank swinging 40° at 0.75 rad/s, 5.27 kg, μk 1.71: the model's block flew 5.6 mm high
+-- from 2.24 s to past the halfway reading; the world's, turned 0.7° from the plank, was down on
+-- its back corner from 2.47 s, its N 5.9 N at 2.5 s, at 240, 480 and 960 Hz alike.) Only while
+-- that point comes nearer: a block leaving the surface starts within the overlap too.
 local function down_in_the_models_flight(t)
   local k = sample(t)
   if turning.contact[k] ~= "flying" then return false end
