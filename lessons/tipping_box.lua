@@ -2,18 +2,21 @@
 -- The tribology article: pushed at height h, a box of width d tips over its front edge
 -- before it slides when h >= d / (2·mu_s), however hard the push; pushed lower, it slides.
 
--- How long after the tipping starts the box has tipped by `angle` (rad): its rotation about its
--- front bottom corner, the push still growing, integrated in small steps (as a rigid box on a
--- corner that holds). I·θ'' = F·(d·sin θ + h·cos θ) − m·g·(d/2·cos θ − H/2·sin θ), with F the
--- push at that moment, h its height, I = m·(d² + H²)/3 about the corner.
-local function time_to_tip(tip_time, angle)
+-- The box's angular acceleration about its front bottom corner, tipped by theta (rad) under
+-- `push` (as a rigid box on a corner that holds, never turned back past flat):
+-- I·θ'' = F·(d·sin θ + h·cos θ) − m·g·(d/2·cos θ − H/2·sin θ), with h the push's height and
+-- I = m·(d² + H²)/3 about the corner.
+local function tipping_spin_rate(push, theta)
   local m, d, h, H, g = param.mass, param.width, param.push_height, param.height, 9.81
-  local inertia = m * (d * d + H * H) / 3
+  local turning = push * (d * math.sin(theta) + h * math.cos(theta)) - m * g * (d / 2 * math.cos(theta) - H / 2 * math.sin(theta))
+  return math.max(turning, 0) / (m * (d * d + H * H) / 3)
+end
+-- How long after the tipping starts the box has tipped by `angle` (rad): that turn, the push
+-- still growing, integrated in small steps.
+local function time_to_tip(tip_time, angle)
   local theta, spin, t, step = 0, 0, tip_time, 1e-3
   while theta < angle and t < tip_time + 3 do
-    local push = param.push_rate * t
-    local turning = push * (d * math.sin(theta) + h * math.cos(theta)) - m * g * (d / 2 * math.cos(theta) - H / 2 * math.sin(theta))
-    spin = spin + math.max(turning, 0) / inertia * step
+    spin = spin + tipping_spin_rate(param.push_rate * t, theta) * step
     theta = theta + spin * step
     t = t + step
   end
@@ -165,18 +168,16 @@ end
 -- fast, and the corner slides back once |f| passes mu·N: a 0.1 m box of 1 kg pushed 1.531 m up
 -- at 59.67 N/s, mu_s 0.107, tips at 0.32 N and its corner slides at 0.47 N, 2.5 ms on, both
 -- inside the 240 Hz step whose push, 0.50 N, first passes the tipping push, and the world
--- reported the slide. The push at which the corner slides: the turn of time_to_tip, with the
+-- reported the slide. The push at which the corner slides: the turn of tipping_spin_rate, with the
 -- centre's acceleration from it (nil: the corner holds until the push has grown by `within`).
 local function corner_slides_at(within)
-  local m, d, h, H, g = param.mass, param.width, param.push_height, param.height, 9.81
+  local m, d, H, g = param.mass, param.width, param.height, 9.81
   local mu, tips = math.max(param.mu_s, param.mu_k), predicted().force
-  local inertia = m * (d * d + H * H) / 3
   local step = math.min(1e-5, within / push_rate / 1000)
   local theta, spin, t = 0, 0, tips / push_rate
   while push_rate * t <= tips + within do
     local push = push_rate * t
-    local turning = push * (d * math.sin(theta) + h * math.cos(theta)) - m * g * (d / 2 * math.cos(theta) - H / 2 * math.sin(theta))
-    local spin_rate = math.max(turning, 0) / inertia
+    local spin_rate = tipping_spin_rate(push, theta)
     -- The centre from the corner, turned by theta, and its acceleration in that turn.
     local x = -d / 2 * math.cos(theta) + H / 2 * math.sin(theta)
     local y = d / 2 * math.sin(theta) + H / 2 * math.cos(theta)
