@@ -93,7 +93,7 @@ struct HoldBand {
 struct FrictionState {
   ContactState state = ContactState::sticking;
   float slip_direction = 0.0f;     // sign of B's sliding velocity relative to A while slipping
-  double held_force = 0.0;         // N, friction held in the last step it stayed within mu_s·N
+  double held_demand = 0.0;        // N, what holding took in the last step it stayed within mu_s·N
   // N, mu_s·N in that step (negative: not known, as before any step). The breakaway is placed
   // where the demand's margin over the limit crossed zero, and a limit that falls as N does
   // moves that crossing as much as a demand that grows (see breakaway_correction).

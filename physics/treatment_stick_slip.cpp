@@ -158,7 +158,7 @@ double breakaway_correction(ContactRecord& r, const FrictionPair& pair, const St
   // 0.15 % faster than on its face). A lone contact's N is the solver's one answer.
   const double limit_then =
       r.friction.held_limit >= 0.0 && r.listener.siblings == 0 ? r.friction.held_limit : step.limit;
-  const double growth = ((step.demanded - step.limit) - (r.friction.held_force - limit_then)) / span;
+  const double growth = ((step.demanded - step.limit) - (r.friction.held_demand - limit_then)) / span;
   const double late = growth > 0.0 ? std::clamp(excess / growth, 0.0, span) : 0.5 * step.h;
   const double held_past = r.friction.band.impulse + std::max(step.held - step.limit, 0.0) * step.h;
   r.breakaway.span = late + 0.5 * step.h;
@@ -255,7 +255,7 @@ void restick_correction(ContactRecord& r, const FrictionPair& pair, const Solved
       // Held: the friction holding it is the pushing, from which a later breakaway's crossing
       // of the limit is placed (breakaway_correction).
       r.friction.state = ContactState::sticking;
-      r.friction.held_force = std::abs(pushing);
+      r.friction.held_demand = std::abs(pushing);
       r.friction.held_limit = breakaway_coefficient(pair) * normal_force;
     }
   }
@@ -281,7 +281,7 @@ void after_stuck_step(ContactRecord& r, const FrictionPair& pair, const SolvedCo
     // placed late: on a level plank shaken at 17.8 m/s² (mu_s 1.76, mu_k 0.29), 4 ms late at
     // each reversal's brief stop, each leaving the block 0.055 m/s slow, the slide 0.076 m off
     // the exact one after 5 s at 240 Hz (0.028 m kept so).
-    r.friction.held_force = std::max(step.held, step.demanded);
+    r.friction.held_demand = step.demanded;
     r.friction.held_limit = step.limit;
     leave_band(r);
     return;
