@@ -285,9 +285,9 @@ end
 --   keeps up for only a few steps, slipping in theory before the floor's breakaway's steps are
 --   over (held, paying and carrying, ended 4·hs after the crossing at the latest: see
 --   breakaway_in_frame), may be seen as late as their end: its friction there is the
---   breakaway's, not the smooth theory's (3.4 kg on 10 kg, floor
---   mu_s 1.04 and mu_k 0.14, top mu_s 0.90 and mu_k 0, 42.56 N/s: theory's slip 2.2 steps after
---   the crossing, the world's 0.3 N of the pull later, at the fourth step, at 240 Hz).
+--   breakaway's, not the smooth theory's (3.4 kg on 10 kg, floor mu_s 1.04 and mu_k 0.14, top
+--   mu_s 0.90 and mu_k 0, 42.56 N/s: theory's slip 2.2 steps after the crossing, the world's
+--   0.3 N of the pull later, at the fourth step, at 240 Hz).
 -- * Single precision (floats, 2^-24 of the magnitudes per operation; theory is double). A limit
 --   is a normal impulse after the warm start and 4 passes over the bottom block's four contact
 --   points (1 + 5·4 = 21 operations), compared with a pull and a friction that are floats too:
