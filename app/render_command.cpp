@@ -175,6 +175,14 @@ int run_render(const std::vector<std::string>& args, std::ostream& out) {
   const std::string path = lessons::resolve_lesson(options.lesson);
   if (!options.moment.empty()) apply_moment(path, options);
   lessons::Lesson lesson(path, options.overrides, options.settings);
+  // A moment's picture shows the lesson at that moment; past the lesson's end it would show a
+  // run that is over (the script warns of it when it opens).
+  if (!options.moment.empty() && options.times.front() > lesson.duration()) {
+    std::ostringstream message;
+    message << "render: --moment " << options.moment << ": at " << options.times.front()
+            << " s it comes after the lesson's end, at " << lesson.duration() << " s, with these values";
+    throw InvalidInput(message.str());
+  }
   // Neither --at nor --moment: halfway through the run, where most lessons have their event
   // behind them and their motion still on, the picture the window draws without a display.
   if (options.times.empty()) options.times = {0.5 * lesson.duration()};

@@ -248,8 +248,8 @@ void declare_preset_pairs(LessonBuild& build);
 // (everything that can be checked before the parameters exist) into build.moments.
 void read_moments(lua_State* state, LessonBuild& build);
 // After the script: each moment's set names parameters and gives values within their ranges,
-// and, at the lesson's defaults, each moment that sets no parameter comes within its duration
-// (`duration`, in s).
+// and, at the lesson's defaults, warns of each moment that sets no parameter and comes after
+// its duration (`duration`, in s).
 // Throws ScriptError placed at lesson{}.
 void check_moments(LessonBuild& build, std::optional<double> duration);
 
