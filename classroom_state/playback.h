@@ -53,7 +53,8 @@ class Playback {
   void toggle() { playing_ ? pause() : play(); }
   // Exactly one frame of the lesson (1/hz s), paused.
   void step_once();
-  // Whole frames until the lesson's time is the frame nearest `t`, paused there.
+  // Whole frames until the lesson's time is the frame nearest `t`, paused there, or until a
+  // body falls off, where playing would pause too (the notice says which and when).
   void run_to(double t);
   double speed() const { return speed_; }
   void set_speed(double speed);

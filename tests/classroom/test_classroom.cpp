@@ -284,6 +284,18 @@ TEST(Classroom, ABodyThatFallsPastEverythingPausesTheRunOnceAndSaysSo) {
   EXPECT_EQ(playback.notice().find("fallen off"), std::string::npos) << playback.notice();
 }
 
+// Run to a time past a fall (the window's --at 30 on push), the run stops where playing pauses
+// for it, and says so: the trial's teacher got an empty world and only the past-the-end words.
+TEST(Classroom, RunToATimePastAFallStopsAtTheFallAndSaysSo) {
+  ClassroomHands hands("push");
+  classroom_state::Playback& playback = hands.playback();
+  playback.run_to(30.0);
+  const double stopped_at = hands.lesson().scene().time();
+  EXPECT_GT(stopped_at, 8.0);
+  EXPECT_LT(stopped_at, 12.0);
+  EXPECT_NE(playback.notice().find("block has fallen off (t = "), std::string::npos) << playback.notice();
+}
+
 // Every built-in lesson, through its own run at its defaults, keeps its bodies where something
 // can hold them (the pulley's weight hangs below the table, above the floor).
 TEST(Classroom, NoBuiltinLessonsBodyFallsOffDuringItsRun) {
