@@ -52,8 +52,8 @@ probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
 -- The key plot first (the first page in projector mode): the block stays put while the friction
 -- holding it, m·g·sin θ up the slope, is within the most static friction gives, max(mu_s, mu_k)·N
--- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); the two levels are those
--- (negative, up the slope, as friction is here).
+-- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); sliding, it drops to
+-- mu_k·N. The levels are those (negative, up the slope, as friction is here).
 -- The plot's answer is the lesson's key number, the critical angle θc (tan θc = max(mu_s, mu_k)),
 -- read here while building, so that a coefficient moved builds the lesson again with it. The
 -- window adds it to the title once the theory is shown: in the title from the start, it told
@@ -64,6 +64,13 @@ plot { "Forces from the slope", answer = "θc = " .. critical, y = { "friction_f
   levels = {
     { "−μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
     { "holding it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
+    -- Only past the critical angle, where the block slides: below it μk plays no part, and in
+    -- the window's small plot its text took the holding force's place.
+    { "−μk·N", function()
+        if math.tan(math.rad(param.angle)) > math.max(param.mu_s, param.mu_k) then
+          return -param.mu_k * param.mass * g * math.cos(math.rad(param.angle))
+        end
+      end },
   } }
 plot { "Distance down the slope", y = { "distance" } }
 plot { "Speed down the slope", y = { "speed" } }
