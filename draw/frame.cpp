@@ -51,9 +51,11 @@ FrameLayout laid_out(ImVec2 display, float scale, ImVec2 origin, bool projector,
   // that with large text (projector mode) it does not cover the world it explains.
   layout.inset_size = ImVec2(std::min(260.0f * scale, 0.32f * left_width), std::min(200.0f * scale, 0.7f * layout.world_size.y));
   layout.inset_corner = ImVec2(left_width - layout.inset_size.x - 6.0f * scale, layout.world_corner.y + 6.0f * scale);
-  // Left out where it cannot be read (a projector's text in a world of a screen's height): the
-  // world's own arrows show the same forces, and the world keeps the width.
-  if (!free_body_readable(layout.inset_size, scale)) layout.inset_size = ImVec2(0.0f, 0.0f);
+  // Left out where it cannot be read (a projector's text in a world of a screen's height), and
+  // on any projector: its small text is for a screen, not the back row, and at 1024 × 768 it
+  // passed the size rule with a 50 px crate and its arrows over each other (a teacher's trial,
+  // issue 31). The world's own arrows show the same forces, and the world keeps the width.
+  if (projector || !free_body_readable(layout.inset_size, scale)) layout.inset_size = ImVec2(0.0f, 0.0f);
   if (projector && !plots) layout.world_size.y = display.y - layout.world_corner.y - legend_strip;
   const float under_world = layout.world_corner.y + layout.world_size.y;
   layout.legend_beside_plots = projector && plots;
