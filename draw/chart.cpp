@@ -190,8 +190,8 @@ void draw_level_texts(const Painter& p, bool beneath) {
     if (placed.beneath != beneath || placed.beside || placed.text.empty()) continue;
     const ChartLevel& level = p.chart.levels[placed.index];
     // Opaque: the text is read against the panel's colour it was chosen for (readable_ink),
-    // not a slip band or a grid line showing through (incline's ochre text on its pink band
-    // read 4.36:1).
+    // not a slip band or a grid line showing through (incline's ochre text, as the second
+    // theory colour was, on its pink band read 4.36:1).
     p.draw->AddRectFilled(ImVec2(placed.at.x - 2.0f * p.s, placed.at.y - 1.0f), ImVec2(placed.at.z + 2.0f * p.s, placed.at.w + 1.0f),
                           p.theme.panel);
     ImFont* font = p.layout.level_font != nullptr ? p.layout.level_font : p.numbers;

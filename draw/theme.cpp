@@ -71,7 +71,7 @@ Theme make_light() {
   t.sticking = IM_COL32(0, 150, 160, 255);    // teal
   t.slipping = IM_COL32(215, 0, 120, 255);    // magenta
   t.slip_band = IM_COL32(240, 120, 190, 60);
-  // Indigo: off the states' teal and magenta and the theory's grey and ochre (an X–Y plot's
+  // Indigo: off the states' teal and magenta and the theory's grey and mustard (an X–Y plot's
   // other curves), 7.4:1 on white.
   t.no_contact = IM_COL32(80, 60, 200, 255);
   t.now_marker = IM_COL32(20, 20, 24, 255);
@@ -80,7 +80,11 @@ Theme make_light() {
   t.series[2] = IM_COL32(0, 140, 70, 255);
   t.series[3] = IM_COL32(130, 50, 170, 255);
   t.theory[0] = IM_COL32(90, 90, 100, 255);    // grey
-  t.theory[1] = IM_COL32(150, 95, 20, 255);    // ochre: no series, force or contact state has it
+  // Mustard: no series, force or contact state has it. An ochre, (150, 95, 20), was 43 apart
+  // from friction's vermilion in CIELAB (ΔE76), and stacked_blocks' μk·N level, thin, read as
+  // the friction on top it lies along, on a projector (a teacher's trial, issue 31); mustard is
+  // 57 apart, 21 from the nearest (rope's brown, drag's olive, never plotted), 5.0:1 on white.
+  t.theory[1] = IM_COL32(130, 110, 0, 255);
   // Dark enough to read 4.5:1 on the theory table's grey rows (#efefef): (0, 130, 60) read 4.3.
   t.good = IM_COL32(0, 115, 55, 255);
   t.bad = IM_COL32(200, 20, 20, 255);
@@ -131,7 +135,7 @@ Theme make_dark() {
   t.series[2] = IM_COL32(70, 210, 130, 255);
   t.series[3] = IM_COL32(200, 140, 255, 255);
   t.theory[0] = IM_COL32(190, 190, 200, 255);
-  t.theory[1] = IM_COL32(225, 175, 80, 255);
+  t.theory[1] = IM_COL32(250, 210, 0, 255);  // yellow: 56 from the orange (a gold was 36), 10.6:1
   t.good = IM_COL32(90, 220, 130, 255);
   t.bad = IM_COL32(255, 90, 90, 255);
   t.imgui_text = rgb(236, 236, 236);
