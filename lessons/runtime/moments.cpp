@@ -123,8 +123,9 @@ void check_moments(LessonBuild& build, std::optional<double> duration) {
     // render --moment refuses it.
     if (duration && moment.set.empty() && moment.at > *duration) {
       std::ostringstream message;
-      message << where << "at = " << moment.at << " s is after the lesson's end, at " << *duration
-              << " s, so it is never reached with these defaults (move it earlier, or give it set = { ... })";
+      message << where << "at = " << moment.at << " s is after the run's end at " << *duration
+              << " s with these values; the lesson runs as ever, without this moment's picture (for the README and "
+                 "the tests); move its at earlier to keep it";
       build.warnings.push_back(message.str());
     }
   }

@@ -657,8 +657,9 @@ TEST(LessonMoments, AMomentWithValuesMayComeAfterTheDefaultsEndAndIsCheckedOnlyA
   const Lesson opened(late.path());
   ASSERT_EQ(opened.warnings().size(), 1u);
   EXPECT_EQ(opened.warnings()[0], late.path() +
-                                      ":1: lesson: moment 'late': at = 4 s is after the lesson's end, at 2 s, so it is never "
-                                      "reached with these defaults (move it earlier, or give it set = { ... })");
+                                      ":1: lesson: moment 'late': at = 4 s is after the run's end at 2 s with these values; "
+                                      "the lesson runs as ever, without this moment's picture (for the README and the "
+                                      "tests); move its at earlier to keep it");
   EXPECT_TRUE(Lesson(script.path()).warnings().empty());
 }
 
