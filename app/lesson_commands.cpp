@@ -21,6 +21,7 @@
 #include "app/options.h"
 #include "app/table.h"
 #include "classroom_state/mystery.h"
+#include "classroom_state/plain_words.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/validation.h"
@@ -352,6 +353,7 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
       }
     } catch (const InvalidInput& error) {
       std::cerr << "frictionlab: check " << name << ": " << error.what() << '\n';
+      if (const std::string plain = classroom_state::plain_words(error.what()); !plain.empty()) std::cerr << plain << '\n';
       ++broken_lessons;
     }
     out << '\n';

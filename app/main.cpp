@@ -12,6 +12,7 @@
 #include "app/command_line.h"
 #include "app/install_paths.h"
 #include "app/modes.h"
+#include "classroom_state/plain_words.h"
 #include "files/output_file.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
@@ -91,6 +92,10 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
     std::cerr << "frictionlab: " << error.what() << '\n';
+    // A script's Lua message in plain words too, as the window and the page say it.
+    if (const std::string plain = frictionlab::classroom_state::plain_words(error.what()); !plain.empty()) {
+      std::cerr << plain << '\n';
+    }
     return 2;
   } catch (const std::exception& error) {
     // Not bad input but something the machine could not do (out of memory, say): still a
