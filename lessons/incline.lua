@@ -63,7 +63,9 @@ local critical = string.format("%.2f°", math.deg(math.atan(math.max(param.mu_s,
 plot { "Forces from the slope", answer = "θc = " .. critical, y = { "friction_force", "normal_force" },
   levels = {
     { "−μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g * math.cos(math.rad(param.angle)) end },
-    { "holding it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
+    -- What holding the block takes, whether friction can give it or not ("holding it" read as
+    -- a claim that it held while the block slid: a teacher's trial).
+    { "to hold it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
     -- Only past the critical angle, where the block slides: below it μk plays no part, and in
     -- the window's small plot its text took the holding force's place.
     { "−μk·N", function()
