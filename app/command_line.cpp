@@ -10,6 +10,7 @@
 
 #include "app/options.h"
 #include "classroom_state/mystery.h"
+#include "classroom_state/plain_words.h"
 #include "classroom_state/window_keys.h"
 #include "physics/materials.h"
 
@@ -681,6 +682,11 @@ std::string manual_options() {
     if (!entries.empty()) text += ".SS " + std::string(section == Command::window ? "The window" : command_name(section)) + "\n" + entries;
   }
   return text;
+}
+
+void say_bad_input(std::ostream& err, const std::string& context, const std::string& message) {
+  err << "frictionlab: " << context << message << '\n';
+  if (const std::string plain = classroom_state::plain_words(message); !plain.empty()) err << plain << '\n';
 }
 
 }  // namespace frictionlab

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -122,5 +123,9 @@ std::string manual_synopsis();
 // `node frictionlab-cli.js`.
 enum class Program { desktop, node };
 std::string usage_text(Program program);
+
+// Bad input said on `err`: "frictionlab: " `context` `message`, and for a script's Lua message
+// the same in plain words on the next line, as the window and the page say it.
+void say_bad_input(std::ostream& err, const std::string& context, const std::string& message);
 
 }  // namespace frictionlab

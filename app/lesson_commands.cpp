@@ -21,7 +21,6 @@
 #include "app/options.h"
 #include "app/table.h"
 #include "classroom_state/mystery.h"
-#include "classroom_state/plain_words.h"
 #include "lessons/runtime/catalog.h"
 #include "lessons/runtime/lesson.h"
 #include "physics/validation.h"
@@ -352,8 +351,7 @@ int run_check(const std::vector<std::string>& args, std::ostream& out) {
         if (run_and_report(lesson, lesson.duration(), nullptr, out) > 0) ++failed_lessons;
       }
     } catch (const InvalidInput& error) {
-      std::cerr << "frictionlab: check " << name << ": " << error.what() << '\n';
-      if (const std::string plain = classroom_state::plain_words(error.what()); !plain.empty()) std::cerr << plain << '\n';
+      say_bad_input(std::cerr, "check " + name + ": ", error.what());
       ++broken_lessons;
     }
     out << '\n';

@@ -12,7 +12,6 @@
 #include "app/command_line.h"
 #include "app/install_paths.h"
 #include "app/modes.h"
-#include "classroom_state/plain_words.h"
 #include "files/output_file.h"
 #include "lessons/runtime/catalog.h"
 #include "physics/materials.h"
@@ -91,11 +90,7 @@ int main(int argc, char** argv) {
 #endif
     return 2;
   } catch (const frictionlab::InvalidInput& error) {
-    std::cerr << "frictionlab: " << error.what() << '\n';
-    // A script's Lua message in plain words too, as the window and the page say it.
-    if (const std::string plain = frictionlab::classroom_state::plain_words(error.what()); !plain.empty()) {
-      std::cerr << plain << '\n';
-    }
+    frictionlab::say_bad_input(std::cerr, "", error.what());
     return 2;
   } catch (const std::exception& error) {
     // Not bad input but something the machine could not do (out of memory, say): still a

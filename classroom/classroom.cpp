@@ -330,9 +330,9 @@ std::string Classroom::status() const { return status_.now(playback_->lesson().s
 
 std::string Classroom::transport_words() const {
   // Notices (the run is over, the file reloaded) and what was saved where, on one line.
-  // A notice says what just happened past the end (a body fell off); the past-end words come
-  // back once it is gone: the two together were cut in the middle on a projector's two lines
-  // ("R starts again; … its rows.", a teacher's trial).
+  // A notice (a body fell off, the file reloaded) says what just happened, and the past-end
+  // words wait until it is gone: the two together were cut in the middle on a projector's two
+  // lines ("R starts again; … its rows.", a teacher's trial).
   std::string said = script_words(playback_->notice());
   if (const std::string past = playback_->past_end_words(); !past.empty() && said.empty()) said = past;
   if (const std::string now = status(); !now.empty()) said += (said.empty() ? "" : "  ") + script_words(now);

@@ -83,7 +83,8 @@ Theme make_light() {
   // Mustard: no series, force or contact state has it. An ochre, (150, 95, 20), was 43 apart
   // from friction's vermilion in CIELAB (ΔE76), and stacked_blocks' μk·N level, thin, read as
   // the friction on top it lies along, on a projector (a teacher's trial, issue 31); mustard is
-  // 57 apart, 21 from the nearest (rope's brown, drag's olive, never plotted), 5.0:1 on white.
+  // 57 apart, 5.0:1 on white. Nearer are only colours never plotted: the hand's and a driven
+  // body's gold (15), rope's brown and drag's olive (21).
   t.theory[1] = IM_COL32(130, 110, 0, 255);
   // Dark enough to read 4.5:1 on the theory table's grey rows (#efefef): (0, 130, 60) read 4.3.
   t.good = IM_COL32(0, 115, 55, 255);

@@ -66,8 +66,9 @@ plot { "Forces from the slope", answer = "θc = " .. critical, y = { "friction_f
     -- What holding the block takes, whether friction can give it or not ("holding it" read as
     -- a claim that it held while the block slid: a teacher's trial).
     { "to hold it: −m·g·sin θ", function() return -param.mass * g * math.sin(math.rad(param.angle)) end },
-    -- Only past the critical angle, where the block slides: below it μk plays no part, and in
-    -- the window's small plot its text took the holding force's place.
+    -- Only past the critical angle, where the block slides of itself: below it the block holds
+    -- (unless a hand drags it), and in the window's small plot its text took the holding
+    -- force's place.
     { "−μk·N", function()
         if math.tan(math.rad(param.angle)) > math.max(param.mu_s, param.mu_k) then
           return -param.mu_k * param.mass * g * math.cos(math.rad(param.angle))

@@ -262,8 +262,8 @@ std::unique_ptr<LessonBuild> Lesson::build(const std::string& source, std::strin
     throw ScriptError(path_ + ":1: the script never says what it is; begin it with lesson{ title = \"...\", question = "
                       "\"...\" }");
   }
-  // At the defaults a moment must come before the end; with other values the lesson may be
-  // shorter, and a moment past its end is simply not reached.
+  // At the defaults a moment past the end is warned of (a student's changed default may shorten
+  // the run); with other values the lesson may be shorter, and such a moment is not reached.
   check_moments(*next, next->at_the_defaults() && !next->moments.empty() ? std::optional(duration_of(*next)) : std::nullopt);
   for (const Plot& plot : next->plots) {
     std::vector<std::string> names = plot.y;

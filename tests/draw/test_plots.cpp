@@ -911,6 +911,10 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
           EXPECT_NEAR(0.5f * (a.at.y + a.at.w), a.y, 0.5f) << where;
         } else {
           EXPECT_LE(nearest, height + 2.0f * f.scale + 2.0f + 0.5f) << where;
+          // and no further from its own line than the stack of the others is high
+          EXPECT_LE(std::abs(0.5f * (a.at.y + a.at.w) - a.y),
+                    static_cast<float>(layout.levels.size() - 1) * (height + 2.0f * f.scale + 2.0f) + 0.5f)
+              << where;
         }
       }
     }
@@ -991,6 +995,12 @@ TEST(PlotLevels, InclinesKeyPlotAnswersWithItsCriticalAngleAndEachLevelSaysOneFo
     }
     EXPECT_EQ(levels, 3) << "incline at \u03bcs " << mu_s;  // −μs·N, the holding force, −μk·N
   }
+  // Below the critical angle the block holds, and −μk·N is not marked.
+  LessonAt held("incline", {{"angle", "25"}}, 0.0);
+  held.step_to(held.lesson->duration());
+  const Chart chart = plot_chart(*held.lesson, 0, held.lesson->duration(), theme(ThemeName::light), true);
+  ASSERT_EQ(chart.levels.size(), 2u);
+  for (const ChartLevel& level : chart.levels) EXPECT_EQ(level.text.find("\u03bck"), std::string::npos) << level.text;
 }
 
 // In the window (plots side by side, no column beside the data, each a third of the row) a level's text goes by its
