@@ -50,6 +50,9 @@ probe { "speed", unit = "m/s", read = { block, "speed", along = downhill } }
 probe { "friction_force", unit = "N", force = "friction", function() return touch.fx * downhill[1] + touch.fy * downhill[2] end }
 probe { "normal_force", unit = "N", read = { touch, "normal" } }
 
+-- Whether the block breaks away: past the critical angle.
+local function breaks_away() return angle > theory.sticking_angle { mu_s = math.max(param.mu_s, param.mu_k) } end
+
 -- The key plot first (the first page in projector mode): the block stays put while the friction
 -- holding it, m·g·sin θ up the slope, is within the most static friction gives, max(mu_s, mu_k)·N
 -- as the solver's rule has it (tan θ ≤ mu_s: the critical angle); sliding, it drops to
@@ -69,11 +72,7 @@ plot { "Forces from the slope", answer = "θc = " .. critical, y = { "friction_f
     -- Only past the critical angle, where the block slides of itself: below it the block holds
     -- (unless a hand drags it), and in the window's small plot its text took the holding
     -- force's place.
-    { "−μk·N", function()
-        if math.tan(math.rad(param.angle)) > math.max(param.mu_s, param.mu_k) then
-          return -param.mu_k * param.mass * g * math.cos(math.rad(param.angle))
-        end
-      end },
+    { "−μk·N", function() if breaks_away() then return -param.mu_k * param.mass * g * math.cos(math.rad(param.angle)) end end },
   } }
 plot { "Distance down the slope", y = { "distance" } }
 plot { "Speed down the slope", y = { "speed" } }
@@ -82,7 +81,6 @@ plot { "Speed down the slope", y = { "speed" } }
 -- With mu_k above mu_s (the slider allows it), a block that breaks away is stopped at once by
 -- the larger kinetic friction: it holds up to atan(max(mu_s, mu_k)), as the solver's rule does.
 local early_time, late_time = 0.25, 1  -- the run ends at late_time
-local function breaks_away() return angle > theory.sticking_angle { mu_s = math.max(param.mu_s, param.mu_k) } end
 local function exact(t)
   return theory.incline_motion { angle = angle, mu_k = param.mu_k, c = param.c, b = param.b, mass = mass, t = t }
 end
