@@ -422,6 +422,61 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
   }
 }
 
+// Between two moving bodies a contact's friction is a pair, equal and opposite, one on each:
+// drawn from the same dot, stacked_blocks' two 2.2 N frictions between its blocks lay over each
+// other on the surface, and nothing said which block each pushed (a teacher's trial, issue 31).
+// Each is drawn on its own body's side of the surface instead, just inside the body it acts on,
+// as a textbook draws a pair on the two bodies it separates: moved across its own line (its
+// direction, length and moment about the surface's line kept), by one and a half thicknesses,
+// so that the two shafts stand two thicknesses apart. A friction from a body that does not
+// move (the floor) has no drawn partner and stays on the surface. So does one that, once
+// started past its dot (start_frictions_past_their_dots), would cross another force's shaft
+// (the lower block's normal force from the floor, its head just under the surface): a crossing
+// slides the friction away from its dot along its line (uncross_arrows), and a class reads where
+// a force acts off where it starts. `started` starts frictions past their dots.
+void draw_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, const Camera& camera, float thickness,
+                                            const std::function<void(std::vector<ScreenArrow>&)>& started) {
+  std::vector<ScreenArrow> on_the_surface = arrows;
+  started(on_the_surface);
+  std::vector<bool> moved(arrows.size(), false);
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    ScreenArrow& arrow = arrows[i];
+    if (arrow.force.kind != ForceKind::friction || arrow.force.other == nullptr ||
+        arrow.force.other->GetType() != b2_dynamicBody) {
+      continue;
+    }
+    const float reach = arrow.length();
+    if (!(reach > 0.0f)) continue;
+    const ImVec2 unit = mul(sub(arrow.tip, arrow.tail), 1.0f / reach);
+    const ImVec2 across(-unit.y, unit.x);
+    const ImVec2 to_centre = sub(camera.to_screen(arrow.force.body->GetWorldCenter()), arrow.tail);
+    const float side = to_centre.x * across.x + to_centre.y * across.y >= 0.0f ? 1.0f : -1.0f;
+    const ImVec2 shift = mul(across, side * 1.5f * thickness);
+    arrow.tail = add(arrow.tail, shift);
+    arrow.tip = add(arrow.tip, shift);
+    moved[i] = true;
+  }
+  started(arrows);
+  // Whether two shafts, each taken a thickness longer at both ends (a head and halo's reach),
+  // cross. Parallel shafts lie side by side.
+  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
+  const auto crosses = [&](const ScreenArrow& one, const ScreenArrow& other) {
+    const ImVec2 d = sub(one.tip, one.tail), e = sub(other.tip, other.tail), w = sub(other.tail, one.tail);
+    const float denominator = cross2(d, e);
+    if (std::abs(denominator) < 1e-6f * length(d) * length(e)) return false;
+    const float on_one = cross2(w, e) / denominator * length(d), on_other = cross2(w, d) / denominator * length(e);
+    return on_one > -thickness && on_one < length(d) + thickness && on_other > -thickness && on_other < length(e) + thickness;
+  };
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    if (!moved[i]) continue;
+    for (std::size_t j = 0; j < arrows.size(); ++j) {
+      if (j == i || arrows[j].force.kind == ForceKind::weight || !crosses(arrows[i], arrows[j])) continue;
+      arrows[i] = on_the_surface[i];
+      break;
+    }
+  }
+}
+
 // Two arrows whose shafts cross read as a tangle: push's friction, from a contact right of the
 // block's middle, crossed the shaft of the weight, which reaches past the floor, and its push
 // crossed the normal force's (issue 31). Two kinds of force never move along their lines here:
@@ -818,8 +873,10 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   }
   std::vector<ScreenArrow>& arrows = shown.arrows;
   const float mark_radius = contact_dot_radius * fonts.scale;
-  start_frictions_past_their_dots(arrows, shown.marks, camera, mark_radius);
   const float thickness = world_arrow_thickness(fonts.scale);
+  draw_friction_pairs_on_their_own_sides(arrows, camera, thickness, [&](std::vector<ScreenArrow>& frictions_among) {
+    start_frictions_past_their_dots(frictions_among, shown.marks, camera, mark_radius);
+  });
   uncross_arrows(arrows, thickness);
   // A contact's forces are drawn last, over every other: a weight from its centre of mass that
   // passes under a friction's start (push's, spring_pull's) is covered there, and the friction is

@@ -1207,6 +1207,52 @@ TEST(ForceArrows, AFrictionStartsAtItsContactWithNoOtherArrowOverItsStart) {
   EXPECT_GE(checked, 40);
 }
 
+// stacked_blocks while the pair slides on the floor (2 s to 3.5 s; the top block slips from
+// 3.9 s) in the window at 1920 × 1080 in projector mode: of the two frictions
+// between the blocks, equal and opposite, the top block's lies inside the top block, above the
+// surface between them, and the bottom block's inside the bottom block, below it, each shaft
+// wholly a thickness off the surface's line, within two thicknesses of it (on its own side, not
+// wandered off), and its ends within its block's width. Issue 31: drawn from one dot on the
+// surface, the two 2.2 N arrows lay over each other and nothing said which block each pushed.
+TEST(ForceArrows, StackedBlocksFrictionPairBetweenTheBlocksIsDrawnEachInsideItsOwnBlock) {
+  int pairs = 0;
+  projector_lane_at("stacked_blocks", {}, {2.0, 2.5, 3.0, 3.5}, [&](const std::string& where, const draw::FrameRecord::Lane& lane,
+                                                                      const lessons::Lesson& lesson) {
+    const b2Body* top = lesson.scene().body("top");
+    const b2Body* bottom = lesson.scene().body("bottom");
+    ASSERT_TRUE(top != nullptr && bottom != nullptr) << where;
+    // The surface between the blocks, on the screen: the top block's lowest point.
+    const b2AABB top_box = lessons::body_box(top);
+    const float surface = lane.camera.to_screen(top_box.lowerBound).y;
+    const float left = lane.camera.to_screen(lessons::body_box(bottom).lowerBound).x;
+    const float right = lane.camera.to_screen(lessons::body_box(bottom).upperBound).x;
+    const draw::LabelPlacer::ForceLabel* on_top = nullptr;
+    const draw::LabelPlacer::ForceLabel* on_bottom = nullptr;
+    for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+      if (force.kind != ForceKind::friction) continue;
+      if (force.body == top) on_top = &force;
+      // Of the bottom block's two frictions, the floor's lies at its foot, far below the surface.
+      const float floor = lane.camera.to_screen(lessons::body_box(bottom).lowerBound).y;
+      if (force.body == bottom && std::abs(force.arrow.from.y - surface) < std::abs(force.arrow.from.y - floor)) on_bottom = &force;
+    }
+    ASSERT_TRUE(on_top != nullptr && on_bottom != nullptr) << where << ": both frictions between the blocks drawn";
+    ++pairs;
+    for (const auto* force : {on_top, on_bottom}) {
+      const float thickness = 2.0f * force->arrow.half_width;
+      const float side = force == on_top ? -1.0f : 1.0f;  // screen y grows downward
+      for (const ImVec2 end : {force->arrow.from, force->arrow.to}) {
+        const float off = side * (end.y - surface);
+        EXPECT_GE(off, thickness) << where << ": the friction " << force->text << " on the "
+                                  << (force == on_top ? "top" : "bottom") << " block lies " << off
+                                  << " px into its own block from the surface between them";
+        EXPECT_LE(off, 2.0f * thickness) << where << ": the friction " << force->text << " lies " << off << " px off the surface";
+        EXPECT_TRUE(end.x > left && end.x < right) << where << ": the friction " << force->text << " ends at x = " << end.x;
+      }
+    }
+  });
+  EXPECT_EQ(pairs, 4);
+}
+
 // The legend's number is where the world's arrows turn to dashes, and it holds all through the
 // run (a teacher's trial on a projector, issue 31). Push at 0.5 to 1 s drew its 1.99 N push and
 // friction solid, 27.9 px (the drawing counted a length within half a pixel of the legible 28 px
