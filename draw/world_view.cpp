@@ -897,6 +897,22 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     draw_label(draw, label.font, labels.place(label.wanted, size, label.text, true), label.colour, label.background,
                label.text.c_str());
   }
+  // Before the first step no contact, spring or rope has been solved, and the weight alone is
+  // drawn: a block at rest on its floor looked pushed down by a force nothing balanced (a
+  // teacher's trial, issue 31). The view says when the others come, as the free-body inset
+  // does, above the lesson's body, in the lane that draws it; where no free place near holds the
+  // words whole (a thin lane, the tools' readings), it says nothing rather than cover them.
+  const b2Body* main = main_body(scene);
+  if (scene.frame() == 0 && drawn_arrows != WorldArrows::none && main != nullptr &&
+      (labelled == nullptr || std::find(labelled->begin(), labelled->end(), main) != labelled->end())) {
+    const char* text = "the other forces appear once the run starts";
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, text);
+    const b2AABB box = lessons::body_box(main);
+    const ImVec2 above = camera.to_screen(b2Vec2(0.5f * (box.lowerBound.x + box.upperBound.x), box.upperBound.y));
+    const std::optional<ImVec2> at =
+        labels.place_if_free(ImVec2(above.x, above.y - 1.5f * fonts.body->FontSize), size, text, true);
+    if (at) draw_label(draw, fonts.body, *at, theme.text, theme.panel, text);
+  }
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
   std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool, bool>> said;
   std::vector<const ContactMark*> worded;
