@@ -602,11 +602,26 @@ void mark_arrows_over_their_like(std::vector<ScreenArrow>& arrows, const Scene& 
 
 // A body on feet has a normal force at each foot: each drawn, their sum labelled once, at the
 // longest (each foot's own value is a probe away). One label per foot crowds the picture.
-std::vector<std::string> force_value_texts(const std::vector<ScreenArrow>& arrows) {
+// A friction between two moving bodies names the body it acts on: of stacked_blocks' two
+// 2.20 N frictions between the blocks, equal and opposite, nothing said which pushed which
+// block, and the bottom block's backward friction, its value beside the top block, read as the
+// top block's, the answer the lesson asks the class for turned round (a teacher's trial, issue
+// 31). A friction from a body that does not move has no partner drawn, and its value stays a
+// number. (The pair's normal forces keep theirs short: each points into its own block, and
+// "9.81 N on bottom" found no place wholly on or off the bottom block on a projector.)
+std::vector<std::string> force_value_texts(const std::vector<ScreenArrow>& arrows, const Scene& scene) {
+  const auto name_of = [&](const b2Body* body) -> std::string {
+    for (const auto& [name, named] : scene.bodies()) {
+      if (named == body) return name;
+    }
+    return {};
+  };
   std::vector<std::string> texts(arrows.size());
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     const ForceOnBody& force = arrows[i].force;
     texts[i] = format_quantity(force.force.Length(), "N");
+    const bool paired = force.kind == ForceKind::friction && force.other != nullptr && force.other->GetType() == b2_dynamicBody;
+    if (paired && !name_of(force.body).empty()) texts[i] += " on " + name_of(force.body);
     if (force.kind != ForceKind::normal) continue;
     int count = 0;
     b2Vec2 sum{0.0f, 0.0f};
@@ -933,7 +948,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     for (const TorqueArc& arc : shown.torques) values.push_back(place_torque_value(arc, fonts.body, thickness, placer));
     return values;
   };
-  const std::vector<std::string> texts = force_value_texts(arrows);
+  const std::vector<std::string> texts = force_value_texts(arrows, scene);
   // The contacts' words by their dots first, then the torques' and forces' values.
   LabelPlacer words_placer = labels;
   std::vector<PlacedWord> words = place_words(words_placer);

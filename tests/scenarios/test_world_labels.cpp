@@ -237,7 +237,9 @@ TEST(WorldLabels, TheSlopesAngleTheDrivenWordAndTheForcesValuesKeepOffTheBodiesA
             const auto ends = [&](const std::string& tail) {
               return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
             };
-            if (ends(" N") || ends(" N\u00b7m") || ends(" in all")) continue;
+            // (A friction between two moving bodies names the body it acts on: "2.20 N on top".)
+            const bool names_its_body = text.find(" N on ") != std::string::npos;
+            if (ends(" N") || ends(" N\u00b7m") || ends(" in all") || names_its_body) continue;
             const ImVec4 label = drawn(lane.labels[i]);
             for (const auto& [name, body] : at.lesson->scene().bodies()) {
               if (body->GetType() != b2_dynamicBody) continue;
@@ -1233,8 +1235,10 @@ TEST(WorldLabels, AtTheStartTheWorldSaysTheOtherForcesComeWithTheRun) {
 // between the blocks, equal and opposite, the top block's lies inside the top block, above the
 // surface between them, and the bottom block's inside the bottom block, below it, each shaft
 // wholly a thickness off the surface's line, within two thicknesses of it (on its own side, not
-// wandered off), and its ends within its block's width. Issue 31: drawn from one dot on the
-// surface, the two 2.2 N arrows lay over each other and nothing said which block each pushed.
+// wandered off), and its ends within its block's width; and each value names its block ("2.20 N
+// on top"). Issue 31: drawn from one dot on the surface, the two 2.2 N arrows lay over each other
+// and nothing said which block each pushed; the bottom block's value, beside the top block, was
+// read as the top block's friction pushing it back.
 TEST(ForceArrows, StackedBlocksFrictionPairBetweenTheBlocksIsDrawnEachInsideItsOwnBlock) {
   int pairs = 0;
   projector_lane_at("stacked_blocks", {}, {2.0, 2.5, 3.0, 3.5}, [&](const std::string& where, const draw::FrameRecord::Lane& lane,
@@ -1258,6 +1262,17 @@ TEST(ForceArrows, StackedBlocksFrictionPairBetweenTheBlocksIsDrawnEachInsideItsO
     }
     ASSERT_TRUE(on_top != nullptr && on_bottom != nullptr) << where << ": both frictions between the blocks drawn";
     ++pairs;
+    // Each value names the block it acts on; the floor's friction, which has no partner drawn, does not.
+    const auto ends_with = [](const std::string& text, const std::string& tail) {
+      return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    EXPECT_TRUE(ends_with(on_top->text, " N on top")) << where << ": \"" << on_top->text << "\"";
+    EXPECT_TRUE(ends_with(on_bottom->text, " N on bottom")) << where << ": \"" << on_bottom->text << "\"";
+    for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+      if (force.kind == ForceKind::friction && &force != on_top && &force != on_bottom) {
+        EXPECT_TRUE(ends_with(force.text, " N")) << where << ": the floor's friction reads \"" << force.text << "\"";
+      }
+    }
     for (const auto* force : {on_top, on_bottom}) {
       const float thickness = 2.0f * force->arrow.half_width;
       const float side = force == on_top ? -1.0f : 1.0f;  // screen y grows downward
