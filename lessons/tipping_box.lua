@@ -70,8 +70,18 @@ local crate = box { "box", material = "crate", width = width, height = height, o
 -- box's top (the sliders allow it), it acts through a rigid handle fixed to the box's side, and
 -- theory's d/(2·mu_s) holds all the same. The box stands on its bottom face, so that plane is
 -- the face itself.
+-- The hand pushes while the box leans less than its balance angle, atan(width/height): past it
+-- the box falls over by itself, away from the hand. (A push still growing at that point of the
+-- fallen box dragged it along the floor by what had been its side: played on past the run's end,
+-- a teacher saw a 69.9 N arrow pointing away from the box, like a pull.) The tilt is the last
+-- step's, as recorded.
+local balance_angle = math.deg(math.atan(width / height))
 local push = force { "push", on = crate, at = { -width / 2, push_height - height / 2 },
-                     force = function(t) return push_rate * t, 0 end }
+                     force = function(t)
+                       local tilts = history("tilt")
+                       if #tilts > 0 and math.abs(tilts[#tilts]) >= balance_angle then return 0, 0 end
+                       return push_rate * t, 0
+                     end }
 
 -- Probes and plots ------------------------------------------------------------------------
 local touch = contact(crate, floor)
