@@ -28,6 +28,23 @@ float crossing_along(const DrawnSegment& a, const DrawnSegment& b) {
   return (w.x * e.y - w.y * e.x) / denominator * length(d);
 }
 
+// Whether a box (x0, y0, x1, y1) and a segment's centre line lie more than `reach` and a pixel
+// apart along x or along y: then no distance between them is `reach` or less, and the exact
+// gap() need not be taken. (The placer asks gap() of every arrow and line for each of hundreds
+// of places round a crowded value, a hypot each: contact_area's three thin lanes on a projector
+// spent 17 ms a frame placing values; the pixel keeps the answer the same whatever gap()'s
+// rounding.)
+bool far_apart(const ImVec4& box, const DrawnSegment& segment, float reach) {
+  const float margin = reach + 1.0f;
+  return std::min(segment.from.x, segment.to.x) > box.z + margin || std::max(segment.from.x, segment.to.x) < box.x - margin ||
+         std::min(segment.from.y, segment.to.y) > box.w + margin || std::max(segment.from.y, segment.to.y) < box.y - margin;
+}
+
+ImVec4 bounds_of(const DrawnSegment& segment) {
+  return ImVec4(std::min(segment.from.x, segment.to.x), std::min(segment.from.y, segment.to.y),
+                std::max(segment.from.x, segment.to.x), std::max(segment.from.y, segment.to.y));
+}
+
 }  // namespace
 
 float gap(const DrawnSegment& a, const DrawnSegment& b) {
@@ -72,6 +89,12 @@ bool overlaps(const ImVec4& box, const DrawnSegment& segment) {
   // clipping: the part of the line inside the box is empty or not).
   const float x0 = box.x - segment.half_width, y0 = box.y - segment.half_width;
   const float x1 = box.z + segment.half_width, y1 = box.w + segment.half_width;
+  // Both ends beyond one side: no part inside (the placer's usual case, asked of every label,
+  // mark and line for each place it tries).
+  if ((segment.from.x < x0 && segment.to.x < x0) || (segment.from.x > x1 && segment.to.x > x1) ||
+      (segment.from.y < y0 && segment.to.y < y0) || (segment.from.y > y1 && segment.to.y > y1)) {
+    return false;
+  }
   const float dx = segment.to.x - segment.from.x, dy = segment.to.y - segment.from.y;
   float enter = 0.0f, leave = 1.0f;
   const float p[4] = {-dx, dx, -dy, dy};
@@ -122,15 +145,17 @@ bool LabelPlacer::beside(ImVec2 centre, ImVec2 size, const DrawnSegment& own) co
   const auto same = [&](const DrawnSegment& other) {
     return other.from.x == own.from.x && other.from.y == own.from.y && other.to.x == own.to.x && other.to.y == own.to.y;
   };
-  return std::none_of(arrows_.begin(), arrows_.end(),
-                      [&](const DrawnSegment& other) { return !same(other) && gap(box, other) <= own_gap + 1.0f; });
+  return std::none_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
+    return !same(other) && !far_apart(box, other, own_gap + 1.0f) && gap(box, other) <= own_gap + 1.0f;
+  });
 }
 
 bool LabelPlacer::nearest_to_own(ImVec2 centre, ImVec2 size, const DrawnSegment& own) const {
   const ImVec4 box(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
   const float own_gap = gap(box, own);
-  return std::none_of(arrows_.begin(), arrows_.end(),
-                      [&](const DrawnSegment& other) { return !same_ends(other, own) && gap(box, other) <= own_gap; });
+  return std::none_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& other) {
+    return !same_ends(other, own) && !far_apart(box, other, own_gap) && gap(box, other) <= own_gap;
+  });
 }
 
 bool LabelPlacer::clear(const ImVec4& box, bool off_bodies) const {
@@ -273,8 +298,9 @@ bool LabelPlacer::leader_clear(ImVec2 place, ImVec2 size, const DrawnSegment& ow
     return std::any_of(arrows_.begin(), arrows_.end(), [&](const DrawnSegment& arrow) { return same_ends(arrow, segment); });
   };
   // A leader that runs by a line's end within its own width meets it as one across it does.
+  const ImVec4 leader_bounds = bounds_of(leader);
   const bool on_line = std::any_of(segments_.begin(), segments_.end(), [&](const DrawnSegment& other) {
-    return !is_arrow(other) && gap(leader, other) < leader.half_width;
+    return !far_apart(leader_bounds, other, leader.half_width) && !is_arrow(other) && gap(leader, other) < leader.half_width;
   });
   // Another arrow is avoided by its centre line: the leader starts on its own arrow, within
   // the kept-off width of an arrow that starts where it does (a normal force and a friction
@@ -316,19 +342,34 @@ std::optional<ImVec2> LabelPlacer::place_with_leader(ImVec2 wanted, ImVec2 size,
     std::optional<ImVec2> nearest;
     float nearest_gap = std::numeric_limits<float>::max();
     bool nearest_apart = false;
+    // Moved inside the view, as candidates() moves them: the room by its edge counts too. Rows
+    // and columns moved onto the one before are the same places, tried once (a projector's thin
+    // lanes moved most of the grid's rows onto their edges).
+    float last_row = std::numeric_limits<float>::quiet_NaN();
     for (float y = low.y; y <= high.y; y += step) {
+      const float row = moved_inside(ImVec2(low.x, y), size).y;
+      if (row == last_row) continue;
+      last_row = row;
+      float last_column = std::numeric_limits<float>::quiet_NaN();
       for (float x = low.x; x <= high.x; x += step) {
-        // Moved inside the view, as candidates() moves them: the room by its edge counts too.
         const ImVec2 place = moved_inside(ImVec2(x, y), size);
+        if (place.x == last_column) continue;
+        last_column = place.x;
         const ImVec4 box = box_around(place, size);
         const float own_gap = gap(box, own);
-        const bool is_apart = apart(box);
-        if ((nearest_apart && !is_apart) || (own_gap >= nearest_gap && is_apart == nearest_apart) || !clear(box, false) ||
-            (!on_bodies && !off_other_bodies(box, own_body)) || (need_off_outlines && !off_outlines(box)) ||
+        // Apart from the other labels matters only against a place found already, and for the
+        // one kept.
+        if (nearest && own_gap >= nearest_gap && !nearest_apart) {
+          // No nearer, and not apart where the kept one is not either: only apartness could win.
+          if (!apart(box)) continue;
+        } else if (nearest && nearest_apart && (own_gap >= nearest_gap || !apart(box))) {
+          continue;
+        }
+        if (!clear(box, false) || (!on_bodies && !off_other_bodies(box, own_body)) || (need_off_outlines && !off_outlines(box)) ||
             !nearest_to_own(place, size, own) || !leader_clear(place, size, own, false)) {
           continue;
         }
-        nearest_gap = own_gap, nearest = place, nearest_apart = is_apart;
+        nearest_gap = own_gap, nearest = place, nearest_apart = apart(box);
       }
     }
     return nearest;
@@ -344,13 +385,30 @@ std::optional<ImVec2> LabelPlacer::place_with_leader(ImVec2 wanted, ImVec2 size,
   // And, at each of those, first where no other arrow is nearer the value than its own: a value with a leader
   // beside another arrow is read as that one's (issue 31: stacked_blocks' pressing force, 9.81 N,
   // sat by the bottom block's weight, 27 px from it and 43 px from its own arrow).
+  // Each place's answers are kept across the eight passes (taken as first asked): the placer
+  // does not change meanwhile, and asking them again for each of a few hundred places made this
+  // most of a crowded frame's cost.
+  enum class Answer : char { unknown, no, yes };
+  struct Tried {
+    Answer clear = Answer::unknown, off_others = Answer::unknown, nearest = Answer::unknown;
+    Answer leader[2] = {Answer::unknown, Answer::unknown};
+  };
+  std::vector<Tried> tried(further.size());
+  const auto ask = [](Answer& kept, const auto& question) {
+    if (kept == Answer::unknown) kept = question() ? Answer::yes : Answer::no;
+    return kept == Answer::yes;
+  };
   for (const bool on_bodies : {false, true}) {
     for (const bool across_lines : {false, true}) {
       for (const bool nearest_first : {true, false}) {
-        for (const ImVec2& place : further) {
+        for (std::size_t k = 0; k < further.size(); ++k) {
+          const ImVec2& place = further[k];
+          Tried& t = tried[k];
           const ImVec4 box = box_around(place, size);
-          if (clear(box, false) && (on_bodies || off_other_bodies(box, own_body)) &&
-              (!nearest_first || nearest_to_own(place, size, own)) && leader_clear(place, size, own, across_lines)) {
+          if (ask(t.clear, [&] { return clear(box, false); }) &&
+              (on_bodies || ask(t.off_others, [&] { return off_other_bodies(box, own_body); })) &&
+              (!nearest_first || ask(t.nearest, [&] { return nearest_to_own(place, size, own); })) &&
+              ask(t.leader[across_lines ? 1 : 0], [&] { return leader_clear(place, size, own, across_lines); })) {
             return place;
           }
         }
