@@ -422,19 +422,22 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
   }
 }
 
-// Between two moving bodies a contact's friction is a pair, equal and opposite, one on each:
+// Between two dynamic bodies (moved by their forces) a contact's friction is a pair, equal and
+// opposite, one on each:
 // drawn from the same dot, stacked_blocks' two 2.2 N frictions between its blocks lay over each
 // other on the surface, and nothing said which block each pushed (a teacher's trial, issue 31).
 // Each is drawn on its own body's side of the surface instead, just inside the body it acts on,
 // as a textbook draws a pair on the two bodies it separates: moved across its own line (its
-// direction, length and moment about the surface's line kept), by one and a half thicknesses,
+// direction and length kept), by one and a half thicknesses,
 // so that the two shafts stand two thicknesses apart. A friction from a body that does not
-// move (the floor) has no drawn partner and stays on the surface. So does one that, once
-// started past its dot (start_frictions_past_their_dots), would cross another force's shaft
+// move by its forces (the floor, a driven plank) has no drawn partner and stays on the surface.
+// So does one that, once started past its dot (start_frictions_past_their_dots), would cross
+// another force's shaft but a weight's (a weight is drawn beneath a contact's forces)
 // (the lower block's normal force from the floor, its head just under the surface): a crossing
 // slides the friction away from its dot along its line (uncross_arrows), and a class reads where
-// a force acts off where it starts. `started` starts frictions past their dots.
-void draw_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, const Camera& camera, float thickness,
+// a force acts off where it starts. `started` starts frictions past their dots. Until no
+// friction goes back: one put back may clear the way of another put back before it.
+void place_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, const Camera& camera, float thickness,
                                             const std::function<void(std::vector<ScreenArrow>&)>& started) {
   std::vector<ScreenArrow> on_the_surface = arrows;
   started(on_the_surface);
@@ -457,8 +460,9 @@ void draw_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, co
     moved[i] = true;
   }
   started(arrows);
-  // Whether two shafts, each taken a thickness longer at both ends (a head and halo's reach),
-  // cross. Parallel shafts lie side by side.
+  // Whether two centre lines, each taken a thickness longer at both ends, cross: a margin for
+  // the heads and outlines (a rough one: uncross_arrows measures a head's reach exactly, and
+  // slides what this leaves). Parallel shafts lie side by side.
   const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
   const auto crosses = [&](const ScreenArrow& one, const ScreenArrow& other) {
     const ImVec2 d = sub(one.tip, one.tail), e = sub(other.tip, other.tail), w = sub(other.tail, one.tail);
@@ -467,12 +471,17 @@ void draw_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, co
     const float on_one = cross2(w, e) / denominator * length(d), on_other = cross2(w, d) / denominator * length(e);
     return on_one > -thickness && on_one < length(d) + thickness && on_other > -thickness && on_other < length(e) + thickness;
   };
-  for (std::size_t i = 0; i < arrows.size(); ++i) {
-    if (!moved[i]) continue;
-    for (std::size_t j = 0; j < arrows.size(); ++j) {
-      if (j == i || arrows[j].force.kind == ForceKind::weight || !crosses(arrows[i], arrows[j])) continue;
-      arrows[i] = on_the_surface[i];
-      break;
+  for (bool put_back = true; put_back;) {
+    put_back = false;
+    for (std::size_t i = 0; i < arrows.size(); ++i) {
+      if (!moved[i]) continue;
+      for (std::size_t j = 0; j < arrows.size(); ++j) {
+        if (j == i || arrows[j].force.kind == ForceKind::weight || !crosses(arrows[i], arrows[j])) continue;
+        arrows[i] = on_the_surface[i];
+        moved[i] = false;
+        put_back = true;
+        break;
+      }
     }
   }
 }
@@ -889,7 +898,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   std::vector<ScreenArrow>& arrows = shown.arrows;
   const float mark_radius = contact_dot_radius * fonts.scale;
   const float thickness = world_arrow_thickness(fonts.scale);
-  draw_friction_pairs_on_their_own_sides(arrows, camera, thickness, [&](std::vector<ScreenArrow>& frictions_among) {
+  place_friction_pairs_on_their_own_sides(arrows, camera, thickness, [&](std::vector<ScreenArrow>& frictions_among) {
     start_frictions_past_their_dots(frictions_among, shown.marks, camera, mark_radius);
   });
   uncross_arrows(arrows, thickness);

@@ -1101,7 +1101,9 @@ local function stopped_where_the_model_slid_on_by(t)
       local gap, drift_speed = start_drift(at)
       local _, stepped_speed = stepping_gap(at)
       local off_speed = math.max(drift_speed, stepped_speed) + landings_speed_shifted(at)
-      local turning_in = math.max(math.abs(a_before), math.abs(a_after))
+      -- (The speed's mean change across the reversal's step: the larger side's would make the
+      -- time too short a bound, the smaller's, near a stop of the drive, too long.)
+      local turning_in = math.abs(v_next - v) / spacing
       local off_time = turning_in > 0 and off_speed / turning_in or math.huge
       local rate = math.abs(d_after - d_before) / spacing  -- N/s across the reversal
       local rate_before = k >= 3 and math.abs(d_before - demand(k - 1, (turning.speed[k - 1] - turning.speed[k - 2]) / spacing)) / spacing or 0
