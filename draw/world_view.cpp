@@ -422,6 +422,10 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
   }
 }
 
+// The cross product's z of two screen vectors: which way one turns from the other, and by how
+// much (for where two arrows' lines meet).
+float cross2(ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; }
+
 // Between two dynamic bodies (moved by their forces) a contact's friction is a pair, equal and
 // opposite, one on each:
 // drawn from the same dot, stacked_blocks' two 2.2 N frictions between its blocks lay over each
@@ -463,7 +467,6 @@ void place_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, c
   // Whether two centre lines, each taken a thickness longer at both ends, cross: a margin for
   // the heads and outlines (a rough one: uncross_arrows measures a head's reach exactly, and
   // slides what this leaves). Parallel shafts lie side by side.
-  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
   const auto crosses = [&](const ScreenArrow& one, const ScreenArrow& other) {
     const ImVec2 d = sub(one.tip, one.tail), e = sub(other.tip, other.tail), w = sub(other.tail, one.tail);
     const float denominator = cross2(d, e);
@@ -503,7 +506,6 @@ void place_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, c
 // the shorter slides forward until it starts a thickness past the longer's shaft.
 // Crossings within half a thickness of the mover's tail are forces starting together, and stay.
 void uncross_arrows(std::vector<ScreenArrow>& arrows, float thickness) {
-  const auto cross2 = [](ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; };
   const auto at_contact = [](const ScreenArrow& arrow) {
     return arrow.force.kind == ForceKind::friction || arrow.force.kind == ForceKind::normal;
   };
@@ -619,18 +621,12 @@ void mark_arrows_over_their_like(std::vector<ScreenArrow>& arrows, const Scene& 
 // number. (The pair's normal forces keep theirs short: each points into its own block, and
 // "9.81 N on bottom" found no place wholly on or off the bottom block on a projector.)
 std::vector<std::string> force_value_texts(const std::vector<ScreenArrow>& arrows, const Scene& scene) {
-  const auto name_of = [&](const b2Body* body) -> std::string {
-    for (const auto& [name, named] : scene.bodies()) {
-      if (named == body) return name;
-    }
-    return {};
-  };
   std::vector<std::string> texts(arrows.size());
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     const ForceOnBody& force = arrows[i].force;
     texts[i] = format_quantity(force.force.Length(), "N");
     const bool paired = force.kind == ForceKind::friction && force.other != nullptr && force.other->GetType() == b2_dynamicBody;
-    if (paired && !name_of(force.body).empty()) texts[i] += " on " + name_of(force.body);
+    if (paired) texts[i] += " on " + scene.name_of(force.body);
     if (force.kind != ForceKind::normal) continue;
     int count = 0;
     b2Vec2 sum{0.0f, 0.0f};

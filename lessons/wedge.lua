@@ -661,7 +661,8 @@ end
 -- band here would excuse a world that holds on 2 % past μ·N, which the rows exist to catch.
 local grazing_for, grazing_scanned, grazing_at, grazing_path
 -- The world's record from `from` to `to` (s): whether the block broke away there (a step
--- recorded slipping after one recorded not), and whether it was recorded slipping at all.
+-- recorded slipping after one recorded not), whether it was recorded slipping at all, and
+-- whether it was recorded stuck (not slipping) at any step.
 local function world_between(from, to)
   local times, slipping = history("time"), history("slipping")
   local low, high = 1, #times
@@ -669,15 +670,17 @@ local function world_between(from, to)
     local middle = (low + high) // 2
     if times[middle] < from then low = middle + 1 else high = middle end
   end
-  local broke, slipped = false, false
+  local broke, slipped, held = false, false, false
   for i = low, #times do
     if times[i] > to then break end
     if slipping[i] == 1 then
       slipped = true
       if i > 1 and slipping[i - 1] == 0 then broke = true end
+    else
+      held = true
     end
   end
-  return broke, slipped
+  return broke, slipped, held
 end
 -- Single precision: a step's contact impulses keep that step's roundings of the block's
 -- velocity, (1 + 9·k)·2^-24 of it over h for k = 4 constraints (two points, normal and
@@ -922,7 +925,6 @@ local through_for, through = nil, {}
 local function slid_through_a_stop_by(t)
   if through_for ~= horizon then through_for, through = horizon, {} end
   if through[t] ~= nil then return through[t] or nil end
-  local times, slipping = history("time"), history("slipping")
   for _, event in ipairs(turning.events) do
     if event.kind == "stop" and event.t <= t then
       local after = floor(event.t / spacing) + 2  -- the first sample after the stop
@@ -932,14 +934,7 @@ local function slid_through_a_stop_by(t)
       if held_until - event.t >= record_lag then
         local to = event.t + record_lag
         if time() < to then return nil end
-        local held = false
-        for i = 1, #times do
-          if times[i] > to then break end
-          if times[i] >= event.t - record_lag and slipping[i] == 0 then
-            held = true
-            break
-          end
-        end
+        local _, _, held = world_between(event.t - record_lag, to)
         if not held then
           through[t] = "slid through a stop: no model"
           return through[t]
@@ -1037,11 +1032,17 @@ end
 -- The world's record is read over where the model's block may stop, and the record's lag either
 -- side: the low's samples within the speed's bound of 0, or the reversal and the time the world's
 -- may turn round off it.
+-- What the world's sliding speed may sit off the model's at `at` (m/s), and the gap (m) the
+-- start's drift leaves there.
+local function speed_off(at)
+  local gap, drift_speed = start_drift(at)
+  local _, stepped_speed = stepping_gap(at)
+  return math.max(drift_speed, stepped_speed) + landings_speed_shifted(at), gap
+end
 local near_for, near = nil, {}
 local function stopped_where_the_model_slid_on_by(t)
   if near_for ~= horizon then near_for, near = horizon, {} end
   if near[t] ~= nil then return near[t] or nil end
-  local times, slipping = history("time"), history("slipping")
   local last = math.min(sample(t), #turning.contact - 1)
   local function sliding(k) return turning.contact[k] == "slipping" end
   -- The model's samples may straddle a stop of its own shorter than their spacing (a level plank
@@ -1060,10 +1061,8 @@ local function stopped_where_the_model_slid_on_by(t)
                 and v * turning.speed[k + 1] > 0
     if low and not stops_between((k - 2) * spacing, k * spacing) then
       local at = (k - 1) * spacing
-      local _, drift_speed = start_drift(at)
-      local _, stepped_speed = stepping_gap(at)
       local step_change = math.abs(turning.speed[k + 1] - turning.speed[k - 1]) / (2 * spacing) * substep_length()
-      local off = math.max(drift_speed, stepped_speed) + landings_speed_shifted(at) + step_change
+      local off = speed_off(at) + step_change
       if math.abs(v) <= off then
         local first, final = k, k
         while first > 1 and sliding(first - 1) and math.abs(turning.speed[first - 1]) <= off do first = first - 1 end
@@ -1072,12 +1071,10 @@ local function stopped_where_the_model_slid_on_by(t)
         end
         local from, to = (first - 1) * spacing - record_lag, (final - 1) * spacing + record_lag
         if time() < to then return nil end
-        for i = 1, #times do
-          if times[i] > to then break end
-          if times[i] >= from and slipping[i] == 0 then
-            near[t] = "stopped where the model slid on: no model"
-            return near[t]
-          end
+        local _, _, held = world_between(from, to)
+        if held then
+          near[t] = "stopped where the model slid on: no model"
+          return near[t]
         end
       end
     end
@@ -1098,9 +1095,7 @@ local function stopped_where_the_model_slid_on_by(t)
       local limit = math.max(param.mu_s, param.mu_k)
       local margin = math.abs(d_before + share * (d_after - d_before))
                      - limit * (turning.normal[k] + share * (turning.normal[k + 1] - turning.normal[k]))
-      local gap, drift_speed = start_drift(at)
-      local _, stepped_speed = stepping_gap(at)
-      local off_speed = math.max(drift_speed, stepped_speed) + landings_speed_shifted(at)
+      local off_speed, gap = speed_off(at)
       -- (The speed's mean change across the reversal's step: the larger side's would make the
       -- time too short a bound, the smaller's, near a stop of the drive, too long.)
       local turning_in = math.abs(v_next - v) / spacing
@@ -1111,12 +1106,10 @@ local function stopped_where_the_model_slid_on_by(t)
       if margin <= demand_uncertainty(k, gap, limit) + rate * off_time then
         local from, to = at - off_time - record_lag, at + off_time + record_lag
         if time() < to then return nil end
-        for i = 1, #times do
-          if times[i] > to then break end
-          if times[i] >= from and slipping[i] == 0 then
-            near[t] = "stopped where the model slid on: no model"
-            return near[t]
-          end
+        local _, _, held = world_between(from, to)
+        if held then
+          near[t] = "stopped where the model slid on: no model"
+          return near[t]
         end
       end
     end

@@ -147,6 +147,7 @@ class Scene {
   b2Body* add_box(const std::string& name, b2BodyType type, const std::string& material, b2Vec2 center,
                   float width, float height, float angle = 0.0f, float skin = b2_polygonRadius);
   b2Body* body(const std::string& name) const;  // throws InvalidInput listing the known names
+  std::string name_of(const b2Body* body) const;  // "(unnamed)" for a body the scene did not make
   // Whether bodies of these two materials are in the scene where they can rub: both in use,
   // one of them on a dynamic body (Box2D makes no contact between two fixed ones), and a
   // material with itself only on two bodies.
@@ -274,7 +275,6 @@ class Scene {
   // The material's id, once it has friction values with every material already in the scene.
   int check_material(const std::string& material, b2BodyType type) const;
   void check_new_name(const std::string& name) const;
-  std::string name_of(const b2Body* body) const;
   void check_placement(const std::string& name, b2Vec2 position, float angle) const;
   // "Model no more than a scene needs": a body that has come to rest on fixed bodies, every
   // contact stuck (stick-slip) and nothing but gravity acting on it, stays where it is: static

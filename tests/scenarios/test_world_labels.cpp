@@ -1263,14 +1263,11 @@ TEST(ForceArrows, StackedBlocksFrictionPairBetweenTheBlocksIsDrawnEachInsideItsO
     ASSERT_TRUE(on_top != nullptr && on_bottom != nullptr) << where << ": both frictions between the blocks drawn";
     ++pairs;
     // Each value names the block it acts on; the floor's friction, which has no partner drawn, does not.
-    const auto ends_with = [](const std::string& text, const std::string& tail) {
-      return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-    };
-    EXPECT_TRUE(ends_with(on_top->text, " N on top")) << where << ": \"" << on_top->text << "\"";
-    EXPECT_TRUE(ends_with(on_bottom->text, " N on bottom")) << where << ": \"" << on_bottom->text << "\"";
+    EXPECT_TRUE(on_top->text.ends_with(" N on top")) << where << ": \"" << on_top->text << "\"";
+    EXPECT_TRUE(on_bottom->text.ends_with(" N on bottom")) << where << ": \"" << on_bottom->text << "\"";
     for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
       if (force.kind == ForceKind::friction && &force != on_top && &force != on_bottom) {
-        EXPECT_TRUE(ends_with(force.text, " N")) << where << ": the floor's friction reads \"" << force.text << "\"";
+        EXPECT_TRUE(force.text.ends_with(" N")) << where << ": the floor's friction reads \"" << force.text << "\"";
       }
     }
     for (const auto* force : {on_top, on_bottom}) {
