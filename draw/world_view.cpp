@@ -297,13 +297,14 @@ struct PlacedWord {
   std::string text;
   std::optional<ImVec2> at;
   bool near_dot = false;  // within a line (its height) of the dot's rim, where a class reads it as the dot's
+  std::optional<DrawnSegment> leader;  // from the dot's rim to the word, where it stands further off
 };
 
 // `kept`: where it stood when placed before the values, taken again where that is still free.
 PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, const Fonts& fonts, LabelPlacer& labels,
                               const PlacedWord* kept = nullptr) {
   const ImVec2 at = camera.to_screen(mark.point);
-  PlacedWord word{&mark, contact_word(mark), std::nullopt, false};
+  PlacedWord word{&mark, contact_word(mark), std::nullopt, false, std::nullopt};
   const std::string& text = word.text;
   const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, text.c_str());
   if (kept != nullptr && kept->at && labels.free(LabelPlacer::box_around(*kept->at, size), false)) {
@@ -380,13 +381,79 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
     word.near_dot = true;
     return word;
   }
-  word.at = labels.place_if_free(first, size, text);
-  if (word.at) word.near_dot = off_rim(*word.at) <= size.y;
+  // None free there either: the nearest free place around the first, if that is within a line
+  // of the dot's rim still (anywhere round it, as the place of last resort).
+  LabelPlacer searched = labels;
+  const std::optional<ImVec2> anywhere = searched.place_if_free(first, size, text);
+  if (anywhere && off_rim(*anywhere) <= size.y) {
+    labels = std::move(searched);
+    word.at = anywhere;
+    word.near_dot = true;
+    return word;
+  }
+  // Else the nearest free place under the surface from which a thin line in the word's colour,
+  // from the dot's rim to the word's box and no longer than a value's leader, crosses no arrow
+  // (but within a line of the dot, where the contact's own forces start), no label and no other
+  // mark. Placed wherever it was free, stacked_blocks' "sticking" stood 131 px from its dot on a
+  // projector, in the middle of the bottom block, from 2 s to the top block's slip (a teacher's
+  // trial, issue 31).
+  const float longest = LabelPlacer::longest_leader(size);
+  const float leader_reach_x = 0.5f * size.x + rim + longest, leader_reach_y = 0.5f * size.y + rim + longest;
+  const float quarter = 0.25f * size.y;
+  const auto leader_to = [&](const ImVec4& box) {
+    const ImVec2 on_box(std::clamp(at.x, box.x, box.z), std::clamp(at.y, box.y, box.w));
+    const ImVec2 way = sub(on_box, at);
+    const float reach = length(way);
+    const ImVec2 unit = reach > 0.0f ? mul(way, 1.0f / reach) : ImVec2(0.0f, 1.0f);
+    return DrawnSegment{add(at, mul(unit, rim + 1.5f)), on_box, 0.75f * fonts.scale};
+  };
+  const auto leader_clear = [&](const DrawnSegment& leader) {
+    const ImVec2 way = sub(leader.to, leader.from);
+    const float reach = length(way);
+    if (reach > longest) return false;
+    const auto crosses_box = [&](const ImVec4& box) { return overlaps(box, leader); };
+    const auto own_dot = [&](const ImVec4& box) { return at.x >= box.x && at.x <= box.z && at.y >= box.y && at.y <= box.w; };
+    const std::vector<ImVec4>& marks = labels.marks();
+    if (std::any_of(labels.labels().begin(), labels.labels().end(), crosses_box)) return false;
+    if (std::any_of(marks.begin(), marks.end(), [&](const ImVec4& other) { return !own_dot(other) && crosses_box(other); })) return false;
+    if (reach <= size.y) return true;
+    const DrawnSegment past_the_contact{add(leader.from, mul(way, size.y / reach)), leader.to, leader.half_width};
+    // Clear of each line as drawn: an arrow is known by the width labels keep off it, four times
+    // its shaft's half; half of that holds the shaft and its outline.
+    return std::none_of(labels.segments().begin(), labels.segments().end(), [&](const DrawnSegment& line) {
+      return gap(past_the_contact, line) < 0.5f * line.half_width + past_the_contact.half_width;
+    });
+  };
+  std::optional<ImVec2> led;
+  float led_score = std::numeric_limits<float>::max();
+  for (float dy = -leader_reach_y; dy <= leader_reach_y; dy += quarter) {
+    for (float dx = -leader_reach_x; dx <= leader_reach_x; dx += quarter) {
+      const ImVec2 place(at.x + dx, at.y + dy);
+      if (dx * into_screen.x + dy * into_screen.y <= 0.0f) continue;
+      const ImVec4 box = LabelPlacer::box_around(place, size);
+      if (!labels.free(box, false)) continue;
+      // Wholly on a body and clear of the other labels where it can be, as the places by the dot.
+      const float score = (labels.off_outlines(box) ? 0.0f : 2e6f) + (labels.apart(box) ? 0.0f : 1e6f) + off_rim(place);
+      if (score < led_score && leader_clear(leader_to(box))) led_score = score, led = place;
+    }
+  }
+  if (led) {
+    labels.take(LabelPlacer::box_around(*led, size), text);
+    word.at = led;
+    word.leader = leader_to(LabelPlacer::box_around(*led, size));
+    labels.avoid(*word.leader);
+    return word;
+  }
+  labels = std::move(searched);
+  word.at = anywhere;
   return word;
 }
 
 void draw_contact_word(ImDrawList* draw, const PlacedWord& word, const Theme& theme, const Fonts& fonts) {
-  if (word.at) draw_label(draw, fonts.small, *word.at, contact_colour(*word.mark, theme), theme.panel, word.text.c_str());
+  if (!word.at) return;
+  const ImU32 colour = contact_colour(*word.mark, theme);
+  if (word.leader) draw->AddLine(word.leader->from, word.leader->to, colour, 2.0f * word.leader->half_width);
+  draw_label(draw, fonts.small, *word.at, colour, theme.panel, word.text.c_str());
 }
 
 }  // namespace

@@ -744,8 +744,10 @@ TEST(ForceLabels, StackedBlocksWeightsAndPressingForceStandBesideTheirArrowsOnAP
 // across the bottom block's, and drew "← slipping" in the middle of the bottom block, 150 px from
 // the contact it names. In the window on a projector and in the README's picture (1280 × 720):
 // each contact's word is drawn, its box within one line of its text of its dot's rim (the dot's
-// box as the lane avoids it); every label stands a quarter of a line of its text or more from
-// every other; and each value is beside its own arrow by check_beside_own_arrow's rule, with
+// box as the lane avoids it), or joined to its dot by a leader no longer than three lines (a
+// trial found "sticking" 131 px from its dot from 2 s on, the room by it taken by values beside
+// their arrows); every label stands a quarter of a line of its text or more from every other
+// (such a word, off nothing but its neighbours, may stand closer, and across its own surface); and each value is beside its own arrow by check_beside_own_arrow's rule, with
 // check_layout's rules. On the projector, where the blocks are large enough for their values to
 // find room off their edges, every label lies wholly on or wholly off each block, across neither's
 // outline (its box as drawn against the block's box, the blocks lying square). (The README's
@@ -766,12 +768,32 @@ TEST(WorldLabels, StackedBlocksLabelsStandClearOfEachOtherAndOfTheBlocksEdgesAnd
       if (std::abs((mark.z - mark.x) - (mark.w - mark.y)) < 0.01f) dots.push_back(mark);
     }
     ASSERT_EQ(dots.size(), 2u) << where << ": the floor's contact and the blocks'";
+    const auto is_word = [&](std::size_t i) {
+      return lane.texts[i].find("slipping") != std::string::npos || lane.texts[i].find("sticking") != std::string::npos;
+    };
+    // The dot a word is joined to by a leader, if it is: a line from the dot's rim (1.5 px past
+    // it, over the dot's outline) to the word's box, padding included, three lines long at most.
+    const auto led_from = [&](std::size_t i) -> std::optional<ImVec4> {
+      const ImVec4 padded = lane.labels[i];
+      const float line = drawn(padded).w - drawn(padded).y;
+      for (const draw::DrawnSegment& segment : lane.arrows) {
+        const bool on_box = segment.to.x >= padded.x - 0.5f && segment.to.x <= padded.z + 0.5f &&
+                            segment.to.y >= padded.y - 0.5f && segment.to.y <= padded.w + 0.5f;
+        if (!on_box || draw::length(draw::sub(segment.to, segment.from)) > draw::LabelPlacer::longest_leader(ImVec2(0.0f, line))) continue;
+        for (const ImVec4& dot : dots) {
+          const ImVec2 centre(0.5f * (dot.x + dot.z), 0.5f * (dot.y + dot.w));
+          if (std::abs(draw::length(draw::sub(segment.from, centre)) - (0.5f * (dot.z - dot.x) + 1.5f)) < 0.5f) return dot;
+        }
+      }
+      return std::nullopt;
+    };
     int words = 0;
     for (std::size_t i = 0; i < lane.labels.size(); ++i) {
       const ImVec4 box = drawn(lane.labels[i]);
       const float line = box.w - box.y;
       const std::string& text = lane.texts[i];
-      if (text.find("slipping") != std::string::npos || text.find("sticking") != std::string::npos) {
+      const std::optional<ImVec4> led = is_word(i) ? led_from(i) : std::nullopt;
+      if (is_word(i)) {
         ++words;
         float nearest = std::numeric_limits<float>::max();
         for (const ImVec4& dot : dots) {
@@ -779,18 +801,27 @@ TEST(WorldLabels, StackedBlocksLabelsStandClearOfEachOtherAndOfTheBlocksEdgesAnd
           const float dx = std::max({box.x - centre.x, 0.0f, centre.x - box.z}), dy = std::max({box.y - centre.y, 0.0f, centre.y - box.w});
           nearest = std::min(nearest, std::hypot(dx, dy) - 0.5f * (dot.z - dot.x));
         }
-        EXPECT_LE(nearest, line) << where << ": \"" << text << "\" at " << text_of(box) << " is " << nearest
-                                 << " px from the nearest contact's dot, more than a line (" << line << " px)";
+        EXPECT_TRUE(nearest <= line || led) << where << ": \"" << text << "\" at " << text_of(box) << " is " << nearest
+                                            << " px from the nearest contact's dot, more than a line (" << line
+                                            << " px), and no leader joins it to a dot";
       }
       for (std::size_t j = i + 1; j < lane.labels.size(); ++j) {
         const ImVec4 other = drawn(lane.labels[j]);
         const float apart = std::max({other.x - box.z, box.x - other.z, other.y - box.w, box.y - other.w});
-        EXPECT_GE(apart, 0.25f * line) << where << ": \"" << text << "\" at " << text_of(box) << " and \"" << lane.texts[j]
-                                       << "\" at " << text_of(other) << " are " << apart << " px apart, under a quarter of a line";
+        // A word joined to its dot by a leader stands in what room the values beside their
+        // arrows leave, closer to one if need be, never over one.
+        const bool led_word = led || (is_word(j) && led_from(j));
+        EXPECT_GE(apart, led_word ? 0.0f : 0.25f * line)
+            << where << ": \"" << text << "\" at " << text_of(box) << " and \"" << lane.texts[j] << "\" at " << text_of(other)
+            << " are " << apart << " px apart, under " << (led_word ? "nothing" : "a quarter of a line");
       }
       for (const ImVec4& body : lane.bodies) {
         const bool inside = box.x >= body.x && box.z <= body.z && box.y >= body.y && box.w <= body.w;
-        EXPECT_TRUE(!edges || !draw::overlaps(box, body) || inside)
+        // Such a word may lie across the surface it names: the line through its dot.
+        const float surface = led ? 0.5f * (led->y + led->w) : 0.0f;
+        const bool across_its_surface = led && box.y < surface && box.w > surface &&
+                                        (std::abs(body.y - surface) < 0.5f * line || std::abs(body.w - surface) < 0.5f * line);
+        EXPECT_TRUE(!edges || !draw::overlaps(box, body) || inside || across_its_surface)
             << where << ": \"" << text << "\" at " << text_of(box) << " lies across the edge of the block at " << text_of(body);
       }
     }
@@ -803,8 +834,9 @@ TEST(WorldLabels, StackedBlocksLabelsStandClearOfEachOtherAndOfTheBlocksEdgesAnd
     }
   }
   ASSERT_NE(slips, nullptr);
-  // In the window on a projector, as the trial had it.
-  stacked_blocks_on_a_projector({slips->at}, [&](const std::string& where, const draw::FrameRecord& record) {
+  // In the window on a projector, as the trial had it, and through the run before it (a trial
+  // found "sticking" 150 px from its dot at 3.5 s).
+  stacked_blocks_on_a_projector({1.0, 2.0, 2.5, 3.0, 3.5, slips->at}, [&](const std::string& where, const draw::FrameRecord& record) {
     const draw::LessonAt at("stacked_blocks", {}, slips->at);
     check(record, *at.lesson, where + ", projector", true);
   });
