@@ -375,7 +375,9 @@ view { follow = bottom }
 local on_floor, on_bottom = contact(bottom, floor), contact(top, bottom)
 probe { "pull", unit = "N", read = { pull, "fx" } }
 probe { "friction_on_top", unit = "N", read = { on_bottom, "fx" } }      -- positive: forward
-probe { "friction_on_bottom", unit = "N", read = { on_floor, "fx" } }    -- from the floor
+-- The floor's alone, and its legend says so: the picture names the top block's friction on the
+-- bottom block "on bottom" too, and a teacher read the plot's −5.89 N as that 3.43 N (issue 31).
+probe { "friction_on_bottom", unit = "N", label = "floor's friction on bottom", read = { on_floor, "fx" } }
 probe { "top_acceleration", unit = "m/s²", read = { top, "acceleration", along = { 1, 0 } } }
 probe { "bottom_acceleration", unit = "m/s²", read = { bottom, "acceleration", along = { 1, 0 } } }
 probe { "floor_slipping", read = { on_floor, "slipping" } }
