@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "draw/drawing.h"
+#include "lessons/runtime/class_words.h"
 
 namespace frictionlab::draw {
 namespace {
@@ -281,6 +282,25 @@ void draw_ropes(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
 // A frictionless contact in neither state's colour: the outline's, as the bodies are drawn.
 ImU32 contact_colour(const ContactMark& mark, const Theme& theme) {
   return mark.frictionless ? theme.outline : mark.state == ContactState::slipping ? theme.slipping : theme.sticking;
+}
+
+// Whether a world point lies on a body's outline, within `reach` (m): on or in one of its
+// shapes, and with a point that near it outside all of them.
+bool on_outline(const b2Body* body, b2Vec2 point, float reach) {
+  const auto inside = [&](b2Vec2 p) {
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (fixture->TestPoint(p)) return true;
+    }
+    return false;
+  };
+  const b2Vec2 ways[] = {{reach, 0.0f}, {-reach, 0.0f}, {0.0f, reach}, {0.0f, -reach}};
+  bool near_inside = inside(point), near_outside = false;
+  for (const b2Vec2& way : ways) {
+    const bool in = inside(point + way);
+    near_inside = near_inside || in;
+    near_outside = near_outside || !in;
+  }
+  return near_inside && near_outside;
 }
 
 // A contact's dot, in its state's colour.
@@ -973,6 +993,25 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   });
   mark_arrows_over_their_like(arrows, scene, camera, theme, thickness);
   tell_the_placer(labels, shown, scene, camera, thickness, mark_radius, fonts.scale);
+  // Before the run, where each of the lesson's forces that acts at its body's outline (a hand's
+  // push at a face) will act: a ring at its point in the applied forces' colour, with its name
+  // (below). A push that grows from nought has no arrow before the run, and tipping_box's
+  // question (how hard, when the box tips) turns on how high it pushes, which its slider sets
+  // (a teacher's trial, issue 31). One at a body's middle (push's) acts where the weight's arrow
+  // starts, and a torque alone (a motor) acts at no point.
+  std::vector<std::pair<const AppliedForce*, ImVec2>> force_points;
+  if (scene.frame() == 0 && drawn_arrows != WorldArrows::none) {
+    for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
+      const AppliedForce& applied = scene.applied_forces()[i];
+      if (applied.body == nullptr || !applied.force || scene.forces_applied()[i].LengthSquared() > 0.0f) continue;
+      if (labelled != nullptr && std::find(labelled->begin(), labelled->end(), applied.body) == labelled->end()) continue;
+      const b2Vec2 point = applied.body->GetWorldPoint(applied.local_point);
+      if (!on_outline(applied.body, point, 2.0f / camera.pixels_per_metre)) continue;
+      const ImVec2 at = camera.to_screen(point);
+      labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
+      force_points.emplace_back(&applied, at);
+    }
+  }
   // Labels that name a place (a distance mark's number) go there or nowhere: first, while every
   // place not under an arrow or a mark is free; the lesson's labels, which may move, then keep off them.
   if (fixed_labels) fixed_labels();
@@ -999,6 +1038,22 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
     const std::optional<ImVec2> at =
         labels.place_if_free(ImVec2(above.x, above.y - 1.5f * fonts.body->FontSize), size, text, true);
     if (at) draw_label(draw, fonts.body, *at, theme.text, theme.panel, text);
+  }
+  const ImU32 applied_colour = theme.force[static_cast<int>(ForceKind::applied)];
+  for (const auto& [applied, at] : force_points) {
+    draw->AddCircle(at, mark_radius, theme.panel, 20, 4.0f * fonts.scale);
+    draw->AddCircle(at, mark_radius, applied_colour, 20, 2.0f * fonts.scale);
+    // The name out from the body's middle, off the bodies, as a place's label.
+    const std::string name = lessons::class_words(applied->name);
+    const ImVec2 size = fonts.body->CalcTextSizeA(fonts.body->FontSize, 1e6f, 0.0f, name.c_str());
+    ImVec2 out = sub(at, camera.to_screen(applied->body->GetWorldCenter()));
+    const float reach = length(out);
+    out = reach > 0.0f ? mul(out, 1.0f / reach) : ImVec2(-1.0f, 0.0f);
+    const ImVec2 wanted = add(at, ImVec2(out.x * (mark_radius + 0.5f * size.x + 6.0f * fonts.scale),
+                                         out.y * (mark_radius + 0.5f * size.y + 4.0f * fonts.scale)));
+    if (const std::optional<ImVec2> placed = labels.place_if_free(wanted, size, name, true)) {
+      draw_label(draw, fonts.body, *placed, applied_colour, theme.panel, name.c_str());
+    }
   }
   // One word per touching pair and state: a block on six feet says "slipping" once, not six times.
   std::vector<std::tuple<const b2Body*, const b2Body*, ContactState, bool, bool>> said;

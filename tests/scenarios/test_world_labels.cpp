@@ -8,6 +8,7 @@
 #include <set>
 
 #include "draw/close_up.h"
+#include "lessons/runtime/class_words.h"
 #include "tests/layout_checks.h"
 
 namespace frictionlab::classroom {
@@ -1258,6 +1259,34 @@ TEST(WorldLabels, AtTheStartTheWorldSaysTheOtherForcesComeWithTheRun) {
       } else {
         EXPECT_EQ(said, at.scene().frame() == 0 ? 1 : 0) << where;
       }
+    });
+  }
+}
+
+// Before the run, where each of the lesson's forces at its body's outline will act: its name
+// ("push") beside its point, within a line and a half of its text of it, in tipping_box (the
+// push's height is a slider, and its question turns on it) and stacked_blocks (the pull at the
+// bottom block's corner); after the first step the arrow and its value say it, and the name is
+// gone. Issue 31: a push that grows from nought had no arrow at t = 0, and nothing showed where
+// it would act.
+TEST(WorldLabels, AtTheStartTheWorldShowsWhereEachForceWillAct) {
+  for (const char* lesson : {"tipping_box", "stacked_blocks"}) {
+    projector_frames_at(lesson, {}, {0.0, 0.5}, [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson& at) {
+      ASSERT_FALSE(at.scene().applied_forces().empty()) << where;
+      const AppliedForce& push = at.scene().applied_forces().front();
+      const std::string name = lessons::class_words(push.name);
+      int named = 0;
+      for (const draw::FrameRecord::Lane& lane : record.lanes) {
+        const ImVec2 point = lane.camera.to_screen(push.body->GetWorldPoint(push.local_point));
+        for (std::size_t i = 0; i < lane.texts.size(); ++i) {
+          if (lane.texts[i] != name) continue;
+          ++named;
+          const ImVec4 box = drawn(lane.labels[i]);
+          const float dx = std::max({box.x - point.x, 0.0f, point.x - box.z}), dy = std::max({box.y - point.y, 0.0f, point.y - box.w});
+          EXPECT_LE(std::hypot(dx, dy), 1.5f * (box.w - box.y)) << where << ": \"" << name << "\" at " << text_of(box) << " is far from its point";
+        }
+      }
+      EXPECT_EQ(named, at.scene().frame() == 0 ? 1 : 0) << where;
     });
   }
 }
