@@ -995,7 +995,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   tell_the_placer(labels, shown, scene, camera, thickness, mark_radius, fonts.scale);
   // Before the run, where each of the lesson's forces that acts at its body's outline (a hand's
   // push at a face) will act: a ring at its point in the applied forces' colour, with its name
-  // (below). A push that grows from nought has no arrow before the run, and tipping_box's
+  // (below). No applied force has an arrow before the first step applies it, and tipping_box's
   // question (how hard, when the box tips) turns on how high it pushes, which its slider sets
   // (a teacher's trial, issue 31). One at a body's middle (push's) acts where the weight's arrow
   // starts, and a torque alone (a motor) acts at no point.
@@ -1003,7 +1003,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   if (scene.frame() == 0 && drawn_arrows != WorldArrows::none) {
     for (std::size_t i = 0; i < scene.applied_forces().size(); ++i) {
       const AppliedForce& applied = scene.applied_forces()[i];
-      if (applied.body == nullptr || !applied.force || scene.forces_applied()[i].LengthSquared() > 0.0f) continue;
+      if (applied.body == nullptr || !applied.force) continue;
       if (labelled != nullptr && std::find(labelled->begin(), labelled->end(), applied.body) == labelled->end()) continue;
       const b2Vec2 point = applied.body->GetWorldPoint(applied.local_point);
       if (!on_outline(applied.body, point, 2.0f / camera.pixels_per_metre)) continue;

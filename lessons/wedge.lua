@@ -968,6 +968,8 @@ end
 -- Past a flight's start, the gap they had reached there: a flight changes no speed along the
 -- surface by friction, and after it both blocks slide with the same kinetic friction, so the
 -- speed gap carries on, moving the slide, until the model's block next sticks (both still then).
+-- (Taken as it stands: a landing's share is landings_shifted's, and a reversal without a stop
+-- scales the gap by the ratio of the sliding accelerations either side, which this leaves out.)
 -- (0.1 kg on a plank swinging 18.1° at 7.6 rad/s, shaken at 21.4 m/s², μk 0.72: the stepped
 -- equations 0.227 m/s slow at the lift-off at 0.75 s at 240 Hz, and the world's ΔK read in the
 -- flight 0.038 J under the model's, m·|v|·δv + ½m·δv² 0.038 J; 0.017 and 0.0092 J at 480 and

@@ -669,8 +669,10 @@ TEST(ForceLabels, EveryValueStandsBesideItsArrowAndTheScaleBarIsWholeWithTheHelp
 
 // stacked_blocks in the window at 1920 × 1080 in projector mode, light and dark, at each of
 // `times` (the run's end for one past it): each frame's record, with where (" at 2.12 s, dark").
+// `check` is given the lesson as the frame shows it.
 void stacked_blocks_on_a_projector(const std::vector<double>& times,
-                                   const std::function<void(const std::string& where, const draw::FrameRecord& record)>& check) {
+                                   const std::function<void(const std::string& where, const draw::FrameRecord& record,
+                                                            const lessons::Lesson& at)>& check) {
   const ImVec2 display(1920.0f, 1080.0f);
   draw::HeadlessContext gl;
   draw::ImGuiHost host(nullptr);
@@ -682,7 +684,7 @@ void stacked_blocks_on_a_projector(const std::vector<double>& times,
     for (const double wanted : times) {
       const double t = std::min(wanted, window.playback().lesson().duration());
       const draw::FrameRecord record = recorded_at(gl, host, window, display, t);
-      check("stacked_blocks" + said_at(t) + (theme == draw::ThemeName::dark ? ", dark" : ""), record);
+      check("stacked_blocks" + said_at(t) + (theme == draw::ThemeName::dark ? ", dark" : ""), record, window.playback().lesson());
     }
   }
 }
@@ -696,7 +698,7 @@ void stacked_blocks_on_a_projector(const std::vector<double>& times,
 TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProjector) {
   int frictions = 0;
   stacked_blocks_on_a_projector({std::numeric_limits<double>::infinity()}, [&](const std::string& where,
-                                                                              const draw::FrameRecord& record) {
+                                                                              const draw::FrameRecord& record, const lessons::Lesson&) {
     int words = 0;
     for (const draw::FrameRecord::Lane& lane : record.lanes) {
       for (const std::string& text : lane.texts) words += text.find("slipping") != std::string::npos ? 1 : 0;
@@ -725,7 +727,7 @@ TEST(ForceLabels, StackedBlocksFrictionsStandBesideTheirArrowsAtTheEndOnAProject
 // "sticking" held the one gap by its tip.
 TEST(ForceLabels, StackedBlocksWeightsAndPressingForceStandBesideTheirArrowsOnAProjector) {
   int values = 0;
-  stacked_blocks_on_a_projector({0.2, 2.12}, [&](const std::string& where, const draw::FrameRecord& record) {
+  stacked_blocks_on_a_projector({0.2, 2.12}, [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson&) {
     int words = 0;
     for (const draw::FrameRecord::Lane& lane : record.lanes) {
       for (const std::string& text : lane.texts) {
@@ -837,10 +839,10 @@ TEST(WorldLabels, StackedBlocksLabelsStandClearOfEachOtherAndOfTheBlocksEdgesAnd
   ASSERT_NE(slips, nullptr);
   // In the window on a projector, as the trial had it, and through the run before it (a trial
   // found "sticking" 150 px from its dot at 3.5 s).
-  stacked_blocks_on_a_projector({1.0, 2.0, 2.5, 3.0, 3.5, slips->at}, [&](const std::string& where, const draw::FrameRecord& record) {
-    const draw::LessonAt at("stacked_blocks", {}, slips->at);
-    check(record, *at.lesson, where + ", projector", true);
-  });
+  stacked_blocks_on_a_projector({1.0, 2.0, 2.5, 3.0, 3.5, slips->at},
+                                [&](const std::string& where, const draw::FrameRecord& record, const lessons::Lesson& at) {
+                                  check(record, at, where + ", projector", true);
+                                });
   // The README's picture (frictionlab render stacked_blocks --moment top_slips).
   draw::HeadlessRenderer renderer(1280, 720);
   draw::LessonAt at("stacked_blocks", slips->set, slips->at);
@@ -1275,9 +1277,14 @@ TEST(WorldLabels, AtTheStartTheWorldShowsWhereEachForceWillAct) {
       ASSERT_FALSE(at.scene().applied_forces().empty()) << where;
       const AppliedForce& push = at.scene().applied_forces().front();
       const std::string name = lessons::class_words(push.name);
-      int named = 0;
+      int named = 0, rings = 0;
       for (const draw::FrameRecord::Lane& lane : record.lanes) {
         const ImVec2 point = lane.camera.to_screen(push.body->GetWorldPoint(push.local_point));
+        // The ring: a square mark the lane keeps labels off, centred on the point.
+        for (const ImVec4& mark : lane.avoided) {
+          const bool square = std::abs((mark.z - mark.x) - (mark.w - mark.y)) < 0.01f && mark.z > mark.x;
+          if (square && std::abs(0.5f * (mark.x + mark.z) - point.x) < 0.5f && std::abs(0.5f * (mark.y + mark.w) - point.y) < 0.5f) ++rings;
+        }
         for (std::size_t i = 0; i < lane.texts.size(); ++i) {
           if (lane.texts[i] != name) continue;
           ++named;
@@ -1287,6 +1294,7 @@ TEST(WorldLabels, AtTheStartTheWorldShowsWhereEachForceWillAct) {
         }
       }
       EXPECT_EQ(named, at.scene().frame() == 0 ? 1 : 0) << where;
+      EXPECT_EQ(rings, at.scene().frame() == 0 ? 1 : 0) << where << ": the ring at the force's point";
     });
   }
 }
