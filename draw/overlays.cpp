@@ -70,9 +70,10 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
     arrows.push_back(ScreenArrow{force, tail, tip, !drawn_longer(size, pixels_per_newton, legible)});
   }
   // Side by side where two lie along one line and overlap, as textbooks draw weight and normal
-  // force: each moves half a gap across, keeping its length and direction, but a weight, which
-  // stays at its centre of mass while the other moves the whole gap. The gap grows with the
-  // arrows' thickness (3.5 px times the scale) and clears a head beside a shaft (side_by_side_gap).
+  // force: they move apart across the line, keeping their lengths and directions, until they are
+  // a gap apart; each moves half of that, but a weight, which stays at its centre of mass while
+  // the other moves all of it. The gap grows with the arrows' thickness (3.5 px times the scale)
+  // and clears a head beside a shaft (side_by_side_gap).
   if (gap <= 0.0f) gap = side_by_side_gap(world_arrow_thickness(scale));
   for (std::size_t i = 0; i < arrows.size(); ++i) {
     for (std::size_t j = i + 1; j < arrows.size(); ++j) {
@@ -90,13 +91,17 @@ std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, co
       const float q1 = (q.tip.x - p.tail.x) * ux + (q.tip.y - p.tail.y) * uy;
       if (std::max(q0, q1) <= 0.0f || std::min(q0, q1) >= pl) continue;
       const float side = offset >= 0.0f ? 1.0f : -1.0f;
-      // A weight stays at its body's centre of mass and the other goes the whole gap across:
-      // each moving half a gap, a weight beside each of a body's six feet's normal forces went
+      // Only as far as makes the gap: moved a whole gap more than they already stood apart,
+      // tipping_box's normal force, acting 0.10 m ahead of the weight at 1.5 s pushed at 0.3 m,
+      // was drawn 0.19 m ahead, nearly at the corner the box was not yet tipping about (issue 31).
+      const float apart = gap - std::abs(offset);
+      // A weight stays at its body's centre of mass and the other goes all the way across:
+      // each moving half, a weight beside each of a body's six feet's normal forces went
       // 58 px across, off contact_area's block (issue 31).
       const bool p_stays = weight_at_its_centre && p.force.kind == ForceKind::weight && q.force.kind != ForceKind::weight;
       const bool q_stays = weight_at_its_centre && q.force.kind == ForceKind::weight && p.force.kind != ForceKind::weight;
       const float p_share = p_stays ? 0.0f : q_stays ? 1.0f : 0.5f;
-      const ImVec2 across(-uy * side * gap, ux * side * gap);
+      const ImVec2 across(-uy * side * apart, ux * side * apart);
       p.tail = ImVec2(p.tail.x - p_share * across.x, p.tail.y - p_share * across.y);
       p.tip = ImVec2(p.tip.x - p_share * across.x, p.tip.y - p_share * across.y);
       q.tail = ImVec2(q.tail.x + (1.0f - p_share) * across.x, q.tail.y + (1.0f - p_share) * across.y);

@@ -102,8 +102,9 @@ inline float not_to_scale_below(float newtons_to_pixels, float scale) {
 // its body's forces but would be shorter than `shortest` pixels (at least
 // shortest_arrow_pixels(scale)) is drawn that long, and one too small to show in them is left out. Two arrows of one body lying along one line
 // (weight and normal force) are drawn side by side, their gap growing with the text as well.
-// `gap`: how far apart two along one line go, px; 0: the world's, side_by_side_gap of its arrows.
-// `weight_at_its_centre`: a weight stays at its centre of mass and the other goes the whole gap
+// `gap`: how far apart two along one line end, px (they move only as far as that needs); 0: the
+// world's, side_by_side_gap of its arrows.
+// `weight_at_its_centre`: a weight stays at its centre of mass and the other moves all the way
 // aside (the world's); else each goes half (the free-body inset's, whose values are placed by
 // its arrows from near and found no place beside a normal force moved the whole gap).
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,

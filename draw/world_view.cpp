@@ -380,19 +380,28 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
   const float eighth = 0.125f * size.y;
   const float reach_x = 0.5f * size.x + rim + size.y, reach_y = 0.5f * size.y + rim + size.y;
   const ImVec2 into_screen(into.x, -into.y);
-  std::optional<ImVec2> nearest;
-  float nearest_score = std::numeric_limits<float>::max();
+  // Whether a place (a box's centre) lies under the surface, into the lower body.
+  const auto under_the_surface = [&](ImVec2 place) {
+    return (place.x - at.x) * into_screen.x + (place.y - at.y) * into_screen.y > 0.0f;
+  };
+  // Off the bodies' outlines (`nearest`) before across one (`nearest_across`, taken only where
+  // no leader finds a place either: across the top block's lower edge, stacked_blocks' "sticking"
+  // was read as the top block's); apart from the other labels before not.
+  std::optional<ImVec2> nearest, nearest_across;
+  float nearest_score = std::numeric_limits<float>::max(), across_score = nearest_score;
   for (float dy = -reach_y; dy <= reach_y; dy += eighth) {
     for (float dx = -reach_x; dx <= reach_x; dx += eighth) {
       const ImVec2 place(at.x + dx, at.y + dy);
       // Under the surface only: a box over the upper body's face is read as that body's (terrain's
       // "slipping →" over its box's corner).
-      const bool under = dx * into_screen.x + dy * into_screen.y > 0.0f;
-      if (!under || off_rim(place) > size.y || !labels.free(LabelPlacer::box_around(place, size), false)) continue;
-      // Off the bodies' outlines and apart from the other labels before not.
+      if (!under_the_surface(place) || off_rim(place) > size.y || !labels.free(LabelPlacer::box_around(place, size), false)) continue;
       const ImVec4 box = LabelPlacer::box_around(place, size);
-      const float score = (labels.off_outlines(box) ? 0.0f : 2e6f) + (labels.apart(box) ? 0.0f : 1e6f) + length(sub(place, first));
-      if (score < nearest_score) nearest_score = score, nearest = place;
+      const float score = (labels.apart(box) ? 0.0f : 1e6f) + length(sub(place, first));
+      if (labels.off_outlines(box)) {
+        if (score < nearest_score) nearest_score = score, nearest = place;
+      } else if (score < across_score) {
+        across_score = score, nearest_across = place;
+      }
     }
   }
   if (nearest) {
@@ -402,10 +411,13 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
     return word;
   }
   // None free there either: the nearest free place around the first, if that is within a line
-  // of the dot's rim still (anywhere round it, as the place of last resort).
+  // of the dot's rim still, under the surface and across no body's edge (anywhere round it, as
+  // the place of last resort). Taken wherever it was within the line, stacked_blocks' "sticking"
+  // lay across the top block's lower edge at 1 s on a projector, read as the top block's.
   LabelPlacer searched = labels;
   const std::optional<ImVec2> anywhere = searched.place_if_free(first, size, text);
-  if (anywhere && off_rim(*anywhere) <= size.y) {
+  if (anywhere && off_rim(*anywhere) <= size.y && under_the_surface(*anywhere) &&
+      labels.off_outlines(LabelPlacer::box_around(*anywhere, size))) {
     labels = std::move(searched);
     word.at = anywhere;
     word.near_dot = true;
@@ -449,7 +461,7 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
   for (float dy = -leader_reach_y; dy <= leader_reach_y; dy += quarter) {
     for (float dx = -leader_reach_x; dx <= leader_reach_x; dx += quarter) {
       const ImVec2 place(at.x + dx, at.y + dy);
-      if (dx * into_screen.x + dy * into_screen.y <= 0.0f) continue;
+      if (!under_the_surface(place)) continue;
       const ImVec4 box = LabelPlacer::box_around(place, size);
       if (!labels.free(box, false)) continue;
       // Wholly on a body and clear of the other labels where it can be, as the places by the dot.
@@ -462,6 +474,12 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
     word.at = led;
     word.leader = leader_to(LabelPlacer::box_around(*led, size));
     labels.avoid(*word.leader);
+    return word;
+  }
+  if (nearest_across) {
+    labels.take(LabelPlacer::box_around(*nearest_across, size), text);
+    word.at = nearest_across;
+    word.near_dot = true;
     return word;
   }
   labels = std::move(searched);

@@ -270,11 +270,16 @@ TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   }
   ASSERT_TRUE(weight && normal);
   // The normal force acts where the floor's pressure centres, a few pixels off the weight's line:
-  // the normal force moves the gap away from the weight, which stays at the centre of mass, so
-  // they end the gap further apart than they act.
-  const float apart = std::abs(level_camera.to_screen(weight->force.point).x - level_camera.to_screen(normal->force.point).x);
-  ASSERT_LT(apart, side_by_side_gap(world_arrow_thickness(scale)));  // near enough to be moved
-  EXPECT_NEAR(std::abs(weight->tail.x - normal->tail.x), apart + side_by_side_gap(world_arrow_thickness(scale)), 1e-3f);
+  // the normal force moves away from the weight, which stays at the centre of mass, only until
+  // they are the gap apart, on the side it acts on. Moved a whole gap more, tipping_box's normal
+  // force was drawn near the corner the box was not yet tipping about (issue 31).
+  const float weight_x = level_camera.to_screen(weight->force.point).x;
+  const float acts = level_camera.to_screen(normal->force.point).x - weight_x;
+  const float gap = side_by_side_gap(world_arrow_thickness(scale));
+  ASSERT_GT(std::abs(acts), 0.5f);  // off the weight's line, so the side it moves to is its own
+  ASSERT_LT(std::abs(acts), gap);   // near enough to be moved
+  EXPECT_FLOAT_EQ(weight->tail.x, weight_x);
+  EXPECT_NEAR(normal->tail.x - weight->tail.x, std::copysign(gap, acts), 1e-3f);
 }
 
 // The projector's world at 1920 × 1080: its camera, its arrow scale and its text scale (the

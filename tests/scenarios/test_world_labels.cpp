@@ -576,6 +576,11 @@ void each_lesson_frame(bool projector, draw::ThemeName theme,
 // leader's reach (LabelPlacer::place_with_leader), not only along the eight rays round its tip.
 // stacked_blocks' world on a screen came to have every value nearer its own arrow when the
 // contacts came to be drawn where the bodies touch at the step's end, not a step behind.
+// When two arrows along one line came to move apart only until they stood a gap apart, not a
+// whole gap more (tipping_box's normal force had been drawn near the box's far corner), wedge's
+// inset on a screen came to meet it, and friction_models' world on a screen came back onto it:
+// its weights' values at 0.2 s, 40 px off with leaders, stand 24 px from the normal forces'
+// arrows, now that those are drawn where they act, a gap from the weights.
 // The pictures the test below does not yet hold to check_beside_own_arrow's rule, and those it
 // holds to it but for a value's being nearer another arrow than its own (a leader's).
 bool not_yet(const std::string& lesson, bool projector, bool inset) {
@@ -585,7 +590,7 @@ bool not_yet(const std::string& lesson, bool projector, bool inset) {
   return false;
 }
 bool nearer_another_not_yet(const std::string& lesson, bool projector, bool inset) {
-  if (lesson == "wedge") return !projector && inset;
+  if (lesson == "friction_models") return !projector && !inset;
   return false;
 }
 
