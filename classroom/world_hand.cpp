@@ -9,6 +9,7 @@
 #include <string>
 
 #include "draw/frame.h"
+#include "draw/overlays.h"
 #include "lessons/runtime/framing.h"
 
 namespace frictionlab::classroom {
@@ -146,17 +147,12 @@ void WorldHand::handle_mouse(classroom_state::Playback& playback, ImVec2 origin,
     drag_lane = static_cast<std::size_t>(&camera - cameras.data());
     const b2Vec2 point = camera.to_world(io.MousePos);
     for (const auto& [name, body] : scene.bodies()) {
-      if (body->GetType() != b2_dynamicBody) continue;
-      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-        if (fixture->TestPoint(point)) {
-          playback.grab(name, body->GetLocalPoint(point), point);
-          held = true;
-          held_view = HeldView{camera.centre, camera.anchor, view_adjust.pan};
-          if (!playback.playing()) status = "Holding " + name + ": press Space to play, and the hand pulls it.";
-          break;
-        }
-      }
-      if (held) break;
+      if (body->GetType() != b2_dynamicBody || !draw::body_contains(body, point)) continue;
+      playback.grab(name, body->GetLocalPoint(point), point);
+      held = true;
+      held_view = HeldView{camera.centre, camera.anchor, view_adjust.pan};
+      if (!playback.playing()) status = "Holding " + name + ": press Space to play, and the hand pulls it.";
+      break;
     }
     // Empty space: the drag pans the view, holding that point of the world under the mouse.
     if (!held) panning_from = point;

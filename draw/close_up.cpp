@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "draw/overlays.h"
 #include "draw/text_record.h"
 #include "draw/world_view.h"
 #include "lessons/runtime/class_words.h"
@@ -48,10 +49,7 @@ int covered_points(const Scene& scene, const Camera& world, ImVec4 place) {
       const b2Vec2 point = world.to_world(at);
       bool inside = false;
       for (const auto& [name, body] : scene.bodies()) {
-        if (body->GetType() != b2_staticBody) continue;
-        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr && !inside; fixture = fixture->GetNext()) {
-          inside = fixture->TestPoint(point);
-        }
+        inside = body->GetType() == b2_staticBody && body_contains(body, point);
         if (inside) break;
       }
       covered += inside ? 1 : 0;

@@ -16,6 +16,13 @@ float pixels_per_newton(const Scene& scene, float reference_pixels) {
   return reference_pixels / std::max(heaviest, 1e-3f);
 }
 
+bool body_contains(const b2Body* body, b2Vec2 point) {
+  for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+    if (fixture->TestPoint(point)) return true;
+  }
+  return false;
+}
+
 namespace {
 
 // Whether an applied force acts on its body's outline and points into the body: a push on a
@@ -27,13 +34,7 @@ bool pushes_on_face(const ForceOnBody& force) {
   const float size = force.force.Length();
   if (size == 0.0f) return false;
   const b2Vec2 step = (1e-3f / size) * force.force;
-  const auto inside = [&](b2Vec2 point) {
-    for (const b2Fixture* fixture = force.body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      if (fixture->TestPoint(point)) return true;
-    }
-    return false;
-  };
-  return !inside(force.point - step) && inside(force.point + step);
+  return !body_contains(force.body, force.point - step) && body_contains(force.body, force.point + step);
 }
 
 }  // namespace

@@ -97,6 +97,9 @@ inline float drawn_arrow_pixels(float newtons, float pixels_per_newton, float le
 inline float not_to_scale_below(float newtons_to_pixels, float scale) {
   return lengthened_below(newtons_to_pixels, legible_arrow_pixels(scale));
 }
+// Whether a world point lies in one of a body's shapes (on its outline counts).
+bool body_contains(const b2Body* body, b2Vec2 point);
+
 // Tails at the point of action (but a push on a face, whose tip is there: the body is pushed,
 // not pulled from inside), lengths to scale; a force that shows in the printed values of
 // its body's forces but would be shorter than `shortest` pixels (at least

@@ -287,16 +287,10 @@ ImU32 contact_colour(const ContactMark& mark, const Theme& theme) {
 // Whether a world point lies on a body's outline, within `reach` (m): on or in one of its
 // shapes, and with a point that near it outside all of them.
 bool on_outline(const b2Body* body, b2Vec2 point, float reach) {
-  const auto inside = [&](b2Vec2 p) {
-    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
-      if (fixture->TestPoint(p)) return true;
-    }
-    return false;
-  };
   const b2Vec2 ways[] = {{reach, 0.0f}, {-reach, 0.0f}, {0.0f, reach}, {0.0f, -reach}};
-  bool near_inside = inside(point), near_outside = false;
+  bool near_inside = body_contains(body, point), near_outside = false;
   for (const b2Vec2& way : ways) {
-    const bool in = inside(point + way);
+    const bool in = body_contains(body, point + way);
     near_inside = near_inside || in;
     near_outside = near_outside || !in;
   }
