@@ -9,11 +9,19 @@ local function push_theory(t)
                                c = param.c, b = param.b, t = t }
 end
 
+-- How long the run lasts: past theory's breakaway, as long again as it took to get there, but
+-- half a second of sliding at least and a second and a half at most. A second and a half at
+-- every rate pushed to 80 N at 50 N/s, and the key plot's push axis ran to 100 N with the
+-- breakaway at 3.92 N, squeezed against its left edge (issue 31).
+local function run_length()
+  local breakaway_time = push_theory(0).breakaway_time
+  return breakaway_time + math.min(1.5, math.max(0.5, breakaway_time))
+end
+
 lesson {
   title = "Push a block harder and harder",
   question = "How hard must you push before the block moves, and what does friction do once it moves?",
-  -- A second and a half of sliding after theory says it breaks away, whatever the sliders say.
-  duration = function() return push_theory(0).breakaway_time + 1.5 end,
+  duration = function() return run_length() end,
   order = 12,
   moments = {
     { "static_friction_answers", at = 1,
@@ -95,7 +103,7 @@ local function breakaway_push()
 end
 
 -- The end of the run at the sliders' values, where the last two rows are read.
-local function ending() return push_theory(0).breakaway_time + 1.5 end
+local function ending() return run_length() end
 local function at_the_end(probe)
   return reached(ending()) and value_at(probe, ending()) or nil
 end
@@ -117,8 +125,10 @@ local function speed_instant() return end_sample() - substep_length() / 2 end
 local function friction_instant() return end_sample() - 1.5 * substep_length() end
 
 -- Where the run cannot show the end theory describes, the last two rows say so: the block has
--- slid off the table's end (200 m from where it stood, less its half width), or it moves more
--- than Box2D lets a body move in one step (b2_maxTranslation, 2 m), which caps its speed.
+-- slid off the table's end (200 m from where it stood, less its half width: past every slider's
+-- reach, 11 m at most, but not past a script's edits to the run's length), or it moves more
+-- than Box2D lets a body move in one step (b2_maxTranslation, 2 m), which caps its speed (the
+-- fastest push at 20 Hz).
 local function out_of_reach()
   local final = push_theory(ending())
   if final.distance > 200 - 0.15 then return "off the table's end before the run ends" end

@@ -1540,12 +1540,18 @@ TEST(PlotColours, StackedBlocksTwoFrictionsAreToldApart) {
 }
 
 // Issue 31, a teacher's trial: push's friction trace was drawn "sticking" while the block was in
-// the air. At 0.1 kg pushed at 50 N/s the block leaves the table at 1.35 s (shot off its end):
-// every frame with no contact touching is coloured and keyed as its own regime, "no contact", in
+// the air (shot off the table's end, at 0.1 kg pushed at 50 N/s, when the run lasted a second
+// and a half past the breakaway at every rate). Here the hand lifts it, as a student's drag
+// does: held at its middle from 1 s and pulled towards a point half a metre up until 1.5 s.
+// Every frame with no contact touching is coloured and keyed as its own regime, "no contact", in
 // a colour that reads 3:1 or more on the plot's panel (WCAG 2.1's for graphics) in both themes
 // and is neither sticking's nor slipping's; the other frames as their contact's state.
 TEST(PlotColours, AFrameWithNoContactIsNeitherStickingNorSlipping) {
-  LessonAt at("push", {{"mass", "0.1"}, {"push_rate", "50"}}, 0.0);
+  LessonAt at("push", {}, 1.0);
+  b2Body* block = at.lesson->scene().body("block");
+  at.lesson->scene().grab(block, b2Vec2(0.0f, 0.0f), block->GetWorldCenter() + b2Vec2(0.0f, 0.5f));
+  at.step_to(1.5);
+  at.lesson->scene().release();
   at.step_to(at.lesson->duration());
   const Scene& scene = at.scene();
   ASSERT_EQ(scene.touching().size(), scene.times().size());
@@ -1579,6 +1585,25 @@ TEST(PlotColours, AFrameWithNoContactIsNeitherStickingNorSlipping) {
   LessonAt stays("push", {}, 3.0);
   for (const auto& key : plot_chart(*stays.lesson, 0, stays.lesson->duration(), theme(ThemeName::light)).colour_keys) {
     EXPECT_NE(key.first, "no contact");
+  }
+}
+
+// Issue 31: at 50 N/s push's run went on a second and a half past the breakaway, as at every
+// rate, pushing to 80 N: its key plot's push axis ran to 100 N and the breakaway, at 3.92 N, stood
+// 4 % of the way along it, against the axis's left edge. The run now ends as long after the
+// breakaway as before it, from half a second to a second and a half: at every rate the slider
+// offers (at the lesson's mass and friction), the breakaway stands a tenth of the axis or more
+// from its start, on a projector's page as the window draws it at the run's end.
+TEST(PlotTicks, PushsBreakawayStandsATenthOfTheWayAlongItsPushAxisAtEveryRate) {
+  const Fonts& fonts = projector_fonts();
+  for (const char* rate : {"0.2", "2", "5", "20", "50"}) {
+    LessonAt push("push", {{"push_rate", rate}}, 0.0);
+    push.step_to(push.lesson->duration());
+    const ChartLayout layout = layout_plot(*push.lesson, 0, push.lesson->duration(), corner, ImVec2(1100.0f, 520.0f), fonts, true, true);
+    ASSERT_TRUE(layout.drawable) << rate << " N/s";
+    const double breakaway_push = 0.4 * 1.0 * 9.81;  // mu_s·m·g at the lesson's defaults
+    EXPECT_GE((breakaway_push - layout.x_low) / (layout.x_high - layout.x_low), 0.1)
+        << "at " << rate << " N/s the push axis runs from " << layout.x_low << " to " << layout.x_high << " N";
   }
 }
 
