@@ -109,7 +109,7 @@ bool body_contains(const b2Body* body, b2Vec2 point);
 // world's, side_by_side_gap of its arrows.
 // `weight_at_its_centre`: a weight stays at its centre of mass and the other moves all the way
 // aside (the world's); else each goes half (the free-body inset's, whose values are placed by
-// its arrows from near and found no place beside a normal force moved the whole gap).
+// its arrows from near and found no place beside a normal force moved all the way aside).
 std::vector<ScreenArrow> place_arrows(const std::vector<ForceOnBody>& forces, const Camera& camera,
                                       float pixels_per_newton, float scale, float shortest = 0.0f, float gap = 0.0f,
                                       bool weight_at_its_centre = true);

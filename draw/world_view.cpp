@@ -405,9 +405,10 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
     return word;
   }
   // None free there either: the nearest free place around the first, if that is within a line
-  // of the dot's rim still, under the surface and across no body's edge (anywhere round it, as
-  // the place of last resort). Taken wherever it was within the line, stacked_blocks' "sticking"
-  // lay across the top block's lower edge at 1 s on a projector, read as the top block's.
+  // of the dot's rim still, under the surface and across no body's edge. Taken wherever it was
+  // within the line, stacked_blocks' "sticking" lay across the top block's lower edge at 1 s on
+  // a projector, read as the top block's. (Found anywhere round the first place, it is also the
+  // place of last resort, below.)
   LabelPlacer searched = labels;
   const std::optional<ImVec2> anywhere = searched.place_if_free(first, size, text);
   if (anywhere && off_rim(*anywhere) <= size.y && under_the_surface(*anywhere) &&
@@ -478,6 +479,7 @@ PlacedWord place_contact_word(const ContactMark& mark, const Camera& camera, con
   }
   labels = std::move(searched);
   word.at = anywhere;
+  word.near_dot = anywhere && off_rim(*anywhere) <= size.y;
   return word;
 }
 

@@ -240,7 +240,7 @@ TEST(Overlays, AForceThatShowsInTheNumbersIsDrawnHoweverShortItsArrow) {
 // weight and normal force grow with it (issue 31: an 8 px arrow was shorter than its head). The
 // same tipping_box friction at the same arrow scale is drawn shortest_arrow_pixels(scale) long,
 // 8 px times the scale exactly (a max of two floats), and weight and normal force along one line
-// move side_by_side_gap further apart (each moves half the gap: exact to float rounding).
+// end side_by_side_gap apart, the weight staying at its centre of mass (exact to float rounding).
 TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   const float scale = 1.35f * 1.5f;
   LessonAt at("tipping_box", {}, 2.49);

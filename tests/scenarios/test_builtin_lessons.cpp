@@ -349,7 +349,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // step-raised speed), and the fastest push at 20 Hz, whose block ends faster
                       // than Box2D lets a body move (62.6 m/s, 3.1 m a step). No slider setting
                       // sends the block off the table's end since the run ends at most as long
-                      // after the breakaway as before it (11 m at most).
+                      // after the breakaway as before it (29 m at most; an edited run's end is
+                      // cli_check_push_says_when_an_edited_run_slides_off_the_tables_end's).
                       Case{"push", {{"mass", "10"}, {"b", "10"}, {"mu_s", "0"}, {"mu_k", "0"}}, ""},
                       Case{"push", {{"mass", "0.1"}, {"push_rate", "50"}}, "faster than Box2D's 2 m a step", 20.0},
                       // pulley: held below mu_s·m_b and dragged just above it; with mu_k above mu_s
