@@ -280,6 +280,20 @@ TEST(Overlays, TheShortestArrowAndTheGapBesideGrowWithTheText) {
   ASSERT_LT(std::abs(acts), gap);   // near enough to be moved
   EXPECT_FLOAT_EQ(weight->tail.x, weight_x);
   EXPECT_NEAR(normal->tail.x - weight->tail.x, std::copysign(gap, acts), 1e-3f);
+  // The free-body inset's way: each moves half, so they end the gap apart about the middle of
+  // where they act.
+  const std::vector<ScreenArrow> halves = place_arrows(forces_on(level.scene(), level.scene().body("block")), level_camera,
+                                                       arrow_scale(*level.lesson, level.framing, display, 1.0f), scale, 0.0f,
+                                                       0.0f, false);
+  const ScreenArrow* weight_half = nullptr;
+  const ScreenArrow* normal_half = nullptr;
+  for (const ScreenArrow& arrow : halves) {
+    if (arrow.force.kind == ForceKind::weight) weight_half = &arrow;
+    if (arrow.force.kind == ForceKind::normal) normal_half = &arrow;
+  }
+  ASSERT_TRUE(weight_half && normal_half);
+  EXPECT_NEAR(normal_half->tail.x - weight_half->tail.x, std::copysign(gap, acts), 1e-3f);
+  EXPECT_NEAR(0.5f * (normal_half->tail.x + weight_half->tail.x), weight_x + 0.5f * acts, 1e-3f);
 }
 
 // The projector's world at 1920 × 1080: its camera, its arrow scale and its text scale (the
