@@ -98,6 +98,11 @@ struct FrictionState {
   // where the demand's margin over the limit crossed zero, and a limit that falls as N does
   // moves that crossing as much as a demand that grows (see breakaway_correction).
   double held_limit = -1.0;
+  // Steps held since then with the demand past mu_s·N while the friction stayed within it (the
+  // solver let the contact creep): the crossing lies between that step and the first of these,
+  // so the breakaway is placed from there (breakaway_correction). -1 while held_demand is not
+  // from this stuck stretch (before any step, and after a breakaway).
+  int crept_steps = -1;
   HoldBand band;
 };
 
