@@ -180,7 +180,8 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   if (!playback_->gauge().empty()) {
     style.extra_plot_title = gauge_plot_title(playback_->gauge(), playback_->lesson().scene().frame_step());
     style.extra_plot = [this](ImVec2 corner, ImVec2 size) {
-      draw_gauge_plot(corner, size, playback_->gauge(), playback_->lesson().scene().frame_step(), theme(window_.theme), *fonts_);
+      return draw_gauge_plot(corner, size, playback_->gauge(), playback_->lesson().scene().frame_step(),
+                             theme(window_.theme), *fonts_, window_.projector);
     };
     style.show_extra_plot = hand_.held;
   }

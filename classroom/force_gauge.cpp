@@ -6,6 +6,7 @@
 
 #include "classroom/measuring_tools.h"
 #include "draw/overlays.h"
+#include "draw/theme.h"
 #include "draw/text_record.h"
 
 namespace frictionlab::classroom {
@@ -106,12 +107,18 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const draw::Camera& camera
   draw::draw_label(draw, fonts.body, at, theme.text, theme.panel, text.c_str());
 }
 
-draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme) {
+draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
+                        bool steady) {
   draw::Chart chart;
   chart.title = "Force gauge";
   chart.plain = true;
   chart.legend = draw::Chart::Legend::none;
   chart.y_tick_count = 4;
+  // On a projector it is laid out as the lesson's plots are on their pages, ticks as fine as its
+  // height reads and the x axis' name ending the tick labels' line: under them it took a line of
+  // the data's height, and the guide says it ends the line (a teacher's trial, issue 31).
+  chart.steady = steady;
+  if (steady) chart.y_tick_spacing = 1.5f * draw::body_text_points;
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
   chart.y_label = "";  // the panel's title says it: "Force gauge (N)"
@@ -186,8 +193,8 @@ std::string gauge_figures(const classroom_state::GaugeRecord& record, double fra
   return text;
 }
 
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
-                     const draw::Fonts& fonts) {
+draw::ChartLayout draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step,
+                                  const draw::Theme& theme, const draw::Fonts& fonts, bool steady) {
   const std::string figures = gauge_figures(record, frame_step);
   ImGui::SetCursorScreenPos(corner);
   // On one line: in the small font when the body's does not fit.
@@ -198,9 +205,9 @@ void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRec
   ImGui::PopTextWrapPos();
   if (small) ImGui::PopFont();
   const float used = ImGui::GetCursorScreenPos().y - corner.y;
-  const draw::Chart chart = gauge_chart(record, frame_step, theme);
-  draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used), ImVec2(size.x, std::max(1.0f, size.y - used)),
-             chart, theme, fonts);
+  const draw::Chart chart = gauge_chart(record, frame_step, theme, steady);
+  return draw_chart(ImGui::GetWindowDrawList(), ImVec2(corner.x, corner.y + used),
+                    ImVec2(size.x, std::max(1.0f, size.y - used)), chart, theme, fonts);
 }
 
 }  // namespace frictionlab::classroom

@@ -45,8 +45,10 @@ void draw_gauge(ImDrawList* draw, const Scene& scene, const draw::Camera& camera
 
 // The gauge's reading against time over the latest stretch the hand pulled (from a little
 // before it took hold), the slips shaded; the hand's and the lesson's pull together instead when
-// the lesson pulled the body too, as the figures are taken.
-draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme);
+// the lesson pulled the body too, as the figures are taken. `steady`: laid out as a projector's
+// lesson plots are (draw::Chart::steady), on a page of its own.
+draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
+                        bool steady = false);
 
 // The plot's title: "Force gauge (N)", or "Hand + spring (N)" when the lesson pulled the body too.
 std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double frame_step);
@@ -54,8 +56,8 @@ std::string gauge_plot_title(const classroom_state::GaugeRecord& record, double 
 // the lesson pulled the body too; "" before the hand pulls.
 std::string gauge_figures(const classroom_state::GaugeRecord& record, double frame_step);
 // The plot under the world at `corner`, `size`: the latest stretch's figures over its chart, as a
-// class reads them off a sensor's screen.
-void draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step, const draw::Theme& theme,
-                     const draw::Fonts& fonts);
+// class reads them off a sensor's screen; `steady` on a projector, as gauge_chart says.
+draw::ChartLayout draw_gauge_plot(ImVec2 corner, ImVec2 size, const classroom_state::GaugeRecord& record, double frame_step,
+                                  const draw::Theme& theme, const draw::Fonts& fonts, bool steady = false);
 
 }  // namespace frictionlab::classroom

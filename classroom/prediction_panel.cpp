@@ -72,7 +72,7 @@ std::string measured_shown(const lessons::ExpectationResult& row) {
 
 // Beside the reveal button, or under it when there is no room.
 const char* intro(bool editable) {
-  return editable ? "Ask the class before Play." : "Kept for this run (R: back to t = 0).";
+  return editable ? "Ask the class before Play." : "Answers locked for this run (R: back to t = 0).";
 }
 bool intro_beside(float width) {
   const float button = ImGui::CalcTextSize("Reveal the theory (T)").x + 2.0f * ImGui::GetStyle().FramePadding.x;

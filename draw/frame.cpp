@@ -406,7 +406,8 @@ std::size_t turn_plot_pages(const lessons::Lesson& lesson, const FrameStyle& sty
 void plot_in_panel(lessons::Lesson& lesson, const FrameStyle& style, std::size_t i, double time_span, const Theme& colours) {
   const ImVec2 area = ImGui::GetContentRegionAvail();
   if (i == lesson.plots().size()) {
-    style.extra_plot(ImGui::GetCursorScreenPos(), area);
+    const ChartLayout drawn = style.extra_plot(ImGui::GetCursorScreenPos(), area);
+    if (style.record != nullptr) style.record->plots.push_back({i, drawn});
     return;
   }
   const ImVec2 corner = ImGui::GetCursorScreenPos();

@@ -80,7 +80,8 @@ struct FrameRecord {
   FreeBodyRecord free_body;
   // Every piece of text the panels drew, with what of it could show.
   std::vector<ShownText> texts;
-  // Where each of the lesson's plots in view put its data, curves and legend: its number, its layout.
+  // Where each of the lesson's plots in view put its data, curves and legend: its number, its
+  // layout; the extra plot (FrameStyle::extra_plot) numbered after the lesson's.
   struct Plot {
     std::size_t number;
     ChartLayout layout;
@@ -146,10 +147,10 @@ struct FrameStyle {
   std::function<void(WorldToolsPass pass, ImDrawList* draw, const Camera& camera, std::size_t lane,
                      float newtons_to_pixels, LabelPlacer& labels)>
       world_tools;
-  // One more plot after the lesson's (the force gauge's reading), drawn in its panel's inside;
-  // its title. None when empty.
+  // One more plot after the lesson's (the force gauge's reading), drawn in its panel's inside,
+  // saying where its chart went; its title. None when empty.
   std::string extra_plot_title;
-  std::function<void(ImVec2 corner, ImVec2 size)> extra_plot;
+  std::function<ChartLayout(ImVec2 corner, ImVec2 size)> extra_plot;
   // Plots shown a page at a time turn to the extra plot's page: while the hand pulls, the
   // gauge's reading is what the class watches, and the teacher's hand is on the mouse.
   bool show_extra_plot = false;

@@ -17,6 +17,7 @@
 #include "classroom/force_gauge.h"
 #include "classroom/measuring_tools.h"
 #include "draw/overlays.h"
+#include "draw/theme.h"
 #include "lessons/runtime/catalog.h"
 #include "tests/classroom_hands.h"
 #include "tests/lesson_scripts.h"
@@ -252,6 +253,48 @@ TEST(ForceGauge, WhileTheHandPullsThePlotPagesShowTheGauge) {
     hands.frame(1.0 / 60.0);
   }
   EXPECT_TRUE(gauge_plot_shown());
+  hands.button(false);
+}
+
+// A teacher's trial (issue 31): in projector mode the gauge's plot put "time (s)" on a line of its
+// own under the tick labels, where the guide says a projector's plots end the tick labels' line
+// with it, and ticked its force axis every 20 N of 60. On its page it is laid out as the lesson's
+// plots are: the axis' name on the x tick labels' line, past the data's right end, and the force
+// ticks as fine as the lesson plots' (push's key plot: a line and a half of body text apart).
+TEST(ForceGauge, OnAProjectorTheGaugesPlotIsLaidOutAsTheLessonsPlotsAre) {
+  ClassroomHands hands(gauge_options("push", {{"mass", "10"}, {"push_rate", "0.2"}}, true), ImVec2(1920.0f, 1080.0f));
+  hands.frame();
+  const ImVec2 held = hands.take_hold_and_play("block");
+  draw::FrameRecord record;
+  for (int i = 1; i <= 90; ++i) {
+    ImGui::GetIO().MousePos = ImVec2(held.x + static_cast<float>(i), held.y);
+    hands.frame(1.0 / 60.0, i == 90 ? &record : nullptr);
+  }
+  const std::size_t extra = hands.lesson().plots().size();
+  const auto gauge = std::find_if(record.plots.begin(), record.plots.end(),
+                                  [&](const draw::FrameRecord::Plot& plot) { return plot.number == extra; });
+  ASSERT_NE(gauge, record.plots.end()) << "the gauge's plot is expected on the page while the hand pulls";
+  const draw::ChartLayout& layout = gauge->layout;
+  using TextKind = draw::ChartLayout::AxisText::Kind;
+  const auto name = std::find_if(layout.axis_texts.begin(), layout.axis_texts.end(),
+                                 [](const draw::ChartLayout::AxisText& text) { return text.kind == TextKind::x_name; });
+  ASSERT_NE(name, layout.axis_texts.end());
+  EXPECT_EQ(name->text, "time (s)");
+  EXPECT_GE(name->at.x, layout.high_right.x) << "the axis' name is expected past the data's right end";
+  for (const draw::ChartLayout::AxisText& tick : layout.axis_texts) {
+    if (tick.kind != TextKind::x_tick) continue;
+    // On the tick labels' line: their boxes overlap in height.
+    EXPECT_LT(name->at.y, tick.at.w) << "\"time (s)\" is expected on the line of \"" << tick.text << "\", not under it";
+    EXPECT_GT(name->at.w, tick.at.y) << "\"time (s)\" is expected on the line of \"" << tick.text << "\", not over it";
+  }
+  // The force ticks at least a line and a half of body text apart and no further than twice
+  // that (a tick spacing of 1, 2 or 5 times a power of ten is at most 2.5 times the least).
+  ASSERT_GE(layout.y_ticks.size(), 2u);
+  const float spacing = (layout.low_left.y - layout.high_right.y) *
+                        static_cast<float>((layout.y_ticks[1] - layout.y_ticks[0]) / (layout.y_high - layout.y_low));
+  const float least = 1.5f * draw::body_text_points * hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
+  EXPECT_GE(spacing, least - 0.5f);
+  EXPECT_LE(spacing, 2.5f * least) << "the force axis ticked every " << layout.y_ticks[1] - layout.y_ticks[0] << " N";
   hands.button(false);
 }
 
