@@ -98,11 +98,14 @@ struct FrictionState {
   // where the demand's margin over the limit crossed zero, and a limit that falls as N does
   // moves that crossing as much as a demand that grows (see breakaway_correction).
   double held_limit = -1.0;
-  // Steps held since then with the demand past mu_s·N while the friction stayed within it (the
-  // solver let the contact creep): the crossing lies between that step and the first of these,
-  // so the breakaway is placed from there (breakaway_correction). -1 while held_demand is not
-  // from this stuck stretch (before any step, and after a breakaway).
+  // Steps held since then with the demand past mu_s·N while the solver held the friction within
+  // it (it let the contact creep), and the band's steps before them: the crossing lies between
+  // that step and the first of these, so the breakaway is placed from there
+  // (breakaway_correction). -1 while held_demand is not from this stuck stretch (before any
+  // step, and after a breakaway). crept_past: N, how far the last of them was past the limit;
+  // each must pass it further to be counted (treatment_stick_slip.cpp, after_stuck_step).
   int crept_steps = -1;
+  double crept_past = 0.0;
   HoldBand band;
 };
 

@@ -281,6 +281,9 @@ TEST(ForceGauge, OnAProjectorTheGaugesPlotIsLaidOutAsTheLessonsPlotsAre) {
   ASSERT_NE(name, layout.axis_texts.end());
   EXPECT_EQ(name->text, "time (s)");
   EXPECT_GE(name->at.x, layout.high_right.x) << "the axis' name is expected past the data's right end";
+  ASSERT_GE(std::count_if(layout.axis_texts.begin(), layout.axis_texts.end(),
+                          [](const draw::ChartLayout::AxisText& text) { return text.kind == TextKind::x_tick; }),
+            2);
   for (const draw::ChartLayout::AxisText& tick : layout.axis_texts) {
     if (tick.kind != TextKind::x_tick) continue;
     // On the tick labels' line: their boxes overlap in height.
