@@ -6,8 +6,8 @@
 
 #include "classroom/measuring_tools.h"
 #include "draw/overlays.h"
-#include "draw/theme.h"
 #include "draw/text_record.h"
+#include "draw/theme.h"
 
 namespace frictionlab::classroom {
 
@@ -118,7 +118,7 @@ draw::Chart gauge_chart(const classroom_state::GaugeRecord& record, double frame
   // height reads and the x axis' name ending the tick labels' line: under them it took a line of
   // the data's height, and the guide says it ends the line (a teacher's trial, issue 31).
   chart.steady = steady;
-  if (steady) chart.y_tick_spacing = 1.5f * draw::body_text_points;
+  if (steady) chart.y_tick_spacing = draw::plot_tick_spacing_points(true);
   chart.x_tick_count = 0;
   chart.x_label = "time (s)";
   chart.y_label = "";  // the panel's title says it: "Force gauge (N)"

@@ -583,7 +583,7 @@ Chart empty_chart(const lessons::Lesson& lesson, const lessons::Plot& plot, bool
   // The y ticks as fine as the data area's height reads, a line and a half of their labels' text
   // apart (the body text's on a page of its own, number_font): the levels read off the axis (1 N
   // steps at push's defaults, where 2 or 5 N were).
-  chart.y_tick_spacing = 1.5f * (steady ? body_text_points : small_text_points);
+  chart.y_tick_spacing = plot_tick_spacing_points(steady);
   name_axes(chart, lesson, plot);
   return chart;
 }

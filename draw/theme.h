@@ -72,6 +72,10 @@ float frame_scale(int width, int height);
 constexpr float small_text_points = 14.0f;
 // The body text's (a panel's words; a projector's key plot's numbers: number_font in chart_parts.h).
 constexpr float body_text_points = 17.0f;
+// How far apart a plot's y ticks stand at least, pt at scale 1 (Chart::y_tick_spacing): a line
+// and a half of its numbers' text, the body text's on a page of its own (a steady chart: a
+// projector's lesson plots and force gauge), the small text's beside others.
+constexpr float plot_tick_spacing_points(bool steady) { return 1.5f * (steady ? body_text_points : small_text_points); }
 
 struct Fonts {
   ImFont* body = nullptr;

@@ -295,7 +295,7 @@ TEST(ForceGauge, OnAProjectorTheGaugesPlotIsLaidOutAsTheLessonsPlotsAre) {
   ASSERT_GE(layout.y_ticks.size(), 2u);
   const float spacing = (layout.low_left.y - layout.high_right.y) *
                         static_cast<float>((layout.y_ticks[1] - layout.y_ticks[0]) / (layout.y_high - layout.y_low));
-  const float least = 1.5f * draw::body_text_points * hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
+  const float least = draw::plot_tick_spacing_points(true) * hands.classroom().ui_scale(ImVec2(1920.0f, 1080.0f));
   EXPECT_GE(spacing, least - 0.5f);
   EXPECT_LE(spacing, 2.5f * least) << "the force axis ticked every " << layout.y_ticks[1] - layout.y_ticks[0] << " N";
   hands.button(false);
