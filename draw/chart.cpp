@@ -211,7 +211,7 @@ void draw_level_texts_beside(const Painter& p) {
                           p.theme.panel);
     ImFont* font = p.layout.level_font != nullptr ? p.layout.level_font : p.numbers;
     p.draw->AddText(font, font->FontSize, ImVec2(placed.at.x, placed.at.y), readable_ink(level.colour, p.theme.panel),
-                    level_text_in_column(level.text).c_str());
+                    level_text_as_written(placed, level.text).c_str());
   }
 }
 

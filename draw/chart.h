@@ -183,6 +183,10 @@ struct ChartLayout {
     // off its line to keep clear of another level's text (incline's −μs·N and holding levels,
     // 0.8 N apart at its defaults).
     bool beside = false;
+    // Beside the data, its label over its value (level_text_in_column); else on one line, where
+    // the column is wide enough for it: incline's three levels' texts, two lines each, stood up
+    // to 3 N above their lines on a projector, stacked over each other (a teacher's trial, issue 31).
+    bool in_two_lines = false;
   };
   std::vector<Level> levels;
   // The lines draw_chart drew to read the data by, with their colours, for the contrast test:
@@ -209,9 +213,11 @@ struct ChartLayout {
 };
 
 ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const Fonts& fonts);
-// A level's text as written in the column beside the data: its label over its value
-// ("−μs·N" over "= −3.92 N"), so that the column stays narrow.
+// A level's text as written in the column beside the data where it is too wide for one line:
+// its label over its value ("−μs·N" over "= −3.92 N"), so that the column stays narrow.
 std::string level_text_in_column(const std::string& text);
+// A placed level's text as written (in two lines or one).
+std::string level_text_as_written(const ChartLayout::Level& placed, const std::string& text);
 // Draws the chart and returns where its parts went.
 ChartLayout draw_chart(ImDrawList* draw, ImVec2 corner, ImVec2 size, const Chart& chart, const Theme& theme,
                        const Fonts& fonts);

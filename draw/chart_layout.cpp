@@ -83,6 +83,10 @@ std::string level_text_in_column(const std::string& text) {
   return equals == std::string::npos ? text : text.substr(0, equals) + "\n" + text.substr(equals + 1);
 }
 
+std::string level_text_as_written(const ChartLayout::Level& placed, const std::string& text) {
+  return placed.beside && placed.in_two_lines ? level_text_in_column(text) : text;
+}
+
 namespace {
 
 // A text's width and height as drawn, its lines one under the other.
@@ -107,19 +111,25 @@ float level_column(const Chart& chart, ImFont* font, float s, float chart_width)
 // within the data's height (half a line above its top, where the top tick's label has room;
 // down to 2 points under its bottom) and level_clearance() clear of the axes' texts beside the
 // column (the x axis' name under it). A text that finds no room (more levels than the data's
-// height holds) leaves its line alone.
-void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, ImFont* font, ChartLayout& layout) {
+// height holds) leaves its line alone. Each in one line where the column, up to `column_right`,
+// is wide enough for it, else its label over its value.
+void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, ImFont* font, float column_right,
+                              ChartLayout& layout) {
   struct Wanted {
     std::size_t index;
     float y;
     ImVec2 size;
+    bool in_two_lines;
   };
+  const float left = layout.high_right.x + level_lead * s;
   std::vector<Wanted> wanted;
   for (std::size_t i = 0; i < chart.levels.size(); ++i) {
     if (!y_axis.shows(chart.levels[i].y)) continue;
     const float y = layout.to_screen(layout.log_x ? std::pow(10.0, layout.x_low) : layout.x_low, chart.levels[i].y).y;
     if (y < layout.high_right.y - 0.5f || y > layout.low_left.y + 0.5f) continue;
-    wanted.push_back({i, y, size_of(font, level_text_in_column(chart.levels[i].text))});
+    const ImVec2 one_line = size_of(font, chart.levels[i].text);
+    const bool in_two_lines = left + one_line.x > column_right;
+    wanted.push_back({i, y, in_two_lines ? size_of(font, level_text_in_column(chart.levels[i].text)) : one_line, in_two_lines});
   }
   std::stable_sort(wanted.begin(), wanted.end(), [](const Wanted& a, const Wanted& b) { return a.y < b.y; });
   // Each text's box is drawn a pixel above and below it (draw_level_texts): two more apart.
@@ -127,7 +137,6 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
   float highest = layout.high_right.y - 0.5f * font->FontSize, lowest_bottom = layout.low_left.y + 2.0f * s;
   // Clear of the axes' texts beside the column (the x axis' name under it, the last x tick's
   // label by its left edge), by level_clearance() from each text's box as drawn.
-  const float left = layout.high_right.x + level_lead * s;
   float widest = 0.0f;
   for (const Wanted& level : wanted) widest = std::max(widest, level.size.x);
   const float clearance = level_clearance(font), middle = 0.5f * (layout.high_right.y + layout.low_left.y);
@@ -154,7 +163,8 @@ void place_level_texts_beside(const Chart& chart, const Axis& y_axis, float s, I
       continue;
     }
     placed.push_back({wanted[k].index, chart.levels[wanted[k].index].text,
-                      ImVec4(left, tops[k], left + wanted[k].size.x, tops[k] + wanted[k].size.y), wanted[k].y, false, true});
+                      ImVec4(left, tops[k], left + wanted[k].size.x, tops[k] + wanted[k].size.y), wanted[k].y, false, true,
+                      wanted[k].in_two_lines});
   }
   std::sort(placed.begin(), placed.end(), [](const ChartLayout::Level& a, const ChartLayout::Level& b) { return a.index < b.index; });
   layout.levels.insert(layout.levels.end(), placed.begin(), placed.end());
@@ -537,7 +547,8 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
   place_axis_texts(chart, corner, fonts, layout);
-  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout);
+  // The column ends where a plain chart's data would (frame_data_area).
+  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, corner.x + size.x - 8.0f * s, layout);
   else place_level_texts(chart, axes.x, axes.y, s, layout.level_font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {

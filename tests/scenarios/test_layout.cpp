@@ -322,7 +322,7 @@ void each_window_plot(const WindowScreen& screen,
 // And every level's text clear of its plot's legend and of the other levels' texts, in the window as
 // the class sees it, through the run and after the reveal, every lesson's plots at each window
 // size. Each text's box is measured here from what is drawn (its lines in the level font: the
-// column's "label" over "= value", level_text_in_column, or the text as written by its line),
+// column's "label" over "= value" or one line, level_text_as_written, or the text by its line),
 // not taken from the layout: tipping_box's tipping level, written on two lines ("tips:
 // −m·g·width" over "/(2·push height) = …"), was placed as if one line high at 1280 × 720 and its
 // second line ran over the legend's keys and the "slides" level's text. And clear of the axes'
@@ -368,7 +368,7 @@ TEST_P(WindowLayout, EveryPlotsLegendKeepsOffItsDataAndEveryLevelsTextOffTheLege
     for (const draw::ChartLayout::Level& level : layout.levels) {
       if (level.text.empty()) continue;
       ASSERT_NE(layout.level_font, nullptr) << where;
-      const std::string lines = level.beside ? draw::level_text_in_column(level.text) : level.text;
+      const std::string lines = draw::level_text_as_written(level, level.text);
       const ImVec2 size = layout.level_font->CalcTextSizeA(layout.level_font->FontSize, 1e6f, 0.0f, lines.c_str());
       const ImVec4 box(level.at.x, level.at.y, level.at.x + size.x, level.at.y + size.y);
       EXPECT_FALSE(layout.legend_at.size() > 0 && draw::overlaps(box, legend))
