@@ -61,6 +61,12 @@ class LabelPlacer {
     arrows_.push_back(segment);
   }
   void avoid(const ImVec4& box) { marks_.push_back(box); }
+  // A surface's line (a ground's top), which a force's value beside its arrow keeps off where
+  // a place beside the arrow off it is free: a weight's value at its tip, where the view ends at
+  // the floor, lay across the floor's line (incline's 9.81 N, a teacher's trial, issue 31), read
+  // as standing on it. Only a preference: a value across it beside its arrow reads better than
+  // one lines away.
+  void surface(const DrawnSegment& line) { surfaces_.push_back(line); }
   // A moving body's box on screen. The lesson's own labels may lie on a body (a contact's word
   // goes into the body under it); a measuring tool's reading, which names the body, keeps off.
   // `who` is the body, so that a force's value may lie on its own body and on no other.
@@ -182,6 +188,7 @@ class LabelPlacer {
   std::vector<std::string> texts_;
   std::vector<DrawnSegment> segments_;
   std::vector<DrawnSegment> arrows_;  // the forces' arrows among segments_
+  std::vector<DrawnSegment> surfaces_;
   std::vector<ImVec4> marks_;
   std::vector<ImVec4> bodies_;
   std::vector<const b2Body*> body_owners_;  // each of bodies_' body, where told

@@ -29,18 +29,29 @@ struct PlaceLabel {
   ImU32 colour, background;
 };
 
+// A ground slab's surface line on the screen, as far as the view shows it (none where it is
+// out of the view's width).
+std::optional<DrawnSegment> ground_surface(const b2Fixture* fixture, const Camera& camera) {
+  // Box2D's box around the fixture reaches its skin's outside, the skin's radius past the shape.
+  const b2AABB& box = fixture->GetAABB(0);
+  const float top = box.upperBound.y - fixture->GetShape()->m_radius;
+  const float left = std::max(camera.origin.x, camera.to_screen(box.lowerBound).x);
+  const float right = std::min(camera.origin.x + camera.size.x, camera.to_screen(box.upperBound).x);
+  if (left >= right) return std::nullopt;
+  const float top_y = camera.to_screen({0.0f, top}).y;
+  return DrawnSegment{ImVec2(left, top_y), ImVec2(right, top_y), 1.25f};
+}
+
 // The ground in its material's colour, as far as it really goes (a body beyond its end falls).
 void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture, const Camera& camera,
                  const Theme& theme) {
-  // Box2D's box around the fixture reaches its skin's outside, the skin's radius past the shape.
+  const std::optional<DrawnSegment> surface = ground_surface(fixture, camera);
+  if (!surface) return;
   const b2AABB& box = fixture->GetAABB(0);
   const float skin = fixture->GetShape()->m_radius;
   const float top = box.upperBound.y - skin;
   const ImVec2 view_end = add(camera.origin, camera.size);
-  const float left = std::max(camera.origin.x, camera.to_screen(box.lowerBound).x);
-  const float right = std::min(view_end.x, camera.to_screen(box.upperBound).x);
-  if (left >= right) return;
-  const float top_y = camera.to_screen({0.0f, top}).y;
+  const float left = surface->from.x, right = surface->to.x, top_y = surface->from.y;
   const float bottom_y = camera.to_screen({0.0f, box.lowerBound.y + skin}).y;
   draw->AddRectFilled(ImVec2(left, top_y), ImVec2(right, std::min(bottom_y, view_end.y)),
                       fixture_colour(scene, fixture, theme));
@@ -53,7 +64,7 @@ void draw_ground(ImDrawList* draw, const Scene& scene, const b2Fixture* fixture,
     if (sx < left || sx > right) continue;
     draw->AddLine(ImVec2(sx, top_y + 1.0f), ImVec2(sx - depth, top_y + depth), theme.ground_edge, 1.5f);
   }
-  draw->AddLine(ImVec2(left, top_y), ImVec2(right, top_y), theme.ground_edge, 2.5f);
+  draw->AddLine(surface->from, surface->to, theme.ground_edge, 2.0f * surface->half_width);
 }
 
 // Slopes: at a corner between a level edge and a sloping one, the angle between them.
@@ -1036,6 +1047,13 @@ void tell_the_placer(LabelPlacer& labels, const ForcesInView& shown, const Scene
   for (const ContactMark& mark : shown.marks) {
     const ImVec2 at = camera.to_screen(mark.point);
     labels.avoid(ImVec4(at.x - mark_radius, at.y - mark_radius, at.x + mark_radius, at.y + mark_radius));
+  }
+  // A ground's surface line, which a value keeps off where it can (LabelPlacer::surface).
+  for (const b2Body* body = scene.world().GetBodyList(); body != nullptr; body = body->GetNext()) {
+    for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+      if (!lessons::is_ground(fixture) || fixture->GetType() == b2Shape::e_edge) continue;
+      if (const std::optional<DrawnSegment> surface = ground_surface(fixture, camera)) labels.surface(*surface);
+    }
   }
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody) continue;

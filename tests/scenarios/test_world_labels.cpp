@@ -1620,6 +1620,36 @@ TEST(ForceArrows, NoArrowLiesOverAnotherBodysAlongOneLine) {
   EXPECT_GE(pairs, 12);
 }
 
+// A force's value lies across no ground's surface line where a place beside its arrow off it
+// is free (a teacher's trial on a projector, issue 31): incline's weight, its tip on the floor
+// where the view ends, had its 9.81 N across the floor's line, read as standing on it, with the
+// slope's face beside the shaft free. Its box as placed (padding included) against the
+// slab's top, as far as the lane shows it. incline at its end and through its slide, push
+// before and after its breakaway, in the window in projector mode at 1920 × 1080, light.
+TEST(ForceLabels, AValueLiesOffTheGroundsLineWhereItsArrowLeavesRoom) {
+  int checked = 0;
+  const auto check = [&](const std::string& where, const draw::FrameRecord::Lane& lane, const lessons::Lesson& at) {
+    for (const b2Body* body = at.scene().world().GetBodyList(); body != nullptr; body = body->GetNext()) {
+      for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext()) {
+        if (!lessons::is_ground(fixture) || fixture->GetType() == b2Shape::e_edge) continue;
+        const b2AABB& box = fixture->GetAABB(0);
+        const float top = lane.camera.to_screen(b2Vec2(0.0f, box.upperBound.y - fixture->GetShape()->m_radius)).y;
+        const float left = lane.camera.to_screen(box.lowerBound).x, right = lane.camera.to_screen(box.upperBound).x;
+        for (const draw::LabelPlacer::ForceLabel& force : lane.forces) {
+          if (!force.box) continue;
+          ++checked;
+          const ImVec4& value = *force.box;
+          EXPECT_FALSE(value.y < top && value.w > top && value.x < right && value.z > left)
+              << where << ": " << force.text << " at " << text_of(value) << " lies across the ground's line at y = " << top;
+        }
+      }
+    }
+  };
+  projector_lane_at("incline", {}, {0.5, 1.0}, check);
+  projector_lane_at("push", {}, {1.0, 2.5, 3.5}, check);
+  EXPECT_GE(checked, 12);
+}
+
 // How many of 21 × 21 points inside a box-shaped body, seen through `camera`, show `fill` (to 8
 // in each channel), and of how many: a margin of its outline's width (1.5 px times the text
 // scale) and a pixel of smoothing in from its edges, and none within `dot_radius` of `dot`.
