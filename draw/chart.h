@@ -178,7 +178,7 @@ struct ChartLayout {
     // (spring_pull's sawtooth crosses both its levels all along): the text is drawn under the
     // series, which stay in sight over it.
     bool beneath = false;
-    // In the column beside the data (Chart::level_room), in two lines (level_text_in_column): a
+    // In the column beside the data (Chart::level_room), in one line or two (in_two_lines): a
     // short line leads from its line's end to the text's middle, which may be moved up or down
     // off its line to keep clear of another level's text (incline's −μs·N and holding levels,
     // 0.8 N apart at its defaults).

@@ -93,7 +93,8 @@ namespace {
 ImVec2 size_of(ImFont* font, const std::string& text) { return font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, text.c_str()); }
 
 // The width of the column beside a steady chart's data that its levels' texts take
-// (Chart::level_room), each in two lines, its label over its value (level_text_in_column): 0
+// (Chart::level_room), sized for each in two lines, its label over its value
+// (level_text_in_column), though one that fits is written in one (place_level_texts_beside): 0
 // where there is none, or where it would take more than a third of the chart's width (a small
 // picture's plot: the texts go by their lines).
 float level_column(const Chart& chart, ImFont* font, float s, float chart_width) {

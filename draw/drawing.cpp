@@ -436,14 +436,14 @@ std::optional<ImVec2> LabelPlacer::place_beside(ImVec2 wanted, ImVec2 size, cons
     // (off_outlines(), apart()): off the bodies, else on its own body whole. Else off the
     // outlines with a leader: a value across a body's edge crowds the picture more than a short
     // line to it.
-    // Off the surfaces' lines first (surface()).
+    // Off the surfaces' lines where it can be, the least of these preferences (surface()).
     const auto off_surfaces = [&](const ImVec4& box) {
       return std::none_of(surfaces_.begin(), surfaces_.end(), [&](const DrawnSegment& line) { return overlaps(box, line); });
     };
     std::optional<ImVec2> found;
-    for (const bool off_the_surfaces : {true, false}) {
-      for (const bool apart_too : {true, false}) {
-        for (const bool off_bodies : {true, false}) {
+    for (const bool apart_too : {true, false}) {
+      for (const bool off_bodies : {true, false}) {
+        for (const bool off_the_surfaces : {true, false}) {
           for (std::size_t k = 0; k < by_own.size() && !found; ++k) {
             const ImVec4 box = box_around(by_own[k], size);
             if (clear(box, off_bodies) && off_other_bodies(box, own_body) && off_outlines(box) && (!apart_too || apart(box)) &&

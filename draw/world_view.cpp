@@ -606,14 +606,17 @@ void place_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, c
 // and the top block's weight ran on past the surface under the normal force the top block
 // presses the bottom one with, drawn over it: a stub was all a class saw of it, and no one
 // could tell which arrow was which block's (a teacher's trial, issue 31). A weight stays at its
-// centre of mass. Every other arrow keeps its place where no arrow lies over it along its line
-// (under `gap` across, overlapping along it, heads meeting nose to nose within a gap
-// included); else it moves across its line (direction and length kept) to the nearest place a
-// gap clear of every such arrow placed before it, the longest first, crossing the fewest other
-// shafts there (stacked_blocks' normal force on the bottom block goes to the side its own
-// friction does not run along). Two arrows from one point in opposite directions (a contact's
-// normal forces, each into its own body) lie along one line and stay there, as a pair.
-void set_apart_along_one_line(std::vector<ScreenArrow>& arrows, float gap, float thickness, float mark_radius) {
+// centre of mass and a friction at its contact's dot, its surface its line (a weight over a
+// friction passes beneath it, uncross_arrows). Every other arrow keeps its place where no arrow
+// lies over it along its line (under `gap` across, overlapping along it, another body's heads
+// meeting nose to nose within a gap included); else it moves across its line (direction and
+// length kept) to the place a gap clear of every such arrow placed before it (the longest
+// first) that moves it least, at most two gaps (a normal force stays by its contact), crossing
+// the fewest other shafts there (stacked_blocks' normal force on the bottom block goes to the
+// side its own friction does not run along), the screen's left or top where those tie; where
+// none is clear within two gaps it stays. Two arrows from one point in opposite directions (a
+// contact's normal forces, each into its own body) lie along one line and stay there, a pair.
+void set_apart_along_one_line(std::vector<ScreenArrow>& arrows, float gap, float thickness) {
   const auto unit_of = [](const ScreenArrow& arrow) { return mul(sub(arrow.tip, arrow.tail), 1.0f / arrow.length()); };
   const auto parallel = [&](const ScreenArrow& p, const ScreenArrow& q) {
     return std::abs(cross2(unit_of(p), unit_of(q))) <= 0.17f;  // within 10°
@@ -625,22 +628,20 @@ void set_apart_along_one_line(std::vector<ScreenArrow>& arrows, float gap, float
     const float offset = w0.x * across.x + w0.y * across.y - shift;
     if (std::abs(offset) >= gap - 0.01f) return false;
     const float q0 = w0.x * u.x + w0.y * u.y, q1 = w1.x * u.x + w1.y * u.y;
-    const float p_length = p.length();
     const bool pair_from_one_point = std::abs(q0) < 1.0f && std::abs(offset) < 1.0f && q1 < q0;
     if (pair_from_one_point) return false;
     // One body's own heads meeting are place_arrows' to judge (it leaves them), not this pass's.
     const float ends = q.force.body == p.force.body ? 0.0f : gap;
-    return std::max(q0, q1) > -ends && std::min(q0, q1) < p_length + ends;
+    return std::max(q0, q1) > -ends && std::min(q0, q1) < p.length() + ends;
   };
   // How many shafts of arrows not along p's line p's crosses, moved `shift` across (each line a
-  // thickness longer at both ends, for heads and halos); not those starting with it, by one dot
-  // (a contact's friction beside its normal force, as a textbook draws them).
+  // thickness longer at both ends, for heads and halos).
   const auto crossings = [&](const ScreenArrow& p, float shift) {
     const ImVec2 u = unit_of(p), move = mul(ImVec2(-u.y, u.x), shift);
     const ImVec2 from = add(p.tail, move), d = sub(p.tip, p.tail);
     int count = 0;
     for (const ScreenArrow& q : arrows) {
-      if (&q == &p || parallel(p, q) || length(sub(q.tail, from)) <= mark_radius + gap + 1.5f) continue;
+      if (&q == &p || !(q.length() > 0.0f) || parallel(p, q)) continue;
       const ImVec2 e = sub(q.tip, q.tail), w = sub(q.tail, from);
       const float denominator = cross2(d, e);
       const float on_p = cross2(w, e) / denominator * length(d), on_q = cross2(w, d) / denominator * length(e);
@@ -648,53 +649,55 @@ void set_apart_along_one_line(std::vector<ScreenArrow>& arrows, float gap, float
     }
     return count;
   };
+  const auto stays = [&](const ScreenArrow& arrow) {
+    return arrow.force.kind == ForceKind::weight || arrow.force.kind == ForceKind::friction || !(arrow.length() > 0.0f);
+  };
   std::vector<std::size_t> order(arrows.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Those that stay first; then the longest, lengths within a pixel taken in the arrows' order
+  // (a contact's two normal forces, equal but for the floats' last digits, every frame alike).
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto fixed = [&](std::size_t k) { return arrows[k].force.kind == ForceKind::weight || arrows[k].force.kind == ForceKind::friction; };
-    const bool a_weight = fixed(a), b_weight = fixed(b);
-    if (a_weight != b_weight) return a_weight;
-    return arrows[a].length() > arrows[b].length();
+    if (stays(arrows[a]) != stays(arrows[b])) return stays(arrows[a]);
+    return arrows[a].length() > arrows[b].length() + 1.0f;
   });
   std::vector<std::size_t> placed;
   for (const std::size_t i : order) {
     ScreenArrow& arrow = arrows[i];
-    const bool stays = arrow.force.kind == ForceKind::weight || arrow.force.kind == ForceKind::friction || !(arrow.length() > 0.0f);
     // Where it stands, its own body's arrows are place_arrows' to have set apart (a block's six
     // feet's normal forces stand closer than a gap, and their heads by each other); a place it
     // moves to keeps clear of them too.
     const auto clear_at = [&](float shift) {
       return std::none_of(placed.begin(), placed.end(), [&](std::size_t j) {
-        return (shift != 0.0f || arrows[j].force.body != arrow.force.body) && parallel(arrow, arrows[j]) &&
+        return (std::abs(shift) >= 0.01f || arrows[j].force.body != arrow.force.body) && parallel(arrow, arrows[j]) &&
                lies_over(arrow, shift, arrows[j]);
       });
     };
-    if (stays || clear_at(0.0f)) {
+    if (stays(arrow) || clear_at(0.0f)) {
       placed.push_back(i);
       continue;
     }
     const ImVec2 u = unit_of(arrow), across(-u.y, u.x);
+    // Which way is the screen's left (or, across a level arrow, its top).
+    const float leftward = std::abs(across.x) > 0.01f ? across.x : across.y;
     std::vector<float> shifts;
     for (const std::size_t j : placed) {
       if (!parallel(arrow, arrows[j])) continue;
       const ImVec2 w = sub(arrows[j].tail, arrow.tail);
       const float offset = w.x * across.x + w.y * across.y;
-      shifts.push_back(offset - gap);
-      shifts.push_back(offset + gap);
+      for (const float shift : {offset - gap, offset + gap}) {
+        if (std::abs(shift) <= 2.0f * gap + 0.01f) shifts.push_back(shift);
+      }
     }
     std::optional<float> best;
     int best_crossings = 0;
     for (const float shift : shifts) {
       if (!clear_at(shift)) continue;
       const int crossed = crossings(arrow, shift);
-      // The least move (in whole gaps), then the fewest crossings, then the screen's left (so
-      // that a tie is settled the same way every frame).
-      const float lanes = std::round(std::abs(shift) / gap), best_lanes = best ? std::round(std::abs(*best) / gap) : 0.0f;
-      const bool better = !best || lanes < best_lanes ||
-                          (lanes == best_lanes && (crossed < best_crossings ||
-                                                   (crossed == best_crossings && (std::abs(shift) < std::abs(*best) - 0.01f ||
-                                                                                  (std::abs(shift) < std::abs(*best) + 0.01f &&
-                                                                                   shift * across.x < *best * across.x)))));
+      const bool nearer = best && std::abs(shift) < std::abs(*best) - 0.25f * gap;
+      const bool as_near = best && std::abs(std::abs(shift) - std::abs(*best)) <= 0.25f * gap;
+      const bool better = !best || nearer ||
+                          (as_near && (crossed < best_crossings ||
+                                       (crossed == best_crossings && shift * leftward < *best * leftward - 0.01f)));
       if (better) best = shift, best_crossings = crossed;
     }
     if (best) {
@@ -1121,7 +1124,7 @@ void draw_world(ImDrawList* draw, const lessons::Lesson& lesson, const Camera& c
   place_friction_pairs_on_their_own_sides(arrows, camera, thickness, [&](std::vector<ScreenArrow>& frictions_among) {
     start_frictions_past_their_dots(frictions_among, shown.marks, camera, mark_radius);
   });
-  set_apart_along_one_line(arrows, side_by_side_gap(thickness), thickness, mark_radius);
+  set_apart_along_one_line(arrows, side_by_side_gap(thickness), thickness);
   uncross_arrows(arrows, thickness);
   // A contact's forces are drawn last, over every other: a weight from its centre of mass that
   // passes under a friction's start (push's, spring_pull's) is covered there, and the friction is

@@ -1583,8 +1583,9 @@ int check_no_arrow_over_another_bodys(const std::string& where, const draw::Fram
       if (p.body == q.body) continue;
       const ImVec2 d = sub(p.arrow.to, p.arrow.from);
       const float span = length(d);
-      const ImVec2 u = mul(d, 1.0f / span);
       const ImVec2 e = sub(q.arrow.to, q.arrow.from);
+      if (!(span > 0.0f) || !(length(e) > 0.0f)) continue;
+      const ImVec2 u = mul(d, 1.0f / span);
       if (std::abs(u.x * e.y - u.y * e.x) / length(e) > 0.17f) continue;
       const ImVec2 w0 = sub(q.arrow.from, p.arrow.from), w1 = sub(q.arrow.to, p.arrow.from);
       const float across = std::abs(w0.x * -u.y + w0.y * u.x);
@@ -1616,7 +1617,8 @@ TEST(ForceArrows, NoArrowLiesOverAnotherBodysAlongOneLine) {
   each_projector_lane([&](const std::string& where, const draw::FrameRecord::Lane& lane) {
     pairs += check_no_arrow_over_another_bodys(where, lane);
   });
-  // stacked_blocks' pairs along its middle line: a weight and the normal forces by it, at each moment.
+  // stacked_blocks' arrows of two bodies within a gap along its middle line at each moment (a
+  // contact's pair of normal forces from one dot, and what stands by them).
   EXPECT_GE(pairs, 12);
 }
 
