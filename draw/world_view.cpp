@@ -538,6 +538,17 @@ void start_frictions_past_their_dots(std::vector<ScreenArrow>& arrows, const std
 // much (for where two arrows' lines meet).
 float cross2(ImVec2 a, ImVec2 b) { return a.x * b.y - a.y * b.x; }
 
+// Whether two arrows' centre lines, each taken a thickness longer at both ends, cross: a margin
+// for the heads and halos (a rough one: uncross_arrows measures a head's reach exactly). Parallel
+// shafts lie side by side, and a zero-length one crosses nothing.
+bool shafts_cross(const ScreenArrow& one, const ScreenArrow& other, float thickness) {
+  const ImVec2 d = sub(one.tip, one.tail), e = sub(other.tip, other.tail), w = sub(other.tail, one.tail);
+  const float denominator = cross2(d, e);
+  if (std::abs(denominator) <= 1e-6f * length(d) * length(e)) return false;
+  const float on_one = cross2(w, e) / denominator * length(d), on_other = cross2(w, d) / denominator * length(e);
+  return on_one > -thickness && on_one < length(d) + thickness && on_other > -thickness && on_other < length(e) + thickness;
+}
+
 // Between two dynamic bodies (moved by their forces) a contact's friction is a pair, equal and
 // opposite, one on each:
 // drawn from the same dot, stacked_blocks' two 2.2 N frictions between its blocks lay over each
@@ -576,22 +587,13 @@ void place_friction_pairs_on_their_own_sides(std::vector<ScreenArrow>& arrows, c
     moved[i] = true;
   }
   started(arrows);
-  // Whether two centre lines, each taken a thickness longer at both ends, cross: a margin for
-  // the heads and outlines (a rough one: uncross_arrows measures a head's reach exactly, and
-  // slides what this leaves). Parallel shafts lie side by side.
-  const auto crosses = [&](const ScreenArrow& one, const ScreenArrow& other) {
-    const ImVec2 d = sub(one.tip, one.tail), e = sub(other.tip, other.tail), w = sub(other.tail, one.tail);
-    const float denominator = cross2(d, e);
-    if (std::abs(denominator) < 1e-6f * length(d) * length(e)) return false;
-    const float on_one = cross2(w, e) / denominator * length(d), on_other = cross2(w, d) / denominator * length(e);
-    return on_one > -thickness && on_one < length(d) + thickness && on_other > -thickness && on_other < length(e) + thickness;
-  };
+  // A rough test of a crossing is enough here: uncross_arrows slides what it leaves.
   for (bool put_back = true; put_back;) {
     put_back = false;
     for (std::size_t i = 0; i < arrows.size(); ++i) {
       if (!moved[i]) continue;
       for (std::size_t j = 0; j < arrows.size(); ++j) {
-        if (j == i || arrows[j].force.kind == ForceKind::weight || !crosses(arrows[i], arrows[j])) continue;
+        if (j == i || arrows[j].force.kind == ForceKind::weight || !shafts_cross(arrows[i], arrows[j], thickness)) continue;
         arrows[i] = on_the_surface[i];
         moved[i] = false;
         put_back = true;
@@ -638,14 +640,12 @@ void set_apart_along_one_line(std::vector<ScreenArrow>& arrows, float gap, float
   // thickness longer at both ends, for heads and halos).
   const auto crossings = [&](const ScreenArrow& p, float shift) {
     const ImVec2 u = unit_of(p), move = mul(ImVec2(-u.y, u.x), shift);
-    const ImVec2 from = add(p.tail, move), d = sub(p.tip, p.tail);
+    ScreenArrow moved = p;
+    moved.tail = add(p.tail, move);
+    moved.tip = add(p.tip, move);
     int count = 0;
     for (const ScreenArrow& q : arrows) {
-      if (&q == &p || !(q.length() > 0.0f) || parallel(p, q)) continue;
-      const ImVec2 e = sub(q.tip, q.tail), w = sub(q.tail, from);
-      const float denominator = cross2(d, e);
-      const float on_p = cross2(w, e) / denominator * length(d), on_q = cross2(w, d) / denominator * length(e);
-      count += on_p > -thickness && on_p < length(d) + thickness && on_q > -thickness && on_q < length(e) + thickness;
+      if (&q != &p && q.length() > 0.0f && !parallel(p, q)) count += shafts_cross(moved, q, thickness);
     }
     return count;
   };
