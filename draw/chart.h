@@ -140,6 +140,9 @@ struct Chart {
 // Where a chart's parts go on the screen, worked out before anything is drawn (and by tests).
 struct ChartLayout {
   ImVec2 low_left, high_right;  // the data area
+  // The chart's right end less its 8-point margin: where a plain chart's data ends, and the
+  // levels' column beside a steady chart's data.
+  float right_end = 0.0f;
   bool log_x = false, log_y = false;
   double x_low = 0.0, x_high = 1.0, y_low = 0.0, y_high = 1.0;  // axis space: log10 of the value on a log axis
   std::vector<double> x_ticks, y_ticks;  // axis space

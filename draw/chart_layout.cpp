@@ -410,7 +410,7 @@ float frame_data_area(const Chart& chart, const ChartAxes& axes, const std::vect
   float levels_beside = 0.0f;
   if (chart.plain) {
     layout.low_left = ImVec2(corner.x + label_width + 10.0f * s, corner.y + size.y - 2.0f * text - 8.0f * s);
-    layout.high_right = ImVec2(corner.x + size.x - 8.0f * s, corner.y + text + 10.0f * s);
+    layout.high_right = ImVec2(layout.right_end, corner.y + text + 10.0f * s);
     if (chart.steady) {
       // The y label heads the legend's column and the x label ends the x ticks' line: the data
       // has the two lines of text they took (a plot on a page of its own, made tall).
@@ -519,6 +519,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
   const std::vector<Key> keys = keys_of(chart);
   if (chart.legend == Chart::Legend::only) return layout;
 
+  layout.right_end = corner.x + size.x - 8.0f * s;
   const float levels_beside = frame_data_area(chart, axes, keys, corner, size, fonts, label_width, layout);
   const float width = layout.high_right.x - layout.low_left.x, height = layout.low_left.y - layout.high_right.y;
   layout.drawable = width >= 20.0f && height >= 20.0f;
@@ -548,8 +549,7 @@ ChartLayout layout_chart(const Chart& chart, ImVec2 corner, ImVec2 size, const F
                                        (layout.high_right.x - layout.low_left.x) / static_cast<float>(layout.x_high - layout.x_low), s);
   }
   place_axis_texts(chart, corner, fonts, layout);
-  // The column ends where a plain chart's data would (frame_data_area).
-  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, corner.x + size.x - 8.0f * s, layout);
+  if (levels_beside > 0.0f) place_level_texts_beside(chart, axes.y, s, layout.level_font, layout.right_end, layout);
   else place_level_texts(chart, axes.x, axes.y, s, layout.level_font, layout);
   layout.active = chart.active_theory;
   if (layout.active == Chart::nearest) {

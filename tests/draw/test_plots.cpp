@@ -892,12 +892,12 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
           const float apart = std::max({axis.at.x - box.z, box.x - axis.at.z, axis.at.y - box.w, box.y - axis.at.w});
           EXPECT_GE(apart, quarter) << what << " is " << apart << " px from the axis' \"" << axis.text << "\"";
         }
-        // In one line where the column holds it (the plot's 8-point margin kept): incline's
+        // In one line where the column holds it (up to the plot's right end): incline's
         // three texts, two lines each, stood up to 3 N above their lines on a projector, stacked
         // over each other (a teacher's trial, issue 31).
         ImFont* font = layout.level_font;
         const float one_line = font->CalcTextSizeA(font->FontSize, 1e6f, 0.0f, chart.levels[level.index].text.c_str()).x;
-        if (level.at.x + one_line <= corner.x + size.x - 8.0f * f.scale) {
+        if (level.at.x + one_line <= layout.right_end) {
           one_line_texts += std::string(name) == "incline";
           EXPECT_LT(level.at.w - level.at.y, 1.5f * font->FontSize) << what << " is in two lines where one fits";
         }
