@@ -74,6 +74,16 @@ void Classroom::forget_interaction() {
   hand_.forget();
   watch_.failed.path.clear();
   tools_.stopwatch.reset();  // it timed a run of the lesson that closed
+  forces_on_.clear();        // a body of the lesson that closed
+}
+
+ForcesShown Classroom::forces_shown() const {
+  ForcesShown shown;
+  for (const auto& [name, body] : playback_->lesson().scene().bodies()) {
+    if (body->GetType() == b2_dynamicBody) shown.bodies.push_back(name);
+  }
+  if (std::find(shown.bodies.begin(), shown.bodies.end(), forces_on_) != shown.bodies.end()) shown.on = forces_on_;
+  return shown;
 }
 
 float Classroom::ui_scale(ImVec2 display) const {
@@ -132,7 +142,7 @@ Classroom::WindowStrips Classroom::draw_top_strips(ImVec2 display) {
   const float s = fonts_->scale;
   WindowStrips strips;
   ImGui::PushFont(fonts_->body);
-  MenuBar{playback_, window_, lock_, browser_, script_words_, mystery_, predictions_, tools_, controls_}.draw(
+  MenuBar{playback_, window_, lock_, browser_, script_words_, mystery_, predictions_, tools_, forces_shown(), controls_}.draw(
       [this](const WindowChoice& chosen) { carry_out(chosen); });
   const float menu_height = ImGui::GetFrameHeight();
   // The transport bar's words have their place from the lesson's opening (the run's end notice's).
@@ -172,6 +182,7 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   if (!script_words_.paths) style.script_words = script_words_;
   style.view_adjust = hand_.view_adjust;
   style.projector = window_.projector;
+  if (const ForcesShown forces = forces_shown(); !forces.on.empty()) style.forces_on = playback_->lesson().scene().body(forces.on);
   style.record = record;
   style.parameters_panel = [this](ImVec2 corner, ImVec2 size, std::size_t step) {
     parameters_.draw(corner, size, step, parameters_on_show(), fonts_->scale, theme(window_.theme), controls_);
@@ -237,6 +248,8 @@ void Classroom::carry_out(const WindowChoice& chosen) {
   }
   if (chosen.stopwatch_lap) tools_.stopwatch.lap(now);
   if (chosen.view.theme) window_.theme = *chosen.view.theme;
+  if (chosen.view.forces_on) forces_on_ = *chosen.view.forces_on;
+  if (chosen.view.forces_on_next) forces_on_ = next_forces_on(forces_shown());
   if (chosen.mystery.make) status_.text = make_mystery(*chosen.mystery.make);
   if (chosen.mystery.reveal) reveal_mystery();
   if (chosen.said) status_.say_of_moment(*chosen.said, playback_->lesson().scene().frame(), theory_hidden());

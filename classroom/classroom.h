@@ -202,6 +202,8 @@ class Classroom {
   void forget_interaction();
   // The lesson as the Parameters panel shows it now.
   ParametersOnShow parameters_on_show() const;
+  // Whose forces the world draws now (a body a student's script no longer makes: every body's).
+  ForcesShown forces_shown() const;
   void change_settings(const StepSettings& settings);
 
   std::unique_ptr<classroom_state::Playback> playback_;
@@ -213,6 +215,9 @@ class Classroom {
   HostRequests host_;
   // The readings with their error in script_words, for the theory panel (script_paths off).
   lessons::LessonReadings shown_readings_;
+  // The moving body whose forces alone the world draws (View > Forces on, B), by name, for a
+  // rebuilt world has new bodies; empty: every body's. Every lesson opens with every body's.
+  std::string forces_on_;
 
  public:
   // A text as the class sees it: with script_paths off, every script's path in it ("path:line:

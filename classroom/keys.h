@@ -9,7 +9,7 @@
 
 namespace frictionlab::classroom {
 
-enum class Key { space, escape, period, comma, r, f1, f5, f11, p, d, s, e, t, w, l, left, right };
+enum class Key { space, escape, period, comma, r, f1, f5, f11, p, d, s, e, t, w, l, b, left, right };
 
 // A key as the window layer reported it, with whether Ctrl was held.
 using KeyTap = std::pair<Key, bool>;

@@ -12,7 +12,7 @@ void MenuBar::draw(const std::function<void(const WindowChoice&)>& carry_out) co
   chosen.lesson = lesson_menu(lesson.path(), lock, browser, script_words.paths, controls);
   chosen.simulation = simulation_menu(lesson.settings(), lock, controls);
   chosen.mystery = mystery.tab.draw_menu(lesson, mystery.mystery, lock.words(browser), controls);
-  chosen.view = view_menu(window, controls, [&] { chosen.said = predictions.menu_items(window.predictions, *playback, controls); });
+  chosen.view = view_menu(window, forces, controls, [&] { chosen.said = predictions.menu_items(window.predictions, *playback, controls); });
   // Read again: Predict again (the View menu) took the run back to t = 0.
   tools.draw_menu(window.tools, playback->lesson().scene().time(), playback->playing(), controls);
   carry_out(chosen);

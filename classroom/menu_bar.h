@@ -33,6 +33,7 @@ struct MenuBar {
   MysteryPanel& mystery;         // its Mystery menu
   PredictionPanel& predictions;  // its View menu items
   MeasuringTools& tools;         // its Tools menu
+  const ForcesShown& forces;     // whose forces the world draws, which the View menu ticks
   ControlPlaces& controls;
 
   // The bar, in the frame being built; `carry_out` is handed what its menus chose.

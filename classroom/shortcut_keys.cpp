@@ -28,6 +28,7 @@ WindowChoice ShortcutKeys::choose(const Shortcuts& keys, draw::ThemeName theme) 
   chosen.reveal = hit(Key::t, false);
   chosen.stopwatch_start_stop = hit(Key::w, false);
   chosen.stopwatch_lap = hit(Key::l, false);
+  chosen.view.forces_on_next = hit(Key::b, false);
   return chosen;
 }
 

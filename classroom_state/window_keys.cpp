@@ -21,6 +21,7 @@ const std::vector<WindowKey>& window_keys() {
       {"F11", "full screen", ""},
       {"W", "start / stop the stopwatch (lesson time)", ""},
       {"L", "the stopwatch's lap", ""},
+      {"B", "the forces on one moving body at a time, then on every body again (View > Forces on)", ""},
       {"\u2190 \u2192", "the plots' pages, when they are shown a page at a time", ""},
       {"F1", "the help panel: these keys and the mouse", ""},
   };

@@ -31,6 +31,7 @@ inline std::optional<classroom::Key> classroom_key(int glfw_key) {
     case GLFW_KEY_E: return classroom::Key::e;
     case GLFW_KEY_W: return classroom::Key::w;
     case GLFW_KEY_L: return classroom::Key::l;
+    case GLFW_KEY_B: return classroom::Key::b;
     case GLFW_KEY_LEFT: return classroom::Key::left;
     case GLFW_KEY_RIGHT: return classroom::Key::right;
     default: return std::nullopt;

@@ -602,6 +602,19 @@ std::string lane_name(const lessons::WorldFraming& framing, std::size_t lanes, s
   return lane < framing.view.titles.size() ? framing.view.titles[lane] : lessons::class_words(framing.view.bodies[lane]);
 }
 
+// The lane's name, and where one body's forces alone are drawn, in the lane that draws them,
+// whose they are: a class seeing the top block's two forces must not take them for all there
+// are (B, or View > Forces on, brings the others back).
+std::string lane_caption(const Scene& scene, const lessons::WorldFraming& framing, const FrameStyle& style, std::size_t lanes,
+                         std::size_t lane, const std::vector<const b2Body*>* bodies) {
+  std::string caption = lane_name(framing, lanes, lane);
+  if (style.forces_on == nullptr || bodies == nullptr || std::find(bodies->begin(), bodies->end(), style.forces_on) == bodies->end()) {
+    return caption;
+  }
+  const std::string name = lessons::class_words(scene.name_of(style.forces_on));
+  return caption + (caption.empty() ? "" : ": ") + "forces on " + name + " only (B: next)";
+}
+
 // One lane of the world: its bodies, forces and the tools over them, its labels kept off the
 // inset and each other, its name, and what it placed noted for the layout test.
 void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::WorldFraming& framing, const FrameStyle& style,
@@ -619,7 +632,7 @@ void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::W
   const ImVec2 shown_min = draw->GetClipRectMin(), shown_max = draw->GetClipRectMax();
   LabelPlacer labels(shown_min, sub(shown_max, shown_min));
   if (inset.z > inset.x) labels.avoid(inset);
-  const std::string name = lane_name(framing, cameras.size(), lane);
+  const std::string name = lane_caption(lesson.scene(), framing, style, cameras.size(), lane, bodies);
   const ImVec2 name_size = fonts.small->CalcTextSizeA(fonts.small->FontSize, 1e6f, 0.0f, name.c_str());
   const ImVec2 name_at(camera.origin.x + 8.0f * s + 0.5f * name_size.x, camera.origin.y + 6.0f * s + 0.5f * name_size.y);
   if (!name.empty()) {
@@ -635,7 +648,7 @@ void draw_lane(ImDrawList* draw, const lessons::Lesson& lesson, const lessons::W
   if (style.record != nullptr) {
     style.record->lanes.push_back({camera, labels.labels(), labels.segments(), labels.marks(),
                                    ImVec4(shown_min.x, shown_min.y, shown_max.x, shown_max.y), labels.texts(), labels.bodies(),
-                                   labels.force_labels()});
+                                   labels.force_labels(), name});
     style.record->inset = inset;
   }
   if (!name.empty()) {
@@ -669,7 +682,11 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
     const std::vector<Camera> cameras =
         world_cameras(lesson, framing, display, s, style.origin, style.view_adjust, style.projector);
     const float newtons_to_pixels = arrow_scale(lesson, framing, display, s, style.projector);
-    const std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), framing, cameras);
+    std::vector<std::vector<const b2Body*>> lane_bodies = bodies_by_lane(lesson.scene(), framing, cameras);
+    for (std::vector<const b2Body*>& bodies : lane_bodies) {
+      if (style.forces_on != nullptr) std::erase_if(bodies, [&](const b2Body* body) { return body != style.forces_on; });
+    }
+    const bool lanes_filtered = cameras.size() > 1 || style.forces_on != nullptr;
     const b2Body* focus = main_body(lesson.scene());
     const ImVec2 inset_corner = inset_corner_clear_of_the_hand(lesson.scene(), focus, layout, cameras.front(), s);
     const bool inset_shown = layout.inset_size.x > 0.0f;
@@ -684,7 +701,7 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
                                               inset_corner.y + layout.inset_size.y)
                                      : close_up ? close_up->place : ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
     for (std::size_t lane = 0; lane < cameras.size(); ++lane) {
-      draw_lane(draw, lesson, framing, style, cameras, lane, cameras.size() > 1 ? &lane_bodies[lane] : nullptr, inset,
+      draw_lane(draw, lesson, framing, style, cameras, lane, lanes_filtered ? &lane_bodies[lane] : nullptr, inset,
                 newtons_to_pixels);
     }
     if (close_up) {
@@ -694,7 +711,7 @@ std::optional<LegendScale> world_panel(const lessons::Lesson& lesson, const less
       if (style.record != nullptr) {
         style.record->close_ups.push_back({close_up_camera(*close_up, focus, cameras.front()), labels.labels(),
                                            labels.segments(), labels.marks(), close_up->place, labels.texts(),
-                                           labels.bodies(), labels.force_labels()});
+                                           labels.bodies(), labels.force_labels(), ""});
       }
     }
     legend = LegendScale{cameras.front(), newtons_to_pixels};

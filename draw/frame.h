@@ -71,6 +71,9 @@ struct FrameRecord {
     std::vector<std::string> texts;        // each label's text, in the order of `labels`
     std::vector<ImVec4> bodies;            // the moving bodies' boxes, which the tools' readings keep off
     std::vector<LabelPlacer::ForceLabel> forces;  // each force's arrow and where its value went
+    // Written in its corner: its name among lanes, and whose forces where one body's alone are
+    // drawn (FrameStyle::forces_on); empty: nothing.
+    std::string caption;
   };
   std::vector<Lane> lanes;
   ImVec4 inset{0.0f, 0.0f, 0.0f, 0.0f};
@@ -160,6 +163,9 @@ struct FrameStyle {
   // pages the same whatever the run, so that nothing moves as it goes on or at the reveal (how
   // many plots fitted side by side was chosen anew each frame from their axes and legends).
   bool projector = false;
+  // The one moving body whose forces and contacts the world draws (the window's View > Forces
+  // on, B), the others drawn as bodies only, and the world's corner says so; null: every body's.
+  const b2Body* forces_on = nullptr;
   // Pages to turn the plots by in this frame (the ← and → keys: −1, +1), as the buttons do.
   int turn_plot_pages = 0;
   // Values the class must not see yet (a mystery pair's), and the theory that would give them away.

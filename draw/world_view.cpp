@@ -990,9 +990,10 @@ ForcesInView forces_in_view(const Scene& scene, const Camera& camera, const Font
            at.y <= camera.origin.y + camera.size.y;
   };
   ForcesInView shown;
+  // A contact between two moving bodies is either's (stacked_blocks' blocks, each drawn alone).
+  const auto moving_and_ours = [&](const b2Body* body) { return body->GetType() == b2_dynamicBody && ours(body); };
   for (const ContactMark& mark : contact_marks(scene)) {
-    const b2Body* moving = mark.body_b->GetType() == b2_dynamicBody ? mark.body_b : mark.body_a;
-    if (in_view(mark.point) && ours(moving)) shown.marks.push_back(mark);
+    if (in_view(mark.point) && (moving_and_ours(mark.body_a) || moving_and_ours(mark.body_b))) shown.marks.push_back(mark);
   }
   for (const auto& [name, body] : scene.bodies()) {
     if (body->GetType() != b2_dynamicBody || !in_view(body->GetWorldCenter()) || !ours(body)) continue;

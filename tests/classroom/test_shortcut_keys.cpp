@@ -35,6 +35,8 @@ std::vector<std::string> chosen_items(const WindowChoice& chosen) {
   note(chosen.view.projector, "projector");
   note(chosen.view.help, "help");
   note(chosen.view.full_screen, "full screen");
+  note(chosen.view.forces_on.has_value(), "forces on");
+  note(chosen.view.forces_on_next, "forces on next");
   note(chosen.said.has_value(), "said");
   note(chosen.play_pause, "play pause");
   note(chosen.step, "step");
@@ -57,7 +59,7 @@ TEST(ShortcutKeys, EachKeyChoosesItsOneItem) {
       {Key::r, false, "reset"},          {Key::f11, false, "full screen"}, {Key::f1, false, "help"},
       {Key::p, false, "projector"},      {Key::d, false, "theme"},         {Key::space, false, "play pause"},
       {Key::period, false, "step"},      {Key::comma, false, "step back"}, {Key::t, false, "reveal"},
-      {Key::w, false, "stopwatch start stop"}, {Key::l, false, "stopwatch lap"},
+      {Key::w, false, "stopwatch start stop"}, {Key::l, false, "stopwatch lap"}, {Key::b, false, "forces on next"},
   };
   for (const auto& [key, ctrl, item] : keys) {
     EXPECT_EQ(chosen_items(ShortcutKeys::choose(tapped(key, ctrl), draw::ThemeName::light)), std::vector<std::string>{item})
