@@ -101,8 +101,9 @@ probe { "slipping", read = { touch, "slipping" } }
 probe { "contact_points", read = { touch, "points" } }
 
 -- The key plot first (the first page in projector mode): friction answers the push until the box
--- tips or slides, whichever push comes first, and its two levels are those pushes (negative, as
--- friction is here). The box slides at the most static friction gives, max(mu_s, mu_k)·N as the
+-- tips or slides, whichever push comes first, and its first two levels are those pushes (negative,
+-- as friction is here); the third is the kinetic friction a sliding box's trace then sits on (a
+-- teacher's trial found that line of a low push unlabelled). The box slides at the most static friction gives, max(mu_s, mu_k)·N as the
 -- solver's rule has it (see predicted() below); it tips when the push's moment about the front
 -- edge, F·h, passes the weight's, m·g·d/2. The level says it in the sliders' words, "width" and
 -- "push height": a class read an h beside the slider "height", which is the box's. On two lines,
@@ -111,6 +112,7 @@ plot { "Friction against the push", x = "push", y = { "friction_force" },
   levels = {
     { "slides: −μs·N", function() return -math.max(param.mu_s, param.mu_k) * param.mass * g end },
     { "tips: −m·g·width\n/(2·push height)", function() return -param.mass * g * param.width / (2 * param.push_height) end },
+    { "kinetic: −μk·N", function() return -param.mu_k * param.mass * g end },
   } }
 plot { "How far the box tips", y = { "tilt" } }
 plot { "How far the box slides", y = { "slide" } }

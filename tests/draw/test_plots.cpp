@@ -698,8 +698,8 @@ TEST(PlotRanges, AnAngleOrALengthIsNeverDrawnNarrowerThanTheWorldsTolerance) {
 // only within half the run's reach beyond it, so the data's lowest point is below half of the
 // axis's lower end (the round end past it, 3 % on, is at most 1.5 × 1.03 of it and no more than
 // the next fine round value: here −60 N for −49 N), and the sliding level the run reaches is
-// still on the axis. At the defaults (0.7 m: it tips at 35 N) both levels are within reach and
-// on the axis, as before.
+// still on the axis. At the defaults (0.7 m: it tips at 35 N) every level (the kinetic one, 39 N,
+// too) is within reach and on the axis, as before.
 TEST(PlotRanges, ALevelTheRunNeverNearsDoesNotStretchTheAxis) {
   const auto lowest_point = [](const Chart& chart) {
     double lowest = 0.0;
@@ -721,7 +721,7 @@ TEST(PlotRanges, ALevelTheRunNeverNearsDoesNotStretchTheAxis) {
   LessonAt high("tipping_box", {}, 0.0);
   high.step_to(high.lesson->duration());
   const Chart pushed_high = plot_chart(*high.lesson, 0, high.lesson->duration(), theme(ThemeName::light), true, true);
-  ASSERT_EQ(pushed_high.levels.size(), 2u);
+  ASSERT_EQ(pushed_high.levels.size(), 3u);
   for (const ChartLevel& level : pushed_high.levels) {
     EXPECT_GE(level.y, pushed_high.y_low) << level.text << " off an axis from " << pushed_high.y_low;
   }
@@ -931,8 +931,9 @@ TEST(PlotLevels, EachTextIsBesideTheDataWhereNoRunPassesAndStaysPut) {
       }
     }
   }
-  // Two levels each, and incline's three (−μs·N, the holding force, −μk·N).
-  EXPECT_EQ(levels_seen, (4 * 2 + 3) * 12);
+  // Two levels each, and incline's and tipping_box's three (−μs·N, the holding force, −μk·N;
+  // −μs·N, the tipping push, −μk·N).
+  EXPECT_EQ(levels_seen, (3 * 2 + 2 * 3) * 12);
   // incline's −μk·N and −μs·N at each moment.
   EXPECT_GE(one_line_texts, 2 * 12);
 }
