@@ -199,7 +199,7 @@ draw::FrameStyle Classroom::frame_style(ImVec2 origin, draw::FrameRecord* record
   style.hidden = mystery_.hidden();
   style.turn_plot_pages = shortcut_keys_.take_plot_pages();
   style.more_tabs = [this] { draw_more_tabs(); };
-  if (std::string said = predictions_.forget_outdated(*playback_, window_.predictions); !said.empty()) status_.text = said;
+  if (std::string said = predictions_.forget_outdated(*playback_); !said.empty()) status_.text = said;
   predictions_.style(style, *playback_, window_.predictions, theme(window_.theme), controls_,
                      [this] { return mystery_.hidden().theory(); });
   ImGui::PushFont(fonts_->body);

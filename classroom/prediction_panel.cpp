@@ -485,28 +485,8 @@ float predictions_contents_height(const lessons::Lesson& lesson, const std::vect
   return height;
 }
 
-std::string PredictionPanel::forget_outdated(const classroom_state::Playback& playback, bool asking) {
-  const lessons::Lesson& lesson = playback.lesson();
-  // The theory as the reveal showed it, at any time of the run (a row's theory is the values',
-  // not the moment's); T hiding it again forgets it.
-  if (!predictions.revealed || !asking) predictions.theory_revealed.clear();
-  bool new_question = false;
-  if (predictions.revealed && asking) {
-    for (const lessons::Prediction& asked : lesson.predictions()) {
-      for (const lessons::ExpectationResult& row : playback.readings().expectations) {
-        if (row.name != asked.expectation || row.failed) continue;
-        const std::string theory = row.numeric ? validation::exact_text(row.predicted) : row.predicted_text;
-        const auto [seen, first] = predictions.theory_revealed.emplace(row.name, theory);
-        new_question = new_question || (!first && seen->second != theory);
-      }
-    }
-  }
-  if (new_question) {
-    predictions = {};
-    return "A value changed after the reveal, and with it the theory's answer: the theory is hidden again and the "
-           "class's answers are cleared, for a new round of predictions (T shows the theory).";
-  }
-  if (lesson.scene().frame() != 0) return "";
+std::string PredictionPanel::forget_outdated(const classroom_state::Playback& playback) {
+  if (playback.lesson().scene().frame() != 0) return "";
   std::vector<std::string> outdated;
   for (const auto& [row_name, answer] : predictions.answers) {
     for (const lessons::ExpectationResult& row : playback.readings().expectations) {
@@ -524,7 +504,8 @@ std::string PredictionPanel::forget_outdated(const classroom_state::Playback& pl
   std::erase_if(predictions.theory_answered, [&](const auto& seen) { return predictions.answers.count(seen.first) == 0; });
   if (outdated.empty()) return "";
   return "A value changed after the class predicted \"" + outdated.front() + "\"" + (outdated.size() > 1 ? " (and more)" : "") +
-         ": that prediction was for the old values, so it is cleared. Ask the class again.";
+         ": that prediction was for the old values, so it is cleared. " +
+         (predictions.revealed ? "View > Predict again asks the class anew, the theory hidden." : "Ask the class again.");
 }
 
 void PredictionPanel::style(draw::FrameStyle& style, const classroom_state::Playback& playback, bool asking, const draw::Theme& colours,

@@ -110,13 +110,9 @@ struct PredictionPanel {
   // class answered (the mass was changed, or anything else it depends on) loses its answer; a
   // value the row does not depend on keeps it. Before the reveal the class is asked again; after
   // it (a teacher exploring other values) the old answer would be judged against a theory it was
-  // never about, so it goes too. And after the reveal a value that changes any predicted row's
-  // theory (incline's angle from 35° to 25°) hides the theory again, the answers cleared, as
-  // View > Predict again does: a teacher's trial typed 25° after the reveal and the class saw
-  // "sticks" before it could predict (issue 31). T shows it again at once. `asking`: the
-  // teacher asks for predictions (the View menu).
-  // Returns what the status line should say ("" when nothing changed).
-  std::string forget_outdated(const classroom_state::Playback& playback, bool asking);
+  // never about, so it goes too, and View > Predict again asks anew with the theory hidden.
+  // Returns what the status line should say ("" when no answer went).
+  std::string forget_outdated(const classroom_state::Playback& playback);
   // Its part of the frame: the contents and height in the theory panel, and what they hide.
   // `asking`: the teacher asks for predictions (the View menu). `theory_withheld` is asked as the panel is drawn: a mystery's values are in the
   // theory, which stays hidden until the mystery is revealed.

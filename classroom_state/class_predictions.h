@@ -20,9 +20,6 @@ struct ClassPredictions {
   // before the reveal): a value changed since that changes it (the mass) makes the answer one
   // for other values, and the class is asked again.
   std::map<std::string, std::string> theory_answered;
-  // Each predicted row's theory as the reveal showed it: a value changed since that changes one
-  // makes a new question, and the theory is hidden again until the class has answered it.
-  std::map<std::string, std::string> theory_revealed;
 };
 
 // The theory is kept back: the lesson asks for predictions, the teacher asks for them (the
