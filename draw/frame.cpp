@@ -611,8 +611,11 @@ std::string lane_caption(const Scene& scene, const lessons::WorldFraming& framin
   if (style.forces_on == nullptr || bodies == nullptr || std::find(bodies->begin(), bodies->end(), style.forces_on) == bodies->end()) {
     return caption;
   }
+  // Short in a lane, which may be a third of the world wide: friction_models' lanes are named
+  // after their blocks, and "coulomb: forces on coulomb only" ran past its lane's edge.
   const std::string name = lessons::class_words(scene.name_of(style.forces_on));
-  return caption + (caption.empty() ? "" : ": ") + "forces on " + name + " only (B: next)";
+  if (caption.empty()) return "forces on " + name + " only (B: next)";
+  return caption + (caption == name ? "" : ": " + name) + " only (B: next)";
 }
 
 // One lane of the world: its bodies, forces and the tools over them, its labels kept off the

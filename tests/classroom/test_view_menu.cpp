@@ -92,7 +92,8 @@ WorldDrawn world_drawn(ClassroomHands& hands) {
 // force of the lesson is drawn, the friction between the blocks among them.
 void play_to_three_seconds(ClassroomHands& hands) {
   hands.key(Key::space);
-  while (hands.lesson().scene().time() < 3.0) hands.frame(1.0 / 60.0);
+  // (At most 4 s of frames: a run that ends sooner pauses there.)
+  for (int frame = 0; frame < 240 && hands.lesson().scene().time() < 3.0; ++frame) hands.frame(1.0 / 60.0);
   hands.key(Key::space);
 }
 
@@ -154,6 +155,28 @@ TEST(ViewMenuForcesOn, TheViewMenuPicksABodyAndEveryLessonOpensWithEveryBodys) {
   ASSERT_EQ(hands.classroom().open("stacked_blocks"), "");
   play_to_three_seconds(hands);
   EXPECT_EQ(world_drawn(hands).bodies, (std::set<std::string>{"bottom", "top"}));
+}
+
+// In lanes the caption is short, for a lane may be a third of the world wide: friction_models'
+// lanes are named after their blocks, and "coulomb: forces on coulomb only" ran past the edge
+// of its lane on a projector. The lane that draws the block says so; the others keep their names.
+TEST(ViewMenuForcesOn, ALanesCaptionSaysItsBodysForcesAloneInFewWords) {
+  ClassroomHands hands(lesson_options("friction_models"));
+  hands.frame();
+  play_to_three_seconds(hands);
+  hands.key(Key::b);
+  hands.key(Key::b);
+  hands.frame();
+  draw::FrameRecord record;
+  hands.frame(0.0, &record);
+  ASSERT_EQ(record.lanes.size(), 3u);
+  EXPECT_EQ(record.lanes[0].caption, "coulomb");
+  EXPECT_EQ(record.lanes[1].caption, "engineering only (B: next)");
+  EXPECT_EQ(record.lanes[2].caption, "quadratic");
+  const Scene& scene = hands.lesson().scene();
+  for (const draw::FrameRecord::Lane& lane : record.lanes) {
+    for (const draw::LabelPlacer::ForceLabel& force : lane.forces) EXPECT_EQ(scene.name_of(force.body), "engineering");
+  }
 }
 
 // push has one moving body: its forces are every force, and B changes nothing.
